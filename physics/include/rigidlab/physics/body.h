@@ -1,0 +1,79 @@
+#pragma once
+// Rigid bodies: what a scene defines, and what the world keeps for each.
+
+#include "rigidlab/physics/math.h"
+#include "rigidlab/physics/shape.h"
+
+#include <string>
+
+namespace rigidlab::physics {
+
+enum class BodyType {
+    Static,    ///< never moves, infinite mass
+    Kinematic, ///< moves with its given velocity, unaffected by forces and contacts
+    Dynamic,   ///< moved by forces, joints and contacts
+};
+
+/// How a body is created. Every field has its default; units as marked.
+struct BodyDef {
+    std::string name; ///< the scene's id, for traces and messages
+    BodyType type = BodyType::Dynamic;
+    Shape shape;                  ///< in body coordinates about the body origin
+    Vec2 position = Vec2::Zero(); ///< the body origin in the world [m]
+    double angle = 0.0;           ///< [rad]
+    Vec2 velocity = Vec2::Zero(); ///< of the body origin [m/s]
+    double angularVelocity = 0.0; ///< [rad/s]
+    double density = 1.0;         ///< [kg/m^2], used when mass <= 0
+    double mass = 0.0;            ///< [kg]; > 0 overrides density (inertia scales with it)
+    double restitution = -1.0;    ///< coefficient of restitution; < 0 takes the world's
+    double friction = -1.0;       ///< Coulomb friction coefficient; < 0 takes the world's
+    bool collide = true;          ///< false: passes through everything
+};
+
+/// A body as the world keeps it. The state is held at the centre of mass.
+struct Body {
+    std::string name;
+    BodyType type = BodyType::Dynamic;
+    Shape shape;
+    Vec2 localCenter = Vec2::Zero(); ///< centre of mass in body coordinates [m]
+
+    Vec2 position = Vec2::Zero(); ///< centre of mass in the world [m]
+    double angle = 0.0;           ///< [rad]
+    Vec2 velocity = Vec2::Zero(); ///< of the centre of mass [m/s]
+    double angularVelocity = 0.0; ///< [rad/s]
+
+    double mass = 0.0;        ///< [kg], 0 for static and kinematic bodies
+    double invMass = 0.0;     ///< [1/kg]
+    double inertia = 0.0;     ///< about the centre of mass [kg m^2]
+    double invInertia = 0.0;  ///< [1/(kg m^2)]
+    double restitution = 0.0; ///< resolved against the world's default
+    double friction = 0.0;    ///< resolved against the world's default
+    bool collide = true;
+
+    /// The seed's accumulators: force and torque applied by the user for the next step,
+    /// cleared after it. Force acts at the centre of mass [N], torque [N m].
+    Vec2 force = Vec2::Zero();
+    double torque = 0.0;
+
+    bool isDynamic() const { return type == BodyType::Dynamic; }
+    bool moves() const { return type != BodyType::Static; }
+
+    /// Body-to-world placement of the body origin (the frame shape vertices live in).
+    Transform transform() const
+    {
+        Rotation q(angle);
+        Transform t;
+        t.q = q;
+        t.p = position - q.apply(localCenter);
+        return t;
+    }
+    /// The body origin in the world [m].
+    Vec2 origin() const { return transform().p; }
+    /// Velocity of a world point moving with the body [m/s].
+    Vec2 pointVelocity(const Vec2& worldPoint) const
+    {
+        return velocity + cross(angularVelocity, Vec2(worldPoint - position));
+    }
+};
+
+} // namespace rigidlab::physics

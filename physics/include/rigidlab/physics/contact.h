@@ -1,0 +1,30 @@
+#pragma once
+// A touching pair of bodies and its manifold, as the contact solver keeps it.
+
+#include "rigidlab/physics/forces.h"
+#include "rigidlab/physics/sat.h"
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+namespace rigidlab::physics {
+
+enum class SolverKind {
+    SeedImpulse,       ///< the seed's impulse, contact by contact, once (full denominator)
+    SequentialImpulse, ///< accumulated, clamped impulses, iterated and warm started
+};
+
+std::string_view solverName(SolverKind kind);
+std::optional<SolverKind> solverFromName(std::string_view name);
+
+struct Contact {
+    BodyId a = 0, b = 0; ///< a < b
+    Manifold manifold;
+    double restitution = 0;                     ///< the larger of the two bodies'
+    double friction = 0;                        ///< the geometric mean of the two bodies'
+    std::array<double, 2> normalImpulse{0, 0};  ///< accumulated this step [N s]
+    std::array<double, 2> tangentImpulse{0, 0}; ///< accumulated this step [N s]
+};
+
+} // namespace rigidlab::physics

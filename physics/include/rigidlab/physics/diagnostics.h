@@ -1,0 +1,23 @@
+#pragma once
+// What the world measures after every step.
+
+#include "rigidlab/physics/math.h"
+
+namespace rigidlab::physics {
+
+struct Diagnostics {
+    double translationalKinetic = 0; ///< sum of m v^2 / 2 [J]
+    double rotationalKinetic = 0;    ///< sum of I w^2 / 2 [J]
+    double kinetic = 0;              ///< [J]
+    double gravityPotential = 0;     ///< -m g.x, zero at the origin [J]
+    double springPotential = 0;      ///< k (L - L0)^2 / 2 [J]
+    double gravitationPotential = 0; ///< -G m1 m2 / r [J]
+    double potential = 0;            ///< [J]
+    double total = 0;                ///< kinetic + potential [J]
+    Vec2 momentum = Vec2::Zero();    ///< linear momentum [kg m/s]
+    double angularMomentum = 0;      ///< about the world origin [kg m^2/s]
+    double collisionLoss = 0;        ///< kinetic energy taken by contacts so far [J]
+    int contacts = 0;                ///< contact points this step
+};
+
+} // namespace rigidlab::physics

@@ -1,0 +1,116 @@
+#pragma once
+// The world: owns the bodies, the force elements and the contacts, and steps them.
+
+#include "rigidlab/physics/body.h"
+#include "rigidlab/physics/contact.h"
+#include "rigidlab/physics/diagnostics.h"
+#include "rigidlab/physics/forces.h"
+#include "rigidlab/physics/integrator.h"
+
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace rigidlab::physics {
+
+/// World settings, with the defaults a scene file gets when it names none.
+struct WorldDef {
+    Vec2 gravity{0.0, -9.81}; ///< uniform acceleration [m/s^2]
+    double dt = 0.001;        ///< fixed time step [s]
+    IntegratorKind integrator = IntegratorKind::SymplecticEuler;
+    SolverKind solver = SolverKind::SequentialImpulse;
+    int iterations = 10;      ///< velocity iterations of the sequential-impulse solver
+    double restitution = 0.5; ///< default coefficient of restitution of bodies
+    double friction = 0.3;    ///< default friction coefficient of bodies
+    double gravitation = 0.0; ///< Newton's constant G between bodies [m^3/(kg s^2)], 0 = off
+    double drag = 0.0;        ///< linear drag rate: F = -drag m v, M = -drag I w [1/s]
+};
+
+/// Tuning of contacts that a scene does not set (Box2D's choices, in metres).
+struct ContactSettings {
+    double linearSlop = 0.005;  ///< allowed penetration, keeps contacts alive [m]
+    double margin = 0.01;       ///< contacts are made closer than this [m]
+    double baumgarte = 0.2;     ///< fraction of penetration removed per position pass
+    double maxCorrection = 0.2; ///< largest position correction per pass [m]
+    int positionIterations = 3;
+    double restitutionThreshold = 0.5; ///< slower approaches do not bounce [m/s]
+};
+
+class World {
+public:
+    explicit World(const WorldDef& def = {});
+    ~World();
+    World(const World& other);
+    World& operator=(const World& other);
+
+    /// Adds a body; mass, centre of mass and inertia come from the shape and density
+    /// (or the given mass). Returns its id, its index in bodies().
+    BodyId addBody(const BodyDef& def);
+    void addSpring(const SpringDef& spring);
+    void addPinJoint(const PinJointDef& joint);
+
+    /// Advances the world by one fixed step dt:
+    /// forces and integration, joints, broad phase, narrow phase (SAT), contact solve,
+    /// diagnostics.
+    void step();
+
+    // Settings, changeable between steps.
+    const WorldDef& def() const { return m_def; }
+    void setDt(double dt);
+    void setIntegrator(IntegratorKind kind);
+    void setSolver(SolverKind kind) { m_def.solver = kind; }
+    void setIterations(int n) { m_def.iterations = n; }
+    void setGravity(const Vec2& g) { m_def.gravity = g; }
+    void setGravitation(double G) { m_def.gravitation = G; }
+    void setDrag(double drag) { m_def.drag = drag; }
+    ContactSettings& contactSettings() { return m_contactSettings; }
+
+    // State.
+    const std::vector<Body>& bodies() const { return m_bodies; }
+    Body& body(BodyId id) { return m_bodies[static_cast<size_t>(id)]; }
+    const Body& body(BodyId id) const { return m_bodies[static_cast<size_t>(id)]; }
+    const std::vector<SpringDef>& springs() const { return m_springs; }
+    const std::vector<PinJointDef>& joints() const { return m_joints; }
+    const std::vector<Contact>& contacts() const { return m_contacts; }
+    /// Sets a body's pose from its origin (as a scene gives it).
+    void setBodyOrigin(BodyId id, const Vec2& origin, double angle);
+    /// Sets the velocity of a body's origin point [m/s] and its angular velocity [rad/s].
+    void setBodyVelocity(BodyId id, const Vec2& originVelocity, double angularVelocity);
+    /// Velocity of the body origin [m/s].
+    Vec2 originVelocity(BodyId id) const;
+
+    double time() const { return m_time; }
+    long long stepCount() const { return m_steps; }
+    /// Force evaluations so far (integrator stages).
+    long long evaluations() const { return m_evaluations; }
+    const Diagnostics& diagnostics() const { return m_diagnostics; }
+    /// Recomputes the diagnostics for the current state (done by step() already).
+    void updateDiagnostics();
+
+private:
+    struct Scratch;
+    void findContacts();
+    void integrate();
+    void solveContacts();
+    /// Gathers the moving bodies' state, lets `fn(dynamics, q, v)` change it, scatters it back.
+    template <typename Fn> void withState(Fn&& fn);
+
+    WorldDef m_def;
+    ContactSettings m_contactSettings;
+    std::vector<Body> m_bodies;
+    std::vector<SpringDef> m_springs;
+    std::vector<PinJointDef> m_joints;
+    std::vector<Contact> m_contacts;
+    std::unique_ptr<Integrator> m_integrator;
+    std::vector<BodyId> m_moving; ///< bodies in the integrated state, in id order
+    std::vector<int> m_slot;      ///< each body's index in m_moving, -1 for static bodies
+    std::vector<std::pair<int, int>> m_jointPairs; ///< body pairs joined by a pin, sorted
+    std::unique_ptr<Scratch> m_scratch;
+    double m_time = 0;
+    long long m_steps = 0;
+    long long m_evaluations = 0;
+    double m_collisionLoss = 0;
+    Diagnostics m_diagnostics;
+};
+
+} // namespace rigidlab::physics

@@ -1,0 +1,62 @@
+// Stage 6 of a step: the measured quantities.
+
+#include "diagnostics_compute.h"
+
+#include <cmath>
+
+namespace rigidlab::physics {
+
+Diagnostics computeDiagnostics(const WorldDef& def, const std::vector<Body>& bodies,
+                               const std::vector<SpringDef>& springs)
+{
+    Diagnostics d;
+    for (const Body& b : bodies) {
+        if (!b.isDynamic())
+            continue;
+        d.translationalKinetic += 0.5 * b.mass * b.velocity.squaredNorm();
+        d.rotationalKinetic += 0.5 * b.inertia * b.angularVelocity * b.angularVelocity;
+        d.gravityPotential -= b.mass * def.gravity.dot(b.position);
+        d.momentum += b.mass * b.velocity;
+        d.angularMomentum += b.mass * cross(b.position, b.velocity) + b.inertia * b.angularVelocity;
+    }
+    for (const SpringDef& s : springs) {
+        auto point = [&](BodyId id, const Vec2& anchor) -> Vec2 {
+            if (id == kWorld)
+                return anchor;
+            const Body& b = bodies[static_cast<size_t>(id)];
+            return b.transform().apply(anchor);
+        };
+        const double stretch =
+            (point(s.b, s.anchorB) - point(s.a, s.anchorA)).norm() - s.restLength;
+        d.springPotential += 0.5 * s.stiffness * stretch * stretch;
+    }
+    if (def.gravitation != 0.0) {
+        for (size_t i = 0; i < bodies.size(); ++i) {
+            if (!bodies[i].isDynamic())
+                continue;
+            for (size_t j = i + 1; j < bodies.size(); ++j) {
+                if (!bodies[j].isDynamic())
+                    continue;
+                const double r = (bodies[j].position - bodies[i].position).norm();
+                if (r > 1e-12)
+                    d.gravitationPotential -= def.gravitation * bodies[i].mass * bodies[j].mass / r;
+            }
+        }
+    }
+    d.kinetic = d.translationalKinetic + d.rotationalKinetic;
+    d.potential = d.gravityPotential + d.springPotential + d.gravitationPotential;
+    d.total = d.kinetic + d.potential;
+    return d;
+}
+
+double kineticEnergy(const std::vector<Body>& bodies)
+{
+    double e = 0.0;
+    for (const Body& b : bodies)
+        if (b.isDynamic())
+            e += 0.5 * (b.mass * b.velocity.squaredNorm() +
+                        b.inertia * b.angularVelocity * b.angularVelocity);
+    return e;
+}
+
+} // namespace rigidlab::physics

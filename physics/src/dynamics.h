@@ -1,0 +1,79 @@
+#pragma once
+// Private: the world's bodies and force elements seen as one ODE system over the state
+// (q, v) of the moving bodies. forces.cpp gives the applied forces, joints.cpp the exact
+// constraint forces of the pin joints and the projections that remove drift after a step.
+
+#include "rigidlab/physics/body.h"
+#include "rigidlab/physics/forces.h"
+#include "rigidlab/physics/integrator.h"
+#include "rigidlab/physics/world.h"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace rigidlab::physics {
+
+/// Pose and velocity of one body, read from a state vector (or from the body when static).
+struct BodyState {
+    Vec2 x = Vec2::Zero(); ///< centre of mass [m]
+    Rotation q;
+    Vec2 v = Vec2::Zero(); ///< [m/s]
+    double w = 0.0;        ///< [rad/s]
+};
+
+class Dynamics final : public OdeSystem {
+public:
+    Dynamics(const WorldDef& def, const std::vector<Body>& bodies, const std::vector<int>& slot,
+             const std::vector<SpringDef>& springs, const std::vector<PinJointDef>& joints)
+        : m_def(def), m_bodies(bodies), m_slot(slot), m_springs(springs), m_joints(joints)
+    {
+    }
+
+    void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                      Eigen::VectorXd& a) override;
+
+    /// Applied forces only (gravity, springs, gravitation, drag, accumulators) as
+    /// accelerations of the moving bodies.
+    void appliedAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                              Eigen::VectorXd& a) const;
+    /// Adds the pin joints' constraint forces so that the joints' relative acceleration is 0.
+    void addJointAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                               Eigen::VectorXd& a);
+
+    /// After a step: moves positions back onto the joints (Newton iterations on C(q) = 0).
+    void projectJointPositions(Eigen::VectorXd& q);
+    /// After a step: removes joint-violating velocity (exact, mass-weighted projection).
+    void projectJointVelocities(const Eigen::VectorXd& q, Eigen::VectorXd& v);
+
+    BodyState state(BodyId id, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
+    /// A body-local anchor (origin frame) as a lever arm from the centre of mass, in the world.
+    Vec2 lever(BodyId id, const Rotation& rot, const Vec2& localAnchor) const;
+
+    long long evaluations = 0;
+
+private:
+    /// Joint j's lever arms and world anchor points at positions q.
+    struct JointFrame {
+        Vec2 rA = Vec2::Zero(), rB = Vec2::Zero(); ///< lever arms [m]
+        Vec2 pA = Vec2::Zero(), pB = Vec2::Zero(); ///< world points [m]
+    };
+    JointFrame jointFrame(const PinJointDef& j, const Eigen::VectorXd& q) const;
+    /// Assembles K = J M^-1 J^T for the joints at positions q into m_k and factors it.
+    void factorJointMatrix(const std::vector<JointFrame>& frames);
+    /// Applies the joint impulses (or forces) lambda to a velocity-like vector.
+    void applyJointVector(const std::vector<JointFrame>& frames, const Eigen::VectorXd& lambda,
+                          Eigen::VectorXd& out) const;
+
+    const WorldDef& m_def;
+    const std::vector<Body>& m_bodies;
+    const std::vector<int>& m_slot; ///< state slot of each body, -1 if static
+    const std::vector<SpringDef>& m_springs;
+    const std::vector<PinJointDef>& m_joints;
+
+    std::vector<JointFrame> m_frames;
+    Eigen::MatrixXd m_k;
+    Eigen::VectorXd m_rhs, m_lambda;
+};
+
+} // namespace rigidlab::physics

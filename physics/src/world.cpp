@@ -1,0 +1,291 @@
+// The world and its step. Each stage lives in a file of its own:
+//   forces.cpp, joints.cpp  applied forces and exact pin-joint forces (inside integration)
+//   integrators.cpp         explicit Euler, symplectic Euler, velocity Verlet, RK4
+//   broad_phase.cpp         sort and sweep over bounding boxes
+//   sat.cpp                 SAT for polygons, circles, contact manifolds
+//   contact_solver.cpp      the seed's impulse, or sequential impulses; position correction
+//   diagnostics.cpp         energies and momenta
+
+#include "rigidlab/physics/world.h"
+
+#include "broad_phase.h"
+#include "contact_solver.h"
+#include "diagnostics_compute.h"
+#include "dynamics.h"
+
+#include <algorithm>
+#include <cassert>
+
+namespace rigidlab::physics {
+
+/// Buffers reused from step to step.
+struct World::Scratch {
+    BroadPhase broadPhase;
+    std::vector<std::pair<int, int>> pairs;
+    std::vector<Contact> previous;
+    Eigen::VectorXd q, v;
+    std::vector<Vec2> velocityBefore;
+    std::vector<double> angularVelocityBefore;
+};
+
+World::World(const WorldDef& def)
+    : m_def(def), m_integrator(makeIntegrator(def.integrator)),
+      m_scratch(std::make_unique<Scratch>())
+{
+}
+
+World::~World() = default;
+
+World::World(const World& o)
+    : m_def(o.m_def), m_contactSettings(o.m_contactSettings), m_bodies(o.m_bodies),
+      m_springs(o.m_springs), m_joints(o.m_joints), m_contacts(o.m_contacts),
+      m_integrator(makeIntegrator(o.m_def.integrator)), m_moving(o.m_moving), m_slot(o.m_slot),
+      m_jointPairs(o.m_jointPairs), m_scratch(std::make_unique<Scratch>()), m_time(o.m_time),
+      m_steps(o.m_steps), m_evaluations(o.m_evaluations), m_collisionLoss(o.m_collisionLoss),
+      m_diagnostics(o.m_diagnostics)
+{
+}
+
+World& World::operator=(const World& o)
+{
+    if (this != &o) {
+        World copy(o);
+        std::swap(*this, copy);
+    }
+    return *this;
+}
+
+BodyId World::addBody(const BodyDef& def)
+{
+    Body b;
+    b.name = def.name;
+    b.type = def.type;
+    b.shape = def.shape;
+    b.collide = def.collide;
+    b.restitution = def.restitution >= 0 ? def.restitution : m_def.restitution;
+    b.friction = def.friction >= 0 ? def.friction : m_def.friction;
+
+    const MassProperties mp = computeMass(def.shape, def.mass > 0 ? 1.0 : def.density);
+    b.localCenter = mp.centroid;
+    if (def.type == BodyType::Dynamic) {
+        // A given mass keeps the shape's distribution: inertia scales with it.
+        const double scale = def.mass > 0 ? def.mass / mp.mass : 1.0;
+        b.mass = mp.mass * scale;
+        b.inertia = mp.inertia * scale;
+        b.invMass = b.mass > 0 ? 1.0 / b.mass : 0.0;
+        b.invInertia = b.inertia > 0 ? 1.0 / b.inertia : 0.0;
+    }
+    const BodyId id = static_cast<BodyId>(m_bodies.size());
+    m_bodies.push_back(std::move(b));
+    setBodyOrigin(id, def.position, def.angle);
+    setBodyVelocity(id, def.velocity, def.angularVelocity);
+
+    m_slot.push_back(-1);
+    if (def.type != BodyType::Static) {
+        m_slot.back() = static_cast<int>(m_moving.size());
+        m_moving.push_back(id);
+    }
+    return id;
+}
+
+void World::addSpring(const SpringDef& spring)
+{
+    m_springs.push_back(spring);
+}
+
+void World::addPinJoint(const PinJointDef& joint)
+{
+    m_joints.push_back(joint);
+    if (joint.a != kWorld && joint.b != kWorld) {
+        m_jointPairs.push_back(std::minmax(joint.a, joint.b));
+        std::sort(m_jointPairs.begin(), m_jointPairs.end());
+    }
+}
+
+void World::setDt(double dt)
+{
+    m_def.dt = dt;
+}
+
+void World::setIntegrator(IntegratorKind kind)
+{
+    m_def.integrator = kind;
+    m_integrator = makeIntegrator(kind);
+}
+
+void World::setBodyOrigin(BodyId id, const Vec2& origin, double angle)
+{
+    Body& b = body(id);
+    b.angle = angle;
+    b.position = origin + Rotation(angle).apply(b.localCenter);
+}
+
+void World::setBodyVelocity(BodyId id, const Vec2& originVelocity, double angularVelocity)
+{
+    Body& b = body(id);
+    b.angularVelocity = angularVelocity;
+    b.velocity = originVelocity + cross(angularVelocity, Vec2(b.position - b.origin()));
+}
+
+Vec2 World::originVelocity(BodyId id) const
+{
+    const Body& b = body(id);
+    return b.pointVelocity(b.origin());
+}
+
+void World::step()
+{
+    assert(m_integrator);
+    // Contacts between the shapes where they stand now: broad phase, then SAT / manifolds.
+    findContacts();
+    // Forces and integration: the chosen integrator, forces evaluated at every stage, pin
+    // joints as exact constraint forces.
+    integrate();
+    // Collision response: impulses on the new velocities, then position correction.
+    solveContacts();
+
+    for (Body& b : m_bodies) {
+        b.force = Vec2::Zero();
+        b.torque = 0.0;
+    }
+    m_time += m_def.dt;
+    ++m_steps;
+    updateDiagnostics();
+}
+
+template <typename Fn> void World::withState(Fn&& fn)
+{
+    Eigen::VectorXd& q = m_scratch->q;
+    Eigen::VectorXd& v = m_scratch->v;
+    const Eigen::Index n = 3 * static_cast<Eigen::Index>(m_moving.size());
+    q.resize(n);
+    v.resize(n);
+    for (size_t s = 0; s < m_moving.size(); ++s) {
+        const Body& b = m_bodies[static_cast<size_t>(m_moving[s])];
+        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
+        q.segment<3>(i) << b.position.x(), b.position.y(), b.angle;
+        v.segment<3>(i) << b.velocity.x(), b.velocity.y(), b.angularVelocity;
+    }
+    Dynamics dynamics(m_def, m_bodies, m_slot, m_springs, m_joints);
+    fn(dynamics, q, v);
+    m_evaluations += dynamics.evaluations;
+    for (size_t s = 0; s < m_moving.size(); ++s) {
+        Body& b = m_bodies[static_cast<size_t>(m_moving[s])];
+        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
+        b.position = Vec2(q[i], q[i + 1]);
+        b.angle = q[i + 2];
+        b.velocity = Vec2(v[i], v[i + 1]);
+        b.angularVelocity = v[i + 2];
+    }
+}
+
+void World::integrate()
+{
+    if (m_moving.empty())
+        return;
+    const double t = m_time, h = m_def.dt;
+    withState([&](Dynamics& dynamics, Eigen::VectorXd& q, Eigen::VectorXd& v) {
+        m_integrator->step(dynamics, t, h, q, v);
+        dynamics.projectJointPositions(q);
+        dynamics.projectJointVelocities(q, v);
+    });
+}
+
+void World::findContacts()
+{
+    Scratch& s = *m_scratch;
+    std::swap(s.previous, m_contacts);
+    m_contacts.clear();
+    const double margin = m_contactSettings.margin;
+    s.broadPhase.findPairs(m_bodies, margin, m_jointPairs, s.pairs);
+    size_t old = 0;
+    for (const auto& [ia, ib] : s.pairs) {
+        const Body& a = m_bodies[static_cast<size_t>(ia)];
+        const Body& b = m_bodies[static_cast<size_t>(ib)];
+        Contact c;
+        c.a = ia;
+        c.b = ib;
+        c.manifold = collideShapes(a.shape, a.transform(), b.shape, b.transform(), margin);
+        if (c.manifold.pointCount == 0)
+            continue;
+        // Restitution: the larger of the two; friction: the geometric mean.
+        c.restitution = std::max(a.restitution, b.restitution);
+        c.friction = std::sqrt(a.friction * b.friction);
+        // Warm start: carry last step's impulses to points made by the same features.
+        while (old < s.previous.size() &&
+               std::pair(s.previous[old].a, s.previous[old].b) < std::pair(ia, ib))
+            ++old;
+        if (old < s.previous.size() && s.previous[old].a == ia && s.previous[old].b == ib) {
+            const Contact& p = s.previous[old];
+            for (int i = 0; i < c.manifold.pointCount; ++i)
+                for (int k = 0; k < p.manifold.pointCount; ++k)
+                    if (p.manifold.points[static_cast<size_t>(k)].id ==
+                        c.manifold.points[static_cast<size_t>(i)].id) {
+                        c.normalImpulse[static_cast<size_t>(i)] =
+                            p.normalImpulse[static_cast<size_t>(k)];
+                        c.tangentImpulse[static_cast<size_t>(i)] =
+                            p.tangentImpulse[static_cast<size_t>(k)];
+                    }
+        }
+        m_contacts.push_back(c);
+    }
+}
+
+void World::solveContacts()
+{
+    if (m_contacts.empty())
+        return;
+    Scratch& s = *m_scratch;
+    const double h = m_def.dt;
+    s.velocityBefore.resize(m_bodies.size());
+    s.angularVelocityBefore.resize(m_bodies.size());
+    for (size_t i = 0; i < m_bodies.size(); ++i) {
+        s.velocityBefore[i] = m_bodies[i].velocity;
+        s.angularVelocityBefore[i] = m_bodies[i].angularVelocity;
+    }
+    const double before = kineticEnergy(m_bodies);
+
+    ContactSolver solver(m_contacts, m_bodies, m_contactSettings, h);
+    if (m_def.solver == SolverKind::SeedImpulse)
+        solver.solveSeed();
+    else
+        solver.solveSequential(m_def.iterations, true);
+
+    // An impulse changes the velocity for the whole step, so the positions move by
+    // dt times the change (for symplectic Euler this is exactly Box2D's order: solve the
+    // velocities, then integrate the positions).
+    for (size_t i = 0; i < m_bodies.size(); ++i) {
+        Body& b = m_bodies[i];
+        if (!b.isDynamic())
+            continue;
+        b.position += h * (b.velocity - s.velocityBefore[i]);
+        b.angle += h * (b.angularVelocity - s.angularVelocityBefore[i]);
+    }
+    if (!m_joints.empty())
+        withState([](Dynamics& d, Eigen::VectorXd& q, Eigen::VectorXd& v) {
+            d.projectJointVelocities(q, v);
+        });
+    m_collisionLoss += before - kineticEnergy(m_bodies);
+
+    for (int i = 0; i < m_contactSettings.positionIterations; ++i)
+        if (solver.solvePositions())
+            break;
+    if (!m_joints.empty())
+        withState(
+            [](Dynamics& d, Eigen::VectorXd& q, Eigen::VectorXd&) { d.projectJointPositions(q); });
+}
+
+void World::updateDiagnostics()
+{
+    m_diagnostics = computeDiagnostics(m_def, m_bodies, m_springs);
+    m_diagnostics.collisionLoss = m_collisionLoss;
+    int count = 0;
+    for (const Contact& c : m_contacts)
+        for (int i = 0; i < c.manifold.pointCount; ++i)
+            if (c.manifold.points[static_cast<size_t>(i)].separation <= 0 ||
+                c.normalImpulse[static_cast<size_t>(i)] > 0)
+                ++count;
+    m_diagnostics.contacts = count;
+}
+
+} // namespace rigidlab::physics
