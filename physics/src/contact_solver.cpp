@@ -22,13 +22,46 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace rigidlab::physics {
 
+namespace {
+
+struct NamedSolver {
+    SolverKind kind;
+    std::string_view name;
+};
+constexpr std::array<NamedSolver, 2> kSolvers{{
+    {SolverKind::SeedImpulse, "seed-impulse"},
+    {SolverKind::SequentialImpulse, "sequential-impulse"},
+}};
+
+} // namespace
+
+std::string_view solverName(SolverKind kind)
+{
+    for (const auto& s : kSolvers)
+        if (s.kind == kind)
+            return s.name;
+    return "?";
+}
+
+std::optional<SolverKind> solverFromName(std::string_view name)
+{
+    for (const auto& s : kSolvers)
+        if (s.name == name)
+            return s.kind;
+    return std::nullopt;
+}
+
 ContactSolver::ContactSolver(std::vector<Contact>& contacts, std::vector<Body>& bodies,
-                             const ContactSettings& settings, double dt)
-    : m_contacts(contacts), m_bodies(bodies), m_settings(settings), m_dt(dt)
+                             const ContactSettings& settings, double dt,
+                             const std::vector<Vec2>& startVelocity,
+                             const std::vector<double>& startAngularVelocity)
+    : m_contacts(contacts), m_bodies(bodies), m_settings(settings), m_dt(dt),
+      m_startVelocity(startVelocity), m_startAngularVelocity(startAngularVelocity)
 {
 }
 
@@ -43,7 +76,7 @@ double ContactSolver::normalVelocity(const Constraint& c, int i) const
     return dv.dot(c.normal);
 }
 
-void ContactSolver::prepare()
+void ContactSolver::prepare(double threshold)
 {
     m_constraints.clear();
     m_constraints.reserve(m_contacts.size());
@@ -74,10 +107,31 @@ void ContactSolver::prepare()
             const double vn = normalVelocity(c, i);
             const double sep = cp.separation;
             const double speculative = sep > 0 ? -sep / m_dt : 0.0;
-            const bool closes = sep <= 0 || -vn * m_dt > sep;
+            p.closes = sep <= 0 || -vn * m_dt > sep;
             p.bias = speculative;
-            if (closes && vn < -m_settings.restitutionThreshold)
-                p.bias = std::max(-ct.restitution * vn, speculative);
+            p.impact = 0.0;
+            if (p.closes && vn < -threshold) {
+                double bounce = -ct.restitution * vn;
+                double fraction = 0.0;
+                if (sep > 0) {
+                    // The gap closes within this step: time the impact. At the start of the
+                    // step the normal velocity was vn0; the gap closes after the fraction f
+                    // of the step, at about vn0 + f (vn - vn0). The bounce reverses that,
+                    // and the forces act on for the rest of the step.
+                    const size_t ia = static_cast<size_t>(ct.a), ib = static_cast<size_t>(ct.b);
+                    const double vn0 =
+                        (m_startVelocity[ib] + cross(m_startAngularVelocity[ib], p.rB) -
+                         m_startVelocity[ia] - cross(m_startAngularVelocity[ia], p.rA))
+                            .dot(c.normal);
+                    fraction = vn0 < 0 ? std::clamp(sep / (-vn0 * m_dt), 0.0, 1.0) : 1.0;
+                    const double atImpact = vn0 + fraction * (vn - vn0);
+                    bounce = -ct.restitution * atImpact + (1.0 - fraction) * (vn - vn0);
+                }
+                if (bounce > speculative && bounce >= 0) {
+                    p.bias = bounce;
+                    p.impact = fraction;
+                }
+            }
         }
         if (c.count == 2) {
             const Point &p1 = c.p[0], &p2 = c.p[1];
@@ -223,7 +277,7 @@ void ContactSolver::solveNormalBlock(Constraint& c)
 
 void ContactSolver::solveSequential(int iterations, bool warm)
 {
-    prepare();
+    prepare(m_settings.restitutionThreshold);
     if (warm)
         warmStart();
     else
@@ -246,24 +300,46 @@ void ContactSolver::solveSeed()
 {
     for (Contact& ct : m_contacts)
         ct.normalImpulse = ct.tangentImpulse = {0.0, 0.0};
-    prepare();
     // The seed has no threshold: every approaching contact gets its impulse, once, in order.
+    prepare(0.0);
     for (Constraint& c : m_constraints) {
-        Contact& ct = m_contacts[static_cast<size_t>(c.contact)];
         for (int i = 0; i < c.count; ++i) {
-            const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
-            const double vn = normalVelocity(c, i);
-            const double sep = cp.separation;
-            if (vn >= 0 || (sep > 0 && -vn * m_dt <= sep))
+            if (!c.p[i].closes || normalVelocity(c, i) >= 0)
                 continue; // separating, or will not reach the other body this step
-            const double speculative = sep > 0 ? -sep / m_dt : 0.0;
-            const double target = std::max(-ct.restitution * vn, speculative);
-            ct.normalImpulse[static_cast<size_t>(i)] = 0.0;
-            c.p[i].bias = target;
             solveNormalPoint(c, i);
             solveFrictionPoint(c, i);
         }
     }
+}
+
+bool ContactSolver::appliedImpulse() const
+{
+    for (const Contact& ct : m_contacts)
+        if (ct.normalImpulse[0] > 0 || ct.normalImpulse[1] > 0)
+            return true;
+    return false;
+}
+
+std::vector<double> ContactSolver::impactFractions() const
+{
+    // A body bounced by every contact that pushed it moved freely until its earliest impact;
+    // any contact that pushed it without a bounce (resting) makes it 0.
+    std::vector<double> fraction(m_bodies.size(), 1.0);
+    for (const Constraint& c : m_constraints) {
+        const Contact& ct = m_contacts[static_cast<size_t>(c.contact)];
+        for (int i = 0; i < c.count; ++i) {
+            if (ct.normalImpulse[static_cast<size_t>(i)] <= 0)
+                continue;
+            for (BodyId id : {ct.a, ct.b}) {
+                double& f = fraction[static_cast<size_t>(id)];
+                f = std::min(f, c.p[i].impact);
+            }
+        }
+    }
+    for (double& f : fraction)
+        if (f == 1.0)
+            f = 0.0; // untouched: no velocity change to place
+    return fraction;
 }
 
 bool ContactSolver::solvePositions()

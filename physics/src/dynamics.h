@@ -59,6 +59,8 @@ private:
         Vec2 pA = Vec2::Zero(), pB = Vec2::Zero(); ///< world points [m]
     };
     JointFrame jointFrame(const PinJointDef& j, const Eigen::VectorXd& q) const;
+    /// Velocity of the point at lever r of body id (zero for the world and static bodies).
+    Vec2 pointVelocity(BodyId id, const Vec2& r, const Eigen::VectorXd& v) const;
     /// Assembles K = J M^-1 J^T for the joints at positions q into m_k and factors it.
     void factorJointMatrix(const std::vector<JointFrame>& frames);
     /// Applies the joint impulses (or forces) lambda to a velocity-like vector.

@@ -168,6 +168,17 @@ void Dynamics::projectJointPositions(Eigen::VectorXd& q)
     }
 }
 
+Vec2 Dynamics::pointVelocity(BodyId id, const Vec2& r, const Eigen::VectorXd& v) const
+{
+    if (id == kWorld)
+        return Vec2::Zero();
+    const int s = m_slot[static_cast<size_t>(id)];
+    if (s < 0)
+        return Vec2::Zero();
+    const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
+    return Vec2(v[i], v[i + 1]) + cross(v[i + 2], r);
+}
+
 void Dynamics::projectJointVelocities(const Eigen::VectorXd& q, Eigen::VectorXd& v)
 {
     if (m_joints.empty())
@@ -178,16 +189,8 @@ void Dynamics::projectJointVelocities(const Eigen::VectorXd& q, Eigen::VectorXd&
     for (size_t j = 0; j < m_joints.size(); ++j) {
         const JointFrame f = jointFrame(m_joints[j], q);
         m_frames[j] = f;
-        auto pointVelocity = [&](BodyId id, const Vec2& r) -> Vec2 {
-            if (id == kWorld)
-                return Vec2::Zero();
-            const int s = m_slot[static_cast<size_t>(id)];
-            if (s < 0)
-                return Vec2::Zero();
-            const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
-            return Vec2(v[i], v[i + 1]) + cross(v[i + 2], r);
-        };
-        const Vec2 cdot = pointVelocity(m_joints[j].a, f.rA) - pointVelocity(m_joints[j].b, f.rB);
+        const Vec2 cdot =
+            pointVelocity(m_joints[j].a, f.rA, v) - pointVelocity(m_joints[j].b, f.rB, v);
         m_rhs.segment<2>(2 * static_cast<Eigen::Index>(j)) = -cdot;
     }
     factorJointMatrix(m_frames);

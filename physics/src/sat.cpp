@@ -30,6 +30,9 @@ namespace {
 // The reference face changes from A to B only when B's axis is better by this much [m],
 // so that two nearly parallel faces do not swap roles from one step to the next.
 constexpr double kReferenceHysteresis = 0.0005;
+// Clipped points within this of the margin still count: the separation of a point exactly on
+// the reference face rounds to either side of zero [m].
+constexpr double kTouchTolerance = 1e-9;
 
 struct WorldPolygon {
     std::array<Vec2, kMaxPolygonVertices> v;
@@ -115,9 +118,10 @@ void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const
     m.localPoint = xfRef.applyInverse(r1);
     m.radiusA = m.radiusB = 0.0;
     m.pointCount = 0;
+    const std::array<double, 2> seps{refNormal.dot(p[0] - r1), refNormal.dot(p[1] - r1)};
     for (size_t k = 0; k < 2; ++k) {
-        const double sep = refNormal.dot(p[k] - r1);
-        if (sep > margin)
+        const double sep = seps[k];
+        if (sep > margin + kTouchTolerance)
             continue;
         ContactPoint& cp = m.points[static_cast<size_t>(m.pointCount)];
         cp.point = p[k] - 0.5 * sep * refNormal;

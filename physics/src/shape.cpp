@@ -23,17 +23,21 @@ std::vector<Vec2> edgeNormals(const std::vector<Vec2>& v)
     return normals;
 }
 
+/// Convex and counter-clockwise: every corner turns left, and the turns add up to one full
+/// turn (a star such as a pentagram turns left everywhere but winds twice).
 bool isConvexCounterClockwise(const std::vector<Vec2>& v)
 {
     const size_t n = v.size();
+    double turning = 0.0;
     for (size_t i = 0; i < n; ++i) {
-        const Vec2& p0 = v[i];
-        const Vec2& p1 = v[(i + 1) % n];
-        const Vec2& p2 = v[(i + 2) % n];
-        if (cross(Vec2(p1 - p0), Vec2(p2 - p1)) <= 0.0)
+        const Vec2 e0 = v[(i + 1) % n] - v[i];
+        const Vec2 e1 = v[(i + 2) % n] - v[(i + 1) % n];
+        const double c = cross(e0, e1);
+        if (c <= 0.0)
             return false;
+        turning += std::atan2(c, e0.dot(e1));
     }
-    return true;
+    return std::abs(turning - 2.0 * std::numbers::pi) < 1e-6;
 }
 
 } // namespace

@@ -24,8 +24,8 @@ struct World::Scratch {
     std::vector<std::pair<int, int>> pairs;
     std::vector<Contact> previous;
     Eigen::VectorXd q, v;
-    std::vector<Vec2> velocityBefore;
-    std::vector<double> angularVelocityBefore;
+    std::vector<Vec2> velocityBefore, velocityAtStart;
+    std::vector<double> angularVelocityBefore, angularVelocityAtStart;
 };
 
 World::World(const WorldDef& def)
@@ -48,12 +48,13 @@ World::World(const World& o)
 
 World& World::operator=(const World& o)
 {
-    if (this != &o) {
-        World copy(o);
-        std::swap(*this, copy);
-    }
+    if (this != &o)
+        *this = World(o);
     return *this;
 }
+
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
 
 BodyId World::addBody(const BodyDef& def)
 {
@@ -113,6 +114,20 @@ void World::setIntegrator(IntegratorKind kind)
     m_integrator = makeIntegrator(kind);
 }
 
+void World::setRestitution(double e)
+{
+    m_def.restitution = e;
+    for (Body& b : m_bodies)
+        b.restitution = e;
+}
+
+void World::setFriction(double mu)
+{
+    m_def.friction = mu;
+    for (Body& b : m_bodies)
+        b.friction = mu;
+}
+
 void World::setBodyOrigin(BodyId id, const Vec2& origin, double angle)
 {
     Body& b = body(id);
@@ -136,6 +151,14 @@ Vec2 World::originVelocity(BodyId id) const
 void World::step()
 {
     assert(m_integrator);
+    // Velocities at the start of the step, to time bounces within it.
+    Scratch& s = *m_scratch;
+    s.velocityAtStart.resize(m_bodies.size());
+    s.angularVelocityAtStart.resize(m_bodies.size());
+    for (size_t i = 0; i < m_bodies.size(); ++i) {
+        s.velocityAtStart[i] = m_bodies[i].velocity;
+        s.angularVelocityAtStart[i] = m_bodies[i].angularVelocity;
+    }
     // Contacts between the shapes where they stand now: broad phase, then SAT / manifolds.
     findContacts();
     // Forces and integration: the chosen integrator, forces evaluated at every stage, pin
@@ -186,8 +209,13 @@ void World::integrate()
     const double t = m_time, h = m_def.dt;
     withState([&](Dynamics& dynamics, Eigen::VectorXd& q, Eigen::VectorXd& v) {
         m_integrator->step(dynamics, t, h, q, v);
+        // Back onto the joints. Positions always; velocities too, except for symplectic
+        // Euler: velocity Verlet with both projections is RATTLE, symplectic Euler with
+        // positions only is its SHAKE form, and each keeps the pendulum's energy bounded,
+        // where the other choice feeds energy in step after step.
         dynamics.projectJointPositions(q);
-        dynamics.projectJointVelocities(q, v);
+        if (m_def.integrator != IntegratorKind::SymplecticEuler)
+            dynamics.projectJointVelocities(q, v);
     });
 }
 
@@ -245,23 +273,28 @@ void World::solveContacts()
     }
     const double before = kineticEnergy(m_bodies);
 
-    ContactSolver solver(m_contacts, m_bodies, m_contactSettings, h);
+    ContactSolver solver(m_contacts, m_bodies, m_contactSettings, h, s.velocityAtStart,
+                         s.angularVelocityAtStart);
     if (m_def.solver == SolverKind::SeedImpulse)
         solver.solveSeed();
     else
         solver.solveSequential(m_def.iterations, true);
 
-    // An impulse changes the velocity for the whole step, so the positions move by
-    // dt times the change (for symplectic Euler this is exactly Box2D's order: solve the
-    // velocities, then integrate the positions).
+    // A resting contact's impulse changes the velocity for the whole step, so the position
+    // moves by dt times the change (for symplectic Euler exactly Box2D's order: solve the
+    // velocities, then integrate the positions). A bounce timed at the fraction f of the step
+    // moves it by (1 - f) dt times the change.
+    const std::vector<double> impact = solver.impactFractions();
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         Body& b = m_bodies[i];
         if (!b.isDynamic())
             continue;
-        b.position += h * (b.velocity - s.velocityBefore[i]);
-        b.angle += h * (b.angularVelocity - s.angularVelocityBefore[i]);
+        const double after = (1.0 - impact[i]) * h;
+        b.position += after * (b.velocity - s.velocityBefore[i]);
+        b.angle += after * (b.angularVelocity - s.angularVelocityBefore[i]);
     }
-    if (!m_joints.empty())
+    // Impulses on jointed bodies may push along a joint: take that velocity out again.
+    if (!m_joints.empty() && solver.appliedImpulse())
         withState([](Dynamics& d, Eigen::VectorXd& q, Eigen::VectorXd& v) {
             d.projectJointVelocities(q, v);
         });

@@ -42,6 +42,8 @@ public:
     ~World();
     World(const World& other);
     World& operator=(const World& other);
+    World(World&& other) noexcept;
+    World& operator=(World&& other) noexcept;
 
     /// Adds a body; mass, centre of mass and inertia come from the shape and density
     /// (or the given mass). Returns its id, its index in bodies().
@@ -63,6 +65,10 @@ public:
     void setGravity(const Vec2& g) { m_def.gravity = g; }
     void setGravitation(double G) { m_def.gravitation = G; }
     void setDrag(double drag) { m_def.drag = drag; }
+    /// Sets the default coefficient of restitution and gives it to every body.
+    void setRestitution(double e);
+    /// Sets the default friction coefficient and gives it to every body.
+    void setFriction(double mu);
     ContactSettings& contactSettings() { return m_contactSettings; }
 
     // State.
