@@ -1,0 +1,819 @@
+// The live plots and their export: data from a SampleBuffer reaches the series, memory stays
+// bounded over long runs, time travel and marks behave, and every export is either a valid
+// file or nothing at all.
+
+#include "plot_export.h"
+#include "plot_widget.h"
+#include "sample_buffer.h"
+
+#include <qcustomplot.h>
+
+#include <QSignalSpy>
+#include <QSvgRenderer>
+#include <QTemporaryDir>
+#include <QXmlStreamReader>
+#include <QtTest>
+
+#include <cmath>
+
+#ifdef Q_OS_UNIX
+#include <csignal>
+#include <sys/resource.h>
+#endif
+
+using namespace rigidlab::ui;
+
+namespace {
+
+/// A deterministic sample at time t [s]; every field differs from the others.
+Sample sampleAt(double t)
+{
+    Sample s;
+    s.t = t;
+    s.kinetic = 1.5 + std::sin(t);
+    s.potential = 2.25 - std::sin(t);
+    s.total = s.kinetic + s.potential;
+    s.px = 0.5 * t;
+    s.py = -0.25 * t + 1.0 / 3.0;
+    s.angularMomentum = 0.1 + t * t;
+    s.driftPercent = 1e-7 * t;
+    return s;
+}
+
+double field(const Sample& s, const QString& name)
+{
+    if (name == "kinetic")
+        return s.kinetic;
+    if (name == "potential")
+        return s.potential;
+    if (name == "total")
+        return s.total;
+    if (name == "px")
+        return s.px;
+    if (name == "py")
+        return s.py;
+    if (name == "L")
+        return s.angularMomentum;
+    if (name == "drift")
+        return s.driftPercent;
+    qFatal("unknown sample field %s", qPrintable(name));
+}
+
+PlotWidget* makePlot(const QString& kind, QWidget* parent)
+{
+    if (kind == "energy")
+        return makeEnergyPlot(parent);
+    if (kind == "momentum")
+        return makeMomentumPlot(parent);
+    if (kind == "drift")
+        return makeDriftPlot(parent);
+    qFatal("unknown plot kind %s", qPrintable(kind));
+}
+
+/// Pushes samples t = first, first + dt, ... (count of them) and drains after each chunk.
+void feed(SampleBuffer& buffer, PlotWidget& plot, double first, double dt, int count)
+{
+    const int chunk = static_cast<int>(buffer.capacity() / 2);
+    for (int i = 0; i < count; ++i) {
+        buffer.push(sampleAt(first + dt * i));
+        if ((i + 1) % chunk == 0)
+            plot.drain();
+    }
+    plot.drain();
+}
+
+QStringList entries(const QString& dir)
+{
+    return QDir(dir).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden, QDir::Name);
+}
+
+QByteArray readAll(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+#ifdef Q_OS_UNIX
+/// Makes every write past `bytes` fail with EFBIG, for root too (permissions do not stop
+/// root, a file size limit does): an export that fails halfway through writing.
+class FileSizeLimit {
+public:
+    explicit FileSizeLimit(rlim_t bytes)
+    {
+        getrlimit(RLIMIT_FSIZE, &m_old);
+        m_oldHandler = std::signal(SIGXFSZ, SIG_IGN); // else the process is killed
+        rlimit limited = m_old;
+        limited.rlim_cur = bytes;
+        m_active = setrlimit(RLIMIT_FSIZE, &limited) == 0;
+    }
+    ~FileSizeLimit()
+    {
+        setrlimit(RLIMIT_FSIZE, &m_old);
+        std::signal(SIGXFSZ, m_oldHandler);
+    }
+    bool isActive() const { return m_active; }
+
+private:
+    rlimit m_old{};
+    void (*m_oldHandler)(int) = nullptr;
+    bool m_active = false;
+};
+#endif
+
+} // namespace
+
+class TestPlots : public QObject {
+    Q_OBJECT
+
+private slots:
+    void seriesReceiveSamples_data();
+    void seriesReceiveSamples();
+    void directSeriesRestartWhenTimeGoesBack();
+    void drainReplotsOnlyOnChange();
+
+    void formatFromSuffix_data();
+    void formatFromSuffix();
+    void exportWritesValidFile_data();
+    void exportWritesValidFile();
+    void csvHasFullPrecisionAndUnits();
+    void exportReplacesExistingFile();
+    void failedExportLeavesNothing_data();
+    void failedExportLeavesNothing();
+    void failedExportKeepsExistingFile_data();
+    void failedExportKeepsExistingFile();
+
+    void memoryStaysBounded_data();
+    void memoryStaysBounded();
+    void thinningKeepsNewestPointAndEvenSpacing();
+    void windowModeScrolls();
+    void rewindDropsLaterPoints();
+    void sampleGoingBackRewinds();
+    void marksAreBounded();
+    void userRangeChangePausesFollowing();
+    void wheelPausesFollowing();
+    void legendWrapsToFitWidth();
+    void contextMenuOffersExportsAndRanges();
+};
+
+void TestPlots::seriesReceiveSamples_data()
+{
+    QTest::addColumn<QString>("kind");
+    QTest::addColumn<QStringList>("fields");
+    QTest::addColumn<QStringList>("headers");
+    QTest::newRow("energy") << "energy" << QStringList{"kinetic", "potential", "total"}
+                            << QStringList{"kinetic [J]", "potential [J]", "total [J]"};
+    QTest::newRow("momentum") << "momentum" << QStringList{"px", "py", "L"}
+                              << QStringList{"px [kg m/s]", "py [kg m/s]", "L [kg m²/s]"};
+    QTest::newRow("drift") << "drift" << QStringList{"drift"} << QStringList{"energy drift [%]"};
+}
+
+void TestPlots::seriesReceiveSamples()
+{
+    QFETCH(QString, kind);
+    QFETCH(QStringList, fields);
+    QFETCH(QStringList, headers);
+
+    QWidget window;
+    PlotWidget* plot = makePlot(kind, &window);
+    QCOMPARE(plot->parent(), &window);
+    QCOMPARE(plot->seriesCount(), fields.size());
+    for (int i = 0; i < plot->seriesCount(); ++i)
+        QCOMPARE(plot->seriesName(i) + " [" + plot->seriesUnit(i) + "]", headers[i]);
+
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    QCOMPARE(plot->drain(), 0);
+    QCOMPARE(plot->pointCount(), 0);
+
+    const double dt = 1.0 / 64; // [s]
+    for (int i = 0; i < 300; ++i)
+        buffer.push(sampleAt(dt * i));
+    QCOMPARE(plot->drain(), 300);
+    QCOMPARE(plot->drain(), 0); // the cursor moved on
+
+    for (int c = 0; c < fields.size(); ++c) {
+        const std::vector<QPointF> pts = plot->points(c);
+        QCOMPARE(static_cast<int>(pts.size()), 300);
+        for (int i = 0; i < 300; ++i) {
+            const Sample s = sampleAt(dt * i);
+            QCOMPARE(pts[i].x(), s.t);
+            QCOMPARE(pts[i].y(), field(s, fields[c]));
+        }
+    }
+}
+
+void TestPlots::directSeriesRestartWhenTimeGoesBack()
+{
+    PlotWidget plot(QStringLiteral("Energy per integrator"));
+    plot.setYAxisLabel(QStringLiteral("total energy E"), QStringLiteral("J"));
+    const int euler = plot.addSeries(QStringLiteral("explicit Euler"), plotColor(0));
+    const int verlet = plot.addSeries(QStringLiteral("Verlet"), plotColor(1));
+    for (int i = 0; i < 10; ++i) {
+        plot.appendPoint(euler, 0.5 * i, 1.0 + 0.1 * i);
+        plot.appendPoint(verlet, 0.5 * i, 1.0);
+    }
+    plot.appendPoint(verlet, 5.0, std::numeric_limits<double>::infinity()); // a gap
+    plot.drain();
+    QCOMPARE(plot.pointCount(euler), 10);
+    QCOMPARE(plot.pointCount(verlet), 11);
+    QVERIFY(std::isnan(plot.points(verlet).back().y()));
+
+    plot.appendPoint(euler, 2.0, 7.0); // this series starts over at t = 2 s
+    const std::vector<QPointF> pts = plot.points(euler);
+    QCOMPARE(static_cast<int>(pts.size()), 5);
+    QCOMPARE(pts.back(), QPointF(2.0, 7.0));
+    QCOMPARE(plot.pointCount(verlet), 11);
+}
+
+void TestPlots::drainReplotsOnlyOnChange()
+{
+    PlotWidget plot(QStringLiteral("Energy"));
+    const int kinetic = plot.addSeries(QStringLiteral("kinetic"), plotColor(0),
+                                       [](const Sample& s) { return s.kinetic; });
+    Q_UNUSED(kinetic);
+    SampleBuffer buffer;
+    plot.setSource(&buffer);
+    plot.resize(640, 400);
+    plot.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plot));
+    QTest::qWait(100);
+
+    QSignalSpy replots(plot.plot(), &QCustomPlot::afterReplot);
+    plot.drain();
+    QTest::qWait(100); // several ticks of the plot's own timer, with nothing new
+    QCOMPARE(replots.count(), 0);
+
+    buffer.push(sampleAt(0.25));
+    QCOMPARE(plot.drain(), 1);
+    QTRY_COMPARE(replots.count(), 1);
+}
+
+void TestPlots::formatFromSuffix_data()
+{
+    QTest::addColumn<QString>("suffix");
+    QTest::addColumn<int>("format"); // -1: unknown
+    QTest::newRow("png") << "png" << int(ExportFormat::Png);
+    QTest::newRow("dot PDF") << ".PDF" << int(ExportFormat::Pdf);
+    QTest::newRow("Svg") << "Svg" << int(ExportFormat::Svg);
+    QTest::newRow("csv") << "csv" << int(ExportFormat::Csv);
+    QTest::newRow("jpeg") << "jpeg" << -1;
+    QTest::newRow("empty") << "" << -1;
+}
+
+void TestPlots::formatFromSuffix()
+{
+    QFETCH(QString, suffix);
+    QFETCH(int, format);
+    const std::optional<ExportFormat> found = rigidlab::ui::formatFromSuffix(suffix);
+    QCOMPARE(found.has_value(), format >= 0);
+    if (found) {
+        QCOMPARE(int(*found), format);
+        QCOMPARE(rigidlab::ui::formatFromSuffix(suffixFor(*found)), found);
+    }
+}
+
+void TestPlots::exportWritesValidFile_data()
+{
+    QTest::addColumn<int>("format");
+    QTest::newRow("png") << int(ExportFormat::Png);
+    QTest::newRow("pdf") << int(ExportFormat::Pdf);
+    QTest::newRow("svg") << int(ExportFormat::Svg);
+    QTest::newRow("csv") << int(ExportFormat::Csv);
+}
+
+void TestPlots::exportWritesValidFile()
+{
+    QFETCH(int, format);
+    const auto fmt = ExportFormat(format);
+
+    PlotWidget* plot = makeEnergyPlot(nullptr);
+    std::unique_ptr<PlotWidget> owner(plot);
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 0.05, 150);
+    plot->addMark(3.0, QStringLiteral("RK4"));
+    plot->drain();
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath("energy." + suffixFor(fmt));
+    const ExportResult result = exportPlot(*plot, path, fmt);
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QVERIFY(result.error.isEmpty());
+    QCOMPARE(entries(dir.path()), QStringList{QFileInfo(path).fileName()}); // no leftovers
+
+    const QByteArray bytes = readAll(path);
+    switch (fmt) {
+    case ExportFormat::Png: {
+        QImage image;
+        QVERIFY(image.loadFromData(bytes, "PNG"));
+        const ExportOptions defaults;
+        QCOMPARE(image.size(), defaults.logicalSize * defaults.pngPixelRatio);
+        QCOMPARE(image.size(), QSize(1600, 1000));
+        QCOMPARE(image.pixelColor(0, 0), QColor(Qt::white));
+        int inked = 0; // curves, text and axes: far from an empty white picture
+        for (int y = 0; y < image.height(); y += 4)
+            for (int x = 0; x < image.width(); x += 4)
+                inked += image.pixelColor(x, y) != QColor(Qt::white) ? 1 : 0;
+        QVERIFY2(inked > 2000, qPrintable(QString::number(inked)));
+        break;
+    }
+    case ExportFormat::Pdf:
+        QVERIFY(bytes.startsWith("%PDF-"));
+        QVERIFY(bytes.trimmed().endsWith("%%EOF"));
+        break;
+    case ExportFormat::Svg: {
+        QXmlStreamReader xml(bytes);
+        QString root;
+        while (!xml.atEnd()) {
+            xml.readNext();
+            if (xml.isStartElement() && root.isEmpty())
+                root = xml.name().toString();
+        }
+        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
+        QCOMPARE(root, QStringLiteral("svg"));
+        QSvgRenderer renderer(path);
+        QVERIFY(renderer.isValid());
+        break;
+    }
+    case ExportFormat::Csv: {
+        const QList<QByteArray> lines = bytes.trimmed().split('\n');
+        QCOMPARE(lines.first(), QByteArray("t [s],kinetic [J],potential [J],total [J]"));
+        QCOMPARE(lines.size(), 1 + 150);
+        for (const QByteArray& line : lines)
+            QCOMPARE(line.count(','), 3);
+        break;
+    }
+    }
+}
+
+void TestPlots::csvHasFullPrecisionAndUnits()
+{
+    std::unique_ptr<PlotWidget> plot(makeMomentumPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.1, 0.1, 40); // 0.1 is not exact in binary: a good test of precision
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("momentum.csv");
+    const ExportResult result = exportPlot(*plot, path, ExportFormat::Csv);
+    QVERIFY2(result.ok, qPrintable(result.error));
+
+    const QList<QByteArray> lines = readAll(path).trimmed().split('\n');
+    QCOMPARE(QString::fromUtf8(lines.first()),
+             QStringLiteral("t [s],px [kg m/s],py [kg m/s],L [kg m²/s]"));
+    QCOMPARE(lines.size(), 41);
+    for (int i = 0; i < 40; ++i) {
+        const QList<QByteArray> cells = lines[i + 1].split(',');
+        QCOMPARE(cells.size(), 4);
+        const Sample s = sampleAt(0.1 + 0.1 * i);
+        // Exact equality: the text reads back as the very same double.
+        QVERIFY(cells[0].toDouble() == s.t);
+        QVERIFY(cells[1].toDouble() == s.px);
+        QVERIFY(cells[2].toDouble() == s.py);
+        QVERIFY(cells[3].toDouble() == s.angularMomentum);
+    }
+}
+
+void TestPlots::exportReplacesExistingFile()
+{
+    std::unique_ptr<PlotWidget> plot(makeDriftPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 0.5, 4);
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("drift.csv");
+    {
+        QFile old(path);
+        QVERIFY(old.open(QIODevice::WriteOnly));
+        old.write("an older export, much longer than the new one\n");
+    }
+    const ExportResult result = exportPlot(*plot, path, ExportFormat::Csv);
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QCOMPARE(readAll(path).trimmed().split('\n').size(), 5);
+    QCOMPARE(entries(dir.path()), QStringList{"drift.csv"});
+}
+
+void TestPlots::failedExportLeavesNothing_data()
+{
+    QTest::addColumn<int>("format");
+    QTest::addColumn<QString>("failure");
+    const std::pair<ExportFormat, const char*> formats[] = {{ExportFormat::Png, "png"},
+                                                            {ExportFormat::Pdf, "pdf"},
+                                                            {ExportFormat::Svg, "svg"},
+                                                            {ExportFormat::Csv, "csv"}};
+    for (const auto& [format, name] : formats)
+        for (const char* failure :
+             {"missing directory", "target is a directory", "read-only directory"})
+            QTest::addRow("%s, %s", name, failure) << int(format) << QString(failure);
+}
+
+void TestPlots::failedExportLeavesNothing()
+{
+    QFETCH(int, format);
+    QFETCH(QString, failure);
+    const auto fmt = ExportFormat(format);
+
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 0.05, 100);
+
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString name = "energy." + suffixFor(fmt);
+    QString path;
+    QString watched = dir.path(); // nothing may appear or vanish in here
+    if (failure == "missing directory") {
+        path = dir.filePath("no/such/dir/" + name);
+    } else if (failure == "target is a directory") {
+        path = dir.filePath(name);
+        QVERIFY(QDir(dir.path()).mkdir(name));
+    } else {
+        watched = dir.filePath("read-only");
+        QVERIFY(QDir(dir.path()).mkdir("read-only"));
+        QVERIFY(QFile::setPermissions(watched, QFile::ReadOwner | QFile::ExeOwner |
+                                                   QFile::ReadGroup | QFile::ExeGroup |
+                                                   QFile::ReadOther | QFile::ExeOther));
+        QFile probe(watched + "/probe");
+        if (probe.open(QIODevice::WriteOnly)) {
+            probe.remove();
+            QSKIP("permissions do not stop this user (root): covered by the other rows and "
+                  "by failedExportKeepsExistingFile");
+        }
+        path = watched + '/' + name;
+    }
+    const QStringList before = entries(watched);
+
+    const ExportResult result = exportPlot(*plot, path, fmt);
+    QFile::setPermissions(watched, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+
+    QVERIFY(!result.ok);
+    QVERIFY2(result.error.startsWith("cannot write "), qPrintable(result.error));
+    QVERIFY2(result.error.contains(QDir::toNativeSeparators(path)), qPrintable(result.error));
+    QCOMPARE(entries(watched), before);
+    if (failure == "target is a directory")
+        QVERIFY(QFileInfo(path).isDir());
+    else
+        QVERIFY(!QFileInfo::exists(path));
+}
+
+void TestPlots::failedExportKeepsExistingFile_data()
+{
+    QTest::addColumn<int>("format");
+    QTest::addColumn<QString>("failure");
+    const std::pair<ExportFormat, const char*> formats[] = {{ExportFormat::Png, "png"},
+                                                            {ExportFormat::Pdf, "pdf"},
+                                                            {ExportFormat::Svg, "svg"},
+                                                            {ExportFormat::Csv, "csv"}};
+    for (const auto& [format, name] : formats)
+        for (const char* failure : {"file size limit", "read-only directory"})
+            QTest::addRow("%s, %s", name, failure) << int(format) << QString(failure);
+}
+
+void TestPlots::failedExportKeepsExistingFile()
+{
+    QFETCH(int, format);
+    QFETCH(QString, failure);
+    const auto fmt = ExportFormat(format);
+
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 0.05, 200); // well over the size limit below, in every format
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath("energy." + suffixFor(fmt));
+    const QByteArray precious = "the export from last week's lecture\n";
+    {
+        QFile old(path);
+        QVERIFY(old.open(QIODevice::WriteOnly));
+        QCOMPARE(old.write(precious), precious.size());
+    }
+
+    ExportResult result;
+    if (failure == "file size limit") {
+#ifdef Q_OS_UNIX
+        // Fails halfway through writing, for root too.
+        FileSizeLimit limit(1024);
+        QVERIFY(limit.isActive());
+        result = exportPlot(*plot, path, fmt);
+#else
+        QSKIP("needs a POSIX file size limit");
+#endif
+    } else {
+        const auto readOnly = QFile::ReadOwner | QFile::ExeOwner | QFile::ReadGroup |
+                              QFile::ExeGroup | QFile::ReadOther | QFile::ExeOther;
+        QVERIFY(QFile::setPermissions(dir.path(), readOnly));
+        QFile probe(dir.filePath("probe"));
+        const bool permissionsIgnored = probe.open(QIODevice::WriteOnly);
+        if (!permissionsIgnored)
+            result = exportPlot(*plot, path, fmt);
+        probe.remove();
+        QFile::setPermissions(dir.path(), readOnly | QFile::WriteOwner);
+        if (permissionsIgnored)
+            QSKIP("permissions do not stop this user (root): see the file size limit rows");
+    }
+    QVERIFY(!result.ok);
+    // What and where: "cannot write /tmp/.../energy.png: File too large".
+    const QString where = "cannot write " + QDir::toNativeSeparators(path) + ": ";
+    QVERIFY2(result.error.startsWith(where), qPrintable(result.error));
+    QVERIFY2(result.error.size() > where.size(), qPrintable(result.error));
+    QCOMPARE(readAll(path), precious);
+    QCOMPARE(entries(dir.path()), QStringList{QFileInfo(path).fileName()}); // no temporary left
+}
+
+void TestPlots::memoryStaysBounded_data()
+{
+    QTest::addColumn<bool>("wholeRun");
+    QTest::addColumn<bool>("paused");
+    QTest::addColumn<double>("dt"); // [s]
+    QTest::newRow("window, dt 1 ms") << false << false << 1e-3;
+    QTest::newRow("window, dt 0.1 ms (window over budget)") << false << false << 1e-4;
+    QTest::newRow("window, paused by the user") << false << true << 1e-3;
+    QTest::newRow("whole run, dt 1 ms") << true << false << 1e-3;
+}
+
+void TestPlots::memoryStaysBounded()
+{
+    QFETCH(bool, wholeRun);
+    QFETCH(bool, paused);
+    QFETCH(double, dt);
+
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    plot->setRangeMode(wholeRun ? RangeMode::WholeRun : RangeMode::Window);
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+
+    const int total = 2'000'000;
+    const int chunk = 4096;
+    const int budget = plot->pointBudget();
+    const double viewLower = 100.0 * chunk * dt - 5; // [s] where a paused user looks
+    for (int i = 0; i < total; i += chunk) {
+        for (int j = i; j < std::min(i + chunk, total); ++j)
+            buffer.push(sampleAt(dt * j));
+        plot->drain();
+        if (paused && i == 100 * chunk)
+            plot->plot()->xAxis->setRange(viewLower, viewLower + 2);
+        for (int s = 0; s < plot->seriesCount(); ++s)
+            QVERIFY2(plot->pointCount(s) <= budget,
+                     qPrintable(QString("%1 points at sample %2").arg(plot->pointCount(s)).arg(i)));
+        QCOMPARE(plot->markCount(), 0);
+    }
+    QCOMPARE(plot->isFollowing(), !paused);
+
+    const double last = dt * (total - 1);
+    const std::vector<QPointF> pts = plot->points(2);
+    QCOMPARE(pts.back().x(), last); // the curve reaches the end of the run
+    if (wholeRun) {
+        QCOMPARE(pts.front().x(), 0.0); // ... and still starts at its beginning
+        QVERIFY(pts.size() > std::size_t(budget / 4));
+    } else if (paused) {
+        QVERIFY(pts.front().x() <= viewLower + 10 * dt); // what the user looks at stays
+    } else {
+        QVERIFY(pts.front().x() >= last - 1.1 * plot->windowSeconds() - dt);
+    }
+}
+
+void TestPlots::thinningKeepsNewestPointAndEvenSpacing()
+{
+    PlotWidget plot(QStringLiteral("Energy"));
+    plot.setRangeMode(RangeMode::WholeRun);
+    const int total = plot.addSeries(QStringLiteral("total"), plotColor(0),
+                                     [](const Sample& s) { return s.total; });
+    plot.setPointBudget(64);
+    SampleBuffer buffer(16);
+    plot.setSource(&buffer);
+    for (int i = 0; i < 5000; ++i) {
+        buffer.push(sampleAt(i));
+        plot.drain();
+        const std::vector<QPointF> pts = plot.points(total);
+        QVERIFY(static_cast<int>(pts.size()) <= 64);
+        QCOMPARE(pts.front().x(), 0.0);
+        QCOMPARE(pts.back().x(), double(i));
+        // All but the newest point lie on one stride.
+        for (std::size_t k = 2; k + 1 < pts.size(); ++k)
+            QCOMPARE(pts[k].x() - pts[k - 1].x(), pts[1].x() - pts[0].x());
+    }
+}
+
+void TestPlots::windowModeScrolls()
+{
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    QCOMPARE(plot->windowSeconds(), 10.0);
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 1.0 / 64, 64 * 4); // 4 s: fewer than a window
+    QCOMPARE(plot->plot()->xAxis->range().lower, 0.0);
+    QCOMPARE(plot->plot()->xAxis->range().upper, 10.0);
+
+    feed(buffer, *plot, 4.0, 1.0 / 64, 64 * 26 + 1); // on to 30 s
+    QCOMPARE(plot->plot()->xAxis->range().upper, 30.0);
+    QCOMPARE(plot->plot()->xAxis->range().lower, 20.0);
+    QVERIFY(plot->points(0).front().x() >= 30.0 - 11.0);
+
+    plot->setWindowSeconds(2.5);
+    plot->drain();
+    QCOMPARE(plot->plot()->xAxis->range().lower, 27.5);
+
+    plot->setRangeMode(RangeMode::WholeRun);
+    feed(buffer, *plot, 30.0 + 1.0 / 64, 1.0 / 64, 64);
+    QCOMPARE(plot->plot()->xAxis->range().upper, 31.0);
+    QVERIFY(plot->plot()->xAxis->range().lower <= 27.5);
+}
+
+void TestPlots::rewindDropsLaterPoints()
+{
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 1.0 / 64, 64 * 8); // 0 .. 8 s
+    plot->addMark(2.0, QStringLiteral("dt = 5 ms"));
+    plot->addMark(6.0, QStringLiteral("RK4"));
+
+    plot->rewind(4.0);
+    plot->drain();
+    for (int s = 0; s < plot->seriesCount(); ++s) {
+        QCOMPARE(plot->pointCount(s), 64 * 4 + 1);
+        QCOMPARE(plot->points(s).back().x(), 4.0);
+    }
+    QCOMPARE(plot->markCount(), 1);
+
+    // The run goes on from t = 4 s on a new branch.
+    feed(buffer, *plot, 4.0 + 1.0 / 64, 1.0 / 64, 64);
+    QCOMPARE(plot->pointCount(0), 64 * 5 + 1);
+    QCOMPARE(plot->points(0).back().x(), 5.0);
+
+    plot->clear();
+    QCOMPARE(plot->pointCount(), 0);
+    QCOMPARE(plot->markCount(), 0);
+    QCOMPARE(plot->plot()->itemCount(), 0);
+}
+
+void TestPlots::sampleGoingBackRewinds()
+{
+    std::unique_ptr<PlotWidget> plot(makeDriftPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    plot->addMark(2.0, QStringLiteral("Verlet"));
+    plot->addMark(5.0, QStringLiteral("RK4"));
+    feed(buffer, *plot, 0.0, 0.5, 13); // 0 .. 6 s
+    // Stepped back to 2 s without a rewind() call: the samples say so themselves.
+    feed(buffer, *plot, 2.0, 0.5, 3); // 2, 2.5, 3 s
+    const std::vector<QPointF> pts = plot->points(0);
+    QCOMPARE(static_cast<int>(pts.size()), 7);
+    QCOMPARE(pts.back().x(), 3.0);
+    for (std::size_t k = 1; k < pts.size(); ++k)
+        QCOMPARE(pts[k].x() - pts[k - 1].x(), 0.5);
+    QCOMPARE(plot->markCount(), 1); // the mark at 2 s starts the new branch
+
+    // A new scene in the same buffer starts over at t = 0.
+    feed(buffer, *plot, 0.0, 0.5, 2);
+    QCOMPARE(plot->pointCount(), 2);
+}
+
+void TestPlots::marksAreBounded()
+{
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    plot->setRangeMode(RangeMode::WholeRun);
+    for (int i = 0; i < 500; ++i)
+        plot->addMark(0.1 * i, QStringLiteral("mark %1").arg(i));
+    QCOMPARE(plot->markCount(), PlotWidget::kMaxMarks);
+    QCOMPARE(plot->plot()->itemCount(), 2 * PlotWidget::kMaxMarks);
+
+    plot->clear();
+    plot->setRangeMode(RangeMode::Window);
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    for (int second = 0; second < 100; ++second) {
+        feed(buffer, *plot, second, 0.25, 4);
+        plot->addMark(second + 0.5, QStringLiteral("dt = %1 ms").arg(second));
+    }
+    // Marks that scrolled out of the window (and its margin) are gone.
+    QVERIFY(plot->markCount() <= 12);
+    QVERIFY(plot->markCount() >= 10);
+    QCOMPARE(plot->plot()->itemCount(), 2 * plot->markCount());
+}
+
+void TestPlots::userRangeChangePausesFollowing()
+{
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    QSignalSpy following(plot.get(), &PlotWidget::followingChanged);
+    feed(buffer, *plot, 0.0, 1.0 / 64, 64 * 30);
+    QVERIFY(plot->isFollowing());
+    QCOMPARE(following.count(), 0); // our own range changes do not count
+
+    plot->plot()->xAxis->setRange(22, 25); // what a drag does
+    QVERIFY(!plot->isFollowing());
+    QCOMPARE(following.count(), 1);
+    QCOMPARE(following.first().first().toBool(), false);
+
+    feed(buffer, *plot, 30.0, 1.0 / 64, 64 * 30); // data keeps arriving
+    QCOMPARE(plot->plot()->xAxis->range(), QCPRange(22, 25));
+    QCOMPARE(plot->points(0).back().x(), 60.0 - 1.0 / 64);
+    QCOMPARE(plot->points(0).front().x(), 22.0); // what the user looks at stays
+
+    plot->follow();
+    plot->drain();
+    QVERIFY(plot->isFollowing());
+    QCOMPARE(following.count(), 2);
+    QCOMPARE(plot->plot()->xAxis->range().upper, 60.0 - 1.0 / 64);
+    QVERIFY(plot->points(0).front().x() >= 60.0 - 11.0 - 1.0 / 64);
+}
+
+void TestPlots::wheelPausesFollowing()
+{
+    PlotWidget* plot = makeMomentumPlot(nullptr);
+    std::unique_ptr<PlotWidget> owner(plot);
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    plot->resize(800, 500);
+    plot->show();
+    QVERIFY(QTest::qWaitForWindowExposed(plot));
+    feed(buffer, *plot, 0.0, 1.0 / 64, 64 * 5);
+    plot->plot()->replot(QCustomPlot::rpImmediateRefresh);
+
+    const QPointF center = plot->plot()->axisRect()->rect().center();
+    QWheelEvent wheel(center, plot->plot()->mapToGlobal(center), QPoint(), QPoint(0, 120),
+                      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(plot->plot(), &wheel);
+    QVERIFY(!plot->isFollowing());
+
+    // The button that resumes shows while paused.
+    auto* button = plot->findChild<QToolButton*>();
+    QVERIFY(button && button->isVisible());
+    QTest::mouseClick(button, Qt::LeftButton);
+    QVERIFY(plot->isFollowing());
+    QVERIFY(!button->isVisible());
+}
+
+void TestPlots::legendWrapsToFitWidth()
+{
+    PlotWidget plot(QStringLiteral("Total energy per integrator"));
+    const char* names[] = {"explicit Euler", "symplectic Euler", "velocity Verlet", "RK4"};
+    for (int i = 0; i < 4; ++i)
+        plot.addSeries(QString::fromLatin1(names[i]), plotColor(i));
+    QCPLegend* legend = plot.plot()->legend;
+
+    plot.resize(1400, 500);
+    plot.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plot));
+    QCOMPARE(legend->wrap(), 4); // one line
+
+    plot.resize(360, 300);
+    QTRY_VERIFY(legend->wrap() < 4);
+    plot.plot()->replot(QCustomPlot::rpImmediateRefresh);
+    QVERIFY(legend->outerRect().right() <= plot.plot()->width());
+
+    // An export is laid out for its own width, and the screen gets its layout back.
+    QTemporaryDir dir;
+    ExportOptions wide;
+    wide.logicalSize = QSize(1400, 500);
+    QVERIFY(exportPlot(plot, dir.filePath("wide.png"), ExportFormat::Png, wide).ok);
+    QVERIFY(legend->wrap() < 4);
+}
+
+void TestPlots::contextMenuOffersExportsAndRanges()
+{
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    plot->resize(640, 400);
+    plot->show();
+    QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
+
+    auto openMenu = [&] {
+        emit plot->plot()->customContextMenuRequested(QPoint(100, 100));
+        return plot->findChild<QMenu*>();
+    };
+    auto action = [](QMenu* menu, const QString& text) -> QAction* {
+        for (QAction* a : menu->actions())
+            if (a->text() == text)
+                return a;
+        return nullptr;
+    };
+
+    QMenu* menu = openMenu();
+    QVERIFY(menu);
+    for (const char* text : {"Export as PNG…", "Export as PDF…", "Export as SVG…",
+                             "Export data as CSV…", "Follow", "Last 10 s", "Whole run"})
+        QVERIFY2(action(menu, QString::fromUtf8(text)), text);
+    QVERIFY(action(menu, "Last 10 s")->isChecked());
+    action(menu, "Whole run")->trigger();
+    QCOMPARE(plot->rangeMode(), RangeMode::WholeRun);
+    menu->close();
+    QTRY_VERIFY(!plot->findChild<QMenu*>()); // deleted on close
+
+    menu = openMenu();
+    QVERIFY(action(menu, "Whole run")->isChecked());
+    action(menu, "Last 30 s")->trigger();
+    QCOMPARE(plot->rangeMode(), RangeMode::Window);
+    QCOMPARE(plot->windowSeconds(), 30.0);
+    action(menu, "Follow")->trigger(); // unchecks: pauses
+    QVERIFY(!plot->isFollowing());
+    menu->close();
+}
+
+QTEST_MAIN(TestPlots)
+#include "test_plots.moc"

@@ -1,0 +1,251 @@
+// The lab window, driven as a user would: keys, mouse, menus, under the offscreen platform.
+
+#include "body_item.h"
+#include "control_panel.h"
+#include "inspector_panel.h"
+#include "main_window.h"
+#include "plot_export.h"
+#include "plot_widget.h"
+#include "simulation_controller.h"
+#include "world_view.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QImage>
+#include <QMessageBox>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cstring>
+
+using namespace rigidlab;
+using rigidlab::ui::MainWindow;
+
+namespace {
+
+QString scene(const char* name)
+{
+    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/") + QLatin1String(name);
+}
+
+/// Every body's state, bit for bit.
+QByteArray stateBytes(const physics::World& w)
+{
+    QByteArray out;
+    for (const physics::Body& b : w.bodies()) {
+        const double v[6] = {b.position.x(), b.position.y(), b.angle,
+                             b.velocity.x(), b.velocity.y(), b.angularVelocity};
+        out.append(reinterpret_cast<const char*>(v), sizeof v);
+    }
+    return out;
+}
+
+} // namespace
+
+class TestWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("RigidLabTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("test_window"));
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+    void sceneLoadsAndRuns()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(scene("ball_drop.json"), true), QString());
+        const auto& world = w.controller().world();
+        const double y0 = world.body(world.bodies().size() - 1).position.y();
+        w.controller().setRunning(true);
+        // The frame timer drives the clock; wait (with events) until time has passed.
+        QTRY_VERIFY_WITH_TIMEOUT(world.time() > 0.05, 10000);
+        w.controller().setRunning(false);
+        QVERIFY(world.body(world.bodies().size() - 1).position.y() < y0);
+    }
+
+    void plotsReceiveData()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(scene("ball_drop.json"), true), QString());
+        for (int i = 0; i < 300; ++i)
+            w.controller().stepForward();
+        for (int i = 0; i < MainWindow::kPlotCount; ++i) {
+            w.plot(i)->drain();
+            QVERIFY2(w.plot(i)->pointCount() > 10, qPrintable(QString::number(i)));
+        }
+    }
+
+    void shortcutsDoWhatTheySay()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(scene("ball_drop.json"), true), QString());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        w.activateWindow();
+        w.view().setFocus();
+        auto& c = w.controller();
+        QVERIFY(!c.isRunning());
+        QTest::keyClick(&w.view(), Qt::Key_Space);
+        QVERIFY(c.isRunning());
+        QTest::keyClick(&w.view(), Qt::Key_Space);
+        QVERIFY(!c.isRunning());
+        const long long s0 = c.currentStep();
+        QTest::keyClick(&w.view(), Qt::Key_S);
+        QCOMPARE(c.currentStep(), s0 + 1);
+        QTest::keyClick(&w.view(), Qt::Key_Right);
+        QCOMPARE(c.currentStep(), s0 + 2);
+        QTest::keyClick(&w.view(), Qt::Key_Left);
+        QCOMPARE(c.currentStep(), s0 + 1);
+        QTest::keyClick(&w.view(), Qt::Key_R);
+        QCOMPARE(c.currentStep(), 0LL);
+        QVERIFY(w.overlayAction(ui::Overlay::Velocities));
+        const bool before = w.view().overlays().isEnabled(ui::Overlay::Velocities);
+        QTest::keyClick(&w.view(), Qt::Key_V);
+        QCOMPARE(w.view().overlays().isEnabled(ui::Overlay::Velocities), !before);
+    }
+
+    void stepBackAndForwardIsBitIdentical_data()
+    {
+        QTest::addColumn<QString>("file");
+        QTest::addColumn<int>("steps");
+        QTest::addColumn<int>("back");
+        QTest::newRow("ball-drop") << scene("ball_drop.json") << 900 << 333;
+        QTest::newRow("box-stack") << scene("box_stack.json") << 450 << 260;
+        QTest::newRow("pendulum") << scene("pendulum.json") << 500 << 250;
+        QTest::newRow("cradle") << scene("newtons_cradle.json") << 700 << 401;
+    }
+    void stepBackAndForwardIsBitIdentical()
+    {
+        QFETCH(QString, file);
+        QFETCH(int, steps);
+        QFETCH(int, back);
+        MainWindow w;
+        QCOMPARE(w.openScene(file, true), QString());
+        auto& c = w.controller();
+        for (int i = 0; i < steps - back; ++i)
+            c.stepForward();
+        const QByteArray middle = stateBytes(c.world());
+        for (int i = 0; i < back; ++i)
+            c.stepForward();
+        const QByteArray end = stateBytes(c.world());
+        for (int i = 0; i < back; ++i)
+            c.stepBack();
+        QCOMPARE(c.currentStep(), static_cast<long long>(steps - back));
+        QVERIFY(stateBytes(c.world()) == middle);
+        for (int i = 0; i < back; ++i)
+            c.stepForward();
+        QVERIFY(stateBytes(c.world()) == end);
+        // A jump along the timeline lands on the same state as well.
+        c.seek(steps - back);
+        QVERIFY(stateBytes(c.world()) == middle);
+    }
+
+    void changingASettingBranches()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(scene("ball_drop.json"), true), QString());
+        auto& c = w.controller();
+        for (int i = 0; i < 400; ++i)
+            c.stepForward();
+        c.seek(200);
+        QCOMPARE(c.latestStep(), 400LL);
+        w.controls().restitutionBox()->setValue(0.2);
+        QCOMPARE(c.latestStep(), 200LL);
+        QCOMPARE(c.world().def().restitution, 0.2);
+    }
+
+    void draggingABodyMovesIt()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(scene("ball_drop.json"), true), QString());
+        w.controls().gravityBox()->setChecked(false);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto& c = w.controller();
+        const physics::BodyId ball = static_cast<physics::BodyId>(c.world().bodies().size() - 1);
+        QVERIFY(c.world().body(ball).isDynamic());
+        const physics::Vec2 start = c.world().body(ball).position;
+        const QPoint at = w.view().mapFromScene(QPointF(start.x(), start.y()));
+        QTest::mousePress(w.view().viewport(), Qt::LeftButton, {}, at);
+        QVERIFY(c.grabbed().has_value());
+        QCOMPARE(w.inspector().body(), static_cast<int>(ball));
+        QTest::mouseMove(w.view().viewport(), at + QPoint(120, 0));
+        for (int i = 0; i < 1500; ++i)
+            c.stepForward();
+        QTest::mouseRelease(w.view().viewport(), Qt::LeftButton, {}, at + QPoint(120, 0));
+        QVERIFY(!c.grabbed().has_value());
+        const physics::Vec2 end = c.world().body(ball).position;
+        const double wanted = w.view().mapToScene(at + QPoint(120, 0)).x() - start.x();
+        // The spring pulls the grabbed point to the cursor.
+        QVERIFY2(
+            std::abs((end.x() - start.x()) - wanted) < 0.1 * std::abs(wanted),
+            qPrintable(
+                QStringLiteral("moved %1 m, cursor %2 m").arg(end.x() - start.x()).arg(wanted)));
+    }
+
+    void brokenSceneShowsErrorAndKeepsOldScene()
+    {
+        QTemporaryDir dir;
+        const QString broken = dir.filePath(QStringLiteral("broken.json"));
+        QFile f(broken);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(
+            R"({"rigidlab": 1, "bodies": [{"id": "x", "shape": {"type": "circle", "radius": -1}}]})");
+        f.close();
+        MainWindow w;
+        QCOMPARE(w.openScene(scene("pendulum.json"), true), QString());
+        const QString title = w.controller().scene().title;
+        const auto bodies = w.controller().world().bodies().size();
+        const QString error = w.openScene(broken);
+        QVERIFY(error.contains(QStringLiteral("broken.json")));
+        QVERIFY(error.contains(QStringLiteral("radius")));
+        auto* box = w.findChild<QMessageBox*>(QStringLiteral("sceneErrorBox"));
+        QVERIFY(box);
+        QCOMPARE(box->text(), error);
+        QCOMPARE(w.controller().scene().title, title);
+        QCOMPARE(w.controller().world().bodies().size(), bodies);
+        box->close();
+    }
+
+    void everyShippedSceneOpensAndSteps()
+    {
+        const QDir dir(MainWindow::scenesFolder());
+        const QStringList files = dir.entryList({QStringLiteral("*.json")}, QDir::Files);
+        QVERIFY(files.size() >= 9);
+        MainWindow w;
+        for (const QString& name : files) {
+            QCOMPARE(w.openScene(dir.filePath(name), true), QString());
+            for (int i = 0; i < 60; ++i)
+                w.controller().stepForward();
+            for (const physics::Body& b : w.controller().world().bodies())
+                QVERIFY2(std::isfinite(b.position.x()) && std::isfinite(b.position.y()),
+                         qPrintable(name));
+            QVERIFY(std::isfinite(w.controller().driftPercent()));
+        }
+    }
+
+    void exportsFromTheWindow()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(scene("spring_oscillator.json"), true), QString());
+        for (int i = 0; i < 500; ++i)
+            w.controller().stepForward();
+        w.plot(0)->drain();
+        QTemporaryDir dir;
+        for (const char* suffix : {"png", "pdf", "svg", "csv"}) {
+            const QString path = dir.filePath(QStringLiteral("energy.") + QLatin1String(suffix));
+            const auto r =
+                ui::exportPlot(*w.plot(0), path, *ui::formatFromSuffix(QLatin1String(suffix)));
+            QVERIFY2(r.ok, qPrintable(r.error));
+            QVERIFY(QFileInfo(path).size() > 100);
+        }
+        QImage png(dir.filePath(QStringLiteral("energy.png")));
+        QVERIFY(!png.isNull());
+    }
+};
+
+QTEST_MAIN(TestWindow)
+#include "test_window.moc"

@@ -1,0 +1,41 @@
+#pragma once
+// One graphics item per body. It draws the body's shape in the body's own frame and only
+// follows the pose it is given; it holds no physics.
+
+#include "rigidlab/physics/shape.h"
+
+#include <QColor>
+#include <QGraphicsItem>
+#include <QPainterPath>
+
+namespace rigidlab::ui {
+
+class BodyItem : public QGraphicsItem {
+public:
+    enum { Type = UserType + 1 };
+    /// kind: 0 dynamic, 1 static, 2 kinematic.
+    BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fill);
+
+    int type() const override { return Type; }
+    int bodyId() const { return m_bodyId; }
+    /// Places the item: origin [m] and angle [rad] (counter-clockwise, y up).
+    void setPose(double x, double y, double angle);
+    void setSelectedBody(bool selected);
+
+    QRectF boundingRect() const override;
+    QPainterPath shape() const override;
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+
+private:
+    int m_bodyId;
+    int m_kind;
+    QColor m_fill;
+    QPainterPath m_path;
+    QLineF m_radiusLine; ///< circles: a radius, so that rotation shows
+    bool m_selected = false;
+};
+
+/// A palette that keeps neighbouring bodies apart and reads on a projector.
+QColor bodyColor(int index);
+
+} // namespace rigidlab::ui

@@ -1,0 +1,399 @@
+#include "main_window.h"
+
+#include "control_panel.h"
+#include "inspector_panel.h"
+#include "plot_export.h"
+#include "plot_widget.h"
+#include "simulation_controller.h"
+#include "world_view.h"
+
+#include "rigidlab/lessons/scene_loader.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSlider>
+#include <QStatusBar>
+#include <QStyle>
+#include <QTimer>
+#include <QToolBar>
+
+namespace rigidlab::ui {
+
+namespace {
+
+constexpr int kMaxRecent = 8;
+
+struct OverlayInfo {
+    Overlay overlay;
+    const char* text;
+    const char* shortText; ///< on the toolbar
+    const char* key;
+    const char* shortcut;
+};
+constexpr std::array<OverlayInfo, kOverlayCount> kOverlays{{
+    {Overlay::Velocities, QT_TRANSLATE_NOOP("MainWindow", "&Velocity vectors"),
+     QT_TRANSLATE_NOOP("MainWindow", "Velocities"), "velocities", "V"},
+    {Overlay::Contacts, QT_TRANSLATE_NOOP("MainWindow", "&Contact points and normals"),
+     QT_TRANSLATE_NOOP("MainWindow", "Contacts"), "contacts", "C"},
+    {Overlay::BoundingBoxes, QT_TRANSLATE_NOOP("MainWindow", "&Bounding boxes"),
+     QT_TRANSLATE_NOOP("MainWindow", "Boxes"), "boxes", "B"},
+    {Overlay::CentresOfMass, QT_TRANSLATE_NOOP("MainWindow", "Centres of &mass"),
+     QT_TRANSLATE_NOOP("MainWindow", "Centres"), "com", "M"},
+    {Overlay::Trails, QT_TRANSLATE_NOOP("MainWindow", "Motion &trails"),
+     QT_TRANSLATE_NOOP("MainWindow", "Trails"), "trails", "T"},
+    {Overlay::SpringsJoints, QT_TRANSLATE_NOOP("MainWindow", "&Springs and joints"),
+     QT_TRANSLATE_NOOP("MainWindow", "Springs"), "springs", "J"},
+}};
+
+} // namespace
+
+MainWindow::MainWindow(QWidget* parent)
+    : QMainWindow(parent), m_controller(new SimulationController(this)),
+      m_view(new WorldView(*m_controller, this)), m_controls(new ControlPanel(*m_controller, this)),
+      m_inspector(new InspectorPanel(*m_controller, this))
+{
+    setWindowTitle(tr("RigidLab"));
+    setCentralWidget(m_view);
+    buildActions();
+    buildDocks();
+    buildMenus();
+
+    m_statusTime = new QLabel(this);
+    m_statusRate = new QLabel(this);
+    m_statusDrift = new QLabel(this);
+    m_statusSlow = new QLabel(tr("slower than real time"), this);
+    m_statusSlow->setStyleSheet(
+        QStringLiteral("color: white; background: #c0392b; padding: 1px 6px;"));
+    m_statusSlow->setVisible(false);
+    statusBar()->addWidget(m_statusTime);
+    statusBar()->addWidget(m_statusRate);
+    statusBar()->addWidget(m_statusDrift);
+    statusBar()->addPermanentWidget(m_statusSlow);
+    auto* statusTimer = new QTimer(this);
+    connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
+    statusTimer->start(250);
+
+    connect(m_view, &WorldView::bodySelected, m_inspector, &InspectorPanel::setBody);
+    connect(m_controller, &SimulationController::runningChanged, this, [this](bool running) {
+        m_playAction->setText(running ? tr("Pause") : tr("Play"));
+        m_playAction->setIcon(
+            style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    });
+    connect(m_controller, &SimulationController::worldChanged, this, &MainWindow::updateTimeline);
+    connect(m_controller, &SimulationController::sceneLoaded, this, [this] {
+        const QString title = m_controller->scene().title;
+        setWindowTitle(title.isEmpty() ? tr("RigidLab") : tr("%1 — RigidLab").arg(title));
+    });
+    for (PlotWidget* plot : m_plots) {
+        plot->setSource(&m_controller->samples());
+        connect(m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
+        connect(m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
+        connect(m_controller, &SimulationController::marked, plot, &PlotWidget::addMark);
+    }
+    restoreSettings();
+    updateStatus();
+}
+
+MainWindow::~MainWindow() = default;
+
+QString MainWindow::scenesFolder()
+{
+    const QString env = qEnvironmentVariable("RIGIDLAB_SCENES");
+    if (!env.isEmpty() && QFileInfo(env).isDir())
+        return env;
+    const QString installed = QDir(QCoreApplication::applicationDirPath())
+                                  .filePath(QStringLiteral("../share/rigidlab/scenes"));
+    if (QFileInfo(installed).isDir())
+        return QDir(installed).canonicalPath();
+#ifdef RIGIDLAB_SOURCE_SCENES
+    return QStringLiteral(RIGIDLAB_SOURCE_SCENES);
+#else
+    return QString();
+#endif
+}
+
+void MainWindow::buildActions()
+{
+    auto* toolbar = addToolBar(tr("Simulation"));
+    toolbar->setObjectName(QStringLiteral("simulationToolbar"));
+    toolbar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+
+    m_playAction = new QAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Play"), this);
+    m_playAction->setShortcut(Qt::Key_Space);
+    m_playAction->setToolTip(tr("Play or pause (Space)"));
+    connect(m_playAction, &QAction::triggered, m_controller, &SimulationController::toggleRunning);
+
+    m_stepAction =
+        new QAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("Step"), this);
+    m_stepAction->setShortcuts({QKeySequence(Qt::Key_S), QKeySequence(Qt::Key_Right)});
+    m_stepAction->setToolTip(tr("One step forward (S or →)"));
+    connect(m_stepAction, &QAction::triggered, m_controller, &SimulationController::stepForward);
+
+    m_backAction =
+        new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("Back"), this);
+    m_backAction->setShortcuts({QKeySequence(Qt::Key_Left), QKeySequence(Qt::Key_Backspace)});
+    m_backAction->setToolTip(tr("One step back in time (←)"));
+    connect(m_backAction, &QAction::triggered, m_controller, &SimulationController::stepBack);
+
+    m_resetAction = new QAction(style()->standardIcon(QStyle::SP_BrowserReload), tr("Reset"), this);
+    m_resetAction->setShortcut(Qt::Key_R);
+    m_resetAction->setToolTip(tr("Back to the start of the scene (R)"));
+    connect(m_resetAction, &QAction::triggered, m_controller, &SimulationController::reset);
+
+    m_fitAction = new QAction(tr("Fit scene"), this);
+    m_fitAction->setShortcut(Qt::Key_F);
+    m_fitAction->setToolTip(tr("Zoom to show every body (F)"));
+    connect(m_fitAction, &QAction::triggered, m_view, &WorldView::fitScene);
+
+    for (QAction* a : {m_backAction, m_playAction, m_stepAction, m_resetAction, m_fitAction})
+        toolbar->addAction(a);
+    toolbar->addSeparator();
+    for (std::size_t i = 0; i < kOverlays.size(); ++i) {
+        const OverlayInfo& info = kOverlays[i];
+        auto* a = new QAction(tr(info.text), this);
+        a->setCheckable(true);
+        a->setChecked(m_view->overlays().isEnabled(info.overlay));
+        a->setShortcut(QKeySequence(QString::fromLatin1(info.shortcut)));
+        connect(a, &QAction::toggled, this,
+                [this, o = info.overlay](bool on) { m_view->overlays().setEnabled(o, on); });
+        m_overlayActions[i] = a;
+        // Short toolbar labels: the first word.
+        auto* shortcutless = toolbar->addAction(tr(info.shortText));
+        shortcutless->setCheckable(true);
+        shortcutless->setChecked(a->isChecked());
+        shortcutless->setToolTip(tr("%1 (%2)").arg(QString(tr(info.text)).remove(QLatin1Char('&')),
+                                                   QLatin1String(info.shortcut)));
+        connect(shortcutless, &QAction::toggled, a, &QAction::setChecked);
+        connect(a, &QAction::toggled, shortcutless, &QAction::setChecked);
+    }
+
+    // The timeline: drag to any earlier moment of the run.
+    auto* timebar = new QToolBar(tr("Timeline"), this);
+    timebar->setObjectName(QStringLiteral("timelineToolbar"));
+    addToolBar(Qt::BottomToolBarArea, timebar);
+    m_timeline = new QSlider(Qt::Horizontal, timebar);
+    m_timeline->setToolTip(tr("Time travel: drag to go back to any moment, then play to go on "
+                              "(or change a setting to branch)"));
+    m_timeLabel = new QLabel(timebar);
+    m_timeLabel->setMinimumWidth(180);
+    timebar->addWidget(new QLabel(tr(" Timeline "), timebar));
+    timebar->addWidget(m_timeline);
+    timebar->addWidget(m_timeLabel);
+    connect(m_timeline, &QSlider::valueChanged, this, [this](int value) {
+        if (m_timeline->isSliderDown() || value != m_controller->currentStep())
+            m_controller->seek(value);
+    });
+}
+
+void MainWindow::buildDocks()
+{
+    setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    auto addDock = [this](const QString& title, const QString& name, QWidget* w,
+                          Qt::DockWidgetArea area) {
+        auto* dock = new QDockWidget(title, this);
+        dock->setObjectName(name);
+        dock->setWidget(w);
+        addDockWidget(area, dock);
+        return dock;
+    };
+    addDock(tr("Controls"), QStringLiteral("controlsDock"), m_controls, Qt::LeftDockWidgetArea);
+    addDock(tr("Inspector"), QStringLiteral("inspectorDock"), m_inspector, Qt::LeftDockWidgetArea);
+    m_plots[0] = makeEnergyPlot(this);
+    m_plots[1] = makeMomentumPlot(this);
+    m_plots[2] = makeDriftPlot(this);
+    const std::array<QString, kPlotCount> titles{tr("Energy"), tr("Momentum"), tr("Energy drift")};
+    for (int i = 0; i < kPlotCount; ++i) {
+        m_plots[static_cast<size_t>(i)]->setMinimumSize(360, 200);
+        m_plots[static_cast<size_t>(i)]->setTitleShown(false); // the dock shows it
+        addDock(titles[static_cast<size_t>(i)], QStringLiteral("plotDock%1").arg(i),
+                m_plots[static_cast<size_t>(i)], Qt::RightDockWidgetArea);
+    }
+}
+
+void MainWindow::buildMenus()
+{
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    QAction* open = file->addAction(tr("&Open scene…"), this, &MainWindow::openDialog);
+    open->setShortcut(QKeySequence::Open);
+    m_recentMenu = file->addMenu(tr("Open &recent"));
+    m_scenesMenu = file->addMenu(tr("&Shipped scenes"));
+    const QDir scenes(scenesFolder());
+    for (const QFileInfo& info :
+         scenes.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+        const lessons::SceneLoadResult r = lessons::loadSceneFile(info.filePath());
+        const QString title = r.ok && !r.scene.title.isEmpty() ? r.scene.title : info.baseName();
+        m_scenesMenu->addAction(title, this, [this, path = info.filePath()] { openScene(path); });
+    }
+    QMenu* exportMenu = file->addMenu(tr("&Export plot"));
+    const std::array<QString, kPlotCount> titles{tr("Energy"), tr("Momentum"), tr("Energy drift")};
+    for (int i = 0; i < kPlotCount; ++i) {
+        QMenu* sub = exportMenu->addMenu(titles[static_cast<size_t>(i)]);
+        for (const char* fmt : {"PNG", "PDF", "SVG", "CSV"}) {
+            sub->addAction(tr("As %1…").arg(QLatin1String(fmt)), this, [this, i, fmt] {
+                exportPlotDialog(m_plots[static_cast<size_t>(i)], QString::fromLatin1(fmt));
+            });
+        }
+    }
+    file->addSeparator();
+    QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
+    quit->setShortcut(QKeySequence::Quit);
+
+    QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
+    for (QAction* a : {m_playAction, m_stepAction, m_backAction, m_resetAction})
+        sim->addAction(a);
+
+    m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->addAction(m_fitAction);
+    m_viewMenu->addSeparator();
+    for (QAction* a : m_overlayActions)
+        m_viewMenu->addAction(a);
+    m_viewMenu->addSeparator();
+    for (QDockWidget* dock : findChildren<QDockWidget*>())
+        m_viewMenu->addAction(dock->toggleViewAction());
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    help->addAction(tr("&Controls"), this, [this] {
+        QMessageBox::information(
+            this, tr("Controls"),
+            tr("<b>Space</b> play / pause &nbsp; <b>S</b> or <b>→</b> one step &nbsp; "
+               "<b>←</b> one step back &nbsp; <b>R</b> reset &nbsp; <b>F</b> fit scene<br>"
+               "Drag a body to pull it with a spring; release to throw it.<br>"
+               "Click a body to inspect it. Drag empty space (or the middle button) to pan; "
+               "the wheel zooms.<br>Drag the timeline to go back in time."));
+    });
+    help->addAction(tr("&About RigidLab"), this, [this] {
+        QMessageBox::about(this, tr("About RigidLab"),
+                           tr("RigidLab: a lab for 2D rigid-body mechanics."));
+    });
+}
+
+QString MainWindow::openScene(const QString& path, bool quiet)
+{
+    const lessons::SceneLoadResult r = lessons::loadSceneFile(path);
+    if (!r.ok) {
+        m_lastError = r.error;
+        if (!quiet) {
+            auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open scene"), r.error,
+                                        QMessageBox::Ok, this);
+            box->setAttribute(Qt::WA_DeleteOnClose);
+            box->setObjectName(QStringLiteral("sceneErrorBox"));
+            box->open();
+        }
+        return r.error;
+    }
+    m_lastError.clear();
+    m_controller->loadScene(r.scene, path);
+    for (const QString& w : r.warnings)
+        statusBar()->showMessage(w, 8000);
+    m_lastFolder = QFileInfo(path).absolutePath();
+    addRecent(QFileInfo(path).absoluteFilePath());
+    return QString();
+}
+
+void MainWindow::openDialog()
+{
+    const QString folder = m_lastFolder.isEmpty() ? scenesFolder() : m_lastFolder;
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), folder,
+                                                      tr("RigidLab scenes (*.json)"));
+    if (!path.isEmpty())
+        openScene(path);
+}
+
+void MainWindow::addRecent(const QString& path)
+{
+    QSettings s;
+    QStringList recent = s.value(QStringLiteral("recentFiles")).toStringList();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > kMaxRecent)
+        recent.removeLast();
+    s.setValue(QStringLiteral("recentFiles"), recent);
+    s.setValue(QStringLiteral("lastFolder"), m_lastFolder);
+    rebuildRecentMenu();
+}
+
+void MainWindow::rebuildRecentMenu()
+{
+    m_recentMenu->clear();
+    const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+    for (const QString& path : recent)
+        m_recentMenu->addAction(QFileInfo(path).fileName(), this,
+                                [this, path] { openScene(path); });
+    m_recentMenu->setEnabled(!recent.isEmpty());
+}
+
+void MainWindow::exportPlotDialog(PlotWidget* plot, const QString& format)
+{
+    const QString suffix = format.toLower();
+    const QString folder = m_lastFolder.isEmpty() ? QDir::homePath() : m_lastFolder;
+    const QString path = QFileDialog::getSaveFileName(
+        this, tr("Export plot"), QDir(folder).filePath(QStringLiteral("plot.") + suffix),
+        tr("%1 files (*.%2)").arg(format, suffix));
+    if (path.isEmpty())
+        return;
+    const ExportResult r = exportPlot(*plot, path, *formatFromSuffix(suffix));
+    if (!r.ok)
+        QMessageBox::warning(this, tr("Export failed"), r.error);
+    else
+        statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+}
+
+void MainWindow::updateStatus()
+{
+    const physics::World& w = m_controller->world();
+    m_statusTime->setText(tr("t = %1 s").arg(w.time(), 0, 'f', 3));
+    m_statusRate->setText(tr("%1 steps/s · frame %2 ms (physics %3 ms)")
+                              .arg(m_controller->stepsPerSecond(), 0, 'f', 0)
+                              .arg(m_controller->frameMilliseconds(), 0, 'f', 1)
+                              .arg(m_controller->physicsMilliseconds(), 0, 'f', 1));
+    m_statusDrift->setText(tr("energy drift %1 %").arg(m_controller->driftPercent(), 0, 'g', 3));
+    m_statusSlow->setVisible(m_controller->isRunning() && m_controller->slowerThanRealTime());
+}
+
+void MainWindow::updateTimeline()
+{
+    if (m_timeline->isSliderDown())
+        return;
+    const QSignalBlocker block(m_timeline);
+    const long long lo = m_controller->earliestStep(), hi = m_controller->latestStep();
+    m_timeline->setRange(static_cast<int>(lo), static_cast<int>(hi));
+    m_timeline->setValue(static_cast<int>(m_controller->currentStep()));
+    m_timeLabel->setText(tr(" step %1 of %2").arg(m_controller->currentStep()).arg(hi));
+}
+
+void MainWindow::restoreSettings()
+{
+    QSettings s;
+    m_lastFolder = s.value(QStringLiteral("lastFolder")).toString();
+    restoreGeometry(s.value(QStringLiteral("geometry")).toByteArray());
+    restoreState(s.value(QStringLiteral("windowState")).toByteArray());
+    for (std::size_t i = 0; i < kOverlays.size(); ++i) {
+        const QString key = QStringLiteral("overlays/") + QLatin1String(kOverlays[i].key);
+        if (s.contains(key))
+            m_overlayActions[i]->setChecked(s.value(key).toBool());
+    }
+    rebuildRecentMenu();
+}
+
+void MainWindow::closeEvent(QCloseEvent* event)
+{
+    m_controller->setRunning(false);
+    QSettings s;
+    s.setValue(QStringLiteral("geometry"), saveGeometry());
+    s.setValue(QStringLiteral("windowState"), saveState());
+    for (std::size_t i = 0; i < kOverlays.size(); ++i)
+        s.setValue(QStringLiteral("overlays/") + QLatin1String(kOverlays[i].key),
+                   m_overlayActions[i]->isChecked());
+    event->accept();
+}
+
+} // namespace rigidlab::ui

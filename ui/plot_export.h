@@ -1,0 +1,44 @@
+#pragma once
+// Saving a plot for handouts: PNG, PDF and SVG pictures, and the numbers as CSV.
+//
+// Every export goes through a QSaveFile: the file appears, complete, only when everything was
+// written, so a failed export never leaves a broken or half-written file and never destroys a
+// file that was already at that path.
+
+#include <QSize>
+#include <QString>
+
+#include <optional>
+
+namespace rigidlab::ui {
+
+class PlotWidget;
+
+enum class ExportFormat { Png, Pdf, Svg, Csv };
+
+/// "png", ".PNG", "pdf"... (case-insensitive, with or without the dot); nullopt if unknown.
+std::optional<ExportFormat> formatFromSuffix(const QString& suffix);
+/// The usual suffix, without the dot: "png".
+QString suffixFor(ExportFormat format);
+/// A file dialog filter: "PNG image (*.png)".
+QString fileFilterFor(ExportFormat format);
+
+struct ExportOptions {
+    /// Size the plot is laid out at, in device-independent pixels (1/96 in). It is also the
+    /// PDF page (800 x 500 -> 212 x 132 mm, about A5 landscape) and the SVG canvas.
+    QSize logicalSize{800, 500};
+    /// PNG only: image pixels per logical pixel (2 -> 1600 x 1000 px, sharp when printed).
+    double pngPixelRatio = 2.0;
+};
+
+struct ExportResult {
+    bool ok = false;
+    QString error; ///< what went wrong and where: "cannot write /ro/plot.png: Permission denied"
+};
+
+/// Writes `plot` to `path` as `format`, atomically. The plot is laid out at the export size
+/// while it is drawn, then put back as it was on screen.
+ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat format,
+                        const ExportOptions& options = {});
+
+} // namespace rigidlab::ui

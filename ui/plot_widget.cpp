@@ -1,0 +1,564 @@
+#include "plot_widget.h"
+
+#include <qcustomplot.h>
+
+#include <QScopedValueRollback>
+#include <QTimer>
+#include <QToolButton>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rigidlab::ui {
+
+namespace {
+
+// Sizes for a projector at the back of a lecture room, not for a laptop screen.
+constexpr double kTitlePt = 14;
+constexpr double kAxisLabelPt = 12;
+constexpr double kTickLabelPt = 11;
+constexpr double kLegendPt = 11;
+constexpr double kMarkLabelPt = 10;
+constexpr double kLineWidthPx = 2.0;
+
+/// In window mode points are kept this fraction of the window longer than shown, so a
+/// curve enters from the left edge instead of starting inside the plot.
+constexpr double kWindowMargin = 0.1;
+constexpr int kRightMarginPx = 22; // half a tick label, so "10" is not cut at the edge
+/// Smallest time span [s] shown in whole-run mode, so a single point has an axis.
+constexpr double kMinWholeRunSpan = 1e-3;
+/// Fraction of the value span added above and below the curves.
+constexpr double kValuePadding = 0.08;
+
+const QColor kInk(0x20, 0x20, 0x20);
+
+QFont sized(const QFont& base, double pointSize, bool bold = false)
+{
+    QFont f = base;
+    f.setPointSizeF(pointSize);
+    f.setBold(bold);
+    return f;
+}
+
+QString axisText(const QString& quantity, const QString& unit)
+{
+    return unit.isEmpty() ? quantity : QStringLiteral("%1 [%2]").arg(quantity, unit);
+}
+
+} // namespace
+
+PlotWidget::PlotWidget(const QString& title, QWidget* parent)
+    : QWidget(parent), m_plot(new QCustomPlot(this)), m_followButton(new QToolButton(this)),
+      m_timer(new QTimer(this))
+{
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_plot);
+    setMinimumSize(320, 220);
+
+    const QFont base = font();
+    m_plot->setNoAntialiasingOnDrag(true);
+
+    // Rows of the layout: title, legend (one line, wrapping), then the axes.
+    m_title = new QCPTextElement(m_plot, title, sized(base, kTitlePt, true));
+    m_plot->plotLayout()->insertRow(0);
+    m_plot->plotLayout()->addElement(0, 0, m_title);
+    m_plot->axisRect()->insetLayout()->take(m_plot->legend);
+    m_plot->plotLayout()->insertRow(1);
+    m_plot->plotLayout()->addElement(1, 0, m_plot->legend);
+    m_plot->plotLayout()->setRowStretchFactor(0, 0.001);
+    m_plot->plotLayout()->setRowStretchFactor(1, 0.001);
+    m_plot->legend->setVisible(true);
+    m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
+    m_plot->legend->setBorderPen(Qt::NoPen);
+    m_plot->legend->setFont(sized(base, kLegendPt));
+    m_plot->legend->setIconSize(32, 14);
+    m_plot->legend->setMargins(QMargins(8, 0, 8, 0));
+    m_plot->axisRect()->setMinimumMargins(QMargins(0, 0, kRightMarginPx, 0));
+
+    for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis, m_plot->yAxis2}) {
+        axis->setLabelFont(sized(base, kAxisLabelPt));
+        axis->setTickLabelFont(sized(base, kTickLabelPt));
+    }
+    m_plot->xAxis->setLabel(tr("time t [s]"));
+    m_plot->xAxis->setRange(0, m_windowSeconds);
+    m_plot->yAxis2->setVisible(false);
+
+    // Drag and wheel move the time axis and every value axis; doing so pauses following.
+    m_plot->setInteractions(QCP::iRangeDrag | QCP::iRangeZoom);
+    const QList<QCPAxis*> horizontal{m_plot->xAxis};
+    const QList<QCPAxis*> vertical{m_plot->yAxis, m_plot->yAxis2};
+    m_plot->axisRect()->setRangeDragAxes(horizontal, vertical);
+    m_plot->axisRect()->setRangeZoomAxes(horizontal, vertical);
+    for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis, m_plot->yAxis2})
+        connect(axis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
+                &PlotWidget::onRangeChanged);
+    connect(m_plot, &QCustomPlot::mouseDoubleClick, this, &PlotWidget::follow);
+
+    m_followButton->setText(tr("Follow"));
+    m_followButton->setToolTip(tr("Follow the run again (or double-click the plot)"));
+    m_followButton->setFont(sized(base, kLegendPt));
+    m_followButton->setVisible(false);
+    m_followButton->raise();
+    connect(m_followButton, &QToolButton::clicked, this, &PlotWidget::follow);
+
+    m_plot->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_plot, &QWidget::customContextMenuRequested, this, &PlotWidget::showContextMenu);
+
+    m_timer->setInterval(kRefreshIntervalMs);
+    connect(m_timer, &QTimer::timeout, this, &PlotWidget::drain);
+    m_timer->start();
+}
+
+PlotWidget::~PlotWidget() = default;
+
+QString PlotWidget::title() const
+{
+    return m_title->text();
+}
+
+void PlotWidget::setTitleShown(bool shown)
+{
+    m_titleShown = shown;
+    // A hidden layout element still takes its row: squeeze the row to nothing as well.
+    m_title->setVisible(shown);
+    m_title->setMaximumSize(QWIDGETSIZE_MAX, shown ? QWIDGETSIZE_MAX : 0);
+    m_title->setMinimumSize(0, 0);
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+QCPAxis* PlotWidget::axisFor(YAxis axis) const
+{
+    return axis == YAxis::Left ? m_plot->yAxis : m_plot->yAxis2;
+}
+
+void PlotWidget::setYAxisLabel(const QString& quantity, const QString& unit, YAxis axis)
+{
+    (axis == YAxis::Left ? m_leftUnit : m_rightUnit) = unit;
+    axisFor(axis)->setLabel(axisText(quantity, unit));
+    if (axis == YAxis::Right) {
+        m_plot->yAxis2->setVisible(true);
+        m_plot->yAxis2->setTickLabels(true);
+    }
+}
+
+QString PlotWidget::yAxisUnit(YAxis axis) const
+{
+    return axis == YAxis::Left ? m_leftUnit : m_rightUnit;
+}
+
+int PlotWidget::addSeries(const QString& name, const QColor& color, PlotSeries::SampleValue value,
+                          YAxis axis)
+{
+    Q_ASSERT(value);
+    return addGraph(name, color, std::move(value), axis);
+}
+
+int PlotWidget::addSeries(const QString& name, const QColor& color, YAxis axis)
+{
+    return addGraph(name, color, {}, axis);
+}
+
+int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::SampleValue value,
+                         YAxis axis)
+{
+    QCPGraph* graph = m_plot->addGraph(m_plot->xAxis, axisFor(axis));
+    // Dashed means "read me on the right axis", in the legend as on the curve.
+    graph->setPen(QPen(color, kLineWidthPx, axis == YAxis::Right ? Qt::DashLine : Qt::SolidLine));
+    graph->setName(axis == YAxis::Right ? tr("%1 (right axis)").arg(name) : name);
+    if (axis == YAxis::Right) {
+        m_plot->yAxis2->setVisible(true);
+        m_plot->yAxis2->setTickLabels(true);
+    }
+    m_series.emplace_back(graph, name, axis, std::move(value));
+    fitLegend(m_plot->width());
+    return seriesCount() - 1;
+}
+
+void PlotWidget::fitLegend(int widthPx)
+{
+    // As many legend columns as fit the width; more entries wrap to a second line rather
+    // than being cut off.
+    QCPLegend* legend = m_plot->legend;
+    const int count = legend->itemCount();
+    if (count == 0)
+        return;
+    std::vector<int> widths;
+    for (int i = 0; i < count; ++i)
+        widths.push_back(legend->item(i)->minimumOuterSizeHint().width());
+    const QMargins margins = legend->margins();
+    const int available = widthPx - margins.left() - margins.right();
+    int columns = count;
+    for (; columns > 1; --columns) {
+        int total = (columns - 1) * legend->columnSpacing();
+        for (int c = 0; c < columns; ++c) {
+            int widest = 0;
+            for (int i = c; i < count; i += columns)
+                widest = std::max(widest, widths[static_cast<std::size_t>(i)]);
+            total += widest;
+        }
+        if (total <= available)
+            break;
+    }
+    if (columns != legend->wrap() || legend->columnCount() > columns) {
+        legend->setWrap(columns);
+        legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    }
+}
+
+QString PlotWidget::seriesName(int series) const
+{
+    return m_series.at(series).name();
+}
+
+QString PlotWidget::seriesUnit(int series) const
+{
+    return yAxisUnit(m_series.at(series).axis());
+}
+
+std::vector<QPointF> PlotWidget::points(int series) const
+{
+    const QCPGraphDataContainer& data = *m_series.at(series).graph()->data();
+    std::vector<QPointF> out;
+    out.reserve(data.size());
+    for (auto it = data.constBegin(); it != data.constEnd(); ++it)
+        out.emplace_back(it->key, it->value);
+    return out;
+}
+
+int PlotWidget::pointCount(int series) const
+{
+    return m_series.at(series).size();
+}
+
+int PlotWidget::pointCount() const
+{
+    int n = 0;
+    for (const PlotSeries& s : m_series)
+        n += s.size();
+    return n;
+}
+
+void PlotWidget::appendPoint(int series, double t, double value)
+{
+    PlotSeries& s = m_series.at(series);
+    Q_ASSERT(!s.isFedBySamples());
+    if (!std::isfinite(t))
+        return;
+    if (!s.isEmpty() && t <= s.lastKey()) {
+        s.removeFrom(t, m_pointBudget);
+        updateLatest();
+    }
+    appendTo(s, t, value);
+    trimToWindow();
+}
+
+void PlotWidget::appendTo(PlotSeries& series, double t, double value)
+{
+    // A gap in the curve rather than an infinite axis range.
+    const double v = std::isfinite(value) ? value : std::numeric_limits<double>::quiet_NaN();
+    series.append(t, v, m_pointBudget);
+    m_latestT = m_latestT ? std::max(*m_latestT, t) : t;
+    m_dirty = true;
+}
+
+void PlotWidget::setSource(const SampleBuffer* source)
+{
+    m_source = source;
+    m_cursor = 0; // readSince() starts at the oldest sample still in the ring
+}
+
+int PlotWidget::drain()
+{
+    int taken = 0;
+    if (m_source) {
+        const std::vector<Sample> samples = m_source->readSince(m_cursor);
+        for (const Sample& s : samples) {
+            if (!std::isfinite(s.t))
+                continue;
+            if (m_lastSampleT && s.t <= *m_lastSampleT)
+                dropFrom(s.t);
+            for (PlotSeries& series : m_series)
+                if (series.isFedBySamples())
+                    appendTo(series, s.t, series.valueOf(s));
+            m_lastSampleT = s.t;
+            ++taken;
+        }
+        if (taken > 0)
+            trimToWindow();
+    }
+    if (m_dirty) {
+        m_dirty = false;
+        updateRanges();
+        requestReplot();
+    }
+    return taken;
+}
+
+void PlotWidget::dropFrom(double t)
+{
+    for (PlotSeries& series : m_series)
+        if (!series.isEmpty())
+            series.removeFrom(t, m_pointBudget);
+    // A mark exactly at t belongs to the new branch of the run (set, then stepped from t).
+    while (!m_marks.empty() && m_marks.back().t > t)
+        removeMark(m_marks.size() - 1);
+    m_lastSampleT.reset();
+    updateLatest();
+    m_dirty = true;
+}
+
+void PlotWidget::rewind(double t)
+{
+    if (!std::isfinite(t))
+        return;
+    for (PlotSeries& series : m_series)
+        series.removeAfter(t, m_pointBudget);
+    while (!m_marks.empty() && m_marks.back().t > t)
+        removeMark(m_marks.size() - 1);
+    if (m_lastSampleT && *m_lastSampleT > t)
+        m_lastSampleT = t;
+    if (m_latestT && *m_latestT > t)
+        m_latestT = t; // "now" is where the run stepped back to, even with no point there
+    m_dirty = true;
+}
+
+void PlotWidget::clear()
+{
+    for (PlotSeries& series : m_series)
+        series.clear();
+    while (!m_marks.empty())
+        removeMark(m_marks.size() - 1);
+    m_lastSampleT.reset();
+    m_latestT.reset();
+    m_dirty = true;
+    setFollowing(true);
+    QScopedValueRollback<bool> guard(m_settingRanges, true);
+    m_plot->xAxis->setRange(0, m_windowSeconds);
+}
+
+void PlotWidget::updateLatest()
+{
+    m_latestT.reset();
+    for (const PlotSeries& series : m_series)
+        if (!series.isEmpty())
+            m_latestT = m_latestT ? std::max(*m_latestT, series.lastKey()) : series.lastKey();
+}
+
+void PlotWidget::trimToWindow()
+{
+    if (m_rangeMode != RangeMode::Window || !m_latestT)
+        return;
+    double cutoff = *m_latestT - m_windowSeconds * (1 + kWindowMargin);
+    // While paused, what the user is looking at stays; the point budget still bounds it.
+    if (!m_following)
+        cutoff = std::min(cutoff, m_plot->xAxis->range().lower);
+    for (PlotSeries& series : m_series)
+        if (!series.isEmpty() && series.firstKey() < cutoff)
+            series.removeBefore(cutoff, m_pointBudget);
+    while (!m_marks.empty() && m_marks.front().t < cutoff)
+        removeMark(0);
+}
+
+void PlotWidget::setRangeMode(RangeMode mode)
+{
+    if (mode == m_rangeMode)
+        return;
+    m_rangeMode = mode;
+    trimToWindow();
+    m_dirty = true;
+    emit rangeModeChanged(mode);
+}
+
+void PlotWidget::setWindowSeconds(double seconds)
+{
+    Q_ASSERT(std::isfinite(seconds) && seconds > 0);
+    if (!std::isfinite(seconds) || seconds <= 0)
+        return;
+    m_windowSeconds = seconds;
+    trimToWindow();
+    m_dirty = true;
+}
+
+void PlotWidget::setPointBudget(int points)
+{
+    m_pointBudget = std::max(points, 16);
+}
+
+void PlotWidget::setFollowing(bool following)
+{
+    if (following == m_following)
+        return;
+    m_following = following;
+    m_followButton->setVisible(!following);
+    if (following) {
+        trimToWindow();
+        m_dirty = true;
+    }
+    emit followingChanged(following);
+}
+
+void PlotWidget::onRangeChanged()
+{
+    updateMarkLabels();
+    if (m_settingRanges)
+        return;
+    // Changed by the user (drag, wheel) or by a caller: stop following, show the new range.
+    setFollowing(false);
+    requestReplot();
+}
+
+void PlotWidget::updateRanges()
+{
+    if (!m_following || !m_latestT)
+        return;
+    QScopedValueRollback<bool> guard(m_settingRanges, true);
+
+    double first = *m_latestT;
+    for (const PlotSeries& series : m_series)
+        if (!series.isEmpty())
+            first = std::min(first, series.firstKey());
+
+    if (m_rangeMode == RangeMode::Window) {
+        // Until a whole window has run, the run starts at the left edge.
+        const double right = std::max(*m_latestT, first + m_windowSeconds);
+        m_plot->xAxis->setRange(right, m_windowSeconds, Qt::AlignRight);
+    } else {
+        m_plot->xAxis->setRange(first, first + std::max(*m_latestT - first, kMinWholeRunSpan));
+    }
+    fitValueAxis(YAxis::Left);
+    fitValueAxis(YAxis::Right);
+}
+
+void PlotWidget::fitValueAxis(YAxis axis)
+{
+    const QCPRange keys = m_plot->xAxis->range();
+    bool any = false;
+    QCPRange values;
+    for (const PlotSeries& series : m_series) {
+        if (series.axis() != axis || !series.graph()->visible())
+            continue;
+        bool found = false;
+        const QCPRange r = series.graph()->getValueRange(found, QCP::sdBoth, keys);
+        if (!found)
+            continue;
+        if (any)
+            values.expand(r);
+        else
+            values = r;
+        any = true;
+    }
+    if (!any)
+        return;
+    const double span = values.size();
+    const double center = values.center();
+    // A constant curve (drift of an exact integrator, energy at rest) still gets an axis.
+    const bool flat = span <= 1e-12 * std::max(1.0, std::abs(center));
+    const double pad = flat ? (center != 0 ? 0.05 * std::abs(center) : 1.0) : kValuePadding * span;
+    axisFor(axis)->setRange(values.lower - pad, values.upper + pad);
+}
+
+void PlotWidget::requestReplot()
+{
+    if (isVisible())
+        m_plot->replot(QCustomPlot::rpQueuedReplot);
+    else
+        m_replotWhenShown = true;
+}
+
+void PlotWidget::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (m_replotWhenShown) {
+        m_replotWhenShown = false;
+        m_plot->replot(QCustomPlot::rpQueuedReplot);
+    }
+}
+
+void PlotWidget::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    placeFollowButton();
+    fitLegend(m_plot->width());
+}
+
+void PlotWidget::placeFollowButton()
+{
+    m_followButton->adjustSize();
+    const int margin = 6;
+    m_followButton->move(width() - m_followButton->width() - margin, margin);
+}
+
+void PlotWidget::addMark(double t, const QString& label)
+{
+    if (!std::isfinite(t))
+        return;
+    Mark mark;
+    mark.t = t;
+
+    // x in time, y as a fraction of the axis rect: the line spans the plot at any zoom.
+    mark.line = new QCPItemLine(m_plot);
+    for (QCPItemPosition* end : {mark.line->start, mark.line->end}) {
+        end->setAxes(m_plot->xAxis, m_plot->yAxis);
+        end->setAxisRect(m_plot->axisRect());
+        end->setTypeX(QCPItemPosition::ptPlotCoords);
+        end->setTypeY(QCPItemPosition::ptAxisRectRatio);
+    }
+    mark.line->start->setCoords(t, 0);
+    mark.line->end->setCoords(t, 1);
+    mark.line->setPen(QPen(QColor(0x60, 0x60, 0x60), 1.5, Qt::DashLine));
+
+    // The label sits in a strip above the axis rect, where it hides no curve; outside the
+    // axis rect it is not clipped, so updateMarkLabels() hides it when its line is out of view.
+    mark.label = new QCPItemText(m_plot);
+    mark.label->setClipToAxisRect(false);
+    mark.label->position->setAxes(m_plot->xAxis, m_plot->yAxis);
+    mark.label->position->setAxisRect(m_plot->axisRect());
+    mark.label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+    mark.label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
+    mark.label->position->setCoords(t, 0);
+    mark.label->setPadding(QMargins(3, 0, 3, 1));
+    mark.label->setFont(sized(font(), kMarkLabelPt));
+    mark.label->setColor(kInk);
+    mark.label->setText(label);
+
+    const auto at = std::upper_bound(m_marks.begin(), m_marks.end(), t,
+                                     [](double time, const Mark& m) { return time < m.t; });
+    m_marks.insert(at, mark);
+    while (m_marks.size() > static_cast<std::size_t>(kMaxMarks))
+        removeMark(0);
+    trimToWindow();
+    updateMarkLabels();
+    m_dirty = true;
+}
+
+void PlotWidget::updateMarkLabels()
+{
+    // Room above the axis rect for the labels, only while there are marks.
+    const int strip = m_marks.empty() ? 0 : QFontMetrics(sized(font(), kMarkLabelPt)).height() + 4;
+    // And room on the right for the last tick label of the time axis.
+    m_plot->axisRect()->setMinimumMargins(QMargins(0, strip, kRightMarginPx, 0));
+
+    const QCPRange range = m_plot->xAxis->range();
+    for (const Mark& mark : m_marks) {
+        mark.label->setVisible(range.contains(mark.t));
+        // Near the right edge the label reads leftwards from its line, so it is not cut off.
+        const bool nearRight = mark.t > range.lower + 0.8 * range.size();
+        mark.label->setPositionAlignment((nearRight ? Qt::AlignRight : Qt::AlignLeft) |
+                                         Qt::AlignBottom);
+    }
+}
+
+void PlotWidget::removeMark(std::size_t index)
+{
+    m_plot->removeItem(m_marks[index].line);
+    m_plot->removeItem(m_marks[index].label);
+    m_marks.erase(m_marks.begin() + static_cast<std::ptrdiff_t>(index));
+    if (m_marks.empty())
+        updateMarkLabels();
+    m_dirty = true;
+}
+
+} // namespace rigidlab::ui

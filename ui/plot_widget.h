@@ -1,0 +1,190 @@
+#pragma once
+// A live plot of the lab window: a QCustomPlot with a title, labelled axes with units, a
+// legend, and series that either read a value out of each Sample of a SampleBuffer or are fed
+// point by point (appendPoint). The widget drains its source on a timer of its own (30 Hz)
+// and replots, queued, only when something changed; the simulation never waits for it.
+//
+// Memory stays bounded however long the run (see PlotSeries): in window mode the points older
+// than the window (plus a margin) are dropped; in both modes a series that grows past the
+// point budget is thinned. Dragging or zooming the plot pauses following the run (data keeps
+// arriving); "Follow" (button, double-click, context menu) resumes it.
+
+#include "plot_export.h"
+#include "plot_series.h"
+#include "sample_buffer.h"
+
+#include <QColor>
+#include <QPointF>
+#include <QString>
+#include <QWidget>
+
+#include <cstdint>
+#include <deque>
+#include <optional>
+#include <vector>
+
+class QCustomPlot;
+class QCPAxis;
+class QCPItemLine;
+class QCPItemText;
+class QCPTextElement;
+class QTimer;
+class QToolButton;
+
+namespace rigidlab::ui {
+
+/// What the time axis shows while following the run.
+enum class RangeMode {
+    Window,  ///< the last windowSeconds() of the run, scrolling
+    WholeRun ///< everything since the start (thinned to the point budget)
+};
+
+class PlotWidget : public QWidget {
+    Q_OBJECT
+
+public:
+    static constexpr int kDefaultPointBudget = 20000;     ///< points per series
+    static constexpr int kMaxMarks = 50;                  ///< vertical marks kept at most
+    static constexpr double kDefaultWindowSeconds = 10.0; ///< [s]
+    static constexpr int kRefreshIntervalMs = 33;         ///< drain and replot at ~30 Hz
+
+    explicit PlotWidget(const QString& title, QWidget* parent = nullptr);
+    ~PlotWidget() override;
+
+    QString title() const;
+    /// Shows or hides the title on screen (a dock may already show it); exports always show it.
+    void setTitleShown(bool shown);
+    bool titleShown() const { return m_titleShown; }
+
+    /// Labels a value axis "quantity [unit]"; the unit also heads the CSV columns.
+    void setYAxisLabel(const QString& quantity, const QString& unit, YAxis axis = YAxis::Left);
+    QString yAxisUnit(YAxis axis) const;
+
+    /// A series that reads its value from every sample of the source. Returns its index.
+    /// Series on the right axis are drawn dashed, and say so in the legend.
+    int addSeries(const QString& name, const QColor& color, PlotSeries::SampleValue value,
+                  YAxis axis = YAxis::Left);
+    /// A series fed with appendPoint() only (one energy curve per integrator, say).
+    int addSeries(const QString& name, const QColor& color, YAxis axis = YAxis::Left);
+    /// Adds (t [s], value) to a series. A t not later than the series' last point restarts
+    /// the series there (the points at and after t are dropped). Non-finite values make a gap.
+    void appendPoint(int series, double t, double value);
+
+    int seriesCount() const { return static_cast<int>(m_series.size()); }
+    QString seriesName(int series) const;
+    QString seriesUnit(int series) const;
+    /// The points of a series as (t [s], value), oldest first.
+    std::vector<QPointF> points(int series) const;
+    int pointCount(int series) const;
+    int pointCount() const; ///< over all series
+
+    /// The buffer to drain (not owned; nullptr detaches). Reading starts at its oldest sample.
+    void setSource(const SampleBuffer* source);
+    /// Takes what is new in the source, and brings the view up to date if anything changed
+    /// (ranges, queued replot). The timer calls it; tests may too. Returns the samples taken.
+    /// A sample not later than the previous one means the run went back: the points from its
+    /// time on are dropped.
+    int drain();
+
+    void setRangeMode(RangeMode mode);
+    RangeMode rangeMode() const { return m_rangeMode; }
+    void setWindowSeconds(double seconds);
+    double windowSeconds() const { return m_windowSeconds; } ///< [s]
+    void setPointBudget(int points);
+    int pointBudget() const { return m_pointBudget; }
+
+    bool isFollowing() const { return m_following; }
+    void setFollowing(bool following);
+
+    /// Time travel stepped back to t [s]: drops the points and marks after t.
+    void rewind(double t);
+    /// New scene or reset: drops all points and marks, keeps the series, follows again.
+    void clear();
+    /// A dashed vertical line at t [s] with a short label ("RK4", "dt = 5 ms"), where the
+    /// integrator or the step changed mid-run. Marks that scroll out are dropped, and at most
+    /// kMaxMarks are kept.
+    void addMark(double t, const QString& label);
+    int markCount() const { return static_cast<int>(m_marks.size()); }
+
+    /// The underlying plot, for export and styling. It stays owned by this widget.
+    QCustomPlot* plot() const { return m_plot; }
+    /// Wraps the legend into as many columns as fit `widthPx` (the widget's width on screen;
+    /// the export size while exporting).
+    void fitLegend(int widthPx);
+
+public slots:
+    void follow() { setFollowing(true); }
+    /// Asks for a file name, then exports; a failure is shown in a message box.
+    void exportInteractively(rigidlab::ui::ExportFormat format);
+
+signals:
+    void followingChanged(bool following);
+    void rangeModeChanged(rigidlab::ui::RangeMode mode);
+    void exported(const QString& path);
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+    void showEvent(QShowEvent* event) override;
+
+private:
+    struct Mark {
+        double t = 0;                 ///< [s]
+        QCPItemLine* line = nullptr;  ///< owned by m_plot
+        QCPItemText* label = nullptr; ///< owned by m_plot
+    };
+
+    int addGraph(const QString& name, const QColor& color, PlotSeries::SampleValue value,
+                 YAxis axis);
+    void appendTo(PlotSeries& series, double t, double value);
+    void dropFrom(double t); // the run went back to t: drop points at and after t
+    void trimToWindow();
+    void updateLatest();
+    void updateRanges();
+    void fitValueAxis(YAxis axis);
+    void requestReplot();
+    void removeMark(std::size_t index);
+    void updateMarkLabels();
+    void placeFollowButton();
+    void showContextMenu(const QPoint& pos);
+    void onRangeChanged();
+    QCPAxis* axisFor(YAxis axis) const;
+
+    QCustomPlot* m_plot = nullptr; ///< child
+    bool m_titleShown = true;
+    QCPTextElement* m_title = nullptr;     ///< owned by m_plot's layout
+    QToolButton* m_followButton = nullptr; ///< child, shown while paused
+    QTimer* m_timer = nullptr;             ///< child
+    std::vector<PlotSeries> m_series;
+    std::deque<Mark> m_marks; ///< sorted by t
+    QString m_leftUnit;
+    QString m_rightUnit;
+
+    const SampleBuffer* m_source = nullptr;
+    std::uint64_t m_cursor = 0;
+    std::optional<double> m_lastSampleT; ///< [s] time of the last sample drained
+    std::optional<double> m_latestT;     ///< [s] latest time over all series
+
+    RangeMode m_rangeMode = RangeMode::Window;
+    double m_windowSeconds = kDefaultWindowSeconds; ///< [s]
+    int m_pointBudget = kDefaultPointBudget;
+    bool m_following = true;
+    bool m_dirty = false;         ///< data changed since the last view update
+    bool m_settingRanges = false; ///< our own range changes do not pause following
+    bool m_replotWhenShown = false;
+    QString m_lastExportDir;
+};
+
+// The plots of the lab window and their palette (standard_plots.cpp).
+
+/// A colour for the index-th curve from a palette told apart with any colour vision (it
+/// cycles after 7): one energy curve per integrator, say.
+QColor plotColor(int index);
+
+/// Kinetic, potential and total energy [J].
+PlotWidget* makeEnergyPlot(QWidget* parent);
+/// Linear momentum px, py [kg m/s] (left axis) and angular momentum L [kg m²/s] (right axis).
+PlotWidget* makeMomentumPlot(QWidget* parent);
+/// Relative drift of the total energy [%].
+PlotWidget* makeDriftPlot(QWidget* parent);
+
+} // namespace rigidlab::ui

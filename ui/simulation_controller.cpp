@@ -1,0 +1,335 @@
+#include "simulation_controller.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rigidlab::ui {
+
+namespace {
+
+constexpr int kFrameIntervalMs = 16;            // about 60 frames per second
+constexpr double kMaxFrameSeconds = 0.1;        // a longer gap (a paused debugger) counts as this
+constexpr double kPhysicsBudgetMs = 12.0;       // physics may take this much of a frame
+constexpr double kSampleInterval = 1.0 / 240.0; // plots need no more than this [s]
+constexpr double kGrabFrequency = 3.0;          // the grab spring's natural frequency [Hz]
+
+} // namespace
+
+SimulationController::SimulationController(QObject* parent) : QObject(parent)
+{
+    m_frameTimer.setTimerType(Qt::PreciseTimer);
+    m_frameTimer.setInterval(kFrameIntervalMs);
+    connect(&m_frameTimer, &QTimer::timeout, this, &SimulationController::advanceFrame);
+    m_rateClock.start();
+}
+
+void SimulationController::loadScene(const lessons::Scene& scene, const QString& path)
+{
+    setRunning(false);
+    m_scene = scene;
+    m_path = path;
+    m_sceneGravity = scene.world.gravity;
+    m_grab.reset();
+    m_world = lessons::buildWorld(m_scene);
+    resetClock();
+    emit sceneLoaded();
+    emit settingsChanged();
+    emit worldChanged();
+}
+
+void SimulationController::reset()
+{
+    // Back to the scene's start, keeping the settings the user chose since.
+    const physics::WorldDef settings = m_world.def();
+    setRunning(false);
+    m_grab.reset();
+    m_world = lessons::buildWorld(m_scene);
+    m_world.setDt(settings.dt);
+    m_world.setIntegrator(settings.integrator);
+    m_world.setSolver(settings.solver);
+    m_world.setIterations(settings.iterations);
+    m_world.setGravity(settings.gravity);
+    if (settings.restitution != m_scene.world.restitution)
+        m_world.setRestitution(settings.restitution);
+    if (settings.friction != m_scene.world.friction)
+        m_world.setFriction(settings.friction);
+    resetClock();
+    emit worldChanged();
+}
+
+void SimulationController::resetClock()
+{
+    m_world.updateDiagnostics();
+    const physics::Diagnostics& d = m_world.diagnostics();
+    m_energyStart = d.total;
+    // Drift is relative to |E0|; when E0 is near zero, to the size of its parts instead.
+    m_energyScale = std::max({std::abs(d.total), d.kinetic + std::abs(d.potential), 1e-12});
+    m_history.reset(m_world);
+    m_previousPoses.clear();
+    m_accumulator = 0.0;
+    m_slow = false;
+    m_lastSampleTime = -1.0;
+    m_samples.clear();
+    emit samplesCleared();
+    pushSample();
+}
+
+double SimulationController::driftPercent() const
+{
+    return (m_world.diagnostics().total - m_energyStart) / m_energyScale * 100.0;
+}
+
+Pose SimulationController::drawPose(physics::BodyId id) const
+{
+    const physics::Body& b = m_world.body(id);
+    Pose now{b.origin(), b.angle};
+    const auto i = static_cast<std::size_t>(id);
+    if (!m_running || i >= m_previousPoses.size())
+        return now;
+    const double alpha = std::clamp(m_accumulator / m_world.def().dt, 0.0, 1.0);
+    const Pose& before = m_previousPoses[i];
+    return {before.origin + alpha * (now.origin - before.origin),
+            before.angle + alpha * (now.angle - before.angle)};
+}
+
+void SimulationController::setRunning(bool running)
+{
+    if (running == m_running)
+        return;
+    m_running = running;
+    m_accumulator = 0.0;
+    if (running) {
+        m_wall.start();
+        m_frameTimer.start();
+    } else {
+        m_frameTimer.stop();
+        m_slow = false;
+    }
+    emit runningChanged(running);
+    emit worldChanged();
+}
+
+void SimulationController::doStep()
+{
+    const long long step = m_world.stepCount();
+    const bool replaying = step < m_history.latest();
+    std::optional<UserInput> input;
+    if (m_grab) {
+        // The grab spring: k = m w^2, critically damped, at the grabbed point.
+        const physics::Body& b = m_world.body(m_grab->body);
+        const physics::Vec2 p = b.transform().apply(m_grab->localPoint);
+        const double h = m_world.def().dt;
+        const double w = std::min(2.0 * std::numbers::pi * kGrabFrequency, 0.5 / h);
+        const physics::Vec2 f =
+            b.mass * (w * w * (m_grab->target - p) - 2.0 * w * b.pointVelocity(p));
+        input = UserInput{m_grab->body, f, physics::cross(physics::Vec2(p - b.position), f)};
+        if (replaying)
+            m_history.branchAt(m_world); // a new push makes a new future
+    } else if (replaying) {
+        if (const UserInput* logged = m_history.inputFor(step))
+            input = *logged;
+    }
+    m_previousPoses.resize(m_world.bodies().size());
+    for (std::size_t i = 0; i < m_world.bodies().size(); ++i)
+        m_previousPoses[i] = {m_world.bodies()[i].origin(), m_world.bodies()[i].angle};
+    if (input)
+        applyInput(m_world, *input);
+    m_world.step();
+    m_history.recorded(m_world, input ? &*input : nullptr);
+    ++m_stepsThisSecond;
+    pushSample();
+}
+
+void SimulationController::pushSample()
+{
+    const double t = m_world.time();
+    if (m_lastSampleTime >= 0 && t < m_lastSampleTime + kSampleInterval - 1e-12)
+        return;
+    m_lastSampleTime = t;
+    const physics::Diagnostics& d = m_world.diagnostics();
+    Sample s;
+    s.t = t;
+    s.kinetic = d.kinetic;
+    s.potential = d.potential;
+    s.total = d.total;
+    s.px = d.momentum.x();
+    s.py = d.momentum.y();
+    s.angularMomentum = d.angularMomentum;
+    s.driftPercent = driftPercent();
+    m_samples.push(s);
+}
+
+void SimulationController::advanceFrame()
+{
+    QElapsedTimer physicsClock;
+    physicsClock.start();
+    // Nanoseconds: restart() would round to whole milliseconds and lose ~3% of the time.
+    const double wall = std::min(m_wall.nsecsElapsed() * 1e-9, kMaxFrameSeconds);
+    m_wall.start();
+    const double h = m_world.def().dt;
+    bool slow = false;
+    if (m_running) {
+        m_accumulator += wall * m_timeScale;
+        while (m_accumulator >= h) {
+            if (physicsClock.nsecsElapsed() * 1e-6 > kPhysicsBudgetMs) {
+                slow = true;
+                m_accumulator = 0.0; // drop what cannot be done in time
+                break;
+            }
+            doStep();
+            m_accumulator -= h;
+        }
+    }
+    m_physicsMs = physicsClock.nsecsElapsed() * 1e-6;
+    m_frameMs = wall * 1e3;
+    m_slow = slow;
+    if (m_rateClock.elapsed() >= 1000) {
+        m_stepsPerSecond = m_stepsThisSecond * 1000.0 / m_rateClock.restart();
+        m_stepsThisSecond = 0;
+    }
+    emit worldChanged();
+}
+
+void SimulationController::stepForward()
+{
+    setRunning(false);
+    doStep();
+    emit worldChanged();
+}
+
+void SimulationController::stepBack()
+{
+    seek(m_world.stepCount() - 1);
+}
+
+void SimulationController::seek(long long step)
+{
+    setRunning(false);
+    step = std::clamp(step, m_history.earliest(), m_history.latest());
+    if (step == m_world.stepCount())
+        return;
+    m_world = m_history.restore(step);
+    m_world.updateDiagnostics();
+    m_previousPoses.clear();
+    m_lastSampleTime = m_world.time() - kSampleInterval; // sample again from here on
+    emit rewound(m_world.time());
+    pushSample();
+    emit worldChanged();
+}
+
+void SimulationController::setTimeScale(double scale)
+{
+    m_timeScale = std::clamp(scale, 0.1, 4.0);
+    emit settingsChanged();
+}
+
+void SimulationController::afterEdit(const QString& mark)
+{
+    m_history.branchAt(m_world);
+    if (!mark.isEmpty() && m_world.stepCount() > 0)
+        emit marked(m_world.time(), mark);
+    emit settingsChanged();
+    emit worldChanged();
+}
+
+void SimulationController::setDt(double dt)
+{
+    if (!(dt > 0) || dt == m_world.def().dt)
+        return;
+    m_world.setDt(dt);
+    afterEdit(QStringLiteral("dt = %1 s").arg(dt));
+}
+
+void SimulationController::setIntegrator(physics::IntegratorKind kind)
+{
+    if (kind == m_world.def().integrator)
+        return;
+    m_world.setIntegrator(kind);
+    afterEdit(QString::fromLatin1(physics::integratorName(kind).data(),
+                                  static_cast<qsizetype>(physics::integratorName(kind).size())));
+}
+
+void SimulationController::setSolver(physics::SolverKind kind)
+{
+    if (kind == m_world.def().solver)
+        return;
+    m_world.setSolver(kind);
+    afterEdit(QString::fromLatin1(physics::solverName(kind).data(),
+                                  static_cast<qsizetype>(physics::solverName(kind).size())));
+}
+
+void SimulationController::setIterations(int iterations)
+{
+    if (iterations == m_world.def().iterations || iterations < 1)
+        return;
+    m_world.setIterations(iterations);
+    afterEdit(QStringLiteral("%1 iterations").arg(iterations));
+}
+
+void SimulationController::setRestitution(double e)
+{
+    if (!(e >= 0 && e <= 1))
+        return;
+    m_world.setRestitution(e);
+    afterEdit(QStringLiteral("e = %1").arg(e));
+}
+
+void SimulationController::setFriction(double mu)
+{
+    if (!(mu >= 0 && std::isfinite(mu)))
+        return;
+    m_world.setFriction(mu);
+    afterEdit(QStringLiteral("μ = %1").arg(mu));
+}
+
+void SimulationController::setGravityEnabled(bool on)
+{
+    const physics::Vec2 g = on ? m_sceneGravity : physics::Vec2::Zero();
+    if (g == m_world.def().gravity)
+        return;
+    m_world.setGravity(g);
+    afterEdit(on ? QStringLiteral("gravity on") : QStringLiteral("gravity off"));
+}
+
+void SimulationController::setBodyMaterial(physics::BodyId id, double restitution, double friction)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()))
+        return;
+    if (!(restitution >= 0 && restitution <= 1) || !(friction >= 0 && std::isfinite(friction)))
+        return;
+    physics::Body& b = m_world.body(id);
+    b.restitution = restitution;
+    b.friction = friction;
+    afterEdit(QString());
+}
+
+void SimulationController::grab(physics::BodyId id, const physics::Vec2& worldPoint)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
+        !m_world.body(id).isDynamic())
+        return;
+    m_grab = Grab{id, m_world.body(id).transform().applyInverse(worldPoint), worldPoint};
+}
+
+void SimulationController::dragTo(const physics::Vec2& worldPoint)
+{
+    if (m_grab)
+        m_grab->target = worldPoint;
+}
+
+void SimulationController::release()
+{
+    m_grab.reset();
+}
+
+bool SimulationController::grabLine(physics::Vec2& from, physics::Vec2& to) const
+{
+    if (!m_grab)
+        return false;
+    from = m_world.body(m_grab->body).transform().apply(m_grab->localPoint);
+    to = m_grab->target;
+    return true;
+}
+
+} // namespace rigidlab::ui

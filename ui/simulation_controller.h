@@ -1,0 +1,145 @@
+#pragma once
+// The one owner of the world and its clock. The window's widgets read from it and ask it to
+// change things; nothing else steps or edits the world.
+//
+// Real time: the physics runs on a fixed dt. Each frame adds the wall time that passed
+// (times the time scale) to an accumulator and takes as many steps as fit; the view draws
+// the bodies interpolated between the last two steps. A frame never takes more than a set
+// number of steps or milliseconds of physics (no spiral of death): when it has to stop early
+// the run is marked "slower than real time".
+
+#include "history.h"
+#include "sample_buffer.h"
+
+#include "rigidlab/lessons/scene.h"
+#include "rigidlab/physics/world.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <optional>
+#include <vector>
+
+namespace rigidlab::ui {
+
+/// A body pose for drawing [m, rad].
+struct Pose {
+    physics::Vec2 origin = physics::Vec2::Zero();
+    double angle = 0.0;
+};
+
+class SimulationController : public QObject {
+    Q_OBJECT
+public:
+    explicit SimulationController(QObject* parent = nullptr);
+
+    /// Replaces the scene and its world; the run starts paused at t = 0 unless `run`.
+    void loadScene(const lessons::Scene& scene, const QString& path);
+    const lessons::Scene& scene() const { return m_scene; }
+    const QString& scenePath() const { return m_path; }
+    const physics::World& world() const { return m_world; }
+    const SampleBuffer& samples() const { return m_samples; }
+
+    bool isRunning() const { return m_running; }
+    double timeScale() const { return m_timeScale; }
+    bool slowerThanRealTime() const { return m_slow; }
+    /// Steps per second of wall time, over the last second.
+    double stepsPerSecond() const { return m_stepsPerSecond; }
+    /// Wall time of the last frame, and the part of it spent in physics [ms].
+    double frameMilliseconds() const { return m_frameMs; }
+    double physicsMilliseconds() const { return m_physicsMs; }
+    /// Relative energy drift since the start [%].
+    double driftPercent() const;
+
+    /// The body pose to draw: between the last two steps, by how far the clock is into the next.
+    Pose drawPose(physics::BodyId id) const;
+
+    // Time travel.
+    long long earliestStep() const { return m_history.earliest(); }
+    long long latestStep() const { return m_history.latest(); }
+    long long currentStep() const { return m_world.stepCount(); }
+
+    // Dragging a body: a stiff, critically damped spring from a point of the body to the
+    // cursor, applied through the seed's force accumulator, so that the physics stays physical
+    // and a release throws the body with the velocity it has.
+    void grab(physics::BodyId id, const physics::Vec2& worldPoint);
+    void dragTo(const physics::Vec2& worldPoint);
+    void release();
+    std::optional<physics::BodyId> grabbed() const
+    {
+        return m_grab ? std::optional(m_grab->body) : std::nullopt;
+    }
+    /// The grab spring's two ends for drawing, when dragging.
+    bool grabLine(physics::Vec2& from, physics::Vec2& to) const;
+
+public slots:
+    void setRunning(bool running);
+    void toggleRunning() { setRunning(!m_running); }
+    void stepForward();
+    void stepBack();
+    /// Goes to any step in [earliestStep, latestStep]; running stops.
+    void seek(long long step);
+    void reset();
+    void setTimeScale(double scale);
+    void setDt(double dt);
+    void setIntegrator(physics::IntegratorKind kind);
+    void setSolver(physics::SolverKind kind);
+    void setIterations(int iterations);
+    void setRestitution(double e);
+    void setFriction(double mu);
+    void setGravityEnabled(bool on);
+    void setBodyMaterial(physics::BodyId id, double restitution, double friction);
+    /// Advances the clock by the wall time since the last frame (the frame timer calls it).
+    void advanceFrame();
+
+signals:
+    void sceneLoaded();
+    /// The world changed (steps taken, a seek, a reset or an edit).
+    void worldChanged();
+    void runningChanged(bool running);
+    void settingsChanged();
+    /// A setting changed mid-run: the plots draw a mark at t.
+    void marked(double t, const QString& label);
+    /// The world went back to time t: the plots drop what comes after.
+    void rewound(double t);
+    /// Samples were cleared (new scene, reset).
+    void samplesCleared();
+
+private:
+    void doStep();
+    void pushSample();
+    void afterEdit(const QString& mark);
+    void resetClock();
+
+    lessons::Scene m_scene;
+    QString m_path;
+    physics::World m_world;
+    std::vector<Pose> m_previousPoses;
+    History m_history;
+    SampleBuffer m_samples;
+    double m_energyScale = 1.0; ///< |E0|, or another scale when E0 is near 0 [J]
+    double m_energyStart = 0.0; ///< [J]
+    double m_lastSampleTime = -1.0;
+    physics::Vec2 m_sceneGravity = physics::Vec2::Zero();
+
+    QTimer m_frameTimer;
+    QElapsedTimer m_wall;
+    double m_accumulator = 0.0; ///< simulated time owed to the clock [s]
+    double m_timeScale = 1.0;
+    bool m_running = false;
+    bool m_slow = false;
+    double m_frameMs = 0.0, m_physicsMs = 0.0, m_stepsPerSecond = 0.0;
+    long long m_stepsThisSecond = 0;
+    QElapsedTimer m_rateClock;
+
+    struct Grab {
+        physics::BodyId body = -1;
+        physics::Vec2 localPoint = physics::Vec2::Zero(); ///< in the body's origin frame [m]
+        physics::Vec2 target = physics::Vec2::Zero();     ///< the cursor [m]
+    };
+    std::optional<Grab> m_grab;
+};
+
+} // namespace rigidlab::ui

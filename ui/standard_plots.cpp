@@ -1,0 +1,60 @@
+// The plots of the lab window, each a few lines over PlotWidget; and the palette they share.
+// Declared in plot_widget.h.
+
+#include "plot_widget.h"
+
+#include <iterator>
+
+namespace rigidlab::ui {
+
+QColor plotColor(int index)
+{
+    // Okabe & Ito's palette: told apart with any colour vision, and on a washed-out projector.
+    static const QColor palette[] = {
+        {0x00, 0x72, 0xB2}, // blue
+        {0xD5, 0x5E, 0x00}, // vermilion
+        {0x00, 0x9E, 0x73}, // bluish green
+        {0xCC, 0x79, 0xA7}, // reddish purple
+        {0xE6, 0x9F, 0x00}, // orange
+        {0x56, 0xB4, 0xE9}, // sky blue
+        {0x20, 0x20, 0x20}, // ink
+    };
+    const int n = static_cast<int>(std::size(palette));
+    return palette[((index % n) + n) % n];
+}
+
+PlotWidget* makeEnergyPlot(QWidget* parent)
+{
+    auto* plot = new PlotWidget(PlotWidget::tr("Energy"), parent);
+    plot->setYAxisLabel(PlotWidget::tr("energy E"), QStringLiteral("J"));
+    plot->addSeries(PlotWidget::tr("kinetic"), plotColor(1),
+                    [](const Sample& s) { return s.kinetic; });
+    plot->addSeries(PlotWidget::tr("potential"), plotColor(0),
+                    [](const Sample& s) { return s.potential; });
+    plot->addSeries(PlotWidget::tr("total"), plotColor(6), [](const Sample& s) { return s.total; });
+    return plot;
+}
+
+PlotWidget* makeMomentumPlot(QWidget* parent)
+{
+    auto* plot = new PlotWidget(PlotWidget::tr("Momentum"), parent);
+    plot->setYAxisLabel(PlotWidget::tr("p"), QStringLiteral("kg m/s"));
+    plot->setYAxisLabel(PlotWidget::tr("L"), QStringLiteral("kg m²/s"), YAxis::Right);
+    plot->addSeries(QStringLiteral("px"), plotColor(0), [](const Sample& s) { return s.px; });
+    plot->addSeries(QStringLiteral("py"), plotColor(1), [](const Sample& s) { return s.py; });
+    plot->addSeries(
+        QStringLiteral("L"), plotColor(2), [](const Sample& s) { return s.angularMomentum; },
+        YAxis::Right);
+    return plot;
+}
+
+PlotWidget* makeDriftPlot(QWidget* parent)
+{
+    auto* plot = new PlotWidget(PlotWidget::tr("Energy drift"), parent);
+    plot->setYAxisLabel(PlotWidget::tr("(E − E₀)/|E₀|"), QStringLiteral("%"));
+    plot->addSeries(PlotWidget::tr("energy drift"), plotColor(3),
+                    [](const Sample& s) { return s.driftPercent; });
+    return plot;
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,273 @@
+#include "world_view.h"
+
+#include "body_item.h"
+#include "simulation_controller.h"
+
+#include <QMouseEvent>
+#include <QScrollBar>
+#include <QWheelEvent>
+
+#include <cmath>
+
+namespace rigidlab::ui {
+
+namespace {
+
+constexpr double kMinZoom = 2.0;     // pixels per metre
+constexpr double kMaxZoom = 20000.0; // pixels per metre
+
+} // namespace
+
+WorldView::WorldView(SimulationController& controller, QWidget* parent)
+    : QGraphicsView(parent), m_controller(controller), m_scene(new QGraphicsScene(this))
+{
+    m_scene->setSceneRect(-1e5, -1e5, 2e5, 2e5);
+    m_scene->setItemIndexMethod(QGraphicsScene::NoIndex); // items move every frame
+    setScene(m_scene);
+    m_overlays = new OverlayItem(m_controller);
+    m_scene->addItem(m_overlays);
+    setRenderHint(QPainter::Antialiasing);
+    setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setTransformationAnchor(QGraphicsView::AnchorUnderMouse);
+    setDragMode(QGraphicsView::NoDrag);
+    setMinimumSize(320, 240);
+    setTransform(QTransform::fromScale(100, -100)); // y up
+    setFocusPolicy(Qt::StrongFocus);
+    connect(&m_controller, &SimulationController::sceneLoaded, this, &WorldView::rebuild);
+    connect(&m_controller, &SimulationController::worldChanged, this, &WorldView::syncPoses);
+    connect(&m_controller, &SimulationController::rewound, this,
+            [this] { m_overlays->clearTrails(); });
+    rebuild();
+}
+
+const BodyItem* WorldView::itemFor(int id) const
+{
+    return id >= 0 && id < static_cast<int>(m_items.size()) ? m_items[static_cast<size_t>(id)]
+                                                            : nullptr;
+}
+
+void WorldView::rebuild()
+{
+    for (BodyItem* item : m_items)
+        delete item;
+    m_items.clear();
+    m_selected = -1;
+    const auto& bodies = m_controller.world().bodies();
+    int colour = 0;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const physics::Body& b = bodies[i];
+        const int kind = b.type == physics::BodyType::Static      ? 1
+                         : b.type == physics::BodyType::Kinematic ? 2
+                                                                  : 0;
+        auto* item = new BodyItem(static_cast<int>(i), b.shape, kind,
+                                  kind == 1 ? QColor(Qt::gray) : bodyColor(colour++));
+        m_scene->addItem(item);
+        m_items.push_back(item);
+    }
+    m_overlays->clearTrails();
+    syncPoses();
+    m_autoFit = true;
+    fitScene();
+    emit bodySelected(-1);
+}
+
+void WorldView::syncPoses()
+{
+    for (std::size_t i = 0; i < m_items.size(); ++i) {
+        const Pose pose = m_controller.drawPose(static_cast<physics::BodyId>(i));
+        m_items[i]->setPose(pose.origin.x(), pose.origin.y(), pose.angle);
+    }
+    if (m_autoFit && !m_fitted.isEmpty()) {
+        // Follow bodies that leave the fitted area, by widening it (within the limit).
+        const QRectF wanted = (m_fitted | contentRect()) & m_fitLimit;
+        if (!m_fitted.contains(wanted)) {
+            m_fitted |= wanted;
+            showRect(m_fitted);
+        }
+    }
+    m_overlays->refresh();
+}
+
+void WorldView::selectBody(int id)
+{
+    if (m_selected >= 0 && m_selected < static_cast<int>(m_items.size()))
+        m_items[static_cast<size_t>(m_selected)]->setSelectedBody(false);
+    m_selected = id >= 0 && id < static_cast<int>(m_items.size()) ? id : -1;
+    if (m_selected >= 0)
+        m_items[static_cast<size_t>(m_selected)]->setSelectedBody(true);
+    emit bodySelected(m_selected);
+}
+
+QRectF WorldView::contentRect() const
+{
+    QRectF box;
+    for (const BodyItem* item : m_items)
+        box |= item->sceneBoundingRect();
+    const physics::World& w = m_controller.world();
+    auto add = [&](physics::BodyId id, const physics::Vec2& anchor) {
+        const physics::Vec2 p =
+            id == physics::kWorld ? anchor : w.body(id).transform().apply(anchor);
+        box |= QRectF(QPointF(p.x(), p.y()), QSizeF(1e-6, 1e-6));
+    };
+    for (const physics::SpringDef& s : w.springs()) {
+        add(s.a, s.anchorA);
+        add(s.b, s.anchorB);
+    }
+    for (const physics::PinJointDef& j : w.joints()) {
+        add(j.a, j.anchorA);
+        add(j.b, j.anchorB);
+    }
+    return box;
+}
+
+void WorldView::fitScene()
+{
+    m_autoFit = true;
+    m_fitted = contentRect();
+    if (m_fitted.isEmpty())
+        return;
+    // Auto-fit may later widen to follow bodies that leave, but not past 8 times the scene.
+    const QPointF c = m_fitted.center();
+    const double span = 8.0 * std::max({m_fitted.width(), m_fitted.height(), 1.0});
+    m_fitLimit = QRectF(c - QPointF(span, span) / 2, QSizeF(span, span));
+    showRect(m_fitted);
+}
+
+void WorldView::showRect(QRectF box)
+{
+    if (box.isEmpty() || viewport()->width() < 10 || viewport()->height() < 10)
+        return;
+    const double margin = 0.08 * std::max(box.width(), box.height()) + 0.05;
+    box.adjust(-margin, -margin, margin, margin);
+    setZoom(std::min(viewport()->width() / box.width(), viewport()->height() / box.height()));
+    centerOn(box.center());
+}
+
+void WorldView::setZoom(double pixelsPerMetre)
+{
+    const double s = std::clamp(pixelsPerMetre, kMinZoom, kMaxZoom);
+    setTransform(QTransform::fromScale(s, -s));
+}
+
+physics::Vec2 WorldView::toWorld(const QPoint& viewPos) const
+{
+    const QPointF p = mapToScene(viewPos);
+    return {p.x(), p.y()};
+}
+
+void WorldView::mousePressEvent(QMouseEvent* event)
+{
+    m_lastMouse = event->pos();
+    if (event->button() == Qt::MiddleButton) {
+        m_panning = true;
+        setCursor(Qt::ClosedHandCursor);
+        return;
+    }
+    if (event->button() != Qt::LeftButton)
+        return QGraphicsView::mousePressEvent(event);
+    BodyItem* hit = nullptr;
+    for (QGraphicsItem* item : items(event->pos()))
+        if ((hit = qgraphicsitem_cast<BodyItem*>(item)))
+            break;
+    if (!hit) {
+        m_panning = true;
+        setCursor(Qt::ClosedHandCursor);
+        return;
+    }
+    selectBody(hit->bodyId());
+    m_controller.grab(hit->bodyId(), toWorld(event->pos()));
+    if (m_controller.grabbed())
+        setCursor(Qt::ClosedHandCursor);
+}
+
+void WorldView::mouseMoveEvent(QMouseEvent* event)
+{
+    const QPoint delta = event->pos() - m_lastMouse;
+    m_lastMouse = event->pos();
+    if (m_panning) {
+        m_autoFit = false;
+        horizontalScrollBar()->setValue(horizontalScrollBar()->value() - delta.x());
+        verticalScrollBar()->setValue(verticalScrollBar()->value() - delta.y());
+        return;
+    }
+    if (m_controller.grabbed()) {
+        m_controller.dragTo(toWorld(event->pos()));
+        m_overlays->update();
+        return;
+    }
+    QGraphicsView::mouseMoveEvent(event);
+}
+
+void WorldView::mouseReleaseEvent(QMouseEvent* event)
+{
+    m_panning = false;
+    m_controller.release();
+    unsetCursor();
+    QGraphicsView::mouseReleaseEvent(event);
+}
+
+void WorldView::wheelEvent(QWheelEvent* event)
+{
+    const double steps = event->angleDelta().y() / 120.0;
+    if (steps == 0)
+        return;
+    // Zoom about the point under the cursor (the transformation anchor).
+    m_autoFit = false;
+    const double factor = std::pow(1.2, steps);
+    const double target = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
+    scale(target / zoom(), target / zoom());
+    event->accept();
+}
+
+void WorldView::resizeEvent(QResizeEvent* event)
+{
+    QGraphicsView::resizeEvent(event);
+    if (m_autoFit)
+        showRect(m_fitted.isEmpty() ? contentRect() : m_fitted);
+}
+
+void WorldView::drawBackground(QPainter* painter, const QRectF& rect)
+{
+    painter->fillRect(rect, QColor(0xfb, 0xfb, 0xf8));
+    // A light grid, 1 m apart (10 m when zoomed far out), so that distances can be read.
+    const double step = zoom() < 12 ? 10.0 : (zoom() > 400 ? 0.1 : 1.0);
+    QPen pen(QColor(0xe2, 0xe2, 0xdc), 1.0);
+    pen.setCosmetic(true);
+    painter->setPen(pen);
+    const double x0 = std::floor(rect.left() / step) * step;
+    const double y0 = std::floor(rect.top() / step) * step;
+    for (double x = x0; x <= rect.right(); x += step)
+        painter->drawLine(QPointF(x, rect.top()), QPointF(x, rect.bottom()));
+    for (double y = y0; y <= rect.bottom(); y += step)
+        painter->drawLine(QPointF(rect.left(), y), QPointF(rect.right(), y));
+}
+
+void WorldView::drawForeground(QPainter* painter, const QRectF&)
+{
+    // A scale bar in screen space, bottom left: a round length of about 120 px.
+    painter->save();
+    painter->resetTransform();
+    const double metres = 120.0 / zoom();
+    const double exp10 = std::pow(10.0, std::floor(std::log10(metres)));
+    double nice = exp10;
+    for (double m : {1.0, 2.0, 5.0})
+        if (m * exp10 <= metres)
+            nice = m * exp10;
+    const int len = static_cast<int>(nice * zoom());
+    const QPoint o(16, viewport()->height() - 18);
+    painter->setPen(QPen(QColor(40, 40, 40), 2));
+    painter->drawLine(o, o + QPoint(len, 0));
+    painter->drawLine(o + QPoint(0, -5), o + QPoint(0, 5));
+    painter->drawLine(o + QPoint(len, -5), o + QPoint(len, 5));
+    QFont f = font();
+    f.setPointSizeF(f.pointSizeF() * 1.1);
+    painter->setFont(f);
+    const QString label =
+        nice >= 1 ? QStringLiteral("%1 m").arg(nice) : QStringLiteral("%1 cm").arg(nice * 100);
+    painter->drawText(o + QPoint(len + 8, 5), label);
+    painter->restore();
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,68 @@
+#pragma once
+// The central view: the world drawn with y up, metres mapped to pixels. Pan by dragging
+// empty space or with the middle button, zoom with the wheel around the cursor, fit the
+// scene on demand. A left press on a dynamic body grabs it (a spring to the cursor); a click
+// selects a body for the inspector.
+
+#include "overlays.h"
+
+#include <QGraphicsView>
+
+#include <vector>
+
+namespace rigidlab::ui {
+
+class BodyItem;
+class SimulationController;
+
+class WorldView : public QGraphicsView {
+    Q_OBJECT
+public:
+    explicit WorldView(SimulationController& controller, QWidget* parent = nullptr);
+
+    OverlayItem& overlays() { return *m_overlays; }
+    /// The item drawing body `id` (for tests).
+    const BodyItem* itemFor(int id) const;
+    int selectedBody() const { return m_selected; }
+    /// Pixels per metre now.
+    double zoom() const { return transform().m11(); }
+
+public slots:
+    void fitScene();
+    void rebuild();
+    void syncPoses();
+    void selectBody(int id);
+
+signals:
+    void bodySelected(int id);
+
+protected:
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void drawBackground(QPainter* painter, const QRectF& rect) override;
+    void drawForeground(QPainter* painter, const QRectF& rect) override;
+    void resizeEvent(QResizeEvent* event) override;
+
+private:
+    physics::Vec2 toWorld(const QPoint& viewPos) const;
+    /// Everything the scene shows: bodies, spring and joint anchors [m].
+    QRectF contentRect() const;
+    /// Shows `box` (grown by a margin) in the whole viewport.
+    void showRect(QRectF box);
+    void setZoom(double pixelsPerMetre);
+
+    SimulationController& m_controller;
+    QGraphicsScene* m_scene;
+    OverlayItem* m_overlays;
+    std::vector<BodyItem*> m_items; ///< indexed by body id
+    int m_selected = -1;
+    bool m_panning = false;
+    bool m_autoFit = true; ///< fit the scene on resize until the user pans or zooms
+    QRectF m_fitted;       ///< what auto-fit shows; it widens to follow bodies, up to a limit
+    QRectF m_fitLimit;     ///< auto-fit never widens beyond this
+    QPoint m_lastMouse;
+};
+
+} // namespace rigidlab::ui
