@@ -177,6 +177,7 @@ void WorldView::mousePressEvent(QMouseEvent* event)
         return;
     }
     selectBody(hit->bodyId());
+    m_autoFit = false; // the view must hold still under the hand that drags
     m_controller.grab(hit->bodyId(), toWorld(event->pos()));
     if (m_controller.grabbed())
         setCursor(Qt::ClosedHandCursor);

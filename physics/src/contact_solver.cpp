@@ -86,14 +86,25 @@ void ContactSolver::prepare(double threshold)
         const Body& b = m_bodies[static_cast<size_t>(ct.b)];
         Constraint c;
         c.contact = static_cast<int>(ci);
-        c.normal = ct.manifold.normal;
-        c.tangent = Vec2(c.normal.y(), -c.normal.x());
         c.count = ct.manifold.pointCount;
+        // The manifold was found where the bodies stood at the start of the step; they have
+        // moved since. Its points and normal are placed again on the bodies as they are now,
+        // so that the lever arms belong to the same instant as the centres (else a
+        // frictionless ball would pick up spin). The separations stay those of the start,
+        // which time the contact within the step.
+        const Transform xfA = a.transform(), xfB = b.transform();
+        std::array<Vec2, 2> points{};
+        for (int i = 0; i < c.count; ++i) {
+            double sepNow;
+            evaluateManifoldPoint(ct.manifold, i, xfA, xfB, c.normal,
+                                  points[static_cast<size_t>(i)], sepNow);
+        }
+        c.tangent = Vec2(c.normal.y(), -c.normal.x());
         for (int i = 0; i < c.count; ++i) {
             const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
             Point& p = c.p[i];
-            p.rA = cp.point - a.position;
-            p.rB = cp.point - b.position;
+            p.rA = points[static_cast<size_t>(i)] - a.position;
+            p.rB = points[static_cast<size_t>(i)] - b.position;
             const double rnA = cross(p.rA, c.normal), rnB = cross(p.rB, c.normal);
             const double kn =
                 a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;

@@ -1,0 +1,389 @@
+// rigidlab-cli: scenes without a window. Argument handling only; the work is done by
+// rigidlab_lessons (scene_loader, scene_run, sat_report, document).
+
+#include "rigidlab/lessons/document.h"
+#include "rigidlab/lessons/sat_report.h"
+#include "rigidlab/lessons/scene_loader.h"
+#include "rigidlab/lessons/scene_run.h"
+
+#include <QCoreApplication>
+#include <QStringList>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+namespace {
+
+using namespace rigidlab;
+
+/// Exit statuses, as documented in the usage text.
+enum ExitStatus : int {
+    kExitOk = 0,
+    kExitOutputError = 1,
+    kExitBadInput = 2,
+    kExitNonFinite = 3,
+};
+
+constexpr const char* kUsage = R"(usage: rigidlab-cli COMMAND [ARGS]
+
+Commands:
+  run SCENE.json [OPTIONS]   run a scene without a window and print a summary
+      --time T               simulated time [s] (default 5)
+      --steps N              number of steps instead of a time
+      --dt H                 time step [s], overrides the scene's (1e-07 to 1)
+      --integrator NAME      euler, symplectic-euler, verlet, rk4
+      --solver NAME          seed-impulse, sequential-impulse
+      --trace FILE.csv       step,t,body,x,y,angle,vx,vy,omega per dynamic body
+      --diagnostics FILE.csv step,t,kinetic,potential,total,px,py,angular_momentum,contacts
+      --every K              write rows every K steps (default 1; step 0 and the last
+                             step are always written)
+  validate FILE.json...      check documents (scenes) and say what is wrong
+  sat PAIR.json              the separating axis test on polygon pairs, as JSON
+  --help                     this text
+
+Exit status: 0 done, 1 an output file could not be written, 2 bad input or usage,
+3 the simulation became non-finite (nothing written).
+Scene format: lessons/SCENE_FORMAT.md.
+)";
+
+void printOut(const QString& text)
+{
+    std::fputs(text.toLocal8Bit().constData(), stdout);
+}
+
+void printErr(const QString& text)
+{
+    std::fputs(text.toLocal8Bit().constData(), stderr);
+}
+
+void printWarnings(const QStringList& warnings)
+{
+    for (const QString& w : warnings) {
+        printErr(QStringLiteral("warning: ") + w + u'\n');
+    }
+}
+
+/// A usage error: one line, a hint, exit status 2.
+int usageError(const QString& what)
+{
+    printErr(QStringLiteral("rigidlab-cli: ") + what +
+             QStringLiteral("\nTry 'rigidlab-cli --help'.\n"));
+    return kExitBadInput;
+}
+
+int inputError(const QString& line)
+{
+    printErr(QStringLiteral("error: ") + line + u'\n');
+    return kExitBadInput;
+}
+
+bool isHelp(const QString& arg)
+{
+    return arg == u"--help" || arg == u"-h";
+}
+
+/// Command-line words after the command, split into options (with their values) and
+/// positional arguments. Accepts `--name value` and `--name=value`.
+class Arguments {
+public:
+    Arguments(QStringList words, QStringList valueOptions)
+        : m_words(std::move(words)), m_valueOptions(std::move(valueOptions))
+    {
+    }
+
+    /// Fills options and positionals; false with `error` set on a malformed command line.
+    bool parse(QString& error)
+    {
+        bool optionsEnded = false;
+        for (qsizetype i = 0; i < m_words.size(); ++i) {
+            const QString& word = m_words[i];
+            if (!optionsEnded && word == u"--") {
+                optionsEnded = true;
+                continue;
+            }
+            if (optionsEnded || !word.startsWith(u'-') || word.size() == 1) {
+                m_positionals.append(word);
+                continue;
+            }
+            QString name = word;
+            std::optional<QString> value;
+            if (const qsizetype eq = word.indexOf(u'='); eq > 0) {
+                name = word.left(eq);
+                value = word.mid(eq + 1);
+            }
+            if (!m_valueOptions.contains(name)) {
+                error = QStringLiteral("unknown option %1").arg(name);
+                return false;
+            }
+            if (!value) {
+                if (i + 1 >= m_words.size()) {
+                    error = QStringLiteral("%1: needs a value").arg(name);
+                    return false;
+                }
+                value = m_words[++i];
+            }
+            for (const auto& [seen, unused] : m_options) {
+                if (seen == name) {
+                    error = QStringLiteral("%1: given twice").arg(name);
+                    return false;
+                }
+            }
+            m_options.emplace_back(name, *value);
+        }
+        return true;
+    }
+
+    std::optional<QString> option(QStringView name) const
+    {
+        for (const auto& [key, value] : m_options) {
+            if (key == name) {
+                return value;
+            }
+        }
+        return std::nullopt;
+    }
+    const QStringList& positionals() const { return m_positionals; }
+
+private:
+    QStringList m_words;
+    QStringList m_valueOptions;
+    std::vector<std::pair<QString, QString>> m_options; // in command-line order
+    QStringList m_positionals;
+};
+
+/// A finite number from an option value, or an error.
+std::optional<double> parseNumber(const QString& name, const QString& text, QString& error)
+{
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+        error = QStringLiteral("%1: must be a finite number, got \"%2\"").arg(name, text);
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::optional<long long> parseWhole(const QString& name, const QString& text, long long min,
+                                    long long max, QString& error)
+{
+    bool ok = false;
+    const long long value = text.trimmed().toLongLong(&ok);
+    if (!ok || value < min || value > max) {
+        error = QStringLiteral("%1: must be a whole number from %2 to %3, got \"%4\"")
+                    .arg(name)
+                    .arg(min)
+                    .arg(max)
+                    .arg(text);
+        return std::nullopt;
+    }
+    return value;
+}
+
+/// Reads the run options; false with `error` set when one is wrong.
+bool readRunOptions(const Arguments& args, lessons::RunOptions& options, QString& error)
+{
+    const auto time = args.option(u"--time");
+    const auto steps = args.option(u"--steps");
+    if (time && steps) {
+        error = QStringLiteral("--time and --steps: give one or the other");
+        return false;
+    }
+    if (time) {
+        options.time = parseNumber(QStringLiteral("--time"), *time, error);
+        if (!options.time) {
+            return false;
+        }
+        if (*options.time < 0) {
+            error = QStringLiteral("--time: must be >= 0, got \"%1\"").arg(*time);
+            return false;
+        }
+    }
+    if (steps) {
+        options.steps =
+            parseWhole(QStringLiteral("--steps"), *steps, 0, lessons::kMaxRunSteps, error);
+        if (!options.steps) {
+            return false;
+        }
+    }
+    if (const auto dt = args.option(u"--dt")) {
+        options.dt = parseNumber(QStringLiteral("--dt"), *dt, error);
+        if (!options.dt) {
+            return false;
+        }
+        if (*options.dt < lessons::kMinDt || *options.dt > lessons::kMaxDt) {
+            error = QStringLiteral("--dt: must be from 1e-07 to 1 s, got \"%1\"").arg(*dt);
+            return false;
+        }
+    }
+    if (const auto every = args.option(u"--every")) {
+        const auto k =
+            parseWhole(QStringLiteral("--every"), *every, 1, lessons::kMaxRunSteps, error);
+        if (!k) {
+            return false;
+        }
+        options.every = *k;
+    }
+    if (const auto name = args.option(u"--integrator")) {
+        options.integrator = physics::integratorFromName(name->toStdString());
+        if (!options.integrator) {
+            error = QStringLiteral("--integrator: unknown integrator \"%1\" (expected euler, "
+                                   "symplectic-euler, verlet, rk4)")
+                        .arg(*name);
+            return false;
+        }
+    }
+    if (const auto name = args.option(u"--solver")) {
+        options.solver = physics::solverFromName(name->toStdString());
+        if (!options.solver) {
+            error = QStringLiteral("--solver: unknown solver \"%1\" (expected seed-impulse, "
+                                   "sequential-impulse)")
+                        .arg(*name);
+            return false;
+        }
+    }
+    for (const auto& [flag, path] :
+         {std::pair{QStringView(u"--trace"), &options.tracePath},
+          std::pair{QStringView(u"--diagnostics"), &options.diagnosticsPath}}) {
+        if (const auto value = args.option(flag)) {
+            if (value->isEmpty()) {
+                error = QStringLiteral("%1: needs a file name").arg(flag);
+                return false;
+            }
+            *path = *value;
+        }
+    }
+    return true;
+}
+
+/// One positional argument, the file, or a usage error.
+std::optional<QString> onlyFile(const Arguments& args, const char* command, QString& error)
+{
+    if (args.positionals().size() != 1) {
+        error =
+            args.positionals().isEmpty()
+                ? QStringLiteral("%1: which file?").arg(QLatin1StringView(command))
+                : QStringLiteral("%1: one file only, got %2")
+                      .arg(QLatin1StringView(command), QString::number(args.positionals().size()));
+        return std::nullopt;
+    }
+    return args.positionals().front();
+}
+
+int commandRun(const QStringList& words)
+{
+    Arguments args(words, {QStringLiteral("--time"), QStringLiteral("--steps"),
+                           QStringLiteral("--dt"), QStringLiteral("--integrator"),
+                           QStringLiteral("--solver"), QStringLiteral("--trace"),
+                           QStringLiteral("--diagnostics"), QStringLiteral("--every")});
+    QString error;
+    lessons::RunOptions options;
+    if (!args.parse(error) || !readRunOptions(args, options, error)) {
+        return usageError(QStringLiteral("run: ") + error);
+    }
+    const auto path = onlyFile(args, "run", error);
+    if (!path) {
+        return usageError(error);
+    }
+    const lessons::SceneLoadResult loaded = lessons::loadSceneFile(*path);
+    printWarnings(loaded.warnings);
+    if (!loaded.ok) {
+        return inputError(loaded.error);
+    }
+    const lessons::RunReport report = lessons::runScene(loaded.scene, options, *path);
+    switch (report.status) {
+    case lessons::RunStatus::Ok:
+        printOut(report.summary(*path) + u'\n');
+        return kExitOk;
+    case lessons::RunStatus::BadOptions:
+        return inputError(report.error);
+    case lessons::RunStatus::OutputError:
+        printErr(QStringLiteral("error: ") + report.error + u'\n');
+        return kExitOutputError;
+    case lessons::RunStatus::NonFinite:
+        printErr(QStringLiteral("error: ") + report.error + u'\n');
+        return kExitNonFinite;
+    }
+    return kExitBadInput;
+}
+
+int commandValidate(const QStringList& words)
+{
+    Arguments args(words, {});
+    QString error;
+    if (!args.parse(error)) {
+        return usageError(QStringLiteral("validate: ") + error);
+    }
+    if (args.positionals().isEmpty()) {
+        return usageError(QStringLiteral("validate: which file?"));
+    }
+    int status = kExitOk;
+    for (const QString& path : args.positionals()) {
+        const lessons::DocumentCheck check = lessons::checkDocumentFile(path);
+        printWarnings(check.warnings);
+        if (check.ok) {
+            printOut(QStringLiteral("ok: %1: %2\n").arg(path, check.summary));
+        } else {
+            status = inputError(check.error);
+        }
+    }
+    return status;
+}
+
+int commandSat(const QStringList& words)
+{
+    Arguments args(words, {});
+    QString error;
+    if (!args.parse(error)) {
+        return usageError(QStringLiteral("sat: ") + error);
+    }
+    const auto path = onlyFile(args, "sat", error);
+    if (!path) {
+        return usageError(error);
+    }
+    const lessons::SatReport report = lessons::satReportFile(*path);
+    printWarnings(report.warnings);
+    if (!report.ok) {
+        return inputError(report.error);
+    }
+    std::fwrite(report.json.constData(), 1, static_cast<size_t>(report.json.size()), stdout);
+    return kExitOk;
+}
+
+/// The commands; a new one is a function and a row here (and a paragraph of kUsage).
+struct Command {
+    QLatin1StringView name;
+    int (*run)(const QStringList& words);
+};
+constexpr Command kCommands[] = {
+    {QLatin1StringView("run"), &commandRun},
+    {QLatin1StringView("validate"), &commandValidate},
+    {QLatin1StringView("sat"), &commandSat},
+};
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    QCoreApplication app(argc, argv);
+    QStringList words = QCoreApplication::arguments();
+    words.removeFirst();
+    if (words.isEmpty()) {
+        std::fputs(kUsage, stderr);
+        return kExitBadInput;
+    }
+    if (words.front() == u"help" || std::any_of(words.cbegin(), words.cend(), isHelp)) {
+        std::fputs(kUsage, stdout);
+        return kExitOk;
+    }
+    const QString name = words.takeFirst();
+    for (const Command& command : kCommands) {
+        if (name == command.name) {
+            return command.run(words);
+        }
+    }
+    std::fputs(kUsage, stderr);
+    printErr(QStringLiteral("rigidlab-cli: unknown command \"%1\"\n").arg(name));
+    return kExitBadInput;
+}

@@ -1,0 +1,36 @@
+#pragma once
+// A scene as a file describes it: the world settings and the definitions of its bodies,
+// springs and joints, ready to build a physics::World. See lessons/SCENE_FORMAT.md.
+
+#include "rigidlab/physics/body.h"
+#include "rigidlab/physics/forces.h"
+#include "rigidlab/physics/world.h"
+
+#include <QString>
+
+#include <optional>
+#include <vector>
+
+namespace rigidlab::lessons {
+
+struct Scene {
+    QString title;       ///< one line, for menus and window titles
+    QString description; ///< what a teacher reads before running it
+    physics::WorldDef world;
+    /// In file order; a body's index here is its physics::BodyId in the built world.
+    /// BodyDef::name holds the scene's id ("ball"), unique and non-empty.
+    /// BodyDef::position is the body origin, the frame the shape's vertices are given in.
+    std::vector<physics::BodyDef> bodies;
+    /// Ends refer to bodies by index into `bodies`, or physics::kWorld.
+    std::vector<physics::SpringDef> springs;
+    std::vector<physics::PinJointDef> joints;
+
+    /// The index of the body with this id, or nullopt.
+    std::optional<physics::BodyId> bodyIndex(const QString& id) const;
+};
+
+/// A world holding the scene's bodies (ids = indices into scene.bodies), springs and joints,
+/// with the scene's settings.
+physics::World buildWorld(const Scene& scene);
+
+} // namespace rigidlab::lessons

@@ -1,0 +1,332 @@
+#include "rigidlab/lessons/scene_run.h"
+
+#include "rigidlab/lessons/scene_loader.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+#include <charconv>
+#include <cmath>
+#include <memory>
+#include <string>
+
+namespace rigidlab::lessons {
+
+namespace {
+
+/// A CSV file written through QSaveFile: it appears, complete, only on commit(); dropped
+/// without commit, it leaves nothing behind.
+class CsvFile {
+public:
+    bool open(const QString& path, const char* header, QString& error)
+    {
+        m_file = std::make_unique<QSaveFile>(path);
+        if (!m_file->open(QIODevice::WriteOnly)) {
+            error = QStringLiteral("cannot write %1: %2").arg(path, m_file->errorString());
+            return false;
+        }
+        m_buffer = header;
+        m_buffer += '\n';
+        return true;
+    }
+    bool isOpen() const { return m_file != nullptr; }
+
+    /// Numbers go out with 17 significant digits and never depend on the locale
+    /// (QCoreApplication sets the C library's locale from the environment, so printf might
+    /// write decimal commas).
+    void number(double value)
+    {
+        char text[32];
+        const auto end =
+            std::to_chars(text, text + sizeof text, value, std::chars_format::general, 17);
+        m_buffer.append(text, end.ptr);
+    }
+    void integer(long long value)
+    {
+        char text[24];
+        const auto end = std::to_chars(text, text + sizeof text, value);
+        m_buffer.append(text, end.ptr);
+    }
+    /// A text field, quoted as RFC 4180 asks when it holds a comma, a quote or a line break.
+    void text(const std::string& value)
+    {
+        if (value.find_first_of(",\"\r\n") == std::string::npos) {
+            m_buffer += value;
+            return;
+        }
+        m_buffer += '"';
+        for (char c : value) {
+            m_buffer += c;
+            if (c == '"') {
+                m_buffer += '"';
+            }
+        }
+        m_buffer += '"';
+    }
+    void comma() { m_buffer += ','; }
+    void endRow() { m_buffer += '\n'; }
+
+    /// Hands the buffer to the file once it is large.
+    bool flushIfLarge(QString& error)
+    {
+        return m_buffer.size() < (std::size_t{1} << 16) || flush(error);
+    }
+    /// Writes the rest and puts the file in place; true at once for a file never opened.
+    bool commit(QString& error)
+    {
+        if (!isOpen()) {
+            return true;
+        }
+        if (!flush(error)) {
+            return false;
+        }
+        if (!m_file->commit()) {
+            error = QStringLiteral("cannot write %1: %2")
+                        .arg(m_file->fileName(), m_file->errorString());
+            return false;
+        }
+        return true;
+    }
+
+private:
+    bool flush(QString& error)
+    {
+        const auto size = static_cast<qint64>(m_buffer.size());
+        if (m_file->write(m_buffer.data(), size) != size) {
+            error = QStringLiteral("cannot write %1: %2")
+                        .arg(m_file->fileName(), m_file->errorString());
+            return false;
+        }
+        m_buffer.clear();
+        return true;
+    }
+
+    std::unique_ptr<QSaveFile> m_file;
+    std::string m_buffer;
+};
+
+void writeTraceRows(CsvFile& csv, const physics::World& world)
+{
+    const auto& bodies = world.bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const physics::Body& body = bodies[i];
+        if (!body.isDynamic()) {
+            continue;
+        }
+        const physics::Vec2 origin = body.origin();
+        const physics::Vec2 velocity = world.originVelocity(static_cast<physics::BodyId>(i));
+        csv.integer(world.stepCount());
+        csv.comma();
+        csv.number(world.time());
+        csv.comma();
+        csv.text(body.name);
+        for (double v : {origin.x(), origin.y(), body.angle, velocity.x(), velocity.y(),
+                         body.angularVelocity}) {
+            csv.comma();
+            csv.number(v);
+        }
+        csv.endRow();
+    }
+}
+
+void writeDiagnosticsRow(CsvFile& csv, const physics::World& world)
+{
+    const physics::Diagnostics& d = world.diagnostics();
+    csv.integer(world.stepCount());
+    for (double v : {world.time(), d.kinetic, d.potential, d.total, d.momentum.x(), d.momentum.y(),
+                     d.angularMomentum}) {
+        csv.comma();
+        csv.number(v);
+    }
+    csv.comma();
+    csv.integer(d.contacts);
+    csv.endRow();
+}
+
+/// The first body whose state is not finite, or -1.
+int firstNonFiniteBody(const physics::World& world)
+{
+    const auto& bodies = world.bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const physics::Body& b = bodies[i];
+        if (!physics::isFinite(b.position) || !physics::isFinite(b.velocity) ||
+            !std::isfinite(b.angle) || !std::isfinite(b.angularVelocity)) {
+            return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+QString formatEnergy(double joules)
+{
+    return QString::number(joules, 'g', 6) + QStringLiteral(" J");
+}
+
+} // namespace
+
+long long stepsForTime(double time, double dt)
+{
+    const double exact = time / dt;
+    const double nearest = std::round(exact);
+    if (std::abs(exact - nearest) <= 1e-9 * std::max(1.0, nearest)) {
+        return static_cast<long long>(nearest);
+    }
+    return static_cast<long long>(std::ceil(exact));
+}
+
+QString RunReport::summary(const QString& sourceName) const
+{
+    const auto name = [](std::string_view s) {
+        return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+    };
+    QString drift;
+    const double change = energyEnd - energyStart;
+    if (std::abs(energyStart) > 1e-12) {
+        drift = QStringLiteral("a drift of %1 % of the starting energy")
+                    .arg(QString::number(100.0 * change / std::abs(energyStart), 'g', 4));
+    } else {
+        drift = QStringLiteral("a drift of %1").arg(formatEnergy(change));
+    }
+    // Each part in one multi-argument arg(), so that a '%' in a file name is never taken for
+    // a placeholder.
+    const QString run =
+        QStringLiteral("%1: %2 steps of %3 s (%4 s simulated) in %5 s of wall time, with the %6 "
+                       "integrator and the %7 solver.")
+            .arg(sourceName, QString::number(steps), QString::number(dt, 'g', 6),
+                 QString::number(simulatedTime, 'g', 8), QString::number(wallSeconds, 'f', 3),
+                 name(physics::integratorName(integrator)), name(physics::solverName(solver)));
+    const QString energy = QStringLiteral(" Total energy went from %1 to %2, %3; contacts took %4.")
+                               .arg(formatEnergy(energyStart), formatEnergy(energyEnd), drift,
+                                    formatEnergy(collisionLoss));
+    return run + energy;
+}
+
+RunReport runScene(const Scene& scene, const RunOptions& options, const QString& sourceName)
+{
+    RunReport report;
+    const auto fail = [&](RunStatus status, const QString& what) {
+        report.status = status;
+        report.error = sourceName + QStringLiteral(": ") + what;
+        return report;
+    };
+
+    // Settings: the scene's, overridden by the options.
+    physics::WorldDef def = scene.world;
+    def.dt = options.dt.value_or(def.dt);
+    def.integrator = options.integrator.value_or(def.integrator);
+    def.solver = options.solver.value_or(def.solver);
+    if (options.time && options.steps) {
+        return fail(RunStatus::BadOptions, QStringLiteral("give a time or a number of steps, "
+                                                          "not both"));
+    }
+    if (!(std::isfinite(def.dt) && def.dt >= kMinDt && def.dt <= kMaxDt)) {
+        return fail(RunStatus::BadOptions, QStringLiteral("the step must be from 1e-07 to 1 s"));
+    }
+    if (options.every < 1) {
+        return fail(RunStatus::BadOptions, QStringLiteral("rows must be written every 1 or more "
+                                                          "steps"));
+    }
+    long long steps = 0;
+    if (options.steps) {
+        steps = *options.steps;
+    } else {
+        const double time = options.time.value_or(kDefaultRunTime);
+        if (!(std::isfinite(time) && time >= 0)) {
+            return fail(RunStatus::BadOptions, QStringLiteral("the time must be a number >= 0"));
+        }
+        if (time / def.dt > static_cast<double>(kMaxRunSteps)) {
+            return fail(RunStatus::BadOptions,
+                        QStringLiteral("%1 s at a step of %2 s is more than %3 steps")
+                            .arg(QString::number(time), QString::number(def.dt))
+                            .arg(kMaxRunSteps));
+        }
+        steps = stepsForTime(time, def.dt);
+    }
+    if (steps < 0 || steps > kMaxRunSteps) {
+        return fail(RunStatus::BadOptions,
+                    QStringLiteral("the number of steps must be from 0 to %1").arg(kMaxRunSteps));
+    }
+    if (!options.tracePath.isEmpty() && !options.diagnosticsPath.isEmpty() &&
+        QFileInfo(options.tracePath).absoluteFilePath() ==
+            QFileInfo(options.diagnosticsPath).absoluteFilePath()) {
+        return fail(RunStatus::BadOptions,
+                    QStringLiteral("the trace and the diagnostics name the same file"));
+    }
+    report.dt = def.dt;
+    report.integrator = def.integrator;
+    report.solver = def.solver;
+
+    // Open the outputs first, so that a bad path fails before the run rather than after it.
+    QString error;
+    CsvFile trace;
+    CsvFile diagnostics;
+    if ((!options.tracePath.isEmpty() && !trace.open(options.tracePath, kTraceHeader, error)) ||
+        (!options.diagnosticsPath.isEmpty() &&
+         !diagnostics.open(options.diagnosticsPath, kDiagnosticsHeader, error))) {
+        return fail(RunStatus::OutputError, error);
+    }
+
+    Scene settings = scene;
+    settings.world = def;
+    physics::World world = buildWorld(settings);
+    world.updateDiagnostics();
+    report.energyStart = world.diagnostics().total;
+
+    QElapsedTimer clock;
+    clock.start();
+    for (long long step = 0; step <= steps; ++step) {
+        if (step > 0) {
+            world.step();
+        }
+        // Finite bodies can still give an infinite energy (a speed whose square overflows,
+        // two attracting bodies at one point), so both are checked.
+        const int bad = firstNonFiniteBody(world);
+        if (bad >= 0 || !std::isfinite(world.diagnostics().total)) {
+            const QString what = bad >= 0 ? QStringLiteral("body \"%1\"")
+                                                .arg(QString::fromStdString(world.body(bad).name))
+                                          : QStringLiteral("the total energy");
+            return fail(RunStatus::NonFinite,
+                        QStringLiteral("the simulation blew up at step %1 (t = %2 s): %3 is no "
+                                       "longer finite; nothing was written. Try a smaller --dt or "
+                                       "another --integrator.")
+                            .arg(step)
+                            .arg(world.time())
+                            .arg(what));
+        }
+        if (step % options.every == 0 || step == steps) {
+            if (trace.isOpen()) {
+                writeTraceRows(trace, world);
+            }
+            if (diagnostics.isOpen()) {
+                writeDiagnosticsRow(diagnostics, world);
+            }
+            if ((trace.isOpen() && !trace.flushIfLarge(error)) ||
+                (diagnostics.isOpen() && !diagnostics.flushIfLarge(error))) {
+                return fail(RunStatus::OutputError, error);
+            }
+        }
+    }
+    report.wallSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
+
+    if (!trace.commit(error)) {
+        return fail(RunStatus::OutputError, error);
+    }
+    if (!diagnostics.commit(error)) {
+        // The trace is in place already; take it away again, so that a failed run leaves
+        // no output at all.
+        if (trace.isOpen()) {
+            QFile::remove(options.tracePath);
+        }
+        return fail(RunStatus::OutputError, error);
+    }
+    report.status = RunStatus::Ok;
+    report.steps = steps;
+    report.simulatedTime = world.time();
+    report.energyEnd = world.diagnostics().total;
+    report.collisionLoss = world.diagnostics().collisionLoss;
+    return report;
+}
+
+} // namespace rigidlab::lessons

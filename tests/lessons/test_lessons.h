@@ -1,0 +1,79 @@
+#pragma once
+// Tests of the lessons library, one executable: the scene loader (test_scene_loader.cpp) and
+// running scenes, validation and the SAT report (test_scene_run.cpp). Shared helpers here.
+
+#include "rigidlab/lessons/scene_loader.h"
+
+#include <QByteArray>
+#include <QFile>
+#include <QObject>
+#include <QString>
+#include <QTest>
+
+#include <cmath>
+
+namespace rigidlab::test {
+
+inline const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
+
+/// A scene with the given top-level members after the version.
+inline QByteArray sceneWith(const char* members)
+{
+    return QByteArray(R"({"rigidlab": 1, )") + members + "}";
+}
+
+/// A scene with one body whose JSON object holds `fields` after its id.
+inline QByteArray oneBody(const char* fields)
+{
+    return sceneWith((QByteArray(R"("bodies": [{"id": "ball", )") + fields + "}]").constData());
+}
+
+inline bool isClose(double a, double b, double tol = 1e-12)
+{
+    return std::abs(a - b) <= tol;
+}
+
+inline QByteArray readAll(const QString& path)
+{
+    QFile file(path);
+    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+}
+
+inline void writeFile(const QString& path, const QByteArray& bytes)
+{
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    QCOMPARE(file.write(bytes), bytes.size());
+}
+
+} // namespace rigidlab::test
+
+class TestLessons : public QObject {
+    Q_OBJECT
+
+private slots:
+    void rejectsBadScene_data();
+    void rejectsBadScene();
+    void missingFile();
+    void fileTooLarge();
+    void tooManyBodies();
+    void defaults();
+    void everyField();
+    void nonConvexPolygonWarns();
+    void springRestLengthDefaultsToDistance();
+    void pinAnchorBDefaultsToCoincidentPoint();
+    void buildWorldPlacesBodyOrigin();
+    void shippedScenesLoad_data();
+    void shippedScenesLoad();
+    void validateRecognisesScenes();
+    void formatDocumentExampleLoads();
+    void runWritesHeadersAndRows();
+    void runIsDeterministic();
+    void runStopsOnNonFinite();
+    void runFailsOnUnwritableOutput();
+    void stepsForTime_data();
+    void stepsForTime();
+    void satReport();
+    void satReportRejects_data();
+    void satReportRejects();
+};

@@ -1,0 +1,455 @@
+// The scene loader: every check, its place and its message; defaults; building a world.
+
+#include "test_lessons.h"
+
+#include "rigidlab/lessons/document.h"
+#include "rigidlab/lessons/sat_report.h"
+#include "rigidlab/lessons/scene_run.h"
+
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+using namespace rigidlab;
+using namespace rigidlab::test;
+using physics::Vec2;
+
+void TestLessons::rejectsBadScene_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("message");
+
+    QTest::newRow("empty-file") << QByteArray("  \n") << "line 1, column 1: the file is empty";
+    // Qt's parser reports where it stopped, here just past the stray '}'.
+    QTest::newRow("broken-json")
+        << QByteArray("{\"rigidlab\": 1,\n  \"bodies\": [}")
+        << "line 2, column 15: a value is missing here (JSON allows no trailing comma)";
+    QTest::newRow("non-finite-number")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1e999})")
+        << "line 1, column 81: number 1e999 is not a finite double (out of range or malformed)";
+    QTest::newRow("top-level-array")
+        << QByteArray("[1, 2]") << "the top level must be an object {...}, got an array";
+    QTest::newRow("version-missing")
+        << QByteArray(R"({"bodies": []})")
+        << R"(rigidlab: missing: a scene file starts with "rigidlab": 1 (the format version))";
+    QTest::newRow("version-2") << QByteArray(R"({"rigidlab": 2, "bodies": []})")
+                               << "rigidlab: unsupported format version 2 (this RigidLab reads "
+                                  "version 1)";
+    QTest::newRow("unknown-key-top")
+        << sceneWith(R"("bodies": [], "bodys": [])")
+        << "bodys: unknown key (allowed here: rigidlab, title, description, world, bodies, "
+           "springs, joints)";
+    QTest::newRow("unknown-key-body")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "colour": "red")")
+        << "bodies[0].colour: unknown key (allowed here: id, type, shape, position, angle, "
+           "velocity, angularVelocity, density, mass, restitution, friction, collide)";
+    QTest::newRow("unknown-key-shape")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1, "width": 2})")
+        << "bodies[0].shape.width: unknown key (allowed here: type, radius)";
+    QTest::newRow("title-not-string")
+        << sceneWith(R"("title": 5, "bodies": [])") << "title: must be a string \"...\", got 5";
+    QTest::newRow("bodies-missing")
+        << sceneWith(R"("title": "t")") << "bodies: required, but missing (it may be empty: [])";
+    QTest::newRow("bodies-not-array")
+        << sceneWith(R"("bodies": {})") << "bodies: must be an array [...], got an object";
+    QTest::newRow("wrong-type-radius")
+        << oneBody(R"("shape": {"type": "circle", "radius": "big"})")
+        << R"(bodies[0].shape.radius: must be a positive number, got "big")";
+    QTest::newRow("negative-radius") << oneBody(R"("shape": {"type": "circle", "radius": -0.5})")
+                                     << "bodies[0].shape.radius: must be a positive number, got "
+                                        "-0.5";
+    QTest::newRow("zero-width") << oneBody(R"("shape": {"type": "box", "width": 0, "height": 1})")
+                                << "bodies[0].shape.width: must be a positive number, got 0";
+    QTest::newRow("shape-type-misspelt")
+        << oneBody(R"("shape": {"typ": "circle", "radius": 1})")
+        << "bodies[0].shape.typ: unknown key (allowed here: type, radius, width, height, "
+           "vertices)";
+    QTest::newRow("radius-missing") << oneBody(R"("shape": {"type": "circle"})")
+                                    << "bodies[0].shape.radius: required, but missing";
+    QTest::newRow("shape-missing")
+        << oneBody(R"("mass": 1)") << "bodies[0].shape: required, but missing";
+    QTest::newRow("shape-unknown-type")
+        << oneBody(R"("shape": {"type": "star"})")
+        << R"(bodies[0].shape.type: unknown shape type "star" (expected circle, box, polygon))";
+    QTest::newRow("negative-mass")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "mass": -2)")
+        << "bodies[0].mass: must be a positive number, got -2";
+    QTest::newRow("zero-density")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "density": 0)")
+        << "bodies[0].density: must be a positive number, got 0";
+    QTest::newRow("density-and-mass")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "density": 1, "mass": 2)")
+        << R"(bodies[0].mass: give "density" or "mass", not both)";
+    QTest::newRow("restitution-above-one")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "restitution": 1.5)")
+        << "bodies[0].restitution: must be a number from 0 to 1, got 1.5";
+    QTest::newRow("friction-negative")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "friction": -0.1)")
+        << "bodies[0].friction: must be a number >= 0, got -0.1";
+    QTest::newRow("collide-not-bool")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "collide": 1)")
+        << "bodies[0].collide: must be true or false, got 1";
+    QTest::newRow("position-three-numbers")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "position": [1, 2, 3])")
+        << "bodies[0].position: must be a pair of numbers [x, y], got an array of 3 elements";
+    QTest::newRow("velocity-not-number")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "velocity": [1, null])")
+        << "bodies[0].velocity[1]: must be a number, got null";
+    QTest::newRow("body-type-unknown")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "type": "ghost")")
+        << R"(bodies[0].type: unknown body type "ghost" (expected dynamic, static, kinematic))";
+    QTest::newRow("huge-shape")
+        << oneBody(R"("shape": {"type": "circle", "radius": 1e300})")
+        << "bodies[0].shape: too large or too small: its area works out as inf m^2";
+    QTest::newRow("two-vertices")
+        << oneBody(R"("shape": {"type": "polygon", "vertices": [[0, 0], [1, 0]]})")
+        << "bodies[0].shape.vertices: a polygon needs 3 to 64 vertices, got 2";
+    QTest::newRow("collinear-polygon")
+        << oneBody(R"("shape": {"type": "polygon", "vertices": [[0, 0], [1, 1], [2, 2]]})")
+        << "bodies[0].shape.vertices: the polygon has no area (its vertices are repeated or on "
+           "one line)";
+    QTest::newRow("repeated-vertices")
+        << oneBody(R"("shape": {"type": "polygon", "vertices": [[1, 1], [1, 1], [1, 1]]})")
+        << "bodies[0].shape.vertices: the polygon has no area (its vertices are repeated or on "
+           "one line)";
+    QTest::newRow("vertex-not-pair")
+        << oneBody(R"("shape": {"type": "polygon", "vertices": [[0, 0], [1, 0], 7]})")
+        << "bodies[0].shape.vertices[2]: must be a pair of numbers [x, y], got 7";
+    {
+        QByteArray many;
+        for (int i = 0; i < 65; ++i) {
+            const double a = 2 * 3.141592653589793 * i / 65;
+            many += (i ? "," : "") + QByteArray("[") + QByteArray::number(std::cos(a), 'g', 17) +
+                    "," + QByteArray::number(std::sin(a), 'g', 17) + "]";
+        }
+        QTest::newRow("too-many-vertices")
+            << oneBody(
+                   ("\"shape\": {\"type\": \"polygon\", \"vertices\": [" + many + "]}").constData())
+            << "bodies[0].shape.vertices: a polygon needs 3 to 64 vertices, got 65";
+    }
+    QTest::newRow("empty-id")
+        << sceneWith(R"("bodies": [{"id": "", "shape": {"type": "circle", "radius": 1}}])")
+        << "bodies[0].id: must not be empty";
+    QTest::newRow("id-missing") << sceneWith(
+                                       R"("bodies": [{"shape": {"type": "circle", "radius": 1}}])")
+                                << "bodies[0].id: required, but missing";
+    QTest::newRow("duplicate-id")
+        << sceneWith(R"("bodies": [{"id": "a", "shape": {"type": "circle", "radius": 1}},
+                                   {"id": "a", "shape": {"type": "circle", "radius": 1}}])")
+        << R"(bodies[1].id: duplicate id "a" (bodies[0] has it already))";
+    QTest::newRow("duplicate-id-with-percent")
+        << sceneWith(R"("bodies": [{"id": "%2", "shape": {"type": "circle", "radius": 1}},
+                                   {"id": "%2", "shape": {"type": "circle", "radius": 1}}])")
+        << R"(bodies[1].id: duplicate id "%2" (bodies[0] has it already))";
+    QTest::newRow("unknown-integrator")
+        << sceneWith(R"("world": {"integrator": "rk5"}, "bodies": [])")
+        << R"(world.integrator: unknown integrator "rk5" )"
+           "(expected euler, symplectic-euler, verlet, rk4)";
+    QTest::newRow("unknown-solver") << sceneWith(R"("world": {"solver": "magic"}, "bodies": [])")
+                                    << R"(world.solver: unknown solver "magic" (expected )"
+                                       "seed-impulse, sequential-impulse)";
+    QTest::newRow("dt-zero") << sceneWith(R"("world": {"dt": 0}, "bodies": [])")
+                             << "world.dt: must be a positive number, got 0";
+    QTest::newRow("dt-too-small") << sceneWith(R"("world": {"dt": 1e-9}, "bodies": [])")
+                                  << "world.dt: must be from 1e-07 to 1 s, got 1e-09";
+    QTest::newRow("dt-too-large") << sceneWith(R"("world": {"dt": 2}, "bodies": [])")
+                                  << "world.dt: must be from 1e-07 to 1 s, got 2";
+    QTest::newRow("iterations-zero") << sceneWith(R"("world": {"iterations": 0}, "bodies": [])")
+                                     << "world.iterations: must be a whole number from 1 to "
+                                        "1000, got 0";
+    QTest::newRow("iterations-fraction")
+        << sceneWith(R"("world": {"iterations": 2.5}, "bodies": [])")
+        << "world.iterations: must be a whole number from 1 to 1000, got 2.5";
+    QTest::newRow("gravity-not-pair") << sceneWith(R"("world": {"gravity": -9.81}, "bodies": [])")
+                                      << "world.gravity: must be a pair of numbers [x, y], got "
+                                         "-9.81";
+    QTest::newRow("unknown-key-world") << sceneWith(R"("world": {"gravty": [0, 0]}, "bodies": [])")
+                                       << "world.gravty: unknown key (allowed here: gravity, dt, "
+                                          "integrator, solver, iterations, restitution, "
+                                          "friction, gravitation, drag)";
+
+    const char* twoBodies = R"("bodies": [{"id": "ball", "shape": {"type": "circle", "radius": 1}},
+        {"id": "wall", "type": "static", "shape": {"type": "box", "width": 1, "height": 1}}], )";
+    QTest::newRow("unknown-spring-body")
+        << sceneWith(
+               (QByteArray(twoBodies) + R"("springs": [{"a": "ball", "b": "bll"}])").constData())
+        << R"(springs[0].b: no body with id "bll")";
+    QTest::newRow("spring-body-not-string")
+        << sceneWith((QByteArray(twoBodies) + R"("springs": [{"a": 3}])").constData())
+        << "springs[0].a: must be a body id (a string) or null, got 3";
+    QTest::newRow("spring-both-world")
+        << sceneWith((QByteArray(twoBodies) + R"("springs": [{"a": null, "b": null}])").constData())
+        << "springs[0]: both ends are fixed in the world (a and b are null): a spring needs a "
+           "body at one end";
+    QTest::newRow("spring-same-body")
+        << sceneWith(
+               (QByteArray(twoBodies) + R"("springs": [{"a": "ball", "b": "ball"}])").constData())
+        << R"(springs[0].b: the same body as "a": a spring joins two bodies)";
+    QTest::newRow("stiffness-negative")
+        << sceneWith((QByteArray(twoBodies) + R"("springs": [{"a": "ball", "stiffness": -1}])")
+                         .constData())
+        << "springs[0].stiffness: must be a number >= 0, got -1";
+    QTest::newRow("damping-negative")
+        << sceneWith(
+               (QByteArray(twoBodies) + R"("springs": [{"a": "ball", "damping": -1}])").constData())
+        << "springs[0].damping: must be a number >= 0, got -1";
+    QTest::newRow("joint-a-null")
+        << sceneWith(
+               (QByteArray(twoBodies) + R"("joints": [{"type": "pin", "a": null}])").constData())
+        << "joints[0].a: must be a body id, not null";
+    QTest::newRow("joint-a-missing")
+        << sceneWith(
+               (QByteArray(twoBodies) + R"("joints": [{"type": "pin", "b": "ball"}])").constData())
+        << "joints[0].a: required, but missing (a body id)";
+    QTest::newRow("joint-unknown-type")
+        << sceneWith((QByteArray(twoBodies) + R"("joints": [{"type": "hinge", "a": "ball"}])")
+                         .constData())
+        << R"(joints[0].type: unknown joint type "hinge" (expected pin))";
+    QTest::newRow("joint-unknown-body")
+        << sceneWith(
+               (QByteArray(twoBodies) + R"("joints": [{"type": "pin", "a": "bal"}])").constData())
+        << R"(joints[0].a: no body with id "bal")";
+}
+
+void TestLessons::rejectsBadScene()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, message);
+    const lessons::SceneLoadResult result = lessons::loadSceneJson(json, QStringLiteral("x.json"));
+    QVERIFY(!result.ok);
+    QCOMPARE(result.error, QStringLiteral("x.json: ") + message);
+    QVERIFY(!result.error.contains(u'\n'));
+}
+
+void TestLessons::missingFile()
+{
+    const lessons::SceneLoadResult result =
+        lessons::loadSceneFile(QStringLiteral("/nonexistent/dir/x.json"));
+    QVERIFY(!result.ok);
+    QCOMPARE(result.error,
+             QStringLiteral("/nonexistent/dir/x.json: cannot read: No such file or directory"));
+}
+
+void TestLessons::fileTooLarge()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("big.json"));
+    writeFile(path, sceneWith(R"("bodies": [])") + QByteArray(9 * 1024 * 1024, ' '));
+    const lessons::SceneLoadResult result = lessons::loadSceneFile(path);
+    QVERIFY(!result.ok);
+    QCOMPARE(result.error, path + QStringLiteral(": too large: more than 8388608 bytes (the "
+                                                 "limit is 8 MiB)"));
+}
+
+void TestLessons::tooManyBodies()
+{
+    QByteArray bodies;
+    for (int i = 0; i <= lessons::kMaxBodies; ++i) {
+        bodies += (i ? "," : "") + QByteArray(R"({"id": "b)") + QByteArray::number(i) +
+                  R"(", "shape": {"type": "circle", "radius": 1}})";
+    }
+    const lessons::SceneLoadResult result = lessons::loadSceneJson(
+        sceneWith(("\"bodies\": [" + bodies + "]").constData()), QStringLiteral("x.json"));
+    QVERIFY(!result.ok);
+    QCOMPARE(result.error, QStringLiteral("x.json: bodies: 10001 bodies, more than the limit of "
+                                          "10000"));
+}
+
+void TestLessons::defaults()
+{
+    const lessons::SceneLoadResult result =
+        lessons::loadSceneJson(oneBody(R"("shape": {"type": "circle", "radius": 0.5})"),
+                               QStringLiteral("dir/my_scene.json"));
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QVERIFY(result.warnings.isEmpty());
+    const lessons::Scene& scene = result.scene;
+    QCOMPARE(scene.title, QStringLiteral("my_scene"));
+    QCOMPARE(scene.description, QString());
+    const physics::WorldDef world;
+    QCOMPARE(scene.world.gravity, world.gravity);
+    QCOMPARE(scene.world.dt, world.dt);
+    QCOMPARE(scene.world.integrator, world.integrator);
+    QCOMPARE(scene.world.solver, world.solver);
+    QCOMPARE(scene.world.iterations, world.iterations);
+    QCOMPARE(scene.world.restitution, world.restitution);
+    QCOMPARE(scene.world.friction, world.friction);
+    QCOMPARE(scene.world.gravitation, world.gravitation);
+    QCOMPARE(scene.world.drag, world.drag);
+    QCOMPARE(scene.bodies.size(), size_t{1});
+    const physics::BodyDef body;
+    const physics::BodyDef& got = scene.bodies[0];
+    QCOMPARE(got.name, std::string("ball"));
+    QCOMPARE(got.type, body.type);
+    QCOMPARE(got.shape.type, physics::ShapeType::Circle);
+    QCOMPARE(got.shape.circle.radius, 0.5);
+    QCOMPARE(got.position, body.position);
+    QCOMPARE(got.angle, body.angle);
+    QCOMPARE(got.velocity, body.velocity);
+    QCOMPARE(got.angularVelocity, body.angularVelocity);
+    QCOMPARE(got.density, body.density);
+    QCOMPARE(got.mass, body.mass);
+    QCOMPARE(got.restitution, body.restitution);
+    QCOMPARE(got.friction, body.friction);
+    QCOMPARE(got.collide, body.collide);
+    QVERIFY(scene.springs.empty());
+    QVERIFY(scene.joints.empty());
+}
+
+void TestLessons::everyField()
+{
+    const QByteArray json = R"({"rigidlab": 1, "title": "T", "description": "D",
+      "world": {"gravity": [0.5, -3], "dt": 0.002, "integrator": "rk4",
+                "solver": "seed-impulse", "iterations": 7, "restitution": 0.25,
+                "friction": 0.75, "gravitation": 2, "drag": 0.125},
+      "bodies": [
+        {"id": "k", "type": "kinematic", "shape": {"type": "box", "width": 2, "height": 0.5},
+         "position": [1, 2], "angle": 0.5, "velocity": [3, 4], "angularVelocity": -1,
+         "mass": 3, "restitution": 0.9, "friction": 0.1, "collide": false},
+        {"id": "p", "shape": {"type": "polygon", "vertices": [[0, 0], [1, 0], [0, 1]]},
+         "density": 2}],
+      "springs": [{"a": "k", "anchorA": [0.5, 0], "b": "p", "anchorB": [0, 0.5],
+                   "stiffness": 100, "damping": 2, "restLength": 1.5}],
+      "joints": [{"type": "pin", "a": "p", "anchorA": [0, 0], "b": null, "anchorB": [0, 0]}]})";
+    const lessons::SceneLoadResult result = lessons::loadSceneJson(json, QStringLiteral("x.json"));
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QVERIFY(result.warnings.isEmpty());
+    const lessons::Scene& s = result.scene;
+    QCOMPARE(s.title, QStringLiteral("T"));
+    QCOMPARE(s.description, QStringLiteral("D"));
+    QCOMPARE(s.world.gravity, Vec2(0.5, -3));
+    QCOMPARE(s.world.dt, 0.002);
+    QCOMPARE(s.world.integrator, physics::IntegratorKind::RK4);
+    QCOMPARE(s.world.solver, physics::SolverKind::SeedImpulse);
+    QCOMPARE(s.world.iterations, 7);
+    QCOMPARE(s.world.restitution, 0.25);
+    QCOMPARE(s.world.friction, 0.75);
+    QCOMPARE(s.world.gravitation, 2.0);
+    QCOMPARE(s.world.drag, 0.125);
+    const physics::BodyDef& k = s.bodies[0];
+    QCOMPARE(k.type, physics::BodyType::Kinematic);
+    QCOMPARE(k.shape.type, physics::ShapeType::Polygon);
+    QCOMPARE(k.shape.polygon.vertices.size(), size_t{4});
+    QCOMPARE(k.position, Vec2(1, 2));
+    QCOMPARE(k.angle, 0.5);
+    QCOMPARE(k.velocity, Vec2(3, 4));
+    QCOMPARE(k.angularVelocity, -1.0);
+    QCOMPARE(k.mass, 3.0);
+    QCOMPARE(k.restitution, 0.9);
+    QCOMPARE(k.friction, 0.1);
+    QCOMPARE(k.collide, false);
+    QCOMPARE(s.bodies[1].density, 2.0);
+    QCOMPARE(s.bodies[1].mass, 0.0);
+    QCOMPARE(s.springs.size(), size_t{1});
+    QCOMPARE(s.springs[0].a, 0);
+    QCOMPARE(s.springs[0].b, 1);
+    QCOMPARE(s.springs[0].anchorA, Vec2(0.5, 0));
+    QCOMPARE(s.springs[0].anchorB, Vec2(0, 0.5));
+    QCOMPARE(s.springs[0].stiffness, 100.0);
+    QCOMPARE(s.springs[0].damping, 2.0);
+    QCOMPARE(s.springs[0].restLength, 1.5);
+    QCOMPARE(s.joints.size(), size_t{1});
+    QCOMPARE(s.joints[0].a, 1);
+    QCOMPARE(s.joints[0].b, physics::kWorld);
+    QCOMPARE(s.bodyIndex(QStringLiteral("p")), std::optional<physics::BodyId>(1));
+    QCOMPARE(s.bodyIndex(QStringLiteral("q")), std::optional<physics::BodyId>());
+}
+
+void TestLessons::nonConvexPolygonWarns()
+{
+    // An L shape: replaced by its hull, with a warning that names the place.
+    const lessons::SceneLoadResult result =
+        lessons::loadSceneJson(oneBody(R"("shape": {"type": "polygon",
+                    "vertices": [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]})"),
+                               QStringLiteral("x.json"));
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QCOMPARE(result.warnings.size(), 1);
+    QVERIFY2(result.warnings[0].startsWith(QStringLiteral("x.json: bodies[0].shape.vertices: ")),
+             qPrintable(result.warnings[0]));
+    QVERIFY(result.warnings[0].contains(QStringLiteral("convex hull")));
+    QCOMPARE(result.scene.bodies[0].shape.polygon.vertices.size(), size_t{5});
+}
+
+void TestLessons::springRestLengthDefaultsToDistance()
+{
+    // Body origin at (3, 0) turned by 90 degrees: its local anchor (1, 0) is at (3, 1).
+    const lessons::SceneLoadResult result = lessons::loadSceneJson(
+        sceneWith(R"("bodies": [{"id": "b", "shape": {"type": "circle", "radius": 0.1},
+                                  "position": [3, 0], "angle": 1.5707963267948966}],
+                     "springs": [{"a": null, "anchorA": [0, 5], "b": "b", "anchorB": [1, 0],
+                                  "stiffness": 10}])"),
+        QStringLiteral("x.json"));
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QVERIFY(isClose(result.scene.springs[0].restLength, 5.0));
+    QCOMPARE(result.scene.springs[0].a, physics::kWorld);
+    QCOMPARE(result.scene.springs[0].anchorA, Vec2(0, 5));
+}
+
+void TestLessons::pinAnchorBDefaultsToCoincidentPoint()
+{
+    const lessons::SceneLoadResult result = lessons::loadSceneJson(sceneWith(R"("bodies": [
+                        {"id": "a", "shape": {"type": "circle", "radius": 0.1}, "position": [1, 0]},
+                        {"id": "b", "shape": {"type": "circle", "radius": 0.1}, "position": [0, 2],
+                         "angle": 1.5707963267948966}],
+                     "joints": [{"type": "pin", "a": "a", "anchorA": [0, 1]},
+                                {"type": "pin", "a": "a", "anchorA": [0, 1], "b": "b"},
+                                {"type": "pin", "a": "a", "anchorB": [5, 5]}])"),
+                                                                   QStringLiteral("x.json"));
+    QVERIFY2(result.ok, qPrintable(result.error));
+    const auto& joints = result.scene.joints;
+    QCOMPARE(joints.size(), size_t{3});
+    // To the world: the world point where a's anchor is, (1, 1).
+    QVERIFY(isClose(joints[0].anchorB.x(), 1) && isClose(joints[0].anchorB.y(), 1));
+    // To b: (1, 1) in b's frame (origin (0, 2), turned 90 degrees) is (-1, -1).
+    QVERIFY(isClose(joints[1].anchorB.x(), -1) && isClose(joints[1].anchorB.y(), -1));
+    // Anchors given apart: loaded, with a warning.
+    QCOMPARE(result.warnings.size(), 1);
+    QVERIFY2(result.warnings[0].startsWith(QStringLiteral("x.json: joints[2]: the anchors are ")),
+             qPrintable(result.warnings[0]));
+}
+
+void TestLessons::buildWorldPlacesBodyOrigin()
+{
+    // A triangle whose centroid is not its origin: the world must keep the origin where the
+    // file puts it.
+    const lessons::SceneLoadResult result =
+        lessons::loadSceneJson(sceneWith(R"("world": {"gravity": [0, 0]},
+                     "bodies": [{"id": "t", "shape": {"type": "polygon",
+                                 "vertices": [[0, 0], [3, 0], [0, 3]]},
+                                 "position": [1, 2], "angle": 0.3},
+                                {"id": "g", "type": "static",
+                                 "shape": {"type": "box", "width": 1, "height": 1}}],
+                     "springs": [{"a": "t", "b": null, "anchorB": [0, 10], "stiffness": 1}])"),
+                               QStringLiteral("x.json"));
+    QVERIFY2(result.ok, qPrintable(result.error));
+    const physics::World world = lessons::buildWorld(result.scene);
+    QCOMPARE(world.bodies().size(), size_t{2});
+    QCOMPARE(world.springs().size(), size_t{1});
+    QCOMPARE(world.bodies()[0].name, std::string("t"));
+    const Vec2 origin = world.bodies()[0].origin();
+    QVERIFY2(isClose(origin.x(), 1, 1e-12) && isClose(origin.y(), 2, 1e-12),
+             qPrintable(QStringLiteral("origin (%1, %2)").arg(origin.x()).arg(origin.y())));
+    QVERIFY(isClose(world.bodies()[0].angle, 0.3));
+    QCOMPARE(world.bodies()[1].type, physics::BodyType::Static);
+}
+
+void TestLessons::formatDocumentExampleLoads()
+{
+    // The complete example of SCENE_FORMAT.md is the first JSON block after its heading.
+    const QByteArray doc = readAll(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/SCENE_FORMAT.md"));
+    const qsizetype heading = doc.indexOf("## A complete example");
+    QVERIFY(heading >= 0);
+    const qsizetype start = doc.indexOf("```json\n", heading);
+    QVERIFY(start >= 0);
+    const qsizetype end = doc.indexOf("```", start + 8);
+    QVERIFY(end > start);
+    const lessons::SceneLoadResult result =
+        lessons::loadSceneJson(doc.mid(start + 8, end - start - 8), QStringLiteral("example"));
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QVERIFY2(result.warnings.isEmpty(), qPrintable(result.warnings.join(u'\n')));
+    QCOMPARE(result.scene.bodies.size(), size_t{4});
+    QCOMPARE(result.scene.springs.size(), size_t{1});
+    QCOMPARE(result.scene.joints.size(), size_t{1});
+}

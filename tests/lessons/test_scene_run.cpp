@@ -1,0 +1,278 @@
+// The shipped scenes, validation, the headless runner and the SAT report.
+
+#include "test_lessons.h"
+
+#include "rigidlab/lessons/document.h"
+#include "rigidlab/lessons/sat_report.h"
+#include "rigidlab/lessons/scene_run.h"
+
+#include <QDir>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QTemporaryDir>
+
+using namespace rigidlab;
+using namespace rigidlab::test;
+using physics::Vec2;
+
+void TestLessons::shippedScenesLoad_data()
+{
+    QTest::addColumn<QString>("path");
+    const QStringList required = {
+        QStringLiteral("ball_drop"),       QStringLiteral("two_ball_collision"),
+        QStringLiteral("offcentre_rod"),   QStringLiteral("newtons_cradle"),
+        QStringLiteral("billiards_break"), QStringLiteral("box_stack"),
+        QStringLiteral("pendulum"),        QStringLiteral("spring_oscillator"),
+        QStringLiteral("two_body_orbit"),  QStringLiteral("welcome"),
+    };
+    const QStringList files =
+        QDir(kScenesDir).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    for (const QString& name : required) {
+        QVERIFY2(files.contains(name + QStringLiteral(".json")), qPrintable(name));
+    }
+    for (const QString& file : files) {
+        QTest::newRow(qPrintable(file)) << QDir(kScenesDir).filePath(file);
+    }
+}
+
+void TestLessons::shippedScenesLoad()
+{
+    QFETCH(QString, path);
+    const lessons::SceneLoadResult result = lessons::loadSceneFile(path);
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QVERIFY2(result.warnings.isEmpty(), qPrintable(result.warnings.join(u'\n')));
+    QVERIFY(!result.scene.title.isEmpty());
+    QVERIFY2(result.scene.description.size() >= 80, "a description a teacher can use");
+    QVERIFY(!result.scene.bodies.empty());
+    // A short run stays finite.
+    lessons::RunOptions options;
+    options.time = 0.2;
+    const lessons::RunReport report = lessons::runScene(result.scene, options, path);
+    QVERIFY2(report.status == lessons::RunStatus::Ok, qPrintable(report.error));
+}
+
+void TestLessons::validateRecognisesScenes()
+{
+    const lessons::DocumentCheck check =
+        lessons::checkDocumentFile(QDir(kScenesDir).filePath(QStringLiteral("pendulum.json")));
+    QVERIFY2(check.ok, qPrintable(check.error));
+    QCOMPARE(check.kind, QStringLiteral("scene"));
+    QCOMPARE(check.summary, QStringLiteral("1 body, 0 springs, 1 joint"));
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("other.json"));
+    writeFile(path, R"({"name": "not ours"})");
+    const lessons::DocumentCheck other = lessons::checkDocumentFile(path);
+    QVERIFY(!other.ok);
+    QCOMPARE(other.error, path + QStringLiteral(": not a RigidLab document: no format version key "
+                                                "(\"rigidlab\" for a scene)"));
+}
+
+void TestLessons::runWritesHeadersAndRows()
+{
+    QTemporaryDir dir;
+    const lessons::SceneLoadResult loaded = lessons::loadSceneJson(
+        sceneWith(R"("bodies": [{"id": "a,\"b\"", "shape": {"type": "circle", "radius": 0.1}},
+                                {"id": "floor", "type": "static", "position": [0, -5],
+                                 "shape": {"type": "box", "width": 10, "height": 1}},
+                                {"id": "c", "shape": {"type": "circle", "radius": 0.1},
+                                 "position": [1, 0]}])"),
+        QStringLiteral("x.json"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    lessons::RunOptions options;
+    options.steps = 10;
+    options.every = 4;
+    options.tracePath = dir.filePath(QStringLiteral("t.csv"));
+    options.diagnosticsPath = dir.filePath(QStringLiteral("d.csv"));
+    const lessons::RunReport report =
+        lessons::runScene(loaded.scene, options, QStringLiteral("x.json"));
+    QVERIFY2(report.status == lessons::RunStatus::Ok, qPrintable(report.error));
+    QCOMPARE(report.steps, 10);
+
+    const QList<QByteArray> trace = readAll(options.tracePath).split('\n');
+    QCOMPARE(trace.front(), QByteArray(lessons::kTraceHeader));
+    QCOMPARE(trace.back(), QByteArray()); // ends with a line break
+    // Steps 0, 4, 8 and the last, 10; the two dynamic bodies each; the static one never.
+    QCOMPARE(trace.size(), 1 + 4 * 2 + 1);
+    QVERIFY(trace[1].startsWith("0,0,\"a,\"\"b\"\"\",0,0,0,"));
+    QVERIFY(trace[2].startsWith("0,0,c,1,0,0,"));
+    QVERIFY(trace[3].startsWith("4,"));
+    QVERIFY(trace[7].startsWith("10,"));
+    QCOMPARE(trace[7].count(','), 8 + 1); // the quoted id holds a comma
+    QCOMPARE(trace[8].count(','), 8);
+
+    const QList<QByteArray> diagnostics = readAll(options.diagnosticsPath).split('\n');
+    QCOMPARE(diagnostics.front(), QByteArray(lessons::kDiagnosticsHeader));
+    QCOMPARE(diagnostics.size(), 1 + 4 + 1);
+    QVERIFY(diagnostics[1].startsWith("0,0,0,"));
+    QVERIFY(diagnostics[4].startsWith("10,"));
+    QCOMPARE(diagnostics[4].count(','), 8);
+}
+
+void TestLessons::runIsDeterministic()
+{
+    QTemporaryDir dir;
+    const lessons::SceneLoadResult loaded =
+        lessons::loadSceneFile(QDir(kScenesDir).filePath(QStringLiteral("box_stack.json")));
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    QByteArray traces[2];
+    for (int i = 0; i < 2; ++i) {
+        lessons::RunOptions options;
+        options.time = 0.5;
+        options.tracePath = dir.filePath(QStringLiteral("t%1.csv").arg(i));
+        const lessons::RunReport report =
+            lessons::runScene(loaded.scene, options, QStringLiteral("box_stack.json"));
+        QVERIFY2(report.status == lessons::RunStatus::Ok, qPrintable(report.error));
+        traces[i] = readAll(options.tracePath);
+    }
+    QVERIFY(traces[0].size() > 1000);
+    QVERIFY(traces[0] == traces[1]);
+}
+
+void TestLessons::runStopsOnNonFinite()
+{
+    // A stiff spring under explicit Euler with a huge step: |amplification| = sqrt(1 + (w h)^2)
+    // with w h = 1000, so the state overflows within about a hundred steps.
+    QTemporaryDir dir;
+    const lessons::SceneLoadResult loaded = lessons::loadSceneJson(
+        sceneWith(R"("world": {"integrator": "euler", "dt": 0.1, "gravity": [0, 0]},
+                     "bodies": [{"id": "m", "shape": {"type": "circle", "radius": 0.1},
+                                 "mass": 0.001, "position": [1, 0]}],
+                     "springs": [{"a": "m", "b": null, "stiffness": 100000, "restLength": 0.5}])"),
+        QStringLiteral("x.json"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    lessons::RunOptions options;
+    options.steps = 5000;
+    options.tracePath = dir.filePath(QStringLiteral("t.csv"));
+    options.diagnosticsPath = dir.filePath(QStringLiteral("d.csv"));
+    const lessons::RunReport report =
+        lessons::runScene(loaded.scene, options, QStringLiteral("x.json"));
+    QCOMPARE(report.status, lessons::RunStatus::NonFinite);
+    QVERIFY2(report.error.startsWith(QStringLiteral("x.json: the simulation blew up at step ")),
+             qPrintable(report.error));
+    QVERIFY(report.error.contains(QStringLiteral("is no longer finite; nothing was written")));
+    QVERIFY(!QFile::exists(options.tracePath));
+    QVERIFY(!QFile::exists(options.diagnosticsPath));
+    QVERIFY(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+}
+
+void TestLessons::runFailsOnUnwritableOutput()
+{
+    QTemporaryDir dir;
+    const lessons::SceneLoadResult loaded = lessons::loadSceneJson(
+        oneBody(R"("shape": {"type": "circle", "radius": 0.1})"), QStringLiteral("x.json"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    lessons::RunOptions options;
+    options.steps = 10;
+    options.diagnosticsPath = dir.filePath(QStringLiteral("d.csv"));
+    options.tracePath = QStringLiteral("/nonexistent/dir/x.csv");
+    const lessons::RunReport report =
+        lessons::runScene(loaded.scene, options, QStringLiteral("x.json"));
+    QCOMPARE(report.status, lessons::RunStatus::OutputError);
+    QVERIFY2(report.error.startsWith(QStringLiteral("x.json: cannot write /nonexistent/dir/x.csv")),
+             qPrintable(report.error));
+    QVERIFY(!QFile::exists(options.diagnosticsPath));
+    QVERIFY(!QFile::exists(options.tracePath));
+
+    options.tracePath = options.diagnosticsPath;
+    const lessons::RunReport same =
+        lessons::runScene(loaded.scene, options, QStringLiteral("x.json"));
+    QCOMPARE(same.status, lessons::RunStatus::BadOptions);
+}
+
+void TestLessons::stepsForTime_data()
+{
+    QTest::addColumn<double>("time");
+    QTest::addColumn<double>("dt");
+    QTest::addColumn<long long>("steps");
+    QTest::newRow("5s-at-1ms") << 5.0 << 0.001 << 5000LL;
+    QTest::newRow("0.3s-at-0.1s") << 0.3 << 0.1 << 3LL;
+    QTest::newRow("zero") << 0.0 << 0.001 << 0LL;
+    QTest::newRow("rounds-up") << 0.25 << 0.1 << 3LL;
+    QTest::newRow("1s-at-1/60") << 1.0 << 1.0 / 60 << 60LL;
+}
+
+void TestLessons::stepsForTime()
+{
+    QFETCH(double, time);
+    QFETCH(double, dt);
+    QFETCH(long long, steps);
+    QCOMPARE(lessons::stepsForTime(time, dt), steps);
+}
+
+void TestLessons::satReport()
+{
+    // Two unit squares, the second shifted by (0.75, 0.25): they overlap by 0.25 along x.
+    const lessons::SatReport overlapping = lessons::satReportJson(
+        R"({"a": {"vertices": [[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]},
+            "b": {"vertices": [[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]],
+                  "position": [0.75, 0.25], "angle": 0}})",
+        QStringLiteral("pair.json"));
+    QVERIFY2(overlapping.ok, qPrintable(overlapping.error));
+    const QJsonObject o = QJsonDocument::fromJson(overlapping.json).object();
+    for (const char* key :
+         {"intersects", "axes", "separatingAxis", "leastAxis", "normal", "depth", "contacts"}) {
+        QVERIFY2(o.contains(QLatin1StringView(key)), key);
+    }
+    QCOMPARE(o[u"intersects"].toBool(), true);
+    QVERIFY(o[u"separatingAxis"].isNull());
+    QCOMPARE(o[u"axes"].toArray().size(), 8);
+    QVERIFY(isClose(o[u"depth"].toDouble(), 0.25, 1e-12));
+    QVERIFY(isClose(o[u"normal"].toArray()[0].toDouble(), 1.0, 1e-12));
+    QVERIFY(!o[u"contacts"].toArray().isEmpty());
+    const QJsonObject axis = o[u"axes"].toArray()[0].toObject();
+    for (const char* key : {"owner", "edge", "axis", "a", "b", "overlap"}) {
+        QVERIFY2(axis.contains(QLatin1StringView(key)), key);
+    }
+
+    // An array of pairs gives an array; separated pairs give a separating axis and no normal.
+    const lessons::SatReport separated = lessons::satReportJson(
+        R"([{"a": {"vertices": [[0, 0], [1, 0], [0, 1]]},
+             "b": {"vertices": [[0, 0], [1, 0], [0, 1]], "position": [3, 0]}}])",
+        QStringLiteral("pairs.json"));
+    QVERIFY2(separated.ok, qPrintable(separated.error));
+    const QJsonArray list = QJsonDocument::fromJson(separated.json).array();
+    QCOMPARE(list.size(), 1);
+    const QJsonObject s = list[0].toObject();
+    QCOMPARE(s[u"intersects"].toBool(), false);
+    QVERIFY(s[u"separatingAxis"].isDouble());
+    QVERIFY(s[u"normal"].isNull());
+    QVERIFY(s[u"depth"].isNull());
+    QVERIFY(s[u"contacts"].toArray().isEmpty());
+    const int index = s[u"separatingAxis"].toInt();
+    QVERIFY(s[u"axes"].toArray()[index].toObject()[u"overlap"].toDouble() < 0);
+}
+
+void TestLessons::satReportRejects_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("message");
+    const char* square = R"({"vertices": [[0, 0], [1, 0], [1, 1], [0, 1]]})";
+    QTest::newRow("b-missing") << QByteArray(R"({"a": )") + square + "}"
+                               << "pair.json: b: required, but missing";
+    QTest::newRow("unknown-key") << QByteArray(R"({"a": )") + square + R"(, "b": )" + square +
+                                        R"(, "c": 1})"
+                                 << "pair.json: c: unknown key (allowed here: a, b)";
+    QTest::newRow("collinear-in-array")
+        << QByteArray(R"([{"a": )") + square + R"(, "b": {"vertices": [[0, 0], [1, 0], [2, 0]]}}])"
+        << "pair.json: [0].b.vertices: the polygon has no area (its vertices are repeated or on "
+           "one line)";
+    QTest::newRow("angle-not-number")
+        << QByteArray(R"({"a": )") + square + R"(, "b": {"vertices": [[0, 0], [1, 0], [0, 1]],
+                                                          "angle": "90deg"}})"
+        << R"(pair.json: b.angle: must be a number, got "90deg")";
+    QTest::newRow("not-object") << QByteArray("[3]")
+                                << "pair.json: [0]: must be an object {...}, got 3";
+}
+
+void TestLessons::satReportRejects()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, message);
+    const lessons::SatReport report = lessons::satReportJson(json, QStringLiteral("pair.json"));
+    QVERIFY(!report.ok);
+    QCOMPARE(report.error, message);
+}
+
+QTEST_GUILESS_MAIN(TestLessons)
