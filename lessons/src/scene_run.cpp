@@ -280,6 +280,14 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
         if (step > 0) {
             world.step();
         }
+        // The world stops itself on a non-finite state or runaway energy, with a diagnosis.
+        if (const auto& diverged = world.divergence()) {
+            return fail(RunStatus::NonFinite,
+                        QStringLiteral("the simulation blew up at step %1: %2; nothing was "
+                                       "written. Try a smaller --dt or another --integrator.")
+                            .arg(QString::number(diverged->step),
+                                 QString::fromStdString(diverged->message())));
+        }
         // Finite bodies can still give an infinite energy (a speed whose square overflows,
         // two attracting bodies at one point), so both are checked.
         const int bad = firstNonFiniteBody(world);

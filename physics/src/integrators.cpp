@@ -1,6 +1,10 @@
-// The four integrators over the whole state (q, v), forces evaluated again at every stage.
+// The seed's four integrators over the whole state (q, v), forces evaluated again at every
+// stage; the adaptive and implicit ones are in integrators_adaptive.cpp and
+// integrator_implicit.cpp.
 
 #include "rigidlab/physics/integrator.h"
+
+#include "integrators_extra.h"
 
 #include <array>
 
@@ -109,16 +113,18 @@ struct NamedIntegrator {
     std::string_view name;
     int order;
 };
-constexpr std::array<NamedIntegrator, 4> kIntegrators{{
+constexpr std::array<NamedIntegrator, 6> kIntegrators{{
     {IntegratorKind::Euler, "euler", 1},
     {IntegratorKind::SymplecticEuler, "symplectic-euler", 1},
     {IntegratorKind::Verlet, "verlet", 2},
     {IntegratorKind::RK4, "rk4", 4},
+    {IntegratorKind::DormandPrince, "dopri5", 5},
+    {IntegratorKind::ImplicitMidpoint, "implicit-midpoint", 2},
 }};
 
 } // namespace
 
-std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind)
+std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const Tolerances& tolerances)
 {
     switch (kind) {
     case IntegratorKind::Euler:
@@ -129,6 +135,10 @@ std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind)
         return std::make_unique<VelocityVerlet>();
     case IntegratorKind::RK4:
         return std::make_unique<RungeKutta4>();
+    case IntegratorKind::DormandPrince:
+        return makeDormandPrince(tolerances);
+    case IntegratorKind::ImplicitMidpoint:
+        return makeImplicitMidpoint();
     }
     return nullptr;
 }

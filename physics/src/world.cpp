@@ -5,6 +5,8 @@
 //   sat.cpp                 SAT for polygons, circles, contact manifolds
 //   contact_solver.cpp      the seed's impulse, or sequential impulses; position correction
 //   diagnostics.cpp         energies and momenta
+//   continuous.cpp          speculative contacts over a fast body's motion
+//   divergence.cpp          a non-finite state or runaway energy stops the world
 
 #include "rigidlab/physics/world.h"
 
@@ -29,7 +31,7 @@ struct World::Scratch {
 };
 
 World::World(const WorldDef& def)
-    : m_def(def), m_integrator(makeIntegrator(def.integrator)),
+    : m_def(def), m_integrator(makeIntegrator(def.integrator, def.tolerances)),
       m_scratch(std::make_unique<Scratch>())
 {
 }
@@ -39,10 +41,12 @@ World::~World() = default;
 World::World(const World& o)
     : m_def(o.m_def), m_contactSettings(o.m_contactSettings), m_bodies(o.m_bodies),
       m_springs(o.m_springs), m_joints(o.m_joints), m_contacts(o.m_contacts),
-      m_integrator(makeIntegrator(o.m_def.integrator)), m_moving(o.m_moving), m_slot(o.m_slot),
-      m_jointPairs(o.m_jointPairs), m_scratch(std::make_unique<Scratch>()), m_time(o.m_time),
-      m_steps(o.m_steps), m_evaluations(o.m_evaluations), m_collisionLoss(o.m_collisionLoss),
-      m_diagnostics(o.m_diagnostics)
+      m_integrator(makeIntegrator(o.m_def.integrator, o.m_def.tolerances)), m_moving(o.m_moving),
+      m_slot(o.m_slot), m_jointPairs(o.m_jointPairs), m_scratch(std::make_unique<Scratch>()),
+      m_time(o.m_time), m_steps(o.m_steps), m_evaluations(o.m_evaluations),
+      m_collisionLoss(o.m_collisionLoss), m_diagnostics(o.m_diagnostics),
+      m_divergenceSettings(o.m_divergenceSettings), m_divergence(o.m_divergence),
+      m_energyStart(o.m_energyStart), m_energyScale(o.m_energyScale)
 {
 }
 
@@ -111,7 +115,13 @@ void World::setDt(double dt)
 void World::setIntegrator(IntegratorKind kind)
 {
     m_def.integrator = kind;
-    m_integrator = makeIntegrator(kind);
+    m_integrator = makeIntegrator(kind, m_def.tolerances);
+}
+
+void World::setTolerances(const Tolerances& tolerances)
+{
+    m_def.tolerances = tolerances;
+    m_integrator->setTolerances(tolerances);
 }
 
 void World::setRestitution(double e)
@@ -151,6 +161,10 @@ Vec2 World::originVelocity(BodyId id) const
 void World::step()
 {
     assert(m_integrator);
+    if (m_divergence)
+        return; // stopped with a diagnosis; see divergence()
+    if (!m_energyStart)
+        rememberStartEnergy();
     // Velocities at the start of the step, to time bounces within it.
     Scratch& s = *m_scratch;
     s.velocityAtStart.resize(m_bodies.size());
@@ -174,6 +188,8 @@ void World::step()
     m_time += m_def.dt;
     ++m_steps;
     updateDiagnostics();
+    // A non-finite state or runaway energy stops the world with a diagnosis.
+    checkDivergence();
 }
 
 template <typename Fn> void World::withState(Fn&& fn)
@@ -226,6 +242,8 @@ void World::findContacts()
     m_contacts.clear();
     const double margin = m_contactSettings.margin;
     s.broadPhase.findPairs(m_bodies, margin, m_jointPairs, s.pairs);
+    // Fast bodies: pairs and margins over their motion in this step (continuous collision).
+    addSweptPairs(s.pairs);
     size_t old = 0;
     for (const auto& [ia, ib] : s.pairs) {
         const Body& a = m_bodies[static_cast<size_t>(ia)];
@@ -233,7 +251,8 @@ void World::findContacts()
         Contact c;
         c.a = ia;
         c.b = ib;
-        c.manifold = collideShapes(a.shape, a.transform(), b.shape, b.transform(), margin);
+        const double pairMargin = margin + sweptMargin(ia) + sweptMargin(ib);
+        c.manifold = collideShapes(a.shape, a.transform(), b.shape, b.transform(), pairMargin);
         if (c.manifold.pointCount == 0)
             continue;
         // Restitution: the larger of the two; friction: the geometric mean.

@@ -42,7 +42,7 @@ enum class RunStatus {
     Ok,
     BadOptions,  ///< the options do not fit together or with the scene
     OutputError, ///< an output file could not be written
-    NonFinite,   ///< the state became NaN or infinite: the run stopped
+    NonFinite,   ///< the world diverged (physics::Divergence): the run stopped
 };
 
 struct RunReport {

@@ -4,10 +4,12 @@
 #include "rigidlab/physics/body.h"
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/diagnostics.h"
+#include "rigidlab/physics/divergence.h"
 #include "rigidlab/physics/forces.h"
 #include "rigidlab/physics/integrator.h"
 
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -24,6 +26,10 @@ struct WorldDef {
     double friction = 0.3;    ///< default friction coefficient of bodies
     double gravitation = 0.0; ///< Newton's constant G between bodies [m^3/(kg s^2)], 0 = off
     double drag = 0.0;        ///< linear drag rate: F = -drag m v, M = -drag I w [1/s]
+    Tolerances tolerances;    ///< error control of the adaptive integrator (dopri5)
+    /// Continuous collision: a body that moves more than its own size in a step gets
+    /// speculative contacts over the whole of its motion (continuous.cpp).
+    bool continuous = true;
 };
 
 /// Tuning of contacts that a scene does not set (Box2D's choices, in metres).
@@ -65,11 +71,21 @@ public:
     void setGravity(const Vec2& g) { m_def.gravity = g; }
     void setGravitation(double G) { m_def.gravitation = G; }
     void setDrag(double drag) { m_def.drag = drag; }
+    void setTolerances(const Tolerances& tolerances);
+    void setContinuous(bool on) { m_def.continuous = on; }
     /// Sets the default coefficient of restitution and gives it to every body.
     void setRestitution(double e);
     /// Sets the default friction coefficient and gives it to every body.
     void setFriction(double mu);
     ContactSettings& contactSettings() { return m_contactSettings; }
+    DivergenceSettings& divergenceSettings() { return m_divergenceSettings; }
+    /// The integrator in use (its error estimate, its substeps).
+    const Integrator& integrator() const { return *m_integrator; }
+
+    /// Set when a step diverged (divergence.cpp): step() then does nothing until reset.
+    const std::optional<Divergence>& divergence() const { return m_divergence; }
+    /// Forgets a divergence, so that stepping goes on (from a state the caller restored).
+    void clearDivergence() { m_divergence.reset(); }
 
     // State.
     const std::vector<Body>& bodies() const { return m_bodies; }
@@ -98,6 +114,12 @@ private:
     void findContacts();
     void integrate();
     void solveContacts();
+    /// Pairs for bodies that move more than their own size in a step (continuous.cpp), and
+    /// the speculative margin each body's motion asks for [m].
+    void addSweptPairs(std::vector<std::pair<int, int>>& pairs);
+    double sweptMargin(int body) const;
+    void rememberStartEnergy();
+    void checkDivergence();
     /// Gathers the moving bodies' state, lets `fn(dynamics, q, v)` change it, scatters it back.
     template <typename Fn> void withState(Fn&& fn);
 
@@ -117,6 +139,11 @@ private:
     long long m_evaluations = 0;
     double m_collisionLoss = 0;
     Diagnostics m_diagnostics;
+    DivergenceSettings m_divergenceSettings;
+    std::optional<Divergence> m_divergence;
+    std::optional<double> m_energyStart; ///< total energy before the first step [J]
+    double m_energyScale = 0;            ///< see DivergenceSettings::energyGrowth [J]
+    std::vector<double> m_sweep;         ///< per body: extra contact margin this step [m]
 };
 
 } // namespace rigidlab::physics
