@@ -1,12 +1,14 @@
 // rigidlab-cli: scenes without a window. Argument handling only; the work is done by
 // rigidlab_lessons (scene_loader, scene_run, sat_report, document).
 
+#include "rigidlab/lessons/bench.h"
 #include "rigidlab/lessons/document.h"
 #include "rigidlab/lessons/sat_report.h"
 #include "rigidlab/lessons/scene_loader.h"
 #include "rigidlab/lessons/scene_run.h"
 
 #include <QCoreApplication>
+#include <QSaveFile>
 #include <QStringList>
 
 #include <algorithm>
@@ -40,6 +42,12 @@ Commands:
       --every K              write rows every K steps (default 1; step 0 and the last
                              step are always written)
   validate FILE.json...      check documents (scenes) and say what is wrong
+  bench [OPTIONS]            RigidLab's side of the benchmarks (./lab bench adds the peers)
+      --scene NAME           one scene: pyramid-20, pyramid-40, pyramid-100, rain-1000,
+                             stack-12, mass-ratio (default: all)
+      --steps N              steps per run (default 600: 10 s at 1/60 s)
+      --runs K               runs; the table gives the median (default 3)
+      --export FILE.json     write the scene as a scene file instead of running it
   sat PAIR.json              the separating axis test on polygon pairs, as JSON
   --help                     this text
 
@@ -351,6 +359,73 @@ int commandSat(const QStringList& words)
     return kExitOk;
 }
 
+int commandBench(const QStringList& words)
+{
+    Arguments args(words, {QStringLiteral("--scene"), QStringLiteral("--steps"),
+                           QStringLiteral("--runs"), QStringLiteral("--export")});
+    QString error;
+    if (!args.parse(error)) {
+        return usageError(QStringLiteral("bench: ") + error);
+    }
+    if (!args.positionals().isEmpty()) {
+        return usageError(QStringLiteral("bench: no files, only options"));
+    }
+    lessons::BenchOptions options;
+    if (const auto steps = args.option(u"--steps")) {
+        const auto n = parseWhole(QStringLiteral("--steps"), *steps, 2, 1'000'000, error);
+        if (!n) {
+            return usageError(QStringLiteral("bench: ") + error);
+        }
+        options.steps = static_cast<int>(*n);
+    }
+    if (const auto runs = args.option(u"--runs")) {
+        const auto n = parseWhole(QStringLiteral("--runs"), *runs, 1, 1000, error);
+        if (!n) {
+            return usageError(QStringLiteral("bench: ") + error);
+        }
+        options.runs = static_cast<int>(*n);
+    }
+    std::vector<std::string> names = lessons::benchSceneNames();
+    if (const auto scene = args.option(u"--scene")) {
+        if (!lessons::makeBenchScene(scene->toStdString())) {
+            return usageError(QStringLiteral("bench: --scene: unknown scene \"%1\" (expected %2)")
+                                  .arg(*scene, QString::fromStdString([&] {
+                                      std::string all;
+                                      for (const auto& n : names)
+                                          all += (all.empty() ? "" : ", ") + n;
+                                      return all;
+                                  }())));
+        }
+        names = {scene->toStdString()};
+    }
+    const lessons::RigidLabBenchSettings settings;
+    if (const auto path = args.option(u"--export")) {
+        if (names.size() != 1) {
+            return usageError(QStringLiteral("bench: --export: name one --scene"));
+        }
+        QSaveFile file(*path);
+        const std::string json =
+            lessons::benchSceneJson(*lessons::makeBenchScene(names.front()), settings);
+        if (!file.open(QIODevice::WriteOnly) ||
+            file.write(json.data(), static_cast<qint64>(json.size())) !=
+                static_cast<qint64>(json.size()) ||
+            !file.commit()) {
+            printErr(QStringLiteral("error: cannot write %1: %2\n").arg(*path, file.errorString()));
+            return kExitOutputError;
+        }
+        return kExitOk;
+    }
+    const auto engine = lessons::makeRigidLabBenchEngine(settings);
+    std::vector<lessons::BenchResult> results;
+    for (const std::string& name : names) {
+        results.push_back(lessons::runBench(*engine, *lessons::makeBenchScene(name), options));
+    }
+    std::fputs(lessons::benchTable(results).c_str(), stdout);
+    std::printf("RigidLab: %s; %d steps per run (the first not timed), median of %d runs.\n",
+                engine->settings().c_str(), options.steps, options.runs);
+    return kExitOk;
+}
+
 /// The commands; a new one is a function and a row here (and a paragraph of kUsage).
 struct Command {
     QLatin1StringView name;
@@ -360,6 +435,7 @@ constexpr Command kCommands[] = {
     {QLatin1StringView("run"), &commandRun},
     {QLatin1StringView("validate"), &commandValidate},
     {QLatin1StringView("sat"), &commandSat},
+    {QLatin1StringView("bench"), &commandBench},
 };
 
 } // namespace

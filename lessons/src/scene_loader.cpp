@@ -127,7 +127,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
     if (!m_in.asObject(root.value(u"world"), place, world) ||
         !m_in.checkKeys(world, place,
                         {u"gravity", u"dt", u"integrator", u"solver", u"iterations", u"restitution",
-                         u"friction", u"gravitation", u"drag"}) ||
+                         u"friction", u"gravitation", u"drag", u"sleep"}) ||
         !m_in.vec2(world, u"gravity", place, def.gravity) ||
         !m_in.number(world, u"dt", place, def.dt, NumberRule::Positive)) {
         return false;
@@ -171,6 +171,13 @@ bool SceneReader::readWorld(const QJsonObject& root)
                 QStringLiteral("unknown solver \"%1\" (expected %2)").arg(name, names.join(u", ")));
         }
         def.solver = *kind;
+    }
+    if (world.contains(u"sleep")) {
+        bool sleep = false;
+        if (!m_in.boolean(world, u"sleep", place, sleep, false)) {
+            return false;
+        }
+        def.sleep = sleep;
     }
     return m_in.integer(world, u"iterations", place, def.iterations, 1, kMaxIterations) &&
            m_in.number(world, u"restitution", place, def.restitution, NumberRule::UnitInterval) &&

@@ -74,8 +74,9 @@ int mostAligned(const WorldPolygon& p, const Vec2& dir)
 }
 
 /// Clips segment (p[0], p[1]) to the half plane normal.x <= offset; false if nothing is left.
-bool clipSegment(std::array<Vec2, 2>& p, std::array<int, 2>& tag, const Vec2& normal, double offset,
-                 int clipTag)
+/// A clipped end stays at its index, so that p[0] is always the end that came from the
+/// incident edge's first vertex.
+bool clipSegment(std::array<Vec2, 2>& p, const Vec2& normal, double offset)
 {
     const double d0 = normal.dot(p[0]) - offset;
     const double d1 = normal.dot(p[1]) - offset;
@@ -84,9 +85,7 @@ bool clipSegment(std::array<Vec2, 2>& p, std::array<int, 2>& tag, const Vec2& no
     if (d0 > 0 || d1 > 0) {
         const double t = d0 / (d0 - d1);
         const Vec2 x = p[0] + t * (p[1] - p[0]);
-        const int out = d0 > 0 ? 0 : 1;
-        p[static_cast<size_t>(out)] = x;
-        tag[static_cast<size_t>(out)] = clipTag;
+        p[d0 > 0 ? 0 : 1] = x;
     }
     return true;
 }
@@ -101,15 +100,14 @@ void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const
     const int incEdge = mostAligned(inc, Vec2(-refNormal));
     const int i1 = incEdge, i2 = (incEdge + 1) % inc.count;
     std::array<Vec2, 2> p{inc.v[static_cast<size_t>(i1)], inc.v[static_cast<size_t>(i2)]};
-    std::array<int, 2> tag{i1, i2};
 
     const Vec2 r1 = ref.v[static_cast<size_t>(refEdge)];
     const Vec2 r2 = ref.v[static_cast<size_t>((refEdge + 1) % ref.count)];
     const Vec2 tangent = (r2 - r1).normalized();
     // Side planes: keep tangent.x >= tangent.r1 and tangent.x <= tangent.r2.
-    if (!clipSegment(p, tag, Vec2(-tangent), -tangent.dot(r1), 0x40))
+    if (!clipSegment(p, Vec2(-tangent), -tangent.dot(r1)))
         return;
-    if (!clipSegment(p, tag, tangent, tangent.dot(r2), 0x80))
+    if (!clipSegment(p, tangent, tangent.dot(r2)))
         return;
 
     m.type = owner == 0 ? ManifoldType::FaceA : ManifoldType::FaceB;
@@ -126,7 +124,11 @@ void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const
         ContactPoint& cp = m.points[static_cast<size_t>(m.pointCount)];
         cp.point = p[k] - 0.5 * sep * refNormal;
         cp.separation = sep;
-        cp.id = static_cast<std::uint32_t>(owner << 24 | refEdge << 16 | tag[k] << 8 | incEdge);
+        // The features: reference face, incident edge, and which end of the clipped incident
+        // edge. Not whether that end was clipped: with two faces of equal length, exactly
+        // aligned, an end is clipped or not by round-off, and a changing id would throw away
+        // the warm start that holds a heavy box on a light one.
+        cp.id = static_cast<std::uint32_t>(owner << 24 | refEdge << 16 | incEdge << 8 | k);
         m.localIncident[static_cast<size_t>(m.pointCount)] = xfInc.applyInverse(p[k]);
         ++m.pointCount;
     }

@@ -30,7 +30,14 @@ struct WorldDef {
     /// Continuous collision: a body that moves more than its own size in a step gets
     /// speculative contacts over the whole of its motion (continuous.cpp).
     bool continuous = true;
+    /// Resting bodies go to sleep (islands.cpp): not integrated, not solved, until a contact
+    /// or the user wakes them. Unset: on in large scenes (kLargeSceneBodies or more dynamic
+    /// bodies), where nobody follows one body's energy, and off in the others.
+    std::optional<bool> sleep;
 };
+
+/// A scene with this many dynamic bodies or more is large: it sleeps unless told otherwise.
+inline constexpr int kLargeSceneBodies = 200;
 
 /// Tuning of contacts that a scene does not set (Box2D's choices, in metres).
 struct ContactSettings {

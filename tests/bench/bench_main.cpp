@@ -1,0 +1,89 @@
+// rigidlab-bench: the benchmark scenes in RigidLab, Box2D 2.4 and Chipmunk 7, one table.
+//   rigidlab-bench [--scene NAME] [--steps N] [--runs K]
+// Built and run by `./lab bench`; not a test (timings depend on the machine).
+
+#include "bench_peers.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+using namespace rigidlab;
+
+namespace {
+
+std::string cpuModel()
+{
+    std::ifstream in("/proc/cpuinfo");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("model name", 0) == 0)
+            return line.substr(line.find(':') + 2);
+    return "unknown CPU";
+}
+
+int usage()
+{
+    std::fputs("usage: rigidlab-bench [--scene NAME] [--steps N] [--runs K]\n", stderr);
+    return 2;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    lessons::BenchOptions options;
+    std::vector<std::string> scenes = lessons::benchSceneNames();
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (i + 1 >= argc)
+            return usage();
+        const char* value = argv[++i];
+        if (arg == "--scene") {
+            if (!lessons::makeBenchScene(value)) {
+                std::fprintf(stderr, "rigidlab-bench: unknown scene \"%s\"\n", value);
+                return 2;
+            }
+            scenes = {value};
+        } else if (arg == "--steps") {
+            options.steps = std::atoi(value);
+        } else if (arg == "--runs") {
+            options.runs = std::atoi(value);
+        } else {
+            return usage();
+        }
+    }
+    if (options.steps < 2 || options.runs < 1)
+        return usage();
+
+    std::vector<std::unique_ptr<lessons::BenchEngine>> engines;
+    engines.push_back(lessons::makeRigidLabBenchEngine());
+#ifdef RIGIDLAB_BENCH_BOX2D
+    engines.push_back(bench::makeBox2dEngine());
+#endif
+#ifdef RIGIDLAB_BENCH_CHIPMUNK
+    engines.push_back(bench::makeChipmunkEngine());
+#endif
+
+    std::vector<lessons::BenchResult> results;
+    for (const std::string& name : scenes) {
+        const lessons::BenchScene scene = *lessons::makeBenchScene(name);
+        for (auto& engine : engines) {
+            results.push_back(lessons::runBench(*engine, scene, options));
+            std::fprintf(stderr, "  %-9s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
+                         name.c_str(), results.back().msPerStep);
+        }
+    }
+    std::printf("\n%s\n", lessons::benchTable(results).c_str());
+    for (auto& engine : engines)
+        std::printf("%-9s %s\n", engine->name().c_str(), engine->settings().c_str());
+    std::printf("Every scene: dt 1/60 s, gravity -10 m/s^2, friction 0.6, no restitution; "
+                "%d steps per run (the first not timed), median of %d runs.\n",
+                options.steps, options.runs);
+    std::printf("Machine: %s, %ld cores.\n", cpuModel().c_str(), sysconf(_SC_NPROCESSORS_ONLN));
+    return 0;
+}
