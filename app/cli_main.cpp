@@ -2,6 +2,8 @@
 // rigidlab_lessons (scene_loader, scene_run, sat_report, document).
 
 #include "rigidlab/lessons/bench.h"
+#include "cli_numerics.h"
+
 #include "rigidlab/lessons/document.h"
 #include "rigidlab/lessons/sat_report.h"
 #include "rigidlab/lessons/scene_loader.h"
@@ -49,10 +51,26 @@ Commands:
       --runs K               runs; the table gives the median (default 3)
       --export FILE.json     write the scene as a scene file instead of running it
   sat PAIR.json              the separating axis test on polygon pairs, as JSON
+  error-vs-time [OPTIONS]    work against precision of every integrator on reference problems
+      --problem NAME|all     oscillator, pendulum, kepler, spinning-body, double-pendulum
+      --integrators LIST     comma-separated (default: all, Boost.Odeint's odeint-rk4 and
+                             odeint-dopri5 included)
+      --dt-from A --dt-to B  the steps swept [s] (default: each problem's own)
+      --points N             steps per integrator (default 6)
+      --tol-from A --tol-to B  the tolerances swept by the adaptive ones (1e-3 to 1e-11)
+      --t-end T              end time [s] (default: each problem's own)
+      --min-cpu S            CPU time spent timing each row (default 0.05 s)
+      --csv FILE.csv         problem,integrator,dt,steps,evaluations,error,max_error,
+                             energy_error,seconds
+      --plot FILE.png|.pdf|.svg  the work-precision diagram (FILE-PROBLEM.png for several)
+  stress [OPTIONS]           stiff and extreme cases, each with its verdict
+      --case NAME            one case (default: all; --case list names them)
+      --json FILE.json       the table as JSON
   --help                     this text
 
 Exit status: 0 done, 1 an output file could not be written, 2 bad input or usage,
-3 the simulation became non-finite (nothing written).
+3 the simulation diverged (nothing written), 4 a stress case ended with another verdict
+than documented.
 Scene format: lessons/SCENE_FORMAT.md.
 )";
 
@@ -435,6 +453,8 @@ constexpr Command kCommands[] = {
     {QLatin1StringView("run"), &commandRun},
     {QLatin1StringView("validate"), &commandValidate},
     {QLatin1StringView("sat"), &commandSat},
+    {QLatin1StringView("error-vs-time"), &cli::commandErrorVsTime},
+    {QLatin1StringView("stress"), &cli::commandStress},
     {QLatin1StringView("bench"), &commandBench},
 };
 
@@ -442,7 +462,7 @@ constexpr Command kCommands[] = {
 
 int main(int argc, char* argv[])
 {
-    QCoreApplication app(argc, argv);
+    const auto app = cli::makeApplication(argc, argv);
     QStringList words = QCoreApplication::arguments();
     words.removeFirst();
     if (words.isEmpty()) {

@@ -186,8 +186,11 @@ void PlotWidget::fitLegend(int widthPx)
     if (count == 0)
         return;
     std::vector<int> widths;
-    for (int i = 0; i < count; ++i)
-        widths.push_back(legend->item(i)->minimumOuterSizeHint().width());
+    for (int i = 0; i < count; ++i) {
+        // Once wrapped, the grid may hold empty cells: item() is null there.
+        const QCPAbstractLegendItem* item = legend->item(i);
+        widths.push_back(item ? item->minimumOuterSizeHint().width() : 0);
+    }
     const QMargins margins = legend->margins();
     const int available = widthPx - margins.left() - margins.right();
     int columns = count;
@@ -425,6 +428,9 @@ void PlotWidget::updateRanges()
         // Until a whole window has run, the run starts at the left edge.
         const double right = std::max(*m_latestT, first + m_windowSeconds);
         m_plot->xAxis->setRange(right, m_windowSeconds, Qt::AlignRight);
+    } else if (m_plot->xAxis->scaleType() == QCPAxis::stLogarithmic) {
+        // A log axis (work against precision): a third of a decade beyond the points.
+        m_plot->xAxis->setRange(first / 2, *m_latestT * 2);
     } else {
         m_plot->xAxis->setRange(first, first + std::max(*m_latestT - first, kMinWholeRunSpan));
     }
@@ -435,13 +441,15 @@ void PlotWidget::updateRanges()
 void PlotWidget::fitValueAxis(YAxis axis)
 {
     const QCPRange keys = m_plot->xAxis->range();
+    const bool log = axisFor(axis)->scaleType() == QCPAxis::stLogarithmic;
     bool any = false;
     QCPRange values;
     for (const PlotSeries& series : m_series) {
         if (series.axis() != axis || !series.graph()->visible())
             continue;
         bool found = false;
-        const QCPRange r = series.graph()->getValueRange(found, QCP::sdBoth, keys);
+        const QCPRange r =
+            series.graph()->getValueRange(found, log ? QCP::sdPositive : QCP::sdBoth, keys);
         if (!found)
             continue;
         if (any)
@@ -452,6 +460,10 @@ void PlotWidget::fitValueAxis(YAxis axis)
     }
     if (!any)
         return;
+    if (log) {
+        axisFor(axis)->setRange(values.lower / 2, values.upper * 2);
+        return;
+    }
     const double span = values.size();
     const double center = values.center();
     // A constant curve (drift of an exact integrator, energy at rest) still gets an axis.

@@ -116,6 +116,15 @@ public:
     /// Recomputes the diagnostics for the current state (done by step() already).
     void updateDiagnostics();
 
+    // The equations of motion alone, for integrating outside step() (reference solutions,
+    // another ODE library): the state as the integrators see it, q = (x, y, angle) of the
+    // centre of mass of every moving body in id order and v = (vx, vy, omega), and
+    // a(t, q, v) from the applied forces and the exact joint forces, without contacts
+    // (world_ode.cpp). The equations refer to this world: they live as long as it does.
+    void getState(Eigen::VectorXd& q, Eigen::VectorXd& v) const;
+    void setState(const Eigen::VectorXd& q, const Eigen::VectorXd& v);
+    std::unique_ptr<OdeSystem> equations() const;
+
 private:
     struct Scratch;
     void findContacts();
