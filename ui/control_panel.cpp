@@ -25,6 +25,8 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     m_integrator->addItem(tr("Symplectic Euler"), int(IntegratorKind::SymplecticEuler));
     m_integrator->addItem(tr("Velocity Verlet"), int(IntegratorKind::Verlet));
     m_integrator->addItem(tr("Runge-Kutta 4"), int(IntegratorKind::RK4));
+    m_integrator->addItem(tr("Dormand-Prince 5(4), adaptive"), int(IntegratorKind::DormandPrince));
+    m_integrator->addItem(tr("Implicit midpoint"), int(IntegratorKind::ImplicitMidpoint));
     m_integrator->setToolTip(tr("How positions and velocities are advanced in each step"));
     m_solver->addItem(tr("Seed impulse"), int(SolverKind::SeedImpulse));
     m_solver->addItem(tr("Sequential impulse"), int(SolverKind::SequentialImpulse));

@@ -1,6 +1,8 @@
 #include "main_window.h"
 
 #include "control_panel.h"
+#include "divergence_banner.h"
+#include "error_panel.h"
 #include "inspector_panel.h"
 #include "plot_export.h"
 #include "plot_widget.h"
@@ -74,6 +76,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_statusSlow->setStyleSheet(
         QStringLiteral("color: white; background: #c0392b; padding: 1px 6px;"));
     m_statusSlow->setVisible(false);
+    new DivergenceBanner(*m_controller, m_view);
     statusBar()->addWidget(m_statusTime);
     statusBar()->addWidget(m_statusRate);
     statusBar()->addWidget(m_statusDrift);
@@ -207,6 +210,10 @@ void MainWindow::buildDocks()
     };
     addDock(tr("Controls"), QStringLiteral("controlsDock"), m_controls, Qt::LeftDockWidgetArea);
     addDock(tr("Inspector"), QStringLiteral("inspectorDock"), m_inspector, Qt::LeftDockWidgetArea);
+    // The work-precision sweep, hidden until asked for (View menu).
+    addDock(tr("Error vs run time"), QStringLiteral("errorDock"), new ErrorPanel(this),
+            Qt::BottomDockWidgetArea)
+        ->hide();
     m_plots[0] = makeEnergyPlot(this);
     m_plots[1] = makeMomentumPlot(this);
     m_plots[2] = makeDriftPlot(this);
@@ -355,7 +362,20 @@ void MainWindow::updateStatus()
                               .arg(m_controller->stepsPerSecond(), 0, 'f', 0)
                               .arg(m_controller->frameMilliseconds(), 0, 'f', 1)
                               .arg(m_controller->physicsMilliseconds(), 0, 'f', 1));
-    m_statusDrift->setText(tr("energy drift %1 %").arg(m_controller->driftPercent(), 0, 'g', 3));
+    QString drift = tr("energy drift %1 %").arg(m_controller->driftPercent(), 0, 'g', 3);
+    // The adaptive integrator's own estimate of its local error, live.
+    if (const auto estimate = w.integrator().errorEstimate())
+        drift += tr(" · %1 error estimate %2 (%3 substeps)")
+                     .arg(QString::fromUtf8(physics::integratorName(w.def().integrator).data()))
+                     .arg(*estimate, 0, 'g', 2)
+                     .arg(w.integrator().substeps());
+    m_statusDrift->setText(drift);
+    // Over the world, a banner when it diverged.
+    if (auto* banner = findChild<DivergenceBanner*>()) {
+        banner->refresh();
+        banner->setGeometry(0, 0, m_view->width(), banner->sizeHint().height());
+        banner->raise();
+    }
     m_statusSlow->setVisible(m_controller->isRunning() && m_controller->slowerThanRealTime());
 }
 

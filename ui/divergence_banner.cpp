@@ -1,0 +1,52 @@
+#include "divergence_banner.h"
+
+#include "simulation_controller.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+
+namespace rigidlab::ui {
+
+DivergenceBanner::DivergenceBanner(SimulationController& controller, QWidget* parent)
+    : QWidget(parent), m_controller(controller), m_text(new QLabel(this))
+{
+    setObjectName(QStringLiteral("divergenceBanner"));
+    setAutoFillBackground(true);
+    setStyleSheet(QStringLiteral("#divergenceBanner { background: #c0392b; } "
+                                 "QLabel { color: white; font-weight: bold; }"));
+    m_text->setWordWrap(true);
+    auto* reset = new QPushButton(tr("Reset"), this);
+    auto* halve = new QPushButton(tr("Halve dt"), this);
+    reset->setToolTip(tr("Back to the start of the scene"));
+    halve->setToolTip(tr("Back to the start with half the time step"));
+    auto* layout = new QHBoxLayout(this);
+    layout->addWidget(m_text, 1);
+    layout->addWidget(reset);
+    layout->addWidget(halve);
+    connect(reset, &QPushButton::clicked, &m_controller, &SimulationController::reset);
+    connect(halve, &QPushButton::clicked, this, [this] {
+        m_controller.setDt(0.5 * m_controller.world().def().dt);
+        m_controller.reset();
+    });
+    connect(&m_controller, &SimulationController::worldChanged, this, &DivergenceBanner::refresh);
+    setVisible(false);
+}
+
+QString DivergenceBanner::text() const
+{
+    return m_text->text();
+}
+
+void DivergenceBanner::refresh()
+{
+    const auto& d = m_controller.world().divergence();
+    if (d && m_controller.isRunning())
+        m_controller.setRunning(false);
+    if (d)
+        m_text->setText(tr("The simulation %1. Stopped here rather than draw garbage.")
+                            .arg(QString::fromStdString(d->message())));
+    setVisible(d.has_value());
+}
+
+} // namespace rigidlab::ui
