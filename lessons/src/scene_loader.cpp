@@ -127,7 +127,8 @@ bool SceneReader::readWorld(const QJsonObject& root)
     if (!m_in.asObject(root.value(u"world"), place, world) ||
         !m_in.checkKeys(world, place,
                         {u"gravity", u"dt", u"integrator", u"solver", u"iterations", u"restitution",
-                         u"friction", u"gravitation", u"drag", u"sleep"}) ||
+                         u"friction", u"gravitation", u"drag", u"sleep", u"continuous",
+                         u"tolerance"}) ||
         !m_in.vec2(world, u"gravity", place, def.gravity) ||
         !m_in.number(world, u"dt", place, def.dt, NumberRule::Positive)) {
         return false;
@@ -183,7 +184,11 @@ bool SceneReader::readWorld(const QJsonObject& root)
            m_in.number(world, u"restitution", place, def.restitution, NumberRule::UnitInterval) &&
            m_in.number(world, u"friction", place, def.friction, NumberRule::NonNegative) &&
            m_in.number(world, u"gravitation", place, def.gravitation, NumberRule::NonNegative) &&
-           m_in.number(world, u"drag", place, def.drag, NumberRule::NonNegative);
+           m_in.number(world, u"drag", place, def.drag, NumberRule::NonNegative) &&
+           m_in.boolean(world, u"continuous", place, def.continuous) &&
+           m_in.number(world, u"tolerance", place, def.tolerances.absolute,
+                       NumberRule::Positive) &&
+           m_in.number(world, u"tolerance", place, def.tolerances.relative, NumberRule::Positive);
 }
 
 bool SceneReader::readBodies(const QJsonObject& root)

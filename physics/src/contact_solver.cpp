@@ -19,8 +19,6 @@
 
 #include "contact_solver.h"
 
-#include <Eigen/Dense>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -56,62 +54,103 @@ std::optional<SolverKind> solverFromName(std::string_view name)
     return std::nullopt;
 }
 
-ContactSolver::ContactSolver(std::vector<Contact>& contacts, std::vector<Body>& bodies,
-                             const ContactSettings& settings, double dt,
-                             const std::vector<Vec2>& startVelocity,
-                             const std::vector<double>& startAngularVelocity)
-    : m_contacts(contacts), m_bodies(bodies), m_settings(settings), m_dt(dt),
-      m_startVelocity(startVelocity), m_startAngularVelocity(startAngularVelocity)
+void ContactSolver::begin(std::vector<Contact>& contacts, std::vector<Body>& bodies,
+                          const ContactSettings& settings, double dt,
+                          const std::vector<Vec2>& startVelocity,
+                          const std::vector<double>& startAngularVelocity)
 {
+    m_contacts = &contacts;
+    m_bodies = &bodies;
+    m_settings = &settings;
+    m_dt = dt;
+    m_startVelocity = &startVelocity;
+    m_startAngularVelocity = &startAngularVelocity;
+    m_constraints.clear();
+    const size_t n = bodies.size();
+    m_velocity.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const Body& b = bodies[i];
+        m_velocity[i] = {b.velocity, b.angularVelocity};
+    }
+    if (m_rotationStamp.size() != n) {
+        m_rotationStamp.assign(n, 0);
+        m_rotation.resize(n);
+    }
+    if (++m_stamp == 0) { // wrapped round: forget every stamp
+        std::fill(m_rotationStamp.begin(), m_rotationStamp.end(), 0u);
+        m_stamp = 1;
+    }
+}
+
+const Rotation& ContactSolver::rotation(int body)
+{
+    const size_t i = static_cast<size_t>(body);
+    if (m_rotationStamp[i] != m_stamp) {
+        m_rotation[i] = Rotation((*m_bodies)[i].angle);
+        m_rotationStamp[i] = m_stamp;
+    }
+    return m_rotation[i];
 }
 
 double ContactSolver::normalVelocity(const Constraint& c, int i) const
 {
-    const Contact& ct = m_contacts[static_cast<size_t>(c.contact)];
-    const Body& a = m_bodies[static_cast<size_t>(ct.a)];
-    const Body& b = m_bodies[static_cast<size_t>(ct.b)];
+    const Velocity& a = m_velocity[static_cast<size_t>(c.a)];
+    const Velocity& b = m_velocity[static_cast<size_t>(c.b)];
     const Point& p = c.p[i];
-    const Vec2 dv =
-        b.velocity + cross(b.angularVelocity, p.rB) - a.velocity - cross(a.angularVelocity, p.rA);
+    const Vec2 dv = b.v + cross(b.w, p.rB) - a.v - cross(a.w, p.rA);
     return dv.dot(c.normal);
 }
 
 void ContactSolver::prepare(double threshold)
 {
-    m_constraints.clear();
-    m_constraints.reserve(m_contacts.size());
-    for (size_t ci = 0; ci < m_contacts.size(); ++ci) {
-        const Contact& ct = m_contacts[ci];
-        const Body& a = m_bodies[static_cast<size_t>(ct.a)];
-        const Body& b = m_bodies[static_cast<size_t>(ct.b)];
-        Constraint c;
+    std::vector<Contact>& contacts = *m_contacts;
+    const std::vector<Body>& bodies = *m_bodies;
+    m_constraints.reserve(contacts.size());
+    for (size_t ci = 0; ci < contacts.size(); ++ci) {
+        const Contact& ct = contacts[ci];
+        const Body& a = bodies[static_cast<size_t>(ct.a)];
+        const Body& b = bodies[static_cast<size_t>(ct.b)];
+        if (!a.isActive() && !b.isActive())
+            continue; // both asleep (or one asleep on a static body): nothing to solve
+        Constraint& c = m_constraints.emplace_back();
         c.contact = static_cast<int>(ci);
+        c.a = ct.a;
+        c.b = ct.b;
+        c.invMassA = a.isActive() ? a.invMass : 0.0;
+        c.invIA = a.isActive() ? a.invInertia : 0.0;
+        c.invMassB = b.isActive() ? b.invMass : 0.0;
+        c.invIB = b.isActive() ? b.invInertia : 0.0;
+        c.friction = ct.friction;
         c.count = ct.manifold.pointCount;
         // The manifold was found where the bodies stood at the start of the step; they have
         // moved since. Its points and normal are placed again on the bodies as they are now,
         // so that the lever arms belong to the same instant as the centres (else a
         // frictionless ball would pick up spin). The separations stay those of the start,
         // which time the contact within the step.
-        const Transform xfA = a.transform(), xfB = b.transform();
-        std::array<Vec2, 2> points{};
+        Transform xfA, xfB;
+        xfA.q = rotation(ct.a);
+        xfA.p = a.position - xfA.q.apply(a.localCenter);
+        xfB.q = rotation(ct.b);
+        xfB.p = b.position - xfB.q.apply(b.localCenter);
+        Vec2 points[2];
         for (int i = 0; i < c.count; ++i) {
             double sepNow;
-            evaluateManifoldPoint(ct.manifold, i, xfA, xfB, c.normal,
-                                  points[static_cast<size_t>(i)], sepNow);
+            evaluateManifoldPoint(ct.manifold, i, xfA, xfB, c.normal, points[i], sepNow);
         }
         c.tangent = Vec2(c.normal.y(), -c.normal.x());
+        const double mA = c.invMassA, iA = c.invIA, mB = c.invMassB, iB = c.invIB;
         for (int i = 0; i < c.count; ++i) {
             const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
             Point& p = c.p[i];
-            p.rA = points[static_cast<size_t>(i)] - a.position;
-            p.rB = points[static_cast<size_t>(i)] - b.position;
+            p.normalImpulse = ct.normalImpulse[static_cast<size_t>(i)];
+            p.tangentImpulse = ct.tangentImpulse[static_cast<size_t>(i)];
+            p.rA = points[i] - a.position;
+            p.rB = points[i] - b.position;
             const double rnA = cross(p.rA, c.normal), rnB = cross(p.rB, c.normal);
-            const double kn =
-                a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
+            const double kn = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
             p.normalMass = kn > 0 ? 1.0 / kn : 0.0;
             const double rtA = cross(p.rA, c.tangent), rtB = cross(p.rB, c.tangent);
-            const double kt =
-                a.invMass + b.invMass + a.invInertia * rtA * rtA + b.invInertia * rtB * rtB;
+            const double kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
             p.tangentMass = kt > 0 ? 1.0 / kt : 0.0;
 
             // Target normal velocity, from the velocity before any impulse of this step.
@@ -130,10 +169,10 @@ void ContactSolver::prepare(double threshold)
                     // of the step, at about vn0 + f (vn - vn0). The bounce reverses that,
                     // and the forces act on for the rest of the step.
                     const size_t ia = static_cast<size_t>(ct.a), ib = static_cast<size_t>(ct.b);
+                    const std::vector<Vec2>& v0 = *m_startVelocity;
+                    const std::vector<double>& w0 = *m_startAngularVelocity;
                     const double vn0 =
-                        (m_startVelocity[ib] + cross(m_startAngularVelocity[ib], p.rB) -
-                         m_startVelocity[ia] - cross(m_startAngularVelocity[ia], p.rA))
-                            .dot(c.normal);
+                        (v0[ib] + cross(w0[ib], p.rB) - v0[ia] - cross(w0[ia], p.rA)).dot(c.normal);
                     fraction = vn0 < 0 ? std::clamp(sep / (-vn0 * m_dt), 0.0, 1.0) : 1.0;
                     const double atImpact = vn0 + fraction * (vn - vn0);
                     bounce = -ct.restitution * atImpact + (1.0 - fraction) * (vn - vn0);
@@ -148,84 +187,74 @@ void ContactSolver::prepare(double threshold)
             const Point &p1 = c.p[0], &p2 = c.p[1];
             const double rn1A = cross(p1.rA, c.normal), rn1B = cross(p1.rB, c.normal);
             const double rn2A = cross(p2.rA, c.normal), rn2B = cross(p2.rB, c.normal);
-            const double k11 =
-                a.invMass + b.invMass + a.invInertia * rn1A * rn1A + b.invInertia * rn1B * rn1B;
-            const double k22 =
-                a.invMass + b.invMass + a.invInertia * rn2A * rn2A + b.invInertia * rn2B * rn2B;
-            const double k12 =
-                a.invMass + b.invMass + a.invInertia * rn1A * rn2A + b.invInertia * rn1B * rn2B;
+            const double k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+            const double k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+            const double k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
             // Solve the pair together only while K is well conditioned.
             constexpr double kMaxCondition = 1000.0;
-            if (k11 * k11 < kMaxCondition * (k11 * k22 - k12 * k12)) {
+            const double det = k11 * k22 - k12 * k12;
+            if (k11 * k11 < kMaxCondition * det) {
                 c.block = true;
-                c.k << k11, k12, k12, k22;
-                c.normalMassBlock = c.k.inverse();
+                c.k11 = k11;
+                c.k12 = k12;
+                c.k22 = k22;
+                const double inv = 1.0 / det;
+                c.m11 = inv * k22;
+                c.m12 = -inv * k12;
+                c.m22 = inv * k11;
             }
         }
-        m_constraints.push_back(c);
     }
 }
 
 void ContactSolver::warmStart()
 {
-    for (Constraint& c : m_constraints) {
-        Contact& ct = m_contacts[static_cast<size_t>(c.contact)];
-        Body& a = m_bodies[static_cast<size_t>(ct.a)];
-        Body& b = m_bodies[static_cast<size_t>(ct.b)];
+    for (const Constraint& c : m_constraints) {
+        Velocity& a = m_velocity[static_cast<size_t>(c.a)];
+        Velocity& b = m_velocity[static_cast<size_t>(c.b)];
         for (int i = 0; i < c.count; ++i) {
-            const Vec2 P = ct.normalImpulse[static_cast<size_t>(i)] * c.normal +
-                           ct.tangentImpulse[static_cast<size_t>(i)] * c.tangent;
-            a.velocity -= a.invMass * P;
-            a.angularVelocity -= a.invInertia * cross(c.p[i].rA, P);
-            b.velocity += b.invMass * P;
-            b.angularVelocity += b.invInertia * cross(c.p[i].rB, P);
+            const Point& p = c.p[i];
+            const Vec2 P = p.normalImpulse * c.normal + p.tangentImpulse * c.tangent;
+            a.v -= c.invMassA * P;
+            a.w -= c.invIA * cross(p.rA, P);
+            b.v += c.invMassB * P;
+            b.w += c.invIB * cross(p.rB, P);
         }
     }
 }
 
-void ContactSolver::solveFriction(Constraint& c)
-{
-    for (int i = 0; i < c.count; ++i)
-        solveFrictionPoint(c, i);
-}
-
 void ContactSolver::solveFrictionPoint(Constraint& c, int i)
 {
-    Contact& ct = m_contacts[static_cast<size_t>(c.contact)];
-    Body& a = m_bodies[static_cast<size_t>(ct.a)];
-    Body& b = m_bodies[static_cast<size_t>(ct.b)];
+    Velocity& a = m_velocity[static_cast<size_t>(c.a)];
+    Velocity& b = m_velocity[static_cast<size_t>(c.b)];
     Point& p = c.p[i];
-    const Vec2 dv =
-        b.velocity + cross(b.angularVelocity, p.rB) - a.velocity - cross(a.angularVelocity, p.rA);
+    const Vec2 dv = b.v + cross(b.w, p.rB) - a.v - cross(a.w, p.rA);
     const double vt = dv.dot(c.tangent);
-    double& acc = ct.tangentImpulse[static_cast<size_t>(i)];
-    const double limit = ct.friction * ct.normalImpulse[static_cast<size_t>(i)];
-    const double next = std::clamp(acc - p.tangentMass * vt, -limit, limit);
-    const double lambda = next - acc;
-    acc = next;
+    const double limit = c.friction * p.normalImpulse;
+    const double next = std::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
+    const double lambda = next - p.tangentImpulse;
+    p.tangentImpulse = next;
     const Vec2 P = lambda * c.tangent;
-    a.velocity -= a.invMass * P;
-    a.angularVelocity -= a.invInertia * cross(p.rA, P);
-    b.velocity += b.invMass * P;
-    b.angularVelocity += b.invInertia * cross(p.rB, P);
+    a.v -= c.invMassA * P;
+    a.w -= c.invIA * cross(p.rA, P);
+    b.v += c.invMassB * P;
+    b.w += c.invIB * cross(p.rB, P);
 }
 
 void ContactSolver::solveNormalPoint(Constraint& c, int i)
 {
-    Contact& ct = m_contacts[static_cast<size_t>(c.contact)];
-    Body& a = m_bodies[static_cast<size_t>(ct.a)];
-    Body& b = m_bodies[static_cast<size_t>(ct.b)];
+    Velocity& a = m_velocity[static_cast<size_t>(c.a)];
+    Velocity& b = m_velocity[static_cast<size_t>(c.b)];
     Point& p = c.p[i];
     const double vn = normalVelocity(c, i);
-    double& acc = ct.normalImpulse[static_cast<size_t>(i)];
-    const double next = std::max(acc - p.normalMass * (vn - p.bias), 0.0);
-    const double lambda = next - acc;
-    acc = next;
+    const double next = std::max(p.normalImpulse - p.normalMass * (vn - p.bias), 0.0);
+    const double lambda = next - p.normalImpulse;
+    p.normalImpulse = next;
     const Vec2 P = lambda * c.normal;
-    a.velocity -= a.invMass * P;
-    a.angularVelocity -= a.invInertia * cross(p.rA, P);
-    b.velocity += b.invMass * P;
-    b.angularVelocity += b.invInertia * cross(p.rB, P);
+    a.v -= c.invMassA * P;
+    a.w -= c.invIA * cross(p.rA, P);
+    b.v += c.invMassB * P;
+    b.w += c.invIB * cross(p.rB, P);
 }
 
 void ContactSolver::solveNormalBlock(Constraint& c)
@@ -233,43 +262,32 @@ void ContactSolver::solveNormalBlock(Constraint& c)
     // Find accumulated impulses x >= 0 with vn = K (x - x_old) + vn_now and, per point,
     // either x_i = 0 and vn_i >= bias_i, or x_i > 0 and vn_i = bias_i. With
     // b = vn_now - bias - K x_old the conditions read  w = K x + b,  x >= 0, w >= 0, x.w = 0.
-    Contact& ct = m_contacts[static_cast<size_t>(c.contact)];
-    Body& a = m_bodies[static_cast<size_t>(ct.a)];
-    Body& b = m_bodies[static_cast<size_t>(ct.b)];
-    const Eigen::Vector2d old(ct.normalImpulse[0], ct.normalImpulse[1]);
-    Eigen::Vector2d rhs(normalVelocity(c, 0) - c.p[0].bias, normalVelocity(c, 1) - c.p[1].bias);
-    rhs -= c.k * old;
+    const double old1 = c.p[0].normalImpulse, old2 = c.p[1].normalImpulse;
+    const double b1 = normalVelocity(c, 0) - c.p[0].bias - (c.k11 * old1 + c.k12 * old2);
+    const double b2 = normalVelocity(c, 1) - c.p[1].bias - (c.k12 * old1 + c.k22 * old2);
 
-    Eigen::Vector2d x;
-    auto accept = [&](const Eigen::Vector2d& cand) {
-        x = cand;
-        return true;
-    };
+    double x1 = 0, x2 = 0;
     bool found = false;
     // Case 1: both points pushing.
-    {
-        const Eigen::Vector2d cand = -(c.normalMassBlock * rhs);
-        if (cand.x() >= 0 && cand.y() >= 0)
-            found = accept(cand);
-    }
+    x1 = -(c.m11 * b1 + c.m12 * b2);
+    x2 = -(c.m12 * b1 + c.m22 * b2);
+    found = x1 >= 0 && x2 >= 0;
     // Case 2: only the first point pushing.
     if (!found) {
-        const Eigen::Vector2d cand(-c.p[0].normalMass * rhs.x(), 0.0);
-        const double w2 = c.k(1, 0) * cand.x() + rhs.y();
-        if (cand.x() >= 0 && w2 >= 0)
-            found = accept(cand);
+        x1 = -c.p[0].normalMass * b1;
+        x2 = 0.0;
+        found = x1 >= 0 && c.k12 * x1 + b2 >= 0;
     }
     // Case 3: only the second point pushing.
     if (!found) {
-        const Eigen::Vector2d cand(0.0, -c.p[1].normalMass * rhs.y());
-        const double w1 = c.k(0, 1) * cand.y() + rhs.x();
-        if (cand.y() >= 0 && w1 >= 0)
-            found = accept(cand);
+        x1 = 0.0;
+        x2 = -c.p[1].normalMass * b2;
+        found = x2 >= 0 && c.k12 * x2 + b1 >= 0;
     }
     // Case 4: neither pushing.
     if (!found) {
-        if (rhs.x() >= 0 && rhs.y() >= 0)
-            found = accept(Eigen::Vector2d::Zero());
+        x1 = x2 = 0.0;
+        found = b1 >= 0 && b2 >= 0;
     }
     if (!found) {
         // Round-off left no exact case: fall back to point by point.
@@ -277,27 +295,32 @@ void ContactSolver::solveNormalBlock(Constraint& c)
         solveNormalPoint(c, 1);
         return;
     }
-    const Eigen::Vector2d d = x - old;
-    const Vec2 P1 = d.x() * c.normal, P2 = d.y() * c.normal;
-    a.velocity -= a.invMass * (P1 + P2);
-    a.angularVelocity -= a.invInertia * (cross(c.p[0].rA, P1) + cross(c.p[1].rA, P2));
-    b.velocity += b.invMass * (P1 + P2);
-    b.angularVelocity += b.invInertia * (cross(c.p[0].rB, P1) + cross(c.p[1].rB, P2));
-    ct.normalImpulse = {x.x(), x.y()};
+    Velocity& a = m_velocity[static_cast<size_t>(c.a)];
+    Velocity& b = m_velocity[static_cast<size_t>(c.b)];
+    const Vec2 P1 = (x1 - old1) * c.normal, P2 = (x2 - old2) * c.normal;
+    a.v -= c.invMassA * (P1 + P2);
+    a.w -= c.invIA * (cross(c.p[0].rA, P1) + cross(c.p[1].rA, P2));
+    b.v += c.invMassB * (P1 + P2);
+    b.w += c.invIB * (cross(c.p[0].rB, P1) + cross(c.p[1].rB, P2));
+    c.p[0].normalImpulse = x1;
+    c.p[1].normalImpulse = x2;
 }
 
 void ContactSolver::solveSequential(int iterations, bool warm)
 {
-    prepare(m_settings.restitutionThreshold);
-    if (warm)
+    prepare(m_settings->restitutionThreshold);
+    if (warm) {
         warmStart();
-    else
-        for (Contact& ct : m_contacts)
-            ct.normalImpulse = ct.tangentImpulse = {0.0, 0.0};
+    } else {
+        for (Constraint& c : m_constraints)
+            for (Point& p : c.p)
+                p.normalImpulse = p.tangentImpulse = 0.0;
+    }
     for (int it = 0; it < iterations; ++it) {
         for (Constraint& c : m_constraints) {
             // Friction first: its limit uses the normal impulse, and normal wins the last word.
-            solveFriction(c);
+            for (int i = 0; i < c.count; ++i)
+                solveFrictionPoint(c, i);
             if (c.block)
                 solveNormalBlock(c);
             else
@@ -305,15 +328,16 @@ void ContactSolver::solveSequential(int iterations, bool warm)
                     solveNormalPoint(c, i);
         }
     }
+    store();
 }
 
 void ContactSolver::solveSeed()
 {
-    for (Contact& ct : m_contacts)
-        ct.normalImpulse = ct.tangentImpulse = {0.0, 0.0};
     // The seed has no threshold: every approaching contact gets its impulse, once, in order.
     prepare(0.0);
     for (Constraint& c : m_constraints) {
+        for (Point& p : c.p)
+            p.normalImpulse = p.tangentImpulse = 0.0;
         for (int i = 0; i < c.count; ++i) {
             if (!c.p[i].closes || normalVelocity(c, i) >= 0)
                 continue; // separating, or will not reach the other body this step
@@ -321,66 +345,94 @@ void ContactSolver::solveSeed()
             solveFrictionPoint(c, i);
         }
     }
+    store();
+}
+
+void ContactSolver::store()
+{
+    std::vector<Body>& bodies = *m_bodies;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        Body& b = bodies[i];
+        if (!b.isActive())
+            continue;
+        b.velocity = m_velocity[i].v;
+        b.angularVelocity = m_velocity[i].w;
+    }
+    for (const Constraint& c : m_constraints) {
+        Contact& ct = (*m_contacts)[static_cast<size_t>(c.contact)];
+        for (int i = 0; i < c.count; ++i) {
+            ct.normalImpulse[static_cast<size_t>(i)] = c.p[i].normalImpulse;
+            ct.tangentImpulse[static_cast<size_t>(i)] = c.p[i].tangentImpulse;
+        }
+    }
 }
 
 bool ContactSolver::appliedImpulse() const
 {
-    for (const Contact& ct : m_contacts)
-        if (ct.normalImpulse[0] > 0 || ct.normalImpulse[1] > 0)
+    for (const Constraint& c : m_constraints)
+        if (c.p[0].normalImpulse > 0 || c.p[1].normalImpulse > 0)
             return true;
     return false;
 }
 
-std::vector<double> ContactSolver::impactFractions() const
+const std::vector<double>& ContactSolver::impactFractions()
 {
     // A body bounced by every contact that pushed it moved freely until its earliest impact;
     // any contact that pushed it without a bounce (resting) makes it 0.
-    std::vector<double> fraction(m_bodies.size(), 1.0);
+    m_impact.assign(m_bodies->size(), 1.0);
     for (const Constraint& c : m_constraints) {
-        const Contact& ct = m_contacts[static_cast<size_t>(c.contact)];
         for (int i = 0; i < c.count; ++i) {
-            if (ct.normalImpulse[static_cast<size_t>(i)] <= 0)
+            if (c.p[i].normalImpulse <= 0)
                 continue;
-            for (BodyId id : {ct.a, ct.b}) {
-                double& f = fraction[static_cast<size_t>(id)];
+            for (int id : {c.a, c.b}) {
+                double& f = m_impact[static_cast<size_t>(id)];
                 f = std::min(f, c.p[i].impact);
             }
         }
     }
-    for (double& f : fraction)
+    for (double& f : m_impact)
         if (f == 1.0)
             f = 0.0; // untouched: no velocity change to place
-    return fraction;
+    return m_impact;
 }
 
-bool ContactSolver::solvePositions()
+int ContactSolver::solvePositions(int passes)
 {
-    double worst = 0.0;
-    for (Contact& ct : m_contacts) {
-        Body& a = m_bodies[static_cast<size_t>(ct.a)];
-        Body& b = m_bodies[static_cast<size_t>(ct.b)];
-        for (int i = 0; i < ct.manifold.pointCount; ++i) {
-            Vec2 n, point;
-            double sep;
-            evaluateManifoldPoint(ct.manifold, i, a.transform(), b.transform(), n, point, sep);
-            const Vec2 rA = point - a.position, rB = point - b.position;
-            worst = std::min(worst, sep);
-            // Remove a fraction of the penetration beyond the slop, never more than the cap.
-            const double C = std::clamp(m_settings.baumgarte * (sep + m_settings.linearSlop),
-                                        -m_settings.maxCorrection, 0.0);
-            const double rnA = cross(rA, n), rnB = cross(rB, n);
-            const double k =
-                a.invMass + b.invMass + a.invInertia * rnA * rnA + b.invInertia * rnB * rnB;
-            if (k <= 0 || C == 0.0)
-                continue;
-            const Vec2 P = (-C / k) * n;
-            a.position -= a.invMass * P;
-            a.angle -= a.invInertia * cross(rA, P);
-            b.position += b.invMass * P;
-            b.angle += b.invInertia * cross(rB, P);
+    std::vector<Body>& bodies = *m_bodies;
+    const ContactSettings& s = *m_settings;
+    int made = 0;
+    while (made < passes) {
+        ++made;
+        double worst = 0.0;
+        for (const Constraint& c : m_constraints) {
+            const Contact& ct = (*m_contacts)[static_cast<size_t>(c.contact)];
+            Body& a = bodies[static_cast<size_t>(c.a)];
+            Body& b = bodies[static_cast<size_t>(c.b)];
+            for (int i = 0; i < c.count; ++i) {
+                Vec2 n, point;
+                double sep;
+                evaluateManifoldPoint(ct.manifold, i, a.transform(), b.transform(), n, point, sep);
+                const Vec2 rA = point - a.position, rB = point - b.position;
+                worst = std::min(worst, sep);
+                // Remove a fraction of the penetration beyond the slop, never more than the cap.
+                const double C =
+                    std::clamp(s.baumgarte * (sep + s.linearSlop), -s.maxCorrection, 0.0);
+                const double rnA = cross(rA, n), rnB = cross(rB, n);
+                const double k =
+                    c.invMassA + c.invMassB + c.invIA * rnA * rnA + c.invIB * rnB * rnB;
+                if (k <= 0 || C == 0.0)
+                    continue;
+                const Vec2 P = (-C / k) * n;
+                a.position -= c.invMassA * P;
+                a.angle -= c.invIA * cross(rA, P);
+                b.position += c.invMassB * P;
+                b.angle += c.invIB * cross(rB, P);
+            }
         }
+        if (worst >= -3.0 * s.linearSlop)
+            break;
     }
-    return worst >= -3.0 * m_settings.linearSlop;
+    return made;
 }
 
 } // namespace rigidlab::physics

@@ -1,5 +1,10 @@
 #pragma once
 // Private: stage 5 of a step, collision response on the contacts found this step.
+//
+// The solver works on packed copies of what it needs (velocities, inverse masses, positions)
+// and on constraints that hold body indices, not on the bodies themselves: a body is a large
+// struct, and the iterations touch every contact ten times a step. The buffers live as long
+// as the world's scratch space, so that a step allocates nothing once the scene has settled.
 
 #include "rigidlab/physics/body.h"
 #include "rigidlab/physics/contact.h"
@@ -11,12 +16,12 @@ namespace rigidlab::physics {
 
 class ContactSolver {
 public:
+    /// Takes this step's contacts. Only contacts with an awake dynamic body are solved.
     /// startVelocity / startAngularVelocity: each body's velocities at the start of the step,
     /// before forces, so that a bounce can be timed within the step.
-    ContactSolver(std::vector<Contact>& contacts, std::vector<Body>& bodies,
-                  const ContactSettings& settings, double dt,
-                  const std::vector<Vec2>& startVelocity,
-                  const std::vector<double>& startAngularVelocity);
+    void begin(std::vector<Contact>& contacts, std::vector<Body>& bodies,
+               const ContactSettings& settings, double dt, const std::vector<Vec2>& startVelocity,
+               const std::vector<double>& startAngularVelocity);
 
     /// Seed impulse: one impulse per contact point, in order, with the full denominator
     /// 1/mA + 1/mB + (rA x n)^2/IA + (rB x n)^2/IB and Coulomb friction.
@@ -26,52 +31,77 @@ public:
     /// and clamping normal (>= 0) and friction (|t| <= mu n) impulses.
     void solveSequential(int iterations, bool warmStart);
 
-    /// One pass of position correction (non-linear Gauss-Seidel on the separations).
-    /// Returns true when every contact is within the allowed penetration.
-    bool solvePositions();
+    /// Both solvers end by writing the velocities back to the bodies and the accumulated
+    /// impulses to the contacts.
 
     /// Whether any impulse was applied this step.
     bool appliedImpulse() const;
     /// For each body, the fraction of the step that passed before its first bounce (0 when it
     /// rests or was already touching). A velocity change at that moment moves the body by
     /// (1 - fraction) dt times the change by the end of the step.
-    std::vector<double> impactFractions() const;
+    const std::vector<double>& impactFractions();
+
+    /// Position correction (non-linear Gauss-Seidel on the separations): at most `passes`
+    /// passes, fewer once every contact is within the allowed penetration. Moves the bodies.
+    /// Returns the passes made.
+    int solvePositions(int passes);
+
+    /// Contacts solved this step (those with an awake dynamic body).
+    int constraintCount() const { return static_cast<int>(m_constraints.size()); }
 
 private:
+    /// What the velocity iterations read and write for one body.
+    struct Velocity {
+        Vec2 v = Vec2::Zero(); ///< [m/s]
+        double w = 0;          ///< [rad/s]
+    };
     struct Point {
         Vec2 rA = Vec2::Zero(), rB = Vec2::Zero(); ///< lever arms [m]
         double normalMass = 0;                     ///< 1 / K along the normal [kg]
         double tangentMass = 0;                    ///< 1 / K along the tangent [kg]
         double bias = 0;                           ///< target normal velocity [m/s]
-        bool closes = false;                       ///< touching, or the gap closes within this step
-        double impact = 0; ///< fraction of the step before a bounce, 0 if no bounce
+        double normalImpulse = 0;                  ///< accumulated [N s]
+        double tangentImpulse = 0;                 ///< accumulated [N s]
+        double impact = 0;   ///< fraction of the step before a bounce, 0 if no bounce
+        bool closes = false; ///< touching, or the gap closes within this step
     };
     struct Constraint {
         int contact = 0;
+        int a = 0, b = 0; ///< body indices
+        double invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
+        double friction = 0;
         Vec2 normal = Vec2::Zero();
         Vec2 tangent = Vec2::Zero();
         int count = 0;
-        Point p[2];
         bool block = false; ///< two points solved together
-        Eigen::Matrix2d k = Eigen::Matrix2d::Zero();
-        Eigen::Matrix2d normalMassBlock = Eigen::Matrix2d::Zero();
+        Point p[2];
+        /// The 2x2 normal mass matrix K and its inverse (block solver).
+        double k11 = 0, k12 = 0, k22 = 0, m11 = 0, m12 = 0, m22 = 0;
     };
     /// threshold: approaches slower than this do not bounce [m/s].
     void prepare(double threshold);
     void warmStart();
-    void solveFriction(Constraint& c);
     void solveFrictionPoint(Constraint& c, int i);
     void solveNormalPoint(Constraint& c, int i);
     void solveNormalBlock(Constraint& c);
     double normalVelocity(const Constraint& c, int i) const;
+    /// Velocities and impulses back to the bodies and contacts.
+    void store();
+    const Rotation& rotation(int body);
 
-    std::vector<Contact>& m_contacts;
-    std::vector<Body>& m_bodies;
-    const ContactSettings& m_settings;
-    double m_dt;
-    const std::vector<Vec2>& m_startVelocity;
-    const std::vector<double>& m_startAngularVelocity;
+    std::vector<Contact>* m_contacts = nullptr;
+    std::vector<Body>* m_bodies = nullptr;
+    const ContactSettings* m_settings = nullptr;
+    double m_dt = 0;
+    const std::vector<Vec2>* m_startVelocity = nullptr;
+    const std::vector<double>* m_startAngularVelocity = nullptr;
+
     std::vector<Constraint> m_constraints;
+    std::vector<Velocity> m_velocity; ///< per body
+    std::vector<double> m_impact;     ///< per body, see impactFractions()
+    std::vector<Rotation> m_rotation; ///< per body, valid where m_rotationStamp == m_stamp
+    std::vector<unsigned> m_rotationStamp;
+    unsigned m_stamp = 0;
 };
 
 } // namespace rigidlab::physics

@@ -12,6 +12,7 @@
 
 #include "broad_phase.h"
 #include "contact_solver.h"
+#include "cpu_state.h"
 #include "diagnostics_compute.h"
 #include "dynamics.h"
 
@@ -28,6 +29,7 @@ struct World::Scratch {
     Eigen::VectorXd q, v;
     std::vector<Vec2> velocityBefore, velocityAtStart;
     std::vector<double> angularVelocityBefore, angularVelocityAtStart;
+    ContactSolver solver;
 };
 
 World::World(const WorldDef& def)
@@ -165,6 +167,7 @@ void World::step()
         return; // stopped with a diagnosis; see divergence()
     if (!m_energyStart)
         rememberStartEnergy();
+    clearUpperVectorState();
     // Velocities at the start of the step, to time bounces within it.
     Scratch& s = *m_scratch;
     s.velocityAtStart.resize(m_bodies.size());
@@ -292,8 +295,9 @@ void World::solveContacts()
     }
     const double before = kineticEnergy(m_bodies);
 
-    ContactSolver solver(m_contacts, m_bodies, m_contactSettings, h, s.velocityAtStart,
-                         s.angularVelocityAtStart);
+    ContactSolver& solver = s.solver;
+    solver.begin(m_contacts, m_bodies, m_contactSettings, h, s.velocityAtStart,
+                 s.angularVelocityAtStart);
     if (m_def.solver == SolverKind::SeedImpulse)
         solver.solveSeed();
     else
@@ -303,7 +307,7 @@ void World::solveContacts()
     // moves by dt times the change (for symplectic Euler exactly Box2D's order: solve the
     // velocities, then integrate the positions). A bounce timed at the fraction f of the step
     // moves it by (1 - f) dt times the change.
-    const std::vector<double> impact = solver.impactFractions();
+    const std::vector<double>& impact = solver.impactFractions();
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         Body& b = m_bodies[i];
         if (!b.isDynamic())
@@ -319,9 +323,7 @@ void World::solveContacts()
         });
     m_collisionLoss += before - kineticEnergy(m_bodies);
 
-    for (int i = 0; i < m_contactSettings.positionIterations; ++i)
-        if (solver.solvePositions())
-            break;
+    solver.solvePositions(m_contactSettings.positionIterations);
     if (!m_joints.empty())
         withState(
             [](Dynamics& d, Eigen::VectorXd& q, Eigen::VectorXd&) { d.projectJointPositions(q); });

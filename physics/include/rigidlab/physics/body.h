@@ -55,8 +55,16 @@ struct Body {
     Vec2 force = Vec2::Zero();
     double torque = 0.0;
 
+    /// A dynamic body asleep (false) rests with its island: neither integrated nor solved until
+    /// a contact, a force or World::wakeBody wakes it (islands.cpp). Static and kinematic
+    /// bodies never sleep.
+    bool awake = true;
+    double sleepTime = 0.0; ///< how long it has been nearly at rest [s]
+
     bool isDynamic() const { return type == BodyType::Dynamic; }
     bool moves() const { return type != BodyType::Static; }
+    /// Moved by this step's forces and contacts: dynamic and awake.
+    bool isActive() const { return type == BodyType::Dynamic && awake; }
 
     /// Body-to-world placement of the body origin (the frame shape vertices live in).
     Transform transform() const
