@@ -2,6 +2,7 @@
 
 #include "json_reader.h"
 
+#include "rigidlab/lessons/lesson.h"
 #include "rigidlab/lessons/scene_loader.h"
 
 #include <QJsonObject>
@@ -36,6 +37,30 @@ DocumentCheck checkScene(const QJsonObject& root, const QString& sourceName)
     return check;
 }
 
+DocumentCheck checkLesson(const QJsonObject& root, const QString& sourceName)
+{
+    LessonLoadResult loaded = loadLessonObject(root, sourceName);
+    DocumentCheck check;
+    check.kind = QStringLiteral("lesson");
+    check.ok = loaded.ok;
+    check.error = loaded.error;
+    check.warnings = loaded.warnings;
+    if (loaded.ok) {
+        qsizetype questions = 0;
+        qsizetype plots = 0;
+        for (const LessonStep& step : loaded.lesson.steps) {
+            questions += static_cast<qsizetype>(step.questions.size());
+            plots += step.plots.size();
+        }
+        check.summary =
+            QStringLiteral("lesson \"%1\": ").arg(loaded.lesson.title) +
+            countNoun(static_cast<qsizetype>(loaded.lesson.steps.size()), u"step", u"steps") +
+            QStringLiteral(", ") + countNoun(questions, u"question", u"questions") +
+            QStringLiteral(", ") + countNoun(plots, u"plot", u"plots");
+    }
+    return check;
+}
+
 /// A kind of document: the top-level key that holds its format version, and its checker.
 struct DocumentKind {
     QStringView versionKey;
@@ -43,9 +68,10 @@ struct DocumentKind {
     DocumentCheck (*check)(const QJsonObject& root, const QString& sourceName);
 };
 
-// A new kind of document (a lesson, say) is one more row here.
+// A new kind of document is one more row here.
 constexpr std::array kKinds = {
     DocumentKind{u"rigidlab", u"a scene", &checkScene},
+    DocumentKind{u"rigidlab-lesson", u"a lesson", &checkLesson},
 };
 
 /// The largest document of any kind [bytes].

@@ -56,8 +56,11 @@ private:
     bool readVersion(const QJsonObject& root);
     bool readWorld(const QJsonObject& root);
     bool readBodies(const QJsonObject& root);
-    bool readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def);
-    bool readShape(const QJsonValue& value, const QString& place, physics::Shape& shape);
+    bool readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
+                  std::vector<Vec2>& original);
+    /// Reads a shape; `original` gets the file's vertices of a polygon replaced by its hull.
+    bool readShape(const QJsonValue& value, const QString& place, physics::Shape& shape,
+                   std::vector<Vec2>& original);
     bool readSprings(const QJsonObject& root);
     bool readSpring(const QJsonValue& value, const QString& place);
     bool readJoints(const QJsonObject& root);
@@ -207,18 +210,22 @@ bool SceneReader::readBodies(const QJsonObject& root)
                                     .arg(kMaxBodies));
     }
     m_scene.bodies.reserve(static_cast<size_t>(bodies.size()));
+    m_scene.originalVertices.reserve(static_cast<size_t>(bodies.size()));
     for (qsizetype i = 0; i < bodies.size(); ++i) {
         physics::BodyDef def;
-        if (!readBody(bodies[i], indexPlace(place, i), def)) {
+        std::vector<Vec2> original;
+        if (!readBody(bodies[i], indexPlace(place, i), def, original)) {
             return false;
         }
         m_ids.insert(QString::fromStdString(def.name), static_cast<BodyId>(i));
         m_scene.bodies.push_back(std::move(def));
+        m_scene.originalVertices.push_back(std::move(original));
     }
     return true;
 }
 
-bool SceneReader::readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def)
+bool SceneReader::readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
+                           std::vector<Vec2>& original)
 {
     QJsonObject body;
     QString id;
@@ -270,7 +277,7 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
     if (!body.contains(u"shape")) {
         return m_in.fail(joinPlace(place, u"shape"), QStringLiteral("required, but missing"));
     }
-    if (!readShape(body.value(u"shape"), joinPlace(place, u"shape"), def.shape)) {
+    if (!readShape(body.value(u"shape"), joinPlace(place, u"shape"), def.shape, original)) {
         return false;
     }
     if (body.contains(u"density") && body.contains(u"mass")) {
@@ -311,7 +318,8 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
     return true;
 }
 
-bool SceneReader::readShape(const QJsonValue& value, const QString& place, physics::Shape& shape)
+bool SceneReader::readShape(const QJsonValue& value, const QString& place, physics::Shape& shape,
+                            std::vector<Vec2>& original)
 {
     QJsonObject object;
     QString type;
@@ -371,6 +379,7 @@ bool SceneReader::readShape(const QJsonValue& value, const QString& place, physi
         }
         if (!built.value().warning.empty()) {
             m_in.warn(at, QString::fromStdString(built.value().warning));
+            original = vertices;
         }
         shape = physics::makePolygonShape(std::move(built).value().polygon);
         return true;

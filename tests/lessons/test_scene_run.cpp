@@ -66,7 +66,8 @@ void TestLessons::validateRecognisesScenes()
     const lessons::DocumentCheck other = lessons::checkDocumentFile(path);
     QVERIFY(!other.ok);
     QCOMPARE(other.error, path + QStringLiteral(": not a RigidLab document: no format version key "
-                                                "(\"rigidlab\" for a scene)"));
+                                                "(\"rigidlab\" for a scene, "
+                                                "\"rigidlab-lesson\" for a lesson)"));
 }
 
 void TestLessons::runWritesHeadersAndRows()

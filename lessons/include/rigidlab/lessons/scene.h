@@ -24,6 +24,10 @@ struct Scene {
     /// Ends refer to bodies by index into `bodies`, or physics::kWorld.
     std::vector<physics::SpringDef> springs;
     std::vector<physics::PinJointDef> joints;
+    /// Per body (parallel to `bodies`): the vertices the file gave for a polygon that was not
+    /// convex and was replaced by its convex hull, body-local [m]; empty for every other body.
+    /// The SAT lesson draws them to show where detection with the hull is wrong.
+    std::vector<std::vector<physics::Vec2>> originalVertices;
 
     /// The index of the body with this id, or nullopt.
     std::optional<physics::BodyId> bodyIndex(const QString& id) const;

@@ -1,0 +1,88 @@
+// Judging a student's answer against what the simulation measured, in words a student reads.
+
+#include "rigidlab/lessons/measurements.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigidlab::lessons {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("rigidlab::lessons::judge", text);
+}
+
+/// "first" ... "tenth", then "11th", "21st", "22nd", "23rd".
+QString ordinal(int n)
+{
+    static const char* const kWords[] = {"first", "second",  "third",  "fourth", "fifth",
+                                         "sixth", "seventh", "eighth", "ninth",  "tenth"};
+    if (n >= 1 && n <= 10) {
+        return tr(kWords[n - 1]);
+    }
+    const int lastTwo = n % 100;
+    const int last = n % 10;
+    const char* suffix = "th";
+    if (lastTwo < 11 || lastTwo > 13) {
+        suffix = last == 1 ? "st" : last == 2 ? "nd" : last == 3 ? "rd" : "th";
+    }
+    return QString::number(n) + QLatin1StringView(suffix);
+}
+
+/// A number as a student would write it: enough significant digits to tell the tolerance
+/// apart (three at the usual 5 %), no rounding noise, no "-0".
+QString formatValue(double value, const Question& q)
+{
+    int digits = 3;
+    if (q.tolerance > 0) {
+        digits = std::clamp(static_cast<int>(std::ceil(-std::log10(q.tolerance))) + 1, 3, 8);
+    }
+    if (std::abs(value) < 1e-12) {
+        value = 0;
+    }
+    QString text = QString::number(value, 'g', digits);
+    if (text.contains(u'e')) { // 1e-05 reads badly; fixed notation with the same digits
+        const int decimals = std::clamp(
+            digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 12);
+        text = QString::number(value, 'f', std::abs(value) < 1 ? decimals : 0);
+    }
+    return q.unit.isEmpty() ? text : text + u' ' + q.unit;
+}
+
+QString notYet(const Measure& m)
+{
+    if (m.kind == Measure::Kind::Apex) {
+        return tr("Run the simulation past the top of the %1 bounce first.").arg(ordinal(m.n));
+    }
+    return tr("Run the simulation until t = %1 s first.").arg(QString::number(m.time, 'g', 6));
+}
+
+} // namespace
+
+Verdict judge(const Question& q, double answer, const Measurements& m, const Scene& scene)
+{
+    Verdict verdict;
+    const std::optional<double> value = m.value(q.measure, scene);
+    if (!value) {
+        verdict.message = notYet(q.measure);
+        return verdict;
+    }
+    verdict.measured = true;
+    verdict.value = *value;
+    if (!std::isfinite(answer)) {
+        verdict.message = tr("Type a number first.");
+        return verdict;
+    }
+    verdict.right =
+        std::abs(answer - *value) <= q.tolerance * std::abs(*value) + q.absoluteTolerance;
+    verdict.message = (verdict.right ? tr("Right: the simulation measured %1 (you said %2).")
+                                     : tr("Not quite: the simulation measured %1 (you said %2)."))
+                          .arg(formatValue(*value, q), formatValue(answer, q));
+    return verdict;
+}
+
+} // namespace rigidlab::lessons

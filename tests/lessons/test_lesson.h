@@ -1,0 +1,111 @@
+#pragma once
+// Tests of lessons, one executable: the lesson loader and its checks
+// (test_lesson_loader.cpp), and what the lessons measure, judge and claim about the physics
+// (test_lesson_physics.cpp). Shared helpers here.
+
+#include "rigidlab/lessons/lesson.h"
+#include "rigidlab/lessons/measurements.h"
+
+#include <QDir>
+#include <QFile>
+#include <QObject>
+#include <QString>
+#include <QTest>
+
+namespace rigidlab::test {
+
+inline const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
+
+inline QString lessonPath(const char* name)
+{
+    return QDir(kLessonsDir).filePath(QLatin1StringView(name) + QStringLiteral(".json"));
+}
+
+/// A shipped lesson, loaded; the test fails (and returns an empty lesson) if it does not load.
+inline lessons::Lesson shippedLesson(const char* name)
+{
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(lessonPath(name));
+    if (!loaded.ok)
+        qWarning("%s", qPrintable(loaded.error));
+    return loaded.lesson;
+}
+
+inline void writeFile(const QString& path, const QByteArray& bytes)
+{
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    QCOMPARE(file.write(bytes), bytes.size());
+}
+
+/// A step's worlds run side by side for `seconds`, each observed by its Measurements (the
+/// questions' measures watched), as the window runs them.
+struct StepRun {
+    std::vector<physics::World> worlds;
+    std::vector<lessons::Measurements> measurements;
+
+    explicit StepRun(const lessons::LessonStep& step) : worlds(lessons::buildStepWorlds(step))
+    {
+        std::vector<lessons::Measure> watched;
+        for (const lessons::Question& q : step.questions)
+            watched.push_back(q.measure);
+        measurements.resize(worlds.size());
+        for (std::size_t i = 0; i < worlds.size(); ++i) {
+            worlds[i].updateDiagnostics();
+            measurements[i].reset(worlds[i], watched);
+        }
+    }
+    /// Runs every world `seconds` further; `each(i)` is called after every step of world i.
+    template <typename Each> void run(double seconds, Each&& each)
+    {
+        const auto steps = static_cast<long long>(std::llround(seconds / worlds[0].def().dt));
+        for (long long n = 0; n < steps; ++n) {
+            for (std::size_t i = 0; i < worlds.size(); ++i) {
+                worlds[i].step();
+                measurements[i].observe(worlds[i]);
+                each(i);
+            }
+        }
+    }
+    void run(double seconds)
+    {
+        run(seconds, [](std::size_t) {});
+    }
+};
+
+} // namespace rigidlab::test
+
+class TestLesson : public QObject {
+    Q_OBJECT
+
+private slots:
+    // test_lesson_loader.cpp
+    void shippedLessonsLoad_data();
+    void shippedLessonsLoad();
+    void validateRecognisesLessons();
+    void rejectsBadLesson_data();
+    void rejectsBadLesson();
+    void rejectsSymbolicLinkOutOfFolder();
+    void sceneFileErrorsCarryBothPlaces();
+    void inlineSceneErrorsContinueThePlace();
+    void everyField();
+    void formatDocumentExampleLoads();
+    void originalVerticesOfNonConvexPolygon();
+    void buildStepWorldsMakesOneWorldPerVariant();
+    void applySettingsOverridesScene();
+
+    // test_lesson_physics.cpp
+    void judgeApexRightAndWrong();
+    void judgeTimedValue();
+    void judgeMessages_data();
+    void judgeMessages();
+    void rewindForgetsLaterEvents();
+    void collisionPredictionsOfOffCentreHit();
+    void shippedQuestionsHaveTheirTextbookAnswers_data();
+    void shippedQuestionsHaveTheirTextbookAnswers();
+    void restitutionBounceRatiosAreESquared();
+    void energyDriftClaims();
+    void pendulumEulerGoesOverTheTop();
+    void smallerStepShrinksDrift();
+    void sequentialImpulseStackMovesLess();
+    void billiardsBreakConservesMomentum();
+};

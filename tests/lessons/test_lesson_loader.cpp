@@ -1,0 +1,502 @@
+// The lesson loader: the shipped lessons, every check with its place and message, scene paths
+// that may not leave the lesson's folder, and the step's worlds.
+
+#include "test_lesson.h"
+
+#include "rigidlab/lessons/document.h"
+
+#include <QFileInfo>
+#include <QRegularExpression>
+#include <QTemporaryDir>
+
+using namespace rigidlab;
+using namespace rigidlab::test;
+
+namespace {
+
+/// A scene with a ball, a floor and a box, as JSON.
+const char* kScene =
+    R"({"rigidlab": 1, "bodies": [)"
+    R"({"id": "ball", "shape": {"type": "circle", "radius": 0.1}, "position": [0, 1]},)"
+    R"({"id": "floor", "type": "static", "shape": {"type": "box", "width": 4, "height": 0.2}},)"
+    R"({"id": "box", "shape": {"type": "box", "width": 0.5, "height": 0.5}, "position": [2, 2]},)"
+    R"({"id": "wedge", "shape": {"type": "polygon", "vertices": [[0, 0], [1, 0], [0, 1]]}}]})";
+
+/// A lesson with one step holding the inline scene and `fields`.
+QByteArray oneStep(const char* fields)
+{
+    return QByteArray(
+               R"({"rigidlab-lesson": 1, "title": "t", "steps": [{"title": "s", "scene": )") +
+           kScene + (fields[0] ? QByteArray(", ") + fields : QByteArray()) + "}]}";
+}
+
+/// A lesson with one step whose scene is the file at `scene`.
+QByteArray stepWithScene(const char* scene)
+{
+    return QByteArray(
+               R"({"rigidlab-lesson": 1, "title": "t", "steps": [{"title": "s", "scene": )") +
+           scene + "}]}";
+}
+
+} // namespace
+
+void TestLesson::shippedLessonsLoad_data()
+{
+    QTest::addColumn<QString>("path");
+    const QStringList required = {
+        QStringLiteral("energy_drift"), QStringLiteral("separating_axis"),
+        QStringLiteral("restitution"),  QStringLiteral("billiards_momentum"),
+        QStringLiteral("stacks"),
+    };
+    const QStringList files =
+        QDir(kLessonsDir).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    for (const QString& name : required)
+        QVERIFY2(files.contains(name + QStringLiteral(".json")), qPrintable(name));
+    for (const QString& file : files)
+        QTest::newRow(qPrintable(file)) << QDir(kLessonsDir).filePath(file);
+}
+
+void TestLesson::shippedLessonsLoad()
+{
+    QFETCH(QString, path);
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    const lessons::Lesson& lesson = loaded.lesson;
+    QCOMPARE(lesson.path, QFileInfo(path).absoluteFilePath());
+    QVERIFY(!lesson.title.isEmpty());
+    QVERIFY2(lesson.summary.size() >= 80, "a summary a teacher can use");
+    QVERIFY(!lesson.level.isEmpty());
+    QVERIFY(lesson.minutes > 0);
+    QVERIFY(!lesson.goals.isEmpty());
+    for (const lessons::LessonStep& step : lesson.steps) {
+        QVERIFY2(step.text.size() >= 200, qPrintable(step.title));
+        QVERIFY(!step.scene.bodies.empty());
+        // Scene files stay inside the lesson's folder.
+        if (!step.scenePath.isEmpty())
+            QVERIFY(step.scenePath.startsWith(QFileInfo(kLessonsDir).absoluteFilePath() + u'/'));
+        // A short run of every world stays finite.
+        std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
+        QCOMPARE(static_cast<int>(worlds.size()), step.compare ? step.compare->count() : 1);
+        for (physics::World& w : worlds) {
+            for (int i = 0; i < 100; ++i)
+                w.step();
+            QVERIFY(!w.divergence());
+        }
+    }
+    // The only warning a shipped lesson may give is the SAT lesson's non-convex cup.
+    for (const QString& w : loaded.warnings)
+        QVERIFY2(w.contains(QStringLiteral("sat_non_convex.json")), qPrintable(w));
+}
+
+void TestLesson::validateRecognisesLessons()
+{
+    const lessons::DocumentCheck check = lessons::checkDocumentFile(lessonPath("restitution"));
+    QVERIFY2(check.ok, qPrintable(check.error));
+    QCOMPARE(check.kind, QStringLiteral("lesson"));
+    QCOMPARE(check.summary,
+             QStringLiteral("lesson \"Bounces and collisions: the coefficient of restitution\": "
+                            "4 steps, 6 questions, 7 plots"));
+
+    const lessons::DocumentCheck sat = lessons::checkDocumentFile(lessonPath("separating_axis"));
+    QVERIFY2(sat.ok, qPrintable(sat.error));
+    QCOMPARE(sat.warnings.size(), 1);
+    QVERIFY(sat.warnings[0].contains(QStringLiteral("separating_axis.json: steps[3].scene: ")));
+    QVERIFY(sat.warnings[0].contains(QStringLiteral("replaced by its convex hull")));
+}
+
+void TestLesson::rejectsBadLesson_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("message");
+
+    const QString steps0 = QStringLiteral("steps[0].");
+    QTest::newRow("broken-json")
+        << QByteArray("{\"rigidlab-lesson\": 1,\n \"title\": \"x\" \"steps\": []}")
+        << "line 2, column 16: unterminated object: a ',' or the closing '}' is missing";
+    QTest::newRow("version-missing")
+        << QByteArray(R"({"title": "x", "steps": []})")
+        << R"(rigidlab-lesson: missing: a lesson file starts with "rigidlab-lesson": 1 (the format version))";
+    QTest::newRow("version-2") << QByteArray(R"({"rigidlab-lesson": 2})")
+                               << "rigidlab-lesson: unsupported format version 2 (this RigidLab "
+                                  "reads version 1)";
+    QTest::newRow("unknown-key-top")
+        << QByteArray(R"({"rigidlab-lesson": 1, "titel": "x"})")
+        << "titel: unknown key (allowed here: rigidlab-lesson, title, summary, level, minutes, "
+           "goals, steps)";
+    QTest::newRow("title-missing")
+        << QByteArray(R"({"rigidlab-lesson": 1, "steps": []})") << "title: required, but missing";
+    QTest::newRow("minutes-fraction")
+        << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "minutes": 2.5})")
+        << "minutes: must be a whole number from 0 to 1000, got 2.5";
+    QTest::newRow("goal-empty")
+        << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "goals": ["a", ""]})")
+        << "goals[1]: must be a non-empty string \"...\", got \"\"";
+    QTest::newRow("no-steps") << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "steps": []})")
+                              << "steps: a lesson needs 1 to 100 steps, got 0";
+    QTest::newRow("unknown-key-step")
+        << oneStep(R"("colour": "red")")
+        << steps0 + "colour: unknown key (allowed here: title, text, scene, settings, compare, "
+                    "plots, overlays, panels, allow, sat, questions, exportTime, autoplay)";
+    QTest::newRow("scene-missing")
+        << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "steps": [{"title": "s"}]})")
+        << steps0 + "scene: required, but missing (a scene object, or the path of a scene file)";
+    QTest::newRow("text-number") << oneStep(R"("text": 5)")
+                                 << steps0 + "text: must be a string or an array of strings, got 5";
+    QTest::newRow("bad-body-in-question")
+        << oneStep(R"("questions": [{"prompt": "p", "measure": {"kind": "apex", "body": "bal"}}])")
+        << steps0 + R"(questions[0].measure.body: no body with id "bal")";
+    QTest::newRow("static-body-measured")
+        << oneStep(
+               R"("questions": [{"prompt": "p", "measure": {"kind": "speed", "body": "floor", "time": 1}}])")
+        << steps0 + R"(questions[0].measure.body: body "floor" is static: it never moves)";
+    QTest::newRow("measure-unknown-kind")
+        << oneStep(
+               R"("questions": [{"prompt": "p", "measure": {"kind": "height", "body": "ball"}}])")
+        << steps0 + R"(questions[0].measure.kind: unknown measure "height" (expected apex, speed, )"
+                    "velocity-x, velocity-y, angular-velocity, position-x, position-y, "
+                    "energy-drift, momentum-x, momentum-y)";
+    QTest::newRow("measure-key-of-other-kind")
+        << oneStep(
+               R"("questions": [{"prompt": "p", "measure": {"kind": "apex", "body": "ball", "time": 2}}])")
+        << steps0 + "questions[0].measure.time: unknown key (allowed here: kind, body, n, above)";
+    QTest::newRow("measure-time-missing")
+        << oneStep(R"("questions": [{"prompt": "p", "measure": {"kind": "energy-drift"}}])")
+        << steps0 + "questions[0].measure.time: required, but missing";
+    QTest::newRow("tolerances-zero")
+        << oneStep(
+               R"("questions": [{"prompt": "p", "measure": {"kind": "momentum-x", "time": 1}, "tolerance": 0}])")
+        << steps0 + "questions[0].tolerance: 0, and so is absoluteTolerance: no typed answer "
+                    "would ever be right";
+    QTest::newRow("path-escaping-folder")
+        << stepWithScene(R"("../scenes/ball_drop.json")")
+        << steps0 +
+               R"(scene: must not leave the lesson's folder (no ".."), got "../scenes/ball_drop.json")";
+    QTest::newRow("path-escaping-inside")
+        << stepWithScene(R"("scenes/../../x.json")")
+        << steps0 +
+               R"(scene: must not leave the lesson's folder (no ".."), got "scenes/../../x.json")";
+    QTest::newRow("path-absolute")
+        << stepWithScene(R"("/etc/passwd")")
+        << steps0 + R"(scene: must be a path relative to the lesson's folder, got "/etc/passwd")";
+    QTest::newRow("path-backslash")
+        << stepWithScene(R"("scenes\\ok.json")")
+        << steps0 + R"(scene: use '/' between folders, got "scenes\ok.json")";
+    QTest::newRow("unknown-plot")
+        << oneStep(R"("plots": ["energies"])")
+        << steps0 + R"(plots[0]: unknown plot "energies" (expected energy, momentum, drift, )"
+                    "compare-energy, compare-drift)";
+    QTest::newRow("plot-twice") << oneStep(R"("plots": ["energy", "energy"])")
+                                << steps0 + R"(plots[1]: "energy" is listed twice)";
+    QTest::newRow("compare-plot-without-compare")
+        << oneStep(R"("plots": ["compare-drift"])")
+        << steps0 +
+               R"(plots[0]: "compare-drift" plots the worlds of "compare", and this step has none)";
+    QTest::newRow("unknown-overlay")
+        << oneStep(R"("overlays": ["forces"])")
+        << steps0 + R"(overlays[0]: unknown overlay "forces" (expected velocities, contacts, )"
+                    "boxes, centres, trails, springs)";
+    QTest::newRow("unknown-panel")
+        << oneStep(R"("panels": ["table"])")
+        << steps0 + R"(panels[0]: unknown panel "table" (expected controls, inspector, sat, )"
+                    "bounces, collision)";
+    QTest::newRow("unknown-control")
+        << oneStep(R"("allow": ["mass"])")
+        << steps0 + R"(allow[0]: unknown control "mass" (expected integrator, dt, solver, )"
+                    "iterations, restitution, friction, gravity, timeScale)";
+    QTest::newRow("sat-panel-without-pair")
+        << oneStep(R"("panels": ["sat"])")
+        << steps0 +
+               R"(panels[0]: the "sat" panel needs the pair it looks at: add "sat": {"a": ID, "b": ID} to the step)";
+    QTest::newRow("sat-circle")
+        << oneStep(R"("sat": {"a": "ball", "b": "box"})")
+        << steps0 + R"(sat.a: body "ball" is a circle: the separating axis test steps through )"
+                    "polygons (boxes and polygons)";
+    QTest::newRow("sat-same-body")
+        << oneStep(R"("sat": {"a": "box", "b": "box"})")
+        << steps0 + R"(sat.b: the same body as "a": the test needs two bodies)";
+    QTest::newRow("compare-both")
+        << oneStep(
+               R"("compare": {"integrators": ["euler", "rk4"], "solvers": ["seed-impulse", "sequential-impulse"]})")
+        << steps0 + R"(compare.solvers: compare "integrators" or "solvers", not both)";
+    QTest::newRow("compare-one") << oneStep(R"("compare": {"integrators": ["euler"]})")
+                                 << steps0 + "compare.integrators: compares 2 to 6 worlds, got 1";
+    QTest::newRow("compare-unknown-integrator")
+        << oneStep(R"("compare": {"integrators": ["euler", "rk5"]})")
+        << steps0 + R"(compare.integrators[1]: unknown integrator "rk5" (expected euler, )"
+                    "symplectic-euler, verlet, rk4)";
+    QTest::newRow("compare-and-setting")
+        << oneStep(
+               R"("settings": {"integrator": "rk4"}, "compare": {"integrators": ["euler", "rk4"]})")
+        << steps0 + "compare.integrators: settings.integrator is given too: the main world runs "
+                    "the first of this list, so leave settings.integrator out";
+    QTest::newRow("settings-dt") << oneStep(R"("settings": {"dt": 2})")
+                                 << steps0 + "settings.dt: must be from 1e-07 to 1 s, got 2";
+    QTest::newRow("settings-restitution")
+        << oneStep(R"("settings": {"restitution": 1.5})")
+        << steps0 + "settings.restitution: must be a number from 0 to 1, got 1.5";
+    QTest::newRow("settings-time-scale")
+        << oneStep(R"("settings": {"timeScale": 10})")
+        << steps0 + "settings.timeScale: must be from 0.1 to 4, got 10";
+    QTest::newRow("settings-gravity") << oneStep(R"("settings": {"gravity": 1})")
+                                      << steps0 + "settings.gravity: must be true or false, got 1";
+    QTest::newRow("export-time") << oneStep(R"("exportTime": 1000)")
+                                 << steps0 + "exportTime: must be at most 600 s, got 1000";
+    QTest::newRow("export-steps")
+        << oneStep(R"("settings": {"dt": 1e-7}, "exportTime": 10)")
+        << steps0 + "exportTime: 10 s at a step of 1e-07 s is more than 10000000 steps";
+}
+
+void TestLesson::rejectsBadLesson()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, message);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
+    writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene);
+    const QString path = dir.filePath(QStringLiteral("lesson.json"));
+    writeFile(path, json);
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
+    QVERIFY(!loaded.ok);
+    QCOMPARE(loaded.error, path + QStringLiteral(": ") + message);
+    // validate says the same for a lesson it recognises.
+    if (json.contains("\"rigidlab-lesson\"") && !json.contains('\n')) {
+        const lessons::DocumentCheck check = lessons::checkDocumentFile(path);
+        QVERIFY(!check.ok);
+        QCOMPARE(check.error, loaded.error);
+    }
+}
+
+void TestLesson::rejectsSymbolicLinkOutOfFolder()
+{
+    QTemporaryDir outside;
+    QTemporaryDir dir;
+    QVERIFY(outside.isValid() && dir.isValid());
+    writeFile(outside.filePath(QStringLiteral("secret.json")), kScene);
+    QVERIFY(QFile::link(outside.filePath(QStringLiteral("secret.json")),
+                        dir.filePath(QStringLiteral("link.json"))));
+    const QString path = dir.filePath(QStringLiteral("lesson.json"));
+    writeFile(path, stepWithScene(R"("link.json")"));
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
+    QVERIFY(!loaded.ok);
+    QCOMPARE(loaded.error,
+             path + QStringLiteral(R"(: steps[0].scene: "link.json" leads out of the lesson's )"
+                                   "folder (through a symbolic link)"));
+
+    // A scene file that is missing says so, with both places.
+    writeFile(path, stepWithScene(R"("scenes/none.json")"));
+    const lessons::LessonLoadResult missing = lessons::loadLessonFile(path);
+    QVERIFY(!missing.ok);
+    QVERIFY2(missing.error.startsWith(path + QStringLiteral(": steps[0].scene: ")) &&
+                 missing.error.contains(QStringLiteral("scenes/none.json: cannot read")),
+             qPrintable(missing.error));
+}
+
+void TestLesson::sceneFileErrorsCarryBothPlaces()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
+    writeFile(
+        dir.filePath(QStringLiteral("scenes/bad.json")),
+        R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": {"type": "circle", "radius": -1}}]})");
+    const QString path = dir.filePath(QStringLiteral("lesson.json"));
+    writeFile(path, stepWithScene(R"("scenes/bad.json")"));
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
+    QVERIFY(!loaded.ok);
+    QCOMPARE(loaded.error, path + QStringLiteral(": steps[0].scene: ") + dir.path() +
+                               QStringLiteral("/scenes/bad.json: bodies[0].shape.radius: must be "
+                                              "a positive number, got -1"));
+}
+
+void TestLesson::inlineSceneErrorsContinueThePlace()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("lesson.json"));
+    writeFile(
+        path,
+        stepWithScene(R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": )"
+                      R"({"type": "polygon", "vertices": [[0, 0], [1, 0], [0.2, 0.2], [0, 1]]}}, )"
+                      R"({"id": "c", "colour": 1}]})"));
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
+    QVERIFY(!loaded.ok);
+    QVERIFY2(loaded.error.startsWith(path + QStringLiteral(": steps[0].scene.bodies[1].colour: "
+                                                           "unknown key")),
+             qPrintable(loaded.error));
+    QCOMPARE(loaded.warnings.size(), 1);
+    QVERIFY2(loaded.warnings[0].startsWith(
+                 path + QStringLiteral(": steps[0].scene.bodies[0].shape.vertices: the polygon "
+                                       "is not convex")),
+             qPrintable(loaded.warnings[0]));
+}
+
+void TestLesson::everyField()
+{
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("lesson.json"));
+    writeFile(
+        path,
+        QByteArray(R"({"rigidlab-lesson": 1, "title": "T", "summary": "S", "level": "L", )"
+                   R"("minutes": 12, "goals": ["g1", "g2"], "steps": [{"title": "s", )"
+                   R"("text": ["a", "", "b"], "scene": )") +
+            kScene +
+            R"(, "settings": {"dt": 0.002, "solver": "seed-impulse", "iterations": 7, )"
+            R"("restitution": 0.25, "friction": 0.5, "gravity": false, "timeScale": 0.5}, )"
+            R"("compare": {"integrators": ["rk4", "euler"], "offset": [1, -2]}, )"
+            R"("plots": ["compare-energy", "momentum"], "overlays": ["trails"], )"
+            R"("panels": ["sat", "controls"], "allow": [], "sat": {"a": "box", "b": "wedge"}, )"
+            R"("questions": [{"prompt": "p", "measure": {"kind": "apex", "body": "ball", )"
+            R"("n": 3, "above": 0.1}, "unit": "m", "tolerance": 0.1, "absoluteTolerance": 0.01}, )"
+            R"({"prompt": "q", "measure": {"kind": "momentum-y", "time": 2.5}}], )"
+            R"("exportTime": 3, "autoplay": false}]})");
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    const lessons::Lesson& l = loaded.lesson;
+    QCOMPARE(l.title, QStringLiteral("T"));
+    QCOMPARE(l.summary, QStringLiteral("S"));
+    QCOMPARE(l.level, QStringLiteral("L"));
+    QCOMPARE(l.minutes, 12);
+    QCOMPARE(l.goals, (QStringList{QStringLiteral("g1"), QStringLiteral("g2")}));
+    QCOMPARE(l.steps.size(), std::size_t{1});
+    const lessons::LessonStep& s = l.steps[0];
+    QCOMPARE(s.text, QStringLiteral("a\n\nb"));
+    QVERIFY(s.scenePath.isEmpty());
+    QCOMPARE(s.scene.bodies.size(), std::size_t{4});
+    QVERIFY(!s.settings.integrator);
+    QCOMPARE(*s.settings.dt, 0.002);
+    QCOMPARE(*s.settings.solver, physics::SolverKind::SeedImpulse);
+    QCOMPARE(*s.settings.iterations, 7);
+    QCOMPARE(*s.settings.restitution, 0.25);
+    QCOMPARE(*s.settings.friction, 0.5);
+    QCOMPARE(*s.settings.gravity, false);
+    QCOMPARE(*s.settings.timeScale, 0.5);
+    QVERIFY(s.compare);
+    QCOMPARE(s.compare->count(), 2);
+    QCOMPARE(s.compare->label(0), QStringLiteral("rk4"));
+    QCOMPARE(s.compare->label(1), QStringLiteral("euler"));
+    QCOMPARE(s.compare->offset, physics::Vec2(1, -2));
+    QCOMPARE(s.plots, (QStringList{QStringLiteral("compare-energy"), QStringLiteral("momentum")}));
+    QCOMPARE(s.overlays, QStringList{QStringLiteral("trails")});
+    QCOMPARE(s.panels, (QStringList{QStringLiteral("sat"), QStringLiteral("controls")}));
+    QVERIFY(s.allow && s.allow->isEmpty());
+    QCOMPARE(*s.sat, std::pair(QStringLiteral("box"), QStringLiteral("wedge")));
+    QCOMPARE(s.questions.size(), std::size_t{2});
+    const lessons::Question& q = s.questions[0];
+    QCOMPARE(q.prompt, QStringLiteral("p"));
+    QCOMPARE(q.measure.kind, lessons::Measure::Kind::Apex);
+    QCOMPARE(q.measure.body, QStringLiteral("ball"));
+    QCOMPARE(q.measure.n, 3);
+    QCOMPARE(q.measure.above, 0.1);
+    QCOMPARE(q.unit, QStringLiteral("m"));
+    QCOMPARE(q.tolerance, 0.1);
+    QCOMPARE(q.absoluteTolerance, 0.01);
+    QCOMPARE(s.questions[1].measure.kind, lessons::Measure::Kind::MomentumY);
+    QCOMPARE(s.questions[1].measure.time, 2.5);
+    QCOMPARE(s.questions[1].tolerance, 0.05);
+    QCOMPARE(s.exportTime, 3.0);
+    QCOMPARE(s.autoplay, false);
+
+    // Defaults.
+    writeFile(path, oneStep(""));
+    const lessons::LessonLoadResult bare = lessons::loadLessonFile(path);
+    QVERIFY2(bare.ok, qPrintable(bare.error));
+    const lessons::LessonStep& d = bare.lesson.steps[0];
+    QVERIFY(d.text.isEmpty() && d.plots.isEmpty() && d.panels.isEmpty() && d.overlays.isEmpty());
+    QVERIFY(!d.allow && !d.sat && !d.compare && d.questions.empty());
+    QCOMPARE(d.exportTime, 10.0);
+    QVERIFY(d.autoplay);
+}
+
+void TestLesson::formatDocumentExampleLoads()
+{
+    // The complete example of LESSON_FORMAT.md loads, beside copies of the shipped scenes it
+    // names.
+    QFile doc(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/LESSON_FORMAT.md"));
+    QVERIFY(doc.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(doc.readAll());
+    const QRegularExpression block(QStringLiteral("```json\\n(.*?)```"),
+                                   QRegularExpression::DotMatchesEverythingOption);
+    const QRegularExpressionMatch match = block.match(text);
+    QVERIFY(match.hasMatch());
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
+    for (const char* scene : {"four_balls.json", "sat_apart.json"})
+        QVERIFY(QFile::copy(QDir(kLessonsDir).filePath(QStringLiteral("scenes/") + scene),
+                            dir.filePath(QStringLiteral("scenes/") + scene)));
+    const QString path = dir.filePath(QStringLiteral("example.json"));
+    writeFile(path, match.captured(1).toUtf8());
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    QCOMPARE(loaded.lesson.steps.size(), std::size_t{3});
+}
+
+void TestLesson::originalVerticesOfNonConvexPolygon()
+{
+    const lessons::Lesson lesson = shippedLesson("separating_axis");
+    QCOMPARE(lesson.steps.size(), std::size_t{4});
+    const lessons::Scene& cup = lesson.steps[3].scene;
+    QCOMPARE(cup.originalVertices.size(), cup.bodies.size());
+    QCOMPARE(cup.originalVertices[0].size(), std::size_t{8}); // the cup, as the file gives it
+    QCOMPARE(cup.bodies[0].shape.polygon.vertices.size(), std::size_t{4}); // its hull
+    QCOMPARE(cup.originalVertices[0][4], physics::Vec2(0.3, -0.2));
+    QVERIFY(cup.originalVertices[1].empty()); // the box was not replaced
+    for (const auto& v : lesson.steps[0].scene.originalVertices)
+        QVERIFY(v.empty());
+}
+
+void TestLesson::buildStepWorldsMakesOneWorldPerVariant()
+{
+    const lessons::Lesson lesson = shippedLesson("energy_drift");
+    const lessons::LessonStep& step = lesson.steps[0];
+    std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
+    QCOMPARE(worlds.size(), std::size_t{4});
+    const physics::IntegratorKind kinds[] = {
+        physics::IntegratorKind::Euler, physics::IntegratorKind::SymplecticEuler,
+        physics::IntegratorKind::Verlet, physics::IntegratorKind::RK4};
+    for (std::size_t i = 0; i < 4; ++i) {
+        QCOMPARE(worlds[i].def().integrator, kinds[i]);
+        QCOMPARE(worlds[i].integrator().kind(), kinds[i]);
+        QCOMPARE(worlds[i].def().dt, 0.01);
+        QCOMPARE(worlds[i].bodies().size(), step.scene.bodies.size());
+    }
+    QCOMPARE(step.compare->label(2), QStringLiteral("verlet"));
+
+    const lessons::Lesson stacks = shippedLesson("stacks");
+    std::vector<physics::World> solvers = lessons::buildStepWorlds(stacks.steps[0]);
+    QCOMPARE(solvers.size(), std::size_t{2});
+    QCOMPARE(solvers[0].def().solver, physics::SolverKind::SeedImpulse);
+    QCOMPARE(solvers[1].def().solver, physics::SolverKind::SequentialImpulse);
+    QCOMPARE(stacks.steps[0].compare->label(0), QStringLiteral("seed-impulse"));
+    // Without a comparison, one world.
+    QCOMPARE(lessons::buildStepWorlds(stacks.steps[1]).size(), std::size_t{1});
+}
+
+void TestLesson::applySettingsOverridesScene()
+{
+    lessons::StepSettings settings;
+    settings.integrator = physics::IntegratorKind::RK4;
+    settings.dt = 0.004;
+    settings.solver = physics::SolverKind::SeedImpulse;
+    settings.iterations = 3;
+    settings.restitution = 0.3;
+    settings.friction = 0.7;
+    settings.gravity = false;
+    const lessons::Lesson lesson = shippedLesson("restitution");
+    physics::World world = lessons::buildWorld(lesson.steps[0].scene);
+    lessons::applySettings(settings, world);
+    QCOMPARE(world.def().integrator, physics::IntegratorKind::RK4);
+    QCOMPARE(world.def().dt, 0.004);
+    QCOMPARE(world.def().solver, physics::SolverKind::SeedImpulse);
+    QCOMPARE(world.def().iterations, 3);
+    QCOMPARE(world.def().gravity, physics::Vec2::Zero());
+    for (const physics::Body& b : world.bodies()) {
+        QCOMPARE(b.restitution, 0.3);
+        QCOMPARE(b.friction, 0.7);
+    }
+    // Gravity on for a weightless scene gives it the Earth's.
+    physics::World space = lessons::buildWorld(lesson.steps[1].scene);
+    lessons::StepSettings on;
+    on.gravity = true;
+    lessons::applySettings(on, space);
+    QCOMPARE(space.def().gravity, physics::Vec2(0, -9.81));
+}

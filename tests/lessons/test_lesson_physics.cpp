@@ -1,0 +1,442 @@
+// What lessons measure and judge, on real runs; and the physics the shipped lessons claim in
+// their texts, checked on the lessons' own scenes and settings.
+
+#include "test_lesson.h"
+
+#include <algorithm>
+#include <cmath>
+
+using namespace rigidlab;
+using namespace rigidlab::test;
+
+namespace {
+
+const lessons::LessonStep& stepOf(const lessons::Lesson& lesson, std::size_t i)
+{
+    return lesson.steps.at(i);
+}
+
+physics::BodyId bodyId(const lessons::Scene& scene, const char* id)
+{
+    const auto index = scene.bodyIndex(QString::fromLatin1(id));
+    Q_ASSERT(index);
+    return *index;
+}
+
+/// The relative energy drift of a world since `e0` [%], as the lessons measure it.
+double driftPercent(const physics::World& w, double e0)
+{
+    return (w.diagnostics().total - e0) / std::abs(e0) * 100.0;
+}
+
+} // namespace
+
+void TestLesson::judgeApexRightAndWrong()
+{
+    const lessons::Lesson lesson = shippedLesson("restitution");
+    const lessons::LessonStep& step = stepOf(lesson, 0);
+    const lessons::Question& q = step.questions.at(0); // second bounce of the e = 0.8 ball
+    StepRun run(step);
+
+    // Before the run: not measured yet, and the student is told what to wait for.
+    lessons::Verdict early = lessons::judge(q, 0.41, run.measurements[0], step.scene);
+    QVERIFY(!early.measured);
+    QVERIFY(!early.right);
+    QCOMPARE(early.message,
+             QStringLiteral("Run the simulation past the top of the second bounce first."));
+
+    run.run(2.0);
+    const double expected = std::pow(0.8, 4); // e^4 of the 1 m drop
+    lessons::Verdict right = lessons::judge(q, 0.41, run.measurements[0], step.scene);
+    QVERIFY(right.measured);
+    QVERIFY(right.right);
+    QVERIFY(std::abs(right.value - expected) < 1e-4);
+    QCOMPARE(right.message,
+             QStringLiteral("Right: the simulation measured 0.41 m (you said 0.41 m)."));
+    lessons::Verdict wrong = lessons::judge(q, 0.5, run.measurements[0], step.scene);
+    QVERIFY(wrong.measured);
+    QVERIFY(!wrong.right);
+    QCOMPARE(wrong.message,
+             QStringLiteral("Not quite: the simulation measured 0.41 m (you said 0.5 m)."));
+    // The edge of the tolerance (3 %).
+    QVERIFY(lessons::judge(q, expected * 1.029, run.measurements[0], step.scene).right);
+    QVERIFY(!lessons::judge(q, expected * 1.031, run.measurements[0], step.scene).right);
+    QVERIFY(!lessons::judge(q, std::nan(""), run.measurements[0], step.scene).right);
+}
+
+void TestLesson::judgeTimedValue()
+{
+    const lessons::Lesson lesson = shippedLesson("energy_drift");
+    const lessons::LessonStep& step = stepOf(lesson, 0);
+    const lessons::Question& q = step.questions.at(0); // Euler's drift at t = 5 s
+    StepRun run(step);
+    run.run(4.99);
+    lessons::Verdict early = lessons::judge(q, 65, run.measurements[0], step.scene);
+    QVERIFY(!early.measured);
+    QCOMPARE(early.message, QStringLiteral("Run the simulation until t = 5 s first."));
+    run.run(0.01);
+    // E(t) = E0 (1 + (wh)^2)^(t/h) for explicit Euler on the oscillator: 64.8 % at 5 s.
+    const double expected = (std::pow(1.0 + 10.0 * 0.01 * 0.01, 500) - 1.0) * 100.0;
+    lessons::Verdict v = lessons::judge(q, 64.8, run.measurements[0], step.scene);
+    QVERIFY(v.measured);
+    QVERIFY(v.right);
+    QVERIFY2(std::abs(v.value - expected) < 1e-6, qPrintable(QString::number(v.value)));
+    QCOMPARE(v.message, QStringLiteral("Right: the simulation measured 64.8 % (you said 64.8 %)."));
+    // The value stays what it was at 5 s while the run goes on.
+    run.run(1.0);
+    QCOMPARE(*run.measurements[0].value(q.measure, step.scene), v.value);
+    QVERIFY(!lessons::judge(q, 70, run.measurements[0], step.scene).right);
+}
+
+void TestLesson::judgeMessages_data()
+{
+    QTest::addColumn<double>("value");
+    QTest::addColumn<double>("answer");
+    QTest::addColumn<QString>("unit");
+    QTest::addColumn<double>("tolerance");
+    QTest::addColumn<double>("absolute");
+    QTest::addColumn<bool>("right");
+    QTest::addColumn<QString>("message");
+
+    QTest::newRow("near-zero-absolute")
+        << 1e-17 << 0.01 << "m/s" << 0.02 << 0.02 << true
+        << "Right: the simulation measured 0 m/s (you said 0.01 m/s).";
+    QTest::newRow("near-zero-relative-only")
+        << 1e-17 << 0.01 << "m/s" << 0.02 << 0.0 << false
+        << "Not quite: the simulation measured 0 m/s (you said 0.01 m/s).";
+    QTest::newRow("negative") << -1.0 << -1.01 << "m/s" << 0.02 << 0.0 << true
+                              << "Right: the simulation measured -1 m/s (you said -1.01 m/s).";
+    QTest::newRow("sign-wrong") << -1.0 << 1.0 << "m/s" << 0.02 << 0.0 << false
+                                << "Not quite: the simulation measured -1 m/s (you said 1 m/s).";
+    QTest::newRow("no-unit") << 2.0772 << 2.08 << "" << 0.03 << 0.0 << true
+                             << "Right: the simulation measured 2.08 (you said 2.08).";
+    QTest::newRow("tight-tolerance") << 1.333069 << 1.3331 << "kg·m/s" << 0.0001 << 0.0 << true
+                                     << "Right: the simulation measured 1.3331 kg·m/s (you said "
+                                        "1.3331 kg·m/s).";
+}
+
+void TestLesson::judgeMessages()
+{
+    QFETCH(double, value);
+    QFETCH(double, answer);
+    QFETCH(QString, unit);
+    QFETCH(double, tolerance);
+    QFETCH(double, absolute);
+    QFETCH(bool, right);
+    QFETCH(QString, message);
+
+    // A weightless ball moving at `value` m/s: its velocity-x, read at t = 0.
+    lessons::Scene scene;
+    physics::BodyDef ball;
+    ball.name = "ball";
+    ball.shape = physics::makeCircleShape(0.1);
+    ball.velocity = physics::Vec2(value, 0);
+    scene.bodies.push_back(ball);
+    scene.world.gravity = physics::Vec2::Zero();
+    physics::World world = lessons::buildWorld(scene);
+    world.updateDiagnostics();
+    lessons::Question q;
+    q.measure.kind = lessons::Measure::Kind::VelocityX;
+    q.measure.body = QStringLiteral("ball");
+    q.unit = unit;
+    q.tolerance = tolerance;
+    q.absoluteTolerance = absolute;
+    lessons::Measurements m;
+    m.reset(world, {q.measure});
+    const lessons::Verdict v = lessons::judge(q, answer, m, scene);
+    QVERIFY(v.measured);
+    QCOMPARE(v.right, right);
+    QCOMPARE(v.message, message);
+}
+
+void TestLesson::rewindForgetsLaterEvents()
+{
+    const lessons::Lesson lesson = shippedLesson("restitution");
+    const lessons::LessonStep& step = stepOf(lesson, 0);
+    const physics::BodyId ball = bodyId(step.scene, "e08");
+    StepRun run(step);
+    run.run(1.0);
+    const physics::World atOne = run.worlds[0];
+    const std::size_t apexesAtOne = run.measurements[0].apexes(ball).size();
+    const std::size_t collisionsAtOne = run.measurements[0].collisions().size();
+    run.run(1.5);
+    const std::vector<lessons::ApexEvent> straight = run.measurements[0].apexes(ball);
+    const std::size_t collisionsStraight = run.measurements[0].collisions().size();
+    QVERIFY(straight.size() > apexesAtOne);
+
+    // Back to t = 1 s, then forward again: the same events, once each.
+    run.worlds[0] = atOne;
+    run.measurements[0].rewind(run.worlds[0]);
+    QCOMPARE(run.measurements[0].apexes(ball).size(), apexesAtOne);
+    QCOMPARE(run.measurements[0].collisions().size(), collisionsAtOne);
+    run.run(1.5);
+    const std::vector<lessons::ApexEvent>& replayed = run.measurements[0].apexes(ball);
+    QCOMPARE(replayed.size(), straight.size());
+    for (std::size_t i = 0; i < straight.size(); ++i) {
+        QCOMPARE(replayed[i].t, straight[i].t);
+        QCOMPARE(replayed[i].y, straight[i].y);
+        QCOMPARE(replayed[i].bounceY, straight[i].bounceY);
+    }
+    QCOMPARE(run.measurements[0].collisions().size(), collisionsStraight);
+    QCOMPARE(run.measurements[0].bounces(ball).size(), straight.size());
+}
+
+void TestLesson::collisionPredictionsOfOffCentreHit()
+{
+    const lessons::Lesson lesson = shippedLesson("restitution");
+    const lessons::LessonStep& step = stepOf(lesson, 3);
+    StepRun run(step);
+    run.run(1.0);
+    const std::vector<lessons::CollisionEvent>& hits = run.measurements[0].collisions();
+    QCOMPARE(hits.size(), std::size_t{1});
+    const lessons::CollisionEvent& hit = hits[0];
+    const physics::BodyId rod = bodyId(step.scene, "rod");
+    QCOMPARE(hit.a, rod);
+    // The textbook numbers of the step's text: I = m (a^2 + b^2) / 12, r = 0.8 m.
+    const double inertia = (4.0 + 0.01) / 12.0;
+    const double jFull = 2 * 3 / (1 / 0.25 + 1 + 0.64 / inertia);
+    const double jWithout = 2 * 3 / (1 / 0.25 + 1.0);
+    QVERIFY(std::abs(hit.predictedFull[0] - 0.8 * jFull / inertia) < 1e-3);
+    QVERIFY(std::abs(hit.predictedWithoutRotation[0] - 0.8 * jWithout / inertia) < 1e-3);
+    // The engine does what the full formula predicts.
+    QVERIFY(std::abs(hit.angularAfter[0] - hit.predictedFull[0]) < 1e-3);
+    QCOMPARE(hit.angularBefore[0], 0.0);
+    QVERIFY(std::abs(hit.velocityBefore[1].y() - 3.0) < 1e-9);
+    QVERIFY(std::abs(hit.velocityAfter[0].y() - jFull / 1.0) < 1e-3);
+    QVERIFY(std::abs(hit.velocityAfter[1].y() - (3.0 - jFull / 0.25)) < 1e-3);
+    // Kinetic energy is kept by the full formula (e = 1).
+    const physics::World& w = run.worlds[0];
+    QVERIFY(std::abs(w.diagnostics().kinetic - 0.5 * 0.25 * 9.0) < 1e-6);
+}
+
+void TestLesson::shippedQuestionsHaveTheirTextbookAnswers_data()
+{
+    QTest::addColumn<QString>("lesson");
+    QTest::addColumn<int>("step");
+    QTest::addColumn<int>("question");
+    QTest::addColumn<double>("answer"); // what a student who follows the text works out
+
+    const double e5 = std::pow(1.001, 500) - 1;
+    QTest::newRow("euler-drift-h-0.01") << "energy_drift" << 0 << 0 << e5 * 100;
+    QTest::newRow("euler-drift-h-0.001")
+        << "energy_drift" << 3 << 0 << (std::pow(1.00001, 5000) - 1) * 100;
+    QTest::newRow("second-bounce-e-0.8") << "restitution" << 0 << 0 << std::pow(0.8, 4);
+    QTest::newRow("third-bounce-e-0.5") << "restitution" << 0 << 1 << std::pow(0.5, 6);
+    QTest::newRow("heavy-ball") << "restitution" << 1 << 0 << 2.0;
+    QTest::newRow("light-ball") << "restitution" << 1 << 1 << -1.0;
+    QTest::newRow("light-ball-e-0.5") << "restitution" << 2 << 0 << 0.0;
+    const double inertia = (4.0 + 0.01) / 12.0;
+    QTest::newRow("rod-spin") << "restitution" << 3 << 0
+                              << 0.8 * (6.0 / (4 + 1 + 0.64 / inertia)) / inertia;
+    QTest::newRow("break-px") << "billiards_momentum" << 0 << 0 << 0.17 * 8;
+    QTest::newRow("drag-before-break")
+        << "billiards_momentum" << 1 << 0 << 0.17 * 8 * std::exp(-0.2 * 0.1);
+    QTest::newRow("drag-after-break")
+        << "billiards_momentum" << 1 << 1 << 0.17 * 8 * std::exp(-0.2 * 0.25);
+}
+
+void TestLesson::shippedQuestionsHaveTheirTextbookAnswers()
+{
+    QFETCH(QString, lesson);
+    QFETCH(int, step);
+    QFETCH(int, question);
+    QFETCH(double, answer);
+    const lessons::Lesson l = shippedLesson(qPrintable(lesson));
+    const lessons::LessonStep& s = stepOf(l, static_cast<std::size_t>(step));
+    const lessons::Question& q = s.questions.at(static_cast<std::size_t>(question));
+    StepRun run(s);
+    // Long enough for every question of the step: its export time covers them.
+    run.run(s.exportTime);
+    const lessons::Verdict v = lessons::judge(q, answer, run.measurements[0], s.scene);
+    QVERIFY2(v.measured, qPrintable(v.message));
+    QVERIFY2(v.right, qPrintable(v.message));
+}
+
+void TestLesson::restitutionBounceRatiosAreESquared()
+{
+    const lessons::Lesson lesson = shippedLesson("restitution");
+    const lessons::LessonStep& step = stepOf(lesson, 0);
+    StepRun run(step);
+    run.run(step.exportTime);
+    const lessons::Measurements& m = run.measurements[0];
+    const double floorTop = 0.1; // centre height of a ball resting on the floor [m]
+    for (const auto& [id, e] :
+         {std::pair{"e05", 0.5}, std::pair{"e08", 0.8}, std::pair{"e1", 1.0}}) {
+        const std::vector<lessons::ApexEvent>& apexes = m.apexes(bodyId(step.scene, id));
+        QVERIFY2(apexes.size() >= 3, id);
+        double before = 1.0; // dropped from 1 m
+        for (std::size_t n = 0; n < 3; ++n) {
+            const double h = apexes[n].y - floorTop;
+            const double ratio = h / before;
+            QVERIFY2(
+                std::abs(ratio / (e * e) - 1.0) < 0.02,
+                qPrintable(QStringLiteral("%1 bounce %2: ratio %3").arg(id).arg(n + 1).arg(ratio)));
+            before = h;
+        }
+    }
+    // e = 0 does not bounce at all.
+    QVERIFY(m.apexes(bodyId(step.scene, "e0")).empty());
+}
+
+void TestLesson::energyDriftClaims()
+{
+    const lessons::Lesson lesson = shippedLesson("energy_drift");
+    // Step 1, the spring at h = 0.01 s: Euler grows, symplectic Euler and Verlet stay in their
+    // bands, RK4 is flat at this scale.
+    {
+        const lessons::LessonStep& step = stepOf(lesson, 0);
+        StepRun run(step);
+        const double e0 = run.worlds[0].diagnostics().total;
+        QVERIFY(std::abs(e0 - 0.45) < 1e-12);
+        std::vector<double> low(4, 0), high(4, 0);
+        run.run(10.0, [&](std::size_t i) {
+            const double d = driftPercent(run.worlds[i], e0);
+            low[i] = std::min(low[i], d);
+            high[i] = std::max(high[i], d);
+        });
+        QVERIFY(driftPercent(run.worlds[0], e0) > 150); // Euler: +172 %
+        QVERIFY(high[1] < 1.7 && low[1] > -1.7);        // symplectic Euler: 1.6 %
+        QVERIFY(high[2] <= 1e-6 && low[2] > -0.026);    // Verlet: 0.025 %
+        QVERIFY(std::max(high[3], -low[3]) < 2e-6);     // RK4: 1.4e-6 %
+    }
+    // Step 2, h = 0.1 s: Verlet's error stays in its band, RK4's creeps one way.
+    {
+        const lessons::LessonStep& step = stepOf(lesson, 1);
+        StepRun run(step);
+        const double e0 = run.worlds[0].diagnostics().total;
+        double verletFirst = 0, verletLast = 0, rk4Previous = 0;
+        bool rk4Monotone = true;
+        long long n = 0;
+        run.run(30.0, [&](std::size_t i) {
+            const double d = driftPercent(run.worlds[i], e0);
+            if (i == 0) {
+                ++n;
+                (n <= 100 ? verletFirst : verletLast) =
+                    std::min(n <= 100 ? verletFirst : verletLast, d);
+            } else {
+                rk4Monotone = rk4Monotone && d <= rk4Previous + 1e-12;
+                rk4Previous = d;
+            }
+        });
+        QVERIFY(verletFirst > -2.6 && verletLast > -2.6);  // bounded by 2.5 %
+        QVERIFY(verletLast > verletFirst - 0.01);          // no worse after 30 s than in 10 s
+        QVERIFY(rk4Monotone);                              // creeps down...
+        QVERIFY(rk4Previous < -0.3 && rk4Previous > -0.5); // ...by 0.41 % in 30 s
+    }
+}
+
+void TestLesson::pendulumEulerGoesOverTheTop()
+{
+    const lessons::Lesson lesson = shippedLesson("energy_drift");
+    const lessons::LessonStep& step = stepOf(lesson, 2);
+    StepRun run(step);
+    const double e0 = run.worlds[0].diagnostics().total;
+    const physics::BodyId bob = bodyId(step.scene, "bob");
+    double highestEuler = -1;
+    double overTheTopAt = -1;
+    std::vector<double> worst(4, 0);
+    run.run(step.exportTime, [&](std::size_t i) {
+        const physics::World& w = run.worlds[i];
+        worst[i] = std::max(worst[i], std::abs(driftPercent(w, e0)));
+        if (i == 0) {
+            highestEuler = std::max(highestEuler, w.body(bob).position.y());
+            if (overTheTopAt < 0 && w.body(bob).position.y() > 0.99)
+                overTheTopAt = w.time();
+        }
+    });
+    // Euler's bob reaches the top (1 m above the pin) after about 11 s, and nobody diverged
+    // within the step's export time.
+    QVERIFY(highestEuler > 0.99);
+    QVERIFY2(overTheTopAt > 10 && overTheTopAt < 12, qPrintable(QString::number(overTheTopAt)));
+    for (const physics::World& w : run.worlds)
+        QVERIFY(!w.divergence());
+    // Symplectic Euler loses about 0.8 % per second here; Verlet and RK4 stay close.
+    const double symplectic = driftPercent(run.worlds[1], e0);
+    QVERIFY2(symplectic < -8 && symplectic > -14, qPrintable(QString::number(symplectic)));
+    QVERIFY(worst[2] < 0.1);  // Verlet: a few hundredths of a percent
+    QVERIFY(worst[3] < 1e-5); // RK4: a few millionths
+}
+
+void TestLesson::smallerStepShrinksDrift()
+{
+    // Steps 1 and 4 run the same spring at h = 0.01 and 0.001 s: every integrator's largest
+    // error in 10 s shrinks, by about 10 for the first-order ones and 100 for Verlet.
+    const lessons::Lesson lesson = shippedLesson("energy_drift");
+    std::vector<double> worst[2];
+    for (int k = 0; k < 2; ++k) {
+        const lessons::LessonStep& step = stepOf(lesson, k == 0 ? 0 : 3);
+        StepRun run(step);
+        const double e0 = run.worlds[0].diagnostics().total;
+        worst[k].assign(4, 0);
+        run.run(10.0, [&](std::size_t i) {
+            worst[k][i] = std::max(worst[k][i], std::abs(driftPercent(run.worlds[i], e0)));
+        });
+    }
+    QVERIFY(worst[0][0] / worst[1][0] > 10);                // Euler
+    QVERIFY(std::abs(worst[0][1] / worst[1][1] - 10) < 1);  // symplectic Euler
+    QVERIFY(std::abs(worst[0][2] / worst[1][2] - 100) < 5); // Verlet
+    QVERIFY(worst[0][3] / worst[1][3] > 1e4);               // RK4
+    for (int i = 0; i < 4; ++i)
+        QVERIFY(worst[1][i] > 0); // smaller, never none
+}
+
+void TestLesson::sequentialImpulseStackMovesLess()
+{
+    const lessons::Lesson lesson = shippedLesson("stacks");
+    for (std::size_t s : {std::size_t{0}, std::size_t{2}}) {
+        const lessons::LessonStep& step = stepOf(lesson, s);
+        StepRun run(step);
+        const std::vector<physics::Body> start = run.worlds[0].bodies();
+        // How far the boxes moved, summed, and the largest speed seen after the first second.
+        std::vector<double> fastest(2, 0);
+        run.run(3.0, [&](std::size_t i) {
+            if (run.worlds[i].time() < 1.0)
+                return;
+            for (const physics::Body& b : run.worlds[i].bodies())
+                fastest[i] = std::max(fastest[i], b.velocity.norm());
+        });
+        double moved[2] = {0, 0};
+        for (std::size_t i = 0; i < 2; ++i)
+            for (std::size_t b = 0; b < start.size(); ++b)
+                moved[i] += (run.worlds[i].bodies()[b].position - start[b].position).norm();
+        QVERIFY2(moved[1] < 0.01, qPrintable(QString::number(moved[1]))); // stands still
+        QVERIFY2(moved[0] > 1.0, qPrintable(QString::number(moved[0])));  // topples
+        QVERIFY(fastest[1] < 1e-3);
+        QVERIFY(fastest[0] > 100 * fastest[1]);
+    }
+    // Step 2: one iteration with warm starting still stands.
+    const lessons::LessonStep& one = stepOf(lesson, 1);
+    QCOMPARE(*one.settings.iterations, 1);
+    StepRun run(one);
+    const std::vector<physics::Body> start = run.worlds[0].bodies();
+    run.run(5.0);
+    for (std::size_t b = 0; b < start.size(); ++b)
+        QVERIFY((run.worlds[0].bodies()[b].position - start[b].position).norm() < 1e-3);
+}
+
+void TestLesson::billiardsBreakConservesMomentum()
+{
+    const lessons::Lesson lesson = shippedLesson("billiards_momentum");
+    // Without cushions and cloth, with either solver: px and py stay what the cue ball brought.
+    const lessons::LessonStep& step = stepOf(lesson, 2);
+    StepRun run(step);
+    double lowestPx[2] = {1e9, 1e9}, highestPx[2] = {-1e9, -1e9};
+    run.run(2.0, [&](std::size_t i) {
+        const double px = run.worlds[i].diagnostics().momentum.x();
+        lowestPx[i] = std::min(lowestPx[i], px);
+        highestPx[i] = std::max(highestPx[i], px);
+    });
+    for (std::size_t i = 0; i < 2; ++i) {
+        QVERIFY(std::abs(lowestPx[i] - 1.36) < 1e-9 && std::abs(highestPx[i] - 1.36) < 1e-9);
+        QVERIFY(std::abs(run.worlds[i].diagnostics().momentum.y() - 0.0034) < 1e-9);
+        // Many collisions happened.
+        QVERIFY(run.measurements[i].collisions().size() > 20);
+    }
+    // The contact-by-contact impulse ends the break with about 8 % more kinetic energy;
+    // sequential impulses lose some, as e = 0.93 should.
+    const double k0 = 0.5 * 0.17 * (64 + 0.0004);
+    QVERIFY(run.worlds[0].diagnostics().kinetic > 1.05 * k0);
+    QVERIFY(run.worlds[1].diagnostics().kinetic < k0);
+}
+
+QTEST_GUILESS_MAIN(TestLesson)
