@@ -2,6 +2,7 @@
 // rigidlab_lessons (scene_loader, scene_run, sat_report, document).
 
 #include "rigidlab/lessons/bench.h"
+#include "cli_lesson.h"
 #include "cli_numerics.h"
 
 #include "rigidlab/lessons/document.h"
@@ -43,7 +44,7 @@ Commands:
       --diagnostics FILE.csv step,t,kinetic,potential,total,px,py,angular_momentum,contacts
       --every K              write rows every K steps (default 1; step 0 and the last
                              step are always written)
-  validate FILE.json...      check documents (scenes) and say what is wrong
+  validate FILE.json...      check documents (scenes, lessons) and say what is wrong
   bench [OPTIONS]            RigidLab's side of the benchmarks (./lab bench adds the peers)
       --scene NAME           one scene: pyramid-20, pyramid-40, pyramid-100, rain-1000,
                              stack-12, mass-ratio (default: all)
@@ -51,6 +52,9 @@ Commands:
       --runs K               runs; the table gives the median (default 3)
       --export FILE.json     write the scene as a scene file instead of running it
   sat PAIR.json              the separating axis test on polygon pairs, as JSON
+  lesson LESSON.json         a lesson's steps, with their plots, panels and questions
+      --export DIR           run every step that has plots for its exportTime and write
+                             them as PNG, PDF, SVG and CSV into DIR/NN-step-title/
   error-vs-time [OPTIONS]    work against precision of every integrator on reference problems
       --problem NAME|all     oscillator, pendulum, kepler, spinning-body, double-pendulum
       --integrators LIST     comma-separated (default: all, Boost.Odeint's odeint-rk4 and
@@ -456,6 +460,7 @@ constexpr Command kCommands[] = {
     {QLatin1StringView("error-vs-time"), &cli::commandErrorVsTime},
     {QLatin1StringView("stress"), &cli::commandStress},
     {QLatin1StringView("bench"), &commandBench},
+    {QLatin1StringView("lesson"), &cli::commandLesson},
 };
 
 } // namespace

@@ -38,14 +38,17 @@ QString cannotWrite(const QString& path, const QString& why)
 /// Lays the plot out for the export size while it is drawn, and back for the screen after.
 class ExportLayout {
 public:
-    ExportLayout(PlotWidget& plot, QSize size) : m_plot(plot), m_titleShown(plot.titleShown())
+    ExportLayout(PlotWidget& plot, QSize size)
+        : m_plot(plot), m_titleShown(plot.titleShown()), m_captionShown(plot.captionShown())
     {
-        m_plot.setTitleShown(true); // a handout needs its title
+        m_plot.setTitleShown(true); // a handout needs its title, and its caption if any
+        m_plot.setCaptionShown(true);
         m_plot.fitLegend(size.width());
     }
     ~ExportLayout()
     {
         m_plot.setTitleShown(m_titleShown);
+        m_plot.setCaptionShown(m_captionShown);
         m_plot.fitLegend(m_plot.plot()->width());
         m_plot.plot()->replot(QCustomPlot::rpQueuedReplot);
     }
@@ -55,6 +58,7 @@ public:
 private:
     PlotWidget& m_plot;
     bool m_titleShown;
+    bool m_captionShown;
 };
 
 bool encodePng(QCustomPlot& plot, const ExportOptions& options, QByteArray& bytes, QString& why)

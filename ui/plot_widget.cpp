@@ -17,6 +17,7 @@ namespace {
 
 // Sizes for a projector at the back of a lecture room, not for a laptop screen.
 constexpr double kTitlePt = 14;
+constexpr double kCaptionPt = 10;
 constexpr double kAxisLabelPt = 12;
 constexpr double kTickLabelPt = 11;
 constexpr double kLegendPt = 11;
@@ -70,6 +71,8 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
     m_plot->plotLayout()->addElement(1, 0, m_plot->legend);
     m_plot->plotLayout()->setRowStretchFactor(0, 0.001);
     m_plot->plotLayout()->setRowStretchFactor(1, 0.001);
+    m_caption = new QCPTextElement(m_plot, QString(), sized(base, kCaptionPt));
+    m_caption->setTextColor(QColor(0x40, 0x40, 0x40));
     m_plot->legend->setVisible(true);
     m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     m_plot->legend->setBorderPen(Qt::NoPen);
@@ -126,6 +129,33 @@ void PlotWidget::setTitleShown(bool shown)
     m_title->setVisible(shown);
     m_title->setMaximumSize(QWIDGETSIZE_MAX, shown ? QWIDGETSIZE_MAX : 0);
     m_title->setMinimumSize(0, 0);
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
+}
+
+void PlotWidget::setCaption(const QString& caption)
+{
+    m_captionText = caption;
+    m_caption->setText(caption);
+    setCaptionShown(m_captionShown);
+}
+
+void PlotWidget::setCaptionShown(bool shown)
+{
+    m_captionShown = shown;
+    // The caption's row exists only while it is shown, so that the screen layout is the
+    // same as without a caption: a hidden element would still take its row's spacing.
+    QCPLayoutGrid* layout = m_plot->plotLayout();
+    const bool inLayout = layout->hasElement(1, 0) && layout->element(1, 0) == m_caption;
+    const bool wanted = shown && !m_captionText.isEmpty();
+    if (wanted && !inLayout) {
+        layout->insertRow(1);
+        layout->addElement(1, 0, m_caption);
+        layout->setRowStretchFactor(1, 0.001);
+    } else if (!wanted && inLayout) {
+        layout->take(m_caption);
+        layout->simplify();
+    }
+    m_caption->setVisible(wanted);
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 

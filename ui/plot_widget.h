@@ -55,6 +55,12 @@ public:
     /// Shows or hides the title on screen (a dock may already show it); exports always show it.
     void setTitleShown(bool shown);
     bool titleShown() const { return m_titleShown; }
+    /// A second line under the title for handouts ("lesson, step, integrator, dt"); it may
+    /// hold a line break. Shown in exports only, unless setCaptionShown(true).
+    void setCaption(const QString& caption);
+    QString caption() const { return m_captionText; }
+    void setCaptionShown(bool shown);
+    bool captionShown() const { return m_captionShown; }
 
     /// Labels a value axis "quantity [unit]"; the unit also heads the CSV columns.
     void setYAxisLabel(const QString& quantity, const QString& unit, YAxis axis = YAxis::Left);
@@ -152,6 +158,9 @@ private:
     QCustomPlot* m_plot = nullptr; ///< child
     bool m_titleShown = true;
     QCPTextElement* m_title = nullptr;     ///< owned by m_plot's layout
+    QCPTextElement* m_caption = nullptr;   ///< child of m_plot; in its layout while shown
+    QString m_captionText;
+    bool m_captionShown = false;
     QToolButton* m_followButton = nullptr; ///< child, shown while paused
     QTimer* m_timer = nullptr;             ///< child
     std::vector<PlotSeries> m_series;
