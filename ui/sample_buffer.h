@@ -7,6 +7,7 @@
 #include <QtGlobal>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +22,12 @@ struct Sample {
     double px = 0, py = 0;      ///< linear momentum [kg m/s]
     double angularMomentum = 0; ///< about the origin [kg m^2/s]
     double driftPercent = 0;    ///< (total - total at start) / |total at start| * 100 [%]
+    /// Worlds compared side by side (a lesson step): their total energy and drift, variant 0
+    /// being the main world. `variants` says how many are in use.
+    static constexpr int kMaxVariants = 6;
+    int variants = 0;
+    std::array<double, kMaxVariants> variantTotal{};        ///< [J]
+    std::array<double, kMaxVariants> variantDriftPercent{}; ///< [%]
 };
 
 class SampleBuffer {
