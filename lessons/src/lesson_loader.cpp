@@ -9,6 +9,7 @@
 #include "rigidlab/lessons/scene_loader.h"
 
 #include "json_reader.h"
+#include "lesson_reading.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -26,13 +27,10 @@ using detail::NumberRule;
 namespace {
 
 constexpr int kMaxSteps = 100;
-constexpr int kMaxQuestions = 20;
 constexpr int kMaxGoals = 20;
 constexpr int kMaxMinutes = 1000;
-constexpr int kMaxApex = 1000;
-constexpr double kMaxMeasureTime = 3600.0; ///< [s]
-constexpr double kMaxExportTime = 600.0;   ///< [s]
-constexpr double kMaxExportSteps = 1e7;    ///< exportTime / dt at most
+constexpr double kMaxExportTime = 600.0; ///< [s]
+constexpr double kMaxExportSteps = 1e7;  ///< exportTime / dt at most
 constexpr double kMinTimeScale = 0.1;
 constexpr double kMaxTimeScale = 4.0;
 
@@ -43,23 +41,6 @@ constexpr std::array kOverlayNames = {u"velocities", u"contacts", u"boxes",
 constexpr std::array kPanelNames = {u"controls", u"inspector", u"sat", u"bounces", u"collision"};
 constexpr std::array kControlNames = {u"integrator",  u"dt",       u"solver",  u"iterations",
                                       u"restitution", u"friction", u"gravity", u"timeScale"};
-
-struct MeasureName {
-    QStringView name;
-    Measure::Kind kind;
-};
-constexpr std::array kMeasureNames = {
-    MeasureName{u"apex", Measure::Kind::Apex},
-    MeasureName{u"speed", Measure::Kind::Speed},
-    MeasureName{u"velocity-x", Measure::Kind::VelocityX},
-    MeasureName{u"velocity-y", Measure::Kind::VelocityY},
-    MeasureName{u"angular-velocity", Measure::Kind::AngularVelocity},
-    MeasureName{u"position-x", Measure::Kind::PositionX},
-    MeasureName{u"position-y", Measure::Kind::PositionY},
-    MeasureName{u"energy-drift", Measure::Kind::EnergyDrift},
-    MeasureName{u"momentum-x", Measure::Kind::MomentumX},
-    MeasureName{u"momentum-y", Measure::Kind::MomentumY},
-};
 
 // The names messages list; any name physics::integratorFromName knows is accepted.
 constexpr std::array kIntegrators = {
@@ -85,12 +66,6 @@ template <typename Names> QString joinNames(const Names& names)
         list.append(n.toString());
     }
     return list.join(u", ");
-}
-
-bool measuresBody(Measure::Kind kind)
-{
-    return kind != Measure::Kind::EnergyDrift && kind != Measure::Kind::MomentumX &&
-           kind != Measure::Kind::MomentumY;
 }
 
 /// A scene loader's message `SOURCE: PLACE: what` as a place under the lesson's `at` and the
@@ -130,15 +105,6 @@ private:
     template <typename Known>
     bool readNames(const QJsonObject& object, QStringView key, const QString& place,
                    const Known& known, QStringView what, QStringList& out);
-    bool readSat(const QJsonObject& object, const QString& place, LessonStep& step);
-    bool readQuestions(const QJsonObject& object, const QString& place, LessonStep& step);
-    bool readQuestion(const QJsonValue& value, const QString& place, const Scene& scene,
-                      Question& question);
-    bool readMeasure(const QJsonValue& value, const QString& place, const Scene& scene,
-                     Measure& measure);
-    /// A body id of the step's scene, in `object[key]`.
-    bool readBodyId(const QJsonObject& object, QStringView key, const QString& place,
-                    const Scene& scene, QString& out);
 
     JsonReader m_in;
     QString m_folder; ///< the lesson's folder, absolute
@@ -275,7 +241,8 @@ bool LessonReader::readStep(const QJsonValue& value, const QString& place, Lesso
         }
         step.allow = allow;
     }
-    if (!readSat(object, place, step) || !readQuestions(object, place, step) ||
+    if (!detail::readSat(m_in, object, place, step.scene, step.sat) ||
+        !detail::readQuestions(m_in, object, place, step.scene, step.questions) ||
         !m_in.number(object, u"exportTime", place, step.exportTime, NumberRule::Positive) ||
         !m_in.boolean(object, u"autoplay", place, step.autoplay)) {
         return false;
@@ -625,176 +592,6 @@ bool LessonReader::readNames(const QJsonObject& object, QStringView key, const Q
             return m_in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
         }
         out.append(name);
-    }
-    return true;
-}
-
-bool LessonReader::readBodyId(const QJsonObject& object, QStringView key, const QString& place,
-                              const Scene& scene, QString& out)
-{
-    if (!m_in.string(object, key, place, out, true)) {
-        return false;
-    }
-    if (!scene.bodyIndex(out)) {
-        return m_in.fail(joinPlace(place, key), QStringLiteral("no body with id \"%1\"").arg(out));
-    }
-    return true;
-}
-
-bool LessonReader::readSat(const QJsonObject& object, const QString& place, LessonStep& step)
-{
-    if (!object.contains(u"sat")) {
-        return true;
-    }
-    const QString at = joinPlace(place, u"sat");
-    QJsonObject pair;
-    QString a;
-    QString b;
-    if (!m_in.asObject(object.value(u"sat"), at, pair) || !m_in.checkKeys(pair, at, {u"a", u"b"}) ||
-        !readBodyId(pair, u"a", at, step.scene, a) || !readBodyId(pair, u"b", at, step.scene, b)) {
-        return false;
-    }
-    if (a == b) {
-        return m_in.fail(joinPlace(at, u"b"),
-                         QStringLiteral("the same body as \"a\": the test needs two bodies"));
-    }
-    for (const auto& [key, id] :
-         {std::pair{QStringView(u"a"), a}, std::pair{QStringView(u"b"), b}}) {
-        const physics::BodyDef& def =
-            step.scene.bodies[static_cast<size_t>(*step.scene.bodyIndex(id))];
-        if (def.shape.type != physics::ShapeType::Polygon) {
-            return m_in.fail(joinPlace(at, key),
-                             QStringLiteral("body \"%1\" is a circle: the separating axis test "
-                                            "steps through polygons (boxes and polygons)")
-                                 .arg(id));
-        }
-    }
-    step.sat = std::pair{a, b};
-    return true;
-}
-
-bool LessonReader::readQuestions(const QJsonObject& object, const QString& place, LessonStep& step)
-{
-    if (!object.contains(u"questions")) {
-        return true;
-    }
-    const QString at = joinPlace(place, u"questions");
-    QJsonArray list;
-    if (!m_in.asArray(object.value(u"questions"), at, list)) {
-        return false;
-    }
-    if (list.size() > kMaxQuestions) {
-        return m_in.fail(at, QStringLiteral("%1 questions, more than the limit of %2")
-                                 .arg(list.size())
-                                 .arg(kMaxQuestions));
-    }
-    for (qsizetype i = 0; i < list.size(); ++i) {
-        Question question;
-        if (!readQuestion(list[i], indexPlace(at, i), step.scene, question)) {
-            return false;
-        }
-        step.questions.push_back(std::move(question));
-    }
-    return true;
-}
-
-bool LessonReader::readQuestion(const QJsonValue& value, const QString& place, const Scene& scene,
-                                Question& question)
-{
-    QJsonObject object;
-    if (!m_in.asObject(value, place, object) ||
-        !m_in.checkKeys(object, place,
-                        {u"prompt", u"measure", u"unit", u"tolerance", u"absoluteTolerance"}) ||
-        !m_in.string(object, u"prompt", place, question.prompt, true)) {
-        return false;
-    }
-    if (question.prompt.trimmed().isEmpty()) {
-        return m_in.fail(joinPlace(place, u"prompt"), QStringLiteral("must not be empty"));
-    }
-    if (!object.contains(u"measure")) {
-        return m_in.fail(joinPlace(place, u"measure"),
-                         QStringLiteral("required, but missing (what the answer is checked "
-                                        "against)"));
-    }
-    if (!readMeasure(object.value(u"measure"), joinPlace(place, u"measure"), scene,
-                     question.measure) ||
-        !m_in.string(object, u"unit", place, question.unit) ||
-        !m_in.number(object, u"tolerance", place, question.tolerance, NumberRule::UnitInterval) ||
-        !m_in.number(object, u"absoluteTolerance", place, question.absoluteTolerance,
-                     NumberRule::NonNegative)) {
-        return false;
-    }
-    if (question.tolerance == 0 && question.absoluteTolerance == 0) {
-        return m_in.fail(joinPlace(place, u"tolerance"),
-                         QStringLiteral("0, and so is absoluteTolerance: no typed answer would "
-                                        "ever be right"));
-    }
-    return true;
-}
-
-bool LessonReader::readMeasure(const QJsonValue& value, const QString& place, const Scene& scene,
-                               Measure& measure)
-{
-    QJsonObject object;
-    QString kindName;
-    if (!m_in.asObject(value, place, object) ||
-        !m_in.checkKeys(object, place, {u"kind", u"body", u"n", u"above", u"time"}) ||
-        !m_in.string(object, u"kind", place, kindName, true)) {
-        return false;
-    }
-    bool known = false;
-    for (const MeasureName& m : kMeasureNames) {
-        if (kindName == m.name) {
-            measure.kind = m.kind;
-            known = true;
-        }
-    }
-    if (!known) {
-        QStringList names;
-        for (const MeasureName& m : kMeasureNames) {
-            names.append(m.name.toString());
-        }
-        return m_in.fail(joinPlace(place, u"kind"), QStringLiteral("unknown measure \"%1\" "
-                                                                   "(expected %2)")
-                                                        .arg(kindName, names.join(u", ")));
-    }
-    // Each kind then checks its own keys, so that a key that belongs to another kind is
-    // reported as such.
-    if (measure.kind == Measure::Kind::Apex) {
-        if (!m_in.checkKeys(object, place, {u"kind", u"body", u"n", u"above"}) ||
-            !readBodyId(object, u"body", place, scene, measure.body) ||
-            !m_in.integer(object, u"n", place, measure.n, 1, kMaxApex) ||
-            !m_in.number(object, u"above", place, measure.above)) {
-            return false;
-        }
-    } else {
-        const bool body = measuresBody(measure.kind);
-        if (!(body ? m_in.checkKeys(object, place, {u"kind", u"body", u"time"})
-                   : m_in.checkKeys(object, place, {u"kind", u"time"})) ||
-            (body && !readBodyId(object, u"body", place, scene, measure.body)) ||
-            !m_in.number(object, u"time", place, measure.time, NumberRule::NonNegative, true)) {
-            return false;
-        }
-        if (measure.time > kMaxMeasureTime) {
-            return m_in.fail(joinPlace(place, u"time"),
-                             QStringLiteral("must be at most %1 s, got %2")
-                                 .arg(kMaxMeasureTime)
-                                 .arg(detail::formatNumber(measure.time)));
-        }
-    }
-    if (!measure.body.isEmpty()) {
-        const auto index = scene.bodyIndex(measure.body);
-        const physics::BodyType type = scene.bodies[static_cast<size_t>(*index)].type;
-        if (type == physics::BodyType::Static) {
-            return m_in.fail(
-                joinPlace(place, u"body"),
-                QStringLiteral("body \"%1\" is static: it never moves").arg(measure.body));
-        }
-        if (measure.kind == Measure::Kind::Apex && type != physics::BodyType::Dynamic) {
-            return m_in.fail(
-                joinPlace(place, u"body"),
-                QStringLiteral("body \"%1\" is kinematic: it never bounces").arg(measure.body));
-        }
     }
     return true;
 }
