@@ -168,7 +168,7 @@ void TestLessons::rejectsBadScene_data()
     QTest::newRow("unknown-key-world") << sceneWith(R"("world": {"gravty": [0, 0]}, "bodies": [])")
                                        << "world.gravty: unknown key (allowed here: gravity, dt, "
                                           "integrator, solver, iterations, restitution, "
-                                          "friction, gravitation, drag, sleep)";
+                                          "friction, gravitation, drag, sleep, continuous, tolerance)";
 
     const char* twoBodies = R"("bodies": [{"id": "ball", "shape": {"type": "circle", "radius": 1}},
         {"id": "wall", "type": "static", "shape": {"type": "box", "width": 1, "height": 1}}], )";
