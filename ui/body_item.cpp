@@ -77,6 +77,16 @@ void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
         hatch.setTransform(QTransform::fromScale(0.02, 0.02));
         painter->setBrush(hatch);
         painter->drawPath(m_path);
+    } else if (m_kind == 3) {
+        // A ghost: its colour's outline over a faint fill, so that the bodies it overlaps
+        // stay visible.
+        QPen outline(m_fill, 2.5);
+        outline.setCosmetic(true);
+        painter->setPen(outline);
+        QColor fill = m_fill;
+        fill.setAlpha(60);
+        painter->setBrush(fill);
+        painter->drawPath(m_path);
     } else {
         QColor fill = m_fill;
         if (m_kind == 2)

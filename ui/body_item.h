@@ -13,7 +13,7 @@ namespace rigidlab::ui {
 class BodyItem : public QGraphicsItem {
 public:
     enum { Type = UserType + 1 };
-    /// kind: 0 dynamic, 1 static, 2 kinematic.
+    /// kind: 0 dynamic, 1 static, 2 kinematic, 3 a ghost (a compared world's body).
     BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fill);
 
     int type() const override { return Type; }

@@ -9,6 +9,8 @@
 #include <QSignalBlocker>
 #include <QSpinBox>
 
+#include <array>
+
 namespace rigidlab::ui {
 
 using physics::IntegratorKind;
@@ -86,6 +88,27 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     refresh();
 }
 
+void ControlPanel::setAllowed(const std::optional<QStringList>& allowed)
+{
+    const std::array<std::pair<const char*, QWidget*>, 8> controls{{
+        {"integrator", m_integrator},
+        {"dt", m_dt},
+        {"solver", m_solver},
+        {"iterations", m_iterations},
+        {"timeScale", m_timeScale},
+        {"restitution", m_restitution},
+        {"friction", m_friction},
+        {"gravity", m_gravity},
+    }};
+    for (const auto& [name, widget] : controls) {
+        const bool on = !allowed || allowed->contains(QLatin1String(name));
+        widget->setEnabled(on);
+        widget->setProperty("locked", !on);
+        widget->setStatusTip(on ? QString() : tr("Fixed in this step of the lesson"));
+    }
+    refresh();
+}
+
 void ControlPanel::refresh()
 {
     const physics::WorldDef& d = m_controller.world().def();
@@ -94,7 +117,8 @@ void ControlPanel::refresh()
     m_integrator->setCurrentIndex(m_integrator->findData(int(d.integrator)));
     m_solver->setCurrentIndex(m_solver->findData(int(d.solver)));
     m_iterations->setValue(d.iterations);
-    m_iterations->setEnabled(d.solver == SolverKind::SequentialImpulse);
+    m_iterations->setEnabled(d.solver == SolverKind::SequentialImpulse &&
+                             !m_iterations->property("locked").toBool());
     m_dt->setValue(d.dt * 1e3);
     m_timeScale->setValue(m_controller.timeScale());
     m_restitution->setValue(d.restitution);

@@ -2,7 +2,10 @@
 // The simulation's settings as controls: integrator, solver, iterations, dt, time scale,
 // global restitution and friction, gravity. Every field is range-checked by its widget.
 
+#include <QStringList>
 #include <QWidget>
+
+#include <optional>
 
 class QCheckBox;
 class QComboBox;
@@ -25,6 +28,10 @@ public:
     QDoubleSpinBox* restitutionBox() const { return m_restitution; }
     QDoubleSpinBox* frictionBox() const { return m_friction; }
     QCheckBox* gravityBox() const { return m_gravity; }
+
+    /// Which controls the student may change (names: integrator, dt, solver, iterations,
+    /// timeScale, restitution, friction, gravity); nullopt: all of them.
+    void setAllowed(const std::optional<QStringList>& allowed);
 
 public slots:
     /// Shows the controller's current settings.

@@ -4,11 +4,15 @@
 #include "divergence_banner.h"
 #include "error_panel.h"
 #include "inspector_panel.h"
+#include "lesson_panels.h"
+#include "lesson_player.h"
 #include "plot_export.h"
 #include "plot_widget.h"
+#include "sat_panel.h"
 #include "simulation_controller.h"
 #include "world_view.h"
 
+#include "rigidlab/lessons/lesson.h"
 #include "rigidlab/lessons/scene_loader.h"
 
 #include <QAction>
@@ -27,6 +31,8 @@
 #include <QStyle>
 #include <QTimer>
 #include <QToolBar>
+
+#include <cmath>
 
 namespace rigidlab::ui {
 
@@ -61,8 +67,27 @@ constexpr std::array<OverlayInfo, kOverlayCount> kOverlays{{
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_controller(new SimulationController(this)),
       m_view(new WorldView(*m_controller, this)), m_controls(new ControlPanel(*m_controller, this)),
-      m_inspector(new InspectorPanel(*m_controller, this))
+      m_inspector(new InspectorPanel(*m_controller, this)),
+      m_player(new LessonPlayer(*m_controller, this)), m_sat(new SatPanel(*m_controller, this)),
+      m_bounces(new BouncePanel(*m_controller, this)),
+      m_collision(new CollisionPanel(*m_controller, this))
 {
+    m_view->scene()->addItem(m_sat->overlay());
+    m_player->scanFolder(lessonsFolder());
+    connect(m_player, &LessonPlayer::stepActivated, this, &MainWindow::applyLessonStep);
+    connect(m_player, &LessonPlayer::lessonClosed, this, &MainWindow::leaveLesson);
+    connect(m_player, &LessonPlayer::exportRequested, this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(
+            this, tr("Export the step's plots into"),
+            m_lastFolder.isEmpty() ? QDir::homePath() : m_lastFolder);
+        if (folder.isEmpty())
+            return;
+        const QStringList errors = exportStepPlots(folder);
+        if (!errors.isEmpty())
+            QMessageBox::warning(this, tr("Export failed"), errors.join(QLatin1Char('\n')));
+        else
+            statusBar()->showMessage(tr("Plots written to %1").arg(folder), 6000);
+    });
     setWindowTitle(tr("RigidLab"));
     setCentralWidget(m_view);
     buildActions();
@@ -124,6 +149,22 @@ QString MainWindow::scenesFolder()
 #endif
 }
 
+QString MainWindow::lessonsFolder()
+{
+    const QString env = qEnvironmentVariable("RIGIDLAB_LESSONS");
+    if (!env.isEmpty() && QFileInfo(env).isDir())
+        return env;
+    const QString installed = QDir(QCoreApplication::applicationDirPath())
+                                  .filePath(QStringLiteral("../share/rigidlab/lessons"));
+    if (QFileInfo(installed).isDir())
+        return QDir(installed).canonicalPath();
+#ifdef RIGIDLAB_SOURCE_LESSONS
+    return QStringLiteral(RIGIDLAB_SOURCE_LESSONS);
+#else
+    return QString();
+#endif
+}
+
 void MainWindow::buildActions()
 {
     auto* toolbar = addToolBar(tr("Simulation"));
@@ -157,6 +198,18 @@ void MainWindow::buildActions()
     m_fitAction->setToolTip(tr("Zoom to show every body (F)"));
     connect(m_fitAction, &QAction::triggered, m_view, &WorldView::fitScene);
 
+    // Q and E turn the selected body (the SAT lesson turns its polygons this way).
+    for (const auto& [key, degrees] : {std::pair{Qt::Key_Q, 5.0}, std::pair{Qt::Key_E, -5.0}}) {
+        auto* turn = new QAction(
+            degrees > 0 ? tr("Turn selected body left") : tr("Turn selected body right"), this);
+        turn->setShortcut(key);
+        connect(turn, &QAction::triggered, this, [this, degrees] {
+            if (m_view->selectedBody() >= 0)
+                m_controller->rotateBody(m_view->selectedBody(), degrees * M_PI / 180.0);
+        });
+        addAction(turn);
+        m_rotateActions << turn;
+    }
     for (QAction* a : {m_backAction, m_playAction, m_stepAction, m_resetAction, m_fitAction})
         toolbar->addAction(a);
     toolbar->addSeparator();
@@ -203,27 +256,50 @@ void MainWindow::buildDocks()
     auto addDock = [this](const QString& title, const QString& name, QWidget* w,
                           Qt::DockWidgetArea area) {
         auto* dock = new QDockWidget(title, this);
-        dock->setObjectName(name);
+        dock->setObjectName(name + QStringLiteral("Dock"));
         dock->setWidget(w);
         addDockWidget(area, dock);
+        m_docks.insert(name, dock);
         return dock;
     };
-    addDock(tr("Controls"), QStringLiteral("controlsDock"), m_controls, Qt::LeftDockWidgetArea);
-    addDock(tr("Inspector"), QStringLiteral("inspectorDock"), m_inspector, Qt::LeftDockWidgetArea);
-    // The work-precision sweep, hidden until asked for (View menu).
-    addDock(tr("Error vs run time"), QStringLiteral("errorDock"), new ErrorPanel(this),
-            Qt::BottomDockWidgetArea)
-        ->hide();
+    addDock(tr("Lesson"), QStringLiteral("lesson"), m_player, Qt::LeftDockWidgetArea);
+    addDock(tr("Controls"), QStringLiteral("controls"), m_controls, Qt::LeftDockWidgetArea);
+    addDock(tr("Inspector"), QStringLiteral("inspector"), m_inspector, Qt::LeftDockWidgetArea);
+    tabifyDockWidget(m_docks.value(QStringLiteral("controls")),
+                     m_docks.value(QStringLiteral("inspector")));
+    m_docks.value(QStringLiteral("controls"))->raise();
     m_plots[0] = makeEnergyPlot(this);
     m_plots[1] = makeMomentumPlot(this);
     m_plots[2] = makeDriftPlot(this);
     const std::array<QString, kPlotCount> titles{tr("Energy"), tr("Momentum"), tr("Energy drift")};
+    const std::array<QString, kPlotCount> names{
+        QStringLiteral("energy"), QStringLiteral("momentum"), QStringLiteral("drift")};
     for (int i = 0; i < kPlotCount; ++i) {
         m_plots[static_cast<size_t>(i)]->setMinimumSize(360, 200);
         m_plots[static_cast<size_t>(i)]->setTitleShown(false); // the dock shows it
-        addDock(titles[static_cast<size_t>(i)], QStringLiteral("plotDock%1").arg(i),
+        addDock(titles[static_cast<size_t>(i)], names[static_cast<size_t>(i)],
                 m_plots[static_cast<size_t>(i)], Qt::RightDockWidgetArea);
     }
+    addDock(tr("Separating axis test"), QStringLiteral("sat"), m_sat, Qt::RightDockWidgetArea)
+        ->hide();
+    addDock(tr("Bounces"), QStringLiteral("bounces"), m_bounces, Qt::RightDockWidgetArea)->hide();
+    addDock(tr("Collision"), QStringLiteral("collision"), m_collision, Qt::RightDockWidgetArea)
+        ->hide();
+    // The work-precision sweep, hidden until asked for (View menu).
+    addDock(tr("Error vs run time"), QStringLiteral("errorDock"), new ErrorPanel(this),
+            Qt::BottomDockWidgetArea)
+        ->hide();
+    m_compareDock = new QDockWidget(tr("Side by side"), this);
+    m_compareDock->setObjectName(QStringLiteral("compareDock"));
+    addDockWidget(Qt::RightDockWidgetArea, m_compareDock);
+    m_compareDock->hide();
+}
+
+QDockWidget* MainWindow::dock(const QString& name) const
+{
+    if (name == QLatin1String("compare-energy") || name == QLatin1String("compare-drift"))
+        return m_compareDock;
+    return m_docks.value(name, nullptr);
 }
 
 void MainWindow::buildMenus()
@@ -231,6 +307,16 @@ void MainWindow::buildMenus()
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* open = file->addAction(tr("&Open scene…"), this, &MainWindow::openDialog);
     open->setShortcut(QKeySequence::Open);
+    QAction* openLessonAction =
+        file->addAction(tr("Open &lesson…"), this, &MainWindow::openLessonDialog);
+    openLessonAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    QMenu* lessonsMenu = file->addMenu(tr("Le&ssons"));
+    for (const QString& path : m_player->lessonPaths()) {
+        const lessons::LessonLoadResult r = lessons::loadLessonFile(path);
+        lessonsMenu->addAction(r.ok ? r.lesson.title : QFileInfo(path).baseName(), this,
+                               [this, path] { openLesson(path); });
+    }
+    lessonsMenu->setEnabled(!m_player->lessonPaths().isEmpty());
     m_recentMenu = file->addMenu(tr("Open &recent"));
     m_scenesMenu = file->addMenu(tr("&Shipped scenes"));
     const QDir scenes(scenesFolder());
@@ -256,6 +342,9 @@ void MainWindow::buildMenus()
 
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
     for (QAction* a : {m_playAction, m_stepAction, m_backAction, m_resetAction})
+        sim->addAction(a);
+    sim->addSeparator();
+    for (QAction* a : m_rotateActions)
         sim->addAction(a);
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
@@ -298,6 +387,8 @@ QString MainWindow::openScene(const QString& path, bool quiet)
         return r.error;
     }
     m_lastError.clear();
+    if (m_inLesson)
+        m_player->closeLesson(); // a scene of one's own ends the lesson
     m_controller->loadScene(r.scene, path);
     for (const QString& w : r.warnings)
         statusBar()->showMessage(w, 8000);
@@ -362,7 +453,10 @@ void MainWindow::updateStatus()
                               .arg(m_controller->stepsPerSecond(), 0, 'f', 0)
                               .arg(m_controller->frameMilliseconds(), 0, 'f', 1)
                               .arg(m_controller->physicsMilliseconds(), 0, 'f', 1));
-    QString drift = tr("energy drift %1 %").arg(m_controller->driftPercent(), 0, 'g', 3);
+    const double lost = w.diagnostics().collisionLoss;
+    QString drift = tr("energy change %1 %").arg(m_controller->driftPercent(), 0, 'g', 3);
+    if (std::abs(lost) > 1e-9)
+        drift += tr(" (contacts took %1 J)").arg(lost, 0, 'g', 3);
     // The adaptive integrator's own estimate of its local error, live.
     if (const auto estimate = w.integrator().errorEstimate())
         drift += tr(" · %1 error estimate %2 (%3 substeps)")
@@ -402,6 +496,165 @@ void MainWindow::restoreSettings()
             m_overlayActions[i]->setChecked(s.value(key).toBool());
     }
     rebuildRecentMenu();
+}
+
+QString MainWindow::openLesson(const QString& path, bool quiet)
+{
+    const QString error = m_player->openLesson(path);
+    m_lastError = error;
+    if (!error.isEmpty() && !quiet) {
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open lesson"), error,
+                                    QMessageBox::Ok, this);
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->setObjectName(QStringLiteral("lessonErrorBox"));
+        box->open();
+    }
+    if (error.isEmpty()) {
+        m_docks.value(QStringLiteral("lesson"))->show();
+        m_docks.value(QStringLiteral("lesson"))->raise();
+    }
+    return error;
+}
+
+void MainWindow::openLessonDialog()
+{
+    const QString path = QFileDialog::getOpenFileName(this, tr("Open lesson"), lessonsFolder(),
+                                                      tr("RigidLab lessons (*.json)"));
+    if (!path.isEmpty())
+        openLesson(path);
+}
+
+void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
+{
+    const lessons::LessonStep& step = lesson.steps[static_cast<size_t>(index)];
+    m_inLesson = true;
+    setWindowTitle(tr("%1 — step %2 — RigidLab").arg(lesson.title).arg(index + 1));
+
+    // The step's worlds: the main one, then those compared beside it.
+    std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
+    QStringList labels;
+    if (step.compare && step.compare->count() > 1)
+        for (int i = 0; i < step.compare->count(); ++i)
+            labels << step.compare->label(i);
+    m_controller->loadWorlds(step.scene, step.scenePath.isEmpty() ? lesson.path : step.scenePath,
+                             std::move(worlds), labels,
+                             step.compare ? step.compare->offset : physics::Vec2::Zero());
+    if (step.settings.timeScale)
+        m_controller->setTimeScale(*step.settings.timeScale);
+    std::vector<lessons::Measure> measures;
+    for (const lessons::Question& q : step.questions)
+        measures.push_back(q.measure);
+    m_controller->watch(measures);
+
+    // Only what the step names: panels, plots, overlays.
+    for (auto it = m_docks.cbegin(); it != m_docks.cend(); ++it) {
+        if (it.key() == QLatin1String("lesson"))
+            continue;
+        it.value()->setVisible(step.panels.contains(it.key()) || step.plots.contains(it.key()));
+    }
+    delete m_compare;
+    m_compare = nullptr;
+    const bool compareEnergy = step.plots.contains(QLatin1String("compare-energy"));
+    const bool compareDrift = step.plots.contains(QLatin1String("compare-drift"));
+    if ((compareEnergy || compareDrift) && !labels.isEmpty()) {
+        m_compare =
+            new PlotWidget(compareDrift && !compareEnergy ? tr("Energy drift, side by side")
+                                                          : tr("Total energy, side by side"),
+                           m_compareDock);
+        m_compare->setTitleShown(false);
+        if (compareDrift && !compareEnergy)
+            m_compare->setYAxisLabel(tr("drift (E − E₀)/|E₀|"), QStringLiteral("%"));
+        else
+            m_compare->setYAxisLabel(tr("total energy E"), QStringLiteral("J"));
+        for (int i = 0; i < static_cast<int>(labels.size()) && i < Sample::kMaxVariants; ++i) {
+            const auto k = static_cast<std::size_t>(i);
+            if (compareDrift && !compareEnergy)
+                m_compare->addSeries(labels[i], plotColor(i),
+                                     [k](const Sample& s) { return s.variantDriftPercent[k]; });
+            else
+                m_compare->addSeries(labels[i], plotColor(i),
+                                     [k](const Sample& s) { return s.variantTotal[k]; });
+        }
+        m_compare->setSource(&m_controller->samples());
+        connect(m_controller, &SimulationController::samplesCleared, m_compare, &PlotWidget::clear);
+        connect(m_controller, &SimulationController::rewound, m_compare, &PlotWidget::rewind);
+        connect(m_controller, &SimulationController::marked, m_compare, &PlotWidget::addMark);
+        m_compareDock->setWidget(m_compare);
+        m_compareDock->setWindowTitle(m_compare->title());
+        m_compareDock->show();
+    } else {
+        m_compareDock->hide();
+    }
+    static const std::array<const char*, kOverlayCount> kNames{"velocities", "contacts", "boxes",
+                                                               "centres",    "trails",   "springs"};
+    for (int i = 0; i < kOverlayCount; ++i)
+        m_overlayActions[static_cast<size_t>(i)]->setChecked(
+            step.overlays.contains(QLatin1String(kNames[static_cast<size_t>(i)])));
+    // Springs and joints are part of the scene, not a teaching aid: drawn whenever there are any.
+    if (!step.scene.springs.empty() || !step.scene.joints.empty())
+        overlayAction(Overlay::SpringsJoints)->setChecked(true);
+    // Room for the step's tables and plots beside the view.
+    QList<QDockWidget*> right;
+    for (const QString& name : step.panels + step.plots)
+        if (QDockWidget* d = dock(name);
+            d && !d->isHidden() && dockWidgetArea(d) == Qt::RightDockWidgetArea)
+            right << d;
+    if (!right.isEmpty())
+        resizeDocks({right.first()}, {480}, Qt::Horizontal);
+    resizeDocks({m_docks.value(QStringLiteral("lesson"))}, {400}, Qt::Horizontal);
+    m_controls->setAllowed(step.allow);
+    if (step.sat) {
+        const auto a = step.scene.bodyIndex(step.sat->first);
+        const auto b = step.scene.bodyIndex(step.sat->second);
+        m_sat->setBodies(a ? *a : -1, b ? *b : -1);
+    } else {
+        m_sat->setBodies(-1, -1);
+    }
+    m_controller->setRunning(step.autoplay);
+}
+
+void MainWindow::leaveLesson()
+{
+    if (!m_inLesson)
+        return;
+    m_inLesson = false;
+    // Back to the plain lab: controls, inspector and the three plots.
+    for (auto it = m_docks.cbegin(); it != m_docks.cend(); ++it) {
+        const bool standard =
+            it.key() == QLatin1String("lesson") || it.key() == QLatin1String("controls") ||
+            it.key() == QLatin1String("inspector") || it.key() == QLatin1String("energy") ||
+            it.key() == QLatin1String("momentum") || it.key() == QLatin1String("drift");
+        it.value()->setVisible(standard);
+    }
+    delete m_compare;
+    m_compare = nullptr;
+    m_compareDock->hide();
+    m_controls->setAllowed(std::nullopt);
+    m_sat->setBodies(-1, -1);
+}
+
+QStringList MainWindow::exportStepPlots(const QString& folder)
+{
+    QStringList errors;
+    std::vector<std::pair<QString, PlotWidget*>> plots;
+    const std::array<QString, kPlotCount> names{
+        QStringLiteral("energy"), QStringLiteral("momentum"), QStringLiteral("drift")};
+    for (int i = 0; i < kPlotCount; ++i)
+        if (!m_docks.value(names[static_cast<size_t>(i)])->isHidden())
+            plots.emplace_back(names[static_cast<size_t>(i)], m_plots[static_cast<size_t>(i)]);
+    if (m_compare)
+        plots.emplace_back(QStringLiteral("side-by-side"), m_compare);
+    for (const auto& [name, plot] : plots) {
+        plot->drain();
+        for (ExportFormat f :
+             {ExportFormat::Png, ExportFormat::Pdf, ExportFormat::Svg, ExportFormat::Csv}) {
+            const QString path = QDir(folder).filePath(name + QLatin1Char('.') + suffixFor(f));
+            const ExportResult r = exportPlot(*plot, path, f);
+            if (!r.ok)
+                errors << r.error;
+        }
+    }
+    return errors;
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)

@@ -5,19 +5,29 @@
 #include "overlays.h"
 
 #include <QMainWindow>
+#include <QMap>
 #include <QString>
 
 #include <array>
 
 class QAction;
+class QDockWidget;
 class QLabel;
 class QMenu;
 class QSlider;
 
+namespace rigidlab::lessons {
+struct Lesson;
+}
+
 namespace rigidlab::ui {
 
+class BouncePanel;
+class CollisionPanel;
 class ControlPanel;
 class InspectorPanel;
+class LessonPlayer;
+class SatPanel;
 class PlotWidget;
 class SimulationController;
 class WorldView;
@@ -33,6 +43,20 @@ public:
     QString openScene(const QString& path, bool quiet = false);
     /// Folder with the shipped scenes.
     static QString scenesFolder();
+    /// Folder with the shipped lessons.
+    static QString lessonsFolder();
+    /// Opens a lesson at its first step; returns the error, empty on success.
+    QString openLesson(const QString& path, bool quiet = false);
+    LessonPlayer& lessonPlayer() { return *m_player; }
+    SatPanel& satPanel() { return *m_sat; }
+    BouncePanel& bouncePanel() { return *m_bounces; }
+    CollisionPanel& collisionPanel() { return *m_collision; }
+    /// The plot comparing worlds side by side in this lesson step, or nullptr.
+    PlotWidget* comparePlot() const { return m_compare; }
+    /// The dock holding a panel or plot, by its lesson name ("energy", "sat", ...).
+    QDockWidget* dock(const QString& name) const;
+    /// Writes the current step's plots (PNG, PDF, SVG, CSV) into a folder; returns errors.
+    QStringList exportStepPlots(const QString& folder);
 
     SimulationController& controller() { return *m_controller; }
     WorldView& view() { return *m_view; }
@@ -51,6 +75,9 @@ protected:
 
 private slots:
     void openDialog();
+    void openLessonDialog();
+    void applyLessonStep(const rigidlab::lessons::Lesson& lesson, int step);
+    void leaveLesson();
     void updateStatus();
     void updateTimeline();
 
@@ -67,6 +94,14 @@ private:
     WorldView* m_view;
     ControlPanel* m_controls;
     InspectorPanel* m_inspector;
+    LessonPlayer* m_player;
+    SatPanel* m_sat;
+    BouncePanel* m_bounces;
+    CollisionPanel* m_collision;
+    PlotWidget* m_compare = nullptr;
+    QDockWidget* m_compareDock = nullptr;
+    QMap<QString, QDockWidget*> m_docks;
+    bool m_inLesson = false;
     std::array<PlotWidget*, kPlotCount> m_plots{};
     QSlider* m_timeline = nullptr;
     QLabel* m_timeLabel = nullptr;
@@ -83,6 +118,7 @@ private:
     QAction* m_resetAction = nullptr;
     QAction* m_fitAction = nullptr;
     std::array<QAction*, kOverlayCount> m_overlayActions{};
+    QList<QAction*> m_rotateActions;
     QString m_lastError;
     QString m_lastFolder;
 };

@@ -127,6 +127,29 @@ void OverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*)
         auto anchor = [&](physics::BodyId id, const physics::Vec2& a) {
             return id == physics::kWorld ? toQt(a) : toQt(world.body(id).transform().apply(a));
         };
+        // The compared worlds' joints too, where their ghosts are drawn.
+        for (int v = 0; v < m_controller.variantCount(); ++v) {
+            const physics::World& vw = m_controller.variant(v);
+            const physics::Vec2 shift = (v + 1) * m_controller.variantOffset();
+            p->setPen(cosmeticPen(QColor(120, 120, 120), 1.5));
+            for (const physics::PinJointDef& j : vw.joints()) {
+                auto end = [&](physics::BodyId id, const physics::Vec2& a) {
+                    return toQt((id == physics::kWorld ? a : vw.body(id).transform().apply(a)) +
+                                shift);
+                };
+                const QPointF pin = end(j.a, j.anchorA);
+                if (j.a != physics::kWorld)
+                    p->drawLine(pin, toQt(vw.body(j.a).position + shift));
+                p->drawEllipse(pin, 3 * px, 3 * px);
+            }
+            for (const physics::SpringDef& sp : vw.springs()) {
+                auto end = [&](physics::BodyId id, const physics::Vec2& a) {
+                    return toQt((id == physics::kWorld ? a : vw.body(id).transform().apply(a)) +
+                                shift);
+                };
+                p->drawLine(end(sp.a, sp.anchorA), end(sp.b, sp.anchorB));
+            }
+        }
         p->setPen(cosmeticPen(QColor(60, 60, 60), 1.5));
         for (const physics::SpringDef& s : world.springs()) {
             // A zigzag with a fixed number of turns between the anchors.

@@ -16,6 +16,13 @@ constexpr double kGrabFrequency = 3.0;          // the grab spring's natural fre
 
 } // namespace
 
+template <typename Fn> void SimulationController::forEachWorld(Fn&& fn)
+{
+    fn(m_world);
+    for (physics::World& w : m_variants)
+        fn(w);
+}
+
 SimulationController::SimulationController(QObject* parent) : QObject(parent)
 {
     m_frameTimer.setTimerType(Qt::PreciseTimer);
@@ -26,12 +33,28 @@ SimulationController::SimulationController(QObject* parent) : QObject(parent)
 
 void SimulationController::loadScene(const lessons::Scene& scene, const QString& path)
 {
+    std::vector<physics::World> worlds;
+    worlds.push_back(lessons::buildWorld(scene));
+    loadWorlds(scene, path, std::move(worlds), {}, physics::Vec2::Zero());
+}
+
+void SimulationController::loadWorlds(const lessons::Scene& scene, const QString& path,
+                                      std::vector<physics::World> worlds, const QStringList& labels,
+                                      const physics::Vec2& offset)
+{
     setRunning(false);
     m_scene = scene;
     m_path = path;
     m_sceneGravity = scene.world.gravity;
     m_grab.reset();
-    m_world = lessons::buildWorld(m_scene);
+    m_world = std::move(worlds.front());
+    m_worldStart = m_world;
+    m_variants.assign(std::make_move_iterator(worlds.begin() + 1),
+                      std::make_move_iterator(worlds.end()));
+    m_variantStarts = m_variants;
+    m_variantLabels = labels;
+    m_variantOffset = offset;
+    m_watched.clear();
     resetClock();
     emit sceneLoaded();
     emit settingsChanged();
@@ -40,20 +63,24 @@ void SimulationController::loadScene(const lessons::Scene& scene, const QString&
 
 void SimulationController::reset()
 {
-    // Back to the scene's start, keeping the settings the user chose since.
+    // Back to the start, keeping the settings the user chose since.
     const physics::WorldDef settings = m_world.def();
     setRunning(false);
     m_grab.reset();
-    m_world = lessons::buildWorld(m_scene);
+    m_world = m_worldStart;
     m_world.setDt(settings.dt);
     m_world.setIntegrator(settings.integrator);
     m_world.setSolver(settings.solver);
     m_world.setIterations(settings.iterations);
-    m_world.setGravity(settings.gravity);
-    if (settings.restitution != m_scene.world.restitution)
+    if (settings.restitution != m_worldStart.def().restitution)
         m_world.setRestitution(settings.restitution);
-    if (settings.friction != m_scene.world.friction)
+    if (settings.friction != m_worldStart.def().friction)
         m_world.setFriction(settings.friction);
+    m_variants = m_variantStarts;
+    forEachWorld([&](physics::World& w) {
+        w.setDt(settings.dt);
+        w.setGravity(settings.gravity);
+    });
     resetClock();
     emit worldChanged();
 }
@@ -71,8 +98,29 @@ void SimulationController::resetClock()
     m_slow = false;
     m_lastSampleTime = -1.0;
     m_samples.clear();
+    resetVariants();
+    m_measurements.reset(m_world, m_watched);
     emit samplesCleared();
     pushSample();
+}
+
+void SimulationController::resetVariants()
+{
+    m_variantEnergyStart.clear();
+    m_variantEnergyScale.clear();
+    for (physics::World& w : m_variants) {
+        w.updateDiagnostics();
+        const physics::Diagnostics& d = w.diagnostics();
+        m_variantEnergyStart.push_back(d.total);
+        m_variantEnergyScale.push_back(
+            std::max({std::abs(d.total), d.kinetic + std::abs(d.potential), 1e-12}));
+    }
+}
+
+void SimulationController::watch(const std::vector<lessons::Measure>& measures)
+{
+    m_watched = measures;
+    m_measurements.reset(m_world, m_watched);
 }
 
 double SimulationController::driftPercent() const
@@ -136,7 +184,10 @@ void SimulationController::doStep()
     if (input)
         applyInput(m_world, *input);
     m_world.step();
+    for (physics::World& w : m_variants)
+        w.step();
     m_history.recorded(m_world, input ? &*input : nullptr);
+    m_measurements.observe(m_world);
     ++m_stepsThisSecond;
     pushSample();
 }
@@ -157,6 +208,19 @@ void SimulationController::pushSample()
     s.py = d.momentum.y();
     s.angularMomentum = d.angularMomentum;
     s.driftPercent = driftPercent();
+    if (!m_variantLabels.isEmpty()) {
+        // Variant 0 is the main world; the others follow in order.
+        s.variants = std::min<int>(Sample::kMaxVariants, 1 + static_cast<int>(m_variants.size()));
+        s.variantTotal[0] = s.total;
+        s.variantDriftPercent[0] = s.driftPercent;
+        for (int i = 1; i < s.variants; ++i) {
+            const auto k = static_cast<std::size_t>(i - 1);
+            const double total = m_variants[k].diagnostics().total;
+            s.variantTotal[static_cast<std::size_t>(i)] = total;
+            s.variantDriftPercent[static_cast<std::size_t>(i)] =
+                (total - m_variantEnergyStart[k]) / m_variantEnergyScale[k] * 100.0;
+        }
+    }
     m_samples.push(s);
 }
 
@@ -211,6 +275,17 @@ void SimulationController::seek(long long step)
         return;
     m_world = m_history.restore(step);
     m_world.updateDiagnostics();
+    // The compared worlds have no history of their own: they are small (lesson scenes)
+    // and replay from their start, deterministically.
+    for (std::size_t i = 0; i < m_variants.size(); ++i) {
+        physics::World w = m_variantStarts[i];
+        w.setDt(m_world.def().dt);
+        while (w.stepCount() < step)
+            w.step();
+        w.updateDiagnostics();
+        m_variants[i] = std::move(w);
+    }
+    m_measurements.rewind(m_world.time());
     m_previousPoses.clear();
     m_lastSampleTime = m_world.time() - kSampleInterval; // sample again from here on
     emit rewound(m_world.time());
@@ -237,7 +312,7 @@ void SimulationController::setDt(double dt)
 {
     if (!(dt > 0) || dt == m_world.def().dt)
         return;
-    m_world.setDt(dt);
+    forEachWorld([dt](physics::World& w) { w.setDt(dt); });
     afterEdit(QStringLiteral("dt = %1 s").arg(dt));
 }
 
@@ -271,7 +346,7 @@ void SimulationController::setRestitution(double e)
 {
     if (!(e >= 0 && e <= 1))
         return;
-    m_world.setRestitution(e);
+    forEachWorld([e](physics::World& w) { w.setRestitution(e); });
     afterEdit(QStringLiteral("e = %1").arg(e));
 }
 
@@ -279,7 +354,7 @@ void SimulationController::setFriction(double mu)
 {
     if (!(mu >= 0 && std::isfinite(mu)))
         return;
-    m_world.setFriction(mu);
+    forEachWorld([mu](physics::World& w) { w.setFriction(mu); });
     afterEdit(QStringLiteral("μ = %1").arg(mu));
 }
 
@@ -288,7 +363,7 @@ void SimulationController::setGravityEnabled(bool on)
     const physics::Vec2 g = on ? m_sceneGravity : physics::Vec2::Zero();
     if (g == m_world.def().gravity)
         return;
-    m_world.setGravity(g);
+    forEachWorld([&g](physics::World& w) { w.setGravity(g); });
     afterEdit(on ? QStringLiteral("gravity on") : QStringLiteral("gravity off"));
 }
 
@@ -301,6 +376,16 @@ void SimulationController::setBodyMaterial(physics::BodyId id, double restitutio
     physics::Body& b = m_world.body(id);
     b.restitution = restitution;
     b.friction = friction;
+    afterEdit(QString());
+}
+
+void SimulationController::rotateBody(physics::BodyId id, double radians)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
+        !m_world.body(id).moves() || !std::isfinite(radians))
+        return;
+    physics::Body& b = m_world.body(id);
+    b.angle += radians; // about the centre of mass, which is where the state is held
     afterEdit(QString());
 }
 

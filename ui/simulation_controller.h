@@ -11,6 +11,7 @@
 #include "history.h"
 #include "sample_buffer.h"
 
+#include "rigidlab/lessons/measurements.h"
 #include "rigidlab/lessons/scene.h"
 #include "rigidlab/physics/world.h"
 
@@ -35,12 +36,29 @@ class SimulationController : public QObject {
 public:
     explicit SimulationController(QObject* parent = nullptr);
 
-    /// Replaces the scene and its world; the run starts paused at t = 0 unless `run`.
+    /// Replaces the scene and its world; the run starts paused at t = 0.
     void loadScene(const lessons::Scene& scene, const QString& path);
+    /// Like loadScene, with prepared worlds (a lesson step): worlds[0] is the main one, the
+    /// others run beside it as variants (labels: one per world, or empty).
+    void loadWorlds(const lessons::Scene& scene, const QString& path,
+                    std::vector<physics::World> worlds, const QStringList& labels,
+                    const physics::Vec2& offset);
     const lessons::Scene& scene() const { return m_scene; }
     const QString& scenePath() const { return m_path; }
     const physics::World& world() const { return m_world; }
     const SampleBuffer& samples() const { return m_samples; }
+
+    // Worlds run side by side with the main one (a lesson comparing integrators or solvers).
+    // They step in lockstep with it and share its dt, restitution, friction and gravity.
+    int variantCount() const { return static_cast<int>(m_variants.size()); }
+    const physics::World& variant(int i) const { return m_variants[static_cast<size_t>(i)]; }
+    /// Labels of all compared worlds, the main one first; empty when nothing is compared.
+    const QStringList& variantLabels() const { return m_variantLabels; }
+    physics::Vec2 variantOffset() const { return m_variantOffset; }
+
+    // What a lesson measures while the world runs (bounces, collisions, timed values).
+    void watch(const std::vector<lessons::Measure>& measures);
+    const lessons::Measurements& measurements() const { return m_measurements; }
 
     bool isRunning() const { return m_running; }
     double timeScale() const { return m_timeScale; }
@@ -91,6 +109,9 @@ public slots:
     void setFriction(double mu);
     void setGravityEnabled(bool on);
     void setBodyMaterial(physics::BodyId id, double restitution, double friction);
+    /// Turns a body about its centre of mass by `radians` (a teaching aid: it is moved, not
+    /// pushed, so the future branches from here).
+    void rotateBody(physics::BodyId id, double radians);
     /// Advances the clock by the wall time since the last frame (the frame timer calls it).
     void advanceFrame();
 
@@ -112,10 +133,13 @@ private:
     void pushSample();
     void afterEdit(const QString& mark);
     void resetClock();
+    void resetVariants();
+    template <typename Fn> void forEachWorld(Fn&& fn);
 
     lessons::Scene m_scene;
     QString m_path;
     physics::World m_world;
+    physics::World m_worldStart; ///< as loaded, for reset
     std::vector<Pose> m_previousPoses;
     History m_history;
     SampleBuffer m_samples;
@@ -123,6 +147,13 @@ private:
     double m_energyStart = 0.0; ///< [J]
     double m_lastSampleTime = -1.0;
     physics::Vec2 m_sceneGravity = physics::Vec2::Zero();
+    std::vector<physics::World> m_variants;
+    std::vector<physics::World> m_variantStarts; ///< to rebuild them on reset and seek
+    std::vector<double> m_variantEnergyStart, m_variantEnergyScale;
+    QStringList m_variantLabels;
+    physics::Vec2 m_variantOffset = physics::Vec2::Zero();
+    lessons::Measurements m_measurements;
+    std::vector<lessons::Measure> m_watched;
 
     QTimer m_frameTimer;
     QElapsedTimer m_wall;

@@ -1,6 +1,7 @@
 #include "world_view.h"
 
 #include "body_item.h"
+#include "plot_widget.h"
 #include "simulation_controller.h"
 
 #include <QMouseEvent>
@@ -53,6 +54,10 @@ void WorldView::rebuild()
     for (BodyItem* item : m_items)
         delete item;
     m_items.clear();
+    for (const Ghost& g : m_ghosts)
+        delete g.item;
+    m_ghosts.clear();
+    const bool comparing = !m_controller.variantLabels().isEmpty();
     m_selected = -1;
     const auto& bodies = m_controller.world().bodies();
     int colour = 0;
@@ -61,10 +66,25 @@ void WorldView::rebuild()
         const int kind = b.type == physics::BodyType::Static      ? 1
                          : b.type == physics::BodyType::Kinematic ? 2
                                                                   : 0;
-        auto* item = new BodyItem(static_cast<int>(i), b.shape, kind,
-                                  kind == 1 ? QColor(Qt::gray) : bodyColor(colour++));
+        // When worlds are compared, each has one colour, the same as its plot curve.
+        const QColor fill = kind == 1   ? QColor(Qt::gray)
+                            : comparing ? plotColor(0)
+                                        : bodyColor(colour++);
+        auto* item = new BodyItem(static_cast<int>(i), b.shape, kind, fill);
         m_scene->addItem(item);
         m_items.push_back(item);
+    }
+    for (int v = 0; v < m_controller.variantCount(); ++v) {
+        const auto& vb = m_controller.variant(v).bodies();
+        for (std::size_t i = 0; i < vb.size(); ++i) {
+            if (!vb[i].moves())
+                continue;
+            auto* item = new BodyItem(static_cast<int>(i), vb[i].shape, 3, plotColor(v + 1));
+            item->setZValue(2);
+            item->setAcceptedMouseButtons(Qt::NoButton);
+            m_scene->addItem(item);
+            m_ghosts.push_back({v, static_cast<int>(i), item});
+        }
     }
     m_overlays->clearTrails();
     syncPoses();
@@ -78,6 +98,11 @@ void WorldView::syncPoses()
     for (std::size_t i = 0; i < m_items.size(); ++i) {
         const Pose pose = m_controller.drawPose(static_cast<physics::BodyId>(i));
         m_items[i]->setPose(pose.origin.x(), pose.origin.y(), pose.angle);
+    }
+    for (const Ghost& g : m_ghosts) {
+        const physics::Body& b = m_controller.variant(g.variant).body(g.body);
+        const physics::Vec2 o = b.origin() + (g.variant + 1) * m_controller.variantOffset();
+        g.item->setPose(o.x(), o.y(), b.angle);
     }
     if (m_autoFit && !m_fitted.isEmpty()) {
         // Follow bodies that leave the fitted area, by widening it (within the limit).
@@ -105,6 +130,8 @@ QRectF WorldView::contentRect() const
     QRectF box;
     for (const BodyItem* item : m_items)
         box |= item->sceneBoundingRect();
+    for (const Ghost& g : m_ghosts)
+        box |= g.item->sceneBoundingRect();
     const physics::World& w = m_controller.world();
     auto add = [&](physics::BodyId id, const physics::Vec2& anchor) {
         const physics::Vec2 p =
@@ -268,6 +295,18 @@ void WorldView::drawForeground(QPainter* painter, const QRectF&)
     const QString label =
         nice >= 1 ? QStringLiteral("%1 m").arg(nice) : QStringLiteral("%1 cm").arg(nice * 100);
     painter->drawText(o + QPoint(len + 8, 5), label);
+
+    // Which colour is which world, when worlds are compared.
+    const QStringList& labels = m_controller.variantLabels();
+    const QFontMetrics fm(f);
+    int y = 12 + fm.ascent();
+    for (int i = 0; i < labels.size(); ++i) {
+        painter->fillRect(QRect(14, y - fm.ascent() + 2, 22, fm.ascent() - 4), plotColor(i));
+        painter->setPen(QColor(30, 30, 30));
+        painter->drawText(QPoint(42, y), i == 0 ? tr("%1 (solid)").arg(labels[i])
+                                                : tr("%1 (outline)").arg(labels[i]));
+        y += fm.height() + 2;
+    }
     painter->restore();
 }
 

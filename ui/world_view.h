@@ -57,6 +57,12 @@ private:
     QGraphicsScene* m_scene;
     OverlayItem* m_overlays;
     std::vector<BodyItem*> m_items; ///< indexed by body id
+    struct Ghost {
+        int variant = 0; ///< index into the controller's variants
+        int body = 0;
+        BodyItem* item = nullptr;
+    };
+    std::vector<Ghost> m_ghosts;
     int m_selected = -1;
     bool m_panning = false;
     bool m_autoFit = true; ///< fit the scene on resize until the user pans or zooms

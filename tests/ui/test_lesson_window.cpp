@@ -1,0 +1,224 @@
+// Lessons in the window: every shipped lesson opens, its steps go forward and back, each
+// step shows only the panels and plots it names, questions are judged, plots export.
+
+#include "lesson_panels.h"
+#include "lesson_player.h"
+#include "main_window.h"
+#include "plot_widget.h"
+#include "sat_panel.h"
+#include "simulation_controller.h"
+
+#include "rigidlab/lessons/lesson.h"
+#include "rigidlab/lessons/measurements.h"
+
+#include <QDockWidget>
+#include <QImage>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+using namespace rigidlab;
+using rigidlab::ui::MainWindow;
+
+namespace {
+
+const QStringList kDockNames{QStringLiteral("controls"), QStringLiteral("inspector"),
+                             QStringLiteral("energy"),   QStringLiteral("momentum"),
+                             QStringLiteral("drift"),    QStringLiteral("sat"),
+                             QStringLiteral("bounces"),  QStringLiteral("collision")};
+
+QStringList shippedLessons()
+{
+    const QDir dir(MainWindow::lessonsFolder());
+    QStringList out;
+    for (const QString& f : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name))
+        out << dir.filePath(f);
+    return out;
+}
+
+} // namespace
+
+class TestLessonWindow : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("RigidLabTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("test_lesson_window"));
+        QStandardPaths::setTestModeEnabled(true);
+        QVERIFY2(shippedLessons().size() >= 5, qPrintable(MainWindow::lessonsFolder()));
+    }
+
+    void everyLessonWalksForwardAndBack_data()
+    {
+        QTest::addColumn<QString>("path");
+        for (const QString& p : shippedLessons())
+            QTest::newRow(qPrintable(QFileInfo(p).baseName())) << p;
+    }
+    void everyLessonWalksForwardAndBack()
+    {
+        QFETCH(QString, path);
+        MainWindow w;
+        QCOMPARE(w.openLesson(path, true), QString());
+        auto& player = w.lessonPlayer();
+        QVERIFY(player.lesson());
+        const int steps = static_cast<int>(player.lesson()->steps.size());
+        QVERIFY(steps >= 1);
+        QCOMPARE(player.stepIndex(), 0);
+        for (int i = 0; i < steps; ++i) {
+            QCOMPARE(player.stepIndex(), i);
+            const lessons::LessonStep& step = player.lesson()->steps[static_cast<size_t>(i)];
+            // Only what the step names is shown.
+            for (const QString& name : kDockNames) {
+                const bool wanted = step.panels.contains(name) || step.plots.contains(name);
+                QVERIFY2(w.dock(name)->isHidden() == !wanted,
+                         qPrintable(QStringLiteral("step %1, %2").arg(i).arg(name)));
+            }
+            const bool compares = step.plots.contains(QStringLiteral("compare-energy")) ||
+                                  step.plots.contains(QStringLiteral("compare-drift"));
+            QCOMPARE(w.comparePlot() != nullptr, compares);
+            if (step.compare)
+                QCOMPARE(w.controller().variantLabels().size(), step.compare->count());
+            // The step's scene is loaded and runs.
+            QCOMPARE(w.controller().world().bodies().size(), step.scene.bodies.size());
+            for (int k = 0; k < 30; ++k)
+                w.controller().stepForward();
+            for (const physics::Body& b : w.controller().world().bodies())
+                QVERIFY(std::isfinite(b.position.x()) && std::isfinite(b.position.y()));
+            player.next();
+        }
+        QCOMPARE(player.stepIndex(), steps - 1); // next() on the last step stays there
+        for (int i = steps - 1; i > 0; --i) {
+            player.back();
+            QCOMPARE(player.stepIndex(), i - 1);
+        }
+        player.back();
+        QCOMPARE(player.stepIndex(), 0);
+        // Leaving the lesson brings the plain lab back.
+        player.closeLesson();
+        for (const QString& name : {QStringLiteral("controls"), QStringLiteral("energy")})
+            QVERIFY(!w.dock(name)->isHidden());
+        QVERIFY(w.dock(QStringLiteral("sat"))->isHidden());
+    }
+
+    void questionsAreJudged()
+    {
+        // The first apex question of any shipped lesson: answered with the measured value
+        // it is right, with a value far off it is not.
+        for (const QString& path : shippedLessons()) {
+            MainWindow w;
+            QCOMPARE(w.openLesson(path, true), QString());
+            auto& player = w.lessonPlayer();
+            const auto& steps = player.lesson()->steps;
+            for (int s = 0; s < static_cast<int>(steps.size()); ++s) {
+                const auto& qs = steps[static_cast<size_t>(s)].questions;
+                for (int q = 0; q < static_cast<int>(qs.size()); ++q) {
+                    player.goToStep(s);
+                    w.controller().setRunning(false);
+                    player.answer(q, QStringLiteral("1"));
+                    QVERIFY2(player.result(q).contains(QStringLiteral("first")) ||
+                                 player.result(q).contains(QStringLiteral("Run")),
+                             qPrintable(player.result(q)));
+                    std::optional<double> value;
+                    for (int k = 0; k < 200000 && !value; ++k) {
+                        w.controller().stepForward();
+                        value = w.controller().measurements().value(
+                            qs[static_cast<size_t>(q)].measure,
+                            steps[static_cast<size_t>(s)].scene);
+                    }
+                    QVERIFY2(value, qPrintable(qs[static_cast<size_t>(q)].prompt));
+                    player.answer(q, QString::number(*value, 'g', 10));
+                    QVERIFY2(player.result(q).startsWith(QStringLiteral("Right")),
+                             qPrintable(player.result(q)));
+                    player.answer(q, QString::number(*value * 3 + 10, 'g', 10));
+                    QVERIFY2(player.result(q).startsWith(QStringLiteral("Not quite")),
+                             qPrintable(player.result(q)));
+                    return; // one real question is enough here; the loader tests judge more
+                }
+            }
+        }
+        QSKIP("no shipped lesson has a question");
+    }
+
+    void satStepWalksTheAxes()
+    {
+        for (const QString& path : shippedLessons()) {
+            MainWindow w;
+            QCOMPARE(w.openLesson(path, true), QString());
+            auto& player = w.lessonPlayer();
+            const auto& steps = player.lesson()->steps;
+            for (int s = 0; s < static_cast<int>(steps.size()); ++s) {
+                if (!steps[static_cast<size_t>(s)].sat)
+                    continue;
+                player.goToStep(s);
+                ui::SatPanel& sat = w.satPanel();
+                QVERIFY(sat.active());
+                const int total = static_cast<int>(sat.result().axes.size());
+                QVERIFY(total >= 1);
+                QCOMPARE(sat.shown(), 1);
+                for (int i = 1; i < total; ++i)
+                    sat.nextAxis();
+                QCOMPARE(sat.shown(), total);
+                // What is shown is what the SAT code returned.
+                const auto& bodies = w.controller().world().bodies();
+                const auto a = steps[static_cast<size_t>(s)].scene.bodyIndex(
+                    steps[static_cast<size_t>(s)].sat->first);
+                const auto b = steps[static_cast<size_t>(s)].scene.bodyIndex(
+                    steps[static_cast<size_t>(s)].sat->second);
+                const physics::SatResult direct =
+                    physics::satPolygons(bodies[static_cast<size_t>(*a)].shape.polygon,
+                                         bodies[static_cast<size_t>(*a)].transform(),
+                                         bodies[static_cast<size_t>(*b)].shape.polygon,
+                                         bodies[static_cast<size_t>(*b)].transform());
+                QCOMPARE(sat.result().intersects, direct.intersects);
+                QCOMPARE(sat.result().axesTested, direct.axesTested);
+                QVERIFY(sat.summary().contains(QString::number(direct.axesTested)));
+                return;
+            }
+        }
+        QSKIP("no shipped lesson has a SAT step");
+    }
+
+    void stepPlotsExport()
+    {
+        MainWindow w;
+        for (const QString& path : shippedLessons()) {
+            QCOMPARE(w.openLesson(path, true), QString());
+            const auto& steps = w.lessonPlayer().lesson()->steps;
+            for (int s = 0; s < static_cast<int>(steps.size()); ++s) {
+                if (steps[static_cast<size_t>(s)].plots.isEmpty())
+                    continue;
+                w.lessonPlayer().goToStep(s);
+                for (int k = 0; k < 200; ++k)
+                    w.controller().stepForward();
+                QTemporaryDir dir;
+                const QStringList errors = w.exportStepPlots(dir.path());
+                QVERIFY2(errors.isEmpty(), qPrintable(errors.join(QLatin1Char('\n'))));
+                const QStringList pngs = QDir(dir.path()).entryList({QStringLiteral("*.png")});
+                QVERIFY(!pngs.isEmpty());
+                QVERIFY(!QImage(QDir(dir.path()).filePath(pngs.first())).isNull());
+                QCOMPARE(QDir(dir.path()).entryList({QStringLiteral("*.csv")}).size(), pngs.size());
+                return;
+            }
+        }
+        QSKIP("no shipped lesson has plots");
+    }
+
+    void brokenLessonShowsError()
+    {
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("broken.json"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(
+            R"({"rigidlab-lesson": 1, "title": "x", "steps": [{"title": "a", "scene": "../escape.json"}]})");
+        f.close();
+        MainWindow w;
+        const QString error = w.openLesson(path);
+        QVERIFY(error.contains(QStringLiteral("broken.json")));
+        QVERIFY(!w.lessonPlayer().lesson());
+    }
+};
+
+QTEST_MAIN(TestLessonWindow)
+#include "test_lesson_window.moc"

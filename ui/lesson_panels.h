@@ -1,0 +1,45 @@
+#pragma once
+// Tables that lessons show beside the view: bounce heights against e² times the previous
+// one, and a collision's before and after (velocities, momentum, kinetic energy, and the
+// spin the impulse formula predicts with and without its rotational terms).
+
+#include <QWidget>
+
+class QLabel;
+class QTableWidget;
+
+namespace rigidlab::ui {
+
+class SimulationController;
+
+class BouncePanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit BouncePanel(SimulationController& controller, QWidget* parent = nullptr);
+    QTableWidget* table() const { return m_table; }
+
+public slots:
+    void refresh();
+
+private:
+    SimulationController& m_controller;
+    QTableWidget* m_table;
+};
+
+class CollisionPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit CollisionPanel(SimulationController& controller, QWidget* parent = nullptr);
+    QTableWidget* table() const { return m_table; }
+
+public slots:
+    void refresh();
+
+private:
+    SimulationController& m_controller;
+    QLabel* m_title;
+    QTableWidget* m_table;
+    int m_shownCount = -1;
+};
+
+} // namespace rigidlab::ui

@@ -1,0 +1,254 @@
+#include "lesson_player.h"
+
+#include "simulation_controller.h"
+
+#include "rigidlab/lessons/measurements.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QDoubleValidator>
+#include <QFileInfo>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTextBrowser>
+#include <QVBoxLayout>
+
+namespace rigidlab::ui {
+
+LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
+    : QWidget(parent), m_controller(controller), m_lessonBox(new QComboBox(this)),
+      m_title(new QLabel(this)), m_about(new QLabel(this)), m_progress(new QProgressBar(this)),
+      m_stepTitle(new QLabel(this)), m_text(new QTextBrowser(this)),
+      m_questionBox(new QWidget(this)), m_questionLayout(new QVBoxLayout(m_questionBox)),
+      m_back(new QPushButton(tr("◀ Back"), this)),
+      m_restart(new QPushButton(tr("Restart step"), this)),
+      m_next(new QPushButton(tr("Next ▶"), this)),
+      m_export(new QPushButton(tr("Export plots…"), this))
+{
+    auto* layout = new QVBoxLayout(this);
+    m_lessonBox->setToolTip(
+        tr("The lessons that come with RigidLab (File › Open lesson for others)"));
+    layout->addWidget(m_lessonBox);
+    QFont big = m_title->font();
+    big.setPointSizeF(big.pointSizeF() * 1.35);
+    big.setBold(true);
+    m_title->setFont(big);
+    m_title->setWordWrap(true);
+    m_about->setWordWrap(true);
+    m_about->setStyleSheet(QStringLiteral("color: #555;"));
+    layout->addWidget(m_title);
+    layout->addWidget(m_about);
+    layout->addWidget(m_progress);
+    QFont bold = m_stepTitle->font();
+    bold.setBold(true);
+    bold.setPointSizeF(bold.pointSizeF() * 1.15);
+    m_stepTitle->setFont(bold);
+    m_stepTitle->setWordWrap(true);
+    layout->addWidget(m_stepTitle);
+    m_text->setOpenExternalLinks(false);
+    m_text->setMinimumHeight(160);
+    QFont textFont = m_text->font();
+    textFont.setPointSizeF(textFont.pointSizeF() * 1.1); // readable on a projector
+    m_text->setFont(textFont);
+    layout->addWidget(m_text, 1);
+    m_questionLayout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_questionBox);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_back);
+    buttons->addWidget(m_restart);
+    buttons->addWidget(m_next);
+    layout->addLayout(buttons);
+    layout->addWidget(m_export);
+
+    connect(m_back, &QPushButton::clicked, this, &LessonPlayer::back);
+    connect(m_next, &QPushButton::clicked, this, &LessonPlayer::next);
+    connect(m_restart, &QPushButton::clicked, this, &LessonPlayer::restartStep);
+    connect(m_export, &QPushButton::clicked, this, &LessonPlayer::exportRequested);
+    connect(m_lessonBox, &QComboBox::activated, this, [this](int index) {
+        const QString path = m_lessonBox->itemData(index).toString();
+        if (path.isEmpty())
+            return closeLesson();
+        const QString error = openLesson(path);
+        if (!error.isEmpty())
+            QMessageBox::warning(this, tr("Cannot open lesson"), error);
+    });
+    showStep();
+}
+
+void LessonPlayer::scanFolder(const QString& folder)
+{
+    m_lessonBox->clear();
+    m_paths.clear();
+    m_lessonBox->addItem(tr("Choose a lesson…"), QString());
+    const QDir dir(folder);
+    for (const QFileInfo& info :
+         dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+        const lessons::LessonLoadResult r = lessons::loadLessonFile(info.filePath());
+        if (!r.ok)
+            continue; // a broken shipped lesson is a test failure, not a menu entry
+        m_lessonBox->addItem(r.lesson.title, info.filePath());
+        m_paths << info.filePath();
+    }
+}
+
+QString LessonPlayer::openLesson(const QString& path)
+{
+    lessons::LessonLoadResult r = lessons::loadLessonFile(path);
+    if (!r.ok)
+        return r.error;
+    if (r.lesson.steps.empty())
+        return tr("%1: the lesson has no steps").arg(path);
+    m_lesson = std::make_unique<lessons::Lesson>(std::move(r.lesson));
+    const int index = m_lessonBox->findData(QFileInfo(path).absoluteFilePath());
+    if (index >= 0)
+        m_lessonBox->setCurrentIndex(index);
+    m_step = 0;
+    showStep();
+    emit stepActivated(*m_lesson, m_step);
+    return QString();
+}
+
+void LessonPlayer::closeLesson()
+{
+    if (!m_lesson)
+        return;
+    m_lesson.reset();
+    m_lessonBox->setCurrentIndex(0);
+    showStep();
+    emit lessonClosed();
+}
+
+void LessonPlayer::goToStep(int index)
+{
+    if (!m_lesson || index < 0 || index >= static_cast<int>(m_lesson->steps.size()))
+        return;
+    m_step = index;
+    showStep();
+    emit stepActivated(*m_lesson, m_step);
+}
+
+void LessonPlayer::next()
+{
+    goToStep(m_step + 1);
+}
+void LessonPlayer::back()
+{
+    goToStep(m_step - 1);
+}
+void LessonPlayer::restartStep()
+{
+    goToStep(m_step);
+}
+
+void LessonPlayer::showStep()
+{
+    const bool has = m_lesson != nullptr;
+    for (QWidget* w : {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepTitle),
+                       static_cast<QWidget*>(m_restart), static_cast<QWidget*>(m_back),
+                       static_cast<QWidget*>(m_next), static_cast<QWidget*>(m_export)})
+        w->setVisible(has);
+    if (!has) {
+        m_title->setText(tr("Lessons"));
+        m_about->setText(tr("Choose a lesson above. Each one walks you through an idea of "
+                            "the mechanics step by step, with a prepared scene to run, "
+                            "change and measure."));
+        m_text->clear();
+        m_rows.clear();
+        buildQuestions();
+        return;
+    }
+    const lessons::Lesson& l = *m_lesson;
+    const lessons::LessonStep& s = l.steps[static_cast<size_t>(m_step)];
+    m_title->setText(l.title);
+    QString about = l.summary;
+    if (!l.level.isEmpty() || l.minutes > 0)
+        about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l.level).arg(l.minutes);
+    m_about->setText(about);
+    m_progress->setRange(0, static_cast<int>(l.steps.size()));
+    m_progress->setValue(m_step + 1);
+    m_progress->setFormat(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
+    m_stepTitle->setText(s.title);
+    m_text->setMarkdown(s.text);
+    m_back->setEnabled(m_step > 0);
+    m_next->setEnabled(m_step + 1 < static_cast<int>(l.steps.size()));
+    m_export->setEnabled(!s.plots.isEmpty());
+    buildQuestions();
+}
+
+void LessonPlayer::buildQuestions()
+{
+    while (QLayoutItem* item = m_questionLayout->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    m_rows.clear();
+    if (!m_lesson)
+        return;
+    const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
+    for (std::size_t i = 0; i < step.questions.size(); ++i) {
+        const lessons::Question& q = step.questions[i];
+        auto* box = new QWidget(m_questionBox);
+        auto* v = new QVBoxLayout(box);
+        v->setContentsMargins(0, 4, 0, 4);
+        auto* prompt = new QLabel(q.prompt, box);
+        prompt->setWordWrap(true);
+        v->addWidget(prompt);
+        auto* row = new QHBoxLayout;
+        auto* edit = new QLineEdit(box);
+        auto* validator = new QDoubleValidator(edit);
+        validator->setNotation(QDoubleValidator::ScientificNotation);
+        edit->setValidator(validator);
+        edit->setPlaceholderText(tr("your answer"));
+        row->addWidget(edit, 1);
+        row->addWidget(new QLabel(q.unit, box));
+        auto* check = new QPushButton(tr("Check"), box);
+        row->addWidget(check);
+        v->addLayout(row);
+        auto* result = new QLabel(box);
+        result->setWordWrap(true);
+        v->addWidget(result);
+        m_questionLayout->addWidget(box);
+        m_rows.push_back({edit, result});
+        auto judge = [this, i, edit, result] {
+            if (!m_lesson)
+                return;
+            const lessons::LessonStep& st = m_lesson->steps[static_cast<size_t>(m_step)];
+            bool ok = false;
+            const double answer = edit->locale().toDouble(edit->text(), &ok);
+            if (!ok || !std::isfinite(answer)) {
+                result->setStyleSheet(QStringLiteral("color: #a05a00;"));
+                result->setText(tr("Type a number first."));
+                return;
+            }
+            const lessons::Verdict v =
+                lessons::judge(st.questions[i], answer, m_controller.measurements(), st.scene);
+            result->setStyleSheet(!v.measured ? QStringLiteral("color: #a05a00;")
+                                  : v.right   ? QStringLiteral("color: #1e7b34; font-weight: bold;")
+                                            : QStringLiteral("color: #b3261e; font-weight: bold;"));
+            result->setText(v.message);
+        };
+        connect(check, &QPushButton::clicked, this, judge);
+        connect(edit, &QLineEdit::returnPressed, this, judge);
+    }
+}
+
+void LessonPlayer::answer(int question, const QString& text)
+{
+    if (question < 0 || question >= static_cast<int>(m_rows.size()))
+        return;
+    m_rows[static_cast<size_t>(question)].edit->setText(text);
+    emit m_rows[static_cast<size_t>(question)].edit->returnPressed();
+}
+
+QString LessonPlayer::result(int question) const
+{
+    if (question < 0 || question >= static_cast<int>(m_rows.size()))
+        return QString();
+    return m_rows[static_cast<size_t>(question)].result->text();
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,80 @@
+#pragma once
+// The lesson player: pick a lesson, read a step, answer its questions, go back and forth.
+// It only shows; the window applies each step (scene, settings, panels) when told to.
+
+#include "rigidlab/lessons/lesson.h"
+
+#include <QWidget>
+
+#include <memory>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QTextBrowser;
+class QVBoxLayout;
+
+namespace rigidlab::ui {
+
+class SimulationController;
+
+class LessonPlayer : public QWidget {
+    Q_OBJECT
+public:
+    explicit LessonPlayer(SimulationController& controller, QWidget* parent = nullptr);
+
+    /// Lessons found in the shipped lessons folder, by title.
+    void scanFolder(const QString& folder);
+    /// Opens a lesson; its first step is activated. Returns the error, empty on success.
+    QString openLesson(const QString& path);
+    const lessons::Lesson* lesson() const { return m_lesson.get(); }
+    int stepIndex() const { return m_step; }
+    QStringList lessonPaths() const { return m_paths; }
+
+    /// The answer box and result line of question i of the current step (for tests).
+    void answer(int question, const QString& text);
+    QString result(int question) const;
+
+public slots:
+    void next();
+    void back();
+    void restartStep();
+    void goToStep(int index);
+    void closeLesson();
+
+signals:
+    /// The window should set up this step.
+    void stepActivated(const rigidlab::lessons::Lesson& lesson, int step);
+    void exportRequested();
+    void lessonClosed();
+
+private:
+    void showStep();
+    void buildQuestions();
+
+    SimulationController& m_controller;
+    std::unique_ptr<lessons::Lesson> m_lesson;
+    int m_step = 0;
+    QStringList m_paths;
+    QComboBox* m_lessonBox;
+    QLabel* m_title;
+    QLabel* m_about;
+    QProgressBar* m_progress;
+    QLabel* m_stepTitle;
+    QTextBrowser* m_text;
+    QWidget* m_questionBox;
+    QVBoxLayout* m_questionLayout;
+    QPushButton* m_back;
+    QPushButton* m_restart;
+    QPushButton* m_next;
+    QPushButton* m_export;
+    struct QuestionRow {
+        QLineEdit* edit = nullptr;
+        QLabel* result = nullptr;
+    };
+    std::vector<QuestionRow> m_rows;
+};
+
+} // namespace rigidlab::ui
