@@ -1,9 +1,9 @@
 // rigidlab-cli: scenes without a window. Argument handling only; the work is done by
 // rigidlab_lessons (scene_loader, scene_run, sat_report, document).
 
-#include "rigidlab/lessons/bench.h"
 #include "cli_lesson.h"
 #include "cli_numerics.h"
+#include "rigidlab/lessons/bench.h"
 
 #include "rigidlab/lessons/document.h"
 #include "rigidlab/lessons/sat_report.h"

@@ -157,8 +157,8 @@ private:
 
     QCustomPlot* m_plot = nullptr; ///< child
     bool m_titleShown = true;
-    QCPTextElement* m_title = nullptr;     ///< owned by m_plot's layout
-    QCPTextElement* m_caption = nullptr;   ///< child of m_plot; in its layout while shown
+    QCPTextElement* m_title = nullptr;   ///< owned by m_plot's layout
+    QCPTextElement* m_caption = nullptr; ///< child of m_plot; in its layout while shown
     QString m_captionText;
     bool m_captionShown = false;
     QToolButton* m_followButton = nullptr; ///< child, shown while paused

@@ -189,8 +189,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
            m_in.number(world, u"gravitation", place, def.gravitation, NumberRule::NonNegative) &&
            m_in.number(world, u"drag", place, def.drag, NumberRule::NonNegative) &&
            m_in.boolean(world, u"continuous", place, def.continuous) &&
-           m_in.number(world, u"tolerance", place, def.tolerances.absolute,
-                       NumberRule::Positive) &&
+           m_in.number(world, u"tolerance", place, def.tolerances.absolute, NumberRule::Positive) &&
            m_in.number(world, u"tolerance", place, def.tolerances.relative, NumberRule::Positive);
 }
 

@@ -165,10 +165,11 @@ void TestLessons::rejectsBadScene_data()
     QTest::newRow("gravity-not-pair") << sceneWith(R"("world": {"gravity": -9.81}, "bodies": [])")
                                       << "world.gravity: must be a pair of numbers [x, y], got "
                                          "-9.81";
-    QTest::newRow("unknown-key-world") << sceneWith(R"("world": {"gravty": [0, 0]}, "bodies": [])")
-                                       << "world.gravty: unknown key (allowed here: gravity, dt, "
-                                          "integrator, solver, iterations, restitution, "
-                                          "friction, gravitation, drag, sleep, continuous, tolerance)";
+    QTest::newRow("unknown-key-world")
+        << sceneWith(R"("world": {"gravty": [0, 0]}, "bodies": [])")
+        << "world.gravty: unknown key (allowed here: gravity, dt, "
+           "integrator, solver, iterations, restitution, "
+           "friction, gravitation, drag, sleep, continuous, tolerance)";
 
     const char* twoBodies = R"("bodies": [{"id": "ball", "shape": {"type": "circle", "radius": 1}},
         {"id": "wall", "type": "static", "shape": {"type": "box", "width": 1, "height": 1}}], )";
