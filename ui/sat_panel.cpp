@@ -313,9 +313,9 @@ QString SatPanel::summary() const
     const int kB =
         static_cast<int>(bodies[static_cast<std::size_t>(m_b)].shape.polygon.vertices.size());
     const int k = kA + kB;
-    QString text = tr("Axes tested: %1 of at most %2 (one per edge, %3 + %4). Each axis "
-                      "projects all %2 vertices: %5 projections so far, at most %6 = (k₁ + k₂)², "
-                      "the paper's count.")
+    QString text = tr("The test needed %1 of at most %2 axes (one per edge, %3 + %4), each "
+                      "projecting all %2 vertices: %5 projections, against the paper's worst "
+                      "case of (k₁ + k₂)² = %6.")
                        .arg(m_result.axesTested)
                        .arg(k)
                        .arg(kA)
