@@ -4,6 +4,7 @@
 #include "divergence_banner.h"
 #include "error_panel.h"
 #include "inspector_panel.h"
+#include "lesson_export.h"
 #include "lesson_panels.h"
 #include "lesson_player.h"
 #include "plot_export.h"
@@ -39,6 +40,20 @@ namespace rigidlab::ui {
 namespace {
 
 constexpr int kMaxRecent = 8;
+
+/// QSettings writes its file atomically (through QSaveFile): a write that fails leaves the
+/// previous settings as they were. That it failed is said in the status bar, not lost.
+void syncSettings(QSettings& settings, QMainWindow& window)
+{
+    settings.sync();
+    if (settings.status() == QSettings::NoError)
+        return;
+    const QString why =
+        QCoreApplication::translate("MainWindow", "Settings not saved: cannot write %1")
+            .arg(QDir::toNativeSeparators(settings.fileName()));
+    window.statusBar()->showMessage(why, 8000);
+    qWarning("%s", qPrintable(why));
+}
 
 struct OverlayInfo {
     Overlay overlay;
@@ -416,6 +431,7 @@ void MainWindow::addRecent(const QString& path)
         recent.removeLast();
     s.setValue(QStringLiteral("recentFiles"), recent);
     s.setValue(QStringLiteral("lastFolder"), m_lastFolder);
+    syncSettings(s, *this);
     rebuildRecentMenu();
 }
 
@@ -562,6 +578,8 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
                                                           : tr("Total energy, side by side"),
                            m_compareDock);
         m_compare->setTitleShown(false);
+        m_compare->setObjectName(compareDrift && !compareEnergy ? QStringLiteral("compare-drift")
+                                                                : QStringLiteral("compare-energy"));
         if (compareDrift && !compareEnergy)
             m_compare->setYAxisLabel(tr("drift (E − E₀)/|E₀|"), QStringLiteral("%"));
         else
@@ -635,26 +653,28 @@ void MainWindow::leaveLesson()
 
 QStringList MainWindow::exportStepPlots(const QString& folder)
 {
-    QStringList errors;
-    std::vector<std::pair<QString, PlotWidget*>> plots;
+    // The plots as the student sees them, with a caption naming the lesson, step,
+    // integrator and dt (or just the scene's title outside a lesson).
+    std::vector<PlotWidget*> plots;
     const std::array<QString, kPlotCount> names{
         QStringLiteral("energy"), QStringLiteral("momentum"), QStringLiteral("drift")};
-    for (int i = 0; i < kPlotCount; ++i)
-        if (!m_docks.value(names[static_cast<size_t>(i)])->isHidden())
-            plots.emplace_back(names[static_cast<size_t>(i)], m_plots[static_cast<size_t>(i)]);
-    if (m_compare)
-        plots.emplace_back(QStringLiteral("side-by-side"), m_compare);
-    for (const auto& [name, plot] : plots) {
-        plot->drain();
-        for (ExportFormat f :
-             {ExportFormat::Png, ExportFormat::Pdf, ExportFormat::Svg, ExportFormat::Csv}) {
-            const QString path = QDir(folder).filePath(name + QLatin1Char('.') + suffixFor(f));
-            const ExportResult r = exportPlot(*plot, path, f);
-            if (!r.ok)
-                errors << r.error;
+    for (int i = 0; i < kPlotCount; ++i) {
+        PlotWidget* plot = m_plots[static_cast<size_t>(i)];
+        if (!m_docks.value(names[static_cast<size_t>(i)])->isHidden()) {
+            plot->setObjectName(names[static_cast<size_t>(i)]);
+            plots.push_back(plot);
         }
     }
-    return errors;
+    if (m_compare)
+        plots.push_back(m_compare);
+    for (PlotWidget* plot : plots)
+        plot->drain();
+    const lessons::Lesson* lesson = m_player->lesson();
+    const QString caption =
+        lesson ? stepCaption(*lesson, m_player->stepIndex(), m_controller->world().def())
+               : m_controller->scene().title;
+    const PlotFilesResult r = exportPlots(plots, folder, caption);
+    return r.ok ? QStringList() : QStringList{r.error};
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -666,6 +686,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
     for (std::size_t i = 0; i < kOverlays.size(); ++i)
         s.setValue(QStringLiteral("overlays/") + QLatin1String(kOverlays[i].key),
                    m_overlayActions[i]->isChecked());
+    syncSettings(s, *this);
     event->accept();
 }
 

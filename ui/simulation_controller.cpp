@@ -1,5 +1,8 @@
 #include "simulation_controller.h"
 
+#include "rigidlab/lessons/limits.h"
+#include "rigidlab/lessons/scene_loader.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -285,7 +288,7 @@ void SimulationController::seek(long long step)
         w.updateDiagnostics();
         m_variants[i] = std::move(w);
     }
-    m_measurements.rewind(m_world.time());
+    m_measurements.rewind(m_world);
     m_previousPoses.clear();
     m_lastSampleTime = m_world.time() - kSampleInterval; // sample again from here on
     emit rewound(m_world.time());
@@ -293,9 +296,14 @@ void SimulationController::seek(long long step)
     emit worldChanged();
 }
 
+// The setters take only what a scene file may hold (lessons/limits.h): a value from outside
+// (a typed number, a test, a lesson) that is out of range or not finite changes nothing.
+
 void SimulationController::setTimeScale(double scale)
 {
-    m_timeScale = std::clamp(scale, 0.1, 4.0);
+    if (!lessons::limits::kTimeScale.contains(scale))
+        return;
+    m_timeScale = scale;
     emit settingsChanged();
 }
 
@@ -310,7 +318,7 @@ void SimulationController::afterEdit(const QString& mark)
 
 void SimulationController::setDt(double dt)
 {
-    if (!(dt > 0) || dt == m_world.def().dt)
+    if (!(dt >= lessons::kMinDt && dt <= lessons::kMaxDt) || dt == m_world.def().dt)
         return;
     forEachWorld([dt](physics::World& w) { w.setDt(dt); });
     afterEdit(QStringLiteral("dt = %1 s").arg(dt));
@@ -336,7 +344,8 @@ void SimulationController::setSolver(physics::SolverKind kind)
 
 void SimulationController::setIterations(int iterations)
 {
-    if (iterations == m_world.def().iterations || iterations < 1)
+    if (iterations == m_world.def().iterations || iterations < 1 ||
+        iterations > lessons::kMaxIterations)
         return;
     m_world.setIterations(iterations);
     afterEdit(QStringLiteral("%1 iterations").arg(iterations));
@@ -352,7 +361,7 @@ void SimulationController::setRestitution(double e)
 
 void SimulationController::setFriction(double mu)
 {
-    if (!(mu >= 0 && std::isfinite(mu)))
+    if (!lessons::limits::kFriction.contains(mu))
         return;
     forEachWorld([mu](physics::World& w) { w.setFriction(mu); });
     afterEdit(QStringLiteral("μ = %1").arg(mu));
@@ -371,7 +380,7 @@ void SimulationController::setBodyMaterial(physics::BodyId id, double restitutio
 {
     if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()))
         return;
-    if (!(restitution >= 0 && restitution <= 1) || !(friction >= 0 && std::isfinite(friction)))
+    if (!(restitution >= 0 && restitution <= 1) || !lessons::limits::kFriction.contains(friction))
         return;
     physics::Body& b = m_world.body(id);
     b.restitution = restitution;
