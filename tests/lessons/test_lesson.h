@@ -108,4 +108,5 @@ private slots:
     void smallerStepShrinksDrift();
     void sequentialImpulseStackMovesLess();
     void billiardsBreakConservesMomentum();
+    void stiffSpringsDivergeWhereTheoryPredicts();
 };

@@ -233,6 +233,41 @@ void TestLesson::shippedQuestionsHaveTheirTextbookAnswers_data()
         << "billiards_momentum" << 1 << 0 << 0.17 * 8 * std::exp(-0.2 * 0.1);
     QTest::newRow("drag-after-break")
         << "billiards_momentum" << 1 << 1 << 0.17 * 8 * std::exp(-0.2 * 0.25);
+    // Explicit Euler on a spring: (1 + (w dt)^2)^n with (w dt)^2 = 100 * 0.005^2, n = 200.
+    QTest::newRow("stiff-euler-growth")
+        << "stiff_springs" << 0 << 0 << (std::pow(1.0025, 200) - 1) * 100;
+}
+
+void TestLesson::stiffSpringsDivergeWhereTheoryPredicts()
+{
+    // The stiff-springs lesson raises k at dt = 5 ms. Symplectic Euler and Verlet are stable
+    // on a spring while w dt < 2, RK4 while w dt < 2 sqrt 2, implicit midpoint always. Each
+    // step's worlds (in its compare order) must diverge exactly where its text says.
+    const lessons::Lesson l = shippedLesson("stiff_springs");
+    struct Expect {
+        std::size_t step;
+        std::vector<bool> diverges; // implicit-midpoint, symplectic-euler, verlet, rk4
+    };
+    const std::vector<Expect> expected{{1, {false, false, false, false}},
+                                       {2, {false, true, true, false}},
+                                       {3, {false, true, true, true}}};
+    for (const Expect& e : expected) {
+        const lessons::LessonStep& s = stepOf(l, e.step);
+        std::vector<physics::World> worlds = lessons::buildStepWorlds(s);
+        QCOMPARE(worlds.size(), e.diverges.size());
+        const double k = s.scene.springs.at(0).stiffness;
+        const double wdt = std::sqrt(k / worlds[0].bodies()[0].mass) * worlds[0].def().dt;
+        for (std::size_t i = 0; i < worlds.size(); ++i) {
+            for (int n = 0; n < 400 && !worlds[i].divergence(); ++n) // 2 s
+                worlds[i].step();
+            QVERIFY2(worlds[i].divergence().has_value() == e.diverges[i],
+                     qPrintable(QStringLiteral("step %1 (w dt = %2), world %3: %4")
+                                    .arg(e.step)
+                                    .arg(wdt)
+                                    .arg(s.compare->label(static_cast<int>(i)))
+                                    .arg(worlds[i].divergence() ? "diverged" : "stable")));
+        }
+    }
 }
 
 void TestLesson::shippedQuestionsHaveTheirTextbookAnswers()
