@@ -1,10 +1,30 @@
-// Stage 3 of a step: the broad phase.
+// Stage 3 of a step: the broad phase (see broad_phase.h).
 
 #include "broad_phase.h"
+
+#include "aabb_tree.h"
 
 #include <algorithm>
 
 namespace rigidlab::physics {
+
+namespace {
+
+/// A fat box reaches this far beyond the body's box [m]: small motions stay inside it.
+constexpr double kFatMargin = 0.1;
+/// ... and this many steps ahead along the body's motion.
+constexpr double kFatSteps = 2.0;
+
+Aabb fatten(const Aabb& box, const Vec2& displacement)
+{
+    Aabb fat{box.lo.array() - kFatMargin, box.hi.array() + kFatMargin};
+    const Vec2 d = kFatSteps * displacement;
+    fat.lo += d.cwiseMin(Vec2::Zero());
+    fat.hi += d.cwiseMax(Vec2::Zero());
+    return fat;
+}
+
+} // namespace
 
 Aabb computeAabb(const Shape& shape, const Transform& xf, double margin)
 {
@@ -28,39 +48,97 @@ Aabb computeAabb(const Shape& shape, const Transform& xf, double margin)
     return box;
 }
 
-void BroadPhase::findPairs(const std::vector<Body>& bodies, double margin,
+BroadPhase::BroadPhase() : m_tree(std::make_unique<AabbTree>()) {}
+BroadPhase::~BroadPhase() = default;
+
+void BroadPhase::queryTree(const Aabb& box, std::vector<int>& out) const
+{
+    out.clear();
+    m_tree->query(box, [&](int id) { out.push_back(id); });
+}
+
+void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
+                           double margin, double dt,
                            const std::vector<std::pair<int, int>>& excluded,
                            std::vector<std::pair<int, int>>& pairs)
 {
-    pairs.clear();
-    m_entries.clear();
-    for (size_t i = 0; i < bodies.size(); ++i) {
+    const size_t n = bodies.size();
+    m_leaf.resize(n, AabbTree::kNull);
+    m_box.resize(n);
+    m_moved.assign(n, 0);
+    m_movedList.clear();
+
+    // Boxes: a body that left its fat box goes back into the tree with a new one.
+    for (size_t i = 0; i < n; ++i) {
         const Body& b = bodies[i];
-        if (!b.collide)
+        int& leaf = m_leaf[i];
+        if (!b.collide) {
+            if (leaf != AabbTree::kNull) {
+                m_tree->remove(leaf);
+                leaf = AabbTree::kNull;
+            }
             continue;
-        m_entries.push_back({computeAabb(b.shape, b.transform(), margin), static_cast<int>(i)});
+        }
+        if (leaf != AabbTree::kNull && b.isDynamic() && !b.awake)
+            continue; // asleep: where it was
+        const Aabb box = computeAabb(b.shape, xf[i], margin);
+        m_box[i] = box;
+        if (leaf != AabbTree::kNull && m_tree->box(leaf).contains(box))
+            continue;
+        if (leaf != AabbTree::kNull)
+            m_tree->remove(leaf);
+        leaf = m_tree->insert(fatten(box, b.velocity * dt), static_cast<int>(i));
+        m_moved[i] = 1;
+        m_movedList.push_back(static_cast<int>(i));
     }
-    std::sort(m_entries.begin(), m_entries.end(), [](const Entry& a, const Entry& b) {
-        return a.box.lo.x() < b.box.lo.x() || (a.box.lo.x() == b.box.lo.x() && a.id < b.id);
-    });
-    for (size_t i = 0; i < m_entries.size(); ++i) {
-        const Entry& e = m_entries[i];
-        const bool eDynamic = bodies[static_cast<size_t>(e.id)].isDynamic();
-        for (size_t j = i + 1; j < m_entries.size(); ++j) {
-            const Entry& f = m_entries[j];
-            if (f.box.lo.x() > e.box.hi.x())
-                break; // sorted by lo.x: no later box can overlap e in x
-            if (!eDynamic && !bodies[static_cast<size_t>(f.id)].isDynamic())
+
+    // New neighbours of the bodies that moved. A pair of two moved bodies is taken when the
+    // lower id asks.
+    m_found.clear();
+    for (int i : m_movedList) {
+        const bool iDynamic = bodies[static_cast<size_t>(i)].isDynamic();
+        queryTree(m_tree->box(m_leaf[static_cast<size_t>(i)]), m_hits);
+        for (int j : m_hits) {
+            if (j == i || (m_moved[static_cast<size_t>(j)] && j < i))
+                continue;
+            if (!iDynamic && !bodies[static_cast<size_t>(j)].isDynamic())
                 continue; // static and kinematic bodies do not push each other
-            if (!e.box.overlaps(f.box))
-                continue;
-            std::pair<int, int> p = std::minmax(e.id, f.id);
-            if (std::binary_search(excluded.begin(), excluded.end(), p))
-                continue;
-            pairs.push_back(p);
+            m_found.push_back(std::minmax(i, j));
         }
     }
-    std::sort(pairs.begin(), pairs.end());
+    std::sort(m_found.begin(), m_found.end());
+
+    // Kept pairs (both still in the tree, fat boxes still overlapping) merged with the new.
+    m_merged.clear();
+    auto alive = [&](const std::pair<int, int>& p) {
+        const int la = m_leaf[static_cast<size_t>(p.first)];
+        const int lb = m_leaf[static_cast<size_t>(p.second)];
+        return la != AabbTree::kNull && lb != AabbTree::kNull &&
+               m_tree->box(la).overlaps(m_tree->box(lb));
+    };
+    size_t k = 0;
+    for (const auto& p : m_pairs) {
+        if (static_cast<size_t>(p.second) >= n || !alive(p))
+            continue;
+        while (k < m_found.size() && m_found[k] < p)
+            m_merged.push_back(m_found[k++]);
+        if (k < m_found.size() && m_found[k] == p)
+            ++k; // found again
+        m_merged.push_back(p);
+    }
+    m_merged.insert(m_merged.end(), m_found.begin() + static_cast<std::ptrdiff_t>(k),
+                    m_found.end());
+    std::swap(m_pairs, m_merged);
+
+    // The answer: pairs whose boxes overlap now.
+    pairs.clear();
+    for (const auto& p : m_pairs) {
+        if (!m_box[static_cast<size_t>(p.first)].overlaps(m_box[static_cast<size_t>(p.second)]))
+            continue;
+        if (!excluded.empty() && std::binary_search(excluded.begin(), excluded.end(), p))
+            continue;
+        pairs.push_back(p);
+    }
 }
 
 } // namespace rigidlab::physics

@@ -57,13 +57,17 @@ private:
     };
     struct Point {
         Vec2 rA = Vec2::Zero(), rB = Vec2::Zero(); ///< lever arms [m]
-        double normalMass = 0;                     ///< 1 / K along the normal [kg]
-        double tangentMass = 0;                    ///< 1 / K along the tangent [kg]
-        double bias = 0;                           ///< target normal velocity [m/s]
-        double normalImpulse = 0;                  ///< accumulated [N s]
-        double tangentImpulse = 0;                 ///< accumulated [N s]
-        double impact = 0;   ///< fraction of the step before a bounce, 0 if no bounce
-        bool closes = false; ///< touching, or the gap closes within this step
+        /// The lever arms crossed with the normal and the tangent [m]: the relative normal
+        /// velocity is (vB - vA).n + wB rnB - wA rnA, and an impulse j n turns A by
+        /// -j rnA / IA. Computed once per step, they make an iteration three times cheaper.
+        double rnA = 0, rnB = 0, rtA = 0, rtB = 0;
+        double normalMass = 0;     ///< 1 / K along the normal [kg]
+        double tangentMass = 0;    ///< 1 / K along the tangent [kg]
+        double bias = 0;           ///< target normal velocity [m/s]
+        double normalImpulse = 0;  ///< accumulated [N s]
+        double tangentImpulse = 0; ///< accumulated [N s]
+        double impact = 0;         ///< fraction of the step before a bounce, 0 if no bounce
+        bool closes = false;       ///< touching, or the gap closes within this step
     };
     struct Constraint {
         int contact = 0;
@@ -81,13 +85,16 @@ private:
     /// threshold: approaches slower than this do not bounce [m/s].
     void prepare(double threshold);
     void warmStart();
-    void solveFrictionPoint(Constraint& c, int i);
-    void solveNormalPoint(Constraint& c, int i);
-    void solveNormalBlock(Constraint& c);
-    double normalVelocity(const Constraint& c, int i) const;
+    static void solveFrictionPoint(Constraint& c, int i, Velocity& a, Velocity& b);
+    static void solveNormalPoint(Constraint& c, int i, Velocity& a, Velocity& b);
+    static void solveNormalBlock(Constraint& c, Velocity& a, Velocity& b);
+    static double normalVelocity(const Constraint& c, int i, const Velocity& a, const Velocity& b);
     /// Velocities and impulses back to the bodies and contacts.
     void store();
+    /// The body's rotation, computed once per epoch (see newRotationEpoch()).
     const Rotation& rotation(int body);
+    /// Forgets every rotation computed so far (the bodies have turned).
+    void newRotationEpoch();
 
     std::vector<Contact>* m_contacts = nullptr;
     std::vector<Body>* m_bodies = nullptr;

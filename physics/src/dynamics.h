@@ -51,6 +51,7 @@ public:
     Vec2 lever(BodyId id, const Rotation& rot, const Vec2& localAnchor) const;
 
     long long evaluations = 0;
+    double forceMilliseconds = 0; ///< wall time spent in acceleration() [ms]
 
 private:
     /// Joint j's lever arms and world anchor points at positions q.

@@ -3,6 +3,7 @@
 
 #include "dynamics.h"
 
+#include <chrono>
 #include <cmath>
 
 namespace rigidlab::physics {
@@ -33,10 +34,13 @@ Vec2 Dynamics::lever(BodyId id, const Rotation& rot, const Vec2& localAnchor) co
 void Dynamics::acceleration(double /*t*/, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
                             Eigen::VectorXd& a)
 {
+    const auto start = std::chrono::steady_clock::now();
     ++evaluations;
     appliedAccelerations(q, v, a);
     if (!m_joints.empty())
         addJointAccelerations(q, v, a);
+    forceMilliseconds +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void Dynamics::appliedAccelerations(const Eigen::VectorXd& q, const Eigen::VectorXd& v,

@@ -49,7 +49,8 @@ void toWorld(const Polygon& p, const Transform& xf, WorldPolygon& out)
     }
 }
 
-void project(const WorldPolygon& p, const Vec2& axis, double& lo, double& hi)
+[[gnu::always_inline]] inline void project(const WorldPolygon& p, const Vec2& axis, double& lo,
+                                           double& hi)
 {
     lo = hi = axis.dot(p.v[0]);
     for (int i = 1; i < p.count; ++i) {
@@ -93,7 +94,7 @@ bool clipSegment(std::array<Vec2, 2>& p, const Vec2& normal, double offset)
 /// Builds the manifold with `ref` as the reference polygon (owner 0 is A, 1 is B).
 void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const WorldPolygon& inc,
                           const Transform& xfInc, int owner, int refEdge, double margin,
-                          Manifold& m)
+                          bool intersecting, Manifold& m)
 {
     const Vec2 refNormal = ref.n[static_cast<size_t>(refEdge)];
     // Incident edge: the other polygon's edge most anti-parallel to the reference normal.
@@ -105,9 +106,9 @@ void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const
     const Vec2 r2 = ref.v[static_cast<size_t>((refEdge + 1) % ref.count)];
     const Vec2 tangent = (r2 - r1).normalized();
     // Side planes: keep tangent.x >= tangent.r1 and tangent.x <= tangent.r2.
-    if (!clipSegment(p, Vec2(-tangent), -tangent.dot(r1)))
-        return;
-    if (!clipSegment(p, tangent, tangent.dot(r2)))
+    const bool clipped = clipSegment(p, Vec2(-tangent), -tangent.dot(r1)) &&
+                         clipSegment(p, tangent, tangent.dot(r2));
+    if (!clipped && !intersecting)
         return;
 
     m.type = owner == 0 ? ManifoldType::FaceA : ManifoldType::FaceB;
@@ -117,7 +118,7 @@ void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const
     m.radiusA = m.radiusB = 0.0;
     m.pointCount = 0;
     const std::array<double, 2> seps{refNormal.dot(p[0] - r1), refNormal.dot(p[1] - r1)};
-    for (size_t k = 0; k < 2; ++k) {
+    for (size_t k = 0; k < 2 && clipped; ++k) {
         const double sep = seps[k];
         if (sep > margin + kTouchTolerance)
             continue;
@@ -132,6 +133,99 @@ void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const
         m.localIncident[static_cast<size_t>(m.pointCount)] = xfInc.applyInverse(p[k]);
         ++m.pointCount;
     }
+    if (m.pointCount > 0 || !intersecting)
+        return;
+    // Intersecting, and clipping kept nothing: the incident edge lies beside the reference
+    // face rather than across it (a sliver deep inside a large polygon, or a reference face
+    // far shorter than the incident one). The incident polygon's deepest vertex along the
+    // normal is the contact then; it penetrates by the overlap on this axis, so it is kept.
+    int deepest = 0;
+    for (int i = 1; i < inc.count; ++i)
+        if (refNormal.dot(inc.v[static_cast<size_t>(i)]) <
+            refNormal.dot(inc.v[static_cast<size_t>(deepest)]))
+            deepest = i;
+    const Vec2 v = inc.v[static_cast<size_t>(deepest)];
+    const double sep = refNormal.dot(v - r1);
+    ContactPoint& cp = m.points[0];
+    cp.point = v - 0.5 * sep * refNormal;
+    cp.separation = sep;
+    cp.id = static_cast<std::uint32_t>(owner << 24 | refEdge << 16 | deepest << 8 | 2);
+    m.localIncident[0] = xfInc.applyInverse(v);
+    m.pointCount = 1;
+}
+
+} // namespace
+
+namespace {
+
+/// The SAT proper. Record: keep every axis for the lesson; else the engine's path, the same
+/// arithmetic in the same order without building the axis records (twice as fast).
+template <bool kRecord>
+void satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb,
+             const Transform& xfB, double margin, SatResult& r)
+{
+    if constexpr (kRecord)
+        r.axes.reserve(static_cast<size_t>(wa.count + wb.count));
+
+    // Least overlap over all axes (the depth), and over each polygon's own axes (to pick
+    // the reference face with hysteresis).
+    double least = 0.0, leastOwn[2] = {0.0, 0.0};
+    int leastIndex = -1, leastEdge[2] = {-1, -1};
+    int index = 0;
+    for (int owner = 0; owner < 2; ++owner) {
+        const WorldPolygon& p = owner == 0 ? wa : wb;
+        for (int e = 0; e < p.count; ++e, ++index) {
+            const Vec2& axis = p.n[static_cast<size_t>(e)];
+            double minA, maxA, minB, maxB;
+            project(wa, axis, minA, maxA);
+            project(wb, axis, minB, maxB);
+            const double pushB = maxA - minB; // move B along +axis by this
+            const double pushA = maxB - minA; // or along -axis by this
+            const double overlap = std::min(pushB, pushA);
+            if constexpr (kRecord) {
+                SatAxis ax;
+                ax.owner = owner;
+                ax.edge = e;
+                ax.axis = axis;
+                ax.minA = minA;
+                ax.maxA = maxA;
+                ax.minB = minB;
+                ax.maxB = maxB;
+                ax.overlap = overlap;
+                r.axes.push_back(ax);
+            }
+            if (overlap < -margin) {
+                // The first separating axis ends the test (the seed's early stop).
+                r.axesTested = index + 1;
+                r.separatingAxis = kRecord ? index : -1;
+                r.intersects = false;
+                return;
+            }
+            if (leastIndex < 0 || overlap < least) {
+                least = overlap;
+                leastIndex = index;
+                r.normal = pushB <= pushA ? axis : Vec2(-axis);
+            }
+            // One-sided overlap along this polygon's outward normal, towards the other one.
+            const double own = owner == 0 ? pushB : pushA;
+            if (leastEdge[owner] < 0 || own < leastOwn[owner]) {
+                leastOwn[owner] = own;
+                leastEdge[owner] = e;
+            }
+        }
+    }
+    r.axesTested = index;
+    r.intersects = least >= 0.0;
+    r.leastAxis = kRecord ? leastIndex : -1;
+    r.depth = least;
+    if (!r.intersects && margin <= 0.0)
+        return;
+
+    // Reference face: A's unless B's one-sided overlap is clearly smaller.
+    if (leastOwn[1] < leastOwn[0] - kReferenceHysteresis)
+        buildPolygonManifold(wb, xfB, wa, xfA, 1, leastEdge[1], margin, r.intersects, r.manifold);
+    else
+        buildPolygonManifold(wa, xfA, wb, xfB, 0, leastEdge[0], margin, r.intersects, r.manifold);
 }
 
 } // namespace
@@ -144,58 +238,9 @@ SatResult satPolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
     toWorld(a, xfA, wa);
     toWorld(b, xfB, wb);
     if (record)
-        r.axes.reserve(static_cast<size_t>(wa.count + wb.count));
-
-    // Least overlap over all axes (the depth), and over each polygon's own axes (to pick
-    // the reference face with hysteresis).
-    double least = 0.0, leastOwn[2] = {0.0, 0.0};
-    int leastIndex = -1, leastEdge[2] = {-1, -1};
-    int index = 0;
-    for (int owner = 0; owner < 2; ++owner) {
-        const WorldPolygon& p = owner == 0 ? wa : wb;
-        for (int e = 0; e < p.count; ++e, ++index) {
-            SatAxis ax;
-            ax.owner = owner;
-            ax.edge = e;
-            ax.axis = p.n[static_cast<size_t>(e)];
-            project(wa, ax.axis, ax.minA, ax.maxA);
-            project(wb, ax.axis, ax.minB, ax.maxB);
-            const double pushB = ax.maxA - ax.minB; // move B along +axis by this
-            const double pushA = ax.maxB - ax.minA; // or along -axis by this
-            ax.overlap = std::min(pushB, pushA);
-            r.axesTested = index + 1;
-            if (record)
-                r.axes.push_back(ax);
-            if (ax.overlap < -margin) {
-                // The first separating axis ends the test (the seed's early stop).
-                r.separatingAxis = record ? index : -1;
-                r.intersects = false;
-                return r;
-            }
-            if (leastIndex < 0 || ax.overlap < least) {
-                least = ax.overlap;
-                leastIndex = index;
-                r.normal = pushB <= pushA ? ax.axis : Vec2(-ax.axis);
-            }
-            // One-sided overlap along this polygon's outward normal, towards the other one.
-            const double own = owner == 0 ? pushB : pushA;
-            if (leastEdge[owner] < 0 || own < leastOwn[owner]) {
-                leastOwn[owner] = own;
-                leastEdge[owner] = e;
-            }
-        }
-    }
-    r.intersects = least >= 0.0;
-    r.leastAxis = record ? leastIndex : -1;
-    r.depth = least;
-    if (!r.intersects && margin <= 0.0)
-        return r;
-
-    // Reference face: A's unless B's one-sided overlap is clearly smaller.
-    if (leastOwn[1] < leastOwn[0] - kReferenceHysteresis)
-        buildPolygonManifold(wb, xfB, wa, xfA, 1, leastEdge[1], margin, r.manifold);
+        satImpl<true>(wa, xfA, wb, xfB, margin, r);
     else
-        buildPolygonManifold(wa, xfA, wb, xfB, 0, leastEdge[0], margin, r.manifold);
+        satImpl<false>(wa, xfA, wb, xfB, margin, r);
     return r;
 }
 

@@ -1,36 +1,26 @@
 // The world and its step. Each stage lives in a file of its own:
 //   forces.cpp, joints.cpp  applied forces and exact pin-joint forces (inside integration)
 //   integrators.cpp         explicit Euler, symplectic Euler, velocity Verlet, RK4
-//   broad_phase.cpp         sort and sweep over bounding boxes
+//   world_step.cpp          what a step needs; symplectic Euler straight on the bodies
+//   broad_phase.cpp         a dynamic tree of bounding boxes, pairs kept from step to step
 //   sat.cpp                 SAT for polygons, circles, contact manifolds
 //   contact_solver.cpp      the seed's impulse, or sequential impulses; position correction
 //   diagnostics.cpp         energies and momenta
 //   continuous.cpp          speculative contacts over a fast body's motion
 //   divergence.cpp          a non-finite state or runaway energy stops the world
+//   islands.cpp             islands of touching bodies, sleeping and waking
 
 #include "rigidlab/physics/world.h"
 
-#include "broad_phase.h"
-#include "contact_solver.h"
 #include "cpu_state.h"
 #include "diagnostics_compute.h"
 #include "dynamics.h"
+#include "world_scratch.h"
 
 #include <algorithm>
 #include <cassert>
 
 namespace rigidlab::physics {
-
-/// Buffers reused from step to step.
-struct World::Scratch {
-    BroadPhase broadPhase;
-    std::vector<std::pair<int, int>> pairs;
-    std::vector<Contact> previous;
-    Eigen::VectorXd q, v;
-    std::vector<Vec2> velocityBefore, velocityAtStart;
-    std::vector<double> angularVelocityBefore, angularVelocityAtStart;
-    ContactSolver solver;
-};
 
 World::World(const WorldDef& def)
     : m_def(def), m_integrator(makeIntegrator(def.integrator, def.tolerances)),
@@ -131,6 +121,7 @@ void World::setRestitution(double e)
     m_def.restitution = e;
     for (Body& b : m_bodies)
         b.restitution = e;
+    wakeAll();
 }
 
 void World::setFriction(double mu)
@@ -138,6 +129,7 @@ void World::setFriction(double mu)
     m_def.friction = mu;
     for (Body& b : m_bodies)
         b.friction = mu;
+    wakeAll();
 }
 
 void World::setBodyOrigin(BodyId id, const Vec2& origin, double angle)
@@ -145,6 +137,7 @@ void World::setBodyOrigin(BodyId id, const Vec2& origin, double angle)
     Body& b = body(id);
     b.angle = angle;
     b.position = origin + Rotation(angle).apply(b.localCenter);
+    wakeBody(id);
 }
 
 void World::setBodyVelocity(BodyId id, const Vec2& originVelocity, double angularVelocity)
@@ -152,6 +145,7 @@ void World::setBodyVelocity(BodyId id, const Vec2& originVelocity, double angula
     Body& b = body(id);
     b.angularVelocity = angularVelocity;
     b.velocity = originVelocity + cross(angularVelocity, Vec2(b.position - b.origin()));
+    wakeBody(id);
 }
 
 Vec2 World::originVelocity(BodyId id) const
@@ -168,21 +162,38 @@ void World::step()
     if (!m_energyStart)
         rememberStartEnergy();
     clearUpperVectorState();
-    // Velocities at the start of the step, to time bounces within it.
-    Scratch& s = *m_scratch;
-    s.velocityAtStart.resize(m_bodies.size());
-    s.angularVelocityAtStart.resize(m_bodies.size());
-    for (size_t i = 0; i < m_bodies.size(); ++i) {
-        s.velocityAtStart[i] = m_bodies[i].velocity;
-        s.angularVelocityAtStart[i] = m_bodies[i].angularVelocity;
+    const auto start = StageTimer::Clock::now();
+    m_profile = StepProfile{};
+    // What this step needs (world_step.cpp): contacts only if some two bodies can collide,
+    // the direct integration when only contacts couple the bodies, islands when sleeping.
+    m_plan = planStep();
+    if (m_plan.collide) {
+        // Velocities at the start of the step, to time bounces within it.
+        Scratch& s = *m_scratch;
+        s.velocityAtStart.resize(m_bodies.size());
+        s.angularVelocityAtStart.resize(m_bodies.size());
+        for (size_t i = 0; i < m_bodies.size(); ++i) {
+            s.velocityAtStart[i] = m_bodies[i].velocity;
+            s.angularVelocityAtStart[i] = m_bodies[i].angularVelocity;
+        }
+        // Contacts between the shapes where they stand now: broad phase, then SAT /
+        // manifolds.
+        findContacts();
+    } else {
+        m_contacts.clear();
     }
-    // Contacts between the shapes where they stand now: broad phase, then SAT / manifolds.
-    findContacts();
+    // Islands: a body touched by an awake one wakes, with everything touching it.
+    if (m_plan.sleep)
+        wakeIslands();
     // Forces and integration: the chosen integrator, forces evaluated at every stage, pin
     // joints as exact constraint forces.
     integrate();
     // Collision response: impulses on the new velocities, then position correction.
-    solveContacts();
+    if (!m_contacts.empty() && m_plan.anyAwake)
+        solveContacts();
+    // Islands that have rested long enough go to sleep.
+    if (m_plan.sleep)
+        sleepIslands();
 
     for (Body& b : m_bodies) {
         b.force = Vec2::Zero();
@@ -190,9 +201,14 @@ void World::step()
     }
     m_time += m_def.dt;
     ++m_steps;
-    updateDiagnostics();
+    {
+        StageTimer timer(m_profile, Stage::Diagnostics);
+        updateDiagnostics();
+    }
     // A non-finite state or runaway energy stops the world with a diagnosis.
     checkDivergence();
+    m_profile.total =
+        std::chrono::duration<double, std::milli>(StageTimer::Clock::now() - start).count();
 }
 
 template <typename Fn> void World::withState(Fn&& fn)
@@ -213,6 +229,8 @@ template <typename Fn> void World::withState(Fn&& fn)
     m_evaluations += dynamics.evaluations;
     for (size_t s = 0; s < m_moving.size(); ++s) {
         Body& b = m_bodies[static_cast<size_t>(m_moving[s])];
+        if (b.isDynamic() && !b.awake)
+            continue; // asleep: it does not move, whatever the integrator made of it
         const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
         b.position = Vec2(q[i], q[i + 1]);
         b.angle = q[i + 2];
@@ -225,9 +243,18 @@ void World::integrate()
 {
     if (m_moving.empty())
         return;
+    if (m_plan.direct) {
+        integrateDirect();
+        return;
+    }
+    StageTimer timer(m_profile, Stage::Integration);
     const double t = m_time, h = m_def.dt;
     withState([&](Dynamics& dynamics, Eigen::VectorXd& q, Eigen::VectorXd& v) {
         m_integrator->step(dynamics, t, h, q, v);
+        // The force evaluations inside count as the forces stage, not as integration.
+        m_profile.ran[static_cast<int>(Stage::Forces)] = true;
+        m_profile.ms[static_cast<int>(Stage::Forces)] += dynamics.forceMilliseconds;
+        m_profile.ms[static_cast<int>(Stage::Integration)] -= dynamics.forceMilliseconds;
         // Back onto the joints. Positions always; velocities too, except for symplectic
         // Euler: velocity Verlet with both projections is RATTLE, symplectic Euler with
         // positions only is its SHAKE form, and each keeps the pendulum's energy bounded,
@@ -244,18 +271,38 @@ void World::findContacts()
     std::swap(s.previous, m_contacts);
     m_contacts.clear();
     const double margin = m_contactSettings.margin;
-    s.broadPhase.findPairs(m_bodies, margin, m_jointPairs, s.pairs);
+    StageTimer broad(m_profile, Stage::BroadPhase);
+    updateTransforms();
+    s.broadPhase.findPairs(m_bodies, s.xf, margin, m_def.dt, m_jointPairs, s.pairs);
     // Fast bodies: pairs and margins over their motion in this step (continuous collision).
     addSweptPairs(s.pairs);
+    broad.stop();
+    m_profile.pairs = static_cast<int>(s.pairs.size());
+
+    StageTimer narrow(m_profile, Stage::NarrowPhase);
     size_t old = 0;
     for (const auto& [ia, ib] : s.pairs) {
         const Body& a = m_bodies[static_cast<size_t>(ia)];
         const Body& b = m_bodies[static_cast<size_t>(ib)];
+        // Two bodies at rest (asleep, or asleep on a static one) keep last step's contact.
+        const auto rests = [](const Body& body) {
+            return body.type == BodyType::Static || (body.isDynamic() && !body.awake);
+        };
+        if (rests(a) && rests(b)) {
+            while (old < s.previous.size() &&
+                   std::pair(s.previous[old].a, s.previous[old].b) < std::pair(ia, ib))
+                ++old;
+            if (old < s.previous.size() && s.previous[old].a == ia && s.previous[old].b == ib) {
+                m_contacts.push_back(s.previous[old]);
+                continue;
+            }
+        }
         Contact c;
         c.a = ia;
         c.b = ib;
         const double pairMargin = margin + sweptMargin(ia) + sweptMargin(ib);
-        c.manifold = collideShapes(a.shape, a.transform(), b.shape, b.transform(), pairMargin);
+        c.manifold = collideShapes(a.shape, s.xf[static_cast<size_t>(ia)], b.shape,
+                                   s.xf[static_cast<size_t>(ib)], pairMargin);
         if (c.manifold.pointCount == 0)
             continue;
         // Restitution: the larger of the two; friction: the geometric mean.
@@ -279,12 +326,14 @@ void World::findContacts()
         }
         m_contacts.push_back(c);
     }
+    m_profile.contacts = static_cast<int>(m_contacts.size());
 }
 
 void World::solveContacts()
 {
     if (m_contacts.empty())
         return;
+    StageTimer timer(m_profile, Stage::ContactSolve);
     Scratch& s = *m_scratch;
     const double h = m_def.dt;
     s.velocityBefore.resize(m_bodies.size());
@@ -310,7 +359,7 @@ void World::solveContacts()
     const std::vector<double>& impact = solver.impactFractions();
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         Body& b = m_bodies[i];
-        if (!b.isDynamic())
+        if (!b.isActive())
             continue;
         const double after = (1.0 - impact[i]) * h;
         b.position += after * (b.velocity - s.velocityBefore[i]);
@@ -323,7 +372,8 @@ void World::solveContacts()
         });
     m_collisionLoss += before - kineticEnergy(m_bodies);
 
-    solver.solvePositions(m_contactSettings.positionIterations);
+    m_profile.solved = solver.constraintCount();
+    m_profile.positionPasses = solver.solvePositions(m_contactSettings.positionIterations);
     if (!m_joints.empty())
         withState(
             [](Dynamics& d, Eigen::VectorXd& q, Eigen::VectorXd&) { d.projectJointPositions(q); });

@@ -7,6 +7,7 @@
 #include "rigidlab/physics/divergence.h"
 #include "rigidlab/physics/forces.h"
 #include "rigidlab/physics/integrator.h"
+#include "rigidlab/physics/profile.h"
 
 #include <memory>
 #include <optional>
@@ -75,9 +76,10 @@ public:
     void setIntegrator(IntegratorKind kind);
     void setSolver(SolverKind kind) { m_def.solver = kind; }
     void setIterations(int n) { m_def.iterations = n; }
-    void setGravity(const Vec2& g) { m_def.gravity = g; }
-    void setGravitation(double G) { m_def.gravitation = G; }
-    void setDrag(double drag) { m_def.drag = drag; }
+    // A change of gravity, gravitation, drag, restitution or friction wakes every body.
+    void setGravity(const Vec2& g);
+    void setGravitation(double G);
+    void setDrag(double drag);
     void setTolerances(const Tolerances& tolerances);
     void setContinuous(bool on) { m_def.continuous = on; }
     /// Sets the default coefficient of restitution and gives it to every body.
@@ -116,6 +118,18 @@ public:
     /// Recomputes the diagnostics for the current state (done by step() already).
     void updateDiagnostics();
 
+    /// What the last step cost, stage by stage, and which stages it left out (profile.h).
+    const StepProfile& profile() const { return m_profile; }
+
+    // Sleeping (islands.cpp): resting islands of bodies are left out of integration and the
+    // contact solver until something wakes them.
+    /// Whether resting bodies go to sleep now: WorldDef::sleep, or unset, the scene's size.
+    bool sleepEnabled() const;
+    void setSleep(std::optional<bool> on);
+    /// Wakes a body (and, at the next step, its island): the window calls it when the user
+    /// grabs a body. Setting a body's pose or velocity wakes it too.
+    void wakeBody(BodyId id);
+
     // The equations of motion alone, for integrating outside step() (reference solutions,
     // another ODE library): the state as the integrators see it, q = (x, y, angle) of the
     // centre of mass of every moving body in id order and v = (vx, vy, omega), and
@@ -130,6 +144,24 @@ private:
     void findContacts();
     void integrate();
     void solveContacts();
+    /// What this step needs, from what the world holds (world_step.cpp).
+    struct Plan {
+        bool collide = false; ///< some two bodies can collide: broad and narrow phase
+        bool direct = false;  ///< symplectic Euler on the bodies, without the ODE state
+        bool sleep = false;   ///< islands and sleeping
+        bool anyAwake = true; ///< some dynamic body is awake (after wakeIslands())
+    };
+    Plan planStep() const;
+    /// This step's placement of every body, recomputed only for bodies that moved.
+    void updateTransforms();
+    /// Symplectic Euler straight on the bodies (world_step.cpp): the ODE system's arithmetic
+    /// without gathering the state into vectors.
+    void integrateDirect();
+    /// Groups touching bodies into islands; an island with an awake body wakes whole.
+    void wakeIslands();
+    /// Puts islands that have rested long enough to sleep.
+    void sleepIslands();
+    void wakeAll();
     /// Pairs for bodies that move more than their own size in a step (continuous.cpp), and
     /// the speculative margin each body's motion asks for [m].
     void addSweptPairs(std::vector<std::pair<int, int>>& pairs);
@@ -160,6 +192,8 @@ private:
     std::optional<double> m_energyStart; ///< total energy before the first step [J]
     double m_energyScale = 0;            ///< see DivergenceSettings::energyGrowth [J]
     std::vector<double> m_sweep;         ///< per body: extra contact margin this step [m]
+    Plan m_plan;                         ///< this step's, from planStep()
+    StepProfile m_profile;               ///< the last step's
 };
 
 } // namespace rigidlab::physics
