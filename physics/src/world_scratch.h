@@ -21,6 +21,7 @@ struct World::Scratch {
     std::vector<std::pair<int, int>> pairs;
     std::vector<Contact> previous;
     Eigen::VectorXd q, v;
+    Eigen::VectorXd shake; ///< positions before the joint projection (symplectic Euler)
     std::vector<Vec2> velocityBefore, velocityAtStart;
     std::vector<double> angularVelocityBefore, angularVelocityAtStart;
     ContactSolver solver;

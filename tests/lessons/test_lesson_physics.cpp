@@ -385,9 +385,9 @@ void TestLesson::pendulumEulerGoesOverTheTop()
     QVERIFY2(overTheTopAt > 10 && overTheTopAt < 12, qPrintable(QString::number(overTheTopAt)));
     for (const physics::World& w : run.worlds)
         QVERIFY(!w.divergence());
-    // Symplectic Euler loses about 0.8 % per second here; Verlet and RK4 stay close.
-    const double symplectic = driftPercent(run.worlds[1], e0);
-    QVERIFY2(symplectic < -8 && symplectic > -14, qPrintable(QString::number(symplectic)));
+    // Symplectic Euler stays in a band of about +-1.5 % (the text says so); Verlet and RK4
+    // stay closer still.
+    QVERIFY2(worst[1] > 0.5 && worst[1] < 2.0, qPrintable(QString::number(worst[1])));
     QVERIFY(worst[2] < 0.1);  // Verlet: a few hundredths of a percent
     QVERIFY(worst[3] < 1e-5); // RK4: a few millionths
 }
