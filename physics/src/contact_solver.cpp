@@ -167,6 +167,9 @@ void ContactSolver::prepare(double threshold)
             const double speculative = sep > 0 ? -sep / m_dt : 0.0;
             p.closes = sep <= 0 || -vn * m_dt > sep;
             p.bias = speculative;
+            p.speculative = speculative;
+            p.vnPrepared = vn;
+            p.bounces = false;
             p.impact = 0.0;
             if (p.closes && vn < -threshold) {
                 double bounce = -ct.restitution * vn;
@@ -188,6 +191,7 @@ void ContactSolver::prepare(double threshold)
                 if (bounce > speculative && bounce >= 0) {
                     p.bias = bounce;
                     p.impact = fraction;
+                    p.bounces = true;
                 }
             }
         }
@@ -321,8 +325,11 @@ void ContactSolver::solveSequential(int iterations, bool warm)
             for (Point& p : c.p)
                 p.normalImpulse = p.tangentImpulse = 0.0;
     }
+    const int count = static_cast<int>(m_constraints.size());
     for (int it = 0; it < iterations; ++it) {
-        for (Constraint& c : m_constraints) {
+        const bool backward = (it % 2 == 0);
+        for (int k = 0; k < count; ++k) {
+            Constraint& c = m_constraints[static_cast<size_t>(backward ? count - 1 - k : k)];
             // The two bodies' velocities stay in registers for the whole constraint.
             Velocity a = m_velocity[static_cast<size_t>(c.a)];
             Velocity b = m_velocity[static_cast<size_t>(c.b)];
@@ -354,8 +361,17 @@ void ContactSolver::solveSeed()
         Velocity& a = m_velocity[static_cast<size_t>(c.a)];
         Velocity& b = m_velocity[static_cast<size_t>(c.b)];
         for (int i = 0; i < c.count; ++i) {
-            if (!c.p[i].closes || normalVelocity(c, i, a, b) >= 0)
+            const double vn = normalVelocity(c, i, a, b);
+            if (!c.p[i].closes || vn >= 0)
                 continue; // separating, or will not reach the other body this step
+            // Contacts handled before this one in the pass may have changed how fast these
+            // two approach: bounce from the approach as it is now, not as it was when the
+            // target was set (that would hand out energy in a break of many balls).
+            Point& p = c.p[i];
+            if (p.bounces) {
+                const double e = (*m_contacts)[static_cast<size_t>(c.contact)].restitution;
+                p.bias = std::max(p.bias - e * (vn - p.vnPrepared), p.speculative);
+            }
             solveNormalPoint(c, i, a, b);
             solveFrictionPoint(c, i, a, b);
         }

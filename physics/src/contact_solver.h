@@ -68,6 +68,9 @@ private:
         double tangentImpulse = 0; ///< accumulated [N s]
         double impact = 0;         ///< fraction of the step before a bounce, 0 if no bounce
         bool closes = false;       ///< touching, or the gap closes within this step
+        bool bounces = false;      ///< bias is a bounce (restitution) target
+        double vnPrepared = 0;     ///< normal velocity the bias was computed from [m/s]
+        double speculative = 0;    ///< the least target a gap allows: -separation / dt [m/s]
     };
     struct Constraint {
         int contact = 0;

@@ -475,11 +475,13 @@ void TestLesson::billiardsBreakConservesMomentum()
         // Many collisions happened.
         QVERIFY(run.measurements[i].collisions().size() > 20);
     }
-    // The contact-by-contact impulse ends the break with about 8 % more kinetic energy;
-    // sequential impulses lose some, as e = 0.93 should.
+    // With e = 0.93 every collision loses energy, and neither solver may create any: both
+    // end the break below the cue ball's kinetic energy, and differ in how much is left.
     const double k0 = 0.5 * 0.17 * (64 + 0.0004);
-    QVERIFY(run.worlds[0].diagnostics().kinetic > 1.05 * k0);
-    QVERIFY(run.worlds[1].diagnostics().kinetic < k0);
+    const double k[2] = {run.worlds[0].diagnostics().kinetic, run.worlds[1].diagnostics().kinetic};
+    QVERIFY2(k[0] < k0 && k[1] < k0,
+             qPrintable(QStringLiteral("%1 %2 of %3").arg(k[0]).arg(k[1]).arg(k0)));
+    QVERIFY2(std::abs(k[0] - k[1]) > 0.01 * k0, "the two solvers end the break differently");
 }
 
 QTEST_GUILESS_MAIN(TestLesson)
