@@ -146,7 +146,46 @@ bool isNumberChar(char c)
     return (c >= '0' && c <= '9') || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E';
 }
 
+/// The offset of the first '[' or '{' (outside strings) that opens a level deeper than
+/// `limit`, or -1. Syntax is left to the parser; this only counts brackets, so that a hostile
+/// file of a million '[' never reaches a recursive parser or a recursive destructor.
+qsizetype tooDeep(const QByteArray& bytes, int limit)
+{
+    int depth = 0;
+    bool inString = false;
+    for (qsizetype i = 0; i < bytes.size(); ++i) {
+        const char c = bytes[i];
+        if (inString) {
+            if (c == '\\') {
+                ++i; // whatever is escaped cannot end the string
+            } else if (c == '"') {
+                inString = false;
+            }
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '[' || c == '{') {
+            if (++depth > limit) {
+                return i;
+            }
+        } else if ((c == ']' || c == '}') && depth > 0) {
+            --depth;
+        }
+    }
+    return -1;
+}
+
 } // namespace
+
+QString describeRange(const limits::Range& range)
+{
+    QString text =
+        QStringLiteral("from %1 to %2").arg(formatNumber(range.min), formatNumber(range.max));
+    if (!range.unit.empty()) {
+        text +=
+            u' ' + QString::fromUtf8(range.unit.data(), static_cast<qsizetype>(range.unit.size()));
+    }
+    return text;
+}
 
 ParsedJson parseJson(const QByteArray& bytes, const QString& sourceName, qint64 limit)
 {
@@ -159,6 +198,14 @@ ParsedJson parseJson(const QByteArray& bytes, const QString& sourceName, qint64 
     }
     if (bytes.trimmed().isEmpty()) {
         result.error = sourceName + QStringLiteral(": line 1, column 1: the file is empty");
+        return result;
+    }
+    if (const qsizetype deep = tooDeep(bytes, limits::kMaxJsonDepth); deep >= 0) {
+        const auto [line, column] = lineAndColumn(bytes, deep);
+        result.error = QStringLiteral("%1: line %2, column %3: arrays and objects nested deeper "
+                                      "than %4 levels (the limit)")
+                           .arg(sourceName, QString::number(line), QString::number(column),
+                                QString::number(limits::kMaxJsonDepth));
         return result;
     }
     QJsonParseError parseError;
@@ -190,19 +237,47 @@ ParsedJson parseJson(const QByteArray& bytes, const QString& sourceName, qint64 
     return result;
 }
 
+namespace {
+
+/// A message as one line: what the file put in it (a key, an id, a name) may hold line breaks
+/// and other control characters, which are shown escaped, as JSON writes them.
+QString oneLine(const QString& message)
+{
+    QString out;
+    out.reserve(message.size());
+    for (const QChar c : message) {
+        const char16_t u = c.unicode();
+        if (u == u'\n') {
+            out += QStringLiteral("\\n");
+        } else if (u == u'\r') {
+            out += QStringLiteral("\\r");
+        } else if (u == u'\t') {
+            out += QStringLiteral("\\t");
+        } else if (u < 0x20 || u == 0x7f || u == 0x2028 || u == 0x2029) {
+            out += QStringLiteral("\\u%1").arg(static_cast<int>(u), 4, 16, QLatin1Char('0'));
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+} // namespace
+
 bool JsonReader::fail(const QString& place, const QString& what)
 {
     if (m_error.isEmpty()) {
-        m_error = place.isEmpty()
-                      ? m_source + QStringLiteral(": ") + what
-                      : m_source + QStringLiteral(": ") + place + QStringLiteral(": ") + what;
+        m_error = oneLine(place.isEmpty() ? m_source + QStringLiteral(": ") + what
+                                          : m_source + QStringLiteral(": ") + place +
+                                                QStringLiteral(": ") + what);
     }
     return false;
 }
 
 void JsonReader::warn(const QString& place, const QString& what)
 {
-    m_warnings.append(m_source + QStringLiteral(": ") + place + QStringLiteral(": ") + what);
+    m_warnings.append(
+        oneLine(m_source + QStringLiteral(": ") + place + QStringLiteral(": ") + what));
 }
 
 bool JsonReader::checkKeys(const QJsonObject& object, const QString& place,
@@ -419,6 +494,52 @@ bool JsonReader::vec2(const QJsonObject& object, QStringView key, const QString&
         return !required || fail(joinPlace(place, key), QStringLiteral("required, but missing"));
     }
     return vec2Value(*value, joinPlace(place, key), out);
+}
+
+bool JsonReader::checkRange(double value, const QString& place, const limits::Range& range)
+{
+    if (failed()) {
+        return false;
+    }
+    if (!range.contains(value)) {
+        return fail(
+            place,
+            QStringLiteral("must be %1, got %2").arg(describeRange(range), formatNumber(value)));
+    }
+    return true;
+}
+
+bool JsonReader::number(const QJsonObject& object, QStringView key, const QString& place,
+                        double& out, NumberRule rule, const limits::Range& range, bool required)
+{
+    const bool present = object.contains(key);
+    return number(object, key, place, out, rule, required) &&
+           (!present || checkRange(out, joinPlace(place, key), range));
+}
+
+bool JsonReader::vec2Value(const QJsonValue& value, const QString& place, physics::Vec2& out,
+                           const limits::Range& range)
+{
+    physics::Vec2 v = out;
+    if (!vec2Value(value, place, v) || !checkRange(v.x(), indexPlace(place, 0), range) ||
+        !checkRange(v.y(), indexPlace(place, 1), range)) {
+        return false;
+    }
+    out = v;
+    return true;
+}
+
+bool JsonReader::vec2(const QJsonObject& object, QStringView key, const QString& place,
+                      physics::Vec2& out, const limits::Range& range, bool required)
+{
+    if (failed()) {
+        return false;
+    }
+    const auto value = lookUp(object, key);
+    if (!value) {
+        return !required || fail(joinPlace(place, key), QStringLiteral("required, but missing"));
+    }
+    return vec2Value(*value, joinPlace(place, key), out, range);
 }
 
 } // namespace rigidlab::lessons::detail

@@ -4,6 +4,7 @@
 // error line the user sees: `FILE: PLACE: what is wrong`. Later problems are not reported,
 // so a getter returns false once anything has failed and the caller simply stops.
 
+#include "rigidlab/lessons/limits.h"
 #include "rigidlab/physics/math.h"
 
 #include <QJsonArray>
@@ -44,7 +45,11 @@ struct FileBytes {
 };
 FileBytes readFileBytes(const QString& path, qint64 limit);
 
-/// Parses JSON; a syntax error becomes `SOURCE: line L, column C: what`.
+/// "from 1e-09 to 1e+12 kg": how messages state an allowed range.
+QString describeRange(const limits::Range& range);
+
+/// Parses JSON; a syntax error becomes `SOURCE: line L, column C: what`. Arrays and objects
+/// nested deeper than limits::kMaxJsonDepth are refused before the parser sees them.
 struct ParsedJson {
     bool ok = false;
     QString error;
@@ -92,6 +97,17 @@ public:
     bool numberValue(const QJsonValue& value, const QString& place, double& out,
                      NumberRule rule = NumberRule::Finite);
     bool vec2Value(const QJsonValue& value, const QString& place, physics::Vec2& out);
+
+    // The same, with a magnitude limit (limits.h) checked after the rule: a value outside
+    // `range` fails with "must be from MIN to MAX UNIT, got V". For a pair, each component.
+    bool number(const QJsonObject& object, QStringView key, const QString& place, double& out,
+                NumberRule rule, const limits::Range& range, bool required = false);
+    bool vec2(const QJsonObject& object, QStringView key, const QString& place, physics::Vec2& out,
+              const limits::Range& range, bool required = false);
+    bool vec2Value(const QJsonValue& value, const QString& place, physics::Vec2& out,
+                   const limits::Range& range);
+    /// Fails unless `value` is in `range`.
+    bool checkRange(double value, const QString& place, const limits::Range& range);
 
 private:
     QString m_source;

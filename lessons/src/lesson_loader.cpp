@@ -109,6 +109,7 @@ private:
     JsonReader m_in;
     QString m_folder; ///< the lesson's folder, absolute
     Lesson m_lesson;
+    qint64 m_bodies = 0; ///< over the steps read so far
 };
 
 LessonLoadResult LessonReader::read(const QJsonObject& root)
@@ -225,6 +226,15 @@ bool LessonReader::readStep(const QJsonValue& value, const QString& place, Lesso
         !readNames(object, u"overlays", place, kOverlayNames, u"overlay", step.overlays) ||
         !readNames(object, u"panels", place, kPanelNames, u"panel", step.panels)) {
         return false;
+    }
+    // Every step keeps its scene: many steps reading one large scene file add up.
+    m_bodies += static_cast<qint64>(step.scene.bodies.size());
+    if (m_bodies > limits::kMaxLessonBodies) {
+        return m_in.fail(joinPlace(place, u"scene"),
+                         QStringLiteral("the steps up to this one hold %1 bodies in all, more "
+                                        "than the limit of %2 for a lesson")
+                             .arg(m_bodies)
+                             .arg(limits::kMaxLessonBodies));
     }
     for (qsizetype i = 0; i < step.plots.size(); ++i) {
         if (step.plots[i].startsWith(u"compare-") && !step.compare) {
@@ -350,17 +360,32 @@ bool LessonReader::readSceneFile(const QString& relative, const QString& place, 
                                                "got \"%1\"")
                                     .arg(relative));
     }
+    for (const QChar c : relative) {
+        if (c.unicode() < 0x20 || c.unicode() == 0x7f) {
+            return m_in.fail(place, QStringLiteral("must not hold control characters"));
+        }
+    }
     const QString path = QDir::cleanPath(QDir(m_folder).filePath(relative));
-    // A symbolic link inside the folder could still point out of it.
+    // A symbolic link inside the folder could still point out of it. What is read is the
+    // resolved path itself, checked to be a plain file below the folder: a link swapped after
+    // the check cannot redirect the read, and a named pipe or a device cannot block or feed it.
     const QString canonicalFolder = QFileInfo(m_folder).canonicalFilePath();
     const QString canonical = QFileInfo(path).canonicalFilePath();
-    if (!canonical.isEmpty() && !canonicalFolder.isEmpty() &&
-        !canonical.startsWith(canonicalFolder + u'/')) {
-        return m_in.fail(place, QStringLiteral("\"%1\" leads out of the lesson's folder (through "
-                                               "a symbolic link)")
-                                    .arg(relative));
+    QString readPath = path;
+    if (!canonical.isEmpty()) {
+        const QString inside =
+            canonicalFolder.endsWith(u'/') ? canonicalFolder : canonicalFolder + u'/';
+        if (canonicalFolder.isEmpty() || !canonical.startsWith(inside)) {
+            return m_in.fail(place, QStringLiteral("\"%1\" leads out of the lesson's folder "
+                                                   "(through a symbolic link)")
+                                        .arg(relative));
+        }
+        if (!QFileInfo(canonical).isFile()) {
+            return m_in.fail(place, QStringLiteral("\"%1\" is not a plain file").arg(relative));
+        }
+        readPath = canonical;
     }
-    const detail::FileBytes file = detail::readFileBytes(path, kMaxSceneFileBytes);
+    const detail::FileBytes file = detail::readFileBytes(readPath, kMaxSceneFileBytes);
     if (!file.ok) {
         return m_in.fail(place, file.error);
     }
@@ -452,7 +477,7 @@ bool LessonReader::readSettings(const QJsonObject& object, const QString& place,
         settings.restitution = value;
     }
     if (s.contains(u"friction")) {
-        if (!m_in.number(s, u"friction", at, value, NumberRule::NonNegative)) {
+        if (!m_in.number(s, u"friction", at, value, NumberRule::NonNegative, limits::kFriction)) {
             return false;
         }
         settings.friction = value;
@@ -554,7 +579,7 @@ bool LessonReader::readCompare(const QJsonObject& object, const QString& place, 
             comparison.solvers.push_back(*kind);
         }
     }
-    if (!m_in.vec2(c, u"offset", at, comparison.offset)) {
+    if (!m_in.vec2(c, u"offset", at, comparison.offset, limits::kCoordinate)) {
         return false;
     }
     step.compare = comparison;

@@ -81,7 +81,8 @@ bool readMeasure(JsonReader& in, const QJsonValue& value, const QString& place, 
         if (!in.checkKeys(object, place, {u"kind", u"body", u"n", u"above"}) ||
             !readBodyId(in, object, u"body", place, scene, measure.body) ||
             !in.integer(object, u"n", place, measure.n, 1, kMaxApex) ||
-            !in.number(object, u"above", place, measure.above)) {
+            !in.number(object, u"above", place, measure.above, NumberRule::Finite,
+                       limits::kCoordinate)) {
             return false;
         }
     } else {
@@ -138,7 +139,7 @@ bool readQuestion(JsonReader& in, const QJsonValue& value, const QString& place,
         !in.string(object, u"unit", place, question.unit) ||
         !in.number(object, u"tolerance", place, question.tolerance, NumberRule::UnitInterval) ||
         !in.number(object, u"absoluteTolerance", place, question.absoluteTolerance,
-                   NumberRule::NonNegative)) {
+                   NumberRule::NonNegative, limits::kAbsoluteTolerance)) {
         return false;
     }
     if (question.tolerance == 0 && question.absoluteTolerance == 0) {

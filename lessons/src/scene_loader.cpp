@@ -6,6 +6,8 @@
 
 #include "json_reader.h"
 
+#include "rigidlab/lessons/limits.h"
+
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
 #include "rigidlab/physics/shape.h"
@@ -132,7 +134,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
                         {u"gravity", u"dt", u"integrator", u"solver", u"iterations", u"restitution",
                          u"friction", u"gravitation", u"drag", u"sleep", u"continuous",
                          u"tolerance"}) ||
-        !m_in.vec2(world, u"gravity", place, def.gravity) ||
+        !m_in.vec2(world, u"gravity", place, def.gravity, limits::kGravity) ||
         !m_in.number(world, u"dt", place, def.dt, NumberRule::Positive)) {
         return false;
     }
@@ -185,12 +187,16 @@ bool SceneReader::readWorld(const QJsonObject& root)
     }
     return m_in.integer(world, u"iterations", place, def.iterations, 1, kMaxIterations) &&
            m_in.number(world, u"restitution", place, def.restitution, NumberRule::UnitInterval) &&
-           m_in.number(world, u"friction", place, def.friction, NumberRule::NonNegative) &&
-           m_in.number(world, u"gravitation", place, def.gravitation, NumberRule::NonNegative) &&
-           m_in.number(world, u"drag", place, def.drag, NumberRule::NonNegative) &&
+           m_in.number(world, u"friction", place, def.friction, NumberRule::NonNegative,
+                       limits::kFriction) &&
+           m_in.number(world, u"gravitation", place, def.gravitation, NumberRule::NonNegative,
+                       limits::kGravitation) &&
+           m_in.number(world, u"drag", place, def.drag, NumberRule::NonNegative, limits::kDrag) &&
            m_in.boolean(world, u"continuous", place, def.continuous) &&
-           m_in.number(world, u"tolerance", place, def.tolerances.absolute, NumberRule::Positive) &&
-           m_in.number(world, u"tolerance", place, def.tolerances.relative, NumberRule::Positive);
+           m_in.number(world, u"tolerance", place, def.tolerances.absolute, NumberRule::Positive,
+                       limits::kTolerance) &&
+           m_in.number(world, u"tolerance", place, def.tolerances.relative, NumberRule::Positive,
+                       limits::kTolerance);
 }
 
 bool SceneReader::readBodies(const QJsonObject& root)
@@ -283,14 +289,17 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
         return m_in.fail(joinPlace(place, u"mass"),
                          QStringLiteral("give \"density\" or \"mass\", not both"));
     }
-    if (!m_in.vec2(body, u"position", place, def.position) ||
-        !m_in.number(body, u"angle", place, def.angle) ||
-        !m_in.vec2(body, u"velocity", place, def.velocity) ||
-        !m_in.number(body, u"angularVelocity", place, def.angularVelocity) ||
-        !m_in.number(body, u"density", place, def.density, NumberRule::Positive) ||
-        !m_in.number(body, u"mass", place, def.mass, NumberRule::Positive) ||
+    if (!m_in.vec2(body, u"position", place, def.position, limits::kCoordinate) ||
+        !m_in.number(body, u"angle", place, def.angle, NumberRule::Finite, limits::kAngle) ||
+        !m_in.vec2(body, u"velocity", place, def.velocity, limits::kVelocity) ||
+        !m_in.number(body, u"angularVelocity", place, def.angularVelocity, NumberRule::Finite,
+                     limits::kAngularVelocity) ||
+        !m_in.number(body, u"density", place, def.density, NumberRule::Positive,
+                     limits::kDensity) ||
+        !m_in.number(body, u"mass", place, def.mass, NumberRule::Positive, limits::kMass) ||
         !m_in.number(body, u"restitution", place, def.restitution, NumberRule::UnitInterval) ||
-        !m_in.number(body, u"friction", place, def.friction, NumberRule::NonNegative) ||
+        !m_in.number(body, u"friction", place, def.friction, NumberRule::NonNegative,
+                     limits::kFriction) ||
         !m_in.boolean(body, u"collide", place, def.collide)) {
         return false;
     }
@@ -303,10 +312,12 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
                              .arg(detail::formatNumber(unit.area)));
     }
     const double mass = def.mass > 0 ? def.mass : def.density * unit.area;
-    if (!(std::isfinite(mass) && mass > 0)) {
-        return m_in.fail(joinPlace(place, u"density"),
-                         QStringLiteral("the mass works out as %1 kg (density times area)")
-                             .arg(detail::formatNumber(mass)));
+    if (!(std::isfinite(mass) && limits::kMass.contains(mass))) {
+        return m_in.fail(
+            joinPlace(place, u"density"),
+            QStringLiteral("the mass works out as %1 kg (density times area); it "
+                           "must be %2")
+                .arg(detail::formatNumber(mass), detail::describeRange(limits::kMass)));
     }
 
     if (def.type == physics::BodyType::Static &&
@@ -332,7 +343,8 @@ bool SceneReader::readShape(const QJsonValue& value, const QString& place, physi
     if (type == u"circle") {
         double radius = 0;
         if (!m_in.checkKeys(object, place, {u"type", u"radius"}) ||
-            !m_in.number(object, u"radius", place, radius, NumberRule::Positive, true)) {
+            !m_in.number(object, u"radius", place, radius, NumberRule::Positive, limits::kSize,
+                         true)) {
             return false;
         }
         shape = physics::makeCircleShape(radius);
@@ -342,8 +354,10 @@ bool SceneReader::readShape(const QJsonValue& value, const QString& place, physi
         double width = 0;
         double height = 0;
         if (!m_in.checkKeys(object, place, {u"type", u"width", u"height"}) ||
-            !m_in.number(object, u"width", place, width, NumberRule::Positive, true) ||
-            !m_in.number(object, u"height", place, height, NumberRule::Positive, true)) {
+            !m_in.number(object, u"width", place, width, NumberRule::Positive, limits::kSize,
+                         true) ||
+            !m_in.number(object, u"height", place, height, NumberRule::Positive, limits::kSize,
+                         true)) {
             return false;
         }
         shape = physics::makePolygonShape(physics::makeBox(width, height));
@@ -368,7 +382,8 @@ bool SceneReader::readShape(const QJsonValue& value, const QString& place, physi
         }
         std::vector<Vec2> vertices(static_cast<size_t>(list.size()));
         for (qsizetype i = 0; i < list.size(); ++i) {
-            if (!m_in.vec2Value(list[i], indexPlace(at, i), vertices[static_cast<size_t>(i)])) {
+            if (!m_in.vec2Value(list[i], indexPlace(at, i), vertices[static_cast<size_t>(i)],
+                                limits::kVertex)) {
                 return false;
             }
         }
@@ -457,9 +472,9 @@ bool SceneReader::readSpring(const QJsonValue& value, const QString& place)
             object, place,
             {u"a", u"anchorA", u"b", u"anchorB", u"stiffness", u"damping", u"restLength"}) ||
         !readEnd(object, u"a", place, spring.a, true) ||
-        !m_in.vec2(object, u"anchorA", place, spring.anchorA) ||
+        !m_in.vec2(object, u"anchorA", place, spring.anchorA, limits::kCoordinate) ||
         !readEnd(object, u"b", place, spring.b, true) ||
-        !m_in.vec2(object, u"anchorB", place, spring.anchorB)) {
+        !m_in.vec2(object, u"anchorB", place, spring.anchorB, limits::kCoordinate)) {
         return false;
     }
     if (spring.a == physics::kWorld && spring.b == physics::kWorld) {
@@ -472,9 +487,12 @@ bool SceneReader::readSpring(const QJsonValue& value, const QString& place)
     }
     spring.restLength =
         (worldPoint(spring.b, spring.anchorB) - worldPoint(spring.a, spring.anchorA)).norm();
-    if (!m_in.number(object, u"stiffness", place, spring.stiffness, NumberRule::NonNegative) ||
-        !m_in.number(object, u"damping", place, spring.damping, NumberRule::NonNegative) ||
-        !m_in.number(object, u"restLength", place, spring.restLength, NumberRule::NonNegative)) {
+    if (!m_in.number(object, u"stiffness", place, spring.stiffness, NumberRule::NonNegative,
+                     limits::kStiffness) ||
+        !m_in.number(object, u"damping", place, spring.damping, NumberRule::NonNegative,
+                     limits::kDamping) ||
+        !m_in.number(object, u"restLength", place, spring.restLength, NumberRule::NonNegative,
+                     limits::kRestLength)) {
         return false;
     }
     if (!std::isfinite(spring.restLength)) {
@@ -522,7 +540,7 @@ bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
                          QStringLiteral("unknown joint type \"%1\" (expected pin)").arg(type));
     }
     if (!readEnd(object, u"a", place, joint.a, false) ||
-        !m_in.vec2(object, u"anchorA", place, joint.anchorA) ||
+        !m_in.vec2(object, u"anchorA", place, joint.anchorA, limits::kCoordinate) ||
         !readEnd(object, u"b", place, joint.b, true)) {
         return false;
     }
@@ -534,7 +552,7 @@ bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
     // (or of the world) that coincides with anchorA at load.
     const Vec2 pinPoint = worldPoint(joint.a, joint.anchorA);
     if (object.contains(u"anchorB")) {
-        if (!m_in.vec2(object, u"anchorB", place, joint.anchorB)) {
+        if (!m_in.vec2(object, u"anchorB", place, joint.anchorB, limits::kCoordinate)) {
             return false;
         }
         const double gap = (worldPoint(joint.b, joint.anchorB) - pinPoint).norm();
