@@ -3,6 +3,7 @@
 
 #include "cli_lesson.h"
 #include "cli_numerics.h"
+#include "rigidlab/lessons/atomic_file.h"
 #include "rigidlab/lessons/bench.h"
 
 #include "rigidlab/lessons/document.h"
@@ -11,7 +12,6 @@
 #include "rigidlab/lessons/scene_run.h"
 
 #include <QCoreApplication>
-#include <QSaveFile>
 #include <QStringList>
 
 #include <algorithm>
@@ -425,14 +425,12 @@ int commandBench(const QStringList& words)
         if (names.size() != 1) {
             return usageError(QStringLiteral("bench: --export: name one --scene"));
         }
-        QSaveFile file(*path);
         const std::string json =
             lessons::benchSceneJson(*lessons::makeBenchScene(names.front()), settings);
-        if (!file.open(QIODevice::WriteOnly) ||
-            file.write(json.data(), static_cast<qint64>(json.size())) !=
-                static_cast<qint64>(json.size()) ||
-            !file.commit()) {
-            printErr(QStringLiteral("error: cannot write %1: %2\n").arg(*path, file.errorString()));
+        const QString error = lessons::writeFileAtomically(
+            *path, QByteArray(json.data(), static_cast<qsizetype>(json.size())));
+        if (!error.isEmpty()) {
+            printErr(QStringLiteral("error: %1\n").arg(error));
             return kExitOutputError;
         }
         return kExitOk;

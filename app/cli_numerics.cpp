@@ -2,13 +2,13 @@
 
 #include "work_precision_plot.h"
 
+#include "rigidlab/lessons/atomic_file.h"
 #include "rigidlab/lessons/error_vs_time.h"
 #include "rigidlab/lessons/stress.h"
 
 #include <QApplication>
 #include <QDir>
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include <cmath>
 #include <cstdio>
@@ -89,9 +89,9 @@ std::optional<double> number(const std::map<QString, QString>& o, const QString&
 
 bool writeFile(const QString& path, const QByteArray& bytes)
 {
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly) || file.write(bytes) != bytes.size() || !file.commit()) {
-        printErr(QStringLiteral("error: cannot write %1: %2\n").arg(path, file.errorString()));
+    const QString error = lessons::writeFileAtomically(path, bytes);
+    if (!error.isEmpty()) {
+        printErr(QStringLiteral("error: %1\n").arg(error));
         return false;
     }
     return true;

@@ -1,5 +1,6 @@
 #include "rigidlab/lessons/scene_run.h"
 
+#include "rigidlab/lessons/atomic_file.h"
 #include "rigidlab/lessons/scene_loader.h"
 
 #include <QElapsedTimer>
@@ -9,6 +10,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <string>
 
@@ -23,7 +25,8 @@ public:
     bool open(const QString& path, const char* header, QString& error)
     {
         m_file = std::make_unique<QSaveFile>(path);
-        if (!m_file->open(QIODevice::WriteOnly)) {
+        // Unbuffered (the rows are gathered in m_buffer): a failing write says why at once.
+        if (!m_file->open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
             error = QStringLiteral("cannot write %1: %2").arg(path, m_file->errorString());
             return false;
         }
@@ -73,8 +76,9 @@ public:
     {
         return m_buffer.size() < (std::size_t{1} << 16) || flush(error);
     }
-    /// Writes the rest and puts the file in place; true at once for a file never opened.
-    bool commit(QString& error)
+    /// Writes the rest into the temporary file and checks that all of it got there (a full
+    /// disk shows here, before anything is put in place); true at once for a file never opened.
+    bool finish(QString& error)
     {
         if (!isOpen()) {
             return true;
@@ -82,9 +86,22 @@ public:
         if (!flush(error)) {
             return false;
         }
-        if (!m_file->commit()) {
+        if (!m_file->flush()) {
             error = QStringLiteral("cannot write %1: %2")
                         .arg(m_file->fileName(), m_file->errorString());
+            return false;
+        }
+        return true;
+    }
+    /// Puts the finished file in place; true at once for a file never opened.
+    bool commit(QString& error)
+    {
+        if (!isOpen()) {
+            return true;
+        }
+        QString why;
+        if (!commitChecked(*m_file, why)) {
+            error = QStringLiteral("cannot write %1: %2").arg(m_file->fileName(), why);
             return false;
         }
         return true;
@@ -93,11 +110,18 @@ public:
 private:
     bool flush(QString& error)
     {
+        // A write that stops short is tried again: the second attempt is the one that fails
+        // and says why ("File too large").
         const auto size = static_cast<qint64>(m_buffer.size());
-        if (m_file->write(m_buffer.data(), size) != size) {
-            error = QStringLiteral("cannot write %1: %2")
-                        .arg(m_file->fileName(), m_file->errorString());
-            return false;
+        qint64 done = 0;
+        while (done < size) {
+            const qint64 n = m_file->write(m_buffer.data() + done, size - done);
+            if (n <= 0) {
+                error = QStringLiteral("cannot write %1: %2")
+                            .arg(m_file->fileName(), m_file->errorString());
+                return false;
+            }
+            done += n;
         }
         m_buffer.clear();
         return true;
@@ -106,6 +130,17 @@ private:
     std::unique_ptr<QSaveFile> m_file;
     std::string m_buffer;
 };
+
+/// A second name for the file at `path` (a hard link, else a copy), so that it can be put
+/// back after `path` was replaced.
+bool keepUnderSecondName(const QString& path, const QString& second)
+{
+    QFile::remove(second); // left over from a run that was killed
+    std::error_code error;
+    std::filesystem::create_hard_link(QFile::encodeName(path).toStdString(),
+                                      QFile::encodeName(second).toStdString(), error);
+    return !error || QFile::copy(path, second);
+}
 
 void writeTraceRows(CsvFile& csv, const physics::World& world)
 {
@@ -318,16 +353,32 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
     }
     report.wallSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
 
+    // Both files are complete in their temporary files before either is put in place, so a
+    // full disk leaves both previous files as they were. Only a rename can still fail after
+    // that; then the previous trace, kept under a second name meanwhile, is put back.
+    if (!trace.finish(error) || !diagnostics.finish(error)) {
+        return fail(RunStatus::OutputError, error);
+    }
+    const QString previousTrace = options.tracePath + QStringLiteral(".previous");
+    const bool keptTrace = trace.isOpen() && diagnostics.isOpen() &&
+                           QFileInfo::exists(options.tracePath) &&
+                           keepUnderSecondName(options.tracePath, previousTrace);
     if (!trace.commit(error)) {
+        if (keptTrace) {
+            QFile::remove(previousTrace);
+        }
         return fail(RunStatus::OutputError, error);
     }
     if (!diagnostics.commit(error)) {
-        // The trace is in place already; take it away again, so that a failed run leaves
-        // no output at all.
-        if (trace.isOpen()) {
-            QFile::remove(options.tracePath);
+        // Take the new trace away again, so that a failed run changes nothing.
+        QFile::remove(options.tracePath);
+        if (keptTrace) {
+            QFile::rename(previousTrace, options.tracePath);
         }
         return fail(RunStatus::OutputError, error);
+    }
+    if (keptTrace) {
+        QFile::remove(previousTrace);
     }
     report.status = RunStatus::Ok;
     report.steps = steps;
