@@ -2,6 +2,9 @@
 
 #include "simulation_controller.h"
 
+#include "rigidlab/lessons/limits.h"
+#include "rigidlab/lessons/scene_loader.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -34,15 +37,16 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     m_solver->addItem(tr("Sequential impulse"), int(SolverKind::SequentialImpulse));
     m_solver->setToolTip(tr("Seed impulse: one impulse per contact, once (the paper's method).\n"
                             "Sequential impulse: iterated, clamped, warm started."));
-    m_iterations->setRange(1, 200);
+    // Every range is a scene file's (lessons/limits.h): what a file may hold can be typed.
+    m_iterations->setRange(1, lessons::kMaxIterations);
     m_iterations->setToolTip(tr("Velocity iterations of the sequential-impulse solver"));
     // dt in milliseconds reads better in class than 0.001 s.
-    m_dt->setRange(0.01, 100.0);
-    m_dt->setDecimals(3);
+    m_dt->setRange(lessons::kMinDt * 1e3, lessons::kMaxDt * 1e3);
+    m_dt->setDecimals(4);
     m_dt->setSingleStep(0.5);
     m_dt->setSuffix(tr(" ms"));
     m_dt->setToolTip(tr("The fixed time step"));
-    m_timeScale->setRange(0.1, 4.0);
+    m_timeScale->setRange(lessons::limits::kTimeScale.min, lessons::limits::kTimeScale.max);
     m_timeScale->setSingleStep(0.1);
     m_timeScale->setDecimals(1);
     m_timeScale->setSuffix(tr(" ×"));
@@ -52,7 +56,7 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     m_restitution->setDecimals(2);
     m_restitution->setToolTip(
         tr("Coefficient of restitution e for every body: 0 sticks, 1 is elastic"));
-    m_friction->setRange(0.0, 2.0);
+    m_friction->setRange(lessons::limits::kFriction.min, lessons::limits::kFriction.max);
     m_friction->setSingleStep(0.05);
     m_friction->setDecimals(2);
     m_friction->setToolTip(tr("Coulomb friction coefficient μ for every body"));

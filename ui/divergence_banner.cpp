@@ -2,6 +2,8 @@
 
 #include "simulation_controller.h"
 
+#include "rigidlab/lessons/scene_loader.h"
+
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
@@ -20,6 +22,7 @@ DivergenceBanner::DivergenceBanner(SimulationController& controller, QWidget* pa
     auto* halve = new QPushButton(tr("Halve dt"), this);
     reset->setToolTip(tr("Back to the start of the scene"));
     halve->setToolTip(tr("Back to the start with half the time step"));
+    halve->setObjectName(QStringLiteral("halveDt"));
     auto* layout = new QHBoxLayout(this);
     layout->addWidget(m_text, 1);
     layout->addWidget(reset);
@@ -46,6 +49,9 @@ void DivergenceBanner::refresh()
     if (d)
         m_text->setText(tr("The simulation %1. Stopped here rather than draw garbage.")
                             .arg(QString::fromStdString(d->message())));
+    // dt cannot go below a scene file's smallest: there the button has nothing left to do.
+    if (auto* halve = findChild<QPushButton*>(QStringLiteral("halveDt")))
+        halve->setEnabled(0.5 * m_controller.world().def().dt >= lessons::kMinDt);
     setVisible(d.has_value());
 }
 

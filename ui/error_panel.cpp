@@ -41,9 +41,12 @@ ErrorPanel::ErrorPanel(QWidget* parent)
 
 ErrorPanel::~ErrorPanel()
 {
+    // Closing the window mid-sweep: stop after the row in progress, and wait for it. The rows
+    // still queued for this panel are dropped with it.
     if (m_thread) {
         m_cancelled = true;
         m_thread->wait();
+        delete m_thread;
     }
 }
 

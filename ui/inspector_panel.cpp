@@ -2,6 +2,8 @@
 
 #include "simulation_controller.h"
 
+#include "rigidlab/lessons/limits.h"
+
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
@@ -40,7 +42,7 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_restitution->setRange(0.0, 1.0);
     m_restitution->setSingleStep(0.05);
-    m_friction->setRange(0.0, 2.0);
+    m_friction->setRange(lessons::limits::kFriction.min, lessons::limits::kFriction.max);
     m_friction->setSingleStep(0.05);
     auto edit = [this] {
         m_controller.setBodyMaterial(m_body, m_restitution->value(), m_friction->value());

@@ -17,7 +17,17 @@
 #include <QTextBrowser>
 #include <QVBoxLayout>
 
+#include <cmath>
+
 namespace rigidlab::ui {
+
+namespace {
+
+/// The largest answer taken, in the question's unit: far beyond any measured value, and small
+/// enough that |answer - measured| stays finite.
+constexpr double kMaxAnswer = 1e15;
+
+} // namespace
 
 LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_lessonBox(new QComboBox(this)),
@@ -201,6 +211,8 @@ void LessonPlayer::buildQuestions()
         auto* edit = new QLineEdit(box);
         auto* validator = new QDoubleValidator(edit);
         validator->setNotation(QDoubleValidator::ScientificNotation);
+        validator->setBottom(-kMaxAnswer);
+        validator->setTop(kMaxAnswer);
         edit->setValidator(validator);
         edit->setPlaceholderText(tr("your answer"));
         row->addWidget(edit, 1);
@@ -222,6 +234,13 @@ void LessonPlayer::buildQuestions()
             if (!ok || !std::isfinite(answer)) {
                 result->setStyleSheet(QStringLiteral("color: #a05a00;"));
                 result->setText(tr("Type a number first."));
+                return;
+            }
+            if (std::abs(answer) > kMaxAnswer) {
+                result->setStyleSheet(QStringLiteral("color: #a05a00;"));
+                result->setText(tr("Type a number from %1 to %2.")
+                                    .arg(-kMaxAnswer, 0, 'g')
+                                    .arg(kMaxAnswer, 0, 'g'));
                 return;
             }
             const lessons::Verdict v =

@@ -1,0 +1,431 @@
+// The window survives what a class throws at it: garbage typed into every field, a scene that
+// diverges, closing it in the middle of an export or a sweep, opening a file while another
+// runs, and settings that cannot be saved. Offscreen, driven as a user would.
+
+#include "control_panel.h"
+#include "divergence_banner.h"
+#include "error_panel.h"
+#include "inspector_panel.h"
+#include "lesson_player.h"
+#include "main_window.h"
+#include "plot_widget.h"
+#include "simulation_controller.h"
+
+#include "rigidlab/lessons/limits.h"
+#include "rigidlab/lessons/scene_loader.h"
+
+#include <QAbstractSpinBox>
+#include <QApplication>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QImage>
+#include <QLineEdit>
+#include <QMenuBar>
+#include <QPointer>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <sys/resource.h>
+
+#include <cmath>
+#include <csignal>
+#include <functional>
+
+using namespace rigidlab;
+using rigidlab::ui::MainWindow;
+
+namespace {
+
+QString scene(const char* name)
+{
+    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/") + QLatin1String(name);
+}
+
+QString lesson(const char* name)
+{
+    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/") + QLatin1String(name);
+}
+
+/// What students type when asked for a number.
+const QStringList kGarbage = {
+    QStringLiteral("abc"),          QStringLiteral("-1e309"), QStringLiteral("1e999"),
+    QStringLiteral("nan"),          QStringLiteral("inf"),    QStringLiteral("--"),
+    QStringLiteral("1,2,3"),        QStringLiteral("1e-400"), QStringLiteral("99999999999999"),
+    QStringLiteral("-0"),           QStringLiteral("0x10"),   QStringLiteral("1.2.3"),
+    QStringLiteral("☃ 🙂"),     QStringLiteral("  7  "),  QStringLiteral("-5"),
+    QString(300, QLatin1Char('9')), QStringLiteral("1e-7"),   QStringLiteral("\t\n"),
+};
+
+/// Types `text` into `w` key by key; what is not printable ASCII (QTest's key table) goes as a key
+/// event carrying the character, as an input method would send it.
+void typeText(QWidget* w, const QString& text)
+{
+    for (const QChar c : text) {
+        if (c == u'\t') {
+            QTest::keyClick(w, Qt::Key_Tab);
+        } else if (c == u'\n') {
+            QTest::keyClick(w, Qt::Key_Return);
+        } else if (c.unicode() >= 0x20 && c.unicode() < 0x7f) {
+            QTest::keyClick(w, static_cast<char>(c.unicode()));
+        } else {
+            QTest::sendKeyEvent(QTest::Press, w, Qt::Key_unknown, QString(c), Qt::NoModifier);
+            QTest::sendKeyEvent(QTest::Release, w, Qt::Key_unknown, QString(c), Qt::NoModifier);
+        }
+    }
+}
+
+/// The controller's settings are within a scene file's limits, whatever was typed.
+void checkSettingsInRange(const ui::SimulationController& c, const QString& after)
+{
+    const physics::WorldDef& d = c.world().def();
+    const QByteArray where = after.toUtf8();
+    QVERIFY2(d.dt >= lessons::kMinDt && d.dt <= lessons::kMaxDt, where.constData());
+    QVERIFY2(d.iterations >= 1 && d.iterations <= lessons::kMaxIterations, where.constData());
+    QVERIFY2(d.restitution >= 0 && d.restitution <= 1, where.constData());
+    QVERIFY2(lessons::limits::kFriction.contains(d.friction), where.constData());
+    QVERIFY2(lessons::limits::kTimeScale.contains(c.timeScale()), where.constData());
+    for (const physics::Body& b : c.world().bodies()) {
+        QVERIFY2(b.restitution >= 0 && b.restitution <= 1, where.constData());
+        QVERIFY2(lessons::limits::kFriction.contains(b.friction), where.constData());
+    }
+}
+
+/// Runs `action` on the modal dialog as soon as one is open (a file dialog, a message box).
+void onModal(std::function<void(QWidget*)> action)
+{
+    auto* timer = new QTimer;
+    timer->setInterval(10);
+    QObject::connect(timer, &QTimer::timeout, [timer, action] {
+        if (QWidget* modal = QApplication::activeModalWidget()) {
+            timer->stop();
+            timer->deleteLater();
+            action(modal);
+        }
+    });
+    timer->start();
+}
+
+QAction* findAction(QWidget* root, const QString& menuPath)
+{
+    // "File/Export plot/Energy/As PNG…", matched without '&'.
+    const QStringList parts = menuPath.split(u'/');
+    QList<QAction*> actions = root->findChild<QMenuBar*>()->actions();
+    QAction* found = nullptr;
+    for (const QString& part : parts) {
+        found = nullptr;
+        for (QAction* a : actions)
+            if (QString(a->text()).remove(u'&') == part)
+                found = a;
+        if (!found)
+            return nullptr;
+        if (found->menu())
+            actions = found->menu()->actions();
+    }
+    return found;
+}
+
+} // namespace
+
+class TestRobustness : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("RigidLabTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("test_robustness"));
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+    void garbageInEveryField()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.openScene(scene("box_stack.json"), true), QString());
+        w.inspector().setBody(static_cast<int>(w.controller().world().bodies().size()) - 1);
+        // Open a lesson step with a question too, for its answer box; then the plain lab
+        // again for the controls (a lesson step may lock some).
+        QCOMPARE(w.openLesson(lesson("restitution.json"), true), QString());
+        const QList<QLineEdit*> answers = w.lessonPlayer().findChildren<QLineEdit*>();
+        QVERIFY(!answers.isEmpty());
+        for (QLineEdit* edit : answers) {
+            for (const QString& text : kGarbage) {
+                edit->clear();
+                edit->setFocus();
+                typeText(edit, text);
+                QTest::keyClick(edit, Qt::Key_Return);
+                for (QPushButton* check : w.lessonPlayer().findChildren<QPushButton*>())
+                    if (check->text() == QLatin1String("Check") && check->isVisible())
+                        check->click();
+            }
+        }
+        QCOMPARE(w.openScene(scene("box_stack.json"), true), QString());
+        w.inspector().setBody(static_cast<int>(w.controller().world().bodies().size()) - 1);
+
+        QList<QAbstractSpinBox*> boxes = w.controls().findChildren<QAbstractSpinBox*>();
+        boxes += w.inspector().findChildren<QAbstractSpinBox*>();
+        QVERIFY(boxes.size() >= 7);
+        for (QAbstractSpinBox* box : boxes) {
+            QVERIFY2(box->isEnabled(), qPrintable(box->objectName()));
+            for (const QString& text : kGarbage) {
+                box->setFocus();
+                box->selectAll();
+                typeText(box, text);
+                QTest::keyClick(box, Qt::Key_Return);
+                box->clearFocus(); // focus out: the box fixes up or reverts what it holds
+                checkSettingsInRange(w.controller(), text);
+                w.controller().stepForward();
+            }
+        }
+        // Typing may have given a dt of a second, at which the stack may blow up (the banner's
+        // case, below). Back to a sane dt from the start: the world runs, finite.
+        w.controller().setDt(0.001);
+        w.controller().reset();
+        for (int i = 0; i < 100; ++i)
+            w.controller().stepForward();
+        w.controller().setRunning(true);
+        QTest::qWait(100);
+        w.controller().setRunning(false);
+        QVERIFY(!w.controller().world().divergence());
+        for (const physics::Body& b : w.controller().world().bodies())
+            QVERIFY(std::isfinite(b.position.x()) && std::isfinite(b.position.y()));
+
+        // Out-of-range values sent to the controller directly change nothing.
+        const physics::WorldDef before = w.controller().world().def();
+        const double scale = w.controller().timeScale();
+        w.controller().setDt(0.0);
+        w.controller().setDt(-1.0);
+        w.controller().setDt(1e300);
+        w.controller().setDt(std::nan(""));
+        w.controller().setIterations(0);
+        w.controller().setIterations(1 << 30);
+        w.controller().setRestitution(2.0);
+        w.controller().setFriction(1e300);
+        w.controller().setFriction(-1.0);
+        w.controller().setTimeScale(std::nan(""));
+        w.controller().setTimeScale(1e9);
+        w.controller().setBodyMaterial(0, std::nan(""), 0.5);
+        QCOMPARE(w.controller().world().def().dt, before.dt);
+        QCOMPARE(w.controller().world().def().iterations, before.iterations);
+        QCOMPARE(w.controller().world().def().restitution, before.restitution);
+        QCOMPARE(w.controller().world().def().friction, before.friction);
+        QCOMPARE(w.controller().timeScale(), scale);
+    }
+
+    void answerBoxesTakeOnlyNumbers()
+    {
+        MainWindow w;
+        QCOMPARE(w.openLesson(lesson("restitution.json"), true), QString());
+        ui::LessonPlayer& player = w.lessonPlayer();
+        // Find a step with a question.
+        int step = -1;
+        for (int i = 0; i < static_cast<int>(player.lesson()->steps.size()) && step < 0; ++i)
+            if (!player.lesson()->steps[static_cast<std::size_t>(i)].questions.empty())
+                step = i;
+        QVERIFY(step >= 0);
+        player.goToStep(step);
+        for (const QString& text :
+             {QStringLiteral("abc"), QStringLiteral("1e999"), QStringLiteral("nan"), QString()}) {
+            player.answer(0, text);
+            QCOMPARE(player.result(0), QStringLiteral("Type a number first."));
+        }
+        player.answer(0, QStringLiteral("1e300"));
+        QCOMPARE(player.result(0), QStringLiteral("Type a number from -1e+15 to 1e+15."));
+    }
+
+    void divergingSceneStopsWithABanner()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        // The stiff spring past its stability limit: Verlet at dt = 10 ms diverges at once.
+        QCOMPARE(w.openScene(scene("stiff_spring.json"), true), QString());
+        w.controller().setDt(0.01);
+        w.controller().setRunning(true);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller().world().divergence().has_value(), 20000);
+        auto* banner = w.findChild<ui::DivergenceBanner*>();
+        QVERIFY(banner);
+        QTRY_VERIFY_WITH_TIMEOUT(banner->isVisible(), 5000);
+        QVERIFY(!w.controller().isRunning());
+        QVERIFY2(banner->text().contains(QStringLiteral("diverged")), qPrintable(banner->text()));
+        // Stepping on, stepping back, drawing and the plots all carry on without garbage.
+        const long long at = w.controller().currentStep();
+        for (int i = 0; i < 10; ++i)
+            w.controller().stepForward();
+        w.controller().stepBack();
+        QTest::qWait(100);
+        for (int i = 0; i < MainWindow::kPlotCount; ++i)
+            w.plot(i)->drain();
+        QVERIFY(w.controller().currentStep() <= at + 10);
+        // Halve dt: back to the start with dt = 5 ms, where Verlet is stable.
+        auto* halve = banner->findChild<QPushButton*>(QStringLiteral("halveDt"));
+        QVERIFY(halve && halve->isEnabled());
+        halve->click();
+        QCOMPARE(w.controller().world().def().dt, 0.005);
+        QCOMPARE(w.controller().currentStep(), 0LL);
+        QVERIFY(!w.controller().world().divergence());
+        w.controller().setRunning(true);
+        QTest::qWait(300);
+        w.controller().setRunning(false);
+        QVERIFY(!w.controller().world().divergence());
+        QTRY_VERIFY(!banner->isVisible());
+        // At the smallest dt there is nothing left to halve.
+        w.controller().setDt(lessons::kMinDt);
+        banner->refresh();
+        QVERIFY(!halve->isEnabled());
+    }
+
+    void closingDuringTheSweep()
+    {
+        // The error-vs-time sweep runs in a thread of its own: closing and destroying the
+        // window mid-sweep stops it after the row in progress, without a crash or a leak.
+        auto* w = new MainWindow;
+        w->show();
+        auto* panel = w->findChild<ui::ErrorPanel*>();
+        QVERIFY(panel);
+        panel->start();
+        QVERIFY(panel->isRunning());
+        QTest::qWait(50);
+        w->close();
+        QElapsedTimer clock;
+        clock.start();
+        delete w;
+        QVERIFY(clock.elapsed() < 60000);
+    }
+
+    void closingDuringAPlotExport()
+    {
+        // File › Export plot: the window is closed while the file dialog is up (it runs an
+        // event loop of its own), then the file is chosen. The export completes, whole.
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        const QString path = dir.filePath(QStringLiteral("energy.png"));
+        QPointer<MainWindow> w = new MainWindow;
+        w->setAttribute(Qt::WA_DeleteOnClose);
+        w->show();
+        QCOMPARE(w->openScene(scene("ball_drop.json"), true), QString());
+        for (int i = 0; i < 200; ++i)
+            w->controller().stepForward();
+        QAction* exportPng = findAction(w, QStringLiteral("File/Export plot/Energy/As PNG…"));
+        QVERIFY(exportPng);
+        bool dialogSeen = false;
+        onModal([&](QWidget* modal) {
+            dialogSeen = true;
+            w->close();
+            auto* dialog = qobject_cast<QFileDialog*>(modal);
+            QVERIFY(dialog);
+            dialog->selectFile(path);
+            static_cast<QDialog*>(dialog)->accept(); // QFileDialog hides it
+        });
+        exportPng->trigger();
+        QVERIFY(dialogSeen);
+        QTRY_VERIFY(w.isNull()); // deleted on close, once back in the main event loop
+        QImage image(path);
+        QVERIFY2(!image.isNull(), "the exported picture is not whole");
+        QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden),
+                 QStringList{QStringLiteral("energy.png")});
+    }
+
+    void closingDuringALessonExport()
+    {
+        // The lesson's "Export plots…": the window closes while the folder dialog is up.
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        QPointer<MainWindow> w = new MainWindow;
+        w->setAttribute(Qt::WA_DeleteOnClose);
+        w->show();
+        QCOMPARE(w->openLesson(lesson("energy_drift.json"), true), QString());
+        for (int i = 0; i < 100; ++i)
+            w->controller().stepForward();
+        onModal([&](QWidget* modal) {
+            w->close();
+            auto* dialog = qobject_cast<QFileDialog*>(modal);
+            QVERIFY(dialog);
+            dialog->selectFile(dir.path());
+            static_cast<QDialog*>(dialog)->accept(); // QFileDialog hides it
+        });
+        emit w->lessonPlayer().exportRequested();
+        QTRY_VERIFY(w.isNull());
+        const QStringList files = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden);
+        QVERIFY2(files.size() >= 4, qPrintable(files.join(u' ')));
+        for (const QString& f : files)
+            QVERIFY2(!f.startsWith(u'.') && QFileInfo(dir.filePath(f)).size() > 0, qPrintable(f));
+    }
+
+    void openingFilesWhileOneRuns()
+    {
+        MainWindow w;
+        w.show();
+        QCOMPARE(w.openScene(scene("billiards_break.json"), true), QString());
+        w.controller().setRunning(true);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller().world().time() > 0.05, 10000);
+        // Dragging a body, mid-run, when the next file opens.
+        w.controller().grab(static_cast<int>(w.controller().world().bodies().size()) - 1,
+                            physics::Vec2(0, 0));
+        QCOMPARE(w.openScene(scene("newtons_cradle.json"), true), QString());
+        QVERIFY(!w.controller().grabbed());
+        QCOMPARE(w.controller().world().time(), 0.0);
+        const lessons::SceneLoadResult cradle =
+            lessons::loadSceneFile(scene("newtons_cradle.json"));
+        QCOMPARE(w.controller().world().bodies().size(), cradle.scene.bodies.size());
+        // A broken file while running: the running scene stays.
+        w.controller().setRunning(true);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller().world().time() > 0.05, 10000);
+        QVERIFY(!w.openScene(QStringLiteral("/nonexistent/scene.json"), true).isEmpty());
+        QCOMPARE(w.controller().world().bodies().size(), cradle.scene.bodies.size());
+        // A lesson while a scene runs, then a scene while the lesson's step runs.
+        QCOMPARE(w.openLesson(lesson("billiards_momentum.json"), true), QString());
+        w.controller().setRunning(true);
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller().world().time() > 0.05, 10000);
+        QCOMPARE(w.openScene(scene("pendulum.json"), true), QString());
+        QVERIFY(!w.lessonPlayer().lesson());
+        // Plots start again from the new scene's t = 0.
+        for (int i = 0; i < 50; ++i)
+            w.controller().stepForward();
+        for (int i = 0; i < MainWindow::kPlotCount; ++i) {
+            w.plot(i)->drain();
+            QVERIFY(w.plot(i)->pointCount() > 0);
+        }
+        // A second lesson over the first, mid-run, and the sweep running through it all.
+        QCOMPARE(w.openLesson(lesson("stacks.json"), true), QString());
+        w.findChild<ui::ErrorPanel*>()->start();
+        w.controller().setRunning(true);
+        QTest::qWait(100);
+        QCOMPARE(w.openLesson(lesson("energy_drift.json"), true), QString());
+        w.controller().setRunning(true);
+        QTest::qWait(100);
+        QCOMPARE(w.openScene(scene("welcome.json"), true), QString());
+        QTest::qWait(100);
+        w.findChild<ui::ErrorPanel*>()->cancel();
+    }
+
+    void settingsThatCannotBeSavedAreReported()
+    {
+        // A full disk, as far as QSettings can tell: a file size limit (it stops root too).
+        MainWindow w;
+        w.show();
+        QSettings().clear();
+        QSettings().sync();
+        rlimit old{};
+        getrlimit(RLIMIT_FSIZE, &old);
+        auto* oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+        rlimit limited = old;
+        limited.rlim_cur = 16;
+        QVERIFY(setrlimit(RLIMIT_FSIZE, &limited) == 0);
+        QCOMPARE(w.openScene(scene("ball_drop.json"), true), QString()); // a recent file
+        const QString message = w.statusBar()->currentMessage();
+        setrlimit(RLIMIT_FSIZE, &old);
+        std::signal(SIGXFSZ, oldHandler);
+        QVERIFY2(message.startsWith(QStringLiteral("Settings not saved: cannot write ")),
+                 qPrintable(message));
+    }
+};
+
+QTEST_MAIN(TestRobustness)
+#include "test_robustness.moc"
