@@ -1,0 +1,211 @@
+// The soak test: a 200-body scene run for a long stretch of simulated time in the lab window
+// (offscreen), as fast as it will go, with every plot live: the controller steps, the view
+// follows, the plots drain and replot on their own timers (events are processed once per
+// 1/60 s of simulated time, as frames would be). Memory must stay flat and the step rate must
+// not fall.
+//
+// The scene is a gas of 200 bodies (circles and boxes) bouncing elastically in a closed box
+// without gravity: its contacts are as many at the end as at the start, so a change in the
+// step rate is the program's, not the physics'.
+//
+// Memory: the time-travel history keeps world snapshots up to its budget (ui/history.h), so
+// the resident size grows at first by design. It is measured (VmRSS, /proc/self/status) once
+// the history is full and the first tenth is over, and again at the end: the two must be
+// within kMaxGrowthBytes. The step rate is steps per second of this process's CPU time (so that
+// other work on the machine does not count), in the first and the last tenth of the run.
+//
+// RIGIDLAB_SOAK_SECONDS sets the simulated time: `./lab soak` runs the whole hour (3600 s);
+// ./lab test runs kDefaultSeconds.
+
+#include "main_window.h"
+#include "plot_widget.h"
+#include "simulation_controller.h"
+
+#include "rigidlab/lessons/scene_loader.h"
+
+#include <QDockWidget>
+#include <QFile>
+#include <QRandomGenerator>
+#include <QtTest>
+
+#include <time.h>
+
+#include <cmath>
+
+using namespace rigidlab;
+
+namespace {
+
+#if defined(__SANITIZE_ADDRESS__)
+// Under AddressSanitizer freed memory waits in a quarantine (256 MiB) and every step is several
+// times slower: the run only has to finish cleanly (LeakSanitizer judges the memory).
+constexpr bool kMeasure = false;
+constexpr double kDefaultSeconds = 60.0;
+#else
+constexpr bool kMeasure = true;
+constexpr double kDefaultSeconds = 600.0; ///< simulated, for ./lab test [s]
+#endif
+constexpr double kFrame = 1.0 / 60.0; ///< events are processed this often, simulated [s]
+constexpr long kMaxGrowthBytes = 8L << 20;
+constexpr double kMinRateRatio = 0.8; ///< last tenth's step rate over the first's, at least
+
+/// This process's resident memory [bytes], from /proc/self/status.
+long residentBytes()
+{
+    QFile status(QStringLiteral("/proc/self/status"));
+    if (!status.open(QIODevice::ReadOnly))
+        return -1;
+    for (const QByteArray& line : status.readAll().split('\n'))
+        if (line.startsWith("VmRSS:"))
+            return line.mid(6).trimmed().split(' ').first().toLong() * 1024;
+    return -1;
+}
+
+double cpuSeconds()
+{
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+/// 200 bodies in a 12 m x 8 m box, no gravity, elastic and frictionless, with fixed random
+/// velocities (seeded: every run is the same run).
+QByteArray gasScene()
+{
+    QByteArray bodies;
+    const auto wall = [&bodies](const char* id, double x, double y, double w, double h) {
+        bodies += QStringLiteral(R"({"id": "%1", "type": "static", "shape": {"type": "box",)"
+                                 R"("width": %2, "height": %3}, "position": [%4, %5]},)")
+                      .arg(QLatin1String(id))
+                      .arg(w)
+                      .arg(h)
+                      .arg(x)
+                      .arg(y)
+                      .toUtf8();
+    };
+    wall("floor", 0, -4.5, 14, 1);
+    wall("ceiling", 0, 4.5, 14, 1);
+    wall("left", -6.5, 0, 1, 10);
+    wall("right", 6.5, 0, 1, 10);
+    QRandomGenerator random(7);
+    for (int i = 0; i < 200; ++i) {
+        const double x = -5.5 + 0.55 * (i % 20);
+        const double y = -3.5 + 0.7 * (i / 20);
+        const double vx = random.generateDouble() * 4 - 2;
+        const double vy = random.generateDouble() * 4 - 2;
+        const QString shape =
+            i % 3 == 0 ? QStringLiteral(R"({"type": "box", "width": 0.3, "height": 0.2})")
+                       : QStringLiteral(R"({"type": "circle", "radius": 0.15})");
+        bodies += QStringLiteral(R"(%1{"id": "b%2", "shape": %3, "position": [%4, %5],)"
+                                 R"("velocity": [%6, %7]})")
+                      .arg(i ? QStringLiteral(",") : QString())
+                      .arg(i)
+                      .arg(shape)
+                      .arg(x)
+                      .arg(y)
+                      .arg(vx)
+                      .arg(vy)
+                      .toUtf8();
+    }
+    return R"({"rigidlab": 1, "title": "Soak: a gas of 200 bodies",)"
+           R"("world": {"gravity": [0, 0], "dt": 0.005, "restitution": 1, "friction": 0},)"
+           R"("bodies": [)" +
+           bodies + "]}";
+}
+
+} // namespace
+
+class TestSoak : public QObject {
+    Q_OBJECT
+
+private slots:
+    void initTestCase()
+    {
+        QCoreApplication::setOrganizationName(QStringLiteral("RigidLabTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("test_soak"));
+        QStandardPaths::setTestModeEnabled(true);
+    }
+
+    void longRunStaysFlat()
+    {
+        bool ok = false;
+        double seconds = qEnvironmentVariable("RIGIDLAB_SOAK_SECONDS").toDouble(&ok);
+        if (!ok || !(seconds > 0))
+            seconds = kDefaultSeconds;
+
+        const lessons::SceneLoadResult loaded =
+            lessons::loadSceneJson(gasScene(), QStringLiteral("soak.json"));
+        QVERIFY2(loaded.ok, qPrintable(loaded.error));
+        QCOMPARE(loaded.scene.bodies.size(), std::size_t{204});
+
+        ui::MainWindow window;
+        window.resize(1400, 900);
+        window.show();
+        auto& controller = window.controller();
+        controller.loadScene(loaded.scene, QStringLiteral("soak.json"));
+        // Every plot live, one of them keeping the whole run (thinned to its point budget).
+        for (int i = 0; i < ui::MainWindow::kPlotCount; ++i)
+            QVERIFY(window.plot(i)->isVisible());
+        window.plot(0)->setRangeMode(ui::RangeMode::WholeRun);
+
+        const double dt = controller.world().def().dt;
+        const long long steps = std::llround(seconds / dt);
+        const long long tenth = steps / 10;
+        const int perFrame = std::max(1, static_cast<int>(std::lround(kFrame / dt)));
+
+        long rssStart = residentBytes();
+        long rssWarm = -1;
+        long long historyFullAt = -1;
+        double firstTenthCpu = 0;
+        double cpuMark = cpuSeconds();
+        double lastTenthCpu = 0;
+        for (long long i = 1; i <= steps; ++i) {
+            controller.stepForward();
+            if (i % perFrame == 0)
+                QCoreApplication::processEvents();
+            if (historyFullAt < 0 && controller.earliestStep() > 0)
+                historyFullAt = i;
+            if (i == tenth) {
+                firstTenthCpu = cpuSeconds() - cpuMark;
+            }
+            // Warm: the history at its budget and the first tenth over.
+            if (rssWarm < 0 && i >= tenth && historyFullAt > 0)
+                rssWarm = residentBytes();
+            if (i == steps - tenth)
+                cpuMark = cpuSeconds();
+            if (const auto& d = controller.world().divergence())
+                QFAIL(d->message().c_str());
+        }
+        lastTenthCpu = cpuSeconds() - cpuMark;
+        QCoreApplication::processEvents();
+        const long rssEnd = residentBytes();
+
+        const double firstRate = static_cast<double>(tenth) / firstTenthCpu;
+        const double lastRate = static_cast<double>(tenth) / lastTenthCpu;
+        qInfo("soak: %.0f s simulated, %lld steps of %g s, 204 bodies", seconds, steps, dt);
+        qInfo("soak: resident memory %.1f MiB at the start, %.1f MiB when warm (history full "
+              "at step %lld), %.1f MiB at the end",
+              rssStart / 1048576.0, rssWarm / 1048576.0, historyFullAt, rssEnd / 1048576.0);
+        qInfo("soak: %.0f steps per CPU second in the first tenth, %.0f in the last (ratio %.2f)",
+              firstRate, lastRate, lastRate / firstRate);
+        for (int i = 0; i < ui::MainWindow::kPlotCount; ++i)
+            qInfo("soak: plot %d holds %d points", i, window.plot(i)->pointCount());
+
+        QCOMPARE(controller.world().stepCount(), steps);
+        if (!kMeasure)
+            QSKIP("built with AddressSanitizer: the run is checked, its memory and speed are not");
+        if (rssWarm < 0)
+            QSKIP("the run ended before the history reached its budget: set "
+                  "RIGIDLAB_SOAK_SECONDS higher to measure flat memory");
+        QVERIFY2(rssEnd - rssWarm <= kMaxGrowthBytes,
+                 qPrintable(QStringLiteral("memory grew by %1 MiB after warm-up")
+                                .arg((rssEnd - rssWarm) / 1048576.0)));
+        QVERIFY2(lastRate >= kMinRateRatio * firstRate,
+                 qPrintable(QStringLiteral("the step rate fell from %1 to %2 per CPU second")
+                                .arg(firstRate)
+                                .arg(lastRate)));
+    }
+};
+
+QTEST_MAIN(TestSoak)
+#include "test_soak.moc"
