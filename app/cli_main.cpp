@@ -44,6 +44,8 @@ Commands:
       --diagnostics FILE.csv step,t,kinetic,potential,total,px,py,angular_momentum,contacts
       --every K              write rows every K steps (default 1; step 0 and the last
                              step are always written)
+      --profile              print each stage's time per step (broad phase, narrow phase,
+                             islands, forces, integration, contact solve, sleep, diagnostics)
   validate FILE.json...      check documents (scenes, lessons) and say what is wrong
   bench [OPTIONS]            RigidLab's side of the benchmarks (./lab bench adds the peers)
       --scene NAME           one scene: pyramid-20, pyramid-40, pyramid-100, rain-1000,
@@ -301,8 +303,11 @@ std::optional<QString> onlyFile(const Arguments& args, const char* command, QStr
     return args.positionals().front();
 }
 
-int commandRun(const QStringList& words)
+int commandRun(const QStringList& allWords)
 {
+    // --profile is a switch, without a value.
+    QStringList words = allWords;
+    const bool profile = words.removeAll(QStringLiteral("--profile")) > 0;
     Arguments args(words, {QStringLiteral("--time"), QStringLiteral("--steps"),
                            QStringLiteral("--dt"), QStringLiteral("--integrator"),
                            QStringLiteral("--solver"), QStringLiteral("--trace"),
@@ -312,6 +317,7 @@ int commandRun(const QStringList& words)
     if (!args.parse(error) || !readRunOptions(args, options, error)) {
         return usageError(QStringLiteral("run: ") + error);
     }
+    options.profile = profile;
     const auto path = onlyFile(args, "run", error);
     if (!path) {
         return usageError(error);
@@ -325,6 +331,7 @@ int commandRun(const QStringList& words)
     switch (report.status) {
     case lessons::RunStatus::Ok:
         printOut(report.summary(*path) + u'\n');
+        printOut(report.profileTable());
         return kExitOk;
     case lessons::RunStatus::BadOptions:
         return inputError(report.error);

@@ -8,6 +8,7 @@
 #include <QFileInfo>
 #include <QSaveFile>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -194,12 +195,66 @@ int firstNonFiniteBody(const physics::World& world)
     return -1;
 }
 
+/// Adds a step's stage times into a running sum; the counts are the step's.
+void addProfile(physics::StepProfile& sum, const physics::StepProfile& step)
+{
+    for (int k = 0; k < physics::kStageCount; ++k) {
+        sum.ms[k] += step.ms[k];
+        sum.ran[k] = sum.ran[k] || step.ran[k];
+    }
+    sum.total += step.total;
+    sum.directIntegration = step.directIntegration;
+    sum.pairs = step.pairs;
+    sum.contacts = step.contacts;
+    sum.solved = step.solved;
+    sum.positionPasses = step.positionPasses;
+    sum.awake = step.awake;
+    sum.asleep = step.asleep;
+    sum.islands = step.islands;
+}
+
 QString formatEnergy(double joules)
 {
     return QString::number(joules, 'g', 6) + QStringLiteral(" J");
 }
 
 } // namespace
+
+QString RunReport::profileTable() const
+{
+    if (!profile) {
+        return {};
+    }
+    const physics::StepProfile& p = *profile;
+    const double n = std::max<double>(1.0, static_cast<double>(steps));
+    QString out = QStringLiteral("stage            ms/step    share\n");
+    for (int k = 0; k < physics::kStageCount; ++k) {
+        const auto stage = static_cast<physics::Stage>(k);
+        QString name = QString::fromLatin1(physics::stageName(stage));
+        name = name.leftJustified(16);
+        if (!p.ran[k]) {
+            out += name + QStringLiteral(" left out\n");
+            continue;
+        }
+        out += name + QStringLiteral(" %1 %2 %\n")
+                          .arg(p.ms[k] / n, 8, 'f', 4)
+                          .arg(p.total > 0 ? 100.0 * p.ms[k] / p.total : 0.0, 6, 'f', 1);
+    }
+    out += QStringLiteral("step             %1\n").arg(p.total / n, 8, 'f', 4);
+    out += QStringLiteral("last step: %1 pairs, %2 contacts, %3 solved, %4 position passes, "
+                          "%5 awake, %6 asleep, %7 islands; integration %8\n")
+               .arg(p.pairs)
+               .arg(p.contacts)
+               .arg(p.solved)
+               .arg(p.positionPasses)
+               .arg(p.awake)
+               .arg(p.asleep)
+               .arg(p.islands)
+               .arg(p.directIntegration ? QStringLiteral("direct")
+                                        : QStringLiteral("by the ODE "
+                                                         "system"));
+    return out;
+}
 
 long long stepsForTime(double time, double dt)
 {
@@ -310,10 +365,16 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
     report.energyStart = world.diagnostics().total;
 
     QElapsedTimer clock;
+    if (options.profile) {
+        report.profile.emplace();
+    }
     clock.start();
     for (long long step = 0; step <= steps; ++step) {
         if (step > 0) {
             world.step();
+            if (options.profile) {
+                addProfile(*report.profile, world.profile());
+            }
         }
         // The world stops itself on a non-finite state or runaway energy, with a diagnosis.
         if (const auto& diverged = world.divergence()) {

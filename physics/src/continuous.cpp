@@ -18,6 +18,7 @@
 #include "rigidlab/physics/world.h"
 
 #include "broad_phase.h"
+#include "world_scratch.h"
 
 #include <algorithm>
 #include <cmath>
@@ -80,24 +81,33 @@ void World::addSweptPairs(std::vector<std::pair<int, int>>& pairs)
     }
     if (fast.empty())
         return;
-    // Few bodies are fast: test each one's grown box against every other box.
+    // Few bodies are fast: test each one's grown box against the boxes near it (the broad
+    // phase's tree holds every slow body's box) and against the other fast bodies' grown boxes.
     const size_t before = pairs.size();
     const double margin = m_contactSettings.margin;
+    const Scratch& s = *m_scratch;
     for (int f : fast) {
         const Body& a = m_bodies[static_cast<size_t>(f)];
-        const Aabb box =
-            computeAabb(a.shape, a.transform(), margin + m_sweep[static_cast<size_t>(f)]);
-        for (size_t j = 0; j < m_bodies.size(); ++j) {
-            const Body& b = m_bodies[j];
-            if (static_cast<int>(j) == f || !b.collide || (!a.isDynamic() && !b.isDynamic()))
-                continue;
-            if (!box.overlaps(computeAabb(b.shape, b.transform(), margin + m_sweep[j])))
-                continue;
-            const std::pair<int, int> p = std::minmax(f, static_cast<int>(j));
+        const Aabb box = computeAabb(a.shape, s.xf[static_cast<size_t>(f)],
+                                     margin + m_sweep[static_cast<size_t>(f)]);
+        auto consider = [&](int j) {
+            const Body& b = m_bodies[static_cast<size_t>(j)];
+            if (j == f || !b.collide || (!a.isDynamic() && !b.isDynamic()))
+                return;
+            const double sweep = m_sweep[static_cast<size_t>(j)];
+            const Aabb other =
+                sweep > 0 ? computeAabb(b.shape, s.xf[static_cast<size_t>(j)], margin + sweep)
+                          : s.broadPhase.box(j);
+            if (!box.overlaps(other))
+                return;
+            const std::pair<int, int> p = std::minmax(f, j);
             if (std::binary_search(m_jointPairs.begin(), m_jointPairs.end(), p))
-                continue;
+                return;
             pairs.push_back(p);
-        }
+        };
+        s.broadPhase.query(box, consider);
+        for (int g : fast)
+            consider(g);
     }
     if (pairs.size() == before)
         return;

@@ -167,6 +167,8 @@ void World::step()
     // What this step needs (world_step.cpp): contacts only if some two bodies can collide,
     // the direct integration when only contacts couple the bodies, islands when sleeping.
     m_plan = planStep();
+    if (!m_plan.sleep)
+        m_profile.awake = m_plan.dynamic;
     if (m_plan.collide) {
         // Velocities at the start of the step, to time bounces within it.
         Scratch& s = *m_scratch;

@@ -63,6 +63,7 @@ World::Plan World::planStep() const
     plan.direct = m_def.integrator == IntegratorKind::SymplecticEuler && m_springs.empty() &&
                   m_joints.empty() && m_def.gravitation == 0.0;
     plan.sleep = m_def.sleep.value_or(dynamic >= kLargeSceneBodies);
+    plan.dynamic = dynamic;
     return plan;
 }
 

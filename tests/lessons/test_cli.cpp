@@ -86,6 +86,8 @@ private slots:
     void runStopsOnNonFinite();
     void satOutput();
     void satArray();
+    void runProfile();
+    void bench();
 };
 
 void TestCli::help()
@@ -437,6 +439,59 @@ void TestCli::satArray()
              QStringLiteral("error: ") + bad +
                  QStringLiteral(": a.vertices: a polygon needs 3 to 64 vertices, got 2\n"));
     QVERIFY(failed.out.isEmpty());
+}
+
+// run --profile: one row per stage; a pendulum leaves out the collision stages, a box stack
+// runs them all but the islands (a small scene does not sleep).
+void TestCli::runProfile()
+{
+    const CliRun pendulum =
+        runCli({QStringLiteral("run"), scene("pendulum"), QStringLiteral("--steps"),
+                QStringLiteral("50"), QStringLiteral("--profile")});
+    QCOMPARE(pendulum.exitCode, 0);
+    const QString out = QString::fromUtf8(pendulum.out);
+    for (const char* stage : {"broad phase", "narrow phase", "contact solve"})
+        QVERIFY2(out.contains(QString::fromLatin1(stage).leftJustified(16) +
+                              QStringLiteral(" left out")),
+                 qPrintable(out));
+    QVERIFY(out.contains(QStringLiteral("forces  ")));
+    QVERIFY(!out.contains(QStringLiteral("forces           left out")));
+
+    const CliRun stack =
+        runCli({QStringLiteral("run"), scene("box_stack"), QStringLiteral("--steps"),
+                QStringLiteral("50"), QStringLiteral("--profile")});
+    QCOMPARE(stack.exitCode, 0);
+    const QString stackOut = QString::fromUtf8(stack.out);
+    QVERIFY2(!stackOut.contains(QStringLiteral("contact solve    left out")), qPrintable(stackOut));
+    QVERIFY(stackOut.contains(QStringLiteral("islands          left out")));
+}
+
+// bench: the table's columns for RigidLab alone; --export writes a scene that validates.
+void TestCli::bench()
+{
+    const CliRun run =
+        runCli({QStringLiteral("bench"), QStringLiteral("--scene"), QStringLiteral("stack-12"),
+                QStringLiteral("--steps"), QStringLiteral("60"), QStringLiteral("--runs"),
+                QStringLiteral("1")});
+    QCOMPARE(run.exitCode, 0);
+    const QString out = QString::fromUtf8(run.out);
+    QVERIFY2(out.startsWith(QStringLiteral("engine")), qPrintable(out));
+    QVERIFY(out.contains(QStringLiteral("RigidLab    stack-12     12")));
+    QVERIFY(out.contains(QStringLiteral("0 moved")));
+
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("pyramid.json"));
+    QCOMPARE(runCli({QStringLiteral("bench"), QStringLiteral("--scene"),
+                     QStringLiteral("pyramid-20"), QStringLiteral("--export"), path})
+                 .exitCode,
+             0);
+    const CliRun validate = runCli({QStringLiteral("validate"), path});
+    QCOMPARE(validate.exitCode, 0);
+    QVERIFY2(validate.out.contains("211 bodies"), validate.out.constData());
+
+    QCOMPARE(runCli({QStringLiteral("bench"), QStringLiteral("--scene"), QStringLiteral("nope")})
+                 .exitCode,
+             2);
 }
 
 QTEST_GUILESS_MAIN(TestCli)

@@ -454,4 +454,5 @@ void TestLessons::formatDocumentExampleLoads()
     QCOMPARE(result.scene.bodies.size(), size_t{4});
     QCOMPARE(result.scene.springs.size(), size_t{1});
     QCOMPARE(result.scene.joints.size(), size_t{1});
+    QCOMPARE(result.scene.world.sleep, std::optional<bool>(true));
 }

@@ -14,6 +14,7 @@
 #include "rigidlab/lessons/scene.h"
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
+#include "rigidlab/physics/profile.h"
 
 #include <QString>
 
@@ -36,6 +37,7 @@ struct RunOptions {
     QString tracePath;       ///< empty: no trace
     QString diagnosticsPath; ///< empty: no diagnostics
     long long every = 1;     ///< write every this many steps (>= 1)
+    bool profile = false;    ///< add up each stage's time over the run (RunReport::profile)
 };
 
 enum class RunStatus {
@@ -57,9 +59,15 @@ struct RunReport {
     double collisionLoss = 0; ///< kinetic energy taken by contacts over the run [J]
     physics::IntegratorKind integrator = physics::IntegratorKind::SymplecticEuler;
     physics::SolverKind solver = physics::SolverKind::SequentialImpulse;
+    /// With RunOptions::profile: each stage's time and ran flag summed over the steps [ms]
+    /// (ran: the stage ran at least once), the counts of the last step.
+    std::optional<physics::StepProfile> profile;
 
     /// One paragraph for people: steps, times, integrator, solver, energy drift.
     QString summary(const QString& sourceName) const;
+    /// The profile as a table: each stage's mean time per step and share of the step, or
+    /// "left out" for a stage that never ran. Empty without a profile.
+    QString profileTable() const;
 };
 
 /// The number of steps of dt that cover `time` (rounded up; a count within 1e-9 of a whole

@@ -150,6 +150,7 @@ private:
         bool direct = false;  ///< symplectic Euler on the bodies, without the ODE state
         bool sleep = false;   ///< islands and sleeping
         bool anyAwake = true; ///< some dynamic body is awake (after wakeIslands())
+        int dynamic = 0;      ///< dynamic bodies
     };
     Plan planStep() const;
     /// This step's placement of every body, recomputed only for bodies that moved.
