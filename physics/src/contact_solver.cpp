@@ -56,6 +56,7 @@ std::optional<SolverKind> solverFromName(std::string_view name)
 
 void ContactSolver::begin(std::vector<Contact>& contacts, std::vector<Body>& bodies,
                           const ContactSettings& settings, double dt,
+                          const std::vector<Vec2>& startPosition,
                           const std::vector<Vec2>& startVelocity,
                           const std::vector<double>& startAngularVelocity)
 {
@@ -63,6 +64,7 @@ void ContactSolver::begin(std::vector<Contact>& contacts, std::vector<Body>& bod
     m_bodies = &bodies;
     m_settings = &settings;
     m_dt = dt;
+    m_startPosition = &startPosition;
     m_startVelocity = &startVelocity;
     m_startAngularVelocity = &startAngularVelocity;
     m_constraints.clear();
@@ -127,21 +129,18 @@ void ContactSolver::prepare(double threshold)
         c.invIB = b.isActive() ? b.invInertia : 0.0;
         c.friction = ct.friction;
         c.count = ct.manifold.pointCount;
-        // The manifold was found where the bodies stood at the start of the step; they have
-        // moved since. Its points and normal are placed again on the bodies as they are now,
-        // so that the lever arms belong to the same instant as the centres (else a
-        // frictionless ball would pick up spin). The separations stay those of the start,
-        // which time the contact within the step.
-        Transform xfA, xfB;
-        xfA.q = rotation(ct.a);
-        xfA.p = a.position - xfA.q.apply(a.localCenter);
-        xfB.q = rotation(ct.b);
-        xfB.p = b.position - xfB.q.apply(b.localCenter);
+        // The velocities are solved on the geometry the narrow phase found at the start of
+        // the step: its normal and points, with lever arms from the centres of mass of that
+        // instant (as Box2D does). Placed again on the bodies as they stand after the
+        // integration, a fast pair's normal would turn within the step, and a contact that was
+        // barely separating could look as if it separated fast: pushing on it hands out
+        // energy (an elastic gas heated up).
+        const std::vector<Vec2>& x0 = *m_startPosition;
+        c.normal = ct.manifold.normal;
         Vec2 points[2];
-        for (int i = 0; i < c.count; ++i) {
-            double sepNow;
-            evaluateManifoldPoint(ct.manifold, i, xfA, xfB, c.normal, points[i], sepNow);
-        }
+        for (int i = 0; i < c.count; ++i)
+            points[i] = ct.manifold.points[static_cast<size_t>(i)].point;
+        const Vec2 centreA = x0[static_cast<size_t>(ct.a)], centreB = x0[static_cast<size_t>(ct.b)];
         c.tangent = Vec2(c.normal.y(), -c.normal.x());
         const double mA = c.invMassA, iA = c.invIA, mB = c.invMassB, iB = c.invIB;
         for (int i = 0; i < c.count; ++i) {
@@ -149,8 +148,8 @@ void ContactSolver::prepare(double threshold)
             Point& p = c.p[i];
             p.normalImpulse = ct.normalImpulse[static_cast<size_t>(i)];
             p.tangentImpulse = ct.tangentImpulse[static_cast<size_t>(i)];
-            p.rA = points[i] - a.position;
-            p.rB = points[i] - b.position;
+            p.rA = points[i] - centreA;
+            p.rB = points[i] - centreB;
             p.rnA = cross(p.rA, c.normal);
             p.rnB = cross(p.rB, c.normal);
             const double kn = mA + mB + iA * p.rnA * p.rnA + iB * p.rnB * p.rnB;

@@ -17,10 +17,12 @@ namespace rigidlab::physics {
 class ContactSolver {
 public:
     /// Takes this step's contacts. Only contacts with an awake dynamic body are solved.
-    /// startVelocity / startAngularVelocity: each body's velocities at the start of the step,
-    /// before forces, so that a bounce can be timed within the step.
+    /// startPosition: each body's centre of mass where the narrow phase found the contacts;
+    /// startVelocity / startAngularVelocity: its velocities then, before forces, so that a
+    /// bounce can be timed within the step.
     void begin(std::vector<Contact>& contacts, std::vector<Body>& bodies,
-               const ContactSettings& settings, double dt, const std::vector<Vec2>& startVelocity,
+               const ContactSettings& settings, double dt, const std::vector<Vec2>& startPosition,
+               const std::vector<Vec2>& startVelocity,
                const std::vector<double>& startAngularVelocity);
 
     /// Seed impulse: one impulse per contact point, in order, with the full denominator
@@ -103,6 +105,7 @@ private:
     std::vector<Body>* m_bodies = nullptr;
     const ContactSettings* m_settings = nullptr;
     double m_dt = 0;
+    const std::vector<Vec2>* m_startPosition = nullptr;
     const std::vector<Vec2>* m_startVelocity = nullptr;
     const std::vector<double>* m_startAngularVelocity = nullptr;
 

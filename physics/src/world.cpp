@@ -360,7 +360,7 @@ void World::solveContacts()
     const double before = kineticEnergy(m_bodies);
 
     ContactSolver& solver = s.solver;
-    solver.begin(m_contacts, m_bodies, m_contactSettings, h, s.velocityAtStart,
+    solver.begin(m_contacts, m_bodies, m_contactSettings, h, s.xfPosition, s.velocityAtStart,
                  s.angularVelocityAtStart);
     if (m_def.solver == SolverKind::SeedImpulse)
         solver.solveSeed();
