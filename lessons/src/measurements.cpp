@@ -243,7 +243,8 @@ void Measurements::observe(const physics::World& world)
         const double vy = b.velocity.y();
         const double y = b.position.y();
         Peak& peak = m_peaks[i];
-        if (m_lastVelocity[i].y() < 0 && vy > kBounceSpeed) {
+        if (m_lastVelocity[i].y() < 0 && vy > kBounceSpeed &&
+            m_bounces[i].size() < kMaxBouncesPerBody) {
             m_bounces[i].push_back(t);
             m_bounceY[i].push_back(y);
             peak = {true, t, y, y};
@@ -274,7 +275,8 @@ void Measurements::observe(const physics::World& world)
         if (std::binary_search(m_touching.begin(), m_touching.end(), std::pair(c.a, c.b))) {
             continue;
         }
-        m_collisions.push_back(collisionEvent(world, c));
+        if (m_collisions.size() < kMaxCollisions)
+            m_collisions.push_back(collisionEvent(world, c));
     }
     m_touching = std::move(touching);
 

@@ -99,6 +99,7 @@ private slots:
     void judgeMessages_data();
     void judgeMessages();
     void rewindForgetsLaterEvents();
+    void measurementsKeepTheFirstEvents();
     void collisionPredictionsOfOffCentreHit();
     void shippedQuestionsHaveTheirTextbookAnswers_data();
     void shippedQuestionsHaveTheirTextbookAnswers();

@@ -181,6 +181,55 @@ void TestLesson::rewindForgetsLaterEvents()
     QCOMPARE(run.measurements[0].bounces(ball).size(), straight.size());
 }
 
+void TestLesson::measurementsKeepTheFirstEvents()
+{
+    // Two elastic balls in a vertical tube without gravity, 20 m/s apart: a collision every
+    // few hundredths of a second, and a bounce of the lower ball on the floor as often. The
+    // logs stop at their caps, keeping the first events, and the run goes on.
+    lessons::Scene scene;
+    scene.world.gravity = physics::Vec2::Zero();
+    scene.world.dt = 0.005;
+    scene.world.restitution = 1.0;
+    scene.world.friction = 0.0;
+    const auto wall = [&](double y) {
+        physics::BodyDef w;
+        w.type = physics::BodyType::Static;
+        w.shape = physics::makePolygonShape(physics::makeBox(1.0, 0.2));
+        w.position = physics::Vec2(0, y);
+        scene.bodies.push_back(w);
+    };
+    wall(-0.6);
+    wall(0.6);
+    const auto ball = [&](const char* name, double y, double vy) {
+        physics::BodyDef b;
+        b.name = name;
+        b.shape = physics::makeCircleShape(0.1);
+        b.position = physics::Vec2(0, y);
+        b.velocity = physics::Vec2(0, vy);
+        scene.bodies.push_back(b);
+    };
+    ball("low", -0.2, 10.0);
+    ball("high", 0.2, -10.0);
+    physics::World world = lessons::buildWorld(scene);
+    lessons::Measurements m;
+    m.reset(world, {});
+    const physics::BodyId low = 2;
+    std::optional<lessons::CollisionEvent> first;
+    for (int i = 0; i < 24000; ++i) {
+        world.step();
+        m.observe(world);
+        if (!first && !m.collisions().empty())
+            first = m.collisions().front();
+    }
+    QVERIFY(first);
+    QCOMPARE(m.collisions().size(), lessons::Measurements::kMaxCollisions);
+    QCOMPARE(m.collisions().front().t, first->t);
+    QCOMPARE(m.bounces(low).size(), lessons::Measurements::kMaxBouncesPerBody);
+    QVERIFY(m.apexes(low).size() <= lessons::Measurements::kMaxBouncesPerBody);
+    QVERIFY(m.apexes(low).size() >= lessons::Measurements::kMaxBouncesPerBody - 1);
+    QVERIFY(world.time() > 100.0);
+}
+
 void TestLesson::collisionPredictionsOfOffCentreHit()
 {
     const lessons::Lesson lesson = shippedLesson("restitution");

@@ -38,6 +38,12 @@ struct CollisionEvent {
 
 class Measurements {
 public:
+    /// The events kept: the first ones, which lessons ask about (the n-th apex, the first
+    /// collision). Later ones are not stored, so that a long run (a gas has hundreds of
+    /// collisions a second) does not grow without bound.
+    static constexpr std::size_t kMaxCollisions = 1000;
+    static constexpr std::size_t kMaxBouncesPerBody = 1000;
+
     /// Starts over with this world (at its current time), reading the questions' measures.
     void reset(const physics::World& world, const std::vector<Measure>& watched);
     /// After every step.
