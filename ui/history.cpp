@@ -17,14 +17,34 @@ void History::reset(const physics::World& start)
     addSnapshot(start);
 }
 
+std::size_t History::snapshotBytes(const physics::World& world)
+{
+    // Every heap block costs its size rounded up to 16 bytes plus a 16-byte header (glibc).
+    const auto block = [](std::size_t bytes) { return bytes ? ((bytes + 15) / 16 + 1) * 16 : 0; };
+    std::size_t bytes = sizeof(physics::World) + 4096; // the world, its integrator, its scratch
+    bytes += block(world.bodies().capacity() * sizeof(physics::Body));
+    for (const physics::Body& b : world.bodies()) {
+        bytes += block(b.shape.polygon.vertices.size() * sizeof(physics::Vec2));
+        bytes += block(b.shape.polygon.normals.size() * sizeof(physics::Vec2));
+        bytes += b.name.size() > 15 ? block(b.name.size() + 1) : 0;
+    }
+    bytes += 3 * block(world.bodies().size() * sizeof(double)); // moving, slot, sweep
+    bytes += block(world.contacts().size() * sizeof(physics::Contact));
+    bytes += block(world.springs().size() * sizeof(physics::SpringDef));
+    bytes += block(world.joints().size() * sizeof(physics::PinJointDef));
+    return bytes;
+}
+
 std::size_t History::snapshotLimit(const physics::World& world) const
 {
-    // A rough size of one copy: bodies with their shapes, and contacts.
-    std::size_t bytes = 512;
-    for (const physics::Body& b : world.bodies())
-        bytes += sizeof(physics::Body) + 32 * b.shape.polygon.vertices.size();
-    bytes += world.contacts().size() * sizeof(physics::Contact);
-    return std::clamp<std::size_t>(m_budget / bytes, 4, 2000);
+    return std::clamp<std::size_t>(m_budget / snapshotBytes(world), 4, 2000);
+}
+
+void History::setBudget(std::size_t bytes)
+{
+    m_budget = bytes;
+    if (!m_snapshots.empty())
+        trim(m_snapshots.back().world);
 }
 
 void History::addSnapshot(const physics::World& world)
@@ -32,6 +52,11 @@ void History::addSnapshot(const physics::World& world)
     if (!m_snapshots.empty() && m_snapshots.back().step >= world.stepCount())
         return;
     m_snapshots.push_back({world.stepCount(), world});
+    trim(world);
+}
+
+void History::trim(const physics::World& world)
+{
     const std::size_t limit = snapshotLimit(world);
     while (m_snapshots.size() > limit) {
         m_snapshots.pop_front();
@@ -90,6 +115,9 @@ void applyInput(physics::World& world, const UserInput& input)
 {
     if (input.body < 0 || input.body >= static_cast<physics::BodyId>(world.bodies().size()))
         return;
+    // The pulled body wakes if it was asleep (and its island with it, at this step), live and
+    // in a replay alike, whatever the force.
+    world.wakeBody(input.body);
     physics::Body& b = world.body(input.body);
     b.force += input.force;
     b.torque += input.torque;

@@ -40,6 +40,12 @@ public:
     /// The input logged for the step that leads to `step + 1`, or nullptr.
     const UserInput* inputFor(long long step) const;
     std::size_t snapshotCount() const { return m_snapshots.size(); }
+    /// The most the snapshots may take [bytes]; the oldest go first when it shrinks.
+    void setBudget(std::size_t bytes);
+    std::size_t budget() const { return m_budget; }
+    /// What one snapshot of this world takes, heap included [bytes] (an estimate from the
+    /// sizes of its parts; a test compares it with the resident memory that copies take).
+    static std::size_t snapshotBytes(const physics::World& world);
 
 private:
     struct Snapshot {
@@ -47,6 +53,7 @@ private:
         physics::World world;
     };
     void addSnapshot(const physics::World& world);
+    void trim(const physics::World& world);
     std::size_t snapshotLimit(const physics::World& world) const;
 
     int m_every;
