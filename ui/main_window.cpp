@@ -465,10 +465,21 @@ void MainWindow::updateStatus()
 {
     const physics::World& w = m_controller->world();
     m_statusTime->setText(tr("t = %1 s").arg(w.time(), 0, 'f', 3));
-    m_statusRate->setText(tr("%1 steps/s · frame %2 ms (physics %3 ms)")
+    // The last step's stages that ran, with their times (physics/profile.h).
+    QStringList stages;
+    const physics::StepProfile& profile = w.profile();
+    for (int k = 0; k < physics::kStageCount; ++k)
+        if (profile.ran[k])
+            stages << tr("%1 %2")
+                          .arg(QString::fromLatin1(
+                              physics::stageName(static_cast<physics::Stage>(k))))
+                          .arg(profile.ms[k], 0, 'f', 2);
+    m_statusRate->setText(tr("%1 steps/s · frame %2 ms (physics %3 ms) · step %4 ms: %5")
                               .arg(m_controller->stepsPerSecond(), 0, 'f', 0)
                               .arg(m_controller->frameMilliseconds(), 0, 'f', 1)
-                              .arg(m_controller->physicsMilliseconds(), 0, 'f', 1));
+                              .arg(m_controller->physicsMilliseconds(), 0, 'f', 1)
+                              .arg(profile.total, 0, 'f', 2)
+                              .arg(stages.join(QStringLiteral(", "))));
     const double lost = w.diagnostics().collisionLoss;
     QString drift = tr("energy change %1 %").arg(m_controller->driftPercent(), 0, 'g', 3);
     if (std::abs(lost) > 1e-9)

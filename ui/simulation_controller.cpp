@@ -232,7 +232,8 @@ void SimulationController::advanceFrame()
     QElapsedTimer physicsClock;
     physicsClock.start();
     // Nanoseconds: restart() would round to whole milliseconds and lose ~3% of the time.
-    const double wall = std::min(m_wall.nsecsElapsed() * 1e-9, kMaxFrameSeconds);
+    const double unclampedWall = m_wall.nsecsElapsed() * 1e-9;
+    const double wall = std::min(unclampedWall, kMaxFrameSeconds);
     m_wall.start();
     const double h = m_world.def().dt;
     bool slow = false;
@@ -250,12 +251,25 @@ void SimulationController::advanceFrame()
     }
     m_physicsMs = physicsClock.nsecsElapsed() * 1e-6;
     m_frameMs = wall * 1e3;
+    if (m_measureFrames > 0) {
+        m_measuredFrameMs.push_back(unclampedWall * 1e3);
+        m_measuredPhysicsMs.push_back(m_physicsMs);
+        if (--m_measureFrames == 0)
+            emit framesMeasured(m_measuredFrameMs, m_measuredPhysicsMs);
+    }
     m_slow = slow;
     if (m_rateClock.elapsed() >= 1000) {
         m_stepsPerSecond = m_stepsThisSecond * 1000.0 / m_rateClock.restart();
         m_stepsThisSecond = 0;
     }
     emit worldChanged();
+}
+
+void SimulationController::measureFrames(int frames)
+{
+    m_measureFrames = frames;
+    m_measuredFrameMs.clear();
+    m_measuredPhysicsMs.clear();
 }
 
 void SimulationController::stepForward()

@@ -68,6 +68,10 @@ public:
     /// Wall time of the last frame, and the part of it spent in physics [ms].
     double frameMilliseconds() const { return m_frameMs; }
     double physicsMilliseconds() const { return m_physicsMs; }
+    /// Records the wall time of the next `frames` frames (from one frame to the next, drawing
+    /// included) and the physics part of each, then emits framesMeasured (rigidlab
+    /// --measure-frames).
+    void measureFrames(int frames);
     /// Relative energy drift since the start [%].
     double driftPercent() const;
 
@@ -76,6 +80,8 @@ public:
 
     // Time travel.
     long long earliestStep() const { return m_history.earliest(); }
+    /// The most the time-travel snapshots may take [bytes] (96 MiB unless set).
+    void setHistoryBudget(std::size_t bytes) { m_history.setBudget(bytes); }
     long long latestStep() const { return m_history.latest(); }
     long long currentStep() const { return m_world.stepCount(); }
 
@@ -127,6 +133,8 @@ signals:
     void rewound(double t);
     /// Samples were cleared (new scene, reset).
     void samplesCleared();
+    /// measureFrames() is done: each frame's wall time and physics time [ms].
+    void framesMeasured(const std::vector<double>& frameMs, const std::vector<double>& physicsMs);
 
 private:
     void doStep();
@@ -162,6 +170,8 @@ private:
     bool m_running = false;
     bool m_slow = false;
     double m_frameMs = 0.0, m_physicsMs = 0.0, m_stepsPerSecond = 0.0;
+    int m_measureFrames = 0; ///< frames still to record, see measureFrames()
+    std::vector<double> m_measuredFrameMs, m_measuredPhysicsMs;
     long long m_stepsThisSecond = 0;
     QElapsedTimer m_rateClock;
 
