@@ -203,7 +203,7 @@ CollisionEvent Measurements::collisionEvent(const physics::World& world,
     const double vn = (vB - vA).dot(n);
     // The sequential-impulse solver lets slow approaches rest instead of bouncing.
     const bool bounces = world.def().solver == physics::SolverKind::SeedImpulse ||
-                         vn < -physics::ContactSettings{}.restitutionThreshold;
+                         vn < -physics::restitutionThreshold(world.def(), world.contactSettings());
     const double restitution = bounces ? c.restitution : 0.0;
     const double rnA = physics::cross(rA, n);
     const double rnB = physics::cross(rB, n);

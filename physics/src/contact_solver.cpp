@@ -108,7 +108,7 @@ ContactSolver::normalVelocity(const Constraint& c, int i, const Velocity& a, con
     return (b.v - a.v).dot(c.normal) + b.w * p.rnB - a.w * p.rnA;
 }
 
-void ContactSolver::prepare(double threshold)
+void ContactSolver::prepare(double impact, double resting)
 {
     std::vector<Contact>& contacts = *m_contacts;
     const std::vector<Body>& bodies = *m_bodies;
@@ -170,6 +170,10 @@ void ContactSolver::prepare(double threshold)
             p.vnPrepared = vn;
             p.bounces = false;
             p.impact = 0.0;
+            // A point that pushed in the step before is resting (its impulse was carried over):
+            // it keeps the larger threshold, so that a stack does not hop on the solver's
+            // leftovers; a new contact bounces from the small one.
+            const double threshold = p.normalImpulse > 0 ? std::max(impact, resting) : impact;
             if (p.closes && vn < -threshold) {
                 double bounce = -ct.restitution * vn;
                 double fraction = 0.0;
@@ -314,9 +318,9 @@ void ContactSolver::warmStart()
     c.p[1].normalImpulse = x2;
 }
 
-void ContactSolver::solveSequential(int iterations, bool warm)
+void ContactSolver::solveSequential(int iterations, bool warm, double threshold)
 {
-    prepare(m_settings->restitutionThreshold);
+    prepare(threshold, m_settings->restitutionThreshold);
     if (warm) {
         warmStart();
     } else {
@@ -353,7 +357,7 @@ void ContactSolver::solveSequential(int iterations, bool warm)
 void ContactSolver::solveSeed()
 {
     // The seed has no threshold: every approaching contact gets its impulse, once, in order.
-    prepare(0.0);
+    prepare(0.0, 0.0);
     for (Constraint& c : m_constraints) {
         for (Point& p : c.p)
             p.normalImpulse = p.tangentImpulse = 0.0;

@@ -31,7 +31,9 @@ public:
 
     /// Sequential impulse: warm start with last step's impulses, then iterate, accumulating
     /// and clamping normal (>= 0) and friction (|t| <= mu n) impulses.
-    void solveSequential(int iterations, bool warmStart);
+    /// threshold: a new contact approaching slower than this rests instead of bouncing [m/s];
+    /// one that pushed in the step before rests below the settings' restitutionThreshold.
+    void solveSequential(int iterations, bool warmStart, double threshold);
 
     /// Both solvers end by writing the velocities back to the bodies and the accumulated
     /// impulses to the contacts.
@@ -87,8 +89,9 @@ private:
         /// The 2x2 normal mass matrix K and its inverse (block solver).
         double k11 = 0, k12 = 0, k22 = 0, m11 = 0, m12 = 0, m22 = 0;
     };
-    /// threshold: approaches slower than this do not bounce [m/s].
-    void prepare(double threshold);
+    /// Approaches slower than `impact` do not bounce [m/s], nor, at a point that pushed in the
+    /// step before (a resting contact), slower than `resting`.
+    void prepare(double impact, double resting);
     void warmStart();
     static void solveFrictionPoint(Constraint& c, int i, Velocity& a, Velocity& b);
     static void solveNormalPoint(Constraint& c, int i, Velocity& a, Velocity& b);

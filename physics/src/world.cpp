@@ -344,6 +344,13 @@ void World::findContacts()
     m_profile.contacts = static_cast<int>(m_contacts.size());
 }
 
+double restitutionThreshold(const WorldDef& def, const ContactSettings& settings)
+{
+    constexpr double kFloor = 0.01; // [m/s]
+    return std::min(settings.restitutionThreshold,
+                    std::max(kFloor, 2.0 * def.gravity.norm() * def.dt));
+}
+
 void World::solveContacts()
 {
     if (m_contacts.empty())
@@ -365,7 +372,8 @@ void World::solveContacts()
     if (m_def.solver == SolverKind::SeedImpulse)
         solver.solveSeed();
     else
-        solver.solveSequential(m_def.iterations, true);
+        solver.solveSequential(m_def.iterations, true,
+                               restitutionThreshold(m_def, m_contactSettings));
 
     // A resting contact's impulse changes the velocity for the whole step, so the position
     // moves by dt times the change (for symplectic Euler exactly Box2D's order: solve the

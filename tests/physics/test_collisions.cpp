@@ -42,6 +42,7 @@ private slots:
     void momentumConservedInFreeCollisions();
     void offCentreHitUsesFullDenominator_data();
     void offCentreHitUsesFullDenominator();
+    void slowElasticCollision();
     void threeBallHitDoesNotHeat();
     void elasticGasStaysBounded();
     void kinematicAndStaticBodies_data();
@@ -195,6 +196,26 @@ void TestCollisions::momentumConservedInFreeCollisions_data()
     QTest::addColumn<SolverKind>("solver");
     QTest::newRow("seed") << SolverKind::SeedImpulse;
     QTest::newRow("sequential") << SolverKind::SequentialImpulse;
+}
+
+// Equal balls closing at 0.2 m/s without gravity, e = 1: far below the 0.5 m/s that keeps
+// resting contacts from hopping, yet a new contact, so they swap velocities as in 1D elastic
+// collisions (both solvers), to 1e-9 m/s.
+void TestCollisions::slowElasticCollision()
+{
+    for (SolverKind solver : {SolverKind::SeedImpulse, SolverKind::SequentialImpulse}) {
+        WorldDef def = rigidlab::test::quietWorldDef(IntegratorKind::SymplecticEuler, 1e-3);
+        def.solver = solver;
+        def.restitution = 1.0;
+        def.friction = 0.0;
+        World world(def);
+        const BodyId a = world.addBody(rigidlab::test::circleBody(0.1, {-0.3, 0.0}, {0.1, 0.0}));
+        const BodyId b = world.addBody(rigidlab::test::circleBody(0.1, {0.3, 0.0}, {-0.1, 0.0}));
+        for (int i = 0; i < 3000; ++i)
+            world.step();
+        QVERIFY(std::abs(world.body(a).velocity.x() + 0.1) < 1e-9);
+        QVERIFY(std::abs(world.body(b).velocity.x() - 0.1) < 1e-9);
+    }
 }
 
 // A ball driven into a second one while it still overlaps a third that is drifting away:

@@ -47,8 +47,16 @@ struct ContactSettings {
     double baumgarte = 0.2;     ///< fraction of penetration removed per position pass
     double maxCorrection = 0.2; ///< largest position correction per pass [m]
     int positionIterations = 3;
-    double restitutionThreshold = 0.5; ///< slower approaches do not bounce [m/s]
+    /// Approaches slower than this never bounce [m/s] (sequential impulses; see below).
+    double restitutionThreshold = 0.5;
 };
+
+/// The approach speed below which a new contact of the sequential-impulse solver rests
+/// instead of bouncing [m/s]: what gravity adds in two steps, 2 |g| dt, but at least 0.01 m/s
+/// and at most the settings' threshold. A contact that already pushed in the step before
+/// (resting) keeps the settings' threshold. So without gravity a slow elastic collision is
+/// elastic (a fixed 0.5 m/s, as in games, made a slow gas lose its energy).
+double restitutionThreshold(const WorldDef& def, const ContactSettings& settings);
 
 class World {
 public:
@@ -87,6 +95,7 @@ public:
     /// Sets the default friction coefficient and gives it to every body.
     void setFriction(double mu);
     ContactSettings& contactSettings() { return m_contactSettings; }
+    const ContactSettings& contactSettings() const { return m_contactSettings; }
     DivergenceSettings& divergenceSettings() { return m_divergenceSettings; }
     /// The integrator in use (its error estimate, its substeps).
     const Integrator& integrator() const { return *m_integrator; }
