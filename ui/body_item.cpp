@@ -24,6 +24,7 @@ BodyItem::BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fil
         const auto& c = shape.circle;
         const QPointF centre(c.center.x(), c.center.y());
         m_path.addEllipse(centre, c.radius, c.radius);
+        m_circle = QRectF(centre.x() - c.radius, centre.y() - c.radius, 2 * c.radius, 2 * c.radius);
         m_radiusLine = QLineF(centre, centre + QPointF(c.radius, 0));
     } else {
         QPolygonF poly;
@@ -31,6 +32,7 @@ BodyItem::BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fil
             poly << QPointF(v.x(), v.y());
         m_path.addPolygon(poly);
         m_path.closeSubpath();
+        m_polygon = poly;
     }
     setAcceptHoverEvents(false);
     setZValue(kind == 1 ? 0 : 1);
@@ -92,7 +94,10 @@ void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
         if (m_kind == 2)
             fill.setAlpha(120); // kinematic: see-through
         painter->setBrush(fill);
-        painter->drawPath(m_path);
+        if (m_polygon.isEmpty())
+            painter->drawEllipse(m_circle);
+        else
+            painter->drawPolygon(m_polygon);
     }
     if (!m_radiusLine.isNull()) {
         QPen line(m_fill.darker(220), 2.0);

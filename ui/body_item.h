@@ -7,6 +7,7 @@
 #include <QColor>
 #include <QGraphicsItem>
 #include <QPainterPath>
+#include <QPolygonF>
 
 namespace rigidlab::ui {
 
@@ -31,6 +32,8 @@ private:
     int m_kind;
     QColor m_fill;
     QPainterPath m_path;
+    QPolygonF m_polygon; ///< polygons: the outline, drawn as a polygon (far cheaper than a path)
+    QRectF m_circle;     ///< circles: the bounding square, drawn as an ellipse
     QLineF m_radiusLine; ///< circles: a radius, so that rotation shows
     bool m_selected = false;
 };

@@ -111,8 +111,13 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
     connect(m_plot, &QWidget::customContextMenuRequested, this, &PlotWidget::showContextMenu);
 
     m_timer->setInterval(kRefreshIntervalMs);
+    m_timer->setTimerType(Qt::PreciseTimer);
     connect(m_timer, &QTimer::timeout, this, &PlotWidget::drain);
-    m_timer->start();
+    // The plots take turns: each starts a third of the interval after the one before, so that
+    // their replots fall in different frames of the view instead of all in one.
+    static int instances = 0;
+    const int phase = (instances++ % 3) * (kRefreshIntervalMs / 3);
+    QTimer::singleShot(phase, m_timer, qOverload<>(&QTimer::start));
 }
 
 PlotWidget::~PlotWidget() = default;
