@@ -98,6 +98,10 @@ int main(int argc, char** argv)
         }
         file = a;
     }
+    if (measureFrames > 0 && file.isEmpty()) {
+        QTextStream(stderr) << "rigidlab: --measure-frames needs a scene to run\n" << usage;
+        return 2;
+    }
 
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RigidLab"));
@@ -126,7 +130,7 @@ int main(int argc, char** argv)
     if (window.lastError().isEmpty() && !window.lessonPlayer().lesson())
         window.controller().setRunning(true);
     if (measureFrames > 0) {
-        if (file.isEmpty() || !window.lastError().isEmpty()) {
+        if (!window.lastError().isEmpty()) {
             QTextStream(stderr) << "rigidlab: --measure-frames needs a scene that opens\n";
             return 2;
         }

@@ -23,7 +23,9 @@
 #include <QLineEdit>
 #include <QMenuBar>
 #include <QPointer>
+#include <QProcess>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStatusBar>
@@ -424,6 +426,60 @@ private slots:
         std::signal(SIGXFSZ, oldHandler);
         QVERIFY2(message.startsWith(QStringLiteral("Settings not saved: cannot write ")),
                  qPrintable(message));
+    }
+
+    /// The window's own flags, run as a process (offscreen): a bad one is refused in one line
+    /// with exit status 2 and no window; --measure-frames prints its figures and quits.
+    void commandLineFlags()
+    {
+        const auto run = [](const QStringList& args, QString& out, QString& err) {
+            QProcess p;
+            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+            env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+            p.setProcessEnvironment(env);
+            p.start(QStringLiteral(RIGIDLAB_GUI), args);
+            if (!p.waitForFinished(60000)) {
+                p.kill();
+                p.waitForFinished();
+                return -1;
+            }
+            out = QString::fromLocal8Bit(p.readAllStandardOutput());
+            err = QString::fromLocal8Bit(p.readAllStandardError());
+            return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+        };
+        QString out, err;
+        for (const QStringList& bad :
+             {QStringList{QStringLiteral("--measure-frames")},
+              QStringList{QStringLiteral("--measure-frames"), QStringLiteral("ten")},
+              QStringList{QStringLiteral("--measure-frames"), QStringLiteral("0")},
+              QStringList{QStringLiteral("--measure-frames"), QStringLiteral("-5")}}) {
+            QCOMPARE(run(bad, out, err), 2);
+            QVERIFY2(err.contains(QStringLiteral("--measure-frames needs a whole number")),
+                     qPrintable(err));
+        }
+        QCOMPARE(run({QStringLiteral("--measure-frames"), QStringLiteral("5")}, out, err), 2);
+        QVERIFY2(err.contains(QStringLiteral("needs a scene")), qPrintable(err));
+        QTemporaryDir dir;
+        QFile broken(dir.filePath(QStringLiteral("broken.json")));
+        QVERIFY(broken.open(QIODevice::WriteOnly));
+        broken.write("{\"rigidlab\": 1,");
+        broken.close();
+        QCOMPARE(run({QStringLiteral("--measure-frames"), QStringLiteral("5"), broken.fileName()},
+                     out, err),
+                 2);
+        QVERIFY2(err.contains(QStringLiteral("broken.json: line")), qPrintable(err));
+        QVERIFY2(err.contains(QStringLiteral("needs a scene that opens")), qPrintable(err));
+
+        QCOMPARE(
+            run({QStringLiteral("--measure-frames"), QStringLiteral("20"), scene("box_stack.json")},
+                out, err),
+            0);
+        const QRegularExpression figures(
+            QStringLiteral(R"(^20 frames: median ([0-9.]+) ms, 95th percentile ([0-9.]+) ms)"));
+        const QRegularExpressionMatch m = figures.match(out);
+        QVERIFY2(m.hasMatch(), qPrintable(out));
+        QVERIFY(m.captured(1).toDouble() > 0);
+        QVERIFY(m.captured(2).toDouble() >= m.captured(1).toDouble());
     }
 };
 
