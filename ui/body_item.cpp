@@ -67,7 +67,7 @@ QPainterPath BodyItem::shape() const
 
 void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
 {
-    painter->setRenderHint(QPainter::Antialiasing);
+    painter->setRenderHint(QPainter::Antialiasing, m_antialiased);
     QPen pen(m_selected ? QColor(20, 20, 20) : m_fill.darker(160), m_selected ? 3.0 : 1.0);
     pen.setCosmetic(true);
     painter->setPen(pen);

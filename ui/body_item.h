@@ -22,6 +22,9 @@ public:
     /// Places the item: origin [m] and angle [rad] (counter-clockwise, y up).
     void setPose(double x, double y, double angle);
     void setSelectedBody(bool selected);
+    /// Smooth edges (the default). A scene of hundreds of bodies draws them without: each is
+    /// a few pixels across, and antialiasing them took a large part of a frame.
+    void setAntialiased(bool on) { m_antialiased = on; }
 
     QRectF boundingRect() const override;
     QPainterPath shape() const override;
@@ -36,6 +39,7 @@ private:
     QRectF m_circle;     ///< circles: the bounding square, drawn as an ellipse
     QLineF m_radiusLine; ///< circles: a radius, so that rotation shows
     bool m_selected = false;
+    bool m_antialiased = true;
 };
 
 /// A palette that keeps neighbouring bodies apart and reads on a projector.

@@ -49,6 +49,9 @@ const BodyItem* WorldView::itemFor(int id) const
                                                             : nullptr;
 }
 
+/// From this many bodies on, they are drawn without antialiasing (see BodyItem).
+constexpr std::size_t kManyBodies = 300;
+
 void WorldView::rebuild()
 {
     for (BodyItem* item : m_items)
@@ -71,6 +74,7 @@ void WorldView::rebuild()
                             : comparing ? plotColor(0)
                                         : bodyColor(colour++);
         auto* item = new BodyItem(static_cast<int>(i), b.shape, kind, fill);
+        item->setAntialiased(bodies.size() < kManyBodies);
         m_scene->addItem(item);
         m_items.push_back(item);
     }
