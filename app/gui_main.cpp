@@ -138,7 +138,7 @@ int main(int argc, char** argv)
         const std::clock_t cpuStart = std::clock();
         QObject::connect(
             &controller, &rigidlab::ui::SimulationController::framesMeasured, &app,
-            [&](const std::vector<double>& frames, const std::vector<double>& physics) {
+            [cpuStart](const std::vector<double>& frames, const std::vector<double>& physics) {
                 const double cpuMs = 1e3 * static_cast<double>(std::clock() - cpuStart) /
                                      CLOCKS_PER_SEC / static_cast<double>(frames.size());
                 printFrameTimes({frames.begin() + kWarmUpFrames, frames.end()},
