@@ -318,6 +318,23 @@ bool JsonReader::asObject(const QJsonValue& value, const QString& place, QJsonOb
     return true;
 }
 
+bool JsonReader::formatVersion(const QJsonObject& root, const QString& key, const QString& document,
+                               int version)
+{
+    const auto it = root.constFind(key);
+    if (it == root.constEnd()) {
+        return fail(key, QStringLiteral("missing: %1 starts with \"%2\": %3 (the format version)")
+                             .arg(document, key)
+                             .arg(version));
+    }
+    if (!it.value().isDouble() || it.value().toDouble() != version) {
+        return fail(key, QStringLiteral("unsupported format version %1 (this RigidLab reads "
+                                        "version %2)")
+                             .arg(describeJson(it.value()), QString::number(version)));
+    }
+    return true;
+}
+
 bool JsonReader::asArray(const QJsonValue& value, const QString& place, QJsonArray& out)
 {
     if (failed()) {

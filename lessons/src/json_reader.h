@@ -76,6 +76,11 @@ public:
     bool checkKeys(const QJsonObject& object, const QString& place,
                    std::initializer_list<QStringView> allowed);
 
+    /// The document's first key, `key`, must hold `version`; `document` names the kind of file
+    /// in the message ("a scene file").
+    bool formatVersion(const QJsonObject& root, const QString& key, const QString& document,
+                       int version);
+
     /// `value` must be an object / an array.
     bool asObject(const QJsonValue& value, const QString& place, QJsonObject& out);
     bool asArray(const QJsonValue& value, const QString& place, QJsonArray& out);

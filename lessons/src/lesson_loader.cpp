@@ -92,7 +92,6 @@ public:
     LessonLoadResult read(const QJsonObject& root);
 
 private:
-    bool readVersion(const QJsonObject& root);
     bool readGoals(const QJsonObject& root);
     bool readSteps(const QJsonObject& root);
     bool readStep(const QJsonValue& value, const QString& place, LessonStep& step);
@@ -114,7 +113,8 @@ private:
 
 LessonLoadResult LessonReader::read(const QJsonObject& root)
 {
-    const bool ok = readVersion(root) &&
+    const bool ok = m_in.formatVersion(root, QStringLiteral("rigidlab-lesson"),
+                                       QStringLiteral("a lesson file"), kLessonFormatVersion) &&
                     m_in.checkKeys(root, {},
                                    {u"rigidlab-lesson", u"title", u"summary", u"level", u"minutes",
                                     u"goals", u"steps"}) &&
@@ -134,25 +134,6 @@ LessonLoadResult LessonReader::read(const QJsonObject& root)
     result.ok = true;
     result.lesson = std::move(m_lesson);
     return result;
-}
-
-bool LessonReader::readVersion(const QJsonObject& root)
-{
-    const auto it = root.constFind(u"rigidlab-lesson");
-    if (it == root.constEnd()) {
-        return m_in.fail(QStringLiteral("rigidlab-lesson"),
-                         QStringLiteral("missing: a lesson file starts with \"rigidlab-lesson\": "
-                                        "%1 (the format version)")
-                             .arg(kLessonFormatVersion));
-    }
-    if (!it.value().isDouble() || it.value().toDouble() != kLessonFormatVersion) {
-        return m_in.fail(
-            QStringLiteral("rigidlab-lesson"),
-            QStringLiteral("unsupported format version %1 (this RigidLab reads "
-                           "version %2)")
-                .arg(detail::describeJson(it.value()), QString::number(kLessonFormatVersion)));
-    }
-    return true;
 }
 
 bool LessonReader::readGoals(const QJsonObject& root)

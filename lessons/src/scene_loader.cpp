@@ -55,7 +55,6 @@ public:
     SceneLoadResult read(const QJsonObject& root);
 
 private:
-    bool readVersion(const QJsonObject& root);
     bool readWorld(const QJsonObject& root);
     bool readBodies(const QJsonObject& root);
     bool readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
@@ -80,7 +79,8 @@ private:
 
 SceneLoadResult SceneReader::read(const QJsonObject& root)
 {
-    const bool ok = readVersion(root) &&
+    const bool ok = m_in.formatVersion(root, QStringLiteral("rigidlab"),
+                                       QStringLiteral("a scene file"), kSceneFormatVersion) &&
                     m_in.checkKeys(root, {},
                                    {u"rigidlab", u"title", u"description", u"world", u"bodies",
                                     u"springs", u"joints"}) &&
@@ -100,25 +100,6 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
     result.ok = true;
     result.scene = std::move(m_scene);
     return result;
-}
-
-bool SceneReader::readVersion(const QJsonObject& root)
-{
-    const auto it = root.constFind(u"rigidlab");
-    if (it == root.constEnd()) {
-        return m_in.fail(QStringLiteral("rigidlab"),
-                         QStringLiteral("missing: a scene file starts with \"rigidlab\": %1 "
-                                        "(the format version)")
-                             .arg(kSceneFormatVersion));
-    }
-    if (!it.value().isDouble() || it.value().toDouble() != kSceneFormatVersion) {
-        return m_in.fail(
-            QStringLiteral("rigidlab"),
-            QStringLiteral("unsupported format version %1 (this RigidLab reads "
-                           "version %2)")
-                .arg(detail::describeJson(it.value()), QString::number(kSceneFormatVersion)));
-    }
-    return true;
 }
 
 bool SceneReader::readWorld(const QJsonObject& root)
