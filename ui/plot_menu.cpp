@@ -2,6 +2,8 @@
 
 #include "plot_widget.h"
 
+#include "modal_scope.h"
+
 #include <qcustomplot.h>
 
 #include <QActionGroup>
@@ -81,6 +83,7 @@ void PlotWidget::showContextMenu(const QPoint& pos)
 
 void PlotWidget::exportInteractively(ExportFormat format)
 {
+    const ModalScope modal;
     const QString dir = m_lastExportDir.isEmpty()
                             ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
                             : m_lastExportDir;

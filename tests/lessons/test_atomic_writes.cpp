@@ -8,6 +8,8 @@
 #include "rigidlab/lessons/scene_loader.h"
 #include "rigidlab/lessons/scene_run.h"
 
+#include "test_main.h"
+
 #include <QDir>
 #include <QFile>
 #include <QProcess>
@@ -266,5 +268,5 @@ private slots:
     }
 };
 
-QTEST_GUILESS_MAIN(TestAtomicWrites)
+RIGIDLAB_TEST_GUILESS_MAIN(TestAtomicWrites)
 #include "test_atomic_writes.moc"

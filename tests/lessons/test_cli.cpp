@@ -1,6 +1,8 @@
 // rigidlab-cli as a user meets it: run as a process, judged by its exit status, its output
 // and the files it leaves (or must not leave).
 
+#include "test_main.h"
+
 #include <QDir>
 #include <QFile>
 #include <QJsonArray>
@@ -494,5 +496,5 @@ void TestCli::bench()
              2);
 }
 
-QTEST_GUILESS_MAIN(TestCli)
+RIGIDLAB_TEST_GUILESS_MAIN(TestCli)
 #include "test_cli.moc"

@@ -2,6 +2,7 @@
 // their texts, checked on the lessons' own scenes and settings.
 
 #include "test_lesson.h"
+#include "test_main.h"
 
 #include <algorithm>
 #include <cmath>
@@ -536,4 +537,4 @@ void TestLesson::billiardsBreakConservesMomentum()
     QVERIFY2(std::abs(k[0] - k[1]) > 0.01 * k0, "the two solvers end the break differently");
 }
 
-QTEST_GUILESS_MAIN(TestLesson)
+RIGIDLAB_TEST_GUILESS_MAIN(TestLesson)

@@ -9,6 +9,8 @@
 #include "rigidlab/physics/sat.h"
 #include "rigidlab/physics/shape.h"
 
+#include "test_main.h"
+
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
@@ -431,4 +433,4 @@ void TestLimits::nothingInAFileIsRun()
     QVERIFY(!QFileInfo::exists(mark));
 }
 
-QTEST_GUILESS_MAIN(TestLimits)
+RIGIDLAB_TEST_GUILESS_MAIN(TestLimits)

@@ -7,6 +7,8 @@
 #include "rigidlab/lessons/reference_problems.h"
 #include "rigidlab/lessons/stress.h"
 
+#include "test_main.h"
+
 #include <QTest>
 
 #include <cmath>
@@ -154,5 +156,5 @@ void TestNumerics::stressVerdicts()
                  qPrintable(c));
 }
 
-QTEST_GUILESS_MAIN(TestNumerics)
+RIGIDLAB_TEST_GUILESS_MAIN(TestNumerics)
 #include "test_numerics.moc"

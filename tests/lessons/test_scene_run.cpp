@@ -6,6 +6,8 @@
 #include "rigidlab/lessons/sat_report.h"
 #include "rigidlab/lessons/scene_run.h"
 
+#include "test_main.h"
+
 #include <QDir>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -281,4 +283,4 @@ void TestLessons::satReportRejects()
     QCOMPARE(report.error, message);
 }
 
-QTEST_GUILESS_MAIN(TestLessons)
+RIGIDLAB_TEST_GUILESS_MAIN(TestLessons)

@@ -7,6 +7,8 @@
 
 #include <rigidlab/physics/world.h>
 
+#include "test_main.h"
+
 #include <QTest>
 
 #include <algorithm>
@@ -483,5 +485,5 @@ void TestCollisions::kinematicAndStaticBodies()
     QVERIFY(isFinite(world.body(ball).position));
 }
 
-QTEST_GUILESS_MAIN(TestCollisions)
+RIGIDLAB_TEST_GUILESS_MAIN(TestCollisions)
 #include "test_collisions.moc"

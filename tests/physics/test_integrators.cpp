@@ -8,6 +8,8 @@
 #include <rigidlab/physics/integrator.h>
 #include <rigidlab/physics/world.h>
 
+#include "test_main.h"
+
 #include <QTest>
 
 #include <cmath>
@@ -601,5 +603,5 @@ void TestIntegrators::pinnedSpinStaysUniform()
     }
 }
 
-QTEST_GUILESS_MAIN(TestIntegrators)
+RIGIDLAB_TEST_GUILESS_MAIN(TestIntegrators)
 #include "test_integrators.moc"

@@ -21,6 +21,8 @@
 #include <rigidlab/physics/sat.h>
 #include <rigidlab/physics/shape.h>
 
+#include "test_main.h"
+
 #include <QTest>
 
 #include <cmath>
@@ -585,5 +587,5 @@ void TestSat::polygonAndCircle()
     }
 }
 
-QTEST_GUILESS_MAIN(TestSat)
+RIGIDLAB_TEST_GUILESS_MAIN(TestSat)
 #include "test_sat.moc"

@@ -7,6 +7,8 @@
 #include <rigidlab/physics/shape.h>
 #include <rigidlab/physics/world.h>
 
+#include "test_main.h"
+
 #include <QTest>
 
 #include <algorithm>
@@ -358,5 +360,5 @@ void TestShapes::bodyKeptAtCentreOfMass()
     RL_VERIFY_NEAR(world.body(id).angularVelocity, -3.0, 1e-15, 0.0);
 }
 
-QTEST_GUILESS_MAIN(TestShapes)
+RIGIDLAB_TEST_GUILESS_MAIN(TestShapes)
 #include "test_shapes.moc"

@@ -11,6 +11,8 @@
 #include <rigidlab/physics/integrator.h>
 #include <rigidlab/physics/world.h>
 
+#include "test_main.h"
+
 #include <QTest>
 
 #include <cmath>
@@ -214,5 +216,5 @@ void TestStability::bulletTunnelsOnlyWithoutContinuous()
     QVERIFY2(bulletX(false) > 1.05, qPrintable(QString::number(bulletX(false))));
 }
 
-QTEST_GUILESS_MAIN(TestStability)
+RIGIDLAB_TEST_GUILESS_MAIN(TestStability)
 #include "test_stability.moc"

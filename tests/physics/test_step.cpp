@@ -9,6 +9,8 @@
 #include <rigidlab/physics/sat.h>
 #include <rigidlab/physics/world.h>
 
+#include "test_main.h"
+
 #include <QTest>
 
 #include <cmath>
@@ -390,5 +392,5 @@ void TestStep::heavyBoxOnLightBoxStands()
     RL_VERIFY_AT_MOST(std::abs(world.body(1).angle), 0.01);
 }
 
-QTEST_GUILESS_MAIN(TestStep)
+RIGIDLAB_TEST_GUILESS_MAIN(TestStep)
 #include "test_step.moc"

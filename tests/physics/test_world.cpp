@@ -5,6 +5,8 @@
 
 #include <rigidlab/physics/world.h>
 
+#include "test_main.h"
+
 #include <QTest>
 
 #include <algorithm>
@@ -411,5 +413,5 @@ void TestWorld::boxStackStands()
     RL_VERIFY_NEAR(world.body(top).position.y(), h / 2 + h * (n - 1), 0.05, 0.0);
 }
 
-QTEST_GUILESS_MAIN(TestWorld)
+RIGIDLAB_TEST_GUILESS_MAIN(TestWorld)
 #include "test_world.moc"

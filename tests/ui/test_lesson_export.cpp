@@ -18,6 +18,8 @@
 #include <QXmlStreamReader>
 #include <QtTest>
 
+#include "test_main.h"
+
 #include <charconv>
 #include <cmath>
 
@@ -409,5 +411,5 @@ void TestLessonExport::cliLessonErrors()
     QVERIFY2(run.err.contains("cannot make the folder"), run.err.constData());
 }
 
-QTEST_MAIN(TestLessonExport)
+RIGIDLAB_TEST_MAIN(TestLessonExport)
 #include "test_lesson_export.moc"

@@ -17,6 +17,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "test_main.h"
+
 using namespace rigidlab;
 using rigidlab::ui::MainWindow;
 
@@ -43,9 +45,6 @@ class TestLessonWindow : public QObject {
 private slots:
     void initTestCase()
     {
-        QCoreApplication::setOrganizationName(QStringLiteral("RigidLabTest"));
-        QCoreApplication::setApplicationName(QStringLiteral("test_lesson_window"));
-        QStandardPaths::setTestModeEnabled(true);
         QVERIFY2(shippedLessons().size() >= 5, qPrintable(MainWindow::lessonsFolder()));
     }
 
@@ -220,5 +219,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestLessonWindow)
+RIGIDLAB_TEST_MAIN(TestLessonWindow)
 #include "test_lesson_window.moc"

@@ -14,6 +14,8 @@
 #include <QXmlStreamReader>
 #include <QtTest>
 
+#include "test_main.h"
+
 #include <cmath>
 
 #ifdef Q_OS_UNIX
@@ -815,5 +817,5 @@ void TestPlots::contextMenuOffersExportsAndRanges()
     menu->close();
 }
 
-QTEST_MAIN(TestPlots)
+RIGIDLAB_TEST_MAIN(TestPlots)
 #include "test_plots.moc"

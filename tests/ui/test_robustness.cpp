@@ -32,6 +32,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "test_main.h"
+
 #include <sys/resource.h>
 
 #include <cmath>
@@ -112,6 +114,17 @@ void onModal(std::function<void(QWidget*)> action)
     timer->start();
 }
 
+/// Closes `window` from inside a modal dialog's event loop, then runs the deferred deletions that
+/// loop may run before the dialog returns. Whether a busy loop runs them first depends on what
+/// else is pending (file-system watchers, other threads' events): on a loaded machine it did,
+/// the window and its dialog were deleted and the export was dropped (issue 10). Doing it here
+/// makes that order certain instead of rare.
+void closeAndRunDeferredDeletes(QWidget* window)
+{
+    window->close();
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+}
+
 QAction* findAction(QWidget* root, const QString& menuPath)
 {
     // "File/Export plot/Energy/As PNG…", matched without '&'.
@@ -137,13 +150,6 @@ class TestRobustness : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
-        QCoreApplication::setOrganizationName(QStringLiteral("RigidLabTest"));
-        QCoreApplication::setApplicationName(QStringLiteral("test_robustness"));
-        QStandardPaths::setTestModeEnabled(true);
-    }
-
     void garbageInEveryField()
     {
         MainWindow w;
@@ -319,9 +325,10 @@ private slots:
         bool dialogSeen = false;
         onModal([&](QWidget* modal) {
             dialogSeen = true;
-            w->close();
-            auto* dialog = qobject_cast<QFileDialog*>(modal);
+            QPointer<QFileDialog> dialog = qobject_cast<QFileDialog*>(modal);
             QVERIFY(dialog);
+            closeAndRunDeferredDeletes(w);
+            QVERIFY2(w && dialog, "the window was deleted under its open export dialog");
             dialog->selectFile(path);
             static_cast<QDialog*>(dialog)->accept(); // QFileDialog hides it
         });
@@ -346,9 +353,10 @@ private slots:
         for (int i = 0; i < 100; ++i)
             w->controller().stepForward();
         onModal([&](QWidget* modal) {
-            w->close();
-            auto* dialog = qobject_cast<QFileDialog*>(modal);
+            QPointer<QFileDialog> dialog = qobject_cast<QFileDialog*>(modal);
             QVERIFY(dialog);
+            closeAndRunDeferredDeletes(w);
+            QVERIFY2(w && dialog, "the window was deleted under its open folder dialog");
             dialog->selectFile(dir.path());
             static_cast<QDialog*>(dialog)->accept(); // QFileDialog hides it
         });
@@ -483,5 +491,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestRobustness)
+RIGIDLAB_TEST_MAIN(TestRobustness)
 #include "test_robustness.moc"

@@ -33,6 +33,8 @@
 #include <QRandomGenerator>
 #include <QtTest>
 
+#include "test_main.h"
+
 #include <time.h>
 
 #include <cmath>
@@ -129,13 +131,6 @@ class TestSoak : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
-        QCoreApplication::setOrganizationName(QStringLiteral("RigidLabTest"));
-        QCoreApplication::setApplicationName(QStringLiteral("test_soak"));
-        QStandardPaths::setTestModeEnabled(true);
-    }
-
     /// The history bounds its memory by an estimate of a snapshot's size: copies of the soak
     /// world must take about what the estimate says (else the budget means nothing).
     void snapshotEstimateMatchesMemory()
@@ -259,5 +254,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestSoak)
+RIGIDLAB_TEST_MAIN(TestSoak)
 #include "test_soak.moc"

@@ -17,6 +17,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "test_main.h"
+
 #include <cstring>
 
 using namespace rigidlab;
@@ -46,13 +48,6 @@ QByteArray stateBytes(const physics::World& w)
 class TestWindow : public QObject {
     Q_OBJECT
 private slots:
-    void initTestCase()
-    {
-        QCoreApplication::setOrganizationName(QStringLiteral("RigidLabTest"));
-        QCoreApplication::setApplicationName(QStringLiteral("test_window"));
-        QStandardPaths::setTestModeEnabled(true);
-    }
-
     void sceneLoadsAndRuns()
     {
         MainWindow w;
@@ -249,5 +244,5 @@ private slots:
     }
 };
 
-QTEST_MAIN(TestWindow)
+RIGIDLAB_TEST_MAIN(TestWindow)
 #include "test_window.moc"
