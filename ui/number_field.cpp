@@ -3,6 +3,7 @@
 #include <QKeyEvent>
 #include <QLocale>
 #include <QRegularExpression>
+#include <QToolTip>
 
 #include <charconv>
 #include <cmath>
@@ -147,6 +148,9 @@ bool NumberField::commit()
     }
     if (!why.isEmpty()) {
         setError(why);
+        // Shown at once below the field, not only on hovering it.
+        if (isVisible())
+            QToolTip::showText(mapToGlobal(QPoint(0, height())), why, this);
         emit refused(why);
         return false;
     }
