@@ -1,5 +1,6 @@
 #include "control_panel.h"
 
+#include "number_field.h"
 #include "simulation_controller.h"
 
 #include "rigidlab/lessons/limits.h"
@@ -7,10 +8,8 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QSignalBlocker>
-#include <QSpinBox>
 
 #include <array>
 
@@ -21,9 +20,9 @@ using physics::SolverKind;
 
 ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_integrator(new QComboBox(this)),
-      m_solver(new QComboBox(this)), m_iterations(new QSpinBox(this)),
-      m_dt(new QDoubleSpinBox(this)), m_timeScale(new QDoubleSpinBox(this)),
-      m_restitution(new QDoubleSpinBox(this)), m_friction(new QDoubleSpinBox(this)),
+      m_solver(new QComboBox(this)), m_iterations(new NumberField(this)),
+      m_dt(new NumberField(this)), m_timeScale(new NumberField(this)),
+      m_restitution(new NumberField(this)), m_friction(new NumberField(this)),
       m_gravity(new QCheckBox(tr("on"), this))
 {
     m_integrator->addItem(tr("Explicit Euler"), int(IntegratorKind::Euler));
@@ -38,32 +37,29 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     m_solver->setToolTip(tr("Seed impulse: one impulse per contact, once (the paper's method).\n"
                             "Sequential impulse: iterated, clamped, warm started."));
     // Every range is a scene file's (lessons/limits.h): what a file may hold can be typed.
-    m_iterations->setRange(1, lessons::kMaxIterations);
+    namespace limits = lessons::limits;
+    m_iterations->setRange(limits::kIterations, tr("Iterations"));
+    m_iterations->setInteger(true);
     m_iterations->setToolTip(tr("Velocity iterations of the sequential-impulse solver"));
     // dt in milliseconds reads better in class than 0.001 s.
-    m_dt->setRange(lessons::kMinDt * 1e3, lessons::kMaxDt * 1e3);
-    m_dt->setDecimals(4);
-    m_dt->setSingleStep(0.5);
-    m_dt->setSuffix(tr(" ms"));
-    m_dt->setToolTip(tr("The fixed time step"));
-    m_timeScale->setRange(lessons::limits::kTimeScale.min, lessons::limits::kTimeScale.max);
-    m_timeScale->setSingleStep(0.1);
-    m_timeScale->setDecimals(1);
-    m_timeScale->setSuffix(tr(" ×"));
+    m_dt->setRange(NumberField::scaled(limits::kDt, 1e3), tr("dt"), tr("ms"));
+    m_dt->setToolTip(tr("The fixed time step [ms]"));
+    m_timeScale->setRange(limits::kTimeScale, tr("Time scale"), tr("×"));
     m_timeScale->setToolTip(tr("Slow motion below 1, fast forward above"));
-    m_restitution->setRange(0.0, 1.0);
-    m_restitution->setSingleStep(0.05);
-    m_restitution->setDecimals(2);
+    m_restitution->setRange(limits::kRestitution, tr("Restitution e"));
     m_restitution->setToolTip(
         tr("Coefficient of restitution e for every body: 0 sticks, 1 is elastic"));
-    m_friction->setRange(lessons::limits::kFriction.min, lessons::limits::kFriction.max);
-    m_friction->setSingleStep(0.05);
-    m_friction->setDecimals(2);
+    m_friction->setRange(limits::kFriction, tr("Friction μ"));
     m_friction->setToolTip(tr("Coulomb friction coefficient μ for every body"));
+    m_iterations->setObjectName(QStringLiteral("iterations"));
+    m_dt->setObjectName(QStringLiteral("dt"));
+    m_timeScale->setObjectName(QStringLiteral("timeScale"));
+    m_restitution->setObjectName(QStringLiteral("restitution"));
+    m_friction->setObjectName(QStringLiteral("friction"));
 
     auto* form = new QFormLayout(this);
     form->addRow(tr("Integrator"), m_integrator);
-    form->addRow(tr("Time step dt"), m_dt);
+    form->addRow(tr("Time step dt [ms]"), m_dt);
     form->addRow(tr("Solver"), m_solver);
     form->addRow(tr("Iterations"), m_iterations);
     form->addRow(tr("Time scale"), m_timeScale);
@@ -76,16 +72,19 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     });
     connect(m_solver, &QComboBox::activated, this,
             [this] { m_controller.setSolver(SolverKind(m_solver->currentData().toInt())); });
-    connect(m_iterations, &QSpinBox::valueChanged, &m_controller,
-            &SimulationController::setIterations);
-    connect(m_dt, &QDoubleSpinBox::valueChanged, this,
-            [this](double ms) { m_controller.setDt(ms * 1e-3); });
-    connect(m_timeScale, &QDoubleSpinBox::valueChanged, &m_controller,
+    connect(m_iterations, &NumberField::valueEdited, this,
+            [this](double n) { m_controller.setIterations(static_cast<int>(n)); });
+    // Divided, not multiplied by 1e-3: 2.5 ms is then the double nearest 0.0025 s.
+    connect(m_dt, &NumberField::valueEdited, this,
+            [this](double ms) { m_controller.setDt(ms / 1e3); });
+    connect(m_timeScale, &NumberField::valueEdited, &m_controller,
             &SimulationController::setTimeScale);
-    connect(m_restitution, &QDoubleSpinBox::valueChanged, &m_controller,
+    connect(m_restitution, &NumberField::valueEdited, &m_controller,
             &SimulationController::setRestitution);
-    connect(m_friction, &QDoubleSpinBox::valueChanged, &m_controller,
+    connect(m_friction, &NumberField::valueEdited, &m_controller,
             &SimulationController::setFriction);
+    for (NumberField* f : {m_iterations, m_dt, m_timeScale, m_restitution, m_friction})
+        connect(f, &NumberField::refused, this, &ControlPanel::inputRefused);
     connect(m_gravity, &QCheckBox::toggled, &m_controller,
             &SimulationController::setGravityEnabled);
     connect(&m_controller, &SimulationController::settingsChanged, this, &ControlPanel::refresh);
@@ -116,13 +115,13 @@ void ControlPanel::setAllowed(const std::optional<QStringList>& allowed)
 void ControlPanel::refresh()
 {
     const physics::WorldDef& d = m_controller.world().def();
-    const QSignalBlocker b1(m_integrator), b2(m_solver), b3(m_iterations), b4(m_dt),
-        b5(m_timeScale), b6(m_restitution), b7(m_friction), b8(m_gravity);
+    const QSignalBlocker b1(m_integrator), b2(m_solver), b3(m_gravity);
     m_integrator->setCurrentIndex(m_integrator->findData(int(d.integrator)));
     m_solver->setCurrentIndex(m_solver->findData(int(d.solver)));
     m_iterations->setValue(d.iterations);
     m_iterations->setEnabled(d.solver == SolverKind::SequentialImpulse &&
                              !m_iterations->property("locked").toBool());
+    // The value in force; a field being typed in keeps its text (NumberField::setValue).
     m_dt->setValue(d.dt * 1e3);
     m_timeScale->setValue(m_controller.timeScale());
     m_restitution->setValue(d.restitution);

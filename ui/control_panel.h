@@ -1,6 +1,7 @@
 #pragma once
 // The simulation's settings as controls: integrator, solver, iterations, dt, time scale,
-// global restitution and friction, gravity. Every field is range-checked by its widget.
+// global restitution and friction, gravity. The number fields take a value on Enter or on
+// leaving them, and refuse what is outside the ranges of lessons/limits.h out loud.
 
 #include <QStringList>
 #include <QWidget>
@@ -9,11 +10,10 @@
 
 class QCheckBox;
 class QComboBox;
-class QDoubleSpinBox;
-class QSpinBox;
 
 namespace rigidlab::ui {
 
+class NumberField;
 class SimulationController;
 
 class ControlPanel : public QWidget {
@@ -23,15 +23,20 @@ public:
 
     QComboBox* integratorBox() const { return m_integrator; }
     QComboBox* solverBox() const { return m_solver; }
-    QDoubleSpinBox* dtBox() const { return m_dt; }
-    QDoubleSpinBox* timeScaleBox() const { return m_timeScale; }
-    QDoubleSpinBox* restitutionBox() const { return m_restitution; }
-    QDoubleSpinBox* frictionBox() const { return m_friction; }
+    NumberField* iterationsField() const { return m_iterations; }
+    NumberField* dtField() const { return m_dt; } ///< in ms
+    NumberField* timeScaleField() const { return m_timeScale; }
+    NumberField* restitutionField() const { return m_restitution; }
+    NumberField* frictionField() const { return m_friction; }
     QCheckBox* gravityBox() const { return m_gravity; }
 
     /// Which controls the student may change (names: integrator, dt, solver, iterations,
     /// timeScale, restitution, friction, gravity); nullopt: all of them.
     void setAllowed(const std::optional<QStringList>& allowed);
+
+signals:
+    /// A typed value was refused; `message` names the allowed range (for the status bar).
+    void inputRefused(const QString& message);
 
 public slots:
     /// Shows the controller's current settings.
@@ -41,11 +46,11 @@ private:
     SimulationController& m_controller;
     QComboBox* m_integrator;
     QComboBox* m_solver;
-    QSpinBox* m_iterations;
-    QDoubleSpinBox* m_dt;
-    QDoubleSpinBox* m_timeScale;
-    QDoubleSpinBox* m_restitution;
-    QDoubleSpinBox* m_friction;
+    NumberField* m_iterations;
+    NumberField* m_dt;
+    NumberField* m_timeScale;
+    NumberField* m_restitution;
+    NumberField* m_friction;
     QCheckBox* m_gravity;
 };
 

@@ -1,14 +1,15 @@
 #pragma once
-// The selected body, in numbers: mass, inertia, pose, velocities, energy; its restitution and
-// friction can be edited.
+// The selected body, in numbers: mass, inertia, pose, velocities, energy. Its restitution and
+// friction can be edited, and the mass of a dynamic body. Numbers are shown in the locale and
+// rounded to what is physically meaningful: rounding noise shows as 0.
 
 #include <QWidget>
 
-class QDoubleSpinBox;
 class QLabel;
 
 namespace rigidlab::ui {
 
+class NumberField;
 class SimulationController;
 
 class InspectorPanel : public QWidget {
@@ -17,8 +18,16 @@ public:
     explicit InspectorPanel(SimulationController& controller, QWidget* parent = nullptr);
     int body() const { return m_body; }
     QString text() const; ///< everything shown, for tests
+    NumberField* massField() const { return m_massEdit; }
+    NumberField* restitutionField() const { return m_restitution; }
+    NumberField* frictionField() const { return m_friction; }
+
+signals:
+    /// A typed value was refused; `message` names the allowed range (for the status bar).
+    void inputRefused(const QString& message);
 
 public slots:
+    /// Shows body `id` (-1: none). An edit in progress is taken for the body shown before.
     void setBody(int id);
     void refresh();
 
@@ -26,15 +35,17 @@ private:
     SimulationController& m_controller;
     int m_body = -1;
     QLabel* m_name;
-    QLabel* m_mass;
+    QLabel* m_mass; ///< "infinite" for static and kinematic bodies
+    NumberField* m_massEdit;
+    QLabel* m_massUnit;
     QLabel* m_inertia;
     QLabel* m_position;
     QLabel* m_angle;
     QLabel* m_velocity;
     QLabel* m_omega;
     QLabel* m_energy;
-    QDoubleSpinBox* m_restitution;
-    QDoubleSpinBox* m_friction;
+    NumberField* m_restitution;
+    NumberField* m_friction;
 };
 
 } // namespace rigidlab::ui

@@ -1,14 +1,13 @@
 #include "lesson_player.h"
 
 #include "modal_scope.h"
-
+#include "number_field.h"
 #include "simulation_controller.h"
 
 #include "rigidlab/lessons/measurements.h"
 
 #include <QComboBox>
 #include <QDir>
-#include <QDoubleValidator>
 #include <QFileInfo>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -212,11 +211,8 @@ void LessonPlayer::buildQuestions()
         v->addWidget(prompt);
         auto* row = new QHBoxLayout;
         auto* edit = new QLineEdit(box);
-        auto* validator = new QDoubleValidator(edit);
-        validator->setNotation(QDoubleValidator::ScientificNotation);
-        validator->setBottom(-kMaxAnswer);
-        validator->setTop(kMaxAnswer);
-        edit->setValidator(validator);
+        // No validator: it would drop the separator the locale does not use ("0.0156" typed
+        // in Czech became 00156). What was typed is read when it is checked, point or comma.
         edit->setPlaceholderText(tr("your answer"));
         row->addWidget(edit, 1);
         row->addWidget(new QLabel(q.unit, box));
@@ -232,13 +228,13 @@ void LessonPlayer::buildQuestions()
             if (!m_lesson)
                 return;
             const lessons::LessonStep& st = m_lesson->steps[static_cast<size_t>(m_step)];
-            bool ok = false;
-            const double answer = edit->locale().toDouble(edit->text(), &ok);
-            if (!ok || !std::isfinite(answer)) {
+            const std::optional<double> parsed = parseNumber(edit->text());
+            if (!parsed) {
                 result->setStyleSheet(QStringLiteral("color: #a05a00;"));
                 result->setText(tr("Type a number first."));
                 return;
             }
+            const double answer = *parsed;
             if (std::abs(answer) > kMaxAnswer) {
                 result->setStyleSheet(QStringLiteral("color: #a05a00;"));
                 result->setText(tr("Type a number from %1 to %2.")

@@ -367,7 +367,7 @@ void SimulationController::setIterations(int iterations)
 
 void SimulationController::setRestitution(double e)
 {
-    if (!(e >= 0 && e <= 1))
+    if (!lessons::limits::kRestitution.contains(e))
         return;
     forEachWorld([e](physics::World& w) { w.setRestitution(e); });
     afterEdit(QStringLiteral("e = %1").arg(e));
@@ -394,12 +394,24 @@ void SimulationController::setBodyMaterial(physics::BodyId id, double restitutio
 {
     if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()))
         return;
-    if (!(restitution >= 0 && restitution <= 1) || !lessons::limits::kFriction.contains(friction))
+    if (!lessons::limits::kRestitution.contains(restitution) ||
+        !lessons::limits::kFriction.contains(friction))
         return;
     physics::Body& b = m_world.body(id);
     b.restitution = restitution;
     b.friction = friction;
     afterEdit(QString());
+}
+
+void SimulationController::setBodyMass(physics::BodyId id, double mass)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
+        !lessons::limits::kMass.contains(mass) || mass == m_world.body(id).mass)
+        return;
+    if (!m_world.setBodyMass(id, mass))
+        return;
+    m_world.updateDiagnostics();
+    afterEdit(QStringLiteral("m = %1 kg").arg(mass));
 }
 
 void SimulationController::rotateBody(physics::BodyId id, double radians)

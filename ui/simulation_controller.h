@@ -74,6 +74,9 @@ public:
     void measureFrames(int frames);
     /// Relative energy drift since the start [%].
     double driftPercent() const;
+    /// The scene's energy scale: |E0|, or another scale when E0 is near 0 [J]. Energies far
+    /// below it are rounding, not physics.
+    double energyScale() const { return m_energyScale; }
 
     /// The body pose to draw: between the last two steps, by how far the clock is into the next.
     Pose drawPose(physics::BodyId id) const;
@@ -115,6 +118,9 @@ public slots:
     void setFriction(double mu);
     void setGravityEnabled(bool on);
     void setBodyMaterial(physics::BodyId id, double restitution, double friction);
+    /// Gives a dynamic body a new mass [kg] within limits::kMass (World::setBodyMass: the
+    /// inertia scales with it). Anything else changes nothing.
+    void setBodyMass(physics::BodyId id, double mass);
     /// Turns a body about its centre of mass by `radians` (a teaching aid: it is moved, not
     /// pushed, so the future branches from here).
     void rotateBody(physics::BodyId id, double radians);

@@ -452,7 +452,8 @@ bool LessonReader::readSettings(const QJsonObject& object, const QString& place,
     }
     double value = 0;
     if (s.contains(u"restitution")) {
-        if (!m_in.number(s, u"restitution", at, value, NumberRule::UnitInterval)) {
+        if (!m_in.number(s, u"restitution", at, value, NumberRule::UnitInterval,
+                         limits::kRestitution)) {
             return false;
         }
         settings.restitution = value;

@@ -167,7 +167,8 @@ bool SceneReader::readWorld(const QJsonObject& root)
         def.sleep = sleep;
     }
     return m_in.integer(world, u"iterations", place, def.iterations, 1, kMaxIterations) &&
-           m_in.number(world, u"restitution", place, def.restitution, NumberRule::UnitInterval) &&
+           m_in.number(world, u"restitution", place, def.restitution, NumberRule::UnitInterval,
+                       limits::kRestitution) &&
            m_in.number(world, u"friction", place, def.friction, NumberRule::NonNegative,
                        limits::kFriction) &&
            m_in.number(world, u"gravitation", place, def.gravitation, NumberRule::NonNegative,
@@ -278,7 +279,8 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
         !m_in.number(body, u"density", place, def.density, NumberRule::Positive,
                      limits::kDensity) ||
         !m_in.number(body, u"mass", place, def.mass, NumberRule::Positive, limits::kMass) ||
-        !m_in.number(body, u"restitution", place, def.restitution, NumberRule::UnitInterval) ||
+        !m_in.number(body, u"restitution", place, def.restitution, NumberRule::UnitInterval,
+                     limits::kRestitution) ||
         !m_in.number(body, u"friction", place, def.friction, NumberRule::NonNegative,
                      limits::kFriction) ||
         !m_in.boolean(body, u"collide", place, def.collide)) {

@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 
 namespace rigidlab::physics {
 
@@ -146,6 +147,26 @@ void World::setBodyVelocity(BodyId id, const Vec2& originVelocity, double angula
     b.angularVelocity = angularVelocity;
     b.velocity = originVelocity + cross(angularVelocity, Vec2(b.position - b.origin()));
     wakeBody(id);
+}
+
+bool World::setBodyMass(BodyId id, double mass)
+{
+    if (id < 0 || id >= static_cast<BodyId>(m_bodies.size()) || !(mass > 0) || !std::isfinite(mass))
+        return false;
+    Body& b = body(id);
+    if (!b.isDynamic() || !(b.mass > 0))
+        return false;
+    // I = m k² for a fixed shape: the radius of gyration k does not depend on the mass.
+    const double scale = mass / b.mass;
+    b.mass = mass;
+    b.invMass = 1.0 / mass;
+    b.inertia *= scale;
+    b.invInertia = b.inertia > 0 ? 1.0 / b.inertia : 0.0;
+    // The energy changed by hand, not by the integrator: the divergence check measures growth
+    // from the energy the next step starts with.
+    m_energyStart.reset();
+    wakeBody(id);
+    return true;
 }
 
 Vec2 World::originVelocity(BodyId id) const

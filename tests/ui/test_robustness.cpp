@@ -8,6 +8,7 @@
 #include "inspector_panel.h"
 #include "lesson_player.h"
 #include "main_window.h"
+#include "number_field.h"
 #include "plot_widget.h"
 #include "simulation_controller.h"
 
@@ -96,6 +97,8 @@ void checkSettingsInRange(const ui::SimulationController& c, const QString& afte
     for (const physics::Body& b : c.world().bodies()) {
         QVERIFY2(b.restitution >= 0 && b.restitution <= 1, where.constData());
         QVERIFY2(lessons::limits::kFriction.contains(b.friction), where.constData());
+        if (b.isDynamic())
+            QVERIFY2(lessons::limits::kMass.contains(b.mass), where.constData());
     }
 }
 
@@ -176,18 +179,32 @@ private slots:
         QCOMPARE(w.openScene(scene("box_stack.json"), true), QString());
         w.inspector().setBody(static_cast<int>(w.controller().world().bodies().size()) - 1);
 
-        QList<QAbstractSpinBox*> boxes = w.controls().findChildren<QAbstractSpinBox*>();
-        boxes += w.inspector().findChildren<QAbstractSpinBox*>();
-        QVERIFY(boxes.size() >= 7);
-        for (QAbstractSpinBox* box : boxes) {
+        // Number fields (ui/number_field.h) and any spin box left.
+        QList<QWidget*> boxes;
+        for (QWidget* panel :
+             {static_cast<QWidget*>(&w.controls()), static_cast<QWidget*>(&w.inspector())}) {
+            for (auto* f : panel->findChildren<ui::NumberField*>())
+                boxes << f;
+            for (auto* b : panel->findChildren<QAbstractSpinBox*>())
+                boxes << b;
+        }
+        QVERIFY(boxes.size() >= 8); // dt, iterations, time scale, e, μ; the body's m, e, μ
+        for (QWidget* box : boxes) {
             QVERIFY2(box->isEnabled(), qPrintable(box->objectName()));
             for (const QString& text : kGarbage) {
                 box->setFocus();
-                box->selectAll();
+                if (auto* line = qobject_cast<QLineEdit*>(box))
+                    line->selectAll();
+                else
+                    static_cast<QAbstractSpinBox*>(box)->selectAll();
                 typeText(box, text);
                 QTest::keyClick(box, Qt::Key_Return);
-                box->clearFocus(); // focus out: the box fixes up or reverts what it holds
+                box->clearFocus(); // focus out: the field takes, refuses or reverts what it holds
                 checkSettingsInRange(w.controller(), text);
+                // A number field shows a number again: the value in force.
+                if (auto* f = qobject_cast<ui::NumberField*>(box))
+                    QVERIFY2(ui::parseNumber(f->text()).has_value(),
+                             qPrintable(box->objectName() + QStringLiteral(": ") + f->text()));
                 w.controller().stepForward();
             }
         }

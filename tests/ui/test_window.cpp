@@ -4,13 +4,13 @@
 #include "control_panel.h"
 #include "inspector_panel.h"
 #include "main_window.h"
+#include "number_field.h"
 #include "plot_export.h"
 #include "plot_widget.h"
 #include "simulation_controller.h"
 #include "world_view.h"
 
 #include <QCheckBox>
-#include <QDoubleSpinBox>
 #include <QFile>
 #include <QImage>
 #include <QMessageBox>
@@ -147,7 +147,10 @@ private slots:
             c.stepForward();
         c.seek(200);
         QCOMPARE(c.latestStep(), 400LL);
-        w.controls().restitutionBox()->setValue(0.2);
+        ui::NumberField* e = w.controls().restitutionField();
+        e->selectAll();
+        QTest::keyClicks(e, QStringLiteral("0.2"));
+        QTest::keyClick(e, Qt::Key_Return);
         QCOMPARE(c.latestStep(), 200LL);
         QCOMPARE(c.world().def().restitution, 0.2);
     }

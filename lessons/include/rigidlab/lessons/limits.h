@@ -45,6 +45,12 @@ inline constexpr Range kGravitation{0.0, 1e6, "m^3/(kg s^2)"};
 inline constexpr Range kDrag{0.0, 1e4, "1/s"};
 /// Coulomb friction coefficient.
 inline constexpr Range kFriction{0.0, 100.0, ""};
+/// Coefficient of restitution: 0 sticks, 1 is elastic.
+inline constexpr Range kRestitution{0.0, 1.0, ""};
+/// The fixed time step [s] (the window shows it in ms).
+inline constexpr Range kDt{1e-7, 1.0, "s"};
+/// Velocity iterations of the sequential-impulse solver (whole numbers).
+inline constexpr Range kIterations{1.0, 1000.0, ""};
 /// Spring stiffness [N/m].
 inline constexpr Range kStiffness{0.0, 1e10, "N/m"};
 /// Spring damping [N s/m].

@@ -3,6 +3,7 @@
 // problem found comes back as one line `FILE: PLACE: what is wrong`, where PLACE is a JSON
 // path (`bodies[2].shape.radius`) or, for broken JSON, `line L, column C`.
 
+#include "rigidlab/lessons/limits.h"
 #include "rigidlab/lessons/scene.h"
 
 #include <QByteArray>
@@ -22,9 +23,10 @@ inline constexpr int kMaxSprings = 10000;
 inline constexpr int kMaxJoints = 10000;
 inline constexpr int kMaxPolygonVertices = 64;
 inline constexpr int kMaxBodyIdLength = 64;
-inline constexpr int kMaxIterations = 1000;
-inline constexpr double kMinDt = 1e-7; ///< [s]
-inline constexpr double kMaxDt = 1.0;  ///< [s]
+// The ranges of settings live in limits.h, with every other range; these names are kept short.
+inline constexpr int kMaxIterations = static_cast<int>(limits::kIterations.max);
+inline constexpr double kMinDt = limits::kDt.min; ///< [s]
+inline constexpr double kMaxDt = limits::kDt.max; ///< [s]
 
 struct SceneLoadResult {
     bool ok = false;

@@ -118,6 +118,11 @@ public:
     void setBodyVelocity(BodyId id, const Vec2& originVelocity, double angularVelocity);
     /// Velocity of the body origin [m/s].
     Vec2 originVelocity(BodyId id) const;
+    /// Gives a dynamic body the mass `mass` [kg] (> 0, finite). Its shape keeps its density
+    /// distribution, so the inertia about the centre of mass scales by the same factor; the
+    /// velocities stay (momentum and energy change with the mass). Wakes the body. Returns
+    /// false, changing nothing, for another kind of body or an invalid mass.
+    bool setBodyMass(BodyId id, double mass);
 
     double time() const { return m_time; }
     long long stepCount() const { return m_steps; }
