@@ -42,18 +42,21 @@ bool Dynamics::dissipates() const
 }
 
 // Contacts. The solver's impulse P on a body changes its velocity from v' (after integration)
-// to v1, and the step then moves the body by (1 - f) h (v1 - v') more, f the fraction of the
-// step before its bounce (0 for a resting contact). Over the whole step, with a the applied
-// acceleration, the energy changes by
-//   dE = P . (w + v1) / 2 - (m h^2 |a|^2 + (1 - f) h P . a) / 2,   w = v0 + f (v' - v0),
-// with v0 the velocity at the start of the step and w the velocity at the moment of the
-// bounce. The first term is the impulse's work over the velocities before and after it
-// acted; the rest is the integrator's error (the first part of it that of a free flight).
-// So a contact takes -P . (w + v1) / 2. Where a body rests, (P = -m a h, f = 0) the error
-// terms cancel and the contact takes nothing, as it should: the floor does no work on a box
-// that stands on it. (The kinetic energy the solver removes, P . (v' + v1) / 2, would count
-// m |a|^2 h^2 / 2 a step for every resting body as lost.) For bodies without applied forces
-// both are the same. A kinematic body that pushes gives energy: a negative loss.
+// to v1 = v' + dv. Its loss is the impulse's work over the velocities just before and just
+// after it acted, -P . (before + after) / 2, placed in the step as the solver places it:
+//   - resting (no bounce, or a contact already touching): at the start of the step, from v0
+//     (the velocity at the start) to v1. Over the whole step, with a the applied
+//     acceleration, the energy changes by P . (v0 + v1) / 2 - (m h^2 |a|^2 + h P . a) / 2, the
+//     rest being the integrator's error. Where a body rests (P = -m a h) that error cancels
+//     and the contact takes nothing, as it should: the floor does no work on a box that
+//     stands on it. (The kinetic energy the solver removes, P . (v' + v1) / 2, would count
+//     m |a|^2 h^2 / 2 a step for every resting body as lost.)
+//   - a bounce timed at the fraction f of the step (every contact that pushed the body
+//     bounced, f > 0): at the impact, from w = v0 + f (v' - v0) to w + dv, the forces acting on
+//     for the rest of the step; the solver reverses w's normal part times e, so an elastic
+//     bounce (e = 1) takes nothing.
+// For bodies without applied forces all three are the kinetic energy the solver removed. A
+// kinematic body that pushes gives energy: a negative loss.
 double contactLoss(const std::vector<Body>& bodies, const std::vector<Vec2>& velocityAtStart,
                    const std::vector<double>& angularVelocityAtStart,
                    const std::vector<Vec2>& velocityBefore,
@@ -68,10 +71,14 @@ double contactLoss(const std::vector<Body>& bodies, const std::vector<Vec2>& vel
         const double f = impact[i];
         const Vec2 dv = b.velocity - velocityBefore[i];
         const double dw = b.angularVelocity - angularVelocityBefore[i];
-        const Vec2 w = velocityAtStart[i] + f * (velocityBefore[i] - velocityAtStart[i]);
-        const double ww =
-            angularVelocityAtStart[i] + f * (angularVelocityBefore[i] - angularVelocityAtStart[i]);
-        loss -= 0.5 * (b.mass * dv.dot(w + b.velocity) + b.inertia * dw * (ww + b.angularVelocity));
+        // Before the impulse: at the start of the step (f = 0) or at the impact.
+        const Vec2 applied = velocityBefore[i] - velocityAtStart[i];
+        const double appliedAngular = angularVelocityBefore[i] - angularVelocityAtStart[i];
+        const Vec2 before = velocityAtStart[i] + f * applied;
+        const double beforeAngular = angularVelocityAtStart[i] + f * appliedAngular;
+        loss -= b.mass * dv.dot(before + 0.5 * dv) + b.inertia * dw * (beforeAngular + 0.5 * dw);
+        if (f == 0.0) // resting: the impulse before the step's forces, so they come after it
+            loss -= 0.5 * (b.mass * dv.dot(applied) + b.inertia * dw * appliedAngular);
     }
     return loss;
 }
