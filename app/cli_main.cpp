@@ -41,7 +41,10 @@ Commands:
       --integrator NAME      euler, symplectic-euler, verlet, rk4
       --solver NAME          seed-impulse, sequential-impulse
       --trace FILE.csv       step,t,body,x,y,angle,vx,vy,omega per dynamic body
-      --diagnostics FILE.csv step,t,kinetic,potential,total,px,py,angular_momentum,contacts
+      --diagnostics FILE.csv step,t,kinetic,potential,total,px,py,angular_momentum,contacts,
+                             dissipated,drift; dissipated: energy taken by contacts,
+                             drag and dampers [J]; drift: the numerical error,
+                             (total + dissipated - E0)/|E0|
       --every K              write rows every K steps (default 1; step 0 and the last
                              step are always written)
       --profile              print each stage's time per step (broad phase, narrow phase,

@@ -486,10 +486,14 @@ void MainWindow::updateStatus()
                               .arg(m_controller->physicsMilliseconds(), 0, 'f', 1)
                               .arg(profile.total, 0, 'f', 2)
                               .arg(stages.join(QStringLiteral(", "))));
-    const double lost = w.diagnostics().collisionLoss;
-    QString drift = tr("energy change %1 %").arg(m_controller->driftPercent(), 0, 'g', 3);
+    // Drift is the numerical error alone: what contacts, friction, drag and dampers took is
+    // physics, said apart.
+    QString drift =
+        tr("energy drift (numerical error) %L1 %").arg(m_controller->driftPercent(), 0, 'g', 3);
+    const double lost = m_controller->dissipated();
     if (std::abs(lost) > 1e-9)
-        drift += tr(" (contacts took %1 J)").arg(lost, 0, 'g', 3);
+        drift +=
+            tr(" · dissipated by contacts, friction, drag and dampers %L1 J").arg(lost, 0, 'g', 3);
     // The adaptive integrator's own estimate of its local error, live.
     if (const auto estimate = w.integrator().errorEstimate())
         drift += tr(" · %1 error estimate %2 (%3 substeps)")

@@ -21,7 +21,10 @@ struct Sample {
     double total = 0;           ///< [J]
     double px = 0, py = 0;      ///< linear momentum [kg m/s]
     double angularMomentum = 0; ///< about the origin [kg m^2/s]
-    double driftPercent = 0;    ///< (total - total at start) / |total at start| * 100 [%]
+    /// Energy taken since the start by contacts (bounces, friction), drag and dampers [J].
+    double dissipated = 0;
+    /// The numerical error: (total + dissipated - total at start) / |total at start| * 100 [%]
+    double driftPercent = 0;
     /// Worlds compared side by side (a lesson step): their total energy and drift, variant 0
     /// being the main world. `variants` says how many are in use.
     static constexpr int kMaxVariants = 6;

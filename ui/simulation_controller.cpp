@@ -11,11 +11,10 @@ namespace rigidlab::ui {
 
 namespace {
 
-constexpr int kFrameIntervalMs = 16;            // about 60 frames per second
-constexpr double kMaxFrameSeconds = 0.1;        // a longer gap (a paused debugger) counts as this
-constexpr double kPhysicsBudgetMs = 12.0;       // physics may take this much of a frame
-constexpr double kSampleInterval = 1.0 / 240.0; // plots need no more than this [s]
-constexpr double kGrabFrequency = 3.0;          // the grab spring's natural frequency [Hz]
+constexpr int kFrameIntervalMs = 16;      // about 60 frames per second
+constexpr double kMaxFrameSeconds = 0.1;  // a longer gap (a paused debugger) counts as this
+constexpr double kPhysicsBudgetMs = 12.0; // physics may take this much of a frame
+constexpr double kGrabFrequency = 3.0;    // the grab spring's natural frequency [Hz]
 
 } // namespace
 
@@ -91,10 +90,7 @@ void SimulationController::reset()
 void SimulationController::resetClock()
 {
     m_world.updateDiagnostics();
-    const physics::Diagnostics& d = m_world.diagnostics();
-    m_energyStart = d.total;
-    // Drift is relative to |E0|; when E0 is near zero, to the size of its parts instead.
-    m_energyScale = std::max({std::abs(d.total), d.kinetic + std::abs(d.potential), 1e-12});
+    m_energyReference = EnergyReference::of(m_world);
     m_history.reset(m_world);
     m_previousPoses.clear();
     m_accumulator = 0.0;
@@ -109,14 +105,10 @@ void SimulationController::resetClock()
 
 void SimulationController::resetVariants()
 {
-    m_variantEnergyStart.clear();
-    m_variantEnergyScale.clear();
+    m_variantReferences.clear();
     for (physics::World& w : m_variants) {
         w.updateDiagnostics();
-        const physics::Diagnostics& d = w.diagnostics();
-        m_variantEnergyStart.push_back(d.total);
-        m_variantEnergyScale.push_back(
-            std::max({std::abs(d.total), d.kinetic + std::abs(d.potential), 1e-12}));
+        m_variantReferences.push_back(EnergyReference::of(w));
     }
 }
 
@@ -128,7 +120,12 @@ void SimulationController::watch(const std::vector<lessons::Measure>& measures)
 
 double SimulationController::driftPercent() const
 {
-    return (m_world.diagnostics().total - m_energyStart) / m_energyScale * 100.0;
+    return m_energyReference.driftPercent(m_world.diagnostics());
+}
+
+double SimulationController::dissipated() const
+{
+    return m_energyReference.dissipatedSince(m_world.diagnostics());
 }
 
 Pose SimulationController::drawPose(physics::BodyId id) const
@@ -201,30 +198,10 @@ void SimulationController::pushSample()
     if (m_lastSampleTime >= 0 && t < m_lastSampleTime + kSampleInterval - 1e-12)
         return;
     m_lastSampleTime = t;
-    const physics::Diagnostics& d = m_world.diagnostics();
-    Sample s;
-    s.t = t;
-    s.kinetic = d.kinetic;
-    s.potential = d.potential;
-    s.total = d.total;
-    s.px = d.momentum.x();
-    s.py = d.momentum.y();
-    s.angularMomentum = d.angularMomentum;
-    s.driftPercent = driftPercent();
-    if (!m_variantLabels.isEmpty()) {
-        // Variant 0 is the main world; the others follow in order.
-        s.variants = std::min<int>(Sample::kMaxVariants, 1 + static_cast<int>(m_variants.size()));
-        s.variantTotal[0] = s.total;
-        s.variantDriftPercent[0] = s.driftPercent;
-        for (int i = 1; i < s.variants; ++i) {
-            const auto k = static_cast<std::size_t>(i - 1);
-            const double total = m_variants[k].diagnostics().total;
-            s.variantTotal[static_cast<std::size_t>(i)] = total;
-            s.variantDriftPercent[static_cast<std::size_t>(i)] =
-                (total - m_variantEnergyStart[k]) / m_variantEnergyScale[k] * 100.0;
-        }
-    }
-    m_samples.push(s);
+    // Variant 0 is the main world; the others follow in order (step_sampler.h, as the
+    // lesson export samples).
+    m_samples.push(makeSample(m_world, m_energyReference, m_variants, m_variantReferences,
+                              !m_variantLabels.isEmpty()));
 }
 
 void SimulationController::advanceFrame()

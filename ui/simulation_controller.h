@@ -10,6 +10,7 @@
 
 #include "history.h"
 #include "sample_buffer.h"
+#include "step_sampler.h"
 
 #include "rigidlab/lessons/measurements.h"
 #include "rigidlab/lessons/scene.h"
@@ -72,11 +73,14 @@ public:
     /// included) and the physics part of each, then emits framesMeasured (rigidlab
     /// --measure-frames).
     void measureFrames(int frames);
-    /// Relative energy drift since the start [%].
+    /// Relative energy drift since the start, the numerical error alone: what contacts, drag
+    /// and dampers took is added back [%].
     double driftPercent() const;
     /// The scene's energy scale: |E0|, or another scale when E0 is near 0 [J]. Energies far
     /// below it are rounding, not physics.
-    double energyScale() const { return m_energyScale; }
+    double energyScale() const { return m_energyReference.scale; }
+    /// Energy taken since the start by contacts (bounces, friction), drag and dampers [J].
+    double dissipated() const;
 
     /// The body pose to draw: between the last two steps, by how far the clock is into the next.
     Pose drawPose(physics::BodyId id) const;
@@ -157,13 +161,12 @@ private:
     std::vector<Pose> m_previousPoses;
     History m_history;
     SampleBuffer m_samples;
-    double m_energyScale = 1.0; ///< |E0|, or another scale when E0 is near 0 [J]
-    double m_energyStart = 0.0; ///< [J]
+    EnergyReference m_energyReference; ///< what the main world's drift is measured against
     double m_lastSampleTime = -1.0;
     physics::Vec2 m_sceneGravity = physics::Vec2::Zero();
     std::vector<physics::World> m_variants;
     std::vector<physics::World> m_variantStarts; ///< to rebuild them on reset and seek
-    std::vector<double> m_variantEnergyStart, m_variantEnergyScale;
+    std::vector<EnergyReference> m_variantReferences;
     QStringList m_variantLabels;
     physics::Vec2 m_variantOffset = physics::Vec2::Zero();
     lessons::Measurements m_measurements;

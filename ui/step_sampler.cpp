@@ -1,5 +1,7 @@
 #include "step_sampler.h"
 
+#include "rigidlab/lessons/scene_run.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
@@ -9,7 +11,7 @@ namespace rigidlab::ui {
 EnergyReference EnergyReference::of(const physics::World& world)
 {
     const physics::Diagnostics& d = world.diagnostics();
-    return {d.total, std::max({std::abs(d.total), d.kinetic + std::abs(d.potential), 1e-12})};
+    return {d.total, d.dissipated, lessons::energyScale(d)};
 }
 
 bool SampleClock::due(double t)
@@ -35,17 +37,18 @@ Sample makeSample(const physics::World& main, const EnergyReference& mainReferen
     s.px = d.momentum.x();
     s.py = d.momentum.y();
     s.angularMomentum = d.angularMomentum;
-    s.driftPercent = mainReference.driftPercent(d.total);
+    s.dissipated = mainReference.dissipatedSince(d);
+    s.driftPercent = mainReference.driftPercent(d);
     if (compared) {
         s.variants = std::min<int>(Sample::kMaxVariants, 1 + static_cast<int>(variants.size()));
         s.variantTotal[0] = s.total;
         s.variantDriftPercent[0] = s.driftPercent;
         for (int i = 1; i < s.variants; ++i) {
             const auto k = static_cast<std::size_t>(i - 1);
-            const double total = variants[k].diagnostics().total;
-            s.variantTotal[static_cast<std::size_t>(i)] = total;
+            const physics::Diagnostics& dv = variants[k].diagnostics();
+            s.variantTotal[static_cast<std::size_t>(i)] = dv.total;
             s.variantDriftPercent[static_cast<std::size_t>(i)] =
-                variantReferences[k].driftPercent(total);
+                variantReferences[k].driftPercent(dv);
         }
     }
     return s;

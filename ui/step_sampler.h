@@ -15,16 +15,26 @@ namespace rigidlab::ui {
 /// Samples are taken no closer than this in simulated time: plots need no more [s].
 inline constexpr double kSampleInterval = 1.0 / 240.0;
 
-/// What a world's energy drift is measured against.
+/// What a world's energy drift is measured against. The drift is the numerical error alone:
+/// what contacts, drag and dampers took (physics, not error) is added back to the total.
 struct EnergyReference {
-    double start = 0.0; ///< total energy at the start [J]
-    /// |E0|, or the size of its parts (K + |P|) when E0 is near zero [J].
+    double start = 0.0;      ///< total energy at the start [J]
+    double dissipated = 0.0; ///< Diagnostics::dissipated at the start [J]
+    /// |E0|, or the size of its parts (K + |P|) when E0 is near zero (lessons::energyScale) [J].
     double scale = 1.0;
 
     /// From the world's current diagnostics (call updateDiagnostics() first).
     static EnergyReference of(const physics::World& world);
-    /// (total - start) / scale * 100 [%].
-    double driftPercent(double total) const { return (total - start) / scale * 100.0; }
+    /// Energy taken since the start [J].
+    double dissipatedSince(const physics::Diagnostics& d) const
+    {
+        return d.dissipated - dissipated;
+    }
+    /// (total + dissipated since the start - start) / scale * 100 [%].
+    double driftPercent(const physics::Diagnostics& d) const
+    {
+        return (d.total + dissipatedSince(d) - start) / scale * 100.0;
+    }
 };
 
 /// Takes a sample at most every kSampleInterval of simulated time: the first one always, then

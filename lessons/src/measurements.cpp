@@ -17,6 +17,7 @@
 // the denominator: the same spins from a larger j.
 
 #include "rigidlab/lessons/measurements.h"
+#include "rigidlab/lessons/scene_run.h"
 
 #include <algorithm>
 #include <cmath>
@@ -70,10 +71,11 @@ void Measurements::reset(const physics::World& world, const std::vector<Measure>
         }
     }
     // Drift relative to |E0|; when E0 is near zero, to the size of its parts instead (as the
-    // window's energy-drift plot does).
+    // window's energy-drift plot does). What contacts, drag and dampers take is added back: the
+    // drift is the numerical error alone.
     const physics::Diagnostics& d = world.diagnostics();
-    m_energy0 = d.total;
-    m_energyScale = std::max({std::abs(d.total), d.kinetic + std::abs(d.potential), 1e-12});
+    m_energy0 = d.total - d.dissipated;
+    m_energyScale = energyScale(d);
     readState(world);
     m_touching = touchingPairs(world);
     m_resync = false;
@@ -150,7 +152,7 @@ void Measurements::recordTimed(const physics::World& world)
             v = body->origin().y();
             break;
         case Measure::Kind::EnergyDrift:
-            v = (d.total - m_energy0) / m_energyScale * 100.0;
+            v = (d.total + d.dissipated - m_energy0) / m_energyScale * 100.0;
             break;
         case Measure::Kind::MomentumX:
             v = d.momentum.x();

@@ -49,14 +49,4 @@ Diagnostics computeDiagnostics(const WorldDef& def, const std::vector<Body>& bod
     return d;
 }
 
-double kineticEnergy(const std::vector<Body>& bodies)
-{
-    double e = 0.0;
-    for (const Body& b : bodies)
-        if (b.isDynamic())
-            e += 0.5 * (b.mass * b.velocity.squaredNorm() +
-                        b.inertia * b.angularVelocity * b.angularVelocity);
-    return e;
-}
-
 } // namespace rigidlab::physics

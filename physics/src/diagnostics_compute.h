@@ -14,7 +14,13 @@ namespace rigidlab::physics {
 Diagnostics computeDiagnostics(const WorldDef& def, const std::vector<Body>& bodies,
                                const std::vector<SpringDef>& springs);
 
-/// Kinetic energy of the dynamic bodies [J].
-double kineticEnergy(const std::vector<Body>& bodies);
+/// The energy the contact solver took in this step [J] (dissipation.cpp), from each body's
+/// velocities at the start of the step, after integration (before the solver) and now, and
+/// the fraction of the step before its bounce (ContactSolver::impactFractions()).
+double contactLoss(const std::vector<Body>& bodies, const std::vector<Vec2>& velocityAtStart,
+                   const std::vector<double>& angularVelocityAtStart,
+                   const std::vector<Vec2>& velocityBefore,
+                   const std::vector<double>& angularVelocityBefore,
+                   const std::vector<double>& impact);
 
 } // namespace rigidlab::physics

@@ -22,6 +22,13 @@ struct BodyState {
     double w = 0.0;        ///< [rad/s]
 };
 
+/// What the dissipative forces take from the bodies: a power [W], or over a step an energy
+/// [J] (dissipation.cpp).
+struct Dissipation {
+    double drag = 0;    ///< linear drag
+    double damping = 0; ///< dampers of springs
+};
+
 class Dynamics final : public OdeSystem {
 public:
     Dynamics(const WorldDef& def, const std::vector<Body>& bodies, const std::vector<int>& slot,
@@ -45,6 +52,13 @@ public:
     void projectJointPositions(Eigen::VectorXd& q);
     /// After a step: removes joint-violating velocity (exact, mass-weighted projection).
     void projectJointVelocities(const Eigen::VectorXd& q, Eigen::VectorXd& v);
+
+    /// Whether anything dissipates: drag, or a spring with a damper (dissipation.cpp).
+    bool dissipates() const;
+    /// The power that drag and the dampers, evaluated at (q, v), take from the bodies when
+    /// they move at u (dissipation.cpp). Only active (dynamic, awake) bodies count.
+    Dissipation dissipation(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                            const Eigen::VectorXd& u) const;
 
     BodyState state(BodyId id, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
     /// A body-local anchor (origin frame) as a lever arm from the centre of mass, in the world.
@@ -78,5 +92,13 @@ private:
     Eigen::MatrixXd m_k;
     Eigen::VectorXd m_rhs, m_lambda;
 };
+
+/// The energy drag and the dampers took in one step of the integrator `kind` from (q0, v0)
+/// to (q1, v1) [J], their forces weighted as the integrator weighted them (dissipation.cpp).
+/// u and qm are scratch space.
+Dissipation stepDissipation(const Dynamics& dynamics, IntegratorKind kind, double h,
+                            const Eigen::VectorXd& q0, const Eigen::VectorXd& v0,
+                            const Eigen::VectorXd& q1, const Eigen::VectorXd& v1,
+                            Eigen::VectorXd& u, Eigen::VectorXd& qm);
 
 } // namespace rigidlab::physics

@@ -5,6 +5,7 @@
 //   broad_phase.cpp         a dynamic tree of bounding boxes, pairs kept from step to step
 //   sat.cpp                 SAT for polygons, circles, contact manifolds
 //   contact_solver.cpp      the seed's impulse, or sequential impulses; position correction
+//   dissipation.cpp         the energy that contacts, drag and spring dampers take
 //   diagnostics.cpp         energies and momenta
 //   continuous.cpp          speculative contacts over a fast body's motion
 //   divergence.cpp          a non-finite state or runaway energy stops the world
@@ -37,9 +38,9 @@ World::World(const World& o)
       m_integrator(makeIntegrator(o.m_def.integrator, o.m_def.tolerances)), m_moving(o.m_moving),
       m_slot(o.m_slot), m_jointPairs(o.m_jointPairs), m_scratch(std::make_unique<Scratch>()),
       m_time(o.m_time), m_steps(o.m_steps), m_evaluations(o.m_evaluations),
-      m_collisionLoss(o.m_collisionLoss), m_diagnostics(o.m_diagnostics),
-      m_divergenceSettings(o.m_divergenceSettings), m_divergence(o.m_divergence),
-      m_energyStart(o.m_energyStart), m_energyScale(o.m_energyScale)
+      m_collisionLoss(o.m_collisionLoss), m_dragLoss(o.m_dragLoss), m_dampingLoss(o.m_dampingLoss),
+      m_diagnostics(o.m_diagnostics), m_divergenceSettings(o.m_divergenceSettings),
+      m_divergence(o.m_divergence), m_energyStart(o.m_energyStart), m_energyScale(o.m_energyScale)
 {
 }
 
@@ -273,7 +274,20 @@ void World::integrate()
     StageTimer timer(m_profile, Stage::Integration);
     const double t = m_time, h = m_def.dt;
     withState([&](Dynamics& dynamics, Eigen::VectorXd& q, Eigen::VectorXd& v) {
+        Scratch& s = *m_scratch;
+        const bool dissipates = dynamics.dissipates();
+        if (dissipates) {
+            s.q0 = q;
+            s.v0 = v;
+        }
         m_integrator->step(dynamics, t, h, q, v);
+        // What drag and dampers took, before the joints move anything (dissipation.cpp).
+        if (dissipates) {
+            const Dissipation loss = stepDissipation(dynamics, m_def.integrator, h, s.q0, s.v0, q,
+                                                     v, s.meanVelocity, s.midpoint);
+            m_dragLoss += loss.drag;
+            m_dampingLoss += loss.damping;
+        }
         // The force evaluations inside count as the forces stage, not as integration.
         m_profile.ran[static_cast<int>(Stage::Forces)] = true;
         m_profile.ms[static_cast<int>(Stage::Forces)] += dynamics.forceMilliseconds;
@@ -385,8 +399,6 @@ void World::solveContacts()
         s.velocityBefore[i] = m_bodies[i].velocity;
         s.angularVelocityBefore[i] = m_bodies[i].angularVelocity;
     }
-    const double before = kineticEnergy(m_bodies);
-
     ContactSolver& solver = s.solver;
     solver.begin(m_contacts, m_bodies, m_contactSettings, h, s.xfPosition, s.velocityAtStart,
                  s.angularVelocityAtStart);
@@ -414,7 +426,9 @@ void World::solveContacts()
         withState([](Dynamics& d, Eigen::VectorXd& q, Eigen::VectorXd& v) {
             d.projectJointVelocities(q, v);
         });
-    m_collisionLoss += before - kineticEnergy(m_bodies);
+    // What the contacts took (dissipation.cpp): friction and inelastic bounces.
+    m_collisionLoss += contactLoss(m_bodies, s.velocityAtStart, s.angularVelocityAtStart,
+                                   s.velocityBefore, s.angularVelocityBefore, impact);
 
     m_profile.solved = solver.constraintCount();
     m_profile.positionPasses = solver.solvePositions(m_contactSettings.positionIterations);
@@ -427,6 +441,9 @@ void World::updateDiagnostics()
 {
     m_diagnostics = computeDiagnostics(m_def, m_bodies, m_springs);
     m_diagnostics.collisionLoss = m_collisionLoss;
+    m_diagnostics.dragLoss = m_dragLoss;
+    m_diagnostics.dampingLoss = m_dampingLoss;
+    m_diagnostics.dissipated = m_collisionLoss + m_dragLoss + m_dampingLoss;
     int count = 0;
     for (const Contact& c : m_contacts)
         for (int i = 0; i < c.manifold.pointCount; ++i)

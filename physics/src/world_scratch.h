@@ -22,6 +22,9 @@ struct World::Scratch {
     std::vector<Contact> previous;
     Eigen::VectorXd q, v;
     Eigen::VectorXd shake; ///< positions before the joint projection (symplectic Euler)
+    /// The state at the start of the step, the mean velocity and the midpoint, for the
+    /// energy that drag and dampers take (dissipation.cpp).
+    Eigen::VectorXd q0, v0, meanVelocity, midpoint;
     std::vector<Vec2> velocityBefore, velocityAtStart;
     std::vector<double> angularVelocityBefore, angularVelocityAtStart;
     ContactSolver solver;

@@ -116,7 +116,10 @@ void World::integrateDirect()
     forces.stop();
 
     // Integration: v1 = v0 + h a, then x1 = x0 + h v1. Kinematic bodies keep their velocity.
+    // Drag's share of the change in kinetic energy, h F_drag . (v0 + v1) / 2, is what it took
+    // (dissipation.cpp).
     StageTimer integration(m_profile, Stage::Integration);
+    double dragLoss = 0.0;
     ++m_evaluations;
     m_profile.directIntegration = true;
     for (size_t i = 0; i < n; ++i) {
@@ -125,11 +128,17 @@ void World::integrateDirect()
             continue;
         const Vec2 a = b.isDynamic() ? s.acceleration[i] : Vec2::Zero();
         const double alpha = b.isDynamic() ? s.angularAcceleration[i] : 0.0;
+        const Vec2 v0 = b.velocity;
+        const double w0 = b.angularVelocity;
         b.velocity = b.velocity + h * a;
         b.angularVelocity = b.angularVelocity + h * alpha;
+        if (drag != 0.0 && b.isDynamic())
+            dragLoss += drag * (b.mass * v0.dot(0.5 * (v0 + b.velocity)) +
+                                b.inertia * w0 * 0.5 * (w0 + b.angularVelocity));
         b.position = b.position + h * b.velocity;
         b.angle = b.angle + h * b.angularVelocity;
     }
+    m_dragLoss += h * dragLoss;
 }
 
 void World::setGravity(const Vec2& g)

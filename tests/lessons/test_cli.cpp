@@ -302,7 +302,7 @@ void TestCli::runWritesHeaders()
     const QList<QByteArray> d = readAll(diagnostics).split('\n');
     QCOMPARE(t.front(), QByteArray("step,t,body,x,y,angle,vx,vy,omega"));
     QCOMPARE(d.front(), QByteArray("step,t,kinetic,potential,total,px,py,angular_momentum,"
-                                   "contacts"));
+                                   "contacts,dissipated,drift"));
     QVERIFY(t[1].startsWith("0,0,"));
     QVERIFY(d[1].startsWith("0,0,"));
     QVERIFY(d[d.size() - 2].startsWith("50,"));

@@ -73,6 +73,9 @@ private slots:
     void runFailsOnUnwritableOutput();
     void stepsForTime_data();
     void stepsForTime();
+    void welcomeDriftIsTheErrorAlone();
+    void conservativeDriftIsTheEnergyChange_data();
+    void conservativeDriftIsTheEnergyChange();
     void satReport();
     void satReportRejects_data();
     void satReportRejects();

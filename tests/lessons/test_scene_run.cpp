@@ -110,7 +110,7 @@ void TestLessons::runWritesHeadersAndRows()
     QCOMPARE(diagnostics.size(), 1 + 4 + 1);
     QVERIFY(diagnostics[1].startsWith("0,0,0,"));
     QVERIFY(diagnostics[4].startsWith("10,"));
-    QCOMPARE(diagnostics[4].count(','), 8);
+    QCOMPARE(diagnostics[4].count(','), 10);
 }
 
 void TestLessons::runIsDeterministic()

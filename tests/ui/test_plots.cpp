@@ -39,6 +39,7 @@ Sample sampleAt(double t)
     s.py = -0.25 * t + 1.0 / 3.0;
     s.angularMomentum = 0.1 + t * t;
     s.driftPercent = 1e-7 * t;
+    s.dissipated = 0.125 * t;
     return s;
 }
 
@@ -58,6 +59,10 @@ double field(const Sample& s, const QString& name)
         return s.angularMomentum;
     if (name == "drift")
         return s.driftPercent;
+    if (name == "dissipated")
+        return s.dissipated;
+    if (name == "balance")
+        return s.total + s.dissipated;
     qFatal("unknown sample field %s", qPrintable(name));
 }
 
@@ -162,11 +167,14 @@ void TestPlots::seriesReceiveSamples_data()
     QTest::addColumn<QString>("kind");
     QTest::addColumn<QStringList>("fields");
     QTest::addColumn<QStringList>("headers");
-    QTest::newRow("energy") << "energy" << QStringList{"kinetic", "potential", "total"}
-                            << QStringList{"kinetic [J]", "potential [J]", "total [J]"};
+    QTest::newRow("energy") << "energy"
+                            << QStringList{"kinetic", "potential", "total", "dissipated", "balance"}
+                            << QStringList{"kinetic [J]", "potential [J]", "total [J]",
+                                           "dissipated [J]", "total + dissipated [J]"};
     QTest::newRow("momentum") << "momentum" << QStringList{"px", "py", "L"}
                               << QStringList{"px [kg m/s]", "py [kg m/s]", "L [kg m²/s]"};
-    QTest::newRow("drift") << "drift" << QStringList{"drift"} << QStringList{"energy drift [%]"};
+    QTest::newRow("drift") << "drift" << QStringList{"drift"}
+                           << QStringList{"energy drift (numerical error) [%]"};
 }
 
 void TestPlots::seriesReceiveSamples()
@@ -340,10 +348,11 @@ void TestPlots::exportWritesValidFile()
     }
     case ExportFormat::Csv: {
         const QList<QByteArray> lines = bytes.trimmed().split('\n');
-        QCOMPARE(lines.first(), QByteArray("t [s],kinetic [J],potential [J],total [J]"));
+        QCOMPARE(lines.first(), QByteArray("t [s],kinetic [J],potential [J],total [J],dissipated "
+                                           "[J],total + dissipated [J]"));
         QCOMPARE(lines.size(), 1 + 150);
         for (const QByteArray& line : lines)
-            QCOMPARE(line.count(','), 3);
+            QCOMPARE(line.count(','), 5);
         break;
     }
     }

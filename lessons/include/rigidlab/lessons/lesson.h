@@ -35,7 +35,7 @@ struct Measure {
         AngularVelocity, ///< omega of the body at `time` [rad/s]
         PositionX,       ///< x of the body origin at `time` [m]
         PositionY,       ///< y of the body origin at `time` [m]
-        EnergyDrift,     ///< (E - E0) / |E0| at `time` [%]
+        EnergyDrift,     ///< (E + dissipated - E0) / |E0| at `time` [%]
         MomentumX,       ///< total px at `time` [kg m/s]
         MomentumY,       ///< total py at `time` [kg m/s]
     };

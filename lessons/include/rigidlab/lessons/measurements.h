@@ -95,8 +95,9 @@ private:
     std::vector<double> m_lastAngular;         ///< [rad/s]
     std::vector<physics::Vec2> m_lastPosition; ///< centres of mass [m]
     std::vector<std::pair<physics::BodyId, physics::BodyId>> m_touching;
-    bool m_resync = false;                   ///< the next observe() only reads the state
-    double m_energy0 = 0, m_energyScale = 1; ///< [J]
+    bool m_resync = false; ///< the next observe() only reads the state
+    /// Total minus dissipated energy at the start, and what the drift is relative to [J].
+    double m_energy0 = 0, m_energyScale = 1;
 };
 
 struct Verdict {

@@ -16,8 +16,14 @@ struct Diagnostics {
     double total = 0;                ///< kinetic + potential [J]
     Vec2 momentum = Vec2::Zero();    ///< linear momentum [kg m/s]
     double angularMomentum = 0;      ///< about the world origin [kg m^2/s]
-    double collisionLoss = 0;        ///< kinetic energy taken by contacts so far [J]
-    int contacts = 0;                ///< contact points this step
+    // Energy taken out of the bodies by what is not conservative, so far (world start). What
+    // a kinematic body pushes in through a contact counts as a negative loss. So that
+    // total + dissipated - (total at the start) is the integrator's error alone.
+    double collisionLoss = 0; ///< taken by contacts, friction included (dissipation.cpp) [J]
+    double dragLoss = 0;      ///< taken by linear drag [J]
+    double dampingLoss = 0;   ///< taken by the dampers of springs [J]
+    double dissipated = 0;    ///< collisionLoss + dragLoss + dampingLoss [J]
+    int contacts = 0;         ///< contact points this step
 };
 
 } // namespace rigidlab::physics

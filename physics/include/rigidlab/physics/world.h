@@ -200,7 +200,9 @@ private:
     double m_time = 0;
     long long m_steps = 0;
     long long m_evaluations = 0;
-    double m_collisionLoss = 0;
+    double m_collisionLoss = 0; ///< see Diagnostics [J]
+    double m_dragLoss = 0;      ///< see Diagnostics [J]
+    double m_dampingLoss = 0;   ///< see Diagnostics [J]
     Diagnostics m_diagnostics;
     DivergenceSettings m_divergenceSettings;
     std::optional<Divergence> m_divergence;
