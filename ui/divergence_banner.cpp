@@ -1,6 +1,8 @@
 #include "divergence_banner.h"
 
+#include "divergence_text.h"
 #include "simulation_controller.h"
+#include "theme.h"
 
 #include "rigidlab/lessons/scene_loader.h"
 
@@ -14,9 +16,18 @@ DivergenceBanner::DivergenceBanner(SimulationController& controller, QWidget* pa
     : QWidget(parent), m_controller(controller), m_text(new QLabel(this))
 {
     setObjectName(QStringLiteral("divergenceBanner"));
+    // An opaque background of its own, from the palette: a plain QWidget paints no
+    // style-sheet background (that needs WA_StyledBackground), and the world behind is
+    // almost white. The label's text colour comes from the same palette.
+    QPalette colours = palette();
+    colours.setColor(QPalette::Window, theme::alertBackground());
+    colours.setColor(QPalette::WindowText, theme::alertText());
+    setPalette(colours);
     setAutoFillBackground(true);
-    setStyleSheet(QStringLiteral("#divergenceBanner { background: #c0392b; } "
-                                 "QLabel { color: white; font-weight: bold; }"));
+    m_text->setPalette(colours);
+    QFont bold = m_text->font();
+    bold.setBold(true);
+    m_text->setFont(bold);
     m_text->setWordWrap(true);
     auto* reset = new QPushButton(tr("Reset"), this);
     auto* halve = new QPushButton(tr("Halve dt"), this);
@@ -47,8 +58,7 @@ void DivergenceBanner::refresh()
     if (d && m_controller.isRunning())
         m_controller.setRunning(false);
     if (d)
-        m_text->setText(tr("The simulation %1. Stopped here rather than draw garbage.")
-                            .arg(QString::fromStdString(d->message())));
+        m_text->setText(divergenceSentence(*d));
     // dt cannot go below a scene file's smallest: there the button has nothing left to do.
     if (auto* halve = findChild<QPushButton*>(QStringLiteral("halveDt")))
         halve->setEnabled(0.5 * m_controller.world().def().dt >= lessons::kMinDt);
