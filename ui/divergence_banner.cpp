@@ -16,15 +16,20 @@ DivergenceBanner::DivergenceBanner(SimulationController& controller, QWidget* pa
     : QWidget(parent), m_controller(controller), m_text(new QLabel(this))
 {
     setObjectName(QStringLiteral("divergenceBanner"));
-    // An opaque background of its own, from the palette: a plain QWidget paints no
-    // style-sheet background (that needs WA_StyledBackground), and the world behind is
-    // almost white. The label's text colour comes from the same palette.
+    // An opaque background of its own, from the palette. A plain QWidget paints no
+    // style-sheet background (that needs WA_StyledBackground), and autoFillBackground paints
+    // the background role, which a child inherits from its parent: from the view, Base, the
+    // system's white (or black). So both roles are set here, on the banner and its text.
     QPalette colours = palette();
     colours.setColor(QPalette::Window, theme::alertBackground());
     colours.setColor(QPalette::WindowText, theme::alertText());
     setPalette(colours);
+    setBackgroundRole(QPalette::Window);
+    setForegroundRole(QPalette::WindowText);
     setAutoFillBackground(true);
     m_text->setPalette(colours);
+    m_text->setBackgroundRole(QPalette::Window);
+    m_text->setForegroundRole(QPalette::WindowText);
     QFont bold = m_text->font();
     bold.setBold(true);
     m_text->setFont(bold);
