@@ -1,6 +1,8 @@
 #include "divergence_banner.h"
 
+#include "divergence_text.h"
 #include "simulation_controller.h"
+#include "theme.h"
 
 #include "rigidlab/lessons/scene_loader.h"
 
@@ -14,9 +16,23 @@ DivergenceBanner::DivergenceBanner(SimulationController& controller, QWidget* pa
     : QWidget(parent), m_controller(controller), m_text(new QLabel(this))
 {
     setObjectName(QStringLiteral("divergenceBanner"));
+    // An opaque background of its own, from the palette. A plain QWidget paints no
+    // style-sheet background (that needs WA_StyledBackground), and autoFillBackground paints
+    // the background role, which a child inherits from its parent: from the view, Base, the
+    // system's white (or black). So both roles are set here, on the banner and its text.
+    QPalette colours = palette();
+    colours.setColor(QPalette::Window, theme::alertBackground());
+    colours.setColor(QPalette::WindowText, theme::alertText());
+    setPalette(colours);
+    setBackgroundRole(QPalette::Window);
+    setForegroundRole(QPalette::WindowText);
     setAutoFillBackground(true);
-    setStyleSheet(QStringLiteral("#divergenceBanner { background: #c0392b; } "
-                                 "QLabel { color: white; font-weight: bold; }"));
+    m_text->setPalette(colours);
+    m_text->setBackgroundRole(QPalette::Window);
+    m_text->setForegroundRole(QPalette::WindowText);
+    QFont bold = m_text->font();
+    bold.setBold(true);
+    m_text->setFont(bold);
     m_text->setWordWrap(true);
     auto* reset = new QPushButton(tr("Reset"), this);
     auto* halve = new QPushButton(tr("Halve dt"), this);
@@ -47,8 +63,7 @@ void DivergenceBanner::refresh()
     if (d && m_controller.isRunning())
         m_controller.setRunning(false);
     if (d)
-        m_text->setText(tr("The simulation %1. Stopped here rather than draw garbage.")
-                            .arg(QString::fromStdString(d->message())));
+        m_text->setText(divergenceSentence(*d));
     // dt cannot go below a scene file's smallest: there the button has nothing left to do.
     if (auto* halve = findChild<QPushButton*>(QStringLiteral("halveDt")))
         halve->setEnabled(0.5 * m_controller.world().def().dt >= lessons::kMinDt);

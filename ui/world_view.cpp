@@ -1,13 +1,16 @@
 #include "world_view.h"
 
 #include "body_item.h"
+#include "divergence_text.h"
 #include "plot_widget.h"
 #include "simulation_controller.h"
+#include "theme.h"
 
 #include <QMouseEvent>
 #include <QScrollBar>
 #include <QWheelEvent>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rigidlab::ui {
@@ -270,10 +273,10 @@ void WorldView::drawBackground(QPainter* painter, const QRectF& rect)
     painter->resetTransform();
     painter->setRenderHint(QPainter::Antialiasing, false);
     const QRect device = toDevice.mapRect(rect).toAlignedRect();
-    painter->fillRect(device, QColor(0xfb, 0xfb, 0xf8));
+    painter->fillRect(device, theme::worldBackground());
     // A light grid, 1 m apart (10 m when zoomed far out), so that distances can be read.
     const double step = zoom() < 12 ? 10.0 : (zoom() > 400 ? 0.1 : 1.0);
-    painter->setPen(QPen(QColor(0xe2, 0xe2, 0xdc), 0));
+    painter->setPen(QPen(theme::worldGrid(), 0));
     const double x0 = std::floor(rect.left() / step) * step;
     const double y0 = std::floor(rect.top() / step) * step;
     for (double x = x0; x <= rect.right(); x += step) {
@@ -285,6 +288,27 @@ void WorldView::drawBackground(QPainter* painter, const QRectF& rect)
         painter->drawLine(device.left(), py, device.right(), py);
     }
     painter->restore();
+}
+
+int WorldView::worldCount() const
+{
+    return static_cast<int>(m_controller.variantLabels().size());
+}
+
+bool WorldView::stoppedWorld(int world) const
+{
+    const physics::World& w = world == 0 ? m_controller.world() : m_controller.variant(world - 1);
+    return w.divergence().has_value();
+}
+
+QString WorldView::legendLine(int world) const
+{
+    const QString name = m_controller.variantLabels().value(world);
+    const physics::World& w = world == 0 ? m_controller.world() : m_controller.variant(world - 1);
+    if (const auto& d = w.divergence())
+        return world == 0 ? tr("%1 (solid): %2").arg(name, divergenceLabel(*d))
+                          : tr("%1 (outline): %2").arg(name, divergenceLabel(*d));
+    return world == 0 ? tr("%1 (solid)").arg(name) : tr("%1 (outline)").arg(name);
 }
 
 void WorldView::drawForeground(QPainter* painter, const QRectF&)
@@ -300,7 +324,7 @@ void WorldView::drawForeground(QPainter* painter, const QRectF&)
             nice = m * exp10;
     const int len = static_cast<int>(nice * zoom());
     const QPoint o(16, viewport()->height() - 18);
-    painter->setPen(QPen(QColor(40, 40, 40), 2));
+    painter->setPen(QPen(theme::worldText(), 2));
     painter->drawLine(o, o + QPoint(len, 0));
     painter->drawLine(o + QPoint(0, -5), o + QPoint(0, 5));
     painter->drawLine(o + QPoint(len, -5), o + QPoint(len, 5));
@@ -311,16 +335,38 @@ void WorldView::drawForeground(QPainter* painter, const QRectF&)
         nice >= 1 ? QStringLiteral("%1 m").arg(nice) : QStringLiteral("%1 cm").arg(nice * 100);
     painter->drawText(o + QPoint(len + 8, 5), label);
 
-    // Which colour is which world, when worlds are compared.
-    const QStringList& labels = m_controller.variantLabels();
+    // Which colour is which world, when worlds are compared; a stopped one says why.
     const QFontMetrics fm(f);
-    int y = 12 + fm.ascent();
-    for (int i = 0; i < labels.size(); ++i) {
-        painter->fillRect(QRect(14, y - fm.ascent() + 2, 22, fm.ascent() - 4), plotColor(i));
-        painter->setPen(QColor(30, 30, 30));
-        painter->drawText(QPoint(42, y), i == 0 ? tr("%1 (solid)").arg(labels[i])
-                                                : tr("%1 (outline)").arg(labels[i]));
-        y += fm.height() + 2;
+    const int width = std::max(120, viewport()->width() - 56);
+    int y = 12;
+    for (int i = 0; i < worldCount(); ++i) {
+        const QString line = legendLine(i);
+        const QRect box = fm.boundingRect(QRect(42, y, width, 10000), Qt::TextWordWrap, line);
+        painter->fillRect(QRect(14, y + 2, 22, fm.ascent() - 4), plotColor(i));
+        painter->setPen(stoppedWorld(i) ? theme::worldAlertText() : theme::worldText());
+        painter->drawText(box, Qt::TextWordWrap, line);
+        y = box.bottom() + 3;
+    }
+    // Beside each stopped ghost, in a box of the background's colour (it may lie over bodies
+    // or off the view, so it is kept inside).
+    for (int v = 0; v < m_controller.variantCount(); ++v) {
+        const auto& d = m_controller.variant(v).divergence();
+        const auto ghost = std::find_if(m_ghosts.begin(), m_ghosts.end(),
+                                        [v](const Ghost& g) { return g.variant == v; });
+        if (!d || ghost == m_ghosts.end())
+            continue;
+        const QString label = tr("%1 stopped").arg(m_controller.variantLabels().value(v + 1));
+        QRect box = fm.boundingRect(label).adjusted(-4, -2, 4, 2);
+        const QPoint at = mapFromScene(ghost->item->sceneBoundingRect().topRight());
+        box.moveTopLeft(at + QPoint(6, -box.height()));
+        const QRect inside = viewport()->rect().adjusted(4, y, -4, -30);
+        box.moveLeft(std::clamp(box.left(), inside.left(),
+                                std::max(inside.left(), inside.right() - box.width())));
+        box.moveTop(std::clamp(box.top(), inside.top(),
+                               std::max(inside.top(), inside.bottom() - box.height())));
+        painter->fillRect(box, theme::worldLabelBox());
+        painter->setPen(theme::worldAlertText());
+        painter->drawText(box, Qt::AlignCenter, label);
     }
     painter->restore();
 }

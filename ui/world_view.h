@@ -27,6 +27,15 @@ public:
     /// Pixels per metre now.
     double zoom() const { return transform().m11(); }
 
+    /// The worlds the legend names (0 when nothing is compared): 0 the main one, then the
+    /// compared ones in order.
+    int worldCount() const;
+    /// The legend's line for a world: its name and how it is drawn, and, once it stopped,
+    /// when and why (the ghost also gets a label of its own).
+    QString legendLine(int world) const;
+    /// Whether that world stopped with a diagnosis.
+    bool stoppedWorld(int world) const;
+
 public slots:
     void fitScene();
     void rebuild();

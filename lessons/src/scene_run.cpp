@@ -1,6 +1,7 @@
 #include "rigidlab/lessons/scene_run.h"
 
 #include "rigidlab/lessons/atomic_file.h"
+#include "rigidlab/lessons/divergence_message.h"
 #include "rigidlab/lessons/scene_loader.h"
 
 #include <QElapsedTimer>
@@ -403,8 +404,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
             return fail(RunStatus::NonFinite,
                         QStringLiteral("the simulation blew up at step %1: %2; nothing was "
                                        "written. Try a smaller --dt or another --integrator.")
-                            .arg(QString::number(diverged->step),
-                                 QString::fromStdString(diverged->message())));
+                            .arg(QString::number(diverged->step), divergenceMessage(*diverged)));
         }
         // Finite bodies can still give an infinite energy (a speed whose square overflows,
         // two attracting bodies at one point), so both are checked.

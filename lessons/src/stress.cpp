@@ -3,6 +3,8 @@
 
 #include "rigidlab/lessons/stress.h"
 
+#include "rigidlab/lessons/divergence_message.h"
+
 #include "rigidlab/physics/shape.h"
 #include "rigidlab/physics/world.h"
 
@@ -102,7 +104,7 @@ void judge(StressRow& row, const World& w, const Outcome& o, const Judge& j)
     row.penetration = o.penetration;
     if (o.divergence) {
         row.verdict = QStringLiteral("diverged at t = ") + seconds(o.divergence->time);
-        row.diagnosis = QString::fromStdString(o.divergence->message());
+        row.diagnosis = divergenceMessage(*o.divergence);
     } else if (j.tunnelled && j.tunnelled(w)) {
         row.verdict = QStringLiteral("tunnelled");
     } else if (o.penetration > j.penetrationLimit) {

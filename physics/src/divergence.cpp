@@ -5,35 +5,28 @@
 
 #include "rigidlab/physics/world.h"
 
-#include <charconv>
 #include <cmath>
 
 namespace rigidlab::physics {
 
 namespace {
 
-std::string number(double value)
+/// The first part of a body's state that is no longer finite, if any.
+std::optional<Divergence::Quantity> nonFinitePart(const Body& b)
 {
-    char text[32];
-    const auto end = std::to_chars(text, text + sizeof text, value, std::chars_format::general, 6);
-    return std::string(text, end.ptr);
+    using Q = Divergence::Quantity;
+    if (!isFinite(b.position))
+        return Q::Position;
+    if (!std::isfinite(b.angle))
+        return Q::Angle;
+    if (!isFinite(b.velocity))
+        return Q::Velocity;
+    if (!std::isfinite(b.angularVelocity))
+        return Q::AngularVelocity;
+    return std::nullopt;
 }
 
 } // namespace
-
-std::string Divergence::message() const
-{
-    std::string where = "diverged at t = " + number(time) + " s (step " + std::to_string(step) +
-                        ", dt = " + number(dt) + " s, " + std::string(integratorName(integrator)) +
-                        "): ";
-    if (kind == Kind::NonFinite)
-        return where + "body \"" + bodyName + "\": " + quantity + " is no longer finite";
-    std::string line = where + "the " + quantity + " grew to " + number(value) +
-                       " J, past the bound of " + number(bound) + " J";
-    if (body != kWorld)
-        line += " (body \"" + bodyName + "\" holds the most kinetic energy)";
-    return line;
-}
 
 void World::rememberStartEnergy()
 {
@@ -59,16 +52,11 @@ void World::checkDivergence()
     d.integrator = m_def.integrator;
     for (size_t i = 0; i < m_bodies.size(); ++i) {
         const Body& b = m_bodies[i];
-        const char* quantity = !isFinite(b.position)               ? "position"
-                               : !std::isfinite(b.angle)           ? "angle"
-                               : !isFinite(b.velocity)             ? "velocity"
-                               : !std::isfinite(b.angularVelocity) ? "angular velocity"
-                                                                   : nullptr;
-        if (quantity) {
+        if (const auto quantity = nonFinitePart(b)) {
             d.kind = Divergence::Kind::NonFinite;
             d.body = static_cast<BodyId>(i);
             d.bodyName = b.name;
-            d.quantity = quantity;
+            d.quantity = *quantity;
             m_divergence = d;
             return;
         }
@@ -91,9 +79,10 @@ void World::checkDivergence()
                 d.bodyName = b.name;
             }
         }
-        d.quantity = "total energy";
+        d.quantity = Divergence::Quantity::TotalEnergy;
         d.value = energy;
         d.bound = bound;
+        d.start = m_energyStart.value_or(energy);
         m_divergence = d;
     }
 }

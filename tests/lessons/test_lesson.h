@@ -110,4 +110,8 @@ private slots:
     void sequentialImpulseStackMovesLess();
     void billiardsBreakConservesMomentum();
     void stiffSpringsDivergeWhereTheoryPredicts();
+    void worldsStopWhereTheTextSays_data();
+    void worldsStopWhereTheTextSays();
+    void stiffSpringsEulerTenfoldWhereTheorySays();
+    void divergenceMessageWords();
 };

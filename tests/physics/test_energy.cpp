@@ -7,6 +7,8 @@
 
 #include <rigidlab/physics/world.h>
 
+#include "test_main.h"
+
 #include <QTest>
 
 #include <algorithm>
@@ -199,5 +201,5 @@ void TestEnergy::nothingDissipatesNothingCounted()
     QCOMPARE(d.dissipated, 0.0);
 }
 
-QTEST_GUILESS_MAIN(TestEnergy)
+RIGIDLAB_TEST_GUILESS_MAIN(TestEnergy)
 #include "test_energy.moc"

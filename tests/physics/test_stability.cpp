@@ -180,13 +180,14 @@ void TestStability::divergenceDiagnosed()
     const Divergence d = *w.divergence();
     QCOMPARE(d.kind, Divergence::Kind::EnergyGrowth);
     QCOMPARE(d.body, 0);
-    QCOMPARE(d.quantity, std::string("total energy"));
+    QCOMPARE(d.quantity, Divergence::Quantity::TotalEnergy);
     QCOMPARE(d.dt, 1e-3);
     QVERIFY(std::isfinite(w.body(0).position.x()));
-    const std::string m = d.message();
-    QVERIFY2(m.find("euler") != std::string::npos && m.find("\"mass\"") != std::string::npos &&
-                 m.find("dt = 0.001 s") != std::string::npos,
-             m.c_str());
+    // The diagnosis carries what the words need: integrator, body, and the energies.
+    QCOMPARE(d.integrator, IntegratorKind::Euler);
+    QCOMPARE(d.bodyName, std::string("mass"));
+    QVERIFY2(d.value > d.bound && d.bound > d.start && d.start > 0,
+             qPrintable(QStringLiteral("%1 %2 %3").arg(d.value).arg(d.bound).arg(d.start)));
     // The world stays stopped where it diverged.
     const long long steps = w.stepCount();
     w.step();
@@ -205,8 +206,8 @@ void TestStability::nonFiniteDiagnosed()
     QCOMPARE(w.divergence()->kind, Divergence::Kind::NonFinite);
     QCOMPARE(w.divergence()->bodyName, std::string("ball"));
     QCOMPARE(w.divergence()->step, 2);
-    QVERIFY2(w.divergence()->message().find("no longer finite") != std::string::npos,
-             w.divergence()->message().c_str());
+    // Verlet moves the position first, with the infinite acceleration.
+    QCOMPARE(w.divergence()->quantity, Divergence::Quantity::Position);
 }
 
 void TestStability::bulletTunnelsOnlyWithoutContinuous()

@@ -12,6 +12,8 @@
 
 #include "rigidlab/lessons/limits.h"
 
+#include "test_main.h"
+
 #include <QLineEdit>
 #include <QLocale>
 #include <QSignalSpy>
@@ -96,13 +98,7 @@ class TestFields : public QObject {
     Q_OBJECT
 
 private slots:
-    void initTestCase()
-    {
-        QCoreApplication::setOrganizationName(QStringLiteral("RigidLabTest"));
-        QCoreApplication::setApplicationName(QStringLiteral("test_fields"));
-        QStandardPaths::setTestModeEnabled(true);
-        m_locale = QLocale();
-    }
+    void initTestCase() { m_locale = QLocale(); }
 
     void cleanup() { QLocale::setDefault(m_locale); }
 
@@ -552,5 +548,5 @@ private:
     QLocale m_locale;
 };
 
-QTEST_MAIN(TestFields)
+RIGIDLAB_TEST_MAIN(TestFields)
 #include "test_fields.moc"

@@ -24,6 +24,7 @@
 #include "plot_widget.h"
 #include "simulation_controller.h"
 
+#include "rigidlab/lessons/divergence_message.h"
 #include "rigidlab/lessons/scene.h"
 #include "rigidlab/lessons/scene_loader.h"
 
@@ -222,7 +223,7 @@ private slots:
                       controller.world().diagnostics().total);
             }
             if (const auto& d = controller.world().divergence())
-                QFAIL(d->message().c_str());
+                QFAIL(qPrintable(lessons::divergenceMessage(*d)));
         }
         QCoreApplication::processEvents();
         const long rssEnd = residentBytes();

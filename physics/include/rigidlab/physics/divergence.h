@@ -3,6 +3,9 @@
 // body's state is finite and that the total energy has not grown past a bound; the first
 // failure is kept as a diagnosis (which body, which quantity, when, with which dt and
 // integrator) and the world takes no more steps until it is reset.
+//
+// The diagnosis is data only, no words: the window words it in the user's language
+// (ui/divergence_text.h) and the command line in English (lessons/divergence_message.h).
 
 #include "rigidlab/physics/forces.h"
 #include "rigidlab/physics/integrator.h"
@@ -26,21 +29,25 @@ struct Divergence {
         NonFinite,    ///< a body's position, angle or velocity is NaN or infinite
         EnergyGrowth, ///< the total energy grew past the bound
     };
+    /// What stopped being a simulation.
+    enum class Quantity {
+        Position,        ///< a body's position [m]
+        Angle,           ///< a body's angle [rad]
+        Velocity,        ///< a body's velocity [m/s]
+        AngularVelocity, ///< a body's angular velocity [rad/s]
+        TotalEnergy,     ///< the world's total energy [J]
+    };
     Kind kind = Kind::NonFinite;
     BodyId body = kWorld; ///< the body, or kWorld when the energy of the world as a whole
-    std::string bodyName; ///< its scene id
-    std::string quantity; ///< "position", "angle", "velocity", "angular velocity", "total energy"
-    double value = 0;     ///< the quantity's value (for energy [J])
-    double bound = 0;     ///< for energy: the largest energy allowed [J]
-    double time = 0;      ///< at the end of the step that diverged [s]
-    long long step = 0;   ///< that step's number
-    double dt = 0;        ///< [s]
+    std::string bodyName; ///< its scene id (data from the scene, not words)
+    Quantity quantity = Quantity::Position;
+    double value = 0;   ///< for energy: the total energy at the step that diverged [J]
+    double bound = 0;   ///< for energy: the largest energy allowed [J]
+    double start = 0;   ///< for energy: the total energy at the first step [J]
+    double time = 0;    ///< at the end of the step that diverged [s]
+    long long step = 0; ///< that step's number
+    double dt = 0;      ///< [s]
     IntegratorKind integrator = IntegratorKind::SymplecticEuler;
-
-    /// One line for people, the same words in the CLI and the window:
-    /// `diverged at t = 0.125 s (step 125, dt = 0.001 s, euler): body "ball": velocity is no
-    /// longer finite`.
-    std::string message() const;
 };
 
 } // namespace rigidlab::physics

@@ -1,0 +1,60 @@
+#include "theme.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigidlab::ui::theme {
+
+QColor worldBackground()
+{
+    return QColor(0xfb, 0xfb, 0xf8);
+}
+
+QColor worldGrid()
+{
+    return QColor(0xe2, 0xe2, 0xdc);
+}
+
+QColor worldText()
+{
+    return QColor(0x1e, 0x1e, 0x1e); // 16:1 on the background
+}
+
+QColor worldAlertText()
+{
+    return QColor(0xa3, 0x1f, 0x14); // 7:1 on the background
+}
+
+QColor worldLabelBox()
+{
+    return worldBackground();
+}
+
+QColor alertBackground()
+{
+    return QColor(0xa3, 0x1f, 0x14); // a darker red than #c0392b, which gives white only 5.4:1
+}
+
+QColor alertText()
+{
+    return QColor(Qt::white); // 7:1 on the banner
+}
+
+double relativeLuminance(const QColor& c)
+{
+    // sRGB to linear light (IEC 61966-2-1), then the Rec. 709 weights.
+    auto linear = [](double v) {
+        return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
+    };
+    const QColor rgb = c.toRgb();
+    return 0.2126 * linear(rgb.redF()) + 0.7152 * linear(rgb.greenF()) +
+           0.0722 * linear(rgb.blueF());
+}
+
+double contrastRatio(const QColor& a, const QColor& b)
+{
+    const double la = relativeLuminance(a), lb = relativeLuminance(b);
+    return (std::max(la, lb) + 0.05) / (std::min(la, lb) + 0.05);
+}
+
+} // namespace rigidlab::ui::theme

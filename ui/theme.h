@@ -1,0 +1,37 @@
+#pragma once
+// The colours of everything the lab draws over the world, in one place, with the contrast
+// they are chosen for. The world's background is the lab's own (it does not follow the
+// system palette), so text drawn over it is dark in every palette; the banner paints its own
+// opaque background. A presentation palette can replace these later, here only.
+//
+// Contrast follows WCAG 2.x: relative luminance of sRGB colours, ratio (L1 + 0.05)/(L2 + 0.05)
+// of the lighter to the darker; 4.5:1 is the least for normal text (success criterion 1.4.3).
+
+#include <QColor>
+
+namespace rigidlab::ui::theme {
+
+/// Text needs at least this contrast against what lies behind it (WCAG 1.4.3, level AA).
+inline constexpr double kMinTextContrast = 4.5;
+
+/// The world's background and its grid lines.
+QColor worldBackground();
+QColor worldGrid();
+/// Text and the scale bar drawn over the world (legend, scale, labels at ghosts).
+QColor worldText();
+/// A stopped world's diagnosis over the world: dark red, readable on the background.
+QColor worldAlertText();
+/// The label box behind a diagnosis drawn at a ghost: the world's background, opaque, so the
+/// text stays readable over bodies and grid lines.
+QColor worldLabelBox();
+
+/// The divergence banner: its opaque background and its text.
+QColor alertBackground();
+QColor alertText();
+
+/// WCAG relative luminance of an sRGB colour, 0 (black) to 1 (white); alpha is ignored.
+double relativeLuminance(const QColor& c);
+/// WCAG contrast ratio of two colours, from 1 (the same) to 21 (black on white).
+double contrastRatio(const QColor& a, const QColor& b);
+
+} // namespace rigidlab::ui::theme
