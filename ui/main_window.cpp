@@ -703,7 +703,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
 {
     // Asked to close while a dialog's answer is still to be acted upon (an export's folder):
     // close right after it, so that nothing the user chose is dropped (modal_scope.h).
-    if (false) {
+    if (ModalScope::active()) {
         event->ignore();
         if (!m_closePending) {
             m_closePending = true;
