@@ -591,10 +591,13 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
         m_compare->setTitleShown(false);
         m_compare->setObjectName(compareDrift && !compareEnergy ? QStringLiteral("compare-drift")
                                                                 : QStringLiteral("compare-energy"));
-        if (compareDrift && !compareEnergy)
+        if (compareDrift && !compareEnergy) {
             m_compare->setYAxisLabel(tr("drift (E − E₀)/|E₀|"), QStringLiteral("%"));
-        else
+            m_compare->setValueScale(YAxis::Left, kDriftScalePercent);
+        } else {
             m_compare->setYAxisLabel(tr("total energy E"), QStringLiteral("J"));
+            m_compare->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
+        }
         for (int i = 0; i < static_cast<int>(labels.size()) && i < Sample::kMaxVariants; ++i) {
             const auto k = static_cast<std::size_t>(i);
             if (compareDrift && !compareEnergy)

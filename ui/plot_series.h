@@ -1,8 +1,20 @@
 #pragma once
-// One curve of a live plot, kept within a point budget however long the run.
+// One curve of a live plot, kept within a point budget however long the run, and handed to
+// its QCPGraph decimated to the pixels it is drawn on.
 //
-// The points live in the QCPGraph's own container: there is no second copy. Two rules keep
-// their number bounded:
+// The series keeps its points (what the CSV export writes) apart from what it hands its
+// graphs to draw (draw()). Where there is at most a point per pixel column of the time axis,
+// the graph gets them as they are. Where there are more, a line through them fills, in each
+// column, the pixels from their lowest to their highest: the graph gets the highest point of
+// each column and a second graph, filled up to it, the lowest. That band covers the pixels
+// the line would, and costs the same whatever the values: a stroked zigzag of a few thousand
+// full-height segments (Verlet's energy, rounding noise on a tight axis) took the painter
+// tens of milliseconds per replot, the two edges of a band take well under one.
+//
+//   dense:   ____/\/\/\/\/\____     graph: highest per column;
+//                \/\/\/\/\/         band: lowest per column, filled up to the graph.
+//
+// Two rules keep the number of points kept bounded:
 //  - the owner trims what scrolled out of the window with removeBefore();
 //  - a curve that grows past its budget drops every other point, and from then on keeps only
 //    one incoming point in `stride`. Thinning the incoming points too keeps the density even
@@ -20,6 +32,7 @@
 #include <QString>
 
 #include <functional>
+#include <vector>
 
 class QCPGraph;
 
@@ -28,17 +41,25 @@ namespace rigidlab::ui {
 /// Which value axis a series is drawn against.
 enum class YAxis { Left, Right };
 
+/// A point of a series: time [s] and value [unit of the series]; a NaN value is a gap.
+struct PlotPoint {
+    double t = 0;
+    double v = 0;
+};
+
 class PlotSeries {
 public:
     /// Reads the series' value out of a sample; empty for a series fed point by point.
     using SampleValue = std::function<double(const Sample&)>;
 
-    /// `graph` belongs to its QCustomPlot; the series only adapts it.
-    PlotSeries(QCPGraph* graph, QString name, YAxis axis, SampleValue value);
+    /// `graph` and `band` (the lower edge of a dense curve, not in the legend) belong to
+    /// their QCustomPlot; the series only adapts them.
+    PlotSeries(QCPGraph* graph, QCPGraph* band, QString name, YAxis axis, SampleValue value);
 
     const QString& name() const { return m_name; }
     YAxis axis() const { return m_axis; }
     QCPGraph* graph() const { return m_graph; }
+    QCPGraph* band() const { return m_band; }
     bool isFedBySamples() const { return static_cast<bool>(m_value); }
     double valueOf(const Sample& s) const { return m_value(s); }
 
@@ -52,17 +73,31 @@ public:
     void removeFrom(double t, int budget);
     void clear();
 
-    int size() const;
-    bool isEmpty() const { return size() == 0; }
+    int size() const { return static_cast<int>(m_points.size()); }
+    bool isEmpty() const { return m_points.empty(); }
+    const std::vector<PlotPoint>& points() const { return m_points; }
     double firstKey() const; ///< [s]; the series must not be empty
     double lastKey() const;  ///< [s]; the series must not be empty
     int stride() const { return m_stride; }
+
+    /// The lowest and highest finite value of the points with t in [from, to] [s] (only the
+    /// positive ones if asked, for a log axis). False if there is none.
+    bool valueRange(double from, double to, bool positiveOnly, double& lowest,
+                    double& highest) const;
+    /// Hands the graphs the points to draw for the time range [from, to] [s] spread over
+    /// `columns` pixel columns (on a log time axis if `logKeys`): the points in range and the
+    /// one on either side, as they are if there are at most `columns`, else each column's
+    /// highest to the graph and lowest to the band. A gap (NaN) stays a gap. At most
+    /// 2 * columns + 4 points in each graph, whatever the data.
+    void draw(double from, double to, int columns, bool logKeys) const;
 
 private:
     void decimate();
     void afterRemoval(int budget);
 
-    QCPGraph* m_graph = nullptr; ///< owned by the QCustomPlot
+    QCPGraph* m_graph = nullptr;     ///< owned by the QCustomPlot; holds what is drawn
+    QCPGraph* m_band = nullptr;      ///< owned by the QCustomPlot; a dense curve's lower edge
+    std::vector<PlotPoint> m_points; ///< sorted by t
     QString m_name;
     YAxis m_axis = YAxis::Left;
     SampleValue m_value;

@@ -18,6 +18,7 @@
 #include <QString>
 #include <QWidget>
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -25,6 +26,7 @@
 
 class QCustomPlot;
 class QCPAxis;
+class QCPGraph;
 class QCPItemLine;
 class QCPItemText;
 class QCPTextElement;
@@ -65,6 +67,12 @@ public:
     /// Labels a value axis "quantity [unit]"; the unit also heads the CSV columns.
     void setYAxisLabel(const QString& quantity, const QString& unit, YAxis axis = YAxis::Left);
     QString yAxisUnit(YAxis axis) const;
+    /// What the quantity on a value axis is worth in the scene, in its unit: a variation below
+    /// a billionth of it is rounding noise, drawn flat (see niceRange in plot_range.h). Fixed,
+    /// or read from each sample drained (the scene's momentum, say). Unset, it is 0.
+    void setValueScale(YAxis axis, double scale);
+    void setValueScale(YAxis axis, PlotSeries::SampleValue scale);
+    double valueScale(YAxis axis) const;
 
     /// A series that reads its value from every sample of the source. Returns its index.
     /// Series on the right axis are drawn dashed, and say so in the legend.
@@ -77,6 +85,8 @@ public:
     void appendPoint(int series, double t, double value);
 
     int seriesCount() const { return static_cast<int>(m_series.size()); }
+    /// The graph that draws a series, for styling (pen, scatter); owned by plot().
+    QCPGraph* graph(int series) const;
     QString seriesName(int series) const;
     QString seriesUnit(int series) const;
     /// The points of a series as (t [s], value), oldest first.
@@ -114,6 +124,10 @@ public:
 
     /// The underlying plot, for export and styling. It stays owned by this widget.
     QCustomPlot* plot() const { return m_plot; }
+    /// Hands each graph its points decimated to `columns` pixel columns of the time axis
+    /// shown (see PlotSeries::draw); 0 takes the plot's width on screen. Every replot does
+    /// this first; an export does it for the export's width.
+    void prepareGraphs(int columns = 0);
     /// Wraps the legend into as many columns as fit `widthPx` (the widget's width on screen;
     /// the export size while exporting).
     void fitLegend(int widthPx);
@@ -167,6 +181,8 @@ private:
     std::deque<Mark> m_marks; ///< sorted by t
     QString m_leftUnit;
     QString m_rightUnit;
+    std::array<double, 2> m_valueScale{};                  ///< left, right [unit of the axis]
+    std::array<PlotSeries::SampleValue, 2> m_valueScaleOf; ///< left, right; may be empty
 
     const SampleBuffer* m_source = nullptr;
     std::uint64_t m_cursor = 0;
@@ -188,6 +204,10 @@ private:
 /// A colour for the index-th curve from a palette told apart with any colour vision (it
 /// cycles after 7): one energy curve per integrator, say.
 QColor plotColor(int index);
+
+/// A drift is relative to |E0|: what it is worth is all of it, 100 % (a drift below 1e-7 %
+/// is rounding noise).
+inline constexpr double kDriftScalePercent = 100.0;
 
 /// Kinetic, potential and total energy [J].
 PlotWidget* makeEnergyPlot(QWidget* parent);

@@ -1,5 +1,7 @@
 #include "simulation_controller.h"
 
+#include "step_sampler.h"
+
 #include "rigidlab/lessons/limits.h"
 #include "rigidlab/lessons/scene_loader.h"
 
@@ -11,11 +13,10 @@ namespace rigidlab::ui {
 
 namespace {
 
-constexpr int kFrameIntervalMs = 16;            // about 60 frames per second
-constexpr double kMaxFrameSeconds = 0.1;        // a longer gap (a paused debugger) counts as this
-constexpr double kPhysicsBudgetMs = 12.0;       // physics may take this much of a frame
-constexpr double kSampleInterval = 1.0 / 240.0; // plots need no more than this [s]
-constexpr double kGrabFrequency = 3.0;          // the grab spring's natural frequency [Hz]
+constexpr int kFrameIntervalMs = 16;      // about 60 frames per second
+constexpr double kMaxFrameSeconds = 0.1;  // a longer gap (a paused debugger) counts as this
+constexpr double kPhysicsBudgetMs = 12.0; // physics may take this much of a frame
+constexpr double kGrabFrequency = 3.0;    // the grab spring's natural frequency [Hz]
 
 } // namespace
 
@@ -197,7 +198,7 @@ void SimulationController::doStep()
 
 void SimulationController::pushSample()
 {
-    const double t = m_world.time();
+    const double t = stepTime(m_world);
     if (m_lastSampleTime >= 0 && t < m_lastSampleTime + kSampleInterval - 1e-12)
         return;
     m_lastSampleTime = t;
@@ -211,6 +212,10 @@ void SimulationController::pushSample()
     s.py = d.momentum.y();
     s.angularMomentum = d.angularMomentum;
     s.driftPercent = driftPercent();
+    s.energyScale = m_energyScale;
+    const MomentumScales scales = momentumScales(m_world);
+    s.momentumScale = scales.linear;
+    s.angularMomentumScale = scales.angular;
     if (!m_variantLabels.isEmpty()) {
         // Variant 0 is the main world; the others follow in order.
         s.variants = std::min<int>(Sample::kMaxVariants, 1 + static_cast<int>(m_variants.size()));
@@ -236,7 +241,9 @@ void SimulationController::advanceFrame()
     const double wall = std::min(unclampedWall, kMaxFrameSeconds);
     m_wall.start();
     const double h = m_world.def().dt;
-    bool slow = false;
+    // A frame longer than kMaxFrameSeconds (the window was busy) loses the rest of its time:
+    // the run fell behind real time, and says so.
+    bool slow = unclampedWall > kMaxFrameSeconds;
     if (m_running) {
         m_accumulator += wall * m_timeScale;
         while (m_accumulator >= h) {
@@ -304,8 +311,8 @@ void SimulationController::seek(long long step)
     }
     m_measurements.rewind(m_world);
     m_previousPoses.clear();
-    m_lastSampleTime = m_world.time() - kSampleInterval; // sample again from here on
-    emit rewound(m_world.time());
+    m_lastSampleTime = stepTime(m_world) - kSampleInterval; // sample again from here on
+    emit rewound(stepTime(m_world));
     pushSample();
     emit worldChanged();
 }
@@ -325,7 +332,7 @@ void SimulationController::afterEdit(const QString& mark)
 {
     m_history.branchAt(m_world);
     if (!mark.isEmpty() && m_world.stepCount() > 0)
-        emit marked(m_world.time(), mark);
+        emit marked(stepTime(m_world), mark);
     emit settingsChanged();
     emit worldChanged();
 }

@@ -12,6 +12,33 @@ EnergyReference EnergyReference::of(const physics::World& world)
     return {d.total, std::max({std::abs(d.total), d.kinetic + std::abs(d.potential), 1e-12})};
 }
 
+double stepTime(const physics::World& world)
+{
+    const double exact = static_cast<double>(world.stepCount()) * world.def().dt;
+    // The sum of k dts is within k rounding errors of k dt; a dt changed mid-run, or a world
+    // that did not start at 0, is far from it.
+    const double tolerance = 1e-9 * std::max(exact, world.def().dt);
+    return std::abs(world.time() - exact) <= tolerance ? exact : world.time();
+}
+
+MomentumScales momentumScales(const physics::World& world)
+{
+    double extent = kMinExtent;
+    for (const physics::Body& b : world.bodies())
+        if (b.isDynamic())
+            extent = std::max(extent, b.position.norm());
+    const double fall = std::sqrt(2.0 * world.def().gravity.norm() * extent);
+    MomentumScales s;
+    for (const physics::Body& b : world.bodies()) {
+        if (!b.isDynamic())
+            continue;
+        const double p = b.mass * (b.velocity.norm() + fall);
+        s.linear += p;
+        s.angular += p * extent + b.inertia * std::abs(b.angularVelocity);
+    }
+    return s;
+}
+
 bool SampleClock::due(double t)
 {
     // The 1e-12 keeps a step that lands on the interval, up to rounding, from being skipped.
@@ -28,7 +55,7 @@ Sample makeSample(const physics::World& main, const EnergyReference& mainReferen
     assert(variants.size() == variantReferences.size());
     const physics::Diagnostics& d = main.diagnostics();
     Sample s;
-    s.t = main.time();
+    s.t = stepTime(main);
     s.kinetic = d.kinetic;
     s.potential = d.potential;
     s.total = d.total;
@@ -36,6 +63,10 @@ Sample makeSample(const physics::World& main, const EnergyReference& mainReferen
     s.py = d.momentum.y();
     s.angularMomentum = d.angularMomentum;
     s.driftPercent = mainReference.driftPercent(d.total);
+    s.energyScale = mainReference.scale;
+    const MomentumScales scales = momentumScales(main);
+    s.momentumScale = scales.linear;
+    s.angularMomentumScale = scales.angular;
     if (compared) {
         s.variants = std::min<int>(Sample::kMaxVariants, 1 + static_cast<int>(variants.size()));
         s.variantTotal[0] = s.total;

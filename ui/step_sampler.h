@@ -27,6 +27,22 @@ struct EnergyReference {
     double driftPercent(double total) const { return (total - start) / scale * 100.0; }
 };
 
+/// The time of the world's current step [s]: k dt, computed as such when the world ran on
+/// one dt since t = 0, so that the plots and their CSV say t = 0.01 where the summed time is
+/// 0.010000000000000002. After a change of dt mid-run, the world's summed time.
+double stepTime(const physics::World& world);
+
+/// What momenta are worth in a scene, from its bodies as they are now: each body's mass times
+/// its speed plus the speed of a fall across the scene, sqrt(2 |g| extent), and for angular
+/// momentum that times the extent (the farthest centre of mass from the origin, at least
+/// kMinExtent) plus I |omega|.
+struct MomentumScales {
+    double linear = 0;  ///< [kg m/s]
+    double angular = 0; ///< [kg m^2/s]
+};
+inline constexpr double kMinExtent = 0.1; ///< [m]
+MomentumScales momentumScales(const physics::World& world);
+
 /// Takes a sample at most every kSampleInterval of simulated time: the first one always, then
 /// the first step at least the interval after the last sample.
 class SampleClock {

@@ -1,0 +1,58 @@
+#include "plot_range.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace rigidlab::ui {
+
+double niceStep(double span, int count)
+{
+    if (!(span > 0) || !std::isfinite(span) || count < 1)
+        return 1.0;
+    const double raw = span / count;
+    const double decade = std::pow(10.0, std::floor(std::log10(raw)));
+    const double mantissa = raw / decade;
+    const double nice = mantissa < 1.5 ? 1.0 : mantissa < 3.5 ? 2.0 : mantissa < 7.5 ? 5.0 : 10.0;
+    return nice * decade;
+}
+
+AxisRange niceRange(double min, double max, double scale)
+{
+    AxisRange r;
+    if (!std::isfinite(min) || !std::isfinite(max))
+        return r;
+    if (min > max)
+        std::swap(min, max);
+    if (!(scale >= 0) || !std::isfinite(scale))
+        scale = 0;
+
+    const double magnitude = std::max({std::abs(min), std::abs(max), scale});
+    const double span = max - min;
+    if (magnitude == 0 || span <= kNoiseFloor * magnitude) {
+        // Constant up to rounding: drawn flat at the middle of its values, on an axis whose
+        // ticks are round at the quantity's own size. With nothing to size it by (a zero in
+        // a scene that gives no scale) the axis is [-1, 1].
+        const double center = 0.5 * (min + max);
+        const double half = magnitude > 0 ? kFlatHalfSpan * magnitude : 1.0;
+        r.lower = center - half;
+        r.upper = center + half;
+        r.flat = true;
+    } else {
+        const double pad = kValueMargin * span;
+        r.lower = min - pad;
+        r.upper = max + pad;
+    }
+
+    // Ticks come about every fifth of the axis, at 1, 2, 2.5 or 5 times a power of ten: the
+    // labels need the digits from the largest one's leading digit down to the step's, and one
+    // more for a step of 2.5.
+    const double step = niceStep(r.upper - r.lower, 5);
+    const double largest = std::max({std::abs(r.lower), std::abs(r.upper), step});
+    const int digits = static_cast<int>(std::floor(std::log10(largest))) -
+                       static_cast<int>(std::floor(std::log10(step))) + 2;
+    r.labelDigits = std::clamp(digits, kMinLabelDigits, kMaxLabelDigits);
+    return r;
+}
+
+} // namespace rigidlab::ui
