@@ -27,14 +27,13 @@ AxisRange niceRange(double min, double max, double scale)
     if (!(scale >= 0) || !std::isfinite(scale))
         scale = 0;
 
-    const double magnitude = std::max({std::abs(min), std::abs(max), scale});
+    const double magnitude = std::max({std::abs(min), std::abs(max), scale, kMinMagnitude});
     const double span = max - min;
-    if (magnitude == 0 || span <= kNoiseFloor * magnitude) {
+    if (span <= kNoiseFloor * magnitude) {
         // Constant up to rounding: drawn flat at the middle of its values, on an axis whose
-        // ticks are round at the quantity's own size. With nothing to size it by (a zero in
-        // a scene that gives no scale) the axis is [-1, 1].
+        // ticks are round at the quantity's own size.
         const double center = 0.5 * (min + max);
-        const double half = magnitude > 0 ? kFlatHalfSpan * magnitude : 1.0;
+        const double half = kFlatHalfSpan * magnitude;
         r.lower = center - half;
         r.upper = center + half;
         r.flat = true;

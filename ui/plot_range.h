@@ -6,9 +6,10 @@
 // last digits: ±5e-16 kg m/s, or -0.00206182 ± 1e-12. Fitted tightly, that rounding noise
 // fills the whole axis and reads as physics. The rule here: a variation below a noise floor,
 //   floor = kNoiseFloor * max(|min|, |max|, scale),
-// is no variation. Such a series is drawn flat, in the middle of an axis a tenth of its
-// magnitude (or of the scene's scale) tall, so that the ticks are few, round and distinct.
-// A larger variation is real: it is fitted with a margin, and the tick labels get as many
+// is no variation (kMinMagnitude stands in for a magnitude smaller than itself, so that a zero
+// with noise and no scale is flat too). Such a series is drawn flat, in the middle of an axis a
+// tenth of its magnitude (or of the scene's scale) tall, so that the ticks are few, round and
+// distinct. A larger variation is real: it is fitted with a margin, and the tick labels get as many
 // digits as it takes for neighbouring ticks to read differently.
 //
 //   scale: what the quantity is worth in this scene, in its own unit (the total momentum the
@@ -27,6 +28,9 @@ struct AxisRange {
 
 /// Variation below this fraction of the magnitude is rounding noise.
 inline constexpr double kNoiseFloor = 1e-9;
+/// The smallest magnitude the noise floor is taken of [unit of the quantity]: below 1e-12 in
+/// any unit is noise.
+inline constexpr double kMinMagnitude = 1e-3;
 /// A flat series sits in an axis this fraction of its magnitude above and below it.
 inline constexpr double kFlatHalfSpan = 0.05;
 /// Fraction of the data's span added above and below a varying series.

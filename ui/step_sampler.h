@@ -27,9 +27,14 @@ struct EnergyReference {
     double driftPercent(double total) const { return (total - start) / scale * 100.0; }
 };
 
-/// The time of the world's current step [s]: k dt, computed as such when the world ran on
-/// one dt since t = 0, so that the plots and their CSV say t = 0.01 where the summed time is
-/// 0.010000000000000002. After a change of dt mid-run, the world's summed time.
+/// The time of step k of a run on a fixed dt [s], as the double nearest the exact product:
+/// with dt = 0.01, step 35 is at 35 / 100 = 0.35, where k * dt gives 0.35000000000000003 and
+/// the sum of k dts 0.35000000000000009. Exact when dt is a decimal of up to 9 places or the
+/// reciprocal of a whole number (1/240 s); k * dt otherwise.
+double stepTime(long long k, double dt);
+/// The time of the world's current step [s]: stepTime(steps, dt) when the world ran on one dt
+/// since t = 0, so that the plots and their CSV say t = 0.35; after a change of dt mid-run,
+/// the world's summed time.
 double stepTime(const physics::World& world);
 
 /// What momenta are worth in a scene, from its bodies as they are now: each body's mass times
