@@ -1,5 +1,7 @@
 #include "plot_series.h"
 
+#include "column_graph.h"
+
 #include <qcustomplot.h>
 
 #include <algorithm>
@@ -23,10 +25,10 @@ bool later(double t, const PlotPoint& p)
 
 } // namespace
 
-PlotSeries::PlotSeries(QCPGraph* graph, QCPGraph* band, QString name, YAxis axis, SampleValue value)
-    : m_graph(graph), m_band(band), m_name(std::move(name)), m_axis(axis), m_value(std::move(value))
+PlotSeries::PlotSeries(ColumnGraph* graph, QString name, YAxis axis, SampleValue value)
+    : m_graph(graph), m_name(std::move(name)), m_axis(axis), m_value(std::move(value))
 {
-    Q_ASSERT(m_graph && m_band);
+    Q_ASSERT(m_graph);
 }
 
 double PlotSeries::firstKey() const
@@ -114,7 +116,7 @@ void PlotSeries::clear()
 {
     m_points.clear();
     m_graph->data()->clear();
-    m_band->data()->clear();
+    m_graph->setColumns({});
     m_stride = 1;
     m_sinceKept = 0;
     m_lastIsProvisional = false;
@@ -156,17 +158,14 @@ void PlotSeries::draw(double from, double to, int columns, bool logKeys) const
     const auto count = static_cast<std::size_t>(end - begin);
     columns = std::max(columns, 1);
 
-    QVector<QCPGraphData> high, low;
+    QVector<QCPGraphData> drawn;
     const bool log = logKeys && from > 0 && to > from;
     if (count <= static_cast<std::size_t>(columns) || !(to > from)) {
-        high.reserve(static_cast<qsizetype>(count));
+        drawn.reserve(static_cast<qsizetype>(count));
         for (auto it = begin; it != end; ++it)
-            high.append(QCPGraphData(it->t, it->v));
-        m_graph->data()->set(high, true);
-        m_graph->setChannelFillGraph(nullptr);
-        m_graph->setBrush(Qt::NoBrush);
-        m_band->data()->clear();
-        m_band->setVisible(false);
+            drawn.append(QCPGraphData(it->t, it->v));
+        m_graph->data()->set(drawn, true);
+        m_graph->setColumns({});
         return;
     }
 
@@ -178,25 +177,30 @@ void PlotSeries::draw(double from, double to, int columns, bool logKeys) const
     };
 
     constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
-    high.reserve(2 * columns + 4);
-    low.reserve(2 * columns + 4);
+    std::vector<ColumnGraph::Column> dense;
+    dense.reserve(static_cast<std::size_t>(2 * columns + 4));
+    drawn.reserve(3 * columns + 6);
     long long column = std::numeric_limits<long long>::min();
-    auto lowest = end, highest = end; // the current column's extremes; end while it has none
-    double gapT = kGap;               // the column's last gap [s], NaN if none
+    auto first = end, last = end, lowest = end, highest = end; // end while the column is empty
+    double gapT = kGap; // the column's last gap [s], NaN if none
     const auto flush = [&] {
-        if (lowest != end) {
-            high.append(QCPGraphData(highest->t, highest->v));
-            low.append(QCPGraphData(lowest->t, lowest->v));
+        if (first != end) {
+            // In the order they came, so the line runs through the column as the data did.
+            const auto a = std::min(lowest, highest), b = std::max(lowest, highest);
+            drawn.append(QCPGraphData(a->t, a->v));
+            if (b != a)
+                drawn.append(QCPGraphData(b->t, b->v));
+            dense.push_back({first->t, lowest->v, highest->v, first->v, last->v});
         }
         // One gap per column that has one, after its extremes (their order within a column
         // is below a pixel); the keys stay sorted.
-        const bool lastIsGap = !high.isEmpty() && std::isnan(high.back().value);
+        const bool lastIsGap = !drawn.isEmpty() && std::isnan(drawn.back().value);
         if (!std::isnan(gapT) && !lastIsGap) {
-            high.append(
-                QCPGraphData(high.isEmpty() ? gapT : std::max(gapT, high.back().key), kGap));
-            low.append(QCPGraphData(low.isEmpty() ? gapT : std::max(gapT, low.back().key), kGap));
+            const double t = drawn.isEmpty() ? gapT : std::max(gapT, drawn.back().key);
+            drawn.append(QCPGraphData(t, kGap));
+            dense.push_back({t, kGap, kGap, kGap, kGap});
         }
-        lowest = highest = end;
+        first = last = lowest = highest = end;
         gapT = kGap;
     };
     for (auto it = begin; it != end; ++it) {
@@ -209,20 +213,17 @@ void PlotSeries::draw(double from, double to, int columns, bool logKeys) const
             gapT = it->t;
             continue;
         }
+        if (first == end)
+            first = it;
+        last = it;
         if (lowest == end || it->v < lowest->v)
             lowest = it;
         if (highest == end || it->v > highest->v)
             highest = it;
     }
     flush();
-    m_graph->data()->set(high, true);
-    m_band->data()->set(low, true);
-    // The band's edge is drawn as the curve is, and the space up to the curve filled.
-    m_band->setPen(m_graph->pen());
-    m_band->setValueAxis(m_graph->valueAxis());
-    m_band->setVisible(m_graph->visible());
-    m_graph->setBrush(m_graph->pen().color());
-    m_graph->setChannelFillGraph(m_band);
+    m_graph->data()->set(drawn, true);
+    m_graph->setColumns(std::move(dense));
 }
 
 } // namespace rigidlab::ui

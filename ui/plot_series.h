@@ -3,16 +3,10 @@
 // its QCPGraph decimated to the pixels it is drawn on.
 //
 // The series keeps its points (what the CSV export writes) apart from what it hands its
-// graphs to draw (draw()). Where there is at most a point per pixel column of the time axis,
-// the graph gets them as they are. Where there are more, a line through them fills, in each
-// column, the pixels from their lowest to their highest: the graph gets the highest point of
-// each column and a second graph, filled up to it, the lowest. That band covers the pixels
-// the line would, and costs the same whatever the values: a stroked zigzag of a few thousand
-// full-height segments (Verlet's energy, rounding noise on a tight axis) took the painter
-// tens of milliseconds per replot, the two edges of a band take well under one.
-//
-//   dense:   ____/\/\/\/\/\____     graph: highest per column;
-//                \/\/\/\/\/         band: lowest per column, filled up to the graph.
+// graph to draw (draw()). Where there is at most a point per pixel column of the time axis,
+// the graph gets them as they are. Where there are more, it gets each column's lowest and
+// highest point, and draws the column as a ColumnGraph does (column_graph.h): a replot
+// costs the same for a smooth curve and for rounding noise, and no more than the pixels.
 //
 // Two rules keep the number of points kept bounded:
 //  - the owner trims what scrolled out of the window with removeBefore();
@@ -34,9 +28,9 @@
 #include <functional>
 #include <vector>
 
-class QCPGraph;
-
 namespace rigidlab::ui {
+
+class ColumnGraph;
 
 /// Which value axis a series is drawn against.
 enum class YAxis { Left, Right };
@@ -52,14 +46,12 @@ public:
     /// Reads the series' value out of a sample; empty for a series fed point by point.
     using SampleValue = std::function<double(const Sample&)>;
 
-    /// `graph` and `band` (the lower edge of a dense curve, not in the legend) belong to
-    /// their QCustomPlot; the series only adapts them.
-    PlotSeries(QCPGraph* graph, QCPGraph* band, QString name, YAxis axis, SampleValue value);
+    /// `graph` belongs to its QCustomPlot; the series only adapts it.
+    PlotSeries(ColumnGraph* graph, QString name, YAxis axis, SampleValue value);
 
     const QString& name() const { return m_name; }
     YAxis axis() const { return m_axis; }
-    QCPGraph* graph() const { return m_graph; }
-    QCPGraph* band() const { return m_band; }
+    ColumnGraph* graph() const { return m_graph; }
     bool isFedBySamples() const { return static_cast<bool>(m_value); }
     double valueOf(const Sample& s) const { return m_value(s); }
 
@@ -84,19 +76,18 @@ public:
     /// positive ones if asked, for a log axis). False if there is none.
     bool valueRange(double from, double to, bool positiveOnly, double& lowest,
                     double& highest) const;
-    /// Hands the graphs the points to draw for the time range [from, to] [s] spread over
+    /// Hands the graph the points to draw for the time range [from, to] [s] spread over
     /// `columns` pixel columns (on a log time axis if `logKeys`): the points in range and the
     /// one on either side, as they are if there are at most `columns`, else each column's
-    /// highest to the graph and lowest to the band. A gap (NaN) stays a gap. At most
-    /// 2 * columns + 4 points in each graph, whatever the data.
+    /// lowest and highest, in the order they came, and the columns. A gap (NaN) stays a gap.
+    /// At most 3 * columns + 6 points, whatever the data.
     void draw(double from, double to, int columns, bool logKeys) const;
 
 private:
     void decimate();
     void afterRemoval(int budget);
 
-    QCPGraph* m_graph = nullptr;     ///< owned by the QCustomPlot; holds what is drawn
-    QCPGraph* m_band = nullptr;      ///< owned by the QCustomPlot; a dense curve's lower edge
+    ColumnGraph* m_graph = nullptr; ///< owned by the QCustomPlot; holds what is drawn
     std::vector<PlotPoint> m_points; ///< sorted by t
     QString m_name;
     YAxis m_axis = YAxis::Left;

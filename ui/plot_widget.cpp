@@ -1,5 +1,6 @@
 #include "plot_widget.h"
 
+#include "column_graph.h"
 #include "plot_range.h"
 
 #include <qcustomplot.h>
@@ -222,7 +223,7 @@ int PlotWidget::addSeries(const QString& name, const QColor& color, YAxis axis)
 int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::SampleValue value,
                          YAxis axis)
 {
-    QCPGraph* graph = m_plot->addGraph(m_plot->xAxis, axisFor(axis));
+    auto* graph = new ColumnGraph(m_plot->xAxis, axisFor(axis)); // owned by m_plot
     // Dashed means "read me on the right axis", in the legend as on the curve.
     graph->setPen(QPen(color, kLineWidthPx, axis == YAxis::Right ? Qt::DashLine : Qt::SolidLine));
     graph->setName(axis == YAxis::Right ? tr("%1 (right axis)").arg(name) : name);
@@ -230,11 +231,7 @@ int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::S
         m_plot->yAxis2->setVisible(true);
         m_plot->yAxis2->setTickLabels(true);
     }
-    // The lower edge of the curve where it is too dense to draw point by point (PlotSeries).
-    QCPGraph* band = m_plot->addGraph(m_plot->xAxis, axisFor(axis));
-    band->removeFromLegend();
-    band->setVisible(false);
-    m_series.emplace_back(graph, band, name, axis, std::move(value));
+    m_series.emplace_back(graph, name, axis, std::move(value));
     fitLegend(m_plot->width());
     return seriesCount() - 1;
 }
