@@ -24,36 +24,38 @@ void ColumnGraph::draw(QCPPainter* painter)
             painter->drawPolyline(run);
         run.clear();
     };
-    std::vector<QRectF> spans; // the thick columns, filled after the lines
-    bool previousThick = false;
-    double previousLast = 0; // [px] where the previous thick column ends
+    std::vector<QRectF> spans;              // the thick columns, filled after the lines
+    bool previous = false;                  // there is a column before this one, since the last gap
+    double previousX = 0, previousLast = 0; // [px] where it is and where it ends
     for (const Column& c : m_columns) {
         if (std::isnan(c.low)) {
             drawRun();
-            previousThick = false;
+            previous = false;
             continue;
         }
         const double x = keys->coordToPixel(c.t);
         double top = values->coordToPixel(c.high), bottom = values->coordToPixel(c.low);
         if (top > bottom)
             std::swap(top, bottom); // a reversed axis
-        if (bottom - top <= kThinPx) {
-            run.append(QPointF(x, 0.5 * (top + bottom)));
-            previousThick = false;
-            continue;
-        }
-        if (previousThick) {
-            // Joined to the thick column before by its own span, not by a line.
+        // The line from the column next to it belongs to this column's pixels too.
+        const bool adjacent = previous && std::abs(x - previousX) <= 1.5;
+        if (adjacent) {
             top = std::min(top, previousLast);
             bottom = std::max(bottom, previousLast);
-        } else {
-            run.append(QPointF(x, values->coordToPixel(c.first)));
         }
-        drawRun();
-        spans.emplace_back(x - 0.5 * width, top - 0.5 * width, width, bottom - top + width);
-        previousThick = true;
-        previousLast = values->coordToPixel(c.last);
-        run.append(QPointF(x, previousLast));
+        const double last = values->coordToPixel(c.last);
+        if (bottom - top <= kThinPx) {
+            run.append(QPointF(x, 0.5 * (top + bottom)));
+        } else {
+            if (!adjacent)
+                run.append(QPointF(x, values->coordToPixel(c.first)));
+            drawRun();
+            spans.emplace_back(x - 0.5 * width, top - 0.5 * width, width, bottom - top + width);
+            run.append(QPointF(x, last));
+        }
+        previous = true;
+        previousX = x;
+        previousLast = last;
     }
     drawRun();
 

@@ -9,11 +9,11 @@
 // the run of pixels from its lowest to its highest value there: drawn as that run, a filled
 // rectangle, it costs a few spans.
 //
-//   per column:   thin (lowest and highest within kThinPx): a vertex of an antialiased
-//                 polyline, as any line;
-//                 thick: a rectangle from the lowest to the highest, pen-wide, joined to
-//                 the thick column before it, and to a thin neighbour by a line from its
-//                 first or to its last value.
+//   per column:   its pixels run from its lowest to its highest value, and to where the
+//                 column next to it ends (the line between them is in its pixels too);
+//                 thin (that run within kThinPx): a vertex of an antialiased polyline;
+//                 thick: a rectangle over that run, pen-wide, and a line from its last
+//                 value on to the next thin column.
 //
 //        |  |||                               thin    thick     thin
 //   ___/ |  ||| \___                          .__.  |||||||  .__.

@@ -13,6 +13,9 @@ namespace rigidlab::ui {
 
 namespace {
 
+/// Up to this many points a curve is drawn point by point.
+constexpr std::size_t kFewPoints = 64;
+
 bool earlier(const PlotPoint& p, double t)
 {
     return p.t < t;
@@ -160,7 +163,10 @@ void PlotSeries::draw(double from, double to, int columns, bool logKeys) const
 
     QVector<QCPGraphData> drawn;
     const bool log = logKeys && from > 0 && to > from;
-    if (count <= static_cast<std::size_t>(columns) || !(to > from)) {
+    // A few points are drawn as they are (with their markers, if any). More go by pixel
+    // column: spread over the few columns of a run's first second, 200 points of a zigzag
+    // cost as much as 2000.
+    if (count <= kFewPoints || !(to > from)) {
         drawn.reserve(static_cast<qsizetype>(count));
         for (auto it = begin; it != end; ++it)
             drawn.append(QCPGraphData(it->t, it->v));

@@ -3,10 +3,10 @@
 // its QCPGraph decimated to the pixels it is drawn on.
 //
 // The series keeps its points (what the CSV export writes) apart from what it hands its
-// graph to draw (draw()). Where there is at most a point per pixel column of the time axis,
-// the graph gets them as they are. Where there are more, it gets each column's lowest and
-// highest point, and draws the column as a ColumnGraph does (column_graph.h): a replot
-// costs the same for a smooth curve and for rounding noise, and no more than the pixels.
+// graph to draw (draw()). A few points, the graph gets as they are. More, it gets each
+// pixel column's lowest and highest point, and draws the column as a ColumnGraph does
+// (column_graph.h): a replot costs the same for a smooth curve and for rounding noise, and no more
+// than the pixels.
 //
 // Two rules keep the number of points kept bounded:
 //  - the owner trims what scrolled out of the window with removeBefore();
@@ -78,7 +78,7 @@ public:
                     double& highest) const;
     /// Hands the graph the points to draw for the time range [from, to] [s] spread over
     /// `columns` pixel columns (on a log time axis if `logKeys`): the points in range and the
-    /// one on either side, as they are if there are at most `columns`, else each column's
+    /// one on either side, as they are if there are few, else each column's
     /// lowest and highest, in the order they came, and the columns. A gap (NaN) stays a gap.
     /// At most 3 * columns + 6 points, whatever the data.
     void draw(double from, double to, int columns, bool logKeys) const;
@@ -87,7 +87,7 @@ private:
     void decimate();
     void afterRemoval(int budget);
 
-    ColumnGraph* m_graph = nullptr; ///< owned by the QCustomPlot; holds what is drawn
+    ColumnGraph* m_graph = nullptr;  ///< owned by the QCustomPlot; holds what is drawn
     std::vector<PlotPoint> m_points; ///< sorted by t
     QString m_name;
     YAxis m_axis = YAxis::Left;
