@@ -141,6 +141,8 @@ MainWindow::MainWindow(QWidget* parent)
         connect(m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
         connect(m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
         connect(m_controller, &SimulationController::marked, plot, &PlotWidget::addMark);
+        connect(m_controller, &SimulationController::frameAdvanced, plot,
+                &PlotWidget::frameAdvanced);
     }
     restoreSettings();
     updateStatus();

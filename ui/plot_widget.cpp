@@ -33,6 +33,8 @@ constexpr double kWindowMargin = 0.1;
 constexpr int kRightMarginPx = 22; // half a tick label, so "10" is not cut at the edge
 /// Smallest time span [s] shown in whole-run mode, so a single point has an axis.
 constexpr double kMinWholeRunSpan = 1e-3;
+/// A frame may come this much early and still count as the refresh interval passed [ms].
+constexpr int kFrameSlackMs = 8;
 /// Pixel columns assumed for a plot that was never laid out.
 constexpr int kDefaultColumns = 800;
 
@@ -117,7 +119,11 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
 
     m_timer->setInterval(kRefreshIntervalMs);
     m_timer->setTimerType(Qt::PreciseTimer);
-    connect(m_timer, &QTimer::timeout, this, &PlotWidget::drain);
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        // While frames come, they drive the drains (frameAdvanced()).
+        if (!m_sinceFrame.isValid() || m_sinceFrame.elapsed() > 2 * kRefreshIntervalMs)
+            drain();
+    });
     // The plots take turns: each starts a third of the interval after the one before, so that
     // their replots fall in different frames of the view instead of all in one.
     static int instances = 0;
@@ -337,8 +343,17 @@ void PlotWidget::setSource(const SampleBuffer* source)
     m_cursor = 0; // readSince() starts at the oldest sample still in the ring
 }
 
+void PlotWidget::frameAdvanced()
+{
+    m_sinceFrame.start();
+    // At 60 frames per second, every second frame: ~30 Hz.
+    if (!m_sinceDrain.isValid() || m_sinceDrain.elapsed() >= kRefreshIntervalMs - kFrameSlackMs)
+        drain();
+}
+
 int PlotWidget::drain()
 {
+    m_sinceDrain.start();
     int taken = 0;
     if (m_source) {
         const std::vector<Sample> samples = m_source->readSince(m_cursor);

@@ -14,6 +14,7 @@
 #include "sample_buffer.h"
 
 #include <QColor>
+#include <QElapsedTimer>
 #include <QPointF>
 #include <QString>
 #include <QWidget>
@@ -134,6 +135,11 @@ public:
 
 public slots:
     void follow() { setFollowing(true); }
+    /// The run advanced a frame: drains now if the refresh interval has passed. A plot told
+    /// of every frame drains right after one, so that its replot does not land on the next
+    /// frame's deadline; its own timer then only stands in while no frames come (a paused
+    /// run).
+    void frameAdvanced();
     /// Asks for a file name, then exports; a failure is shown in a message box.
     void exportInteractively(rigidlab::ui::ExportFormat format);
 
@@ -177,6 +183,8 @@ private:
     bool m_captionShown = false;
     QToolButton* m_followButton = nullptr; ///< child, shown while paused
     QTimer* m_timer = nullptr;             ///< child
+    QElapsedTimer m_sinceDrain;            ///< since the last drain
+    QElapsedTimer m_sinceFrame;            ///< since the last frameAdvanced()
     std::vector<PlotSeries> m_series;
     std::deque<Mark> m_marks; ///< sorted by t
     QString m_leftUnit;

@@ -270,6 +270,7 @@ void SimulationController::advanceFrame()
         m_stepsThisSecond = 0;
     }
     emit worldChanged();
+    emit frameAdvanced();
 }
 
 void SimulationController::measureFrames(int frames)
