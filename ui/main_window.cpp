@@ -613,6 +613,8 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
         connect(m_controller, &SimulationController::samplesCleared, m_compare, &PlotWidget::clear);
         connect(m_controller, &SimulationController::rewound, m_compare, &PlotWidget::rewind);
         connect(m_controller, &SimulationController::marked, m_compare, &PlotWidget::addMark);
+        connect(m_controller, &SimulationController::frameAdvanced, m_compare,
+                &PlotWidget::frameAdvanced);
         m_compareDock->setWidget(m_compare);
         m_compareDock->setWindowTitle(m_compare->title());
         m_compareDock->show();

@@ -17,7 +17,7 @@ double niceStep(double span, int count)
     return nice * decade;
 }
 
-AxisRange niceRange(double min, double max, double scale)
+AxisRange niceRange(double min, double max, double scale, double minSpan)
 {
     AxisRange r;
     if (!std::isfinite(min) || !std::isfinite(max))
@@ -41,6 +41,12 @@ AxisRange niceRange(double min, double max, double scale)
         const double pad = kValueMargin * span;
         r.lower = min - pad;
         r.upper = max + pad;
+        const double tallest = std::isfinite(minSpan) && minSpan > 0 ? minSpan * magnitude : 0;
+        if (r.upper - r.lower < tallest) {
+            const double center = 0.5 * (min + max);
+            r.lower = center - 0.5 * tallest;
+            r.upper = center + 0.5 * tallest;
+        }
     }
 
     // Ticks come about every fifth of the axis, at 1, 2, 2.5 or 5 times a power of ten: the

@@ -41,7 +41,11 @@ inline constexpr int kMaxLabelDigits = 15;
 
 /// The axis for data ranging over [min, max] (finite, min <= max) of a quantity worth `scale`
 /// in the scene (>= 0; 0 when unknown). Non-finite input gives the default range [0, 1].
-AxisRange niceRange(double min, double max, double scale);
+/// `minSpan` > 0 keeps a varying series' axis at least that fraction of the magnitude tall,
+/// centred on the data: a conserved quantity (momentum, energy) that the solver changes by
+/// 1e-4 of what the scene holds is drawn nearly flat, not as a full-height jump. 0 (the
+/// energy drift, which exists to show small changes) fits the data however small it is.
+AxisRange niceRange(double min, double max, double scale, double minSpan = 0);
 
 /// A tick step of about span / count, rounded to 1, 2 or 5 times a power of ten.
 double niceStep(double span, int count);

@@ -209,6 +209,13 @@ void PlotWidget::setValueScale(YAxis axis, PlotSeries::SampleValue scale)
     m_dirty = true;
 }
 
+void PlotWidget::setMinimumSpan(YAxis axis, double fraction)
+{
+    m_minimumSpan[axis == YAxis::Left ? 0 : 1] =
+        std::isfinite(fraction) && fraction > 0 ? fraction : 0.0;
+    m_dirty = true;
+}
+
 double PlotWidget::valueScale(YAxis axis) const
 {
     return m_valueScale[axis == YAxis::Left ? 0 : 1];
@@ -548,7 +555,8 @@ void PlotWidget::fitValueAxis(YAxis axis)
         return;
     }
     // Rounding noise is drawn flat, and the ticks always read differently (plot_range.h).
-    const AxisRange range = niceRange(lowest, highest, valueScale(axis));
+    const AxisRange range =
+        niceRange(lowest, highest, valueScale(axis), m_minimumSpan[axis == YAxis::Left ? 0 : 1]);
     valueAxis->setNumberPrecision(range.labelDigits);
     valueAxis->setRange(range.lower, range.upper);
 }

@@ -74,6 +74,9 @@ public:
     void setValueScale(YAxis axis, double scale);
     void setValueScale(YAxis axis, PlotSeries::SampleValue scale);
     double valueScale(YAxis axis) const;
+    /// Keeps a value axis at least this fraction of the quantity's magnitude tall (see
+    /// niceRange); 0, the default, fits the data however small its variation.
+    void setMinimumSpan(YAxis axis, double fraction);
 
     /// A series that reads its value from every sample of the source. Returns its index.
     /// Series on the right axis are drawn dashed, and say so in the legend.
@@ -191,6 +194,7 @@ private:
     QString m_rightUnit;
     std::array<double, 2> m_valueScale{};                  ///< left, right [unit of the axis]
     std::array<PlotSeries::SampleValue, 2> m_valueScaleOf; ///< left, right; may be empty
+    std::array<double, 2> m_minimumSpan{};                 ///< left, right; see niceRange
 
     const SampleBuffer* m_source = nullptr;
     std::uint64_t m_cursor = 0;
@@ -216,6 +220,10 @@ QColor plotColor(int index);
 /// A drift is relative to |E0|: what it is worth is all of it, 100 % (a drift below 1e-7 %
 /// is rounding noise).
 inline constexpr double kDriftScalePercent = 100.0;
+
+/// A conserved quantity's axis is at least this fraction of its magnitude tall: a change of
+/// 1e-4 of it, which the solver makes, shows as a pixel or two, not as a full-height jump.
+inline constexpr double kConservedMinimumSpan = 0.02;
 
 /// Kinetic, potential and total energy [J].
 PlotWidget* makeEnergyPlot(QWidget* parent);

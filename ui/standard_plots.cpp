@@ -43,6 +43,8 @@ PlotWidget* makeMomentumPlot(QWidget* parent)
     plot->setYAxisLabel(PlotWidget::tr("L"), QStringLiteral("kg m²/s"), YAxis::Right);
     plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.momentumScale; });
     plot->setValueScale(YAxis::Right, [](const Sample& s) { return s.angularMomentumScale; });
+    plot->setMinimumSpan(YAxis::Left, kConservedMinimumSpan);
+    plot->setMinimumSpan(YAxis::Right, kConservedMinimumSpan);
     plot->addSeries(QStringLiteral("px"), plotColor(0), [](const Sample& s) { return s.px; });
     plot->addSeries(QStringLiteral("py"), plotColor(1), [](const Sample& s) { return s.py; });
     plot->addSeries(

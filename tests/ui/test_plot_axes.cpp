@@ -70,6 +70,7 @@ class TestPlotAxes : public QObject {
 private slots:
     void niceRangeRule_data();
     void niceRangeRule();
+    void niceRangeMinimumSpan();
     void niceRangeLabelsAreDistinct_data();
     void niceRangeLabelsAreDistinct();
     void noisyConstantIsDrawnFlat_data();
@@ -123,6 +124,23 @@ void TestPlotAxes::niceRangeRule()
         QVERIFY(std::abs((r.upper - r.lower) - span * (1 + 2 * kValueMargin)) <=
                 1e-9 * span + ulps);
     }
+}
+
+void TestPlotAxes::niceRangeMinimumSpan()
+{
+    // The billiards' L changes by 1e-4 kg m^2/s at the break, in a scene that holds about
+    // 1.4 kg m^2/s: on an axis 2 % of that tall the step is 0.35 % of the height.
+    const double scale = 1.4;
+    const AxisRange r = niceRange(-0.002159, -0.002062, scale, 0.02);
+    QVERIFY(!r.flat);
+    QVERIFY(std::abs((r.upper - r.lower) - 0.02 * scale) <= 1e-15);
+    QVERIFY(std::abs(0.5 * (r.upper + r.lower) - 0.5 * (-0.002159 - 0.002062)) <= 1e-15);
+    // Without it, the same data fills the axis (the energy drift wants that).
+    const AxisRange fitted = niceRange(-0.002159, -0.002062, scale);
+    QVERIFY((-0.002062 + 0.002159) > 0.8 * (fitted.upper - fitted.lower));
+    // A variation larger than the minimum is fitted as usual.
+    const AxisRange large = niceRange(0.0, 1.0, 1.0, 0.02);
+    QVERIFY(std::abs((large.upper - large.lower) - (1 + 2 * kValueMargin)) <= 1e-12);
 }
 
 void TestPlotAxes::niceRangeLabelsAreDistinct_data()
