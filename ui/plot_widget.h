@@ -1,8 +1,12 @@
 #pragma once
 // A live plot of the lab window: a QCustomPlot with a title, labelled axes with units, a
 // legend, and series that either read a value out of each Sample of a SampleBuffer or are fed
-// point by point (appendPoint). The widget drains its source on a timer of its own (30 Hz)
-// and replots, queued, only when something changed; the simulation never waits for it.
+// point by point (appendPoint). The widget drains its source about 30 times a second, right
+// after a frame of the run when told of frames (frameAdvanced), else on a timer of its own,
+// and replots, queued, only when something changed; the simulation never waits for it. A
+// replot hands each graph its points decimated to the pixel columns (prepareGraphs), and
+// the value axes follow niceRange (plot_range.h): what it costs and what it shows do not
+// depend on rounding noise.
 //
 // Memory stays bounded however long the run (see PlotSeries): in window mode the points older
 // than the window (plus a margin) are dropped; in both modes a series that grows past the
