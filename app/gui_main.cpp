@@ -127,7 +127,8 @@ int main(int argc, char** argv)
             window.lessonPlayer().goToStep(step - 1);
     }
     window.show();
-    if (window.lastError().isEmpty() && !window.lessonPlayer().lesson())
+    // A lesson waits for the student to press Run; a measurement runs it at once.
+    if (window.lastError().isEmpty() && (!window.lessonPlayer().lesson() || measureFrames > 0))
         window.controller().setRunning(true);
     if (measureFrames > 0) {
         if (!window.lastError().isEmpty()) {

@@ -39,6 +39,10 @@ PlotWidget* makeComparePlot(const lessons::LessonStep& step, const QString& titl
 {
     auto* plot = new PlotWidget(title, parent);
     plot->setYAxisLabel(quantity, unit);
+    if (unit == u"%")
+        plot->setValueScale(YAxis::Left, kDriftScalePercent);
+    else
+        plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
     const int count = step.compare ? std::min(step.compare->count(), Sample::kMaxVariants) : 0;
     for (int i = 0; i < count; ++i) {
         const auto index = static_cast<std::size_t>(i);

@@ -143,6 +143,8 @@ MainWindow::MainWindow(QWidget* parent)
         connect(m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
         connect(m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
         connect(m_controller, &SimulationController::marked, plot, &PlotWidget::addMark);
+        connect(m_controller, &SimulationController::frameAdvanced, plot,
+                &PlotWidget::frameAdvanced);
     }
     restoreSettings();
     updateStatus();
@@ -602,10 +604,13 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
         m_compare->setTitleShown(false);
         m_compare->setObjectName(compareDrift && !compareEnergy ? QStringLiteral("compare-drift")
                                                                 : QStringLiteral("compare-energy"));
-        if (compareDrift && !compareEnergy)
+        if (compareDrift && !compareEnergy) {
             m_compare->setYAxisLabel(tr("drift (E − E₀)/|E₀|"), QStringLiteral("%"));
-        else
+            m_compare->setValueScale(YAxis::Left, kDriftScalePercent);
+        } else {
             m_compare->setYAxisLabel(tr("total energy E"), QStringLiteral("J"));
+            m_compare->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
+        }
         for (int i = 0; i < static_cast<int>(labels.size()) && i < Sample::kMaxVariants; ++i) {
             const auto k = static_cast<std::size_t>(i);
             if (compareDrift && !compareEnergy)
@@ -619,6 +624,8 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
         connect(m_controller, &SimulationController::samplesCleared, m_compare, &PlotWidget::clear);
         connect(m_controller, &SimulationController::rewound, m_compare, &PlotWidget::rewind);
         connect(m_controller, &SimulationController::marked, m_compare, &PlotWidget::addMark);
+        connect(m_controller, &SimulationController::frameAdvanced, m_compare,
+                &PlotWidget::frameAdvanced);
         m_compareDock->setWidget(m_compare);
         m_compareDock->setWindowTitle(m_compare->title());
         m_compareDock->show();

@@ -35,21 +35,29 @@ QString cannotWrite(const QString& path, const QString& why)
         .arg(QDir::toNativeSeparators(path), why);
 }
 
-/// Lays the plot out for the export size while it is drawn, and back for the screen after.
+/// Lays the plot out for the export size while it is drawn, and back for the screen after:
+/// title and caption shown, the legend wrapped for the export's width, the graphs decimated
+/// for its pixels (`columns`), and every curve, item and legend line antialiased.
 class ExportLayout {
 public:
-    ExportLayout(PlotWidget& plot, QSize size)
-        : m_plot(plot), m_titleShown(plot.titleShown()), m_captionShown(plot.captionShown())
+    ExportLayout(PlotWidget& plot, QSize size, int columns)
+        : m_plot(plot), m_titleShown(plot.titleShown()), m_captionShown(plot.captionShown()),
+          m_antialiased(plot.plot()->antialiasedElements())
     {
         m_plot.setTitleShown(true); // a handout needs its title, and its caption if any
         m_plot.setCaptionShown(true);
         m_plot.fitLegend(size.width());
+        m_plot.prepareGraphs(columns);
+        m_plot.plot()->setAntialiasedElements(m_antialiased | QCP::aePlottables | QCP::aeItems |
+                                              QCP::aeLegendItems | QCP::aeScatters);
     }
     ~ExportLayout()
     {
+        m_plot.plot()->setAntialiasedElements(m_antialiased);
         m_plot.setTitleShown(m_titleShown);
         m_plot.setCaptionShown(m_captionShown);
         m_plot.fitLegend(m_plot.plot()->width());
+        m_plot.prepareGraphs();
         m_plot.plot()->replot(QCustomPlot::rpQueuedReplot);
     }
     ExportLayout(const ExportLayout&) = delete;
@@ -59,6 +67,7 @@ private:
     PlotWidget& m_plot;
     bool m_titleShown;
     bool m_captionShown;
+    QCP::AntialiasedElements m_antialiased;
 };
 
 bool encodePng(QCustomPlot& plot, const ExportOptions& options, QByteArray& bytes, QString& why)
@@ -81,7 +90,10 @@ bool encodePng(QCustomPlot& plot, const ExportOptions& options, QByteArray& byte
     image.fill(Qt::white);
     {
         QCPPainter painter(&image);
-        painter.setMode(QCPPainter::pmNonCosmetic); // lines scale with the picture
+        // Lines scale with the picture, and tick labels are drawn at its resolution rather
+        // than copied from the screen's cached pixmaps.
+        painter.setMode(QCPPainter::pmNonCosmetic);
+        painter.setMode(QCPPainter::pmNoCaching);
         painter.scale(ratio, ratio);
         plot.toPainter(&painter, logical.width(), logical.height());
     }
@@ -307,7 +319,10 @@ ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat form
         bytes = encodeCsv(plot);
     } else {
         QCustomPlot& qcp = *plot.plot();
-        const ExportLayout layout(plot, options.logicalSize);
+        // Two points per pixel column: of the image for a PNG, of a fine print for the rest.
+        const double density = format == ExportFormat::Png ? options.pngPixelRatio : 2.0;
+        const ExportLayout layout(plot, options.logicalSize,
+                                  qRound(options.logicalSize.width() * density));
         switch (format) {
         case ExportFormat::Png:
             encoded = encodePng(qcp, options, bytes, why);

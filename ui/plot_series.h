@@ -1,8 +1,14 @@
 #pragma once
-// One curve of a live plot, kept within a point budget however long the run.
+// One curve of a live plot, kept within a point budget however long the run, and handed to
+// its QCPGraph decimated to the pixels it is drawn on.
 //
-// The points live in the QCPGraph's own container: there is no second copy. Two rules keep
-// their number bounded:
+// The series keeps its points (what the CSV export writes) apart from what it hands its
+// graph to draw (draw()). A few points, the graph gets as they are. More, it gets each
+// pixel column's lowest and highest point, and draws the column as a ColumnGraph does
+// (column_graph.h): a replot costs the same for a smooth curve and for rounding noise, and no more
+// than the pixels.
+//
+// Two rules keep the number of points kept bounded:
 //  - the owner trims what scrolled out of the window with removeBefore();
 //  - a curve that grows past its budget drops every other point, and from then on keeps only
 //    one incoming point in `stride`. Thinning the incoming points too keeps the density even
@@ -20,13 +26,20 @@
 #include <QString>
 
 #include <functional>
-
-class QCPGraph;
+#include <vector>
 
 namespace rigidlab::ui {
 
+class ColumnGraph;
+
 /// Which value axis a series is drawn against.
 enum class YAxis { Left, Right };
+
+/// A point of a series: time [s] and value [unit of the series]; a NaN value is a gap.
+struct PlotPoint {
+    double t = 0;
+    double v = 0;
+};
 
 class PlotSeries {
 public:
@@ -34,11 +47,11 @@ public:
     using SampleValue = std::function<double(const Sample&)>;
 
     /// `graph` belongs to its QCustomPlot; the series only adapts it.
-    PlotSeries(QCPGraph* graph, QString name, YAxis axis, SampleValue value);
+    PlotSeries(ColumnGraph* graph, QString name, YAxis axis, SampleValue value);
 
     const QString& name() const { return m_name; }
     YAxis axis() const { return m_axis; }
-    QCPGraph* graph() const { return m_graph; }
+    ColumnGraph* graph() const { return m_graph; }
     bool isFedBySamples() const { return static_cast<bool>(m_value); }
     double valueOf(const Sample& s) const { return m_value(s); }
 
@@ -52,17 +65,30 @@ public:
     void removeFrom(double t, int budget);
     void clear();
 
-    int size() const;
-    bool isEmpty() const { return size() == 0; }
+    int size() const { return static_cast<int>(m_points.size()); }
+    bool isEmpty() const { return m_points.empty(); }
+    const std::vector<PlotPoint>& points() const { return m_points; }
     double firstKey() const; ///< [s]; the series must not be empty
     double lastKey() const;  ///< [s]; the series must not be empty
     int stride() const { return m_stride; }
+
+    /// The lowest and highest finite value of the points with t in [from, to] [s] (only the
+    /// positive ones if asked, for a log axis). False if there is none.
+    bool valueRange(double from, double to, bool positiveOnly, double& lowest,
+                    double& highest) const;
+    /// Hands the graph the points to draw for the time range [from, to] [s] spread over
+    /// `columns` pixel columns (on a log time axis if `logKeys`): the points in range and the
+    /// one on either side, as they are if there are few, else each column's
+    /// lowest and highest, in the order they came, and the columns. A gap (NaN) stays a gap.
+    /// At most 3 * columns + 6 points, whatever the data.
+    void draw(double from, double to, int columns, bool logKeys) const;
 
 private:
     void decimate();
     void afterRemoval(int budget);
 
-    QCPGraph* m_graph = nullptr; ///< owned by the QCustomPlot
+    ColumnGraph* m_graph = nullptr;  ///< owned by the QCustomPlot; holds what is drawn
+    std::vector<PlotPoint> m_points; ///< sorted by t
     QString m_name;
     YAxis m_axis = YAxis::Left;
     SampleValue m_value;

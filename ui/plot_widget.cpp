@@ -1,5 +1,8 @@
 #include "plot_widget.h"
 
+#include "column_graph.h"
+#include "plot_range.h"
+
 #include <qcustomplot.h>
 
 #include <QScopedValueRollback>
@@ -30,8 +33,10 @@ constexpr double kWindowMargin = 0.1;
 constexpr int kRightMarginPx = 22; // half a tick label, so "10" is not cut at the edge
 /// Smallest time span [s] shown in whole-run mode, so a single point has an axis.
 constexpr double kMinWholeRunSpan = 1e-3;
-/// Fraction of the value span added above and below the curves.
-constexpr double kValuePadding = 0.08;
+/// A frame may come this much early and still count as the refresh interval passed [ms].
+constexpr int kFrameSlackMs = 8;
+/// Pixel columns assumed for a plot that was never laid out.
+constexpr int kDefaultColumns = 800;
 
 const QColor kInk(0x20, 0x20, 0x20);
 
@@ -99,6 +104,8 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
         connect(axis, qOverload<const QCPRange&>(&QCPAxis::rangeChanged), this,
                 &PlotWidget::onRangeChanged);
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, &PlotWidget::follow);
+    // The graphs get what the axes show, decimated to the pixels, just before each replot.
+    connect(m_plot, &QCustomPlot::beforeReplot, this, [this] { prepareGraphs(); });
 
     m_followButton->setText(tr("Follow"));
     m_followButton->setToolTip(tr("Follow the run again (or double-click the plot)"));
@@ -112,7 +119,11 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
 
     m_timer->setInterval(kRefreshIntervalMs);
     m_timer->setTimerType(Qt::PreciseTimer);
-    connect(m_timer, &QTimer::timeout, this, &PlotWidget::drain);
+    connect(m_timer, &QTimer::timeout, this, [this] {
+        // While frames come, they drive the drains (frameAdvanced()).
+        if (!m_sinceFrame.isValid() || m_sinceFrame.elapsed() > 2 * kRefreshIntervalMs)
+            drain();
+    });
     // The plots take turns: each starts a third of the interval after the one before, so that
     // their replots fall in different frames of the view instead of all in one.
     static int instances = 0;
@@ -184,6 +195,32 @@ QString PlotWidget::yAxisUnit(YAxis axis) const
     return axis == YAxis::Left ? m_leftUnit : m_rightUnit;
 }
 
+void PlotWidget::setValueScale(YAxis axis, double scale)
+{
+    const std::size_t i = axis == YAxis::Left ? 0 : 1;
+    m_valueScaleOf[i] = {};
+    m_valueScale[i] = std::isfinite(scale) && scale > 0 ? scale : 0.0;
+    m_dirty = true;
+}
+
+void PlotWidget::setValueScale(YAxis axis, PlotSeries::SampleValue scale)
+{
+    m_valueScaleOf[axis == YAxis::Left ? 0 : 1] = std::move(scale);
+    m_dirty = true;
+}
+
+void PlotWidget::setMinimumSpan(YAxis axis, double fraction)
+{
+    m_minimumSpan[axis == YAxis::Left ? 0 : 1] =
+        std::isfinite(fraction) && fraction > 0 ? fraction : 0.0;
+    m_dirty = true;
+}
+
+double PlotWidget::valueScale(YAxis axis) const
+{
+    return m_valueScale[axis == YAxis::Left ? 0 : 1];
+}
+
 int PlotWidget::addSeries(const QString& name, const QColor& color, PlotSeries::SampleValue value,
                           YAxis axis)
 {
@@ -199,7 +236,7 @@ int PlotWidget::addSeries(const QString& name, const QColor& color, YAxis axis)
 int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::SampleValue value,
                          YAxis axis)
 {
-    QCPGraph* graph = m_plot->addGraph(m_plot->xAxis, axisFor(axis));
+    auto* graph = new ColumnGraph(m_plot->xAxis, axisFor(axis)); // owned by m_plot
     // Dashed means "read me on the right axis", in the legend as on the curve.
     graph->setPen(QPen(color, kLineWidthPx, axis == YAxis::Right ? Qt::DashLine : Qt::SolidLine));
     graph->setName(axis == YAxis::Right ? tr("%1 (right axis)").arg(name) : name);
@@ -246,6 +283,11 @@ void PlotWidget::fitLegend(int widthPx)
     }
 }
 
+QCPGraph* PlotWidget::graph(int series) const
+{
+    return m_series.at(series).graph();
+}
+
 QString PlotWidget::seriesName(int series) const
 {
     return m_series.at(series).name();
@@ -258,11 +300,11 @@ QString PlotWidget::seriesUnit(int series) const
 
 std::vector<QPointF> PlotWidget::points(int series) const
 {
-    const QCPGraphDataContainer& data = *m_series.at(series).graph()->data();
+    const std::vector<PlotPoint>& kept = m_series.at(series).points();
     std::vector<QPointF> out;
-    out.reserve(data.size());
-    for (auto it = data.constBegin(); it != data.constEnd(); ++it)
-        out.emplace_back(it->key, it->value);
+    out.reserve(kept.size());
+    for (const PlotPoint& p : kept)
+        out.emplace_back(p.t, p.v);
     return out;
 }
 
@@ -308,8 +350,17 @@ void PlotWidget::setSource(const SampleBuffer* source)
     m_cursor = 0; // readSince() starts at the oldest sample still in the ring
 }
 
+void PlotWidget::frameAdvanced()
+{
+    m_sinceFrame.start();
+    // At 60 frames per second, every second frame: ~30 Hz.
+    if (!m_sinceDrain.isValid() || m_sinceDrain.elapsed() >= kRefreshIntervalMs - kFrameSlackMs)
+        drain();
+}
+
 int PlotWidget::drain()
 {
+    m_sinceDrain.start();
     int taken = 0;
     if (m_source) {
         const std::vector<Sample> samples = m_source->readSince(m_cursor);
@@ -324,8 +375,15 @@ int PlotWidget::drain()
             m_lastSampleT = s.t;
             ++taken;
         }
-        if (taken > 0)
+        if (taken > 0) {
+            for (std::size_t i = 0; i < m_valueScaleOf.size(); ++i) {
+                if (!m_valueScaleOf[i])
+                    continue;
+                const double scale = m_valueScaleOf[i](samples.back());
+                m_valueScale[i] = std::isfinite(scale) && scale > 0 ? scale : 0.0;
+            }
             trimToWindow();
+        }
     }
     if (m_dirty) {
         m_dirty = false;
@@ -476,35 +534,41 @@ void PlotWidget::updateRanges()
 void PlotWidget::fitValueAxis(YAxis axis)
 {
     const QCPRange keys = m_plot->xAxis->range();
-    const bool log = axisFor(axis)->scaleType() == QCPAxis::stLogarithmic;
+    QCPAxis* valueAxis = axisFor(axis);
+    const bool log = valueAxis->scaleType() == QCPAxis::stLogarithmic;
     bool any = false;
-    QCPRange values;
+    double lowest = 0, highest = 0;
     for (const PlotSeries& series : m_series) {
         if (series.axis() != axis || !series.graph()->visible())
             continue;
-        bool found = false;
-        const QCPRange r =
-            series.graph()->getValueRange(found, log ? QCP::sdPositive : QCP::sdBoth, keys);
-        if (!found)
+        double lo = 0, hi = 0;
+        if (!series.valueRange(keys.lower, keys.upper, log, lo, hi))
             continue;
-        if (any)
-            values.expand(r);
-        else
-            values = r;
+        lowest = any ? std::min(lowest, lo) : lo;
+        highest = any ? std::max(highest, hi) : hi;
         any = true;
     }
     if (!any)
         return;
     if (log) {
-        axisFor(axis)->setRange(values.lower / 2, values.upper * 2);
+        valueAxis->setRange(lowest / 2, highest * 2);
         return;
     }
-    const double span = values.size();
-    const double center = values.center();
-    // A constant curve (drift of an exact integrator, energy at rest) still gets an axis.
-    const bool flat = span <= 1e-12 * std::max(1.0, std::abs(center));
-    const double pad = flat ? (center != 0 ? 0.05 * std::abs(center) : 1.0) : kValuePadding * span;
-    axisFor(axis)->setRange(values.lower - pad, values.upper + pad);
+    // Rounding noise is drawn flat, and the ticks always read differently (plot_range.h).
+    const AxisRange range =
+        niceRange(lowest, highest, valueScale(axis), m_minimumSpan[axis == YAxis::Left ? 0 : 1]);
+    valueAxis->setNumberPrecision(range.labelDigits);
+    valueAxis->setRange(range.lower, range.upper);
+}
+
+void PlotWidget::prepareGraphs(int columns)
+{
+    if (columns <= 0)
+        columns = m_plot->width() > 0 ? m_plot->width() : kDefaultColumns;
+    const QCPRange keys = m_plot->xAxis->range();
+    const bool log = m_plot->xAxis->scaleType() == QCPAxis::stLogarithmic;
+    for (const PlotSeries& series : m_series)
+        series.draw(keys.lower, keys.upper, columns, log);
 }
 
 void PlotWidget::requestReplot()

@@ -1,8 +1,12 @@
 #pragma once
 // A live plot of the lab window: a QCustomPlot with a title, labelled axes with units, a
 // legend, and series that either read a value out of each Sample of a SampleBuffer or are fed
-// point by point (appendPoint). The widget drains its source on a timer of its own (30 Hz)
-// and replots, queued, only when something changed; the simulation never waits for it.
+// point by point (appendPoint). The widget drains its source about 30 times a second, right
+// after a frame of the run when told of frames (frameAdvanced), else on a timer of its own,
+// and replots, queued, only when something changed; the simulation never waits for it. A
+// replot hands each graph its points decimated to the pixel columns (prepareGraphs), and
+// the value axes follow niceRange (plot_range.h): what it costs and what it shows do not
+// depend on rounding noise.
 //
 // Memory stays bounded however long the run (see PlotSeries): in window mode the points older
 // than the window (plus a margin) are dropped; in both modes a series that grows past the
@@ -14,10 +18,12 @@
 #include "sample_buffer.h"
 
 #include <QColor>
+#include <QElapsedTimer>
 #include <QPointF>
 #include <QString>
 #include <QWidget>
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -25,6 +31,7 @@
 
 class QCustomPlot;
 class QCPAxis;
+class QCPGraph;
 class QCPItemLine;
 class QCPItemText;
 class QCPTextElement;
@@ -65,6 +72,15 @@ public:
     /// Labels a value axis "quantity [unit]"; the unit also heads the CSV columns.
     void setYAxisLabel(const QString& quantity, const QString& unit, YAxis axis = YAxis::Left);
     QString yAxisUnit(YAxis axis) const;
+    /// What the quantity on a value axis is worth in the scene, in its unit: a variation below
+    /// a billionth of it is rounding noise, drawn flat (see niceRange in plot_range.h). Fixed,
+    /// or read from each sample drained (the scene's momentum, say). Unset, it is 0.
+    void setValueScale(YAxis axis, double scale);
+    void setValueScale(YAxis axis, PlotSeries::SampleValue scale);
+    double valueScale(YAxis axis) const;
+    /// Keeps a value axis at least this fraction of the quantity's magnitude tall (see
+    /// niceRange); 0, the default, fits the data however small its variation.
+    void setMinimumSpan(YAxis axis, double fraction);
 
     /// A series that reads its value from every sample of the source. Returns its index.
     /// Series on the right axis are drawn dashed, and say so in the legend.
@@ -77,6 +93,8 @@ public:
     void appendPoint(int series, double t, double value);
 
     int seriesCount() const { return static_cast<int>(m_series.size()); }
+    /// The graph that draws a series, for styling (pen, scatter); owned by plot().
+    QCPGraph* graph(int series) const;
     QString seriesName(int series) const;
     QString seriesUnit(int series) const;
     /// The points of a series as (t [s], value), oldest first.
@@ -114,12 +132,21 @@ public:
 
     /// The underlying plot, for export and styling. It stays owned by this widget.
     QCustomPlot* plot() const { return m_plot; }
+    /// Hands each graph its points decimated to `columns` pixel columns of the time axis
+    /// shown (see PlotSeries::draw); 0 takes the plot's width on screen. Every replot does
+    /// this first; an export does it for the export's width.
+    void prepareGraphs(int columns = 0);
     /// Wraps the legend into as many columns as fit `widthPx` (the widget's width on screen;
     /// the export size while exporting).
     void fitLegend(int widthPx);
 
 public slots:
     void follow() { setFollowing(true); }
+    /// The run advanced a frame: drains now if the refresh interval has passed. A plot told
+    /// of every frame drains right after one, so that its replot does not land on the next
+    /// frame's deadline; its own timer then only stands in while no frames come (a paused
+    /// run).
+    void frameAdvanced();
     /// Asks for a file name, then exports; a failure is shown in a message box.
     void exportInteractively(rigidlab::ui::ExportFormat format);
 
@@ -163,10 +190,15 @@ private:
     bool m_captionShown = false;
     QToolButton* m_followButton = nullptr; ///< child, shown while paused
     QTimer* m_timer = nullptr;             ///< child
+    QElapsedTimer m_sinceDrain;            ///< since the last drain
+    QElapsedTimer m_sinceFrame;            ///< since the last frameAdvanced()
     std::vector<PlotSeries> m_series;
     std::deque<Mark> m_marks; ///< sorted by t
     QString m_leftUnit;
     QString m_rightUnit;
+    std::array<double, 2> m_valueScale{};                  ///< left, right [unit of the axis]
+    std::array<PlotSeries::SampleValue, 2> m_valueScaleOf; ///< left, right; may be empty
+    std::array<double, 2> m_minimumSpan{};                 ///< left, right; see niceRange
 
     const SampleBuffer* m_source = nullptr;
     std::uint64_t m_cursor = 0;
@@ -188,6 +220,14 @@ private:
 /// A colour for the index-th curve from a palette told apart with any colour vision (it
 /// cycles after 7): one energy curve per integrator, say.
 QColor plotColor(int index);
+
+/// A drift is relative to |E0|: what it is worth is all of it, 100 % (a drift below 1e-7 %
+/// is rounding noise).
+inline constexpr double kDriftScalePercent = 100.0;
+
+/// A conserved quantity's axis is at least this fraction of its magnitude tall: a change of
+/// 1e-4 of it, which the solver makes, shows as a pixel or two, not as a full-height jump.
+inline constexpr double kConservedMinimumSpan = 0.02;
 
 /// Kinetic, potential and total energy [J].
 PlotWidget* makeEnergyPlot(QWidget* parent);

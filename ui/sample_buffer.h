@@ -25,6 +25,11 @@ struct Sample {
     double dissipated = 0;
     /// The numerical error: (total + dissipated - total at start) / |total at start| * 100 [%]
     double driftPercent = 0;
+    // What the quantities are worth in the scene: a plot draws a variation below a billionth
+    // of that as flat (plot_range.h). 0 when unknown.
+    double energyScale = 0;          ///< |E0|, or K + |P| at the start [J]
+    double momentumScale = 0;        ///< [kg m/s]
+    double angularMomentumScale = 0; ///< [kg m^2/s]
     /// Worlds compared side by side (a lesson step): their total energy and drift, variant 0
     /// being the main world. `variants` says how many are in use.
     static constexpr int kMaxVariants = 6;

@@ -1,5 +1,7 @@
 #include "simulation_controller.h"
 
+#include "step_sampler.h"
+
 #include "rigidlab/lessons/limits.h"
 #include "rigidlab/lessons/scene_loader.h"
 
@@ -194,7 +196,7 @@ void SimulationController::doStep()
 
 void SimulationController::pushSample()
 {
-    const double t = m_world.time();
+    const double t = stepTime(m_world);
     if (m_lastSampleTime >= 0 && t < m_lastSampleTime + kSampleInterval - 1e-12)
         return;
     m_lastSampleTime = t;
@@ -213,7 +215,9 @@ void SimulationController::advanceFrame()
     const double wall = std::min(unclampedWall, kMaxFrameSeconds);
     m_wall.start();
     const double h = m_world.def().dt;
-    bool slow = false;
+    // A frame longer than kMaxFrameSeconds (the window was busy) loses the rest of its time:
+    // the run fell behind real time, and says so.
+    bool slow = unclampedWall > kMaxFrameSeconds;
     if (m_running) {
         m_accumulator += wall * m_timeScale;
         while (m_accumulator >= h) {
@@ -240,6 +244,7 @@ void SimulationController::advanceFrame()
         m_stepsThisSecond = 0;
     }
     emit worldChanged();
+    emit frameAdvanced();
 }
 
 void SimulationController::measureFrames(int frames)
@@ -281,8 +286,8 @@ void SimulationController::seek(long long step)
     }
     m_measurements.rewind(m_world);
     m_previousPoses.clear();
-    m_lastSampleTime = m_world.time() - kSampleInterval; // sample again from here on
-    emit rewound(m_world.time());
+    m_lastSampleTime = stepTime(m_world) - kSampleInterval; // sample again from here on
+    emit rewound(stepTime(m_world));
     pushSample();
     emit worldChanged();
 }
@@ -302,7 +307,7 @@ void SimulationController::afterEdit(const QString& mark)
 {
     m_history.branchAt(m_world);
     if (!mark.isEmpty() && m_world.stepCount() > 0)
-        emit marked(m_world.time(), mark);
+        emit marked(stepTime(m_world), mark);
     emit settingsChanged();
     emit worldChanged();
 }

@@ -139,6 +139,8 @@ signals:
     void settingsChanged();
     /// A setting changed mid-run: the plots draw a mark at t.
     void marked(double t, const QString& label);
+    /// A frame of the running clock is done (advanceFrame): the plots drain after it.
+    void frameAdvanced();
     /// The world went back to time t: the plots drop what comes after.
     void rewound(double t);
     /// Samples were cleared (new scene, reset).

@@ -27,6 +27,7 @@ PlotWidget* makeEnergyPlot(QWidget* parent)
 {
     auto* plot = new PlotWidget(PlotWidget::tr("Energy"), parent);
     plot->setYAxisLabel(PlotWidget::tr("energy E"), QStringLiteral("J"));
+    plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
     plot->addSeries(PlotWidget::tr("kinetic"), plotColor(1),
                     [](const Sample& s) { return s.kinetic; });
     plot->addSeries(PlotWidget::tr("potential"), plotColor(0),
@@ -46,6 +47,10 @@ PlotWidget* makeMomentumPlot(QWidget* parent)
     auto* plot = new PlotWidget(PlotWidget::tr("Momentum"), parent);
     plot->setYAxisLabel(PlotWidget::tr("p"), QStringLiteral("kg m/s"));
     plot->setYAxisLabel(PlotWidget::tr("L"), QStringLiteral("kg m²/s"), YAxis::Right);
+    plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.momentumScale; });
+    plot->setValueScale(YAxis::Right, [](const Sample& s) { return s.angularMomentumScale; });
+    plot->setMinimumSpan(YAxis::Left, kConservedMinimumSpan);
+    plot->setMinimumSpan(YAxis::Right, kConservedMinimumSpan);
     plot->addSeries(QStringLiteral("px"), plotColor(0), [](const Sample& s) { return s.px; });
     plot->addSeries(QStringLiteral("py"), plotColor(1), [](const Sample& s) { return s.py; });
     plot->addSeries(
@@ -60,6 +65,7 @@ PlotWidget* makeDriftPlot(QWidget* parent)
     // The numerical error alone: the energy that contacts, friction, drag and dampers took is
     // added back, since losing it is physics, not error.
     plot->setYAxisLabel(PlotWidget::tr("(E + E_dissipated − E₀)/|E₀|"), QStringLiteral("%"));
+    plot->setValueScale(YAxis::Left, kDriftScalePercent);
     plot->addSeries(PlotWidget::tr("energy drift (numerical error)"), plotColor(3),
                     [](const Sample& s) { return s.driftPercent; });
     return plot;

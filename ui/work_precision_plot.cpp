@@ -60,7 +60,7 @@ int WorkPrecisionPlot::seriesFor(const QString& integrator)
     const int colour = static_cast<int>(lessons::sweepIntegratorNames().indexOf(integrator));
     const QColor color = plotColor(std::max(colour, 0));
     const int index = addSeries(integrator, color);
-    QCPGraph* graph = plot()->graph(index);
+    QCPGraph* graph = PlotWidget::graph(index);
     // Boost.Odeint's lines dashed, so that each pair (rk4, dopri5) reads as ours against theirs.
     const bool library = integrator.startsWith(QLatin1String("odeint-"));
     graph->setPen(QPen(color, 2.0, library ? Qt::DashLine : Qt::SolidLine));

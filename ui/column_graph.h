@@ -1,0 +1,55 @@
+#pragma once
+// A QCPGraph that draws a dense curve column by column, at a cost that does not depend on
+// its values.
+//
+// Qt's raster engine fills an antialiased path by sorting, on every scanline, the edges that
+// cross it. A line that zigzags the full height of the plot in every pixel column (Verlet's
+// energy, rounding noise on a tight axis) crosses each scanline hundreds of times, and one
+// replot took 40-70 ms for a curve of 450 columns. What such a line covers in a column is
+// the run of pixels from its lowest to its highest value there: drawn as that run, a filled
+// rectangle, it costs a few spans.
+//
+//   per column:   its pixels run from its lowest to its highest value, and to where the
+//                 column next to it ends (the line between them is in its pixels too);
+//                 thin (that run within kThinPx): a vertex of an antialiased polyline;
+//                 thick: a rectangle over that run, pen-wide, and a line from its last
+//                 value on to the next thin column.
+//
+//        |  |||                               thin    thick     thin
+//   ___/ |  ||| \___                          .__.  |||||||  .__.
+//
+// Without columns (setColumns with none) it is a plain QCPGraph of its data.
+
+#include <qcustomplot.h>
+
+#include <vector>
+
+namespace rigidlab::ui {
+
+class ColumnGraph : public QCPGraph {
+public:
+    /// One pixel column of a dense curve [s, unit of the value]. A NaN `low` is a gap.
+    struct Column {
+        double t = 0;     ///< a time within the column [s]
+        double low = 0;   ///< the lowest value in the column
+        double high = 0;  ///< the highest
+        double first = 0; ///< the value the column starts with
+        double last = 0;  ///< the value it ends with
+    };
+    /// Columns thinner than this [px] are drawn as a line through their middle.
+    static constexpr double kThinPx = 2.0;
+
+    ColumnGraph(QCPAxis* keyAxis, QCPAxis* valueAxis) : QCPGraph(keyAxis, valueAxis) {}
+
+    /// Draws these columns instead of the data; empty: the data, as a QCPGraph does.
+    void setColumns(std::vector<Column> columns) { m_columns = std::move(columns); }
+    const std::vector<Column>& columns() const { return m_columns; }
+
+protected:
+    void draw(QCPPainter* painter) override;
+
+private:
+    std::vector<Column> m_columns;
+};
+
+} // namespace rigidlab::ui
