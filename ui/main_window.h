@@ -78,6 +78,8 @@ private slots:
     void openLessonDialog();
     void applyLessonStep(const rigidlab::lessons::Lesson& lesson, int step);
     void leaveLesson();
+    /// Hides what the lesson step's questions still hold back, shows what they released.
+    void applyHeldBack(const QStringList& held);
     void updateStatus();
     void updateTimeline();
 
@@ -102,6 +104,7 @@ private:
     QDockWidget* m_compareDock = nullptr;
     QMap<QString, QDockWidget*> m_docks;
     bool m_inLesson = false;
+    bool m_runHeld = false; ///< a question keeps the scene from running until it is answered
     std::array<PlotWidget*, kPlotCount> m_plots{};
     QSlider* m_timeline = nullptr;
     QLabel* m_timeLabel = nullptr;
