@@ -119,6 +119,7 @@ std::optional<double> measureAhead(const LessonStep& step, const Measure& measur
 {
     std::vector<physics::World> worlds = buildStepWorlds(step);
     physics::World& world = worlds.front();
+    world.updateDiagnostics(); // the energy at the start, which drift is measured against
     Measurements m;
     m.reset(world, {measure});
     for (long long i = 0; i < maxSteps; ++i) {
