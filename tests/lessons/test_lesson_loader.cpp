@@ -103,6 +103,10 @@ void TestLesson::shippedLessonsLoad()
                 QVERIFY(std::isfinite(b.position.x()) && std::isfinite(b.position.y()));
         }
     }
+    // rigidlab-cli validate agrees.
+    const lessons::DocumentCheck check = lessons::checkDocumentFile(path);
+    QVERIFY2(check.ok, qPrintable(check.error));
+    QCOMPARE(check.kind, QStringLiteral("lesson"));
     // The only warning a shipped lesson may give is the SAT lesson's non-convex cup.
     for (const QString& w : loaded.warnings)
         QVERIFY2(w.contains(QStringLiteral("sat_non_convex.json")), qPrintable(w));
