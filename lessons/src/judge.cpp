@@ -114,11 +114,14 @@ Verdict showAnswer(const Question& q, std::optional<double> value)
     return verdict;
 }
 
-std::optional<double> measureAhead(const LessonStep& step, const Measure& measure,
-                                   long long maxSteps)
+std::optional<double> measureAhead(const LessonStep& step, const Measure& measure)
 {
     std::vector<physics::World> worlds = buildStepWorlds(step);
     physics::World& world = worlds.front();
+    // The export time is what the lesson's author runs the step for: the loader keeps it to
+    // at most 1e7 steps, and the measure's own time to at most 3600 s.
+    const double until = std::max(step.exportTime, measure.time); // [s]
+    const auto maxSteps = static_cast<long long>(std::ceil(until / world.def().dt)) + 2;
     world.updateDiagnostics(); // the energy at the start, which drift is measured against
     Measurements m;
     m.reset(world, {measure});

@@ -228,6 +228,31 @@ private slots:
         QVERIFY(!w.dock(QStringLiteral("controls"))->isHidden());
     }
 
+    void unmeasurableAheadLetsTheSceneRun()
+    {
+        // A ball with no floor never bounces: the run ahead cannot measure its apex within the
+        // step's export time, so the answer lets the scene run instead of leaving the student
+        // stuck.
+        const QString path = m_dir.filePath(QStringLiteral("nofloor.json"));
+        QFile f(path);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write(R"({"rigidlab-lesson": 1, "title": "t", "steps": [{"title": "s",
+          "scene": {"rigidlab": 1, "bodies": [{"id": "ball",
+            "shape": {"type": "circle", "radius": 0.1}, "position": [0, 1]}]},
+          "exportTime": 0.1,
+          "questions": [{"prompt": "p", "measure": {"kind": "apex", "body": "ball"},
+            "unit": "m", "hint": "h", "holdBack": ["run"]}]}]})");
+        f.close();
+        MainWindow w;
+        QCOMPARE(w.openLesson(path, true), QString());
+        QVERIFY(!w.controller().isRunning());
+        w.lessonPlayer().answer(0, QStringLiteral("1"));
+        QVERIFY2(w.lessonPlayer().result(0).startsWith(QStringLiteral("Run the simulation")),
+                 qPrintable(w.lessonPlayer().result(0)));
+        QVERIFY(w.lessonPlayer().heldBack().isEmpty());
+        QVERIFY(w.controller().isRunning());
+    }
+
 private:
     QTemporaryDir m_dir;
     QString m_path;

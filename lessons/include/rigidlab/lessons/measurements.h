@@ -101,9 +101,9 @@ private:
 
 /// A question's measure read from the step's main world run without a window, from the
 /// start, as the window runs it (for a question that holds back the running of the scene);
-/// nullopt when the run does not get there within `maxSteps` steps or diverges first.
-std::optional<double> measureAhead(const LessonStep& step, const Measure& measure,
-                                   long long maxSteps = 2'000'000);
+/// nullopt when the run does not get there within the step's exportTime (or the measure's
+/// time, if later) or diverges first.
+std::optional<double> measureAhead(const LessonStep& step, const Measure& measure);
 
 struct Verdict {
     bool measured = false; ///< false: run the simulation further first
