@@ -14,6 +14,14 @@ namespace rigidlab::ui {
 namespace {
 
 constexpr int kBouncesShown = 4;
+/// The first column of the bounce heights, after ball, e and the drop height.
+constexpr int kFirstHeightColumn = 3;
+
+/// What a cell the lesson holds back reads.
+QString heldText()
+{
+    return QStringLiteral("?");
+}
 
 QString num(double v, int digits = 3)
 {
@@ -100,10 +108,24 @@ void BouncePanel::refresh()
                     ratio = num(height / previous);
                 previous = height;
             }
-            setCell(m_table, row, 3 + 2 * i, h);
-            setCell(m_table, row, 4 + 2 * i, ratio);
+            if (m_heightsHeld)
+                h = ratio = heldText();
+            setCell(m_table, row, kFirstHeightColumn + 2 * i, h);
+            setCell(m_table, row, kFirstHeightColumn + 1 + 2 * i, ratio);
         }
     }
+}
+
+void BouncePanel::setHeightsHeld(bool held)
+{
+    if (held == m_heightsHeld)
+        return;
+    m_heightsHeld = held;
+    const QString tip = held ? tr("Answer the lesson's question first") : QString();
+    for (int c = kFirstHeightColumn; c < m_table->columnCount(); ++c)
+        if (QTableWidgetItem* header = m_table->horizontalHeaderItem(c))
+            header->setToolTip(tip);
+    refresh();
 }
 
 CollisionPanel::CollisionPanel(SimulationController& controller, QWidget* parent)
@@ -183,7 +205,19 @@ void CollisionPanel::refresh()
     m_table->setRowCount(static_cast<int>(rows.size()));
     for (int r = 0; r < rows.size(); ++r)
         for (int c = 0; c < 3; ++c)
-            setCell(m_table, r, c, rows[r][c]);
+            setCell(m_table, r, c,
+                    c == 2 && m_afterHeld && !rows[r][c].isEmpty() ? heldText() : rows[r][c]);
+}
+
+void CollisionPanel::setAfterHeld(bool held)
+{
+    if (held == m_afterHeld)
+        return;
+    m_afterHeld = held;
+    if (QTableWidgetItem* header = m_table->horizontalHeaderItem(2))
+        header->setToolTip(held ? tr("Answer the lesson's question first") : QString());
+    m_shownCount = -1; // redraw the table even without a new collision
+    refresh();
 }
 
 } // namespace rigidlab::ui

@@ -17,6 +17,8 @@ class BouncePanel : public QWidget {
 public:
     explicit BouncePanel(SimulationController& controller, QWidget* parent = nullptr);
     QTableWidget* table() const { return m_table; }
+    /// Held: the measured heights and their ratios read "?" until the student has answered.
+    void setHeightsHeld(bool held);
 
 public slots:
     void refresh();
@@ -24,6 +26,7 @@ public slots:
 private:
     SimulationController& m_controller;
     QTableWidget* m_table;
+    bool m_heightsHeld = false;
 };
 
 class CollisionPanel : public QWidget {
@@ -31,6 +34,8 @@ class CollisionPanel : public QWidget {
 public:
     explicit CollisionPanel(SimulationController& controller, QWidget* parent = nullptr);
     QTableWidget* table() const { return m_table; }
+    /// Held: the "after" column reads "?" until the student has answered.
+    void setAfterHeld(bool held);
 
 public slots:
     void refresh();
@@ -40,6 +45,7 @@ private:
     QLabel* m_title;
     QTableWidget* m_table;
     int m_shownCount = -1;
+    bool m_afterHeld = false;
 };
 
 } // namespace rigidlab::ui

@@ -218,16 +218,22 @@ void LessonPlayer::buildQuestions()
         row->addWidget(new QLabel(q.unit, box));
         auto* check = new QPushButton(tr("Check"), box);
         row->addWidget(check);
+        auto* show = new QPushButton(tr("Show me"), box);
+        show->setToolTip(tr("Give up and show the measured value"));
+        row->addWidget(show);
         v->addLayout(row);
         auto* result = new QLabel(box);
         result->setWordWrap(true);
         v->addWidget(result);
         m_questionLayout->addWidget(box);
-        m_rows.push_back({edit, result});
+        QuestionRow questionRow;
+        questionRow.edit = edit;
+        questionRow.result = result;
+        questionRow.show = show;
+        m_rows.push_back(questionRow);
         auto judge = [this, i, edit, result] {
             if (!m_lesson)
                 return;
-            const lessons::LessonStep& st = m_lesson->steps[static_cast<size_t>(m_step)];
             const std::optional<double> parsed = parseNumber(edit->text());
             if (!parsed) {
                 result->setStyleSheet(QStringLiteral("color: #a05a00;"));
@@ -242,16 +248,86 @@ void LessonPlayer::buildQuestions()
                                     .arg(kMaxAnswer, 0, 'g'));
                 return;
             }
-            const lessons::Verdict v =
-                lessons::judge(st.questions[i], answer, m_controller.measurements(), st.scene);
-            result->setStyleSheet(!v.measured ? QStringLiteral("color: #a05a00;")
-                                  : v.right   ? QStringLiteral("color: #1e7b34; font-weight: bold;")
-                                            : QStringLiteral("color: #b3261e; font-weight: bold;"));
-            result->setText(v.message);
+            settle(i, judgeTry(i, answer));
         };
         connect(check, &QPushButton::clicked, this, judge);
         connect(edit, &QLineEdit::returnPressed, this, judge);
+        connect(show, &QPushButton::clicked, this, [this, i] {
+            if (m_lesson && i < m_rows.size())
+                settle(i, lessons::showAnswer(
+                              m_lesson->steps[static_cast<size_t>(m_step)].questions[i],
+                              measuredValue(i)));
+        });
     }
+}
+
+std::optional<double> LessonPlayer::measuredValue(std::size_t i)
+{
+    const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
+    const lessons::Question& q = step.questions[i];
+    if (const auto live = m_controller.measurements().value(q.measure, step.scene))
+        return live;
+    // While the scene may not run, the student could never get a verdict: the same run is
+    // done without a window instead (it is deterministic, so it measures what the window
+    // will show once it runs).
+    if (!heldBack().contains(QStringView(lessons::kHoldBackRun)))
+        return std::nullopt;
+    QuestionRow& row = m_rows[i];
+    if (!row.aheadDone) {
+        row.ahead = lessons::measureAhead(step, q.measure);
+        row.aheadDone = true;
+    }
+    return row.ahead;
+}
+
+lessons::Verdict LessonPlayer::judgeTry(std::size_t i, double answer)
+{
+    const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
+    QuestionRow& row = m_rows[i];
+    const std::optional<double> value = measuredValue(i);
+    if (value && !row.answered)
+        ++row.attempts;
+    // Once answered, every later try is judged with the value given.
+    return lessons::judgeAttempt(q, answer, value, row.answered ? 2 : row.attempts);
+}
+
+void LessonPlayer::settle(std::size_t i, const lessons::Verdict& v)
+{
+    QuestionRow& row = m_rows[i];
+    row.result->setStyleSheet(!v.measured ? QStringLiteral("color: #a05a00;")
+                              : v.right   ? QStringLiteral("color: #1e7b34; font-weight: bold;")
+                              : v.shown   ? QStringLiteral("color: #b3261e; font-weight: bold;")
+                                          : QStringLiteral("color: #a05a00; font-weight: bold;"));
+    row.result->setText(v.message);
+    if (!v.measured && heldBack().contains(QStringView(lessons::kHoldBackRun))) {
+        // Not measurable without a window within the limit: let the scene run rather than
+        // leave the student with no way on.
+        row.answered = true;
+        emit heldBackChanged(heldBack());
+        return;
+    }
+    if (!v.shown || row.answered)
+        return;
+    row.answered = true;
+    row.show->setEnabled(false);
+    emit heldBackChanged(heldBack());
+}
+
+QStringList LessonPlayer::heldBack() const
+{
+    if (!m_lesson)
+        return {};
+    std::vector<bool> answered;
+    for (const QuestionRow& row : m_rows)
+        answered.push_back(row.answered);
+    return m_lesson->steps[static_cast<size_t>(m_step)].heldBack(answered);
+}
+
+void LessonPlayer::showMe(int question)
+{
+    if (question < 0 || question >= static_cast<int>(m_rows.size()))
+        return;
+    m_rows[static_cast<size_t>(question)].show->click();
 }
 
 void LessonPlayer::answer(int question, const QString& text)

@@ -3,10 +3,13 @@
 // It only shows; the window applies each step (scene, settings, panels) when told to.
 
 #include "rigidlab/lessons/lesson.h"
+#include "rigidlab/lessons/measurements.h"
 
 #include <QWidget>
 
 #include <memory>
+#include <optional>
+#include <vector>
 
 class QComboBox;
 class QLabel;
@@ -36,6 +39,11 @@ public:
     /// The answer box and result line of question i of the current step (for tests).
     void answer(int question, const QString& text);
     QString result(int question) const;
+    /// Presses question i's "Show me" (for tests).
+    void showMe(int question);
+    /// What the current step's questions still hold back ("run", "panel:collision", ...):
+    /// those of the questions not yet answered right, twice or by "Show me".
+    QStringList heldBack() const;
 
 public slots:
     void next();
@@ -49,10 +57,19 @@ signals:
     void stepActivated(const rigidlab::lessons::Lesson& lesson, int step);
     void exportRequested();
     void lessonClosed();
+    /// An answer released some of what the step held back; `held` is what it still holds.
+    void heldBackChanged(const QStringList& held);
 
 private:
     void showStep();
     void buildQuestions();
+    /// Question i's verdict on this try, against the running world or, while the question
+    /// keeps the scene from running, against a run without a window.
+    lessons::Verdict judgeTry(std::size_t i, double answer);
+    /// The measured value question i is judged against, nullopt while not measured yet.
+    std::optional<double> measuredValue(std::size_t i);
+    /// Shows a verdict under question i; one that gives the value answers the question.
+    void settle(std::size_t i, const lessons::Verdict& verdict);
 
     SimulationController& m_controller;
     std::unique_ptr<lessons::Lesson> m_lesson;
@@ -73,6 +90,11 @@ private:
     struct QuestionRow {
         QLineEdit* edit = nullptr;
         QLabel* result = nullptr;
+        QPushButton* show = nullptr;
+        int attempts = 0;      ///< wrong and right tries judged so far
+        bool answered = false; ///< the value has been given: nothing is held back for it
+        bool aheadDone = false;
+        std::optional<double> ahead; ///< measured without a window, once aheadDone
     };
     std::vector<QuestionRow> m_rows;
 };

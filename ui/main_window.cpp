@@ -92,6 +92,12 @@ MainWindow::MainWindow(QWidget* parent)
     m_player->scanFolder(lessonsFolder());
     connect(m_player, &LessonPlayer::stepActivated, this, &MainWindow::applyLessonStep);
     connect(m_player, &LessonPlayer::lessonClosed, this, &MainWindow::leaveLesson);
+    connect(m_player, &LessonPlayer::heldBackChanged, this, [this](const QStringList& held) {
+        const bool wasHeld = m_runHeld;
+        applyHeldBack(held);
+        if (wasHeld && !m_runHeld)
+            m_controller->setRunning(true); // predicted: now see
+    });
     connect(m_player, &LessonPlayer::exportRequested, this, [this] {
         const ModalScope modal;
         const QString folder = QFileDialog::getExistingDirectory(
@@ -657,7 +663,28 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     } else {
         m_sat->setBodies(-1, -1);
     }
-    m_controller->setRunning(step.autoplay);
+    applyHeldBack(m_player->heldBack());
+    m_controller->setRunning(step.autoplay && !m_runHeld);
+}
+
+void MainWindow::applyHeldBack(const QStringList& held)
+{
+    m_runHeld = held.contains(QStringView(lessons::kHoldBackRun));
+    m_playAction->setEnabled(!m_runHeld);
+    m_stepAction->setEnabled(!m_runHeld);
+    if (m_runHeld)
+        m_controller->setRunning(false);
+    m_collision->setAfterHeld(held.contains(QStringView(lessons::kHoldBackCollisionAfter)));
+    m_bounces->setHeightsHeld(held.contains(QStringView(lessons::kHoldBackBounceHeights)));
+    const lessons::Lesson* lesson = m_player->lesson();
+    if (!m_inLesson || !lesson)
+        return;
+    const lessons::LessonStep& step = lesson->steps[static_cast<size_t>(m_player->stepIndex())];
+    for (const auto& [names, prefix] : {std::pair{&step.panels, QStringLiteral("panel:")},
+                                        std::pair{&step.plots, QStringLiteral("plot:")}})
+        for (const QString& name : *names)
+            if (QDockWidget* d = dock(name))
+                d->setVisible(!held.contains(prefix + name));
 }
 
 void MainWindow::leaveLesson()
@@ -678,6 +705,7 @@ void MainWindow::leaveLesson()
     m_compareDock->hide();
     m_controls->setAllowed(std::nullopt);
     m_sat->setBodies(-1, -1);
+    applyHeldBack({});
 }
 
 QStringList MainWindow::exportStepPlots(const QString& folder)

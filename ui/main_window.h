@@ -78,6 +78,8 @@ private slots:
     void openLessonDialog();
     void applyLessonStep(const rigidlab::lessons::Lesson& lesson, int step);
     void leaveLesson();
+    /// Hides what the lesson step's questions still hold back, shows what they released.
+    void applyHeldBack(const QStringList& held);
     void updateStatus();
     void updateTimeline();
 
@@ -103,6 +105,7 @@ private:
     QMap<QString, QDockWidget*> m_docks;
     bool m_inLesson = false;
     bool m_closePending = false; ///< asked to close while a dialog's answer was pending
+    bool m_runHeld = false;      ///< a question keeps the scene from running until it is answered
     std::array<PlotWidget*, kPlotCount> m_plots{};
     QSlider* m_timeline = nullptr;
     QLabel* m_timeLabel = nullptr;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rigidlab::lessons {
 
@@ -65,8 +66,13 @@ QString notYet(const Measure& m)
 
 Verdict judge(const Question& q, double answer, const Measurements& m, const Scene& scene)
 {
+    // Without a count of tries every answer is a last try: the value is always given.
+    return judgeAttempt(q, answer, m.value(q.measure, scene), std::numeric_limits<int>::max());
+}
+
+Verdict judgeAttempt(const Question& q, double answer, std::optional<double> value, int attempt)
+{
     Verdict verdict;
-    const std::optional<double> value = m.value(q.measure, scene);
     if (!value) {
         verdict.message = notYet(q.measure);
         return verdict;
@@ -79,10 +85,57 @@ Verdict judge(const Question& q, double answer, const Measurements& m, const Sce
     }
     verdict.right =
         std::abs(answer - *value) <= q.tolerance * std::abs(*value) + q.absoluteTolerance;
+    if (!verdict.right && attempt <= 1) {
+        // A second try is only worth something while the value is still unknown.
+        verdict.message =
+            q.hint.isEmpty()
+                ? tr("Not quite (you said %1). Try once more.").arg(formatValue(answer, q))
+                : tr("Not quite (you said %1). Hint: %2").arg(formatValue(answer, q), q.hint);
+        return verdict;
+    }
+    verdict.shown = true;
     verdict.message = (verdict.right ? tr("Right: the simulation measured %1 (you said %2).")
                                      : tr("Not quite: the simulation measured %1 (you said %2)."))
                           .arg(formatValue(*value, q), formatValue(answer, q));
     return verdict;
+}
+
+Verdict showAnswer(const Question& q, std::optional<double> value)
+{
+    Verdict verdict;
+    if (!value) {
+        verdict.message = notYet(q.measure);
+        return verdict;
+    }
+    verdict.measured = true;
+    verdict.shown = true;
+    verdict.value = *value;
+    verdict.message = tr("The simulation measured %1.").arg(formatValue(*value, q));
+    return verdict;
+}
+
+std::optional<double> measureAhead(const LessonStep& step, const Measure& measure)
+{
+    std::vector<physics::World> worlds = buildStepWorlds(step);
+    physics::World& world = worlds.front();
+    // The export time is what the lesson's author runs the step for: the loader keeps it to
+    // at most 1e7 steps, and the measure's own time to at most 3600 s.
+    const double until = std::max(step.exportTime, measure.time); // [s]
+    const auto maxSteps = static_cast<long long>(std::ceil(until / world.def().dt)) + 2;
+    world.updateDiagnostics(); // the energy at the start, which drift is measured against
+    Measurements m;
+    m.reset(world, {measure});
+    for (long long i = 0; i < maxSteps; ++i) {
+        if (const auto value = m.value(measure, step.scene)) {
+            return value;
+        }
+        world.step();
+        if (world.divergence()) {
+            return std::nullopt;
+        }
+        m.observe(world);
+    }
+    return m.value(measure, step.scene);
 }
 
 } // namespace rigidlab::lessons

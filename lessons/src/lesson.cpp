@@ -31,6 +31,24 @@ QString Comparison::label(int i) const
     return {};
 }
 
+QStringList LessonStep::heldBack(const std::vector<bool>& answered) const
+{
+    // Something two questions hold back stays held until both are answered: the second
+    // question's answer may be in it too.
+    QStringList held;
+    for (std::size_t i = 0; i < questions.size(); ++i) {
+        if (i < answered.size() && answered[i]) {
+            continue;
+        }
+        for (const QString& name : questions[i].holdBack) {
+            if (!held.contains(name)) {
+                held.append(name);
+            }
+        }
+    }
+    return held;
+}
+
 void applySettings(const StepSettings& settings, physics::World& world)
 {
     if (settings.integrator) {

@@ -233,7 +233,7 @@ bool LessonReader::readStep(const QJsonValue& value, const QString& place, Lesso
         step.allow = allow;
     }
     if (!detail::readSat(m_in, object, place, step.scene, step.sat) ||
-        !detail::readQuestions(m_in, object, place, step.scene, step.questions) ||
+        !detail::readQuestions(m_in, object, place, step, step.questions) ||
         !m_in.number(object, u"exportTime", place, step.exportTime, NumberRule::Positive) ||
         !m_in.boolean(object, u"autoplay", place, step.autoplay)) {
         return false;

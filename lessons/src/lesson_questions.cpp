@@ -116,13 +116,84 @@ bool readMeasure(JsonReader& in, const QJsonValue& value, const QString& place, 
     return true;
 }
 
-bool readQuestion(JsonReader& in, const QJsonValue& value, const QString& place, const Scene& scene,
-                  Question& question)
+/// One name of a question's "holdBack": what it holds back must be something the step shows.
+bool checkHoldBackName(JsonReader& in, const QString& name, const QString& place,
+                       const LessonStep& step)
 {
+    const auto listed = [](const QStringList& names) {
+        return names.isEmpty() ? QStringLiteral("none") : names.join(u", ");
+    };
+    if (name == QStringView(kHoldBackRun)) {
+        return true;
+    }
+    if (name.startsWith(u"panel:")) {
+        const QString panel = name.mid(6);
+        return step.panels.contains(panel) ||
+               in.fail(place, QStringLiteral("\"%1\": this step shows no panel \"%2\" (its "
+                                             "panels: %3)")
+                                  .arg(name, panel, listed(step.panels)));
+    }
+    if (name.startsWith(u"plot:")) {
+        const QString plot = name.mid(5);
+        return step.plots.contains(plot) ||
+               in.fail(place, QStringLiteral("\"%1\": this step shows no plot \"%2\" (its "
+                                             "plots: %3)")
+                                  .arg(name, plot, listed(step.plots)));
+    }
+    for (const auto& [column, panel] :
+         {std::pair{QStringView(kHoldBackCollisionAfter), QStringView(u"collision")},
+          std::pair{QStringView(kHoldBackBounceHeights), QStringView(u"bounces")}}) {
+        if (name == column) {
+            return step.panels.contains(panel.toString()) ||
+                   in.fail(place, QStringLiteral("\"%1\" is a column of the %2 panel, which this "
+                                                 "step does not show")
+                                      .arg(name, panel.toString()));
+        }
+    }
+    return in.fail(place, QStringLiteral("unknown name \"%1\" (expected run, panel:NAME, "
+                                         "plot:NAME, %2, %3)")
+                              .arg(name, QStringView(kHoldBackCollisionAfter).toString(),
+                                   QStringView(kHoldBackBounceHeights).toString()));
+}
+
+bool readHoldBack(JsonReader& in, const QJsonObject& object, const QString& place,
+                  const LessonStep& step, QStringList& out)
+{
+    if (!object.contains(u"holdBack")) {
+        return true;
+    }
+    const QString at = joinPlace(place, u"holdBack");
+    QJsonArray list;
+    if (!in.asArray(object.value(u"holdBack"), at, list)) {
+        return false;
+    }
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        const QString itemAt = indexPlace(at, i);
+        if (!list[i].isString()) {
+            return in.fail(itemAt,
+                           QStringLiteral("must be a name \"...\", got ") + describeJson(list[i]));
+        }
+        const QString name = list[i].toString();
+        if (!checkHoldBackName(in, name, itemAt, step)) {
+            return false;
+        }
+        if (out.contains(name)) {
+            return in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
+        }
+        out.append(name);
+    }
+    return true;
+}
+
+bool readQuestion(JsonReader& in, const QJsonValue& value, const QString& place,
+                  const LessonStep& step, Question& question)
+{
+    const Scene& scene = step.scene;
     QJsonObject object;
     if (!in.asObject(value, place, object) ||
         !in.checkKeys(object, place,
-                      {u"prompt", u"measure", u"unit", u"tolerance", u"absoluteTolerance"}) ||
+                      {u"prompt", u"measure", u"unit", u"tolerance", u"absoluteTolerance", u"hint",
+                       u"holdBack"}) ||
         !in.string(object, u"prompt", place, question.prompt, true)) {
         return false;
     }
@@ -147,7 +218,14 @@ bool readQuestion(JsonReader& in, const QJsonValue& value, const QString& place,
                        QStringLiteral("0, and so is absoluteTolerance: no typed answer would "
                                       "ever be right"));
     }
-    return true;
+    if (!in.string(object, u"hint", place, question.hint)) {
+        return false;
+    }
+    if (object.contains(u"hint") && question.hint.trimmed().isEmpty()) {
+        return in.fail(joinPlace(place, u"hint"),
+                       QStringLiteral("must not be empty (leave the key out for no hint)"));
+    }
+    return readHoldBack(in, object, place, step, question.holdBack);
 }
 
 } // namespace
@@ -185,7 +263,7 @@ bool readSat(JsonReader& in, const QJsonObject& object, const QString& place, co
 }
 
 bool readQuestions(JsonReader& in, const QJsonObject& object, const QString& place,
-                   const Scene& scene, std::vector<Question>& out)
+                   const LessonStep& step, std::vector<Question>& out)
 {
     if (!object.contains(u"questions")) {
         return true;
@@ -202,7 +280,7 @@ bool readQuestions(JsonReader& in, const QJsonObject& object, const QString& pla
     }
     for (qsizetype i = 0; i < list.size(); ++i) {
         Question question;
-        if (!readQuestion(in, list[i], indexPlace(at, i), scene, question)) {
+        if (!readQuestion(in, list[i], indexPlace(at, i), step, question)) {
             return false;
         }
         out.push_back(std::move(question));

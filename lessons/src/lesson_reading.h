@@ -16,8 +16,9 @@ namespace rigidlab::lessons::detail {
 bool readSat(JsonReader& in, const QJsonObject& step, const QString& place, const Scene& scene,
              std::optional<std::pair<QString, QString>>& out);
 
-/// The step's "questions", their measures naming bodies of `scene`.
-bool readQuestions(JsonReader& in, const QJsonObject& step, const QString& place,
-                   const Scene& scene, std::vector<Question>& out);
+/// The step's "questions", their measures naming bodies of its scene and what they hold
+/// back naming panels and plots it shows.
+bool readQuestions(JsonReader& in, const QJsonObject& object, const QString& place,
+                   const LessonStep& step, std::vector<Question>& out);
 
 } // namespace rigidlab::lessons::detail

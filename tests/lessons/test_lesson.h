@@ -98,6 +98,7 @@ private slots:
     void judgeTimedValue();
     void judgeMessages_data();
     void judgeMessages();
+    void judgeAttemptGivesHintThenValue();
     void rewindForgetsLaterEvents();
     void measurementsKeepTheFirstEvents();
     void collisionPredictionsOfOffCentreHit();

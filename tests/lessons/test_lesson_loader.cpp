@@ -70,6 +70,22 @@ void TestLesson::shippedLessonsLoad()
     QVERIFY(!lesson.goals.isEmpty());
     for (const lessons::LessonStep& step : lesson.steps) {
         QVERIFY2(step.text.size() >= 200, qPrintable(step.title));
+        // Every question helps a wrong first try along, and keeps its answer off the screen
+        // until it is answered.
+        for (const lessons::Question& q : step.questions) {
+            QVERIFY2(!q.hint.isEmpty(), qPrintable(q.prompt));
+            QVERIFY2(!q.holdBack.isEmpty(), qPrintable(q.prompt));
+        }
+        // A step that tells the student to use a control shows the controls and allows it.
+        for (const char* control : {"restitution", "dt", "integrator", "solver", "iterations"}) {
+            const bool told = step.text.contains(QStringLiteral("the %1 control").arg(control)) ||
+                              step.text.contains(QStringLiteral("Raise %1").arg(control));
+            if (told) {
+                QVERIFY2(step.panels.contains(QStringLiteral("controls")), qPrintable(step.title));
+                QVERIFY2(!step.allow || step.allow->contains(QLatin1StringView(control)),
+                         qPrintable(step.title));
+            }
+        }
         QVERIFY(!step.scene.bodies.empty());
         // Scene files stay inside the lesson's folder.
         if (!step.scenePath.isEmpty())
@@ -87,6 +103,10 @@ void TestLesson::shippedLessonsLoad()
                 QVERIFY(std::isfinite(b.position.x()) && std::isfinite(b.position.y()));
         }
     }
+    // rigidlab-cli validate agrees.
+    const lessons::DocumentCheck check = lessons::checkDocumentFile(path);
+    QVERIFY2(check.ok, qPrintable(check.error));
+    QCOMPARE(check.kind, QStringLiteral("lesson"));
     // The only warning a shipped lesson may give is the SAT lesson's non-convex cup.
     for (const QString& w : loaded.warnings)
         QVERIFY2(w.contains(QStringLiteral("sat_non_convex.json")), qPrintable(w));
@@ -243,6 +263,39 @@ void TestLesson::rejectsBadLesson_data()
         << steps0 + "settings.timeScale: must be from 0.1 to 4, got 10";
     QTest::newRow("settings-gravity") << oneStep(R"("settings": {"gravity": 1})")
                                       << steps0 + "settings.gravity: must be true or false, got 1";
+    const char* speed = R"("measure": {"kind": "speed", "body": "ball", "time": 1})";
+    const auto question = [speed](const char* before, const char* fields) {
+        return oneStep(qPrintable(QString::fromUtf8(before) +
+                                  QStringLiteral(R"("questions": [{"prompt": "p", %1, %2}])")
+                                      .arg(QString::fromUtf8(speed), QString::fromUtf8(fields))));
+    };
+    const QString q0 = steps0 + QStringLiteral("questions[0].");
+    QTest::newRow("hold-back-unknown")
+        << question(R"("panels": ["collision"], )", R"("holdBack": ["panel:collision", "table"])")
+        << q0 + R"(holdBack[1]: unknown name "table" (expected run, panel:NAME, plot:NAME, )"
+                "column:collision.after, column:bounces.heights)";
+    QTest::newRow("hold-back-panel-not-shown")
+        << question(R"("panels": ["collision"], )", R"("holdBack": ["panel:bounces"])")
+        << q0 + R"(holdBack[0]: "panel:bounces": this step shows no panel "bounces" (its )"
+                "panels: collision)";
+    QTest::newRow("hold-back-panel-misspelt")
+        << question(R"("panels": ["collision"], )", R"("holdBack": ["panel:colision"])")
+        << q0 + R"(holdBack[0]: "panel:colision": this step shows no panel "colision" (its )"
+                "panels: collision)";
+    QTest::newRow("hold-back-plot-not-shown")
+        << question("", R"("holdBack": ["plot:energy"])")
+        << q0 + R"(holdBack[0]: "plot:energy": this step shows no plot "energy" (its plots: )"
+                "none)";
+    QTest::newRow("hold-back-column-without-panel")
+        << question(R"("panels": ["bounces"], )", R"("holdBack": ["column:collision.after"])")
+        << q0 + R"(holdBack[0]: "column:collision.after" is a column of the collision panel, )"
+                "which this step does not show";
+    QTest::newRow("hold-back-twice") << question("", R"("holdBack": ["run", "run"])")
+                                     << q0 + R"(holdBack[1]: "run" is listed twice)";
+    QTest::newRow("hold-back-number")
+        << question("", R"("holdBack": [1])") << q0 + R"(holdBack[0]: must be a name "...", got 1)";
+    QTest::newRow("hint-empty") << question("", R"("hint": " ")")
+                                << q0 + "hint: must not be empty (leave the key out for no hint)";
     QTest::newRow("export-time") << oneStep(R"("exportTime": 1000)")
                                  << steps0 + "exportTime: must be at most 600 s, got 1000";
     QTest::newRow("export-steps")
@@ -350,8 +403,10 @@ void TestLesson::everyField()
             R"("plots": ["compare-energy", "momentum"], "overlays": ["trails"], )"
             R"("panels": ["sat", "controls"], "allow": [], "sat": {"a": "box", "b": "wedge"}, )"
             R"("questions": [{"prompt": "p", "measure": {"kind": "apex", "body": "ball", )"
-            R"("n": 3, "above": 0.1}, "unit": "m", "tolerance": 0.1, "absoluteTolerance": 0.01}, )"
-            R"({"prompt": "q", "measure": {"kind": "momentum-y", "time": 2.5}}], )"
+            R"("n": 3, "above": 0.1}, "unit": "m", "tolerance": 0.1, "absoluteTolerance": 0.01, )"
+            R"("hint": "h", "holdBack": ["run", "panel:controls", "plot:momentum"]}, )"
+            R"({"prompt": "q", "measure": {"kind": "momentum-y", "time": 2.5}, )"
+            R"("holdBack": ["plot:momentum"]}], )"
             R"("exportTime": 3, "autoplay": false}]})");
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
@@ -397,6 +452,16 @@ void TestLesson::everyField()
     QCOMPARE(s.questions[1].measure.kind, lessons::Measure::Kind::MomentumY);
     QCOMPARE(s.questions[1].measure.time, 2.5);
     QCOMPARE(s.questions[1].tolerance, 0.05);
+    QCOMPARE(q.hint, QStringLiteral("h"));
+    const QString run = QStringLiteral("run"), controls = QStringLiteral("panel:controls"),
+                  momentum = QStringLiteral("plot:momentum");
+    QCOMPARE(q.holdBack, (QStringList{run, controls, momentum}));
+    QVERIFY(s.questions[1].hint.isEmpty());
+    // What both questions hold back stays held until both are answered.
+    QCOMPARE(s.heldBack({}), (QStringList{run, controls, momentum}));
+    QCOMPARE(s.heldBack({true, false}), QStringList{momentum});
+    QCOMPARE(s.heldBack({false, true}), (QStringList{run, controls, momentum}));
+    QVERIFY(s.heldBack({true, true}).isEmpty());
     QCOMPARE(s.exportTime, 3.0);
     QCOMPARE(s.autoplay, false);
 
@@ -407,6 +472,7 @@ void TestLesson::everyField()
     const lessons::LessonStep& d = bare.lesson.steps[0];
     QVERIFY(d.text.isEmpty() && d.plots.isEmpty() && d.panels.isEmpty() && d.overlays.isEmpty());
     QVERIFY(!d.allow && !d.sat && !d.compare && d.questions.empty());
+    QVERIFY(d.heldBack({}).isEmpty());
     QCOMPARE(d.exportTime, 10.0);
     QVERIFY(d.autoplay);
 }

@@ -154,6 +154,44 @@ void TestLesson::judgeMessages()
     QCOMPARE(v.message, message);
 }
 
+void TestLesson::judgeAttemptGivesHintThenValue()
+{
+    lessons::Question q;
+    q.unit = QStringLiteral("m/s");
+    q.tolerance = 0.02;
+    q.hint = QStringLiteral("Momentum is conserved.");
+    const double value = -1.0;
+    // A wrong first try reads the hint and not the value; the second gives it.
+    const lessons::Verdict first = lessons::judgeAttempt(q, 1.0, value, 1);
+    QVERIFY(first.measured && !first.right && !first.shown);
+    QCOMPARE(first.message, QStringLiteral("Not quite (you said 1 m/s). Hint: Momentum is "
+                                           "conserved."));
+    QVERIFY(!first.message.contains(QStringLiteral("-1")));
+    const lessons::Verdict second = lessons::judgeAttempt(q, 2.0, value, 2);
+    QVERIFY(!second.right && second.shown);
+    QCOMPARE(second.message,
+             QStringLiteral("Not quite: the simulation measured -1 m/s (you said 2 m/s)."));
+    // A right first try gives it at once.
+    const lessons::Verdict right = lessons::judgeAttempt(q, -1.01, value, 1);
+    QVERIFY(right.right && right.shown);
+    QVERIFY(right.message.startsWith(QStringLiteral("Right: the simulation measured -1 m/s")));
+    // Without a hint the student is still asked to try again, without the value.
+    q.hint.clear();
+    const lessons::Verdict bare = lessons::judgeAttempt(q, 1.0, value, 1);
+    QCOMPARE(bare.message, QStringLiteral("Not quite (you said 1 m/s). Try once more."));
+    QVERIFY(!bare.shown);
+    // Not measured yet: no try is spent, and Show me says what to do first.
+    q.measure.time = 1.5;
+    q.measure.kind = lessons::Measure::Kind::VelocityX;
+    const lessons::Verdict early = lessons::judgeAttempt(q, 1.0, std::nullopt, 1);
+    QVERIFY(!early.measured && !early.shown);
+    QCOMPARE(early.message, QStringLiteral("Run the simulation until t = 1.5 s first."));
+    QCOMPARE(lessons::showAnswer(q, std::nullopt).message, early.message);
+    const lessons::Verdict shown = lessons::showAnswer(q, value);
+    QVERIFY(shown.shown && !shown.right);
+    QCOMPARE(shown.message, QStringLiteral("The simulation measured -1 m/s."));
+}
+
 void TestLesson::rewindForgetsLaterEvents()
 {
     const lessons::Lesson lesson = shippedLesson("restitution");
@@ -339,6 +377,18 @@ void TestLesson::shippedQuestionsHaveTheirTextbookAnswers()
     const lessons::Verdict v = lessons::judge(q, answer, run.measurements[0], s.scene);
     QVERIFY2(v.measured, qPrintable(v.message));
     QVERIFY2(v.right, qPrintable(v.message));
+    // Run without a window from the start, the measure comes out the same: bit for bit, as
+    // the physics is deterministic.
+    const std::optional<double> ahead = lessons::measureAhead(s, q.measure);
+    QVERIFY(ahead);
+    QCOMPARE(*ahead, v.value);
+    // The hint helps without giving the value away.
+    QVERIFY(!q.hint.isEmpty());
+    for (const QString& written : {QString::number(answer, 'f', 2), QString::number(answer, 'f', 1),
+                                   QString::number(v.value, 'f', 2)})
+        if (written.contains(u'.') && written != QStringLiteral("0.0"))
+            QVERIFY2(!q.hint.contains(written),
+                     qPrintable(written + QStringLiteral(": ") + q.hint));
 }
 
 void TestLesson::restitutionBounceRatiosAreESquared()

@@ -52,7 +52,20 @@ struct Question {
     QString unit;                   ///< shown after the answer box, e.g. "m"
     double tolerance = 0.05;        ///< relative to the measured value
     double absoluteTolerance = 0.0; ///< added to it, for values near zero
+    /// Read after a wrong first try, instead of the measured value (lesson data, so that it
+    /// is translated with the lesson); empty: none.
+    QString hint;
+    /// What would give the answer away, kept from the student until this question is
+    /// answered right, twice wrong or shown: "run", "panel:NAME", "plot:NAME",
+    /// "column:collision.after", "column:bounces.heights" (LESSON_FORMAT.md).
+    QStringList holdBack;
 };
+
+/// The names a question may hold back, besides "panel:" and "plot:" with a panel or plot the
+/// step shows.
+inline constexpr const char16_t* kHoldBackRun = u"run";
+inline constexpr const char16_t* kHoldBackCollisionAfter = u"column:collision.after";
+inline constexpr const char16_t* kHoldBackBounceHeights = u"column:bounces.heights";
 
 /// Settings a step sets on top of its scene's.
 struct StepSettings {
@@ -93,6 +106,9 @@ struct LessonStep {
     std::vector<Question> questions;
     double exportTime = 10.0; ///< simulated seconds run for a headless plot export [s]
     bool autoplay = true;     ///< start running when the step opens
+
+    /// What the questions not yet answered (answered[i] false) hold back, in order, each once.
+    QStringList heldBack(const std::vector<bool>& answered) const;
 };
 
 struct Lesson {

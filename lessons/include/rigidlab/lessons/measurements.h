@@ -100,14 +100,29 @@ private:
     double m_energy0 = 0, m_energyScale = 1;
 };
 
+/// A question's measure read from the step's main world run without a window, from the
+/// start, as the window runs it (for a question that holds back the running of the scene);
+/// nullopt when the run does not get there within the step's exportTime (or the measure's
+/// time, if later) or diverges first.
+std::optional<double> measureAhead(const LessonStep& step, const Measure& measure);
+
 struct Verdict {
     bool measured = false; ///< false: run the simulation further first
     bool right = false;
-    double value = 0; ///< what was measured
-    QString message;  ///< what the student reads
+    bool shown = false; ///< the message gives the measured value
+    double value = 0;   ///< what was measured
+    QString message;    ///< what the student reads
 };
 
 /// Compares an answer with the measured value.
 Verdict judge(const Question& q, double answer, const Measurements& m, const Scene& scene);
+
+/// The same with the value at hand (nullopt: not measured yet), for the student's try number
+/// `attempt` (1, 2, ...): a wrong first try reads the question's hint, not the value; later
+/// tries, and a right answer, give it.
+Verdict judgeAttempt(const Question& q, double answer, std::optional<double> value, int attempt);
+
+/// What the student reads on asking to be shown the answer (nullopt: not measured yet).
+Verdict showAnswer(const Question& q, std::optional<double> value);
 
 } // namespace rigidlab::lessons
