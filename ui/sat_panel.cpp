@@ -57,11 +57,12 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     m_verdict->setFont(f);
     m_verdict->setWordWrap(true);
     layout->addWidget(m_verdict);
-    const QStringList headers{tr("axis"), tr("on axis [m]"), tr("overlap [m]"), tr("note")};
+    const QStringList headers{tr("axis"), tr("on axis [m]"), tr("overlap"), tr("note")};
     const QStringList headerTips{
         tr("The axis is the normal of this edge: polygon A or B, then the edge's number."),
         tr("The interval each polygon covers when projected on the axis (A above, B below)."),
-        tr("How far the intervals overlap; \"gap\" when they do not, and the axis separates."),
+        tr("How far the intervals overlap, in metres; \"gap\" when they do not, and the axis "
+           "separates."),
         tr("What this axis means for the test.")};
     m_table->setHorizontalHeaderLabels(headers);
     for (int c = 0; c < headerTips.size(); ++c)

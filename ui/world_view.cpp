@@ -169,6 +169,11 @@ void WorldView::fitScene()
     const double span = 8.0 * std::max({m_fitted.width(), m_fitted.height(), 1.0});
     m_fitLimit = QRectF(c - QPointF(span, span) / 2, QSizeF(span, span));
     showRect(m_fitted);
+    // A panel's drawing may be sized partly in pixels: measure it again at the new zoom.
+    for (int round = 0; round < 4 && m_fitExtra && !m_fitted.contains(contentRect()); ++round) {
+        m_fitted |= contentRect();
+        showRect(m_fitted);
+    }
 }
 
 void WorldView::fitRect(QRectF worldRect, double marginPx)
