@@ -1,176 +1,55 @@
 #include "sat_panel.h"
 
 #include "simulation_controller.h"
+#include "world_view.h"
 
+#include <QEvent>
+#include <QGraphicsScene>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
-#include <QPainter>
+#include <QLocale>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace rigidlab::ui {
 
 namespace {
 
-const QColor kColorA(0x2f, 0x6d, 0xb5);
-const QColor kColorB(0xd9, 0x6c, 0x1e);
-const QColor kGap(0x2e, 0x9d, 0x4a);
-const QColor kOverlap(0xc6, 0x28, 0x28);
+/// Pixels kept free around what the overlay draws when the view follows it.
+constexpr double kFitMarginPx = 16.0;
 
-QPointF qt(const physics::Vec2& v)
+/// A length on screen, in the user's locale [m]: `decimals` after the point.
+QString num(double v, int decimals = 3)
 {
-    return {v.x(), v.y()};
-}
-
-QString num(double v)
-{
-    return QString::number(v, 'f', 3);
-}
-
-QPen pen(QColor c, double w, Qt::PenStyle s = Qt::SolidLine)
-{
-    QPen p(c, w, s);
-    p.setCosmetic(true);
-    p.setCapStyle(Qt::FlatCap);
-    return p;
+    return QLocale().toString(v, 'f', decimals);
 }
 
 } // namespace
 
-SatOverlayItem::SatOverlayItem(const SatPanel& panel) : m_panel(panel)
-{
-    setZValue(20);
-    setAcceptedMouseButtons(Qt::NoButton);
-}
-
-QRectF SatOverlayItem::boundingRect() const
-{
-    return QRectF(-1e5, -1e5, 2e5, 2e5);
-}
-
-void SatOverlayItem::paintHulls(QPainter* p, double px) const
-{
-    // A body whose outline was not convex is handled as its convex hull (the seed's
-    // caveat): shade the area the hull adds, where contacts are found wrongly.
-    const auto& scene = m_panel.controller().scene();
-    const auto& world = m_panel.controller().world();
-    for (std::size_t i = 0; i < scene.originalVertices.size() && i < world.bodies().size(); ++i) {
-        const auto& original = scene.originalVertices[i];
-        if (original.empty())
-            continue;
-        const physics::Body& b = world.bodies()[i];
-        const physics::Transform xf = b.transform();
-        QPolygonF hull, outline;
-        for (const auto& v : b.shape.polygon.vertices)
-            hull << qt(xf.apply(v));
-        for (const auto& v : original)
-            outline << qt(xf.apply(v));
-        QPainterPath wrong;
-        wrong.addPolygon(hull);
-        QPainterPath inside;
-        inside.addPolygon(outline);
-        wrong = wrong.subtracted(inside);
-        QBrush hatch(QColor(200, 30, 30, 150), Qt::FDiagPattern);
-        hatch.setTransform(QTransform::fromScale(px, px));
-        p->setPen(Qt::NoPen);
-        p->setBrush(hatch);
-        p->drawPath(wrong);
-        p->setBrush(Qt::NoBrush);
-        p->setPen(pen(QColor(30, 30, 30), 2.0, Qt::DashLine));
-        p->drawPolygon(outline);
-    }
-}
-
-void SatOverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*)
-{
-    const double px = 1.0 / std::max(1e-9, std::abs(p->worldTransform().m11()));
-    p->setRenderHint(QPainter::Antialiasing);
-    paintHulls(p, px);
-    if (!m_panel.active())
-        return;
-    const physics::SatResult& r = m_panel.result();
-    const int shown = std::min<int>(m_panel.shown(), static_cast<int>(r.axes.size()));
-    if (shown <= 0)
-        return;
-    const physics::SatAxis& ax = r.axes[static_cast<std::size_t>(shown - 1)];
-    const physics::Vec2 n = ax.axis;
-    const physics::Vec2 t(-n.y(), n.x());
-
-    // The axis is drawn as a line beside both shapes: through a point past them along t.
-    const auto& world = m_panel.controller().world();
-    double tMax = -1e300, sMid = 0.0;
-    int count = 0;
-    for (const physics::Body& b : world.bodies()) {
-        if (b.shape.type != physics::ShapeType::Polygon)
-            continue;
-        const physics::Transform xf = b.transform();
-        for (const auto& v : b.shape.polygon.vertices) {
-            const physics::Vec2 w = xf.apply(v);
-            tMax = std::max(tMax, t.dot(w));
-            sMid += n.dot(w);
-            ++count;
-        }
-    }
-    if (count == 0)
-        return;
-    sMid /= count;
-    const double lineT = tMax + 40 * px; // 40 px beside the shapes
-    auto onAxis = [&](double s, double offset) { return qt(s * n + (lineT + offset) * t); };
-    const double reach = 1e3;
-    p->setPen(pen(QColor(90, 90, 90), 1.5, Qt::DashLine));
-    p->drawLine(onAxis(sMid - reach, 0), onAxis(sMid + reach, 0));
-
-    // The projections: A's interval just before the line, B's just after it.
-    p->setPen(pen(kColorA, 7.0));
-    p->drawLine(onAxis(ax.minA, -8 * px), onAxis(ax.maxA, -8 * px));
-    p->setPen(pen(kColorB, 7.0));
-    p->drawLine(onAxis(ax.minB, 8 * px), onAxis(ax.maxB, 8 * px));
-    // The gap or the overlap between them, on the line.
-    const double lo = std::max(ax.minA, ax.minB), hi = std::min(ax.maxA, ax.maxB);
-    p->setPen(pen(ax.overlap < 0 ? kGap : kOverlap, 4.0));
-    p->drawLine(onAxis(std::min(lo, hi), 0), onAxis(std::max(lo, hi), 0));
-    // Thin lines from the interval ends back across the shapes.
-    p->setPen(pen(QColor(120, 120, 120, 140), 1.0, Qt::DotLine));
-    for (double s : {ax.minA, ax.maxA, ax.minB, ax.maxB})
-        p->drawLine(onAxis(s, 0), qt(s * n + (lineT - 1e3 * px) * t));
-    // The edge the axis comes from, thick, in its polygon's colour.
-    {
-        const physics::Body& owner = world.body(ax.owner == 0 ? m_panel.bodyA() : m_panel.bodyB());
-        const auto& v = owner.shape.polygon.vertices;
-        const physics::Transform xf = owner.transform();
-        const std::size_t e = static_cast<std::size_t>(ax.edge);
-        p->setPen(pen(ax.owner == 0 ? kColorA : kColorB, 5.0));
-        p->drawLine(qt(xf.apply(v[e])), qt(xf.apply(v[(e + 1) % v.size()])));
-    }
-
-    // Verdict geometry, once every axis has been shown.
-    if (shown == static_cast<int>(r.axes.size()) && r.intersects) {
-        p->setPen(pen(kOverlap, 2.5));
-        for (int i = 0; i < r.manifold.pointCount; ++i) {
-            const QPointF c = qt(r.manifold.points[static_cast<std::size_t>(i)].point);
-            p->setBrush(kOverlap);
-            p->drawEllipse(c, 5 * px, 5 * px);
-            const QPointF tip = c + qt(r.normal) * (50 * px);
-            p->drawLine(c, tip);
-            const QPointF u = qt(r.normal), v(-u.y(), u.x());
-            p->drawLine(tip, tip - 10 * px * u + 5 * px * v);
-            p->drawLine(tip, tip - 10 * px * u - 5 * px * v);
-        }
-    }
-}
-
 SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_overlay(new SatOverlayItem(*this)),
-      m_verdict(new QLabel(this)), m_table(new QTableWidget(0, 5, this)),
-      m_summary(new QLabel(this)), m_prev(new QPushButton(tr("◀ Previous axis"), this)),
-      m_next(new QPushButton(tr("Next axis ▶"), this)),
-      m_all_button(new QPushButton(tr("All"), this))
+      m_verdict(new QLabel(this)), m_table(new QTableWidget(0, 4, this)),
+      m_summary(new QLabel(this)), m_prev(new QPushButton(tr("◀ Previous"), this)),
+      m_next(new QPushButton(tr("Next ▶"), this)), m_all_button(new QPushButton(tr("All"), this))
 {
-    setMinimumWidth(440);
+    m_overlay->setOnDestroyed([this] { m_overlay = nullptr; });
+    connect(&m_controller, &QObject::destroyed, this, [this] {
+        if (m_overlay)
+            m_overlay->detach();
+    });
+    // The panel fits the window's right column (about 245 px at 1024 px wide): short column
+    // texts, the full explanation in each cell's tooltip.
+    m_prev->setToolTip(tr("Show the previous axis tested"));
+    m_next->setToolTip(tr("Test the next axis"));
+    m_all_button->setToolTip(tr("Test every axis, up to the verdict"));
+    for (QPushButton* b : {m_prev, m_next, m_all_button}) // narrower than the style's 80 px
+        b->setMinimumWidth(b->fontMetrics().horizontalAdvance(b->text()) + 16);
     auto* layout = new QVBoxLayout(this);
     QFont f = m_verdict->font();
     f.setBold(true);
@@ -178,11 +57,25 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     m_verdict->setFont(f);
     m_verdict->setWordWrap(true);
     layout->addWidget(m_verdict);
-    m_table->setHorizontalHeaderLabels(
-        {tr("axis from"), tr("A on axis [m]"), tr("B on axis [m]"), tr("overlap [m]"), tr("")});
+    const QStringList headers{tr("axis"), tr("on axis [m]"), tr("overlap"), tr("note")};
+    const QStringList headerTips{
+        tr("The axis is the normal of this edge: polygon A or B, then the edge's number."),
+        tr("The interval each polygon covers when projected on the axis (A above, B below)."),
+        tr("How far the intervals overlap, in metres; \"gap\" when they do not, and the axis "
+           "separates."),
+        tr("What this axis means for the test.")};
+    m_table->setHorizontalHeaderLabels(headers);
+    for (int c = 0; c < headerTips.size(); ++c)
+        m_table->horizontalHeaderItem(c)->setToolTip(headerTips[c]);
     m_table->verticalHeader()->setVisible(false);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    m_table->horizontalHeader()->setStretchLastSection(true);
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    QHeaderView* columns = m_table->horizontalHeader();
+    columns->setMinimumSectionSize(24);
+    for (int c = 0; c < 3; ++c)
+        columns->setSectionResizeMode(c, QHeaderView::ResizeToContents);
+    columns->setSectionResizeMode(3, QHeaderView::Stretch);
+    m_table->setWordWrap(true);
+    m_table->setTextElideMode(Qt::ElideNone);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
     layout->addWidget(m_table, 1);
@@ -204,8 +97,25 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     refresh();
 }
 
+SatPanel::~SatPanel()
+{
+    if (m_view)
+        m_view->setFitExtra({});
+    // The panel owns its overlay, unless the scene went first and deleted it (then the
+    // overlay has said so).
+    if (m_overlay) {
+        m_overlay->detach();
+        m_overlay->setOnDestroyed({});
+        if (m_overlay->scene())
+            m_overlay->scene()->removeItem(m_overlay);
+        delete m_overlay;
+    }
+}
+
 void SatPanel::setBodies(int a, int b)
 {
+    if (m_overlay)
+        m_overlay->dataChanging();
     const int n = static_cast<int>(m_controller.world().bodies().size());
     auto polygon = [&](int id) {
         return id >= 0 && id < n &&
@@ -216,30 +126,42 @@ void SatPanel::setBodies(int a, int b)
     m_shown = 1;
     m_all = false;
     refresh();
+    followAxis(true);
 }
 
 void SatPanel::nextAxis()
 {
+    if (m_overlay)
+        m_overlay->dataChanging();
     m_all = false;
     m_shown = std::min<int>(m_shown + 1, static_cast<int>(m_result.axes.size()));
     updateTable();
+    followAxis(true);
 }
 
 void SatPanel::previousAxis()
 {
+    if (m_overlay)
+        m_overlay->dataChanging();
     m_all = false;
     m_shown = std::max(1, m_shown - 1);
     updateTable();
+    followAxis(true);
 }
 
 void SatPanel::showAll()
 {
+    if (m_overlay)
+        m_overlay->dataChanging();
     m_all = true;
     updateTable();
+    followAxis(true);
 }
 
 void SatPanel::refresh()
 {
+    if (m_overlay)
+        m_overlay->dataChanging();
     if (!active()) {
         m_result = physics::SatResult{};
         updateTable();
@@ -249,6 +171,66 @@ void SatPanel::refresh()
     const physics::Body& b = m_controller.world().body(m_b);
     m_result = physics::satPolygons(a.shape.polygon, a.transform(), b.shape.polygon, b.transform());
     updateTable();
+    // Follow only a pair that moved, so that a student's own zoom holds while nothing moves.
+    const std::array<double, 6> poses{a.position.x(), a.position.y(), a.angle,
+                                      b.position.x(), b.position.y(), b.angle};
+    if (poses != m_poses) {
+        m_poses = poses;
+        followAxis(false);
+    }
+}
+
+WorldView* SatPanel::worldView()
+{
+    if (!m_overlay)
+        return nullptr;
+    if (m_view && m_overlay->scene() == m_view->scene())
+        return m_view;
+    if (m_view) {
+        m_view->setFitExtra({});
+        m_view->removeEventFilter(this);
+    }
+    m_view = nullptr;
+    if (m_overlay->scene())
+        for (QGraphicsView* v : m_overlay->scene()->views())
+            if ((m_view = qobject_cast<WorldView*>(v)))
+                break;
+    if (m_view) {
+        m_view->setFitExtra(
+            [this] { return active() && m_overlay ? m_overlay->geometry().drawn : QRectF(); });
+        m_view->installEventFilter(this);
+    }
+    return m_view;
+}
+
+bool SatPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    // When the view changes size (a dock opens beside it), follow the axis again once the
+    // view has handled the resize itself.
+    if (watched == m_view && event->type() == QEvent::Resize)
+        QMetaObject::invokeMethod(
+            this, [this] { followAxis(false); }, Qt::QueuedConnection);
+    return QWidget::eventFilter(watched, event);
+}
+
+void SatPanel::followAxis(bool always)
+{
+    WorldView* view = worldView();
+    if (!view || !active())
+        return;
+    // The overlay's offsets and text are sized in pixels, so its extent in metres changes
+    // with the zoom: fit, measure again at the new zoom, and refit if something still sticks
+    // out (it converges in a few rounds, as the pixel-sized parts are small beside the view).
+    for (int attempt = 0; attempt < 8; ++attempt) {
+        const SatOverlayItem::Geometry g = m_overlay->geometry();
+        if (!g.valid)
+            return;
+        const QRectF visible = view->mapToScene(view->viewport()->rect()).boundingRect();
+        if (!always && visible.contains(g.drawn))
+            return;
+        view->fitRect(g.drawn, kFitMarginPx);
+        always = false;
+    }
 }
 
 void SatPanel::updateTable()
@@ -267,16 +249,39 @@ void SatPanel::updateTable()
     };
     for (int i = 0; i < m_shown; ++i) {
         const physics::SatAxis& ax = axes[static_cast<std::size_t>(i)];
-        const QStringList cells{tr("%1, edge %2").arg(name(ax.owner)).arg(ax.edge),
-                                QStringLiteral("[%1, %2]").arg(num(ax.minA), num(ax.maxA)),
-                                QStringLiteral("[%1, %2]").arg(num(ax.minB), num(ax.maxB)),
-                                ax.overlap < 0 ? tr("gap %1").arg(num(-ax.overlap))
-                                               : num(ax.overlap),
-                                i == m_result.separatingAxis ? tr("separates: stop")
-                                : i == m_result.leastAxis && m_shown == total ? tr("least overlap")
-                                                                              : QString()};
+        const bool separates = i == m_result.separatingAxis;
+        const bool least = i == m_result.leastAxis && m_shown == total;
+        const QStringList cells{
+            tr("%1 %2", "polygon (A or B), edge number")
+                .arg(ax.owner == 0 ? tr("A") : tr("B"))
+                .arg(ax.edge),
+            tr("A %1 … %2\nB %3 … %4")
+                .arg(num(ax.minA, 2), num(ax.maxA, 2), num(ax.minB, 2), num(ax.maxB, 2)),
+            ax.overlap < 0 ? tr("gap %1").arg(num(-ax.overlap, 2)) : num(ax.overlap, 2),
+            separates ? tr("separates")
+            : least   ? tr("least overlap")
+                      : QString()};
+        QString tip =
+            tr("Axis %1: the normal of edge %2 of %3. On it, %4 covers [%5, %6] m and %7 covers "
+               "[%8, %9] m.")
+                .arg(i + 1)
+                .arg(ax.edge)
+                .arg(name(ax.owner), name(0), num(ax.minA), num(ax.maxA), name(1), num(ax.minB),
+                     num(ax.maxB));
+        tip += QLatin1Char(' ') + (ax.overlap < 0
+                                       ? tr("They are %1 m apart: a gap.").arg(num(-ax.overlap))
+                                       : tr("They overlap by %1 m.").arg(num(ax.overlap)));
+        if (separates)
+            tip += QLatin1Char(' ') + tr("This axis separates the polygons: they cannot touch, "
+                                         "and the test stops here (no collision).");
+        else if (least)
+            tip += QLatin1Char(' ') + tr("The least overlap of all axes: this axis is the "
+                                         "contact normal, and the overlap is the depth.");
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
+            item->setToolTip(tip);
+            if (c < 3)
+                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             if (i == m_shown - 1)
                 item->setBackground(QColor(255, 244, 200));
             m_table->setItem(i, c, item);
@@ -300,7 +305,8 @@ void SatPanel::updateTable()
         m_verdict->setText(tr("Overlapping: no axis separates them."));
         m_summary->setText(summary());
     }
-    m_overlay->update();
+    if (m_overlay)
+        m_overlay->update();
 }
 
 QString SatPanel::summary() const

@@ -6,10 +6,14 @@
 // The overlay also shows, for a body whose non-convex outline was replaced by its hull, the
 // area where the detection is now wrong.
 
+#include "sat_overlay.h"
+
 #include "rigidlab/physics/sat.h"
 
-#include <QGraphicsItem>
+#include <QPointer>
+
 #include <QWidget>
+#include <array>
 
 class QLabel;
 class QPushButton;
@@ -18,28 +22,21 @@ class QTableWidget;
 namespace rigidlab::ui {
 
 class SimulationController;
-
-class SatPanel;
-
-class SatOverlayItem : public QGraphicsItem {
-public:
-    explicit SatOverlayItem(const SatPanel& panel);
-    QRectF boundingRect() const override;
-    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
-
-private:
-    void paintHulls(QPainter* painter, double px) const;
-    const SatPanel& m_panel;
-};
+class WorldView;
 
 class SatPanel : public QWidget {
     Q_OBJECT
 public:
     SatPanel(SimulationController& controller, QWidget* parent = nullptr);
+    ~SatPanel() override;
 
     /// The two bodies to test (ids), or -1 for none.
     void setBodies(int a, int b);
-    QGraphicsItem* overlay() { return m_overlay; }
+    /// What the panel draws in the world view; the window adds it to the view's scene. While
+    /// the panel is active, the view follows it: it fits both shapes, the axis line, both
+    /// projections and the label of the axis shown.
+    SatOverlayItem* overlay() { return m_overlay; }
+    const SatOverlayItem& overlayItem() const { return *m_overlay; }
     const physics::SatResult& result() const { return m_result; }
     /// How many of the tested axes are shown (the step the student is at).
     int shown() const { return m_shown; }
@@ -48,6 +45,7 @@ public:
     int bodyB() const { return m_b; }
     const SimulationController& controller() const { return m_controller; }
     QString summary() const; ///< the text under the table
+    const QTableWidget& table() const { return *m_table; }
 
 public slots:
     void nextAxis();
@@ -55,8 +53,16 @@ public slots:
     void showAll();
     void refresh();
 
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     void updateTable();
+    /// The view showing the overlay, or null (registers the overlay with its Fit scene).
+    WorldView* worldView();
+    /// Pans and zooms the view to what the overlay draws: always after a step through the
+    /// axes, otherwise (a body dragged or turned) only when part of it left the view.
+    void followAxis(bool always);
 
     SimulationController& m_controller;
     SatOverlayItem* m_overlay;
@@ -64,12 +70,15 @@ private:
     int m_shown = 1;
     bool m_all = false;
     physics::SatResult m_result;
+    std::array<double, 6>
+        m_poses{}; ///< the pair's poses at the last refresh: x, y [m], angle [rad]
     QLabel* m_verdict;
     QTableWidget* m_table;
     QLabel* m_summary;
     QPushButton* m_prev;
     QPushButton* m_next;
     QPushButton* m_all_button;
+    QPointer<WorldView> m_view; ///< the view whose Fit scene includes the overlay
 };
 
 } // namespace rigidlab::ui

@@ -30,6 +30,31 @@ QColor worldLabelBox()
     return worldBackground();
 }
 
+QColor satProjectionA()
+{
+    return QColor(0x2f, 0x6d, 0xb5); // blue
+}
+
+QColor satProjectionB()
+{
+    return QColor(0xd9, 0x6c, 0x1e); // orange
+}
+
+QColor satAxis()
+{
+    return QColor(0x5a, 0x5a, 0x5a);
+}
+
+QColor satGap()
+{
+    return QColor(0x1b, 0x7a, 0x3a); // dark green, 5.2:1 on the background
+}
+
+QColor satOverlap()
+{
+    return QColor(0x8e, 0x24, 0xaa); // purple, 6.8:1 on the background
+}
+
 QColor alertBackground()
 {
     return QColor(0xa3, 0x1f, 0x14); // a darker red than #c0392b, which gives white only 5.4:1

@@ -25,6 +25,16 @@ QColor worldAlertText();
 /// text stays readable over bodies and grid lines.
 QColor worldLabelBox();
 
+/// The separating-axis overlay: each polygon's projection interval (and its axis edge), the
+/// axis line, and the gap or the overlap between the intervals, each a colour of its own. The
+/// gap and overlap colours also write their labels (on a worldLabelBox()), so they keep
+/// kMinTextContrast against the world's background.
+QColor satProjectionA();
+QColor satProjectionB();
+QColor satAxis();
+QColor satGap();
+QColor satOverlap();
+
 /// The divergence banner: its opaque background and its text.
 QColor alertBackground();
 QColor alertText();

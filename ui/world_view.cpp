@@ -153,6 +153,8 @@ QRectF WorldView::contentRect() const
         add(j.a, j.anchorA);
         add(j.b, j.anchorB);
     }
+    if (m_fitExtra)
+        box |= m_fitExtra();
     return box;
 }
 
@@ -167,6 +169,26 @@ void WorldView::fitScene()
     const double span = 8.0 * std::max({m_fitted.width(), m_fitted.height(), 1.0});
     m_fitLimit = QRectF(c - QPointF(span, span) / 2, QSizeF(span, span));
     showRect(m_fitted);
+    // A panel's drawing may be sized partly in pixels: measure it again at the new zoom.
+    for (int round = 0; round < 4 && m_fitExtra && !m_fitted.contains(contentRect()); ++round) {
+        m_fitted |= contentRect();
+        showRect(m_fitted);
+    }
+}
+
+void WorldView::fitRect(QRectF worldRect, double marginPx)
+{
+    const double w = viewport()->width() - 2 * marginPx, h = viewport()->height() - 2 * marginPx;
+    if (worldRect.isEmpty() || w < 10 || h < 10)
+        return;
+    setZoom(std::min(w / worldRect.width(), h / worldRect.height()));
+    centerOn(worldRect.center());
+    // Resizing shows this again (with showRect's margin on top), and auto-fit does not widen
+    // it to the rest of the scene.
+    const double m = marginPx / zoom();
+    m_autoFit = true;
+    m_fitted = worldRect.adjusted(-m, -m, m, m);
+    m_fitLimit = m_fitted;
 }
 
 void WorldView::showRect(QRectF box)

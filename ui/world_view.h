@@ -8,6 +8,7 @@
 
 #include <QGraphicsView>
 
+#include <functional>
 #include <vector>
 
 namespace rigidlab::ui {
@@ -35,6 +36,13 @@ public:
     QString legendLine(int world) const;
     /// Whether that world stopped with a diagnosis.
     bool stoppedWorld(int world) const;
+
+    /// Shows `worldRect` [m] in the whole viewport with `marginPx` pixels to spare on each
+    /// side, and keeps it shown on resize (as Fit scene does) until the user pans or zooms.
+    void fitRect(QRectF worldRect, double marginPx);
+    /// More for Fit scene to show besides the bodies: a panel's drawing over the world, in
+    /// world coordinates [m] (an empty rect when it draws nothing).
+    void setFitExtra(std::function<QRectF()> extra) { m_fitExtra = std::move(extra); }
 
 public slots:
     void fitScene();
@@ -78,6 +86,7 @@ private:
     QRectF m_fitted;       ///< what auto-fit shows; it widens to follow bodies, up to a limit
     QRectF m_fitLimit;     ///< auto-fit never widens beyond this
     QPoint m_lastMouse;
+    std::function<QRectF()> m_fitExtra; ///< see setFitExtra
 };
 
 } // namespace rigidlab::ui

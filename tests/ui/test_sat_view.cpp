@@ -1,0 +1,239 @@
+// The separating-axis view shows its axis (the lessons issue): for every shipped SAT case and
+// every axis, the world view shows both projection intervals and the gap or overlap label,
+// also after Fit scene and after a body was dragged away; the label is readable and the table
+// fits the window's right column without a horizontal scroll bar.
+
+#include "lesson_player.h"
+#include "main_window.h"
+#include "sat_panel.h"
+#include "simulation_controller.h"
+#include "theme.h"
+#include "world_view.h"
+
+#include "rigidlab/lessons/lesson.h"
+
+#include <QHeaderView>
+#include <QScrollBar>
+#include <QTableWidget>
+#include <QtTest>
+
+#include "test_main.h"
+
+using namespace rigidlab;
+using rigidlab::ui::MainWindow;
+using rigidlab::ui::SatOverlayItem;
+
+namespace {
+
+/// Every step of a shipped lesson that sets a SAT pair: (lesson file, step index).
+std::vector<std::pair<QString, int>> satSteps()
+{
+    std::vector<std::pair<QString, int>> out;
+    const QDir dir(MainWindow::lessonsFolder());
+    for (const QString& f : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+        const lessons::LessonLoadResult r = lessons::loadLessonFile(dir.filePath(f));
+        for (std::size_t s = 0; s < r.lesson.steps.size(); ++s)
+            if (r.ok && r.lesson.steps[s].sat)
+                out.emplace_back(dir.filePath(f), static_cast<int>(s));
+    }
+    return out;
+}
+
+QRectF visibleWorld(ui::WorldView& view)
+{
+    return view.mapToScene(view.viewport()->rect()).boundingRect();
+}
+
+/// Why `g` is not wholly inside `visible`, or an empty string.
+QString notShown(const SatOverlayItem::Geometry& g, const QRectF& visible)
+{
+    if (!g.valid)
+        return QStringLiteral("no geometry");
+    QStringList missing;
+    const std::pair<const char*, QPointF> ends[] = {
+        {"A's first end", g.projectionA.p1()}, {"A's last end", g.projectionA.p2()},
+        {"B's first end", g.projectionB.p1()}, {"B's last end", g.projectionB.p2()},
+        {"the span's first end", g.span.p1()}, {"the span's last end", g.span.p2()}};
+    for (const auto& [what, p] : ends)
+        if (!visible.contains(p))
+            missing << QStringLiteral("%1 (%2, %3)").arg(what).arg(p.x()).arg(p.y());
+    if (!visible.contains(g.labelRect))
+        missing << QStringLiteral("the label");
+    if (missing.isEmpty())
+        return QString();
+    return missing.join(QStringLiteral(", ")) + QStringLiteral(" outside [%1, %2] x [%3, %4]")
+                                                    .arg(visible.left())
+                                                    .arg(visible.right())
+                                                    .arg(visible.top())
+                                                    .arg(visible.bottom());
+}
+
+/// A window of the issue's size, shown (offscreen), at a lesson's SAT step.
+struct Window {
+    MainWindow w;
+    bool open(const QString& path, int step)
+    {
+        w.resize(1024, 768);
+        w.show();
+        if (!QTest::qWaitForWindowExposed(&w))
+            return false;
+        if (!w.openLesson(path, true).isEmpty())
+            return false;
+        w.lessonPlayer().goToStep(step);
+        QCoreApplication::processEvents(); // the docks settle into their sizes
+        return w.satPanel().active();
+    }
+};
+
+} // namespace
+
+class TestSatView : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { QVERIFY2(!satSteps().empty(), "no shipped lesson has a SAT step"); }
+
+    void coloursAreTheirOwnAndReadable()
+    {
+        using namespace ui::theme;
+        const QColor bg = worldBackground();
+        for (const QColor& c : {satGap(), satOverlap()}) {
+            QVERIFY2(contrastRatio(c, bg) >= kMinTextContrast, qPrintable(c.name()));
+            QVERIFY(c != satProjectionA() && c != satProjectionB());
+            // Distinct at a glance from both intervals, not just a different code.
+            QVERIFY(contrastRatio(c, satProjectionA()) > 1.2 ||
+                    std::abs(c.hueF() - satProjectionA().hueF()) > 0.1);
+            QVERIFY(std::abs(c.hueF() - satProjectionB().hueF()) > 0.1);
+        }
+        QVERIFY(std::abs(satGap().hueF() - satOverlap().hueF()) > 0.1);
+    }
+
+    void everyAxisIsInView_data()
+    {
+        QTest::addColumn<QString>("path");
+        QTest::addColumn<int>("step");
+        for (const auto& [path, step] : satSteps())
+            QTest::newRow(qPrintable(
+                QStringLiteral("%1 step %2").arg(QFileInfo(path).baseName()).arg(step + 1)))
+                << path << step;
+    }
+    void everyAxisIsInView()
+    {
+        QFETCH(QString, path);
+        QFETCH(int, step);
+        Window win;
+        QVERIFY(win.open(path, step));
+        ui::SatPanel& sat = win.w.satPanel();
+        ui::WorldView& view = win.w.view();
+        const physics::SatResult& r = sat.result();
+        const int total = static_cast<int>(r.axes.size());
+        QVERIFY(total >= 1);
+        for (int axis = 1; axis <= total; ++axis) {
+            if (axis > 1)
+                sat.nextAxis();
+            QCOMPARE(sat.shown(), axis);
+            const SatOverlayItem::Geometry g = sat.overlayItem().geometry();
+            const QString why = notShown(g, visibleWorld(view));
+            QVERIFY2(why.isEmpty(), qPrintable(QStringLiteral("axis %1: %2 (view %3 x %4 px)")
+                                                   .arg(axis)
+                                                   .arg(why)
+                                                   .arg(view.viewport()->width())
+                                                   .arg(view.viewport()->height())));
+            // The overlay's bounding rect covers what it draws, so none of it is culled.
+            QVERIFY(sat.overlayItem().sceneBoundingRect().contains(g.drawn));
+            // The label gives the gap or overlap in metres, in the user's locale.
+            const physics::SatAxis& ax = r.axes[static_cast<std::size_t>(axis - 1)];
+            QVERIFY2(g.label.contains(QLocale().toString(std::abs(ax.overlap), 'f', 2)),
+                     qPrintable(g.label));
+            QCOMPARE(g.gap, ax.overlap < 0);
+            QVERIFY(g.label.startsWith(ax.overlap < 0 ? QStringLiteral("gap")
+                                                      : QStringLiteral("overlap")));
+            QCOMPARE(g.label.contains(QStringLiteral("separating axis")),
+                     axis - 1 == r.separatingAxis);
+            // The test walks no further than it has to: the separating axis is the last.
+            if (axis - 1 == r.separatingAxis)
+                QCOMPARE(axis, total);
+            // Fit scene (F) keeps the overlay in view too.
+            view.fitScene();
+            const QString afterFit = notShown(sat.overlayItem().geometry(), visibleWorld(view));
+            QVERIFY2(
+                afterFit.isEmpty(),
+                qPrintable(QStringLiteral("axis %1 after Fit scene: %2").arg(axis).arg(afterFit)));
+        }
+        // At the verdict of an overlap, the canvas names the contact normal's axis.
+        const SatOverlayItem::Geometry last = sat.overlayItem().geometry();
+        QCOMPARE(last.contact, r.intersects && r.manifold.pointCount > 0);
+        QCOMPARE(last.label.contains(QStringLiteral("least overlap")), r.intersects);
+        if (r.intersects && r.leastAxis + 1 != total)
+            QVERIFY(last.label.contains(QString::number(r.leastAxis + 1)));
+        // And stepping back brings the view back to each axis.
+        for (int axis = total - 1; axis >= 1; --axis) {
+            sat.previousAxis();
+            const QString why = notShown(sat.overlayItem().geometry(), visibleWorld(view));
+            QVERIFY2(why.isEmpty(),
+                     qPrintable(QStringLiteral("back at axis %1: %2").arg(axis).arg(why)));
+        }
+    }
+
+    void viewFollowsADraggedBody()
+    {
+        const auto steps = satSteps();
+        Window win;
+        QVERIFY(win.open(steps.front().first, steps.front().second));
+        ui::SatPanel& sat = win.w.satPanel();
+        sat.showAll();
+        auto& controller = win.w.controller();
+        const physics::Vec2 start = controller.world().body(sat.bodyB()).position;
+        controller.grab(sat.bodyB(), start);
+        controller.dragTo(start + physics::Vec2(4.0, 3.0));
+        for (int i = 0; i < 3000; ++i)
+            controller.stepForward();
+        controller.release();
+        const physics::Vec2 end = controller.world().body(sat.bodyB()).position;
+        QVERIFY2((end - start).norm() > 2.0, "the drag did not move the body");
+        const QString why = notShown(sat.overlayItem().geometry(), visibleWorld(win.w.view()));
+        QVERIFY2(why.isEmpty(), qPrintable(why));
+    }
+
+    void tableFitsTheRightColumn_data()
+    {
+        QTest::addColumn<int>("width");
+        QTest::newRow("250 px") << 250;
+        QTest::newRow("300 px") << 300;
+    }
+    void tableFitsTheRightColumn()
+    {
+        QFETCH(int, width);
+        for (const auto& [path, step] : satSteps()) {
+            Window win;
+            QVERIFY(win.open(path, step));
+            const ui::SatPanel& shown = win.w.satPanel();
+            // A second panel on the same pair, alone at the column's width, every axis listed.
+            ui::SatPanel panel(win.w.controller());
+            panel.setBodies(shown.bodyA(), shown.bodyB());
+            panel.showAll();
+            panel.resize(width, 600);
+            panel.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&panel));
+            QCoreApplication::processEvents();
+            QVERIFY2(panel.width() <= width + 1,
+                     qPrintable(QStringLiteral("the panel needs %1 px").arg(panel.width())));
+            const QTableWidget& table = panel.table();
+            QCOMPARE(table.rowCount(), static_cast<int>(panel.result().axes.size()));
+            QVERIFY2(table.horizontalScrollBar()->maximum() == 0,
+                     qPrintable(QStringLiteral("%1 step %2: scrolls by %3 px")
+                                    .arg(QFileInfo(path).baseName())
+                                    .arg(step + 1)
+                                    .arg(table.horizontalScrollBar()->maximum())));
+            // The verdict column says its word in full, and explains itself in the tooltip.
+            for (int row = 0; row < table.rowCount(); ++row) {
+                const QTableWidgetItem* note = table.item(row, 3);
+                QVERIFY(note);
+                if (!note->text().isEmpty())
+                    QVERIFY(note->toolTip().size() > note->text().size());
+            }
+        }
+    }
+};
+
+RIGIDLAB_TEST_MAIN(TestSatView)
+#include "test_sat_view.moc"
