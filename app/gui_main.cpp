@@ -146,10 +146,11 @@ int parseArguments(const QStringList& args, Options& options, QString& message)
         QStringLiteral("F"));
     const QCommandLineOption present(QStringLiteral("present"),
                                      CommandLine::tr("Presentation mode: large type for a "
-                                                     "projector."));
-    const QCommandLineOption lang(QStringLiteral("lang"),
-                                  CommandLine::tr("Language of the interface: cs or en."),
-                                  QStringLiteral("cs|en"));
+                                                     "projector (accepted; not in effect yet)."));
+    const QCommandLineOption lang(
+        QStringLiteral("lang"),
+        CommandLine::tr("Language of the interface: cs or en (accepted; not in effect yet)."),
+        QStringLiteral("cs|en"));
     for (const QCommandLineOption* o :
          {&help, &version, &step, &measure, &screenshots, &size, &scale, &present, &lang})
         parser.addOption(*o);

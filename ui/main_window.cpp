@@ -181,33 +181,34 @@ void MainWindow::buildActions()
     m_playAction = new QAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Play"), this);
     m_playAction->setObjectName(QStringLiteral("play"));
     m_playAction->setShortcuts(controlKeys("play"));
-    m_playAction->setToolTip(tr("Play or pause (Space)"));
+    m_playAction->setToolTip(tr("Play or pause (%1)").arg(controlKeysText("play")));
     connect(m_playAction, &QAction::triggered, m_controller, &SimulationController::toggleRunning);
 
     m_stepAction =
         new QAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("Step"), this);
     m_stepAction->setObjectName(QStringLiteral("step"));
     m_stepAction->setShortcuts(controlKeys("step"));
-    m_stepAction->setToolTip(tr("One step forward (S or →)"));
+    m_stepAction->setToolTip(tr("One step forward (%1)").arg(controlKeysText("step")));
     connect(m_stepAction, &QAction::triggered, m_controller, &SimulationController::stepForward);
 
     m_backAction =
         new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("Back"), this);
     m_backAction->setObjectName(QStringLiteral("back"));
     m_backAction->setShortcuts(controlKeys("back"));
-    m_backAction->setToolTip(tr("One step back in time (←)"));
+    m_backAction->setToolTip(tr("One step back in time (%1)").arg(controlKeysText("back")));
     connect(m_backAction, &QAction::triggered, m_controller, &SimulationController::stepBack);
 
     m_resetAction = new QAction(style()->standardIcon(QStyle::SP_BrowserReload), tr("Reset"), this);
     m_resetAction->setObjectName(QStringLiteral("reset"));
     m_resetAction->setShortcuts(controlKeys("reset"));
-    m_resetAction->setToolTip(tr("Back to the start of the scene (R)"));
+    m_resetAction->setToolTip(
+        tr("Back to the start of the scene (%1)").arg(controlKeysText("reset")));
     connect(m_resetAction, &QAction::triggered, m_controller, &SimulationController::reset);
 
     m_fitAction = new QAction(tr("Fit scene"), this);
     m_fitAction->setObjectName(QStringLiteral("fit"));
     m_fitAction->setShortcuts(controlKeys("fit"));
-    m_fitAction->setToolTip(tr("Zoom to show every body (F)"));
+    m_fitAction->setToolTip(tr("Zoom to show every body (%1)").arg(controlKeysText("fit")));
     connect(m_fitAction, &QAction::triggered, m_view, &WorldView::fitScene);
 
     // Q and E turn the selected body (the SAT lesson turns its polygons this way).

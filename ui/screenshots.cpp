@@ -16,6 +16,7 @@
 #include <QLayout>
 #include <QPixmap>
 #include <QSettings>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 
 #include <algorithm>
@@ -94,6 +95,26 @@ QString fitWindow(MainWindow& window, const QSize& size)
         .arg(logical.height());
 }
 
+/// Points QSettings at a folder of its own while it lives, then back at the default (on Unix
+/// the XDG config folder, which is where Qt keeps user settings unless told otherwise).
+class SettingsElsewhere {
+public:
+    explicit SettingsElsewhere(const QString& folder) { point(folder); }
+    ~SettingsElsewhere()
+    {
+        point(QStandardPaths::writableLocation(QStandardPaths::GenericConfigLocation));
+    }
+    SettingsElsewhere(const SettingsElsewhere&) = delete;
+    SettingsElsewhere& operator=(const SettingsElsewhere&) = delete;
+
+private:
+    static void point(const QString& folder)
+    {
+        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, folder);
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, folder);
+    }
+};
+
 } // namespace
 
 ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
@@ -113,8 +134,7 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
                            .arg(settingsFolder.errorString());
         return result;
     }
-    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, settingsFolder.path());
-    QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, settingsFolder.path());
+    const SettingsElsewhere settings(settingsFolder.path());
 
     MainWindow window;
     if (options.setUp)

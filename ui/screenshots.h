@@ -32,11 +32,11 @@ struct ScreenshotResult {
     QStringList notes; ///< what the caller should know (a window that could not be that small)
 };
 
-/// Opens a window of its own with settings of its own (a temporary folder: neither the user's
-/// saved layout nor their recent files are read or written), runs each view for a fixed number
-/// of steps (the step's exportTime, or welcomeSeconds) and writes DIR/00-welcome.png,
-/// DIR/LESSON-NN.png, ... and DIR/index.txt ("FILE<TAB>what it shows" per line), each
-/// atomically. Needs a QApplication.
+/// Opens a window of its own with settings of its own (a temporary folder, for as long as it
+/// runs: neither the user's saved layout nor their recent files are read or written), runs each
+/// view for a fixed number of steps (the step's exportTime, or welcomeSeconds) and writes
+/// DIR/00-welcome.png, DIR/LESSON-NN.png, ... and DIR/index.txt ("FILE<TAB>what it shows" per
+/// line), each atomically. Needs a QApplication.
 ScreenshotResult writeScreenshots(const ScreenshotOptions& options);
 
 } // namespace rigidlab::ui

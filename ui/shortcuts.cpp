@@ -21,7 +21,7 @@ QString keysText(const QList<QKeySequence>& keys)
 {
     QStringList names;
     for (const QKeySequence& k : keys)
-        names << k.toString(QKeySequence::NativeText).toHtmlEscaped();
+        names << k.toString(QKeySequence::NativeText);
     return names.join(QCoreApplication::translate("Controls", " or "));
 }
 
@@ -36,19 +36,23 @@ QList<QKeySequence> controlKeys(std::string_view action)
     return {};
 }
 
+QString controlKeysText(std::string_view action)
+{
+    return keysText(controlKeys(action));
+}
+
 QString controlsHelpHtml(const QList<ControlHelpRow>& extra)
 {
     QString keyboard, mouse;
     for (const ControlInfo& c : kControls) {
         if (c.keys)
-            keyboard += row(keysText(QKeySequence::listFromString(QString::fromLatin1(c.keys),
-                                                                  QKeySequence::PortableText)),
-                            trControls(c.description));
+            keyboard +=
+                row(keysText(controlKeys(c.action)).toHtmlEscaped(), trControls(c.description));
         else
             mouse += row(trControls(c.gesture).toHtmlEscaped(), trControls(c.description));
     }
     for (const ControlHelpRow& r : extra)
-        keyboard += row(keysText(r.keys), r.description);
+        keyboard += row(keysText(r.keys).toHtmlEscaped(), r.description);
     return QStringLiteral("<h3>%1</h3><table>%2</table><h3>%3</h3><table>%4</table>")
         .arg(QCoreApplication::translate("Controls", "Keyboard"), keyboard,
              QCoreApplication::translate("Controls", "Mouse"), mouse);

@@ -61,6 +61,9 @@ inline constexpr std::array kControls{
 /// The keys of the action named `action` in kControls (empty if it has none).
 QList<QKeySequence> controlKeys(std::string_view action);
 
+/// The same keys as text for a tooltip ("S or Right"), as the platform writes them.
+QString controlKeysText(std::string_view action);
+
 /// A row added to the help from elsewhere (the overlays' keys).
 struct ControlHelpRow {
     QList<QKeySequence> keys;

@@ -91,8 +91,12 @@ private slots:
         options.welcomeSeconds = 0.5;
         options.lessons = QStringList{lesson("restitution.json")};
         options.maxStepsPerLesson = 2;
+        const QString settingsFile = QSettings().fileName();
         const ui::ScreenshotResult r = ui::writeScreenshots(options);
         QVERIFY2(r.ok, qPrintable(r.error));
+        // The plain window, with settings of its own: the user's are neither read nor written.
+        QCOMPARE(QSettings().fileName(), settingsFile);
+        QVERIFY(!QSettings().contains(QStringLiteral("recentFiles")));
         const QStringList pngs{QStringLiteral("00-welcome.png"),
                                QStringLiteral("restitution-01.png"),
                                QStringLiteral("restitution-02.png")};
