@@ -10,6 +10,7 @@
 #include "rigidlab/lessons/sat_report.h"
 #include "rigidlab/lessons/scene_loader.h"
 #include "rigidlab/lessons/scene_run.h"
+#include "rigidlab/version.h"
 
 #include <QCoreApplication>
 #include <QStringList>
@@ -76,6 +77,7 @@ Commands:
       --case NAME            one case (default: all; --case list names them)
       --json FILE.json       the table as JSON
   --help                     this text
+  --version                  the version of rigidlab-cli
 
 Exit status: 0 done, 1 an output file could not be written, 2 bad input or usage,
 3 the simulation diverged (nothing written), 4 a stress case ended with another verdict
@@ -484,6 +486,10 @@ int main(int argc, char* argv[])
     }
     if (words.front() == u"help" || std::any_of(words.cbegin(), words.cend(), isHelp)) {
         std::fputs(kUsage, stdout);
+        return kExitOk;
+    }
+    if (words.size() == 1 && words.front() == u"--version") {
+        std::fputs("rigidlab-cli " RIGIDLAB_VERSION "\n", stdout);
         return kExitOk;
     }
     const QString name = words.takeFirst();

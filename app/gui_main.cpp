@@ -1,23 +1,34 @@
 // rigidlab: the lab window. `rigidlab [FILE.json] [--step N]` opens that scene or lesson
 // (at step N), or the welcome scene and the lesson list. `rigidlab --measure-frames N
 // SCENE.json` runs the scene in the window for N frames and prints their times.
+// `rigidlab --screenshots DIR` writes a PNG of the window on every shipped view
+// (ui/screenshots.h). `rigidlab --help` lists the rest.
 
 #include "lesson_player.h"
 #include "main_window.h"
+#include "screenshots.h"
 #include "simulation_controller.h"
 
+#include "rigidlab/version.h"
+
 #include <QApplication>
+#include <QCommandLineParser>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLocale>
+#include <QSize>
 #include <QTextStream>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 namespace {
@@ -43,71 +54,280 @@ void printFrameTimes(std::vector<double> frames, const std::vector<double>& phys
                 inPhysics / static_cast<double>(frames.size()), cpuMsPerFrame);
 }
 
+/// The translation context of the command line's texts.
+struct CommandLine {
+    Q_DECLARE_TR_FUNCTIONS(CommandLine)
+};
+
+/// Window sizes --size accepts [px].
+constexpr int kMinSide = 320, kMaxSide = 7680;
+/// Scale factors --scale accepts.
+constexpr double kMaxScale = 4.0;
+
+/// What the command line asks for.
+struct Options {
+    QString file;
+    int step = 1;          ///< 1 = the lesson's first step
+    int measureFrames = 0; ///< 0: do not measure
+    QString screenshots;   ///< folder, empty: no screenshots
+    std::optional<QSize> size;
+    std::optional<double> scale;
+    bool present = false;
+    QString lang;
+};
+
+/// A whole number from 1, or nothing.
+std::optional<int> positiveInt(const QString& text)
+{
+    bool ok = false;
+    const int n = text.toInt(&ok);
+    return ok && n >= 1 ? std::optional<int>(n) : std::nullopt;
+}
+
+/// "WIDTHxHEIGHT" with both sides in [kMinSide, kMaxSide], or nothing.
+std::optional<QSize> parseSize(const QString& text)
+{
+    const QStringList parts = text.toLower().split(QLatin1Char('x'));
+    if (parts.size() != 2)
+        return std::nullopt;
+    bool okW = false, okH = false;
+    const int w = parts[0].toInt(&okW), h = parts[1].toInt(&okH);
+    if (!okW || !okH || w < kMinSide || w > kMaxSide || h < kMinSide || h > kMaxSide)
+        return std::nullopt;
+    return QSize(w, h);
+}
+
+/// A finite number in (0, kMaxScale], written with a decimal point, or nothing.
+std::optional<double> parseScale(const QString& text)
+{
+    bool ok = false;
+    const double f = QLocale::c().toDouble(text, &ok);
+    if (!ok || !std::isfinite(f) || f <= 0.0 || f > kMaxScale)
+        return std::nullopt;
+    return f;
+}
+
+/// Fills `options` from the arguments. Returns -1 to go on, else the exit status (0 after
+/// --help or --version, 2 after a mistake, said on one line in `message`).
+int parseArguments(const QStringList& args, Options& options, QString& message)
+{
+    QCommandLineParser parser;
+    parser.setApplicationDescription(
+        CommandLine::tr("RigidLab %1: a lab for 2D rigid-body mechanics.")
+            .arg(QStringLiteral(RIGIDLAB_VERSION)));
+    parser.addPositionalArgument(QStringLiteral("FILE.json"),
+                                 CommandLine::tr("A scene or a lesson to open."),
+                                 QStringLiteral("[FILE.json]"));
+    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
+                                  CommandLine::tr("Show this text and quit."));
+    const QCommandLineOption version(QStringLiteral("version"),
+                                     CommandLine::tr("Show the version and quit."));
+    const QCommandLineOption step(QStringLiteral("step"),
+                                  CommandLine::tr("With a lesson: start at step N (1 = first)."),
+                                  QStringLiteral("N"));
+    const QCommandLineOption measure(
+        QStringLiteral("measure-frames"),
+        CommandLine::tr("Run the scene for N frames, print the median and 95th-percentile "
+                        "frame time and the physics share, and quit."),
+        QStringLiteral("N"));
+    const QCommandLineOption screenshots(
+        QStringLiteral("screenshots"),
+        CommandLine::tr("Write a PNG of the window on the welcome scene and on every step of "
+                        "every shipped lesson into DIR, with DIR/index.txt, and quit."),
+        QStringLiteral("DIR"));
+    const QCommandLineOption size(
+        QStringLiteral("size"),
+        CommandLine::tr("Window (and screenshot) size in pixels, e.g. 1024x768 "
+                        "(screenshots: 1280x720 unless given)."),
+        QStringLiteral("WxH"));
+    const QCommandLineOption scale(
+        QStringLiteral("scale"),
+        CommandLine::tr("Scale factor of the whole interface (QT_SCALE_FACTOR), e.g. 1.5."),
+        QStringLiteral("F"));
+    const QCommandLineOption present(QStringLiteral("present"),
+                                     CommandLine::tr("Presentation mode: large type for a "
+                                                     "projector (accepted; not in effect yet)."));
+    const QCommandLineOption lang(
+        QStringLiteral("lang"),
+        CommandLine::tr("Language of the interface: cs or en (accepted; not in effect yet)."),
+        QStringLiteral("cs|en"));
+    for (const QCommandLineOption* o :
+         {&help, &version, &step, &measure, &screenshots, &size, &scale, &present, &lang})
+        parser.addOption(*o);
+
+    const QStringList withProgram = QStringList{QStringLiteral("rigidlab")} + args;
+    // What each option's value must be, said the same way whether it is missing or wrong.
+    const auto needs = [](const QString& name, const QString& what, const QString& got) {
+        return CommandLine::tr("--%1 needs %2, got \"%3\"").arg(name, what, got);
+    };
+    const QString stepNeeds = CommandLine::tr("a whole number from 1");
+    const QString sizeNeeds =
+        CommandLine::tr("WIDTHxHEIGHT in pixels, each from %1 to %2").arg(kMinSide).arg(kMaxSide);
+    const QString scaleNeeds =
+        CommandLine::tr("a number greater than 0 and at most %1").arg(kMaxScale);
+    const QString langNeeds = CommandLine::tr("cs or en");
+    const QString dirNeeds = CommandLine::tr("a folder");
+    const std::array<std::pair<const QCommandLineOption*, QString>, 6> valueRules{
+        {{&step, stepNeeds},
+         {&measure, stepNeeds},
+         {&size, sizeNeeds},
+         {&scale, scaleNeeds},
+         {&lang, langNeeds},
+         {&screenshots, dirNeeds}}};
+    if (!parser.parse(withProgram)) {
+        // A value option last, without its value: say what the value should be.
+        for (const auto& [option, what] : valueRules)
+            if (!args.isEmpty() && args.last() == QStringLiteral("--") + option->names().first()) {
+                message = needs(option->names().first(), what, QString());
+                return 2;
+            }
+        message = CommandLine::tr("%1 (try rigidlab --help)").arg(parser.errorText());
+        return 2;
+    }
+    if (parser.isSet(help)) {
+        message = parser.helpText().replace(QStringLiteral("<executable_name>"),
+                                            QStringLiteral("rigidlab"));
+        return 0;
+    }
+    if (parser.isSet(version)) {
+        message = QStringLiteral("rigidlab " RIGIDLAB_VERSION);
+        return 0;
+    }
+    const auto value = [&](const QCommandLineOption& o) { return parser.value(o); };
+    if (parser.isSet(step)) {
+        const auto n = positiveInt(value(step));
+        if (!n) {
+            message = needs(QStringLiteral("step"), stepNeeds, value(step));
+            return 2;
+        }
+        options.step = *n;
+    }
+    if (parser.isSet(measure)) {
+        const auto n = positiveInt(value(measure));
+        if (!n) {
+            message = needs(QStringLiteral("measure-frames"), stepNeeds, value(measure));
+            return 2;
+        }
+        options.measureFrames = *n;
+    }
+    if (parser.isSet(size)) {
+        options.size = parseSize(value(size));
+        if (!options.size) {
+            message = needs(QStringLiteral("size"), sizeNeeds, value(size));
+            return 2;
+        }
+    }
+    if (parser.isSet(scale)) {
+        options.scale = parseScale(value(scale));
+        if (!options.scale) {
+            message = needs(QStringLiteral("scale"), scaleNeeds, value(scale));
+            return 2;
+        }
+    }
+    if (parser.isSet(lang)) {
+        options.lang = value(lang);
+        if (options.lang != QLatin1String("cs") && options.lang != QLatin1String("en")) {
+            message = needs(QStringLiteral("lang"), langNeeds, options.lang);
+            return 2;
+        }
+    }
+    if (parser.isSet(screenshots)) {
+        options.screenshots = value(screenshots);
+        if (options.screenshots.isEmpty()) {
+            message = needs(QStringLiteral("screenshots"), dirNeeds, QString());
+            return 2;
+        }
+    }
+    options.present = parser.isSet(present);
+
+    const QStringList files = parser.positionalArguments();
+    if (files.size() > 1) {
+        message = CommandLine::tr("one file at a time (got %1 and %2)").arg(files[0], files[1]);
+        return 2;
+    }
+    options.file = files.value(0);
+    if (options.measureFrames > 0 && options.file.isEmpty()) {
+        message = CommandLine::tr("--measure-frames needs a scene to run");
+        return 2;
+    }
+    if (!options.screenshots.isEmpty() && (!options.file.isEmpty() || options.measureFrames)) {
+        message = CommandLine::tr("--screenshots shoots the shipped scenes and lessons: "
+                                  "give it no FILE and no --measure-frames");
+        return 2;
+    }
+    return -1;
+}
+
+/// Whether Qt has somewhere to show a window: a display, or a platform chosen explicitly
+/// (QT_QPA_PLATFORM=offscreen for tests and headless machines).
+bool haveDisplay()
+{
+    return !qEnvironmentVariableIsEmpty("DISPLAY") ||
+           !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
+           !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
-    // Arguments first: --help and mistakes must not need a display.
+    // Arguments first: --help, --version and mistakes must not need a display.
     QStringList args;
     for (int i = 1; i < argc; ++i)
         args << QString::fromLocal8Bit(argv[i]);
-    const QString usage =
-        QStringLiteral("usage: rigidlab [FILE.json] [--step N] [--measure-frames N]\n"
-                       "  FILE.json  a scene or a lesson to open\n"
-                       "  --step N   with a lesson: start at step N (1 = first)\n"
-                       "  --measure-frames N  run the scene for N frames, print the median and\n"
-                       "             95th-percentile frame time and the physics share, quit\n");
-    QString file;
-    int step = 1;
-    int measureFrames = 0;
-    for (qsizetype i = 0; i < args.size(); ++i) {
-        const QString& a = args[i];
-        if (a == QLatin1String("--help") || a == QLatin1String("-h")) {
-            QTextStream(stdout) << usage;
-            return 0;
-        }
-        if (a == QLatin1String("--step")) {
-            bool ok = false;
-            step = i + 1 < args.size() ? args[i + 1].toInt(&ok) : 0;
-            if (!ok || step < 1) {
-                QTextStream(stderr) << "rigidlab: --step needs a whole number from 1, got \""
-                                    << (i + 1 < args.size() ? args[i + 1] : QString()) << "\"\n";
-                return 2;
-            }
-            ++i;
-            continue;
-        }
-        if (a == QLatin1String("--measure-frames")) {
-            bool ok = false;
-            measureFrames = i + 1 < args.size() ? args[i + 1].toInt(&ok) : 0;
-            if (!ok || measureFrames < 1) {
-                QTextStream(stderr) << "rigidlab: --measure-frames needs a whole number from 1\n";
-                return 2;
-            }
-            ++i;
-            continue;
-        }
-        if (a.startsWith(QLatin1Char('-'))) {
-            QTextStream(stderr) << "rigidlab: unknown option " << a << "\n" << usage;
-            return 2;
-        }
-        if (!file.isEmpty()) {
-            QTextStream(stderr) << "rigidlab: one file at a time (got " << file << " and " << a
-                                << ")\n";
-            return 2;
-        }
-        file = a;
+    Options options;
+    QString message;
+    if (const int status = parseArguments(args, options, message); status >= 0) {
+        if (status == 0)
+            QTextStream(stdout) << message << '\n';
+        else
+            QTextStream(stderr) << "rigidlab: " << message << '\n';
+        return status;
     }
-    if (measureFrames > 0 && file.isEmpty()) {
-        QTextStream(stderr) << "rigidlab: --measure-frames needs a scene to run\n" << usage;
+    if (!haveDisplay()) {
+        QTextStream(stderr) << "rigidlab: "
+                            << CommandLine::tr("no display to open the window on: set DISPLAY "
+                                               "(an X server, or Xvfb) or WAYLAND_DISPLAY, or "
+                                               "QT_QPA_PLATFORM=offscreen")
+                            << '\n';
         return 2;
     }
+    // Read when the application starts; every widget is scaled by it.
+    if (options.scale)
+        qputenv("QT_SCALE_FACTOR", QByteArray::number(*options.scale));
+    // TODO(issue 14): load the translation for options.lang (accepted, not used yet).
 
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RigidLab"));
     QApplication::setApplicationName(QStringLiteral("RigidLab"));
+    QApplication::setApplicationVersion(QStringLiteral(RIGIDLAB_VERSION));
+
+    // TODO(issue 11): call MainWindow::setPresentation(options.present) here and in the
+    // screenshots' setUp once the presentation mode exists; --present is accepted until then.
+    if (!options.screenshots.isEmpty()) {
+        rigidlab::ui::ScreenshotOptions shots;
+        shots.folder = options.screenshots;
+        if (options.size)
+            shots.size = *options.size;
+        const rigidlab::ui::ScreenshotResult r = rigidlab::ui::writeScreenshots(shots);
+        for (const QString& note : r.notes)
+            QTextStream(stderr) << "rigidlab: " << note << '\n';
+        if (!r.ok) {
+            QTextStream(stderr) << "rigidlab: " << r.error << '\n';
+            return 1;
+        }
+        QTextStream(stdout) << CommandLine::tr("%1 files written into %2")
+                                   .arg(r.files.size())
+                                   .arg(QDir::toNativeSeparators(options.screenshots))
+                            << '\n';
+        return 0;
+    }
+
     rigidlab::ui::MainWindow window;
-    window.resize(1500, 920);
+    window.resize(options.size.value_or(QSize(1500, 920)));
+    const QString file = options.file;
+    const int step = options.step;
+    const int measureFrames = options.measureFrames;
     const QString welcome =
         QDir(rigidlab::ui::MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json"));
     // Open the welcome scene first, so that a broken file leaves something alive behind the

@@ -1,5 +1,6 @@
 #include "main_window.h"
 
+#include "about_dialog.h"
 #include "control_panel.h"
 #include "divergence_banner.h"
 #include "error_panel.h"
@@ -11,6 +12,7 @@
 #include "plot_export.h"
 #include "plot_widget.h"
 #include "sat_panel.h"
+#include "shortcuts.h"
 #include "simulation_controller.h"
 #include "world_view.h"
 
@@ -25,6 +27,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QSettings>
@@ -117,21 +120,8 @@ MainWindow::MainWindow(QWidget* parent)
     buildDocks();
     buildMenus();
 
-    m_statusTime = new QLabel(this);
-    m_statusRate = new QLabel(this);
-    m_statusDrift = new QLabel(this);
-    m_statusSlow = new QLabel(tr("slower than real time"), this);
-    m_statusSlow->setStyleSheet(
-        QStringLiteral("color: white; background: #c0392b; padding: 1px 6px;"));
-    m_statusSlow->setVisible(false);
     new DivergenceBanner(*m_controller, m_view);
-    statusBar()->addWidget(m_statusTime);
-    statusBar()->addWidget(m_statusRate);
-    statusBar()->addWidget(m_statusDrift);
-    statusBar()->addPermanentWidget(m_statusSlow);
-    auto* statusTimer = new QTimer(this);
-    connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
-    statusTimer->start(250);
+    buildStatusBar();
 
     connect(m_view, &WorldView::bodySelected, m_inspector, &InspectorPanel::setBody);
     connect(m_controller, &SimulationController::runningChanged, this, [this](bool running) {
@@ -197,37 +187,44 @@ void MainWindow::buildActions()
     toolbar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
 
     m_playAction = new QAction(style()->standardIcon(QStyle::SP_MediaPlay), tr("Play"), this);
-    m_playAction->setShortcut(Qt::Key_Space);
-    m_playAction->setToolTip(tr("Play or pause (Space)"));
+    m_playAction->setObjectName(QStringLiteral("play"));
+    m_playAction->setShortcuts(controlKeys("play"));
+    m_playAction->setToolTip(tr("Play or pause (%1)").arg(controlKeysText("play")));
     connect(m_playAction, &QAction::triggered, m_controller, &SimulationController::toggleRunning);
 
     m_stepAction =
         new QAction(style()->standardIcon(QStyle::SP_MediaSeekForward), tr("Step"), this);
-    m_stepAction->setShortcuts({QKeySequence(Qt::Key_S), QKeySequence(Qt::Key_Right)});
-    m_stepAction->setToolTip(tr("One step forward (S or →)"));
+    m_stepAction->setObjectName(QStringLiteral("step"));
+    m_stepAction->setShortcuts(controlKeys("step"));
+    m_stepAction->setToolTip(tr("One step forward (%1)").arg(controlKeysText("step")));
     connect(m_stepAction, &QAction::triggered, m_controller, &SimulationController::stepForward);
 
     m_backAction =
         new QAction(style()->standardIcon(QStyle::SP_MediaSeekBackward), tr("Back"), this);
-    m_backAction->setShortcuts({QKeySequence(Qt::Key_Left), QKeySequence(Qt::Key_Backspace)});
-    m_backAction->setToolTip(tr("One step back in time (←)"));
+    m_backAction->setObjectName(QStringLiteral("back"));
+    m_backAction->setShortcuts(controlKeys("back"));
+    m_backAction->setToolTip(tr("One step back in time (%1)").arg(controlKeysText("back")));
     connect(m_backAction, &QAction::triggered, m_controller, &SimulationController::stepBack);
 
     m_resetAction = new QAction(style()->standardIcon(QStyle::SP_BrowserReload), tr("Reset"), this);
-    m_resetAction->setShortcut(Qt::Key_R);
-    m_resetAction->setToolTip(tr("Back to the start of the scene (R)"));
+    m_resetAction->setObjectName(QStringLiteral("reset"));
+    m_resetAction->setShortcuts(controlKeys("reset"));
+    m_resetAction->setToolTip(
+        tr("Back to the start of the scene (%1)").arg(controlKeysText("reset")));
     connect(m_resetAction, &QAction::triggered, m_controller, &SimulationController::reset);
 
     m_fitAction = new QAction(tr("Fit scene"), this);
-    m_fitAction->setShortcut(Qt::Key_F);
-    m_fitAction->setToolTip(tr("Zoom to show every body (F)"));
+    m_fitAction->setObjectName(QStringLiteral("fit"));
+    m_fitAction->setShortcuts(controlKeys("fit"));
+    m_fitAction->setToolTip(tr("Zoom to show every body (%1)").arg(controlKeysText("fit")));
     connect(m_fitAction, &QAction::triggered, m_view, &WorldView::fitScene);
 
     // Q and E turn the selected body (the SAT lesson turns its polygons this way).
-    for (const auto& [key, degrees] : {std::pair{Qt::Key_Q, 5.0}, std::pair{Qt::Key_E, -5.0}}) {
+    for (const auto& [name, degrees] : {std::pair{"turnLeft", 5.0}, std::pair{"turnRight", -5.0}}) {
         auto* turn = new QAction(
             degrees > 0 ? tr("Turn selected body left") : tr("Turn selected body right"), this);
-        turn->setShortcut(key);
+        turn->setObjectName(QLatin1String(name));
+        turn->setShortcuts(controlKeys(name));
         connect(turn, &QAction::triggered, this, [this, degrees] {
             if (m_view->selectedBody() >= 0)
                 m_controller->rotateBody(m_view->selectedBody(), degrees * M_PI / 180.0);
@@ -331,10 +328,12 @@ void MainWindow::buildMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* open = file->addAction(tr("&Open scene…"), this, &MainWindow::openDialog);
-    open->setShortcut(QKeySequence::Open);
+    open->setObjectName(QStringLiteral("openScene"));
+    open->setShortcuts(controlKeys("openScene"));
     QAction* openLessonAction =
         file->addAction(tr("Open &lesson…"), this, &MainWindow::openLessonDialog);
-    openLessonAction->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_L));
+    openLessonAction->setObjectName(QStringLiteral("openLesson"));
+    openLessonAction->setShortcuts(controlKeys("openLesson"));
     QMenu* lessonsMenu = file->addMenu(tr("Le&ssons"));
     for (const QString& path : m_player->lessonPaths()) {
         const lessons::LessonLoadResult r = lessons::loadLessonFile(path);
@@ -363,7 +362,8 @@ void MainWindow::buildMenus()
     }
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-    quit->setShortcut(QKeySequence::Quit);
+    quit->setObjectName(QStringLiteral("quit"));
+    quit->setShortcuts(controlKeys("quit"));
 
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
     for (QAction* a : {m_playAction, m_stepAction, m_backAction, m_resetAction})
@@ -384,19 +384,23 @@ void MainWindow::buildMenus()
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&Controls"), this, [this] {
         const ModalScope modal;
-        QMessageBox::information(
-            this, tr("Controls"),
-            tr("<b>Space</b> play / pause &nbsp; <b>S</b> or <b>→</b> one step &nbsp; "
-               "<b>←</b> one step back &nbsp; <b>R</b> reset &nbsp; <b>F</b> fit scene<br>"
-               "Drag a body to pull it with a spring; release to throw it.<br>"
-               "Click a body to inspect it. Drag empty space (or the middle button) to pan; "
-               "the wheel zooms.<br>Drag the timeline to go back in time."));
+        QMessageBox box(QMessageBox::NoIcon, tr("Controls"), controlsHelpText(), QMessageBox::Ok,
+                        this);
+        box.setTextFormat(Qt::RichText);
+        box.exec();
     });
-    help->addAction(tr("&About RigidLab"), this, [this] {
-        const ModalScope modal;
-        QMessageBox::about(this, tr("About RigidLab"),
-                           tr("RigidLab: a lab for 2D rigid-body mechanics."));
-    });
+    help->addAction(tr("&About RigidLab"), this, [this] { showAbout(this); });
+}
+
+QString MainWindow::controlsHelpText() const
+{
+    // The overlays' keys from their own table, kOverlays.
+    QList<ControlHelpRow> overlays;
+    for (std::size_t i = 0; i < kOverlays.size(); ++i)
+        overlays.push_back(
+            {{QKeySequence(QString::fromLatin1(kOverlays[i].shortcut))},
+             tr("Show or hide: %1").arg(QString(tr(kOverlays[i].text)).remove(QLatin1Char('&')))});
+    return controlsHelpHtml(overlays);
 }
 
 QString MainWindow::openScene(const QString& path, bool quiet)
@@ -475,47 +479,111 @@ void MainWindow::exportPlotDialog(PlotWidget* plot, const QString& format)
         statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
 }
 
+void MainWindow::buildStatusBar()
+{
+    m_statusTime = new QLabel(this);
+    m_statusRate = new QLabel(this);
+    m_statusDrift = new QLabel(this);
+    m_statusDetails = new QLabel(this);
+    m_statusSlow = new QLabel(tr("slower than real time"), this);
+    m_statusSlow->setStyleSheet(
+        QStringLiteral("color: white; background: #c0392b; padding: 1px 6px;"));
+    m_statusSlow->setVisible(false);
+    statusBar()->addWidget(m_statusTime);
+    statusBar()->addWidget(m_statusRate);
+    statusBar()->addWidget(m_statusDrift);
+    statusBar()->addWidget(m_statusDetails);
+    statusBar()->addPermanentWidget(m_statusSlow);
+
+    // The timings are for whoever tunes the engine, not for the class: off unless asked for.
+    const QString key = QStringLiteral("status/details");
+    m_detailsAction = new QAction(tr("Status &details (steps/s, stage timings)"), this);
+    m_detailsAction->setObjectName(QStringLiteral("statusDetails"));
+    m_detailsAction->setCheckable(true);
+    m_detailsAction->setChecked(QSettings().value(key, false).toBool());
+    m_statusDetails->setVisible(m_detailsAction->isChecked());
+    connect(m_detailsAction, &QAction::toggled, this, [this, key](bool on) {
+        m_statusDetails->setVisible(on);
+        QSettings s;
+        s.setValue(key, on);
+        syncSettings(s, *this);
+        updateStatus();
+    });
+    m_viewMenu->addSeparator();
+    m_viewMenu->addAction(m_detailsAction);
+
+    auto* statusTimer = new QTimer(this);
+    connect(statusTimer, &QTimer::timeout, this, &MainWindow::updateStatus);
+    statusTimer->start(250);
+}
+
 void MainWindow::updateStatus()
 {
+    const QLocale locale;
     const physics::World& w = m_controller->world();
-    m_statusTime->setText(tr("t = %1 s").arg(w.time(), 0, 'f', 3));
-    // The last step's stages that ran, with their times (physics/profile.h).
-    QStringList stages;
-    const physics::StepProfile& profile = w.profile();
-    for (int k = 0; k < physics::kStageCount; ++k)
-        if (profile.ran[k])
-            stages << tr("%1 %2")
-                          .arg(QString::fromLatin1(
-                              physics::stageName(static_cast<physics::Stage>(k))))
-                          .arg(profile.ms[k], 0, 'f', 2);
-    m_statusRate->setText(tr("%1 steps/s · frame %2 ms (physics %3 ms) · step %4 ms: %5")
-                              .arg(m_controller->stepsPerSecond(), 0, 'f', 0)
-                              .arg(m_controller->frameMilliseconds(), 0, 'f', 1)
-                              .arg(m_controller->physicsMilliseconds(), 0, 'f', 1)
-                              .arg(profile.total, 0, 'f', 2)
-                              .arg(stages.join(QStringLiteral(", "))));
+    const bool running = m_controller->isRunning();
+    m_statusTime->setText(tr("t = %1 s").arg(locale.toString(w.time(), 'f', 3)));
+    // Simulated seconds per wall second; while paused there is no rate to show.
+    if (!running)
+        m_statusRate->setText(tr("paused"));
+    else if (const std::optional<double> factor = m_controller->realTimeFactor())
+        m_statusRate->setText(tr("%1 × real time").arg(locale.toString(*factor, 'f', 2)));
+    else
+        m_statusRate->setText(tr("running"));
     // Drift is the numerical error alone: what contacts, friction, drag and dampers took is
     // physics, said apart.
-    QString drift =
-        tr("energy drift (numerical error) %L1 %").arg(m_controller->driftPercent(), 0, 'g', 3);
+    QString drift = tr("energy drift (numerical error) %1 %")
+                        .arg(locale.toString(m_controller->driftPercent(), 'g', 3));
     const double lost = m_controller->dissipated();
     if (std::abs(lost) > 1e-9)
-        drift +=
-            tr(" · dissipated by contacts, friction, drag and dampers %L1 J").arg(lost, 0, 'g', 3);
+        drift += tr(" · dissipated by contacts, friction, drag and dampers %1 J")
+                     .arg(locale.toString(lost, 'g', 3));
     // The adaptive integrator's own estimate of its local error, live.
     if (const auto estimate = w.integrator().errorEstimate())
         drift += tr(" · %1 error estimate %2 (%3 substeps)")
                      .arg(QString::fromUtf8(physics::integratorName(w.def().integrator).data()))
-                     .arg(*estimate, 0, 'g', 2)
-                     .arg(w.integrator().substeps());
+                     .arg(locale.toString(*estimate, 'g', 2))
+                     .arg(locale.toString(w.integrator().substeps()));
     m_statusDrift->setText(drift);
+    if (m_detailsAction->isChecked()) {
+        // The last step's stages that ran, with their times (physics/profile.h).
+        QStringList stages;
+        const physics::StepProfile& profile = w.profile();
+        for (int k = 0; k < physics::kStageCount; ++k)
+            if (profile.ran[k])
+                stages << tr("%1 %2").arg(
+                    QString::fromLatin1(physics::stageName(static_cast<physics::Stage>(k))),
+                    locale.toString(profile.ms[k], 'f', 2));
+        const QString step =
+            tr("last step %1 ms: %2")
+                .arg(locale.toString(profile.total, 'f', 2), stages.join(QStringLiteral(", ")));
+        // Rates only while the clock runs: a paused world has none, and an old one is stale.
+        m_statusDetails->setText(
+            running ? tr("%1 steps/s · frame %2 ms (physics %3 ms) · %4")
+                          .arg(locale.toString(m_controller->stepsPerSecond(), 'f', 0),
+                               locale.toString(m_controller->frameMilliseconds(), 'f', 1),
+                               locale.toString(m_controller->physicsMilliseconds(), 'f', 1), step)
+                    : step);
+    } else {
+        m_statusDetails->clear();
+    }
     // Over the world, a banner when it diverged.
     if (auto* banner = findChild<DivergenceBanner*>()) {
         banner->refresh();
         banner->setGeometry(0, 0, m_view->width(), banner->sizeHint().height());
         banner->raise();
     }
-    m_statusSlow->setVisible(m_controller->isRunning() && m_controller->slowerThanRealTime());
+    m_statusSlow->setVisible(running && m_controller->slowerThanRealTime());
+}
+
+QString MainWindow::statusText() const
+{
+    QStringList parts;
+    for (const QLabel* label :
+         {m_statusTime, m_statusRate, m_statusDrift, m_statusDetails, m_statusSlow})
+        if (!label->isHidden() && !label->text().isEmpty())
+            parts << label->text();
+    return parts.join(QStringLiteral(" | "));
 }
 
 void MainWindow::updateTimeline()

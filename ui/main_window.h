@@ -69,6 +69,12 @@ public:
     {
         return m_overlayActions[static_cast<size_t>(overlay)];
     }
+    /// Help › Controls (rich text), from the table that registers the keys (shortcuts.h).
+    QString controlsHelpText() const;
+    /// What the status bar shows now, its visible parts joined.
+    QString statusText() const;
+    /// View › Status details: steps/s, frame and stage timings in the status bar.
+    QAction* statusDetailsAction() const { return m_detailsAction; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -86,6 +92,7 @@ private slots:
 private:
     void buildActions();
     void buildMenus();
+    void buildStatusBar();
     void buildDocks();
     void addRecent(const QString& path);
     void rebuildRecentMenu();
@@ -113,6 +120,8 @@ private:
     QLabel* m_statusRate = nullptr;
     QLabel* m_statusDrift = nullptr;
     QLabel* m_statusSlow = nullptr;
+    QLabel* m_statusDetails = nullptr;
+    QAction* m_detailsAction = nullptr;
     QMenu* m_recentMenu = nullptr;
     QMenu* m_scenesMenu = nullptr;
     QMenu* m_viewMenu = nullptr;

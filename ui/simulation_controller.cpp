@@ -152,6 +152,12 @@ void SimulationController::setRunning(bool running)
     if (running) {
         m_wall.start();
         m_frameTimer.start();
+        // The rates measure this run only, not the pause before it.
+        m_rateClock.restart();
+        m_stepsThisSecond = 0;
+        m_simulatedThisSecond = 0.0;
+        m_stepsPerSecond = 0.0;
+        m_realTimeFactor.reset();
     } else {
         m_frameTimer.stop();
         m_slow = false;
@@ -228,6 +234,7 @@ void SimulationController::advanceFrame()
             }
             doStep();
             m_accumulator -= h;
+            m_simulatedThisSecond += h;
         }
     }
     m_physicsMs = physicsClock.nsecsElapsed() * 1e-6;
@@ -240,8 +247,12 @@ void SimulationController::advanceFrame()
     }
     m_slow = slow;
     if (m_rateClock.elapsed() >= 1000) {
-        m_stepsPerSecond = m_stepsThisSecond * 1000.0 / m_rateClock.restart();
+        const double seconds = static_cast<double>(m_rateClock.nsecsElapsed()) * 1e-9;
+        m_rateClock.restart();
+        m_stepsPerSecond = static_cast<double>(m_stepsThisSecond) / seconds;
+        m_realTimeFactor = m_simulatedThisSecond / seconds;
         m_stepsThisSecond = 0;
+        m_simulatedThisSecond = 0.0;
     }
     emit worldChanged();
     emit frameAdvanced();

@@ -66,6 +66,9 @@ public:
     bool slowerThanRealTime() const { return m_slow; }
     /// Steps per second of wall time, over the last second.
     double stepsPerSecond() const { return m_stepsPerSecond; }
+    /// Simulated seconds per wall second while running, over the last whole second since
+    /// play was pressed; nothing before that second has passed.
+    std::optional<double> realTimeFactor() const { return m_realTimeFactor; }
     /// Wall time of the last frame, and the part of it spent in physics [ms].
     double frameMilliseconds() const { return m_frameMs; }
     double physicsMilliseconds() const { return m_physicsMs; }
@@ -184,6 +187,8 @@ private:
     int m_measureFrames = 0; ///< frames still to record, see measureFrames()
     std::vector<double> m_measuredFrameMs, m_measuredPhysicsMs;
     long long m_stepsThisSecond = 0;
+    double m_simulatedThisSecond = 0.0; ///< simulated time the clock ran since m_rateClock [s]
+    std::optional<double> m_realTimeFactor;
     QElapsedTimer m_rateClock;
 
     struct Grab {

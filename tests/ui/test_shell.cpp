@@ -1,0 +1,283 @@
+// The window's shell (the classroom-window issue): the command line of rigidlab, the
+// screenshot command, Help › Controls and About, and the status bar.
+
+#include "about_dialog.h"
+#include "main_window.h"
+#include "screenshots.h"
+#include "simulation_controller.h"
+
+#include "rigidlab/physics/profile.h"
+#include "rigidlab/version.h"
+
+#include <Eigen/Core>
+#include <QAction>
+#include <QFile>
+#include <QImage>
+#include <QProcess>
+#include <QRegularExpression>
+#include <QSet>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include "test_main.h"
+
+using namespace rigidlab;
+using rigidlab::ui::MainWindow;
+
+namespace {
+
+QString lesson(const char* name)
+{
+    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/") + QLatin1String(name);
+}
+
+/// Runs rigidlab with `args` in `env`; its exit status, or -1 if it crashed or hung.
+int runGui(const QStringList& args, const QProcessEnvironment& env, QString& out, QString& err)
+{
+    QProcess p;
+    p.setProcessEnvironment(env);
+    p.start(QStringLiteral(RIGIDLAB_GUI), args);
+    if (!p.waitForFinished(60000)) {
+        p.kill();
+        p.waitForFinished();
+        return -1;
+    }
+    out = QString::fromLocal8Bit(p.readAllStandardOutput());
+    err = QString::fromLocal8Bit(p.readAllStandardError());
+    return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+}
+
+QProcessEnvironment offscreen()
+{
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
+    return env;
+}
+
+/// The keys named in Help › Controls: the bold first cell of each row, split at " or ".
+QSet<QString> helpKeys(const QString& html)
+{
+    QSet<QString> keys;
+    const QRegularExpression cell(QStringLiteral("<tr><td[^>]*><b>(.*?)</b></td>"));
+    for (auto it = cell.globalMatch(html); it.hasNext();)
+        for (const QString& k : it.next().captured(1).split(QStringLiteral(" or ")))
+            keys.insert(k);
+    return keys;
+}
+
+int distinctColours(const QImage& image)
+{
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 2)
+        for (int x = 0; x < image.width(); x += 2)
+            colours.insert(image.pixel(x, y));
+    return static_cast<int>(colours.size());
+}
+
+} // namespace
+
+class TestShell : public QObject {
+    Q_OBJECT
+private slots:
+    void screenshotsHaveTheSizeAskedFor()
+    {
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        ui::ScreenshotOptions options;
+        options.folder = dir.filePath(QStringLiteral("shots"));
+        options.size = QSize(1024, 768);
+        options.welcomeSeconds = 0.5;
+        options.lessons = QStringList{lesson("restitution.json")};
+        options.maxStepsPerLesson = 2;
+        const QString settingsFile = QSettings().fileName();
+        const ui::ScreenshotResult r = ui::writeScreenshots(options);
+        QVERIFY2(r.ok, qPrintable(r.error));
+        // The plain window, with settings of its own: the user's are neither read nor written.
+        QCOMPARE(QSettings().fileName(), settingsFile);
+        QVERIFY(!QSettings().contains(QStringLiteral("recentFiles")));
+        const QStringList pngs{QStringLiteral("00-welcome.png"),
+                               QStringLiteral("restitution-01.png"),
+                               QStringLiteral("restitution-02.png")};
+        QCOMPARE(r.files, pngs + QStringList{QStringLiteral("index.txt")});
+
+        QFile index(dir.filePath(QStringLiteral("shots/index.txt")));
+        QVERIFY(index.open(QIODevice::ReadOnly));
+        const QStringList lines =
+            QString::fromUtf8(index.readAll()).split(QLatin1Char('\n'), Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), pngs.size());
+        QImage previous;
+        for (int i = 0; i < pngs.size(); ++i) {
+            QVERIFY2(lines[i].startsWith(pngs[i] + QLatin1Char('\t')), qPrintable(lines[i]));
+            QVERIFY(lines[i].size() > pngs[i].size() + 10); // says what it shows
+            const QImage image(dir.filePath(QStringLiteral("shots/") + pngs[i]));
+            QVERIFY2(!image.isNull(), qPrintable(pngs[i]));
+            QCOMPARE(image.size(), QSize(1024, 768));
+            // A drawn window, not a blank or single-coloured one.
+            QVERIFY2(distinctColours(image) > 64, qPrintable(pngs[i]));
+            QVERIFY(image != previous); // each view is its own
+            previous = image;
+        }
+        QVERIFY(lines[1].contains(QStringLiteral("step 1 of")));
+    }
+
+    void commandLineRefusesBadValues_data()
+    {
+        QTest::addColumn<QStringList>("args");
+        QTest::addColumn<QString>("flag");
+        QTest::newRow("size without height")
+            << QStringList{QStringLiteral("--size"), QStringLiteral("12")}
+            << QStringLiteral("--size");
+        QTest::newRow("size too small")
+            << QStringList{QStringLiteral("--size"), QStringLiteral("12x12")}
+            << QStringLiteral("--size");
+        QTest::newRow("size missing")
+            << QStringList{QStringLiteral("--size")} << QStringLiteral("--size");
+        QTest::newRow("scale zero") << QStringList{QStringLiteral("--scale"), QStringLiteral("0")}
+                                    << QStringLiteral("--scale");
+        QTest::newRow("scale text") << QStringList{QStringLiteral("--scale"), QStringLiteral("abc")}
+                                    << QStringLiteral("--scale");
+        QTest::newRow("scale nan") << QStringList{QStringLiteral("--scale"), QStringLiteral("nan")}
+                                   << QStringLiteral("--scale");
+        QTest::newRow("lang") << QStringList{QStringLiteral("--lang"), QStringLiteral("de")}
+                              << QStringLiteral("--lang");
+        QTest::newRow("step") << QStringList{QStringLiteral("--step"), QStringLiteral("x")}
+                              << QStringLiteral("--step");
+        QTest::newRow("unknown") << QStringList{QStringLiteral("--colour")}
+                                 << QStringLiteral("colour");
+    }
+
+    void commandLineRefusesBadValues()
+    {
+        QFETCH(QStringList, args);
+        QFETCH(QString, flag);
+        QString out, err;
+        QCOMPARE(runGui(args, offscreen(), out, err), 2);
+        QVERIFY2(err.startsWith(QStringLiteral("rigidlab: ")) && err.contains(flag),
+                 qPrintable(err));
+        QCOMPARE(err.count(QLatin1Char('\n')), 1); // one line
+        QVERIFY(out.isEmpty());
+    }
+
+    void commandLineHelpAndVersion()
+    {
+        // Neither needs a display.
+        QProcessEnvironment none = QProcessEnvironment::systemEnvironment();
+        for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+            none.remove(QLatin1String(name));
+        QString out, err;
+        QCOMPARE(runGui({QStringLiteral("--version")}, none, out, err), 0);
+        QCOMPARE(out.trimmed(), QStringLiteral("rigidlab " RIGIDLAB_VERSION));
+        QCOMPARE(runGui({QStringLiteral("--help")}, none, out, err), 0);
+        for (const char* flag : {"--step", "--measure-frames", "--screenshots", "--size", "--scale",
+                                 "--present", "--lang", "--version"})
+            QVERIFY2(out.contains(QLatin1String(flag)), flag);
+        // Accepted flags, but no display: said in one line, before Qt would abort.
+        QCOMPARE(
+            runGui({QStringLiteral("--present"), QStringLiteral("--lang"), QStringLiteral("cs"),
+                    QStringLiteral("--screenshots"), QStringLiteral("/nonexistent/shots")},
+                   none, out, err),
+            2);
+        QVERIFY2(err.contains(QStringLiteral("display")), qPrintable(err));
+        QCOMPARE(err.count(QLatin1Char('\n')), 1);
+    }
+
+    void controlsHelpListsEveryShortcut()
+    {
+        MainWindow w;
+        const QString help = w.controlsHelpText();
+        const QSet<QString> keys = helpKeys(help);
+        int shortcuts = 0;
+        for (const QAction* a : w.findChildren<QAction*>())
+            for (const QKeySequence& k : a->shortcuts()) {
+                ++shortcuts;
+                QVERIFY2(keys.contains(k.toString(QKeySequence::NativeText).toHtmlEscaped()),
+                         qPrintable(a->text() + QStringLiteral(": ") + k.toString()));
+            }
+        // Space, S, →, ←, Backspace, R, F, Q, E, V C B M T J, Ctrl+O, Ctrl+L, Ctrl+Q.
+        QVERIFY2(shortcuts >= 18, qPrintable(QString::number(shortcuts)));
+        // And the mouse.
+        for (const char* gesture : {"Drag a body", "Mouse wheel", "Drag the timeline"})
+            QVERIFY2(help.contains(QLatin1String(gesture)), gesture);
+    }
+
+    void aboutNamesVersionsLicenceAndPaper()
+    {
+        const QString about = ui::aboutText();
+        for (const QString& part :
+             {QStringLiteral(RIGIDLAB_VERSION), QStringLiteral("GPL-3.0-or-later"),
+              QString::fromLatin1(qVersion()), QStringLiteral(QCUSTOMPLOT_VERSION_STR),
+              QStringLiteral("%1.%2.%3")
+                  .arg(EIGEN_WORLD_VERSION)
+                  .arg(EIGEN_MAJOR_VERSION)
+                  .arg(EIGEN_MINOR_VERSION),
+              QStringLiteral("Simulace mechaniky tuhých těles v reálném čase"),
+              QStringLiteral("Real-time simulation of rigid-body mechanics")})
+            QVERIFY2(about.contains(part), qPrintable(part));
+        QVERIFY(QFile::exists(QStringLiteral(RIGIDLAB_SOURCE_DIR "/LICENSE")));
+    }
+
+    void statusBarSaysOnlyWhatIsCurrent()
+    {
+        QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+        MainWindow w;
+        QVERIFY(!w.statusDetailsAction()->isChecked()); // off by default
+        QCOMPARE(
+            w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/box_stack.json"), true),
+            QString());
+        ui::SimulationController& c = w.controller();
+        c.setRunning(false);
+        for (int i = 0; i < 30; ++i)
+            c.stepForward();
+        const auto status = [&w] {
+            QMetaObject::invokeMethod(&w, "updateStatus");
+            return w.statusText();
+        };
+        const auto hasStageName = [](const QString& text) {
+            for (int k = 0; k < physics::kStageCount; ++k)
+                if (text.contains(
+                        QLatin1String(physics::stageName(static_cast<physics::Stage>(k)))))
+                    return true;
+            return false;
+        };
+        // Paused: no rate, and the numbers in the locale's own way.
+        QString text = status();
+        QVERIFY2(text.contains(QStringLiteral("paused")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("steps/s")), qPrintable(text));
+        QVERIFY2(!hasStageName(text), qPrintable(text));
+        const QString t = QLocale().toString(c.world().time(), 'f', 3);
+        QVERIFY2(t.contains(QLatin1Char(',')) && text.contains(t), qPrintable(text));
+
+        // Details on: the last step's stages, but still no rate while paused.
+        w.statusDetailsAction()->setChecked(true);
+        text = status();
+        QVERIFY2(hasStageName(text), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("steps/s")), qPrintable(text));
+        // Remembered for the next window.
+        QVERIFY(QSettings().value(QStringLiteral("status/details")).toBool());
+
+        // Running: the rate, in simulated seconds per wall second once a second has passed.
+        c.setRunning(true);
+        QVERIFY2(status().contains(QStringLiteral("steps/s")), qPrintable(status()));
+        QTRY_VERIFY_WITH_TIMEOUT(c.realTimeFactor().has_value(), 10000);
+        text = status();
+        QVERIFY2(text.contains(QStringLiteral("× real time")), qPrintable(text));
+        QVERIFY(*c.realTimeFactor() > 0.0);
+
+        // Details off: no stage names even while running.
+        w.statusDetailsAction()->setChecked(false);
+        text = status();
+        QVERIFY2(!hasStageName(text), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("steps/s")), qPrintable(text));
+        // Paused again: the rate goes, it does not stay stale.
+        c.setRunning(false);
+        text = status();
+        QVERIFY2(text.contains(QStringLiteral("paused")), qPrintable(text));
+        QVERIFY2(!text.contains(QStringLiteral("× real time")), qPrintable(text));
+        QLocale::setDefault(QLocale::c());
+    }
+};
+
+RIGIDLAB_TEST_MAIN(TestShell)
+#include "test_shell.moc"

@@ -1,0 +1,77 @@
+#pragma once
+// The window's controls in one table: every keyboard shortcut the window registers and every
+// mouse action of the world view. MainWindow takes its actions' keys from here and Help ›
+// Controls is generated from here, so that the help cannot drift from what the keys do.
+// (The overlay keys V C B M T J live beside their overlays in main_window.cpp's kOverlays;
+// the window passes them to controlsHelpHtml as extra rows.)
+
+#include <QKeySequence>
+#include <QList>
+#include <QString>
+
+#include <array>
+#include <string_view>
+
+namespace rigidlab::ui {
+
+/// One row of Help › Controls. A keyboard row names its action and its keys; a mouse row has
+/// no keys and names its gesture instead.
+struct ControlInfo {
+    std::string_view action; ///< the action's objectName, empty for a mouse row
+    const char* keys;        ///< QKeySequence::PortableText, several separated by "; "
+    const char* gesture;     ///< what the mouse does (translated, context "Controls")
+    const char* description; ///< what happens (translated, context "Controls")
+};
+
+// clang-format off
+inline constexpr std::array kControls{
+    ControlInfo{"play", "Space", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Play or pause the simulation")},
+    ControlInfo{"step", "S; Right", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "One step forward (pauses)")},
+    ControlInfo{"back", "Left; Backspace", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "One step back in time")},
+    ControlInfo{"reset", "R", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Back to the start of the scene")},
+    ControlInfo{"fit", "F", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Zoom to show every body")},
+    ControlInfo{"turnLeft", "Q", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Turn the selected body left by 5°")},
+    ControlInfo{"turnRight", "E", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Turn the selected body right by 5°")},
+    ControlInfo{"openScene", "Ctrl+O", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Open a scene")},
+    ControlInfo{"openLesson", "Ctrl+L", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Open a lesson")},
+    ControlInfo{"quit", "Ctrl+Q", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Quit RigidLab")},
+    ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Click a body"),
+                QT_TRANSLATE_NOOP("Controls", "Select it and show it in the inspector")},
+    ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Drag a body"),
+                QT_TRANSLATE_NOOP("Controls", "Pull it with a spring; release to throw it")},
+    ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Drag empty space or the middle button"),
+                QT_TRANSLATE_NOOP("Controls", "Pan the view")},
+    ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Mouse wheel"),
+                QT_TRANSLATE_NOOP("Controls", "Zoom about the pointer")},
+    ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Drag the timeline"),
+                QT_TRANSLATE_NOOP("Controls", "Go back to any earlier moment of the run")},
+};
+// clang-format on
+
+/// The keys of the action named `action` in kControls (empty if it has none).
+QList<QKeySequence> controlKeys(std::string_view action);
+
+/// The same keys as text for a tooltip ("S or Right"), as the platform writes them.
+QString controlKeysText(std::string_view action);
+
+/// A row added to the help from elsewhere (the overlays' keys).
+struct ControlHelpRow {
+    QList<QKeySequence> keys;
+    QString description;
+};
+
+/// Help › Controls as an HTML table: the keyboard rows of kControls, then `extra`, then the
+/// mouse rows. Keys are shown as the platform writes them (QKeySequence::NativeText).
+QString controlsHelpHtml(const QList<ControlHelpRow>& extra);
+
+} // namespace rigidlab::ui
