@@ -145,8 +145,8 @@ int parseArguments(const QStringList& args, Options& options, QString& message)
         CommandLine::tr("Scale factor of the whole interface (QT_SCALE_FACTOR), e.g. 1.5."),
         QStringLiteral("F"));
     const QCommandLineOption present(QStringLiteral("present"),
-                                     CommandLine::tr("Presentation mode: large type for a "
-                                                     "projector (accepted; not in effect yet)."));
+                                     CommandLine::tr("Presentation mode: full screen, large type "
+                                                     "and thick lines for a projector (F11)."));
     const QCommandLineOption lang(
         QStringLiteral("lang"),
         CommandLine::tr("Language of the interface: cs or en (accepted; not in effect yet)."),
@@ -302,13 +302,18 @@ int main(int argc, char** argv)
     QApplication::setApplicationName(QStringLiteral("RigidLab"));
     QApplication::setApplicationVersion(QStringLiteral(RIGIDLAB_VERSION));
 
-    // TODO(issue 11): call MainWindow::setPresentation(options.present) here and in the
-    // screenshots' setUp once the presentation mode exists; --present is accepted until then.
     if (!options.screenshots.isEmpty()) {
         rigidlab::ui::ScreenshotOptions shots;
         shots.folder = options.screenshots;
         if (options.size)
             shots.size = *options.size;
+        if (options.present)
+            shots.setUp = [](rigidlab::ui::MainWindow& w) {
+                // Fonts, lines and palette of presentation mode, at the projector's size
+                // given by --size rather than this display's.
+                w.setPresentation(true);
+                w.setWindowState(Qt::WindowNoState);
+            };
         const rigidlab::ui::ScreenshotResult r = rigidlab::ui::writeScreenshots(shots);
         for (const QString& note : r.notes)
             QTextStream(stderr) << "rigidlab: " << note << '\n';
@@ -324,7 +329,10 @@ int main(int argc, char** argv)
     }
 
     rigidlab::ui::MainWindow window;
-    window.resize(options.size.value_or(QSize(1500, 920)));
+    // The window sizes itself for the screen it is on (MainWindow::fitToScreen); --size
+    // overrides that.
+    if (options.size)
+        window.resize(*options.size);
     const QString file = options.file;
     const int step = options.step;
     const int measureFrames = options.measureFrames;
@@ -347,6 +355,8 @@ int main(int argc, char** argv)
             window.lessonPlayer().goToStep(step - 1);
     }
     window.show();
+    if (options.present)
+        window.setPresentation(true);
     // A lesson waits for the student to press Run; a measurement runs it at once.
     if (window.lastError().isEmpty() && (!window.lessonPlayer().lesson() || measureFrames > 0))
         window.controller().setRunning(true);

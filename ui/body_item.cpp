@@ -1,5 +1,7 @@
 #include "body_item.h"
 
+#include "theme.h"
+
 #include <QPainter>
 
 #include <array>
@@ -68,7 +70,8 @@ QPainterPath BodyItem::shape() const
 void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
 {
     painter->setRenderHint(QPainter::Antialiasing, m_antialiased);
-    QPen pen(m_selected ? QColor(20, 20, 20) : m_fill.darker(160), m_selected ? 3.0 : 1.0);
+    QPen pen(m_selected ? QColor(20, 20, 20) : m_fill.darker(160),
+             theme::lineWidth(m_selected ? 3.0 : 1.0));
     pen.setCosmetic(true);
     painter->setPen(pen);
     if (m_kind == 1) {
@@ -82,7 +85,7 @@ void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
     } else if (m_kind == 3) {
         // A ghost: its colour's outline over a faint fill, so that the bodies it overlaps
         // stay visible.
-        QPen outline(m_fill, 2.5);
+        QPen outline(m_fill, theme::lineWidth(2.5));
         outline.setCosmetic(true);
         painter->setPen(outline);
         QColor fill = m_fill;
@@ -100,7 +103,7 @@ void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget
             painter->drawPolygon(m_polygon);
     }
     if (!m_radiusLine.isNull()) {
-        QPen line(m_fill.darker(220), 2.0);
+        QPen line(m_fill.darker(220), theme::lineWidth(2.0));
         line.setCosmetic(true);
         painter->setPen(line);
         painter->drawLine(m_radiusLine);

@@ -55,7 +55,9 @@ PlotWidget* makeComparePlot(const lessons::LessonStep& step, const QString& titl
     return plot;
 }
 
-PlotWidget* makeNamedPlot(const lessons::LessonStep& step, const QString& name, QWidget* parent)
+} // namespace
+
+PlotWidget* makeStepPlot(const lessons::LessonStep& step, const QString& name, QWidget* parent)
 {
     if (name == u"energy")
         return makeEnergyPlot(parent);
@@ -69,19 +71,17 @@ PlotWidget* makeNamedPlot(const lessons::LessonStep& step, const QString& name, 
             [](const Sample& s, std::size_t i) { return s.variantTotal[i]; }, parent);
     if (name == u"compare-drift")
         return makeComparePlot(
-            step, tr("Energy drift %1").arg(comparedBy(step)), tr("(E − E₀)/|E₀|"),
+            step, tr("Energy drift %1").arg(comparedBy(step)), tr("(E + E_dissipated − E₀)/|E₀|"),
             QStringLiteral("%"),
             [](const Sample& s, std::size_t i) { return s.variantDriftPercent[i]; }, parent);
     return nullptr; // the loader admits no other name
 }
 
-} // namespace
-
 std::vector<PlotWidget*> makeStepPlots(const lessons::LessonStep& step, QWidget* parent)
 {
     std::vector<PlotWidget*> plots;
     for (const QString& name : step.plots) {
-        PlotWidget* plot = makeNamedPlot(step, name, parent);
+        PlotWidget* plot = makeStepPlot(step, name, parent);
         Q_ASSERT(plot);
         if (!plot)
             continue;

@@ -30,6 +30,10 @@ namespace rigidlab::ui {
 
 class PlotWidget;
 
+/// One of the step's plots by its name in the lesson, a child of `parent`; nullptr for a name
+/// the loader does not admit. The window and the headless export both make their plots here.
+PlotWidget* makeStepPlot(const lessons::LessonStep& step, const QString& name, QWidget* parent);
+
 /// The step's plots, in the order it names them, children of `parent`. Each plot's
 /// objectName is its name in the lesson ("compare-energy"). The caller connects their source.
 std::vector<PlotWidget*> makeStepPlots(const lessons::LessonStep& step, QWidget* parent);

@@ -30,12 +30,15 @@
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QScrollArea>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QSlider>
 #include <QStatusBar>
 #include <QStyle>
 #include <QTimer>
 #include <QToolBar>
+#include <QVBoxLayout>
 
 #include <cmath>
 
@@ -124,6 +127,13 @@ MainWindow::MainWindow(QWidget* parent)
     buildStatusBar();
 
     connect(m_view, &WorldView::bodySelected, m_inspector, &InspectorPanel::setBody);
+    // A typed value refused (out of range, not a number) is said in the status bar too.
+    // (Received by the status bar itself: a field left while the window is being destroyed
+    // commits, and may refuse, after MainWindow's own part is gone.)
+    QStatusBar* bar = statusBar();
+    const auto showRefusal = [bar](const QString& why) { bar->showMessage(why, 8000); };
+    connect(m_controls, &ControlPanel::inputRefused, bar, showRefusal);
+    connect(m_inspector, &InspectorPanel::inputRefused, bar, showRefusal);
     connect(m_controller, &SimulationController::runningChanged, this, [this](bool running) {
         m_playAction->setText(running ? tr("Pause") : tr("Play"));
         m_playAction->setIcon(
@@ -134,19 +144,24 @@ MainWindow::MainWindow(QWidget* parent)
         const QString title = m_controller->scene().title;
         setWindowTitle(title.isEmpty() ? tr("RigidLab") : tr("%1 — RigidLab").arg(title));
     });
-    for (PlotWidget* plot : m_plots) {
-        plot->setSource(&m_controller->samples());
-        connect(m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
-        connect(m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
-        connect(m_controller, &SimulationController::marked, plot, &PlotWidget::addMark);
-        connect(m_controller, &SimulationController::frameAdvanced, plot,
-                &PlotWidget::frameAdvanced);
-    }
+    for (PlotWidget* plot : m_plots)
+        followController(plot);
     restoreSettings();
     updateStatus();
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::followController(PlotWidget* plot)
+{
+    // The live samples, cleared with a new scene, cut back on a rewind, marked where a setting
+    // changed, drained after each frame.
+    plot->setSource(&m_controller->samples());
+    connect(m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
+    connect(m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
+    connect(m_controller, &SimulationController::marked, plot, &PlotWidget::addMark);
+    connect(m_controller, &SimulationController::frameAdvanced, plot, &PlotWidget::frameAdvanced);
+}
 
 QString MainWindow::scenesFolder()
 {
@@ -279,7 +294,16 @@ void MainWindow::buildDocks()
                           Qt::DockWidgetArea area) {
         auto* dock = new QDockWidget(title, this);
         dock->setObjectName(name + QStringLiteral("Dock"));
-        dock->setWidget(w);
+        if (qobject_cast<PlotWidget*>(w)) {
+            dock->setWidget(w);
+        } else {
+            // A panel taller or wider than its dock scrolls instead of being cut.
+            auto* scroll = new QScrollArea(dock);
+            scroll->setWidgetResizable(true);
+            scroll->setFrameShape(QFrame::NoFrame);
+            scroll->setWidget(w);
+            dock->setWidget(scroll);
+        }
         addDockWidget(area, dock);
         m_docks.insert(name, dock);
         return dock;
@@ -297,7 +321,8 @@ void MainWindow::buildDocks()
     const std::array<QString, kPlotCount> names{
         QStringLiteral("energy"), QStringLiteral("momentum"), QStringLiteral("drift")};
     for (int i = 0; i < kPlotCount; ++i) {
-        m_plots[static_cast<size_t>(i)]->setMinimumSize(360, 200);
+        // Small enough that three fit beside the world on a 1366×768 screen.
+        m_plots[static_cast<size_t>(i)]->setMinimumSize(220, 150);
         m_plots[static_cast<size_t>(i)]->setTitleShown(false); // the dock shows it
         addDock(titles[static_cast<size_t>(i)], names[static_cast<size_t>(i)],
                 m_plots[static_cast<size_t>(i)], Qt::RightDockWidgetArea);
@@ -374,6 +399,14 @@ void MainWindow::buildMenus()
 
     m_viewMenu = menuBar()->addMenu(tr("&View"));
     m_viewMenu->addAction(m_fitAction);
+    m_presentAction = m_viewMenu->addAction(tr("&Presentation"));
+    m_presentAction->setCheckable(true);
+    m_presentAction->setObjectName(QStringLiteral("presentation"));
+    m_presentAction->setShortcuts(controlKeys("presentation"));
+    m_presentAction->setToolTip(
+        tr("Full screen, larger text and thicker lines for a projector (F11)"));
+    connect(m_presentAction, &QAction::toggled, this, &MainWindow::setPresentation);
+    addAction(m_presentAction); // F11 works in full screen, where the menu bar may be hidden
     m_viewMenu->addSeparator();
     for (QAction* a : m_overlayActions)
         m_viewMenu->addAction(a);
@@ -501,9 +534,9 @@ void MainWindow::buildStatusBar()
     m_detailsAction->setObjectName(QStringLiteral("statusDetails"));
     m_detailsAction->setCheckable(true);
     m_detailsAction->setChecked(QSettings().value(key, false).toBool());
-    m_statusDetails->setVisible(m_detailsAction->isChecked());
+    setDetailsShown(true);
     connect(m_detailsAction, &QAction::toggled, this, [this, key](bool on) {
-        m_statusDetails->setVisible(on);
+        setDetailsShown(on);
         QSettings s;
         s.setValue(key, on);
         syncSettings(s, *this);
@@ -601,8 +634,7 @@ void MainWindow::restoreSettings()
 {
     QSettings s;
     m_lastFolder = s.value(QStringLiteral("lastFolder")).toString();
-    restoreGeometry(s.value(QStringLiteral("geometry")).toByteArray());
-    restoreState(s.value(QStringLiteral("windowState")).toByteArray());
+    restoreLayout(s);
     for (std::size_t i = 0; i < kOverlays.size(); ++i) {
         const QString key = QStringLiteral("overlays/") + QLatin1String(kOverlays[i].key);
         if (s.contains(key))
@@ -666,46 +698,38 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
             continue;
         it.value()->setVisible(step.panels.contains(it.key()) || step.plots.contains(it.key()));
     }
-    delete m_compare;
-    m_compare = nullptr;
-    const bool compareEnergy = step.plots.contains(QLatin1String("compare-energy"));
-    const bool compareDrift = step.plots.contains(QLatin1String("compare-drift"));
-    if ((compareEnergy || compareDrift) && !labels.isEmpty()) {
-        m_compare =
-            new PlotWidget(compareDrift && !compareEnergy ? tr("Energy drift, side by side")
-                                                          : tr("Total energy, side by side"),
-                           m_compareDock);
-        m_compare->setTitleShown(false);
-        m_compare->setObjectName(compareDrift && !compareEnergy ? QStringLiteral("compare-drift")
-                                                                : QStringLiteral("compare-energy"));
-        if (compareDrift && !compareEnergy) {
-            m_compare->setYAxisLabel(tr("drift (E − E₀)/|E₀|"), QStringLiteral("%"));
-            m_compare->setValueScale(YAxis::Left, kDriftScalePercent);
+    // The step's compared worlds, one plot for each compare-… plot it names, made where the
+    // headless export makes them (lesson_export.h), so the window shows and exports the same.
+    delete m_compareDock->widget();
+    m_comparePlots.clear();
+    if (!labels.isEmpty()) {
+        auto* box = new QWidget(m_compareDock);
+        auto* layout = new QVBoxLayout(box);
+        layout->setContentsMargins(0, 0, 0, 0);
+        QStringList titles;
+        for (const QString& name : step.plots) {
+            if (!name.startsWith(QLatin1String("compare-")))
+                continue;
+            PlotWidget* plot = makeStepPlot(step, name, box);
+            if (!plot)
+                continue;
+            plot->setObjectName(name);
+            plot->setMinimumSize(220, 150);
+            plot->setTitleShown(false);
+            plot->setPresentation(m_presentation);
+            followController(plot);
+            layout->addWidget(plot);
+            m_comparePlots.push_back(plot);
+            titles << plot->title();
+        }
+        if (m_comparePlots.empty()) {
+            delete box;
         } else {
-            m_compare->setYAxisLabel(tr("total energy E"), QStringLiteral("J"));
-            m_compare->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
+            m_compareDock->setWidget(box);
+            m_compareDock->setWindowTitle(titles.join(QStringLiteral(" · ")));
         }
-        for (int i = 0; i < static_cast<int>(labels.size()) && i < Sample::kMaxVariants; ++i) {
-            const auto k = static_cast<std::size_t>(i);
-            if (compareDrift && !compareEnergy)
-                m_compare->addSeries(labels[i], plotColor(i),
-                                     [k](const Sample& s) { return s.variantDriftPercent[k]; });
-            else
-                m_compare->addSeries(labels[i], plotColor(i),
-                                     [k](const Sample& s) { return s.variantTotal[k]; });
-        }
-        m_compare->setSource(&m_controller->samples());
-        connect(m_controller, &SimulationController::samplesCleared, m_compare, &PlotWidget::clear);
-        connect(m_controller, &SimulationController::rewound, m_compare, &PlotWidget::rewind);
-        connect(m_controller, &SimulationController::marked, m_compare, &PlotWidget::addMark);
-        connect(m_controller, &SimulationController::frameAdvanced, m_compare,
-                &PlotWidget::frameAdvanced);
-        m_compareDock->setWidget(m_compare);
-        m_compareDock->setWindowTitle(m_compare->title());
-        m_compareDock->show();
-    } else {
-        m_compareDock->hide();
     }
+    m_compareDock->setVisible(!m_comparePlots.empty());
     static const std::array<const char*, kOverlayCount> kNames{"velocities", "contacts", "boxes",
                                                                "centres",    "trails",   "springs"};
     for (int i = 0; i < kOverlayCount; ++i)
@@ -721,8 +745,8 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
             d && !d->isHidden() && dockWidgetArea(d) == Qt::RightDockWidgetArea)
             right << d;
     if (!right.isEmpty())
-        resizeDocks({right.first()}, {480}, Qt::Horizontal);
-    resizeDocks({m_docks.value(QStringLiteral("lesson"))}, {400}, Qt::Horizontal);
+        right.first()->raise();
+    fitSideColumns(width());
     m_controls->setAllowed(step.allow);
     if (step.sat) {
         const auto a = step.scene.bodyIndex(step.sat->first);
@@ -768,8 +792,8 @@ void MainWindow::leaveLesson()
             it.key() == QLatin1String("momentum") || it.key() == QLatin1String("drift");
         it.value()->setVisible(standard);
     }
-    delete m_compare;
-    m_compare = nullptr;
+    delete m_compareDock->widget();
+    m_comparePlots.clear();
     m_compareDock->hide();
     m_controls->setAllowed(std::nullopt);
     m_sat->setBodies(-1, -1);
@@ -783,15 +807,28 @@ QStringList MainWindow::exportStepPlots(const QString& folder)
     std::vector<PlotWidget*> plots;
     const std::array<QString, kPlotCount> names{
         QStringLiteral("energy"), QStringLiteral("momentum"), QStringLiteral("drift")};
-    for (int i = 0; i < kPlotCount; ++i) {
-        PlotWidget* plot = m_plots[static_cast<size_t>(i)];
-        if (!m_docks.value(names[static_cast<size_t>(i)])->isHidden()) {
-            plot->setObjectName(names[static_cast<size_t>(i)]);
-            plots.push_back(plot);
-        }
+    const auto plotNamed = [&](const QString& name) -> PlotWidget* {
+        for (int i = 0; i < kPlotCount; ++i)
+            if (names[static_cast<size_t>(i)] == name)
+                return m_plots[static_cast<size_t>(i)];
+        for (PlotWidget* plot : m_comparePlots)
+            if (plot->objectName() == name)
+                return plot;
+        return nullptr;
+    };
+    if (const lessons::Lesson* lesson = m_player->lesson()) {
+        // In a lesson: the plots the step names, in its order, as rigidlab-cli lesson --export.
+        for (const QString& name :
+             lesson->steps.at(static_cast<size_t>(m_player->stepIndex())).plots)
+            if (PlotWidget* plot = plotNamed(name))
+                plots.push_back(plot);
+    } else {
+        for (int i = 0; i < kPlotCount; ++i)
+            if (!m_docks.value(names[static_cast<size_t>(i)])->isHidden())
+                plots.push_back(m_plots[static_cast<size_t>(i)]);
     }
-    if (m_compare)
-        plots.push_back(m_compare);
+    for (int i = 0; i < kPlotCount; ++i)
+        m_plots[static_cast<size_t>(i)]->setObjectName(names[static_cast<size_t>(i)]);
     for (PlotWidget* plot : plots)
         plot->drain();
     const lessons::Lesson* lesson = m_player->lesson();
@@ -819,13 +856,18 @@ void MainWindow::closeEvent(QCloseEvent* event)
     }
     m_controller->setRunning(false);
     QSettings s;
-    s.setValue(QStringLiteral("geometry"), saveGeometry());
-    s.setValue(QStringLiteral("windowState"), saveState());
+    saveLayout(s);
     for (std::size_t i = 0; i < kOverlays.size(); ++i)
         s.setValue(QStringLiteral("overlays/") + QLatin1String(kOverlays[i].key),
                    m_overlayActions[i]->isChecked());
     syncSettings(s, *this);
     event->accept();
+}
+
+void MainWindow::setDetailsShown(bool shown)
+{
+    // Presentation mode hides them whatever View › Status details says.
+    m_statusDetails->setVisible(shown && m_detailsAction->isChecked() && !m_presentation);
 }
 
 } // namespace rigidlab::ui

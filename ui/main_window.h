@@ -4,16 +4,20 @@
 
 #include "overlays.h"
 
+#include <QFont>
 #include <QMainWindow>
 #include <QMap>
+#include <QPalette>
 #include <QString>
 
 #include <array>
+#include <vector>
 
 class QAction;
 class QDockWidget;
 class QLabel;
 class QMenu;
+class QSettings;
 class QSlider;
 
 namespace rigidlab::lessons {
@@ -51,8 +55,14 @@ public:
     SatPanel& satPanel() { return *m_sat; }
     BouncePanel& bouncePanel() { return *m_bounces; }
     CollisionPanel& collisionPanel() { return *m_collision; }
-    /// The plot comparing worlds side by side in this lesson step, or nullptr.
-    PlotWidget* comparePlot() const { return m_compare; }
+    /// The first plot comparing worlds side by side in this lesson step, or nullptr.
+    PlotWidget* comparePlot() const
+    {
+        return m_comparePlots.empty() ? nullptr : m_comparePlots.front();
+    }
+    /// Every plot comparing worlds in this step (compare-energy, compare-drift), in the order
+    /// the step names them.
+    const std::vector<PlotWidget*>& comparePlots() const { return m_comparePlots; }
     /// The dock holding a panel or plot, by its lesson name ("energy", "sat", ...).
     QDockWidget* dock(const QString& name) const;
     /// Writes the current step's plots (PNG, PDF, SVG, CSV) into a folder; returns errors.
@@ -76,8 +86,24 @@ public:
     /// View › Status details: steps/s, frame and stage timings in the status bar.
     QAction* statusDetailsAction() const { return m_detailsAction; }
 
+    /// Sizes the window for a screen's available area (never larger) and arranges the docks
+    /// for it: on a small screen the plots share a tabbed dock (main_window_layout.cpp).
+    void fitToScreen(const QRect& available);
+    /// Whether the docks are arranged for a small screen.
+    bool compactLayout() const { return m_compact; }
+    /// Presentation mode (View › Presentation, F11, rigidlab --present): full screen, larger
+    /// text, thicker lines, a high-contrast palette, no developer details. Leaving it
+    /// restores the layout.
+    void setPresentation(bool on);
+    bool presentation() const { return m_presentation; }
+    /// Stage timings and steps per second in the status bar, where View › Status details asks
+    /// for them and presentation mode does not hide them.
+    void setDetailsShown(bool shown);
+
 protected:
     void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
 
 private slots:
     void openDialog();
@@ -98,6 +124,15 @@ private:
     void rebuildRecentMenu();
     void exportPlotDialog(PlotWidget* plot, const QString& format);
     void restoreSettings();
+    /// Connects a plot to the controller's samples and clock.
+    void followController(PlotWidget* plot);
+    QRect availableScreenArea() const;
+    /// Stacked plots on a roomy `screen`, tabbed on a small one; side columns for the window.
+    void arrangeDocks(const QSize& screen, int windowWidth);
+    /// Side columns no wider than their share of `windowWidth`: the world keeps half.
+    void fitSideColumns(int windowWidth);
+    void saveLayout(QSettings& settings) const;
+    void restoreLayout(const QSettings& settings);
 
     SimulationController* m_controller;
     WorldView* m_view;
@@ -107,7 +142,7 @@ private:
     SatPanel* m_sat;
     BouncePanel* m_bounces;
     CollisionPanel* m_collision;
-    PlotWidget* m_compare = nullptr;
+    std::vector<PlotWidget*> m_comparePlots; ///< in m_compareDock
     QDockWidget* m_compareDock = nullptr;
     QMap<QString, QDockWidget*> m_docks;
     bool m_inLesson = false;
@@ -134,6 +169,18 @@ private:
     QList<QAction*> m_rotateActions;
     QString m_lastError;
     QString m_lastFolder;
+
+    // Layout and presentation mode (main_window_layout.cpp).
+    QRect m_screenArea;     ///< the available area the layout was made for
+    bool m_compact = false; ///< plots tabbed for a small screen
+    bool m_presentation = false;
+    bool m_restoreStatePending = false; ///< docks to put back once full screen has ended
+    bool m_normalWasMaximized = false;
+    QByteArray m_normalGeometry; ///< before presentation mode
+    QByteArray m_normalState;
+    QFont m_normalFont;
+    QPalette m_normalPalette;
+    QAction* m_presentAction = nullptr;
 };
 
 } // namespace rigidlab::ui

@@ -1,5 +1,7 @@
 #include "overlays.h"
 
+#include "theme.h"
+
 #include "simulation_controller.h"
 
 #include <QPainter>
@@ -21,7 +23,7 @@ QPointF toQt(const physics::Vec2& v)
 
 QPen cosmeticPen(QColor c, double width, Qt::PenStyle style = Qt::SolidLine)
 {
-    QPen p(c, width, style);
+    QPen p(c, theme::lineWidth(width), style);
     p.setCosmetic(true);
     return p;
 }

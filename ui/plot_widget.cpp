@@ -2,6 +2,7 @@
 
 #include "column_graph.h"
 #include "plot_range.h"
+#include "theme.h"
 
 #include <qcustomplot.h>
 
@@ -26,6 +27,12 @@ constexpr double kTickLabelPt = 11;
 constexpr double kLegendPt = 11;
 constexpr double kMarkLabelPt = 10;
 constexpr double kLineWidthPx = 2.0;
+/// Presentation mode (theme.h): axis labels readable from the back of a room on a 1024×768
+/// projector, ticks and legend a little smaller.
+constexpr double kPresentationAxisLabelPt = 18;
+constexpr double kPresentationTickLabelPt = 16;
+constexpr double kPresentationLegendPt = 16;
+constexpr double kPresentationTitlePt = 20;
 
 /// In window mode points are kept this fraction of the window longer than shown, so a
 /// curve enters from the left edge instead of starting inside the plot.
@@ -238,7 +245,8 @@ int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::S
 {
     auto* graph = new ColumnGraph(m_plot->xAxis, axisFor(axis)); // owned by m_plot
     // Dashed means "read me on the right axis", in the legend as on the curve.
-    graph->setPen(QPen(color, kLineWidthPx, axis == YAxis::Right ? Qt::DashLine : Qt::SolidLine));
+    graph->setPen(QPen(color, theme::lineWidth(kLineWidthPx),
+                       axis == YAxis::Right ? Qt::DashLine : Qt::SolidLine));
     graph->setName(axis == YAxis::Right ? tr("%1 (right axis)").arg(name) : name);
     if (axis == YAxis::Right) {
         m_plot->yAxis2->setVisible(true);
@@ -670,6 +678,27 @@ void PlotWidget::removeMark(std::size_t index)
     if (m_marks.empty())
         updateMarkLabels();
     m_dirty = true;
+}
+
+void PlotWidget::setPresentation(bool on)
+{
+    m_presentation = on;
+    const QFont base = font();
+    m_title->setFont(sized(base, on ? kPresentationTitlePt : kTitlePt, true));
+    m_plot->legend->setFont(sized(base, on ? kPresentationLegendPt : kLegendPt));
+    for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis, m_plot->yAxis2}) {
+        axis->setLabelFont(sized(base, on ? kPresentationAxisLabelPt : kAxisLabelPt));
+        axis->setTickLabelFont(sized(base, on ? kPresentationTickLabelPt : kTickLabelPt));
+        QPen axisPen = axis->basePen();
+        axisPen.setWidthF(on ? 2.0 : 1.0);
+        axis->setBasePen(axisPen);
+    }
+    for (int i = 0; i < m_plot->graphCount(); ++i) {
+        QPen pen = m_plot->graph(i)->pen();
+        pen.setWidthF(on ? theme::lineWidth(kLineWidthPx) : kLineWidthPx);
+        m_plot->graph(i)->setPen(pen);
+    }
+    m_plot->replot(QCustomPlot::rpQueuedReplot);
 }
 
 } // namespace rigidlab::ui

@@ -140,6 +140,11 @@ public:
     /// the export size while exporting).
     void fitLegend(int widthPx);
 
+    /// Presentation mode: larger titles, axis labels (18 pt) and legend, curves at least
+    /// theme::kPresentationMinLinePx wide.
+    void setPresentation(bool on);
+    bool presentation() const { return m_presentation; }
+
 public slots:
     void follow() { setFollowing(true); }
     /// The run advanced a frame: drains now if the refresh interval has passed. A plot told
@@ -209,6 +214,7 @@ private:
     double m_windowSeconds = kDefaultWindowSeconds; ///< [s]
     int m_pointBudget = kDefaultPointBudget;
     bool m_following = true;
+    bool m_presentation = false;
     bool m_dirty = false;         ///< data changed since the last view update
     bool m_settingRanges = false; ///< our own range changes do not pause following
     bool m_replotWhenShown = false;

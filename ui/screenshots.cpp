@@ -137,6 +137,8 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
     const SettingsElsewhere settings(settingsFolder.path());
 
     MainWindow window;
+    // Arranged as on a screen of that size (a projector at 1024×768 tabs its plots).
+    window.fitToScreen(QRect(QPoint(0, 0), options.size));
     if (options.setUp)
         options.setUp(window);
     window.show();

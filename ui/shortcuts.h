@@ -39,6 +39,9 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "Turn the selected body left by 5°")},
     ControlInfo{"turnRight", "E", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Turn the selected body right by 5°")},
+    ControlInfo{"presentation", "F11", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Presentation mode: full screen, large type and "
+                                              "thick lines for a projector")},
     ControlInfo{"openScene", "Ctrl+O", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Open a scene")},
     ControlInfo{"openLesson", "Ctrl+L", nullptr,

@@ -5,19 +5,38 @@
 
 namespace rigidlab::ui::theme {
 
+namespace {
+bool g_presentation = false; // one window per process; set from the GUI thread only
+} // namespace
+
+void setPresentation(bool on)
+{
+    g_presentation = on;
+}
+
+bool presentation()
+{
+    return g_presentation;
+}
+
+double lineWidth(double widthPx)
+{
+    return g_presentation ? std::max(widthPx * 1.5, kPresentationMinLinePx) : widthPx;
+}
+
 QColor worldBackground()
 {
-    return QColor(0xfb, 0xfb, 0xf8);
+    return g_presentation ? QColor(Qt::white) : QColor(0xfb, 0xfb, 0xf8);
 }
 
 QColor worldGrid()
 {
-    return QColor(0xe2, 0xe2, 0xdc);
+    return g_presentation ? QColor(0xc8, 0xc8, 0xc0) : QColor(0xe2, 0xe2, 0xdc);
 }
 
 QColor worldText()
 {
-    return QColor(0x1e, 0x1e, 0x1e); // 16:1 on the background
+    return g_presentation ? QColor(Qt::black) : QColor(0x1e, 0x1e, 0x1e); // 16:1 or 21:1
 }
 
 QColor worldAlertText()

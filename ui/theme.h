@@ -39,6 +39,17 @@ QColor satOverlap();
 QColor alertBackground();
 QColor alertText();
 
+/// Presentation mode (a projector at the back of a bright room): the world's background turns
+/// pure white, its grid and text darker, and every line at least kPresentationMinLinePx wide.
+void setPresentation(bool on);
+bool presentation();
+/// The least width of a line in presentation mode [px]: visible from the back of a room.
+inline constexpr double kPresentationMinLinePx = 3.0;
+/// How much larger text is in presentation mode.
+inline constexpr double kPresentationFontScale = 1.5;
+/// A line drawn `widthPx` wide in the window, as wide as it is drawn now [px].
+double lineWidth(double widthPx);
+
 /// WCAG relative luminance of an sRGB colour, 0 (black) to 1 (white); alpha is ignored.
 double relativeLuminance(const QColor& c);
 /// WCAG contrast ratio of two colours, from 1 (the same) to 21 (black on white).

@@ -6,6 +6,7 @@
 #include "main_window.h"
 #include "plot_widget.h"
 #include "sat_panel.h"
+#include "shipped_lessons.h"
 #include "simulation_controller.h"
 
 #include "rigidlab/lessons/lesson.h"
@@ -20,6 +21,7 @@
 #include "test_main.h"
 
 using namespace rigidlab;
+using rigidlab::test::shippedLessons;
 using rigidlab::ui::MainWindow;
 
 namespace {
@@ -28,15 +30,6 @@ const QStringList kDockNames{QStringLiteral("controls"), QStringLiteral("inspect
                              QStringLiteral("energy"),   QStringLiteral("momentum"),
                              QStringLiteral("drift"),    QStringLiteral("sat"),
                              QStringLiteral("bounces"),  QStringLiteral("collision")};
-
-QStringList shippedLessons()
-{
-    const QDir dir(MainWindow::lessonsFolder());
-    QStringList out;
-    for (const QString& f : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name))
-        out << dir.filePath(f);
-    return out;
-}
 
 } // namespace
 

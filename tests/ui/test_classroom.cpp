@@ -1,0 +1,311 @@
+// The window in a classroom (issue 11): at every projector and laptop size it fits the screen,
+// the world keeps half of the width, every control of every lesson step can be reached, and
+// the lesson panel's texts do not overlap; presentation mode is large and thick enough for the
+// back of a room and gives the layout back when it ends.
+
+#include "lesson_player.h"
+#include "main_window.h"
+#include "plot_widget.h"
+#include "shipped_lessons.h"
+#include "simulation_controller.h"
+#include "theme.h"
+#include "world_view.h"
+
+#include "rigidlab/lessons/lesson.h"
+
+#include <qcustomplot.h>
+
+#include <QAbstractButton>
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QLabel>
+#include <QLineEdit>
+#include <QScrollArea>
+#include <QStatusBar>
+#include <QTableWidget>
+#include <QtTest>
+
+#include "test_main.h"
+
+using namespace rigidlab;
+using rigidlab::test::shippedLessons;
+using rigidlab::ui::MainWindow;
+
+namespace {
+
+bool interactive(const QWidget* w)
+{
+    return qobject_cast<const QAbstractButton*>(w) || qobject_cast<const QLineEdit*>(w) ||
+           qobject_cast<const QComboBox*>(w) || qobject_cast<const QAbstractSlider*>(w) ||
+           qobject_cast<const QAbstractSpinBox*>(w) || qobject_cast<const QTableWidget*>(w);
+}
+
+/// Where `w` can be reached in the window: its own rectangle, or, inside a scroll area, the
+/// part of the scroll area that shows it (scrolling brings it there).
+QRect reachableRect(const QWidget* w, const QWidget* window)
+{
+    for (const QWidget* p = w->parentWidget(); p && p != window; p = p->parentWidget())
+        if (const auto* scroll = qobject_cast<const QScrollArea*>(p))
+            if (scroll->widget() && scroll->widget()->isAncestorOf(w))
+                return QRect(scroll->viewport()->mapTo(window, QPoint(0, 0)),
+                             scroll->viewport()->size());
+    return QRect(w->mapTo(window, QPoint(0, 0)), w->size());
+}
+
+/// Every visible interactive widget of the window lies inside it (scroll areas count as
+/// reachable); returns what does not, described.
+QStringList outside(const MainWindow& window)
+{
+    QStringList out;
+    const QRect inside = window.rect();
+    for (const QWidget* w : window.findChildren<QWidget*>()) {
+        if (!w->isVisible() || !interactive(w) || w->window() != &window)
+            continue;
+        if (w->objectName() == QLatin1String("qt_toolbar_ext_button"))
+            continue;
+        // A dock behind another in a tab group is reached through its tab.
+        bool behindTab = false;
+        for (const QWidget* p = w; p && p != &window; p = p->parentWidget())
+            if (qobject_cast<const QDockWidget*>(p) && p->visibleRegion().isEmpty())
+                behindTab = true;
+        if (behindTab)
+            continue;
+        const QRect r = reachableRect(w, &window);
+        if (r.isEmpty() || !inside.contains(r))
+            out << QStringLiteral("%1 \"%2\" at (%3,%4 %5x%6)")
+                       .arg(QString::fromLatin1(w->metaObject()->className()),
+                            w->property("text").toString())
+                       .arg(r.x())
+                       .arg(r.y())
+                       .arg(r.width())
+                       .arg(r.height());
+    }
+    return out;
+}
+
+/// Pairs of visible text-bearing widgets of the lesson panel that overlap.
+QStringList overlapping(const QWidget& panel)
+{
+    QList<const QWidget*> texts;
+    for (const QWidget* w : panel.findChildren<QWidget*>())
+        if (w->isVisible() &&
+            (qobject_cast<const QLabel*>(w) || qobject_cast<const QAbstractButton*>(w) ||
+             qobject_cast<const QLineEdit*>(w) || qobject_cast<const QComboBox*>(w)))
+            texts << w;
+    QStringList out;
+    for (int i = 0; i < texts.size(); ++i)
+        for (int j = i + 1; j < texts.size(); ++j) {
+            const QWidget* a = texts[i];
+            const QWidget* b = texts[j];
+            if (a->isAncestorOf(b) || b->isAncestorOf(a))
+                continue;
+            const QRect ra(a->mapTo(&panel, QPoint(0, 0)), a->size());
+            const QRect rb(b->mapTo(&panel, QPoint(0, 0)), b->size());
+            if (ra.intersects(rb))
+                out << QStringLiteral("\"%1\" and \"%2\"")
+                           .arg(a->property("text").toString().left(30),
+                                b->property("text").toString().left(30));
+        }
+    return out;
+}
+
+/// The widgets whose minimum size is the largest, for a message.
+QString largestMinimums(const QWidget& window)
+{
+    QList<const QWidget*> all;
+    for (const QWidget* w : window.findChildren<QWidget*>())
+        if (w->isVisible())
+            all << w;
+    std::sort(all.begin(), all.end(), [](const QWidget* a, const QWidget* b) {
+        return a->minimumSizeHint().height() > b->minimumSizeHint().height();
+    });
+    QStringList out;
+    for (int i = 0; i < std::min<qsizetype>(8, all.size()); ++i)
+        out << QStringLiteral("%1(%2) %3x%4")
+                   .arg(QString::fromLatin1(all[i]->metaObject()->className()),
+                        all[i]->objectName())
+                   .arg(all[i]->minimumSizeHint().width())
+                   .arg(all[i]->minimumSizeHint().height());
+    return out.join(QStringLiteral(", "));
+}
+
+struct DockPlace {
+    QString name;
+    bool hidden = false;
+    Qt::DockWidgetArea area = Qt::NoDockWidgetArea;
+    QRect geometry;
+};
+
+QList<DockPlace> dockPlaces(const MainWindow& w)
+{
+    QList<DockPlace> out;
+    for (QDockWidget* d : w.findChildren<QDockWidget*>())
+        out << DockPlace{d->objectName(), d->isHidden(), w.dockWidgetArea(d), d->geometry()};
+    return out;
+}
+
+bool samePlaces(const QList<DockPlace>& a, const QList<DockPlace>& b)
+{
+    constexpr int kSlackPx = 4;
+    if (a.size() != b.size())
+        return false;
+    for (qsizetype i = 0; i < a.size(); ++i) {
+        if (a[i].name != b[i].name || a[i].hidden != b[i].hidden || a[i].area != b[i].area)
+            return false;
+        if (a[i].hidden)
+            continue;
+        const QRect& p = a[i].geometry;
+        const QRect& q = b[i].geometry;
+        if (std::abs(p.x() - q.x()) > kSlackPx || std::abs(p.y() - q.y()) > kSlackPx ||
+            std::abs(p.width() - q.width()) > kSlackPx ||
+            std::abs(p.height() - q.height()) > kSlackPx)
+            return false;
+    }
+    return true;
+}
+
+QString describe(const QList<DockPlace>& now, const QList<DockPlace>& before)
+{
+    QStringList out;
+    for (qsizetype i = 0; i < std::min(now.size(), before.size()); ++i)
+        out << QStringLiteral("%1: %2,%3 %4x%5 (was %6,%7 %8x%9)")
+                   .arg(now[i].name)
+                   .arg(now[i].geometry.x())
+                   .arg(now[i].geometry.y())
+                   .arg(now[i].geometry.width())
+                   .arg(now[i].geometry.height())
+                   .arg(before[i].geometry.x())
+                   .arg(before[i].geometry.y())
+                   .arg(before[i].geometry.width())
+                   .arg(before[i].geometry.height());
+    return out.join(QStringLiteral("; "));
+}
+
+void addSizes()
+{
+    QTest::addColumn<QSize>("screen");
+    QTest::newRow("1024x768") << QSize(1024, 768);
+    QTest::newRow("1280x720") << QSize(1280, 720); // also 1920×1080 at QT_SCALE_FACTOR=1.5
+    QTest::newRow("1366x768") << QSize(1366, 768);
+    QTest::newRow("1920x1080") << QSize(1920, 1080);
+}
+
+/// The window as a screen of that size would show it.
+void showOn(MainWindow& w, const QSize& screen)
+{
+    w.fitToScreen(QRect(QPoint(0, 0), screen));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QCoreApplication::processEvents();
+}
+
+} // namespace
+
+class TestClassroom : public QObject {
+    Q_OBJECT
+private slots:
+    void windowFitsTheScreen_data() { addSizes(); }
+    void windowFitsTheScreen()
+    {
+        QFETCH(QSize, screen);
+        MainWindow w;
+        showOn(w, screen);
+        QTRY_VERIFY2(w.frameGeometry().width() <= screen.width() &&
+                         w.frameGeometry().height() <= screen.height(),
+                     qPrintable(QStringLiteral("%1x%2, at least %3x%4: %5")
+                                    .arg(w.width())
+                                    .arg(w.height())
+                                    .arg(w.minimumSizeHint().width())
+                                    .arg(w.minimumSizeHint().height())
+                                    .arg(largestMinimums(w))));
+        QVERIFY2(
+            w.view().width() >= w.width() / 2,
+            qPrintable(QStringLiteral("world %1 of %2 px").arg(w.view().width()).arg(w.width())));
+        const QStringList out = outside(w);
+        QVERIFY2(out.isEmpty(), qPrintable(out.join(QStringLiteral("; "))));
+        QCOMPARE(w.compactLayout(), screen.width() < 1600 || screen.height() < 1000);
+    }
+
+    void everyLessonStepFits_data()
+    {
+        QTest::addColumn<QSize>("screen");
+        QTest::newRow("1024x768") << QSize(1024, 768);
+        QTest::newRow("1280x720") << QSize(1280, 720);
+    }
+    void everyLessonStepFits()
+    {
+        QFETCH(QSize, screen);
+        const QStringList lessons = shippedLessons();
+        QVERIFY(lessons.size() >= 5);
+        MainWindow w;
+        showOn(w, screen);
+        int steps = 0;
+        for (const QString& path : lessons) {
+            QCOMPARE(w.openLesson(path, true), QString());
+            const int count = static_cast<int>(w.lessonPlayer().lesson()->steps.size());
+            for (int i = 0; i < count; ++i, ++steps) {
+                w.lessonPlayer().goToStep(i);
+                QCoreApplication::processEvents();
+                const QString where =
+                    QStringLiteral("%1 step %2: ").arg(QFileInfo(path).baseName()).arg(i + 1);
+                QVERIFY2(
+                    w.view().width() >= w.width() / 2,
+                    qPrintable(
+                        where +
+                        QStringLiteral("world %1 px of %2").arg(w.view().width()).arg(w.width())));
+                const QStringList out = outside(w);
+                QVERIFY2(out.isEmpty(), qPrintable(where + out.join(QStringLiteral("; "))));
+                const QStringList overlaps = overlapping(w.lessonPlayer());
+                QVERIFY2(overlaps.isEmpty(),
+                         qPrintable(where + overlaps.join(QStringLiteral("; "))));
+            }
+        }
+        QVERIFY(steps >= 20);
+    }
+
+    void presentationModeIsLargeAndRestores()
+    {
+        MainWindow w;
+        showOn(w, QSize(1024, 768));
+        QCOMPARE(w.openScene(MainWindow::scenesFolder() + QStringLiteral("/welcome.json"), true),
+                 QString());
+        for (int i = 0; i < 30; ++i)
+            w.controller().stepForward();
+        const QList<DockPlace> before = dockPlaces(w);
+        const QRect geometry = w.geometry();
+        const QFont font = w.font();
+        w.setPresentation(true);
+        QCoreApplication::processEvents();
+        QVERIFY(w.isFullScreen());
+        QVERIFY(w.font().pointSizeF() >= 1.5 * font.pointSizeF() - 1e-9);
+        QVERIFY(ui::theme::lineWidth(1.0) >= ui::theme::kPresentationMinLinePx);
+        for (int i = 0; i < MainWindow::kPlotCount; ++i) {
+            QCustomPlot* plot = w.plot(i)->plot();
+            QVERIFY(plot->xAxis->labelFont().pointSizeF() >= 18);
+            QVERIFY(plot->yAxis->labelFont().pointSizeF() >= 18);
+            QVERIFY(plot->graphCount() > 0);
+            for (int g = 0; g < plot->graphCount(); ++g)
+                QVERIFY2(plot->graph(g)->pen().widthF() >= 3.0, qPrintable(plot->graph(g)->name()));
+        }
+        // A high-contrast palette: text on the window's background at least 7:1 (WCAG AAA).
+        QVERIFY(ui::theme::contrastRatio(w.palette().color(QPalette::WindowText),
+                                         w.palette().color(QPalette::Window)) >= 7.0);
+        w.setPresentation(false);
+        QCoreApplication::processEvents();
+        QVERIFY(!w.isFullScreen());
+        QVERIFY(!ui::theme::presentation());
+        QCOMPARE(w.font(), font);
+        QTRY_COMPARE(w.geometry(), geometry);
+        // Every dock where it was, as large as it was (to a few pixels: the splitters are
+        // laid out again at the restored size).
+        QTRY_VERIFY2(samePlaces(dockPlaces(w), before),
+                     qPrintable(describe(dockPlaces(w), before)));
+        for (int i = 0; i < MainWindow::kPlotCount; ++i)
+            QVERIFY(w.plot(i)->plot()->xAxis->labelFont().pointSizeF() < 18);
+    }
+};
+
+RIGIDLAB_TEST_MAIN(TestClassroom)
+#include "test_classroom.moc"
