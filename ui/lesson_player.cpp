@@ -9,6 +9,7 @@
 #include <QComboBox>
 #include <QDir>
 #include <QFileInfo>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -68,12 +69,13 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     layout->addWidget(m_text, 1);
     m_questionLayout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_questionBox);
-    auto* buttons = new QHBoxLayout;
-    buttons->addWidget(m_back);
-    buttons->addWidget(m_restart);
-    buttons->addWidget(m_next);
+    // Two buttons a row, so that the panel fits the narrow column of a 1024-pixel projector.
+    auto* buttons = new QGridLayout;
+    buttons->addWidget(m_back, 0, 0);
+    buttons->addWidget(m_next, 0, 1);
+    buttons->addWidget(m_restart, 1, 0);
+    buttons->addWidget(m_export, 1, 1);
     layout->addLayout(buttons);
-    layout->addWidget(m_export);
 
     connect(m_back, &QPushButton::clicked, this, &LessonPlayer::back);
     connect(m_next, &QPushButton::clicked, this, &LessonPlayer::next);

@@ -22,6 +22,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QComboBox>
 #include <QDir>
 #include <QDockWidget>
 #include <QFileDialog>
@@ -297,6 +298,12 @@ void MainWindow::buildDocks()
         if (qobject_cast<PlotWidget*>(w)) {
             dock->setWidget(w);
         } else {
+            // Lists as narrow as a short name: a long entry ("Dormand-Prince 5(4), adaptive")
+            // must not widen the side column on a small projector.
+            for (QComboBox* box : w->findChildren<QComboBox*>()) {
+                box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+                box->setMinimumContentsLength(8);
+            }
             // A panel taller or wider than its dock scrolls instead of being cut.
             auto* scroll = new QScrollArea(dock);
             scroll->setWidgetResizable(true);
@@ -321,8 +328,8 @@ void MainWindow::buildDocks()
     const std::array<QString, kPlotCount> names{
         QStringLiteral("energy"), QStringLiteral("momentum"), QStringLiteral("drift")};
     for (int i = 0; i < kPlotCount; ++i) {
-        // Small enough that three fit beside the world on a 1366×768 screen.
-        m_plots[static_cast<size_t>(i)]->setMinimumSize(220, 150);
+        // Small enough that the plots fit beside the world on a 1024×768 projector.
+        m_plots[static_cast<size_t>(i)]->setMinimumSize(180, 150);
         m_plots[static_cast<size_t>(i)]->setTitleShown(false); // the dock shows it
         addDock(titles[static_cast<size_t>(i)], names[static_cast<size_t>(i)],
                 m_plots[static_cast<size_t>(i)], Qt::RightDockWidgetArea);
@@ -714,7 +721,7 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
             if (!plot)
                 continue;
             plot->setObjectName(name);
-            plot->setMinimumSize(220, 150);
+            plot->setMinimumSize(180, 150);
             plot->setTitleShown(false);
             plot->setPresentation(m_presentation);
             followController(plot);

@@ -34,9 +34,9 @@ constexpr QSize kPreferredSize(1500, 920);
 /// On a screen smaller than this the plots are tabbed rather than stacked [px].
 constexpr QSize kRoomy(1600, 1000);
 /// The share of the window's width each side column takes at most; together they leave the
-/// world at least half.
-constexpr double kLeftShare = 0.25;
-constexpr double kRightShare = 0.23;
+/// world at least half. The lesson's column wins over the plots'.
+constexpr double kLeftShare = 0.27;
+constexpr double kRightShare = 0.19;
 /// The side columns' widths where there is room [px].
 constexpr int kLeftWidth = 400;
 constexpr int kRightWidth = 480;
