@@ -64,7 +64,9 @@ PlotWidget* makeDriftPlot(QWidget* parent)
     auto* plot = new PlotWidget(PlotWidget::tr("Energy drift"), parent);
     // The numerical error alone: the energy that contacts, friction, drag and dampers took is
     // added back, since losing it is physics, not error.
-    plot->setYAxisLabel(PlotWidget::tr("(E + E_dissipated − E₀)/|E₀|"), QStringLiteral("%"));
+    // The axis says what it is in a word (a plot in a narrow column has no room for the
+    // formula, (E + E_dissipated − E₀)/|E₀|, which the README and the lesson give).
+    plot->setYAxisLabel(PlotWidget::tr("drift"), QStringLiteral("%"));
     plot->setValueScale(YAxis::Left, kDriftScalePercent);
     plot->addSeries(PlotWidget::tr("energy drift (numerical error)"), plotColor(3),
                     [](const Sample& s) { return s.driftPercent; });
