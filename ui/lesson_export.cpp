@@ -71,8 +71,7 @@ PlotWidget* makeStepPlot(const lessons::LessonStep& step, const QString& name, Q
             [](const Sample& s, std::size_t i) { return s.variantTotal[i]; }, parent);
     if (name == u"compare-drift")
         return makeComparePlot(
-            step, tr("Energy drift %1").arg(comparedBy(step)),
-            tr("drift (E + E_dissipated − E₀)/|E₀|"), QStringLiteral("%"),
+            step, tr("Energy drift %1").arg(comparedBy(step)), tr("drift"), QStringLiteral("%"),
             [](const Sample& s, std::size_t i) { return s.variantDriftPercent[i]; }, parent);
     return nullptr; // the loader admits no other name
 }
