@@ -4,6 +4,7 @@
 
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -23,9 +24,10 @@ QString heldText()
     return QStringLiteral("?");
 }
 
+/// A table's number as the window's language writes it (a decimal comma in Czech).
 QString num(double v, int digits = 3)
 {
-    return QString::number(v, 'f', digits);
+    return QLocale().toString(v, 'f', digits);
 }
 
 void setCell(QTableWidget* t, int row, int col, const QString& text)

@@ -6,6 +6,7 @@
 
 #include <qcustomplot.h>
 
+#include <QLocale>
 #include <QScopedValueRollback>
 #include <QTimer>
 #include <QToolButton>
@@ -73,6 +74,8 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
 
     const QFont base = font();
     m_plot->setNoAntialiasingOnDrag(true);
+    // Tick labels in the window's language, as the fields and tables are (CSV keeps the point).
+    m_plot->setLocale(QLocale());
 
     // Rows of the layout: title, legend (one line, wrapping), then the axes.
     m_title = new QCPTextElement(m_plot, title, sized(base, kTitlePt, true));

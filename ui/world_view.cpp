@@ -6,6 +6,7 @@
 #include "simulation_controller.h"
 #include "theme.h"
 
+#include <QLocale>
 #include <QMouseEvent>
 #include <QScrollBar>
 #include <QWheelEvent>
@@ -353,8 +354,8 @@ void WorldView::drawForeground(QPainter* painter, const QRectF&)
     QFont f = font();
     f.setPointSizeF(f.pointSizeF() * 1.1);
     painter->setFont(f);
-    const QString label =
-        nice >= 1 ? QStringLiteral("%1 m").arg(nice) : QStringLiteral("%1 cm").arg(nice * 100);
+    const QString label = nice >= 1 ? tr("%1 m").arg(QLocale().toString(nice))
+                                    : tr("%1 cm").arg(QLocale().toString(nice * 100));
     painter->drawText(o + QPoint(len + 8, 5), label);
 
     // Which colour is which world, when worlds are compared; a stopped one says why.
