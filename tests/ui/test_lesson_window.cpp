@@ -36,6 +36,41 @@ const QStringList kDockNames{QStringLiteral("controls"), QStringLiteral("inspect
 class TestLessonWindow : public QObject {
     Q_OBJECT
 private slots:
+    /// The window's Export plots writes what `rigidlab-cli lesson --export` writes for a step
+    /// (test_lesson_export checks the CLI's side): the plots the step names, each as PNG, PDF,
+    /// SVG and CSV, and nothing else.
+    void windowExportsTheStepsOwnPlots()
+    {
+        MainWindow w;
+        w.show();
+        int steps = 0;
+        for (const QString& path : shippedLessons()) {
+            QCOMPARE(w.openLesson(path, true), QString());
+            const lessons::Lesson& lesson = *w.lessonPlayer().lesson();
+            for (int i = 0; i < static_cast<int>(lesson.steps.size()); ++i, ++steps) {
+                w.lessonPlayer().goToStep(i);
+                for (int k = 0; k < 20; ++k)
+                    w.controller().stepForward();
+                QTemporaryDir dir;
+                QVERIFY(dir.isValid());
+                QCOMPARE(w.exportStepPlots(dir.path()), QStringList());
+                QStringList expected;
+                for (const QString& name : lesson.steps[static_cast<size_t>(i)].plots)
+                    for (const char* suffix : {".csv", ".pdf", ".png", ".svg"})
+                        expected << name + QLatin1String(suffix);
+                expected.sort();
+                QStringList written = QDir(dir.path()).entryList(QDir::Files | QDir::Hidden);
+                written.sort();
+                QVERIFY2(written == expected,
+                         qPrintable(QStringLiteral("%1 step %2: wrote %3, the step names %4")
+                                        .arg(QFileInfo(path).baseName())
+                                        .arg(i + 1)
+                                        .arg(written.join(u' '), expected.join(u' '))));
+            }
+        }
+        QVERIFY(steps >= 20);
+    }
+
     void initTestCase()
     {
         QVERIFY2(shippedLessons().size() >= 5, qPrintable(MainWindow::lessonsFolder()));
