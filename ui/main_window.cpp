@@ -628,13 +628,14 @@ QString MainWindow::statusText() const
 
 void MainWindow::updateTimeline()
 {
+    // The label follows the drag too; the slider itself is left to the hand that holds it.
+    const long long lo = m_controller->earliestStep(), hi = m_controller->latestStep();
+    m_timeLabel->setText(tr(" step %1 of %2").arg(m_controller->currentStep()).arg(hi));
     if (m_timeline->isSliderDown())
         return;
     const QSignalBlocker block(m_timeline);
-    const long long lo = m_controller->earliestStep(), hi = m_controller->latestStep();
     m_timeline->setRange(static_cast<int>(lo), static_cast<int>(hi));
     m_timeline->setValue(static_cast<int>(m_controller->currentStep()));
-    m_timeLabel->setText(tr(" step %1 of %2").arg(m_controller->currentStep()).arg(hi));
 }
 
 void MainWindow::restoreSettings()
