@@ -70,12 +70,17 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     m_questionLayout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_questionBox);
     // Two buttons a row, so that the panel fits the narrow column of a 1024-pixel projector.
-    auto* buttons = new QGridLayout;
+    // They are a widget of their own, so that the window can keep them in sight below a
+    // lesson text that scrolls (takeNavigation()).
+    m_navigation = new QWidget(this);
+    m_navigation->setObjectName(QStringLiteral("lessonNavigation"));
+    auto* buttons = new QGridLayout(m_navigation);
+    buttons->setContentsMargins(0, 0, 0, 0);
     buttons->addWidget(m_back, 0, 0);
     buttons->addWidget(m_next, 0, 1);
     buttons->addWidget(m_restart, 1, 0);
     buttons->addWidget(m_export, 1, 1);
-    layout->addLayout(buttons);
+    layout->addWidget(m_navigation);
 
     connect(m_back, &QPushButton::clicked, this, &LessonPlayer::back);
     connect(m_next, &QPushButton::clicked, this, &LessonPlayer::next);
@@ -345,6 +350,13 @@ QString LessonPlayer::result(int question) const
     if (question < 0 || question >= static_cast<int>(m_rows.size()))
         return QString();
     return m_rows[static_cast<size_t>(question)].result->text();
+}
+
+QWidget* LessonPlayer::takeNavigation()
+{
+    layout()->removeWidget(m_navigation);
+    m_navigation->setParent(nullptr);
+    return m_navigation;
 }
 
 } // namespace rigidlab::ui

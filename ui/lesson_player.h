@@ -28,6 +28,10 @@ class LessonPlayer : public QWidget {
 public:
     explicit LessonPlayer(SimulationController& controller, QWidget* parent = nullptr);
 
+    /// Hands the Back / Next / Restart step / Export plots buttons to the caller, to lay out
+    /// where they stay in sight (below a scrolling lesson); the caller owns them then.
+    QWidget* takeNavigation();
+
     /// Lessons found in the shipped lessons folder, by title.
     void scanFolder(const QString& folder);
     /// Opens a lesson; its first step is activated. Returns the error, empty on success.
@@ -83,6 +87,7 @@ private:
     QTextBrowser* m_text;
     QWidget* m_questionBox;
     QVBoxLayout* m_questionLayout;
+    QWidget* m_navigation = nullptr; ///< Back, Next, Restart step, Export plots
     QPushButton* m_back;
     QPushButton* m_restart;
     QPushButton* m_next;

@@ -41,6 +41,7 @@
 #include <QToolBar>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rigidlab::ui {
@@ -315,7 +316,17 @@ void MainWindow::buildDocks()
         m_docks.insert(name, dock);
         return dock;
     };
-    addDock(tr("Lesson"), QStringLiteral("lesson"), m_player, Qt::LeftDockWidgetArea);
+    QDockWidget* lessonDock =
+        addDock(tr("Lesson"), QStringLiteral("lesson"), m_player, Qt::LeftDockWidgetArea);
+    {
+        // Back, Next, Restart and Export stay in sight below the lesson, which scrolls.
+        auto* box = new QWidget(lessonDock);
+        auto* column = new QVBoxLayout(box);
+        column->setContentsMargins(0, 0, 0, 4);
+        column->addWidget(lessonDock->widget(), 1);
+        column->addWidget(m_player->takeNavigation());
+        lessonDock->setWidget(box);
+    }
     addDock(tr("Controls"), QStringLiteral("controls"), m_controls, Qt::LeftDockWidgetArea);
     addDock(tr("Inspector"), QStringLiteral("inspector"), m_inspector, Qt::LeftDockWidgetArea);
     tabifyDockWidget(m_docks.value(QStringLiteral("controls")),
@@ -752,6 +763,16 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
         if (QDockWidget* d = dock(name);
             d && !d->isHidden() && dockWidgetArea(d) == Qt::RightDockWidgetArea)
             right << d;
+    // Where they share tabs, the step's table wins (its numbers are what the questions ask
+    // about), then the controls it tells the student to use, then its plots.
+    const auto rank = [this](QDockWidget* d) {
+        for (const char* table : {"sat", "bounces", "collision"})
+            if (d == m_docks.value(QLatin1String(table)))
+                return 0;
+        return d == m_docks.value(QStringLiteral("controls")) ? 1 : 2;
+    };
+    std::stable_sort(right.begin(), right.end(),
+                     [&](QDockWidget* a, QDockWidget* b) { return rank(a) < rank(b); });
     if (!right.isEmpty())
         right.first()->raise();
     fitSideColumns(width());

@@ -8,9 +8,11 @@
 #include <QMainWindow>
 #include <QMap>
 #include <QPalette>
+#include <QPointer>
 #include <QString>
 
 #include <array>
+#include <utility>
 #include <vector>
 
 class QAction;
@@ -179,6 +181,7 @@ private:
     QByteArray m_normalGeometry; ///< before presentation mode
     QByteArray m_normalState;
     QFont m_normalFont;
+    std::vector<std::pair<QPointer<QWidget>, QFont>> m_explicitFonts; ///< before presentation
     QPalette m_normalPalette;
     QAction* m_presentAction = nullptr;
 };

@@ -97,6 +97,21 @@ void MainWindow::arrangeDocks(const QSize& screen, int windowWidth)
     for (const char* name : {"energy", "momentum", "drift"})
         plots << m_docks.value(QLatin1String(name));
     plots << m_compareDock;
+    // On a small screen the lesson has the left column to itself (its text, questions and
+    // buttons need the height); the controls and the inspector join the plots' tabs.
+    QDockWidget* lesson = m_docks.value(QStringLiteral("lesson"));
+    const QList<QDockWidget*> settings{m_docks.value(QStringLiteral("controls")),
+                                       m_docks.value(QStringLiteral("inspector"))};
+    for (QDockWidget* d : settings)
+        if (dockWidgetArea(d) != (compact ? Qt::RightDockWidgetArea : Qt::LeftDockWidgetArea))
+            addDockWidget(compact ? Qt::RightDockWidgetArea : Qt::LeftDockWidgetArea, d);
+    if (compact) {
+        plots << settings;
+    } else {
+        splitDockWidget(lesson, settings.first(), Qt::Vertical);
+        tabifyDockWidget(settings.first(), settings.last());
+        settings.first()->raise();
+    }
     QList<QDockWidget*> tables;
     for (const char* name : {"sat", "bounces", "collision"})
         tables << m_docks.value(QLatin1String(name));
@@ -104,15 +119,16 @@ void MainWindow::arrangeDocks(const QSize& screen, int windowWidth)
         if (dockWidgetArea(d) != Qt::RightDockWidgetArea)
             addDockWidget(Qt::RightDockWidgetArea, d);
     if (compact) {
-        for (int i = 1; i < plots.size(); ++i)
-            tabifyDockWidget(plots.first(), plots[i]);
+        // One tab group for the right column: the tab a step raises has all the height.
+        for (QDockWidget* d : plots.mid(1) + tables)
+            tabifyDockWidget(plots.first(), d);
     } else {
         for (int i = 1; i < plots.size(); ++i)
             splitDockWidget(plots[i - 1], plots[i], Qt::Vertical);
+        splitDockWidget(plots.last(), tables.first(), Qt::Vertical);
+        for (int i = 1; i < tables.size(); ++i)
+            tabifyDockWidget(tables.first(), tables[i]);
     }
-    splitDockWidget(plots.last(), tables.first(), Qt::Vertical);
-    for (int i = 1; i < tables.size(); ++i)
-        tabifyDockWidget(tables.first(), tables[i]);
     plots.first()->raise();
     fitSideColumns(windowWidth);
 }
@@ -177,6 +193,24 @@ void MainWindow::setPresentation(bool on)
     }
     m_presentation = on;
     theme::setPresentation(on);
+    // Widgets that set a font of their own (the lesson's text, titles, hints) do not follow
+    // the window's: they grow by the same factor, and get their own fonts back afterwards.
+    if (on) {
+        for (QWidget* w : findChildren<QWidget*>()) {
+            if (!w->testAttribute(Qt::WA_SetFont) || qobject_cast<PlotWidget*>(w) ||
+                (w->parentWidget() && qobject_cast<PlotWidget*>(w->parentWidget())))
+                continue;
+            m_explicitFonts.push_back({QPointer<QWidget>(w), w->font()});
+            QFont f = w->font();
+            f.setPointSizeF(f.pointSizeF() * theme::kPresentationFontScale);
+            w->setFont(f);
+        }
+    } else {
+        for (const auto& [widget, font] : m_explicitFonts)
+            if (widget)
+                widget->setFont(font);
+        m_explicitFonts.clear();
+    }
     if (on) {
         QFont f = m_normalFont;
         f.setPointSizeF(f.pointSizeF() * theme::kPresentationFontScale);

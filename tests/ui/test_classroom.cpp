@@ -22,6 +22,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QScrollArea>
 #include <QStatusBar>
 #include <QTableWidget>
@@ -257,6 +258,15 @@ private slots:
                         QStringLiteral("world %1 px of %2").arg(w.view().width()).arg(w.width())));
                 const QStringList out = outside(w);
                 QVERIFY2(out.isEmpty(), qPrintable(where + out.join(QStringLiteral("; "))));
+                // Back, Next, Restart and Export in sight without scrolling.
+                const auto* navigation = w.findChild<QWidget*>(QStringLiteral("lessonNavigation"));
+                QVERIFY(navigation);
+                for (const QPushButton* b : navigation->findChildren<QPushButton*>()) {
+                    const QRect r(b->mapTo(&w, QPoint(0, 0)), b->size());
+                    QVERIFY2(b->isVisible() && w.rect().contains(r) &&
+                                 b->visibleRegion().boundingRect().size() == b->size(),
+                             qPrintable(where + b->text() + QStringLiteral(" is not in sight")));
+                }
                 const QStringList overlaps = overlapping(w.lessonPlayer());
                 QVERIFY2(overlaps.isEmpty(),
                          qPrintable(where + overlaps.join(QStringLiteral("; "))));
