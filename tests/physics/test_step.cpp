@@ -13,6 +13,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <optional>
@@ -196,7 +197,8 @@ void TestStep::directIntegrationIsTheGeneralOneBitForBit()
 
 // A pile of 60 boxes with sleeping on comes to rest and falls asleep: then no contact is
 // solved, nothing is integrated, and a step costs a small part of an awake one. (Times are
-// compared, not bounded, so that a slow machine passes as well.)
+// compared, not bounded, so that a slow machine passes as well; medians, so that a loaded
+// one does.)
 void TestStep::sleepingPileCostsNearlyNothing()
 {
     World asleep = pileScene(60, true);
@@ -208,7 +210,9 @@ void TestStep::sleepingPileCostsNearlyNothing()
     QCOMPARE(asleep.profile().awake, 0);
     QCOMPARE(asleep.profile().asleep, 60);
     QVERIFY(!asleep.contacts().empty());
-    double sleepingMs = 0, awakeMs = 0;
+    // Medians of the per-step times: a step of either that the machine preempted (a test
+    // beside it, a build) must not decide the comparison, as a sum lets it.
+    std::vector<double> sleepingMs, awakeMs;
     for (int i = 0; i < 60; ++i) {
         asleep.step();
         awake.step();
@@ -217,10 +221,14 @@ void TestStep::sleepingPileCostsNearlyNothing()
         QVERIFY(!p.stageRan(Stage::ContactSolve));
         QCOMPARE(p.stage(Stage::ContactSolve), 0.0);
         QCOMPARE(awake.profile().solved, awake.profile().contacts);
-        sleepingMs += p.total;
-        awakeMs += awake.profile().total;
+        sleepingMs.push_back(p.total);
+        awakeMs.push_back(awake.profile().total);
     }
-    RL_VERIFY_AT_MOST(sleepingMs, 0.25 * awakeMs);
+    const auto median = [](std::vector<double> v) {
+        std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    };
+    RL_VERIFY_AT_MOST(median(sleepingMs), 0.25 * median(awakeMs));
     for (const Body& b : asleep.bodies())
         QVERIFY(!b.isActive() && b.velocity == Vec2::Zero() && b.angularVelocity == 0.0);
 }
