@@ -128,6 +128,19 @@ void closeAndRunDeferredDeletes(QWidget* window)
     QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
 }
 
+/// Chooses `path` in a (Qt, not native) file dialog as a user does: types it, whole, into the
+/// file name field. QFileDialog::selectFile() does not write the field while it has the focus,
+/// so whether it took depended on when the dialog's window became active (issue 10: on a
+/// loaded machine the export went to the dialog's default name instead).
+void typeIntoFileDialog(QFileDialog* dialog, const QString& path)
+{
+    auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+    QVERIFY(name);
+    dialog->setDirectory(QFileInfo(path).absolutePath());
+    name->setText(path);
+    QCOMPARE(dialog->selectedFiles().value(0), path);
+}
+
 QAction* findAction(QWidget* root, const QString& menuPath)
 {
     // "File/Export plot/Energy/As PNG…", matched without '&'.
@@ -346,7 +359,7 @@ private slots:
             QVERIFY(dialog);
             closeAndRunDeferredDeletes(w);
             QVERIFY2(w && dialog, "the window was deleted under its open export dialog");
-            dialog->selectFile(path);
+            typeIntoFileDialog(dialog, path);
             static_cast<QDialog*>(dialog)->accept(); // QFileDialog hides it
         });
         exportPng->trigger();
@@ -374,7 +387,7 @@ private slots:
             QVERIFY(dialog);
             closeAndRunDeferredDeletes(w);
             QVERIFY2(w && dialog, "the window was deleted under its open folder dialog");
-            dialog->selectFile(dir.path());
+            typeIntoFileDialog(dialog, dir.path());
             static_cast<QDialog*>(dialog)->accept(); // QFileDialog hides it
         });
         emit w->lessonPlayer().exportRequested();
