@@ -237,8 +237,12 @@ void NumberField::keyPressEvent(QKeyEvent* e)
 
 void NumberField::focusOutEvent(QFocusEvent* e)
 {
-    // A context menu takes focus for a moment; the edit goes on after it.
-    if (e->reason() != Qt::PopupFocusReason && isModified() && !commit()) {
+    // A context menu takes focus for a moment, and another window (or this one closing) takes
+    // it from the whole window: the edit goes on when the focus comes back. Only leaving the
+    // field for another part of the window takes the value.
+    const bool away =
+        e->reason() == Qt::PopupFocusReason || e->reason() == Qt::ActiveWindowFocusReason;
+    if (!away && isModified() && !commit()) {
         // Leaving with a refused value: the value in force comes back, the mark and its
         // message stay until the next edit, so that the refusal is not missed.
         display(m_value);

@@ -207,7 +207,8 @@ bool SatPanel::eventFilter(QObject* watched, QEvent* event)
 {
     // When the view changes size (a dock opens beside it), follow the axis again once the
     // view has handled the resize itself.
-    if (watched == m_view && event->type() == QEvent::Resize)
+    // (Types first: a view being destroyed is no longer a WorldView to compare with.)
+    if (event->type() == QEvent::Resize && watched == static_cast<QObject*>(m_view.data()))
         QMetaObject::invokeMethod(
             this, [this] { followAxis(false); }, Qt::QueuedConnection);
     return QWidget::eventFilter(watched, event);
