@@ -134,28 +134,15 @@ Dissipation Dynamics::dissipation(const Eigen::VectorXd& q, const Eigen::VectorX
     for (const SpringDef& s : m_springs) {
         if (s.damping == 0.0)
             continue;
-        Vec2 pA = s.anchorA, pB = s.anchorB, vA = Vec2::Zero(), vB = Vec2::Zero();
-        Vec2 rA = Vec2::Zero(), rB = Vec2::Zero();
-        if (s.a != kWorld) {
-            const BodyState sa = state(s.a, q, v);
-            rA = lever(s.a, sa.q, s.anchorA);
-            pA = sa.x + rA;
-            vA = sa.v + cross(sa.w, rA);
-        }
-        if (s.b != kWorld) {
-            const BodyState sb = state(s.b, q, v);
-            rB = lever(s.b, sb.q, s.anchorB);
-            pB = sb.x + rB;
-            vB = sb.v + cross(sb.w, rB);
-        }
-        const Vec2 d = pB - pA;
+        const SpringEnds e = springEnds(s, q, v);
+        const Vec2 d = e.pB - e.pA;
         const double length = d.norm();
         if (length <= 1e-12)
             continue; // no force there either (forces.cpp)
         const Vec2 n = d / length;
-        const double rate = (vB - vA).dot(n); // dL/dt [m/s]
-        const Vec2 uA = movingPointVelocity(m_bodies, m_slot, s.a, rA, u);
-        const Vec2 uB = movingPointVelocity(m_bodies, m_slot, s.b, rB, u);
+        const double rate = (e.vB - e.vA).dot(n); // dL/dt [m/s]
+        const Vec2 uA = movingPointVelocity(m_bodies, m_slot, s.a, e.rA, u);
+        const Vec2 uB = movingPointVelocity(m_bodies, m_slot, s.b, e.rB, u);
         p.damping += s.damping * rate * (uB - uA).dot(n);
     }
     return p;

@@ -61,6 +61,16 @@ public:
                             const Eigen::VectorXd& u) const;
 
     BodyState state(BodyId id, const Eigen::VectorXd& q, const Eigen::VectorXd& v) const;
+    /// A spring's two ends at (q, v): lever arms, world points and their velocities (an end
+    /// on the world stays at its anchor, at rest). The force sum and the damper's accounting
+    /// both read the spring through this.
+    struct SpringEnds {
+        Vec2 rA = Vec2::Zero(), rB = Vec2::Zero(); ///< lever arms [m]
+        Vec2 pA = Vec2::Zero(), pB = Vec2::Zero(); ///< world points [m]
+        Vec2 vA = Vec2::Zero(), vB = Vec2::Zero(); ///< their velocities [m/s]
+    };
+    SpringEnds springEnds(const SpringDef& s, const Eigen::VectorXd& q,
+                          const Eigen::VectorXd& v) const;
     /// A body-local anchor (origin frame) as a lever arm from the centre of mass, in the world.
     Vec2 lever(BodyId id, const Rotation& rot, const Vec2& localAnchor) const;
 

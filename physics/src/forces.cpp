@@ -26,6 +26,27 @@ BodyState Dynamics::state(BodyId id, const Eigen::VectorXd& q, const Eigen::Vect
     return st;
 }
 
+Dynamics::SpringEnds Dynamics::springEnds(const SpringDef& s, const Eigen::VectorXd& q,
+                                          const Eigen::VectorXd& v) const
+{
+    SpringEnds e;
+    e.pA = s.anchorA;
+    e.pB = s.anchorB;
+    if (s.a != kWorld) {
+        const BodyState sa = state(s.a, q, v);
+        e.rA = lever(s.a, sa.q, s.anchorA);
+        e.pA = sa.x + e.rA;
+        e.vA = sa.v + cross(sa.w, e.rA);
+    }
+    if (s.b != kWorld) {
+        const BodyState sb = state(s.b, q, v);
+        e.rB = lever(s.b, sb.q, s.anchorB);
+        e.pB = sb.x + e.rB;
+        e.vB = sb.v + cross(sb.w, e.rB);
+    }
+    return e;
+}
+
 Vec2 Dynamics::lever(BodyId id, const Rotation& rot, const Vec2& localAnchor) const
 {
     return rot.apply(localAnchor - m_bodies[static_cast<size_t>(id)].localCenter);
@@ -77,32 +98,19 @@ void Dynamics::appliedAccelerations(const Eigen::VectorXd& q, const Eigen::Vecto
 
     // Springs: F = k (L - L0) + c dL/dt along the line between the anchors, pulling A to B.
     for (const SpringDef& s : m_springs) {
-        BodyState sa, sb;
-        Vec2 rA = Vec2::Zero(), rB = Vec2::Zero();
-        Vec2 pA = s.anchorA, pB = s.anchorB, vA = Vec2::Zero(), vB = Vec2::Zero();
-        if (s.a != kWorld) {
-            sa = state(s.a, q, v);
-            rA = lever(s.a, sa.q, s.anchorA);
-            pA = sa.x + rA;
-            vA = sa.v + cross(sa.w, rA);
-        }
-        if (s.b != kWorld) {
-            sb = state(s.b, q, v);
-            rB = lever(s.b, sb.q, s.anchorB);
-            pB = sb.x + rB;
-            vB = sb.v + cross(sb.w, rB);
-        }
-        const Vec2 d = pB - pA;
+        const SpringEnds e = springEnds(s, q, v);
+        const Vec2 d = e.pB - e.pA;
         const double length = d.norm();
         if (length <= 1e-12)
             continue; // direction undefined; a zero-length spring pulls nowhere
         const Vec2 n = d / length;
-        const double tension = s.stiffness * (length - s.restLength) + s.damping * (vB - vA).dot(n);
+        const double tension =
+            s.stiffness * (length - s.restLength) + s.damping * (e.vB - e.vA).dot(n);
         const Vec2 f = tension * n; // on A, towards B when stretched
         if (s.a != kWorld)
-            addForce(s.a, f, cross(rA, f));
+            addForce(s.a, f, cross(e.rA, f));
         if (s.b != kWorld)
-            addForce(s.b, -f, cross(rB, Vec2(-f)));
+            addForce(s.b, -f, cross(e.rB, Vec2(-f)));
     }
 
     // Mutual gravitation between dynamic bodies, as point masses at their centres.
