@@ -33,6 +33,7 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "run_gui.h"
 #include "test_main.h"
 
 #include <sys/resource.h>
@@ -471,19 +472,7 @@ private slots:
     void commandLineFlags()
     {
         const auto run = [](const QStringList& args, QString& out, QString& err) {
-            QProcess p;
-            QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-            env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-            p.setProcessEnvironment(env);
-            p.start(QStringLiteral(RIGIDLAB_GUI), args);
-            if (!p.waitForFinished(60000)) {
-                p.kill();
-                p.waitForFinished();
-                return -1;
-            }
-            out = QString::fromLocal8Bit(p.readAllStandardOutput());
-            err = QString::fromLocal8Bit(p.readAllStandardError());
-            return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
+            return test::runGui(args, test::offscreenEnvironment(), out, err);
         };
         QString out, err;
         for (const QStringList& bad :

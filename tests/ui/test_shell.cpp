@@ -21,9 +21,11 @@
 #include <QtTest>
 #include <qcustomplot.h>
 
+#include "run_gui.h"
 #include "test_main.h"
 
 using namespace rigidlab;
+using rigidlab::test::runGui;
 using rigidlab::ui::MainWindow;
 
 namespace {
@@ -31,29 +33,6 @@ namespace {
 QString lesson(const char* name)
 {
     return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/") + QLatin1String(name);
-}
-
-/// Runs rigidlab with `args` in `env`; its exit status, or -1 if it crashed or hung.
-int runGui(const QStringList& args, const QProcessEnvironment& env, QString& out, QString& err)
-{
-    QProcess p;
-    p.setProcessEnvironment(env);
-    p.start(QStringLiteral(RIGIDLAB_GUI), args);
-    if (!p.waitForFinished(60000)) {
-        p.kill();
-        p.waitForFinished();
-        return -1;
-    }
-    out = QString::fromLocal8Bit(p.readAllStandardOutput());
-    err = QString::fromLocal8Bit(p.readAllStandardError());
-    return p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1;
-}
-
-QProcessEnvironment offscreen()
-{
-    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-    env.insert(QStringLiteral("QT_QPA_PLATFORM"), QStringLiteral("offscreen"));
-    return env;
 }
 
 /// The keys named in Help › Controls: the bold first cell of each row, split at " or ".
@@ -153,7 +132,7 @@ private slots:
         QFETCH(QStringList, args);
         QFETCH(QString, flag);
         QString out, err;
-        QCOMPARE(runGui(args, offscreen(), out, err), 2);
+        QCOMPARE(runGui(args, test::offscreenEnvironment(), out, err), 2);
         QVERIFY2(err.startsWith(QStringLiteral("rigidlab: ")) && err.contains(flag),
                  qPrintable(err));
         QCOMPARE(err.count(QLatin1Char('\n')), 1); // one line
