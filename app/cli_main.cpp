@@ -1,6 +1,7 @@
 // rigidlab-cli: scenes without a window. Argument handling only; the work is done by
 // rigidlab_lessons (scene_loader, scene_run, sat_report, document).
 
+#include "cli_common.h"
 #include "cli_lesson.h"
 #include "cli_numerics.h"
 #include "rigidlab/lessons/atomic_file.h"
@@ -23,14 +24,7 @@
 namespace {
 
 using namespace rigidlab;
-
-/// Exit statuses, as documented in the usage text.
-enum ExitStatus : int {
-    kExitOk = 0,
-    kExitOutputError = 1,
-    kExitBadInput = 2,
-    kExitNonFinite = 3,
-};
+using namespace rigidlab::cli;
 
 constexpr const char* kUsage = R"(usage: rigidlab-cli COMMAND [ARGS]
 
@@ -85,150 +79,17 @@ than documented.
 Scene format: lessons/SCENE_FORMAT.md.
 )";
 
-void printOut(const QString& text)
-{
-    std::fputs(text.toLocal8Bit().constData(), stdout);
-}
-
-void printErr(const QString& text)
-{
-    std::fputs(text.toLocal8Bit().constData(), stderr);
-}
-
-void printWarnings(const QStringList& warnings)
-{
-    for (const QString& w : warnings) {
-        printErr(QStringLiteral("warning: ") + w + u'\n');
-    }
-}
-
-/// A usage error: one line, a hint, exit status 2.
-int usageError(const QString& what)
-{
-    printErr(QStringLiteral("rigidlab-cli: ") + what +
-             QStringLiteral("\nTry 'rigidlab-cli --help'.\n"));
-    return kExitBadInput;
-}
-
-int inputError(const QString& line)
-{
-    printErr(QStringLiteral("error: ") + line + u'\n');
-    return kExitBadInput;
-}
-
-bool isHelp(const QString& arg)
-{
-    return arg == u"--help" || arg == u"-h";
-}
-
-/// Command-line words after the command, split into options (with their values) and
-/// positional arguments. Accepts `--name value` and `--name=value`.
-class Arguments {
-public:
-    Arguments(QStringList words, QStringList valueOptions)
-        : m_words(std::move(words)), m_valueOptions(std::move(valueOptions))
-    {
-    }
-
-    /// Fills options and positionals; false with `error` set on a malformed command line.
-    bool parse(QString& error)
-    {
-        bool optionsEnded = false;
-        for (qsizetype i = 0; i < m_words.size(); ++i) {
-            const QString& word = m_words[i];
-            if (!optionsEnded && word == u"--") {
-                optionsEnded = true;
-                continue;
-            }
-            if (optionsEnded || !word.startsWith(u'-') || word.size() == 1) {
-                m_positionals.append(word);
-                continue;
-            }
-            QString name = word;
-            std::optional<QString> value;
-            if (const qsizetype eq = word.indexOf(u'='); eq > 0) {
-                name = word.left(eq);
-                value = word.mid(eq + 1);
-            }
-            if (!m_valueOptions.contains(name)) {
-                error = QStringLiteral("unknown option %1").arg(name);
-                return false;
-            }
-            if (!value) {
-                if (i + 1 >= m_words.size()) {
-                    error = QStringLiteral("%1: needs a value").arg(name);
-                    return false;
-                }
-                value = m_words[++i];
-            }
-            for (const auto& [seen, unused] : m_options) {
-                if (seen == name) {
-                    error = QStringLiteral("%1: given twice").arg(name);
-                    return false;
-                }
-            }
-            m_options.emplace_back(name, *value);
-        }
-        return true;
-    }
-
-    std::optional<QString> option(QStringView name) const
-    {
-        for (const auto& [key, value] : m_options) {
-            if (key == name) {
-                return value;
-            }
-        }
-        return std::nullopt;
-    }
-    const QStringList& positionals() const { return m_positionals; }
-
-private:
-    QStringList m_words;
-    QStringList m_valueOptions;
-    std::vector<std::pair<QString, QString>> m_options; // in command-line order
-    QStringList m_positionals;
-};
-
-/// A finite number from an option value, or an error.
-std::optional<double> parseNumber(const QString& name, const QString& text, QString& error)
-{
-    bool ok = false;
-    const double value = text.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(value)) {
-        error = QStringLiteral("%1: must be a finite number, got \"%2\"").arg(name, text);
-        return std::nullopt;
-    }
-    return value;
-}
-
-std::optional<long long> parseWhole(const QString& name, const QString& text, long long min,
-                                    long long max, QString& error)
-{
-    bool ok = false;
-    const long long value = text.trimmed().toLongLong(&ok);
-    if (!ok || value < min || value > max) {
-        error = QStringLiteral("%1: must be a whole number from %2 to %3, got \"%4\"")
-                    .arg(name)
-                    .arg(min)
-                    .arg(max)
-                    .arg(text);
-        return std::nullopt;
-    }
-    return value;
-}
-
 /// Reads the run options; false with `error` set when one is wrong.
-bool readRunOptions(const Arguments& args, lessons::RunOptions& options, QString& error)
+bool readRunOptions(const CommandLine& args, lessons::RunOptions& options, QString& error)
 {
-    const auto time = args.option(u"--time");
-    const auto steps = args.option(u"--steps");
+    const auto time = args.value(QStringLiteral("time"));
+    const auto steps = args.value(QStringLiteral("steps"));
     if (time && steps) {
         error = QStringLiteral("--time and --steps: give one or the other");
         return false;
     }
     if (time) {
-        options.time = parseNumber(QStringLiteral("--time"), *time, error);
+        options.time = finiteNumber(QStringLiteral("--time"), *time, error);
         if (!options.time) {
             return false;
         }
@@ -239,13 +100,13 @@ bool readRunOptions(const Arguments& args, lessons::RunOptions& options, QString
     }
     if (steps) {
         options.steps =
-            parseWhole(QStringLiteral("--steps"), *steps, 0, lessons::kMaxRunSteps, error);
+            wholeNumber(QStringLiteral("--steps"), *steps, 0, lessons::kMaxRunSteps, error);
         if (!options.steps) {
             return false;
         }
     }
-    if (const auto dt = args.option(u"--dt")) {
-        options.dt = parseNumber(QStringLiteral("--dt"), *dt, error);
+    if (const auto dt = args.value(QStringLiteral("dt"))) {
+        options.dt = finiteNumber(QStringLiteral("--dt"), *dt, error);
         if (!options.dt) {
             return false;
         }
@@ -254,15 +115,15 @@ bool readRunOptions(const Arguments& args, lessons::RunOptions& options, QString
             return false;
         }
     }
-    if (const auto every = args.option(u"--every")) {
+    if (const auto every = args.value(QStringLiteral("every"))) {
         const auto k =
-            parseWhole(QStringLiteral("--every"), *every, 1, lessons::kMaxRunSteps, error);
+            wholeNumber(QStringLiteral("--every"), *every, 1, lessons::kMaxRunSteps, error);
         if (!k) {
             return false;
         }
         options.every = *k;
     }
-    if (const auto name = args.option(u"--integrator")) {
+    if (const auto name = args.value(QStringLiteral("integrator"))) {
         options.integrator = physics::integratorFromName(name->toStdString());
         if (!options.integrator) {
             error = QStringLiteral("--integrator: unknown integrator \"%1\" (expected euler, "
@@ -271,7 +132,7 @@ bool readRunOptions(const Arguments& args, lessons::RunOptions& options, QString
             return false;
         }
     }
-    if (const auto name = args.option(u"--solver")) {
+    if (const auto name = args.value(QStringLiteral("solver"))) {
         options.solver = physics::solverFromName(name->toStdString());
         if (!options.solver) {
             error = QStringLiteral("--solver: unknown solver \"%1\" (expected seed-impulse, "
@@ -281,11 +142,11 @@ bool readRunOptions(const Arguments& args, lessons::RunOptions& options, QString
         }
     }
     for (const auto& [flag, path] :
-         {std::pair{QStringView(u"--trace"), &options.tracePath},
-          std::pair{QStringView(u"--diagnostics"), &options.diagnosticsPath}}) {
-        if (const auto value = args.option(flag)) {
+         {std::pair{QStringLiteral("trace"), &options.tracePath},
+          std::pair{QStringLiteral("diagnostics"), &options.diagnosticsPath}}) {
+        if (const auto value = args.value(flag)) {
             if (value->isEmpty()) {
-                error = QStringLiteral("%1: needs a file name").arg(flag);
+                error = QStringLiteral("--%1: needs a file name").arg(flag);
                 return false;
             }
             *path = *value;
@@ -294,39 +155,23 @@ bool readRunOptions(const Arguments& args, lessons::RunOptions& options, QString
     return true;
 }
 
-/// One positional argument, the file, or a usage error.
-std::optional<QString> onlyFile(const Arguments& args, const char* command, QString& error)
+int commandRun(const QStringList& words)
 {
-    if (args.positionals().size() != 1) {
-        error =
-            args.positionals().isEmpty()
-                ? QStringLiteral("%1: which file?").arg(QLatin1StringView(command))
-                : QStringLiteral("%1: one file only, got %2")
-                      .arg(QLatin1StringView(command), QString::number(args.positionals().size()));
-        return std::nullopt;
-    }
-    return args.positionals().front();
-}
-
-int commandRun(const QStringList& allWords)
-{
-    // --profile is a switch, without a value.
-    QStringList words = allWords;
-    const bool profile = words.removeAll(QStringLiteral("--profile")) > 0;
-    Arguments args(words, {QStringLiteral("--time"), QStringLiteral("--steps"),
-                           QStringLiteral("--dt"), QStringLiteral("--integrator"),
-                           QStringLiteral("--solver"), QStringLiteral("--trace"),
-                           QStringLiteral("--diagnostics"), QStringLiteral("--every")});
+    CommandLine args(QStringLiteral("run"));
+    for (const char* name :
+         {"time", "steps", "dt", "integrator", "solver", "trace", "diagnostics", "every"})
+        args.addValue(QLatin1StringView(name));
+    args.addSwitch(QStringLiteral("profile"));
     QString error;
     lessons::RunOptions options;
-    if (!args.parse(error) || !readRunOptions(args, options, error)) {
-        return usageError(QStringLiteral("run: ") + error);
-    }
-    options.profile = profile;
-    const auto path = onlyFile(args, "run", error);
-    if (!path) {
-        return usageError(error);
-    }
+    if (!args.parse(words))
+        return usageError(args.command(), args.error());
+    if (!readRunOptions(args, options, error))
+        return usageError(args.command(), error);
+    options.profile = args.isSet(QStringLiteral("profile"));
+    const auto path = args.onlyFile();
+    if (!path)
+        return usageError(args.command(), args.error());
     const lessons::SceneLoadResult loaded = lessons::loadSceneFile(*path);
     printWarnings(loaded.warnings);
     if (!loaded.ok) {
@@ -341,10 +186,9 @@ int commandRun(const QStringList& allWords)
     case lessons::RunStatus::BadOptions:
         return inputError(report.error);
     case lessons::RunStatus::OutputError:
-        printErr(QStringLiteral("error: ") + report.error + u'\n');
-        return kExitOutputError;
+        return outputError(report.error);
     case lessons::RunStatus::NonFinite:
-        printErr(QStringLiteral("error: ") + report.error + u'\n');
+        inputError(report.error);
         return kExitNonFinite;
     }
     return kExitBadInput;
@@ -352,14 +196,11 @@ int commandRun(const QStringList& allWords)
 
 int commandValidate(const QStringList& words)
 {
-    Arguments args(words, {});
-    QString error;
-    if (!args.parse(error)) {
-        return usageError(QStringLiteral("validate: ") + error);
-    }
-    if (args.positionals().isEmpty()) {
-        return usageError(QStringLiteral("validate: which file?"));
-    }
+    CommandLine args(QStringLiteral("validate"));
+    if (!args.parse(words))
+        return usageError(args.command(), args.error());
+    if (args.positionals().isEmpty())
+        return usageError(args.command(), QStringLiteral("which file?"));
     int status = kExitOk;
     for (const QString& path : args.positionals()) {
         const lessons::DocumentCheck check = lessons::checkDocumentFile(path);
@@ -375,15 +216,12 @@ int commandValidate(const QStringList& words)
 
 int commandSat(const QStringList& words)
 {
-    Arguments args(words, {});
-    QString error;
-    if (!args.parse(error)) {
-        return usageError(QStringLiteral("sat: ") + error);
-    }
-    const auto path = onlyFile(args, "sat", error);
-    if (!path) {
-        return usageError(error);
-    }
+    CommandLine args(QStringLiteral("sat"));
+    if (!args.parse(words))
+        return usageError(args.command(), args.error());
+    const auto path = args.onlyFile();
+    if (!path)
+        return usageError(args.command(), args.error());
     const lessons::SatReport report = lessons::satReportFile(*path);
     printWarnings(report.warnings);
     if (!report.ok) {
@@ -395,34 +233,34 @@ int commandSat(const QStringList& words)
 
 int commandBench(const QStringList& words)
 {
-    Arguments args(words, {QStringLiteral("--scene"), QStringLiteral("--steps"),
-                           QStringLiteral("--runs"), QStringLiteral("--export")});
+    CommandLine args(QStringLiteral("bench"));
+    for (const char* name : {"scene", "steps", "runs", "export"})
+        args.addValue(QLatin1StringView(name));
     QString error;
-    if (!args.parse(error)) {
-        return usageError(QStringLiteral("bench: ") + error);
-    }
-    if (!args.positionals().isEmpty()) {
-        return usageError(QStringLiteral("bench: no files, only options"));
-    }
+    if (!args.parse(words))
+        return usageError(args.command(), args.error());
+    if (!args.positionals().isEmpty())
+        return usageError(args.command(), QStringLiteral("no files, only options"));
     lessons::BenchOptions options;
-    if (const auto steps = args.option(u"--steps")) {
-        const auto n = parseWhole(QStringLiteral("--steps"), *steps, 2, 1'000'000, error);
+    if (const auto steps = args.value(QStringLiteral("steps"))) {
+        const auto n = wholeNumber(QStringLiteral("--steps"), *steps, 2, 1'000'000, error);
         if (!n) {
-            return usageError(QStringLiteral("bench: ") + error);
+            return usageError(args.command(), error);
         }
         options.steps = static_cast<int>(*n);
     }
-    if (const auto runs = args.option(u"--runs")) {
-        const auto n = parseWhole(QStringLiteral("--runs"), *runs, 1, 1000, error);
+    if (const auto runs = args.value(QStringLiteral("runs"))) {
+        const auto n = wholeNumber(QStringLiteral("--runs"), *runs, 1, 1000, error);
         if (!n) {
-            return usageError(QStringLiteral("bench: ") + error);
+            return usageError(args.command(), error);
         }
         options.runs = static_cast<int>(*n);
     }
     std::vector<std::string> names = lessons::benchSceneNames();
-    if (const auto scene = args.option(u"--scene")) {
+    if (const auto scene = args.value(QStringLiteral("scene"))) {
         if (!lessons::makeBenchScene(scene->toStdString())) {
-            return usageError(QStringLiteral("bench: --scene: unknown scene \"%1\" (expected %2)")
+            return usageError(args.command(),
+                              QStringLiteral("--scene: unknown scene \"%1\" (expected %2)")
                                   .arg(*scene, QString::fromStdString([&] {
                                       std::string all;
                                       for (const auto& n : names)
@@ -433,18 +271,16 @@ int commandBench(const QStringList& words)
         names = {scene->toStdString()};
     }
     const lessons::RigidLabBenchSettings settings;
-    if (const auto path = args.option(u"--export")) {
+    if (const auto path = args.value(QStringLiteral("export"))) {
         if (names.size() != 1) {
-            return usageError(QStringLiteral("bench: --export: name one --scene"));
+            return usageError(args.command(), QStringLiteral("--export: name one --scene"));
         }
         const std::string json =
             lessons::benchSceneJson(*lessons::makeBenchScene(names.front()), settings);
         const QString error = lessons::writeFileAtomically(
             *path, QByteArray(json.data(), static_cast<qsizetype>(json.size())));
-        if (!error.isEmpty()) {
-            printErr(QStringLiteral("error: %1\n").arg(error));
-            return kExitOutputError;
-        }
+        if (!error.isEmpty())
+            return outputError(error);
         return kExitOk;
     }
     const auto engine = lessons::makeRigidLabBenchEngine(settings);
@@ -484,6 +320,7 @@ int main(int argc, char* argv[])
         std::fputs(kUsage, stderr);
         return kExitBadInput;
     }
+    const auto isHelp = [](const QString& word) { return word == u"--help" || word == u"-h"; };
     if (words.front() == u"help" || std::any_of(words.cbegin(), words.cend(), isHelp)) {
         std::fputs(kUsage, stdout);
         return kExitOk;
@@ -499,6 +336,5 @@ int main(int argc, char* argv[])
         }
     }
     std::fputs(kUsage, stderr);
-    printErr(QStringLiteral("rigidlab-cli: unknown command \"%1\"\n").arg(name));
-    return kExitBadInput;
+    return usageError(QString(), QStringLiteral("unknown command \"%1\"").arg(name));
 }

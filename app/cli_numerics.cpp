@@ -1,5 +1,7 @@
 #include "cli_numerics.h"
 
+#include "cli_common.h"
+
 #include "work_precision_plot.h"
 
 #include "rigidlab/lessons/atomic_file.h"
@@ -20,78 +22,11 @@ namespace rigidlab::cli {
 
 namespace {
 
-constexpr int kExitOk = 0;
-constexpr int kExitOutputError = 1;
-constexpr int kExitBadInput = 2;
-constexpr int kExitVerdict = 4;
-
-void printErr(const QString& text)
-{
-    std::fputs(text.toLocal8Bit().constData(), stderr);
-}
-
-int usageError(const QString& what)
-{
-    printErr(QStringLiteral("rigidlab-cli: ") + what +
-             QStringLiteral("\nTry 'rigidlab-cli --help'.\n"));
-    return kExitBadInput;
-}
-
-/// `--name value` and `--name=value` options, each at most once; no positionals.
-bool parseOptions(const QStringList& words, const QStringList& known,
-                  std::map<QString, QString>& out, QString& error)
-{
-    for (qsizetype i = 0; i < words.size(); ++i) {
-        QString name = words[i];
-        std::optional<QString> value;
-        if (!name.startsWith(QLatin1String("--"))) {
-            error = QStringLiteral("unexpected argument \"%1\"").arg(name);
-            return false;
-        }
-        if (const qsizetype eq = name.indexOf(u'='); eq > 0) {
-            value = name.mid(eq + 1);
-            name = name.left(eq);
-        }
-        if (!known.contains(name)) {
-            error = QStringLiteral("unknown option %1").arg(name);
-            return false;
-        }
-        if (!value) {
-            if (i + 1 >= words.size()) {
-                error = QStringLiteral("%1: needs a value").arg(name);
-                return false;
-            }
-            value = words[++i];
-        }
-        if (out.count(name)) {
-            error = QStringLiteral("%1: given twice").arg(name);
-            return false;
-        }
-        out[name] = *value;
-    }
-    return true;
-}
-
-std::optional<double> number(const std::map<QString, QString>& o, const QString& name,
-                             QString& error)
-{
-    const auto it = o.find(name);
-    if (it == o.end())
-        return std::nullopt;
-    bool ok = false;
-    const double v = it->second.trimmed().toDouble(&ok);
-    if (!ok || !std::isfinite(v) || v <= 0) {
-        error = QStringLiteral("%1: must be a positive number, got \"%2\"").arg(name, it->second);
-        return std::nullopt;
-    }
-    return v;
-}
-
 bool writeFile(const QString& path, const QByteArray& bytes)
 {
     const QString error = lessons::writeFileAtomically(path, bytes);
     if (!error.isEmpty()) {
-        printErr(QStringLiteral("error: %1\n").arg(error));
+        outputError(error);
         return false;
     }
     return true;
@@ -121,44 +56,54 @@ std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv)
 
 int commandErrorVsTime(const QStringList& words)
 {
-    const QStringList known{"--problem",  "--integrators", "--dt-from", "--dt-to",
-                            "--points",   "--t-end",       "--csv",     "--plot",
-                            "--tol-from", "--tol-to",      "--min-cpu"};
-    std::map<QString, QString> o;
+    CommandLine args(QStringLiteral("error-vs-time"));
+    for (const char* name : {"problem", "integrators", "dt-from", "dt-to", "points", "t-end", "csv",
+                             "plot", "tol-from", "tol-to", "min-cpu"})
+        args.addValue(QLatin1StringView(name));
+    if (!args.parse(words))
+        return usageError(args.command(), args.error());
+    if (!args.positionals().isEmpty())
+        return usageError(args.command(),
+                          QStringLiteral("unexpected argument \"%1\"").arg(args.positionals()[0]));
     QString error;
-    if (!parseOptions(words, known, o, error))
-        return usageError(QStringLiteral("error-vs-time: ") + error);
+    // A positive number from an option, when given.
+    const auto number = [&](const char* name) -> std::optional<double> {
+        const auto text = args.value(QLatin1StringView(name));
+        if (!text || !error.isEmpty())
+            return std::nullopt;
+        return positiveNumber(QStringLiteral("--") + QLatin1StringView(name), *text, error);
+    };
 
     lessons::SweepOptions options;
-    if (o.count("--problem") && o["--problem"] != u"all")
-        options.problems = o["--problem"].split(u',', Qt::SkipEmptyParts);
-    if (o.count("--integrators"))
-        options.integrators = o["--integrators"].split(u',', Qt::SkipEmptyParts);
-    options.dtFrom = number(o, "--dt-from", error);
-    options.dtTo = number(o, "--dt-to", error);
-    options.tEnd = number(o, "--t-end", error);
-    if (const auto t = number(o, "--tol-from", error))
+    if (const auto problem = args.value(QStringLiteral("problem")); problem && *problem != u"all")
+        options.problems = problem->split(u',', Qt::SkipEmptyParts);
+    if (const auto integrators = args.value(QStringLiteral("integrators")))
+        options.integrators = integrators->split(u',', Qt::SkipEmptyParts);
+    options.dtFrom = number("dt-from");
+    options.dtTo = number("dt-to");
+    options.tEnd = number("t-end");
+    if (const auto t = number("tol-from"))
         options.tolFrom = *t;
-    if (const auto t = number(o, "--tol-to", error))
+    if (const auto t = number("tol-to"))
         options.tolTo = *t;
-    if (const auto t = number(o, "--min-cpu", error))
+    if (const auto t = number("min-cpu"))
         options.minTimingSeconds = *t;
-    if (o.count("--points")) {
+    if (const auto points = args.value(QStringLiteral("points")); points && error.isEmpty()) {
         bool ok = false;
-        options.points = o["--points"].toInt(&ok);
+        options.points = points->toInt(&ok);
         if (!ok)
             error = QStringLiteral("--points: must be a whole number");
     }
     if (!error.isEmpty())
-        return usageError(QStringLiteral("error-vs-time: ") + error);
+        return usageError(args.command(), error);
     if (const QString bad = lessons::checkSweepOptions(options); !bad.isEmpty())
-        return usageError(QStringLiteral("error-vs-time: ") + bad);
-    const QString plotPath = o.count("--plot") ? o["--plot"] : QString();
+        return usageError(args.command(), bad);
+    const QString plotPath = args.value(QStringLiteral("plot")).value_or(QString());
     std::optional<ui::ExportFormat> format;
     if (!plotPath.isEmpty()) {
         format = ui::formatFromSuffix(QFileInfo(plotPath).suffix());
         if (!format || *format == ui::ExportFormat::Csv)
-            return usageError(QStringLiteral("error-vs-time: --plot: a .png, .pdf or .svg file"));
+            return usageError(args.command(), QStringLiteral("--plot: a .png, .pdf or .svg file"));
     }
 
     std::printf("%-16s %-18s %12s %9s %11s %11s %11s %11s %11s\n", "problem", "integrator", "dt",
@@ -196,7 +141,8 @@ int commandErrorVsTime(const QStringList& words)
                 "least %d, and until %g s of CPU time were spent on the row).\n",
                 options.minRepeats, options.minTimingSeconds);
 
-    if (o.count("--csv") && !writeFile(o["--csv"], lessons::sweepCsv(rows)))
+    if (const auto csv = args.value(QStringLiteral("csv"));
+        csv && !writeFile(*csv, lessons::sweepCsv(rows)))
         return kExitOutputError;
     if (format) {
         ui::WorkPrecisionPlot plot;
@@ -206,10 +152,8 @@ int commandErrorVsTime(const QStringList& words)
             plot.setProblem(p);
             const QString path = plotPathFor(plotPath, p, problems.size() > 1);
             const ui::ExportResult r = ui::exportPlot(plot, path, *format);
-            if (!r.ok) {
-                printErr(QStringLiteral("error: ") + r.error + u'\n');
-                return kExitOutputError;
-            }
+            if (!r.ok)
+                return outputError(r.error);
             std::printf("wrote %s\n", qPrintable(path));
         }
     }
@@ -218,13 +162,17 @@ int commandErrorVsTime(const QStringList& words)
 
 int commandStress(const QStringList& words)
 {
-    std::map<QString, QString> o;
-    QString error;
-    if (!parseOptions(words, {"--case", "--json"}, o, error))
-        return usageError(QStringLiteral("stress: ") + error);
+    CommandLine args(QStringLiteral("stress"));
+    args.addValue(QStringLiteral("case"));
+    args.addValue(QStringLiteral("json"));
+    if (!args.parse(words))
+        return usageError(args.command(), args.error());
+    if (!args.positionals().isEmpty())
+        return usageError(args.command(),
+                          QStringLiteral("unexpected argument \"%1\"").arg(args.positionals()[0]));
     QString name;
-    if (o.count("--case")) {
-        name = o["--case"];
+    if (const auto chosen = args.value(QStringLiteral("case"))) {
+        name = *chosen;
         if (name == u"list") {
             std::printf("%s\n", qPrintable(lessons::stressCaseNames().join(u'\n')));
             return kExitOk;
@@ -232,7 +180,8 @@ int commandStress(const QStringList& words)
         if (name == u"all")
             name.clear();
         else if (!lessons::stressCaseNames().contains(name))
-            return usageError(QStringLiteral("stress: --case: unknown case \"%1\" (expected %2)")
+            return usageError(args.command(),
+                              QStringLiteral("--case: unknown case \"%1\" (expected %2)")
                                   .arg(name, lessons::stressCaseNames().join(u", ")));
     }
     const std::vector<lessons::StressRow> rows = lessons::runStress(name);
@@ -245,7 +194,8 @@ int commandStress(const QStringList& words)
         unexpected += r.asDocumented() ? 0 : 1;
     }
     std::printf("%zu rows, %d not as documented.\n", rows.size(), unexpected);
-    if (o.count("--json") && !writeFile(o["--json"], lessons::stressJson(rows)))
+    if (const auto json = args.value(QStringLiteral("json"));
+        json && !writeFile(*json, lessons::stressJson(rows)))
         return kExitOutputError;
     return unexpected == 0 ? kExitOk : kExitVerdict;
 }

@@ -145,6 +145,17 @@ void TestCli::usageErrors_data()
                                   << "--dt: given twice";
     QTest::newRow("too-long") << QStringList{"run", ball, "--time", "1e12"}
                               << "is more than 100000000 steps";
+    QTest::newRow("switch-with-value")
+        << QStringList{"run", ball, "--profile=3"} << "run: --profile: takes no value";
+    QTest::newRow("switch-twice") << QStringList{"run", ball, "--profile", "--profile"}
+                                  << "run: --profile: given twice";
+    QTest::newRow("lesson-no-file") << QStringList{"lesson"} << "lesson: which file?";
+    QTest::newRow("lesson-export-no-folder")
+        << QStringList{"lesson", ball, "--export"} << "lesson: --export: needs a value";
+    QTest::newRow("stress-positional")
+        << QStringList{"stress", "pendulum"} << "stress: unexpected argument \"pendulum\"";
+    QTest::newRow("stress-unknown-case")
+        << QStringList{"stress", "--case", "nope"} << "stress: --case: unknown case \"nope\"";
     QTest::newRow("validate-no-file") << QStringList{"validate"} << "validate: which file?";
     QTest::newRow("sat-no-file") << QStringList{"sat"} << "sat: which file?";
 }

@@ -1,0 +1,174 @@
+#include "cli_common.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace rigidlab::cli {
+
+void printOut(const QString& text)
+{
+    std::fputs(text.toLocal8Bit().constData(), stdout);
+}
+
+void printErr(const QString& text)
+{
+    std::fputs(text.toLocal8Bit().constData(), stderr);
+}
+
+void printWarnings(const QStringList& warnings)
+{
+    for (const QString& w : warnings)
+        printErr(QStringLiteral("warning: ") + w + u'\n');
+}
+
+int usageError(const QString& command, const QString& what)
+{
+    const QString where = command.isEmpty() ? QString() : command + QStringLiteral(": ");
+    printErr(QStringLiteral("rigidlab-cli: ") + where + what +
+             QStringLiteral("\nTry 'rigidlab-cli --help'.\n"));
+    return kExitBadInput;
+}
+
+int inputError(const QString& what)
+{
+    printErr(QStringLiteral("error: ") + what + u'\n');
+    return kExitBadInput;
+}
+
+int outputError(const QString& what)
+{
+    printErr(QStringLiteral("error: ") + what + u'\n');
+    return kExitOutputError;
+}
+
+void CommandLine::addValue(const QString& name)
+{
+    m_parser.addOption(QCommandLineOption(name, QString(), QStringLiteral("value")));
+    m_valueNames.append(name);
+}
+
+void CommandLine::addSwitch(const QString& name)
+{
+    m_parser.addOption(QCommandLineOption(name));
+    m_switchNames.append(name);
+}
+
+namespace {
+
+/// The option as the user typed it ("-t", "--colour"), for a name the parser reports.
+QString spelled(const QStringList& words, const QString& name)
+{
+    for (const QString& word : words) {
+        if (word == u"--")
+            break;
+        QString bare = word.section(u'=', 0, 0);
+        while (bare.startsWith(u'-'))
+            bare.remove(0, 1);
+        if (bare == name && word.startsWith(u'-'))
+            return word.section(u'=', 0, 0);
+    }
+    return QStringLiteral("--") + name;
+}
+
+} // namespace
+
+bool CommandLine::parse(const QStringList& words)
+{
+    m_error.clear();
+    // Long names only, with one or two dashes: "-t" is an unknown option, not "t" compacted.
+    m_parser.setSingleDashWordOptionMode(QCommandLineParser::ParseAsLongOptions);
+    // A value option as the last word: said in this tool's words, not the parser's.
+    const qsizetype end = words.indexOf(QStringLiteral("--"));
+    const QStringList options = end < 0 ? words : words.first(end);
+    if (!options.isEmpty()) {
+        const QString last = options.back();
+        for (const QString& name : m_valueNames) {
+            if (last == QStringLiteral("--") + name) {
+                m_error = QStringLiteral("%1: needs a value").arg(last);
+                return false;
+            }
+        }
+    }
+    if (!m_parser.parse(QStringList{QStringLiteral("rigidlab-cli")} + words)) {
+        const QStringList unknown = m_parser.unknownOptionNames();
+        for (const QString& name : m_switchNames) {
+            const QString given = QStringLiteral("--") + name + u'=';
+            if (unknown.isEmpty() &&
+                std::any_of(options.cbegin(), options.cend(),
+                            [&](const QString& w) { return w.startsWith(given); })) {
+                m_error = QStringLiteral("--%1: takes no value").arg(name);
+                return false;
+            }
+        }
+        m_error = unknown.isEmpty()
+                      ? m_parser.errorText()
+                      : QStringLiteral("unknown option %1").arg(spelled(words, unknown.front()));
+        return false;
+    }
+    const QStringList seen = m_parser.optionNames(); // in order, repeats included
+    for (const QString& name : seen) {
+        if (seen.count(name) > 1) {
+            m_error = QStringLiteral("%1: given twice").arg(spelled(words, name));
+            return false;
+        }
+    }
+    return true;
+}
+
+std::optional<QString> CommandLine::value(const QString& name) const
+{
+    if (!m_parser.isSet(name))
+        return std::nullopt;
+    return m_parser.value(name);
+}
+
+std::optional<QString> CommandLine::onlyFile()
+{
+    const QStringList files = positionals();
+    if (files.size() == 1)
+        return files.front();
+    m_error = files.isEmpty() ? QStringLiteral("which file?")
+                              : QStringLiteral("one file only, got %1").arg(files.size());
+    return std::nullopt;
+}
+
+std::optional<double> finiteNumber(const QString& option, const QString& text, QString& error)
+{
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value)) {
+        error = QStringLiteral("%1: must be a finite number, got \"%2\"").arg(option, text);
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::optional<double> positiveNumber(const QString& option, const QString& text, QString& error)
+{
+    bool ok = false;
+    const double value = text.trimmed().toDouble(&ok);
+    if (!ok || !std::isfinite(value) || value <= 0) {
+        error = QStringLiteral("%1: must be a positive number, got \"%2\"").arg(option, text);
+        return std::nullopt;
+    }
+    return value;
+}
+
+std::optional<long long> wholeNumber(const QString& option, const QString& text, long long min,
+                                     long long max, QString& error)
+{
+    bool ok = false;
+    const long long value = text.trimmed().toLongLong(&ok);
+    if (!ok || value < min || value > max) {
+        error = QStringLiteral("%1: must be a whole number from %2 to %3, got \"%4\"")
+                    .arg(option)
+                    .arg(min)
+                    .arg(max)
+                    .arg(text);
+        return std::nullopt;
+    }
+    return value;
+}
+
+} // namespace rigidlab::cli

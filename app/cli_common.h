@@ -1,0 +1,75 @@
+#pragma once
+// What every rigidlab-cli command shares: its exit statuses, how it prints, and how it reads its
+// command line (Qt's QCommandLineParser, one per command, with the messages of one style).
+// Messages stay English: scripts read them.
+
+#include <QCommandLineParser>
+#include <QString>
+#include <QStringList>
+
+#include <optional>
+
+namespace rigidlab::cli {
+
+/// Exit statuses, as documented in the usage text.
+enum ExitStatus : int {
+    kExitOk = 0,
+    kExitOutputError = 1, ///< an output file could not be written
+    kExitBadInput = 2,    ///< bad input or usage
+    kExitNonFinite = 3,   ///< the simulation diverged (nothing written)
+    kExitVerdict = 4,     ///< a stress case ended with another verdict than documented
+};
+
+void printOut(const QString& text);
+void printErr(const QString& text);
+/// Each warning on its own line, "warning: ...", on standard error.
+void printWarnings(const QStringList& warnings);
+
+/// "rigidlab-cli: COMMAND: what" and a hint on standard error; returns kExitBadInput.
+int usageError(const QString& command, const QString& what);
+/// "error: what" on standard error (a file's own problem); returns kExitBadInput.
+int inputError(const QString& what);
+/// "error: what" on standard error (a file could not be written); returns kExitOutputError.
+int outputError(const QString& what);
+
+/// One command's words after its name, read by QCommandLineParser: `--name value` and
+/// `--name=value`, each option at most once, `--` ends the options.
+class CommandLine {
+public:
+    explicit CommandLine(QString command) : m_command(std::move(command)) {}
+
+    /// An option that takes a value.
+    void addValue(const QString& name);
+    /// An option without a value.
+    void addSwitch(const QString& name);
+
+    /// Reads the words; false with error() set when the command line is malformed.
+    bool parse(const QStringList& words);
+    const QString& error() const { return m_error; }
+    const QString& command() const { return m_command; }
+
+    /// The value given for `--name`, or nothing.
+    std::optional<QString> value(const QString& name) const;
+    bool isSet(const QString& name) const { return m_parser.isSet(name); }
+    QStringList positionals() const { return m_parser.positionalArguments(); }
+
+    /// The one file the command works on, or nothing with error() set.
+    std::optional<QString> onlyFile();
+
+private:
+    QString m_command;
+    QCommandLineParser m_parser;
+    QStringList m_valueNames;
+    QStringList m_switchNames;
+    QString m_error;
+};
+
+/// A finite number from an option's text, or nothing with `error` set.
+std::optional<double> finiteNumber(const QString& option, const QString& text, QString& error);
+/// A positive finite number from an option's text, or nothing with `error` set.
+std::optional<double> positiveNumber(const QString& option, const QString& text, QString& error);
+/// A whole number in [min, max] from an option's text, or nothing with `error` set.
+std::optional<long long> wholeNumber(const QString& option, const QString& text, long long min,
+                                     long long max, QString& error);
+
+} // namespace rigidlab::cli
