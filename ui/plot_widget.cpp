@@ -487,6 +487,8 @@ void PlotWidget::rewind(double t)
     updateLatest();
     if (any)
         m_latestT = t; // "now" is the moment gone to, even with no point there
+    // The timeline is where the user looks now: a plot dragged aside follows it again.
+    setFollowing(true);
     m_dirty = true;
 }
 

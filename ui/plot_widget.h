@@ -140,8 +140,8 @@ public:
     void setFollowing(bool following);
 
     /// The timeline went to t [s] (back or forward): the points after t become the ghost,
-    /// drawn faded, or ghost points up to t come back; the time axis follows t. What the
-    /// source holds from before is drained first.
+    /// drawn faded, or ghost points up to t come back; the time axis follows t (a plot
+    /// dragged aside follows again). What the source holds from before is drained first.
     void rewind(double t);
     /// The ghost points of a series: the run's future as it was before rewind().
     std::vector<QPointF> ghostPoints(int series) const;

@@ -184,8 +184,11 @@ void TestPlotReading::scrubBackKeepsPointsAndShowsTheMoment()
     QVERIFY(timeRange(*plot).contains(6.0));
     QVERIFY(!plot->markIsGhost(1)); // the mark at 6 s is on the timeline again
 
-    // Back to the start.
+    // Back to the start, from a plot the user had dragged aside.
+    plot->plot()->xAxis->setRange(6.5, 7.5);
+    QVERIFY(!plot->isFollowing());
     travel(buffer, *plot, 0.0);
+    QVERIFY(plot->isFollowing());
     QCOMPARE(plot->pointCount(0), 1);
     QCOMPARE(static_cast<int>(plot->ghostPoints(0).size()), 8 * 64);
     QVERIFY(timeRange(*plot).contains(0.0));
