@@ -1,5 +1,6 @@
 #include "control_panel.h"
 
+#include "display_names.h"
 #include "number_field.h"
 #include "simulation_controller.h"
 
@@ -25,15 +26,12 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
       m_restitution(new NumberField(this)), m_friction(new NumberField(this)),
       m_gravity(new QCheckBox(tr("on"), this))
 {
-    m_integrator->addItem(tr("Explicit Euler"), int(IntegratorKind::Euler));
-    m_integrator->addItem(tr("Symplectic Euler"), int(IntegratorKind::SymplecticEuler));
-    m_integrator->addItem(tr("Velocity Verlet"), int(IntegratorKind::Verlet));
-    m_integrator->addItem(tr("Runge-Kutta 4"), int(IntegratorKind::RK4));
-    m_integrator->addItem(tr("Dormand-Prince 5(4), adaptive"), int(IntegratorKind::DormandPrince));
-    m_integrator->addItem(tr("Implicit midpoint"), int(IntegratorKind::ImplicitMidpoint));
+    // In words, from the one table of display names; the menus' order is physics'.
+    for (const IntegratorKind kind : physics::kAllIntegrators)
+        m_integrator->addItem(integratorDisplayName(kind), int(kind));
     m_integrator->setToolTip(tr("How positions and velocities are advanced in each step"));
-    m_solver->addItem(tr("Seed impulse"), int(SolverKind::SeedImpulse));
-    m_solver->addItem(tr("Sequential impulse"), int(SolverKind::SequentialImpulse));
+    for (const SolverKind kind : {SolverKind::SeedImpulse, SolverKind::SequentialImpulse})
+        m_solver->addItem(solverDisplayName(kind), int(kind));
     m_solver->setToolTip(tr("Seed impulse: one impulse per contact, once (the paper's method).\n"
                             "Sequential impulse: iterated, clamped, warm started."));
     // Every range is a scene file's (lessons/limits.h): what a file may hold can be typed.

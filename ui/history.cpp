@@ -1,6 +1,9 @@
 #include "history.h"
 
+#include "step_sampler.h"
+
 #include <algorithm>
+#include <limits>
 
 namespace rigidlab::ui {
 
@@ -88,6 +91,12 @@ void History::branchAt(const physics::World& world)
 long long History::earliest() const
 {
     return m_snapshots.empty() ? m_latest : m_snapshots.front().step;
+}
+
+double History::earliestTime() const
+{
+    return m_snapshots.empty() ? std::numeric_limits<double>::quiet_NaN()
+                               : stepTime(m_snapshots.front().world);
 }
 
 const UserInput* History::inputFor(long long step) const

@@ -35,6 +35,8 @@ public:
     /// The earliest and latest steps one can go to.
     long long earliest() const;
     long long latest() const { return m_latest; }
+    /// The time of the earliest step one can go to [s]; NaN before reset().
+    double earliestTime() const;
     /// Restores the world as it was after `step` (clamped to [earliest, latest]).
     physics::World restore(long long step) const;
     /// The input logged for the step that leads to `step + 1`, or nullptr.

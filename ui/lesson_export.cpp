@@ -1,5 +1,6 @@
 #include "lesson_export.h"
 
+#include "display_names.h"
 #include "plot_widget.h"
 #include "step_sampler.h"
 
@@ -19,11 +20,6 @@ namespace {
 QString tr(const char* text)
 {
     return QCoreApplication::translate("rigidlab::ui::lessonExport", text);
-}
-
-QString fromView(std::string_view s)
-{
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
 /// "by integrator" or "by solver".
@@ -46,11 +42,17 @@ PlotWidget* makeComparePlot(const lessons::LessonStep& step, const QString& titl
     const int count = step.compare ? std::min(step.compare->count(), Sample::kMaxVariants) : 0;
     for (int i = 0; i < count; ++i) {
         const auto index = static_cast<std::size_t>(i);
-        plot->addSeries(step.compare->label(i), plotColor(i), [index, value](const Sample& s) {
-            // Samples taken before the worlds were compared leave a gap.
-            return static_cast<int>(index) < s.variants ? value(s, index)
-                                                        : std::numeric_limits<double>::quiet_NaN();
-        });
+        const int series =
+            plot->addSeries(step.compare->label(i), plotColor(i), [index, value](const Sample& s) {
+                // Samples taken before the worlds were compared leave a gap.
+                return static_cast<int>(index) < s.variants
+                           ? value(s, index)
+                           : std::numeric_limits<double>::quiet_NaN();
+            });
+        // The legend in words; the CSV keeps the lesson file's code names as column heads.
+        // Curves that coincide (Verlet under RK4) stay visible: each later one in its own dashes.
+        plot->setSeriesLegend(series, methodDisplayName(step.compare->label(i)));
+        plot->setSeriesPen(series, plotPenStyle(i), plotPenWidthFactor(i, count));
     }
     return plot;
 }
@@ -118,15 +120,15 @@ QString stepCaption(const lessons::Lesson& lesson, int step, const physics::Worl
     if (s.compare && !s.compare->integrators.empty()) {
         QStringList names;
         for (int i = 0; i < s.compare->count(); ++i)
-            names.append(s.compare->label(i));
+            names.append(methodDisplayName(s.compare->label(i)));
         how = tr("integrators %1").arg(names.join(QStringLiteral(", ")));
     } else {
-        how = tr("integrator %1").arg(fromView(physics::integratorName(settings.integrator)));
+        how = tr("integrator %1").arg(integratorDisplayName(settings.integrator));
     }
     if (s.compare && !s.compare->solvers.empty()) {
         QStringList names;
         for (int i = 0; i < s.compare->count(); ++i)
-            names.append(s.compare->label(i));
+            names.append(methodDisplayName(s.compare->label(i)));
         how += tr(" · solvers %1").arg(names.join(QStringLiteral(", ")));
     }
     how += tr(" · dt = %1 s").arg(QString::number(settings.dt, 'g', 6));

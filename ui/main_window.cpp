@@ -2,8 +2,10 @@
 
 #include "about_dialog.h"
 #include "control_panel.h"
+#include "display_names.h"
 #include "divergence_banner.h"
 #include "error_panel.h"
+#include "export_folder.h"
 #include "inspector_panel.h"
 #include "lesson_export.h"
 #include "lesson_panels.h"
@@ -109,10 +111,10 @@ MainWindow::MainWindow(QWidget* parent)
     connect(m_player, &LessonPlayer::exportRequested, this, [this] {
         const ModalScope modal;
         const QString folder = QFileDialog::getExistingDirectory(
-            this, tr("Export the step's plots into"),
-            m_lastFolder.isEmpty() ? QDir::homePath() : m_lastFolder);
+            this, tr("Export the step's plots into"), exportFolder());
         if (folder.isEmpty())
             return;
+        rememberExportFolder(folder);
         const QStringList errors = exportStepPlots(folder);
         if (!errors.isEmpty())
             QMessageBox::warning(this, tr("Export failed"), errors.join(QLatin1Char('\n')));
@@ -163,6 +165,9 @@ void MainWindow::followController(PlotWidget* plot)
     connect(m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
     connect(m_controller, &SimulationController::marked, plot, &PlotWidget::addMark);
     connect(m_controller, &SimulationController::frameAdvanced, plot, &PlotWidget::frameAdvanced);
+    // The plot keeps its points as far back as the timeline goes (going back shows them).
+    connect(m_controller, &SimulationController::worldChanged, plot,
+            [plot, c = m_controller] { plot->setTimelineStart(c->earliestTime()); });
 }
 
 QString MainWindow::scenesFolder()
@@ -278,7 +283,9 @@ void MainWindow::buildActions()
     m_timeline = new QSlider(Qt::Horizontal, timebar);
     m_timeline->setToolTip(tr("Time travel: drag to go back to any moment, then play to go on "
                               "(or change a setting to branch)"));
+    m_timeline->setObjectName(QStringLiteral("timeline"));
     m_timeLabel = new QLabel(timebar);
+    m_timeLabel->setObjectName(QStringLiteral("timelineLabel"));
     m_timeLabel->setMinimumWidth(180);
     timebar->addWidget(new QLabel(tr(" Timeline "), timebar));
     timebar->addWidget(m_timeline);
@@ -517,12 +524,12 @@ void MainWindow::exportPlotDialog(PlotWidget* plot, const QString& format)
 {
     const ModalScope modal;
     const QString suffix = format.toLower();
-    const QString folder = m_lastFolder.isEmpty() ? QDir::homePath() : m_lastFolder;
     const QString path = QFileDialog::getSaveFileName(
-        this, tr("Export plot"), QDir(folder).filePath(QStringLiteral("plot.") + suffix),
+        this, tr("Export plot"), QDir(exportFolder()).filePath(QStringLiteral("plot.") + suffix),
         tr("%1 files (*.%2)").arg(format, suffix));
     if (path.isEmpty())
         return;
+    rememberExportFolder(path);
     const ExportResult r = exportPlot(*plot, path, *formatFromSuffix(suffix));
     if (!r.ok)
         QMessageBox::warning(this, tr("Export failed"), r.error);
@@ -641,7 +648,10 @@ void MainWindow::updateTimeline()
 {
     // The label follows the drag too; the slider itself is left to the hand that holds it.
     const long long lo = m_controller->earliestStep(), hi = m_controller->latestStep();
-    m_timeLabel->setText(tr(" step %1 of %2").arg(m_controller->currentStep()).arg(hi));
+    m_timeLabel->setText(tr(" step %1 of %2 · t = %3 s")
+                             .arg(m_controller->currentStep())
+                             .arg(hi)
+                             .arg(QLocale().toString(m_controller->world().time(), 'f', 3)));
     if (m_timeline->isSliderDown())
         return;
     const QSignalBlocker block(m_timeline);
@@ -700,7 +710,7 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     QStringList labels;
     if (step.compare && step.compare->count() > 1)
         for (int i = 0; i < step.compare->count(); ++i)
-            labels << step.compare->label(i);
+            labels << methodDisplayName(step.compare->label(i));
     m_controller->loadWorlds(step.scene, step.scenePath.isEmpty() ? lesson.path : step.scenePath,
                              std::move(worlds), labels,
                              step.compare ? step.compare->offset : physics::Vec2::Zero());

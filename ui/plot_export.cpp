@@ -47,6 +47,7 @@ public:
         m_plot.setTitleShown(true); // a handout needs its title, and its caption if any
         m_plot.setCaptionShown(true);
         m_plot.fitLegend(size.width());
+        m_plot.fitMarks(size.width());
         m_plot.prepareGraphs(columns);
         m_plot.plot()->setAntialiasedElements(m_antialiased | QCP::aePlottables | QCP::aeItems |
                                               QCP::aeLegendItems | QCP::aeScatters);
@@ -57,6 +58,7 @@ public:
         m_plot.setTitleShown(m_titleShown);
         m_plot.setCaptionShown(m_captionShown);
         m_plot.fitLegend(m_plot.plot()->width());
+        m_plot.fitMarks();
         m_plot.prepareGraphs();
         m_plot.plot()->replot(QCustomPlot::rpQueuedReplot);
     }

@@ -2,6 +2,7 @@
 
 #include "plot_widget.h"
 
+#include "export_folder.h"
 #include "modal_scope.h"
 
 #include <qcustomplot.h>
@@ -13,7 +14,6 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QRegularExpression>
-#include <QStandardPaths>
 
 #include <algorithm>
 #include <utility>
@@ -84,9 +84,7 @@ void PlotWidget::showContextMenu(const QPoint& pos)
 void PlotWidget::exportInteractively(ExportFormat format)
 {
     const ModalScope modal;
-    const QString dir = m_lastExportDir.isEmpty()
-                            ? QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation)
-                            : m_lastExportDir;
+    const QString dir = exportFolder(); // the last one chosen, else the documents folder
     const QString suggested = QDir(dir).filePath(fileStem(title()) + '.' + suffixFor(format));
     QFileDialog dialog(this, tr("Export plot"), suggested, fileFilterFor(format));
     dialog.setAcceptMode(QFileDialog::AcceptSave);
@@ -97,7 +95,7 @@ void PlotWidget::exportInteractively(ExportFormat format)
     // What the user typed wins: "energy.pdf" typed in the PNG dialog is a PDF.
     if (const auto typed = formatFromSuffix(QFileInfo(path).suffix()))
         format = *typed;
-    m_lastExportDir = QFileInfo(path).absolutePath();
+    rememberExportFolder(path);
 
     const ExportResult result = exportPlot(*this, path, format);
     if (!result.ok) {

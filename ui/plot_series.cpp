@@ -26,6 +26,24 @@ bool later(double t, const PlotPoint& p)
     return t < p.t;
 }
 
+bool lowestHighest(const std::vector<PlotPoint>& points, double from, double to, bool positiveOnly,
+                   double& lowest, double& highest, bool found)
+{
+    const auto begin = std::lower_bound(points.begin(), points.end(), from, earlier);
+    const auto end = std::upper_bound(begin, points.end(), to, later);
+    for (auto it = begin; it != end; ++it) {
+        if (!std::isfinite(it->v) || (positiveOnly && !(it->v > 0)))
+            continue;
+        lowest = found ? std::min(lowest, it->v) : it->v;
+        highest = found ? std::max(highest, it->v) : it->v;
+        found = true;
+    }
+    return found;
+}
+
+void drawPoints(const std::vector<PlotPoint>& points, ColumnGraph* graph, double from, double to,
+                int columns, bool logKeys);
+
 } // namespace
 
 PlotSeries::PlotSeries(ColumnGraph* graph, QString name, YAxis axis, SampleValue value)
@@ -63,6 +81,29 @@ void PlotSeries::append(double t, double value, int budget)
         ++m_sinceKept;
         m_lastIsProvisional = true;
     }
+    if (size() > budget)
+        decimate();
+    // The new branch overwrites the old future as far as it has come.
+    if (!m_ghost.empty() && m_ghost.front().t <= t)
+        m_ghost.erase(m_ghost.begin(), std::upper_bound(m_ghost.begin(), m_ghost.end(), t, later));
+}
+
+void PlotSeries::travelTo(double t, int budget)
+{
+    if (!m_points.empty() && t < m_points.back().t) {
+        const auto after = std::upper_bound(m_points.begin(), m_points.end(), t, later);
+        m_ghost.insert(m_ghost.begin(), after, m_points.end());
+        m_points.erase(after, m_points.end());
+    } else if (!m_ghost.empty() && m_ghost.front().t <= t) {
+        const auto upTo = std::upper_bound(m_ghost.begin(), m_ghost.end(), t, later);
+        m_points.insert(m_points.end(), m_ghost.begin(), upTo);
+        m_ghost.erase(m_ghost.begin(), upTo);
+    } else {
+        return;
+    }
+    m_lastIsProvisional = false; // what is left ends on a point that now counts as kept
+    m_sinceKept = 0;
+    afterRemoval(budget);
     if (size() > budget)
         decimate();
 }
@@ -118,8 +159,13 @@ void PlotSeries::removeFrom(double t, int budget)
 void PlotSeries::clear()
 {
     m_points.clear();
+    m_ghost.clear();
     m_graph->data()->clear();
     m_graph->setColumns({});
+    if (m_ghostGraph) {
+        m_ghostGraph->data()->clear();
+        m_ghostGraph->setColumns({});
+    }
     m_stride = 1;
     m_sinceKept = 0;
     m_lastIsProvisional = false;
@@ -136,27 +182,28 @@ void PlotSeries::afterRemoval(int budget)
 bool PlotSeries::valueRange(double from, double to, bool positiveOnly, double& lowest,
                             double& highest) const
 {
-    const auto begin = std::lower_bound(m_points.begin(), m_points.end(), from, earlier);
-    const auto end = std::upper_bound(begin, m_points.end(), to, later);
-    bool found = false;
-    for (auto it = begin; it != end; ++it) {
-        if (!std::isfinite(it->v) || (positiveOnly && !(it->v > 0)))
-            continue;
-        lowest = found ? std::min(lowest, it->v) : it->v;
-        highest = found ? std::max(highest, it->v) : it->v;
-        found = true;
-    }
-    return found;
+    const bool found = lowestHighest(m_points, from, to, positiveOnly, lowest, highest, false);
+    return lowestHighest(m_ghost, from, to, positiveOnly, lowest, highest, found);
 }
 
 void PlotSeries::draw(double from, double to, int columns, bool logKeys) const
 {
+    drawPoints(m_points, m_graph, from, to, columns, logKeys);
+    if (m_ghostGraph)
+        drawPoints(m_ghost, m_ghostGraph, from, to, columns, logKeys);
+}
+
+namespace {
+
+void drawPoints(const std::vector<PlotPoint>& points, ColumnGraph* graph, double from, double to,
+                int columns, bool logKeys)
+{
     // The points in range, and one on either side so that the line reaches the edges.
-    auto begin = std::lower_bound(m_points.begin(), m_points.end(), from, earlier);
-    auto end = std::upper_bound(begin, m_points.end(), to, later);
-    if (begin != m_points.begin())
+    auto begin = std::lower_bound(points.begin(), points.end(), from, earlier);
+    auto end = std::upper_bound(begin, points.end(), to, later);
+    if (begin != points.begin())
         --begin;
-    if (end != m_points.end())
+    if (end != points.end())
         ++end;
     const auto count = static_cast<std::size_t>(end - begin);
     columns = std::max(columns, 1);
@@ -170,8 +217,8 @@ void PlotSeries::draw(double from, double to, int columns, bool logKeys) const
         drawn.reserve(static_cast<qsizetype>(count));
         for (auto it = begin; it != end; ++it)
             drawn.append(QCPGraphData(it->t, it->v));
-        m_graph->data()->set(drawn, true);
-        m_graph->setColumns({});
+        graph->data()->set(drawn, true);
+        graph->setColumns({});
         return;
     }
 
@@ -228,8 +275,10 @@ void PlotSeries::draw(double from, double to, int columns, bool logKeys) const
             highest = it;
     }
     flush();
-    m_graph->data()->set(drawn, true);
-    m_graph->setColumns(std::move(dense));
+    graph->data()->set(drawn, true);
+    graph->setColumns(std::move(dense));
 }
+
+} // namespace
 
 } // namespace rigidlab::ui

@@ -26,7 +26,6 @@ constexpr double kCaptionPt = 10;
 constexpr double kAxisLabelPt = 12;
 constexpr double kTickLabelPt = 11;
 constexpr double kLegendPt = 11;
-constexpr double kMarkLabelPt = 10;
 constexpr double kLineWidthPx = 2.0;
 /// Presentation mode (theme.h): axis labels readable from the back of a room on a 1024×768
 /// projector, ticks and legend a little smaller.
@@ -45,8 +44,8 @@ constexpr double kMinWholeRunSpan = 1e-3;
 constexpr int kFrameSlackMs = 8;
 /// Pixel columns assumed for a plot that was never laid out.
 constexpr int kDefaultColumns = 800;
-
-const QColor kInk(0x20, 0x20, 0x20);
+/// Opacity of the ghost: the run's future before the timeline went back.
+constexpr double kGhostAlpha = 0.4;
 
 QFont sized(const QFont& base, double pointSize, bool bold = false)
 {
@@ -255,7 +254,16 @@ int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::S
         m_plot->yAxis2->setVisible(true);
         m_plot->yAxis2->setTickLabels(true);
     }
+    // The run's future before the timeline went back: the same colour, faded, dotted, and
+    // not in the legend (it is that series, as it was).
+    auto* ghost = new ColumnGraph(m_plot->xAxis, axisFor(axis)); // owned by m_plot
+    QColor faded = color;
+    faded.setAlphaF(kGhostAlpha);
+    ghost->setPen(QPen(faded, theme::lineWidth(kLineWidthPx), Qt::DotLine));
+    ghost->setName(tr("%1 (before going back)").arg(graph->name()));
+    ghost->removeFromLegend();
     m_series.emplace_back(graph, name, axis, std::move(value));
+    m_series.back().setGhostGraph(ghost);
     fitLegend(m_plot->width());
     return seriesCount() - 1;
 }
@@ -292,6 +300,26 @@ void PlotWidget::fitLegend(int widthPx)
         legend->setWrap(columns);
         legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
     }
+}
+
+void PlotWidget::setSeriesLegend(int series, const QString& legend)
+{
+    const PlotSeries& s = m_series.at(series);
+    s.graph()->setName(s.axis() == YAxis::Right ? tr("%1 (right axis)").arg(legend) : legend);
+    fitLegend(m_plot->width());
+    requestReplot();
+}
+
+void PlotWidget::setSeriesPen(int series, Qt::PenStyle style, double widthFactor)
+{
+    PlotSeries& s = m_series.at(series);
+    QPen pen = s.graph()->pen();
+    const double plain = pen.widthF() / s.widthFactor();
+    s.setWidthFactor(std::isfinite(widthFactor) && widthFactor > 0 ? widthFactor : 1.0);
+    pen.setStyle(style);
+    pen.setWidthF(plain * s.widthFactor());
+    s.graph()->setPen(pen);
+    requestReplot();
 }
 
 QCPGraph* PlotWidget::graph(int series) const
@@ -343,6 +371,7 @@ void PlotWidget::appendPoint(int series, double t, double value)
         updateLatest();
     }
     appendTo(s, t, value);
+    overwriteGhostMarks(t);
     trimToWindow();
 }
 
@@ -372,6 +401,17 @@ void PlotWidget::frameAdvanced()
 int PlotWidget::drain()
 {
     m_sinceDrain.start();
+    const int taken = takeSamples();
+    if (m_dirty) {
+        m_dirty = false;
+        updateRanges();
+        requestReplot();
+    }
+    return taken;
+}
+
+int PlotWidget::takeSamples()
+{
     int taken = 0;
     if (m_source) {
         const std::vector<Sample> samples = m_source->readSince(m_cursor);
@@ -383,6 +423,7 @@ int PlotWidget::drain()
             for (PlotSeries& series : m_series)
                 if (series.isFedBySamples())
                     appendTo(series, s.t, series.valueOf(s));
+            overwriteGhostMarks(s.t);
             m_lastSampleT = s.t;
             ++taken;
         }
@@ -396,11 +437,6 @@ int PlotWidget::drain()
             trimToWindow();
         }
     }
-    if (m_dirty) {
-        m_dirty = false;
-        updateRanges();
-        requestReplot();
-    }
     return taken;
 }
 
@@ -410,25 +446,12 @@ void PlotWidget::dropFrom(double t)
         if (!series.isEmpty())
             series.removeFrom(t, m_pointBudget);
     // A mark exactly at t belongs to the new branch of the run (set, then stepped from t).
-    while (!m_marks.empty() && m_marks.back().t > t)
-        removeMark(m_marks.size() - 1);
+    // Ghost marks stay until the run passes them (overwriteGhostMarks).
+    for (std::size_t i = m_marks.size(); i-- > 0;)
+        if (m_marks[i].t > t && !m_marks[i].ghost)
+            removeMark(i);
     m_lastSampleT.reset();
     updateLatest();
-    m_dirty = true;
-}
-
-void PlotWidget::rewind(double t)
-{
-    if (!std::isfinite(t))
-        return;
-    for (PlotSeries& series : m_series)
-        series.removeAfter(t, m_pointBudget);
-    while (!m_marks.empty() && m_marks.back().t > t)
-        removeMark(m_marks.size() - 1);
-    if (m_lastSampleT && *m_lastSampleT > t)
-        m_lastSampleT = t;
-    if (m_latestT && *m_latestT > t)
-        m_latestT = t; // "now" is where the run stepped back to, even with no point there
     m_dirty = true;
 }
 
@@ -458,13 +481,27 @@ void PlotWidget::trimToWindow()
 {
     if (m_rangeMode != RangeMode::Window || !m_latestT)
         return;
-    double cutoff = *m_latestT - m_windowSeconds * (1 + kWindowMargin);
+    const double windowCutoff = *m_latestT - m_windowSeconds * (1 + kWindowMargin);
+    double cutoff = windowCutoff;
+    // As far back as the timeline goes, so that going back finds the points there; but no
+    // more than half the point budget, so that the window itself is never thinned.
+    if (m_timelineStart)
+        cutoff = std::min(cutoff, *m_timelineStart);
+    double keepFloor = windowCutoff; // the budget rule cuts no further than this
     // While paused, what the user is looking at stays; the point budget still bounds it.
-    if (!m_following)
+    if (!m_following) {
         cutoff = std::min(cutoff, m_plot->xAxis->range().lower);
-    for (PlotSeries& series : m_series)
-        if (!series.isEmpty() && series.firstKey() < cutoff)
-            series.removeBefore(cutoff, m_pointBudget);
+        keepFloor = std::min(keepFloor, m_plot->xAxis->range().lower);
+    }
+    const auto half = static_cast<std::size_t>(m_pointBudget / 2);
+    for (PlotSeries& series : m_series) {
+        double own = cutoff;
+        if (m_timelineStart && series.points().size() > half)
+            own = std::min(keepFloor,
+                           std::max(own, series.points()[series.points().size() - half].t));
+        if (!series.isEmpty() && series.firstKey() < own)
+            series.removeBefore(own, m_pointBudget);
+    }
     while (!m_marks.empty() && m_marks.front().t < cutoff)
         removeMark(0);
 }
@@ -527,19 +564,37 @@ void PlotWidget::updateRanges()
     for (const PlotSeries& series : m_series)
         if (!series.isEmpty())
             first = std::min(first, series.firstKey());
+    const std::optional<double> ghost = ghostEnd();
 
     if (m_rangeMode == RangeMode::Window) {
-        // Until a whole window has run, the run starts at the left edge.
-        const double right = std::max(*m_latestT, first + m_windowSeconds);
-        m_plot->xAxis->setRange(right, m_windowSeconds, Qt::AlignRight);
+        // Gone back on the timeline: the moment chosen, and a little of the old future after
+        // it. Until a whole window has run, the axis fits the run, from the left edge.
+        double end = *m_latestT;
+        if (ghost)
+            end = std::max(end, std::min(*ghost, end + kGhostLookahead * m_windowSeconds));
+        // The span is the whole run's, the old future's too: scrubbing does not zoom.
+        const double span = timeSpan(std::max(end, ghost.value_or(end)) - first);
+        m_plot->xAxis->setRange(std::max(end, first + span), span, Qt::AlignRight);
     } else if (m_plot->xAxis->scaleType() == QCPAxis::stLogarithmic) {
         // A log axis (work against precision): a third of a decade beyond the points.
         m_plot->xAxis->setRange(first / 2, *m_latestT * 2);
     } else {
-        m_plot->xAxis->setRange(first, first + std::max(*m_latestT - first, kMinWholeRunSpan));
+        const double end = std::max(*m_latestT, ghost.value_or(*m_latestT));
+        m_plot->xAxis->setRange(first, first + std::max(end - first, kMinWholeRunSpan));
     }
     fitValueAxis(YAxis::Left);
     fitValueAxis(YAxis::Right);
+}
+
+double PlotWidget::timeSpan(double run) const
+{
+    if (!(run < m_windowSeconds))
+        return m_windowSeconds;
+    // Rounded up to a twentieth-ish round step: the axis grows in small jumps, and the run
+    // fills at least 19/20 of it.
+    const double step = niceStep(std::max(run, kMinTimeSpan), 20);
+    const double rounded = std::ceil(run / step - 1e-9) * step;
+    return std::clamp(rounded, std::min(kMinTimeSpan, m_windowSeconds), m_windowSeconds);
 }
 
 void PlotWidget::fitValueAxis(YAxis axis)
@@ -578,8 +633,10 @@ void PlotWidget::prepareGraphs(int columns)
         columns = m_plot->width() > 0 ? m_plot->width() : kDefaultColumns;
     const QCPRange keys = m_plot->xAxis->range();
     const bool log = m_plot->xAxis->scaleType() == QCPAxis::stLogarithmic;
-    for (const PlotSeries& series : m_series)
+    for (const PlotSeries& series : m_series) {
+        series.ghostGraph()->setVisible(series.graph()->visible());
         series.draw(keys.lower, keys.upper, columns, log);
+    }
 }
 
 void PlotWidget::requestReplot()
@@ -604,6 +661,7 @@ void PlotWidget::resizeEvent(QResizeEvent* event)
     QWidget::resizeEvent(event);
     placeFollowButton();
     fitLegend(m_plot->width());
+    fitMarks();
 }
 
 void PlotWidget::placeFollowButton()
@@ -611,76 +669,6 @@ void PlotWidget::placeFollowButton()
     m_followButton->adjustSize();
     const int margin = 6;
     m_followButton->move(width() - m_followButton->width() - margin, margin);
-}
-
-void PlotWidget::addMark(double t, const QString& label)
-{
-    if (!std::isfinite(t))
-        return;
-    Mark mark;
-    mark.t = t;
-
-    // x in time, y as a fraction of the axis rect: the line spans the plot at any zoom.
-    mark.line = new QCPItemLine(m_plot);
-    for (QCPItemPosition* end : {mark.line->start, mark.line->end}) {
-        end->setAxes(m_plot->xAxis, m_plot->yAxis);
-        end->setAxisRect(m_plot->axisRect());
-        end->setTypeX(QCPItemPosition::ptPlotCoords);
-        end->setTypeY(QCPItemPosition::ptAxisRectRatio);
-    }
-    mark.line->start->setCoords(t, 0);
-    mark.line->end->setCoords(t, 1);
-    mark.line->setPen(QPen(QColor(0x60, 0x60, 0x60), 1.5, Qt::DashLine));
-
-    // The label sits in a strip above the axis rect, where it hides no curve; outside the
-    // axis rect it is not clipped, so updateMarkLabels() hides it when its line is out of view.
-    mark.label = new QCPItemText(m_plot);
-    mark.label->setClipToAxisRect(false);
-    mark.label->position->setAxes(m_plot->xAxis, m_plot->yAxis);
-    mark.label->position->setAxisRect(m_plot->axisRect());
-    mark.label->position->setTypeX(QCPItemPosition::ptPlotCoords);
-    mark.label->position->setTypeY(QCPItemPosition::ptAxisRectRatio);
-    mark.label->position->setCoords(t, 0);
-    mark.label->setPadding(QMargins(3, 0, 3, 1));
-    mark.label->setFont(sized(font(), kMarkLabelPt));
-    mark.label->setColor(kInk);
-    mark.label->setText(label);
-
-    const auto at = std::upper_bound(m_marks.begin(), m_marks.end(), t,
-                                     [](double time, const Mark& m) { return time < m.t; });
-    m_marks.insert(at, mark);
-    while (m_marks.size() > static_cast<std::size_t>(kMaxMarks))
-        removeMark(0);
-    trimToWindow();
-    updateMarkLabels();
-    m_dirty = true;
-}
-
-void PlotWidget::updateMarkLabels()
-{
-    // Room above the axis rect for the labels, only while there are marks.
-    const int strip = m_marks.empty() ? 0 : QFontMetrics(sized(font(), kMarkLabelPt)).height() + 4;
-    // And room on the right for the last tick label of the time axis.
-    m_plot->axisRect()->setMinimumMargins(QMargins(0, strip, kRightMarginPx, 0));
-
-    const QCPRange range = m_plot->xAxis->range();
-    for (const Mark& mark : m_marks) {
-        mark.label->setVisible(range.contains(mark.t));
-        // Near the right edge the label reads leftwards from its line, so it is not cut off.
-        const bool nearRight = mark.t > range.lower + 0.8 * range.size();
-        mark.label->setPositionAlignment((nearRight ? Qt::AlignRight : Qt::AlignLeft) |
-                                         Qt::AlignBottom);
-    }
-}
-
-void PlotWidget::removeMark(std::size_t index)
-{
-    m_plot->removeItem(m_marks[index].line);
-    m_plot->removeItem(m_marks[index].label);
-    m_marks.erase(m_marks.begin() + static_cast<std::ptrdiff_t>(index));
-    if (m_marks.empty())
-        updateMarkLabels();
-    m_dirty = true;
 }
 
 void PlotWidget::setPresentation(bool on)
@@ -696,10 +684,14 @@ void PlotWidget::setPresentation(bool on)
         axisPen.setWidthF(on ? 2.0 : 1.0);
         axis->setBasePen(axisPen);
     }
-    for (int i = 0; i < m_plot->graphCount(); ++i) {
-        QPen pen = m_plot->graph(i)->pen();
-        pen.setWidthF(on ? theme::lineWidth(kLineWidthPx) : kLineWidthPx);
-        m_plot->graph(i)->setPen(pen);
+    for (const PlotSeries& series : m_series) {
+        for (QCPGraph* g : {static_cast<QCPGraph*>(series.graph()),
+                            static_cast<QCPGraph*>(series.ghostGraph())}) {
+            QPen pen = g->pen();
+            pen.setWidthF((on ? theme::lineWidth(kLineWidthPx) : kLineWidthPx) *
+                          series.widthFactor());
+            g->setPen(pen);
+        }
     }
     m_plot->replot(QCustomPlot::rpQueuedReplot);
 }

@@ -12,6 +12,15 @@
 // than the window (plus a margin) are dropped; in both modes a series that grows past the
 // point budget is thinned. Dragging or zooming the plot pauses following the run (data keeps
 // arriving); "Follow" (button, double-click, context menu) resumes it.
+//
+// While the run is shorter than the window, the time axis fits it (rounded up a little, at
+// least kMinTimeSpan): a lesson step of 3 s is drawn across the plot, not in its first third.
+// Then the axis scrolls.
+//
+// Time travel (rewind) keeps the points: those up to the chosen moment are drawn as usual, the
+// axis follows that moment, and the run's future as it was stays drawn faded and dotted (the
+// "ghost", see PlotSeries) until the run, going on from there, overwrites it. A mark in that
+// future is faded too, and goes when the new branch passes it.
 
 #include "plot_export.h"
 #include "plot_series.h"
@@ -54,6 +63,11 @@ public:
     static constexpr int kMaxMarks = 50;                  ///< vertical marks kept at most
     static constexpr double kDefaultWindowSeconds = 10.0; ///< [s]
     static constexpr int kRefreshIntervalMs = 33;         ///< drain and replot at ~30 Hz
+    /// The shortest time axis while the run is shorter than the window [s].
+    static constexpr double kMinTimeSpan = 1.0;
+    /// After going back on the timeline, this fraction of the window shows what came after
+    /// the chosen moment (the ghost), where there is any.
+    static constexpr double kGhostLookahead = 0.25;
 
     explicit PlotWidget(const QString& title, QWidget* parent = nullptr);
     ~PlotWidget() override;
@@ -93,6 +107,11 @@ public:
     void appendPoint(int series, double t, double value);
 
     int seriesCount() const { return static_cast<int>(m_series.size()); }
+    /// The series' name in the legend (the CSV keeps the name it was added with).
+    void setSeriesLegend(int series, const QString& legend);
+    /// Draws a series in this pen style, its line `widthFactor` times as wide as the others
+    /// (its colour stays), on screen, in presentation mode and in exports.
+    void setSeriesPen(int series, Qt::PenStyle style, double widthFactor = 1.0);
     /// The graph that draws a series, for styling (pen, scatter); owned by plot().
     QCPGraph* graph(int series) const;
     QString seriesName(int series) const;
@@ -120,8 +139,16 @@ public:
     bool isFollowing() const { return m_following; }
     void setFollowing(bool following);
 
-    /// Time travel stepped back to t [s]: drops the points and marks after t.
+    /// The timeline went to t [s] (back or forward): the points after t become the ghost,
+    /// drawn faded, or ghost points up to t come back; the time axis follows t (a plot
+    /// dragged aside follows again). What the source holds from before is drained first.
     void rewind(double t);
+    /// The ghost points of a series: the run's future as it was before rewind().
+    std::vector<QPointF> ghostPoints(int series) const;
+    /// The earliest time the timeline can go back to [s]: window mode keeps the points from
+    /// there on (within the point budget), so that going back shows them. NaN (the default)
+    /// keeps only the window.
+    void setTimelineStart(double t);
     /// New scene or reset: drops all points and marks, keeps the series, follows again.
     void clear();
     /// A dashed vertical line at t [s] with a short label ("RK4", "dt = 5 ms"), where the
@@ -129,6 +156,20 @@ public:
     /// kMaxMarks are kept.
     void addMark(double t, const QString& label);
     int markCount() const { return static_cast<int>(m_marks.size()); }
+    /// The label drawn for the index-th mark (oldest first); hidden where merged into a
+    /// neighbour's or out of view.
+    QCPItemText* markLabel(int index) const
+    {
+        return m_marks.at(static_cast<std::size_t>(index)).label;
+    }
+    /// Whether the index-th mark lies in the ghost (after the moment gone back to).
+    bool markIsGhost(int index) const { return m_marks.at(static_cast<std::size_t>(index)).ghost; }
+    /// Stacks and merges the marks' labels for a plot `widthPx` wide (the widget's width on
+    /// screen; the export's while exporting). Labels that would overlap go on rows above one
+    /// another (at most kMarkRows); marks closer than kMergePx share one label.
+    void fitMarks(int widthPx = 0);
+    static constexpr int kMarkRows = 3;
+    static constexpr double kMergePx = 6.0;
 
     /// The underlying plot, for export and styling. It stays owned by this widget.
     QCustomPlot* plot() const { return m_plot; }
@@ -167,6 +208,8 @@ protected:
 private:
     struct Mark {
         double t = 0;                 ///< [s]
+        QString text;                 ///< its own label, before merging
+        bool ghost = false;           ///< after the moment the timeline went back to
         QCPItemLine* line = nullptr;  ///< owned by m_plot
         QCPItemText* label = nullptr; ///< owned by m_plot
     };
@@ -174,6 +217,10 @@ private:
     int addGraph(const QString& name, const QColor& color, PlotSeries::SampleValue value,
                  YAxis axis);
     void appendTo(PlotSeries& series, double t, double value);
+    int takeSamples(); // from the source, without updating the view
+    std::optional<double> ghostEnd() const;
+    void overwriteGhostMarks(double t); // the new branch reached t: older ghost marks go
+    void styleMark(const Mark& mark);
     void dropFrom(double t); // the run went back to t: drop points at and after t
     void trimToWindow();
     void updateLatest();
@@ -182,6 +229,7 @@ private:
     void requestReplot();
     void removeMark(std::size_t index);
     void updateMarkLabels();
+    double timeSpan(double run) const; // the time axis for a run this long in window mode
     void placeFollowButton();
     void showContextMenu(const QPoint& pos);
     void onRangeChanged();
@@ -207,8 +255,10 @@ private:
 
     const SampleBuffer* m_source = nullptr;
     std::uint64_t m_cursor = 0;
-    std::optional<double> m_lastSampleT; ///< [s] time of the last sample drained
-    std::optional<double> m_latestT;     ///< [s] latest time over all series
+    std::optional<double> m_lastSampleT;   ///< [s] time of the last sample drained
+    std::optional<double> m_latestT;       ///< [s] latest time over all series
+    std::optional<double> m_timelineStart; ///< [s] see setTimelineStart()
+    int m_markStrip = 0;                   ///< [px] room above the axis rect for mark labels
 
     RangeMode m_rangeMode = RangeMode::Window;
     double m_windowSeconds = kDefaultWindowSeconds; ///< [s]
@@ -218,7 +268,6 @@ private:
     bool m_dirty = false;         ///< data changed since the last view update
     bool m_settingRanges = false; ///< our own range changes do not pause following
     bool m_replotWhenShown = false;
-    QString m_lastExportDir;
 };
 
 // The plots of the lab window and their palette (standard_plots.cpp).
@@ -226,6 +275,12 @@ private:
 /// A colour for the index-th curve from a palette told apart with any colour vision (it
 /// cycles after 7): one energy curve per integrator, say.
 QColor plotColor(int index);
+/// A pen style for the index-th of curves that may coincide: solid, dashed, dotted, ... (it
+/// cycles after 5), so that a curve drawn over another leaves it visible.
+Qt::PenStyle plotPenStyle(int index);
+/// How much wider than a plain curve the index-th of `count` curves that may coincide is
+/// drawn: the first widest, the last plain, so that each shows around the ones drawn over it.
+double plotPenWidthFactor(int index, int count);
 
 /// A drift is relative to |E0|: what it is worth is all of it, 100 % (a drift below 1e-7 %
 /// is rounding noise).

@@ -1,5 +1,6 @@
 #include "simulation_controller.h"
 
+#include "display_names.h"
 #include "step_sampler.h"
 
 #include "rigidlab/lessons/limits.h"
@@ -336,8 +337,7 @@ void SimulationController::setIntegrator(physics::IntegratorKind kind)
     if (kind == m_world.def().integrator)
         return;
     m_world.setIntegrator(kind);
-    afterEdit(QString::fromLatin1(physics::integratorName(kind).data(),
-                                  static_cast<qsizetype>(physics::integratorName(kind).size())));
+    afterEdit(integratorDisplayName(kind));
 }
 
 void SimulationController::setSolver(physics::SolverKind kind)
@@ -345,8 +345,7 @@ void SimulationController::setSolver(physics::SolverKind kind)
     if (kind == m_world.def().solver)
         return;
     m_world.setSolver(kind);
-    afterEdit(QString::fromLatin1(physics::solverName(kind).data(),
-                                  static_cast<qsizetype>(physics::solverName(kind).size())));
+    afterEdit(solverDisplayName(kind));
 }
 
 void SimulationController::setIterations(int iterations)

@@ -93,6 +93,8 @@ public:
     /// The most the time-travel snapshots may take [bytes] (96 MiB unless set).
     void setHistoryBudget(std::size_t bytes) { m_history.setBudget(bytes); }
     long long latestStep() const { return m_history.latest(); }
+    /// The time of earliestStep() [s]: the plots keep their points from there.
+    double earliestTime() const { return m_history.earliestTime(); }
     long long currentStep() const { return m_world.stepCount(); }
 
     // Dragging a body: a stiff, critically damped spring from a point of the body to the

@@ -202,16 +202,16 @@ void TestLessonExport::folderNamesAndCaptions()
     const std::vector<physics::World> worlds = lessons::buildStepWorlds(drift.steps[0]);
     QCOMPARE(ui::stepCaption(drift, 0, worlds[0].def()),
              QStringLiteral("Energy drift: four ways to take a step, step 1: Four integrators, "
-                            "one spring\nintegrators euler, symplectic-euler, verlet, rk4 · "
-                            "dt = 0.01 s"));
+                            "one spring\nintegrators Explicit Euler, Symplectic Euler, "
+                            "Velocity Verlet, Runge–Kutta 4 · dt = 0.01 s"));
     const lessons::Lesson stacks = lesson("stacks");
     QCOMPARE(ui::stepCaption(stacks, 1, lessons::buildStepWorlds(stacks.steps[1])[0].def()),
              QStringLiteral("Why stacks jitter, step 2: Sequential impulses and warm starting\n"
-                            "integrator symplectic-euler · dt = 0.001 s"));
+                            "integrator Symplectic Euler · dt = 0.001 s"));
     QCOMPARE(ui::stepCaption(stacks, 0, lessons::buildStepWorlds(stacks.steps[0])[0].def()),
              QStringLiteral("Why stacks jitter, step 1: Two stacks side by side\n"
-                            "integrator symplectic-euler · solvers seed-impulse, "
-                            "sequential-impulse · dt = 0.001 s"));
+                            "integrator Symplectic Euler · solvers Seed impulse, "
+                            "Sequential impulse · dt = 0.001 s"));
 }
 
 void TestLessonExport::captionOnlyInExports()

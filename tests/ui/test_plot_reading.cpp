@@ -1,0 +1,649 @@
+// Plots that tell the truth (issue 12): going back on the timeline keeps the plots up to the
+// moment chosen and branches them when the run goes on; a short run gets a short time axis;
+// legends in words, and curves that coincide all visible, in the window and in exports; the
+// labels of marks close together stacked or merged; exports start in the documents folder and
+// remember the last one chosen.
+#include "display_names.h"
+#include "export_folder.h"
+#include "lesson_export.h"
+#include "lesson_player.h"
+#include "main_window.h"
+#include "plot_export.h"
+#include "plot_widget.h"
+#include "sample_buffer.h"
+#include "simulation_controller.h"
+
+#include "rigidlab/lessons/lesson.h"
+
+#include <qcustomplot.h>
+
+#include <QApplication>
+#include <QFileDialog>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSettings>
+#include <QSlider>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+#include <QTimer>
+#include <QtTest>
+
+#include "test_main.h"
+
+#include <cmath>
+#include <memory>
+
+using namespace rigidlab;
+using namespace rigidlab::ui;
+
+namespace {
+
+constexpr double kDt = 1.0 / 64; // [s] between samples, exact in binary
+
+Sample sampleAt(double t)
+{
+    Sample s;
+    s.t = t;
+    s.kinetic = 1.5 + std::sin(t);
+    s.potential = 2.25 - std::sin(t);
+    s.total = s.kinetic + s.potential;
+    s.px = 0.5 * t;
+    s.py = 1.0 - 0.25 * t;
+    s.angularMomentum = 0.1 + t * t;
+    s.driftPercent = 1e-3 * t;
+    return s;
+}
+
+/// Samples t = first, first + kDt, ..., up to and with last, drained as they come.
+void feed(SampleBuffer& buffer, PlotWidget& plot, double first, double last)
+{
+    for (int i = 0; first + i * kDt <= last + 1e-12; ++i) {
+        buffer.push(sampleAt(first + i * kDt));
+        if (i % 256 == 255)
+            plot.drain();
+    }
+    plot.drain();
+}
+
+/// What SimulationController::seek does: the plots are told, then a sample at t follows.
+void travel(SampleBuffer& buffer, PlotWidget& plot, double t)
+{
+    plot.rewind(t);
+    buffer.push(sampleAt(t));
+    plot.drain();
+}
+
+QCPRange timeRange(const PlotWidget& plot)
+{
+    return plot.plot()->xAxis->range();
+}
+
+QString lessonPath(const char* name)
+{
+    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/%1.json").arg(QLatin1String(name));
+}
+
+/// Pixels of the image within `tolerance` of `color` in every channel.
+int pixelsOf(const QImage& image, const QColor& color, int tolerance = 40)
+{
+    int n = 0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            const QColor c = image.pixelColor(x, y);
+            if (std::abs(c.red() - color.red()) <= tolerance &&
+                std::abs(c.green() - color.green()) <= tolerance &&
+                std::abs(c.blue() - color.blue()) <= tolerance)
+                ++n;
+        }
+    return n;
+}
+
+/// The rectangle a mark's label takes on screen [px].
+QRectF labelRect(const QCPItemText* label)
+{
+    return QRectF(label->topLeft->pixelPosition(), label->bottomRight->pixelPosition());
+}
+
+/// Answers the next modal file dialog: records where it opened, then chooses `choose` (a
+/// file or folder name typed into its name field), or cancels if empty.
+void answerFileDialog(QString* openedIn, const QString& choose)
+{
+    QTimer::singleShot(0, [openedIn, choose] {
+        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+        if (!dialog) {
+            answerFileDialog(openedIn, choose); // not shown yet
+            return;
+        }
+        *openedIn = dialog->directory().absolutePath();
+        if (choose.isEmpty()) {
+            dialog->reject();
+            return;
+        }
+        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
+        if (name)
+            name->setText(choose);
+        static_cast<QDialog*>(dialog)->accept(); // as its Save or Choose button
+    });
+}
+
+} // namespace
+
+class TestPlotReading : public QObject {
+    Q_OBJECT
+private slots:
+    void scrubBackKeepsPointsAndShowsTheMoment();
+    void playingOnBranchesAfterThePoint();
+    void scrubBackReachesAsFarAsTheTimeline();
+    void ghostIsDrawnFadedOutsideTheLegend();
+    void windowTimelineFollowsTheScrub();
+    void shortRunGetsShortAxis_data();
+    void shortRunGetsShortAxis();
+    void namesInWords();
+    void comparedCurvesStayVisible();
+    void closeMarksStack();
+    void coincidingMarksMerge();
+    void exportFolderDefaultsAndRemembers();
+    void plotExportDialogStartsThere();
+    void lessonExportDialogStartsThere();
+};
+
+void TestPlotReading::scrubBackKeepsPointsAndShowsTheMoment()
+{
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 8.0);
+    plot->addMark(2.0, QStringLiteral("dt = 5 ms"));
+    plot->addMark(6.0, QStringLiteral("RK4"));
+
+    travel(buffer, *plot, 4.0);
+    for (int s = 0; s < plot->seriesCount(); ++s) {
+        const std::vector<QPointF> pts = plot->points(s);
+        QCOMPARE(pts.front().x(), 0.0);
+        QCOMPARE(pts.back().x(), 4.0);
+        QCOMPARE(static_cast<int>(pts.size()), 4 * 64 + 1);
+        // What came after is kept, as the ghost.
+        const std::vector<QPointF> ghost = plot->ghostPoints(s);
+        QCOMPARE(ghost.front().x(), 4.0 + kDt);
+        QCOMPARE(ghost.back().x(), 8.0);
+    }
+    QCOMPARE(plot->points(2).back().y(), sampleAt(4.0).total);
+    const QCPRange range = timeRange(*plot);
+    QVERIFY2(range.lower <= 4.0 && 4.0 < range.upper,
+             qPrintable(QStringLiteral("%1 .. %2").arg(range.lower).arg(range.upper)));
+    QVERIFY(range.upper <= 8.0); // the whole run, shorter than the window: its old future too
+    QCOMPARE(plot->markCount(), 2);
+    QVERIFY(!plot->markIsGhost(0));
+    QVERIFY(plot->markIsGhost(1));
+
+    // Forward again along the same timeline: the ghost points are points again.
+    travel(buffer, *plot, 6.0);
+    QCOMPARE(plot->points(0).back().x(), 6.0);
+    QCOMPARE(static_cast<int>(plot->points(0).size()), 6 * 64 + 1);
+    QCOMPARE(plot->ghostPoints(0).front().x(), 6.0 + kDt);
+    QVERIFY(timeRange(*plot).contains(6.0));
+    QVERIFY(!plot->markIsGhost(1)); // the mark at 6 s is on the timeline again
+
+    // Back to the start, from a plot the user had dragged aside.
+    plot->plot()->xAxis->setRange(6.5, 7.5);
+    QVERIFY(!plot->isFollowing());
+    travel(buffer, *plot, 0.0);
+    QVERIFY(plot->isFollowing());
+    QCOMPARE(plot->pointCount(0), 1);
+    QCOMPARE(static_cast<int>(plot->ghostPoints(0).size()), 8 * 64);
+    QVERIFY(timeRange(*plot).contains(0.0));
+}
+
+void TestPlotReading::playingOnBranchesAfterThePoint()
+{
+    std::unique_ptr<PlotWidget> plot(makeDriftPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 8.0);
+    plot->addMark(6.0, QStringLiteral("RK4"));
+    travel(buffer, *plot, 3.0);
+
+    // The run goes on from 3 s: the new points come after the branch point, evenly.
+    feed(buffer, *plot, 3.0 + kDt, 5.0);
+    std::vector<QPointF> pts = plot->points(0);
+    QCOMPARE(pts.back().x(), 5.0);
+    QCOMPARE(static_cast<int>(pts.size()), 5 * 64 + 1);
+    for (std::size_t k = 1; k < pts.size(); ++k)
+        QCOMPARE(pts[k].x() - pts[k - 1].x(), kDt);
+    // The old future is overwritten as far as the new branch has come, and drawn beyond it.
+    QCOMPARE(plot->ghostPoints(0).front().x(), 5.0 + kDt);
+    QCOMPARE(plot->markCount(), 1); // the mark at 6 s is still ahead
+    QVERIFY(timeRange(*plot).contains(5.0));
+
+    feed(buffer, *plot, 5.0 + kDt, 7.0);
+    QCOMPARE(plot->markCount(), 0); // passed by a run that did not make that change
+    QCOMPARE(plot->ghostPoints(0).front().x(), 7.0 + kDt);
+    feed(buffer, *plot, 7.0 + kDt, 9.0);
+    QVERIFY(plot->ghostPoints(0).empty());
+    QCOMPARE(plot->points(0).back().x(), 9.0);
+    QCOMPARE(timeRange(*plot).upper, 9.0);
+}
+
+void TestPlotReading::scrubBackReachesAsFarAsTheTimeline()
+{
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    plot->setTimelineStart(0.0);
+    feed(buffer, *plot, 0.0, 40.0); // four windows
+    QCOMPARE(plot->points(0).front().x(), 0.0);
+
+    travel(buffer, *plot, 5.0);
+    QCOMPARE(plot->points(0).front().x(), 0.0);
+    QCOMPARE(plot->points(0).back().x(), 5.0);
+    QCOMPARE(timeRange(*plot).lower, 0.0);
+    QVERIFY(timeRange(*plot).contains(5.0));
+    QCOMPARE(timeRange(*plot).size(), plot->windowSeconds());
+
+    travel(buffer, *plot, 25.0);
+    QCOMPARE(timeRange(*plot).size(), plot->windowSeconds());
+    QVERIFY(timeRange(*plot).contains(25.0));
+    QVERIFY(timeRange(*plot).upper < 40.0);
+
+    // Once the timeline forgets its start, so does the plot (a window and its margin kept).
+    plot->setTimelineStart(20.0);
+    feed(buffer, *plot, 25.0 + kDt, 35.0);
+    QVERIFY(plot->points(0).front().x() >= 20.0 - 1e-9);
+    QVERIFY(plot->points(0).front().x() < 24.0);
+
+    // A timeline longer than half the point budget: the oldest go, the window is not thinned.
+    std::unique_ptr<PlotWidget> small(makeEnergyPlot(nullptr));
+    SampleBuffer smallBuffer;
+    small->setSource(&smallBuffer);
+    small->setPointBudget(2000); // half of it: 15.6 s at 64 Hz, more than the window
+    small->setTimelineStart(0.0);
+    feed(smallBuffer, *small, 0.0, 60.0); // 3841 samples
+    const std::vector<QPointF> pts = small->points(0);
+    QVERIFY2(pts.size() <= 1001 && pts.size() >= 900, qPrintable(QString::number(pts.size())));
+    QCOMPARE(pts.back().x(), 60.0);
+    for (std::size_t k = 1; k < pts.size(); ++k)
+        QCOMPARE(pts[k].x() - pts[k - 1].x(), kDt);
+}
+
+void TestPlotReading::ghostIsDrawnFadedOutsideTheLegend()
+{
+    std::unique_ptr<PlotWidget> plot(makeMomentumPlot(nullptr));
+    plot->setRangeMode(RangeMode::WholeRun);
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 4.0);
+    const int legendItems = plot->plot()->legend->itemCount();
+    travel(buffer, *plot, 2.0);
+    QCOMPARE(timeRange(*plot).lower, 0.0);
+    QCOMPARE(timeRange(*plot).upper, 4.0); // the whole run, its old future too
+    plot->prepareGraphs(400);
+
+    QCustomPlot* qcp = plot->plot();
+    QCOMPARE(qcp->graphCount(), 2 * plot->seriesCount());
+    QCOMPARE(qcp->legend->itemCount(), legendItems);
+    int ghosts = 0;
+    for (int s = 0; s < plot->seriesCount(); ++s) {
+        QCPGraph* own = plot->graph(s);
+        for (int g = 0; g < qcp->graphCount(); ++g) {
+            QCPGraph* other = qcp->graph(g);
+            if (other == own || other->pen().color().rgb() != own->pen().color().rgb())
+                continue;
+            // Same colour, fainter, dotted; holding the points after 2 s.
+            QVERIFY(other->pen().color().alphaF() < 0.6);
+            QCOMPARE(other->pen().style(), Qt::DotLine);
+            QVERIFY(!qcp->legend->hasItemWithPlottable(other));
+            QVERIFY(!other->data()->isEmpty());
+            QVERIFY(other->data()->constBegin()->key > 2.0);
+            QVERIFY((own->data()->constEnd() - 1)->key <= 2.0);
+            ++ghosts;
+        }
+    }
+    QCOMPARE(ghosts, plot->seriesCount());
+
+    plot->clear();
+    QVERIFY(plot->ghostPoints(0).empty());
+}
+
+void TestPlotReading::windowTimelineFollowsTheScrub()
+{
+    // The window as wired: dragging the timeline back keeps each plot up to the chosen step,
+    // the label says the step, and playing on appends after it.
+    ui::MainWindow w;
+    QCOMPARE(
+        w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/ball_drop.json"), true),
+        QString());
+    SimulationController& c = w.controller();
+    for (int i = 0; i < 600; ++i)
+        c.stepForward();
+    PlotWidget* energy = w.plot(0);
+    energy->drain();
+    const double end = c.world().time();
+    QVERIFY(end > 0.5);
+    QCOMPARE(energy->points(0).back().x(), end);
+
+    auto* timeline = w.findChild<QSlider*>(QStringLiteral("timeline"));
+    auto* label = w.findChild<QLabel*>(QStringLiteral("timelineLabel"));
+    QVERIFY(timeline && label);
+    const int target = 250;
+    timeline->setSliderDown(true); // a hand on it
+    timeline->setValue(target);
+    timeline->setSliderDown(false);
+    QCOMPARE(c.currentStep(), target);
+    QVERIFY2(label->text().contains(QStringLiteral("step %1 ").arg(target)),
+             qPrintable(label->text()));
+    QVERIFY2(label->text().contains(QLocale().toString(c.world().time(), 'f', 3)),
+             qPrintable(label->text()));
+
+    const double chosen = c.world().time();
+    QVERIFY(chosen < end);
+    energy->drain();
+    for (int i = 0; i < MainWindow::kPlotCount; ++i) {
+        PlotWidget* plot = w.plot(i);
+        plot->drain();
+        QVERIFY(plot->points(0).front().x() < 0.05); // from the start of the run
+        QCOMPARE(plot->points(0).back().x(), chosen);
+        QVERIFY(plot->pointCount(0) > 50);
+        QVERIFY(!plot->ghostPoints(0).empty());
+        QVERIFY2(timeRange(*plot).contains(chosen), qPrintable(QString::number(i)));
+    }
+
+    // Play on from there: the new points come after the branch point.
+    for (int i = 0; i < 40; ++i)
+        c.stepForward();
+    energy->drain();
+    const std::vector<QPointF> pts = energy->points(0);
+    QCOMPARE(pts.back().x(), c.world().time());
+    QVERIFY(pts.back().x() > chosen);
+    for (std::size_t k = 1; k < pts.size(); ++k)
+        QVERIFY(pts[k].x() > pts[k - 1].x());
+    QVERIFY(!energy->ghostPoints(0).empty()); // the rest of the old future, faded
+    QVERIFY(energy->ghostPoints(0).front().x() > pts.back().x());
+    QVERIFY(timeRange(*energy).contains(c.world().time()));
+}
+
+void TestPlotReading::shortRunGetsShortAxis_data()
+{
+    QTest::addColumn<double>("run"); // [s]
+    QTest::newRow("1 s") << 1.0;
+    QTest::newRow("3 s") << 3.0;
+    QTest::newRow("4.75 s") << 4.75;
+    QTest::newRow("9 s") << 9.0;
+}
+
+void TestPlotReading::shortRunGetsShortAxis()
+{
+    QFETCH(double, run);
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, run);
+    const QCPRange range = timeRange(*plot);
+    QCOMPARE(range.lower, 0.0);
+    // The run fills the axis (within a round step), not the first part of a 10 s window.
+    QVERIFY2(range.upper >= run && range.upper <= run * 1.1 + 1e-9,
+             qPrintable(QStringLiteral("%1 .. %2").arg(range.lower).arg(range.upper)));
+    QVERIFY(range.upper <= plot->windowSeconds());
+
+    // It grows to the window, then scrolls.
+    feed(buffer, *plot, run + kDt, 15.0);
+    QCOMPARE(timeRange(*plot).size(), plot->windowSeconds());
+    QCOMPARE(timeRange(*plot).upper, 15.0);
+}
+
+void TestPlotReading::namesInWords()
+{
+    QCOMPARE(integratorDisplayName(physics::IntegratorKind::SymplecticEuler),
+             QStringLiteral("Symplectic Euler"));
+    QCOMPARE(methodDisplayName(QStringLiteral("rk4")), QStringLiteral("Runge–Kutta 4"));
+    QCOMPARE(methodDisplayName(QStringLiteral("verlet")), QStringLiteral("Velocity Verlet"));
+    QCOMPARE(methodDisplayName(QStringLiteral("euler")), QStringLiteral("Explicit Euler"));
+    QCOMPARE(methodDisplayName(QStringLiteral("sequential-impulse")),
+             QStringLiteral("Sequential impulse"));
+    QCOMPARE(methodDisplayName(QStringLiteral("something else")), QStringLiteral("something else"));
+    // Every method has words, and no two share them.
+    QStringList seen;
+    for (physics::IntegratorKind k : physics::kAllIntegrators) {
+        const QString words = integratorDisplayName(k);
+        QVERIFY2(words != QString::fromUtf8(physics::integratorName(k).data()), qPrintable(words));
+        QVERIFY(!seen.contains(words));
+        seen << words;
+    }
+
+    // A compared lesson step's legend, in the window and in the exported file.
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(lessonPath("energy_drift"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    QWidget parent;
+    PlotWidget* plot =
+        makeStepPlot(loaded.lesson.steps[0], QStringLiteral("compare-energy"), &parent);
+    QVERIFY(plot);
+    QStringList legend;
+    for (int i = 0; i < plot->plot()->legend->itemCount(); ++i)
+        if (auto* item = qobject_cast<QCPPlottableLegendItem*>(plot->plot()->legend->item(i)))
+            legend << item->plottable()->name();
+    QCOMPARE(legend,
+             (QStringList{QStringLiteral("Explicit Euler"), QStringLiteral("Symplectic Euler"),
+                          QStringLiteral("Velocity Verlet"), QStringLiteral("Runge–Kutta 4")}));
+    QTemporaryDir dir;
+    const QString svg = dir.filePath(QStringLiteral("compare.svg"));
+    QVERIFY(exportPlot(*plot, svg, ExportFormat::Svg).ok);
+    QFile file(svg);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    const QString text = QString::fromUtf8(file.readAll());
+    QVERIFY(text.contains(QStringLiteral("Velocity Verlet")));
+    QVERIFY(!text.contains(QStringLiteral(">verlet<")));
+    // The handout's caption too.
+    const QString caption =
+        stepCaption(loaded.lesson, 0, lessons::buildStepWorlds(loaded.lesson.steps[0])[0].def());
+    QVERIFY2(caption.contains(QStringLiteral("Runge–Kutta 4")), qPrintable(caption));
+}
+
+void TestPlotReading::comparedCurvesStayVisible()
+{
+    // Four worlds whose curves lie on one another: each stays visible, in the PNG export.
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(lessonPath("energy_drift"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    QWidget parent;
+    PlotWidget* plot =
+        makeStepPlot(loaded.lesson.steps[0], QStringLiteral("compare-energy"), &parent);
+    QVERIFY(plot);
+    QCOMPARE(plot->seriesCount(), 4);
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < i; ++j)
+            QVERIFY(plot->graph(i)->pen().style() != plot->graph(j)->pen().style());
+    plot->setRangeMode(RangeMode::WholeRun);
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    for (int k = 0; k <= 256; ++k) {
+        Sample s;
+        s.t = k * kDt;
+        s.variants = 4;
+        const double e = 1.0 + 0.5 * std::sin(s.t);
+        s.variantTotal = {e, e, e, e, 0, 0}; // the same curve four times
+        s.energyScale = 1.0;
+        buffer.push(s);
+    }
+    plot->drain();
+    plot->setTitleShown(false);
+    QTemporaryDir dir;
+    const QString png = dir.filePath(QStringLiteral("coincide.png"));
+    ExportOptions options;
+    options.pngPixelRatio = 1.0;
+    QVERIFY(exportPlot(*plot, png, ExportFormat::Png, options).ok);
+    QImage image(png);
+    QVERIFY(!image.isNull());
+    // Crop away the legend's row (its icons show every colour whatever the curves do).
+    const QImage curves = image.copy(0, image.height() / 3, image.width(), image.height() * 2 / 3);
+    for (int i = 0; i < 4; ++i)
+        QVERIFY2(pixelsOf(curves, plotColor(i)) > 100,
+                 qPrintable(
+                     QStringLiteral("curve %1: %2 px").arg(i).arg(pixelsOf(curves, plotColor(i)))));
+}
+
+void TestPlotReading::closeMarksStack()
+{
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    plot->resize(640, 360);
+    plot->show();
+    QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 10.0);
+    // A few tenths of a second apart: lines pixels apart, labels wider than that.
+    const double times[] = {4.0, 4.2, 4.4, 4.6};
+    for (const double t : times)
+        plot->addMark(t, QStringLiteral("dt = %1 ms").arg(t));
+    plot->plot()->replot();
+    QCOMPARE(plot->markCount(), 4);
+    int visible = 0;
+    for (int i = 0; i < plot->markCount(); ++i) {
+        QCPItemText* a = plot->markLabel(i);
+        if (!a->visible())
+            continue;
+        ++visible;
+        for (int j = 0; j < i; ++j) {
+            QCPItemText* b = plot->markLabel(j);
+            if (b->visible())
+                QVERIFY2(!labelRect(a).intersects(labelRect(b)),
+                         qPrintable(QStringLiteral("labels %1 and %2 overlap: %3,%4 %5x%6 and "
+                                                   "%7,%8 %9x%10")
+                                        .arg(j)
+                                        .arg(i)
+                                        .arg(labelRect(b).x())
+                                        .arg(labelRect(b).y())
+                                        .arg(labelRect(b).width())
+                                        .arg(labelRect(b).height())
+                                        .arg(labelRect(a).x())
+                                        .arg(labelRect(a).y())
+                                        .arg(labelRect(a).width())
+                                        .arg(labelRect(a).height())));
+        }
+        // Above the plot, where it hides no curve.
+        QVERIFY(labelRect(a).bottom() <= plot->plot()->axisRect()->top() + 1);
+        QVERIFY(labelRect(a).top() >= 0);
+    }
+    // Stacked on the rows there are, the one more merged into its neighbour's label: every
+    // change is still said.
+    QCOMPARE(visible, PlotWidget::kMarkRows);
+    QString said;
+    for (int i = 0; i < plot->markCount(); ++i)
+        if (plot->markLabel(i)->visible())
+            said += plot->markLabel(i)->text() + u'|';
+    for (const double t : times)
+        QVERIFY2(said.contains(QStringLiteral("dt = %1 ms").arg(t)), qPrintable(said));
+
+    // In an export of another width too.
+    QTemporaryDir dir;
+    QVERIFY(exportPlot(*plot, dir.filePath(QStringLiteral("marks.svg")), ExportFormat::Svg).ok);
+    plot->plot()->replot();
+    for (int i = 1; i < plot->markCount(); ++i)
+        QVERIFY(!labelRect(plot->markLabel(i)).intersects(labelRect(plot->markLabel(i - 1))));
+}
+
+void TestPlotReading::coincidingMarksMerge()
+{
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    plot->resize(640, 360);
+    plot->show();
+    QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    feed(buffer, *plot, 0.0, 10.0);
+    // Two changes in one moment (a lesson step's settings), and one a pixel later.
+    plot->addMark(5.0, QStringLiteral("dt = 5 ms"));
+    plot->addMark(5.0, QStringLiteral("Runge–Kutta 4"));
+    plot->addMark(5.005, QStringLiteral("e = 0.5"));
+    plot->addMark(8.0, QStringLiteral("μ = 0.3"));
+    plot->plot()->replot();
+    QStringList shown;
+    for (int i = 0; i < plot->markCount(); ++i)
+        if (plot->markLabel(i)->visible())
+            shown << plot->markLabel(i)->text();
+    QCOMPARE(shown.size(), 2);
+    QVERIFY(shown[0].contains(QStringLiteral("dt = 5 ms")));
+    QVERIFY(shown[0].contains(QStringLiteral("Runge–Kutta 4")));
+    QVERIFY(shown[0].contains(QStringLiteral("e = 0.5")));
+    QCOMPARE(shown[1], QStringLiteral("μ = 0.3"));
+
+    // Zoomed in, they are apart again: each its own label.
+    plot->plot()->xAxis->setRange(4.99, 5.01);
+    plot->plot()->replot();
+    int visible = 0;
+    for (int i = 0; i < 3; ++i)
+        visible += plot->markLabel(i)->visible() ? 1 : 0;
+    QCOMPARE(visible, 2); // the two at exactly 5 s still share one
+}
+
+void TestPlotReading::exportFolderDefaultsAndRemembers()
+{
+    QSettings().remove(QLatin1String(kExportFolderKey));
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    QVERIFY(!documents.isEmpty());
+    QVERIFY(QDir().mkpath(documents));
+    QCOMPARE(exportFolder(), documents);
+
+    QTemporaryDir chosen;
+    rememberExportFolder(QDir(chosen.path()).filePath(QStringLiteral("energy.png")));
+    QCOMPARE(exportFolder(), QDir(chosen.path()).absolutePath());
+    // Remembered across runs: in the settings.
+    QCOMPARE(QSettings().value(QLatin1String(kExportFolderKey)).toString(),
+             QDir(chosen.path()).absolutePath());
+
+    // A folder since removed falls back to the documents.
+    const QString gone = QDir(chosen.path()).filePath(QStringLiteral("gone"));
+    QVERIFY(QDir().mkpath(gone));
+    rememberExportFolder(gone);
+    QCOMPARE(exportFolder(), gone);
+    QVERIFY(QDir(gone).removeRecursively());
+    QCOMPARE(exportFolder(), documents);
+    QSettings().remove(QLatin1String(kExportFolderKey));
+}
+
+void TestPlotReading::plotExportDialogStartsThere()
+{
+    QSettings().remove(QLatin1String(kExportFolderKey));
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    QVERIFY(QDir().mkpath(documents));
+    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
+    QSignalSpy exported(plot.get(), &PlotWidget::exported);
+
+    QString openedIn;
+    QTemporaryDir chosen;
+    const QString file = QDir(chosen.path()).filePath(QStringLiteral("mine.csv"));
+    answerFileDialog(&openedIn, file);
+    plot->exportInteractively(ExportFormat::Csv);
+    QCOMPARE(openedIn, QDir(documents).absolutePath());
+    QCOMPARE(exported.count(), 1);
+    QVERIFY(QFileInfo::exists(file));
+
+    // The next dialog, of this plot or another, opens where the last export went.
+    std::unique_ptr<PlotWidget> other(makeDriftPlot(nullptr));
+    answerFileDialog(&openedIn, QString());
+    other->exportInteractively(ExportFormat::Png);
+    QCOMPARE(openedIn, QDir(chosen.path()).absolutePath());
+    QSettings().remove(QLatin1String(kExportFolderKey));
+}
+
+void TestPlotReading::lessonExportDialogStartsThere()
+{
+    QSettings().remove(QLatin1String(kExportFolderKey));
+    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
+    QVERIFY(QDir().mkpath(documents));
+    ui::MainWindow w;
+    QCOMPARE(w.openLesson(lessonPath("energy_drift"), true), QString());
+
+    QString openedIn;
+    QTemporaryDir chosen;
+    answerFileDialog(&openedIn, chosen.path());
+    emit w.lessonPlayer().exportRequested();
+    QCOMPARE(openedIn, QDir(documents).absolutePath());
+    QCOMPARE(exportFolder(), QDir(chosen.path()).absolutePath());
+    QVERIFY(!QDir(chosen.path()).entryList(QDir::Files).isEmpty());
+
+    answerFileDialog(&openedIn, QString());
+    emit w.lessonPlayer().exportRequested();
+    QCOMPARE(openedIn, QDir(chosen.path()).absolutePath());
+    QSettings().remove(QLatin1String(kExportFolderKey));
+}
+
+RIGIDLAB_TEST_MAIN(TestPlotReading)
+#include "test_plot_reading.moc"
