@@ -4,6 +4,7 @@
 
 #include "lesson_export.h"
 
+#include "rigidlab/lessons/data_dirs.h"
 #include "rigidlab/lessons/lesson.h"
 
 #include <QDir>
@@ -67,6 +68,28 @@ int commandLesson(const QStringList& words)
         printOut(QStringLiteral("wrote %1\n").arg(QDir::toNativeSeparators(file)));
     if (!written.ok)
         return outputError(written.error);
+    return kExitOk;
+}
+
+int commandLessons(const QStringList& words)
+{
+    CommandLine args(QStringLiteral("lessons"));
+    if (!args.parse(words))
+        return usageError(args.command(), args.error());
+    if (!args.positionals().isEmpty())
+        return usageError(args.command(), QStringLiteral("no files, only the shipped lessons"));
+    const QString folder = lessons::shippedLessonsDir();
+    if (folder.isEmpty())
+        return inputError(QStringLiteral("no shipped lessons found (installed data folder "
+                                         "missing; RIGIDLAB_DATA_DIR names another)"));
+    const QDir dir(folder);
+    for (const QString& name : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
+        const lessons::LessonLoadResult loaded = lessons::loadLessonFile(dir.filePath(name));
+        if (loaded.ok)
+            printOut(QStringLiteral("%1\t%2\n").arg(loaded.lesson.path, loaded.lesson.title));
+        else
+            printWarnings({loaded.error});
+    }
     return kExitOk;
 }
 

@@ -10,4 +10,7 @@ namespace rigidlab::cli {
 /// QApplication (on the offscreen platform: nothing is shown).
 int commandLesson(const QStringList& words);
 
+/// `lessons`: the shipped lessons, one line each: the file's path, a tab, its title.
+int commandLessons(const QStringList& words);
+
 } // namespace rigidlab::cli

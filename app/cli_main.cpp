@@ -55,6 +55,8 @@ Commands:
   lesson LESSON.json         a lesson's steps, with their plots, panels and questions
       --export DIR           run every step that has plots for its exportTime and write
                              them as PNG, PDF, SVG and CSV into DIR/NN-step-title/
+  lessons                    the shipped lessons: each file's path and title (the data
+                             folder: RIGIDLAB_DATA_DIR, else beside the installed program)
   error-vs-time [OPTIONS]    work against precision of every integrator on reference problems
       --problem NAME|all     oscillator, pendulum, kepler, spinning-body, double-pendulum
       --integrators LIST     comma-separated (default: all, Boost.Odeint's odeint-rk4 and
@@ -307,6 +309,7 @@ constexpr Command kCommands[] = {
     {QLatin1StringView("stress"), &cli::commandStress},
     {QLatin1StringView("bench"), &commandBench},
     {QLatin1StringView("lesson"), &cli::commandLesson},
+    {QLatin1StringView("lessons"), &cli::commandLessons},
 };
 
 } // namespace

@@ -18,6 +18,7 @@
 #include "simulation_controller.h"
 #include "world_view.h"
 
+#include "rigidlab/lessons/data_dirs.h"
 #include "rigidlab/lessons/lesson.h"
 #include "rigidlab/lessons/scene_loader.h"
 
@@ -172,34 +173,12 @@ void MainWindow::followController(PlotWidget* plot)
 
 QString MainWindow::scenesFolder()
 {
-    const QString env = qEnvironmentVariable("RIGIDLAB_SCENES");
-    if (!env.isEmpty() && QFileInfo(env).isDir())
-        return env;
-    const QString installed = QDir(QCoreApplication::applicationDirPath())
-                                  .filePath(QStringLiteral("../share/rigidlab/scenes"));
-    if (QFileInfo(installed).isDir())
-        return QDir(installed).canonicalPath();
-#ifdef RIGIDLAB_SOURCE_SCENES
-    return QStringLiteral(RIGIDLAB_SOURCE_SCENES);
-#else
-    return QString();
-#endif
+    return lessons::shippedScenesDir();
 }
 
 QString MainWindow::lessonsFolder()
 {
-    const QString env = qEnvironmentVariable("RIGIDLAB_LESSONS");
-    if (!env.isEmpty() && QFileInfo(env).isDir())
-        return env;
-    const QString installed = QDir(QCoreApplication::applicationDirPath())
-                                  .filePath(QStringLiteral("../share/rigidlab/lessons"));
-    if (QFileInfo(installed).isDir())
-        return QDir(installed).canonicalPath();
-#ifdef RIGIDLAB_SOURCE_LESSONS
-    return QStringLiteral(RIGIDLAB_SOURCE_LESSONS);
-#else
-    return QString();
-#endif
+    return lessons::shippedLessonsDir();
 }
 
 void MainWindow::buildActions()

@@ -1,0 +1,26 @@
+#pragma once
+// Where RigidLab's shipped scenes and lessons are, and where a user keeps their own.
+//
+// The shipped data is found, in this order: the folder named by the environment variable
+// RIGIDLAB_DATA_DIR; DATADIR/rigidlab beside an installed program (PREFIX/bin/rigidlab finds
+// PREFIX/share/rigidlab); the source tree's lessons/ folder, for a program run from its build
+// folder (compiled in only when RIGIDLAB_BUILD_TREE_DATA is on, the default; packages turn it
+// off). Each data folder holds scenes/ and lessons/.
+
+#include <QString>
+
+namespace rigidlab::lessons {
+
+/// The shipped data folder, or an empty string when none is found.
+QString shippedDataDir();
+/// shippedDataDir()/scenes.
+QString shippedScenesDir();
+/// shippedDataDir()/lessons.
+QString shippedLessonsDir();
+
+/// The user's own scenes and lessons: QStandardPaths::AppDataLocation's scenes/ and lessons/.
+/// They may not exist yet; the window lists them beside the shipped ones when they do.
+QString userScenesDir();
+QString userLessonsDir();
+
+} // namespace rigidlab::lessons
