@@ -17,6 +17,7 @@
 #include "world_view.h"
 
 #include "rigidlab/lessons/lesson.h"
+#include "rigidlab/lessons/lesson_catalog.h"
 #include "rigidlab/lessons/scene_loader.h"
 
 #include <QAction>
@@ -183,18 +184,7 @@ QString MainWindow::scenesFolder()
 
 QString MainWindow::lessonsFolder()
 {
-    const QString env = qEnvironmentVariable("RIGIDLAB_LESSONS");
-    if (!env.isEmpty() && QFileInfo(env).isDir())
-        return env;
-    const QString installed = QDir(QCoreApplication::applicationDirPath())
-                                  .filePath(QStringLiteral("../share/rigidlab/lessons"));
-    if (QFileInfo(installed).isDir())
-        return QDir(installed).canonicalPath();
-#ifdef RIGIDLAB_SOURCE_LESSONS
-    return QStringLiteral(RIGIDLAB_SOURCE_LESSONS);
-#else
-    return QString();
-#endif
+    return lessons::shippedLessonsFolder();
 }
 
 void MainWindow::buildActions()
@@ -378,9 +368,9 @@ void MainWindow::buildMenus()
     openLessonAction->setObjectName(QStringLiteral("openLesson"));
     openLessonAction->setShortcuts(controlKeys("openLesson"));
     QMenu* lessonsMenu = file->addMenu(tr("Le&ssons"));
-    for (const QString& path : m_player->lessonPaths()) {
-        const lessons::LessonLoadResult r = lessons::loadLessonFile(path);
-        lessonsMenu->addAction(r.ok ? r.lesson.title : QFileInfo(path).baseName(), this,
+    for (int i = 0; i < m_player->lessonPaths().size(); ++i) {
+        const QString path = m_player->lessonPaths()[i];
+        lessonsMenu->addAction(m_player->lessonMenuTexts()[i], this,
                                [this, path] { openLesson(path); });
     }
     lessonsMenu->setEnabled(!m_player->lessonPaths().isEmpty());
