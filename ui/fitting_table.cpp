@@ -28,6 +28,12 @@ namespace {
 constexpr int kCellPadding = 14;
 /// Room around a header's text, which has a sort indicator's margin as well [px].
 constexpr int kHeaderPadding = 18;
+/// What the item delegate takes off a cell's width before wrapping its text (the style's
+/// focus frame margins, 3 px on each side), and 2 px to spare [px].
+constexpr int kWrapMargin = 8;
+/// Slack added to a column's measured text, so that rounding in the text layout never
+/// wraps a line that was measured to fit [px].
+constexpr int kSlack = 3;
 /// A column never gets narrower than this, so that "–" and "?" still have room [px].
 constexpr int kMinColumn = 24;
 
@@ -198,7 +204,7 @@ QList<int> FittingTable::columnWidths(const TableText& text) const
             continue; // spans the table: wraps in whatever width the columns add up to
         const QStringList& row = text.rows[r];
         for (int c = 0; c < row.size() && c < widths.size(); ++c)
-            widths[c] = std::max(widths[c], textWidth(cellMetrics, row[c]) + kCellPadding);
+            widths[c] = std::max(widths[c], textWidth(cellMetrics, row[c]) + kCellPadding + kSlack);
     }
     return widths;
 }
@@ -287,7 +293,8 @@ void FittingTable::sizeColumnsAndRows(const TableText& text)
             const bool title = text.isTitle(r);
             if (title && c > 0)
                 break;
-            const int w = (title ? total : widths[c]) - kCellPadding;
+            // The delegate wraps text at the cell's width less its focus frame margins.
+            const int w = (title ? total : widths[c]) - kWrapMargin;
             const QRect bounds =
                 (title ? boldMetrics : fm)
                     .boundingRect(QRect(0, 0, std::max(1, w), 10000), Qt::TextWordWrap, row[c]);

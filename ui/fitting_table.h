@@ -64,6 +64,8 @@ public:
 
     bool isNarrow() const { return m_narrow; }
     const TableText& shownText() const { return m_narrow ? m_narrowText : m_wideText; }
+    /// The table in its wide form, whichever form is shown: one row per quantity.
+    const TableText& wideText() const { return m_wideText; }
     /// The width the wide form needs to show every column whole [px].
     int wideWidth() const;
 

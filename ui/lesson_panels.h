@@ -4,13 +4,14 @@
 // spin the impulse formula predicts with and without its rotational terms). Both fit the
 // window's narrow right column (FittingTable) and export themselves as CSV.
 
+#include "fitting_table.h"
+
 #include <QWidget>
 
 class QLabel;
 
 namespace rigidlab::ui {
 
-class FittingTable;
 class SimulationController;
 
 class BouncePanel : public QWidget {
