@@ -6,6 +6,7 @@
 
 #include "rigidlab/lessons/data_dirs.h"
 #include "rigidlab/lessons/lesson.h"
+#include "rigidlab/lessons/lesson_catalog.h"
 
 #include <QDir>
 
@@ -78,18 +79,11 @@ int commandLessons(const QStringList& words)
         return usageError(args.command(), args.error());
     if (!args.positionals().isEmpty())
         return usageError(args.command(), QStringLiteral("no files, only the shipped lessons"));
-    const QString folder = lessons::shippedLessonsDir();
-    if (folder.isEmpty())
+    if (lessons::shippedLessonsDir().isEmpty())
         return inputError(QStringLiteral("no shipped lessons found (installed data folder "
                                          "missing; RIGIDLAB_DATA_DIR names another)"));
-    const QDir dir(folder);
-    for (const QString& name : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-        const lessons::LessonLoadResult loaded = lessons::loadLessonFile(dir.filePath(name));
-        if (loaded.ok)
-            printOut(QStringLiteral("%1\t%2\n").arg(loaded.lesson.path, loaded.lesson.title));
-        else
-            printWarnings({loaded.error});
-    }
+    for (const lessons::LessonEntry& entry : lessons::shippedLessonsInOrder())
+        printOut(QStringLiteral("%1\t%2\n").arg(entry.path, entry.title));
     return kExitOk;
 }
 

@@ -10,7 +10,8 @@ namespace rigidlab::cli {
 /// QApplication (on the offscreen platform: nothing is shown).
 int commandLesson(const QStringList& words);
 
-/// `lessons`: the shipped lessons, one line each: the file's path, a tab, its title.
+/// `lessons`: the shipped lessons in teaching order, one line each: the file's path, a tab,
+/// its title.
 int commandLessons(const QStringList& words);
 
 } // namespace rigidlab::cli

@@ -3,6 +3,7 @@
 #include "work_precision_plot.h"
 
 #include <QComboBox>
+#include <QDockWidget>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
@@ -37,6 +38,23 @@ ErrorPanel::ErrorPanel(QWidget* parent)
     connect(m_problem, &QComboBox::currentTextChanged, m_plot, &WorkPrecisionPlot::setProblem);
     connect(m_run, &QPushButton::clicked, this, &ErrorPanel::start);
     connect(m_cancel, &QPushButton::clicked, this, &ErrorPanel::cancel);
+}
+
+void ErrorPanel::placeDock(QDockWidget& dock, const QRect& available, bool compact)
+{
+    if (!compact) {
+        dock.setFloating(false);
+        return;
+    }
+    // Most of the screen, centred, leaving a margin for the window manager's frame.
+    constexpr int kMargin = 24;
+    const QSize preferred(960, 640);
+    const QSize room = available.size() - QSize(2 * kMargin, 2 * kMargin);
+    const QSize size = preferred.boundedTo(room).expandedTo(QSize(200, 200));
+    dock.setFloating(true);
+    dock.setGeometry(QRect(available.topLeft() + QPoint((available.width() - size.width()) / 2,
+                                                        (available.height() - size.height()) / 2),
+                           size));
 }
 
 ErrorPanel::~ErrorPanel()

@@ -11,6 +11,7 @@
 #include <atomic>
 
 class QComboBox;
+class QDockWidget;
 class QProgressBar;
 class QPushButton;
 class QLabel;
@@ -29,6 +30,11 @@ public:
     bool isRunning() const { return m_thread != nullptr; }
     /// The sweep's options (the window's: each problem's own steps, 4 points, short timing).
     lessons::SweepOptions& options() { return m_options; }
+
+    /// Where the panel's dock opens. On a small screen (`compact`) the bottom dock area has
+    /// no room for a readable diagram: the dock floats over the window instead, inside the
+    /// screen's `available` area, large enough for a plot of kMinPlotHeight px or more.
+    static void placeDock(QDockWidget& dock, const QRect& available, bool compact);
 
 public slots:
     void start();

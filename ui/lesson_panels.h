@@ -1,12 +1,14 @@
 #pragma once
 // Tables that lessons show beside the view: bounce heights against e² times the previous
 // one, and a collision's before and after (velocities, momentum, kinetic energy, and the
-// spin the impulse formula predicts with and without its rotational terms).
+// spin the impulse formula predicts with and without its rotational terms). Both fit the
+// window's narrow right column (FittingTable) and export themselves as CSV.
+
+#include "fitting_table.h"
 
 #include <QWidget>
 
 class QLabel;
-class QTableWidget;
 
 namespace rigidlab::ui {
 
@@ -16,7 +18,7 @@ class BouncePanel : public QWidget {
     Q_OBJECT
 public:
     explicit BouncePanel(SimulationController& controller, QWidget* parent = nullptr);
-    QTableWidget* table() const { return m_table; }
+    FittingTable* table() const { return m_table; }
     /// Held: the measured heights and their ratios read "?" until the student has answered.
     void setHeightsHeld(bool held);
 
@@ -24,8 +26,11 @@ public slots:
     void refresh();
 
 private:
+    /// Fills the table whether or not the panel is shown.
+    void refreshNow();
+
     SimulationController& m_controller;
-    QTableWidget* m_table;
+    FittingTable* m_table;
     bool m_heightsHeld = false;
 };
 
@@ -33,7 +38,7 @@ class CollisionPanel : public QWidget {
     Q_OBJECT
 public:
     explicit CollisionPanel(SimulationController& controller, QWidget* parent = nullptr);
-    QTableWidget* table() const { return m_table; }
+    FittingTable* table() const { return m_table; }
     /// Held: the "after" column reads "?" until the student has answered.
     void setAfterHeld(bool held);
 
@@ -43,7 +48,7 @@ public slots:
 private:
     SimulationController& m_controller;
     QLabel* m_title;
-    QTableWidget* m_table;
+    FittingTable* m_table;
     int m_shownCount = -1;
     bool m_afterHeld = false;
 };

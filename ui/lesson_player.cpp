@@ -4,8 +4,11 @@
 #include "number_field.h"
 #include "simulation_controller.h"
 
+#include "rigidlab/lessons/lesson_catalog.h"
+
 #include "rigidlab/lessons/measurements.h"
 
+#include <QAbstractItemView>
 #include <QComboBox>
 #include <QDir>
 #include <QFileInfo>
@@ -102,16 +105,23 @@ void LessonPlayer::scanFolder(const QString& folder)
 {
     m_lessonBox->clear();
     m_paths.clear();
+    m_menuTexts.clear();
     m_lessonBox->addItem(tr("Choose a lesson…"), QString());
-    const QDir dir(folder);
-    for (const QFileInfo& info :
-         dir.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-        const lessons::LessonLoadResult r = lessons::loadLessonFile(info.filePath());
-        if (!r.ok)
-            continue; // a broken shipped lesson is a test failure, not a menu entry
-        m_lessonBox->addItem(r.lesson.title, info.filePath());
-        m_paths << info.filePath();
+    // A broken shipped lesson is a test failure, not a menu entry: lessonsInOrder skips it.
+    const std::vector<lessons::LessonEntry> entries = lessons::lessonsInOrder(folder);
+    for (std::size_t i = 0; i < entries.size(); ++i) {
+        const lessons::LessonEntry& entry = entries[i];
+        const QString text = lessons::lessonMenuText(entry, static_cast<int>(i) + 1);
+        m_lessonBox->addItem(text, entry.path);
+        m_lessonBox->setItemData(m_lessonBox->count() - 1, text, Qt::ToolTipRole);
+        m_paths << entry.path;
+        m_menuTexts << text;
     }
+    // The box stays as narrow as its column; its list opens as wide as its longest line.
+    m_lessonBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    m_lessonBox->setMinimumContentsLength(12);
+    m_lessonBox->view()->setTextElideMode(Qt::ElideNone);
+    m_lessonBox->view()->setMinimumWidth(m_lessonBox->view()->sizeHintForColumn(0) + 24);
 }
 
 QString LessonPlayer::openLesson(const QString& path)

@@ -32,13 +32,15 @@ public:
     /// where they stay in sight (below a scrolling lesson); the caller owns them then.
     QWidget* takeNavigation();
 
-    /// Lessons found in the shipped lessons folder, by title.
+    /// Lists the lessons of `folder` in teaching order, numbered (lessons::lessonsInOrder).
     void scanFolder(const QString& folder);
     /// Opens a lesson; its first step is activated. Returns the error, empty on success.
     QString openLesson(const QString& path);
     const lessons::Lesson* lesson() const { return m_lesson.get(); }
     int stepIndex() const { return m_step; }
     QStringList lessonPaths() const { return m_paths; }
+    /// Per lessonPaths() entry, its menu line: "1. Title — description (≈N min)".
+    QStringList lessonMenuTexts() const { return m_menuTexts; }
 
     /// The answer box and result line of question i of the current step (for tests).
     void answer(int question, const QString& text);
@@ -79,6 +81,7 @@ private:
     std::unique_ptr<lessons::Lesson> m_lesson;
     int m_step = 0;
     QStringList m_paths;
+    QStringList m_menuTexts;
     QComboBox* m_lessonBox;
     QLabel* m_title;
     QLabel* m_about;

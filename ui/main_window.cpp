@@ -20,6 +20,7 @@
 
 #include "rigidlab/lessons/data_dirs.h"
 #include "rigidlab/lessons/lesson.h"
+#include "rigidlab/lessons/lesson_catalog.h"
 #include "rigidlab/lessons/scene_loader.h"
 
 #include <QAction>
@@ -364,9 +365,9 @@ void MainWindow::buildMenus()
     openLessonAction->setObjectName(QStringLiteral("openLesson"));
     openLessonAction->setShortcuts(controlKeys("openLesson"));
     QMenu* lessonsMenu = file->addMenu(tr("Le&ssons"));
-    for (const QString& path : m_player->lessonPaths()) {
-        const lessons::LessonLoadResult r = lessons::loadLessonFile(path);
-        lessonsMenu->addAction(r.ok ? r.lesson.title : QFileInfo(path).baseName(), this,
+    for (int i = 0; i < m_player->lessonPaths().size(); ++i) {
+        const QString path = m_player->lessonPaths()[i];
+        lessonsMenu->addAction(m_player->lessonMenuTexts()[i], this,
                                [this, path] { openLesson(path); });
     }
     lessonsMenu->setEnabled(!m_player->lessonPaths().isEmpty());

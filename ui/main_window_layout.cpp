@@ -9,6 +9,8 @@
 
 #include "main_window.h"
 
+#include "error_panel.h"
+
 #include "plot_widget.h"
 #include "simulation_controller.h"
 #include "theme.h"
@@ -85,6 +87,8 @@ void MainWindow::fitToScreen(const QRect& available)
                                           (available.height() - size.height()) / 2));
     }
     arrangeDocks(available.size(), size.width());
+    if (QDockWidget* error = m_docks.value(QStringLiteral("errorDock")))
+        ErrorPanel::placeDock(*error, available, m_compact);
 }
 
 void MainWindow::arrangeDocks(const QSize& screen, int windowWidth)

@@ -59,6 +59,12 @@ void OverlayItem::setEnabled(Overlay overlay, bool on)
     update();
 }
 
+bool OverlayItem::velocityArrowShown(const physics::Vec2& velocity, double metresPerPixel)
+{
+    const double lengthPx = velocity.norm() * kVelocityArrowSeconds / metresPerPixel;
+    return std::isfinite(lengthPx) && lengthPx >= kMinArrowPixels;
+}
+
 void OverlayItem::clearTrails()
 {
     m_trails.clear();
@@ -205,7 +211,7 @@ void OverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*)
     if (isEnabled(Overlay::Velocities)) {
         p->setPen(cosmeticPen(QColor(0, 110, 200), 2.0));
         for (const physics::Body& b : bodies) {
-            if (!b.moves())
+            if (!b.moves() || !velocityArrowShown(b.velocity, px))
                 continue;
             const QPointF c = toQt(b.position);
             drawArrow(p, c, c + toQt(b.velocity) * kVelocityArrowSeconds, 10 * px);

@@ -27,6 +27,12 @@ public:
     void refresh();
     void clearTrails();
 
+    /// Shortest velocity arrow drawn [px]: below it the arrow would be a dot whose direction
+    /// is noise (a body at rest moves at 1e-19 m/s, in any direction).
+    static constexpr double kMinArrowPixels = 3.0;
+    /// Whether a body moving at `velocity` [m/s] gets its arrow at this zoom [m per px].
+    static bool velocityArrowShown(const physics::Vec2& velocity, double metresPerPixel);
+
     QRectF boundingRect() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 

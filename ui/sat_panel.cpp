@@ -9,6 +9,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QMenu>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -78,6 +79,15 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     m_table->setTextElideMode(Qt::ElideNone);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
     m_table->setSelectionMode(QAbstractItemView::NoSelection);
+    m_table->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_table, &QWidget::customContextMenuRequested, this, [this](const QPoint& pos) {
+        QMenu menu(this);
+        QAction* exportAction = menu.addAction(tr("Export as CSV…"));
+        exportAction->setEnabled(active());
+        connect(exportAction, &QAction::triggered, this,
+                [this] { exportCsvInteractively(this, csv(), tr("separating_axes")); });
+        menu.exec(m_table->viewport()->mapToGlobal(pos));
+    });
     layout->addWidget(m_table, 1);
     m_summary->setWordWrap(true);
     layout->addWidget(m_summary);
@@ -308,6 +318,37 @@ void SatPanel::updateTable()
     }
     if (m_overlay)
         m_overlay->update();
+}
+
+CsvTable SatPanel::csv() const
+{
+    CsvTable table;
+    table.headers = QStringList{
+        QStringLiteral("axis"),        QStringLiteral("polygon"),   QStringLiteral("edge"),
+        QStringLiteral("normal x"),    QStringLiteral("normal y"),  QStringLiteral("A min [m]"),
+        QStringLiteral("A max [m]"),   QStringLiteral("B min [m]"), QStringLiteral("B max [m]"),
+        QStringLiteral("overlap [m]"), QStringLiteral("note")};
+    const auto& axes = m_result.axes;
+    const int total = static_cast<int>(axes.size());
+    for (int i = 0; i < m_shown && i < total; ++i) {
+        const physics::SatAxis& ax = axes[static_cast<std::size_t>(i)];
+        const bool separates = i == m_result.separatingAxis;
+        const bool least = i == m_result.leastAxis && m_shown == total;
+        table.rows << QStringList{QString::number(i + 1),
+                                  ax.owner == 0 ? QStringLiteral("A") : QStringLiteral("B"),
+                                  QString::number(ax.edge),
+                                  csvNumber(ax.axis.x()),
+                                  csvNumber(ax.axis.y()),
+                                  csvNumber(ax.minA),
+                                  csvNumber(ax.maxA),
+                                  csvNumber(ax.minB),
+                                  csvNumber(ax.maxB),
+                                  csvNumber(ax.overlap),
+                                  separates ? QStringLiteral("separates")
+                                  : least   ? QStringLiteral("least overlap")
+                                            : QString()};
+    }
+    return table;
 }
 
 QString SatPanel::summary() const

@@ -6,6 +6,7 @@
 // The overlay also shows, for a body whose non-convex outline was replaced by its hull, the
 // area where the detection is now wrong.
 
+#include "fitting_table.h"
 #include "sat_overlay.h"
 
 #include "rigidlab/physics/sat.h"
@@ -46,6 +47,8 @@ public:
     const SimulationController& controller() const { return m_controller; }
     QString summary() const; ///< the text under the table
     const QTableWidget& table() const { return *m_table; }
+    /// The axes shown, as "Export as CSV…" in the table's context menu writes them.
+    CsvTable csv() const;
 
 public slots:
     void nextAxis();

@@ -9,6 +9,8 @@
 
 #include "rigidlab/lessons/error_vs_time.h"
 
+#include <QPointF>
+#include <QRectF>
 #include <QString>
 
 #include <map>
@@ -34,8 +36,17 @@ public:
     void clearRows();
     /// The order written next to an integrator's line, or an empty string.
     QString orderLabel(const QString& integrator) const;
+    /// Where each integrator's order label was drawn, in the plot's pixels (for tests).
+    const std::map<QString, QRectF>& labelBoxes() const { return m_labelBoxes; }
+    /// The diagram is at least this tall, so that its decades can be read [px].
+    static constexpr int kMinPlotHeight = 300;
+
+private slots:
+    void arrangeLabels();
 
 private:
+    /// "p = 2.0", or in words why the order cannot be measured.
+    QString orderText(const QString& integrator) const;
     void redraw(const QString& integrator);
     int seriesFor(const QString& integrator);
 
@@ -43,6 +54,8 @@ private:
     std::vector<lessons::SweepRow> m_rows;
     std::map<QString, int> m_series;          ///< integrator -> series index
     std::map<QString, QCPItemText*> m_labels; ///< integrator -> its order, owned by plot()
+    std::map<QString, QPointF> m_anchors;     ///< integrator -> its most accurate point [s, m]
+    std::map<QString, QRectF> m_labelBoxes;   ///< integrator -> where its label was drawn [px]
 };
 
 } // namespace rigidlab::ui

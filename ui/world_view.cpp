@@ -47,6 +47,15 @@ WorldView::WorldView(SimulationController& controller, QWidget* parent)
     rebuild();
 }
 
+std::vector<const BodyItem*> WorldView::ghostItems(int variant) const
+{
+    std::vector<const BodyItem*> out;
+    for (const Ghost& g : m_ghosts)
+        if (g.variant == variant)
+            out.push_back(g.item);
+    return out;
+}
+
 const BodyItem* WorldView::itemFor(int id) const
 {
     return id >= 0 && id < static_cast<int>(m_items.size()) ? m_items[static_cast<size_t>(id)]
@@ -82,13 +91,17 @@ void WorldView::rebuild()
         m_scene->addItem(item);
         m_items.push_back(item);
     }
+    // A compared world drawn beside the main one (an offset) needs its floor and walls too,
+    // or its bodies stand in mid-air; drawn over the main one, its static bodies would only
+    // repeat the main world's.
+    const bool beside = !m_controller.variantOffset().isZero();
     for (int v = 0; v < m_controller.variantCount(); ++v) {
         const auto& vb = m_controller.variant(v).bodies();
         for (std::size_t i = 0; i < vb.size(); ++i) {
-            if (!vb[i].moves())
+            if (!vb[i].moves() && !beside)
                 continue;
             auto* item = new BodyItem(static_cast<int>(i), vb[i].shape, 3, plotColor(v + 1));
-            item->setZValue(2);
+            item->setZValue(vb[i].moves() ? 2 : 1.5);
             item->setAcceptedMouseButtons(Qt::NoButton);
             m_scene->addItem(item);
             m_ghosts.push_back({v, static_cast<int>(i), item});

@@ -24,6 +24,9 @@ public:
     OverlayItem& overlays() { return *m_overlays; }
     /// The item drawing body `id` (for tests).
     const BodyItem* itemFor(int id) const;
+    /// The items drawing compared world `variant` (index into the controller's variants),
+    /// in body order (for tests).
+    std::vector<const BodyItem*> ghostItems(int variant) const;
     int selectedBody() const { return m_selected; }
     /// Pixels per metre now.
     double zoom() const { return transform().m11(); }

@@ -275,8 +275,8 @@ std::optional<double> observedOrder(const std::vector<SweepRow>& rows, const QSt
 {
     std::vector<double> x, y;
     for (const SweepRow& r : rows)
-        if (r.problem == problem && r.integrator == integrator && r.error > 1e-10 &&
-            r.error < 1e-2 && r.dt > 0) {
+        if (r.problem == problem && r.integrator == integrator && r.error > kOrderErrorMin &&
+            r.error < kOrderErrorMax && r.dt > 0) {
             x.push_back(std::log(r.dt));
             y.push_back(std::log(r.error));
         }
@@ -296,6 +296,26 @@ std::optional<double> observedOrder(const std::vector<SweepRow>& rows, const QSt
     if (sxx <= 0)
         return std::nullopt;
     return sxy / sxx;
+}
+
+OrderGap orderGap(const std::vector<SweepRow>& rows, const QString& problem,
+                  const QString& integrator)
+{
+    if (observedOrder(rows, problem, integrator))
+        return OrderGap::None;
+    int runs = 0, small = 0, large = 0;
+    for (const SweepRow& r : rows) {
+        if (r.problem != problem || r.integrator != integrator || r.dt <= 0)
+            continue;
+        ++runs;
+        if (r.error <= kOrderErrorMin)
+            ++small;
+        else if (!(r.error < kOrderErrorMax)) // NaN too: a run that blew up is large
+            ++large;
+    }
+    if (runs < 2)
+        return OrderGap::TooFewRuns;
+    return small >= large ? OrderGap::RoundOff : OrderGap::TooLarge;
 }
 
 QByteArray sweepCsv(const std::vector<SweepRow>& rows)

@@ -29,6 +29,10 @@ namespace {
 constexpr int kMaxSteps = 100;
 constexpr int kMaxGoals = 20;
 constexpr int kMaxMinutes = 1000;
+/// The largest teaching-order number a lesson may have.
+constexpr int kMaxOrder = 999;
+/// The longest one-line description, in characters: it shares a menu line with the title.
+constexpr int kMaxDescription = 100;
 constexpr double kMaxExportTime = 600.0; ///< [s]
 constexpr double kMaxExportSteps = 1e7;  ///< exportTime / dt at most
 constexpr double kMinTimeScale = 0.1;
@@ -97,6 +101,8 @@ private:
     bool readStep(const QJsonValue& value, const QString& place, LessonStep& step);
     bool readText(const QJsonObject& object, const QString& place, QString& out);
     bool readScene(const QJsonObject& object, const QString& place, LessonStep& step);
+    /// The one-line description: one line, short enough for a menu.
+    bool readDescription(const QJsonObject& root);
     bool readSceneFile(const QString& relative, const QString& place, LessonStep& step);
     bool readSettings(const QJsonObject& object, const QString& place, StepSettings& settings);
     bool readCompare(const QJsonObject& object, const QString& place, LessonStep& step);
@@ -111,20 +117,42 @@ private:
     qint64 m_bodies = 0; ///< over the steps read so far
 };
 
+bool LessonReader::readDescription(const QJsonObject& root)
+{
+    if (!m_in.string(root, u"description", {}, m_lesson.description))
+        return false;
+    const QString& d = m_lesson.description;
+    if (d.contains(QLatin1Char('\n')) || d.contains(QLatin1Char('\r')))
+        return m_in.fail(QStringLiteral("description"),
+                         QStringLiteral("must be one line (it is shown in the lesson menu); put "
+                                        "longer text in \"summary\""));
+    if (d.size() > kMaxDescription)
+        return m_in.fail(QStringLiteral("description"),
+                         QStringLiteral("is %1 characters long; at most %2 fit a menu line (put "
+                                        "longer text in \"summary\")")
+                             .arg(d.size())
+                             .arg(kMaxDescription));
+    if (root.contains(QStringLiteral("description")) && d.trimmed().isEmpty())
+        return m_in.fail(QStringLiteral("description"),
+                         QStringLiteral("must not be empty (leave the key out instead)"));
+    return true;
+}
+
 LessonLoadResult LessonReader::read(const QJsonObject& root)
 {
     const bool ok = m_in.formatVersion(root, QStringLiteral("rigidlab-lesson"),
                                        QStringLiteral("a lesson file"), kLessonFormatVersion) &&
                     m_in.checkKeys(root, {},
                                    {u"rigidlab-lesson", u"title", u"summary", u"level", u"minutes",
-                                    u"goals", u"steps"}) &&
+                                    u"order", u"description", u"goals", u"steps"}) &&
                     m_in.string(root, u"title", {}, m_lesson.title, true) &&
                     (!m_lesson.title.trimmed().isEmpty() ||
                      m_in.fail(QStringLiteral("title"), QStringLiteral("must not be empty"))) &&
                     m_in.string(root, u"summary", {}, m_lesson.summary) &&
                     m_in.string(root, u"level", {}, m_lesson.level) &&
                     m_in.integer(root, u"minutes", {}, m_lesson.minutes, 0, kMaxMinutes) &&
-                    readGoals(root) && readSteps(root);
+                    m_in.integer(root, u"order", {}, m_lesson.order, 1, kMaxOrder) &&
+                    readDescription(root) && readGoals(root) && readSteps(root);
     LessonLoadResult result;
     result.warnings = m_in.warnings();
     if (!ok) {

@@ -82,6 +82,8 @@ private slots:
     void shippedLessonsLoad_data();
     void shippedLessonsLoad();
     void validateRecognisesLessons();
+    void shippedLessonsInTeachingOrder();
+    void lessonsWithoutOrderComeLast();
     void rejectsBadLesson_data();
     void rejectsBadLesson();
     void rejectsSymbolicLinkOutOfFolder();
@@ -110,6 +112,7 @@ private slots:
     void smallerStepShrinksDrift();
     void sequentialImpulseStackMovesLess();
     void billiardsBreakConservesMomentum();
+    void billiardsCushionsWhereTheTextSays();
     void stiffSpringsDivergeWhereTheoryPredicts();
     void worldsStopWhereTheTextSays_data();
     void worldsStopWhereTheTextSays();

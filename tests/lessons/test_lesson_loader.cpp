@@ -4,6 +4,7 @@
 #include "test_lesson.h"
 
 #include "rigidlab/lessons/document.h"
+#include "rigidlab/lessons/lesson_catalog.h"
 
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -67,6 +68,8 @@ void TestLesson::shippedLessonsLoad()
     QVERIFY2(lesson.summary.size() >= 80, "a summary a teacher can use");
     QVERIFY(!lesson.level.isEmpty());
     QVERIFY(lesson.minutes > 0);
+    QVERIFY(lesson.order > 0);
+    QVERIFY(!lesson.description.isEmpty());
     QVERIFY(!lesson.goals.isEmpty());
     for (const lessons::LessonStep& step : lesson.steps) {
         QVERIFY2(step.text.size() >= 200, qPrintable(step.title));
@@ -128,6 +131,59 @@ void TestLesson::validateRecognisesLessons()
     QVERIFY(sat.warnings[0].contains(QStringLiteral("replaced by its convex hull")));
 }
 
+void TestLesson::shippedLessonsInTeachingOrder()
+{
+    const std::vector<lessons::LessonEntry> entries = lessons::lessonsInOrder(kLessonsDir);
+    const QStringList files =
+        QDir(kLessonsDir).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
+    QCOMPARE(static_cast<qsizetype>(entries.size()), files.size());
+    // Every shipped lesson has its own place, and the list follows the places.
+    for (std::size_t i = 1; i < entries.size(); ++i)
+        QVERIFY2(entries[i - 1].order < entries[i].order, qPrintable(entries[i].path));
+    // The teaching order: how a step works first, then collisions, their detection, stacks,
+    // stiffness, and the billiards break that puts collisions and momentum together.
+    QStringList names;
+    for (const lessons::LessonEntry& e : entries)
+        names << QFileInfo(e.path).baseName();
+    const QStringList expected{
+        QStringLiteral("energy_drift"),    QStringLiteral("restitution"),
+        QStringLiteral("separating_axis"), QStringLiteral("stacks"),
+        QStringLiteral("stiff_springs"),   QStringLiteral("billiards_momentum")};
+    QCOMPARE(names, expected);
+    // The menu line: number, title, description and time, each as the file gives it.
+    const lessons::LessonEntry& first = entries.front();
+    const lessons::Lesson lesson = shippedLesson("energy_drift");
+    QCOMPARE(lessons::lessonMenuText(first, 1), QStringLiteral("1. %1 — %2 (≈%3 min)")
+                                                    .arg(lesson.title, lesson.description)
+                                                    .arg(lesson.minutes));
+}
+
+void TestLesson::lessonsWithoutOrderComeLast()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
+    writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene);
+    const auto lesson = [](const char* title, const char* more) {
+        return QByteArray(R"({"rigidlab-lesson": 1, "title": ")") + title + '"' + more +
+               R"(, "steps": [{"title": "s", "scene": "scenes/ok.json"}]})";
+    };
+    writeFile(dir.filePath(QStringLiteral("a.json")), lesson("A", ""));
+    writeFile(dir.filePath(QStringLiteral("b.json")), lesson("B", R"(, "order": 7)"));
+    writeFile(dir.filePath(QStringLiteral("c.json")),
+              lesson("C", R"(, "order": 2, "description": "the first", "minutes": 5)"));
+    writeFile(dir.filePath(QStringLiteral("d.json")), lesson("D", R"(, "order": "x")"));
+    const std::vector<lessons::LessonEntry> entries = lessons::lessonsInOrder(dir.path());
+    QStringList titles;
+    for (const lessons::LessonEntry& e : entries)
+        titles << e.title;
+    // d.json does not load and is left out; a.json has no place and comes after the others.
+    QCOMPARE(titles, (QStringList{QStringLiteral("C"), QStringLiteral("B"), QStringLiteral("A")}));
+    QCOMPARE(lessons::lessonMenuText(entries[0], 1), QStringLiteral("1. C — the first (≈5 min)"));
+    QCOMPARE(lessons::lessonMenuText(entries[2], 3), QStringLiteral("3. A"));
+    QVERIFY(lessons::lessonsInOrder(QString()).empty());
+}
+
 void TestLesson::rejectsBadLesson_data()
 {
     QTest::addColumn<QByteArray>("json");
@@ -146,12 +202,29 @@ void TestLesson::rejectsBadLesson_data()
     QTest::newRow("unknown-key-top")
         << QByteArray(R"({"rigidlab-lesson": 1, "titel": "x"})")
         << "titel: unknown key (allowed here: rigidlab-lesson, title, summary, level, minutes, "
-           "goals, steps)";
+           "order, description, goals, steps)";
     QTest::newRow("title-missing")
         << QByteArray(R"({"rigidlab-lesson": 1, "steps": []})") << "title: required, but missing";
     QTest::newRow("minutes-fraction")
         << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "minutes": 2.5})")
         << "minutes: must be a whole number from 0 to 1000, got 2.5";
+    QTest::newRow("order-zero") << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "order": 0})")
+                                << "order: must be a whole number from 1 to 999, got 0";
+    QTest::newRow("order-text") << QByteArray(
+                                       R"({"rigidlab-lesson": 1, "title": "t", "order": "1"})")
+                                << "order: must be a whole number from 1 to 999, got \"1\"";
+    QTest::newRow("description-two-lines")
+        << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "description": "a\nb"})")
+        << "description: must be one line (it is shown in the lesson menu); put longer text in "
+           "\"summary\"";
+    QTest::newRow("description-long")
+        << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "description": ")") +
+               QByteArray(101, 'x') + QByteArray(R"("})")
+        << "description: is 101 characters long; at most 100 fit a menu line (put longer text "
+           "in \"summary\")";
+    QTest::newRow("description-blank")
+        << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "description": "  "})")
+        << "description: must not be empty (leave the key out instead)";
     QTest::newRow("goal-empty")
         << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "goals": ["a", ""]})")
         << "goals[1]: must be a non-empty string \"...\", got \"\"";

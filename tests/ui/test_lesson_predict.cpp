@@ -52,12 +52,13 @@ QAction* actionNamed(MainWindow& w, const QString& text)
     return nullptr;
 }
 
-/// The collision table's column as the student reads it.
-QStringList column(const QTableWidget* table, int c)
+/// Column c of a lesson table in its wide form, one cell per quantity, whichever form the
+/// table's width shows.
+QStringList column(const ui::FittingTable* table, int c)
 {
     QStringList cells;
-    for (int r = 0; r < table->rowCount(); ++r)
-        cells << (table->item(r, c) ? table->item(r, c)->text() : QString());
+    for (const QStringList& row : table->wideText().rows)
+        cells << (c < row.size() ? row[c] : QString());
     return cells;
 }
 
@@ -125,8 +126,8 @@ private slots:
         QVERIFY(!controller.measurements().collisions().empty());
         ui::CollisionPanel& panel = w.collisionPanel();
         panel.refresh();
-        const QTableWidget* table = panel.table();
-        QVERIFY(table->rowCount() >= 4);
+        const ui::FittingTable* table = panel.table();
+        QVERIFY(table->wideText().rows.size() >= 4);
         for (const QString& cell : column(table, 2))
             QVERIFY2(cell.isEmpty() || cell == QStringLiteral("?"), qPrintable(cell));
         bool numbers = false;

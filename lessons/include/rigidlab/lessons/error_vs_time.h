@@ -82,6 +82,20 @@ std::vector<SweepRow> runSweep(const SweepOptions& options, const SweepProgress&
 std::optional<double> observedOrder(const std::vector<SweepRow>& rows, const QString& problem,
                                     const QString& integrator);
 
+/// The errors observedOrder fits, between these bounds [m] (exclusive).
+inline constexpr double kOrderErrorMin = 1e-10;
+inline constexpr double kOrderErrorMax = 1e-2;
+
+/// Why observedOrder has no value for one integrator on one problem.
+enum class OrderGap {
+    None,       ///< it has one
+    TooFewRuns, ///< fewer than two runs so far
+    RoundOff,   ///< the errors are at round-off level (at most kOrderErrorMin)
+    TooLarge,   ///< the errors are as large as the motion (at least kOrderErrorMax)
+};
+OrderGap orderGap(const std::vector<SweepRow>& rows, const QString& problem,
+                  const QString& integrator);
+
 /// The rows as CSV, header kSweepCsvHeader, numbers with 17 significant digits.
 QByteArray sweepCsv(const std::vector<SweepRow>& rows);
 

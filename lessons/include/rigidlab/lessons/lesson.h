@@ -116,7 +116,11 @@ struct Lesson {
     QString title;
     QString summary;
     QString level;   ///< "secondary school", "first year", ...
-    int minutes = 0; ///< estimated time
+    int minutes = 0; ///< estimated time [min]; 0: not given
+    /// Place in the teaching order of the shipped lessons (1 first); 0: not given, listed
+    /// after the numbered ones.
+    int order = 0;
+    QString description; ///< one line for the lesson menu; may be empty
     QStringList goals;
     std::vector<LessonStep> steps;
 };

@@ -1,0 +1,33 @@
+#pragma once
+// The shipped lessons in the order they are taught. Each lesson file may give its place
+// ("order"), a one-line description and its duration ("minutes"); the lesson menu lists them
+// numbered, "1. Title — description (≈N min)", and a start page opens the first one.
+
+#include <QString>
+
+#include <vector>
+
+namespace rigidlab::lessons {
+
+/// What a lesson menu shows of one lesson.
+struct LessonEntry {
+    QString path; ///< absolute
+    QString title;
+    QString description; ///< one line, may be empty
+    int order = 0;       ///< the file's "order"; 0: not given
+    int minutes = 0;     ///< estimated time [min]; 0: not given
+};
+
+/// The lessons of `folder` that load, in teaching order: by their "order", then those without
+/// one, each group by file name. A file that does not load is left out (the tests check that
+/// every shipped one loads).
+std::vector<LessonEntry> lessonsInOrder(const QString& folder);
+
+/// lessonsInOrder(shippedLessonsDir()) (data_dirs.h): the first one is where a newcomer starts.
+std::vector<LessonEntry> shippedLessonsInOrder();
+
+/// The menu line of the lesson at 1-based `position` in the teaching order:
+/// "1. Title — description (≈N min)", the parts that are not given left out.
+QString lessonMenuText(const LessonEntry& entry, int position);
+
+} // namespace rigidlab::lessons

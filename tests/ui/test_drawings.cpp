@@ -1,0 +1,275 @@
+// A few drawings (issues 11 and 12): the error-vs-run-time panel on a 1024 × 768 screen, its
+// order labels apart and in words where no order can be measured; the compared worlds drawn
+// with their floors; velocity arrows only where they have a length; the billiards break big
+// and slow enough to watch.
+
+#include "body_item.h"
+#include "error_panel.h"
+#include "lesson_player.h"
+#include "main_window.h"
+#include "overlays.h"
+#include "simulation_controller.h"
+#include "work_precision_plot.h"
+#include "world_view.h"
+
+#include "rigidlab/lessons/error_vs_time.h"
+#include "rigidlab/lessons/lesson.h"
+
+#include <QDockWidget>
+#include <QtTest>
+
+#include <qcustomplot.h>
+
+#include <cmath>
+
+#include "test_main.h"
+
+using namespace rigidlab;
+using rigidlab::ui::MainWindow;
+
+namespace {
+
+QString lesson(const char* name)
+{
+    return QDir(MainWindow::lessonsFolder())
+        .filePath(QLatin1StringView(name) + QStringLiteral(".json"));
+}
+
+/// Rows of one integrator whose error falls as dt^order, its CPU time as 1/dt.
+std::vector<lessons::SweepRow> rowsOf(const QString& integrator, double order, double scale,
+                                      int count = 4)
+{
+    std::vector<lessons::SweepRow> rows;
+    double dt = 0.1;
+    for (int i = 0; i < count; ++i, dt /= 2) {
+        lessons::SweepRow r;
+        r.problem = QStringLiteral("oscillator");
+        r.integrator = integrator;
+        r.dt = dt;
+        r.error = scale * std::pow(dt, order);
+        r.seconds = 1e-4 / dt;
+        rows.push_back(r);
+    }
+    return rows;
+}
+
+} // namespace
+
+class TestDrawings : public QObject {
+    Q_OBJECT
+private slots:
+    void errorPanelOpensOnASmallScreen();
+    void orderLabelsApartAndInWords();
+    void ghostWorldsDrawTheirFloor();
+    void velocityArrowsOnlyWithALength_data();
+    void velocityArrowsOnlyWithALength();
+    void billiardsBallsBigAndBreakSlow();
+};
+
+void TestDrawings::errorPanelOpensOnASmallScreen()
+{
+    const QRect screen(0, 0, 1024, 768);
+    MainWindow w;
+    w.fitToScreen(screen);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QDockWidget* dock = w.dock(QStringLiteral("errorDock"));
+    QVERIFY(dock);
+    dock->show();
+    QCoreApplication::processEvents();
+    QVERIFY(dock->isFloating());
+    QVERIFY2(screen.contains(dock->frameGeometry()),
+             qPrintable(QStringLiteral("%1,%2 %3×%4")
+                            .arg(dock->frameGeometry().x())
+                            .arg(dock->frameGeometry().y())
+                            .arg(dock->frameGeometry().width())
+                            .arg(dock->frameGeometry().height())));
+    auto* plot = dock->findChild<ui::WorkPrecisionPlot*>();
+    QVERIFY(plot);
+    QVERIFY2(plot->height() >= ui::WorkPrecisionPlot::kMinPlotHeight,
+             qPrintable(QString::number(plot->height())));
+    plot->plot()->replot();
+    // The y label stands whole beside the axis.
+    QCPAxis* y = plot->plot()->yAxis;
+    const int labelLength = QFontMetrics(y->labelFont()).horizontalAdvance(y->label());
+    QVERIFY2(labelLength <= y->axisRect()->height(),
+             qPrintable(
+                 QStringLiteral("%1 px beside %2").arg(labelLength).arg(y->axisRect()->height())));
+
+    // On a roomy screen it stays in the bottom dock area.
+    MainWindow roomy;
+    roomy.fitToScreen(QRect(0, 0, 1920, 1080));
+    QVERIFY(!roomy.dock(QStringLiteral("errorDock"))->isFloating());
+}
+
+void TestDrawings::orderLabelsApartAndInWords()
+{
+    ui::WorkPrecisionPlot plot;
+    plot.resize(520, ui::WorkPrecisionPlot::kMinPlotHeight);
+    plot.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plot));
+    // Five integrators whose most accurate points coincide: their labels would sit on top of
+    // one another. One more at round-off everywhere, and one with a single run.
+    const QStringList names = lessons::sweepIntegratorNames();
+    QVERIFY(names.size() >= 7);
+    std::vector<lessons::SweepRow> rows;
+    for (int i = 0; i < 5; ++i) {
+        // The same last point (dt = 0.0125) for all: error 1e-6 there.
+        const double order = 1.0 + i * 0.5;
+        const auto mine = rowsOf(names[i], order, 1e-6 / std::pow(0.0125, order));
+        rows.insert(rows.end(), mine.begin(), mine.end());
+    }
+    const auto roundOff = rowsOf(names[5], 4.0, 1e-14 / std::pow(0.1, 4.0));
+    rows.insert(rows.end(), roundOff.begin(), roundOff.end());
+    const auto single = rowsOf(names[6], 2.0, 1.0, 1);
+    rows.insert(rows.end(), single.begin(), single.end());
+    plot.setRows(rows);
+    plot.plot()->replot();
+
+    QCOMPARE(plot.orderLabel(names[0]),
+             QStringLiteral("p = %1").arg(QLocale().toString(1.0, 'f', 1)));
+    QVERIFY2(plot.orderLabel(names[5]).contains(QStringLiteral("round-off")),
+             qPrintable(plot.orderLabel(names[5])));
+    QVERIFY2(plot.orderLabel(names[6]).contains(QStringLiteral("second run")),
+             qPrintable(plot.orderLabel(names[6])));
+    for (const QString& name : names.mid(0, 7))
+        QVERIFY2(!plot.orderLabel(name).contains(QLatin1Char('?')), qPrintable(name));
+
+    const auto& boxes = plot.labelBoxes();
+    QCOMPARE(boxes.size(), std::size_t(7));
+    const QRectF area = plot.plot()->axisRect()->rect();
+    for (auto a = boxes.begin(); a != boxes.end(); ++a) {
+        QVERIFY2(area.contains(a->second), qPrintable(a->first));
+        for (auto b = std::next(a); b != boxes.end(); ++b)
+            QVERIFY2(!a->second.intersects(b->second),
+                     qPrintable(QStringLiteral("%1 and %2").arg(a->first, b->first)));
+    }
+
+    // lessons::orderGap says which: a run that blew up makes the errors too large.
+    auto blown = rowsOf(QStringLiteral("x"), 1.0, 1.0);
+    for (auto& r : blown)
+        r.error = r.error > 0.5 ? NAN : 0.5;
+    QCOMPARE(lessons::orderGap(blown, QStringLiteral("oscillator"), QStringLiteral("x")),
+             lessons::OrderGap::TooLarge);
+    QCOMPARE(lessons::orderGap(rows, QStringLiteral("oscillator"), names[0]),
+             lessons::OrderGap::None);
+}
+
+void TestDrawings::ghostWorldsDrawTheirFloor()
+{
+    MainWindow w;
+    QCOMPARE(w.openLesson(lesson("stacks"), true), QString());
+    const lessons::Lesson* l = w.lessonPlayer().lesson();
+    int checked = 0;
+    for (std::size_t s = 0; s < l->steps.size(); ++s) {
+        const lessons::LessonStep& step = l->steps[s];
+        if (!step.compare)
+            continue;
+        w.lessonPlayer().goToStep(static_cast<int>(s));
+        const ui::SimulationController& c = w.controller();
+        QVERIFY(!c.variantOffset().isZero());
+        for (int v = 0; v < c.variantCount(); ++v) {
+            const auto items = w.view().ghostItems(v);
+            QCOMPARE(items.size(), c.variant(v).bodies().size());
+            bool floor = false;
+            for (const ui::BodyItem* item : items) {
+                const physics::Body& b = c.variant(v).body(item->bodyId());
+                floor = floor || !b.moves();
+                // Drawn where the compared world is: shifted by its offset.
+                const physics::Vec2 at = b.origin() + (v + 1) * c.variantOffset();
+                QVERIFY(std::abs(item->pos().x() - at.x()) < 1e-9);
+                QVERIFY(std::abs(item->pos().y() - at.y()) < 1e-9);
+            }
+            QVERIFY2(floor, "the compared stack stands on a drawn floor");
+        }
+        ++checked;
+    }
+    QVERIFY(checked > 0);
+}
+
+void TestDrawings::velocityArrowsOnlyWithALength_data()
+{
+    QTest::addColumn<double>("vx");
+    QTest::addColumn<double>("vy");
+    QTest::addColumn<double>("metresPerPixel");
+    QTest::addColumn<bool>("shown");
+    // An arrow is 0.25 s of motion long.
+    QTest::newRow("at rest, round-off") << 4e-19 << -3e-19 << 0.01 << false;
+    QTest::newRow("exactly zero") << 0.0 << 0.0 << 0.01 << false;
+    QTest::newRow("2 px") << 0.08 << 0.0 << 0.01 << false;
+    QTest::newRow("4 px") << 0.0 << -0.16 << 0.01 << true;
+    QTest::newRow("1 m/s at 100 px/m") << 0.6 << 0.8 << 0.01 << true;
+    QTest::newRow("slow, zoomed in far") << 1e-6 << 0.0 << 1e-8 << true;
+    QTest::newRow("not finite") << double(NAN) << 0.0 << 0.01 << false;
+}
+
+void TestDrawings::velocityArrowsOnlyWithALength()
+{
+    QFETCH(double, vx);
+    QFETCH(double, vy);
+    QFETCH(double, metresPerPixel);
+    QFETCH(bool, shown);
+    QCOMPARE(ui::OverlayItem::velocityArrowShown(physics::Vec2(vx, vy), metresPerPixel), shown);
+}
+
+void TestDrawings::billiardsBallsBigAndBreakSlow()
+{
+    // At 1024 × 768, every step of the billiards lesson: the balls at least 8 px across while
+    // the break happens, and the cue ball's run to the rack at least a second on the clock
+    // (the steps run in slow motion).
+    MainWindow w;
+    w.fitToScreen(QRect(0, 0, 1024, 768));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QCOMPARE(w.openLesson(lesson("billiards_momentum"), true), QString());
+    const lessons::Lesson* l = w.lessonPlayer().lesson();
+    for (std::size_t s = 0; s < l->steps.size(); ++s) {
+        w.lessonPlayer().goToStep(static_cast<int>(s));
+        ui::SimulationController& c = w.controller();
+        c.setRunning(false);
+        QCoreApplication::processEvents();
+        const physics::World& world = c.world();
+        double radius = 0;
+        int cue = -1;
+        for (std::size_t i = 0; i < world.bodies().size(); ++i)
+            if (world.bodies()[i].moves()) {
+                radius = world.bodies()[i].shape.circle.radius;
+                if (world.bodies()[i].name == "cue")
+                    cue = static_cast<int>(i);
+            }
+        QVERIFY(cue >= 0);
+        // Until the first collision (the break), then half a second more.
+        double breakTime = -1;
+        while (c.world().time() < 3.0) {
+            c.stepForward();
+            if (breakTime < 0 && !c.measurements().collisions().empty())
+                breakTime = c.world().time();
+            if (breakTime >= 0 && c.world().time() > breakTime + 0.5)
+                break;
+        }
+        QVERIFY(breakTime > 0);
+        w.view().syncPoses();
+        QCoreApplication::processEvents();
+        const double diameterPx = 2 * radius * w.view().zoom();
+        QVERIFY2(
+            diameterPx >= 8.0,
+            qPrintable(QStringLiteral("step %1: balls %2 px across").arg(s + 1).arg(diameterPx)));
+        // Where the cushions are gone, the view widens to follow the balls that leave: at
+        // 2 s (the step's handout time) they are still more than dots.
+        while (c.world().time() < 2.0)
+            c.stepForward();
+        w.view().syncPoses();
+        QVERIFY2(2 * radius * w.view().zoom() >= 5.0,
+                 qPrintable(QStringLiteral("step %1 at 2 s: balls %2 px across")
+                                .arg(s + 1)
+                                .arg(2 * radius * w.view().zoom())));
+        const double timeScale = l->steps[s].settings.timeScale.value_or(1.0);
+        QVERIFY2(breakTime / timeScale >= 1.0,
+                 qPrintable(QStringLiteral("step %1: the break after %2 s on the clock")
+                                .arg(s + 1)
+                                .arg(breakTime / timeScale)));
+    }
+}
+
+RIGIDLAB_TEST_MAIN(TestDrawings)
+#include "test_drawings.moc"
