@@ -39,7 +39,8 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
       m_back(new QPushButton(tr("◀ Back"), this)),
       m_restart(new QPushButton(tr("Restart step"), this)),
       m_next(new QPushButton(tr("Next ▶"), this)),
-      m_export(new QPushButton(tr("Export plots…"), this))
+      m_export(new QPushButton(tr("Export plots…"), this)),
+      m_start(new QPushButton(tr("Start the first lesson"), this))
 {
     auto* layout = new QVBoxLayout(this);
     m_lessonBox->setToolTip(
@@ -51,9 +52,22 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     m_title->setFont(big);
     m_title->setWordWrap(true);
     m_about->setWordWrap(true);
-    m_about->setStyleSheet(QStringLiteral("color: #555;"));
+    // Grey through the palette, not a style sheet: a style sheet would keep the text at its
+    // first font when presentation mode enlarges the window's.
+    QPalette grey = m_about->palette();
+    grey.setColor(QPalette::WindowText, QColor(0x55, 0x55, 0x55)); // 7.5:1 on white
+    m_about->setPalette(grey);
     layout->addWidget(m_title);
     layout->addWidget(m_about);
+    // On a first start, with no lesson open, the way in: one button to the first lesson.
+    m_start->setObjectName(QStringLiteral("startFirstLesson"));
+    connect(m_start, &QPushButton::clicked, this, [this] {
+        const QString error = openLesson(firstLessonPath());
+        const ModalScope modal;
+        if (!error.isEmpty())
+            QMessageBox::warning(this, tr("Cannot open lesson"), error);
+    });
+    layout->addWidget(m_start);
     layout->addWidget(m_progress);
     QFont bold = m_stepTitle->font();
     bold.setBold(true);
@@ -69,6 +83,8 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     layout->addWidget(m_text, 1);
     m_questionLayout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_questionBox);
+    // The start page (no lesson, so no text) keeps to the top instead of spreading out.
+    layout->addStretch(0);
     // Two buttons a row, so that the panel fits the narrow column of a 1024-pixel projector.
     // They are a widget of their own, so that the window can keep them in sight below a
     // lesson text that scrolls (takeNavigation()).
@@ -112,6 +128,14 @@ void LessonPlayer::scanFolder(const QString& folder)
         m_lessonBox->addItem(r.lesson.title, info.filePath());
         m_paths << info.filePath();
     }
+    if (!m_lesson)
+        showStep(); // the start page names the first lesson
+}
+
+QString LessonPlayer::firstLessonPath() const
+{
+    // The lessons have no teaching order of their own yet: the first file in name order.
+    return m_paths.value(0);
 }
 
 QString LessonPlayer::openLesson(const QString& path)
@@ -170,11 +194,22 @@ void LessonPlayer::showStep()
                        static_cast<QWidget*>(m_restart), static_cast<QWidget*>(m_back),
                        static_cast<QWidget*>(m_next), static_cast<QWidget*>(m_export)})
         w->setVisible(has);
+    // No lesson: a "start here" page instead of an empty text box.
+    m_text->setVisible(has);
+    const QString first = firstLessonPath();
+    m_start->setVisible(!has && !first.isEmpty());
     if (!has) {
-        m_title->setText(tr("Lessons"));
-        m_about->setText(tr("Choose a lesson above. Each one walks you through an idea of "
-                            "the mechanics step by step, with a prepared scene to run, "
-                            "change and measure."));
+        m_title->setText(tr("Start here"));
+        QString about = tr("RigidLab is a laboratory of moving bodies: run a prepared scene, "
+                           "change its settings and measure what happens. Each lesson walks "
+                           "you through one idea of mechanics step by step, with questions "
+                           "to answer on the way.");
+        const int index = m_lessonBox->findData(first);
+        if (index >= 0)
+            about += QStringLiteral("\n\n") +
+                     tr("The first lesson is “%1”; the list above holds the others.")
+                         .arg(m_lessonBox->itemText(index));
+        m_about->setText(about);
         m_text->clear();
         m_rows.clear();
         buildQuestions();

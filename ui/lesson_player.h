@@ -39,6 +39,9 @@ public:
     const lessons::Lesson* lesson() const { return m_lesson.get(); }
     int stepIndex() const { return m_step; }
     QStringList lessonPaths() const { return m_paths; }
+    /// The lesson to begin with, in teaching order; empty when there is none. The one place
+    /// that decides it.
+    QString firstLessonPath() const;
 
     /// The answer box and result line of question i of the current step (for tests).
     void answer(int question, const QString& text);
@@ -92,6 +95,7 @@ private:
     QPushButton* m_restart;
     QPushButton* m_next;
     QPushButton* m_export;
+    QPushButton* m_start; ///< opens the first lesson; shown while none is open
     struct QuestionRow {
         QLineEdit* edit = nullptr;
         QLabel* result = nullptr;
