@@ -199,6 +199,7 @@ void LessonPlayer::showStep()
     const QString first = firstLessonPath();
     m_start->setVisible(!has && !first.isEmpty());
     if (!has) {
+        m_about->setVisible(true);
         m_title->setText(tr("Start here"));
         QString about = tr("RigidLab is a laboratory of moving bodies: run a prepared scene, "
                            "change its settings and measure what happens. Each lesson walks "
@@ -222,6 +223,8 @@ void LessonPlayer::showStep()
     if (!l.level.isEmpty() || l.minutes > 0)
         about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l.level).arg(l.minutes);
     m_about->setText(about);
+    // The summary introduces the lesson; on the later steps their text has its room.
+    m_about->setVisible(m_step == 0);
     m_progress->setRange(0, static_cast<int>(l.steps.size()));
     m_progress->setValue(m_step + 1);
     m_progress->setFormat(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
