@@ -258,8 +258,7 @@ void SatPanel::updateTable()
                 .arg(ax.edge),
             tr("A %1 … %2\nB %3 … %4")
                 .arg(num(ax.minA, 2), num(ax.maxA, 2), num(ax.minB, 2), num(ax.maxB, 2)),
-            ax.overlap < 0 ? tr("gap %1 m").arg(num(-ax.overlap, 2))
-                           : tr("%1 m").arg(num(ax.overlap, 2)),
+            ax.overlap < 0 ? tr("gap %1").arg(num(-ax.overlap, 2)) : num(ax.overlap, 2),
             separates ? tr("separates")
             : least   ? tr("least overlap")
                       : QString()};
