@@ -7,6 +7,8 @@
 #include "lesson_player.h"
 #include "main_window.h"
 #include "plot_widget.h"
+#include "sat_overlay.h"
+#include "sat_panel.h"
 #include "shipped_lessons.h"
 #include "simulation_controller.h"
 #include "theme.h"
@@ -19,6 +21,7 @@
 #include <QAbstractButton>
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
@@ -470,9 +473,8 @@ private slots:
             // The legend's lines of the stopped worlds grow and take some height from the
             // bodies; following the stopped ones zoomed out to the fit's limit, 8 times.
             QVERIFY2(w.view().zoom() >= 0.5 * zoom,
-                     qPrintable(where + QStringLiteral("zoom %1, was %2")
-                                            .arg(w.view().zoom())
-                                            .arg(zoom)));
+                     qPrintable(where +
+                                QStringLiteral("zoom %1, was %2").arg(w.view().zoom()).arg(zoom)));
             const std::vector<QRect> labels = w.view().stoppedLabelRects();
             QVERIFY2(labels.size() >= 2, qPrintable(where));
             for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -492,6 +494,47 @@ private slots:
                          where +
                          QStringLiteral("puck at y %1, legend to %2").arg(drawn.top()).arg(below)));
         }
+    }
+
+    // The separating axis lesson in presentation mode: the gap or overlap label's box holds
+    // its whole text, the unit included, in the view's (enlarged) font.
+    void satLabelKeepsItsUnit()
+    {
+        MainWindow w;
+        presentOn(w, QSize(1024, 768));
+        QString sat;
+        for (const QString& path : shippedLessons())
+            if (path.contains(QLatin1String("separating")))
+                sat = path;
+        QCOMPARE(w.openLesson(sat, true), QString());
+        int labels = 0;
+        const int count = static_cast<int>(w.lessonPlayer().lesson()->steps.size());
+        for (int step = 0; step < count; ++step) {
+            w.lessonPlayer().goToStep(step);
+            QCoreApplication::processEvents();
+            ui::SatOverlayItem* overlay = w.satPanel().overlay();
+            const ui::SatOverlayItem::Geometry g = overlay->geometry();
+            if (!g.valid)
+                continue;
+            ++labels;
+            const QString where = QStringLiteral("step %1: ").arg(step + 1);
+            QVERIFY2(g.label.contains(QStringLiteral(" m")), qPrintable(where + g.label));
+            QFont font = w.view().font();
+            font.setBold(true);
+            QVERIFY(font.pointSizeF() >= 1.5 * QApplication::font().pointSizeF() - 1e-9);
+            const QSizeF text =
+                QFontMetricsF(font)
+                    .boundingRect(QRectF(0, 0, 150, 1e4), Qt::AlignLeft | Qt::TextWordWrap, g.label)
+                    .size();
+            const QRectF box = w.view().mapFromScene(g.labelRect).boundingRect();
+            QVERIFY2(box.width() + 1 >= text.width() && box.height() + 1 >= text.height(),
+                     qPrintable(where + QStringLiteral("%1x%2 px for %3x%4")
+                                            .arg(box.width())
+                                            .arg(box.height())
+                                            .arg(text.width())
+                                            .arg(text.height())));
+        }
+        QVERIFY(labels >= 2);
     }
 };
 
