@@ -34,7 +34,7 @@ constexpr double kMaxAnswer = 1e15;
 LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_lessonBox(new QComboBox(this)),
       m_title(new QLabel(this)), m_about(new QLabel(this)), m_progress(new QProgressBar(this)),
-      m_stepTitle(new QLabel(this)), m_text(new QTextBrowser(this)),
+      m_stepCount(new QLabel(this)), m_stepTitle(new QLabel(this)), m_text(new QTextBrowser(this)),
       m_questionBox(new QWidget(this)), m_questionLayout(new QVBoxLayout(m_questionBox)),
       m_back(new QPushButton(tr("◀ Back"), this)),
       m_restart(new QPushButton(tr("Restart step"), this)),
@@ -68,7 +68,14 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
             QMessageBox::warning(this, tr("Cannot open lesson"), error);
     });
     layout->addWidget(m_start);
-    layout->addWidget(m_progress);
+    // "Step 2 of 4" beside the bar rather than on it: text across the bar's filled edge is
+    // half white on blue, half black on blue, and the black part unreadable.
+    m_progress->setTextVisible(false);
+    m_progress->setMaximumHeight(QFontMetrics(font()).height() / 2 + 4);
+    auto* progressRow = new QHBoxLayout;
+    progressRow->addWidget(m_stepCount);
+    progressRow->addWidget(m_progress, 1);
+    layout->addLayout(progressRow);
     QFont bold = m_stepTitle->font();
     bold.setBold(true);
     bold.setPointSizeF(bold.pointSizeF() * 1.15);
@@ -190,9 +197,10 @@ void LessonPlayer::restartStep()
 void LessonPlayer::showStep()
 {
     const bool has = m_lesson != nullptr;
-    for (QWidget* w : {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepTitle),
-                       static_cast<QWidget*>(m_restart), static_cast<QWidget*>(m_back),
-                       static_cast<QWidget*>(m_next), static_cast<QWidget*>(m_export)})
+    for (QWidget* w : {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepCount),
+                       static_cast<QWidget*>(m_stepTitle), static_cast<QWidget*>(m_restart),
+                       static_cast<QWidget*>(m_back), static_cast<QWidget*>(m_next),
+                       static_cast<QWidget*>(m_export)})
         w->setVisible(has);
     // No lesson: a "start here" page instead of an empty text box.
     m_text->setVisible(has);
@@ -227,7 +235,7 @@ void LessonPlayer::showStep()
     m_about->setVisible(m_step == 0);
     m_progress->setRange(0, static_cast<int>(l.steps.size()));
     m_progress->setValue(m_step + 1);
-    m_progress->setFormat(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
+    m_stepCount->setText(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
     m_stepTitle->setText(s.title);
     m_text->setMarkdown(s.text);
     m_back->setEnabled(m_step > 0);
@@ -254,7 +262,10 @@ void LessonPlayer::buildQuestions()
         auto* prompt = new QLabel(q.prompt, box);
         prompt->setWordWrap(true);
         v->addWidget(prompt);
+        // The answer and its unit on a line of their own, the buttons below: side by side
+        // they left the answer a few letters wide in a narrow column.
         auto* row = new QHBoxLayout;
+        auto* buttons = new QHBoxLayout;
         auto* edit = new QLineEdit(box);
         // No validator: it would drop the separator the locale does not use ("0.0156" typed
         // in Czech became 00156). What was typed is read when it is checked, point or comma.
@@ -262,11 +273,12 @@ void LessonPlayer::buildQuestions()
         row->addWidget(edit, 1);
         row->addWidget(new QLabel(q.unit, box));
         auto* check = new QPushButton(tr("Check"), box);
-        row->addWidget(check);
+        buttons->addWidget(check);
         auto* show = new QPushButton(tr("Show me"), box);
         show->setToolTip(tr("Give up and show the measured value"));
-        row->addWidget(show);
+        buttons->addWidget(show);
         v->addLayout(row);
+        v->addLayout(buttons);
         auto* result = new QLabel(box);
         result->setWordWrap(true);
         v->addWidget(result);

@@ -86,6 +86,7 @@ private:
     QLabel* m_title;
     QLabel* m_about;
     QProgressBar* m_progress;
+    QLabel* m_stepCount; ///< "Step 2 of 4", beside the progress bar
     QLabel* m_stepTitle;
     QTextBrowser* m_text;
     QWidget* m_questionBox;
