@@ -24,6 +24,7 @@ constexpr double kIntervalOffset = 8.0;
 constexpr double kIntervalWidth = 7.0;
 constexpr double kSpanWidth = 6.0;
 constexpr double kLabelPadding = 4.0;
+constexpr double kLabelSlack = 4.0; ///< [px]
 constexpr double kArrowLength = 50.0;
 /// Labels wrap at this width [px], so that they fit beside the shapes in a narrow view.
 constexpr double kLabelWidth = 150.0;
@@ -60,7 +61,9 @@ QRectF labelBox(const QString& text, const QFont& font, const QPointF& anchor, c
 {
     const QSizeF size =
         QFontMetricsF(font).boundingRect(QRectF(0, 0, kLabelWidth, 1e4), kLabelFlags, text).size() +
-        QSizeF(2 * kLabelPadding, 2 * kLabelPadding);
+        // A little slack: text painted on the screen may lay out a pixel wider than measured
+        // here, and its last word ("m") then wrapped onto a line the box had no room for.
+        QSizeF(2 * kLabelPadding + kLabelSlack, 2 * kLabelPadding);
     // The box's half extent along dir, so that its centre sits that far past the anchor.
     const double d =
         0.5 * size.width() * std::abs(dir.x()) + 0.5 * size.height() * std::abs(dir.y());
