@@ -56,6 +56,9 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     m_friction->setObjectName(QStringLiteral("friction"));
 
     auto* form = new QFormLayout(this);
+    // In a narrow column (a 1024-pixel projector) each label goes above its field rather than
+    // both being cut.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     form->addRow(tr("Integrator"), m_integrator);
     form->addRow(tr("Time step dt [ms]"), m_dt);
     form->addRow(tr("Solver"), m_solver);

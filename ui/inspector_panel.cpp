@@ -55,6 +55,7 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     m_friction->setRange(lessons::limits::kFriction, tr("Friction μ"));
 
     auto* form = new QFormLayout(this);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows); // labels above fields when narrow
     form->addRow(tr("Body"), m_name);
     form->addRow(tr("Mass m"), massRow);
     form->addRow(tr("Inertia I"), m_inertia);

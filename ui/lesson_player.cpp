@@ -37,12 +37,13 @@ constexpr double kMaxAnswer = 1e15;
 LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_lessonBox(new QComboBox(this)),
       m_title(new QLabel(this)), m_about(new QLabel(this)), m_progress(new QProgressBar(this)),
-      m_stepTitle(new QLabel(this)), m_text(new QTextBrowser(this)),
+      m_stepCount(new QLabel(this)), m_stepTitle(new QLabel(this)), m_text(new QTextBrowser(this)),
       m_questionBox(new QWidget(this)), m_questionLayout(new QVBoxLayout(m_questionBox)),
       m_back(new QPushButton(tr("◀ Back"), this)),
       m_restart(new QPushButton(tr("Restart step"), this)),
       m_next(new QPushButton(tr("Next ▶"), this)),
-      m_export(new QPushButton(tr("Export plots…"), this))
+      m_export(new QPushButton(tr("Export plots…"), this)),
+      m_start(new QPushButton(tr("Start the first lesson"), this))
 {
     auto* layout = new QVBoxLayout(this);
     m_lessonBox->setToolTip(
@@ -54,10 +55,30 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     m_title->setFont(big);
     m_title->setWordWrap(true);
     m_about->setWordWrap(true);
-    m_about->setStyleSheet(QStringLiteral("color: #555;"));
+    // Grey through the palette, not a style sheet: a style sheet would keep the text at its
+    // first font when presentation mode enlarges the window's.
+    QPalette grey = m_about->palette();
+    grey.setColor(QPalette::WindowText, QColor(0x55, 0x55, 0x55)); // 7.5:1 on white
+    m_about->setPalette(grey);
     layout->addWidget(m_title);
     layout->addWidget(m_about);
-    layout->addWidget(m_progress);
+    // On a first start, with no lesson open, the way in: one button to the first lesson.
+    m_start->setObjectName(QStringLiteral("startFirstLesson"));
+    connect(m_start, &QPushButton::clicked, this, [this] {
+        const QString error = openLesson(firstLessonPath());
+        const ModalScope modal;
+        if (!error.isEmpty())
+            QMessageBox::warning(this, tr("Cannot open lesson"), error);
+    });
+    layout->addWidget(m_start);
+    // "Step 2 of 4" beside the bar rather than on it: text across the bar's filled edge is
+    // half white on blue, half black on blue, and the black part unreadable.
+    m_progress->setTextVisible(false);
+    m_progress->setMaximumHeight(QFontMetrics(font()).height() / 2 + 4);
+    auto* progressRow = new QHBoxLayout;
+    progressRow->addWidget(m_stepCount);
+    progressRow->addWidget(m_progress, 1);
+    layout->addLayout(progressRow);
     QFont bold = m_stepTitle->font();
     bold.setBold(true);
     bold.setPointSizeF(bold.pointSizeF() * 1.15);
@@ -72,6 +93,8 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     layout->addWidget(m_text, 1);
     m_questionLayout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_questionBox);
+    // The start page (no lesson, so no text) keeps to the top instead of spreading out.
+    layout->addStretch(0);
     // Two buttons a row, so that the panel fits the narrow column of a 1024-pixel projector.
     // They are a widget of their own, so that the window can keep them in sight below a
     // lesson text that scrolls (takeNavigation()).
@@ -122,6 +145,14 @@ void LessonPlayer::scanFolder(const QString& folder)
     m_lessonBox->setMinimumContentsLength(12);
     m_lessonBox->view()->setTextElideMode(Qt::ElideNone);
     m_lessonBox->view()->setMinimumWidth(m_lessonBox->view()->sizeHintForColumn(0) + 24);
+    if (!m_lesson)
+        showStep(); // the start page names the first lesson
+}
+
+QString LessonPlayer::firstLessonPath() const
+{
+    // scanFolder() lists the lessons in teaching order (lessons::lessonsInOrder).
+    return m_paths.value(0);
 }
 
 QString LessonPlayer::openLesson(const QString& path)
@@ -176,15 +207,28 @@ void LessonPlayer::restartStep()
 void LessonPlayer::showStep()
 {
     const bool has = m_lesson != nullptr;
-    for (QWidget* w : {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepTitle),
-                       static_cast<QWidget*>(m_restart), static_cast<QWidget*>(m_back),
-                       static_cast<QWidget*>(m_next), static_cast<QWidget*>(m_export)})
+    for (QWidget* w : {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepCount),
+                       static_cast<QWidget*>(m_stepTitle), static_cast<QWidget*>(m_restart),
+                       static_cast<QWidget*>(m_back), static_cast<QWidget*>(m_next),
+                       static_cast<QWidget*>(m_export)})
         w->setVisible(has);
+    // No lesson: a "start here" page instead of an empty text box.
+    m_text->setVisible(has);
+    const QString first = firstLessonPath();
+    m_start->setVisible(!has && !first.isEmpty());
     if (!has) {
-        m_title->setText(tr("Lessons"));
-        m_about->setText(tr("Choose a lesson above. Each one walks you through an idea of "
-                            "the mechanics step by step, with a prepared scene to run, "
-                            "change and measure."));
+        m_about->setVisible(true);
+        m_title->setText(tr("Start here"));
+        QString about = tr("RigidLab is a laboratory of moving bodies: run a prepared scene, "
+                           "change its settings and measure what happens. Each lesson walks "
+                           "you through one idea of mechanics step by step, with questions "
+                           "to answer on the way.");
+        const int index = m_lessonBox->findData(first);
+        if (index >= 0)
+            about += QStringLiteral("\n\n") +
+                     tr("The first lesson is “%1”; the list above holds the others.")
+                         .arg(m_lessonBox->itemText(index));
+        m_about->setText(about);
         m_text->clear();
         m_rows.clear();
         buildQuestions();
@@ -197,9 +241,11 @@ void LessonPlayer::showStep()
     if (!l.level.isEmpty() || l.minutes > 0)
         about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l.level).arg(l.minutes);
     m_about->setText(about);
+    // The summary introduces the lesson; on the later steps their text has its room.
+    m_about->setVisible(m_step == 0);
     m_progress->setRange(0, static_cast<int>(l.steps.size()));
     m_progress->setValue(m_step + 1);
-    m_progress->setFormat(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
+    m_stepCount->setText(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
     m_stepTitle->setText(s.title);
     m_text->setMarkdown(s.text);
     m_back->setEnabled(m_step > 0);
@@ -226,7 +272,10 @@ void LessonPlayer::buildQuestions()
         auto* prompt = new QLabel(q.prompt, box);
         prompt->setWordWrap(true);
         v->addWidget(prompt);
+        // The answer and its unit on a line of their own, the buttons below: side by side
+        // they left the answer a few letters wide in a narrow column.
         auto* row = new QHBoxLayout;
+        auto* buttons = new QHBoxLayout;
         auto* edit = new QLineEdit(box);
         // No validator: it would drop the separator the locale does not use ("0.0156" typed
         // in Czech became 00156). What was typed is read when it is checked, point or comma.
@@ -234,11 +283,12 @@ void LessonPlayer::buildQuestions()
         row->addWidget(edit, 1);
         row->addWidget(new QLabel(q.unit, box));
         auto* check = new QPushButton(tr("Check"), box);
-        row->addWidget(check);
+        buttons->addWidget(check);
         auto* show = new QPushButton(tr("Show me"), box);
         show->setToolTip(tr("Give up and show the measured value"));
-        row->addWidget(show);
+        buttons->addWidget(show);
         v->addLayout(row);
+        v->addLayout(buttons);
         auto* result = new QLabel(box);
         result->setWordWrap(true);
         v->addWidget(result);

@@ -41,6 +41,9 @@ public:
     QStringList lessonPaths() const { return m_paths; }
     /// Per lessonPaths() entry, its menu line: "1. Title — description (≈N min)".
     QStringList lessonMenuTexts() const { return m_menuTexts; }
+    /// The lesson to begin with, in teaching order; empty when there is none. The one place
+    /// that decides it.
+    QString firstLessonPath() const;
 
     /// The answer box and result line of question i of the current step (for tests).
     void answer(int question, const QString& text);
@@ -86,6 +89,7 @@ private:
     QLabel* m_title;
     QLabel* m_about;
     QProgressBar* m_progress;
+    QLabel* m_stepCount; ///< "Step 2 of 4", beside the progress bar
     QLabel* m_stepTitle;
     QTextBrowser* m_text;
     QWidget* m_questionBox;
@@ -95,6 +99,7 @@ private:
     QPushButton* m_restart;
     QPushButton* m_next;
     QPushButton* m_export;
+    QPushButton* m_start; ///< opens the first lesson; shown while none is open
     struct QuestionRow {
         QLineEdit* edit = nullptr;
         QLabel* result = nullptr;

@@ -570,14 +570,18 @@ void MainWindow::updateStatus()
         m_statusRate->setText(tr("running"));
     // Drift is the numerical error alone: what contacts, friction, drag and dampers took is
     // physics, said apart.
-    QString drift = tr("energy drift (numerical error) %1 %")
-                        .arg(locale.toString(m_controller->driftPercent(), 'g', 3));
+    // On a projector, in short: the line must fit 1024 pixels at one and a half times the size.
+    QString drift =
+        (m_presentation ? tr("energy drift %1 %") : tr("energy drift (numerical error) %1 %"))
+            .arg(locale.toString(m_controller->driftPercent(), 'g', 3));
     const double lost = m_controller->dissipated();
     if (std::abs(lost) > 1e-9)
-        drift += tr(" · dissipated by contacts, friction, drag and dampers %1 J")
+        drift += (m_presentation ? tr(" · dissipated %1 J")
+                                 : tr(" · dissipated by contacts, friction, drag and dampers %1 J"))
                      .arg(locale.toString(lost, 'g', 3));
-    // The adaptive integrator's own estimate of its local error, live.
-    if (const auto estimate = w.integrator().errorEstimate())
+    // The adaptive integrator's own estimate of its local error, live (a developer's detail,
+    // not shown on a projector).
+    if (const auto estimate = w.integrator().errorEstimate(); estimate && !m_presentation)
         drift += tr(" · %1 error estimate %2 (%3 substeps)")
                      .arg(QString::fromUtf8(physics::integratorName(w.def().integrator).data()))
                      .arg(locale.toString(*estimate, 'g', 2))

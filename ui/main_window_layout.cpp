@@ -228,10 +228,15 @@ void MainWindow::setPresentation(bool on)
         plot->setPresentation(on);
     for (QToolBar* bar : findChildren<QToolBar*>())
         bar->setIconSize(on ? QSize(32, 32) : QSize());
+    // Icons alone where there are icons (their tooltips name them), so that every action fits
+    // a 1024-pixel projector's width at the larger text instead of hiding behind "»".
+    if (auto* bar = findChild<QToolBar*>(QStringLiteral("simulationToolbar")))
+        bar->setToolButtonStyle(on ? Qt::ToolButtonIconOnly : Qt::ToolButtonTextBesideIcon);
     // No developer details on a projector.
     setDetailsShown(!on);
     m_view->scene()->update();
     m_view->viewport()->update();
+    updateStatus(); // the short status line of presentation mode, or the full one
     if (on) {
         showFullScreen();
     } else {

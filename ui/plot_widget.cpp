@@ -33,6 +33,8 @@ constexpr double kPresentationAxisLabelPt = 18;
 constexpr double kPresentationTickLabelPt = 16;
 constexpr double kPresentationLegendPt = 16;
 constexpr double kPresentationTitlePt = 20;
+/// Ticks an axis has at most (QCPAxisTicker's default); fewer where their labels would meet.
+constexpr int kTickCount = 5;
 
 /// In window mode points are kept this fraction of the window longer than shown, so a
 /// curve enters from the left edge instead of starting inside the plot.
@@ -114,7 +116,10 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
                 &PlotWidget::onRangeChanged);
     connect(m_plot, &QCustomPlot::mouseDoubleClick, this, &PlotWidget::follow);
     // The graphs get what the axes show, decimated to the pixels, just before each replot.
-    connect(m_plot, &QCustomPlot::beforeReplot, this, [this] { prepareGraphs(); });
+    connect(m_plot, &QCustomPlot::beforeReplot, this, [this] {
+        fitTicks();
+        prepareGraphs();
+    });
 
     m_followButton->setText(tr("Follow"));
     m_followButton->setToolTip(tr("Follow the run again (or double-click the plot)"));
@@ -270,12 +275,37 @@ int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::S
 
 void PlotWidget::fitLegend(int widthPx)
 {
+    QCPLegend* legend = m_plot->legend;
+    if (legend->itemCount() == 0)
+        return;
+    if (!m_presentation) {
+        wrapLegend(widthPx);
+        return;
+    }
+    // Presentation mode: the largest legend text, from its own size down to the window's
+    // plain one, that leaves the curves the plot's height: one line, or at most a fifth of
+    // the plot (a narrow dock on a 1024-pixel projector would otherwise stack five lines).
+    const QFont base = font();
+    for (double pt = kPresentationLegendPt;; pt -= 1) {
+        legend->setFont(sized(base, pt));
+        const int rows = wrapLegend(widthPx);
+        const int height = rows * (QFontMetrics(legend->font()).height() + legend->rowSpacing());
+        int widest = 0;
+        for (int i = 0; i < legend->itemCount(); ++i)
+            if (const QCPAbstractLegendItem* item = legend->item(i))
+                widest = std::max(widest, item->minimumOuterSizeHint().width());
+        const bool fits = widest <= widthPx - legend->margins().left() - legend->margins().right();
+        if ((fits && (rows <= 1 || height <= m_plot->height() / 5)) || pt <= kLegendPt)
+            break;
+    }
+}
+
+int PlotWidget::wrapLegend(int widthPx)
+{
     // As many legend columns as fit the width; more entries wrap to a second line rather
     // than being cut off.
     QCPLegend* legend = m_plot->legend;
     const int count = legend->itemCount();
-    if (count == 0)
-        return;
     std::vector<int> widths;
     for (int i = 0; i < count; ++i) {
         // Once wrapped, the grid may hold empty cells: item() is null there.
@@ -299,6 +329,33 @@ void PlotWidget::fitLegend(int widthPx)
     if (columns != legend->wrap() || legend->columnCount() > columns) {
         legend->setWrap(columns);
         legend->setFillOrder(QCPLayoutGrid::foColumnsFirst, true);
+    }
+    return (count + columns - 1) / columns;
+}
+
+void PlotWidget::fitTicks()
+{
+    // No more ticks than their labels have room for, a blank of one line's height between
+    // two: on a narrow plot with presentation-sized labels, "0 2 4 6 8 10" ran together.
+    for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis, m_plot->yAxis2}) {
+        if (!axis->visible() || !axis->tickLabels() || !axis->ticker())
+            continue;
+        const QFontMetrics fm(axis->tickLabelFont());
+        const bool horizontal = axis->orientation() == Qt::Horizontal;
+        int label = fm.height();
+        if (horizontal) {
+            label = fm.horizontalAdvance(QStringLiteral("00.0"));
+            for (const QString& text : axis->tickVectorLabels())
+                label = std::max(label, fm.horizontalAdvance(text));
+        }
+        const QRect area = axis->axisRect()->rect();
+        const int length = horizontal ? area.width() : area.height();
+        if (length <= 0)
+            continue;
+        // The ticker makes about tickCount + 1 intervals of a round size, sometimes a little
+        // shorter than asked for: one tick fewer than would just fit.
+        const int fit = length / (label + fm.height()) - 1;
+        axis->ticker()->setTickCount(std::clamp(fit, 2, kTickCount));
     }
 }
 
@@ -677,6 +734,7 @@ void PlotWidget::setPresentation(bool on)
     const QFont base = font();
     m_title->setFont(sized(base, on ? kPresentationTitlePt : kTitlePt, true));
     m_plot->legend->setFont(sized(base, on ? kPresentationLegendPt : kLegendPt));
+    fitLegend(m_plot->width());
     for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis, m_plot->yAxis2}) {
         axis->setLabelFont(sized(base, on ? kPresentationAxisLabelPt : kAxisLabelPt));
         axis->setTickLabelFont(sized(base, on ? kPresentationTickLabelPt : kTickLabelPt));

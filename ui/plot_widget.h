@@ -179,6 +179,8 @@ public:
     void prepareGraphs(int columns = 0);
     /// Wraps the legend into as many columns as fit `widthPx` (the widget's width on screen;
     /// the export size while exporting).
+    /// In presentation mode its text also shrinks (to the plain size at least) until it takes
+    /// one line or at most a fifth of the plot's height.
     void fitLegend(int widthPx);
 
     /// Presentation mode: larger titles, axis labels (18 pt) and legend, curves at least
@@ -214,6 +216,10 @@ private:
         QCPItemText* label = nullptr; ///< owned by m_plot
     };
 
+    /// Wraps the legend into columns that fit `widthPx`; returns its rows.
+    int wrapLegend(int widthPx);
+    /// Fewer ticks on an axis too short for the usual count's labels, so they never overlap.
+    void fitTicks();
     int addGraph(const QString& name, const QColor& color, PlotSeries::SampleValue value,
                  YAxis axis);
     void appendTo(PlotSeries& series, double t, double value);

@@ -24,6 +24,7 @@ constexpr double kIntervalOffset = 8.0;
 constexpr double kIntervalWidth = 7.0;
 constexpr double kSpanWidth = 6.0;
 constexpr double kLabelPadding = 4.0;
+constexpr double kLabelSlack = 4.0; ///< [px]
 constexpr double kArrowLength = 50.0;
 /// Labels wrap at this width [px], so that they fit beside the shapes in a narrow view.
 constexpr double kLabelWidth = 150.0;
@@ -42,9 +43,12 @@ QPen pen(QColor c, double w, Qt::PenStyle s = Qt::SolidLine)
     return p;
 }
 
-QFont labelFont()
+/// The view's font, bold. Measured and painted with the same, fully resolved font: QPainter
+/// resolves a default QFont() against the view's, which presentation mode makes 1.5 times
+/// larger, and a box measured with the application's font then cut the label's end ("m").
+QFont labelFont(const QFont& viewFont)
 {
-    QFont f;
+    QFont f = viewFont;
     f.setBold(true);
     return f;
 }
@@ -52,12 +56,14 @@ QFont labelFont()
 /// The scene rect of a text box of `text` whose side nearest `anchor` touches it, placed
 /// from the anchor along the unit scene direction `dir`, for a view at px metres per pixel
 /// (y up in the scene, down on screen).
-QRectF labelBox(const QString& text, const QPointF& anchor, const QPointF& dir, double px)
+QRectF labelBox(const QString& text, const QFont& font, const QPointF& anchor, const QPointF& dir,
+                double px)
 {
-    const QSizeF size = QFontMetricsF(labelFont())
-                            .boundingRect(QRectF(0, 0, kLabelWidth, 1e4), kLabelFlags, text)
-                            .size() +
-                        QSizeF(2 * kLabelPadding, 2 * kLabelPadding);
+    const QSizeF size =
+        QFontMetricsF(font).boundingRect(QRectF(0, 0, kLabelWidth, 1e4), kLabelFlags, text).size() +
+        // A little slack: text painted on the screen may lay out a pixel wider than measured
+        // here, and its last word ("m") then wrapped onto a line the box had no room for.
+        QSizeF(2 * kLabelPadding + kLabelSlack, 2 * kLabelPadding);
     // The box's half extent along dir, so that its centre sits that far past the anchor.
     const double d =
         0.5 * size.width() * std::abs(dir.x()) + 0.5 * size.height() * std::abs(dir.y());
@@ -66,7 +72,8 @@ QRectF labelBox(const QString& text, const QPointF& anchor, const QPointF& dir, 
     return QRectF(centre - QPointF(world.width(), world.height()) / 2, world);
 }
 
-void drawLabel(QPainter* p, const QString& text, const QRectF& sceneRect, const QColor& colour)
+void drawLabel(QPainter* p, const QString& text, const QFont& font, const QRectF& sceneRect,
+               const QColor& colour)
 {
     const QRectF device = p->worldTransform().mapRect(sceneRect);
     p->save();
@@ -74,7 +81,7 @@ void drawLabel(QPainter* p, const QString& text, const QRectF& sceneRect, const 
     p->setPen(pen(colour, 1.0));
     p->setBrush(theme::worldLabelBox());
     p->drawRect(device);
-    p->setFont(labelFont());
+    p->setFont(font);
     p->drawText(device.adjusted(kLabelPadding, kLabelPadding, -kLabelPadding, -kLabelPadding),
                 kLabelFlags, text);
     p->restore();
@@ -109,6 +116,11 @@ double SatOverlayItem::pixelSize() const
             return 1.0 / s;
     }
     return 0.01;
+}
+
+QFont SatOverlayItem::viewFont() const
+{
+    return scene() && !scene()->views().isEmpty() ? scene()->views().constFirst()->font() : QFont();
 }
 
 SatOverlayItem::Geometry SatOverlayItem::geometry(double px) const
@@ -173,7 +185,7 @@ SatOverlayItem::Geometry SatOverlayItem::geometry(double px) const
         g.label += QLatin1Char('\n') +
                    tr("least overlap: axis %1, the contact normal (arrow)").arg(r.leastAxis + 1);
     const QPointF mid = onAxis(0.5 * (lo + hi), kIntervalOffset + kIntervalWidth / 2 + 6);
-    g.labelRect = labelBox(g.label, mid, qt(t), px);
+    g.labelRect = labelBox(g.label, labelFont(viewFont()), mid, qt(t), px);
 
     g.drawn = g.shapes | lineRect(g.axisLine, 2 * px) |
               lineRect(g.projectionA, kIntervalWidth / 2 * px) |
@@ -313,7 +325,7 @@ void SatOverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget
             p->drawLine(tip, tip - 10 * px * u - 5 * px * v);
         }
     }
-    drawLabel(p, g.label, g.labelRect, spanColour);
+    drawLabel(p, g.label, labelFont(viewFont()), g.labelRect, spanColour);
 }
 
 } // namespace rigidlab::ui

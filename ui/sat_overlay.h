@@ -15,6 +15,7 @@
 #include "rigidlab/physics/sat.h"
 
 #include <QCoreApplication>
+#include <QFont>
 #include <QGraphicsItem>
 #include <QLineF>
 #include <QRectF>
@@ -64,6 +65,8 @@ public:
 
     /// The geometry for a view at `px` metres per pixel.
     Geometry geometry(double px) const;
+    /// The font of the view showing the item (larger in presentation mode).
+    QFont viewFont() const;
     /// The geometry in the view that shows this item now (for tests and the panel's fit).
     Geometry geometry() const { return geometry(pixelSize()); }
     /// Metres per pixel of the first view showing the scene (0.01 without one).

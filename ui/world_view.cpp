@@ -125,12 +125,23 @@ void WorldView::syncPoses()
         const physics::Vec2 o = b.origin() + (g.variant + 1) * m_controller.variantOffset();
         g.item->setPose(o.x(), o.y(), b.angle);
     }
+    if (const int stopped = stoppedCount(); stopped != m_stoppedCount) {
+        // A world stopped: what auto-fit widened to follow it is given back, so that the
+        // worlds still running are shown as large as at the start.
+        m_stoppedCount = stopped;
+        if (m_autoFit && !m_startFit.isEmpty()) {
+            m_fitted = m_startFit | (contentRect() & m_fitLimit);
+            showRect(m_fitted);
+        }
+    }
     if (m_autoFit && !m_fitted.isEmpty()) {
         // Follow bodies that leave the fitted area, by widening it (within the limit).
         const QRectF wanted = (m_fitted | contentRect()) & m_fitLimit;
         if (!m_fitted.contains(wanted)) {
             m_fitted |= wanted;
             showRect(m_fitted);
+        } else if (legendHeight() != m_legendReserved) {
+            showRect(m_fitted); // a world stopped: its legend line grew, the bodies move down
         }
     }
     m_overlays->refresh();
@@ -148,24 +159,30 @@ void WorldView::selectBody(int id)
 
 QRectF WorldView::contentRect() const
 {
+    // A world that stopped (diverged) is left out: its bodies may lie a billion metres away,
+    // and following them would shrink the worlds still running to a dot.
     QRectF box;
-    for (const BodyItem* item : m_items)
-        box |= item->sceneBoundingRect();
-    for (const Ghost& g : m_ghosts)
-        box |= g.item->sceneBoundingRect();
     const physics::World& w = m_controller.world();
+    if (!w.divergence())
+        for (const BodyItem* item : m_items)
+            box |= item->sceneBoundingRect();
+    for (const Ghost& g : m_ghosts)
+        if (!m_controller.variant(g.variant).divergence())
+            box |= g.item->sceneBoundingRect();
     auto add = [&](physics::BodyId id, const physics::Vec2& anchor) {
         const physics::Vec2 p =
             id == physics::kWorld ? anchor : w.body(id).transform().apply(anchor);
         box |= QRectF(QPointF(p.x(), p.y()), QSizeF(1e-6, 1e-6));
     };
-    for (const physics::SpringDef& s : w.springs()) {
-        add(s.a, s.anchorA);
-        add(s.b, s.anchorB);
-    }
-    for (const physics::PinJointDef& j : w.joints()) {
-        add(j.a, j.anchorA);
-        add(j.b, j.anchorB);
+    if (!w.divergence()) {
+        for (const physics::SpringDef& s : w.springs()) {
+            add(s.a, s.anchorA);
+            add(s.b, s.anchorB);
+        }
+        for (const physics::PinJointDef& j : w.joints()) {
+            add(j.a, j.anchorA);
+            add(j.b, j.anchorB);
+        }
     }
     if (m_fitExtra)
         box |= m_fitExtra();
@@ -182,6 +199,8 @@ void WorldView::fitScene()
     const QPointF c = m_fitted.center();
     const double span = 8.0 * std::max({m_fitted.width(), m_fitted.height(), 1.0});
     m_fitLimit = QRectF(c - QPointF(span, span) / 2, QSizeF(span, span));
+    m_startFit = m_fitted;
+    m_stoppedCount = stoppedCount();
     showRect(m_fitted);
     // A panel's drawing may be sized partly in pixels: measure it again at the new zoom.
     for (int round = 0; round < 4 && m_fitExtra && !m_fitted.contains(contentRect()); ++round) {
@@ -203,6 +222,7 @@ void WorldView::fitRect(QRectF worldRect, double marginPx)
     m_autoFit = true;
     m_fitted = worldRect.adjusted(-m, -m, m, m);
     m_fitLimit = m_fitted;
+    m_startFit = m_fitted;
 }
 
 void WorldView::showRect(QRectF box)
@@ -211,8 +231,18 @@ void WorldView::showRect(QRectF box)
         return;
     const double margin = 0.08 * std::max(box.width(), box.height()) + 0.05;
     box.adjust(-margin, -margin, margin, margin);
-    setZoom(std::min(viewport()->width() / box.width(), viewport()->height() / box.height()));
-    centerOn(box.center());
+    // The legend of compared worlds takes the top of the view: the bodies go below it.
+    //   +------------------+
+    //   | legend           |  top
+    //   |------------------|
+    //   |   box, centred   |  height - top
+    //   +------------------+
+    m_legendReserved = legendHeight();
+    const int top = std::min(m_legendReserved, viewport()->height() / 2);
+    setZoom(
+        std::min(viewport()->width() / box.width(), (viewport()->height() - top) / box.height()));
+    // Screen up is world +y: the view's centre lies half the legend above the box's centre.
+    centerOn(box.center() + QPointF(0, 0.5 * top / zoom()));
 }
 
 void WorldView::setZoom(double pixelsPerMetre)
@@ -364,47 +394,116 @@ void WorldView::drawForeground(QPainter* painter, const QRectF&)
     painter->drawLine(o, o + QPoint(len, 0));
     painter->drawLine(o + QPoint(0, -5), o + QPoint(0, 5));
     painter->drawLine(o + QPoint(len, -5), o + QPoint(len, 5));
-    QFont f = font();
-    f.setPointSizeF(f.pointSizeF() * 1.1);
+    const QFont f = legendFont();
     painter->setFont(f);
     const QString label = nice >= 1 ? tr("%1 m").arg(QLocale().toString(nice))
                                     : tr("%1 cm").arg(QLocale().toString(nice * 100));
     painter->drawText(o + QPoint(len + 8, 5), label);
+    const QFontMetrics fm(legendFont());
 
-    // Which colour is which world, when worlds are compared; a stopped one says why.
-    const QFontMetrics fm(f);
-    const int width = std::max(120, viewport()->width() - 56);
-    int y = 12;
-    for (int i = 0; i < worldCount(); ++i) {
-        const QString line = legendLine(i);
-        const QRect box = fm.boundingRect(QRect(42, y, width, 10000), Qt::TextWordWrap, line);
-        painter->fillRect(QRect(14, y + 2, 22, fm.ascent() - 4), plotColor(i));
+    // Which colour is which world, when worlds are compared; a stopped one says why. Each line
+    // on a box of the background's colour: the grid (or a body) behind it does not lower its
+    // contrast.
+    const std::vector<QRect> lines = legendLayout();
+    for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
+        const QRect& box = lines[static_cast<std::size_t>(i)];
+        painter->fillRect(box.adjusted(-30, -1, 3, 1), theme::worldLabelBox());
+        painter->fillRect(QRect(14, box.top() + 2, 22, fm.ascent() - 4), plotColor(i));
         painter->setPen(stoppedWorld(i) ? theme::worldAlertText() : theme::worldText());
-        painter->drawText(box, Qt::TextWordWrap, line);
-        y = box.bottom() + 3;
+        painter->drawText(box, Qt::TextWordWrap, legendLine(i));
     }
     // Beside each stopped ghost, in a box of the background's colour (it may lie over bodies
-    // or off the view, so it is kept inside).
+    // or off the view, so it is kept inside), below the one before where they would meet.
+    const std::vector<QRect> labels = stoppedLabelRects();
+    int k = 0;
     for (int v = 0; v < m_controller.variantCount(); ++v) {
-        const auto& d = m_controller.variant(v).divergence();
-        const auto ghost = std::find_if(m_ghosts.begin(), m_ghosts.end(),
-                                        [v](const Ghost& g) { return g.variant == v; });
-        if (!d || ghost == m_ghosts.end())
+        if (!m_controller.variant(v).divergence() || !ghostOf(v))
             continue;
-        const QString label = tr("%1 stopped").arg(m_controller.variantLabels().value(v + 1));
-        QRect box = fm.boundingRect(label).adjusted(-4, -2, 4, 2);
-        const QPoint at = mapFromScene(ghost->item->sceneBoundingRect().topRight());
+        const QRect& box = labels[static_cast<std::size_t>(k++)];
+        painter->fillRect(box, theme::worldLabelBox());
+        painter->setPen(theme::worldAlertText());
+        painter->drawText(box, Qt::AlignCenter, stoppedLabel(v));
+    }
+    painter->restore();
+}
+
+QFont WorldView::legendFont() const
+{
+    QFont f = font();
+    f.setPointSizeF(f.pointSizeF() * 1.1);
+    return f;
+}
+
+std::vector<QRect> WorldView::legendLayout() const
+{
+    const QFontMetrics fm(legendFont());
+    const int width = std::max(120, viewport()->width() - 56);
+    std::vector<QRect> out;
+    int y = 12;
+    for (int i = 0; i < worldCount(); ++i) {
+        const QRect box =
+            fm.boundingRect(QRect(42, y, width, 10000), Qt::TextWordWrap, legendLine(i));
+        out.push_back(box);
+        y = box.bottom() + 3;
+    }
+    return out;
+}
+
+int WorldView::legendHeight() const
+{
+    const std::vector<QRect> lines = legendLayout();
+    return lines.empty() ? 0 : lines.back().bottom() + 4;
+}
+
+int WorldView::stoppedCount() const
+{
+    int n = m_controller.world().divergence() ? 1 : 0;
+    for (int v = 0; v < m_controller.variantCount(); ++v)
+        n += m_controller.variant(v).divergence() ? 1 : 0;
+    return n;
+}
+
+const BodyItem* WorldView::ghostOf(int variant) const
+{
+    const auto ghost = std::find_if(m_ghosts.begin(), m_ghosts.end(),
+                                    [variant](const Ghost& g) { return g.variant == variant; });
+    return ghost == m_ghosts.end() ? nullptr : ghost->item;
+}
+
+QString WorldView::stoppedLabel(int variant) const
+{
+    return tr("%1 stopped").arg(m_controller.variantLabels().value(variant + 1));
+}
+
+std::vector<QRect> WorldView::stoppedLabelRects() const
+{
+    const QFontMetrics fm(legendFont());
+    const QRect inside = viewport()->rect().adjusted(4, legendHeight(), -4, -30);
+    std::vector<QRect> out;
+    for (int v = 0; v < m_controller.variantCount(); ++v) {
+        const BodyItem* ghost = ghostOf(v);
+        if (!m_controller.variant(v).divergence() || !ghost)
+            continue;
+        QRect box = fm.boundingRect(stoppedLabel(v)).adjusted(-4, -2, 4, 2);
+        const QPoint at = mapFromScene(ghost->sceneBoundingRect().topRight());
         box.moveTopLeft(at + QPoint(6, -box.height()));
-        const QRect inside = viewport()->rect().adjusted(4, y, -4, -30);
         box.moveLeft(std::clamp(box.left(), inside.left(),
                                 std::max(inside.left(), inside.right() - box.width())));
         box.moveTop(std::clamp(box.top(), inside.top(),
                                std::max(inside.top(), inside.bottom() - box.height())));
-        painter->fillRect(box, theme::worldLabelBox());
-        painter->setPen(theme::worldAlertText());
-        painter->drawText(box, Qt::AlignCenter, label);
+        // Stacked below any label it would meet (a ghost that flew off is pinned to an edge,
+        // where the others are too).
+        for (bool moved = true; moved;) {
+            moved = false;
+            for (const QRect& other : out)
+                if (box.intersects(other)) {
+                    box.moveTop(other.bottom() + 3);
+                    moved = true;
+                }
+        }
+        out.push_back(box);
     }
-    painter->restore();
+    return out;
 }
 
 } // namespace rigidlab::ui

@@ -39,6 +39,11 @@ public:
     QString legendLine(int world) const;
     /// Whether that world stopped with a diagnosis.
     bool stoppedWorld(int world) const;
+    /// Where the legend's lines are drawn, one for each world, in viewport pixels.
+    std::vector<QRect> legendLayout() const;
+    /// Where the "… stopped" labels beside the stopped ghosts are drawn, in the order of the
+    /// compared worlds, in viewport pixels; they never overlap.
+    std::vector<QRect> stoppedLabelRects() const;
 
     /// Shows `worldRect` [m] in the whole viewport with `marginPx` pixels to spare on each
     /// side, and keeps it shown on resize (as Fit scene does) until the user pans or zooms.
@@ -72,6 +77,14 @@ private:
     /// Shows `box` (grown by a margin) in the whole viewport.
     void showRect(QRectF box);
     void setZoom(double pixelsPerMetre);
+    QFont legendFont() const;
+    /// The legend's height from the top of the view [px], 0 without one.
+    int legendHeight() const;
+    /// How many worlds (the main one and the compared ones) stopped.
+    int stoppedCount() const;
+    /// The item drawing compared world `variant`'s first body, or nullptr.
+    const BodyItem* ghostOf(int variant) const;
+    QString stoppedLabel(int variant) const;
 
     SimulationController& m_controller;
     QGraphicsScene* m_scene;
@@ -85,9 +98,12 @@ private:
     std::vector<Ghost> m_ghosts;
     int m_selected = -1;
     bool m_panning = false;
-    bool m_autoFit = true; ///< fit the scene on resize until the user pans or zooms
-    QRectF m_fitted;       ///< what auto-fit shows; it widens to follow bodies, up to a limit
-    QRectF m_fitLimit;     ///< auto-fit never widens beyond this
+    bool m_autoFit = true;    ///< fit the scene on resize until the user pans or zooms
+    QRectF m_fitted;          ///< what auto-fit shows; it widens to follow bodies, up to a limit
+    QRectF m_fitLimit;        ///< auto-fit never widens beyond this
+    QRectF m_startFit;        ///< what the last fit showed before any widening
+    int m_stoppedCount = 0;   ///< worlds stopped when auto-fit last looked
+    int m_legendReserved = 0; ///< the legend's height the last fit kept free [px]
     QPoint m_lastMouse;
     std::function<QRectF()> m_fitExtra; ///< see setFitExtra
 };

@@ -3,9 +3,12 @@
 // the lesson panel's texts do not overlap; presentation mode is large and thick enough for the
 // back of a room and gives the layout back when it ends.
 
+#include "body_item.h"
 #include "lesson_player.h"
 #include "main_window.h"
 #include "plot_widget.h"
+#include "sat_overlay.h"
+#include "sat_panel.h"
 #include "shipped_lessons.h"
 #include "simulation_controller.h"
 #include "theme.h"
@@ -18,6 +21,7 @@
 #include <QAbstractButton>
 #include <QAbstractSlider>
 #include <QAbstractSpinBox>
+#include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
@@ -26,6 +30,8 @@
 #include <QScrollArea>
 #include <QStatusBar>
 #include <QTableWidget>
+#include <QTextBrowser>
+#include <QToolBar>
 #include <QtTest>
 
 #include "test_main.h"
@@ -202,6 +208,25 @@ void showOn(MainWindow& w, const QSize& screen)
     QCoreApplication::processEvents();
 }
 
+/// The window in presentation mode as a 1024×768 projector shows it (as rigidlab --present
+/// --screenshots makes it: full screen is the offscreen platform's own size).
+void presentOn(MainWindow& w, const QSize& screen)
+{
+    showOn(w, screen);
+    w.setPresentation(true);
+    w.setWindowState(Qt::WindowNoState);
+    w.resize(screen);
+    QCoreApplication::processEvents();
+}
+
+/// Steps the world until `seconds` of simulated time have passed.
+void runFor(ui::SimulationController& c, double seconds)
+{
+    const long long steps = std::llround(seconds / c.world().def().dt);
+    for (long long i = 0; i < steps; ++i)
+        c.stepForward();
+}
+
 } // namespace
 
 class TestClassroom : public QObject {
@@ -314,6 +339,202 @@ private slots:
                      qPrintable(describe(dockPlaces(w), before)));
         for (int i = 0; i < MainWindow::kPlotCount; ++i)
             QVERIFY(w.plot(i)->plot()->xAxis->labelFont().pointSizeF() < 18);
+    }
+
+    // Presentation mode at 1024×768: every toolbar action has its button in sight (none in
+    // the "»" menu), the status line is not cut, and the plots' tick labels do not overlap
+    // nor the legend take the curves' height.
+    void presentationFitsAProjector()
+    {
+        MainWindow w;
+        presentOn(w, QSize(1024, 768));
+        QCOMPARE(w.openScene(MainWindow::scenesFolder() + QStringLiteral("/welcome.json"), true),
+                 QString());
+        runFor(w.controller(), 2.0);
+        QMetaObject::invokeMethod(&w, "updateStatus");
+        for (int i = 0; i < MainWindow::kPlotCount; ++i)
+            w.plot(i)->drain();
+        QCoreApplication::processEvents();
+        QVERIFY(w.presentation());
+        QCOMPARE(w.size(), QSize(1024, 768));
+
+        for (const QToolBar* bar : w.findChildren<QToolBar*>()) {
+            if (!bar->isVisible())
+                continue;
+            for (QAction* a : bar->actions()) {
+                if (a->isSeparator() || !a->isVisible())
+                    continue;
+                const QWidget* button = bar->widgetForAction(a);
+                QVERIFY2(button && button->isVisible() &&
+                             bar->rect().contains(QRect(button->pos(), button->size())),
+                         qPrintable(bar->objectName() + QStringLiteral(": ") + a->text()));
+            }
+            const auto* more = bar->findChild<QWidget*>(QStringLiteral("qt_toolbar_ext_button"));
+            QVERIFY2(!more || !more->isVisible(), qPrintable(bar->objectName()));
+        }
+
+        QVERIFY(!w.statusText().isEmpty());
+        for (const QLabel* label : w.statusBar()->findChildren<QLabel*>()) {
+            if (!label->isVisible() || label->text().isEmpty())
+                continue;
+            const QRect r(label->mapTo(&w, QPoint(0, 0)), label->size());
+            QVERIFY2(label->width() >= label->sizeHint().width() && w.rect().contains(r),
+                     qPrintable(QStringLiteral("\"%1\": %2 of %3 px")
+                                    .arg(label->text())
+                                    .arg(label->width())
+                                    .arg(label->sizeHint().width())));
+        }
+
+        QCustomPlot* energy = w.plot(0)->plot();
+        QVERIFY(energy->isVisible());
+        energy->replot();
+        energy->replot(); // the ticks follow the labels' width measured by the replot before
+        for (QCPAxis* axis : {energy->xAxis, energy->yAxis}) {
+            const QVector<double> ticks = axis->tickVector();
+            const QVector<QString> labels = axis->tickVectorLabels();
+            QVERIFY(ticks.size() >= 2);
+            const QFontMetrics fm(axis->tickLabelFont());
+            for (qsizetype i = 1; i < ticks.size(); ++i) {
+                const double apart =
+                    std::abs(axis->coordToPixel(ticks[i]) - axis->coordToPixel(ticks[i - 1]));
+                const double needed = axis->orientation() == Qt::Horizontal
+                                          ? 0.5 * (fm.horizontalAdvance(labels[i - 1]) +
+                                                   fm.horizontalAdvance(labels[i]))
+                                          : fm.height();
+                QVERIFY2(apart > needed,
+                         qPrintable(labels[i - 1] + QStringLiteral(" and ") + labels[i]));
+            }
+        }
+        QVERIFY2(energy->legend->outerRect().height() <= energy->height() / 4,
+                 qPrintable(QStringLiteral("legend %1 of %2 px")
+                                .arg(energy->legend->outerRect().height())
+                                .arg(energy->height())));
+        QVERIFY(energy->legend->outerRect().right() <= energy->width());
+    }
+
+    // On a first start (fresh settings, no lesson) the Lesson dock is a start page: what the
+    // lab is, and a button that opens the first lesson.
+    void firstStartShowsTheWayIn()
+    {
+        MainWindow w;
+        showOn(w, QSize(1024, 768));
+        QVERIFY(!w.lessonPlayer().lesson());
+        QDockWidget* dock = w.dock(QStringLiteral("lesson"));
+        QVERIFY(dock && dock->isVisible());
+        // No empty box: every visible text widget of the dock says something.
+        int words = 0;
+        for (const QLabel* label : dock->findChildren<QLabel*>())
+            if (label->isVisible())
+                words += static_cast<int>(label->text().split(QLatin1Char(' ')).size());
+        QVERIFY2(words >= 20, qPrintable(QString::number(words)));
+        for (const QTextBrowser* text : dock->findChildren<QTextBrowser*>())
+            QVERIFY(!text->isVisible() || !text->document()->isEmpty());
+        auto* start = dock->findChild<QPushButton*>(QStringLiteral("startFirstLesson"));
+        QVERIFY(start && start->isVisible());
+        const QString first = w.lessonPlayer().firstLessonPath();
+        QVERIFY2(shippedLessons().contains(first), qPrintable(first));
+        start->click();
+        QVERIFY(w.lessonPlayer().lesson());
+        QCOMPARE(QFileInfo(w.lessonPlayer().lesson()->path).canonicalFilePath(),
+                 QFileInfo(first).canonicalFilePath());
+        QCOMPARE(w.lessonPlayer().stepIndex(), 0);
+        QVERIFY(!start->isVisible());
+    }
+
+    // Stiff springs, steps 3 and 4: worlds stop one after another. The view keeps the worlds
+    // still running as large as at the start (their stopped neighbours flew a billion metres
+    // away), the legend hides none of their bodies, and the "stopped" labels do not overprint.
+    void stoppedWorldsStayReadable_data()
+    {
+        QTest::addColumn<bool>("present");
+        QTest::newRow("window") << false;
+        QTest::newRow("presentation") << true;
+    }
+    void stoppedWorldsStayReadable()
+    {
+        QFETCH(bool, present);
+        MainWindow w;
+        if (present)
+            presentOn(w, QSize(1024, 768));
+        else
+            showOn(w, QSize(1024, 768));
+        QString stiff;
+        for (const QString& path : shippedLessons())
+            if (path.contains(QLatin1String("stiff")))
+                stiff = path;
+        QCOMPARE(w.openLesson(stiff, true), QString());
+        for (int step : {2, 3}) {
+            w.lessonPlayer().goToStep(step);
+            QCoreApplication::processEvents();
+            const double zoom = w.view().zoom();
+            runFor(w.controller(), 0.5);
+            QCoreApplication::processEvents();
+            const QString where = QStringLiteral("step %1: ").arg(step + 1);
+            // The legend's lines of the stopped worlds grow and take some height from the
+            // bodies; following the stopped ones zoomed out to the fit's limit, 8 times.
+            QVERIFY2(w.view().zoom() >= 0.5 * zoom,
+                     qPrintable(where +
+                                QStringLiteral("zoom %1, was %2").arg(w.view().zoom()).arg(zoom)));
+            const std::vector<QRect> labels = w.view().stoppedLabelRects();
+            QVERIFY2(labels.size() >= 2, qPrintable(where));
+            for (std::size_t i = 0; i < labels.size(); ++i) {
+                QVERIFY(w.view().viewport()->rect().contains(labels[i]));
+                for (std::size_t j = i + 1; j < labels.size(); ++j)
+                    QVERIFY2(!labels[i].intersects(labels[j]), qPrintable(where));
+            }
+            // The bodies of the worlds that run on lie below the legend.
+            const std::vector<QRect> legend = w.view().legendLayout();
+            QVERIFY(!legend.empty());
+            const int below = legend.back().bottom();
+            const auto* puck = w.view().itemFor(0);
+            QVERIFY(puck);
+            const QRect drawn = w.view().mapFromScene(puck->sceneBoundingRect()).boundingRect();
+            QVERIFY2(drawn.top() > below && w.view().viewport()->rect().contains(drawn),
+                     qPrintable(
+                         where +
+                         QStringLiteral("puck at y %1, legend to %2").arg(drawn.top()).arg(below)));
+        }
+    }
+
+    // The separating axis lesson in presentation mode: the gap or overlap label's box holds
+    // its whole text, the unit included, in the view's (enlarged) font.
+    void satLabelKeepsItsUnit()
+    {
+        MainWindow w;
+        presentOn(w, QSize(1024, 768));
+        QString sat;
+        for (const QString& path : shippedLessons())
+            if (path.contains(QLatin1String("separating")))
+                sat = path;
+        QCOMPARE(w.openLesson(sat, true), QString());
+        int labels = 0;
+        const int count = static_cast<int>(w.lessonPlayer().lesson()->steps.size());
+        for (int step = 0; step < count; ++step) {
+            w.lessonPlayer().goToStep(step);
+            QCoreApplication::processEvents();
+            ui::SatOverlayItem* overlay = w.satPanel().overlay();
+            const ui::SatOverlayItem::Geometry g = overlay->geometry();
+            if (!g.valid)
+                continue;
+            ++labels;
+            const QString where = QStringLiteral("step %1: ").arg(step + 1);
+            QVERIFY2(g.label.contains(QStringLiteral(" m")), qPrintable(where + g.label));
+            QFont font = w.view().font();
+            font.setBold(true);
+            QVERIFY(font.pointSizeF() >= 1.5 * QApplication::font().pointSizeF() - 1e-9);
+            const QSizeF text =
+                QFontMetricsF(font)
+                    .boundingRect(QRectF(0, 0, 150, 1e4), Qt::AlignLeft | Qt::TextWordWrap, g.label)
+                    .size();
+            const QRectF box = w.view().mapFromScene(g.labelRect).boundingRect();
+            QVERIFY2(box.width() + 1 >= text.width() && box.height() + 1 >= text.height(),
+                     qPrintable(where + QStringLiteral("%1x%2 px for %3x%4")
+                                            .arg(box.width())
+                                            .arg(box.height())
+                                            .arg(text.width())
+                                            .arg(text.height())));
+        }
+        QVERIFY(labels >= 2);
     }
 };
 
