@@ -16,6 +16,7 @@
 #include "cpu_state.h"
 #include "diagnostics_compute.h"
 #include "dynamics.h"
+#include "narrow_phase.h"
 #include "world_scratch.h"
 
 #include <algorithm>
@@ -330,52 +331,7 @@ void World::findContacts()
     m_profile.pairs = static_cast<int>(s.pairs.size());
 
     StageTimer narrow(m_profile, Stage::NarrowPhase);
-    size_t old = 0;
-    for (const auto& [ia, ib] : s.pairs) {
-        const Body& a = m_bodies[static_cast<size_t>(ia)];
-        const Body& b = m_bodies[static_cast<size_t>(ib)];
-        // Two bodies at rest (asleep, or asleep on a static one) keep last step's contact.
-        const auto rests = [](const Body& body) {
-            return body.type == BodyType::Static || (body.isDynamic() && !body.awake);
-        };
-        if (rests(a) && rests(b)) {
-            while (old < s.previous.size() &&
-                   std::pair(s.previous[old].a, s.previous[old].b) < std::pair(ia, ib))
-                ++old;
-            if (old < s.previous.size() && s.previous[old].a == ia && s.previous[old].b == ib) {
-                m_contacts.push_back(s.previous[old]);
-                continue;
-            }
-        }
-        Contact c;
-        c.a = ia;
-        c.b = ib;
-        const double pairMargin = margin + sweptMargin(ia) + sweptMargin(ib);
-        c.manifold = collideShapes(a.shape, s.xf[static_cast<size_t>(ia)], b.shape,
-                                   s.xf[static_cast<size_t>(ib)], pairMargin);
-        if (c.manifold.pointCount == 0)
-            continue;
-        // Restitution: the larger of the two; friction: the geometric mean.
-        c.restitution = std::max(a.restitution, b.restitution);
-        c.friction = std::sqrt(a.friction * b.friction);
-        // Warm start: carry last step's impulses to points made by the same features.
-        while (old < s.previous.size() &&
-               std::pair(s.previous[old].a, s.previous[old].b) < std::pair(ia, ib))
-            ++old;
-        if (old < s.previous.size() && s.previous[old].a == ia && s.previous[old].b == ib) {
-            const Contact& p = s.previous[old];
-            for (int i = 0; i < c.manifold.pointCount; ++i)
-                for (int k = 0; k < p.manifold.pointCount; ++k)
-                    if (p.manifold.points[static_cast<size_t>(k)].id ==
-                        c.manifold.points[static_cast<size_t>(i)].id) {
-                        c.normalImpulse[static_cast<size_t>(i)] =
-                            p.normalImpulse[static_cast<size_t>(k)];
-                        c.tangentImpulse[static_cast<size_t>(i)] =
-                            p.tangentImpulse[static_cast<size_t>(k)];
-                    }
-        }
-        m_contacts.push_back(c);
-    }
+    narrowPhase(m_bodies, s.xf, s.pairs, margin, m_sweep, s.previous, m_contacts);
     m_profile.contacts = static_cast<int>(m_contacts.size());
 }
 

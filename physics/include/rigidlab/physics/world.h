@@ -178,9 +178,8 @@ private:
     void sleepIslands();
     void wakeAll();
     /// Pairs for bodies that move more than their own size in a step (continuous.cpp), and
-    /// the speculative margin each body's motion asks for [m].
+    /// the speculative margin each body's motion asks for [m] (m_sweep).
     void addSweptPairs(std::vector<std::pair<int, int>>& pairs);
-    double sweptMargin(int body) const;
     void rememberStartEnergy();
     void checkDivergence();
     /// Gathers the moving bodies' state, lets `fn(dynamics, q, v)` change it, scatters it back.
