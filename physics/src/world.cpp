@@ -15,6 +15,7 @@ namespace rigidlab::physics {
 World::World(const WorldDef& def)
     : m_def(def), m_integrator(makeIntegrator(def.integrator, def.tolerances))
 {
+    assert(withinLimits(def));
 }
 
 World::~World() = default;

@@ -11,6 +11,16 @@
 
 namespace rigidlab::physics {
 
+bool withinLimits(const WorldDef& def)
+{
+    return limits::kGravity.contains(def.gravity.x()) &&
+           limits::kGravity.contains(def.gravity.y()) && limits::kDt.contains(def.dt) &&
+           limits::kIterations.contains(def.iterations) &&
+           limits::kRestitution.contains(def.restitution) &&
+           limits::kFriction.contains(def.friction) &&
+           limits::kGravitation.contains(def.gravitation) && limits::kDrag.contains(def.drag);
+}
+
 BodyId World::addBody(const BodyDef& def)
 {
     Body b;
@@ -78,8 +88,10 @@ void World::setIterations(int n)
 
 void World::setTolerances(const Tolerances& tolerances)
 {
-    assert(limits::kTolerance.contains(tolerances.absolute) &&
-           limits::kTolerance.contains(tolerances.relative));
+    // Positive and finite: the error's scale is absolute + relative |y|. Files and fields
+    // accept limits::kTolerance only, but a test of the method may want looser ones.
+    assert(tolerances.absolute > 0 && tolerances.relative > 0 &&
+           std::isfinite(tolerances.absolute) && std::isfinite(tolerances.relative));
     m_def.tolerances = tolerances;
     m_integrator->setTolerances(tolerances);
 }

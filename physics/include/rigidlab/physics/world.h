@@ -38,6 +38,10 @@ struct WorldDef {
     std::optional<bool> sleep;
 };
 
+/// Whether every number of def is inside its range of limits.h (the tolerances aside: see
+/// World::setTolerances). World's constructor asserts it.
+bool withinLimits(const WorldDef& def);
+
 /// A scene with this many dynamic bodies or more is large: it sleeps unless told otherwise.
 inline constexpr int kLargeSceneBodies = 200;
 
@@ -161,8 +165,11 @@ private:
     struct Scratch;
     /// The velocities at the start of the step, to time bounces within it (contact_response.cpp).
     void rememberStartVelocities();
+    /// Stage::BroadPhase and Stage::NarrowPhase (world.cpp, narrow_phase.cpp).
     void findContacts();
+    /// Stage::Forces and Stage::Integration (integration.cpp).
     void integrate();
+    /// Stage::ContactSolve (contact_response.cpp).
     void solveContacts();
     /// What this step needs, from what the world holds (step_plan.cpp).
     struct Plan {
