@@ -1,4 +1,4 @@
-// Stage 3 of a step: the broad phase (see broad_phase.h).
+// Stage::BroadPhase (profile.h): the broad phase (see broad_phase.h).
 
 #include "broad_phase.h"
 

@@ -1,4 +1,4 @@
-// Stage 5 of a step: collision response by impulses.
+// Stage::ContactSolve (profile.h): collision response by impulses.
 //
 // The seed's impulse (its equations 1.1-1.6): with n from A to B and the relative normal
 // velocity vn = (vB + wB x rB - vA - wA x rA) . n < 0, the impulse

@@ -53,11 +53,6 @@ double ownSize(const Body& b)
 
 } // namespace
 
-double World::sweptMargin(int body) const
-{
-    return m_sweep.empty() ? 0.0 : m_sweep[static_cast<size_t>(body)];
-}
-
 void World::addSweptPairs(std::vector<std::pair<int, int>>& pairs)
 {
     m_sweep.clear();

@@ -1,4 +1,4 @@
-// Stage 6 of a step: the measured quantities.
+// Stage::Diagnostics (profile.h): the measured quantities.
 
 #include "diagnostics_compute.h"
 
@@ -47,6 +47,22 @@ Diagnostics computeDiagnostics(const WorldDef& def, const std::vector<Body>& bod
     d.potential = d.gravityPotential + d.springPotential + d.gravitationPotential;
     d.total = d.kinetic + d.potential;
     return d;
+}
+
+void World::updateDiagnostics()
+{
+    m_diagnostics = computeDiagnostics(m_def, m_bodies, m_springs);
+    m_diagnostics.collisionLoss = m_collisionLoss;
+    m_diagnostics.dragLoss = m_dragLoss;
+    m_diagnostics.dampingLoss = m_dampingLoss;
+    m_diagnostics.dissipated = m_collisionLoss + m_dragLoss + m_dampingLoss;
+    int count = 0;
+    for (const Contact& c : m_contacts)
+        for (int i = 0; i < c.manifold.pointCount; ++i)
+            if (c.manifold.points[static_cast<size_t>(i)].separation <= 0 ||
+                c.normalImpulse[static_cast<size_t>(i)] > 0)
+                ++count;
+    m_diagnostics.contacts = count;
 }
 
 } // namespace rigidlab::physics

@@ -29,6 +29,23 @@ struct Dissipation {
     double damping = 0; ///< dampers of springs
 };
 
+/// The applied force and torque on a dynamic body moving at (v, w): gravity, the user's
+/// accumulators and linear drag. The ODE system's force sum (forces.cpp) and the direct
+/// integration (integration.cpp) both take a body's load from here.
+struct AppliedLoad {
+    Vec2 force = Vec2::Zero(); ///< [N]
+    double torque = 0.0;       ///< [N m]
+};
+inline AppliedLoad appliedLoad(const WorldDef& def, const Body& b, const Vec2& v, double w)
+{
+    AppliedLoad load{b.mass * def.gravity + b.force, b.torque};
+    if (def.drag != 0.0) {
+        load.force -= def.drag * b.mass * v;
+        load.torque -= def.drag * b.inertia * w;
+    }
+    return load;
+}
+
 class Dynamics final : public OdeSystem {
 public:
     Dynamics(const WorldDef& def, const std::vector<Body>& bodies, const std::vector<int>& slot,
@@ -52,6 +69,10 @@ public:
     void projectJointPositions(Eigen::VectorXd& q);
     /// After a step: removes joint-violating velocity (exact, mass-weighted projection).
     void projectJointVelocities(const Eigen::VectorXd& q, Eigen::VectorXd& v);
+    /// After the integrator `kind` stepped (q, v) over h: back onto the joints, SHAKE for
+    /// symplectic Euler and RATTLE for the others (joints.cpp). `before` is scratch space.
+    void projectAfterStep(IntegratorKind kind, double h, Eigen::VectorXd& q, Eigen::VectorXd& v,
+                          Eigen::VectorXd& before);
 
     /// Whether anything dissipates: drag, or a spring with a damper (dissipation.cpp).
     bool dissipates() const;

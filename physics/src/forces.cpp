@@ -1,5 +1,6 @@
-// Stage 1 of a step: the applied forces (the seed's force and torque accumulators, gravity,
-// springs, mutual gravitation, linear drag), turned into accelerations.
+// Stage::Forces (profile.h): the applied forces (the seed's force and torque accumulators,
+// gravity, springs, mutual gravitation, linear drag), turned into accelerations. A body's own
+// load is appliedLoad (dynamics.h).
 
 #include "dynamics.h"
 
@@ -85,15 +86,10 @@ void Dynamics::appliedAccelerations(const Eigen::VectorXd& q, const Eigen::Vecto
         if (!b.isDynamic())
             continue;
         const Eigen::Index i = 3 * static_cast<Eigen::Index>(m_slot[id]);
-        Vec2 f = b.mass * m_def.gravity + b.force;
-        double torque = b.torque;
-        if (m_def.drag != 0.0) {
-            f -= m_def.drag * b.mass * Vec2(v[i], v[i + 1]);
-            torque -= m_def.drag * b.inertia * v[i + 2];
-        }
-        a[i] += f.x();
-        a[i + 1] += f.y();
-        a[i + 2] += torque;
+        const AppliedLoad load = appliedLoad(m_def, b, Vec2(v[i], v[i + 1]), v[i + 2]);
+        a[i] += load.force.x();
+        a[i + 1] += load.force.y();
+        a[i + 2] += load.torque;
     }
 
     // Springs: F = k (L - L0) + c dL/dt along the line between the anchors, pulling A to B.

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace rigidlab::physics {
 
@@ -64,6 +65,10 @@ public:
         }
         q += h * m_w;
         v = 2.0 * m_w - v;
+    }
+    std::unique_ptr<Integrator> clone() const override
+    {
+        return std::make_unique<ImplicitMidpoint>(*this);
     }
     IntegratorKind kind() const override { return IntegratorKind::ImplicitMidpoint; }
     /// Without the Jacobian: the first guess and one residual. Forming the Jacobian costs 2n

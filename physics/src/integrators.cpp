@@ -5,8 +5,10 @@
 #include "rigidlab/physics/integrator.h"
 
 #include "integrators_extra.h"
+#include "symplectic_euler.h"
 
 #include <array>
+#include <memory>
 
 namespace rigidlab::physics {
 
@@ -25,6 +27,10 @@ public:
         q += h * v;
         v += h * m_a;
     }
+    std::unique_ptr<Integrator> clone() const override
+    {
+        return std::make_unique<ExplicitEuler>(*this);
+    }
     IntegratorKind kind() const override { return IntegratorKind::Euler; }
     int evaluationsPerStep() const override { return 1; }
 
@@ -40,8 +46,11 @@ public:
     {
         m_a.resize(v.size());
         sys.acceleration(t, q, v, m_a);
-        v += h * m_a;
-        q += h * v;
+        symplecticEulerUpdate(h, m_a, v, q);
+    }
+    std::unique_ptr<Integrator> clone() const override
+    {
+        return std::make_unique<SymplecticEuler>(*this);
     }
     IntegratorKind kind() const override { return IntegratorKind::SymplecticEuler; }
     int evaluationsPerStep() const override { return 1; }
@@ -65,6 +74,10 @@ public:
         m_vp = v + h * m_a0;
         sys.acceleration(t + h, q, m_vp, m_a1);
         v += (0.5 * h) * (m_a0 + m_a1);
+    }
+    std::unique_ptr<Integrator> clone() const override
+    {
+        return std::make_unique<VelocityVerlet>(*this);
     }
     IntegratorKind kind() const override { return IntegratorKind::Verlet; }
     int evaluationsPerStep() const override { return 2; }
@@ -99,6 +112,10 @@ public:
 
         q += (h / 6.0) * (v + 2.0 * m_v2 + 2.0 * m_v3 + m_v4);
         v += (h / 6.0) * (m_a[0] + 2.0 * m_a[1] + 2.0 * m_a[2] + m_a[3]);
+    }
+    std::unique_ptr<Integrator> clone() const override
+    {
+        return std::make_unique<RungeKutta4>(*this);
     }
     IntegratorKind kind() const override { return IntegratorKind::RK4; }
     int evaluationsPerStep() const override { return 4; }

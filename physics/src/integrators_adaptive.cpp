@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace rigidlab::physics {
 
@@ -120,6 +121,10 @@ public:
         }
         q = m_y.head(n);
         v = m_y.tail(n);
+    }
+    std::unique_ptr<Integrator> clone() const override
+    {
+        return std::make_unique<DormandPrince>(*this);
     }
     IntegratorKind kind() const override { return IntegratorKind::DormandPrince; }
     int evaluationsPerStep() const override { return 6; }

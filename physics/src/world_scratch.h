@@ -1,12 +1,14 @@
 #pragma once
 // Private: the world's buffers reused from step to step, shared by the files that implement
-// World's stages (world.cpp, world_step.cpp, islands.cpp, continuous.cpp). Nothing here is
-// state: a copied world starts with empty buffers and steps exactly as the original.
+// World's stages (profile.h names them), the timer of a stage, and World::withState. Nothing
+// in Scratch is state: a copied world starts with empty buffers (FreshOnCopy) and steps
+// exactly as the original (the golden test checks it).
 
 #include "rigidlab/physics/world.h"
 
 #include "broad_phase.h"
 #include "contact_solver.h"
+#include "dynamics.h"
 
 #include <Eigen/Core>
 
@@ -68,5 +70,33 @@ private:
     Clock::time_point m_start;
     bool m_stopped = false;
 };
+
+template <typename Fn> inline void World::withState(Fn&& fn)
+{
+    Eigen::VectorXd& q = m_scratch->q;
+    Eigen::VectorXd& v = m_scratch->v;
+    const Eigen::Index n = 3 * static_cast<Eigen::Index>(m_moving.size());
+    q.resize(n);
+    v.resize(n);
+    for (size_t s = 0; s < m_moving.size(); ++s) {
+        const Body& b = m_bodies[static_cast<size_t>(m_moving[s])];
+        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
+        q.segment<3>(i) << b.position.x(), b.position.y(), b.angle;
+        v.segment<3>(i) << b.velocity.x(), b.velocity.y(), b.angularVelocity;
+    }
+    Dynamics dynamics(m_def, m_bodies, m_slot, m_springs, m_joints);
+    fn(dynamics, q, v);
+    m_evaluations += dynamics.evaluations;
+    for (size_t s = 0; s < m_moving.size(); ++s) {
+        Body& b = m_bodies[static_cast<size_t>(m_moving[s])];
+        if (b.isDynamic() && !b.awake)
+            continue; // asleep: it does not move, whatever the integrator made of it
+        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
+        b.position = Vec2(q[i], q[i + 1]);
+        b.angle = q[i + 2];
+        b.velocity = Vec2(v[i], v[i + 1]);
+        b.angularVelocity = v[i + 2];
+    }
+}
 
 } // namespace rigidlab::physics

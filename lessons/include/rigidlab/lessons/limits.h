@@ -7,7 +7,10 @@
 // its place and the allowed range, rather than discovered later as NaN. The bounds are far
 // beyond any lesson (a bullet at 300 m/s, a 1 mm body, a stiff spring of 1e7 N/m) and keep
 // every product the engine forms (m v², k x², G m m / r²) well inside a double.
-// See lessons/SCENE_FORMAT.md, "Limits".
+// The engine's ranges are its own (physics/limits.h); this file names their units for messages
+// and adds the ranges of the window and of lessons. See lessons/SCENE_FORMAT.md, "Limits".
+
+#include "rigidlab/physics/limits.h"
 
 #include <string_view>
 
@@ -21,44 +24,50 @@ struct Range {
     constexpr bool contains(double v) const { return v >= min && v <= max; }
 };
 
+/// The engine's range (physics/limits.h, the one owner of the numbers) with the unit to name.
+constexpr Range withUnit(physics::limits::Interval interval, std::string_view unit)
+{
+    return {interval.min, interval.max, unit};
+}
+
 /// Positions, anchors and the world's points, each coordinate [m].
-inline constexpr Range kCoordinate{-1e7, 1e7, "m"};
+inline constexpr Range kCoordinate = withUnit(physics::limits::kCoordinate, "m");
 /// Sizes of shapes: radius, width, height [m].
-inline constexpr Range kSize{1e-6, 1e5, "m"};
+inline constexpr Range kSize = withUnit(physics::limits::kSize, "m");
 /// Polygon vertices, each coordinate, body-local [m].
-inline constexpr Range kVertex{-1e5, 1e5, "m"};
+inline constexpr Range kVertex = withUnit(physics::limits::kVertex, "m");
 /// An angle [rad].
-inline constexpr Range kAngle{-1e6, 1e6, "rad"};
+inline constexpr Range kAngle = withUnit(physics::limits::kAngle, "rad");
 /// A velocity component [m/s].
-inline constexpr Range kVelocity{-1e6, 1e6, "m/s"};
+inline constexpr Range kVelocity = withUnit(physics::limits::kVelocity, "m/s");
 /// An angular velocity [rad/s].
-inline constexpr Range kAngularVelocity{-1e6, 1e6, "rad/s"};
+inline constexpr Range kAngularVelocity = withUnit(physics::limits::kAngularVelocity, "rad/s");
 /// A body's mass, given or worked out from its density [kg].
-inline constexpr Range kMass{1e-9, 1e12, "kg"};
+inline constexpr Range kMass = withUnit(physics::limits::kMass, "kg");
 /// Mass per area [kg/m²].
-inline constexpr Range kDensity{1e-9, 1e9, "kg/m^2"};
+inline constexpr Range kDensity = withUnit(physics::limits::kDensity, "kg/m^2");
 /// A gravity component [m/s²].
-inline constexpr Range kGravity{-1e4, 1e4, "m/s^2"};
+inline constexpr Range kGravity = withUnit(physics::limits::kGravity, "m/s^2");
 /// Newton's constant between bodies [m³/(kg s²)].
-inline constexpr Range kGravitation{0.0, 1e6, "m^3/(kg s^2)"};
+inline constexpr Range kGravitation = withUnit(physics::limits::kGravitation, "m^3/(kg s^2)");
 /// Linear drag rate [1/s].
-inline constexpr Range kDrag{0.0, 1e4, "1/s"};
+inline constexpr Range kDrag = withUnit(physics::limits::kDrag, "1/s");
 /// Coulomb friction coefficient.
-inline constexpr Range kFriction{0.0, 100.0, ""};
+inline constexpr Range kFriction = withUnit(physics::limits::kFriction, "");
 /// Coefficient of restitution: 0 sticks, 1 is elastic.
-inline constexpr Range kRestitution{0.0, 1.0, ""};
+inline constexpr Range kRestitution = withUnit(physics::limits::kRestitution, "");
 /// The fixed time step [s] (the window shows it in ms).
-inline constexpr Range kDt{1e-7, 1.0, "s"};
+inline constexpr Range kDt = withUnit(physics::limits::kDt, "s");
 /// Velocity iterations of the sequential-impulse solver (whole numbers).
-inline constexpr Range kIterations{1.0, 1000.0, ""};
+inline constexpr Range kIterations = withUnit(physics::limits::kIterations, "");
 /// Spring stiffness [N/m].
-inline constexpr Range kStiffness{0.0, 1e10, "N/m"};
+inline constexpr Range kStiffness = withUnit(physics::limits::kStiffness, "N/m");
 /// Spring damping [N s/m].
-inline constexpr Range kDamping{0.0, 1e8, "N s/m"};
+inline constexpr Range kDamping = withUnit(physics::limits::kDamping, "N s/m");
 /// A spring's rest length [m].
-inline constexpr Range kRestLength{0.0, 1e7, "m"};
+inline constexpr Range kRestLength = withUnit(physics::limits::kRestLength, "m");
 /// dopri5's error tolerance per substep.
-inline constexpr Range kTolerance{1e-15, 1.0, ""};
+inline constexpr Range kTolerance = withUnit(physics::limits::kTolerance, "");
 /// The window's time scale (slow motion to fast forward).
 inline constexpr Range kTimeScale{0.1, 4.0, "x"};
 /// A lesson question's absolute tolerance, in the question's unit.

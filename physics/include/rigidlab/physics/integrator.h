@@ -50,6 +50,8 @@ public:
     virtual void step(OdeSystem& system, double t, double h, Eigen::VectorXd& q,
                       Eigen::VectorXd& v) = 0;
     virtual IntegratorKind kind() const = 0;
+    /// A copy that goes on exactly as this one would (dopri5's proposed substep included).
+    virtual std::unique_ptr<Integrator> clone() const = 0;
     /// Force evaluations per step (for the adaptive and implicit methods, per substep or
     /// Newton-free step: the world counts the real number).
     virtual int evaluationsPerStep() const = 0;

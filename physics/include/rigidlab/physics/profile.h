@@ -3,16 +3,32 @@
 
 namespace rigidlab::physics {
 
-/// The stages of a step, in the order World::step() runs them.
+/// The stages of a step, in the order World::step() runs them: the one description of that
+/// order (world.h and the stages' files refer to it). Before the stages, the step's plan
+/// (step_plan.cpp) leaves out what the scene does not need; after them, a non-finite state or
+/// runaway energy stops the world (divergence.cpp).
 enum class Stage {
-    BroadPhase,   ///< pairs of bodies whose boxes overlap (broad_phase.cpp)
-    NarrowPhase,  ///< SAT and manifolds for those pairs (sat.cpp)
-    Islands,      ///< touching bodies grouped; a woken body wakes its island (islands.cpp)
-    Forces,       ///< applied forces and joint forces (forces.cpp, joints.cpp)
-    Integration,  ///< the integrator, without the force evaluations (integrators.cpp)
-    ContactSolve, ///< impulses and position correction (contact_solver.cpp)
-    Sleep,        ///< resting islands put to sleep (islands.cpp)
-    Diagnostics,  ///< energies and momenta (diagnostics.cpp)
+    /// Pairs of bodies whose boxes overlap (broad_phase.cpp), and fast bodies' pairs over
+    /// their motion (continuous.cpp).
+    BroadPhase,
+    /// The contacts of those pairs: SAT (sat.cpp), manifolds (manifold.cpp), warm start and
+    /// mixed materials (narrow_phase.cpp).
+    NarrowPhase,
+    /// Touching bodies grouped; a woken body wakes its island (islands.cpp).
+    Islands,
+    /// Applied forces and the pin joints' exact forces (forces.cpp, joints.cpp), evaluated at
+    /// every stage of the integrator, so timed from inside Integration.
+    Forces,
+    /// The integrator (integrators*.cpp, integration.cpp), then the joints projected back
+    /// (joints.cpp).
+    Integration,
+    /// Impulses, the joints projected again, position correction (contact_response.cpp,
+    /// contact_solver.cpp).
+    ContactSolve,
+    /// Resting islands put to sleep (islands.cpp).
+    Sleep,
+    /// Energies and momenta (diagnostics.cpp).
+    Diagnostics,
 };
 inline constexpr int kStageCount = 8;
 

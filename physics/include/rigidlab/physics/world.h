@@ -8,6 +8,7 @@
 #include "rigidlab/physics/forces.h"
 #include "rigidlab/physics/integrator.h"
 #include "rigidlab/physics/profile.h"
+#include "rigidlab/physics/value_ptr.h"
 
 #include <memory>
 #include <optional>
@@ -37,6 +38,10 @@ struct WorldDef {
     std::optional<bool> sleep;
 };
 
+/// Whether every number of def is inside its range of limits.h (the tolerances aside: see
+/// World::setTolerances). World's constructor asserts it.
+bool withinLimits(const WorldDef& def);
+
 /// A scene with this many dynamic bodies or more is large: it sleeps unless told otherwise.
 inline constexpr int kLargeSceneBodies = 200;
 
@@ -61,6 +66,9 @@ double restitutionThreshold(const WorldDef& def, const ContactSettings& settings
 class World {
 public:
     explicit World(const WorldDef& def = {});
+    // All defaulted (in world.cpp, where Scratch is complete). A copy steps on bit for bit
+    // as the original: it carries the integrator's state (ClonePtr) and starts with empty
+    // buffers (FreshOnCopy), which hold no state.
     ~World();
     World(const World& other);
     World& operator=(const World& other);
@@ -73,17 +81,17 @@ public:
     void addSpring(const SpringDef& spring);
     void addPinJoint(const PinJointDef& joint);
 
-    /// Advances the world by one fixed step dt:
-    /// forces and integration, joints, broad phase, narrow phase (SAT), contact solve,
-    /// diagnostics.
+    /// Advances the world by one fixed step dt, through the stages in the order of
+    /// physics::Stage (profile.h), which says what each does and in which file.
     void step();
 
-    // Settings, changeable between steps.
+    // Settings, changeable between steps. Each setter asserts its argument is inside its
+    // range of limits.h (the caller checks it first, and tells the user).
     const WorldDef& def() const { return m_def; }
     void setDt(double dt);
     void setIntegrator(IntegratorKind kind);
     void setSolver(SolverKind kind) { m_def.solver = kind; }
-    void setIterations(int n) { m_def.iterations = n; }
+    void setIterations(int n);
     // A change of gravity, gravitation, drag, restitution or friction wakes every body.
     void setGravity(const Vec2& g);
     void setGravitation(double G);
@@ -155,10 +163,15 @@ public:
 
 private:
     struct Scratch;
+    /// The velocities at the start of the step, to time bounces within it (contact_response.cpp).
+    void rememberStartVelocities();
+    /// Stage::BroadPhase and Stage::NarrowPhase (world.cpp, narrow_phase.cpp).
     void findContacts();
+    /// Stage::Forces and Stage::Integration (integration.cpp).
     void integrate();
+    /// Stage::ContactSolve (contact_response.cpp).
     void solveContacts();
-    /// What this step needs, from what the world holds (world_step.cpp).
+    /// What this step needs, from what the world holds (step_plan.cpp).
     struct Plan {
         bool collide = false; ///< some two bodies can collide: broad and narrow phase
         bool direct = false;  ///< symplectic Euler on the bodies, without the ODE state
@@ -169,7 +182,7 @@ private:
     Plan planStep() const;
     /// This step's placement of every body, recomputed only for bodies that moved.
     void updateTransforms();
-    /// Symplectic Euler straight on the bodies (world_step.cpp): the ODE system's arithmetic
+    /// Symplectic Euler straight on the bodies (integration.cpp): the ODE system's arithmetic
     /// without gathering the state into vectors.
     void integrateDirect();
     /// Groups touching bodies into islands; an island with an awake body wakes whole.
@@ -178,9 +191,8 @@ private:
     void sleepIslands();
     void wakeAll();
     /// Pairs for bodies that move more than their own size in a step (continuous.cpp), and
-    /// the speculative margin each body's motion asks for [m].
+    /// the speculative margin each body's motion asks for [m] (m_sweep).
     void addSweptPairs(std::vector<std::pair<int, int>>& pairs);
-    double sweptMargin(int body) const;
     void rememberStartEnergy();
     void checkDivergence();
     /// Gathers the moving bodies' state, lets `fn(dynamics, q, v)` change it, scatters it back.
@@ -192,11 +204,11 @@ private:
     std::vector<SpringDef> m_springs;
     std::vector<PinJointDef> m_joints;
     std::vector<Contact> m_contacts;
-    std::unique_ptr<Integrator> m_integrator;
+    ClonePtr<Integrator> m_integrator;
     std::vector<BodyId> m_moving; ///< bodies in the integrated state, in id order
     std::vector<int> m_slot;      ///< each body's index in m_moving, -1 for static bodies
     std::vector<std::pair<int, int>> m_jointPairs; ///< body pairs joined by a pin, sorted
-    std::unique_ptr<Scratch> m_scratch;
+    FreshOnCopy<Scratch> m_scratch; ///< buffers reused from step to step (world_scratch.h)
     double m_time = 0;
     long long m_steps = 0;
     long long m_evaluations = 0;

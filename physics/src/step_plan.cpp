@@ -7,8 +7,10 @@
 //     world has springs, or G != 0 (forces.cpp).
 //   - Static bodies are never integrated; bodies asleep are neither integrated nor solved.
 //   - Symplectic Euler with nothing but contacts coupling the bodies (no springs, joints or
-//     gravitation) is done straight on the bodies: the same arithmetic as the integrator over
-//     the ODE system, without gathering the state into vectors and scattering it back.
+//     gravitation) is done straight on the bodies (integration.cpp): the same update on the
+//     same forces as the integrator over the ODE system, without gathering the state into
+//     vectors and scattering it back.
+// Also here: each body's placement for the step, recomputed only for bodies that moved.
 
 #include "rigidlab/physics/world.h"
 
@@ -85,78 +87,6 @@ void World::updateTransforms()
         s.xfAngle[i] = b.angle;
         s.xfPosition[i] = b.position;
     }
-}
-
-void World::integrateDirect()
-{
-    const double h = m_def.dt;
-    const Vec2 g = m_def.gravity;
-    const double drag = m_def.drag;
-    Scratch& s = *m_scratch;
-    const size_t n = m_bodies.size();
-
-    // Forces: a = (m g + F) / m and alpha = M / I, with drag -drag m v and -drag I w, in the
-    // order Dynamics::appliedAccelerations adds them up (so that the bits are the same).
-    StageTimer forces(m_profile, Stage::Forces);
-    s.acceleration.resize(n);
-    s.angularAcceleration.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        const Body& b = m_bodies[i];
-        if (!b.isActive())
-            continue;
-        Vec2 f = b.mass * g + b.force;
-        double torque = b.torque;
-        if (drag != 0.0) {
-            f -= drag * b.mass * b.velocity;
-            torque -= drag * b.inertia * b.angularVelocity;
-        }
-        s.acceleration[i] = Vec2(0.0 + f.x(), 0.0 + f.y()) * b.invMass;
-        s.angularAcceleration[i] = (0.0 + torque) * b.invInertia;
-    }
-    forces.stop();
-
-    // Integration: v1 = v0 + h a, then x1 = x0 + h v1. Kinematic bodies keep their velocity.
-    // Drag's share of the change in kinetic energy, h F_drag . (v0 + v1) / 2, is what it took
-    // (dissipation.cpp).
-    StageTimer integration(m_profile, Stage::Integration);
-    double dragLoss = 0.0;
-    ++m_evaluations;
-    m_profile.directIntegration = true;
-    for (size_t i = 0; i < n; ++i) {
-        Body& b = m_bodies[i];
-        if (b.type == BodyType::Static || (b.isDynamic() && !b.awake))
-            continue;
-        const Vec2 a = b.isDynamic() ? s.acceleration[i] : Vec2::Zero();
-        const double alpha = b.isDynamic() ? s.angularAcceleration[i] : 0.0;
-        const Vec2 v0 = b.velocity;
-        const double w0 = b.angularVelocity;
-        b.velocity = b.velocity + h * a;
-        b.angularVelocity = b.angularVelocity + h * alpha;
-        if (drag != 0.0 && b.isDynamic())
-            dragLoss += drag * (b.mass * v0.dot(0.5 * (v0 + b.velocity)) +
-                                b.inertia * w0 * 0.5 * (w0 + b.angularVelocity));
-        b.position = b.position + h * b.velocity;
-        b.angle = b.angle + h * b.angularVelocity;
-    }
-    m_dragLoss += h * dragLoss;
-}
-
-void World::setGravity(const Vec2& g)
-{
-    m_def.gravity = g;
-    wakeAll();
-}
-
-void World::setGravitation(double G)
-{
-    m_def.gravitation = G;
-    wakeAll();
-}
-
-void World::setDrag(double drag)
-{
-    m_def.drag = drag;
-    wakeAll();
 }
 
 } // namespace rigidlab::physics

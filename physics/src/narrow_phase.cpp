@@ -1,0 +1,95 @@
+// Stage::NarrowPhase (profile.h): from the broad phase's pairs to contacts. The geometry is
+// manifold.cpp's (and, for two polygons, sat.cpp's); this file adds what a contact carries
+// from step to step and from its bodies: the warm-start impulses and the mixed material.
+
+#include "narrow_phase.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigidlab::physics {
+
+namespace {
+
+/// Last step's contacts, looked up pair by pair in increasing order: both lists are sorted,
+/// so one cursor walks through them once.
+class PreviousContacts {
+public:
+    explicit PreviousContacts(const std::vector<Contact>& contacts) : m_contacts(contacts) {}
+    /// Last step's contact of the pair (a, b), or null. Calls come in increasing (a, b).
+    const Contact* find(int a, int b)
+    {
+        while (m_next < m_contacts.size() &&
+               std::pair(m_contacts[m_next].a, m_contacts[m_next].b) < std::pair(a, b))
+            ++m_next;
+        if (m_next < m_contacts.size() && m_contacts[m_next].a == a && m_contacts[m_next].b == b)
+            return &m_contacts[m_next];
+        return nullptr;
+    }
+
+private:
+    const std::vector<Contact>& m_contacts;
+    size_t m_next = 0;
+};
+
+/// Static, or dynamic and asleep: it does not move this step.
+bool rests(const Body& body)
+{
+    return body.type == BodyType::Static || (body.isDynamic() && !body.awake);
+}
+
+} // namespace
+
+void mixMaterials(const Body& a, const Body& b, Contact& c)
+{
+    c.restitution = std::max(a.restitution, b.restitution);
+    c.friction = std::sqrt(a.friction * b.friction);
+}
+
+void carryImpulses(const Contact& previous, Contact& c)
+{
+    for (int i = 0; i < c.manifold.pointCount; ++i)
+        for (int k = 0; k < previous.manifold.pointCount; ++k)
+            if (previous.manifold.points[static_cast<size_t>(k)].id ==
+                c.manifold.points[static_cast<size_t>(i)].id) {
+                c.normalImpulse[static_cast<size_t>(i)] =
+                    previous.normalImpulse[static_cast<size_t>(k)];
+                c.tangentImpulse[static_cast<size_t>(i)] =
+                    previous.tangentImpulse[static_cast<size_t>(k)];
+            }
+}
+
+void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
+                 const std::vector<std::pair<int, int>>& pairs, double margin,
+                 const std::vector<double>& sweep, const std::vector<Contact>& previous,
+                 std::vector<Contact>& contacts)
+{
+    const auto swept = [&sweep](int body) {
+        return sweep.empty() ? 0.0 : sweep[static_cast<size_t>(body)];
+    };
+    PreviousContacts before(previous);
+    for (const auto& [ia, ib] : pairs) {
+        const Body& a = bodies[static_cast<size_t>(ia)];
+        const Body& b = bodies[static_cast<size_t>(ib)];
+        if (rests(a) && rests(b)) {
+            if (const Contact* kept = before.find(ia, ib)) {
+                contacts.push_back(*kept);
+                continue;
+            }
+        }
+        Contact c;
+        c.a = ia;
+        c.b = ib;
+        const double pairMargin = margin + swept(ia) + swept(ib);
+        c.manifold = collideShapes(a.shape, xf[static_cast<size_t>(ia)], b.shape,
+                                   xf[static_cast<size_t>(ib)], pairMargin);
+        if (c.manifold.pointCount == 0)
+            continue;
+        mixMaterials(a, b, c);
+        if (const Contact* p = before.find(ia, ib))
+            carryImpulses(*p, c);
+        contacts.push_back(c);
+    }
+}
+
+} // namespace rigidlab::physics

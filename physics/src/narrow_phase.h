@@ -1,0 +1,32 @@
+#pragma once
+// Private: Stage::NarrowPhase (profile.h), the contacts of the pairs the broad phase found.
+
+#include "rigidlab/physics/body.h"
+#include "rigidlab/physics/contact.h"
+
+#include <utility>
+#include <vector>
+
+namespace rigidlab::physics {
+
+/// The contacts of `pairs` (a < b, sorted), in their order: each pair's manifold
+/// (collideShapes, manifold.cpp) for shapes closer than margin plus both bodies' swept margins
+/// (`sweep`, per body [m], empty when no body is fast: continuous.cpp), with the pair's mixed
+/// material and the impulses that `previous` (last step's contacts, sorted) held for the same
+/// features. Two resting bodies (asleep, or asleep on a static one) keep last step's contact.
+/// `xf`: each body's placement now.
+void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
+                 const std::vector<std::pair<int, int>>& pairs, double margin,
+                 const std::vector<double>& sweep, const std::vector<Contact>& previous,
+                 std::vector<Contact>& contacts);
+
+/// The material of a contact from its two bodies': restitution the larger of the two (a ball
+/// bounces off a rubber floor as the floor makes it), friction the geometric mean (Box2D's
+/// b2MixFriction: either surface being frictionless makes the pair frictionless).
+void mixMaterials(const Body& a, const Body& b, Contact& c);
+
+/// Warm start: gives each point of `c` the impulses of the point of `previous` (the same pair
+/// last step) that the same features made (ContactPoint::id).
+void carryImpulses(const Contact& previous, Contact& c);
+
+} // namespace rigidlab::physics

@@ -1,0 +1,271 @@
+// Golden runs: fixed scenes stepped a fixed number of times with every solver and every
+// integrator the engine offers, the final state hashed bit for bit and compared with a value
+// stored here. Any change to the arithmetic of a step, however small (an operation reordered,
+// a product hoisted), changes a hash: a refactoring that keeps every hash is bit-identical.
+//
+// When a hash may change: only with a deliberate change of the physics (a new force term, a
+// changed solver, a fixed bug), never to make a refactoring pass. How to update: run
+//   build/tests/physics/test_golden
+// read the new value from the failure message of each changed row, paste it into the row
+// below, and say in the commit message which physics changed and why. The values hold for
+// this build (x86-64, -O2/-O3 without -ffast-math, without FMA contraction, glibc's libm); another
+// platform or compiler may need its own.
+//
+// A second test checks that a copied world steps exactly as its original, for the same rows.
+
+#include "physics_test_util.h"
+
+#include <rigidlab/physics/world.h>
+
+#include "test_main.h"
+
+#include <QTest>
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
+using namespace rigidlab::physics;
+
+namespace {
+
+constexpr int kSteps = 600;
+
+/// FNV-1a (64 bit) over the bit patterns of every body's position, angle, velocity and
+/// angular velocity, in id order.
+std::uint64_t stateHash(const World& world)
+{
+    std::uint64_t h = 14695981039346656037ull;
+    auto add = [&h](double x) {
+        const auto bits = std::bit_cast<std::uint64_t>(x);
+        for (int i = 0; i < 8; ++i) {
+            h ^= (bits >> (8 * i)) & 0xffu;
+            h *= 1099511628211ull;
+        }
+    };
+    for (const Body& b : world.bodies()) {
+        add(b.position.x());
+        add(b.position.y());
+        add(b.angle);
+        add(b.velocity.x());
+        add(b.velocity.y());
+        add(b.angularVelocity);
+    }
+    return h;
+}
+
+/// Contacts, springs and pin joints together: boxes and circles fall on a static ground, two
+/// of them joined by a spring, one on a spring to the world; a chain of two pinned links
+/// swings down into a tall box (contacts on jointed bodies), with drag.
+///
+///      o link1 link2                  circles
+///      |=====|=====              o  o   o
+///      pivot (4, 4)     [] [] boxes
+///   ------------------------------------------ ground
+World mixedScene(SolverKind solver, IntegratorKind integrator)
+{
+    WorldDef def;
+    def.dt = 1.0 / 240.0;
+    def.solver = solver;
+    def.integrator = integrator;
+    def.drag = 0.05;
+    World world(def);
+    BodyDef ground = rigidlab::test::boxBody(20.0, 1.0, Vec2(0.0, -0.5));
+    ground.type = BodyType::Static;
+    world.addBody(ground);
+    for (int i = 0; i < 4; ++i)
+        world.addBody(rigidlab::test::boxBody(0.8, 0.4, Vec2(0.1 * i, 0.3 + 0.6 * i), 0.05 * i));
+    for (int i = 0; i < 3; ++i)
+        world.addBody(rigidlab::test::circleBody(0.2 + 0.05 * i, Vec2(-1.5 + 0.3 * i, 1.0 + i),
+                                                 Vec2(0.5, 0.0)));
+    SpringDef between;
+    between.a = 2;
+    between.b = 5;
+    between.stiffness = 30.0;
+    between.damping = 0.5;
+    between.restLength = 1.0;
+    world.addSpring(between);
+    SpringDef toWorld;
+    toWorld.a = 6;
+    toWorld.anchorA = Vec2(0.1, 0.0);
+    toWorld.b = kWorld;
+    toWorld.anchorB = Vec2(-2.0, 4.0);
+    toWorld.stiffness = 20.0;
+    toWorld.restLength = 0.5;
+    world.addSpring(toWorld);
+    const BodyId link1 = world.addBody(rigidlab::test::boxBody(1.0, 0.1, Vec2(4.5, 4.0)));
+    const BodyId link2 = world.addBody(rigidlab::test::boxBody(1.0, 0.1, Vec2(5.5, 4.0)));
+    world.addPinJoint({link1, Vec2(-0.5, 0.0), kWorld, Vec2(4.0, 4.0)});
+    world.addPinJoint({link2, Vec2(-0.5, 0.0), link1, Vec2(0.5, 0.0)});
+    world.addBody(rigidlab::test::boxBody(0.5, 2.6, Vec2(4.3, 1.3)));
+    return world;
+}
+
+/// Contacts alone (symplectic Euler runs straight on the bodies here): a pile of boxes and
+/// circles, a fast small circle that needs continuous collision, sleeping on.
+World contactScene(SolverKind solver, IntegratorKind integrator)
+{
+    WorldDef def;
+    def.dt = 1.0 / 120.0;
+    def.solver = solver;
+    def.integrator = integrator;
+    def.drag = 0.02;
+    def.sleep = true;
+    World world(def);
+    BodyDef ground = rigidlab::test::boxBody(12.0, 1.0, Vec2(0.0, -0.5));
+    ground.type = BodyType::Static;
+    world.addBody(ground);
+    BodyDef wall = rigidlab::test::boxBody(0.5, 6.0, Vec2(4.0, 3.0));
+    wall.type = BodyType::Static;
+    world.addBody(wall);
+    for (int i = 0; i < 4; ++i)
+        world.addBody(rigidlab::test::boxBody(0.6, 0.6, Vec2(-1.0 + 0.05 * i, 0.3 + 0.7 * i)));
+    for (int i = 0; i < 3; ++i)
+        world.addBody(rigidlab::test::circleBody(0.25, Vec2(1.0 + 0.6 * i, 0.5 + 0.4 * i),
+                                                 Vec2(-0.3 * i, 0.0)));
+    world.addBody(rigidlab::test::circleBody(0.05, Vec2(-3.0, 1.0), Vec2(60.0, 0.0)));
+    return world;
+}
+
+using SceneFn = World (*)(SolverKind, IntegratorKind);
+
+} // namespace
+
+Q_DECLARE_METATYPE(SceneFn)
+
+class TestGolden : public QObject {
+    Q_OBJECT
+
+private slots:
+    void goldenRun_data();
+    void goldenRun();
+    void copyStepsIdentically_data();
+    void copyStepsIdentically();
+
+private:
+    void rows(bool withHashes);
+};
+
+void TestGolden::rows(bool withHashes)
+{
+    QTest::addColumn<SceneFn>("scene");
+    QTest::addColumn<SolverKind>("solver");
+    QTest::addColumn<IntegratorKind>("integrator");
+    QTest::addColumn<quint64>("hash");
+    struct Row {
+        const char* name;
+        SceneFn scene;
+        SolverKind solver;
+        IntegratorKind integrator;
+        std::uint64_t hash;
+    };
+    constexpr SolverKind kSeed = SolverKind::SeedImpulse;
+    constexpr SolverKind kSeq = SolverKind::SequentialImpulse;
+    const Row table[] = {
+        {"mixed-seed-euler", mixedScene, kSeed, IntegratorKind::Euler, 0x999321ea98771fe0ull},
+        {"mixed-seed-symplectic", mixedScene, kSeed, IntegratorKind::SymplecticEuler,
+         0x03be098bed2c10c0ull},
+        {"mixed-seed-verlet", mixedScene, kSeed, IntegratorKind::Verlet, 0xd1054bd0d32b6f2eull},
+        {"mixed-seed-rk4", mixedScene, kSeed, IntegratorKind::RK4, 0x24b359e5dd0a5141ull},
+        {"mixed-seed-dopri5", mixedScene, kSeed, IntegratorKind::DormandPrince,
+         0x56807d8c975c177cull},
+        {"mixed-seed-midpoint", mixedScene, kSeed, IntegratorKind::ImplicitMidpoint,
+         0x09fe39cb98afd7bcull},
+        {"mixed-seq-euler", mixedScene, kSeq, IntegratorKind::Euler, 0x4fe90ecc280fa1feull},
+        {"mixed-seq-symplectic", mixedScene, kSeq, IntegratorKind::SymplecticEuler,
+         0x05cb8fc71b532aa8ull},
+        {"mixed-seq-verlet", mixedScene, kSeq, IntegratorKind::Verlet, 0xa246174e7952fef9ull},
+        {"mixed-seq-rk4", mixedScene, kSeq, IntegratorKind::RK4, 0xd0dcdf5f2907d305ull},
+        {"mixed-seq-dopri5", mixedScene, kSeq, IntegratorKind::DormandPrince,
+         0x9eac499b69e8ac3eull},
+        {"mixed-seq-midpoint", mixedScene, kSeq, IntegratorKind::ImplicitMidpoint,
+         0x5fd9aa9a97fa2920ull},
+        {"contact-seed-euler", contactScene, kSeed, IntegratorKind::Euler, 0xd5363f0ec4831fe7ull},
+        {"contact-seed-symplectic", contactScene, kSeed, IntegratorKind::SymplecticEuler,
+         0xccac889598e3e12full},
+        {"contact-seed-verlet", contactScene, kSeed, IntegratorKind::Verlet, 0x3cde23a05e13e0e5ull},
+        {"contact-seed-rk4", contactScene, kSeed, IntegratorKind::RK4, 0xeba389cd025edac5ull},
+        {"contact-seed-dopri5", contactScene, kSeed, IntegratorKind::DormandPrince,
+         0x8268628c52133a08ull},
+        {"contact-seed-midpoint", contactScene, kSeed, IntegratorKind::ImplicitMidpoint,
+         0xf243c0446d514c50ull},
+        {"contact-seq-euler", contactScene, kSeq, IntegratorKind::Euler, 0x5c0801c7e1e80397ull},
+        {"contact-seq-symplectic", contactScene, kSeq, IntegratorKind::SymplecticEuler,
+         0x3fb02232b12994d9ull},
+        {"contact-seq-verlet", contactScene, kSeq, IntegratorKind::Verlet, 0x7f4ae9d32c2c08e8ull},
+        {"contact-seq-rk4", contactScene, kSeq, IntegratorKind::RK4, 0xab018fdf67e62b4aull},
+        {"contact-seq-dopri5", contactScene, kSeq, IntegratorKind::DormandPrince,
+         0x1f5ec9e0b36f5f4cull},
+        {"contact-seq-midpoint", contactScene, kSeq, IntegratorKind::ImplicitMidpoint,
+         0x7781288612beca0eull},
+    };
+    for (const Row& r : table)
+        QTest::newRow(r.name) << r.scene << r.solver << r.integrator
+                              << quint64{withHashes ? r.hash : 0u};
+}
+
+void TestGolden::goldenRun_data()
+{
+    rows(true);
+}
+
+// Every row must have had contacts and, in the mixed scene, kept its joints: a hash of a
+// scene where nothing touched would pin less than it claims.
+void TestGolden::goldenRun()
+{
+    QFETCH(SceneFn, scene);
+    QFETCH(SolverKind, solver);
+    QFETCH(IntegratorKind, integrator);
+    QFETCH(quint64, hash);
+    World world = scene(solver, integrator);
+    int contactSteps = 0;
+    for (int i = 0; i < kSteps; ++i) {
+        world.step();
+        contactSteps += world.contacts().empty() ? 0 : 1;
+    }
+    QVERIFY(!world.divergence());
+    QVERIFY(contactSteps > kSteps / 2);
+    const std::uint64_t actual = stateHash(world);
+    QVERIFY2(actual == hash, qPrintable(QStringLiteral("state hash 0x%1, stored 0x%2")
+                                            .arg(actual, 16, 16, QLatin1Char('0'))
+                                            .arg(hash, 16, 16, QLatin1Char('0'))));
+}
+
+void TestGolden::copyStepsIdentically_data()
+{
+    rows(false);
+}
+
+// A world copied (and one assigned) halfway steps on bit-identically to the original: every
+// state that steers a step (the adaptive integrator's proposed substep, warm-start impulses,
+// sleep timers) travels with the copy, and the reused buffers do not matter.
+void TestGolden::copyStepsIdentically()
+{
+    QFETCH(SceneFn, scene);
+    QFETCH(SolverKind, solver);
+    QFETCH(IntegratorKind, integrator);
+    World original = scene(solver, integrator);
+    for (int i = 0; i < kSteps / 2; ++i)
+        original.step();
+    World copied(original);
+    World assigned = scene(SolverKind::SeedImpulse, IntegratorKind::Euler);
+    assigned.step();
+    assigned = original;
+    QCOMPARE(stateHash(copied), stateHash(original));
+    // What the last step did travels too (World's members are copied by = default).
+    QCOMPARE(copied.profile().contacts, original.profile().contacts);
+    QCOMPARE(copied.profile().pairs, original.profile().pairs);
+    QCOMPARE(copied.integrator().substeps(), original.integrator().substeps());
+    for (int i = 0; i < kSteps / 2; ++i) {
+        original.step();
+        copied.step();
+        assigned.step();
+    }
+    QCOMPARE(stateHash(copied), stateHash(original));
+    QCOMPARE(stateHash(assigned), stateHash(original));
+    QCOMPARE(copied.stepCount(), original.stepCount());
+    QCOMPARE(copied.evaluations(), original.evaluations());
+}
+
+RIGIDLAB_TEST_GUILESS_MAIN(TestGolden)
+#include "test_golden.moc"
