@@ -42,8 +42,9 @@ int outputError(const QString& what)
     return kExitOutputError;
 }
 
-void CommandLine::addValue(const QString& name)
+void CommandLine::addValue(const QString& name, const QString& what)
 {
+    m_valueWhats.append(what);
     m_parser.addOption(QCommandLineOption(name, QString(), QStringLiteral("value")));
     m_valueNames.append(name);
 }
@@ -83,9 +84,9 @@ bool CommandLine::parse(const QStringList& words)
     const QStringList options = end < 0 ? words : words.first(end);
     if (!options.isEmpty()) {
         const QString last = options.back();
-        for (const QString& name : m_valueNames) {
-            if (last == QStringLiteral("--") + name) {
-                m_error = QStringLiteral("%1: needs a value").arg(last);
+        for (qsizetype i = 0; i < m_valueNames.size(); ++i) {
+            if (last == QStringLiteral("--") + m_valueNames[i]) {
+                m_error = QStringLiteral("%1: needs a %2").arg(last, m_valueWhats[i]);
                 return false;
             }
         }
@@ -123,13 +124,13 @@ std::optional<QString> CommandLine::value(const QString& name) const
     return m_parser.value(name);
 }
 
-std::optional<QString> CommandLine::onlyFile()
+std::optional<QString> CommandLine::onlyFile(const QString& what)
 {
     const QStringList files = positionals();
     if (files.size() == 1)
         return files.front();
-    m_error = files.isEmpty() ? QStringLiteral("which file?")
-                              : QStringLiteral("one file only, got %1").arg(files.size());
+    m_error = files.isEmpty() ? QStringLiteral("which %1?").arg(what)
+                              : QStringLiteral("one %1 only, got %2").arg(what).arg(files.size());
     return std::nullopt;
 }
 

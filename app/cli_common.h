@@ -38,8 +38,8 @@ class CommandLine {
 public:
     explicit CommandLine(QString command) : m_command(std::move(command)) {}
 
-    /// An option that takes a value.
-    void addValue(const QString& name);
+    /// An option that takes a value; `what` names it in "--name: needs a WHAT".
+    void addValue(const QString& name, const QString& what = QStringLiteral("value"));
     /// An option without a value.
     void addSwitch(const QString& name);
 
@@ -53,13 +53,14 @@ public:
     bool isSet(const QString& name) const { return m_parser.isSet(name); }
     QStringList positionals() const { return m_parser.positionalArguments(); }
 
-    /// The one file the command works on, or nothing with error() set.
-    std::optional<QString> onlyFile();
+    /// The one file the command works on, or nothing with error() set ("which WHAT?").
+    std::optional<QString> onlyFile(const QString& what = QStringLiteral("file"));
 
 private:
     QString m_command;
     QCommandLineParser m_parser;
     QStringList m_valueNames;
+    QStringList m_valueWhats; ///< per m_valueNames entry
     QStringList m_switchNames;
     QString m_error;
 };

@@ -45,13 +45,13 @@ void printOutline(const lessons::Lesson& lesson)
 int commandLesson(const QStringList& words)
 {
     CommandLine args(QStringLiteral("lesson"));
-    args.addValue(QStringLiteral("export"));
+    args.addValue(QStringLiteral("export"), QStringLiteral("folder"));
     if (!args.parse(words))
         return usageError(args.command(), args.error());
     const auto exportDir = args.value(QStringLiteral("export"));
     if (exportDir && exportDir->isEmpty())
         return usageError(args.command(), QStringLiteral("--export: needs a folder"));
-    const auto path = args.onlyFile();
+    const auto path = args.onlyFile(QStringLiteral("lesson file"));
     if (!path)
         return usageError(args.command(), args.error());
 

@@ -149,9 +149,9 @@ void TestCli::usageErrors_data()
         << QStringList{"run", ball, "--profile=3"} << "run: --profile: takes no value";
     QTest::newRow("switch-twice") << QStringList{"run", ball, "--profile", "--profile"}
                                   << "run: --profile: given twice";
-    QTest::newRow("lesson-no-file") << QStringList{"lesson"} << "lesson: which file?";
+    QTest::newRow("lesson-no-file") << QStringList{"lesson"} << "lesson: which lesson file?";
     QTest::newRow("lesson-export-no-folder")
-        << QStringList{"lesson", ball, "--export"} << "lesson: --export: needs a value";
+        << QStringList{"lesson", ball, "--export"} << "lesson: --export: needs a folder";
     QTest::newRow("stress-positional")
         << QStringList{"stress", "pendulum"} << "stress: unexpected argument \"pendulum\"";
     QTest::newRow("stress-unknown-case")
