@@ -2,11 +2,11 @@
 
 #include "cli_common.h"
 
-#include "lesson_export.h"
+#include "plots/lesson_export.h"
 
-#include "rigidlab/lessons/data_dirs.h"
-#include "rigidlab/lessons/lesson.h"
-#include "rigidlab/lessons/lesson_catalog.h"
+#include "format/data_dirs.h"
+#include "format/lesson.h"
+#include "format/lesson_catalog.h"
 
 #include <QDir>
 

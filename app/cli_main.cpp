@@ -1,17 +1,17 @@
 // rigidlab-cli: scenes without a window. Argument handling only; the work is done by
 // rigidlab_lessons (scene_loader, scene_run, sat_report, document).
 
+#include "bench.h"
 #include "cli_common.h"
 #include "cli_lesson.h"
 #include "cli_numerics.h"
-#include "rigidlab/lessons/atomic_file.h"
-#include "rigidlab/lessons/bench.h"
+#include "format/atomic_file.h"
 
-#include "rigidlab/lessons/document.h"
-#include "rigidlab/lessons/sat_report.h"
-#include "rigidlab/lessons/scene_loader.h"
-#include "rigidlab/lessons/scene_run.h"
+#include "format/document.h"
+#include "format/sat_report.h"
+#include "format/scene_loader.h"
 #include "rigidlab/version.h"
+#include "run/scene_run.h"
 
 #include <QCoreApplication>
 #include <QStringList>
@@ -243,7 +243,7 @@ int commandBench(const QStringList& words)
         return usageError(args.command(), args.error());
     if (!args.positionals().isEmpty())
         return usageError(args.command(), QStringLiteral("no files, only options"));
-    lessons::BenchOptions options;
+    bench::BenchOptions options;
     if (const auto steps = args.value(QStringLiteral("steps"))) {
         const auto n = wholeNumber(QStringLiteral("--steps"), *steps, 2, 1'000'000, error);
         if (!n) {
@@ -258,9 +258,9 @@ int commandBench(const QStringList& words)
         }
         options.runs = static_cast<int>(*n);
     }
-    std::vector<std::string> names = lessons::benchSceneNames();
+    std::vector<std::string> names = bench::benchSceneNames();
     if (const auto scene = args.value(QStringLiteral("scene"))) {
-        if (!lessons::makeBenchScene(scene->toStdString())) {
+        if (!bench::makeBenchScene(scene->toStdString())) {
             return usageError(args.command(),
                               QStringLiteral("--scene: unknown scene \"%1\" (expected %2)")
                                   .arg(*scene, QString::fromStdString([&] {
@@ -272,25 +272,25 @@ int commandBench(const QStringList& words)
         }
         names = {scene->toStdString()};
     }
-    const lessons::RigidLabBenchSettings settings;
+    const bench::RigidLabBenchSettings settings;
     if (const auto path = args.value(QStringLiteral("export"))) {
         if (names.size() != 1) {
             return usageError(args.command(), QStringLiteral("--export: name one --scene"));
         }
         const std::string json =
-            lessons::benchSceneJson(*lessons::makeBenchScene(names.front()), settings);
+            bench::benchSceneJson(*bench::makeBenchScene(names.front()), settings);
         const QString error = lessons::writeFileAtomically(
             *path, QByteArray(json.data(), static_cast<qsizetype>(json.size())));
         if (!error.isEmpty())
             return outputError(error);
         return kExitOk;
     }
-    const auto engine = lessons::makeRigidLabBenchEngine(settings);
-    std::vector<lessons::BenchResult> results;
+    const auto engine = bench::makeRigidLabBenchEngine(settings);
+    std::vector<bench::BenchResult> results;
     for (const std::string& name : names) {
-        results.push_back(lessons::runBench(*engine, *lessons::makeBenchScene(name), options));
+        results.push_back(bench::runBench(*engine, *bench::makeBenchScene(name), options));
     }
-    std::fputs(lessons::benchTable(results).c_str(), stdout);
+    std::fputs(bench::benchTable(results).c_str(), stdout);
     std::printf("RigidLab: %s; %d steps per run (the first not timed), median of %d runs.\n",
                 engine->settings().c_str(), options.steps, options.runs);
     return kExitOk;

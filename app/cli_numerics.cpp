@@ -2,11 +2,11 @@
 
 #include "cli_common.h"
 
-#include "work_precision_plot.h"
+#include "plots/work_precision_plot.h"
 
-#include "rigidlab/lessons/atomic_file.h"
-#include "rigidlab/lessons/error_vs_time.h"
-#include "rigidlab/lessons/stress.h"
+#include "format/atomic_file.h"
+#include "numerics/error_vs_time.h"
+#include "numerics/stress.h"
 
 #include <QApplication>
 #include <QDir>

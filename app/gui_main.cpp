@@ -4,10 +4,10 @@
 // `rigidlab --screenshots DIR` writes a PNG of the window on every shipped view
 // (ui/screenshots.h). `rigidlab --help` lists the rest.
 
-#include "lesson_player.h"
-#include "main_window.h"
-#include "screenshots.h"
-#include "simulation_controller.h"
+#include "lesson_player/lesson_player.h"
+#include "simulation/simulation_controller.h"
+#include "window/main_window.h"
+#include "window/screenshots.h"
 
 #include "rigidlab/version.h"
 

@@ -8,9 +8,9 @@ namespace rigidlab::bench {
 
 namespace {
 
-using lessons::BenchShapeKind;
+using bench::BenchShapeKind;
 
-class Box2dEngine final : public lessons::BenchEngine {
+class Box2dEngine final : public bench::BenchEngine {
 public:
     std::string name() const override { return "Box2D"; }
     std::string settings() const override
@@ -18,14 +18,14 @@ public:
         return "2.4.1, 8 velocity / 3 position iterations, single precision, sleeping off";
     }
 
-    void build(const lessons::BenchScene& scene) override
+    void build(const bench::BenchScene& scene) override
     {
         m_bodies.clear();
         m_world = std::make_unique<b2World>(
             b2Vec2(static_cast<float>(scene.gravity.x()), static_cast<float>(scene.gravity.y())));
         m_world->SetAllowSleeping(false);
         m_dt = static_cast<float>(scene.dt);
-        for (const lessons::BenchBody& b : scene.bodies) {
+        for (const bench::BenchBody& b : scene.bodies) {
             b2BodyDef bd;
             bd.type = b.isStatic ? b2_staticBody : b2_dynamicBody;
             bd.position.Set(static_cast<float>(b.position.x()), static_cast<float>(b.position.y()));
@@ -63,7 +63,7 @@ public:
 
     void step() override { m_world->Step(m_dt, 8, 3); }
 
-    void poses(std::vector<lessons::BenchPose>& out) const override
+    void poses(std::vector<bench::BenchPose>& out) const override
     {
         out.clear();
         for (const b2Body* b : m_bodies)
@@ -78,7 +78,7 @@ private:
 
 } // namespace
 
-std::unique_ptr<lessons::BenchEngine> makeBox2dEngine()
+std::unique_ptr<bench::BenchEngine> makeBox2dEngine()
 {
     return std::make_unique<Box2dEngine>();
 }

@@ -8,13 +8,13 @@ namespace rigidlab::bench {
 
 namespace {
 
-using lessons::BenchShapeKind;
+using bench::BenchShapeKind;
 
 /// Chipmunk's default collision slop (0.1) is meant for pixel units; in metres the scenes use
 /// Box2D's 0.005 m, so that both engines allow the same overlap.
 constexpr double kCollisionSlop = 0.005;
 
-class ChipmunkEngine final : public lessons::BenchEngine {
+class ChipmunkEngine final : public bench::BenchEngine {
 public:
     ~ChipmunkEngine() override { clear(); }
 
@@ -24,7 +24,7 @@ public:
         return "7.0.3, 10 iterations, collision slop 0.005 m, double precision, sleeping off";
     }
 
-    void build(const lessons::BenchScene& scene) override
+    void build(const bench::BenchScene& scene) override
     {
         clear();
         m_space = cpSpaceNew();
@@ -32,7 +32,7 @@ public:
         cpSpaceSetGravity(m_space, cpv(scene.gravity.x(), scene.gravity.y()));
         cpSpaceSetCollisionSlop(m_space, kCollisionSlop);
         m_dt = scene.dt;
-        for (const lessons::BenchBody& b : scene.bodies) {
+        for (const bench::BenchBody& b : scene.bodies) {
             cpBody* body = nullptr;
             cpShape* shape = nullptr;
             std::vector<cpVect> v;
@@ -96,7 +96,7 @@ public:
 
     void step() override { cpSpaceStep(m_space, m_dt); }
 
-    void poses(std::vector<lessons::BenchPose>& out) const override
+    void poses(std::vector<bench::BenchPose>& out) const override
     {
         out.clear();
         for (cpBody* b : m_bodies) {
@@ -132,7 +132,7 @@ private:
 
 } // namespace
 
-std::unique_ptr<lessons::BenchEngine> makeChipmunkEngine()
+std::unique_ptr<bench::BenchEngine> makeChipmunkEngine()
 {
     return std::make_unique<ChipmunkEngine>();
 }

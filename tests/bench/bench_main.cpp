@@ -36,15 +36,15 @@ int usage()
 
 int main(int argc, char** argv)
 {
-    lessons::BenchOptions options;
-    std::vector<std::string> scenes = lessons::benchSceneNames();
+    bench::BenchOptions options;
+    std::vector<std::string> scenes = bench::benchSceneNames();
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         if (i + 1 >= argc)
             return usage();
         const char* value = argv[++i];
         if (arg == "--scene") {
-            if (!lessons::makeBenchScene(value)) {
+            if (!bench::makeBenchScene(value)) {
                 std::fprintf(stderr, "rigidlab-bench: unknown scene \"%s\"\n", value);
                 return 2;
             }
@@ -60,8 +60,8 @@ int main(int argc, char** argv)
     if (options.steps < 2 || options.runs < 1)
         return usage();
 
-    std::vector<std::unique_ptr<lessons::BenchEngine>> engines;
-    engines.push_back(lessons::makeRigidLabBenchEngine());
+    std::vector<std::unique_ptr<bench::BenchEngine>> engines;
+    engines.push_back(bench::makeRigidLabBenchEngine());
 #ifdef RIGIDLAB_BENCH_BOX2D
     engines.push_back(bench::makeBox2dEngine());
 #endif
@@ -69,16 +69,16 @@ int main(int argc, char** argv)
     engines.push_back(bench::makeChipmunkEngine());
 #endif
 
-    std::vector<lessons::BenchResult> results;
+    std::vector<bench::BenchResult> results;
     for (const std::string& name : scenes) {
-        const lessons::BenchScene scene = *lessons::makeBenchScene(name);
+        const bench::BenchScene scene = *bench::makeBenchScene(name);
         for (auto& engine : engines) {
-            results.push_back(lessons::runBench(*engine, scene, options));
+            results.push_back(bench::runBench(*engine, scene, options));
             std::fprintf(stderr, "  %-9s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
                          name.c_str(), results.back().msPerStep);
         }
     }
-    std::printf("\n%s\n", lessons::benchTable(results).c_str());
+    std::printf("\n%s\n", bench::benchTable(results).c_str());
     for (auto& engine : engines)
         std::printf("%-9s %s\n", engine->name().c_str(), engine->settings().c_str());
     std::printf("Every scene: dt 1/60 s, gravity -10 m/s^2, friction 0.6, no restitution; "

@@ -1,7 +1,7 @@
 #pragma once
 // The peers' adapters, each in its own file and compiled only when its engine is installed.
 
-#include "rigidlab/lessons/bench.h"
+#include "bench.h"
 
 #include <memory>
 
@@ -9,11 +9,11 @@ namespace rigidlab::bench {
 
 #ifdef RIGIDLAB_BENCH_BOX2D
 /// Box2D 2.4 (single precision) at its usual settings: 8 velocity and 3 position iterations.
-std::unique_ptr<lessons::BenchEngine> makeBox2dEngine();
+std::unique_ptr<bench::BenchEngine> makeBox2dEngine();
 #endif
 #ifdef RIGIDLAB_BENCH_CHIPMUNK
 /// Chipmunk 7 (double precision) at its usual settings: 10 iterations.
-std::unique_ptr<lessons::BenchEngine> makeChipmunkEngine();
+std::unique_ptr<bench::BenchEngine> makeChipmunkEngine();
 #endif
 
 } // namespace rigidlab::bench

@@ -7,7 +7,7 @@
 
 #include "fuzz_check.h"
 
-#include "rigidlab/lessons/lesson.h"
+#include "format/lesson.h"
 #include "rigidlab/physics/world.h"
 
 #include <QByteArray>

@@ -7,7 +7,7 @@
 
 #include "fuzz_check.h"
 
-#include "rigidlab/lessons/scene_loader.h"
+#include "format/scene_loader.h"
 #include "rigidlab/physics/world.h"
 
 #include <QByteArray>

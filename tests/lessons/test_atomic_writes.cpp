@@ -4,9 +4,9 @@
 // In process (writeFileAtomically, runScene) and through rigidlab-cli (run, error-vs-time,
 // stress, bench --export, lesson --export). The window's writers are in tests/ui.
 
-#include "rigidlab/lessons/atomic_file.h"
-#include "rigidlab/lessons/scene_loader.h"
-#include "rigidlab/lessons/scene_run.h"
+#include "format/atomic_file.h"
+#include "format/scene_loader.h"
+#include "run/scene_run.h"
 
 #include "test_main.h"
 

@@ -4,7 +4,7 @@
 
 #include "test_lessons.h"
 
-#include "rigidlab/lessons/scene_run.h"
+#include "run/scene_run.h"
 
 #include <QDir>
 #include <QTemporaryDir>

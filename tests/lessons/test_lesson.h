@@ -3,8 +3,8 @@
 // (test_lesson_loader.cpp), and what the lessons measure, judge and claim about the physics
 // (test_lesson_physics.cpp). Shared helpers here.
 
-#include "rigidlab/lessons/lesson.h"
-#include "rigidlab/lessons/measurements.h"
+#include "format/lesson.h"
+#include "run/measurements.h"
 
 #include <QDir>
 #include <QFile>

@@ -3,8 +3,8 @@
 
 #include "test_lesson.h"
 
-#include "rigidlab/lessons/document.h"
-#include "rigidlab/lessons/lesson_catalog.h"
+#include "format/document.h"
+#include "format/lesson_catalog.h"
 
 #include <QFileInfo>
 #include <QRegularExpression>

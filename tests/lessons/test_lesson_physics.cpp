@@ -4,7 +4,7 @@
 #include "test_lesson.h"
 #include "test_main.h"
 
-#include "rigidlab/lessons/divergence_message.h"
+#include "format/divergence_message.h"
 
 #include <QRegularExpression>
 

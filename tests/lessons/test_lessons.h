@@ -2,7 +2,7 @@
 // Tests of the lessons library, one executable: the scene loader (test_scene_loader.cpp) and
 // running scenes, validation and the SAT report (test_scene_run.cpp). Shared helpers here.
 
-#include "rigidlab/lessons/scene_loader.h"
+#include "format/scene_loader.h"
 
 #include <QByteArray>
 #include <QFile>

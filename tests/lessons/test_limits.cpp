@@ -3,9 +3,9 @@
 
 #include "test_limits.h"
 
-#include "rigidlab/lessons/lesson.h"
-#include "rigidlab/lessons/limits.h"
-#include "rigidlab/lessons/scene_loader.h"
+#include "format/lesson.h"
+#include "format/limits.h"
+#include "format/scene_loader.h"
 #include "rigidlab/physics/sat.h"
 #include "rigidlab/physics/shape.h"
 

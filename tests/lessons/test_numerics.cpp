@@ -3,9 +3,9 @@
 // Boost.Odeint's methods beside ours), exact references checked against each other, and every
 // stress case ending with its documented verdict.
 
-#include "rigidlab/lessons/error_vs_time.h"
-#include "rigidlab/lessons/reference_problems.h"
-#include "rigidlab/lessons/stress.h"
+#include "numerics/error_vs_time.h"
+#include "numerics/reference_problems.h"
+#include "numerics/stress.h"
 
 #include "test_main.h"
 

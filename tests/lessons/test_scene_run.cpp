@@ -2,9 +2,9 @@
 
 #include "test_lessons.h"
 
-#include "rigidlab/lessons/document.h"
-#include "rigidlab/lessons/sat_report.h"
-#include "rigidlab/lessons/scene_run.h"
+#include "format/document.h"
+#include "format/sat_report.h"
+#include "run/scene_run.h"
 
 #include "test_main.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // The lessons the lab ships, as the window finds them: what the window tests walk through.
 
-#include "main_window.h"
+#include "window/main_window.h"
 
 #include <QDir>
 #include <QStringList>

@@ -3,18 +3,18 @@
 // the lesson panel's texts do not overlap; presentation mode is large and thick enough for the
 // back of a room and gives the layout back when it ends.
 
-#include "body_item.h"
-#include "lesson_player.h"
-#include "main_window.h"
-#include "plot_widget.h"
-#include "sat_overlay.h"
-#include "sat_panel.h"
+#include "common/theme.h"
+#include "lesson_player/lesson_player.h"
+#include "panels/sat_panel.h"
+#include "plots/plot_widget.h"
 #include "shipped_lessons.h"
-#include "simulation_controller.h"
-#include "theme.h"
-#include "world_view.h"
+#include "simulation/simulation_controller.h"
+#include "view/body_item.h"
+#include "view/sat_overlay.h"
+#include "view/world_view.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/lesson.h"
+#include "format/lesson.h"
 
 #include <qcustomplot.h>
 

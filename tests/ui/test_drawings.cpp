@@ -3,17 +3,17 @@
 // with their floors; velocity arrows only where they have a length; the billiards break big
 // and slow enough to watch.
 
-#include "body_item.h"
-#include "error_panel.h"
-#include "lesson_player.h"
-#include "main_window.h"
-#include "overlays.h"
-#include "simulation_controller.h"
-#include "work_precision_plot.h"
-#include "world_view.h"
+#include "lesson_player/lesson_player.h"
+#include "panels/error_panel.h"
+#include "plots/work_precision_plot.h"
+#include "simulation/simulation_controller.h"
+#include "view/body_item.h"
+#include "view/overlays.h"
+#include "view/world_view.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/error_vs_time.h"
-#include "rigidlab/lessons/lesson.h"
+#include "format/lesson.h"
+#include "numerics/error_vs_time.h"
 
 #include <QDockWidget>
 #include <QtTest>

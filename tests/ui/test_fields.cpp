@@ -2,15 +2,15 @@
 // the lesson's answer boxes, typed into key by key while the simulation runs, in an English
 // and a Czech locale. Offscreen, driven as a user would.
 
-#include "control_panel.h"
-#include "inspector_panel.h"
-#include "lesson_player.h"
-#include "main_window.h"
-#include "number_field.h"
-#include "simulation_controller.h"
-#include "world_view.h"
+#include "lesson_player/lesson_player.h"
+#include "panels/control_panel.h"
+#include "panels/inspector_panel.h"
+#include "panels/number_field.h"
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/limits.h"
+#include "format/limits.h"
 
 #include "test_main.h"
 

@@ -2,11 +2,11 @@
 // exactly as the window makes them, captions, and the headless export of every shipped
 // lesson through rigidlab-cli, each file checked for being what it says it is.
 
-#include "lesson_export.h"
-#include "plot_widget.h"
-#include "step_sampler.h"
+#include "plots/lesson_export.h"
+#include "plots/plot_widget.h"
+#include "plots/step_sampler.h"
 
-#include "rigidlab/lessons/lesson.h"
+#include "format/lesson.h"
 
 #include <qcustomplot.h>
 

@@ -2,13 +2,13 @@
 // scene) stays out of sight until the student has answered; a wrong first try reads the
 // lesson's hint and not the value; a second try or "Show me" gives the value.
 
-#include "lesson_panels.h"
-#include "lesson_player.h"
-#include "main_window.h"
-#include "simulation_controller.h"
+#include "lesson_player/lesson_panels.h"
+#include "lesson_player/lesson_player.h"
+#include "simulation/simulation_controller.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/lesson.h"
-#include "rigidlab/lessons/measurements.h"
+#include "format/lesson.h"
+#include "run/measurements.h"
 
 #include "test_main.h"
 

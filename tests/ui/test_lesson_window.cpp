@@ -1,16 +1,16 @@
 // Lessons in the window: every shipped lesson opens, its steps go forward and back, each
 // step shows only the panels and plots it names, questions are judged, plots export.
 
-#include "lesson_panels.h"
-#include "lesson_player.h"
-#include "main_window.h"
-#include "plot_widget.h"
-#include "sat_panel.h"
+#include "lesson_player/lesson_panels.h"
+#include "lesson_player/lesson_player.h"
+#include "panels/sat_panel.h"
+#include "plots/plot_widget.h"
 #include "shipped_lessons.h"
-#include "simulation_controller.h"
+#include "simulation/simulation_controller.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/lesson.h"
-#include "rigidlab/lessons/measurements.h"
+#include "format/lesson.h"
+#include "run/measurements.h"
 
 #include <QDockWidget>
 #include <QImage>

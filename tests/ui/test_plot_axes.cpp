@@ -3,13 +3,13 @@
 // pixel width whatever the data, CSV times are the step times, and a conserved quantity of a
 // real run is drawn as conserved.
 
-#include "plot_export.h"
-#include "plot_range.h"
-#include "plot_widget.h"
-#include "simulation_controller.h"
-#include "step_sampler.h"
+#include "plots/plot_export.h"
+#include "plots/plot_range.h"
+#include "plots/plot_widget.h"
+#include "plots/step_sampler.h"
+#include "simulation/simulation_controller.h"
 
-#include "rigidlab/lessons/scene_loader.h"
+#include "format/scene_loader.h"
 
 #include <qcustomplot.h>
 

@@ -3,17 +3,17 @@
 // legends in words, and curves that coincide all visible, in the window and in exports; the
 // labels of marks close together stacked or merged; exports start in the documents folder and
 // remember the last one chosen.
-#include "display_names.h"
-#include "export_folder.h"
-#include "lesson_export.h"
-#include "lesson_player.h"
-#include "main_window.h"
-#include "plot_export.h"
-#include "plot_widget.h"
-#include "sample_buffer.h"
-#include "simulation_controller.h"
+#include "common/display_names.h"
+#include "common/export_folder.h"
+#include "lesson_player/lesson_player.h"
+#include "plots/lesson_export.h"
+#include "plots/plot_export.h"
+#include "plots/plot_widget.h"
+#include "plots/sample_buffer.h"
+#include "simulation/simulation_controller.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/lesson.h"
+#include "format/lesson.h"
 
 #include <qcustomplot.h>
 

@@ -2,9 +2,9 @@
 // bounded over long runs, time travel and marks behave, and every export is either a valid
 // file or nothing at all.
 
-#include "plot_export.h"
-#include "plot_widget.h"
-#include "sample_buffer.h"
+#include "plots/plot_export.h"
+#include "plots/plot_widget.h"
+#include "plots/sample_buffer.h"
 
 #include <qcustomplot.h>
 

@@ -3,13 +3,13 @@
 // in a light and a dark system palette; and where a lesson's text says a world stops, it
 // stops there and the window says why.
 
-#include "divergence_banner.h"
-#include "divergence_text.h"
-#include "lesson_player.h"
-#include "main_window.h"
-#include "simulation_controller.h"
-#include "theme.h"
-#include "world_view.h"
+#include "common/theme.h"
+#include "lesson_player/lesson_player.h"
+#include "panels/divergence_banner.h"
+#include "panels/divergence_text.h"
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
+#include "window/main_window.h"
 
 #include "test_main.h"
 

@@ -2,18 +2,18 @@
 // diverges, closing it in the middle of an export or a sweep, opening a file while another
 // runs, and settings that cannot be saved. Offscreen, driven as a user would.
 
-#include "control_panel.h"
-#include "divergence_banner.h"
-#include "error_panel.h"
-#include "inspector_panel.h"
-#include "lesson_player.h"
-#include "main_window.h"
-#include "number_field.h"
-#include "plot_widget.h"
-#include "simulation_controller.h"
+#include "lesson_player/lesson_player.h"
+#include "panels/control_panel.h"
+#include "panels/divergence_banner.h"
+#include "panels/error_panel.h"
+#include "panels/inspector_panel.h"
+#include "panels/number_field.h"
+#include "plots/plot_widget.h"
+#include "simulation/simulation_controller.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/limits.h"
-#include "rigidlab/lessons/scene_loader.h"
+#include "format/limits.h"
+#include "format/scene_loader.h"
 
 #include <QAbstractSpinBox>
 #include <QApplication>

@@ -3,14 +3,14 @@
 // also after Fit scene and after a body was dragged away; the label is readable and the table
 // fits the window's right column without a horizontal scroll bar.
 
-#include "lesson_player.h"
-#include "main_window.h"
-#include "sat_panel.h"
-#include "simulation_controller.h"
-#include "theme.h"
-#include "world_view.h"
+#include "common/theme.h"
+#include "lesson_player/lesson_player.h"
+#include "panels/sat_panel.h"
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/lesson.h"
+#include "format/lesson.h"
 
 #include <QHeaderView>
 #include <QScrollBar>

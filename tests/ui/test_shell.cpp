@@ -1,10 +1,10 @@
 // The window's shell (the classroom-window issue): the command line of rigidlab, the
 // screenshot command, Help › Controls and About, and the status bar.
 
-#include "about_dialog.h"
-#include "main_window.h"
-#include "screenshots.h"
-#include "simulation_controller.h"
+#include "simulation/simulation_controller.h"
+#include "window/about_dialog.h"
+#include "window/main_window.h"
+#include "window/screenshots.h"
 
 #include "rigidlab/physics/profile.h"
 #include "rigidlab/version.h"

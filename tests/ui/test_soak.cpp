@@ -19,14 +19,14 @@
 // RIGIDLAB_SOAK_SECONDS sets the simulated time: `./lab soak` runs the whole hour (3600 s);
 // ./lab test runs kDefaultSeconds.
 
-#include "history.h"
-#include "main_window.h"
-#include "plot_widget.h"
-#include "simulation_controller.h"
+#include "plots/plot_widget.h"
+#include "simulation/history.h"
+#include "simulation/simulation_controller.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/divergence_message.h"
-#include "rigidlab/lessons/scene.h"
-#include "rigidlab/lessons/scene_loader.h"
+#include "format/divergence_message.h"
+#include "format/scene.h"
+#include "format/scene_loader.h"
 
 #include <QDockWidget>
 #include <QElapsedTimer>

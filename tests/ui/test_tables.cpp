@@ -3,14 +3,14 @@
 // is as tall as its rows; the bounce, collision and SAT tables export as CSV with a decimal
 // point, numbers that read back exactly.
 
-#include "fitting_table.h"
-#include "lesson_panels.h"
-#include "lesson_player.h"
-#include "main_window.h"
-#include "sat_panel.h"
-#include "simulation_controller.h"
+#include "lesson_player/lesson_panels.h"
+#include "lesson_player/lesson_player.h"
+#include "panels/fitting_table.h"
+#include "panels/sat_panel.h"
+#include "simulation/simulation_controller.h"
+#include "window/main_window.h"
 
-#include "rigidlab/lessons/lesson.h"
+#include "format/lesson.h"
 
 #include <QFile>
 #include <QHeaderView>

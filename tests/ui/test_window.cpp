@@ -1,14 +1,14 @@
 // The lab window, driven as a user would: keys, mouse, menus, under the offscreen platform.
 
-#include "body_item.h"
-#include "control_panel.h"
-#include "inspector_panel.h"
-#include "main_window.h"
-#include "number_field.h"
-#include "plot_export.h"
-#include "plot_widget.h"
-#include "simulation_controller.h"
-#include "world_view.h"
+#include "panels/control_panel.h"
+#include "panels/inspector_panel.h"
+#include "panels/number_field.h"
+#include "plots/plot_export.h"
+#include "plots/plot_widget.h"
+#include "simulation/simulation_controller.h"
+#include "view/body_item.h"
+#include "view/world_view.h"
+#include "window/main_window.h"
 
 #include <QCheckBox>
 #include <QFile>

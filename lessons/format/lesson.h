@@ -1,0 +1,151 @@
+#pragma once
+// A lesson: an ordered list of steps, each with its text, a prepared scene and settings, and
+// only the plots, overlays and panels the step needs. Format: lessons/LESSON_FORMAT.md.
+
+#include "format/scene.h"
+#include "rigidlab/physics/contact.h"
+#include "rigidlab/physics/integrator.h"
+
+#include <QByteArray>
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+#include <algorithm>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace rigidlab::lessons {
+
+/// The version this loader reads (the value of the top-level key "rigidlab-lesson").
+inline constexpr int kLessonFormatVersion = 1;
+/// The most worlds a step may compare side by side (the main one included).
+inline constexpr int kMaxVariants = 6;
+/// The largest lesson file read [bytes].
+inline constexpr qint64 kMaxLessonFileBytes = 8 * 1024 * 1024;
+
+/// What a question reads from the running simulation.
+struct Measure {
+    enum class Kind {
+        Apex,            ///< height of the body's n-th apex after a bounce, above `above` [m]
+        Speed,           ///< |v| of the body at `time` [m/s]
+        VelocityX,       ///< vx of the body at `time` [m/s]
+        VelocityY,       ///< vy of the body at `time` [m/s]
+        AngularVelocity, ///< omega of the body at `time` [rad/s]
+        PositionX,       ///< x of the body origin at `time` [m]
+        PositionY,       ///< y of the body origin at `time` [m]
+        EnergyDrift,     ///< (E + dissipated - E0) / |E0| at `time` [%]
+        MomentumX,       ///< total px at `time` [kg m/s]
+        MomentumY,       ///< total py at `time` [kg m/s]
+    };
+    Kind kind = Kind::Apex;
+    QString body;     ///< body id (not for EnergyDrift, MomentumX, MomentumY)
+    int n = 1;        ///< Apex: 1 = the apex after the first bounce
+    double above = 0; ///< Apex: heights are measured above this y [m]
+    double time = 0;  ///< the others: when the value is read [s]
+};
+
+struct Question {
+    QString prompt; ///< plain text, shown above the answer box
+    Measure measure;
+    QString unit;                   ///< shown after the answer box, e.g. "m"
+    double tolerance = 0.05;        ///< relative to the measured value
+    double absoluteTolerance = 0.0; ///< added to it, for values near zero
+    /// Read after a wrong first try, instead of the measured value (lesson data, so that it
+    /// is translated with the lesson); empty: none.
+    QString hint;
+    /// What would give the answer away, kept from the student until this question is
+    /// answered right, twice wrong or shown: "run", "panel:NAME", "plot:NAME",
+    /// "column:collision.after", "column:bounces.heights" (LESSON_FORMAT.md).
+    QStringList holdBack;
+};
+
+/// The names a question may hold back, besides "panel:" and "plot:" with a panel or plot the
+/// step shows.
+inline constexpr const char16_t* kHoldBackRun = u"run";
+inline constexpr const char16_t* kHoldBackCollisionAfter = u"column:collision.after";
+inline constexpr const char16_t* kHoldBackBounceHeights = u"column:bounces.heights";
+
+/// Settings a step sets on top of its scene's.
+struct StepSettings {
+    std::optional<physics::IntegratorKind> integrator;
+    std::optional<double> dt; ///< [s]
+    std::optional<physics::SolverKind> solver;
+    std::optional<int> iterations;
+    std::optional<double> restitution; ///< for every body
+    std::optional<double> friction;    ///< for every body
+    std::optional<bool> gravity;       ///< false: no gravity
+    std::optional<double> timeScale;   ///< the window's slow motion, 0.1 to 4
+};
+
+/// Worlds run side by side with the main one, differing in one setting. Variant 0 is the
+/// main world; variant i > 0 is drawn as a ghost, shifted by i * offset.
+struct Comparison {
+    std::vector<physics::IntegratorKind> integrators; ///< one world each, or empty
+    std::vector<physics::SolverKind> solvers;         ///< one world each, or empty
+    physics::Vec2 offset = physics::Vec2::Zero();     ///< drawing shift per variant [m]
+    int count() const { return static_cast<int>(std::max(integrators.size(), solvers.size())); }
+    QString label(int i) const; ///< "euler", "seed-impulse", ...
+};
+
+struct LessonStep {
+    QString title;
+    QString text;      ///< Markdown
+    Scene scene;       ///< inline in the lesson, or loaded from scenePath
+    QString scenePath; ///< absolute path of the scene file, if any
+    StepSettings settings;
+    std::optional<Comparison> compare;
+    QStringList plots;    ///< of: energy, momentum, drift, compare-energy, compare-drift
+    QStringList overlays; ///< of: velocities, contacts, boxes, centres, trails, springs
+    QStringList panels;   ///< of: controls, inspector, sat, bounces, collision
+    /// Controls the student may change (integrator, dt, solver, iterations, restitution,
+    /// friction, gravity, timeScale); nullopt: all of them.
+    std::optional<QStringList> allow;
+    std::optional<std::pair<QString, QString>> sat; ///< body ids the SAT panel looks at
+    std::vector<Question> questions;
+    double exportTime = 10.0; ///< simulated seconds run for a headless plot export [s]
+    bool autoplay = true;     ///< start running when the step opens
+
+    /// What the questions not yet answered (answered[i] false) hold back, in order, each once.
+    QStringList heldBack(const std::vector<bool>& answered) const;
+};
+
+struct Lesson {
+    QString path; ///< absolute
+    QString title;
+    QString summary;
+    QString level;   ///< "secondary school", "first year", ...
+    int minutes = 0; ///< estimated time [min]; 0: not given
+    /// Place in the teaching order of the shipped lessons (1 first); 0: not given, listed
+    /// after the numbered ones.
+    int order = 0;
+    QString description; ///< one line for the lesson menu; may be empty
+    QStringList goals;
+    std::vector<LessonStep> steps;
+};
+
+struct LessonLoadResult {
+    bool ok = false;
+    QString error;        ///< one line `FILE: PLACE: what is wrong`, like the scene loader's
+    QStringList warnings; ///< same form
+    Lesson lesson;
+};
+
+/// Reads and checks a lesson; scene paths are relative to the lesson's folder and may not
+/// leave it (no "..", no absolute paths).
+LessonLoadResult loadLessonFile(const QString& path);
+/// The same for a lesson held in memory; `path` names it in messages, and scene paths are
+/// relative to its folder.
+LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path);
+/// The same for a document already parsed (one whose top level holds "rigidlab-lesson").
+LessonLoadResult loadLessonObject(const QJsonObject& root, const QString& path);
+
+/// Applies a step's settings to a world built from its scene.
+void applySettings(const StepSettings& settings, physics::World& world);
+
+/// The step's worlds: [0] the main world, then one per compared variant (count() - 1 more,
+/// the first variant being the main world itself).
+std::vector<physics::World> buildStepWorlds(const LessonStep& step);
+
+} // namespace rigidlab::lessons

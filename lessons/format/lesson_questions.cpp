@@ -1,0 +1,291 @@
+// Lesson files: the parts of a step that name bodies of its scene, the SAT pair and the
+// questions with what they measure (lessons/LESSON_FORMAT.md). Read for lesson_loader.cpp.
+
+#include "format/lesson_reading.h"
+
+#include <array>
+
+namespace rigidlab::lessons::detail {
+
+namespace {
+
+constexpr int kMaxQuestions = 20;
+constexpr int kMaxApex = 1000;
+constexpr double kMaxMeasureTime = 3600.0; ///< [s]
+
+struct MeasureName {
+    QStringView name;
+    Measure::Kind kind;
+};
+constexpr std::array kMeasureNames = {
+    MeasureName{u"apex", Measure::Kind::Apex},
+    MeasureName{u"speed", Measure::Kind::Speed},
+    MeasureName{u"velocity-x", Measure::Kind::VelocityX},
+    MeasureName{u"velocity-y", Measure::Kind::VelocityY},
+    MeasureName{u"angular-velocity", Measure::Kind::AngularVelocity},
+    MeasureName{u"position-x", Measure::Kind::PositionX},
+    MeasureName{u"position-y", Measure::Kind::PositionY},
+    MeasureName{u"energy-drift", Measure::Kind::EnergyDrift},
+    MeasureName{u"momentum-x", Measure::Kind::MomentumX},
+    MeasureName{u"momentum-y", Measure::Kind::MomentumY},
+};
+
+bool measuresBody(Measure::Kind kind)
+{
+    return kind != Measure::Kind::EnergyDrift && kind != Measure::Kind::MomentumX &&
+           kind != Measure::Kind::MomentumY;
+}
+
+/// A body id of the step's scene, in `object[key]`.
+bool readBodyId(JsonReader& in, const QJsonObject& object, QStringView key, const QString& place,
+                const Scene& scene, QString& out)
+{
+    if (!in.string(object, key, place, out, true)) {
+        return false;
+    }
+    if (!scene.bodyIndex(out)) {
+        return in.fail(joinPlace(place, key), QStringLiteral("no body with id \"%1\"").arg(out));
+    }
+    return true;
+}
+
+bool readMeasure(JsonReader& in, const QJsonValue& value, const QString& place, const Scene& scene,
+                 Measure& measure)
+{
+    QJsonObject object;
+    QString kindName;
+    if (!in.asObject(value, place, object) ||
+        !in.checkKeys(object, place, {u"kind", u"body", u"n", u"above", u"time"}) ||
+        !in.string(object, u"kind", place, kindName, true)) {
+        return false;
+    }
+    bool known = false;
+    for (const MeasureName& m : kMeasureNames) {
+        if (kindName == m.name) {
+            measure.kind = m.kind;
+            known = true;
+        }
+    }
+    if (!known) {
+        QStringList names;
+        for (const MeasureName& m : kMeasureNames) {
+            names.append(m.name.toString());
+        }
+        return in.fail(joinPlace(place, u"kind"), QStringLiteral("unknown measure \"%1\" "
+                                                                 "(expected %2)")
+                                                      .arg(kindName, names.join(u", ")));
+    }
+    // Each kind then checks its own keys, so that a key that belongs to another kind is
+    // reported as such.
+    if (measure.kind == Measure::Kind::Apex) {
+        if (!in.checkKeys(object, place, {u"kind", u"body", u"n", u"above"}) ||
+            !readBodyId(in, object, u"body", place, scene, measure.body) ||
+            !in.integer(object, u"n", place, measure.n, 1, kMaxApex) ||
+            !in.number(object, u"above", place, measure.above, NumberRule::Finite,
+                       limits::kCoordinate)) {
+            return false;
+        }
+    } else {
+        const bool body = measuresBody(measure.kind);
+        if (!(body ? in.checkKeys(object, place, {u"kind", u"body", u"time"})
+                   : in.checkKeys(object, place, {u"kind", u"time"})) ||
+            (body && !readBodyId(in, object, u"body", place, scene, measure.body)) ||
+            !in.number(object, u"time", place, measure.time, NumberRule::NonNegative, true)) {
+            return false;
+        }
+        if (measure.time > kMaxMeasureTime) {
+            return in.fail(joinPlace(place, u"time"), QStringLiteral("must be at most %1 s, got %2")
+                                                          .arg(kMaxMeasureTime)
+                                                          .arg(formatNumber(measure.time)));
+        }
+    }
+    if (!measure.body.isEmpty()) {
+        const auto index = scene.bodyIndex(measure.body);
+        const physics::BodyType type = scene.bodies[static_cast<size_t>(*index)].type;
+        if (type == physics::BodyType::Static) {
+            return in.fail(
+                joinPlace(place, u"body"),
+                QStringLiteral("body \"%1\" is static: it never moves").arg(measure.body));
+        }
+        if (measure.kind == Measure::Kind::Apex && type != physics::BodyType::Dynamic) {
+            return in.fail(
+                joinPlace(place, u"body"),
+                QStringLiteral("body \"%1\" is kinematic: it never bounces").arg(measure.body));
+        }
+    }
+    return true;
+}
+
+/// One name of a question's "holdBack": what it holds back must be something the step shows.
+bool checkHoldBackName(JsonReader& in, const QString& name, const QString& place,
+                       const LessonStep& step)
+{
+    const auto listed = [](const QStringList& names) {
+        return names.isEmpty() ? QStringLiteral("none") : names.join(u", ");
+    };
+    if (name == QStringView(kHoldBackRun)) {
+        return true;
+    }
+    if (name.startsWith(u"panel:")) {
+        const QString panel = name.mid(6);
+        return step.panels.contains(panel) ||
+               in.fail(place, QStringLiteral("\"%1\": this step shows no panel \"%2\" (its "
+                                             "panels: %3)")
+                                  .arg(name, panel, listed(step.panels)));
+    }
+    if (name.startsWith(u"plot:")) {
+        const QString plot = name.mid(5);
+        return step.plots.contains(plot) ||
+               in.fail(place, QStringLiteral("\"%1\": this step shows no plot \"%2\" (its "
+                                             "plots: %3)")
+                                  .arg(name, plot, listed(step.plots)));
+    }
+    for (const auto& [column, panel] :
+         {std::pair{QStringView(kHoldBackCollisionAfter), QStringView(u"collision")},
+          std::pair{QStringView(kHoldBackBounceHeights), QStringView(u"bounces")}}) {
+        if (name == column) {
+            return step.panels.contains(panel.toString()) ||
+                   in.fail(place, QStringLiteral("\"%1\" is a column of the %2 panel, which this "
+                                                 "step does not show")
+                                      .arg(name, panel.toString()));
+        }
+    }
+    return in.fail(place, QStringLiteral("unknown name \"%1\" (expected run, panel:NAME, "
+                                         "plot:NAME, %2, %3)")
+                              .arg(name, QStringView(kHoldBackCollisionAfter).toString(),
+                                   QStringView(kHoldBackBounceHeights).toString()));
+}
+
+bool readHoldBack(JsonReader& in, const QJsonObject& object, const QString& place,
+                  const LessonStep& step, QStringList& out)
+{
+    if (!object.contains(u"holdBack")) {
+        return true;
+    }
+    const QString at = joinPlace(place, u"holdBack");
+    QJsonArray list;
+    if (!in.asArray(object.value(u"holdBack"), at, list)) {
+        return false;
+    }
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        const QString itemAt = indexPlace(at, i);
+        if (!list[i].isString()) {
+            return in.fail(itemAt,
+                           QStringLiteral("must be a name \"...\", got ") + describeJson(list[i]));
+        }
+        const QString name = list[i].toString();
+        if (!checkHoldBackName(in, name, itemAt, step)) {
+            return false;
+        }
+        if (out.contains(name)) {
+            return in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
+        }
+        out.append(name);
+    }
+    return true;
+}
+
+bool readQuestion(JsonReader& in, const QJsonValue& value, const QString& place,
+                  const LessonStep& step, Question& question)
+{
+    const Scene& scene = step.scene;
+    QJsonObject object;
+    if (!in.asObject(value, place, object) ||
+        !in.checkKeys(object, place,
+                      {u"prompt", u"measure", u"unit", u"tolerance", u"absoluteTolerance", u"hint",
+                       u"holdBack"}) ||
+        !in.string(object, u"prompt", place, question.prompt, true)) {
+        return false;
+    }
+    if (question.prompt.trimmed().isEmpty()) {
+        return in.fail(joinPlace(place, u"prompt"), QStringLiteral("must not be empty"));
+    }
+    if (!object.contains(u"measure")) {
+        return in.fail(joinPlace(place, u"measure"),
+                       QStringLiteral("required, but missing (what the answer is checked "
+                                      "against)"));
+    }
+    if (!readMeasure(in, object.value(u"measure"), joinPlace(place, u"measure"), scene,
+                     question.measure) ||
+        !in.string(object, u"unit", place, question.unit) ||
+        !in.number(object, u"tolerance", place, question.tolerance, NumberRule::UnitInterval) ||
+        !in.number(object, u"absoluteTolerance", place, question.absoluteTolerance,
+                   NumberRule::NonNegative, limits::kAbsoluteTolerance)) {
+        return false;
+    }
+    if (question.tolerance == 0 && question.absoluteTolerance == 0) {
+        return in.fail(joinPlace(place, u"tolerance"),
+                       QStringLiteral("0, and so is absoluteTolerance: no typed answer would "
+                                      "ever be right"));
+    }
+    if (!in.string(object, u"hint", place, question.hint)) {
+        return false;
+    }
+    if (object.contains(u"hint") && question.hint.trimmed().isEmpty()) {
+        return in.fail(joinPlace(place, u"hint"),
+                       QStringLiteral("must not be empty (leave the key out for no hint)"));
+    }
+    return readHoldBack(in, object, place, step, question.holdBack);
+}
+
+} // namespace
+
+bool readSat(JsonReader& in, const QJsonObject& object, const QString& place, const Scene& scene,
+             std::optional<std::pair<QString, QString>>& out)
+{
+    if (!object.contains(u"sat")) {
+        return true;
+    }
+    const QString at = joinPlace(place, u"sat");
+    QJsonObject pair;
+    QString a;
+    QString b;
+    if (!in.asObject(object.value(u"sat"), at, pair) || !in.checkKeys(pair, at, {u"a", u"b"}) ||
+        !readBodyId(in, pair, u"a", at, scene, a) || !readBodyId(in, pair, u"b", at, scene, b)) {
+        return false;
+    }
+    if (a == b) {
+        return in.fail(joinPlace(at, u"b"),
+                       QStringLiteral("the same body as \"a\": the test needs two bodies"));
+    }
+    for (const auto& [key, id] :
+         {std::pair{QStringView(u"a"), a}, std::pair{QStringView(u"b"), b}}) {
+        const physics::BodyDef& def = scene.bodies[static_cast<size_t>(*scene.bodyIndex(id))];
+        if (def.shape.type != physics::ShapeType::Polygon) {
+            return in.fail(joinPlace(at, key),
+                           QStringLiteral("body \"%1\" is a circle: the separating axis test "
+                                          "steps through polygons (boxes and polygons)")
+                               .arg(id));
+        }
+    }
+    out = std::pair{a, b};
+    return true;
+}
+
+bool readQuestions(JsonReader& in, const QJsonObject& object, const QString& place,
+                   const LessonStep& step, std::vector<Question>& out)
+{
+    if (!object.contains(u"questions")) {
+        return true;
+    }
+    const QString at = joinPlace(place, u"questions");
+    QJsonArray list;
+    if (!in.asArray(object.value(u"questions"), at, list)) {
+        return false;
+    }
+    if (list.size() > kMaxQuestions) {
+        return in.fail(at, QStringLiteral("%1 questions, more than the limit of %2")
+                               .arg(list.size())
+                               .arg(kMaxQuestions));
+    }
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        Question question;
+        if (!readQuestion(in, list[i], indexPlace(at, i), step, question)) {
+            return false;
+        }
+        out.push_back(std::move(question));
+    }
+    return true;
+}
+
+} // namespace rigidlab::lessons::detail

@@ -1,0 +1,591 @@
+// Scene files, format v1: reading and checking. The order of the checks is the order of the
+// file's sections (version, world, bodies, springs, joints), so the first problem reported is
+// the first one a reader of the file would meet.
+
+#include "format/scene_loader.h"
+
+#include "format/json_reader.h"
+
+#include "format/limits.h"
+
+#include "rigidlab/physics/contact.h"
+#include "rigidlab/physics/integrator.h"
+#include "rigidlab/physics/shape.h"
+
+#include <QFileInfo>
+#include <QHash>
+
+#include <array>
+#include <cmath>
+
+namespace rigidlab::lessons {
+
+using detail::indexPlace;
+using detail::joinPlace;
+using detail::JsonReader;
+using detail::NumberRule;
+using physics::BodyId;
+using physics::Vec2;
+
+namespace {
+
+/// Anchors closer than this count as one point when a pin joint is loaded [m].
+constexpr double kJointAnchorTolerance = 1e-6;
+
+constexpr std::array kIntegrators = {
+    physics::IntegratorKind::Euler,
+    physics::IntegratorKind::SymplecticEuler,
+    physics::IntegratorKind::Verlet,
+    physics::IntegratorKind::RK4,
+};
+constexpr std::array kSolvers = {
+    physics::SolverKind::SeedImpulse,
+    physics::SolverKind::SequentialImpulse,
+};
+
+QString fromView(std::string_view s)
+{
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+class SceneReader {
+public:
+    explicit SceneReader(const QString& sourceName) : m_in(sourceName) {}
+
+    SceneLoadResult read(const QJsonObject& root);
+
+private:
+    bool readWorld(const QJsonObject& root);
+    bool readBodies(const QJsonObject& root);
+    bool readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
+                  std::vector<Vec2>& original);
+    /// Reads a shape; `original` gets the file's vertices of a polygon replaced by its hull.
+    bool readShape(const QJsonValue& value, const QString& place, physics::Shape& shape,
+                   std::vector<Vec2>& original);
+    bool readSprings(const QJsonObject& root);
+    bool readSpring(const QJsonValue& value, const QString& place);
+    bool readJoints(const QJsonObject& root);
+    bool readJoint(const QJsonValue& value, const QString& place);
+    /// Reads a body reference: an id string, or null (and, when allowed, absent) for the world.
+    bool readEnd(const QJsonObject& object, QStringView key, const QString& place, BodyId& out,
+                 bool worldAllowed);
+    /// Where a body-local anchor (or, for the world, a world point) is at load [m].
+    Vec2 worldPoint(BodyId body, const Vec2& anchor) const;
+
+    JsonReader m_in;
+    Scene m_scene;
+    QHash<QString, BodyId> m_ids; // lookup only, never iterated: order comes from m_scene
+};
+
+SceneLoadResult SceneReader::read(const QJsonObject& root)
+{
+    const bool ok = m_in.formatVersion(root, QStringLiteral("rigidlab"),
+                                       QStringLiteral("a scene file"), kSceneFormatVersion) &&
+                    m_in.checkKeys(root, {},
+                                   {u"rigidlab", u"title", u"description", u"world", u"bodies",
+                                    u"springs", u"joints"}) &&
+                    m_in.string(root, u"title", {}, m_scene.title) &&
+                    m_in.string(root, u"description", {}, m_scene.description) && readWorld(root) &&
+                    readBodies(root) && readSprings(root) && readJoints(root);
+
+    SceneLoadResult result;
+    result.warnings = m_in.warnings();
+    if (!ok) {
+        result.error = m_in.error();
+        return result;
+    }
+    if (m_scene.title.isEmpty()) {
+        m_scene.title = QFileInfo(m_in.sourceName()).completeBaseName();
+    }
+    result.ok = true;
+    result.scene = std::move(m_scene);
+    return result;
+}
+
+bool SceneReader::readWorld(const QJsonObject& root)
+{
+    if (!root.contains(u"world")) {
+        return true;
+    }
+    const QString place = QStringLiteral("world");
+    QJsonObject world;
+    physics::WorldDef& def = m_scene.world;
+    if (!m_in.asObject(root.value(u"world"), place, world) ||
+        !m_in.checkKeys(world, place,
+                        {u"gravity", u"dt", u"integrator", u"solver", u"iterations", u"restitution",
+                         u"friction", u"gravitation", u"drag", u"sleep", u"continuous",
+                         u"tolerance"}) ||
+        !m_in.vec2(world, u"gravity", place, def.gravity, limits::kGravity) ||
+        !m_in.number(world, u"dt", place, def.dt, NumberRule::Positive)) {
+        return false;
+    }
+    if (def.dt < kMinDt || def.dt > kMaxDt) {
+        return m_in.fail(joinPlace(place, u"dt"),
+                         QStringLiteral("must be from %1 to %2 s, got %3")
+                             .arg(detail::formatNumber(kMinDt), detail::formatNumber(kMaxDt),
+                                  detail::formatNumber(def.dt)));
+    }
+
+    QString name;
+    if (world.contains(u"integrator")) {
+        if (!m_in.string(world, u"integrator", place, name)) {
+            return false;
+        }
+        const auto kind = physics::integratorFromName(name.toStdString());
+        if (!kind) {
+            QStringList names;
+            for (auto k : kIntegrators) {
+                names.append(fromView(physics::integratorName(k)));
+            }
+            return m_in.fail(joinPlace(place, u"integrator"),
+                             QStringLiteral("unknown integrator \"%1\" (expected %2)")
+                                 .arg(name, names.join(u", ")));
+        }
+        def.integrator = *kind;
+    }
+    if (world.contains(u"solver")) {
+        if (!m_in.string(world, u"solver", place, name)) {
+            return false;
+        }
+        const auto kind = physics::solverFromName(name.toStdString());
+        if (!kind) {
+            QStringList names;
+            for (auto k : kSolvers) {
+                names.append(fromView(physics::solverName(k)));
+            }
+            return m_in.fail(
+                joinPlace(place, u"solver"),
+                QStringLiteral("unknown solver \"%1\" (expected %2)").arg(name, names.join(u", ")));
+        }
+        def.solver = *kind;
+    }
+    if (world.contains(u"sleep")) {
+        bool sleep = false;
+        if (!m_in.boolean(world, u"sleep", place, sleep, false)) {
+            return false;
+        }
+        def.sleep = sleep;
+    }
+    return m_in.integer(world, u"iterations", place, def.iterations, 1, kMaxIterations) &&
+           m_in.number(world, u"restitution", place, def.restitution, NumberRule::UnitInterval,
+                       limits::kRestitution) &&
+           m_in.number(world, u"friction", place, def.friction, NumberRule::NonNegative,
+                       limits::kFriction) &&
+           m_in.number(world, u"gravitation", place, def.gravitation, NumberRule::NonNegative,
+                       limits::kGravitation) &&
+           m_in.number(world, u"drag", place, def.drag, NumberRule::NonNegative, limits::kDrag) &&
+           m_in.boolean(world, u"continuous", place, def.continuous) &&
+           m_in.number(world, u"tolerance", place, def.tolerances.absolute, NumberRule::Positive,
+                       limits::kTolerance) &&
+           m_in.number(world, u"tolerance", place, def.tolerances.relative, NumberRule::Positive,
+                       limits::kTolerance);
+}
+
+bool SceneReader::readBodies(const QJsonObject& root)
+{
+    const QString place = QStringLiteral("bodies");
+    if (!root.contains(u"bodies")) {
+        return m_in.fail(place, QStringLiteral("required, but missing (it may be empty: [])"));
+    }
+    QJsonArray bodies;
+    if (!m_in.asArray(root.value(u"bodies"), place, bodies)) {
+        return false;
+    }
+    if (bodies.size() > kMaxBodies) {
+        return m_in.fail(place, QStringLiteral("%1 bodies, more than the limit of %2")
+                                    .arg(bodies.size())
+                                    .arg(kMaxBodies));
+    }
+    m_scene.bodies.reserve(static_cast<size_t>(bodies.size()));
+    m_scene.originalVertices.reserve(static_cast<size_t>(bodies.size()));
+    for (qsizetype i = 0; i < bodies.size(); ++i) {
+        physics::BodyDef def;
+        std::vector<Vec2> original;
+        if (!readBody(bodies[i], indexPlace(place, i), def, original)) {
+            return false;
+        }
+        m_ids.insert(QString::fromStdString(def.name), static_cast<BodyId>(i));
+        m_scene.bodies.push_back(std::move(def));
+        m_scene.originalVertices.push_back(std::move(original));
+    }
+    return true;
+}
+
+bool SceneReader::readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
+                           std::vector<Vec2>& original)
+{
+    QJsonObject body;
+    QString id;
+    if (!m_in.asObject(value, place, body) ||
+        !m_in.checkKeys(body, place,
+                        {u"id", u"type", u"shape", u"position", u"angle", u"velocity",
+                         u"angularVelocity", u"density", u"mass", u"restitution", u"friction",
+                         u"collide"}) ||
+        !m_in.string(body, u"id", place, id, true)) {
+        return false;
+    }
+    const QString idPlace = joinPlace(place, u"id");
+    if (id.isEmpty()) {
+        return m_in.fail(idPlace, QStringLiteral("must not be empty"));
+    }
+    if (id.size() > kMaxBodyIdLength) {
+        return m_in.fail(idPlace,
+                         QStringLiteral("longer than %1 characters").arg(kMaxBodyIdLength));
+    }
+    for (QChar c : id) {
+        if (c.category() == QChar::Other_Control) {
+            return m_in.fail(idPlace, QStringLiteral("must not hold control characters"));
+        }
+    }
+    if (const auto other = m_ids.constFind(id); other != m_ids.constEnd()) {
+        return m_in.fail(idPlace, QStringLiteral("duplicate id \"%1\" (bodies[%2] has it already)")
+                                      .arg(id, QString::number(other.value())));
+    }
+    def.name = id.toStdString();
+
+    if (body.contains(u"type")) {
+        QString type;
+        if (!m_in.string(body, u"type", place, type)) {
+            return false;
+        }
+        if (type == u"dynamic") {
+            def.type = physics::BodyType::Dynamic;
+        } else if (type == u"static") {
+            def.type = physics::BodyType::Static;
+        } else if (type == u"kinematic") {
+            def.type = physics::BodyType::Kinematic;
+        } else {
+            return m_in.fail(joinPlace(place, u"type"),
+                             QStringLiteral("unknown body type \"%1\" (expected dynamic, static, "
+                                            "kinematic)")
+                                 .arg(type));
+        }
+    }
+    if (!body.contains(u"shape")) {
+        return m_in.fail(joinPlace(place, u"shape"), QStringLiteral("required, but missing"));
+    }
+    if (!readShape(body.value(u"shape"), joinPlace(place, u"shape"), def.shape, original)) {
+        return false;
+    }
+    if (body.contains(u"density") && body.contains(u"mass")) {
+        return m_in.fail(joinPlace(place, u"mass"),
+                         QStringLiteral("give \"density\" or \"mass\", not both"));
+    }
+    if (!m_in.vec2(body, u"position", place, def.position, limits::kCoordinate) ||
+        !m_in.number(body, u"angle", place, def.angle, NumberRule::Finite, limits::kAngle) ||
+        !m_in.vec2(body, u"velocity", place, def.velocity, limits::kVelocity) ||
+        !m_in.number(body, u"angularVelocity", place, def.angularVelocity, NumberRule::Finite,
+                     limits::kAngularVelocity) ||
+        !m_in.number(body, u"density", place, def.density, NumberRule::Positive,
+                     limits::kDensity) ||
+        !m_in.number(body, u"mass", place, def.mass, NumberRule::Positive, limits::kMass) ||
+        !m_in.number(body, u"restitution", place, def.restitution, NumberRule::UnitInterval,
+                     limits::kRestitution) ||
+        !m_in.number(body, u"friction", place, def.friction, NumberRule::NonNegative,
+                     limits::kFriction) ||
+        !m_in.boolean(body, u"collide", place, def.collide)) {
+        return false;
+    }
+
+    // Sizes and densities are each finite, but their products need not be.
+    const physics::MassProperties unit = physics::computeMass(def.shape, 1.0);
+    if (!(std::isfinite(unit.area) && unit.area > 0 && std::isfinite(unit.inertia))) {
+        return m_in.fail(joinPlace(place, u"shape"),
+                         QStringLiteral("too large or too small: its area works out as %1 m^2")
+                             .arg(detail::formatNumber(unit.area)));
+    }
+    const double mass = def.mass > 0 ? def.mass : def.density * unit.area;
+    if (!(std::isfinite(mass) && limits::kMass.contains(mass))) {
+        return m_in.fail(
+            joinPlace(place, u"density"),
+            QStringLiteral("the mass works out as %1 kg (density times area); it "
+                           "must be %2")
+                .arg(detail::formatNumber(mass), detail::describeRange(limits::kMass)));
+    }
+
+    if (def.type == physics::BodyType::Static &&
+        (def.velocity != Vec2::Zero() || def.angularVelocity != 0)) {
+        m_in.warn(place, QStringLiteral("a static body never moves: its velocity is ignored "
+                                        "(make it \"kinematic\" to move it)"));
+    }
+    return true;
+}
+
+bool SceneReader::readShape(const QJsonValue& value, const QString& place, physics::Shape& shape,
+                            std::vector<Vec2>& original)
+{
+    QJsonObject object;
+    QString type;
+    // Keys of any shape first, so that a misspelt "type" is reported as what it is; each type
+    // then checks its own.
+    if (!m_in.asObject(value, place, object) ||
+        !m_in.checkKeys(object, place, {u"type", u"radius", u"width", u"height", u"vertices"}) ||
+        !m_in.string(object, u"type", place, type, true)) {
+        return false;
+    }
+    if (type == u"circle") {
+        double radius = 0;
+        if (!m_in.checkKeys(object, place, {u"type", u"radius"}) ||
+            !m_in.number(object, u"radius", place, radius, NumberRule::Positive, limits::kSize,
+                         true)) {
+            return false;
+        }
+        shape = physics::makeCircleShape(radius);
+        return true;
+    }
+    if (type == u"box") {
+        double width = 0;
+        double height = 0;
+        if (!m_in.checkKeys(object, place, {u"type", u"width", u"height"}) ||
+            !m_in.number(object, u"width", place, width, NumberRule::Positive, limits::kSize,
+                         true) ||
+            !m_in.number(object, u"height", place, height, NumberRule::Positive, limits::kSize,
+                         true)) {
+            return false;
+        }
+        shape = physics::makePolygonShape(physics::makeBox(width, height));
+        return true;
+    }
+    if (type == u"polygon") {
+        const QString at = joinPlace(place, u"vertices");
+        QJsonArray list;
+        if (!m_in.checkKeys(object, place, {u"type", u"vertices"})) {
+            return false;
+        }
+        if (!object.contains(u"vertices")) {
+            return m_in.fail(at, QStringLiteral("required, but missing"));
+        }
+        if (!m_in.asArray(object.value(u"vertices"), at, list)) {
+            return false;
+        }
+        if (list.size() < 3 || list.size() > kMaxPolygonVertices) {
+            return m_in.fail(at, QStringLiteral("a polygon needs 3 to %1 vertices, got %2")
+                                     .arg(kMaxPolygonVertices)
+                                     .arg(list.size()));
+        }
+        std::vector<Vec2> vertices(static_cast<size_t>(list.size()));
+        for (qsizetype i = 0; i < list.size(); ++i) {
+            if (!m_in.vec2Value(list[i], indexPlace(at, i), vertices[static_cast<size_t>(i)],
+                                limits::kVertex)) {
+                return false;
+            }
+        }
+        auto built = physics::makePolygon(vertices);
+        if (!built) {
+            return m_in.fail(at, QString::fromStdString(built.error()));
+        }
+        if (!built.value().warning.empty()) {
+            m_in.warn(at, QString::fromStdString(built.value().warning));
+            original = vertices;
+        }
+        shape = physics::makePolygonShape(std::move(built).value().polygon);
+        return true;
+    }
+    return m_in.fail(
+        joinPlace(place, u"type"),
+        QStringLiteral("unknown shape type \"%1\" (expected circle, box, polygon)").arg(type));
+}
+
+bool SceneReader::readEnd(const QJsonObject& object, QStringView key, const QString& place,
+                          BodyId& out, bool worldAllowed)
+{
+    const QString at = joinPlace(place, key);
+    const auto it = object.constFind(key);
+    if (it == object.constEnd() || it.value().isNull()) {
+        if (!worldAllowed) {
+            return m_in.fail(at, it == object.constEnd()
+                                     ? QStringLiteral("required, but missing (a body id)")
+                                     : QStringLiteral("must be a body id, not null"));
+        }
+        out = physics::kWorld;
+        return true;
+    }
+    if (!it.value().isString()) {
+        return m_in.fail(at, QStringLiteral("must be a body id (a string)%1, got %2")
+                                 .arg(worldAllowed ? QStringLiteral(" or null") : QString(),
+                                      detail::describeJson(it.value())));
+    }
+    const QString id = it.value().toString();
+    const auto found = m_ids.constFind(id);
+    if (found == m_ids.constEnd()) {
+        return m_in.fail(at, QStringLiteral("no body with id \"%1\"").arg(id));
+    }
+    out = found.value();
+    return true;
+}
+
+Vec2 SceneReader::worldPoint(BodyId body, const Vec2& anchor) const
+{
+    if (body == physics::kWorld) {
+        return anchor;
+    }
+    const physics::BodyDef& def = m_scene.bodies[static_cast<size_t>(body)];
+    return physics::Transform(def.position, def.angle).apply(anchor);
+}
+
+bool SceneReader::readSprings(const QJsonObject& root)
+{
+    const QString place = QStringLiteral("springs");
+    if (!root.contains(u"springs")) {
+        return true;
+    }
+    QJsonArray springs;
+    if (!m_in.asArray(root.value(u"springs"), place, springs)) {
+        return false;
+    }
+    if (springs.size() > kMaxSprings) {
+        return m_in.fail(place, QStringLiteral("%1 springs, more than the limit of %2")
+                                    .arg(springs.size())
+                                    .arg(kMaxSprings));
+    }
+    for (qsizetype i = 0; i < springs.size(); ++i) {
+        if (!readSpring(springs[i], indexPlace(place, i))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool SceneReader::readSpring(const QJsonValue& value, const QString& place)
+{
+    QJsonObject object;
+    physics::SpringDef spring;
+    if (!m_in.asObject(value, place, object) ||
+        !m_in.checkKeys(
+            object, place,
+            {u"a", u"anchorA", u"b", u"anchorB", u"stiffness", u"damping", u"restLength"}) ||
+        !readEnd(object, u"a", place, spring.a, true) ||
+        !m_in.vec2(object, u"anchorA", place, spring.anchorA, limits::kCoordinate) ||
+        !readEnd(object, u"b", place, spring.b, true) ||
+        !m_in.vec2(object, u"anchorB", place, spring.anchorB, limits::kCoordinate)) {
+        return false;
+    }
+    if (spring.a == physics::kWorld && spring.b == physics::kWorld) {
+        return m_in.fail(place, QStringLiteral("both ends are fixed in the world (a and b are "
+                                               "null): a spring needs a body at one end"));
+    }
+    if (spring.a == spring.b) {
+        return m_in.fail(joinPlace(place, u"b"),
+                         QStringLiteral("the same body as \"a\": a spring joins two bodies"));
+    }
+    spring.restLength =
+        (worldPoint(spring.b, spring.anchorB) - worldPoint(spring.a, spring.anchorA)).norm();
+    if (!m_in.number(object, u"stiffness", place, spring.stiffness, NumberRule::NonNegative,
+                     limits::kStiffness) ||
+        !m_in.number(object, u"damping", place, spring.damping, NumberRule::NonNegative,
+                     limits::kDamping) ||
+        !m_in.number(object, u"restLength", place, spring.restLength, NumberRule::NonNegative,
+                     limits::kRestLength)) {
+        return false;
+    }
+    if (!std::isfinite(spring.restLength)) {
+        return m_in.fail(place, QStringLiteral("the anchors are too far apart to measure"));
+    }
+    m_scene.springs.push_back(spring);
+    return true;
+}
+
+bool SceneReader::readJoints(const QJsonObject& root)
+{
+    const QString place = QStringLiteral("joints");
+    if (!root.contains(u"joints")) {
+        return true;
+    }
+    QJsonArray joints;
+    if (!m_in.asArray(root.value(u"joints"), place, joints)) {
+        return false;
+    }
+    if (joints.size() > kMaxJoints) {
+        return m_in.fail(place, QStringLiteral("%1 joints, more than the limit of %2")
+                                    .arg(joints.size())
+                                    .arg(kMaxJoints));
+    }
+    for (qsizetype i = 0; i < joints.size(); ++i) {
+        if (!readJoint(joints[i], indexPlace(place, i))) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
+{
+    QJsonObject object;
+    QString type;
+    physics::PinJointDef joint;
+    if (!m_in.asObject(value, place, object) ||
+        !m_in.checkKeys(object, place, {u"type", u"a", u"anchorA", u"b", u"anchorB"}) ||
+        !m_in.string(object, u"type", place, type, true)) {
+        return false;
+    }
+    if (type != u"pin") {
+        return m_in.fail(joinPlace(place, u"type"),
+                         QStringLiteral("unknown joint type \"%1\" (expected pin)").arg(type));
+    }
+    if (!readEnd(object, u"a", place, joint.a, false) ||
+        !m_in.vec2(object, u"anchorA", place, joint.anchorA, limits::kCoordinate) ||
+        !readEnd(object, u"b", place, joint.b, true)) {
+        return false;
+    }
+    if (joint.a == joint.b) {
+        return m_in.fail(joinPlace(place, u"b"),
+                         QStringLiteral("the same body as \"a\": a pin joins two bodies"));
+    }
+    // Without anchorB, the pin holds the bodies as they are placed: anchorB is the point of b
+    // (or of the world) that coincides with anchorA at load.
+    const Vec2 pinPoint = worldPoint(joint.a, joint.anchorA);
+    if (object.contains(u"anchorB")) {
+        if (!m_in.vec2(object, u"anchorB", place, joint.anchorB, limits::kCoordinate)) {
+            return false;
+        }
+        const double gap = (worldPoint(joint.b, joint.anchorB) - pinPoint).norm();
+        if (!(gap <= kJointAnchorTolerance)) {
+            m_in.warn(place, QStringLiteral("the anchors are %1 m apart at the start; the joint "
+                                            "pulls them together at once")
+                                 .arg(detail::formatNumber(gap)));
+        }
+    } else if (joint.b == physics::kWorld) {
+        joint.anchorB = pinPoint;
+    } else {
+        const physics::BodyDef& b = m_scene.bodies[static_cast<size_t>(joint.b)];
+        joint.anchorB = physics::Transform(b.position, b.angle).applyInverse(pinPoint);
+    }
+    m_scene.joints.push_back(joint);
+    return true;
+}
+
+} // namespace
+
+SceneLoadResult loadSceneObject(const QJsonObject& root, const QString& sourceName)
+{
+    return SceneReader(sourceName).read(root);
+}
+
+SceneLoadResult loadSceneJson(const QByteArray& bytes, const QString& sourceName)
+{
+    const detail::ParsedJson parsed = detail::parseJson(bytes, sourceName, kMaxSceneFileBytes);
+    SceneLoadResult result;
+    if (!parsed.ok) {
+        result.error = parsed.error;
+        return result;
+    }
+    if (!parsed.document.isObject()) {
+        result.error = sourceName + QStringLiteral(": the top level must be an object {...}, "
+                                                   "got an array");
+        return result;
+    }
+    return loadSceneObject(parsed.document.object(), sourceName);
+}
+
+SceneLoadResult loadSceneFile(const QString& path)
+{
+    const detail::FileBytes file = detail::readFileBytes(path, kMaxSceneFileBytes);
+    if (!file.ok) {
+        SceneLoadResult result;
+        result.error = file.error;
+        return result;
+    }
+    return loadSceneJson(file.bytes, path);
+}
+
+} // namespace rigidlab::lessons

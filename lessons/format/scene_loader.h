@@ -1,0 +1,47 @@
+#pragma once
+// Reading scene files (format v1, lessons/SCENE_FORMAT.md). Everything is checked; the first
+// problem found comes back as one line `FILE: PLACE: what is wrong`, where PLACE is a JSON
+// path (`bodies[2].shape.radius`) or, for broken JSON, `line L, column C`.
+
+#include "format/limits.h"
+#include "format/scene.h"
+
+#include <QByteArray>
+#include <QJsonObject>
+#include <QString>
+#include <QStringList>
+
+namespace rigidlab::lessons {
+
+/// The scene format version this loader reads (the value of the key "rigidlab").
+inline constexpr int kSceneFormatVersion = 1;
+
+/// Limits that keep a mistyped or hostile file from taking the machine down.
+inline constexpr qint64 kMaxSceneFileBytes = 8 * 1024 * 1024;
+inline constexpr int kMaxBodies = 10000;
+inline constexpr int kMaxSprings = 10000;
+inline constexpr int kMaxJoints = 10000;
+inline constexpr int kMaxPolygonVertices = 64;
+inline constexpr int kMaxBodyIdLength = 64;
+// The ranges of settings live in limits.h, with every other range; these names are kept short.
+inline constexpr int kMaxIterations = static_cast<int>(limits::kIterations.max);
+inline constexpr double kMinDt = limits::kDt.min; ///< [s]
+inline constexpr double kMaxDt = limits::kDt.max; ///< [s]
+
+struct SceneLoadResult {
+    bool ok = false;
+    QString error;        ///< one line when !ok: `FILE: PLACE: what is wrong`
+    QStringList warnings; ///< lines in the same form; the scene loaded all the same
+    Scene scene;          ///< complete when ok
+};
+
+/// Reads and checks a scene file. The path as given names the file in messages.
+SceneLoadResult loadSceneFile(const QString& path);
+
+/// Checks scene JSON held in memory; `sourceName` names it in messages.
+SceneLoadResult loadSceneJson(const QByteArray& bytes, const QString& sourceName);
+
+/// Checks a scene already parsed (a document whose top level holds "rigidlab").
+SceneLoadResult loadSceneObject(const QJsonObject& root, const QString& sourceName);
+
+} // namespace rigidlab::lessons

@@ -1,0 +1,141 @@
+// Judging a student's answer against what the simulation measured, in words a student reads.
+
+#include "run/measurements.h"
+
+#include <QCoreApplication>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace rigidlab::lessons {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("rigidlab::lessons::judge", text);
+}
+
+/// "first" ... "tenth", then "11th", "21st", "22nd", "23rd".
+QString ordinal(int n)
+{
+    static const char* const kWords[] = {"first", "second",  "third",  "fourth", "fifth",
+                                         "sixth", "seventh", "eighth", "ninth",  "tenth"};
+    if (n >= 1 && n <= 10) {
+        return tr(kWords[n - 1]);
+    }
+    const int lastTwo = n % 100;
+    const int last = n % 10;
+    const char* suffix = "th";
+    if (lastTwo < 11 || lastTwo > 13) {
+        suffix = last == 1 ? "st" : last == 2 ? "nd" : last == 3 ? "rd" : "th";
+    }
+    return QString::number(n) + QLatin1StringView(suffix);
+}
+
+/// A number as a student would write it: enough significant digits to tell the tolerance
+/// apart (three at the usual 5 %), no rounding noise, no "-0".
+QString formatValue(double value, const Question& q)
+{
+    int digits = 3;
+    if (q.tolerance > 0) {
+        digits = std::clamp(static_cast<int>(std::ceil(-std::log10(q.tolerance))) + 1, 3, 8);
+    }
+    if (std::abs(value) < 1e-12) {
+        value = 0;
+    }
+    QString text = QString::number(value, 'g', digits);
+    if (text.contains(u'e')) { // 1e-05 reads badly; fixed notation with the same digits
+        const int decimals = std::clamp(
+            digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 12);
+        text = QString::number(value, 'f', std::abs(value) < 1 ? decimals : 0);
+    }
+    return q.unit.isEmpty() ? text : text + u' ' + q.unit;
+}
+
+QString notYet(const Measure& m)
+{
+    if (m.kind == Measure::Kind::Apex) {
+        return tr("Run the simulation past the top of the %1 bounce first.").arg(ordinal(m.n));
+    }
+    return tr("Run the simulation until t = %1 s first.").arg(QString::number(m.time, 'g', 6));
+}
+
+} // namespace
+
+Verdict judge(const Question& q, double answer, const Measurements& m, const Scene& scene)
+{
+    // Without a count of tries every answer is a last try: the value is always given.
+    return judgeAttempt(q, answer, m.value(q.measure, scene), std::numeric_limits<int>::max());
+}
+
+Verdict judgeAttempt(const Question& q, double answer, std::optional<double> value, int attempt)
+{
+    Verdict verdict;
+    if (!value) {
+        verdict.message = notYet(q.measure);
+        return verdict;
+    }
+    verdict.measured = true;
+    verdict.value = *value;
+    if (!std::isfinite(answer)) {
+        verdict.message = tr("Type a number first.");
+        return verdict;
+    }
+    verdict.right =
+        std::abs(answer - *value) <= q.tolerance * std::abs(*value) + q.absoluteTolerance;
+    if (!verdict.right && attempt <= 1) {
+        // A second try is only worth something while the value is still unknown.
+        verdict.message =
+            q.hint.isEmpty()
+                ? tr("Not quite (you said %1). Try once more.").arg(formatValue(answer, q))
+                : tr("Not quite (you said %1). Hint: %2").arg(formatValue(answer, q), q.hint);
+        return verdict;
+    }
+    verdict.shown = true;
+    verdict.message = (verdict.right ? tr("Right: the simulation measured %1 (you said %2).")
+                                     : tr("Not quite: the simulation measured %1 (you said %2)."))
+                          .arg(formatValue(*value, q), formatValue(answer, q));
+    return verdict;
+}
+
+Verdict showAnswer(const Question& q, std::optional<double> value)
+{
+    Verdict verdict;
+    if (!value) {
+        verdict.message = notYet(q.measure);
+        return verdict;
+    }
+    verdict.measured = true;
+    verdict.shown = true;
+    verdict.value = *value;
+    verdict.message = tr("The simulation measured %1.").arg(formatValue(*value, q));
+    return verdict;
+}
+
+std::optional<double> measureAhead(const LessonStep& step, const Measure& measure)
+{
+    std::vector<physics::World> worlds = buildStepWorlds(step);
+    physics::World& world = worlds.front();
+    // The export time is what the lesson's author runs the step for: the loader keeps it to
+    // at most 1e7 steps, and the measure's own time to at most 3600 s.
+    const double until = std::max(step.exportTime, measure.time); // [s]
+    const auto maxSteps = static_cast<long long>(std::ceil(until / world.def().dt)) + 2;
+    world.updateDiagnostics(); // the energy at the start, which drift is measured against
+    Measurements m;
+    m.reset(world, {measure});
+    for (long long i = 0; i < maxSteps; ++i) {
+        if (const auto value = m.value(measure, step.scene)) {
+            return value;
+        }
+        world.step();
+        if (world.divergence()) {
+            return std::nullopt;
+        }
+        m.observe(world);
+    }
+    return m.value(measure, step.scene);
+}
+
+} // namespace rigidlab::lessons

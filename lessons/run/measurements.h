@@ -1,0 +1,128 @@
+#pragma once
+// What lessons measure in a running world: bounce apexes, collisions (velocities before and
+// after, with the spin the full impulse formula predicts and the one the formula without its
+// rotational terms would), and values read at given times. Fed once per step; questions
+// are judged against it.
+
+#include "format/lesson.h"
+#include "rigidlab/physics/world.h"
+
+#include <QString>
+
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace rigidlab::lessons {
+
+struct ApexEvent {
+    double t = 0;       ///< [s]
+    double y = 0;       ///< height of the centre of mass [m]
+    double bounceY = 0; ///< height of the centre at the bounce just before this apex [m]
+};
+
+struct CollisionEvent {
+    double t = 0; ///< [s]
+    physics::BodyId a = 0, b = 0;
+    /// Of the centres of mass of a, b [m/s].
+    physics::Vec2 velocityBefore[2] = {physics::Vec2::Zero(), physics::Vec2::Zero()};
+    physics::Vec2 velocityAfter[2] = {physics::Vec2::Zero(), physics::Vec2::Zero()};
+    double angularBefore[2] = {0, 0}; ///< [rad/s]
+    double angularAfter[2] = {0, 0};
+    /// Angular velocities right after the hit as predicted by the full impulse formula and by
+    /// the seed's printed formula without the rotational terms, from the normal impulse alone
+    /// (friction left out) [rad/s].
+    double predictedFull[2] = {0, 0};
+    double predictedWithoutRotation[2] = {0, 0};
+};
+
+class Measurements {
+public:
+    /// The events kept: the first ones, which lessons ask about (the n-th apex, the first
+    /// collision). Later ones are not stored, so that a long run (a gas has hundreds of
+    /// collisions a second) does not grow without bound.
+    static constexpr std::size_t kMaxCollisions = 1000;
+    static constexpr std::size_t kMaxBouncesPerBody = 1000;
+
+    /// Starts over with this world (at its current time), reading the questions' measures.
+    void reset(const physics::World& world, const std::vector<Measure>& watched);
+    /// After every step.
+    void observe(const physics::World& world);
+    /// The world went back to time t: forget what happened after it. The next observe() then
+    /// only reads the state again (a bounce or a hit in that one step is not seen); prefer the
+    /// overload below when the world is at hand.
+    void rewind(double t);
+    /// The world went back to its current time: forget what happened after it and read its
+    /// state, so that the next step is observed as usual.
+    void rewind(const physics::World& world);
+
+    const std::vector<ApexEvent>& apexes(physics::BodyId body) const;
+    /// Times of the bounces of a body: its vertical velocity turned from down to up [s].
+    const std::vector<double>& bounces(physics::BodyId body) const;
+    const std::vector<CollisionEvent>& collisions() const { return m_collisions; }
+    /// The measured value, or nullopt while the simulation has not got there yet (or when a
+    /// timed measure is not among those watched).
+    std::optional<double> value(const Measure& m, const Scene& scene) const;
+
+private:
+    struct Timed {
+        Measure measure;
+        std::optional<double> value;
+        double recordedAt = 0; ///< [s]
+    };
+    /// Where a body's centre rose to since its last bounce, while it is still rising.
+    struct Peak {
+        bool armed = false;
+        double t = 0;       ///< [s]
+        double y = 0;       ///< [m]
+        double bounceY = 0; ///< where the centre was at the bounce [m]
+    };
+    void recordTimed(const physics::World& world);
+    void readState(const physics::World& world);
+    /// The pairs pushed apart by a positive normal impulse this step, sorted.
+    static std::vector<std::pair<physics::BodyId, physics::BodyId>>
+    touchingPairs(const physics::World& world);
+    CollisionEvent collisionEvent(const physics::World& world, const physics::Contact& c) const;
+
+    std::vector<std::vector<ApexEvent>> m_apexes;
+    std::vector<std::vector<double>> m_bounces; ///< bounce times per body [s]
+    std::vector<std::vector<double>> m_bounceY; ///< the centre's height at each bounce [m]
+    std::vector<Peak> m_peaks;
+    std::vector<CollisionEvent> m_collisions;
+    std::vector<Timed> m_timed;
+    // The state after the previous step.
+    std::vector<physics::Vec2> m_lastVelocity; ///< [m/s]
+    std::vector<double> m_lastAngular;         ///< [rad/s]
+    std::vector<physics::Vec2> m_lastPosition; ///< centres of mass [m]
+    std::vector<std::pair<physics::BodyId, physics::BodyId>> m_touching;
+    bool m_resync = false; ///< the next observe() only reads the state
+    /// Total minus dissipated energy at the start, and what the drift is relative to [J].
+    double m_energy0 = 0, m_energyScale = 1;
+};
+
+/// A question's measure read from the step's main world run without a window, from the
+/// start, as the window runs it (for a question that holds back the running of the scene);
+/// nullopt when the run does not get there within the step's exportTime (or the measure's
+/// time, if later) or diverges first.
+std::optional<double> measureAhead(const LessonStep& step, const Measure& measure);
+
+struct Verdict {
+    bool measured = false; ///< false: run the simulation further first
+    bool right = false;
+    bool shown = false; ///< the message gives the measured value
+    double value = 0;   ///< what was measured
+    QString message;    ///< what the student reads
+};
+
+/// Compares an answer with the measured value.
+Verdict judge(const Question& q, double answer, const Measurements& m, const Scene& scene);
+
+/// The same with the value at hand (nullopt: not measured yet), for the student's try number
+/// `attempt` (1, 2, ...): a wrong first try reads the question's hint, not the value; later
+/// tries, and a right answer, give it.
+Verdict judgeAttempt(const Question& q, double answer, std::optional<double> value, int attempt);
+
+/// What the student reads on asking to be shown the answer (nullopt: not measured yet).
+Verdict showAnswer(const Question& q, std::optional<double> value);
+
+} // namespace rigidlab::lessons

@@ -1,0 +1,475 @@
+#include "run/scene_run.h"
+
+#include "format/atomic_file.h"
+#include "format/divergence_message.h"
+#include "format/scene_loader.h"
+
+#include <QElapsedTimer>
+#include <QFile>
+#include <QFileInfo>
+#include <QSaveFile>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+namespace rigidlab::lessons {
+
+namespace {
+
+/// A CSV file written through QSaveFile: it appears, complete, only on commit(); dropped
+/// without commit, it leaves nothing behind.
+class CsvFile {
+public:
+    bool open(const QString& path, const char* header, QString& error)
+    {
+        m_file = std::make_unique<QSaveFile>(path);
+        // Unbuffered (the rows are gathered in m_buffer): a failing write says why at once.
+        if (!m_file->open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
+            error = QStringLiteral("cannot write %1: %2").arg(path, m_file->errorString());
+            return false;
+        }
+        m_buffer = header;
+        m_buffer += '\n';
+        return true;
+    }
+    bool isOpen() const { return m_file != nullptr; }
+
+    /// Numbers go out with 17 significant digits and never depend on the locale
+    /// (QCoreApplication sets the C library's locale from the environment, so printf might
+    /// write decimal commas).
+    void number(double value)
+    {
+        char text[32];
+        const auto end =
+            std::to_chars(text, text + sizeof text, value, std::chars_format::general, 17);
+        m_buffer.append(text, end.ptr);
+    }
+    void integer(long long value)
+    {
+        char text[24];
+        const auto end = std::to_chars(text, text + sizeof text, value);
+        m_buffer.append(text, end.ptr);
+    }
+    /// A text field, quoted as RFC 4180 asks when it holds a comma, a quote or a line break.
+    void text(const std::string& value)
+    {
+        if (value.find_first_of(",\"\r\n") == std::string::npos) {
+            m_buffer += value;
+            return;
+        }
+        m_buffer += '"';
+        for (char c : value) {
+            m_buffer += c;
+            if (c == '"') {
+                m_buffer += '"';
+            }
+        }
+        m_buffer += '"';
+    }
+    void comma() { m_buffer += ','; }
+    void endRow() { m_buffer += '\n'; }
+
+    /// Hands the buffer to the file once it is large.
+    bool flushIfLarge(QString& error)
+    {
+        return m_buffer.size() < (std::size_t{1} << 16) || flush(error);
+    }
+    /// Writes the rest into the temporary file and checks that all of it got there (a full
+    /// disk shows here, before anything is put in place); true at once for a file never opened.
+    bool finish(QString& error)
+    {
+        if (!isOpen()) {
+            return true;
+        }
+        if (!flush(error)) {
+            return false;
+        }
+        if (!m_file->flush()) {
+            error = QStringLiteral("cannot write %1: %2")
+                        .arg(m_file->fileName(), m_file->errorString());
+            return false;
+        }
+        return true;
+    }
+    /// Puts the finished file in place; true at once for a file never opened.
+    bool commit(QString& error)
+    {
+        if (!isOpen()) {
+            return true;
+        }
+        QString why;
+        if (!commitChecked(*m_file, why)) {
+            error = QStringLiteral("cannot write %1: %2").arg(m_file->fileName(), why);
+            return false;
+        }
+        return true;
+    }
+
+private:
+    bool flush(QString& error)
+    {
+        // A write that stops short is tried again: the second attempt is the one that fails
+        // and says why ("File too large").
+        const auto size = static_cast<qint64>(m_buffer.size());
+        qint64 done = 0;
+        while (done < size) {
+            const qint64 n = m_file->write(m_buffer.data() + done, size - done);
+            if (n <= 0) {
+                error = QStringLiteral("cannot write %1: %2")
+                            .arg(m_file->fileName(), m_file->errorString());
+                return false;
+            }
+            done += n;
+        }
+        m_buffer.clear();
+        return true;
+    }
+
+    std::unique_ptr<QSaveFile> m_file;
+    std::string m_buffer;
+};
+
+/// A second name for the file at `path` (a hard link, else a copy), so that it can be put
+/// back after `path` was replaced.
+bool keepUnderSecondName(const QString& path, const QString& second)
+{
+    QFile::remove(second); // left over from a run that was killed
+    std::error_code error;
+    std::filesystem::create_hard_link(QFile::encodeName(path).toStdString(),
+                                      QFile::encodeName(second).toStdString(), error);
+    return !error || QFile::copy(path, second);
+}
+
+void writeTraceRows(CsvFile& csv, const physics::World& world)
+{
+    const auto& bodies = world.bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const physics::Body& body = bodies[i];
+        if (!body.isDynamic()) {
+            continue;
+        }
+        const physics::Vec2 origin = body.origin();
+        const physics::Vec2 velocity = world.originVelocity(static_cast<physics::BodyId>(i));
+        csv.integer(world.stepCount());
+        csv.comma();
+        csv.number(world.time());
+        csv.comma();
+        csv.text(body.name);
+        for (double v : {origin.x(), origin.y(), body.angle, velocity.x(), velocity.y(),
+                         body.angularVelocity}) {
+            csv.comma();
+            csv.number(v);
+        }
+        csv.endRow();
+    }
+}
+
+/// A row of the diagnostics; start: the world's at step 0, scale: energyScale(start).
+void writeDiagnosticsRow(CsvFile& csv, const physics::World& world,
+                         const physics::Diagnostics& start, double scale)
+{
+    const physics::Diagnostics& d = world.diagnostics();
+    csv.integer(world.stepCount());
+    for (double v : {world.time(), d.kinetic, d.potential, d.total, d.momentum.x(), d.momentum.y(),
+                     d.angularMomentum}) {
+        csv.comma();
+        csv.number(v);
+    }
+    csv.comma();
+    csv.integer(d.contacts);
+    const double dissipated = d.dissipated - start.dissipated;
+    for (double v : {dissipated, (d.total + dissipated - start.total) / scale}) {
+        csv.comma();
+        csv.number(v);
+    }
+    csv.endRow();
+}
+
+/// The first body whose state is not finite, or -1.
+int firstNonFiniteBody(const physics::World& world)
+{
+    const auto& bodies = world.bodies();
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const physics::Body& b = bodies[i];
+        if (!physics::isFinite(b.position) || !physics::isFinite(b.velocity) ||
+            !std::isfinite(b.angle) || !std::isfinite(b.angularVelocity)) {
+            return static_cast<int>(i);
+        }
+    }
+    return -1;
+}
+
+/// Adds a step's stage times into a running sum; the counts are the step's.
+void addProfile(physics::StepProfile& sum, const physics::StepProfile& step)
+{
+    for (int k = 0; k < physics::kStageCount; ++k) {
+        sum.ms[k] += step.ms[k];
+        sum.ran[k] = sum.ran[k] || step.ran[k];
+    }
+    sum.total += step.total;
+    sum.directIntegration = step.directIntegration;
+    sum.pairs = step.pairs;
+    sum.contacts = step.contacts;
+    sum.solved = step.solved;
+    sum.positionPasses = step.positionPasses;
+    sum.awake = step.awake;
+    sum.asleep = step.asleep;
+    sum.islands = step.islands;
+}
+
+QString formatEnergy(double joules)
+{
+    return QString::number(joules, 'g', 6) + QStringLiteral(" J");
+}
+
+} // namespace
+
+QString RunReport::profileTable() const
+{
+    if (!profile) {
+        return {};
+    }
+    const physics::StepProfile& p = *profile;
+    const double n = std::max<double>(1.0, static_cast<double>(steps));
+    QString out = QStringLiteral("stage            ms/step    share\n");
+    for (int k = 0; k < physics::kStageCount; ++k) {
+        const auto stage = static_cast<physics::Stage>(k);
+        QString name = QString::fromLatin1(physics::stageName(stage));
+        name = name.leftJustified(16);
+        if (!p.ran[k]) {
+            out += name + QStringLiteral(" left out\n");
+            continue;
+        }
+        out += name + QStringLiteral(" %1 %2 %\n")
+                          .arg(p.ms[k] / n, 8, 'f', 4)
+                          .arg(p.total > 0 ? 100.0 * p.ms[k] / p.total : 0.0, 6, 'f', 1);
+    }
+    out += QStringLiteral("step             %1\n").arg(p.total / n, 8, 'f', 4);
+    out += QStringLiteral("last step: %1 pairs, %2 contacts, %3 solved, %4 position passes, "
+                          "%5 awake, %6 asleep, %7 islands; integration %8\n")
+               .arg(p.pairs)
+               .arg(p.contacts)
+               .arg(p.solved)
+               .arg(p.positionPasses)
+               .arg(p.awake)
+               .arg(p.asleep)
+               .arg(p.islands)
+               .arg(p.directIntegration ? QStringLiteral("direct")
+                                        : QStringLiteral("by the ODE "
+                                                         "system"));
+    return out;
+}
+
+double energyScale(const physics::Diagnostics& start)
+{
+    const double parts = start.kinetic + std::abs(start.potential);
+    const double total = std::abs(start.total);
+    if (total > 0 && total >= 1e-9 * parts) {
+        return total;
+    }
+    return parts > 0 ? parts : 1.0;
+}
+
+double RunReport::drift() const
+{
+    return (energyEnd + dissipated - energyStart) / energyScale;
+}
+
+long long stepsForTime(double time, double dt)
+{
+    const double exact = time / dt;
+    const double nearest = std::round(exact);
+    if (std::abs(exact - nearest) <= 1e-9 * std::max(1.0, nearest)) {
+        return static_cast<long long>(nearest);
+    }
+    return static_cast<long long>(std::ceil(exact));
+}
+
+QString RunReport::summary(const QString& sourceName) const
+{
+    const auto name = [](std::string_view s) {
+        return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+    };
+    // The drift is the numerical error alone: what contacts, drag and dampers took is
+    // physics, and is added back first.
+    const QString drift = QStringLiteral("a drift of %1 % of the starting energy")
+                              .arg(QString::number(100.0 * this->drift(), 'g', 4));
+    // Each part in one multi-argument arg(), so that a '%' in a file name is never taken for
+    // a placeholder.
+    const QString run =
+        QStringLiteral("%1: %2 steps of %3 s (%4 s simulated) in %5 s of wall time, with the %6 "
+                       "integrator and the %7 solver.")
+            .arg(sourceName, QString::number(steps), QString::number(dt, 'g', 6),
+                 QString::number(simulatedTime, 'g', 8), QString::number(wallSeconds, 'f', 3),
+                 name(physics::integratorName(integrator)), name(physics::solverName(solver)));
+    const QString energy =
+        QStringLiteral(" Total energy went from %1 to %2; contacts took %3, drag and dampers "
+                       "%4; the rest, %5, is the numerical error.")
+            .arg(formatEnergy(energyStart), formatEnergy(energyEnd), formatEnergy(collisionLoss),
+                 formatEnergy(dissipated - collisionLoss), drift);
+    return run + energy;
+}
+
+RunReport runScene(const Scene& scene, const RunOptions& options, const QString& sourceName)
+{
+    RunReport report;
+    const auto fail = [&](RunStatus status, const QString& what) {
+        report.status = status;
+        report.error = sourceName + QStringLiteral(": ") + what;
+        return report;
+    };
+
+    // Settings: the scene's, overridden by the options.
+    physics::WorldDef def = scene.world;
+    def.dt = options.dt.value_or(def.dt);
+    def.integrator = options.integrator.value_or(def.integrator);
+    def.solver = options.solver.value_or(def.solver);
+    if (options.time && options.steps) {
+        return fail(RunStatus::BadOptions, QStringLiteral("give a time or a number of steps, "
+                                                          "not both"));
+    }
+    if (!(std::isfinite(def.dt) && def.dt >= kMinDt && def.dt <= kMaxDt)) {
+        return fail(RunStatus::BadOptions, QStringLiteral("the step must be from 1e-07 to 1 s"));
+    }
+    if (options.every < 1) {
+        return fail(RunStatus::BadOptions, QStringLiteral("rows must be written every 1 or more "
+                                                          "steps"));
+    }
+    long long steps = 0;
+    if (options.steps) {
+        steps = *options.steps;
+    } else {
+        const double time = options.time.value_or(kDefaultRunTime);
+        if (!(std::isfinite(time) && time >= 0)) {
+            return fail(RunStatus::BadOptions, QStringLiteral("the time must be a number >= 0"));
+        }
+        if (time / def.dt > static_cast<double>(kMaxRunSteps)) {
+            return fail(RunStatus::BadOptions,
+                        QStringLiteral("%1 s at a step of %2 s is more than %3 steps")
+                            .arg(QString::number(time), QString::number(def.dt))
+                            .arg(kMaxRunSteps));
+        }
+        steps = stepsForTime(time, def.dt);
+    }
+    if (steps < 0 || steps > kMaxRunSteps) {
+        return fail(RunStatus::BadOptions,
+                    QStringLiteral("the number of steps must be from 0 to %1").arg(kMaxRunSteps));
+    }
+    if (!options.tracePath.isEmpty() && !options.diagnosticsPath.isEmpty() &&
+        QFileInfo(options.tracePath).absoluteFilePath() ==
+            QFileInfo(options.diagnosticsPath).absoluteFilePath()) {
+        return fail(RunStatus::BadOptions,
+                    QStringLiteral("the trace and the diagnostics name the same file"));
+    }
+    report.dt = def.dt;
+    report.integrator = def.integrator;
+    report.solver = def.solver;
+
+    // Open the outputs first, so that a bad path fails before the run rather than after it.
+    QString error;
+    CsvFile trace;
+    CsvFile diagnostics;
+    if ((!options.tracePath.isEmpty() && !trace.open(options.tracePath, kTraceHeader, error)) ||
+        (!options.diagnosticsPath.isEmpty() &&
+         !diagnostics.open(options.diagnosticsPath, kDiagnosticsHeader, error))) {
+        return fail(RunStatus::OutputError, error);
+    }
+
+    Scene settings = scene;
+    settings.world = def;
+    physics::World world = buildWorld(settings);
+    world.updateDiagnostics();
+    const physics::Diagnostics start = world.diagnostics();
+    report.energyStart = start.total;
+    report.energyScale = energyScale(start);
+
+    QElapsedTimer clock;
+    if (options.profile) {
+        report.profile.emplace();
+    }
+    clock.start();
+    for (long long step = 0; step <= steps; ++step) {
+        if (step > 0) {
+            world.step();
+            if (options.profile) {
+                addProfile(*report.profile, world.profile());
+            }
+        }
+        // The world stops itself on a non-finite state or runaway energy, with a diagnosis.
+        if (const auto& diverged = world.divergence()) {
+            return fail(RunStatus::NonFinite,
+                        QStringLiteral("the simulation blew up at step %1: %2; nothing was "
+                                       "written. Try a smaller --dt or another --integrator.")
+                            .arg(QString::number(diverged->step), divergenceMessage(*diverged)));
+        }
+        // Finite bodies can still give an infinite energy (a speed whose square overflows,
+        // two attracting bodies at one point), so both are checked.
+        const int bad = firstNonFiniteBody(world);
+        if (bad >= 0 || !std::isfinite(world.diagnostics().total)) {
+            const QString what = bad >= 0 ? QStringLiteral("body \"%1\"")
+                                                .arg(QString::fromStdString(world.body(bad).name))
+                                          : QStringLiteral("the total energy");
+            return fail(RunStatus::NonFinite,
+                        QStringLiteral("the simulation blew up at step %1 (t = %2 s): %3 is no "
+                                       "longer finite; nothing was written. Try a smaller --dt or "
+                                       "another --integrator.")
+                            .arg(step)
+                            .arg(world.time())
+                            .arg(what));
+        }
+        if (step % options.every == 0 || step == steps) {
+            if (trace.isOpen()) {
+                writeTraceRows(trace, world);
+            }
+            if (diagnostics.isOpen()) {
+                writeDiagnosticsRow(diagnostics, world, start, report.energyScale);
+            }
+            if ((trace.isOpen() && !trace.flushIfLarge(error)) ||
+                (diagnostics.isOpen() && !diagnostics.flushIfLarge(error))) {
+                return fail(RunStatus::OutputError, error);
+            }
+        }
+    }
+    report.wallSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
+
+    // Both files are complete in their temporary files before either is put in place, so a
+    // full disk leaves both previous files as they were. Only a rename can still fail after
+    // that; then the previous trace, kept under a second name meanwhile, is put back.
+    if (!trace.finish(error) || !diagnostics.finish(error)) {
+        return fail(RunStatus::OutputError, error);
+    }
+    const QString previousTrace = options.tracePath + QStringLiteral(".previous");
+    const bool keptTrace = trace.isOpen() && diagnostics.isOpen() &&
+                           QFileInfo::exists(options.tracePath) &&
+                           keepUnderSecondName(options.tracePath, previousTrace);
+    if (!trace.commit(error)) {
+        if (keptTrace) {
+            QFile::remove(previousTrace);
+        }
+        return fail(RunStatus::OutputError, error);
+    }
+    if (!diagnostics.commit(error)) {
+        // Take the new trace away again, so that a failed run changes nothing.
+        QFile::remove(options.tracePath);
+        if (keptTrace) {
+            QFile::rename(previousTrace, options.tracePath);
+        }
+        return fail(RunStatus::OutputError, error);
+    }
+    if (keptTrace) {
+        QFile::remove(previousTrace);
+    }
+    report.status = RunStatus::Ok;
+    report.steps = steps;
+    report.simulatedTime = world.time();
+    report.energyEnd = world.diagnostics().total;
+    report.collisionLoss = world.diagnostics().collisionLoss - start.collisionLoss;
+    report.dissipated = world.diagnostics().dissipated - start.dissipated;
+    return report;
+}
+
+} // namespace rigidlab::lessons

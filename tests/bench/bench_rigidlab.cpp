@@ -1,0 +1,155 @@
+// RigidLab's side of the benchmarks: the engine-neutral scene as a physics::World.
+
+#include "bench.h"
+
+#include "rigidlab/physics/shape.h"
+
+#include <cassert>
+#include <charconv>
+
+namespace rigidlab::bench {
+
+namespace {
+
+physics::Shape toShape(const BenchShape& s)
+{
+    switch (s.kind) {
+    case BenchShapeKind::Box:
+        return physics::makePolygonShape(physics::makeBox(s.width, s.height));
+    case BenchShapeKind::Circle:
+        return physics::makeCircleShape(s.radius);
+    case BenchShapeKind::Polygon: {
+        const auto built = physics::makePolygon(s.vertices);
+        assert(built.ok() && built.value().warning.empty());
+        return physics::makePolygonShape(built.value().polygon);
+    }
+    }
+    return {};
+}
+
+class RigidLabBench final : public BenchEngine {
+public:
+    explicit RigidLabBench(const RigidLabBenchSettings& settings) : m_settings(settings) {}
+
+    std::string name() const override { return "RigidLab"; }
+    std::string settings() const override
+    {
+        return std::string(physics::solverName(m_settings.solver)) + ", " +
+               std::to_string(m_settings.iterations) + " velocity / " +
+               std::to_string(m_settings.positionIterations) +
+               " position iterations, symplectic Euler, double precision, sleeping " +
+               (m_settings.sleep ? "on" : "off");
+    }
+    void build(const BenchScene& scene) override { m_world = buildBenchWorld(scene, m_settings); }
+    void step() override { m_world.step(); }
+    void poses(std::vector<BenchPose>& out) const override
+    {
+        out.clear();
+        for (const physics::Body& b : m_world.bodies())
+            out.push_back({b.position, b.angle});
+    }
+
+private:
+    RigidLabBenchSettings m_settings;
+    physics::World m_world;
+};
+
+} // namespace
+
+physics::World buildBenchWorld(const BenchScene& scene, const RigidLabBenchSettings& settings)
+{
+    physics::WorldDef def;
+    def.gravity = scene.gravity;
+    def.dt = scene.dt;
+    def.integrator = physics::IntegratorKind::SymplecticEuler;
+    def.solver = settings.solver;
+    def.iterations = settings.iterations;
+    def.restitution = 0.0;
+    def.friction = 0.6;
+    def.sleep = settings.sleep;
+    physics::World world(def);
+    world.contactSettings().positionIterations = settings.positionIterations;
+    for (const BenchBody& b : scene.bodies) {
+        physics::BodyDef d;
+        d.type = b.isStatic ? physics::BodyType::Static : physics::BodyType::Dynamic;
+        d.shape = toShape(b.shape);
+        d.position = b.position;
+        d.angle = b.angle;
+        d.density = b.density;
+        d.friction = b.friction;
+        d.restitution = 0.0;
+        world.addBody(d);
+    }
+    return world;
+}
+
+namespace {
+
+std::string number(double v)
+{
+    char text[32];
+    const auto end = std::to_chars(text, text + sizeof text, v);
+    return std::string(text, end.ptr);
+}
+
+std::string point(const physics::Vec2& p)
+{
+    std::string out(1, '[');
+    out += number(p.x());
+    out += ", ";
+    out += number(p.y());
+    out += ']';
+    return out;
+}
+
+} // namespace
+
+std::string benchSceneJson(const BenchScene& scene, const RigidLabBenchSettings& settings)
+{
+    std::string out = "{\n  \"rigidlab\": 1,\n  \"title\": \"Benchmark: " + scene.name +
+                      "\",\n  \"description\": \"" + scene.description +
+                      " (rigidlab-cli bench --scene " + scene.name + ")\",\n";
+    out += "  \"world\": {\"gravity\": " + point(scene.gravity) + ", \"dt\": " + number(scene.dt) +
+           ", \"integrator\": \"symplectic-euler\", \"solver\": \"" +
+           std::string(physics::solverName(settings.solver)) +
+           "\", \"iterations\": " + std::to_string(settings.iterations) +
+           ", \"restitution\": 0, \"friction\": 0.6, \"sleep\": " +
+           (settings.sleep ? "true" : "false") + "},\n  \"bodies\": [\n";
+    for (size_t i = 0; i < scene.bodies.size(); ++i) {
+        const BenchBody& b = scene.bodies[i];
+        out += "    {\"id\": \"b" + std::to_string(i) + "\"";
+        if (b.isStatic)
+            out += ", \"type\": \"static\"";
+        switch (b.shape.kind) {
+        case BenchShapeKind::Box:
+            out += ", \"shape\": {\"type\": \"box\", \"width\": " + number(b.shape.width) +
+                   ", \"height\": " + number(b.shape.height) + "}";
+            break;
+        case BenchShapeKind::Circle:
+            out +=
+                ", \"shape\": {\"type\": \"circle\", \"radius\": " + number(b.shape.radius) + "}";
+            break;
+        case BenchShapeKind::Polygon:
+            out += ", \"shape\": {\"type\": \"polygon\", \"vertices\": [";
+            for (size_t k = 0; k < b.shape.vertices.size(); ++k)
+                out += (k ? ", " : "") + point(b.shape.vertices[k]);
+            out += "]}";
+            break;
+        }
+        out += ", \"position\": " + point(b.position);
+        if (b.angle != 0.0)
+            out += ", \"angle\": " + number(b.angle);
+        if (b.density != 1.0)
+            out += ", \"density\": " + number(b.density);
+        out += i + 1 < scene.bodies.size() ? "},\n" : "}\n";
+    }
+    out += "  ]\n}\n";
+    return out;
+}
+
+std::unique_ptr<BenchEngine> makeRigidLabBenchEngine(const RigidLabBenchSettings& settings)
+{
+    return std::make_unique<RigidLabBench>(settings);
+}
+
+} // namespace rigidlab::bench

@@ -1,0 +1,159 @@
+// The benchmark harness: time the steps, measure the stability figure, print the table.
+
+#include "bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <map>
+
+namespace rigidlab::bench {
+
+namespace {
+
+constexpr double kMovedSideways = 0.5;   ///< [m]
+constexpr double kTurned = 0.2;          ///< [rad]
+constexpr double kDriftTolerance = 1e-3; ///< drifts this close count as equal [m]
+
+std::string format(const char* fmt, double value)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, fmt, value);
+    return text;
+}
+
+/// CPU time of the calling thread [s].
+double threadSeconds()
+{
+    timespec t{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+double median(std::vector<double> values)
+{
+    if (values.empty())
+        return 0.0;
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+/// The stability figure from the poses at the start and at the end.
+void measureStability(const BenchScene& scene, const std::vector<BenchPose>& start,
+                      const std::vector<BenchPose>& end, BenchResult& r)
+{
+    r.topDrift = 0.0;
+    r.moved = r.escaped = 0;
+    r.finite = true;
+    for (size_t i = 0; i < scene.bodies.size(); ++i) {
+        const BenchPose& p = end[i];
+        if (!std::isfinite(p.position.x()) || !std::isfinite(p.position.y()) ||
+            !std::isfinite(p.angle))
+            r.finite = false;
+        if (scene.bodies[i].isStatic)
+            continue;
+        if (scene.check == BenchCheck::Rain) {
+            const bool inside = p.position.x() >= scene.containerLo.x() &&
+                                p.position.x() <= scene.containerHi.x() &&
+                                p.position.y() >= scene.containerLo.y();
+            r.escaped += inside ? 0 : 1;
+            continue;
+        }
+        const double turn = std::remainder(p.angle - start[i].angle, 2.0 * 3.141592653589793);
+        if (std::abs(p.position.x() - start[i].position.x()) > kMovedSideways ||
+            std::abs(turn) > kTurned || !r.finite)
+            ++r.moved;
+    }
+    if (scene.check == BenchCheck::Stack && scene.topBody >= 0) {
+        const size_t top = static_cast<size_t>(scene.topBody);
+        r.topDrift = end[top].position.y() - start[top].position.y();
+    }
+}
+
+} // namespace
+
+BenchResult runBench(BenchEngine& engine, const BenchScene& scene, const BenchOptions& options)
+{
+    BenchResult r;
+    r.engine = engine.name();
+    r.settings = engine.settings();
+    r.scene = scene.name;
+    r.bodies = scene.dynamicCount();
+    r.check = scene.check;
+    r.simulated = options.steps * scene.dt;
+    std::vector<BenchPose> start, end;
+    for (int run = 0; run < std::max(1, options.runs); ++run) {
+        engine.build(scene);
+        if (run == 0)
+            engine.poses(start);
+        // The first step sets up every contact: not timed. The others are timed together, in
+        // the CPU time of this thread, so that other programs on the machine count less.
+        engine.step();
+        const double t0 = threadSeconds();
+        for (int s = 1; s < options.steps; ++s)
+            engine.step();
+        const double seconds = threadSeconds() - t0;
+        const int timed = std::max(1, options.steps - 1);
+        r.runs.push_back(1e3 * seconds / timed);
+        if (run == 0) {
+            engine.poses(end);
+            measureStability(scene, start, end, r);
+        }
+    }
+    r.msPerStep = median(r.runs);
+    return r;
+}
+
+std::string stabilityText(const BenchResult& r)
+{
+    if (!r.finite)
+        return "blew up";
+    if (r.check == BenchCheck::Rain)
+        return std::to_string(r.escaped) + " escaped";
+    return "top " + format("%+.3f", r.topDrift) + " m, " + std::to_string(r.moved) + " moved";
+}
+
+bool atLeastAsStable(const BenchResult& a, const BenchResult& b)
+{
+    if (!a.finite)
+        return !b.finite;
+    if (!b.finite)
+        return true;
+    if (a.check == BenchCheck::Rain)
+        return a.escaped <= b.escaped;
+    return std::abs(a.topDrift) <= std::abs(b.topDrift) + kDriftTolerance && a.moved <= b.moved;
+}
+
+std::string benchTable(const std::vector<BenchResult>& results)
+{
+    // RigidLab's time on each scene, for the ratio column.
+    std::map<std::string, const BenchResult*> ours;
+    for (const BenchResult& r : results)
+        if (r.engine == "RigidLab")
+            ours[r.scene] = &r;
+
+    auto pad = [](std::string s, size_t width) {
+        if (s.size() < width)
+            s.append(width - s.size(), ' ');
+        return s;
+    };
+    std::string out = pad("engine", 12) + pad("scene", 13) + pad("bodies", 8) + pad("ms/step", 10) +
+                      pad("ratio", 8) + pad("stability (10 s)", 26) + "counts\n";
+    for (const BenchResult& r : results) {
+        const auto it = ours.find(r.scene);
+        std::string ratio = "-", counts = "-";
+        if (it != ours.end() && it->second->msPerStep > 0) {
+            ratio = format("%.2f", r.msPerStep / it->second->msPerStep);
+            if (&r != it->second)
+                counts = atLeastAsStable(*it->second, r) ? "yes" : "no: RigidLab less stable";
+        }
+        out += pad(r.engine, 12) + pad(r.scene, 13) + pad(std::to_string(r.bodies), 8) +
+               pad(format("%.3f", r.msPerStep), 10) + pad(ratio, 8) + pad(stabilityText(r), 26) +
+               counts + "\n";
+    }
+    return out;
+}
+
+} // namespace rigidlab::bench

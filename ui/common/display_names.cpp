@@ -1,0 +1,84 @@
+#include "common/display_names.h"
+
+#include <QCoreApplication>
+
+#include <array>
+#include <string_view>
+
+namespace rigidlab::ui {
+
+namespace {
+
+struct IntegratorWords {
+    physics::IntegratorKind kind;
+    const char* words; ///< for QT_TRANSLATE_NOOP
+};
+
+// One row per integrator; a kind missing here shows its code name (see the test).
+constexpr std::array<IntegratorWords, 6> kIntegratorWords{{
+    {physics::IntegratorKind::Euler,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Explicit Euler")},
+    {physics::IntegratorKind::SymplecticEuler,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Symplectic Euler")},
+    {physics::IntegratorKind::Verlet,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Velocity Verlet")},
+    {physics::IntegratorKind::RK4,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Runge–Kutta 4")},
+    {physics::IntegratorKind::DormandPrince,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Dormand–Prince 5(4), adaptive")},
+    {physics::IntegratorKind::ImplicitMidpoint,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Implicit midpoint")},
+}};
+
+struct SolverWords {
+    physics::SolverKind kind;
+    const char* words;
+};
+
+constexpr std::array<SolverWords, 2> kSolverWords{{
+    {physics::SolverKind::SeedImpulse,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Seed impulse")},
+    {physics::SolverKind::SequentialImpulse,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Sequential impulse")},
+}};
+
+QString translated(const char* words)
+{
+    return QCoreApplication::translate("rigidlab::ui::displayNames", words);
+}
+
+QString fromView(std::string_view s)
+{
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+} // namespace
+
+QString integratorDisplayName(physics::IntegratorKind kind)
+{
+    for (const IntegratorWords& row : kIntegratorWords)
+        if (row.kind == kind)
+            return translated(row.words);
+    return fromView(physics::integratorName(kind));
+}
+
+QString solverDisplayName(physics::SolverKind kind)
+{
+    for (const SolverWords& row : kSolverWords)
+        if (row.kind == kind)
+            return translated(row.words);
+    return fromView(physics::solverName(kind));
+}
+
+QString methodDisplayName(const QString& codeName)
+{
+    const QByteArray utf8 = codeName.toUtf8();
+    const std::string_view name(utf8.constData(), static_cast<std::size_t>(utf8.size()));
+    if (const auto integrator = physics::integratorFromName(name))
+        return integratorDisplayName(*integrator);
+    if (const auto solver = physics::solverFromName(name))
+        return solverDisplayName(*solver);
+    return codeName;
+}
+
+} // namespace rigidlab::ui

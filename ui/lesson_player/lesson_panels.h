@@ -1,0 +1,56 @@
+#pragma once
+// Tables that lessons show beside the view: bounce heights against e² times the previous
+// one, and a collision's before and after (velocities, momentum, kinetic energy, and the
+// spin the impulse formula predicts with and without its rotational terms). Both fit the
+// window's narrow right column (FittingTable) and export themselves as CSV.
+
+#include "panels/fitting_table.h"
+
+#include <QWidget>
+
+class QLabel;
+
+namespace rigidlab::ui {
+
+class SimulationController;
+
+class BouncePanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit BouncePanel(SimulationController& controller, QWidget* parent = nullptr);
+    FittingTable* table() const { return m_table; }
+    /// Held: the measured heights and their ratios read "?" until the student has answered.
+    void setHeightsHeld(bool held);
+
+public slots:
+    void refresh();
+
+private:
+    /// Fills the table whether or not the panel is shown.
+    void refreshNow();
+
+    SimulationController& m_controller;
+    FittingTable* m_table;
+    bool m_heightsHeld = false;
+};
+
+class CollisionPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit CollisionPanel(SimulationController& controller, QWidget* parent = nullptr);
+    FittingTable* table() const { return m_table; }
+    /// Held: the "after" column reads "?" until the student has answered.
+    void setAfterHeld(bool held);
+
+public slots:
+    void refresh();
+
+private:
+    SimulationController& m_controller;
+    QLabel* m_title;
+    FittingTable* m_table;
+    int m_shownCount = -1;
+    bool m_afterHeld = false;
+};
+
+} // namespace rigidlab::ui

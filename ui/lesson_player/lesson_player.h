@@ -1,0 +1,115 @@
+#pragma once
+// The lesson player: pick a lesson, read a step, answer its questions, go back and forth.
+// It only shows; the window applies each step (scene, settings, panels) when told to.
+
+#include "format/lesson.h"
+#include "run/measurements.h"
+
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QTextBrowser;
+class QVBoxLayout;
+
+namespace rigidlab::ui {
+
+class SimulationController;
+
+class LessonPlayer : public QWidget {
+    Q_OBJECT
+public:
+    explicit LessonPlayer(SimulationController& controller, QWidget* parent = nullptr);
+
+    /// Hands the Back / Next / Restart step / Export plots buttons to the caller, to lay out
+    /// where they stay in sight (below a scrolling lesson); the caller owns them then.
+    QWidget* takeNavigation();
+
+    /// Lists the lessons of `folder` in teaching order, numbered (lessons::lessonsInOrder).
+    void scanFolder(const QString& folder);
+    /// Opens a lesson; its first step is activated. Returns the error, empty on success.
+    QString openLesson(const QString& path);
+    const lessons::Lesson* lesson() const { return m_lesson.get(); }
+    int stepIndex() const { return m_step; }
+    QStringList lessonPaths() const { return m_paths; }
+    /// Per lessonPaths() entry, its menu line: "1. Title — description (≈N min)".
+    QStringList lessonMenuTexts() const { return m_menuTexts; }
+    /// The lesson to begin with, in teaching order; empty when there is none. The one place
+    /// that decides it.
+    QString firstLessonPath() const;
+
+    /// The answer box and result line of question i of the current step (for tests).
+    void answer(int question, const QString& text);
+    QString result(int question) const;
+    /// Presses question i's "Show me" (for tests).
+    void showMe(int question);
+    /// What the current step's questions still hold back ("run", "panel:collision", ...):
+    /// those of the questions not yet answered right, twice or by "Show me".
+    QStringList heldBack() const;
+
+public slots:
+    void next();
+    void back();
+    void restartStep();
+    void goToStep(int index);
+    void closeLesson();
+
+signals:
+    /// The window should set up this step.
+    void stepActivated(const rigidlab::lessons::Lesson& lesson, int step);
+    void exportRequested();
+    void lessonClosed();
+    /// An answer released some of what the step held back; `held` is what it still holds.
+    void heldBackChanged(const QStringList& held);
+
+private:
+    void showStep();
+    void buildQuestions();
+    /// Question i's verdict on this try, against the running world or, while the question
+    /// keeps the scene from running, against a run without a window.
+    lessons::Verdict judgeTry(std::size_t i, double answer);
+    /// The measured value question i is judged against, nullopt while not measured yet.
+    std::optional<double> measuredValue(std::size_t i);
+    /// Shows a verdict under question i; one that gives the value answers the question.
+    void settle(std::size_t i, const lessons::Verdict& verdict);
+
+    SimulationController& m_controller;
+    std::unique_ptr<lessons::Lesson> m_lesson;
+    int m_step = 0;
+    QStringList m_paths;
+    QStringList m_menuTexts;
+    QComboBox* m_lessonBox;
+    QLabel* m_title;
+    QLabel* m_about;
+    QProgressBar* m_progress;
+    QLabel* m_stepCount; ///< "Step 2 of 4", beside the progress bar
+    QLabel* m_stepTitle;
+    QTextBrowser* m_text;
+    QWidget* m_questionBox;
+    QVBoxLayout* m_questionLayout;
+    QWidget* m_navigation = nullptr; ///< Back, Next, Restart step, Export plots
+    QPushButton* m_back;
+    QPushButton* m_restart;
+    QPushButton* m_next;
+    QPushButton* m_export;
+    QPushButton* m_start; ///< opens the first lesson; shown while none is open
+    struct QuestionRow {
+        QLineEdit* edit = nullptr;
+        QLabel* result = nullptr;
+        QPushButton* show = nullptr;
+        int attempts = 0;      ///< wrong and right tries judged so far
+        bool answered = false; ///< the value has been given: nothing is held back for it
+        bool aheadDone = false;
+        std::optional<double> ahead; ///< measured without a window, once aheadDone
+    };
+    std::vector<QuestionRow> m_rows;
+};
+
+} // namespace rigidlab::ui

@@ -1,0 +1,133 @@
+#include "panels/control_panel.h"
+
+#include "common/display_names.h"
+#include "panels/number_field.h"
+#include "simulation/simulation_controller.h"
+
+#include "format/limits.h"
+#include "format/scene_loader.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QSignalBlocker>
+
+#include <array>
+
+namespace rigidlab::ui {
+
+using physics::IntegratorKind;
+using physics::SolverKind;
+
+ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
+    : QWidget(parent), m_controller(controller), m_integrator(new QComboBox(this)),
+      m_solver(new QComboBox(this)), m_iterations(new NumberField(this)),
+      m_dt(new NumberField(this)), m_timeScale(new NumberField(this)),
+      m_restitution(new NumberField(this)), m_friction(new NumberField(this)),
+      m_gravity(new QCheckBox(tr("on"), this))
+{
+    // In words, from the one table of display names; the menus' order is physics'.
+    for (const IntegratorKind kind : physics::kAllIntegrators)
+        m_integrator->addItem(integratorDisplayName(kind), int(kind));
+    m_integrator->setToolTip(tr("How positions and velocities are advanced in each step"));
+    for (const SolverKind kind : {SolverKind::SeedImpulse, SolverKind::SequentialImpulse})
+        m_solver->addItem(solverDisplayName(kind), int(kind));
+    m_solver->setToolTip(tr("Seed impulse: one impulse per contact, once (the paper's method).\n"
+                            "Sequential impulse: iterated, clamped, warm started."));
+    // Every range is a scene file's (lessons/limits.h): what a file may hold can be typed.
+    namespace limits = lessons::limits;
+    m_iterations->setRange(limits::kIterations, tr("Iterations"));
+    m_iterations->setInteger(true);
+    m_iterations->setToolTip(tr("Velocity iterations of the sequential-impulse solver"));
+    // dt in milliseconds reads better in class than 0.001 s.
+    m_dt->setRange(NumberField::scaled(limits::kDt, 1e3), tr("dt"), tr("ms"));
+    m_dt->setToolTip(tr("The fixed time step [ms]"));
+    m_timeScale->setRange(limits::kTimeScale, tr("Time scale"), tr("×"));
+    m_timeScale->setToolTip(tr("Slow motion below 1, fast forward above"));
+    m_restitution->setRange(limits::kRestitution, tr("Restitution e"));
+    m_restitution->setToolTip(
+        tr("Coefficient of restitution e for every body: 0 sticks, 1 is elastic"));
+    m_friction->setRange(limits::kFriction, tr("Friction μ"));
+    m_friction->setToolTip(tr("Coulomb friction coefficient μ for every body"));
+    m_iterations->setObjectName(QStringLiteral("iterations"));
+    m_dt->setObjectName(QStringLiteral("dt"));
+    m_timeScale->setObjectName(QStringLiteral("timeScale"));
+    m_restitution->setObjectName(QStringLiteral("restitution"));
+    m_friction->setObjectName(QStringLiteral("friction"));
+
+    auto* form = new QFormLayout(this);
+    // In a narrow column (a 1024-pixel projector) each label goes above its field rather than
+    // both being cut.
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    form->addRow(tr("Integrator"), m_integrator);
+    form->addRow(tr("Time step dt [ms]"), m_dt);
+    form->addRow(tr("Solver"), m_solver);
+    form->addRow(tr("Iterations"), m_iterations);
+    form->addRow(tr("Time scale"), m_timeScale);
+    form->addRow(tr("Restitution e"), m_restitution);
+    form->addRow(tr("Friction μ"), m_friction);
+    form->addRow(tr("Gravity"), m_gravity);
+
+    connect(m_integrator, &QComboBox::activated, this, [this] {
+        m_controller.setIntegrator(IntegratorKind(m_integrator->currentData().toInt()));
+    });
+    connect(m_solver, &QComboBox::activated, this,
+            [this] { m_controller.setSolver(SolverKind(m_solver->currentData().toInt())); });
+    connect(m_iterations, &NumberField::valueEdited, this,
+            [this](double n) { m_controller.setIterations(static_cast<int>(n)); });
+    // Divided, not multiplied by 1e-3: 2.5 ms is then the double nearest 0.0025 s.
+    connect(m_dt, &NumberField::valueEdited, this,
+            [this](double ms) { m_controller.setDt(ms / 1e3); });
+    connect(m_timeScale, &NumberField::valueEdited, &m_controller,
+            &SimulationController::setTimeScale);
+    connect(m_restitution, &NumberField::valueEdited, &m_controller,
+            &SimulationController::setRestitution);
+    connect(m_friction, &NumberField::valueEdited, &m_controller,
+            &SimulationController::setFriction);
+    for (NumberField* f : {m_iterations, m_dt, m_timeScale, m_restitution, m_friction})
+        connect(f, &NumberField::refused, this, &ControlPanel::inputRefused);
+    connect(m_gravity, &QCheckBox::toggled, &m_controller,
+            &SimulationController::setGravityEnabled);
+    connect(&m_controller, &SimulationController::settingsChanged, this, &ControlPanel::refresh);
+    refresh();
+}
+
+void ControlPanel::setAllowed(const std::optional<QStringList>& allowed)
+{
+    const std::array<std::pair<const char*, QWidget*>, 8> controls{{
+        {"integrator", m_integrator},
+        {"dt", m_dt},
+        {"solver", m_solver},
+        {"iterations", m_iterations},
+        {"timeScale", m_timeScale},
+        {"restitution", m_restitution},
+        {"friction", m_friction},
+        {"gravity", m_gravity},
+    }};
+    for (const auto& [name, widget] : controls) {
+        const bool on = !allowed || allowed->contains(QLatin1String(name));
+        widget->setEnabled(on);
+        widget->setProperty("locked", !on);
+        widget->setStatusTip(on ? QString() : tr("Fixed in this step of the lesson"));
+    }
+    refresh();
+}
+
+void ControlPanel::refresh()
+{
+    const physics::WorldDef& d = m_controller.world().def();
+    const QSignalBlocker b1(m_integrator), b2(m_solver), b3(m_gravity);
+    m_integrator->setCurrentIndex(m_integrator->findData(int(d.integrator)));
+    m_solver->setCurrentIndex(m_solver->findData(int(d.solver)));
+    m_iterations->setValue(d.iterations);
+    m_iterations->setEnabled(d.solver == SolverKind::SequentialImpulse &&
+                             !m_iterations->property("locked").toBool());
+    // The value in force; a field being typed in keeps its text (NumberField::setValue).
+    m_dt->setValue(d.dt * 1e3);
+    m_timeScale->setValue(m_controller.timeScale());
+    m_restitution->setValue(d.restitution);
+    m_friction->setValue(d.friction);
+    m_gravity->setChecked(d.gravity.squaredNorm() > 0);
+}
+
+} // namespace rigidlab::ui

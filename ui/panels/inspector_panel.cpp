@@ -1,0 +1,167 @@
+#include "panels/inspector_panel.h"
+
+#include "panels/number_field.h"
+#include "simulation/simulation_controller.h"
+
+#include "format/limits.h"
+
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+
+#include <cmath>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// A speed below this is rounding noise, shown as 0 [m/s] (or [rad/s]): far below anything a
+/// lesson measures, far above the noise of a body at rest (a few ulp of g dt).
+constexpr double kSpeedNoise = 1e-12;
+/// A kinetic energy below this fraction of the scene's energy scale shows as 0.
+constexpr double kEnergyNoise = 1e-12;
+
+QString num(double v, int precision = 4)
+{
+    return formatNumber(v, precision);
+}
+
+double denoise(double v, double noise)
+{
+    return std::abs(v) < noise ? 0.0 : v;
+}
+
+} // namespace
+
+InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent)
+    : QWidget(parent), m_controller(controller), m_name(new QLabel(this)), m_mass(new QLabel(this)),
+      m_massEdit(new NumberField(this)), m_massUnit(new QLabel(tr("kg"), this)),
+      m_inertia(new QLabel(this)), m_position(new QLabel(this)), m_angle(new QLabel(this)),
+      m_velocity(new QLabel(this)), m_omega(new QLabel(this)), m_energy(new QLabel(this)),
+      m_restitution(new NumberField(this)), m_friction(new NumberField(this))
+{
+    // The mass: a field with its unit for a dynamic body, "infinite" for the others.
+    auto* massRow = new QHBoxLayout;
+    massRow->setContentsMargins(0, 0, 0, 0);
+    massRow->addWidget(m_massEdit, 1);
+    massRow->addWidget(m_massUnit);
+    massRow->addWidget(m_mass, 1);
+    m_massEdit->setObjectName(QStringLiteral("mass"));
+    m_massEdit->setRange(lessons::limits::kMass, tr("Mass m"));
+    m_massEdit->setToolTip(tr("The body's mass; its moment of inertia scales with it"));
+    m_restitution->setObjectName(QStringLiteral("bodyRestitution"));
+    m_restitution->setRange(lessons::limits::kRestitution, tr("Restitution e"));
+    m_friction->setObjectName(QStringLiteral("bodyFriction"));
+    m_friction->setRange(lessons::limits::kFriction, tr("Friction μ"));
+
+    auto* form = new QFormLayout(this);
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows); // labels above fields when narrow
+    form->addRow(tr("Body"), m_name);
+    form->addRow(tr("Mass m"), massRow);
+    form->addRow(tr("Inertia I"), m_inertia);
+    form->addRow(tr("Position"), m_position);
+    form->addRow(tr("Angle θ"), m_angle);
+    form->addRow(tr("Velocity v"), m_velocity);
+    form->addRow(tr("Angular vel. ω"), m_omega);
+    form->addRow(tr("Kinetic energy"), m_energy);
+    form->addRow(tr("Restitution e"), m_restitution);
+    form->addRow(tr("Friction μ"), m_friction);
+    for (QLabel* l :
+         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_omega, m_energy})
+        l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    // Each field sends only its own value: the other keeps the body's, not a stale text.
+    connect(m_restitution, &NumberField::valueEdited, this, [this](double e) {
+        if (m_body >= 0)
+            m_controller.setBodyMaterial(m_body, e, m_controller.world().body(m_body).friction);
+    });
+    connect(m_friction, &NumberField::valueEdited, this, [this](double mu) {
+        if (m_body >= 0)
+            m_controller.setBodyMaterial(m_body, m_controller.world().body(m_body).restitution, mu);
+    });
+    connect(m_massEdit, &NumberField::valueEdited, this, [this](double m) {
+        if (m_body >= 0)
+            m_controller.setBodyMass(m_body, m);
+    });
+    for (NumberField* f : {m_massEdit, m_restitution, m_friction})
+        connect(f, &NumberField::refused, this, &InspectorPanel::inputRefused);
+    connect(&m_controller, &SimulationController::worldChanged, this, &InspectorPanel::refresh);
+    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
+        // The bodies are new: what was typed for the old one goes.
+        for (NumberField* f : {m_massEdit, m_restitution, m_friction})
+            f->revert();
+        setBody(-1);
+    });
+    setBody(-1);
+}
+
+void InspectorPanel::setBody(int id)
+{
+    const int count = static_cast<int>(m_controller.world().bodies().size());
+    id = id >= 0 && id < count ? id : -1;
+    // A value typed for the body shown goes to that body before another is shown.
+    if (id != m_body && m_body >= 0 && m_body < count)
+        for (NumberField* f : {m_massEdit, m_restitution, m_friction})
+            if (f->isModified())
+                f->commit();
+    for (NumberField* f : {m_massEdit, m_restitution, m_friction})
+        if (id != m_body)
+            f->revert();
+    m_body = id;
+    refresh();
+}
+
+void InspectorPanel::refresh()
+{
+    const bool has = m_body >= 0;
+    m_restitution->setEnabled(has);
+    m_friction->setEnabled(has);
+    if (!has) {
+        m_name->setText(tr("click a body"));
+        m_massEdit->setVisible(false);
+        m_mass->setVisible(true);
+        for (QLabel* l : {m_mass, m_inertia, m_position, m_angle, m_velocity, m_omega, m_energy})
+            l->setText(QStringLiteral("–"));
+        return;
+    }
+    const physics::Body& b = m_controller.world().body(m_body);
+    const char* kind = b.type == physics::BodyType::Static      ? "static"
+                       : b.type == physics::BodyType::Kinematic ? "kinematic"
+                                                                : "dynamic";
+    m_name->setText(QStringLiteral("%1 (%2)").arg(QString::fromStdString(b.name), tr(kind)));
+    m_massEdit->setVisible(b.isDynamic());
+    m_massUnit->setVisible(b.isDynamic());
+    m_mass->setVisible(!b.isDynamic());
+    m_massEdit->setEnabled(b.isDynamic());
+    if (b.isDynamic()) {
+        m_massEdit->setValue(b.mass);
+        m_mass->setText(tr("%1 kg").arg(num(b.mass)));
+        m_inertia->setText(tr("%1 kg·m²").arg(num(b.inertia)));
+    } else {
+        m_mass->setText(tr("infinite"));
+        m_inertia->setText(tr("infinite"));
+    }
+    const physics::Vec2 o = b.origin();
+    const physics::Vec2 v = m_controller.world().originVelocity(m_body);
+    m_position->setText(tr("(%1, %2) m").arg(num(o.x()), num(o.y())));
+    m_angle->setText(tr("%1 rad").arg(num(b.angle)));
+    m_velocity->setText(
+        tr("(%1, %2) m/s").arg(num(denoise(v.x(), kSpeedNoise)), num(denoise(v.y(), kSpeedNoise))));
+    m_omega->setText(tr("%1 rad/s").arg(num(denoise(b.angularVelocity, kSpeedNoise))));
+    const double ke = b.isDynamic() ? 0.5 * b.mass * b.velocity.squaredNorm() +
+                                          0.5 * b.inertia * b.angularVelocity * b.angularVelocity
+                                    : 0.0;
+    m_energy->setText(tr("%1 J").arg(num(denoise(ke, kEnergyNoise * m_controller.energyScale()))));
+    m_restitution->setValue(b.restitution);
+    m_friction->setValue(b.friction);
+}
+
+QString InspectorPanel::text() const
+{
+    QStringList parts;
+    for (QLabel* l :
+         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_omega, m_energy})
+        parts << l->text();
+    return parts.join(QLatin1Char('\n'));
+}
+
+} // namespace rigidlab::ui

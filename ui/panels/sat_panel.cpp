@@ -1,0 +1,384 @@
+#include "panels/sat_panel.h"
+
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
+
+#include <QEvent>
+#include <QGraphicsScene>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QMenu>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// Pixels kept free around what the overlay draws when the view follows it.
+constexpr double kFitMarginPx = 16.0;
+
+/// A length on screen, in the user's locale [m]: `decimals` after the point.
+QString num(double v, int decimals = 3)
+{
+    return QLocale().toString(v, 'f', decimals);
+}
+
+} // namespace
+
+SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
+    : QWidget(parent), m_controller(controller), m_overlay(new SatOverlayItem(*this)),
+      m_verdict(new QLabel(this)), m_table(new QTableWidget(0, 4, this)),
+      m_summary(new QLabel(this)), m_prev(new QPushButton(tr("◀ Previous"), this)),
+      m_next(new QPushButton(tr("Next ▶"), this)), m_all_button(new QPushButton(tr("All"), this))
+{
+    m_overlay->setOnDestroyed([this] { m_overlay = nullptr; });
+    connect(&m_controller, &QObject::destroyed, this, [this] {
+        if (m_overlay)
+            m_overlay->detach();
+    });
+    // The panel fits the window's right column (about 245 px at 1024 px wide): short column
+    // texts, the full explanation in each cell's tooltip.
+    m_prev->setToolTip(tr("Show the previous axis tested"));
+    m_next->setToolTip(tr("Test the next axis"));
+    m_all_button->setToolTip(tr("Test every axis, up to the verdict"));
+    for (QPushButton* b : {m_prev, m_next, m_all_button}) // narrower than the style's 80 px
+        b->setMinimumWidth(b->fontMetrics().horizontalAdvance(b->text()) + 16);
+    auto* layout = new QVBoxLayout(this);
+    QFont f = m_verdict->font();
+    f.setBold(true);
+    f.setPointSizeF(f.pointSizeF() * 1.15);
+    m_verdict->setFont(f);
+    m_verdict->setWordWrap(true);
+    layout->addWidget(m_verdict);
+    const QStringList headers{tr("axis"), tr("on axis [m]"), tr("overlap"), tr("note")};
+    const QStringList headerTips{
+        tr("The axis is the normal of this edge: polygon A or B, then the edge's number."),
+        tr("The interval each polygon covers when projected on the axis (A above, B below)."),
+        tr("How far the intervals overlap, in metres; \"gap\" when they do not, and the axis "
+           "separates."),
+        tr("What this axis means for the test.")};
+    m_table->setHorizontalHeaderLabels(headers);
+    for (int c = 0; c < headerTips.size(); ++c)
+        m_table->horizontalHeaderItem(c)->setToolTip(headerTips[c]);
+    m_table->verticalHeader()->setVisible(false);
+    m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    QHeaderView* columns = m_table->horizontalHeader();
+    columns->setMinimumSectionSize(24);
+    for (int c = 0; c < 3; ++c)
+        columns->setSectionResizeMode(c, QHeaderView::ResizeToContents);
+    columns->setSectionResizeMode(3, QHeaderView::Stretch);
+    m_table->setWordWrap(true);
+    m_table->setTextElideMode(Qt::ElideNone);
+    m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    m_table->setSelectionMode(QAbstractItemView::NoSelection);
+    m_table->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_table, &QWidget::customContextMenuRequested, this, [this](const QPoint& pos) {
+        QMenu menu(this);
+        QAction* exportAction = menu.addAction(tr("Export as CSV…"));
+        exportAction->setEnabled(active());
+        connect(exportAction, &QAction::triggered, this,
+                [this] { exportCsvInteractively(this, csv(), tr("separating_axes")); });
+        menu.exec(m_table->viewport()->mapToGlobal(pos));
+    });
+    layout->addWidget(m_table, 1);
+    m_summary->setWordWrap(true);
+    layout->addWidget(m_summary);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(m_prev);
+    buttons->addWidget(m_next);
+    buttons->addWidget(m_all_button);
+    layout->addLayout(buttons);
+    auto* hint = new QLabel(tr("Drag a polygon to move it; Q and E turn the selected one."), this);
+    hint->setWordWrap(true);
+    hint->setStyleSheet(QStringLiteral("color: #555;"));
+    layout->addWidget(hint);
+    connect(m_prev, &QPushButton::clicked, this, &SatPanel::previousAxis);
+    connect(m_next, &QPushButton::clicked, this, &SatPanel::nextAxis);
+    connect(m_all_button, &QPushButton::clicked, this, &SatPanel::showAll);
+    connect(&m_controller, &SimulationController::worldChanged, this, &SatPanel::refresh);
+    refresh();
+}
+
+SatPanel::~SatPanel()
+{
+    if (m_view)
+        m_view->setFitExtra({});
+    // The panel owns its overlay, unless the scene went first and deleted it (then the
+    // overlay has said so).
+    if (m_overlay) {
+        m_overlay->detach();
+        m_overlay->setOnDestroyed({});
+        if (m_overlay->scene())
+            m_overlay->scene()->removeItem(m_overlay);
+        delete m_overlay;
+    }
+}
+
+void SatPanel::setBodies(int a, int b)
+{
+    if (m_overlay)
+        m_overlay->dataChanging();
+    const int n = static_cast<int>(m_controller.world().bodies().size());
+    auto polygon = [&](int id) {
+        return id >= 0 && id < n &&
+               m_controller.world().body(id).shape.type == physics::ShapeType::Polygon;
+    };
+    m_a = polygon(a) && polygon(b) ? a : -1;
+    m_b = m_a >= 0 ? b : -1;
+    m_shown = 1;
+    m_all = false;
+    refresh();
+    followAxis(true);
+}
+
+void SatPanel::nextAxis()
+{
+    if (m_overlay)
+        m_overlay->dataChanging();
+    m_all = false;
+    m_shown = std::min<int>(m_shown + 1, static_cast<int>(m_result.axes.size()));
+    updateTable();
+    followAxis(true);
+}
+
+void SatPanel::previousAxis()
+{
+    if (m_overlay)
+        m_overlay->dataChanging();
+    m_all = false;
+    m_shown = std::max(1, m_shown - 1);
+    updateTable();
+    followAxis(true);
+}
+
+void SatPanel::showAll()
+{
+    if (m_overlay)
+        m_overlay->dataChanging();
+    m_all = true;
+    updateTable();
+    followAxis(true);
+}
+
+void SatPanel::refresh()
+{
+    if (m_overlay)
+        m_overlay->dataChanging();
+    if (!active()) {
+        m_result = physics::SatResult{};
+        updateTable();
+        return;
+    }
+    const physics::Body& a = m_controller.world().body(m_a);
+    const physics::Body& b = m_controller.world().body(m_b);
+    m_result = physics::satPolygons(a.shape.polygon, a.transform(), b.shape.polygon, b.transform());
+    updateTable();
+    // Follow only a pair that moved, so that a student's own zoom holds while nothing moves.
+    const std::array<double, 6> poses{a.position.x(), a.position.y(), a.angle,
+                                      b.position.x(), b.position.y(), b.angle};
+    if (poses != m_poses) {
+        m_poses = poses;
+        followAxis(false);
+    }
+}
+
+WorldView* SatPanel::worldView()
+{
+    if (!m_overlay)
+        return nullptr;
+    if (m_view && m_overlay->scene() == m_view->scene())
+        return m_view;
+    if (m_view) {
+        m_view->setFitExtra({});
+        m_view->removeEventFilter(this);
+    }
+    m_view = nullptr;
+    if (m_overlay->scene())
+        for (QGraphicsView* v : m_overlay->scene()->views())
+            if ((m_view = qobject_cast<WorldView*>(v)))
+                break;
+    if (m_view) {
+        m_view->setFitExtra(
+            [this] { return active() && m_overlay ? m_overlay->geometry().drawn : QRectF(); });
+        m_view->installEventFilter(this);
+    }
+    return m_view;
+}
+
+bool SatPanel::eventFilter(QObject* watched, QEvent* event)
+{
+    // When the view changes size (a dock opens beside it), follow the axis again once the
+    // view has handled the resize itself.
+    // (Types first: a view being destroyed is no longer a WorldView to compare with.)
+    if (event->type() == QEvent::Resize && watched == static_cast<QObject*>(m_view.data()))
+        QMetaObject::invokeMethod(
+            this, [this] { followAxis(false); }, Qt::QueuedConnection);
+    return QWidget::eventFilter(watched, event);
+}
+
+void SatPanel::followAxis(bool always)
+{
+    WorldView* view = worldView();
+    if (!view || !active())
+        return;
+    // The overlay's offsets and text are sized in pixels, so its extent in metres changes
+    // with the zoom: fit, measure again at the new zoom, and refit if something still sticks
+    // out (it converges in a few rounds, as the pixel-sized parts are small beside the view).
+    for (int attempt = 0; attempt < 8; ++attempt) {
+        const SatOverlayItem::Geometry g = m_overlay->geometry();
+        if (!g.valid)
+            return;
+        const QRectF visible = view->mapToScene(view->viewport()->rect()).boundingRect();
+        if (!always && visible.contains(g.drawn))
+            return;
+        view->fitRect(g.drawn, kFitMarginPx);
+        always = false;
+    }
+}
+
+void SatPanel::updateTable()
+{
+    const auto& axes = m_result.axes;
+    const int total = static_cast<int>(axes.size());
+    if (m_all)
+        m_shown = total;
+    m_shown = std::clamp(m_shown, std::min(1, total), total);
+    m_table->setRowCount(m_shown);
+    const auto& bodies = m_controller.world().bodies();
+    auto name = [&](int owner) {
+        const int id = owner == 0 ? m_a : m_b;
+        return id >= 0 ? QString::fromStdString(bodies[static_cast<std::size_t>(id)].name)
+                       : QString();
+    };
+    for (int i = 0; i < m_shown; ++i) {
+        const physics::SatAxis& ax = axes[static_cast<std::size_t>(i)];
+        const bool separates = i == m_result.separatingAxis;
+        const bool least = i == m_result.leastAxis && m_shown == total;
+        const QStringList cells{
+            tr("%1 %2", "polygon (A or B), edge number")
+                .arg(ax.owner == 0 ? tr("A") : tr("B"))
+                .arg(ax.edge),
+            tr("A %1 … %2\nB %3 … %4")
+                .arg(num(ax.minA, 2), num(ax.maxA, 2), num(ax.minB, 2), num(ax.maxB, 2)),
+            ax.overlap < 0 ? tr("gap %1").arg(num(-ax.overlap, 2)) : num(ax.overlap, 2),
+            separates ? tr("separates")
+            : least   ? tr("least overlap")
+                      : QString()};
+        QString tip =
+            tr("Axis %1: the normal of edge %2 of %3. On it, %4 covers [%5, %6] m and %7 covers "
+               "[%8, %9] m.")
+                .arg(i + 1)
+                .arg(ax.edge)
+                .arg(name(ax.owner), name(0), num(ax.minA), num(ax.maxA), name(1), num(ax.minB),
+                     num(ax.maxB));
+        tip += QLatin1Char(' ') + (ax.overlap < 0
+                                       ? tr("They are %1 m apart: a gap.").arg(num(-ax.overlap))
+                                       : tr("They overlap by %1 m.").arg(num(ax.overlap)));
+        if (separates)
+            tip += QLatin1Char(' ') + tr("This axis separates the polygons: they cannot touch, "
+                                         "and the test stops here (no collision).");
+        else if (least)
+            tip += QLatin1Char(' ') + tr("The least overlap of all axes: this axis is the "
+                                         "contact normal, and the overlap is the depth.");
+        for (int c = 0; c < cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(cells[c]);
+            item->setToolTip(tip);
+            if (c < 3)
+                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            if (i == m_shown - 1)
+                item->setBackground(QColor(255, 244, 200));
+            m_table->setItem(i, c, item);
+        }
+    }
+    m_prev->setEnabled(active() && m_shown > 1);
+    m_next->setEnabled(active() && m_shown < total);
+    m_all_button->setEnabled(active() && m_shown < total);
+    if (!active()) {
+        m_verdict->setText(tr("No pair of polygons to test."));
+        m_summary->clear();
+    } else if (m_shown < total) {
+        m_verdict->setText(
+            tr("Axis %1 of %2 tested so far: no separating axis yet.").arg(m_shown).arg(total));
+        m_summary->setText(summary());
+    } else if (!m_result.intersects) {
+        m_verdict->setText(tr("Separated: axis %1 has a gap, so the test stops there.")
+                               .arg(m_result.separatingAxis + 1));
+        m_summary->setText(summary());
+    } else {
+        m_verdict->setText(tr("Overlapping: no axis separates them."));
+        m_summary->setText(summary());
+    }
+    if (m_overlay)
+        m_overlay->update();
+}
+
+CsvTable SatPanel::csv() const
+{
+    CsvTable table;
+    table.headers = QStringList{
+        QStringLiteral("axis"),        QStringLiteral("polygon"),   QStringLiteral("edge"),
+        QStringLiteral("normal x"),    QStringLiteral("normal y"),  QStringLiteral("A min [m]"),
+        QStringLiteral("A max [m]"),   QStringLiteral("B min [m]"), QStringLiteral("B max [m]"),
+        QStringLiteral("overlap [m]"), QStringLiteral("note")};
+    const auto& axes = m_result.axes;
+    const int total = static_cast<int>(axes.size());
+    for (int i = 0; i < m_shown && i < total; ++i) {
+        const physics::SatAxis& ax = axes[static_cast<std::size_t>(i)];
+        const bool separates = i == m_result.separatingAxis;
+        const bool least = i == m_result.leastAxis && m_shown == total;
+        table.rows << QStringList{QString::number(i + 1),
+                                  ax.owner == 0 ? QStringLiteral("A") : QStringLiteral("B"),
+                                  QString::number(ax.edge),
+                                  csvNumber(ax.axis.x()),
+                                  csvNumber(ax.axis.y()),
+                                  csvNumber(ax.minA),
+                                  csvNumber(ax.maxA),
+                                  csvNumber(ax.minB),
+                                  csvNumber(ax.maxB),
+                                  csvNumber(ax.overlap),
+                                  separates ? QStringLiteral("separates")
+                                  : least   ? QStringLiteral("least overlap")
+                                            : QString()};
+    }
+    return table;
+}
+
+QString SatPanel::summary() const
+{
+    if (!active())
+        return QString();
+    const auto& bodies = m_controller.world().bodies();
+    const int kA =
+        static_cast<int>(bodies[static_cast<std::size_t>(m_a)].shape.polygon.vertices.size());
+    const int kB =
+        static_cast<int>(bodies[static_cast<std::size_t>(m_b)].shape.polygon.vertices.size());
+    const int k = kA + kB;
+    QString text = tr("The test needed %1 of at most %2 axes (one per edge, %3 + %4), each "
+                      "projecting all %2 vertices: %5 projections, against the paper's worst "
+                      "case of (k₁ + k₂)² = %6.")
+                       .arg(m_result.axesTested)
+                       .arg(k)
+                       .arg(kA)
+                       .arg(kB)
+                       .arg(m_result.axesTested * k)
+                       .arg(k * k);
+    if (m_result.intersects && m_shown == static_cast<int>(m_result.axes.size())) {
+        text += QStringLiteral("\n") +
+                tr("Least overlap on axis %1: normal (%2, %3) from A to B, depth %4 m, "
+                   "%5 contact point(s) from clipping.")
+                    .arg(m_result.leastAxis + 1)
+                    .arg(num(m_result.normal.x()), num(m_result.normal.y()), num(m_result.depth))
+                    .arg(m_result.manifold.pointCount);
+    }
+    return text;
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,87 @@
+#pragma once
+// The separating axis theorem, step by step, for two polygons of the scene: a table of the
+// axes tested so far, and an overlay in the view that draws the current axis with both
+// projections on it, the gap or overlap, and at the end the normal, depth and contact points.
+// Everything shown is the data physics::satPolygons returns; nothing is computed twice.
+// The overlay also shows, for a body whose non-convex outline was replaced by its hull, the
+// area where the detection is now wrong.
+
+#include "panels/fitting_table.h"
+#include "view/sat_overlay.h"
+
+#include "rigidlab/physics/sat.h"
+
+#include <QPointer>
+
+#include <QWidget>
+#include <array>
+
+class QLabel;
+class QPushButton;
+class QTableWidget;
+
+namespace rigidlab::ui {
+
+class SimulationController;
+class WorldView;
+
+class SatPanel : public QWidget {
+    Q_OBJECT
+public:
+    SatPanel(SimulationController& controller, QWidget* parent = nullptr);
+    ~SatPanel() override;
+
+    /// The two bodies to test (ids), or -1 for none.
+    void setBodies(int a, int b);
+    /// What the panel draws in the world view; the window adds it to the view's scene. While
+    /// the panel is active, the view follows it: it fits both shapes, the axis line, both
+    /// projections and the label of the axis shown.
+    SatOverlayItem* overlay() { return m_overlay; }
+    const SatOverlayItem& overlayItem() const { return *m_overlay; }
+    const physics::SatResult& result() const { return m_result; }
+    /// How many of the tested axes are shown (the step the student is at).
+    int shown() const { return m_shown; }
+    bool active() const { return m_a >= 0 && m_b >= 0; }
+    int bodyA() const { return m_a; }
+    int bodyB() const { return m_b; }
+    const SimulationController& controller() const { return m_controller; }
+    QString summary() const; ///< the text under the table
+    const QTableWidget& table() const { return *m_table; }
+    /// The axes shown, as "Export as CSV…" in the table's context menu writes them.
+    CsvTable csv() const;
+
+public slots:
+    void nextAxis();
+    void previousAxis();
+    void showAll();
+    void refresh();
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    void updateTable();
+    /// The view showing the overlay, or null (registers the overlay with its Fit scene).
+    WorldView* worldView();
+    /// Pans and zooms the view to what the overlay draws: always after a step through the
+    /// axes, otherwise (a body dragged or turned) only when part of it left the view.
+    void followAxis(bool always);
+
+    SimulationController& m_controller;
+    SatOverlayItem* m_overlay;
+    int m_a = -1, m_b = -1;
+    int m_shown = 1;
+    bool m_all = false;
+    physics::SatResult m_result;
+    std::array<double, 6>
+        m_poses{}; ///< the pair's poses at the last refresh: x, y [m], angle [rad]
+    QLabel* m_verdict;
+    QTableWidget* m_table;
+    QLabel* m_summary;
+    QPushButton* m_prev;
+    QPushButton* m_next;
+    QPushButton* m_all_button;
+    QPointer<WorldView> m_view; ///< the view whose Fit scene includes the overlay
+};
+
+} // namespace rigidlab::ui

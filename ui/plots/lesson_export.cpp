@@ -1,0 +1,243 @@
+#include "plots/lesson_export.h"
+
+#include "common/display_names.h"
+#include "plots/plot_widget.h"
+#include "plots/step_sampler.h"
+
+#include "run/scene_run.h"
+
+#include <QCoreApplication>
+#include <QDir>
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace rigidlab::ui {
+
+namespace {
+
+QString tr(const char* text)
+{
+    return QCoreApplication::translate("rigidlab::ui::lessonExport", text);
+}
+
+/// "by integrator" or "by solver".
+QString comparedBy(const lessons::LessonStep& step)
+{
+    return step.compare && !step.compare->solvers.empty() ? tr("by solver") : tr("by integrator");
+}
+
+/// One curve per compared world, reading `value(sample, i)`.
+PlotWidget* makeComparePlot(const lessons::LessonStep& step, const QString& title,
+                            const QString& quantity, const QString& unit,
+                            double (*value)(const Sample&, std::size_t), QWidget* parent)
+{
+    auto* plot = new PlotWidget(title, parent);
+    plot->setYAxisLabel(quantity, unit);
+    if (unit == u"%")
+        plot->setValueScale(YAxis::Left, kDriftScalePercent);
+    else
+        plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
+    const int count = step.compare ? std::min(step.compare->count(), Sample::kMaxVariants) : 0;
+    for (int i = 0; i < count; ++i) {
+        const auto index = static_cast<std::size_t>(i);
+        const int series =
+            plot->addSeries(step.compare->label(i), plotColor(i), [index, value](const Sample& s) {
+                // Samples taken before the worlds were compared leave a gap.
+                return static_cast<int>(index) < s.variants
+                           ? value(s, index)
+                           : std::numeric_limits<double>::quiet_NaN();
+            });
+        // The legend in words; the CSV keeps the lesson file's code names as column heads.
+        // Curves that coincide (Verlet under RK4) stay visible: each later one in its own dashes.
+        plot->setSeriesLegend(series, methodDisplayName(step.compare->label(i)));
+        plot->setSeriesPen(series, plotPenStyle(i), plotPenWidthFactor(i, count));
+    }
+    return plot;
+}
+
+} // namespace
+
+PlotWidget* makeStepPlot(const lessons::LessonStep& step, const QString& name, QWidget* parent)
+{
+    if (name == u"energy")
+        return makeEnergyPlot(parent);
+    if (name == u"momentum")
+        return makeMomentumPlot(parent);
+    if (name == u"drift")
+        return makeDriftPlot(parent);
+    if (name == u"compare-energy")
+        return makeComparePlot(
+            step, tr("Total energy %1").arg(comparedBy(step)), tr("energy E"), QStringLiteral("J"),
+            [](const Sample& s, std::size_t i) { return s.variantTotal[i]; }, parent);
+    if (name == u"compare-drift")
+        return makeComparePlot(
+            step, tr("Energy drift %1").arg(comparedBy(step)), tr("drift"), QStringLiteral("%"),
+            [](const Sample& s, std::size_t i) { return s.variantDriftPercent[i]; }, parent);
+    return nullptr; // the loader admits no other name
+}
+
+std::vector<PlotWidget*> makeStepPlots(const lessons::LessonStep& step, QWidget* parent)
+{
+    std::vector<PlotWidget*> plots;
+    for (const QString& name : step.plots) {
+        PlotWidget* plot = makeStepPlot(step, name, parent);
+        Q_ASSERT(plot);
+        if (!plot)
+            continue;
+        plot->setObjectName(name);
+        plots.push_back(plot);
+    }
+    return plots;
+}
+
+QString stepFolderName(const lessons::Lesson& lesson, int step)
+{
+    const QString title = lesson.steps.at(static_cast<std::size_t>(step)).title.toLower();
+    QString slug;
+    for (const QChar c : title) {
+        if (c.isLetterOrNumber() && c.unicode() < 128)
+            slug += c;
+        else if (!slug.isEmpty() && !slug.endsWith(u'-'))
+            slug += u'-';
+    }
+    while (slug.endsWith(u'-'))
+        slug.chop(1);
+    slug = slug.left(48);
+    while (slug.endsWith(u'-'))
+        slug.chop(1);
+    const QString number = QStringLiteral("%1").arg(step + 1, 2, 10, QLatin1Char('0'));
+    return slug.isEmpty() ? number : number + u'-' + slug;
+}
+
+QString stepCaption(const lessons::Lesson& lesson, int step, const physics::WorldDef& settings)
+{
+    const lessons::LessonStep& s = lesson.steps.at(static_cast<std::size_t>(step));
+    const QString first =
+        tr("%1, step %2: %3").arg(lesson.title, QString::number(step + 1), s.title);
+    QString how;
+    if (s.compare && !s.compare->integrators.empty()) {
+        QStringList names;
+        for (int i = 0; i < s.compare->count(); ++i)
+            names.append(methodDisplayName(s.compare->label(i)));
+        how = tr("integrators %1").arg(names.join(QStringLiteral(", ")));
+    } else {
+        how = tr("integrator %1").arg(integratorDisplayName(settings.integrator));
+    }
+    if (s.compare && !s.compare->solvers.empty()) {
+        QStringList names;
+        for (int i = 0; i < s.compare->count(); ++i)
+            names.append(methodDisplayName(s.compare->label(i)));
+        how += tr(" · solvers %1").arg(names.join(QStringLiteral(", ")));
+    }
+    how += tr(" · dt = %1 s").arg(QString::number(settings.dt, 'g', 6));
+    return first + u'\n' + how;
+}
+
+PlotFilesResult exportPlots(const std::vector<PlotWidget*>& plots, const QString& dir,
+                            const QString& caption, const ExportOptions& options)
+{
+    PlotFilesResult result;
+    if (!QDir().mkpath(dir)) {
+        result.error = tr("cannot make the folder %1").arg(QDir::toNativeSeparators(dir));
+        return result;
+    }
+    for (PlotWidget* plot : plots) {
+        const QString previous = plot->caption();
+        plot->setCaption(caption);
+        for (ExportFormat format :
+             {ExportFormat::Png, ExportFormat::Pdf, ExportFormat::Svg, ExportFormat::Csv}) {
+            const QString path = QDir(dir).filePath(plot->objectName() + u'.' + suffixFor(format));
+            const ExportResult written = exportPlot(*plot, path, format, options);
+            if (!written.ok) {
+                plot->setCaption(previous);
+                result.error = written.error;
+                return result;
+            }
+            result.files.append(path);
+        }
+        plot->setCaption(previous);
+    }
+    result.ok = true;
+    return result;
+}
+
+PlotFilesResult exportStepPlots(const lessons::Lesson& lesson, int step, const QString& dir,
+                                const ExportOptions& options)
+{
+    const lessons::LessonStep& s = lesson.steps.at(static_cast<std::size_t>(step));
+    if (s.plots.isEmpty())
+        return {true, {}, {}};
+
+    // The worlds, sampled exactly as the window's controller samples them.
+    std::vector<physics::World> worlds = lessons::buildStepWorlds(s);
+    physics::World main = std::move(worlds.front());
+    std::vector<physics::World> variants(std::make_move_iterator(worlds.begin() + 1),
+                                         std::make_move_iterator(worlds.end()));
+    main.updateDiagnostics();
+    const EnergyReference mainReference = EnergyReference::of(main);
+    std::vector<EnergyReference> references;
+    for (physics::World& w : variants) {
+        w.updateDiagnostics();
+        references.push_back(EnergyReference::of(w));
+    }
+    const bool compared = s.compare.has_value();
+
+    // The plots are never shown; they only need a parent to be owned by.
+    auto holder = std::make_unique<QWidget>();
+    std::vector<PlotWidget*> plots = makeStepPlots(s, holder.get());
+    SampleBuffer buffer;
+    for (PlotWidget* plot : plots) {
+        plot->setRangeMode(RangeMode::WholeRun);
+        plot->setSource(&buffer);
+    }
+    const auto drainAll = [&] {
+        for (PlotWidget* plot : plots)
+            plot->drain();
+    };
+
+    SampleClock clock;
+    clock.due(main.time());
+    buffer.push(makeSample(main, mainReference, variants, references, compared));
+    const long long steps = lessons::stepsForTime(s.exportTime, main.def().dt);
+    // Drain well before the ring wraps round, so that no sample is lost.
+    const std::uint64_t drainEvery = buffer.capacity() / 2;
+    std::uint64_t sinceDrain = 0;
+    for (long long i = 0; i < steps; ++i) {
+        if (main.divergence())
+            break; // the main world stopped (see physics/divergence.h): so do its plots
+        main.step();
+        for (physics::World& w : variants)
+            w.step();
+        if (clock.due(main.time())) {
+            buffer.push(makeSample(main, mainReference, variants, references, compared));
+            if (++sinceDrain >= drainEvery) {
+                drainAll();
+                sinceDrain = 0;
+            }
+        }
+    }
+    drainAll();
+
+    return exportPlots(plots, QDir(dir).filePath(stepFolderName(lesson, step)),
+                       stepCaption(lesson, step, main.def()), options);
+}
+
+PlotFilesResult exportLessonPlots(const lessons::Lesson& lesson, const QString& dir,
+                                  const ExportOptions& options)
+{
+    PlotFilesResult all;
+    for (int i = 0; i < static_cast<int>(lesson.steps.size()); ++i) {
+        PlotFilesResult step = exportStepPlots(lesson, i, dir, options);
+        all.files.append(step.files);
+        if (!step.ok) {
+            all.error = step.error;
+            return all;
+        }
+    }
+    all.ok = true;
+    return all;
+}
+
+} // namespace rigidlab::ui

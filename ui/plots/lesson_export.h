@@ -1,0 +1,71 @@
+#pragma once
+// A lesson step's plots: making them, and writing them for handouts (PNG, PDF, SVG and the
+// numbers as CSV) with a caption that says the lesson, the step, the integrator and dt.
+//
+// The window's "Export plots" writes the live plots with exportPlots(); the headless export
+// (`rigidlab-cli lesson LESSON.json --export DIR`) builds the step's worlds, runs them for the
+// step's exportTime, samples them as the window does (step_sampler.h) and writes the same
+// plots with exportStepPlots().
+//
+// Plot names (LessonStep::plots) and what they show:
+//   energy          kinetic, potential and total energy of the main world [J]
+//   momentum        px, py [kg m/s] and the angular momentum L [kg m^2/s]
+//   drift           relative drift of the main world's total energy [%]
+//   compare-energy  the total energy of each compared world, one curve each [J]
+//   compare-drift   the energy drift of each compared world [%]
+// Files are named after the plot: DIR/02-energy-drift/compare-energy.png.
+
+#include "plots/plot_export.h"
+
+#include "format/lesson.h"
+
+#include <QString>
+#include <QStringList>
+
+#include <vector>
+
+class QWidget;
+
+namespace rigidlab::ui {
+
+class PlotWidget;
+
+/// One of the step's plots by its name in the lesson, a child of `parent`; nullptr for a name
+/// the loader does not admit. The window and the headless export both make their plots here.
+PlotWidget* makeStepPlot(const lessons::LessonStep& step, const QString& name, QWidget* parent);
+
+/// The step's plots, in the order it names them, children of `parent`. Each plot's
+/// objectName is its name in the lesson ("compare-energy"). The caller connects their source.
+std::vector<PlotWidget*> makeStepPlots(const lessons::LessonStep& step, QWidget* parent);
+
+/// The folder for a step's plots: its number from 01 and its title in lower case, words
+/// joined by '-': "02-verlet-against-rk4-up-close".
+QString stepFolderName(const lessons::Lesson& lesson, int step);
+
+/// The caption under each plot's title, two lines:
+/// "Energy drift: four ways to take a step, step 1: Four integrators, one spring"
+/// "integrators euler, symplectic-euler, verlet, rk4 · dt = 0.01 s"
+/// `settings` are those of the main world as it runs (the student may have changed dt).
+QString stepCaption(const lessons::Lesson& lesson, int step, const physics::WorldDef& settings);
+
+struct PlotFilesResult {
+    bool ok = false;
+    QString error;     ///< the first thing that went wrong, naming the file
+    QStringList files; ///< the files written, in order
+};
+
+/// Writes each plot as NAME.png, NAME.pdf, NAME.svg and NAME.csv into `dir` (made if
+/// missing), NAME being the plot's objectName, each with `caption` under its title.
+PlotFilesResult exportPlots(const std::vector<PlotWidget*>& plots, const QString& dir,
+                            const QString& caption, const ExportOptions& options = {});
+
+/// Headless: builds the step's worlds, runs them for its exportTime, and writes its plots
+/// into DIR/stepFolderName(). A step without plots writes nothing and succeeds.
+PlotFilesResult exportStepPlots(const lessons::Lesson& lesson, int step, const QString& dir,
+                                const ExportOptions& options = {});
+
+/// exportStepPlots() for every step that has plots.
+PlotFilesResult exportLessonPlots(const lessons::Lesson& lesson, const QString& dir,
+                                  const ExportOptions& options = {});
+
+} // namespace rigidlab::ui

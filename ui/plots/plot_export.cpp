@@ -1,0 +1,351 @@
+#include "plots/plot_export.h"
+
+#include "plots/plot_widget.h"
+
+#include <qcustomplot.h>
+
+#include <QBuffer>
+#include <QDir>
+#include <QImage>
+#include <QImageWriter>
+#include <QPageLayout>
+#include <QPageSize>
+#include <QPdfWriter>
+#include <QSaveFile>
+#include <QSvgGenerator>
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// Logical pixels per inch: fonts given in points come out the same size as on a plain
+/// screen, whatever the screen of the machine that exports.
+constexpr double kLogicalDpi = 96.0;
+constexpr double kInchesPerMeter = 1.0 / 0.0254;
+
+QString cannotWrite(const QString& path, const QString& why)
+{
+    return QCoreApplication::translate("rigidlab::ui::exportPlot", "cannot write %1: %2")
+        .arg(QDir::toNativeSeparators(path), why);
+}
+
+/// Lays the plot out for the export size while it is drawn, and back for the screen after:
+/// title and caption shown, the legend wrapped for the export's width, the graphs decimated
+/// for its pixels (`columns`), and every curve, item and legend line antialiased.
+class ExportLayout {
+public:
+    ExportLayout(PlotWidget& plot, QSize size, int columns)
+        : m_plot(plot), m_titleShown(plot.titleShown()), m_captionShown(plot.captionShown()),
+          m_antialiased(plot.plot()->antialiasedElements())
+    {
+        m_plot.setTitleShown(true); // a handout needs its title, and its caption if any
+        m_plot.setCaptionShown(true);
+        m_plot.fitLegend(size.width());
+        m_plot.fitMarks(size.width());
+        m_plot.prepareGraphs(columns);
+        m_plot.plot()->setAntialiasedElements(m_antialiased | QCP::aePlottables | QCP::aeItems |
+                                              QCP::aeLegendItems | QCP::aeScatters);
+    }
+    ~ExportLayout()
+    {
+        m_plot.plot()->setAntialiasedElements(m_antialiased);
+        m_plot.setTitleShown(m_titleShown);
+        m_plot.setCaptionShown(m_captionShown);
+        m_plot.fitLegend(m_plot.plot()->width());
+        m_plot.fitMarks();
+        m_plot.prepareGraphs();
+        m_plot.plot()->replot(QCustomPlot::rpQueuedReplot);
+    }
+    ExportLayout(const ExportLayout&) = delete;
+    ExportLayout& operator=(const ExportLayout&) = delete;
+
+private:
+    PlotWidget& m_plot;
+    bool m_titleShown;
+    bool m_captionShown;
+    QCP::AntialiasedElements m_antialiased;
+};
+
+bool encodePng(QCustomPlot& plot, const ExportOptions& options, QByteArray& bytes, QString& why)
+{
+    const QSize logical = options.logicalSize;
+    const double ratio = options.pngPixelRatio;
+    QImage image(qRound(logical.width() * ratio), qRound(logical.height() * ratio),
+                 QImage::Format_ARGB32_Premultiplied);
+    if (image.isNull()) {
+        why = QCoreApplication::translate("rigidlab::ui::exportPlot",
+                                          "not enough memory for a %1 x %2 px image")
+                  .arg(qRound(logical.width() * ratio))
+                  .arg(qRound(logical.height() * ratio));
+        return false;
+    }
+    // Points resolve against the image's resolution: fix it at the logical one while drawing.
+    const int logicalDpm = qRound(kLogicalDpi * kInchesPerMeter);
+    image.setDotsPerMeterX(logicalDpm);
+    image.setDotsPerMeterY(logicalDpm);
+    image.fill(Qt::white);
+    {
+        QCPPainter painter(&image);
+        // Lines scale with the picture, and tick labels are drawn at its resolution rather
+        // than copied from the screen's cached pixmaps.
+        painter.setMode(QCPPainter::pmNonCosmetic);
+        painter.setMode(QCPPainter::pmNoCaching);
+        painter.scale(ratio, ratio);
+        plot.toPainter(&painter, logical.width(), logical.height());
+    }
+    // The file says its true resolution, so it prints at the size of the PDF.
+    const int fileDpm = qRound(kLogicalDpi * ratio * kInchesPerMeter);
+    image.setDotsPerMeterX(fileDpm);
+    image.setDotsPerMeterY(fileDpm);
+
+    QBuffer out(&bytes);
+    out.open(QIODevice::WriteOnly);
+    QImageWriter writer(&out, "png");
+    if (!writer.write(image)) {
+        why = writer.errorString();
+        return false;
+    }
+    return true;
+}
+
+bool encodePdf(QCustomPlot& plot, const QString& title, const ExportOptions& options,
+               QByteArray& bytes, QString& why)
+{
+    const QSize logical = options.logicalSize;
+    QBuffer out(&bytes);
+    out.open(QIODevice::WriteOnly);
+    QPdfWriter pdf(&out);
+    pdf.setCreator(QStringLiteral("RigidLab"));
+    pdf.setTitle(title);
+    // One device pixel per logical pixel, and a page exactly the plot's size.
+    pdf.setResolution(static_cast<int>(kLogicalDpi));
+    const QSizeF pagePoints = QSizeF(logical) * (72.0 / kLogicalDpi);
+    pdf.setPageLayout(
+        QPageLayout(QPageSize(pagePoints, QPageSize::Point, QString(), QPageSize::ExactMatch),
+                    QPageLayout::Portrait, QMarginsF()));
+
+    QCPPainter painter;
+    if (!painter.begin(&pdf)) {
+        why = QCoreApplication::translate("rigidlab::ui::exportPlot",
+                                          "could not start drawing the PDF");
+        return false;
+    }
+    painter.setMode(QCPPainter::pmVectorized);
+    painter.setMode(QCPPainter::pmNonCosmetic);
+    plot.toPainter(&painter, logical.width(), logical.height());
+    painter.end();
+    return true;
+}
+
+bool encodeSvg(QCustomPlot& plot, const QString& title, const ExportOptions& options,
+               QByteArray& bytes, QString& why)
+{
+    const QSize logical = options.logicalSize;
+    QBuffer out(&bytes);
+    out.open(QIODevice::WriteOnly);
+    QSvgGenerator svg;
+    svg.setOutputDevice(&out);
+    svg.setSize(logical);
+    svg.setViewBox(QRect(QPoint(0, 0), logical));
+    svg.setResolution(static_cast<int>(kLogicalDpi));
+    svg.setTitle(title);
+    svg.setDescription(QStringLiteral("RigidLab plot"));
+
+    QCPPainter painter;
+    if (!painter.begin(&svg)) {
+        why = QCoreApplication::translate("rigidlab::ui::exportPlot",
+                                          "could not start drawing the SVG");
+        return false;
+    }
+    painter.setMode(QCPPainter::pmVectorized);
+    painter.setMode(QCPPainter::pmNonCosmetic);
+    plot.toPainter(&painter, logical.width(), logical.height());
+    painter.end();
+    return true;
+}
+
+/// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
+QByteArray csvField(const QString& text)
+{
+    QByteArray utf8 = text.toUtf8();
+    if (!utf8.contains(',') && !utf8.contains('"') && !utf8.contains('\n') && !utf8.contains('\r'))
+        return utf8;
+    utf8.replace("\"", "\"\"");
+    return '"' + utf8 + '"';
+}
+
+/// The shortest text that reads back as the same double; a gap (NaN) is an empty cell.
+void appendNumber(QByteArray& out, double value)
+{
+    if (std::isnan(value))
+        return;
+    std::array<char, 32> buffer{};
+    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    Q_ASSERT(ec == std::errc());
+    out.append(buffer.data(), end - buffer.data());
+}
+
+QByteArray encodeCsv(const PlotWidget& plot)
+{
+    QByteArray text = "t [s]";
+    std::vector<std::vector<QPointF>> columns;
+    for (int i = 0; i < plot.seriesCount(); ++i) {
+        const QString unit = plot.seriesUnit(i);
+        const QString head = unit.isEmpty()
+                                 ? plot.seriesName(i)
+                                 : QStringLiteral("%1 [%2]").arg(plot.seriesName(i), unit);
+        text += ',' + csvField(head);
+        columns.push_back(plot.points(i));
+    }
+    text += '\n';
+
+    // One row per distinct time over all series (series fed point by point need not share
+    // their times); a series with no point at that time leaves its cell empty.
+    std::vector<std::size_t> next(columns.size(), 0);
+    for (;;) {
+        double t = std::numeric_limits<double>::infinity();
+        for (std::size_t c = 0; c < columns.size(); ++c)
+            if (next[c] < columns[c].size())
+                t = std::min(t, columns[c][next[c]].x());
+        if (std::isinf(t))
+            break;
+        appendNumber(text, t);
+        for (std::size_t c = 0; c < columns.size(); ++c) {
+            text += ',';
+            if (next[c] < columns[c].size() && columns[c][next[c]].x() == t)
+                appendNumber(text, columns[c][next[c]++].y());
+        }
+        text += '\n';
+    }
+
+    return text;
+}
+
+/// Writes all of `bytes`, or says why not. A write that stops short is tried again: the
+/// second attempt is the one that reports the cause ("File too large").
+bool writeAll(QSaveFile& file, const QByteArray& bytes, QString& why)
+{
+    qint64 done = 0;
+    while (done < bytes.size()) {
+        const qint64 n = file.write(bytes.constData() + done, bytes.size() - done);
+        if (n <= 0)
+            break;
+        done += n;
+    }
+    // commit() does not check the flush of what may still be buffered (QTBUG-75077).
+    if (done == bytes.size() && file.flush())
+        return true;
+    why = file.errorString();
+    return false;
+}
+
+} // namespace
+
+std::optional<ExportFormat> formatFromSuffix(const QString& suffix)
+{
+    QString s = suffix.trimmed().toLower();
+    if (s.startsWith('.'))
+        s.remove(0, 1);
+    if (s == QLatin1String("png"))
+        return ExportFormat::Png;
+    if (s == QLatin1String("pdf"))
+        return ExportFormat::Pdf;
+    if (s == QLatin1String("svg"))
+        return ExportFormat::Svg;
+    if (s == QLatin1String("csv"))
+        return ExportFormat::Csv;
+    return std::nullopt;
+}
+
+QString suffixFor(ExportFormat format)
+{
+    switch (format) {
+    case ExportFormat::Png:
+        return QStringLiteral("png");
+    case ExportFormat::Pdf:
+        return QStringLiteral("pdf");
+    case ExportFormat::Svg:
+        return QStringLiteral("svg");
+    case ExportFormat::Csv:
+        return QStringLiteral("csv");
+    }
+    Q_UNREACHABLE();
+}
+
+QString fileFilterFor(ExportFormat format)
+{
+    const char* context = "rigidlab::ui::exportPlot";
+    switch (format) {
+    case ExportFormat::Png:
+        return QCoreApplication::translate(context, "PNG image (*.png)");
+    case ExportFormat::Pdf:
+        return QCoreApplication::translate(context, "PDF document (*.pdf)");
+    case ExportFormat::Svg:
+        return QCoreApplication::translate(context, "SVG drawing (*.svg)");
+    case ExportFormat::Csv:
+        return QCoreApplication::translate(context, "CSV table (*.csv)");
+    }
+    Q_UNREACHABLE();
+}
+
+ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat format,
+                        const ExportOptions& options)
+{
+    const char* context = "rigidlab::ui::exportPlot";
+    if (path.isEmpty())
+        return {false, QCoreApplication::translate(context, "cannot export: no file name given")};
+    if (format != ExportFormat::Csv &&
+        (options.logicalSize.isEmpty() || !(options.pngPixelRatio > 0)))
+        return {false,
+                cannotWrite(path, QCoreApplication::translate(context, "empty picture size"))};
+
+    // Written to a temporary file next to `path`, renamed over it only by commit().
+    // Unbuffered, so that a failing write reports its cause at once.
+    QSaveFile file(path);
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
+        return {false, cannotWrite(path, file.errorString())};
+
+    // The whole file is made in memory first, then written in one go: the encoders do not
+    // all check their writes (QSvgGenerator and QTextStream take a short write silently),
+    // and here every byte is checked.
+    QByteArray bytes;
+    QString why;
+    bool encoded = true;
+    if (format == ExportFormat::Csv) {
+        bytes = encodeCsv(plot);
+    } else {
+        QCustomPlot& qcp = *plot.plot();
+        // Two points per pixel column: of the image for a PNG, of a fine print for the rest.
+        const double density = format == ExportFormat::Png ? options.pngPixelRatio : 2.0;
+        const ExportLayout layout(plot, options.logicalSize,
+                                  qRound(options.logicalSize.width() * density));
+        switch (format) {
+        case ExportFormat::Png:
+            encoded = encodePng(qcp, options, bytes, why);
+            break;
+        case ExportFormat::Pdf:
+            encoded = encodePdf(qcp, plot.title(), options, bytes, why);
+            break;
+        case ExportFormat::Svg:
+            encoded = encodeSvg(qcp, plot.title(), options, bytes, why);
+            break;
+        case ExportFormat::Csv:
+            break;
+        }
+    }
+    if (!encoded || !writeAll(file, bytes, why)) {
+        file.cancelWriting(); // the temporary file goes; a file already at `path` stays
+        return {false, cannotWrite(path, why)};
+    }
+    if (!file.commit())
+        return {false, cannotWrite(path, file.errorString())};
+    return {true, {}};
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,222 @@
+// PlotWidget's marks: a dashed vertical line where a setting changed mid-run, with a short
+// label above the plot ("dt = 5 ms"). Labels that would overlap are stacked on rows above one
+// another; marks closer than a few pixels share one label:
+//
+//    dt = 5 ms  Runge–Kutta 4         row 1
+//   e = 0.5, μ = 0.3 |  dt = 2 ms     row 0
+//   |             |  |  |
+//   |             |  |  |             the lines stay where the changes were
+
+#include "plots/plot_widget.h"
+
+#include <qcustomplot.h>
+
+#include <QFontMetricsF>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace rigidlab::ui {
+
+namespace {
+
+constexpr double kMarkLabelPt = 10;
+constexpr int kRightMarginPx = 22; // as plot_widget.cpp: half a tick label
+constexpr double kLabelGapPx = 6;  // between labels on one row
+const QMargins kLabelPadding(3, 0, 3, 1);
+const QColor kInk(0x20, 0x20, 0x20);
+const QColor kLine(0x60, 0x60, 0x60);
+constexpr int kGhostAlpha = 100; // of 255: a mark in the run's abandoned future
+
+QFont markFont(const QFont& base)
+{
+    QFont f = base;
+    f.setPointSizeF(kMarkLabelPt);
+    return f;
+}
+
+} // namespace
+
+void PlotWidget::addMark(double t, const QString& label)
+{
+    if (!std::isfinite(t))
+        return;
+    Mark mark;
+    mark.t = t;
+    mark.text = label;
+
+    // x in time, y as a fraction of the axis rect: the line spans the plot at any zoom.
+    mark.line = new QCPItemLine(m_plot);
+    for (QCPItemPosition* end : {mark.line->start, mark.line->end}) {
+        end->setAxes(m_plot->xAxis, m_plot->yAxis);
+        end->setAxisRect(m_plot->axisRect());
+        end->setTypeX(QCPItemPosition::ptPlotCoords);
+        end->setTypeY(QCPItemPosition::ptAxisRectRatio);
+    }
+    mark.line->start->setCoords(t, 0); // the top of the axis rect
+    mark.line->end->setCoords(t, 1);
+
+    // The label sits in a strip above the axis rect, where it hides no curve, its row
+    // (fitMarks) a pixel offset up from the line's top; outside the axis rect it is not
+    // clipped, so fitMarks() hides it when its line is out of view.
+    mark.label = new QCPItemText(m_plot);
+    mark.label->setClipToAxisRect(false);
+    mark.label->position->setAxes(m_plot->xAxis, m_plot->yAxis);
+    mark.label->position->setAxisRect(m_plot->axisRect());
+    mark.label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+    mark.label->position->setParentAnchorY(mark.line->start);
+    mark.label->position->setTypeY(QCPItemPosition::ptAbsolute);
+    mark.label->position->setCoords(t, 0);
+    mark.label->setPadding(kLabelPadding);
+    mark.label->setFont(markFont(font()));
+    mark.label->setText(label);
+    styleMark(mark);
+
+    const auto at = std::upper_bound(m_marks.begin(), m_marks.end(), t,
+                                     [](double time, const Mark& m) { return time < m.t; });
+    m_marks.insert(at, mark);
+    while (m_marks.size() > static_cast<std::size_t>(kMaxMarks))
+        removeMark(0);
+    trimToWindow();
+    updateMarkLabels();
+    m_dirty = true;
+}
+
+void PlotWidget::styleMark(const Mark& mark)
+{
+    QColor line = kLine, ink = kInk;
+    if (mark.ghost) {
+        line.setAlpha(kGhostAlpha);
+        ink.setAlpha(kGhostAlpha);
+    }
+    mark.line->setPen(QPen(line, 1.5, mark.ghost ? Qt::DotLine : Qt::DashLine));
+    mark.label->setColor(ink);
+}
+
+void PlotWidget::updateMarkLabels()
+{
+    fitMarks();
+}
+
+void PlotWidget::fitMarks(int widthPx)
+{
+    // The width of the axis rect in pixels: on screen its own; for an export of another
+    // width, that width less the same margins.
+    const int screenAxisPx = m_plot->axisRect()->width();
+    const int marginsPx = m_plot->width() - screenAxisPx;
+    double axisPx = screenAxisPx;
+    if (widthPx > 0)
+        axisPx = m_plot->width() > 0 && marginsPx > 0 ? widthPx - marginsPx : widthPx;
+    if (axisPx <= 0)
+        axisPx = 800; // never laid out: as prepareGraphs assumes
+
+    const QFontMetricsF metrics(markFont(font()));
+    // A row is a label's height: its text, its padding (as addMark sets it) and a pixel.
+    const double rowPx =
+        std::ceil(metrics.height()) + kLabelPadding.top() + kLabelPadding.bottom() + 1;
+    const QCPRange range = m_plot->xAxis->range();
+    const auto pixel = [&](double t) { return (t - range.lower) / range.size() * axisPx; };
+
+    // Marks within kMergePx of the one before share its label: one group each.
+    struct Group {
+        std::size_t first = 0; ///< the mark whose label shows the group's
+        QStringList texts;
+        double x = 0; ///< [px] of the first mark
+        double lastX = 0;
+    };
+    std::vector<Group> groups;
+    for (std::size_t i = 0; i < m_marks.size(); ++i) {
+        const Mark& mark = m_marks[i];
+        mark.label->setVisible(false);
+        if (!range.contains(mark.t))
+            continue;
+        const double x = pixel(mark.t);
+        if (!groups.empty() && x - groups.back().lastX < kMergePx &&
+            m_marks[groups.back().first].ghost == mark.ghost) {
+            Group& g = groups.back();
+            if (!mark.text.isEmpty() && !g.texts.contains(mark.text))
+                g.texts.append(mark.text);
+            g.lastX = x;
+            continue;
+        }
+        groups.push_back({i, mark.text.isEmpty() ? QStringList() : QStringList{mark.text}, x, x});
+    }
+
+    // Each group's label on the lowest row where it overlaps nothing. A label that finds no
+    // row is merged into the label before it, and the rows are laid out again (the groups
+    // only get fewer, so this ends).
+    struct Placed {
+        double left = 0; ///< [px]
+        bool leftwards = false;
+        std::size_t row = 0;
+    };
+    std::vector<Placed> placed;
+    const auto textOf = [](const Group& g) { return g.texts.join(QStringLiteral(", ")); };
+    for (;;) {
+        placed.clear();
+        std::array<double, kMarkRows> rowEnd;
+        rowEnd.fill(-std::numeric_limits<double>::infinity());
+        std::size_t crowded = 0; // the first group with no room, 0 if none
+        for (std::size_t k = 0; k < groups.size() && crowded == 0; ++k) {
+            const Group& g = groups[k];
+            const double w =
+                metrics.horizontalAdvance(textOf(g)) + kLabelPadding.left() + kLabelPadding.right();
+            // Near the right edge the label reads leftwards from its line, not cut off.
+            const bool leftwards = g.x + w > axisPx + kRightMarginPx && g.x - w >= 0;
+            const double left = leftwards ? g.x - w : g.x;
+            std::size_t row = 0;
+            while (row < rowEnd.size() && rowEnd[row] + kLabelGapPx > left)
+                ++row;
+            if (row == rowEnd.size() && k > 0) {
+                crowded = k;
+                break;
+            }
+            row = std::min(row, rowEnd.size() - 1);
+            rowEnd[row] = left + w;
+            placed.push_back({left, leftwards, row});
+        }
+        if (crowded == 0)
+            break;
+        Group& into = groups[crowded - 1];
+        for (const QString& text : groups[crowded].texts)
+            if (!into.texts.contains(text))
+                into.texts.append(text);
+        into.lastX = groups[crowded].lastX;
+        groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(crowded));
+    }
+
+    int rows = m_marks.empty() ? 0 : 1;
+    for (std::size_t k = 0; k < groups.size(); ++k) {
+        const Mark& mark = m_marks[groups[k].first];
+        const QString text = textOf(groups[k]);
+        mark.label->setText(text);
+        mark.label->setVisible(!text.isEmpty());
+        mark.label->setPositionAlignment((placed[k].leftwards ? Qt::AlignRight : Qt::AlignLeft) |
+                                         Qt::AlignBottom);
+        mark.label->position->setCoords(mark.t, -static_cast<double>(placed[k].row) * rowPx);
+        rows = std::max(rows, static_cast<int>(placed[k].row) + 1);
+    }
+
+    // Room above the axis rect for the labels' rows, only while there are marks; and room on
+    // the right for the last tick label of the time axis.
+    const int strip = rows == 0 ? 0 : static_cast<int>(rows * rowPx) + 4;
+    if (strip != m_markStrip || m_plot->axisRect()->minimumMargins().right() != kRightMarginPx) {
+        m_markStrip = strip;
+        m_plot->axisRect()->setMinimumMargins(QMargins(0, strip, kRightMarginPx, 0));
+    }
+}
+
+void PlotWidget::removeMark(std::size_t index)
+{
+    m_plot->removeItem(m_marks[index].label); // first: it hangs from the line's top
+    m_plot->removeItem(m_marks[index].line);
+    m_marks.erase(m_marks.begin() + static_cast<std::ptrdiff_t>(index));
+    if (m_marks.empty())
+        updateMarkLabels();
+    m_dirty = true;
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,95 @@
+// The plots of the lab window, each a few lines over PlotWidget; and the palette they share.
+// Declared in plot_widget.h.
+
+#include "plots/plot_widget.h"
+
+#include <algorithm>
+#include <iterator>
+
+namespace rigidlab::ui {
+
+QColor plotColor(int index)
+{
+    // Okabe & Ito's palette: told apart with any colour vision, and on a washed-out projector.
+    static const QColor palette[] = {
+        {0x00, 0x72, 0xB2}, // blue
+        {0xD5, 0x5E, 0x00}, // vermilion
+        {0x00, 0x9E, 0x73}, // bluish green
+        {0xCC, 0x79, 0xA7}, // reddish purple
+        {0xE6, 0x9F, 0x00}, // orange
+        {0x56, 0xB4, 0xE9}, // sky blue
+        {0x20, 0x20, 0x20}, // ink
+    };
+    const int n = static_cast<int>(std::size(palette));
+    return palette[((index % n) + n) % n];
+}
+
+Qt::PenStyle plotPenStyle(int index)
+{
+    // Solid first, then dashes that leave gaps for the curves drawn before to show through.
+    static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine,
+                                          Qt::DashDotDotLine};
+    const int n = static_cast<int>(std::size(styles));
+    return styles[((index % n) + n) % n];
+}
+
+double plotPenWidthFactor(int index, int count)
+{
+    // 0.4 of a line more per curve drawn over it: 2 px lines at 4.4, 3.6, 2.8 and 2 px for
+    // four worlds, wide enough that each shows on both sides of the next.
+    return 1.0 + 0.4 * std::max(count - 1 - index, 0);
+}
+
+PlotWidget* makeEnergyPlot(QWidget* parent)
+{
+    auto* plot = new PlotWidget(PlotWidget::tr("Energy"), parent);
+    plot->setYAxisLabel(PlotWidget::tr("energy E"), QStringLiteral("J"));
+    plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
+    plot->addSeries(PlotWidget::tr("kinetic"), plotColor(1),
+                    [](const Sample& s) { return s.kinetic; });
+    plot->addSeries(PlotWidget::tr("potential"), plotColor(0),
+                    [](const Sample& s) { return s.potential; });
+    plot->addSeries(PlotWidget::tr("total"), plotColor(6), [](const Sample& s) { return s.total; });
+    // The energy balance: what contacts, friction, drag and dampers took since the start, and
+    // the total with it added back, which stays at the starting energy but for the drift.
+    plot->addSeries(PlotWidget::tr("dissipated"), plotColor(2),
+                    [](const Sample& s) { return s.dissipated; });
+    const int balance = plot->addSeries(PlotWidget::tr("total + dissipated"), plotColor(4),
+                                        [](const Sample& s) { return s.total + s.dissipated; });
+    // With nothing dissipated it lies on the total: dashed, so that both stay visible.
+    plot->setSeriesPen(balance, plotPenStyle(1));
+    return plot;
+}
+
+PlotWidget* makeMomentumPlot(QWidget* parent)
+{
+    auto* plot = new PlotWidget(PlotWidget::tr("Momentum"), parent);
+    plot->setYAxisLabel(PlotWidget::tr("p"), QStringLiteral("kg m/s"));
+    plot->setYAxisLabel(PlotWidget::tr("L"), QStringLiteral("kg m²/s"), YAxis::Right);
+    plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.momentumScale; });
+    plot->setValueScale(YAxis::Right, [](const Sample& s) { return s.angularMomentumScale; });
+    plot->setMinimumSpan(YAxis::Left, kConservedMinimumSpan);
+    plot->setMinimumSpan(YAxis::Right, kConservedMinimumSpan);
+    plot->addSeries(QStringLiteral("px"), plotColor(0), [](const Sample& s) { return s.px; });
+    plot->addSeries(QStringLiteral("py"), plotColor(1), [](const Sample& s) { return s.py; });
+    plot->addSeries(
+        QStringLiteral("L"), plotColor(2), [](const Sample& s) { return s.angularMomentum; },
+        YAxis::Right);
+    return plot;
+}
+
+PlotWidget* makeDriftPlot(QWidget* parent)
+{
+    auto* plot = new PlotWidget(PlotWidget::tr("Energy drift"), parent);
+    // The numerical error alone: the energy that contacts, friction, drag and dampers took is
+    // added back, since losing it is physics, not error.
+    // The axis says what it is in a word (a plot in a narrow column has no room for the
+    // formula, (E + E_dissipated − E₀)/|E₀|, which the README and the lesson give).
+    plot->setYAxisLabel(PlotWidget::tr("drift"), QStringLiteral("%"));
+    plot->setValueScale(YAxis::Left, kDriftScalePercent);
+    plot->addSeries(PlotWidget::tr("energy drift (numerical error)"), plotColor(3),
+                    [](const Sample& s) { return s.driftPercent; });
+    return plot;
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,447 @@
+#include "simulation/simulation_controller.h"
+
+#include "common/display_names.h"
+#include "plots/step_sampler.h"
+
+#include "format/limits.h"
+#include "format/scene_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace rigidlab::ui {
+
+namespace {
+
+constexpr int kFrameIntervalMs = 16;      // about 60 frames per second
+constexpr double kMaxFrameSeconds = 0.1;  // a longer gap (a paused debugger) counts as this
+constexpr double kPhysicsBudgetMs = 12.0; // physics may take this much of a frame
+constexpr double kGrabFrequency = 3.0;    // the grab spring's natural frequency [Hz]
+
+} // namespace
+
+template <typename Fn> void SimulationController::forEachWorld(Fn&& fn)
+{
+    fn(m_world);
+    for (physics::World& w : m_variants)
+        fn(w);
+}
+
+SimulationController::SimulationController(QObject* parent) : QObject(parent)
+{
+    m_frameTimer.setTimerType(Qt::PreciseTimer);
+    m_frameTimer.setInterval(kFrameIntervalMs);
+    connect(&m_frameTimer, &QTimer::timeout, this, &SimulationController::advanceFrame);
+    m_rateClock.start();
+}
+
+void SimulationController::loadScene(const lessons::Scene& scene, const QString& path)
+{
+    std::vector<physics::World> worlds;
+    worlds.push_back(lessons::buildWorld(scene));
+    loadWorlds(scene, path, std::move(worlds), {}, physics::Vec2::Zero());
+}
+
+void SimulationController::loadWorlds(const lessons::Scene& scene, const QString& path,
+                                      std::vector<physics::World> worlds, const QStringList& labels,
+                                      const physics::Vec2& offset)
+{
+    setRunning(false);
+    m_scene = scene;
+    m_path = path;
+    m_sceneGravity = scene.world.gravity;
+    m_grab.reset();
+    m_world = std::move(worlds.front());
+    m_worldStart = m_world;
+    m_variants.assign(std::make_move_iterator(worlds.begin() + 1),
+                      std::make_move_iterator(worlds.end()));
+    m_variantStarts = m_variants;
+    m_variantLabels = labels;
+    m_variantOffset = offset;
+    m_watched.clear();
+    resetClock();
+    emit sceneLoaded();
+    emit settingsChanged();
+    emit worldChanged();
+}
+
+void SimulationController::reset()
+{
+    // Back to the start, keeping the settings the user chose since.
+    const physics::WorldDef settings = m_world.def();
+    setRunning(false);
+    m_grab.reset();
+    m_world = m_worldStart;
+    m_world.setDt(settings.dt);
+    m_world.setIntegrator(settings.integrator);
+    m_world.setSolver(settings.solver);
+    m_world.setIterations(settings.iterations);
+    if (settings.restitution != m_worldStart.def().restitution)
+        m_world.setRestitution(settings.restitution);
+    if (settings.friction != m_worldStart.def().friction)
+        m_world.setFriction(settings.friction);
+    m_variants = m_variantStarts;
+    forEachWorld([&](physics::World& w) {
+        w.setDt(settings.dt);
+        w.setGravity(settings.gravity);
+    });
+    resetClock();
+    emit worldChanged();
+}
+
+void SimulationController::resetClock()
+{
+    m_world.updateDiagnostics();
+    m_energyReference = EnergyReference::of(m_world);
+    m_history.reset(m_world);
+    m_previousPoses.clear();
+    m_accumulator = 0.0;
+    m_slow = false;
+    m_lastSampleTime = -1.0;
+    m_samples.clear();
+    resetVariants();
+    m_measurements.reset(m_world, m_watched);
+    emit samplesCleared();
+    pushSample();
+}
+
+void SimulationController::resetVariants()
+{
+    m_variantReferences.clear();
+    for (physics::World& w : m_variants) {
+        w.updateDiagnostics();
+        m_variantReferences.push_back(EnergyReference::of(w));
+    }
+}
+
+void SimulationController::watch(const std::vector<lessons::Measure>& measures)
+{
+    m_watched = measures;
+    m_measurements.reset(m_world, m_watched);
+}
+
+double SimulationController::driftPercent() const
+{
+    return m_energyReference.driftPercent(m_world.diagnostics());
+}
+
+double SimulationController::dissipated() const
+{
+    return m_energyReference.dissipatedSince(m_world.diagnostics());
+}
+
+Pose SimulationController::drawPose(physics::BodyId id) const
+{
+    const physics::Body& b = m_world.body(id);
+    Pose now{b.origin(), b.angle};
+    const auto i = static_cast<std::size_t>(id);
+    if (!m_running || i >= m_previousPoses.size())
+        return now;
+    const double alpha = std::clamp(m_accumulator / m_world.def().dt, 0.0, 1.0);
+    const Pose& before = m_previousPoses[i];
+    return {before.origin + alpha * (now.origin - before.origin),
+            before.angle + alpha * (now.angle - before.angle)};
+}
+
+void SimulationController::setRunning(bool running)
+{
+    if (running == m_running)
+        return;
+    m_running = running;
+    m_accumulator = 0.0;
+    if (running) {
+        m_wall.start();
+        m_frameTimer.start();
+        // The rates measure this run only, not the pause before it.
+        m_rateClock.restart();
+        m_stepsThisSecond = 0;
+        m_simulatedThisSecond = 0.0;
+        m_stepsPerSecond = 0.0;
+        m_realTimeFactor.reset();
+    } else {
+        m_frameTimer.stop();
+        m_slow = false;
+    }
+    emit runningChanged(running);
+    emit worldChanged();
+}
+
+void SimulationController::doStep()
+{
+    const long long step = m_world.stepCount();
+    const bool replaying = step < m_history.latest();
+    std::optional<UserInput> input;
+    if (m_grab) {
+        // The grab spring: k = m w^2, critically damped, at the grabbed point.
+        const physics::Body& b = m_world.body(m_grab->body);
+        const physics::Vec2 p = b.transform().apply(m_grab->localPoint);
+        const double h = m_world.def().dt;
+        const double w = std::min(2.0 * std::numbers::pi * kGrabFrequency, 0.5 / h);
+        const physics::Vec2 f =
+            b.mass * (w * w * (m_grab->target - p) - 2.0 * w * b.pointVelocity(p));
+        input = UserInput{m_grab->body, f, physics::cross(physics::Vec2(p - b.position), f)};
+        if (replaying)
+            m_history.branchAt(m_world); // a new push makes a new future
+    } else if (replaying) {
+        if (const UserInput* logged = m_history.inputFor(step))
+            input = *logged;
+    }
+    m_previousPoses.resize(m_world.bodies().size());
+    for (std::size_t i = 0; i < m_world.bodies().size(); ++i)
+        m_previousPoses[i] = {m_world.bodies()[i].origin(), m_world.bodies()[i].angle};
+    if (input)
+        applyInput(m_world, *input);
+    m_world.step();
+    for (physics::World& w : m_variants)
+        w.step();
+    m_history.recorded(m_world, input ? &*input : nullptr);
+    m_measurements.observe(m_world);
+    ++m_stepsThisSecond;
+    pushSample();
+}
+
+void SimulationController::pushSample()
+{
+    const double t = stepTime(m_world);
+    if (m_lastSampleTime >= 0 && t < m_lastSampleTime + kSampleInterval - 1e-12)
+        return;
+    m_lastSampleTime = t;
+    // Variant 0 is the main world; the others follow in order (step_sampler.h, as the
+    // lesson export samples).
+    m_samples.push(makeSample(m_world, m_energyReference, m_variants, m_variantReferences,
+                              !m_variantLabels.isEmpty()));
+}
+
+void SimulationController::advanceFrame()
+{
+    QElapsedTimer physicsClock;
+    physicsClock.start();
+    // Nanoseconds: restart() would round to whole milliseconds and lose ~3% of the time.
+    const double unclampedWall = m_wall.nsecsElapsed() * 1e-9;
+    const double wall = std::min(unclampedWall, kMaxFrameSeconds);
+    m_wall.start();
+    const double h = m_world.def().dt;
+    // A frame longer than kMaxFrameSeconds (the window was busy) loses the rest of its time:
+    // the run fell behind real time, and says so.
+    bool slow = unclampedWall > kMaxFrameSeconds;
+    if (m_running) {
+        m_accumulator += wall * m_timeScale;
+        while (m_accumulator >= h) {
+            if (physicsClock.nsecsElapsed() * 1e-6 > kPhysicsBudgetMs) {
+                slow = true;
+                m_accumulator = 0.0; // drop what cannot be done in time
+                break;
+            }
+            doStep();
+            m_accumulator -= h;
+            m_simulatedThisSecond += h;
+        }
+    }
+    m_physicsMs = physicsClock.nsecsElapsed() * 1e-6;
+    m_frameMs = wall * 1e3;
+    if (m_measureFrames > 0) {
+        m_measuredFrameMs.push_back(unclampedWall * 1e3);
+        m_measuredPhysicsMs.push_back(m_physicsMs);
+        if (--m_measureFrames == 0)
+            emit framesMeasured(m_measuredFrameMs, m_measuredPhysicsMs);
+    }
+    m_slow = slow;
+    if (m_rateClock.elapsed() >= 1000) {
+        const double seconds = static_cast<double>(m_rateClock.nsecsElapsed()) * 1e-9;
+        m_rateClock.restart();
+        m_stepsPerSecond = static_cast<double>(m_stepsThisSecond) / seconds;
+        m_realTimeFactor = m_simulatedThisSecond / seconds;
+        m_stepsThisSecond = 0;
+        m_simulatedThisSecond = 0.0;
+    }
+    emit worldChanged();
+    emit frameAdvanced();
+}
+
+void SimulationController::measureFrames(int frames)
+{
+    m_measureFrames = frames;
+    m_measuredFrameMs.clear();
+    m_measuredPhysicsMs.clear();
+}
+
+void SimulationController::stepForward()
+{
+    setRunning(false);
+    doStep();
+    emit worldChanged();
+}
+
+void SimulationController::stepBack()
+{
+    seek(m_world.stepCount() - 1);
+}
+
+void SimulationController::seek(long long step)
+{
+    setRunning(false);
+    step = std::clamp(step, m_history.earliest(), m_history.latest());
+    if (step == m_world.stepCount())
+        return;
+    m_world = m_history.restore(step);
+    m_world.updateDiagnostics();
+    // The compared worlds have no history of their own: they are small (lesson scenes)
+    // and replay from their start, deterministically.
+    for (std::size_t i = 0; i < m_variants.size(); ++i) {
+        physics::World w = m_variantStarts[i];
+        w.setDt(m_world.def().dt);
+        while (w.stepCount() < step)
+            w.step();
+        w.updateDiagnostics();
+        m_variants[i] = std::move(w);
+    }
+    m_measurements.rewind(m_world);
+    m_previousPoses.clear();
+    m_lastSampleTime = stepTime(m_world) - kSampleInterval; // sample again from here on
+    emit rewound(stepTime(m_world));
+    pushSample();
+    emit worldChanged();
+}
+
+// The setters take only what a scene file may hold (lessons/limits.h): a value from outside
+// (a typed number, a test, a lesson) that is out of range or not finite changes nothing.
+
+void SimulationController::setTimeScale(double scale)
+{
+    if (!lessons::limits::kTimeScale.contains(scale))
+        return;
+    m_timeScale = scale;
+    emit settingsChanged();
+}
+
+void SimulationController::afterEdit(const QString& mark)
+{
+    m_history.branchAt(m_world);
+    if (!mark.isEmpty() && m_world.stepCount() > 0)
+        emit marked(stepTime(m_world), mark);
+    emit settingsChanged();
+    emit worldChanged();
+}
+
+void SimulationController::setDt(double dt)
+{
+    if (!(dt >= lessons::kMinDt && dt <= lessons::kMaxDt) || dt == m_world.def().dt)
+        return;
+    forEachWorld([dt](physics::World& w) { w.setDt(dt); });
+    afterEdit(QStringLiteral("dt = %1 s").arg(dt));
+}
+
+void SimulationController::setIntegrator(physics::IntegratorKind kind)
+{
+    if (kind == m_world.def().integrator)
+        return;
+    m_world.setIntegrator(kind);
+    afterEdit(integratorDisplayName(kind));
+}
+
+void SimulationController::setSolver(physics::SolverKind kind)
+{
+    if (kind == m_world.def().solver)
+        return;
+    m_world.setSolver(kind);
+    afterEdit(solverDisplayName(kind));
+}
+
+void SimulationController::setIterations(int iterations)
+{
+    if (iterations == m_world.def().iterations || iterations < 1 ||
+        iterations > lessons::kMaxIterations)
+        return;
+    m_world.setIterations(iterations);
+    afterEdit(QStringLiteral("%1 iterations").arg(iterations));
+}
+
+void SimulationController::setRestitution(double e)
+{
+    if (!lessons::limits::kRestitution.contains(e))
+        return;
+    forEachWorld([e](physics::World& w) { w.setRestitution(e); });
+    afterEdit(QStringLiteral("e = %1").arg(e));
+}
+
+void SimulationController::setFriction(double mu)
+{
+    if (!lessons::limits::kFriction.contains(mu))
+        return;
+    forEachWorld([mu](physics::World& w) { w.setFriction(mu); });
+    afterEdit(QStringLiteral("μ = %1").arg(mu));
+}
+
+void SimulationController::setGravityEnabled(bool on)
+{
+    const physics::Vec2 g = on ? m_sceneGravity : physics::Vec2::Zero();
+    if (g == m_world.def().gravity)
+        return;
+    forEachWorld([&g](physics::World& w) { w.setGravity(g); });
+    afterEdit(on ? QStringLiteral("gravity on") : QStringLiteral("gravity off"));
+}
+
+void SimulationController::setBodyMaterial(physics::BodyId id, double restitution, double friction)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()))
+        return;
+    if (!lessons::limits::kRestitution.contains(restitution) ||
+        !lessons::limits::kFriction.contains(friction))
+        return;
+    physics::Body& b = m_world.body(id);
+    b.restitution = restitution;
+    b.friction = friction;
+    afterEdit(QString());
+}
+
+void SimulationController::setBodyMass(physics::BodyId id, double mass)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
+        !lessons::limits::kMass.contains(mass) || mass == m_world.body(id).mass)
+        return;
+    if (!m_world.setBodyMass(id, mass))
+        return;
+    m_world.updateDiagnostics();
+    afterEdit(QStringLiteral("m = %1 kg").arg(mass));
+}
+
+void SimulationController::rotateBody(physics::BodyId id, double radians)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
+        !m_world.body(id).moves() || !std::isfinite(radians))
+        return;
+    physics::Body& b = m_world.body(id);
+    b.angle += radians; // about the centre of mass, which is where the state is held
+    afterEdit(QString());
+}
+
+void SimulationController::grab(physics::BodyId id, const physics::Vec2& worldPoint)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
+        !m_world.body(id).isDynamic())
+        return;
+    m_grab = Grab{id, m_world.body(id).transform().applyInverse(worldPoint), worldPoint};
+}
+
+void SimulationController::dragTo(const physics::Vec2& worldPoint)
+{
+    if (m_grab)
+        m_grab->target = worldPoint;
+}
+
+void SimulationController::release()
+{
+    m_grab.reset();
+}
+
+bool SimulationController::grabLine(physics::Vec2& from, physics::Vec2& to) const
+{
+    if (!m_grab)
+        return false;
+    from = m_world.body(m_grab->body).transform().apply(m_grab->localPoint);
+    to = m_grab->target;
+    return true;
+}
+
+} // namespace rigidlab::ui

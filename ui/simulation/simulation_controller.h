@@ -1,0 +1,204 @@
+#pragma once
+// The one owner of the world and its clock. The window's widgets read from it and ask it to
+// change things; nothing else steps or edits the world.
+//
+// Real time: the physics runs on a fixed dt. Each frame adds the wall time that passed
+// (times the time scale) to an accumulator and takes as many steps as fit; the view draws
+// the bodies interpolated between the last two steps. A frame never takes more than a set
+// number of steps or milliseconds of physics (no spiral of death): when it has to stop early
+// the run is marked "slower than real time".
+
+#include "plots/sample_buffer.h"
+#include "plots/step_sampler.h"
+#include "simulation/history.h"
+
+#include "format/scene.h"
+#include "rigidlab/physics/world.h"
+#include "run/measurements.h"
+
+#include <QElapsedTimer>
+#include <QObject>
+#include <QString>
+#include <QTimer>
+
+#include <optional>
+#include <vector>
+
+namespace rigidlab::ui {
+
+/// A body pose for drawing [m, rad].
+struct Pose {
+    physics::Vec2 origin = physics::Vec2::Zero();
+    double angle = 0.0;
+};
+
+class SimulationController : public QObject {
+    Q_OBJECT
+public:
+    explicit SimulationController(QObject* parent = nullptr);
+
+    /// Replaces the scene and its world; the run starts paused at t = 0.
+    void loadScene(const lessons::Scene& scene, const QString& path);
+    /// Like loadScene, with prepared worlds (a lesson step): worlds[0] is the main one, the
+    /// others run beside it as variants (labels: one per world, or empty).
+    void loadWorlds(const lessons::Scene& scene, const QString& path,
+                    std::vector<physics::World> worlds, const QStringList& labels,
+                    const physics::Vec2& offset);
+    const lessons::Scene& scene() const { return m_scene; }
+    const QString& scenePath() const { return m_path; }
+    const physics::World& world() const { return m_world; }
+    const SampleBuffer& samples() const { return m_samples; }
+
+    // Worlds run side by side with the main one (a lesson comparing integrators or solvers).
+    // They step in lockstep with it and share its dt, restitution, friction and gravity.
+    int variantCount() const { return static_cast<int>(m_variants.size()); }
+    const physics::World& variant(int i) const { return m_variants[static_cast<size_t>(i)]; }
+    /// Labels of all compared worlds, the main one first; empty when nothing is compared.
+    const QStringList& variantLabels() const { return m_variantLabels; }
+    physics::Vec2 variantOffset() const { return m_variantOffset; }
+
+    // What a lesson measures while the world runs (bounces, collisions, timed values).
+    void watch(const std::vector<lessons::Measure>& measures);
+    const lessons::Measurements& measurements() const { return m_measurements; }
+
+    bool isRunning() const { return m_running; }
+    double timeScale() const { return m_timeScale; }
+    bool slowerThanRealTime() const { return m_slow; }
+    /// Steps per second of wall time, over the last second.
+    double stepsPerSecond() const { return m_stepsPerSecond; }
+    /// Simulated seconds per wall second while running, over the last whole second since
+    /// play was pressed; nothing before that second has passed.
+    std::optional<double> realTimeFactor() const { return m_realTimeFactor; }
+    /// Wall time of the last frame, and the part of it spent in physics [ms].
+    double frameMilliseconds() const { return m_frameMs; }
+    double physicsMilliseconds() const { return m_physicsMs; }
+    /// Records the wall time of the next `frames` frames (from one frame to the next, drawing
+    /// included) and the physics part of each, then emits framesMeasured (rigidlab
+    /// --measure-frames).
+    void measureFrames(int frames);
+    /// Relative energy drift since the start, the numerical error alone: what contacts, drag
+    /// and dampers took is added back [%].
+    double driftPercent() const;
+    /// The scene's energy scale: |E0|, or another scale when E0 is near 0 [J]. Energies far
+    /// below it are rounding, not physics.
+    double energyScale() const { return m_energyReference.scale; }
+    /// Energy taken since the start by contacts (bounces, friction), drag and dampers [J].
+    double dissipated() const;
+
+    /// The body pose to draw: between the last two steps, by how far the clock is into the next.
+    Pose drawPose(physics::BodyId id) const;
+
+    // Time travel.
+    long long earliestStep() const { return m_history.earliest(); }
+    /// The most the time-travel snapshots may take [bytes] (96 MiB unless set).
+    void setHistoryBudget(std::size_t bytes) { m_history.setBudget(bytes); }
+    long long latestStep() const { return m_history.latest(); }
+    /// The time of earliestStep() [s]: the plots keep their points from there.
+    double earliestTime() const { return m_history.earliestTime(); }
+    long long currentStep() const { return m_world.stepCount(); }
+
+    // Dragging a body: a stiff, critically damped spring from a point of the body to the
+    // cursor, applied through the seed's force accumulator, so that the physics stays physical
+    // and a release throws the body with the velocity it has.
+    void grab(physics::BodyId id, const physics::Vec2& worldPoint);
+    void dragTo(const physics::Vec2& worldPoint);
+    void release();
+    std::optional<physics::BodyId> grabbed() const
+    {
+        return m_grab ? std::optional(m_grab->body) : std::nullopt;
+    }
+    /// The grab spring's two ends for drawing, when dragging.
+    bool grabLine(physics::Vec2& from, physics::Vec2& to) const;
+
+public slots:
+    void setRunning(bool running);
+    void toggleRunning() { setRunning(!m_running); }
+    void stepForward();
+    void stepBack();
+    /// Goes to any step in [earliestStep, latestStep]; running stops.
+    void seek(long long step);
+    void reset();
+    void setTimeScale(double scale);
+    void setDt(double dt);
+    void setIntegrator(physics::IntegratorKind kind);
+    void setSolver(physics::SolverKind kind);
+    void setIterations(int iterations);
+    void setRestitution(double e);
+    void setFriction(double mu);
+    void setGravityEnabled(bool on);
+    void setBodyMaterial(physics::BodyId id, double restitution, double friction);
+    /// Gives a dynamic body a new mass [kg] within limits::kMass (World::setBodyMass: the
+    /// inertia scales with it). Anything else changes nothing.
+    void setBodyMass(physics::BodyId id, double mass);
+    /// Turns a body about its centre of mass by `radians` (a teaching aid: it is moved, not
+    /// pushed, so the future branches from here).
+    void rotateBody(physics::BodyId id, double radians);
+    /// Advances the clock by the wall time since the last frame (the frame timer calls it).
+    void advanceFrame();
+
+signals:
+    void sceneLoaded();
+    /// The world changed (steps taken, a seek, a reset or an edit).
+    void worldChanged();
+    void runningChanged(bool running);
+    void settingsChanged();
+    /// A setting changed mid-run: the plots draw a mark at t.
+    void marked(double t, const QString& label);
+    /// A frame of the running clock is done (advanceFrame): the plots drain after it.
+    void frameAdvanced();
+    /// The world went back to time t: the plots drop what comes after.
+    void rewound(double t);
+    /// Samples were cleared (new scene, reset).
+    void samplesCleared();
+    /// measureFrames() is done: each frame's wall time and physics time [ms].
+    void framesMeasured(const std::vector<double>& frameMs, const std::vector<double>& physicsMs);
+
+private:
+    void doStep();
+    void pushSample();
+    void afterEdit(const QString& mark);
+    void resetClock();
+    void resetVariants();
+    template <typename Fn> void forEachWorld(Fn&& fn);
+
+    lessons::Scene m_scene;
+    QString m_path;
+    physics::World m_world;
+    physics::World m_worldStart; ///< as loaded, for reset
+    std::vector<Pose> m_previousPoses;
+    History m_history;
+    SampleBuffer m_samples;
+    EnergyReference m_energyReference; ///< what the main world's drift is measured against
+    double m_lastSampleTime = -1.0;
+    physics::Vec2 m_sceneGravity = physics::Vec2::Zero();
+    std::vector<physics::World> m_variants;
+    std::vector<physics::World> m_variantStarts; ///< to rebuild them on reset and seek
+    std::vector<EnergyReference> m_variantReferences;
+    QStringList m_variantLabels;
+    physics::Vec2 m_variantOffset = physics::Vec2::Zero();
+    lessons::Measurements m_measurements;
+    std::vector<lessons::Measure> m_watched;
+
+    QTimer m_frameTimer;
+    QElapsedTimer m_wall;
+    double m_accumulator = 0.0; ///< simulated time owed to the clock [s]
+    double m_timeScale = 1.0;
+    bool m_running = false;
+    bool m_slow = false;
+    double m_frameMs = 0.0, m_physicsMs = 0.0, m_stepsPerSecond = 0.0;
+    int m_measureFrames = 0; ///< frames still to record, see measureFrames()
+    std::vector<double> m_measuredFrameMs, m_measuredPhysicsMs;
+    long long m_stepsThisSecond = 0;
+    double m_simulatedThisSecond = 0.0; ///< simulated time the clock ran since m_rateClock [s]
+    std::optional<double> m_realTimeFactor;
+    QElapsedTimer m_rateClock;
+
+    struct Grab {
+        physics::BodyId body = -1;
+        physics::Vec2 localPoint = physics::Vec2::Zero(); ///< in the body's origin frame [m]
+        physics::Vec2 target = physics::Vec2::Zero();     ///< the cursor [m]
+    };
+    std::optional<Grab> m_grab;
+};
+
+} // namespace rigidlab::ui

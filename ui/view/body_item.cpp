@@ -1,0 +1,113 @@
+#include "view/body_item.h"
+
+#include "common/theme.h"
+
+#include <QPainter>
+
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace rigidlab::ui {
+
+QColor bodyColor(int index)
+{
+    static const std::array<QColor, 8> kPalette{QColor(0x4e, 0x79, 0xa7), QColor(0xf2, 0x8e, 0x2b),
+                                                QColor(0x59, 0xa1, 0x4f), QColor(0xe1, 0x57, 0x59),
+                                                QColor(0x76, 0xb7, 0xb2), QColor(0xed, 0xc9, 0x48),
+                                                QColor(0xb0, 0x7a, 0xa1), QColor(0x9c, 0x75, 0x5f)};
+    return kPalette[static_cast<std::size_t>(index) % kPalette.size()];
+}
+
+BodyItem::BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fill)
+    : m_bodyId(bodyId), m_kind(kind), m_fill(fill)
+{
+    if (shape.type == physics::ShapeType::Circle) {
+        const auto& c = shape.circle;
+        const QPointF centre(c.center.x(), c.center.y());
+        m_path.addEllipse(centre, c.radius, c.radius);
+        m_circle = QRectF(centre.x() - c.radius, centre.y() - c.radius, 2 * c.radius, 2 * c.radius);
+        m_radiusLine = QLineF(centre, centre + QPointF(c.radius, 0));
+    } else {
+        QPolygonF poly;
+        for (const auto& v : shape.polygon.vertices)
+            poly << QPointF(v.x(), v.y());
+        m_path.addPolygon(poly);
+        m_path.closeSubpath();
+        m_polygon = poly;
+    }
+    setAcceptHoverEvents(false);
+    setZValue(kind == 1 ? 0 : 1);
+}
+
+void BodyItem::setPose(double x, double y, double angle)
+{
+    setPos(x, y);
+    // The view flips y, so a positive rotation here turns counter-clockwise on screen.
+    setRotation(angle * 180.0 / std::numbers::pi);
+}
+
+void BodyItem::setSelectedBody(bool selected)
+{
+    if (selected != m_selected) {
+        m_selected = selected;
+        update();
+    }
+}
+
+QRectF BodyItem::boundingRect() const
+{
+    // Cosmetic pens are a few pixels wide whatever the zoom; a little margin in metres
+    // would not scale, so the view repaints with a full-viewport update instead.
+    return m_path.boundingRect();
+}
+
+QPainterPath BodyItem::shape() const
+{
+    return m_path;
+}
+
+void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
+{
+    painter->setRenderHint(QPainter::Antialiasing, m_antialiased);
+    QPen pen(m_selected ? QColor(20, 20, 20) : m_fill.darker(160),
+             theme::lineWidth(m_selected ? 3.0 : 1.0));
+    pen.setCosmetic(true);
+    painter->setPen(pen);
+    if (m_kind == 1) {
+        // Static bodies: grey with hatching, so they read as fixed ground.
+        painter->setBrush(QColor(0xb8, 0xb8, 0xb8));
+        painter->drawPath(m_path);
+        QBrush hatch(QColor(0x80, 0x80, 0x80), Qt::BDiagPattern);
+        hatch.setTransform(QTransform::fromScale(0.02, 0.02));
+        painter->setBrush(hatch);
+        painter->drawPath(m_path);
+    } else if (m_kind == 3) {
+        // A ghost: its colour's outline over a faint fill, so that the bodies it overlaps
+        // stay visible.
+        QPen outline(m_fill, theme::lineWidth(2.5));
+        outline.setCosmetic(true);
+        painter->setPen(outline);
+        QColor fill = m_fill;
+        fill.setAlpha(60);
+        painter->setBrush(fill);
+        painter->drawPath(m_path);
+    } else {
+        QColor fill = m_fill;
+        if (m_kind == 2)
+            fill.setAlpha(120); // kinematic: see-through
+        painter->setBrush(fill);
+        if (m_polygon.isEmpty())
+            painter->drawEllipse(m_circle);
+        else
+            painter->drawPolygon(m_polygon);
+    }
+    if (!m_radiusLine.isNull()) {
+        QPen line(m_fill.darker(220), theme::lineWidth(2.0));
+        line.setCosmetic(true);
+        painter->setPen(line);
+        painter->drawLine(m_radiusLine);
+    }
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,234 @@
+#include "view/overlays.h"
+
+#include "common/theme.h"
+
+#include "simulation/simulation_controller.h"
+
+#include <QPainter>
+#include <QStyleOptionGraphicsItem>
+
+#include <cmath>
+
+namespace rigidlab::ui {
+
+namespace {
+
+constexpr std::size_t kTrailLength = 600;      // points per body
+constexpr double kVelocityArrowSeconds = 0.25; // an arrow shows the distance covered in this
+
+QPointF toQt(const physics::Vec2& v)
+{
+    return {v.x(), v.y()};
+}
+
+QPen cosmeticPen(QColor c, double width, Qt::PenStyle style = Qt::SolidLine)
+{
+    QPen p(c, theme::lineWidth(width), style);
+    p.setCosmetic(true);
+    return p;
+}
+
+/// An arrow from a to b, its head `head` metres long.
+void drawArrow(QPainter* p, QPointF a, QPointF b, double head)
+{
+    p->drawLine(a, b);
+    const QPointF d = b - a;
+    const double len = std::hypot(d.x(), d.y());
+    if (len < 1e-9)
+        return;
+    const QPointF u = d / len, n(-u.y(), u.x());
+    const double h = std::min(head, 0.4 * len);
+    p->drawLine(b, b - h * u + 0.5 * h * n);
+    p->drawLine(b, b - h * u - 0.5 * h * n);
+}
+
+} // namespace
+
+OverlayItem::OverlayItem(const SimulationController& controller)
+    : m_controller(controller), m_bounds(-1e5, -1e5, 2e5, 2e5)
+{
+    setZValue(10);
+    setAcceptedMouseButtons(Qt::NoButton);
+}
+
+void OverlayItem::setEnabled(Overlay overlay, bool on)
+{
+    m_on[static_cast<int>(overlay)] = on;
+    if (overlay == Overlay::Trails && !on)
+        clearTrails();
+    update();
+}
+
+bool OverlayItem::velocityArrowShown(const physics::Vec2& velocity, double metresPerPixel)
+{
+    const double lengthPx = velocity.norm() * kVelocityArrowSeconds / metresPerPixel;
+    return std::isfinite(lengthPx) && lengthPx >= kMinArrowPixels;
+}
+
+void OverlayItem::clearTrails()
+{
+    m_trails.clear();
+    update();
+}
+
+void OverlayItem::refresh()
+{
+    if (isEnabled(Overlay::Trails)) {
+        const auto& bodies = m_controller.world().bodies();
+        m_trails.resize(bodies.size());
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            if (!bodies[i].isDynamic())
+                continue;
+            const QPointF p = toQt(bodies[i].position);
+            auto& trail = m_trails[i];
+            if (trail.empty() || trail.back() != p)
+                trail.push_back(p);
+            while (trail.size() > kTrailLength)
+                trail.pop_front();
+        }
+    }
+    update();
+}
+
+QRectF OverlayItem::boundingRect() const
+{
+    return m_bounds;
+}
+
+void OverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*)
+{
+    const physics::World& world = m_controller.world();
+    const auto& bodies = world.bodies();
+    // Metres per screen pixel, to size markers in pixels.
+    const double px = 1.0 / std::max(1e-9, std::abs(p->worldTransform().m11()));
+    p->setRenderHint(QPainter::Antialiasing);
+
+    if (isEnabled(Overlay::Trails)) {
+        p->setPen(cosmeticPen(QColor(90, 90, 160, 150), 1.5));
+        for (const auto& trail : m_trails) {
+            if (trail.size() < 2)
+                continue;
+            QPolygonF line(trail.begin(), trail.end());
+            p->drawPolyline(line);
+        }
+    }
+    if (isEnabled(Overlay::BoundingBoxes)) {
+        p->setPen(cosmeticPen(QColor(120, 120, 120), 1.0, Qt::DashLine));
+        p->setBrush(Qt::NoBrush);
+        for (const physics::Body& b : bodies) {
+            const physics::Transform xf = b.transform();
+            QRectF box;
+            if (b.shape.type == physics::ShapeType::Circle) {
+                const QPointF c = toQt(xf.apply(b.shape.circle.center));
+                const double r = b.shape.circle.radius;
+                box = QRectF(c - QPointF(r, r), c + QPointF(r, r));
+            } else {
+                QPolygonF poly;
+                for (const auto& v : b.shape.polygon.vertices)
+                    poly << toQt(xf.apply(v));
+                box = poly.boundingRect();
+            }
+            p->drawRect(box);
+        }
+    }
+    if (isEnabled(Overlay::SpringsJoints)) {
+        auto anchor = [&](physics::BodyId id, const physics::Vec2& a) {
+            return id == physics::kWorld ? toQt(a) : toQt(world.body(id).transform().apply(a));
+        };
+        // The compared worlds' joints too, where their ghosts are drawn.
+        for (int v = 0; v < m_controller.variantCount(); ++v) {
+            const physics::World& vw = m_controller.variant(v);
+            const physics::Vec2 shift = (v + 1) * m_controller.variantOffset();
+            p->setPen(cosmeticPen(QColor(120, 120, 120), 1.5));
+            for (const physics::PinJointDef& j : vw.joints()) {
+                auto end = [&](physics::BodyId id, const physics::Vec2& a) {
+                    return toQt((id == physics::kWorld ? a : vw.body(id).transform().apply(a)) +
+                                shift);
+                };
+                const QPointF pin = end(j.a, j.anchorA);
+                if (j.a != physics::kWorld)
+                    p->drawLine(pin, toQt(vw.body(j.a).position + shift));
+                p->drawEllipse(pin, 3 * px, 3 * px);
+            }
+            for (const physics::SpringDef& sp : vw.springs()) {
+                auto end = [&](physics::BodyId id, const physics::Vec2& a) {
+                    return toQt((id == physics::kWorld ? a : vw.body(id).transform().apply(a)) +
+                                shift);
+                };
+                p->drawLine(end(sp.a, sp.anchorA), end(sp.b, sp.anchorB));
+            }
+        }
+        p->setPen(cosmeticPen(QColor(60, 60, 60), 1.5));
+        for (const physics::SpringDef& s : world.springs()) {
+            // A zigzag with a fixed number of turns between the anchors.
+            const QPointF a = anchor(s.a, s.anchorA), b = anchor(s.b, s.anchorB);
+            const QPointF d = b - a;
+            const double len = std::hypot(d.x(), d.y());
+            if (len < 1e-9)
+                continue;
+            const QPointF n(-d.y() / len, d.x() / len);
+            const double amp = std::min(0.08 * len, 12 * px) + 4 * px;
+            QPolygonF zig;
+            zig << a;
+            constexpr int kTurns = 12;
+            for (int i = 1; i < 2 * kTurns; ++i)
+                zig << a + d * (i / (2.0 * kTurns)) + n * (i % 2 ? amp : -amp);
+            zig << b;
+            p->drawPolyline(zig);
+        }
+        for (const physics::PinJointDef& j : world.joints()) {
+            const QPointF pin = anchor(j.a, j.anchorA);
+            p->setPen(cosmeticPen(QColor(40, 40, 40), 2.0));
+            if (j.a != physics::kWorld)
+                p->drawLine(pin, toQt(world.body(j.a).position));
+            if (j.b != physics::kWorld)
+                p->drawLine(pin, toQt(world.body(j.b).position));
+            p->setBrush(Qt::white);
+            p->drawEllipse(pin, 4 * px, 4 * px);
+        }
+        physics::Vec2 from, to;
+        if (m_controller.grabLine(from, to)) {
+            p->setPen(cosmeticPen(QColor(200, 40, 40), 2.0, Qt::DashLine));
+            p->drawLine(toQt(from), toQt(to));
+        }
+    }
+    if (isEnabled(Overlay::CentresOfMass)) {
+        p->setPen(cosmeticPen(Qt::black, 1.5));
+        for (const physics::Body& b : bodies) {
+            if (!b.isDynamic())
+                continue;
+            // The usual quartered disc.
+            const QPointF c = toQt(b.position);
+            const double r = 5 * px;
+            p->setBrush(Qt::white);
+            p->drawEllipse(c, r, r);
+            p->setBrush(Qt::black);
+            const QRectF box(c - QPointF(r, r), c + QPointF(r, r));
+            p->drawPie(box, 0, 90 * 16);
+            p->drawPie(box, 180 * 16, 90 * 16);
+        }
+    }
+    if (isEnabled(Overlay::Velocities)) {
+        p->setPen(cosmeticPen(QColor(0, 110, 200), 2.0));
+        for (const physics::Body& b : bodies) {
+            if (!b.moves() || !velocityArrowShown(b.velocity, px))
+                continue;
+            const QPointF c = toQt(b.position);
+            drawArrow(p, c, c + toQt(b.velocity) * kVelocityArrowSeconds, 10 * px);
+        }
+    }
+    if (isEnabled(Overlay::Contacts)) {
+        for (const physics::Contact& c : world.contacts()) {
+            for (int i = 0; i < c.manifold.pointCount; ++i) {
+                const auto& cp = c.manifold.points[static_cast<std::size_t>(i)];
+                const QPointF pt = toQt(cp.point);
+                p->setPen(cosmeticPen(QColor(200, 30, 30), 2.0));
+                drawArrow(p, pt, pt + toQt(c.manifold.normal) * (30 * px), 8 * px);
+                p->setBrush(QColor(200, 30, 30));
+                p->drawEllipse(pt, 3.5 * px, 3.5 * px);
+            }
+        }
+    }
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,111 @@
+#pragma once
+// The central view: the world drawn with y up, metres mapped to pixels. Pan by dragging
+// empty space or with the middle button, zoom with the wheel around the cursor, fit the
+// scene on demand. A left press on a dynamic body grabs it (a spring to the cursor); a click
+// selects a body for the inspector.
+
+#include "view/overlays.h"
+
+#include <QGraphicsView>
+
+#include <functional>
+#include <vector>
+
+namespace rigidlab::ui {
+
+class BodyItem;
+class SimulationController;
+
+class WorldView : public QGraphicsView {
+    Q_OBJECT
+public:
+    explicit WorldView(SimulationController& controller, QWidget* parent = nullptr);
+
+    OverlayItem& overlays() { return *m_overlays; }
+    /// The item drawing body `id` (for tests).
+    const BodyItem* itemFor(int id) const;
+    /// The items drawing compared world `variant` (index into the controller's variants),
+    /// in body order (for tests).
+    std::vector<const BodyItem*> ghostItems(int variant) const;
+    int selectedBody() const { return m_selected; }
+    /// Pixels per metre now.
+    double zoom() const { return transform().m11(); }
+
+    /// The worlds the legend names (0 when nothing is compared): 0 the main one, then the
+    /// compared ones in order.
+    int worldCount() const;
+    /// The legend's line for a world: its name and how it is drawn, and, once it stopped,
+    /// when and why (the ghost also gets a label of its own).
+    QString legendLine(int world) const;
+    /// Whether that world stopped with a diagnosis.
+    bool stoppedWorld(int world) const;
+    /// Where the legend's lines are drawn, one for each world, in viewport pixels.
+    std::vector<QRect> legendLayout() const;
+    /// Where the "… stopped" labels beside the stopped ghosts are drawn, in the order of the
+    /// compared worlds, in viewport pixels; they never overlap.
+    std::vector<QRect> stoppedLabelRects() const;
+
+    /// Shows `worldRect` [m] in the whole viewport with `marginPx` pixels to spare on each
+    /// side, and keeps it shown on resize (as Fit scene does) until the user pans or zooms.
+    void fitRect(QRectF worldRect, double marginPx);
+    /// More for Fit scene to show besides the bodies: a panel's drawing over the world, in
+    /// world coordinates [m] (an empty rect when it draws nothing).
+    void setFitExtra(std::function<QRectF()> extra) { m_fitExtra = std::move(extra); }
+
+public slots:
+    void fitScene();
+    void rebuild();
+    void syncPoses();
+    void selectBody(int id);
+
+signals:
+    void bodySelected(int id);
+
+protected:
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void drawBackground(QPainter* painter, const QRectF& rect) override;
+    void drawForeground(QPainter* painter, const QRectF& rect) override;
+    void resizeEvent(QResizeEvent* event) override;
+
+private:
+    physics::Vec2 toWorld(const QPoint& viewPos) const;
+    /// Everything the scene shows: bodies, spring and joint anchors [m].
+    QRectF contentRect() const;
+    /// Shows `box` (grown by a margin) in the whole viewport.
+    void showRect(QRectF box);
+    void setZoom(double pixelsPerMetre);
+    QFont legendFont() const;
+    /// The legend's height from the top of the view [px], 0 without one.
+    int legendHeight() const;
+    /// How many worlds (the main one and the compared ones) stopped.
+    int stoppedCount() const;
+    /// The item drawing compared world `variant`'s first body, or nullptr.
+    const BodyItem* ghostOf(int variant) const;
+    QString stoppedLabel(int variant) const;
+
+    SimulationController& m_controller;
+    QGraphicsScene* m_scene;
+    OverlayItem* m_overlays;
+    std::vector<BodyItem*> m_items; ///< indexed by body id
+    struct Ghost {
+        int variant = 0; ///< index into the controller's variants
+        int body = 0;
+        BodyItem* item = nullptr;
+    };
+    std::vector<Ghost> m_ghosts;
+    int m_selected = -1;
+    bool m_panning = false;
+    bool m_autoFit = true;    ///< fit the scene on resize until the user pans or zooms
+    QRectF m_fitted;          ///< what auto-fit shows; it widens to follow bodies, up to a limit
+    QRectF m_fitLimit;        ///< auto-fit never widens beyond this
+    QRectF m_startFit;        ///< what the last fit showed before any widening
+    int m_stoppedCount = 0;   ///< worlds stopped when auto-fit last looked
+    int m_legendReserved = 0; ///< the legend's height the last fit kept free [px]
+    QPoint m_lastMouse;
+    std::function<QRectF()> m_fitExtra; ///< see setFitExtra
+};
+
+} // namespace rigidlab::ui

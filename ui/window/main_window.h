@@ -1,0 +1,189 @@
+#pragma once
+// The lab window: the world view in the middle; controls, inspector and plots in docks;
+// a timeline for time travel; menus, a toolbar and a status bar.
+
+#include "view/overlays.h"
+
+#include <QFont>
+#include <QMainWindow>
+#include <QMap>
+#include <QPalette>
+#include <QPointer>
+#include <QString>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+class QAction;
+class QDockWidget;
+class QLabel;
+class QMenu;
+class QSettings;
+class QSlider;
+
+namespace rigidlab::lessons {
+struct Lesson;
+}
+
+namespace rigidlab::ui {
+
+class BouncePanel;
+class CollisionPanel;
+class ControlPanel;
+class InspectorPanel;
+class LessonPlayer;
+class SatPanel;
+class PlotWidget;
+class SimulationController;
+class WorldView;
+
+class MainWindow : public QMainWindow {
+    Q_OBJECT
+public:
+    explicit MainWindow(QWidget* parent = nullptr);
+    ~MainWindow() override;
+
+    /// Opens a scene file. On an error the current scene stays and the message is shown
+    /// (in a dialog unless `quiet`); returns the error, empty on success.
+    QString openScene(const QString& path, bool quiet = false);
+    /// Folder with the shipped scenes.
+    static QString scenesFolder();
+    /// Folder with the shipped lessons.
+    static QString lessonsFolder();
+    /// Opens a lesson at its first step; returns the error, empty on success.
+    QString openLesson(const QString& path, bool quiet = false);
+    LessonPlayer& lessonPlayer() { return *m_player; }
+    SatPanel& satPanel() { return *m_sat; }
+    BouncePanel& bouncePanel() { return *m_bounces; }
+    CollisionPanel& collisionPanel() { return *m_collision; }
+    /// The first plot comparing worlds side by side in this lesson step, or nullptr.
+    PlotWidget* comparePlot() const
+    {
+        return m_comparePlots.empty() ? nullptr : m_comparePlots.front();
+    }
+    /// Every plot comparing worlds in this step (compare-energy, compare-drift), in the order
+    /// the step names them.
+    const std::vector<PlotWidget*>& comparePlots() const { return m_comparePlots; }
+    /// The dock holding a panel or plot, by its lesson name ("energy", "sat", ...).
+    QDockWidget* dock(const QString& name) const;
+    /// Writes the current step's plots (PNG, PDF, SVG, CSV) into a folder; returns errors.
+    QStringList exportStepPlots(const QString& folder);
+
+    SimulationController& controller() { return *m_controller; }
+    WorldView& view() { return *m_view; }
+    ControlPanel& controls() { return *m_controls; }
+    InspectorPanel& inspector() { return *m_inspector; }
+    PlotWidget* plot(int index) const { return m_plots[static_cast<size_t>(index)]; }
+    static constexpr int kPlotCount = 3;
+    QString lastError() const { return m_lastError; }
+    QAction* overlayAction(Overlay overlay) const
+    {
+        return m_overlayActions[static_cast<size_t>(overlay)];
+    }
+    /// Help › Controls (rich text), from the table that registers the keys (shortcuts.h).
+    QString controlsHelpText() const;
+    /// What the status bar shows now, its visible parts joined.
+    QString statusText() const;
+    /// View › Status details: steps/s, frame and stage timings in the status bar.
+    QAction* statusDetailsAction() const { return m_detailsAction; }
+
+    /// Sizes the window for a screen's available area (never larger) and arranges the docks
+    /// for it: on a small screen the plots share a tabbed dock (main_window_layout.cpp).
+    void fitToScreen(const QRect& available);
+    /// Whether the docks are arranged for a small screen.
+    bool compactLayout() const { return m_compact; }
+    /// Presentation mode (View › Presentation, F11, rigidlab --present): full screen, larger
+    /// text, thicker lines, a high-contrast palette, no developer details. Leaving it
+    /// restores the layout.
+    void setPresentation(bool on);
+    bool presentation() const { return m_presentation; }
+    /// Stage timings and steps per second in the status bar, where View › Status details asks
+    /// for them and presentation mode does not hide them.
+    void setDetailsShown(bool shown);
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
+    void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
+private slots:
+    void openDialog();
+    void openLessonDialog();
+    void applyLessonStep(const rigidlab::lessons::Lesson& lesson, int step);
+    void leaveLesson();
+    /// Hides what the lesson step's questions still hold back, shows what they released.
+    void applyHeldBack(const QStringList& held);
+    void updateStatus();
+    void updateTimeline();
+
+private:
+    void buildActions();
+    void buildMenus();
+    void buildStatusBar();
+    void buildDocks();
+    void addRecent(const QString& path);
+    void rebuildRecentMenu();
+    void exportPlotDialog(PlotWidget* plot, const QString& format);
+    void restoreSettings();
+    /// Connects a plot to the controller's samples and clock.
+    void followController(PlotWidget* plot);
+    QRect availableScreenArea() const;
+    /// Stacked plots on a roomy `screen`, tabbed on a small one; side columns for the window.
+    void arrangeDocks(const QSize& screen, int windowWidth);
+    /// Side columns no wider than their share of `windowWidth`: the world keeps half.
+    void fitSideColumns(int windowWidth);
+    void saveLayout(QSettings& settings) const;
+    void restoreLayout(const QSettings& settings);
+
+    SimulationController* m_controller;
+    WorldView* m_view;
+    ControlPanel* m_controls;
+    InspectorPanel* m_inspector;
+    LessonPlayer* m_player;
+    SatPanel* m_sat;
+    BouncePanel* m_bounces;
+    CollisionPanel* m_collision;
+    std::vector<PlotWidget*> m_comparePlots; ///< in m_compareDock
+    QDockWidget* m_compareDock = nullptr;
+    QMap<QString, QDockWidget*> m_docks;
+    bool m_inLesson = false;
+    bool m_closePending = false; ///< asked to close while a dialog's answer was pending
+    bool m_runHeld = false;      ///< a question keeps the scene from running until it is answered
+    std::array<PlotWidget*, kPlotCount> m_plots{};
+    QSlider* m_timeline = nullptr;
+    QLabel* m_timeLabel = nullptr;
+    QLabel* m_statusTime = nullptr;
+    QLabel* m_statusRate = nullptr;
+    QLabel* m_statusDrift = nullptr;
+    QLabel* m_statusSlow = nullptr;
+    QLabel* m_statusDetails = nullptr;
+    QAction* m_detailsAction = nullptr;
+    QMenu* m_recentMenu = nullptr;
+    QMenu* m_scenesMenu = nullptr;
+    QMenu* m_viewMenu = nullptr;
+    QAction* m_playAction = nullptr;
+    QAction* m_stepAction = nullptr;
+    QAction* m_backAction = nullptr;
+    QAction* m_resetAction = nullptr;
+    QAction* m_fitAction = nullptr;
+    std::array<QAction*, kOverlayCount> m_overlayActions{};
+    QList<QAction*> m_rotateActions;
+    QString m_lastError;
+    QString m_lastFolder;
+
+    // Layout and presentation mode (main_window_layout.cpp).
+    QRect m_screenArea;     ///< the available area the layout was made for
+    bool m_compact = false; ///< plots tabbed for a small screen
+    bool m_presentation = false;
+    bool m_restoreStatePending = false; ///< docks to put back once full screen has ended
+    bool m_normalWasMaximized = false;
+    QByteArray m_normalGeometry; ///< before presentation mode
+    QByteArray m_normalState;
+    QFont m_normalFont;
+    std::vector<std::pair<QPointer<QWidget>, QFont>> m_explicitFonts; ///< before presentation
+    QPalette m_normalPalette;
+    QAction* m_presentAction = nullptr;
+};
+
+} // namespace rigidlab::ui

@@ -1,0 +1,213 @@
+#include "window/screenshots.h"
+
+#include "lesson_player/lesson_player.h"
+#include "plots/plot_widget.h"
+#include "simulation/simulation_controller.h"
+#include "window/main_window.h"
+
+#include "format/atomic_file.h"
+#include "format/lesson.h"
+
+#include <QBuffer>
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QImage>
+#include <QLayout>
+#include <QPixmap>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTemporaryDir>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// The translation context of the screenshot texts.
+struct Screenshots {
+    Q_DECLARE_TR_FUNCTIONS(Screenshots)
+};
+
+/// Runs the world for `seconds` of simulated time, one step at a time: the same steps on every
+/// run, whatever the machine's speed (the window's clock is not used).
+void runFor(SimulationController& controller, double seconds)
+{
+    controller.setRunning(false);
+    const double dt = controller.world().def().dt;
+    const long long steps = std::llround(seconds / dt);
+    for (long long i = 0; i < steps; ++i)
+        controller.stepForward();
+}
+
+/// Lets the window catch up: plots take their samples and replot, the status bar and the
+/// layout follow, queued paints happen.
+void settle(MainWindow& window)
+{
+    for (int round = 0; round < 3; ++round) {
+        for (PlotWidget* plot : window.findChildren<PlotWidget*>())
+            plot->drain();
+        QMetaObject::invokeMethod(&window, "updateStatus");
+        QCoreApplication::processEvents();
+    }
+}
+
+/// Grabs the window as `size` device pixels and writes it as a PNG, atomically.
+QString shoot(MainWindow& window, const QSize& size, const QString& path)
+{
+    settle(window);
+    QImage image = window.grab().toImage();
+    // Window sizes are logical pixels; with a scale factor the grab has more device pixels.
+    if (image.size() != size)
+        image = image.copy(QRect(QPoint(0, 0), size));
+    QByteArray bytes;
+    QBuffer buffer(&bytes);
+    buffer.open(QIODevice::WriteOnly);
+    if (!image.save(&buffer, "PNG"))
+        return Screenshots::tr("cannot encode %1 as PNG").arg(path);
+    return lessons::writeFileAtomically(path, bytes);
+}
+
+/// Resizes the window so that it covers `size` device pixels. A window whose docks cannot be
+/// that small is made so anyway (its content is clipped, as it would be on such a screen), and
+/// the returned note says so.
+QString fitWindow(MainWindow& window, const QSize& size)
+{
+    const qreal ratio = window.devicePixelRatioF();
+    const QSize logical(static_cast<int>(std::ceil(size.width() / ratio)),
+                        static_cast<int>(std::ceil(size.height() / ratio)));
+    window.resize(logical);
+    QCoreApplication::processEvents();
+    if (window.size() == logical)
+        return QString();
+    const QSize minimum = window.minimumSizeHint();
+    window.layout()->setSizeConstraint(QLayout::SetNoConstraint);
+    window.setMinimumSize(0, 0);
+    window.resize(logical);
+    QCoreApplication::processEvents();
+    return Screenshots::tr("the window needs at least %1×%2 (logical pixels) and was made "
+                           "%3×%4: its content is clipped")
+        .arg(minimum.width())
+        .arg(minimum.height())
+        .arg(logical.width())
+        .arg(logical.height());
+}
+
+/// Points QSettings at a folder of its own while it lives, then back at the default (on Unix
+/// the XDG config folder, which is where Qt keeps user settings unless told otherwise).
+class SettingsElsewhere {
+public:
+    explicit SettingsElsewhere(const QString& folder) { point(folder); }
+    ~SettingsElsewhere()
+    {
+        point(QStandardPaths::writableLocation(QStandardPaths::GenericConfigLocation));
+    }
+    SettingsElsewhere(const SettingsElsewhere&) = delete;
+    SettingsElsewhere& operator=(const SettingsElsewhere&) = delete;
+
+private:
+    static void point(const QString& folder)
+    {
+        QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, folder);
+        QSettings::setPath(QSettings::IniFormat, QSettings::UserScope, folder);
+    }
+};
+
+} // namespace
+
+ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
+{
+    ScreenshotResult result;
+    const QDir folder(options.folder);
+    if (!QDir().mkpath(options.folder)) {
+        result.error = Screenshots::tr("cannot create the folder %1")
+                           .arg(QDir::toNativeSeparators(options.folder));
+        return result;
+    }
+    // Settings of its own: the plain window, not the user's layout, and no recent files
+    // written into the user's settings.
+    const QTemporaryDir settingsFolder;
+    if (!settingsFolder.isValid()) {
+        result.error = Screenshots::tr("cannot create a temporary folder for the settings: %1")
+                           .arg(settingsFolder.errorString());
+        return result;
+    }
+    const SettingsElsewhere settings(settingsFolder.path());
+
+    MainWindow window;
+    // Arranged as on a screen of that size (a projector at 1024×768 tabs its plots).
+    window.fitToScreen(QRect(QPoint(0, 0), options.size));
+    if (options.setUp)
+        options.setUp(window);
+    window.show();
+    if (const QString note = fitWindow(window, options.size); !note.isEmpty())
+        result.notes << note;
+
+    QStringList index;
+    const auto write = [&](const QString& name, const QString& what) {
+        const QString error = shoot(window, options.size, folder.filePath(name));
+        if (!error.isEmpty()) {
+            result.error = error;
+            return false;
+        }
+        result.files << name;
+        index << name + QLatin1Char('\t') + what;
+        return true;
+    };
+
+    if (options.welcome) {
+        const QString welcome =
+            QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json"));
+        if (const QString error = window.openScene(welcome, true); !error.isEmpty()) {
+            result.error = error;
+            return result;
+        }
+        runFor(window.controller(), options.welcomeSeconds);
+        if (!write(QStringLiteral("00-welcome.png"),
+                   Screenshots::tr("the welcome scene after %1 s")
+                       .arg(QString::number(options.welcomeSeconds))))
+            return result;
+    }
+
+    const QStringList lessonFiles =
+        options.lessons ? *options.lessons : window.lessonPlayer().lessonPaths();
+    for (const QString& path : lessonFiles) {
+        if (const QString error = window.openLesson(path, true); !error.isEmpty()) {
+            result.error = error;
+            return result;
+        }
+        const lessons::Lesson& lesson = *window.lessonPlayer().lesson();
+        const int count = static_cast<int>(lesson.steps.size());
+        const int shots =
+            options.maxStepsPerLesson > 0 ? std::min(count, options.maxStepsPerLesson) : count;
+        for (int i = 0; i < shots; ++i) {
+            window.lessonPlayer().goToStep(i);
+            const lessons::LessonStep& step = lesson.steps[static_cast<std::size_t>(i)];
+            runFor(window.controller(), step.exportTime);
+            const QString name = QStringLiteral("%1-%2.png")
+                                     .arg(QFileInfo(path).completeBaseName())
+                                     .arg(i + 1, 2, 10, QLatin1Char('0'));
+            if (!write(name, Screenshots::tr("%1, step %2 of %3: %4, after %5 s")
+                                 .arg(lesson.title)
+                                 .arg(i + 1)
+                                 .arg(count)
+                                 .arg(step.title, QString::number(step.exportTime))))
+                return result;
+        }
+    }
+
+    const QString indexPath = folder.filePath(QStringLiteral("index.txt"));
+    const QString error = lessons::writeFileAtomically(
+        indexPath, (index.join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8());
+    if (!error.isEmpty()) {
+        result.error = error;
+        return result;
+    }
+    result.files << QStringLiteral("index.txt");
+    result.ok = true;
+    return result;
+}
+
+} // namespace rigidlab::ui
