@@ -114,6 +114,23 @@ bool encodePng(QCustomPlot& plot, const ExportOptions& options, QByteArray& byte
     return true;
 }
 
+/// The plot drawn as vectors (PDF, SVG) at its logical size; false with `why` = `cannot`
+/// when the device refuses a painter.
+bool drawVectorized(QCustomPlot& plot, QPaintDevice& device, QSize logical, const QString& cannot,
+                    QString& why)
+{
+    QCPPainter painter;
+    if (!painter.begin(&device)) {
+        why = cannot;
+        return false;
+    }
+    painter.setMode(QCPPainter::pmVectorized);
+    painter.setMode(QCPPainter::pmNonCosmetic);
+    plot.toPainter(&painter, logical.width(), logical.height());
+    painter.end();
+    return true;
+}
+
 bool encodePdf(QCustomPlot& plot, const QString& title, const ExportOptions& options,
                QByteArray& bytes, QString& why)
 {
@@ -130,17 +147,10 @@ bool encodePdf(QCustomPlot& plot, const QString& title, const ExportOptions& opt
         QPageLayout(QPageSize(pagePoints, QPageSize::Point, QString(), QPageSize::ExactMatch),
                     QPageLayout::Portrait, QMarginsF()));
 
-    QCPPainter painter;
-    if (!painter.begin(&pdf)) {
-        why = QCoreApplication::translate("rigidlab::ui::exportPlot",
-                                          "could not start drawing the PDF");
-        return false;
-    }
-    painter.setMode(QCPPainter::pmVectorized);
-    painter.setMode(QCPPainter::pmNonCosmetic);
-    plot.toPainter(&painter, logical.width(), logical.height());
-    painter.end();
-    return true;
+    return drawVectorized(
+        plot, pdf, logical,
+        QCoreApplication::translate("rigidlab::ui::exportPlot", "could not start drawing the PDF"),
+        why);
 }
 
 bool encodeSvg(QCustomPlot& plot, const QString& title, const ExportOptions& options,
@@ -157,17 +167,10 @@ bool encodeSvg(QCustomPlot& plot, const QString& title, const ExportOptions& opt
     svg.setTitle(title);
     svg.setDescription(QStringLiteral("RigidLab plot"));
 
-    QCPPainter painter;
-    if (!painter.begin(&svg)) {
-        why = QCoreApplication::translate("rigidlab::ui::exportPlot",
-                                          "could not start drawing the SVG");
-        return false;
-    }
-    painter.setMode(QCPPainter::pmVectorized);
-    painter.setMode(QCPPainter::pmNonCosmetic);
-    plot.toPainter(&painter, logical.width(), logical.height());
-    painter.end();
-    return true;
+    return drawVectorized(
+        plot, svg, logical,
+        QCoreApplication::translate("rigidlab::ui::exportPlot", "could not start drawing the SVG"),
+        why);
 }
 
 /// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
