@@ -80,7 +80,7 @@ void World::setSleep(std::optional<bool> on)
 
 void World::wakeBody(BodyId id)
 {
-    Body& b = body(id);
+    Body& b = mutableBody(id);
     b.awake = true;
     b.sleepTime = 0.0;
 }

@@ -139,7 +139,7 @@ void World::setBodyOrigin(BodyId id, const Vec2& origin, double angle)
 {
     assert(limits::kCoordinate.contains(origin.x()) && limits::kCoordinate.contains(origin.y()) &&
            limits::kAngle.contains(angle));
-    Body& b = body(id);
+    Body& b = mutableBody(id);
     b.angle = angle;
     b.position = origin + Rotation(angle).apply(b.localCenter);
     wakeBody(id);
@@ -150,7 +150,7 @@ void World::setBodyVelocity(BodyId id, const Vec2& originVelocity, double angula
     assert(limits::kVelocity.contains(originVelocity.x()) &&
            limits::kVelocity.contains(originVelocity.y()) &&
            limits::kAngularVelocity.contains(angularVelocity));
-    Body& b = body(id);
+    Body& b = mutableBody(id);
     b.angularVelocity = angularVelocity;
     b.velocity = originVelocity + cross(angularVelocity, Vec2(b.position - b.origin()));
     wakeBody(id);
@@ -160,7 +160,7 @@ bool World::setBodyMass(BodyId id, double mass)
 {
     if (id < 0 || id >= static_cast<BodyId>(m_bodies.size()) || !(mass > 0) || !std::isfinite(mass))
         return false;
-    Body& b = body(id);
+    Body& b = mutableBody(id);
     if (!b.isDynamic() || !(b.mass > 0))
         return false;
     // I = m k² for a fixed shape: the radius of gyration k does not depend on the mass.
@@ -174,6 +174,31 @@ bool World::setBodyMass(BodyId id, double mass)
     m_energyStart.reset();
     wakeBody(id);
     return true;
+}
+
+void World::setBodyMaterial(BodyId id, double restitution, double friction)
+{
+    assert(limits::kRestitution.contains(restitution) && limits::kFriction.contains(friction));
+    Body& b = mutableBody(id);
+    b.restitution = restitution;
+    b.friction = friction;
+    wakeBody(id);
+}
+
+void World::setBodyAngle(BodyId id, double angle)
+{
+    assert(limits::kAngle.contains(angle));
+    mutableBody(id).angle = angle; // the state is held at the centre of mass: it stays
+    wakeBody(id);
+}
+
+void World::applyForce(BodyId id, const Vec2& force, double torque)
+{
+    assert(std::isfinite(force.x()) && std::isfinite(force.y()) && std::isfinite(torque));
+    Body& b = mutableBody(id);
+    b.force += force;
+    b.torque += torque;
+    wakeBody(id);
 }
 
 Vec2 World::originVelocity(BodyId id) const

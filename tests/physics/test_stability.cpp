@@ -173,7 +173,7 @@ void TestStability::divergenceDiagnosed()
     spec.stiffness = 1e7;
     spec.x0 = 0.01;
     World w = rigidlab::test::makeOscillator(IntegratorKind::Euler, 1e-3, spec);
-    w.body(0).name = "mass";
+    w.mutableBody(0).name = "mass";
     for (int i = 0; i < 10000 && !w.divergence(); ++i)
         w.step();
     QVERIFY(w.divergence());
@@ -198,9 +198,9 @@ void TestStability::divergenceDiagnosed()
 void TestStability::nonFiniteDiagnosed()
 {
     World w = rigidlab::test::makeOscillator(IntegratorKind::Verlet, 1e-3);
-    w.body(0).name = "ball";
+    w.mutableBody(0).name = "ball";
     w.step();
-    w.body(0).force = Vec2(INFINITY, 0.0);
+    w.mutableBody(0).force = Vec2(INFINITY, 0.0);
     w.step();
     QVERIFY(w.divergence());
     QCOMPARE(w.divergence()->kind, Divergence::Kind::NonFinite);

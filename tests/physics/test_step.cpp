@@ -255,14 +255,14 @@ void TestStep::sleepingIslandWakes()
     }
     for (int i = 0; i < 400; ++i) {
         if (ball >= 0)
-            world.body(ball).velocity = Vec2::Zero(); // held in the air
+            world.mutableBody(ball).velocity = Vec2::Zero(); // held in the air
         world.step();
     }
     for (BodyId id = 1; id <= 12; ++id)
         QVERIFY(!world.body(id).awake);
     const BodyId bottom = 1; // the first column: boxes 1, 7 at x = -4
     if (how == 0)
-        world.body(bottom).force = Vec2(50.0, 0.0);
+        world.mutableBody(bottom).force = Vec2(50.0, 0.0);
     else if (how == 1)
         world.wakeBody(bottom);
     // The woken body's island follows at the next step; the ball needs a second and a half.

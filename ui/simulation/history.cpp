@@ -126,10 +126,7 @@ void applyInput(physics::World& world, const UserInput& input)
         return;
     // The pulled body wakes if it was asleep (and its island with it, at this step), live and
     // in a replay alike, whatever the force.
-    world.wakeBody(input.body);
-    physics::Body& b = world.body(input.body);
-    b.force += input.force;
-    b.torque += input.torque;
+    world.applyForce(input.body, input.force, input.torque);
 }
 
 } // namespace rigidlab::ui

@@ -1,5 +1,7 @@
 #include "simulation/simulation_controller.h"
 
+#include "rigidlab/physics/limits.h"
+
 #include "common/display_names.h"
 #include "plots/step_sampler.h"
 
@@ -389,9 +391,7 @@ void SimulationController::setBodyMaterial(physics::BodyId id, double restitutio
     if (!lessons::limits::kRestitution.contains(restitution) ||
         !lessons::limits::kFriction.contains(friction))
         return;
-    physics::Body& b = m_world.body(id);
-    b.restitution = restitution;
-    b.friction = friction;
+    m_world.setBodyMaterial(id, restitution, friction);
     afterEdit(QString());
 }
 
@@ -411,8 +411,10 @@ void SimulationController::rotateBody(physics::BodyId id, double radians)
     if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
         !m_world.body(id).moves() || !std::isfinite(radians))
         return;
-    physics::Body& b = m_world.body(id);
-    b.angle += radians; // about the centre of mass, which is where the state is held
+    const double angle = m_world.body(id).angle + radians;
+    if (!physics::limits::kAngle.contains(angle))
+        return;
+    m_world.setBodyAngle(id, angle); // about the centre of mass; wakes the body
     afterEdit(QString());
 }
 

@@ -115,8 +115,11 @@ public:
 
     // State.
     const std::vector<Body>& bodies() const { return m_bodies; }
-    Body& body(BodyId id) { return m_bodies[static_cast<size_t>(id)]; }
     const Body& body(BodyId id) const { return m_bodies[static_cast<size_t>(id)]; }
+    /// A body to change field by field: for the engine's own stages and for tests that set up
+    /// a state no setter reaches (an infinite force). The window and the lessons change bodies
+    /// only through the setters below, which check their values and wake the body.
+    Body& mutableBody(BodyId id) { return m_bodies[static_cast<size_t>(id)]; }
     const std::vector<SpringDef>& springs() const { return m_springs; }
     const std::vector<PinJointDef>& joints() const { return m_joints; }
     const std::vector<Contact>& contacts() const { return m_contacts; }
@@ -131,6 +134,13 @@ public:
     /// velocities stay (momentum and energy change with the mass). Wakes the body. Returns
     /// false, changing nothing, for another kind of body or an invalid mass.
     bool setBodyMass(BodyId id, double mass);
+    /// Gives a body the restitution and friction coefficients (limits.h). Wakes it.
+    void setBodyMaterial(BodyId id, double restitution, double friction);
+    /// Turns a moving body to `angle` [rad] about its centre of mass. Wakes it.
+    void setBodyAngle(BodyId id, double angle);
+    /// Adds to a body's force and torque accumulators for the next step (the paper's
+    /// accumulators: cleared after every step), e.g. the user's pull. Wakes it.
+    void applyForce(BodyId id, const Vec2& force, double torque);
 
     double time() const { return m_time; }
     long long stepCount() const { return m_steps; }
