@@ -20,6 +20,10 @@ namespace {
 
 constexpr double kMinZoom = 2.0;     // pixels per metre
 constexpr double kMaxZoom = 20000.0; // pixels per metre
+/// The least size a moving body is drawn across [px], so that the back row sees it (larger in
+/// presentation mode); a body smaller on screen is drawn grown to it.
+constexpr double kMinBodyPx = 10.0;
+constexpr double kMinBodyPresentationPx = 14.0;
 
 } // namespace
 
@@ -88,6 +92,7 @@ void WorldView::rebuild()
                                         : bodyColor(colour++);
         auto* item = new BodyItem(static_cast<int>(i), b.shape, kind, fill);
         item->setAntialiased(bodies.size() < kManyBodies);
+        item->setMinimumRadius(minimumBodyRadius());
         m_scene->addItem(item);
         m_items.push_back(item);
     }
@@ -103,6 +108,7 @@ void WorldView::rebuild()
             auto* item = new BodyItem(static_cast<int>(i), vb[i].shape, 3, plotColor(v + 1));
             item->setZValue(vb[i].moves() ? 2 : 1.5);
             item->setAcceptedMouseButtons(Qt::NoButton);
+            item->setMinimumRadius(minimumBodyRadius());
             m_scene->addItem(item);
             m_ghosts.push_back({v, static_cast<int>(i), item});
         }
@@ -195,10 +201,11 @@ void WorldView::fitScene()
     m_fitted = contentRect();
     if (m_fitted.isEmpty())
         return;
-    // Auto-fit may later widen to follow bodies that leave, but not past 8 times the scene.
-    const QPointF c = m_fitted.center();
-    const double span = 8.0 * std::max({m_fitted.width(), m_fitted.height(), 1.0});
-    m_fitLimit = QRectF(c - QPointF(span, span) / 2, QSizeF(span, span));
+    // Auto-fit may later widen to follow bodies that swing or bounce a little outside the
+    // start, but not far: a body that leaves the scene (the cue ball of a break, a pendulum
+    // gone over the top) would shrink everything still in it to dots.
+    const double grow = std::max(0.25 * std::max(m_fitted.width(), m_fitted.height()), 0.5);
+    m_fitLimit = m_fitted.adjusted(-grow, -grow, grow, grow);
     m_startFit = m_fitted;
     m_stoppedCount = stoppedCount();
     showRect(m_fitted);
@@ -249,6 +256,22 @@ void WorldView::setZoom(double pixelsPerMetre)
 {
     const double s = std::clamp(pixelsPerMetre, kMinZoom, kMaxZoom);
     setTransform(QTransform::fromScale(s, -s));
+    applyMinimumBodySize();
+}
+
+double WorldView::minimumBodyRadius() const
+{
+    const double px = theme::presentation() ? kMinBodyPresentationPx : kMinBodyPx;
+    return 0.5 * px / zoom();
+}
+
+void WorldView::applyMinimumBodySize()
+{
+    const double r = minimumBodyRadius();
+    for (BodyItem* item : m_items)
+        item->setMinimumRadius(r);
+    for (const Ghost& g : m_ghosts)
+        g.item->setMinimumRadius(r);
 }
 
 physics::Vec2 WorldView::toWorld(const QPoint& viewPos) const
@@ -319,6 +342,7 @@ void WorldView::wheelEvent(QWheelEvent* event)
     const double factor = std::pow(1.2, steps);
     const double target = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
     scale(target / zoom(), target / zoom());
+    applyMinimumBodySize();
     event->accept();
 }
 

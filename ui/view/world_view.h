@@ -77,6 +77,9 @@ private:
     /// Shows `box` (grown by a margin) in the whole viewport.
     void showRect(QRectF box);
     void setZoom(double pixelsPerMetre);
+    /// The least half-size [m] a moving body is drawn with at this zoom (see BodyItem).
+    double minimumBodyRadius() const;
+    void applyMinimumBodySize();
     QFont legendFont() const;
     /// The legend's height from the top of the view [px], 0 without one.
     int legendHeight() const;
