@@ -184,6 +184,25 @@ void TestDrawings::ghostWorldsDrawTheirFloor()
             }
             QVERIFY2(floor, "the compared stack stands on a drawn floor");
         }
+        // Side by side, not across each other: no world's floor or wall meets another's.
+        std::vector<std::vector<QRectF>> statics(static_cast<std::size_t>(c.variantCount()) + 1);
+        for (std::size_t i = 0; i < c.world().bodies().size(); ++i)
+            if (!c.world().bodies()[i].moves())
+                statics[0].push_back(w.view().itemFor(static_cast<int>(i))->sceneBoundingRect());
+        for (int v = 0; v < c.variantCount(); ++v)
+            for (const ui::BodyItem* item : w.view().ghostItems(v))
+                if (!c.variant(v).body(item->bodyId()).moves())
+                    statics[static_cast<std::size_t>(v) + 1].push_back(item->sceneBoundingRect());
+        for (std::size_t a = 0; a < statics.size(); ++a)
+            for (std::size_t b = a + 1; b < statics.size(); ++b)
+                for (const QRectF& ra : statics[a])
+                    for (const QRectF& rb : statics[b])
+                        QVERIFY2(!ra.intersects(rb),
+                                 qPrintable(QStringLiteral("step %1: worlds %2 and %3 overlap")
+                                                .arg(s + 1)
+                                                .arg(a)
+                                                .arg(b)));
+        QVERIFY(!statics[0].empty());
         ++checked;
     }
     QVERIFY(checked > 0);
