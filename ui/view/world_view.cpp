@@ -468,9 +468,12 @@ QString WorldView::legendLine(int world) const
     const physics::World& w = world == 0 ? m_controller.world() : m_controller.variant(world - 1);
     // A stopped world gets one short line, readable from the back of the room; the numbers
     // (how far the energy grew, which body) are in legendDetail, the line's tooltip.
-    if (const auto& d = w.divergence())
-        return tr("%1 — stopped at t = %2 s: %3")
-            .arg(name, QLocale().toString(d->time, 'g', 3), divergenceShort(*d));
+    if (const auto& d = w.divergence()) {
+        const QString time = QLocale().toString(d->time, 'g', 3);
+        if (d->kind == physics::Divergence::Kind::EnergyGrowth)
+            return tr("%1 — blew up at t = %2 s").arg(name, time);
+        return tr("%1 — stopped at t = %2 s: %3").arg(name, time, divergenceShort(*d));
+    }
     return world == 0 ? tr("%1 (solid)").arg(name) : tr("%1 (outline)").arg(name);
 }
 
