@@ -64,6 +64,8 @@ private slots:
     void velocityArrowsOnlyWithALength_data();
     void velocityArrowsOnlyWithALength();
     void billiardsBallsBigAndBreakSlow();
+    void bodiesLargeEnoughAfterTheStep_data();
+    void bodiesLargeEnoughAfterTheStep();
 };
 
 void TestDrawings::errorPanelOpensOnASmallScreen()
@@ -182,6 +184,25 @@ void TestDrawings::ghostWorldsDrawTheirFloor()
             }
             QVERIFY2(floor, "the compared stack stands on a drawn floor");
         }
+        // Side by side, not across each other: no world's floor or wall meets another's.
+        std::vector<std::vector<QRectF>> statics(static_cast<std::size_t>(c.variantCount()) + 1);
+        for (std::size_t i = 0; i < c.world().bodies().size(); ++i)
+            if (!c.world().bodies()[i].moves())
+                statics[0].push_back(w.view().itemFor(static_cast<int>(i))->sceneBoundingRect());
+        for (int v = 0; v < c.variantCount(); ++v)
+            for (const ui::BodyItem* item : w.view().ghostItems(v))
+                if (!c.variant(v).body(item->bodyId()).moves())
+                    statics[static_cast<std::size_t>(v) + 1].push_back(item->sceneBoundingRect());
+        for (std::size_t a = 0; a < statics.size(); ++a)
+            for (std::size_t b = a + 1; b < statics.size(); ++b)
+                for (const QRectF& ra : statics[a])
+                    for (const QRectF& rb : statics[b])
+                        QVERIFY2(!ra.intersects(rb),
+                                 qPrintable(QStringLiteral("step %1: worlds %2 and %3 overlap")
+                                                .arg(s + 1)
+                                                .arg(a)
+                                                .arg(b)));
+        QVERIFY(!statics[0].empty());
         ++checked;
     }
     QVERIFY(checked > 0);
@@ -269,6 +290,73 @@ void TestDrawings::billiardsBallsBigAndBreakSlow()
                                 .arg(s + 1)
                                 .arg(breakTime / timeScale)));
     }
+}
+
+void TestDrawings::bodiesLargeEnoughAfterTheStep_data()
+{
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<int>("step");
+    QTest::addColumn<bool>("present");
+    // Four pendulums side by side (10 cm bobs in a scene 10 m wide) and a break whose cue
+    // balls run off: the bodies were 4 to 7 px dots.
+    QTest::newRow("energy_drift 3") << QStringLiteral("energy_drift") << 2 << false;
+    QTest::newRow("energy_drift 3, presentation") << QStringLiteral("energy_drift") << 2 << true;
+    QTest::newRow("billiards 3") << QStringLiteral("billiards_momentum") << 2 << false;
+    QTest::newRow("billiards 3, presentation") << QStringLiteral("billiards_momentum") << 2 << true;
+}
+
+void TestDrawings::bodiesLargeEnoughAfterTheStep()
+{
+    // At 1024 × 768, after the step's own time: every moving body of every world, as drawn,
+    // at least 10 px across, and most of them inside the view (only runaways may leave).
+    QFETCH(QString, name);
+    QFETCH(int, step);
+    QFETCH(bool, present);
+    MainWindow w;
+    w.fitToScreen(QRect(0, 0, 1024, 768));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QCOMPARE(w.openLesson(lesson(qPrintable(name)), true), QString());
+    if (present)
+        w.setPresentation(true);
+    w.lessonPlayer().goToStep(step);
+    ui::SimulationController& c = w.controller();
+    c.setRunning(false);
+    QCoreApplication::processEvents();
+    const double seconds =
+        w.lessonPlayer().lesson()->steps[static_cast<std::size_t>(step)].exportTime;
+    QVERIFY(seconds > 0);
+    while (c.world().time() < seconds - 1e-9)
+        c.stepForward();
+    w.view().syncPoses();
+    QCoreApplication::processEvents();
+
+    std::vector<const ui::BodyItem*> moving;
+    for (std::size_t i = 0; i < c.world().bodies().size(); ++i)
+        if (c.world().bodies()[i].moves())
+            moving.push_back(w.view().itemFor(static_cast<int>(i)));
+    for (int v = 0; v < c.variantCount(); ++v)
+        for (const ui::BodyItem* item : w.view().ghostItems(v))
+            if (c.variant(v).body(item->bodyId()).moves())
+                moving.push_back(item);
+    QVERIFY(moving.size() >= 4);
+    const double minPx = present ? 14.0 : 10.0;
+    const QRect viewport = w.view().viewport()->rect();
+    std::size_t inside = 0;
+    for (const ui::BodyItem* item : moving) {
+        QVERIFY(item);
+        const QRectF onScreen =
+            w.view().mapFromScene(item->sceneBoundingRect()).boundingRect().toRectF();
+        QVERIFY2(std::min(onScreen.width(), onScreen.height()) >= minPx - 1,
+                 qPrintable(QStringLiteral("body %1: %2 × %3 px")
+                                .arg(item->bodyId())
+                                .arg(onScreen.width())
+                                .arg(onScreen.height())));
+        inside += viewport.contains(onScreen.center().toPoint()) ? 1 : 0;
+    }
+    QVERIFY2(
+        inside * 10 >= moving.size() * 8,
+        qPrintable(QStringLiteral("%1 of %2 bodies in the view").arg(inside).arg(moving.size())));
 }
 
 RIGIDLAB_TEST_MAIN(TestDrawings)

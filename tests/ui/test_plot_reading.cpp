@@ -140,6 +140,7 @@ private slots:
     void shortRunGetsShortAxis();
     void namesInWords();
     void comparedCurvesStayVisible();
+    void runawayGoesOffScale();
     void closeMarksStack();
     void coincidingMarksMerge();
     void exportFolderDefaultsAndRemembers();
@@ -435,6 +436,58 @@ void TestPlotReading::namesInWords()
     const QString caption =
         stepCaption(loaded.lesson, 0, lessons::buildStepWorlds(loaded.lesson.steps[0])[0].def());
     QVERIFY2(caption.contains(QStringLiteral("Runge–Kutta 4")), qPrintable(caption));
+}
+
+void TestPlotReading::runawayGoesOffScale()
+{
+    // Stiff springs, step 3: two of four compared runs blow up to 1e10 J while two stay near
+    // 1000 J. The axis fits the two that survive (they read as curves, not a line at 0), and
+    // the two others are said to go off the top.
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(lessonPath("stiff_springs"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    QWidget parent;
+    PlotWidget* plot =
+        makeStepPlot(loaded.lesson.steps[2], QStringLiteral("compare-energy"), &parent);
+    QVERIFY(plot);
+    QCOMPARE(plot->seriesCount(), 4);
+    plot->setRangeMode(RangeMode::WholeRun);
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    const double e0 = 1000.0;
+    auto sampleAt = [e0](double t, double growth) {
+        Sample s;
+        s.t = t;
+        s.variants = 4;
+        const double wobble = e0 * (1 + 0.02 * std::sin(40 * t));
+        const double runaway = e0 * std::exp(growth * t);
+        s.variantTotal = {wobble, runaway, 1.5 * runaway, e0, 0, 0};
+        s.energyScale = e0;
+        return s;
+    };
+    for (int k = 0; k <= 256; ++k)
+        buffer.push(sampleAt(k * 0.001, 7.0 * std::log(10.0) / 0.256));
+    plot->drain();
+    const QCPRange y = plot->plot()->yAxis->range();
+    QVERIFY2(y.lower < 0.98 * e0 && y.upper > 1.02 * e0 && y.upper < 2 * e0,
+             qPrintable(QStringLiteral("%1 .. %2").arg(y.lower).arg(y.upper)));
+    QVERIFY(!plot->offScale(0));
+    QVERIFY(plot->offScale(1));
+    QVERIFY(plot->offScale(2));
+    QVERIFY(!plot->offScale(3));
+    QVERIFY2(plot->graph(1)->name().contains(QStringLiteral("off scale")),
+             qPrintable(plot->graph(1)->name()));
+    QVERIFY(!plot->graph(0)->name().contains(QStringLiteral("off scale")));
+
+    // Runs that only drift (three times the start) stay on the axis, and lose the mark.
+    plot->rewind(0);
+    for (int k = 0; k <= 256; ++k)
+        buffer.push(sampleAt(k * 0.001, std::log(3.0) / 0.256));
+    plot->drain();
+    for (int i = 0; i < 4; ++i)
+        QVERIFY2(!plot->offScale(i) &&
+                     !plot->graph(i)->name().contains(QStringLiteral("off scale")),
+                 qPrintable(plot->graph(i)->name()));
+    QVERIFY(plot->plot()->yAxis->range().upper >= 1.5 * 3.0 * e0 * 0.99);
 }
 
 void TestPlotReading::comparedCurvesStayVisible()

@@ -8,6 +8,7 @@
 #include "panels/divergence_banner.h"
 #include "panels/divergence_text.h"
 #include "simulation/simulation_controller.h"
+#include "view/body_item.h"
 #include "view/world_view.h"
 #include "window/main_window.h"
 
@@ -19,6 +20,7 @@
 #include <QMap>
 #include <QPalette>
 #include <QStyle>
+#include <QToolTip>
 #include <QtTest>
 
 using namespace rigidlab;
@@ -193,7 +195,11 @@ private slots:
         const QString reason = ui::divergenceReason(*d);
         QVERIFY(reason.contains(QStringLiteral("total energy")));
         QVERIFY2(banner->text().contains(reason), qPrintable(banner->text()));
-        QVERIFY2(w.view().legendLine(0).contains(reason), qPrintable(w.view().legendLine(0)));
+        // The legend's line is short; its tooltip holds the whole diagnosis.
+        QVERIFY2(w.view().legendDetail(0).contains(reason), qPrintable(w.view().legendDetail(0)));
+        QVERIFY2(!w.view().legendLine(0).contains(reason), qPrintable(w.view().legendLine(0)));
+        QVERIFY2(w.view().legendLine(0).contains(c.variantLabels().at(0)),
+                 qPrintable(w.view().legendLine(0)));
 
         // Step 3 says symplectic Euler and Verlet (worlds 1 and 2) stop within a quarter of a
         // second and that the lab says why beside each; the main world and RK4 carry on.
@@ -211,9 +217,36 @@ private slots:
             const QString line = w.view().legendLine(world);
             QVERIFY2(w.view().stoppedWorld(world), qPrintable(line));
             QVERIFY2(line.contains(c.variantLabels().at(world)) &&
-                         line.contains(ui::divergenceLabel(*stopped)) &&
-                         line.contains(QStringLiteral("total energy")),
+                         line.contains(QStringLiteral("blew up")) &&
+                         line.contains(QLocale().toString(stopped->time, 'g', 3)),
                      qPrintable(line));
+            // At most two lines of the legend (one is as high as the running RK4's) in this
+            // narrow view, not a paragraph over the bodies.
+            const QRect box = w.view().legendLayout()[static_cast<std::size_t>(world)];
+            const int oneLine = w.view().legendLayout()[3].height();
+            QVERIFY2(box.height() <= 2 * oneLine + 2,
+                     qPrintable(line + QStringLiteral(": %1 px high").arg(box.height())));
+            // The full diagnosis is the line's tooltip.
+            const QString detail = w.view().legendDetail(world);
+            QVERIFY2(detail.contains(ui::divergenceLabel(*stopped)) &&
+                         detail.contains(QStringLiteral("total energy")),
+                     qPrintable(detail));
+            QHelpEvent help(QEvent::ToolTip, box.center(),
+                            w.view().viewport()->mapToGlobal(box.center()));
+            QCoreApplication::sendEvent(w.view().viewport(), &help);
+            QTRY_COMPARE(QToolTip::text(), detail);
+            // Its bodies stay drawn, frozen inside the view, not flown off it.
+            w.view().syncPoses();
+            for (const ui::BodyItem* item : w.view().ghostItems(world - 1)) {
+                if (!c.variant(world - 1).body(item->bodyId()).moves())
+                    continue;
+                const QRect drawn = w.view().mapFromScene(item->sceneBoundingRect()).boundingRect();
+                QVERIFY2(w.view().viewport()->rect().contains(drawn),
+                         qPrintable(QStringLiteral("world %1 body at %2, %3")
+                                        .arg(world)
+                                        .arg(drawn.x())
+                                        .arg(drawn.y())));
+            }
         }
         QVERIFY(!w.view().stoppedWorld(3));
         QVERIFY(!w.view().legendLine(3).contains(QStringLiteral("stopped")));

@@ -1,5 +1,6 @@
 // The lab window, driven as a user would: keys, mouse, menus, under the offscreen platform.
 
+#include "common/status_text.h"
 #include "panels/control_panel.h"
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
@@ -48,6 +49,44 @@ QByteArray stateBytes(const physics::World& w)
 class TestWindow : public QObject {
     Q_OBJECT
 private slots:
+    // The status bar's drift: rounding noise (1.45e-13 %) reads 0, numbers follow the locale,
+    // and what is not a number is not shown as one.
+    void driftInTheStatusBar_data()
+    {
+        QTest::addColumn<double>("percent");
+        QTest::addColumn<QString>("locale");
+        QTest::addColumn<QString>("shown");
+        QTest::newRow("rounding noise")
+            << 1.45e-13 << QStringLiteral("en_US") << QStringLiteral("0");
+        QTest::newRow("negative noise")
+            << -9.9e-7 << QStringLiteral("de_DE") << QStringLiteral("0");
+        // Above the rounding: shown as it is, in three digits.
+        QTest::newRow("just above") << 2e-6 << QStringLiteral("en_US")
+                                    << QLocale(QStringLiteral("en_US")).toString(2e-6, 'g', 3);
+        QTest::newRow("small, German")
+            << 0.0125 << QStringLiteral("de_DE") << QStringLiteral("0,0125");
+        QTest::newRow("large, German")
+            << -3.27 << QStringLiteral("de_DE") << QStringLiteral("-3,27");
+        QTest::newRow("zero") << 0.0 << QStringLiteral("en_US") << QStringLiteral("0");
+    }
+    void driftInTheStatusBar()
+    {
+        QFETCH(double, percent);
+        QFETCH(QString, locale);
+        QFETCH(QString, shown);
+        QCOMPARE(ui::driftPercentText(percent, QLocale(locale)), shown);
+    }
+    void driftThatIsNotANumber()
+    {
+        for (double bad :
+             {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+            const QString text = ui::driftPercentText(bad, QLocale(QStringLiteral("en_US")));
+            QVERIFY(!text.isEmpty());
+            QVERIFY2(!text.contains(QLatin1String("nan"), Qt::CaseInsensitive) &&
+                         !text.contains(QLatin1String("inf"), Qt::CaseInsensitive),
+                     qPrintable(text));
+        }
+    }
     void sceneLoadsAndRuns()
     {
         MainWindow w;

@@ -65,6 +65,13 @@ QString divergenceSentence(const physics::Divergence& d)
              divergenceReason(d));
 }
 
+QString divergenceShort(const physics::Divergence& d)
+{
+    if (d.kind == physics::Divergence::Kind::EnergyGrowth)
+        return DivergenceWords::tr("energy blew up");
+    return DivergenceWords::tr("%1 no longer finite").arg(quantity(d.quantity));
+}
+
 QString divergenceLabel(const physics::Divergence& d)
 {
     return DivergenceWords::tr("stopped at t = %1 s: %2")

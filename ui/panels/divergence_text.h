@@ -17,6 +17,9 @@ QString divergenceReason(const physics::Divergence& d);
 /// run stopped there.
 QString divergenceSentence(const physics::Divergence& d);
 
+/// Why, in a few words for a legend read from the back of a room: "energy blew up".
+QString divergenceShort(const physics::Divergence& d);
+
 /// Short, for a label beside a stopped world: "stopped at t = 0.045 s: the total energy ...".
 QString divergenceLabel(const physics::Divergence& d);
 

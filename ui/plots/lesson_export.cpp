@@ -37,8 +37,13 @@ PlotWidget* makeComparePlot(const lessons::LessonStep& step, const QString& titl
     plot->setYAxisLabel(quantity, unit);
     if (unit == u"%")
         plot->setValueScale(YAxis::Left, kDriftScalePercent);
-    else
+    else {
         plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
+        // A run that blew up (1e10 J) goes off the top rather than flatten the others to 0.
+        // (Drifts are not clipped: explicit Euler's +172 % beside Verlet's 0.01 % is the
+        // lesson.)
+        plot->setOffScaleClipping(true);
+    }
     const int count = step.compare ? std::min(step.compare->count(), Sample::kMaxVariants) : 0;
     for (int i = 0; i < count; ++i) {
         const auto index = static_cast<std::size_t>(i);

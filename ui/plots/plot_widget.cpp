@@ -359,10 +359,52 @@ void PlotWidget::fitTicks()
     }
 }
 
+bool PlotWidget::offScale(int series) const
+{
+    return series >= 0 && static_cast<std::size_t>(series) < m_offScale.size() &&
+           m_offScale[static_cast<std::size_t>(series)];
+}
+
+void PlotWidget::setOffScaleClipping(bool on)
+{
+    m_offScaleClipping = on;
+    updateRanges();
+    requestReplot();
+}
+
+QString PlotWidget::offScaleMark() const
+{
+    return tr(" ↑ off scale");
+}
+
+void PlotWidget::setOffScale(YAxis axis, const std::vector<bool>& offScale)
+{
+    m_offScale.resize(m_series.size(), false);
+    bool changed = false;
+    for (std::size_t i = 0; i < m_series.size() && i < offScale.size(); ++i) {
+        if (m_series[i].axis() != axis) // the other axis's series keep their mark
+            continue;
+        if (m_offScale[i] == offScale[i])
+            continue;
+        m_offScale[i] = offScale[i];
+        QCPGraph* g = m_series[i].graph();
+        QString name = g->name();
+        if (offScale[i])
+            name += offScaleMark();
+        else if (name.endsWith(offScaleMark()))
+            name.chop(offScaleMark().size());
+        g->setName(name);
+        changed = true;
+    }
+    if (changed)
+        fitLegend(m_plot->width());
+}
+
 void PlotWidget::setSeriesLegend(int series, const QString& legend)
 {
     const PlotSeries& s = m_series.at(series);
-    s.graph()->setName(s.axis() == YAxis::Right ? tr("%1 (right axis)").arg(legend) : legend);
+    s.graph()->setName((s.axis() == YAxis::Right ? tr("%1 (right axis)").arg(legend) : legend) +
+                       (offScale(series) ? offScaleMark() : QString()));
     fitLegend(m_plot->width());
     requestReplot();
 }
@@ -659,20 +701,45 @@ void PlotWidget::fitValueAxis(YAxis axis)
     const QCPRange keys = m_plot->xAxis->range();
     QCPAxis* valueAxis = axisFor(axis);
     const bool log = valueAxis->scaleType() == QCPAxis::stLogarithmic;
-    bool any = false;
-    double lowest = 0, highest = 0;
-    for (const PlotSeries& series : m_series) {
+    struct Extent {
+        std::size_t series;
+        double lo, hi, magnitude;
+    };
+    std::vector<Extent> extents;
+    for (std::size_t i = 0; i < m_series.size(); ++i) {
+        const PlotSeries& series = m_series[i];
         if (series.axis() != axis || !series.graph()->visible())
             continue;
         double lo = 0, hi = 0;
         if (!series.valueRange(keys.lower, keys.upper, log, lo, hi))
             continue;
-        lowest = any ? std::min(lowest, lo) : lo;
-        highest = any ? std::max(highest, hi) : hi;
-        any = true;
+        extents.push_back({i, lo, hi, std::max(std::abs(lo), std::abs(hi))});
     }
-    if (!any)
+    if (extents.empty())
         return;
+    // A compared run that blew up (1e10 J beside 1000 J) would flatten the runs that survive
+    // to a line at 0: the axis fits the survivors, and the runs beyond kOffScaleRatio times
+    // them go off the top, said so in the legend.
+    std::vector<bool> offScale(m_series.size(), false);
+    if (m_offScaleClipping && !log) {
+        std::sort(extents.begin(), extents.end(),
+                  [](const Extent& a, const Extent& b) { return a.magnitude < b.magnitude; });
+        const double floor = std::max(valueScale(axis), kMinMagnitude);
+        std::size_t kept = 1;
+        while (kept < extents.size() &&
+               extents[kept].magnitude <=
+                   kOffScaleRatio * std::max(extents[kept - 1].magnitude, floor))
+            ++kept;
+        for (std::size_t k = kept; k < extents.size(); ++k)
+            offScale[extents[k].series] = true;
+        extents.resize(kept);
+    }
+    setOffScale(axis, offScale);
+    double lowest = extents.front().lo, highest = extents.front().hi;
+    for (const Extent& e : extents) {
+        lowest = std::min(lowest, e.lo);
+        highest = std::max(highest, e.hi);
+    }
     if (log) {
         valueAxis->setRange(lowest / 2, highest * 2);
         return;

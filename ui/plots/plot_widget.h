@@ -109,6 +109,15 @@ public:
     int seriesCount() const { return static_cast<int>(m_series.size()); }
     /// The series' name in the legend (the CSV keeps the name it was added with).
     void setSeriesLegend(int series, const QString& legend);
+    /// Whether the value axis leaves that series out, above it: it grew more than
+    /// kOffScaleRatio times the others (a compared run that blew up), and its legend says
+    /// "↑ off scale".
+    bool offScale(int series) const;
+    /// Lets series go off the top of the value axis as above (off by default: in one run's
+    /// plot, 1e-16 beside 1 is no runaway).
+    void setOffScaleClipping(bool on);
+    /// A series more than this many times larger than the next one goes off the top.
+    static constexpr double kOffScaleRatio = 100.0;
     /// Draws a series in this pen style, its line `widthFactor` times as wide as the others
     /// (its colour stays), on screen, in presentation mode and in exports.
     void setSeriesPen(int series, Qt::PenStyle style, double widthFactor = 1.0);
@@ -208,6 +217,10 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    /// Marks the series of `axis` that go off the top of it (true in `offScale`), in the
+    /// legend.
+    void setOffScale(YAxis axis, const std::vector<bool>& offScale);
+    QString offScaleMark() const;
     struct Mark {
         double t = 0;                 ///< [s]
         QString text;                 ///< its own label, before merging
@@ -252,6 +265,8 @@ private:
     QElapsedTimer m_sinceDrain;            ///< since the last drain
     QElapsedTimer m_sinceFrame;            ///< since the last frameAdvanced()
     std::vector<PlotSeries> m_series;
+    std::vector<bool> m_offScale; ///< per series, see offScale()
+    bool m_offScaleClipping = false;
     std::deque<Mark> m_marks; ///< sorted by t
     QString m_leftUnit;
     QString m_rightUnit;

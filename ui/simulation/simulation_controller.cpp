@@ -9,8 +9,10 @@
 #include "format/scene_loader.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 namespace rigidlab::ui {
 
@@ -20,6 +22,63 @@ constexpr int kFrameIntervalMs = 16;      // about 60 frames per second
 constexpr double kMaxFrameSeconds = 0.1;  // a longer gap (a paused debugger) counts as this
 constexpr double kPhysicsBudgetMs = 12.0; // physics may take this much of a frame
 constexpr double kGrabFrequency = 3.0;    // the grab spring's natural frequency [Hz]
+
+/// The box [m] around a world's static bodies (floor, walls); empty when it has none.
+/// corners: min x, min y, max x, max y.
+std::optional<std::array<double, 4>> staticExtent(const physics::World& world)
+{
+    std::optional<std::array<double, 4>> box;
+    auto add = [&box](const physics::Vec2& p) {
+        if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+            return;
+        if (!box) {
+            box = std::array<double, 4>{p.x(), p.y(), p.x(), p.y()};
+            return;
+        }
+        auto& b = *box;
+        b = {std::min(b[0], p.x()), std::min(b[1], p.y()), std::max(b[2], p.x()),
+             std::max(b[3], p.y())};
+    };
+    for (const physics::Body& b : world.bodies()) {
+        if (b.moves())
+            continue;
+        const physics::Transform t = b.transform();
+        if (b.shape.type == physics::ShapeType::Circle) {
+            const physics::Vec2 c = t.apply(b.shape.circle.center);
+            const double r = b.shape.circle.radius;
+            add(c - physics::Vec2(r, r));
+            add(c + physics::Vec2(r, r));
+        } else {
+            for (const physics::Vec2& v : b.shape.polygon.vertices)
+                add(t.apply(v));
+        }
+    }
+    return box;
+}
+
+/// The shift between compared worlds drawn beside each other: the lesson's, or, where their
+/// floors and walls would overlap at it (a stack's floor is wider than the shift), as far in
+/// the same direction as the main world's static bodies are long, plus a gap. Never shorter
+/// than the lesson's. It only moves the drawing: the compared worlds run where they are.
+physics::Vec2 besideOffset(const physics::World& main, const physics::Vec2& offset)
+{
+    const double length = offset.norm();
+    const auto box = staticExtent(main);
+    if (!(length > 0) || !std::isfinite(length) || !box)
+        return offset;
+    const auto& b = *box;
+    const double w = b[2] - b[0], h = b[3] - b[1];
+    const bool overlap = std::abs(offset.x()) < w && std::abs(offset.y()) < h;
+    if (!overlap)
+        return offset;
+    // The box's length along the shift's direction, so that the shifted box clears it.
+    const physics::Vec2 dir = offset / length;
+    const double alongX = std::abs(dir.x()) > 1e-12 ? w / std::abs(dir.x()) : HUGE_VAL;
+    const double alongY = std::abs(dir.y()) > 1e-12 ? h / std::abs(dir.y()) : HUGE_VAL;
+    const double extent = std::min(alongX, alongY);
+    const double gap = std::max(0.5, 0.1 * extent);
+    return dir * std::max(length, extent + gap);
+}
 
 } // namespace
 
@@ -60,7 +119,7 @@ void SimulationController::loadWorlds(const lessons::Scene& scene, const QString
                       std::make_move_iterator(worlds.end()));
     m_variantStarts = m_variants;
     m_variantLabels = labels;
-    m_variantOffset = offset;
+    m_variantOffset = m_variants.empty() ? offset : besideOffset(m_world, offset);
     m_watched.clear();
     resetClock();
     emit sceneLoaded();

@@ -4,6 +4,9 @@
 
 #include <QPainter>
 
+#include <QTransform>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -25,17 +28,16 @@ BodyItem::BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fil
     if (shape.type == physics::ShapeType::Circle) {
         const auto& c = shape.circle;
         const QPointF centre(c.center.x(), c.center.y());
-        m_path.addEllipse(centre, c.radius, c.radius);
-        m_circle = QRectF(centre.x() - c.radius, centre.y() - c.radius, 2 * c.radius, 2 * c.radius);
-        m_radiusLine = QLineF(centre, centre + QPointF(c.radius, 0));
+        m_truePath.addEllipse(centre, c.radius, c.radius);
+        m_trueCircle =
+            QRectF(centre.x() - c.radius, centre.y() - c.radius, 2 * c.radius, 2 * c.radius);
     } else {
-        QPolygonF poly;
         for (const auto& v : shape.polygon.vertices)
-            poly << QPointF(v.x(), v.y());
-        m_path.addPolygon(poly);
-        m_path.closeSubpath();
-        m_polygon = poly;
+            m_truePolygon << QPointF(v.x(), v.y());
+        m_truePath.addPolygon(m_truePolygon);
+        m_truePath.closeSubpath();
     }
+    rebuildDrawn();
     setAcceptHoverEvents(false);
     setZValue(kind == 1 ? 0 : 1);
 }
@@ -45,6 +47,39 @@ void BodyItem::setPose(double x, double y, double angle)
     setPos(x, y);
     // The view flips y, so a positive rotation here turns counter-clockwise on screen.
     setRotation(angle * 180.0 / std::numbers::pi);
+}
+
+void BodyItem::setMinimumRadius(double metres)
+{
+    metres = m_kind == 1 || !std::isfinite(metres) ? 0.0 : std::max(0.0, metres);
+    if (metres == m_minRadius)
+        return;
+    m_minRadius = metres;
+    rebuildDrawn();
+}
+
+void BodyItem::rebuildDrawn()
+{
+    // Grown about the centre of its bounding box by one factor, so that the shape keeps its
+    // proportions and its radius line still shows the rotation.
+    const QRectF box = m_truePath.boundingRect();
+    const double half = 0.5 * std::max(box.width(), box.height());
+    const double k = half > 0 && half < m_minRadius ? m_minRadius / half : 1.0;
+    const QPointF c = box.center();
+    QTransform grow;
+    grow.translate(c.x(), c.y());
+    grow.scale(k, k);
+    grow.translate(-c.x(), -c.y());
+    prepareGeometryChange();
+    m_path = grow.map(m_truePath);
+    if (!m_trueCircle.isNull()) {
+        m_circle = grow.mapRect(m_trueCircle);
+        m_radiusLine =
+            QLineF(m_circle.center(), m_circle.center() + QPointF(0.5 * m_circle.width(), 0));
+    } else {
+        m_polygon = grow.map(m_truePolygon);
+    }
+    update();
 }
 
 void BodyItem::setSelectedBody(bool selected)

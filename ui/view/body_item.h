@@ -25,19 +25,30 @@ public:
     /// Smooth edges (the default). A scene of hundreds of bodies draws them without: each is
     /// a few pixels across, and antialiasing them took a large part of a frame.
     void setAntialiased(bool on) { m_antialiased = on; }
+    /// The least half-size [m] a moving body is drawn with, so that a small body far zoomed
+    /// out still reads as a body, not a dot (the view sets it from its zoom). A static body
+    /// is always drawn at its true size.
+    void setMinimumRadius(double metres);
 
     QRectF boundingRect() const override;
     QPainterPath shape() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:
+    /// The outline as drawn: the shape, grown about its centre to the minimum radius.
+    void rebuildDrawn();
+
     int m_bodyId;
     int m_kind;
     QColor m_fill;
-    QPainterPath m_path;
-    QPolygonF m_polygon; ///< polygons: the outline, drawn as a polygon (far cheaper than a path)
-    QRectF m_circle;     ///< circles: the bounding square, drawn as an ellipse
-    QLineF m_radiusLine; ///< circles: a radius, so that rotation shows
+    QPainterPath m_truePath; ///< the shape at its true size [m]
+    QPainterPath m_path;     ///< as drawn (see setMinimumRadius)
+    QPolygonF m_truePolygon;
+    QRectF m_trueCircle;
+    double m_minRadius = 0; ///< [m]
+    QPolygonF m_polygon;    ///< polygons: the outline, drawn as a polygon (far cheaper than a path)
+    QRectF m_circle;        ///< circles: the bounding square, drawn as an ellipse
+    QLineF m_radiusLine;    ///< circles: a radius, so that rotation shows
     bool m_selected = false;
     bool m_antialiased = true;
 };

@@ -132,8 +132,17 @@ void OverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*)
         }
     }
     if (isEnabled(Overlay::SpringsJoints)) {
+        auto transformOf = [&](int w, const physics::World& in, physics::BodyId id) {
+            if (m_frozen)
+                if (const auto frozen = m_frozen(w, id))
+                    return *frozen;
+            return in.body(id).transform();
+        };
+        auto centreOf = [&](int w, const physics::World& in, physics::BodyId id) {
+            return transformOf(w, in, id).apply(in.body(id).localCenter);
+        };
         auto anchor = [&](physics::BodyId id, const physics::Vec2& a) {
-            return id == physics::kWorld ? toQt(a) : toQt(world.body(id).transform().apply(a));
+            return id == physics::kWorld ? toQt(a) : toQt(transformOf(0, world, id).apply(a));
         };
         // The compared worlds' joints too, where their ghosts are drawn.
         for (int v = 0; v < m_controller.variantCount(); ++v) {
@@ -142,17 +151,17 @@ void OverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*)
             p->setPen(cosmeticPen(QColor(120, 120, 120), 1.5));
             for (const physics::PinJointDef& j : vw.joints()) {
                 auto end = [&](physics::BodyId id, const physics::Vec2& a) {
-                    return toQt((id == physics::kWorld ? a : vw.body(id).transform().apply(a)) +
+                    return toQt((id == physics::kWorld ? a : transformOf(v + 1, vw, id).apply(a)) +
                                 shift);
                 };
                 const QPointF pin = end(j.a, j.anchorA);
                 if (j.a != physics::kWorld)
-                    p->drawLine(pin, toQt(vw.body(j.a).position + shift));
+                    p->drawLine(pin, toQt(centreOf(v + 1, vw, j.a) + shift));
                 p->drawEllipse(pin, 3 * px, 3 * px);
             }
             for (const physics::SpringDef& sp : vw.springs()) {
                 auto end = [&](physics::BodyId id, const physics::Vec2& a) {
-                    return toQt((id == physics::kWorld ? a : vw.body(id).transform().apply(a)) +
+                    return toQt((id == physics::kWorld ? a : transformOf(v + 1, vw, id).apply(a)) +
                                 shift);
                 };
                 p->drawLine(end(sp.a, sp.anchorA), end(sp.b, sp.anchorB));
@@ -180,9 +189,9 @@ void OverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*)
             const QPointF pin = anchor(j.a, j.anchorA);
             p->setPen(cosmeticPen(QColor(40, 40, 40), 2.0));
             if (j.a != physics::kWorld)
-                p->drawLine(pin, toQt(world.body(j.a).position));
+                p->drawLine(pin, toQt(centreOf(0, world, j.a)));
             if (j.b != physics::kWorld)
-                p->drawLine(pin, toQt(world.body(j.b).position));
+                p->drawLine(pin, toQt(centreOf(0, world, j.b)));
             p->setBrush(Qt::white);
             p->drawEllipse(pin, 4 * px, 4 * px);
         }

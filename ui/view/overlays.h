@@ -8,6 +8,8 @@
 #include <QGraphicsItem>
 
 #include <deque>
+#include <functional>
+#include <optional>
 #include <vector>
 
 namespace rigidlab::ui {
@@ -33,6 +35,12 @@ public:
     /// Whether a body moving at `velocity` [m/s] gets its arrow at this zoom [m per px].
     static bool velocityArrowShown(const physics::Vec2& velocity, double metresPerPixel);
 
+    /// Where a body of a stopped world is drawn (world 0 the main one, v + 1 compared world
+    /// v): its pose before it stopped, or nullopt to draw it where it is now. Springs and
+    /// joints follow it, instead of reaching for a body flown a billion metres away.
+    using FrozenPose = std::function<std::optional<physics::Transform>(int, physics::BodyId)>;
+    void setFrozenPose(FrozenPose frozen) { m_frozen = std::move(frozen); }
+
     QRectF boundingRect() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
@@ -41,6 +49,7 @@ private:
     bool m_on[kOverlayCount] = {false, false, false, false, false, true};
     std::vector<std::deque<QPointF>> m_trails; ///< bounded, per body
     QRectF m_bounds;
+    FrozenPose m_frozen;
 };
 
 } // namespace rigidlab::ui

@@ -9,6 +9,7 @@
 #include <QLocale>
 #include <QMouseEvent>
 #include <QScrollBar>
+#include <QToolTip>
 #include <QWheelEvent>
 
 #include <algorithm>
@@ -20,6 +21,10 @@ namespace {
 
 constexpr double kMinZoom = 2.0;     // pixels per metre
 constexpr double kMaxZoom = 20000.0; // pixels per metre
+/// The least size a moving body is drawn across [px], so that the back row sees it (larger in
+/// presentation mode); a body smaller on screen is drawn grown to it.
+constexpr double kMinBodyPx = 10.0;
+constexpr double kMinBodyPresentationPx = 14.0;
 
 } // namespace
 
@@ -30,6 +35,8 @@ WorldView::WorldView(SimulationController& controller, QWidget* parent)
     m_scene->setItemIndexMethod(QGraphicsScene::NoIndex); // items move every frame
     setScene(m_scene);
     m_overlays = new OverlayItem(m_controller);
+    m_overlays->setFrozenPose(
+        [this](int world, physics::BodyId body) { return frozenPose(world, body); });
     m_scene->addItem(m_overlays);
     setRenderHint(QPainter::Antialiasing);
     setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
@@ -88,6 +95,7 @@ void WorldView::rebuild()
                                         : bodyColor(colour++);
         auto* item = new BodyItem(static_cast<int>(i), b.shape, kind, fill);
         item->setAntialiased(bodies.size() < kManyBodies);
+        item->setMinimumRadius(minimumBodyRadius());
         m_scene->addItem(item);
         m_items.push_back(item);
     }
@@ -103,11 +111,13 @@ void WorldView::rebuild()
             auto* item = new BodyItem(static_cast<int>(i), vb[i].shape, 3, plotColor(v + 1));
             item->setZValue(vb[i].moves() ? 2 : 1.5);
             item->setAcceptedMouseButtons(Qt::NoButton);
+            item->setMinimumRadius(minimumBodyRadius());
             m_scene->addItem(item);
-            m_ghosts.push_back({v, static_cast<int>(i), item});
+            m_ghosts.push_back({v, static_cast<int>(i), item, physics::Transform()});
         }
     }
     m_overlays->clearTrails();
+    m_drawnRunning.clear();
     syncPoses();
     m_autoFit = true;
     fitScene();
@@ -116,15 +126,67 @@ void WorldView::rebuild()
 
 void WorldView::syncPoses()
 {
+    // A stopped world stays drawn, frozen where it last was in sight while it ran (in the
+    // steps before it diverged its bodies may already fly far off): not gone, and its last
+    // sane pose.
+    const auto transformAt = [](const physics::Vec2& origin, double angle) {
+        physics::Transform t;
+        t.q = physics::Rotation(angle);
+        t.p = origin;
+        return t;
+    };
+    const QRectF shown = mapToScene(viewport()->rect()).boundingRect();
+    const auto inSight = [&shown](const physics::Vec2& p) {
+        return std::isfinite(p.x()) && std::isfinite(p.y()) &&
+               (shown.isEmpty() || shown.contains(QPointF(p.x(), p.y())));
+    };
+    const std::size_t worlds = static_cast<std::size_t>(m_controller.variantCount()) + 1;
+    m_drawnRunning.resize(worlds, false);
+    const physics::World& main = m_controller.world();
+    const bool mainFrozen = main.divergence() && m_drawnRunning[0];
+    std::vector<Pose> poses(m_items.size());
+    bool mainSane = !main.divergence();
     for (std::size_t i = 0; i < m_items.size(); ++i) {
-        const Pose pose = m_controller.drawPose(static_cast<physics::BodyId>(i));
-        m_items[i]->setPose(pose.origin.x(), pose.origin.y(), pose.angle);
+        poses[i] = m_controller.drawPose(static_cast<physics::BodyId>(i));
+        mainSane = mainSane && inSight(poses[i].origin);
     }
+    m_itemPoses.resize(m_items.size());
+    for (std::size_t i = 0; i < m_items.size(); ++i) {
+        if (mainSane || !m_drawnRunning[0])
+            m_itemPoses[i] = transformAt(poses[i].origin, poses[i].angle);
+        const physics::Transform& t = m_itemPoses[i];
+        if (mainFrozen)
+            m_items[i]->setPose(t.p.x(), t.p.y(), std::atan2(t.q.s, t.q.c));
+        else
+            m_items[i]->setPose(poses[i].origin.x(), poses[i].origin.y(), poses[i].angle);
+    }
+    m_drawnRunning[0] = m_drawnRunning[0] || mainSane;
+
+    std::vector<bool> sane(worlds, true);
     for (const Ghost& g : m_ghosts) {
-        const physics::Body& b = m_controller.variant(g.variant).body(g.body);
-        const physics::Vec2 o = b.origin() + (g.variant + 1) * m_controller.variantOffset();
-        g.item->setPose(o.x(), o.y(), b.angle);
+        const physics::World& vw = m_controller.variant(g.variant);
+        const physics::Vec2 o =
+            vw.body(g.body).origin() + (g.variant + 1) * m_controller.variantOffset();
+        const auto w = static_cast<std::size_t>(g.variant) + 1;
+        sane[w] = sane[w] && !vw.divergence() && inSight(o);
     }
+    for (Ghost& g : m_ghosts) {
+        const physics::World& vw = m_controller.variant(g.variant);
+        const auto w = static_cast<std::size_t>(g.variant) + 1;
+        const physics::Body& b = vw.body(g.body);
+        const physics::Vec2 shift = (g.variant + 1) * m_controller.variantOffset();
+        if (sane[w] || !m_drawnRunning[w])
+            g.pose = transformAt(b.origin(), b.angle);
+        if (vw.divergence() && m_drawnRunning[w]) {
+            const physics::Vec2 o = g.pose.p + shift;
+            g.item->setPose(o.x(), o.y(), std::atan2(g.pose.q.s, g.pose.q.c));
+        } else {
+            const physics::Vec2 o = b.origin() + shift;
+            g.item->setPose(o.x(), o.y(), b.angle);
+        }
+    }
+    for (std::size_t w = 1; w < worlds; ++w)
+        m_drawnRunning[w] = m_drawnRunning[w] || sane[w];
     if (const int stopped = stoppedCount(); stopped != m_stoppedCount) {
         // A world stopped: what auto-fit widened to follow it is given back, so that the
         // worlds still running are shown as large as at the start.
@@ -145,6 +207,21 @@ void WorldView::syncPoses()
         }
     }
     m_overlays->refresh();
+}
+
+std::optional<physics::Transform> WorldView::frozenPose(int world, physics::BodyId body) const
+{
+    const auto w = static_cast<std::size_t>(world);
+    if (w >= m_drawnRunning.size() || !m_drawnRunning[w] || !stoppedWorld(world))
+        return std::nullopt;
+    if (world == 0)
+        return body >= 0 && static_cast<std::size_t>(body) < m_itemPoses.size()
+                   ? std::optional(m_itemPoses[static_cast<std::size_t>(body)])
+                   : std::nullopt;
+    for (const Ghost& g : m_ghosts)
+        if (g.variant == world - 1 && g.body == static_cast<int>(body))
+            return g.pose;
+    return std::nullopt;
 }
 
 void WorldView::selectBody(int id)
@@ -195,10 +272,11 @@ void WorldView::fitScene()
     m_fitted = contentRect();
     if (m_fitted.isEmpty())
         return;
-    // Auto-fit may later widen to follow bodies that leave, but not past 8 times the scene.
-    const QPointF c = m_fitted.center();
-    const double span = 8.0 * std::max({m_fitted.width(), m_fitted.height(), 1.0});
-    m_fitLimit = QRectF(c - QPointF(span, span) / 2, QSizeF(span, span));
+    // Auto-fit may later widen to follow bodies that swing or bounce a little outside the
+    // start, but not far: a body that leaves the scene (the cue ball of a break, a pendulum
+    // gone over the top) would shrink everything still in it to dots.
+    const double grow = std::max(0.25 * std::max(m_fitted.width(), m_fitted.height()), 0.5);
+    m_fitLimit = m_fitted.adjusted(-grow, -grow, grow, grow);
     m_startFit = m_fitted;
     m_stoppedCount = stoppedCount();
     showRect(m_fitted);
@@ -249,6 +327,22 @@ void WorldView::setZoom(double pixelsPerMetre)
 {
     const double s = std::clamp(pixelsPerMetre, kMinZoom, kMaxZoom);
     setTransform(QTransform::fromScale(s, -s));
+    applyMinimumBodySize();
+}
+
+double WorldView::minimumBodyRadius() const
+{
+    const double px = theme::presentation() ? kMinBodyPresentationPx : kMinBodyPx;
+    return 0.5 * px / zoom();
+}
+
+void WorldView::applyMinimumBodySize()
+{
+    const double r = minimumBodyRadius();
+    for (BodyItem* item : m_items)
+        item->setMinimumRadius(r);
+    for (const Ghost& g : m_ghosts)
+        g.item->setMinimumRadius(r);
 }
 
 physics::Vec2 WorldView::toWorld(const QPoint& viewPos) const
@@ -319,6 +413,7 @@ void WorldView::wheelEvent(QWheelEvent* event)
     const double factor = std::pow(1.2, steps);
     const double target = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
     scale(target / zoom(), target / zoom());
+    applyMinimumBodySize();
     event->accept();
 }
 
@@ -371,10 +466,45 @@ QString WorldView::legendLine(int world) const
 {
     const QString name = m_controller.variantLabels().value(world);
     const physics::World& w = world == 0 ? m_controller.world() : m_controller.variant(world - 1);
+    // A stopped world gets one short line, readable from the back of the room; the numbers
+    // (how far the energy grew, which body) are in legendDetail, the line's tooltip.
+    if (const auto& d = w.divergence()) {
+        const QString time = QLocale().toString(d->time, 'g', 3);
+        if (d->kind == physics::Divergence::Kind::EnergyGrowth)
+            return tr("%1 — blew up at t = %2 s").arg(name, time);
+        return tr("%1 — stopped at t = %2 s: %3").arg(name, time, divergenceShort(*d));
+    }
+    return world == 0 ? tr("%1 (solid)").arg(name) : tr("%1 (outline)").arg(name);
+}
+
+QString WorldView::legendDetail(int world) const
+{
+    const QString name = m_controller.variantLabels().value(world);
+    const physics::World& w = world == 0 ? m_controller.world() : m_controller.variant(world - 1);
     if (const auto& d = w.divergence())
         return world == 0 ? tr("%1 (solid): %2").arg(name, divergenceLabel(*d))
                           : tr("%1 (outline): %2").arg(name, divergenceLabel(*d));
-    return world == 0 ? tr("%1 (solid)").arg(name) : tr("%1 (outline)").arg(name);
+    return legendLine(world);
+}
+
+bool WorldView::viewportEvent(QEvent* event)
+{
+    if (event->type() == QEvent::ToolTip) {
+        // The legend's short lines: the full diagnosis of a stopped world.
+        const auto* help = static_cast<QHelpEvent*>(event);
+        const std::vector<QRect> lines = legendLayout();
+        for (int i = 0; i < static_cast<int>(lines.size()); ++i) {
+            const QRect box = lines[static_cast<std::size_t>(i)].adjusted(-30, -1, 3, 1);
+            if (box.contains(help->pos())) {
+                QToolTip::showText(help->globalPos(), legendDetail(i), viewport(), box);
+                return true;
+            }
+        }
+        QToolTip::hideText();
+        event->ignore();
+        return true;
+    }
+    return QGraphicsView::viewportEvent(event);
 }
 
 void WorldView::drawForeground(QPainter* painter, const QRectF&)
@@ -423,6 +553,12 @@ void WorldView::drawForeground(QPainter* painter, const QRectF&)
         painter->fillRect(box, theme::worldLabelBox());
         painter->setPen(theme::worldAlertText());
         painter->drawText(box, Qt::AlignCenter, stoppedLabel(v));
+        // A cross over the frozen body: this one no longer moves.
+        const QPoint c = mapFromScene(ghostOf(v)->sceneBoundingRect().center());
+        const int r = std::max(6, fm.ascent() / 2);
+        painter->setPen(QPen(theme::worldAlertText(), theme::lineWidth(2.5)));
+        painter->drawLine(c + QPoint(-r, -r), c + QPoint(r, r));
+        painter->drawLine(c + QPoint(-r, r), c + QPoint(r, -r));
     }
     painter->restore();
 }

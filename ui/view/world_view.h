@@ -9,6 +9,7 @@
 #include <QGraphicsView>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace rigidlab::ui {
@@ -34,9 +35,12 @@ public:
     /// The worlds the legend names (0 when nothing is compared): 0 the main one, then the
     /// compared ones in order.
     int worldCount() const;
-    /// The legend's line for a world: its name and how it is drawn, and, once it stopped,
-    /// when and why (the ghost also gets a label of its own).
+    /// The legend's line for a world: its name and how it is drawn, or, once it stopped, one
+    /// short line: when, and why in a few words (the ghost also gets a label of its own).
     QString legendLine(int world) const;
+    /// The legend line's full text, its tooltip: for a stopped world, the whole diagnosis
+    /// (when, how far the energy grew, which body); else the line itself.
+    QString legendDetail(int world) const;
     /// Whether that world stopped with a diagnosis.
     bool stoppedWorld(int world) const;
     /// Where the legend's lines are drawn, one for each world, in viewport pixels.
@@ -69,6 +73,7 @@ protected:
     void drawBackground(QPainter* painter, const QRectF& rect) override;
     void drawForeground(QPainter* painter, const QRectF& rect) override;
     void resizeEvent(QResizeEvent* event) override;
+    bool viewportEvent(QEvent* event) override;
 
 private:
     physics::Vec2 toWorld(const QPoint& viewPos) const;
@@ -77,6 +82,9 @@ private:
     /// Shows `box` (grown by a margin) in the whole viewport.
     void showRect(QRectF box);
     void setZoom(double pixelsPerMetre);
+    /// The least half-size [m] a moving body is drawn with at this zoom (see BodyItem).
+    double minimumBodyRadius() const;
+    void applyMinimumBodySize();
     QFont legendFont() const;
     /// The legend's height from the top of the view [px], 0 without one.
     int legendHeight() const;
@@ -89,12 +97,20 @@ private:
     SimulationController& m_controller;
     QGraphicsScene* m_scene;
     OverlayItem* m_overlays;
-    std::vector<BodyItem*> m_items; ///< indexed by body id
+    std::vector<BodyItem*> m_items;              ///< indexed by body id
+    std::vector<physics::Transform> m_itemPoses; ///< as last drawn while the main world ran
+    /// Per world (0 the main one): whether it was drawn running since the last rebuild, so
+    /// that once stopped it is drawn frozen there rather than where it flew off to.
+    std::vector<bool> m_drawnRunning;
     struct Ghost {
         int variant = 0; ///< index into the controller's variants
         int body = 0;
         BodyItem* item = nullptr;
+        physics::Transform pose; ///< as last drawn while its world ran [m]
     };
+    /// The pose body `body` of world `world` (0 the main one, v + 1 compared world v) is
+    /// frozen at, once that world stopped: as last drawn before it did.
+    std::optional<physics::Transform> frozenPose(int world, physics::BodyId body) const;
     std::vector<Ghost> m_ghosts;
     int m_selected = -1;
     bool m_panning = false;

@@ -3,6 +3,7 @@
 #include "common/display_names.h"
 #include "common/export_folder.h"
 #include "common/modal_scope.h"
+#include "common/status_text.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/control_panel.h"
@@ -573,7 +574,7 @@ void MainWindow::updateStatus()
     // On a projector, in short: the line must fit 1024 pixels at one and a half times the size.
     QString drift =
         (m_presentation ? tr("energy drift %1 %") : tr("energy drift (numerical error) %1 %"))
-            .arg(locale.toString(m_controller->driftPercent(), 'g', 3));
+            .arg(driftPercentText(m_controller->driftPercent(), locale));
     const double lost = m_controller->dissipated();
     if (std::abs(lost) > 1e-9)
         drift += (m_presentation ? tr(" · dissipated %1 J")

@@ -1,0 +1,27 @@
+#include "common/status_text.h"
+
+#include <QCoreApplication>
+
+#include <cmath>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// The translation context of these words.
+class StatusWords {
+    Q_DECLARE_TR_FUNCTIONS(StatusWords)
+};
+
+} // namespace
+
+QString driftPercentText(double percent, const QLocale& locale)
+{
+    if (!std::isfinite(percent))
+        return StatusWords::tr("–", "no drift to show");
+    if (std::abs(percent) < kDriftShownAsZeroPercent)
+        return locale.toString(0);
+    return locale.toString(percent, 'g', 3);
+}
+
+} // namespace rigidlab::ui
