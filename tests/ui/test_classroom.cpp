@@ -378,6 +378,47 @@ private slots:
         QVERIFY(questions >= 10);
     }
 
+    // The step's table, or else the first plot it lists (its text talks about it), is the
+    // tab in front when the step opens, not the controls.
+    void stepRaisesItsPlotOrTable()
+    {
+        MainWindow w;
+        showOn(w, QSize(1024, 768));
+        int checked = 0;
+        for (const QString& path : shippedLessons()) {
+            QCOMPARE(w.openLesson(path, true), QString());
+            const int count = static_cast<int>(w.lessonPlayer().lesson()->steps.size());
+            for (int i = 0; i < count; ++i) {
+                w.lessonPlayer().goToStep(i);
+                QCoreApplication::processEvents();
+                const lessons::LessonStep& step =
+                    w.lessonPlayer().lesson()->steps[static_cast<std::size_t>(i)];
+                // What the questions hold back is hidden until answered.
+                const QStringList held = w.lessonPlayer().heldBack();
+                QString front;
+                for (const QString& panel : step.panels)
+                    if ((panel == QLatin1String("sat") || panel == QLatin1String("bounces") ||
+                         panel == QLatin1String("collision")) &&
+                        !held.contains(QStringLiteral("panel:") + panel))
+                        front = panel;
+                for (const QString& plot : step.plots)
+                    if (front.isEmpty() && !held.contains(QStringLiteral("plot:") + plot))
+                        front = plot;
+                if (front.isEmpty())
+                    continue;
+                const QDockWidget* dock = w.dock(front);
+                QVERIFY(dock);
+                QVERIFY2(dock->isVisible() && !dock->visibleRegion().isEmpty(),
+                         qPrintable(QStringLiteral("%1 step %2: %3 is behind another tab")
+                                        .arg(QFileInfo(path).baseName())
+                                        .arg(i + 1)
+                                        .arg(front)));
+                ++checked;
+            }
+        }
+        QVERIFY(checked >= 10);
+    }
+
     void presentationModeIsLargeAndRestores()
     {
         MainWindow w;
