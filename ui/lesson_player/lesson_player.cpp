@@ -116,7 +116,9 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     m_navigation = new QWidget(this);
     m_navigation->setObjectName(QStringLiteral("lessonNavigation"));
     auto* bottom = new QVBoxLayout(m_navigation);
-    bottom->setContentsMargins(0, 0, 0, 0);
+    // In line with the text above, wherever the window puts them.
+    const QMargins margins = layout->contentsMargins();
+    bottom->setContentsMargins(margins.left(), 0, margins.right(), 0);
     m_questionBox->setParent(m_navigation);
     m_questionBox->setObjectName(QStringLiteral("lessonQuestions"));
     m_questionLayout->setContentsMargins(0, 0, 0, 0);
