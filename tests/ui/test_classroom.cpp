@@ -28,6 +28,7 @@
 #include <QLineEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QStatusBar>
 #include <QTableWidget>
 #include <QTextBrowser>
@@ -298,6 +299,124 @@ private slots:
             }
         }
         QVERIFY(steps >= 20);
+    }
+
+    // Every step's questions in sight, normal and on a projector: each answer box and Check
+    // button lies inside the window, uncut by any scroll area, however long the step's text.
+    void everyQuestionInSight_data()
+    {
+        QTest::addColumn<QSize>("screen");
+        QTest::addColumn<bool>("present");
+        for (bool present : {false, true}) {
+            const char* mode = present ? "presentation" : "normal";
+            QTest::addRow("1024x768 %s", mode) << QSize(1024, 768) << present;
+            QTest::addRow("1280x720 %s", mode) << QSize(1280, 720) << present;
+        }
+    }
+    void everyQuestionInSight()
+    {
+        QFETCH(QSize, screen);
+        QFETCH(bool, present);
+        MainWindow w;
+        if (present)
+            presentOn(w, screen);
+        else
+            showOn(w, screen);
+        int questions = 0;
+        for (const QString& path : shippedLessons()) {
+            QCOMPARE(w.openLesson(path, true), QString());
+            const int count = static_cast<int>(w.lessonPlayer().lesson()->steps.size());
+            for (int i = 0; i < count; ++i) {
+                w.lessonPlayer().goToStep(i);
+                QCoreApplication::processEvents();
+                const QString where =
+                    QStringLiteral("%1 step %2: ").arg(QFileInfo(path).baseName()).arg(i + 1);
+                const auto* box = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
+                QVERIFY(box);
+                const std::size_t asked =
+                    w.lessonPlayer().lesson()->steps[static_cast<std::size_t>(i)].questions.size();
+                QList<const QWidget*> widgets;
+                for (const QLineEdit* e : box->findChildren<QLineEdit*>())
+                    widgets << e;
+                for (const QPushButton* b : box->findChildren<QPushButton*>())
+                    if (b->text() == QObject::tr("Check"))
+                        widgets << b;
+                QCOMPARE(static_cast<std::size_t>(widgets.size()), 2 * asked);
+                for (const QWidget* x : widgets) {
+                    const QRect r(x->mapTo(&w, QPoint(0, 0)), x->size());
+                    const auto* b = qobject_cast<const QPushButton*>(x);
+                    const QString name = b ? b->text() : QStringLiteral("answer box");
+                    QVERIFY2(x->isVisible() && w.rect().contains(r),
+                             qPrintable(where + name + QStringLiteral(" outside the window")));
+                    QVERIFY2(x->visibleRegion().boundingRect().size() == x->size(),
+                             qPrintable(where + name +
+                                        QStringLiteral(" cut to %1x%2 of %3x%4")
+                                            .arg(x->visibleRegion().boundingRect().width())
+                                            .arg(x->visibleRegion().boundingRect().height())
+                                            .arg(x->width())
+                                            .arg(x->height())));
+                    QVERIFY2(reachableRect(x, &w).contains(r),
+                             qPrintable(where + name + QStringLiteral(" scrolled out of sight")));
+                }
+                // The step's text wraps to the column: no sideways scrolling, its tables
+                // included (energy_drift step 4).
+                const auto* text = w.lessonPlayer().findChild<QTextBrowser*>();
+                QVERIFY(text && text->isVisible());
+                QVERIFY2(!text->horizontalScrollBar()->isVisible(),
+                         qPrintable(where + QStringLiteral("the text scrolls sideways")));
+                QVERIFY2(text->document()->size().width() <= text->viewport()->width() + 1,
+                         qPrintable(where + QStringLiteral("text %1 px wide in %2 px")
+                                                .arg(text->document()->size().width())
+                                                .arg(text->viewport()->width())));
+                for (const QWidget* p = text->parentWidget(); p; p = p->parentWidget())
+                    if (const auto* scroll = qobject_cast<const QScrollArea*>(p))
+                        QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
+                                 qPrintable(where + QStringLiteral("the lesson scrolls sideways")));
+                questions += static_cast<int>(asked);
+            }
+        }
+        QVERIFY(questions >= 10);
+    }
+
+    // The step's table, or else the first plot it lists (its text talks about it), is the
+    // tab in front when the step opens, not the controls.
+    void stepRaisesItsPlotOrTable()
+    {
+        MainWindow w;
+        showOn(w, QSize(1024, 768));
+        int checked = 0;
+        for (const QString& path : shippedLessons()) {
+            QCOMPARE(w.openLesson(path, true), QString());
+            const int count = static_cast<int>(w.lessonPlayer().lesson()->steps.size());
+            for (int i = 0; i < count; ++i) {
+                w.lessonPlayer().goToStep(i);
+                QCoreApplication::processEvents();
+                const lessons::LessonStep& step =
+                    w.lessonPlayer().lesson()->steps[static_cast<std::size_t>(i)];
+                // What the questions hold back is hidden until answered.
+                const QStringList held = w.lessonPlayer().heldBack();
+                QString front;
+                for (const QString& panel : step.panels)
+                    if ((panel == QLatin1String("sat") || panel == QLatin1String("bounces") ||
+                         panel == QLatin1String("collision")) &&
+                        !held.contains(QStringLiteral("panel:") + panel))
+                        front = panel;
+                for (const QString& plot : step.plots)
+                    if (front.isEmpty() && !held.contains(QStringLiteral("plot:") + plot))
+                        front = plot;
+                if (front.isEmpty())
+                    continue;
+                const QDockWidget* dock = w.dock(front);
+                QVERIFY(dock);
+                QVERIFY2(dock->isVisible() && !dock->visibleRegion().isEmpty(),
+                         qPrintable(QStringLiteral("%1 step %2: %3 is behind another tab")
+                                        .arg(QFileInfo(path).baseName())
+                                        .arg(i + 1)
+                                        .arg(front)));
+                ++checked;
+            }
+        }
+        QVERIFY(checked >= 10);
     }
 
     void presentationModeIsLargeAndRestores()

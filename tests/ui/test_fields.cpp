@@ -440,7 +440,10 @@ private slots:
         QVERIFY(value);
         // A value below 1, so that a dropped separator (0.4096 read as 4096) would be wrong.
         QVERIFY(std::abs(*value) < 1 && std::abs(*value) > 0.01);
-        QLineEdit* edit = player.findChildren<QLineEdit*>().value(0);
+        // (The questions sit below the lesson's scrolling text, in the dock.)
+        const auto* questions = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
+        QVERIFY(questions);
+        QLineEdit* edit = questions->findChildren<QLineEdit*>().value(0);
         QVERIFY(edit);
         auto typeAnswer = [&](const QString& text) {
             edit->setFocus();

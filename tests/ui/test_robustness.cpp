@@ -177,7 +177,10 @@ private slots:
         // Open a lesson step with a question too, for its answer box; then the plain lab
         // again for the controls (a lesson step may lock some).
         QCOMPARE(w.openLesson(lesson("restitution.json"), true), QString());
-        const QList<QLineEdit*> answers = w.lessonPlayer().findChildren<QLineEdit*>();
+        // (The questions sit below the lesson's scrolling text, in the dock.)
+        const auto* questions = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
+        QVERIFY(questions);
+        const QList<QLineEdit*> answers = questions->findChildren<QLineEdit*>();
         QVERIFY(!answers.isEmpty());
         for (QLineEdit* edit : answers) {
             for (const QString& text : kGarbage) {
@@ -185,7 +188,7 @@ private slots:
                 edit->setFocus();
                 typeText(edit, text);
                 QTest::keyClick(edit, Qt::Key_Return);
-                for (QPushButton* check : w.lessonPlayer().findChildren<QPushButton*>())
+                for (QPushButton* check : questions->findChildren<QPushButton*>())
                     if (check->text() == QLatin1String("Check") && check->isVisible())
                         check->click();
             }

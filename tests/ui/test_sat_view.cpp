@@ -12,7 +12,10 @@
 
 #include "format/lesson.h"
 
+#include <QApplication>
 #include <QHeaderView>
+#include <QPushButton>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QTableWidget>
 #include <QtTest>
@@ -194,6 +197,65 @@ private slots:
         QVERIFY2(why.isEmpty(), qPrintable(why));
     }
 
+    // On a 1024×768 projector, normal and presentation: the table in the window's (enlarged)
+    // font fits its dock without scrolling sideways, and Previous, Next and All show their
+    // whole text.
+    void panelFitsItsDock_data()
+    {
+        QTest::addColumn<bool>("present");
+        QTest::newRow("normal") << false;
+        QTest::newRow("presentation") << true;
+    }
+    void panelFitsItsDock()
+    {
+        QFETCH(bool, present);
+        for (const auto& [path, step] : satSteps()) {
+            Window win;
+            QVERIFY(win.open(path, step));
+            win.w.fitToScreen(QRect(0, 0, 1024, 768));
+            if (present) {
+                win.w.setPresentation(true);
+                win.w.setWindowState(Qt::WindowNoState);
+                win.w.resize(1024, 768);
+            }
+            win.w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&win.w));
+            win.w.lessonPlayer().goToStep(step);
+            QCoreApplication::processEvents();
+            const QString where =
+                QStringLiteral("%1 step %2: ").arg(QFileInfo(path).baseName()).arg(step + 1);
+            const ui::SatPanel& panel = win.w.satPanel();
+            QVERIFY(panel.isVisible());
+            const QTableWidget& table = panel.table();
+            if (present)
+                QVERIFY2(table.font().pointSizeF() >=
+                             ui::theme::kPresentationFontScale *
+                                     QApplication::font(&table).pointSizeF() -
+                                 1e-6,
+                         qPrintable(where + QStringLiteral("the table keeps its small font")));
+            QVERIFY2(!table.horizontalScrollBar()->isVisible() &&
+                         table.horizontalHeader()->length() <= table.viewport()->width(),
+                     qPrintable(where + QStringLiteral("columns %1 px in %2 px")
+                                            .arg(table.horizontalHeader()->length())
+                                            .arg(table.viewport()->width())));
+            for (const QWidget* p = panel.parentWidget(); p; p = p->parentWidget())
+                if (const auto* scroll = qobject_cast<const QScrollArea*>(p))
+                    QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
+                             qPrintable(where + QStringLiteral("the panel scrolls sideways")));
+            for (const QPushButton* b : panel.findChildren<QPushButton*>()) {
+                const int text = b->fontMetrics().horizontalAdvance(b->text());
+                QVERIFY2(b->width() >= text + 8,
+                         qPrintable(where + QStringLiteral("%1: %2 px for %3 px of text")
+                                                .arg(b->text())
+                                                .arg(b->width())
+                                                .arg(text)));
+                // (The panel may scroll up and down in its dock: a button can be below.)
+                QVERIFY2(b->height() >= b->sizeHint().height(),
+                         qPrintable(where + b->text() + QStringLiteral(" is cut")));
+            }
+        }
+    }
+
     void tableFitsTheRightColumn_data()
     {
         QTest::addColumn<int>("width");
@@ -224,13 +286,27 @@ private slots:
                                     .arg(QFileInfo(path).baseName())
                                     .arg(step + 1)
                                     .arg(table.horizontalScrollBar()->maximum())));
-            // The verdict column says its word in full, and explains itself in the tooltip.
+            // Three columns, none wider than the table.
+            QCOMPARE(table.columnCount(), 3);
+            QVERIFY2(table.horizontalHeader()->length() <= table.viewport()->width(),
+                     qPrintable(QStringLiteral("columns %1 px in %2 px")
+                                    .arg(table.horizontalHeader()->length())
+                                    .arg(table.viewport()->width())));
+            // The verdict under the overlap says its word in full, and explains itself in
+            // the tooltip.
+            int notes = 0;
             for (int row = 0; row < table.rowCount(); ++row) {
-                const QTableWidgetItem* note = table.item(row, 3);
-                QVERIFY(note);
-                if (!note->text().isEmpty())
-                    QVERIFY(note->toolTip().size() > note->text().size());
+                const QTableWidgetItem* overlap = table.item(row, 2);
+                QVERIFY(overlap);
+                const QStringList lines = overlap->text().split(QLatin1Char('\n'));
+                if (lines.size() < 2)
+                    continue;
+                ++notes;
+                QVERIFY(lines[1] == QLatin1String("separates") ||
+                        lines[1] == QLatin1String("least overlap"));
+                QVERIFY(overlap->toolTip().size() > overlap->text().size());
             }
+            QCOMPARE(notes, 1); // the separating axis, or the one of least overlap
         }
     }
 };

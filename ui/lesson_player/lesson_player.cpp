@@ -1,4 +1,5 @@
 #include "lesson_player/lesson_player.h"
+#include "lesson_player/step_text.h"
 
 #include "common/modal_scope.h"
 #include "panels/number_field.h"
@@ -11,6 +12,7 @@
 #include <QAbstractItemView>
 #include <QComboBox>
 #include <QDir>
+#include <QEvent>
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QHBoxLayout>
@@ -19,7 +21,8 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QTextBrowser>
+#include <QScrollArea>
+#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <cmath>
@@ -36,10 +39,10 @@ constexpr double kMaxAnswer = 1e15;
 
 LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_lessonBox(new QComboBox(this)),
-      m_title(new QLabel(this)), m_about(new QLabel(this)), m_progress(new QProgressBar(this)),
-      m_stepCount(new QLabel(this)), m_stepTitle(new QLabel(this)), m_text(new QTextBrowser(this)),
-      m_questionBox(new QWidget(this)), m_questionLayout(new QVBoxLayout(m_questionBox)),
-      m_back(new QPushButton(tr("◀ Back"), this)),
+      m_title(new QLabel(this)), m_aboutToggle(new QToolButton(this)), m_about(new QLabel(this)),
+      m_progress(new QProgressBar(this)), m_stepCount(new QLabel(this)),
+      m_stepTitle(new QLabel(this)), m_text(new StepText(this)), m_questionBox(new QWidget(this)),
+      m_questionLayout(new QVBoxLayout(m_questionBox)), m_back(new QPushButton(tr("◀ Back"), this)),
       m_restart(new QPushButton(tr("Restart step"), this)),
       m_next(new QPushButton(tr("Next ▶"), this)),
       m_export(new QPushButton(tr("Export plots…"), this)),
@@ -61,6 +64,20 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     grey.setColor(QPalette::WindowText, QColor(0x55, 0x55, 0x55)); // 7.5:1 on white
     m_about->setPalette(grey);
     layout->addWidget(m_title);
+    // The introduction folds away, leaving its room to the step's text and questions.
+    m_aboutToggle->setObjectName(QStringLiteral("lessonIntroToggle"));
+    m_aboutToggle->setText(tr("Introduction"));
+    m_aboutToggle->setToolTip(tr("Show or hide the lesson's introduction"));
+    m_aboutToggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_aboutToggle->setAutoRaise(true);
+    m_aboutToggle->setCheckable(true);
+    m_aboutToggle->setChecked(true);
+    m_aboutToggle->setArrowType(Qt::DownArrow);
+    connect(m_aboutToggle, &QToolButton::toggled, this, [this](bool on) {
+        m_aboutToggle->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
+        m_about->setVisible(on && (!m_lesson || m_step == 0));
+    });
+    layout->addWidget(m_aboutToggle);
     layout->addWidget(m_about);
     // On a first start, with no lesson open, the way in: one button to the first lesson.
     m_start->setObjectName(QStringLiteral("startFirstLesson"));
@@ -85,22 +102,29 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     m_stepTitle->setFont(bold);
     m_stepTitle->setWordWrap(true);
     layout->addWidget(m_stepTitle);
-    m_text->setOpenExternalLinks(false);
-    m_text->setMinimumHeight(160);
     QFont textFont = m_text->font();
     textFont.setPointSizeF(textFont.pointSizeF() * 1.1); // readable on a projector
     m_text->setFont(textFont);
-    layout->addWidget(m_text, 1);
-    m_questionLayout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_questionBox);
+    // The text is as tall as its words; the lesson's column scrolls it (with the title above
+    // it) while the questions and buttons below stay (takeNavigation()).
+    layout->addWidget(m_text);
     // The start page (no lesson, so no text) keeps to the top instead of spreading out.
     layout->addStretch(0);
-    // Two buttons a row, so that the panel fits the narrow column of a 1024-pixel projector.
-    // They are a widget of their own, so that the window can keep them in sight below a
-    // lesson text that scrolls (takeNavigation()).
+    // The questions and the buttons are a widget of their own, so that the window can keep
+    // them in sight below a lesson text that scrolls (takeNavigation()). Two buttons a row,
+    // so that the panel fits the narrow column of a 1024-pixel projector.
     m_navigation = new QWidget(this);
     m_navigation->setObjectName(QStringLiteral("lessonNavigation"));
-    auto* buttons = new QGridLayout(m_navigation);
+    auto* bottom = new QVBoxLayout(m_navigation);
+    // In line with the text above, wherever the window puts them.
+    const QMargins margins = layout->contentsMargins();
+    bottom->setContentsMargins(margins.left(), 0, margins.right(), 0);
+    m_questionBox->setParent(m_navigation);
+    m_questionBox->setObjectName(QStringLiteral("lessonQuestions"));
+    m_questionLayout->setContentsMargins(0, 0, 0, 0);
+    bottom->addWidget(m_questionBox);
+    auto* buttons = new QGridLayout;
+    bottom->addLayout(buttons);
     buttons->setContentsMargins(0, 0, 0, 0);
     buttons->addWidget(m_back, 0, 0);
     buttons->addWidget(m_next, 0, 1);
@@ -214,9 +238,11 @@ void LessonPlayer::showStep()
         w->setVisible(has);
     // No lesson: a "start here" page instead of an empty text box.
     m_text->setVisible(has);
+    fitTextMinimum();
     const QString first = firstLessonPath();
     m_start->setVisible(!has && !first.isEmpty());
     if (!has) {
+        m_aboutToggle->setVisible(false);
         m_about->setVisible(true);
         m_title->setText(tr("Start here"));
         QString about = tr("RigidLab is a laboratory of moving bodies: run a prepared scene, "
@@ -229,7 +255,7 @@ void LessonPlayer::showStep()
                      tr("The first lesson is “%1”; the list above holds the others.")
                          .arg(m_lessonBox->itemText(index));
         m_about->setText(about);
-        m_text->clear();
+        m_text->showMarkdown(QString());
         m_rows.clear();
         buildQuestions();
         return;
@@ -242,12 +268,13 @@ void LessonPlayer::showStep()
         about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l.level).arg(l.minutes);
     m_about->setText(about);
     // The summary introduces the lesson; on the later steps their text has its room.
-    m_about->setVisible(m_step == 0);
+    m_aboutToggle->setVisible(m_step == 0 && !about.isEmpty());
+    m_about->setVisible(m_step == 0 && m_aboutToggle->isChecked());
     m_progress->setRange(0, static_cast<int>(l.steps.size()));
     m_progress->setValue(m_step + 1);
     m_stepCount->setText(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
     m_stepTitle->setText(s.title);
-    m_text->setMarkdown(s.text);
+    m_text->showMarkdown(s.text);
     m_back->setEnabled(m_step > 0);
     m_next->setEnabled(m_step + 1 < static_cast<int>(l.steps.size()));
     m_export->setEnabled(!s.plots.isEmpty());
@@ -291,6 +318,7 @@ void LessonPlayer::buildQuestions()
         v->addLayout(buttons);
         auto* result = new QLabel(box);
         result->setWordWrap(true);
+        result->setVisible(false); // no empty line under the buttons before the first try
         v->addWidget(result);
         m_questionLayout->addWidget(box);
         QuestionRow questionRow;
@@ -305,6 +333,7 @@ void LessonPlayer::buildQuestions()
             if (!parsed) {
                 result->setStyleSheet(QStringLiteral("color: #a05a00;"));
                 result->setText(tr("Type a number first."));
+                result->setVisible(true);
                 return;
             }
             const double answer = *parsed;
@@ -313,6 +342,7 @@ void LessonPlayer::buildQuestions()
                 result->setText(tr("Type a number from %1 to %2.")
                                     .arg(-kMaxAnswer, 0, 'g')
                                     .arg(kMaxAnswer, 0, 'g'));
+                result->setVisible(true);
                 return;
             }
             settle(i, judgeTry(i, answer));
@@ -366,6 +396,7 @@ void LessonPlayer::settle(std::size_t i, const lessons::Verdict& v)
                               : v.shown   ? QStringLiteral("color: #b3261e; font-weight: bold;")
                                           : QStringLiteral("color: #a05a00; font-weight: bold;"));
     row.result->setText(v.message);
+    row.result->setVisible(true);
     if (!v.measured && heldBack().contains(QStringView(lessons::kHoldBackRun))) {
         // Not measurable without a window within the limit: let the scene run rather than
         // leave the student with no way on.
@@ -410,6 +441,23 @@ QString LessonPlayer::result(int question) const
     if (question < 0 || question >= static_cast<int>(m_rows.size()))
         return QString();
     return m_rows[static_cast<size_t>(question)].result->text();
+}
+
+void LessonPlayer::fitTextMinimum()
+{
+    // The scrolling part of the column keeps at least four lines of the text, in its current
+    // (maybe presentation) font, however many questions are below it.
+    QWidget* viewport = parentWidget();
+    if (auto* scroll = qobject_cast<QScrollArea*>(viewport ? viewport->parentWidget() : nullptr))
+        scroll->setMinimumHeight(4 * QFontMetrics(m_text->font()).lineSpacing() +
+                                 2 * m_text->frameWidth() + 8);
+}
+
+void LessonPlayer::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange || event->type() == QEvent::ParentChange)
+        fitTextMinimum();
 }
 
 QWidget* LessonPlayer::takeNavigation()

@@ -16,20 +16,22 @@ class QLabel;
 class QLineEdit;
 class QProgressBar;
 class QPushButton;
-class QTextBrowser;
+class QToolButton;
 class QVBoxLayout;
 
 namespace rigidlab::ui {
 
 class SimulationController;
+class StepText;
 
 class LessonPlayer : public QWidget {
     Q_OBJECT
 public:
     explicit LessonPlayer(SimulationController& controller, QWidget* parent = nullptr);
 
-    /// Hands the Back / Next / Restart step / Export plots buttons to the caller, to lay out
-    /// where they stay in sight (below a scrolling lesson); the caller owns them then.
+    /// Hands the step's questions (answer boxes, Check, Show me) and the Back / Next / Restart
+    /// step / Export plots buttons to the caller, to lay out where they stay in sight (below
+    /// a scrolling lesson); the caller owns them then.
     QWidget* takeNavigation();
 
     /// Lists the lessons of `folder` in teaching order, numbered (lessons::lessonsInOrder).
@@ -69,8 +71,13 @@ signals:
     /// An answer released some of what the step held back; `held` is what it still holds.
     void heldBackChanged(const QStringList& held);
 
+protected:
+    void changeEvent(QEvent* event) override;
+
 private:
     void showStep();
+    /// The text's least height: a few of its lines, whatever its font.
+    void fitTextMinimum();
     void buildQuestions();
     /// Question i's verdict on this try, against the running world or, while the question
     /// keeps the scene from running, against a run without a window.
@@ -87,14 +94,15 @@ private:
     QStringList m_menuTexts;
     QComboBox* m_lessonBox;
     QLabel* m_title;
+    QToolButton* m_aboutToggle; ///< folds the introduction (m_about) away
     QLabel* m_about;
     QProgressBar* m_progress;
     QLabel* m_stepCount; ///< "Step 2 of 4", beside the progress bar
     QLabel* m_stepTitle;
-    QTextBrowser* m_text;
+    StepText* m_text;
     QWidget* m_questionBox;
     QVBoxLayout* m_questionLayout;
-    QWidget* m_navigation = nullptr; ///< Back, Next, Restart step, Export plots
+    QWidget* m_navigation = nullptr; ///< the questions; Back, Next, Restart step, Export plots
     QPushButton* m_back;
     QPushButton* m_restart;
     QPushButton* m_next;

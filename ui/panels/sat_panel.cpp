@@ -3,6 +3,7 @@
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 
+#include <QApplication>
 #include <QEvent>
 #include <QGraphicsScene>
 #include <QHBoxLayout>
@@ -35,7 +36,7 @@ QString num(double v, int decimals = 3)
 
 SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_overlay(new SatOverlayItem(*this)),
-      m_verdict(new QLabel(this)), m_table(new QTableWidget(0, 4, this)),
+      m_verdict(new QLabel(this)), m_table(new QTableWidget(0, 3, this)),
       m_summary(new QLabel(this)), m_prev(new QPushButton(tr("◀ Previous"), this)),
       m_next(new QPushButton(tr("Next ▶"), this)), m_all_button(new QPushButton(tr("All"), this))
 {
@@ -49,8 +50,6 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     m_prev->setToolTip(tr("Show the previous axis tested"));
     m_next->setToolTip(tr("Test the next axis"));
     m_all_button->setToolTip(tr("Test every axis, up to the verdict"));
-    for (QPushButton* b : {m_prev, m_next, m_all_button}) // narrower than the style's 80 px
-        b->setMinimumWidth(b->fontMetrics().horizontalAdvance(b->text()) + 16);
     auto* layout = new QVBoxLayout(this);
     QFont f = m_verdict->font();
     f.setBold(true);
@@ -58,23 +57,31 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     m_verdict->setFont(f);
     m_verdict->setWordWrap(true);
     layout->addWidget(m_verdict);
-    const QStringList headers{tr("axis"), tr("on axis [m]"), tr("overlap"), tr("note")};
+    // Three columns: what an axis means ("separates", "least overlap") is a second line under
+    // its overlap rather than a fourth column, empty on most rows.
+    const QStringList headers{tr("axis"), tr("on axis [m]"), tr("overlap")};
     const QStringList headerTips{
         tr("The axis is the normal of this edge: polygon A or B, then the edge's number."),
         tr("The interval each polygon covers when projected on the axis (A above, B below)."),
         tr("How far the intervals overlap, in metres; \"gap\" when they do not, and the axis "
-           "separates."),
-        tr("What this axis means for the test.")};
+           "separates. Below it, what the axis means for the test.")};
     m_table->setHorizontalHeaderLabels(headers);
     for (int c = 0; c < headerTips.size(); ++c)
         m_table->horizontalHeaderItem(c)->setToolTip(headerTips[c]);
     m_table->verticalHeader()->setVisible(false);
     m_table->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // As wide as the column, never wider: the intervals take what the axis and the overlap
+    // leave, and wrap when that is too little.
     QHeaderView* columns = m_table->horizontalHeader();
     columns->setMinimumSectionSize(24);
-    for (int c = 0; c < 3; ++c)
-        columns->setSectionResizeMode(c, QHeaderView::ResizeToContents);
-    columns->setSectionResizeMode(3, QHeaderView::Stretch);
+    columns->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    columns->setSectionResizeMode(1, QHeaderView::Stretch);
+    columns->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+    m_table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    columns->setTextElideMode(Qt::ElideRight);
+    connect(columns, &QHeaderView::sectionResized, m_table,
+            [this] { m_table->resizeRowsToContents(); });
+    m_table->viewport()->installEventFilter(this);
     m_table->setWordWrap(true);
     m_table->setTextElideMode(Qt::ElideNone);
     m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -91,7 +98,10 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     layout->addWidget(m_table, 1);
     m_summary->setWordWrap(true);
     layout->addWidget(m_summary);
-    auto* buttons = new QHBoxLayout;
+    // Side by side where they fit with their whole text, else one under the other
+    // (resizeEvent()).
+    auto* buttons = new QBoxLayout(QBoxLayout::LeftToRight);
+    m_buttons = buttons;
     buttons->addWidget(m_prev);
     buttons->addWidget(m_next);
     buttons->addWidget(m_all_button);
@@ -104,7 +114,75 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     connect(m_next, &QPushButton::clicked, this, &SatPanel::nextAxis);
     connect(m_all_button, &QPushButton::clicked, this, &SatPanel::showAll);
     connect(&m_controller, &SimulationController::worldChanged, this, &SatPanel::refresh);
+    fitFonts();
     refresh();
+}
+
+void SatPanel::fitFonts()
+{
+    // Item views may have a smaller font of their own (the platform's), which does not follow
+    // the window's: they keep its size relative to the window's font, so that presentation
+    // mode enlarges them too.
+    const double scale = font().pointSizeF() / QApplication::font().pointSizeF();
+    for (QWidget* w :
+         {static_cast<QWidget*>(m_table), static_cast<QWidget*>(m_table->horizontalHeader())}) {
+        QFont f = QApplication::font(w);
+        f.setPointSizeF(f.pointSizeF() * scale);
+        w->setFont(f);
+    }
+    for (QPushButton* b : {m_prev, m_next, m_all_button}) // narrower than the style's 80 px
+        b->setMinimumWidth(b->fontMetrics().horizontalAdvance(b->text()) + 16);
+    fitButtons();
+    fitColumns();
+}
+
+void SatPanel::fitColumns()
+{
+    // The axis and overlap columns as wide as their header and cells where that leaves the
+    // intervals their width; in a narrower column, as wide as their cells alone (the header
+    // elided, its tooltip in full), so that the intervals keep room to wrap in.
+    QHeaderView* columns = m_table->horizontalHeader();
+    // (Public in QAbstractItemView, protected in QTableView.)
+    const auto cells = [view = static_cast<const QAbstractItemView*>(m_table)](int column) {
+        return view->sizeHintForColumn(column);
+    };
+    const int wanted = cells(0) + cells(1) + cells(2);
+    const int headers = columns->sectionSizeHint(0) + columns->sectionSizeHint(2) + cells(1);
+    if (std::max(wanted, headers) <= m_table->viewport()->width()) {
+        columns->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+        columns->setSectionResizeMode(2, QHeaderView::ResizeToContents);
+    } else {
+        const int least = m_table->fontMetrics().horizontalAdvance(QStringLiteral("0.00")) + 8;
+        for (int c : {0, 2}) {
+            columns->setSectionResizeMode(c, QHeaderView::Fixed);
+            columns->resizeSection(c, std::max(least, cells(c)));
+        }
+    }
+    m_table->resizeRowsToContents();
+}
+
+void SatPanel::fitButtons()
+{
+    int needed = 2 * m_buttons->spacing() + layout()->contentsMargins().left() +
+                 layout()->contentsMargins().right();
+    for (QPushButton* b : {m_prev, m_next, m_all_button})
+        needed += b->minimumWidth();
+    const auto direction = width() >= needed ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom;
+    if (m_buttons->direction() != direction)
+        m_buttons->setDirection(direction);
+}
+
+void SatPanel::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    fitButtons();
+}
+
+void SatPanel::changeEvent(QEvent* event)
+{
+    QWidget::changeEvent(event);
+    if (event->type() == QEvent::FontChange)
+        fitFonts();
 }
 
 SatPanel::~SatPanel()
@@ -218,6 +296,8 @@ bool SatPanel::eventFilter(QObject* watched, QEvent* event)
     // When the view changes size (a dock opens beside it), follow the axis again once the
     // view has handled the resize itself.
     // (Types first: a view being destroyed is no longer a WorldView to compare with.)
+    if (event->type() == QEvent::Resize && watched == m_table->viewport())
+        fitColumns();
     if (event->type() == QEvent::Resize && watched == static_cast<QObject*>(m_view.data()))
         QMetaObject::invokeMethod(
             this, [this] { followAxis(false); }, Qt::QueuedConnection);
@@ -262,16 +342,16 @@ void SatPanel::updateTable()
         const physics::SatAxis& ax = axes[static_cast<std::size_t>(i)];
         const bool separates = i == m_result.separatingAxis;
         const bool least = i == m_result.leastAxis && m_shown == total;
+        const QString overlap =
+            ax.overlap < 0 ? tr("gap %1").arg(num(-ax.overlap, 2)) : num(ax.overlap, 2);
+        const QString note = separates ? tr("separates") : least ? tr("least overlap") : QString();
         const QStringList cells{
             tr("%1 %2", "polygon (A or B), edge number")
                 .arg(ax.owner == 0 ? tr("A") : tr("B"))
                 .arg(ax.edge),
             tr("A %1 … %2\nB %3 … %4")
                 .arg(num(ax.minA, 2), num(ax.maxA, 2), num(ax.minB, 2), num(ax.maxB, 2)),
-            ax.overlap < 0 ? tr("gap %1").arg(num(-ax.overlap, 2)) : num(ax.overlap, 2),
-            separates ? tr("separates")
-            : least   ? tr("least overlap")
-                      : QString()};
+            note.isEmpty() ? overlap : overlap + QLatin1Char('\n') + note};
         QString tip =
             tr("Axis %1: the normal of edge %2 of %3. On it, %4 covers [%5, %6] m and %7 covers "
                "[%8, %9] m.")
@@ -291,8 +371,7 @@ void SatPanel::updateTable()
         for (int c = 0; c < cells.size(); ++c) {
             auto* item = new QTableWidgetItem(cells[c]);
             item->setToolTip(tip);
-            if (c < 3)
-                item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
+            item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
             if (i == m_shown - 1)
                 item->setBackground(QColor(255, 244, 200));
             m_table->setItem(i, c, item);
@@ -316,6 +395,7 @@ void SatPanel::updateTable()
         m_verdict->setText(tr("Overlapping: no axis separates them."));
         m_summary->setText(summary());
     }
+    fitColumns();
     if (m_overlay)
         m_overlay->update();
 }

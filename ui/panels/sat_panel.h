@@ -16,6 +16,7 @@
 #include <QWidget>
 #include <array>
 
+class QBoxLayout;
 class QLabel;
 class QPushButton;
 class QTableWidget;
@@ -58,9 +59,19 @@ public slots:
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
 
 private:
     void updateTable();
+    /// The table and its header at the window's (maybe presentation) scale; the buttons as
+    /// wide as their text.
+    void fitFonts();
+    /// The axis and overlap columns narrow enough to leave the intervals room (no sideways
+    /// scrolling).
+    void fitColumns();
+    /// The buttons side by side where the panel is wide enough for them, else stacked.
+    void fitButtons();
     /// The view showing the overlay, or null (registers the overlay with its Fit scene).
     WorldView* worldView();
     /// Pans and zooms the view to what the overlay draws: always after a step through the
@@ -81,6 +92,7 @@ private:
     QPushButton* m_prev;
     QPushButton* m_next;
     QPushButton* m_all_button;
+    QBoxLayout* m_buttons;      ///< Previous, Next, All
     QPointer<WorldView> m_view; ///< the view whose Fit scene includes the overlay
 };
 

@@ -91,6 +91,26 @@ constexpr std::array<OverlayInfo, kOverlayCount> kOverlays{{
      QT_TRANSLATE_NOOP("MainWindow", "Springs"), "springs", "J"},
 }};
 
+/// Raises the one of `docks` that the step cares most about, where they share tabs: its table
+/// (its numbers are what the questions ask about), then the first plot it lists (its text
+/// talks about it), then the controls, which the student finds by their tab.
+void raiseFirst(const QMap<QString, QDockWidget*>& named, QList<QDockWidget*> docks)
+{
+    const auto rank = [&named](QDockWidget* d) {
+        for (const char* table : {"sat", "bounces", "collision"})
+            if (d == named.value(QLatin1String(table)))
+                return 0;
+        return d == named.value(QStringLiteral("controls")) ||
+                       d == named.value(QStringLiteral("inspector"))
+                   ? 2
+                   : 1;
+    };
+    std::stable_sort(docks.begin(), docks.end(),
+                     [&](QDockWidget* a, QDockWidget* b) { return rank(a) < rank(b); });
+    if (!docks.isEmpty())
+        docks.first()->raise();
+}
+
 } // namespace
 
 MainWindow::MainWindow(QWidget* parent)
@@ -752,24 +772,15 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     // Springs and joints are part of the scene, not a teaching aid: drawn whenever there are any.
     if (!step.scene.springs.empty() || !step.scene.joints.empty())
         overlayAction(Overlay::SpringsJoints)->setChecked(true);
+    // What the questions hold back stays hidden until answered.
+    applyHeldBack(m_player->heldBack());
     // Room for the step's tables and plots beside the view.
     QList<QDockWidget*> right;
     for (const QString& name : step.panels + step.plots)
         if (QDockWidget* d = dock(name);
             d && !d->isHidden() && dockWidgetArea(d) == Qt::RightDockWidgetArea)
             right << d;
-    // Where they share tabs, the step's table wins (its numbers are what the questions ask
-    // about), then the controls it tells the student to use, then its plots.
-    const auto rank = [this](QDockWidget* d) {
-        for (const char* table : {"sat", "bounces", "collision"})
-            if (d == m_docks.value(QLatin1String(table)))
-                return 0;
-        return d == m_docks.value(QStringLiteral("controls")) ? 1 : 2;
-    };
-    std::stable_sort(right.begin(), right.end(),
-                     [&](QDockWidget* a, QDockWidget* b) { return rank(a) < rank(b); });
-    if (!right.isEmpty())
-        right.first()->raise();
+    raiseFirst(m_docks, right);
     fitSideColumns(width());
     m_controls->setAllowed(step.allow);
     if (step.sat) {
@@ -779,7 +790,6 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     } else {
         m_sat->setBodies(-1, -1);
     }
-    applyHeldBack(m_player->heldBack());
     m_controller->setRunning(step.autoplay && !m_runHeld);
 }
 
@@ -796,11 +806,17 @@ void MainWindow::applyHeldBack(const QStringList& held)
     if (!m_inLesson || !lesson)
         return;
     const lessons::LessonStep& step = lesson->steps[static_cast<size_t>(m_player->stepIndex())];
+    QList<QDockWidget*> shown; // by an answer that released them: brought to the front
     for (const auto& [names, prefix] : {std::pair{&step.panels, QStringLiteral("panel:")},
                                         std::pair{&step.plots, QStringLiteral("plot:")}})
         for (const QString& name : *names)
-            if (QDockWidget* d = dock(name))
-                d->setVisible(!held.contains(prefix + name));
+            if (QDockWidget* d = dock(name)) {
+                const bool visible = !held.contains(prefix + name);
+                if (visible && d->isHidden())
+                    shown << d;
+                d->setVisible(visible);
+            }
+    raiseFirst(m_docks, shown);
 }
 
 void MainWindow::leaveLesson()

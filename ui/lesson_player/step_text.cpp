@@ -1,0 +1,141 @@
+#include "lesson_player/step_text.h"
+
+#include <QAbstractTextDocumentLayout>
+#include <QEvent>
+#include <QResizeEvent>
+#include <QScrollBar>
+#include <QTextCursor>
+#include <QTextDocument>
+#include <QTextFrame>
+#include <QTextTable>
+
+#include <array>
+#include <cmath>
+#include <memory>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// The tables of `doc`, outermost first.
+QList<QTextTable*> tablesOf(QTextDocument& doc)
+{
+    QList<QTextTable*> tables;
+    QList<QTextFrame*> frames{doc.rootFrame()};
+    while (!frames.isEmpty()) {
+        QTextFrame* frame = frames.takeFirst();
+        if (auto* table = qobject_cast<QTextTable*>(frame))
+            tables << table;
+        frames << frame->childFrames();
+    }
+    return tables;
+}
+
+} // namespace
+
+StepText::StepText(QWidget* parent) : QTextBrowser(parent)
+{
+    setOpenExternalLinks(false);
+    // No scroll bars of its own: the lesson around it scrolls.
+    setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    setLineWrapMode(QTextEdit::WidgetWidth);
+    // A word wider than the column (a long number in a table cell) breaks rather than being cut.
+    QTextOption option = document()->defaultTextOption();
+    option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    document()->setDefaultTextOption(option);
+    QSizePolicy policy(QSizePolicy::Preferred, QSizePolicy::Preferred);
+    policy.setHeightForWidth(true);
+    setSizePolicy(policy);
+}
+
+void StepText::showMarkdown(const QString& markdown)
+{
+    m_markdown = markdown;
+    m_fittedWidth = -1;
+    fit();
+}
+
+void StepText::fit()
+{
+    const int width = viewport()->width();
+    m_fittedWidth = width;
+    setMarkdown(m_markdown);
+    QTextOption option = document()->defaultTextOption();
+    option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    document()->setDefaultTextOption(option);
+    const QList<QTextTable*> tables = tablesOf(*document());
+    m_tableScale = 1.0;
+    for (QTextTable* table : tables) {
+        // As wide as the column at most, with thin cells.
+        QTextTableFormat format = table->format();
+        format.setWidth(QTextLength(QTextLength::PercentageLength, 100));
+        format.setCellPadding(2);
+        format.setCellSpacing(0);
+        format.setBorderCollapse(true);
+        format.setColumnWidthConstraints({});
+        table->setFormat(format);
+    }
+    if (tables.isEmpty() || width <= 0)
+        return updateGeometry();
+    // The tables' text smaller, in steps, until the widest fits; below 70 % it would be
+    // unreadable, and the words break instead.
+    const double base = font().pointSizeF();
+    document()->setTextWidth(width);
+    for (const double scale : std::array{1.0, 0.9, 0.8, 0.7}) {
+        m_tableScale = scale;
+        if (scale < 1.0) {
+            for (QTextTable* table : tables) {
+                QTextCursor cursor = table->firstCursorPosition();
+                cursor.setPosition(table->lastCursorPosition().position(), QTextCursor::KeepAnchor);
+                QTextCharFormat smaller;
+                smaller.setFontPointSize(base * scale);
+                cursor.mergeCharFormat(smaller);
+            }
+        }
+        // The widest a word makes the text, at this scale.
+        const std::unique_ptr<QTextDocument> probe(document()->clone());
+        QTextOption words = probe->defaultTextOption();
+        words.setWrapMode(QTextOption::WordWrap);
+        probe->setDefaultTextOption(words);
+        probe->setTextWidth(width);
+        if (std::ceil(probe->size().width()) <= width)
+            break;
+    }
+    updateGeometry();
+}
+
+int StepText::heightForWidth(int width) const
+{
+    const int frame = 2 * frameWidth();
+    const std::unique_ptr<QTextDocument> probe(document()->clone());
+    probe->setTextWidth(std::max(1, width - frame));
+    return static_cast<int>(std::ceil(probe->size().height())) + frame;
+}
+
+QSize StepText::sizeHint() const
+{
+    const int width = QTextBrowser::sizeHint().width();
+    return {width, heightForWidth(this->width() > 0 ? this->width() : width)};
+}
+
+QSize StepText::minimumSizeHint() const
+{
+    return {fontMetrics().averageCharWidth() * 12, fontMetrics().lineSpacing() + 2 * frameWidth()};
+}
+
+void StepText::resizeEvent(QResizeEvent* event)
+{
+    QTextBrowser::resizeEvent(event);
+    if (viewport()->width() != m_fittedWidth)
+        fit();
+}
+
+void StepText::changeEvent(QEvent* event)
+{
+    QTextBrowser::changeEvent(event);
+    if (event->type() == QEvent::FontChange)
+        fit();
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,39 @@
+#pragma once
+// A lesson step's text: as tall as its words at the width it is given, so that it scrolls with
+// the lesson around it rather than inside a box of its own, and never wider than that width
+// (a table's text shrinks, and a word too long for its cell breaks, instead of a sideways
+// scroll bar).
+
+#include <QTextBrowser>
+
+namespace rigidlab::ui {
+
+class StepText : public QTextBrowser {
+    Q_OBJECT
+public:
+    explicit StepText(QWidget* parent = nullptr);
+
+    /// Shows `markdown`, fitted to the current width.
+    void showMarkdown(const QString& markdown);
+    /// The scale of the tables' text that made them fit (1 when they fit as they are).
+    double tableScale() const { return m_tableScale; }
+
+    bool hasHeightForWidth() const override { return true; }
+    int heightForWidth(int width) const override;
+    QSize sizeHint() const override;
+    QSize minimumSizeHint() const override;
+
+protected:
+    void resizeEvent(QResizeEvent* event) override;
+    void changeEvent(QEvent* event) override;
+
+private:
+    /// Lays the text out again at the viewport's width, its tables' text as large as fits.
+    void fit();
+
+    QString m_markdown;
+    double m_tableScale = 1.0;
+    int m_fittedWidth = -1; ///< viewport width of the last fit() [px]
+};
+
+} // namespace rigidlab::ui
