@@ -38,14 +38,13 @@ public:
     }
     bool isOpen() const { return m_file != nullptr; }
 
-    /// Numbers go out with 17 significant digits and never depend on the locale
-    /// (QCoreApplication sets the C library's locale from the environment, so printf might
-    /// write decimal commas).
+    /// Numbers go out as the shortest text that reads back to the same double (t = 0.005,
+    /// not 0.0050000000000000001) and never depend on the locale (QCoreApplication sets the C
+    /// library's locale from the environment, so printf might write decimal commas).
     void number(double value)
     {
         char text[32];
-        const auto end =
-            std::to_chars(text, text + sizeof text, value, std::chars_format::general, 17);
+        const auto end = std::to_chars(text, text + sizeof text, value);
         m_buffer.append(text, end.ptr);
     }
     void integer(long long value)
