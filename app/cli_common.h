@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What every rigidlab-cli command shares: its exit statuses, how it prints, and how it reads its
 // command line (Qt's QCommandLineParser, one per command, with the messages of one style).

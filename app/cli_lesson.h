@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // rigidlab-cli lesson: a lesson's outline, or its plots written for handouts without a window.
 // Argument handling only; the work is in rigidlab_lessons (loading) and rigidlab_ui (plots).

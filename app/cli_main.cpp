@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // rigidlab-cli: scenes without a window. Argument handling only; the work is done by
 // rigidlab_lessons (scene_loader, scene_run, sat_report, document).
 

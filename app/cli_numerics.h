@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // rigidlab-cli's numerical commands: error-vs-time (the work-precision sweep) and stress (the
 // stiff and extreme cases). Argument handling only; the work is in rigidlab_lessons.

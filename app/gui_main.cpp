@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // rigidlab: the lab window. `rigidlab [FILE.json] [--step N]` opens that scene or lesson
 // (at step N), or the welcome scene and the lesson list. `rigidlab --measure-frames N
 // SCENE.json` runs the scene in the window for N frames and prints their times.

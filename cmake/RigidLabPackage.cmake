@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # ./lab package: a Debian package of what cmake --install puts in place, by CPack's DEB
 # generator. Its dependencies are computed from the programs' libraries (dpkg-shlibdeps),
 # its version is project()'s.

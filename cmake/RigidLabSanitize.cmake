@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Robustness builds (issue 7).
 #
 # RIGIDLAB_SANITIZE: everything (the engine, the lessons, the window, the programs and every

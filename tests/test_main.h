@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The main() of every test executable: QTEST_MAIN, run in a world of its own.
 //

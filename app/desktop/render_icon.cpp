@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // render-icon: writes PNG renderings of the SVG icon at the freedesktop.org sizes, so that the
 // PNGs are never edited by hand. Build-time tool, not installed.
 //   render-icon ICON.svg OUTDIR SIZE...   writes OUTDIR/SIZExSIZE/apps/ICON.png

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Files written whole or not at all. Every file the lab writes (traces, diagnostics, sweep and
 // stress tables, exported scenes and plots) goes to a temporary file beside its destination,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Where RigidLab's shipped scenes and lessons are, and where a user keeps their own.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The command line's words for a divergence (physics::Divergence is data only). The CLI's
 // messages stay English; the window words the same data through tr() (ui/divergence_text.h).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Checking any RigidLab document (for `rigidlab-cli validate`). A document says what it is by
 // its top-level version key: "rigidlab" for a scene. Each kind of document is one entry of

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Checked reading of a parsed JSON document. Every getter names the place it reads (a JSON
 // path such as `bodies[2].shape.radius`), and the first thing found wrong becomes the one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A lesson step's worlds: its scene, its settings on top, and one world per compared variant.
 
 #include "format/lesson.h"

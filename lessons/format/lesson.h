@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A lesson: an ordered list of steps, each with its text, a prepared scene and settings, and
 // only the plots, overlays and panels the step needs. Format: lessons/LESSON_FORMAT.md.

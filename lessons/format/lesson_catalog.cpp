@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "format/lesson_catalog.h"
 
 #include "format/data_dirs.h"

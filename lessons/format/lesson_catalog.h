@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The shipped lessons in the order they are taught. Each lesson file may give its place
 // ("order"), a one-line description and its duration ("minutes"); the lesson menu lists them

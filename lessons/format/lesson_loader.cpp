@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lesson files, format v1 (lessons/LESSON_FORMAT.md): reading and checking. As with scenes,
 // the first problem found is the one reported, as `FILE: PLACE: what is wrong`, and the checks
 // follow the file's order so that it is the first one a reader of the file would meet.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lesson files: the parts of a step that name bodies of its scene, the SAT pair and the
 // questions with what they measure (lessons/LESSON_FORMAT.md). Read for lesson_loader.cpp.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Reading a lesson file: the parts kept apart from lesson_loader.cpp (lesson_questions.cpp).
 

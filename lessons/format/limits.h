@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The magnitudes a scene or a lesson may hold, and the window's fields accept.
 //

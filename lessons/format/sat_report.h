@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The separating axis test as data: reads polygon pairs from JSON, runs physics::satPolygons
 // on each and reports every axis it tested (for `rigidlab-cli sat` and the SAT lesson).

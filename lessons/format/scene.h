@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A scene as a file describes it: the world settings and the definitions of its bodies,
 // springs and joints, ready to build a physics::World. See lessons/SCENE_FORMAT.md.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Scene files, format v1: reading and checking. The order of the checks is the order of the
 // file's sections (version, world, bodies, springs, joints), so the first problem reported is
 // the first one a reader of the file would meet.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Reading scene files (format v1, lessons/SCENE_FORMAT.md). Everything is checked; the first
 // problem found comes back as one line `FILE: PLACE: what is wrong`, where PLACE is a JSON

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The work-precision sweep (see error_vs_time.h).
 
 #include "numerics/error_vs_time.h"

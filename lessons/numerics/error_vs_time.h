@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Error against run time: the work-precision sweep behind `rigidlab-cli error-vs-time` and the
 // window's "Error vs run time" panel.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The same equations integrated by Boost.Odeint, the library a user might pick instead:
 // runge_kutta4 at a fixed step, and runge_kutta_dopri5 in a controlled stepper (its error
 // checker with absolute = relative tolerance), with the state as a std::vector<double>

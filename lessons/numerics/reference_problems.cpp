@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The reference problems and their exact solutions (see reference_problems.h).
 
 #include "numerics/reference_problems.h"

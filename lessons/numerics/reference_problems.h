@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Reference problems for measuring the integrators: worlds without contacts whose motion is
 // known, exactly where mathematics gives it, from a much finer run where it does not.

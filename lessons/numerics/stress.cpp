@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The stress suite (see stress.h): every case builds its worlds in code, runs them, and
 // judges them by what happened, against the verdict it is documented to have.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The stiff and extreme cases behind `rigidlab-cli stress`: each case builds its worlds, runs
 // them and gives a verdict per row, beside the verdict it is documented to have

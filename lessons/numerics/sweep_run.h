@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: one integration of a reference problem's equations, by the engine's integrators
 // (error_vs_time.cpp) or by Boost.Odeint's (odeint_runs.cpp), with an optional observer at

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Judging a student's answer against what the simulation measured, in words a student reads.
 
 #include "run/measurements.h"

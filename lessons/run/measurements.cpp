@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What a lesson measures while its world runs, and how a typed answer is judged.
 //
 // Bounces and apexes: a bounce is the vertical velocity of a body's centre of mass turning

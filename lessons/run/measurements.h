@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What lessons measure in a running world: bounce apexes, collisions (velocities before and
 // after, with the spin the full impulse formula predicts and the one the formula without its

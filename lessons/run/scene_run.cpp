@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "run/scene_run.h"
 
 #include "format/atomic_file.h"

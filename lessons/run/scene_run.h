@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Running a scene headless for a fixed number of steps, writing a trace of the bodies and
 // the world's diagnostics as CSV (for `rigidlab-cli run`, and for tests that pin a run).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The broad phase's dynamic tree of boxes (see aabb_tree.h).
 
 #include "aabb_tree.h"

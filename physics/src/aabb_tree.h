@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: a dynamic tree of bounding boxes (a bounding volume hierarchy kept balanced as
 // boxes come and go), for the broad phase.

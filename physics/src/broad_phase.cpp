@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::BroadPhase (profile.h): the broad phase (see broad_phase.h).
 
 #include "broad_phase.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: the broad phase finds the pairs of bodies whose bounding boxes overlap.
 

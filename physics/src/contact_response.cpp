@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::ContactSolve (profile.h): the contact solver (contact_solver.cpp) on this step's
 // contacts, then what its impulses mean for the rest of the step: the positions moved by the
 // change of velocity, the joints' velocities and positions projected back (joints.cpp), and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::ContactSolve (profile.h): collision response by impulses.
 //
 // The seed's impulse (its equations 1.1-1.6): with n from A to B and the relative normal

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: stage 5 of a step, collision response on the contacts found this step.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Continuous collision by speculative contacts (Catto, "Continuous Collision", GDC 2013;
 // Box2D v3's speculative margin). The contact solver already lets a contact with a gap close
 // by at most that gap within the step (its target vn >= -separation / dt) and times a bounce

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: keeping the processor's vector state clean for the engine's SSE code.
 //

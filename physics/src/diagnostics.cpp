@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::Diagnostics (profile.h): the measured quantities.
 
 #include "diagnostics_compute.h"

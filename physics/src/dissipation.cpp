@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The energy that drag, the dampers of springs (inside integration) and contacts (after the
 // contact solver) take out in a step, so that the diagnostics can tell it from the
 // integrator's error.

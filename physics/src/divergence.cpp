@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // After a step: is the world still a simulation? A non-finite position, angle or velocity,
 // or a total energy grown past its bound (DivergenceSettings), stops it with a diagnosis.
 // Explicit Euler on a stiff spring grows its energy by (1 + (w h)^2) per step: the bound

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: the world's bodies and force elements seen as one ODE system over the state
 // (q, v) of the moving bodies. forces.cpp gives the applied forces, joints.cpp the exact

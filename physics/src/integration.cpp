@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::Forces and Stage::Integration (profile.h): the chosen integrator over the moving
 // bodies' state, the forces evaluated at each of its stages (forces.cpp, joints.cpp), the
 // joints projected back after the step (joints.cpp), and what drag and dampers took

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The implicit midpoint rule, for stiff springs:
 //   y1 = y0 + h f(t + h/2, (y0 + y1) / 2),   y = (q, v),  f = (v, a(t, q, v)).
 // It is A-stable (a linear oscillator keeps its amplitude exactly, whatever k h^2), of order

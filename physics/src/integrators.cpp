@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The seed's four integrators over the whole state (q, v), forces evaluated again at every
 // stage; the adaptive and implicit ones are in integrators_adaptive.cpp and
 // integrator_implicit.cpp.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Dormand-Prince 5(4): an embedded Runge-Kutta pair with error control. Within one world
 // step h it takes as many substeps as its tolerances need, carrying the last accepted
 // substep's size over to the next world step.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Islands and sleeping. Bodies that touch (a contact with points), or that a pin or a spring
 // joins, form an island; static and kinematic bodies belong to none (a pile on the ground is
 // one island, not glued to every other pile by the ground). An island whose bodies have all

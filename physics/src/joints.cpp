@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Pin joints, solved exactly: inside every force evaluation the joint forces lambda solve
 //   K lambda = -C''_free,   K = J M^-1 J^T,
 // so that each joint's relative acceleration is zero (Lagrange multipliers). Integration

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::NarrowPhase (profile.h), its contact manifolds: two polygons by clipping the
 // incident edge against the SAT's reference face (sat.cpp), circles in closed form, and the
 // dispatch over pairs of shapes.

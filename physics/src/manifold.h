@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: what the SAT (sat.cpp) hands to the manifold builder (manifold.cpp): the two
 // polygons placed in the world, and the reference face it chose.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::NarrowPhase (profile.h): from the broad phase's pairs to contacts. The geometry is
 // manifold.cpp's (and, for two polygons, sat.cpp's); this file adds what a contact carries
 // from step to step and from its bodies: the warm-start impulses and the mixed material.

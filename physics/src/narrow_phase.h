@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: Stage::NarrowPhase (profile.h), the contacts of the pairs the broad phase found.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::NarrowPhase (profile.h), its test for polygons: the separating axis theorem (the
 // seed's method). The manifolds it leads to are built in manifold.cpp.
 //

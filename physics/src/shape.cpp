@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shapes: convex polygons from vertex lists, and mass properties.
 
 #include "rigidlab/physics/shape.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A step built from what the world holds: the stages a scene does not need are left out.
 //
 //   - Contacts (broad and narrow phase, the contact solver) only when some two bodies can

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: semi-implicit (symplectic) Euler's update, defined once. The integrator over the
 // ODE state (integrators.cpp) and the direct path over the bodies (integration.cpp) both call

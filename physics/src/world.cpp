@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // World::step(): the stages in the order of physics::Stage (profile.h), which names each
 // stage's file. This file only calls them; the world is built and changed in world_setup.cpp.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The world's equations of motion as an OdeSystem of their own, without the contact stages
 // of step(): what a reference solution or another ODE library integrates.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Private: the world's buffers reused from step to step, shared by the files that implement
 // World's stages (profile.h names them), the timer of a stage, and World::withState. Nothing

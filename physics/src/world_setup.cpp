@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Building a world and changing it between steps: bodies, springs and joints, the settings,
 // and a body's pose, velocity and mass. Each setter asserts its own preconditions: the ranges
 // of limits.h, which the callers (a scene file, a typed value) check before with a message.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Benchmarks: the same scenes built in any engine, stepped and timed by one harness, so that
 // RigidLab and its peers (Box2D, Chipmunk: tests/bench/) are measured on equal terms.

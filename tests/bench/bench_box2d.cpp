@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Box2D 2.4's side of the benchmarks: the same bodies in a b2World.
 
 #include "bench_peers.h"

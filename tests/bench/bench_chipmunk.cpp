@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Chipmunk 7's side of the benchmarks: the same bodies in a cpSpace.
 
 #include "bench_peers.h"

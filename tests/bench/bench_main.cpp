@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // rigidlab-bench: the benchmark scenes in RigidLab, Box2D 2.4 and Chipmunk 7, one table.
 //   rigidlab-bench [--scene NAME] [--steps N] [--runs K]
 // Built and run by `./lab bench`; not a test (timings depend on the machine).

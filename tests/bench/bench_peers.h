@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The peers' adapters, each in its own file and compiled only when its engine is installed.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // RigidLab's side of the benchmarks: the engine-neutral scene as a physics::World.
 
 #include "bench.h"

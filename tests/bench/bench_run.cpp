@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The benchmark harness: time the steps, measure the stability figure, print the table.
 
 #include "bench.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The benchmark scenes, engine-neutral. Every engine builds exactly these bodies.
 
 #include "bench.h"

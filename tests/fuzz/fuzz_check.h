@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the fuzz targets share: a failed invariant is a crash with a message, so that libFuzzer
 // keeps the input that made it (as it does for a sanitizer report).

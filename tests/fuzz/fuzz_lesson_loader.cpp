@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzz target: the lesson loader (loadLessonJson) on any bytes, as a lesson file in the shipped
 // lessons' folder, so that its scene paths can name the shipped scenes (and try to escape).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzz target: the separating axis test and the contact manifolds (physics/src/sat.cpp).
 //
 // The bytes are decoded into two shapes (convex polygons made by makePolygon, as a scene file

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Fuzz target: the scene loader (loadSceneJson) on any bytes, then the world it builds.
 //
 // Whatever the bytes, the loader returns: a scene or one error line naming the source. A scene

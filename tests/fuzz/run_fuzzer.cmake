@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # Runs one fuzz target for a fixed number of inputs from a fresh working corpus, seeded from
 # SEEDS (never written to). Fails on any crash, leak, sanitizer report or broken invariant.
 #   cmake -DFUZZER=path -DSEEDS=dir -DWORK=dir -DRUNS=n [-DDICT=file] -P run_fuzzer.cmake

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: GPL-3.0-or-later
 # The installed lab works where it is installed, and only from there: installs the build into a
 # fresh prefix, moves that prefix elsewhere (so nothing can use a path compiled in at build or
 # install time), then runs the installed programs and checks the desktop files.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Every file the lab writes is written whole or not at all: a write that fails (a full disk,
 // simulated by a file size limit that stops root as well; a missing or read-only folder)
 // leaves the previous file as it was, leaves no temporary file behind, and says why.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // rigidlab-cli as a user meets it: run as a process, judged by its exit status, its output
 // and the files it leaves (or must not leave).
 

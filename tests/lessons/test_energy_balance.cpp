@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The energy balance of `rigidlab-cli run --diagnostics`: the columns dissipated and drift.
 // The drift is the numerical error alone, (total + dissipated - E0) / |E0|: what contacts,
 // friction, drag and dampers take is physics, and is added back.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Tests of lessons, one executable: the lesson loader and its checks
 // (test_lesson_loader.cpp), and what the lessons measure, judge and claim about the physics

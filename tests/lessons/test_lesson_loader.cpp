@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The lesson loader: the shipped lessons, every check with its place and message, scene paths
 // that may not leave the lesson's folder, and the step's worlds.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // What lessons measure and judge, on real runs; and the physics the shipped lessons claim in
 // their texts, checked on the lessons' own scenes and settings.
 

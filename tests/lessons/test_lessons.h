@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Tests of the lessons library, one executable: the scene loader (test_scene_loader.cpp) and
 // running scenes, validation and the SAT report (test_scene_run.cpp). Shared helpers here.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Hostile files: every limit of the scene and lesson formats is enforced with its place and
 // its range (lessons/limits.h), and a lesson reads only plain files inside its own folder.
 

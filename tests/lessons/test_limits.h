@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Hostile files (test_limits.cpp): every limit of the scene and lesson formats with its place
 // and range, and scene paths that try to leave a lesson's folder. The class is declared here,

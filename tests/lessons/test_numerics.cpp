@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The work-precision sweep and the stress suite: observed orders from the sweep on the
 // oscillator (1, 1, 2, 4, 5 or 4 for the embedded pair, 2 for implicit midpoint, and
 // Boost.Odeint's methods beside ours), exact references checked against each other, and every

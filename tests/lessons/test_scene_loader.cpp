@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The scene loader: every check, its place and its message; defaults; building a world.
 
 #include "test_lessons.h"

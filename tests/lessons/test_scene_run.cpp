@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The shipped scenes, validation, the headless runner and the SAT report.
 
 #include "test_lessons.h"

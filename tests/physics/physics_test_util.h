@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Shared helpers of the physics tests:
 //  - isClose / RL_VERIFY_NEAR: a tolerance comparison that works near zero (qFuzzyCompare

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Collision response against textbook mechanics: head-on collisions of circles, the bounce
 // height of a dropped ball, momentum in free multi-body collisions, an off-centre hit that
 // needs the full impulse denominator, and kinematic and static bodies. Both solvers where

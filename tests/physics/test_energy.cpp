@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The energy balance: what drag, the dampers of springs and contacts (friction, inelastic
 // bounces) take is counted where it happens (Diagnostics::dissipated), so that
 // total + dissipated - E0 is the integrator's error alone. Each loss is checked against exact

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Golden runs: fixed scenes stepped a fixed number of times with every solver and every
 // integrator the engine offers, the final state hashed bit for bit and compared with a value
 // stored here. Any change to the arithmetic of a step, however small (an operation reordered,

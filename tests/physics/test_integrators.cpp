@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The four integrators against exact solutions: one step against its textbook formula, the
 // observed order of convergence on a harmonic oscillator, the energy behaviour each method
 // is known for (with the exact per-step factors where they exist), free flight, and the

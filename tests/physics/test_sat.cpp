@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The separating axis test against an independent method, the Minkowski difference, on
 // thousands of random convex polygon pairs (general, touching, and near-parallel), plus named
 // box and circle cases whose answers follow from the geometry.

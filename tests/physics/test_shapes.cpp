@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Shapes and their mass properties against closed forms computed independently here, how
 // makePolygon turns a vertex list into a convex polygon (order, hull, errors), and bodies
 // placed by their origin but kept at their centre of mass.

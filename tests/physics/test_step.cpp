@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The step as the world builds it from the scene (world_step.cpp, islands.cpp): stages a scene
 // does not need are left out, the direct integration gives the same bits as the general one,
 // sleeping islands cost nearly nothing and wake when touched or pulled, the broad phase finds

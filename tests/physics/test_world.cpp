@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The world as a whole: force elements (springs, drag, gravitation) against exact solutions,
 // determinism (identical worlds and copied worlds), and a stack of boxes that must stand.
 

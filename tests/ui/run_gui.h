@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Runs the rigidlab binary (RIGIDLAB_GUI, set by tests/ui/CMakeLists.txt) as a user would from
 // a shell: the tests of its command line.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The lessons the lab ships, as the window finds them: what the window tests walk through.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A few drawings (issues 11 and 12): the error-vs-run-time panel on a 1024 × 768 screen, its
 // order labels apart and in words where no order can be measured; the compared worlds drawn
 // with their floors; velocity arrows only where they have a length; the billiards break big

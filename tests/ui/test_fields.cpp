@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Typed values are never lost: the number fields of the control panel and the inspector, and
 // the lesson's answer boxes, typed into key by key while the simulation runs, in an English
 // and a Czech locale. Offscreen, driven as a user would.

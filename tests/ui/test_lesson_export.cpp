@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // A lesson step's plots and their export for handouts: the plots a step names, samples made
 // exactly as the window makes them, captions, and the headless export of every shipped
 // lesson through rigidlab-cli, each file checked for being what it says it is.

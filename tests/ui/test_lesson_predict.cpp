@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Predict, then see: what a lesson question holds back (a panel, a column, the running of the
 // scene) stays out of sight until the student has answered; a wrong first try reads the
 // lesson's hint and not the value; a second try or "Show me" gives the value.

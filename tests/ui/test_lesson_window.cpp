@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Lessons in the window: every shipped lesson opens, its steps go forward and back, each
 // step shows only the panels and plots it names, questions are judged, plots export.
 

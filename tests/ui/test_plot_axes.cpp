@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plots that tell the truth and cost little: rounding noise is drawn flat on an axis with
 // distinct ticks (niceRange), the points handed to QCustomPlot stay bounded by the plot's
 // pixel width whatever the data, CSV times are the step times, and a conserved quantity of a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Plots that tell the truth (issue 12): going back on the timeline keeps the plots up to the
 // moment chosen and branches them when the run goes on; a short run gets a short time axis;
 // legends in words, and curves that coincide all visible, in the window and in exports; the

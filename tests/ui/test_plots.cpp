@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The live plots and their export: data from a SampleBuffer reaches the series, memory stays
 // bounded over long runs, time travel and marks behave, and every export is either a valid
 // file or nothing at all.

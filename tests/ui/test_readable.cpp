@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // Messages that can be read (the classroom-window issue): the divergence banner and the text
 // drawn over the world have a WCAG contrast of at least 4.5:1 against what lies behind them,
 // in a light and a dark system palette; and where a lesson's text says a world stops, it

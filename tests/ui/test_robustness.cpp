@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The window survives what a class throws at it: garbage typed into every field, a scene that
 // diverges, closing it in the middle of an export or a sweep, opening a file while another
 // runs, and settings that cannot be saved. Offscreen, driven as a user would.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The separating-axis view shows its axis (the lessons issue): for every shipped SAT case and
 // every axis, the world view shows both projection intervals and the gap or overlap label,
 // also after Fit scene and after a body was dragged away; the label is readable and the table

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The window's shell (the classroom-window issue): the command line of rigidlab, the
 // screenshot command, Help › Controls and About, and the status bar.
 

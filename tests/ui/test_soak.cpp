@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The soak test: a 200-body scene run for a long stretch of simulated time in the lab window
 // (offscreen), as fast as it will go, with every plot live: the controller steps, the view
 // follows, the plots drain and replot on their own timers (events are processed every 1/60 s

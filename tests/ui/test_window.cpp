@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The lab window, driven as a user would: keys, mouse, menus, under the offscreen platform.
 
 #include "common/status_text.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the window calls an integrator or a contact solver: the one table of their names in
 // words ("Runge–Kutta 4"), for the control panel's lists, the plots' legends and marks, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Where the export dialogs open: the folder the user last exported into (remembered in
 // QSettings across runs), else the user's documents folder. One place for the plot export

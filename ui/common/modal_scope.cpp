@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "common/modal_scope.h"
 
 namespace rigidlab::ui {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A stretch of code that runs a modal dialog and then acts on its answer (export into the chosen
 // folder, open the chosen file).

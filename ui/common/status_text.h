@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Numbers of the status bar in words a class reads: no rounding noise shown as physics.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The colours of everything the lab draws over the world, in one place, with the contrast
 // they are chosen for. The world's background is the lab's own (it does not follow the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_player/lesson_panels.h"
 
 #include "panels/fitting_table.h"

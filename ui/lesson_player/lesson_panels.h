@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Tables that lessons show beside the view: bounce heights against e² times the previous
 // one, and a collision's before and after (velocities, momentum, kinetic energy, and the

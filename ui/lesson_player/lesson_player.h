@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The lesson player: pick a lesson, read a step, answer its questions, go back and forth.
 // It only shows; the window applies each step (scene, settings, panels) when told to.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_player/step_text.h"
 
 #include <QAbstractTextDocumentLayout>

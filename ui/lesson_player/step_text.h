@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A lesson step's text: as tall as its words at the width it is given, so that it scrolls with
 // the lesson around it rather than inside a box of its own, and never wider than that width

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/control_panel.h"
 
 #include "common/display_names.h"

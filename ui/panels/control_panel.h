@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The simulation's settings as controls: integrator, solver, iterations, dt, time scale,
 // global restitution and friction, gravity. The number fields take a value on Enter or on

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/divergence_banner.h"
 
 #include "common/theme.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A red banner over the window when the world diverged: the diagnosis in words (which body,
 // which quantity, when, with which dt and integrator) and two ways on: "Reset" and "Halve dt"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The window's words for a divergence (physics::Divergence is data only): translated with
 // tr(), numbers in the user's locale. The command line has its own English line

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The "Error vs run time" panel: the work-precision sweep of rigidlab-cli error-vs-time, run in
 // a background thread with a progress bar and Cancel, drawn live as it goes; the diagram

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/fitting_table.h"
 
 #include "common/modal_scope.h"

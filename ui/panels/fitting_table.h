@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A lesson's table that fits the window's right column. At 1024 × 768 that column is about
 // 200 px wide, too narrow for a table of five or eleven columns: the table then switches to

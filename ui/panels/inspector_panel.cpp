@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/inspector_panel.h"
 
 #include "panels/number_field.h"

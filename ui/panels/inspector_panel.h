@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The selected body, in numbers: mass, inertia, pose, velocities, energy. Its restitution and
 // friction can be edited, and the mass of a dynamic body. Numbers are shown in the locale and

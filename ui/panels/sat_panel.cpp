@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/sat_panel.h"
 
 #include "simulation/simulation_controller.h"

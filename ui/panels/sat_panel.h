@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The separating axis theorem, step by step, for two polygons of the scene: a table of the
 // axes tested so far, and an overlay in the view that draws the current axis with both

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A QCPGraph that draws a dense curve column by column, at a cost that does not depend on
 // its values.

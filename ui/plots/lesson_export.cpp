@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "plots/lesson_export.h"
 
 #include "common/display_names.h"

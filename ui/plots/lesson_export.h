@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A lesson step's plots: making them, and writing them for handouts (PNG, PDF, SVG and the
 // numbers as CSV) with a caption that says the lesson, the step, the integrator and dt.

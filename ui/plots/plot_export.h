@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Saving a plot for handouts: PNG, PDF and SVG pictures, and the numbers as CSV.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PlotWidget's marks: a dashed vertical line where a setting changed mid-run, with a short
 // label above the plot ("dt = 5 ms"). Labels that would overlap are stacked on rows above one
 // another; marks closer than a few pixels share one label:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // PlotWidget's context menu (export, follow, time range) and its export with a file dialog.
 
 #include "plots/plot_widget.h"

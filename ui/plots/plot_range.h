@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The value axis of a live plot: how far it reaches, and how many digits its tick labels need.
 //

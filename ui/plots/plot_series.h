@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One curve of a live plot, kept within a point budget however long the run, and handed to
 // its QCPGraph decimated to the pixels it is drawn on.

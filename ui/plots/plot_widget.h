@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A live plot of the lab window: a QCustomPlot with a title, labelled axes with units, a
 // legend, and series that either read a value out of each Sample of a SampleBuffer or are fed

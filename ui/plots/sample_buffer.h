@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The hand-over between the simulation and the plots. The controller pushes one sample per
 // recorded step; each plot drains what is new on its own timer (about 30 Hz). The buffer

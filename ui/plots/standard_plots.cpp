@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // The plots of the lab window, each a few lines over PlotWidget; and the palette they share.
 // Declared in plot_widget.h.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The samples the plots read, made from a step's worlds: the main world's energies and
 // momenta and, when worlds are compared side by side, the total energy and drift of each.

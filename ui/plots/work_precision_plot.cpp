@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "plots/work_precision_plot.h"
 
 #include <qcustomplot.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The work-precision diagram: a PlotWidget on log-log axes, error at the end of the run
 // against CPU seconds, one line per integrator (the engine's solid, Boost.Odeint's dashed),

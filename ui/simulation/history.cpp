@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "simulation/history.h"
 
 #include "plots/step_sampler.h"

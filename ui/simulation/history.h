@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Time travel: a bounded history of world states. A snapshot (a copy of the whole world)
 // is kept every so often; any step in between is reached by copying the snapshot before it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The one owner of the world and its clock. The window's widgets read from it and ask it to
 // change things; nothing else steps or edits the world.

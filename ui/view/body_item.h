@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // One graphics item per body. It draws the body's shape in the body's own frame and only
 // follows the pose it is given; it holds no physics.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The teaching overlays, drawn over the bodies from the controller's current state:
 // velocity vectors, contact points and normals, bounding boxes, centres of mass, motion

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What the SAT panel draws in the world view: the axis being shown as a line beside both
 // shapes, each shape's projection interval on it, the gap or overlap between them (bold, in a

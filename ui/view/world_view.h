@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The central view: the world drawn with y up, metres mapped to pixels. Pan by dragging
 // empty space or with the middle button, zoom with the wheel around the cursor, fit the

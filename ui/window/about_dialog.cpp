@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/about_dialog.h"
 
 #include "common/modal_scope.h"

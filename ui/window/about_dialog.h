@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Help › About: what RigidLab is, its version and licence, the paper it grows from, and the
 // versions of the libraries it runs on.

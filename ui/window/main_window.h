@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The lab window: the world view in the middle; controls, inspector and plots in docks;
 // a timeline for time travel; menus, a toolbar and a status bar.

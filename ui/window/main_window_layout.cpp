@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 // MainWindow's arrangement for the screen it is on, and presentation mode: what a teacher
 // projecting the lab at 1024×768 in a bright room, and a student on a small laptop, need.
 //

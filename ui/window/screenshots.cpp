@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/screenshots.h"
 
 #include "lesson_player/lesson_player.h"

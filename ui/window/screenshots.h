@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // rigidlab --screenshots DIR: the plain window at a given size on the welcome scene and on
 // every step of the shipped lessons, one PNG per view and an index of what each shows. For

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The window's controls in one table: every keyboard shortcut the window registers and every
 // mouse action of the world view. MainWindow takes its actions' keys from here and Help ›

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Rigid bodies: what a scene defines, and what the world keeps for each.
 

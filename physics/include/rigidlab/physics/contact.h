@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A touching pair of bodies and its manifold, as the contact solver keeps it.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Divergence: the world stops rather than draw garbage. After every step it checks that every
 // body's state is finite and that the total energy has not grown past a bound; the first

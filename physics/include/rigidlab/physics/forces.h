@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Force elements beyond uniform gravity, drag and the accumulators: springs and pin joints.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Time integrators over the whole state: positions q = (x, y, angle) and velocities
 // v = (vx, vy, omega) of every moving body, stacked. They only see accelerations a(t, q, v).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The magnitudes the engine is built for: numbers only. The world's setters assert them
 // (a value outside is a programming error of the caller), and lessons/limits.h refuses a file

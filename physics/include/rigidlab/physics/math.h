@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Small 2D vector helpers on top of Eigen. Angles in radians, counter-clockwise, y up.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Collision detection: the separating axis theorem for convex polygons, and the contact
 // manifold (up to two points) built by clipping the incident edge against the reference edge.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Owning pointers with a copy that a class can rely on, so that a class holding them (World)
 // is copied by = default and no member is forgotten in a hand-written copy.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The world: owns the bodies, the force elements and the contacts, and steps them.
 
