@@ -45,9 +45,8 @@ int outputError(const QString& what)
 
 void CommandLine::addValue(const QString& name, const QString& what)
 {
-    m_valueWhats.append(what);
     m_parser.addOption(QCommandLineOption(name, QString(), QStringLiteral("value")));
-    m_valueNames.append(name);
+    m_values.push_back({name, what});
 }
 
 void CommandLine::addSwitch(const QString& name)
@@ -85,27 +84,28 @@ bool CommandLine::parse(const QStringList& words)
     const QStringList options = end < 0 ? words : words.first(end);
     if (!options.isEmpty()) {
         const QString last = options.back();
-        for (qsizetype i = 0; i < m_valueNames.size(); ++i) {
-            if (last == QStringLiteral("--") + m_valueNames[i]) {
-                m_error = QStringLiteral("%1: needs a %2").arg(last, m_valueWhats[i]);
+        for (const ValueOption& option : m_values) {
+            if (last == QStringLiteral("--") + option.name) {
+                m_error = QStringLiteral("%1: needs a %2").arg(last, option.what);
                 return false;
             }
         }
     }
     if (!m_parser.parse(QStringList{QStringLiteral("rigidlab-cli")} + words)) {
         const QStringList unknown = m_parser.unknownOptionNames();
+        if (!unknown.isEmpty()) {
+            m_error = QStringLiteral("unknown option %1").arg(spelled(words, unknown.front()));
+            return false;
+        }
         for (const QString& name : m_switchNames) {
             const QString given = QStringLiteral("--") + name + u'=';
-            if (unknown.isEmpty() &&
-                std::any_of(options.cbegin(), options.cend(),
+            if (std::any_of(options.cbegin(), options.cend(),
                             [&](const QString& w) { return w.startsWith(given); })) {
                 m_error = QStringLiteral("--%1: takes no value").arg(name);
                 return false;
             }
         }
-        m_error = unknown.isEmpty()
-                      ? m_parser.errorText()
-                      : QStringLiteral("unknown option %1").arg(spelled(words, unknown.front()));
+        m_error = m_parser.errorText();
         return false;
     }
     const QStringList seen = m_parser.optionNames(); // in order, repeats included

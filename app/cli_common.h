@@ -9,6 +9,7 @@
 #include <QStringList>
 
 #include <optional>
+#include <vector>
 
 namespace rigidlab::cli {
 
@@ -60,8 +61,11 @@ public:
 private:
     QString m_command;
     QCommandLineParser m_parser;
-    QStringList m_valueNames;
-    QStringList m_valueWhats; ///< per m_valueNames entry
+    struct ValueOption {
+        QString name;
+        QString what; ///< "value", "folder": in "--name: needs a WHAT"
+    };
+    std::vector<ValueOption> m_values;
     QStringList m_switchNames;
     QString m_error;
 };
