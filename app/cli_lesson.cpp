@@ -79,12 +79,17 @@ int commandLessons(const QStringList& words)
     if (!args.parse(words))
         return usageError(args.command(), args.error());
     if (!args.positionals().isEmpty())
-        return usageError(args.command(), QStringLiteral("no files, only the shipped lessons"));
+        return usageError(args.command(),
+                          QStringLiteral("no files: it lists the shipped lessons and the user's"));
     if (lessons::shippedLessonsDir().isEmpty())
         return inputError(QStringLiteral("no shipped lessons found (installed data folder "
                                          "missing; RIGIDLAB_DATA_DIR names another)"));
-    for (const lessons::LessonEntry& entry : lessons::shippedLessonsInOrder())
-        printOut(QStringLiteral("%1\t%2\n").arg(entry.path, entry.title));
+    // The user's own lessons (lessons::userLessonsDir()) after the shipped ones, a third
+    // column marking them.
+    for (const lessons::LessonEntry& entry : lessons::allLessonsInOrder()) {
+        printOut(entry.own ? QStringLiteral("%1\t%2\tyour own\n").arg(entry.path, entry.title)
+                           : QStringLiteral("%1\t%2\n").arg(entry.path, entry.title));
+    }
     return kExitOk;
 }
 

@@ -57,7 +57,9 @@ Commands:
       --export DIR           run every step that has plots for its exportTime and write
                              them as PNG, PDF, SVG and CSV into DIR/NN-step-title/
   lessons                    the shipped lessons: each file's path and title (the data
-                             folder: RIGIDLAB_DATA_DIR, else beside the installed program)
+                             folder: RIGIDLAB_DATA_DIR, else beside the installed program),
+                             then the user's own (~/.local/share/rigidlab/lessons), marked
+                             "your own" in a third column
   error-vs-time [OPTIONS]    work against precision of every integrator on reference problems
       --problem NAME|all     oscillator, pendulum, kepler, spinning-body, double-pendulum
       --integrators LIST     comma-separated (default: all, Boost.Odeint's odeint-rk4 and

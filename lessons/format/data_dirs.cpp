@@ -51,16 +51,23 @@ QString shippedLessonsDir()
     return data.isEmpty() ? QString() : QDir(data).filePath(QStringLiteral("lessons"));
 }
 
+QString userDataDir()
+{
+    // Not AppDataLocation: that folder is named after the organisation and the application,
+    // which differ between the window and rigidlab-cli (and the tests). The user's folder
+    // mirrors the installed one, DATADIR/rigidlab.
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation))
+        .filePath(QStringLiteral("rigidlab"));
+}
+
 QString userScenesDir()
 {
-    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-        .filePath(QStringLiteral("scenes"));
+    return QDir(userDataDir()).filePath(QStringLiteral("scenes"));
 }
 
 QString userLessonsDir()
 {
-    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
-        .filePath(QStringLiteral("lessons"));
+    return QDir(userDataDir()).filePath(QStringLiteral("lessons"));
 }
 
 } // namespace rigidlab::lessons

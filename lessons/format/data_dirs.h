@@ -19,8 +19,12 @@ QString shippedScenesDir();
 /// shippedDataDir()/lessons.
 QString shippedLessonsDir();
 
-/// The user's own scenes and lessons: QStandardPaths::AppDataLocation's scenes/ and lessons/.
-/// They may not exist yet; the window lists them beside the shipped ones when they do.
+/// The user's own data folder: GenericDataLocation/rigidlab (~/.local/share/rigidlab on Linux,
+/// as the man page says), the same for the window and rigidlab-cli whatever their application
+/// names. It may not exist yet.
+QString userDataDir();
+/// The user's own scenes and lessons: userDataDir()'s scenes/ and lessons/. The window and
+/// `rigidlab-cli lessons` list them beside the shipped ones, marked as the user's own.
 QString userScenesDir();
 QString userLessonsDir();
 

@@ -45,6 +45,17 @@ std::vector<LessonEntry> shippedLessonsInOrder()
     return lessonsInOrder(shippedLessonsDir());
 }
 
+std::vector<LessonEntry> allLessonsInOrder()
+{
+    std::vector<LessonEntry> entries = shippedLessonsInOrder();
+    std::vector<LessonEntry> own = lessonsInOrder(userLessonsDir());
+    for (LessonEntry& entry : own) {
+        entry.own = true;
+        entries.push_back(std::move(entry));
+    }
+    return entries;
+}
+
 QString lessonMenuText(const LessonEntry& entry, int position)
 {
     QString text =
@@ -53,6 +64,8 @@ QString lessonMenuText(const LessonEntry& entry, int position)
         text += QCoreApplication::translate("rigidlab::lessons", " — %1").arg(entry.description);
     if (entry.minutes > 0)
         text += QCoreApplication::translate("rigidlab::lessons", " (≈%1 min)").arg(entry.minutes);
+    if (entry.own)
+        text += QCoreApplication::translate("rigidlab::lessons", " (your own)");
     return text;
 }
 

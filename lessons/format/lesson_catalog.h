@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The shipped lessons in the order they are taught. Each lesson file may give its place
-// ("order"), a one-line description and its duration ("minutes"); the lesson menu lists them
-// numbered, "1. Title — description (≈N min)", and a start page opens the first one.
+// The shipped lessons in the order they are taught, then the user's own (userLessonsDir(),
+// data_dirs.h). Each lesson file may give its place ("order"), a one-line description and its
+// duration ("minutes"); the lesson menu lists them numbered, "1. Title — description (≈N min)",
+// the user's own marked as such, and a start page opens the first shipped one.
 
 #include <QString>
 
@@ -17,6 +18,7 @@ struct LessonEntry {
     QString description; ///< one line, may be empty
     int order = 0;       ///< the file's "order"; 0: not given
     int minutes = 0;     ///< estimated time [min]; 0: not given
+    bool own = false;    ///< one of the user's own lessons, not a shipped one
 };
 
 /// The lessons of `folder` that load, in teaching order: by their "order", then those without
@@ -27,8 +29,13 @@ std::vector<LessonEntry> lessonsInOrder(const QString& folder);
 /// lessonsInOrder(shippedLessonsDir()) (data_dirs.h): the first one is where a newcomer starts.
 std::vector<LessonEntry> shippedLessonsInOrder();
 
+/// What the lesson menu lists: shippedLessonsInOrder(), then the user's own lessons
+/// (lessonsInOrder(userLessonsDir()), each marked `own`).
+std::vector<LessonEntry> allLessonsInOrder();
+
 /// The menu line of the lesson at 1-based `position` in the teaching order:
-/// "1. Title — description (≈N min)", the parts that are not given left out.
+/// "1. Title — description (≈N min)", the parts that are not given left out; a lesson of the
+/// user's own ends in "(your own)".
 QString lessonMenuText(const LessonEntry& entry, int position);
 
 } // namespace rigidlab::lessons

@@ -25,6 +25,10 @@ file(RENAME ${WORK}/prefix ${WORK}/moved)
 set(root ${WORK}/moved)
 set(ENV{RIGIDLAB_DATA_DIR} "")
 set(ENV{QT_QPA_PLATFORM} offscreen)
+# A fresh home: the user's own lessons are only the one put there below.
+file(MAKE_DIRECTORY ${WORK}/home)
+set(ENV{HOME} ${WORK}/home)
+unset(ENV{XDG_DATA_HOME})
 
 foreach(file
         bin/rigidlab bin/rigidlab-cli
@@ -68,6 +72,19 @@ foreach(line IN LISTS listed)
 endforeach()
 file(GLOB installed_scenes ${root}/share/rigidlab/scenes/*.json)
 run_ok(${root}/bin/rigidlab-cli validate ${installed_lessons} ${installed_scenes})
+
+# A lesson of the user's own (~/.local/share/rigidlab/lessons) is listed after the shipped ones.
+set(own ${WORK}/home/.local/share/rigidlab/lessons)
+file(MAKE_DIRECTORY ${own}/scenes)
+file(COPY_FILE ${root}/share/rigidlab/scenes/welcome.json ${own}/scenes/welcome.json)
+file(WRITE ${own}/mine.json "{\"rigidlab-lesson\": 1, \"title\": \"Mine\",
+  \"steps\": [{\"title\": \"s\", \"scene\": \"scenes/welcome.json\"}]}\n")
+run_ok(${root}/bin/rigidlab-cli lessons)
+string(REGEX MATCHALL "[^\n]+" listed_with_own "${OUT}")
+list(POP_BACK listed_with_own last)
+if(NOT listed_with_own STREQUAL listed OR NOT last STREQUAL "${own}/mine.json\tMine\tyour own")
+    fail("rigidlab-cli lessons did not list the user's own lesson last:\n${OUT}")
+endif()
 
 # The validators of the desktop files, where installed (./lab package installs them).
 find_program(DESKTOP_FILE_VALIDATE desktop-file-validate)

@@ -6,6 +6,7 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -91,6 +92,7 @@ private slots:
     void satArray();
     void runProfile();
     void bench();
+    void lessonsListsOwn();
 };
 
 void TestCli::help()
@@ -506,6 +508,32 @@ void TestCli::bench()
     QCOMPARE(runCli({QStringLiteral("bench"), QStringLiteral("--scene"), QStringLiteral("nope")})
                  .exitCode,
              2);
+}
+
+void TestCli::lessonsListsOwn()
+{
+    // rigidlab-cli is no test: its user folder is the documented ~/.local/share/rigidlab, under
+    // this run's fresh $HOME (test_main.h).
+    const QString own = QDir::homePath() + QStringLiteral("/.local/share/rigidlab/lessons");
+    const CliRun before = runCli({QStringLiteral("lessons")});
+    QCOMPARE(before.exitCode, 0);
+    QVERIFY2(!before.out.contains("your own"), before.out.constData());
+    const qsizetype shipped = before.out.count('\n');
+    QVERIFY(shipped >= 1);
+
+    QVERIFY(QDir().mkpath(own + QStringLiteral("/scenes")));
+    QVERIFY(QFile::copy(scene("ball_drop"), own + QStringLiteral("/scenes/drop.json")));
+    const QString lesson = own + QStringLiteral("/mine.json");
+    writeFile(lesson, R"({"rigidlab-lesson": 1, "title": "My drop", "order": 1,
+                          "steps": [{"title": "s", "scene": "scenes/drop.json"}]})");
+    const CliRun after = runCli({QStringLiteral("lessons")});
+    QCOMPARE(after.exitCode, 0);
+    QVERIFY2(after.err.isEmpty(), after.err.constData());
+    // The shipped lessons as before, then the user's, marked in a third column.
+    QVERIFY2(after.out.startsWith(before.out), after.out.constData());
+    const QByteArray added = after.out.mid(before.out.size());
+    QCOMPARE(added,
+             QFile::encodeName(QFileInfo(lesson).absoluteFilePath()) + "\tMy drop\tyour own\n");
 }
 
 RIGIDLAB_TEST_GUILESS_MAIN(TestCli)

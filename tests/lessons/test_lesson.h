@@ -85,6 +85,7 @@ private slots:
     void validateRecognisesLessons();
     void shippedLessonsInTeachingOrder();
     void lessonsWithoutOrderComeLast();
+    void userLessonsListedAfterShipped();
     void rejectsBadLesson_data();
     void rejectsBadLesson();
     void rejectsSymbolicLinkOutOfFolder();

@@ -4,6 +4,7 @@
 
 #include "test_lesson.h"
 
+#include "format/data_dirs.h"
 #include "format/document.h"
 #include "format/lesson_catalog.h"
 
@@ -183,6 +184,39 @@ void TestLesson::lessonsWithoutOrderComeLast()
     QCOMPARE(lessons::lessonMenuText(entries[0], 1), QStringLiteral("1. C — the first (≈5 min)"));
     QCOMPARE(lessons::lessonMenuText(entries[2], 3), QStringLiteral("3. A"));
     QVERIFY(lessons::lessonsInOrder(QString()).empty());
+}
+
+void TestLesson::userLessonsListedAfterShipped()
+{
+    // The test's $HOME is fresh: the user's folder does not exist yet, and the list is the
+    // shipped one.
+    const QString own = lessons::userLessonsDir();
+    QVERIFY2(!QFileInfo::exists(own), qPrintable(own));
+    const std::vector<lessons::LessonEntry> shipped = lessons::shippedLessonsInOrder();
+    QVERIFY(!shipped.empty());
+    QCOMPARE(lessons::allLessonsInOrder().size(), shipped.size());
+
+    // A lesson of the user's own, with its scene beside it as in the shipped folder; a place
+    // before every shipped one still lists it after them.
+    QVERIFY(QDir().mkpath(QDir(own).filePath(QStringLiteral("scenes"))));
+    writeFile(QDir(own).filePath(QStringLiteral("scenes/ok.json")), kScene);
+    writeFile(QDir(own).filePath(QStringLiteral("my_lesson.json")),
+              R"({"rigidlab-lesson": 1, "title": "Mine", "order": 1, "minutes": 10,
+                  "steps": [{"title": "s", "scene": "scenes/ok.json"}]})");
+    const std::vector<lessons::LessonEntry> all = lessons::allLessonsInOrder();
+    QCOMPARE(all.size(), shipped.size() + 1);
+    for (std::size_t i = 0; i < shipped.size(); ++i) {
+        QCOMPARE(all[i].path, shipped[i].path);
+        QVERIFY(!all[i].own);
+    }
+    const lessons::LessonEntry& mine = all.back();
+    QCOMPARE(QFileInfo(mine.path).canonicalFilePath(),
+             QFileInfo(QDir(own).filePath(QStringLiteral("my_lesson.json"))).canonicalFilePath());
+    QVERIFY(mine.own);
+    QCOMPARE(mine.title, QStringLiteral("Mine"));
+    QCOMPARE(lessons::lessonMenuText(mine, 7), QStringLiteral("7. Mine (≈10 min) (your own)"));
+    // The user's folder is not the shipped one.
+    QVERIFY(!mine.path.startsWith(lessons::shippedLessonsDir()));
 }
 
 void TestLesson::rejectsBadLesson_data()

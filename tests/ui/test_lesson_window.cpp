@@ -10,11 +10,14 @@
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 
+#include "format/data_dirs.h"
 #include "format/lesson.h"
 #include "run/measurements.h"
 
 #include <QDockWidget>
 #include <QImage>
+#include <QMenu>
+#include <QSettings>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -31,6 +34,13 @@ const QStringList kDockNames{QStringLiteral("controls"), QStringLiteral("inspect
                              QStringLiteral("energy"),   QStringLiteral("momentum"),
                              QStringLiteral("drift"),    QStringLiteral("sat"),
                              QStringLiteral("bounces"),  QStringLiteral("collision")};
+
+void writeTo(const QString& path, const QByteArray& bytes)
+{
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::WriteOnly));
+    QCOMPARE(file.write(bytes), bytes.size());
+}
 
 } // namespace
 
@@ -249,6 +259,65 @@ private slots:
         const QString error = w.openLesson(path);
         QVERIFY(error.contains(QStringLiteral("broken.json")));
         QVERIFY(!w.lessonPlayer().lesson());
+    }
+    /// The user's own lessons and scenes (lessons::userDataDir(), under this run's fresh
+    /// $HOME) are listed beside the shipped ones, marked as theirs, and open.
+    void usersOwnLessonsAndScenesListed()
+    {
+        const QDir own(lessons::userDataDir());
+        QVERIFY2(!own.exists(), qPrintable(own.path())); // a fresh $HOME: none yet
+        {
+            MainWindow w;
+            QCOMPARE(w.lessonPlayer().lessonPaths().size(), shippedLessons().size());
+            QVERIFY(!w.findChild<QMenu*>(QStringLiteral("ownScenes")));
+        }
+        QVERIFY(own.mkpath(QStringLiteral("scenes")));
+        QVERIFY(own.mkpath(QStringLiteral("lessons/scenes")));
+        QFile shippedScene(
+            QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("ball_drop.json")));
+        QVERIFY(shippedScene.open(QIODevice::ReadOnly));
+        QByteArray sceneJson = shippedScene.readAll();
+        const QByteArray shippedTitle = "\"title\": \"Ball drop: the coefficient of restitution\"";
+        QVERIFY(sceneJson.contains(shippedTitle));
+        sceneJson.replace(shippedTitle, "\"title\": \"My own drop\"");
+        const QString scenePath = own.filePath(QStringLiteral("scenes/my_drop.json"));
+        writeTo(scenePath, sceneJson);
+        writeTo(own.filePath(QStringLiteral("lessons/scenes/drop.json")), sceneJson);
+        const QString lessonPath = own.filePath(QStringLiteral("lessons/mine.json"));
+        writeTo(lessonPath, R"({"rigidlab-lesson": 1, "title": "My lesson",
+                               "steps": [{"title": "Drop", "scene": "scenes/drop.json"}]})");
+
+        MainWindow w;
+        // The lesson box and File › Lessons: the shipped lessons, then the user's, marked.
+        const QStringList paths = w.lessonPlayer().lessonPaths();
+        QCOMPARE(paths.size(), shippedLessons().size() + 1);
+        QCOMPARE(QFileInfo(paths.last()).canonicalFilePath(),
+                 QFileInfo(lessonPath).canonicalFilePath());
+        const QString lessonText = w.lessonPlayer().lessonMenuTexts().last();
+        QCOMPARE(lessonText,
+                 QStringLiteral("%1. My lesson (your own)").arg(shippedLessons().size() + 1));
+        QCOMPARE(w.lessonPlayer().firstLessonPath(), paths.first()); // still a shipped one
+        QStringList lessonsMenu;
+        for (QMenu* menu : w.findChildren<QMenu*>())
+            if (menu->title() == MainWindow::tr("Le&ssons"))
+                for (QAction* a : menu->actions())
+                    lessonsMenu << a->text();
+        QVERIFY2(lessonsMenu.contains(lessonText), qPrintable(lessonsMenu.join(u'\n')));
+        QCOMPARE(w.openLesson(paths.last(), true), QString());
+
+        // File › Your own scenes, beside File › Shipped scenes.
+        auto* ownScenes = w.findChild<QMenu*>(QStringLiteral("ownScenes"));
+        QVERIFY(ownScenes);
+        QCOMPARE(ownScenes->actions().size(), 1);
+        QAction* open = ownScenes->actions().front();
+        QCOMPARE(open->text(), QStringLiteral("My own drop"));
+        open->trigger();
+        QCOMPARE(w.lastError(), QString());
+        const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
+        QVERIFY(!recent.isEmpty());
+        QCOMPARE(QFileInfo(recent.front()).canonicalFilePath(),
+                 QFileInfo(scenePath).canonicalFilePath());
+        QVERIFY(QDir(own).removeRecursively()); // the other tests see the shipped ones only
     }
 };
 

@@ -151,12 +151,16 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
 
 void LessonPlayer::scanFolder(const QString& folder)
 {
+    // A broken shipped lesson is a test failure, not a menu entry: lessonsInOrder skips it.
+    listLessons(lessons::lessonsInOrder(folder));
+}
+
+void LessonPlayer::listLessons(const std::vector<lessons::LessonEntry>& entries)
+{
     m_lessonBox->clear();
     m_paths.clear();
     m_menuTexts.clear();
     m_lessonBox->addItem(tr("Choose a lesson…"), QString());
-    // A broken shipped lesson is a test failure, not a menu entry: lessonsInOrder skips it.
-    const std::vector<lessons::LessonEntry> entries = lessons::lessonsInOrder(folder);
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const lessons::LessonEntry& entry = entries[i];
         const QString text = lessons::lessonMenuText(entry, static_cast<int>(i) + 1);
@@ -176,7 +180,8 @@ void LessonPlayer::scanFolder(const QString& folder)
 
 QString LessonPlayer::firstLessonPath() const
 {
-    // scanFolder() lists the lessons in teaching order (lessons::lessonsInOrder).
+    // listLessons() lists the lessons in teaching order (lessons::lessonsInOrder), the shipped
+    // ones before the user's own.
     return m_paths.value(0);
 }
 

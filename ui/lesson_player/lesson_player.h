@@ -4,6 +4,7 @@
 // It only shows; the window applies each step (scene, settings, panels) when told to.
 
 #include "format/lesson.h"
+#include "format/lesson_catalog.h"
 #include "run/measurements.h"
 
 #include <QWidget>
@@ -37,6 +38,9 @@ public:
 
     /// Lists the lessons of `folder` in teaching order, numbered (lessons::lessonsInOrder).
     void scanFolder(const QString& folder);
+    /// Lists these lessons, numbered in the order given (the window: the shipped ones, then the
+    /// user's own, lessons::allLessonsInOrder).
+    void listLessons(const std::vector<lessons::LessonEntry>& entries);
     /// Opens a lesson; its first step is activated. Returns the error, empty on success.
     QString openLesson(const QString& path);
     const lessons::Lesson* lesson() const { return m_lesson.get(); }

@@ -23,6 +23,7 @@
 #include "format/data_dirs.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
+#include "format/scene_catalog.h"
 #include "format/scene_loader.h"
 
 #include <QAction>
@@ -123,7 +124,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_collision(new CollisionPanel(*m_controller, this))
 {
     m_view->scene()->addItem(m_sat->overlay());
-    m_player->scanFolder(lessonsFolder());
+    m_player->listLessons(lessons::allLessonsInOrder()); // shipped, then the user's own
     connect(m_player, &LessonPlayer::stepActivated, this, &MainWindow::applyLessonStep);
     connect(m_player, &LessonPlayer::lessonClosed, this, &MainWindow::leaveLesson);
     connect(m_player, &LessonPlayer::heldBackChanged, this, [this](const QStringList& held) {
@@ -395,12 +396,15 @@ void MainWindow::buildMenus()
     lessonsMenu->setEnabled(!m_player->lessonPaths().isEmpty());
     m_recentMenu = file->addMenu(tr("Open &recent"));
     m_scenesMenu = file->addMenu(tr("&Shipped scenes"));
-    const QDir scenes(scenesFolder());
-    for (const QFileInfo& info :
-         scenes.entryInfoList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
-        const lessons::SceneLoadResult r = lessons::loadSceneFile(info.filePath());
-        const QString title = r.ok && !r.scene.title.isEmpty() ? r.scene.title : info.baseName();
-        m_scenesMenu->addAction(title, this, [this, path = info.filePath()] { openScene(path); });
+    for (const lessons::SceneEntry& scene : lessons::scenesIn(scenesFolder(), false))
+        m_scenesMenu->addAction(scene.title, this, [this, p = scene.path] { openScene(p); });
+    // The user's own scenes (lessons::userScenesDir()), when there are any.
+    const std::vector<lessons::SceneEntry> own = lessons::scenesIn(lessons::userScenesDir(), true);
+    if (!own.empty()) {
+        QMenu* ownMenu = file->addMenu(tr("&Your own scenes"));
+        ownMenu->setObjectName(QStringLiteral("ownScenes"));
+        for (const lessons::SceneEntry& scene : own)
+            ownMenu->addAction(scene.title, this, [this, p = scene.path] { openScene(p); });
     }
     QMenu* exportMenu = file->addMenu(tr("&Export plot"));
     const std::array<QString, kPlotCount> titles{tr("Energy"), tr("Momentum"), tr("Energy drift")};
