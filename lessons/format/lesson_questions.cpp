@@ -252,7 +252,7 @@ bool readSat(JsonReader& in, const QJsonObject& object, const QString& place, co
     for (const auto& [key, id] :
          {std::pair{QStringView(u"a"), a}, std::pair{QStringView(u"b"), b}}) {
         const physics::BodyDef& def = scene.bodies[static_cast<size_t>(*scene.bodyIndex(id))];
-        if (def.shape.type != physics::ShapeType::Polygon) {
+        if (!def.shape.asPolygon()) {
             return in.fail(joinPlace(at, key),
                            QStringLiteral("body \"%1\" is a circle: the separating axis test "
                                           "steps through polygons (boxes and polygons)")

@@ -29,24 +29,27 @@ Aabb fatten(const Aabb& box, const Vec2& displacement)
 
 Aabb computeAabb(const Shape& shape, const Transform& xf, double margin)
 {
-    Aabb box;
-    if (shape.type == ShapeType::Circle) {
-        const Vec2 c = xf.apply(shape.circle.center);
-        const Vec2 r = Vec2::Constant(shape.circle.radius + margin);
-        box.lo = c - r;
-        box.hi = c + r;
-        return box;
-    }
-    const std::vector<Vec2>& v = shape.polygon.vertices;
-    box.lo = box.hi = xf.apply(v[0]);
-    for (size_t i = 1; i < v.size(); ++i) {
-        const Vec2 p = xf.apply(v[i]);
-        box.lo = box.lo.cwiseMin(p);
-        box.hi = box.hi.cwiseMax(p);
-    }
-    box.lo.array() -= margin;
-    box.hi.array() += margin;
-    return box;
+    return shape.visit(Overloaded{[&](const Circle& circle) {
+                                      Aabb box;
+                                      const Vec2 c = xf.apply(circle.center);
+                                      const Vec2 r = Vec2::Constant(circle.radius + margin);
+                                      box.lo = c - r;
+                                      box.hi = c + r;
+                                      return box;
+                                  },
+                                  [&](const Polygon& polygon) {
+                                      Aabb box;
+                                      const std::vector<Vec2>& v = polygon.vertices;
+                                      box.lo = box.hi = xf.apply(v[0]);
+                                      for (size_t i = 1; i < v.size(); ++i) {
+                                          const Vec2 p = xf.apply(v[i]);
+                                          box.lo = box.lo.cwiseMin(p);
+                                          box.hi = box.hi.cwiseMax(p);
+                                      }
+                                      box.lo.array() -= margin;
+                                      box.hi.array() += margin;
+                                      return box;
+                                  }});
 }
 
 BroadPhase::BroadPhase() : m_tree(std::make_unique<AabbTree>()) {}

@@ -31,25 +31,29 @@ namespace {
 /// Distance from the centre of mass to the shape's farthest point [m].
 double outerRadius(const Body& b)
 {
-    if (b.shape.type == ShapeType::Circle)
-        return (b.shape.circle.center - b.localCenter).norm() + b.shape.circle.radius;
-    double r = 0;
-    for (const Vec2& v : b.shape.polygon.vertices)
-        r = std::max(r, (v - b.localCenter).norm());
-    return r;
+    return b.shape.visit(
+        Overloaded{[&](const Circle& c) { return (c.center - b.localCenter).norm() + c.radius; },
+                   [&](const Polygon& p) {
+                       double r = 0;
+                       for (const Vec2& v : p.vertices)
+                           r = std::max(r, (v - b.localCenter).norm());
+                       return r;
+                   }});
 }
 
 /// The body's smallest width: what it must not jump past [m].
 double ownSize(const Body& b)
 {
-    if (b.shape.type == ShapeType::Circle)
-        return 2.0 * b.shape.circle.radius;
-    // Twice the smallest distance from the centroid to an edge's line.
-    const Polygon& p = b.shape.polygon;
-    double d = INFINITY;
-    for (size_t i = 0; i < p.vertices.size(); ++i)
-        d = std::min(d, p.normals[i].dot(p.vertices[i] - b.localCenter));
-    return 2.0 * std::max(d, 0.0);
+    return b.shape.visit(Overloaded{[](const Circle& c) { return 2.0 * c.radius; },
+                                    [&](const Polygon& p) {
+                                        // Twice the smallest distance from the centroid to an
+                                        // edge's line.
+                                        double d = INFINITY;
+                                        for (size_t i = 0; i < p.vertices.size(); ++i)
+                                            d = std::min(
+                                                d, p.normals[i].dot(p.vertices[i] - b.localCenter));
+                                        return 2.0 * std::max(d, 0.0);
+                                    }});
 }
 
 } // namespace

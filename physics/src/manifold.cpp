@@ -211,23 +211,31 @@ Manifold collidePolygonCircle(const Polygon& a, const Transform& xfA, const Circ
 Manifold collideShapes(const Shape& a, const Transform& xfA, const Shape& b, const Transform& xfB,
                        double margin)
 {
-    if (a.type == ShapeType::Circle && b.type == ShapeType::Circle)
-        return collideCircles(a.circle, xfA, b.circle, xfB, margin);
-    if (a.type == ShapeType::Polygon && b.type == ShapeType::Polygon)
-        return satPolygons(a.polygon, xfA, b.polygon, xfB, margin, false).manifold;
-    if (a.type == ShapeType::Polygon)
-        return collidePolygonCircle(a.polygon, xfA, b.circle, xfB, margin);
-    // Circle against polygon: collide the other way round and swap the roles back.
-    Manifold m = collidePolygonCircle(b.polygon, xfB, a.circle, xfA, margin);
-    m.normal = -m.normal;
-    if (m.type == ManifoldType::FaceA) {
-        m.type = ManifoldType::FaceB;
-        std::swap(m.radiusA, m.radiusB);
-    } else {
-        std::swap(m.localPoint, m.localIncident[0]);
-        std::swap(m.radiusA, m.radiusB);
-    }
-    return m;
+    // One case per ordered pair of alternatives; std::visit over two variants dispatches on
+    // both indices at once (a table, no allocation, no copy of the vertices).
+    return std::visit(Overloaded{[&](const Circle& ca, const Circle& cb) {
+                                     return collideCircles(ca, xfA, cb, xfB, margin);
+                                 },
+                                 [&](const Polygon& pa, const Polygon& pb) {
+                                     return satPolygons(pa, xfA, pb, xfB, margin, false).manifold;
+                                 },
+                                 [&](const Polygon& pa, const Circle& cb) {
+                                     return collidePolygonCircle(pa, xfA, cb, xfB, margin);
+                                 },
+                                 [&](const Circle& ca, const Polygon& pb) {
+                                     // Collide the other way round and swap the roles back.
+                                     Manifold m = collidePolygonCircle(pb, xfB, ca, xfA, margin);
+                                     m.normal = -m.normal;
+                                     if (m.type == ManifoldType::FaceA) {
+                                         m.type = ManifoldType::FaceB;
+                                         std::swap(m.radiusA, m.radiusB);
+                                     } else {
+                                         std::swap(m.localPoint, m.localIncident[0]);
+                                         std::swap(m.radiusA, m.radiusB);
+                                     }
+                                     return m;
+                                 }},
+                      a.geometry, b.geometry);
 }
 
 void evaluateManifoldPoint(const Manifold& m, int k, const Transform& xfA, const Transform& xfB,

@@ -132,35 +132,37 @@ Polygon makeBox(double width, double height)
 Shape makeCircleShape(double radius, const Vec2& center)
 {
     Shape s;
-    s.type = ShapeType::Circle;
-    s.circle.radius = radius;
-    s.circle.center = center;
+    s.geometry = Circle{center, radius};
     return s;
 }
 
 Shape makePolygonShape(Polygon polygon)
 {
     Shape s;
-    s.type = ShapeType::Polygon;
-    s.polygon = std::move(polygon);
+    s.geometry = std::move(polygon);
     return s;
 }
 
-MassProperties computeMass(const Shape& shape, double density)
+namespace {
+
+MassProperties circleMass(const Circle& circle, double density)
 {
     MassProperties m;
-    if (shape.type == ShapeType::Circle) {
-        const double r = shape.circle.radius;
-        m.area = std::numbers::pi * r * r;
-        m.mass = density * m.area;
-        m.centroid = shape.circle.center;
-        m.inertia = 0.5 * m.mass * r * r;
-        return m;
-    }
+    const double r = circle.radius;
+    m.area = std::numbers::pi * r * r;
+    m.mass = density * m.area;
+    m.centroid = circle.center;
+    m.inertia = 0.5 * m.mass * r * r;
+    return m;
+}
+
+MassProperties polygonMass(const Polygon& polygon, double density)
+{
+    MassProperties m;
     // Fan of triangles from a point inside (the first vertex keeps round-off small).
     // For a triangle (0, e1, e2) about its own apex: area = cross(e1, e2) / 2,
     // second moment about the apex = area / 6 * (e1.e1 + e1.e2 + e2.e2).
-    const std::vector<Vec2>& v = shape.polygon.vertices;
+    const std::vector<Vec2>& v = polygon.vertices;
     const Vec2 origin = v[0];
     double area = 0.0, secondMoment = 0.0;
     Vec2 firstMoment = Vec2::Zero();
@@ -178,6 +180,14 @@ MassProperties computeMass(const Shape& shape, double density)
     // Parallel axis: move the second moment from `origin` to the centroid.
     m.inertia = density * (secondMoment - area * c.dot(c));
     return m;
+}
+
+} // namespace
+
+MassProperties computeMass(const Shape& shape, double density)
+{
+    return shape.visit(Overloaded{[density](const Circle& c) { return circleMass(c, density); },
+                                  [density](const Polygon& p) { return polygonMass(p, density); }});
 }
 
 } // namespace rigidlab::physics

@@ -162,8 +162,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const Transform xfA = consumeTransform(in, 1.0);
     const Transform xfB = consumeTransform(in, 2.0 * consumeScale(in));
 
-    if (a.type == ShapeType::Polygon && b.type == ShapeType::Polygon) {
-        checkSat(a.polygon, xfA, b.polygon, xfB, margin);
+    if (a.asPolygon() && b.asPolygon()) {
+        checkSat(*a.asPolygon(), xfA, *b.asPolygon(), xfB, margin);
     }
     const Manifold m = collideShapes(a, xfA, b, xfB, margin);
     checkManifold(m);

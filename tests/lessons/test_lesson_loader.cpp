@@ -615,7 +615,8 @@ void TestLesson::originalVerticesOfNonConvexPolygon()
     const lessons::Scene& cup = lesson.steps[3].scene;
     QCOMPARE(cup.originalVertices.size(), cup.bodies.size());
     QCOMPARE(cup.originalVertices[0].size(), std::size_t{8}); // the cup, as the file gives it
-    QCOMPARE(cup.bodies[0].shape.polygon.vertices.size(), std::size_t{4}); // its hull
+    QVERIFY(cup.bodies[0].shape.asPolygon());
+    QCOMPARE(cup.bodies[0].shape.asPolygon()->vertices.size(), std::size_t{4}); // its hull
     QCOMPARE(cup.originalVertices[0][4], physics::Vec2(0.3, -0.2));
     QVERIFY(cup.originalVertices[1].empty()); // the box was not replaced
     for (const auto& v : lesson.steps[0].scene.originalVertices)

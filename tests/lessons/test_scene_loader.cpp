@@ -286,8 +286,8 @@ void TestLessons::defaults()
     const physics::BodyDef& got = scene.bodies[0];
     QCOMPARE(got.name, std::string("ball"));
     QCOMPARE(got.type, body.type);
-    QCOMPARE(got.shape.type, physics::ShapeType::Circle);
-    QCOMPARE(got.shape.circle.radius, 0.5);
+    QVERIFY(got.shape.asCircle());
+    QCOMPARE(got.shape.asCircle()->radius, 0.5);
     QCOMPARE(got.position, body.position);
     QCOMPARE(got.angle, body.angle);
     QCOMPARE(got.velocity, body.velocity);
@@ -333,8 +333,8 @@ void TestLessons::everyField()
     QCOMPARE(s.world.drag, 0.125);
     const physics::BodyDef& k = s.bodies[0];
     QCOMPARE(k.type, physics::BodyType::Kinematic);
-    QCOMPARE(k.shape.type, physics::ShapeType::Polygon);
-    QCOMPARE(k.shape.polygon.vertices.size(), size_t{4});
+    QVERIFY(k.shape.asPolygon());
+    QCOMPARE(k.shape.asPolygon()->vertices.size(), size_t{4});
     QCOMPARE(k.position, Vec2(1, 2));
     QCOMPARE(k.angle, 0.5);
     QCOMPARE(k.velocity, Vec2(3, 4));
@@ -372,7 +372,8 @@ void TestLessons::nonConvexPolygonWarns()
     QVERIFY2(result.warnings[0].startsWith(QStringLiteral("x.json: bodies[0].shape.vertices: ")),
              qPrintable(result.warnings[0]));
     QVERIFY(result.warnings[0].contains(QStringLiteral("convex hull")));
-    QCOMPARE(result.scene.bodies[0].shape.polygon.vertices.size(), size_t{5});
+    QVERIFY(result.scene.bodies[0].shape.asPolygon());
+    QCOMPARE(result.scene.bodies[0].shape.asPolygon()->vertices.size(), size_t{5});
 }
 
 void TestLessons::springRestLengthDefaultsToDistance()

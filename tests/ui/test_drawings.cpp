@@ -255,7 +255,9 @@ void TestDrawings::billiardsBallsBigAndBreakSlow()
         int cue = -1;
         for (std::size_t i = 0; i < world.bodies().size(); ++i)
             if (world.bodies()[i].moves()) {
-                radius = world.bodies()[i].shape.circle.radius;
+                const physics::Circle* ball = world.bodies()[i].shape.asCircle();
+                QVERIFY(ball);
+                radius = ball->radius;
                 if (world.bodies()[i].name == "cue")
                     cue = static_cast<int>(i);
             }

@@ -207,10 +207,11 @@ private slots:
                     steps[static_cast<size_t>(s)].sat->first);
                 const auto b = steps[static_cast<size_t>(s)].scene.bodyIndex(
                     steps[static_cast<size_t>(s)].sat->second);
+                const physics::Polygon* pa = bodies[static_cast<size_t>(*a)].shape.asPolygon();
+                const physics::Polygon* pb = bodies[static_cast<size_t>(*b)].shape.asPolygon();
+                QVERIFY(pa && pb);
                 const physics::SatResult direct =
-                    physics::satPolygons(bodies[static_cast<size_t>(*a)].shape.polygon,
-                                         bodies[static_cast<size_t>(*a)].transform(),
-                                         bodies[static_cast<size_t>(*b)].shape.polygon,
+                    physics::satPolygons(*pa, bodies[static_cast<size_t>(*a)].transform(), *pb,
                                          bodies[static_cast<size_t>(*b)].transform());
                 QCOMPARE(sat.result().intersects, direct.intersects);
                 QCOMPARE(sat.result().axesTested, direct.axesTested);

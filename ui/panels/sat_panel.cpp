@@ -207,8 +207,7 @@ void SatPanel::setBodies(int a, int b)
         m_overlay->dataChanging();
     const int n = static_cast<int>(m_controller.world().bodies().size());
     auto polygon = [&](int id) {
-        return id >= 0 && id < n &&
-               m_controller.world().body(id).shape.type == physics::ShapeType::Polygon;
+        return id >= 0 && id < n && m_controller.world().body(id).shape.asPolygon();
     };
     m_a = polygon(a) && polygon(b) ? a : -1;
     m_b = m_a >= 0 ? b : -1;
@@ -251,14 +250,20 @@ void SatPanel::refresh()
 {
     if (m_overlay)
         m_overlay->dataChanging();
-    if (!active()) {
+    // The pair was checked to be two polygons when it was set; a world replaced since is
+    // checked again rather than trusted.
+    const physics::Polygon* pa =
+        active() ? m_controller.world().body(m_a).shape.asPolygon() : nullptr;
+    const physics::Polygon* pb =
+        active() ? m_controller.world().body(m_b).shape.asPolygon() : nullptr;
+    if (!pa || !pb) {
         m_result = physics::SatResult{};
         updateTable();
         return;
     }
     const physics::Body& a = m_controller.world().body(m_a);
     const physics::Body& b = m_controller.world().body(m_b);
-    m_result = physics::satPolygons(a.shape.polygon, a.transform(), b.shape.polygon, b.transform());
+    m_result = physics::satPolygons(*pa, a.transform(), *pb, b.transform());
     updateTable();
     // Follow only a pair that moved, so that a student's own zoom holds while nothing moves.
     const std::array<double, 6> poses{a.position.x(), a.position.y(), a.angle,
@@ -437,10 +442,12 @@ QString SatPanel::summary() const
     if (!active())
         return QString();
     const auto& bodies = m_controller.world().bodies();
-    const int kA =
-        static_cast<int>(bodies[static_cast<std::size_t>(m_a)].shape.polygon.vertices.size());
-    const int kB =
-        static_cast<int>(bodies[static_cast<std::size_t>(m_b)].shape.polygon.vertices.size());
+    const auto vertexCount = [&](int id) {
+        const physics::Polygon* p = bodies[static_cast<std::size_t>(id)].shape.asPolygon();
+        return p ? static_cast<int>(p->vertices.size()) : 0;
+    };
+    const int kA = vertexCount(m_a);
+    const int kB = vertexCount(m_b);
     const int k = kA + kB;
     QString text = tr("The test needed %1 of at most %2 axes (one per edge, %3 + %4), each "
                       "projecting all %2 vertices: %5 projections, against the paper's worst "

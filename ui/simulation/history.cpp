@@ -28,8 +28,12 @@ std::size_t History::snapshotBytes(const physics::World& world)
     std::size_t bytes = sizeof(physics::World) + 4096; // the world, its integrator, its scratch
     bytes += block(world.bodies().capacity() * sizeof(physics::Body));
     for (const physics::Body& b : world.bodies()) {
-        bytes += block(b.shape.polygon.vertices.size() * sizeof(physics::Vec2));
-        bytes += block(b.shape.polygon.normals.size() * sizeof(physics::Vec2));
+        bytes += b.shape.visit(
+            physics::Overloaded{[](const physics::Circle&) -> std::size_t { return 0; },
+                                [&](const physics::Polygon& p) {
+                                    return block(p.vertices.size() * sizeof(physics::Vec2)) +
+                                           block(p.normals.size() * sizeof(physics::Vec2));
+                                }});
         bytes += b.name.size() > 15 ? block(b.name.size() + 1) : 0;
     }
     bytes += 3 * block(world.bodies().size() * sizeof(double)); // moving, slot, sweep

@@ -44,15 +44,16 @@ std::optional<std::array<double, 4>> staticExtent(const physics::World& world)
         if (b.moves())
             continue;
         const physics::Transform t = b.transform();
-        if (b.shape.type == physics::ShapeType::Circle) {
-            const physics::Vec2 c = t.apply(b.shape.circle.center);
-            const double r = b.shape.circle.radius;
-            add(c - physics::Vec2(r, r));
-            add(c + physics::Vec2(r, r));
-        } else {
-            for (const physics::Vec2& v : b.shape.polygon.vertices)
-                add(t.apply(v));
-        }
+        b.shape.visit(physics::Overloaded{[&](const physics::Circle& circle) {
+                                              const physics::Vec2 c = t.apply(circle.center);
+                                              const double r = circle.radius;
+                                              add(c - physics::Vec2(r, r));
+                                              add(c + physics::Vec2(r, r));
+                                          },
+                                          [&](const physics::Polygon& polygon) {
+                                              for (const physics::Vec2& v : polygon.vertices)
+                                                  add(t.apply(v));
+                                          }});
     }
     return box;
 }

@@ -26,18 +26,19 @@ QColor bodyColor(int index)
 BodyItem::BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fill)
     : m_bodyId(bodyId), m_kind(kind), m_fill(fill)
 {
-    if (shape.type == physics::ShapeType::Circle) {
-        const auto& c = shape.circle;
-        const QPointF centre(c.center.x(), c.center.y());
-        m_truePath.addEllipse(centre, c.radius, c.radius);
-        m_trueCircle =
-            QRectF(centre.x() - c.radius, centre.y() - c.radius, 2 * c.radius, 2 * c.radius);
-    } else {
-        for (const auto& v : shape.polygon.vertices)
-            m_truePolygon << QPointF(v.x(), v.y());
-        m_truePath.addPolygon(m_truePolygon);
-        m_truePath.closeSubpath();
-    }
+    shape.visit(physics::Overloaded{[this](const physics::Circle& c) {
+                                        const QPointF centre(c.center.x(), c.center.y());
+                                        m_truePath.addEllipse(centre, c.radius, c.radius);
+                                        m_trueCircle =
+                                            QRectF(centre.x() - c.radius, centre.y() - c.radius,
+                                                   2 * c.radius, 2 * c.radius);
+                                    },
+                                    [this](const physics::Polygon& polygon) {
+                                        for (const auto& v : polygon.vertices)
+                                            m_truePolygon << QPointF(v.x(), v.y());
+                                        m_truePath.addPolygon(m_truePolygon);
+                                        m_truePath.closeSubpath();
+                                    }});
     rebuildDrawn();
     setAcceptHoverEvents(false);
     setZValue(kind == 1 ? 0 : 1);

@@ -119,16 +119,18 @@ void OverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget*)
         for (const physics::Body& b : bodies) {
             const physics::Transform xf = b.transform();
             QRectF box;
-            if (b.shape.type == physics::ShapeType::Circle) {
-                const QPointF c = toQt(xf.apply(b.shape.circle.center));
-                const double r = b.shape.circle.radius;
-                box = QRectF(c - QPointF(r, r), c + QPointF(r, r));
-            } else {
-                QPolygonF poly;
-                for (const auto& v : b.shape.polygon.vertices)
-                    poly << toQt(xf.apply(v));
-                box = poly.boundingRect();
-            }
+            b.shape.visit(physics::Overloaded{[&](const physics::Circle& circle) {
+                                                  const QPointF c = toQt(xf.apply(circle.center));
+                                                  const double r = circle.radius;
+                                                  box =
+                                                      QRectF(c - QPointF(r, r), c + QPointF(r, r));
+                                              },
+                                              [&](const physics::Polygon& polygon) {
+                                                  QPolygonF poly;
+                                                  for (const auto& v : polygon.vertices)
+                                                      poly << toQt(xf.apply(v));
+                                                  box = poly.boundingRect();
+                                              }});
             p->drawRect(box);
         }
     }

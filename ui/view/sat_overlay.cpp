@@ -95,6 +95,15 @@ QRectF lineRect(const QLineF& l, double halfWidth)
         .adjusted(-halfWidth, -halfWidth, halfWidth, halfWidth);
 }
 
+/// The polygon's vertices, or none for another kind of shape: the overlay draws polygons only,
+/// and a new scene may be in place before the panel is told its new pair.
+const std::vector<physics::Vec2>& polygonVertices(const physics::Shape& shape)
+{
+    static const std::vector<physics::Vec2> kNone;
+    const physics::Polygon* polygon = shape.asPolygon();
+    return polygon ? polygon->vertices : kNone;
+}
+
 } // namespace
 
 SatOverlayItem::SatOverlayItem(const SatPanel& panel) : m_panel(panel)
@@ -139,8 +148,7 @@ SatOverlayItem::Geometry SatOverlayItem::geometry(double px) const
     const auto& world = m_panel.controller().world();
     for (const int id : {m_panel.bodyA(), m_panel.bodyB()})
         if (id < 0 || id >= static_cast<int>(world.bodies().size()) ||
-            world.body(id).shape.type != physics::ShapeType::Polygon ||
-            world.body(id).shape.polygon.vertices.empty())
+            polygonVertices(world.body(id).shape).empty())
             return g;
     const int index = shown - 1;
     const physics::SatAxis& ax = r.axes[static_cast<std::size_t>(index)];
@@ -153,7 +161,7 @@ SatOverlayItem::Geometry SatOverlayItem::geometry(double px) const
     for (const int id : {m_panel.bodyA(), m_panel.bodyB()}) {
         const physics::Body& b = world.body(id);
         const physics::Transform xf = b.transform();
-        for (const auto& v : b.shape.polygon.vertices) {
+        for (const auto& v : polygonVertices(b.shape)) {
             const physics::Vec2 w = xf.apply(v);
             tMax = std::max(tMax, t.dot(w));
             g.shapes |= QRectF(qt(w), QSizeF(1e-9, 1e-9));
@@ -216,7 +224,7 @@ QRectF SatOverlayItem::hullRect() const
             continue;
         const physics::Body& b = world.bodies()[i];
         const physics::Transform xf = b.transform();
-        for (const auto& v : b.shape.polygon.vertices)
+        for (const auto& v : polygonVertices(b.shape))
             box |= QRectF(qt(xf.apply(v)), QSizeF(1e-9, 1e-9));
     }
     return box;
@@ -243,7 +251,7 @@ void SatOverlayItem::paintHulls(QPainter* p, double px) const
         const physics::Body& b = world.bodies()[i];
         const physics::Transform xf = b.transform();
         QPolygonF hull, outline;
-        for (const auto& v : b.shape.polygon.vertices)
+        for (const auto& v : polygonVertices(b.shape))
             hull << qt(xf.apply(v));
         for (const auto& v : original)
             outline << qt(xf.apply(v));
@@ -303,7 +311,7 @@ void SatOverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget
     {
         const auto& world = m_panel.controller().world();
         const physics::Body& owner = world.body(ax.owner == 0 ? m_panel.bodyA() : m_panel.bodyB());
-        const auto& v = owner.shape.polygon.vertices;
+        const auto& v = polygonVertices(owner.shape);
         const physics::Transform xf = owner.transform();
         const std::size_t e = static_cast<std::size_t>(ax.edge);
         if (e < v.size()) {

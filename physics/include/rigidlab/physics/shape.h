@@ -3,9 +3,12 @@
 // Shapes and the mass properties they give a body.
 
 #include "rigidlab/physics/math.h"
+#include "rigidlab/physics/overloaded.h"
 #include "rigidlab/physics/result.h"
 
 #include <string>
+#include <utility>
+#include <variant>
 #include <vector>
 
 namespace rigidlab::physics {
@@ -24,12 +27,23 @@ struct Polygon {
     std::vector<Vec2> normals;  ///< outward unit normal of edge i (vertex i to i+1)
 };
 
-enum class ShapeType { Circle, Polygon };
-
+/// A body's shape: one of a closed set of alternatives. Code that depends on the kind of shape
+/// goes through visit() with a visitor for every alternative (see overloaded.h), so a new
+/// alternative is a compile error at each place that must learn about it.
 struct Shape {
-    ShapeType type = ShapeType::Circle;
-    Circle circle;   ///< valid when type == Circle
-    Polygon polygon; ///< valid when type == Polygon
+    using Geometry = std::variant<Circle, Polygon>;
+    Geometry geometry; ///< a zero circle by default
+
+    /// The circle, or nullptr when the shape is another kind.
+    const Circle* asCircle() const { return std::get_if<Circle>(&geometry); }
+    /// The polygon, or nullptr when the shape is another kind.
+    const Polygon* asPolygon() const { return std::get_if<Polygon>(&geometry); }
+
+    /// Calls the visitor with the alternative the shape holds.
+    template <class Visitor> decltype(auto) visit(Visitor&& visitor) const
+    {
+        return std::visit(std::forward<Visitor>(visitor), geometry);
+    }
 };
 
 struct MassProperties {
