@@ -277,7 +277,13 @@ void TestCli::shippedScenesValidate()
     const CliRun run = runCli({QStringLiteral("validate"), path});
     QVERIFY(!run.crashed);
     QCOMPARE(run.exitCode, 0);
-    QVERIFY2(run.err.isEmpty(), run.err.constData());
+    // The one scene that shows the separating axis test a non-convex polygon is meant to be
+    // warned of (its hull is used); every other is clean.
+    if (path.endsWith(QStringLiteral("sat_non_convex.json")))
+        QVERIFY2(run.err.contains("the polygon is not convex") && run.err.count('\n') == 1,
+                 run.err.constData());
+    else
+        QVERIFY2(run.err.isEmpty(), run.err.constData());
     const QString out = QString::fromUtf8(run.out);
     QVERIFY2(out.startsWith(QStringLiteral("ok: ") + path + QStringLiteral(": ")), qPrintable(out));
     QVERIFY(out.contains(QStringLiteral(" bod")));

@@ -16,6 +16,8 @@
 namespace rigidlab::test {
 
 inline const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
+/// The one folder of shipped scenes, the lessons' included.
+inline const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
 
 inline QString lessonPath(const char* name)
 {

@@ -91,9 +91,10 @@ void TestLesson::shippedLessonsLoad()
             }
         }
         QVERIFY(!step.scene.bodies.empty());
-        // Scene files stay inside the lesson's folder.
+        // Scene files are the shipped scenes, in the one scenes folder.
         if (!step.scenePath.isEmpty())
-            QVERIFY(step.scenePath.startsWith(QFileInfo(kLessonsDir).absoluteFilePath() + u'/'));
+            QVERIFY2(step.scenePath.startsWith(QFileInfo(kScenesDir).absoluteFilePath() + u'/'),
+                     qPrintable(step.scenePath));
         // A short run of every world stays finite; a world may diverge (the lab then stops
         // it with a diagnosis) only in a step whose text tells the student it will.
         std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
@@ -267,12 +268,10 @@ void TestLesson::rejectsBadLesson_data()
                     "would ever be right";
     QTest::newRow("path-escaping-folder")
         << stepWithScene(R"("../scenes/ball_drop.json")")
-        << steps0 +
-               R"(scene: must not leave the lesson's folder (no ".."), got "../scenes/ball_drop.json")";
+        << steps0 + R"(scene: must not leave the lesson's folder, got "../scenes/ball_drop.json")";
     QTest::newRow("path-escaping-inside")
         << stepWithScene(R"("scenes/../../x.json")")
-        << steps0 +
-               R"(scene: must not leave the lesson's folder (no ".."), got "scenes/../../x.json")";
+        << steps0 + R"(scene: must not leave the lesson's folder, got "scenes/../../x.json")";
     QTest::newRow("path-absolute")
         << stepWithScene(R"("/etc/passwd")")
         << steps0 + R"(scene: must be a path relative to the lesson's folder, got "/etc/passwd")";
@@ -563,11 +562,12 @@ void TestLesson::formatDocumentExampleLoads()
     const QRegularExpressionMatch match = block.match(text);
     QVERIFY(match.hasMatch());
     QTemporaryDir dir;
-    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")) &&
+            QDir(dir.path()).mkdir(QStringLiteral("lessons")));
     for (const char* scene : {"four_balls.json", "sat_apart.json"})
-        QVERIFY(QFile::copy(QDir(kLessonsDir).filePath(QStringLiteral("scenes/") + scene),
+        QVERIFY(QFile::copy(QDir(kScenesDir).filePath(QLatin1StringView(scene)),
                             dir.filePath(QStringLiteral("scenes/") + scene)));
-    const QString path = dir.filePath(QStringLiteral("example.json"));
+    const QString path = dir.filePath(QStringLiteral("lessons/example.json"));
     writeFile(path, match.captured(1).toUtf8());
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
