@@ -29,61 +29,80 @@ constexpr int kMaxDescription = 100;
 
 class LessonReader {
 public:
-    LessonReader(const QString& sourceName, const QString& absolutePath) : m_in(sourceName)
+    LessonReader(const QString& sourceName, const QString& absolutePath,
+                 const LessonLoadOptions& options)
+        : m_in(sourceName), m_texts(m_in, options.language)
     {
         m_lesson.path = absolutePath;
         m_step.folder = QFileInfo(absolutePath).absolutePath();
+        m_step.texts = &m_texts;
     }
 
     LessonLoadResult read(const QJsonObject& root);
 
 private:
-    bool readGoals(const QJsonObject& root);
     bool readSteps(const QJsonObject& root);
-    /// The one-line description: one line, short enough for a menu.
+    /// The title, in every language it has: not empty.
+    bool readTitle(const QJsonObject& root);
+    /// The one-line description, in every language it has: one line, short enough for a menu.
     bool readDescription(const QJsonObject& root);
 
     JsonReader m_in;
-    detail::StepContext m_step; ///< the lesson's folder, the bodies of the steps so far
+    detail::LessonTexts m_texts; ///< reads through m_in, declared after it
+    detail::StepContext m_step;  ///< the lesson's folder, the bodies of the steps so far
     Lesson m_lesson;
 };
 
+bool LessonReader::readTitle(const QJsonObject& root)
+{
+    if (!m_texts.line(root, u"title", {}, m_lesson.title, true))
+        return false;
+    for (const detail::LessonTexts::Variant& v : m_texts.variants()) {
+        if (v.text.trimmed().isEmpty())
+            return m_in.fail(v.place, QStringLiteral("must not be empty"));
+    }
+    return true;
+}
+
 bool LessonReader::readDescription(const QJsonObject& root)
 {
-    if (!m_in.string(root, u"description", {}, m_lesson.description))
+    if (!m_texts.line(root, u"description", {}, m_lesson.description))
         return false;
-    const QString& d = m_lesson.description;
-    if (d.contains(QLatin1Char('\n')) || d.contains(QLatin1Char('\r')))
-        return m_in.fail(QStringLiteral("description"),
-                         QStringLiteral("must be one line (it is shown in the lesson menu); put "
-                                        "longer text in \"summary\""));
-    if (d.size() > kMaxDescription)
-        return m_in.fail(QStringLiteral("description"),
-                         QStringLiteral("is %1 characters long; at most %2 fit a menu line (put "
-                                        "longer text in \"summary\")")
-                             .arg(d.size())
-                             .arg(kMaxDescription));
-    if (root.contains(QStringLiteral("description")) && d.trimmed().isEmpty())
-        return m_in.fail(QStringLiteral("description"),
-                         QStringLiteral("must not be empty (leave the key out instead)"));
+    for (const detail::LessonTexts::Variant& v : m_texts.variants()) {
+        const QString& d = v.text;
+        if (d.contains(QLatin1Char('\n')) || d.contains(QLatin1Char('\r')))
+            return m_in.fail(v.place,
+                             QStringLiteral("must be one line (it is shown in the lesson menu); "
+                                            "put longer text in \"summary\""));
+        if (d.size() > kMaxDescription)
+            return m_in.fail(v.place,
+                             QStringLiteral("is %1 characters long; at most %2 fit a menu line "
+                                            "(put longer text in \"summary\")")
+                                 .arg(d.size())
+                                 .arg(kMaxDescription));
+        if (d.trimmed().isEmpty())
+            return m_in.fail(v.place,
+                             QStringLiteral("must not be empty (leave the key out instead)"));
+    }
     return true;
 }
 
 LessonLoadResult LessonReader::read(const QJsonObject& root)
 {
-    const bool ok = m_in.formatVersion(root, QStringLiteral("rigidlab-lesson"),
-                                       QStringLiteral("a lesson file"), kLessonFormatVersion) &&
-                    m_in.checkKeys(root, {},
-                                   {u"rigidlab-lesson", u"title", u"summary", u"level", u"minutes",
-                                    u"order", u"description", u"goals", u"steps"}) &&
-                    m_in.string(root, u"title", {}, m_lesson.title, true) &&
-                    (!m_lesson.title.trimmed().isEmpty() ||
-                     m_in.fail(QStringLiteral("title"), QStringLiteral("must not be empty"))) &&
-                    m_in.string(root, u"summary", {}, m_lesson.summary) &&
-                    m_in.string(root, u"level", {}, m_lesson.level) &&
-                    m_in.integer(root, u"minutes", {}, m_lesson.minutes, 0, kMaxMinutes) &&
-                    m_in.integer(root, u"order", {}, m_lesson.order, 1, kMaxOrder) &&
-                    readDescription(root) && readGoals(root) && readSteps(root);
+    const bool ok =
+        m_in.formatVersion(root, QStringLiteral("rigidlab-lesson"), QStringLiteral("a lesson file"),
+                           kLessonFormatVersion) &&
+        m_in.checkKeys(root, {},
+                       {u"rigidlab-lesson", u"title", u"summary", u"level", u"minutes", u"order",
+                        u"description", u"goals", u"steps"}) &&
+        readTitle(root) && m_texts.line(root, u"summary", {}, m_lesson.summary) &&
+        m_texts.line(root, u"level", {}, m_lesson.level) &&
+        m_in.integer(root, u"minutes", {}, m_lesson.minutes, 0, kMaxMinutes) &&
+        m_in.integer(root, u"order", {}, m_lesson.order, 1, kMaxOrder) && readDescription(root) &&
+        m_texts.list(root, u"goals", {}, kMaxGoals, u"goals", m_lesson.goals) && readSteps(root);
+    if (ok) {
+        m_texts.warnMissing();
+    }
     LessonLoadResult result;
     result.warnings = m_in.warnings();
     if (!ok) {
@@ -93,32 +112,6 @@ LessonLoadResult LessonReader::read(const QJsonObject& root)
     result.ok = true;
     result.lesson = std::move(m_lesson);
     return result;
-}
-
-bool LessonReader::readGoals(const QJsonObject& root)
-{
-    if (!root.contains(u"goals")) {
-        return true;
-    }
-    const QString place = QStringLiteral("goals");
-    QJsonArray goals;
-    if (!m_in.asArray(root.value(u"goals"), place, goals)) {
-        return false;
-    }
-    if (goals.size() > kMaxGoals) {
-        return m_in.fail(
-            place,
-            QStringLiteral("%1 goals, more than the limit of %2").arg(goals.size()).arg(kMaxGoals));
-    }
-    for (qsizetype i = 0; i < goals.size(); ++i) {
-        if (!goals[i].isString() || goals[i].toString().trimmed().isEmpty()) {
-            return m_in.fail(indexPlace(place, i),
-                             QStringLiteral("must be a non-empty string \"...\", got ") +
-                                 detail::describeJson(goals[i]));
-        }
-        m_lesson.goals.append(goals[i].toString());
-    }
-    return true;
 }
 
 bool LessonReader::readSteps(const QJsonObject& root)
@@ -148,12 +141,14 @@ bool LessonReader::readSteps(const QJsonObject& root)
 
 } // namespace
 
-LessonLoadResult loadLessonObject(const QJsonObject& root, const QString& path)
+LessonLoadResult loadLessonObject(const QJsonObject& root, const QString& path,
+                                  const LessonLoadOptions& options)
 {
-    return LessonReader(path, QFileInfo(path).absoluteFilePath()).read(root);
+    return LessonReader(path, QFileInfo(path).absoluteFilePath(), options).read(root);
 }
 
-LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path)
+LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path,
+                                const LessonLoadOptions& options)
 {
     const detail::ParsedJson parsed = detail::parseJson(bytes, path, kMaxLessonFileBytes);
     if (!parsed.ok) {
@@ -167,10 +162,10 @@ LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path)
             path + QStringLiteral(": the top level must be an object {...}, got an array");
         return result;
     }
-    return loadLessonObject(parsed.document.object(), path);
+    return loadLessonObject(parsed.document.object(), path, options);
 }
 
-LessonLoadResult loadLessonFile(const QString& path)
+LessonLoadResult loadLessonFile(const QString& path, const LessonLoadOptions& options)
 {
     const detail::FileBytes file = detail::readFileBytes(path, kMaxLessonFileBytes);
     if (!file.ok) {
@@ -178,7 +173,7 @@ LessonLoadResult loadLessonFile(const QString& path)
         result.error = file.error;
         return result;
     }
-    return loadLessonJson(file.bytes, path);
+    return loadLessonJson(file.bytes, path, options);
 }
 
 } // namespace rigidlab::lessons

@@ -7,6 +7,7 @@
 #include "format/json_reader.h"
 
 #include "format/lesson.h"
+#include "format/lesson_text.h"
 
 #include <optional>
 #include <utility>
@@ -16,8 +17,9 @@ namespace rigidlab::lessons::detail {
 
 /// What reading a step needs from the lesson around it.
 struct StepContext {
-    QString folder;    ///< the lesson's folder, absolute; scene paths start here
-    qint64 bodies = 0; ///< bodies in the scenes of the steps read so far
+    QString folder;               ///< the lesson's folder, absolute; scene paths start here
+    qint64 bodies = 0;            ///< bodies in the scenes of the steps read so far
+    LessonTexts* texts = nullptr; ///< the lesson's texts, in its language
 };
 
 /// One step of "steps", at `place`; adds its bodies to `context.bodies`.
@@ -38,7 +40,7 @@ bool readSat(JsonReader& in, const QJsonObject& step, const QString& place, cons
 
 /// The step's "questions", their measures naming bodies of its scene and what they hold
 /// back naming panels and plots it shows.
-bool readQuestions(JsonReader& in, const QJsonObject& object, const QString& place,
-                   const LessonStep& step, std::vector<Question>& out);
+bool readQuestions(JsonReader& in, LessonTexts& texts, const QJsonObject& object,
+                   const QString& place, const LessonStep& step, std::vector<Question>& out);
 
 } // namespace rigidlab::lessons::detail

@@ -87,36 +87,6 @@ bool readNames(JsonReader& in, const QJsonObject& object, QStringView key, const
     return true;
 }
 
-bool readText(JsonReader& in, const QJsonObject& object, const QString& place, QString& out)
-{
-    // A string, or an array of strings (one per line or paragraph), which is easier to write
-    // and to read in a JSON file; the lines are joined with line breaks.
-    const auto it = object.constFind(u"text");
-    if (it == object.constEnd()) {
-        return true;
-    }
-    const QString at = joinPlace(place, u"text");
-    if (it.value().isString()) {
-        out = it.value().toString();
-        return true;
-    }
-    if (!it.value().isArray()) {
-        return in.fail(at, QStringLiteral("must be a string or an array of strings, got ") +
-                               describeJson(it.value()));
-    }
-    const QJsonArray lines = it.value().toArray();
-    QStringList parts;
-    for (qsizetype i = 0; i < lines.size(); ++i) {
-        if (!lines[i].isString()) {
-            return in.fail(indexPlace(at, i), QStringLiteral("must be a string \"...\", got ") +
-                                                  describeJson(lines[i]));
-        }
-        parts.append(lines[i].toString());
-    }
-    out = parts.join(u'\n');
-    return true;
-}
-
 bool readSceneFile(JsonReader& in, const QString& relative, const QString& place,
                    const StepContext& context, LessonStep& step)
 {
@@ -185,13 +155,16 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
         !in.checkKeys(object, place,
                       {u"title", u"text", u"scene", u"settings", u"compare", u"plots", u"overlays",
                        u"panels", u"allow", u"sat", u"questions", u"exportTime", u"autoplay"}) ||
-        !in.string(object, u"title", place, step.title, true)) {
+        !context.texts->line(object, u"title", place, step.title, true)) {
         return false;
     }
-    if (step.title.trimmed().isEmpty()) {
-        return in.fail(joinPlace(place, u"title"), QStringLiteral("must not be empty"));
+    for (const LessonTexts::Variant& v : context.texts->variants()) {
+        if (v.text.trimmed().isEmpty()) {
+            return in.fail(v.place, QStringLiteral("must not be empty"));
+        }
     }
-    if (!readText(in, object, place, step.text) || !readScene(in, object, place, context, step) ||
+    if (!context.texts->paragraphs(object, u"text", place, step.text) ||
+        !readScene(in, object, place, context, step) ||
         !readSettings(in, object, place, step.settings) || !readCompare(in, object, place, step) ||
         !readNames(in, object, u"plots", place, kPlotNames, u"plot", step.plots) ||
         !readNames(in, object, u"overlays", place, kOverlayNames, u"overlay", step.overlays) ||
@@ -223,7 +196,7 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
         step.allow = allow;
     }
     if (!readSat(in, object, place, step.scene, step.sat) ||
-        !readQuestions(in, object, place, step, step.questions) ||
+        !readQuestions(in, *context.texts, object, place, step, step.questions) ||
         !in.number(object, u"exportTime", place, step.exportTime, NumberRule::Positive) ||
         !in.boolean(object, u"autoplay", place, step.autoplay)) {
         return false;

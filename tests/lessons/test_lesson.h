@@ -94,6 +94,11 @@ private slots:
     void inlineSceneErrorsContinueThePlace();
     void everyField();
     void formatDocumentExampleLoads();
+    void textsInBothForms();
+    void textsFallBackToEnglish();
+    void missingLanguageWarns();
+    void badLanguageObjectRefused_data();
+    void badLanguageObjectRefused();
     void originalVerticesOfNonConvexPolygon();
     void buildStepWorldsMakesOneWorldPerVariant();
     void applySettingsOverridesScene();
@@ -101,6 +106,7 @@ private slots:
     // test_lesson_physics.cpp
     void judgeApexRightAndWrong();
     void judgeTimedValue();
+    void judgeWaitsInWholeSentences();
     void judgeMessages_data();
     void judgeMessages();
     void judgeAttemptGivesHintThenValue();
