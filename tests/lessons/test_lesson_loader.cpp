@@ -64,6 +64,15 @@ void TestLesson::shippedLessonsLoad()
     QFETCH(QString, path);
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    // Every shipped language reads the same lesson, and a translated one lacks no text.
+    for (const lessons::Language& language : lessons::kLanguages) {
+        const lessons::LessonLoadResult in =
+            lessons::loadLessonFile(path, {language.code.toString()});
+        QVERIFY2(in.ok, qPrintable(in.error));
+        QCOMPARE(in.lesson.steps.size(), loaded.lesson.steps.size());
+    }
+    for (const QString& w : loaded.warnings)
+        QVERIFY2(!w.contains(QStringLiteral("English is shown instead")), qPrintable(w));
     const lessons::Lesson& lesson = loaded.lesson;
     QCOMPARE(lesson.path, QFileInfo(path).absoluteFilePath());
     QVERIFY(!lesson.title.isEmpty());
