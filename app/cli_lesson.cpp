@@ -6,6 +6,7 @@
 #include "plots/lesson_export.h"
 
 #include "format/data_dirs.h"
+#include "format/languages.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
 
@@ -43,12 +44,34 @@ void printOutline(const lessons::Lesson& lesson)
 
 } // namespace
 
+void addLanguageOption(CommandLine& args)
+{
+    args.addValue(QStringLiteral("lang"), QStringLiteral("language"));
+}
+
+bool applyLanguageOption(const CommandLine& args, QString& error)
+{
+    const auto lang = args.value(QStringLiteral("lang"));
+    if (!lang)
+        return true;
+    if (!lessons::setLessonLanguage(*lang)) {
+        error = QStringLiteral("--lang: unknown language \"%1\" (expected %2)")
+                    .arg(*lang, lessons::shippedLanguageCodes());
+        return false;
+    }
+    return true;
+}
+
 int commandLesson(const QStringList& words)
 {
     CommandLine args(QStringLiteral("lesson"));
     args.addValue(QStringLiteral("export"), QStringLiteral("folder"));
+    addLanguageOption(args);
     if (!args.parse(words))
         return usageError(args.command(), args.error());
+    QString languageError;
+    if (!applyLanguageOption(args, languageError))
+        return usageError(args.command(), languageError);
     const auto exportDir = args.value(QStringLiteral("export"));
     if (exportDir && exportDir->isEmpty())
         return usageError(args.command(), QStringLiteral("--export: needs a folder"));

@@ -45,7 +45,10 @@ Commands:
                              step are always written)
       --profile              print each stage's time per step (broad phase, narrow phase,
                              islands, forces, integration, contact solve, sleep, diagnostics)
-  validate FILE.json...      check documents (scenes, lessons) and say what is wrong
+  validate FILE.json...      check documents (scenes, lessons) and say what is wrong; a
+                             translated lesson is warned of for each text without a
+                             shipped language
+      --lang en|cs           the language a lesson's title is printed in (default en)
   bench [OPTIONS]            RigidLab's side of the benchmarks (./lab bench adds the peers)
       --scene NAME           one scene: pyramid-20, pyramid-40, pyramid-100, rain-1000,
                              stack-12, mass-ratio (default: all)
@@ -56,6 +59,8 @@ Commands:
   lesson LESSON.json         a lesson's steps, with their plots, panels and questions
       --export DIR           run every step that has plots for its exportTime and write
                              them as PNG, PDF, SVG and CSV into DIR/NN-step-title/
+      --lang en|cs           the language of the lesson's texts: outline, step titles,
+                             plot captions (default en; English where a text has none)
   lessons                    the shipped lessons: each file's path and title (the data
                              folder: RIGIDLAB_DATA_DIR, else beside the installed program),
                              then the user's own (~/.local/share/rigidlab/lessons), marked
@@ -81,6 +86,7 @@ Commands:
 Exit status: 0 done, 1 an output file could not be written, 2 bad input or usage,
 3 the simulation diverged (nothing written), 4 a stress case ended with another verdict
 than documented.
+rigidlab-cli's own messages are in English, whatever --lang says: scripts read them.
 Scene format: lessons/SCENE_FORMAT.md.
 )";
 
@@ -202,8 +208,12 @@ int commandRun(const QStringList& words)
 int commandValidate(const QStringList& words)
 {
     CommandLine args(QStringLiteral("validate"));
+    addLanguageOption(args);
     if (!args.parse(words))
         return usageError(args.command(), args.error());
+    QString languageError;
+    if (!applyLanguageOption(args, languageError))
+        return usageError(args.command(), languageError);
     if (args.positionals().isEmpty())
         return usageError(args.command(), QStringLiteral("which file?"));
     int status = kExitOk;

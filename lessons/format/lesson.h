@@ -3,6 +3,7 @@
 // A lesson: an ordered list of steps, each with its text, a prepared scene and settings, and
 // only the plots, overlays and panels the step needs. Format: lessons/LESSON_FORMAT.md.
 
+#include "format/languages.h"
 #include "format/scene.h"
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
@@ -126,6 +127,12 @@ struct Lesson {
     std::vector<LessonStep> steps;
 };
 
+/// How a lesson is read.
+struct LessonLoadOptions {
+    /// The language its texts are kept in (languages.h); a text without it is English.
+    QString language = lessonLanguage();
+};
+
 struct LessonLoadResult {
     bool ok = false;
     QString error;        ///< one line `FILE: PLACE: what is wrong`, like the scene loader's
@@ -133,14 +140,18 @@ struct LessonLoadResult {
     Lesson lesson;
 };
 
-/// Reads and checks a lesson; scene paths are relative to the lesson's folder and may not
-/// leave it (no "..", no absolute paths).
-LessonLoadResult loadLessonFile(const QString& path);
+/// Reads and checks a lesson, keeping its texts in `options.language`; scene paths are
+/// relative to the lesson's folder and stay where format/scene_path.h allows. Every text is
+/// checked in every language it has, whichever is kept; a translated lesson warns of each text
+/// that lacks a shipped language.
+LessonLoadResult loadLessonFile(const QString& path, const LessonLoadOptions& options = {});
 /// The same for a lesson held in memory; `path` names it in messages, and scene paths are
 /// relative to its folder.
-LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path);
+LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path,
+                                const LessonLoadOptions& options = {});
 /// The same for a document already parsed (one whose top level holds "rigidlab-lesson").
-LessonLoadResult loadLessonObject(const QJsonObject& root, const QString& path);
+LessonLoadResult loadLessonObject(const QJsonObject& root, const QString& path,
+                                  const LessonLoadOptions& options = {});
 
 /// Applies a step's settings to a world built from its scene.
 void applySettings(const StepSettings& settings, physics::World& world);

@@ -186,7 +186,23 @@ bool readHoldBack(JsonReader& in, const QJsonObject& object, const QString& plac
     return true;
 }
 
-bool readQuestion(JsonReader& in, const QJsonValue& value, const QString& place,
+/// A text of a question that must not be empty in any of its languages.
+bool readNonEmptyText(JsonReader& in, LessonTexts& texts, const QJsonObject& object,
+                      QStringView key, const QString& place, QString& out, bool required,
+                      const QString& whenEmpty)
+{
+    if (!texts.line(object, key, place, out, required)) {
+        return false;
+    }
+    for (const LessonTexts::Variant& v : texts.variants()) {
+        if (v.text.trimmed().isEmpty()) {
+            return in.fail(v.place, whenEmpty);
+        }
+    }
+    return true;
+}
+
+bool readQuestion(JsonReader& in, LessonTexts& texts, const QJsonValue& value, const QString& place,
                   const LessonStep& step, Question& question)
 {
     const Scene& scene = step.scene;
@@ -195,11 +211,9 @@ bool readQuestion(JsonReader& in, const QJsonValue& value, const QString& place,
         !in.checkKeys(object, place,
                       {u"prompt", u"measure", u"unit", u"tolerance", u"absoluteTolerance", u"hint",
                        u"holdBack"}) ||
-        !in.string(object, u"prompt", place, question.prompt, true)) {
+        !readNonEmptyText(in, texts, object, u"prompt", place, question.prompt, true,
+                          QStringLiteral("must not be empty"))) {
         return false;
-    }
-    if (question.prompt.trimmed().isEmpty()) {
-        return in.fail(joinPlace(place, u"prompt"), QStringLiteral("must not be empty"));
     }
     if (!object.contains(u"measure")) {
         return in.fail(joinPlace(place, u"measure"),
@@ -208,7 +222,7 @@ bool readQuestion(JsonReader& in, const QJsonValue& value, const QString& place,
     }
     if (!readMeasure(in, object.value(u"measure"), joinPlace(place, u"measure"), scene,
                      question.measure) ||
-        !in.string(object, u"unit", place, question.unit) ||
+        !texts.line(object, u"unit", place, question.unit) ||
         !in.number(object, u"tolerance", place, question.tolerance, NumberRule::UnitInterval) ||
         !in.number(object, u"absoluteTolerance", place, question.absoluteTolerance,
                    NumberRule::NonNegative, limits::kAbsoluteTolerance)) {
@@ -219,12 +233,9 @@ bool readQuestion(JsonReader& in, const QJsonValue& value, const QString& place,
                        QStringLiteral("0, and so is absoluteTolerance: no typed answer would "
                                       "ever be right"));
     }
-    if (!in.string(object, u"hint", place, question.hint)) {
+    if (!readNonEmptyText(in, texts, object, u"hint", place, question.hint, false,
+                          QStringLiteral("must not be empty (leave the key out for no hint)"))) {
         return false;
-    }
-    if (object.contains(u"hint") && question.hint.trimmed().isEmpty()) {
-        return in.fail(joinPlace(place, u"hint"),
-                       QStringLiteral("must not be empty (leave the key out for no hint)"));
     }
     return readHoldBack(in, object, place, step, question.holdBack);
 }
@@ -263,8 +274,8 @@ bool readSat(JsonReader& in, const QJsonObject& object, const QString& place, co
     return true;
 }
 
-bool readQuestions(JsonReader& in, const QJsonObject& object, const QString& place,
-                   const LessonStep& step, std::vector<Question>& out)
+bool readQuestions(JsonReader& in, LessonTexts& texts, const QJsonObject& object,
+                   const QString& place, const LessonStep& step, std::vector<Question>& out)
 {
     if (!object.contains(u"questions")) {
         return true;
@@ -281,7 +292,7 @@ bool readQuestions(JsonReader& in, const QJsonObject& object, const QString& pla
     }
     for (qsizetype i = 0; i < list.size(); ++i) {
         Question question;
-        if (!readQuestion(in, list[i], indexPlace(at, i), step, question)) {
+        if (!readQuestion(in, texts, list[i], indexPlace(at, i), step, question)) {
             return false;
         }
         out.push_back(std::move(question));

@@ -1,16 +1,37 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Reading a lesson file: the parts kept apart from lesson_loader.cpp (lesson_questions.cpp).
+// Reading a lesson file, below the document level of lesson_loader.cpp: a step
+// (lesson_step.cpp), its settings and comparison (lesson_settings.cpp), its SAT pair and
+// questions (lesson_questions.cpp).
 
 #include "format/json_reader.h"
 
 #include "format/lesson.h"
+#include "format/lesson_text.h"
 
 #include <optional>
 #include <utility>
 #include <vector>
 
 namespace rigidlab::lessons::detail {
+
+/// What reading a step needs from the lesson around it.
+struct StepContext {
+    QString folder;               ///< the lesson's folder, absolute; scene paths start here
+    qint64 bodies = 0;            ///< bodies in the scenes of the steps read so far
+    LessonTexts* texts = nullptr; ///< the lesson's texts, in its language
+};
+
+/// One step of "steps", at `place`; adds its bodies to `context.bodies`.
+bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, StepContext& context,
+              LessonStep& step);
+
+/// The step's "settings", on top of its scene's.
+bool readSettings(JsonReader& in, const QJsonObject& object, const QString& place,
+                  StepSettings& settings);
+
+/// The step's "compare", after its settings (a compared setting may not be set as well).
+bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place, LessonStep& step);
 
 /// The step's "sat": {"a": ID, "b": ID}, two different polygons of `scene`; `out` is left
 /// empty when the step has none.
@@ -19,7 +40,7 @@ bool readSat(JsonReader& in, const QJsonObject& step, const QString& place, cons
 
 /// The step's "questions", their measures naming bodies of its scene and what they hold
 /// back naming panels and plots it shows.
-bool readQuestions(JsonReader& in, const QJsonObject& object, const QString& place,
-                   const LessonStep& step, std::vector<Question>& out);
+bool readQuestions(JsonReader& in, LessonTexts& texts, const QJsonObject& object,
+                   const QString& place, const LessonStep& step, std::vector<Question>& out);
 
 } // namespace rigidlab::lessons::detail

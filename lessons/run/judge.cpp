@@ -13,26 +13,11 @@ namespace rigidlab::lessons {
 
 namespace {
 
+// Every message is one whole sentence, its numbers as %1 placeholders, so that a translator
+// can reorder it (issue 14): no sentence is assembled from words.
 QString tr(const char* text)
 {
-    return QCoreApplication::translate("rigidlab::lessons::judge", text);
-}
-
-/// "first" ... "tenth", then "11th", "21st", "22nd", "23rd".
-QString ordinal(int n)
-{
-    static const char* const kWords[] = {"first", "second",  "third",  "fourth", "fifth",
-                                         "sixth", "seventh", "eighth", "ninth",  "tenth"};
-    if (n >= 1 && n <= 10) {
-        return tr(kWords[n - 1]);
-    }
-    const int lastTwo = n % 100;
-    const int last = n % 10;
-    const char* suffix = "th";
-    if (lastTwo < 11 || lastTwo > 13) {
-        suffix = last == 1 ? "st" : last == 2 ? "nd" : last == 3 ? "rd" : "th";
-    }
-    return QString::number(n) + QLatin1StringView(suffix);
+    return QCoreApplication::translate("Judge", text);
 }
 
 /// A number as a student would write it: enough significant digits to tell the tolerance
@@ -58,7 +43,17 @@ QString formatValue(double value, const Question& q)
 QString notYet(const Measure& m)
 {
     if (m.kind == Measure::Kind::Apex) {
-        return tr("Run the simulation past the top of the %1 bounce first.").arg(ordinal(m.n));
+        // The first bounces, the ones lessons ask about, in words; any later one by number.
+        switch (m.n) {
+        case 1:
+            return tr("Run the simulation past the top of the first bounce first.");
+        case 2:
+            return tr("Run the simulation past the top of the second bounce first.");
+        case 3:
+            return tr("Run the simulation past the top of the third bounce first.");
+        default:
+            return tr("Run the simulation past the top of bounce number %1 first.").arg(m.n);
+        }
     }
     return tr("Run the simulation until t = %1 s first.").arg(QString::number(m.time, 'g', 6));
 }

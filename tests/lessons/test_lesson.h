@@ -16,6 +16,8 @@
 namespace rigidlab::test {
 
 inline const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
+/// The one folder of shipped scenes, the lessons' included.
+inline const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
 
 inline QString lessonPath(const char* name)
 {
@@ -93,6 +95,11 @@ private slots:
     void inlineSceneErrorsContinueThePlace();
     void everyField();
     void formatDocumentExampleLoads();
+    void textsInBothForms();
+    void textsFallBackToEnglish();
+    void missingLanguageWarns();
+    void badLanguageObjectRefused_data();
+    void badLanguageObjectRefused();
     void originalVerticesOfNonConvexPolygon();
     void buildStepWorldsMakesOneWorldPerVariant();
     void applySettingsOverridesScene();
@@ -100,6 +107,7 @@ private slots:
     // test_lesson_physics.cpp
     void judgeApexRightAndWrong();
     void judgeTimedValue();
+    void judgeWaitsInWholeSentences();
     void judgeMessages_data();
     void judgeMessages();
     void judgeAttemptGivesHintThenValue();

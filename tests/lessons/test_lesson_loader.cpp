@@ -6,6 +6,7 @@
 
 #include "format/data_dirs.h"
 #include "format/document.h"
+#include "format/languages.h"
 #include "format/lesson_catalog.h"
 
 #include <QFileInfo>
@@ -64,6 +65,15 @@ void TestLesson::shippedLessonsLoad()
     QFETCH(QString, path);
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    // Every shipped language reads the same lesson, and a translated one lacks no text.
+    for (const lessons::Language& language : lessons::kLanguages) {
+        const lessons::LessonLoadResult in =
+            lessons::loadLessonFile(path, {language.code.toString()});
+        QVERIFY2(in.ok, qPrintable(in.error));
+        QCOMPARE(in.lesson.steps.size(), loaded.lesson.steps.size());
+    }
+    for (const QString& w : loaded.warnings)
+        QVERIFY2(!w.contains(QStringLiteral("English is shown instead")), qPrintable(w));
     const lessons::Lesson& lesson = loaded.lesson;
     QCOMPARE(lesson.path, QFileInfo(path).absoluteFilePath());
     QVERIFY(!lesson.title.isEmpty());
@@ -92,9 +102,10 @@ void TestLesson::shippedLessonsLoad()
             }
         }
         QVERIFY(!step.scene.bodies.empty());
-        // Scene files stay inside the lesson's folder.
+        // Scene files are the shipped scenes, in the one scenes folder.
         if (!step.scenePath.isEmpty())
-            QVERIFY(step.scenePath.startsWith(QFileInfo(kLessonsDir).absoluteFilePath() + u'/'));
+            QVERIFY2(step.scenePath.startsWith(QFileInfo(kScenesDir).absoluteFilePath() + u'/'),
+                     qPrintable(step.scenePath));
         // A short run of every world stays finite; a world may diverge (the lab then stops
         // it with a diagnosis) only in a step whose text tells the student it will.
         std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
@@ -272,8 +283,8 @@ void TestLesson::rejectsBadLesson_data()
     QTest::newRow("scene-missing")
         << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "steps": [{"title": "s"}]})")
         << steps0 + "scene: required, but missing (a scene object, or the path of a scene file)";
-    QTest::newRow("text-number") << oneStep(R"("text": 5)")
-                                 << steps0 + "text: must be a string or an array of strings, got 5";
+    QTest::newRow("text-array-of-numbers")
+        << oneStep(R"("text": ["a", 5])") << steps0 + R"(text[1]: must be a string "...", got 5)";
     QTest::newRow("bad-body-in-question")
         << oneStep(R"("questions": [{"prompt": "p", "measure": {"kind": "apex", "body": "bal"}}])")
         << steps0 + R"(questions[0].measure.body: no body with id "bal")";
@@ -301,12 +312,10 @@ void TestLesson::rejectsBadLesson_data()
                     "would ever be right";
     QTest::newRow("path-escaping-folder")
         << stepWithScene(R"("../scenes/ball_drop.json")")
-        << steps0 +
-               R"(scene: must not leave the lesson's folder (no ".."), got "../scenes/ball_drop.json")";
+        << steps0 + R"(scene: must not leave the lesson's folder, got "../scenes/ball_drop.json")";
     QTest::newRow("path-escaping-inside")
         << stepWithScene(R"("scenes/../../x.json")")
-        << steps0 +
-               R"(scene: must not leave the lesson's folder (no ".."), got "scenes/../../x.json")";
+        << steps0 + R"(scene: must not leave the lesson's folder, got "scenes/../../x.json")";
     QTest::newRow("path-absolute")
         << stepWithScene(R"("/etc/passwd")")
         << steps0 + R"(scene: must be a path relative to the lesson's folder, got "/etc/passwd")";
@@ -597,11 +606,12 @@ void TestLesson::formatDocumentExampleLoads()
     const QRegularExpressionMatch match = block.match(text);
     QVERIFY(match.hasMatch());
     QTemporaryDir dir;
-    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
+    QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")) &&
+            QDir(dir.path()).mkdir(QStringLiteral("lessons")));
     for (const char* scene : {"four_balls.json", "sat_apart.json"})
-        QVERIFY(QFile::copy(QDir(kLessonsDir).filePath(QStringLiteral("scenes/") + scene),
+        QVERIFY(QFile::copy(QDir(kScenesDir).filePath(QLatin1StringView(scene)),
                             dir.filePath(QStringLiteral("scenes/") + scene)));
-    const QString path = dir.filePath(QStringLiteral("example.json"));
+    const QString path = dir.filePath(QStringLiteral("lessons/example.json"));
     writeFile(path, match.captured(1).toUtf8());
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
@@ -678,4 +688,197 @@ void TestLesson::applySettingsOverridesScene()
     on.gravity = true;
     lessons::applySettings(on, space);
     QCOMPARE(space.def().gravity, physics::Vec2(0, -9.81));
+}
+
+// --- languages: every text a student reads, in English or per language ------------------
+
+namespace {
+
+/// A lesson whose texts are all in the object form, each with "en" and, where `czech`, "cs".
+QByteArray bilingualLesson(bool czech)
+{
+    const auto text = [czech](const char* en, const char* cs) {
+        return QByteArray(R"({"en": ")") + en + '"' +
+               (czech ? QByteArray(R"(, "cs": ")") + cs + '"' : QByteArray()) + '}';
+    };
+    const QByteArray paragraphs =
+        QByteArray(R"({"en": ["One.", "Two."])") +
+        (czech ? QByteArray(R"(, "cs": ["Jedna.", "Dvě."])") : QByteArray()) + '}';
+    const QByteArray goals = QByteArray(R"({"en": ["Predict."])") +
+                             (czech ? QByteArray(R"(, "cs": ["Předpovědět."])") : QByteArray()) +
+                             '}';
+    return R"({"rigidlab-lesson": 1, "title": )" + text("Bounces", "Odrazy") + R"(, "summary": )" +
+           text("Drop balls.", "Pouštějte míčky.") + R"(, "level": )" +
+           text("first year", "první ročník") + R"(, "description": )" +
+           text("Bounce heights", "Výšky odrazů") + R"(, "goals": )" + goals +
+           R"(, "steps": [{"title": )" + text("Four balls", "Čtyři míčky") + R"(, "text": )" +
+           paragraphs + R"(, "scene": )" + kScene + R"(, "questions": [{"prompt": )" +
+           text("How high?", "Jak vysoko?") +
+           R"(, "measure": {"kind": "apex", "body": "ball"}, "unit": )" + text("m", "m") +
+           R"(, "hint": )" + text("e squared", "e na druhou") + "}]}]}";
+}
+
+} // namespace
+
+void TestLesson::textsInBothForms()
+{
+    // The object form, in each language.
+    const QByteArray both = bilingualLesson(true);
+    const lessons::LessonLoadResult en =
+        lessons::loadLessonJson(both, QStringLiteral("l.json"), {QStringLiteral("en")});
+    QVERIFY2(en.ok, qPrintable(en.error));
+    QVERIFY2(en.warnings.isEmpty(), qPrintable(en.warnings.join(u'\n')));
+    QCOMPARE(en.lesson.title, QStringLiteral("Bounces"));
+    QCOMPARE(en.lesson.steps.front().text, QStringLiteral("One.\nTwo."));
+    const lessons::LessonLoadResult cs =
+        lessons::loadLessonJson(both, QStringLiteral("l.json"), {QStringLiteral("cs")});
+    QVERIFY2(cs.ok, qPrintable(cs.error));
+    const lessons::Lesson& l = cs.lesson;
+    QCOMPARE(l.title, QStringLiteral("Odrazy"));
+    QCOMPARE(l.summary, QStringLiteral("Pouštějte míčky."));
+    QCOMPARE(l.level, QStringLiteral("první ročník"));
+    QCOMPARE(l.description, QStringLiteral("Výšky odrazů"));
+    QCOMPARE(l.goals, QStringList{QStringLiteral("Předpovědět.")});
+    const lessons::LessonStep& step = l.steps.front();
+    QCOMPARE(step.title, QStringLiteral("Čtyři míčky"));
+    QCOMPARE(step.text, QStringLiteral("Jedna.\nDvě."));
+    QCOMPARE(step.questions.front().prompt, QStringLiteral("Jak vysoko?"));
+    QCOMPARE(step.questions.front().hint, QStringLiteral("e na druhou"));
+
+    // The plain form is English, whatever the language; goals may also be a list of texts.
+    const QByteArray plain =
+        oneStep(R"("text": ["a", "b"], "questions": [{"prompt": "p", "measure": {"kind": )"
+                R"("apex", "body": "ball"}, "hint": {"en": "h", "cs": "n"}}])");
+    const lessons::LessonLoadResult mixed =
+        lessons::loadLessonJson(plain, QStringLiteral("l.json"), {QStringLiteral("cs")});
+    QVERIFY2(mixed.ok, qPrintable(mixed.error));
+    QCOMPARE(mixed.lesson.steps.front().text, QStringLiteral("a\nb"));
+    QCOMPARE(mixed.lesson.steps.front().questions.front().hint, QStringLiteral("n"));
+    const QByteArray goalItems =
+        R"({"rigidlab-lesson": 1, "title": "t", "goals": ["g1", {"en": "g2", "cs": "c2"}],)"
+        R"( "steps": [{"title": "s", "scene": )" +
+        QByteArray(kScene) + "}]}";
+    const lessons::LessonLoadResult items =
+        lessons::loadLessonJson(goalItems, QStringLiteral("l.json"), {QStringLiteral("cs")});
+    QVERIFY2(items.ok, qPrintable(items.error));
+    QCOMPARE(items.lesson.goals, (QStringList{QStringLiteral("g1"), QStringLiteral("c2")}));
+}
+
+void TestLesson::textsFallBackToEnglish()
+{
+    // Czech asked for, none there: every text is the English one, and so it is for a language
+    // the lab does not ship.
+    const QByteArray english = bilingualLesson(false);
+    for (const char* language : {"cs", "de"}) {
+        const lessons::LessonLoadResult r = lessons::loadLessonJson(
+            english, QStringLiteral("l.json"), {QString::fromLatin1(language)});
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QCOMPARE(r.lesson.title, QStringLiteral("Bounces"));
+        QCOMPARE(r.lesson.goals, QStringList{QStringLiteral("Predict.")});
+        QCOMPARE(r.lesson.steps.front().text, QStringLiteral("One.\nTwo."));
+        QCOMPARE(r.lesson.steps.front().questions.front().unit, QStringLiteral("m"));
+    }
+    // Without options the loader reads the language chosen for the app.
+    QCOMPARE(lessons::lessonLanguage(), QStringLiteral("en"));
+    QVERIFY(!lessons::setLessonLanguage(QStringLiteral("de")));
+    QVERIFY(lessons::setLessonLanguage(QStringLiteral("cs")));
+    const lessons::LessonLoadResult chosen =
+        lessons::loadLessonJson(bilingualLesson(true), QStringLiteral("l.json"));
+    QVERIFY(lessons::setLessonLanguage(QStringLiteral("en")));
+    QCOMPARE(chosen.lesson.title, QStringLiteral("Odrazy"));
+}
+
+void TestLesson::missingLanguageWarns()
+{
+    // A translated lesson warns of each text without Czech, saying where; it still loads.
+    QByteArray json = bilingualLesson(true);
+    json.replace(R"(, "cs": "Čtyři míčky")", "");
+    json.replace(R"(, "cs": "e na druhou")", "");
+    const lessons::LessonLoadResult r = lessons::loadLessonJson(json, QStringLiteral("l.json"));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    const QString tail = QStringLiteral(": no Čeština text (\"cs\"); English is shown instead");
+    QCOMPARE(r.warnings,
+             (QStringList{QStringLiteral("l.json: steps[0].title") + tail,
+                          QStringLiteral("l.json: steps[0].questions[0].hint") + tail}));
+
+    // A plain string in a translated lesson lacks Czech too.
+    json = bilingualLesson(true);
+    json.replace(R"({"en": "first year", "cs": "první ročník"})", R"("first year")");
+    const lessons::LessonLoadResult plain = lessons::loadLessonJson(json, QStringLiteral("l.json"));
+    QCOMPARE(plain.warnings, QStringList{QStringLiteral("l.json: level") + tail});
+
+    // A lesson all in plain strings is an English lesson: nothing to warn of.
+    QVERIFY(lessons::loadLessonJson(oneStep(R"("text": "x")"), QStringLiteral("l.json"))
+                .warnings.isEmpty());
+
+    // validate prints the warning, and still exits 0 (test_cli runs it); checkDocumentFile
+    // carries the same lines.
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("l.json"));
+    writeFile(path, bilingualLesson(true).replace(R"(, "cs": "Odrazy")", ""));
+    const lessons::DocumentCheck check = lessons::checkDocumentFile(path);
+    QVERIFY2(check.ok, qPrintable(check.error));
+    QCOMPARE(check.warnings, QStringList{path + QStringLiteral(": title") + tail});
+}
+
+void TestLesson::badLanguageObjectRefused_data()
+{
+    QTest::addColumn<QByteArray>("json");
+    QTest::addColumn<QString>("message");
+    const auto lesson = [](const char* title, const char* fields) {
+        return QByteArray(R"({"rigidlab-lesson": 1, "title": )") + title +
+               R"(, "steps": [{"title": "s", "scene": )" + kScene + fields + "}]}";
+    };
+    const QString s0 = QStringLiteral("steps[0].");
+    QTest::newRow("unknown-language") << lesson(R"({"en": "t", "de": "T"})", "")
+                                      << R"(title.de: unknown language "de" (expected en, cs))";
+    QTest::newRow("no-english")
+        << lesson(R"({"cs": "t"})", "")
+        << R"(title: needs the English text "en", shown when a language is missing)";
+    QTest::newRow("empty-object") << lesson("{}", "")
+                                  << R"(title: needs the English text "en", shown when a )"
+                                     "language is missing";
+    QTest::newRow("number-value") << lesson(R"({"en": "t", "cs": 3})", "")
+                                  << R"(title.cs: must be a string "...", got 3)";
+    QTest::newRow("array-for-a-line")
+        << lesson(R"(["t"])", "")
+        << R"(title: must be a string "...", or an object of languages {"en": "...", "cs": )"
+           R"("..."}, got an array)";
+    QTest::newRow("empty-czech-title")
+        << lesson(R"({"en": "t", "cs": " "})", "") << "title.cs: must not be empty";
+    QTest::newRow("text-number-in-language")
+        << lesson(R"("t")", R"(, "text": {"en": ["a"], "cs": [1]})")
+        << s0 + R"(text.cs[0]: must be a string "...", got 1)";
+    QTest::newRow("text-object-in-language")
+        << lesson(R"("t")", R"(, "text": {"en": "a", "cs": {"cs": "b"}})")
+        << s0 + R"(text.cs: must be a string or an array of strings, got an object)";
+    QTest::newRow("text-number")
+        << lesson(R"("t")", R"(, "text": 5)")
+        << s0 + R"(text: must be a string or an array of strings, or an object of languages )"
+                R"({"en": ..., "cs": ...}, got 5)";
+    QTest::newRow("goals-language-not-a-list")
+        << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "goals": {"en": "g"}, "steps": []})")
+        << R"(goals.en: must be an array [...], got "g")";
+    QTest::newRow("goals-empty-in-czech")
+        << QByteArray(
+               R"({"rigidlab-lesson": 1, "title": "t", "goals": {"en": ["g"], "cs": [""]}, "steps": []})")
+        << R"(goals.cs[0]: must be a non-empty string "...", got "")";
+    QTest::newRow("description-two-lines-in-czech")
+        << lesson(R"("t", "description": {"en": "d", "cs": "a\nb"})", "")
+        << R"(description.cs: must be one line (it is shown in the lesson menu); put longer )"
+           R"(text in "summary")";
+    QTest::newRow("prompt-unknown-language")
+        << lesson(R"("t")",
+                  R"(, "questions": [{"prompt": {"en": "p", "sk": "q"}, "measure": {"kind": )"
+                  R"("apex", "body": "ball"}}])")
+        << s0 + R"(questions[0].prompt.sk: unknown language "sk" (expected en, cs))";
+}
+
+void TestLesson::badLanguageObjectRefused()
+{
+    QFETCH(QByteArray, json);
+    QFETCH(QString, message);
+    const lessons::LessonLoadResult r = lessons::loadLessonJson(json, QStringLiteral("l.json"));
+    QVERIFY(!r.ok);
+    QCOMPARE(r.error, QStringLiteral("l.json: ") + message);
 }

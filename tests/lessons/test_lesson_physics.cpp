@@ -121,6 +121,27 @@ void TestLesson::judgeMessages_data()
                                         "1.3331 kg·m/s).";
 }
 
+void TestLesson::judgeWaitsInWholeSentences()
+{
+    // Each apex a question may wait for has a sentence of its own (a translator may reorder
+    // it), not an English ordinal put into one.
+    lessons::Question q;
+    q.measure.kind = lessons::Measure::Kind::Apex;
+    q.measure.body = QStringLiteral("ball");
+    const std::pair<int, const char*> cases[] = {
+        {1, "Run the simulation past the top of the first bounce first."},
+        {3, "Run the simulation past the top of the third bounce first."},
+        {12, "Run the simulation past the top of bounce number 12 first."},
+    };
+    for (const auto& [n, message] : cases) {
+        q.measure.n = n;
+        const lessons::Verdict v = lessons::judgeAttempt(q, 1.0, std::nullopt, 1);
+        QVERIFY(!v.measured && !v.right);
+        QCOMPARE(v.message, QString::fromUtf8(message));
+        QCOMPARE(lessons::showAnswer(q, std::nullopt).message, QString::fromUtf8(message));
+    }
+}
+
 void TestLesson::judgeMessages()
 {
     QFETCH(double, value);

@@ -346,10 +346,10 @@ void TestLimits::scenePathsStayInside_data()
     QTest::addColumn<QString>("message");
     QTest::newRow("parent")
         << "../outside/secret.json"
-        << R"(must not leave the lesson's folder (no ".."), got "../outside/secret.json")";
+        << R"(must not leave the lesson's folder, got "../outside/secret.json")";
     QTest::newRow("parent-inside")
         << "scenes/../../outside/secret.json"
-        << R"(must not leave the lesson's folder (no ".."), got "scenes/../../outside/secret.json")";
+        << R"(must not leave the lesson's folder, got "scenes/../../outside/secret.json")";
     QTest::newRow("absolute")
         << "/etc/passwd"
         << R"(must be a path relative to the lesson's folder, got "/etc/passwd")";
@@ -404,6 +404,66 @@ void TestLimits::scenePathsStayInside()
         QVERIFY(writeFile(path, lessonWithScene('"' + QByteArray(fine) + '"')));
         const lessons::LessonLoadResult ok = lessons::loadLessonFile(path);
         QVERIFY2(ok.ok, qPrintable(ok.error));
+    }
+}
+
+void TestLimits::scenePathsStayInsideTheDataFolder_data()
+{
+    // A lesson in the lessons/ folder of a data folder (one that holds scenes/ too) reads the
+    // data folder's scenes, and nothing above it.
+    QTest::addColumn<QString>("scenePath");
+    QTest::addColumn<QString>("message");
+    const QString data = QStringLiteral("must not leave the data folder (scenes/ and lessons/)");
+    QTest::newRow("shared-scene") << "../scenes/ok.json" << QString();
+    QTest::newRow("own-folder") << "mine.json" << QString();
+    QTest::newRow("through-lessons") << "../lessons/../scenes/ok.json" << QString();
+    QTest::newRow("above-data") << "../../outside/secret.json"
+                                << data + R"(, got "../../outside/secret.json")";
+    QTest::newRow("above-data-inside") << "../scenes/../../outside/secret.json"
+                                       << data + R"(, got "../scenes/../../outside/secret.json")";
+    QTest::newRow("link-out-of-data")
+        << "../scenes/link.json"
+        << R"("../scenes/link.json" leads out of the data folder (scenes/ and lessons/) )"
+           "(through a symbolic link)";
+}
+
+void TestLimits::scenePathsStayInsideTheDataFolder()
+{
+    QFETCH(QString, scenePath);
+    QFETCH(QString, message);
+    QTemporaryDir root;
+    QVERIFY(root.isValid());
+    const QDir top(root.path());
+    QVERIFY(top.mkpath(QStringLiteral("data/scenes")) &&
+            top.mkpath(QStringLiteral("data/lessons")) && top.mkpath(QStringLiteral("outside")));
+    const QByteArray good =
+        R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": {"type": "circle", "radius": 1}}]})";
+    for (const char* file :
+         {"outside/secret.json", "data/scenes/ok.json", "data/lessons/mine.json"})
+        QVERIFY(writeFile(top.filePath(QLatin1StringView(file)), good));
+    QVERIFY(QFile::link(top.filePath(QStringLiteral("outside/secret.json")),
+                        top.filePath(QStringLiteral("data/scenes/link.json"))));
+
+    const QString path = top.filePath(QStringLiteral("data/lessons/lesson.json"));
+    QVERIFY(writeFile(path, lessonWithScene('"' + scenePath.toUtf8() + '"')));
+    const lessons::LessonLoadResult r = lessons::loadLessonFile(path);
+    if (message.isEmpty()) {
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QCOMPARE(QFileInfo(r.lesson.steps.front().scenePath).canonicalFilePath(),
+                 QFileInfo(QDir(top.filePath(QStringLiteral("data/lessons"))).filePath(scenePath))
+                     .canonicalFilePath());
+    } else {
+        QVERIFY(!r.ok);
+        QCOMPARE(r.error, path + QStringLiteral(": steps[0].scene: ") + message);
+    }
+
+    // Without scenes/ beside it, lessons/ is just a folder: the same lesson may not go up.
+    QVERIFY(QDir(top.filePath(QStringLiteral("data/scenes"))).removeRecursively());
+    if (scenePath.startsWith(u"../")) {
+        const lessons::LessonLoadResult alone = lessons::loadLessonFile(path);
+        QVERIFY(!alone.ok);
+        QVERIFY2(alone.error.contains(QStringLiteral("must not leave the lesson's folder")),
+                 qPrintable(alone.error));
     }
 }
 

@@ -22,5 +22,7 @@ private slots:
     void sliverDeepInsideAPolygonHasAContact();
     void scenePathsStayInside_data();
     void scenePathsStayInside();
+    void scenePathsStayInsideTheDataFolder_data();
+    void scenePathsStayInsideTheDataFolder();
     void nothingInAFileIsRun();
 };

@@ -44,7 +44,14 @@ void TestLessons::shippedScenesLoad()
     QFETCH(QString, path);
     const lessons::SceneLoadResult result = lessons::loadSceneFile(path);
     QVERIFY2(result.ok, qPrintable(result.error));
-    QVERIFY2(result.warnings.isEmpty(), qPrintable(result.warnings.join(u'\n')));
+    // The separating axis lesson's non-convex polygon is there to be replaced by its hull,
+    // and warned of; every other shipped scene is clean.
+    if (path.endsWith(QStringLiteral("sat_non_convex.json")))
+        QVERIFY2(result.warnings.size() == 1 &&
+                     result.warnings.front().contains(QStringLiteral("not convex")),
+                 qPrintable(result.warnings.join(u'\n')));
+    else
+        QVERIFY2(result.warnings.isEmpty(), qPrintable(result.warnings.join(u'\n')));
     QVERIFY(!result.scene.title.isEmpty());
     QVERIFY2(result.scene.description.size() >= 80, "a description a teacher can use");
     QVERIFY(!result.scene.bodies.empty());

@@ -187,7 +187,9 @@ QString LessonPlayer::firstLessonPath() const
 
 QString LessonPlayer::openLesson(const QString& path)
 {
-    lessons::LessonLoadResult r = lessons::loadLessonFile(path);
+    // In the language the app chose (lessons::setLessonLanguage; English until it does).
+    lessons::LessonLoadResult r =
+        lessons::loadLessonFile(path, lessons::LessonLoadOptions{lessons::lessonLanguage()});
     if (!r.ok)
         return r.error;
     if (r.lesson.steps.empty())

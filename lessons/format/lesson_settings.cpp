@@ -1,0 +1,217 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Lesson files: a step's "settings" on top of its scene's and the worlds its "compare" runs
+// side by side (lessons/LESSON_FORMAT.md). Read for lesson_step.cpp.
+
+#include "format/lesson_reading.h"
+#include "format/scene_loader.h"
+
+#include <array>
+
+namespace rigidlab::lessons::detail {
+
+namespace {
+
+constexpr double kMinTimeScale = 0.1;
+constexpr double kMaxTimeScale = 4.0;
+
+// The names messages list; any name physics::integratorFromName knows is accepted.
+constexpr std::array kIntegrators = {
+    physics::IntegratorKind::Euler,
+    physics::IntegratorKind::SymplecticEuler,
+    physics::IntegratorKind::Verlet,
+    physics::IntegratorKind::RK4,
+};
+constexpr std::array kSolvers = {
+    physics::SolverKind::SeedImpulse,
+    physics::SolverKind::SequentialImpulse,
+};
+
+QString fromView(std::string_view s)
+{
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+} // namespace
+
+bool readSettings(JsonReader& in, const QJsonObject& object, const QString& place,
+                  StepSettings& settings)
+{
+    if (!object.contains(u"settings")) {
+        return true;
+    }
+    const QString at = joinPlace(place, u"settings");
+    QJsonObject s;
+    if (!in.asObject(object.value(u"settings"), at, s) ||
+        !in.checkKeys(s, at,
+                      {u"integrator", u"dt", u"solver", u"iterations", u"restitution", u"friction",
+                       u"gravity", u"timeScale"})) {
+        return false;
+    }
+    QString name;
+    if (s.contains(u"integrator")) {
+        if (!in.string(s, u"integrator", at, name)) {
+            return false;
+        }
+        settings.integrator = physics::integratorFromName(name.toStdString());
+        if (!settings.integrator) {
+            QStringList names;
+            for (auto k : kIntegrators) {
+                names.append(fromView(physics::integratorName(k)));
+            }
+            return in.fail(joinPlace(at, u"integrator"),
+                           QStringLiteral("unknown integrator \"%1\" (expected %2)")
+                               .arg(name, names.join(u", ")));
+        }
+    }
+    if (s.contains(u"dt")) {
+        double dt = 0;
+        if (!in.number(s, u"dt", at, dt, NumberRule::Positive)) {
+            return false;
+        }
+        if (dt < kMinDt || dt > kMaxDt) {
+            return in.fail(joinPlace(at, u"dt"),
+                           QStringLiteral("must be from %1 to %2 s, got %3")
+                               .arg(formatNumber(kMinDt), formatNumber(kMaxDt), formatNumber(dt)));
+        }
+        settings.dt = dt;
+    }
+    if (s.contains(u"solver")) {
+        if (!in.string(s, u"solver", at, name)) {
+            return false;
+        }
+        settings.solver = physics::solverFromName(name.toStdString());
+        if (!settings.solver) {
+            QStringList names;
+            for (auto k : kSolvers) {
+                names.append(fromView(physics::solverName(k)));
+            }
+            return in.fail(
+                joinPlace(at, u"solver"),
+                QStringLiteral("unknown solver \"%1\" (expected %2)").arg(name, names.join(u", ")));
+        }
+    }
+    if (s.contains(u"iterations")) {
+        int n = 0;
+        if (!in.integer(s, u"iterations", at, n, 1, kMaxIterations)) {
+            return false;
+        }
+        settings.iterations = n;
+    }
+    double value = 0;
+    if (s.contains(u"restitution")) {
+        if (!in.number(s, u"restitution", at, value, NumberRule::UnitInterval,
+                       limits::kRestitution)) {
+            return false;
+        }
+        settings.restitution = value;
+    }
+    if (s.contains(u"friction")) {
+        if (!in.number(s, u"friction", at, value, NumberRule::NonNegative, limits::kFriction)) {
+            return false;
+        }
+        settings.friction = value;
+    }
+    if (s.contains(u"gravity")) {
+        bool on = true;
+        if (!in.boolean(s, u"gravity", at, on)) {
+            return false;
+        }
+        settings.gravity = on;
+    }
+    if (s.contains(u"timeScale")) {
+        if (!in.number(s, u"timeScale", at, value, NumberRule::Positive)) {
+            return false;
+        }
+        if (value < kMinTimeScale || value > kMaxTimeScale) {
+            return in.fail(joinPlace(at, u"timeScale"),
+                           QStringLiteral("must be from %1 to %2, got %3")
+                               .arg(formatNumber(kMinTimeScale), formatNumber(kMaxTimeScale),
+                                    formatNumber(value)));
+        }
+        settings.timeScale = value;
+    }
+    return true;
+}
+
+bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place, LessonStep& step)
+{
+    if (!object.contains(u"compare")) {
+        return true;
+    }
+    const QString at = joinPlace(place, u"compare");
+    QJsonObject c;
+    if (!in.asObject(object.value(u"compare"), at, c) ||
+        !in.checkKeys(c, at, {u"integrators", u"solvers", u"offset"})) {
+        return false;
+    }
+    const bool byIntegrator = c.contains(u"integrators");
+    if (byIntegrator && c.contains(u"solvers")) {
+        return in.fail(joinPlace(at, u"solvers"),
+                       QStringLiteral("compare \"integrators\" or \"solvers\", not both"));
+    }
+    if (!byIntegrator && !c.contains(u"solvers")) {
+        return in.fail(at, QStringLiteral("needs \"integrators\" or \"solvers\": the worlds to "
+                                          "run side by side"));
+    }
+    const QStringView key = byIntegrator ? QStringView(u"integrators") : QStringView(u"solvers");
+    const QString listAt = joinPlace(at, key);
+    if (byIntegrator ? step.settings.integrator.has_value() : step.settings.solver.has_value()) {
+        return in.fail(listAt,
+                       QStringLiteral("settings.%1 is given too: the main world runs the first "
+                                      "of this list, so leave settings.%1 out")
+                           .arg(byIntegrator ? u"integrator" : u"solver"));
+    }
+    QJsonArray list;
+    if (!in.asArray(c.value(key), listAt, list)) {
+        return false;
+    }
+    if (list.size() < 2 || list.size() > kMaxVariants) {
+        return in.fail(
+            listAt,
+            QStringLiteral("compares 2 to %1 worlds, got %2").arg(kMaxVariants).arg(list.size()));
+    }
+    Comparison comparison;
+    QStringList seen;
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        const QString itemAt = indexPlace(listAt, i);
+        if (!list[i].isString()) {
+            return in.fail(itemAt,
+                           QStringLiteral("must be a name \"...\", got ") + describeJson(list[i]));
+        }
+        const QString name = list[i].toString();
+        if (seen.contains(name)) {
+            return in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
+        }
+        seen.append(name);
+        if (byIntegrator) {
+            const auto kind = physics::integratorFromName(name.toStdString());
+            if (!kind) {
+                QStringList names;
+                for (auto k : kIntegrators) {
+                    names.append(fromView(physics::integratorName(k)));
+                }
+                return in.fail(itemAt, QStringLiteral("unknown integrator \"%1\" (expected %2)")
+                                           .arg(name, names.join(u", ")));
+            }
+            comparison.integrators.push_back(*kind);
+        } else {
+            const auto kind = physics::solverFromName(name.toStdString());
+            if (!kind) {
+                QStringList names;
+                for (auto k : kSolvers) {
+                    names.append(fromView(physics::solverName(k)));
+                }
+                return in.fail(itemAt, QStringLiteral("unknown solver \"%1\" (expected %2)")
+                                           .arg(name, names.join(u", ")));
+            }
+            comparison.solvers.push_back(*kind);
+        }
+    }
+    if (!in.vec2(c, u"offset", at, comparison.offset, limits::kCoordinate)) {
+        return false;
+    }
+    step.compare = comparison;
+    return true;
+}
+
+} // namespace rigidlab::lessons::detail

@@ -1,0 +1,226 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Lesson files: one step, its text, its scene (inline or a file) and the names of what it
+// shows (lessons/LESSON_FORMAT.md). Read for lesson_loader.cpp.
+//
+// Nothing in a lesson is ever executed: texts are shown, names are looked up in fixed lists,
+// and scene files are read only from where scene_path.cpp allows.
+
+#include "format/lesson_reading.h"
+#include "format/scene_loader.h"
+#include "format/scene_path.h"
+
+#include <QDir>
+#include <QFileInfo>
+
+#include <array>
+
+namespace rigidlab::lessons::detail {
+
+namespace {
+
+constexpr double kMaxExportTime = 600.0; ///< [s]
+constexpr double kMaxExportSteps = 1e7;  ///< exportTime / dt at most
+
+constexpr std::array kPlotNames = {u"energy", u"momentum", u"drift", u"compare-energy",
+                                   u"compare-drift"};
+constexpr std::array kOverlayNames = {u"velocities", u"contacts", u"boxes",
+                                      u"centres",    u"trails",   u"springs"};
+constexpr std::array kPanelNames = {u"controls", u"inspector", u"sat", u"bounces", u"collision"};
+constexpr std::array kControlNames = {u"integrator",  u"dt",       u"solver",  u"iterations",
+                                      u"restitution", u"friction", u"gravity", u"timeScale"};
+
+template <typename Names> QString joinNames(const Names& names)
+{
+    QStringList list;
+    for (QStringView n : names) {
+        list.append(n.toString());
+    }
+    return list.join(u", ");
+}
+
+/// A scene loader's message `SOURCE: PLACE: what` as a place under the lesson's `at` and the
+/// rest: (`at.PLACE`, `what`), which JsonReader joins back into `SOURCE: at.PLACE: what`.
+std::pair<QString, QString> rebase(const QString& message, const QString& source, const QString& at)
+{
+    const QString prefix = source + QStringLiteral(": ");
+    const QString rest = message.startsWith(prefix) ? message.mid(prefix.size()) : message;
+    const qsizetype colon = rest.indexOf(QStringLiteral(": "));
+    if (colon < 0) {
+        return {at, rest};
+    }
+    return {at + u'.' + rest.left(colon), rest.mid(colon + 2)};
+}
+
+/// A list of distinct names, each one of `known`.
+template <typename Known>
+bool readNames(JsonReader& in, const QJsonObject& object, QStringView key, const QString& place,
+               const Known& known, QStringView what, QStringList& out)
+{
+    if (!object.contains(key)) {
+        return true;
+    }
+    const QString at = joinPlace(place, key);
+    QJsonArray list;
+    if (!in.asArray(object.value(key), at, list)) {
+        return false;
+    }
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        const QString itemAt = indexPlace(at, i);
+        if (!list[i].isString()) {
+            return in.fail(itemAt,
+                           QStringLiteral("must be a name \"...\", got ") + describeJson(list[i]));
+        }
+        const QString name = list[i].toString();
+        bool isKnown = false;
+        for (QStringView k : known) {
+            isKnown = isKnown || name == k;
+        }
+        if (!isKnown) {
+            return in.fail(itemAt, QStringLiteral("unknown %1 \"%2\" (expected %3)")
+                                       .arg(what.toString(), name, joinNames(known)));
+        }
+        if (out.contains(name)) {
+            return in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
+        }
+        out.append(name);
+    }
+    return true;
+}
+
+bool readSceneFile(JsonReader& in, const QString& relative, const QString& place,
+                   const StepContext& context, LessonStep& step)
+{
+    // The rules for where a scene file may be are in scene_path.cpp.
+    const ScenePathResult resolved = resolveScenePath(context.folder, relative);
+    if (!resolved.ok) {
+        return in.fail(place, resolved.error);
+    }
+    const QString& readPath = resolved.readPath;
+    const FileBytes file = readFileBytes(readPath, kMaxSceneFileBytes);
+    if (!file.ok) {
+        return in.fail(place, file.error);
+    }
+    // Messages name the scene file as the lesson's own name leads to it.
+    const QString shown =
+        QDir::cleanPath(QDir(QFileInfo(in.sourceName()).path()).filePath(relative));
+    const SceneLoadResult loaded = loadSceneJson(file.bytes, shown);
+    for (const QString& w : loaded.warnings) {
+        in.warn(place, w);
+    }
+    if (!loaded.ok) {
+        return in.fail(place, loaded.error);
+    }
+    step.scene = loaded.scene;
+    step.scenePath = resolved.absolutePath;
+    return true;
+}
+
+bool readScene(JsonReader& in, const QJsonObject& object, const QString& place,
+               const StepContext& context, LessonStep& step)
+{
+    const QString at = joinPlace(place, u"scene");
+    const auto it = object.constFind(u"scene");
+    if (it == object.constEnd()) {
+        return in.fail(at, QStringLiteral("required, but missing (a scene object, or the path "
+                                          "of a scene file)"));
+    }
+    if (it.value().isString()) {
+        return readSceneFile(in, it.value().toString(), at, context, step);
+    }
+    if (!it.value().isObject()) {
+        return in.fail(at, QStringLiteral("must be a scene object {...} or the path of a scene "
+                                          "file, got ") +
+                               describeJson(it.value()));
+    }
+    const SceneLoadResult loaded = loadSceneObject(it.value().toObject(), in.sourceName());
+    for (const QString& w : loaded.warnings) {
+        const auto [wherePlace, what] = rebase(w, in.sourceName(), at);
+        in.warn(wherePlace, what);
+    }
+    if (!loaded.ok) {
+        const auto [wherePlace, what] = rebase(loaded.error, in.sourceName(), at);
+        return in.fail(wherePlace, what);
+    }
+    step.scene = loaded.scene;
+    return true;
+}
+
+} // namespace
+
+bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, StepContext& context,
+              LessonStep& step)
+{
+    QJsonObject object;
+    if (!in.asObject(value, place, object) ||
+        !in.checkKeys(object, place,
+                      {u"title", u"text", u"scene", u"settings", u"compare", u"plots", u"overlays",
+                       u"panels", u"allow", u"sat", u"questions", u"exportTime", u"autoplay"}) ||
+        !context.texts->line(object, u"title", place, step.title, true)) {
+        return false;
+    }
+    for (const LessonTexts::Variant& v : context.texts->variants()) {
+        if (v.text.trimmed().isEmpty()) {
+            return in.fail(v.place, QStringLiteral("must not be empty"));
+        }
+    }
+    if (!context.texts->paragraphs(object, u"text", place, step.text) ||
+        !readScene(in, object, place, context, step) ||
+        !readSettings(in, object, place, step.settings) || !readCompare(in, object, place, step) ||
+        !readNames(in, object, u"plots", place, kPlotNames, u"plot", step.plots) ||
+        !readNames(in, object, u"overlays", place, kOverlayNames, u"overlay", step.overlays) ||
+        !readNames(in, object, u"panels", place, kPanelNames, u"panel", step.panels)) {
+        return false;
+    }
+    // Every step keeps its scene: many steps reading one large scene file add up.
+    context.bodies += static_cast<qint64>(step.scene.bodies.size());
+    if (context.bodies > limits::kMaxLessonBodies) {
+        return in.fail(joinPlace(place, u"scene"),
+                       QStringLiteral("the steps up to this one hold %1 bodies in all, more "
+                                      "than the limit of %2 for a lesson")
+                           .arg(context.bodies)
+                           .arg(limits::kMaxLessonBodies));
+    }
+    for (qsizetype i = 0; i < step.plots.size(); ++i) {
+        if (step.plots[i].startsWith(u"compare-") && !step.compare) {
+            return in.fail(indexPlace(joinPlace(place, u"plots"), i),
+                           QStringLiteral("\"%1\" plots the worlds of \"compare\", and this "
+                                          "step has none")
+                               .arg(step.plots[i]));
+        }
+    }
+    if (object.contains(u"allow")) {
+        QStringList allow;
+        if (!readNames(in, object, u"allow", place, kControlNames, u"control", allow)) {
+            return false;
+        }
+        step.allow = allow;
+    }
+    if (!readSat(in, object, place, step.scene, step.sat) ||
+        !readQuestions(in, *context.texts, object, place, step, step.questions) ||
+        !in.number(object, u"exportTime", place, step.exportTime, NumberRule::Positive) ||
+        !in.boolean(object, u"autoplay", place, step.autoplay)) {
+        return false;
+    }
+    const QString exportPlace = joinPlace(place, u"exportTime");
+    if (step.exportTime > kMaxExportTime) {
+        return in.fail(exportPlace, QStringLiteral("must be at most %1 s, got %2")
+                                        .arg(kMaxExportTime)
+                                        .arg(formatNumber(step.exportTime)));
+    }
+    const double dt = step.settings.dt.value_or(step.scene.world.dt);
+    if (step.exportTime / dt > kMaxExportSteps) {
+        return in.fail(exportPlace,
+                       QStringLiteral("%1 s at a step of %2 s is more than %3 steps")
+                           .arg(formatNumber(step.exportTime), formatNumber(dt),
+                                QString::number(static_cast<qint64>(kMaxExportSteps))));
+    }
+    const int panelSat = static_cast<int>(step.panels.indexOf(u"sat"));
+    if (panelSat >= 0 && !step.sat) {
+        return in.fail(indexPlace(joinPlace(place, u"panels"), panelSat),
+                       QStringLiteral("the \"sat\" panel needs the pair it looks at: add "
+                                      "\"sat\": {\"a\": ID, \"b\": ID} to the step"));
+    }
+    return true;
+}
+
+} // namespace rigidlab::lessons::detail

@@ -1,0 +1,244 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "format/lesson_text.h"
+
+#include "format/languages.h"
+
+namespace rigidlab::lessons::detail {
+
+bool LessonTexts::oneLine(const QJsonValue& value, const QString& place, QString& out)
+{
+    if (!value.isString()) {
+        return m_in.fail(place,
+                         QStringLiteral("must be a string \"...\", got ") + describeJson(value));
+    }
+    out = value.toString();
+    return true;
+}
+
+bool LessonTexts::oneParagraphs(const QJsonValue& value, const QString& place, QString& out)
+{
+    // A string, or an array of strings (one per line or paragraph), which is easier to write
+    // and to read in a JSON file; the lines are joined with line breaks.
+    if (value.isString()) {
+        out = value.toString();
+        return true;
+    }
+    if (!value.isArray()) {
+        return m_in.fail(place, QStringLiteral("must be a string or an array of strings, got ") +
+                                    describeJson(value));
+    }
+    const QJsonArray lines = value.toArray();
+    QStringList parts;
+    for (qsizetype i = 0; i < lines.size(); ++i) {
+        if (!lines[i].isString()) {
+            return m_in.fail(indexPlace(place, i),
+                             QStringLiteral("must be a string \"...\", got ") +
+                                 describeJson(lines[i]));
+        }
+        parts.append(lines[i].toString());
+    }
+    out = parts.join(u'\n');
+    return true;
+}
+
+bool LessonTexts::checkLanguages(const QJsonObject& object, const QString& place)
+{
+    for (auto it = object.constBegin(); it != object.constEnd(); ++it) {
+        if (!isShippedLanguage(it.key())) {
+            return m_in.fail(joinPlace(place, it.key()),
+                             QStringLiteral("unknown language \"%1\" (expected %2)")
+                                 .arg(it.key(), shippedLanguageCodes()));
+        }
+    }
+    if (!object.contains(kFallbackLanguage)) {
+        return m_in.fail(place,
+                         QStringLiteral("needs the English text \"%1\", shown when a language "
+                                        "is missing")
+                             .arg(kFallbackLanguage.toString()));
+    }
+    m_translated = true;
+    return true;
+}
+
+void LessonTexts::noteMissing(const QString& place, const QStringList& present)
+{
+    for (const Language& l : kLanguages) {
+        if (!present.contains(l.code.toString()))
+            m_missing.emplace_back(place, l.code.toString());
+    }
+}
+
+bool LessonTexts::readText(const QJsonValue& value, const QString& place, ReadOne one,
+                           QStringView plainKinds, QString& out)
+{
+    m_variants.clear();
+    if (m_in.failed()) {
+        return false;
+    }
+    if (!value.isObject()) {
+        if (!value.isString() && !value.isArray()) {
+            return m_in.fail(place, QStringLiteral("must be %1, or an object of languages "
+                                                   "{\"en\": ..., \"cs\": ...}, got ")
+                                            .arg(plainKinds.toString()) +
+                                        describeJson(value));
+        }
+        QString text;
+        if (!(this->*one)(value, place, text)) {
+            return false;
+        }
+        m_variants.push_back({place, text});
+        noteMissing(place, {kFallbackLanguage.toString()});
+        out = text;
+        return true;
+    }
+    const QJsonObject object = value.toObject();
+    if (!checkLanguages(object, place)) {
+        return false;
+    }
+    QString chosen;
+    QString fallback;
+    for (const Language& l : kLanguages) {
+        const auto it = object.constFind(l.code);
+        if (it == object.constEnd()) {
+            continue;
+        }
+        QString text;
+        const QString at = joinPlace(place, l.code);
+        if (!(this->*one)(it.value(), at, text)) {
+            return false;
+        }
+        m_variants.push_back({at, text});
+        if (l.code == m_language)
+            chosen = text;
+        if (l.code == kFallbackLanguage)
+            fallback = text;
+    }
+    noteMissing(place, object.keys());
+    out = object.contains(m_language) ? chosen : fallback;
+    return true;
+}
+
+bool LessonTexts::line(const QJsonObject& object, QStringView key, const QString& place,
+                       QString& out, bool required)
+{
+    m_variants.clear();
+    if (m_in.failed()) {
+        return false;
+    }
+    const QString at = joinPlace(place, key);
+    const auto it = object.constFind(key);
+    if (it == object.constEnd()) {
+        return !required || m_in.fail(at, QStringLiteral("required, but missing"));
+    }
+    if (it.value().isArray()) {
+        return m_in.fail(at, QStringLiteral("must be a string \"...\", or an object of languages "
+                                            "{\"en\": \"...\", \"cs\": \"...\"}, got ") +
+                                 describeJson(it.value()));
+    }
+    return readText(it.value(), at, &LessonTexts::oneLine, u"a string \"...\"", out);
+}
+
+bool LessonTexts::paragraphs(const QJsonObject& object, QStringView key, const QString& place,
+                             QString& out)
+{
+    m_variants.clear();
+    const auto it = object.constFind(key);
+    if (it == object.constEnd()) {
+        return !m_in.failed();
+    }
+    return readText(it.value(), joinPlace(place, key), &LessonTexts::oneParagraphs,
+                    u"a string or an array of strings", out);
+}
+
+bool LessonTexts::list(const QJsonObject& object, QStringView key, const QString& place,
+                       qsizetype maxItems, QStringView noun, QStringList& out)
+{
+    m_variants.clear();
+    const auto found = object.constFind(key);
+    if (m_in.failed() || found == object.constEnd()) {
+        return !m_in.failed();
+    }
+    const QString at = joinPlace(place, key);
+    // One language's list: its size, and each item a non-empty string.
+    const auto readItems = [&](const QJsonArray& items, const QString& itemsAt,
+                               bool itemsMayBeObjects, QStringList& texts) {
+        if (items.size() > maxItems) {
+            return m_in.fail(itemsAt, QStringLiteral("%1 %2, more than the limit of %3")
+                                          .arg(items.size())
+                                          .arg(noun.toString())
+                                          .arg(maxItems));
+        }
+        for (qsizetype i = 0; i < items.size(); ++i) {
+            const QString itemAt = indexPlace(itemsAt, i);
+            QString text;
+            if (itemsMayBeObjects && items[i].isObject()) {
+                if (!readText(items[i], itemAt, &LessonTexts::oneLine, u"a string \"...\"", text))
+                    return false;
+                for (const Variant& v : m_variants) {
+                    if (v.text.trimmed().isEmpty())
+                        return m_in.fail(v.place, QStringLiteral("must not be empty"));
+                }
+            } else {
+                if (!items[i].isString() || items[i].toString().trimmed().isEmpty()) {
+                    return m_in.fail(itemAt,
+                                     QStringLiteral("must be a non-empty string \"...\", got ") +
+                                         describeJson(items[i]));
+                }
+                text = items[i].toString();
+                if (itemsMayBeObjects)
+                    noteMissing(itemAt, {kFallbackLanguage.toString()});
+            }
+            texts.append(text);
+        }
+        return true;
+    };
+    if (found.value().isArray()) {
+        return readItems(found.value().toArray(), at, true, out);
+    }
+    if (!found.value().isObject()) {
+        return m_in.fail(at, QStringLiteral("must be an array [...], or an object of languages "
+                                            "{\"en\": [...], \"cs\": [...]}, got ") +
+                                 describeJson(found.value()));
+    }
+    const QJsonObject languages = found.value().toObject();
+    if (!checkLanguages(languages, at)) {
+        return false;
+    }
+    QStringList fallback;
+    for (const Language& l : kLanguages) {
+        const auto it = languages.constFind(l.code);
+        if (it == languages.constEnd()) {
+            continue;
+        }
+        const QString languageAt = joinPlace(at, l.code);
+        if (!it.value().isArray()) {
+            return m_in.fail(languageAt, QStringLiteral("must be an array [...], got ") +
+                                             describeJson(it.value()));
+        }
+        QStringList texts;
+        if (!readItems(it.value().toArray(), languageAt, false, texts)) {
+            return false;
+        }
+        if (l.code == m_language)
+            out = texts;
+        if (l.code == kFallbackLanguage)
+            fallback = texts;
+    }
+    noteMissing(at, languages.keys());
+    if (!languages.contains(m_language))
+        out = fallback;
+    return true;
+}
+
+void LessonTexts::warnMissing()
+{
+    if (!m_translated) {
+        return;
+    }
+    for (const auto& [place, code] : m_missing) {
+        m_in.warn(place, QStringLiteral("no %1 text (\"%2\"); English is shown instead")
+                             .arg(languageName(code), code));
+    }
+}
+
+} // namespace rigidlab::lessons::detail

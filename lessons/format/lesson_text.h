@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The texts of a lesson that a student reads, in the language it is loaded in
+// (lessons/LESSON_FORMAT.md, "Languages"). Each is a plain string, meaning English, or an
+// object that maps language codes (languages.h) to the same kind of value:
+//
+//     "title": "Bounces"
+//     "title": {"en": "Bounces", "cs": "Odrazy"}
+//     "text": {"en": ["...", "..."], "cs": ["...", "..."]}
+//
+// English must be there; it is shown when the chosen language is missing. A code the lab does
+// not ship, or a value of the wrong kind, is an error with its place, like every other.
+
+#include "format/json_reader.h"
+
+#include <utility>
+#include <vector>
+
+namespace rigidlab::lessons::detail {
+
+class LessonTexts {
+public:
+    LessonTexts(JsonReader& in, QString language) : m_in(in), m_language(std::move(language)) {}
+
+    /// A text at `object[key]`: "..." or {"en": "...", ...}. Absent: `out` is left as it
+    /// was, which is fine unless `required`.
+    bool line(const QJsonObject& object, QStringView key, const QString& place, QString& out,
+              bool required = false);
+    /// Paragraphs at `object[key]`: "...", ["...", ...] (joined with line breaks), or an
+    /// object of languages holding either.
+    bool paragraphs(const QJsonObject& object, QStringView key, const QString& place, QString& out);
+    /// A list of non-empty texts at `object[key]`, at most `maxItems` (`noun` names them in the
+    /// message): [text, ...], each a string or an object of languages, or
+    /// {"en": ["...", ...], ...}.
+    bool list(const QJsonObject& object, QStringView key, const QString& place, qsizetype maxItems,
+              QStringView noun, QStringList& out);
+
+    /// Each language's version of the text line() last read, with its place (the text's own
+    /// for a plain string, `PLACE.cs` in an object), for the checks a text has in every
+    /// language.
+    struct Variant {
+        QString place;
+        QString text;
+    };
+    const std::vector<Variant>& variants() const { return m_variants; }
+
+    /// Warns of each text that lacks a shipped language, saying where and which. Called once
+    /// the whole lesson is read: a lesson with no text in the object form is an English
+    /// lesson, and warns of nothing.
+    void warnMissing();
+
+private:
+    /// Reads one language's version of a text at `place`.
+    using ReadOne = bool (LessonTexts::*)(const QJsonValue& value, const QString& place,
+                                          QString& out);
+    bool oneLine(const QJsonValue& value, const QString& place, QString& out);
+    bool oneParagraphs(const QJsonValue& value, const QString& place, QString& out);
+    /// A plain value or an object of languages; `plainKinds` says what a plain value may be,
+    /// for the message.
+    bool readText(const QJsonValue& value, const QString& place, ReadOne one,
+                  QStringView plainKinds, QString& out);
+    /// The object of languages at `place`: every key a shipped code, "en" among them.
+    bool checkLanguages(const QJsonObject& object, const QString& place);
+    /// Notes the shipped languages `present` lacks, for warnMissing().
+    void noteMissing(const QString& place, const QStringList& present);
+
+    JsonReader& m_in;
+    QString m_language;
+    bool m_translated = false;                          ///< some text is in the object form
+    std::vector<std::pair<QString, QString>> m_missing; ///< (place, language code)
+    std::vector<Variant> m_variants;
+};
+
+} // namespace rigidlab::lessons::detail
