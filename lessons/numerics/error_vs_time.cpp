@@ -84,8 +84,7 @@ Energy energyOf(physics::World& world)
 {
     world.updateDiagnostics();
     const physics::Diagnostics& d = world.diagnostics();
-    return {d.total, d.kinetic + std::abs(d.gravityPotential) + d.springPotential +
-                         std::abs(d.gravitationPotential)};
+    return {d.total, physics::energyParts(d)};
 }
 
 std::vector<double> logSpaced(double from, double to, int points)
