@@ -2,17 +2,13 @@
 // A lesson step's worlds: its scene, its settings on top, and one world per compared variant.
 
 #include "format/lesson.h"
+#include "format/view_text.h"
 
 #include <cassert>
 
 namespace rigidlab::lessons {
 
 namespace {
-
-QString fromView(std::string_view s)
-{
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
 
 /// Gravity for `gravity: true` on a scene that has none [m/s^2].
 const physics::Vec2 kStandardGravity(0.0, -9.81);
@@ -24,10 +20,10 @@ QString Comparison::label(int i) const
     assert(i >= 0 && i < count());
     const auto index = static_cast<std::size_t>(i);
     if (index < integrators.size()) {
-        return fromView(physics::integratorName(integrators[index]));
+        return textFromView(physics::integratorName(integrators[index]));
     }
     if (index < solvers.size()) {
-        return fromView(physics::solverName(solvers[index]));
+        return textFromView(physics::solverName(solvers[index]));
     }
     return {};
 }

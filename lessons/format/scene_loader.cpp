@@ -4,6 +4,7 @@
 // the first one a reader of the file would meet.
 
 #include "format/scene_loader.h"
+#include "format/view_text.h"
 
 #include "format/json_reader.h"
 
@@ -43,11 +44,6 @@ constexpr std::array kSolvers = {
     physics::SolverKind::SeedImpulse,
     physics::SolverKind::SequentialImpulse,
 };
-
-QString fromView(std::string_view s)
-{
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
 
 class SceneReader {
 public:
@@ -136,7 +132,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
         if (!kind) {
             QStringList names;
             for (auto k : kIntegrators) {
-                names.append(fromView(physics::integratorName(k)));
+                names.append(textFromView(physics::integratorName(k)));
             }
             return m_in.fail(joinPlace(place, u"integrator"),
                              QStringLiteral("unknown integrator \"%1\" (expected %2)")
@@ -152,7 +148,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
         if (!kind) {
             QStringList names;
             for (auto k : kSolvers) {
-                names.append(fromView(physics::solverName(k)));
+                names.append(textFromView(physics::solverName(k)));
             }
             return m_in.fail(
                 joinPlace(place, u"solver"),

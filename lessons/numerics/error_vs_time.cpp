@@ -2,6 +2,7 @@
 // The work-precision sweep (see error_vs_time.h).
 
 #include "numerics/error_vs_time.h"
+#include "format/view_text.h"
 
 #include "numerics/sweep_run.h"
 
@@ -33,11 +34,6 @@ double threadCpuSeconds()
     timespec ts{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
     return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-QString fromView(std::string_view s)
-{
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
 bool isAdaptive(const QString& integrator)
@@ -88,8 +84,7 @@ Energy energyOf(physics::World& world)
 {
     world.updateDiagnostics();
     const physics::Diagnostics& d = world.diagnostics();
-    return {d.total, d.kinetic + std::abs(d.gravityPotential) + d.springPotential +
-                         std::abs(d.gravitationPotential)};
+    return {d.total, physics::energyParts(d)};
 }
 
 std::vector<double> logSpaced(double from, double to, int points)
@@ -190,7 +185,7 @@ QStringList sweepIntegratorNames()
 {
     QStringList names;
     for (physics::IntegratorKind k : physics::kAllIntegrators)
-        names.append(fromView(physics::integratorName(k)));
+        names.append(textFromView(physics::integratorName(k)));
     names.append(QLatin1String(kOdeintRk4));
     names.append(QLatin1String(kOdeintDopri5));
     return names;

@@ -69,8 +69,7 @@ Outcome simulate(World& w, double tEnd)
     w.updateDiagnostics();
     const physics::Diagnostics& d0 = w.diagnostics();
     const double e0 = d0.total;
-    double scale = d0.kinetic + std::abs(d0.gravityPotential) + d0.springPotential +
-                   std::abs(d0.gravitationPotential);
+    double scale = physics::energyParts(d0);
     if (!(scale > 0))
         scale = 1.0;
     Outcome out;

@@ -37,8 +37,7 @@ void World::rememberStartEnergy()
     double mass = 0;
     for (const Body& b : m_bodies)
         mass += b.mass;
-    const double parts = d.kinetic + std::abs(d.gravityPotential) + d.springPotential +
-                         std::abs(d.gravitationPotential);
+    const double parts = energyParts(d);
     m_energyScale = std::max(parts, m_divergenceSettings.energyFloorPerKg * mass);
 }
 

@@ -13,6 +13,7 @@
 
 #include "format/limits.h"
 
+#include "test_files.h"
 #include "test_main.h"
 
 #include <QLineEdit>
@@ -23,6 +24,7 @@
 #include <cmath>
 
 using namespace rigidlab;
+using rigidlab::test::writeFile;
 using rigidlab::ui::MainWindow;
 using rigidlab::ui::NumberField;
 
@@ -526,14 +528,11 @@ private slots:
         // A ball drifting at 1e-14 m/s and one at 1e-3 m/s, no gravity.
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("still.json"));
-        QFile f(path);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(R"({"rigidlab": 1, "world": {"gravity": [0, 0]}, "bodies": [
+        QVERIFY(writeFile(path, R"({"rigidlab": 1, "world": {"gravity": [0, 0]}, "bodies": [
             {"id": "still", "shape": {"type": "circle", "radius": 0.1}, "position": [0, 0],
              "velocity": [1e-14, -3e-13], "angularVelocity": 1e-15, "mass": 1},
             {"id": "slow", "shape": {"type": "circle", "radius": 0.1}, "position": [5, 0],
-             "velocity": [0.001, 0], "mass": 1}]})");
-        f.close();
+             "velocity": [0.001, 0], "mass": 1}]})"));
         MainWindow w;
         QCOMPARE(w.openScene(path, true), QString());
         w.inspector().setBody(0);

@@ -11,6 +11,7 @@
 #include "format/lesson.h"
 #include "run/measurements.h"
 
+#include "test_files.h"
 #include "test_main.h"
 
 #include <QAction>
@@ -20,6 +21,7 @@
 #include <QtTest>
 
 using namespace rigidlab;
+using rigidlab::test::writeFile;
 using rigidlab::ui::MainWindow;
 
 namespace {
@@ -72,9 +74,7 @@ private slots:
     {
         QVERIFY(m_dir.isValid());
         m_path = m_dir.filePath(QStringLiteral("predict.json"));
-        QFile f(m_path);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(kLesson);
+        QVERIFY(writeFile(m_path, kLesson));
     }
 
     void heldBackStaysHiddenUntilTwoWrongTries()
@@ -235,15 +235,12 @@ private slots:
         // step's export time, so the answer lets the scene run instead of leaving the student
         // stuck.
         const QString path = m_dir.filePath(QStringLiteral("nofloor.json"));
-        QFile f(path);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(R"({"rigidlab-lesson": 1, "title": "t", "steps": [{"title": "s",
+        QVERIFY(writeFile(path, R"({"rigidlab-lesson": 1, "title": "t", "steps": [{"title": "s",
           "scene": {"rigidlab": 1, "bodies": [{"id": "ball",
             "shape": {"type": "circle", "radius": 0.1}, "position": [0, 1]}]},
           "exportTime": 0.1,
           "questions": [{"prompt": "p", "measure": {"kind": "apex", "body": "ball"},
-            "unit": "m", "hint": "h", "holdBack": ["run"]}]}]})");
-        f.close();
+            "unit": "m", "hint": "h", "holdBack": ["run"]}]}]})"));
         MainWindow w;
         QCOMPARE(w.openLesson(path, true), QString());
         QVERIFY(!w.controller().isRunning());

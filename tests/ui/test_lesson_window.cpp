@@ -8,6 +8,7 @@
 #include "plots/plot_widget.h"
 #include "shipped_lessons.h"
 #include "simulation/simulation_controller.h"
+#include "test_files.h"
 #include "window/main_window.h"
 
 #include "format/data_dirs.h"
@@ -26,6 +27,7 @@
 
 using namespace rigidlab;
 using rigidlab::test::shippedLessons;
+using rigidlab::test::writeFile;
 using rigidlab::ui::MainWindow;
 
 namespace {
@@ -251,11 +253,9 @@ private slots:
     {
         QTemporaryDir dir;
         const QString path = dir.filePath(QStringLiteral("broken.json"));
-        QFile f(path);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(
-            R"({"rigidlab-lesson": 1, "title": "x", "steps": [{"title": "a", "scene": "../escape.json"}]})");
-        f.close();
+        QVERIFY(writeFile(
+            path,
+            R"({"rigidlab-lesson": 1, "title": "x", "steps": [{"title": "a", "scene": "../escape.json"}]})"));
         MainWindow w;
         const QString error = w.openLesson(path);
         QVERIFY(error.contains(QStringLiteral("broken.json")));

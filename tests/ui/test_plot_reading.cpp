@@ -29,6 +29,7 @@
 #include <QTimer>
 #include <QtTest>
 
+#include "sourced_plot.h"
 #include "test_main.h"
 
 #include <cmath>
@@ -36,6 +37,7 @@
 
 using namespace rigidlab;
 using namespace rigidlab::ui;
+using rigidlab::test::SourcedPlot;
 
 namespace {
 
@@ -151,9 +153,7 @@ private slots:
 
 void TestPlotReading::scrubBackKeepsPointsAndShowsTheMoment()
 {
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
     feed(buffer, *plot, 0.0, 8.0);
     plot->addMark(2.0, QStringLiteral("dt = 5 ms"));
     plot->addMark(6.0, QStringLiteral("RK4"));
@@ -198,9 +198,7 @@ void TestPlotReading::scrubBackKeepsPointsAndShowsTheMoment()
 
 void TestPlotReading::playingOnBranchesAfterThePoint()
 {
-    std::unique_ptr<PlotWidget> plot(makeDriftPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeDriftPlot(nullptr));
     feed(buffer, *plot, 0.0, 8.0);
     plot->addMark(6.0, QStringLiteral("RK4"));
     travel(buffer, *plot, 3.0);
@@ -228,9 +226,7 @@ void TestPlotReading::playingOnBranchesAfterThePoint()
 
 void TestPlotReading::scrubBackReachesAsFarAsTheTimeline()
 {
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
     plot->setTimelineStart(0.0);
     feed(buffer, *plot, 0.0, 40.0); // four windows
     QCOMPARE(plot->points(0).front().x(), 0.0);
@@ -375,9 +371,7 @@ void TestPlotReading::shortRunGetsShortAxis_data()
 void TestPlotReading::shortRunGetsShortAxis()
 {
     QFETCH(double, run);
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
     feed(buffer, *plot, 0.0, run);
     const QCPRange range = timeRange(*plot);
     QCOMPARE(range.lower, 0.0);

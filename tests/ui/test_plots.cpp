@@ -15,6 +15,7 @@
 #include <QXmlStreamReader>
 #include <QtTest>
 
+#include "sourced_plot.h"
 #include "test_main.h"
 
 #include <cmath>
@@ -25,8 +26,15 @@
 #endif
 
 using namespace rigidlab::ui;
+using rigidlab::test::SourcedPlot;
 
 namespace {
+
+/// Every export format, with the name its data rows go by.
+constexpr std::pair<ExportFormat, const char*> kExportFormats[] = {{ExportFormat::Png, "png"},
+                                                                   {ExportFormat::Pdf, "pdf"},
+                                                                   {ExportFormat::Svg, "svg"},
+                                                                   {ExportFormat::Csv, "csv"}};
 
 /// A deterministic sample at time t [s]; every field differs from the others.
 Sample sampleAt(double t)
@@ -361,9 +369,7 @@ void TestPlots::exportWritesValidFile()
 
 void TestPlots::csvHasFullPrecisionAndUnits()
 {
-    std::unique_ptr<PlotWidget> plot(makeMomentumPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeMomentumPlot(nullptr));
     feed(buffer, *plot, 0.1, 0.1, 40); // 0.1 is not exact in binary: a good test of precision
 
     QTemporaryDir dir;
@@ -389,9 +395,7 @@ void TestPlots::csvHasFullPrecisionAndUnits()
 
 void TestPlots::exportReplacesExistingFile()
 {
-    std::unique_ptr<PlotWidget> plot(makeDriftPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeDriftPlot(nullptr));
     feed(buffer, *plot, 0.0, 0.5, 4);
 
     QTemporaryDir dir;
@@ -411,11 +415,7 @@ void TestPlots::failedExportLeavesNothing_data()
 {
     QTest::addColumn<int>("format");
     QTest::addColumn<QString>("failure");
-    const std::pair<ExportFormat, const char*> formats[] = {{ExportFormat::Png, "png"},
-                                                            {ExportFormat::Pdf, "pdf"},
-                                                            {ExportFormat::Svg, "svg"},
-                                                            {ExportFormat::Csv, "csv"}};
-    for (const auto& [format, name] : formats)
+    for (const auto& [format, name] : kExportFormats)
         for (const char* failure :
              {"missing directory", "target is a directory", "read-only directory"})
             QTest::addRow("%s, %s", name, failure) << int(format) << QString(failure);
@@ -427,9 +427,7 @@ void TestPlots::failedExportLeavesNothing()
     QFETCH(QString, failure);
     const auto fmt = ExportFormat(format);
 
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
     feed(buffer, *plot, 0.0, 0.05, 100);
 
     QTemporaryDir dir;
@@ -475,11 +473,7 @@ void TestPlots::failedExportKeepsExistingFile_data()
 {
     QTest::addColumn<int>("format");
     QTest::addColumn<QString>("failure");
-    const std::pair<ExportFormat, const char*> formats[] = {{ExportFormat::Png, "png"},
-                                                            {ExportFormat::Pdf, "pdf"},
-                                                            {ExportFormat::Svg, "svg"},
-                                                            {ExportFormat::Csv, "csv"}};
-    for (const auto& [format, name] : formats)
+    for (const auto& [format, name] : kExportFormats)
         for (const char* failure : {"file size limit", "read-only directory"})
             QTest::addRow("%s, %s", name, failure) << int(format) << QString(failure);
 }
@@ -490,9 +484,7 @@ void TestPlots::failedExportKeepsExistingFile()
     QFETCH(QString, failure);
     const auto fmt = ExportFormat(format);
 
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
     feed(buffer, *plot, 0.0, 0.05, 200); // well over the size limit below, in every format
 
     QTemporaryDir dir;
@@ -638,9 +630,7 @@ void TestPlots::windowModeScrolls()
 
 void TestPlots::rewindKeepsLaterPointsAsGhost()
 {
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
     feed(buffer, *plot, 0.0, 1.0 / 64, 64 * 8); // 0 .. 8 s
     plot->addMark(2.0, QStringLiteral("dt = 5 ms"));
     plot->addMark(6.0, QStringLiteral("RK4"));
@@ -669,9 +659,7 @@ void TestPlots::rewindKeepsLaterPointsAsGhost()
 
 void TestPlots::sampleGoingBackRewinds()
 {
-    std::unique_ptr<PlotWidget> plot(makeDriftPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeDriftPlot(nullptr));
     plot->addMark(2.0, QStringLiteral("Verlet"));
     plot->addMark(5.0, QStringLiteral("RK4"));
     feed(buffer, *plot, 0.0, 0.5, 13); // 0 .. 6 s
@@ -714,9 +702,7 @@ void TestPlots::marksAreBounded()
 
 void TestPlots::userRangeChangePausesFollowing()
 {
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
+    auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
     QSignalSpy following(plot.get(), &PlotWidget::followingChanged);
     feed(buffer, *plot, 0.0, 1.0 / 64, 64 * 30);
     QVERIFY(plot->isFollowing());

@@ -19,11 +19,13 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "test_files.h"
 #include "test_main.h"
 
 #include <cstring>
 
 using namespace rigidlab;
+using rigidlab::test::writeFile;
 using rigidlab::ui::MainWindow;
 
 namespace {
@@ -230,11 +232,9 @@ private slots:
     {
         QTemporaryDir dir;
         const QString broken = dir.filePath(QStringLiteral("broken.json"));
-        QFile f(broken);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write(
-            R"({"rigidlab": 1, "bodies": [{"id": "x", "shape": {"type": "circle", "radius": -1}}]})");
-        f.close();
+        QVERIFY(writeFile(
+            broken,
+            R"({"rigidlab": 1, "bodies": [{"id": "x", "shape": {"type": "circle", "radius": -1}}]})"));
         MainWindow w;
         QCOMPARE(w.openScene(scene("pendulum.json"), true), QString());
         const QString title = w.controller().scene().title;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "common/display_names.h"
 
+#include "format/view_text.h"
+
 #include <QCoreApplication>
 
 #include <array>
@@ -48,11 +50,6 @@ QString translated(const char* words)
     return QCoreApplication::translate("rigidlab::ui::displayNames", words);
 }
 
-QString fromView(std::string_view s)
-{
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
-
 } // namespace
 
 QString integratorDisplayName(physics::IntegratorKind kind)
@@ -60,7 +57,7 @@ QString integratorDisplayName(physics::IntegratorKind kind)
     for (const IntegratorWords& row : kIntegratorWords)
         if (row.kind == kind)
             return translated(row.words);
-    return fromView(physics::integratorName(kind));
+    return lessons::textFromView(physics::integratorName(kind));
 }
 
 QString solverDisplayName(physics::SolverKind kind)
@@ -68,7 +65,7 @@ QString solverDisplayName(physics::SolverKind kind)
     for (const SolverWords& row : kSolverWords)
         if (row.kind == kind)
             return translated(row.words);
-    return fromView(physics::solverName(kind));
+    return lessons::textFromView(physics::solverName(kind));
 }
 
 QString methodDisplayName(const QString& codeName)

@@ -25,8 +25,7 @@ namespace rigidlab::ui {
 namespace {
 
 constexpr double kMarkLabelPt = 10;
-constexpr int kRightMarginPx = 22; // as plot_widget.cpp: half a tick label
-constexpr double kLabelGapPx = 6;  // between labels on one row
+constexpr double kLabelGapPx = 6; // between labels on one row
 const QMargins kLabelPadding(3, 0, 3, 1);
 const QColor kInk(0x20, 0x20, 0x20);
 const QColor kLine(0x60, 0x60, 0x60);

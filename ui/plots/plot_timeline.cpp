@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // PlotWidget and time travel: going back on the timeline keeps the points, the run's old
 // future stays drawn faded (the ghost, see PlotSeries) until a new branch overwrites it. How
-// far back the points are kept is trimToWindow's (plot_widget.cpp): as far as the timeline goes.
+// far back the points are kept is trimToWindow's (plot_points.cpp): as far as the timeline goes.
 
 #include "plots/plot_widget.h"
 

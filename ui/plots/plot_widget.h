@@ -218,6 +218,8 @@ protected:
     void showEvent(QShowEvent* event) override;
 
 private:
+    /// The axis rect's right margin: half a tick label, so "10" is not cut at the edge [px].
+    static constexpr int kRightMarginPx = 22;
     /// Marks the series of `axis` that go off the top of it (true in `offScale`), in the
     /// legend.
     void setOffScale(YAxis axis, const std::vector<bool>& offScale);

@@ -161,7 +161,7 @@ void SimulationController::resetClock()
     m_previousPoses.clear();
     m_accumulator = 0.0;
     m_slow = false;
-    m_lastSampleTime = -1.0;
+    m_sampleClock.reset();
     m_samples.clear();
     resetVariants();
     m_measurements.reset(m_world, m_watched);
@@ -266,10 +266,9 @@ void SimulationController::doStep()
 
 void SimulationController::pushSample()
 {
-    const double t = stepTime(m_world);
-    if (m_lastSampleTime >= 0 && t < m_lastSampleTime + kSampleInterval - 1e-12)
+    // Taken when due as the lesson export takes them (step_sampler.h: SampleClock).
+    if (!m_sampleClock.due(stepTime(m_world)))
         return;
-    m_lastSampleTime = t;
     // Variant 0 is the main world; the others follow in order (step_sampler.h, as the
     // lesson export samples).
     m_samples.push(makeSample(m_world, m_energyReference, m_variants, m_variantReferences,
@@ -361,7 +360,7 @@ void SimulationController::seek(long long step)
     }
     m_measurements.rewind(m_world);
     m_previousPoses.clear();
-    m_lastSampleTime = stepTime(m_world) - kSampleInterval; // sample again from here on
+    m_sampleClock.rewound(stepTime(m_world)); // sample again from here on
     emit rewound(stepTime(m_world));
     pushSample();
     emit worldChanged();

@@ -170,7 +170,7 @@ private:
     History m_history;
     SampleBuffer m_samples;
     EnergyReference m_energyReference; ///< what the main world's drift is measured against
-    double m_lastSampleTime = -1.0;
+    SampleClock m_sampleClock;         ///< when the next sample is due (as the lesson export's)
     physics::Vec2 m_sceneGravity = physics::Vec2::Zero();
     std::vector<physics::World> m_variants;
     std::vector<physics::World> m_variantStarts; ///< to rebuild them on reset and seek

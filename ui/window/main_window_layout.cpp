@@ -16,6 +16,7 @@
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
+#include "window/window_names.h"
 
 #include <QApplication>
 #include <QDockWidget>
@@ -99,8 +100,8 @@ void MainWindow::arrangeDocks(const QSize& screen, int windowWidth)
     // The plots stacked one above the other where the screen is tall enough, else one tabbed
     // dock; the tables (SAT, bounces, collision) likewise share a tabbed dock below them.
     QList<QDockWidget*> plots;
-    for (const char* name : {"energy", "momentum", "drift"})
-        plots << m_docks.value(QLatin1String(name));
+    for (const PlotNames& plot : kPlotNames)
+        plots << m_docks.value(QLatin1String(plot.name));
     plots << m_compareDock;
     // On a small screen the lesson has the left column to itself (its text, questions and
     // buttons need the height); the controls and the inspector join the plots' tabs.

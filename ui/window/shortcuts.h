@@ -3,7 +3,7 @@
 // The window's controls in one table: every keyboard shortcut the window registers and every
 // mouse action of the world view. MainWindow takes its actions' keys from here and Help ›
 // Controls is generated from here, so that the help cannot drift from what the keys do.
-// (The overlay keys V C B M T J live beside their overlays in main_window.cpp's kOverlays;
+// (The overlay keys V C B M T J live beside their overlays' names in window_names.h;
 // the window passes them to controlsHelpHtml as extra rows.)
 
 #include <QKeySequence>

@@ -4,6 +4,8 @@
 
 #include "rigidlab/physics/math.h"
 
+#include <cmath>
+
 namespace rigidlab::physics {
 
 struct Diagnostics {
@@ -26,5 +28,14 @@ struct Diagnostics {
     double dissipated = 0;    ///< collisionLoss + dragLoss + dampingLoss [J]
     int contacts = 0;         ///< contact points this step
 };
+
+/// How much energy is in play: the kinetic energy and each potential energy's size [J]. A scale
+/// for energy errors that stays large when the total happens to be near zero (a body that falls
+/// from rest at the origin). Gravity and gravitation potentials may be negative; a spring's is not.
+inline double energyParts(const Diagnostics& d)
+{
+    return d.kinetic + std::abs(d.gravityPotential) + d.springPotential +
+           std::abs(d.gravitationPotential);
+}
 
 } // namespace rigidlab::physics

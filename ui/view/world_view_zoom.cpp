@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// WorldView's zoom: fitting the scene or a rectangle, the wheel, and the least size a body
+// is drawn.
+
+#include "view/world_view.h"
+
+#include "common/theme.h"
+#include "simulation/simulation_controller.h"
+#include "view/body_item.h"
+
+#include <QScrollBar>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigidlab::ui {
+
+namespace {
+
+constexpr double kMinZoom = 2.0;     // pixels per metre
+constexpr double kMaxZoom = 20000.0; // pixels per metre
+/// The least size a moving body is drawn across [px], so that the back row sees it (larger in
+/// presentation mode); a body smaller on screen is drawn grown to it.
+constexpr double kMinBodyPx = 10.0;
+constexpr double kMinBodyPresentationPx = 14.0;
+
+} // namespace
+
+QRectF WorldView::contentRect() const
+{
+    // A world that stopped (diverged) is left out: its bodies may lie a billion metres away,
+    // and following them would shrink the worlds still running to a dot.
+    QRectF box;
+    const physics::World& w = m_controller.world();
+    if (!w.divergence())
+        for (const BodyItem* item : m_items)
+            box |= item->sceneBoundingRect();
+    for (const Ghost& g : m_ghosts)
+        if (!m_controller.variant(g.variant).divergence())
+            box |= g.item->sceneBoundingRect();
+    auto add = [&](physics::BodyId id, const physics::Vec2& anchor) {
+        const physics::Vec2 p =
+            id == physics::kWorld ? anchor : w.body(id).transform().apply(anchor);
+        box |= QRectF(QPointF(p.x(), p.y()), QSizeF(1e-6, 1e-6));
+    };
+    if (!w.divergence()) {
+        for (const physics::SpringDef& s : w.springs()) {
+            add(s.a, s.anchorA);
+            add(s.b, s.anchorB);
+        }
+        for (const physics::PinJointDef& j : w.joints()) {
+            add(j.a, j.anchorA);
+            add(j.b, j.anchorB);
+        }
+    }
+    if (m_fitExtra)
+        box |= m_fitExtra();
+    return box;
+}
+
+void WorldView::fitScene()
+{
+    m_autoFit = true;
+    m_fitted = contentRect();
+    if (m_fitted.isEmpty())
+        return;
+    // Auto-fit may later widen to follow bodies that swing or bounce a little outside the
+    // start, but not far: a body that leaves the scene (the cue ball of a break, a pendulum
+    // gone over the top) would shrink everything still in it to dots.
+    const double grow = std::max(0.25 * std::max(m_fitted.width(), m_fitted.height()), 0.5);
+    m_fitLimit = m_fitted.adjusted(-grow, -grow, grow, grow);
+    m_startFit = m_fitted;
+    m_stoppedCount = stoppedCount();
+    showRect(m_fitted);
+    // A panel's drawing may be sized partly in pixels: measure it again at the new zoom.
+    for (int round = 0; round < 4 && m_fitExtra && !m_fitted.contains(contentRect()); ++round) {
+        m_fitted |= contentRect();
+        showRect(m_fitted);
+    }
+}
+
+void WorldView::fitRect(QRectF worldRect, double marginPx)
+{
+    const double w = viewport()->width() - 2 * marginPx, h = viewport()->height() - 2 * marginPx;
+    if (worldRect.isEmpty() || w < 10 || h < 10)
+        return;
+    setZoom(std::min(w / worldRect.width(), h / worldRect.height()));
+    centerOn(worldRect.center());
+    // Resizing shows this again (with showRect's margin on top), and auto-fit does not widen
+    // it to the rest of the scene.
+    const double m = marginPx / zoom();
+    m_autoFit = true;
+    m_fitted = worldRect.adjusted(-m, -m, m, m);
+    m_fitLimit = m_fitted;
+    m_startFit = m_fitted;
+}
+
+void WorldView::showRect(QRectF box)
+{
+    if (box.isEmpty() || viewport()->width() < 10 || viewport()->height() < 10)
+        return;
+    const double margin = 0.08 * std::max(box.width(), box.height()) + 0.05;
+    box.adjust(-margin, -margin, margin, margin);
+    // The legend of compared worlds takes the top of the view: the bodies go below it.
+    //   +------------------+
+    //   | legend           |  top
+    //   |------------------|
+    //   |   box, centred   |  height - top
+    //   +------------------+
+    m_legendReserved = legendHeight();
+    const int top = std::min(m_legendReserved, viewport()->height() / 2);
+    setZoom(
+        std::min(viewport()->width() / box.width(), (viewport()->height() - top) / box.height()));
+    // Screen up is world +y: the view's centre lies half the legend above the box's centre.
+    centerOn(box.center() + QPointF(0, 0.5 * top / zoom()));
+}
+
+void WorldView::setZoom(double pixelsPerMetre)
+{
+    const double s = std::clamp(pixelsPerMetre, kMinZoom, kMaxZoom);
+    setTransform(QTransform::fromScale(s, -s));
+    applyMinimumBodySize();
+}
+
+double WorldView::minimumBodyRadius() const
+{
+    const double px = theme::presentation() ? kMinBodyPresentationPx : kMinBodyPx;
+    return 0.5 * px / zoom();
+}
+
+void WorldView::applyMinimumBodySize()
+{
+    const double r = minimumBodyRadius();
+    for (BodyItem* item : m_items)
+        item->setMinimumRadius(r);
+    for (const Ghost& g : m_ghosts)
+        g.item->setMinimumRadius(r);
+}
+
+void WorldView::wheelEvent(QWheelEvent* event)
+{
+    const double steps = event->angleDelta().y() / 120.0;
+    if (steps == 0)
+        return;
+    // Zoom about the point under the cursor (the transformation anchor).
+    m_autoFit = false;
+    const double factor = std::pow(1.2, steps);
+    const double target = std::clamp(zoom() * factor, kMinZoom, kMaxZoom);
+    scale(target / zoom(), target / zoom());
+    applyMinimumBodySize();
+    event->accept();
+}
+
+void WorldView::resizeEvent(QResizeEvent* event)
+{
+    QGraphicsView::resizeEvent(event);
+    if (m_autoFit)
+        showRect(m_fitted.isEmpty() ? contentRect() : m_fitted);
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The window's one table of names for its overlays and standard plots: what the menus and the
+// toolbar say, the key the settings file keeps, the name a lesson step uses (the lesson
+// format's list, lessons/format/lesson_loader.cpp) and the key that toggles it. Every part of
+// the window that names an overlay or a plot reads it from here.
+
+#include "view/overlays.h"
+
+#include <QtGlobal>
+
+#include <array>
+#include <cstddef>
+
+namespace rigidlab::ui {
+
+struct OverlayNames {
+    Overlay overlay;
+    const char* text;       ///< the View menu's entry, for tr() in context "MainWindow"
+    const char* shortText;  ///< on the toolbar, likewise
+    const char* settingKey; ///< under "overlays/" in the settings file
+    const char* lessonName; ///< in a lesson step's "overlays"
+    const char* shortcut;
+};
+
+/// In the order of `Overlay`: kOverlayNames[static_cast<size_t>(o)].overlay == o.
+inline constexpr std::array<OverlayNames, kOverlayCount> kOverlayNames{{
+    {Overlay::Velocities, QT_TRANSLATE_NOOP("MainWindow", "&Velocity vectors"),
+     QT_TRANSLATE_NOOP("MainWindow", "Velocities"), "velocities", "velocities", "V"},
+    {Overlay::Contacts, QT_TRANSLATE_NOOP("MainWindow", "&Contact points and normals"),
+     QT_TRANSLATE_NOOP("MainWindow", "Contacts"), "contacts", "contacts", "C"},
+    {Overlay::BoundingBoxes, QT_TRANSLATE_NOOP("MainWindow", "&Bounding boxes"),
+     QT_TRANSLATE_NOOP("MainWindow", "Boxes"), "boxes", "boxes", "B"},
+    {Overlay::CentresOfMass, QT_TRANSLATE_NOOP("MainWindow", "Centres of &mass"),
+     QT_TRANSLATE_NOOP("MainWindow", "Centres"), "com", "centres", "M"},
+    {Overlay::Trails, QT_TRANSLATE_NOOP("MainWindow", "Motion &trails"),
+     QT_TRANSLATE_NOOP("MainWindow", "Trails"), "trails", "trails", "T"},
+    {Overlay::SpringsJoints, QT_TRANSLATE_NOOP("MainWindow", "&Springs and joints"),
+     QT_TRANSLATE_NOOP("MainWindow", "Springs"), "springs", "springs", "J"},
+}};
+
+static_assert(
+    [] {
+        for (std::size_t i = 0; i < kOverlayNames.size(); ++i)
+            if (static_cast<std::size_t>(kOverlayNames[i].overlay) != i)
+                return false;
+        return true;
+    }(),
+    "kOverlayNames is in the order of Overlay");
+
+struct PlotNames {
+    const char* name;  ///< the dock's and the lesson's name
+    const char* title; ///< the dock's title and the Export menu's entry, for tr() ("MainWindow")
+};
+
+/// The window's standard plots, in the order of MainWindow::plot(index).
+inline constexpr std::array<PlotNames, 3> kPlotNames{{
+    {"energy", QT_TRANSLATE_NOOP("MainWindow", "Energy")},
+    {"momentum", QT_TRANSLATE_NOOP("MainWindow", "Momentum")},
+    {"drift", QT_TRANSLATE_NOOP("MainWindow", "Energy drift")},
+}};
+
+} // namespace rigidlab::ui
