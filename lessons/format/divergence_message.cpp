@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "format/divergence_message.h"
+#include "format/view_text.h"
 
 namespace rigidlab::lessons {
 
@@ -35,8 +36,7 @@ QString divergenceMessage(const physics::Divergence& d)
     const std::string_view integrator = physics::integratorName(d.integrator);
     const QString where =
         QStringLiteral("diverged at t = %1 s (step %2, dt = %3 s, %4): ")
-            .arg(number(d.time), QString::number(d.step), number(d.dt),
-                 QString::fromUtf8(integrator.data(), static_cast<qsizetype>(integrator.size())));
+            .arg(number(d.time), QString::number(d.step), number(d.dt), textFromView(integrator));
     const QString body = QString::fromStdString(d.bodyName);
     const bool energy = d.quantity == physics::Divergence::Quantity::TotalEnergy;
     QString line;

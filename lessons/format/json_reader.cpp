@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "format/json_reader.h"
+#include "format/view_text.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -181,10 +182,8 @@ QString describeRange(const limits::Range& range)
 {
     QString text =
         QStringLiteral("from %1 to %2").arg(formatNumber(range.min), formatNumber(range.max));
-    if (!range.unit.empty()) {
-        text +=
-            u' ' + QString::fromUtf8(range.unit.data(), static_cast<qsizetype>(range.unit.size()));
-    }
+    if (!range.unit.empty())
+        text += u' ' + textFromView(range.unit);
     return text;
 }
 

@@ -14,11 +14,25 @@
 #include <QStringList>
 
 #include <algorithm>
+#include <array>
 #include <optional>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace rigidlab::lessons {
+
+/// The names a lesson step may list (lessons/LESSON_FORMAT.md), in one place: the loader checks
+/// steps against them and the window's table (ui/window/window_names.h) takes its lesson names
+/// from them, in the same order.
+inline constexpr std::array<std::string_view, 5> kStepPlotNames{"energy", "momentum", "drift",
+                                                                "compare-energy", "compare-drift"};
+inline constexpr std::array<std::string_view, 6> kStepOverlayNames{
+    "velocities", "contacts", "boxes", "centres", "trails", "springs"};
+inline constexpr std::array<std::string_view, 5> kStepPanelNames{"controls", "inspector", "sat",
+                                                                 "bounces", "collision"};
+inline constexpr std::array<std::string_view, 8> kStepControlNames{
+    "integrator", "dt", "solver", "iterations", "restitution", "friction", "gravity", "timeScale"};
 
 /// The version this loader reads (the value of the top-level key "rigidlab-lesson").
 inline constexpr int kLessonFormatVersion = 1;

@@ -4,6 +4,7 @@
 
 #include "format/lesson_reading.h"
 #include "format/scene_loader.h"
+#include "format/view_text.h"
 
 #include <array>
 
@@ -25,11 +26,6 @@ constexpr std::array kSolvers = {
     physics::SolverKind::SeedImpulse,
     physics::SolverKind::SequentialImpulse,
 };
-
-QString fromView(std::string_view s)
-{
-    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
-}
 
 } // namespace
 
@@ -56,7 +52,7 @@ bool readSettings(JsonReader& in, const QJsonObject& object, const QString& plac
         if (!settings.integrator) {
             QStringList names;
             for (auto k : kIntegrators) {
-                names.append(fromView(physics::integratorName(k)));
+                names.append(textFromView(physics::integratorName(k)));
             }
             return in.fail(joinPlace(at, u"integrator"),
                            QStringLiteral("unknown integrator \"%1\" (expected %2)")
@@ -83,7 +79,7 @@ bool readSettings(JsonReader& in, const QJsonObject& object, const QString& plac
         if (!settings.solver) {
             QStringList names;
             for (auto k : kSolvers) {
-                names.append(fromView(physics::solverName(k)));
+                names.append(textFromView(physics::solverName(k)));
             }
             return in.fail(
                 joinPlace(at, u"solver"),
@@ -188,7 +184,7 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
             if (!kind) {
                 QStringList names;
                 for (auto k : kIntegrators) {
-                    names.append(fromView(physics::integratorName(k)));
+                    names.append(textFromView(physics::integratorName(k)));
                 }
                 return in.fail(itemAt, QStringLiteral("unknown integrator \"%1\" (expected %2)")
                                            .arg(name, names.join(u", ")));
@@ -199,7 +195,7 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
             if (!kind) {
                 QStringList names;
                 for (auto k : kSolvers) {
-                    names.append(fromView(physics::solverName(k)));
+                    names.append(textFromView(physics::solverName(k)));
                 }
                 return in.fail(itemAt, QStringLiteral("unknown solver \"%1\" (expected %2)")
                                            .arg(name, names.join(u", ")));

@@ -21,19 +21,11 @@ namespace {
 constexpr double kMaxExportTime = 600.0; ///< [s]
 constexpr double kMaxExportSteps = 1e7;  ///< exportTime / dt at most
 
-constexpr std::array kPlotNames = {u"energy", u"momentum", u"drift", u"compare-energy",
-                                   u"compare-drift"};
-constexpr std::array kOverlayNames = {u"velocities", u"contacts", u"boxes",
-                                      u"centres",    u"trails",   u"springs"};
-constexpr std::array kPanelNames = {u"controls", u"inspector", u"sat", u"bounces", u"collision"};
-constexpr std::array kControlNames = {u"integrator",  u"dt",       u"solver",  u"iterations",
-                                      u"restitution", u"friction", u"gravity", u"timeScale"};
-
 template <typename Names> QString joinNames(const Names& names)
 {
     QStringList list;
-    for (QStringView n : names) {
-        list.append(n.toString());
+    for (std::string_view n : names) {
+        list.append(QLatin1String(n.data(), static_cast<qsizetype>(n.size())));
     }
     return list.join(u", ");
 }
@@ -72,8 +64,8 @@ bool readNames(JsonReader& in, const QJsonObject& object, QStringView key, const
         }
         const QString name = list[i].toString();
         bool isKnown = false;
-        for (QStringView k : known) {
-            isKnown = isKnown || name == k;
+        for (std::string_view k : known) {
+            isKnown = isKnown || name == QLatin1String(k.data(), static_cast<qsizetype>(k.size()));
         }
         if (!isKnown) {
             return in.fail(itemAt, QStringLiteral("unknown %1 \"%2\" (expected %3)")
@@ -166,9 +158,9 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
     if (!context.texts->paragraphs(object, u"text", place, step.text) ||
         !readScene(in, object, place, context, step) ||
         !readSettings(in, object, place, step.settings) || !readCompare(in, object, place, step) ||
-        !readNames(in, object, u"plots", place, kPlotNames, u"plot", step.plots) ||
-        !readNames(in, object, u"overlays", place, kOverlayNames, u"overlay", step.overlays) ||
-        !readNames(in, object, u"panels", place, kPanelNames, u"panel", step.panels)) {
+        !readNames(in, object, u"plots", place, kStepPlotNames, u"plot", step.plots) ||
+        !readNames(in, object, u"overlays", place, kStepOverlayNames, u"overlay", step.overlays) ||
+        !readNames(in, object, u"panels", place, kStepPanelNames, u"panel", step.panels)) {
         return false;
     }
     // Every step keeps its scene: many steps reading one large scene file add up.
@@ -190,7 +182,7 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
     }
     if (object.contains(u"allow")) {
         QStringList allow;
-        if (!readNames(in, object, u"allow", place, kControlNames, u"control", allow)) {
+        if (!readNames(in, object, u"allow", place, kStepControlNames, u"control", allow)) {
             return false;
         }
         step.allow = allow;

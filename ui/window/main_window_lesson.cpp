@@ -141,7 +141,7 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     m_compareDock->setVisible(!m_comparePlots.empty());
     for (const OverlayNames& info : kOverlayNames)
         overlayAction(info.overlay)
-            ->setChecked(step.overlays.contains(QLatin1String(info.lessonName)));
+            ->setChecked(step.overlays.contains(lessonOverlayName(info.overlay)));
     // Springs and joints are part of the scene, not a teaching aid: drawn whenever there are any.
     if (!step.scene.springs.empty() || !step.scene.joints.empty())
         overlayAction(Overlay::SpringsJoints)->setChecked(true);

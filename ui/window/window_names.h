@@ -2,15 +2,19 @@
 #pragma once
 // The window's one table of names for its overlays and standard plots: what the menus and the
 // toolbar say, the key the settings file keeps, the name a lesson step uses (the lesson
-// format's list, lessons/format/lesson_loader.cpp) and the key that toggles it. Every part of
+// format's lists, lessons/format/lesson.h) and the key that toggles it. Every part of
 // the window that names an overlay or a plot reads it from here.
 
 #include "view/overlays.h"
 
+#include "format/lesson.h"
+
+#include <QLatin1String>
 #include <QtGlobal>
 
 #include <array>
 #include <cstddef>
+#include <string_view>
 
 namespace rigidlab::ui {
 
@@ -19,24 +23,23 @@ struct OverlayNames {
     const char* text;       ///< the View menu's entry, for tr() in context "MainWindow"
     const char* shortText;  ///< on the toolbar, likewise
     const char* settingKey; ///< under "overlays/" in the settings file
-    const char* lessonName; ///< in a lesson step's "overlays"
     const char* shortcut;
 };
 
 /// In the order of `Overlay`: kOverlayNames[static_cast<size_t>(o)].overlay == o.
 inline constexpr std::array<OverlayNames, kOverlayCount> kOverlayNames{{
     {Overlay::Velocities, QT_TRANSLATE_NOOP("MainWindow", "&Velocity vectors"),
-     QT_TRANSLATE_NOOP("MainWindow", "Velocities"), "velocities", "velocities", "V"},
+     QT_TRANSLATE_NOOP("MainWindow", "Velocities"), "velocities", "V"},
     {Overlay::Contacts, QT_TRANSLATE_NOOP("MainWindow", "&Contact points and normals"),
-     QT_TRANSLATE_NOOP("MainWindow", "Contacts"), "contacts", "contacts", "C"},
+     QT_TRANSLATE_NOOP("MainWindow", "Contacts"), "contacts", "C"},
     {Overlay::BoundingBoxes, QT_TRANSLATE_NOOP("MainWindow", "&Bounding boxes"),
-     QT_TRANSLATE_NOOP("MainWindow", "Boxes"), "boxes", "boxes", "B"},
+     QT_TRANSLATE_NOOP("MainWindow", "Boxes"), "boxes", "B"},
     {Overlay::CentresOfMass, QT_TRANSLATE_NOOP("MainWindow", "Centres of &mass"),
-     QT_TRANSLATE_NOOP("MainWindow", "Centres"), "com", "centres", "M"},
+     QT_TRANSLATE_NOOP("MainWindow", "Centres"), "com", "M"},
     {Overlay::Trails, QT_TRANSLATE_NOOP("MainWindow", "Motion &trails"),
-     QT_TRANSLATE_NOOP("MainWindow", "Trails"), "trails", "trails", "T"},
+     QT_TRANSLATE_NOOP("MainWindow", "Trails"), "trails", "T"},
     {Overlay::SpringsJoints, QT_TRANSLATE_NOOP("MainWindow", "&Springs and joints"),
-     QT_TRANSLATE_NOOP("MainWindow", "Springs"), "springs", "springs", "J"},
+     QT_TRANSLATE_NOOP("MainWindow", "Springs"), "springs", "J"},
 }};
 
 static_assert(
@@ -48,6 +51,15 @@ static_assert(
     }(),
     "kOverlayNames is in the order of Overlay");
 
+/// The name a lesson step gives `overlay` in its "overlays" (the lesson format's list, in the
+/// order of Overlay).
+inline QLatin1String lessonOverlayName(Overlay overlay)
+{
+    static_assert(lessons::kStepOverlayNames.size() == kOverlayCount);
+    const std::string_view name = lessons::kStepOverlayNames[static_cast<std::size_t>(overlay)];
+    return QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
+}
+
 struct PlotNames {
     const char* name;  ///< the dock's and the lesson's name
     const char* title; ///< the dock's title and the Export menu's entry, for tr() ("MainWindow")
@@ -55,9 +67,9 @@ struct PlotNames {
 
 /// The window's standard plots, in the order of MainWindow::plot(index).
 inline constexpr std::array<PlotNames, 3> kPlotNames{{
-    {"energy", QT_TRANSLATE_NOOP("MainWindow", "Energy")},
-    {"momentum", QT_TRANSLATE_NOOP("MainWindow", "Momentum")},
-    {"drift", QT_TRANSLATE_NOOP("MainWindow", "Energy drift")},
+    {lessons::kStepPlotNames[0].data(), QT_TRANSLATE_NOOP("MainWindow", "Energy")},
+    {lessons::kStepPlotNames[1].data(), QT_TRANSLATE_NOOP("MainWindow", "Momentum")},
+    {lessons::kStepPlotNames[2].data(), QT_TRANSLATE_NOOP("MainWindow", "Energy drift")},
 }};
 
 } // namespace rigidlab::ui
