@@ -13,18 +13,23 @@ namespace rigidlab::lessons {
 
 namespace {
 
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("rigidlab::lessons::judge", text);
-}
+/// The translation context of the verdicts on an answer.
+struct Judge {
+    Q_DECLARE_TR_FUNCTIONS(Judge)
+};
 
 /// "first" ... "tenth", then "11th", "21st", "22nd", "23rd".
 QString ordinal(int n)
 {
-    static const char* const kWords[] = {"first", "second",  "third",  "fourth", "fifth",
-                                         "sixth", "seventh", "eighth", "ninth",  "tenth"};
+    static const char* const kWords[] = {
+        QT_TRANSLATE_NOOP("Judge", "first"),   QT_TRANSLATE_NOOP("Judge", "second"),
+        QT_TRANSLATE_NOOP("Judge", "third"),   QT_TRANSLATE_NOOP("Judge", "fourth"),
+        QT_TRANSLATE_NOOP("Judge", "fifth"),   QT_TRANSLATE_NOOP("Judge", "sixth"),
+        QT_TRANSLATE_NOOP("Judge", "seventh"), QT_TRANSLATE_NOOP("Judge", "eighth"),
+        QT_TRANSLATE_NOOP("Judge", "ninth"),   QT_TRANSLATE_NOOP("Judge", "tenth"),
+    };
     if (n >= 1 && n <= 10) {
-        return tr(kWords[n - 1]);
+        return Judge::tr(kWords[n - 1]);
     }
     const int lastTwo = n % 100;
     const int last = n % 10;
@@ -58,9 +63,11 @@ QString formatValue(double value, const Question& q)
 QString notYet(const Measure& m)
 {
     if (m.kind == Measure::Kind::Apex) {
-        return tr("Run the simulation past the top of the %1 bounce first.").arg(ordinal(m.n));
+        return Judge::tr("Run the simulation past the top of the %1 bounce first.")
+            .arg(ordinal(m.n));
     }
-    return tr("Run the simulation until t = %1 s first.").arg(QString::number(m.time, 'g', 6));
+    return Judge::tr("Run the simulation until t = %1 s first.")
+        .arg(QString::number(m.time, 'g', 6));
 }
 
 } // namespace
@@ -81,7 +88,7 @@ Verdict judgeAttempt(const Question& q, double answer, std::optional<double> val
     verdict.measured = true;
     verdict.value = *value;
     if (!std::isfinite(answer)) {
-        verdict.message = tr("Type a number first.");
+        verdict.message = Judge::tr("Type a number first.");
         return verdict;
     }
     verdict.right =
@@ -90,14 +97,16 @@ Verdict judgeAttempt(const Question& q, double answer, std::optional<double> val
         // A second try is only worth something while the value is still unknown.
         verdict.message =
             q.hint.isEmpty()
-                ? tr("Not quite (you said %1). Try once more.").arg(formatValue(answer, q))
-                : tr("Not quite (you said %1). Hint: %2").arg(formatValue(answer, q), q.hint);
+                ? Judge::tr("Not quite (you said %1). Try once more.").arg(formatValue(answer, q))
+                : Judge::tr("Not quite (you said %1). Hint: %2")
+                      .arg(formatValue(answer, q), q.hint);
         return verdict;
     }
     verdict.shown = true;
-    verdict.message = (verdict.right ? tr("Right: the simulation measured %1 (you said %2).")
-                                     : tr("Not quite: the simulation measured %1 (you said %2)."))
-                          .arg(formatValue(*value, q), formatValue(answer, q));
+    verdict.message =
+        (verdict.right ? Judge::tr("Right: the simulation measured %1 (you said %2).")
+                       : Judge::tr("Not quite: the simulation measured %1 (you said %2)."))
+            .arg(formatValue(*value, q), formatValue(answer, q));
     return verdict;
 }
 
@@ -111,7 +120,7 @@ Verdict showAnswer(const Question& q, std::optional<double> value)
     verdict.measured = true;
     verdict.shown = true;
     verdict.value = *value;
-    verdict.message = tr("The simulation measured %1.").arg(formatValue(*value, q));
+    verdict.message = Judge::tr("The simulation measured %1.").arg(formatValue(*value, q));
     return verdict;
 }
 
