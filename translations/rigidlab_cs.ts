@@ -55,10 +55,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Language of the interface: cs or en (accepted; not in effect yet).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>--%1 needs %2, got &quot;%3&quot;</source>
         <translation type="unfinished"></translation>
     </message>
@@ -104,6 +100,10 @@
     </message>
     <message>
         <source>%1 files written into %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Language of the interface: cs or en (View › Language saves a choice; without either, the system&apos;s language).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -391,54 +391,6 @@
     <name>MainWindow</name>
     <message>
         <source>Settings not saved: cannot write %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Velocity vectors</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Velocities</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Contact points and normals</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Contacts</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Bounding boxes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Boxes</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Centres of &amp;mass</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Centres</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Motion &amp;trails</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Trails</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&amp;Springs and joints</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Springs</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1277,6 +1229,58 @@ Sequential impulse: iterated, clamped, warm started.</source>
     </message>
     <message>
         <source>%1 — step %2 — RigidLab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Velocity vectors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocities</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Contact points and normals</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contacts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Bounding boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centres of &amp;mass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centres</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motion &amp;trails</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trails</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Springs and joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Springs</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -4,6 +4,7 @@
 #include "run/measurements.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 
 #include <algorithm>
 #include <cmath>
@@ -51,11 +52,15 @@ QString formatValue(double value, const Question& q)
     if (std::abs(value) < 1e-12) {
         value = 0;
     }
-    QString text = QString::number(value, 'g', digits);
-    if (text.contains(u'e')) { // 1e-05 reads badly; fixed notation with the same digits
+    // On screen, so in the window's locale: "0,41" in Czech (the answer box reads both).
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    QString text = locale.toString(value, 'g', digits);
+    if (text.contains(locale.exponential(), Qt::CaseInsensitive)) {
+        // 1e-05 reads badly; fixed notation with the same digits
         const int decimals = std::clamp(
             digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 12);
-        text = QString::number(value, 'f', std::abs(value) < 1 ? decimals : 0);
+        text = locale.toString(value, 'f', std::abs(value) < 1 ? decimals : 0);
     }
     return q.unit.isEmpty() ? text : text + u' ' + q.unit;
 }
@@ -67,7 +72,7 @@ QString notYet(const Measure& m)
             .arg(ordinal(m.n));
     }
     return Judge::tr("Run the simulation until t = %1 s first.")
-        .arg(QString::number(m.time, 'g', 6));
+        .arg(QLocale().toString(m.time, 'g', 6));
 }
 
 } // namespace

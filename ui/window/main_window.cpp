@@ -18,6 +18,7 @@
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 #include "window/about_dialog.h"
+#include "window/language_switch.h"
 #include "window/shortcuts.h"
 
 #include "format/data_dirs.h"
@@ -78,18 +79,19 @@ struct OverlayInfo {
     const char* shortcut;
 };
 constexpr std::array<OverlayInfo, kOverlayCount> kOverlays{{
-    {Overlay::Velocities, QT_TRANSLATE_NOOP("MainWindow", "&Velocity vectors"),
-     QT_TRANSLATE_NOOP("MainWindow", "Velocities"), "velocities", "V"},
-    {Overlay::Contacts, QT_TRANSLATE_NOOP("MainWindow", "&Contact points and normals"),
-     QT_TRANSLATE_NOOP("MainWindow", "Contacts"), "contacts", "C"},
-    {Overlay::BoundingBoxes, QT_TRANSLATE_NOOP("MainWindow", "&Bounding boxes"),
-     QT_TRANSLATE_NOOP("MainWindow", "Boxes"), "boxes", "B"},
-    {Overlay::CentresOfMass, QT_TRANSLATE_NOOP("MainWindow", "Centres of &mass"),
-     QT_TRANSLATE_NOOP("MainWindow", "Centres"), "com", "M"},
-    {Overlay::Trails, QT_TRANSLATE_NOOP("MainWindow", "Motion &trails"),
-     QT_TRANSLATE_NOOP("MainWindow", "Trails"), "trails", "T"},
-    {Overlay::SpringsJoints, QT_TRANSLATE_NOOP("MainWindow", "&Springs and joints"),
-     QT_TRANSLATE_NOOP("MainWindow", "Springs"), "springs", "J"},
+    {Overlay::Velocities, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Velocity vectors"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Velocities"), "velocities", "V"},
+    {Overlay::Contacts,
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Contact points and normals"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Contacts"), "contacts", "C"},
+    {Overlay::BoundingBoxes, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Bounding boxes"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Boxes"), "boxes", "B"},
+    {Overlay::CentresOfMass, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Centres of &mass"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Centres"), "com", "M"},
+    {Overlay::Trails, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Motion &trails"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Trails"), "trails", "T"},
+    {Overlay::SpringsJoints, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Springs and joints"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Springs"), "springs", "J"},
 }};
 
 /// Raises the one of `docks` that the step cares most about, where they share tabs: its table
@@ -434,6 +436,7 @@ void MainWindow::buildMenus()
         tr("Full screen, larger text and thicker lines for a projector (F11)"));
     connect(m_presentAction, &QAction::toggled, this, &MainWindow::setPresentation);
     addAction(m_presentAction); // F11 works in full screen, where the menu bar may be hidden
+    addLanguageMenu(m_viewMenu, *this);
     m_viewMenu->addSeparator();
     for (QAction* a : m_overlayActions)
         m_viewMenu->addAction(a);
