@@ -328,8 +328,8 @@ int main(int argc, char** argv)
             QTextStream(stderr) << "rigidlab: " << r.error << '\n';
             return 1;
         }
-        QTextStream(stdout) << CommandLine::tr("%1 files written into %2")
-                                   .arg(r.files.size())
+        QTextStream(stdout) << CommandLine::tr("%n file(s) written into %1", nullptr,
+                                               static_cast<int>(r.files.size()))
                                    .arg(QDir::toNativeSeparators(options.screenshots))
                             << '\n';
         return 0;

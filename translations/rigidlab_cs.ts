@@ -99,12 +99,16 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 files written into %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Language of the interface: cs or en (View › Language saves a choice; without either, the system&apos;s language).</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n file(s) written into %1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -258,6 +262,473 @@
     </message>
     <message>
         <source>stopped at t = %1 s: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FileMessages</name>
+    <message>
+        <source>an array</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: cannot read: is a directory, not a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: cannot read: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: too large: more than %1 bytes (the limit is %2 MiB)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unterminated object: a &apos;,&apos; or the closing &apos;}&apos; is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a &apos;:&apos; is missing after a key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unterminated array: a &apos;,&apos; or the closing &apos;]&apos; is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a &apos;,&apos; is missing between two values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a JSON value (text needs double quotes; true, false and null are lower case)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file ends inside a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a valid number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an invalid escape sequence in a string</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the text is not valid UTF-8</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unterminated string: the closing &apos;&quot;&apos; is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a value is missing here (JSON allows no trailing comma)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nested too deeply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too large for the JSON reader</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>more text after the end of the JSON document</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not valid JSON</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>from %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: too large: %1 bytes (the limit is %2 MiB)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: line 1, column 1: the file is empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: line %2, column %3: arrays and objects nested deeper than %4 levels (the limit)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>number %1 is not a finite double (out of range or malformed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: line %2, column %3: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown key (allowed here: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be an object {...}, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing: %1 starts with &quot;%2&quot;: %3 (the format version)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unsupported format version %1 (this RigidLab reads version %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be an array [...], got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a positive number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a number &gt;= 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a number from 0 to 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an array of %1 elements</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a pair of numbers [x, y], got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a whole number from %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a string &quot;...&quot;, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be true or false, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be %1, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be one line (it is shown in the lesson menu); put longer text in &quot;summary&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is %1 characters long; at most %2 fit a menu line (put longer text in &quot;summary&quot;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not be empty (leave the key out instead)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a lesson file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not be empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 goals, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a non-empty string &quot;...&quot;, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a lesson needs 1 to %1 steps, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the steps up to this one hold %1 bodies in all, more than the limit of %2 for a lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; plots the worlds of &quot;compare&quot;, and this step has none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be at most %1 s, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 s at a step of %2 s is more than %3 steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the &quot;sat&quot; panel needs the pair it looks at: add &quot;sat&quot;: {&quot;a&quot;: ID, &quot;b&quot;: ID} to the step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a string or an array of strings, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing (a scene object, or the path of a scene file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a scene object {...} or the path of a scene file, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must name a scene file, got an empty path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>use &apos;/&apos; between folders, got &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a path relative to the lesson&apos;s folder, got &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not leave the lesson&apos;s folder (no &quot;..&quot;), got &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not hold control characters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; leads out of the lesson&apos;s folder (through a symbolic link)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a plain file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown integrator &quot;%1&quot; (expected %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be from %1 to %2 s, got %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown solver &quot;%1&quot; (expected %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be from %1 to %2, got %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>compare &quot;integrators&quot; or &quot;solvers&quot;, not both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>needs &quot;integrators&quot; or &quot;solvers&quot;: the worlds to run side by side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>settings.%1 is given too: the main world runs the first of this list, so leave settings.%1 out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>compares 2 to %1 worlds, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a name &quot;...&quot;, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is listed twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown %1 &quot;%2&quot; (expected %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: the top level must be an object {...}, got an array</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no body with id &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown measure &quot;%1&quot; (expected %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body &quot;%1&quot; is static: it never moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body &quot;%1&quot; is kinematic: it never bounces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: this step shows no panel &quot;%2&quot; (its panels: %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: this step shows no plot &quot;%2&quot; (its plots: %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a column of the %2 panel, which this step does not show</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown name &quot;%1&quot; (expected run, panel:NAME, plot:NAME, %2, %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing (what the answer is checked against)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0, and so is absoluteTolerance: no typed answer would ever be right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not be empty (leave the key out for no hint)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the same body as &quot;a&quot;: the test needs two bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body &quot;%1&quot; is a circle: the separating axis test steps through polygons (boxes and polygons)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 questions, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a scene file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing (it may be empty: [])</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 bodies, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>longer than %1 characters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>duplicate id &quot;%1&quot; (bodies[%2] has it already)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown body type &quot;%1&quot; (expected dynamic, static, kinematic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give &quot;density&quot; or &quot;mass&quot;, not both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too large or too small: its area works out as %1 m^2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the mass works out as %1 kg (density times area); it must be %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a static body never moves: its velocity is ignored (make it &quot;kinematic&quot; to move it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a polygon needs 3 to %1 vertices, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown shape type &quot;%1&quot; (expected circle, box, polygon)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing (a body id)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a body id, not null</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a body id (a string)%1, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> or null</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 springs, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>both ends are fixed in the world (a and b are null): a spring needs a body at one end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the same body as &quot;a&quot;: a spring joins two bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the anchors are too far apart to measure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 joints, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown joint type &quot;%1&quot; (expected pin)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the same body as &quot;a&quot;: a pin joins two bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the anchors are %1 m apart at the start; the joint pulls them together at once</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1196,10 +1667,6 @@ Sequential impulse: iterated, clamped, warm started.</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source> · %1 error estimate %2 (%3 substeps)</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>%1 %2</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1282,6 +1749,14 @@ Sequential impulse: iterated, clamped, warm started.</source>
     <message>
         <source>Springs</source>
         <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source> · %1 error estimate %2 (%Ln substep(s))</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -1552,6 +2027,41 @@ B %3 … %4</source>
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::SimulationController</name>
+    <message>
+        <source>dt = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n iteration(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>e = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>μ = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gravity on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gravity off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>m = %1 kg</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::WorkPrecisionPlot</name>
     <message>
         <source>Error vs run time</source>
@@ -1657,6 +2167,38 @@ B %3 … %4</source>
     </message>
     <message>
         <source>Sequential impulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>broad phase</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>narrow phase</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>islands</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>forces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>integration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>contact solve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sleep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diagnostics</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

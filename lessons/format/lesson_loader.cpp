@@ -20,6 +20,8 @@
 
 namespace rigidlab::lessons {
 
+using detail::FileMessages;
+
 using detail::indexPlace;
 using detail::joinPlace;
 using detail::JsonReader;
@@ -125,30 +127,30 @@ bool LessonReader::readDescription(const QJsonObject& root)
     const QString& d = m_lesson.description;
     if (d.contains(QLatin1Char('\n')) || d.contains(QLatin1Char('\r')))
         return m_in.fail(QStringLiteral("description"),
-                         QStringLiteral("must be one line (it is shown in the lesson menu); put "
-                                        "longer text in \"summary\""));
+                         FileMessages::tr("must be one line (it is shown in the lesson menu); put "
+                                          "longer text in \"summary\""));
     if (d.size() > kMaxDescription)
         return m_in.fail(QStringLiteral("description"),
-                         QStringLiteral("is %1 characters long; at most %2 fit a menu line (put "
-                                        "longer text in \"summary\")")
+                         FileMessages::tr("is %1 characters long; at most %2 fit a menu line (put "
+                                          "longer text in \"summary\")")
                              .arg(d.size())
                              .arg(kMaxDescription));
     if (root.contains(QStringLiteral("description")) && d.trimmed().isEmpty())
         return m_in.fail(QStringLiteral("description"),
-                         QStringLiteral("must not be empty (leave the key out instead)"));
+                         FileMessages::tr("must not be empty (leave the key out instead)"));
     return true;
 }
 
 LessonLoadResult LessonReader::read(const QJsonObject& root)
 {
     const bool ok = m_in.formatVersion(root, QStringLiteral("rigidlab-lesson"),
-                                       QStringLiteral("a lesson file"), kLessonFormatVersion) &&
+                                       FileMessages::tr("a lesson file"), kLessonFormatVersion) &&
                     m_in.checkKeys(root, {},
                                    {u"rigidlab-lesson", u"title", u"summary", u"level", u"minutes",
                                     u"order", u"description", u"goals", u"steps"}) &&
                     m_in.string(root, u"title", {}, m_lesson.title, true) &&
                     (!m_lesson.title.trimmed().isEmpty() ||
-                     m_in.fail(QStringLiteral("title"), QStringLiteral("must not be empty"))) &&
+                     m_in.fail(QStringLiteral("title"), FileMessages::tr("must not be empty"))) &&
                     m_in.string(root, u"summary", {}, m_lesson.summary) &&
                     m_in.string(root, u"level", {}, m_lesson.level) &&
                     m_in.integer(root, u"minutes", {}, m_lesson.minutes, 0, kMaxMinutes) &&
@@ -176,14 +178,14 @@ bool LessonReader::readGoals(const QJsonObject& root)
         return false;
     }
     if (goals.size() > kMaxGoals) {
-        return m_in.fail(
-            place,
-            QStringLiteral("%1 goals, more than the limit of %2").arg(goals.size()).arg(kMaxGoals));
+        return m_in.fail(place, FileMessages::tr("%1 goals, more than the limit of %2")
+                                    .arg(goals.size())
+                                    .arg(kMaxGoals));
     }
     for (qsizetype i = 0; i < goals.size(); ++i) {
         if (!goals[i].isString() || goals[i].toString().trimmed().isEmpty()) {
             return m_in.fail(indexPlace(place, i),
-                             QStringLiteral("must be a non-empty string \"...\", got ") +
+                             FileMessages::tr("must be a non-empty string \"...\", got ") +
                                  detail::describeJson(goals[i]));
         }
         m_lesson.goals.append(goals[i].toString());
@@ -195,14 +197,14 @@ bool LessonReader::readSteps(const QJsonObject& root)
 {
     const QString place = QStringLiteral("steps");
     if (!root.contains(u"steps")) {
-        return m_in.fail(place, QStringLiteral("required, but missing"));
+        return m_in.fail(place, FileMessages::tr("required, but missing"));
     }
     QJsonArray steps;
     if (!m_in.asArray(root.value(u"steps"), place, steps)) {
         return false;
     }
     if (steps.isEmpty() || steps.size() > kMaxSteps) {
-        return m_in.fail(place, QStringLiteral("a lesson needs 1 to %1 steps, got %2")
+        return m_in.fail(place, FileMessages::tr("a lesson needs 1 to %1 steps, got %2")
                                     .arg(kMaxSteps)
                                     .arg(steps.size()));
     }
@@ -228,7 +230,7 @@ bool LessonReader::readStep(const QJsonValue& value, const QString& place, Lesso
         return false;
     }
     if (step.title.trimmed().isEmpty()) {
-        return m_in.fail(joinPlace(place, u"title"), QStringLiteral("must not be empty"));
+        return m_in.fail(joinPlace(place, u"title"), FileMessages::tr("must not be empty"));
     }
     if (!readText(object, place, step.text) || !readScene(object, place, step) ||
         !readSettings(object, place, step.settings) || !readCompare(object, place, step) ||
@@ -241,16 +243,16 @@ bool LessonReader::readStep(const QJsonValue& value, const QString& place, Lesso
     m_bodies += static_cast<qint64>(step.scene.bodies.size());
     if (m_bodies > limits::kMaxLessonBodies) {
         return m_in.fail(joinPlace(place, u"scene"),
-                         QStringLiteral("the steps up to this one hold %1 bodies in all, more "
-                                        "than the limit of %2 for a lesson")
+                         FileMessages::tr("the steps up to this one hold %1 bodies in all, more "
+                                          "than the limit of %2 for a lesson")
                              .arg(m_bodies)
                              .arg(limits::kMaxLessonBodies));
     }
     for (qsizetype i = 0; i < step.plots.size(); ++i) {
         if (step.plots[i].startsWith(u"compare-") && !step.compare) {
             return m_in.fail(indexPlace(joinPlace(place, u"plots"), i),
-                             QStringLiteral("\"%1\" plots the worlds of \"compare\", and this "
-                                            "step has none")
+                             FileMessages::tr("\"%1\" plots the worlds of \"compare\", and this "
+                                              "step has none")
                                  .arg(step.plots[i]));
         }
     }
@@ -269,22 +271,22 @@ bool LessonReader::readStep(const QJsonValue& value, const QString& place, Lesso
     }
     const QString exportPlace = joinPlace(place, u"exportTime");
     if (step.exportTime > kMaxExportTime) {
-        return m_in.fail(exportPlace, QStringLiteral("must be at most %1 s, got %2")
+        return m_in.fail(exportPlace, FileMessages::tr("must be at most %1 s, got %2")
                                           .arg(kMaxExportTime)
                                           .arg(detail::formatNumber(step.exportTime)));
     }
     const double dt = step.settings.dt.value_or(step.scene.world.dt);
     if (step.exportTime / dt > kMaxExportSteps) {
         return m_in.fail(exportPlace,
-                         QStringLiteral("%1 s at a step of %2 s is more than %3 steps")
+                         FileMessages::tr("%1 s at a step of %2 s is more than %3 steps")
                              .arg(detail::formatNumber(step.exportTime), detail::formatNumber(dt),
                                   QString::number(static_cast<qint64>(kMaxExportSteps))));
     }
     const int panelSat = static_cast<int>(step.panels.indexOf(u"sat"));
     if (panelSat >= 0 && !step.sat) {
         return m_in.fail(indexPlace(joinPlace(place, u"panels"), panelSat),
-                         QStringLiteral("the \"sat\" panel needs the pair it looks at: add "
-                                        "\"sat\": {\"a\": ID, \"b\": ID} to the step"));
+                         FileMessages::tr("the \"sat\" panel needs the pair it looks at: add "
+                                          "\"sat\": {\"a\": ID, \"b\": ID} to the step"));
     }
     return true;
 }
@@ -303,14 +305,14 @@ bool LessonReader::readText(const QJsonObject& object, const QString& place, QSt
         return true;
     }
     if (!it.value().isArray()) {
-        return m_in.fail(at, QStringLiteral("must be a string or an array of strings, got ") +
+        return m_in.fail(at, FileMessages::tr("must be a string or an array of strings, got ") +
                                  detail::describeJson(it.value()));
     }
     const QJsonArray lines = it.value().toArray();
     QStringList parts;
     for (qsizetype i = 0; i < lines.size(); ++i) {
         if (!lines[i].isString()) {
-            return m_in.fail(indexPlace(at, i), QStringLiteral("must be a string \"...\", got ") +
+            return m_in.fail(indexPlace(at, i), FileMessages::tr("must be a string \"...\", got ") +
                                                     detail::describeJson(lines[i]));
         }
         parts.append(lines[i].toString());
@@ -324,15 +326,15 @@ bool LessonReader::readScene(const QJsonObject& object, const QString& place, Le
     const QString at = joinPlace(place, u"scene");
     const auto it = object.constFind(u"scene");
     if (it == object.constEnd()) {
-        return m_in.fail(at, QStringLiteral("required, but missing (a scene object, or the path "
-                                            "of a scene file)"));
+        return m_in.fail(at, FileMessages::tr("required, but missing (a scene object, or the path "
+                                              "of a scene file)"));
     }
     if (it.value().isString()) {
         return readSceneFile(it.value().toString(), at, step);
     }
     if (!it.value().isObject()) {
-        return m_in.fail(at, QStringLiteral("must be a scene object {...} or the path of a scene "
-                                            "file, got ") +
+        return m_in.fail(at, FileMessages::tr("must be a scene object {...} or the path of a scene "
+                                              "file, got ") +
                                  detail::describeJson(it.value()));
     }
     const SceneLoadResult loaded = loadSceneObject(it.value().toObject(), m_in.sourceName());
@@ -353,26 +355,26 @@ bool LessonReader::readSceneFile(const QString& relative, const QString& place, 
     // The path is relative to the lesson and stays inside its folder: a lesson someone sends
     // must not make the lab read files elsewhere on the machine.
     if (relative.isEmpty()) {
-        return m_in.fail(place, QStringLiteral("must name a scene file, got an empty path"));
+        return m_in.fail(place, FileMessages::tr("must name a scene file, got an empty path"));
     }
     if (relative.contains(u'\\')) {
         return m_in.fail(place,
-                         QStringLiteral("use '/' between folders, got \"%1\"").arg(relative));
+                         FileMessages::tr("use '/' between folders, got \"%1\"").arg(relative));
     }
     if (QDir::isAbsolutePath(relative) || relative.startsWith(u'/') ||
         (relative.size() >= 2 && relative[1] == u':')) {
-        return m_in.fail(place, QStringLiteral("must be a path relative to the lesson's folder, "
-                                               "got \"%1\"")
+        return m_in.fail(place, FileMessages::tr("must be a path relative to the lesson's folder, "
+                                                 "got \"%1\"")
                                     .arg(relative));
     }
     if (relative.split(u'/').contains(QStringLiteral(".."))) {
-        return m_in.fail(place, QStringLiteral("must not leave the lesson's folder (no \"..\"), "
-                                               "got \"%1\"")
+        return m_in.fail(place, FileMessages::tr("must not leave the lesson's folder (no \"..\"), "
+                                                 "got \"%1\"")
                                     .arg(relative));
     }
     for (const QChar c : relative) {
         if (c.unicode() < 0x20 || c.unicode() == 0x7f) {
-            return m_in.fail(place, QStringLiteral("must not hold control characters"));
+            return m_in.fail(place, FileMessages::tr("must not hold control characters"));
         }
     }
     const QString path = QDir::cleanPath(QDir(m_folder).filePath(relative));
@@ -386,12 +388,12 @@ bool LessonReader::readSceneFile(const QString& relative, const QString& place, 
         const QString inside =
             canonicalFolder.endsWith(u'/') ? canonicalFolder : canonicalFolder + u'/';
         if (canonicalFolder.isEmpty() || !canonical.startsWith(inside)) {
-            return m_in.fail(place, QStringLiteral("\"%1\" leads out of the lesson's folder "
-                                                   "(through a symbolic link)")
+            return m_in.fail(place, FileMessages::tr("\"%1\" leads out of the lesson's folder "
+                                                     "(through a symbolic link)")
                                         .arg(relative));
         }
         if (!QFileInfo(canonical).isFile()) {
-            return m_in.fail(place, QStringLiteral("\"%1\" is not a plain file").arg(relative));
+            return m_in.fail(place, FileMessages::tr("\"%1\" is not a plain file").arg(relative));
         }
         readPath = canonical;
     }
@@ -440,7 +442,7 @@ bool LessonReader::readSettings(const QJsonObject& object, const QString& place,
                 names.append(fromView(physics::integratorName(k)));
             }
             return m_in.fail(joinPlace(at, u"integrator"),
-                             QStringLiteral("unknown integrator \"%1\" (expected %2)")
+                             FileMessages::tr("unknown integrator \"%1\" (expected %2)")
                                  .arg(name, names.join(u", ")));
         }
     }
@@ -451,7 +453,7 @@ bool LessonReader::readSettings(const QJsonObject& object, const QString& place,
         }
         if (dt < kMinDt || dt > kMaxDt) {
             return m_in.fail(joinPlace(at, u"dt"),
-                             QStringLiteral("must be from %1 to %2 s, got %3")
+                             FileMessages::tr("must be from %1 to %2 s, got %3")
                                  .arg(detail::formatNumber(kMinDt), detail::formatNumber(kMaxDt),
                                       detail::formatNumber(dt)));
         }
@@ -467,9 +469,9 @@ bool LessonReader::readSettings(const QJsonObject& object, const QString& place,
             for (auto k : kSolvers) {
                 names.append(fromView(physics::solverName(k)));
             }
-            return m_in.fail(
-                joinPlace(at, u"solver"),
-                QStringLiteral("unknown solver \"%1\" (expected %2)").arg(name, names.join(u", ")));
+            return m_in.fail(joinPlace(at, u"solver"),
+                             FileMessages::tr("unknown solver \"%1\" (expected %2)")
+                                 .arg(name, names.join(u", ")));
         }
     }
     if (s.contains(u"iterations")) {
@@ -506,7 +508,7 @@ bool LessonReader::readSettings(const QJsonObject& object, const QString& place,
         }
         if (value < kMinTimeScale || value > kMaxTimeScale) {
             return m_in.fail(joinPlace(at, u"timeScale"),
-                             QStringLiteral("must be from %1 to %2, got %3")
+                             FileMessages::tr("must be from %1 to %2, got %3")
                                  .arg(detail::formatNumber(kMinTimeScale),
                                       detail::formatNumber(kMaxTimeScale),
                                       detail::formatNumber(value)));
@@ -530,18 +532,18 @@ bool LessonReader::readCompare(const QJsonObject& object, const QString& place, 
     const bool byIntegrator = c.contains(u"integrators");
     if (byIntegrator && c.contains(u"solvers")) {
         return m_in.fail(joinPlace(at, u"solvers"),
-                         QStringLiteral("compare \"integrators\" or \"solvers\", not both"));
+                         FileMessages::tr("compare \"integrators\" or \"solvers\", not both"));
     }
     if (!byIntegrator && !c.contains(u"solvers")) {
-        return m_in.fail(at, QStringLiteral("needs \"integrators\" or \"solvers\": the worlds to "
-                                            "run side by side"));
+        return m_in.fail(at, FileMessages::tr("needs \"integrators\" or \"solvers\": the worlds to "
+                                              "run side by side"));
     }
     const QStringView key = byIntegrator ? QStringView(u"integrators") : QStringView(u"solvers");
     const QString listAt = joinPlace(at, key);
     if (byIntegrator ? step.settings.integrator.has_value() : step.settings.solver.has_value()) {
         return m_in.fail(listAt,
-                         QStringLiteral("settings.%1 is given too: the main world runs the first "
-                                        "of this list, so leave settings.%1 out")
+                         FileMessages::tr("settings.%1 is given too: the main world runs the first "
+                                          "of this list, so leave settings.%1 out")
                              .arg(byIntegrator ? u"integrator" : u"solver"));
     }
     QJsonArray list;
@@ -551,19 +553,19 @@ bool LessonReader::readCompare(const QJsonObject& object, const QString& place, 
     if (list.size() < 2 || list.size() > kMaxVariants) {
         return m_in.fail(
             listAt,
-            QStringLiteral("compares 2 to %1 worlds, got %2").arg(kMaxVariants).arg(list.size()));
+            FileMessages::tr("compares 2 to %1 worlds, got %2").arg(kMaxVariants).arg(list.size()));
     }
     Comparison comparison;
     QStringList seen;
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString itemAt = indexPlace(listAt, i);
         if (!list[i].isString()) {
-            return m_in.fail(itemAt, QStringLiteral("must be a name \"...\", got ") +
+            return m_in.fail(itemAt, FileMessages::tr("must be a name \"...\", got ") +
                                          detail::describeJson(list[i]));
         }
         const QString name = list[i].toString();
         if (seen.contains(name)) {
-            return m_in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
+            return m_in.fail(itemAt, FileMessages::tr("\"%1\" is listed twice").arg(name));
         }
         seen.append(name);
         if (byIntegrator) {
@@ -573,7 +575,7 @@ bool LessonReader::readCompare(const QJsonObject& object, const QString& place, 
                 for (auto k : kIntegrators) {
                     names.append(fromView(physics::integratorName(k)));
                 }
-                return m_in.fail(itemAt, QStringLiteral("unknown integrator \"%1\" (expected %2)")
+                return m_in.fail(itemAt, FileMessages::tr("unknown integrator \"%1\" (expected %2)")
                                              .arg(name, names.join(u", ")));
             }
             comparison.integrators.push_back(*kind);
@@ -584,7 +586,7 @@ bool LessonReader::readCompare(const QJsonObject& object, const QString& place, 
                 for (auto k : kSolvers) {
                     names.append(fromView(physics::solverName(k)));
                 }
-                return m_in.fail(itemAt, QStringLiteral("unknown solver \"%1\" (expected %2)")
+                return m_in.fail(itemAt, FileMessages::tr("unknown solver \"%1\" (expected %2)")
                                              .arg(name, names.join(u", ")));
             }
             comparison.solvers.push_back(*kind);
@@ -612,7 +614,7 @@ bool LessonReader::readNames(const QJsonObject& object, QStringView key, const Q
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString itemAt = indexPlace(at, i);
         if (!list[i].isString()) {
-            return m_in.fail(itemAt, QStringLiteral("must be a name \"...\", got ") +
+            return m_in.fail(itemAt, FileMessages::tr("must be a name \"...\", got ") +
                                          detail::describeJson(list[i]));
         }
         const QString name = list[i].toString();
@@ -621,11 +623,11 @@ bool LessonReader::readNames(const QJsonObject& object, QStringView key, const Q
             isKnown = isKnown || name == k;
         }
         if (!isKnown) {
-            return m_in.fail(itemAt, QStringLiteral("unknown %1 \"%2\" (expected %3)")
+            return m_in.fail(itemAt, FileMessages::tr("unknown %1 \"%2\" (expected %3)")
                                          .arg(what.toString(), name, joinNames(known)));
         }
         if (out.contains(name)) {
-            return m_in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
+            return m_in.fail(itemAt, FileMessages::tr("\"%1\" is listed twice").arg(name));
         }
         out.append(name);
     }
@@ -650,7 +652,7 @@ LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path)
     if (!parsed.document.isObject()) {
         LessonLoadResult result;
         result.error =
-            path + QStringLiteral(": the top level must be an object {...}, got an array");
+            path + FileMessages::tr(": the top level must be an object {...}, got an array");
         return result;
     }
     return loadLessonObject(parsed.document.object(), path);

@@ -276,6 +276,27 @@ private slots:
                 w.controller().stepForward();
             w.controlsHelpText();
             w.statusText();
+            // What the loaders say about broken files reaches the window too.
+            QTemporaryDir broken;
+            QVERIFY(broken.isValid());
+            const QList<QByteArray> files{
+                "{\"rigidlab\": 1, \"bodies\": [{\"id\": \"a\", \"shape\": 3}]}",
+                "{\"rigidlab\": 1, \"world\": {\"dt\": -1}, \"bodies\": []}",
+                "{\"rigidlab\": 1, \"bodies\": [], \"extra\": true}",
+                "{\"rigidlab\": 1, \"bodies\": [",
+                "{\"rigidlab-lesson\": 1, \"title\": \"\", \"steps\": []}",
+            };
+            for (int i = 0; i < files.size(); ++i) {
+                const QString path = broken.filePath(QStringLiteral("broken%1.json").arg(i));
+                QFile f(path);
+                QVERIFY(f.open(QIODevice::WriteOnly));
+                f.write(files[i]);
+                f.close();
+                const QString error = files[i].contains("rigidlab-lesson")
+                                          ? w.openLesson(path, true)
+                                          : w.openScene(path, true);
+                QVERIFY2(!error.isEmpty(), files[i].constData());
+            }
             for (const QString& path : test::shippedLessons()) {
                 QCOMPARE(w.openLesson(path, true), QString());
                 const int steps = static_cast<int>(w.lessonPlayer().lesson()->steps.size());
