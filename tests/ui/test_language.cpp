@@ -15,6 +15,7 @@
 #include "test_main.h"
 
 #include <QAction>
+#include <QApplication>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFile>
@@ -429,6 +430,40 @@ private slots:
         QCOMPARE(chosen.size(), 1);
         QCOMPARE(chosen[0][0].toString(), QStringLiteral("cs"));
         QCOMPARE(ui::savedLanguage(), QStringLiteral("cs"));
+        QSettings().remove(QStringLiteral("language"));
+    }
+
+    // The menu, as rigidlab wires it (followLanguageChoice): a new window replaces the old
+    // one, and the one after it follows the menu too.
+    void menuReplacesTheWindow()
+    {
+        auto* w = new MainWindow;
+        w->setAttribute(Qt::WA_DeleteOnClose);
+        QCOMPARE(w->openScene(shippedScene("ball_drop.json"), true), QString());
+        w->show();
+        ui::followLanguageChoice(w);
+        QPointer<MainWindow> old = w;
+        const auto windows = [] {
+            QList<MainWindow*> out;
+            for (QWidget* t : QApplication::topLevelWidgets())
+                if (auto* m = qobject_cast<MainWindow*>(t))
+                    out << m;
+            return out;
+        };
+        w->findChild<QAction*>(QStringLiteral("language-cs"))->trigger();
+        QTRY_VERIFY(old.isNull());
+        QCOMPARE(ui::currentLanguage(), QStringLiteral("cs"));
+        QCOMPARE(windows().size(), 1);
+        MainWindow* czech = windows().front();
+        QVERIFY(czech->isVisible());
+        QCOMPARE(czech->controller().scenePath(), shippedScene("ball_drop.json"));
+        old = czech;
+        czech->findChild<QAction*>(QStringLiteral("language-en"))->trigger();
+        QTRY_VERIFY(old.isNull());
+        QCOMPARE(ui::currentLanguage(), QStringLiteral("en"));
+        QCOMPARE(windows().size(), 1);
+        QCOMPARE(ui::savedLanguage(), QStringLiteral("en"));
+        delete windows().front();
         QSettings().remove(QStringLiteral("language"));
     }
 

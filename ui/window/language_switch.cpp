@@ -10,6 +10,7 @@
 #include <QActionGroup>
 #include <QApplication>
 #include <QMenu>
+#include <QPointer>
 
 namespace rigidlab::ui {
 
@@ -110,9 +111,14 @@ MainWindow* switchLanguage(MainWindow* old, const QString& code)
 void followLanguageChoice(MainWindow* window)
 {
     QObject::connect(window, &MainWindow::languageChosen, window, [window](const QString& code) {
-        // After the menu's own handling has returned: the old window and its menu go.
+        // After the menu's own handling has returned: the old window and its menu go. A window
+        // closed meanwhile is switched no more.
         QMetaObject::invokeMethod(
-            qApp, [window, code] { followLanguageChoice(switchLanguage(window, code)); },
+            qApp,
+            [old = QPointer<MainWindow>(window), code] {
+                if (old)
+                    followLanguageChoice(switchLanguage(old, code));
+            },
             Qt::QueuedConnection);
     });
 }
