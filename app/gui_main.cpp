@@ -5,8 +5,10 @@
 // `rigidlab --screenshots DIR` writes a PNG of the window on every shipped view
 // (ui/screenshots.h). `rigidlab --help` lists the rest.
 
+#include "common/language.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
+#include "window/language_switch.h"
 #include "window/main_window.h"
 #include "window/screenshots.h"
 
@@ -20,6 +22,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLocale>
+#include <QPointer>
 #include <QSize>
 #include <QTextStream>
 
@@ -150,7 +153,8 @@ int parseArguments(const QStringList& args, Options& options, QString& message)
                                                      "and thick lines for a projector (F11)."));
     const QCommandLineOption lang(
         QStringLiteral("lang"),
-        CommandLine::tr("Language of the interface: cs or en (accepted; not in effect yet)."),
+        CommandLine::tr("Language of the interface: cs or en (View › Language saves a "
+                        "choice; without either, the system's language)."),
         QStringLiteral("cs|en"));
     for (const QCommandLineOption* o :
          {&help, &version, &step, &measure, &screenshots, &size, &scale, &present, &lang})
@@ -296,12 +300,14 @@ int main(int argc, char** argv)
     // Read when the application starts; every widget is scaled by it.
     if (options.scale)
         qputenv("QT_SCALE_FACTOR", QByteArray::number(*options.scale));
-    // TODO(issue 14): load the translation for options.lang (accepted, not used yet).
 
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RigidLab"));
     QApplication::setApplicationName(QStringLiteral("RigidLab"));
     QApplication::setApplicationVersion(QStringLiteral(RIGIDLAB_VERSION));
+    // --lang, else View › Language's saved choice, else the system's language.
+    rigidlab::ui::applyLanguage(rigidlab::ui::chooseLanguage(
+        options.lang, rigidlab::ui::savedLanguage(), QLocale::system()));
 
     if (!options.screenshots.isEmpty()) {
         rigidlab::ui::ScreenshotOptions shots;
@@ -322,14 +328,17 @@ int main(int argc, char** argv)
             QTextStream(stderr) << "rigidlab: " << r.error << '\n';
             return 1;
         }
-        QTextStream(stdout) << CommandLine::tr("%1 files written into %2")
-                                   .arg(r.files.size())
+        QTextStream(stdout) << CommandLine::tr("%n file(s) written into %1", nullptr,
+                                               static_cast<int>(r.files.size()))
                                    .arg(QDir::toNativeSeparators(options.screenshots))
                             << '\n';
         return 0;
     }
 
-    rigidlab::ui::MainWindow window;
+    // On the heap: View › Language replaces it with a new window (language_switch.h).
+    auto* windowPointer = new rigidlab::ui::MainWindow;
+    windowPointer->setAttribute(Qt::WA_DeleteOnClose);
+    rigidlab::ui::MainWindow& window = *windowPointer;
     // The window sizes itself for the screen it is on (MainWindow::fitToScreen); --size
     // overrides that.
     if (options.size)
@@ -358,6 +367,7 @@ int main(int argc, char** argv)
     window.show();
     if (options.present)
         window.setPresentation(true);
+    rigidlab::ui::followLanguageChoice(windowPointer);
     // A lesson waits for the student to press Run; a measurement runs it at once.
     if (window.lastError().isEmpty() && (!window.lessonPlayer().lesson() || measureFrames > 0))
         window.controller().setRunning(true);
@@ -379,5 +389,13 @@ int main(int argc, char** argv)
             });
         controller.measureFrames(measureFrames + kWarmUpFrames);
     }
-    return QApplication::exec();
+    const int status = QApplication::exec();
+    // The windows are on the heap (the last one may still be open after QApplication::exit).
+    QList<QPointer<rigidlab::ui::MainWindow>> windows;
+    for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* main = qobject_cast<rigidlab::ui::MainWindow*>(w))
+            windows << main;
+    for (const QPointer<rigidlab::ui::MainWindow>& w : windows)
+        delete w.data();
+    return status;
 }

@@ -43,9 +43,9 @@ QString describeJson(const QJsonValue& value)
         return u'"' + s + u'"';
     }
     case QJsonValue::Array:
-        return QStringLiteral("an array");
+        return FileMessages::tr("an array");
     case QJsonValue::Object:
-        return QStringLiteral("an object");
+        return FileMessages::tr("an object");
     case QJsonValue::Undefined:
         break;
     }
@@ -57,23 +57,23 @@ FileBytes readFileBytes(const QString& path, qint64 limit)
     FileBytes result;
     const QFileInfo info(path);
     if (info.isDir()) {
-        result.error = path + QStringLiteral(": cannot read: is a directory, not a file");
+        result.error = path + FileMessages::tr(": cannot read: is a directory, not a file");
         return result;
     }
     QFile file(path);
     if (!file.open(QIODevice::ReadOnly)) {
-        result.error = path + QStringLiteral(": cannot read: ") + file.errorString();
+        result.error = path + FileMessages::tr(": cannot read: ") + file.errorString();
         return result;
     }
     // Read one byte past the limit rather than trusting size(): pipes and /proc files have none.
     result.bytes = file.read(limit + 1);
     if (file.error() != QFileDevice::NoError) {
-        result.error = path + QStringLiteral(": cannot read: ") + file.errorString();
+        result.error = path + FileMessages::tr(": cannot read: ") + file.errorString();
         return result;
     }
     if (result.bytes.size() > limit) {
         result.error =
-            path + QStringLiteral(": too large: more than %1 bytes (the limit is %2 MiB)")
+            path + FileMessages::tr(": too large: more than %1 bytes (the limit is %2 MiB)")
                        .arg(limit)
                        .arg(limit / (1024 * 1024));
         result.bytes.clear();
@@ -111,36 +111,36 @@ QString describeParseError(QJsonParseError::ParseError error)
     case QJsonParseError::NoError:
         break;
     case QJsonParseError::UnterminatedObject:
-        return QStringLiteral("unterminated object: a ',' or the closing '}' is missing");
+        return FileMessages::tr("unterminated object: a ',' or the closing '}' is missing");
     case QJsonParseError::MissingNameSeparator:
-        return QStringLiteral("a ':' is missing after a key");
+        return FileMessages::tr("a ':' is missing after a key");
     case QJsonParseError::UnterminatedArray:
-        return QStringLiteral("unterminated array: a ',' or the closing ']' is missing");
+        return FileMessages::tr("unterminated array: a ',' or the closing ']' is missing");
     case QJsonParseError::MissingValueSeparator:
-        return QStringLiteral("a ',' is missing between two values");
+        return FileMessages::tr("a ',' is missing between two values");
     case QJsonParseError::IllegalValue:
-        return QStringLiteral("not a JSON value (text needs double quotes; true, false and "
-                              "null are lower case)");
+        return FileMessages::tr("not a JSON value (text needs double quotes; true, false and "
+                                "null are lower case)");
     case QJsonParseError::TerminationByNumber:
-        return QStringLiteral("the file ends inside a number");
+        return FileMessages::tr("the file ends inside a number");
     case QJsonParseError::IllegalNumber:
-        return QStringLiteral("not a valid number");
+        return FileMessages::tr("not a valid number");
     case QJsonParseError::IllegalEscapeSequence:
-        return QStringLiteral("an invalid escape sequence in a string");
+        return FileMessages::tr("an invalid escape sequence in a string");
     case QJsonParseError::IllegalUTF8String:
-        return QStringLiteral("the text is not valid UTF-8");
+        return FileMessages::tr("the text is not valid UTF-8");
     case QJsonParseError::UnterminatedString:
-        return QStringLiteral("unterminated string: the closing '\"' is missing");
+        return FileMessages::tr("unterminated string: the closing '\"' is missing");
     case QJsonParseError::MissingObject:
-        return QStringLiteral("a value is missing here (JSON allows no trailing comma)");
+        return FileMessages::tr("a value is missing here (JSON allows no trailing comma)");
     case QJsonParseError::DeepNesting:
-        return QStringLiteral("nested too deeply");
+        return FileMessages::tr("nested too deeply");
     case QJsonParseError::DocumentTooLarge:
-        return QStringLiteral("too large for the JSON reader");
+        return FileMessages::tr("too large for the JSON reader");
     case QJsonParseError::GarbageAtEnd:
-        return QStringLiteral("more text after the end of the JSON document");
+        return FileMessages::tr("more text after the end of the JSON document");
     }
-    return QStringLiteral("not valid JSON");
+    return FileMessages::tr("not valid JSON");
 }
 
 bool isNumberChar(char c)
@@ -181,7 +181,7 @@ qsizetype tooDeep(const QByteArray& bytes, int limit)
 QString describeRange(const limits::Range& range)
 {
     QString text =
-        QStringLiteral("from %1 to %2").arg(formatNumber(range.min), formatNumber(range.max));
+        FileMessages::tr("from %1 to %2").arg(formatNumber(range.min), formatNumber(range.max));
     if (!range.unit.empty())
         text += u' ' + textFromView(range.unit);
     return text;
@@ -191,19 +191,19 @@ ParsedJson parseJson(const QByteArray& bytes, const QString& sourceName, qint64 
 {
     ParsedJson result;
     if (bytes.size() > limit) {
-        result.error = sourceName + QStringLiteral(": too large: %1 bytes (the limit is %2 MiB)")
+        result.error = sourceName + FileMessages::tr(": too large: %1 bytes (the limit is %2 MiB)")
                                         .arg(bytes.size())
                                         .arg(limit / (1024 * 1024));
         return result;
     }
     if (bytes.trimmed().isEmpty()) {
-        result.error = sourceName + QStringLiteral(": line 1, column 1: the file is empty");
+        result.error = sourceName + FileMessages::tr(": line 1, column 1: the file is empty");
         return result;
     }
     if (const qsizetype deep = tooDeep(bytes, limits::kMaxJsonDepth); deep >= 0) {
         const auto [line, column] = lineAndColumn(bytes, deep);
-        result.error = QStringLiteral("%1: line %2, column %3: arrays and objects nested deeper "
-                                      "than %4 levels (the limit)")
+        result.error = FileMessages::tr("%1: line %2, column %3: arrays and objects nested deeper "
+                                        "than %4 levels (the limit)")
                            .arg(sourceName, QString::number(line), QString::number(column),
                                 QString::number(limits::kMaxJsonDepth));
         return result;
@@ -224,7 +224,7 @@ ParsedJson parseJson(const QByteArray& bytes, const QString& sourceName, qint64 
             --start;
         }
         if (start < offset) {
-            what = QStringLiteral("number %1 is not a finite double (out of range or malformed)")
+            what = FileMessages::tr("number %1 is not a finite double (out of range or malformed)")
                        .arg(QString::fromLatin1(bytes.mid(start, offset - start)));
             offset = start;
         } else { // a bare word: Qt took it for the start of a number
@@ -232,7 +232,7 @@ ParsedJson parseJson(const QByteArray& bytes, const QString& sourceName, qint64 
         }
     }
     const auto [line, column] = lineAndColumn(bytes, offset);
-    result.error = QStringLiteral("%1: line %2, column %3: %4")
+    result.error = FileMessages::tr("%1: line %2, column %3: %4")
                        .arg(sourceName, QString::number(line), QString::number(column), what);
     return result;
 }
@@ -300,7 +300,7 @@ bool JsonReader::checkKeys(const QJsonObject& object, const QString& place,
                 names.append(a.toString());
             }
             return fail(joinPlace(place, key),
-                        QStringLiteral("unknown key (allowed here: %1)").arg(names.join(u", ")));
+                        FileMessages::tr("unknown key (allowed here: %1)").arg(names.join(u", ")));
         }
     }
     return true;
@@ -312,7 +312,7 @@ bool JsonReader::asObject(const QJsonValue& value, const QString& place, QJsonOb
         return false;
     }
     if (!value.isObject()) {
-        return fail(place, QStringLiteral("must be an object {...}, got ") + describeJson(value));
+        return fail(place, FileMessages::tr("must be an object {...}, got ") + describeJson(value));
     }
     out = value.toObject();
     return true;
@@ -323,13 +323,13 @@ bool JsonReader::formatVersion(const QJsonObject& root, const QString& key, cons
 {
     const auto it = root.constFind(key);
     if (it == root.constEnd()) {
-        return fail(key, QStringLiteral("missing: %1 starts with \"%2\": %3 (the format version)")
+        return fail(key, FileMessages::tr("missing: %1 starts with \"%2\": %3 (the format version)")
                              .arg(document, key)
                              .arg(version));
     }
     if (!it.value().isDouble() || it.value().toDouble() != version) {
-        return fail(key, QStringLiteral("unsupported format version %1 (this RigidLab reads "
-                                        "version %2)")
+        return fail(key, FileMessages::tr("unsupported format version %1 (this RigidLab reads "
+                                          "version %2)")
                              .arg(describeJson(it.value()), QString::number(version)));
     }
     return true;
@@ -341,7 +341,7 @@ bool JsonReader::asArray(const QJsonValue& value, const QString& place, QJsonArr
         return false;
     }
     if (!value.isArray()) {
-        return fail(place, QStringLiteral("must be an array [...], got ") + describeJson(value));
+        return fail(place, FileMessages::tr("must be an array [...], got ") + describeJson(value));
     }
     out = value.toArray();
     return true;
@@ -356,18 +356,18 @@ bool JsonReader::numberValue(const QJsonValue& value, const QString& place, doub
     const auto expected = [rule]() -> QString {
         switch (rule) {
         case NumberRule::Finite:
-            return QStringLiteral("must be a number");
+            return FileMessages::tr("must be a number");
         case NumberRule::Positive:
-            return QStringLiteral("must be a positive number");
+            return FileMessages::tr("must be a positive number");
         case NumberRule::NonNegative:
-            return QStringLiteral("must be a number >= 0");
+            return FileMessages::tr("must be a number >= 0");
         case NumberRule::UnitInterval:
-            return QStringLiteral("must be a number from 0 to 1");
+            return FileMessages::tr("must be a number from 0 to 1");
         }
         return {};
     };
     if (!value.isDouble()) {
-        return fail(place, expected() + QStringLiteral(", got ") + describeJson(value));
+        return fail(place, expected() + FileMessages::tr(", got ") + describeJson(value));
     }
     const double v = value.toDouble();
     bool good = std::isfinite(v);
@@ -385,7 +385,7 @@ bool JsonReader::numberValue(const QJsonValue& value, const QString& place, doub
         break;
     }
     if (!good) {
-        return fail(place, expected() + QStringLiteral(", got ") + formatNumber(v));
+        return fail(place, expected() + FileMessages::tr(", got ") + formatNumber(v));
     }
     out = v;
     return true;
@@ -398,9 +398,10 @@ bool JsonReader::vec2Value(const QJsonValue& value, const QString& place, physic
     }
     if (!value.isArray() || value.toArray().size() != 2) {
         const QString got =
-            value.isArray() ? QStringLiteral("an array of %1 elements").arg(value.toArray().size())
-                            : describeJson(value);
-        return fail(place, QStringLiteral("must be a pair of numbers [x, y], got ") + got);
+            value.isArray()
+                ? FileMessages::tr("an array of %1 elements").arg(value.toArray().size())
+                : describeJson(value);
+        return fail(place, FileMessages::tr("must be a pair of numbers [x, y], got ") + got);
     }
     const QJsonArray pair = value.toArray();
     double x = 0;
@@ -435,7 +436,7 @@ bool JsonReader::number(const QJsonObject& object, QStringView key, const QStrin
     }
     const auto value = lookUp(object, key);
     if (!value) {
-        return !required || fail(joinPlace(place, key), QStringLiteral("required, but missing"));
+        return !required || fail(joinPlace(place, key), FileMessages::tr("required, but missing"));
     }
     return numberValue(*value, joinPlace(place, key), out, rule);
 }
@@ -449,16 +450,16 @@ bool JsonReader::integer(const QJsonObject& object, QStringView key, const QStri
     const auto value = lookUp(object, key);
     const QString at = joinPlace(place, key);
     if (!value) {
-        return !required || fail(at, QStringLiteral("required, but missing"));
+        return !required || fail(at, FileMessages::tr("required, but missing"));
     }
     const QString expected =
-        QStringLiteral("must be a whole number from %1 to %2").arg(min).arg(max);
+        FileMessages::tr("must be a whole number from %1 to %2").arg(min).arg(max);
     if (!value->isDouble()) {
-        return fail(at, expected + QStringLiteral(", got ") + describeJson(*value));
+        return fail(at, expected + FileMessages::tr(", got ") + describeJson(*value));
     }
     const double v = value->toDouble();
     if (!std::isfinite(v) || v != std::floor(v) || v < min || v > max) {
-        return fail(at, expected + QStringLiteral(", got ") + formatNumber(v));
+        return fail(at, expected + FileMessages::tr(", got ") + formatNumber(v));
     }
     out = static_cast<int>(v);
     return true;
@@ -473,10 +474,10 @@ bool JsonReader::string(const QJsonObject& object, QStringView key, const QStrin
     const auto value = lookUp(object, key);
     const QString at = joinPlace(place, key);
     if (!value) {
-        return !required || fail(at, QStringLiteral("required, but missing"));
+        return !required || fail(at, FileMessages::tr("required, but missing"));
     }
     if (!value->isString()) {
-        return fail(at, QStringLiteral("must be a string \"...\", got ") + describeJson(*value));
+        return fail(at, FileMessages::tr("must be a string \"...\", got ") + describeJson(*value));
     }
     out = value->toString();
     return true;
@@ -491,10 +492,10 @@ bool JsonReader::boolean(const QJsonObject& object, QStringView key, const QStri
     const auto value = lookUp(object, key);
     const QString at = joinPlace(place, key);
     if (!value) {
-        return !required || fail(at, QStringLiteral("required, but missing"));
+        return !required || fail(at, FileMessages::tr("required, but missing"));
     }
     if (!value->isBool()) {
-        return fail(at, QStringLiteral("must be true or false, got ") + describeJson(*value));
+        return fail(at, FileMessages::tr("must be true or false, got ") + describeJson(*value));
     }
     out = value->toBool();
     return true;
@@ -508,7 +509,7 @@ bool JsonReader::vec2(const QJsonObject& object, QStringView key, const QString&
     }
     const auto value = lookUp(object, key);
     if (!value) {
-        return !required || fail(joinPlace(place, key), QStringLiteral("required, but missing"));
+        return !required || fail(joinPlace(place, key), FileMessages::tr("required, but missing"));
     }
     return vec2Value(*value, joinPlace(place, key), out);
 }
@@ -521,7 +522,7 @@ bool JsonReader::checkRange(double value, const QString& place, const limits::Ra
     if (!range.contains(value)) {
         return fail(
             place,
-            QStringLiteral("must be %1, got %2").arg(describeRange(range), formatNumber(value)));
+            FileMessages::tr("must be %1, got %2").arg(describeRange(range), formatNumber(value)));
     }
     return true;
 }
@@ -554,7 +555,7 @@ bool JsonReader::vec2(const QJsonObject& object, QStringView key, const QString&
     }
     const auto value = lookUp(object, key);
     if (!value) {
-        return !required || fail(joinPlace(place, key), QStringLiteral("required, but missing"));
+        return !required || fail(joinPlace(place, key), FileMessages::tr("required, but missing"));
     }
     return vec2Value(*value, joinPlace(place, key), out, range);
 }

@@ -8,6 +8,7 @@
 #include "format/limits.h"
 #include "rigidlab/physics/math.h"
 
+#include <QCoreApplication>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -19,6 +20,13 @@
 #include <optional>
 
 namespace rigidlab::lessons::detail {
+
+/// The translation context of what the scene and lesson loaders say about a file. The window
+/// shows these messages in its language (issue 14); rigidlab-cli installs no translation, so
+/// its messages stay English.
+struct FileMessages {
+    Q_DECLARE_TR_FUNCTIONS(FileMessages)
+};
 
 /// `place.key`, or `key` at the top level.
 QString joinPlace(const QString& place, QStringView key);

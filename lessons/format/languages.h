@@ -5,7 +5,8 @@
 // Every text a student reads in a lesson may be a plain string (English) or an object
 // {"en": ..., "cs": ...} (lessons/LESSON_FORMAT.md, "Languages"); the loader picks the
 // language chosen here and falls back to English. The list below is the one place that names
-// the languages: a new one is one more row (and its texts in the lessons).
+// the languages, for the lessons and the window alike: a new one is one more row (and its
+// texts in the lessons, and translations/rigidlab_CODE.ts).
 
 #include <QString>
 #include <QStringView>
@@ -15,14 +16,15 @@
 namespace rigidlab::lessons {
 
 struct Language {
-    QStringView code; ///< ISO 639-1, the key in a lesson's text objects
-    QStringView name; ///< in the language itself, for a language menu
+    QStringView code;   ///< ISO 639-1, the key in a lesson's text objects
+    QStringView name;   ///< in the language itself, for a language menu
+    QStringView locale; ///< the locale numbers on screen follow in it ("cs_CZ": decimal comma)
 };
 
 /// The languages the lab ships, English (the fallback) first.
 inline constexpr std::array kLanguages = {
-    Language{u"en", u"English"},
-    Language{u"cs", u"Čeština"},
+    Language{u"en", u"English", u"en_US"},
+    Language{u"cs", u"Čeština", u"cs_CZ"},
 };
 
 /// The language every lesson text has, shown when the chosen one is missing.

@@ -14,6 +14,8 @@
 
 namespace rigidlab::lessons {
 
+using detail::FileMessages;
+
 using detail::indexPlace;
 using detail::JsonReader;
 
@@ -59,7 +61,7 @@ bool LessonReader::readTitle(const QJsonObject& root)
         return false;
     for (const detail::LessonTexts::Variant& v : m_texts.variants()) {
         if (v.text.trimmed().isEmpty())
-            return m_in.fail(v.place, QStringLiteral("must not be empty"));
+            return m_in.fail(v.place, FileMessages::tr("must not be empty"));
     }
     return true;
 }
@@ -72,17 +74,17 @@ bool LessonReader::readDescription(const QJsonObject& root)
         const QString& d = v.text;
         if (d.contains(QLatin1Char('\n')) || d.contains(QLatin1Char('\r')))
             return m_in.fail(v.place,
-                             QStringLiteral("must be one line (it is shown in the lesson menu); "
-                                            "put longer text in \"summary\""));
+                             FileMessages::tr("must be one line (it is shown in the lesson menu); "
+                                              "put longer text in \"summary\""));
         if (d.size() > kMaxDescription)
             return m_in.fail(v.place,
-                             QStringLiteral("is %1 characters long; at most %2 fit a menu line "
-                                            "(put longer text in \"summary\")")
+                             FileMessages::tr("is %1 characters long; at most %2 fit a menu line "
+                                              "(put longer text in \"summary\")")
                                  .arg(d.size())
                                  .arg(kMaxDescription));
         if (d.trimmed().isEmpty())
             return m_in.fail(v.place,
-                             QStringLiteral("must not be empty (leave the key out instead)"));
+                             FileMessages::tr("must not be empty (leave the key out instead)"));
     }
     return true;
 }
@@ -90,8 +92,8 @@ bool LessonReader::readDescription(const QJsonObject& root)
 LessonLoadResult LessonReader::read(const QJsonObject& root)
 {
     const bool ok =
-        m_in.formatVersion(root, QStringLiteral("rigidlab-lesson"), QStringLiteral("a lesson file"),
-                           kLessonFormatVersion) &&
+        m_in.formatVersion(root, QStringLiteral("rigidlab-lesson"),
+                           FileMessages::tr("a lesson file"), kLessonFormatVersion) &&
         m_in.checkKeys(root, {},
                        {u"rigidlab-lesson", u"title", u"summary", u"level", u"minutes", u"order",
                         u"description", u"goals", u"steps"}) &&
@@ -118,14 +120,14 @@ bool LessonReader::readSteps(const QJsonObject& root)
 {
     const QString place = QStringLiteral("steps");
     if (!root.contains(u"steps")) {
-        return m_in.fail(place, QStringLiteral("required, but missing"));
+        return m_in.fail(place, FileMessages::tr("required, but missing"));
     }
     QJsonArray steps;
     if (!m_in.asArray(root.value(u"steps"), place, steps)) {
         return false;
     }
     if (steps.isEmpty() || steps.size() > kMaxSteps) {
-        return m_in.fail(place, QStringLiteral("a lesson needs 1 to %1 steps, got %2")
+        return m_in.fail(place, FileMessages::tr("a lesson needs 1 to %1 steps, got %2")
                                     .arg(kMaxSteps)
                                     .arg(steps.size()));
     }
@@ -159,7 +161,7 @@ LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path,
     if (!parsed.document.isObject()) {
         LessonLoadResult result;
         result.error =
-            path + QStringLiteral(": the top level must be an object {...}, got an array");
+            path + FileMessages::tr(": the top level must be an object {...}, got an array");
         return result;
     }
     return loadLessonObject(parsed.document.object(), path, options);

@@ -45,7 +45,7 @@ bool readBodyId(JsonReader& in, const QJsonObject& object, QStringView key, cons
         return false;
     }
     if (!scene.bodyIndex(out)) {
-        return in.fail(joinPlace(place, key), QStringLiteral("no body with id \"%1\"").arg(out));
+        return in.fail(joinPlace(place, key), FileMessages::tr("no body with id \"%1\"").arg(out));
     }
     return true;
 }
@@ -72,8 +72,8 @@ bool readMeasure(JsonReader& in, const QJsonValue& value, const QString& place, 
         for (const MeasureName& m : kMeasureNames) {
             names.append(m.name.toString());
         }
-        return in.fail(joinPlace(place, u"kind"), QStringLiteral("unknown measure \"%1\" "
-                                                                 "(expected %2)")
+        return in.fail(joinPlace(place, u"kind"), FileMessages::tr("unknown measure \"%1\" "
+                                                                   "(expected %2)")
                                                       .arg(kindName, names.join(u", ")));
     }
     // Each kind then checks its own keys, so that a key that belongs to another kind is
@@ -95,9 +95,10 @@ bool readMeasure(JsonReader& in, const QJsonValue& value, const QString& place, 
             return false;
         }
         if (measure.time > kMaxMeasureTime) {
-            return in.fail(joinPlace(place, u"time"), QStringLiteral("must be at most %1 s, got %2")
-                                                          .arg(kMaxMeasureTime)
-                                                          .arg(formatNumber(measure.time)));
+            return in.fail(joinPlace(place, u"time"),
+                           FileMessages::tr("must be at most %1 s, got %2")
+                               .arg(kMaxMeasureTime)
+                               .arg(formatNumber(measure.time)));
         }
     }
     if (!measure.body.isEmpty()) {
@@ -106,12 +107,12 @@ bool readMeasure(JsonReader& in, const QJsonValue& value, const QString& place, 
         if (type == physics::BodyType::Static) {
             return in.fail(
                 joinPlace(place, u"body"),
-                QStringLiteral("body \"%1\" is static: it never moves").arg(measure.body));
+                FileMessages::tr("body \"%1\" is static: it never moves").arg(measure.body));
         }
         if (measure.kind == Measure::Kind::Apex && type != physics::BodyType::Dynamic) {
             return in.fail(
                 joinPlace(place, u"body"),
-                QStringLiteral("body \"%1\" is kinematic: it never bounces").arg(measure.body));
+                FileMessages::tr("body \"%1\" is kinematic: it never bounces").arg(measure.body));
         }
     }
     return true;
@@ -130,15 +131,15 @@ bool checkHoldBackName(JsonReader& in, const QString& name, const QString& place
     if (name.startsWith(u"panel:")) {
         const QString panel = name.mid(6);
         return step.panels.contains(panel) ||
-               in.fail(place, QStringLiteral("\"%1\": this step shows no panel \"%2\" (its "
-                                             "panels: %3)")
+               in.fail(place, FileMessages::tr("\"%1\": this step shows no panel \"%2\" (its "
+                                               "panels: %3)")
                                   .arg(name, panel, listed(step.panels)));
     }
     if (name.startsWith(u"plot:")) {
         const QString plot = name.mid(5);
         return step.plots.contains(plot) ||
-               in.fail(place, QStringLiteral("\"%1\": this step shows no plot \"%2\" (its "
-                                             "plots: %3)")
+               in.fail(place, FileMessages::tr("\"%1\": this step shows no plot \"%2\" (its "
+                                               "plots: %3)")
                                   .arg(name, plot, listed(step.plots)));
     }
     for (const auto& [column, panel] :
@@ -146,13 +147,13 @@ bool checkHoldBackName(JsonReader& in, const QString& name, const QString& place
           std::pair{QStringView(kHoldBackBounceHeights), QStringView(u"bounces")}}) {
         if (name == column) {
             return step.panels.contains(panel.toString()) ||
-                   in.fail(place, QStringLiteral("\"%1\" is a column of the %2 panel, which this "
-                                                 "step does not show")
+                   in.fail(place, FileMessages::tr("\"%1\" is a column of the %2 panel, which this "
+                                                   "step does not show")
                                       .arg(name, panel.toString()));
         }
     }
-    return in.fail(place, QStringLiteral("unknown name \"%1\" (expected run, panel:NAME, "
-                                         "plot:NAME, %2, %3)")
+    return in.fail(place, FileMessages::tr("unknown name \"%1\" (expected run, panel:NAME, "
+                                           "plot:NAME, %2, %3)")
                               .arg(name, QStringView(kHoldBackCollisionAfter).toString(),
                                    QStringView(kHoldBackBounceHeights).toString()));
 }
@@ -171,15 +172,15 @@ bool readHoldBack(JsonReader& in, const QJsonObject& object, const QString& plac
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString itemAt = indexPlace(at, i);
         if (!list[i].isString()) {
-            return in.fail(itemAt,
-                           QStringLiteral("must be a name \"...\", got ") + describeJson(list[i]));
+            return in.fail(itemAt, FileMessages::tr("must be a name \"...\", got ") +
+                                       describeJson(list[i]));
         }
         const QString name = list[i].toString();
         if (!checkHoldBackName(in, name, itemAt, step)) {
             return false;
         }
         if (out.contains(name)) {
-            return in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
+            return in.fail(itemAt, FileMessages::tr("\"%1\" is listed twice").arg(name));
         }
         out.append(name);
     }
@@ -212,13 +213,13 @@ bool readQuestion(JsonReader& in, LessonTexts& texts, const QJsonValue& value, c
                       {u"prompt", u"measure", u"unit", u"tolerance", u"absoluteTolerance", u"hint",
                        u"holdBack"}) ||
         !readNonEmptyText(in, texts, object, u"prompt", place, question.prompt, true,
-                          QStringLiteral("must not be empty"))) {
+                          FileMessages::tr("must not be empty"))) {
         return false;
     }
     if (!object.contains(u"measure")) {
         return in.fail(joinPlace(place, u"measure"),
-                       QStringLiteral("required, but missing (what the answer is checked "
-                                      "against)"));
+                       FileMessages::tr("required, but missing (what the answer is checked "
+                                        "against)"));
     }
     if (!readMeasure(in, object.value(u"measure"), joinPlace(place, u"measure"), scene,
                      question.measure) ||
@@ -230,11 +231,11 @@ bool readQuestion(JsonReader& in, LessonTexts& texts, const QJsonValue& value, c
     }
     if (question.tolerance == 0 && question.absoluteTolerance == 0) {
         return in.fail(joinPlace(place, u"tolerance"),
-                       QStringLiteral("0, and so is absoluteTolerance: no typed answer would "
-                                      "ever be right"));
+                       FileMessages::tr("0, and so is absoluteTolerance: no typed answer would "
+                                        "ever be right"));
     }
     if (!readNonEmptyText(in, texts, object, u"hint", place, question.hint, false,
-                          QStringLiteral("must not be empty (leave the key out for no hint)"))) {
+                          FileMessages::tr("must not be empty (leave the key out for no hint)"))) {
         return false;
     }
     return readHoldBack(in, object, place, step, question.holdBack);
@@ -258,15 +259,15 @@ bool readSat(JsonReader& in, const QJsonObject& object, const QString& place, co
     }
     if (a == b) {
         return in.fail(joinPlace(at, u"b"),
-                       QStringLiteral("the same body as \"a\": the test needs two bodies"));
+                       FileMessages::tr("the same body as \"a\": the test needs two bodies"));
     }
     for (const auto& [key, id] :
          {std::pair{QStringView(u"a"), a}, std::pair{QStringView(u"b"), b}}) {
         const physics::BodyDef& def = scene.bodies[static_cast<size_t>(*scene.bodyIndex(id))];
         if (!def.shape.asPolygon()) {
             return in.fail(joinPlace(at, key),
-                           QStringLiteral("body \"%1\" is a circle: the separating axis test "
-                                          "steps through polygons (boxes and polygons)")
+                           FileMessages::tr("body \"%1\" is a circle: the separating axis test "
+                                            "steps through polygons (boxes and polygons)")
                                .arg(id));
         }
     }
@@ -286,7 +287,7 @@ bool readQuestions(JsonReader& in, LessonTexts& texts, const QJsonObject& object
         return false;
     }
     if (list.size() > kMaxQuestions) {
-        return in.fail(at, QStringLiteral("%1 questions, more than the limit of %2")
+        return in.fail(at, FileMessages::tr("%1 questions, more than the limit of %2")
                                .arg(list.size())
                                .arg(kMaxQuestions));
     }

@@ -55,7 +55,7 @@ bool readSettings(JsonReader& in, const QJsonObject& object, const QString& plac
                 names.append(textFromView(physics::integratorName(k)));
             }
             return in.fail(joinPlace(at, u"integrator"),
-                           QStringLiteral("unknown integrator \"%1\" (expected %2)")
+                           FileMessages::tr("unknown integrator \"%1\" (expected %2)")
                                .arg(name, names.join(u", ")));
         }
     }
@@ -66,7 +66,7 @@ bool readSettings(JsonReader& in, const QJsonObject& object, const QString& plac
         }
         if (dt < kMinDt || dt > kMaxDt) {
             return in.fail(joinPlace(at, u"dt"),
-                           QStringLiteral("must be from %1 to %2 s, got %3")
+                           FileMessages::tr("must be from %1 to %2 s, got %3")
                                .arg(formatNumber(kMinDt), formatNumber(kMaxDt), formatNumber(dt)));
         }
         settings.dt = dt;
@@ -81,9 +81,9 @@ bool readSettings(JsonReader& in, const QJsonObject& object, const QString& plac
             for (auto k : kSolvers) {
                 names.append(textFromView(physics::solverName(k)));
             }
-            return in.fail(
-                joinPlace(at, u"solver"),
-                QStringLiteral("unknown solver \"%1\" (expected %2)").arg(name, names.join(u", ")));
+            return in.fail(joinPlace(at, u"solver"),
+                           FileMessages::tr("unknown solver \"%1\" (expected %2)")
+                               .arg(name, names.join(u", ")));
         }
     }
     if (s.contains(u"iterations")) {
@@ -120,7 +120,7 @@ bool readSettings(JsonReader& in, const QJsonObject& object, const QString& plac
         }
         if (value < kMinTimeScale || value > kMaxTimeScale) {
             return in.fail(joinPlace(at, u"timeScale"),
-                           QStringLiteral("must be from %1 to %2, got %3")
+                           FileMessages::tr("must be from %1 to %2, got %3")
                                .arg(formatNumber(kMinTimeScale), formatNumber(kMaxTimeScale),
                                     formatNumber(value)));
         }
@@ -143,18 +143,18 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
     const bool byIntegrator = c.contains(u"integrators");
     if (byIntegrator && c.contains(u"solvers")) {
         return in.fail(joinPlace(at, u"solvers"),
-                       QStringLiteral("compare \"integrators\" or \"solvers\", not both"));
+                       FileMessages::tr("compare \"integrators\" or \"solvers\", not both"));
     }
     if (!byIntegrator && !c.contains(u"solvers")) {
-        return in.fail(at, QStringLiteral("needs \"integrators\" or \"solvers\": the worlds to "
-                                          "run side by side"));
+        return in.fail(at, FileMessages::tr("needs \"integrators\" or \"solvers\": the worlds to "
+                                            "run side by side"));
     }
     const QStringView key = byIntegrator ? QStringView(u"integrators") : QStringView(u"solvers");
     const QString listAt = joinPlace(at, key);
     if (byIntegrator ? step.settings.integrator.has_value() : step.settings.solver.has_value()) {
         return in.fail(listAt,
-                       QStringLiteral("settings.%1 is given too: the main world runs the first "
-                                      "of this list, so leave settings.%1 out")
+                       FileMessages::tr("settings.%1 is given too: the main world runs the first "
+                                        "of this list, so leave settings.%1 out")
                            .arg(byIntegrator ? u"integrator" : u"solver"));
     }
     QJsonArray list;
@@ -164,19 +164,19 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
     if (list.size() < 2 || list.size() > kMaxVariants) {
         return in.fail(
             listAt,
-            QStringLiteral("compares 2 to %1 worlds, got %2").arg(kMaxVariants).arg(list.size()));
+            FileMessages::tr("compares 2 to %1 worlds, got %2").arg(kMaxVariants).arg(list.size()));
     }
     Comparison comparison;
     QStringList seen;
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString itemAt = indexPlace(listAt, i);
         if (!list[i].isString()) {
-            return in.fail(itemAt,
-                           QStringLiteral("must be a name \"...\", got ") + describeJson(list[i]));
+            return in.fail(itemAt, FileMessages::tr("must be a name \"...\", got ") +
+                                       describeJson(list[i]));
         }
         const QString name = list[i].toString();
         if (seen.contains(name)) {
-            return in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
+            return in.fail(itemAt, FileMessages::tr("\"%1\" is listed twice").arg(name));
         }
         seen.append(name);
         if (byIntegrator) {
@@ -186,7 +186,7 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
                 for (auto k : kIntegrators) {
                     names.append(textFromView(physics::integratorName(k)));
                 }
-                return in.fail(itemAt, QStringLiteral("unknown integrator \"%1\" (expected %2)")
+                return in.fail(itemAt, FileMessages::tr("unknown integrator \"%1\" (expected %2)")
                                            .arg(name, names.join(u", ")));
             }
             comparison.integrators.push_back(*kind);
@@ -197,7 +197,7 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
                 for (auto k : kSolvers) {
                     names.append(textFromView(physics::solverName(k)));
                 }
-                return in.fail(itemAt, QStringLiteral("unknown solver \"%1\" (expected %2)")
+                return in.fail(itemAt, FileMessages::tr("unknown solver \"%1\" (expected %2)")
                                            .arg(name, names.join(u", ")));
             }
             comparison.solvers.push_back(*kind);

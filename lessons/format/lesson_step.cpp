@@ -59,8 +59,8 @@ bool readNames(JsonReader& in, const QJsonObject& object, QStringView key, const
     for (qsizetype i = 0; i < list.size(); ++i) {
         const QString itemAt = indexPlace(at, i);
         if (!list[i].isString()) {
-            return in.fail(itemAt,
-                           QStringLiteral("must be a name \"...\", got ") + describeJson(list[i]));
+            return in.fail(itemAt, FileMessages::tr("must be a name \"...\", got ") +
+                                       describeJson(list[i]));
         }
         const QString name = list[i].toString();
         bool isKnown = false;
@@ -68,11 +68,11 @@ bool readNames(JsonReader& in, const QJsonObject& object, QStringView key, const
             isKnown = isKnown || name == QLatin1String(k.data(), static_cast<qsizetype>(k.size()));
         }
         if (!isKnown) {
-            return in.fail(itemAt, QStringLiteral("unknown %1 \"%2\" (expected %3)")
+            return in.fail(itemAt, FileMessages::tr("unknown %1 \"%2\" (expected %3)")
                                        .arg(what.toString(), name, joinNames(known)));
         }
         if (out.contains(name)) {
-            return in.fail(itemAt, QStringLiteral("\"%1\" is listed twice").arg(name));
+            return in.fail(itemAt, FileMessages::tr("\"%1\" is listed twice").arg(name));
         }
         out.append(name);
     }
@@ -113,15 +113,15 @@ bool readScene(JsonReader& in, const QJsonObject& object, const QString& place,
     const QString at = joinPlace(place, u"scene");
     const auto it = object.constFind(u"scene");
     if (it == object.constEnd()) {
-        return in.fail(at, QStringLiteral("required, but missing (a scene object, or the path "
-                                          "of a scene file)"));
+        return in.fail(at, FileMessages::tr("required, but missing (a scene object, or the path "
+                                            "of a scene file)"));
     }
     if (it.value().isString()) {
         return readSceneFile(in, it.value().toString(), at, context, step);
     }
     if (!it.value().isObject()) {
-        return in.fail(at, QStringLiteral("must be a scene object {...} or the path of a scene "
-                                          "file, got ") +
+        return in.fail(at, FileMessages::tr("must be a scene object {...} or the path of a scene "
+                                            "file, got ") +
                                describeJson(it.value()));
     }
     const SceneLoadResult loaded = loadSceneObject(it.value().toObject(), in.sourceName());
@@ -152,7 +152,7 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
     }
     for (const LessonTexts::Variant& v : context.texts->variants()) {
         if (v.text.trimmed().isEmpty()) {
-            return in.fail(v.place, QStringLiteral("must not be empty"));
+            return in.fail(v.place, FileMessages::tr("must not be empty"));
         }
     }
     if (!context.texts->paragraphs(object, u"text", place, step.text) ||
@@ -167,16 +167,16 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
     context.bodies += static_cast<qint64>(step.scene.bodies.size());
     if (context.bodies > limits::kMaxLessonBodies) {
         return in.fail(joinPlace(place, u"scene"),
-                       QStringLiteral("the steps up to this one hold %1 bodies in all, more "
-                                      "than the limit of %2 for a lesson")
+                       FileMessages::tr("the steps up to this one hold %1 bodies in all, more "
+                                        "than the limit of %2 for a lesson")
                            .arg(context.bodies)
                            .arg(limits::kMaxLessonBodies));
     }
     for (qsizetype i = 0; i < step.plots.size(); ++i) {
         if (step.plots[i].startsWith(u"compare-") && !step.compare) {
             return in.fail(indexPlace(joinPlace(place, u"plots"), i),
-                           QStringLiteral("\"%1\" plots the worlds of \"compare\", and this "
-                                          "step has none")
+                           FileMessages::tr("\"%1\" plots the worlds of \"compare\", and this "
+                                            "step has none")
                                .arg(step.plots[i]));
         }
     }
@@ -195,22 +195,22 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
     }
     const QString exportPlace = joinPlace(place, u"exportTime");
     if (step.exportTime > kMaxExportTime) {
-        return in.fail(exportPlace, QStringLiteral("must be at most %1 s, got %2")
+        return in.fail(exportPlace, FileMessages::tr("must be at most %1 s, got %2")
                                         .arg(kMaxExportTime)
                                         .arg(formatNumber(step.exportTime)));
     }
     const double dt = step.settings.dt.value_or(step.scene.world.dt);
     if (step.exportTime / dt > kMaxExportSteps) {
         return in.fail(exportPlace,
-                       QStringLiteral("%1 s at a step of %2 s is more than %3 steps")
+                       FileMessages::tr("%1 s at a step of %2 s is more than %3 steps")
                            .arg(formatNumber(step.exportTime), formatNumber(dt),
                                 QString::number(static_cast<qint64>(kMaxExportSteps))));
     }
     const int panelSat = static_cast<int>(step.panels.indexOf(u"sat"));
     if (panelSat >= 0 && !step.sat) {
         return in.fail(indexPlace(joinPlace(place, u"panels"), panelSat),
-                       QStringLiteral("the \"sat\" panel needs the pair it looks at: add "
-                                      "\"sat\": {\"a\": ID, \"b\": ID} to the step"));
+                       FileMessages::tr("the \"sat\" panel needs the pair it looks at: add "
+                                        "\"sat\": {\"a\": ID, \"b\": ID} to the step"));
     }
     return true;
 }

@@ -9,7 +9,7 @@ bool LessonTexts::oneLine(const QJsonValue& value, const QString& place, QString
 {
     if (!value.isString()) {
         return m_in.fail(place,
-                         QStringLiteral("must be a string \"...\", got ") + describeJson(value));
+                         FileMessages::tr("must be a string \"...\", got ") + describeJson(value));
     }
     out = value.toString();
     return true;
@@ -24,7 +24,7 @@ bool LessonTexts::oneParagraphs(const QJsonValue& value, const QString& place, Q
         return true;
     }
     if (!value.isArray()) {
-        return m_in.fail(place, QStringLiteral("must be a string or an array of strings, got ") +
+        return m_in.fail(place, FileMessages::tr("must be a string or an array of strings, got ") +
                                     describeJson(value));
     }
     const QJsonArray lines = value.toArray();
@@ -32,7 +32,7 @@ bool LessonTexts::oneParagraphs(const QJsonValue& value, const QString& place, Q
     for (qsizetype i = 0; i < lines.size(); ++i) {
         if (!lines[i].isString()) {
             return m_in.fail(indexPlace(place, i),
-                             QStringLiteral("must be a string \"...\", got ") +
+                             FileMessages::tr("must be a string \"...\", got ") +
                                  describeJson(lines[i]));
         }
         parts.append(lines[i].toString());
@@ -46,14 +46,14 @@ bool LessonTexts::checkLanguages(const QJsonObject& object, const QString& place
     for (auto it = object.constBegin(); it != object.constEnd(); ++it) {
         if (!isShippedLanguage(it.key())) {
             return m_in.fail(joinPlace(place, it.key()),
-                             QStringLiteral("unknown language \"%1\" (expected %2)")
+                             FileMessages::tr("unknown language \"%1\" (expected %2)")
                                  .arg(it.key(), shippedLanguageCodes()));
         }
     }
     if (!object.contains(kFallbackLanguage)) {
         return m_in.fail(place,
-                         QStringLiteral("needs the English text \"%1\", shown when a language "
-                                        "is missing")
+                         FileMessages::tr("needs the English text \"%1\", shown when a language "
+                                          "is missing")
                              .arg(kFallbackLanguage.toString()));
     }
     m_translated = true;
@@ -77,8 +77,8 @@ bool LessonTexts::readText(const QJsonValue& value, const QString& place, ReadOn
     }
     if (!value.isObject()) {
         if (!value.isString() && !value.isArray()) {
-            return m_in.fail(place, QStringLiteral("must be %1, or an object of languages "
-                                                   "{\"en\": ..., \"cs\": ...}, got ")
+            return m_in.fail(place, FileMessages::tr("must be %1, or an object of languages "
+                                                     "{\"en\": ..., \"cs\": ...}, got ")
                                             .arg(plainKinds.toString()) +
                                         describeJson(value));
         }
@@ -128,11 +128,11 @@ bool LessonTexts::line(const QJsonObject& object, QStringView key, const QString
     const QString at = joinPlace(place, key);
     const auto it = object.constFind(key);
     if (it == object.constEnd()) {
-        return !required || m_in.fail(at, QStringLiteral("required, but missing"));
+        return !required || m_in.fail(at, FileMessages::tr("required, but missing"));
     }
     if (it.value().isArray()) {
-        return m_in.fail(at, QStringLiteral("must be a string \"...\", or an object of languages "
-                                            "{\"en\": \"...\", \"cs\": \"...\"}, got ") +
+        return m_in.fail(at, FileMessages::tr("must be a string \"...\", or an object of languages "
+                                              "{\"en\": \"...\", \"cs\": \"...\"}, got ") +
                                  describeJson(it.value()));
     }
     return readText(it.value(), at, &LessonTexts::oneLine, u"a string \"...\"", out);
@@ -163,7 +163,7 @@ bool LessonTexts::list(const QJsonObject& object, QStringView key, const QString
     const auto readItems = [&](const QJsonArray& items, const QString& itemsAt,
                                bool itemsMayBeObjects, QStringList& texts) {
         if (items.size() > maxItems) {
-            return m_in.fail(itemsAt, QStringLiteral("%1 %2, more than the limit of %3")
+            return m_in.fail(itemsAt, FileMessages::tr("%1 %2, more than the limit of %3")
                                           .arg(items.size())
                                           .arg(noun.toString())
                                           .arg(maxItems));
@@ -176,12 +176,12 @@ bool LessonTexts::list(const QJsonObject& object, QStringView key, const QString
                     return false;
                 for (const Variant& v : m_variants) {
                     if (v.text.trimmed().isEmpty())
-                        return m_in.fail(v.place, QStringLiteral("must not be empty"));
+                        return m_in.fail(v.place, FileMessages::tr("must not be empty"));
                 }
             } else {
                 if (!items[i].isString() || items[i].toString().trimmed().isEmpty()) {
                     return m_in.fail(itemAt,
-                                     QStringLiteral("must be a non-empty string \"...\", got ") +
+                                     FileMessages::tr("must be a non-empty string \"...\", got ") +
                                          describeJson(items[i]));
                 }
                 text = items[i].toString();
@@ -196,8 +196,8 @@ bool LessonTexts::list(const QJsonObject& object, QStringView key, const QString
         return readItems(found.value().toArray(), at, true, out);
     }
     if (!found.value().isObject()) {
-        return m_in.fail(at, QStringLiteral("must be an array [...], or an object of languages "
-                                            "{\"en\": [...], \"cs\": [...]}, got ") +
+        return m_in.fail(at, FileMessages::tr("must be an array [...], or an object of languages "
+                                              "{\"en\": [...], \"cs\": [...]}, got ") +
                                  describeJson(found.value()));
     }
     const QJsonObject languages = found.value().toObject();
@@ -212,7 +212,7 @@ bool LessonTexts::list(const QJsonObject& object, QStringView key, const QString
         }
         const QString languageAt = joinPlace(at, l.code);
         if (!it.value().isArray()) {
-            return m_in.fail(languageAt, QStringLiteral("must be an array [...], got ") +
+            return m_in.fail(languageAt, FileMessages::tr("must be an array [...], got ") +
                                              describeJson(it.value()));
         }
         QStringList texts;
@@ -236,7 +236,7 @@ void LessonTexts::warnMissing()
         return;
     }
     for (const auto& [place, code] : m_missing) {
-        m_in.warn(place, QStringLiteral("no %1 text (\"%2\"); English is shown instead")
+        m_in.warn(place, FileMessages::tr("no %1 text (\"%2\"); English is shown instead")
                              .arg(languageName(code), code));
     }
 }

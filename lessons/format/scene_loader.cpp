@@ -22,6 +22,8 @@
 
 namespace rigidlab::lessons {
 
+using detail::FileMessages;
+
 using detail::indexPlace;
 using detail::joinPlace;
 using detail::JsonReader;
@@ -77,7 +79,7 @@ private:
 SceneLoadResult SceneReader::read(const QJsonObject& root)
 {
     const bool ok = m_in.formatVersion(root, QStringLiteral("rigidlab"),
-                                       QStringLiteral("a scene file"), kSceneFormatVersion) &&
+                                       FileMessages::tr("a scene file"), kSceneFormatVersion) &&
                     m_in.checkKeys(root, {},
                                    {u"rigidlab", u"title", u"description", u"world", u"bodies",
                                     u"springs", u"joints"}) &&
@@ -118,7 +120,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
     }
     if (def.dt < kMinDt || def.dt > kMaxDt) {
         return m_in.fail(joinPlace(place, u"dt"),
-                         QStringLiteral("must be from %1 to %2 s, got %3")
+                         FileMessages::tr("must be from %1 to %2 s, got %3")
                              .arg(detail::formatNumber(kMinDt), detail::formatNumber(kMaxDt),
                                   detail::formatNumber(def.dt)));
     }
@@ -135,7 +137,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
                 names.append(textFromView(physics::integratorName(k)));
             }
             return m_in.fail(joinPlace(place, u"integrator"),
-                             QStringLiteral("unknown integrator \"%1\" (expected %2)")
+                             FileMessages::tr("unknown integrator \"%1\" (expected %2)")
                                  .arg(name, names.join(u", ")));
         }
         def.integrator = *kind;
@@ -150,9 +152,9 @@ bool SceneReader::readWorld(const QJsonObject& root)
             for (auto k : kSolvers) {
                 names.append(textFromView(physics::solverName(k)));
             }
-            return m_in.fail(
-                joinPlace(place, u"solver"),
-                QStringLiteral("unknown solver \"%1\" (expected %2)").arg(name, names.join(u", ")));
+            return m_in.fail(joinPlace(place, u"solver"),
+                             FileMessages::tr("unknown solver \"%1\" (expected %2)")
+                                 .arg(name, names.join(u", ")));
         }
         def.solver = *kind;
     }
@@ -182,14 +184,14 @@ bool SceneReader::readBodies(const QJsonObject& root)
 {
     const QString place = QStringLiteral("bodies");
     if (!root.contains(u"bodies")) {
-        return m_in.fail(place, QStringLiteral("required, but missing (it may be empty: [])"));
+        return m_in.fail(place, FileMessages::tr("required, but missing (it may be empty: [])"));
     }
     QJsonArray bodies;
     if (!m_in.asArray(root.value(u"bodies"), place, bodies)) {
         return false;
     }
     if (bodies.size() > kMaxBodies) {
-        return m_in.fail(place, QStringLiteral("%1 bodies, more than the limit of %2")
+        return m_in.fail(place, FileMessages::tr("%1 bodies, more than the limit of %2")
                                     .arg(bodies.size())
                                     .arg(kMaxBodies));
     }
@@ -223,20 +225,21 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
     }
     const QString idPlace = joinPlace(place, u"id");
     if (id.isEmpty()) {
-        return m_in.fail(idPlace, QStringLiteral("must not be empty"));
+        return m_in.fail(idPlace, FileMessages::tr("must not be empty"));
     }
     if (id.size() > kMaxBodyIdLength) {
         return m_in.fail(idPlace,
-                         QStringLiteral("longer than %1 characters").arg(kMaxBodyIdLength));
+                         FileMessages::tr("longer than %1 characters").arg(kMaxBodyIdLength));
     }
     for (QChar c : id) {
         if (c.category() == QChar::Other_Control) {
-            return m_in.fail(idPlace, QStringLiteral("must not hold control characters"));
+            return m_in.fail(idPlace, FileMessages::tr("must not hold control characters"));
         }
     }
     if (const auto other = m_ids.constFind(id); other != m_ids.constEnd()) {
-        return m_in.fail(idPlace, QStringLiteral("duplicate id \"%1\" (bodies[%2] has it already)")
-                                      .arg(id, QString::number(other.value())));
+        return m_in.fail(idPlace,
+                         FileMessages::tr("duplicate id \"%1\" (bodies[%2] has it already)")
+                             .arg(id, QString::number(other.value())));
     }
     def.name = id.toStdString();
 
@@ -253,20 +256,20 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
             def.type = physics::BodyType::Kinematic;
         } else {
             return m_in.fail(joinPlace(place, u"type"),
-                             QStringLiteral("unknown body type \"%1\" (expected dynamic, static, "
-                                            "kinematic)")
+                             FileMessages::tr("unknown body type \"%1\" (expected dynamic, static, "
+                                              "kinematic)")
                                  .arg(type));
         }
     }
     if (!body.contains(u"shape")) {
-        return m_in.fail(joinPlace(place, u"shape"), QStringLiteral("required, but missing"));
+        return m_in.fail(joinPlace(place, u"shape"), FileMessages::tr("required, but missing"));
     }
     if (!readShape(body.value(u"shape"), joinPlace(place, u"shape"), def.shape, original)) {
         return false;
     }
     if (body.contains(u"density") && body.contains(u"mass")) {
         return m_in.fail(joinPlace(place, u"mass"),
-                         QStringLiteral("give \"density\" or \"mass\", not both"));
+                         FileMessages::tr("give \"density\" or \"mass\", not both"));
     }
     if (!m_in.vec2(body, u"position", place, def.position, limits::kCoordinate) ||
         !m_in.number(body, u"angle", place, def.angle, NumberRule::Finite, limits::kAngle) ||
@@ -288,22 +291,22 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
     const physics::MassProperties unit = physics::computeMass(def.shape, 1.0);
     if (!(std::isfinite(unit.area) && unit.area > 0 && std::isfinite(unit.inertia))) {
         return m_in.fail(joinPlace(place, u"shape"),
-                         QStringLiteral("too large or too small: its area works out as %1 m^2")
+                         FileMessages::tr("too large or too small: its area works out as %1 m^2")
                              .arg(detail::formatNumber(unit.area)));
     }
     const double mass = def.mass > 0 ? def.mass : def.density * unit.area;
     if (!(std::isfinite(mass) && limits::kMass.contains(mass))) {
         return m_in.fail(
             joinPlace(place, u"density"),
-            QStringLiteral("the mass works out as %1 kg (density times area); it "
-                           "must be %2")
+            FileMessages::tr("the mass works out as %1 kg (density times area); it "
+                             "must be %2")
                 .arg(detail::formatNumber(mass), detail::describeRange(limits::kMass)));
     }
 
     if (def.type == physics::BodyType::Static &&
         (def.velocity != Vec2::Zero() || def.angularVelocity != 0)) {
-        m_in.warn(place, QStringLiteral("a static body never moves: its velocity is ignored "
-                                        "(make it \"kinematic\" to move it)"));
+        m_in.warn(place, FileMessages::tr("a static body never moves: its velocity is ignored "
+                                          "(make it \"kinematic\" to move it)"));
     }
     return true;
 }
@@ -350,13 +353,13 @@ bool SceneReader::readShape(const QJsonValue& value, const QString& place, physi
             return false;
         }
         if (!object.contains(u"vertices")) {
-            return m_in.fail(at, QStringLiteral("required, but missing"));
+            return m_in.fail(at, FileMessages::tr("required, but missing"));
         }
         if (!m_in.asArray(object.value(u"vertices"), at, list)) {
             return false;
         }
         if (list.size() < 3 || list.size() > kMaxPolygonVertices) {
-            return m_in.fail(at, QStringLiteral("a polygon needs 3 to %1 vertices, got %2")
+            return m_in.fail(at, FileMessages::tr("a polygon needs 3 to %1 vertices, got %2")
                                      .arg(kMaxPolygonVertices)
                                      .arg(list.size()));
         }
@@ -380,7 +383,7 @@ bool SceneReader::readShape(const QJsonValue& value, const QString& place, physi
     }
     return m_in.fail(
         joinPlace(place, u"type"),
-        QStringLiteral("unknown shape type \"%1\" (expected circle, box, polygon)").arg(type));
+        FileMessages::tr("unknown shape type \"%1\" (expected circle, box, polygon)").arg(type));
 }
 
 bool SceneReader::readEnd(const QJsonObject& object, QStringView key, const QString& place,
@@ -391,21 +394,21 @@ bool SceneReader::readEnd(const QJsonObject& object, QStringView key, const QStr
     if (it == object.constEnd() || it.value().isNull()) {
         if (!worldAllowed) {
             return m_in.fail(at, it == object.constEnd()
-                                     ? QStringLiteral("required, but missing (a body id)")
-                                     : QStringLiteral("must be a body id, not null"));
+                                     ? FileMessages::tr("required, but missing (a body id)")
+                                     : FileMessages::tr("must be a body id, not null"));
         }
         out = physics::kWorld;
         return true;
     }
     if (!it.value().isString()) {
-        return m_in.fail(at, QStringLiteral("must be a body id (a string)%1, got %2")
-                                 .arg(worldAllowed ? QStringLiteral(" or null") : QString(),
+        return m_in.fail(at, FileMessages::tr("must be a body id (a string)%1, got %2")
+                                 .arg(worldAllowed ? FileMessages::tr(" or null") : QString(),
                                       detail::describeJson(it.value())));
     }
     const QString id = it.value().toString();
     const auto found = m_ids.constFind(id);
     if (found == m_ids.constEnd()) {
-        return m_in.fail(at, QStringLiteral("no body with id \"%1\"").arg(id));
+        return m_in.fail(at, FileMessages::tr("no body with id \"%1\"").arg(id));
     }
     out = found.value();
     return true;
@@ -431,7 +434,7 @@ bool SceneReader::readSprings(const QJsonObject& root)
         return false;
     }
     if (springs.size() > kMaxSprings) {
-        return m_in.fail(place, QStringLiteral("%1 springs, more than the limit of %2")
+        return m_in.fail(place, FileMessages::tr("%1 springs, more than the limit of %2")
                                     .arg(springs.size())
                                     .arg(kMaxSprings));
     }
@@ -458,12 +461,12 @@ bool SceneReader::readSpring(const QJsonValue& value, const QString& place)
         return false;
     }
     if (spring.a == physics::kWorld && spring.b == physics::kWorld) {
-        return m_in.fail(place, QStringLiteral("both ends are fixed in the world (a and b are "
-                                               "null): a spring needs a body at one end"));
+        return m_in.fail(place, FileMessages::tr("both ends are fixed in the world (a and b are "
+                                                 "null): a spring needs a body at one end"));
     }
     if (spring.a == spring.b) {
         return m_in.fail(joinPlace(place, u"b"),
-                         QStringLiteral("the same body as \"a\": a spring joins two bodies"));
+                         FileMessages::tr("the same body as \"a\": a spring joins two bodies"));
     }
     spring.restLength =
         (worldPoint(spring.b, spring.anchorB) - worldPoint(spring.a, spring.anchorA)).norm();
@@ -476,7 +479,7 @@ bool SceneReader::readSpring(const QJsonValue& value, const QString& place)
         return false;
     }
     if (!std::isfinite(spring.restLength)) {
-        return m_in.fail(place, QStringLiteral("the anchors are too far apart to measure"));
+        return m_in.fail(place, FileMessages::tr("the anchors are too far apart to measure"));
     }
     m_scene.springs.push_back(spring);
     return true;
@@ -493,7 +496,7 @@ bool SceneReader::readJoints(const QJsonObject& root)
         return false;
     }
     if (joints.size() > kMaxJoints) {
-        return m_in.fail(place, QStringLiteral("%1 joints, more than the limit of %2")
+        return m_in.fail(place, FileMessages::tr("%1 joints, more than the limit of %2")
                                     .arg(joints.size())
                                     .arg(kMaxJoints));
     }
@@ -517,7 +520,7 @@ bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
     }
     if (type != u"pin") {
         return m_in.fail(joinPlace(place, u"type"),
-                         QStringLiteral("unknown joint type \"%1\" (expected pin)").arg(type));
+                         FileMessages::tr("unknown joint type \"%1\" (expected pin)").arg(type));
     }
     if (!readEnd(object, u"a", place, joint.a, false) ||
         !m_in.vec2(object, u"anchorA", place, joint.anchorA, limits::kCoordinate) ||
@@ -526,7 +529,7 @@ bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
     }
     if (joint.a == joint.b) {
         return m_in.fail(joinPlace(place, u"b"),
-                         QStringLiteral("the same body as \"a\": a pin joins two bodies"));
+                         FileMessages::tr("the same body as \"a\": a pin joins two bodies"));
     }
     // Without anchorB, the pin holds the bodies as they are placed: anchorB is the point of b
     // (or of the world) that coincides with anchorA at load.
@@ -537,8 +540,8 @@ bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
         }
         const double gap = (worldPoint(joint.b, joint.anchorB) - pinPoint).norm();
         if (!(gap <= kJointAnchorTolerance)) {
-            m_in.warn(place, QStringLiteral("the anchors are %1 m apart at the start; the joint "
-                                            "pulls them together at once")
+            m_in.warn(place, FileMessages::tr("the anchors are %1 m apart at the start; the joint "
+                                              "pulls them together at once")
                                  .arg(detail::formatNumber(gap)));
         }
     } else if (joint.b == physics::kWorld) {
@@ -567,8 +570,8 @@ SceneLoadResult loadSceneJson(const QByteArray& bytes, const QString& sourceName
         return result;
     }
     if (!parsed.document.isObject()) {
-        result.error = sourceName + QStringLiteral(": the top level must be an object {...}, "
-                                                   "got an array");
+        result.error = sourceName + FileMessages::tr(": the top level must be an object {...}, "
+                                                     "got an array");
         return result;
     }
     return loadSceneObject(parsed.document.object(), sourceName);

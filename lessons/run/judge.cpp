@@ -4,6 +4,7 @@
 #include "run/measurements.h"
 
 #include <QCoreApplication>
+#include <QLocale>
 
 #include <algorithm>
 #include <cmath>
@@ -15,10 +16,9 @@ namespace {
 
 // Every message is one whole sentence, its numbers as %1 placeholders, so that a translator
 // can reorder it (issue 14): no sentence is assembled from words.
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("Judge", text);
-}
+struct Judge {
+    Q_DECLARE_TR_FUNCTIONS(Judge)
+};
 
 /// A number as a student would write it: enough significant digits to tell the tolerance
 /// apart (three at the usual 5 %), no rounding noise, no "-0".
@@ -31,11 +31,15 @@ QString formatValue(double value, const Question& q)
     if (std::abs(value) < 1e-12) {
         value = 0;
     }
-    QString text = QString::number(value, 'g', digits);
-    if (text.contains(u'e')) { // 1e-05 reads badly; fixed notation with the same digits
+    // On screen, so in the window's locale: "0,41" in Czech (the answer box reads both).
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    QString text = locale.toString(value, 'g', digits);
+    if (text.contains(locale.exponential(), Qt::CaseInsensitive)) {
+        // 1e-05 reads badly; fixed notation with the same digits
         const int decimals = std::clamp(
             digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 12);
-        text = QString::number(value, 'f', std::abs(value) < 1 ? decimals : 0);
+        text = locale.toString(value, 'f', std::abs(value) < 1 ? decimals : 0);
     }
     return q.unit.isEmpty() ? text : text + u' ' + q.unit;
 }
@@ -46,16 +50,17 @@ QString notYet(const Measure& m)
         // The first bounces, the ones lessons ask about, in words; any later one by number.
         switch (m.n) {
         case 1:
-            return tr("Run the simulation past the top of the first bounce first.");
+            return Judge::tr("Run the simulation past the top of the first bounce first.");
         case 2:
-            return tr("Run the simulation past the top of the second bounce first.");
+            return Judge::tr("Run the simulation past the top of the second bounce first.");
         case 3:
-            return tr("Run the simulation past the top of the third bounce first.");
+            return Judge::tr("Run the simulation past the top of the third bounce first.");
         default:
-            return tr("Run the simulation past the top of bounce number %1 first.").arg(m.n);
+            return Judge::tr("Run the simulation past the top of bounce number %1 first.").arg(m.n);
         }
     }
-    return tr("Run the simulation until t = %1 s first.").arg(QString::number(m.time, 'g', 6));
+    return Judge::tr("Run the simulation until t = %1 s first.")
+        .arg(QLocale().toString(m.time, 'g', 6));
 }
 
 } // namespace
@@ -76,7 +81,7 @@ Verdict judgeAttempt(const Question& q, double answer, std::optional<double> val
     verdict.measured = true;
     verdict.value = *value;
     if (!std::isfinite(answer)) {
-        verdict.message = tr("Type a number first.");
+        verdict.message = Judge::tr("Type a number first.");
         return verdict;
     }
     verdict.right =
@@ -85,14 +90,16 @@ Verdict judgeAttempt(const Question& q, double answer, std::optional<double> val
         // A second try is only worth something while the value is still unknown.
         verdict.message =
             q.hint.isEmpty()
-                ? tr("Not quite (you said %1). Try once more.").arg(formatValue(answer, q))
-                : tr("Not quite (you said %1). Hint: %2").arg(formatValue(answer, q), q.hint);
+                ? Judge::tr("Not quite (you said %1). Try once more.").arg(formatValue(answer, q))
+                : Judge::tr("Not quite (you said %1). Hint: %2")
+                      .arg(formatValue(answer, q), q.hint);
         return verdict;
     }
     verdict.shown = true;
-    verdict.message = (verdict.right ? tr("Right: the simulation measured %1 (you said %2).")
-                                     : tr("Not quite: the simulation measured %1 (you said %2)."))
-                          .arg(formatValue(*value, q), formatValue(answer, q));
+    verdict.message =
+        (verdict.right ? Judge::tr("Right: the simulation measured %1 (you said %2).")
+                       : Judge::tr("Not quite: the simulation measured %1 (you said %2)."))
+            .arg(formatValue(*value, q), formatValue(answer, q));
     return verdict;
 }
 
@@ -106,7 +113,7 @@ Verdict showAnswer(const Question& q, std::optional<double> value)
     verdict.measured = true;
     verdict.shown = true;
     verdict.value = *value;
-    verdict.message = tr("The simulation measured %1.").arg(formatValue(*value, q));
+    verdict.message = Judge::tr("The simulation measured %1.").arg(formatValue(*value, q));
     return verdict;
 }
 

@@ -33,6 +33,24 @@ constexpr std::array<IntegratorWords, 6> kIntegratorWords{{
      QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Implicit midpoint")},
 }};
 
+struct StageWords {
+    physics::Stage stage;
+    const char* words; ///< for QT_TRANSLATE_NOOP
+};
+
+// One row per stage of a step, in the order of physics::Stage.
+constexpr std::array<StageWords, physics::kStageCount> kStageWords{{
+    {physics::Stage::BroadPhase, QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "broad phase")},
+    {physics::Stage::NarrowPhase, QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "narrow phase")},
+    {physics::Stage::Islands, QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "islands")},
+    {physics::Stage::Forces, QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "forces")},
+    {physics::Stage::Integration, QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "integration")},
+    {physics::Stage::ContactSolve,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "contact solve")},
+    {physics::Stage::Sleep, QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "sleep")},
+    {physics::Stage::Diagnostics, QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "diagnostics")},
+}};
+
 struct SolverWords {
     physics::SolverKind kind;
     const char* words;
@@ -51,6 +69,14 @@ QString translated(const char* words)
 }
 
 } // namespace
+
+QString stageDisplayName(physics::Stage stage)
+{
+    for (const StageWords& row : kStageWords)
+        if (row.stage == stage)
+            return translated(row.words);
+    return QString::fromLatin1(physics::stageName(stage));
+}
 
 QString integratorDisplayName(physics::IntegratorKind kind)
 {

@@ -7,6 +7,7 @@
 
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
+#include "rigidlab/physics/profile.h"
 
 #include <QString>
 
@@ -16,6 +17,9 @@ namespace rigidlab::ui {
 QString integratorDisplayName(physics::IntegratorKind kind);
 /// "Seed impulse", "Sequential impulse", translated.
 QString solverDisplayName(physics::SolverKind kind);
+/// A step's stage in words ("broad phase"), translated: the physics names it in English for
+/// the CLI and stays free of languages.
+QString stageDisplayName(physics::Stage stage);
 /// The display name of an integrator or solver given by its code name ("rk4",
 /// "sequential-impulse"); any other text comes back as it is.
 QString methodDisplayName(const QString& codeName);

@@ -348,8 +348,7 @@ void LessonPlayer::buildQuestions()
             if (std::abs(answer) > kMaxAnswer) {
                 result->setStyleSheet(QStringLiteral("color: #a05a00;"));
                 result->setText(tr("Type a number from %1 to %2.")
-                                    .arg(-kMaxAnswer, 0, 'g')
-                                    .arg(kMaxAnswer, 0, 'g'));
+                                    .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
                 result->setVisible(true);
                 return;
             }

@@ -18,15 +18,16 @@ namespace rigidlab::ui {
 
 namespace {
 
-QString tr(const char* text)
-{
-    return QCoreApplication::translate("rigidlab::ui::lessonExport", text);
-}
+/// The translation context of a lesson step's exported plots.
+struct LessonExport {
+    Q_DECLARE_TR_FUNCTIONS(LessonExport)
+};
 
 /// "by integrator" or "by solver".
 QString comparedBy(const lessons::LessonStep& step)
 {
-    return step.compare && !step.compare->solvers.empty() ? tr("by solver") : tr("by integrator");
+    return step.compare && !step.compare->solvers.empty() ? LessonExport::tr("by solver")
+                                                          : LessonExport::tr("by integrator");
 }
 
 /// One curve per compared world, reading `value(sample, i)`.
@@ -75,11 +76,13 @@ PlotWidget* makeStepPlot(const lessons::LessonStep& step, const QString& name, Q
         return makeDriftPlot(parent);
     if (name == u"compare-energy")
         return makeComparePlot(
-            step, tr("Total energy %1").arg(comparedBy(step)), tr("energy E"), QStringLiteral("J"),
+            step, LessonExport::tr("Total energy %1").arg(comparedBy(step)),
+            LessonExport::tr("energy E"), QStringLiteral("J"),
             [](const Sample& s, std::size_t i) { return s.variantTotal[i]; }, parent);
     if (name == u"compare-drift")
         return makeComparePlot(
-            step, tr("Energy drift %1").arg(comparedBy(step)), tr("drift"), QStringLiteral("%"),
+            step, LessonExport::tr("Energy drift %1").arg(comparedBy(step)),
+            LessonExport::tr("drift"), QStringLiteral("%"),
             [](const Sample& s, std::size_t i) { return s.variantDriftPercent[i]; }, parent);
     return nullptr; // the loader admits no other name
 }
@@ -121,23 +124,23 @@ QString stepCaption(const lessons::Lesson& lesson, int step, const physics::Worl
 {
     const lessons::LessonStep& s = lesson.steps.at(static_cast<std::size_t>(step));
     const QString first =
-        tr("%1, step %2: %3").arg(lesson.title, QString::number(step + 1), s.title);
+        LessonExport::tr("%1, step %2: %3").arg(lesson.title, QString::number(step + 1), s.title);
     QString how;
     if (s.compare && !s.compare->integrators.empty()) {
         QStringList names;
         for (int i = 0; i < s.compare->count(); ++i)
             names.append(methodDisplayName(s.compare->label(i)));
-        how = tr("integrators %1").arg(names.join(QStringLiteral(", ")));
+        how = LessonExport::tr("integrators %1").arg(names.join(QStringLiteral(", ")));
     } else {
-        how = tr("integrator %1").arg(integratorDisplayName(settings.integrator));
+        how = LessonExport::tr("integrator %1").arg(integratorDisplayName(settings.integrator));
     }
     if (s.compare && !s.compare->solvers.empty()) {
         QStringList names;
         for (int i = 0; i < s.compare->count(); ++i)
             names.append(methodDisplayName(s.compare->label(i)));
-        how += tr(" · solvers %1").arg(names.join(QStringLiteral(", ")));
+        how += LessonExport::tr(" · solvers %1").arg(names.join(QStringLiteral(", ")));
     }
-    how += tr(" · dt = %1 s").arg(QString::number(settings.dt, 'g', 6));
+    how += LessonExport::tr(" · dt = %1 s").arg(QString::number(settings.dt, 'g', 6));
     return first + u'\n' + how;
 }
 
@@ -146,7 +149,8 @@ PlotFilesResult exportPlots(const std::vector<PlotWidget*>& plots, const QString
 {
     PlotFilesResult result;
     if (!QDir().mkpath(dir)) {
-        result.error = tr("cannot make the folder %1").arg(QDir::toNativeSeparators(dir));
+        result.error =
+            LessonExport::tr("cannot make the folder %1").arg(QDir::toNativeSeparators(dir));
         return result;
     }
     for (PlotWidget* plot : plots) {

@@ -9,6 +9,8 @@
 #include "format/limits.h"
 #include "format/scene_loader.h"
 
+#include <QLocale>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -18,6 +20,15 @@
 namespace rigidlab::ui {
 
 namespace {
+
+/// A setting's new value in a plot's change mark: on screen, so in the window's locale
+/// ("0,005" in Czech), six significant digits as QString::arg gives.
+QString markNumber(double value)
+{
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    return locale.toString(value, 'g', 6);
+}
 
 constexpr int kFrameIntervalMs = 16;      // about 60 frames per second
 constexpr double kMaxFrameSeconds = 0.1;  // a longer gap (a paused debugger) counts as this
@@ -391,7 +402,7 @@ void SimulationController::setDt(double dt)
     if (!(dt >= lessons::kMinDt && dt <= lessons::kMaxDt) || dt == m_world.def().dt)
         return;
     forEachWorld([dt](physics::World& w) { w.setDt(dt); });
-    afterEdit(QStringLiteral("dt = %1 s").arg(dt));
+    afterEdit(tr("dt = %1 s").arg(markNumber(dt)));
 }
 
 void SimulationController::setIntegrator(physics::IntegratorKind kind)
@@ -416,7 +427,7 @@ void SimulationController::setIterations(int iterations)
         iterations > lessons::kMaxIterations)
         return;
     m_world.setIterations(iterations);
-    afterEdit(QStringLiteral("%1 iterations").arg(iterations));
+    afterEdit(tr("%n iteration(s)", nullptr, iterations));
 }
 
 void SimulationController::setRestitution(double e)
@@ -424,7 +435,7 @@ void SimulationController::setRestitution(double e)
     if (!lessons::limits::kRestitution.contains(e))
         return;
     forEachWorld([e](physics::World& w) { w.setRestitution(e); });
-    afterEdit(QStringLiteral("e = %1").arg(e));
+    afterEdit(tr("e = %1").arg(markNumber(e)));
 }
 
 void SimulationController::setFriction(double mu)
@@ -432,7 +443,7 @@ void SimulationController::setFriction(double mu)
     if (!lessons::limits::kFriction.contains(mu))
         return;
     forEachWorld([mu](physics::World& w) { w.setFriction(mu); });
-    afterEdit(QStringLiteral("μ = %1").arg(mu));
+    afterEdit(tr("μ = %1").arg(markNumber(mu)));
 }
 
 void SimulationController::setGravityEnabled(bool on)
@@ -441,7 +452,7 @@ void SimulationController::setGravityEnabled(bool on)
     if (g == m_world.def().gravity)
         return;
     forEachWorld([&g](physics::World& w) { w.setGravity(g); });
-    afterEdit(on ? QStringLiteral("gravity on") : QStringLiteral("gravity off"));
+    afterEdit(on ? tr("gravity on") : tr("gravity off"));
 }
 
 void SimulationController::setBodyMaterial(physics::BodyId id, double restitution, double friction)
@@ -463,7 +474,7 @@ void SimulationController::setBodyMass(physics::BodyId id, double mass)
     if (!m_world.setBodyMass(id, mass))
         return;
     m_world.updateDiagnostics();
-    afterEdit(QStringLiteral("m = %1 kg").arg(mass));
+    afterEdit(tr("m = %1 kg").arg(markNumber(mass)));
 }
 
 void SimulationController::rotateBody(physics::BodyId id, double radians)

@@ -103,6 +103,11 @@ public:
     /// for them and presentation mode does not hide them.
     void setDetailsShown(bool shown);
 
+signals:
+    /// View › Language chose another language (saved already): the owner of the window
+    /// replaces it with one in that language (window/language_switch.h).
+    void languageChosen(const QString& code);
+
 protected:
     void closeEvent(QCloseEvent* event) override;
     void showEvent(QShowEvent* event) override;

@@ -8,6 +8,7 @@
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 #include "window/about_dialog.h"
+#include "window/language_switch.h"
 #include "window/shortcuts.h"
 #include "window/window_names.h"
 
@@ -185,6 +186,7 @@ void MainWindow::buildMenus()
         tr("Full screen, larger text and thicker lines for a projector (F11)"));
     connect(m_presentAction, &QAction::toggled, this, &MainWindow::setPresentation);
     addAction(m_presentAction); // F11 works in full screen, where the menu bar may be hidden
+    addLanguageMenu(m_viewMenu, *this);
     m_viewMenu->addSeparator();
     for (QAction* a : m_overlayActions)
         m_viewMenu->addAction(a);

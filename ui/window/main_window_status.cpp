@@ -2,8 +2,8 @@
 // MainWindow's status bar (time, real-time rate, energy drift, stage timings) and timeline.
 #include "window/main_window.h"
 
+#include "common/display_names.h"
 #include "common/status_text.h"
-#include "format/view_text.h"
 #include "panels/divergence_banner.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
@@ -89,10 +89,9 @@ void MainWindow::updateStatus()
     // The adaptive integrator's own estimate of its local error, live (a developer's detail,
     // not shown on a projector).
     if (const auto estimate = w.integrator().errorEstimate(); estimate && !m_presentation)
-        drift += tr(" · %1 error estimate %2 (%3 substeps)")
-                     .arg(lessons::textFromView(physics::integratorName(w.def().integrator)))
-                     .arg(locale.toString(*estimate, 'g', 2))
-                     .arg(locale.toString(w.integrator().substeps()));
+        drift += tr(" · %1 error estimate %2 (%Ln substep(s))", nullptr, w.integrator().substeps())
+                     .arg(integratorDisplayName(w.def().integrator))
+                     .arg(locale.toString(*estimate, 'g', 2));
     m_statusDrift->setText(drift);
     if (m_detailsAction->isChecked()) {
         // The last step's stages that ran, with their times (physics/profile.h).
@@ -100,9 +99,8 @@ void MainWindow::updateStatus()
         const physics::StepProfile& profile = w.profile();
         for (int k = 0; k < physics::kStageCount; ++k)
             if (profile.ran[k])
-                stages << tr("%1 %2").arg(
-                    QString::fromLatin1(physics::stageName(static_cast<physics::Stage>(k))),
-                    locale.toString(profile.ms[k], 'f', 2));
+                stages << tr("%1 %2").arg(stageDisplayName(static_cast<physics::Stage>(k)),
+                                          locale.toString(profile.ms[k], 'f', 2));
         const QString step =
             tr("last step %1 ms: %2")
                 .arg(locale.toString(profile.total, 'f', 2), stages.join(QStringLiteral(", ")));

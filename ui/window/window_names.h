@@ -20,7 +20,7 @@ namespace rigidlab::ui {
 
 struct OverlayNames {
     Overlay overlay;
-    const char* text;       ///< the View menu's entry, for tr() in context "MainWindow"
+    const char* text; ///< the View menu's entry, for tr() in context "rigidlab::ui::MainWindow"
     const char* shortText;  ///< on the toolbar, likewise
     const char* settingKey; ///< under "overlays/" in the settings file
     const char* shortcut;
@@ -28,18 +28,19 @@ struct OverlayNames {
 
 /// In the order of `Overlay`: kOverlayNames[static_cast<size_t>(o)].overlay == o.
 inline constexpr std::array<OverlayNames, kOverlayCount> kOverlayNames{{
-    {Overlay::Velocities, QT_TRANSLATE_NOOP("MainWindow", "&Velocity vectors"),
-     QT_TRANSLATE_NOOP("MainWindow", "Velocities"), "velocities", "V"},
-    {Overlay::Contacts, QT_TRANSLATE_NOOP("MainWindow", "&Contact points and normals"),
-     QT_TRANSLATE_NOOP("MainWindow", "Contacts"), "contacts", "C"},
-    {Overlay::BoundingBoxes, QT_TRANSLATE_NOOP("MainWindow", "&Bounding boxes"),
-     QT_TRANSLATE_NOOP("MainWindow", "Boxes"), "boxes", "B"},
-    {Overlay::CentresOfMass, QT_TRANSLATE_NOOP("MainWindow", "Centres of &mass"),
-     QT_TRANSLATE_NOOP("MainWindow", "Centres"), "com", "M"},
-    {Overlay::Trails, QT_TRANSLATE_NOOP("MainWindow", "Motion &trails"),
-     QT_TRANSLATE_NOOP("MainWindow", "Trails"), "trails", "T"},
-    {Overlay::SpringsJoints, QT_TRANSLATE_NOOP("MainWindow", "&Springs and joints"),
-     QT_TRANSLATE_NOOP("MainWindow", "Springs"), "springs", "J"},
+    {Overlay::Velocities, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Velocity vectors"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Velocities"), "velocities", "V"},
+    {Overlay::Contacts,
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Contact points and normals"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Contacts"), "contacts", "C"},
+    {Overlay::BoundingBoxes, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Bounding boxes"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Boxes"), "boxes", "B"},
+    {Overlay::CentresOfMass, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Centres of &mass"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Centres"), "com", "M"},
+    {Overlay::Trails, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Motion &trails"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Trails"), "trails", "T"},
+    {Overlay::SpringsJoints, QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Springs and joints"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Springs"), "springs", "J"},
 }};
 
 static_assert(
@@ -62,14 +63,16 @@ inline QLatin1String lessonOverlayName(Overlay overlay)
 
 struct PlotNames {
     const char* name;  ///< the dock's and the lesson's name
-    const char* title; ///< the dock's title and the Export menu's entry, for tr() ("MainWindow")
+    const char* title; ///< the dock's title and the Export menu's entry, for tr()
+                       ///< ("rigidlab::ui::MainWindow")
 };
 
 /// The window's standard plots, in the order of MainWindow::plot(index).
 inline constexpr std::array<PlotNames, 3> kPlotNames{{
-    {lessons::kStepPlotNames[0].data(), QT_TRANSLATE_NOOP("MainWindow", "Energy")},
-    {lessons::kStepPlotNames[1].data(), QT_TRANSLATE_NOOP("MainWindow", "Momentum")},
-    {lessons::kStepPlotNames[2].data(), QT_TRANSLATE_NOOP("MainWindow", "Energy drift")},
+    {lessons::kStepPlotNames[0].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy")},
+    {lessons::kStepPlotNames[1].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum")},
+    {lessons::kStepPlotNames[2].data(),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy drift")},
 }};
 
 } // namespace rigidlab::ui

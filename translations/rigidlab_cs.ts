@@ -1,0 +1,2224 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="cs_CZ">
+<context>
+    <name>About</name>
+    <message>
+        <source>&lt;h3&gt;RigidLab %1&lt;/h3&gt;&lt;p&gt;A lab for teaching 2D rigid-body mechanics: integrators and their energy drift, collision detection by separating axes, and impulses.&lt;/p&gt;&lt;p&gt;It grows from the paper &lt;i&gt;Simulace mechaniky tuhých těles v reálném čase&lt;/i&gt; (&lt;i&gt;Real-time simulation of rigid-body mechanics&lt;/i&gt;).&lt;/p&gt;&lt;p&gt;Licence: GNU General Public License, version 3 or any later version (GPL-3.0-or-later), as QCustomPlot, which it links, requires. See the LICENSE file.&lt;/p&gt;&lt;p&gt;Built with Qt %2 (running on Qt %3), QCustomPlot %4 and Eigen %5.&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>About RigidLab</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>CommandLine</name>
+    <message>
+        <source>RigidLab %1: a lab for 2D rigid-body mechanics.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A scene or a lesson to open.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show this text and quit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the version and quit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With a lesson: start at step N (1 = first).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the scene for N frames, print the median and 95th-percentile frame time and the physics share, and quit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Write a PNG of the window on the welcome scene and on every step of every shipped lesson into DIR, with DIR/index.txt, and quit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Window (and screenshot) size in pixels, e.g. 1024x768 (screenshots: 1280x720 unless given).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scale factor of the whole interface (QT_SCALE_FACTOR), e.g. 1.5.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Presentation mode: full screen, large type and thick lines for a projector (F11).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--%1 needs %2, got &quot;%3&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a whole number from 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>WIDTHxHEIGHT in pixels, each from %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a number greater than 0 and at most %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cs or en</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (try rigidlab --help)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>one file at a time (got %1 and %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--measure-frames needs a scene to run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--screenshots shoots the shipped scenes and lessons: give it no FILE and no --measure-frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no display to open the window on: set DISPLAY (an X server, or Xvfb) or WAYLAND_DISPLAY, or QT_QPA_PLATFORM=offscreen</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Language of the interface: cs or en (View › Language saves a choice; without either, the system&apos;s language).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n file(s) written into %1</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>Controls</name>
+    <message>
+        <source> or </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Keyboard</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mouse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play or pause the simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One step forward (pauses)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One step back in time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to the start of the scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom to show every body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn the selected body left by 5°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn the selected body right by 5°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Presentation mode: full screen, large type and thick lines for a projector</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Quit RigidLab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click a body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select it and show it in the inspector</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag a body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pull it with a spring; release to throw it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag empty space or the middle button</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pan the view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mouse wheel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom about the pointer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag the timeline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Go back to any earlier moment of the run</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>DivergenceWords</name>
+    <message>
+        <source>position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>angle</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>angular velocity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>total energy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the %1 of body “%2” is no longer finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the total energy is no longer finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the total energy grew from %1 J to %2 J, past the bound of %3 J</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (body “%1” holds the most kinetic energy)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The simulation diverged at t = %1 s (step %2, dt = %3 s, %4): %5. It stopped here rather than draw garbage.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>energy blew up</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 no longer finite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>stopped at t = %1 s: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>FileMessages</name>
+    <message>
+        <source>an array</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an object</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: cannot read: is a directory, not a file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: cannot read: </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: too large: more than %1 bytes (the limit is %2 MiB)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unterminated object: a &apos;,&apos; or the closing &apos;}&apos; is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a &apos;:&apos; is missing after a key</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unterminated array: a &apos;,&apos; or the closing &apos;]&apos; is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a &apos;,&apos; is missing between two values</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a JSON value (text needs double quotes; true, false and null are lower case)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file ends inside a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not a valid number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an invalid escape sequence in a string</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the text is not valid UTF-8</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unterminated string: the closing &apos;&quot;&apos; is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a value is missing here (JSON allows no trailing comma)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>nested too deeply</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too large for the JSON reader</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>more text after the end of the JSON document</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not valid JSON</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>from %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: too large: %1 bytes (the limit is %2 MiB)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: line 1, column 1: the file is empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: line %2, column %3: arrays and objects nested deeper than %4 levels (the limit)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>number %1 is not a finite double (out of range or malformed)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: line %2, column %3: %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown key (allowed here: %1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be an object {...}, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing: %1 starts with &quot;%2&quot;: %3 (the format version)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unsupported format version %1 (this RigidLab reads version %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be an array [...], got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a positive number</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a number &gt;= 0</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a number from 0 to 1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>an array of %1 elements</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a pair of numbers [x, y], got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a whole number from %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a string &quot;...&quot;, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be true or false, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be %1, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be one line (it is shown in the lesson menu); put longer text in &quot;summary&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>is %1 characters long; at most %2 fit a menu line (put longer text in &quot;summary&quot;)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not be empty (leave the key out instead)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a lesson file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not be empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 goals, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a non-empty string &quot;...&quot;, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a lesson needs 1 to %1 steps, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the steps up to this one hold %1 bodies in all, more than the limit of %2 for a lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; plots the worlds of &quot;compare&quot;, and this step has none</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be at most %1 s, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 s at a step of %2 s is more than %3 steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the &quot;sat&quot; panel needs the pair it looks at: add &quot;sat&quot;: {&quot;a&quot;: ID, &quot;b&quot;: ID} to the step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a string or an array of strings, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing (a scene object, or the path of a scene file)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a scene object {...} or the path of a scene file, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must name a scene file, got an empty path</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>use &apos;/&apos; between folders, got &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a path relative to the lesson&apos;s folder, got &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not leave the lesson&apos;s folder (no &quot;..&quot;), got &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not hold control characters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; leads out of the lesson&apos;s folder (through a symbolic link)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a plain file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown integrator &quot;%1&quot; (expected %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be from %1 to %2 s, got %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown solver &quot;%1&quot; (expected %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be from %1 to %2, got %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>compare &quot;integrators&quot; or &quot;solvers&quot;, not both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>needs &quot;integrators&quot; or &quot;solvers&quot;: the worlds to run side by side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>settings.%1 is given too: the main world runs the first of this list, so leave settings.%1 out</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>compares 2 to %1 worlds, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a name &quot;...&quot;, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is listed twice</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown %1 &quot;%2&quot; (expected %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>: the top level must be an object {...}, got an array</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no body with id &quot;%1&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown measure &quot;%1&quot; (expected %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body &quot;%1&quot; is static: it never moves</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body &quot;%1&quot; is kinematic: it never bounces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: this step shows no panel &quot;%2&quot; (its panels: %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: this step shows no plot &quot;%2&quot; (its plots: %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is a column of the %2 panel, which this step does not show</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown name &quot;%1&quot; (expected run, panel:NAME, plot:NAME, %2, %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing (what the answer is checked against)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>0, and so is absoluteTolerance: no typed answer would ever be right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not be empty (leave the key out for no hint)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the same body as &quot;a&quot;: the test needs two bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>body &quot;%1&quot; is a circle: the separating axis test steps through polygons (boxes and polygons)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 questions, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a scene file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing (it may be empty: [])</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 bodies, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>longer than %1 characters</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>duplicate id &quot;%1&quot; (bodies[%2] has it already)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown body type &quot;%1&quot; (expected dynamic, static, kinematic)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>give &quot;density&quot; or &quot;mass&quot;, not both</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>too large or too small: its area works out as %1 m^2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the mass works out as %1 kg (density times area); it must be %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a static body never moves: its velocity is ignored (make it &quot;kinematic&quot; to move it)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a polygon needs 3 to %1 vertices, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown shape type &quot;%1&quot; (expected circle, box, polygon)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>required, but missing (a body id)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a body id, not null</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a body id (a string)%1, got %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> or null</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 springs, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>both ends are fixed in the world (a and b are null): a spring needs a body at one end</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the same body as &quot;a&quot;: a spring joins two bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the anchors are too far apart to measure</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 joints, more than the limit of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown joint type &quot;%1&quot; (expected pin)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the same body as &quot;a&quot;: a pin joins two bodies</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the anchors are %1 m apart at the start; the joint pulls them together at once</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Judge</name>
+    <message>
+        <source>first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>second</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>third</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fourth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>fifth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sixth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>seventh</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>eighth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ninth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tenth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the simulation past the top of the %1 bounce first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the simulation until t = %1 s first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type a number first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not quite (you said %1). Try once more.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not quite (you said %1). Hint: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right: the simulation measured %1 (you said %2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not quite: the simulation measured %1 (you said %2).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The simulation measured %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>LessonExport</name>
+    <message>
+        <source>by solver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>by integrator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Total energy %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>energy E</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Energy drift %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>drift</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, step %2: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>integrators %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>integrator %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · solvers %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · dt = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>MainWindow</name>
+    <message>
+        <source>Settings not saved: cannot write %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>SatOverlayItem</name>
+    <message>
+        <source>gap %1 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>overlap %1 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>separating axis: no collision</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>least overlap: this is the contact normal</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>least overlap: axis %1, the contact normal (arrow)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>Screenshots</name>
+    <message>
+        <source>cannot encode %1 as PNG</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the window needs at least %1×%2 (logical pixels) and was made %3×%4: its content is clipped</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cannot create a temporary folder for the settings: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the welcome scene after %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, step %2 of %3: %4, after %5 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>StatusWords</name>
+    <message>
+        <source>–</source>
+        <comment>no drift to show</comment>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::lessons</name>
+    <message>
+        <source>%1. %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> — %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> (≈%1 min)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::BouncePanel</name>
+    <message>
+        <source>Heights of the centre above where it touched down. With a coefficient of restitution e, each bounce should reach e² times the one before.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Answer the lesson&apos;s question first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ball</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>e</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>drop h₀ [m]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>h%1 [m]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>h%1/h%2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bounce</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>h [m]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ratio</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The height over the one before: compare it with e²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: e = %2, e² = %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>drop</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bounces</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::CollisionPanel</name>
+    <message>
+        <source>x %1
+y %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Answer the lesson&apos;s question first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>quantity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>before</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>after</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No collision yet: run the simulation.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>collision</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Collision of %1 and %2 at t = %3 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: velocity [m/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: angular velocity ω [rad/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>momentum p [kg m/s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kinetic energy [J]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: ω by the full formula</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: ω without (r×n)²/I terms</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::ControlPanel</name>
+    <message>
+        <source>on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How positions and velocities are advanced in each step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed impulse: one impulse per contact, once (the paper&apos;s method).
+Sequential impulse: iterated, clamped, warm started.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Iterations</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity iterations of the sequential-impulse solver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The fixed time step [ms]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time scale</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Slow motion below 1, fast forward above</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restitution e</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coefficient of restitution e for every body: 0 sticks, 1 is elastic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Friction μ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Coulomb friction coefficient μ for every body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time step dt [ms]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fixed in this step of the lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::DivergenceBanner</name>
+    <message>
+        <source>Reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Halve dt</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to the start of the scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to the start with half the time step</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::ErrorPanel</name>
+    <message>
+        <source>Run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The reference problem whose diagram is shown</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Problem</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Running every integrator on every reference problem…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancelling after the row in progress…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancelled after %1 rows.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 rows: CPU time of each run is the smallest of repeated runs.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::FittingTable</name>
+    <message>
+        <source>Export as CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save the table as a CSV file (decimal point, full precision) for a spreadsheet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export table as CSV</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::InspectorPanel</name>
+    <message>
+        <source>kg</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Mass m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The body&apos;s mass; its moment of inertia scales with it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restitution e</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Friction μ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inertia I</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Position</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Angle θ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity v</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Angular vel. ω</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Kinetic energy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>click a body</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 kg</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 kg·m²</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>infinite</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(%1, %2) m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 rad</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>(%1, %2) m/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 rad/s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 J</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::LessonPlayer</name>
+    <message>
+        <source>◀ Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Restart step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next ▶</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export plots…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start the first lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The lessons that come with RigidLab (File › Open lesson for others)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Introduction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show or hide the lesson&apos;s introduction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot open lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose a lesson…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: the lesson has no steps</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Start here</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RigidLab is a laboratory of moving bodies: run a prepared scene, change its settings and measure what happens. Each lesson walks you through one idea of mechanics step by step, with questions to answer on the way.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The first lesson is “%1”; the list above holds the others.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 · about %2 min</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step %1 of %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>your answer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Check</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show me</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Give up and show the measured value</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type a number first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type a number from %1 to %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::MainWindow</name>
+    <message>
+        <source>Export the step&apos;s plots into</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Plots written to %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RigidLab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — RigidLab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Play or pause (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One step forward (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>One step back in time (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back to the start of the scene (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Zoom to show every body (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn selected body left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn selected body right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Timeline</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Time travel: drag to go back to any moment, then play to go on (or change a setting to branch)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> Timeline </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Controls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Inspector</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Energy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Momentum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Energy drift</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Separating axis test</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bounces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Collision</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error vs run time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Side by side</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Open scene…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;lesson…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Le&amp;ssons</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Shipped scenes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Export plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>As %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Simulation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Presentation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Full screen, larger text and thicker lines for a projector (F11)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Controls</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;About RigidLab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show or hide: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot open scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RigidLab scenes (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 files (*.%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>slower than real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Status &amp;details (steps/s, stage timings)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 × real time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>energy drift %1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>energy drift (numerical error) %1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · dissipated %1 J</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> · dissipated by contacts, friction, drag and dampers %1 J</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>last step %1 ms: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 steps/s · frame %2 ms (physics %3 ms) · %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> step %1 of %2 · t = %3 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cannot open lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open lesson</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>RigidLab lessons (*.json)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — step %2 — RigidLab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Velocity vectors</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocities</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Contact points and normals</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Contacts</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Bounding boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Boxes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centres of &amp;mass</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Centres</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Motion &amp;trails</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Trails</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Springs and joints</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Springs</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source> · %1 error estimate %2 (%Ln substep(s))</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::NumberField</name>
+    <message>
+        <source>%1 %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 must be a whole number from %2 to %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 must be from %2 to %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” is not a number: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::PlotWidget</name>
+    <message>
+        <source>Export as PNG…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export as PDF…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export as SVG…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export data as CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Follow</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Last %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Whole run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export plot</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>time t [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Follow the run again (or double-click the plot)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (right axis)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (before going back)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ↑ off scale</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Energy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>energy E</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>kinetic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>potential</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>total</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>dissipated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>total + dissipated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Momentum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>p</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>L</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Energy drift</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>drift</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>energy drift (numerical error)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::SatPanel</name>
+    <message>
+        <source>◀ Previous</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Next ▶</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show the previous axis tested</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test the next axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Test every axis, up to the verdict</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>on axis [m]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>overlap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis is the normal of this edge: polygon A or B, then the edge&apos;s number.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The interval each polygon covers when projected on the axis (A above, B below).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How far the intervals overlap, in metres; &quot;gap&quot; when they do not, and the axis separates. Below it, what the axis means for the test.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export as CSV…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>separating_axes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drag a polygon to move it; Q and E turn the selected one.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gap %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>separates</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>least overlap</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <comment>polygon (A or B), edge number</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>B</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A %1 … %2
+B %3 … %4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1: the normal of edge %2 of %3. On it, %4 covers [%5, %6] m and %7 covers [%8, %9] m.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>They are %1 m apart: a gap.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>They overlap by %1 m.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This axis separates the polygons: they cannot touch, and the test stops here (no collision).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The least overlap of all axes: this axis is the contact normal, and the overlap is the depth.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No pair of polygons to test.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis %1 of %2 tested so far: no separating axis yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Separated: axis %1 has a gap, so the test stops there.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Overlapping: no axis separates them.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The test needed %1 of at most %2 axes (one per edge, %3 + %4), each projecting all %2 vertices: %5 projections, against the paper&apos;s worst case of (k₁ + k₂)² = %6.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Least overlap on axis %1: normal (%2, %3) from A to B, depth %4 m, %5 contact point(s) from clipping.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::SimulationController</name>
+    <message>
+        <source>dt = %1 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n iteration(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>e = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>μ = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gravity on</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>gravity off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>m = %1 kg</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::WorkPrecisionPlot</name>
+    <message>
+        <source>Error vs run time</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>CPU time of the run [s]</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>final position error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Error vs run time: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>p = %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>order: needs a second run</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no order: error at round-off</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no order: error too large</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::WorldView</name>
+    <message>
+        <source>%1 — blew up at t = %2 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 — stopped at t = %2 s: %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (solid)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (outline)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (solid): %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 (outline): %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 stopped</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::displayNames</name>
+    <message>
+        <source>Explicit Euler</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Symplectic Euler</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Velocity Verlet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Runge–Kutta 4</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dormand–Prince 5(4), adaptive</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Implicit midpoint</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Seed impulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Sequential impulse</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>broad phase</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>narrow phase</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>islands</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>forces</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>integration</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>contact solve</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>sleep</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>diagnostics</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::exportPlot</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not enough memory for a %1 x %2 px image</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>could not start drawing the PDF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>could not start drawing the SVG</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+</TS>

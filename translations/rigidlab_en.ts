@@ -1,0 +1,34 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en_US">
+<context>
+    <name>CommandLine</name>
+    <message numerus="yes">
+        <source>%n file(s) written into %1</source>
+        <translation>
+            <numerusform>%n file written into %1</numerusform>
+            <numerusform>%n files written into %1</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::MainWindow</name>
+    <message numerus="yes">
+        <source> · %1 error estimate %2 (%Ln substep(s))</source>
+        <translation>
+            <numerusform> · %1 error estimate %2 (%Ln substep)</numerusform>
+            <numerusform> · %1 error estimate %2 (%Ln substeps)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::SimulationController</name>
+    <message numerus="yes">
+        <source>%n iteration(s)</source>
+        <translation>
+            <numerusform>%n iteration</numerusform>
+            <numerusform>%n iterations</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>
