@@ -36,7 +36,7 @@
     </message>
     <message>
         <source>Run the scene for N frames, print the median and 95th-percentile frame time and the physics share, and quit.</source>
-        <translation>Přehrát scénu po N snímků, vypsat medián a&#xa0;95. percentil doby snímku a&#xa0;podíl fyziky a&#xa0;skončit.</translation>
+        <translation>Přehrát N snímků scény, vypsat medián a&#xa0;95. percentil doby snímku a&#xa0;podíl fyziky a&#xa0;skončit.</translation>
     </message>
     <message>
         <source>Write a PNG of the window on the welcome scene and on every step of every shipped lesson into DIR, with DIR/index.txt, and quit.</source>
@@ -179,11 +179,11 @@
     </message>
     <message>
         <source>Pull it with a spring; release to throw it</source>
-        <translation>Tahat ho za pružinu; puštěním ho hodit</translation>
+        <translation>Táhnout ho pružinou; puštěním ho hodit</translation>
     </message>
     <message>
         <source>Drag empty space or the middle button</source>
-        <translation>Táhnout prázdné místo nebo prostředním tlačítkem</translation>
+        <translation>Táhnout za prázdné místo nebo se stisknutým prostředním tlačítkem</translation>
     </message>
     <message>
         <source>Pan the view</source>
@@ -1503,7 +1503,7 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
         <source>A %1 … %2
 B %3 … %4</source>
         <translation>A&#xa0;%1 … %2
-B %3 … %4</translation>
+B&#xa0;%3 … %4</translation>
     </message>
     <message>
         <source>Axis %1: the normal of edge %2 of %3. On it, %4 covers [%5, %6] m and %7 covers [%8, %9] m.</source>
@@ -1640,7 +1640,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>Runge–Kutta 4</source>
-        <translation>Runge–Kutta 4. řádu</translation>
+        <translation>Runge–Kutta 4.&#xa0;řádu</translation>
     </message>
     <message>
         <source>Dormand–Prince 5(4), adaptive</source>
