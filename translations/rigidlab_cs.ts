@@ -5,98 +5,98 @@
     <name>About</name>
     <message>
         <source>&lt;h3&gt;RigidLab %1&lt;/h3&gt;&lt;p&gt;A lab for teaching 2D rigid-body mechanics: integrators and their energy drift, collision detection by separating axes, and impulses.&lt;/p&gt;&lt;p&gt;It grows from the paper &lt;i&gt;Simulace mechaniky tuhých těles v reálném čase&lt;/i&gt; (&lt;i&gt;Real-time simulation of rigid-body mechanics&lt;/i&gt;).&lt;/p&gt;&lt;p&gt;Licence: GNU General Public License, version 3 or any later version (GPL-3.0-or-later), as QCustomPlot, which it links, requires. See the LICENSE file.&lt;/p&gt;&lt;p&gt;Built with Qt %2 (running on Qt %3), QCustomPlot %4 and Eigen %5.&lt;/p&gt;</source>
-        <translation type="unfinished"></translation>
+        <translation>&lt;h3&gt;RigidLab %1&lt;/h3&gt;&lt;p&gt;Laboratoř pro výuku mechaniky tuhých těles ve 2D: integrátory a&#xa0;jejich energetický drift, detekce srážek pomocí oddělujících os a&#xa0;impulsy síly.&lt;/p&gt;&lt;p&gt;Vychází z&#xa0;článku &lt;i&gt;Simulace mechaniky tuhých těles v&#xa0;reálném čase&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;Licence: GNU General Public License, verze 3 nebo jakákoli pozdější verze (GPL-3.0-or-later), jak to vyžaduje knihovna QCustomPlot, se kterou je program sestaven. Viz soubor LICENSE.&lt;/p&gt;&lt;p&gt;Sestaveno s&#xa0;Qt %2 (běží na Qt %3), QCustomPlot %4 a&#xa0;Eigen %5.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>About RigidLab</source>
-        <translation type="unfinished"></translation>
+        <translation>O&#xa0;aplikaci RigidLab</translation>
     </message>
 </context>
 <context>
     <name>CommandLine</name>
     <message>
         <source>RigidLab %1: a lab for 2D rigid-body mechanics.</source>
-        <translation type="unfinished"></translation>
+        <translation>RigidLab %1: laboratoř mechaniky tuhých těles ve 2D.</translation>
     </message>
     <message>
         <source>A scene or a lesson to open.</source>
-        <translation type="unfinished"></translation>
+        <translation>Scéna nebo lekce, která se má otevřít.</translation>
     </message>
     <message>
         <source>Show this text and quit.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vypsat tento text a&#xa0;skončit.</translation>
     </message>
     <message>
         <source>Show the version and quit.</source>
-        <translation type="unfinished"></translation>
+        <translation>Vypsat verzi a&#xa0;skončit.</translation>
     </message>
     <message>
         <source>With a lesson: start at step N (1 = first).</source>
-        <translation type="unfinished"></translation>
+        <translation>S&#xa0;lekcí: začít krokem N (1 = první).</translation>
     </message>
     <message>
         <source>Run the scene for N frames, print the median and 95th-percentile frame time and the physics share, and quit.</source>
-        <translation type="unfinished"></translation>
+        <translation>Přehrát N snímků scény, vypsat medián a&#xa0;95. percentil doby snímku a&#xa0;podíl fyziky a&#xa0;skončit.</translation>
     </message>
     <message>
         <source>Write a PNG of the window on the welcome scene and on every step of every shipped lesson into DIR, with DIR/index.txt, and quit.</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit do složky DIR snímek okna (PNG) s&#xa0;uvítací scénou a&#xa0;s&#xa0;každým krokem každé dodané lekce, k&#xa0;tomu DIR/index.txt, a&#xa0;skončit.</translation>
     </message>
     <message>
         <source>Window (and screenshot) size in pixels, e.g. 1024x768 (screenshots: 1280x720 unless given).</source>
-        <translation type="unfinished"></translation>
+        <translation>Velikost okna (a&#xa0;snímků) v&#xa0;pixelech, např. 1024x768 (snímky: 1280x720, pokud není zadána).</translation>
     </message>
     <message>
         <source>Scale factor of the whole interface (QT_SCALE_FACTOR), e.g. 1.5.</source>
-        <translation type="unfinished"></translation>
+        <translation>Měřítko celého rozhraní (QT_SCALE_FACTOR), např. 1.5.</translation>
     </message>
     <message>
         <source>Presentation mode: full screen, large type and thick lines for a projector (F11).</source>
-        <translation type="unfinished"></translation>
+        <translation>Režim prezentace: celá obrazovka, velké písmo a&#xa0;silné čáry pro projektor (F11).</translation>
     </message>
     <message>
         <source>--%1 needs %2, got &quot;%3&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>--%1 vyžaduje %2, zadáno „%3“</translation>
     </message>
     <message>
         <source>a whole number from 1</source>
-        <translation type="unfinished"></translation>
+        <translation>celé číslo od 1</translation>
     </message>
     <message>
         <source>WIDTHxHEIGHT in pixels, each from %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>ŠÍŘKAxVÝŠKA v&#xa0;pixelech, obojí od %1 do %2</translation>
     </message>
     <message>
         <source>a number greater than 0 and at most %1</source>
-        <translation type="unfinished"></translation>
+        <translation>číslo větší než 0 a&#xa0;nejvýše %1</translation>
     </message>
     <message>
         <source>cs or en</source>
-        <translation type="unfinished"></translation>
+        <translation>cs nebo en</translation>
     </message>
     <message>
         <source>a folder</source>
-        <translation type="unfinished"></translation>
+        <translation>složku</translation>
     </message>
     <message>
         <source>%1 (try rigidlab --help)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (zkuste rigidlab --help)</translation>
     </message>
     <message>
         <source>one file at a time (got %1 and %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>jen jeden soubor najednou (zadáno %1 a&#xa0;%2)</translation>
     </message>
     <message>
         <source>--measure-frames needs a scene to run</source>
-        <translation type="unfinished"></translation>
+        <translation>--measure-frames vyžaduje scénu, kterou přehraje</translation>
     </message>
     <message>
         <source>--screenshots shoots the shipped scenes and lessons: give it no FILE and no --measure-frames</source>
-        <translation type="unfinished"></translation>
+        <translation>--screenshots snímá dodané scény a&#xa0;lekce: nezadávejte k&#xa0;ní FILE ani --measure-frames</translation>
     </message>
     <message>
         <source>no display to open the window on: set DISPLAY (an X server, or Xvfb) or WAYLAND_DISPLAY, or QT_QPA_PLATFORM=offscreen</source>
-        <translation type="unfinished"></translation>
+        <translation>není displej, na kterém by se otevřelo okno: nastavte DISPLAY (X server nebo Xvfb) nebo WAYLAND_DISPLAY, případně QT_QPA_PLATFORM=offscreen</translation>
     </message>
     <message>
         <source>Language of the interface: cs or en (View › Language saves a choice; without either, the system&apos;s language).</source>
@@ -115,154 +115,154 @@
     <name>Controls</name>
     <message>
         <source> or </source>
-        <translation type="unfinished"></translation>
+        <translation> nebo </translation>
     </message>
     <message>
         <source>Keyboard</source>
-        <translation type="unfinished"></translation>
+        <translation>Klávesnice</translation>
     </message>
     <message>
         <source>Mouse</source>
-        <translation type="unfinished"></translation>
+        <translation>Myš</translation>
     </message>
     <message>
         <source>Play or pause the simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Spustit nebo pozastavit simulaci</translation>
     </message>
     <message>
         <source>One step forward (pauses)</source>
-        <translation type="unfinished"></translation>
+        <translation>O&#xa0;jeden krok vpřed (pozastaví)</translation>
     </message>
     <message>
         <source>One step back in time</source>
-        <translation type="unfinished"></translation>
+        <translation>O&#xa0;jeden krok zpět v&#xa0;čase</translation>
     </message>
     <message>
         <source>Back to the start of the scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Zpět na začátek scény</translation>
     </message>
     <message>
         <source>Zoom to show every body</source>
-        <translation type="unfinished"></translation>
+        <translation>Přiblížit tak, aby byla vidět všechna tělesa</translation>
     </message>
     <message>
         <source>Turn the selected body left by 5°</source>
-        <translation type="unfinished"></translation>
+        <translation>Otočit vybrané těleso o&#xa0;5° doleva</translation>
     </message>
     <message>
         <source>Turn the selected body right by 5°</source>
-        <translation type="unfinished"></translation>
+        <translation>Otočit vybrané těleso o&#xa0;5° doprava</translation>
     </message>
     <message>
         <source>Presentation mode: full screen, large type and thick lines for a projector</source>
-        <translation type="unfinished"></translation>
+        <translation>Režim prezentace: celá obrazovka, velké písmo a&#xa0;silné čáry pro projektor</translation>
     </message>
     <message>
         <source>Open a scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít scénu</translation>
     </message>
     <message>
         <source>Open a lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít lekci</translation>
     </message>
     <message>
         <source>Quit RigidLab</source>
-        <translation type="unfinished"></translation>
+        <translation>Ukončit RigidLab</translation>
     </message>
     <message>
         <source>Click a body</source>
-        <translation type="unfinished"></translation>
+        <translation>Kliknout na těleso</translation>
     </message>
     <message>
         <source>Select it and show it in the inspector</source>
-        <translation type="unfinished"></translation>
+        <translation>Vybrat ho a&#xa0;zobrazit v&#xa0;Inspektoru</translation>
     </message>
     <message>
         <source>Drag a body</source>
-        <translation type="unfinished"></translation>
+        <translation>Táhnout těleso</translation>
     </message>
     <message>
         <source>Pull it with a spring; release to throw it</source>
-        <translation type="unfinished"></translation>
+        <translation>Táhnout ho pružinou; puštěním ho hodit</translation>
     </message>
     <message>
         <source>Drag empty space or the middle button</source>
-        <translation type="unfinished"></translation>
+        <translation>Táhnout za prázdné místo nebo se stisknutým prostředním tlačítkem</translation>
     </message>
     <message>
         <source>Pan the view</source>
-        <translation type="unfinished"></translation>
+        <translation>Posunout pohled</translation>
     </message>
     <message>
         <source>Mouse wheel</source>
-        <translation type="unfinished"></translation>
+        <translation>Kolečko myši</translation>
     </message>
     <message>
         <source>Zoom about the pointer</source>
-        <translation type="unfinished"></translation>
+        <translation>Přiblížit nebo oddálit kolem ukazatele</translation>
     </message>
     <message>
         <source>Drag the timeline</source>
-        <translation type="unfinished"></translation>
+        <translation>Táhnout časovou osu</translation>
     </message>
     <message>
         <source>Go back to any earlier moment of the run</source>
-        <translation type="unfinished"></translation>
+        <translation>Vrátit se k&#xa0;libovolnému dřívějšímu okamžiku běhu</translation>
     </message>
 </context>
 <context>
     <name>DivergenceWords</name>
     <message>
         <source>position</source>
-        <translation type="unfinished"></translation>
+        <translation>poloha</translation>
     </message>
     <message>
         <source>angle</source>
-        <translation type="unfinished"></translation>
+        <translation>úhel</translation>
     </message>
     <message>
         <source>velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>rychlost</translation>
     </message>
     <message>
         <source>angular velocity</source>
-        <translation type="unfinished"></translation>
+        <translation>úhlová rychlost</translation>
     </message>
     <message>
         <source>total energy</source>
-        <translation type="unfinished"></translation>
+        <translation>celková energie</translation>
     </message>
     <message>
         <source>the %1 of body “%2” is no longer finite</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 tělesa „%2“ už není konečné číslo</translation>
     </message>
     <message>
         <source>the total energy is no longer finite</source>
-        <translation type="unfinished"></translation>
+        <translation>celková energie už není konečné číslo</translation>
     </message>
     <message>
         <source>the total energy grew from %1 J to %2 J, past the bound of %3 J</source>
-        <translation type="unfinished"></translation>
+        <translation>celková energie vzrostla z&#xa0;%1&#xa0;J na %2&#xa0;J, přes mez %3&#xa0;J</translation>
     </message>
     <message>
         <source> (body “%1” holds the most kinetic energy)</source>
-        <translation type="unfinished"></translation>
+        <translation> (největší kinetickou energii má těleso „%1“)</translation>
     </message>
     <message>
         <source>The simulation diverged at t = %1 s (step %2, dt = %3 s, %4): %5. It stopped here rather than draw garbage.</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulace divergovala v&#xa0;čase t = %1&#xa0;s (krok %2, dt = %3&#xa0;s, %4): %5. Zastavila se tady, aby nekreslila nesmysly.</translation>
     </message>
     <message>
         <source>energy blew up</source>
-        <translation type="unfinished"></translation>
+        <translation>energie „vybuchla“</translation>
     </message>
     <message>
         <source>%1 no longer finite</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 už není konečné číslo</translation>
     </message>
     <message>
         <source>stopped at t = %1 s: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>zastaveno v&#xa0;čase t = %1&#xa0;s: %2</translation>
     </message>
 </context>
 <context>
@@ -460,10 +460,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>%1 goals, more than the limit of %2</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>must be a non-empty string &quot;...&quot;, got </source>
         <translation type="unfinished"></translation>
     </message>
@@ -516,15 +512,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>must not leave the lesson&apos;s folder (no &quot;..&quot;), got &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>must not hold control characters</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>&quot;%1&quot; leads out of the lesson&apos;s folder (through a symbolic link)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -731,79 +719,95 @@
         <source>the anchors are %1 m apart at the start; the joint pulls them together at once</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>unknown language &quot;%1&quot; (expected %2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>needs the English text &quot;%1&quot;, shown when a language is missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be %1, or an object of languages {&quot;en&quot;: ..., &quot;cs&quot;: ...}, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be a string &quot;...&quot;, or an object of languages {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %2, more than the limit of %3</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must be an array [...], or an object of languages {&quot;en&quot;: [...], &quot;cs&quot;: [...]}, got </source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>no %1 text (&quot;%2&quot;); English is shown instead</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the lesson&apos;s folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the data folder (scenes/ and lessons/)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>must not leave %1, got &quot;%2&quot;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; leads out of %2 (through a symbolic link)</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>Judge</name>
     <message>
-        <source>first</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>second</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>third</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>fourth</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>fifth</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>sixth</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>seventh</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>eighth</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>ninth</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>tenth</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Run the simulation past the top of the %1 bounce first.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Run the simulation until t = %1 s first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejdřív nechte simulaci běžet až do t = %1&#xa0;s.</translation>
     </message>
     <message>
         <source>Type a number first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejdřív zadejte číslo.</translation>
     </message>
     <message>
         <source>Not quite (you said %1). Try once more.</source>
-        <translation type="unfinished"></translation>
+        <translation>Ne tak docela (vaše odpověď: %1). Zkuste to ještě jednou.</translation>
     </message>
     <message>
         <source>Not quite (you said %1). Hint: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Ne tak docela (vaše odpověď: %1). Nápověda: %2</translation>
     </message>
     <message>
         <source>Right: the simulation measured %1 (you said %2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Správně: simulace naměřila %1 (vaše odpověď: %2).</translation>
     </message>
     <message>
         <source>Not quite: the simulation measured %1 (you said %2).</source>
-        <translation type="unfinished"></translation>
+        <translation>Ne tak docela: simulace naměřila %1 (vaše odpověď: %2).</translation>
     </message>
     <message>
         <source>The simulation measured %1.</source>
+        <translation>Simulace naměřila %1.</translation>
+    </message>
+    <message>
+        <source>Run the simulation past the top of the first bounce first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the simulation past the top of the second bounce first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the simulation past the top of the third bounce first.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Run the simulation past the top of bounce number %1 first.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -811,108 +815,108 @@
     <name>LessonExport</name>
     <message>
         <source>by solver</source>
-        <translation type="unfinished"></translation>
+        <translation>podle řešiče</translation>
     </message>
     <message>
         <source>by integrator</source>
-        <translation type="unfinished"></translation>
+        <translation>podle integrátoru</translation>
     </message>
     <message>
         <source>Total energy %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Celková energie %1</translation>
     </message>
     <message>
         <source>energy E</source>
-        <translation type="unfinished"></translation>
+        <translation>energie E</translation>
     </message>
     <message>
         <source>Energy drift %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Energetický drift %1</translation>
     </message>
     <message>
         <source>drift</source>
-        <translation type="unfinished"></translation>
+        <translation>drift</translation>
     </message>
     <message>
         <source>%1, step %2: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, krok %2: %3</translation>
     </message>
     <message>
         <source>integrators %1</source>
-        <translation type="unfinished"></translation>
+        <translation>integrátory %1</translation>
     </message>
     <message>
         <source>integrator %1</source>
-        <translation type="unfinished"></translation>
+        <translation>integrátor %1</translation>
     </message>
     <message>
         <source> · solvers %1</source>
-        <translation type="unfinished"></translation>
+        <translation> · řešiče %1</translation>
     </message>
     <message>
         <source> · dt = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation> · dt = %1&#xa0;s</translation>
     </message>
     <message>
         <source>cannot make the folder %1</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze vytvořit složku %1</translation>
     </message>
 </context>
 <context>
     <name>MainWindow</name>
     <message>
         <source>Settings not saved: cannot write %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Nastavení se neuložilo: nelze zapisovat do %1</translation>
     </message>
 </context>
 <context>
     <name>SatOverlayItem</name>
     <message>
         <source>gap %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>mezera %1&#xa0;m</translation>
     </message>
     <message>
         <source>overlap %1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>překryv %1&#xa0;m</translation>
     </message>
     <message>
         <source>separating axis: no collision</source>
-        <translation type="unfinished"></translation>
+        <translation>oddělující osa: žádná srážka</translation>
     </message>
     <message>
         <source>least overlap: this is the contact normal</source>
-        <translation type="unfinished"></translation>
+        <translation>nejmenší překryv: toto je normála kontaktu</translation>
     </message>
     <message>
         <source>least overlap: axis %1, the contact normal (arrow)</source>
-        <translation type="unfinished"></translation>
+        <translation>nejmenší překryv: osa %1, normála kontaktu (šipka)</translation>
     </message>
 </context>
 <context>
     <name>Screenshots</name>
     <message>
         <source>cannot encode %1 as PNG</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze zakódovat %1 jako PNG</translation>
     </message>
     <message>
         <source>the window needs at least %1×%2 (logical pixels) and was made %3×%4: its content is clipped</source>
-        <translation type="unfinished"></translation>
+        <translation>okno potřebuje alespoň %1×%2 (logických pixelů), ale má %3×%4: jeho obsah je oříznutý</translation>
     </message>
     <message>
         <source>cannot create the folder %1</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze vytvořit složku %1</translation>
     </message>
     <message>
         <source>cannot create a temporary folder for the settings: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze vytvořit dočasnou složku pro nastavení: %1</translation>
     </message>
     <message>
         <source>the welcome scene after %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>uvítací scéna po %1&#xa0;s</translation>
     </message>
     <message>
         <source>%1, step %2 of %3: %4, after %5 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1, krok %2 z&#xa0;%3: %4, po %5&#xa0;s</translation>
     </message>
 </context>
 <context>
@@ -920,21 +924,25 @@
     <message>
         <source>–</source>
         <comment>no drift to show</comment>
-        <translation type="unfinished"></translation>
+        <translation>–</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::lessons</name>
     <message>
         <source>%1. %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1. %2</translation>
     </message>
     <message>
         <source> — %1</source>
-        <translation type="unfinished"></translation>
+        <translation> – %1</translation>
     </message>
     <message>
         <source> (≈%1 min)</source>
+        <translation> (≈%1&#xa0;min)</translation>
+    </message>
+    <message>
+        <source> (your own)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -942,59 +950,59 @@
     <name>rigidlab::ui::BouncePanel</name>
     <message>
         <source>Heights of the centre above where it touched down. With a coefficient of restitution e, each bounce should reach e² times the one before.</source>
-        <translation type="unfinished"></translation>
+        <translation>Výšky středu nad místem, kde se míček dotkl podložky. Při koeficientu restituce e by měl každý odskok dosáhnout e²násobku předchozího.</translation>
     </message>
     <message>
         <source>Answer the lesson&apos;s question first</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejdřív odpovězte na otázku lekce</translation>
     </message>
     <message>
         <source>ball</source>
-        <translation type="unfinished"></translation>
+        <translation>míček</translation>
     </message>
     <message>
         <source>e</source>
-        <translation type="unfinished"></translation>
+        <translation>e</translation>
     </message>
     <message>
         <source>drop h₀ [m]</source>
-        <translation type="unfinished"></translation>
+        <translation>pád h₀ [m]</translation>
     </message>
     <message>
         <source>h%1 [m]</source>
-        <translation type="unfinished"></translation>
+        <translation>h%1 [m]</translation>
     </message>
     <message>
         <source>h%1/h%2</source>
-        <translation type="unfinished"></translation>
+        <translation>h%1/h%2</translation>
     </message>
     <message>
         <source>bounce</source>
-        <translation type="unfinished"></translation>
+        <translation>odskok</translation>
     </message>
     <message>
         <source>h [m]</source>
-        <translation type="unfinished"></translation>
+        <translation>h [m]</translation>
     </message>
     <message>
         <source>ratio</source>
-        <translation type="unfinished"></translation>
+        <translation>poměr</translation>
     </message>
     <message>
         <source>The height over the one before: compare it with e²</source>
-        <translation type="unfinished"></translation>
+        <translation>Výška dělená předchozí: porovnejte s&#xa0;e²</translation>
     </message>
     <message>
         <source>%1: e = %2, e² = %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: e = %2, e² = %3</translation>
     </message>
     <message>
         <source>drop</source>
-        <translation type="unfinished"></translation>
+        <translation>pád</translation>
     </message>
     <message>
         <source>bounces</source>
-        <translation type="unfinished"></translation>
+        <translation>odrazy</translation>
     </message>
 </context>
 <context>
@@ -1002,701 +1010,703 @@
     <message>
         <source>x %1
 y %2</source>
-        <translation type="unfinished"></translation>
+        <translation>x %1
+y %2</translation>
     </message>
     <message>
         <source>Answer the lesson&apos;s question first</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejdřív odpovězte na otázku lekce</translation>
     </message>
     <message>
         <source>quantity</source>
-        <translation type="unfinished"></translation>
+        <translation>veličina</translation>
     </message>
     <message>
         <source>before</source>
-        <translation type="unfinished"></translation>
+        <translation>před</translation>
     </message>
     <message>
         <source>after</source>
-        <translation type="unfinished"></translation>
+        <translation>po</translation>
     </message>
     <message>
         <source>No collision yet: run the simulation.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zatím žádná srážka: spusťte simulaci.</translation>
     </message>
     <message>
         <source>collision</source>
-        <translation type="unfinished"></translation>
+        <translation>srazka</translation>
     </message>
     <message>
         <source>Collision of %1 and %2 at t = %3 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Srážka těles %1 a&#xa0;%2 v&#xa0;čase t = %3&#xa0;s</translation>
     </message>
     <message>
         <source>%1: velocity [m/s]</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: rychlost [m/s]</translation>
     </message>
     <message>
         <source>%1: angular velocity ω [rad/s]</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: úhlová rychlost ω [rad/s]</translation>
     </message>
     <message>
         <source>momentum p [kg m/s]</source>
-        <translation type="unfinished"></translation>
+        <translation>hybnost p [kg·m/s]</translation>
     </message>
     <message>
         <source>kinetic energy [J]</source>
-        <translation type="unfinished"></translation>
+        <translation>kinetická energie [J]</translation>
     </message>
     <message>
         <source>%1: ω by the full formula</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: ω podle úplného vzorce</translation>
     </message>
     <message>
         <source>%1: ω without (r×n)²/I terms</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: ω bez členů (r×n)²/I</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::ControlPanel</name>
     <message>
         <source>on</source>
-        <translation type="unfinished"></translation>
+        <translation>zapnuto</translation>
     </message>
     <message>
         <source>How positions and velocities are advanced in each step</source>
-        <translation type="unfinished"></translation>
+        <translation>Jak se v&#xa0;každém kroku posouvají polohy a&#xa0;rychlosti</translation>
     </message>
     <message>
         <source>Seed impulse: one impulse per contact, once (the paper&apos;s method).
 Sequential impulse: iterated, clamped, warm started.</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda výchozího článku).
+Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     </message>
     <message>
         <source>Iterations</source>
-        <translation type="unfinished"></translation>
+        <translation>Iterace</translation>
     </message>
     <message>
         <source>Velocity iterations of the sequential-impulse solver</source>
-        <translation type="unfinished"></translation>
+        <translation>Rychlostní iterace řešiče s&#xa0;postupnými impulsy</translation>
     </message>
     <message>
         <source>dt</source>
-        <translation type="unfinished"></translation>
+        <translation>dt</translation>
     </message>
     <message>
         <source>ms</source>
-        <translation type="unfinished"></translation>
+        <translation>ms</translation>
     </message>
     <message>
         <source>The fixed time step [ms]</source>
-        <translation type="unfinished"></translation>
+        <translation>Pevný časový krok [ms]</translation>
     </message>
     <message>
         <source>Time scale</source>
-        <translation type="unfinished"></translation>
+        <translation>Časové měřítko</translation>
     </message>
     <message>
         <source>×</source>
-        <translation type="unfinished"></translation>
+        <translation>×</translation>
     </message>
     <message>
         <source>Slow motion below 1, fast forward above</source>
-        <translation type="unfinished"></translation>
+        <translation>Pod 1 zpomalení, nad 1 zrychlení</translation>
     </message>
     <message>
         <source>Restitution e</source>
-        <translation type="unfinished"></translation>
+        <translation>Koeficient restituce e</translation>
     </message>
     <message>
         <source>Coefficient of restitution e for every body: 0 sticks, 1 is elastic</source>
-        <translation type="unfinished"></translation>
+        <translation>Koeficient restituce e pro všechna tělesa: 0 – tělesa se slepí, 1 – pružný ráz</translation>
     </message>
     <message>
         <source>Friction μ</source>
-        <translation type="unfinished"></translation>
+        <translation>Tření μ</translation>
     </message>
     <message>
         <source>Coulomb friction coefficient μ for every body</source>
-        <translation type="unfinished"></translation>
+        <translation>Součinitel smykového (Coulombova) tření μ pro všechna tělesa</translation>
     </message>
     <message>
         <source>Integrator</source>
-        <translation type="unfinished"></translation>
+        <translation>Integrátor</translation>
     </message>
     <message>
         <source>Time step dt [ms]</source>
-        <translation type="unfinished"></translation>
+        <translation>Časový krok dt [ms]</translation>
     </message>
     <message>
         <source>Solver</source>
-        <translation type="unfinished"></translation>
+        <translation>Řešič</translation>
     </message>
     <message>
         <source>Gravity</source>
-        <translation type="unfinished"></translation>
+        <translation>Tíhová síla</translation>
     </message>
     <message>
         <source>Fixed in this step of the lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>V&#xa0;tomto kroku lekce pevně dané</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::DivergenceBanner</name>
     <message>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>Na začátek</translation>
     </message>
     <message>
         <source>Halve dt</source>
-        <translation type="unfinished"></translation>
+        <translation>Poloviční dt</translation>
     </message>
     <message>
         <source>Back to the start of the scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Zpět na začátek scény</translation>
     </message>
     <message>
         <source>Back to the start with half the time step</source>
-        <translation type="unfinished"></translation>
+        <translation>Zpět na začátek s&#xa0;polovičním časovým krokem</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::ErrorPanel</name>
     <message>
         <source>Run</source>
-        <translation type="unfinished"></translation>
+        <translation>Spustit</translation>
     </message>
     <message>
         <source>Cancel</source>
-        <translation type="unfinished"></translation>
+        <translation>Zrušit</translation>
     </message>
     <message>
         <source>The reference problem whose diagram is shown</source>
-        <translation type="unfinished"></translation>
+        <translation>Referenční úloha, jejíž diagram je zobrazen</translation>
     </message>
     <message>
         <source>Problem</source>
-        <translation type="unfinished"></translation>
+        <translation>Úloha</translation>
     </message>
     <message>
         <source>Running every integrator on every reference problem…</source>
-        <translation type="unfinished"></translation>
+        <translation>Každý integrátor běží na každé referenční úloze…</translation>
     </message>
     <message>
         <source>Cancelling after the row in progress…</source>
-        <translation type="unfinished"></translation>
+        <translation>Zruší se po dokončení rozpracovaného řádku…</translation>
     </message>
     <message>
         <source>Cancelled after %1 rows.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zrušeno, hotové řádky: %1.</translation>
     </message>
     <message>
         <source>%1 rows: CPU time of each run is the smallest of repeated runs.</source>
-        <translation type="unfinished"></translation>
+        <translation>Počet řádků: %1. Čas CPU každého běhu je nejkratší z&#xa0;opakovaných běhů.</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::FittingTable</name>
     <message>
         <source>Export as CSV…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat do CSV…</translation>
     </message>
     <message>
         <source>Save the table as a CSV file (decimal point, full precision) for a spreadsheet</source>
-        <translation type="unfinished"></translation>
+        <translation>Uložit tabulku jako soubor CSV (desetinná tečka, plná přesnost) pro tabulkový procesor</translation>
     </message>
     <message>
         <source>Export table as CSV</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat tabulku do CSV</translation>
     </message>
     <message>
         <source>CSV files (*.csv)</source>
-        <translation type="unfinished"></translation>
+        <translation>Soubory CSV (*.csv)</translation>
     </message>
     <message>
         <source>Export failed</source>
-        <translation type="unfinished"></translation>
+        <translation>Export se nezdařil</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::InspectorPanel</name>
     <message>
         <source>kg</source>
-        <translation type="unfinished"></translation>
+        <translation>kg</translation>
     </message>
     <message>
         <source>Mass m</source>
-        <translation type="unfinished"></translation>
+        <translation>Hmotnost m</translation>
     </message>
     <message>
         <source>The body&apos;s mass; its moment of inertia scales with it</source>
-        <translation type="unfinished"></translation>
+        <translation>Hmotnost tělesa; moment setrvačnosti se mění úměrně s&#xa0;ní</translation>
     </message>
     <message>
         <source>Restitution e</source>
-        <translation type="unfinished"></translation>
+        <translation>Koeficient restituce e</translation>
     </message>
     <message>
         <source>Friction μ</source>
-        <translation type="unfinished"></translation>
+        <translation>Tření μ</translation>
     </message>
     <message>
         <source>Body</source>
-        <translation type="unfinished"></translation>
+        <translation>Těleso</translation>
     </message>
     <message>
         <source>Inertia I</source>
-        <translation type="unfinished"></translation>
+        <translation>Moment setrvačnosti I</translation>
     </message>
     <message>
         <source>Position</source>
-        <translation type="unfinished"></translation>
+        <translation>Poloha</translation>
     </message>
     <message>
         <source>Angle θ</source>
-        <translation type="unfinished"></translation>
+        <translation>Úhel θ</translation>
     </message>
     <message>
         <source>Velocity v</source>
-        <translation type="unfinished"></translation>
+        <translation>Rychlost v</translation>
     </message>
     <message>
         <source>Angular vel. ω</source>
-        <translation type="unfinished"></translation>
+        <translation>Úhlová rychlost ω</translation>
     </message>
     <message>
         <source>Kinetic energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Kinetická energie</translation>
     </message>
     <message>
         <source>click a body</source>
-        <translation type="unfinished"></translation>
+        <translation>klikněte na těleso</translation>
     </message>
     <message>
         <source>%1 kg</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;kg</translation>
     </message>
     <message>
         <source>%1 kg·m²</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;kg·m²</translation>
     </message>
     <message>
         <source>infinite</source>
-        <translation type="unfinished"></translation>
+        <translation>nekonečno</translation>
     </message>
     <message>
         <source>(%1, %2) m</source>
-        <translation type="unfinished"></translation>
+        <translation>(%1; %2)&#xa0;m</translation>
     </message>
     <message>
         <source>%1 rad</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;rad</translation>
     </message>
     <message>
         <source>(%1, %2) m/s</source>
-        <translation type="unfinished"></translation>
+        <translation>(%1; %2)&#xa0;m/s</translation>
     </message>
     <message>
         <source>%1 rad/s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;rad/s</translation>
     </message>
     <message>
         <source>%1 J</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;J</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonPlayer</name>
     <message>
         <source>◀ Back</source>
-        <translation type="unfinished"></translation>
+        <translation>◀ Zpět</translation>
     </message>
     <message>
         <source>Restart step</source>
-        <translation type="unfinished"></translation>
+        <translation>Krok znovu</translation>
     </message>
     <message>
         <source>Next ▶</source>
-        <translation type="unfinished"></translation>
+        <translation>Další ▶</translation>
     </message>
     <message>
         <source>Export plots…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat grafy…</translation>
     </message>
     <message>
         <source>Start the first lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Začít první lekci</translation>
     </message>
     <message>
         <source>The lessons that come with RigidLab (File › Open lesson for others)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lekce dodávané s&#xa0;RigidLabem (další otevřete přes Soubor › Otevřít lekci)</translation>
     </message>
     <message>
         <source>Introduction</source>
-        <translation type="unfinished"></translation>
+        <translation>Úvod</translation>
     </message>
     <message>
         <source>Show or hide the lesson&apos;s introduction</source>
-        <translation type="unfinished"></translation>
+        <translation>Zobrazit nebo skrýt úvod lekce</translation>
     </message>
     <message>
         <source>Cannot open lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Lekci nelze otevřít</translation>
     </message>
     <message>
         <source>Choose a lesson…</source>
-        <translation type="unfinished"></translation>
+        <translation>Vyberte lekci…</translation>
     </message>
     <message>
         <source>%1: the lesson has no steps</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: lekce nemá žádné kroky</translation>
     </message>
     <message>
         <source>Start here</source>
-        <translation type="unfinished"></translation>
+        <translation>Začněte zde</translation>
     </message>
     <message>
         <source>RigidLab is a laboratory of moving bodies: run a prepared scene, change its settings and measure what happens. Each lesson walks you through one idea of mechanics step by step, with questions to answer on the way.</source>
-        <translation type="unfinished"></translation>
+        <translation>RigidLab je laboratoř pohybujících se těles: spusťte připravenou scénu, změňte její nastavení a&#xa0;změřte, co se stane. Každá lekce vás krok za krokem provede jednou myšlenkou mechaniky a&#xa0;cestou vám položí otázky.</translation>
     </message>
     <message>
         <source>The first lesson is “%1”; the list above holds the others.</source>
-        <translation type="unfinished"></translation>
+        <translation>První lekce je „%1“; ostatní najdete v&#xa0;seznamu nahoře.</translation>
     </message>
     <message>
         <source>%1 · about %2 min</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 · asi %2&#xa0;min</translation>
     </message>
     <message>
         <source>Step %1 of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>Krok %1 z&#xa0;%2</translation>
     </message>
     <message>
         <source>your answer</source>
-        <translation type="unfinished"></translation>
+        <translation>vaše odpověď</translation>
     </message>
     <message>
         <source>Check</source>
-        <translation type="unfinished"></translation>
+        <translation>Zkontrolovat</translation>
     </message>
     <message>
         <source>Show me</source>
-        <translation type="unfinished"></translation>
+        <translation>Ukaž mi</translation>
     </message>
     <message>
         <source>Give up and show the measured value</source>
-        <translation type="unfinished"></translation>
+        <translation>Vzdát to a&#xa0;ukázat naměřenou hodnotu</translation>
     </message>
     <message>
         <source>Type a number first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejdřív zadejte číslo.</translation>
     </message>
     <message>
         <source>Type a number from %1 to %2.</source>
-        <translation type="unfinished"></translation>
+        <translation>Zadejte číslo od %1 do %2.</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::MainWindow</name>
     <message>
         <source>Export the step&apos;s plots into</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat grafy kroku do složky</translation>
     </message>
     <message>
         <source>Export failed</source>
-        <translation type="unfinished"></translation>
+        <translation>Export se nezdařil</translation>
     </message>
     <message>
         <source>Plots written to %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Grafy zapsány do %1</translation>
     </message>
     <message>
         <source>RigidLab</source>
-        <translation type="unfinished"></translation>
+        <translation>RigidLab</translation>
     </message>
     <message>
         <source>Pause</source>
-        <translation type="unfinished"></translation>
+        <translation>Pozastavit</translation>
     </message>
     <message>
         <source>Play</source>
-        <translation type="unfinished"></translation>
+        <translation>Spustit</translation>
     </message>
     <message>
         <source>%1 — RigidLab</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 – RigidLab</translation>
     </message>
     <message>
         <source>Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Simulace</translation>
     </message>
     <message>
         <source>Play or pause (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Spustit nebo pozastavit (%1)</translation>
     </message>
     <message>
         <source>Step</source>
-        <translation type="unfinished"></translation>
+        <translation>Krok</translation>
     </message>
     <message>
         <source>One step forward (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>O&#xa0;jeden krok vpřed (%1)</translation>
     </message>
     <message>
         <source>Back</source>
-        <translation type="unfinished"></translation>
+        <translation>Zpět</translation>
     </message>
     <message>
         <source>One step back in time (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>O&#xa0;jeden krok zpět v&#xa0;čase (%1)</translation>
     </message>
     <message>
         <source>Reset</source>
-        <translation type="unfinished"></translation>
+        <translation>Na začátek</translation>
     </message>
     <message>
         <source>Back to the start of the scene (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Zpět na začátek scény (%1)</translation>
     </message>
     <message>
         <source>Fit scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Celá scéna</translation>
     </message>
     <message>
         <source>Zoom to show every body (%1)</source>
-        <translation type="unfinished"></translation>
+        <translation>Přiblížit tak, aby byla vidět všechna tělesa (%1)</translation>
     </message>
     <message>
         <source>Turn selected body left</source>
-        <translation type="unfinished"></translation>
+        <translation>Otočit vybrané těleso doleva</translation>
     </message>
     <message>
         <source>Turn selected body right</source>
-        <translation type="unfinished"></translation>
+        <translation>Otočit vybrané těleso doprava</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>Timeline</source>
-        <translation type="unfinished"></translation>
+        <translation>Časová osa</translation>
     </message>
     <message>
         <source>Time travel: drag to go back to any moment, then play to go on (or change a setting to branch)</source>
-        <translation type="unfinished"></translation>
+        <translation>Cesta časem: tažením se vraťte do libovolného okamžiku a&#xa0;spuštěním pokračujte (nebo změnou nastavení začněte novou větev)</translation>
     </message>
     <message>
         <source> Timeline </source>
-        <translation type="unfinished"></translation>
+        <translation> Časová osa </translation>
     </message>
     <message>
         <source>Lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Lekce</translation>
     </message>
     <message>
         <source>Controls</source>
-        <translation type="unfinished"></translation>
+        <translation>Ovládání</translation>
     </message>
     <message>
         <source>Inspector</source>
-        <translation type="unfinished"></translation>
+        <translation>Inspektor</translation>
     </message>
     <message>
         <source>Energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie</translation>
     </message>
     <message>
         <source>Momentum</source>
-        <translation type="unfinished"></translation>
+        <translation>Hybnost</translation>
     </message>
     <message>
         <source>Energy drift</source>
-        <translation type="unfinished"></translation>
+        <translation>Energetický drift</translation>
     </message>
     <message>
         <source>Separating axis test</source>
-        <translation type="unfinished"></translation>
+        <translation>Test oddělující osy</translation>
     </message>
     <message>
         <source>Bounces</source>
-        <translation type="unfinished"></translation>
+        <translation>Odrazy</translation>
     </message>
     <message>
         <source>Collision</source>
-        <translation type="unfinished"></translation>
+        <translation>Srážka</translation>
     </message>
     <message>
         <source>Error vs run time</source>
-        <translation type="unfinished"></translation>
+        <translation>Chyba vs. doba běhu</translation>
     </message>
     <message>
         <source>Side by side</source>
-        <translation type="unfinished"></translation>
+        <translation>Vedle sebe</translation>
     </message>
     <message>
         <source>&amp;File</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Soubor</translation>
     </message>
     <message>
         <source>&amp;Open scene…</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Otevřít scénu…</translation>
     </message>
     <message>
         <source>Open &amp;lesson…</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít &amp;lekci…</translation>
     </message>
     <message>
         <source>Le&amp;ssons</source>
-        <translation type="unfinished"></translation>
+        <translation>Lek&amp;ce</translation>
     </message>
     <message>
         <source>Open &amp;recent</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít &amp;nedávné</translation>
     </message>
     <message>
         <source>&amp;Shipped scenes</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Dodané scény</translation>
     </message>
     <message>
         <source>&amp;Export plot</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Exportovat graf</translation>
     </message>
     <message>
         <source>As %1…</source>
-        <translation type="unfinished"></translation>
+        <translation>Jako %1…</translation>
     </message>
     <message>
         <source>&amp;Quit</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ukončit</translation>
     </message>
     <message>
         <source>&amp;Simulation</source>
-        <translation type="unfinished"></translation>
+        <translation>Si&amp;mulace</translation>
     </message>
     <message>
         <source>&amp;View</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Zobrazení</translation>
     </message>
     <message>
         <source>&amp;Presentation</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Prezentace</translation>
     </message>
     <message>
         <source>Full screen, larger text and thicker lines for a projector (F11)</source>
-        <translation type="unfinished"></translation>
+        <translation>Celá obrazovka, větší písmo a&#xa0;silnější čáry pro projektor (F11)</translation>
     </message>
     <message>
         <source>&amp;Help</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Nápověda</translation>
     </message>
     <message>
         <source>&amp;Controls</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ovládání</translation>
     </message>
     <message>
         <source>&amp;About RigidLab</source>
-        <translation type="unfinished"></translation>
+        <translation>O&#xa0;&amp;aplikaci RigidLab</translation>
     </message>
     <message>
         <source>Show or hide: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Zobrazit nebo skrýt: %1</translation>
     </message>
     <message>
         <source>Cannot open scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Scénu nelze otevřít</translation>
     </message>
     <message>
         <source>Open scene</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít scénu</translation>
     </message>
     <message>
         <source>RigidLab scenes (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Scény RigidLabu (*.json)</translation>
     </message>
     <message>
         <source>Export plot</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat graf</translation>
     </message>
     <message>
         <source>%1 files (*.%2)</source>
-        <translation type="unfinished"></translation>
+        <translation>Soubory %1 (*.%2)</translation>
     </message>
     <message>
         <source>Exported %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportováno: %1</translation>
     </message>
     <message>
         <source>slower than real time</source>
-        <translation type="unfinished"></translation>
+        <translation>pomaleji než v&#xa0;reálném čase</translation>
     </message>
     <message>
         <source>Status &amp;details (steps/s, stage timings)</source>
-        <translation type="unfinished"></translation>
+        <translation>Po&amp;drobnosti stavu (kroky/s, časy fází)</translation>
     </message>
     <message>
         <source>t = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>t = %1&#xa0;s</translation>
     </message>
     <message>
         <source>paused</source>
-        <translation type="unfinished"></translation>
+        <translation>pozastaveno</translation>
     </message>
     <message>
         <source>%1 × real time</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;× reálný čas</translation>
     </message>
     <message>
         <source>running</source>
-        <translation type="unfinished"></translation>
+        <translation>běží</translation>
     </message>
     <message>
         <source>energy drift %1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>energetický drift %1&#xa0;%</translation>
     </message>
     <message>
         <source>energy drift (numerical error) %1 %</source>
-        <translation type="unfinished"></translation>
+        <translation>energetický drift (numerická chyba) %1&#xa0;%</translation>
     </message>
     <message>
         <source> · dissipated %1 J</source>
-        <translation type="unfinished"></translation>
+        <translation> · disipovaná energie %1&#xa0;J</translation>
     </message>
     <message>
         <source> · dissipated by contacts, friction, drag and dampers %1 J</source>
-        <translation type="unfinished"></translation>
+        <translation> · energie odebraná kontakty, třením, odporem prostředí a&#xa0;tlumiči %1&#xa0;J</translation>
     </message>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>last step %1 ms: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>poslední krok %1&#xa0;ms: %2</translation>
     </message>
     <message>
         <source>%1 steps/s · frame %2 ms (physics %3 ms) · %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;kroků/s · snímek %2&#xa0;ms (fyzika %3&#xa0;ms) · %4</translation>
     </message>
     <message>
         <source> step %1 of %2 · t = %3 s</source>
-        <translation type="unfinished"></translation>
+        <translation> krok %1 z&#xa0;%2 · t = %3&#xa0;s</translation>
     </message>
     <message>
         <source>Cannot open lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Lekci nelze otevřít</translation>
     </message>
     <message>
         <source>Open lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>Otevřít lekci</translation>
     </message>
     <message>
         <source>RigidLab lessons (*.json)</source>
-        <translation type="unfinished"></translation>
+        <translation>Lekce RigidLabu (*.json)</translation>
     </message>
     <message>
         <source>%1 — step %2 — RigidLab</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 – krok %2 – RigidLab</translation>
     </message>
     <message>
         <source>&amp;Language</source>
@@ -1704,51 +1714,51 @@ Sequential impulse: iterated, clamped, warm started.</source>
     </message>
     <message>
         <source>&amp;Velocity vectors</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Vektory rychlosti</translation>
     </message>
     <message>
         <source>Velocities</source>
-        <translation type="unfinished"></translation>
+        <translation>Rychlosti</translation>
     </message>
     <message>
         <source>&amp;Contact points and normals</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Kontaktní body a&#xa0;normály</translation>
     </message>
     <message>
         <source>Contacts</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontakty</translation>
     </message>
     <message>
         <source>&amp;Bounding boxes</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Ohraničující obdélníky</translation>
     </message>
     <message>
         <source>Boxes</source>
-        <translation type="unfinished"></translation>
+        <translation>Obdélníky</translation>
     </message>
     <message>
         <source>Centres of &amp;mass</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Těžiště</translation>
     </message>
     <message>
         <source>Centres</source>
-        <translation type="unfinished"></translation>
+        <translation>Těžiště</translation>
     </message>
     <message>
         <source>Motion &amp;trails</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Stopy pohybu</translation>
     </message>
     <message>
         <source>Trails</source>
-        <translation type="unfinished"></translation>
+        <translation>Stopy</translation>
     </message>
     <message>
         <source>&amp;Springs and joints</source>
-        <translation type="unfinished"></translation>
+        <translation>P&amp;ružiny a&#xa0;klouby</translation>
     </message>
     <message>
         <source>Springs</source>
-        <translation type="unfinished"></translation>
+        <translation>Pružiny</translation>
     </message>
     <message numerus="yes">
         <source> · %1 error estimate %2 (%Ln substep(s))</source>
@@ -1758,272 +1768,277 @@ Sequential impulse: iterated, clamped, warm started.</source>
             <numerusform></numerusform>
         </translation>
     </message>
+    <message>
+        <source>&amp;Your own scenes</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::NumberField</name>
     <message>
         <source>%1 %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;%2</translation>
     </message>
     <message>
         <source>%1 must be a whole number from %2 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 musí být celé číslo od %2 do %3</translation>
     </message>
     <message>
         <source>%1 must be from %2 to %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 musí být od %2 do %3</translation>
     </message>
     <message>
         <source>“%1” is not a number: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>„%1“ není číslo: %2</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::PlotWidget</name>
     <message>
         <source>Export as PNG…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat do PNG…</translation>
     </message>
     <message>
         <source>Export as PDF…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat do PDF…</translation>
     </message>
     <message>
         <source>Export as SVG…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat do SVG…</translation>
     </message>
     <message>
         <source>Export data as CSV…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat data do CSV…</translation>
     </message>
     <message>
         <source>Follow</source>
-        <translation type="unfinished"></translation>
+        <translation>Sledovat</translation>
     </message>
     <message>
         <source>Last %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>Posledních %1&#xa0;s</translation>
     </message>
     <message>
         <source>Whole run</source>
-        <translation type="unfinished"></translation>
+        <translation>Celý běh</translation>
     </message>
     <message>
         <source>Export plot</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat graf</translation>
     </message>
     <message>
         <source>Export failed</source>
-        <translation type="unfinished"></translation>
+        <translation>Export se nezdařil</translation>
     </message>
     <message>
         <source>time t [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>čas t [s]</translation>
     </message>
     <message>
         <source>Follow the run again (or double-click the plot)</source>
-        <translation type="unfinished"></translation>
+        <translation>Znovu sledovat běh (nebo dvakrát klikněte do grafu)</translation>
     </message>
     <message>
         <source>%1 (right axis)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (pravá osa)</translation>
     </message>
     <message>
         <source>%1 (before going back)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (před návratem)</translation>
     </message>
     <message>
         <source> ↑ off scale</source>
-        <translation type="unfinished"></translation>
+        <translation> ↑ mimo rozsah</translation>
     </message>
     <message>
         <source>Energy</source>
-        <translation type="unfinished"></translation>
+        <translation>Energie</translation>
     </message>
     <message>
         <source>energy E</source>
-        <translation type="unfinished"></translation>
+        <translation>energie E</translation>
     </message>
     <message>
         <source>kinetic</source>
-        <translation type="unfinished"></translation>
+        <translation>kinetická</translation>
     </message>
     <message>
         <source>potential</source>
-        <translation type="unfinished"></translation>
+        <translation>potenciální</translation>
     </message>
     <message>
         <source>total</source>
-        <translation type="unfinished"></translation>
+        <translation>celková</translation>
     </message>
     <message>
         <source>dissipated</source>
-        <translation type="unfinished"></translation>
+        <translation>disipovaná</translation>
     </message>
     <message>
         <source>total + dissipated</source>
-        <translation type="unfinished"></translation>
+        <translation>celková + disipovaná</translation>
     </message>
     <message>
         <source>Momentum</source>
-        <translation type="unfinished"></translation>
+        <translation>Hybnost</translation>
     </message>
     <message>
         <source>p</source>
-        <translation type="unfinished"></translation>
+        <translation>p</translation>
     </message>
     <message>
         <source>L</source>
-        <translation type="unfinished"></translation>
+        <translation>L</translation>
     </message>
     <message>
         <source>Energy drift</source>
-        <translation type="unfinished"></translation>
+        <translation>Energetický drift</translation>
     </message>
     <message>
         <source>drift</source>
-        <translation type="unfinished"></translation>
+        <translation>drift</translation>
     </message>
     <message>
         <source>energy drift (numerical error)</source>
-        <translation type="unfinished"></translation>
+        <translation>energetický drift (numerická chyba)</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::SatPanel</name>
     <message>
         <source>◀ Previous</source>
-        <translation type="unfinished"></translation>
+        <translation>◀ Předchozí</translation>
     </message>
     <message>
         <source>Next ▶</source>
-        <translation type="unfinished"></translation>
+        <translation>Další ▶</translation>
     </message>
     <message>
         <source>All</source>
-        <translation type="unfinished"></translation>
+        <translation>Vše</translation>
     </message>
     <message>
         <source>Show the previous axis tested</source>
-        <translation type="unfinished"></translation>
+        <translation>Zobrazit předchozí testovanou osu</translation>
     </message>
     <message>
         <source>Test the next axis</source>
-        <translation type="unfinished"></translation>
+        <translation>Otestovat další osu</translation>
     </message>
     <message>
         <source>Test every axis, up to the verdict</source>
-        <translation type="unfinished"></translation>
+        <translation>Otestovat všechny osy až k&#xa0;výsledku</translation>
     </message>
     <message>
         <source>axis</source>
-        <translation type="unfinished"></translation>
+        <translation>osa</translation>
     </message>
     <message>
         <source>on axis [m]</source>
-        <translation type="unfinished"></translation>
+        <translation>na ose [m]</translation>
     </message>
     <message>
         <source>overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>překryv</translation>
     </message>
     <message>
         <source>The axis is the normal of this edge: polygon A or B, then the edge&apos;s number.</source>
-        <translation type="unfinished"></translation>
+        <translation>Osa je normála této hrany: mnohoúhelník A&#xa0;nebo B, pak číslo hrany.</translation>
     </message>
     <message>
         <source>The interval each polygon covers when projected on the axis (A above, B below).</source>
-        <translation type="unfinished"></translation>
+        <translation>Interval, který každý mnohoúhelník pokryje po promítnutí na osu (A&#xa0;nahoře, B dole).</translation>
     </message>
     <message>
         <source>How far the intervals overlap, in metres; &quot;gap&quot; when they do not, and the axis separates. Below it, what the axis means for the test.</source>
-        <translation type="unfinished"></translation>
+        <translation>Jak moc se intervaly překrývají, v&#xa0;metrech; „mezera“, když se nepřekrývají a&#xa0;osa je odděluje. Pod tím, co osa znamená pro test.</translation>
     </message>
     <message>
         <source>Export as CSV…</source>
-        <translation type="unfinished"></translation>
+        <translation>Exportovat do CSV…</translation>
     </message>
     <message>
         <source>separating_axes</source>
-        <translation type="unfinished"></translation>
+        <translation>oddelujici_osy</translation>
     </message>
     <message>
         <source>Drag a polygon to move it; Q and E turn the selected one.</source>
-        <translation type="unfinished"></translation>
+        <translation>Mnohoúhelník posunete tažením; Q a&#xa0;E otáčejí vybraným.</translation>
     </message>
     <message>
         <source>gap %1</source>
-        <translation type="unfinished"></translation>
+        <translation>mezera %1</translation>
     </message>
     <message>
         <source>separates</source>
-        <translation type="unfinished"></translation>
+        <translation>odděluje</translation>
     </message>
     <message>
         <source>least overlap</source>
-        <translation type="unfinished"></translation>
+        <translation>nejmenší překryv</translation>
     </message>
     <message>
         <source>%1 %2</source>
         <comment>polygon (A or B), edge number</comment>
-        <translation type="unfinished"></translation>
+        <translation>%1 %2</translation>
     </message>
     <message>
         <source>A</source>
-        <translation type="unfinished"></translation>
+        <translation>A</translation>
     </message>
     <message>
         <source>B</source>
-        <translation type="unfinished"></translation>
+        <translation>B</translation>
     </message>
     <message>
         <source>A %1 … %2
 B %3 … %4</source>
-        <translation type="unfinished"></translation>
+        <translation>A&#xa0;%1 … %2
+B&#xa0;%3 … %4</translation>
     </message>
     <message>
         <source>Axis %1: the normal of edge %2 of %3. On it, %4 covers [%5, %6] m and %7 covers [%8, %9] m.</source>
-        <translation type="unfinished"></translation>
+        <translation>Osa %1: normála hrany %2 tělesa %3. Na ní %4 pokrývá [%5; %6]&#xa0;m a&#xa0;%7 pokrývá [%8; %9]&#xa0;m.</translation>
     </message>
     <message>
         <source>They are %1 m apart: a gap.</source>
-        <translation type="unfinished"></translation>
+        <translation>Jsou od sebe %1&#xa0;m: mezera.</translation>
     </message>
     <message>
         <source>They overlap by %1 m.</source>
-        <translation type="unfinished"></translation>
+        <translation>Překrývají se o&#xa0;%1&#xa0;m.</translation>
     </message>
     <message>
         <source>This axis separates the polygons: they cannot touch, and the test stops here (no collision).</source>
-        <translation type="unfinished"></translation>
+        <translation>Tato osa mnohoúhelníky odděluje: nemohou se dotýkat a&#xa0;test tady končí (žádná srážka).</translation>
     </message>
     <message>
         <source>The least overlap of all axes: this axis is the contact normal, and the overlap is the depth.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejmenší překryv ze všech os: tato osa je normála kontaktu a&#xa0;překryv je hloubka průniku.</translation>
     </message>
     <message>
         <source>No pair of polygons to test.</source>
-        <translation type="unfinished"></translation>
+        <translation>Žádná dvojice mnohoúhelníků k&#xa0;testování.</translation>
     </message>
     <message>
         <source>Axis %1 of %2 tested so far: no separating axis yet.</source>
-        <translation type="unfinished"></translation>
+        <translation>Otestována osa %1 z&#xa0;%2: oddělující osa zatím nenalezena.</translation>
     </message>
     <message>
         <source>Separated: axis %1 has a gap, so the test stops there.</source>
-        <translation type="unfinished"></translation>
+        <translation>Odděleno: na ose %1 je mezera, a&#xa0;tak tam test končí.</translation>
     </message>
     <message>
         <source>Overlapping: no axis separates them.</source>
-        <translation type="unfinished"></translation>
+        <translation>Překrývají se: žádná osa je neodděluje.</translation>
     </message>
     <message>
         <source>The test needed %1 of at most %2 axes (one per edge, %3 + %4), each projecting all %2 vertices: %5 projections, against the paper&apos;s worst case of (k₁ + k₂)² = %6.</source>
-        <translation type="unfinished"></translation>
+        <translation>Test potřeboval %1 z&#xa0;nejvýše %2&#xa0;os (jedna na hranu, %3 + %4) a&#xa0;na každé promítl všech %2&#xa0;vrcholů: celkem %5&#xa0;projekcí, oproti nejhoršímu případu z&#xa0;výchozího článku (k₁ + k₂)² = %6.</translation>
     </message>
     <message>
         <source>Least overlap on axis %1: normal (%2, %3) from A to B, depth %4 m, %5 contact point(s) from clipping.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejmenší překryv na ose %1: normála (%2; %3) od A&#xa0;k&#xa0;B, hloubka %4&#xa0;m, kontaktní body z&#xa0;ořezání: %5.</translation>
     </message>
 </context>
 <context>
@@ -2065,109 +2080,109 @@ B %3 … %4</source>
     <name>rigidlab::ui::WorkPrecisionPlot</name>
     <message>
         <source>Error vs run time</source>
-        <translation type="unfinished"></translation>
+        <translation>Chyba vs. doba běhu</translation>
     </message>
     <message>
         <source>CPU time of the run [s]</source>
-        <translation type="unfinished"></translation>
+        <translation>čas CPU běhu [s]</translation>
     </message>
     <message>
         <source>final position error</source>
-        <translation type="unfinished"></translation>
+        <translation>chyba koncové polohy</translation>
     </message>
     <message>
         <source>Error vs run time: %1</source>
-        <translation type="unfinished"></translation>
+        <translation>Chyba vs. doba běhu: %1</translation>
     </message>
     <message>
         <source>p = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>p = %1</translation>
     </message>
     <message>
         <source>order: needs a second run</source>
-        <translation type="unfinished"></translation>
+        <translation>řád: je potřeba druhý běh</translation>
     </message>
     <message>
         <source>no order: error at round-off</source>
-        <translation type="unfinished"></translation>
+        <translation>řád nelze určit: chyba na úrovni zaokrouhlení</translation>
     </message>
     <message>
         <source>no order: error too large</source>
-        <translation type="unfinished"></translation>
+        <translation>řád nelze určit: chyba je příliš velká</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::WorldView</name>
     <message>
         <source>%1 — blew up at t = %2 s</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 – výpočet „vybuchl“ v&#xa0;čase t = %2&#xa0;s</translation>
     </message>
     <message>
         <source>%1 — stopped at t = %2 s: %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 – zastaveno v&#xa0;čase t = %2&#xa0;s: %3</translation>
     </message>
     <message>
         <source>%1 (solid)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (plná tělesa)</translation>
     </message>
     <message>
         <source>%1 (outline)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (obrysy)</translation>
     </message>
     <message>
         <source>%1 (solid): %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (plná tělesa): %2</translation>
     </message>
     <message>
         <source>%1 (outline): %2</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 (obrysy): %2</translation>
     </message>
     <message>
         <source>%1 m</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;m</translation>
     </message>
     <message>
         <source>%1 cm</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;cm</translation>
     </message>
     <message>
         <source>%1 stopped</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: zastaveno</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::displayNames</name>
     <message>
         <source>Explicit Euler</source>
-        <translation type="unfinished"></translation>
+        <translation>Explicitní Eulerova metoda</translation>
     </message>
     <message>
         <source>Symplectic Euler</source>
-        <translation type="unfinished"></translation>
+        <translation>Symplektická Eulerova metoda</translation>
     </message>
     <message>
         <source>Velocity Verlet</source>
-        <translation type="unfinished"></translation>
+        <translation>Rychlostní Verletova metoda</translation>
     </message>
     <message>
         <source>Runge–Kutta 4</source>
-        <translation type="unfinished"></translation>
+        <translation>Runge–Kutta 4.&#xa0;řádu</translation>
     </message>
     <message>
         <source>Dormand–Prince 5(4), adaptive</source>
-        <translation type="unfinished"></translation>
+        <translation>Dormand–Prince 5(4), adaptivní</translation>
     </message>
     <message>
         <source>Implicit midpoint</source>
-        <translation type="unfinished"></translation>
+        <translation>Implicitní metoda středního bodu</translation>
     </message>
     <message>
         <source>Seed impulse</source>
-        <translation type="unfinished"></translation>
+        <translation>Kontakt po kontaktu</translation>
     </message>
     <message>
         <source>Sequential impulse</source>
-        <translation type="unfinished"></translation>
+        <translation>Postupné impulsy</translation>
     </message>
     <message>
         <source>broad phase</source>
@@ -2206,19 +2221,19 @@ B %3 … %4</source>
     <name>rigidlab::ui::exportPlot</name>
     <message>
         <source>cannot write %1: %2</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze zapsat %1: %2</translation>
     </message>
     <message>
         <source>not enough memory for a %1 x %2 px image</source>
-        <translation type="unfinished"></translation>
+        <translation>nedostatek paměti pro obrázek %1&#xa0;× %2&#xa0;px</translation>
     </message>
     <message>
         <source>could not start drawing the PDF</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze začít kreslit PDF</translation>
     </message>
     <message>
         <source>could not start drawing the SVG</source>
-        <translation type="unfinished"></translation>
+        <translation>nelze začít kreslit SVG</translation>
     </message>
 </context>
 </TS>
