@@ -3,6 +3,7 @@
 
 #include "cli_common.h"
 
+#include "common/language.h"
 #include "plots/lesson_export.h"
 
 #include "format/data_dirs.h"
@@ -88,6 +89,11 @@ int commandLesson(const QStringList& words)
         return kExitOk;
     }
 
+    // The handouts speak the lesson's language (titles, axes, legends, captions, and the
+    // locale's decimal comma on the axes); this program's own messages stay English, so the
+    // translation comes in only now, after loading. Files' numbers keep the decimal point.
+    if (const auto lang = args.value(QStringLiteral("lang")))
+        ui::applyLanguage(*lang);
     const ui::PlotFilesResult written = ui::exportLessonPlots(loaded.lesson, *exportDir);
     for (const QString& file : written.files)
         printOut(QStringLiteral("wrote %1\n").arg(QDir::toNativeSeparators(file)));

@@ -60,7 +60,8 @@ Commands:
       --export DIR           run every step that has plots for its exportTime and write
                              them as PNG, PDF, SVG and CSV into DIR/NN-step-title/
       --lang en|cs           the language of the lesson's texts: outline, step titles,
-                             plot captions (default en; English where a text has none)
+                             plot titles, axes, legends and captions of --export (default en;
+                             English where a text has none)
   lessons                    the shipped lessons: each file's path and title (the data
                              folder: RIGIDLAB_DATA_DIR, else beside the installed program),
                              then the user's own (~/.local/share/rigidlab/lessons), marked

@@ -3,6 +3,7 @@
 // exactly as the window makes them, captions, and the headless export of every shipped
 // lesson through rigidlab-cli, each file checked for being what it says it is.
 
+#include "common/language.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_widget.h"
 #include "plots/step_sampler.h"
@@ -140,6 +141,7 @@ private slots:
     void cliExportsEveryLesson_data();
     void cliExportsEveryLesson();
     void cliLessonErrors();
+    void cliExportsInCzech();
 };
 
 void TestLessonExport::stepPlotsAreTheNamedOnes()
@@ -410,6 +412,43 @@ void TestLessonExport::cliLessonErrors()
                   blocker + QStringLiteral("/out")});
     QCOMPARE(run.exitCode, 1);
     QVERIFY2(run.err.contains("cannot make the folder"), run.err.constData());
+}
+
+void TestLessonExport::cliExportsInCzech()
+{
+    // `--lang cs`: the handouts' captions are the Czech ones the window would write (read back
+    // from the SVG), with the decimal comma; the English run's captions are not.
+    const QString path = QDir(kLessonsDir).filePath(QStringLiteral("energy_drift.json"));
+    QTemporaryDir dir;
+    const CliRun run = runCli({QStringLiteral("lesson"), path, QStringLiteral("--export"),
+                               dir.path(), QStringLiteral("--lang"), QStringLiteral("cs")});
+    QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY(ui::applyLanguage(QStringLiteral("cs")));
+    const lessons::LessonLoadResult cs =
+        lessons::loadLessonFile(path, lessons::LessonLoadOptions{QStringLiteral("cs")});
+    const lessons::LessonLoadResult en =
+        lessons::loadLessonFile(path, lessons::LessonLoadOptions{QStringLiteral("en")});
+    QVERIFY(cs.ok && en.ok);
+    int checked = 0;
+    for (int i = 0; i < static_cast<int>(cs.lesson.steps.size()); ++i) {
+        const lessons::LessonStep& step = cs.lesson.steps[static_cast<std::size_t>(i)];
+        if (step.plots.isEmpty())
+            continue;
+        const std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
+        const QString caption = ui::stepCaption(cs.lesson, i, worlds[0].def());
+        QVERIFY2(caption.contains(cs.lesson.title), qPrintable(caption));
+        QVERIFY(cs.lesson.title != en.lesson.title);
+        QVERIFY2(caption.contains(QStringLiteral("dt = 0,")), qPrintable(caption));
+        const QDir folder(QDir(dir.path()).filePath(ui::stepFolderName(cs.lesson, i)));
+        for (const QString& name : step.plots) {
+            const QString svg = folder.filePath(name + QStringLiteral(".svg"));
+            const QString problem = checkFile(svg, caption);
+            QVERIFY2(problem.isEmpty(), qPrintable(svg + QStringLiteral(": ") + problem));
+            ++checked;
+        }
+    }
+    QVERIFY(ui::applyLanguage(QStringLiteral("en")));
+    QVERIFY(checked > 0);
 }
 
 RIGIDLAB_TEST_MAIN(TestLessonExport)

@@ -41,7 +41,10 @@ QString num(double v, int digits = 3)
 /// A vector on one line, for the wide table.
 QString vec(const physics::Vec2& v)
 {
-    return QStringLiteral("(%1, %2)").arg(num(v.x()), num(v.y()));
+    // A language with a decimal comma separates the components otherwise ("(0,5; 1,2)").
+    return QCoreApplication::translate("rigidlab::ui::CollisionPanel", "(%1, %2)",
+                                       "a vector's x and y")
+        .arg(num(v.x()), num(v.y()));
 }
 
 /// A vector on two lines, for the narrow table.

@@ -9,6 +9,7 @@
 
 #include <QCoreApplication>
 #include <QDir>
+#include <QLocale>
 
 #include <cmath>
 #include <limits>
@@ -103,9 +104,15 @@ std::vector<PlotWidget*> makeStepPlots(const lessons::LessonStep& step, QWidget*
 
 QString stepFolderName(const lessons::Lesson& lesson, int step)
 {
-    const QString title = lesson.steps.at(static_cast<std::size_t>(step)).title.toLower();
+    // Letters without their accents ("Čtyři" → "ctyri"), so that a Czech title gives a folder
+    // name any file system and any script takes.
+    const QString title = lesson.steps.at(static_cast<std::size_t>(step))
+                              .title.toLower()
+                              .normalized(QString::NormalizationForm_D);
     QString slug;
     for (const QChar c : title) {
+        if (c.category() == QChar::Mark_NonSpacing)
+            continue;
         if (c.isLetterOrNumber() && c.unicode() < 128)
             slug += c;
         else if (!slug.isEmpty() && !slug.endsWith(u'-'))
@@ -140,7 +147,7 @@ QString stepCaption(const lessons::Lesson& lesson, int step, const physics::Worl
             names.append(methodDisplayName(s.compare->label(i)));
         how += LessonExport::tr(" · solvers %1").arg(names.join(QStringLiteral(", ")));
     }
-    how += LessonExport::tr(" · dt = %1 s").arg(QString::number(settings.dt, 'g', 6));
+    how += LessonExport::tr(" · dt = %1 s").arg(QLocale().toString(settings.dt, 'g', 6));
     return first + u'\n' + how;
 }
 

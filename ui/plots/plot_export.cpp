@@ -284,16 +284,15 @@ QString suffixFor(ExportFormat format)
 
 QString fileFilterFor(ExportFormat format)
 {
-    const char* context = "rigidlab::ui::exportPlot";
     switch (format) {
     case ExportFormat::Png:
-        return QCoreApplication::translate(context, "PNG image (*.png)");
+        return QCoreApplication::translate("rigidlab::ui::exportPlot", "PNG image (*.png)");
     case ExportFormat::Pdf:
-        return QCoreApplication::translate(context, "PDF document (*.pdf)");
+        return QCoreApplication::translate("rigidlab::ui::exportPlot", "PDF document (*.pdf)");
     case ExportFormat::Svg:
-        return QCoreApplication::translate(context, "SVG drawing (*.svg)");
+        return QCoreApplication::translate("rigidlab::ui::exportPlot", "SVG drawing (*.svg)");
     case ExportFormat::Csv:
-        return QCoreApplication::translate(context, "CSV table (*.csv)");
+        return QCoreApplication::translate("rigidlab::ui::exportPlot", "CSV table (*.csv)");
     }
     Q_UNREACHABLE();
 }
@@ -301,13 +300,13 @@ QString fileFilterFor(ExportFormat format)
 ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat format,
                         const ExportOptions& options)
 {
-    const char* context = "rigidlab::ui::exportPlot";
     if (path.isEmpty())
-        return {false, QCoreApplication::translate(context, "cannot export: no file name given")};
+        return {false, QCoreApplication::translate("rigidlab::ui::exportPlot",
+                                                   "cannot export: no file name given")};
     if (format != ExportFormat::Csv &&
         (options.logicalSize.isEmpty() || !(options.pngPixelRatio > 0)))
-        return {false,
-                cannotWrite(path, QCoreApplication::translate(context, "empty picture size"))};
+        return {false, cannotWrite(path, QCoreApplication::translate("rigidlab::ui::exportPlot",
+                                                                     "empty picture size"))};
 
     // Written to a temporary file next to `path`, renamed over it only by commit().
     // Unbuffered, so that a failing write reports its cause at once.
