@@ -100,14 +100,14 @@
     </message>
     <message>
         <source>Language of the interface: cs or en (View › Language saves a choice; without either, the system&apos;s language).</source>
-        <translation type="unfinished"></translation>
+        <translation>Jazyk rozhraní: cs nebo en (volbu uloží i&#xa0;Zobrazení › Jazyk; bez obojího jazyk systému).</translation>
     </message>
     <message numerus="yes">
         <source>%n file(s) written into %1</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n soubor zapsán do %1</numerusform>
+            <numerusform>%n soubory zapsány do %1</numerusform>
+            <numerusform>%n souborů zapsáno do %1</numerusform>
         </translation>
     </message>
 </context>
@@ -269,499 +269,499 @@
     <name>FileMessages</name>
     <message>
         <source>an array</source>
-        <translation type="unfinished"></translation>
+        <translation>pole</translation>
     </message>
     <message>
         <source>an object</source>
-        <translation type="unfinished"></translation>
+        <translation>objekt</translation>
     </message>
     <message>
         <source>: cannot read: is a directory, not a file</source>
-        <translation type="unfinished"></translation>
+        <translation>: nelze číst: je to složka, ne soubor</translation>
     </message>
     <message>
         <source>: cannot read: </source>
-        <translation type="unfinished"></translation>
+        <translation>: nelze číst: </translation>
     </message>
     <message>
         <source>: too large: more than %1 bytes (the limit is %2 MiB)</source>
-        <translation type="unfinished"></translation>
+        <translation>: příliš velký: víc než %1 bajtů (limit je %2&#xa0;MiB)</translation>
     </message>
     <message>
         <source>unterminated object: a &apos;,&apos; or the closing &apos;}&apos; is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>neukončený objekt: chybí &apos;,&apos; nebo uzavírací &apos;}&apos;</translation>
     </message>
     <message>
         <source>a &apos;:&apos; is missing after a key</source>
-        <translation type="unfinished"></translation>
+        <translation>za klíčem chybí &apos;:&apos;</translation>
     </message>
     <message>
         <source>unterminated array: a &apos;,&apos; or the closing &apos;]&apos; is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>neukončené pole: chybí &apos;,&apos; nebo uzavírací &apos;]&apos;</translation>
     </message>
     <message>
         <source>a &apos;,&apos; is missing between two values</source>
-        <translation type="unfinished"></translation>
+        <translation>mezi dvěma hodnotami chybí &apos;,&apos;</translation>
     </message>
     <message>
         <source>not a JSON value (text needs double quotes; true, false and null are lower case)</source>
-        <translation type="unfinished"></translation>
+        <translation>není hodnota JSON (text patří do dvojitých uvozovek; true, false a&#xa0;null se píší malými písmeny)</translation>
     </message>
     <message>
         <source>the file ends inside a number</source>
-        <translation type="unfinished"></translation>
+        <translation>soubor končí uprostřed čísla</translation>
     </message>
     <message>
         <source>not a valid number</source>
-        <translation type="unfinished"></translation>
+        <translation>neplatné číslo</translation>
     </message>
     <message>
         <source>an invalid escape sequence in a string</source>
-        <translation type="unfinished"></translation>
+        <translation>neplatná escape sekvence v&#xa0;řetězci</translation>
     </message>
     <message>
         <source>the text is not valid UTF-8</source>
-        <translation type="unfinished"></translation>
+        <translation>text není platné UTF-8</translation>
     </message>
     <message>
         <source>unterminated string: the closing &apos;&quot;&apos; is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>neukončený řetězec: chybí uzavírací &apos;&quot;&apos;</translation>
     </message>
     <message>
         <source>a value is missing here (JSON allows no trailing comma)</source>
-        <translation type="unfinished"></translation>
+        <translation>tady chybí hodnota (JSON nedovoluje čárku za poslední položkou)</translation>
     </message>
     <message>
         <source>nested too deeply</source>
-        <translation type="unfinished"></translation>
+        <translation>příliš hluboké vnoření</translation>
     </message>
     <message>
         <source>too large for the JSON reader</source>
-        <translation type="unfinished"></translation>
+        <translation>příliš velké pro čtečku JSON</translation>
     </message>
     <message>
         <source>more text after the end of the JSON document</source>
-        <translation type="unfinished"></translation>
+        <translation>za koncem dokumentu JSON následuje další text</translation>
     </message>
     <message>
         <source>not valid JSON</source>
-        <translation type="unfinished"></translation>
+        <translation>neplatný JSON</translation>
     </message>
     <message>
         <source>from %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>od %1 do %2</translation>
     </message>
     <message>
         <source>: too large: %1 bytes (the limit is %2 MiB)</source>
-        <translation type="unfinished"></translation>
+        <translation>: příliš velký: %1 bajtů (limit je %2&#xa0;MiB)</translation>
     </message>
     <message>
         <source>: line 1, column 1: the file is empty</source>
-        <translation type="unfinished"></translation>
+        <translation>: řádek 1, sloupec 1: soubor je prázdný</translation>
     </message>
     <message>
         <source>%1: line %2, column %3: arrays and objects nested deeper than %4 levels (the limit)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: řádek %2, sloupec %3: pole a&#xa0;objekty vnořené hlouběji než do %4 úrovní (limit)</translation>
     </message>
     <message>
         <source>number %1 is not a finite double (out of range or malformed)</source>
-        <translation type="unfinished"></translation>
+        <translation>číslo %1 není konečné číslo typu double (je mimo rozsah nebo chybně zapsané)</translation>
     </message>
     <message>
         <source>%1: line %2, column %3: %4</source>
-        <translation type="unfinished"></translation>
+        <translation>%1: řádek %2, sloupec %3: %4</translation>
     </message>
     <message>
         <source>unknown key (allowed here: %1)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámý klíč (tady jsou povoleny: %1)</translation>
     </message>
     <message>
         <source>must be an object {...}, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být objekt {...}, je </translation>
     </message>
     <message>
         <source>missing: %1 starts with &quot;%2&quot;: %3 (the format version)</source>
-        <translation type="unfinished"></translation>
+        <translation>chybí: %1 začíná klíčem &quot;%2&quot;: %3 (verze formátu)</translation>
     </message>
     <message>
         <source>unsupported format version %1 (this RigidLab reads version %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>nepodporovaná verze formátu %1 (tento RigidLab čte verzi %2)</translation>
     </message>
     <message>
         <source>must be an array [...], got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být pole [...], je </translation>
     </message>
     <message>
         <source>must be a number</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být číslo</translation>
     </message>
     <message>
         <source>must be a positive number</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být kladné číslo</translation>
     </message>
     <message>
         <source>must be a number &gt;= 0</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být číslo &gt;= 0</translation>
     </message>
     <message>
         <source>must be a number from 0 to 1</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být číslo od 0 do 1</translation>
     </message>
     <message>
         <source>, got </source>
-        <translation type="unfinished"></translation>
+        <translation>, je </translation>
     </message>
     <message>
         <source>an array of %1 elements</source>
-        <translation type="unfinished"></translation>
+        <translation>pole s&#xa0;počtem prvků %1</translation>
     </message>
     <message>
         <source>must be a pair of numbers [x, y], got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být dvojice čísel [x, y], je </translation>
     </message>
     <message>
         <source>required, but missing</source>
-        <translation type="unfinished"></translation>
+        <translation>povinné, ale chybí</translation>
     </message>
     <message>
         <source>must be a whole number from %1 to %2</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být celé číslo od %1 do %2</translation>
     </message>
     <message>
         <source>must be a string &quot;...&quot;, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být řetězec &quot;...&quot;, je </translation>
     </message>
     <message>
         <source>must be true or false, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být true nebo false, je </translation>
     </message>
     <message>
         <source>must be %1, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být %1, je %2</translation>
     </message>
     <message>
         <source>must be one line (it is shown in the lesson menu); put longer text in &quot;summary&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být na jednom řádku (zobrazuje se v&#xa0;nabídce lekcí); delší text patří do &quot;summary&quot;</translation>
     </message>
     <message>
         <source>is %1 characters long; at most %2 fit a menu line (put longer text in &quot;summary&quot;)</source>
-        <translation type="unfinished"></translation>
+        <translation>má %1 znaků; na řádek nabídky se vejde nejvýš %2 (delší text patří do &quot;summary&quot;)</translation>
     </message>
     <message>
         <source>must not be empty (leave the key out instead)</source>
-        <translation type="unfinished"></translation>
+        <translation>nesmí být prázdné (klíč raději vynechte)</translation>
     </message>
     <message>
         <source>a lesson file</source>
-        <translation type="unfinished"></translation>
+        <translation>soubor lekce</translation>
     </message>
     <message>
         <source>must not be empty</source>
-        <translation type="unfinished"></translation>
+        <translation>nesmí být prázdné</translation>
     </message>
     <message>
         <source>must be a non-empty string &quot;...&quot;, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být neprázdný řetězec &quot;...&quot;, je </translation>
     </message>
     <message>
         <source>a lesson needs 1 to %1 steps, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>lekce potřebuje 1 až %1 kroků, má %2</translation>
     </message>
     <message>
         <source>the steps up to this one hold %1 bodies in all, more than the limit of %2 for a lesson</source>
-        <translation type="unfinished"></translation>
+        <translation>kroky až po tento obsahují celkem %1 těles, víc než limit %2 pro lekci</translation>
     </message>
     <message>
         <source>&quot;%1&quot; plots the worlds of &quot;compare&quot;, and this step has none</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; kreslí světy z&#xa0;&quot;compare&quot;, ale tento krok žádné nemá</translation>
     </message>
     <message>
         <source>must be at most %1 s, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být nejvýš %1&#xa0;s, je %2</translation>
     </message>
     <message>
         <source>%1 s at a step of %2 s is more than %3 steps</source>
-        <translation type="unfinished"></translation>
+        <translation>%1&#xa0;s při kroku %2&#xa0;s je víc než %3 kroků</translation>
     </message>
     <message>
         <source>the &quot;sat&quot; panel needs the pair it looks at: add &quot;sat&quot;: {&quot;a&quot;: ID, &quot;b&quot;: ID} to the step</source>
-        <translation type="unfinished"></translation>
+        <translation>panel &quot;sat&quot; potřebuje dvojici, kterou zkoumá: přidejte do kroku &quot;sat&quot;: {&quot;a&quot;: ID, &quot;b&quot;: ID}</translation>
     </message>
     <message>
         <source>must be a string or an array of strings, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být řetězec nebo pole řetězců, je </translation>
     </message>
     <message>
         <source>required, but missing (a scene object, or the path of a scene file)</source>
-        <translation type="unfinished"></translation>
+        <translation>povinné, ale chybí (objekt scény nebo cesta k&#xa0;souboru scény)</translation>
     </message>
     <message>
         <source>must be a scene object {...} or the path of a scene file, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být objekt scény {...} nebo cesta k&#xa0;souboru scény, je </translation>
     </message>
     <message>
         <source>must name a scene file, got an empty path</source>
-        <translation type="unfinished"></translation>
+        <translation>musí uvádět soubor scény, je prázdná cesta</translation>
     </message>
     <message>
         <source>use &apos;/&apos; between folders, got &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>mezi složkami pište &apos;/&apos;, je &quot;%1&quot;</translation>
     </message>
     <message>
         <source>must be a path relative to the lesson&apos;s folder, got &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být cesta relativní ke složce lekce, je &quot;%1&quot;</translation>
     </message>
     <message>
         <source>must not hold control characters</source>
-        <translation type="unfinished"></translation>
+        <translation>nesmí obsahovat řídicí znaky</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is not a plain file</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; není obyčejný soubor</translation>
     </message>
     <message>
         <source>unknown integrator &quot;%1&quot; (expected %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámý integrátor &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
         <source>must be from %1 to %2 s, got %3</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být od %1 do %2&#xa0;s, je %3</translation>
     </message>
     <message>
         <source>unknown solver &quot;%1&quot; (expected %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámý řešič &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
         <source>must be from %1 to %2, got %3</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být od %1 do %2, je %3</translation>
     </message>
     <message>
         <source>compare &quot;integrators&quot; or &quot;solvers&quot;, not both</source>
-        <translation type="unfinished"></translation>
+        <translation>porovnávejte &quot;integrators&quot;, nebo &quot;solvers&quot;, ne obojí</translation>
     </message>
     <message>
         <source>needs &quot;integrators&quot; or &quot;solvers&quot;: the worlds to run side by side</source>
-        <translation type="unfinished"></translation>
+        <translation>potřebuje &quot;integrators&quot; nebo &quot;solvers&quot;: světy, které poběží vedle sebe</translation>
     </message>
     <message>
         <source>settings.%1 is given too: the main world runs the first of this list, so leave settings.%1 out</source>
-        <translation type="unfinished"></translation>
+        <translation>zadáno je i&#xa0;settings.%1: hlavní svět běží s&#xa0;první položkou tohoto seznamu, settings.%1 proto vynechte</translation>
     </message>
     <message>
         <source>compares 2 to %1 worlds, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>porovnává 2 až %1 světů, je jich %2</translation>
     </message>
     <message>
         <source>must be a name &quot;...&quot;, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být název &quot;...&quot;, je </translation>
     </message>
     <message>
         <source>&quot;%1&quot; is listed twice</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; je uvedeno dvakrát</translation>
     </message>
     <message>
         <source>unknown %1 &quot;%2&quot; (expected %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>%1 &quot;%2&quot; neexistuje (očekáváno: %3)</translation>
     </message>
     <message>
         <source>: the top level must be an object {...}, got an array</source>
-        <translation type="unfinished"></translation>
+        <translation>: nejvyšší úroveň musí být objekt {...}, je pole</translation>
     </message>
     <message>
         <source>no body with id &quot;%1&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>žádné těleso nemá id &quot;%1&quot;</translation>
     </message>
     <message>
         <source>unknown measure &quot;%1&quot; (expected %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámé měření &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
         <source>body &quot;%1&quot; is static: it never moves</source>
-        <translation type="unfinished"></translation>
+        <translation>těleso &quot;%1&quot; je statické: nikdy se nepohne</translation>
     </message>
     <message>
         <source>body &quot;%1&quot; is kinematic: it never bounces</source>
-        <translation type="unfinished"></translation>
+        <translation>těleso &quot;%1&quot; je kinematické: nikdy se neodrazí</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: this step shows no panel &quot;%2&quot; (its panels: %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot;: tento krok nezobrazuje panel &quot;%2&quot; (jeho panely: %3)</translation>
     </message>
     <message>
         <source>&quot;%1&quot;: this step shows no plot &quot;%2&quot; (its plots: %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot;: tento krok nezobrazuje graf &quot;%2&quot; (jeho grafy: %3)</translation>
     </message>
     <message>
         <source>&quot;%1&quot; is a column of the %2 panel, which this step does not show</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; je sloupec panelu %2, který tento krok nezobrazuje</translation>
     </message>
     <message>
         <source>unknown name &quot;%1&quot; (expected run, panel:NAME, plot:NAME, %2, %3)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámý název &quot;%1&quot; (očekáváno: run, panel:NAME, plot:NAME, %2, %3)</translation>
     </message>
     <message>
         <source>required, but missing (what the answer is checked against)</source>
-        <translation type="unfinished"></translation>
+        <translation>povinné, ale chybí (s&#xa0;čím se odpověď porovnává)</translation>
     </message>
     <message>
         <source>0, and so is absoluteTolerance: no typed answer would ever be right</source>
-        <translation type="unfinished"></translation>
+        <translation>0, stejně jako absoluteTolerance: žádná zadaná odpověď by nikdy nebyla správná</translation>
     </message>
     <message>
         <source>must not be empty (leave the key out for no hint)</source>
-        <translation type="unfinished"></translation>
+        <translation>nesmí být prázdné (bez nápovědy klíč vynechte)</translation>
     </message>
     <message>
         <source>the same body as &quot;a&quot;: the test needs two bodies</source>
-        <translation type="unfinished"></translation>
+        <translation>totéž těleso jako &quot;a&quot;: test potřebuje dvě tělesa</translation>
     </message>
     <message>
         <source>body &quot;%1&quot; is a circle: the separating axis test steps through polygons (boxes and polygons)</source>
-        <translation type="unfinished"></translation>
+        <translation>těleso &quot;%1&quot; je kruh: test oddělující osy prochází mnohoúhelníky (obdélníky a&#xa0;mnohoúhelníky)</translation>
     </message>
     <message>
         <source>%1 questions, more than the limit of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>počet otázek %1 překračuje limit %2</translation>
     </message>
     <message>
         <source>a scene file</source>
-        <translation type="unfinished"></translation>
+        <translation>soubor scény</translation>
     </message>
     <message>
         <source>required, but missing (it may be empty: [])</source>
-        <translation type="unfinished"></translation>
+        <translation>povinné, ale chybí (smí být prázdné: [])</translation>
     </message>
     <message>
         <source>%1 bodies, more than the limit of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>počet těles %1 překračuje limit %2</translation>
     </message>
     <message>
         <source>longer than %1 characters</source>
-        <translation type="unfinished"></translation>
+        <translation>delší než %1 znaků</translation>
     </message>
     <message>
         <source>duplicate id &quot;%1&quot; (bodies[%2] has it already)</source>
-        <translation type="unfinished"></translation>
+        <translation>opakované id &quot;%1&quot; (už ho má bodies[%2])</translation>
     </message>
     <message>
         <source>unknown body type &quot;%1&quot; (expected dynamic, static, kinematic)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámý typ tělesa &quot;%1&quot; (očekáváno: dynamic, static, kinematic)</translation>
     </message>
     <message>
         <source>give &quot;density&quot; or &quot;mass&quot;, not both</source>
-        <translation type="unfinished"></translation>
+        <translation>zadejte &quot;density&quot;, nebo &quot;mass&quot;, ne obojí</translation>
     </message>
     <message>
         <source>too large or too small: its area works out as %1 m^2</source>
-        <translation type="unfinished"></translation>
+        <translation>příliš velký nebo příliš malý: obsah vychází %1&#xa0;m^2</translation>
     </message>
     <message>
         <source>the mass works out as %1 kg (density times area); it must be %2</source>
-        <translation type="unfinished"></translation>
+        <translation>hmotnost vychází %1&#xa0;kg (hustota krát obsah); musí být %2</translation>
     </message>
     <message>
         <source>a static body never moves: its velocity is ignored (make it &quot;kinematic&quot; to move it)</source>
-        <translation type="unfinished"></translation>
+        <translation>statické těleso se nikdy nepohne: jeho rychlost se nepoužije (má-li se pohybovat, zadejte &quot;kinematic&quot;)</translation>
     </message>
     <message>
         <source>a polygon needs 3 to %1 vertices, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>mnohoúhelník potřebuje 3 až %1 vrcholů, má %2</translation>
     </message>
     <message>
         <source>unknown shape type &quot;%1&quot; (expected circle, box, polygon)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámý typ tvaru &quot;%1&quot; (očekáváno: circle, box, polygon)</translation>
     </message>
     <message>
         <source>required, but missing (a body id)</source>
-        <translation type="unfinished"></translation>
+        <translation>povinné, ale chybí (id tělesa)</translation>
     </message>
     <message>
         <source>must be a body id, not null</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být id tělesa, ne null</translation>
     </message>
     <message>
         <source>must be a body id (a string)%1, got %2</source>
-        <translation type="unfinished"></translation>
+        <translation>musí být id tělesa (řetězec)%1, je %2</translation>
     </message>
     <message>
         <source> or null</source>
-        <translation type="unfinished"></translation>
+        <translation> nebo null</translation>
     </message>
     <message>
         <source>%1 springs, more than the limit of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>počet pružin %1 překračuje limit %2</translation>
     </message>
     <message>
         <source>both ends are fixed in the world (a and b are null): a spring needs a body at one end</source>
-        <translation type="unfinished"></translation>
+        <translation>oba konce jsou pevně ve světě (&quot;a&quot; i&#xa0;&quot;b&quot; jsou null): pružina potřebuje těleso aspoň na jednom konci</translation>
     </message>
     <message>
         <source>the same body as &quot;a&quot;: a spring joins two bodies</source>
-        <translation type="unfinished"></translation>
+        <translation>totéž těleso jako &quot;a&quot;: pružina spojuje dvě tělesa</translation>
     </message>
     <message>
         <source>the anchors are too far apart to measure</source>
-        <translation type="unfinished"></translation>
+        <translation>kotevní body jsou od sebe příliš daleko, vzdálenost nelze změřit</translation>
     </message>
     <message>
         <source>%1 joints, more than the limit of %2</source>
-        <translation type="unfinished"></translation>
+        <translation>počet kloubů %1 překračuje limit %2</translation>
     </message>
     <message>
         <source>unknown joint type &quot;%1&quot; (expected pin)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámý typ kloubu &quot;%1&quot; (očekáváno: pin)</translation>
     </message>
     <message>
         <source>the same body as &quot;a&quot;: a pin joins two bodies</source>
-        <translation type="unfinished"></translation>
+        <translation>totéž těleso jako &quot;a&quot;: čep spojuje dvě tělesa</translation>
     </message>
     <message>
         <source>the anchors are %1 m apart at the start; the joint pulls them together at once</source>
-        <translation type="unfinished"></translation>
+        <translation>kotevní body jsou na začátku %1&#xa0;m od sebe; kloub je hned stáhne k&#xa0;sobě</translation>
     </message>
     <message>
         <source>unknown language &quot;%1&quot; (expected %2)</source>
-        <translation type="unfinished"></translation>
+        <translation>neznámý jazyk &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
         <source>needs the English text &quot;%1&quot;, shown when a language is missing</source>
-        <translation type="unfinished"></translation>
+        <translation>potřebuje anglický text &quot;%1&quot;, který se zobrazí, když jazyk chybí</translation>
     </message>
     <message>
         <source>must be %1, or an object of languages {&quot;en&quot;: ..., &quot;cs&quot;: ...}, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být %1 nebo objekt jazyků {&quot;en&quot;: ..., &quot;cs&quot;: ...}, je </translation>
     </message>
     <message>
         <source>must be a string &quot;...&quot;, or an object of languages {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být řetězec &quot;...&quot; nebo objekt jazyků {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, je </translation>
     </message>
     <message>
         <source>%1 %2, more than the limit of %3</source>
-        <translation type="unfinished"></translation>
+        <translation>%2: počet položek %1 překračuje limit %3</translation>
     </message>
     <message>
         <source>must be an array [...], or an object of languages {&quot;en&quot;: [...], &quot;cs&quot;: [...]}, got </source>
-        <translation type="unfinished"></translation>
+        <translation>musí být pole [...] nebo objekt jazyků {&quot;en&quot;: [...], &quot;cs&quot;: [...]}, je </translation>
     </message>
     <message>
         <source>no %1 text (&quot;%2&quot;); English is shown instead</source>
-        <translation type="unfinished"></translation>
+        <translation>chybí text pro jazyk %1 (&quot;%2&quot;); místo něj se zobrazí anglický</translation>
     </message>
     <message>
         <source>the lesson&apos;s folder</source>
-        <translation type="unfinished"></translation>
+        <translation>složku lekce</translation>
     </message>
     <message>
         <source>the data folder (scenes/ and lessons/)</source>
-        <translation type="unfinished"></translation>
+        <translation>datovou složku (scenes/ a&#xa0;lessons/)</translation>
     </message>
     <message>
         <source>must not leave %1, got &quot;%2&quot;</source>
-        <translation type="unfinished"></translation>
+        <translation>nesmí vést mimo %1, je &quot;%2&quot;</translation>
     </message>
     <message>
         <source>&quot;%1&quot; leads out of %2 (through a symbolic link)</source>
-        <translation type="unfinished"></translation>
+        <translation>&quot;%1&quot; vede mimo %2 (přes symbolický odkaz)</translation>
     </message>
 </context>
 <context>
@@ -796,19 +796,19 @@
     </message>
     <message>
         <source>Run the simulation past the top of the first bounce first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejdřív nechte simulaci běžet až za vrchol prvního odskoku.</translation>
     </message>
     <message>
         <source>Run the simulation past the top of the second bounce first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejdřív nechte simulaci běžet až za vrchol druhého odskoku.</translation>
     </message>
     <message>
         <source>Run the simulation past the top of the third bounce first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejdřív nechte simulaci běžet až za vrchol třetího odskoku.</translation>
     </message>
     <message>
         <source>Run the simulation past the top of bounce number %1 first.</source>
-        <translation type="unfinished"></translation>
+        <translation>Nejdřív nechte simulaci běžet až za vrchol odskoku číslo %1.</translation>
     </message>
 </context>
 <context>
@@ -943,7 +943,7 @@
     </message>
     <message>
         <source> (your own)</source>
-        <translation type="unfinished"></translation>
+        <translation> (vlastní)</translation>
     </message>
 </context>
 <context>
@@ -1710,7 +1710,7 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     </message>
     <message>
         <source>&amp;Language</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Jazyk</translation>
     </message>
     <message>
         <source>&amp;Velocity vectors</source>
@@ -1762,15 +1762,15 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     </message>
     <message numerus="yes">
         <source> · %1 error estimate %2 (%Ln substep(s))</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform> · %1: odhad chyby %2 (%Ln podkrok)</numerusform>
+            <numerusform> · %1: odhad chyby %2 (%Ln podkroky)</numerusform>
+            <numerusform> · %1: odhad chyby %2 (%Ln podkroků)</numerusform>
         </translation>
     </message>
     <message>
         <source>&amp;Your own scenes</source>
-        <translation type="unfinished"></translation>
+        <translation>&amp;Vlastní scény</translation>
     </message>
 </context>
 <context>
@@ -2045,35 +2045,35 @@ B&#xa0;%3 … %4</translation>
     <name>rigidlab::ui::SimulationController</name>
     <message>
         <source>dt = %1 s</source>
-        <translation type="unfinished"></translation>
+        <translation>dt = %1&#xa0;s</translation>
     </message>
     <message numerus="yes">
         <source>%n iteration(s)</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%n iterace</numerusform>
+            <numerusform>%n iterace</numerusform>
+            <numerusform>%n iterací</numerusform>
         </translation>
     </message>
     <message>
         <source>e = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>e = %1</translation>
     </message>
     <message>
         <source>μ = %1</source>
-        <translation type="unfinished"></translation>
+        <translation>μ = %1</translation>
     </message>
     <message>
         <source>gravity on</source>
-        <translation type="unfinished"></translation>
+        <translation>tíhová síla zapnuta</translation>
     </message>
     <message>
         <source>gravity off</source>
-        <translation type="unfinished"></translation>
+        <translation>tíhová síla vypnuta</translation>
     </message>
     <message>
         <source>m = %1 kg</source>
-        <translation type="unfinished"></translation>
+        <translation>m = %1&#xa0;kg</translation>
     </message>
 </context>
 <context>
@@ -2186,35 +2186,35 @@ B&#xa0;%3 … %4</translation>
     </message>
     <message>
         <source>broad phase</source>
-        <translation type="unfinished"></translation>
+        <translation>hrubá fáze</translation>
     </message>
     <message>
         <source>narrow phase</source>
-        <translation type="unfinished"></translation>
+        <translation>jemná fáze</translation>
     </message>
     <message>
         <source>islands</source>
-        <translation type="unfinished"></translation>
+        <translation>ostrovy</translation>
     </message>
     <message>
         <source>forces</source>
-        <translation type="unfinished"></translation>
+        <translation>síly</translation>
     </message>
     <message>
         <source>integration</source>
-        <translation type="unfinished"></translation>
+        <translation>integrace</translation>
     </message>
     <message>
         <source>contact solve</source>
-        <translation type="unfinished"></translation>
+        <translation>řešení kontaktů</translation>
     </message>
     <message>
         <source>sleep</source>
-        <translation type="unfinished"></translation>
+        <translation>uspávání</translation>
     </message>
     <message>
         <source>diagnostics</source>
-        <translation type="unfinished"></translation>
+        <translation>diagnostika</translation>
     </message>
 </context>
 <context>
