@@ -1065,6 +1065,11 @@ y %2</translation>
         <source>%1: ω without (r×n)²/I terms</source>
         <translation>%1: ω bez členů (r×n)²/I</translation>
     </message>
+    <message>
+        <source>(%1, %2)</source>
+        <comment>a vector&apos;s x and y</comment>
+        <translation>(%1; %2)</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::ControlPanel</name>
@@ -2234,6 +2239,30 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>could not start drawing the SVG</source>
         <translation>nelze začít kreslit SVG</translation>
+    </message>
+    <message>
+        <source>PNG image (*.png)</source>
+        <translation>Obrázek PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>Dokument PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>SVG drawing (*.svg)</source>
+        <translation>Kresba SVG (*.svg)</translation>
+    </message>
+    <message>
+        <source>CSV table (*.csv)</source>
+        <translation>Tabulka CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>cannot export: no file name given</source>
+        <translation>nelze exportovat: chybí název souboru</translation>
+    </message>
+    <message>
+        <source>empty picture size</source>
+        <translation>prázdná velikost obrázku</translation>
     </message>
 </context>
 </TS>
