@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "format/json_reader.h"
 #include "format/view_text.h"
+#include "rigidlab/physics/contact.h"
+#include "rigidlab/physics/integrator.h"
 
 #include <QFile>
 #include <QFileInfo>
@@ -185,6 +187,23 @@ QString describeRange(const limits::Range& range)
     if (!range.unit.empty())
         text += u' ' + textFromView(range.unit);
     return text;
+}
+
+QString unknownIntegrator(const QString& name)
+{
+    QStringList names;
+    for (auto k : {physics::IntegratorKind::Euler, physics::IntegratorKind::SymplecticEuler,
+                   physics::IntegratorKind::Verlet, physics::IntegratorKind::RK4})
+        names.append(textFromView(physics::integratorName(k)));
+    return FileMessages::tr("unknown integrator \"%1\" (expected %2)").arg(name, names.join(u", "));
+}
+
+QString unknownSolver(const QString& name)
+{
+    QStringList names;
+    for (auto k : {physics::SolverKind::SeedImpulse, physics::SolverKind::SequentialImpulse})
+        names.append(textFromView(physics::solverName(k)));
+    return FileMessages::tr("unknown solver \"%1\" (expected %2)").arg(name, names.join(u", "));
 }
 
 ParsedJson parseJson(const QByteArray& bytes, const QString& sourceName, qint64 limit)

@@ -15,18 +15,6 @@ namespace {
 constexpr double kMinTimeScale = 0.1;
 constexpr double kMaxTimeScale = 4.0;
 
-// The names messages list; any name physics::integratorFromName knows is accepted.
-constexpr std::array kIntegrators = {
-    physics::IntegratorKind::Euler,
-    physics::IntegratorKind::SymplecticEuler,
-    physics::IntegratorKind::Verlet,
-    physics::IntegratorKind::RK4,
-};
-constexpr std::array kSolvers = {
-    physics::SolverKind::SeedImpulse,
-    physics::SolverKind::SequentialImpulse,
-};
-
 } // namespace
 
 bool readSettings(JsonReader& in, const QJsonObject& object, const QString& place,
@@ -50,13 +38,7 @@ bool readSettings(JsonReader& in, const QJsonObject& object, const QString& plac
         }
         settings.integrator = physics::integratorFromName(name.toStdString());
         if (!settings.integrator) {
-            QStringList names;
-            for (auto k : kIntegrators) {
-                names.append(textFromView(physics::integratorName(k)));
-            }
-            return in.fail(joinPlace(at, u"integrator"),
-                           FileMessages::tr("unknown integrator \"%1\" (expected %2)")
-                               .arg(name, names.join(u", ")));
+            return in.fail(joinPlace(at, u"integrator"), unknownIntegrator(name));
         }
     }
     if (s.contains(u"dt")) {
@@ -77,13 +59,7 @@ bool readSettings(JsonReader& in, const QJsonObject& object, const QString& plac
         }
         settings.solver = physics::solverFromName(name.toStdString());
         if (!settings.solver) {
-            QStringList names;
-            for (auto k : kSolvers) {
-                names.append(textFromView(physics::solverName(k)));
-            }
-            return in.fail(joinPlace(at, u"solver"),
-                           FileMessages::tr("unknown solver \"%1\" (expected %2)")
-                               .arg(name, names.join(u", ")));
+            return in.fail(joinPlace(at, u"solver"), unknownSolver(name));
         }
     }
     if (s.contains(u"iterations")) {
@@ -182,23 +158,13 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
         if (byIntegrator) {
             const auto kind = physics::integratorFromName(name.toStdString());
             if (!kind) {
-                QStringList names;
-                for (auto k : kIntegrators) {
-                    names.append(textFromView(physics::integratorName(k)));
-                }
-                return in.fail(itemAt, FileMessages::tr("unknown integrator \"%1\" (expected %2)")
-                                           .arg(name, names.join(u", ")));
+                return in.fail(itemAt, unknownIntegrator(name));
             }
             comparison.integrators.push_back(*kind);
         } else {
             const auto kind = physics::solverFromName(name.toStdString());
             if (!kind) {
-                QStringList names;
-                for (auto k : kSolvers) {
-                    names.append(textFromView(physics::solverName(k)));
-                }
-                return in.fail(itemAt, FileMessages::tr("unknown solver \"%1\" (expected %2)")
-                                           .arg(name, names.join(u", ")));
+                return in.fail(itemAt, unknownSolver(name));
             }
             comparison.solvers.push_back(*kind);
         }

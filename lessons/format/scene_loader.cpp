@@ -36,17 +36,6 @@ namespace {
 /// Anchors closer than this count as one point when a pin joint is loaded [m].
 constexpr double kJointAnchorTolerance = 1e-6;
 
-constexpr std::array kIntegrators = {
-    physics::IntegratorKind::Euler,
-    physics::IntegratorKind::SymplecticEuler,
-    physics::IntegratorKind::Verlet,
-    physics::IntegratorKind::RK4,
-};
-constexpr std::array kSolvers = {
-    physics::SolverKind::SeedImpulse,
-    physics::SolverKind::SequentialImpulse,
-};
-
 class SceneReader {
 public:
     explicit SceneReader(const QString& sourceName) : m_in(sourceName) {}
@@ -132,13 +121,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
         }
         const auto kind = physics::integratorFromName(name.toStdString());
         if (!kind) {
-            QStringList names;
-            for (auto k : kIntegrators) {
-                names.append(textFromView(physics::integratorName(k)));
-            }
-            return m_in.fail(joinPlace(place, u"integrator"),
-                             FileMessages::tr("unknown integrator \"%1\" (expected %2)")
-                                 .arg(name, names.join(u", ")));
+            return m_in.fail(joinPlace(place, u"integrator"), unknownIntegrator(name));
         }
         def.integrator = *kind;
     }
@@ -148,13 +131,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
         }
         const auto kind = physics::solverFromName(name.toStdString());
         if (!kind) {
-            QStringList names;
-            for (auto k : kSolvers) {
-                names.append(textFromView(physics::solverName(k)));
-            }
-            return m_in.fail(joinPlace(place, u"solver"),
-                             FileMessages::tr("unknown solver \"%1\" (expected %2)")
-                                 .arg(name, names.join(u", ")));
+            return m_in.fail(joinPlace(place, u"solver"), unknownSolver(name));
         }
         def.solver = *kind;
     }

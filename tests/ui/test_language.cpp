@@ -548,6 +548,33 @@ private slots:
 
     // --- Numbers in Czech ------------------------------------------------------------
 
+    void czechPluralForms()
+    {
+        // Czech has three forms (1 / 2–4 / 5 and more), English two; the counts pick them.
+        const auto files = [](int n) {
+            return QCoreApplication::translate("CommandLine", "%n file(s) written into %1", nullptr,
+                                               n)
+                .arg(QStringLiteral("D"));
+        };
+        const auto iterations = [](int n) {
+            return QCoreApplication::translate("rigidlab::ui::SimulationController",
+                                               "%n iteration(s)", nullptr, n);
+        };
+        QVERIFY(ui::applyLanguage(QStringLiteral("cs")));
+        QCOMPARE(files(1), QStringLiteral("1 soubor zapsán do D"));
+        QCOMPARE(files(3), QStringLiteral("3 soubory zapsány do D"));
+        QCOMPARE(files(5), QStringLiteral("5 souborů zapsáno do D"));
+        QCOMPARE(files(22), QStringLiteral("22 souborů zapsáno do D")); // not 22 like 2, in Czech
+        QCOMPARE(iterations(1), QStringLiteral("1 iterace"));
+        QCOMPARE(iterations(4), QStringLiteral("4 iterace"));
+        QCOMPARE(iterations(10), QStringLiteral("10 iterací"));
+        QVERIFY(ui::applyLanguage(QStringLiteral("en")));
+        QCOMPARE(files(1), QStringLiteral("1 file written into D"));
+        QCOMPARE(files(5), QStringLiteral("5 files written into D"));
+        QCOMPARE(iterations(1), QStringLiteral("1 iteration"));
+        QCOMPARE(iterations(10), QStringLiteral("10 iterations"));
+    }
+
     void czechReadsCommaAndPoint()
     {
         QVERIFY(ui::applyLanguage(QStringLiteral("cs")));
