@@ -121,7 +121,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
         }
         const auto kind = physics::integratorFromName(name.toStdString());
         if (!kind) {
-            return m_in.fail(joinPlace(place, u"integrator"), unknownIntegrator(name));
+            return m_in.fail(joinPlace(place, u"integrator"), detail::unknownIntegrator(name));
         }
         def.integrator = *kind;
     }
@@ -131,7 +131,7 @@ bool SceneReader::readWorld(const QJsonObject& root)
         }
         const auto kind = physics::solverFromName(name.toStdString());
         if (!kind) {
-            return m_in.fail(joinPlace(place, u"solver"), unknownSolver(name));
+            return m_in.fail(joinPlace(place, u"solver"), detail::unknownSolver(name));
         }
         def.solver = *kind;
     }
