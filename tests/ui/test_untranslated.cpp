@@ -73,10 +73,13 @@ const QSet<QString>& invariantTexts()
     return texts;
 }
 
-/// Unit symbols that are words of three letters or more, the same in both languages.
-const QStringList& unitWords()
+/// Words of three letters or more that are the same in both languages wherever they stand.
+const QStringList& sameWords()
 {
-    static const QStringList words{QStringLiteral("rad")};
+    static const QStringList words{
+        QStringLiteral("rad"),   // the unit radian
+        QStringLiteral("drift"), // a Czech word too: the translation says "energetický drift"
+    };
     return words;
 }
 
@@ -117,7 +120,11 @@ QStringList pieces(const QString& text)
     plain.replace(QChar::ParagraphSeparator, u'\n');
     plain.replace(QChar::LineSeparator, u'\n');
     plain.replace(QChar::Nbsp, u' ');
-    static const QRegularExpression sentenceEnd(QStringLiteral("(?<=[.!?;])\\s+|\\n"));
+    // Sentences end before a capital ("4. řádu" is one); a title joined to the program's name by
+    // a dash, or titles joined by a dot, are split too, so that an untranslated scene title is
+    // found inside a translated "%1 — RigidLab".
+    static const QRegularExpression sentenceEnd(
+        QStringLiteral("(?<=[.!?;])\\s+(?=\\P{Ll})|\\s+[–—·]\\s+|\\n"));
     QStringList out;
     for (const QString& piece : plain.split(sentenceEnd, Qt::SkipEmptyParts))
         if (const QString trimmed = piece.trimmed(); !trimmed.isEmpty())
@@ -134,7 +141,7 @@ bool invariant(const QString& piece)
     static const QRegularExpression word(QStringLiteral("\\p{L}{3,}"));
     auto it = word.globalMatch(piece);
     while (it.hasNext())
-        if (!unitWords().contains(it.next().captured()))
+        if (!sameWords().contains(it.next().captured()))
             return false;
     return true;
 }
@@ -291,6 +298,20 @@ private:
     Texts& m_out;
 };
 
+/// Whether a student sees `w` or reaches it: visible, or inside a dock that waits behind
+/// another in a tab group (its tab shows it).
+bool reachable(const QWidget* w)
+{
+    if (w->isVisible())
+        return true;
+    for (const QWidget* p = w; p; p = p->parentWidget())
+        if (const auto* dock = qobject_cast<const QDockWidget*>(p))
+            return dock->toggleViewAction()->isChecked() && !dock->isFloating() &&
+                   dock->parentWidget() && dock->parentWidget()->isVisible() &&
+                   (w == dock || w->isVisibleTo(dock));
+    return false;
+}
+
 /// Every text of the window that a student can see or open.
 Texts collect(const MainWindow& window)
 {
@@ -305,7 +326,7 @@ Texts collect(const MainWindow& window)
             c.add(Collector::path(menu) + QStringLiteral("#title"), menu->title());
             continue;
         }
-        if (w->isVisible())
+        if (reachable(w))
             c.widget(w);
     }
     for (const QAction* a : window.findChildren<QAction*>())
@@ -459,6 +480,7 @@ private slots:
         QTest::newRow("number") << QStringLiteral("0.25") << true;
         QTest::newRow("unit") << QStringLiteral("kg·m/s") << true;
         QTest::newRow("radians") << QStringLiteral("ω [rad/s]") << true;
+        QTest::newRow("drift") << QStringLiteral("drift [%]") << true;
         QTest::newRow("symbol") << QStringLiteral("E_k [J]") << true;
         QTest::newRow("name") << QStringLiteral("RigidLab") << true;
         QTest::newRow("word") << QStringLiteral("Energy") << false;
@@ -479,6 +501,10 @@ private slots:
         QCOMPARE(
             pieces(QStringLiteral("<p>One. Two?</p><p>Three</p>")),
             (QStringList{QStringLiteral("One."), QStringLiteral("Two?"), QStringLiteral("Three")}));
+        QCOMPARE(pieces(QStringLiteral("Runge–Kutta 4. řádu")),
+                 QStringList{QStringLiteral("Runge–Kutta 4. řádu")});
+        QCOMPARE(pieces(QStringLiteral("A puck — RigidLab")),
+                 (QStringList{QStringLiteral("A puck"), QStringLiteral("RigidLab")}));
         QCOMPARE(pieces(QStringLiteral("a\nb")),
                  (QStringList{QStringLiteral("a"), QStringLiteral("b")}));
     }
