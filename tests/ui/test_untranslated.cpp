@@ -24,6 +24,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QContextMenuEvent>
 #include <QDir>
 #include <QDockWidget>
 #include <QElapsedTimer>
@@ -38,8 +39,10 @@
 #include <QSet>
 #include <QSettings>
 #include <QTabBar>
+#include <QTableWidget>
 #include <QTextDocumentFragment>
 #include <QTextEdit>
+#include <QTimer>
 #include <QtTest>
 
 #include <algorithm>
@@ -312,8 +315,55 @@ bool reachable(const QWidget* w)
     return false;
 }
 
+/// Opens the context menu of `w` as a right click would and collects its actions' texts at
+/// "<path of w>#contextMenu". A menu that runs its own loop (QMenu::exec) is closed from a timer
+/// inside that loop; one that pops up is closed when the events are processed after.
+bool contextMenu(QWidget* w, Collector& c)
+{
+    const QString key = Collector::path(w) + QStringLiteral("#contextMenu");
+    bool opened = false;
+    QTimer::singleShot(0, w, [&] {
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        if (!menu)
+            return;
+        opened = true;
+        for (const QAction* a : menu->actions())
+            if (!a->isSeparator())
+                c.add(key, a->text());
+        menu->close();
+    });
+    const QPoint at = w->rect().center();
+    if (w->contextMenuPolicy() == Qt::CustomContextMenu) {
+        emit w->customContextMenuRequested(at);
+    } else {
+        QContextMenuEvent event(QContextMenuEvent::Keyboard, at, w->mapToGlobal(at));
+        QCoreApplication::sendEvent(w, &event);
+    }
+    QCoreApplication::processEvents();
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete);
+    return opened;
+}
+
+/// The context menus of RigidLab's own widgets that the window shows (plots, tables, panels).
+void contextMenus(MainWindow& window, Collector& c)
+{
+    QList<QWidget*> targets;
+    for (QWidget* w : window.findChildren<QWidget*>()) {
+        if (!w->isVisible() || qobject_cast<QMenu*>(w))
+            continue;
+        const bool own = QByteArray(w->metaObject()->className()).startsWith("rigidlab::ui::");
+        // RigidLab's tables (FittingTable) open theirs in contextMenuEvent.
+        if (w->contextMenuPolicy() == Qt::CustomContextMenu ||
+            (own && qobject_cast<QTableWidget*>(w)))
+            targets << w;
+    }
+    for (QWidget* w : std::as_const(targets))
+        if (!contextMenu(w, c))
+            qWarning("no context menu opened on %s", qPrintable(Collector::path(w)));
+}
+
 /// Every text of the window that a student can see or open.
-Texts collect(const MainWindow& window)
+Texts collect(MainWindow& window)
 {
     Texts out;
     Collector c(out);
@@ -332,6 +382,7 @@ Texts collect(const MainWindow& window)
     for (const QAction* a : window.findChildren<QAction*>())
         if (!Collector::insideInvariant(a))
             c.action(a);
+    contextMenus(window, c);
     return out;
 }
 
@@ -366,6 +417,22 @@ QList<std::pair<QString, Texts>> textsOfWindow(const QString& language)
                     collect(w)});
     });
     return out;
+}
+
+bool hasCzechLetter(const QString& text)
+{
+    return std::any_of(text.cbegin(), text.cend(),
+                       [](QChar ch) { return czechLetters().contains(ch); });
+}
+
+/// How many texts of these places have a Czech letter (the English check's check).
+qsizetype czechPieces(const QList<std::pair<QString, Texts>>& places)
+{
+    qsizetype n = 0;
+    for (const auto& place : places)
+        for (const QStringList& texts : place.second)
+            n += std::count_if(texts.cbegin(), texts.cend(), hasCzechLetter);
+    return n;
 }
 
 /// At most `cap` lines of `lines`, and how many more there are.
@@ -434,7 +501,11 @@ private slots:
                 }
             }
         }
-        // Not vacuous: the places and their texts were found and paired.
+        // Not vacuous: the places and their texts were found and paired, context menus too.
+        QVERIFY(std::any_of(m_english.cbegin(), m_english.cend(), [](const auto& place) {
+            return std::any_of(place.second.keyBegin(), place.second.keyEnd(),
+                               [](const QString& k) { return k.endsWith(u"#contextMenu"); });
+        }));
         QVERIFY2(keysCompared > 1000, qPrintable(QString::number(keysCompared)));
         QStringList lines;
         for (const QString& id : order)
@@ -451,14 +522,13 @@ private slots:
     // The English window shows no Czech letter (the Language menu's "Čeština" is its own name).
     void englishWindowHasNoCzech()
     {
+        QVERIFY2(czechPieces(m_czech) > 100, "the Czech window should show Czech letters");
         QStringList found;
         QSet<QString> seen;
         for (const auto& [where, texts] : std::as_const(m_english))
             for (auto it = texts.cbegin(); it != texts.cend(); ++it)
                 for (const QString& piece : it.value()) {
-                    const bool czech = std::any_of(piece.cbegin(), piece.cend(), [](QChar ch) {
-                        return czechLetters().contains(ch);
-                    });
+                    const bool czech = hasCzechLetter(piece);
                     const QString id = it.key() + QStringLiteral(": \"") + piece + u'"';
                     if (czech && !seen.contains(id)) {
                         seen.insert(id);
