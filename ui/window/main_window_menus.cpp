@@ -144,6 +144,7 @@ void MainWindow::buildMenus()
     }
     lessonsMenu->setEnabled(!m_player->lessonPaths().isEmpty());
     m_recentMenu = file->addMenu(tr("Open &recent"));
+    m_recentMenu->setObjectName(QStringLiteral("recentMenu")); // file names: no language
     m_scenesMenu = file->addMenu(tr("&Shipped scenes"));
     for (const lessons::SceneEntry& scene : lessons::scenesIn(scenesFolder(), false))
         m_scenesMenu->addAction(scene.title, this, [this, p = scene.path] { openScene(p); });
