@@ -87,8 +87,8 @@ MainWindow::MainWindow(QWidget* parent)
     });
     connect(m_controller, &SimulationController::worldChanged, this, &MainWindow::updateTimeline);
     connect(m_controller, &SimulationController::sceneLoaded, this, [this] {
-        const QString title = m_controller->scene().title;
-        setWindowTitle(title.isEmpty() ? tr("RigidLab") : tr("%1 — RigidLab").arg(title));
+        if (!m_inLesson) // in a lesson, its title and step stay (applyLessonStep)
+            showSceneTitle();
     });
     for (PlotWidget* plot : m_plots)
         followController(plot);
@@ -97,6 +97,12 @@ MainWindow::MainWindow(QWidget* parent)
 }
 
 MainWindow::~MainWindow() = default;
+
+void MainWindow::showSceneTitle()
+{
+    const QString title = m_controller->scene().title;
+    setWindowTitle(title.isEmpty() ? tr("RigidLab") : tr("%1 — RigidLab").arg(title));
+}
 
 void MainWindow::followController(PlotWidget* plot)
 {

@@ -118,6 +118,8 @@ private slots:
     void openLessonDialog();
     void applyLessonStep(const rigidlab::lessons::Lesson& lesson, int step);
     void leaveLesson();
+    /// The window's title outside a lesson: the scene's.
+    void showSceneTitle();
     /// Hides what the lesson step's questions still hold back, shows what they released.
     void applyHeldBack(const QStringList& held);
     void updateStatus();

@@ -197,6 +197,7 @@ void MainWindow::leaveLesson()
     if (!m_inLesson)
         return;
     m_inLesson = false;
+    showSceneTitle();
     // Back to the plain lab: controls, inspector and the three plots.
     for (auto it = m_docks.cbegin(); it != m_docks.cend(); ++it) {
         const bool standard =
