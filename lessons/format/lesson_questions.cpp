@@ -223,7 +223,7 @@ bool readQuestion(JsonReader& in, LessonTexts& texts, const QJsonValue& value, c
     }
     if (!readMeasure(in, object.value(u"measure"), joinPlace(place, u"measure"), scene,
                      question.measure) ||
-        !texts.line(object, u"unit", place, question.unit) ||
+        !texts.unit(object, u"unit", place, question.unit) ||
         !in.number(object, u"tolerance", place, question.tolerance, NumberRule::UnitInterval) ||
         !in.number(object, u"absoluteTolerance", place, question.absoluteTolerance,
                    NumberRule::NonNegative, limits::kAbsoluteTolerance)) {

@@ -138,6 +138,16 @@ bool LessonTexts::line(const QJsonObject& object, QStringView key, const QString
     return readText(it.value(), at, &LessonTexts::oneLine, u"a string \"...\"", out);
 }
 
+bool LessonTexts::unit(const QJsonObject& object, QStringView key, const QString& place,
+                       QString& out)
+{
+    const std::size_t missingBefore = m_missing.size();
+    const bool ok = line(object, key, place, out);
+    if (ok && object.value(key).isString())
+        m_missing.resize(missingBefore);
+    return ok;
+}
+
 bool LessonTexts::paragraphs(const QJsonObject& object, QStringView key, const QString& place,
                              QString& out)
 {

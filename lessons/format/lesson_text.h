@@ -26,6 +26,9 @@ public:
     /// was, which is fine unless `required`.
     bool line(const QJsonObject& object, QStringView key, const QString& place, QString& out,
               bool required = false);
+    /// A unit at `object[key]`, read as line(): a plain string is a symbol ("m", "J·s"), the
+    /// same in every language, so it lacks none; a worded unit may be an object of languages.
+    bool unit(const QJsonObject& object, QStringView key, const QString& place, QString& out);
     /// Paragraphs at `object[key]`: "...", ["...", ...] (joined with line breaks), or an
     /// object of languages holding either.
     bool paragraphs(const QJsonObject& object, QStringView key, const QString& place, QString& out);
