@@ -50,8 +50,8 @@ private:
     bool readDescription(const QJsonObject& root);
 
     JsonReader m_in;
-    detail::LessonTexts m_texts; ///< reads through m_in, declared after it
-    detail::StepContext m_step;  ///< the lesson's folder, the bodies of the steps so far
+    detail::LocalTexts m_texts; ///< reads through m_in, declared after it
+    detail::StepContext m_step; ///< the lesson's folder, the bodies of the steps so far
     Lesson m_lesson;
 };
 
@@ -59,7 +59,7 @@ bool LessonReader::readTitle(const QJsonObject& root)
 {
     if (!m_texts.line(root, u"title", {}, m_lesson.title, true))
         return false;
-    for (const detail::LessonTexts::Variant& v : m_texts.variants()) {
+    for (const detail::LocalTexts::Variant& v : m_texts.variants()) {
         if (v.text.trimmed().isEmpty())
             return m_in.fail(v.place, FileMessages::tr("must not be empty"));
     }
@@ -70,7 +70,7 @@ bool LessonReader::readDescription(const QJsonObject& root)
 {
     if (!m_texts.line(root, u"description", {}, m_lesson.description))
         return false;
-    for (const detail::LessonTexts::Variant& v : m_texts.variants()) {
+    for (const detail::LocalTexts::Variant& v : m_texts.variants()) {
         const QString& d = v.text;
         if (d.contains(QLatin1Char('\n')) || d.contains(QLatin1Char('\r')))
             return m_in.fail(v.place,

@@ -188,14 +188,13 @@ bool readHoldBack(JsonReader& in, const QJsonObject& object, const QString& plac
 }
 
 /// A text of a question that must not be empty in any of its languages.
-bool readNonEmptyText(JsonReader& in, LessonTexts& texts, const QJsonObject& object,
-                      QStringView key, const QString& place, QString& out, bool required,
-                      const QString& whenEmpty)
+bool readNonEmptyText(JsonReader& in, LocalTexts& texts, const QJsonObject& object, QStringView key,
+                      const QString& place, QString& out, bool required, const QString& whenEmpty)
 {
     if (!texts.line(object, key, place, out, required)) {
         return false;
     }
-    for (const LessonTexts::Variant& v : texts.variants()) {
+    for (const LocalTexts::Variant& v : texts.variants()) {
         if (v.text.trimmed().isEmpty()) {
             return in.fail(v.place, whenEmpty);
         }
@@ -203,7 +202,7 @@ bool readNonEmptyText(JsonReader& in, LessonTexts& texts, const QJsonObject& obj
     return true;
 }
 
-bool readQuestion(JsonReader& in, LessonTexts& texts, const QJsonValue& value, const QString& place,
+bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, const QString& place,
                   const LessonStep& step, Question& question)
 {
     const Scene& scene = step.scene;
@@ -275,7 +274,7 @@ bool readSat(JsonReader& in, const QJsonObject& object, const QString& place, co
     return true;
 }
 
-bool readQuestions(JsonReader& in, LessonTexts& texts, const QJsonObject& object,
+bool readQuestions(JsonReader& in, LocalTexts& texts, const QJsonObject& object,
                    const QString& place, const LessonStep& step, std::vector<Question>& out)
 {
     if (!object.contains(u"questions")) {

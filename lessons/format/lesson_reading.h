@@ -7,7 +7,7 @@
 #include "format/json_reader.h"
 
 #include "format/lesson.h"
-#include "format/lesson_text.h"
+#include "format/local_text.h"
 
 #include <optional>
 #include <utility>
@@ -17,9 +17,9 @@ namespace rigidlab::lessons::detail {
 
 /// What reading a step needs from the lesson around it.
 struct StepContext {
-    QString folder;               ///< the lesson's folder, absolute; scene paths start here
-    qint64 bodies = 0;            ///< bodies in the scenes of the steps read so far
-    LessonTexts* texts = nullptr; ///< the lesson's texts, in its language
+    QString folder;              ///< the lesson's folder, absolute; scene paths start here
+    qint64 bodies = 0;           ///< bodies in the scenes of the steps read so far
+    LocalTexts* texts = nullptr; ///< the lesson's texts, in its language
 };
 
 /// One step of "steps", at `place`; adds its bodies to `context.bodies`.
@@ -40,7 +40,7 @@ bool readSat(JsonReader& in, const QJsonObject& step, const QString& place, cons
 
 /// The step's "questions", their measures naming bodies of its scene and what they hold
 /// back naming panels and plots it shows.
-bool readQuestions(JsonReader& in, LessonTexts& texts, const QJsonObject& object,
+bool readQuestions(JsonReader& in, LocalTexts& texts, const QJsonObject& object,
                    const QString& place, const LessonStep& step, std::vector<Question>& out);
 
 } // namespace rigidlab::lessons::detail

@@ -95,7 +95,8 @@ bool readSceneFile(JsonReader& in, const QString& relative, const QString& place
     // Messages name the scene file as the lesson's own name leads to it.
     const QString shown =
         QDir::cleanPath(QDir(QFileInfo(in.sourceName()).path()).filePath(relative));
-    const SceneLoadResult loaded = loadSceneJson(file.bytes, shown);
+    const SceneLoadResult loaded =
+        loadSceneJson(file.bytes, shown, SceneLoadOptions{context.texts->language()});
     for (const QString& w : loaded.warnings) {
         in.warn(place, w);
     }
@@ -124,7 +125,8 @@ bool readScene(JsonReader& in, const QJsonObject& object, const QString& place,
                                             "file, got ") +
                                describeJson(it.value()));
     }
-    const SceneLoadResult loaded = loadSceneObject(it.value().toObject(), in.sourceName());
+    const SceneLoadResult loaded = loadSceneObject(it.value().toObject(), in.sourceName(),
+                                                   SceneLoadOptions{context.texts->language()});
     for (const QString& w : loaded.warnings) {
         const auto [wherePlace, what] = rebase(w, in.sourceName(), at);
         in.warn(wherePlace, what);
@@ -150,7 +152,7 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
         !context.texts->line(object, u"title", place, step.title, true)) {
         return false;
     }
-    for (const LessonTexts::Variant& v : context.texts->variants()) {
+    for (const LocalTexts::Variant& v : context.texts->variants()) {
         if (v.text.trimmed().isEmpty()) {
             return in.fail(v.place, FileMessages::tr("must not be empty"));
         }

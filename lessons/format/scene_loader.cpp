@@ -7,6 +7,7 @@
 #include "format/view_text.h"
 
 #include "format/json_reader.h"
+#include "format/local_text.h"
 
 #include "format/limits.h"
 
@@ -38,11 +39,16 @@ constexpr double kJointAnchorTolerance = 1e-6;
 
 class SceneReader {
 public:
-    explicit SceneReader(const QString& sourceName) : m_in(sourceName) {}
+    SceneReader(const QString& sourceName, const SceneLoadOptions& options)
+        : m_in(sourceName), m_texts(m_in, options.language)
+    {
+    }
 
     SceneLoadResult read(const QJsonObject& root);
 
 private:
+    /// A title or description: "..." or {"en": "...", "cs": "..."}, kept in the chosen language.
+    bool readText(const QJsonObject& root, QStringView key, QString& out);
     bool readWorld(const QJsonObject& root);
     bool readBodies(const QJsonObject& root);
     bool readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
@@ -61,6 +67,7 @@ private:
     Vec2 worldPoint(BodyId body, const Vec2& anchor) const;
 
     JsonReader m_in;
+    detail::LocalTexts m_texts; ///< reads through m_in, declared after it
     Scene m_scene;
     QHash<QString, BodyId> m_ids; // lookup only, never iterated: order comes from m_scene
 };
@@ -72,9 +79,12 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
                     m_in.checkKeys(root, {},
                                    {u"rigidlab", u"title", u"description", u"world", u"bodies",
                                     u"springs", u"joints"}) &&
-                    m_in.string(root, u"title", {}, m_scene.title) &&
-                    m_in.string(root, u"description", {}, m_scene.description) && readWorld(root) &&
+                    readText(root, u"title", m_scene.title) &&
+                    readText(root, u"description", m_scene.description) && readWorld(root) &&
                     readBodies(root) && readSprings(root) && readJoints(root);
+    if (ok) {
+        m_texts.warnMissing();
+    }
 
     SceneLoadResult result;
     result.warnings = m_in.warnings();
@@ -88,6 +98,16 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
     result.ok = true;
     result.scene = std::move(m_scene);
     return result;
+}
+
+bool SceneReader::readText(const QJsonObject& root, QStringView key, QString& out)
+{
+    const auto it = root.constFind(key);
+    if (it != root.constEnd() && !it.value().isString() && !it.value().isObject()) {
+        // Neither form: the message of a plain string, as before scenes had languages.
+        return m_in.string(root, key, {}, out);
+    }
+    return m_texts.line(root, key, {}, out);
 }
 
 bool SceneReader::readWorld(const QJsonObject& root)
@@ -533,12 +553,14 @@ bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
 
 } // namespace
 
-SceneLoadResult loadSceneObject(const QJsonObject& root, const QString& sourceName)
+SceneLoadResult loadSceneObject(const QJsonObject& root, const QString& sourceName,
+                                const SceneLoadOptions& options)
 {
-    return SceneReader(sourceName).read(root);
+    return SceneReader(sourceName, options).read(root);
 }
 
-SceneLoadResult loadSceneJson(const QByteArray& bytes, const QString& sourceName)
+SceneLoadResult loadSceneJson(const QByteArray& bytes, const QString& sourceName,
+                              const SceneLoadOptions& options)
 {
     const detail::ParsedJson parsed = detail::parseJson(bytes, sourceName, kMaxSceneFileBytes);
     SceneLoadResult result;
@@ -551,10 +573,10 @@ SceneLoadResult loadSceneJson(const QByteArray& bytes, const QString& sourceName
                                                      "got an array");
         return result;
     }
-    return loadSceneObject(parsed.document.object(), sourceName);
+    return loadSceneObject(parsed.document.object(), sourceName, options);
 }
 
-SceneLoadResult loadSceneFile(const QString& path)
+SceneLoadResult loadSceneFile(const QString& path, const SceneLoadOptions& options)
 {
     const detail::FileBytes file = detail::readFileBytes(path, kMaxSceneFileBytes);
     if (!file.ok) {
@@ -562,7 +584,7 @@ SceneLoadResult loadSceneFile(const QString& path)
         result.error = file.error;
         return result;
     }
-    return loadSceneJson(file.bytes, path);
+    return loadSceneJson(file.bytes, path, options);
 }
 
 } // namespace rigidlab::lessons

@@ -4,6 +4,7 @@
 // problem found comes back as one line `FILE: PLACE: what is wrong`, where PLACE is a JSON
 // path (`bodies[2].shape.radius`) or, for broken JSON, `line L, column C`.
 
+#include "format/languages.h"
 #include "format/limits.h"
 #include "format/scene.h"
 
@@ -36,13 +37,24 @@ struct SceneLoadResult {
     Scene scene;          ///< complete when ok
 };
 
-/// Reads and checks a scene file. The path as given names the file in messages.
-SceneLoadResult loadSceneFile(const QString& path);
+/// How a scene is read.
+struct SceneLoadOptions {
+    /// The language its title and description are kept in (languages.h); a text without it
+    /// is English.
+    QString language = lessonLanguage();
+};
+
+/// Reads and checks a scene file. The path as given names the file in messages. The title and
+/// description are checked in every language they have, whichever is kept; a scene with a text
+/// in the object form warns of each text that lacks a shipped language, like a lesson.
+SceneLoadResult loadSceneFile(const QString& path, const SceneLoadOptions& options = {});
 
 /// Checks scene JSON held in memory; `sourceName` names it in messages.
-SceneLoadResult loadSceneJson(const QByteArray& bytes, const QString& sourceName);
+SceneLoadResult loadSceneJson(const QByteArray& bytes, const QString& sourceName,
+                              const SceneLoadOptions& options = {});
 
 /// Checks a scene already parsed (a document whose top level holds "rigidlab").
-SceneLoadResult loadSceneObject(const QJsonObject& root, const QString& sourceName);
+SceneLoadResult loadSceneObject(const QJsonObject& root, const QString& sourceName,
+                                const SceneLoadOptions& options = {});
 
 } // namespace rigidlab::lessons

@@ -84,6 +84,7 @@ private slots:
     // test_lesson_loader.cpp
     void shippedLessonsLoad_data();
     void shippedLessonsLoad();
+    void sceneTextsInLessonLanguage();
     void validateRecognisesLessons();
     void shippedLessonsInTeachingOrder();
     void lessonsWithoutOrderComeLast();

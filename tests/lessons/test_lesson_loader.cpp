@@ -44,6 +44,36 @@ QByteArray stepWithScene(const char* scene)
 
 } // namespace
 
+void TestLesson::sceneTextsInLessonLanguage()
+{
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    writeFile(dir.filePath(QStringLiteral("drop.json")),
+              R"({"rigidlab": 1, "title": {"en": "Drop", "cs": "Pád"}, "bodies": []})");
+    const QByteArray json =
+        R"({"rigidlab-lesson": 1, "title": "t", "steps": [
+             {"title": "s", "scene": {"rigidlab": 1, "title": {"en": "Inline"},
+                                      "description": {"en": "D", "cs": "P"}, "bodies": []}},
+             {"title": "s", "scene": "drop.json"}]})";
+    const QString path = dir.filePath(QStringLiteral("l.json"));
+    for (const QString& language : {QStringLiteral("en"), QStringLiteral("cs")}) {
+        const lessons::LessonLoadResult r =
+            lessons::loadLessonJson(json, path, lessons::LessonLoadOptions{language});
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QCOMPARE(r.lesson.steps.size(), size_t{2});
+        const bool cs = language == QStringLiteral("cs");
+        QCOMPARE(r.lesson.steps[0].scene.title, QStringLiteral("Inline"));
+        QCOMPARE(r.lesson.steps[0].scene.description,
+                 cs ? QStringLiteral("P") : QStringLiteral("D"));
+        QCOMPARE(r.lesson.steps[1].scene.title,
+                 cs ? QStringLiteral("Pád") : QStringLiteral("Drop"));
+        // The inline scene lacks a Czech title, whatever language the lesson is read in.
+        QCOMPARE(r.warnings.size(), 1);
+        QVERIFY2(r.warnings[0].contains(QStringLiteral("steps[0].scene.title: no Čeština text")),
+                 qPrintable(r.warnings[0]));
+    }
+}
+
 void TestLesson::shippedLessonsLoad_data()
 {
     QTest::addColumn<QString>("path");

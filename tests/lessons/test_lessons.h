@@ -60,6 +60,11 @@ private slots:
     void tooManyBodies();
     void defaults();
     void everyField();
+    void sceneTexts_data();
+    void sceneTexts();
+    void rejectsBadSceneText_data();
+    void rejectsBadSceneText();
+    void sceneTextsDefaultToLessonLanguage();
     void nonConvexPolygonWarns();
     void springRestLengthDefaultsToDistance();
     void pinAnchorBDefaultsToCoincidentPoint();

@@ -301,6 +301,116 @@ void TestLessons::defaults()
     QVERIFY(scene.joints.empty());
 }
 
+void TestLessons::sceneTexts_data()
+{
+    QTest::addColumn<QByteArray>("texts");
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("title");
+    QTest::addColumn<QString>("description");
+    QTest::addColumn<QStringList>("warnings");
+
+    const QByteArray both = R"("title": {"en": "Drop", "cs": "Pád"},
+                               "description": {"en": "A ball falls.", "cs": "Míček padá."})";
+    QTest::newRow("plain-en") << QByteArray(R"("title": "Drop", "description": "A ball falls.")")
+                              << "en"
+                              << "Drop"
+                              << "A ball falls." << QStringList();
+    // A scene in English only is not a translated scene: it warns of nothing.
+    QTest::newRow("plain-cs") << QByteArray(R"("title": "Drop", "description": "A ball falls.")")
+                              << "cs"
+                              << "Drop"
+                              << "A ball falls." << QStringList();
+    QTest::newRow("object-en") << both << "en"
+                               << "Drop"
+                               << "A ball falls." << QStringList();
+    QTest::newRow("object-cs") << both << "cs"
+                               << "Pád"
+                               << "Míček padá." << QStringList();
+    QTest::newRow("object-missing-cs")
+        << QByteArray(R"("title": {"en": "Drop"}, "description": {"en": "A ball falls.",
+                         "cs": "Míček padá."})")
+        << "cs"
+        << "Drop"
+        << "Míček padá."
+        << QStringList{
+               QStringLiteral("x.json: title: no Čeština text (\"cs\"); English is shown instead")};
+    QTest::newRow("plain-beside-object")
+        << QByteArray(R"("title": {"en": "Drop", "cs": "Pád"}, "description": "A ball falls.")")
+        << "cs"
+        << "Pád"
+        << "A ball falls."
+        << QStringList{QStringLiteral(
+               "x.json: description: no Čeština text (\"cs\"); English is shown instead")};
+    // An empty title in the chosen language falls back to the file name, as a plain one does.
+    QTest::newRow("object-empty-title")
+        << QByteArray(R"("title": {"en": "Drop", "cs": ""})") << "cs"
+        << "x" << QString() << QStringList();
+}
+
+void TestLessons::sceneTexts()
+{
+    QFETCH(QByteArray, texts);
+    QFETCH(QString, language);
+    QFETCH(QString, title);
+    QFETCH(QString, description);
+    QFETCH(QStringList, warnings);
+    const QByteArray json = sceneWith((texts + R"(, "bodies": [])").constData());
+    const lessons::SceneLoadResult result =
+        lessons::loadSceneJson(json, QStringLiteral("x.json"), lessons::SceneLoadOptions{language});
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QCOMPARE(result.scene.title, title);
+    QCOMPARE(result.scene.description, description);
+    QCOMPARE(result.warnings, warnings);
+}
+
+void TestLessons::rejectsBadSceneText_data()
+{
+    QTest::addColumn<QByteArray>("texts");
+    QTest::addColumn<QString>("message");
+
+    QTest::newRow("unknown-language") << QByteArray(R"("title": {"en": "Drop", "de": "Fall"})")
+                                      << R"(title.de: unknown language "de" (expected en, cs))";
+    QTest::newRow("no-english") << QByteArray(R"("title": {"cs": "Pád"})")
+                                << R"(title: needs the English text "en", shown when a language )"
+                                   "is missing";
+    QTest::newRow("language-not-string")
+        << QByteArray(R"("description": {"en": "A ball falls.", "cs": ["Míček", "padá."]})")
+        << R"(description.cs: must be a string "...", got an array)";
+    QTest::newRow("description-array") << QByteArray(R"("description": ["A ball", "falls."])")
+                                       << R"(description: must be a string "...", got an array)";
+    // Checked in every language, whichever is kept.
+    QTest::newRow("other-language-bad") << QByteArray(R"("title": {"en": 5, "cs": "Pád"})")
+                                        << "title.en: must be a string "
+                                           "\"...\", got 5";
+}
+
+void TestLessons::rejectsBadSceneText()
+{
+    QFETCH(QByteArray, texts);
+    QFETCH(QString, message);
+    const QByteArray json = sceneWith((texts + R"(, "bodies": [])").constData());
+    for (const QString& language : {QStringLiteral("en"), QStringLiteral("cs")}) {
+        const lessons::SceneLoadResult result = lessons::loadSceneJson(
+            json, QStringLiteral("x.json"), lessons::SceneLoadOptions{language});
+        QVERIFY(!result.ok);
+        QCOMPARE(result.error, QStringLiteral("x.json: ") + message);
+    }
+}
+
+void TestLessons::sceneTextsDefaultToLessonLanguage()
+{
+    const QByteArray json = sceneWith(R"("title": {"en": "Drop", "cs": "Pád"}, "bodies": [])");
+    const QString before = lessons::lessonLanguage();
+    QVERIFY(lessons::setLessonLanguage(QStringLiteral("cs")));
+    const lessons::SceneLoadResult cs = lessons::loadSceneJson(json, QStringLiteral("x.json"));
+    QVERIFY(lessons::setLessonLanguage(QStringLiteral("en")));
+    const lessons::SceneLoadResult en = lessons::loadSceneJson(json, QStringLiteral("x.json"));
+    QVERIFY(lessons::setLessonLanguage(before));
+    QVERIFY2(cs.ok && en.ok, qPrintable(cs.error + en.error));
+    QCOMPARE(cs.scene.title, QStringLiteral("Pád"));
+    QCOMPARE(en.scene.title, QStringLiteral("Drop"));
+}
+
 void TestLessons::everyField()
 {
     const QByteArray json = R"({"rigidlab": 1, "title": "T", "description": "D",

@@ -5,6 +5,7 @@
 // scene, the lesson step and the time, and the decimal comma in Czech.
 
 #include "common/language.h"
+#include "format/scene_loader.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
@@ -543,6 +544,33 @@ private slots:
         czech->controller().seek(40);
         QVERIFY(bodyCoordinates(*czech) == bodies);
         QCOMPARE(ui::switchLanguage(czech, QStringLiteral("xx")), czech); // no such language
+        delete czech;
+    }
+
+    void sceneTitlesFollowLanguage()
+    {
+        const QString path = shippedScene("ball_drop.json");
+        const lessons::SceneLoadResult en =
+            lessons::loadSceneFile(path, lessons::SceneLoadOptions{QStringLiteral("en")});
+        const lessons::SceneLoadResult cs =
+            lessons::loadSceneFile(path, lessons::SceneLoadOptions{QStringLiteral("cs")});
+        QVERIFY(en.ok && cs.ok);
+        QVERIFY(en.scene.title != cs.scene.title); // the shipped scene has a Czech title
+        const auto hasAction = [](const MainWindow& window, const QString& text) {
+            for (const QAction* a : window.findChildren<QAction*>()) {
+                if (a->text() == text)
+                    return true;
+            }
+            return false;
+        };
+        MainWindow* w = new MainWindow;
+        QCOMPARE(w->openScene(path, true), QString());
+        QVERIFY2(w->windowTitle().contains(en.scene.title), qPrintable(w->windowTitle()));
+        QVERIFY(hasAction(*w, en.scene.title)); // File › Shipped scenes
+        MainWindow* czech = ui::switchLanguage(w, QStringLiteral("cs"));
+        QVERIFY2(czech->windowTitle().contains(cs.scene.title), qPrintable(czech->windowTitle()));
+        QVERIFY(hasAction(*czech, cs.scene.title));
+        QVERIFY(!hasAction(*czech, en.scene.title));
         delete czech;
     }
 

@@ -17,6 +17,8 @@
 
 #include <QDockWidget>
 #include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QMenu>
 #include <QSettings>
 #include <QTableWidget>
@@ -277,10 +279,11 @@ private slots:
         QFile shippedScene(
             QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("ball_drop.json")));
         QVERIFY(shippedScene.open(QIODevice::ReadOnly));
-        QByteArray sceneJson = shippedScene.readAll();
-        const QByteArray shippedTitle = "\"title\": \"Ball drop: the coefficient of restitution\"";
-        QVERIFY(sceneJson.contains(shippedTitle));
-        sceneJson.replace(shippedTitle, "\"title\": \"My own drop\"");
+        // The shipped scene with its own title (in every language) replaced.
+        QJsonObject scene = QJsonDocument::fromJson(shippedScene.readAll()).object();
+        QVERIFY(scene.contains(QStringLiteral("title")));
+        scene[QStringLiteral("title")] = QStringLiteral("My own drop");
+        const QByteArray sceneJson = QJsonDocument(scene).toJson();
         const QString scenePath = own.filePath(QStringLiteral("scenes/my_drop.json"));
         writeTo(scenePath, sceneJson);
         writeTo(own.filePath(QStringLiteral("lessons/scenes/drop.json")), sceneJson);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The texts of a lesson that a student reads, in the language it is loaded in
-// (lessons/LESSON_FORMAT.md, "Languages"). Each is a plain string, meaning English, or an
-// object that maps language codes (languages.h) to the same kind of value:
+// The texts a student reads, in the language a lesson or scene is loaded in
+// (lessons/LESSON_FORMAT.md, "Languages"; lessons/SCENE_FORMAT.md, "title" and "description").
+// Each is a plain string, meaning English, or an object that maps language codes (languages.h)
+// to the same kind of value:
 //
 //     "title": "Bounces"
 //     "title": {"en": "Bounces", "cs": "Odrazy"}
@@ -18,9 +19,12 @@
 
 namespace rigidlab::lessons::detail {
 
-class LessonTexts {
+class LocalTexts {
 public:
-    LessonTexts(JsonReader& in, QString language) : m_in(in), m_language(std::move(language)) {}
+    LocalTexts(JsonReader& in, QString language) : m_in(in), m_language(std::move(language)) {}
+
+    /// The language the texts are kept in.
+    const QString& language() const { return m_language; }
 
     /// A text at `object[key]`: "..." or {"en": "...", ...}. Absent: `out` is left as it
     /// was, which is fine unless `required`.
@@ -48,14 +52,14 @@ public:
     const std::vector<Variant>& variants() const { return m_variants; }
 
     /// Warns of each text that lacks a shipped language, saying where and which. Called once
-    /// the whole lesson is read: a lesson with no text in the object form is an English
-    /// lesson, and warns of nothing.
+    /// the whole lesson or scene is read: one with no text in the object form is in English
+    /// only, and warns of nothing.
     void warnMissing();
 
 private:
     /// Reads one language's version of a text at `place`.
-    using ReadOne = bool (LessonTexts::*)(const QJsonValue& value, const QString& place,
-                                          QString& out);
+    using ReadOne = bool (LocalTexts::*)(const QJsonValue& value, const QString& place,
+                                         QString& out);
     bool oneLine(const QJsonValue& value, const QString& place, QString& out);
     bool oneParagraphs(const QJsonValue& value, const QString& place, QString& out);
     /// A plain value or an object of languages; `plainKinds` says what a plain value may be,

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "format/lesson_text.h"
+#include "format/local_text.h"
 
 #include "format/languages.h"
 
 namespace rigidlab::lessons::detail {
 
-bool LessonTexts::oneLine(const QJsonValue& value, const QString& place, QString& out)
+bool LocalTexts::oneLine(const QJsonValue& value, const QString& place, QString& out)
 {
     if (!value.isString()) {
         return m_in.fail(place,
@@ -15,7 +15,7 @@ bool LessonTexts::oneLine(const QJsonValue& value, const QString& place, QString
     return true;
 }
 
-bool LessonTexts::oneParagraphs(const QJsonValue& value, const QString& place, QString& out)
+bool LocalTexts::oneParagraphs(const QJsonValue& value, const QString& place, QString& out)
 {
     // A string, or an array of strings (one per line or paragraph), which is easier to write
     // and to read in a JSON file; the lines are joined with line breaks.
@@ -41,7 +41,7 @@ bool LessonTexts::oneParagraphs(const QJsonValue& value, const QString& place, Q
     return true;
 }
 
-bool LessonTexts::checkLanguages(const QJsonObject& object, const QString& place)
+bool LocalTexts::checkLanguages(const QJsonObject& object, const QString& place)
 {
     for (auto it = object.constBegin(); it != object.constEnd(); ++it) {
         if (!isShippedLanguage(it.key())) {
@@ -60,7 +60,7 @@ bool LessonTexts::checkLanguages(const QJsonObject& object, const QString& place
     return true;
 }
 
-void LessonTexts::noteMissing(const QString& place, const QStringList& present)
+void LocalTexts::noteMissing(const QString& place, const QStringList& present)
 {
     for (const Language& l : kLanguages) {
         if (!present.contains(l.code.toString()))
@@ -68,8 +68,8 @@ void LessonTexts::noteMissing(const QString& place, const QStringList& present)
     }
 }
 
-bool LessonTexts::readText(const QJsonValue& value, const QString& place, ReadOne one,
-                           QStringView plainKinds, QString& out)
+bool LocalTexts::readText(const QJsonValue& value, const QString& place, ReadOne one,
+                          QStringView plainKinds, QString& out)
 {
     m_variants.clear();
     if (m_in.failed()) {
@@ -118,8 +118,8 @@ bool LessonTexts::readText(const QJsonValue& value, const QString& place, ReadOn
     return true;
 }
 
-bool LessonTexts::line(const QJsonObject& object, QStringView key, const QString& place,
-                       QString& out, bool required)
+bool LocalTexts::line(const QJsonObject& object, QStringView key, const QString& place,
+                      QString& out, bool required)
 {
     m_variants.clear();
     if (m_in.failed()) {
@@ -135,11 +135,11 @@ bool LessonTexts::line(const QJsonObject& object, QStringView key, const QString
                                               "{\"en\": \"...\", \"cs\": \"...\"}, got ") +
                                  describeJson(it.value()));
     }
-    return readText(it.value(), at, &LessonTexts::oneLine, u"a string \"...\"", out);
+    return readText(it.value(), at, &LocalTexts::oneLine, u"a string \"...\"", out);
 }
 
-bool LessonTexts::unit(const QJsonObject& object, QStringView key, const QString& place,
-                       QString& out)
+bool LocalTexts::unit(const QJsonObject& object, QStringView key, const QString& place,
+                      QString& out)
 {
     const std::size_t missingBefore = m_missing.size();
     const bool ok = line(object, key, place, out);
@@ -148,20 +148,20 @@ bool LessonTexts::unit(const QJsonObject& object, QStringView key, const QString
     return ok;
 }
 
-bool LessonTexts::paragraphs(const QJsonObject& object, QStringView key, const QString& place,
-                             QString& out)
+bool LocalTexts::paragraphs(const QJsonObject& object, QStringView key, const QString& place,
+                            QString& out)
 {
     m_variants.clear();
     const auto it = object.constFind(key);
     if (it == object.constEnd()) {
         return !m_in.failed();
     }
-    return readText(it.value(), joinPlace(place, key), &LessonTexts::oneParagraphs,
+    return readText(it.value(), joinPlace(place, key), &LocalTexts::oneParagraphs,
                     u"a string or an array of strings", out);
 }
 
-bool LessonTexts::list(const QJsonObject& object, QStringView key, const QString& place,
-                       qsizetype maxItems, QStringView noun, QStringList& out)
+bool LocalTexts::list(const QJsonObject& object, QStringView key, const QString& place,
+                      qsizetype maxItems, QStringView noun, QStringList& out)
 {
     m_variants.clear();
     const auto found = object.constFind(key);
@@ -182,7 +182,7 @@ bool LessonTexts::list(const QJsonObject& object, QStringView key, const QString
             const QString itemAt = indexPlace(itemsAt, i);
             QString text;
             if (itemsMayBeObjects && items[i].isObject()) {
-                if (!readText(items[i], itemAt, &LessonTexts::oneLine, u"a string \"...\"", text))
+                if (!readText(items[i], itemAt, &LocalTexts::oneLine, u"a string \"...\"", text))
                     return false;
                 for (const Variant& v : m_variants) {
                     if (v.text.trimmed().isEmpty())
@@ -240,7 +240,7 @@ bool LessonTexts::list(const QJsonObject& object, QStringView key, const QString
     return true;
 }
 
-void LessonTexts::warnMissing()
+void LocalTexts::warnMissing()
 {
     if (!m_translated) {
         return;
