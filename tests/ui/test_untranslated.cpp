@@ -53,10 +53,10 @@ using rigidlab::ui::MainWindow;
 
 namespace {
 
-/// Whether the Czech window must have no English left: while the Czech translation is being
-/// finished this is false and the untranslated texts are only listed (QWARN); the lead turns it
-/// on once the finished translation has landed. The English check is always on.
-constexpr bool kRequireCompleteCzech = false;
+/// Whether the Czech window must have no English left (on since the translation is complete;
+/// off, the untranslated texts would only be listed with QWARN). The English check is always
+/// on.
+constexpr bool kRequireCompleteCzech = true;
 
 /// Texts that are the same in Czech and in English, compared whole (after '&' mnemonics are
 /// removed). Only proper names and symbols belong here; a method's name inside a longer
