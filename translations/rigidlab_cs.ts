@@ -1881,7 +1881,7 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     </message>
     <message>
         <source>total + dissipated</source>
-        <translation>celková + disipovaná</translation>
+        <translation>celková + disip.</translation>
     </message>
     <message>
         <source>Momentum</source>
@@ -2159,19 +2159,19 @@ B&#xa0;%3 … %4</translation>
     <name>rigidlab::ui::displayNames</name>
     <message>
         <source>Explicit Euler</source>
-        <translation>Explicitní Eulerova metoda</translation>
+        <translation>Explicitní Euler</translation>
     </message>
     <message>
         <source>Symplectic Euler</source>
-        <translation>Symplektická Eulerova metoda</translation>
+        <translation>Symplektický Euler</translation>
     </message>
     <message>
         <source>Velocity Verlet</source>
-        <translation>Rychlostní Verletova metoda</translation>
+        <translation>Rychlostní Verlet</translation>
     </message>
     <message>
         <source>Runge–Kutta 4</source>
-        <translation>Runge–Kutta 4.&#xa0;řádu</translation>
+        <translation>Runge–Kutta 4</translation>
     </message>
     <message>
         <source>Dormand–Prince 5(4), adaptive</source>
@@ -2179,7 +2179,7 @@ B&#xa0;%3 … %4</translation>
     </message>
     <message>
         <source>Implicit midpoint</source>
-        <translation>Implicitní metoda středního bodu</translation>
+        <translation>Implicitní střední bod</translation>
     </message>
     <message>
         <source>Seed impulse</source>

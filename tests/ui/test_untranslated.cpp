@@ -64,14 +64,15 @@ constexpr bool kRequireCompleteCzech = true;
 const QSet<QString>& invariantTexts()
 {
     static const QSet<QString> texts{
-        QStringLiteral("RigidLab"),    // the program's name
-        QStringLiteral("SAT"),         // the separating axis theorem's usual abbreviation
-        QStringLiteral("Runge–Kutta"), // people's names: integrators
-        QStringLiteral("Verlet"),      QStringLiteral("Euler"), QStringLiteral("Newton"),
-        QStringLiteral("Box2D"),       QStringLiteral("Qt"),    QStringLiteral("Eigen"),
+        QStringLiteral("RigidLab"),      // the program's name
+        QStringLiteral("SAT"),           // the separating axis theorem's usual abbreviation
+        QStringLiteral("Runge–Kutta"),   // people's names: integrators
+        QStringLiteral("Runge–Kutta 4"), // the method's name with its order, in both languages
+        QStringLiteral("Verlet"),        QStringLiteral("Euler"), QStringLiteral("Newton"),
+        QStringLiteral("Box2D"),         QStringLiteral("Qt"),    QStringLiteral("Eigen"),
         QStringLiteral("QCustomPlot"),
         QStringLiteral("PNG"), // file formats
-        QStringLiteral("PDF"),         QStringLiteral("SVG"),   QStringLiteral("CSV"),
+        QStringLiteral("PDF"),           QStringLiteral("SVG"),   QStringLiteral("CSV"),
     };
     return texts;
 }
