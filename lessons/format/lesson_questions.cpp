@@ -169,22 +169,12 @@ bool readHoldBack(JsonReader& in, const QJsonObject& object, const QString& plac
     if (!in.asArray(object.value(u"holdBack"), at, list)) {
         return false;
     }
-    for (qsizetype i = 0; i < list.size(); ++i) {
-        const QString itemAt = indexPlace(at, i);
-        if (!list[i].isString()) {
-            return in.fail(itemAt, FileMessages::tr("must be a name \"...\", got ") +
-                                       describeJson(list[i]));
-        }
-        const QString name = list[i].toString();
-        if (!checkHoldBackName(in, name, itemAt, step)) {
-            return false;
-        }
-        if (out.contains(name)) {
-            return in.fail(itemAt, FileMessages::tr("\"%1\" is listed twice").arg(name));
-        }
-        out.append(name);
-    }
-    return true;
+    return readDistinctNames(
+        in, list, at,
+        [&](const QString& name, const QString& itemAt) {
+            return checkHoldBackName(in, name, itemAt, step);
+        },
+        out);
 }
 
 /// A text of a question that must not be empty in any of its languages.

@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include <functional>
+
 namespace rigidlab::lessons::detail {
 
 /// What reading a step needs from the lesson around it.
@@ -25,6 +27,13 @@ struct StepContext {
 /// One step of "steps", at `place`; adds its bodies to `context.bodies`.
 bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, StepContext& context,
               LessonStep& step);
+
+/// The names in `list` (at `at`): each a string, none twice, each one `accept` takes (it fails
+/// `in` with its own message at the item's place when it does not). `out` gets them in order.
+bool readDistinctNames(
+    JsonReader& in, const QJsonArray& list, const QString& at,
+    const std::function<bool(const QString& name, const QString& itemAt)>& accept,
+    QStringList& out);
 
 /// The step's "settings", on top of its scene's.
 bool readSettings(JsonReader& in, const QJsonObject& object, const QString& place,

@@ -144,30 +144,25 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
     }
     Comparison comparison;
     QStringList seen;
-    for (qsizetype i = 0; i < list.size(); ++i) {
-        const QString itemAt = indexPlace(listAt, i);
-        if (!list[i].isString()) {
-            return in.fail(itemAt, FileMessages::tr("must be a name \"...\", got ") +
-                                       describeJson(list[i]));
-        }
-        const QString name = list[i].toString();
-        if (seen.contains(name)) {
-            return in.fail(itemAt, FileMessages::tr("\"%1\" is listed twice").arg(name));
-        }
-        seen.append(name);
-        if (byIntegrator) {
-            const auto kind = physics::integratorFromName(name.toStdString());
-            if (!kind) {
-                return in.fail(itemAt, unknownIntegrator(name));
+    const bool named = readDistinctNames(
+        in, list, listAt,
+        [&](const QString& name, const QString& itemAt) {
+            if (byIntegrator) {
+                const auto kind = physics::integratorFromName(name.toStdString());
+                if (!kind)
+                    return in.fail(itemAt, unknownIntegrator(name));
+                comparison.integrators.push_back(*kind);
+            } else {
+                const auto kind = physics::solverFromName(name.toStdString());
+                if (!kind)
+                    return in.fail(itemAt, unknownSolver(name));
+                comparison.solvers.push_back(*kind);
             }
-            comparison.integrators.push_back(*kind);
-        } else {
-            const auto kind = physics::solverFromName(name.toStdString());
-            if (!kind) {
-                return in.fail(itemAt, unknownSolver(name));
-            }
-            comparison.solvers.push_back(*kind);
-        }
+            return true;
+        },
+        seen);
+    if (!named) {
+        return false;
     }
     if (!in.vec2(c, u"offset", at, comparison.offset, limits::kCoordinate)) {
         return false;

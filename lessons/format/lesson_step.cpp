@@ -56,27 +56,17 @@ bool readNames(JsonReader& in, const QJsonObject& object, QStringView key, const
     if (!in.asArray(object.value(key), at, list)) {
         return false;
     }
-    for (qsizetype i = 0; i < list.size(); ++i) {
-        const QString itemAt = indexPlace(at, i);
-        if (!list[i].isString()) {
-            return in.fail(itemAt, FileMessages::tr("must be a name \"...\", got ") +
-                                       describeJson(list[i]));
-        }
-        const QString name = list[i].toString();
-        bool isKnown = false;
-        for (std::string_view k : known) {
-            isKnown = isKnown || name == QLatin1String(k.data(), static_cast<qsizetype>(k.size()));
-        }
-        if (!isKnown) {
+    return readDistinctNames(
+        in, list, at,
+        [&](const QString& name, const QString& itemAt) {
+            for (std::string_view k : known) {
+                if (name == QLatin1String(k.data(), static_cast<qsizetype>(k.size())))
+                    return true;
+            }
             return in.fail(itemAt, FileMessages::tr("unknown %1 \"%2\" (expected %3)")
                                        .arg(what.toString(), name, joinNames(known)));
-        }
-        if (out.contains(name)) {
-            return in.fail(itemAt, FileMessages::tr("\"%1\" is listed twice").arg(name));
-        }
-        out.append(name);
-    }
-    return true;
+        },
+        out);
 }
 
 bool readSceneFile(JsonReader& in, const QString& relative, const QString& place,
@@ -140,6 +130,28 @@ bool readScene(JsonReader& in, const QJsonObject& object, const QString& place,
 }
 
 } // namespace
+
+bool readDistinctNames(
+    JsonReader& in, const QJsonArray& list, const QString& at,
+    const std::function<bool(const QString& name, const QString& itemAt)>& accept, QStringList& out)
+{
+    for (qsizetype i = 0; i < list.size(); ++i) {
+        const QString itemAt = indexPlace(at, i);
+        if (!list[i].isString()) {
+            return in.fail(itemAt, FileMessages::tr("must be a name \"...\", got ") +
+                                       describeJson(list[i]));
+        }
+        const QString name = list[i].toString();
+        if (out.contains(name)) {
+            return in.fail(itemAt, FileMessages::tr("\"%1\" is listed twice").arg(name));
+        }
+        if (!accept(name, itemAt)) {
+            return false;
+        }
+        out.append(name);
+    }
+    return true;
+}
 
 bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, StepContext& context,
               LessonStep& step)
