@@ -13,6 +13,7 @@
 
 #include "format/limits.h"
 
+#include "first_question.h"
 #include "test_files.h"
 #include "test_main.h"
 
@@ -427,19 +428,9 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         ui::LessonPlayer& player = w.lessonPlayer();
-        const auto& steps = player.lesson()->steps;
-        int step = -1;
-        for (int i = 0; i < static_cast<int>(steps.size()) && step < 0; ++i)
-            if (!steps[static_cast<std::size_t>(i)].questions.empty())
-                step = i;
-        QVERIFY(step >= 0);
-        player.goToStep(step);
-        const auto& st = steps[static_cast<std::size_t>(step)];
-        std::optional<double> value;
-        for (int k = 0; k < 200000 && !value; ++k) {
-            w.controller().stepForward();
-            value = w.controller().measurements().value(st.questions[0].measure, st.scene);
-        }
+        const MeasuredQuestion measured = runToFirstQuestion(w);
+        QVERIFY(measured.step >= 0);
+        const std::optional<double> value = measured.value;
         QVERIFY(value);
         // A value below 1, so that a dropped separator (0.4096 read as 4096) would be wrong.
         QVERIFY(std::abs(*value) < 1 && std::abs(*value) > 0.01);
