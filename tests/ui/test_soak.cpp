@@ -17,8 +17,9 @@
 // grows by design until the whole-run plot holds its point budget), in the first and the last
 // tenth of the run.
 //
-// RIGIDLAB_SOAK_SECONDS sets the simulated time: `./lab soak` runs the whole hour (3600 s);
-// ./lab test runs kDefaultSeconds.
+// RIGIDLAB_SOAK_SECONDS sets the simulated time: `./lab soak` runs the whole hour (3600 s) and
+// judges memory and step rate; ./lab test runs kDefaultSeconds and judges memory only (the rate
+// is printed: a speed measured beside other tests is not a verdict).
 
 #include "plots/plot_widget.h"
 #include "simulation/history.h"
@@ -249,6 +250,11 @@ private slots:
         QVERIFY2(rssEnd - rssWarm <= kMaxGrowthBytes,
                  qPrintable(QStringLiteral("memory grew by %1 MiB after warm-up")
                                 .arg((rssEnd - rssWarm) / 1048576.0)));
+        // The step rate is a speed, and speeds are not judged by the suite, where other tests
+        // share the processor (a busy machine slows the last tenth as much as a leak would):
+        // ./lab test reports it above, ./lab soak, alone on the machine, also judges it.
+        if (qEnvironmentVariableIsEmpty("RIGIDLAB_SOAK_SECONDS"))
+            return;
         QVERIFY2(lastRate >= kMinRateRatio * firstRate,
                  qPrintable(QStringLiteral("the step rate fell from %1 to %2 per CPU second")
                                 .arg(firstRate)
