@@ -640,6 +640,10 @@
         <translation>delší než %1 znaků</translation>
     </message>
     <message>
+        <source>must not be empty (leave &quot;label&quot; out to show the id)</source>
+        <translation>nesmí být prázdný (bez klíče &quot;label&quot; se ukáže id)</translation>
+    </message>
+    <message>
         <source>duplicate id &quot;%1&quot; (bodies[%2] has it already)</source>
         <translation>opakované id &quot;%1&quot; (už ho má bodies[%2])</translation>
     </message>
@@ -997,6 +1001,10 @@
         <translation>%1: e = %2, e² = %3</translation>
     </message>
     <message>
+        <source>e = %1 (e² = %2)</source>
+        <translation>e = %1 (e² = %2)</translation>
+    </message>
+    <message>
         <source>drop</source>
         <translation>pád</translation>
     </message>
@@ -1039,7 +1047,7 @@ y %2</translation>
     </message>
     <message>
         <source>Collision of %1 and %2 at t = %3 s</source>
-        <translation>Srážka těles %1 a&#xa0;%2 v&#xa0;čase t = %3&#xa0;s</translation>
+        <translation>Srážka: %1 a&#xa0;%2 v&#xa0;čase t = %3&#xa0;s</translation>
     </message>
     <message>
         <source>%1: velocity [m/s]</source>
