@@ -954,7 +954,7 @@
     <name>rigidlab::ui::BouncePanel</name>
     <message>
         <source>Heights of the centre above where it touched down. With a coefficient of restitution e, each bounce should reach e² times the one before.</source>
-        <translation>Výšky středu nad místem, kde se míček dotkl podložky. Při koeficientu restituce e by měl každý odskok dosáhnout e²násobku předchozího.</translation>
+        <translation>Výšky středu nad místem, kde se míček dotkl podložky. Při koeficientu restituce e by měl každý odskok dosáhnout e²-násobku předchozího.</translation>
     </message>
     <message>
         <source>Answer the lesson&apos;s question first</source>
@@ -1092,7 +1092,7 @@ y %2</translation>
     <message>
         <source>Seed impulse: one impulse per contact, once (the paper&apos;s method).
 Sequential impulse: iterated, clamped, warm started.</source>
-        <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda výchozího článku).
+        <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
 Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     </message>
     <message>
@@ -2047,7 +2047,7 @@ B&#xa0;%3 … %4</translation>
     </message>
     <message>
         <source>The test needed %1 of at most %2 axes (one per edge, %3 + %4), each projecting all %2 vertices: %5 projections, against the paper&apos;s worst case of (k₁ + k₂)² = %6.</source>
-        <translation>Test potřeboval %1 z&#xa0;nejvýše %2&#xa0;os (jedna na hranu, %3 + %4) a&#xa0;na každé promítl všech %2&#xa0;vrcholů: celkem %5&#xa0;projekcí, oproti nejhoršímu případu z&#xa0;výchozího článku (k₁ + k₂)² = %6.</translation>
+        <translation>Test potřeboval %1 z&#xa0;nejvýše %2&#xa0;os (jedna na hranu, %3 + %4) a&#xa0;na každé promítl všech %2&#xa0;vrcholů: celkem %5&#xa0;projekcí, oproti nejhoršímu případu podle původního článku (k₁ + k₂)² = %6.</translation>
     </message>
     <message>
         <source>Least overlap on axis %1: normal (%2, %3) from A to B, depth %4 m, %5 contact point(s) from clipping.</source>
