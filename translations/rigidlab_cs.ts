@@ -954,7 +954,7 @@
     <name>rigidlab::ui::BouncePanel</name>
     <message>
         <source>Heights of the centre above where it touched down. With a coefficient of restitution e, each bounce should reach e² times the one before.</source>
-        <translation>Výšky středu nad místem, kde se míček dotkl podložky. Při koeficientu restituce e by měl každý odskok dosáhnout e²-násobku předchozího.</translation>
+        <translation>Výšky středu nad místem, kde se míček dotkl podložky. Při koeficientu restituce e by měl každý odskok dosáhnout e²‑násobku předchozího.</translation>
     </message>
     <message>
         <source>Answer the lesson&apos;s question first</source>
@@ -1047,7 +1047,7 @@ y %2</translation>
     </message>
     <message>
         <source>Collision of %1 and %2 at t = %3 s</source>
-        <translation>Srážka: %1 a&#xa0;%2 v&#xa0;čase t = %3&#xa0;s</translation>
+        <translation>Srážka: %1 a&#xa0;%2 v&#xa0;čase t&#xa0;=&#xa0;%3&#xa0;s</translation>
     </message>
     <message>
         <source>%1: velocity [m/s]</source>
