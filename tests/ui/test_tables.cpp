@@ -8,6 +8,7 @@
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/fitting_table.h"
+#include "panels/inspector_panel.h"
 #include "panels/sat_panel.h"
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
@@ -386,6 +387,14 @@ void TestTables::tablesNameBodiesByTheirLabels()
         QVERIFY2(all.contains(QStringLiteral("těžká koule")), qPrintable(all));
         QVERIFY2(!all.contains(QStringLiteral("light")), qPrintable(all));
         QVERIFY2(!all.contains(QStringLiteral("heavy")), qPrintable(all));
+        // The inspector names a clicked body the same way (body 0 is the light ball).
+        w.inspector().setBody(0);
+        QStringList inspector;
+        for (const QLabel* label : w.inspector().findChildren<QLabel*>())
+            inspector << label->text();
+        const QString shownThere = inspector.join(u'|');
+        QVERIFY2(shownThere.contains(QStringLiteral("lehká koule (")), qPrintable(shownThere));
+        QVERIFY2(!shownThere.contains(QStringLiteral("light")), qPrintable(shownThere));
     }
     {
         // The bounce table's groups are named by their e, as the lesson calls the balls
