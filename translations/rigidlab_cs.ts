@@ -640,6 +640,10 @@
         <translation>delší než %1 znaků</translation>
     </message>
     <message>
+        <source>must not be empty (leave &quot;label&quot; out to show the id)</source>
+        <translation>nesmí být prázdný (bez klíče &quot;label&quot; se ukáže id)</translation>
+    </message>
+    <message>
         <source>duplicate id &quot;%1&quot; (bodies[%2] has it already)</source>
         <translation>opakované id &quot;%1&quot; (už ho má bodies[%2])</translation>
     </message>
@@ -950,7 +954,7 @@
     <name>rigidlab::ui::BouncePanel</name>
     <message>
         <source>Heights of the centre above where it touched down. With a coefficient of restitution e, each bounce should reach e² times the one before.</source>
-        <translation>Výšky středu nad místem, kde se míček dotkl podložky. Při koeficientu restituce e by měl každý odskok dosáhnout e²násobku předchozího.</translation>
+        <translation>Výšky středu nad místem, kde se míček dotkl podložky. Při koeficientu restituce e by měl každý odskok dosáhnout e²‑násobku předchozího.</translation>
     </message>
     <message>
         <source>Answer the lesson&apos;s question first</source>
@@ -997,6 +1001,10 @@
         <translation>%1: e = %2, e² = %3</translation>
     </message>
     <message>
+        <source>e = %1 (e² = %2)</source>
+        <translation>e = %1 (e² = %2)</translation>
+    </message>
+    <message>
         <source>drop</source>
         <translation>pád</translation>
     </message>
@@ -1039,7 +1047,7 @@ y %2</translation>
     </message>
     <message>
         <source>Collision of %1 and %2 at t = %3 s</source>
-        <translation>Srážka těles %1 a&#xa0;%2 v&#xa0;čase t = %3&#xa0;s</translation>
+        <translation>Srážka: %1 a&#xa0;%2 v&#xa0;čase t&#xa0;=&#xa0;%3&#xa0;s</translation>
     </message>
     <message>
         <source>%1: velocity [m/s]</source>
@@ -1084,7 +1092,7 @@ y %2</translation>
     <message>
         <source>Seed impulse: one impulse per contact, once (the paper&apos;s method).
 Sequential impulse: iterated, clamped, warm started.</source>
-        <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda výchozího článku).
+        <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
 Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     </message>
     <message>
@@ -2039,7 +2047,7 @@ B&#xa0;%3 … %4</translation>
     </message>
     <message>
         <source>The test needed %1 of at most %2 axes (one per edge, %3 + %4), each projecting all %2 vertices: %5 projections, against the paper&apos;s worst case of (k₁ + k₂)² = %6.</source>
-        <translation>Test potřeboval %1 z&#xa0;nejvýše %2&#xa0;os (jedna na hranu, %3 + %4) a&#xa0;na každé promítl všech %2&#xa0;vrcholů: celkem %5&#xa0;projekcí, oproti nejhoršímu případu z&#xa0;výchozího článku (k₁ + k₂)² = %6.</translation>
+        <translation>Test potřeboval %1 z&#xa0;nejvýše %2&#xa0;os (jedna na hranu, %3 + %4) a&#xa0;na každé promítl všech %2&#xa0;vrcholů: celkem %5&#xa0;projekcí, oproti nejhoršímu případu podle původního článku (k₁ + k₂)² = %6.</translation>
     </message>
     <message>
         <source>Least overlap on axis %1: normal (%2, %3) from A to B, depth %4 m, %5 contact point(s) from clipping.</source>

@@ -16,6 +16,23 @@ std::optional<physics::BodyId> Scene::bodyIndex(const QString& id) const
     return std::nullopt;
 }
 
+bool Scene::hasLabel(physics::BodyId index) const
+{
+    return index >= 0 && static_cast<size_t>(index) < labels.size() &&
+           !labels[static_cast<size_t>(index)].isEmpty();
+}
+
+QString Scene::bodyLabel(physics::BodyId index) const
+{
+    if (hasLabel(index)) {
+        return labels[static_cast<size_t>(index)];
+    }
+    if (index < 0 || static_cast<size_t>(index) >= bodies.size()) {
+        return QString();
+    }
+    return QString::fromStdString(bodies[static_cast<size_t>(index)].name);
+}
+
 physics::World buildWorld(const Scene& scene)
 {
     physics::World world(scene.world);

@@ -29,9 +29,18 @@ struct Scene {
     /// convex and was replaced by its convex hull, body-local [m]; empty for every other body.
     /// The SAT lesson draws them to show where detection with the hull is wrong.
     std::vector<std::vector<physics::Vec2>> originalVertices;
+    /// Per body (parallel to `bodies`, or shorter: a missing entry is an empty one): the name
+    /// a class reads ("light ball"), in the language the scene was loaded in; empty when the
+    /// file gives none. Show bodies through bodyLabel(), never by their id directly.
+    std::vector<QString> labels;
 
     /// The index of the body with this id, or nullopt.
     std::optional<physics::BodyId> bodyIndex(const QString& id) const;
+    /// What a person reads for body `index`: its label, or its id when it has none (an index
+    /// out of range reads as empty).
+    QString bodyLabel(physics::BodyId index) const;
+    /// Whether body `index` has a label of its own.
+    bool hasLabel(physics::BodyId index) const;
 };
 
 /// A world holding the scene's bodies (ids = indices into scene.bodies), springs and joints,

@@ -52,7 +52,9 @@ private:
     bool readWorld(const QJsonObject& root);
     bool readBodies(const QJsonObject& root);
     bool readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
-                  std::vector<Vec2>& original);
+                  std::vector<Vec2>& original, QString& label);
+    /// A body's optional "label": a name a class reads, in every language it has.
+    bool readLabel(const QJsonObject& body, const QString& place, QString& label);
     /// Reads a shape; `original` gets the file's vertices of a polygon replaced by its hull.
     bool readShape(const QJsonValue& value, const QString& place, physics::Shape& shape,
                    std::vector<Vec2>& original);
@@ -194,27 +196,63 @@ bool SceneReader::readBodies(const QJsonObject& root)
     }
     m_scene.bodies.reserve(static_cast<size_t>(bodies.size()));
     m_scene.originalVertices.reserve(static_cast<size_t>(bodies.size()));
+    m_scene.labels.reserve(static_cast<size_t>(bodies.size()));
     for (qsizetype i = 0; i < bodies.size(); ++i) {
         physics::BodyDef def;
         std::vector<Vec2> original;
-        if (!readBody(bodies[i], indexPlace(place, i), def, original)) {
+        QString label;
+        if (!readBody(bodies[i], indexPlace(place, i), def, original, label)) {
             return false;
         }
         m_ids.insert(QString::fromStdString(def.name), static_cast<BodyId>(i));
         m_scene.bodies.push_back(std::move(def));
         m_scene.originalVertices.push_back(std::move(original));
+        m_scene.labels.push_back(std::move(label));
     }
     return true;
 }
 
+bool SceneReader::readLabel(const QJsonObject& body, const QString& place, QString& label)
+{
+    if (!body.contains(u"label")) {
+        return true;
+    }
+    const auto value = body.value(u"label");
+    if (!value.isString() && !value.isObject()) {
+        // Neither form: the message of a plain string, the form most labels have.
+        return m_in.string(body, u"label", place, label);
+    }
+    if (!m_texts.line(body, u"label", place, label)) {
+        return false;
+    }
+    // Each language's label is checked, whichever is shown.
+    for (const detail::LocalTexts::Variant& v : m_texts.variants()) {
+        if (v.text.trimmed().isEmpty()) {
+            return m_in.fail(v.place, FileMessages::tr("must not be empty (leave \"label\" out "
+                                                       "to show the id)"));
+        }
+        if (v.text.size() > kMaxBodyLabelLength) {
+            return m_in.fail(
+                v.place, FileMessages::tr("longer than %1 characters").arg(kMaxBodyLabelLength));
+        }
+        for (QChar c : v.text) {
+            if (c.category() == QChar::Other_Control) {
+                return m_in.fail(v.place, FileMessages::tr("must not hold control characters"));
+            }
+        }
+    }
+    label = label.trimmed();
+    return true;
+}
+
 bool SceneReader::readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
-                           std::vector<Vec2>& original)
+                           std::vector<Vec2>& original, QString& label)
 {
     QJsonObject body;
     QString id;
     if (!m_in.asObject(value, place, body) ||
         !m_in.checkKeys(body, place,
-                        {u"id", u"type", u"shape", u"position", u"angle", u"velocity",
+                        {u"id", u"label", u"type", u"shape", u"position", u"angle", u"velocity",
                          u"angularVelocity", u"density", u"mass", u"restitution", u"friction",
                          u"collide"}) ||
         !m_in.string(body, u"id", place, id, true)) {
@@ -239,6 +277,9 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
                              .arg(id, QString::number(other.value())));
     }
     def.name = id.toStdString();
+    if (!readLabel(body, place, label)) {
+        return false;
+    }
 
     if (body.contains(u"type")) {
         QString type;

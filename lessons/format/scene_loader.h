@@ -25,6 +25,8 @@ inline constexpr int kMaxSprings = 10000;
 inline constexpr int kMaxJoints = 10000;
 inline constexpr int kMaxPolygonVertices = 64;
 inline constexpr int kMaxBodyIdLength = 64;
+/// A body's "label", in each language [characters].
+inline constexpr int kMaxBodyLabelLength = 80;
 // The ranges of settings live in limits.h, with every other range; these names are kept short.
 inline constexpr int kMaxIterations = static_cast<int>(limits::kIterations.max);
 inline constexpr double kMinDt = limits::kDt.min; ///< [s]

@@ -203,7 +203,7 @@ void TestCli::badInput_data()
         << "bodies[0].shape.radius: must be a positive number, got \"0.1\"";
     QTest::newRow("unknown-key")
         << withBody(R"({"id": "b", "colour": "red", "shape": {"type": "circle", "radius": 1}})")
-        << "bodies[0].colour: unknown key (allowed here: id, type, shape, position, angle, "
+        << "bodies[0].colour: unknown key (allowed here: id, label, type, shape, position, angle, "
            "velocity, angularVelocity, density, mass, restitution, friction, collide)";
     QTest::newRow("negative-mass")
         << withBody(R"({"id": "b", "mass": -1, "shape": {"type": "circle", "radius": 1}})")

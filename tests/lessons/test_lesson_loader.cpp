@@ -96,11 +96,36 @@ void TestLesson::shippedLessonsLoad()
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     // Every shipped language reads the same lesson, and a translated one lacks no text.
+    std::vector<lessons::Lesson> inLanguage;
     for (const lessons::Language& language : lessons::kLanguages) {
         const lessons::LessonLoadResult in =
             lessons::loadLessonFile(path, {language.code.toString()});
         QVERIFY2(in.ok, qPrintable(in.error));
         QCOMPARE(in.lesson.steps.size(), loaded.lesson.steps.size());
+        inLanguage.push_back(in.lesson);
+    }
+    // Tables, the inspector and the SAT panel name bodies by their labels: every body of a
+    // shipped lesson has one of its own in every language, and a translated one is not the
+    // English label copied (nor the id).
+    const lessons::Lesson& english = inLanguage.front();
+    for (std::size_t l = 0; l < inLanguage.size(); ++l) {
+        for (std::size_t s = 0; s < english.steps.size(); ++s) {
+            const lessons::Scene& scene = inLanguage[l].steps[s].scene;
+            const lessons::Scene& en = english.steps[s].scene;
+            for (std::size_t b = 0; b < scene.bodies.size(); ++b) {
+                const auto id = static_cast<physics::BodyId>(b);
+                const QString where =
+                    QStringLiteral("%1, step %2, body \"%3\"")
+                        .arg(lessons::kLanguages[l].code.toString(), QString::number(s + 1),
+                             QString::fromStdString(scene.bodies[b].name));
+                QVERIFY2(scene.hasLabel(id), qPrintable(where));
+                if (l > 0) {
+                    QVERIFY2(scene.bodyLabel(id) != en.bodyLabel(id), qPrintable(where));
+                    QVERIFY2(scene.bodyLabel(id) != QString::fromStdString(scene.bodies[b].name),
+                             qPrintable(where));
+                }
+            }
+        }
     }
     for (const QString& w : loaded.warnings)
         QVERIFY2(!w.contains(QStringLiteral("English is shown instead")), qPrintable(w));

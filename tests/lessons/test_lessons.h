@@ -65,6 +65,10 @@ private slots:
     void rejectsBadSceneText_data();
     void rejectsBadSceneText();
     void sceneTextsDefaultToLessonLanguage();
+    void bodyLabels_data();
+    void bodyLabels();
+    void rejectsBadBodyLabel_data();
+    void rejectsBadBodyLabel();
     void nonConvexPolygonWarns();
     void springRestLengthDefaultsToDistance();
     void pinAnchorBDefaultsToCoincidentPoint();

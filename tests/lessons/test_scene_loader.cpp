@@ -44,7 +44,7 @@ void TestLessons::rejectsBadScene_data()
            "springs, joints)";
     QTest::newRow("unknown-key-body")
         << oneBody(R"("shape": {"type": "circle", "radius": 1}, "colour": "red")")
-        << "bodies[0].colour: unknown key (allowed here: id, type, shape, position, angle, "
+        << "bodies[0].colour: unknown key (allowed here: id, label, type, shape, position, angle, "
            "velocity, angularVelocity, density, mass, restitution, friction, collide)";
     QTest::newRow("unknown-key-shape")
         << oneBody(R"("shape": {"type": "circle", "radius": 1, "width": 2})")
@@ -363,6 +363,112 @@ void TestLessons::sceneTexts()
     QCOMPARE(result.warnings, warnings);
 }
 
+void TestLessons::bodyLabels_data()
+{
+    QTest::addColumn<QByteArray>("label");
+    QTest::addColumn<QString>("language");
+    QTest::addColumn<QString>("shown");
+    QTest::addColumn<bool>("labelled");
+    QTest::addColumn<QStringList>("warnings");
+
+    const QByteArray both = R"("label": {"en": "light ball", "cs": "lehká koule"}, )";
+    QTest::newRow("object-en") << both << "en"
+                               << "light ball" << true << QStringList();
+    QTest::newRow("object-cs") << both << "cs"
+                               << "lehká koule" << true << QStringList();
+    // No label: the id, in every language.
+    QTest::newRow("none-en") << QByteArray() << "en"
+                             << "ball" << false << QStringList();
+    QTest::newRow("none-cs") << QByteArray() << "cs"
+                             << "ball" << false << QStringList();
+    // A plain label is English: in a translated scene it lacks Czech, as a plain title does.
+    QTest::newRow("plain-cs")
+        << QByteArray(R"("label": "light ball", )") << "cs"
+        << "light ball" << true
+        << QStringList{QStringLiteral(
+               "x.json: bodies[0].label: no Čeština text (\"cs\"); English is shown instead")};
+    // Spaces around it are not part of the name.
+    QTest::newRow("trimmed") << QByteArray(R"("label": {"en": " light ball ", "cs": "koule"}, )")
+                             << "en"
+                             << "light ball" << true << QStringList();
+    // In a translated scene a label without Czech warns, as a title does.
+    QTest::newRow("missing-cs")
+        << QByteArray(R"("label": {"en": "light ball"}, )") << "cs"
+        << "light ball" << true
+        << QStringList{QStringLiteral(
+               "x.json: bodies[0].label: no Čeština text (\"cs\"); English is shown instead")};
+}
+
+void TestLessons::bodyLabels()
+{
+    QFETCH(QByteArray, label);
+    QFETCH(QString, language);
+    QFETCH(QString, shown);
+    QFETCH(bool, labelled);
+    QFETCH(QStringList, warnings);
+    // The title is translated, so a text without Czech is worth a warning.
+    const QByteArray json =
+        sceneWith((R"("title": {"en": "Drop", "cs": "Pád"}, "bodies": [{"id": "ball", )" + label +
+                   R"("shape": {"type": "circle", "radius": 0.1}}])")
+                      .constData());
+    const lessons::SceneLoadResult result =
+        lessons::loadSceneJson(json, QStringLiteral("x.json"), lessons::SceneLoadOptions{language});
+    QVERIFY2(result.ok, qPrintable(result.error));
+    QCOMPARE(result.warnings, warnings);
+    QCOMPARE(result.scene.labels.size(), result.scene.bodies.size());
+    QCOMPARE(result.scene.hasLabel(0), labelled);
+    QCOMPARE(result.scene.bodyLabel(0), shown);
+    // The id stays what the file calls the body, for springs, questions and traces.
+    QCOMPARE(result.scene.bodies[0].name, std::string("ball"));
+    QCOMPARE(result.scene.bodyIndex(QStringLiteral("ball")), std::optional<physics::BodyId>(0));
+    // Out of range: nothing, not a crash.
+    QCOMPARE(result.scene.bodyLabel(1), QString());
+    QCOMPARE(result.scene.bodyLabel(physics::kWorld), QString());
+    QVERIFY(!result.scene.hasLabel(1));
+}
+
+void TestLessons::rejectsBadBodyLabel_data()
+{
+    QTest::addColumn<QByteArray>("label");
+    QTest::addColumn<QString>("message");
+
+    QTest::newRow("number") << QByteArray(R"("label": 3)")
+                            << R"(bodies[0].label: must be a string "...", got 3)";
+    QTest::newRow("array") << QByteArray(R"("label": ["light", "ball"])")
+                           << R"(bodies[0].label: must be a string "...", got an array)";
+    QTest::newRow("empty") << QByteArray(R"("label": " ")")
+                           << R"(bodies[0].label: must not be empty (leave "label" out to show )"
+                              "the id)";
+    // Every language is checked, whichever is shown.
+    QTest::newRow("empty-cs") << QByteArray(R"("label": {"en": "light ball", "cs": ""})")
+                              << R"(bodies[0].label.cs: must not be empty (leave "label" out to )"
+                                 "show the id)";
+    QTest::newRow("unknown-language")
+        << QByteArray(R"("label": {"en": "light ball", "de": "leichte Kugel"})")
+        << R"(bodies[0].label.de: unknown language "de" (expected en, cs))";
+    QTest::newRow("no-english") << QByteArray(R"("label": {"cs": "lehká koule"})")
+                                << R"(bodies[0].label: needs the English text "en", shown when a )"
+                                   "language is missing";
+    QTest::newRow("too-long") << "\"label\": \"" + QByteArray(81, 'x') + '"'
+                              << "bodies[0].label: longer than 80 characters";
+    QTest::newRow("control") << QByteArray(R"("label": {"en": "light\nball", "cs": "koule"})")
+                             << "bodies[0].label.en: must not hold control characters";
+}
+
+void TestLessons::rejectsBadBodyLabel()
+{
+    QFETCH(QByteArray, label);
+    QFETCH(QString, message);
+    const QByteArray json =
+        oneBody((label + R"(, "shape": {"type": "circle", "radius": 0.1})").constData());
+    for (const QString& language : {QStringLiteral("en"), QStringLiteral("cs")}) {
+        const lessons::SceneLoadResult result = lessons::loadSceneJson(
+            json, QStringLiteral("x.json"), lessons::SceneLoadOptions{language});
+        QVERIFY(!result.ok);
+        QCOMPARE(result.error, QStringLiteral("x.json: ") + message);
+    }
+}
+
 void TestLessons::rejectsBadSceneText_data()
 {
     QTest::addColumn<QByteArray>("texts");
@@ -567,4 +673,6 @@ void TestLessons::formatDocumentExampleLoads()
     QCOMPARE(result.scene.springs.size(), size_t{1});
     QCOMPARE(result.scene.joints.size(), size_t{1});
     QCOMPARE(result.scene.world.sleep, std::optional<bool>(true));
+    QCOMPARE(result.scene.bodyLabel(1), QStringLiteral("steel ball"));
+    QCOMPARE(result.scene.bodyLabel(0), QStringLiteral("floor")); // no label: the id
 }

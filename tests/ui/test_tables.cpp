@@ -4,9 +4,11 @@
 // is as tall as its rows; the bounce, collision and SAT tables export as CSV with a decimal
 // point, numbers that read back exactly.
 
+#include "common/language.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/fitting_table.h"
+#include "panels/inspector_panel.h"
 #include "panels/sat_panel.h"
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
@@ -15,6 +17,8 @@
 
 #include <QFile>
 #include <QHeaderView>
+#include <QLabel>
+#include <QScopeGuard>
 #include <QScrollBar>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -146,6 +150,7 @@ private slots:
     void bouncesCsvHasTheNumbers();
     void collisionCsvHoldsBackTheAfterColumn();
     void satCsvHasTheAxes();
+    void tablesNameBodiesByTheirLabels();
 };
 
 void TestTables::bouncesFitANarrowColumn()
@@ -254,9 +259,12 @@ void TestTables::bouncesCsvHasTheNumbers()
     QCOMPARE(back.rows.size(), 4);
     for (const QStringList& row : back.rows) {
         // e as the body has it, exactly.
+        // The ball as the class reads it: its label (here in English), not its id.
         const auto& bodies = w.controller().world().bodies();
+        const lessons::Scene& scene = w.controller().scene();
         const auto body = std::find_if(bodies.begin(), bodies.end(), [&](const auto& b) {
-            return QString::fromStdString(b.name) == row[0];
+            const auto id = static_cast<physics::BodyId>(&b - bodies.data());
+            return scene.hasLabel(id) && scene.bodyLabel(id) == row[0];
         });
         QVERIFY(body != bodies.end());
         bool ok = false;
@@ -350,6 +358,66 @@ void TestTables::satCsvHasTheAxes()
     for (std::size_t i = 0; i < axes.size(); ++i) {
         QCOMPARE(back.rows[static_cast<qsizetype>(i)][overlap].toDouble(), axes[i].overlap);
         QCOMPARE(back.rows[static_cast<qsizetype>(i)][5].toDouble(), axes[i].minA);
+    }
+}
+
+void TestTables::tablesNameBodiesByTheirLabels()
+{
+    // In Czech, the collision of the light and the heavy ball names them as the scene labels
+    // them in Czech, in the caption, the table and its file; never by their ids.
+    QVERIFY(ui::applyLanguage(QStringLiteral("cs")));
+    const auto restoreEnglish = qScopeGuard([] { ui::applyLanguage(QStringLiteral("en")); });
+    {
+        MainWindow w;
+        QCOMPARE(w.openLesson(lesson("restitution"), true), QString());
+        w.lessonPlayer().goToStep(1);
+        for (int k = 0; k < 2000; ++k)
+            w.controller().stepForward();
+        ui::CollisionPanel panel(w.controller());
+        panel.refresh();
+        QStringList shown;
+        for (const QLabel* label : panel.findChildren<QLabel*>())
+            shown << label->text();
+        for (const QStringList& row : panel.table()->shownText().rows)
+            shown << row;
+        for (const QStringList& row : panel.table()->csv().rows)
+            shown << row;
+        const QString all = shown.join(u'|');
+        QVERIFY2(all.contains(QStringLiteral("lehká koule")), qPrintable(all));
+        QVERIFY2(all.contains(QStringLiteral("těžká koule")), qPrintable(all));
+        QVERIFY2(!all.contains(QStringLiteral("light")), qPrintable(all));
+        QVERIFY2(!all.contains(QStringLiteral("heavy")), qPrintable(all));
+        // The inspector names a clicked body the same way (body 0 is the light ball).
+        w.inspector().setBody(0);
+        QStringList inspector;
+        for (const QLabel* label : w.inspector().findChildren<QLabel*>())
+            inspector << label->text();
+        const QString shownThere = inspector.join(u'|');
+        QVERIFY2(shownThere.contains(QStringLiteral("lehká koule (")), qPrintable(shownThere));
+        QVERIFY2(!shownThere.contains(QStringLiteral("light")), qPrintable(shownThere));
+    }
+    {
+        // The bounce table's groups are named by their e, as the lesson calls the balls
+        // ("the ball with e = 0.8"), in the window's number format; not "e08".
+        MainWindow w;
+        QCOMPARE(w.openLesson(lesson("restitution"), true), QString());
+        ui::BouncePanel panel(w.controller());
+        QCOMPARE(checkAtWidth(panel, kNarrow), QString());
+        QVERIFY(panel.table()->isNarrow());
+        QStringList groups;
+        const ui::TableText& narrow = panel.table()->shownText();
+        for (int r = 0; r < narrow.rows.size(); ++r)
+            if (narrow.isTitle(r))
+                groups << narrow.rows[r].join(u' ');
+        QCOMPARE(groups, (QStringList{QStringLiteral("e = 0,00 (e² = 0,000)"),
+                                      QStringLiteral("e = 0,50 (e² = 0,250)"),
+                                      QStringLiteral("e = 0,80 (e² = 0,640)"),
+                                      QStringLiteral("e = 1,00 (e² = 1,000)")}));
+        // The file names each ball by its Czech label (numbered from the left: e can be
+        // changed, a name must not lie).
+        const auto& rows = panel.table()->csv().rows;
+        QCOMPARE(rows.size(), 4);
+        QCOMPARE(rows[1][0], QStringLiteral("míček 2"));
     }
 }
 

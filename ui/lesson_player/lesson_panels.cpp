@@ -11,6 +11,7 @@
 #include <QVBoxLayout>
 
 #include <cmath>
+#include <map>
 
 namespace rigidlab::ui {
 
@@ -119,12 +120,19 @@ void BouncePanel::refreshNow()
                         (heldTip.isEmpty() ? QString() : QStringLiteral("\n") + heldTip)};
 
     const auto& world = m_controller.world();
-    const auto& start = m_controller.scene().bodies;
+    const lessons::Scene& scene = m_controller.scene();
+    const auto& start = scene.bodies;
+    // A ball's group is named by its e, which is what the lesson calls it ("the ball with
+    // e = 0.8"); by its label too only where two balls share an e.
+    std::map<double, int> ballsWithE;
+    for (std::size_t id = 0; id < world.bodies().size() && id < start.size(); ++id)
+        if (world.bodies()[id].isDynamic())
+            ++ballsWithE[world.bodies()[id].restitution];
     for (std::size_t id = 0; id < world.bodies().size() && id < start.size(); ++id) {
         const physics::Body& b = world.bodies()[id];
         if (!b.isDynamic())
             continue;
-        const QString name = QString::fromStdString(b.name);
+        const QString name = scene.bodyLabel(static_cast<physics::BodyId>(id));
         const double e = b.restitution;
         const auto& apexes = m_controller.measurements().apexes(static_cast<int>(id));
         // The drop height: from where the body started to where it first touched down.
@@ -135,7 +143,9 @@ void BouncePanel::refreshNow()
         QStringList wideRow{name, num(e, 2) + QStringLiteral("  (e² = %1)").arg(num(e * e, 3)),
                             std::isfinite(previous) ? num(previous) : noneText()};
         QStringList csvRow{name, csvNumber(e), csvNumber(previous)};
-        narrow.rows << QStringList{tr("%1: e = %2, e² = %3").arg(name, num(e, 2), num(e * e, 3))};
+        narrow.rows << QStringList{
+            ballsWithE[e] > 1 ? tr("%1: e = %2, e² = %3").arg(name, num(e, 2), num(e * e, 3))
+                              : tr("e = %1 (e² = %2)").arg(num(e, 2), num(e * e, 3))};
         narrow.titleRows.resize(narrow.rows.size());
         narrow.titleRows.last() = true;
         narrow.rows << QStringList{tr("drop"), wideRow[2], QString()};
@@ -218,9 +228,9 @@ void CollisionPanel::refresh()
     const lessons::CollisionEvent& e = events.front();
     const auto& world = m_controller.world();
     const physics::Body* bodies[2] = {&world.body(e.a), &world.body(e.b)};
-    m_title->setText(tr("Collision of %1 and %2 at t = %3 s")
-                         .arg(QString::fromStdString(bodies[0]->name),
-                              QString::fromStdString(bodies[1]->name), num(e.t)));
+    const lessons::Scene& scene = m_controller.scene();
+    const QString names[2] = {scene.bodyLabel(e.a), scene.bodyLabel(e.b)};
+    m_title->setText(tr("Collision of %1 and %2 at t = %3 s").arg(names[0], names[1], num(e.t)));
     const auto after = [this](const QString& text) {
         return m_afterHeld && !text.isEmpty() ? heldText() : text;
     };
@@ -253,7 +263,7 @@ void CollisionPanel::refresh()
         const physics::Body& b = *bodies[k];
         if (!b.isDynamic())
             continue;
-        const QString name = QString::fromStdString(b.name);
+        const QString& name = names[k];
         const auto v0 = e.velocityBefore[k], v1 = e.velocityAfter[k];
         addVector(tr("%1: velocity [m/s]").arg(name),
                   QStringLiteral("%1: velocity x [m/s]").arg(name),
@@ -276,7 +286,7 @@ void CollisionPanel::refresh()
         const physics::Body& b = *bodies[k];
         if (!b.isDynamic() || b.inertia <= 0)
             continue;
-        const QString name = QString::fromStdString(b.name);
+        const QString& name = names[k];
         if (std::abs(e.predictedFull[k] - e.predictedWithoutRotation[k]) < 1e-12 &&
             std::abs(e.angularAfter[k]) < 1e-12)
             continue; // no spin involved

@@ -64,7 +64,7 @@ void DivergenceBanner::refresh()
     if (d && m_controller.isRunning())
         m_controller.setRunning(false);
     if (d)
-        m_text->setText(divergenceSentence(*d));
+        m_text->setText(divergenceSentence(*d, m_controller.scene().bodyLabel(d->body)));
     // dt cannot go below a scene file's smallest: there the button has nothing left to do.
     if (auto* halve = findChild<QPushButton*>(QStringLiteral("halveDt")))
         halve->setEnabled(0.5 * m_controller.world().def().dt >= lessons::kMinDt);

@@ -38,9 +38,9 @@ QString quantity(physics::Divergence::Quantity q)
 
 } // namespace
 
-QString divergenceReason(const physics::Divergence& d)
+QString divergenceReason(const physics::Divergence& d, const QString& bodyLabel)
 {
-    const QString body = QString::fromStdString(d.bodyName);
+    const QString body = bodyLabel.isEmpty() ? QString::fromStdString(d.bodyName) : bodyLabel;
     const bool energy = d.quantity == physics::Divergence::Quantity::TotalEnergy;
     if (d.kind == physics::Divergence::Kind::NonFinite && !energy)
         return DivergenceWords::tr("the %1 of body “%2” is no longer finite")
@@ -55,7 +55,7 @@ QString divergenceReason(const physics::Divergence& d)
     return reason;
 }
 
-QString divergenceSentence(const physics::Divergence& d)
+QString divergenceSentence(const physics::Divergence& d, const QString& bodyLabel)
 {
     const std::string_view integrator = physics::integratorName(d.integrator);
     return DivergenceWords::tr(
@@ -63,7 +63,7 @@ QString divergenceSentence(const physics::Divergence& d)
                "here rather than draw garbage.")
         .arg(number(d.time, 6), QLocale().toString(d.step), number(d.dt, 6),
              QString::fromUtf8(integrator.data(), static_cast<qsizetype>(integrator.size())),
-             divergenceReason(d));
+             divergenceReason(d, bodyLabel));
 }
 
 QString divergenceShort(const physics::Divergence& d)
@@ -73,10 +73,10 @@ QString divergenceShort(const physics::Divergence& d)
     return DivergenceWords::tr("%1 no longer finite").arg(quantity(d.quantity));
 }
 
-QString divergenceLabel(const physics::Divergence& d)
+QString divergenceLabel(const physics::Divergence& d, const QString& bodyLabel)
 {
     return DivergenceWords::tr("stopped at t = %1 s: %2")
-        .arg(number(d.time, 6), divergenceReason(d));
+        .arg(number(d.time, 6), divergenceReason(d, bodyLabel));
 }
 
 } // namespace rigidlab::ui

@@ -128,7 +128,8 @@ void InspectorPanel::refresh()
     const char* kind = b.type == physics::BodyType::Static      ? "static"
                        : b.type == physics::BodyType::Kinematic ? "kinematic"
                                                                 : "dynamic";
-    m_name->setText(QStringLiteral("%1 (%2)").arg(QString::fromStdString(b.name), tr(kind)));
+    m_name->setText(
+        QStringLiteral("%1 (%2)").arg(m_controller.scene().bodyLabel(m_body), tr(kind)));
     m_massEdit->setVisible(b.isDynamic());
     m_massUnit->setVisible(b.isDynamic());
     m_mass->setVisible(!b.isDynamic());

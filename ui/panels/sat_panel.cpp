@@ -338,11 +338,9 @@ void SatPanel::updateTable()
         m_shown = total;
     m_shown = std::clamp(m_shown, std::min(1, total), total);
     m_table->setRowCount(m_shown);
-    const auto& bodies = m_controller.world().bodies();
     auto name = [&](int owner) {
         const int id = owner == 0 ? m_a : m_b;
-        return id >= 0 ? QString::fromStdString(bodies[static_cast<std::size_t>(id)].name)
-                       : QString();
+        return id >= 0 ? m_controller.scene().bodyLabel(id) : QString();
     };
     for (int i = 0; i < m_shown; ++i) {
         const physics::SatAxis& ax = axes[static_cast<std::size_t>(i)];

@@ -77,9 +77,12 @@ QString WorldView::legendDetail(int world) const
 {
     const QString name = m_controller.variantLabels().value(world);
     const physics::World& w = world == 0 ? m_controller.world() : m_controller.variant(world - 1);
-    if (const auto& d = w.divergence())
-        return world == 0 ? tr("%1 (solid): %2").arg(name, divergenceLabel(*d))
-                          : tr("%1 (outline): %2").arg(name, divergenceLabel(*d));
+    if (const auto& d = w.divergence()) {
+        // The variants are copies of the scene's world: the same bodies, the same labels.
+        const QString detail = divergenceLabel(*d, m_controller.scene().bodyLabel(d->body));
+        return world == 0 ? tr("%1 (solid): %2").arg(name, detail)
+                          : tr("%1 (outline): %2").arg(name, detail);
+    }
     return legendLine(world);
 }
 

@@ -137,10 +137,11 @@ void MainWindow::updateTimeline()
 {
     // The label follows the drag too; the slider itself is left to the hand that holds it.
     const long long lo = m_controller->earliestStep(), hi = m_controller->latestStep();
+    // Step counts grouped as the locale does ("10 000" in Czech), as on the plots' axes.
     m_timeLabel->setText(tr(" step %1 of %2 · t = %3 s")
-                             .arg(m_controller->currentStep())
-                             .arg(hi)
-                             .arg(QLocale().toString(m_controller->world().time(), 'f', 3)));
+                             .arg(QLocale().toString(m_controller->currentStep()),
+                                  QLocale().toString(hi),
+                                  QLocale().toString(m_controller->world().time(), 'f', 3)));
     if (m_timeline->isSliderDown())
         return;
     const QSignalBlocker block(m_timeline);
