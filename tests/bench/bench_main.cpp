@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// rigidlab-bench: the benchmark scenes in RigidLab, Box2D 2.4 and Chipmunk 7, one table.
+// rigidlab-bench: the benchmark scenes in RigidLab, Box2D v3, Chipmunk 7 and Box2D 2.4, one
+// table.
 //   rigidlab-bench [--scene NAME] [--steps N] [--runs K]
 // Built and run by `./lab bench`; not a test (timings depend on the machine).
 
@@ -61,13 +62,24 @@ int main(int argc, char** argv)
     if (options.steps < 2 || options.runs < 1)
         return usage();
 
+    // Each peer left out of this build, with the reason (said under the table).
+    std::vector<std::string> missing;
     std::vector<std::unique_ptr<bench::BenchEngine>> engines;
     engines.push_back(bench::makeRigidLabBenchEngine());
-#ifdef RIGIDLAB_BENCH_BOX2D
-    engines.push_back(bench::makeBox2dEngine());
+#ifdef RIGIDLAB_BENCH_BOX2D_V3
+    engines.push_back(bench::makeBox2dV3Engine());
+#elif defined(RIGIDLAB_BENCH_BOX2D_V3_MISSING)
+    missing.push_back(std::string("Box2D v3: ") + RIGIDLAB_BENCH_BOX2D_V3_MISSING);
 #endif
 #ifdef RIGIDLAB_BENCH_CHIPMUNK
     engines.push_back(bench::makeChipmunkEngine());
+#else
+    missing.push_back("Chipmunk 7: not found (apt-get install libchipmunk-dev)");
+#endif
+#ifdef RIGIDLAB_BENCH_BOX2D
+    engines.push_back(bench::makeBox2dEngine());
+#else
+    missing.push_back("Box2D 2.4: not found (apt-get install libbox2d-dev)");
 #endif
 
     std::vector<bench::BenchResult> results;
@@ -75,11 +87,13 @@ int main(int argc, char** argv)
         const bench::BenchScene scene = *bench::makeBenchScene(name);
         for (auto& engine : engines) {
             results.push_back(bench::runBench(*engine, scene, options));
-            std::fprintf(stderr, "  %-9s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
+            std::fprintf(stderr, "  %-10s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
                          name.c_str(), results.back().msPerStep);
         }
     }
     std::printf("\n%s\n", bench::benchTable(results).c_str());
+    for (const std::string& m : missing)
+        std::printf("Column missing: %s\n", m.c_str());
     for (auto& engine : engines)
         std::printf("%-9s %s\n", engine->name().c_str(), engine->settings().c_str());
     std::printf("Every scene: dt 1/60 s, gravity -10 m/s^2, friction 0.6, no restitution; "
