@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // rigidlab-bench: the benchmark scenes in RigidLab, Box2D v3, Chipmunk 7 and Box2D 2.4, one
 // table.
-//   rigidlab-bench [--scene NAME] [--steps N] [--runs K]
+//   rigidlab-bench [--scene NAME] [--steps N] [--runs K] [--profile]
+// --profile adds RigidLab's stages (physics::StepProfile): where its step spends the time.
 // Built and run by `./lab bench`; not a test (timings depend on the machine).
 
 #include "bench_peers.h"
@@ -30,7 +31,7 @@ std::string cpuModel()
 
 int usage()
 {
-    std::fputs("usage: rigidlab-bench [--scene NAME] [--steps N] [--runs K]\n", stderr);
+    std::fputs("usage: rigidlab-bench [--scene NAME] [--steps N] [--runs K] [--profile]\n", stderr);
     return 2;
 }
 
@@ -40,8 +41,13 @@ int main(int argc, char** argv)
 {
     bench::BenchOptions options;
     std::vector<std::string> scenes = bench::benchSceneNames();
+    bool profile = false;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
+        if (arg == "--profile") {
+            profile = true;
+            continue;
+        }
         if (i + 1 >= argc)
             return usage();
         const char* value = argv[++i];
@@ -99,6 +105,12 @@ int main(int argc, char** argv)
     std::printf("Every scene: dt 1/60 s, gravity -10 m/s^2, friction 0.6, no restitution; "
                 "%d steps per run (the first not timed), median of %d runs.\n",
                 options.steps, options.runs);
+    if (profile) {
+        std::printf("\nRigidLab's step by stage (mean wall time [ms] and share):\n");
+        for (const std::string& name : scenes)
+            std::printf("%s\n",
+                        bench::rigidLabProfile(*bench::makeBenchScene(name), options).c_str());
+    }
     std::printf("Machine: %s, %ld cores.\n", cpuModel().c_str(), sysconf(_SC_NPROCESSORS_ONLN));
     return 0;
 }
