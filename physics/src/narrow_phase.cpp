@@ -63,12 +63,13 @@ void carryImpulses(const Contact& previous, Contact& c)
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
                  const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                 std::vector<Contact>& contacts)
+                 WorldPolygons& placed, std::vector<Contact>& contacts)
 {
     const auto swept = [&sweep](int body) {
         return sweep.empty() ? 0.0 : sweep[static_cast<size_t>(body)];
     };
     PreviousContacts before(previous);
+    placed.reset(bodies.size());
     for (const auto& [ia, ib] : pairs) {
         const Body& a = bodies[static_cast<size_t>(ia)];
         const Body& b = bodies[static_cast<size_t>(ib)];
@@ -82,8 +83,19 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
         c.a = ia;
         c.b = ib;
         const double pairMargin = margin + swept(ia) + swept(ib);
-        c.manifold = collideShapes(a.shape, xf[static_cast<size_t>(ia)], b.shape,
-                                   xf[static_cast<size_t>(ib)], pairMargin);
+        const Transform& xfA = xf[static_cast<size_t>(ia)];
+        const Transform& xfB = xf[static_cast<size_t>(ib)];
+        const Polygon* pa = a.shape.asPolygon();
+        const Polygon* pb = b.shape.asPolygon();
+        if (pa && pb) {
+            // Two polygons: the SAT on their placements of this step, without recording.
+            placed.place(ia, *pa, xfA);
+            placed.place(ib, *pb, xfB);
+            c.manifold =
+                collidePlacedPolygons(placed.view(ia), xfA, placed.view(ib), xfB, pairMargin);
+        } else {
+            c.manifold = collideShapes(a.shape, xfA, b.shape, xfB, pairMargin);
+        }
         if (c.manifold.pointCount == 0)
             continue;
         mixMaterials(a, b, c);

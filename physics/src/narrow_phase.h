@@ -5,6 +5,8 @@
 #include "rigidlab/physics/body.h"
 #include "rigidlab/physics/contact.h"
 
+#include "manifold.h"
+
 #include <utility>
 #include <vector>
 
@@ -15,11 +17,12 @@ namespace rigidlab::physics {
 /// (`sweep`, per body [m], empty when no body is fast: continuous.cpp), with the pair's mixed
 /// material and the impulses that `previous` (last step's contacts, sorted) held for the same
 /// features. Two resting bodies (asleep, or asleep on a static one) keep last step's contact.
-/// `xf`: each body's placement now.
+/// `xf`: each body's placement now. `placed`: a buffer for the bodies' polygons placed in the
+/// world, each once per step however many pairs it is in (reset here).
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
                  const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                 std::vector<Contact>& contacts);
+                 WorldPolygons& placed, std::vector<Contact>& contacts);
 
 /// The material of a contact from its two bodies': restitution the larger of the two (a ball
 /// bounces off a rubber floor as the floor makes it), friction the geometric mean (Box2D's

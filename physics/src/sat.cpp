@@ -15,15 +15,6 @@
 
 namespace rigidlab::physics {
 
-void toWorld(const Polygon& p, const Transform& xf, WorldPolygon& out)
-{
-    out.count = static_cast<int>(std::min<size_t>(p.vertices.size(), kMaxPolygonVertices));
-    for (int i = 0; i < out.count; ++i) {
-        out.v[static_cast<size_t>(i)] = xf.apply(p.vertices[static_cast<size_t>(i)]);
-        out.n[static_cast<size_t>(i)] = xf.q.apply(p.normals[static_cast<size_t>(i)]);
-    }
-}
-
 namespace {
 
 // The reference face changes from A to B only when B's axis is better by this much [m],
@@ -39,6 +30,22 @@ constexpr double kReferenceHysteresis = 0.0005;
         lo = std::min(lo, d);
         hi = std::max(hi, d);
     }
+}
+
+/// Places `p` by `xf` into the arrays (room for its vertex count), with its own projection
+/// interval on each edge normal; returns the vertex count. The one placement both paths use.
+int placePolygon(const Polygon& p, const Transform& xf, Vec2* v, Vec2* n, double* ownMin,
+                 double* ownMax)
+{
+    const int count = static_cast<int>(std::min<size_t>(p.vertices.size(), kMaxPolygonVertices));
+    for (int i = 0; i < count; ++i) {
+        v[i] = xf.apply(p.vertices[static_cast<size_t>(i)]);
+        n[i] = xf.q.apply(p.normals[static_cast<size_t>(i)]);
+    }
+    const WorldPolygon placed{v, n, nullptr, nullptr, count};
+    for (int i = 0; i < count; ++i)
+        project(placed, n[i], ownMin[i], ownMax[i]);
+    return count;
 }
 
 /// The SAT proper. Record: keep every axis for the lesson; else the engine's path, the same
@@ -59,9 +66,17 @@ void satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& w
         const WorldPolygon& p = owner == 0 ? wa : wb;
         for (int e = 0; e < p.count; ++e, ++index) {
             const Vec2& axis = p.n[static_cast<size_t>(e)];
+            // The axis' own polygon was projected on it when it was placed.
             double minA, maxA, minB, maxB;
-            project(wa, axis, minA, maxA);
-            project(wb, axis, minB, maxB);
+            if (owner == 0) {
+                minA = wa.ownMin[e];
+                maxA = wa.ownMax[e];
+                project(wb, axis, minB, maxB);
+            } else {
+                project(wa, axis, minA, maxA);
+                minB = wb.ownMin[e];
+                maxB = wb.ownMax[e];
+            }
             const double pushB = maxA - minB; // move B along +axis by this
             const double pushA = maxB - minA; // or along -axis by this
             const double overlap = std::min(pushB, pushA);
@@ -113,17 +128,65 @@ void satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& w
 
 } // namespace
 
+void toWorld(const Polygon& p, const Transform& xf, PlacedPolygon& out)
+{
+    out.count =
+        placePolygon(p, xf, out.v.data(), out.n.data(), out.ownMin.data(), out.ownMax.data());
+}
+
+void WorldPolygons::reset(size_t bodies)
+{
+    m_start.assign(bodies, -1);
+    m_count.assign(bodies, 0);
+    m_v.clear();
+    m_n.clear();
+    m_ownMin.clear();
+    m_ownMax.clear();
+}
+
+void WorldPolygons::place(int body, const Polygon& p, const Transform& xf)
+{
+    const auto b = static_cast<size_t>(body);
+    if (m_start[b] >= 0)
+        return;
+    const size_t start = m_v.size();
+    const size_t count = std::min<size_t>(p.vertices.size(), kMaxPolygonVertices);
+    m_v.resize(start + count);
+    m_n.resize(start + count);
+    m_ownMin.resize(start + count);
+    m_ownMax.resize(start + count);
+    m_start[b] = static_cast<int>(start);
+    m_count[b] = placePolygon(p, xf, m_v.data() + start, m_n.data() + start,
+                              m_ownMin.data() + start, m_ownMax.data() + start);
+}
+
+WorldPolygon WorldPolygons::view(int body) const
+{
+    const auto b = static_cast<size_t>(body);
+    const auto start = static_cast<size_t>(m_start[b]);
+    return {m_v.data() + start, m_n.data() + start, m_ownMin.data() + start,
+            m_ownMax.data() + start, m_count[b]};
+}
+
+Manifold collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
+                               const Transform& xfB, double margin)
+{
+    SatResult r;
+    satImpl<false>(a, xfA, b, xfB, margin, r);
+    return r.manifold;
+}
+
 SatResult satPolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
                       const Transform& xfB, double margin, bool record)
 {
     SatResult r;
-    WorldPolygon wa, wb;
-    toWorld(a, xfA, wa);
-    toWorld(b, xfB, wb);
+    PlacedPolygon pa, pb;
+    toWorld(a, xfA, pa);
+    toWorld(b, xfB, pb);
     if (record)
-        satImpl<true>(wa, xfA, wb, xfB, margin, r);
+        satImpl<true>(pa.view(), xfA, pb.view(), xfB, margin, r);
     else
-        satImpl<false>(wa, xfA, wb, xfB, margin, r);
+        satImpl<false>(pa.view(), xfA, pb.view(), xfB, margin, r);
     return r;
 }
 
