@@ -43,11 +43,23 @@ public:
     void reset(size_t bodies);
     /// Places body `body`'s polygon by `xf` unless already placed this step. Views taken
     /// before a call to place() may be invalidated by it.
-    void place(int body, const Polygon& p, const Transform& xf);
+    void place(int body, const Polygon& p, const Transform& xf)
+    {
+        if (m_start[static_cast<size_t>(body)] < 0)
+            placeNew(body, p, xf);
+    }
     /// The placed polygon of `body` (place() called this step).
-    WorldPolygon view(int body) const;
+    WorldPolygon view(int body) const
+    {
+        const auto b = static_cast<size_t>(body);
+        const auto start = static_cast<size_t>(m_start[b]);
+        return {m_v.data() + start, m_n.data() + start, m_ownMin.data() + start,
+                m_ownMax.data() + start, m_count[b]};
+    }
 
 private:
+    void placeNew(int body, const Polygon& p, const Transform& xf);
+
     std::vector<int> m_start; ///< per body: its first vertex in the arrays, or -1
     std::vector<int> m_count; ///< per body: its vertex count
     std::vector<Vec2> m_v, m_n;

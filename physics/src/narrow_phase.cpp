@@ -79,7 +79,8 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
                 continue;
             }
         }
-        Contact c;
+        // Built in place; taken back when the shapes are too far apart.
+        Contact& c = contacts.emplace_back();
         c.a = ia;
         c.b = ib;
         const double pairMargin = margin + swept(ia) + swept(ib);
@@ -96,12 +97,13 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
         } else {
             c.manifold = collideShapes(a.shape, xfA, b.shape, xfB, pairMargin);
         }
-        if (c.manifold.pointCount == 0)
+        if (c.manifold.pointCount == 0) {
+            contacts.pop_back();
             continue;
+        }
         mixMaterials(a, b, c);
         if (const Contact* p = before.find(ia, ib))
             carryImpulses(*p, c);
-        contacts.push_back(c);
     }
 }
 

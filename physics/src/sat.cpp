@@ -144,11 +144,9 @@ void WorldPolygons::reset(size_t bodies)
     m_ownMax.clear();
 }
 
-void WorldPolygons::place(int body, const Polygon& p, const Transform& xf)
+void WorldPolygons::placeNew(int body, const Polygon& p, const Transform& xf)
 {
     const auto b = static_cast<size_t>(body);
-    if (m_start[b] >= 0)
-        return;
     const size_t start = m_v.size();
     const size_t count = std::min<size_t>(p.vertices.size(), kMaxPolygonVertices);
     m_v.resize(start + count);
@@ -158,14 +156,6 @@ void WorldPolygons::place(int body, const Polygon& p, const Transform& xf)
     m_start[b] = static_cast<int>(start);
     m_count[b] = placePolygon(p, xf, m_v.data() + start, m_n.data() + start,
                               m_ownMin.data() + start, m_ownMax.data() + start);
-}
-
-WorldPolygon WorldPolygons::view(int body) const
-{
-    const auto b = static_cast<size_t>(body);
-    const auto start = static_cast<size_t>(m_start[b]);
-    return {m_v.data() + start, m_n.data() + start, m_ownMin.data() + start,
-            m_ownMax.data() + start, m_count[b]};
 }
 
 Manifold collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
