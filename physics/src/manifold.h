@@ -68,8 +68,11 @@ private:
 
 /// The SAT's verdict and manifold for two placed polygons, without recording the axes (the
 /// engine's path; sat.cpp). pointCount == 0 when farther apart than margin.
+/// `separatingAxis`: in, an axis to try first (last step's separating axis of the pair, or
+/// -1); out, the axis that showed them farther apart than margin, or -1. The axis tried first
+/// saves the rest of the test for a pair still apart, and never changes the result.
 Manifold collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
-                               const Transform& xfB, double margin);
+                               const Transform& xfB, double margin, int& separatingAxis);
 
 /// Builds the manifold of two polygons with `ref` as the reference polygon (owner 0 is A,
 /// 1 is B) and its edge `refEdge` as the reference face (manifold.cpp). `intersecting`: the
