@@ -12,24 +12,24 @@ namespace rigidlab::physics {
 
 namespace {
 
-/// Last step's contacts, looked up pair by pair in increasing order: both lists are sorted,
-/// so one cursor walks through them once.
-class PreviousContacts {
+/// Last step's records of pairs (contacts, separated pairs), looked up pair by pair in
+/// increasing order: both lists are sorted, so one cursor walks through them once.
+template <typename Record> class PreviousPairs {
 public:
-    explicit PreviousContacts(const std::vector<Contact>& contacts) : m_contacts(contacts) {}
-    /// Last step's contact of the pair (a, b), or null. Calls come in increasing (a, b).
-    const Contact* find(int a, int b)
+    explicit PreviousPairs(const std::vector<Record>& records) : m_records(records) {}
+    /// Last step's record of the pair (a, b), or null. Calls come in increasing (a, b).
+    const Record* find(int a, int b)
     {
-        while (m_next < m_contacts.size() &&
-               std::pair(m_contacts[m_next].a, m_contacts[m_next].b) < std::pair(a, b))
+        while (m_next < m_records.size() &&
+               std::pair(m_records[m_next].a, m_records[m_next].b) < std::pair(a, b))
             ++m_next;
-        if (m_next < m_contacts.size() && m_contacts[m_next].a == a && m_contacts[m_next].b == b)
-            return &m_contacts[m_next];
+        if (m_next < m_records.size() && m_records[m_next].a == a && m_records[m_next].b == b)
+            return &m_records[m_next];
         return nullptr;
     }
 
 private:
-    const std::vector<Contact>& m_contacts;
+    const std::vector<Record>& m_records;
     size_t m_next = 0;
 };
 
@@ -63,12 +63,17 @@ void carryImpulses(const Contact& previous, Contact& c)
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
                  const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                 std::vector<Contact>& contacts)
+                 NarrowPhaseCache& cache, std::vector<Contact>& contacts)
 {
     const auto swept = [&sweep](int body) {
         return sweep.empty() ? 0.0 : sweep[static_cast<size_t>(body)];
     };
-    PreviousContacts before(previous);
+    PreviousPairs<Contact> before(previous);
+    std::swap(cache.separated, cache.previousSeparated);
+    cache.separated.clear();
+    PreviousPairs<SeparatedPair> apartBefore(cache.previousSeparated);
+    WorldPolygons& placed = cache.placed;
+    placed.reset(bodies.size());
     for (const auto& [ia, ib] : pairs) {
         const Body& a = bodies[static_cast<size_t>(ia)];
         const Body& b = bodies[static_cast<size_t>(ib)];
@@ -78,18 +83,36 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
                 continue;
             }
         }
-        Contact c;
+        // Built in place; taken back when the shapes are too far apart.
+        Contact& c = contacts.emplace_back();
         c.a = ia;
         c.b = ib;
         const double pairMargin = margin + swept(ia) + swept(ib);
-        c.manifold = collideShapes(a.shape, xf[static_cast<size_t>(ia)], b.shape,
-                                   xf[static_cast<size_t>(ib)], pairMargin);
-        if (c.manifold.pointCount == 0)
+        const Transform& xfA = xf[static_cast<size_t>(ia)];
+        const Transform& xfB = xf[static_cast<size_t>(ib)];
+        const Polygon* pa = a.shape.asPolygon();
+        const Polygon* pb = b.shape.asPolygon();
+        if (pa && pb) {
+            // Two polygons: the SAT on their placements of this step, without recording,
+            // trying last step's separating axis first.
+            placed.place(ia, *pa, xfA);
+            placed.place(ib, *pb, xfB);
+            const SeparatedPair* apart = apartBefore.find(ia, ib);
+            int axis = apart ? apart->axis : -1;
+            c.manifold =
+                collidePlacedPolygons(placed.view(ia), xfA, placed.view(ib), xfB, pairMargin, axis);
+            if (axis >= 0)
+                cache.separated.push_back({ia, ib, axis});
+        } else {
+            c.manifold = collideShapes(a.shape, xfA, b.shape, xfB, pairMargin);
+        }
+        if (c.manifold.pointCount == 0) {
+            contacts.pop_back();
             continue;
+        }
         mixMaterials(a, b, c);
         if (const Contact* p = before.find(ia, ib))
             carryImpulses(*p, c);
-        contacts.push_back(c);
     }
 }
 

@@ -5,21 +5,40 @@
 #include "rigidlab/physics/body.h"
 #include "rigidlab/physics/contact.h"
 
+#include "manifold.h"
+
 #include <utility>
 #include <vector>
 
 namespace rigidlab::physics {
+
+/// A pair of polygons that the SAT found farther apart than their margin, and the axis that
+/// showed it (its index in the SAT's order: A's edges, then B's).
+struct SeparatedPair {
+    int a = 0, b = 0;
+    int axis = -1;
+};
+
+/// The narrow phase's buffers, kept in the world's scratch from step to step. They save work
+/// and change no result: a fresh cache gives the same contacts, bit for bit.
+struct NarrowPhaseCache {
+    WorldPolygons placed; ///< this step's polygons placed in the world, each once
+    /// The pairs found apart this step and last step, in pair order: last step's separating
+    /// axis is tried first (collidePlacedPolygons), and a pair that has not come closer is
+    /// settled by one axis instead of all of them.
+    std::vector<SeparatedPair> separated, previousSeparated;
+};
 
 /// The contacts of `pairs` (a < b, sorted), in their order: each pair's manifold
 /// (collideShapes, manifold.cpp) for shapes closer than margin plus both bodies' swept margins
 /// (`sweep`, per body [m], empty when no body is fast: continuous.cpp), with the pair's mixed
 /// material and the impulses that `previous` (last step's contacts, sorted) held for the same
 /// features. Two resting bodies (asleep, or asleep on a static one) keep last step's contact.
-/// `xf`: each body's placement now.
+/// `xf`: each body's placement now. `cache`: see NarrowPhaseCache.
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
                  const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                 std::vector<Contact>& contacts);
+                 NarrowPhaseCache& cache, std::vector<Contact>& contacts);
 
 /// The material of a contact from its two bodies': restitution the larger of the two (a ball
 /// bounces off a rubber floor as the floor makes it), friction the geometric mean (Box2D's

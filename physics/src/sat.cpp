@@ -15,15 +15,6 @@
 
 namespace rigidlab::physics {
 
-void toWorld(const Polygon& p, const Transform& xf, WorldPolygon& out)
-{
-    out.count = static_cast<int>(std::min<size_t>(p.vertices.size(), kMaxPolygonVertices));
-    for (int i = 0; i < out.count; ++i) {
-        out.v[static_cast<size_t>(i)] = xf.apply(p.vertices[static_cast<size_t>(i)]);
-        out.n[static_cast<size_t>(i)] = xf.q.apply(p.normals[static_cast<size_t>(i)]);
-    }
-}
-
 namespace {
 
 // The reference face changes from A to B only when B's axis is better by this much [m],
@@ -41,14 +32,64 @@ constexpr double kReferenceHysteresis = 0.0005;
     }
 }
 
+/// Places `p` by `xf` into the arrays (room for its vertex count), with its own projection
+/// interval on each edge normal; returns the vertex count. The one placement both paths use.
+int placePolygon(const Polygon& p, const Transform& xf, Vec2* v, Vec2* n, double* ownMin,
+                 double* ownMax)
+{
+    const int count = static_cast<int>(std::min<size_t>(p.vertices.size(), kMaxPolygonVertices));
+    for (int i = 0; i < count; ++i) {
+        v[i] = xf.apply(p.vertices[static_cast<size_t>(i)]);
+        n[i] = xf.q.apply(p.normals[static_cast<size_t>(i)]);
+    }
+    const WorldPolygon placed{v, n, nullptr, nullptr, count};
+    for (int i = 0; i < count; ++i)
+        project(placed, n[i], ownMin[i], ownMax[i]);
+    return count;
+}
+
+/// Both polygons projected on the normal `e` of polygon `owner` (0: A, 1: B). The axis' own
+/// polygon was projected on it when it was placed.
+[[gnu::always_inline]] inline void projectOn(const WorldPolygon& wa, const WorldPolygon& wb,
+                                             int owner, int e, double& minA, double& maxA,
+                                             double& minB, double& maxB)
+{
+    if (owner == 0) {
+        minA = wa.ownMin[e];
+        maxA = wa.ownMax[e];
+        project(wb, wa.n[e], minB, maxB);
+    } else {
+        project(wa, wb.n[e], minA, maxA);
+        minB = wb.ownMin[e];
+        maxB = wb.ownMax[e];
+    }
+}
+
 /// The SAT proper. Record: keep every axis for the lesson; else the engine's path, the same
 /// arithmetic in the same order without building the axis records (twice as fast).
+/// `hint`: an axis (index in the order tested) to try first, as last step's separating axis
+/// of the pair (the engine's path only). Returns the index of the axis that separated the
+/// polygons by more than margin, or -1.
+///
+/// The hint cannot change the result: the polygons are farther apart than margin when any
+/// axis shows it, and then there is no manifold whichever axis it was; when the hinted axis
+/// does not show it, the test runs as without a hint.
 template <bool kRecord>
-void satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb,
-             const Transform& xfB, double margin, SatResult& r)
+int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb,
+            const Transform& xfB, double margin, int hint, SatResult& r)
 {
     if constexpr (kRecord)
         r.axes.reserve(static_cast<size_t>(wa.count + wb.count));
+    if (!kRecord && hint >= 0 && hint < wa.count + wb.count) {
+        const int owner = hint < wa.count ? 0 : 1;
+        double minA, maxA, minB, maxB;
+        projectOn(wa, wb, owner, owner == 0 ? hint : hint - wa.count, minA, maxA, minB, maxB);
+        if (std::min(maxA - minB, maxB - minA) < -margin) {
+            r.axesTested = 1;
+            r.intersects = false;
+            return hint;
+        }
+    }
 
     // Least overlap over all axes (the depth), and over each polygon's own axes (to pick
     // the reference face with hysteresis).
@@ -60,8 +101,7 @@ void satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& w
         for (int e = 0; e < p.count; ++e, ++index) {
             const Vec2& axis = p.n[static_cast<size_t>(e)];
             double minA, maxA, minB, maxB;
-            project(wa, axis, minA, maxA);
-            project(wb, axis, minB, maxB);
+            projectOn(wa, wb, owner, e, minA, maxA, minB, maxB);
             const double pushB = maxA - minB; // move B along +axis by this
             const double pushA = maxB - minA; // or along -axis by this
             const double overlap = std::min(pushB, pushA);
@@ -82,7 +122,7 @@ void satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& w
                 r.axesTested = index + 1;
                 r.separatingAxis = kRecord ? index : -1;
                 r.intersects = false;
-                return;
+                return index;
             }
             if (leastIndex < 0 || overlap < least) {
                 least = overlap;
@@ -102,28 +142,67 @@ void satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& w
     r.leastAxis = kRecord ? leastIndex : -1;
     r.depth = least;
     if (!r.intersects && margin <= 0.0)
-        return;
+        return -1;
 
     // Reference face: A's unless B's one-sided overlap is clearly smaller.
     if (leastOwn[1] < leastOwn[0] - kReferenceHysteresis)
         buildPolygonManifold(wb, xfB, wa, xfA, 1, leastEdge[1], margin, r.intersects, r.manifold);
     else
         buildPolygonManifold(wa, xfA, wb, xfB, 0, leastEdge[0], margin, r.intersects, r.manifold);
+    return -1;
 }
 
 } // namespace
+
+void toWorld(const Polygon& p, const Transform& xf, PlacedPolygon& out)
+{
+    out.count =
+        placePolygon(p, xf, out.v.data(), out.n.data(), out.ownMin.data(), out.ownMax.data());
+}
+
+void WorldPolygons::reset(size_t bodies)
+{
+    m_start.assign(bodies, -1);
+    m_count.assign(bodies, 0);
+    m_v.clear();
+    m_n.clear();
+    m_ownMin.clear();
+    m_ownMax.clear();
+}
+
+void WorldPolygons::placeNew(int body, const Polygon& p, const Transform& xf)
+{
+    const auto b = static_cast<size_t>(body);
+    const size_t start = m_v.size();
+    const size_t count = std::min<size_t>(p.vertices.size(), kMaxPolygonVertices);
+    m_v.resize(start + count);
+    m_n.resize(start + count);
+    m_ownMin.resize(start + count);
+    m_ownMax.resize(start + count);
+    m_start[b] = static_cast<int>(start);
+    m_count[b] = placePolygon(p, xf, m_v.data() + start, m_n.data() + start,
+                              m_ownMin.data() + start, m_ownMax.data() + start);
+}
+
+Manifold collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
+                               const Transform& xfB, double margin, int& separatingAxis)
+{
+    SatResult r;
+    separatingAxis = satImpl<false>(a, xfA, b, xfB, margin, separatingAxis, r);
+    return r.manifold;
+}
 
 SatResult satPolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
                       const Transform& xfB, double margin, bool record)
 {
     SatResult r;
-    WorldPolygon wa, wb;
-    toWorld(a, xfA, wa);
-    toWorld(b, xfB, wb);
+    PlacedPolygon pa, pb;
+    toWorld(a, xfA, pa);
+    toWorld(b, xfB, pb);
     if (record)
-        satImpl<true>(wa, xfA, wb, xfB, margin, r);
+        satImpl<true>(pa.view(), xfA, pb.view(), xfB, margin, -1, r);
     else
-        satImpl<false>(wa, xfA, wb, xfB, margin, r);
+        satImpl<false>(pa.view(), xfA, pb.view(), xfB, margin, -1, r);
     return r;
 }
 

@@ -93,7 +93,7 @@ void World::findContacts()
     m_profile.pairs = static_cast<int>(s.pairs.size());
 
     StageTimer narrow(m_profile, Stage::NarrowPhase);
-    narrowPhase(m_bodies, s.xf, s.pairs, margin, m_sweep, s.previous, m_contacts);
+    narrowPhase(m_bodies, s.xf, s.pairs, margin, m_sweep, s.previous, s.narrow, m_contacts);
     m_profile.contacts = static_cast<int>(m_contacts.size());
 }
 

@@ -10,6 +10,7 @@
 #include "broad_phase.h"
 #include "contact_solver.h"
 #include "dynamics.h"
+#include "narrow_phase.h"
 
 #include <Eigen/Core>
 
@@ -23,6 +24,7 @@ struct World::Scratch {
     BroadPhase broadPhase;
     std::vector<std::pair<int, int>> pairs;
     std::vector<Contact> previous;
+    NarrowPhaseCache narrow; ///< saves the narrow phase work, changes no result (narrow_phase.h)
     Eigen::VectorXd q, v;
     Eigen::VectorXd shake; ///< positions before the joint projection (symplectic Euler)
     /// The state at the start of the step, the mean velocity and the midpoint, for the

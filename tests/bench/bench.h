@@ -133,6 +133,12 @@ struct RigidLabBenchSettings {
 };
 std::unique_ptr<BenchEngine> makeRigidLabBenchEngine(const RigidLabBenchSettings& settings = {});
 
+/// RigidLab's step on the scene, stage by stage (physics::StepProfile), as one line: the mean
+/// wall time of each stage that ran over `options.steps` steps (the first not counted) [ms]
+/// and its share of the whole step, and the mean number of pairs and contacts.
+std::string rigidLabProfile(const BenchScene& scene, const BenchOptions& options,
+                            const RigidLabBenchSettings& settings = {});
+
 /// The RigidLab world of a benchmark scene (what the adapter steps).
 physics::World buildBenchWorld(const BenchScene& scene, const RigidLabBenchSettings& settings);
 

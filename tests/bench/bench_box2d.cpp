@@ -13,7 +13,7 @@ using bench::BenchShapeKind;
 
 class Box2dEngine final : public bench::BenchEngine {
 public:
-    std::string name() const override { return "Box2D"; }
+    std::string name() const override { return "Box2D 2.4"; }
     std::string settings() const override
     {
         return "2.4.1, 8 velocity / 3 position iterations, single precision, sleeping off";

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The peers' adapters, each in its own file and compiled only when its engine is installed.
+// The peers' adapters, each in its own file and compiled only when its engine is installed
+// (Box2D v3: when its source tree is given, CMakeLists.txt).
 
 #include "bench.h"
 
@@ -11,6 +12,10 @@ namespace rigidlab::bench {
 #ifdef RIGIDLAB_BENCH_BOX2D
 /// Box2D 2.4 (single precision) at its usual settings: 8 velocity and 3 position iterations.
 std::unique_ptr<bench::BenchEngine> makeBox2dEngine();
+#endif
+#ifdef RIGIDLAB_BENCH_BOX2D_V3
+/// Box2D v3 (single precision) at its usual settings (4 substeps), on one thread.
+std::unique_ptr<bench::BenchEngine> makeBox2dV3Engine();
 #endif
 #ifdef RIGIDLAB_BENCH_CHIPMUNK
 /// Chipmunk 7 (double precision) at its usual settings: 10 iterations.

@@ -5,8 +5,10 @@
 
 #include "rigidlab/physics/shape.h"
 
+#include <algorithm>
 #include <cassert>
 #include <charconv>
+#include <cstdio>
 
 namespace rigidlab::bench {
 
@@ -146,6 +148,42 @@ std::string benchSceneJson(const BenchScene& scene, const RigidLabBenchSettings&
     }
     out += "  ]\n}\n";
     return out;
+}
+
+std::string rigidLabProfile(const BenchScene& scene, const BenchOptions& options,
+                            const RigidLabBenchSettings& settings)
+{
+    physics::World world = buildBenchWorld(scene, settings);
+    world.step(); // sets up the contacts: not counted, as in runBench
+    double ms[physics::kStageCount] = {};
+    bool ran[physics::kStageCount] = {};
+    double total = 0, pairs = 0, contacts = 0;
+    const int counted = std::max(1, options.steps - 1);
+    for (int i = 0; i < counted; ++i) {
+        world.step();
+        const physics::StepProfile& p = world.profile();
+        for (int s = 0; s < physics::kStageCount; ++s) {
+            ms[s] += p.ms[s];
+            ran[s] = ran[s] || p.ran[s];
+        }
+        total += p.total;
+        pairs += p.pairs;
+        contacts += p.contacts;
+    }
+    char text[96];
+    std::snprintf(text, sizeof text, "%-12s %.3f ms/step:", scene.name.c_str(), total / counted);
+    std::string out = text;
+    for (int s = 0; s < physics::kStageCount; ++s) {
+        if (!ran[s])
+            continue;
+        std::snprintf(text, sizeof text, " %s %.3f (%.0f %%),",
+                      physics::stageName(static_cast<physics::Stage>(s)), ms[s] / counted,
+                      total > 0 ? 100.0 * ms[s] / total : 0.0);
+        out += text;
+    }
+    std::snprintf(text, sizeof text, " %.0f pairs, %.0f contacts", pairs / counted,
+                  contacts / counted);
+    return out + text;
 }
 
 std::unique_ptr<BenchEngine> makeRigidLabBenchEngine(const RigidLabBenchSettings& settings)
