@@ -81,6 +81,10 @@ Commands:
   stress [OPTIONS]           stiff and extreme cases, each with its verdict
       --case NAME            one case (default: all; --case list names them)
       --json FILE.json       the table as JSON
+  conserve [OPTIONS]         kinetic energy of an elastic gas and a cradle row, per solver
+      --balls N              balls in the gas (default 300)
+      --time T               simulated time [s] (default 60)
+      --dt DT                time step [s] (default 0.001)
   --help                     this text
   --version                  the version of rigidlab-cli
 
@@ -321,6 +325,7 @@ constexpr Command kCommands[] = {
     {QLatin1StringView("sat"), &commandSat},
     {QLatin1StringView("error-vs-time"), &cli::commandErrorVsTime},
     {QLatin1StringView("stress"), &cli::commandStress},
+    {QLatin1StringView("conserve"), &cli::commandConserve},
     {QLatin1StringView("bench"), &commandBench},
     {QLatin1StringView("lesson"), &cli::commandLesson},
     {QLatin1StringView("lessons"), &cli::commandLessons},

@@ -12,6 +12,8 @@ namespace rigidlab::cli {
 
 int commandErrorVsTime(const QStringList& words);
 int commandStress(const QStringList& words);
+/// The conservation experiments (cli_conserve.cpp).
+int commandConserve(const QStringList& words);
 
 /// The application object: a QApplication on the offscreen platform for error-vs-time (its
 /// --plot draws with the window's plot widget) and lesson (its --export too), a

@@ -46,8 +46,8 @@ void World::solveContacts()
         s.angularVelocityBefore[i] = m_bodies[i].angularVelocity;
     }
     ContactSolver& solver = s.solver;
-    solver.begin(m_contacts, m_bodies, m_contactSettings, h, s.xfPosition, s.velocityAtStart,
-                 s.angularVelocityAtStart);
+    solver.begin(m_contacts, s.previous, m_bodies, m_contactSettings, h, s.xfPosition,
+                 s.velocityAtStart, s.angularVelocityAtStart);
     if (m_def.solver == SolverKind::SeedImpulse)
         solver.solveSeed();
     else

@@ -11,30 +11,44 @@
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/world.h"
 
+#include <algorithm>
 #include <vector>
 
 namespace rigidlab::physics {
 
 class ContactSolver {
 public:
-    /// Takes this step's contacts. Only contacts with an awake dynamic body are solved.
+    /// Takes this step's contacts (and last step's, for what bounced then: not warm started).
+    /// Only contacts with an awake dynamic body are solved.
     /// startPosition: each body's centre of mass where the narrow phase found the contacts;
     /// startVelocity / startAngularVelocity: its velocities then, before forces, so that a
     /// bounce can be timed within the step.
-    void begin(std::vector<Contact>& contacts, std::vector<Body>& bodies,
-               const ContactSettings& settings, double dt, const std::vector<Vec2>& startPosition,
-               const std::vector<Vec2>& startVelocity,
+    void begin(std::vector<Contact>& contacts, const std::vector<Contact>& previous,
+               std::vector<Body>& bodies, const ContactSettings& settings, double dt,
+               const std::vector<Vec2>& startPosition, const std::vector<Vec2>& startVelocity,
                const std::vector<double>& startAngularVelocity);
 
     /// Seed impulse: one impulse per contact point, in order, with the full denominator
     /// 1/mA + 1/mB + (rA x n)^2/IA + (rB x n)^2/IB and Coulomb friction.
     void solveSeed();
 
-    /// Sequential impulse: warm start with last step's impulses, then iterate, accumulating
-    /// and clamping normal (>= 0) and friction (|t| <= mu n) impulses.
+    /// Sequential impulse in two phases (Guendelman, Bridson and Fedkiw, "Nonconvex rigid
+    /// bodies with stacking", SIGGRAPH 2003): first the collisions, every contact that closes
+    /// within the step and approaches faster than the threshold bouncing from its approach
+    /// as it is then, in sweeps until none approaches (solveCollisions()); then the contacts,
+    /// warm started with last step's impulses and iterated with e = 0, accumulating and
+    /// clamping normal (>= 0) and friction (|t| <= mu n) impulses.
     /// threshold: a new contact approaching slower than this rests instead of bouncing [m/s];
     /// one that pushed in the step before rests below the settings' restitutionThreshold.
     void solveSequential(int iterations, bool warmStart, double threshold);
+
+    /// The collision phase alone, on the velocities as they are (after prepare()): at most
+    /// `sweeps` sweeps over the contacts. Each bounce is a pair's own impulse to the target
+    /// -e vn from its approach vn at that moment (two points of a manifold together), so that
+    /// none adds energy: at e = 1 each keeps it, below 1 each takes some. Returns the sweeps
+    /// made. Another solver gets the same targets from restitution.h (closesWithinStep,
+    /// impactFraction, bounceVelocity, centreAt, leverArmsAt).
+    int solveCollisions(int sweeps);
 
     /// Both solvers end by writing the velocities back to the bodies and the accumulated
     /// impulses to the contacts.
@@ -76,12 +90,23 @@ private:
         bool bounces = false;      ///< bias is a bounce (restitution) target
         double vnPrepared = 0;     ///< normal velocity the bias was computed from [m/s]
         double speculative = 0;    ///< the least target a gap allows: -separation / dt [m/s]
+        double separation = 0;     ///< at the start of the step [m]
+        double threshold = 0;      ///< approaches slower than this do not bounce [m/s]
+        /// What the forces of the step add to the normal velocity (vn - vn at the start)
+        /// [m/s]: a bounce at the fraction f keeps (1 - f) of it after the impact.
+        double forcing = 0;
+        double bounceImpulse = 0;  ///< of the collision phase, accumulated [N s]
+        double warmNormal = 0;     ///< last step's normal impulse, the warm start [N s]
+        double warmTangent = 0;    ///< last step's tangent impulse, the warm start [N s]
+        bool timed = false;        ///< lever arms placed at the moment of impact
+        Vec2 point = Vec2::Zero(); ///< the manifold's point at the start of the step [m]
     };
     struct Constraint {
         int contact = 0;
         int a = 0, b = 0; ///< body indices
         double invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
         double friction = 0;
+        double restitution = 0;
         Vec2 normal = Vec2::Zero();
         Vec2 tangent = Vec2::Zero();
         int count = 0;
@@ -93,7 +118,24 @@ private:
     /// Approaches slower than `impact` do not bounce [m/s], nor, at a point that pushed in the
     /// step before (a resting contact), slower than `resting`.
     void prepare(double impact, double resting);
+    /// Applies the warm start impulses (warmNormal, warmTangent).
     void warmStart();
+    /// Lever arms of point i from the centres at the fraction f of the step, about one point
+    /// both bodies share then (see placeAt in the .cpp), and what depends on them.
+    void placeAt(Constraint& c, int i, double f);
+    /// The 2x2 normal mass matrix of a two-point manifold, and whether it is solved as a block.
+    static void prepareBlock(Constraint& c);
+    /// Whether point i bounces now, at the velocities a and b: it closes within the step and
+    /// approaches faster than its threshold. Sets its target normal velocity [m/s]; times the
+    /// impact (and places the lever arms there) when the gap closes within the step.
+    bool bounceTarget(Constraint& c, int i, const Velocity& a, const Velocity& b, double& target);
+    /// The 2x2 complementarity problem of a block: x >= 0, w = K x + b >= 0, x.w = 0.
+    static bool solveBlock(const Constraint& c, double b1, double b2, double x[2]);
+    /// The normal velocity of point i at the start of the step, before forces [m/s].
+    double startNormalVelocity(const Constraint& c, int i) const;
+    /// Lever arms crossed with the normal and tangent, and the effective masses, of point i.
+    static void setMasses(Constraint& c, int i);
+    static void applyNormal(Constraint& c, int i, double lambda, Velocity& a, Velocity& b);
     static void solveFrictionPoint(Constraint& c, int i, Velocity& a, Velocity& b);
     static void solveNormalPoint(Constraint& c, int i, Velocity& a, Velocity& b);
     static void solveNormalBlock(Constraint& c, Velocity& a, Velocity& b);
@@ -106,6 +148,7 @@ private:
     void newRotationEpoch();
 
     std::vector<Contact>* m_contacts = nullptr;
+    const std::vector<Contact>* m_previous = nullptr;
     std::vector<Body>* m_bodies = nullptr;
     const ContactSettings* m_settings = nullptr;
     double m_dt = 0;
@@ -117,8 +160,33 @@ private:
     std::vector<Velocity> m_velocity; ///< per body
     std::vector<double> m_impact;     ///< per body, see impactFractions()
     std::vector<Rotation> m_rotation; ///< per body, valid where m_rotationStamp == m_stamp
+    bool m_seed = false;              ///< this step's solver is the seed's impulse
     std::vector<unsigned> m_rotationStamp;
     unsigned m_stamp = 0;
 };
+
+// The iteration's helpers are inlined into the loop, so that the two bodies' velocities stay
+// in registers for a whole constraint (called through memory, they took a third longer).
+[[gnu::always_inline]] inline double
+ContactSolver::normalVelocity(const Constraint& c, int i, const Velocity& a, const Velocity& b)
+{
+    const Point& p = c.p[i];
+    return (b.v - a.v).dot(c.normal) + b.w * p.rnB - a.w * p.rnA;
+}
+
+[[gnu::always_inline]] inline void ContactSolver::solveFrictionPoint(Constraint& c, int i,
+                                                                     Velocity& a, Velocity& b)
+{
+    Point& p = c.p[i];
+    const double vt = (b.v - a.v).dot(c.tangent) + b.w * p.rtB - a.w * p.rtA;
+    const double limit = c.friction * (p.normalImpulse + p.bounceImpulse);
+    const double next = std::clamp(p.tangentImpulse - p.tangentMass * vt, -limit, limit);
+    const double lambda = next - p.tangentImpulse;
+    p.tangentImpulse = next;
+    a.v -= (c.invMassA * lambda) * c.tangent;
+    a.w -= c.invIA * lambda * p.rtA;
+    b.v += (c.invMassB * lambda) * c.tangent;
+    b.w += c.invIB * lambda * p.rtB;
+}
 
 } // namespace rigidlab::physics

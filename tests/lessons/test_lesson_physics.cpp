@@ -347,7 +347,7 @@ void TestLesson::shippedQuestionsHaveTheirTextbookAnswers_data()
     QTest::newRow("drag-before-break")
         << "billiards_momentum" << 1 << 0 << 0.17 * 4 * std::exp(-0.2 * 0.1);
     QTest::newRow("drag-after-break")
-        << "billiards_momentum" << 1 << 1 << 0.17 * 4 * std::exp(-0.2 * 0.5);
+        << "billiards_momentum" << 1 << 1 << 0.17 * 4 * std::exp(-0.2 * 0.35);
     // Explicit Euler on a spring: (1 + (w dt)^2)^n with (w dt)^2 = 100 * 0.005^2, n = 200.
     QTest::newRow("stiff-euler-growth")
         << "stiff_springs" << 0 << 0 << (std::pow(1.0025, 200) - 1) * 100;

@@ -26,6 +26,9 @@ struct Contact {
     double friction = 0;                        ///< the geometric mean of the two bodies'
     std::array<double, 2> normalImpulse{0, 0};  ///< accumulated this step [N s]
     std::array<double, 2> tangentImpulse{0, 0}; ///< accumulated this step [N s]
+    /// The part of normalImpulse that was a bounce (the collision phase of the sequential
+    /// solver): the next step does not warm start it [N s].
+    std::array<double, 2> bounceImpulse{0, 0};
 };
 
 } // namespace rigidlab::physics
