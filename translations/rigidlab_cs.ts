@@ -1217,6 +1217,10 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
         <translation>Exportovat do CSV…</translation>
     </message>
     <message>
+        <source>Save CSV…</source>
+        <translation>Uložit CSV…</translation>
+    </message>
+    <message>
         <source>Save the table as a CSV file (decimal point, full precision) for a spreadsheet</source>
         <translation>Uložit tabulku jako soubor CSV (desetinná tečka, plná přesnost) pro tabulkový procesor</translation>
     </message>
@@ -1530,8 +1534,17 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
         <translation>Energetický drift</translation>
     </message>
     <message>
+        <source>Drift</source>
+        <translation>Drift</translation>
+    </message>
+    <message>
         <source>Separating axis test</source>
         <translation>Test oddělující osy</translation>
+    </message>
+    <message>
+        <source>Axis test</source>
+        <comment>short for: separating axis test</comment>
+        <translation>Test os</translation>
     </message>
     <message>
         <source>Bounces</source>
@@ -1939,12 +1952,16 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
         <translation>osa</translation>
     </message>
     <message>
-        <source>on axis [m]</source>
-        <translation>na ose [m]</translation>
+        <source>interval
+[m]</source>
+        <translation>interval
+[m]</translation>
     </message>
     <message>
-        <source>overlap</source>
-        <translation>překryv</translation>
+        <source>overlap
+[m]</source>
+        <translation>překryv
+[m]</translation>
     </message>
     <message>
         <source>The axis is the normal of this edge: polygon A or B, then the edge&apos;s number.</source>

@@ -58,8 +58,9 @@ QString vecStacked(const physics::Vec2& v)
 QPushButton* addTableAndExport(QVBoxLayout* layout, FittingTable* table, QWidget* parent)
 {
     layout->addWidget(table);
+    // Short: the button must fit the narrow column at the projector's text size.
     auto* button = new QPushButton(
-        QCoreApplication::translate("rigidlab::ui::FittingTable", "Export as CSV…"), parent);
+        QCoreApplication::translate("rigidlab::ui::FittingTable", "Save CSV…"), parent);
     button->setToolTip(QCoreApplication::translate(
         "rigidlab::ui::FittingTable",
         "Save the table as a CSV file (decimal point, full precision) for a spreadsheet"));
