@@ -977,12 +977,19 @@
         <translation>h%1/h%2</translation>
     </message>
     <message>
-        <source>bounce</source>
-        <translation>odskok</translation>
+        <source>no.</source>
+        <comment>a bounce&apos;s number</comment>
+        <translation>č.</translation>
     </message>
     <message>
-        <source>h [m]</source>
-        <translation>h [m]</translation>
+        <source>The bounce: the drop, then the first bounce, the second…</source>
+        <translation>Odskok: nejdřív pád, pak první odskok, druhý…</translation>
+    </message>
+    <message>
+        <source>h
+[m]</source>
+        <translation>h
+[m]</translation>
     </message>
     <message>
         <source>ratio</source>

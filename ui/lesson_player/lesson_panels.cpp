@@ -113,9 +113,11 @@ void BouncePanel::refreshNow()
                     << QStringLiteral("h%1/h%2").arg(i).arg(i - 1);
         wide.headerTips << heldTip << heldTip;
     }
-    narrow.headers = QStringList{tr("bounce"), tr("h [m]"), tr("ratio")};
+    // Short headers, the unit on a line of its own: the narrow column of a projector has
+    // room for three short words; the bounce's number says what it is with the tooltip.
+    narrow.headers = QStringList{tr("no.", "a bounce's number"), tr("h\n[m]"), tr("ratio")};
     narrow.headerTips =
-        QStringList{QString(), heldTip,
+        QStringList{tr("The bounce: the drop, then the first bounce, the second…"), heldTip,
                     tr("The height over the one before: compare it with e²") +
                         (heldTip.isEmpty() ? QString() : QStringLiteral("\n") + heldTip)};
 
