@@ -623,6 +623,32 @@ private slots:
         delete english;
     }
 
+    // Settings changed by hand and then kept by a reset are the run's from its start: the
+    // switch gives the same world, without a mark (nothing changed mid-run).
+    void switchKeepsSettingsAcrossReset()
+    {
+        MainWindow* w = new MainWindow;
+        QCOMPARE(w->openScene(shippedScene("ball_drop.json"), true), QString());
+        ui::SimulationController& controller = w->controller();
+        for (int i = 0; i < 15; ++i)
+            controller.stepForward();
+        const double dt = controller.world().def().dt / 4;
+        controller.setDt(dt);
+        controller.setRestitution(0.3);
+        controller.reset();
+        QCOMPARE(controller.edits().size(), std::size_t(2));
+        for (int i = 0; i < 25; ++i)
+            controller.stepForward();
+        const std::vector<double> bodies = bodyCoordinates(*w);
+        MainWindow* czech = ui::switchLanguage(w, QStringLiteral("cs"));
+        QCOMPARE(czech->controller().world().def().dt, dt);
+        QCOMPARE(czech->controller().world().def().restitution, 0.3);
+        QCOMPARE(czech->controller().currentStep(), 25);
+        QVERIFY(bodyCoordinates(*czech) == bodies);
+        QCOMPARE(czech->plot(0)->markCount(), 0);
+        delete czech;
+    }
+
     void switchKeepsSceneAndRunning()
     {
         MainWindow* w = new MainWindow;
