@@ -981,12 +981,19 @@
         <translation>h%1/h%2</translation>
     </message>
     <message>
-        <source>bounce</source>
-        <translation>odskok</translation>
+        <source>no.</source>
+        <comment>a bounce&apos;s number</comment>
+        <translation>č.</translation>
     </message>
     <message>
-        <source>h [m]</source>
-        <translation>h [m]</translation>
+        <source>The bounce: the drop, then the first bounce, the second…</source>
+        <translation>Odskok: nejdřív pád, pak první odskok, druhý…</translation>
+    </message>
+    <message>
+        <source>h
+[m]</source>
+        <translation>h
+[m]</translation>
     </message>
     <message>
         <source>ratio</source>
@@ -1223,6 +1230,10 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     <message>
         <source>Export as CSV…</source>
         <translation>Exportovat do CSV…</translation>
+    </message>
+    <message>
+        <source>Save CSV…</source>
+        <translation>Uložit CSV…</translation>
     </message>
     <message>
         <source>Save the table as a CSV file (decimal point, full precision) for a spreadsheet</source>
@@ -1538,8 +1549,17 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
         <translation>Energetický drift</translation>
     </message>
     <message>
+        <source>Drift</source>
+        <translation>Drift</translation>
+    </message>
+    <message>
         <source>Separating axis test</source>
         <translation>Test oddělující osy</translation>
+    </message>
+    <message>
+        <source>Axis test</source>
+        <comment>short for: separating axis test</comment>
+        <translation>Test os</translation>
     </message>
     <message>
         <source>Bounces</source>
@@ -1947,12 +1967,16 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
         <translation>osa</translation>
     </message>
     <message>
-        <source>on axis [m]</source>
-        <translation>na ose [m]</translation>
+        <source>interval
+[m]</source>
+        <translation>interval
+[m]</translation>
     </message>
     <message>
-        <source>overlap</source>
-        <translation>překryv</translation>
+        <source>overlap
+[m]</source>
+        <translation>překryv
+[m]</translation>
     </message>
     <message>
         <source>The axis is the normal of this edge: polygon A or B, then the edge&apos;s number.</source>

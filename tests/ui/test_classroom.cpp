@@ -31,6 +31,7 @@
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QStatusBar>
+#include <QTabBar>
 #include <QTableWidget>
 #include <QTextBrowser>
 #include <QToolBar>
@@ -303,8 +304,9 @@ private slots:
         QVERIFY(steps >= 20);
     }
 
-    // Every step's questions in sight, normal and on a projector: each answer box and Check
-    // button lies inside the window, uncut by any scroll area, however long the step's text.
+    // Every step's questions reachable, normal and on a projector: each answer box and Check
+    // button lies inside the window and, scrolled to, is uncut by any scroll area, however
+    // long the step's text.
     void everyQuestionInSight_data()
     {
         QTest::addColumn<QSize>("screen");
@@ -340,6 +342,18 @@ private slots:
                         widgets << b;
                 QCOMPARE(static_cast<std::size_t>(widgets.size()), 2 * asked);
                 for (const QWidget* x : widgets) {
+                    // The questions follow the text in the lesson's scrolling column: scrolled
+                    // to, each is whole in sight.
+                    QCoreApplication::processEvents();
+                    for (QWidget* p = x->parentWidget(); p; p = p->parentWidget())
+                        if (auto* scroll = qobject_cast<QScrollArea*>(p)) {
+                            // The whole widget (ensureWidgetVisible() would bring only a line
+                            // edit's cursor into view).
+                            const QPoint at = x->mapTo(scroll->widget(), QPoint(0, 0));
+                            scroll->ensureVisible(at.x() + x->width() / 2, at.y() + x->height() / 2,
+                                                  x->width() / 2 + 1, x->height() / 2 + 1);
+                        }
+                    QCoreApplication::processEvents();
                     const QRect r(x->mapTo(&w, QPoint(0, 0)), x->size());
                     const auto* b = qobject_cast<const QPushButton*>(x);
                     const QString name = b ? b->text() : QStringLiteral("answer box");
@@ -374,6 +388,69 @@ private slots:
         if (!walked)
             return;
         QVERIFY(questions >= 10);
+    }
+
+    // On a projector the step's text is read first: when a step opens, the lesson column shows
+    // at least kLines of it (or all of it, if shorter), whatever the introduction and the
+    // questions; and no dock's tab is cut to "E…".
+    void stepTextAndTabsReadable_data()
+    {
+        QTest::addColumn<QSize>("screen");
+        QTest::addColumn<bool>("present");
+        QTest::addRow("1024x768 presentation") << QSize(1024, 768) << true;
+        QTest::addRow("1024x768 normal") << QSize(1024, 768) << false;
+        QTest::addRow("1280x720 presentation") << QSize(1280, 720) << true;
+    }
+    void stepTextAndTabsReadable()
+    {
+        constexpr int kLines = 6;
+        QFETCH(QSize, screen);
+        QFETCH(bool, present);
+        MainWindow w;
+        if (present)
+            presentOn(w, screen);
+        else
+            showOn(w, screen);
+        int steps = 0;
+        const bool walked = visitShippedSteps(w, [&](const QString& path, int i,
+                                                     const lessons::LessonStep&) {
+            const QString where =
+                QStringLiteral("%1 step %2: ").arg(QFileInfo(path).baseName()).arg(i + 1);
+            auto* text = w.lessonPlayer().findChild<QTextBrowser*>();
+            QVERIFY(text && text->isVisible());
+            const QScrollArea* scroll = nullptr;
+            for (QWidget* p = text->parentWidget(); p && !scroll; p = p->parentWidget())
+                scroll = qobject_cast<const QScrollArea*>(p);
+            QVERIFY(scroll);
+            const QRect inView = QRect(text->mapTo(scroll->viewport(), QPoint(0, 0)), text->size())
+                                     .intersected(scroll->viewport()->rect());
+            const int line = QFontMetrics(text->font()).lineSpacing();
+            const int wanted = std::min(text->height(), kLines * line);
+            QVERIFY2(inView.height() >= wanted,
+                     qPrintable(where + QStringLiteral("%1 px of the text in sight, "
+                                                       "%2 lines of %3 px wanted")
+                                            .arg(inView.height())
+                                            .arg(kLines)
+                                            .arg(line)));
+            // Each tab of each tab group shows its dock's title whole.
+            for (const QTabBar* bar : w.findChildren<QTabBar*>()) {
+                if (!bar->isVisible() || bar->parentWidget() != &w)
+                    continue;
+                for (int t = 0; t < bar->count(); ++t) {
+                    const QString tab = bar->tabText(t);
+                    const int need = bar->fontMetrics().horizontalAdvance(tab);
+                    QVERIFY2(bar->elideMode() == Qt::ElideNone && bar->tabRect(t).width() >= need,
+                             qPrintable(where + QStringLiteral("tab \"%1\" %2 px for %3")
+                                                    .arg(tab)
+                                                    .arg(bar->tabRect(t).width())
+                                                    .arg(need)));
+                }
+            }
+            ++steps;
+        });
+        if (!walked)
+            return;
+        QVERIFY(steps >= 20);
     }
 
     // The step's table, or else the first plot it lists (its text talks about it), is the

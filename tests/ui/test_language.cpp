@@ -8,6 +8,7 @@
 #include "format/scene_loader.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/number_field.h"
+#include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "window/language_switch.h"
 #include "window/main_window.h"
@@ -15,6 +16,8 @@
 #include "first_question.h"
 #include "shipped_lessons.h"
 #include "test_main.h"
+
+#include <qcustomplot.h>
 
 #include <QAction>
 #include <QApplication>
@@ -174,6 +177,19 @@ std::vector<double> bodyCoordinates(MainWindow& w)
         out.push_back(b.position.x());
         out.push_back(b.position.y());
         out.push_back(b.angle);
+    }
+    return out;
+}
+
+/// Each plot's marks: the time of each, oldest first.
+std::vector<std::vector<double>> markTimes(MainWindow& w)
+{
+    std::vector<std::vector<double>> out;
+    for (int p = 0; p < MainWindow::kPlotCount; ++p) {
+        std::vector<double> times;
+        for (int i = 0; i < w.plot(p)->markCount(); ++i)
+            times.push_back(w.plot(p)->markLabel(i)->position->key());
+        out.push_back(times);
     }
     return out;
 }
@@ -524,6 +540,113 @@ private slots:
         QCOMPARE(english->controller().world().time(), time);
         QVERIFY(bodyCoordinates(*english) == bodies);
         delete english;
+    }
+
+    void switchKeepsAnswersMarksAndSettings()
+    {
+        // A lesson step with a question, measured; a wrong try, then the right one, then
+        // something typed and not checked; the integrator and dt changed by hand mid-run.
+        QString path;
+        MeasuredQuestion question;
+        MainWindow* w = new MainWindow;
+        w->setAttribute(Qt::WA_DeleteOnClose);
+        for (const QString& p : test::shippedLessons()) {
+            QCOMPARE(w->openLesson(p, true), QString());
+            question = runToFirstQuestion(*w);
+            if (question.value && *question.value != 0) {
+                path = p;
+                break;
+            }
+        }
+        QVERIFY(!path.isEmpty());
+        ui::LessonPlayer& player = w->lessonPlayer();
+        const QStringList heldAtFirst = player.heldBack();
+        player.answer(0, QLocale().toString(*question.value * 3 + 1, 'g', 12));
+        const QString wrong = player.result(0);
+        QVERIFY(!wrong.isEmpty());
+        player.answer(0, QLocale().toString(*question.value, 'g', 12));
+        const QString right = player.result(0);
+        QVERIFY(right != wrong);
+        const QStringList held = player.heldBack();
+        QVERIFY(held != heldAtFirst || heldAtFirst.isEmpty());
+        auto* box = player.findChild<QLineEdit*>();
+        QVERIFY(box);
+        box->setText(QStringLiteral("12"));
+
+        ui::SimulationController& controller = w->controller();
+        const physics::IntegratorKind integrator =
+            controller.world().def().integrator == physics::IntegratorKind::RK4
+                ? physics::IntegratorKind::Verlet
+                : physics::IntegratorKind::RK4;
+        const double dt = controller.world().def().dt / 2;
+        for (int i = 0; i < 10; ++i)
+            controller.stepForward();
+        controller.setIntegrator(integrator);
+        for (int i = 0; i < 30; ++i)
+            controller.stepForward();
+        controller.setDt(dt);
+        controller.setTimeScale(0.5);
+        for (int i = 0; i < 20; ++i)
+            controller.stepForward();
+        QCOMPARE(controller.edits().size(), std::size_t(2));
+        const std::vector<std::vector<double>> marks = markTimes(*w);
+        QCOMPARE(marks.front().size(), std::size_t(2)); // the energy plot marks both changes
+        const std::vector<double> bodies = bodyCoordinates(*w);
+        const long long steps = controller.currentStep();
+        const int step = player.stepIndex();
+        const auto tries = player.work().tries;
+        QCOMPARE(tries.front().size(), std::size_t(2));
+        w->show();
+        QVERIFY(QTest::qWaitForWindowExposed(w));
+
+        MainWindow* czech = ui::switchLanguage(w, QStringLiteral("cs"));
+        ui::LessonPlayer& cplayer = czech->lessonPlayer();
+        QCOMPARE(cplayer.stepIndex(), step);
+        QCOMPARE(cplayer.result(0).isEmpty(), false);
+        QVERIFY(cplayer.result(0) != right); // the verdict, in Czech
+        QCOMPARE(cplayer.heldBack(), held);  // what the answer released stays released
+        QCOMPARE(cplayer.findChild<QLineEdit*>()->text(), QStringLiteral("12"));
+        QVERIFY(cplayer.work().tries == tries);
+        QCOMPARE(czech->controller().world().def().integrator, integrator);
+        QCOMPARE(czech->controller().world().def().dt, dt);
+        QCOMPARE(czech->controller().timeScale(), 0.5);
+        QCOMPARE(czech->controller().currentStep(), steps);
+        QVERIFY(bodyCoordinates(*czech) == bodies); // the same run, changes and all
+        QVERIFY(markTimes(*czech) == marks);
+
+        MainWindow* english = ui::switchLanguage(czech, QStringLiteral("en"));
+        QCOMPARE(english->lessonPlayer().result(0), right); // the same verdict as before
+        QCOMPARE(english->lessonPlayer().heldBack(), held);
+        QCOMPARE(english->controller().world().def().integrator, integrator);
+        QVERIFY(bodyCoordinates(*english) == bodies);
+        QVERIFY(markTimes(*english) == marks);
+        delete english;
+    }
+
+    // Settings changed by hand and then kept by a reset are the run's from its start: the
+    // switch gives the same world, without a mark (nothing changed mid-run).
+    void switchKeepsSettingsAcrossReset()
+    {
+        MainWindow* w = new MainWindow;
+        QCOMPARE(w->openScene(shippedScene("ball_drop.json"), true), QString());
+        ui::SimulationController& controller = w->controller();
+        for (int i = 0; i < 15; ++i)
+            controller.stepForward();
+        const double dt = controller.world().def().dt / 4;
+        controller.setDt(dt);
+        controller.setRestitution(0.3);
+        controller.reset();
+        QCOMPARE(controller.edits().size(), std::size_t(2));
+        for (int i = 0; i < 25; ++i)
+            controller.stepForward();
+        const std::vector<double> bodies = bodyCoordinates(*w);
+        MainWindow* czech = ui::switchLanguage(w, QStringLiteral("cs"));
+        QCOMPARE(czech->controller().world().def().dt, dt);
+        QCOMPARE(czech->controller().world().def().restitution, 0.3);
+        QCOMPARE(czech->controller().currentStep(), 25);
+        QVERIFY(bodyCoordinates(*czech) == bodies);
+        QCOMPARE(czech->plot(0)->markCount(), 0);
+        delete czech;
     }
 
     void switchKeepsSceneAndRunning()

@@ -81,8 +81,9 @@ const QSet<QString>& invariantTexts()
 const QStringList& sameWords()
 {
     static const QStringList words{
-        QStringLiteral("rad"),   // the unit radian
-        QStringLiteral("drift"), // a Czech word too: the translation says "energetický drift"
+        QStringLiteral("rad"),      // the unit radian
+        QStringLiteral("drift"),    // a Czech word too: the translation says "energetický drift"
+        QStringLiteral("interval"), // a Czech word too (the SAT table's projections)
     };
     return words;
 }
@@ -145,7 +146,7 @@ bool invariant(const QString& piece)
     static const QRegularExpression word(QStringLiteral("\\p{L}{3,}"));
     auto it = word.globalMatch(piece);
     while (it.hasNext())
-        if (!sameWords().contains(it.next().captured()))
+        if (!sameWords().contains(it.next().captured(), Qt::CaseInsensitive)) // "Drift" too
             return false;
     return true;
 }

@@ -59,8 +59,9 @@ QString vecStacked(const physics::Vec2& v)
 QPushButton* addTableAndExport(QVBoxLayout* layout, FittingTable* table, QWidget* parent)
 {
     layout->addWidget(table);
+    // Short: the button must fit the narrow column at the projector's text size.
     auto* button = new QPushButton(
-        QCoreApplication::translate("rigidlab::ui::FittingTable", "Export as CSV…"), parent);
+        QCoreApplication::translate("rigidlab::ui::FittingTable", "Save CSV…"), parent);
     button->setToolTip(QCoreApplication::translate(
         "rigidlab::ui::FittingTable",
         "Save the table as a CSV file (decimal point, full precision) for a spreadsheet"));
@@ -113,9 +114,11 @@ void BouncePanel::refreshNow()
                     << QStringLiteral("h%1/h%2").arg(i).arg(i - 1);
         wide.headerTips << heldTip << heldTip;
     }
-    narrow.headers = QStringList{tr("bounce"), tr("h [m]"), tr("ratio")};
+    // Short headers, the unit on a line of its own: the narrow column of a projector has
+    // room for three short words; the bounce's number says what it is with the tooltip.
+    narrow.headers = QStringList{tr("no.", "a bounce's number"), tr("h\n[m]"), tr("ratio")};
     narrow.headerTips =
-        QStringList{QString(), heldTip,
+        QStringList{tr("The bounce: the drop, then the first bounce, the second…"), heldTip,
                     tr("The height over the one before: compare it with e²") +
                         (heldTip.isEmpty() ? QString() : QStringLiteral("\n") + heldTip)};
 

@@ -12,6 +12,7 @@
 
 #include <QAbstractItemView>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QDir>
 #include <QEvent>
 #include <QFileInfo>
@@ -23,6 +24,9 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScrollBar>
+#include <QSignalBlocker>
+#include <QStyledItemDelegate>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -35,6 +39,44 @@ namespace {
 /// The largest answer taken, in the question's unit: far beyond any measured value, and small
 /// enough that |answer - measured| stays finite.
 constexpr double kMaxAnswer = 1e15;
+/// The least share of the lesson column's height that the step's text has in sight when a
+/// step opens: the introduction folds away rather than take it.
+constexpr double kTextShare = 0.4;
+/// The longest short title a lesson has in the list box [characters].
+constexpr int kShortTitleLength = 24;
+/// The list's role holding an entry's full menu line (the box itself shows the short one).
+constexpr int kFullTextRole = Qt::UserRole + 1;
+
+/// A lesson's title as the list box shows it: up to its first ": " or dash ("Energy drift:
+/// four ways…" → "Energy drift"), and at most kShortTitleLength characters, cut between words.
+QString shortTitle(const QString& title)
+{
+    QString out = title;
+    for (const QString& cut : {QStringLiteral(": "), QStringLiteral(" – "), QStringLiteral(" — ")})
+        if (const qsizetype at = out.indexOf(cut); at > 0)
+            out.truncate(at);
+    if (out.size() > kShortTitleLength) {
+        const qsizetype space = out.lastIndexOf(u' ', kShortTitleLength);
+        out.truncate(space > 0 ? space : kShortTitleLength);
+        out += QChar(0x2026); // …
+    }
+    return out;
+}
+
+/// The open list shows each lesson's full line (title, description, time).
+class FullTextDelegate : public QStyledItemDelegate {
+public:
+    using QStyledItemDelegate::QStyledItemDelegate;
+
+protected:
+    void initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const override
+    {
+        QStyledItemDelegate::initStyleOption(option, index);
+        const QString full = index.data(kFullTextRole).toString();
+        if (!full.isEmpty())
+            option->text = full;
+    }
+};
 
 } // namespace
 
@@ -50,8 +92,7 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
       m_start(new QPushButton(tr("Start the first lesson"), this))
 {
     auto* layout = new QVBoxLayout(this);
-    m_lessonBox->setToolTip(
-        tr("The lessons that come with RigidLab (File › Open lesson for others)"));
+    m_lessonBox->view()->setItemDelegate(new FullTextDelegate(m_lessonBox->view()));
     layout->addWidget(m_lessonBox);
     QFont big = m_title->font();
     big.setPointSizeF(big.pointSizeF() * 1.35);
@@ -78,6 +119,7 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
         m_aboutToggle->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
         m_about->setVisible(on && (!m_lesson || m_step == 0));
     });
+    connect(m_aboutToggle, &QToolButton::clicked, this, [this] { m_aboutChosen = true; });
     layout->addWidget(m_aboutToggle);
     layout->addWidget(m_about);
     // On a first start, with no lesson open, the way in: one button to the first lesson.
@@ -106,27 +148,25 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     QFont textFont = m_text->font();
     textFont.setPointSizeF(textFont.pointSizeF() * 1.1); // readable on a projector
     m_text->setFont(textFont);
-    // The text is as tall as its words; the lesson's column scrolls it (with the title above
-    // it) while the questions and buttons below stay (takeNavigation()).
+    // The text is as tall as its words; the lesson's column scrolls it, with the title above
+    // it and the questions below it, while the buttons stay (takeNavigation()). Questions kept
+    // in sight below the scrolling part left the text no room on a projector: the text comes
+    // first, the questions follow it as a reader reaches them.
     layout->addWidget(m_text);
-    // The start page (no lesson, so no text) keeps to the top instead of spreading out.
-    layout->addStretch(0);
-    // The questions and the buttons are a widget of their own, so that the window can keep
-    // them in sight below a lesson text that scrolls (takeNavigation()). Two buttons a row,
-    // so that the panel fits the narrow column of a 1024-pixel projector.
-    m_navigation = new QWidget(this);
-    m_navigation->setObjectName(QStringLiteral("lessonNavigation"));
-    auto* bottom = new QVBoxLayout(m_navigation);
-    // In line with the text above, wherever the window puts them.
-    const QMargins margins = layout->contentsMargins();
-    bottom->setContentsMargins(margins.left(), 0, margins.right(), 0);
-    m_questionBox->setParent(m_navigation);
     m_questionBox->setObjectName(QStringLiteral("lessonQuestions"));
     m_questionLayout->setContentsMargins(0, 0, 0, 0);
-    bottom->addWidget(m_questionBox);
-    auto* buttons = new QGridLayout;
-    bottom->addLayout(buttons);
-    buttons->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_questionBox);
+    // The start page (no lesson, so no text) keeps to the top instead of spreading out.
+    layout->addStretch(0);
+    // The buttons are a widget of their own, so that the window can keep them in sight below
+    // the lesson that scrolls (takeNavigation()). Two buttons a row, so that the panel fits
+    // the narrow column of a 1024-pixel projector.
+    m_navigation = new QWidget(this);
+    m_navigation->setObjectName(QStringLiteral("lessonNavigation"));
+    auto* buttons = new QGridLayout(m_navigation);
+    // In line with the text above, wherever the window puts them.
+    const QMargins margins = layout->contentsMargins();
+    buttons->setContentsMargins(margins.left(), 0, margins.right(), 0);
     buttons->addWidget(m_back, 0, 0);
     buttons->addWidget(m_next, 0, 1);
     buttons->addWidget(m_restart, 1, 0);
@@ -137,6 +177,8 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     connect(m_next, &QPushButton::clicked, this, &LessonPlayer::next);
     connect(m_restart, &QPushButton::clicked, this, &LessonPlayer::restartStep);
     connect(m_export, &QPushButton::clicked, this, &LessonPlayer::exportRequested);
+    connect(m_lessonBox, &QComboBox::currentIndexChanged, this,
+            &LessonPlayer::showCurrentLessonTip);
     connect(m_lessonBox, &QComboBox::activated, this, [this](int index) {
         const QString path = m_lessonBox->itemData(index).toString();
         if (path.isEmpty())
@@ -147,6 +189,13 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
             QMessageBox::warning(this, tr("Cannot open lesson"), error);
     });
     showStep();
+}
+
+void LessonPlayer::showCurrentLessonTip()
+{
+    const QString what = tr("The lessons that come with RigidLab (File › Open lesson for others)");
+    const QString full = m_lessonBox->currentData(kFullTextRole).toString();
+    m_lessonBox->setToolTip(full.isEmpty() ? what : full + QStringLiteral("\n\n") + what);
 }
 
 void LessonPlayer::scanFolder(const QString& folder)
@@ -164,8 +213,13 @@ void LessonPlayer::listLessons(const std::vector<lessons::LessonEntry>& entries)
     for (std::size_t i = 0; i < entries.size(); ++i) {
         const lessons::LessonEntry& entry = entries[i];
         const QString text = lessons::lessonMenuText(entry, static_cast<int>(i) + 1);
-        m_lessonBox->addItem(text, entry.path);
+        // The box shows the short title, its list and tooltip the whole line.
+        m_lessonBox->addItem(QCoreApplication::translate("rigidlab::lessons", "%1. %2")
+                                 .arg(static_cast<int>(i) + 1)
+                                 .arg(shortTitle(entry.title)),
+                             entry.path);
         m_lessonBox->setItemData(m_lessonBox->count() - 1, text, Qt::ToolTipRole);
+        m_lessonBox->setItemData(m_lessonBox->count() - 1, text, kFullTextRole);
         m_paths << entry.path;
         m_menuTexts << text;
     }
@@ -174,6 +228,7 @@ void LessonPlayer::listLessons(const std::vector<lessons::LessonEntry>& entries)
     m_lessonBox->setMinimumContentsLength(12);
     m_lessonBox->view()->setTextElideMode(Qt::ElideNone);
     m_lessonBox->view()->setMinimumWidth(m_lessonBox->view()->sizeHintForColumn(0) + 24);
+    showCurrentLessonTip();
     if (!m_lesson)
         showStep(); // the start page names the first lesson
 }
@@ -195,6 +250,7 @@ QString LessonPlayer::openLesson(const QString& path)
     if (r.lesson.steps.empty())
         return tr("%1: the lesson has no steps").arg(path);
     m_lesson = std::make_unique<lessons::Lesson>(std::move(r.lesson));
+    m_aboutChosen = false;
     const int index = m_lessonBox->findData(QFileInfo(path).absoluteFilePath());
     if (index >= 0)
         m_lessonBox->setCurrentIndex(index);
@@ -287,6 +343,53 @@ void LessonPlayer::showStep()
     m_next->setEnabled(m_step + 1 < static_cast<int>(l.steps.size()));
     m_export->setEnabled(!s.plots.isEmpty());
     buildQuestions();
+    fitIntroduction();
+    // A new step is read from its top.
+    if (QScrollArea* scroll = scrollArea())
+        scroll->verticalScrollBar()->setValue(0);
+}
+
+QScrollArea* LessonPlayer::scrollArea() const
+{
+    QWidget* viewport = parentWidget();
+    return qobject_cast<QScrollArea*>(viewport ? viewport->parentWidget() : nullptr);
+}
+
+void LessonPlayer::fitIntroduction()
+{
+    QScrollArea* scroll = scrollArea();
+    if (!m_lesson || m_step != 0 || m_aboutChosen || !scroll || m_about->text().isEmpty())
+        return;
+    const int height = scroll->viewport()->height();
+    const QMargins margins = layout()->contentsMargins();
+    const int width = scroll->viewport()->width() - margins.left() - margins.right();
+    if (height <= 0 || width <= 0)
+        return;
+    // What is above the text when the step opens: the list, the titles, the bar, the intro.
+    const int spacing = layout()->spacing();
+    int above = margins.top();
+    for (QWidget* w : {static_cast<QWidget*>(m_lessonBox), static_cast<QWidget*>(m_title),
+                       static_cast<QWidget*>(m_aboutToggle), static_cast<QWidget*>(m_stepCount),
+                       static_cast<QWidget*>(m_stepTitle)}) {
+        const int h = w->hasHeightForWidth() ? w->heightForWidth(width) : w->sizeHint().height();
+        above += h + spacing;
+    }
+    const int about = m_about->heightForWidth(width) + spacing;
+    const bool fits = height - above - about >= kTextShare * height;
+    const QSignalBlocker quiet(m_aboutToggle); // not the reader's choice
+    m_aboutToggle->setChecked(fits);
+    m_aboutToggle->setArrowType(fits ? Qt::DownArrow : Qt::RightArrow);
+    m_about->setVisible(fits);
+}
+
+bool LessonPlayer::eventFilter(QObject* watched, QEvent* event)
+{
+    if (event->type() == QEvent::Resize) {
+        const QScrollArea* scroll = scrollArea();
+        if (scroll && watched == scroll->viewport())
+            fitIntroduction();
+    }
+    return QWidget::eventFilter(watched, event);
 }
 
 void LessonPlayer::buildQuestions()
@@ -352,15 +455,13 @@ void LessonPlayer::buildQuestions()
                 result->setVisible(true);
                 return;
             }
-            settle(i, judgeTry(i, answer));
+            applyTry(i, QuestionTry{answer, measuredValue(i)});
         };
         connect(check, &QPushButton::clicked, this, judge);
         connect(edit, &QLineEdit::returnPressed, this, judge);
         connect(show, &QPushButton::clicked, this, [this, i] {
             if (m_lesson && i < m_rows.size())
-                settle(i, lessons::showAnswer(
-                              m_lesson->steps[static_cast<size_t>(m_step)].questions[i],
-                              measuredValue(i)));
+                applyTry(i, QuestionTry{std::nullopt, measuredValue(i)});
         });
     }
 }
@@ -384,15 +485,41 @@ std::optional<double> LessonPlayer::measuredValue(std::size_t i)
     return row.ahead;
 }
 
-lessons::Verdict LessonPlayer::judgeTry(std::size_t i, double answer)
+void LessonPlayer::applyTry(std::size_t i, const QuestionTry& attempt)
 {
     const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
     QuestionRow& row = m_rows[i];
-    const std::optional<double> value = measuredValue(i);
-    if (value && !row.answered)
+    row.tries.push_back(attempt);
+    if (!attempt.answer)
+        return settle(i, lessons::showAnswer(q, attempt.measured));
+    if (attempt.measured && !row.answered)
         ++row.attempts;
     // Once answered, every later try is judged with the value given.
-    return lessons::judgeAttempt(q, answer, value, row.answered ? 2 : row.attempts);
+    settle(i, lessons::judgeAttempt(q, *attempt.answer, attempt.measured,
+                                    row.answered ? 2 : row.attempts));
+}
+
+StepWork LessonPlayer::work() const
+{
+    StepWork out;
+    for (const QuestionRow& row : m_rows) {
+        out.tries.push_back(row.tries);
+        out.typed << row.edit->text();
+    }
+    return out;
+}
+
+void LessonPlayer::restoreWork(const StepWork& work)
+{
+    if (!m_lesson)
+        return;
+    for (std::size_t i = 0; i < m_rows.size(); ++i) {
+        if (i < work.tries.size())
+            for (const QuestionTry& attempt : work.tries[i])
+                applyTry(i, attempt);
+        if (i < static_cast<std::size_t>(work.typed.size()))
+            m_rows[i].edit->setText(work.typed[static_cast<qsizetype>(i)]);
+    }
 }
 
 void LessonPlayer::settle(std::size_t i, const lessons::Verdict& v)
@@ -465,6 +592,11 @@ void LessonPlayer::changeEvent(QEvent* event)
     QWidget::changeEvent(event);
     if (event->type() == QEvent::FontChange || event->type() == QEvent::ParentChange)
         fitTextMinimum();
+    if (event->type() == QEvent::ParentChange)
+        if (QScrollArea* scroll = scrollArea())
+            scroll->viewport()->installEventFilter(this);
+    if (event->type() == QEvent::FontChange)
+        fitIntroduction();
 }
 
 QWidget* LessonPlayer::takeNavigation()

@@ -17,6 +17,7 @@ class QComboBox;
 class QLabel;
 class QLineEdit;
 class QProgressBar;
+class QScrollArea;
 class QPushButton;
 class QToolButton;
 class QVBoxLayout;
@@ -25,6 +26,21 @@ namespace rigidlab::ui {
 
 class SimulationController;
 class StepText;
+
+/// One try at a question: Check with a typed answer, or "Show me" (no answer), with the
+/// measured value it was judged against.
+struct QuestionTry {
+    std::optional<double> answer;   ///< in the question's unit; nullopt for "Show me"
+    std::optional<double> measured; ///< nullopt while not measured yet
+    bool operator==(const QuestionTry&) const = default;
+};
+
+/// What the student did on the current step's questions: enough to show the same verdicts
+/// again, in another language (the language switch).
+struct StepWork {
+    std::vector<std::vector<QuestionTry>> tries; ///< per question, in order
+    QStringList typed;                           ///< per question, what its box holds
+};
 
 class LessonPlayer : public QWidget {
     Q_OBJECT
@@ -60,6 +76,11 @@ public:
     /// What the current step's questions still hold back ("run", "panel:collision", ...):
     /// those of the questions not yet answered right, twice or by "Show me".
     QStringList heldBack() const;
+    /// The tries and typed answers of the current step's questions.
+    StepWork work() const;
+    /// Judges `work`'s tries again, in order, with the values they were judged against, and
+    /// fills the boxes: the same verdicts in the current language, and what they released.
+    void restoreWork(const StepWork& work);
 
 public slots:
     void next();
@@ -78,15 +99,23 @@ signals:
 
 protected:
     void changeEvent(QEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
     void showStep();
+    /// The list box's tooltip: the chosen lesson's full line, and what the list holds.
+    void showCurrentLessonTip();
     /// The text's least height: a few of its lines, whatever its font.
     void fitTextMinimum();
+    /// The scroll area the window put the player in, if any.
+    QScrollArea* scrollArea() const;
+    /// Folds the introduction away on the first step when it would leave the step's text less
+    /// than kTextShare of the column's height (unless the reader opened it by hand).
+    void fitIntroduction();
     void buildQuestions();
-    /// Question i's verdict on this try, against the running world or, while the question
-    /// keeps the scene from running, against a run without a window.
-    lessons::Verdict judgeTry(std::size_t i, double answer);
+    /// Judges a try at question i (and remembers it): its verdict shown, what it releases
+    /// released.
+    void applyTry(std::size_t i, const QuestionTry& attempt);
     /// The measured value question i is judged against, nullopt while not measured yet.
     std::optional<double> measuredValue(std::size_t i);
     /// Shows a verdict under question i; one that gives the value answers the question.
@@ -101,6 +130,7 @@ private:
     QLabel* m_title;
     QToolButton* m_aboutToggle; ///< folds the introduction (m_about) away
     QLabel* m_about;
+    bool m_aboutChosen = false; ///< the reader folded or opened the introduction by hand
     QProgressBar* m_progress;
     QLabel* m_stepCount; ///< "Step 2 of 4", beside the progress bar
     QLabel* m_stepTitle;
@@ -121,6 +151,7 @@ private:
         bool answered = false; ///< the value has been given: nothing is held back for it
         bool aheadDone = false;
         std::optional<double> ahead; ///< measured without a window, once aheadDone
+        std::vector<QuestionTry> tries;
     };
     std::vector<QuestionRow> m_rows;
 };

@@ -60,7 +60,8 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     layout->addWidget(m_verdict);
     // Three columns: what an axis means ("separates", "least overlap") is a second line under
     // its overlap rather than a fourth column, empty on most rows.
-    const QStringList headers{tr("axis"), tr("on axis [m]"), tr("overlap")};
+    // Two lines each, the unit on the second, so that the headers fit a narrow column whole.
+    const QStringList headers{tr("axis"), tr("interval\n[m]"), tr("overlap\n[m]")};
     const QStringList headerTips{
         tr("The axis is the normal of this edge: polygon A or B, then the edge's number."),
         tr("The interval each polygon covers when projected on the axis (A above, B below)."),
@@ -153,10 +154,18 @@ void SatPanel::fitColumns()
         columns->setSectionResizeMode(0, QHeaderView::ResizeToContents);
         columns->setSectionResizeMode(2, QHeaderView::ResizeToContents);
     } else {
+        // The headers whole too (their unit is on a line of its own) where that leaves the
+        // intervals a bound and its polygon per line ("A -0,50", then "… 0,50").
         const int least = m_table->fontMetrics().horizontalAdvance(QStringLiteral("0.00")) + 8;
+        const int interval =
+            m_table->fontMetrics().horizontalAdvance(QStringLiteral("A -00.00")) + 12;
+        const bool headersFit =
+            columns->sectionSizeHint(0) + columns->sectionSizeHint(2) + interval <=
+            m_table->viewport()->width();
         for (int c : {0, 2}) {
             columns->setSectionResizeMode(c, QHeaderView::Fixed);
-            columns->resizeSection(c, std::max(least, cells(c)));
+            columns->resizeSection(
+                c, std::max({least, cells(c), headersFit ? columns->sectionSizeHint(c) : 0}));
         }
     }
     m_table->resizeRowsToContents();

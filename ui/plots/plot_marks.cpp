@@ -200,12 +200,15 @@ void PlotWidget::fitMarks(int widthPx)
         rows = std::max(rows, static_cast<int>(placed[k].row) + 1);
     }
 
-    // Room above the axis rect for the labels' rows, only while there are marks; and room on
-    // the right for the last tick label of the time axis.
+    // Room above the axis rect for the labels' rows, only while there are marks, and at
+    // least for the upper half of the top tick label (else it hides under the legend above);
+    // and room on the right for the last tick label of the time axis.
     const int strip = rows == 0 ? 0 : static_cast<int>(rows * rowPx) + 4;
-    if (strip != m_markStrip || m_plot->axisRect()->minimumMargins().right() != kRightMarginPx) {
+    const int top = std::max(strip, QFontMetrics(m_plot->yAxis->tickLabelFont()).height() / 2 + 2);
+    if (strip != m_markStrip ||
+        m_plot->axisRect()->minimumMargins() != QMargins(0, top, kRightMarginPx, 0)) {
         m_markStrip = strip;
-        m_plot->axisRect()->setMinimumMargins(QMargins(0, strip, kRightMarginPx, 0));
+        m_plot->axisRect()->setMinimumMargins(QMargins(0, top, kRightMarginPx, 0));
     }
 }
 

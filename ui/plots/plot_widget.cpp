@@ -407,6 +407,7 @@ void PlotWidget::setPresentation(bool on)
         axisPen.setWidthF(on ? 2.0 : 1.0);
         axis->setBasePen(axisPen);
     }
+    fitMarks(); // the top margin follows the tick labels' size
     for (const PlotSeries& series : m_series) {
         for (QCPGraph* g : {static_cast<QCPGraph*>(series.graph()),
                             static_cast<QCPGraph*>(series.ghostGraph())}) {

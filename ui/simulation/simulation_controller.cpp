@@ -134,6 +134,7 @@ void SimulationController::loadWorlds(const lessons::Scene& scene, const QString
     m_variantLabels = labels;
     m_variantOffset = m_variants.empty() ? offset : besideOffset(m_world, offset);
     m_watched.clear();
+    m_edits.clear();
     resetClock();
     emit sceneLoaded();
     emit settingsChanged();
@@ -160,6 +161,25 @@ void SimulationController::reset()
         w.setDt(settings.dt);
         w.setGravity(settings.gravity);
     });
+    // The run starts again with the settings kept: edits at step 0, made as just above.
+    using Kind = SettingEdit::Kind;
+    const physics::WorldDef& start = m_worldStart.def();
+    m_edits.clear();
+    if (settings.dt != start.dt)
+        m_edits.push_back({0, Kind::Dt, -1, settings.dt, 0.0, 0});
+    if (settings.integrator != start.integrator)
+        m_edits.push_back(
+            {0, Kind::Integrator, -1, 0.0, 0.0, static_cast<int>(settings.integrator)});
+    if (settings.solver != start.solver)
+        m_edits.push_back({0, Kind::Solver, -1, 0.0, 0.0, static_cast<int>(settings.solver)});
+    if (settings.iterations != start.iterations)
+        m_edits.push_back({0, Kind::Iterations, -1, 0.0, 0.0, settings.iterations});
+    if (settings.restitution != start.restitution)
+        m_edits.push_back({0, Kind::Restitution, -1, settings.restitution, 0.0, 0});
+    if (settings.friction != start.friction)
+        m_edits.push_back({0, Kind::Friction, -1, settings.friction, 0.0, 0});
+    if (settings.gravity != start.gravity)
+        m_edits.push_back({0, Kind::Gravity, -1, 0.0, 0.0, settings.gravity.isZero() ? 0 : 1});
     resetClock();
     emit worldChanged();
 }
@@ -255,8 +275,10 @@ void SimulationController::doStep()
         const physics::Vec2 f =
             b.mass * (w * w * (m_grab->target - p) - 2.0 * w * b.pointVelocity(p));
         input = UserInput{m_grab->body, f, physics::cross(physics::Vec2(p - b.position), f)};
-        if (replaying)
+        if (replaying) {
             m_history.branchAt(m_world); // a new push makes a new future
+            dropEditsAfterNow();
+        }
     } else if (replaying) {
         if (const UserInput* logged = m_history.inputFor(step))
             input = *logged;
@@ -388,6 +410,46 @@ void SimulationController::setTimeScale(double scale)
     emit settingsChanged();
 }
 
+void SimulationController::dropEditsAfterNow()
+{
+    const long long now = m_world.stepCount();
+    std::erase_if(m_edits, [now](const SettingEdit& e) { return e.step > now; });
+}
+
+void SimulationController::logEdit(SettingEdit edit)
+{
+    dropEditsAfterNow();
+    edit.step = m_world.stepCount();
+    m_edits.push_back(edit);
+}
+
+void SimulationController::applyEdit(const SettingEdit& edit)
+{
+    using Kind = SettingEdit::Kind;
+    switch (edit.kind) {
+    case Kind::Dt:
+        return setDt(edit.value);
+    case Kind::Integrator:
+        return setIntegrator(static_cast<physics::IntegratorKind>(edit.number));
+    case Kind::Solver:
+        return setSolver(static_cast<physics::SolverKind>(edit.number));
+    case Kind::Iterations:
+        return setIterations(edit.number);
+    case Kind::Restitution:
+        return setRestitution(edit.value);
+    case Kind::Friction:
+        return setFriction(edit.value);
+    case Kind::Gravity:
+        return setGravityEnabled(edit.number != 0);
+    case Kind::BodyMaterial:
+        return setBodyMaterial(edit.body, edit.value, edit.value2);
+    case Kind::BodyMass:
+        return setBodyMass(edit.body, edit.value);
+    case Kind::BodyRotation:
+        return rotateBody(edit.body, edit.value);
+    }
+}
+
 void SimulationController::afterEdit(const QString& mark)
 {
     m_history.branchAt(m_world);
@@ -401,6 +463,7 @@ void SimulationController::setDt(double dt)
 {
     if (!(dt >= lessons::kMinDt && dt <= lessons::kMaxDt) || dt == m_world.def().dt)
         return;
+    logEdit({0, SettingEdit::Kind::Dt, -1, dt, 0.0, 0});
     forEachWorld([dt](physics::World& w) { w.setDt(dt); });
     afterEdit(tr("dt = %1 s").arg(markNumber(dt)));
 }
@@ -409,6 +472,7 @@ void SimulationController::setIntegrator(physics::IntegratorKind kind)
 {
     if (kind == m_world.def().integrator)
         return;
+    logEdit({0, SettingEdit::Kind::Integrator, -1, 0.0, 0.0, static_cast<int>(kind)});
     m_world.setIntegrator(kind);
     afterEdit(integratorDisplayName(kind));
 }
@@ -417,6 +481,7 @@ void SimulationController::setSolver(physics::SolverKind kind)
 {
     if (kind == m_world.def().solver)
         return;
+    logEdit({0, SettingEdit::Kind::Solver, -1, 0.0, 0.0, static_cast<int>(kind)});
     m_world.setSolver(kind);
     afterEdit(solverDisplayName(kind));
 }
@@ -426,6 +491,7 @@ void SimulationController::setIterations(int iterations)
     if (iterations == m_world.def().iterations || iterations < 1 ||
         iterations > lessons::kMaxIterations)
         return;
+    logEdit({0, SettingEdit::Kind::Iterations, -1, 0.0, 0.0, iterations});
     m_world.setIterations(iterations);
     afterEdit(tr("%n iteration(s)", nullptr, iterations));
 }
@@ -434,6 +500,7 @@ void SimulationController::setRestitution(double e)
 {
     if (!lessons::limits::kRestitution.contains(e))
         return;
+    logEdit({0, SettingEdit::Kind::Restitution, -1, e, 0.0, 0});
     forEachWorld([e](physics::World& w) { w.setRestitution(e); });
     afterEdit(tr("e = %1").arg(markNumber(e)));
 }
@@ -442,6 +509,7 @@ void SimulationController::setFriction(double mu)
 {
     if (!lessons::limits::kFriction.contains(mu))
         return;
+    logEdit({0, SettingEdit::Kind::Friction, -1, mu, 0.0, 0});
     forEachWorld([mu](physics::World& w) { w.setFriction(mu); });
     afterEdit(tr("μ = %1").arg(markNumber(mu)));
 }
@@ -451,6 +519,7 @@ void SimulationController::setGravityEnabled(bool on)
     const physics::Vec2 g = on ? m_sceneGravity : physics::Vec2::Zero();
     if (g == m_world.def().gravity)
         return;
+    logEdit({0, SettingEdit::Kind::Gravity, -1, 0.0, 0.0, on ? 1 : 0});
     forEachWorld([&g](physics::World& w) { w.setGravity(g); });
     afterEdit(on ? tr("gravity on") : tr("gravity off"));
 }
@@ -462,6 +531,7 @@ void SimulationController::setBodyMaterial(physics::BodyId id, double restitutio
     if (!lessons::limits::kRestitution.contains(restitution) ||
         !lessons::limits::kFriction.contains(friction))
         return;
+    logEdit({0, SettingEdit::Kind::BodyMaterial, id, restitution, friction, 0});
     m_world.setBodyMaterial(id, restitution, friction);
     afterEdit(QString());
 }
@@ -473,6 +543,7 @@ void SimulationController::setBodyMass(physics::BodyId id, double mass)
         return;
     if (!m_world.setBodyMass(id, mass))
         return;
+    logEdit({0, SettingEdit::Kind::BodyMass, id, mass, 0.0, 0});
     m_world.updateDiagnostics();
     afterEdit(tr("m = %1 kg").arg(markNumber(mass)));
 }
@@ -485,6 +556,7 @@ void SimulationController::rotateBody(physics::BodyId id, double radians)
     const double angle = m_world.body(id).angle + radians;
     if (!physics::limits::kAngle.contains(angle))
         return;
+    logEdit({0, SettingEdit::Kind::BodyRotation, id, radians, 0.0, 0});
     m_world.setBodyAngle(id, angle); // about the centre of mass; wakes the body
     afterEdit(QString());
 }

@@ -12,6 +12,7 @@
 #include "plots/sample_buffer.h"
 #include "plots/step_sampler.h"
 #include "simulation/history.h"
+#include "simulation/setting_edit.h"
 
 #include "format/scene.h"
 #include "rigidlab/physics/world.h"
@@ -89,6 +90,12 @@ public:
     /// The body pose to draw: between the last two steps, by how far the clock is into the next.
     Pose drawPose(physics::BodyId id) const;
 
+    /// The settings changed by hand in this run, in order, each at its step (reset() keeps
+    /// the ones it keeps, as edits at step 0; a change after going back drops the later ones).
+    const SettingEdits& edits() const { return m_edits; }
+    /// Makes `edit` as its setter would, now (at whatever step the world is).
+    void applyEdit(const SettingEdit& edit);
+
     // Time travel.
     long long earliestStep() const { return m_history.earliest(); }
     /// The most the time-travel snapshots may take [bytes] (96 MiB unless set).
@@ -158,6 +165,9 @@ private:
     void doStep();
     void pushSample();
     void afterEdit(const QString& mark);
+    /// Logs an edit made now; edits of the future the change drops go.
+    void logEdit(SettingEdit edit);
+    void dropEditsAfterNow();
     void resetClock();
     void resetVariants();
     template <typename Fn> void forEachWorld(Fn&& fn);
@@ -179,6 +189,7 @@ private:
     physics::Vec2 m_variantOffset = physics::Vec2::Zero();
     lessons::Measurements m_measurements;
     std::vector<lessons::Measure> m_watched;
+    SettingEdits m_edits;
 
     QTimer m_frameTimer;
     QElapsedTimer m_wall;

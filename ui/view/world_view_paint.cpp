@@ -16,6 +16,7 @@
 #include <QToolTip>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace rigidlab::ui {
@@ -219,13 +220,44 @@ std::vector<QRect> WorldView::stoppedLabelRects() const
         const BodyItem* ghost = ghostOf(v);
         if (!m_controller.variant(v).divergence() || !ghost)
             continue;
-        QRect box = fm.boundingRect(stoppedLabel(v)).adjusted(-4, -2, 4, 2);
-        const QPoint at = mapFromScene(ghost->sceneBoundingRect().topRight());
-        box.moveTopLeft(at + QPoint(6, -box.height()));
-        box.moveLeft(std::clamp(box.left(), inside.left(),
-                                std::max(inside.left(), inside.right() - box.width())));
-        box.moveTop(std::clamp(box.top(), inside.top(),
-                               std::max(inside.top(), inside.bottom() - box.height())));
+        const QRect label = fm.boundingRect(stoppedLabel(v)).adjusted(-4, -2, 4, 2);
+        const QRect body = mapFromScene(ghost->sceneBoundingRect()).boundingRect();
+        // Beside the stopped body where the label covers no body (a long label pushed back
+        // from the edge lay over the ball it names): above right, above left, below right,
+        // below left, right, left; the first one clear, else the first.
+        const auto keepInside = [&inside](QRect box) {
+            box.moveLeft(std::clamp(box.left(), inside.left(),
+                                    std::max(inside.left(), inside.right() - box.width())));
+            box.moveTop(std::clamp(box.top(), inside.top(),
+                                   std::max(inside.top(), inside.bottom() - box.height())));
+            return box;
+        };
+        const auto coversBody = [this](const QRect& box) {
+            for (const BodyItem* item : m_items)
+                if (item && item->isVisible() &&
+                    mapFromScene(item->sceneBoundingRect()).boundingRect().intersects(box))
+                    return true;
+            for (const Ghost& g : m_ghosts)
+                if (g.item && g.item->isVisible() &&
+                    mapFromScene(g.item->sceneBoundingRect()).boundingRect().intersects(box))
+                    return true;
+            return false;
+        };
+        const int w = label.width(), h = label.height();
+        const std::array<QPoint, 6> corners{QPoint(body.right() + 6, body.top() - h),
+                                            QPoint(body.left() - 6 - w, body.top() - h),
+                                            QPoint(body.right() + 6, body.bottom() + 3),
+                                            QPoint(body.left() - 6 - w, body.bottom() + 3),
+                                            QPoint(body.right() + 6, body.center().y() - h / 2),
+                                            QPoint(body.left() - 6 - w, body.center().y() - h / 2)};
+        QRect box = keepInside(QRect(corners.front(), label.size()));
+        for (const QPoint& corner : corners) {
+            const QRect candidate = keepInside(QRect(corner, label.size()));
+            if (!coversBody(candidate)) {
+                box = candidate;
+                break;
+            }
+        }
         // Stacked below any label it would meet (a ghost that flew off is pinned to an edge,
         // where the others are too).
         for (bool moved = true; moved;) {

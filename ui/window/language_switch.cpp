@@ -21,11 +21,14 @@ WindowState captureState(MainWindow& window)
     if (const lessons::Lesson* lesson = window.lessonPlayer().lesson()) {
         state.lessonPath = lesson->path;
         state.lessonStep = window.lessonPlayer().stepIndex();
+        state.answers = window.lessonPlayer().work();
     } else {
         state.scenePath = controller.scenePath();
     }
     state.steps = controller.currentStep();
     state.running = controller.isRunning();
+    state.timeScale = controller.timeScale();
+    state.edits = controller.edits();
     state.presentation = window.presentation();
     state.geometry = window.saveGeometry();
     return state;
@@ -44,13 +47,27 @@ QString restoreState(MainWindow& window, const WindowState& state)
     if (!error.isEmpty())
         return error;
     // The same steps from the same start give the same world (the engine is deterministic).
+    // The settings changed by hand are changed again at their steps (edits after the step
+    // shown belong to a future the new window does not have).
     SimulationController& controller = window.controller();
+    std::size_t edit = 0;
+    const auto makeDueEdits = [&] {
+        for (; edit < state.edits.size() && state.edits[edit].step <= controller.currentStep();
+             ++edit)
+            controller.applyEdit(state.edits[edit]);
+    };
+    makeDueEdits();
     while (controller.currentStep() < state.steps) {
         const long long before = controller.currentStep();
         controller.stepForward();
         if (controller.currentStep() == before)
             break; // a world that cannot step (diverged) stays where it stopped
+        makeDueEdits();
     }
+    controller.setTimeScale(state.timeScale);
+    // The answers once the run has measured what they were judged against.
+    if (!state.lessonPath.isEmpty())
+        window.lessonPlayer().restoreWork(state.answers);
     if (state.running)
         controller.setRunning(true);
     return QString();

@@ -5,6 +5,9 @@
 // retranslated in place: every text is then made by the code that makes it in the first
 // place, so no widget can be left half in the old language.
 
+#include "lesson_player/lesson_player.h"
+#include "simulation/setting_edit.h"
+
 #include <QByteArray>
 #include <QString>
 
@@ -21,6 +24,11 @@ struct WindowState {
     QString scenePath;   ///< the open scene when no lesson is
     long long steps = 0; ///< the world's steps since its start (replayed: the run is deterministic)
     bool running = false; ///< the clock was running
+    double timeScale = 1.0;
+    /// The settings changed by hand (Controls, Inspector), each made again at its step: the
+    /// same world, the same marks on the plots, the same values in the panels.
+    SettingEdits edits;
+    StepWork answers; ///< the step's questions: tries, verdicts and what is typed
     bool presentation = false;
     QByteArray geometry; ///< QWidget::saveGeometry
 };

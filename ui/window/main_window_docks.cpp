@@ -9,6 +9,7 @@
 #include "panels/inspector_panel.h"
 #include "panels/sat_panel.h"
 #include "plots/plot_widget.h"
+#include "window/dock_tabs.h"
 #include "window/window_names.h"
 
 #include <QComboBox>
@@ -21,10 +22,13 @@ namespace rigidlab::ui {
 void MainWindow::buildDocks()
 {
     setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    // Short dock titles, whole on their tabs; the full ones in tooltips.
+    keepDockTabsWhole(*this);
     auto addDock = [this](const QString& title, const QString& name, QWidget* w,
-                          Qt::DockWidgetArea area) {
+                          Qt::DockWidgetArea area, const QString& full = QString()) {
         auto* dock = new QDockWidget(title, this);
         dock->setObjectName(name + QStringLiteral("Dock"));
+        setFullTitle(*dock, full.isEmpty() ? title : full);
         if (qobject_cast<PlotWidget*>(w)) {
             dock->setWidget(w);
         } else {
@@ -70,10 +74,11 @@ void MainWindow::buildDocks()
         m_plots[static_cast<size_t>(i)]->setMinimumSize(180, 150);
         m_plots[static_cast<size_t>(i)]->setTitleShown(false); // the dock shows it
         const PlotNames& plot = kPlotNames[static_cast<size_t>(i)];
-        addDock(tr(plot.title), QLatin1String(plot.name), m_plots[static_cast<size_t>(i)],
-                Qt::RightDockWidgetArea);
+        addDock(tr(plot.shortTitle), QLatin1String(plot.name), m_plots[static_cast<size_t>(i)],
+                Qt::RightDockWidgetArea, tr(plot.title));
     }
-    addDock(tr("Separating axis test"), QStringLiteral("sat"), m_sat, Qt::RightDockWidgetArea)
+    addDock(tr("Axis test", "short for: separating axis test"), QStringLiteral("sat"), m_sat,
+            Qt::RightDockWidgetArea, tr("Separating axis test"))
         ->hide();
     addDock(tr("Bounces"), QStringLiteral("bounces"), m_bounces, Qt::RightDockWidgetArea)->hide();
     addDock(tr("Collision"), QStringLiteral("collision"), m_collision, Qt::RightDockWidgetArea)
@@ -84,6 +89,7 @@ void MainWindow::buildDocks()
         ->hide();
     m_compareDock = new QDockWidget(tr("Side by side"), this);
     m_compareDock->setObjectName(QStringLiteral("compareDock"));
+    setFullTitle(*m_compareDock, m_compareDock->windowTitle());
     addDockWidget(Qt::RightDockWidgetArea, m_compareDock);
     m_compareDock->hide();
 }

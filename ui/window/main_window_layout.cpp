@@ -40,7 +40,7 @@ constexpr QSize kRoomy(1600, 1000);
 /// The share of the window's width each side column takes at most; together they leave the
 /// world at least half. The lesson's column wins over the plots'.
 constexpr double kLeftShare = 0.27;
-constexpr double kRightShare = 0.19;
+constexpr double kRightShare = 0.21;
 /// The side columns' widths where there is room [px].
 constexpr int kLeftWidth = 400;
 constexpr int kRightWidth = 480;

@@ -13,6 +13,7 @@
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
+#include "window/dock_tabs.h"
 #include "window/window_names.h"
 
 #include "format/lesson.h"
@@ -135,7 +136,8 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
             delete box;
         } else {
             m_compareDock->setWidget(box);
-            m_compareDock->setWindowTitle(titles.join(QStringLiteral(" · ")));
+            // A short title on the narrow column's tab, the plots' titles in its tooltip.
+            setFullTitle(*m_compareDock, titles.join(QStringLiteral(" · ")));
         }
     }
     m_compareDock->setVisible(!m_comparePlots.empty());

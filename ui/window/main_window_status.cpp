@@ -34,9 +34,19 @@ void MainWindow::buildStatusBar()
     m_statusSlow->setStyleSheet(
         QStringLiteral("color: white; background: #c0392b; padding: 1px 6px;"));
     m_statusSlow->setVisible(false);
+    // A dot between the items: the style's own separators are faint or none (presentation
+    // mode's palette), and "t = 2,000 s paused energy drift" reads as one phrase.
+    const auto separator = [this](const QString& name) {
+        auto* dot = new QLabel(QStringLiteral("·"), this);
+        dot->setObjectName(name);
+        return dot;
+    };
     statusBar()->addWidget(m_statusTime);
+    statusBar()->addWidget(separator(QStringLiteral("statusSeparator")));
     statusBar()->addWidget(m_statusRate);
+    statusBar()->addWidget(separator(QStringLiteral("statusSeparator")));
     statusBar()->addWidget(m_statusDrift);
+    statusBar()->addWidget(separator(QStringLiteral("statusDetailsSeparator")));
     statusBar()->addWidget(m_statusDetails);
     statusBar()->addPermanentWidget(m_statusSlow);
 
@@ -153,6 +163,8 @@ void MainWindow::setDetailsShown(bool shown)
 {
     // Presentation mode hides them whatever View › Status details says.
     m_statusDetails->setVisible(shown && m_detailsAction->isChecked() && !m_presentation);
+    if (auto* dot = findChild<QLabel*>(QStringLiteral("statusDetailsSeparator")))
+        dot->setVisible(!m_statusDetails->isHidden());
 }
 
 } // namespace rigidlab::ui

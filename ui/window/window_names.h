@@ -62,17 +62,21 @@ inline QLatin1String lessonOverlayName(Overlay overlay)
 }
 
 struct PlotNames {
-    const char* name;  ///< the dock's and the lesson's name
-    const char* title; ///< the dock's title and the Export menu's entry, for tr()
-                       ///< ("rigidlab::ui::MainWindow")
+    const char* name;       ///< the dock's and the lesson's name
+    const char* title;      ///< the Export menu's entry and the dock's full title, for tr()
+                            ///< ("rigidlab::ui::MainWindow")
+    const char* shortTitle; ///< the dock's title (its tab on a narrow column), likewise
 };
 
 /// The window's standard plots, in the order of MainWindow::plot(index).
 inline constexpr std::array<PlotNames, 3> kPlotNames{{
-    {lessons::kStepPlotNames[0].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy")},
-    {lessons::kStepPlotNames[1].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum")},
+    {lessons::kStepPlotNames[0].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy")},
+    {lessons::kStepPlotNames[1].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum")},
     {lessons::kStepPlotNames[2].data(),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy drift")},
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy drift"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Drift")},
 }};
 
 } // namespace rigidlab::ui

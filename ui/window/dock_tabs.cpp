@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "window/dock_tabs.h"
+
+#include <QDockWidget>
+#include <QEvent>
+#include <QHelpEvent>
+#include <QMainWindow>
+#include <QTabBar>
+#include <QToolTip>
+#include <QVariant>
+
+namespace rigidlab::ui {
+
+namespace {
+
+const char* const kFullTitle = "fullTitle";
+
+/// Lets the window's dock tab bars show whole titles, and the full ones as tooltips. The
+/// window makes its tab bars as docks are tabbed (eliding their text): they are set up once
+/// polished, after the window has made them.
+class DockTabKeeper : public QObject {
+public:
+    explicit DockTabKeeper(QMainWindow& window) : QObject(&window), m_window(window) {}
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override
+    {
+        if (watched == &m_window && event->type() == QEvent::ChildPolished) {
+            auto* child = static_cast<QChildEvent*>(event)->child();
+            if (auto* bar = qobject_cast<QTabBar*>(child)) {
+                bar->setElideMode(Qt::ElideNone);
+                bar->setUsesScrollButtons(true);
+                bar->installEventFilter(this);
+            }
+        } else if (event->type() == QEvent::ToolTip) {
+            if (auto* bar = qobject_cast<QTabBar*>(watched))
+                return showTabTip(*bar, static_cast<QHelpEvent&>(*event));
+            if (auto* dock = qobject_cast<QDockWidget*>(watched))
+                return showTitleTip(*dock, static_cast<QHelpEvent&>(*event));
+        }
+        return QObject::eventFilter(watched, event);
+    }
+
+private:
+    bool showTabTip(QTabBar& bar, const QHelpEvent& help)
+    {
+        const int tab = bar.tabAt(help.pos());
+        if (tab < 0)
+            return false;
+        for (const QDockWidget* dock : m_window.findChildren<QDockWidget*>())
+            if (dock->windowTitle() == bar.tabText(tab)) {
+                QToolTip::showText(help.globalPos(), fullTitle(*dock), &bar);
+                return true;
+            }
+        return false;
+    }
+
+    static bool showTitleTip(QDockWidget& dock, const QHelpEvent& help)
+    {
+        // Over the title bar only: the panel's own widgets keep their tooltips.
+        const QWidget* content = dock.widget();
+        if (!content || help.pos().y() >= content->geometry().top())
+            return false;
+        QToolTip::showText(help.globalPos(), fullTitle(dock), &dock);
+        return true;
+    }
+
+    QMainWindow& m_window;
+};
+
+} // namespace
+
+void setFullTitle(QDockWidget& dock, const QString& title)
+{
+    dock.setProperty(kFullTitle, title);
+    // The title bar's tooltip: every dock gets the filter of its window's keeper.
+    if (auto* keeper = dock.parent() ? dock.parent()->findChild<DockTabKeeper*>(
+                                           QString(), Qt::FindDirectChildrenOnly)
+                                     : nullptr)
+        dock.installEventFilter(keeper);
+}
+
+QString fullTitle(const QDockWidget& dock)
+{
+    const QString full = dock.property(kFullTitle).toString();
+    return full.isEmpty() ? dock.windowTitle() : full;
+}
+
+void keepDockTabsWhole(QMainWindow& window)
+{
+    auto* keeper = new DockTabKeeper(window);
+    window.installEventFilter(keeper);
+    // The tab bars made already.
+    for (QTabBar* bar : window.findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+        bar->setElideMode(Qt::ElideNone);
+        bar->setUsesScrollButtons(true);
+        bar->installEventFilter(keeper);
+    }
+}
+
+} // namespace rigidlab::ui

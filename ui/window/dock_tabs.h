@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Docks under short titles on a narrow projector column: a tab reads "Drift", not "E…". The
+// dock's full title (its "fullTitle" property) shows as the tooltip of its tab and title bar.
+
+class QDockWidget;
+class QMainWindow;
+class QString;
+
+namespace rigidlab::ui {
+
+/// Gives `dock` its full title, shown as a tooltip where its short title is.
+void setFullTitle(QDockWidget& dock, const QString& fullTitle);
+/// The full title setFullTitle gave, or else the dock's title.
+QString fullTitle(const QDockWidget& dock);
+
+/// Keeps the tabs of `window`'s tabbed docks whole: a tab is never elided (the row scrolls
+/// instead), and its tooltip is the dock's full title.
+void keepDockTabsWhole(QMainWindow& window);
+
+} // namespace rigidlab::ui
