@@ -391,12 +391,14 @@ void dropRow(std::vector<StressRow>& rows, const QString& caseName, const QStrin
 void dtRange(std::vector<StressRow>& rows)
 {
     // Past 1e-4 s a 10 cm ball falling at 4.4 m/s moves a sizeable part of itself per step: at
-    // 0.01 s it sinks 3 cm into the ground before the position pass catches up, at 0.1 s the
-    // bounce never settles, and at 0.5 s (2.45 m per step) it ends below the ground.
+    // 0.01 s it sinks 3 cm into the ground before the position pass catches up, at 0.1 s
+    // 7 cm (its bounces are not warm started into the next step, which held it up before the
+    // collision phase of issue 16, when the verdict was "jittering"), and at 0.5 s (2.45 m per
+    // step) it ends below the ground.
     const std::pair<double, const char*> runs[] = {{1e-6, "stable"},
                                                    {1e-4, "stable"},
                                                    {1e-2, "penetrating"},
-                                                   {0.1, "jittering"},
+                                                   {0.1, "penetrating"},
                                                    {0.5, "tunnelled"}};
     for (const auto& [dt, expected] : runs)
         dropRow(rows, QStringLiteral("dt-range"), QStringLiteral("ball drop, dt = %1 s").arg(dt),

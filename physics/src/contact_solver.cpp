@@ -189,15 +189,14 @@ void ContactSolver::prepare(double impact, double resting)
             p.forcing = 0.0;
             // A point that pushed in the step before is resting (its impulse was carried over):
             // it keeps the larger threshold, so that a stack does not hop on the solver's
-            // leftovers; a new contact bounces from the small one. One that separates faster
-            // than the small threshold is not resting: what it carried was a bounce, which is
-            // neither warm started nor a reason to stop bouncing.
+            // leftovers; a new contact bounces from the small one. What it carried from a
+            // bounce (the collision phase's part, Contact::bounceImpulse) is neither warm
+            // started nor a reason to stop bouncing: only the rest, and friction in proportion.
             if (p.normalImpulse > 0) {
-                if (vn > impact) {
+                if (vn > std::max(impact, resting)) {
+                    // Separating faster than a resting contact may bounce: not resting.
                     p.normalImpulse = p.tangentImpulse = 0.0;
                 } else if (const double bounced = lastBounce(previous, ct, cp.id); bounced > 0) {
-                    // What bounced in the step before is not warm started: only the rest, and
-                    // friction in proportion.
                     const double rest = std::max(p.normalImpulse - bounced, 0.0);
                     p.tangentImpulse *= rest / p.normalImpulse;
                     p.normalImpulse = rest;
