@@ -567,4 +567,5 @@ void TestLessons::formatDocumentExampleLoads()
     QCOMPARE(result.scene.springs.size(), size_t{1});
     QCOMPARE(result.scene.joints.size(), size_t{1});
     QCOMPARE(result.scene.world.sleep, std::optional<bool>(true));
+    QCOMPARE(result.scene.colourOf(1), QStringLiteral("#d04030"));
 }
