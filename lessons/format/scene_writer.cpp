@@ -237,6 +237,27 @@ QByteArray sceneToJson(const Scene& scene)
     return "{\n  " + top.join(",\n  ") + "\n}\n";
 }
 
+namespace {
+
+void setShown(QString& shown, LocalTextMap& all, const QString& language, const QString& text)
+{
+    shown = text;
+    if (!all.isEmpty())
+        all[all.contains(language) ? language : kFallbackLanguage.toString()] = text;
+}
+
+} // namespace
+
+void setSceneTitle(Scene& scene, const QString& text)
+{
+    setShown(scene.title, scene.titles, scene.language, text);
+}
+
+void setSceneDescription(Scene& scene, const QString& text)
+{
+    setShown(scene.description, scene.descriptions, scene.language, text);
+}
+
 QString saveScene(const QString& path, const Scene& scene)
 {
     return writeFileAtomically(path, sceneToJson(scene));

@@ -15,8 +15,14 @@ namespace rigidlab::lessons {
 
 /// The scene as a scene file, UTF-8 JSON. Texts: when `titles` (or `descriptions`) is not
 /// empty its languages are written, with `title` in the language shown (`language`, else
-/// English) so that an edited title is saved; otherwise `title` is written as a plain string.
+/// English) so that a title edited without setSceneTitle is saved too; otherwise `title` is
+/// written as a plain string.
 QByteArray sceneToJson(const Scene& scene);
+
+/// An editor's new title or description of `scene`: the text shown, and in `titles` (or
+/// `descriptions`) the language it is shown in (`language`, else English), the others kept.
+void setSceneTitle(Scene& scene, const QString& text);
+void setSceneDescription(Scene& scene, const QString& text);
 
 /// Writes the scene to `path` atomically (atomic_file.h). Returns empty on success, else one
 /// line saying why it could not be written.

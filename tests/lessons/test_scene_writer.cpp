@@ -141,6 +141,12 @@ void TestSceneWriter::editedTitleSavedInTheLanguageShown()
     QCOMPARE(loadBytes(saved, "en").scene.description, QStringLiteral("Balls fall."));
     QCOMPARE(loadBytes(saved, "cs").scene.description, QStringLiteral("Míčky padají."));
 
+    // setSceneTitle keeps the scene as it reads back.
+    lessons::setSceneTitle(czech.scene, QStringLiteral("Volný pád"));
+    QCOMPARE(czech.scene.titles.value(QStringLiteral("cs")), QStringLiteral("Volný pád"));
+    QCOMPARE(czech.scene.titles.value(QStringLiteral("en")), QStringLiteral("Drop"));
+    QCOMPARE(lessons::sceneDifference(loadBytes(saved, "cs").scene, czech.scene), QString());
+
     // A plain title stays plain.
     lessons::SceneLoadResult plain = loadBytes(R"({"rigidlab": 1, "title": "Drop", "bodies": []})");
     QVERIFY(plain.ok);
