@@ -6,6 +6,8 @@
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
+#include "view/body_item.h"
+#include "view/world_view.h"
 #include "window/language_switch.h"
 #include "window/main_window.h"
 #include "window/shortcuts.h"
@@ -351,6 +353,23 @@ private slots:
         QCOMPARE(lessons::sceneDifference(english->document()->scene(), edited), QString());
         english->document()->undoStack()->setClean();
         delete english;
+    }
+
+    void colourFromTheSceneIsDrawn()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(shippedScene("ball_drop.json"), true), QString());
+        const std::size_t i = firstDynamic(w.document()->scene());
+        const QColor before = w.view().itemFor(int(i))->fill();
+        lessons::Scene edited = w.document()->scene();
+        edited.colours.assign(edited.bodies.size(), QString());
+        const QColor wanted(0x12, 0x9a, 0x3c);
+        QVERIFY(before != wanted);
+        edited.colours[i] = wanted.name(); // "#129a3c"
+        w.document()->apply(QStringLiteral("Colour"), edited);
+        QCOMPARE(w.view().itemFor(int(i))->fill(), wanted);
+        w.document()->undoStack()->undo();
+        QCOMPARE(w.view().itemFor(int(i))->fill(), before);
     }
 
     void lessonStepIsTheDocument()
