@@ -391,6 +391,39 @@ private slots:
         QVERIFY(!w.saveScene());
         QCOMPARE(asked, 1);
     }
+
+    void editInALessonKeepsTheStepsWorlds()
+    {
+        // A step comparing integrators: an edit rebuilds every compared world from the edit,
+        // with the step's settings, not a plain scene.
+        MainWindow w;
+        QCOMPARE(
+            w.openLesson(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/energy_drift.json"),
+                         true),
+            QString());
+        const lessons::Lesson* lesson = w.lessonPlayer().lesson();
+        QVERIFY(lesson);
+        int compared = -1;
+        for (std::size_t k = 0; k < lesson->steps.size() && compared < 0; ++k)
+            if (lesson->steps[k].compare && lesson->steps[k].compare->count() > 1)
+                compared = int(k);
+        QVERIFY(compared >= 0);
+        w.lessonPlayer().goToStep(compared);
+        const int variants = w.controller().variantCount();
+        QCOMPARE(variants, lesson->steps[std::size_t(compared)].compare->count() - 1);
+        const double dt = w.controller().world().def().dt;
+        const std::size_t i = firstDynamic(w.document()->scene());
+        QVERIFY(i < w.document()->scene().bodies.size());
+        const physics::Vec2 by(0.0, 0.125);
+        const physics::Vec2 moved = w.document()->scene().bodies[i].position + by;
+        moveBody(w, i, by);
+        QCOMPARE(w.controller().variantCount(), variants);
+        QCOMPARE(w.controller().world().def().dt, dt); // the step's dt, not the scene's
+        QVERIFY(w.controller().world().bodies()[i].origin() == moved);
+        for (int v = 0; v < variants; ++v)
+            QVERIFY(w.controller().variant(v).bodies()[i].origin() == moved);
+        QVERIFY(w.lessonPlayer().lesson()); // still in the lesson
+    }
 };
 
 RIGIDLAB_TEST_MAIN(TestEditorFiles)

@@ -21,6 +21,7 @@
 #include "window/window_names.h"
 
 #include "format/data_dirs.h"
+#include "format/lesson.h"
 #include "format/lesson_catalog.h"
 
 #include <QAction>
@@ -97,7 +98,13 @@ MainWindow::MainWindow(QWidget* parent)
     // so Run starts from the scene as edited and Reset returns to it. A lesson step loads its
     // worlds itself (compared worlds too) when it starts the document over.
     connect(m_document, &SceneDocument::sceneChanged, this, [this] {
-        if (!m_lessonLoading)
+        if (m_lessonLoading)
+            return;
+        const lessons::Lesson* lesson = m_player->lesson();
+        if (m_inLesson && lesson) // the step's settings, compared worlds and measurements stay
+            loadStepWorlds(lesson->steps[static_cast<size_t>(m_player->stepIndex())],
+                           m_document->scene(), m_document->path());
+        else
             m_controller->loadScene(m_document->scene(), m_document->path());
     });
     connect(m_document, &SceneDocument::modifiedChanged, this, [this](bool modified) {

@@ -26,6 +26,7 @@ class QSlider;
 
 namespace rigidlab::lessons {
 struct Lesson;
+struct LessonStep;
 struct Scene;
 } // namespace rigidlab::lessons
 
@@ -161,6 +162,10 @@ private slots:
     void updateTimeline();
 
 private:
+    /// Loads a lesson step's worlds (compared ones too) from `scene`, with the step's settings
+    /// and measurements; returns the compared worlds' labels, empty when none.
+    QStringList loadStepWorlds(const lessons::LessonStep& step, const lessons::Scene& scene,
+                               const QString& path);
     void buildActions();
     void buildMenus();
     void buildStatusBar();
