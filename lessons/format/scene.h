@@ -7,6 +7,7 @@
 #include "rigidlab/physics/forces.h"
 #include "rigidlab/physics/world.h"
 
+#include <QMap>
 #include <QString>
 
 #include <optional>
@@ -14,9 +15,22 @@
 
 namespace rigidlab::lessons {
 
+/// A text the file gave in several languages: language code -> text. Empty when the file gave
+/// a plain string (English), which Scene then keeps as it is.
+using LocalTextMap = QMap<QString, QString>;
+
 struct Scene {
-    QString title;       ///< one line, for menus and window titles
-    QString description; ///< what a teacher reads before running it
+    QString title;       ///< one line, for menus and window titles, in `language`
+    QString description; ///< what a teacher reads before running it, in `language`
+    /// Every language's title and description where the file gave an object of languages
+    /// ({"en": ..., "cs": ...}), so that saving the scene keeps them all. `title` and
+    /// `description` are the ones shown; when an editor changes them, the writer puts the new
+    /// text in the language shown (scene_writer.h).
+    LocalTextMap titles;
+    LocalTextMap descriptions;
+    /// The language the scene was read in (languages.h): the one `title` and `description`
+    /// are in, when the file has it.
+    QString language;
     physics::WorldDef world;
     /// In file order; a body's index here is its physics::BodyId in the built world.
     /// BodyDef::name holds the scene's id ("ball"), unique and non-empty.
@@ -33,6 +47,9 @@ struct Scene {
     /// a class reads ("light ball"), in the language the scene was loaded in; empty when the
     /// file gives none. Show bodies through bodyLabel(), never by their id directly.
     std::vector<QString> labels;
+    /// Per body (parallel to `bodies`, or shorter): every language's label where the file gave
+    /// an object of languages, so that saving keeps them all (as `titles` for the title).
+    std::vector<LocalTextMap> labelTexts;
 
     /// The index of the body with this id, or nullopt.
     std::optional<physics::BodyId> bodyIndex(const QString& id) const;
@@ -41,6 +58,14 @@ struct Scene {
     QString bodyLabel(physics::BodyId index) const;
     /// Whether body `index` has a label of its own.
     bool hasLabel(physics::BodyId index) const;
+    /// Per body (parallel to `bodies`, or shorter): the colour the file gives it, "#rrggbb" in
+    /// lower case, or empty for the view's own colour. Read it through colourOf().
+    std::vector<QString> colours;
+    /// The colour of body `index` ("#rrggbb"), or empty when it has none.
+    QString colourOf(std::size_t index) const
+    {
+        return index < colours.size() ? colours[index] : QString();
+    }
 };
 
 /// A world holding the scene's bodies (ids = indices into scene.bodies), springs and joints,

@@ -17,6 +17,7 @@
 
 #include <QFileInfo>
 #include <QHash>
+#include <QRegularExpression>
 
 #include <array>
 #include <cmath>
@@ -37,6 +38,14 @@ namespace {
 /// Anchors closer than this count as one point when a pin joint is loaded [m].
 constexpr double kJointAnchorTolerance = 1e-6;
 
+/// What a scene keeps of a body beside its physics::BodyDef (parallel lists in Scene).
+struct BodyExtras {
+    std::vector<Vec2> original; ///< the file's vertices of a polygon replaced by its hull
+    QString label;              ///< in the language shown
+    LocalTextMap labels;        ///< every language's, when the file gave an object
+    QString colour;             ///< "#rrggbb" or empty
+};
+
 class SceneReader {
 public:
     SceneReader(const QString& sourceName, const SceneLoadOptions& options)
@@ -47,14 +56,18 @@ public:
     SceneLoadResult read(const QJsonObject& root);
 
 private:
-    /// A title or description: "..." or {"en": "...", "cs": "..."}, kept in the chosen language.
-    bool readText(const QJsonObject& root, QStringView key, QString& out);
+    /// A title or description: "..." or {"en": "...", "cs": "..."}, kept in the chosen language;
+    /// `all` gets every language's text of the object form.
+    bool readText(const QJsonObject& root, QStringView key, QString& out, LocalTextMap& all);
+    /// A body's "colour": "#rrggbb", kept in lower case; absent: empty.
+    bool readColour(const QJsonObject& body, const QString& place, QString& out);
     bool readWorld(const QJsonObject& root);
     bool readBodies(const QJsonObject& root);
     bool readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
-                  std::vector<Vec2>& original, QString& label);
+                  BodyExtras& extras);
     /// A body's optional "label": a name a class reads, in every language it has.
-    bool readLabel(const QJsonObject& body, const QString& place, QString& label);
+    bool readLabel(const QJsonObject& body, const QString& place, QString& label,
+                   LocalTextMap& all);
     /// Reads a shape; `original` gets the file's vertices of a polygon replaced by its hull.
     bool readShape(const QJsonValue& value, const QString& place, physics::Shape& shape,
                    std::vector<Vec2>& original);
@@ -81,9 +94,9 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
                     m_in.checkKeys(root, {},
                                    {u"rigidlab", u"title", u"description", u"world", u"bodies",
                                     u"springs", u"joints"}) &&
-                    readText(root, u"title", m_scene.title) &&
-                    readText(root, u"description", m_scene.description) && readWorld(root) &&
-                    readBodies(root) && readSprings(root) && readJoints(root);
+                    readText(root, u"title", m_scene.title, m_scene.titles) &&
+                    readText(root, u"description", m_scene.description, m_scene.descriptions) &&
+                    readWorld(root) && readBodies(root) && readSprings(root) && readJoints(root);
     if (ok) {
         m_texts.warnMissing();
     }
@@ -102,14 +115,45 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
     return result;
 }
 
-bool SceneReader::readText(const QJsonObject& root, QStringView key, QString& out)
+bool SceneReader::readText(const QJsonObject& root, QStringView key, QString& out,
+                           LocalTextMap& all)
 {
+    m_scene.language = m_texts.language();
     const auto it = root.constFind(key);
     if (it != root.constEnd() && !it.value().isString() && !it.value().isObject()) {
         // Neither form: the message of a plain string, as before scenes had languages.
         return m_in.string(root, key, {}, out);
     }
-    return m_texts.line(root, key, {}, out);
+    if (!m_texts.line(root, key, {}, out)) {
+        return false;
+    }
+    if (it != root.constEnd() && it.value().isObject()) {
+        // Each variant's place is KEY.CODE.
+        for (const detail::LocalTexts::Variant& v : m_texts.variants()) {
+            all.insert(v.place.section(u'.', -1), v.text);
+        }
+    }
+    return true;
+}
+
+bool SceneReader::readColour(const QJsonObject& body, const QString& place, QString& out)
+{
+    if (!body.contains(u"colour")) {
+        return true;
+    }
+    QString text;
+    if (!m_in.string(body, u"colour", place, text)) {
+        return false;
+    }
+    static const QRegularExpression rgb(QStringLiteral("^#[0-9A-Fa-f]{6}$"));
+    if (!rgb.match(text).hasMatch()) {
+        return m_in.fail(joinPlace(place, u"colour"),
+                         FileMessages::tr("must be a colour \"#rrggbb\" (six hexadecimal digits, "
+                                          "as \"#d04030\"), got \"%1\"")
+                             .arg(text.left(kMaxBodyIdLength)));
+    }
+    out = text.toLower();
+    return true;
 }
 
 bool SceneReader::readWorld(const QJsonObject& root)
@@ -197,22 +241,26 @@ bool SceneReader::readBodies(const QJsonObject& root)
     m_scene.bodies.reserve(static_cast<size_t>(bodies.size()));
     m_scene.originalVertices.reserve(static_cast<size_t>(bodies.size()));
     m_scene.labels.reserve(static_cast<size_t>(bodies.size()));
+    m_scene.labelTexts.reserve(static_cast<size_t>(bodies.size()));
+    m_scene.colours.reserve(static_cast<size_t>(bodies.size()));
     for (qsizetype i = 0; i < bodies.size(); ++i) {
         physics::BodyDef def;
-        std::vector<Vec2> original;
-        QString label;
-        if (!readBody(bodies[i], indexPlace(place, i), def, original, label)) {
+        BodyExtras extras;
+        if (!readBody(bodies[i], indexPlace(place, i), def, extras)) {
             return false;
         }
         m_ids.insert(QString::fromStdString(def.name), static_cast<BodyId>(i));
         m_scene.bodies.push_back(std::move(def));
-        m_scene.originalVertices.push_back(std::move(original));
-        m_scene.labels.push_back(std::move(label));
+        m_scene.originalVertices.push_back(std::move(extras.original));
+        m_scene.labels.push_back(std::move(extras.label));
+        m_scene.labelTexts.push_back(std::move(extras.labels));
+        m_scene.colours.push_back(std::move(extras.colour));
     }
     return true;
 }
 
-bool SceneReader::readLabel(const QJsonObject& body, const QString& place, QString& label)
+bool SceneReader::readLabel(const QJsonObject& body, const QString& place, QString& label,
+                            LocalTextMap& all)
 {
     if (!body.contains(u"label")) {
         return true;
@@ -241,12 +289,17 @@ bool SceneReader::readLabel(const QJsonObject& body, const QString& place, QStri
             }
         }
     }
+    if (value.isObject()) {
+        for (const detail::LocalTexts::Variant& v : m_texts.variants()) {
+            all.insert(v.place.section(u'.', -1), v.text.trimmed());
+        }
+    }
     label = label.trimmed();
     return true;
 }
 
 bool SceneReader::readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
-                           std::vector<Vec2>& original, QString& label)
+                           BodyExtras& extras)
 {
     QJsonObject body;
     QString id;
@@ -254,7 +307,7 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
         !m_in.checkKeys(body, place,
                         {u"id", u"label", u"type", u"shape", u"position", u"angle", u"velocity",
                          u"angularVelocity", u"density", u"mass", u"restitution", u"friction",
-                         u"collide"}) ||
+                         u"collide", u"colour"}) ||
         !m_in.string(body, u"id", place, id, true)) {
         return false;
     }
@@ -277,7 +330,7 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
                              .arg(id, QString::number(other.value())));
     }
     def.name = id.toStdString();
-    if (!readLabel(body, place, label)) {
+    if (!readLabel(body, place, extras.label, extras.labels)) {
         return false;
     }
 
@@ -302,7 +355,7 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
     if (!body.contains(u"shape")) {
         return m_in.fail(joinPlace(place, u"shape"), FileMessages::tr("required, but missing"));
     }
-    if (!readShape(body.value(u"shape"), joinPlace(place, u"shape"), def.shape, original)) {
+    if (!readShape(body.value(u"shape"), joinPlace(place, u"shape"), def.shape, extras.original)) {
         return false;
     }
     if (body.contains(u"density") && body.contains(u"mass")) {
@@ -321,7 +374,8 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
                      limits::kRestitution) ||
         !m_in.number(body, u"friction", place, def.friction, NumberRule::NonNegative,
                      limits::kFriction) ||
-        !m_in.boolean(body, u"collide", place, def.collide)) {
+        !m_in.boolean(body, u"collide", place, def.collide) ||
+        !readColour(body, place, extras.colour)) {
         return false;
     }
 

@@ -20,6 +20,8 @@ public:
 
     int type() const override { return Type; }
     int bodyId() const { return m_bodyId; }
+    /// The colour it is filled with: the scene's "colour", or one of the view's.
+    QColor fill() const { return m_fill; }
     /// Places the item: origin [m] and angle [rad] (counter-clockwise, y up).
     void setPose(double x, double y, double angle);
     void setSelectedBody(bool selected);

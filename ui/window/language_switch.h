@@ -7,9 +7,12 @@
 
 #include "lesson_player/lesson_player.h"
 #include "simulation/setting_edit.h"
+#include "format/scene.h"
 
 #include <QByteArray>
 #include <QString>
+
+#include <optional>
 
 class QMenu;
 
@@ -19,9 +22,14 @@ class MainWindow;
 
 /// What a window shows that a new window should show too.
 struct WindowState {
-    QString lessonPath;  ///< the open lesson, empty when none is
-    int lessonStep = 0;  ///< its step, 0 = the first
-    QString scenePath;   ///< the open scene when no lesson is
+    QString lessonPath; ///< the open lesson, empty when none is
+    int lessonStep = 0; ///< its step, 0 = the first
+    QString scenePath;  ///< the open scene when no lesson is
+    /// The scene as edited, when no lesson is open and it is not the file as saved (a new
+    /// scene, or unsaved edits): carried over so that switching loses no edit.
+    std::optional<lessons::Scene> editedScene;
+    bool editedIsFile = false;   ///< scenePath is the edited scene's own file (Save writes there)
+    bool editedModified = false; ///< with edits not saved
     long long steps = 0; ///< the world's steps since its start (replayed: the run is deterministic)
     bool running = false; ///< the clock was running
     double timeScale = 1.0;

@@ -5,6 +5,7 @@
 
 #include "common/display_names.h"
 #include "common/modal_scope.h"
+#include "editor/scene_document.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/control_panel.h"
@@ -55,9 +56,9 @@ void raiseFirst(const QMap<QString, QDockWidget*>& named, QList<QDockWidget*> do
 
 QString MainWindow::openLesson(const QString& path, bool quiet)
 {
-    const QString error = m_player->openLesson(path);
+    const QString error = m_player->openLesson(path); // asks about unsaved edits first
     m_lastError = error;
-    if (!error.isEmpty() && !quiet) {
+    if (!error.isEmpty() && !quiet && !m_player->openCancelled()) {
         auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open lesson"), error,
                                     QMessageBox::Ok, this);
         box->setAttribute(Qt::WA_DeleteOnClose);
@@ -86,21 +87,13 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     m_inLesson = true;
     setWindowTitle(tr("%1 — step %2 — RigidLab").arg(lesson.title).arg(index + 1));
 
-    // The step's worlds: the main one, then those compared beside it.
-    std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
-    QStringList labels;
-    if (step.compare && step.compare->count() > 1)
-        for (int i = 0; i < step.compare->count(); ++i)
-            labels << methodDisplayName(step.compare->label(i));
-    m_controller->loadWorlds(step.scene, step.scenePath.isEmpty() ? lesson.path : step.scenePath,
-                             std::move(worlds), labels,
-                             step.compare ? step.compare->offset : physics::Vec2::Zero());
-    if (step.settings.timeScale)
-        m_controller->setTimeScale(*step.settings.timeScale);
-    std::vector<lessons::Measure> measures;
-    for (const lessons::Question& q : step.questions)
-        measures.push_back(q.measure);
-    m_controller->watch(measures);
+    const QString scenePath = step.scenePath.isEmpty() ? lesson.path : step.scenePath;
+    // The step's scene is the document now; the step loads its worlds itself, just below.
+    m_lessonLoading = true;
+    m_documentIsFile = false; // its path is the lesson's or a shipped scene's: Save asks where
+    m_document->reset(step.scene, scenePath);
+    m_lessonLoading = false;
+    const QStringList labels = loadStepWorlds(step, step.scene, scenePath);
 
     // Only what the step names: panels, plots, overlays.
     for (auto it = m_docks.cbegin(); it != m_docks.cend(); ++it) {
@@ -166,6 +159,29 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
         m_sat->setBodies(-1, -1);
     }
     m_controller->setRunning(step.autoplay && !m_runHeld);
+}
+
+QStringList MainWindow::loadStepWorlds(const lessons::LessonStep& step, const lessons::Scene& scene,
+                                       const QString& path)
+{
+    // The step's worlds: the main one, then those compared beside it, built from `scene` (the
+    // step's, or as edited) with the step's settings.
+    lessons::LessonStep built = step;
+    built.scene = scene;
+    std::vector<physics::World> worlds = lessons::buildStepWorlds(built);
+    QStringList labels;
+    if (step.compare && step.compare->count() > 1)
+        for (int i = 0; i < step.compare->count(); ++i)
+            labels << methodDisplayName(step.compare->label(i));
+    m_controller->loadWorlds(scene, path, std::move(worlds), labels,
+                             step.compare ? step.compare->offset : physics::Vec2::Zero());
+    if (step.settings.timeScale)
+        m_controller->setTimeScale(*step.settings.timeScale);
+    std::vector<lessons::Measure> measures;
+    for (const lessons::Question& q : step.questions)
+        measures.push_back(q.measure);
+    m_controller->watch(measures);
+    return labels;
 }
 
 void MainWindow::applyHeldBack(const QStringList& held)
