@@ -447,6 +447,13 @@ EditResult addSpring(const Scene& scene, BodyId a, const Vec2& pointA, BodyId b,
         (b != physics::kWorld && !validBody(scene, b))) {
         return refused(noSuchBody(validBody(scene, a) || a == physics::kWorld ? b : a));
     }
+    const double length = (pointB - pointA).norm();
+    // Shorter than the smallest shape is no length to draw or to rest at.
+    if (!(length >= limits::kSize.min)) {
+        return refused(placedError(source, QStringLiteral("restLength"),
+                                   EditMessages::tr("a spring of zero length: drag from one "
+                                                    "point to another")));
+    }
     if (a == physics::kWorld && b == physics::kWorld) {
         return refused(placedError(source, {}, rules::springBothInWorld()));
     }
@@ -456,13 +463,6 @@ EditResult addSpring(const Scene& scene, BodyId a, const Vec2& pointA, BodyId b,
     if (scene.springs.size() >= static_cast<size_t>(kMaxSprings)) {
         return refused(EditMessages::tr("the scene holds %1 springs, the most a scene may have")
                            .arg(kMaxSprings));
-    }
-    const double length = (pointB - pointA).norm();
-    // Shorter than the smallest shape is no length to draw or to rest at.
-    if (!(length >= limits::kSize.min)) {
-        return refused(placedError(source, QStringLiteral("restLength"),
-                                   EditMessages::tr("a spring of zero length: drag from one "
-                                                    "point to another")));
     }
     physics::SpringDef spring;
     spring.a = a;

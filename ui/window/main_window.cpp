@@ -66,6 +66,7 @@ MainWindow::MainWindow(QWidget* parent)
     setWindowTitle(tr("RigidLab"));
     setCentralWidget(m_view);
     buildActions();
+    buildEditor();
     buildDocks();
     buildMenus();
 

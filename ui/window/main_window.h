@@ -32,10 +32,12 @@ namespace rigidlab::ui {
 class BouncePanel;
 class CollisionPanel;
 class ControlPanel;
+class EditTools;
 class InspectorPanel;
 class LessonPlayer;
 class SatPanel;
 class PlotWidget;
+class SceneDocument;
 class SimulationController;
 class WorldView;
 
@@ -75,6 +77,8 @@ public:
     WorldView& view() { return *m_view; }
     ControlPanel& controls() { return *m_controls; }
     InspectorPanel& inspector() { return *m_inspector; }
+    /// The scene editor: Edit mode and its tools (main_window_editor.cpp).
+    EditTools& editTools() { return *m_editTools; }
     PlotWidget* plot(int index) const { return m_plots[static_cast<size_t>(index)]; }
     static constexpr int kPlotCount = 3;
     QString lastError() const { return m_lastError; }
@@ -130,6 +134,8 @@ private:
     void buildMenus();
     void buildStatusBar();
     void buildDocks();
+    /// The scene editor's document, tools and toolbar (main_window_editor.cpp).
+    void buildEditor();
     void addRecent(const QString& path);
     void rebuildRecentMenu();
     void exportPlotDialog(PlotWidget* plot, const QString& format);
@@ -192,6 +198,10 @@ private:
     std::vector<std::pair<QPointer<QWidget>, QFont>> m_explicitFonts; ///< before presentation
     QPalette m_normalPalette;
     QAction* m_presentAction = nullptr;
+
+    // The scene editor (main_window_editor.cpp).
+    SceneDocument* m_editDocument = nullptr;
+    EditTools* m_editTools = nullptr;
 };
 
 } // namespace rigidlab::ui

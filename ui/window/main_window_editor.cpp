@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// MainWindow's scene editor (issue 15): the edited scene, Edit mode and its tools on a toolbar
+// of their own, their messages in the status bar.
+#include "window/main_window.h"
+
+#include "editor/edit_tools.h"
+#include "editor/scene_document.h"
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
+
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace rigidlab::ui {
+
+void MainWindow::buildEditor()
+{
+    m_editDocument = new SceneDocument(this);
+    m_editTools = new EditTools(*m_view, *m_controller, *m_editDocument, this);
+    // The document edits the scene shown: every scene loaded from elsewhere (a file, a lesson
+    // step) starts it afresh; the editor's own reloads are its document already.
+    connect(m_controller, &SimulationController::sceneLoaded, this, [this] {
+        if (!m_editTools->reloading()) {
+            m_editDocument->reset(m_controller->scene(), m_controller->scenePath());
+        }
+    });
+    connect(m_editTools, &EditTools::message, this, [this](const QString& text) {
+        if (text.isEmpty()) {
+            statusBar()->clearMessage();
+        } else {
+            statusBar()->showMessage(text, 10000);
+        }
+    });
+    // Q and E turn the body in the scene while editing (EditTools), not in the world.
+    connect(m_editTools, &EditTools::editingChanged, this, [this](bool on) {
+        for (QAction* a : m_rotateActions) {
+            a->setEnabled(!on);
+        }
+    });
+
+    auto* toolbar = addToolBar(tr("Scene editor"));
+    toolbar->setObjectName(QStringLiteral("editToolbar"));
+    toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    const QList<QAction*> actions = m_editTools->actions();
+    toolbar->addAction(actions.front());
+    toolbar->addSeparator();
+    for (qsizetype i = 1; i < actions.size(); ++i) {
+        toolbar->addAction(actions[i]);
+    }
+    addAction(m_editTools->deleteSelectionAction());
+}
+
+} // namespace rigidlab::ui
