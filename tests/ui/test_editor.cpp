@@ -5,14 +5,21 @@
 
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
+#include "editor/scene_properties.h"
+#include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
+#include "window/main_window.h"
 
+#include "edit/scene_edits.h"
 #include "format/scene.h"
 
 #include "test_main.h"
 
 #include <QAction>
+#include <QDir>
+#include <QLineEdit>
+#include <QScreen>
 #include <QTest>
 #include <QUndoStack>
 
@@ -21,6 +28,7 @@
 
 using namespace rigidlab;
 using namespace rigidlab::ui;
+namespace edit = rigidlab::lessons::edit;
 using physics::Vec2;
 
 namespace {
@@ -86,6 +94,7 @@ struct Rig {
     SceneDocument document;
     WorldView view{simulation};
     EditTools tools{view, simulation, document};
+    SceneProperties properties{tools, document};
     lessons::Scene opened;
     double g = 0; ///< the grid step [m]; every point below is on the grid
 
@@ -124,6 +133,13 @@ struct Rig {
     }
 };
 
+/// Types `text` into a field as a person does, replacing what it shows.
+void type(QLineEdit* field, const QString& text)
+{
+    field->clear();
+    QTest::keyClicks(field, text);
+}
+
 bool near(const Vec2& a, const Vec2& b)
 {
     return (a - b).norm() <= kTolerance;
@@ -139,6 +155,7 @@ private slots:
     void refusesDegenerateShapesWithTheirMessage();
     void warnsOfOverlapsAndHulls();
     void keysNudgeAndTurn();
+    void teachersTaskInTheWindow();
 };
 
 void TestEditor::editModePausesAndRunsAsEdited()
@@ -230,6 +247,34 @@ void TestEditor::drawsEveryKindAndUndoesBackToTheOpenedScene()
     rig.drag(rig.px(3.8, 3), rig.px(3, 3.8));
     QVERIFY2(std::abs(rig.body("box1").angle - std::numbers::pi / 2) < 1e-9,
              qPrintable(QString::number(rig.body("box1").angle)));
+
+    // Properties, typed into their fields: the box's mass, a spring's stiffness, gravity.
+    rig.use(EditTool::Select);
+    rig.click(rig.px(3, 3));
+    QCOMPARE(rig.tools.selectedBody(), rig.index("box1"));
+    NumberField* mass = rig.properties.field(QStringLiteral("mass"));
+    QVERIFY(mass && mass->isVisibleTo(&rig.properties));
+    type(mass, QStringLiteral("3"));
+    QVERIFY(mass->commit());
+    QCOMPARE(rig.body("box1").mass, 3.0);
+    NumberField* restitution = rig.properties.field(QStringLiteral("restitution"));
+    type(restitution, QStringLiteral("1.5"));
+    QVERIFY(!restitution->commit()); // refused by the field, with the limits' range
+    QVERIFY2(restitution->error().contains(QStringLiteral("1")), qPrintable(restitution->error()));
+    QCOMPARE(rig.body("box1").restitution, -1.0); // the world's, as before
+    rig.click(rig.px(3, 6)); // on the spring from (3, 8) down to the box at (3, 3)
+    QCOMPARE(rig.tools.selectedSpring(), 0);
+    QCOMPARE(rig.tools.selectedBody(), -1);
+    NumberField* stiffness = rig.properties.field(QStringLiteral("stiffness"));
+    QVERIFY(stiffness->isVisibleTo(&rig.properties));
+    type(stiffness, QStringLiteral("120"));
+    QVERIFY(stiffness->commit());
+    QCOMPARE(rig.scene().springs[0].stiffness, 120.0);
+    NumberField* gravity = rig.properties.field(QStringLiteral("gravityY"));
+    type(gravity, QStringLiteral("-1.62"));
+    QVERIFY(gravity->commit());
+    QCOMPARE(rig.scene().world.gravity.y(), -1.62);
+    QCOMPARE(rig.simulation.world().def().gravity.y(), -1.62); // the world follows the document
 
     // Duplicate the polygon, delete the first circle (the others' indices follow).
     rig.use(EditTool::Duplicate);
@@ -330,6 +375,92 @@ void TestEditor::keysNudgeAndTurn()
     QVERIFY(std::abs(rig.body("box1").angle + 5.0 * std::numbers::pi / 180.0) < 1e-12);
     rig.tools.deleteSelectionAction()->trigger();
     QVERIFY(rig.scene().bodies.empty());
+}
+
+void TestEditor::teachersTaskInTheWindow()
+{
+    // A ramp with a ball and a box on it, a pendulum on a pin and a spring oscillator, drawn
+    // in the window with its toolbar's actions, then run. With RIGIDLAB_EDITOR_SHOTS set to a
+    // folder, the window is written there before and after the run (screenshots under Xvfb).
+    MainWindow w;
+    w.resize(1280, 800);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    w.controller().loadScene(lessons::Scene{}, {});
+    EditTools& tools = w.editTools();
+    WorldView& view = w.view();
+    tools.editAction()->trigger();
+    QVERIFY(tools.editing());
+    const double g = tools.gridStep();
+    const QPointF middle = view.mapToScene(view.viewport()->rect().center());
+    const Vec2 c(std::round(middle.x() / g) * g, std::round(middle.y() / g) * g);
+    const auto px = [&](double x, double y) {
+        return view.mapFromScene(QPointF(c.x() + x * g, c.y() + y * g));
+    };
+    const auto drag = [&](QPoint a, QPoint b) {
+        QTest::mousePress(view.viewport(), Qt::LeftButton, {}, a);
+        QTest::mouseMove(view.viewport(), (a + b) / 2);
+        QTest::mouseMove(view.viewport(), b);
+        QTest::mouseRelease(view.viewport(), Qt::LeftButton, {}, b);
+    };
+    const auto key = [&](Qt::Key k, int times) {
+        for (int i = 0; i < times; ++i) {
+            QTest::keyClick(&view, k);
+        }
+    };
+    const auto scene = [&]() -> const lessons::Scene& { return w.controller().scene(); };
+
+    tools.toolAction(EditTool::Ground)->trigger();
+    drag(px(-12, -6), px(12, -5)); // the floor
+    drag(px(-9, -2), px(-1, -1));  // the ramp, turned down to the right by 20°
+    key(Qt::Key_E, 4);
+    tools.toolAction(EditTool::Circle)->trigger();
+    drag(px(-7, 1), px(-6, 1));
+    tools.toolAction(EditTool::Box)->trigger();
+    drag(px(-5, 0), px(-4, 1));
+    // The pendulum: a rod turned by 30°, pinned to the world at its upper end.
+    drag(px(1, -1), px(2, 3));
+    key(Qt::Key_E, 6);
+    tools.snapAction()->setChecked(false);
+    tools.toolAction(EditTool::Pin)->trigger();
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, px(1.5 + 0.9, 1 + 1.56));
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, px(2, 6));
+    tools.snapAction()->setChecked(true);
+    // The spring oscillator: a box hung from the world by a spring.
+    tools.toolAction(EditTool::Box)->trigger();
+    drag(px(6, -1), px(8, 0));
+    tools.toolAction(EditTool::Spring)->trigger();
+    drag(px(7, 4), px(7, -0.5));
+    tools.toolAction(EditTool::Select)->trigger();
+    tools.selectBody(scene().bodyIndex(QStringLiteral("box2")).value_or(-1));
+
+    QCOMPARE(scene().bodies.size(), size_t(6));
+    QCOMPARE(scene().joints.size(), size_t(1));
+    QCOMPARE(scene().springs.size(), size_t(1));
+    QVERIFY2(edit::overlapMessage(scene()).isEmpty(), qPrintable(edit::overlapMessage(scene())));
+    const QString shots = qEnvironmentVariable("RIGIDLAB_EDITOR_SHOTS");
+    if (!shots.isEmpty()) {
+        QDir().mkpath(shots);
+        QVERIFY(w.grab().save(QDir(shots).filePath(QStringLiteral("editor-edit.png"))));
+    }
+
+    const lessons::Scene edited = scene();
+    tools.editAction()->trigger(); // leave: runs the scene as edited
+    QVERIFY(!tools.editing());
+    QVERIFY(w.controller().isRunning());
+    for (int i = 0; i < 1500; ++i) {
+        w.controller().stepForward();
+    }
+    const auto& bodies = w.controller().world().bodies();
+    const auto index = [&](const char* id) {
+        return static_cast<size_t>(*edited.bodyIndex(QString::fromLatin1(id)));
+    };
+    QVERIFY(bodies[index("circle1")].position.x() > edited.bodies[index("circle1")].position.x());
+    QVERIFY(bodies[index("box2")].angle != edited.bodies[index("box2")].angle); // it swings
+    QVERIFY(bodies[index("box3")].position.y() < edited.bodies[index("box3")].position.y());
+    if (!shots.isEmpty()) {
+        QVERIFY(w.grab().save(QDir(shots).filePath(QStringLiteral("editor-run.png"))));
+    }
 }
 
 RIGIDLAB_TEST_MAIN(TestEditor)

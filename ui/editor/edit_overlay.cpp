@@ -135,6 +135,21 @@ void EditOverlay::paint(QPainter* painter, const QStyleOptionGraphicsItem* optio
         painter->setBrush(Qt::NoBrush);
     }
 
+    // The selected spring.
+    if (const int spring = m_tools.selectedSpring();
+        spring >= 0 && static_cast<size_t>(spring) < scene.springs.size()) {
+        const auto& s = scene.springs[static_cast<size_t>(spring)];
+        const auto end = [&scene](physics::BodyId body, const Vec2& anchor) {
+            if (body == physics::kWorld) {
+                return anchor;
+            }
+            const auto& def = scene.bodies[static_cast<size_t>(body)];
+            return Vec2(physics::Transform(def.position, def.angle).apply(anchor));
+        };
+        painter->setPen(cosmetic(accent, 4, Qt::DashLine));
+        painter->drawLine(at(end(s.a, s.anchorA)), at(end(s.b, s.anchorB)));
+    }
+
     // What is being drawn.
     const auto& drag = m_tools.m_drag;
     painter->setPen(cosmetic(accent, 2));

@@ -16,6 +16,7 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -224,9 +225,26 @@ void EditTools::selectBody(int body)
         body = -1;
     }
     m_selected = body;
+    if (body >= 0) {
+        m_selectedSpring = -1;
+    }
     m_view.selectBody(body);
     refreshOverlay();
-    emit selectionChanged(body);
+    emit selectionChanged();
+}
+
+void EditTools::selectSpring(int spring)
+{
+    if (spring >= static_cast<int>(m_document.scene().springs.size())) {
+        spring = -1;
+    }
+    m_selectedSpring = spring;
+    if (spring >= 0) {
+        m_selected = -1;
+        m_view.selectBody(-1);
+    }
+    refreshOverlay();
+    emit selectionChanged();
 }
 
 void EditTools::rotateSelected(double radians)
@@ -252,6 +270,13 @@ void EditTools::nudgeSelected(const Vec2& offset)
 
 void EditTools::deleteSelected()
 {
+    if (m_selectedSpring >= 0) {
+        const int spring = m_selectedSpring;
+        m_selectedSpring = -1;
+        apply(tr("Delete spring"), edit::deleteSpring(m_document.scene(), spring));
+        selectSpring(-1);
+        return;
+    }
     if (m_selected < 0) {
         say(tr("Select a body to delete it"));
         return;
@@ -332,6 +357,8 @@ bool EditTools::wantsKey(const QKeyEvent* event) const
     case Qt::Key_Q:
     case Qt::Key_E:
         return m_selected >= 0;
+    case Qt::Key_Delete:
+        return m_selected >= 0 || m_selectedSpring >= 0;
     case Qt::Key_Return:
     case Qt::Key_Enter:
     case Qt::Key_Escape:
@@ -374,6 +401,9 @@ bool EditTools::keyPress(QKeyEvent* event)
     case Qt::Key_Enter:
         closePolygon();
         break;
+    case Qt::Key_Delete:
+        deleteSelected();
+        break;
     case Qt::Key_Backspace:
         if (!m_polygon.empty()) {
             m_polygon.pop_back();
@@ -409,6 +439,11 @@ bool EditTools::mousePress(QMouseEvent* event)
             bodyAt(raw) >= 0 ? bodyAt(raw) : (m_tool == EditTool::Rotate ? m_selected : -1);
         if (body < 0) {
             selectBody(-1);
+            if (const int spring = springAt(raw); spring >= 0 && m_tool == EditTool::Select) {
+                selectSpring(spring);
+                return true;
+            }
+            selectSpring(-1);
             return false; // empty space pans
         }
         selectBody(body);
@@ -614,6 +649,31 @@ int EditTools::bodyAt(const Vec2& p) const
     return -1;
 }
 
+int EditTools::springAt(const Vec2& p) const
+{
+    const lessons::Scene& scene = m_document.scene();
+    const double reach = kVertexSnapPixels / std::max(m_view.zoom(), 1e-9);
+    const auto end = [&scene](physics::BodyId body, const Vec2& anchor) {
+        if (body == physics::kWorld) {
+            return anchor;
+        }
+        const auto& def = scene.bodies[static_cast<size_t>(body)];
+        return physics::Transform(def.position, def.angle).apply(anchor);
+    };
+    for (int i = static_cast<int>(scene.springs.size()) - 1; i >= 0; --i) {
+        const auto& s = scene.springs[static_cast<size_t>(i)];
+        const Vec2 a = end(s.a, s.anchorA);
+        const Vec2 b = end(s.b, s.anchorB);
+        const Vec2 ab = b - a;
+        const double t =
+            ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+        if ((a + t * ab - p).norm() <= reach) {
+            return i;
+        }
+    }
+    return -1;
+}
+
 Vec2 EditTools::snapToGrid(const Vec2& p) const
 {
     const double step = gridStep();
@@ -693,6 +753,9 @@ void EditTools::reloadWorld()
         m_view.selectBody(selected);
     } else {
         m_selected = -1;
+    }
+    if (m_selectedSpring >= static_cast<int>(m_document.scene().springs.size())) {
+        m_selectedSpring = -1;
     }
     refreshOverlay();
 }

@@ -72,6 +72,8 @@ public:
     EditTool tool() const { return m_tool; }
     /// The selected body (an index into the document's scene), -1 for none.
     int selectedBody() const { return m_selected; }
+    /// The selected spring (an index into the document's springs), -1 for none.
+    int selectedSpring() const { return m_selectedSpring; }
     /// The grid's step now [m]: a round number about kGridPixels wide at this zoom.
     double gridStep() const;
     /// Whether the editor is reloading the simulation from its document just now (a window
@@ -91,6 +93,7 @@ public slots:
     void setEditing(bool on);
     void setTool(rigidlab::ui::EditTool tool);
     void selectBody(int body);
+    void selectSpring(int spring);
     /// Turns the selected body by `radians` about its origin (Q, E).
     void rotateSelected(double radians);
     /// Moves the selected body by `offset` [m] (arrow keys).
@@ -103,7 +106,8 @@ signals:
     void editingChanged(bool on);
     /// For the status bar: a refusal, a warning, the size being drawn; empty clears it.
     void message(const QString& text);
-    void selectionChanged(int body);
+    /// A body or a spring was selected, or the selection cleared.
+    void selectionChanged();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -132,6 +136,8 @@ private:
 
     /// The body under a world point, the topmost (last drawn), or -1.
     int bodyAt(const physics::Vec2& p) const;
+    /// The spring within a few pixels of a world point, or -1.
+    int springAt(const physics::Vec2& p) const;
     /// A point snapped to another body's vertex within a few pixels, else to the grid when
     /// snapping is on; `except` is left out (the body being moved).
     physics::Vec2 snapped(const physics::Vec2& p, int except = -1) const;
@@ -159,6 +165,7 @@ private:
     bool m_reloading = false;
     EditTool m_tool = EditTool::Select;
     int m_selected = -1;
+    int m_selectedSpring = -1;
     Drag m_drag;
     std::vector<physics::Vec2> m_polygon;            ///< points of the polygon being drawn [m]
     physics::Vec2 m_pointer = physics::Vec2::Zero(); ///< last pointer position [m], snapped

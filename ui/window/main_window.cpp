@@ -66,8 +66,8 @@ MainWindow::MainWindow(QWidget* parent)
     setWindowTitle(tr("RigidLab"));
     setCentralWidget(m_view);
     buildActions();
-    buildEditor();
     buildDocks();
+    buildEditor();
     buildMenus();
 
     new DivergenceBanner(*m_controller, m_view);

@@ -5,9 +5,12 @@
 
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
+#include "editor/scene_properties.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 
+#include <QDockWidget>
+#include <QScrollArea>
 #include <QStatusBar>
 #include <QToolBar>
 
@@ -48,6 +51,28 @@ void MainWindow::buildEditor()
         toolbar->addAction(actions[i]);
     }
     addAction(m_editTools->deleteSelectionAction());
+
+    // The selection's properties, beside the inspector, shown in Edit mode.
+    auto* properties = new SceneProperties(*m_editTools, *m_editDocument, this);
+    connect(properties, &SceneProperties::refused, this,
+            [this](const QString& why) { statusBar()->showMessage(why, 10000); });
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(properties);
+    scroll->setWidgetResizable(true);
+    auto* dock = new QDockWidget(tr("Properties"), this);
+    dock->setObjectName(QStringLiteral("propertiesDock"));
+    dock->setWidget(scroll);
+    addDockWidget(Qt::LeftDockWidgetArea, dock);
+    if (QDockWidget* inspector = m_docks.value(QStringLiteral("inspector"))) {
+        tabifyDockWidget(inspector, dock);
+    }
+    dock->hide();
+    connect(m_editTools, &EditTools::editingChanged, dock, [dock](bool on) {
+        dock->setVisible(on);
+        if (on) {
+            dock->raise();
+        }
+    });
 }
 
 } // namespace rigidlab::ui
