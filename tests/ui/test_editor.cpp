@@ -383,7 +383,7 @@ void TestEditor::teachersTaskInTheWindow()
     // in the window with its toolbar's actions, then run. With RIGIDLAB_EDITOR_SHOTS set to a
     // folder, the window is written there before and after the run (screenshots under Xvfb).
     MainWindow w;
-    w.resize(1280, 800);
+    w.resize(1600, 1000);
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     w.controller().loadScene(lessons::Scene{}, {});
@@ -440,6 +440,7 @@ void TestEditor::teachersTaskInTheWindow()
     QVERIFY2(edit::overlapMessage(scene()).isEmpty(), qPrintable(edit::overlapMessage(scene())));
     const QString shots = qEnvironmentVariable("RIGIDLAB_EDITOR_SHOTS");
     if (!shots.isEmpty()) {
+        view.fitScene();
         QDir().mkpath(shots);
         QVERIFY(w.grab().save(QDir(shots).filePath(QStringLiteral("editor-edit.png"))));
     }

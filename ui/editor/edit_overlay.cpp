@@ -11,6 +11,7 @@
 #include <QPainterPath>
 #include <QPalette>
 #include <QStyleOptionGraphicsItem>
+#include <QWidget>
 
 #include <cmath>
 
@@ -78,7 +79,7 @@ QRectF EditOverlay::boundingRect() const
     return scene() ? scene()->sceneRect() : QRectF();
 }
 
-void EditOverlay::paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget*)
+void EditOverlay::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget* widget)
 {
     const lessons::Scene& scene = m_tools.m_document.scene();
     painter->setRenderHint(QPainter::Antialiasing);
@@ -89,9 +90,9 @@ void EditOverlay::paint(QPainter* painter, const QStyleOptionGraphicsItem* optio
     // The grid, as dots at its crossings, where snapping puts points.
     if (m_tools.m_snapAction->isChecked()) {
         const double step = m_tools.gridStep();
-        const QRectF shown = option->exposedRect.isEmpty()
-                                 ? painter->transform().inverted().mapRect(QRectF(0, 0, 4000, 4000))
-                                 : option->exposedRect;
+        // What the view shows (exposedRect is the whole item without the extended option).
+        const QRectF device = widget ? QRectF(widget->rect()) : QRectF(painter->viewport());
+        const QRectF shown = painter->transform().inverted().mapRect(device);
         const double x0 = std::floor(shown.left() / step) * step;
         const double y0 = std::floor(shown.top() / step) * step;
         const double nx = shown.width() / step;

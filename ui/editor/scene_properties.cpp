@@ -34,6 +34,8 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
     : QWidget(parent), m_tools(tools), m_document(document)
 {
     auto* layout = new QVBoxLayout(this);
+    // At least as tall as its rows, so that a scroll area scrolls rather than squeezes them.
+    layout->setSizeConstraint(QLayout::SetMinimumSize);
 
     m_bodyBox = new QGroupBox(tr("Body"), this);
     auto* body = new QFormLayout(m_bodyBox);

@@ -63,11 +63,12 @@ void MainWindow::buildEditor()
     dock->setObjectName(QStringLiteral("propertiesDock"));
     dock->setWidget(scroll);
     addDockWidget(Qt::LeftDockWidgetArea, dock);
-    if (QDockWidget* inspector = m_docks.value(QStringLiteral("inspector"))) {
-        tabifyDockWidget(inspector, dock);
-    }
     dock->hide();
-    connect(m_editTools, &EditTools::editingChanged, dock, [dock](bool on) {
+    connect(m_editTools, &EditTools::editingChanged, dock, [this, dock](bool on) {
+        // A tab beside the inspector, wherever the layout has put the inspector since.
+        if (QDockWidget* inspector = m_docks.value(QStringLiteral("inspector")); on && inspector) {
+            tabifyDockWidget(inspector, dock);
+        }
         dock->setVisible(on);
         if (on) {
             dock->raise();
