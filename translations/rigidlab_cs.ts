@@ -261,6 +261,26 @@
         <source>Edit: delete the selected body</source>
         <translation>Úpravy: smazat vybrané těleso</translation>
     </message>
+    <message>
+        <source>Undo the last edit of the scene</source>
+        <translation>Vrátit poslední úpravu scény</translation>
+    </message>
+    <message>
+        <source>Redo the edit undone last</source>
+        <translation>Znovu provést naposledy vrácenou úpravu</translation>
+    </message>
+    <message>
+        <source>A new, empty scene</source>
+        <translation>Nová, prázdná scéna</translation>
+    </message>
+    <message>
+        <source>Save the scene</source>
+        <translation>Uložit scénu</translation>
+    </message>
+    <message>
+        <source>Save the scene under another name</source>
+        <translation>Uložit scénu pod jiným jménem</translation>
+    </message>
 </context>
 <context>
     <name>DivergenceWords</name>
@@ -865,6 +885,10 @@
     <message>
         <source>&quot;%1&quot; leads out of %2 (through a symbolic link)</source>
         <translation>&quot;%1&quot; vede mimo %2 (přes symbolický odkaz)</translation>
+    </message>
+    <message>
+        <source>must be a colour &quot;#rrggbb&quot; (six hexadecimal digits, as &quot;#d04030&quot;), got &quot;%1&quot;</source>
+        <translation>musí být barva &quot;#rrggbb&quot; (šest šestnáctkových číslic, např. &quot;#d04030&quot;), je &quot;%1&quot;</translation>
     </message>
 </context>
 <context>
@@ -1476,6 +1500,10 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
         <source>Snap to a grid of %1 m and to other bodies&apos; corners (%2)</source>
         <translation>Přichytávat k&#xa0;mřížce %1&#xa0;m a&#xa0;k&#xa0;rohům jiných těles (%2)</translation>
     </message>
+    <message>
+        <source>This lesson step locks the %1 tool</source>
+        <translation>Tento krok lekce nástroj %1 zamyká</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::ErrorPanel</name>
@@ -1712,6 +1740,10 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
         <source>Type a number from %1 to %2.</source>
         <translation>Zadejte číslo od %1 do %2.</translation>
     </message>
+    <message>
+        <source>The lesson was not opened: the edited scene stays.</source>
+        <translation>Lekce nebyla otevřena: upravovaná scéna zůstává.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MainWindow</name>
@@ -1738,10 +1770,6 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     <message>
         <source>Play</source>
         <translation>Spustit</translation>
-    </message>
-    <message>
-        <source>%1 — RigidLab</source>
-        <translation>%1 – RigidLab</translation>
     </message>
     <message>
         <source>Simulation</source>
@@ -2086,6 +2114,86 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     <message>
         <source>Properties</source>
         <translation>Vlastnosti</translation>
+    </message>
+    <message>
+        <source>RigidLab[*]</source>
+        <translation>RigidLab[*]</translation>
+    </message>
+    <message>
+        <source>%1[*] — RigidLab</source>
+        <translation>%1[*] – RigidLab</translation>
+    </message>
+    <message>
+        <source>%1 (%2)[*] — RigidLab</source>
+        <translation>%1 (%2)[*] – RigidLab</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: the edited scene stays.</source>
+        <translation>%1 nebyl otevřen: upravovaná scéna zůstává.</translation>
+    </message>
+    <message>
+        <source>&amp;New scene</source>
+        <translation>Nová &amp;scéna</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>Uloži&amp;t</translation>
+    </message>
+    <message>
+        <source>Save &amp;as…</source>
+        <translation>Uložit j&amp;ako…</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>Úpr&amp;avy</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Zpět</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>Z&amp;novu</translation>
+    </message>
+    <message>
+        <source>New scene</source>
+        <translation>Nová scéna</translation>
+    </message>
+    <message>
+        <source>Edits made before the language changed</source>
+        <translation>Úpravy provedené před změnou jazyka</translation>
+    </message>
+    <message>
+        <source>%1 comes with RigidLab and is not overwritten: save your version under a name of its own.</source>
+        <translation>%1 je dodáván s RigidLabem a nepřepisuje se: uložte svou verzi pod vlastním jménem.</translation>
+    </message>
+    <message>
+        <source>Save scene as</source>
+        <translation>Uložit scénu jako</translation>
+    </message>
+    <message>
+        <source>%1 comes with RigidLab and is not overwritten. Choose another name, or a folder of your own (your scenes are in %2).</source>
+        <translation>%1 je dodáván s RigidLabem a nepřepisuje se. Zvolte jiné jméno nebo vlastní složku (vaše scény jsou v %2).</translation>
+    </message>
+    <message>
+        <source>Scene not saved</source>
+        <translation>Scéna nebyla uložena</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Uloženo: %1</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Neuložené změny</translation>
+    </message>
+    <message>
+        <source>The scene “%1” has changes that are not saved.</source>
+        <translation>Scéna „%1“ má neuložené změny.</translation>
+    </message>
+    <message>
+        <source>Save them before going on?</source>
+        <translation>Uložit je před pokračováním?</translation>
     </message>
 </context>
 <context>

@@ -99,7 +99,7 @@ QString bodyProblem(const BodyDef& def)
 
 /// Adds `def` (named already) as the last body.
 EditResult addBody(const Scene& scene, BodyDef def, std::vector<Vec2> original = {},
-                   const QString& warning = {})
+                   const QString& warning = {}, const QString& colour = {})
 {
     if (scene.bodies.size() >= static_cast<size_t>(kMaxBodies)) {
         return refused(EditMessages::tr("the scene holds %1 bodies, the most a scene may have")
@@ -112,6 +112,10 @@ EditResult addBody(const Scene& scene, BodyDef def, std::vector<Vec2> original =
     out.bodies.push_back(std::move(def));
     out.originalVertices.resize(scene.bodies.size());
     out.originalVertices.push_back(std::move(original));
+    if (!colour.isEmpty()) {
+        out.colours.resize(scene.bodies.size());
+        out.colours.push_back(colour);
+    }
     return accepted(std::move(out), static_cast<BodyId>(scene.bodies.size()), warning);
 }
 
@@ -337,6 +341,9 @@ EditResult deleteBody(const Scene& scene, BodyId body)
     if (static_cast<size_t>(body) < out.originalVertices.size()) {
         out.originalVertices.erase(out.originalVertices.begin() + body);
     }
+    if (static_cast<size_t>(body) < out.colours.size()) {
+        out.colours.erase(out.colours.begin() + body);
+    }
     // An end past the deleted body moves down one; the world stays the world.
     const auto renumber = [body](BodyId& end) {
         if (end > body) {
@@ -377,7 +384,8 @@ EditResult duplicateBody(const Scene& scene, BodyId body, const Vec2& offset)
     if (static_cast<size_t>(body) < scene.originalVertices.size()) {
         original = scene.originalVertices[static_cast<size_t>(body)];
     }
-    return addBody(scene, std::move(def), std::move(original));
+    return addBody(scene, std::move(def), std::move(original), {},
+                   scene.colourOf(static_cast<size_t>(body)));
 }
 
 EditResult deleteSpring(const Scene& scene, int index)

@@ -105,6 +105,12 @@ struct Comparison {
     QString label(int i) const; ///< "euler", "seed-impulse", ...
 };
 
+/// A step that opens the scene editor (its "editor" key): what the student may use.
+struct EditorLock {
+    QStringList tools;      ///< of lessons::kEditorToolNames (editor_tools.h), enabled
+    QStringList properties; ///< of lessons::kEditorPropertyNames, editable; the rest locked
+};
+
 struct LessonStep {
     QString title;
     QString text;      ///< Markdown
@@ -119,6 +125,8 @@ struct LessonStep {
     /// friction, gravity, timeScale); nullopt: all of them.
     std::optional<QStringList> allow;
     std::optional<std::pair<QString, QString>> sat; ///< body ids the SAT panel looks at
+    /// The step opens the scene editor with these tools and properties; nullopt: it does not.
+    std::optional<EditorLock> editor;
     std::vector<Question> questions;
     double exportTime = 10.0; ///< simulated seconds run for a headless plot export [s]
     bool autoplay = true;     ///< start running when the step opens

@@ -5,6 +5,7 @@
 // Nothing in a lesson is ever executed: texts are shown, names are looked up in fixed lists,
 // and scene files are read only from where scene_path.cpp allows.
 
+#include "format/editor_tools.h"
 #include "format/lesson_reading.h"
 #include "format/scene_loader.h"
 #include "format/scene_path.h"
@@ -160,7 +161,8 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
     if (!in.asObject(value, place, object) ||
         !in.checkKeys(object, place,
                       {u"title", u"text", u"scene", u"settings", u"compare", u"plots", u"overlays",
-                       u"panels", u"allow", u"sat", u"questions", u"exportTime", u"autoplay"}) ||
+                       u"panels", u"allow", u"sat", u"editor", u"questions", u"exportTime",
+                       u"autoplay"}) ||
         !context.texts->line(object, u"title", place, step.title, true)) {
         return false;
     }
@@ -200,6 +202,26 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
             return false;
         }
         step.allow = allow;
+    }
+    if (object.contains(u"editor")) {
+        // {"tools": [...], "properties": [...]}: each list absent means all, empty means none.
+        const QString at = joinPlace(place, u"editor");
+        QJsonObject editor;
+        EditorLock lock;
+        if (!in.asObject(object.value(u"editor"), at, editor) ||
+            !in.checkKeys(editor, at, {u"tools", u"properties"}) ||
+            !readNames(in, editor, u"tools", at, kEditorToolNames, u"tool", lock.tools) ||
+            !readNames(in, editor, u"properties", at, kEditorPropertyNames, u"property",
+                       lock.properties)) {
+            return false;
+        }
+        if (!editor.contains(u"tools"))
+            for (std::string_view name : kEditorToolNames)
+                lock.tools << QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
+        if (!editor.contains(u"properties"))
+            for (std::string_view name : kEditorPropertyNames)
+                lock.properties << QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
+        step.editor = lock;
     }
     if (!readSat(in, object, place, step.scene, step.sat) ||
         !readQuestions(in, *context.texts, object, place, step, step.questions) ||

@@ -18,6 +18,7 @@
 
 #include <QFileInfo>
 #include <QHash>
+#include <QRegularExpression>
 
 #include <array>
 #include <cmath>
@@ -48,12 +49,15 @@ public:
     SceneLoadResult read(const QJsonObject& root);
 
 private:
-    /// A title or description: "..." or {"en": "...", "cs": "..."}, kept in the chosen language.
-    bool readText(const QJsonObject& root, QStringView key, QString& out);
+    /// A title or description: "..." or {"en": "...", "cs": "..."}, kept in the chosen language;
+    /// `all` gets every language's text of the object form.
+    bool readText(const QJsonObject& root, QStringView key, QString& out, LocalTextMap& all);
+    /// A body's "colour": "#rrggbb", kept in lower case; absent: empty.
+    bool readColour(const QJsonObject& body, const QString& place, QString& out);
     bool readWorld(const QJsonObject& root);
     bool readBodies(const QJsonObject& root);
     bool readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
-                  std::vector<Vec2>& original);
+                  std::vector<Vec2>& original, QString& colour);
     /// Reads a shape; `original` gets the file's vertices of a polygon replaced by its hull.
     bool readShape(const QJsonValue& value, const QString& place, physics::Shape& shape,
                    std::vector<Vec2>& original);
@@ -80,9 +84,9 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
                     m_in.checkKeys(root, {},
                                    {u"rigidlab", u"title", u"description", u"world", u"bodies",
                                     u"springs", u"joints"}) &&
-                    readText(root, u"title", m_scene.title) &&
-                    readText(root, u"description", m_scene.description) && readWorld(root) &&
-                    readBodies(root) && readSprings(root) && readJoints(root);
+                    readText(root, u"title", m_scene.title, m_scene.titles) &&
+                    readText(root, u"description", m_scene.description, m_scene.descriptions) &&
+                    readWorld(root) && readBodies(root) && readSprings(root) && readJoints(root);
     if (ok) {
         m_texts.warnMissing();
     }
@@ -101,14 +105,45 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
     return result;
 }
 
-bool SceneReader::readText(const QJsonObject& root, QStringView key, QString& out)
+bool SceneReader::readText(const QJsonObject& root, QStringView key, QString& out,
+                           LocalTextMap& all)
 {
+    m_scene.language = m_texts.language();
     const auto it = root.constFind(key);
     if (it != root.constEnd() && !it.value().isString() && !it.value().isObject()) {
         // Neither form: the message of a plain string, as before scenes had languages.
         return m_in.string(root, key, {}, out);
     }
-    return m_texts.line(root, key, {}, out);
+    if (!m_texts.line(root, key, {}, out)) {
+        return false;
+    }
+    if (it != root.constEnd() && it.value().isObject()) {
+        // Each variant's place is KEY.CODE.
+        for (const detail::LocalTexts::Variant& v : m_texts.variants()) {
+            all.insert(v.place.section(u'.', -1), v.text);
+        }
+    }
+    return true;
+}
+
+bool SceneReader::readColour(const QJsonObject& body, const QString& place, QString& out)
+{
+    if (!body.contains(u"colour")) {
+        return true;
+    }
+    QString text;
+    if (!m_in.string(body, u"colour", place, text)) {
+        return false;
+    }
+    static const QRegularExpression rgb(QStringLiteral("^#[0-9A-Fa-f]{6}$"));
+    if (!rgb.match(text).hasMatch()) {
+        return m_in.fail(joinPlace(place, u"colour"),
+                         FileMessages::tr("must be a colour \"#rrggbb\" (six hexadecimal digits, "
+                                          "as \"#d04030\"), got \"%1\"")
+                             .arg(text.left(kMaxBodyIdLength)));
+    }
+    out = text.toLower();
+    return true;
 }
 
 bool SceneReader::readWorld(const QJsonObject& root)
@@ -195,21 +230,24 @@ bool SceneReader::readBodies(const QJsonObject& root)
     }
     m_scene.bodies.reserve(static_cast<size_t>(bodies.size()));
     m_scene.originalVertices.reserve(static_cast<size_t>(bodies.size()));
+    m_scene.colours.reserve(static_cast<size_t>(bodies.size()));
     for (qsizetype i = 0; i < bodies.size(); ++i) {
         physics::BodyDef def;
         std::vector<Vec2> original;
-        if (!readBody(bodies[i], indexPlace(place, i), def, original)) {
+        QString colour;
+        if (!readBody(bodies[i], indexPlace(place, i), def, original, colour)) {
             return false;
         }
         m_ids.insert(QString::fromStdString(def.name), static_cast<BodyId>(i));
         m_scene.bodies.push_back(std::move(def));
         m_scene.originalVertices.push_back(std::move(original));
+        m_scene.colours.push_back(std::move(colour));
     }
     return true;
 }
 
 bool SceneReader::readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
-                           std::vector<Vec2>& original)
+                           std::vector<Vec2>& original, QString& colour)
 {
     QJsonObject body;
     QString id;
@@ -217,7 +255,7 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
         !m_in.checkKeys(body, place,
                         {u"id", u"type", u"shape", u"position", u"angle", u"velocity",
                          u"angularVelocity", u"density", u"mass", u"restitution", u"friction",
-                         u"collide"}) ||
+                         u"collide", u"colour"}) ||
         !m_in.string(body, u"id", place, id, true)) {
         return false;
     }
@@ -270,7 +308,7 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
                      limits::kRestitution) ||
         !m_in.number(body, u"friction", place, def.friction, NumberRule::NonNegative,
                      limits::kFriction) ||
-        !m_in.boolean(body, u"collide", place, def.collide)) {
+        !m_in.boolean(body, u"collide", place, def.collide) || !readColour(body, place, colour)) {
         return false;
     }
 

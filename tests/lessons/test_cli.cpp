@@ -202,9 +202,9 @@ void TestCli::badInput_data()
         << withBody(R"({"id": "b", "shape": {"type": "circle", "radius": "0.1"}})")
         << "bodies[0].shape.radius: must be a positive number, got \"0.1\"";
     QTest::newRow("unknown-key")
-        << withBody(R"({"id": "b", "colour": "red", "shape": {"type": "circle", "radius": 1}})")
-        << "bodies[0].colour: unknown key (allowed here: id, type, shape, position, angle, "
-           "velocity, angularVelocity, density, mass, restitution, friction, collide)";
+        << withBody(R"({"id": "b", "color": "red", "shape": {"type": "circle", "radius": 1}})")
+        << "bodies[0].color: unknown key (allowed here: id, type, shape, position, angle, "
+           "velocity, angularVelocity, density, mass, restitution, friction, collide, colour)";
     QTest::newRow("negative-mass")
         << withBody(R"({"id": "b", "mass": -1, "shape": {"type": "circle", "radius": 1}})")
         << "bodies[0].mass: must be a positive number, got -1";

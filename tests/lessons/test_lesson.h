@@ -95,6 +95,7 @@ private slots:
     void sceneFileErrorsCarryBothPlaces();
     void inlineSceneErrorsContinueThePlace();
     void everyField();
+    void editorListsDefaultToAll();
     void formatDocumentExampleLoads();
     void textsInBothForms();
     void textsFallBackToEnglish();

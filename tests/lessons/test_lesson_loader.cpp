@@ -6,6 +6,7 @@
 
 #include "format/data_dirs.h"
 #include "format/document.h"
+#include "format/editor_tools.h"
 #include "format/languages.h"
 #include "format/lesson_catalog.h"
 
@@ -309,7 +310,8 @@ void TestLesson::rejectsBadLesson_data()
     QTest::newRow("unknown-key-step")
         << oneStep(R"("colour": "red")")
         << steps0 + "colour: unknown key (allowed here: title, text, scene, settings, compare, "
-                    "plots, overlays, panels, allow, sat, questions, exportTime, autoplay)";
+                    "plots, overlays, panels, allow, sat, editor, questions, exportTime, "
+                    "autoplay)";
     QTest::newRow("scene-missing")
         << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "steps": [{"title": "s"}]})")
         << steps0 + "scene: required, but missing (a scene object, or the path of a scene file)";
@@ -374,6 +376,22 @@ void TestLesson::rejectsBadLesson_data()
         << oneStep(R"("allow": ["mass"])")
         << steps0 + R"(allow[0]: unknown control "mass" (expected integrator, dt, solver, )"
                     "iterations, restitution, friction, gravity, timeScale)";
+    QTest::newRow("unknown-tool")
+        << oneStep(R"("editor": {"tools": ["select", "hammer"]})")
+        << steps0 + R"(editor.tools[1]: unknown tool "hammer" (expected select, rotate, circle, )"
+                    "box, polygon, ground, pin, spring, delete, duplicate)";
+    QTest::newRow("tool-twice") << oneStep(R"("editor": {"tools": ["box", "box"]})")
+                                << steps0 + R"(editor.tools[1]: "box" is listed twice)";
+    QTest::newRow("unknown-property")
+        << oneStep(R"("editor": {"properties": ["colour", "size"]})")
+        << steps0 + R"(editor.properties[1]: unknown property "size" (expected id, type, )"
+                    "density, mass, restitution, friction, velocity, angularVelocity, colour, "
+                    "stiffness, damping, restLength, gravity, dt, integrator, solver, iterations)";
+    QTest::newRow("editor-unknown-key")
+        << oneStep(R"("editor": {"tool": ["box"]})")
+        << steps0 + "editor.tool: unknown key (allowed here: tools, properties)";
+    QTest::newRow("editor-not-object") << oneStep(R"("editor": ["box"])")
+                                       << steps0 + "editor: must be an object {...}, got an array";
     QTest::newRow("sat-panel-without-pair")
         << oneStep(R"("panels": ["sat"])")
         << steps0 +
@@ -521,10 +539,10 @@ void TestLesson::inlineSceneErrorsContinueThePlace()
         path,
         stepWithScene(R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": )"
                       R"({"type": "polygon", "vertices": [[0, 0], [1, 0], [0.2, 0.2], [0, 1]]}}, )"
-                      R"({"id": "c", "colour": 1}]})"));
+                      R"({"id": "c", "color": 1}]})"));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY(!loaded.ok);
-    QVERIFY2(loaded.error.startsWith(path + QStringLiteral(": steps[0].scene.bodies[1].colour: "
+    QVERIFY2(loaded.error.startsWith(path + QStringLiteral(": steps[0].scene.bodies[1].color: "
                                                            "unknown key")),
              qPrintable(loaded.error));
     QCOMPARE(loaded.warnings.size(), 1);
@@ -549,6 +567,7 @@ void TestLesson::everyField()
             R"("compare": {"integrators": ["rk4", "euler"], "offset": [1, -2]}, )"
             R"("plots": ["compare-energy", "momentum"], "overlays": ["trails"], )"
             R"("panels": ["sat", "controls"], "allow": [], "sat": {"a": "box", "b": "wedge"}, )"
+            R"("editor": {"tools": ["select", "box"], "properties": []}, )"
             R"("questions": [{"prompt": "p", "measure": {"kind": "apex", "body": "ball", )"
             R"("n": 3, "above": 0.1}, "unit": "m", "tolerance": 0.1, "absoluteTolerance": 0.01, )"
             R"("hint": "h", "holdBack": ["run", "panel:controls", "plot:momentum"]}, )"
@@ -586,6 +605,9 @@ void TestLesson::everyField()
     QCOMPARE(s.panels, (QStringList{QStringLiteral("sat"), QStringLiteral("controls")}));
     QVERIFY(s.allow && s.allow->isEmpty());
     QCOMPARE(*s.sat, std::pair(QStringLiteral("box"), QStringLiteral("wedge")));
+    QVERIFY(s.editor);
+    QCOMPARE(s.editor->tools, (QStringList{QStringLiteral("select"), QStringLiteral("box")}));
+    QCOMPARE(s.editor->properties, QStringList()); // [] locks them all
     QCOMPARE(s.questions.size(), std::size_t{2});
     const lessons::Question& q = s.questions[0];
     QCOMPARE(q.prompt, QStringLiteral("p"));
@@ -622,6 +644,24 @@ void TestLesson::everyField()
     QVERIFY(d.heldBack({}).isEmpty());
     QCOMPARE(d.exportTime, 10.0);
     QVERIFY(d.autoplay);
+}
+
+void TestLesson::editorListsDefaultToAll()
+{
+    // "editor": {} opens the editor with everything unlocked; no "editor", no editor.
+    const lessons::LessonLoadResult open =
+        lessons::loadLessonJson(oneStep(R"("editor": {})"), QStringLiteral("l.json"));
+    QVERIFY2(open.ok, qPrintable(open.error));
+    const auto& editor = open.lesson.steps[0].editor;
+    QVERIFY(editor);
+    QCOMPARE(editor->tools.size(), qsizetype(lessons::kEditorToolNames.size()));
+    QCOMPARE(editor->properties.size(), qsizetype(lessons::kEditorPropertyNames.size()));
+    QVERIFY(editor->tools.contains(QStringLiteral("duplicate")));
+    QVERIFY(editor->properties.contains(QStringLiteral("iterations")));
+    const lessons::LessonLoadResult none =
+        lessons::loadLessonJson(oneStep(""), QStringLiteral("l.json"));
+    QVERIFY2(none.ok, qPrintable(none.error));
+    QVERIFY(!none.lesson.steps[0].editor);
 }
 
 void TestLesson::formatDocumentExampleLoads()

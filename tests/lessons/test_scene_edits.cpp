@@ -67,6 +67,7 @@ Scene fourBodies()
     scene.springs.push_back({2, Vec2::Zero(), kWorld, Vec2(2.0, 1.0), 30.0, 0.0, 1.0});
     scene.joints.push_back({3, Vec2(-0.5, 0.0), 1, Vec2(1.5, 0.0)});
     scene.joints.push_back({0, Vec2::Zero(), kWorld, Vec2::Zero()});
+    scene.colours = {QString(), QStringLiteral("#ff0000"), QStringLiteral("#00ff00")};
     return scene;
 }
 
@@ -280,6 +281,7 @@ void TestSceneEdits::deleteRenumbersSpringsAndPins()
     QCOMPARE(idOf(out, 1), QStringLiteral("c"));
     QCOMPARE(idOf(out, 2), QStringLiteral("d"));
     QCOMPARE(out.originalVertices.size(), size_t(3));
+    QCOMPARE(out.colourOf(1), QStringLiteral("#00ff00")); // c's colour moved down with it
     // The spring b-d and the pin d-b went with b; a-c is now 0-1, c-world 1-world.
     QCOMPARE(out.springs.size(), size_t(2));
     QCOMPARE(out.springs[0].a, 0);
@@ -330,6 +332,8 @@ void TestSceneEdits::duplicateTakesANewId()
     QVERIFY(r.ok);
     QCOMPARE(idOf(r.scene, 4), QStringLiteral("a1"));
     QCOMPARE(r.scene.springs.size(), named.springs.size()); // springs are not copied
+    r = edit::duplicateBody(named, 1, Vec2(0.0, 1.0));
+    QCOMPARE(r.scene.colourOf(4), QStringLiteral("#ff0000"));
 }
 
 void TestSceneEdits::addsPins()

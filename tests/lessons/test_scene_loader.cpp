@@ -43,9 +43,9 @@ void TestLessons::rejectsBadScene_data()
         << "bodys: unknown key (allowed here: rigidlab, title, description, world, bodies, "
            "springs, joints)";
     QTest::newRow("unknown-key-body")
-        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "colour": "red")")
-        << "bodies[0].colour: unknown key (allowed here: id, type, shape, position, angle, "
-           "velocity, angularVelocity, density, mass, restitution, friction, collide)";
+        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "color": "red")")
+        << "bodies[0].color: unknown key (allowed here: id, type, shape, position, angle, "
+           "velocity, angularVelocity, density, mass, restitution, friction, collide, colour)";
     QTest::newRow("unknown-key-shape")
         << oneBody(R"("shape": {"type": "circle", "radius": 1, "width": 2})")
         << "bodies[0].shape.width: unknown key (allowed here: type, radius)";
@@ -567,4 +567,5 @@ void TestLessons::formatDocumentExampleLoads()
     QCOMPARE(result.scene.springs.size(), size_t{1});
     QCOMPARE(result.scene.joints.size(), size_t{1});
     QCOMPARE(result.scene.world.sleep, std::optional<bool>(true));
+    QCOMPARE(result.scene.colourOf(1), QStringLiteral("#d04030"));
 }

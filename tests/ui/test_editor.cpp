@@ -156,6 +156,7 @@ private slots:
     void warnsOfOverlapsAndHulls();
     void keysNudgeAndTurn();
     void teachersTaskInTheWindow();
+    void lessonLocksTools();
 };
 
 void TestEditor::editModePausesAndRunsAsEdited()
@@ -386,11 +387,16 @@ void TestEditor::teachersTaskInTheWindow()
     w.resize(1600, 1000);
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    w.controller().loadScene(lessons::Scene{}, {});
+    QVERIFY(w.newScene());
     EditTools& tools = w.editTools();
     WorldView& view = w.view();
     tools.editAction()->trigger();
     QVERIFY(tools.editing());
+    // The new scene's ground goes: this floor is drawn below.
+    QCOMPARE(w.document()->scene().bodies.size(), size_t(1));
+    tools.toolAction(EditTool::Delete)->trigger();
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, view.mapFromScene(QPointF(0, -0.25)));
+    QVERIFY(w.document()->scene().bodies.empty());
     const double g = tools.gridStep();
     const QPointF middle = view.mapToScene(view.viewport()->rect().center());
     const Vec2 c(std::round(middle.x() / g) * g, std::round(middle.y() / g) * g);
@@ -462,6 +468,30 @@ void TestEditor::teachersTaskInTheWindow()
     if (!shots.isEmpty()) {
         QVERIFY(w.grab().save(QDir(shots).filePath(QStringLiteral("editor-run.png"))));
     }
+}
+
+void TestEditor::lessonLocksTools()
+{
+    Rig rig;
+    rig.tools.setAllowedTools(QStringList{QStringLiteral("select"), QStringLiteral("circle")});
+    QVERIFY(rig.tools.locked(EditTool::Box));
+    QVERIFY(!rig.tools.locked(EditTool::Circle));
+    QVERIFY(!rig.tools.toolAction(EditTool::Box)->isEnabled());
+    QVERIFY(rig.tools.toolAction(EditTool::Circle)->isEnabled());
+    QVERIFY2(rig.tools.toolAction(EditTool::Box)->toolTip().contains(QStringLiteral("locks")),
+             qPrintable(rig.tools.toolAction(EditTool::Box)->toolTip()));
+    // The locked tool's key is refused out loud; the tool in use stays.
+    rig.view.setFocus();
+    QTest::keyClick(&rig.view, Qt::Key_X);
+    QCOMPARE(rig.tools.tool(), EditTool::Select);
+    QVERIFY2(rig.tools.lastMessage().contains(QStringLiteral("locks the Box tool")),
+             qPrintable(rig.tools.lastMessage()));
+    rig.tools.setTool(EditTool::Spring);
+    QCOMPARE(rig.tools.tool(), EditTool::Select);
+    rig.use(EditTool::Circle);
+    QCOMPARE(rig.tools.tool(), EditTool::Circle);
+    rig.tools.setAllowedTools(std::nullopt);
+    QVERIFY(rig.tools.toolAction(EditTool::Box)->isEnabled());
 }
 
 RIGIDLAB_TEST_MAIN(TestEditor)

@@ -5,6 +5,7 @@
 #include "editor/scene_document.h"
 
 #include "edit/scene_edits.h"
+#include "format/editor_tools.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
@@ -150,9 +151,24 @@ EditTools::EditTools(WorldView& view, SimulationController& simulation, SceneDoc
     m_view.scene()->addItem(m_overlay);
 
     connect(&m_document, &SceneDocument::sceneChanged, this, [this] {
-        if (m_editing) {
+        if (m_editing && m_reloadsWorld) {
             reloadWorld();
         }
+    });
+    // A world loaded by someone else while editing (the window's own reload after an edit):
+    // the view lost its selection with its items; it comes back.
+    connect(&m_simulation, &SimulationController::sceneLoaded, this, [this] {
+        if (!m_editing || m_reloading) {
+            return;
+        }
+        if (m_selected >= static_cast<int>(m_document.scene().bodies.size())) {
+            m_selected = -1;
+        }
+        if (m_selectedSpring >= static_cast<int>(m_document.scene().springs.size())) {
+            m_selectedSpring = -1;
+        }
+        m_view.selectBody(m_selected);
+        refreshOverlay();
     });
     // Run (Space) while editing leaves Edit mode and runs the scene as edited.
     connect(&m_simulation, &SimulationController::runningChanged, this, [this](bool running) {
@@ -185,13 +201,15 @@ void EditTools::setEditing(bool on)
     }
     m_editing = on;
     m_editAction->setChecked(on);
-    for (QAction* a : m_toolActions) {
-        a->setEnabled(on);
+    for (size_t i = 0; i < m_toolActions.size(); ++i) {
+        m_toolActions[i]->setEnabled(on && !locked(static_cast<EditTool>(i)));
     }
     m_snapAction->setEnabled(on);
     m_deleteSelection->setEnabled(on);
     cancelGesture();
     m_overlay->setVisible(on);
+    // The view holds still under the pen while the world is rebuilt after each edit.
+    m_view.setFitOnRebuild(!on);
     if (on) {
         m_view.installEventFilter(this);
         m_view.viewport()->installEventFilter(this);
@@ -211,8 +229,45 @@ void EditTools::setEditing(bool on)
     emit editingChanged(on);
 }
 
+void EditTools::setAllowedTools(const std::optional<QStringList>& names)
+{
+    m_allowedTools = names;
+    for (size_t i = 0; i < kTools.size(); ++i) {
+        const auto tool = static_cast<EditTool>(i);
+        QAction* action = m_toolActions[i];
+        action->setEnabled(m_editing && !locked(tool));
+        action->setToolTip(locked(tool)
+                               ? tr("This lesson step locks the %1 tool").arg(tr(kTools[i].text))
+                               : QStringLiteral("%1 (%2)").arg(tr(kTools[i].tip),
+                                                               controlKeysText(kTools[i].name)));
+    }
+    if (locked(m_tool)) {
+        for (size_t i = 0; i < kTools.size(); ++i) {
+            if (!locked(static_cast<EditTool>(i))) {
+                setTool(static_cast<EditTool>(i));
+                break;
+            }
+        }
+    }
+}
+
+bool EditTools::locked(EditTool tool) const
+{
+    const auto i = static_cast<size_t>(tool);
+    static_assert(lessons::kEditorToolNames.size() == kTools.size());
+    const std::string_view name = lessons::kEditorToolNames[i];
+    return m_allowedTools && !m_allowedTools->contains(
+                                 QLatin1String(name.data(), static_cast<qsizetype>(name.size())));
+}
+
 void EditTools::setTool(EditTool tool)
 {
+    if (locked(tool)) {
+        say(tr("This lesson step locks the %1 tool")
+                .arg(tr(kTools[static_cast<size_t>(tool)].text)));
+        m_toolActions[static_cast<size_t>(m_tool)]->setChecked(true);
+        return;
+    }
     cancelGesture();
     m_tool = tool;
     m_toolActions[static_cast<size_t>(tool)]->setChecked(true);
@@ -371,6 +426,14 @@ bool EditTools::wantsKey(const QKeyEvent* event) const
 
 bool EditTools::keyPress(QKeyEvent* event)
 {
+    // A locked tool's key (its action is disabled, so no shortcut takes it): said, not ignored.
+    const QKeySequence pressed(event->keyCombination());
+    for (size_t i = 0; i < kTools.size(); ++i) {
+        if (locked(static_cast<EditTool>(i)) && m_toolActions[i]->shortcuts().contains(pressed)) {
+            setTool(static_cast<EditTool>(i));
+            return true;
+        }
+    }
     if (!wantsKey(event)) {
         return false;
     }
@@ -743,11 +806,9 @@ QString EditTools::metres(double v) const
 void EditTools::reloadWorld()
 {
     const int selected = m_selected;
-    m_view.setFitOnRebuild(false);
     m_reloading = true;
     m_simulation.loadScene(m_document.scene(), m_document.path());
     m_reloading = false;
-    m_view.setFitOnRebuild(true);
     if (selected >= 0 && selected < static_cast<int>(m_document.scene().bodies.size())) {
         m_selected = selected;
         m_view.selectBody(selected);

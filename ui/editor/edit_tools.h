@@ -15,6 +15,7 @@
 #include <QObject>
 #include <QPoint>
 #include <QString>
+#include <QStringList>
 
 #include <array>
 #include <optional>
@@ -76,6 +77,16 @@ public:
     int selectedSpring() const { return m_selectedSpring; }
     /// The grid's step now [m]: a round number about kGridPixels wide at this zoom.
     double gridStep() const;
+    /// A lesson step's lock: only the tools named (lessons::kEditorToolNames) may be used, the
+    /// others are disabled, say so in their tooltip, and their keys are refused with a message;
+    /// nullopt unlocks every tool.
+    void setAllowedTools(const std::optional<QStringList>& names);
+    /// Whether a lesson step locks this tool.
+    bool locked(EditTool tool) const;
+
+    /// Whether the editor reloads the simulation from the document after each change (the
+    /// default). A window that does so itself for every change turns it off.
+    void setReloadsWorld(bool on) { m_reloadsWorld = on; }
     /// Whether the editor is reloading the simulation from its document just now (a window
     /// that follows every scene loaded into the simulation leaves these alone).
     bool reloading() const { return m_reloading; }
@@ -163,6 +174,8 @@ private:
     QAction* m_deleteSelection = nullptr;
     bool m_editing = false;
     bool m_reloading = false;
+    bool m_reloadsWorld = true;
+    std::optional<QStringList> m_allowedTools; ///< see setAllowedTools
     EditTool m_tool = EditTool::Select;
     int m_selected = -1;
     int m_selectedSpring = -1;

@@ -85,7 +85,7 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     connect(m_start, &QPushButton::clicked, this, [this] {
         const QString error = openLesson(firstLessonPath());
         const ModalScope modal;
-        if (!error.isEmpty())
+        if (!error.isEmpty() && !m_openCancelled)
             QMessageBox::warning(this, tr("Cannot open lesson"), error);
     });
     layout->addWidget(m_start);
@@ -143,7 +143,7 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
             return closeLesson();
         const QString error = openLesson(path);
         const ModalScope modal;
-        if (!error.isEmpty())
+        if (!error.isEmpty() && !m_openCancelled)
             QMessageBox::warning(this, tr("Cannot open lesson"), error);
     });
     showStep();
@@ -187,6 +187,9 @@ QString LessonPlayer::firstLessonPath() const
 
 QString LessonPlayer::openLesson(const QString& path)
 {
+    m_openCancelled = m_leaveGuard && !m_leaveGuard();
+    if (m_openCancelled)
+        return tr("The lesson was not opened: the edited scene stays.");
     // In the language the app chose (lessons::setLessonLanguage; English until it does).
     lessons::LessonLoadResult r =
         lessons::loadLessonFile(path, lessons::LessonLoadOptions{lessons::lessonLanguage()});

@@ -9,6 +9,8 @@
 
 #include <QWidget>
 
+#include <functional>
+
 #include <memory>
 #include <optional>
 #include <vector>
@@ -42,7 +44,13 @@ public:
     /// user's own, lessons::allLessonsInOrder).
     void listLessons(const std::vector<lessons::LessonEntry>& entries);
     /// Opens a lesson; its first step is activated. Returns the error, empty on success.
+    /// The leave guard is asked first (unsaved edits of the scene); when it says no, nothing
+    /// changes, the text says so and openCancelled() is true until the next call.
     QString openLesson(const QString& path);
+    /// Asked before a lesson replaces the scene: true to go on (the window asks about unsaved
+    /// changes). Unset: always on.
+    void setLeaveGuard(std::function<bool()> guard) { m_leaveGuard = std::move(guard); }
+    bool openCancelled() const { return m_openCancelled; }
     const lessons::Lesson* lesson() const { return m_lesson.get(); }
     int stepIndex() const { return m_step; }
     QStringList lessonPaths() const { return m_paths; }
@@ -123,6 +131,8 @@ private:
         std::optional<double> ahead; ///< measured without a window, once aheadDone
     };
     std::vector<QuestionRow> m_rows;
+    std::function<bool()> m_leaveGuard;
+    bool m_openCancelled = false; ///< the last openLesson() was declined by the leave guard
 };
 
 } // namespace rigidlab::ui

@@ -80,9 +80,10 @@ void WorldView::rebuild()
                          : b.type == physics::BodyType::Kinematic ? 2
                                                                   : 0;
         // When worlds are compared, each has one colour, the same as its plot curve.
-        const QColor fill = kind == 1   ? QColor(Qt::gray)
-                            : comparing ? plotColor(0)
-                                        : bodyColor(colour++);
+        QColor fill = kind == 1 ? QColor(Qt::gray) : comparing ? plotColor(0) : bodyColor(colour++);
+        // The scene's own colour for the body, where it gives one ("colour": "#rrggbb").
+        if (const QString own = m_controller.scene().colourOf(i); !own.isEmpty() && !comparing)
+            fill = QColor::fromString(own);
         auto* item = new BodyItem(static_cast<int>(i), b.shape, kind, fill);
         item->setAntialiased(bodies.size() < kManyBodies);
         item->setMinimumRadius(minimumBodyRadius());

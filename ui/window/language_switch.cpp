@@ -2,6 +2,7 @@
 #include "window/language_switch.h"
 
 #include "common/language.h"
+#include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
@@ -11,6 +12,7 @@
 #include <QApplication>
 #include <QMenu>
 #include <QPointer>
+#include <QUndoStack>
 
 namespace rigidlab::ui {
 
@@ -22,7 +24,12 @@ WindowState captureState(MainWindow& window)
         state.lessonPath = lesson->path;
         state.lessonStep = window.lessonPlayer().stepIndex();
     } else {
-        state.scenePath = controller.scenePath();
+        state.scenePath = window.document()->path();
+        if (window.document()->isModified() || !window.documentIsFile()) {
+            state.editedScene = window.document()->scene();
+            state.editedIsFile = window.documentIsFile();
+            state.editedModified = window.document()->isModified();
+        }
     }
     state.steps = controller.currentStep();
     state.running = controller.isRunning();
@@ -38,6 +45,9 @@ QString restoreState(MainWindow& window, const WindowState& state)
         error = window.openLesson(state.lessonPath, true);
         if (error.isEmpty() && state.lessonStep > 0)
             window.lessonPlayer().goToStep(state.lessonStep);
+    } else if (state.editedScene) {
+        window.adoptDocument(*state.editedScene, state.scenePath, state.editedIsFile,
+                             state.editedModified);
     } else if (!state.scenePath.isEmpty()) {
         error = window.openScene(state.scenePath, true);
     }
@@ -92,6 +102,8 @@ MainWindow* switchLanguage(MainWindow* old, const QString& code)
     const bool quitOnClose = QGuiApplication::quitOnLastWindowClosed();
     QGuiApplication::setQuitOnLastWindowClosed(false);
     const bool wasVisible = old->isVisible();
+    // Its edits go to the new window (captureState): nothing to ask about as it closes.
+    old->document()->undoStack()->setClean();
     old->close();
     old->deleteLater();
     applyLanguage(code);

@@ -5,8 +5,12 @@
 // retranslated in place: every text is then made by the code that makes it in the first
 // place, so no widget can be left half in the old language.
 
+#include "format/scene.h"
+
 #include <QByteArray>
 #include <QString>
+
+#include <optional>
 
 class QMenu;
 
@@ -16,9 +20,14 @@ class MainWindow;
 
 /// What a window shows that a new window should show too.
 struct WindowState {
-    QString lessonPath;  ///< the open lesson, empty when none is
-    int lessonStep = 0;  ///< its step, 0 = the first
-    QString scenePath;   ///< the open scene when no lesson is
+    QString lessonPath; ///< the open lesson, empty when none is
+    int lessonStep = 0; ///< its step, 0 = the first
+    QString scenePath;  ///< the open scene when no lesson is
+    /// The scene as edited, when no lesson is open and it is not the file as saved (a new
+    /// scene, or unsaved edits): carried over so that switching loses no edit.
+    std::optional<lessons::Scene> editedScene;
+    bool editedIsFile = false;   ///< scenePath is the edited scene's own file (Save writes there)
+    bool editedModified = false; ///< with edits not saved
     long long steps = 0; ///< the world's steps since its start (replayed: the run is deterministic)
     bool running = false; ///< the clock was running
     bool presentation = false;

@@ -7,6 +7,7 @@
 
 #include "common/export_folder.h"
 #include "common/modal_scope.h"
+#include "editor/scene_document.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/control_panel.h"
@@ -25,6 +26,7 @@
 #include <QAction>
 #include <QCloseEvent>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
@@ -34,7 +36,8 @@ namespace rigidlab::ui {
 
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_controller(new SimulationController(this)),
-      m_view(new WorldView(*m_controller, this)), m_controls(new ControlPanel(*m_controller, this)),
+      m_document(new SceneDocument(this)), m_view(new WorldView(*m_controller, this)),
+      m_controls(new ControlPanel(*m_controller, this)),
       m_inspector(new InspectorPanel(*m_controller, this)),
       m_player(new LessonPlayer(*m_controller, this)), m_sat(new SatPanel(*m_controller, this)),
       m_bounces(new BouncePanel(*m_controller, this)),
@@ -91,6 +94,22 @@ MainWindow::MainWindow(QWidget* parent)
         if (!m_inLesson) // in a lesson, its title and step stay (applyLessonStep)
             showSceneTitle();
     });
+    // Every change to the document (an edit, undo, redo, opening) rebuilds the world from it,
+    // so Run starts from the scene as edited and Reset returns to it. A lesson step loads its
+    // worlds itself (compared worlds too) when it starts the document over.
+    connect(m_document, &SceneDocument::sceneChanged, this, [this] {
+        if (!m_lessonLoading)
+            m_controller->loadScene(m_document->scene(), m_document->path());
+    });
+    connect(m_document, &SceneDocument::modifiedChanged, this, [this](bool modified) {
+        if (windowTitle().contains(QLatin1String("[*]")))
+            setWindowModified(modified);
+    });
+    connect(m_document, &SceneDocument::pathChanged, this, [this] {
+        if (!m_inLesson)
+            showSceneTitle();
+    });
+    m_player->setLeaveGuard([this] { return confirmLeaveScene(); });
     for (PlotWidget* plot : m_plots)
         followController(plot);
     restoreSettings();
@@ -101,8 +120,16 @@ MainWindow::~MainWindow() = default;
 
 void MainWindow::showSceneTitle()
 {
+    // The scene's title and its file; "*" (the [*] placeholder) while it has unsaved edits.
     const QString title = m_controller->scene().title;
-    setWindowTitle(title.isEmpty() ? tr("RigidLab") : tr("%1 — RigidLab").arg(title));
+    const QString file = QFileInfo(m_document->path()).fileName();
+    if (file.isEmpty())
+        setWindowTitle(title.isEmpty() ? tr("RigidLab[*]") : tr("%1[*] — RigidLab").arg(title));
+    else if (title.isEmpty())
+        setWindowTitle(tr("%1[*] — RigidLab").arg(file));
+    else
+        setWindowTitle(tr("%1 (%2)[*] — RigidLab").arg(title, file));
+    setWindowModified(m_document->isModified());
 }
 
 void MainWindow::followController(PlotWidget* plot)
@@ -156,6 +183,10 @@ void MainWindow::closeEvent(QCloseEvent* event)
                 close();
             });
         }
+        return;
+    }
+    if (!confirmLeaveScene()) { // unsaved edits: Save, Discard or Cancel
+        event->ignore();
         return;
     }
     m_controller->setRunning(false);

@@ -13,6 +13,7 @@
 #include <QString>
 
 #include <array>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -25,7 +26,8 @@ class QSlider;
 
 namespace rigidlab::lessons {
 struct Lesson;
-}
+struct Scene;
+} // namespace rigidlab::lessons
 
 namespace rigidlab::ui {
 
@@ -50,6 +52,35 @@ public:
     /// Opens a scene file. On an error the current scene stays and the message is shown
     /// (in a dialog unless `quiet`); returns the error, empty on success.
     QString openScene(const QString& path, bool quiet = false);
+    /// File › New scene: an empty scene with the default world and a ground. False when the
+    /// question about unsaved changes was cancelled (nothing changes then).
+    bool newScene();
+    /// File › Save: writes the scene to its file; a scene with none (a new one, a lesson's) or
+    /// a shipped one goes to Save As. True when written; on failure the writer's message is
+    /// shown and lastError() holds it (main_window_save.cpp).
+    bool saveScene();
+    /// File › Save As: asks for a file (starting in the user's scenes folder) and writes there.
+    /// A shipped scene is never overwritten. True when written.
+    bool saveSceneAs();
+    /// Where the scene has unsaved edits, asks whether to save them (Save / Discard / Cancel):
+    /// true to go on (saved or discarded), false to stay (cancelled, or the save failed).
+    bool confirmLeaveScene();
+    /// The file Save As writes to, given the suggested path; empty to cancel. Unset: a file
+    /// dialog. (Tests answer without a dialog.)
+    using SavePathAsker = std::function<QString(const QString& suggested)>;
+    void setSavePathAsker(SavePathAsker asker) { m_savePathAsker = std::move(asker); }
+    /// The answer to the unsaved-changes question: QMessageBox::Save, Discard or Cancel.
+    /// Unset: a message box.
+    using UnsavedAsker = std::function<int()>;
+    void setUnsavedAsker(UnsavedAsker asker) { m_unsavedAsker = std::move(asker); }
+    /// Whether the document is a scene file of its own, which Save writes to (not a new scene
+    /// nor a lesson's).
+    bool documentIsFile() const { return m_documentIsFile; }
+    /// Takes over the scene another window was editing (a language switch): `edited`, which
+    /// belongs to the file at `path` when `isFile`, `modified` if it has unsaved edits (then
+    /// undoing goes back to the file as saved, or to the scene as it was).
+    void adoptDocument(const lessons::Scene& edited, const QString& path, bool isFile,
+                       bool modified);
     /// Folder with the shipped scenes.
     static QString scenesFolder();
     /// Folder with the shipped lessons.
@@ -74,6 +105,9 @@ public:
     QStringList exportStepPlots(const QString& folder);
 
     SimulationController& controller() { return *m_controller; }
+    /// The scene as edited (ui/editor): opening a scene or a lesson step starts it over; every
+    /// change to it reloads the world, so Run and Reset start from the scene as edited.
+    SceneDocument* document() const { return m_document; }
     WorldView& view() { return *m_view; }
     ControlPanel& controls() { return *m_controls; }
     InspectorPanel& inspector() { return *m_inspector; }
@@ -137,6 +171,11 @@ private:
     /// The scene editor's document, tools and toolbar (main_window_editor.cpp).
     void buildEditor();
     void addRecent(const QString& path);
+    /// File › Your own scenes, made when the user's scenes folder holds any, remade after a
+    /// save (main_window_save.cpp).
+    void rebuildOwnScenesMenu();
+    /// Writes the document to `path`: true when written, else the reason is shown.
+    bool writeDocument(const QString& path);
     void rebuildRecentMenu();
     void exportPlotDialog(PlotWidget* plot, const QString& format);
     void restoreSettings();
@@ -151,6 +190,9 @@ private:
     void restoreLayout(const QSettings& settings);
 
     SimulationController* m_controller;
+    SceneDocument* m_document;
+    /// A lesson step is starting the document over: it loads its own worlds (compared ones too).
+    bool m_lessonLoading = false;
     WorldView* m_view;
     ControlPanel* m_controls;
     InspectorPanel* m_inspector;
@@ -176,6 +218,17 @@ private:
     QMenu* m_recentMenu = nullptr;
     QMenu* m_scenesMenu = nullptr;
     QMenu* m_viewMenu = nullptr;
+    QMenu* m_editMenu = nullptr;
+    QMenu* m_fileMenu = nullptr;
+    QMenu* m_ownScenesMenu = nullptr;     ///< File › Your own scenes, when there are any
+    QAction* m_ownScenesBefore = nullptr; ///< the File menu entry it goes before
+    /// The document is a scene file of its own (opened or saved): Save writes to its path.
+    /// A new scene and a lesson's scene (its path is the lesson's) go to Save As.
+    bool m_documentIsFile = false;
+    SavePathAsker m_savePathAsker;
+    UnsavedAsker m_unsavedAsker;
+    QAction* m_undoAction = nullptr;
+    QAction* m_redoAction = nullptr;
     QAction* m_playAction = nullptr;
     QAction* m_stepAction = nullptr;
     QAction* m_backAction = nullptr;
@@ -199,8 +252,7 @@ private:
     QPalette m_normalPalette;
     QAction* m_presentAction = nullptr;
 
-    // The scene editor (main_window_editor.cpp).
-    SceneDocument* m_editDocument = nullptr;
+    // The scene editor's tools (main_window_editor.cpp).
     EditTools* m_editTools = nullptr;
 };
 

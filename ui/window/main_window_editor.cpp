@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// MainWindow's scene editor (issue 15): the edited scene, Edit mode and its tools on a toolbar
-// of their own, their messages in the status bar.
+// MainWindow's scene editor (issue 15): Edit mode and its tools on a toolbar of their own,
+// their messages in the status bar, the selection's properties in a dock. (The document, its
+// files and its history: main_window.cpp, main_window_save.cpp.)
 #include "window/main_window.h"
 
 #include "editor/edit_tools.h"
@@ -18,15 +19,8 @@ namespace rigidlab::ui {
 
 void MainWindow::buildEditor()
 {
-    m_editDocument = new SceneDocument(this);
-    m_editTools = new EditTools(*m_view, *m_controller, *m_editDocument, this);
-    // The document edits the scene shown: every scene loaded from elsewhere (a file, a lesson
-    // step) starts it afresh; the editor's own reloads are its document already.
-    connect(m_controller, &SimulationController::sceneLoaded, this, [this] {
-        if (!m_editTools->reloading()) {
-            m_editDocument->reset(m_controller->scene(), m_controller->scenePath());
-        }
-    });
+    m_editTools = new EditTools(*m_view, *m_controller, *m_document, this);
+    m_editTools->setReloadsWorld(false); // the window reloads it after every change already
     connect(m_editTools, &EditTools::message, this, [this](const QString& text) {
         if (text.isEmpty()) {
             statusBar()->clearMessage();
@@ -53,7 +47,7 @@ void MainWindow::buildEditor()
     addAction(m_editTools->deleteSelectionAction());
 
     // The selection's properties, beside the inspector, shown in Edit mode.
-    auto* properties = new SceneProperties(*m_editTools, *m_editDocument, this);
+    auto* properties = new SceneProperties(*m_editTools, *m_document, this);
     connect(properties, &SceneProperties::refused, this,
             [this](const QString& why) { statusBar()->showMessage(why, 10000); });
     auto* scroll = new QScrollArea(this);

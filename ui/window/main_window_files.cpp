@@ -4,6 +4,7 @@
 
 #include "common/export_folder.h"
 #include "common/modal_scope.h"
+#include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
@@ -42,10 +43,16 @@ QString MainWindow::openScene(const QString& path, bool quiet)
         }
         return r.error;
     }
+    if (!confirmLeaveScene()) {
+        m_lastError = tr("%1 was not opened: the edited scene stays.").arg(path);
+        return m_lastError;
+    }
     m_lastError.clear();
     if (m_inLesson)
         m_player->closeLesson(); // a scene of one's own ends the lesson
-    m_controller->loadScene(r.scene, path);
+    m_documentIsFile = true;
+    // Which loads the world (the document's sceneChanged, MainWindow::MainWindow).
+    m_document->reset(r.scene, path);
     for (const QString& w : r.warnings)
         statusBar()->showMessage(w, 8000);
     m_lastFolder = QFileInfo(path).absolutePath();

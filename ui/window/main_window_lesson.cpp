@@ -5,6 +5,8 @@
 
 #include "common/display_names.h"
 #include "common/modal_scope.h"
+#include "editor/edit_tools.h"
+#include "editor/scene_document.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/control_panel.h"
@@ -54,9 +56,9 @@ void raiseFirst(const QMap<QString, QDockWidget*>& named, QList<QDockWidget*> do
 
 QString MainWindow::openLesson(const QString& path, bool quiet)
 {
-    const QString error = m_player->openLesson(path);
+    const QString error = m_player->openLesson(path); // asks about unsaved edits first
     m_lastError = error;
-    if (!error.isEmpty() && !quiet) {
+    if (!error.isEmpty() && !quiet && !m_player->openCancelled()) {
         auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot open lesson"), error,
                                     QMessageBox::Ok, this);
         box->setAttribute(Qt::WA_DeleteOnClose);
@@ -87,12 +89,19 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
 
     // The step's worlds: the main one, then those compared beside it.
     std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
+    const QString scenePath = step.scenePath.isEmpty() ? lesson.path : step.scenePath;
+    // The step's scene is the document now; the step loads its worlds itself, just below.
+    m_lessonLoading = true;
+    m_documentIsFile = false; // its path is the lesson's or a shipped scene's: Save asks where
+    m_document->reset(step.scene, scenePath);
+    m_lessonLoading = false;
+    // A step may open the editor with some tools only (its "editor" key).
+    m_editTools->setAllowedTools(step.editor ? std::optional(step.editor->tools) : std::nullopt);
     QStringList labels;
     if (step.compare && step.compare->count() > 1)
         for (int i = 0; i < step.compare->count(); ++i)
             labels << methodDisplayName(step.compare->label(i));
-    m_controller->loadWorlds(step.scene, step.scenePath.isEmpty() ? lesson.path : step.scenePath,
-                             std::move(worlds), labels,
+    m_controller->loadWorlds(step.scene, scenePath, std::move(worlds), labels,
                              step.compare ? step.compare->offset : physics::Vec2::Zero());
     if (step.settings.timeScale)
         m_controller->setTimeScale(*step.settings.timeScale);
@@ -197,6 +206,7 @@ void MainWindow::leaveLesson()
     if (!m_inLesson)
         return;
     m_inLesson = false;
+    m_editTools->setAllowedTools(std::nullopt);
     showSceneTitle();
     // Back to the plain lab: controls, inspector and the three plots.
     for (auto it = m_docks.cbegin(); it != m_docks.cend(); ++it) {

@@ -3,6 +3,7 @@
 #include "window/main_window.h"
 
 #include "common/modal_scope.h"
+#include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
@@ -26,6 +27,7 @@
 #include <QSlider>
 #include <QStyle>
 #include <QToolBar>
+#include <QUndoStack>
 
 #include <cmath>
 #include <utility>
@@ -129,6 +131,10 @@ void MainWindow::buildActions()
 void MainWindow::buildMenus()
 {
     QMenu* file = menuBar()->addMenu(tr("&File"));
+    m_fileMenu = file;
+    QAction* newAction = file->addAction(tr("&New scene"), this, &MainWindow::newScene);
+    newAction->setObjectName(QStringLiteral("newScene"));
+    newAction->setShortcuts(controlKeys("newScene"));
     QAction* open = file->addAction(tr("&Open scene…"), this, &MainWindow::openDialog);
     open->setObjectName(QStringLiteral("openScene"));
     open->setShortcuts(controlKeys("openScene"));
@@ -148,14 +154,16 @@ void MainWindow::buildMenus()
     m_scenesMenu = file->addMenu(tr("&Shipped scenes"));
     for (const lessons::SceneEntry& scene : lessons::scenesIn(scenesFolder(), false))
         m_scenesMenu->addAction(scene.title, this, [this, p = scene.path] { openScene(p); });
-    // The user's own scenes (lessons::userScenesDir()), when there are any.
-    const std::vector<lessons::SceneEntry> own = lessons::scenesIn(lessons::userScenesDir(), true);
-    if (!own.empty()) {
-        QMenu* ownMenu = file->addMenu(tr("&Your own scenes"));
-        ownMenu->setObjectName(QStringLiteral("ownScenes"));
-        for (const lessons::SceneEntry& scene : own)
-            ownMenu->addAction(scene.title, this, [this, p = scene.path] { openScene(p); });
-    }
+    // The user's own scenes (lessons::userScenesDir()) go here when there are any.
+    m_ownScenesBefore = file->addSeparator();
+    QAction* save = file->addAction(tr("&Save"), this, &MainWindow::saveScene);
+    save->setObjectName(QStringLiteral("saveScene"));
+    save->setShortcuts(controlKeys("saveScene"));
+    QAction* saveAs = file->addAction(tr("Save &as…"), this, &MainWindow::saveSceneAs);
+    saveAs->setObjectName(QStringLiteral("saveSceneAs"));
+    saveAs->setShortcuts(controlKeys("saveSceneAs"));
+    file->addSeparator();
+    rebuildOwnScenesMenu();
     QMenu* exportMenu = file->addMenu(tr("&Export plot"));
     for (int i = 0; i < kPlotCount; ++i) {
         QMenu* sub = exportMenu->addMenu(tr(kPlotNames[static_cast<size_t>(i)].title));
@@ -169,6 +177,18 @@ void MainWindow::buildMenus()
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setObjectName(QStringLiteral("quit"));
     quit->setShortcuts(controlKeys("quit"));
+
+    // Edit: undo and redo of the scene's edits (the editor's tools add theirs here).
+    m_editMenu = menuBar()->addMenu(tr("&Edit"));
+    m_editMenu->setObjectName(QStringLiteral("editMenu"));
+    m_undoAction = m_document->undoStack()->createUndoAction(this, tr("&Undo"));
+    m_undoAction->setObjectName(QStringLiteral("undo"));
+    m_undoAction->setShortcuts(controlKeys("undo"));
+    m_redoAction = m_document->undoStack()->createRedoAction(this, tr("&Redo"));
+    m_redoAction->setObjectName(QStringLiteral("redo"));
+    m_redoAction->setShortcuts(controlKeys("redo"));
+    m_editMenu->addAction(m_undoAction);
+    m_editMenu->addAction(m_redoAction);
 
     QMenu* sim = menuBar()->addMenu(tr("&Simulation"));
     for (QAction* a : {m_playAction, m_stepAction, m_backAction, m_resetAction})
