@@ -210,6 +210,58 @@
         <translation>Vrátit se k&#xa0;libovolnému dřívějšímu okamžiku běhu</translation>
     </message>
     <message>
+        <source>Edit mode on or off: draw the scene; leaving it runs the scene as edited</source>
+        <translation>Režim úprav zapnout nebo vypnout: kreslit scénu; po jeho opuštění se spustí upravená scéna</translation>
+    </message>
+    <message>
+        <source>Edit: select and move bodies (arrows nudge)</source>
+        <translation>Úpravy: vybírat a&#xa0;posouvat tělesa (šipky posunou o&#xa0;kousek)</translation>
+    </message>
+    <message>
+        <source>Edit: turn a body by dragging (Q, E by 5°)</source>
+        <translation>Úpravy: otáčet tělesem tažením (Q, E o&#xa0;5°)</translation>
+    </message>
+    <message>
+        <source>Edit: draw a circle from its centre</source>
+        <translation>Úpravy: kreslit kruh od středu</translation>
+    </message>
+    <message>
+        <source>Edit: draw a box</source>
+        <translation>Úpravy: kreslit obdélník</translation>
+    </message>
+    <message>
+        <source>Edit: draw a polygon (Enter closes it)</source>
+        <translation>Úpravy: kreslit mnohoúhelník (Enter ho uzavře)</translation>
+    </message>
+    <message>
+        <source>Edit: draw static ground or a wall</source>
+        <translation>Úpravy: kreslit statickou podložku nebo stěnu</translation>
+    </message>
+    <message>
+        <source>Edit: pin a body to another or to the world</source>
+        <translation>Úpravy: připojit těleso čepem k&#xa0;jinému tělesu nebo k&#xa0;okolí</translation>
+    </message>
+    <message>
+        <source>Edit: draw a spring</source>
+        <translation>Úpravy: kreslit pružinu</translation>
+    </message>
+    <message>
+        <source>Edit: click bodies to delete them</source>
+        <translation>Úpravy: kliknutím tělesa smazat</translation>
+    </message>
+    <message>
+        <source>Edit: click bodies to duplicate them</source>
+        <translation>Úpravy: kliknutím tělesa duplikovat</translation>
+    </message>
+    <message>
+        <source>Edit: snap to the grid and to corners, on or off</source>
+        <translation>Úpravy: přichytávání k&#xa0;mřížce a&#xa0;k&#xa0;rohům zapnout nebo vypnout</translation>
+    </message>
+    <message>
+        <source>Edit: delete the selected body</source>
+        <translation>Úpravy: smazat vybrané těleso</translation>
+    </message>
+    <message>
         <source>Undo the last edit of the scene</source>
         <translation>Vrátit poslední úpravu scény</translation>
     </message>
@@ -283,6 +335,57 @@
     <message>
         <source>stopped at t = %1 s: %2</source>
         <translation>zastaveno v&#xa0;čase t = %1&#xa0;s: %2</translation>
+    </message>
+</context>
+<context>
+    <name>EditMessages</name>
+    <message>
+        <source>there is no body number %1</source>
+        <translation>těleso číslo %1 neexistuje</translation>
+    </message>
+    <message>
+        <source>the scene holds %1 bodies, the most a scene may have</source>
+        <translation>scéna má %1 těles, víc jich mít nemůže</translation>
+    </message>
+    <message>
+        <source>a point is not a number</source>
+        <translation>bod není číslo</translation>
+    </message>
+    <message>
+        <source>there is no spring number %1</source>
+        <translation>pružina číslo %1 neexistuje</translation>
+    </message>
+    <message>
+        <source>there is no pin number %1</source>
+        <translation>čep číslo %1 neexistuje</translation>
+    </message>
+    <message>
+        <source>a pin holds a body: start on a body, then click a second body or empty space for the world</source>
+        <translation>čep drží těleso: začněte na tělese, pak klikněte na druhé těleso nebo na prázdné místo pro okolí</translation>
+    </message>
+    <message>
+        <source>the scene holds %1 joints, the most a scene may have</source>
+        <translation>scéna má %1 kloubů, víc jich mít nemůže</translation>
+    </message>
+    <message>
+        <source>a spring of zero length: drag from one point to another</source>
+        <translation>pružina nulové délky: táhněte od jednoho bodu k&#xa0;druhému</translation>
+    </message>
+    <message>
+        <source>the scene holds %1 springs, the most a scene may have</source>
+        <translation>scéna má %1 pružin, víc jich mít nemůže</translation>
+    </message>
+    <message>
+        <source>must be a whole number</source>
+        <translation>musí být celé číslo</translation>
+    </message>
+    <message>
+        <source>%1 overlaps %2</source>
+        <translation>%1 se překrývá s&#xa0;%2</translation>
+    </message>
+    <message>
+        <source>%1; overlapping bodies are pushed apart when the scene runs</source>
+        <translation>%1; překrývající se tělesa se po spuštění scény od sebe odtlačí</translation>
     </message>
 </context>
 <context>
@@ -1215,6 +1318,209 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::EditTools</name>
+    <message>
+        <source>Select</source>
+        <translation>Výběr</translation>
+    </message>
+    <message>
+        <source>Select and move bodies; arrow keys nudge</source>
+        <translation>Vybírat a&#xa0;posouvat tělesa; šipky posunou o&#xa0;kousek</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Otočení</translation>
+    </message>
+    <message>
+        <source>Turn a body by dragging; Q and E turn by 5°</source>
+        <translation>Otáčet tělesem tažením; Q a&#xa0;E otočí o&#xa0;5°</translation>
+    </message>
+    <message>
+        <source>Circle</source>
+        <translation>Kruh</translation>
+    </message>
+    <message>
+        <source>Drag from the centre to draw a circle</source>
+        <translation>Kruh nakreslíte tažením od středu</translation>
+    </message>
+    <message>
+        <source>Box</source>
+        <translation>Obdélník</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle to draw a box</source>
+        <translation>Obdélník nakreslíte tažením</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Mnohoúhelník</translation>
+    </message>
+    <message>
+        <source>Click the vertices; double-click or Enter closes the polygon</source>
+        <translation>Klikejte na vrcholy; dvojklik nebo Enter mnohoúhelník uzavře</translation>
+    </message>
+    <message>
+        <source>Ground</source>
+        <translation>Podložka</translation>
+    </message>
+    <message>
+        <source>Drag a rectangle to draw static ground or a wall</source>
+        <translation>Statickou podložku nebo stěnu nakreslíte tažením obdélníku</translation>
+    </message>
+    <message>
+        <source>Pin</source>
+        <translation>Čep</translation>
+    </message>
+    <message>
+        <source>Click a point of a body, then a second body or empty space for the world</source>
+        <translation>Klikněte na bod tělesa, pak na druhé těleso nebo na prázdné místo pro okolí</translation>
+    </message>
+    <message>
+        <source>Spring</source>
+        <translation>Pružina</translation>
+    </message>
+    <message>
+        <source>Drag from one point to another; its rest length is the length drawn</source>
+        <translation>Táhněte od jednoho bodu k&#xa0;druhému; klidová délka je nakreslená délka</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Smazat</translation>
+    </message>
+    <message>
+        <source>Click a body to delete it with its springs and pins</source>
+        <translation>Kliknutím smažete těleso i&#xa0;s&#xa0;jeho pružinami a&#xa0;čepy</translation>
+    </message>
+    <message>
+        <source>Duplicate</source>
+        <translation>Duplikovat</translation>
+    </message>
+    <message>
+        <source>Click a body to place a copy beside it</source>
+        <translation>Kliknutím položíte vedle tělesa jeho kopii</translation>
+    </message>
+    <message>
+        <source>Edit</source>
+        <translation>Úpravy</translation>
+    </message>
+    <message>
+        <source>Edit the scene: draw bodies, pins and springs (%1); leave to run it</source>
+        <translation>Upravit scénu: kreslit tělesa, čepy a&#xa0;pružiny (%1); po opuštění se scéna spustí</translation>
+    </message>
+    <message>
+        <source>Delete selected body</source>
+        <translation>Smazat vybrané těleso</translation>
+    </message>
+    <message>
+        <source>Edit mode: the world is paused at its start; leave Edit mode or press Space to run it</source>
+        <translation>Režim úprav: svět stojí na začátku; spustíte ho opuštěním režimu úprav nebo mezerníkem</translation>
+    </message>
+    <message>
+        <source>Select a body to turn it</source>
+        <translation>Vyberte těleso, které chcete otočit</translation>
+    </message>
+    <message>
+        <source>Rotate %1</source>
+        <translation>Otočit %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Posunout %1</translation>
+    </message>
+    <message>
+        <source>Delete spring</source>
+        <translation>Smazat pružinu</translation>
+    </message>
+    <message>
+        <source>Select a body to delete it</source>
+        <translation>Vyberte těleso, které chcete smazat</translation>
+    </message>
+    <message>
+        <source>Delete %1</source>
+        <translation>Smazat %1</translation>
+    </message>
+    <message>
+        <source>Add polygon</source>
+        <translation>Přidat mnohoúhelník</translation>
+    </message>
+    <message>
+        <source>Not convex: it will be replaced by the convex hull shown</source>
+        <translation>Nekonvexní: nahradí ho zobrazený konvexní obal</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s); double-click or Enter closes the polygon, Escape drops it</source>
+        <translation>
+            <numerusform>%n bod; dvojklik nebo Enter mnohoúhelník uzavře, Escape ho zahodí</numerusform>
+            <numerusform>%n body; dvojklik nebo Enter mnohoúhelník uzavře, Escape ho zahodí</numerusform>
+            <numerusform>%n bodů; dvojklik nebo Enter mnohoúhelník uzavře, Escape ho zahodí</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Click a point of a body to pin it</source>
+        <translation>Klikněte na bod tělesa, které chcete připojit čepem</translation>
+    </message>
+    <message>
+        <source>Now click a second body, or empty space to pin it to the world</source>
+        <translation>Teď klikněte na druhé těleso, nebo na prázdné místo pro připojení k&#xa0;okolí</translation>
+    </message>
+    <message>
+        <source>Add pin</source>
+        <translation>Přidat čep</translation>
+    </message>
+    <message>
+        <source>Duplicate %1</source>
+        <translation>Duplikovat %1</translation>
+    </message>
+    <message>
+        <source>%1 at (%2; %3) m</source>
+        <translation>%1 v&#xa0;(%2; %3)&#xa0;m</translation>
+    </message>
+    <message>
+        <source>%1 at %2°</source>
+        <translation>%1 pod úhlem %2°</translation>
+    </message>
+    <message>
+        <source>Circle: centre (%1; %2) m, radius %3 m</source>
+        <translation>Kruh: střed (%1; %2)&#xa0;m, poloměr %3&#xa0;m</translation>
+    </message>
+    <message>
+        <source>%1 × %2 m</source>
+        <translation>%1 × %2&#xa0;m</translation>
+    </message>
+    <message>
+        <source>Spring: length %1 m</source>
+        <translation>Pružina: délka %1&#xa0;m</translation>
+    </message>
+    <message>
+        <source>Add circle</source>
+        <translation>Přidat kruh</translation>
+    </message>
+    <message>
+        <source>Add box</source>
+        <translation>Přidat obdélník</translation>
+    </message>
+    <message>
+        <source>Add ground</source>
+        <translation>Přidat podložku</translation>
+    </message>
+    <message>
+        <source>Add spring</source>
+        <translation>Přidat pružinu</translation>
+    </message>
+    <message>
+        <source>Grid %1 m</source>
+        <translation>Mřížka %1&#xa0;m</translation>
+    </message>
+    <message>
+        <source>Snap to a grid of %1 m and to other bodies&apos; corners (%2)</source>
+        <translation>Přichytávat k&#xa0;mřížce %1&#xa0;m a&#xa0;k&#xa0;rohům jiných těles (%2)</translation>
+    </message>
+    <message>
+        <source>This lesson step locks the %1 tool</source>
+        <translation>Tento krok lekce nástroj %1 zamyká</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::ErrorPanel</name>
     <message>
         <source>Run</source>
@@ -1830,6 +2136,14 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
         <translation>&amp;Vlastní scény</translation>
     </message>
     <message>
+        <source>Scene editor</source>
+        <translation>Editor scény</translation>
+    </message>
+    <message>
+        <source>Properties</source>
+        <translation>Vlastnosti</translation>
+    </message>
+    <message>
         <source>RigidLab[*]</source>
         <translation>RigidLab[*]</translation>
     </message>
@@ -2180,6 +2494,129 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Least overlap on axis %1: normal (%2, %3) from A to B, depth %4 m, %5 contact point(s) from clipping.</source>
         <translation>Nejmenší překryv na ose %1: normála (%2; %3) od A&#xa0;k&#xa0;B, hloubka %4&#xa0;m, kontaktní body z&#xa0;ořezání: %5.</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::SceneProperties</name>
+    <message>
+        <source>Body</source>
+        <translation>Těleso</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>Id</translation>
+    </message>
+    <message>
+        <source>dynamic</source>
+        <translation>dynamické</translation>
+    </message>
+    <message>
+        <source>static</source>
+        <translation>statické</translation>
+    </message>
+    <message>
+        <source>kinematic</source>
+        <translation>kinematické</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>Hustota</translation>
+    </message>
+    <message>
+        <source>Mass</source>
+        <translation>Hmotnost</translation>
+    </message>
+    <message>
+        <source>Restitution e</source>
+        <translation>Koeficient restituce e</translation>
+    </message>
+    <message>
+        <source>Friction μ</source>
+        <translation>Tření μ</translation>
+    </message>
+    <message>
+        <source>Velocity vx</source>
+        <translation>Rychlost vx</translation>
+    </message>
+    <message>
+        <source>Velocity vy</source>
+        <translation>Rychlost vy</translation>
+    </message>
+    <message>
+        <source>Angular vel. ω</source>
+        <translation>Úhlová rychlost ω</translation>
+    </message>
+    <message>
+        <source>Set %1</source>
+        <translation>Nastavit: %1</translation>
+    </message>
+    <message>
+        <source>Rename %1</source>
+        <translation>Přejmenovat na %1</translation>
+    </message>
+    <message>
+        <source>Set type</source>
+        <translation>Nastavit typ</translation>
+    </message>
+    <message>
+        <source>Spring</source>
+        <translation>Pružina</translation>
+    </message>
+    <message>
+        <source>Stiffness k</source>
+        <translation>Tuhost pružiny k</translation>
+    </message>
+    <message>
+        <source>Damping c</source>
+        <translation>Tlumení c</translation>
+    </message>
+    <message>
+        <source>Rest length</source>
+        <translation>Klidová délka</translation>
+    </message>
+    <message>
+        <source>World</source>
+        <translation>Svět</translation>
+    </message>
+    <message>
+        <source>Gravity gx</source>
+        <translation>Tíhové zrychlení gx</translation>
+    </message>
+    <message>
+        <source>Gravity gy</source>
+        <translation>Tíhové zrychlení gy</translation>
+    </message>
+    <message>
+        <source>Time step dt</source>
+        <translation>Časový krok dt</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Iterations</source>
+        <translation>Iterace</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>Integrátor</translation>
+    </message>
+    <message>
+        <source>Set integrator</source>
+        <translation>Nastavit integrátor</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Řešič</translation>
+    </message>
+    <message>
+        <source>Set solver</source>
+        <translation>Nastavit řešič</translation>
     </message>
 </context>
 <context>

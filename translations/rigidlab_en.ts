@@ -12,6 +12,16 @@
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::EditTools</name>
+    <message numerus="yes">
+        <source>%n point(s); double-click or Enter closes the polygon, Escape drops it</source>
+        <translation>
+            <numerusform>%n point; double-click or Enter closes the polygon, Escape drops it</numerusform>
+            <numerusform>%n points; double-click or Enter closes the polygon, Escape drops it</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::MainWindow</name>
     <message numerus="yes">
         <source> · %1 error estimate %2 (%Ln substep(s))</source>

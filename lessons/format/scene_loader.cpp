@@ -10,6 +10,7 @@
 #include "format/local_text.h"
 
 #include "format/limits.h"
+#include "format/scene_rules.h"
 
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
@@ -312,22 +313,11 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
         return false;
     }
     const QString idPlace = joinPlace(place, u"id");
-    if (id.isEmpty()) {
-        return m_in.fail(idPlace, FileMessages::tr("must not be empty"));
-    }
-    if (id.size() > kMaxBodyIdLength) {
-        return m_in.fail(idPlace,
-                         FileMessages::tr("longer than %1 characters").arg(kMaxBodyIdLength));
-    }
-    for (QChar c : id) {
-        if (c.category() == QChar::Other_Control) {
-            return m_in.fail(idPlace, FileMessages::tr("must not hold control characters"));
-        }
+    if (const QString problem = rules::idProblem(id); !problem.isEmpty()) {
+        return m_in.fail(idPlace, problem);
     }
     if (const auto other = m_ids.constFind(id); other != m_ids.constEnd()) {
-        return m_in.fail(idPlace,
-                         FileMessages::tr("duplicate id \"%1\" (bodies[%2] has it already)")
-                             .arg(id, QString::number(other.value())));
+        return m_in.fail(idPlace, rules::duplicateId(id, other.value()));
     }
     def.name = id.toStdString();
     if (!readLabel(body, place, extras.label, extras.labels)) {
@@ -379,20 +369,8 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
         return false;
     }
 
-    // Sizes and densities are each finite, but their products need not be.
-    const physics::MassProperties unit = physics::computeMass(def.shape, 1.0);
-    if (!(std::isfinite(unit.area) && unit.area > 0 && std::isfinite(unit.inertia))) {
-        return m_in.fail(joinPlace(place, u"shape"),
-                         FileMessages::tr("too large or too small: its area works out as %1 m^2")
-                             .arg(detail::formatNumber(unit.area)));
-    }
-    const double mass = def.mass > 0 ? def.mass : def.density * unit.area;
-    if (!(std::isfinite(mass) && limits::kMass.contains(mass))) {
-        return m_in.fail(
-            joinPlace(place, u"density"),
-            FileMessages::tr("the mass works out as %1 kg (density times area); it "
-                             "must be %2")
-                .arg(detail::formatNumber(mass), detail::describeRange(limits::kMass)));
+    if (const auto problem = rules::checkMass(def)) {
+        return m_in.fail(joinPlace(place, problem->key), problem->what);
     }
 
     if (def.type == physics::BodyType::Static &&
@@ -451,9 +429,7 @@ bool SceneReader::readShape(const QJsonValue& value, const QString& place, physi
             return false;
         }
         if (list.size() < 3 || list.size() > kMaxPolygonVertices) {
-            return m_in.fail(at, FileMessages::tr("a polygon needs 3 to %1 vertices, got %2")
-                                     .arg(kMaxPolygonVertices)
-                                     .arg(list.size()));
+            return m_in.fail(at, rules::polygonVertexCount(list.size()));
         }
         std::vector<Vec2> vertices(static_cast<size_t>(list.size()));
         for (qsizetype i = 0; i < list.size(); ++i) {
@@ -553,12 +529,10 @@ bool SceneReader::readSpring(const QJsonValue& value, const QString& place)
         return false;
     }
     if (spring.a == physics::kWorld && spring.b == physics::kWorld) {
-        return m_in.fail(place, FileMessages::tr("both ends are fixed in the world (a and b are "
-                                                 "null): a spring needs a body at one end"));
+        return m_in.fail(place, rules::springBothInWorld());
     }
     if (spring.a == spring.b) {
-        return m_in.fail(joinPlace(place, u"b"),
-                         FileMessages::tr("the same body as \"a\": a spring joins two bodies"));
+        return m_in.fail(joinPlace(place, u"b"), rules::springSameBody());
     }
     spring.restLength =
         (worldPoint(spring.b, spring.anchorB) - worldPoint(spring.a, spring.anchorA)).norm();
@@ -620,8 +594,7 @@ bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
         return false;
     }
     if (joint.a == joint.b) {
-        return m_in.fail(joinPlace(place, u"b"),
-                         FileMessages::tr("the same body as \"a\": a pin joins two bodies"));
+        return m_in.fail(joinPlace(place, u"b"), rules::pinSameBody());
     }
     // Without anchorB, the pin holds the bodies as they are placed: anchorB is the point of b
     // (or of the world) that coincides with anchorA at load.

@@ -110,8 +110,10 @@ void WorldView::rebuild()
     m_overlays->clearTrails();
     m_drawnRunning.clear();
     syncPoses();
-    m_autoFit = true;
-    fitScene();
+    if (m_fitOnRebuild) {
+        m_autoFit = true;
+        fitScene();
+    }
     emit bodySelected(-1);
 }
 

@@ -56,6 +56,11 @@ public:
     /// More for Fit scene to show besides the bodies: a panel's drawing over the world, in
     /// world coordinates [m] (an empty rect when it draws nothing).
     void setFitExtra(std::function<QRectF()> extra) { m_fitExtra = std::move(extra); }
+    /// Whether loading a scene fits the view to it (the default). The scene editor turns it off
+    /// while it reloads the world after each edit, so that the view holds still under the pen.
+    void setFitOnRebuild(bool on) { m_fitOnRebuild = on; }
+    /// A view position in the world [m].
+    physics::Vec2 worldAt(const QPoint& viewPos) const { return toWorld(viewPos); }
 
 public slots:
     void fitScene();
@@ -123,6 +128,7 @@ private:
     int m_legendReserved = 0; ///< the legend's height the last fit kept free [px]
     QPoint m_lastMouse;
     std::function<QRectF()> m_fitExtra; ///< see setFitExtra
+    bool m_fitOnRebuild = true;         ///< see setFitOnRebuild
 };
 
 } // namespace rigidlab::ui

@@ -71,6 +71,7 @@ MainWindow::MainWindow(QWidget* parent)
     setCentralWidget(m_view);
     buildActions();
     buildDocks();
+    buildEditor();
     buildMenus();
 
     new DivergenceBanner(*m_controller, m_view);

@@ -35,6 +35,7 @@ namespace rigidlab::ui {
 class BouncePanel;
 class CollisionPanel;
 class ControlPanel;
+class EditTools;
 class InspectorPanel;
 class LessonPlayer;
 class SatPanel;
@@ -111,6 +112,8 @@ public:
     WorldView& view() { return *m_view; }
     ControlPanel& controls() { return *m_controls; }
     InspectorPanel& inspector() { return *m_inspector; }
+    /// The scene editor: Edit mode and its tools (main_window_editor.cpp).
+    EditTools& editTools() { return *m_editTools; }
     PlotWidget* plot(int index) const { return m_plots[static_cast<size_t>(index)]; }
     static constexpr int kPlotCount = 3;
     QString lastError() const { return m_lastError; }
@@ -170,6 +173,8 @@ private:
     void buildMenus();
     void buildStatusBar();
     void buildDocks();
+    /// The scene editor's document, tools and toolbar (main_window_editor.cpp).
+    void buildEditor();
     void addRecent(const QString& path);
     /// File › Your own scenes, made when the user's scenes folder holds any, remade after a
     /// save (main_window_save.cpp).
@@ -251,6 +256,9 @@ private:
     std::vector<std::pair<QPointer<QWidget>, QFont>> m_explicitFonts; ///< before presentation
     QPalette m_normalPalette;
     QAction* m_presentAction = nullptr;
+
+    // The scene editor's tools (main_window_editor.cpp).
+    EditTools* m_editTools = nullptr;
 };
 
 } // namespace rigidlab::ui

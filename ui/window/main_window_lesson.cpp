@@ -5,6 +5,7 @@
 
 #include "common/display_names.h"
 #include "common/modal_scope.h"
+#include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
@@ -93,6 +94,8 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     m_documentIsFile = false; // its path is the lesson's or a shipped scene's: Save asks where
     m_document->reset(step.scene, scenePath);
     m_lessonLoading = false;
+    // A step may open the editor with some tools only (its "editor" key).
+    m_editTools->setAllowedTools(step.editor ? std::optional(step.editor->tools) : std::nullopt);
     const QStringList labels = loadStepWorlds(step, step.scene, scenePath);
 
     // Only what the step names: panels, plots, overlays.
@@ -215,6 +218,7 @@ void MainWindow::leaveLesson()
     if (!m_inLesson)
         return;
     m_inLesson = false;
+    m_editTools->setAllowedTools(std::nullopt);
     showSceneTitle();
     // Back to the plain lab: controls, inspector and the three plots.
     for (auto it = m_docks.cbegin(); it != m_docks.cend(); ++it) {

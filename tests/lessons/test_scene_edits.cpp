@@ -1,0 +1,512 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The scene editor's edits (lessons/edit/): each edit, each refusal with the words the scene
+// loader uses for the same mistake in a file, deleting a body with its springs and pins, and
+// ids that stay unique.
+
+#include "edit/scene_edits.h"
+#include "format/scene_loader.h"
+
+#include "test_main.h"
+
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QSet>
+#include <QTest>
+
+#include <cmath>
+#include <numbers>
+
+using namespace rigidlab;
+using namespace rigidlab::lessons;
+using physics::BodyType;
+using physics::kWorld;
+using physics::Vec2;
+
+namespace {
+
+constexpr double kTolerance = 1e-12;
+
+bool near(const Vec2& a, const Vec2& b, double tol = kTolerance)
+{
+    return (a - b).norm() <= tol;
+}
+
+/// What the loader says about one body given as JSON: its error, or its first warning.
+SceneLoadResult loadOneBody(const QJsonObject& body)
+{
+    QJsonObject root{{QStringLiteral("rigidlab"), 1}, {QStringLiteral("bodies"), QJsonArray{body}}};
+    return loadSceneObject(root, QStringLiteral("scene.json"));
+}
+
+/// The words after `SOURCE: PLACE: `, where messages of file and editor must agree.
+QString what(const QString& message)
+{
+    return message.section(QStringLiteral(": "), 2);
+}
+
+QString idOf(const Scene& scene, int i)
+{
+    return QString::fromStdString(scene.bodies[static_cast<size_t>(i)].name);
+}
+
+/// A scene with bodies a, b, c, d in a row, springs a-c, b-d, c-world and pins d-b, a-world.
+Scene fourBodies()
+{
+    Scene scene;
+    for (const char* id : {"a", "b", "c", "d"}) {
+        physics::BodyDef def;
+        def.name = id;
+        def.shape = physics::makeCircleShape(0.25);
+        def.position = Vec2(static_cast<double>(scene.bodies.size()), 0.0);
+        scene.bodies.push_back(def);
+        scene.originalVertices.emplace_back();
+    }
+    scene.springs.push_back({0, Vec2::Zero(), 2, Vec2::Zero(), 10.0, 0.0, 2.0});
+    scene.springs.push_back({1, Vec2::Zero(), 3, Vec2::Zero(), 20.0, 0.0, 2.0});
+    scene.springs.push_back({2, Vec2::Zero(), kWorld, Vec2(2.0, 1.0), 30.0, 0.0, 1.0});
+    scene.joints.push_back({3, Vec2(-0.5, 0.0), 1, Vec2(1.5, 0.0)});
+    scene.joints.push_back({0, Vec2::Zero(), kWorld, Vec2::Zero()});
+    scene.colours = {QString(), QStringLiteral("#ff0000"), QStringLiteral("#00ff00")};
+    return scene;
+}
+
+} // namespace
+
+class TestSceneEdits : public QObject {
+    Q_OBJECT
+private slots:
+    void addsBodiesWithUniqueIds();
+    void refusesSizesWithTheLoadersWords();
+    void addsPolygonAtItsCentroid();
+    void nonConvexPolygonBecomesItsHull();
+    void degeneratePolygonIsRefused_data();
+    void degeneratePolygonIsRefused();
+    void movesAndRotates();
+    void deleteRenumbersSpringsAndPins();
+    void duplicateTakesANewId();
+    void addsPins();
+    void addsSprings();
+    void setsBodyProperties();
+    void renamesBodies();
+    void setsSpringAndWorldProperties();
+    void listsOverlaps();
+};
+
+void TestSceneEdits::addsBodiesWithUniqueIds()
+{
+    Scene scene;
+    auto r = edit::addCircle(scene, Vec2(1.0, 2.0), 0.5);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QCOMPARE(r.body, 0);
+    QCOMPARE(idOf(r.scene, 0), QStringLiteral("circle1"));
+    QVERIFY(near(r.scene.bodies[0].position, Vec2(1.0, 2.0)));
+    QCOMPARE(r.scene.bodies[0].shape.asCircle()->radius, 0.5);
+    QCOMPARE(r.scene.bodies[0].type, BodyType::Dynamic);
+    QCOMPARE(r.scene.originalVertices.size(), r.scene.bodies.size());
+
+    r = edit::addCircle(r.scene, Vec2(3.0, 2.0), 0.5);
+    QVERIFY(r.ok);
+    QCOMPARE(idOf(r.scene, 1), QStringLiteral("circle2"));
+    r = edit::addBox(r.scene, Vec2(0.0, 5.0), 2.0, 1.0);
+    QVERIFY(r.ok);
+    QCOMPARE(idOf(r.scene, 2), QStringLiteral("box1"));
+    const physics::Polygon* box = r.scene.bodies[2].shape.asPolygon();
+    QVERIFY(box);
+    QCOMPARE(box->vertices.size(), size_t(4));
+    QCOMPARE(physics::computeMass(r.scene.bodies[2].shape, 1.0).area, 2.0);
+    r = edit::addGround(r.scene, Vec2(0.0, -0.5), 20.0, 1.0);
+    QVERIFY(r.ok);
+    QCOMPARE(idOf(r.scene, 3), QStringLiteral("ground1"));
+    QCOMPARE(r.scene.bodies[3].type, BodyType::Static);
+
+    // A gap left by a deleted body is filled first; ids never repeat.
+    r = edit::deleteBody(r.scene, 0);
+    QVERIFY(r.ok);
+    r = edit::addCircle(r.scene, Vec2::Zero(), 1.0);
+    QCOMPARE(idOf(r.scene, 3), QStringLiteral("circle1"));
+    QSet<QString> ids;
+    for (int i = 0; i < static_cast<int>(r.scene.bodies.size()); ++i) {
+        ids.insert(idOf(r.scene, i));
+    }
+    QCOMPARE(ids.size(), static_cast<qsizetype>(r.scene.bodies.size()));
+}
+
+void TestSceneEdits::refusesSizesWithTheLoadersWords()
+{
+    const Scene empty;
+    const auto circle = edit::addCircle(empty, Vec2::Zero(), 0.0);
+    QVERIFY(!circle.ok);
+    QVERIFY2(circle.error.startsWith(QStringLiteral("circle1: shape.radius: ")),
+             qPrintable(circle.error));
+    const auto fromFile =
+        loadOneBody({{QStringLiteral("id"), QStringLiteral("c")},
+                     {QStringLiteral("shape"),
+                      QJsonObject{{QStringLiteral("type"), QStringLiteral("circle")},
+                                  {QStringLiteral("radius"), limits::kSize.max * 2}}}});
+    QVERIFY(!fromFile.ok);
+    const auto tooBig = edit::addCircle(empty, Vec2::Zero(), limits::kSize.max * 2);
+    QVERIFY(!tooBig.ok);
+    QCOMPARE(what(tooBig.error), what(fromFile.error));
+
+    const auto box = edit::addBox(empty, Vec2::Zero(), 1.0, -1.0);
+    QVERIFY(!box.ok);
+    QVERIFY2(box.error.startsWith(QStringLiteral("box1: shape.height: ")), qPrintable(box.error));
+    const auto far = edit::addBox(empty, Vec2(limits::kCoordinate.max * 2, 0.0), 1.0, 1.0);
+    QVERIFY(!far.ok);
+    QVERIFY2(far.error.startsWith(QStringLiteral("box1: position[0]: ")), qPrintable(far.error));
+    const auto nan = edit::addCircle(empty, Vec2(std::nan(""), 0.0), 1.0);
+    QVERIFY(!nan.ok);
+}
+
+void TestSceneEdits::addsPolygonAtItsCentroid()
+{
+    // A right triangle with its right angle at (1, 1): centroid (1 + 3/3, 1 + 3/3).
+    const std::vector<Vec2> points{{1.0, 1.0}, {4.0, 1.0}, {1.0, 4.0}};
+    const auto r = edit::addPolygon(Scene{}, points);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QVERIFY(r.warning.isEmpty());
+    const physics::BodyDef& def = r.scene.bodies[0];
+    QCOMPARE(QString::fromStdString(def.name), QStringLiteral("polygon1"));
+    QVERIFY(near(def.position, Vec2(2.0, 2.0), 1e-12));
+    const physics::MassProperties mass = physics::computeMass(def.shape, 1.0);
+    QVERIFY(std::abs(mass.area - 4.5) < 1e-12);
+    QVERIFY(near(mass.centroid, Vec2::Zero(), 1e-12));
+    // Every point drawn is a vertex where it was drawn.
+    const physics::Transform xf(def.position, def.angle);
+    for (const Vec2& p : points) {
+        bool found = false;
+        for (const Vec2& v : def.shape.asPolygon()->vertices) {
+            found = found || near(xf.apply(v), p, 1e-12);
+        }
+        QVERIFY(found);
+    }
+    QVERIFY(r.scene.originalVertices[0].empty());
+}
+
+void TestSceneEdits::nonConvexPolygonBecomesItsHull()
+{
+    // A dart: (2, 1) dents the square-ish outline inwards.
+    const std::vector<Vec2> points{{0.0, 0.0}, {4.0, 0.0}, {2.0, 1.0}, {4.0, 4.0}, {0.0, 4.0}};
+    const auto preview = edit::previewPolygon(points);
+    QVERIFY(preview.ok);
+    QCOMPARE(preview.hull.size(), size_t(4));
+    const auto r = edit::addPolygon(Scene{}, points);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QCOMPARE(r.scene.bodies[0].shape.asPolygon()->vertices.size(), size_t(4));
+    QCOMPARE(r.scene.originalVertices[0].size(), points.size());
+
+    QJsonArray vertices;
+    for (const Vec2& p : points) {
+        vertices.append(QJsonArray{p.x(), p.y()});
+    }
+    const auto fromFile = loadOneBody(
+        {{QStringLiteral("id"), QStringLiteral("p")},
+         {QStringLiteral("shape"), QJsonObject{{QStringLiteral("type"), QStringLiteral("polygon")},
+                                               {QStringLiteral("vertices"), vertices}}}});
+    QVERIFY(fromFile.ok);
+    QCOMPARE(fromFile.warnings.size(), 1);
+    QVERIFY2(r.warning.startsWith(QStringLiteral("polygon1: shape.vertices: ")),
+             qPrintable(r.warning));
+    QCOMPARE(what(r.warning), what(fromFile.warnings.front()));
+    QCOMPARE(what(r.warning), preview.warning);
+}
+
+void TestSceneEdits::degeneratePolygonIsRefused_data()
+{
+    QTest::addColumn<std::vector<Vec2>>("points");
+    QTest::addColumn<QString>("message");
+    const QString count =
+        QStringLiteral("a polygon needs 3 to %1 vertices, got 2").arg(kMaxPolygonVertices);
+    const QString area = QStringLiteral("the polygon has no area");
+    QTest::newRow("two points") << std::vector<Vec2>{{0.0, 0.0}, {1.0, 0.0}} << count;
+    QTest::newRow("a point repeated")
+        << std::vector<Vec2>{{1.0, 1.0}, {1.0, 1.0}, {1.0, 1.0}} << area;
+    QTest::newRow("on one line") << std::vector<Vec2>{{0.0, 0.0}, {1.0, 1.0}, {2.0, 2.0}} << area;
+    QTest::newRow("two distinct of four")
+        << std::vector<Vec2>{{0.0, 0.0}, {0.0, 0.0}, {3.0, 0.0}, {3.0, 0.0}} << area;
+}
+
+void TestSceneEdits::degeneratePolygonIsRefused()
+{
+    QFETCH(std::vector<Vec2>, points);
+    QFETCH(QString, message);
+    const auto r = edit::addPolygon(Scene{}, points);
+    QVERIFY(!r.ok);
+    QVERIFY2(r.error.startsWith(QStringLiteral("polygon1: shape.vertices: ") + message),
+             qPrintable(r.error));
+    QVERIFY(!edit::previewPolygon(points).ok);
+
+    std::vector<Vec2> many;
+    for (int i = 0; i <= kMaxPolygonVertices; ++i) {
+        const double a = 2 * std::numbers::pi * i / (kMaxPolygonVertices + 1);
+        many.emplace_back(std::cos(a), std::sin(a));
+    }
+    const auto tooMany = edit::addPolygon(Scene{}, many);
+    QVERIFY(!tooMany.ok);
+    QVERIFY2(tooMany.error.contains(QString::number(kMaxPolygonVertices + 1)),
+             qPrintable(tooMany.error));
+}
+
+void TestSceneEdits::movesAndRotates()
+{
+    const Scene scene = fourBodies();
+    auto r = edit::moveBody(scene, 2, Vec2(5.0, -3.0));
+    QVERIFY(r.ok);
+    QVERIFY(near(r.scene.bodies[2].position, Vec2(5.0, -3.0)));
+    QVERIFY(near(r.scene.bodies[1].position, scene.bodies[1].position));
+    r = edit::rotateBody(r.scene, 2, 0.75);
+    QVERIFY(r.ok);
+    QCOMPARE(r.scene.bodies[2].angle, 0.75);
+
+    const auto far = edit::moveBody(scene, 1, Vec2(0.0, -limits::kCoordinate.max * 10));
+    QVERIFY(!far.ok);
+    QVERIFY2(far.error.startsWith(QStringLiteral("b: position[1]: must be ")),
+             qPrintable(far.error));
+    const auto spin = edit::rotateBody(scene, 1, limits::kAngle.max * 2);
+    QVERIFY(!spin.ok);
+    QVERIFY2(spin.error.startsWith(QStringLiteral("b: angle: ")), qPrintable(spin.error));
+    QVERIFY(!edit::moveBody(scene, 4, Vec2::Zero()).ok);
+    QVERIFY(!edit::moveBody(scene, kWorld, Vec2::Zero()).ok);
+}
+
+void TestSceneEdits::deleteRenumbersSpringsAndPins()
+{
+    const Scene scene = fourBodies();
+    const auto r = edit::deleteBody(scene, 1); // "b"
+    QVERIFY(r.ok);
+    const Scene& out = r.scene;
+    QCOMPARE(out.bodies.size(), size_t(3));
+    QCOMPARE(idOf(out, 0), QStringLiteral("a"));
+    QCOMPARE(idOf(out, 1), QStringLiteral("c"));
+    QCOMPARE(idOf(out, 2), QStringLiteral("d"));
+    QCOMPARE(out.originalVertices.size(), size_t(3));
+    QCOMPARE(out.colourOf(1), QStringLiteral("#00ff00")); // c's colour moved down with it
+    // The spring b-d and the pin d-b went with b; a-c is now 0-1, c-world 1-world.
+    QCOMPARE(out.springs.size(), size_t(2));
+    QCOMPARE(out.springs[0].a, 0);
+    QCOMPARE(out.springs[0].b, 1);
+    QCOMPARE(out.springs[0].stiffness, 10.0);
+    QCOMPARE(out.springs[1].a, 1);
+    QCOMPARE(out.springs[1].b, kWorld);
+    QCOMPARE(out.springs[1].stiffness, 30.0);
+    QCOMPARE(out.joints.size(), size_t(1));
+    QCOMPARE(out.joints[0].a, 0);
+    QCOMPARE(out.joints[0].b, kWorld);
+
+    // Deleting the last body leaves the others' numbers alone.
+    const auto last = edit::deleteBody(scene, 3);
+    QVERIFY(last.ok);
+    QCOMPARE(last.scene.springs.size(), size_t(2));
+    QCOMPARE(last.scene.springs[1].a, 2);
+    QCOMPARE(last.scene.joints.size(), size_t(1));
+    QVERIFY(!edit::deleteBody(scene, 7).ok);
+
+    const auto spring = edit::deleteSpring(scene, 0);
+    QVERIFY(spring.ok);
+    QCOMPARE(spring.scene.springs.size(), size_t(2));
+    QCOMPARE(spring.scene.springs[0].stiffness, 20.0);
+    const auto pin = edit::deletePin(scene, 1);
+    QVERIFY(pin.ok);
+    QCOMPARE(pin.scene.joints.size(), size_t(1));
+    QCOMPARE(pin.scene.joints[0].a, 3);
+    QVERIFY(!edit::deletePin(scene, 2).ok);
+}
+
+void TestSceneEdits::duplicateTakesANewId()
+{
+    Scene scene;
+    scene = edit::addBox(scene, Vec2(0.0, 1.0), 1.0, 2.0).scene;
+    scene.bodies[0].restitution = 0.9;
+    auto r = edit::duplicateBody(scene, 0, Vec2(0.5, 0.0));
+    QVERIFY(r.ok);
+    QCOMPARE(r.body, 1);
+    QCOMPARE(idOf(r.scene, 1), QStringLiteral("box2"));
+    QVERIFY(near(r.scene.bodies[1].position, Vec2(0.5, 1.0)));
+    QCOMPARE(r.scene.bodies[1].restitution, 0.9);
+    r = edit::duplicateBody(r.scene, 1, Vec2(0.5, 0.0));
+    QCOMPARE(idOf(r.scene, 2), QStringLiteral("box3"));
+
+    Scene named = fourBodies();
+    r = edit::duplicateBody(named, 0, Vec2(0.0, 1.0));
+    QVERIFY(r.ok);
+    QCOMPARE(idOf(r.scene, 4), QStringLiteral("a1"));
+    QCOMPARE(r.scene.springs.size(), named.springs.size()); // springs are not copied
+    r = edit::duplicateBody(named, 1, Vec2(0.0, 1.0));
+    QCOMPARE(r.scene.colourOf(4), QStringLiteral("#ff0000"));
+}
+
+void TestSceneEdits::addsPins()
+{
+    Scene scene = fourBodies();
+    scene.bodies[1].angle = 0.5;
+    const Vec2 point(1.2, 0.1);
+    auto r = edit::addPin(scene, 1, 2, point);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    const physics::PinJointDef& pin = r.scene.joints.back();
+    QCOMPARE(pin.a, 1);
+    QCOMPARE(pin.b, 2);
+    // Both anchors are the point clicked, each in its body's frame.
+    const auto world = [&](int body, const Vec2& anchor) {
+        const auto& d = scene.bodies[static_cast<size_t>(body)];
+        return physics::Transform(d.position, d.angle).apply(anchor);
+    };
+    QVERIFY(near(world(1, pin.anchorA), point, 1e-12));
+    QVERIFY(near(world(2, pin.anchorB), point, 1e-12));
+
+    // The world as the first end: the body holds, the world is the second end.
+    r = edit::addPin(scene, kWorld, 3, Vec2(3.0, 1.0));
+    QVERIFY(r.ok);
+    QCOMPARE(r.scene.joints.back().a, 3);
+    QCOMPARE(r.scene.joints.back().b, kWorld);
+    QVERIFY(near(r.scene.joints.back().anchorB, Vec2(3.0, 1.0)));
+
+    const auto self = edit::addPin(scene, 2, 2, point);
+    QVERIFY(!self.ok);
+    QCOMPARE(self.error, QStringLiteral("joints[2]: b: the same body as \"a\": a pin joins two "
+                                        "bodies"));
+    QVERIFY(!edit::addPin(scene, kWorld, kWorld, point).ok);
+    QVERIFY(!edit::addPin(scene, 0, 9, point).ok);
+}
+
+void TestSceneEdits::addsSprings()
+{
+    const Scene scene = fourBodies();
+    const Vec2 pa(0.0, 0.2);
+    const Vec2 pb(3.0, 4.2);
+    auto r = edit::addSpring(scene, 0, pa, kWorld, pb, 50.0, 0.5);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    const physics::SpringDef& s = r.scene.springs.back();
+    QCOMPARE(s.restLength, 5.0);
+    QCOMPARE(s.stiffness, 50.0);
+    QCOMPARE(s.damping, 0.5);
+    QVERIFY(near(s.anchorA, Vec2(0.0, 0.2)));
+    QVERIFY(near(s.anchorB, pb));
+
+    const auto zero = edit::addSpring(scene, 0, pa, 1, pa, 50.0);
+    QVERIFY(!zero.ok);
+    QVERIFY2(zero.error.startsWith(QStringLiteral("springs[3]: restLength: a spring of zero "
+                                                  "length")),
+             qPrintable(zero.error));
+    const auto same = edit::addSpring(scene, 2, pa, 2, pb, 50.0);
+    QVERIFY(!same.ok);
+    QVERIFY2(same.error.endsWith(QStringLiteral("a spring joins two bodies")),
+             qPrintable(same.error));
+    const auto world = edit::addSpring(scene, kWorld, pa, kWorld, pb, 50.0);
+    QVERIFY(!world.ok);
+    QVERIFY2(world.error.contains(QStringLiteral("a spring needs a body at one end")),
+             qPrintable(world.error));
+    const auto stiff = edit::addSpring(scene, 0, pa, 1, pb, -1.0);
+    QVERIFY(!stiff.ok);
+    QVERIFY2(stiff.error.startsWith(QStringLiteral("springs[3]: stiffness: must be ")),
+             qPrintable(stiff.error));
+}
+
+void TestSceneEdits::setsBodyProperties()
+{
+    Scene scene;
+    scene = edit::addBox(scene, Vec2::Zero(), 2.0, 1.0).scene;
+    auto r = edit::setBodyNumber(scene, 0, edit::BodyNumber::Mass, 3.0);
+    QVERIFY(r.ok);
+    QCOMPARE(r.scene.bodies[0].mass, 3.0);
+    r = edit::setBodyNumber(r.scene, 0, edit::BodyNumber::Density, 4.0);
+    QVERIFY(r.ok);
+    QCOMPARE(r.scene.bodies[0].density, 4.0);
+    QCOMPARE(r.scene.bodies[0].mass, 0.0); // the density rules again: 8 kg
+    r = edit::setBodyNumber(r.scene, 0, edit::BodyNumber::VelocityY, -2.5);
+    QVERIFY(r.ok);
+    QCOMPARE(r.scene.bodies[0].velocity.y(), -2.5);
+    r = edit::setBodyNumber(r.scene, 0, edit::BodyNumber::AngularVelocity, 1.5);
+    QCOMPARE(r.scene.bodies[0].angularVelocity, 1.5);
+    r = edit::setBodyNumber(r.scene, 0, edit::BodyNumber::Friction, 0.7);
+    QCOMPARE(r.scene.bodies[0].friction, 0.7);
+    r = edit::setBodyType(r.scene, 0, BodyType::Kinematic);
+    QVERIFY(r.ok);
+    QCOMPARE(r.scene.bodies[0].type, BodyType::Kinematic);
+
+    const auto bounce = edit::setBodyNumber(scene, 0, edit::BodyNumber::Restitution, 1.5);
+    QVERIFY(!bounce.ok);
+    QVERIFY2(bounce.error.startsWith(QStringLiteral("box1: restitution: must be from 0 to 1")),
+             qPrintable(bounce.error));
+    const auto heavy = edit::setBodyNumber(scene, 0, edit::BodyNumber::Mass, 0.0);
+    QVERIFY(!heavy.ok);
+    QVERIFY2(heavy.error.startsWith(QStringLiteral("box1: mass: ")), qPrintable(heavy.error));
+    // Each density is in range, but density times area is not a mass a scene may hold.
+    Scene big = edit::addBox(Scene{}, Vec2::Zero(), 1e4, 1e4).scene;
+    const auto dense = edit::setBodyNumber(big, 0, edit::BodyNumber::Density, limits::kDensity.max);
+    QVERIFY(!dense.ok);
+    QVERIFY2(dense.error.startsWith(QStringLiteral("box1: density: the mass works out as")),
+             qPrintable(dense.error));
+    const auto nan = edit::setBodyNumber(scene, 0, edit::BodyNumber::VelocityX, std::nan(""));
+    QVERIFY(!nan.ok);
+}
+
+void TestSceneEdits::renamesBodies()
+{
+    const Scene scene = fourBodies();
+    auto r = edit::setBodyId(scene, 2, QStringLiteral("bob"));
+    QVERIFY(r.ok);
+    QCOMPARE(idOf(r.scene, 2), QStringLiteral("bob"));
+    QCOMPARE(r.scene.springs[0].b, 2);
+    const auto taken = edit::setBodyId(scene, 2, QStringLiteral("a"));
+    QVERIFY(!taken.ok);
+    QCOMPARE(taken.error, QStringLiteral("c: id: duplicate id \"a\" (bodies[0] has it already)"));
+    QVERIFY(edit::setBodyId(scene, 2, QStringLiteral("c")).ok); // its own id
+    const auto empty = edit::setBodyId(scene, 2, QString());
+    QVERIFY(!empty.ok);
+    QCOMPARE(empty.error, QStringLiteral("c: id: must not be empty"));
+    QVERIFY(!edit::setBodyId(scene, 2, QString(kMaxBodyIdLength + 1, u'x')).ok);
+}
+
+void TestSceneEdits::setsSpringAndWorldProperties()
+{
+    const Scene scene = fourBodies();
+    auto r = edit::setSpringNumber(scene, 1, edit::SpringNumber::RestLength, 0.75);
+    QVERIFY(r.ok);
+    QCOMPARE(r.scene.springs[1].restLength, 0.75);
+    r = edit::setSpringNumber(r.scene, 1, edit::SpringNumber::Damping, 0.2);
+    QCOMPARE(r.scene.springs[1].damping, 0.2);
+    const auto soft = edit::setSpringNumber(scene, 1, edit::SpringNumber::Stiffness, -5.0);
+    QVERIFY(!soft.ok);
+    QVERIFY2(soft.error.startsWith(QStringLiteral("springs[1]: stiffness: must be ")),
+             qPrintable(soft.error));
+    QVERIFY(!edit::setSpringNumber(scene, 3, edit::SpringNumber::Stiffness, 1.0).ok);
+
+    r = edit::setWorldNumber(scene, edit::WorldNumber::GravityY, -1.62);
+    QVERIFY(r.ok);
+    QCOMPARE(r.scene.world.gravity.y(), -1.62);
+    r = edit::setWorldNumber(r.scene, edit::WorldNumber::Iterations, 25.0);
+    QCOMPARE(r.scene.world.iterations, 25);
+    r = edit::setIntegrator(r.scene, physics::IntegratorKind::Verlet);
+    QCOMPARE(r.scene.world.integrator, physics::IntegratorKind::Verlet);
+    const auto dt = edit::setWorldNumber(scene, edit::WorldNumber::Dt, limits::kDt.max * 2);
+    QVERIFY(!dt.ok);
+    QVERIFY2(dt.error.startsWith(QStringLiteral("world: dt: must be from ")), qPrintable(dt.error));
+    const auto half = edit::setWorldNumber(scene, edit::WorldNumber::Iterations, 2.5);
+    QVERIFY(!half.ok);
+    QCOMPARE(half.error, QStringLiteral("world: iterations: must be a whole number"));
+}
+
+void TestSceneEdits::listsOverlaps()
+{
+    Scene scene;
+    scene = edit::addGround(scene, Vec2(0.0, -0.5), 10.0, 1.0).scene; // top at y = 0
+    scene = edit::addBox(scene, Vec2(0.0, 0.5), 1.0, 1.0).scene;      // resting on it
+    scene = edit::addCircle(scene, Vec2(3.0, 1.0), 0.5).scene;        // clear of all
+    scene = edit::addGround(scene, Vec2(5.0, -0.5), 1.0, 3.0).scene;  // static in static
+    QVERIFY(edit::overlappingPairs(scene).empty());
+    QVERIFY(edit::overlapMessage(scene).isEmpty());
+
+    scene = edit::addCircle(scene, Vec2(3.6, 1.0), 0.5).scene; // into circle1 by 0.4 m
+    const auto pairs = edit::overlappingPairs(scene);
+    QCOMPARE(pairs.size(), size_t(1));
+    QCOMPARE(pairs[0], std::make_pair(2, 4));
+    QVERIFY2(edit::overlapMessage(scene).startsWith(QStringLiteral("circle1 overlaps circle2")),
+             qPrintable(edit::overlapMessage(scene)));
+    // Passing through everything is no overlap.
+    scene.bodies[4].collide = false;
+    QVERIFY(edit::overlappingPairs(scene).empty());
+}
+
+RIGIDLAB_TEST_GUILESS_MAIN(TestSceneEdits)
+#include "test_scene_edits.moc"

@@ -1,0 +1,498 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The scene editor (issue 15), driven as a teacher drives it: Edit mode, the tools' actions,
+// mouse drags and clicks on the view. Every edit is undone back to the scene as opened (field
+// by field) and redone; refusals and warnings reach the status line with the loader's words.
+
+#include "editor/edit_tools.h"
+#include "editor/scene_document.h"
+#include "editor/scene_properties.h"
+#include "panels/number_field.h"
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
+#include "window/main_window.h"
+
+#include "edit/scene_edits.h"
+#include "format/scene.h"
+
+#include "test_main.h"
+
+#include <QAction>
+#include <QDir>
+#include <QLineEdit>
+#include <QScreen>
+#include <QTest>
+#include <QUndoStack>
+
+#include <cmath>
+#include <numbers>
+
+using namespace rigidlab;
+using namespace rigidlab::ui;
+namespace edit = rigidlab::lessons::edit;
+using physics::Vec2;
+
+namespace {
+
+constexpr double kTolerance = 1e-9;
+
+/// Where two scenes differ, the first field found; empty when they are the same.
+QString difference(const lessons::Scene& a, const lessons::Scene& b)
+{
+    if (a.title != b.title || a.description != b.description) {
+        return QStringLiteral("title or description");
+    }
+    const auto& wa = a.world;
+    const auto& wb = b.world;
+    if (wa.gravity != wb.gravity || wa.dt != wb.dt || wa.integrator != wb.integrator ||
+        wa.solver != wb.solver || wa.iterations != wb.iterations ||
+        wa.restitution != wb.restitution || wa.friction != wb.friction) {
+        return QStringLiteral("world");
+    }
+    if (a.bodies.size() != b.bodies.size()) {
+        return QStringLiteral("body count %1 vs %2").arg(a.bodies.size()).arg(b.bodies.size());
+    }
+    for (size_t i = 0; i < a.bodies.size(); ++i) {
+        const auto& x = a.bodies[i];
+        const auto& y = b.bodies[i];
+        const bool same =
+            x.name == y.name && x.type == y.type && x.position == y.position &&
+            x.angle == y.angle && x.velocity == y.velocity &&
+            x.angularVelocity == y.angularVelocity && x.density == y.density && x.mass == y.mass &&
+            x.restitution == y.restitution && x.friction == y.friction && x.collide == y.collide &&
+            x.shape.geometry.index() == y.shape.geometry.index() &&
+            (x.shape.asCircle() ? x.shape.asCircle()->radius == y.shape.asCircle()->radius
+                                : x.shape.asPolygon()->vertices == y.shape.asPolygon()->vertices);
+        if (!same) {
+            return QStringLiteral("bodies[%1]").arg(i);
+        }
+    }
+    if (a.springs.size() != b.springs.size() || a.joints.size() != b.joints.size() ||
+        a.originalVertices != b.originalVertices) {
+        return QStringLiteral("springs, joints or original vertices");
+    }
+    for (size_t i = 0; i < a.springs.size(); ++i) {
+        const auto& x = a.springs[i];
+        const auto& y = b.springs[i];
+        if (x.a != y.a || x.b != y.b || x.anchorA != y.anchorA || x.anchorB != y.anchorB ||
+            x.stiffness != y.stiffness || x.damping != y.damping || x.restLength != y.restLength) {
+            return QStringLiteral("springs[%1]").arg(i);
+        }
+    }
+    for (size_t i = 0; i < a.joints.size(); ++i) {
+        const auto& x = a.joints[i];
+        const auto& y = b.joints[i];
+        if (x.a != y.a || x.b != y.b || x.anchorA != y.anchorA || x.anchorB != y.anchorB) {
+            return QStringLiteral("joints[%1]").arg(i);
+        }
+    }
+    return {};
+}
+
+/// An editor on a view of its own, on an empty scene.
+struct Rig {
+    SimulationController simulation;
+    SceneDocument document;
+    WorldView view{simulation};
+    EditTools tools{view, simulation, document};
+    SceneProperties properties{tools, document};
+    lessons::Scene opened;
+    double g = 0; ///< the grid step [m]; every point below is on the grid
+
+    Rig()
+    {
+        opened.title = QStringLiteral("Empty");
+        opened.world.gravity = Vec2(0.0, -9.81);
+        document.reset(opened, {});
+        simulation.loadScene(opened, {});
+        view.resize(900, 700);
+        view.show();
+        tools.setEditing(true);
+        g = tools.gridStep();
+    }
+
+    const lessons::Scene& scene() const { return document.scene(); }
+    QWidget* viewport() { return view.viewport(); }
+    QPoint px(double x, double y) const { return view.mapFromScene(QPointF(x * g, y * g)); }
+    void use(EditTool tool) { tools.toolAction(tool)->trigger(); }
+    void drag(QPoint from, QPoint to)
+    {
+        QTest::mousePress(viewport(), Qt::LeftButton, {}, from);
+        QTest::mouseMove(viewport(), (from + to) / 2);
+        QTest::mouseMove(viewport(), to);
+        QTest::mouseRelease(viewport(), Qt::LeftButton, {}, to);
+    }
+    void click(QPoint at) { QTest::mouseClick(viewport(), Qt::LeftButton, {}, at); }
+    int index(const char* id) const
+    {
+        const auto found = scene().bodyIndex(QString::fromLatin1(id));
+        return found ? *found : -1;
+    }
+    const physics::BodyDef& body(const char* id) const
+    {
+        return scene().bodies[static_cast<size_t>(index(id))];
+    }
+};
+
+/// Types `text` into a field as a person does, replacing what it shows.
+void type(QLineEdit* field, const QString& text)
+{
+    field->clear();
+    QTest::keyClicks(field, text);
+}
+
+bool near(const Vec2& a, const Vec2& b)
+{
+    return (a - b).norm() <= kTolerance;
+}
+
+} // namespace
+
+class TestEditor : public QObject {
+    Q_OBJECT
+private slots:
+    void editModePausesAndRunsAsEdited();
+    void drawsEveryKindAndUndoesBackToTheOpenedScene();
+    void refusesDegenerateShapesWithTheirMessage();
+    void warnsOfOverlapsAndHulls();
+    void keysNudgeAndTurn();
+    void teachersTaskInTheWindow();
+    void lessonLocksTools();
+};
+
+void TestEditor::editModePausesAndRunsAsEdited()
+{
+    Rig rig;
+    QVERIFY(rig.tools.editing());
+    QVERIFY(rig.tools.editAction()->isChecked());
+    QVERIFY(!rig.simulation.isRunning());
+    QVERIFY(rig.tools.toolAction(EditTool::Circle)->isEnabled());
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(0, 4), rig.px(1, 4));
+    QCOMPARE(rig.scene().bodies.size(), size_t(1));
+    // The world shows the scene as edited, at its start.
+    QCOMPARE(rig.simulation.world().bodies().size(), size_t(1));
+    QCOMPARE(rig.simulation.world().time(), 0.0);
+    // Run (Space's action) leaves Edit mode and runs the scene as edited.
+    rig.simulation.setRunning(true);
+    QVERIFY(!rig.tools.editing());
+    QVERIFY(rig.simulation.isRunning());
+    QVERIFY(!rig.tools.toolAction(EditTool::Circle)->isEnabled());
+    QCOMPARE(rig.simulation.world().bodies().size(), size_t(1));
+    rig.tools.editAction()->trigger();
+    QVERIFY(rig.tools.editing());
+    QVERIFY(!rig.simulation.isRunning());
+}
+
+void TestEditor::drawsEveryKindAndUndoesBackToTheOpenedScene()
+{
+    Rig rig;
+    const double g = rig.g;
+    QUndoStack& undo = *rig.document.undoStack();
+
+    rig.use(EditTool::Ground);
+    rig.drag(rig.px(-10, -1), rig.px(10, 0));
+    QCOMPARE(rig.body("ground1").type, physics::BodyType::Static);
+    QVERIFY(near(rig.body("ground1").position, Vec2(0.0, -0.5 * g)));
+
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(-4, 2), rig.px(-3, 2));
+    QVERIFY(near(rig.body("circle1").position, Vec2(-4 * g, 2 * g)));
+    QVERIFY(std::abs(rig.body("circle1").shape.asCircle()->radius - g) < kTolerance);
+
+    rig.use(EditTool::Box);
+    rig.drag(rig.px(2, 0), rig.px(4, 2));
+    QVERIFY(near(rig.body("box1").position, Vec2(3 * g, g)));
+    QVERIFY2(rig.tools.lastMessage().isEmpty(), qPrintable(rig.tools.lastMessage()));
+
+    rig.use(EditTool::Polygon);
+    rig.click(rig.px(6, 0));
+    rig.click(rig.px(8, 0));
+    rig.click(rig.px(7, 2));
+    QCOMPARE(rig.tools.polygonPoints().size(), size_t(3));
+    QTest::keyClick(&rig.view, Qt::Key_Return);
+    QVERIFY(rig.index("polygon1") >= 0);
+    QVERIFY(rig.tools.polygonPoints().empty());
+    QVERIFY(std::abs(physics::computeMass(rig.body("polygon1").shape, 1.0).area - 2 * g * g) <
+            1e-9);
+
+    // A pendulum: a ball pinned to the world above its centre.
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(-8, 6), rig.px(-7, 6));
+    rig.use(EditTool::Pin);
+    rig.click(rig.px(-8, 6));  // the ball's centre
+    rig.click(rig.px(-8, 12)); // empty space: the world
+    QCOMPARE(rig.scene().joints.size(), size_t(1));
+    QCOMPARE(rig.scene().joints[0].a, rig.index("circle2"));
+    QCOMPARE(rig.scene().joints[0].b, physics::kWorld);
+    QVERIFY(near(rig.scene().joints[0].anchorB, Vec2(-8 * g, 6 * g)));
+
+    // A spring from the world down to the box's centre (snapped onto it).
+    rig.use(EditTool::Spring);
+    rig.drag(rig.px(3, 8), rig.px(3, 1));
+    QCOMPARE(rig.scene().springs.size(), size_t(1));
+    QCOMPARE(rig.scene().springs[0].a, physics::kWorld);
+    QCOMPARE(rig.scene().springs[0].b, rig.index("box1"));
+    QVERIFY(std::abs(rig.scene().springs[0].restLength - 7 * g) < kTolerance);
+    QCOMPARE(rig.scene().springs[0].stiffness, EditTools::kSpringStiffness);
+
+    // Move: one drag is one step of the history.
+    rig.use(EditTool::Select);
+    const int before = undo.count();
+    rig.drag(rig.px(3, 1), rig.px(3, 3));
+    QCOMPARE(undo.count(), before + 1);
+    QVERIFY(near(rig.body("box1").position, Vec2(3 * g, 3 * g)));
+    QCOMPARE(rig.tools.selectedBody(), rig.index("box1"));
+
+    // Rotate by the handle: a quarter turn about the origin.
+    rig.use(EditTool::Rotate);
+    rig.drag(rig.px(3.8, 3), rig.px(3, 3.8));
+    QVERIFY2(std::abs(rig.body("box1").angle - std::numbers::pi / 2) < 1e-9,
+             qPrintable(QString::number(rig.body("box1").angle)));
+
+    // Properties, typed into their fields: the box's mass, a spring's stiffness, gravity.
+    rig.use(EditTool::Select);
+    rig.click(rig.px(3, 3));
+    QCOMPARE(rig.tools.selectedBody(), rig.index("box1"));
+    NumberField* mass = rig.properties.field(QStringLiteral("mass"));
+    QVERIFY(mass && mass->isVisibleTo(&rig.properties));
+    type(mass, QStringLiteral("3"));
+    QVERIFY(mass->commit());
+    QCOMPARE(rig.body("box1").mass, 3.0);
+    NumberField* restitution = rig.properties.field(QStringLiteral("restitution"));
+    type(restitution, QStringLiteral("1.5"));
+    QVERIFY(!restitution->commit()); // refused by the field, with the limits' range
+    QVERIFY2(restitution->error().contains(QStringLiteral("1")), qPrintable(restitution->error()));
+    QCOMPARE(rig.body("box1").restitution, -1.0); // the world's, as before
+    rig.click(rig.px(3, 6)); // on the spring from (3, 8) down to the box at (3, 3)
+    QCOMPARE(rig.tools.selectedSpring(), 0);
+    QCOMPARE(rig.tools.selectedBody(), -1);
+    NumberField* stiffness = rig.properties.field(QStringLiteral("stiffness"));
+    QVERIFY(stiffness->isVisibleTo(&rig.properties));
+    type(stiffness, QStringLiteral("120"));
+    QVERIFY(stiffness->commit());
+    QCOMPARE(rig.scene().springs[0].stiffness, 120.0);
+    NumberField* gravity = rig.properties.field(QStringLiteral("gravityY"));
+    type(gravity, QStringLiteral("-1.62"));
+    QVERIFY(gravity->commit());
+    QCOMPARE(rig.scene().world.gravity.y(), -1.62);
+    QCOMPARE(rig.simulation.world().def().gravity.y(), -1.62); // the world follows the document
+
+    // Duplicate the polygon, delete the first circle (the others' indices follow).
+    rig.use(EditTool::Duplicate);
+    rig.click(rig.px(7, 0.5));
+    QVERIFY(rig.index("polygon2") >= 0);
+    QVERIFY(rig.body("polygon2").position.x() > rig.body("polygon1").position.x());
+    rig.use(EditTool::Delete);
+    rig.click(rig.px(-4, 2));
+    QCOMPARE(rig.index("circle1"), -1);
+    QCOMPARE(rig.scene().joints[0].a, rig.index("circle2"));
+    QCOMPARE(rig.scene().springs[0].b, rig.index("box1"));
+
+    // Undo everything: the scene as opened, field by field; redo everything.
+    const lessons::Scene edited = rig.scene();
+    while (undo.canUndo()) {
+        undo.undo();
+    }
+    QVERIFY2(difference(rig.scene(), rig.opened).isEmpty(),
+             qPrintable(difference(rig.scene(), rig.opened)));
+    QCOMPARE(rig.simulation.world().bodies().size(), size_t(0));
+    while (undo.canRedo()) {
+        undo.redo();
+    }
+    QVERIFY2(difference(rig.scene(), edited).isEmpty(),
+             qPrintable(difference(rig.scene(), edited)));
+    QCOMPARE(rig.simulation.world().bodies().size(), edited.bodies.size());
+}
+
+void TestEditor::refusesDegenerateShapesWithTheirMessage()
+{
+    Rig rig;
+    rig.use(EditTool::Polygon);
+    rig.click(rig.px(0, 0));
+    rig.click(rig.px(2, 2));
+    rig.click(rig.px(4, 4));
+    QTest::keyClick(&rig.view, Qt::Key_Return);
+    QVERIFY(rig.scene().bodies.empty());
+    QVERIFY2(rig.tools.lastMessage().contains(QStringLiteral("the polygon has no area")),
+             qPrintable(rig.tools.lastMessage()));
+
+    rig.use(EditTool::Circle);
+    rig.click(rig.px(1, 1)); // no drag: no radius
+    QVERIFY(rig.scene().bodies.empty());
+    QVERIFY2(rig.tools.lastMessage().startsWith(QStringLiteral("circle1: shape.radius: must be")),
+             qPrintable(rig.tools.lastMessage()));
+
+    rig.use(EditTool::Box);
+    rig.drag(rig.px(0, 0), rig.px(2, 2));
+    rig.use(EditTool::Spring);
+    rig.click(rig.px(1, 1));
+    QVERIFY(rig.scene().springs.empty());
+    QVERIFY2(rig.tools.lastMessage().contains(QStringLiteral("zero length")),
+             qPrintable(rig.tools.lastMessage()));
+
+    rig.use(EditTool::Pin);
+    rig.click(rig.px(1, 1));
+    rig.click(rig.px(1.5, 1.5)); // the same box
+    QVERIFY(rig.scene().joints.empty());
+    QVERIFY2(rig.tools.lastMessage().endsWith(QStringLiteral("a pin joins two bodies")),
+             qPrintable(rig.tools.lastMessage()));
+    QCOMPARE(rig.document.undoStack()->count(), 1); // the box alone
+}
+
+void TestEditor::warnsOfOverlapsAndHulls()
+{
+    Rig rig;
+    rig.use(EditTool::Polygon);
+    for (const auto& [x, y] : {std::pair{0.0, 0.0}, {4.0, 0.0}, {2.0, 1.0}, {4.0, 4.0}}) {
+        rig.click(rig.px(x, y));
+    }
+    QTest::mouseDClick(rig.viewport(), Qt::LeftButton, {}, rig.px(0, 4));
+    QCOMPARE(rig.scene().bodies.size(), size_t(1));
+    QCOMPARE(rig.scene().bodies[0].shape.asPolygon()->vertices.size(), size_t(4));
+    QVERIFY2(rig.tools.lastMessage().contains(QStringLiteral("not convex")),
+             qPrintable(rig.tools.lastMessage()));
+
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(4, 2), rig.px(5, 2));           // into the polygon's right edge
+    QCOMPARE(rig.scene().bodies.size(), size_t(2)); // allowed...
+    QVERIFY2(rig.tools.lastMessage().contains(QStringLiteral("polygon1 overlaps circle1")),
+             qPrintable(rig.tools.lastMessage())); // ...but said
+}
+
+void TestEditor::keysNudgeAndTurn()
+{
+    Rig rig;
+    rig.use(EditTool::Box);
+    rig.drag(rig.px(0, 0), rig.px(2, 2));
+    QCOMPARE(rig.tools.selectedBody(), 0);
+    rig.view.setFocus();
+    QTest::keyClick(&rig.view, Qt::Key_Right);
+    QTest::keyClick(&rig.view, Qt::Key_Up);
+    QVERIFY(near(rig.body("box1").position, Vec2(2 * rig.g, 2 * rig.g)));
+    QTest::keyClick(&rig.view, Qt::Key_Q);
+    QVERIFY(std::abs(rig.body("box1").angle - 5.0 * std::numbers::pi / 180.0) < 1e-12);
+    QTest::keyClick(&rig.view, Qt::Key_E);
+    QTest::keyClick(&rig.view, Qt::Key_E);
+    QVERIFY(std::abs(rig.body("box1").angle + 5.0 * std::numbers::pi / 180.0) < 1e-12);
+    rig.tools.deleteSelectionAction()->trigger();
+    QVERIFY(rig.scene().bodies.empty());
+}
+
+void TestEditor::teachersTaskInTheWindow()
+{
+    // A ramp with a ball and a box on it, a pendulum on a pin and a spring oscillator, drawn
+    // in the window with its toolbar's actions, then run. With RIGIDLAB_EDITOR_SHOTS set to a
+    // folder, the window is written there before and after the run (screenshots under Xvfb).
+    MainWindow w;
+    w.resize(1600, 1000);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.newScene());
+    EditTools& tools = w.editTools();
+    WorldView& view = w.view();
+    tools.editAction()->trigger();
+    QVERIFY(tools.editing());
+    // The new scene's ground goes: this floor is drawn below.
+    QCOMPARE(w.document()->scene().bodies.size(), size_t(1));
+    tools.toolAction(EditTool::Delete)->trigger();
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, view.mapFromScene(QPointF(0, -0.25)));
+    QVERIFY(w.document()->scene().bodies.empty());
+    const double g = tools.gridStep();
+    const QPointF middle = view.mapToScene(view.viewport()->rect().center());
+    const Vec2 c(std::round(middle.x() / g) * g, std::round(middle.y() / g) * g);
+    const auto px = [&](double x, double y) {
+        return view.mapFromScene(QPointF(c.x() + x * g, c.y() + y * g));
+    };
+    const auto drag = [&](QPoint a, QPoint b) {
+        QTest::mousePress(view.viewport(), Qt::LeftButton, {}, a);
+        QTest::mouseMove(view.viewport(), (a + b) / 2);
+        QTest::mouseMove(view.viewport(), b);
+        QTest::mouseRelease(view.viewport(), Qt::LeftButton, {}, b);
+    };
+    const auto key = [&](Qt::Key k, int times) {
+        for (int i = 0; i < times; ++i) {
+            QTest::keyClick(&view, k);
+        }
+    };
+    const auto scene = [&]() -> const lessons::Scene& { return w.controller().scene(); };
+
+    tools.toolAction(EditTool::Ground)->trigger();
+    drag(px(-12, -6), px(12, -5)); // the floor
+    drag(px(-9, -2), px(-1, -1));  // the ramp, turned down to the right by 20°
+    key(Qt::Key_E, 4);
+    tools.toolAction(EditTool::Circle)->trigger();
+    drag(px(-7, 1), px(-6, 1));
+    tools.toolAction(EditTool::Box)->trigger();
+    drag(px(-5, 0), px(-4, 1));
+    // The pendulum: a rod turned by 30°, pinned to the world at its upper end.
+    drag(px(1, -1), px(2, 3));
+    key(Qt::Key_E, 6);
+    tools.snapAction()->setChecked(false);
+    tools.toolAction(EditTool::Pin)->trigger();
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, px(1.5 + 0.9, 1 + 1.56));
+    QTest::mouseClick(view.viewport(), Qt::LeftButton, {}, px(2, 6));
+    tools.snapAction()->setChecked(true);
+    // The spring oscillator: a box hung from the world by a spring.
+    tools.toolAction(EditTool::Box)->trigger();
+    drag(px(6, -1), px(8, 0));
+    tools.toolAction(EditTool::Spring)->trigger();
+    drag(px(7, 4), px(7, -0.5));
+    tools.toolAction(EditTool::Select)->trigger();
+    tools.selectBody(scene().bodyIndex(QStringLiteral("box2")).value_or(-1));
+
+    QCOMPARE(scene().bodies.size(), size_t(6));
+    QCOMPARE(scene().joints.size(), size_t(1));
+    QCOMPARE(scene().springs.size(), size_t(1));
+    QVERIFY2(edit::overlapMessage(scene()).isEmpty(), qPrintable(edit::overlapMessage(scene())));
+    const QString shots = qEnvironmentVariable("RIGIDLAB_EDITOR_SHOTS");
+    if (!shots.isEmpty()) {
+        view.fitScene();
+        QDir().mkpath(shots);
+        QVERIFY(w.grab().save(QDir(shots).filePath(QStringLiteral("editor-edit.png"))));
+    }
+
+    const lessons::Scene edited = scene();
+    tools.editAction()->trigger(); // leave: runs the scene as edited
+    QVERIFY(!tools.editing());
+    QVERIFY(w.controller().isRunning());
+    for (int i = 0; i < 1500; ++i) {
+        w.controller().stepForward();
+    }
+    const auto& bodies = w.controller().world().bodies();
+    const auto index = [&](const char* id) {
+        return static_cast<size_t>(*edited.bodyIndex(QString::fromLatin1(id)));
+    };
+    QVERIFY(bodies[index("circle1")].position.x() > edited.bodies[index("circle1")].position.x());
+    QVERIFY(bodies[index("box2")].angle != edited.bodies[index("box2")].angle); // it swings
+    QVERIFY(bodies[index("box3")].position.y() < edited.bodies[index("box3")].position.y());
+    if (!shots.isEmpty()) {
+        QVERIFY(w.grab().save(QDir(shots).filePath(QStringLiteral("editor-run.png"))));
+    }
+}
+
+void TestEditor::lessonLocksTools()
+{
+    Rig rig;
+    rig.tools.setAllowedTools(QStringList{QStringLiteral("select"), QStringLiteral("circle")});
+    QVERIFY(rig.tools.locked(EditTool::Box));
+    QVERIFY(!rig.tools.locked(EditTool::Circle));
+    QVERIFY(!rig.tools.toolAction(EditTool::Box)->isEnabled());
+    QVERIFY(rig.tools.toolAction(EditTool::Circle)->isEnabled());
+    QVERIFY2(rig.tools.toolAction(EditTool::Box)->toolTip().contains(QStringLiteral("locks")),
+             qPrintable(rig.tools.toolAction(EditTool::Box)->toolTip()));
+    // The locked tool's key is refused out loud; the tool in use stays.
+    rig.view.setFocus();
+    QTest::keyClick(&rig.view, Qt::Key_X);
+    QCOMPARE(rig.tools.tool(), EditTool::Select);
+    QVERIFY2(rig.tools.lastMessage().contains(QStringLiteral("locks the Box tool")),
+             qPrintable(rig.tools.lastMessage()));
+    rig.tools.setTool(EditTool::Spring);
+    QCOMPARE(rig.tools.tool(), EditTool::Select);
+    rig.use(EditTool::Circle);
+    QCOMPARE(rig.tools.tool(), EditTool::Circle);
+    rig.tools.setAllowedTools(std::nullopt);
+    QVERIFY(rig.tools.toolAction(EditTool::Box)->isEnabled());
+}
+
+RIGIDLAB_TEST_MAIN(TestEditor)
+#include "test_editor.moc"

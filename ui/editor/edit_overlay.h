@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// What Edit mode draws over the world: the grid, the selected body's outline and rotate
+// handle, overlapping bodies, and the shape, pin or spring being drawn with its size.
+
+#include <QGraphicsItem>
+
+namespace rigidlab::ui {
+
+class EditTools;
+
+class EditOverlay : public QGraphicsItem {
+public:
+    explicit EditOverlay(const EditTools& tools);
+
+    QRectF boundingRect() const override;
+    void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
+
+private:
+    const EditTools& m_tools;
+};
+
+} // namespace rigidlab::ui

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Edit mode and the editor's tools on the world view (issue 15).
+//
+// EditTools watches the view's mouse and keys through an event filter while Edit mode is on,
+// turns each gesture into one of the pure scene edits of lessons/edit/ and hands the edited
+// copy to the SceneDocument (one undo step per gesture: a drag merges). It never touches a
+// world: while editing it reloads the simulation from the document, at t = 0, after each
+// change, so what the view shows is the scene as edited. Entering Edit mode pauses; leaving it
+// runs the scene as edited. Refusals and warnings go out through message() for the status bar.
+
+#include "rigidlab/physics/forces.h"
+#include "rigidlab/physics/math.h"
+
+#include <QObject>
+#include <QPoint>
+#include <QString>
+#include <QStringList>
+
+#include <array>
+#include <optional>
+#include <vector>
+
+class QAction;
+class QActionGroup;
+class QEvent;
+class QKeyEvent;
+class QMouseEvent;
+
+namespace rigidlab::lessons::edit {
+struct EditResult;
+}
+
+namespace rigidlab::ui {
+
+class EditOverlay;
+class SceneDocument;
+class SimulationController;
+class WorldView;
+
+/// The editor's tools, in the order of the toolbar.
+enum class EditTool {
+    Select,    ///< select and drag a body; arrow keys nudge
+    Rotate,    ///< turn a body by its handle; Q and E by 5°
+    Circle,    ///< drag from the centre
+    Box,       ///< drag a rectangle
+    Polygon,   ///< click the vertices; double-click or Enter closes
+    Ground,    ///< a static box: ground, a wall
+    Pin,       ///< click a body point, then a second body or empty space (the world)
+    Spring,    ///< drag from one point to another (a body or the world at each end)
+    Delete,    ///< click a body to delete it
+    Duplicate, ///< click a body to copy it beside itself
+};
+inline constexpr int kEditToolCount = 10;
+
+class EditTools : public QObject {
+    Q_OBJECT
+public:
+    EditTools(WorldView& view, SimulationController& simulation, SceneDocument& document,
+              QObject* parent = nullptr);
+
+    /// Edit mode on and off (checkable).
+    QAction* editAction() const { return m_editAction; }
+    QAction* toolAction(EditTool tool) const { return m_toolActions[static_cast<size_t>(tool)]; }
+    /// Snap to the grid (checkable; the grid step is shown in its text).
+    QAction* snapAction() const { return m_snapAction; }
+    /// Deletes the selected body (Delete).
+    QAction* deleteSelectionAction() const { return m_deleteSelection; }
+    /// Every action, in toolbar order (the Edit toggle first).
+    QList<QAction*> actions() const;
+
+    bool editing() const { return m_editing; }
+    EditTool tool() const { return m_tool; }
+    /// The selected body (an index into the document's scene), -1 for none.
+    int selectedBody() const { return m_selected; }
+    /// The selected spring (an index into the document's springs), -1 for none.
+    int selectedSpring() const { return m_selectedSpring; }
+    /// The grid's step now [m]: a round number about kGridPixels wide at this zoom.
+    double gridStep() const;
+    /// A lesson step's lock: only the tools named (lessons::kEditorToolNames) may be used, the
+    /// others are disabled, say so in their tooltip, and their keys are refused with a message;
+    /// nullopt unlocks every tool.
+    void setAllowedTools(const std::optional<QStringList>& names);
+    /// Whether a lesson step locks this tool.
+    bool locked(EditTool tool) const;
+
+    /// Whether the editor reloads the simulation from the document after each change (the
+    /// default). A window that does so itself for every change turns it off.
+    void setReloadsWorld(bool on) { m_reloadsWorld = on; }
+    /// Whether the editor is reloading the simulation from its document just now (a window
+    /// that follows every scene loaded into the simulation leaves these alone).
+    bool reloading() const { return m_reloading; }
+    /// The last message sent (refusal, warning or the size being drawn).
+    const QString& lastMessage() const { return m_lastMessage; }
+    /// The polygon being drawn, its points [m] (for tests and the overlay).
+    const std::vector<physics::Vec2>& polygonPoints() const { return m_polygon; }
+
+    /// The stiffness of a new spring [N/m] (the inspector changes it).
+    static constexpr double kSpringStiffness = 50.0;
+    /// The grid's step is a round number of metres about this many pixels wide.
+    static constexpr double kGridPixels = 40.0;
+
+public slots:
+    void setEditing(bool on);
+    void setTool(rigidlab::ui::EditTool tool);
+    void selectBody(int body);
+    void selectSpring(int spring);
+    /// Turns the selected body by `radians` about its origin (Q, E).
+    void rotateSelected(double radians);
+    /// Moves the selected body by `offset` [m] (arrow keys).
+    void nudgeSelected(const physics::Vec2& offset);
+    void deleteSelected();
+    /// Closes the polygon being drawn (Enter, double-click).
+    void closePolygon();
+
+signals:
+    void editingChanged(bool on);
+    /// For the status bar: a refusal, a warning, the size being drawn; empty clears it.
+    void message(const QString& text);
+    /// A body or a spring was selected, or the selection cleared.
+    void selectionChanged();
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    friend class EditOverlay;
+    struct Drag {
+        bool active = false;
+        physics::Vec2 start = physics::Vec2::Zero();      ///< where the press was [m], snapped
+        physics::Vec2 current = physics::Vec2::Zero();    ///< [m], snapped
+        physics::Vec2 grabOffset = physics::Vec2::Zero(); ///< body origin minus the press [m]
+        double startAngle = 0.0;                          ///< the body's angle at the press [rad]
+        double pointerAngle = 0.0; ///< the pointer's angle about the origin at the press [rad]
+        int body = -1;
+        physics::BodyId bodyA = physics::kWorld; ///< a spring's first end
+        bool moved = false;
+        int mergeId = -1;
+    };
+
+    bool mousePress(QMouseEvent* event);
+    bool mouseMove(QMouseEvent* event);
+    bool mouseRelease(QMouseEvent* event);
+    bool keyPress(QKeyEvent* event);
+    /// Keys the window's shortcuts would take that Edit mode uses (arrows, Q, E, Enter...).
+    bool wantsKey(const QKeyEvent* event) const;
+
+    /// The body under a world point, the topmost (last drawn), or -1.
+    int bodyAt(const physics::Vec2& p) const;
+    /// The spring within a few pixels of a world point, or -1.
+    int springAt(const physics::Vec2& p) const;
+    /// A point snapped to another body's vertex within a few pixels, else to the grid when
+    /// snapping is on; `except` is left out (the body being moved).
+    physics::Vec2 snapped(const physics::Vec2& p, int except = -1) const;
+    physics::Vec2 snapToGrid(const physics::Vec2& p) const;
+    /// Applies an edit (or says why not); returns whether it was applied.
+    bool apply(const QString& what, const lessons::edit::EditResult& result, int mergeId = -1);
+    void say(const QString& text);
+    /// "r = 0,5 m" and the like, in the locale.
+    QString metres(double v) const;
+    void reloadWorld();
+    void updateSnapText();
+    void refreshOverlay();
+    void cancelGesture();
+
+    WorldView& m_view;
+    SimulationController& m_simulation;
+    SceneDocument& m_document;
+    EditOverlay* m_overlay = nullptr;
+    QAction* m_editAction = nullptr;
+    QActionGroup* m_toolGroup = nullptr;
+    std::array<QAction*, kEditToolCount> m_toolActions{};
+    QAction* m_snapAction = nullptr;
+    QAction* m_deleteSelection = nullptr;
+    bool m_editing = false;
+    bool m_reloading = false;
+    bool m_reloadsWorld = true;
+    std::optional<QStringList> m_allowedTools; ///< see setAllowedTools
+    EditTool m_tool = EditTool::Select;
+    int m_selected = -1;
+    int m_selectedSpring = -1;
+    Drag m_drag;
+    std::vector<physics::Vec2> m_polygon;            ///< points of the polygon being drawn [m]
+    physics::Vec2 m_pointer = physics::Vec2::Zero(); ///< last pointer position [m], snapped
+    /// The pin being placed: its body and point, after the first click.
+    std::optional<std::pair<physics::BodyId, physics::Vec2>> m_pinStart;
+    int m_nextMergeId = 1000;
+    QString m_lastMessage;
+};
+
+} // namespace rigidlab::ui

@@ -1,0 +1,261 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "editor/scene_properties.h"
+
+#include "editor/edit_tools.h"
+#include "editor/scene_document.h"
+
+#include "common/display_names.h"
+#include "edit/scene_edits.h"
+#include "format/limits.h"
+#include "panels/number_field.h"
+
+#include "rigidlab/physics/contact.h"
+#include "rigidlab/physics/integrator.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLineEdit>
+#include <QVBoxLayout>
+
+namespace rigidlab::ui {
+
+namespace edit = lessons::edit;
+namespace limits = lessons::limits;
+
+namespace {
+
+/// Merge ids of the fields' edits: one per field, well apart from the tools' drag ids.
+constexpr int kFieldMergeBase = 1 << 20;
+
+} // namespace
+
+SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWidget* parent)
+    : QWidget(parent), m_tools(tools), m_document(document)
+{
+    auto* layout = new QVBoxLayout(this);
+    // At least as tall as its rows, so that a scroll area scrolls rather than squeezes them.
+    layout->setSizeConstraint(QLayout::SetMinimumSize);
+
+    m_bodyBox = new QGroupBox(tr("Body"), this);
+    auto* body = new QFormLayout(m_bodyBox);
+    m_id = new QLineEdit(m_bodyBox);
+    m_id->setObjectName(QStringLiteral("id"));
+    body->addRow(tr("Id"), m_id);
+    m_type = new QComboBox(m_bodyBox);
+    m_type->setObjectName(QStringLiteral("type"));
+    m_type->addItem(tr("dynamic"), int(physics::BodyType::Dynamic));
+    m_type->addItem(tr("static"), int(physics::BodyType::Static));
+    m_type->addItem(tr("kinematic"), int(physics::BodyType::Kinematic));
+    body->addRow(tr("Type"), m_type);
+    struct BodyRow {
+        const char* name;
+        QString label;
+        edit::BodyNumber what;
+        limits::Range range;
+    };
+    const BodyRow bodyRows[] = {
+        {"density", tr("Density"), edit::BodyNumber::Density, limits::kDensity},
+        {"mass", tr("Mass"), edit::BodyNumber::Mass, limits::kMass},
+        {"restitution", tr("Restitution e"), edit::BodyNumber::Restitution, limits::kRestitution},
+        {"friction", tr("Friction μ"), edit::BodyNumber::Friction, limits::kFriction},
+        {"velocityX", tr("Velocity vx"), edit::BodyNumber::VelocityX, limits::kVelocity},
+        {"velocityY", tr("Velocity vy"), edit::BodyNumber::VelocityY, limits::kVelocity},
+        {"angularVelocity", tr("Angular vel. ω"), edit::BodyNumber::AngularVelocity,
+         limits::kAngularVelocity},
+    };
+    int merge = kFieldMergeBase;
+    for (const BodyRow& row : bodyRows) {
+        NumberField* f = addNumber(body, QLatin1String(row.name), row.label);
+        f->setRange(row.range, row.label);
+        const int mergeId = merge++;
+        const auto what = row.what;
+        const QString label = row.label;
+        connect(f, &NumberField::valueEdited, this, [this, what, label, mergeId](double v) {
+            const int selected = m_tools.selectedBody();
+            apply(tr("Set %1").arg(label),
+                  edit::setBodyNumber(m_document.scene(), selected, what, v),
+                  mergeId + 64 * selected);
+        });
+    }
+    connect(m_id, &QLineEdit::editingFinished, this, [this] {
+        const int selected = m_tools.selectedBody();
+        if (selected < 0 || m_id->text() == QString::fromStdString(
+                                                m_document.scene().bodies[size_t(selected)].name)) {
+            return;
+        }
+        apply(tr("Rename %1").arg(m_id->text()),
+              edit::setBodyId(m_document.scene(), selected, m_id->text()), -1);
+    });
+    connect(m_type, &QComboBox::activated, this, [this] {
+        apply(tr("Set type"),
+              edit::setBodyType(m_document.scene(), m_tools.selectedBody(),
+                                physics::BodyType(m_type->currentData().toInt())),
+              -1);
+    });
+    layout->addWidget(m_bodyBox);
+
+    m_springBox = new QGroupBox(tr("Spring"), this);
+    auto* spring = new QFormLayout(m_springBox);
+    struct SpringRow {
+        const char* name;
+        QString label;
+        edit::SpringNumber what;
+        limits::Range range;
+    };
+    const SpringRow springRows[] = {
+        {"stiffness", tr("Stiffness k"), edit::SpringNumber::Stiffness, limits::kStiffness},
+        {"damping", tr("Damping c"), edit::SpringNumber::Damping, limits::kDamping},
+        {"restLength", tr("Rest length"), edit::SpringNumber::RestLength, limits::kRestLength},
+    };
+    for (const SpringRow& row : springRows) {
+        NumberField* f = addNumber(spring, QLatin1String(row.name), row.label);
+        f->setRange(row.range, row.label);
+        const int mergeId = merge++;
+        const auto what = row.what;
+        const QString label = row.label;
+        connect(f, &NumberField::valueEdited, this, [this, what, label, mergeId](double v) {
+            const int selected = m_tools.selectedSpring();
+            apply(tr("Set %1").arg(label),
+                  edit::setSpringNumber(m_document.scene(), selected, what, v),
+                  mergeId + 64 * selected);
+        });
+    }
+    layout->addWidget(m_springBox);
+
+    auto* worldBox = new QGroupBox(tr("World"), this);
+    auto* world = new QFormLayout(worldBox);
+    struct WorldRow {
+        const char* name;
+        QString label;
+        edit::WorldNumber what;
+        limits::Range range;
+        double scale; ///< shown in a unit this many times the stored one (dt in ms)
+        QString unit;
+    };
+    const WorldRow worldRows[] = {
+        {"gravityX", tr("Gravity gx"), edit::WorldNumber::GravityX, limits::kGravity, 1.0, {}},
+        {"gravityY", tr("Gravity gy"), edit::WorldNumber::GravityY, limits::kGravity, 1.0, {}},
+        {"dt", tr("Time step dt"), edit::WorldNumber::Dt, limits::kDt, 1e3, tr("ms")},
+        {"iterations",
+         tr("Iterations"),
+         edit::WorldNumber::Iterations,
+         limits::kIterations,
+         1.0,
+         {}},
+    };
+    for (const WorldRow& row : worldRows) {
+        NumberField* f = addNumber(world, QLatin1String(row.name), row.label);
+        f->setRange(NumberField::scaled(row.range, row.scale), row.label, row.unit);
+        f->setInteger(row.what == edit::WorldNumber::Iterations);
+        const int mergeId = merge++;
+        const auto what = row.what;
+        const double scale = row.scale;
+        const QString label = row.label;
+        connect(f, &NumberField::valueEdited, this, [this, what, label, mergeId, scale](double v) {
+            apply(tr("Set %1").arg(label),
+                  edit::setWorldNumber(m_document.scene(), what, v / scale), mergeId);
+        });
+    }
+    m_integrator = new QComboBox(worldBox);
+    m_integrator->setObjectName(QStringLiteral("integrator"));
+    for (const physics::IntegratorKind kind : physics::kAllIntegrators) {
+        m_integrator->addItem(integratorDisplayName(kind), int(kind));
+    }
+    world->addRow(tr("Integrator"), m_integrator);
+    connect(m_integrator, &QComboBox::activated, this, [this] {
+        apply(tr("Set integrator"),
+              edit::setIntegrator(m_document.scene(),
+                                  physics::IntegratorKind(m_integrator->currentData().toInt())),
+              -1);
+    });
+    m_solver = new QComboBox(worldBox);
+    m_solver->setObjectName(QStringLiteral("solver"));
+    for (const physics::SolverKind kind :
+         {physics::SolverKind::SeedImpulse, physics::SolverKind::SequentialImpulse}) {
+        m_solver->addItem(solverDisplayName(kind), int(kind));
+    }
+    world->addRow(tr("Solver"), m_solver);
+    connect(m_solver, &QComboBox::activated, this, [this] {
+        apply(tr("Set solver"),
+              edit::setSolver(m_document.scene(),
+                              physics::SolverKind(m_solver->currentData().toInt())),
+              -1);
+    });
+    layout->addWidget(worldBox);
+    layout->addStretch(1);
+
+    for (NumberField* f : findChildren<NumberField*>()) {
+        connect(f, &NumberField::refused, this, &SceneProperties::refused);
+    }
+    connect(&m_document, &SceneDocument::sceneChanged, this, &SceneProperties::refresh);
+    connect(&m_tools, &EditTools::selectionChanged, this, &SceneProperties::refresh);
+    refresh();
+}
+
+NumberField* SceneProperties::addNumber(QFormLayout* form, const QString& name,
+                                        const QString& label)
+{
+    auto* f = new NumberField(this);
+    f->setObjectName(name);
+    form->addRow(label, f);
+    return f;
+}
+
+NumberField* SceneProperties::field(const QString& name) const
+{
+    return findChild<NumberField*>(name);
+}
+
+void SceneProperties::apply(const QString& what, const edit::EditResult& result, int mergeId)
+{
+    if (!result.ok) {
+        emit refused(result.error);
+        refresh(); // the value in force comes back
+        return;
+    }
+    m_document.apply(what, result.scene, mergeId);
+}
+
+void SceneProperties::refresh()
+{
+    const lessons::Scene& scene = m_document.scene();
+    const int selected = m_tools.selectedBody();
+    const bool hasBody = selected >= 0 && size_t(selected) < scene.bodies.size();
+    m_bodyBox->setVisible(hasBody);
+    if (hasBody) {
+        const physics::BodyDef& def = scene.bodies[size_t(selected)];
+        if (!m_id->hasFocus()) {
+            m_id->setText(QString::fromStdString(def.name));
+        }
+        m_type->setCurrentIndex(m_type->findData(int(def.type)));
+        const double area = physics::computeMass(def.shape, 1.0).area;
+        field(QStringLiteral("density"))->setValue(def.mass > 0 ? def.mass / area : def.density);
+        field(QStringLiteral("mass"))->setValue(def.mass > 0 ? def.mass : def.density * area);
+        // A body without its own restitution or friction takes the world's: shown as such.
+        field(QStringLiteral("restitution"))
+            ->setValue(def.restitution >= 0 ? def.restitution : scene.world.restitution);
+        field(QStringLiteral("friction"))
+            ->setValue(def.friction >= 0 ? def.friction : scene.world.friction);
+        field(QStringLiteral("velocityX"))->setValue(def.velocity.x());
+        field(QStringLiteral("velocityY"))->setValue(def.velocity.y());
+        field(QStringLiteral("angularVelocity"))->setValue(def.angularVelocity);
+    }
+    const int spring = m_tools.selectedSpring();
+    const bool hasSpring = spring >= 0 && size_t(spring) < scene.springs.size();
+    m_springBox->setVisible(hasSpring);
+    if (hasSpring) {
+        const physics::SpringDef& s = scene.springs[size_t(spring)];
+        field(QStringLiteral("stiffness"))->setValue(s.stiffness);
+        field(QStringLiteral("damping"))->setValue(s.damping);
+        field(QStringLiteral("restLength"))->setValue(s.restLength);
+    }
+    field(QStringLiteral("gravityX"))->setValue(scene.world.gravity.x());
+    field(QStringLiteral("gravityY"))->setValue(scene.world.gravity.y());
+    field(QStringLiteral("dt"))->setValue(scene.world.dt * 1e3);
+    field(QStringLiteral("iterations"))->setValue(scene.world.iterations);
+    m_integrator->setCurrentIndex(m_integrator->findData(int(scene.world.integrator)));
+    m_solver->setCurrentIndex(m_solver->findData(int(scene.world.solver)));
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The properties of what Edit mode has selected, and of the world, as fields: a body's id,
+// type, density or mass, restitution, friction, velocity and angular velocity; a spring's
+// stiffness, damping and rest length; the world's gravity, dt, integrator, solver and
+// iterations. Each change is one edit of the document (lessons/edit/), refused with the scene
+// loader's words when out of range (the fields refuse first, with the same limits); changes of
+// one field in a row merge into one step of the history.
+
+#include <QWidget>
+
+class QComboBox;
+class QFormLayout;
+class QGroupBox;
+class QLineEdit;
+
+namespace rigidlab::lessons::edit {
+struct EditResult;
+}
+
+namespace rigidlab::ui {
+
+class EditTools;
+class NumberField;
+class SceneDocument;
+
+class SceneProperties : public QWidget {
+    Q_OBJECT
+public:
+    SceneProperties(EditTools& tools, SceneDocument& document, QWidget* parent = nullptr);
+
+    /// The fields, by their objectName ("density", "stiffness", "gravityY", ...), for tests.
+    NumberField* field(const QString& name) const;
+    QLineEdit* idField() const { return m_id; }
+    QComboBox* typeBox() const { return m_type; }
+
+signals:
+    /// Something typed was refused; `message` says why (for the status bar).
+    void refused(const QString& message);
+
+public slots:
+    /// Shows the document's values for the selection.
+    void refresh();
+
+private:
+    NumberField* addNumber(QFormLayout* form, const QString& name, const QString& label);
+    void apply(const QString& what, const lessons::edit::EditResult& result, int mergeId);
+
+    EditTools& m_tools;
+    SceneDocument& m_document;
+    QGroupBox* m_bodyBox = nullptr;
+    QGroupBox* m_springBox = nullptr;
+    QLineEdit* m_id = nullptr;
+    QComboBox* m_type = nullptr;
+    QComboBox* m_integrator = nullptr;
+    QComboBox* m_solver = nullptr;
+};
+
+} // namespace rigidlab::ui

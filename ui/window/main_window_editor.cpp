@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// MainWindow's scene editor (issue 15): Edit mode and its tools on a toolbar of their own,
+// their messages in the status bar, the selection's properties in a dock. (The document, its
+// files and its history: main_window.cpp, main_window_save.cpp.)
+#include "window/main_window.h"
+
+#include "editor/edit_tools.h"
+#include "editor/scene_document.h"
+#include "editor/scene_properties.h"
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
+
+#include <QDockWidget>
+#include <QScrollArea>
+#include <QStatusBar>
+#include <QToolBar>
+
+namespace rigidlab::ui {
+
+void MainWindow::buildEditor()
+{
+    m_editTools = new EditTools(*m_view, *m_controller, *m_document, this);
+    m_editTools->setReloadsWorld(false); // the window reloads it after every change already
+    connect(m_editTools, &EditTools::message, this, [this](const QString& text) {
+        if (text.isEmpty()) {
+            statusBar()->clearMessage();
+        } else {
+            statusBar()->showMessage(text, 10000);
+        }
+    });
+    // Q and E turn the body in the scene while editing (EditTools), not in the world.
+    connect(m_editTools, &EditTools::editingChanged, this, [this](bool on) {
+        for (QAction* a : m_rotateActions) {
+            a->setEnabled(!on);
+        }
+    });
+
+    auto* toolbar = addToolBar(tr("Scene editor"));
+    toolbar->setObjectName(QStringLiteral("editToolbar"));
+    toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+    const QList<QAction*> actions = m_editTools->actions();
+    toolbar->addAction(actions.front());
+    toolbar->addSeparator();
+    for (qsizetype i = 1; i < actions.size(); ++i) {
+        toolbar->addAction(actions[i]);
+    }
+    addAction(m_editTools->deleteSelectionAction());
+
+    // The selection's properties, beside the inspector, shown in Edit mode.
+    auto* properties = new SceneProperties(*m_editTools, *m_document, this);
+    connect(properties, &SceneProperties::refused, this,
+            [this](const QString& why) { statusBar()->showMessage(why, 10000); });
+    auto* scroll = new QScrollArea(this);
+    scroll->setWidget(properties);
+    scroll->setWidgetResizable(true);
+    auto* dock = new QDockWidget(tr("Properties"), this);
+    dock->setObjectName(QStringLiteral("propertiesDock"));
+    dock->setWidget(scroll);
+    addDockWidget(Qt::LeftDockWidgetArea, dock);
+    dock->hide();
+    connect(m_editTools, &EditTools::editingChanged, dock, [this, dock](bool on) {
+        // A tab beside the inspector, wherever the layout has put the inspector since.
+        if (QDockWidget* inspector = m_docks.value(QStringLiteral("inspector")); on && inspector) {
+            tabifyDockWidget(inspector, dock);
+        }
+        dock->setVisible(on);
+        if (on) {
+            dock->raise();
+        }
+    });
+}
+
+} // namespace rigidlab::ui
