@@ -10,6 +10,7 @@
 #include "broad_phase.h"
 #include "contact_solver.h"
 #include "dynamics.h"
+#include "soft_solver.h"
 
 #include <Eigen/Core>
 
@@ -31,6 +32,7 @@ struct World::Scratch {
     std::vector<Vec2> velocityBefore, velocityAtStart;
     std::vector<double> angularVelocityBefore, angularVelocityAtStart;
     ContactSolver solver;
+    SoftSolver softSolver;
     /// The direct integration's accelerations [m/s^2] and [rad/s^2].
     std::vector<Vec2> acceleration;
     std::vector<double> angularAcceleration;

@@ -63,6 +63,9 @@ int main(int argc, char** argv)
 
     std::vector<std::unique_ptr<bench::BenchEngine>> engines;
     engines.push_back(bench::makeRigidLabBenchEngine());
+    bench::RigidLabBenchSettings soft;
+    soft.solver = physics::SolverKind::SoftStep;
+    engines.push_back(bench::makeRigidLabBenchEngine(soft));
 #ifdef RIGIDLAB_BENCH_BOX2D
     engines.push_back(bench::makeBox2dEngine());
 #endif
@@ -75,7 +78,7 @@ int main(int argc, char** argv)
         const bench::BenchScene scene = *bench::makeBenchScene(name);
         for (auto& engine : engines) {
             results.push_back(bench::runBench(*engine, scene, options));
-            std::fprintf(stderr, "  %-9s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
+            std::fprintf(stderr, "  %-13s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
                          name.c_str(), results.back().msPerStep);
         }
     }
