@@ -36,7 +36,10 @@ inline V load(const double* p)
     __builtin_memcpy(&v, p, sizeof(V));
     return v;
 }
-inline void store(double* p, const V& v) { __builtin_memcpy(p, &v, sizeof(V)); }
+inline void store(double* p, const V& v)
+{
+    __builtin_memcpy(p, &v, sizeof(V));
+}
 inline V splat(double x)
 {
     V v;
@@ -44,8 +47,14 @@ inline V splat(double x)
         v[i] = x;
     return v;
 }
-inline V vmax(const V& a, const V& b) { return a > b ? a : b; }
-inline V vmin(const V& a, const V& b) { return a < b ? a : b; }
+inline V vmax(const V& a, const V& b)
+{
+    return a > b ? a : b;
+}
+inline V vmin(const V& a, const V& b)
+{
+    return a < b ? a : b;
+}
 
 /// The velocities of one side of the lanes, gathered from the bodies.
 struct Side {
@@ -79,7 +88,7 @@ inline void scatter(const int* index, BodyState* bodies, const Side& s)
 
 /// The displacement of both sides since the step began, gathered per lane.
 struct Motion {
-    V dpx, dpy;        ///< dpB - dpA [m]
+    V dpx, dpy; ///< dpB - dpA [m]
     V qcA, qsA, qcB, qsB;
 };
 
@@ -101,8 +110,7 @@ inline Motion gatherMotion(const Block& k, const BodyState* bodies)
 
 /// Applies the impulse P = dj (dx, dy) at lever arms (rAx, rAy), (rBx, rBy).
 inline void apply(Side& A, Side& B, const V& mA, const V& iA, const V& mB, const V& iB, const V& dj,
-                  const V& dx, const V& dy, const V& rAx, const V& rAy, const V& rBx,
-                  const V& rBy)
+                  const V& dx, const V& dy, const V& rAx, const V& rAy, const V& rBx, const V& rBy)
 {
     const V px = dj * dx, py = dj * dy;
     A.vx -= mA * px;
@@ -236,8 +244,7 @@ void restitutionBlocks(Block* blocks, int count, BodyState* bodies, const PassSe
 #if RIGIDLAB_SOFT_WIDTH == 2
 Kernel kernel2()
 {
-    return {lanes2::warmStartBlocks, lanes2::solveBlocks, lanes2::restitutionBlocks, 2,
-            "2 lanes"};
+    return {lanes2::warmStartBlocks, lanes2::solveBlocks, lanes2::restitutionBlocks, 2, "2 lanes"};
 }
 #else
 Kernel kernel4Avx2()

@@ -38,10 +38,10 @@ struct alignas(32) PointLanes {
     /// The separation with the lever arms' share taken off: the separation now is
     /// n . (dpB + qB rB - dpA - qA rA) + base [m].
     double base[kBlockWidth]{};
-    double normalMass[kBlockWidth]{};     ///< 1 / K along the normal [kg]
-    double tangentMass[kBlockWidth]{};    ///< 1 / K along the tangent [kg]
-    double normalImpulse[kBlockWidth]{};  ///< accumulated within a substep [N s]
-    double tangentImpulse[kBlockWidth]{}; ///< accumulated within a substep [N s]
+    double normalMass[kBlockWidth]{};       ///< 1 / K along the normal [kg]
+    double tangentMass[kBlockWidth]{};      ///< 1 / K along the tangent [kg]
+    double normalImpulse[kBlockWidth]{};    ///< accumulated within a substep [N s]
+    double tangentImpulse[kBlockWidth]{};   ///< accumulated within a substep [N s]
     double maxNormalImpulse[kBlockWidth]{}; ///< largest normalImpulse this step [N s]
     /// Normal velocity before the step's forces and impulses, the restitution's reference [m/s].
     double relativeVelocity[kBlockWidth]{};

@@ -67,17 +67,17 @@ private:
 
     std::vector<Contact>* m_contacts = nullptr;
     SoftStepSettings m_settings;
-    double m_substep = 0;        ///< [s]
+    double m_substep = 0; ///< [s]
     soft::Kernel m_kernel{};
     bool m_wideAllowed = true;
     soft::PassSettings m_pass;
 
-    std::vector<soft::BodyState> m_state; ///< per body, and a spare one for empty lanes
-    std::vector<int> m_moving;            ///< awake dynamic bodies
-    std::vector<int> m_kinematic;         ///< kinematic bodies
-    std::vector<Vec2> m_position;         ///< centre of mass [m], per body
-    std::vector<double> m_angle;          ///< [rad], per body
-    std::vector<Vec2> m_acceleration;     ///< per moving body [m/s^2]
+    std::vector<soft::BodyState> m_state;      ///< per body, and a spare one for empty lanes
+    std::vector<int> m_moving;                 ///< awake dynamic bodies
+    std::vector<int> m_kinematic;              ///< kinematic bodies
+    std::vector<Vec2> m_position;              ///< centre of mass [m], per body
+    std::vector<double> m_angle;               ///< [rad], per body
+    std::vector<Vec2> m_acceleration;          ///< per moving body [m/s^2]
     std::vector<double> m_angularAcceleration; ///< per moving body [rad/s^2]
     std::vector<double> m_mass, m_inertia;     ///< per moving body
 

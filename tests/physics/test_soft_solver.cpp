@@ -52,8 +52,7 @@ BodyId buildPyramid(World& world, int base)
     BodyId top = 0;
     for (int row = 0; row < base; ++row)
         for (int i = 0; i < base - row; ++i)
-            top = world.addBody(
-                boxBody(1.0, 1.0, Vec2(-0.5 * (base - row - 1) + i, 0.5 + row)));
+            top = world.addBody(boxBody(1.0, 1.0, Vec2(-0.5 * (base - row - 1) + i, 0.5 + row)));
     return top;
 }
 
@@ -105,14 +104,16 @@ void TestSoftSolver::stackStands()
     }
     double worst = 0.0;
     for (int i = 0; i < n; ++i)
-        worst = std::max(worst, (world.body(i + 1).position - start[static_cast<size_t>(i)]).norm());
+        worst =
+            std::max(worst, (world.body(i + 1).position - start[static_cast<size_t>(i)]).norm());
     RL_VERIFY_AT_MOST(worst, 0.01);
     RL_VERIFY_AT_MOST(maxTurn, 0.01);
 }
 
-// Pyramids of 1 m boxes at dt = 1/60 s for 10 s: the top within 5 cm of where it started and
-// nothing toppled (no box moved more than 0.5 m sideways or turned more than 0.2 rad, the
-// benchmark's figure).
+// Pyramids of 1 m boxes at dt = 1/60 s for 10 s, the benchmark's figures (tests/bench): the
+// top box's height within 5 cm of where it started and nothing toppled (no box moved more than
+// 0.5 m sideways or turned more than 0.2 rad). The sequential-impulse solver's top sinks
+// 0.13-0.23 m at base 40.
 void TestSoftSolver::pyramidStands_data()
 {
     QTest::addColumn<int>("base");
@@ -137,7 +138,8 @@ void TestSoftSolver::pyramidStands()
             ++toppled;
     }
     QCOMPARE(toppled, 0);
-    RL_VERIFY_AT_MOST((world.body(top).position - start[static_cast<size_t>(top)]).norm(), 0.05);
+    RL_VERIFY_AT_MOST(std::abs(world.body(top).position.y() - start[static_cast<size_t>(top)].y()),
+                      0.05);
 }
 
 // A ball dropped from h0 on a floor rises to e^2 h0 after its first bounce: the restitution

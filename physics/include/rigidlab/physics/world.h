@@ -210,7 +210,7 @@ private:
         /// The soft step: SolverKind::SoftStep on the direct plan (otherwise the
         /// sequential-impulse solver stands in for it).
         bool soft = false;
-        int dynamic = 0;      ///< dynamic bodies
+        int dynamic = 0; ///< dynamic bodies
     };
     Plan planStep() const;
     /// This step's placement of every body, recomputed only for bodies that moved.
