@@ -69,7 +69,7 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     m_settings = settings;
     m_substep = dt / settings.substeps;
     static const bool wide = soft::haveAvx2() && soft::kernel4Avx2().solve != nullptr;
-    m_kernel = wide && m_wideAllowed ? soft::kernel4Avx2() : soft::kernel2();
+    m_kernel = wide && settings.wideKernel ? soft::kernel4Avx2() : soft::kernel2();
     m_pass.inverseSubstep = 1.0 / m_substep;
     m_pass.maxPushSpeed = settings.maxPushSpeed;
     m_pass.threshold = restitutionThreshold;

@@ -48,8 +48,6 @@ public:
     int overflowCount() const { return m_overflow; }
     /// The kernel in use ("4 lanes, AVX2").
     const char* kernelName() const { return m_kernel.name; }
-    /// Forces the two-lane kernel (for tests: both kernels must give the same bits).
-    void setWideKernelAllowed(bool allowed) { m_wideAllowed = allowed; }
 
     /// Colours a deterministic graph colouring may use; more contacts at one body overflow.
     static constexpr int kMaxColours = 64;
@@ -69,7 +67,6 @@ private:
     SoftStepSettings m_settings;
     double m_substep = 0; ///< [s]
     soft::Kernel m_kernel{};
-    bool m_wideAllowed = true;
     soft::PassSettings m_pass;
 
     std::vector<soft::BodyState> m_state;      ///< per body, and a spare one for empty lanes

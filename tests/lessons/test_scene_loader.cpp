@@ -151,7 +151,7 @@ void TestLessons::rejectsBadScene_data()
            "(expected euler, symplectic-euler, verlet, rk4)";
     QTest::newRow("unknown-solver") << sceneWith(R"("world": {"solver": "magic"}, "bodies": [])")
                                     << R"(world.solver: unknown solver "magic" (expected )"
-                                       "seed-impulse, sequential-impulse)";
+                                       "seed-impulse, sequential-impulse, soft-step)";
     QTest::newRow("dt-zero") << sceneWith(R"("world": {"dt": 0}, "bodies": [])")
                              << "world.dt: must be a positive number, got 0";
     QTest::newRow("dt-too-small") << sceneWith(R"("world": {"dt": 1e-9}, "bodies": [])")

@@ -59,6 +59,9 @@ struct SoftStepSettings {
     /// pass, where the normal impulses hold the weight without the push (the base-100 pyramid
     /// slides apart with it on).
     bool frictionWithBias = false;
+    /// The four-lane AVX2 kernel where the processor has it; false: the two-lane one. Both
+    /// give the same bits (soft_kernel.h).
+    bool wideKernel = true;
 };
 
 /// Tuning of contacts that a scene does not set (Box2D's choices, in metres).
