@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -71,6 +72,9 @@ private slots:
     void slope_data();
     void slope();
     void restingImpulseIsWeight();
+    void headOnCircles_data();
+    void headOnCircles();
+    void elasticGas();
     void standsInForOtherPlans();
     void deterministic();
 };
@@ -242,6 +246,78 @@ void TestSoftSolver::restingImpulseIsWeight()
     RL_VERIFY_NEAR(total, world.body(id).mass * kG * dt, 0.0, 1e-3);
     // Both points carry half (a symmetric box).
     RL_VERIFY_NEAR(c.normalImpulse[0], c.normalImpulse[1], 0.0, 1e-3);
+}
+
+// Two unequal circles closing at 3 m/s without gravity or friction: after the collision the
+// textbook velocities v1' = (p + m2 e (v2 - v1)) / (m1 + m2), v2' = (p + m1 e (v1 - v2)) /
+// (m1 + m2), to 1e-9 of the speeds (the restitution pass restores e times the approach).
+void TestSoftSolver::headOnCircles_data()
+{
+    QTest::addColumn<double>("e");
+    QTest::newRow("elastic") << 1.0;
+    QTest::newRow("e=0.5") << 0.5;
+    QTest::newRow("e=0") << 0.0;
+}
+
+void TestSoftSolver::headOnCircles()
+{
+    QFETCH(double, e);
+    const double rA = 0.5, vA = 2.0, rB = 0.3, vB = -1.0;
+    WorldDef def = rigidlab::test::quietWorldDef(IntegratorKind::SymplecticEuler, 1e-3);
+    def.solver = SolverKind::SoftStep;
+    def.restitution = e;
+    def.friction = 0.0;
+    World world(def);
+    const BodyId a = world.addBody(circleBody(rA, Vec2(-1.5, 0.0), Vec2(vA, 0.0), 1.0));
+    const BodyId b = world.addBody(circleBody(rB, Vec2(1.0, 0.0), Vec2(vB, 0.0), 3.0));
+    const double mA = world.body(a).mass, mB = world.body(b).mass;
+    bool touched = false;
+    for (int i = 0; i < 1500; ++i) {
+        world.step();
+        touched = touched || !world.contacts().empty();
+    }
+    QVERIFY(touched);
+    const double p = mA * vA + mB * vB;
+    RL_VERIFY_NEAR(world.body(a).velocity.x(), (p + mB * e * (vB - vA)) / (mA + mB), 1e-9, 0.0);
+    RL_VERIFY_NEAR(world.body(b).velocity.x(), (p + mA * e * (vA - vB)) / (mA + mB), 1e-9, 0.0);
+    RL_VERIFY_NEAR(world.body(a).velocity.y(), 0.0, 1e-12, 0.0);
+    RL_VERIFY_NEAR(world.body(b).angularVelocity, 0.0, 1e-12, 0.0);
+}
+
+// 100 elastic, frictionless balls in a closed box of static walls, no gravity, dt = 1 ms,
+// 10 s: the kinetic energy must stay within a band, and every ball inside. Measured: it loses
+// 7.3 % in the 10 s. That misses issue 16's target (1 % in 60 s with 300 balls) and is left
+// for the work on impacts; the band only guards against heating and against a leak.
+void TestSoftSolver::elasticGas()
+{
+    WorldDef def = rigidlab::test::quietWorldDef(IntegratorKind::SymplecticEuler, 1e-3);
+    def.solver = SolverKind::SoftStep;
+    def.restitution = 1.0;
+    def.friction = 0.0;
+    World world(def);
+    world.addBody(staticBox(10, 1, Vec2(0, -3.5)));
+    world.addBody(staticBox(10, 1, Vec2(0, 3.5)));
+    world.addBody(staticBox(1, 8, Vec2(-4.5, 0)));
+    world.addBody(staticBox(1, 8, Vec2(4.5, 0)));
+    std::uint32_t seed = 2024;
+    const auto random = [&seed] { // a fixed linear congruential sequence in [-1, 1)
+        seed = seed * 1664525u + 1013904223u;
+        return static_cast<double>(seed >> 8) / static_cast<double>(1u << 23) - 1.0;
+    };
+    for (int i = 0; i < 100; ++i)
+        world.addBody(circleBody(0.12, Vec2(-3.5 + 0.7 * (i % 10), -2.5 + 0.55 * (i / 10)),
+                                 Vec2(5.0 * random(), 5.0 * random())));
+    const double start = rigidlab::test::kineticEnergy(world);
+    for (int i = 0; i < 10000; ++i)
+        world.step();
+    const double end = rigidlab::test::kineticEnergy(world);
+    qInfo("soft step, 100-ball elastic gas, 10 s: kinetic energy %.6g J -> %.6g J (%+.3f %%)",
+          start, end, 100.0 * (end / start - 1.0));
+    RL_VERIFY_AT_MOST(end, start * 1.001);
+    RL_VERIFY_AT_MOST(start * 0.9, end);
+    for (const Body& body : world.bodies())
+        if (body.isDynamic())
+            QVERIFY(std::abs(body.position.x()) < 4.0 && std::abs(body.position.y()) < 3.0);
 }
 
 // The soft step runs on the direct plan only (symplectic Euler, nothing but contacts): with
