@@ -314,6 +314,17 @@ double SoftSolver::kineticEnergy() const
     return 0.5 * e;
 }
 
+double SoftSolver::loadPower() const
+{
+    double p = 0.0;
+    for (size_t k = 0; k < m_moving.size(); ++k) {
+        const soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
+        p += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
+             m_inertia[k] * m_angularAcceleration[k] * s.w;
+    }
+    return p;
+}
+
 void SoftSolver::end(std::vector<Body>& bodies)
 {
     auto write = [&](int id) {

@@ -41,6 +41,8 @@ public:
 
     /// Kinetic energy of the bodies the step moves [J], for the energy the contacts took.
     double kineticEnergy() const;
+    /// Power of the applied loads at the present velocities, sum m a.v + I alpha w [W].
+    double loadPower() const;
 
     int constraintCount() const { return static_cast<int>(m_slots.size()); }
     int colourCount() const { return m_colourCount; }
