@@ -35,7 +35,7 @@ Commands:
       --steps N              number of steps instead of a time
       --dt H                 time step [s], overrides the scene's (1e-07 to 1)
       --integrator NAME      euler, symplectic-euler, verlet, rk4
-      --solver NAME          seed-impulse, sequential-impulse
+      --solver NAME          seed-impulse, sequential-impulse, soft-step
       --trace FILE.csv       step,t,body,x,y,angle,vx,vy,omega per dynamic body
       --diagnostics FILE.csv step,t,kinetic,potential,total,px,py,angular_momentum,contacts,
                              dissipated,drift; dissipated: energy taken by contacts,
@@ -152,7 +152,7 @@ bool readRunOptions(const CommandLine& args, lessons::RunOptions& options, QStri
         options.solver = physics::solverFromName(name->toStdString());
         if (!options.solver) {
             error = QStringLiteral("--solver: unknown solver \"%1\" (expected seed-impulse, "
-                                   "sequential-impulse)")
+                                   "sequential-impulse, soft-step)")
                         .arg(*name);
             return false;
         }

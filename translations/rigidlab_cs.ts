@@ -1224,12 +1224,6 @@ y %2</translation>
         <translation>Jak se v&#xa0;každém kroku posouvají polohy a&#xa0;rychlosti</translation>
     </message>
     <message>
-        <source>Seed impulse: one impulse per contact, once (the paper&apos;s method).
-Sequential impulse: iterated, clamped, warm started.</source>
-        <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
-Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
-    </message>
-    <message>
         <source>Iterations</source>
         <translation>Iterace</translation>
     </message>
@@ -1296,6 +1290,14 @@ Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.</translation>
     <message>
         <source>Fixed in this step of the lesson</source>
         <translation>V&#xa0;tomto kroku lekce pevně dané</translation>
+    </message>
+    <message>
+        <source>Seed impulse: one impulse per contact, once (the paper&apos;s method).
+Sequential impulse: iterated, clamped, warm started.
+Soft step: springy contacts solved in small substeps; stiff stacks.</source>
+        <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
+Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.
+Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné stohy.</translation>
     </message>
 </context>
 <context>
@@ -2793,6 +2795,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>diagnostics</source>
         <translation>diagnostika</translation>
+    </message>
+    <message>
+        <source>Soft step (substepping)</source>
+        <translation>Měkký krok (podkroky)</translation>
     </message>
 </context>
 <context>

@@ -60,7 +60,7 @@ QString describeRange(const limits::Range& range);
 /// "unknown integrator "NAME" (expected euler, symplectic-euler, verlet, rk4)": the seed's four
 /// are listed, though every name physics::integratorFromName knows is accepted.
 QString unknownIntegrator(const QString& name);
-/// "unknown solver "NAME" (expected seed-impulse, sequential-impulse)".
+/// "unknown solver "NAME" (expected seed-impulse, sequential-impulse, soft-step)".
 QString unknownSolver(const QString& name);
 
 /// Parses JSON; a syntax error becomes `SOURCE: line L, column C: what`. Arrays and objects

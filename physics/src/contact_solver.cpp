@@ -46,9 +46,10 @@ struct NamedSolver {
     SolverKind kind;
     std::string_view name;
 };
-constexpr std::array<NamedSolver, 2> kSolvers{{
+constexpr std::array<NamedSolver, 3> kSolvers{{
     {SolverKind::SeedImpulse, "seed-impulse"},
     {SolverKind::SequentialImpulse, "sequential-impulse"},
+    {SolverKind::SoftStep, "soft-step"},
 }};
 
 } // namespace

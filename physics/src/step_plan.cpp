@@ -65,6 +65,7 @@ World::Plan World::planStep() const
         plan.collide = false; // the only two are pinned together
     plan.direct = m_def.integrator == IntegratorKind::SymplecticEuler && m_springs.empty() &&
                   m_joints.empty() && m_def.gravitation == 0.0;
+    plan.soft = plan.direct && m_def.solver == SolverKind::SoftStep;
     plan.sleep = m_def.sleep.value_or(dynamic >= kLargeSceneBodies);
     plan.dynamic = dynamic;
     return plan;

@@ -51,11 +51,16 @@ void World::step()
     // Stage::Islands: a body touched by an awake one wakes, with everything touching it.
     if (m_plan.sleep)
         wakeIslands();
-    // Stage::Forces, Stage::Integration.
-    integrate();
-    // Stage::ContactSolve: impulses on the new velocities, then position correction.
-    if (!m_contacts.empty() && m_plan.anyAwake)
-        solveContacts();
+    if (m_plan.soft) {
+        // Stage::Forces, Stage::Integration, Stage::ContactSolve in substeps: the soft step.
+        softStep();
+    } else {
+        // Stage::Forces, Stage::Integration.
+        integrate();
+        // Stage::ContactSolve: impulses on the new velocities, then position correction.
+        if (!m_contacts.empty() && m_plan.anyAwake)
+            solveContacts();
+    }
     // Stage::Sleep: islands that have rested long enough.
     if (m_plan.sleep)
         sleepIslands();

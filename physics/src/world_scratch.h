@@ -11,6 +11,7 @@
 #include "contact_solver.h"
 #include "dynamics.h"
 #include "narrow_phase.h"
+#include "soft_solver.h"
 
 #include <Eigen/Core>
 
@@ -33,6 +34,7 @@ struct World::Scratch {
     std::vector<Vec2> velocityBefore, velocityAtStart;
     std::vector<double> angularVelocityBefore, angularVelocityAtStart;
     ContactSolver solver;
+    SoftSolver softSolver;
     /// The direct integration's accelerations [m/s^2] and [rad/s^2].
     std::vector<Vec2> acceleration;
     std::vector<double> angularAcceleration;

@@ -72,6 +72,9 @@ int main(int argc, char** argv)
     std::vector<std::string> missing;
     std::vector<std::unique_ptr<bench::BenchEngine>> engines;
     engines.push_back(bench::makeRigidLabBenchEngine());
+    bench::RigidLabBenchSettings soft;
+    soft.solver = physics::SolverKind::SoftStep;
+    engines.push_back(bench::makeRigidLabBenchEngine(soft));
 #ifdef RIGIDLAB_BENCH_BOX2D_V3
     engines.push_back(bench::makeBox2dV3Engine());
 #elif defined(RIGIDLAB_BENCH_BOX2D_V3_MISSING)
@@ -93,7 +96,7 @@ int main(int argc, char** argv)
         const bench::BenchScene scene = *bench::makeBenchScene(name);
         for (auto& engine : engines) {
             results.push_back(bench::runBench(*engine, scene, options));
-            std::fprintf(stderr, "  %-10s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
+            std::fprintf(stderr, "  %-13s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
                          name.c_str(), results.back().msPerStep);
         }
     }

@@ -34,9 +34,17 @@ class RigidLabBench final : public BenchEngine {
 public:
     explicit RigidLabBench(const RigidLabBenchSettings& settings) : m_settings(settings) {}
 
-    std::string name() const override { return "RigidLab"; }
+    std::string name() const override
+    {
+        return m_settings.solver == physics::SolverKind::SoftStep ? "RigidLab SS" : "RigidLab";
+    }
     std::string settings() const override
     {
+        if (m_settings.solver == physics::SolverKind::SoftStep)
+            return std::string(physics::solverName(m_settings.solver)) + ", " +
+                   std::to_string(physics::SoftStepSettings{}.substeps) +
+                   " substeps, symplectic Euler, double precision, sleeping " +
+                   (m_settings.sleep ? "on" : "off");
         return std::string(physics::solverName(m_settings.solver)) + ", " +
                std::to_string(m_settings.iterations) + " velocity / " +
                std::to_string(m_settings.positionIterations) +

@@ -151,7 +151,7 @@ void TestLessons::rejectsBadScene_data()
            "(expected euler, symplectic-euler, verlet, rk4)";
     QTest::newRow("unknown-solver") << sceneWith(R"("world": {"solver": "magic"}, "bodies": [])")
                                     << R"(world.solver: unknown solver "magic" (expected )"
-                                       "seed-impulse, sequential-impulse)";
+                                       "seed-impulse, sequential-impulse, soft-step)";
     QTest::newRow("dt-zero") << sceneWith(R"("world": {"dt": 0}, "bodies": [])")
                              << "world.dt: must be a positive number, got 0";
     QTest::newRow("dt-too-small") << sceneWith(R"("world": {"dt": 1e-9}, "bodies": [])")
@@ -673,7 +673,7 @@ void TestLessons::formatDocumentExampleLoads()
     QCOMPARE(result.scene.springs.size(), size_t{1});
     QCOMPARE(result.scene.joints.size(), size_t{1});
     QCOMPARE(result.scene.world.sleep, std::optional<bool>(true));
-        << oneBody(R"("shape": {"type": "circle", "radius": 1}, "color": "red")")
-        << "bodies[0].color: unknown key (allowed here: id, label, type, shape, position, angle, "
-           "velocity, angularVelocity, density, mass, restitution, friction, collide, colour)";
+    QCOMPARE(result.scene.bodyLabel(1), QStringLiteral("steel ball"));
+    QCOMPARE(result.scene.bodyLabel(0), QStringLiteral("floor")); // no label: the id
+    QCOMPARE(result.scene.colourOf(1), QStringLiteral("#d04030"));
 }

@@ -56,11 +56,13 @@ struct SolverWords {
     const char* words;
 };
 
-constexpr std::array<SolverWords, 2> kSolverWords{{
+constexpr std::array<SolverWords, 3> kSolverWords{{
     {physics::SolverKind::SeedImpulse,
      QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Seed impulse")},
     {physics::SolverKind::SequentialImpulse,
      QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Sequential impulse")},
+    {physics::SolverKind::SoftStep,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Soft step (substepping)")},
 }};
 
 QString translated(const char* words)

@@ -14,6 +14,10 @@ namespace rigidlab::physics {
 enum class SolverKind {
     SeedImpulse,       ///< the seed's impulse, contact by contact, once (full denominator)
     SequentialImpulse, ///< accumulated, clamped impulses, iterated and warm started
+    /// Soft contacts in substeps with relaxation and a restitution pass (soft_solver.cpp).
+    /// With springs, joints, gravitation or an integrator other than symplectic Euler, the
+    /// sequential-impulse solver stands in for it.
+    SoftStep,
 };
 
 std::string_view solverName(SolverKind kind);

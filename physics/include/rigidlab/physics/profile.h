@@ -24,7 +24,8 @@ enum class Stage {
     /// (joints.cpp).
     Integration,
     /// Impulses, the joints projected again, position correction (contact_response.cpp,
-    /// contact_solver.cpp).
+    /// contact_solver.cpp). The soft step (soft_step.cpp) runs Forces, Integration and
+    /// ContactSolve together in substeps, its contacts in soft_solver.cpp and soft_kernel.cpp.
     ContactSolve,
     /// Resting islands put to sleep (islands.cpp).
     Sleep,

@@ -46,6 +46,24 @@ bool withinLimits(const WorldDef& def);
 /// A scene with this many dynamic bodies or more is large: it sleeps unless told otherwise.
 inline constexpr int kLargeSceneBodies = 200;
 
+/// Tuning of the soft step (SolverKind::SoftStep, soft_solver.cpp).
+struct SoftStepSettings {
+    int substeps = 6; ///< substeps per step, each integrates and solves once
+    /// Frequency of the contact spring between moving bodies, as a fraction of the substep
+    /// rate (0.25: a quarter, 90 Hz at dt = 1/60 s); twice that against a body that does not
+    /// move. A load sinks a contact by about its weight / (effective mass (2 pi f)^2).
+    double contactFrequency = 0.25;
+    double dampingRatio = 10.0; ///< of the contact's spring (10: heavily over-damped)
+    double maxPushSpeed = 3.0;  ///< fastest push that separates overlapping bodies [m/s]
+    /// Friction in the soft solve as well as in the relax pass. Off: friction only in the relax
+    /// pass, where the normal impulses hold the weight without the push (the base-100 pyramid
+    /// slides apart with it on).
+    bool frictionWithBias = false;
+    /// The four-lane AVX2 kernel where the processor has it; false: the two-lane one. Both
+    /// give the same bits (soft_kernel.h).
+    bool wideKernel = true;
+};
+
 /// Tuning of contacts that a scene does not set (Box2D's choices, in metres).
 struct ContactSettings {
     double linearSlop = 0.005;  ///< allowed penetration, keeps contacts alive [m]
@@ -55,6 +73,7 @@ struct ContactSettings {
     int positionIterations = 3;
     /// Approaches slower than this never bounce [m/s] (sequential impulses; see below).
     double restitutionThreshold = 0.5;
+    SoftStepSettings soft; ///< the soft step's (its position correction is its own)
 };
 
 /// The approach speed below which a new contact of the sequential-impulse solver rests
@@ -182,13 +201,19 @@ private:
     void integrate();
     /// Stage::ContactSolve (contact_response.cpp).
     void solveContacts();
+    /// Stage::Forces, Stage::Integration and Stage::ContactSolve together, in substeps: the
+    /// soft step (soft_step.cpp, soft_solver.cpp).
+    void softStep();
     /// What this step needs, from what the world holds (step_plan.cpp).
     struct Plan {
         bool collide = false; ///< some two bodies can collide: broad and narrow phase
         bool direct = false;  ///< symplectic Euler on the bodies, without the ODE state
         bool sleep = false;   ///< islands and sleeping
         bool anyAwake = true; ///< some dynamic body is awake (after wakeIslands())
-        int dynamic = 0;      ///< dynamic bodies
+        /// The soft step: SolverKind::SoftStep on the direct plan (otherwise the
+        /// sequential-impulse solver stands in for it).
+        bool soft = false;
+        int dynamic = 0; ///< dynamic bodies
     };
     Plan planStep() const;
     /// This step's placement of every body, recomputed only for bodies that moved.

@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The soft step's contact passes over blocks of lanes (soft_kernel.h), written once with the
+// compiler's vector types (GCC and Clang) for RIGIDLAB_SOFT_WIDTH lanes of doubles. Compiled
+// as it is for two lanes, and by soft_kernel_avx2.cpp for four lanes with AVX2.
+//
+// Per lane and point, with the normal n from A to B, the tangent t = (n.y, -n.x), the lever
+// arms rA, rB and the relative velocity dv = vB + wB x rB - vA - wA x rA (Catto, "Solver2D",
+// 2024, and Box2D v3's soft step):
+//   separation  s = n . (dpB + qB rB - dpA - qA rA) + base   (base: see PointLanes)
+//   s > 0       speculative: the gap may close within the substep, bias = s / h, rigid
+//   s <= 0      with bias: soft, bias = max(biasRate s, -maxPush), the mass and the accumulated
+//               impulse scaled by massScale and impulseScale; relaxing: rigid, no bias
+//   normal      dj = -normalMass massScale (dv.n + bias) - impulseScale j, j stays >= 0
+//   friction    dj = -tangentMass dv.t, |j_t| <= friction j_n
+//   restitution (once, after the substeps) where the pre-solve normal velocity u < -threshold
+//               and the point pushed: dj = -normalMass (dv.n + e u), j stays >= 0.
+
+#include "soft_kernel.h"
+
+#ifndef RIGIDLAB_SOFT_WIDTH
+#define RIGIDLAB_SOFT_WIDTH 2
+#define RIGIDLAB_SOFT_NAMESPACE lanes2
+#endif
+
+namespace rigidlab::physics::soft {
+namespace RIGIDLAB_SOFT_NAMESPACE {
+namespace {
+
+constexpr int W = RIGIDLAB_SOFT_WIDTH;
+using V = double __attribute__((vector_size(W * sizeof(double))));
+
+// The kernel leans on no library (see soft_kernel.h): loads, stores and selections by hand.
+inline V load(const double* p)
+{
+    V v;
+    __builtin_memcpy(&v, p, sizeof(V));
+    return v;
+}
+inline void store(double* p, const V& v)
+{
+    __builtin_memcpy(p, &v, sizeof(V));
+}
+inline V splat(double x)
+{
+    V v;
+    for (int i = 0; i < W; ++i)
+        v[i] = x;
+    return v;
+}
+inline V vmax(const V& a, const V& b)
+{
+    return a > b ? a : b;
+}
+inline V vmin(const V& a, const V& b)
+{
+    return a < b ? a : b;
+}
+
+/// The velocities of one side of the lanes, gathered from the bodies.
+struct Side {
+    V vx, vy, w;
+};
+
+inline Side gather(const int* index, const BodyState* bodies)
+{
+    Side s;
+    for (int i = 0; i < W; ++i) {
+        const BodyState& b = bodies[index[i]];
+        s.vx[i] = b.vx;
+        s.vy[i] = b.vy;
+        s.w[i] = b.w;
+    }
+    return s;
+}
+
+inline void scatter(const int* index, BodyState* bodies, const Side& s)
+{
+    // Lanes of a block never share a moving body. A body that does not move (static, asleep,
+    // or the spare body of an empty lane) may stand in several lanes: each writes back the
+    // velocity it read, since its inverse mass is 0.
+    for (int i = 0; i < W; ++i) {
+        BodyState& b = bodies[index[i]];
+        b.vx = s.vx[i];
+        b.vy = s.vy[i];
+        b.w = s.w[i];
+    }
+}
+
+/// The displacement of both sides since the step began, gathered per lane.
+struct Motion {
+    V dpx, dpy; ///< dpB - dpA [m]
+    V qcA, qsA, qcB, qsB;
+};
+
+inline Motion gatherMotion(const Block& k, const BodyState* bodies)
+{
+    Motion m;
+    for (int i = 0; i < W; ++i) {
+        const BodyState& a = bodies[k.a[i]];
+        const BodyState& b = bodies[k.b[i]];
+        m.dpx[i] = b.dpx - a.dpx;
+        m.dpy[i] = b.dpy - a.dpy;
+        m.qcA[i] = a.qc;
+        m.qsA[i] = a.qs;
+        m.qcB[i] = b.qc;
+        m.qsB[i] = b.qs;
+    }
+    return m;
+}
+
+/// Applies the impulse P = dj (dx, dy) at lever arms (rAx, rAy), (rBx, rBy).
+inline void apply(Side& A, Side& B, const V& mA, const V& iA, const V& mB, const V& iB, const V& dj,
+                  const V& dx, const V& dy, const V& rAx, const V& rAy, const V& rBx, const V& rBy)
+{
+    const V px = dj * dx, py = dj * dy;
+    A.vx -= mA * px;
+    A.vy -= mA * py;
+    A.w -= iA * (rAx * py - rAy * px);
+    B.vx += mB * px;
+    B.vy += mB * py;
+    B.w += iB * (rBx * py - rBy * px);
+}
+
+/// Relative velocity of the contact point along (dx, dy).
+inline V relative(const Side& A, const Side& B, const V& dx, const V& dy, const V& rAx,
+                  const V& rAy, const V& rBx, const V& rBy)
+{
+    // v + w x r = (vx - w ry, vy + w rx)
+    const V ux = (B.vx - B.w * rBy) - (A.vx - A.w * rAy);
+    const V uy = (B.vy + B.w * rBx) - (A.vy + A.w * rAx);
+    return ux * dx + uy * dy;
+}
+
+void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
+{
+    for (int k = 0; k < count; ++k) {
+        Block& c = blocks[k];
+        Side A = gather(c.a, bodies), B = gather(c.b, bodies);
+        const V mA = load(c.invMassA), iA = load(c.invIA), mB = load(c.invMassB),
+                iB = load(c.invIB);
+        const V nx = load(c.nx), ny = load(c.ny);
+        for (PointLanes& p : c.p) {
+            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+            apply(A, B, mA, iA, mB, iB, load(p.normalImpulse), nx, ny, rAx, rAy, rBx, rBy);
+            apply(A, B, mA, iA, mB, iB, load(p.tangentImpulse), ny, -nx, rAx, rAy, rBx, rBy);
+        }
+        scatter(c.a, bodies, A);
+        scatter(c.b, bodies, B);
+    }
+}
+
+void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
+{
+    const V zero = splat(0.0), one = splat(1.0);
+    const V inverseSubstep = splat(s.inverseSubstep), maxPush = splat(-s.maxPushSpeed);
+    for (int k = 0; k < count; ++k) {
+        Block& c = blocks[k];
+        Side A = gather(c.a, bodies), B = gather(c.b, bodies);
+        const Motion m = gatherMotion(c, bodies);
+        const V mA = load(c.invMassA), iA = load(c.invIA), mB = load(c.invMassB),
+                iB = load(c.invIB);
+        const V nx = load(c.nx), ny = load(c.ny);
+        const V biasRate = load(c.biasRate), massScale = load(c.massScale),
+                impulseScale = load(c.impulseScale);
+        for (PointLanes& p : c.p) {
+            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+            // The separation now: both lever arms turned by their body's rotation so far.
+            const V dx = m.dpx + (m.qcB * rBx - m.qsB * rBy) - (m.qcA * rAx - m.qsA * rAy);
+            const V dy = m.dpy + (m.qsB * rBx + m.qcB * rBy) - (m.qsA * rAx + m.qcA * rAy);
+            const V sep = dx * nx + dy * ny + load(p.base);
+            const auto gap = sep > zero;
+            V bias, ms, is;
+            if (s.useBias) {
+                bias = gap ? sep * inverseSubstep : vmax(biasRate * sep, maxPush);
+                ms = gap ? one : massScale;
+                is = gap ? zero : impulseScale;
+            } else {
+                bias = gap ? sep * inverseSubstep : zero;
+                ms = one;
+                is = zero;
+            }
+            const V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
+            const V old = load(p.normalImpulse);
+            const V next = vmax(old - load(p.normalMass) * ms * (vn + bias) - is * old, zero);
+            store(p.normalImpulse, next);
+            store(p.maxNormalImpulse, vmax(load(p.maxNormalImpulse), next));
+            apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
+        }
+        // Friction after the normal impulses, so that its cone is this pass's.
+        if (!s.friction) {
+            scatter(c.a, bodies, A);
+            scatter(c.b, bodies, B);
+            continue;
+        }
+        const V friction = load(c.friction);
+        const V tx = ny, ty = -nx;
+        for (PointLanes& p : c.p) {
+            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+            const V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
+            const V limit = friction * load(p.normalImpulse);
+            const V old = load(p.tangentImpulse);
+            const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
+            store(p.tangentImpulse, next);
+            apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
+        }
+        scatter(c.a, bodies, A);
+        scatter(c.b, bodies, B);
+    }
+}
+
+void restitutionBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
+{
+    const V zero = splat(0.0), threshold = splat(-s.threshold);
+    for (int k = 0; k < count; ++k) {
+        Block& c = blocks[k];
+        const V e = load(c.restitution);
+        bool any = false;
+        for (int i = 0; i < W; ++i)
+            any = any || e[i] != 0.0;
+        if (!any)
+            continue;
+        Side A = gather(c.a, bodies), B = gather(c.b, bodies);
+        const V mA = load(c.invMassA), iA = load(c.invIA), mB = load(c.invMassB),
+                iB = load(c.invIB);
+        const V nx = load(c.nx), ny = load(c.ny);
+        for (PointLanes& p : c.p) {
+            const V u = load(p.relativeVelocity);
+            const auto bounces = (u < threshold) & (load(p.maxNormalImpulse) > zero);
+            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+            const V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
+            const V old = load(p.normalImpulse);
+            const V next = vmax(old - load(p.normalMass) * (vn + e * u), zero);
+            store(p.normalImpulse, bounces ? next : old);
+            apply(A, B, mA, iA, mB, iB, bounces ? next - old : zero, nx, ny, rAx, rAy, rBx, rBy);
+        }
+        scatter(c.a, bodies, A);
+        scatter(c.b, bodies, B);
+    }
+}
+
+} // namespace
+} // namespace RIGIDLAB_SOFT_NAMESPACE
+
+#if RIGIDLAB_SOFT_WIDTH == 2
+Kernel kernel2()
+{
+    return {lanes2::warmStartBlocks, lanes2::solveBlocks, lanes2::restitutionBlocks, 2, "2 lanes"};
+}
+#else
+Kernel kernel4Avx2()
+{
+    return {RIGIDLAB_SOFT_NAMESPACE::warmStartBlocks, RIGIDLAB_SOFT_NAMESPACE::solveBlocks,
+            RIGIDLAB_SOFT_NAMESPACE::restitutionBlocks, 4, "4 lanes, AVX2"};
+}
+#endif
+
+} // namespace rigidlab::physics::soft

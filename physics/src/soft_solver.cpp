@@ -1,0 +1,355 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Stage::ContactSolve of the soft step (SolverKind::SoftStep): soft contact constraints over
+// substeps, after Catto's "Soft Step" (Solver2D, 2024; Box2D v3's solver).
+//
+// A contact is a spring and damper on its penetration, of frequency f and damping ratio z,
+// solved implicitly over the substep h (Catto, "Soft Constraints", GDC 2011):
+//     w = 2 pi f,  a1 = 2 z + h w,  a2 = h w a1,  a3 = 1 / (1 + a2)
+//     bias rate = w / a1,  mass scale = a2 a3,  impulse scale = a3.
+// The frequency follows the substep (a quarter of the substep rate by default), so a stack
+// sinks by the same small amount whatever dt; a contact with a body that does not move gets
+// twice the frequency, since only one side gives way. Each substep integrates the velocities,
+// warm starts, solves with the soft bias, integrates the positions and relaxes (the same pass,
+// rigid and without bias): the relax pass takes out the velocity the push gave, so stacks
+// stay still and pushes do not become bounces. Friction is solved in the relax pass (and in
+// the biased pass too with SoftStepSettings::frictionWithBias): there the normal impulses
+// carry the weight without the push, and a base-100 pyramid stands (with friction in both,
+// its middle rows slid metres apart in 10 s). Restitution has its own pass at the end, from
+// the normal velocity each point had before the step, where it is faster than the threshold
+// and the point pushed.
+//
+// Speed (soft_kernel.h): the contacts are coloured so that no two of one colour share a
+// moving body, and the kernel solves one colour's contacts side by side in SIMD lanes.
+
+#include "soft_solver.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <numbers>
+
+namespace rigidlab::physics {
+
+namespace {
+
+struct Softness {
+    double biasRate = 0, massScale = 1, impulseScale = 0;
+};
+
+Softness softness(double hertz, double dampingRatio, double h)
+{
+    if (hertz <= 0)
+        return {};
+    const double omega = 2.0 * std::numbers::pi * hertz;
+    const double a1 = 2.0 * dampingRatio + h * omega;
+    const double a2 = h * omega * a1;
+    const double a3 = 1.0 / (1.0 + a2);
+    return {omega / a1, a2 * a3, a3};
+}
+
+} // namespace
+
+namespace soft {
+bool haveAvx2()
+{
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+    return __builtin_cpu_supports("avx2");
+#else
+    return false;
+#endif
+}
+} // namespace soft
+
+void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+                       const std::vector<Vec2>& acceleration,
+                       const std::vector<double>& angularAcceleration, double dt,
+                       const SoftStepSettings& settings, double restitutionThreshold)
+{
+    m_contacts = &contacts;
+    m_settings = settings;
+    m_substep = dt / settings.substeps;
+    static const bool wide = soft::haveAvx2() && soft::kernel4Avx2().solve != nullptr;
+    m_kernel = wide && settings.wideKernel ? soft::kernel4Avx2() : soft::kernel2();
+    m_pass.inverseSubstep = 1.0 / m_substep;
+    m_pass.maxPushSpeed = settings.maxPushSpeed;
+    m_pass.threshold = restitutionThreshold;
+
+    const size_t n = bodies.size();
+    m_state.assign(n + 1, soft::BodyState{});
+    m_position.resize(n);
+    m_angle.resize(n);
+    m_moving.clear();
+    m_kinematic.clear();
+    m_acceleration.clear();
+    m_angularAcceleration.clear();
+    m_mass.clear();
+    m_inertia.clear();
+    for (size_t i = 0; i < n; ++i) {
+        const Body& b = bodies[i];
+        soft::BodyState& s = m_state[i];
+        s.vx = b.velocity.x();
+        s.vy = b.velocity.y();
+        s.w = b.angularVelocity;
+        m_position[i] = b.position;
+        m_angle[i] = b.angle;
+        if (b.isActive()) {
+            m_moving.push_back(static_cast<int>(i));
+            m_acceleration.push_back(acceleration[i]);
+            m_angularAcceleration.push_back(angularAcceleration[i]);
+            m_mass.push_back(b.mass);
+            m_inertia.push_back(b.inertia);
+        } else if (b.type == BodyType::Kinematic) {
+            m_kinematic.push_back(static_cast<int>(i));
+        }
+    }
+    buildBlocks(contacts, bodies);
+}
+
+void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies)
+{
+    // Greedy colouring in the contacts' order (deterministic): each contact takes the lowest
+    // colour that neither of its moving bodies has yet. A body that does not move (static,
+    // kinematic, asleep) is only read, so any number of contacts of one colour may share it.
+    m_colourMask.assign(bodies.size(), 0);
+    m_candidates.clear();
+    m_colourOf.clear();
+    m_colourSize.assign(kMaxColours, 0);
+    m_overflow = 0;
+    for (size_t ci = 0; ci < contacts.size(); ++ci) {
+        const Contact& ct = contacts[ci];
+        const Body& a = bodies[static_cast<size_t>(ct.a)];
+        const Body& b = bodies[static_cast<size_t>(ct.b)];
+        if (!a.isActive() && !b.isActive())
+            continue;
+        std::uint64_t used = 0;
+        if (a.isActive())
+            used |= m_colourMask[static_cast<size_t>(ct.a)];
+        if (b.isActive())
+            used |= m_colourMask[static_cast<size_t>(ct.b)];
+        int colour = -1;
+        if (~used != 0) {
+            colour = std::countr_zero(~used);
+            const std::uint64_t bit = std::uint64_t{1} << colour;
+            if (a.isActive())
+                m_colourMask[static_cast<size_t>(ct.a)] |= bit;
+            if (b.isActive())
+                m_colourMask[static_cast<size_t>(ct.b)] |= bit;
+            ++m_colourSize[static_cast<size_t>(colour)];
+        } else {
+            ++m_overflow;
+        }
+        m_candidates.push_back(static_cast<int>(ci));
+        m_colourOf.push_back(colour);
+    }
+    m_colourCount = 0;
+    for (int c = 0; c < kMaxColours; ++c)
+        if (m_colourSize[static_cast<size_t>(c)] > 0)
+            m_colourCount = c + 1;
+
+    // Blocks: colour by colour, m_kernel.width lanes each; the overflow last, one contact
+    // per block (solved one after the other). Empty lanes point at the spare body (index n)
+    // with zero masses, so they change nothing.
+    const int width = m_kernel.width;
+    int blocks = m_overflow;
+    for (int c = 0; c < m_colourCount; ++c)
+        blocks += (m_colourSize[static_cast<size_t>(c)] + width - 1) / width;
+    m_blocks.assign(static_cast<size_t>(blocks), soft::Block{});
+    const int spare = static_cast<int>(bodies.size());
+    for (soft::Block& k : m_blocks)
+        for (int lane = 0; lane < soft::kBlockWidth; ++lane)
+            k.a[lane] = k.b[lane] = spare;
+    // First block of each colour, then filled in the contacts' order.
+    std::vector<int> next(static_cast<size_t>(m_colourCount) + 1, 0);
+    std::vector<int> lane(static_cast<size_t>(m_colourCount) + 1, 0);
+    int start = 0;
+    for (int c = 0; c < m_colourCount; ++c) {
+        next[static_cast<size_t>(c)] = start;
+        start += (m_colourSize[static_cast<size_t>(c)] + width - 1) / width;
+    }
+    int overflowBlock = start;
+    m_slots.clear();
+    m_slots.reserve(m_candidates.size());
+    for (size_t k = 0; k < m_candidates.size(); ++k) {
+        const int ci = m_candidates[k];
+        const int colour = m_colourOf[k];
+        Slot slot;
+        slot.contact = ci;
+        if (colour >= 0) {
+            const auto c = static_cast<size_t>(colour);
+            slot.block = next[c];
+            slot.lane = lane[c];
+            if (++lane[c] == width) {
+                lane[c] = 0;
+                ++next[c];
+            }
+        } else {
+            slot.block = overflowBlock++;
+            slot.lane = 0;
+        }
+        fillLane(ci, contacts[static_cast<size_t>(ci)], bodies,
+                 m_blocks[static_cast<size_t>(slot.block)], slot.lane);
+        m_slots.push_back(slot);
+    }
+}
+
+void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector<Body>& bodies,
+                          soft::Block& k, int lane)
+{
+    (void)contactIndex;
+    const Body& a = bodies[static_cast<size_t>(ct.a)];
+    const Body& b = bodies[static_cast<size_t>(ct.b)];
+    const double mA = a.isActive() ? a.invMass : 0.0, iA = a.isActive() ? a.invInertia : 0.0;
+    const double mB = b.isActive() ? b.invMass : 0.0, iB = b.isActive() ? b.invInertia : 0.0;
+    const auto l = static_cast<size_t>(lane);
+    k.a[l] = ct.a;
+    k.b[l] = ct.b;
+    k.invMassA[l] = mA;
+    k.invIA[l] = iA;
+    k.invMassB[l] = mB;
+    k.invIB[l] = iB;
+    const Vec2 n = ct.manifold.normal, t(n.y(), -n.x());
+    k.nx[l] = n.x();
+    k.ny[l] = n.y();
+    k.friction[l] = ct.friction;
+    k.restitution[l] = ct.restitution;
+    const double hertz = m_settings.contactFrequency / m_substep;
+    const bool oneSided = mA == 0.0 || mB == 0.0;
+    const Softness soft =
+        softness(oneSided ? 2.0 * hertz : hertz, m_settings.dampingRatio, m_substep);
+    k.biasRate[l] = soft.biasRate;
+    k.massScale[l] = soft.massScale;
+    k.impulseScale[l] = soft.impulseScale;
+
+    const double substeps = m_settings.substeps;
+    const soft::BodyState& sa = m_state[static_cast<size_t>(ct.a)];
+    const soft::BodyState& sb = m_state[static_cast<size_t>(ct.b)];
+    for (int i = 0; i < ct.manifold.pointCount; ++i) {
+        const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
+        soft::PointLanes& p = k.p[i];
+        // Lever arms from the centres of mass where the narrow phase found the contact.
+        const Vec2 rA = cp.point - a.position, rB = cp.point - b.position;
+        p.rAx[l] = rA.x();
+        p.rAy[l] = rA.y();
+        p.rBx[l] = rB.x();
+        p.rBy[l] = rB.y();
+        p.base[l] = cp.separation - n.dot(rB - rA);
+        const double rnA = cross(rA, n), rnB = cross(rB, n);
+        const double kn = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+        p.normalMass[l] = kn > 0 ? 1.0 / kn : 0.0;
+        const double rtA = cross(rA, t), rtB = cross(rB, t);
+        const double kt = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
+        p.tangentMass[l] = kt > 0 ? 1.0 / kt : 0.0;
+        // Warm start: the contact keeps the impulse of a whole step; a substep applies its
+        // share.
+        p.normalImpulse[l] = ct.normalImpulse[static_cast<size_t>(i)] / substeps;
+        p.tangentImpulse[l] = ct.tangentImpulse[static_cast<size_t>(i)] / substeps;
+        p.maxNormalImpulse[l] = 0.0;
+        // The normal velocity before the step's forces: the restitution's reference.
+        const Vec2 vA = Vec2(sa.vx, sa.vy) + cross(sa.w, rA);
+        const Vec2 vB = Vec2(sb.vx, sb.vy) + cross(sb.w, rB);
+        p.relativeVelocity[l] = (vB - vA).dot(n);
+    }
+}
+
+void SoftSolver::integrateVelocities()
+{
+    const double h = m_substep;
+    for (size_t k = 0; k < m_moving.size(); ++k) {
+        soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
+        s.vx += h * m_acceleration[k].x();
+        s.vy += h * m_acceleration[k].y();
+        s.w += h * m_angularAcceleration[k];
+    }
+}
+
+void SoftSolver::warmStart()
+{
+    m_kernel.warmStart(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data());
+}
+
+void SoftSolver::solve(bool useBias)
+{
+    m_pass.useBias = useBias;
+    m_pass.friction = !useBias || m_settings.frictionWithBias;
+    m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
+}
+
+void SoftSolver::integratePositions()
+{
+    const double h = m_substep;
+    auto move = [&](int id) {
+        const auto i = static_cast<size_t>(id);
+        soft::BodyState& s = m_state[i];
+        const double dx = h * s.vx, dy = h * s.vy, da = h * s.w;
+        m_position[i] += Vec2(dx, dy);
+        m_angle[i] += da;
+        s.dpx += dx;
+        s.dpy += dy;
+        // The rotation since the step began, turned by da to first order and normalised: it
+        // only places the lever arms for the separation, so a sine and cosine are not needed.
+        const double c = s.qc - da * s.qs, sn = s.qs + da * s.qc;
+        const double inv = 1.0 / std::sqrt(c * c + sn * sn);
+        s.qc = c * inv;
+        s.qs = sn * inv;
+    };
+    for (int id : m_moving)
+        move(id);
+    for (int id : m_kinematic)
+        move(id);
+}
+
+void SoftSolver::applyRestitution()
+{
+    m_kernel.restitution(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(),
+                         m_pass);
+}
+
+double SoftSolver::kineticEnergy() const
+{
+    double e = 0.0;
+    for (size_t k = 0; k < m_moving.size(); ++k) {
+        const soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
+        e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
+    }
+    return 0.5 * e;
+}
+
+double SoftSolver::loadPower() const
+{
+    double p = 0.0;
+    for (size_t k = 0; k < m_moving.size(); ++k) {
+        const soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
+        p += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
+             m_inertia[k] * m_angularAcceleration[k] * s.w;
+    }
+    return p;
+}
+
+void SoftSolver::end(std::vector<Body>& bodies)
+{
+    auto write = [&](int id) {
+        const auto i = static_cast<size_t>(id);
+        Body& b = bodies[i];
+        const soft::BodyState& s = m_state[i];
+        b.velocity = Vec2(s.vx, s.vy);
+        b.angularVelocity = s.w;
+        b.position = m_position[i];
+        b.angle = m_angle[i];
+    };
+    for (int id : m_moving)
+        write(id);
+    for (int id : m_kinematic)
+        write(id);
+    const double substeps = m_settings.substeps;
+    for (const Slot& slot : m_slots) {
+        Contact& ct = (*m_contacts)[static_cast<size_t>(slot.contact)];
+        const soft::Block& k = m_blocks[static_cast<size_t>(slot.block)];
+        const auto l = static_cast<size_t>(slot.lane);
+        for (int i = 0; i < ct.manifold.pointCount; ++i) {
+            ct.normalImpulse[static_cast<size_t>(i)] = substeps * k.p[i].normalImpulse[l];
+            ct.tangentImpulse[static_cast<size_t>(i)] = substeps * k.p[i].tangentImpulse[l];
+        }
+    }
+}
+
+} // namespace rigidlab::physics

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Private: the soft step's solver (SolverKind::SoftStep), driven substep by substep from
+// soft_step.cpp. It keeps its own copy of what the substeps change (velocities, positions,
+// angles), the contacts as coloured blocks of lanes (soft_kernel.h), and writes the bodies
+// and the contacts' impulses back at the end of the step.
+
+#include "rigidlab/physics/body.h"
+#include "rigidlab/physics/contact.h"
+#include "rigidlab/physics/world.h"
+
+#include "soft_kernel.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace rigidlab::physics {
+
+class SoftSolver {
+public:
+    /// Takes this step's contacts and bodies, before anything moved. acceleration and
+    /// angularAcceleration: each body's applied load over its mass, constant over the step.
+    /// restitutionThreshold: approaches slower than this do not bounce [m/s].
+    void begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
+               const std::vector<Vec2>& acceleration,
+               const std::vector<double>& angularAcceleration, double dt,
+               const SoftStepSettings& settings, double restitutionThreshold);
+
+    // A substep, in this order (Catto's soft step).
+    void integrateVelocities();
+    void warmStart();
+    /// useBias: the soft solve that pushes overlaps apart; false: the relax pass, rigid and
+    /// without bias, which takes the push's velocity out again.
+    void solve(bool useBias);
+    void integratePositions();
+
+    /// After the substeps: restitution from the normal velocities before the step.
+    void applyRestitution();
+    /// Velocities, positions and angles to the bodies, impulses (per step) to the contacts.
+    void end(std::vector<Body>& bodies);
+
+    /// Kinetic energy of the bodies the step moves [J], for the energy the contacts took.
+    double kineticEnergy() const;
+    /// Power of the applied loads at the present velocities, sum m a.v + I alpha w [W].
+    double loadPower() const;
+
+    int constraintCount() const { return static_cast<int>(m_slots.size()); }
+    int colourCount() const { return m_colourCount; }
+    /// Contacts that found no colour and are solved one by one.
+    int overflowCount() const { return m_overflow; }
+    /// The kernel in use ("4 lanes, AVX2").
+    const char* kernelName() const { return m_kernel.name; }
+
+    /// Colours a deterministic graph colouring may use; more contacts at one body overflow.
+    static constexpr int kMaxColours = 64;
+
+private:
+    /// Where a contact's lane is.
+    struct Slot {
+        int contact = 0;
+        int block = 0;
+        int lane = 0;
+    };
+    void buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
+    void fillLane(int contactIndex, const Contact& ct, const std::vector<Body>& bodies,
+                  soft::Block& block, int lane);
+
+    std::vector<Contact>* m_contacts = nullptr;
+    SoftStepSettings m_settings;
+    double m_substep = 0; ///< [s]
+    soft::Kernel m_kernel{};
+    soft::PassSettings m_pass;
+
+    std::vector<soft::BodyState> m_state;      ///< per body, and a spare one for empty lanes
+    std::vector<int> m_moving;                 ///< awake dynamic bodies
+    std::vector<int> m_kinematic;              ///< kinematic bodies
+    std::vector<Vec2> m_position;              ///< centre of mass [m], per body
+    std::vector<double> m_angle;               ///< [rad], per body
+    std::vector<Vec2> m_acceleration;          ///< per moving body [m/s^2]
+    std::vector<double> m_angularAcceleration; ///< per moving body [rad/s^2]
+    std::vector<double> m_mass, m_inertia;     ///< per moving body
+
+    std::vector<soft::Block> m_blocks;
+    std::vector<Slot> m_slots;
+    std::vector<std::uint64_t> m_colourMask; ///< per body: colours of its contacts
+    std::vector<int> m_colourOf;             ///< per candidate contact, -1 overflow
+    std::vector<int> m_candidates;           ///< contacts with a body to solve
+    std::vector<int> m_colourSize;
+    int m_colourCount = 0;
+    int m_overflow = 0;
+};
+
+} // namespace rigidlab::physics
