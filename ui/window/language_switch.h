@@ -5,9 +5,9 @@
 // retranslated in place: every text is then made by the code that makes it in the first
 // place, so no widget can be left half in the old language.
 
+#include "format/scene.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/setting_edit.h"
-#include "format/scene.h"
 
 #include <QByteArray>
 #include <QString>
