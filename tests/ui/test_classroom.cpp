@@ -5,6 +5,7 @@
 // back of a room and gives the layout back when it ends.
 
 #include "common/theme.h"
+#include "editor/edit_tools.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/sat_panel.h"
 #include "plots/plot_widget.h"
@@ -547,20 +548,39 @@ private slots:
         QVERIFY(w.presentation());
         QCOMPARE(w.size(), QSize(1024, 768));
 
-        for (const QToolBar* bar : w.findChildren<QToolBar*>()) {
-            if (!bar->isVisible())
-                continue;
-            for (QAction* a : bar->actions()) {
-                if (a->isSeparator() || !a->isVisible())
+        // Every visible toolbar's actions in sight, when running and in Edit mode (where the
+        // scene editor's tools get a row of their own).
+        const auto everyActionInSight = [&w] {
+            for (const QToolBar* bar : w.findChildren<QToolBar*>()) {
+                if (!bar->isVisible())
                     continue;
-                const QWidget* button = bar->widgetForAction(a);
-                QVERIFY2(button && button->isVisible() &&
-                             bar->rect().contains(QRect(button->pos(), button->size())),
-                         qPrintable(bar->objectName() + QStringLiteral(": ") + a->text()));
+                for (QAction* a : bar->actions()) {
+                    if (a->isSeparator() || !a->isVisible())
+                        continue;
+                    const QWidget* button = bar->widgetForAction(a);
+                    QVERIFY2(button && button->isVisible() &&
+                                 bar->rect().contains(QRect(button->pos(), button->size())),
+                             qPrintable(bar->objectName() + QStringLiteral(": ") + a->text()));
+                }
+                const auto* more =
+                    bar->findChild<QWidget*>(QStringLiteral("qt_toolbar_ext_button"));
+                QVERIFY2(!more || !more->isVisible(), qPrintable(bar->objectName()));
             }
-            const auto* more = bar->findChild<QWidget*>(QStringLiteral("qt_toolbar_ext_button"));
-            QVERIFY2(!more || !more->isVisible(), qPrintable(bar->objectName()));
-        }
+        };
+        everyActionInSight();
+        if (QTest::currentTestFailed())
+            return;
+        auto* tools = w.findChild<QToolBar*>(QStringLiteral("editToolbar"));
+        QVERIFY(tools);
+        QVERIFY(!tools->isVisible());
+        w.editTools().setEditing(true);
+        QCoreApplication::processEvents();
+        QVERIFY(tools->isVisible());
+        everyActionInSight();
+        if (QTest::currentTestFailed())
+            return;
+        w.editTools().setEditing(false);
+        QCoreApplication::processEvents();
 
         QVERIFY(!w.statusText().isEmpty());
         for (const QLabel* label : w.statusBar()->findChildren<QLabel*>()) {

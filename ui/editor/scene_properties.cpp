@@ -15,6 +15,7 @@
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
+#include <QLabel>
 #include <QLineEdit>
 #include <QVBoxLayout>
 
@@ -28,6 +29,19 @@ namespace {
 /// Merge ids of the fields' edits: one per field, well apart from the tools' drag ids.
 constexpr int kFieldMergeBase = 1 << 20;
 
+/// A field's row label with the unit the field shows, as the Controls panel writes it:
+/// "Density [kg/m²]" (the ranges spell powers as ^2, ^3).
+void labelWithUnit(QFormLayout* form, NumberField* f, const QString& label)
+{
+    if (f->unit().isEmpty())
+        return;
+    QString unit = f->unit();
+    unit.replace(QLatin1String("^2"), QStringLiteral("²"))
+        .replace(QLatin1String("^3"), QStringLiteral("³"));
+    if (auto* l = qobject_cast<QLabel*>(form->labelForField(f)))
+        l->setText(QStringLiteral("%1 [%2]").arg(label, unit));
+}
+
 } // namespace
 
 SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWidget* parent)
@@ -39,6 +53,7 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
 
     m_bodyBox = new QGroupBox(tr("Body"), this);
     auto* body = new QFormLayout(m_bodyBox);
+    body->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fields as wide as the dock
     m_id = new QLineEdit(m_bodyBox);
     m_id->setObjectName(QStringLiteral("id"));
     body->addRow(tr("Id"), m_id);
@@ -68,6 +83,7 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
     for (const BodyRow& row : bodyRows) {
         NumberField* f = addNumber(body, QLatin1String(row.name), row.label);
         f->setRange(row.range, row.label);
+        labelWithUnit(body, f, row.label);
         const int mergeId = merge++;
         const auto what = row.what;
         const QString label = row.label;
@@ -97,6 +113,7 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
 
     m_springBox = new QGroupBox(tr("Spring"), this);
     auto* spring = new QFormLayout(m_springBox);
+    spring->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fields as wide as the dock
     struct SpringRow {
         const char* name;
         QString label;
@@ -111,6 +128,7 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
     for (const SpringRow& row : springRows) {
         NumberField* f = addNumber(spring, QLatin1String(row.name), row.label);
         f->setRange(row.range, row.label);
+        labelWithUnit(spring, f, row.label);
         const int mergeId = merge++;
         const auto what = row.what;
         const QString label = row.label;
@@ -125,6 +143,7 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
 
     auto* worldBox = new QGroupBox(tr("World"), this);
     auto* world = new QFormLayout(worldBox);
+    world->setRowWrapPolicy(QFormLayout::WrapAllRows); // labels above: fields as wide as the dock
     struct WorldRow {
         const char* name;
         QString label;
@@ -147,6 +166,7 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
     for (const WorldRow& row : worldRows) {
         NumberField* f = addNumber(world, QLatin1String(row.name), row.label);
         f->setRange(NumberField::scaled(row.range, row.scale), row.label, row.unit);
+        labelWithUnit(world, f, row.label);
         f->setInteger(row.what == edit::WorldNumber::Iterations);
         const int mergeId = merge++;
         const auto what = row.what;

@@ -41,6 +41,8 @@ public:
     /// ("dt must be from 0.0001 ms to 1000 ms"); `unit` overrides the range's own unit.
     void setRange(const lessons::limits::Range& range, const QString& name,
                   const QString& unit = QString());
+    /// The unit the field shows its value in ("ms", "kg/m^2"); empty for a pure number.
+    const QString& unit() const { return m_unit; }
     /// The range scaled into the unit shown, e.g. limits::kDt in ms: scaled(kDt, 1e3).
     static lessons::limits::Range scaled(const lessons::limits::Range& range, double factor);
     /// Accepts whole numbers only.

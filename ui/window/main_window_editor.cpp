@@ -10,6 +10,7 @@
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QScrollArea>
 #include <QStatusBar>
@@ -35,24 +36,39 @@ void MainWindow::buildEditor()
         }
     });
 
+    // Edit on or off sits on the simulation toolbar, beside Play. The tools get a row of their
+    // own below it, shown in Edit mode only: on a 1024-pixel projector one row cannot hold the
+    // simulation's actions and ten tools, and the tools would hide behind "»".
+    const QList<QAction*> actions = m_editTools->actions();
+    if (auto* simulation = findChild<QToolBar*>(QStringLiteral("simulationToolbar"))) {
+        simulation->addSeparator();
+        simulation->addAction(actions.front());
+    }
+    addToolBarBreak();
     auto* toolbar = addToolBar(tr("Scene editor"));
     toolbar->setObjectName(QStringLiteral("editToolbar"));
     toolbar->setToolButtonStyle(Qt::ToolButtonTextOnly);
-    const QList<QAction*> actions = m_editTools->actions();
-    toolbar->addAction(actions.front());
-    toolbar->addSeparator();
     for (qsizetype i = 1; i < actions.size(); ++i) {
         toolbar->addAction(actions[i]);
     }
+    toolbar->hide();
+    connect(m_editTools, &EditTools::editingChanged, toolbar, &QToolBar::setVisible);
     addAction(m_editTools->deleteSelectionAction());
 
     // The selection's properties, beside the inspector, shown in Edit mode.
     auto* properties = new SceneProperties(*m_editTools, *m_document, this);
     connect(properties, &SceneProperties::refused, this,
             [this](const QString& why) { statusBar()->showMessage(why, 10000); });
+    // As the other panels: lists as narrow as a short name, so that a long integrator's name
+    // does not widen the side column on a projector, and a panel that scrolls, not cut.
+    for (QComboBox* box : properties->findChildren<QComboBox*>()) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(8);
+    }
     auto* scroll = new QScrollArea(this);
     scroll->setWidget(properties);
     scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
     auto* dock = new QDockWidget(tr("Properties"), this);
     dock->setObjectName(QStringLiteral("propertiesDock"));
     dock->setWidget(scroll);
