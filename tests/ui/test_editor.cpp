@@ -23,6 +23,7 @@
 #include <QTest>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -155,6 +156,7 @@ private slots:
     void refusesDegenerateShapesWithTheirMessage();
     void warnsOfOverlapsAndHulls();
     void keysNudgeAndTurn();
+    void thinBoxOnTheGridKeepsOneStep();
     void teachersTaskInTheWindow();
     void lessonLocksTools();
 };
@@ -181,6 +183,22 @@ void TestEditor::editModePausesAndRunsAsEdited()
     rig.tools.editAction()->trigger();
     QVERIFY(rig.tools.editing());
     QVERIFY(!rig.simulation.isRunning());
+}
+
+// A ramp drawn thinner than the grid: both its long edges snap to one grid line, and it keeps
+// one grid step across instead of being refused as flat (found drawing by hand under Xvfb).
+void TestEditor::thinBoxOnTheGridKeepsOneStep()
+{
+    Rig rig;
+    rig.use(EditTool::Ground);
+    rig.drag(rig.px(-3, 3), rig.px(3, 3.2));
+    QVERIFY2(rig.index("ground1") >= 0, qPrintable(rig.tools.lastMessage()));
+    const physics::Polygon* box = rig.body("ground1").shape.asPolygon();
+    QVERIFY(box);
+    const auto [lo, hi] =
+        std::minmax_element(box->vertices.begin(), box->vertices.end(),
+                            [](const Vec2& a, const Vec2& b) { return a.y() < b.y(); });
+    QVERIFY(std::abs((hi->y() - lo->y()) - rig.g) < kTolerance);
 }
 
 void TestEditor::drawsEveryKindAndUndoesBackToTheOpenedScene()

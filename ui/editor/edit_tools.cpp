@@ -656,7 +656,16 @@ bool EditTools::mouseRelease(QMouseEvent* event)
     const Drag drag = m_drag;
     m_drag = Drag{};
     const lessons::Scene& scene = m_document.scene();
-    const Vec2 end = snapped(raw);
+    Vec2 end = snapped(raw);
+    if (m_snapAction->isChecked() && (m_tool == EditTool::Box || m_tool == EditTool::Ground)) {
+        // A thin box whose two edges snap to one grid line keeps one grid step across, the way
+        // it was dragged, instead of being refused as flat (a ramp drawn on a 1 m grid).
+        for (int k = 0; k < 2; ++k) {
+            if (end[k] == drag.start[k] && raw[k] != drag.start[k]) {
+                end[k] = drag.start[k] + (raw[k] > drag.start[k] ? gridStep() : -gridStep());
+            }
+        }
+    }
     const Vec2 centre = 0.5 * (drag.start + end);
     const Vec2 size = (end - drag.start).cwiseAbs();
     edit::EditResult result;
