@@ -14,13 +14,19 @@ namespace rigidlab::ui {
 namespace {
 
 const char* const kFullTitle = "fullTitle";
+/// The keeper's object name, by which a dock finds its window's keeper (the keeper has no
+/// meta-object of its own, so findChild<DockTabKeeper*> would take any child for it).
+const char* const kKeeperName = "rigidlabDockTabKeeper";
 
 /// Lets the window's dock tab bars show whole titles, and the full ones as tooltips. The
 /// window makes its tab bars as docks are tabbed (eliding their text): they are set up once
 /// polished, after the window has made them.
 class DockTabKeeper : public QObject {
 public:
-    explicit DockTabKeeper(QMainWindow& window) : QObject(&window), m_window(window) {}
+    explicit DockTabKeeper(QMainWindow& window) : QObject(&window), m_window(window)
+    {
+        setObjectName(QLatin1String(kKeeperName));
+    }
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override
@@ -74,9 +80,10 @@ void setFullTitle(QDockWidget& dock, const QString& title)
 {
     dock.setProperty(kFullTitle, title);
     // The title bar's tooltip: every dock gets the filter of its window's keeper.
-    if (auto* keeper = dock.parent() ? dock.parent()->findChild<DockTabKeeper*>(
-                                           QString(), Qt::FindDirectChildrenOnly)
-                                     : nullptr)
+    if (QObject* keeper = dock.parent()
+                              ? dock.parent()->findChild<QObject*>(QLatin1String(kKeeperName),
+                                                                   Qt::FindDirectChildrenOnly)
+                              : nullptr)
         dock.installEventFilter(keeper);
 }
 
