@@ -74,6 +74,17 @@ QString spelled(const QStringList& words, const QString& name)
 
 } // namespace
 
+bool CommandLine::parseOptionsOnly(const QStringList& words)
+{
+    if (!parse(words))
+        return false;
+    if (const QStringList extra = positionals(); !extra.isEmpty()) {
+        m_error = QStringLiteral("unexpected argument \"%1\"").arg(extra.front());
+        return false;
+    }
+    return true;
+}
+
 bool CommandLine::parse(const QStringList& words)
 {
     m_error.clear();

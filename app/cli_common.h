@@ -47,6 +47,9 @@ public:
 
     /// Reads the words; false with error() set when the command line is malformed.
     bool parse(const QStringList& words);
+    /// Reads the words of a command that takes options only: also false, with error()
+    /// "unexpected argument \"X\"", when a word is not an option.
+    bool parseOptionsOnly(const QStringList& words);
     const QString& error() const { return m_error; }
     const QString& command() const { return m_command; }
 

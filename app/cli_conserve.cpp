@@ -16,11 +16,8 @@ int commandConserve(const QStringList& words)
     CommandLine args(QStringLiteral("conserve"));
     for (const char* name : {"balls", "time", "dt"})
         args.addValue(QLatin1StringView(name));
-    if (!args.parse(words))
+    if (!args.parseOptionsOnly(words))
         return usageError(args.command(), args.error());
-    if (!args.positionals().isEmpty())
-        return usageError(args.command(),
-                          QStringLiteral("unexpected argument \"%1\"").arg(args.positionals()[0]));
     QString error;
     lessons::GasSpec gas;
     if (const auto balls = args.value(QStringLiteral("balls"))) {

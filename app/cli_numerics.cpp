@@ -61,11 +61,8 @@ int commandErrorVsTime(const QStringList& words)
     for (const char* name : {"problem", "integrators", "dt-from", "dt-to", "points", "t-end", "csv",
                              "plot", "tol-from", "tol-to", "min-cpu"})
         args.addValue(QLatin1StringView(name));
-    if (!args.parse(words))
+    if (!args.parseOptionsOnly(words))
         return usageError(args.command(), args.error());
-    if (!args.positionals().isEmpty())
-        return usageError(args.command(),
-                          QStringLiteral("unexpected argument \"%1\"").arg(args.positionals()[0]));
     QString error;
     // A positive number from an option, when given.
     const auto number = [&](const char* name) -> std::optional<double> {
@@ -166,11 +163,8 @@ int commandStress(const QStringList& words)
     CommandLine args(QStringLiteral("stress"));
     args.addValue(QStringLiteral("case"));
     args.addValue(QStringLiteral("json"));
-    if (!args.parse(words))
+    if (!args.parseOptionsOnly(words))
         return usageError(args.command(), args.error());
-    if (!args.positionals().isEmpty())
-        return usageError(args.command(),
-                          QStringLiteral("unexpected argument \"%1\"").arg(args.positionals()[0]));
     QString name;
     if (const auto chosen = args.value(QStringLiteral("case"))) {
         name = *chosen;
