@@ -159,6 +159,7 @@ private slots:
     void thinBoxOnTheGridKeepsOneStep();
     void teachersTaskInTheWindow();
     void lessonLocksTools();
+    void viewHoldsStillWhileDrawing();
 };
 
 void TestEditor::editModePausesAndRunsAsEdited()
@@ -510,6 +511,44 @@ void TestEditor::lessonLocksTools()
     QCOMPARE(rig.tools.tool(), EditTool::Circle);
     rig.tools.setAllowedTools(std::nullopt);
     QVERIFY(rig.tools.toolAction(EditTool::Box)->isEnabled());
+}
+
+// Found by hand under Xvfb: the first body drawn above a new scene's floor made the view follow
+// it (auto-fit), so the floor jumped and the next stroke landed elsewhere than aimed.
+void TestEditor::viewHoldsStillWhileDrawing()
+{
+    MainWindow w;
+    w.resize(1024, 768);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.newScene());
+    EditTools& tools = w.editTools();
+    WorldView& view = w.view();
+    if (!tools.editing())
+        tools.editAction()->trigger();
+    QVERIFY(tools.editing());
+    const QPoint origin = view.mapFromScene(QPointF(0, 0));
+    const double zoom = view.transform().m11();
+    // A ball drawn well above the floor, outside what the fitted view was fitted to.
+    const double g = tools.gridStep();
+    const QPointF top = view.mapToScene(QPoint(view.viewport()->width() / 2, 40));
+    const Vec2 centre(std::round(top.x() / g) * g, std::floor(top.y() / g) * g - g);
+    QVERIFY2(centre.y() > 1.0, "the view shows room above the floor");
+    tools.toolAction(EditTool::Circle)->trigger();
+    const QPoint from = view.mapFromScene(QPointF(centre.x(), centre.y()));
+    const QPoint to = view.mapFromScene(QPointF(centre.x() + g, centre.y()));
+    QTest::mousePress(view.viewport(), Qt::LeftButton, {}, from);
+    QTest::mouseMove(view.viewport(), (from + to) / 2);
+    QTest::mouseMove(view.viewport(), to);
+    QTest::mouseRelease(view.viewport(), Qt::LeftButton, {}, to);
+    const auto& bodies = w.document()->scene().bodies;
+    QCOMPARE(bodies.size(), size_t(2));
+    QVERIFY(near(bodies.back().position, centre));
+    QCOMPARE(view.mapFromScene(QPointF(0, 0)), origin);
+    QCOMPARE(view.transform().m11(), zoom);
+    // Leaving Edit mode runs the scene, and the view may fit it again.
+    tools.editAction()->trigger();
+    QVERIFY(!tools.editing());
 }
 
 RIGIDLAB_TEST_MAIN(TestEditor)
