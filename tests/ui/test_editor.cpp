@@ -17,6 +17,7 @@
 #include "test_main.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QDir>
 #include <QLineEdit>
 #include <QScreen>
@@ -160,6 +161,7 @@ private slots:
     void teachersTaskInTheWindow();
     void lessonLocksTools();
     void viewHoldsStillWhileDrawing();
+    void propertiesShowWhatMatters();
 };
 
 void TestEditor::editModePausesAndRunsAsEdited()
@@ -549,6 +551,49 @@ void TestEditor::viewHoldsStillWhileDrawing()
     // Leaving Edit mode runs the scene, and the view may fit it again.
     tools.editAction()->trigger();
     QVERIFY(!tools.editing());
+}
+
+// Found by hand: a drawn ball's mass read "0,403417956328" (density times area, to twelve
+// digits), and a static ramp offered a density and a mass that change nothing.
+void TestEditor::propertiesShowWhatMatters()
+{
+    Rig rig;
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(0, 4), rig.px(1, 4));
+    QCOMPARE(rig.tools.selectedBody(), rig.index("circle1"));
+    const physics::BodyDef& ball = rig.body("circle1");
+    NumberField* mass = rig.properties.field(QStringLiteral("mass"));
+    NumberField* density = rig.properties.field(QStringLiteral("density"));
+    const double area = std::numbers::pi * rig.g * rig.g;
+    // The density is the scene's; the mass is computed from it, shown to four digits.
+    QCOMPARE(density->text(), formatNumber(ball.density));
+    QCOMPARE(mass->text(), formatNumber(ball.density * area, 4));
+    QCOMPARE(mass->value(), ball.density * area); // the value itself is not rounded
+    // Given a mass, the density becomes the computed one.
+    type(mass, QLocale().toString(2.5));
+    QVERIFY(mass->commit());
+    QCOMPARE(rig.body("circle1").mass, 2.5);
+    QCOMPARE(mass->text(), formatNumber(2.5));
+    QCOMPARE(density->text(), formatNumber(2.5 / area, 4));
+    // Static: no density, mass or velocity rows; restitution and friction stay.
+    QComboBox* kind = rig.properties.findChild<QComboBox*>(QStringLiteral("type"));
+    QVERIFY(kind);
+    kind->setCurrentIndex(kind->findData(int(physics::BodyType::Static)));
+    emit kind->activated(kind->currentIndex());
+    QCOMPARE(rig.body("circle1").type, physics::BodyType::Static);
+    QVERIFY(!mass->isVisibleTo(&rig.properties));
+    QVERIFY(!density->isVisibleTo(&rig.properties));
+    QVERIFY(!rig.properties.field(QStringLiteral("velocityX"))->isVisibleTo(&rig.properties));
+    QVERIFY(rig.properties.field(QStringLiteral("friction"))->isVisibleTo(&rig.properties));
+    // Kinematic: it moves at its velocity, whatever its mass.
+    kind->setCurrentIndex(kind->findData(int(physics::BodyType::Kinematic)));
+    emit kind->activated(kind->currentIndex());
+    QVERIFY(!mass->isVisibleTo(&rig.properties));
+    QVERIFY(rig.properties.field(QStringLiteral("velocityX"))->isVisibleTo(&rig.properties));
+    rig.document.undoStack()->undo();
+    rig.document.undoStack()->undo();
+    QCOMPARE(rig.body("circle1").type, physics::BodyType::Dynamic);
+    QVERIFY(mass->isVisibleTo(&rig.properties));
 }
 
 RIGIDLAB_TEST_MAIN(TestEditor)

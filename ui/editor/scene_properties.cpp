@@ -249,9 +249,27 @@ void SceneProperties::refresh()
             m_id->setText(QString::fromStdString(def.name));
         }
         m_type->setCurrentIndex(m_type->findData(int(def.type)));
+        // The one of density and mass the scene gives is shown as given; the other, computed
+        // from it and the area, to four digits, without the rounding noise of the product.
+        constexpr int kComputedDigits = 4;
         const double area = physics::computeMass(def.shape, 1.0).area;
-        field(QStringLiteral("density"))->setValue(def.mass > 0 ? def.mass / area : def.density);
-        field(QStringLiteral("mass"))->setValue(def.mass > 0 ? def.mass : def.density * area);
+        const bool massGiven = def.mass > 0;
+        field(QStringLiteral("density"))
+            ->setValue(massGiven ? def.mass / area : def.density,
+                       massGiven ? kComputedDigits : NumberField::kFullDigits);
+        field(QStringLiteral("mass"))
+            ->setValue(massGiven ? def.mass : def.density * area,
+                       massGiven ? NumberField::kFullDigits : kComputedDigits);
+        // A static body has no mass and never moves; a kinematic one moves at its velocity
+        // whatever its mass: only the rows that change something are shown.
+        if (auto* form = qobject_cast<QFormLayout*>(m_bodyBox->layout())) {
+            const bool dynamic = def.type == physics::BodyType::Dynamic;
+            const bool moves = def.type != physics::BodyType::Static;
+            for (const char* name : {"density", "mass"})
+                form->setRowVisible(field(QLatin1String(name)), dynamic);
+            for (const char* name : {"velocityX", "velocityY", "angularVelocity"})
+                form->setRowVisible(field(QLatin1String(name)), moves);
+        }
         // A body without its own restitution or friction takes the world's: shown as such.
         field(QStringLiteral("restitution"))
             ->setValue(def.restitution >= 0 ? def.restitution : scene.world.restitution);

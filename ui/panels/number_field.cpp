@@ -103,14 +103,15 @@ lessons::limits::Range NumberField::scaled(const lessons::limits::Range& range, 
     return {range.min * factor, range.max * factor, range.unit};
 }
 
-void NumberField::setValue(double v)
+void NumberField::setValue(double v, int significant)
 {
     if (!std::isfinite(v))
         return;
     m_value = v;
+    m_digits = significant;
     // An edit in progress keeps its text; otherwise the text changes only when it must, so
     // that a redraw of the panel leaves the cursor where it is.
-    if (!isModified() && text() != formatNumber(v))
+    if (!isModified() && text() != formatNumber(v, m_digits))
         display(v);
 }
 
@@ -176,7 +177,7 @@ void NumberField::revert()
 
 void NumberField::display(double v)
 {
-    setText(formatNumber(v));
+    setText(formatNumber(v, m_digits));
     setModified(false);
 }
 

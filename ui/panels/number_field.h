@@ -49,9 +49,13 @@ public:
     void setInteger(bool on) { m_integer = on; }
 
     double value() const { return m_value; }
-    /// Shows `v` as the value in force. An edit in progress is left alone: the value it
-    /// would restore on Escape becomes `v`.
-    void setValue(double v);
+    /// Shows `v` as the value in force, to `significant` digits (fewer for a value computed
+    /// from others, such as a mass from density and area, where the last digits are rounding
+    /// noise). An edit in progress is left alone: the value it would restore on Escape
+    /// becomes `v`.
+    void setValue(double v, int significant = kFullDigits);
+    /// The digits a value typed or read from a file is shown with.
+    static constexpr int kFullDigits = 12;
 
     /// Takes what was typed, as Enter does; false when it was refused.
     bool commit();
@@ -75,6 +79,7 @@ protected:
 
 private:
     void display(double v);
+    int m_digits = kFullDigits; ///< see setValue
     /// "dt must be from 0.0001 ms to 1000 ms".
     QString rangeSentence() const;
     void setError(const QString& message);
