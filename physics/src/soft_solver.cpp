@@ -67,6 +67,7 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
 {
     m_contacts = &contacts;
     m_settings = settings;
+    m_energyValid = false;
     m_substep = dt / settings.substeps;
     static const bool wide = soft::haveAvx2() && soft::kernel4Avx2().solve != nullptr;
     m_kernel = wide && settings.wideKernel ? soft::kernel4Avx2() : soft::kernel2();
@@ -159,8 +160,10 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
         for (int lane = 0; lane < soft::kBlockWidth; ++lane)
             k.a[lane] = k.b[lane] = spare;
     // First block of each colour, then filled in the contacts' order.
-    std::vector<int> next(static_cast<size_t>(m_colourCount) + 1, 0);
-    std::vector<int> lane(static_cast<size_t>(m_colourCount) + 1, 0);
+    std::vector<int>& next = m_nextBlock;
+    std::vector<int>& lane = m_nextLane;
+    next.assign(static_cast<size_t>(m_colourCount) + 1, 0);
+    lane.assign(static_cast<size_t>(m_colourCount) + 1, 0);
     int start = 0;
     for (int c = 0; c < m_colourCount; ++c) {
         next[static_cast<size_t>(c)] = start;
@@ -253,22 +256,34 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
 
 void SoftSolver::integrateVelocities()
 {
+    // The energy sums of the new velocities in the same pass (the same arithmetic, in the
+    // same order, as sumEnergy()): soft_step.cpp asks for them next.
     const double h = m_substep;
+    double e = 0.0, p = 0.0;
     for (size_t k = 0; k < m_moving.size(); ++k) {
         soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
-        s.vx += h * m_acceleration[k].x();
-        s.vy += h * m_acceleration[k].y();
-        s.w += h * m_angularAcceleration[k];
+        const Vec2& a = m_acceleration[k];
+        const double alpha = m_angularAcceleration[k];
+        s.vx += h * a.x();
+        s.vy += h * a.y();
+        s.w += h * alpha;
+        e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
+        p += m_mass[k] * (a.x() * s.vx + a.y() * s.vy) + m_inertia[k] * alpha * s.w;
     }
+    m_energy = 0.5 * e;
+    m_power = p;
+    m_energyValid = true;
 }
 
 void SoftSolver::warmStart()
 {
+    m_energyValid = false;
     m_kernel.warmStart(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data());
 }
 
 void SoftSolver::solve(bool useBias)
 {
+    m_energyValid = false;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
     m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
@@ -300,29 +315,37 @@ void SoftSolver::integratePositions()
 
 void SoftSolver::applyRestitution()
 {
+    m_energyValid = false;
     m_kernel.restitution(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(),
                          m_pass);
 }
 
-double SoftSolver::kineticEnergy() const
+void SoftSolver::sumEnergy() const
 {
-    double e = 0.0;
+    double e = 0.0, p = 0.0;
     for (size_t k = 0; k < m_moving.size(); ++k) {
         const soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
         e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
+        p += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
+             m_inertia[k] * m_angularAcceleration[k] * s.w;
     }
-    return 0.5 * e;
+    m_energy = 0.5 * e;
+    m_power = p;
+    m_energyValid = true;
+}
+
+double SoftSolver::kineticEnergy() const
+{
+    if (!m_energyValid)
+        sumEnergy();
+    return m_energy;
 }
 
 double SoftSolver::loadPower() const
 {
-    double p = 0.0;
-    for (size_t k = 0; k < m_moving.size(); ++k) {
-        const soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
-        p += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
-             m_inertia[k] * m_angularAcceleration[k] * s.w;
-    }
-    return p;
+    if (!m_energyValid)
+        sumEnergy();
+    return m_power;
 }
 
 void SoftSolver::end(std::vector<Body>& bodies)

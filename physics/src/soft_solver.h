@@ -64,6 +64,13 @@ private:
     void buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
     void fillLane(int contactIndex, const Contact& ct, const std::vector<Body>& bodies,
                   soft::Block& block, int lane);
+    /// Both sums of kineticEnergy() and loadPower() in one pass over the bodies, kept until
+    /// the velocities change (each pass of the substep asks for both, some twice).
+    void sumEnergy() const;
+
+    /// The sums of sumEnergy() for the present velocities, valid while m_energyValid.
+    mutable double m_energy = 0, m_power = 0;
+    mutable bool m_energyValid = false;
 
     std::vector<Contact>* m_contacts = nullptr;
     SoftStepSettings m_settings;
@@ -86,6 +93,7 @@ private:
     std::vector<int> m_colourOf;             ///< per candidate contact, -1 overflow
     std::vector<int> m_candidates;           ///< contacts with a body to solve
     std::vector<int> m_colourSize;
+    std::vector<int> m_nextBlock, m_nextLane; ///< per colour, while the blocks are filled
     int m_colourCount = 0;
     int m_overflow = 0;
 };
