@@ -61,51 +61,103 @@ struct Side {
     V vx, vy, w;
 };
 
-inline Side gather(const int* index, const BodyState* bodies)
-{
-    Side s;
-    for (int i = 0; i < W; ++i) {
-        const BodyState& b = bodies[index[i]];
-        s.vx[i] = b.vx;
-        s.vy[i] = b.vy;
-        s.w[i] = b.w;
-    }
-    return s;
-}
-
-inline void scatter(const int* index, BodyState* bodies, const Side& s)
-{
-    // Lanes of a block never share a moving body. A body that does not move (static, asleep,
-    // or the spare body of an empty lane) may stand in several lanes: each writes back the
-    // velocity it read, since its inverse mass is 0.
-    for (int i = 0; i < W; ++i) {
-        BodyState& b = bodies[index[i]];
-        b.vx = s.vx[i];
-        b.vy = s.vy[i];
-        b.w = s.w[i];
-    }
-}
-
 /// The displacement of both sides since the step began, gathered per lane.
 struct Motion {
     V dpx, dpy; ///< dpB - dpA [m]
     V qcA, qsA, qcB, qsB;
 };
 
+using Index = long long __attribute__((vector_size(W * sizeof(long long))));
+
+/// Four doubles of each lane's body, from `offset` within its BodyState, turned into four
+/// vectors of lanes: out[j][i] = body i's field offset + j. Loads and shuffles instead of a
+/// scalar load per field and lane; it moves bits only.
+inline void transpose(const int* index, const BodyState* bodies, int offset, V (&out)[4])
+{
+    const auto field = [&](int lane) {
+        return reinterpret_cast<const double*>(&bodies[index[lane]]) + offset;
+    };
+#if RIGIDLAB_SOFT_WIDTH == 4
+    // Rows r_i = body i's four fields; unpack pairs of rows, then swap the 128-bit halves.
+    const V r0 = load(field(0)), r1 = load(field(1)), r2 = load(field(2)), r3 = load(field(3));
+    const V t0 = __builtin_shuffle(r0, r1, Index{0, 4, 2, 6});
+    const V t1 = __builtin_shuffle(r0, r1, Index{1, 5, 3, 7});
+    const V t2 = __builtin_shuffle(r2, r3, Index{0, 4, 2, 6});
+    const V t3 = __builtin_shuffle(r2, r3, Index{1, 5, 3, 7});
+    out[0] = __builtin_shuffle(t0, t2, Index{0, 1, 4, 5});
+    out[1] = __builtin_shuffle(t1, t3, Index{0, 1, 4, 5});
+    out[2] = __builtin_shuffle(t0, t2, Index{2, 3, 6, 7});
+    out[3] = __builtin_shuffle(t1, t3, Index{2, 3, 6, 7});
+#elif RIGIDLAB_SOFT_WIDTH == 2
+    const V a0 = load(field(0)), a1 = load(field(0) + 2);
+    const V b0 = load(field(1)), b1 = load(field(1) + 2);
+    out[0] = __builtin_shuffle(a0, b0, Index{0, 2});
+    out[1] = __builtin_shuffle(a0, b0, Index{1, 3});
+    out[2] = __builtin_shuffle(a1, b1, Index{0, 2});
+    out[3] = __builtin_shuffle(a1, b1, Index{1, 3});
+#else
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < W; ++i)
+            out[j][i] = field(i)[j];
+#endif
+}
+
+inline Side gather(const int* index, const BodyState* bodies)
+{
+    static_assert(__builtin_offsetof(BodyState, vx) == 0 &&
+                  __builtin_offsetof(BodyState, vy) == sizeof(double) &&
+                  __builtin_offsetof(BodyState, w) == 2 * sizeof(double));
+    V f[4];
+    transpose(index, bodies, 0, f);
+    return {f[0], f[1], f[2]};
+}
+
+inline void scatter(const int* index, BodyState* bodies, const Side& s)
+{
+    // Lanes of a block never share a moving body. A body that does not move (static, asleep,
+    // or the spare body of an empty lane) may stand in several lanes: each writes back the
+    // velocity it read, since its inverse mass is 0. The rows are the gather's transposed
+    // back, with BodyState::unused written as 0.
+    const auto row = [&](int lane) { return reinterpret_cast<double*>(&bodies[index[lane]]); };
+#if RIGIDLAB_SOFT_WIDTH == 4
+    const V u{};
+    const V t0 = __builtin_shuffle(s.vx, s.vy, Index{0, 4, 2, 6});
+    const V t1 = __builtin_shuffle(s.vx, s.vy, Index{1, 5, 3, 7});
+    const V t2 = __builtin_shuffle(s.w, u, Index{0, 4, 2, 6});
+    const V t3 = __builtin_shuffle(s.w, u, Index{1, 5, 3, 7});
+    store(row(0), __builtin_shuffle(t0, t2, Index{0, 1, 4, 5}));
+    store(row(1), __builtin_shuffle(t1, t3, Index{0, 1, 4, 5}));
+    store(row(2), __builtin_shuffle(t0, t2, Index{2, 3, 6, 7}));
+    store(row(3), __builtin_shuffle(t1, t3, Index{2, 3, 6, 7}));
+#elif RIGIDLAB_SOFT_WIDTH == 2
+    const V u{};
+    store(row(0), __builtin_shuffle(s.vx, s.vy, Index{0, 2}));
+    store(row(0) + 2, __builtin_shuffle(s.w, u, Index{0, 2}));
+    store(row(1), __builtin_shuffle(s.vx, s.vy, Index{1, 3}));
+    store(row(1) + 2, __builtin_shuffle(s.w, u, Index{1, 3}));
+#else
+    for (int i = 0; i < W; ++i) {
+        double* b = row(i);
+        b[0] = s.vx[i];
+        b[1] = s.vy[i];
+        b[2] = s.w[i];
+    }
+#endif
+}
+
 inline Motion gatherMotion(const Block& k, const BodyState* bodies)
 {
-    Motion m;
-    for (int i = 0; i < W; ++i) {
-        const BodyState& a = bodies[k.a[i]];
-        const BodyState& b = bodies[k.b[i]];
-        m.dpx[i] = b.dpx - a.dpx;
-        m.dpy[i] = b.dpy - a.dpy;
-        m.qcA[i] = a.qc;
-        m.qsA[i] = a.qs;
-        m.qcB[i] = b.qc;
-        m.qsB[i] = b.qs;
-    }
-    return m;
+    constexpr int kOffset = __builtin_offsetof(BodyState, dpx) / sizeof(double);
+    static_assert(__builtin_offsetof(BodyState, dpy) ==
+                      __builtin_offsetof(BodyState, dpx) + sizeof(double) &&
+                  __builtin_offsetof(BodyState, qc) ==
+                      __builtin_offsetof(BodyState, dpx) + 2 * sizeof(double) &&
+                  __builtin_offsetof(BodyState, qs) ==
+                      __builtin_offsetof(BodyState, dpx) + 3 * sizeof(double));
+    V a[4], b[4];
+    transpose(k.a, bodies, kOffset, a);
+    transpose(k.b, bodies, kOffset, b);
+    return {b[0] - a[0], b[1] - a[1], a[2], a[3], b[2], b[3]};
 }
 
 /// Applies the impulse P = dj (dx, dy) at lever arms (rAx, rAy), (rBx, rBy).
