@@ -201,9 +201,11 @@ void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
     }
 }
 
-void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
+/// One pass, compiled for each combination of PassSettings::useBias and ::friction.
+template <bool kBias, bool kFriction>
+void solvePass(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
 {
-    const V zero = splat(0.0), one = splat(1.0);
+    const V zero = splat(0.0);
     const V inverseSubstep = splat(s.inverseSubstep), maxPush = splat(-s.maxPushSpeed);
     for (int k = 0; k < count; ++k) {
         Block& c = blocks[k];
@@ -212,8 +214,6 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
         const V mA = load(c.invMassA), iA = load(c.invIA), mB = load(c.invMassB),
                 iB = load(c.invIB);
         const V nx = load(c.nx), ny = load(c.ny);
-        const V biasRate = load(c.biasRate), massScale = load(c.massScale),
-                impulseScale = load(c.impulseScale);
         for (PointLanes& p : c.p) {
             const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
             // The separation now: both lever arms turned by their body's rotation so far.
@@ -221,43 +221,53 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
             const V dy = m.dpy + (m.qsB * rBx + m.qcB * rBy) - (m.qsA * rAx + m.qcA * rAy);
             const V sep = dx * nx + dy * ny + load(p.base);
             const auto gap = sep > zero;
-            V bias, ms, is;
-            if (s.useBias) {
-                bias = gap ? sep * inverseSubstep : vmax(biasRate * sep, maxPush);
-                ms = gap ? one : massScale;
-                is = gap ? zero : impulseScale;
-            } else {
-                bias = gap ? sep * inverseSubstep : zero;
-                ms = one;
-                is = zero;
-            }
             const V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
             const V old = load(p.normalImpulse);
-            const V next = vmax(old - load(p.normalMass) * ms * (vn + bias) - is * old, zero);
+            V next;
+            if constexpr (kBias) {
+                const V bias = gap ? sep * inverseSubstep : vmax(load(c.biasRate) * sep, maxPush);
+                const V ms = gap ? splat(1.0) : load(c.massScale);
+                const V is = gap ? zero : load(c.impulseScale);
+                next = vmax(old - load(p.normalMass) * ms * (vn + bias) - is * old, zero);
+            } else {
+                // Rigid: the soft formula with ms = 1 and is = 0, whose products by 1 and
+                // subtraction of +0 (j >= 0) are exact, so the same bits with fewer operations.
+                const V bias = gap ? sep * inverseSubstep : zero;
+                next = vmax(old - load(p.normalMass) * (vn + bias), zero);
+            }
             store(p.normalImpulse, next);
             store(p.maxNormalImpulse, vmax(load(p.maxNormalImpulse), next));
             apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
         }
         // Friction after the normal impulses, so that its cone is this pass's.
-        if (!s.friction) {
-            scatter(c.a, bodies, A);
-            scatter(c.b, bodies, B);
-            continue;
-        }
-        const V friction = load(c.friction);
-        const V tx = ny, ty = -nx;
-        for (PointLanes& p : c.p) {
-            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
-            const V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
-            const V limit = friction * load(p.normalImpulse);
-            const V old = load(p.tangentImpulse);
-            const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
-            store(p.tangentImpulse, next);
-            apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
+        if constexpr (kFriction) {
+            const V friction = load(c.friction);
+            const V tx = ny, ty = -nx;
+            for (PointLanes& p : c.p) {
+                const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+                const V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
+                const V limit = friction * load(p.normalImpulse);
+                const V old = load(p.tangentImpulse);
+                const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
+                store(p.tangentImpulse, next);
+                apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
+            }
         }
         scatter(c.a, bodies, A);
         scatter(c.b, bodies, B);
     }
+}
+
+void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
+{
+    if (s.useBias && s.friction)
+        solvePass<true, true>(blocks, count, bodies, s);
+    else if (s.useBias)
+        solvePass<true, false>(blocks, count, bodies, s);
+    else if (s.friction)
+        solvePass<false, true>(blocks, count, bodies, s);
+    else
+        solvePass<false, false>(blocks, count, bodies, s);
 }
 
 void restitutionBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
