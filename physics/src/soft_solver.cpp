@@ -32,10 +32,6 @@ namespace rigidlab::physics {
 
 namespace {
 
-struct Softness {
-    double biasRate = 0, massScale = 1, impulseScale = 0;
-};
-
 Softness softness(double hertz, double dampingRatio, double h)
 {
     if (hertz <= 0)
@@ -74,6 +70,11 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     m_pass.inverseSubstep = 1.0 / m_substep;
     m_pass.maxPushSpeed = settings.maxPushSpeed;
     m_pass.threshold = restitutionThreshold;
+    // The two softnesses a contact can have (fillLane): between moving bodies, and twice the
+    // frequency against a body that does not move.
+    const double hertz = m_settings.contactFrequency / m_substep;
+    m_softness[0] = softness(hertz, m_settings.dampingRatio, m_substep);
+    m_softness[1] = softness(2.0 * hertz, m_settings.dampingRatio, m_substep);
 
     const size_t n = bodies.size();
     m_state.assign(n + 1, soft::BodyState{});
@@ -215,10 +216,8 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
     k.ny[l] = n.y();
     k.friction[l] = ct.friction;
     k.restitution[l] = ct.restitution;
-    const double hertz = m_settings.contactFrequency / m_substep;
     const bool oneSided = mA == 0.0 || mB == 0.0;
-    const Softness soft =
-        softness(oneSided ? 2.0 * hertz : hertz, m_settings.dampingRatio, m_substep);
+    const Softness& soft = m_softness[oneSided ? 1 : 0];
     k.biasRate[l] = soft.biasRate;
     k.massScale[l] = soft.massScale;
     k.impulseScale[l] = soft.impulseScale;
