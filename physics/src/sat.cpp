@@ -46,8 +46,12 @@ int placePolygon(const Polygon& p, const Transform& xf, Vec2* v, Vec2* n, double
         n[i] = xf.q.apply(p.normals[static_cast<size_t>(i)]);
     }
     const WorldPolygon placed{v, n, nullptr, nullptr, count};
-    for (int i = 0; i < count; ++i)
-        project(placed, n[i], ownMin[i], ownMax[i]);
+    if (count == 4) // a box: the loops unrolled, the same arithmetic
+        for (int i = 0; i < 4; ++i)
+            project<4>(placed, n[i], ownMin[i], ownMax[i]);
+    else
+        for (int i = 0; i < count; ++i)
+            project(placed, n[i], ownMin[i], ownMax[i]);
     return count;
 }
 
