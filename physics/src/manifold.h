@@ -67,12 +67,14 @@ private:
 };
 
 /// The SAT's verdict and manifold for two placed polygons, without recording the axes (the
-/// engine's path; sat.cpp). pointCount == 0 when farther apart than margin.
+/// engine's path; sat.cpp), written into `manifold`, which must be a default Manifold.
+/// pointCount stays 0 when farther apart than margin.
 /// `separatingAxis`: in, an axis to try first (last step's separating axis of the pair, or
 /// -1); out, the axis that showed them farther apart than margin, or -1. The axis tried first
 /// saves the rest of the test for a pair still apart, and never changes the result.
-Manifold collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
-                               const Transform& xfB, double margin, int& separatingAxis);
+void collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
+                           const Transform& xfB, double margin, int& separatingAxis,
+                           Manifold& manifold);
 
 /// Builds the manifold of two polygons with `ref` as the reference polygon (owner 0 is A,
 /// 1 is B) and its edge `refEdge` as the reference face (manifold.cpp). `intersecting`: the

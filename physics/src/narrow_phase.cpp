@@ -99,8 +99,8 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
             placed.place(ib, *pb, xfB);
             const SeparatedPair* apart = apartBefore.find(ia, ib);
             int axis = apart ? apart->axis : -1;
-            c.manifold =
-                collidePlacedPolygons(placed.view(ia), xfA, placed.view(ib), xfB, pairMargin, axis);
+            collidePlacedPolygons(placed.view(ia), xfA, placed.view(ib), xfB, pairMargin, axis,
+                                  c.manifold);
             if (axis >= 0)
                 cache.separated.push_back({ia, ib, axis});
         } else {

@@ -21,11 +21,14 @@ namespace {
 // so that two nearly parallel faces do not swap roles from one step to the next.
 constexpr double kReferenceHysteresis = 0.0005;
 
+/// kCount: the vertex count when known at compile time (4, a box: the loops unroll), else 0.
+template <int kCount = 0>
 [[gnu::always_inline]] inline void project(const WorldPolygon& p, const Vec2& axis, double& lo,
                                            double& hi)
 {
+    const int count = kCount > 0 ? kCount : p.count;
     lo = hi = axis.dot(p.v[0]);
-    for (int i = 1; i < p.count; ++i) {
+    for (int i = 1; i < count; ++i) {
         const double d = axis.dot(p.v[static_cast<size_t>(i)]);
         lo = std::min(lo, d);
         hi = std::max(hi, d);
@@ -43,13 +46,18 @@ int placePolygon(const Polygon& p, const Transform& xf, Vec2* v, Vec2* n, double
         n[i] = xf.q.apply(p.normals[static_cast<size_t>(i)]);
     }
     const WorldPolygon placed{v, n, nullptr, nullptr, count};
-    for (int i = 0; i < count; ++i)
-        project(placed, n[i], ownMin[i], ownMax[i]);
+    if (count == 4) // a box: the loops unrolled, the same arithmetic
+        for (int i = 0; i < 4; ++i)
+            project<4>(placed, n[i], ownMin[i], ownMax[i]);
+    else
+        for (int i = 0; i < count; ++i)
+            project(placed, n[i], ownMin[i], ownMax[i]);
     return count;
 }
 
 /// Both polygons projected on the normal `e` of polygon `owner` (0: A, 1: B). The axis' own
 /// polygon was projected on it when it was placed.
+template <int kCount = 0>
 [[gnu::always_inline]] inline void projectOn(const WorldPolygon& wa, const WorldPolygon& wb,
                                              int owner, int e, double& minA, double& maxA,
                                              double& minB, double& maxB)
@@ -57,9 +65,9 @@ int placePolygon(const Polygon& p, const Transform& xf, Vec2* v, Vec2* n, double
     if (owner == 0) {
         minA = wa.ownMin[e];
         maxA = wa.ownMax[e];
-        project(wb, wa.n[e], minB, maxB);
+        project<kCount>(wb, wa.n[e], minB, maxB);
     } else {
-        project(wa, wb.n[e], minA, maxA);
+        project<kCount>(wa, wb.n[e], minA, maxA);
         minB = wb.ownMin[e];
         maxB = wb.ownMax[e];
     }
@@ -74,16 +82,21 @@ int placePolygon(const Polygon& p, const Transform& xf, Vec2* v, Vec2* n, double
 /// The hint cannot change the result: the polygons are farther apart than margin when any
 /// axis shows it, and then there is no manifold whichever axis it was; when the hinted axis
 /// does not show it, the test runs as without a hint.
-template <bool kRecord>
+/// kCount: both polygons' vertex count when known at compile time (4: two boxes, the
+/// narrow phase's common case, its loops unrolled; the same arithmetic in the same order),
+/// else 0. Result: SatResult, or EngineVerdict (the engine's path: the manifold in place).
+template <bool kRecord, int kCount = 0, typename Result>
 int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb,
-            const Transform& xfB, double margin, int hint, SatResult& r)
+            const Transform& xfB, double margin, int hint, Result& r)
 {
+    const int countA = kCount > 0 ? kCount : wa.count;
+    const int countB = kCount > 0 ? kCount : wb.count;
     if constexpr (kRecord)
-        r.axes.reserve(static_cast<size_t>(wa.count + wb.count));
-    if (!kRecord && hint >= 0 && hint < wa.count + wb.count) {
-        const int owner = hint < wa.count ? 0 : 1;
+        r.axes.reserve(static_cast<size_t>(countA + countB));
+    if (!kRecord && hint >= 0 && hint < countA + countB) {
+        const int owner = hint < countA ? 0 : 1;
         double minA, maxA, minB, maxB;
-        projectOn(wa, wb, owner, owner == 0 ? hint : hint - wa.count, minA, maxA, minB, maxB);
+        projectOn<kCount>(wa, wb, owner, owner == 0 ? hint : hint - countA, minA, maxA, minB, maxB);
         if (std::min(maxA - minB, maxB - minA) < -margin) {
             r.axesTested = 1;
             r.intersects = false;
@@ -98,10 +111,11 @@ int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb
     int index = 0;
     for (int owner = 0; owner < 2; ++owner) {
         const WorldPolygon& p = owner == 0 ? wa : wb;
-        for (int e = 0; e < p.count; ++e, ++index) {
+        const int count = owner == 0 ? countA : countB;
+        for (int e = 0; e < count; ++e, ++index) {
             const Vec2& axis = p.n[static_cast<size_t>(e)];
             double minA, maxA, minB, maxB;
-            projectOn(wa, wb, owner, e, minA, maxA, minB, maxB);
+            projectOn<kCount>(wa, wb, owner, e, minA, maxA, minB, maxB);
             const double pushB = maxA - minB; // move B along +axis by this
             const double pushA = maxB - minA; // or along -axis by this
             const double overlap = std::min(pushB, pushA);
@@ -152,6 +166,16 @@ int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb
     return -1;
 }
 
+/// The engine's path keeps of the verdict what satImpl writes, and the manifold goes straight
+/// to the contact (no SatResult with a manifold of its own to copy from).
+struct EngineVerdict {
+    int axesTested = 0, separatingAxis = -1, leastAxis = -1;
+    bool intersects = false;
+    Vec2 normal = Vec2::Zero();
+    double depth = 0;
+    Manifold& manifold;
+};
+
 } // namespace
 
 void toWorld(const Polygon& p, const Transform& xf, PlacedPolygon& out)
@@ -184,12 +208,14 @@ void WorldPolygons::placeNew(int body, const Polygon& p, const Transform& xf)
                               m_ownMin.data() + start, m_ownMax.data() + start);
 }
 
-Manifold collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
-                               const Transform& xfB, double margin, int& separatingAxis)
+void collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
+                           const Transform& xfB, double margin, int& separatingAxis,
+                           Manifold& manifold)
 {
-    SatResult r;
-    separatingAxis = satImpl<false>(a, xfA, b, xfB, margin, separatingAxis, r);
-    return r.manifold;
+    EngineVerdict r{.manifold = manifold};
+    separatingAxis = a.count == 4 && b.count == 4
+                         ? satImpl<false, 4>(a, xfA, b, xfB, margin, separatingAxis, r)
+                         : satImpl<false>(a, xfA, b, xfB, margin, separatingAxis, r);
 }
 
 SatResult satPolygons(const Polygon& a, const Transform& xfA, const Polygon& b,

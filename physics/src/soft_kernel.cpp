@@ -61,51 +61,103 @@ struct Side {
     V vx, vy, w;
 };
 
-inline Side gather(const int* index, const BodyState* bodies)
-{
-    Side s;
-    for (int i = 0; i < W; ++i) {
-        const BodyState& b = bodies[index[i]];
-        s.vx[i] = b.vx;
-        s.vy[i] = b.vy;
-        s.w[i] = b.w;
-    }
-    return s;
-}
-
-inline void scatter(const int* index, BodyState* bodies, const Side& s)
-{
-    // Lanes of a block never share a moving body. A body that does not move (static, asleep,
-    // or the spare body of an empty lane) may stand in several lanes: each writes back the
-    // velocity it read, since its inverse mass is 0.
-    for (int i = 0; i < W; ++i) {
-        BodyState& b = bodies[index[i]];
-        b.vx = s.vx[i];
-        b.vy = s.vy[i];
-        b.w = s.w[i];
-    }
-}
-
 /// The displacement of both sides since the step began, gathered per lane.
 struct Motion {
     V dpx, dpy; ///< dpB - dpA [m]
     V qcA, qsA, qcB, qsB;
 };
 
+using Index = long long __attribute__((vector_size(W * sizeof(long long))));
+
+/// Four doubles of each lane's body, from `offset` within its BodyState, turned into four
+/// vectors of lanes: out[j][i] = body i's field offset + j. Loads and shuffles instead of a
+/// scalar load per field and lane; it moves bits only.
+inline void transpose(const int* index, const BodyState* bodies, int offset, V (&out)[4])
+{
+    const auto field = [&](int lane) {
+        return reinterpret_cast<const double*>(&bodies[index[lane]]) + offset;
+    };
+#if RIGIDLAB_SOFT_WIDTH == 4
+    // Rows r_i = body i's four fields; unpack pairs of rows, then swap the 128-bit halves.
+    const V r0 = load(field(0)), r1 = load(field(1)), r2 = load(field(2)), r3 = load(field(3));
+    const V t0 = __builtin_shuffle(r0, r1, Index{0, 4, 2, 6});
+    const V t1 = __builtin_shuffle(r0, r1, Index{1, 5, 3, 7});
+    const V t2 = __builtin_shuffle(r2, r3, Index{0, 4, 2, 6});
+    const V t3 = __builtin_shuffle(r2, r3, Index{1, 5, 3, 7});
+    out[0] = __builtin_shuffle(t0, t2, Index{0, 1, 4, 5});
+    out[1] = __builtin_shuffle(t1, t3, Index{0, 1, 4, 5});
+    out[2] = __builtin_shuffle(t0, t2, Index{2, 3, 6, 7});
+    out[3] = __builtin_shuffle(t1, t3, Index{2, 3, 6, 7});
+#elif RIGIDLAB_SOFT_WIDTH == 2
+    const V a0 = load(field(0)), a1 = load(field(0) + 2);
+    const V b0 = load(field(1)), b1 = load(field(1) + 2);
+    out[0] = __builtin_shuffle(a0, b0, Index{0, 2});
+    out[1] = __builtin_shuffle(a0, b0, Index{1, 3});
+    out[2] = __builtin_shuffle(a1, b1, Index{0, 2});
+    out[3] = __builtin_shuffle(a1, b1, Index{1, 3});
+#else
+    for (int j = 0; j < 4; ++j)
+        for (int i = 0; i < W; ++i)
+            out[j][i] = field(i)[j];
+#endif
+}
+
+inline Side gather(const int* index, const BodyState* bodies)
+{
+    static_assert(__builtin_offsetof(BodyState, vx) == 0 &&
+                  __builtin_offsetof(BodyState, vy) == sizeof(double) &&
+                  __builtin_offsetof(BodyState, w) == 2 * sizeof(double));
+    V f[4];
+    transpose(index, bodies, 0, f);
+    return {f[0], f[1], f[2]};
+}
+
+inline void scatter(const int* index, BodyState* bodies, const Side& s)
+{
+    // Lanes of a block never share a moving body. A body that does not move (static, asleep,
+    // or the spare body of an empty lane) may stand in several lanes: each writes back the
+    // velocity it read, since its inverse mass is 0. The rows are the gather's transposed
+    // back, with BodyState::unused written as 0.
+    const auto row = [&](int lane) { return reinterpret_cast<double*>(&bodies[index[lane]]); };
+#if RIGIDLAB_SOFT_WIDTH == 4
+    const V u{};
+    const V t0 = __builtin_shuffle(s.vx, s.vy, Index{0, 4, 2, 6});
+    const V t1 = __builtin_shuffle(s.vx, s.vy, Index{1, 5, 3, 7});
+    const V t2 = __builtin_shuffle(s.w, u, Index{0, 4, 2, 6});
+    const V t3 = __builtin_shuffle(s.w, u, Index{1, 5, 3, 7});
+    store(row(0), __builtin_shuffle(t0, t2, Index{0, 1, 4, 5}));
+    store(row(1), __builtin_shuffle(t1, t3, Index{0, 1, 4, 5}));
+    store(row(2), __builtin_shuffle(t0, t2, Index{2, 3, 6, 7}));
+    store(row(3), __builtin_shuffle(t1, t3, Index{2, 3, 6, 7}));
+#elif RIGIDLAB_SOFT_WIDTH == 2
+    const V u{};
+    store(row(0), __builtin_shuffle(s.vx, s.vy, Index{0, 2}));
+    store(row(0) + 2, __builtin_shuffle(s.w, u, Index{0, 2}));
+    store(row(1), __builtin_shuffle(s.vx, s.vy, Index{1, 3}));
+    store(row(1) + 2, __builtin_shuffle(s.w, u, Index{1, 3}));
+#else
+    for (int i = 0; i < W; ++i) {
+        double* b = row(i);
+        b[0] = s.vx[i];
+        b[1] = s.vy[i];
+        b[2] = s.w[i];
+    }
+#endif
+}
+
 inline Motion gatherMotion(const Block& k, const BodyState* bodies)
 {
-    Motion m;
-    for (int i = 0; i < W; ++i) {
-        const BodyState& a = bodies[k.a[i]];
-        const BodyState& b = bodies[k.b[i]];
-        m.dpx[i] = b.dpx - a.dpx;
-        m.dpy[i] = b.dpy - a.dpy;
-        m.qcA[i] = a.qc;
-        m.qsA[i] = a.qs;
-        m.qcB[i] = b.qc;
-        m.qsB[i] = b.qs;
-    }
-    return m;
+    constexpr int kOffset = __builtin_offsetof(BodyState, dpx) / sizeof(double);
+    static_assert(__builtin_offsetof(BodyState, dpy) ==
+                      __builtin_offsetof(BodyState, dpx) + sizeof(double) &&
+                  __builtin_offsetof(BodyState, qc) ==
+                      __builtin_offsetof(BodyState, dpx) + 2 * sizeof(double) &&
+                  __builtin_offsetof(BodyState, qs) ==
+                      __builtin_offsetof(BodyState, dpx) + 3 * sizeof(double));
+    V a[4], b[4];
+    transpose(k.a, bodies, kOffset, a);
+    transpose(k.b, bodies, kOffset, b);
+    return {b[0] - a[0], b[1] - a[1], a[2], a[3], b[2], b[3]};
 }
 
 /// Applies the impulse P = dj (dx, dy) at lever arms (rAx, rAy), (rBx, rBy).
@@ -149,9 +201,11 @@ void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
     }
 }
 
-void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
+/// One pass, compiled for each combination of PassSettings::useBias and ::friction.
+template <bool kBias, bool kFriction>
+void solvePass(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
 {
-    const V zero = splat(0.0), one = splat(1.0);
+    const V zero = splat(0.0);
     const V inverseSubstep = splat(s.inverseSubstep), maxPush = splat(-s.maxPushSpeed);
     for (int k = 0; k < count; ++k) {
         Block& c = blocks[k];
@@ -160,8 +214,6 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
         const V mA = load(c.invMassA), iA = load(c.invIA), mB = load(c.invMassB),
                 iB = load(c.invIB);
         const V nx = load(c.nx), ny = load(c.ny);
-        const V biasRate = load(c.biasRate), massScale = load(c.massScale),
-                impulseScale = load(c.impulseScale);
         for (PointLanes& p : c.p) {
             const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
             // The separation now: both lever arms turned by their body's rotation so far.
@@ -169,43 +221,53 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
             const V dy = m.dpy + (m.qsB * rBx + m.qcB * rBy) - (m.qsA * rAx + m.qcA * rAy);
             const V sep = dx * nx + dy * ny + load(p.base);
             const auto gap = sep > zero;
-            V bias, ms, is;
-            if (s.useBias) {
-                bias = gap ? sep * inverseSubstep : vmax(biasRate * sep, maxPush);
-                ms = gap ? one : massScale;
-                is = gap ? zero : impulseScale;
-            } else {
-                bias = gap ? sep * inverseSubstep : zero;
-                ms = one;
-                is = zero;
-            }
             const V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
             const V old = load(p.normalImpulse);
-            const V next = vmax(old - load(p.normalMass) * ms * (vn + bias) - is * old, zero);
+            V next;
+            if constexpr (kBias) {
+                const V bias = gap ? sep * inverseSubstep : vmax(load(c.biasRate) * sep, maxPush);
+                const V ms = gap ? splat(1.0) : load(c.massScale);
+                const V is = gap ? zero : load(c.impulseScale);
+                next = vmax(old - load(p.normalMass) * ms * (vn + bias) - is * old, zero);
+            } else {
+                // Rigid: the soft formula with ms = 1 and is = 0, whose products by 1 and
+                // subtraction of +0 (j >= 0) are exact, so the same bits with fewer operations.
+                const V bias = gap ? sep * inverseSubstep : zero;
+                next = vmax(old - load(p.normalMass) * (vn + bias), zero);
+            }
             store(p.normalImpulse, next);
             store(p.maxNormalImpulse, vmax(load(p.maxNormalImpulse), next));
             apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
         }
         // Friction after the normal impulses, so that its cone is this pass's.
-        if (!s.friction) {
-            scatter(c.a, bodies, A);
-            scatter(c.b, bodies, B);
-            continue;
-        }
-        const V friction = load(c.friction);
-        const V tx = ny, ty = -nx;
-        for (PointLanes& p : c.p) {
-            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
-            const V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
-            const V limit = friction * load(p.normalImpulse);
-            const V old = load(p.tangentImpulse);
-            const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
-            store(p.tangentImpulse, next);
-            apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
+        if constexpr (kFriction) {
+            const V friction = load(c.friction);
+            const V tx = ny, ty = -nx;
+            for (PointLanes& p : c.p) {
+                const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+                const V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
+                const V limit = friction * load(p.normalImpulse);
+                const V old = load(p.tangentImpulse);
+                const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
+                store(p.tangentImpulse, next);
+                apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
+            }
         }
         scatter(c.a, bodies, A);
         scatter(c.b, bodies, B);
     }
+}
+
+void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
+{
+    if (s.useBias && s.friction)
+        solvePass<true, true>(blocks, count, bodies, s);
+    else if (s.useBias)
+        solvePass<true, false>(blocks, count, bodies, s);
+    else if (s.friction)
+        solvePass<false, true>(blocks, count, bodies, s);
+    else
+        solvePass<false, false>(blocks, count, bodies, s);
 }
 
 void restitutionBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)

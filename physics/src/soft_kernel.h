@@ -23,9 +23,9 @@ inline constexpr int kBlockWidth = 4;
 /// One body as the kernel sees it. Velocities change in the kernel; the rest is written by the
 /// substep's integration of positions (soft_solver.cpp).
 struct alignas(64) BodyState {
-    double vx = 0, vy = 0; ///< velocity of the centre of mass [m/s]
-    double w = 0;          ///< angular velocity [rad/s]
-    double unused = 0;
+    double vx = 0, vy = 0;   ///< velocity of the centre of mass [m/s]
+    double w = 0;            ///< angular velocity [rad/s]
+    double unused = 0;       ///< padding, so that vx, vy, w load as one vector (written 0)
     double dpx = 0, dpy = 0; ///< displacement of the centre of mass since the step began [m]
     double qc = 1, qs = 0;   ///< cos and sin of the rotation since the step began
 };

@@ -32,10 +32,6 @@ namespace rigidlab::physics {
 
 namespace {
 
-struct Softness {
-    double biasRate = 0, massScale = 1, impulseScale = 0;
-};
-
 Softness softness(double hertz, double dampingRatio, double h)
 {
     if (hertz <= 0)
@@ -67,12 +63,18 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
 {
     m_contacts = &contacts;
     m_settings = settings;
+    m_energyValid = false;
     m_substep = dt / settings.substeps;
     static const bool wide = soft::haveAvx2() && soft::kernel4Avx2().solve != nullptr;
     m_kernel = wide && settings.wideKernel ? soft::kernel4Avx2() : soft::kernel2();
     m_pass.inverseSubstep = 1.0 / m_substep;
     m_pass.maxPushSpeed = settings.maxPushSpeed;
     m_pass.threshold = restitutionThreshold;
+    // The two softnesses a contact can have (fillLane): between moving bodies, and twice the
+    // frequency against a body that does not move.
+    const double hertz = m_settings.contactFrequency / m_substep;
+    m_softness[0] = softness(hertz, m_settings.dampingRatio, m_substep);
+    m_softness[1] = softness(2.0 * hertz, m_settings.dampingRatio, m_substep);
 
     const size_t n = bodies.size();
     m_state.assign(n + 1, soft::BodyState{});
@@ -159,8 +161,10 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
         for (int lane = 0; lane < soft::kBlockWidth; ++lane)
             k.a[lane] = k.b[lane] = spare;
     // First block of each colour, then filled in the contacts' order.
-    std::vector<int> next(static_cast<size_t>(m_colourCount) + 1, 0);
-    std::vector<int> lane(static_cast<size_t>(m_colourCount) + 1, 0);
+    std::vector<int>& next = m_nextBlock;
+    std::vector<int>& lane = m_nextLane;
+    next.assign(static_cast<size_t>(m_colourCount) + 1, 0);
+    lane.assign(static_cast<size_t>(m_colourCount) + 1, 0);
     int start = 0;
     for (int c = 0; c < m_colourCount; ++c) {
         next[static_cast<size_t>(c)] = start;
@@ -212,10 +216,8 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
     k.ny[l] = n.y();
     k.friction[l] = ct.friction;
     k.restitution[l] = ct.restitution;
-    const double hertz = m_settings.contactFrequency / m_substep;
     const bool oneSided = mA == 0.0 || mB == 0.0;
-    const Softness soft =
-        softness(oneSided ? 2.0 * hertz : hertz, m_settings.dampingRatio, m_substep);
+    const Softness& soft = m_softness[oneSided ? 1 : 0];
     k.biasRate[l] = soft.biasRate;
     k.massScale[l] = soft.massScale;
     k.impulseScale[l] = soft.impulseScale;
@@ -253,22 +255,34 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
 
 void SoftSolver::integrateVelocities()
 {
+    // The energy sums of the new velocities in the same pass (the same arithmetic, in the
+    // same order, as sumEnergy()): soft_step.cpp asks for them next.
     const double h = m_substep;
+    double e = 0.0, p = 0.0;
     for (size_t k = 0; k < m_moving.size(); ++k) {
         soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
-        s.vx += h * m_acceleration[k].x();
-        s.vy += h * m_acceleration[k].y();
-        s.w += h * m_angularAcceleration[k];
+        const Vec2& a = m_acceleration[k];
+        const double alpha = m_angularAcceleration[k];
+        s.vx += h * a.x();
+        s.vy += h * a.y();
+        s.w += h * alpha;
+        e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
+        p += m_mass[k] * (a.x() * s.vx + a.y() * s.vy) + m_inertia[k] * alpha * s.w;
     }
+    m_energy = 0.5 * e;
+    m_power = p;
+    m_energyValid = true;
 }
 
 void SoftSolver::warmStart()
 {
+    m_energyValid = false;
     m_kernel.warmStart(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data());
 }
 
 void SoftSolver::solve(bool useBias)
 {
+    m_energyValid = false;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
     m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
@@ -300,29 +314,37 @@ void SoftSolver::integratePositions()
 
 void SoftSolver::applyRestitution()
 {
+    m_energyValid = false;
     m_kernel.restitution(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(),
                          m_pass);
 }
 
-double SoftSolver::kineticEnergy() const
+void SoftSolver::sumEnergy() const
 {
-    double e = 0.0;
+    double e = 0.0, p = 0.0;
     for (size_t k = 0; k < m_moving.size(); ++k) {
         const soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
         e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
+        p += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
+             m_inertia[k] * m_angularAcceleration[k] * s.w;
     }
-    return 0.5 * e;
+    m_energy = 0.5 * e;
+    m_power = p;
+    m_energyValid = true;
+}
+
+double SoftSolver::kineticEnergy() const
+{
+    if (!m_energyValid)
+        sumEnergy();
+    return m_energy;
 }
 
 double SoftSolver::loadPower() const
 {
-    double p = 0.0;
-    for (size_t k = 0; k < m_moving.size(); ++k) {
-        const soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
-        p += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
-             m_inertia[k] * m_angularAcceleration[k] * s.w;
-    }
-    return p;
+    if (!m_energyValid)
+        sumEnergy();
+    return m_power;
 }
 
 void SoftSolver::end(std::vector<Body>& bodies)

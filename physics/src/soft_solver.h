@@ -16,6 +16,11 @@
 
 namespace rigidlab::physics {
 
+/// A soft constraint's coefficients for one substep (soft_solver.cpp).
+struct Softness {
+    double biasRate = 0, massScale = 1, impulseScale = 0;
+};
+
 class SoftSolver {
 public:
     /// Takes this step's contacts and bodies, before anything moved. acceleration and
@@ -64,12 +69,20 @@ private:
     void buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
     void fillLane(int contactIndex, const Contact& ct, const std::vector<Body>& bodies,
                   soft::Block& block, int lane);
+    /// Both sums of kineticEnergy() and loadPower() in one pass over the bodies, kept until
+    /// the velocities change (each pass of the substep asks for both, some twice).
+    void sumEnergy() const;
+
+    /// The sums of sumEnergy() for the present velocities, valid while m_energyValid.
+    mutable double m_energy = 0, m_power = 0;
+    mutable bool m_energyValid = false;
 
     std::vector<Contact>* m_contacts = nullptr;
     SoftStepSettings m_settings;
     double m_substep = 0; ///< [s]
     soft::Kernel m_kernel{};
     soft::PassSettings m_pass;
+    Softness m_softness[2]; ///< this step's: between moving bodies, against a resting one
 
     std::vector<soft::BodyState> m_state;      ///< per body, and a spare one for empty lanes
     std::vector<int> m_moving;                 ///< awake dynamic bodies
@@ -86,6 +99,7 @@ private:
     std::vector<int> m_colourOf;             ///< per candidate contact, -1 overflow
     std::vector<int> m_candidates;           ///< contacts with a body to solve
     std::vector<int> m_colourSize;
+    std::vector<int> m_nextBlock, m_nextLane; ///< per colour, while the blocks are filled
     int m_colourCount = 0;
     int m_overflow = 0;
 };
