@@ -123,6 +123,7 @@ private slots:
     void pendulumEulerGoesOverTheTop();
     void smallerStepShrinksDrift();
     void sequentialImpulseStackMovesLess();
+    void softStepPyramidStands();
     void billiardsBreakConservesMomentum();
     void billiardsCushionsWhereTheTextSays();
     void stiffSpringsDivergeWhereTheoryPredicts();

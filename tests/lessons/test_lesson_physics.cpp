@@ -351,6 +351,9 @@ void TestLesson::shippedQuestionsHaveTheirTextbookAnswers_data()
     // Explicit Euler on a spring: (1 + (w dt)^2)^n with (w dt)^2 = 100 * 0.005^2, n = 200.
     QTest::newRow("stiff-euler-growth")
         << "stiff_springs" << 0 << 0 << (std::pow(1.0025, 200) - 1) * 100;
+    // The soft step keeps the pyramid standing: the top box (row 40 of 1 m boxes) stays where
+    // it started, its centre 39 m + half a box above the floor.
+    QTest::newRow("soft-step-pyramid-top") << "stacks" << 3 << 0 << 39.0 + 0.5;
 }
 
 void TestLesson::stiffSpringsDivergeWhereTheoryPredicts()
@@ -582,6 +585,91 @@ void TestLesson::sequentialImpulseStackMovesLess()
     run.run(5.0);
     for (std::size_t b = 0; b < start.size(); ++b)
         QVERIFY((run.worlds[0].bodies()[b].position - start[b].position).norm() < 1e-3);
+}
+
+void TestLesson::softStepPyramidStands()
+{
+    // Step 4 runs the base-40 pyramid at 1/60 s with the soft step (main world) and sequential
+    // impulses; step 5 explains it. What their texts claim, on the lesson's own worlds.
+    const lessons::Lesson lesson = shippedLesson("stacks");
+    const lessons::LessonStep& step = stepOf(lesson, 3);
+    QCOMPARE(step.compare->label(0), QStringLiteral("soft-step"));
+    QCOMPARE(step.compare->label(1), QStringLiteral("sequential-impulse"));
+    QVERIFY(stepOf(lesson, 4).settings.solver == physics::SolverKind::SoftStep);
+    StepRun run(step);
+    const physics::World& soft = run.worlds[0];
+    const physics::World& sequential = run.worlds[1];
+    QCOMPARE(soft.def().solver, physics::SolverKind::SoftStep);
+    QCOMPARE(sequential.def().solver, physics::SolverKind::SequentialImpulse);
+    // The soft step runs only where the step integrates directly (the text says so).
+    QCOMPARE(soft.def().integrator, physics::IntegratorKind::SymplecticEuler);
+
+    // "6 substeps of 1/360 s", "vibrate 90 times a second between two boxes": the numbers of
+    // the text, from the world's own settings.
+    const physics::SoftStepSettings& settings = soft.contactSettings().soft;
+    const QRegularExpressionMatch said =
+        QRegularExpression(QStringLiteral("into (\\d+) \\*\\*substeps\\*\\* of 1/(\\d+)"))
+            .match(step.text);
+    QVERIFY2(said.hasMatch(), qPrintable(step.text));
+    QCOMPARE(said.captured(1).toInt(), settings.substeps);
+    QCOMPARE(said.captured(2).toDouble(), std::round(settings.substeps / soft.def().dt));
+    const QRegularExpressionMatch hertz =
+        QRegularExpression(QStringLiteral("vibrate (\\d+) times a second")).match(step.text);
+    QVERIFY(hertz.hasMatch());
+    const double contactHertz = settings.contactFrequency * settings.substeps / soft.def().dt;
+    QVERIFY2(std::abs(hertz.captured(1).toDouble() - contactHertz) < 1e-9,
+             qPrintable(QString::number(contactHertz)));
+
+    const physics::BodyId top = bodyId(step.scene, "top");
+    const double y0 = soft.body(top).position.y();
+    const std::vector<physics::Body> start = soft.bodies();
+    const double e0 = soft.diagnostics().total;
+    double softFarthest = 0;    // the soft top's largest distance from its start [m]
+    double sequentialAt2 = 0;   // the sequential top's sink at t = 2 s [m]
+    double softWorstChange = 0; // the soft step's largest |E - E0| / |E0|
+    run.run(step.exportTime, [&](std::size_t i) {
+        const physics::World& w = run.worlds[i];
+        if (i == 0) {
+            softFarthest = std::max(softFarthest, std::abs(w.body(top).position.y() - y0));
+            softWorstChange =
+                std::max(softWorstChange, std::abs(w.diagnostics().total - e0) / std::abs(e0));
+        } else if (std::abs(w.time() - 2.0) < 0.5 * w.def().dt) {
+            sequentialAt2 = y0 - w.body(top).position.y();
+        }
+    });
+    const double softSink = y0 - soft.body(top).position.y();
+    const double sequentialSink = y0 - sequential.body(top).position.y();
+    const QString figures = QStringLiteral("soft: sank %1 m, farthest %2 m; sequential: %3 m, "
+                                           "%4 m at 2 s")
+                                .arg(softSink)
+                                .arg(softFarthest)
+                                .arg(sequentialSink)
+                                .arg(sequentialAt2);
+    // Step 5: "only a few millimetres lower", "quivers up and down by about a centimetre".
+    QVERIFY2(std::abs(softSink) < 0.01, qPrintable(figures));
+    QVERIFY2(softFarthest < 0.03, qPrintable(figures));
+    // "sank by almost 0.2 m, most of it in the first two seconds".
+    QVERIFY2(sequentialSink > 0.15 && sequentialSink < 0.2, qPrintable(figures));
+    QVERIFY2(sequentialAt2 > 0.5 * sequentialSink, qPrintable(figures));
+    QVERIFY2(sequentialSink > 10 * std::abs(softSink), qPrintable(figures));
+    // Standing, by the measure: no box moved more than 0.5 m sideways or turned more
+    // than 0.2 rad.
+    for (std::size_t b = 0; b < start.size(); ++b) {
+        QVERIFY(std::abs(soft.bodies()[b].position.x() - start[b].position.x()) < 0.5);
+        QVERIFY(std::abs(soft.bodies()[b].angle - start[b].angle) < 0.2);
+    }
+    // "Watch the total energy: it stays flat (within a tenth of a per cent)", and its change is
+    // a small part of what the sinking sequential pyramid loses.
+    QVERIFY2(softWorstChange < 1e-3, qPrintable(QString::number(softWorstChange)));
+    const double softLoss = std::abs(soft.diagnostics().total - e0);
+    const double sequentialLoss = std::abs(sequential.diagnostics().total - e0);
+    QVERIFY2(softLoss < 0.1 * sequentialLoss,
+             qPrintable(QStringLiteral("%1 J against %2 J").arg(softLoss).arg(sequentialLoss)));
+
+    // The question: "it stays" is right, "it sinks as the other one does" is not.
+    const lessons::Question& q = step.questions.at(0);
+    QVERIFY(lessons::judge(q, y0, run.measurements[0], step.scene).right);
+    QVERIFY(!lessons::judge(q, y0 - sequentialSink, run.measurements[0], step.scene).right);
 }
 
 void TestLesson::billiardsBreakConservesMomentum()
