@@ -75,7 +75,7 @@ void EditTools::dragVelocity(const Vec2& raw)
 
 QString EditTools::velocityText(const physics::BodyDef& def) const
 {
-    return tr("%1: v = (%2; %3) m/s, |v| = %4 m/s (the arrow is the path of %5 s)")
+    return tr("%1: v = (%2; %3) m/s, |v| = %4 m/s (arrow: the distance covered in %5 s)")
         .arg(QString::fromStdString(def.name), formatNumber(def.velocity.x(), 4),
              formatNumber(def.velocity.y(), 4), formatNumber(def.velocity.norm(), 4),
              formatNumber(kArrowSeconds, 3));
