@@ -497,6 +497,7 @@ void TestEditor::colourInTheProperties()
         return picked;
     });
     QTest::mouseClick(colour->swatchButton(), Qt::LeftButton);
+    QCOMPARE(offered, bodyColor(0)); // the picker starts from the colour shown
     QCOMPARE(rig.scene().colourOf(0), QStringLiteral("#d04030"));
     QCOMPARE(rig.document.undoStack()->count(), steps + 1);
     QCOMPARE(colour->textField()->text(), QStringLiteral("#d04030"));

@@ -62,7 +62,7 @@ void ColourField::setColour(const QString& colour)
 
 void ColourField::pick()
 {
-    const QColor initial = m_colour.isEmpty() ? QColor(Qt::white) : QColor::fromString(m_colour);
+    const QColor initial = m_colour.isEmpty() ? m_shown : QColor::fromString(m_colour);
     if (const auto chosen = m_picker(initial, this)) {
         const QString name = chosen->name(QColor::HexRgb);
         if (name != m_colour) {

@@ -28,6 +28,9 @@ public:
     /// Shows `colour` ("#rrggbb", or empty for the view's own).
     void setColour(const QString& colour);
     const QString& colour() const { return m_colour; }
+    /// The colour the view paints the body in now: where the picker starts when the body has
+    /// no colour of its own.
+    void setShownColour(const QColor& shown) { m_shown = shown; }
     /// Replaces the modal QColorDialog (tests pick without a dialog).
     void setPicker(Picker picker) { m_picker = std::move(picker); }
 
@@ -46,6 +49,7 @@ private:
     void showSwatch();
 
     QString m_colour;
+    QColor m_shown = Qt::white;
     QLineEdit* m_text = nullptr;
     QToolButton* m_swatch = nullptr;
     QToolButton* m_default = nullptr;

@@ -72,6 +72,8 @@ public:
     QList<QAction*> actions() const;
 
     bool editing() const { return m_editing; }
+    /// The view the tools work on.
+    const WorldView& view() const { return m_view; }
     EditTool tool() const { return m_tool; }
     /// The selected body (an index into the document's scene), -1 for none.
     int selectedBody() const { return m_selected; }

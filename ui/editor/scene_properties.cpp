@@ -9,6 +9,8 @@
 #include "edit/scene_edits.h"
 #include "format/limits.h"
 #include "panels/number_field.h"
+#include "view/body_item.h"
+#include "view/world_view.h"
 
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
@@ -273,6 +275,9 @@ void SceneProperties::refresh()
         field(QStringLiteral("velocityY"))->setValue(def.velocity.y());
         field(QStringLiteral("angularVelocity"))->setValue(def.angularVelocity);
         m_colour->setColour(scene.colourOf(size_t(selected)));
+        if (const BodyItem* item = m_tools.view().itemFor(selected)) {
+            m_colour->setShownColour(item->fill());
+        }
     }
     const int spring = m_tools.selectedSpring();
     const bool hasSpring = spring >= 0 && size_t(spring) < scene.springs.size();
