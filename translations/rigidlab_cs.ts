@@ -1214,6 +1214,33 @@ y %2</translation>
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::ColourField</name>
+    <message>
+        <source>Choose the body&apos;s colour</source>
+        <translation>Zvolit barvu tělesa</translation>
+    </message>
+    <message>
+        <source>default</source>
+        <translation>výchozí</translation>
+    </message>
+    <message>
+        <source>The body&apos;s colour as &quot;#rrggbb&quot; (six hexadecimal digits, as &quot;#d04030&quot;); empty for the default</source>
+        <translation>Barva tělesa jako &quot;#rrggbb&quot; (šest šestnáctkových číslic, např. &quot;#d04030&quot;); prázdné pole dá výchozí barvu</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Výchozí</translation>
+    </message>
+    <message>
+        <source>Take the body&apos;s own colour away: the view colours it</source>
+        <translation>Odebrat tělesu vlastní barvu: obarví ho zobrazení</translation>
+    </message>
+    <message>
+        <source>Body colour</source>
+        <translation>Barva tělesa</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::ControlPanel</name>
     <message>
         <source>on</source>
@@ -1520,6 +1547,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>This lesson step locks the %1 tool</source>
         <translation>Tento krok lekce nástroj %1 zamyká</translation>
+    </message>
+    <message>
+        <source>Set velocity of %1</source>
+        <translation>Nastavit rychlost tělesa %1</translation>
+    </message>
+    <message>
+        <source>%1: v = (%2; %3) m/s, |v| = %4 m/s (arrow: the distance covered in %5 s)</source>
+        <translation>%1: v = (%2; %3) m/s, |v| = %4 m/s (šipka: dráha uražená za %5 s)</translation>
     </message>
 </context>
 <context>
@@ -2619,6 +2654,18 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Set solver</source>
         <translation>Nastavit řešič</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Barva</translation>
+    </message>
+    <message>
+        <source>Default colour</source>
+        <translation>Výchozí barva</translation>
+    </message>
+    <message>
+        <source>Set colour</source>
+        <translation>Nastavit barvu</translation>
     </message>
 </context>
 <context>

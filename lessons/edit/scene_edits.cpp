@@ -582,6 +582,41 @@ EditResult setBodyType(const Scene& scene, BodyId body, physics::BodyType type)
     return accepted(std::move(out), body);
 }
 
+EditResult setBodyVelocity(const Scene& scene, BodyId body, const Vec2& velocity)
+{
+    if (!validBody(scene, body)) {
+        return refused(noSuchBody(body));
+    }
+    const QString id = bodyId(scene.bodies[static_cast<size_t>(body)]);
+    for (int i = 0; i < 2; ++i) {
+        if (QString e = rangeError(id, QStringLiteral("velocity[%1]").arg(i), velocity[i],
+                                   limits::kVelocity);
+            !e.isEmpty()) {
+            return refused(e);
+        }
+    }
+    Scene out = scene;
+    out.bodies[static_cast<size_t>(body)].velocity = velocity;
+    return accepted(std::move(out), body);
+}
+
+EditResult setBodyColour(const Scene& scene, BodyId body, const QString& colour)
+{
+    if (!validBody(scene, body)) {
+        return refused(noSuchBody(body));
+    }
+    if (!colour.isEmpty()) {
+        if (const QString problem = rules::colourProblem(colour); !problem.isEmpty()) {
+            return refused(placedError(bodyId(scene.bodies[static_cast<size_t>(body)]),
+                                       QStringLiteral("colour"), problem));
+        }
+    }
+    Scene out = scene;
+    out.colours.resize(scene.bodies.size());
+    out.colours[static_cast<size_t>(body)] = colour.toLower();
+    return accepted(std::move(out), body);
+}
+
 EditResult setBodyId(const Scene& scene, BodyId body, const QString& id)
 {
     if (!validBody(scene, body)) {

@@ -96,6 +96,11 @@ enum class BodyNumber {
 };
 EditResult setBodyNumber(const Scene& scene, physics::BodyId body, BodyNumber what, double value);
 EditResult setBodyType(const Scene& scene, physics::BodyId body, physics::BodyType type);
+/// Sets the body's initial velocity [m/s], both components at once (the editor's arrow).
+EditResult setBodyVelocity(const Scene& scene, physics::BodyId body, const physics::Vec2& velocity);
+/// Gives the body its own colour, "#rrggbb" (either case; kept in lower case, as the loader
+/// keeps it), or, for an empty `colour`, takes it away so that the view colours it itself.
+EditResult setBodyColour(const Scene& scene, physics::BodyId body, const QString& colour);
 /// Renames a body; springs and pins refer to it by index and follow.
 EditResult setBodyId(const Scene& scene, physics::BodyId body, const QString& id);
 

@@ -18,7 +18,6 @@
 
 #include <QFileInfo>
 #include <QHash>
-#include <QRegularExpression>
 
 #include <array>
 #include <cmath>
@@ -146,12 +145,8 @@ bool SceneReader::readColour(const QJsonObject& body, const QString& place, QStr
     if (!m_in.string(body, u"colour", place, text)) {
         return false;
     }
-    static const QRegularExpression rgb(QStringLiteral("^#[0-9A-Fa-f]{6}$"));
-    if (!rgb.match(text).hasMatch()) {
-        return m_in.fail(joinPlace(place, u"colour"),
-                         FileMessages::tr("must be a colour \"#rrggbb\" (six hexadecimal digits, "
-                                          "as \"#d04030\"), got \"%1\"")
-                             .arg(text.left(kMaxBodyIdLength)));
+    if (const QString problem = rules::colourProblem(text); !problem.isEmpty()) {
+        return m_in.fail(joinPlace(place, u"colour"), problem);
     }
     out = text.toLower();
     return true;

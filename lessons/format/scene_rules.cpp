@@ -7,6 +7,8 @@
 
 #include "rigidlab/physics/shape.h"
 
+#include <QRegularExpression>
+
 #include <cmath>
 
 namespace rigidlab::lessons::rules {
@@ -76,6 +78,18 @@ QString springSameBody()
 QString pinSameBody()
 {
     return FileMessages::tr("the same body as \"a\": a pin joins two bodies");
+}
+
+QString colourProblem(const QString& text)
+{
+    static const QRegularExpression rgb(QStringLiteral("^#[0-9A-Fa-f]{6}$"));
+    if (rgb.match(text).hasMatch()) {
+        return {};
+    }
+    return FileMessages::tr(
+               "must be a colour \"#rrggbb\" (six hexadecimal digits, as \"#d04030\"), "
+               "got \"%1\"")
+        .arg(text.left(kMaxBodyIdLength));
 }
 
 } // namespace rigidlab::lessons::rules

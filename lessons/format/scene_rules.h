@@ -33,5 +33,7 @@ QString springBothInWorld();
 QString springSameBody();
 /// A pin whose two ends are the same body.
 QString pinSameBody();
+/// Empty, or why `text` is not a body's colour "#rrggbb" (six hexadecimal digits, either case).
+QString colourProblem(const QString& text);
 
 } // namespace rigidlab::lessons::rules

@@ -89,6 +89,7 @@ private slots:
     void addsSprings();
     void setsBodyProperties();
     void renamesBodies();
+    void setsVelocityAndColour();
     void setsSpringAndWorldProperties();
     void listsOverlaps();
 };
@@ -439,6 +440,51 @@ void TestSceneEdits::setsBodyProperties()
              qPrintable(dense.error));
     const auto nan = edit::setBodyNumber(scene, 0, edit::BodyNumber::VelocityX, std::nan(""));
     QVERIFY(!nan.ok);
+}
+
+void TestSceneEdits::setsVelocityAndColour()
+{
+    const Scene scene = fourBodies();
+    auto r = edit::setBodyVelocity(scene, 1, Vec2(1.5, -2.0));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QCOMPARE(r.scene.bodies[1].velocity, Vec2(1.5, -2.0));
+    QCOMPARE(r.scene.bodies[0].velocity, Vec2::Zero());
+    // Out of range: refused with the loader's words and place, nothing clamped.
+    const double fast = limits::kVelocity.max * 2.0;
+    const auto tooFast = edit::setBodyVelocity(scene, 1, Vec2(0.0, fast));
+    QVERIFY(!tooFast.ok);
+    QJsonObject body{
+        {QStringLiteral("id"), QStringLiteral("b")},
+        {QStringLiteral("shape"), QJsonObject{{QStringLiteral("type"), QStringLiteral("circle")},
+                                              {QStringLiteral("radius"), 0.25}}},
+        {QStringLiteral("velocity"), QJsonArray{0.0, fast}}};
+    const auto loaded = loadOneBody(body);
+    QVERIFY(!loaded.ok);
+    QVERIFY2(tooFast.error.startsWith(QStringLiteral("b: velocity[1]: ")),
+             qPrintable(tooFast.error));
+    QCOMPARE(what(tooFast.error), what(loaded.error));
+    QVERIFY(!edit::setBodyVelocity(scene, 1, Vec2(std::nan(""), 0.0)).ok);
+    QVERIFY(!edit::setBodyVelocity(scene, 7, Vec2::Zero()).ok);
+
+    // A colour is kept in lower case, "" takes it away; the body with none gets one.
+    r = edit::setBodyColour(scene, 3, QStringLiteral("#D04030"));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QCOMPARE(r.scene.colourOf(3), QStringLiteral("#d04030"));
+    QCOMPARE(r.scene.colourOf(1), QStringLiteral("#ff0000"));
+    r = edit::setBodyColour(r.scene, 1, QString());
+    QVERIFY(r.ok);
+    QVERIFY(r.scene.colourOf(1).isEmpty());
+    body.remove(QStringLiteral("velocity"));
+    for (const char* bad : {"red", "#12345", "#1234567", "d04030", "#gg0000"}) {
+        const auto refused = edit::setBodyColour(scene, 0, QString::fromLatin1(bad));
+        QVERIFY2(!refused.ok, bad);
+        body[QStringLiteral("colour")] = QString::fromLatin1(bad);
+        const auto file = loadOneBody(body);
+        QVERIFY(!file.ok);
+        QVERIFY2(refused.error.startsWith(QStringLiteral("a: colour: must be a colour")),
+                 qPrintable(refused.error));
+        QCOMPARE(what(refused.error), what(file.error));
+    }
 }
 
 void TestSceneEdits::renamesBodies()

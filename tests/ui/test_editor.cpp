@@ -3,11 +3,14 @@
 // mouse drags and clicks on the view. Every edit is undone back to the scene as opened (field
 // by field) and redone; refusals and warnings reach the status line with the loader's words.
 
+#include "editor/colour_field.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "editor/scene_properties.h"
+#include "editor/velocity_arrow.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
+#include "view/body_item.h"
 #include "view/world_view.h"
 #include "window/main_window.h"
 
@@ -21,12 +24,15 @@
 #include <QDir>
 #include <QLineEdit>
 #include <QScreen>
+#include <QSignalSpy>
 #include <QTest>
+#include <QToolButton>
 #include <QUndoStack>
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 using namespace rigidlab;
 using namespace rigidlab::ui;
@@ -157,6 +163,8 @@ private slots:
     void refusesDegenerateShapesWithTheirMessage();
     void warnsOfOverlapsAndHulls();
     void keysNudgeAndTurn();
+    void velocityByDraggingTheArrow();
+    void colourInTheProperties();
     void thinBoxOnTheGridKeepsOneStep();
     void teachersTaskInTheWindow();
     void lessonLocksTools();
@@ -397,6 +405,150 @@ void TestEditor::keysNudgeAndTurn()
     QVERIFY(std::abs(rig.body("box1").angle + 5.0 * std::numbers::pi / 180.0) < 1e-12);
     rig.tools.deleteSelectionAction()->trigger();
     QVERIFY(rig.scene().bodies.empty());
+}
+
+// The Select tool's velocity arrow: one drag from the handle sets vx, vy (1 m of arrow is
+// 1 m/s; on the grid, whole grid steps in m/s), one undo step, and the body runs with it.
+void TestEditor::velocityByDraggingTheArrow()
+{
+    Rig rig;
+    rig.document.apply(QStringLiteral("no gravity"),
+                       edit::setWorldNumber(rig.scene(), edit::WorldNumber::GravityY, 0.0).scene);
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(0, 0), rig.px(1, 0));
+    QCOMPARE(rig.tools.selectedBody(), 0);
+    rig.use(EditTool::Select);
+    const lessons::Scene before = rig.scene();
+    const int steps = rig.document.undoStack()->count();
+
+    // At rest the handle is a stub beyond the outline, not on the body (a press there moves it).
+    const auto rest = velocityArrow(rig.body("circle1"), rig.view.zoom());
+    QVERIFY(rest);
+    QCOMPARE(rest->tip, rig.body("circle1").position);
+    QVERIFY((rest->handle - rest->tail).norm() > rig.g);
+
+    const Vec2 want(3 * rig.g, -2 * rig.g); // [m/s]
+    const QPoint from = rig.view.mapFromScene(QPointF(rest->handle.x(), rest->handle.y()));
+    const Vec2 end = rest->handle + want * kArrowSeconds;
+    const QPoint to = rig.view.mapFromScene(QPointF(end.x(), end.y()));
+    QTest::mousePress(rig.viewport(), Qt::LeftButton, {}, from);
+    for (int k = 1; k <= 4; ++k) {
+        QTest::mouseMove(rig.viewport(), from + (to - from) * k / 4);
+    }
+    // While dragging, the status line gives the velocity in m/s, in the locale's numbers.
+    QVERIFY2(rig.tools.lastMessage().contains(QStringLiteral("m/s")),
+             qPrintable(rig.tools.lastMessage()));
+    QVERIFY2(rig.tools.lastMessage().contains(formatNumber(want.x(), 4)),
+             qPrintable(rig.tools.lastMessage()));
+    QTest::mouseRelease(rig.viewport(), Qt::LeftButton, {}, to);
+
+    const physics::BodyDef& ball = rig.body("circle1");
+    QVERIFY2(near(ball.velocity, want), qPrintable(rig.tools.lastMessage()));
+    QCOMPARE(ball.position, before.bodies[0].position); // the body did not move
+    QCOMPARE(rig.document.undoStack()->count(), steps + 1);
+    // The Properties fields follow, and the arrow now ends at position + v * kArrowSeconds.
+    QCOMPARE(rig.properties.field(QStringLiteral("velocityX"))->value(), ball.velocity.x());
+    QCOMPARE(rig.properties.field(QStringLiteral("velocityY"))->value(), ball.velocity.y());
+    const auto moving = velocityArrow(ball, rig.view.zoom());
+    QVERIFY(moving && near(moving->tip, ball.position + want * kArrowSeconds));
+
+    // Undo gives back the scene before the drag, bit for bit; redo the velocity.
+    rig.document.undoStack()->undo();
+    QCOMPARE(difference(rig.scene(), before), QString());
+    QCOMPARE(rig.body("circle1").velocity, Vec2(0.0, 0.0));
+    rig.document.undoStack()->redo();
+    QVERIFY(near(rig.body("circle1").velocity, want));
+
+    // A press beside the handle (on the body) moves the body, not its velocity.
+    rig.drag(rig.px(0, 0), rig.px(0, 1));
+    QVERIFY(near(rig.body("circle1").velocity, want));
+    QVERIFY(near(rig.body("circle1").position, Vec2(0.0, rig.g)));
+
+    // Run, without gravity: x(t) = x0 + v t.
+    const Vec2 x0 = rig.body("circle1").position;
+    rig.tools.setEditing(false);
+    for (int k = 0; k < 25; ++k) {
+        rig.simulation.stepForward();
+    }
+    const double t = rig.simulation.world().time();
+    QVERIFY(t > 0.0);
+    const Vec2 x = rig.simulation.world().bodies()[0].position;
+    QVERIFY2(near(x, x0 + want * t),
+             qPrintable(QStringLiteral("(%1, %2) at t = %3").arg(x.x()).arg(x.y()).arg(t)));
+}
+
+// The colour row: a swatch that opens a picker (injected here: no modal dialog offscreen), a
+// "#rrggbb" field refused in the loader's words, Default; each one undo step; the view paints
+// the body in it.
+void TestEditor::colourInTheProperties()
+{
+    Rig rig;
+    rig.use(EditTool::Box);
+    rig.drag(rig.px(0, 0), rig.px(2, 1));
+    QCOMPARE(rig.tools.selectedBody(), 0);
+    const lessons::Scene drawn = rig.scene();
+    const int steps = rig.document.undoStack()->count();
+    ColourField* colour = rig.properties.colourField();
+    QVERIFY(colour);
+    QVERIFY(colour->colour().isEmpty());
+    QVERIFY(!colour->defaultButton()->isEnabled());
+
+    std::optional<QColor> picked = QColor(0xd0, 0x40, 0x30);
+    QColor offered;
+    colour->setPicker([&](const QColor& initial, QWidget*) {
+        offered = initial;
+        return picked;
+    });
+    QTest::mouseClick(colour->swatchButton(), Qt::LeftButton);
+    QCOMPARE(offered, bodyColor(0)); // the picker starts from the colour shown
+    QCOMPARE(rig.scene().colourOf(0), QStringLiteral("#d04030"));
+    QCOMPARE(rig.document.undoStack()->count(), steps + 1);
+    QCOMPARE(colour->textField()->text(), QStringLiteral("#d04030"));
+    QVERIFY(rig.view.itemFor(0));
+    QCOMPARE(rig.view.itemFor(0)->fill(), QColor(0xd0, 0x40, 0x30));
+    // Cancelling the picker changes nothing; it started from the body's colour.
+    picked.reset();
+    QTest::mouseClick(colour->swatchButton(), Qt::LeftButton);
+    QCOMPARE(offered, QColor(0xd0, 0x40, 0x30));
+    QCOMPARE(rig.document.undoStack()->count(), steps + 1);
+
+    // Typed, in either case; kept as the loader keeps it.
+    type(colour->textField(), QStringLiteral("#00FF7F"));
+    QTest::keyClick(colour->textField(), Qt::Key_Return);
+    QCOMPARE(rig.scene().colourOf(0), QStringLiteral("#00ff7f"));
+    QCOMPARE(rig.view.itemFor(0)->fill(), QColor(0x00, 0xff, 0x7f));
+
+    // Not a colour: refused with the loader's message, the colour in force comes back.
+    QSignalSpy refused(&rig.properties, &SceneProperties::refused);
+    type(colour->textField(), QStringLiteral("red"));
+    QTest::keyClick(colour->textField(), Qt::Key_Return);
+    QCOMPARE(refused.count(), 1);
+    QVERIFY2(refused.at(0).at(0).toString().startsWith(
+                 QStringLiteral("box1: colour: must be a colour \"#rrggbb\"")),
+             qPrintable(refused.at(0).at(0).toString()));
+    QCOMPARE(rig.scene().colourOf(0), QStringLiteral("#00ff7f"));
+    QCOMPARE(colour->textField()->text(), QStringLiteral("#00ff7f"));
+    QCOMPARE(rig.document.undoStack()->count(), steps + 2);
+
+    // Default takes it away: the view's own colour again.
+    QVERIFY(colour->defaultButton()->isEnabled());
+    QTest::mouseClick(colour->defaultButton(), Qt::LeftButton);
+    QVERIFY(rig.scene().colourOf(0).isEmpty());
+    QCOMPARE(rig.view.itemFor(0)->fill(), bodyColor(0));
+    QCOMPARE(rig.document.undoStack()->count(), steps + 3);
+
+    // Undo all three: the scene as drawn, bit for bit; redo them.
+    for (int k = 0; k < 3; ++k) {
+        rig.document.undoStack()->undo();
+    }
+    QCOMPARE(difference(rig.scene(), drawn), QString());
+    QCOMPARE(rig.scene().colours, drawn.colours);
+    for (int k = 0; k < 3; ++k) {
+        rig.document.undoStack()->redo();
+    }
+    QVERIFY(rig.scene().colourOf(0).isEmpty());
+    rig.document.undoStack()->undo();
+    QCOMPARE(rig.scene().colourOf(0), QStringLiteral("#00ff7f"));
 }
 
 void TestEditor::teachersTaskInTheWindow()

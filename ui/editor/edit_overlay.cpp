@@ -5,6 +5,7 @@
 #include "editor/scene_document.h"
 
 #include "edit/scene_edits.h"
+#include "panels/number_field.h"
 
 #include <QGraphicsScene>
 #include <QPainter>
@@ -79,6 +80,19 @@ QRectF EditOverlay::boundingRect() const
     return scene() ? scene()->sceneRect() : QRectF();
 }
 
+void EditOverlay::paintVelocity(QPainter* painter, double zoom) const
+{
+    const auto arrow = m_tools.selectedArrow();
+    if (!arrow) {
+        return;
+    }
+    paintVelocityArrow(painter, *arrow, zoom);
+    if (m_tools.m_drag.active && m_tools.m_drag.velocity) {
+        const Vec2 v = (arrow->tip - arrow->tail) / kArrowSeconds;
+        label(painter, arrow->handle, QStringLiteral("v = %1 m/s").arg(formatNumber(v.norm(), 3)));
+    }
+}
+
 void EditOverlay::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget* widget)
 {
     const lessons::Scene& scene = m_tools.m_document.scene();
@@ -134,6 +148,7 @@ void EditOverlay::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWid
         painter->drawEllipse(at(handle), r, r);
         painter->drawEllipse(at(def.position), r * 0.6, r * 0.6);
         painter->setBrush(Qt::NoBrush);
+        paintVelocity(painter, zoom);
     }
 
     // The selected spring.

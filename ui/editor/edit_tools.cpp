@@ -498,6 +498,9 @@ bool EditTools::mousePress(QMouseEvent* event)
     switch (m_tool) {
     case EditTool::Select:
     case EditTool::Rotate: {
+        if (m_tool == EditTool::Select && pressVelocityHandle(raw)) {
+            return true;
+        }
         const int body =
             bodyAt(raw) >= 0 ? bodyAt(raw) : (m_tool == EditTool::Rotate ? m_selected : -1);
         if (body < 0) {
@@ -598,6 +601,10 @@ bool EditTools::mouseMove(QMouseEvent* event)
     }
     m_drag.current = m_pointer;
     m_drag.moved = true;
+    if (m_drag.velocity) {
+        dragVelocity(raw);
+        return true;
+    }
     const lessons::Scene& scene = m_document.scene();
     switch (m_tool) {
     case EditTool::Select: {

@@ -9,6 +9,8 @@
 // change, so what the view shows is the scene as edited. Entering Edit mode pauses; leaving it
 // runs the scene as edited. Refusals and warnings go out through message() for the status bar.
 
+#include "editor/velocity_arrow.h"
+
 #include "rigidlab/physics/forces.h"
 #include "rigidlab/physics/math.h"
 
@@ -70,6 +72,8 @@ public:
     QList<QAction*> actions() const;
 
     bool editing() const { return m_editing; }
+    /// The view the tools work on.
+    const WorldView& view() const { return m_view; }
     EditTool tool() const { return m_tool; }
     /// The selected body (an index into the document's scene), -1 for none.
     int selectedBody() const { return m_selected; }
@@ -136,6 +140,8 @@ private:
         physics::BodyId bodyA = physics::kWorld; ///< a spring's first end
         bool moved = false;
         int mergeId = -1;
+        bool velocity = false; ///< dragging the velocity arrow of `body`
+        physics::Vec2 startVelocity = physics::Vec2::Zero(); ///< its velocity at the press [m/s]
     };
 
     bool mousePress(QMouseEvent* event);
@@ -144,6 +150,15 @@ private:
     bool keyPress(QKeyEvent* event);
     /// Keys the window's shortcuts would take that Edit mode uses (arrows, Q, E, Enter...).
     bool wantsKey(const QKeyEvent* event) const;
+
+    /// The velocity arrow (edit_tools_velocity.cpp): the selected body's, when it moves.
+    std::optional<VelocityArrow> selectedArrow() const;
+    /// Starts dragging the selected body's velocity arrow when `raw` [m] is on its handle.
+    bool pressVelocityHandle(const physics::Vec2& raw);
+    /// Sets the velocity as the arrow's handle is dragged to `raw` [m]; one undo step a drag.
+    void dragVelocity(const physics::Vec2& raw);
+    /// "ball: v = (1,5; −2) m/s, |v| = 2,5 m/s", in the locale.
+    QString velocityText(const physics::BodyDef& def) const;
 
     /// The body under a world point, the topmost (last drawn), or -1.
     int bodyAt(const physics::Vec2& p) const;

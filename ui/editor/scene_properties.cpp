@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "editor/scene_properties.h"
 
+#include "editor/colour_field.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 
@@ -8,6 +9,8 @@
 #include "edit/scene_edits.h"
 #include "format/limits.h"
 #include "panels/number_field.h"
+#include "view/body_item.h"
+#include "view/world_view.h"
 
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
@@ -109,6 +112,7 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
                                 physics::BodyType(m_type->currentData().toInt())),
               -1);
     });
+    addColourRow(body);
     layout->addWidget(m_bodyBox);
 
     m_springBox = new QGroupBox(tr("Spring"), this);
@@ -222,6 +226,16 @@ NumberField* SceneProperties::addNumber(QFormLayout* form, const QString& name,
     return f;
 }
 
+void SceneProperties::addColourRow(QFormLayout* form)
+{
+    m_colour = new ColourField(m_bodyBox);
+    form->addRow(tr("Colour"), m_colour);
+    connect(m_colour, &ColourField::colourChosen, this, [this](const QString& colour) {
+        apply(colour.isEmpty() ? tr("Default colour") : tr("Set colour"),
+              edit::setBodyColour(m_document.scene(), m_tools.selectedBody(), colour), -1);
+    });
+}
+
 NumberField* SceneProperties::field(const QString& name) const
 {
     return findChild<NumberField*>(name);
@@ -278,6 +292,10 @@ void SceneProperties::refresh()
         field(QStringLiteral("velocityX"))->setValue(def.velocity.x());
         field(QStringLiteral("velocityY"))->setValue(def.velocity.y());
         field(QStringLiteral("angularVelocity"))->setValue(def.angularVelocity);
+        m_colour->setColour(scene.colourOf(size_t(selected)));
+        if (const BodyItem* item = m_tools.view().itemFor(selected)) {
+            m_colour->setShownColour(item->fill());
+        }
     }
     const int spring = m_tools.selectedSpring();
     const bool hasSpring = spring >= 0 && size_t(spring) < scene.springs.size();

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The properties of what Edit mode has selected, and of the world, as fields: a body's id,
-// type, density or mass, restitution, friction, velocity and angular velocity; a spring's
+// type, density or mass, restitution, friction, velocity and angular velocity, colour; a spring's
 // stiffness, damping and rest length; the world's gravity, dt, integrator, solver and
 // iterations. Each change is one edit of the document (lessons/edit/), refused with the scene
 // loader's words when out of range (the fields refuse first, with the same limits); changes of
@@ -20,6 +20,7 @@ struct EditResult;
 
 namespace rigidlab::ui {
 
+class ColourField;
 class EditTools;
 class NumberField;
 class SceneDocument;
@@ -33,6 +34,8 @@ public:
     NumberField* field(const QString& name) const;
     QLineEdit* idField() const { return m_id; }
     QComboBox* typeBox() const { return m_type; }
+    /// The selected body's colour: swatch, "#rrggbb" and Default (editor/colour_field.h).
+    ColourField* colourField() const { return m_colour; }
 
 signals:
     /// Something typed was refused; `message` says why (for the status bar).
@@ -44,6 +47,7 @@ public slots:
 
 private:
     NumberField* addNumber(QFormLayout* form, const QString& name, const QString& label);
+    void addColourRow(QFormLayout* form);
     void apply(const QString& what, const lessons::edit::EditResult& result, int mergeId);
 
     EditTools& m_tools;
@@ -52,6 +56,7 @@ private:
     QGroupBox* m_springBox = nullptr;
     QLineEdit* m_id = nullptr;
     QComboBox* m_type = nullptr;
+    ColourField* m_colour = nullptr;
     QComboBox* m_integrator = nullptr;
     QComboBox* m_solver = nullptr;
 };
