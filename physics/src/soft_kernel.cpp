@@ -67,11 +67,10 @@ struct Motion {
     V qcA, qsA, qcB, qsB;
 };
 
-using Index = long long __attribute__((vector_size(W * sizeof(long long))));
-
 /// Four doubles of each lane's body, from `offset` within its BodyState, turned into four
 /// vectors of lanes: out[j][i] = body i's field offset + j. Loads and shuffles instead of a
-/// scalar load per field and lane; it moves bits only.
+/// scalar load per field and lane; it moves bits only. (__builtin_shufflevector: GCC from 12
+/// and Clang both have it; GCC's own __builtin_shuffle broke the Clang-built fuzzers.)
 inline void transpose(const int* index, const BodyState* bodies, int offset, V (&out)[4])
 {
     const auto field = [&](int lane) {
@@ -80,21 +79,21 @@ inline void transpose(const int* index, const BodyState* bodies, int offset, V (
 #if RIGIDLAB_SOFT_WIDTH == 4
     // Rows r_i = body i's four fields; unpack pairs of rows, then swap the 128-bit halves.
     const V r0 = load(field(0)), r1 = load(field(1)), r2 = load(field(2)), r3 = load(field(3));
-    const V t0 = __builtin_shuffle(r0, r1, Index{0, 4, 2, 6});
-    const V t1 = __builtin_shuffle(r0, r1, Index{1, 5, 3, 7});
-    const V t2 = __builtin_shuffle(r2, r3, Index{0, 4, 2, 6});
-    const V t3 = __builtin_shuffle(r2, r3, Index{1, 5, 3, 7});
-    out[0] = __builtin_shuffle(t0, t2, Index{0, 1, 4, 5});
-    out[1] = __builtin_shuffle(t1, t3, Index{0, 1, 4, 5});
-    out[2] = __builtin_shuffle(t0, t2, Index{2, 3, 6, 7});
-    out[3] = __builtin_shuffle(t1, t3, Index{2, 3, 6, 7});
+    const V t0 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);
+    const V t1 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
+    const V t2 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6);
+    const V t3 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
+    out[0] = __builtin_shufflevector(t0, t2, 0, 1, 4, 5);
+    out[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
+    out[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
+    out[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
 #elif RIGIDLAB_SOFT_WIDTH == 2
     const V a0 = load(field(0)), a1 = load(field(0) + 2);
     const V b0 = load(field(1)), b1 = load(field(1) + 2);
-    out[0] = __builtin_shuffle(a0, b0, Index{0, 2});
-    out[1] = __builtin_shuffle(a0, b0, Index{1, 3});
-    out[2] = __builtin_shuffle(a1, b1, Index{0, 2});
-    out[3] = __builtin_shuffle(a1, b1, Index{1, 3});
+    out[0] = __builtin_shufflevector(a0, b0, 0, 2);
+    out[1] = __builtin_shufflevector(a0, b0, 1, 3);
+    out[2] = __builtin_shufflevector(a1, b1, 0, 2);
+    out[3] = __builtin_shufflevector(a1, b1, 1, 3);
 #else
     for (int j = 0; j < 4; ++j)
         for (int i = 0; i < W; ++i)
@@ -121,20 +120,20 @@ inline void scatter(const int* index, BodyState* bodies, const Side& s)
     const auto row = [&](int lane) { return reinterpret_cast<double*>(&bodies[index[lane]]); };
 #if RIGIDLAB_SOFT_WIDTH == 4
     const V u{};
-    const V t0 = __builtin_shuffle(s.vx, s.vy, Index{0, 4, 2, 6});
-    const V t1 = __builtin_shuffle(s.vx, s.vy, Index{1, 5, 3, 7});
-    const V t2 = __builtin_shuffle(s.w, u, Index{0, 4, 2, 6});
-    const V t3 = __builtin_shuffle(s.w, u, Index{1, 5, 3, 7});
-    store(row(0), __builtin_shuffle(t0, t2, Index{0, 1, 4, 5}));
-    store(row(1), __builtin_shuffle(t1, t3, Index{0, 1, 4, 5}));
-    store(row(2), __builtin_shuffle(t0, t2, Index{2, 3, 6, 7}));
-    store(row(3), __builtin_shuffle(t1, t3, Index{2, 3, 6, 7}));
+    const V t0 = __builtin_shufflevector(s.vx, s.vy, 0, 4, 2, 6);
+    const V t1 = __builtin_shufflevector(s.vx, s.vy, 1, 5, 3, 7);
+    const V t2 = __builtin_shufflevector(s.w, u, 0, 4, 2, 6);
+    const V t3 = __builtin_shufflevector(s.w, u, 1, 5, 3, 7);
+    store(row(0), __builtin_shufflevector(t0, t2, 0, 1, 4, 5));
+    store(row(1), __builtin_shufflevector(t1, t3, 0, 1, 4, 5));
+    store(row(2), __builtin_shufflevector(t0, t2, 2, 3, 6, 7));
+    store(row(3), __builtin_shufflevector(t1, t3, 2, 3, 6, 7));
 #elif RIGIDLAB_SOFT_WIDTH == 2
     const V u{};
-    store(row(0), __builtin_shuffle(s.vx, s.vy, Index{0, 2}));
-    store(row(0) + 2, __builtin_shuffle(s.w, u, Index{0, 2}));
-    store(row(1), __builtin_shuffle(s.vx, s.vy, Index{1, 3}));
-    store(row(1) + 2, __builtin_shuffle(s.w, u, Index{1, 3}));
+    store(row(0), __builtin_shufflevector(s.vx, s.vy, 0, 2));
+    store(row(0) + 2, __builtin_shufflevector(s.w, u, 0, 2));
+    store(row(1), __builtin_shufflevector(s.vx, s.vy, 1, 3));
+    store(row(1) + 2, __builtin_shufflevector(s.w, u, 1, 3));
 #else
     for (int i = 0; i < W; ++i) {
         double* b = row(i);
