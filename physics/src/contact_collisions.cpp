@@ -133,6 +133,43 @@ int ContactSolver::solveCollisions(int sweeps)
     return made;
 }
 
+bool ContactSolver::solveCollisionPhase(double threshold, int sweeps)
+{
+    m_seed = false;
+    prepare(threshold, m_settings->restitutionThreshold);
+    for (Constraint& c : m_constraints)
+        for (Point& p : c.p) {
+            p.warmNormal = p.normalImpulse;
+            p.warmTangent = p.tangentImpulse;
+            p.normalImpulse = p.tangentImpulse = 0.0;
+        }
+    solveCollisions(std::max(sweeps, 1));
+    std::vector<Body>& bodies = *m_bodies;
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        Body& b = bodies[i];
+        if (!b.isActive())
+            continue;
+        b.velocity = m_velocity[i].v;
+        b.angularVelocity = m_velocity[i].w;
+    }
+    bool bounced = false;
+    for (Constraint& c : m_constraints) {
+        Contact& ct = (*m_contacts)[static_cast<size_t>(c.contact)];
+        for (int i = 0; i < c.count; ++i) {
+            Point& p = c.p[i];
+            const auto k = static_cast<size_t>(i);
+            ct.normalImpulse[k] = p.warmNormal;
+            ct.tangentImpulse[k] = p.warmTangent;
+            ct.bounceImpulse[k] = p.bounceImpulse;
+            bounced = bounced || p.bounceImpulse > 0;
+            // A point that carries an impulse rests: its bodies were not in free flight
+            // before a bounce (impactFractions()).
+            p.normalImpulse = p.warmNormal;
+        }
+    }
+    return bounced;
+}
+
 bool ContactSolver::solveBlock(const Constraint& c, double b1, double b2, double x[2])
 {
     // Find x >= 0 with w = K x + b >= 0 and x.w = 0 by trying the four cases.

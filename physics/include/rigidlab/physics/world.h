@@ -204,6 +204,10 @@ private:
     /// Stage::Forces, Stage::Integration and Stage::ContactSolve together, in substeps: the
     /// soft step (soft_step.cpp, soft_solver.cpp).
     void softStep();
+    /// The soft step's collision phase, before its substeps (soft_step.cpp): the bounces of
+    /// the sequential solver's collision phase (contact_collisions.cpp). Returns the kinetic
+    /// energy they took [J].
+    double softCollisions(double threshold);
     /// What this step needs, from what the world holds (step_plan.cpp).
     struct Plan {
         bool collide = false; ///< some two bodies can collide: broad and narrow phase
