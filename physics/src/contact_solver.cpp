@@ -84,6 +84,7 @@ void ContactSolver::begin(std::vector<Contact>& contacts, const std::vector<Cont
     m_startPosition = &startPosition;
     m_startVelocity = &startVelocity;
     m_startAngularVelocity = &startAngularVelocity;
+    m_timedCloses = false;
     m_constraints.clear();
     const size_t n = bodies.size();
     m_velocity.resize(n);
