@@ -67,8 +67,9 @@ bool ContactSolver::bounceTarget(Constraint& c, int i, const Velocity& a, const 
     // approach a little slower than the one that timed it (a spinning ball whose gap closes
     // at 0.99 of the step), and the bounce must not be left to the contacts for that (the
     // soft step's stopped it short of touching: an elastic gas lost 0.4 % in 5 s). Only for
-    // the soft step (m_timedCloses): the sequential solver keeps its bits (its golden runs).
-    const bool closes = (m_timedCloses && p.timed) || closesWithinStep(p.separation, vn, m_dt);
+    // the soft step (m_softPhase): the sequential solver keeps its bits (its golden runs).
+    const bool closes =
+        (m_softPhase && p.timed) || closesWithinStep(p.separation, vn, m_dt, m_softPhase);
     if (!closes || !(vn < -p.threshold))
         return false;
     if (p.separation > 0 && !p.timed) {
@@ -142,7 +143,7 @@ int ContactSolver::solveCollisions(int sweeps)
 bool ContactSolver::solveCollisionPhase(double threshold, int sweeps)
 {
     m_seed = false;
-    m_timedCloses = true;
+    m_softPhase = true;
     prepare(threshold, m_settings->restitutionThreshold);
     for (Constraint& c : m_constraints)
         for (Point& p : c.p) {

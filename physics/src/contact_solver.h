@@ -170,9 +170,10 @@ private:
     std::vector<double> m_impact;     ///< per body, see impactFractions()
     std::vector<Rotation> m_rotation; ///< per body, valid where m_rotationStamp == m_stamp
     bool m_seed = false;              ///< this step's solver is the seed's impulse
-    /// A point timed within the step bounces even if its arms at the impact slow its approach
-    /// below closing (bounceTarget()); the soft step's collision phase only.
-    bool m_timedCloses = false;
+    /// The soft step's collision phase (solveCollisionPhase()): a point timed within the step
+    /// bounces even if its arms at the impact slow its approach below closing, and a gap
+    /// that closes exactly at the end of the step bounces too (bounceTarget()).
+    bool m_softPhase = false;
     std::vector<unsigned> m_rotationStamp;
     unsigned m_stamp = 0;
 };

@@ -75,7 +75,7 @@ bool collisionsToSolve(const std::vector<Contact>& contacts, const std::vector<C
             const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
             const double vn = (vB + cross(wB, cp.point - cB) - vA - cross(wA, cp.point - cA))
                                   .dot(ct.manifold.normal);
-            if (vn < -threshold && closesWithinStep(cp.separation, vn, dt))
+            if (vn < -threshold && closesWithinStep(cp.separation, vn, dt, true))
                 return true;
         }
     }
