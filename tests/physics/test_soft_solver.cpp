@@ -117,7 +117,8 @@ void TestSoftSolver::stackStands()
 // Pyramids of 1 m boxes at dt = 1/60 s for 10 s, the benchmark's figures (tests/bench): the
 // top box's height within 5 cm of where it started and nothing toppled (no box moved more than
 // 0.5 m sideways or turned more than 0.2 rad). The sequential-impulse solver's top sinks
-// 0.13-0.23 m at base 40.
+// 0.13-0.23 m at base 40. No box creeps more than 3 cm sideways (with the contact's damping
+// ratio at 10 the middle boxes of base 40 crept up to 0.14 m; at 2 up to 1 cm).
 void TestSoftSolver::pyramidStands_data()
 {
     QTest::addColumn<int>("base");
@@ -136,12 +137,15 @@ void TestSoftSolver::pyramidStands()
     for (int i = 0; i < 600; ++i)
         world.step();
     int toppled = 0;
+    double creep = 0.0; // [m]
     for (size_t i = 1; i < world.bodies().size(); ++i) {
         const Body& b = world.bodies()[i];
         if (std::abs(b.position.x() - start[i].x()) > 0.5 || std::abs(b.angle) > 0.2)
             ++toppled;
+        creep = std::max(creep, std::abs(b.position.x() - start[i].x()));
     }
     QCOMPARE(toppled, 0);
+    RL_VERIFY_AT_MOST(creep, 0.03);
     RL_VERIFY_AT_MOST(std::abs(world.body(top).position.y() - start[static_cast<size_t>(top)].y()),
                       0.05);
 }
