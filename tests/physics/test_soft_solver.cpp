@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The soft step (SolverKind::SoftStep, soft_solver.cpp) against exact mechanics: a tall stack
-// and pyramids that stand, a ball's bounce to e^2 of its height (the restitution pass), a block
+// and pyramids that stand, a ball's bounce to e^2 of its height (the collision phase), a block
 // on a slope at rest below the friction angle and sliding at g (sin t - mu cos t) above it,
 // the warm-started impulse of a resting box, and the other solvers where it cannot run.
 
@@ -150,8 +150,8 @@ void TestSoftSolver::pyramidStands()
                       0.05);
 }
 
-// A ball dropped from h0 on a floor rises to e^2 h0 after its first bounce: the restitution
-// pass gives back e times the approach velocity the step began with.
+// A ball dropped from h0 on a floor rises to e^2 h0 after its first bounce: the collision
+// phase gives back e times the approach velocity at the moment of impact.
 void TestSoftSolver::bounceHeight_data()
 {
     QTest::addColumn<double>("e");
@@ -254,7 +254,7 @@ void TestSoftSolver::restingImpulseIsWeight()
 
 // Two unequal circles closing at 3 m/s without gravity or friction: after the collision the
 // textbook velocities v1' = (p + m2 e (v2 - v1)) / (m1 + m2), v2' = (p + m1 e (v1 - v2)) /
-// (m1 + m2), to 1e-9 of the speeds (the restitution pass restores e times the approach).
+// (m1 + m2), to 1e-9 of the speeds (the collision phase restores e times the approach).
 void TestSoftSolver::headOnCircles_data()
 {
     QTest::addColumn<double>("e");
