@@ -47,7 +47,8 @@ int commandConserve(const QStringList& words)
         gas.dt = *h;
     }
     constexpr physics::SolverKind kSolvers[] = {physics::SolverKind::SeedImpulse,
-                                                physics::SolverKind::SequentialImpulse};
+                                                physics::SolverKind::SequentialImpulse,
+                                                physics::SolverKind::SoftStep};
     std::vector<lessons::ConservationResult> rows;
     for (const physics::SolverKind solver : kSolvers)
         rows.push_back(lessons::runElasticGas(gas, solver));

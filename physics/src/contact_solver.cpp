@@ -84,6 +84,7 @@ void ContactSolver::begin(std::vector<Contact>& contacts, const std::vector<Cont
     m_startPosition = &startPosition;
     m_startVelocity = &startVelocity;
     m_startAngularVelocity = &startAngularVelocity;
+    m_softPhase = false;
     m_constraints.clear();
     const size_t n = bodies.size();
     m_velocity.resize(n);
@@ -181,7 +182,7 @@ void ContactSolver::prepare(double impact, double resting)
             const double sep = cp.separation;
             const double speculative = sep > 0 ? -sep / m_dt : 0.0;
             p.separation = sep;
-            p.closes = closesWithinStep(sep, vn, m_dt);
+            p.closes = closesWithinStep(sep, vn, m_dt, m_softPhase);
             p.bias = speculative;
             p.speculative = speculative;
             p.vnPrepared = vn;

@@ -50,6 +50,15 @@ public:
     /// impactFraction, bounceVelocity, centreAt, leverArmsAt).
     int solveCollisions(int sweeps);
 
+    /// The collision phase for a solver of its own (the soft step, soft_step.cpp), on bodies
+    /// placed where they would end the step without contacts: prepare() as for the sequential
+    /// solver, then solveCollisions(sweeps). Writes the velocities to the bodies, each
+    /// contact's bounces to Contact::bounceImpulse and what remains of its carried impulses
+    /// (prepare(): none where it separates, less last step's bounce) to normalImpulse and
+    /// tangentImpulse, the other solver's warm start. Returns whether anything bounced;
+    /// impactFractions() then tells when.
+    bool solveCollisionPhase(double threshold, int sweeps);
+
     /// Both solvers end by writing the velocities back to the bodies and the accumulated
     /// impulses to the contacts.
 
@@ -161,6 +170,10 @@ private:
     std::vector<double> m_impact;     ///< per body, see impactFractions()
     std::vector<Rotation> m_rotation; ///< per body, valid where m_rotationStamp == m_stamp
     bool m_seed = false;              ///< this step's solver is the seed's impulse
+    /// The soft step's collision phase (solveCollisionPhase()): a point timed within the step
+    /// bounces even if its arms at the impact slow its approach below closing, and a gap
+    /// that closes exactly at the end of the step bounces too (bounceTarget()).
+    bool m_softPhase = false;
     std::vector<unsigned> m_rotationStamp;
     unsigned m_stamp = 0;
 };

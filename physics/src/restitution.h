@@ -31,9 +31,13 @@ namespace rigidlab::physics {
 /// Whether a point with the gap `separation` [m] at the start of the step touches within it
 /// at the normal velocity vn [m/s] (negative: approaching): touching already, or the gap
 /// closes within dt [s].
-inline bool closesWithinStep(double separation, double vn, double dt)
+/// atEnd: also a gap that closes at the end of the step, to a relative 1e-9 (the soft step's
+/// collision phase: its substeps bring such a gap to touching, give or take round-off, and
+/// their last relax pass would stop it without a bounce).
+inline bool closesWithinStep(double separation, double vn, double dt, bool atEnd = false)
 {
-    return separation <= 0 || -vn * dt > separation;
+    constexpr double kEnd = 1.0 - 1e-9;
+    return separation <= 0 || -vn * dt > separation || (atEnd && -vn * dt >= kEnd * separation);
 }
 
 /// The fraction of the step before a gap of `separation` [m] closes at the approach vn [m/s]

@@ -14,9 +14,8 @@
 // stay still and pushes do not become bounces. Friction is solved in the relax pass (and in
 // the biased pass too with SoftStepSettings::frictionWithBias): there the normal impulses
 // carry the weight without the push, and a base-100 pyramid stands (with friction in both,
-// its middle rows slid metres apart in 10 s). Restitution has its own pass at the end, from
-// the normal velocity each point had before the step, where it is faster than the threshold
-// and the point pushed.
+// its middle rows slid metres apart in 10 s). Bounces are not solved here: the collision phase
+// gives them before the substeps (soft_step.cpp), from each contact's approach at its impact.
 //
 // Speed (soft_kernel.h): the contacts are coloured so that no two of one colour share a
 // moving body, and the kernel solves one colour's contacts side by side in SIMD lanes.
@@ -67,7 +66,6 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     m_substep = dt / settings.substeps;
     static const bool wide = soft::haveAvx2() && soft::kernel4Avx2().solve != nullptr;
     m_kernel = wide && settings.wideKernel ? soft::kernel4Avx2() : soft::kernel2();
-    m_pass.inverseSubstep = 1.0 / m_substep;
     m_pass.maxPushSpeed = settings.maxPushSpeed;
     m_pass.threshold = restitutionThreshold;
     // The two softnesses a contact can have (fillLane): between moving bodies, and twice the
@@ -223,8 +221,6 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
     k.impulseScale[l] = soft.impulseScale;
 
     const double substeps = m_settings.substeps;
-    const soft::BodyState& sa = m_state[static_cast<size_t>(ct.a)];
-    const soft::BodyState& sb = m_state[static_cast<size_t>(ct.b)];
     for (int i = 0; i < ct.manifold.pointCount; ++i) {
         const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
         soft::PointLanes& p = k.p[i];
@@ -246,10 +242,6 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
         p.normalImpulse[l] = ct.normalImpulse[static_cast<size_t>(i)] / substeps;
         p.tangentImpulse[l] = ct.tangentImpulse[static_cast<size_t>(i)] / substeps;
         p.maxNormalImpulse[l] = 0.0;
-        // The normal velocity before the step's forces: the restitution's reference.
-        const Vec2 vA = Vec2(sa.vx, sa.vy) + cross(sa.w, rA);
-        const Vec2 vB = Vec2(sb.vx, sb.vy) + cross(sb.w, rB);
-        p.relativeVelocity[l] = (vB - vA).dot(n);
     }
 }
 
@@ -280,9 +272,14 @@ void SoftSolver::warmStart()
     m_kernel.warmStart(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data());
 }
 
-void SoftSolver::solve(bool useBias)
+void SoftSolver::solve(bool useBias, bool lookAhead)
 {
     m_energyValid = false;
+    // A gap s may close at -s / t over the look-ahead time t (the kernel's bias s / t); without
+    // look-ahead t is as good as 0, so that no gap asks anything of the velocities. 1e-200 s
+    // keeps s / t finite for any gap and any mass.
+    constexpr double kNoLookAhead = 1e200; // [1/s]
+    m_pass.inverseSubstep = lookAhead ? 1.0 / m_substep : kNoLookAhead;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
     m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
@@ -310,13 +307,6 @@ void SoftSolver::integratePositions()
         move(id);
     for (int id : m_kinematic)
         move(id);
-}
-
-void SoftSolver::applyRestitution()
-{
-    m_energyValid = false;
-    m_kernel.restitution(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(),
-                         m_pass);
 }
 
 void SoftSolver::sumEnergy() const

@@ -35,12 +35,12 @@ public:
     void integrateVelocities();
     void warmStart();
     /// useBias: the soft solve that pushes overlaps apart; false: the relax pass, rigid and
-    /// without bias, which takes the push's velocity out again.
-    void solve(bool useBias);
+    /// without bias, which takes the push's velocity out again. lookAhead: a gap may close
+    /// within the next substep but no more (speculative); false: gaps ask nothing (the last
+    /// relax pass, whose next substep is the next step's, with its collision phase).
+    void solve(bool useBias, bool lookAhead = true);
     void integratePositions();
 
-    /// After the substeps: restitution from the normal velocities before the step.
-    void applyRestitution();
     /// Velocities, positions and angles to the bodies, impulses (per step) to the contacts.
     void end(std::vector<Body>& bodies);
 

@@ -35,6 +35,10 @@ struct World::Scratch {
     std::vector<double> angularVelocityBefore, angularVelocityAtStart;
     ContactSolver solver;
     SoftSolver softSolver;
+    /// The soft step's collision phase: each body's velocities at the start of the step, and
+    /// how far its bounce moves it back, -f dt dv and -f dt dw (empty: nothing bounced).
+    std::vector<Vec2> softVelocity, impactShift;
+    std::vector<double> softAngularVelocity, impactTurn;
     /// The direct integration's accelerations [m/s^2] and [rad/s^2].
     std::vector<Vec2> acceleration;
     std::vector<double> angularAcceleration;

@@ -14,7 +14,8 @@ namespace rigidlab::physics {
 enum class SolverKind {
     SeedImpulse,       ///< the seed's impulse, contact by contact, once (full denominator)
     SequentialImpulse, ///< accumulated, clamped impulses, iterated and warm started
-    /// Soft contacts in substeps with relaxation and a restitution pass (soft_solver.cpp).
+    /// Soft contacts in substeps with relaxation, after the sequential solver's collision
+    /// phase for the bounces (soft_step.cpp, soft_solver.cpp).
     /// With springs, joints, gravitation or an integrator other than symplectic Euler, the
     /// sequential-impulse solver stands in for it.
     SoftStep,
