@@ -12,8 +12,8 @@
 //               impulse scaled by massScale and impulseScale; relaxing: rigid, no bias
 //   normal      dj = -normalMass massScale (dv.n + bias) - impulseScale j, j stays >= 0
 //   friction    dj = -tangentMass dv.t, |j_t| <= friction j_n
-//   restitution (once, after the substeps) where the pre-solve normal velocity u < -threshold
-//               and the point pushed: dj = -normalMass (dv.n + e u), j stays >= 0.
+// Bounces are not the kernel's: the collision phase gives them before the substeps
+// (soft_step.cpp, contact_collisions.cpp).
 
 #include "soft_kernel.h"
 
@@ -235,7 +235,6 @@ void solvePass(Block* blocks, int count, BodyState* bodies, const PassSettings& 
                 next = vmax(old - load(p.normalMass) * (vn + bias), zero);
             }
             store(p.normalImpulse, next);
-            store(p.maxNormalImpulse, vmax(load(p.maxNormalImpulse), next));
             apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
         }
         // Friction after the normal impulses, so that its cone is this pass's.
@@ -269,49 +268,19 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
         solvePass<false, false>(blocks, count, bodies, s);
 }
 
-void restitutionBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
-{
-    const V zero = splat(0.0), threshold = splat(-s.threshold);
-    for (int k = 0; k < count; ++k) {
-        Block& c = blocks[k];
-        const V e = load(c.restitution);
-        bool any = false;
-        for (int i = 0; i < W; ++i)
-            any = any || e[i] != 0.0;
-        if (!any)
-            continue;
-        Side A = gather(c.a, bodies), B = gather(c.b, bodies);
-        const V mA = load(c.invMassA), iA = load(c.invIA), mB = load(c.invMassB),
-                iB = load(c.invIB);
-        const V nx = load(c.nx), ny = load(c.ny);
-        for (PointLanes& p : c.p) {
-            const V u = load(p.relativeVelocity);
-            const auto bounces = (u < threshold) & (load(p.maxNormalImpulse) > zero);
-            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
-            const V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
-            const V old = load(p.normalImpulse);
-            const V next = vmax(old - load(p.normalMass) * (vn + e * u), zero);
-            store(p.normalImpulse, bounces ? next : old);
-            apply(A, B, mA, iA, mB, iB, bounces ? next - old : zero, nx, ny, rAx, rAy, rBx, rBy);
-        }
-        scatter(c.a, bodies, A);
-        scatter(c.b, bodies, B);
-    }
-}
-
 } // namespace
 } // namespace RIGIDLAB_SOFT_NAMESPACE
 
 #if RIGIDLAB_SOFT_WIDTH == 2
 Kernel kernel2()
 {
-    return {lanes2::warmStartBlocks, lanes2::solveBlocks, lanes2::restitutionBlocks, 2, "2 lanes"};
+    return {lanes2::warmStartBlocks, lanes2::solveBlocks, 2, "2 lanes"};
 }
 #else
 Kernel kernel4Avx2()
 {
-    return {RIGIDLAB_SOFT_NAMESPACE::warmStartBlocks, RIGIDLAB_SOFT_NAMESPACE::solveBlocks,
-            RIGIDLAB_SOFT_NAMESPACE::restitutionBlocks, 4, "4 lanes, AVX2"};
+    return {RIGIDLAB_SOFT_NAMESPACE::warmStartBlocks, RIGIDLAB_SOFT_NAMESPACE::solveBlocks, 4,
+            "4 lanes, AVX2"};
 }
 #endif
 

@@ -38,13 +38,10 @@ struct alignas(32) PointLanes {
     /// The separation with the lever arms' share taken off: the separation now is
     /// n . (dpB + qB rB - dpA - qA rA) + base [m].
     double base[kBlockWidth]{};
-    double normalMass[kBlockWidth]{};       ///< 1 / K along the normal [kg]
-    double tangentMass[kBlockWidth]{};      ///< 1 / K along the tangent [kg]
-    double normalImpulse[kBlockWidth]{};    ///< accumulated within a substep [N s]
-    double tangentImpulse[kBlockWidth]{};   ///< accumulated within a substep [N s]
-    double maxNormalImpulse[kBlockWidth]{}; ///< largest normalImpulse this step [N s]
-    /// Normal velocity before the step's forces and impulses, the restitution's reference [m/s].
-    double relativeVelocity[kBlockWidth]{};
+    double normalMass[kBlockWidth]{};     ///< 1 / K along the normal [kg]
+    double tangentMass[kBlockWidth]{};    ///< 1 / K along the tangent [kg]
+    double normalImpulse[kBlockWidth]{};  ///< accumulated within a substep [N s]
+    double tangentImpulse[kBlockWidth]{}; ///< accumulated within a substep [N s]
 };
 
 struct alignas(32) Block {
@@ -52,7 +49,7 @@ struct alignas(32) Block {
     double invMassA[kBlockWidth]{}, invIA[kBlockWidth]{};
     double invMassB[kBlockWidth]{}, invIB[kBlockWidth]{};
     double nx[kBlockWidth]{}, ny[kBlockWidth]{}; ///< unit normal from A to B
-    double friction[kBlockWidth]{}, restitution[kBlockWidth]{};
+    double friction[kBlockWidth]{};
     /// The soft constraint's coefficients for one substep (soft_solver.cpp).
     double biasRate[kBlockWidth]{};     ///< [1/s]
     double massScale[kBlockWidth]{};    ///< of the effective mass, in (0, 1)
@@ -64,7 +61,6 @@ struct alignas(32) Block {
 struct PassSettings {
     double inverseSubstep = 0; ///< 1 / substep [1/s]
     double maxPushSpeed = 0;   ///< how fast the bias pushes overlapping bodies apart [m/s]
-    double threshold = 0;      ///< restitution threshold [m/s]
     bool useBias = true;       ///< solve (true) or relax (false)
     bool friction = true;      ///< friction impulses in this pass
 };
@@ -75,8 +71,6 @@ struct Kernel {
     void (*warmStart)(Block* blocks, int count, BodyState* bodies);
     /// One pass of normal and friction impulses, soft with bias or rigid without (relax).
     void (*solve)(Block* blocks, int count, BodyState* bodies, const PassSettings& s);
-    /// One pass of restitution from the pre-solve normal velocities.
-    void (*restitution)(Block* blocks, int count, BodyState* bodies, const PassSettings& s);
     int width; ///< lanes solved together
     const char* name;
 };

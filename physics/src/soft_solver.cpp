@@ -58,7 +58,7 @@ bool haveAvx2()
 void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                        const std::vector<Vec2>& acceleration,
                        const std::vector<double>& angularAcceleration, double dt,
-                       const SoftStepSettings& settings, double restitutionThreshold)
+                       const SoftStepSettings& settings)
 {
     m_contacts = &contacts;
     m_settings = settings;
@@ -67,7 +67,6 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     static const bool wide = soft::haveAvx2() && soft::kernel4Avx2().solve != nullptr;
     m_kernel = wide && settings.wideKernel ? soft::kernel4Avx2() : soft::kernel2();
     m_pass.maxPushSpeed = settings.maxPushSpeed;
-    m_pass.threshold = restitutionThreshold;
     // The two softnesses a contact can have (fillLane): between moving bodies, and twice the
     // frequency against a body that does not move.
     const double hertz = m_settings.contactFrequency / m_substep;
@@ -213,7 +212,6 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
     k.nx[l] = n.x();
     k.ny[l] = n.y();
     k.friction[l] = ct.friction;
-    k.restitution[l] = ct.restitution;
     const bool oneSided = mA == 0.0 || mB == 0.0;
     const Softness& soft = m_softness[oneSided ? 1 : 0];
     k.biasRate[l] = soft.biasRate;
@@ -241,7 +239,6 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
         // share.
         p.normalImpulse[l] = ct.normalImpulse[static_cast<size_t>(i)] / substeps;
         p.tangentImpulse[l] = ct.tangentImpulse[static_cast<size_t>(i)] / substeps;
-        p.maxNormalImpulse[l] = 0.0;
     }
 }
 

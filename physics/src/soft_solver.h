@@ -25,11 +25,10 @@ class SoftSolver {
 public:
     /// Takes this step's contacts and bodies, before anything moved. acceleration and
     /// angularAcceleration: each body's applied load over its mass, constant over the step.
-    /// restitutionThreshold: approaches slower than this do not bounce [m/s].
     void begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                const std::vector<Vec2>& acceleration,
                const std::vector<double>& angularAcceleration, double dt,
-               const SoftStepSettings& settings, double restitutionThreshold);
+               const SoftStepSettings& settings);
 
     // A substep, in this order (Catto's soft step).
     void integrateVelocities();

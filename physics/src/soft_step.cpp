@@ -182,8 +182,7 @@ void World::softStep()
         StageTimer timer(m_profile, Stage::ContactSolve);
         const double threshold = restitutionThreshold(m_def, m_contactSettings);
         loss += softCollisions(threshold);
-        solver.begin(m_contacts, m_bodies, s.acceleration, s.angularAcceleration, h, settings,
-                     threshold);
+        solver.begin(m_contacts, m_bodies, s.acceleration, s.angularAcceleration, h, settings);
     }
     const bool contacts = solver.constraintCount() > 0;
     const double sub = h / settings.substeps; // [s]
