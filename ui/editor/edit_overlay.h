@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What Edit mode draws over the world: the grid, the selected body's outline and rotate
-// handle, overlapping bodies, and the shape, pin or spring being drawn with its size.
+// handle, overlapping bodies, the shape, pin or spring being drawn with its size, and where
+// the pointer snaps to another body.
 
 #include <QGraphicsItem>
 
 namespace rigidlab::ui {
 
 class EditTools;
+struct Snap;
 
 class EditOverlay : public QGraphicsItem {
 public:
@@ -17,6 +19,8 @@ public:
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:
+    static void drawSnapMarker(QPainter* painter, const Snap& snap, double zoom);
+
     const EditTools& m_tools;
 };
 
