@@ -688,6 +688,8 @@ void TestEditor::historyListsEditsAndGoesBack()
     };
     const SceneDocument& document = *w.document();
     const lessons::Scene opened = document.scene();
+    const QPoint origin = view.mapFromScene(QPointF(0, 0));
+    const double zoom = view.zoom();
 
     tools.toolAction(EditTool::Circle)->trigger();
     drag(px(-2, 3), px(-1, 3));
@@ -717,6 +719,10 @@ void TestEditor::historyListsEditsAndGoesBack()
         shown << model->index(row, 0).data().toString();
     }
     QVERIFY2(shown == expected, qPrintable(shown.join(QStringLiteral(" | "))));
+    // The view held still under the pen, though the circle was drawn outside the ground's
+    // fitted area.
+    QCOMPARE(view.mapFromScene(QPointF(0, 0)), origin);
+    QCOMPARE(view.zoom(), zoom);
     QCOMPARE(history->currentIndex().row(), 5);
 
     // A click on "Add circle circle1": back to the scene with the circle alone.

@@ -57,7 +57,8 @@ public:
     /// world coordinates [m] (an empty rect when it draws nothing).
     void setFitExtra(std::function<QRectF()> extra) { m_fitExtra = std::move(extra); }
     /// Whether loading a scene fits the view to it (the default). The scene editor turns it off
-    /// while it reloads the world after each edit, so that the view holds still under the pen.
+    /// while it reloads the world after each edit, so that the view holds still under the pen
+    /// (nor does it widen to follow a body drawn outside what it shows).
     void setFitOnRebuild(bool on) { m_fitOnRebuild = on; }
     /// A view position in the world [m].
     physics::Vec2 worldAt(const QPoint& viewPos) const { return toWorld(viewPos); }
