@@ -416,15 +416,28 @@ void TestEditor::keysNudgeAndTurn()
     rig.use(EditTool::Box);
     rig.drag(rig.px(0, 0), rig.px(2, 2));
     QCOMPARE(rig.tools.selectedBody(), 0);
+    QUndoStack& undo = *rig.document.undoStack();
     rig.view.setFocus();
     QTest::keyClick(&rig.view, Qt::Key_Right);
     QTest::keyClick(&rig.view, Qt::Key_Up);
     QVERIFY(near(rig.body("box1").position, Vec2(2 * rig.g, 2 * rig.g)));
+    QCOMPARE(undo.count(), 2); // the box, and one step for the run of arrow keys
     QTest::keyClick(&rig.view, Qt::Key_Q);
     QVERIFY(std::abs(rig.body("box1").angle - 5.0 * std::numbers::pi / 180.0) < 1e-12);
     QTest::keyClick(&rig.view, Qt::Key_E);
     QTest::keyClick(&rig.view, Qt::Key_E);
     QVERIFY(std::abs(rig.body("box1").angle + 5.0 * std::numbers::pi / 180.0) < 1e-12);
+    QCOMPARE(undo.count(), 3); // one step for the turns
+    QCOMPARE(undo.text(2), QStringLiteral("Rotate box1"));
+    undo.undo();
+    QCOMPARE(rig.body("box1").angle, 0.0);
+    // After an undo, a key starts a new step.
+    QTest::keyClick(&rig.view, Qt::Key_E);
+    QCOMPARE(undo.count(), 3);
+    QTest::keyClick(&rig.view, Qt::Key_E);
+    QCOMPARE(undo.count(), 3);
+    undo.undo();
+    QCOMPARE(rig.body("box1").angle, 0.0);
     rig.tools.deleteSelectionAction()->trigger();
     QVERIFY(rig.scene().bodies.empty());
 }

@@ -16,6 +16,7 @@
 #include <QGraphicsScene>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QUndoStack>
 
 #include <algorithm>
 #include <cmath>
@@ -309,8 +310,10 @@ void EditTools::rotateSelected(double radians)
         return;
     }
     const auto& def = m_document.scene().bodies[static_cast<size_t>(m_selected)];
+    const int mergeId = keyRunMergeId(KeyRun::Kind::Turn);
     apply(tr("Rotate %1").arg(QString::fromStdString(def.name)),
-          edit::rotateBody(m_document.scene(), m_selected, def.angle + radians));
+          edit::rotateBody(m_document.scene(), m_selected, def.angle + radians), mergeId);
+    m_keyRun.index = m_document.undoStack()->index();
 }
 
 void EditTools::nudgeSelected(const Vec2& offset)
@@ -319,8 +322,21 @@ void EditTools::nudgeSelected(const Vec2& offset)
         return;
     }
     const auto& def = m_document.scene().bodies[static_cast<size_t>(m_selected)];
+    const int mergeId = keyRunMergeId(KeyRun::Kind::Nudge);
     apply(tr("Move %1").arg(QString::fromStdString(def.name)),
-          edit::moveBody(m_document.scene(), m_selected, def.position + offset));
+          edit::moveBody(m_document.scene(), m_selected, def.position + offset), mergeId);
+    m_keyRun.index = m_document.undoStack()->index();
+}
+
+int EditTools::keyRunMergeId(KeyRun::Kind kind)
+{
+    const QUndoStack* undo = m_document.undoStack();
+    const bool sameRun = m_keyRun.body == m_selected && m_keyRun.kind == kind &&
+                         m_keyRun.index == undo->index() && undo->index() == undo->count();
+    if (!sameRun) {
+        m_keyRun = KeyRun{kind, m_selected, m_nextMergeId++, -1};
+    }
+    return m_keyRun.mergeId;
 }
 
 void EditTools::deleteSelected()

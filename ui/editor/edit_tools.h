@@ -146,6 +146,17 @@ private:
         int mergeId = -1;
     };
 
+    /// A run of arrow keys (or of Q and E) on one body, one step of the history as a drag
+    /// is: anything else in between (an edit, an undo) starts a new run.
+    struct KeyRun {
+        enum class Kind { None, Nudge, Turn };
+        Kind kind = Kind::None;
+        int body = -1;
+        int mergeId = -1;
+        int index = -1; ///< the undo stack's index after the run's last key
+    };
+    int keyRunMergeId(KeyRun::Kind kind);
+
     bool mousePress(QMouseEvent* event);
     bool mouseMove(QMouseEvent* event);
     bool mouseRelease(QMouseEvent* event);
@@ -206,6 +217,7 @@ private:
     /// The pin being placed: its body and point, after the first click.
     std::optional<std::pair<physics::BodyId, physics::Vec2>> m_pinStart;
     int m_nextMergeId = 1000;
+    KeyRun m_keyRun;
     QString m_lastMessage;
 };
 
