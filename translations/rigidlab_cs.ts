@@ -1457,20 +1457,12 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Posunout %1</translation>
     </message>
     <message>
-        <source>Delete spring</source>
-        <translation>Smazat pružinu</translation>
-    </message>
-    <message>
         <source>Select a body to delete it</source>
         <translation>Vyberte těleso, které chcete smazat</translation>
     </message>
     <message>
         <source>Delete %1</source>
         <translation>Smazat %1</translation>
-    </message>
-    <message>
-        <source>Add polygon</source>
-        <translation>Přidat mnohoúhelník</translation>
     </message>
     <message>
         <source>Not convex: it will be replaced by the convex hull shown</source>
@@ -1493,14 +1485,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Teď klikněte na druhé těleso, nebo na prázdné místo pro připojení k&#xa0;okolí</translation>
     </message>
     <message>
-        <source>Add pin</source>
-        <translation>Přidat čep</translation>
-    </message>
-    <message>
-        <source>Duplicate %1</source>
-        <translation>Duplikovat %1</translation>
-    </message>
-    <message>
         <source>%1 at (%2; %3) m</source>
         <translation>%1 v&#xa0;(%2; %3)&#xa0;m</translation>
     </message>
@@ -1521,28 +1505,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Pružina: délka %1&#xa0;m</translation>
     </message>
     <message>
-        <source>Add circle</source>
-        <translation>Přidat kruh</translation>
-    </message>
-    <message>
-        <source>Add box</source>
-        <translation>Přidat obdélník</translation>
-    </message>
-    <message>
-        <source>Add ground</source>
-        <translation>Přidat podložku</translation>
-    </message>
-    <message>
-        <source>Add spring</source>
-        <translation>Přidat pružinu</translation>
-    </message>
-    <message>
         <source>Grid %1 m</source>
         <translation>Mřížka %1&#xa0;m</translation>
-    </message>
-    <message>
-        <source>Snap to a grid of %1 m and to other bodies&apos; corners (%2)</source>
-        <translation>Přichytávat k&#xa0;mřížce %1&#xa0;m a&#xa0;k&#xa0;rohům jiných těles (%2)</translation>
     </message>
     <message>
         <source>This lesson step locks the %1 tool</source>
@@ -1555,6 +1519,50 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>%1: v = (%2; %3) m/s, |v| = %4 m/s (arrow: the distance covered in %5 s)</source>
         <translation>%1: v = (%2; %3) m/s, |v| = %4 m/s (šipka: dráha uražená za %5 s)</translation>
+    </message>
+    <message>
+        <source>Delete spring from %1 to %2</source>
+        <translation>Smazat pružinu %1 – %2</translation>
+    </message>
+    <message>
+        <source>Add polygon %1</source>
+        <translation>Přidat mnohoúhelník %1</translation>
+    </message>
+    <message>
+        <source>Pin %1 to %2</source>
+        <translation>Připnout %1 k&#xa0;%2</translation>
+    </message>
+    <message>
+        <source>Duplicate %1 as %2</source>
+        <translation>Duplikovat %1 jako %2</translation>
+    </message>
+    <message>
+        <source>Add circle %1</source>
+        <translation>Přidat kruh %1</translation>
+    </message>
+    <message>
+        <source>Add box %1</source>
+        <translation>Přidat obdélník %1</translation>
+    </message>
+    <message>
+        <source>Add ground %1</source>
+        <translation>Přidat podložku %1</translation>
+    </message>
+    <message>
+        <source>Add spring from %1 to %2</source>
+        <translation>Přidat pružinu %1 – %2</translation>
+    </message>
+    <message>
+        <source>the world</source>
+        <translation>svět</translation>
+    </message>
+    <message>
+        <source>Pin %1 to the world</source>
+        <translation>Připnout %1 ke světu</translation>
+    </message>
+    <message>
+        <source>Snap to a grid of %1 m and to other bodies&apos; corners and edges (%2)</source>
+        <translation>Přichytávat k&#xa0;mřížce %1&#xa0;m a&#xa0;k&#xa0;rohům a&#xa0;hranám jiných těles (%2)</translation>
     </message>
 </context>
 <context>
@@ -2260,6 +2268,22 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Save them before going on?</source>
         <translation>Uložit je před pokračováním?</translation>
     </message>
+    <message>
+        <source>Scene as opened</source>
+        <translation>Scéna, jak byla otevřena</translation>
+    </message>
+    <message>
+        <source>Every edit since the scene was opened; click one to go back to it (the later ones stay, to redo)</source>
+        <translation>Všechny úpravy od otevření scény; kliknutím na některou se k&#xa0;ní vrátíte (pozdější zůstanou pro opakování)</translation>
+    </message>
+    <message>
+        <source>History</source>
+        <translation>Historie</translation>
+    </message>
+    <message>
+        <source>History of edits</source>
+        <translation>Historie úprav</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::NumberField</name>
@@ -2592,14 +2616,6 @@ B&#xa0;%3 … %4</translation>
         <translation>Nastavit: %1</translation>
     </message>
     <message>
-        <source>Rename %1</source>
-        <translation>Přejmenovat na %1</translation>
-    </message>
-    <message>
-        <source>Set type</source>
-        <translation>Nastavit typ</translation>
-    </message>
-    <message>
         <source>Spring</source>
         <translation>Pružina</translation>
     </message>
@@ -2666,6 +2682,22 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Set colour</source>
         <translation>Nastavit barvu</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2</source>
+        <translation>Nastavit %1 tělesa %2</translation>
+    </message>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>Přejmenovat %1 na %2</translation>
+    </message>
+    <message>
+        <source>Set type of %1</source>
+        <translation>Nastavit typ tělesa %1</translation>
+    </message>
+    <message>
+        <source>Set %1 of spring %2</source>
+        <translation>Nastavit %1 pružiny %2</translation>
     </message>
 </context>
 <context>

@@ -22,12 +22,14 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QLineEdit>
 #include <QScreen>
 #include <QSignalSpy>
 #include <QTest>
 #include <QToolButton>
 #include <QUndoStack>
+#include <QUndoView>
 
 #include <algorithm>
 #include <cmath>
@@ -153,6 +155,34 @@ bool near(const Vec2& a, const Vec2& b)
     return (a - b).norm() <= kTolerance;
 }
 
+/// A side of a polygon body in the world: its first vertex, its outward normal, its length.
+struct Side {
+    Vec2 a = Vec2::Zero();
+    Vec2 normal = Vec2::Zero();
+    Vec2 along = Vec2::Zero(); ///< unit, from a to the next vertex
+    double length = 0.0;       ///< [m]
+    /// Signed distance of p from the side's line [m], positive outside.
+    double distance(const Vec2& p) const { return normal.dot(p - a); }
+};
+
+/// The side of `def` whose outward normal points most nearly up (a ramp's surface).
+Side topSide(const physics::BodyDef& def)
+{
+    const physics::Polygon& poly = *def.shape.asPolygon();
+    const physics::Transform xf(def.position, def.angle);
+    Side best;
+    best.normal = Vec2(0.0, -2.0);
+    for (size_t i = 0; i < poly.vertices.size(); ++i) {
+        const Vec2 n = xf.q.apply(poly.normals[i]);
+        if (n.y() > best.normal.y()) {
+            const Vec2 a = xf.apply(poly.vertices[i]);
+            const Vec2 b = xf.apply(poly.vertices[(i + 1) % poly.vertices.size()]);
+            best = Side{a, n, (b - a).normalized(), (b - a).norm()};
+        }
+    }
+    return best;
+}
+
 } // namespace
 
 class TestEditor : public QObject {
@@ -170,6 +200,9 @@ private slots:
     void lessonLocksTools();
     void viewHoldsStillWhileDrawing();
     void propertiesShowWhatMatters();
+    void snapsToOtherBodiesEdges();
+    void movedBodyRestsOnARamp();
+    void historyListsEditsAndGoesBack();
 };
 
 void TestEditor::editModePausesAndRunsAsEdited()
@@ -394,15 +427,28 @@ void TestEditor::keysNudgeAndTurn()
     rig.use(EditTool::Box);
     rig.drag(rig.px(0, 0), rig.px(2, 2));
     QCOMPARE(rig.tools.selectedBody(), 0);
+    QUndoStack& undo = *rig.document.undoStack();
     rig.view.setFocus();
     QTest::keyClick(&rig.view, Qt::Key_Right);
     QTest::keyClick(&rig.view, Qt::Key_Up);
     QVERIFY(near(rig.body("box1").position, Vec2(2 * rig.g, 2 * rig.g)));
+    QCOMPARE(undo.count(), 2); // the box, and one step for the run of arrow keys
     QTest::keyClick(&rig.view, Qt::Key_Q);
     QVERIFY(std::abs(rig.body("box1").angle - 5.0 * std::numbers::pi / 180.0) < 1e-12);
     QTest::keyClick(&rig.view, Qt::Key_E);
     QTest::keyClick(&rig.view, Qt::Key_E);
     QVERIFY(std::abs(rig.body("box1").angle + 5.0 * std::numbers::pi / 180.0) < 1e-12);
+    QCOMPARE(undo.count(), 3); // one step for the turns
+    QCOMPARE(undo.text(2), QStringLiteral("Rotate box1"));
+    undo.undo();
+    QCOMPARE(rig.body("box1").angle, 0.0);
+    // After an undo, a key starts a new step.
+    QTest::keyClick(&rig.view, Qt::Key_E);
+    QCOMPARE(undo.count(), 3);
+    QTest::keyClick(&rig.view, Qt::Key_E);
+    QCOMPARE(undo.count(), 3);
+    undo.undo();
+    QCOMPARE(rig.body("box1").angle, 0.0);
     rig.tools.deleteSelectionAction()->trigger();
     QVERIFY(rig.scene().bodies.empty());
 }
@@ -665,6 +711,206 @@ void TestEditor::lessonLocksTools()
     QCOMPARE(rig.tools.tool(), EditTool::Circle);
     rig.tools.setAllowedTools(std::nullopt);
     QVERIFY(rig.tools.toolAction(EditTool::Box)->isEnabled());
+}
+
+// A ramp turned by 20° (its sides off the grid): a circle drawn from a few pixels beside its
+// surface has its centre exactly on it, a point near a corner takes the corner, and the pointer
+// shows where it snaps before the press.
+void TestEditor::snapsToOtherBodiesEdges()
+{
+    Rig rig;
+    rig.use(EditTool::Ground);
+    rig.drag(rig.px(-4, -1), rig.px(4, 0));
+    rig.view.setFocus();
+    for (int i = 0; i < 4; ++i) {
+        QTest::keyClick(&rig.view, Qt::Key_E);
+    }
+    const Side top = topSide(rig.body("ground1"));
+    QVERIFY(std::abs(top.normal.y() - std::cos(20.0 * std::numbers::pi / 180.0)) < 1e-12);
+    const double pixel = 1.0 / rig.view.zoom(); // [m]
+    const auto toView = [&rig](const Vec2& p) {
+        return rig.view.mapFromScene(QPointF(p.x(), p.y()));
+    };
+
+    // 3 px outside the surface, a third of the way along: off the grid and off the side.
+    const Vec2 beside = top.a + 0.37 * top.length * top.along + 3.0 * pixel * top.normal;
+    rig.use(EditTool::Circle);
+    QTest::mouseMove(rig.viewport(), toView(beside));
+    QVERIFY(rig.tools.bodySnap().has_value()); // the marker shows where it will go
+    QCOMPARE(rig.tools.bodySnap()->kind, Snap::Kind::Edge);
+    QCOMPARE(rig.tools.bodySnap()->body, rig.index("ground1"));
+    rig.drag(toView(beside), toView(beside + 2.0 * rig.g * top.normal));
+    QVERIFY2(rig.index("circle1") >= 0, qPrintable(rig.tools.lastMessage()));
+    const Vec2 centre = rig.body("circle1").position;
+    QVERIFY2(std::abs(top.distance(centre)) < kTolerance,
+             qPrintable(QString::number(top.distance(centre))));
+    const double along = (centre - top.a).dot(top.along);
+    QVERIFY(along > 0.3 * top.length && along < 0.45 * top.length);
+    // Its radius: to the point released (on the grid), about two grid steps out.
+    const double radius = rig.body("circle1").shape.asCircle()->radius;
+    QVERIFY(radius > rig.g && radius < 3.0 * rig.g);
+
+    // Near both a corner and the side: the corner wins.
+    const Vec2 corner = top.a + 3.0 * pixel * top.along + 2.0 * pixel * top.normal;
+    rig.use(EditTool::Box);
+    rig.drag(toView(corner), toView(top.a + Vec2(-2.0 * rig.g, 2.0 * rig.g)));
+    QVERIFY2(rig.index("box1") >= 0, qPrintable(rig.tools.lastMessage()));
+    const auto* box = rig.body("box1").shape.asPolygon();
+    const physics::Transform xf(rig.body("box1").position, rig.body("box1").angle);
+    QVERIFY(std::any_of(box->vertices.begin(), box->vertices.end(),
+                        [&](const Vec2& v) { return near(xf.apply(v), top.a); }));
+
+    // With snapping off, nothing snaps and no marker shows.
+    rig.tools.snapAction()->setChecked(false);
+    rig.use(EditTool::Circle);
+    QTest::mouseMove(rig.viewport(), toView(beside));
+    QVERIFY(!rig.tools.bodySnap().has_value());
+}
+
+// A box dragged by its middle until its corner is a few pixels above a 20° ramp is set down
+// with that corner on the ramp's surface; a ball dragged near it rests on it, touching.
+void TestEditor::movedBodyRestsOnARamp()
+{
+    Rig rig;
+    rig.use(EditTool::Ground);
+    rig.drag(rig.px(-6, -1), rig.px(6, 0));
+    rig.view.setFocus();
+    for (int i = 0; i < 4; ++i) {
+        QTest::keyClick(&rig.view, Qt::Key_E);
+    }
+    const Side top = topSide(rig.body("ground1"));
+    const double pixel = 1.0 / rig.view.zoom();
+    const auto toView = [&rig](const Vec2& p) {
+        return rig.view.mapFromScene(QPointF(p.x(), p.y()));
+    };
+    const auto fromView = [&rig](QPoint p) {
+        const QPointF q = rig.view.mapToScene(p);
+        return Vec2(q.x(), q.y());
+    };
+
+    rig.use(EditTool::Box);
+    rig.drag(rig.px(2, 8), rig.px(4, 10)); // 2 by 2 grid steps, centred at (3, 9)
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(-4, 9), rig.px(-3, 9)); // radius one grid step
+    rig.use(EditTool::Select);
+
+    // The box's lowest corner (its lower left one, the ramp going down to the right) 4 px
+    // above the middle of the surface.
+    const Vec2 grab = fromView(rig.px(3, 9));
+    const Vec2 grabOffset = rig.body("box1").position - grab;
+    const Vec2 lowerLeft(-rig.g, -rig.g);
+    const Vec2 onSurface = top.a + 0.5 * top.length * top.along;
+    const Vec2 target = onSurface + 4.0 * pixel * top.normal - lowerLeft - grabOffset;
+    rig.drag(toView(grab), toView(target));
+    const auto& box = rig.body("box1");
+    QCOMPARE(box.angle, 0.0);
+    const Vec2 corner = box.position + lowerLeft;
+    QVERIFY2(std::abs(top.distance(corner)) < kTolerance,
+             qPrintable(QString::number(top.distance(corner))));
+    QVERIFY(((corner - onSurface).norm()) < 3.0 * pixel); // where it was set down
+    QVERIFY2(!rig.tools.lastMessage().contains(QStringLiteral("overlaps")),
+             qPrintable(rig.tools.lastMessage()));
+    QVERIFY(!rig.tools.bodySnap().has_value()); // the marker goes with the release
+
+    // The ball, its surface 5 px above the ramp's, lower down the slope: it rests on it.
+    const Vec2 ballGrab = fromView(rig.px(-4, 9));
+    const Vec2 ballOffset = rig.body("circle1").position - ballGrab;
+    const Vec2 below = top.a + 0.8 * top.length * top.along;
+    const Vec2 ballTarget = below + (rig.g + 5.0 * pixel) * top.normal - ballOffset;
+    rig.drag(toView(ballGrab), toView(ballTarget));
+    const Vec2 ball = rig.body("circle1").position;
+    QVERIFY2(std::abs(top.distance(ball) - rig.g) < kTolerance,
+             qPrintable(QString::number(top.distance(ball) - rig.g)));
+    QVERIFY2(edit::overlapMessage(rig.scene()).isEmpty(),
+             qPrintable(edit::overlapMessage(rig.scene())));
+}
+
+// The History dock lists every edit by name, shows in Edit mode only, and a click on an entry
+// goes back to the scene as it was after that edit.
+void TestEditor::historyListsEditsAndGoesBack()
+{
+    MainWindow w;
+    w.resize(1024, 768);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QVERIFY(w.newScene());
+    auto* dock = w.findChild<QDockWidget*>(QStringLiteral("historyDock"));
+    auto* history = w.findChild<QUndoView*>(QStringLiteral("historyView"));
+    QVERIFY(dock && history);
+    QCOMPARE(dock->windowTitle(), QStringLiteral("History"));
+    EditTools& tools = w.editTools();
+    if (!tools.editing()) {
+        tools.editAction()->trigger();
+    }
+    QVERIFY(dock->isVisible());
+    WorldView& view = w.view();
+    const double g = tools.gridStep();
+    const auto px = [&view, g](double x, double y) {
+        return view.mapFromScene(QPointF(x * g, y * g));
+    };
+    const auto drag = [&view](QPoint a, QPoint b) {
+        QTest::mousePress(view.viewport(), Qt::LeftButton, {}, a);
+        QTest::mouseMove(view.viewport(), (a + b) / 2);
+        QTest::mouseMove(view.viewport(), b);
+        QTest::mouseRelease(view.viewport(), Qt::LeftButton, {}, b);
+    };
+    const SceneDocument& document = *w.document();
+    const lessons::Scene opened = document.scene();
+    const QPoint origin = view.mapFromScene(QPointF(0, 0));
+    const double zoom = view.zoom();
+
+    tools.toolAction(EditTool::Circle)->trigger();
+    drag(px(-2, 3), px(-1, 3));
+    const lessons::Scene withCircle = document.scene();
+    tools.toolAction(EditTool::Box)->trigger();
+    drag(px(1, 2), px(2, 3));
+    tools.toolAction(EditTool::Select)->trigger();
+    drag(px(1.5, 2.5), px(3.5, 2.5));
+    auto* properties = w.findChild<QDockWidget*>(QStringLiteral("propertiesDock"));
+    QVERIFY(properties);
+    auto* friction = properties->findChild<NumberField*>(QStringLiteral("friction"));
+    QVERIFY(friction);
+    type(friction, QStringLiteral("0.25"));
+    QVERIFY(friction->commit());
+    tools.toolAction(EditTool::Spring)->trigger();
+    drag(px(-2, 8), px(-2, 3));
+
+    const QStringList expected{QStringLiteral("Scene as opened"),
+                               QStringLiteral("Add circle circle1"),
+                               QStringLiteral("Add box box1"),
+                               QStringLiteral("Move box1"),
+                               QStringLiteral("Set friction μ of box1"),
+                               QStringLiteral("Add spring from the world to circle1")};
+    QAbstractItemModel* model = history->model();
+    QStringList shown;
+    for (int row = 0; row < model->rowCount(); ++row) {
+        shown << model->index(row, 0).data().toString();
+    }
+    QVERIFY2(shown == expected, qPrintable(shown.join(QStringLiteral(" | "))));
+    // The view held still under the pen, though the circle was drawn outside the ground's
+    // fitted area.
+    QCOMPARE(view.mapFromScene(QPointF(0, 0)), origin);
+    QCOMPARE(view.zoom(), zoom);
+    QCOMPARE(history->currentIndex().row(), 5);
+
+    // A click on "Add circle circle1": back to the scene with the circle alone.
+    const QModelIndex entry = model->index(1, 0);
+    QTest::mouseClick(history->viewport(), Qt::LeftButton, {}, history->visualRect(entry).center());
+    QCOMPARE(document.undoStack()->index(), 1);
+    QVERIFY2(difference(document.scene(), withCircle).isEmpty(),
+             qPrintable(difference(document.scene(), withCircle)));
+    QCOMPARE(w.controller().scene().bodies.size(), withCircle.bodies.size());
+    // The first entry: the scene as opened; the later edits stay, to redo.
+    QTest::mouseClick(history->viewport(), Qt::LeftButton, {},
+                      history->visualRect(model->index(0, 0)).center());
+    QVERIFY(difference(document.scene(), opened).isEmpty());
+    QCOMPARE(model->rowCount(), 6);
+    QTest::mouseClick(history->viewport(), Qt::LeftButton, {},
+                      history->visualRect(model->index(5, 0)).center());
+    QCOMPARE(document.scene().springs.size(), size_t(1));
+
+    tools.editAction()->trigger();
+    QVERIFY(!dock->isVisible());
 }
 
 // Found by hand under Xvfb: the first body drawn above a new scene's floor made the view follow

@@ -230,6 +230,25 @@ void EditOverlay::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWid
         painter->setPen(cosmetic(accent, 2));
         painter->drawEllipse(at(m_tools.m_pinStart->second), r, r);
     }
+    if (const auto& snap = m_tools.bodySnap()) {
+        drawSnapMarker(painter, *snap, zoom);
+    }
+}
+
+void EditOverlay::drawSnapMarker(QPainter* painter, const Snap& snap, double zoom)
+{
+    // A square on a vertex or a centre, a diamond on an edge, a few pixels across at any zoom.
+    const double r = 5.0 / zoom;
+    const QPointF c = at(snap.point);
+    painter->setPen(cosmetic(QColor(200, 0, 130), 2));
+    painter->setBrush(QColor(255, 255, 255, 160));
+    if (snap.kind == Snap::Kind::Edge) {
+        painter->drawPolygon(QPolygonF{c + QPointF(r, 0), c + QPointF(0, r), c + QPointF(-r, 0),
+                                       c + QPointF(0, -r)});
+    } else {
+        painter->drawRect(QRectF(c - QPointF(r, r), c + QPointF(r, r)));
+    }
+    painter->setBrush(Qt::NoBrush);
 }
 
 } // namespace rigidlab::ui

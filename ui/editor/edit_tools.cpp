@@ -16,6 +16,7 @@
 #include <QGraphicsScene>
 #include <QKeyEvent>
 #include <QMouseEvent>
+#include <QUndoStack>
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,7 @@ namespace edit = lessons::edit;
 
 namespace {
 
-/// A pointer this close to another body's vertex snaps to it [px].
+/// A pointer this close to another body's vertex, centre or edge snaps to it [px].
 constexpr double kVertexSnapPixels = 8.0;
 /// Q and E turn by this much, as they do outside Edit mode [rad].
 constexpr double kTurnStep = 5.0 * std::numbers::pi / 180.0;
@@ -309,8 +310,10 @@ void EditTools::rotateSelected(double radians)
         return;
     }
     const auto& def = m_document.scene().bodies[static_cast<size_t>(m_selected)];
+    const int mergeId = keyRunMergeId(KeyRun::Kind::Turn);
     apply(tr("Rotate %1").arg(QString::fromStdString(def.name)),
-          edit::rotateBody(m_document.scene(), m_selected, def.angle + radians));
+          edit::rotateBody(m_document.scene(), m_selected, def.angle + radians), mergeId);
+    m_keyRun.index = m_document.undoStack()->index();
 }
 
 void EditTools::nudgeSelected(const Vec2& offset)
@@ -319,8 +322,21 @@ void EditTools::nudgeSelected(const Vec2& offset)
         return;
     }
     const auto& def = m_document.scene().bodies[static_cast<size_t>(m_selected)];
+    const int mergeId = keyRunMergeId(KeyRun::Kind::Nudge);
     apply(tr("Move %1").arg(QString::fromStdString(def.name)),
-          edit::moveBody(m_document.scene(), m_selected, def.position + offset));
+          edit::moveBody(m_document.scene(), m_selected, def.position + offset), mergeId);
+    m_keyRun.index = m_document.undoStack()->index();
+}
+
+int EditTools::keyRunMergeId(KeyRun::Kind kind)
+{
+    const QUndoStack* undo = m_document.undoStack();
+    const bool sameRun = m_keyRun.body == m_selected && m_keyRun.kind == kind &&
+                         m_keyRun.index == undo->index() && undo->index() == undo->count();
+    if (!sameRun) {
+        m_keyRun = KeyRun{kind, m_selected, m_nextMergeId++, -1};
+    }
+    return m_keyRun.mergeId;
 }
 
 void EditTools::deleteSelected()
@@ -328,7 +344,10 @@ void EditTools::deleteSelected()
     if (m_selectedSpring >= 0) {
         const int spring = m_selectedSpring;
         m_selectedSpring = -1;
-        apply(tr("Delete spring"), edit::deleteSpring(m_document.scene(), spring));
+        const auto& def = m_document.scene().springs[static_cast<size_t>(spring)];
+        apply(tr("Delete spring from %1 to %2")
+                  .arg(bodyName(m_document.scene(), def.a), bodyName(m_document.scene(), def.b)),
+              edit::deleteSpring(m_document.scene(), spring));
         selectSpring(-1);
         return;
     }
@@ -352,7 +371,7 @@ void EditTools::closePolygon()
     const std::vector<Vec2> points = m_polygon;
     m_polygon.clear();
     const auto result = edit::addPolygon(m_document.scene(), points);
-    if (apply(tr("Add polygon"), result)) {
+    if (apply(tr("Add polygon %1").arg(bodyName(result.scene, result.body)), result)) {
         selectBody(result.body);
     }
     refreshOverlay();
@@ -530,7 +549,7 @@ bool EditTools::mousePress(QMouseEvent* event)
         return true;
     case EditTool::Spring:
         m_drag.active = true;
-        m_drag.bodyA = bodyAt(raw);
+        m_drag.bodyA = bodyAtOrSnapped(raw);
         refreshOverlay();
         return true;
     case EditTool::Polygon:
@@ -544,7 +563,7 @@ bool EditTools::mousePress(QMouseEvent* event)
         refreshOverlay();
         return true;
     case EditTool::Pin: {
-        const int body = bodyAt(raw);
+        const int body = bodyAtOrSnapped(raw);
         if (!m_pinStart) {
             if (body < 0) {
                 say(tr("Click a point of a body to pin it"));
@@ -558,7 +577,9 @@ bool EditTools::mousePress(QMouseEvent* event)
         }
         const auto [first, point] = *m_pinStart;
         m_pinStart.reset();
-        apply(tr("Add pin"), edit::addPin(scene, first, body, point));
+        apply(body < 0 ? tr("Pin %1 to the world").arg(bodyName(scene, first))
+                       : tr("Pin %1 to %2").arg(bodyName(scene, first), bodyName(scene, body)),
+              edit::addPin(scene, first, body, point));
         refreshOverlay();
         return true;
     }
@@ -578,7 +599,10 @@ bool EditTools::mousePress(QMouseEvent* event)
             const double offset =
                 m_snapAction->isChecked() ? std::ceil(width / gridStep()) * gridStep() : width;
             const auto result = edit::duplicateBody(scene, body, Vec2(offset, 0.0));
-            if (apply(tr("Duplicate %1").arg(QString::fromStdString(def.name)), result)) {
+            if (apply(
+                    tr("Duplicate %1 as %2")
+                        .arg(QString::fromStdString(def.name), bodyName(result.scene, result.body)),
+                    result)) {
                 selectBody(result.body);
             }
         }
@@ -593,10 +617,9 @@ bool EditTools::mouseMove(QMouseEvent* event)
     const Vec2 raw = m_view.worldAt(event->position().toPoint());
     updateSnapText();
     m_pointer = snapped(raw, m_drag.active ? m_drag.body : -1);
+    updateSnapMarker(raw);
     if (!m_drag.active) {
-        if (!m_polygon.empty() || m_pinStart) {
-            refreshOverlay();
-        }
+        refreshOverlay(); // the snap marker follows the pointer
         return false;
     }
     m_drag.current = m_pointer;
@@ -608,8 +631,7 @@ bool EditTools::mouseMove(QMouseEvent* event)
     const lessons::Scene& scene = m_document.scene();
     switch (m_tool) {
     case EditTool::Select: {
-        const Vec2 target = m_snapAction->isChecked() ? snapToGrid(raw + m_drag.grabOffset)
-                                                      : Vec2(raw + m_drag.grabOffset);
+        const Vec2 target = movedBodyTarget(m_drag, raw);
         const auto& def = scene.bodies[static_cast<size_t>(m_drag.body)];
         if (apply(tr("Move %1").arg(QString::fromStdString(def.name)),
                   edit::moveBody(scene, m_drag.body, target), m_drag.mergeId)) {
@@ -679,24 +701,33 @@ bool EditTools::mouseRelease(QMouseEvent* event)
     QString what;
     switch (m_tool) {
     case EditTool::Circle:
-        what = tr("Add circle");
+        what = tr("Add circle %1");
         result = edit::addCircle(scene, drag.start, (end - drag.start).norm());
         break;
     case EditTool::Box:
-        what = tr("Add box");
+        what = tr("Add box %1");
         result = edit::addBox(scene, centre, size.x(), size.y());
         break;
     case EditTool::Ground:
-        what = tr("Add ground");
+        what = tr("Add ground %1");
         result = edit::addGround(scene, centre, size.x(), size.y());
         break;
     case EditTool::Spring:
-        what = tr("Add spring");
-        result = edit::addSpring(scene, drag.bodyA, drag.start, bodyAt(raw), end, kSpringStiffness);
+        what = tr("Add spring from %1 to %2");
+        result = edit::addSpring(scene, drag.bodyA, drag.start, bodyAtOrSnapped(raw), end,
+                                 kSpringStiffness);
+        if (result.ok) {
+            const auto& spring = result.scene.springs.back();
+            what = what.arg(bodyName(scene, spring.a), bodyName(scene, spring.b));
+        }
         break;
     default:
+        m_bodySnap.reset(); // the body is set down
         refreshOverlay();
         return true; // a move or a turn is applied as it goes
+    }
+    if (result.ok && m_tool != EditTool::Spring) {
+        what = what.arg(bodyName(result.scene, result.body));
     }
     if (apply(what, result) && m_tool != EditTool::Spring) {
         selectBody(result.body);
@@ -764,28 +795,67 @@ Vec2 EditTools::snapped(const Vec2& p, int except) const
     if (!m_snapAction->isChecked()) {
         return p;
     }
-    // Another body's vertex or centre first: a box set exactly on a corner.
-    const double reach = kVertexSnapPixels / std::max(m_view.zoom(), 1e-9);
-    const auto& bodies = m_document.scene().bodies;
-    for (size_t i = 0; i < bodies.size(); ++i) {
-        if (static_cast<int>(i) == except) {
-            continue;
-        }
-        const auto& def = bodies[i];
-        const physics::Transform xf(def.position, def.angle);
-        std::vector<Vec2> points{def.position};
-        if (const physics::Polygon* poly = def.shape.asPolygon()) {
-            for (const Vec2& v : poly->vertices) {
-                points.push_back(xf.apply(v));
-            }
-        }
-        for (const Vec2& q : points) {
-            if ((q - p).norm() <= reach) {
-                return q;
-            }
-        }
+    // Another body's vertex, centre or edge first: a ball's centre exactly on a corner or on
+    // a ramp's surface.
+    if (const auto snap = featureSnap(p, except)) {
+        return snap->point;
     }
     return snapToGrid(p);
+}
+
+std::optional<Snap> EditTools::featureSnap(const Vec2& p, int except) const
+{
+    if (!m_snapAction->isChecked()) {
+        return std::nullopt;
+    }
+    const double reach = kVertexSnapPixels / std::max(m_view.zoom(), 1e-9);
+    return snapToBodies(m_document.scene(), p, reach, except);
+}
+
+int EditTools::bodyAtOrSnapped(const Vec2& raw) const
+{
+    if (const int body = bodyAt(raw); body >= 0) {
+        return body;
+    }
+    const auto snap = featureSnap(raw);
+    return snap ? snap->body : -1;
+}
+
+Vec2 EditTools::movedBodyTarget(const Drag& drag, const Vec2& raw)
+{
+    const Vec2 free = raw + drag.grabOffset;
+    m_bodySnap.reset();
+    if (!m_snapAction->isChecked()) {
+        return free;
+    }
+    const double reach = kVertexSnapPixels / std::max(m_view.zoom(), 1e-9);
+    if (const auto snap = snapMovedBody(m_document.scene(), drag.body, free, raw, reach)) {
+        m_bodySnap = snap->target;
+        return snap->position;
+    }
+    return snapToGrid(free);
+}
+
+void EditTools::updateSnapMarker(const Vec2& raw)
+{
+    switch (m_tool) {
+    case EditTool::Circle:
+    case EditTool::Box:
+    case EditTool::Polygon:
+    case EditTool::Ground:
+    case EditTool::Pin:
+    case EditTool::Spring:
+        m_bodySnap = featureSnap(raw);
+        break;
+    case EditTool::Select:
+        if (!m_drag.active) {
+            m_bodySnap.reset(); // a drag sets it as the body moves
+        }
+        break;
+    default:
+        m_bodySnap.reset();
+        break;
+    }
 }
 
 bool EditTools::apply(const QString& what, const edit::EditResult& result, int mergeId)
@@ -804,6 +874,14 @@ bool EditTools::apply(const QString& what, const edit::EditResult& result, int m
     }
     say(words.join(QStringLiteral("; ")));
     return true;
+}
+
+QString EditTools::bodyName(const lessons::Scene& scene, int body)
+{
+    if (body < 0 || static_cast<size_t>(body) >= scene.bodies.size()) {
+        return tr("the world");
+    }
+    return QString::fromStdString(scene.bodies[static_cast<size_t>(body)].name);
 }
 
 void EditTools::say(const QString& text)
@@ -843,7 +921,7 @@ void EditTools::updateSnapText()
     if (m_snapAction->text() != text) {
         m_snapAction->setText(text);
         m_snapAction->setToolTip(
-            tr("Snap to a grid of %1 m and to other bodies' corners (%2)")
+            tr("Snap to a grid of %1 m and to other bodies' corners and edges (%2)")
                 .arg(formatNumber(gridStep(), 6), controlKeysText("editSnap")));
     }
 }
@@ -856,6 +934,7 @@ void EditTools::refreshOverlay()
 void EditTools::cancelGesture()
 {
     m_drag = Drag{};
+    m_bodySnap.reset();
     m_polygon.clear();
     m_pinStart.reset();
     if (m_overlay) {

@@ -9,6 +9,7 @@
 // change, so what the view shows is the scene as edited. Entering Edit mode pauses; leaving it
 // runs the scene as edited. Refusals and warnings go out through message() for the status bar.
 
+#include "editor/edit_snap.h"
 #include "editor/velocity_arrow.h"
 
 #include "rigidlab/physics/forces.h"
@@ -98,6 +99,12 @@ public:
     const QString& lastMessage() const { return m_lastMessage; }
     /// The polygon being drawn, its points [m] (for tests and the overlay).
     const std::vector<physics::Vec2>& polygonPoints() const { return m_polygon; }
+    /// Where the pointer snaps to another body now (a vertex, a centre, an edge), shown by a
+    /// marker; nullopt when it snaps to the grid or not at all.
+    const std::optional<Snap>& bodySnap() const { return m_bodySnap; }
+
+    /// Body `body`'s id for the History ("Add circle circle1"), "the world" for kWorld.
+    static QString bodyName(const lessons::Scene& scene, int body);
 
     /// The stiffness of a new spring [N/m] (the inspector changes it).
     static constexpr double kSpringStiffness = 50.0;
@@ -144,6 +151,17 @@ private:
         physics::Vec2 startVelocity = physics::Vec2::Zero(); ///< its velocity at the press [m/s]
     };
 
+    /// A run of arrow keys (or of Q and E) on one body, one step of the history as a drag
+    /// is: anything else in between (an edit, an undo) starts a new run.
+    struct KeyRun {
+        enum class Kind { None, Nudge, Turn };
+        Kind kind = Kind::None;
+        int body = -1;
+        int mergeId = -1;
+        int index = -1; ///< the undo stack's index after the run's last key
+    };
+    int keyRunMergeId(KeyRun::Kind kind);
+
     bool mousePress(QMouseEvent* event);
     bool mouseMove(QMouseEvent* event);
     bool mouseRelease(QMouseEvent* event);
@@ -164,9 +182,21 @@ private:
     int bodyAt(const physics::Vec2& p) const;
     /// The spring within a few pixels of a world point, or -1.
     int springAt(const physics::Vec2& p) const;
-    /// A point snapped to another body's vertex within a few pixels, else to the grid when
-    /// snapping is on; `except` is left out (the body being moved).
+    /// A point snapped to another body's vertex or centre, else to its edge, within a few
+    /// pixels, else to the grid, when snapping is on; `except` is left out (the body being
+    /// moved).
     physics::Vec2 snapped(const physics::Vec2& p, int except = -1) const;
+    /// The body snapping would put p on (snapped()), nullopt for the grid or no snapping.
+    std::optional<Snap> featureSnap(const physics::Vec2& p, int except = -1) const;
+    /// The body under the pointer, else the one its point snaps to (a spring's or pin's end
+    /// put on an edge from just outside it), else -1 (the world).
+    int bodyAtOrSnapped(const physics::Vec2& raw) const;
+    /// Where a body dragged by `raw` goes (grab offset kept): onto another body when one of
+    /// its points comes within a few pixels of one (m_bodySnap says which), else its origin
+    /// on the grid when snapping is on.
+    physics::Vec2 movedBodyTarget(const Drag& drag, const physics::Vec2& raw);
+    /// The snap marker for the pointer at `raw`, shown while a drawing tool is in use.
+    void updateSnapMarker(const physics::Vec2& raw);
     physics::Vec2 snapToGrid(const physics::Vec2& p) const;
     /// Applies an edit (or says why not); returns whether it was applied.
     bool apply(const QString& what, const lessons::edit::EditResult& result, int mergeId = -1);
@@ -197,9 +227,11 @@ private:
     Drag m_drag;
     std::vector<physics::Vec2> m_polygon;            ///< points of the polygon being drawn [m]
     physics::Vec2 m_pointer = physics::Vec2::Zero(); ///< last pointer position [m], snapped
+    std::optional<Snap> m_bodySnap;                  ///< see bodySnap()
     /// The pin being placed: its body and point, after the first click.
     std::optional<std::pair<physics::BodyId, physics::Vec2>> m_pinStart;
     int m_nextMergeId = 1000;
+    KeyRun m_keyRun;
     QString m_lastMessage;
 };
 

@@ -45,6 +45,12 @@ void labelWithUnit(QFormLayout* form, NumberField* f, const QString& label)
         l->setText(QStringLiteral("%1 [%2]").arg(label, unit));
 }
 
+/// A field's label as it reads inside a sentence of the History: "friction μ" for "Friction μ".
+QString inSentence(const QString& label)
+{
+    return label.isEmpty() ? label : label.front().toLower() + label.mid(1);
+}
+
 } // namespace
 
 SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWidget* parent)
@@ -92,7 +98,8 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
         const QString label = row.label;
         connect(f, &NumberField::valueEdited, this, [this, what, label, mergeId](double v) {
             const int selected = m_tools.selectedBody();
-            apply(tr("Set %1").arg(label),
+            apply(tr("Set %1 of %2")
+                      .arg(inSentence(label), EditTools::bodyName(m_document.scene(), selected)),
                   edit::setBodyNumber(m_document.scene(), selected, what, v),
                   mergeId + 64 * selected);
         });
@@ -103,11 +110,14 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
                                                 m_document.scene().bodies[size_t(selected)].name)) {
             return;
         }
-        apply(tr("Rename %1").arg(m_id->text()),
+        apply(tr("Rename %1 to %2")
+                  .arg(QString::fromStdString(m_document.scene().bodies[size_t(selected)].name),
+                       m_id->text()),
               edit::setBodyId(m_document.scene(), selected, m_id->text()), -1);
     });
     connect(m_type, &QComboBox::activated, this, [this] {
-        apply(tr("Set type"),
+        apply(tr("Set type of %1")
+                  .arg(EditTools::bodyName(m_document.scene(), m_tools.selectedBody())),
               edit::setBodyType(m_document.scene(), m_tools.selectedBody(),
                                 physics::BodyType(m_type->currentData().toInt())),
               -1);
@@ -138,7 +148,7 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
         const QString label = row.label;
         connect(f, &NumberField::valueEdited, this, [this, what, label, mergeId](double v) {
             const int selected = m_tools.selectedSpring();
-            apply(tr("Set %1").arg(label),
+            apply(tr("Set %1 of spring %2").arg(inSentence(label)).arg(selected + 1),
                   edit::setSpringNumber(m_document.scene(), selected, what, v),
                   mergeId + 64 * selected);
         });
@@ -177,7 +187,7 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
         const double scale = row.scale;
         const QString label = row.label;
         connect(f, &NumberField::valueEdited, this, [this, what, label, mergeId, scale](double v) {
-            apply(tr("Set %1").arg(label),
+            apply(tr("Set %1").arg(inSentence(label)),
                   edit::setWorldNumber(m_document.scene(), what, v / scale), mergeId);
         });
     }

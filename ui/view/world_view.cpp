@@ -189,8 +189,10 @@ void WorldView::syncPoses()
             showRect(m_fitted);
         }
     }
-    if (m_autoFit && !m_fitted.isEmpty()) {
-        // Follow bodies that leave the fitted area, by widening it (within the limit).
+    if (m_autoFit && m_fitOnRebuild && !m_fitted.isEmpty()) {
+        // Follow bodies that leave the fitted area, by widening it (within the limit); not
+        // while the scene is being edited, where the view holds still under the pen (a body
+        // drawn outside the area would make everything jump).
         const QRectF wanted = (m_fitted | contentRect()) & m_fitLimit;
         if (!m_fitted.contains(wanted)) {
             m_fitted |= wanted;

@@ -57,15 +57,9 @@ public:
     /// world coordinates [m] (an empty rect when it draws nothing).
     void setFitExtra(std::function<QRectF()> extra) { m_fitExtra = std::move(extra); }
     /// Whether loading a scene fits the view to it (the default). The scene editor turns it off
-    /// while it reloads the world after each edit, so that the view holds still under the pen:
-    /// nor does the view follow the bodies drawn outside what it shows (a pendulum drawn above
-    /// the floor moved the floor, and the next stroke landed elsewhere than aimed).
-    void setFitOnRebuild(bool on)
-    {
-        m_fitOnRebuild = on;
-        if (!on)
-            m_autoFit = false;
-    }
+    /// while it reloads the world after each edit, so that the view holds still under the pen
+    /// (nor does it widen to follow a body drawn outside what it shows).
+    void setFitOnRebuild(bool on) { m_fitOnRebuild = on; }
     /// A view position in the world [m].
     physics::Vec2 worldAt(const QPoint& viewPos) const { return toWorld(viewPos); }
 

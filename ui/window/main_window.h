@@ -175,6 +175,8 @@ private:
     void buildDocks();
     /// The scene editor's document, tools and toolbar (main_window_editor.cpp).
     void buildEditor();
+    /// The editor's History dock, a tab beside its Properties (main_window_history.cpp).
+    void buildHistory(QDockWidget& properties);
     void addRecent(const QString& path);
     /// File › Your own scenes, made when the user's scenes folder holds any, remade after a
     /// save (main_window_save.cpp).

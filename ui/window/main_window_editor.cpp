@@ -84,6 +84,7 @@ void MainWindow::buildEditor()
             dock->raise();
         }
     });
+    buildHistory(*dock);
 }
 
 } // namespace rigidlab::ui
