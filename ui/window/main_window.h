@@ -175,6 +175,12 @@ private:
     void buildDocks();
     /// The scene editor's document, tools and toolbar (main_window_editor.cpp).
     void buildEditor();
+    /// What Edit mode changes in the rest of the window: Step and Back off while editing, a
+    /// lesson step's measurements kept on the world as edited (main_window_editor.cpp).
+    void followEditMode();
+    /// Step and Back: disabled while editing (the world does not step) or while a question
+    /// holds the run back, with a tooltip saying why.
+    void updateStepActions();
     void addRecent(const QString& path);
     /// File › Your own scenes, made when the user's scenes folder holds any, remade after a
     /// save (main_window_save.cpp).
