@@ -125,6 +125,7 @@ private slots:
     void sequentialImpulseStackMovesLess();
     void billiardsBreakConservesMomentum();
     void billiardsCushionsWhereTheTextSays();
+    void editorStepIsAnsweredByEditing();
     void stiffSpringsDivergeWhereTheoryPredicts();
     void worldsStopWhereTheTextSays_data();
     void worldsStopWhereTheTextSays();
