@@ -1521,6 +1521,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>This lesson step locks the %1 tool</source>
         <translation>Tento krok lekce nástroj %1 zamyká</translation>
     </message>
+    <message>
+        <source>This lesson step locks the %1 property</source>
+        <translation>Tento krok lekce vlastnost %1 zamyká</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::ErrorPanel</name>
@@ -2224,6 +2228,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Save them before going on?</source>
         <translation>Uložit je před pokračováním?</translation>
+    </message>
+    <message>
+        <source>The world does not step in Edit mode: leave it (%1) or press Play to run the scene as edited</source>
+        <translation>V režimu úprav svět nekrokuje: opusťte ho (%1) nebo stiskněte Spustit a scéna poběží tak, jak je upravená</translation>
     </message>
 </context>
 <context>
