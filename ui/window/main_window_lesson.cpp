@@ -15,6 +15,7 @@
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
+#include "view/world_view.h"
 #include "window/dock_tabs.h"
 #include "window/window_names.h"
 
@@ -167,8 +168,15 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     } else {
         m_sat->setBodies(-1, -1);
     }
-    if (!step.editor)
+    if (!step.editor) {
         m_controller->setRunning(step.autoplay && !m_runHeld);
+    } else {
+        // The view holds still while editing: the step's scene is shown whole once, and the
+        // Properties the step asks to change come first in their column.
+        m_view->fitScene();
+        if (auto* properties = findChild<QDockWidget*>(QStringLiteral("propertiesDock")))
+            properties->raise();
+    }
 }
 
 QStringList MainWindow::loadStepWorlds(const lessons::LessonStep& step, const lessons::Scene& scene,
