@@ -171,11 +171,8 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     if (!step.editor) {
         m_controller->setRunning(step.autoplay && !m_runHeld);
     } else {
-        // The view holds still while editing: the step's scene is shown whole once, and the
-        // Properties the step asks to change come first in their column.
+        // The view holds still while editing: the step's scene is shown whole once.
         m_view->fitScene();
-        if (auto* properties = findChild<QDockWidget*>(QStringLiteral("propertiesDock")))
-            properties->raise();
     }
 }
 
