@@ -1564,6 +1564,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Snap to a grid of %1 m and to other bodies&apos; corners and edges (%2)</source>
         <translation>Přichytávat k&#xa0;mřížce %1&#xa0;m a&#xa0;k&#xa0;rohům a&#xa0;hranám jiných těles (%2)</translation>
     </message>
+    <message>
+        <source>This lesson step locks the %1 property</source>
+        <translation>Tento krok lekce vlastnost %1 zamyká</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::ErrorPanel</name>
@@ -2283,6 +2287,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>History of edits</source>
         <translation>Historie úprav</translation>
+    </message>
+    <message>
+        <source>The world does not step in Edit mode: leave it (%1) or press Play to run the scene as edited</source>
+        <translation>V režimu úprav svět nekrokuje: opusťte ho (%1) nebo stiskněte Spustit a scéna poběží tak, jak je upravená</translation>
     </message>
 </context>
 <context>

@@ -148,6 +148,34 @@ QString anchorError(const QString& source, const QString& key, const Vec2& ancho
     return {};
 }
 
+/// After `body` was moved or turned: each pin holding it to the world keeps its point on the
+/// body, so its world anchor goes with the body (a pendulum's pivot moves with its bob, as in
+/// Algodoo). Springs are left alone: their world ends stay, and the spring stretches. Returns
+/// the loader's words when a moved anchor leaves limits::kCoordinate.
+QString carryWorldPins(Scene& scene, BodyId body)
+{
+    const BodyDef& def = scene.bodies[static_cast<size_t>(body)];
+    const physics::Transform xf(def.position, def.angle);
+    for (size_t i = 0; i < scene.joints.size(); ++i) {
+        physics::PinJointDef& joint = scene.joints[i];
+        const QString source = QStringLiteral("joints[%1]").arg(i);
+        if (joint.a == body && joint.b == physics::kWorld) {
+            joint.anchorB = xf.apply(joint.anchorA);
+            if (QString e = anchorError(source, QStringLiteral("anchorB"), joint.anchorB);
+                !e.isEmpty()) {
+                return e;
+            }
+        } else if (joint.b == body && joint.a == physics::kWorld) {
+            joint.anchorA = xf.apply(joint.anchorB);
+            if (QString e = anchorError(source, QStringLiteral("anchorA"), joint.anchorA);
+                !e.isEmpty()) {
+                return e;
+            }
+        }
+    }
+    return {};
+}
+
 /// The body's bounding box in the world [m]: min and max corners.
 std::pair<Vec2, Vec2> bounds(const BodyDef& def)
 {
@@ -314,6 +342,9 @@ EditResult moveBody(const Scene& scene, BodyId body, const Vec2& position)
     if (QString e = bodyProblem(def); !e.isEmpty()) {
         return refused(e);
     }
+    if (QString e = carryWorldPins(out, body); !e.isEmpty()) {
+        return refused(e);
+    }
     return accepted(std::move(out), body);
 }
 
@@ -326,6 +357,9 @@ EditResult rotateBody(const Scene& scene, BodyId body, double angle)
     BodyDef& def = out.bodies[static_cast<size_t>(body)];
     def.angle = angle;
     if (QString e = bodyProblem(def); !e.isEmpty()) {
+        return refused(e);
+    }
+    if (QString e = carryWorldPins(out, body); !e.isEmpty()) {
         return refused(e);
     }
     return accepted(std::move(out), body);
@@ -567,6 +601,11 @@ EditResult setBodyNumber(const Scene& scene, BodyId body, BodyNumber what, doubl
         return refused(e);
     }
     if (QString e = bodyProblem(def); !e.isEmpty()) {
+        return refused(e);
+    }
+    const bool placed =
+        what == BodyNumber::PositionX || what == BodyNumber::PositionY || what == BodyNumber::Angle;
+    if (QString e = placed ? carryWorldPins(out, body) : QString(); !e.isEmpty()) {
         return refused(e);
     }
     return accepted(std::move(out), body);

@@ -59,9 +59,10 @@ struct PolygonPreview {
 };
 PolygonPreview previewPolygon(const std::vector<physics::Vec2>& points);
 
-/// Places the body's origin at `position`.
+/// Places the body's origin at `position`. A pin holding the body to the world moves with it
+/// (it stays at its point of the body); a spring's world end stays where it is.
 EditResult moveBody(const Scene& scene, physics::BodyId body, const physics::Vec2& position);
-/// Turns the body to `angle` [rad] about its origin.
+/// Turns the body to `angle` [rad] about its origin; its pins to the world turn with it.
 EditResult rotateBody(const Scene& scene, physics::BodyId body, double angle);
 /// Removes the body with the springs and pins that name it; later bodies move down one index
 /// and every spring and pin is renumbered to match.

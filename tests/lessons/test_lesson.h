@@ -126,6 +126,7 @@ private slots:
     void softStepPyramidStands();
     void billiardsBreakConservesMomentum();
     void billiardsCushionsWhereTheTextSays();
+    void editorStepIsAnsweredByEditing();
     void stiffSpringsDivergeWhereTheoryPredicts();
     void worldsStopWhereTheTextSays_data();
     void worldsStopWhereTheTextSays();

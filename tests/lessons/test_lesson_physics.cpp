@@ -5,6 +5,7 @@
 #include "test_lesson.h"
 #include "test_main.h"
 
+#include "edit/scene_edits.h"
 #include "format/divergence_message.h"
 
 #include <QRegularExpression>
@@ -701,6 +702,54 @@ void TestLesson::billiardsBreakConservesMomentum()
     const double k[2] = {run.worlds[0].diagnostics().kinetic, run.worlds[1].diagnostics().kinetic};
     QVERIFY2(k[1] < k0, qPrintable(QStringLiteral("%1 of %2").arg(k[1]).arg(k0)));
     QVERIFY2(std::abs(k[0] - k[1]) > 0.01 * k0, "the two solvers end the break differently");
+}
+
+// The step that opens the editor ("make the heavier ball the one at rest"): its answer is
+// reached by the edit the text asks for, done as the student does it (the one property the
+// step unlocks), and is wrong for the scene left as it is.
+void TestLesson::editorStepIsAnsweredByEditing()
+{
+    const lessons::Lesson lesson = shippedLesson("billiards_momentum");
+    const auto found =
+        std::find_if(lesson.steps.begin(), lesson.steps.end(),
+                     [](const lessons::LessonStep& s) { return s.editor.has_value(); });
+    QVERIFY(found != lesson.steps.end());
+    const lessons::LessonStep& step = *found;
+    QCOMPARE(step.editor->tools, QStringList{QStringLiteral("select")});
+    QCOMPARE(step.editor->properties, QStringList{QStringLiteral("mass")});
+    QCOMPARE(step.questions.size(), std::size_t(1));
+    const lessons::Question& q = step.questions[0];
+
+    const auto moving = step.scene.bodyIndex(QStringLiteral("moving"));
+    const auto resting = step.scene.bodyIndex(QStringLiteral("resting"));
+    QVERIFY(moving && resting);
+    const physics::BodyDef& ball = step.scene.bodies[static_cast<std::size_t>(*moving)];
+    constexpr double kHeavy = 3.0; // [kg], the mass the text asks for
+    // Momentum and an elastic hit (relative velocity reversed), solved for the moving ball:
+    // v1 = (m1 - m2) / (m1 + m2) u.
+    const double answer = (ball.mass - kHeavy) / (ball.mass + kHeavy) * ball.velocity.x();
+    QVERIFY(answer < 0); // it bounces back
+
+    const lessons::edit::EditResult edited =
+        lessons::edit::setBodyNumber(step.scene, *resting, lessons::edit::BodyNumber::Mass, kHeavy);
+    QVERIFY2(edited.ok, qPrintable(edited.error));
+    lessons::LessonStep built = step;
+    built.scene = edited.scene;
+    StepRun run(built);
+    run.run(built.exportTime);
+    const lessons::Verdict right = lessons::judge(q, answer, run.measurements[0], built.scene);
+    QVERIFY2(right.measured, qPrintable(right.message));
+    QVERIFY2(right.right, qPrintable(right.message));
+
+    // Unedited, the moving ball stops dead: the same answer is wrong.
+    StepRun asOpened(step);
+    asOpened.run(step.exportTime);
+    const lessons::Verdict wrong = lessons::judge(q, answer, asOpened.measurements[0], step.scene);
+    QVERIFY2(wrong.measured, qPrintable(wrong.message));
+    QVERIFY2(!wrong.right, qPrintable(wrong.message));
+    QVERIFY2(std::abs(wrong.value) < 1e-6, qPrintable(QString::number(wrong.value)));
+    // The hint helps without giving the value away.
+    QVERIFY(!q.hint.contains(QString::number(answer, 'f', 1)));
 }
 
 void TestLesson::billiardsCushionsWhereTheTextSays()

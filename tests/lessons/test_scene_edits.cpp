@@ -6,6 +6,8 @@
 #include "edit/scene_edits.h"
 #include "format/scene_loader.h"
 
+#include "rigidlab/physics/world.h"
+
 #include "test_main.h"
 
 #include <QJsonArray>
@@ -14,6 +16,7 @@
 #include <QSet>
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -83,6 +86,8 @@ private slots:
     void degeneratePolygonIsRefused_data();
     void degeneratePolygonIsRefused();
     void movesAndRotates();
+    void pinsToTheWorldFollowTheirBody();
+    void movedPendulumSwingsAboutItsNewPivot();
     void deleteRenumbersSpringsAndPins();
     void duplicateTakesANewId();
     void addsPins();
@@ -269,6 +274,113 @@ void TestSceneEdits::movesAndRotates()
     QVERIFY2(spin.error.startsWith(QStringLiteral("b: angle: ")), qPrintable(spin.error));
     QVERIFY(!edit::moveBody(scene, 4, Vec2::Zero()).ok);
     QVERIFY(!edit::moveBody(scene, kWorld, Vec2::Zero()).ok);
+}
+
+void TestSceneEdits::pinsToTheWorldFollowTheirBody()
+{
+    Scene scene = fourBodies(); // pins d-b and a-world (at a's centre); spring c-world
+    scene.joints.push_back({kWorld, Vec2::Zero(), 2, Vec2(0.0, 0.2)}); // world first: c-world
+    const auto onBody = [](const Scene& s, int body, const Vec2& local) {
+        const auto& d = s.bodies[static_cast<size_t>(body)];
+        return physics::Transform(d.position, d.angle).apply(local);
+    };
+
+    // Moving a: its pin to the world moves with it; the pin between d and b is left alone.
+    auto r = edit::moveBody(scene, 0, Vec2(4.0, -2.0));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QVERIFY(near(r.scene.joints[1].anchorB, Vec2(4.0, -2.0)));
+    QVERIFY(near(r.scene.joints[0].anchorB, scene.joints[0].anchorB));
+    QVERIFY(near(r.scene.joints[2].anchorA, scene.joints[2].anchorA));
+
+    // Moving and turning c: the pin stays at its point of c, whichever end names the world;
+    // the spring's world end stays where it was (the spring stretches).
+    r = edit::moveBody(scene, 2, Vec2(-1.0, 3.0));
+    QVERIFY(r.ok);
+    QVERIFY(near(r.scene.joints[2].anchorA, Vec2(-1.0, 3.2)));
+    r = edit::rotateBody(r.scene, 2, std::numbers::pi / 2);
+    QVERIFY(r.ok);
+    QVERIFY(near(r.scene.joints[2].anchorA, Vec2(-1.2, 3.0)));
+    QVERIFY(near(r.scene.joints[2].anchorA, onBody(r.scene, 2, Vec2(0.0, 0.2))));
+    QVERIFY(near(r.scene.springs[2].anchorB, Vec2(2.0, 1.0)));
+    QCOMPARE(r.scene.springs[2].restLength, scene.springs[2].restLength);
+
+    // So does a position typed in the inspector; a mass typed there moves nothing.
+    r = edit::setBodyNumber(scene, 0, edit::BodyNumber::PositionY, 1.5);
+    QVERIFY(r.ok);
+    QVERIFY(near(r.scene.joints[1].anchorB, Vec2(0.0, 1.5)));
+    Scene offset = scene;
+    offset.joints[1].anchorB = Vec2(0.0, 0.5); // a file's pin away from its point of the body
+    r = edit::setBodyNumber(offset, 0, edit::BodyNumber::Mass, 2.0);
+    QVERIFY(r.ok);
+    QVERIFY(near(r.scene.joints[1].anchorB, Vec2(0.0, 0.5)));
+
+    // A move that would carry the pin's world end out of the format's coordinates is refused
+    // with the loader's words for that anchor, and nothing changes.
+    scene.joints[1].anchorA = Vec2(0.0, 0.25);
+    r = edit::moveBody(scene, 0, Vec2(0.0, limits::kCoordinate.max));
+    QVERIFY(!r.ok);
+    QVERIFY2(r.error.startsWith(QStringLiteral("joints[1]: anchorB[1]: ")), qPrintable(r.error));
+}
+
+void TestSceneEdits::movedPendulumSwingsAboutItsNewPivot()
+{
+    // A ball pinned to the world 1 m above its centre, built by hand, then moved and turned
+    // as a user would drag and turn it: the pivot goes with the ball, so the ball swings as a
+    // compound pendulum about the new pivot, with the period of small swings
+    // T = 2 pi sqrt(I_pivot / (m g L)), I_pivot = m (r^2/2 + L^2) (Kleppner & Kolenkow 6.6).
+    constexpr double kRadius = 0.1;   // [m]
+    constexpr double kArm = 1.0;      // pivot to centre [m]
+    constexpr double kSwing = 0.1;    // the turn given, the swing's amplitude [rad]
+    constexpr double kGravity = 9.81; // [m/s^2]
+    Scene scene;
+    scene.world.gravity = Vec2(0.0, -kGravity);
+    auto r = edit::addCircle(scene, Vec2::Zero(), kRadius);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    r = edit::addPin(r.scene, r.body, kWorld, Vec2(0.0, kArm));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    const Vec2 centre(3.0, -2.0);
+    r = edit::moveBody(r.scene, 0, centre);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    r = edit::rotateBody(r.scene, 0, kSwing);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    const Vec2 pivot = centre + kArm * Vec2(-std::sin(kSwing), std::cos(kSwing));
+    QVERIFY(near(r.scene.joints[0].anchorB, pivot, 1e-12));
+
+    physics::World world = buildWorld(r.scene);
+    const double dt = r.scene.world.dt;
+    const double period = 2.0 * std::numbers::pi *
+                          std::sqrt((0.5 * kRadius * kRadius + kArm * kArm) / (kGravity * kArm));
+    double minX = centre.x();
+    double maxX = centre.x();
+    double worstArm = 0.0;
+    std::vector<double> upCrossings; // times the ball passes under the pivot moving right [s]
+    double lastDx = centre.x() - pivot.x();
+    const int steps = static_cast<int>(std::ceil(3.0 * period / dt));
+    for (int i = 0; i < steps; ++i) {
+        world.step();
+        const Vec2 p = world.body(0).position;
+        minX = std::min(minX, p.x());
+        maxX = std::max(maxX, p.x());
+        worstArm = std::max(worstArm, std::abs((p - pivot).norm() - kArm));
+        const double dx = p.x() - pivot.x();
+        if (lastDx < 0.0 && dx >= 0.0) {
+            upCrossings.push_back(world.time() - dt * dx / (dx - lastDx));
+        }
+        lastDx = dx;
+    }
+    // It hangs from the new pivot at its arm's length...
+    QVERIFY2(worstArm < 1e-3, qPrintable(QString::number(worstArm)));
+    // ...swings symmetrically about it, as far as it was turned...
+    const double reach = kArm * std::sin(kSwing);
+    QVERIFY2(std::abs(minX - (pivot.x() - reach)) < 0.02 * reach,
+             qPrintable(QString::number(minX)));
+    QVERIFY2(std::abs(maxX - (pivot.x() + reach)) < 0.02 * reach,
+             qPrintable(QString::number(maxX)));
+    // ...with the pendulum's period (small swings: the amplitude adds theta^2/16 = 0.06 %).
+    QVERIFY(upCrossings.size() >= 2);
+    const double measured = upCrossings[1] - upCrossings[0];
+    QVERIFY2(std::abs(measured - period) < 0.01 * period,
+             qPrintable(QStringLiteral("%1 vs %2").arg(measured).arg(period)));
 }
 
 void TestSceneEdits::deleteRenumbersSpringsAndPins()

@@ -15,7 +15,9 @@
 #include "window/main_window.h"
 
 #include "edit/scene_edits.h"
+#include "format/lesson.h"
 #include "format/scene.h"
+#include "lesson_player/lesson_player.h"
 
 #include "test_main.h"
 
@@ -203,6 +205,10 @@ private slots:
     void snapsToOtherBodiesEdges();
     void movedBodyRestsOnARamp();
     void historyListsEditsAndGoesBack();
+    void lessonLocksProperties();
+    void newSceneOpensEditModeAndTheWorldHolds();
+    void lessonStepBuiltInTheEditorIsJudged();
+    void lessonLocksTheArrowAndTheColour();
 };
 
 void TestEditor::editModePausesAndRunsAsEdited()
@@ -609,8 +615,7 @@ void TestEditor::teachersTaskInTheWindow()
     QVERIFY(w.newScene());
     EditTools& tools = w.editTools();
     WorldView& view = w.view();
-    tools.editAction()->trigger();
-    QVERIFY(tools.editing());
+    QVERIFY(tools.editing()); // a new scene opens in Edit mode
     // The new scene's ground goes: this floor is drawn below.
     QCOMPARE(w.document()->scene().bodies.size(), size_t(1));
     tools.toolAction(EditTool::Delete)->trigger();
@@ -992,6 +997,194 @@ void TestEditor::propertiesShowWhatMatters()
     rig.document.undoStack()->undo();
     QCOMPARE(rig.body("circle1").type, physics::BodyType::Dynamic);
     QVERIFY(mass->isVisibleTo(&rig.properties));
+}
+
+void TestEditor::lessonLocksProperties()
+{
+    Rig rig;
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(0, 4), rig.px(1, 4));
+    QCOMPARE(rig.tools.selectedBody(), rig.index("circle1"));
+    rig.tools.setAllowedProperties(QStringList{QStringLiteral("mass")});
+    QVERIFY(rig.tools.propertyLocked(QStringLiteral("density")));
+    QVERIFY(!rig.tools.propertyLocked(QStringLiteral("mass")));
+    NumberField* mass = rig.properties.field(QStringLiteral("mass"));
+    NumberField* density = rig.properties.field(QStringLiteral("density"));
+    NumberField* vx = rig.properties.field(QStringLiteral("velocityX"));
+    QVERIFY(mass->isEnabled());
+    // Every other field is locked, saying why: a body's, a vector's components, the world's.
+    for (QWidget* locked : std::initializer_list<QWidget*>{
+             density, vx, rig.properties.field(QStringLiteral("velocityY")),
+             rig.properties.field(QStringLiteral("gravityY")), rig.properties.idField(),
+             rig.properties.typeBox(),
+             rig.properties.findChild<QComboBox*>(QStringLiteral("integrator"))}) {
+        QVERIFY2(!locked->isEnabled(), qPrintable(locked->objectName()));
+        QVERIFY2(locked->toolTip().contains(QStringLiteral("This lesson step locks the")),
+                 qPrintable(locked->objectName() + QStringLiteral(": ") + locked->toolTip()));
+    }
+    QCOMPARE(density->toolTip(), QStringLiteral("This lesson step locks the Density property"));
+    QCOMPARE(vx->toolTip(), QStringLiteral("This lesson step locks the Velocity vx property"));
+
+    // The allowed field edits.
+    type(mass, QStringLiteral("2.5"));
+    QVERIFY(mass->commit());
+    QCOMPARE(rig.body("circle1").mass, 2.5);
+    // A locked field takes no typing...
+    const lessons::Scene before = rig.scene();
+    QTest::keyClicks(density, QStringLiteral("7"));
+    QTest::keyClick(density, Qt::Key_Return);
+    QCOMPARE(difference(rig.scene(), before), QString());
+    // ...and a change that reaches it some other way is refused out loud; the value stays.
+    QSignalSpy refused(&rig.properties, &SceneProperties::refused);
+    emit vx->valueEdited(3.0);
+    QCOMPARE(refused.size(), 1);
+    QCOMPARE(refused.front().front().toString(),
+             QStringLiteral("This lesson step locks the Velocity vx property"));
+    QCOMPARE(rig.body("circle1").velocity, Vec2::Zero());
+    QCOMPARE(vx->value(), 0.0);
+    QCOMPARE(difference(rig.scene(), before), QString());
+
+    // Unlocked: the fields edit again, with their own tooltips back.
+    rig.tools.setAllowedProperties(std::nullopt);
+    QVERIFY(density->isEnabled());
+    QVERIFY(!density->toolTip().contains(QStringLiteral("locks")));
+    type(density, QStringLiteral("7"));
+    QVERIFY(density->commit());
+    QCOMPARE(rig.body("circle1").density, 7.0);
+}
+
+void TestEditor::newSceneOpensEditModeAndTheWorldHolds()
+{
+    MainWindow w;
+    w.resize(1024, 768);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    auto* step = w.findChild<QAction*>(QStringLiteral("step"));
+    auto* back = w.findChild<QAction*>(QStringLiteral("back"));
+    QVERIFY(step && back);
+    const QString stepTip = step->toolTip();
+    QVERIFY(!w.editTools().editing());
+    QVERIFY(step->isEnabled());
+
+    // New: straight into Edit mode, paused at the start, Step and Back off and saying why.
+    QVERIFY(w.newScene());
+    QVERIFY(w.editTools().editing());
+    QVERIFY(!w.controller().isRunning());
+    for (QAction* a : {step, back}) {
+        QVERIFY2(!a->isEnabled(), qPrintable(a->objectName()));
+        QVERIFY2(a->toolTip().contains(QStringLiteral("Edit mode")), qPrintable(a->toolTip()));
+    }
+    // Whatever asks, the world does not step: Step, Back, a seek, the clock's frames.
+    step->trigger();
+    w.controller().stepForward();
+    w.controller().stepBack();
+    w.controller().seek(10);
+    w.controller().advanceFrame();
+    QCOMPARE(w.controller().currentStep(), 0LL);
+    QCOMPARE(w.controller().world().time(), 0.0);
+
+    // Leaving Edit mode runs the scene; Step and Back are back with their own tooltips.
+    w.editTools().editAction()->trigger();
+    QVERIFY(!w.editTools().editing());
+    QVERIFY(w.controller().isRunning());
+    QVERIFY(step->isEnabled() && back->isEnabled());
+    QCOMPARE(step->toolTip(), stepTip);
+    w.controller().stepForward();
+    QCOMPARE(w.controller().currentStep(), 1LL);
+}
+
+void TestEditor::lessonStepBuiltInTheEditorIsJudged()
+{
+    // The shipped step "make the heavier ball the one at rest", done as a student does it in
+    // the window: it opens in Edit mode with its locks; the resting ball's mass is typed in;
+    // leaving Edit mode runs the scene as edited, and the question measures that run.
+    MainWindow w;
+    w.resize(1024, 768);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    const QString path =
+        QDir(MainWindow::lessonsFolder()).filePath(QStringLiteral("billiards_momentum.json"));
+    QCOMPARE(w.openLesson(path, true), QString());
+    const lessons::Lesson& lesson = *w.lessonPlayer().lesson();
+    int index = -1;
+    for (size_t i = 0; i < lesson.steps.size(); ++i) {
+        if (lesson.steps[i].editor) {
+            index = static_cast<int>(i);
+        }
+    }
+    QVERIFY(index >= 0);
+    QVERIFY(!w.editTools().editing()); // the first step does not edit
+    w.lessonPlayer().goToStep(index);
+    const lessons::LessonStep& step = lesson.steps[static_cast<size_t>(index)];
+    EditTools& tools = w.editTools();
+    QVERIFY(tools.editing());
+    QVERIFY(!w.controller().isRunning());
+    QVERIFY(tools.locked(EditTool::Circle));
+    QVERIFY(!tools.locked(EditTool::Select));
+    auto* properties = w.findChild<SceneProperties*>();
+    QVERIFY(properties);
+    QVERIFY(!properties->field(QStringLiteral("density"))->isEnabled());
+    QVERIFY(properties->field(QStringLiteral("mass"))->isEnabled());
+
+    const int resting = *step.scene.bodyIndex(QStringLiteral("resting"));
+    const auto& ball = step.scene.bodies[static_cast<size_t>(resting)];
+    w.view().fitScene();
+    QTest::mouseClick(w.view().viewport(), Qt::LeftButton, {},
+                      w.view().mapFromScene(QPointF(ball.position.x(), ball.position.y())));
+    QCOMPARE(tools.selectedBody(), resting);
+    NumberField* mass = properties->field(QStringLiteral("mass"));
+    type(mass, QStringLiteral("3"));
+    QVERIFY(mass->commit());
+    QCOMPARE(w.document()->scene().bodies[static_cast<size_t>(resting)].mass, 3.0);
+
+    tools.editAction()->trigger(); // leave: the scene as edited runs
+    QVERIFY(!tools.editing());
+    QVERIFY(w.controller().isRunning());
+    QCOMPARE(w.controller().scene().bodies[static_cast<size_t>(resting)].mass, 3.0);
+    w.controller().setRunning(false);
+    const lessons::Question& q = step.questions.front();
+    while (w.controller().world().time() < 2.5) {
+        w.controller().stepForward();
+    }
+    const auto measured = w.controller().measurements().value(q.measure, step.scene);
+    QVERIFY(measured);
+    // Momentum and an elastic hit: v1 = (m1 - m2) / (m1 + m2) u = -u/2 for m2 = 3 m1.
+    const auto& moving = step.scene.bodies[*step.scene.bodyIndex(QStringLiteral("moving"))];
+    QVERIFY(std::abs(*measured - (-0.5 * moving.velocity.x())) < 1e-3);
+
+    // Leaving the lesson unlocks the editor's properties.
+    w.lessonPlayer().closeLesson();
+    QVERIFY(!tools.propertyLocked(QStringLiteral("density")));
+}
+
+// A step that locks velocity and colour: the arrow's handle does not drag (nor does the press
+// move the body), the colour row's swatch, text and Default are all locked, saying so.
+void TestEditor::lessonLocksTheArrowAndTheColour()
+{
+    Rig rig;
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(0, 4), rig.px(1, 4));
+    rig.use(EditTool::Select);
+    rig.tools.setAllowedProperties(QStringList{QStringLiteral("mass")});
+    const lessons::Scene before = rig.scene();
+    const auto rest = velocityArrow(rig.body("circle1"), rig.view.zoom());
+    QVERIFY(rest);
+    const QPoint from = rig.view.mapFromScene(QPointF(rest->handle.x(), rest->handle.y()));
+    rig.drag(from, from + QPoint(60, -40));
+    QVERIFY(difference(rig.scene(), before).isEmpty());
+    QVERIFY2(rig.tools.lastMessage().contains(QStringLiteral("locks")),
+             qPrintable(rig.tools.lastMessage()));
+    for (const char* part : {"colour", "colourPick", "colourDefault"}) {
+        auto* w = rig.properties.findChild<QWidget*>(QLatin1String(part));
+        QVERIFY2(w, part);
+        QVERIFY2(!w->isEnabled(), part);
+        QCOMPARE(w->toolTip(), QStringLiteral("This lesson step locks the Colour property"));
+    }
+    // Unlocked again, the arrow drags.
+    rig.tools.setAllowedProperties(std::nullopt);
+    QVERIFY(rig.properties.findChild<QWidget*>(QStringLiteral("colourPick"))->isEnabled());
+    rig.drag(from, from + QPoint(60, -40));
+    QVERIFY(rig.body("circle1").velocity.norm() > 0.0);
 }
 
 RIGIDLAB_TEST_MAIN(TestEditor)

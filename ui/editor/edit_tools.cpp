@@ -215,12 +215,14 @@ void EditTools::setEditing(bool on)
         m_view.installEventFilter(this);
         m_view.viewport()->installEventFilter(this);
         m_simulation.setRunning(false);
+        m_simulation.setStepsHeld(true); // Step, Back and the clock leave the scene alone
         reloadWorld();
         say(tr("Edit mode: the world is paused at its start; leave Edit mode or press Space to "
                "run it"));
     } else {
         m_view.removeEventFilter(this);
         m_view.viewport()->removeEventFilter(this);
+        m_simulation.setStepsHeld(false);
         reloadWorld();
         m_selected = -1;
         say({});
@@ -259,6 +261,25 @@ bool EditTools::locked(EditTool tool) const
     const std::string_view name = lessons::kEditorToolNames[i];
     return m_allowedTools && !m_allowedTools->contains(
                                  QLatin1String(name.data(), static_cast<qsizetype>(name.size())));
+}
+
+void EditTools::setAllowedProperties(const std::optional<QStringList>& names)
+{
+    if (names == m_allowedProperties) {
+        return;
+    }
+    m_allowedProperties = names;
+    emit propertyLocksChanged();
+}
+
+bool EditTools::propertyLocked(const QString& name) const
+{
+    return m_allowedProperties && !m_allowedProperties->contains(name);
+}
+
+QString EditTools::propertyLockedMessage(const QString& label)
+{
+    return tr("This lesson step locks the %1 property").arg(label);
 }
 
 void EditTools::setTool(EditTool tool)

@@ -88,6 +88,14 @@ public:
     void setAllowedTools(const std::optional<QStringList>& names);
     /// Whether a lesson step locks this tool.
     bool locked(EditTool tool) const;
+    /// A lesson step's lock on the properties (lessons::kEditorPropertyNames): only those named
+    /// may be changed, by the inspector's fields or by any gesture that sets them (a velocity
+    /// dragged); nullopt unlocks them all.
+    void setAllowedProperties(const std::optional<QStringList>& names);
+    /// Whether a lesson step locks this property ("mass", "velocity", ...).
+    bool propertyLocked(const QString& name) const;
+    /// "This lesson step locks the Mass property", with the property's label as shown.
+    static QString propertyLockedMessage(const QString& label);
 
     /// Whether the editor reloads the simulation from the document after each change (the
     /// default). A window that does so itself for every change turns it off.
@@ -130,6 +138,8 @@ signals:
     void message(const QString& text);
     /// A body or a spring was selected, or the selection cleared.
     void selectionChanged();
+    /// setAllowedProperties changed what is locked.
+    void propertyLocksChanged();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -220,7 +230,8 @@ private:
     bool m_editing = false;
     bool m_reloading = false;
     bool m_reloadsWorld = true;
-    std::optional<QStringList> m_allowedTools; ///< see setAllowedTools
+    std::optional<QStringList> m_allowedTools;      ///< see setAllowedTools
+    std::optional<QStringList> m_allowedProperties; ///< see setAllowedProperties
     EditTool m_tool = EditTool::Select;
     int m_selected = -1;
     int m_selectedSpring = -1;

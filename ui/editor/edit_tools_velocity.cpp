@@ -42,6 +42,10 @@ bool EditTools::pressVelocityHandle(const Vec2& raw)
     if (!arrow || (arrow->handle - raw).norm() > reach) {
         return false;
     }
+    if (propertyLocked(QStringLiteral("velocity"))) {
+        say(propertyLockedMessage(tr("Velocity")));
+        return true; // the press was on the arrow: it neither drags it nor moves the body
+    }
     const auto& def = m_document.scene().bodies[static_cast<size_t>(m_selected)];
     m_drag.active = true;
     m_drag.velocity = true;

@@ -7,6 +7,7 @@
 
 #include "common/display_names.h"
 #include "edit/scene_edits.h"
+#include "format/editor_tools.h"
 #include "format/limits.h"
 #include "panels/number_field.h"
 #include "view/body_item.h"
@@ -21,6 +22,8 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QVBoxLayout>
+
+#include <algorithm>
 
 namespace rigidlab::ui {
 
@@ -49,6 +52,45 @@ void labelWithUnit(QFormLayout* form, NumberField* f, const QString& label)
 QString inSentence(const QString& label)
 {
     return label.isEmpty() ? label : label.front().toLower() + label.mid(1);
+}
+
+/// The name a lesson's "editor" key gives the property a field edits (format/editor_tools.h):
+/// the field's objectName, but one name for both components of a vector.
+QString propertyOf(const QWidget* field)
+{
+    const QString name = field->objectName();
+    // The colour row's swatch, text and Default button: one property.
+    if (name.startsWith(QLatin1String("colour")))
+        return QStringLiteral("colour");
+    for (const char* vector : {"velocity", "gravity"}) {
+        const QString v = QLatin1String(vector);
+        if (name == v + u'X' || name == v + u'Y')
+            return v;
+    }
+    return name;
+}
+
+/// Whether `name` is one of the properties a lesson step may lock.
+bool isEditorProperty(const QString& name)
+{
+    return std::any_of(lessons::kEditorPropertyNames.begin(), lessons::kEditorPropertyNames.end(),
+                       [&name](std::string_view p) {
+                           return name == QLatin1String(p.data(), qsizetype(p.size()));
+                       });
+}
+
+/// The field's row label as shown, without its unit: "Mass", "Velocity vx".
+QString rowLabel(const QWidget* field)
+{
+    // A part of a compound row (the colour's swatch, text and button) takes its row's label.
+    for (const QWidget* w = field; w && w->parentWidget(); w = w->parentWidget()) {
+        const auto* form = qobject_cast<QFormLayout*>(w->parentWidget()->layout());
+        const auto* label =
+            form ? qobject_cast<QLabel*>(form->labelForField(const_cast<QWidget*>(w))) : nullptr;
+        if (label)
+            return label->text().section(QStringLiteral(" ["), 0, 0);
+    }
+    return field->objectName();
 }
 
 } // namespace
@@ -96,7 +138,9 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
         const int mergeId = merge++;
         const auto what = row.what;
         const QString label = row.label;
-        connect(f, &NumberField::valueEdited, this, [this, what, label, mergeId](double v) {
+        connect(f, &NumberField::valueEdited, this, [this, f, what, label, mergeId](double v) {
+            if (refuseLocked(f))
+                return;
             const int selected = m_tools.selectedBody();
             apply(tr("Set %1 of %2")
                       .arg(inSentence(label), EditTools::bodyName(m_document.scene(), selected)),
@@ -105,6 +149,8 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
         });
     }
     connect(m_id, &QLineEdit::editingFinished, this, [this] {
+        if (refuseLocked(m_id))
+            return;
         const int selected = m_tools.selectedBody();
         if (selected < 0 || m_id->text() == QString::fromStdString(
                                                 m_document.scene().bodies[size_t(selected)].name)) {
@@ -116,6 +162,8 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
               edit::setBodyId(m_document.scene(), selected, m_id->text()), -1);
     });
     connect(m_type, &QComboBox::activated, this, [this] {
+        if (refuseLocked(m_type))
+            return;
         apply(tr("Set type of %1")
                   .arg(EditTools::bodyName(m_document.scene(), m_tools.selectedBody())),
               edit::setBodyType(m_document.scene(), m_tools.selectedBody(),
@@ -146,7 +194,9 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
         const int mergeId = merge++;
         const auto what = row.what;
         const QString label = row.label;
-        connect(f, &NumberField::valueEdited, this, [this, what, label, mergeId](double v) {
+        connect(f, &NumberField::valueEdited, this, [this, f, what, label, mergeId](double v) {
+            if (refuseLocked(f))
+                return;
             const int selected = m_tools.selectedSpring();
             apply(tr("Set %1 of spring %2").arg(inSentence(label)).arg(selected + 1),
                   edit::setSpringNumber(m_document.scene(), selected, what, v),
@@ -186,10 +236,13 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
         const auto what = row.what;
         const double scale = row.scale;
         const QString label = row.label;
-        connect(f, &NumberField::valueEdited, this, [this, what, label, mergeId, scale](double v) {
-            apply(tr("Set %1").arg(inSentence(label)),
-                  edit::setWorldNumber(m_document.scene(), what, v / scale), mergeId);
-        });
+        connect(f, &NumberField::valueEdited, this,
+                [this, f, what, label, mergeId, scale](double v) {
+                    if (refuseLocked(f))
+                        return;
+                    apply(tr("Set %1").arg(inSentence(label)),
+                          edit::setWorldNumber(m_document.scene(), what, v / scale), mergeId);
+                });
     }
     m_integrator = new QComboBox(worldBox);
     m_integrator->setObjectName(QStringLiteral("integrator"));
@@ -198,6 +251,8 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
     }
     world->addRow(tr("Integrator"), m_integrator);
     connect(m_integrator, &QComboBox::activated, this, [this] {
+        if (refuseLocked(m_integrator))
+            return;
         apply(tr("Set integrator"),
               edit::setIntegrator(m_document.scene(),
                                   physics::IntegratorKind(m_integrator->currentData().toInt())),
@@ -211,6 +266,8 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
     }
     world->addRow(tr("Solver"), m_solver);
     connect(m_solver, &QComboBox::activated, this, [this] {
+        if (refuseLocked(m_solver))
+            return;
         apply(tr("Set solver"),
               edit::setSolver(m_document.scene(),
                               physics::SolverKind(m_solver->currentData().toInt())),
@@ -224,7 +281,34 @@ SceneProperties::SceneProperties(EditTools& tools, SceneDocument& document, QWid
     }
     connect(&m_document, &SceneDocument::sceneChanged, this, &SceneProperties::refresh);
     connect(&m_tools, &EditTools::selectionChanged, this, &SceneProperties::refresh);
+    connect(&m_tools, &EditTools::propertyLocksChanged, this, &SceneProperties::applyLocks);
     refresh();
+    applyLocks();
+}
+
+void SceneProperties::applyLocks()
+{
+    for (QWidget* w : findChildren<QWidget*>()) {
+        const QString property = propertyOf(w);
+        if (!isEditorProperty(property))
+            continue;
+        // The field's own tooltip (its range) comes back when the lock goes.
+        if (!w->property("unlockedToolTip").isValid())
+            w->setProperty("unlockedToolTip", w->toolTip());
+        const bool locked = m_tools.propertyLocked(property);
+        w->setEnabled(!locked);
+        w->setToolTip(locked ? EditTools::propertyLockedMessage(rowLabel(w))
+                             : w->property("unlockedToolTip").toString());
+    }
+}
+
+bool SceneProperties::refuseLocked(const QWidget* field)
+{
+    if (!m_tools.propertyLocked(propertyOf(field)))
+        return false;
+    emit refused(EditTools::propertyLockedMessage(rowLabel(field)));
+    refresh(); // the value in force comes back
+    return true;
 }
 
 NumberField* SceneProperties::addNumber(QFormLayout* form, const QString& name,

@@ -48,6 +48,12 @@ public slots:
 private:
     NumberField* addNumber(QFormLayout* form, const QString& name, const QString& label);
     void addColourRow(QFormLayout* form);
+    /// A lesson step's locks (EditTools::propertyLocked): a locked property's fields disabled,
+    /// their tooltip saying so.
+    void applyLocks();
+    /// Whether a lesson step locks what `field` edits; if so, says so and shows the value in
+    /// force again (a change that reached a locked field some other way is refused).
+    bool refuseLocked(const QWidget* field);
     void apply(const QString& what, const lessons::edit::EditResult& result, int mergeId);
 
     EditTools& m_tools;

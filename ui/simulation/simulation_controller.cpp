@@ -320,7 +320,7 @@ void SimulationController::advanceFrame()
     // A frame longer than kMaxFrameSeconds (the window was busy) loses the rest of its time:
     // the run fell behind real time, and says so.
     bool slow = unclampedWall > kMaxFrameSeconds;
-    if (m_running) {
+    if (m_running && !m_stepsHeld) {
         m_accumulator += wall * m_timeScale;
         while (m_accumulator >= h) {
             if (physicsClock.nsecsElapsed() * 1e-6 > kPhysicsBudgetMs) {
@@ -363,6 +363,8 @@ void SimulationController::measureFrames(int frames)
 
 void SimulationController::stepForward()
 {
+    if (m_stepsHeld)
+        return;
     setRunning(false);
     doStep();
     emit worldChanged();
@@ -375,6 +377,8 @@ void SimulationController::stepBack()
 
 void SimulationController::seek(long long step)
 {
+    if (m_stepsHeld)
+        return;
     setRunning(false);
     step = std::clamp(step, m_history.earliest(), m_history.latest());
     if (step == m_world.stepCount())

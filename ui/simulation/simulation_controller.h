@@ -118,6 +118,11 @@ public:
     /// The grab spring's two ends for drawing, when dragging.
     bool grabLine(physics::Vec2& from, physics::Vec2& to) const;
 
+    /// Held, the world never steps: Step, Back and seek do nothing (the scene editor holds it
+    /// while editing; running it again leaves Edit mode first, which lets go).
+    void setStepsHeld(bool held) { m_stepsHeld = held; }
+    bool stepsHeld() const { return m_stepsHeld; }
+
 public slots:
     void setRunning(bool running);
     void toggleRunning() { setRunning(!m_running); }
@@ -196,6 +201,7 @@ private:
     double m_accumulator = 0.0; ///< simulated time owed to the clock [s]
     double m_timeScale = 1.0;
     bool m_running = false;
+    bool m_stepsHeld = false; ///< see setStepsHeld
     bool m_slow = false;
     double m_frameMs = 0.0, m_physicsMs = 0.0, m_stepsPerSecond = 0.0;
     int m_measureFrames = 0; ///< frames still to record, see measureFrames()

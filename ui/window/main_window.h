@@ -177,6 +177,12 @@ private:
     void buildEditor();
     /// The editor's History dock, a tab beside its Properties (main_window_history.cpp).
     void buildHistory(QDockWidget& properties);
+    /// What Edit mode changes in the rest of the window: Step and Back off while editing, a
+    /// lesson step's measurements kept on the world as edited (main_window_editor.cpp).
+    void followEditMode();
+    /// Step and Back: disabled while editing (the world does not step) or while a question
+    /// holds the run back, with a tooltip saying why.
+    void updateStepActions();
     void addRecent(const QString& path);
     /// File › Your own scenes, made when the user's scenes folder holds any, remade after a
     /// save (main_window_save.cpp).

@@ -7,8 +7,10 @@
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "editor/scene_properties.h"
+#include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
+#include "window/shortcuts.h"
 
 #include <QComboBox>
 #include <QDockWidget>
@@ -85,6 +87,39 @@ void MainWindow::buildEditor()
         }
     });
     buildHistory(*dock);
+    followEditMode();
+}
+
+void MainWindow::followEditMode()
+{
+    m_stepAction->setProperty("runToolTip", m_stepAction->toolTip());
+    m_backAction->setProperty("runToolTip", m_backAction->toolTip());
+    connect(m_editTools, &EditTools::editingChanged, this, [this](bool on) {
+        updateStepActions();
+        // Entering or leaving Edit mode reloads the world from the document, which drops a
+        // lesson step's measurements and compared worlds: the step's worlds come back, built
+        // from the scene as edited, so its questions judge what the student built.
+        const lessons::Lesson* lesson = m_player->lesson();
+        if (m_lessonLoading || !m_inLesson || !lesson)
+            return;
+        loadStepWorlds(lesson->steps[static_cast<size_t>(m_player->stepIndex())],
+                       m_document->scene(), m_document->path());
+        if (!on && !m_runHeld)
+            m_controller->setRunning(true); // leaving Edit mode runs the scene as edited
+    });
+    updateStepActions();
+}
+
+void MainWindow::updateStepActions()
+{
+    const bool editing = m_editTools && m_editTools->editing();
+    m_stepAction->setEnabled(!editing && !m_runHeld);
+    m_backAction->setEnabled(!editing);
+    const QString editingTip = tr("The world does not step in Edit mode: leave it (%1) or press "
+                                  "Play to run the scene as edited")
+                                   .arg(controlKeysText("editMode"));
+    for (QAction* a : {m_stepAction, m_backAction})
+        a->setToolTip(editing ? editingTip : a->property("runToolTip").toString());
 }
 
 } // namespace rigidlab::ui

@@ -15,6 +15,7 @@
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
+#include "view/world_view.h"
 #include "window/dock_tabs.h"
 #include "window/window_names.h"
 
@@ -96,6 +97,12 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     m_lessonLoading = false;
     // A step may open the editor with some tools only (its "editor" key).
     m_editTools->setAllowedTools(step.editor ? std::optional(step.editor->tools) : std::nullopt);
+    m_editTools->setAllowedProperties(step.editor ? std::optional(step.editor->properties)
+                                                  : std::nullopt);
+    // A step with an editor opens in Edit mode, paused; any other step leaves it.
+    m_lessonLoading = true;
+    m_editTools->setEditing(step.editor.has_value());
+    m_lessonLoading = false;
     const QStringList labels = loadStepWorlds(step, step.scene, scenePath);
 
     // Only what the step names: panels, plots, overlays.
@@ -161,7 +168,12 @@ void MainWindow::applyLessonStep(const lessons::Lesson& lesson, int index)
     } else {
         m_sat->setBodies(-1, -1);
     }
-    m_controller->setRunning(step.autoplay && !m_runHeld);
+    if (!step.editor) {
+        m_controller->setRunning(step.autoplay && !m_runHeld);
+    } else {
+        // The view holds still while editing: the step's scene is shown whole once.
+        m_view->fitScene();
+    }
 }
 
 QStringList MainWindow::loadStepWorlds(const lessons::LessonStep& step, const lessons::Scene& scene,
@@ -191,7 +203,7 @@ void MainWindow::applyHeldBack(const QStringList& held)
 {
     m_runHeld = held.contains(QStringView(lessons::kHoldBackRun));
     m_playAction->setEnabled(!m_runHeld);
-    m_stepAction->setEnabled(!m_runHeld);
+    updateStepActions();
     if (m_runHeld)
         m_controller->setRunning(false);
     m_collision->setAfterHeld(held.contains(QStringView(lessons::kHoldBackCollisionAfter)));
@@ -219,6 +231,7 @@ void MainWindow::leaveLesson()
         return;
     m_inLesson = false;
     m_editTools->setAllowedTools(std::nullopt);
+    m_editTools->setAllowedProperties(std::nullopt);
     showSceneTitle();
     // Back to the plain lab: controls, inspector and the three plots.
     for (auto it = m_docks.cbegin(); it != m_docks.cend(); ++it) {

@@ -4,6 +4,7 @@
 #include "window/main_window.h"
 
 #include "common/modal_scope.h"
+#include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
@@ -81,6 +82,8 @@ bool MainWindow::newScene()
     m_documentIsFile = false;
     m_document->reset(scene, QString()); // which loads the world
     m_lastError.clear();
+    // A teacher starting a new scene wants to draw at once.
+    m_editTools->setEditing(true);
     return true;
 }
 
