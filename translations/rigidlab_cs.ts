@@ -211,55 +211,55 @@
     </message>
     <message>
         <source>Edit mode on or off: draw the scene; leaving it runs the scene as edited</source>
-        <translation>Režim úprav zapnout nebo vypnout: kreslit scénu; po jeho opuštění se spustí upravená scéna</translation>
+        <translation>Editor zapnout nebo vypnout: kreslit scénu; po jeho vypnutí se spustí upravená scéna</translation>
     </message>
     <message>
         <source>Edit: select and move bodies (arrows nudge)</source>
-        <translation>Úpravy: vybírat a&#xa0;posouvat tělesa (šipky posunou o&#xa0;kousek)</translation>
+        <translation>Editor: vybírat a&#xa0;posouvat tělesa (šipky posunou o&#xa0;kousek)</translation>
     </message>
     <message>
         <source>Edit: turn a body by dragging (Q, E by 5°)</source>
-        <translation>Úpravy: otáčet tělesem tažením (Q, E o&#xa0;5°)</translation>
+        <translation>Editor: otáčet tělesem tažením (Q, E o&#xa0;5°)</translation>
     </message>
     <message>
         <source>Edit: draw a circle from its centre</source>
-        <translation>Úpravy: kreslit kruh od středu</translation>
+        <translation>Editor: kreslit kruh od středu</translation>
     </message>
     <message>
         <source>Edit: draw a box</source>
-        <translation>Úpravy: kreslit obdélník</translation>
+        <translation>Editor: kreslit obdélník</translation>
     </message>
     <message>
         <source>Edit: draw a polygon (Enter closes it)</source>
-        <translation>Úpravy: kreslit mnohoúhelník (Enter ho uzavře)</translation>
+        <translation>Editor: kreslit mnohoúhelník (Enter ho uzavře)</translation>
     </message>
     <message>
         <source>Edit: draw static ground or a wall</source>
-        <translation>Úpravy: kreslit statickou podložku nebo stěnu</translation>
+        <translation>Editor: kreslit statickou podložku nebo stěnu</translation>
     </message>
     <message>
         <source>Edit: pin a body to another or to the world</source>
-        <translation>Úpravy: připojit těleso čepem k&#xa0;jinému tělesu nebo k&#xa0;okolí</translation>
+        <translation>Editor: připojit těleso čepem k&#xa0;jinému tělesu nebo k&#xa0;okolí</translation>
     </message>
     <message>
         <source>Edit: draw a spring</source>
-        <translation>Úpravy: kreslit pružinu</translation>
+        <translation>Editor: kreslit pružinu</translation>
     </message>
     <message>
         <source>Edit: click bodies to delete them</source>
-        <translation>Úpravy: kliknutím tělesa smazat</translation>
+        <translation>Editor: kliknutím tělesa smazat</translation>
     </message>
     <message>
         <source>Edit: click bodies to duplicate them</source>
-        <translation>Úpravy: kliknutím tělesa duplikovat</translation>
+        <translation>Editor: kliknutím tělesa duplikovat</translation>
     </message>
     <message>
         <source>Edit: snap to the grid and to corners, on or off</source>
-        <translation>Úpravy: přichytávání k&#xa0;mřížce a&#xa0;k&#xa0;rohům zapnout nebo vypnout</translation>
+        <translation>Editor: přichytávání k&#xa0;mřížce a&#xa0;k&#xa0;rohům zapnout nebo vypnout</translation>
     </message>
     <message>
         <source>Edit: delete the selected body</source>
-        <translation>Úpravy: smazat vybrané těleso</translation>
+        <translation>Editor: smazat vybrané těleso</translation>
     </message>
     <message>
         <source>Undo the last edit of the scene</source>
@@ -1430,7 +1430,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Edit</source>
-        <translation>Úpravy</translation>
+        <translation>Editor</translation>
     </message>
     <message>
         <source>Edit the scene: draw bodies, pins and springs (%1); leave to run it</source>
@@ -1442,7 +1442,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Edit mode: the world is paused at its start; leave Edit mode or press Space to run it</source>
-        <translation>Režim úprav: svět stojí na začátku; spustíte ho opuštěním režimu úprav nebo mezerníkem</translation>
+        <translation>Editor: svět stojí na začátku; spustíte ho vypnutím editoru nebo mezerníkem</translation>
     </message>
     <message>
         <source>Select a body to turn it</source>
@@ -2290,7 +2290,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>The world does not step in Edit mode: leave it (%1) or press Play to run the scene as edited</source>
-        <translation>V režimu úprav svět nekrokuje: opusťte ho (%1) nebo stiskněte Spustit a scéna poběží tak, jak je upravená</translation>
+        <translation>V editoru svět nekrokuje: vypněte ho (%1) nebo stiskněte Spustit a scéna poběží tak, jak je upravená</translation>
     </message>
 </context>
 <context>
