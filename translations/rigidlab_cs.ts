@@ -1568,6 +1568,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>This lesson step locks the %1 property</source>
         <translation>Tento krok lekce vlastnost %1 zamyká</translation>
     </message>
+    <message>
+        <source>Velocity</source>
+        <translation>Rychlost</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::ErrorPanel</name>
