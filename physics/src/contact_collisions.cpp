@@ -152,14 +152,7 @@ bool ContactSolver::solveCollisionPhase(double threshold, int sweeps)
             p.normalImpulse = p.tangentImpulse = 0.0;
         }
     solveCollisions(std::max(sweeps, 1));
-    std::vector<Body>& bodies = *m_bodies;
-    for (size_t i = 0; i < bodies.size(); ++i) {
-        Body& b = bodies[i];
-        if (!b.isActive())
-            continue;
-        b.velocity = m_velocity[i].v;
-        b.angularVelocity = m_velocity[i].w;
-    }
+    storeVelocities();
     bool bounced = false;
     for (Constraint& c : m_constraints) {
         Contact& ct = (*m_contacts)[static_cast<size_t>(c.contact)];

@@ -457,7 +457,7 @@ void ContactSolver::solveSeed()
     store();
 }
 
-void ContactSolver::store()
+void ContactSolver::storeVelocities()
 {
     std::vector<Body>& bodies = *m_bodies;
     for (size_t i = 0; i < bodies.size(); ++i) {
@@ -467,6 +467,11 @@ void ContactSolver::store()
         b.velocity = m_velocity[i].v;
         b.angularVelocity = m_velocity[i].w;
     }
+}
+
+void ContactSolver::store()
+{
+    storeVelocities();
     for (const Constraint& c : m_constraints) {
         Contact& ct = (*m_contacts)[static_cast<size_t>(c.contact)];
         for (int i = 0; i < c.count; ++i) {

@@ -151,6 +151,8 @@ private:
     static double normalVelocity(const Constraint& c, int i, const Velocity& a, const Velocity& b);
     /// Velocities and impulses back to the bodies and contacts.
     void store();
+    /// The solver's velocities back to the bodies (the first half of store()).
+    void storeVelocities();
     /// The body's rotation, computed once per epoch (see newRotationEpoch()).
     const Rotation& rotation(int body);
     /// Forgets every rotation computed so far (the bodies have turned).

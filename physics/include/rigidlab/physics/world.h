@@ -56,7 +56,7 @@ struct SoftStepSettings {
     /// Damping ratio of the contact's spring. 2, over-damped: at 10 (Box2D v3's) the base-40
     /// pyramid's middle boxes crept up to 0.14 m sideways in 10 s, at 2 up to 1 cm.
     double dampingRatio = 2.0;
-    double maxPushSpeed = 3.0;  ///< fastest push that separates overlapping bodies [m/s]
+    double maxPushSpeed = 3.0; ///< fastest push that separates overlapping bodies [m/s]
     /// Friction in the soft solve as well as in the relax pass. Off: friction only in the relax
     /// pass, where the normal impulses hold the weight without the push (the base-100 pyramid
     /// slides apart with it on).
