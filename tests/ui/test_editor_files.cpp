@@ -3,6 +3,7 @@
 // changes asked about, Run and Reset from the scene as edited, undo and redo from the Edit menu.
 // The dialogs are answered through the window's askers, so no dialog opens.
 
+#include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
@@ -19,11 +20,13 @@
 
 #include <QAction>
 #include <QDir>
+#include <QDockWidget>
 #include <QFile>
 #include <QMenu>
 #include <QMessageBox>
 #include <QPointer>
 #include <QTemporaryDir>
+#include <QToolBar>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -78,6 +81,58 @@ private slots:
     {
         // The user's scenes folder lives in this run's $HOME; each test starts without it.
         QDir(lessons::userDataDir()).removeRecursively();
+    }
+
+    // Found by hand: a window closed in Edit mode came back with the editor's tools and docks
+    // showing outside it (its saved layout restored them).
+    void editorPanelsOnlyInEditMode()
+    {
+        {
+            MainWindow w;
+            w.show();
+            QVERIFY(QTest::qWaitForWindowExposed(&w));
+            QVERIFY(w.newScene()); // a new scene opens in Edit mode
+            QVERIFY(w.editTools().editing());
+            QVERIFY(w.findChild<QToolBar*>(QStringLiteral("editToolbar"))->isVisible());
+            QVERIFY(w.findChild<QDockWidget*>(QStringLiteral("historyDock"))->isVisible());
+            QVERIFY(w.close()); // its layout is saved as it is
+        }
+        MainWindow again;
+        again.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&again));
+        QVERIFY(!again.editTools().editing());
+        QVERIFY(!again.findChild<QToolBar*>(QStringLiteral("editToolbar"))->isVisible());
+        for (const char* dock : {"propertiesDock", "historyDock"})
+            QVERIFY2(!again.findChild<QDockWidget*>(QLatin1String(dock))->isVisible(), dock);
+        again.editTools().editAction()->trigger();
+        QVERIFY(again.findChild<QToolBar*>(QStringLiteral("editToolbar"))->isVisible());
+        again.editTools().editAction()->trigger();
+    }
+
+    // Found by hand: saved into one's own folder, quit, started again (the welcome scene opens
+    // from the shipped folder), and Open started among the shipped scenes.
+    void openStartsWhereOwnScenesWere()
+    {
+        QTemporaryDir dir;
+        const QString own = QFileInfo(dir.path()).absoluteFilePath();
+        {
+            MainWindow w;
+            QCOMPARE(w.openScene(shippedScene("ball_drop.json"), true), QString());
+            w.setSavePathAsker(
+                [&](const QString&) { return dir.filePath(QStringLiteral("mine.json")); });
+            QVERIFY(w.saveSceneAs());
+            QCOMPARE(w.lastFolder(), own);
+        }
+        MainWindow again;
+        QCOMPARE(again.lastFolder(), own);
+        QCOMPARE(again.openScene(shippedScene("welcome.json"), true), QString());
+        QCOMPARE(again.lastFolder(), own);
+        // A scene opened from another folder of one's own moves it there.
+        QTemporaryDir other;
+        const QString copy = other.filePath(QStringLiteral("copy.json"));
+        QVERIFY(QFile::copy(dir.filePath(QStringLiteral("mine.json")), copy));
+        QCOMPARE(again.openScene(copy, true), QString());
+        QCOMPARE(again.lastFolder(), QFileInfo(other.path()).absoluteFilePath());
     }
 
     void openingSetsTheDocument()

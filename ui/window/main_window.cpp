@@ -7,6 +7,7 @@
 
 #include "common/export_folder.h"
 #include "common/modal_scope.h"
+#include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
@@ -26,12 +27,14 @@
 
 #include <QAction>
 #include <QCloseEvent>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
 #include <QStyle>
+#include <QToolBar>
 
 namespace rigidlab::ui {
 
@@ -168,6 +171,13 @@ void MainWindow::restoreSettings()
     QSettings s;
     m_lastFolder = s.value(QStringLiteral("lastFolder")).toString();
     restoreLayout(s);
+    // A layout saved in Edit mode would show the editor's tools and docks outside it.
+    const bool editing = m_editTools && m_editTools->editing();
+    if (auto* tools = findChild<QToolBar*>(QStringLiteral("editToolbar")))
+        tools->setVisible(editing);
+    for (const char* name : {"propertiesDock", "historyDock"})
+        if (auto* dock = findChild<QDockWidget*>(QLatin1String(name)))
+            dock->setVisible(editing);
     for (std::size_t i = 0; i < kOverlayNames.size(); ++i) {
         const QString key =
             QStringLiteral("overlays/") + QLatin1String(kOverlayNames[i].settingKey);

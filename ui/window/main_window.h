@@ -70,6 +70,8 @@ public:
     /// dialog. (Tests answer without a dialog.)
     using SavePathAsker = std::function<QString(const QString& suggested)>;
     void setSavePathAsker(SavePathAsker asker) { m_savePathAsker = std::move(asker); }
+    /// The folder the Open dialog starts in (empty: the shipped scenes).
+    const QString& lastFolder() const { return m_lastFolder; }
     /// The answer to the unsaved-changes question: QMessageBox::Save, Discard or Cancel.
     /// Unset: a message box.
     using UnsavedAsker = std::function<int()>;

@@ -55,7 +55,12 @@ QString MainWindow::openScene(const QString& path, bool quiet)
     m_document->reset(r.scene, path);
     for (const QString& w : r.warnings)
         statusBar()->showMessage(w, 8000);
-    m_lastFolder = QFileInfo(path).absolutePath();
+    // The Open dialog starts where a scene was last opened or saved; the shipped folder, where
+    // the welcome scene is opened from at every start, does not replace a folder of one's own
+    // (found by hand: saved, quit, started again, and Open showed the shipped scenes).
+    const QString folder = QFileInfo(path).absolutePath();
+    if (m_lastFolder.isEmpty() || QDir(folder) != QDir(scenesFolder()))
+        m_lastFolder = folder;
     addRecent(QFileInfo(path).absoluteFilePath());
     return QString();
 }
