@@ -158,19 +158,18 @@ QString carryWorldPins(Scene& scene, BodyId body)
     const physics::Transform xf(def.position, def.angle);
     for (size_t i = 0; i < scene.joints.size(); ++i) {
         physics::PinJointDef& joint = scene.joints[i];
-        const QString source = QStringLiteral("joints[%1]").arg(i);
-        if (joint.a == body && joint.b == physics::kWorld) {
-            joint.anchorB = xf.apply(joint.anchorA);
-            if (QString e = anchorError(source, QStringLiteral("anchorB"), joint.anchorB);
-                !e.isEmpty()) {
-                return e;
-            }
-        } else if (joint.b == body && joint.a == physics::kWorld) {
-            joint.anchorA = xf.apply(joint.anchorB);
-            if (QString e = anchorError(source, QStringLiteral("anchorA"), joint.anchorA);
-                !e.isEmpty()) {
-                return e;
-            }
+        // The joint may name the body as its a or as its b; the other end is the world's.
+        const bool bodyIsA = joint.a == body && joint.b == physics::kWorld;
+        if (!bodyIsA && !(joint.b == body && joint.a == physics::kWorld)) {
+            continue;
+        }
+        Vec2& worldAnchor = bodyIsA ? joint.anchorB : joint.anchorA;
+        worldAnchor = xf.apply(bodyIsA ? joint.anchorA : joint.anchorB);
+        if (QString e = anchorError(QStringLiteral("joints[%1]").arg(i),
+                                    bodyIsA ? QStringLiteral("anchorB") : QStringLiteral("anchorA"),
+                                    worldAnchor);
+            !e.isEmpty()) {
+            return e;
         }
     }
     return {};
