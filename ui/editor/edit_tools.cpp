@@ -638,9 +638,14 @@ bool EditTools::mouseMove(QMouseEvent* event)
     const Vec2 raw = m_view.worldAt(event->position().toPoint());
     updateSnapText();
     m_pointer = snapped(raw, m_drag.active ? m_drag.body : -1);
+    const bool hadMarker = m_bodySnap.has_value();
     updateSnapMarker(raw);
     if (!m_drag.active) {
-        refreshOverlay(); // the snap marker follows the pointer
+        // Repainted for a gesture under way, or for a snap marker that shows, moves or goes;
+        // a pointer crossing empty space repaints nothing.
+        if (!m_polygon.empty() || m_pinStart || hadMarker || m_bodySnap) {
+            refreshOverlay();
+        }
         return false;
     }
     m_drag.current = m_pointer;
