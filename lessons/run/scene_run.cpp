@@ -214,6 +214,7 @@ void addProfile(physics::StepProfile& sum, const physics::StepProfile& step)
     sum.directIntegration = step.directIntegration;
     sum.pairs = step.pairs;
     sum.contacts = step.contacts;
+    sum.reusedFaces = step.reusedFaces;
     sum.solved = step.solved;
     sum.positionPasses = step.positionPasses;
     sum.awake = step.awake;
@@ -249,8 +250,9 @@ QString RunReport::profileTable() const
                           .arg(p.total > 0 ? 100.0 * p.ms[k] / p.total : 0.0, 6, 'f', 1);
     }
     out += QStringLiteral("step             %1\n").arg(p.total / n, 8, 'f', 4);
-    out += QStringLiteral("last step: %1 pairs, %2 contacts, %3 solved, %4 position passes, "
-                          "%5 awake, %6 asleep, %7 islands; integration %8\n")
+    out += QStringLiteral("last step: %1 pairs, %2 contacts (%9 from kept faces, without the "
+                          "SAT), %3 solved, %4 position passes, %5 awake, %6 asleep, %7 islands; "
+                          "integration %8\n")
                .arg(p.pairs)
                .arg(p.contacts)
                .arg(p.solved)
@@ -260,7 +262,8 @@ QString RunReport::profileTable() const
                .arg(p.islands)
                .arg(p.directIntegration ? QStringLiteral("direct")
                                         : QStringLiteral("by the ODE "
-                                                         "system"));
+                                                         "system"))
+               .arg(p.reusedFaces);
     return out;
 }
 

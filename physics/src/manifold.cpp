@@ -28,13 +28,17 @@ namespace {
 // the reference face rounds to either side of zero [m].
 constexpr double kTouchTolerance = 1e-9;
 
+// A later edge is more aligned only when its cosine is larger by this: nearly equal
+// normals keep the first.
+constexpr double kAlignedTie = 1e-12;
+
 int mostAligned(const WorldPolygon& p, const Vec2& dir)
 {
     int best = 0;
     double bestDot = -2.0;
     for (int i = 0; i < p.count; ++i) {
         const double d = p.n[static_cast<size_t>(i)].dot(dir);
-        if (d > bestDot + 1e-12) {
+        if (d > bestDot + kAlignedTie) {
             bestDot = d;
             best = i;
         }
@@ -61,25 +65,51 @@ bool clipSegment(std::array<Vec2, 2>& p, const Vec2& normal, double offset)
 
 } // namespace
 
-/// Builds the manifold with `ref` as the reference polygon (owner 0 is A, 1 is B).
+int incidentEdge(const WorldPolygon& ref, int refEdge, const WorldPolygon& inc, double* lead)
+{
+    // The other polygon's edge most anti-parallel to the reference normal.
+    const Vec2 dir = -ref.n[static_cast<size_t>(refEdge)];
+    const int best = mostAligned(inc, dir);
+    if (lead) {
+        double next = -2.0;
+        for (int i = 0; i < inc.count; ++i)
+            if (i != best)
+                next = std::max(next, inc.n[static_cast<size_t>(i)].dot(dir));
+        *lead = inc.n[static_cast<size_t>(best)].dot(dir) - next - kAlignedTie;
+    }
+    return best;
+}
+
 void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const WorldPolygon& inc,
                           const Transform& xfInc, int owner, int refEdge, double margin,
                           bool intersecting, Manifold& m)
 {
-    const Vec2 refNormal = ref.n[static_cast<size_t>(refEdge)];
-    // Incident edge: the other polygon's edge most anti-parallel to the reference normal.
-    const int incEdge = mostAligned(inc, Vec2(-refNormal));
-    const int i1 = incEdge, i2 = (incEdge + 1) % inc.count;
-    std::array<Vec2, 2> p{inc.v[static_cast<size_t>(i1)], inc.v[static_cast<size_t>(i2)]};
+    clipPolygonManifold(ref, xfRef, inc, xfInc, {owner, refEdge, incidentEdge(ref, refEdge, inc)},
+                        margin, intersecting, m);
+}
 
-    const Vec2 r1 = ref.v[static_cast<size_t>(refEdge)];
-    const Vec2 r2 = ref.v[static_cast<size_t>((refEdge + 1) % ref.count)];
+namespace {
+
+/// The next vertex's index around a polygon of `count` vertices.
+int nextIndex(int i, int count)
+{
+    return i + 1 == count ? 0 : i + 1;
+}
+
+} // namespace
+
+bool clipFaces(const FacePoints& f, const Transform& xfRef, const Transform& xfInc,
+               const Faces& faces, double margin, bool intersecting, Manifold& m)
+{
+    const int owner = faces.owner, refEdge = faces.refEdge, incEdge = faces.incEdge;
+    const Vec2 refNormal = f.normal, r1 = f.r1, r2 = f.r2;
+    std::array<Vec2, 2> p{f.i1, f.i2};
     const Vec2 tangent = (r2 - r1).normalized();
     // Side planes: keep tangent.x >= tangent.r1 and tangent.x <= tangent.r2.
     const bool clipped = clipSegment(p, Vec2(-tangent), -tangent.dot(r1)) &&
                          clipSegment(p, tangent, tangent.dot(r2));
     if (!clipped && !intersecting)
-        return;
+        return false;
 
     m.type = owner == 0 ? ManifoldType::FaceA : ManifoldType::FaceB;
     m.normal = owner == 0 ? refNormal : Vec2(-refNormal);
@@ -103,25 +133,39 @@ void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const
         m.localIncident[static_cast<size_t>(m.pointCount)] = xfInc.applyInverse(p[k]);
         ++m.pointCount;
     }
-    if (m.pointCount > 0 || !intersecting)
-        return;
+    return m.pointCount > 0;
+}
+
+bool clipPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const WorldPolygon& inc,
+                         const Transform& xfInc, const Faces& faces, double margin,
+                         bool intersecting, Manifold& m)
+{
+    const auto at = [](const Vec2* v, int i) { return v[static_cast<size_t>(i)]; };
+    const FacePoints f{at(ref.n, faces.refEdge), at(ref.v, faces.refEdge),
+                       at(ref.v, nextIndex(faces.refEdge, ref.count)), at(inc.v, faces.incEdge),
+                       at(inc.v, nextIndex(faces.incEdge, inc.count))};
+    if (clipFaces(f, xfRef, xfInc, faces, margin, intersecting, m))
+        return true;
+    if (!intersecting)
+        return false;
     // Intersecting, and clipping kept nothing: the incident edge lies beside the reference
     // face rather than across it (a sliver deep inside a large polygon, or a reference face
     // far shorter than the incident one). The incident polygon's deepest vertex along the
     // normal is the contact then; it penetrates by the overlap on this axis, so it is kept.
+    const Vec2 refNormal = f.normal;
     int deepest = 0;
     for (int i = 1; i < inc.count; ++i)
-        if (refNormal.dot(inc.v[static_cast<size_t>(i)]) <
-            refNormal.dot(inc.v[static_cast<size_t>(deepest)]))
+        if (refNormal.dot(at(inc.v, i)) < refNormal.dot(at(inc.v, deepest)))
             deepest = i;
-    const Vec2 v = inc.v[static_cast<size_t>(deepest)];
-    const double sep = refNormal.dot(v - r1);
+    const Vec2 v = at(inc.v, deepest);
+    const double sep = refNormal.dot(v - f.r1);
     ContactPoint& cp = m.points[0];
     cp.point = v - 0.5 * sep * refNormal;
     cp.separation = sep;
-    cp.id = static_cast<std::uint32_t>(owner << 24 | refEdge << 16 | deepest << 8 | 2);
+    cp.id = static_cast<std::uint32_t>(faces.owner << 24 | faces.refEdge << 16 | deepest << 8 | 2);
     m.localIncident[0] = xfInc.applyInverse(v);
     m.pointCount = 1;
+    return false;
 }
 
 Manifold collideCircles(const Circle& a, const Transform& xfA, const Circle& b,

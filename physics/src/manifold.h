@@ -66,21 +66,66 @@ private:
     std::vector<double> m_ownMin, m_ownMax;
 };
 
+/// The faces a polygon manifold is clipped from: the reference polygon (0: A, 1: B), its
+/// reference edge, and the other polygon's incident edge.
+struct Faces {
+    int owner = 0, refEdge = 0, incEdge = 0;
+};
+
+/// The faces the SAT chose for a pair that it found closer than margin, and how far that
+/// choice was from changing: while every vertex of each polygon has moved less than
+/// overlapRoom in the other's frame, and the pair has turned less than turnRoom, the SAT
+/// would choose the same faces, and the pair is not farther apart than margin while least
+/// stays above -margin by more than that motion (narrow_phase.cpp).
+struct FaceChoice {
+    Faces faces;
+    double least = 0;       ///< the least overlap over all axes [m] (negative: a gap)
+    double overlapRoom = 0; ///< [m]
+    double turnRoom = 0;    ///< [rad]
+    bool kept = false;      ///< clipping kept a point (clipPolygonManifold)
+};
+
 /// The SAT's verdict and manifold for two placed polygons, without recording the axes (the
 /// engine's path; sat.cpp), written into `manifold`, which must be a default Manifold.
 /// pointCount stays 0 when farther apart than margin.
 /// `separatingAxis`: in, an axis to try first (last step's separating axis of the pair, or
 /// -1); out, the axis that showed them farther apart than margin, or -1. The axis tried first
 /// saves the rest of the test for a pair still apart, and never changes the result.
+/// `choice`, when given: filled for a pair not found apart (separatingAxis -1).
 void collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
                            const Transform& xfB, double margin, int& separatingAxis,
-                           Manifold& manifold);
+                           Manifold& manifold, FaceChoice* choice = nullptr);
 
 /// Builds the manifold of two polygons with `ref` as the reference polygon (owner 0 is A,
-/// 1 is B) and its edge `refEdge` as the reference face (manifold.cpp). `intersecting`: the
-/// SAT found no separating axis, so a contact is kept even when clipping keeps nothing.
+/// 1 is B) and its edge `refEdge` as the reference face (manifold.cpp): clipPolygonManifold
+/// with the incidentEdge. `intersecting`: the SAT found no separating axis, so a contact is
+/// kept even when clipping keeps nothing.
 void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const WorldPolygon& inc,
                           const Transform& xfInc, int owner, int refEdge, double margin,
                           bool intersecting, Manifold& m);
+
+/// The incident edge of `inc` for the reference face `refEdge` of `ref`: the edge whose normal
+/// is most nearly opposite. `lead`, when given: by how much that normal's cosine beats the
+/// next edge's, less the tie tolerance; a relative turn smaller than half of it cannot change
+/// the choice (the cosines change by at most the turn).
+int incidentEdge(const WorldPolygon& ref, int refEdge, const WorldPolygon& inc,
+                 double* lead = nullptr);
+
+/// The points a polygon manifold is clipped from, placed in the world: the reference face's
+/// normal and ends, and the incident edge's ends.
+struct FacePoints {
+    Vec2 normal, r1, r2, i1, i2;
+};
+
+/// Clips the incident edge to the reference face (clipPolygonManifold without its fallback).
+/// Returns true when a point was kept; false leaves `m` to be reset or completed.
+bool clipFaces(const FacePoints& f, const Transform& xfRef, const Transform& xfInc,
+               const Faces& faces, double margin, bool intersecting, Manifold& m);
+
+/// The manifold from the given faces (buildPolygonManifold's clipping). Returns true when
+/// clipping kept a point, so that the manifold does not depend on `intersecting`.
+bool clipPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const WorldPolygon& inc,
+                         const Transform& xfInc, const Faces& faces, double margin,
+                         bool intersecting, Manifold& m);
 
 } // namespace rigidlab::physics

@@ -33,6 +33,61 @@ private:
     size_t m_next = 0;
 };
 
+/// The farthest vertex of `p` from its origin [m].
+double radius(const Polygon& p)
+{
+    double r = 0.0;
+    for (const Vec2& v : p.vertices)
+        r = std::max(r, v.norm());
+    return r;
+}
+
+/// Where two polygons are now, each in the other's frame, to compare with a TouchingPair.
+struct RelativePlacement {
+    Vec2 bInA, aInB;
+    double turn;
+    RelativePlacement(const Body& a, const Transform& xfA, const Body& b, const Transform& xfB)
+        : bInA(xfA.q.applyInverse(xfB.p - xfA.p)), aInB(xfB.q.applyInverse(xfA.p - xfB.p)),
+          turn(b.angle - a.angle)
+    {
+    }
+};
+
+/// Whether the SAT would choose the same faces for `kept` now, and find the pair no farther
+/// apart than margin (FaceChoice). A vertex of B moves in A's frame by at most B's shift in
+/// it plus the turn times its distance from B's origin, and the other way round; the slack
+/// covers the round-off of the overlaps the SAT compared, which grows with the coordinates.
+bool facesStand(const TouchingPair& kept, const RelativePlacement& now, const Transform& xfA,
+                const Transform& xfB, const Body& a, const Body& b, double margin)
+{
+    const double turn = std::abs(now.turn - kept.turn) + 1e-12 +
+                        1e-14 * (std::abs(a.angle) + std::abs(b.angle)); // [rad], with slack
+    if (!(turn < kept.choice.turnRoom))
+        return false;
+    const double size = xfA.p.lpNorm<Eigen::Infinity>() + xfB.p.lpNorm<Eigen::Infinity>() +
+                        kept.radiusA + kept.radiusB;
+    // (|x| + |y| bounds the length of a shift from above, without a square root.)
+    const double moved = std::max((now.bInA - kept.bInA).lpNorm<1>() + turn * kept.radiusB,
+                                  (now.aInB - kept.aInB).lpNorm<1>() + turn * kept.radiusA) +
+                         1e-12 + 1e-13 * size;
+    return moved < kept.choice.overlapRoom && kept.choice.least - moved >= -margin;
+}
+
+/// The points of `faces` placed in the world, with the arithmetic of the polygons' placement
+/// (WorldPolygons), so that clipping them gives the bits that clipping the placed polygons
+/// gives.
+FacePoints facePoints(const Polygon& ref, const Transform& xfRef, const Polygon& inc,
+                      const Transform& xfInc, const Faces& faces)
+{
+    const auto vertex = [](const Polygon& p, int i, const Transform& xf) {
+        const size_t count = p.vertices.size();
+        return xf.apply(p.vertices[static_cast<size_t>(i) % count]);
+    };
+    return {xfRef.q.apply(ref.normals[static_cast<size_t>(faces.refEdge)]),
+            vertex(ref, faces.refEdge, xfRef), vertex(ref, faces.refEdge + 1, xfRef),
+            vertex(inc, faces.incEdge, xfInc), vertex(inc, faces.incEdge + 1, xfInc)};
+}
+
 /// Static, or dynamic and asleep: it does not move this step.
 bool rests(const Body& body)
 {
@@ -60,6 +115,18 @@ void carryImpulses(const Contact& previous, Contact& c)
             }
 }
 
+namespace {
+
+/// A contact with its manifold made: its mixed material and last step's impulses.
+void finishContact(const Body& a, const Body& b, PreviousPairs<Contact>& before, Contact& c)
+{
+    mixMaterials(a, b, c);
+    if (const Contact* p = before.find(c.a, c.b))
+        carryImpulses(*p, c);
+}
+
+} // namespace
+
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
                  const std::vector<double>& sweep, const std::vector<Contact>& previous,
@@ -72,6 +139,10 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
     std::swap(cache.separated, cache.previousSeparated);
     cache.separated.clear();
     PreviousPairs<SeparatedPair> apartBefore(cache.previousSeparated);
+    std::swap(cache.touching, cache.previousTouching);
+    cache.touching.clear();
+    PreviousPairs<TouchingPair> touchingBefore(cache.previousTouching);
+    cache.reused = 0;
     WorldPolygons& placed = cache.placed;
     placed.reset(bodies.size());
     for (const auto& [ia, ib] : pairs) {
@@ -95,14 +166,44 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
         if (pa && pb) {
             // Two polygons: the SAT on their placements of this step, without recording,
             // trying last step's separating axis first.
+            const RelativePlacement now(a, xfA, b, xfB);
+            // A pair that barely moved: clipped from the faces the SAT chose before, placing
+            // only their points.
+            const TouchingPair* kept = cache.reuseFaces ? touchingBefore.find(ia, ib) : nullptr;
+            if (kept && facesStand(*kept, now, xfA, xfB, a, b, pairMargin)) {
+                const Faces& faces = kept->choice.faces;
+                const bool ownerA = faces.owner == 0;
+                const Transform& xfRef = ownerA ? xfA : xfB;
+                const Transform& xfInc = ownerA ? xfB : xfA;
+                if (clipFaces(
+                        facePoints(ownerA ? *pa : *pb, xfRef, ownerA ? *pb : *pa, xfInc, faces),
+                        xfRef, xfInc, faces, pairMargin, false, c.manifold)) {
+                    cache.touching.push_back(*kept);
+                    ++cache.reused;
+                    finishContact(a, b, before, c);
+                    continue;
+                }
+                c.manifold = Manifold{};
+            }
+            // The whole SAT, trying last step's separating axis first.
             placed.place(ia, *pa, xfA);
             placed.place(ib, *pb, xfB);
+            const WorldPolygon wa = placed.view(ia), wb = placed.view(ib);
             const SeparatedPair* apart = apartBefore.find(ia, ib);
             int axis = apart ? apart->axis : -1;
-            collidePlacedPolygons(placed.view(ia), xfA, placed.view(ib), xfB, pairMargin, axis,
-                                  c.manifold);
+            FaceChoice choice;
+            collidePlacedPolygons(wa, xfA, wb, xfB, pairMargin, axis, c.manifold, &choice);
             if (axis >= 0)
                 cache.separated.push_back({ia, ib, axis});
+            else if (choice.kept && choice.overlapRoom > 0.0 && choice.turnRoom > 0.0)
+                cache.touching.push_back({.a = ia,
+                                          .b = ib,
+                                          .choice = choice,
+                                          .bInA = now.bInA,
+                                          .aInB = now.aInB,
+                                          .turn = now.turn,
+                                          .radiusA = radius(*pa),
+                                          .radiusB = radius(*pb)});
         } else {
             c.manifold = collideShapes(a.shape, xfA, b.shape, xfB, pairMargin);
         }
@@ -110,9 +211,7 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
             contacts.pop_back();
             continue;
         }
-        mixMaterials(a, b, c);
-        if (const Contact* p = before.find(ia, ib))
-            carryImpulses(*p, c);
+        finishContact(a, b, before, c);
     }
 }
 

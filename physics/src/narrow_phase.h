@@ -19,6 +19,17 @@ struct SeparatedPair {
     int axis = -1;
 };
 
+/// A pair of polygons that the SAT found touching (closer than margin), the faces it chose,
+/// and where each polygon was in the other's frame then.
+struct TouchingPair {
+    int a = 0, b = 0;
+    FaceChoice choice;
+    Vec2 bInA = Vec2::Zero();        ///< B's origin in A's frame [m]
+    Vec2 aInB = Vec2::Zero();        ///< A's origin in B's frame [m]
+    double turn = 0;                 ///< B's angle less A's [rad]
+    double radiusA = 0, radiusB = 0; ///< the farthest vertex from each origin [m]
+};
+
 /// The narrow phase's buffers, kept in the world's scratch from step to step. They save work
 /// and change no result: a fresh cache gives the same contacts, bit for bit.
 struct NarrowPhaseCache {
@@ -27,6 +38,12 @@ struct NarrowPhaseCache {
     /// axis is tried first (collidePlacedPolygons), and a pair that has not come closer is
     /// settled by one axis instead of all of them.
     std::vector<SeparatedPair> separated, previousSeparated;
+    /// The pairs found touching, in pair order: a pair that has moved too little since the
+    /// SAT chose its faces to change that choice is clipped from the same faces without the
+    /// SAT (the same manifold, bit for bit: the SAT would choose them again).
+    std::vector<TouchingPair> touching, previousTouching;
+    bool reuseFaces = true; ///< off: every pair gets the whole SAT (to test that it is the same)
+    int reused = 0;         ///< pairs clipped from kept faces in the last call
 };
 
 /// The contacts of `pairs` (a < b, sorted), in their order: each pair's manifold

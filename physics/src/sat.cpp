@@ -12,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <type_traits>
 
 namespace rigidlab::physics {
 
@@ -20,6 +22,9 @@ namespace {
 // The reference face changes from A to B only when B's axis is better by this much [m],
 // so that two nearly parallel faces do not swap roles from one step to the next.
 constexpr double kReferenceHysteresis = 0.0005;
+
+// No next overlap yet [m].
+constexpr double kNone = std::numeric_limits<double>::infinity();
 
 /// kCount: the vertex count when known at compile time (4, a box: the loops unroll), else 0.
 template <int kCount = 0>
@@ -73,6 +78,17 @@ template <int kCount = 0>
     }
 }
 
+/// The engine's path keeps of the verdict what satImpl writes, and the manifold goes straight
+/// to the contact (no SatResult with a manifold of its own to copy from).
+struct EngineVerdict {
+    int axesTested = 0, separatingAxis = -1, leastAxis = -1;
+    bool intersects = false;
+    Vec2 normal = Vec2::Zero();
+    double depth = 0;
+    Manifold& manifold;
+    FaceChoice* choice = nullptr; ///< when given, how far the choice of faces was from changing
+};
+
 /// The SAT proper. Record: keep every axis for the lesson; else the engine's path, the same
 /// arithmetic in the same order without building the axis records (twice as fast).
 /// `hint`: an axis (index in the order tested) to try first, as last step's separating axis
@@ -107,6 +123,8 @@ int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb
     // Least overlap over all axes (the depth), and over each polygon's own axes (to pick
     // the reference face with hysteresis).
     double least = 0.0, leastOwn[2] = {0.0, 0.0};
+    // The next one-sided overlap of each polygon: how far its reference edge is from another.
+    double nextOwn[2] = {kNone, kNone};
     int leastIndex = -1, leastEdge[2] = {-1, -1};
     int index = 0;
     for (int owner = 0; owner < 2; ++owner) {
@@ -146,8 +164,12 @@ int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb
             // One-sided overlap along this polygon's outward normal, towards the other one.
             const double own = owner == 0 ? pushB : pushA;
             if (leastEdge[owner] < 0 || own < leastOwn[owner]) {
+                if (leastEdge[owner] >= 0)
+                    nextOwn[owner] = leastOwn[owner];
                 leastOwn[owner] = own;
                 leastEdge[owner] = e;
+            } else {
+                nextOwn[owner] = std::min(nextOwn[owner], own);
             }
         }
     }
@@ -159,22 +181,34 @@ int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb
         return -1;
 
     // Reference face: A's unless B's one-sided overlap is clearly smaller.
-    if (leastOwn[1] < leastOwn[0] - kReferenceHysteresis)
-        buildPolygonManifold(wb, xfB, wa, xfA, 1, leastEdge[1], margin, r.intersects, r.manifold);
-    else
-        buildPolygonManifold(wa, xfA, wb, xfB, 0, leastEdge[0], margin, r.intersects, r.manifold);
+    const int owner = leastOwn[1] < leastOwn[0] - kReferenceHysteresis ? 1 : 0;
+    const WorldPolygon& ref = owner == 0 ? wa : wb;
+    const WorldPolygon& inc = owner == 0 ? wb : wa;
+    const Transform& xfRef = owner == 0 ? xfA : xfB;
+    const Transform& xfInc = owner == 0 ? xfB : xfA;
+    if constexpr (std::is_same_v<Result, EngineVerdict>) {
+        if (r.choice) {
+            // Every overlap changes by at most as much as the other polygon's vertices move
+            // in this polygon's frame: the faces stay while that is less than half of the
+            // lead of the chosen edge over the next, and of the choice of owner over the other.
+            double lead = 0.0;
+            const Faces faces{owner, leastEdge[owner],
+                              incidentEdge(ref, leastEdge[owner], inc, &lead)};
+            const bool kept = clipPolygonManifold(ref, xfRef, inc, xfInc, faces, margin,
+                                                  r.intersects, r.manifold);
+            const double ownerLead = std::abs(leastOwn[1] - (leastOwn[0] - kReferenceHysteresis));
+            *r.choice = {.faces = faces,
+                         .least = least,
+                         .overlapRoom = 0.5 * std::min(nextOwn[owner] - leastOwn[owner], ownerLead),
+                         .turnRoom = 0.5 * lead,
+                         .kept = kept};
+            return -1;
+        }
+    }
+    buildPolygonManifold(ref, xfRef, inc, xfInc, owner, leastEdge[owner], margin, r.intersects,
+                         r.manifold);
     return -1;
 }
-
-/// The engine's path keeps of the verdict what satImpl writes, and the manifold goes straight
-/// to the contact (no SatResult with a manifold of its own to copy from).
-struct EngineVerdict {
-    int axesTested = 0, separatingAxis = -1, leastAxis = -1;
-    bool intersects = false;
-    Vec2 normal = Vec2::Zero();
-    double depth = 0;
-    Manifold& manifold;
-};
 
 } // namespace
 
@@ -210,9 +244,9 @@ void WorldPolygons::placeNew(int body, const Polygon& p, const Transform& xf)
 
 void collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const WorldPolygon& b,
                            const Transform& xfB, double margin, int& separatingAxis,
-                           Manifold& manifold)
+                           Manifold& manifold, FaceChoice* choice)
 {
-    EngineVerdict r{.manifold = manifold};
+    EngineVerdict r{.manifold = manifold, .choice = choice};
     separatingAxis = a.count == 4 && b.count == 4
                          ? satImpl<false, 4>(a, xfA, b, xfB, margin, separatingAxis, r)
                          : satImpl<false>(a, xfA, b, xfB, margin, separatingAxis, r);

@@ -98,8 +98,10 @@ void World::findContacts()
     m_profile.pairs = static_cast<int>(s.pairs.size());
 
     StageTimer narrow(m_profile, Stage::NarrowPhase);
+    s.narrow.reuseFaces = m_contactSettings.reuseFaces;
     narrowPhase(m_bodies, s.xf, s.pairs, margin, m_sweep, s.previous, s.narrow, m_contacts);
     m_profile.contacts = static_cast<int>(m_contacts.size());
+    m_profile.reusedFaces = s.narrow.reused;
 }
 
 } // namespace rigidlab::physics

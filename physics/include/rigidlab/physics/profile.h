@@ -45,6 +45,7 @@ struct StepProfile {
     bool directIntegration = false;
     int pairs = 0;          ///< from the broad phase
     int contacts = 0;       ///< pairs with a manifold
+    int reusedFaces = 0;    ///< of them, clipped from the faces the SAT chose before
     int solved = 0;         ///< contacts with an awake dynamic body, given to the solver
     int positionPasses = 0; ///< position correction passes made
     int awake = 0;          ///< dynamic bodies awake

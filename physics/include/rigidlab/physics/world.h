@@ -73,6 +73,10 @@ struct ContactSettings {
     double baumgarte = 0.2;     ///< fraction of penetration removed per position pass
     double maxCorrection = 0.2; ///< largest position correction per pass [m]
     int positionIterations = 3;
+    /// Touching polygons that barely moved are clipped from the faces the SAT chose before,
+    /// without the SAT: the same contacts, bit for bit (narrow_phase.cpp). Off only to show
+    /// that.
+    bool reuseFaces = true;
     /// Approaches slower than this never bounce [m/s] (sequential impulses; see below).
     double restitutionThreshold = 0.5;
     SoftStepSettings soft; ///< the soft step's (its position correction is its own)
