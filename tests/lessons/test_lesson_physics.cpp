@@ -605,7 +605,7 @@ void TestLesson::softStepPyramidStands()
     // The soft step runs only where the step integrates directly (the text says so).
     QCOMPARE(soft.def().integrator, physics::IntegratorKind::SymplecticEuler);
 
-    // "6 substeps of 1/360 s", "vibrate 90 times a second between two boxes": the numbers of
+    // "5 substeps of 1/300 s", "vibrate 75 times a second between two boxes": the numbers of
     // the text, from the world's own settings.
     const physics::SoftStepSettings& settings = soft.contactSettings().soft;
     const QRegularExpressionMatch said =
@@ -646,9 +646,10 @@ void TestLesson::softStepPyramidStands()
                                 .arg(softFarthest)
                                 .arg(sequentialSink)
                                 .arg(sequentialAt2);
-    // Step 5: "only a centimetre or two lower", "quivers up and down by about a centimetre".
-    QVERIFY2(std::abs(softSink) < 0.02, qPrintable(figures));
-    QVERIFY2(softFarthest < 0.03, qPrintable(figures));
+    // Step 5: "only about two centimetres lower", "in the first second its top bobs up and
+    // down by up to twice that before it comes to rest".
+    QVERIFY2(std::abs(softSink) > 0.01 && std::abs(softSink) < 0.025, qPrintable(figures));
+    QVERIFY2(softFarthest < 2 * 0.025, qPrintable(figures));
     // "sank by almost 0.2 m, most of it in the first two seconds".
     QVERIFY2(sequentialSink > 0.15 && sequentialSink < 0.2, qPrintable(figures));
     QVERIFY2(sequentialAt2 > 0.5 * sequentialSink, qPrintable(figures));
@@ -659,12 +660,13 @@ void TestLesson::softStepPyramidStands()
         QVERIFY(std::abs(soft.bodies()[b].position.x() - start[b].position.x()) < 0.5);
         QVERIFY(std::abs(soft.bodies()[b].angle - start[b].angle) < 0.2);
     }
-    // "Watch the total energy: it stays flat (within a tenth of a per cent)", and its change is
-    // a small part of what the sinking sequential pyramid loses.
-    QVERIFY2(softWorstChange < 1e-3, qPrintable(QString::number(softWorstChange)));
+    // "Watch the total energy: it stays flat (within two tenths of a per cent: the little the
+    // pyramid settles)", and its change is a small part of what the sinking sequential pyramid
+    // loses.
+    QVERIFY2(softWorstChange < 2e-3, qPrintable(QString::number(softWorstChange)));
     const double softLoss = std::abs(soft.diagnostics().total - e0);
     const double sequentialLoss = std::abs(sequential.diagnostics().total - e0);
-    QVERIFY2(softLoss < 0.1 * sequentialLoss,
+    QVERIFY2(softLoss < 0.2 * sequentialLoss,
              qPrintable(QStringLiteral("%1 J against %2 J").arg(softLoss).arg(sequentialLoss)));
 
     // The question: "it stays" is right, "it sinks as the other one does" is not.
