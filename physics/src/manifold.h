@@ -73,16 +73,24 @@ struct Faces {
 };
 
 /// The faces the SAT chose for a pair that it found closer than margin, and how far that
-/// choice was from changing: while every vertex of each polygon has moved less than
-/// overlapRoom in the other's frame, and the pair has turned less than turnRoom, the SAT
-/// would choose the same faces, and the pair is not farther apart than margin while least
-/// stays above -margin by more than that motion (narrow_phase.cpp).
+/// choice was from changing (narrow_phase.cpp tells from them whether a pair that has moved
+/// would get the same faces):
+/// - each polygon's edge of least one-sided overlap stays the same while every vertex of the
+///   other polygon has moved less than edgeRoom in its frame;
+/// - the reference polygon stays the same while the difference of the two least one-sided
+///   overlaps changes by less than ownerRoom. A shift t of B in A's frame changes it by at
+///   most tilt |t| (tilt: the length of the sum of the two edges' unit normals, 0 for
+///   opposite faces), a turn by at most the turn times both radii and the distance;
+/// - the incident edge stays the same while the pair has turned less than turnRoom;
+/// - the pair stays no farther apart than margin while least stays above -margin.
 struct FaceChoice {
     Faces faces;
-    double least = 0;       ///< the least overlap over all axes [m] (negative: a gap)
-    double overlapRoom = 0; ///< [m]
-    double turnRoom = 0;    ///< [rad]
-    bool kept = false;      ///< clipping kept a point (clipPolygonManifold)
+    double least = 0;     ///< the least overlap over all axes [m] (negative: a gap)
+    double edgeRoom = 0;  ///< [m]
+    double ownerRoom = 0; ///< [m]
+    double tilt = 0;      ///< [1]
+    double turnRoom = 0;  ///< [rad]
+    bool kept = false;    ///< clipping kept a point (clipPolygonManifold)
 };
 
 /// The SAT's verdict and manifold for two placed polygons, without recording the axes (the

@@ -57,20 +57,26 @@ struct RelativePlacement {
 /// apart than margin (FaceChoice). A vertex of B moves in A's frame by at most B's shift in
 /// it plus the turn times its distance from B's origin, and the other way round; the slack
 /// covers the round-off of the overlaps the SAT compared, which grows with the coordinates.
+/// (|x| + |y| bounds the length of a vector from above, without a square root.)
 bool facesStand(const TouchingPair& kept, const RelativePlacement& now, const Transform& xfA,
                 const Transform& xfB, const Body& a, const Body& b, double margin)
 {
+    const FaceChoice& choice = kept.choice;
     const double turn = std::abs(now.turn - kept.turn) + 1e-12 +
                         1e-14 * (std::abs(a.angle) + std::abs(b.angle)); // [rad], with slack
-    if (!(turn < kept.choice.turnRoom))
+    if (!(turn < choice.turnRoom))
         return false;
-    const double size = xfA.p.lpNorm<Eigen::Infinity>() + xfB.p.lpNorm<Eigen::Infinity>() +
-                        kept.radiusA + kept.radiusB;
-    // (|x| + |y| bounds the length of a shift from above, without a square root.)
-    const double moved = std::max((now.bInA - kept.bInA).lpNorm<1>() + turn * kept.radiusB,
+    const double slack =
+        1e-12 + 1e-13 * (xfA.p.lpNorm<Eigen::Infinity>() + xfB.p.lpNorm<Eigen::Infinity>() +
+                         kept.radiusA + kept.radiusB);
+    const double shift = (now.bInA - kept.bInA).lpNorm<1>(); // [m]
+    const double moved = std::max(shift + turn * kept.radiusB,
                                   (now.aInB - kept.aInB).lpNorm<1>() + turn * kept.radiusA) +
-                         1e-12 + 1e-13 * size;
-    return moved < kept.choice.overlapRoom && kept.choice.least - moved >= -margin;
+                         slack;
+    const double ownerChange =
+        choice.tilt * shift + turn * (kept.radiusA + kept.radiusB + now.bInA.lpNorm<1>()) + slack;
+    return moved < choice.edgeRoom && ownerChange < choice.ownerRoom &&
+           choice.least - moved >= -margin;
 }
 
 /// The points of `faces` placed in the world, with the arithmetic of the polygons' placement
@@ -195,7 +201,8 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
             collidePlacedPolygons(wa, xfA, wb, xfB, pairMargin, axis, c.manifold, &choice);
             if (axis >= 0)
                 cache.separated.push_back({ia, ib, axis});
-            else if (choice.kept && choice.overlapRoom > 0.0 && choice.turnRoom > 0.0)
+            else if (choice.kept && choice.edgeRoom > 0.0 && choice.ownerRoom > 0.0 &&
+                     choice.turnRoom > 0.0)
                 cache.touching.push_back({.a = ia,
                                           .b = ib,
                                           .choice = choice,

@@ -189,17 +189,21 @@ int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb
     if constexpr (std::is_same_v<Result, EngineVerdict>) {
         if (r.choice) {
             // Every overlap changes by at most as much as the other polygon's vertices move
-            // in this polygon's frame: the faces stay while that is less than half of the
-            // lead of the chosen edge over the next, and of the choice of owner over the other.
+            // in this polygon's frame: each polygon keeps its least edge while that is less
+            // than half of the edge's lead over the next (FaceChoice).
             double lead = 0.0;
             const Faces faces{owner, leastEdge[owner],
                               incidentEdge(ref, leastEdge[owner], inc, &lead)};
             const bool kept = clipPolygonManifold(ref, xfRef, inc, xfInc, faces, margin,
                                                   r.intersects, r.manifold);
-            const double ownerLead = std::abs(leastOwn[1] - (leastOwn[0] - kReferenceHysteresis));
             *r.choice = {.faces = faces,
                          .least = least,
-                         .overlapRoom = 0.5 * std::min(nextOwn[owner] - leastOwn[owner], ownerLead),
+                         .edgeRoom =
+                             0.5 * std::min(nextOwn[0] - leastOwn[0], nextOwn[1] - leastOwn[1]),
+                         .ownerRoom = std::abs(leastOwn[1] - (leastOwn[0] - kReferenceHysteresis)),
+                         .tilt = (wa.n[static_cast<size_t>(leastEdge[0])] +
+                                  wb.n[static_cast<size_t>(leastEdge[1])])
+                                     .norm(),
                          .turnRoom = 0.5 * lead,
                          .kept = kept};
             return -1;
