@@ -104,11 +104,39 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     buildBlocks(contacts, bodies);
 }
 
+bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
+                               const std::vector<Body>& bodies) const
+{
+    if (contacts.size() != m_keys.size() || bodies.size() != m_keyBodies ||
+        m_kernel.width != m_keyWidth)
+        return false;
+    for (size_t ci = 0; ci < contacts.size(); ++ci) {
+        const Contact& ct = contacts[ci];
+        const ColourKey key{ct.a, ct.b, bodies[static_cast<size_t>(ct.a)].isActive(),
+                            bodies[static_cast<size_t>(ct.b)].isActive()};
+        if (!(key == m_keys[ci]))
+            return false;
+    }
+    return true;
+}
+
 void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies)
 {
+    if (sameColouring(contacts, bodies)) {
+        // The same contacts between the same bodies: the same colours, blocks and lanes as
+        // colouring them again would give; only what the lanes hold has changed.
+        for (const Slot& slot : m_slots)
+            fillLane(slot.contact, contacts[static_cast<size_t>(slot.contact)], bodies,
+                     m_blocks[static_cast<size_t>(slot.block)], slot.lane);
+        return;
+    }
+
     // Greedy colouring in the contacts' order (deterministic): each contact takes the lowest
     // colour that neither of its moving bodies has yet. A body that does not move (static,
     // kinematic, asleep) is only read, so any number of contacts of one colour may share it.
+    m_keys.clear();
+    m_keyBodies = bodies.size();
+    m_keyWidth = m_kernel.width;
     m_colourMask.assign(bodies.size(), 0);
     m_candidates.clear();
     m_colourOf.clear();
@@ -118,6 +146,7 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
         const Contact& ct = contacts[ci];
         const Body& a = bodies[static_cast<size_t>(ct.a)];
         const Body& b = bodies[static_cast<size_t>(ct.b)];
+        m_keys.push_back({ct.a, ct.b, a.isActive(), b.isActive()});
         if (!a.isActive() && !b.isActive())
             continue;
         std::uint64_t used = 0;
@@ -239,6 +268,14 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
         // share.
         p.normalImpulse[l] = ct.normalImpulse[static_cast<size_t>(i)] / substeps;
         p.tangentImpulse[l] = ct.tangentImpulse[static_cast<size_t>(i)] / substeps;
+    }
+    // A point the manifold lacks: zero masses, so zero impulses (a block filled again may
+    // hold last step's second point here).
+    for (int i = ct.manifold.pointCount; i < 2; ++i) {
+        soft::PointLanes& p = k.p[i];
+        for (double* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
+                              p.normalImpulse, p.tangentImpulse})
+            field[l] = 0.0;
     }
 }
 

@@ -65,7 +65,17 @@ private:
         int block = 0;
         int lane = 0;
     };
+    /// What the colouring of a contact depends on: its bodies and whether each moves.
+    struct ColourKey {
+        int a = 0, b = 0;
+        bool movesA = false, movesB = false;
+        bool operator==(const ColourKey&) const = default;
+    };
     void buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
+    /// Whether the colouring of the last buildBlocks() holds for these contacts: the same keys
+    /// in the same order, the same bodies and lanes (a pile at rest, step after step). Then
+    /// the blocks only need their lanes filled again.
+    bool sameColouring(const std::vector<Contact>& contacts, const std::vector<Body>& bodies) const;
     void fillLane(int contactIndex, const Contact& ct, const std::vector<Body>& bodies,
                   soft::Block& block, int lane);
     /// Both sums of kineticEnergy() and loadPower() in one pass over the bodies, kept until
@@ -101,6 +111,9 @@ private:
     std::vector<int> m_nextBlock, m_nextLane; ///< per colour, while the blocks are filled
     int m_colourCount = 0;
     int m_overflow = 0;
+    std::vector<ColourKey> m_keys; ///< per contact, of the colouring in m_blocks
+    size_t m_keyBodies = 0;        ///< the body count of that colouring
+    int m_keyWidth = 0;            ///< the kernel width of that colouring
 };
 
 } // namespace rigidlab::physics
