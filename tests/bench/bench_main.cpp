@@ -101,6 +101,8 @@ int main(int argc, char** argv)
         }
     }
     std::printf("\n%s\n", bench::benchTable(results).c_str());
+    if (const std::string targets = bench::softStepTargets(results); !targets.empty())
+        std::printf("%s\n", targets.c_str());
     for (const std::string& m : missing)
         std::printf("Column missing: %s\n", m.c_str());
     for (auto& engine : engines)

@@ -157,4 +157,62 @@ std::string benchTable(const std::vector<BenchResult>& results)
     return out;
 }
 
+std::string softStepTargets(const std::vector<BenchResult>& results)
+{
+    const auto find = [&](const std::string& engine, const std::string& scene) {
+        const BenchResult* found = nullptr;
+        for (const BenchResult& r : results)
+            if (r.engine == engine && r.scene == scene && r.msPerStep > 0)
+                found = &r;
+        return found;
+    };
+    const auto met = [](bool ok) { return ok ? std::string("met") : std::string("MISSED"); };
+    std::string out;
+    for (const char* name : {"pyramid-20", "pyramid-40", "pyramid-100"}) {
+        const std::string scene = name;
+        const BenchResult* soft = find("RigidLab SS", scene);
+        if (!soft)
+            continue;
+        out += "  " + scene + ":";
+        if (const BenchResult* v3 = find("Box2D v3", scene)) {
+            const double ratio = soft->msPerStep / v3->msPerStep;
+            out +=
+                format(" %.2fx Box2D v3's time (at most 1.5: ", ratio) + met(ratio <= 1.5) + ");";
+        } else {
+            out += " Box2D v3 missing;";
+        }
+        if (const BenchResult* cp = find("Chipmunk", scene)) {
+            const double ratio = cp->msPerStep / soft->msPerStep;
+            out += format(" %.2fx faster than Chipmunk (at least 1.5: ", ratio) +
+                   met(ratio >= 1.5) + ");";
+        }
+        if (const BenchResult* b2 = find("Box2D 2.4", scene)) {
+            const double ratio = b2->msPerStep / soft->msPerStep;
+            out += format(" %.2fx faster than Box2D 2.4 (at least 2: ", ratio) + met(ratio >= 2.0) +
+                   ")";
+        }
+        out += "\n";
+        if (scene == "pyramid-100") {
+            const BenchResult* v3 = find("Box2D v3", scene);
+            const bool stands = soft->finite && soft->moved == 0;
+            out += "  pyramid-100 standing (" + stabilityText(*soft) + "): " + met(stands);
+            if (v3)
+                out += "; top sunk less than Box2D v3's (" + format("%+.3f", v3->topDrift) +
+                       " m): " + met(soft->topDrift > v3->topDrift);
+            out += "\n";
+        }
+    }
+    const BenchResult* at40 = find("RigidLab SS", "pyramid-40");
+    const BenchResult* at100 = find("RigidLab SS", "pyramid-100");
+    if (at40 && at100) {
+        const double growth = (at100->msPerStep / at100->bodies) / (at40->msPerStep / at40->bodies);
+        const double nLogN = std::log(double(at100->bodies)) / std::log(double(at40->bodies));
+        out += format("  cost per body from pyramid-40 to pyramid-100: x%.2f", growth) +
+               format(" (n log n: x%.2f): ", nLogN) + met(growth <= nLogN) + "\n";
+    }
+    if (out.empty())
+        return out;
+    return "The soft step's targets, in this run:\n" + out;
+}
+
 } // namespace rigidlab::bench
