@@ -56,9 +56,10 @@ inline V vmin(const V& a, const V& b)
     return a < b ? a : b;
 }
 
-/// The velocities of one side of the lanes, gathered from the bodies.
+/// The velocities of one side of the lanes, gathered from the bodies, with their inverse
+/// masses (which the kernel only reads, and writes back as read).
 struct Side {
-    V vx, vy, w;
+    V vx, vy, w, m;
 };
 
 /// The displacement of both sides since the step began, gathered per lane.
@@ -105,10 +106,11 @@ inline Side gather(const int* index, const BodyState* bodies)
 {
     static_assert(__builtin_offsetof(BodyState, vx) == 0 &&
                   __builtin_offsetof(BodyState, vy) == sizeof(double) &&
-                  __builtin_offsetof(BodyState, w) == 2 * sizeof(double));
+                  __builtin_offsetof(BodyState, w) == 2 * sizeof(double) &&
+                  __builtin_offsetof(BodyState, invMass) == 3 * sizeof(double));
     V f[4];
     transpose(index, bodies, 0, f);
-    return {f[0], f[1], f[2]};
+    return {f[0], f[1], f[2], f[3]};
 }
 
 inline void scatter(const int* index, BodyState* bodies, const Side& s)
@@ -116,30 +118,29 @@ inline void scatter(const int* index, BodyState* bodies, const Side& s)
     // Lanes of a block never share a moving body. A body that does not move (static, asleep,
     // or the spare body of an empty lane) may stand in several lanes: each writes back the
     // velocity it read, since its inverse mass is 0. The rows are the gather's transposed
-    // back, with BodyState::unused written as 0.
+    // back, the inverse mass with them as it was read.
     const auto row = [&](int lane) { return reinterpret_cast<double*>(&bodies[index[lane]]); };
 #if RIGIDLAB_SOFT_WIDTH == 4
-    const V u{};
     const V t0 = __builtin_shufflevector(s.vx, s.vy, 0, 4, 2, 6);
     const V t1 = __builtin_shufflevector(s.vx, s.vy, 1, 5, 3, 7);
-    const V t2 = __builtin_shufflevector(s.w, u, 0, 4, 2, 6);
-    const V t3 = __builtin_shufflevector(s.w, u, 1, 5, 3, 7);
+    const V t2 = __builtin_shufflevector(s.w, s.m, 0, 4, 2, 6);
+    const V t3 = __builtin_shufflevector(s.w, s.m, 1, 5, 3, 7);
     store(row(0), __builtin_shufflevector(t0, t2, 0, 1, 4, 5));
     store(row(1), __builtin_shufflevector(t1, t3, 0, 1, 4, 5));
     store(row(2), __builtin_shufflevector(t0, t2, 2, 3, 6, 7));
     store(row(3), __builtin_shufflevector(t1, t3, 2, 3, 6, 7));
 #elif RIGIDLAB_SOFT_WIDTH == 2
-    const V u{};
     store(row(0), __builtin_shufflevector(s.vx, s.vy, 0, 2));
-    store(row(0) + 2, __builtin_shufflevector(s.w, u, 0, 2));
+    store(row(0) + 2, __builtin_shufflevector(s.w, s.m, 0, 2));
     store(row(1), __builtin_shufflevector(s.vx, s.vy, 1, 3));
-    store(row(1) + 2, __builtin_shufflevector(s.w, u, 1, 3));
+    store(row(1) + 2, __builtin_shufflevector(s.w, s.m, 1, 3));
 #else
     for (int i = 0; i < W; ++i) {
         double* b = row(i);
         b[0] = s.vx[i];
         b[1] = s.vy[i];
         b[2] = s.w[i];
+        b[3] = s.m[i];
     }
 #endif
 }
@@ -187,8 +188,7 @@ void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
     for (int k = 0; k < count; ++k) {
         Block& c = blocks[k];
         Side A = gather(c.a, bodies), B = gather(c.b, bodies);
-        const V mA = load(c.invMassA), iA = load(c.invIA), mB = load(c.invMassB),
-                iB = load(c.invIB);
+        const V mA = A.m, iA = load(c.invIA), mB = B.m, iB = load(c.invIB);
         const V nx = load(c.nx), ny = load(c.ny);
         for (PointLanes& p : c.p) {
             const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
@@ -210,9 +210,19 @@ void solvePass(Block* blocks, int count, BodyState* bodies, const PassSettings& 
         Block& c = blocks[k];
         Side A = gather(c.a, bodies), B = gather(c.b, bodies);
         const Motion m = gatherMotion(c, bodies);
-        const V mA = load(c.invMassA), iA = load(c.invIA), mB = load(c.invMassB),
-                iB = load(c.invIB);
+        const V mA = A.m, iA = load(c.invIA), mB = B.m, iB = load(c.invIB);
         const V nx = load(c.nx), ny = load(c.ny);
+        // The softness of each lane: against a body that does not move, or between two that
+        // do.
+        V biasRate = zero, massScale = zero, impulseScale = zero;
+        if constexpr (kBias) {
+            const auto oneSided = (mA == zero) | (mB == zero);
+            const Softness& one = s.softness[1];
+            const Softness& two = s.softness[0];
+            biasRate = oneSided ? splat(one.biasRate) : splat(two.biasRate);
+            massScale = oneSided ? splat(one.massScale) : splat(two.massScale);
+            impulseScale = oneSided ? splat(one.impulseScale) : splat(two.impulseScale);
+        }
         for (PointLanes& p : c.p) {
             const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
             // The separation now: both lever arms turned by their body's rotation so far.
@@ -224,9 +234,9 @@ void solvePass(Block* blocks, int count, BodyState* bodies, const PassSettings& 
             const V old = load(p.normalImpulse);
             V next;
             if constexpr (kBias) {
-                const V bias = gap ? sep * inverseSubstep : vmax(load(c.biasRate) * sep, maxPush);
-                const V ms = gap ? splat(1.0) : load(c.massScale);
-                const V is = gap ? zero : load(c.impulseScale);
+                const V bias = gap ? sep * inverseSubstep : vmax(biasRate * sep, maxPush);
+                const V ms = gap ? splat(1.0) : massScale;
+                const V is = gap ? zero : impulseScale;
                 next = vmax(old - load(p.normalMass) * ms * (vn + bias) - is * old, zero);
             } else {
                 // Rigid: the soft formula with ms = 1 and is = 0, whose products by 1 and

@@ -20,12 +20,14 @@ namespace rigidlab::physics::soft {
 /// Lanes stored per block: the widest kernel's.
 inline constexpr int kBlockWidth = 4;
 
-/// One body as the kernel sees it. Velocities change in the kernel; the rest is written by the
-/// substep's integration of positions (soft_solver.cpp).
+/// One body as the kernel sees it. Velocities change in the kernel; the displacement and
+/// rotation are written by the substep's integration of positions (soft_solver.cpp).
 struct alignas(64) BodyState {
-    double vx = 0, vy = 0;   ///< velocity of the centre of mass [m/s]
-    double w = 0;            ///< angular velocity [rad/s]
-    double unused = 0;       ///< padding, so that vx, vy, w load as one vector (written 0)
+    double vx = 0, vy = 0; ///< velocity of the centre of mass [m/s]
+    double w = 0;          ///< angular velocity [rad/s]
+    /// 1 / mass [1/kg], 0 for a body the step does not move: loaded with the velocity as one
+    /// vector, so that the blocks need not carry it per lane.
+    double invMass = 0;
     double dpx = 0, dpy = 0; ///< displacement of the centre of mass since the step began [m]
     double qc = 1, qs = 0;   ///< cos and sin of the rotation since the step began
 };
@@ -44,17 +46,22 @@ struct alignas(32) PointLanes {
     double tangentImpulse[kBlockWidth]{}; ///< accumulated within a substep [N s]
 };
 
+/// A block's lanes. The inverse masses are the bodies' (BodyState::invMass), and the soft
+/// coefficients the pass's (PassSettings): the blocks are streamed through memory in every
+/// pass, and on a large pile they no longer fit in the cache.
 struct alignas(32) Block {
     int a[kBlockWidth]{}, b[kBlockWidth]{}; ///< body indices; empty lanes use the spare body
-    double invMassA[kBlockWidth]{}, invIA[kBlockWidth]{};
-    double invMassB[kBlockWidth]{}, invIB[kBlockWidth]{};
-    double nx[kBlockWidth]{}, ny[kBlockWidth]{}; ///< unit normal from A to B
+    double invIA[kBlockWidth]{}, invIB[kBlockWidth]{}; ///< 0 for a body the step does not move
+    double nx[kBlockWidth]{}, ny[kBlockWidth]{};       ///< unit normal from A to B
     double friction[kBlockWidth]{};
-    /// The soft constraint's coefficients for one substep (soft_solver.cpp).
-    double biasRate[kBlockWidth]{};     ///< [1/s]
-    double massScale[kBlockWidth]{};    ///< of the effective mass, in (0, 1)
-    double impulseScale[kBlockWidth]{}; ///< of the accumulated impulse, in (0, 1)
     PointLanes p[2];
+};
+
+/// The soft constraint's coefficients for one substep (soft_solver.cpp).
+struct Softness {
+    double biasRate = 0;     ///< [1/s]
+    double massScale = 1;    ///< of the effective mass, in (0, 1)
+    double impulseScale = 0; ///< of the accumulated impulse, in (0, 1)
 };
 
 /// What a pass of the kernel needs besides the blocks and bodies.
@@ -63,6 +70,9 @@ struct PassSettings {
     double maxPushSpeed = 0;   ///< how fast the bias pushes overlapping bodies apart [m/s]
     bool useBias = true;       ///< solve (true) or relax (false)
     bool friction = true;      ///< friction impulses in this pass
+    /// Between two moving bodies [0], and against one that does not move [1] (a lane whose
+    /// A or B has inverse mass 0).
+    Softness softness[2];
 };
 
 /// The kernel's passes over blocks [0, count), in order.

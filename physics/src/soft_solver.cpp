@@ -70,8 +70,8 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     // The two softnesses a contact can have (fillLane): between moving bodies, and twice the
     // frequency against a body that does not move.
     const double hertz = m_settings.contactFrequency / m_substep;
-    m_softness[0] = softness(hertz, m_settings.dampingRatio, m_substep);
-    m_softness[1] = softness(2.0 * hertz, m_settings.dampingRatio, m_substep);
+    m_pass.softness[0] = softness(hertz, m_settings.dampingRatio, m_substep);
+    m_pass.softness[1] = softness(2.0 * hertz, m_settings.dampingRatio, m_substep);
 
     const size_t n = bodies.size();
     m_state.assign(n + 1, soft::BodyState{});
@@ -89,6 +89,7 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
         s.vx = b.velocity.x();
         s.vy = b.velocity.y();
         s.w = b.angularVelocity;
+        s.invMass = b.isActive() ? b.invMass : 0.0;
         m_position[i] = b.position;
         m_angle[i] = b.angle;
         if (b.isActive()) {
@@ -231,21 +232,15 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
     const double mA = a.isActive() ? a.invMass : 0.0, iA = a.isActive() ? a.invInertia : 0.0;
     const double mB = b.isActive() ? b.invMass : 0.0, iB = b.isActive() ? b.invInertia : 0.0;
     const auto l = static_cast<size_t>(lane);
+    // The inverse masses mA, mB are the bodies' own (BodyState::invMass, set in begin()).
     k.a[l] = ct.a;
     k.b[l] = ct.b;
-    k.invMassA[l] = mA;
     k.invIA[l] = iA;
-    k.invMassB[l] = mB;
     k.invIB[l] = iB;
     const Vec2 n = ct.manifold.normal, t(n.y(), -n.x());
     k.nx[l] = n.x();
     k.ny[l] = n.y();
     k.friction[l] = ct.friction;
-    const bool oneSided = mA == 0.0 || mB == 0.0;
-    const Softness& soft = m_softness[oneSided ? 1 : 0];
-    k.biasRate[l] = soft.biasRate;
-    k.massScale[l] = soft.massScale;
-    k.impulseScale[l] = soft.impulseScale;
 
     const double substeps = m_settings.substeps;
     for (int i = 0; i < ct.manifold.pointCount; ++i) {

@@ -17,9 +17,7 @@
 namespace rigidlab::physics {
 
 /// A soft constraint's coefficients for one substep (soft_solver.cpp).
-struct Softness {
-    double biasRate = 0, massScale = 1, impulseScale = 0;
-};
+using soft::Softness;
 
 class SoftSolver {
 public:
@@ -91,7 +89,6 @@ private:
     double m_substep = 0; ///< [s]
     soft::Kernel m_kernel{};
     soft::PassSettings m_pass;
-    Softness m_softness[2]; ///< this step's: between moving bodies, against a resting one
 
     std::vector<soft::BodyState> m_state;      ///< per body, and a spare one for empty lanes
     std::vector<int> m_moving;                 ///< awake dynamic bodies
