@@ -34,10 +34,13 @@ double outerRadius(const Body& b)
     return b.shape.visit(
         Overloaded{[&](const Circle& c) { return (c.center - b.localCenter).norm() + c.radius; },
                    [&](const Polygon& p) {
-                       double r = 0;
+                       // One square root of the largest square: the same number as the
+                       // largest root (the square root is monotonic and correctly rounded),
+                       // for every body in every step.
+                       double r2 = 0;
                        for (const Vec2& v : p.vertices)
-                           r = std::max(r, (v - b.localCenter).norm());
-                       return r;
+                           r2 = std::max(r2, (v - b.localCenter).squaredNorm());
+                       return std::sqrt(r2);
                    }});
 }
 

@@ -48,11 +48,14 @@ namespace {
 /// in a pyramid of 5050 boxes one such contact somewhere made every step pay for the phase.
 bool collisionsToSolve(const std::vector<Contact>& contacts, const std::vector<Contact>& previous,
                        const std::vector<Body>& bodies, const std::vector<Vec2>& acceleration,
-                       const std::vector<double>& angularAcceleration, double dt, double threshold)
+                       const std::vector<double>& angularAcceleration, double dt, double threshold,
+                       bool anyRestitution)
 {
     for (const Contact& ct : previous)
         if (ct.bounceImpulse[0] > 0 || ct.bounceImpulse[1] > 0)
             return true;
+    if (!anyRestitution) // a contact's restitution is the larger of its two bodies'
+        return false;
     const auto velocity = [&](int id, Vec2& v, double& w) {
         const auto i = static_cast<size_t>(id);
         const Body& b = bodies[i];
@@ -94,8 +97,9 @@ double World::softCollisions(double threshold)
     s.impactShift.clear();
     s.impactTurn.clear();
     const double h = m_def.dt;
-    if (m_contacts.empty() || !collisionsToSolve(m_contacts, s.previous, m_bodies, s.acceleration,
-                                                 s.angularAcceleration, h, threshold))
+    if (m_contacts.empty() ||
+        !collisionsToSolve(m_contacts, s.previous, m_bodies, s.acceleration, s.angularAcceleration,
+                           h, threshold, s.anyRestitution))
         return 0.0;
     // Each moving body where it would end the step without contacts (symplectic Euler): where
     // the sequential solver's collision phase finds it.
@@ -164,8 +168,10 @@ void World::softStep()
     s.acceleration.resize(n);
     s.angularAcceleration.resize(n);
     double dragPower = 0.0; // at the start of the step [W]
+    s.anyRestitution = false;
     for (size_t i = 0; i < n; ++i) {
         const Body& b = m_bodies[i];
+        s.anyRestitution = s.anyRestitution || b.restitution > 0.0;
         if (!b.isActive())
             continue;
         const AppliedLoad load = appliedLoad(m_def, b, b.velocity, b.angularVelocity);

@@ -39,6 +39,8 @@ struct World::Scratch {
     /// how far its bounce moves it back, -f dt dv and -f dt dw (empty: nothing bounced).
     std::vector<Vec2> softVelocity, impactShift;
     std::vector<double> softAngularVelocity, impactTurn;
+    /// Some body has restitution this step (else no contact has, and none can bounce).
+    bool anyRestitution = true;
     /// The direct integration's accelerations [m/s^2] and [rad/s^2].
     std::vector<Vec2> acceleration;
     std::vector<double> angularAcceleration;
