@@ -170,11 +170,9 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
         const Polygon* pa = a.shape.asPolygon();
         const Polygon* pb = b.shape.asPolygon();
         if (pa && pb) {
-            // Two polygons: the SAT on their placements of this step, without recording,
-            // trying last step's separating axis first.
+            // Two polygons. A pair that barely moved since the SAT chose its faces is clipped
+            // from the same faces, placing only their points (FaceChoice).
             const RelativePlacement now(a, xfA, b, xfB);
-            // A pair that barely moved: clipped from the faces the SAT chose before, placing
-            // only their points.
             const TouchingPair* kept = cache.reuseFaces ? touchingBefore.find(ia, ib) : nullptr;
             if (kept && facesStand(*kept, now, xfA, xfB, a, b, pairMargin)) {
                 const Faces& faces = kept->choice.faces;
@@ -191,7 +189,8 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
                 }
                 c.manifold = Manifold{};
             }
-            // The whole SAT, trying last step's separating axis first.
+            // Else the SAT on the polygons placed for this step, without recording, trying
+            // last step's separating axis first; a touching pair keeps the faces it chose.
             placed.place(ia, *pa, xfA);
             placed.place(ib, *pb, xfB);
             const WorldPolygon wa = placed.view(ia), wb = placed.view(ib);
