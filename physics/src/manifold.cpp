@@ -80,14 +80,6 @@ int incidentEdge(const WorldPolygon& ref, int refEdge, const WorldPolygon& inc, 
     return best;
 }
 
-void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const WorldPolygon& inc,
-                          const Transform& xfInc, int owner, int refEdge, double margin,
-                          bool intersecting, Manifold& m)
-{
-    clipPolygonManifold(ref, xfRef, inc, xfInc, {owner, refEdge, incidentEdge(ref, refEdge, inc)},
-                        margin, intersecting, m);
-}
-
 namespace {
 
 /// The next vertex's index around a polygon of `count` vertices.
@@ -97,6 +89,22 @@ int nextIndex(int i, int count)
 }
 
 } // namespace
+
+FacePoints facePoints(const Polygon& ref, const Transform& xfRef, const Polygon& inc,
+                      const Transform& xfInc, const Faces& faces)
+{
+    // The arithmetic of the polygons' placement (placePolygon, sat.cpp): xf.apply of each
+    // vertex, xf.q.apply of the normal.
+    const auto vertex = [](const Polygon& p, int i, const Transform& xf) {
+        return xf.apply(p.vertices[static_cast<size_t>(i)]);
+    };
+    const auto count = [](const Polygon& p) { return static_cast<int>(p.vertices.size()); };
+    return {xfRef.q.apply(ref.normals[static_cast<size_t>(faces.refEdge)]),
+            vertex(ref, faces.refEdge, xfRef),
+            vertex(ref, nextIndex(faces.refEdge, count(ref)), xfRef),
+            vertex(inc, faces.incEdge, xfInc),
+            vertex(inc, nextIndex(faces.incEdge, count(inc)), xfInc)};
+}
 
 bool clipFaces(const FacePoints& f, const Transform& xfRef, const Transform& xfInc,
                const Faces& faces, double margin, bool intersecting, Manifold& m)

@@ -104,14 +104,6 @@ void collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const Wo
                            const Transform& xfB, double margin, int& separatingAxis,
                            Manifold& manifold, FaceChoice* choice = nullptr);
 
-/// Builds the manifold of two polygons with `ref` as the reference polygon (owner 0 is A,
-/// 1 is B) and its edge `refEdge` as the reference face (manifold.cpp): clipPolygonManifold
-/// with the incidentEdge. `intersecting`: the SAT found no separating axis, so a contact is
-/// kept even when clipping keeps nothing.
-void buildPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const WorldPolygon& inc,
-                          const Transform& xfInc, int owner, int refEdge, double margin,
-                          bool intersecting, Manifold& m);
-
 /// The incident edge of `inc` for the reference face `refEdge` of `ref`: the edge whose normal
 /// is most nearly opposite. `lead`, when given: by how much that normal's cosine beats the
 /// next edge's, less the tie tolerance; a relative turn smaller than half of it cannot change
@@ -125,13 +117,22 @@ struct FacePoints {
     Vec2 normal, r1, r2, i1, i2;
 };
 
+/// The face points of two polygons placed by their transforms, with the arithmetic of the
+/// polygons' placement (WorldPolygons), so that clipping them gives the bits that clipping
+/// the placed polygons gives: a pair clipped from kept faces places only these.
+FacePoints facePoints(const Polygon& ref, const Transform& xfRef, const Polygon& inc,
+                      const Transform& xfInc, const Faces& faces);
+
 /// Clips the incident edge to the reference face (clipPolygonManifold without its fallback).
 /// Returns true when a point was kept; false leaves `m` to be reset or completed.
 bool clipFaces(const FacePoints& f, const Transform& xfRef, const Transform& xfInc,
                const Faces& faces, double margin, bool intersecting, Manifold& m);
 
-/// The manifold from the given faces (buildPolygonManifold's clipping). Returns true when
-/// clipping kept a point, so that the manifold does not depend on `intersecting`.
+/// The manifold of two placed polygons from the given faces: the incident edge clipped to
+/// the reference face (the reference polygon `ref` is A for faces.owner 0, B for 1).
+/// `intersecting`: the SAT found no separating axis, so a contact is kept even when clipping
+/// keeps nothing (the incident polygon's deepest vertex). Returns true when clipping kept a
+/// point, so that the manifold does not depend on `intersecting`.
 bool clipPolygonManifold(const WorldPolygon& ref, const Transform& xfRef, const WorldPolygon& inc,
                          const Transform& xfInc, const Faces& faces, double margin,
                          bool intersecting, Manifold& m);

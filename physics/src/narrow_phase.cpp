@@ -79,21 +79,6 @@ bool facesStand(const TouchingPair& kept, const RelativePlacement& now, const Tr
            choice.least - moved >= -margin;
 }
 
-/// The points of `faces` placed in the world, with the arithmetic of the polygons' placement
-/// (WorldPolygons), so that clipping them gives the bits that clipping the placed polygons
-/// gives.
-FacePoints facePoints(const Polygon& ref, const Transform& xfRef, const Polygon& inc,
-                      const Transform& xfInc, const Faces& faces)
-{
-    const auto vertex = [](const Polygon& p, int i, const Transform& xf) {
-        const size_t count = p.vertices.size();
-        return xf.apply(p.vertices[static_cast<size_t>(i) % count]);
-    };
-    return {xfRef.q.apply(ref.normals[static_cast<size_t>(faces.refEdge)]),
-            vertex(ref, faces.refEdge, xfRef), vertex(ref, faces.refEdge + 1, xfRef),
-            vertex(inc, faces.incEdge, xfInc), vertex(inc, faces.incEdge + 1, xfInc)};
-}
-
 /// Static, or dynamic and asleep: it does not move this step.
 bool rests(const Body& body)
 {

@@ -186,31 +186,28 @@ int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb
     const WorldPolygon& inc = owner == 0 ? wb : wa;
     const Transform& xfRef = owner == 0 ? xfA : xfB;
     const Transform& xfInc = owner == 0 ? xfB : xfA;
-    if constexpr (std::is_same_v<Result, EngineVerdict>) {
-        if (r.choice) {
-            // Every overlap changes by at most as much as the other polygon's vertices move
-            // in this polygon's frame: each polygon keeps its least edge while that is less
-            // than half of the edge's lead over the next (FaceChoice).
-            double lead = 0.0;
-            const Faces faces{owner, leastEdge[owner],
-                              incidentEdge(ref, leastEdge[owner], inc, &lead)};
-            const bool kept = clipPolygonManifold(ref, xfRef, inc, xfInc, faces, margin,
-                                                  r.intersects, r.manifold);
-            *r.choice = {.faces = faces,
-                         .least = least,
-                         .edgeRoom =
-                             0.5 * std::min(nextOwn[0] - leastOwn[0], nextOwn[1] - leastOwn[1]),
-                         .ownerRoom = std::abs(leastOwn[1] - (leastOwn[0] - kReferenceHysteresis)),
-                         .tilt = (wa.n[static_cast<size_t>(leastEdge[0])] +
-                                  wb.n[static_cast<size_t>(leastEdge[1])])
-                                     .norm(),
-                         .turnRoom = 0.5 * lead,
-                         .kept = kept};
-            return -1;
-        }
-    }
-    buildPolygonManifold(ref, xfRef, inc, xfInc, owner, leastEdge[owner], margin, r.intersects,
-                         r.manifold);
+    // The choice's margins (FaceChoice), for the engine's path when asked: every overlap
+    // changes by at most as much as the other polygon's vertices move in this polygon's
+    // frame, so each polygon keeps its least edge while that is less than half of the edge's
+    // lead over the next.
+    FaceChoice* choice = nullptr;
+    if constexpr (std::is_same_v<Result, EngineVerdict>)
+        choice = r.choice;
+    double lead = 0.0;
+    const Faces faces{owner, leastEdge[owner],
+                      incidentEdge(ref, leastEdge[owner], inc, choice ? &lead : nullptr)};
+    const bool kept =
+        clipPolygonManifold(ref, xfRef, inc, xfInc, faces, margin, r.intersects, r.manifold);
+    if (choice)
+        *choice = {.faces = faces,
+                   .least = least,
+                   .edgeRoom = 0.5 * std::min(nextOwn[0] - leastOwn[0], nextOwn[1] - leastOwn[1]),
+                   .ownerRoom = std::abs(leastOwn[1] - (leastOwn[0] - kReferenceHysteresis)),
+                   .tilt = (wa.n[static_cast<size_t>(leastEdge[0])] +
+                            wb.n[static_cast<size_t>(leastEdge[1])])
+                               .norm(),
+                   .turnRoom = 0.5 * lead,
+                   .kept = kept};
     return -1;
 }
 

@@ -206,6 +206,13 @@ void solvePass(Block* blocks, int count, BodyState* bodies, const PassSettings& 
 {
     const V zero = splat(0.0);
     const V inverseSubstep = splat(s.inverseSubstep), maxPush = splat(-s.maxPushSpeed);
+    // The two softnesses, [0] between moving bodies and [1] against one that does not move,
+    // splatted once per pass.
+    const Softness& two = s.softness[0];
+    const Softness& one = s.softness[1];
+    const V biasRates[2] = {splat(two.biasRate), splat(one.biasRate)};
+    const V massScales[2] = {splat(two.massScale), splat(one.massScale)};
+    const V impulseScales[2] = {splat(two.impulseScale), splat(one.impulseScale)};
     for (int k = 0; k < count; ++k) {
         Block& c = blocks[k];
         Side A = gather(c.a, bodies), B = gather(c.b, bodies);
@@ -217,11 +224,9 @@ void solvePass(Block* blocks, int count, BodyState* bodies, const PassSettings& 
         V biasRate = zero, massScale = zero, impulseScale = zero;
         if constexpr (kBias) {
             const auto oneSided = (mA == zero) | (mB == zero);
-            const Softness& one = s.softness[1];
-            const Softness& two = s.softness[0];
-            biasRate = oneSided ? splat(one.biasRate) : splat(two.biasRate);
-            massScale = oneSided ? splat(one.massScale) : splat(two.massScale);
-            impulseScale = oneSided ? splat(one.impulseScale) : splat(two.impulseScale);
+            biasRate = oneSided ? biasRates[1] : biasRates[0];
+            massScale = oneSided ? massScales[1] : massScales[0];
+            impulseScale = oneSided ? impulseScales[1] : impulseScales[0];
         }
         for (PointLanes& p : c.p) {
             const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);

@@ -105,19 +105,21 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     buildBlocks(contacts, bodies);
 }
 
+SoftSolver::ColourKey SoftSolver::colourKey(const Contact& ct, const std::vector<Body>& bodies)
+{
+    return {ct.a, ct.b, bodies[static_cast<size_t>(ct.a)].isActive(),
+            bodies[static_cast<size_t>(ct.b)].isActive()};
+}
+
 bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
                                const std::vector<Body>& bodies) const
 {
     if (contacts.size() != m_keys.size() || bodies.size() != m_keyBodies ||
         m_kernel.width != m_keyWidth)
         return false;
-    for (size_t ci = 0; ci < contacts.size(); ++ci) {
-        const Contact& ct = contacts[ci];
-        const ColourKey key{ct.a, ct.b, bodies[static_cast<size_t>(ct.a)].isActive(),
-                            bodies[static_cast<size_t>(ct.b)].isActive()};
-        if (!(key == m_keys[ci]))
+    for (size_t ci = 0; ci < contacts.size(); ++ci)
+        if (!(colourKey(contacts[ci], bodies) == m_keys[ci]))
             return false;
-    }
     return true;
 }
 
@@ -147,7 +149,7 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
         const Contact& ct = contacts[ci];
         const Body& a = bodies[static_cast<size_t>(ct.a)];
         const Body& b = bodies[static_cast<size_t>(ct.b)];
-        m_keys.push_back({ct.a, ct.b, a.isActive(), b.isActive()});
+        m_keys.push_back(colourKey(ct, bodies));
         if (!a.isActive() && !b.isActive())
             continue;
         std::uint64_t used = 0;
@@ -229,10 +231,11 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
     (void)contactIndex;
     const Body& a = bodies[static_cast<size_t>(ct.a)];
     const Body& b = bodies[static_cast<size_t>(ct.b)];
-    const double mA = a.isActive() ? a.invMass : 0.0, iA = a.isActive() ? a.invInertia : 0.0;
-    const double mB = b.isActive() ? b.invMass : 0.0, iB = b.isActive() ? b.invInertia : 0.0;
+    // The inverse masses are the bodies' own (BodyState::invMass, set in begin()).
+    const double mA = m_state[static_cast<size_t>(ct.a)].invMass;
+    const double mB = m_state[static_cast<size_t>(ct.b)].invMass;
+    const double iA = a.isActive() ? a.invInertia : 0.0, iB = b.isActive() ? b.invInertia : 0.0;
     const auto l = static_cast<size_t>(lane);
-    // The inverse masses mA, mB are the bodies' own (BodyState::invMass, set in begin()).
     k.a[l] = ct.a;
     k.b[l] = ct.b;
     k.invIA[l] = iA;

@@ -69,6 +69,7 @@ private:
         bool movesA = false, movesB = false;
         bool operator==(const ColourKey&) const = default;
     };
+    static ColourKey colourKey(const Contact& ct, const std::vector<Body>& bodies);
     void buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
     /// Whether the colouring of the last buildBlocks() holds for these contacts: the same keys
     /// in the same order, the same bodies and lanes (a pile at rest, step after step). Then
