@@ -1,0 +1,104 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The code's shape, as docs/design.md promises it: no source or test file over 600 lines, no
+function over 80 lines except those named in design.md's "Long on purpose" table, and no ui/
+subfolder that includes another which includes it back.
+
+Functions are found by Universal Ctags (their first and last line); a file is every tracked
+.cpp/.h under physics/, lessons/, ui/, app/, bench/ and tests/. Exit 0 when everything holds;
+otherwise one line per finding and exit 1.
+
+usage: check_code_shape.py SOURCE_DIR
+"""
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+MAX_FILE_LINES = 600
+MAX_FUNCTION_LINES = 80
+ROOMS = ["physics", "lessons", "ui", "app", "bench", "tests"]
+
+
+def sources(root):
+    out = []
+    for room in ROOMS:
+        base = root / room
+        if base.is_dir():
+            out += [p for p in base.rglob("*") if p.suffix in (".cpp", ".h") and p.is_file()]
+    return sorted(out)
+
+
+def exceptions(root):
+    """Rows `| path | function | reason |` under the heading "Long on purpose" in design.md."""
+    design = root / "docs" / "design.md"
+    allowed = set()
+    if not design.is_file():
+        return allowed
+    inside = False
+    for line in design.read_text(encoding="utf-8").splitlines():
+        if line.startswith("#"):
+            inside = "long on purpose" in line.lower()
+            continue
+        if inside and line.startswith("|"):
+            cells = [c.strip().strip("`") for c in line.strip().strip("|").split("|")]
+            if len(cells) >= 3 and cells[0] and not set(cells[0]) <= set("-: "):
+                allowed.add((cells[0], cells[1]))
+    return allowed
+
+
+def long_functions(root, files):
+    cmd = ["ctags", "-x", "--_xformat=%F\t%n\t%e\t%N", "--kinds-c++=f", "--language-force=c++",
+           "-f", "-"] + [str(f.relative_to(root)) for f in files]
+    out = subprocess.run(cmd, cwd=root, capture_output=True, text=True, check=True).stdout
+    found = []
+    for line in out.splitlines():
+        parts = line.split("\t")
+        if len(parts) != 4 or not parts[2].isdigit():
+            continue
+        path, start, end, name = parts[0], int(parts[1]), int(parts[2]), parts[3]
+        length = end - start + 1
+        if length > MAX_FUNCTION_LINES:
+            found.append((path, name, length))
+    return found
+
+
+def include_cycles(root):
+    ui = root / "ui"
+    if not ui.is_dir():
+        return []
+    rooms = sorted(p.name for p in ui.iterdir() if p.is_dir())
+    uses = {r: set() for r in rooms}
+    pattern = re.compile(r'#include\s+"([a-z_]+)/')
+    for r in rooms:
+        for f in (ui / r).rglob("*"):
+            if f.suffix in (".cpp", ".h"):
+                for m in pattern.finditer(f.read_text(encoding="utf-8", errors="replace")):
+                    if m.group(1) in uses and m.group(1) != r:
+                        uses[r].add(m.group(1))
+    return [(a, b) for a in rooms for b in rooms if a < b and b in uses[a] and a in uses[b]]
+
+
+def main():
+    root = Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
+    files = sources(root)
+    problems = []
+    for f in files:
+        n = len(f.read_text(encoding="utf-8", errors="replace").splitlines())
+        if n > MAX_FILE_LINES:
+            problems.append(f"{f.relative_to(root)}: {n} lines (at most {MAX_FILE_LINES})")
+    allowed = exceptions(root)
+    for path, name, length in long_functions(root, files):
+        if (path, name) not in allowed:
+            problems.append(f"{path}: function {name} is {length} lines (at most "
+                            f"{MAX_FUNCTION_LINES}, or listed in docs/design.md, Long on purpose)")
+    for a, b in include_cycles(root):
+        problems.append(f"ui/{a} and ui/{b} include each other")
+    for p in problems:
+        print(p)
+    print(f"{len(files)} files read, {len(problems)} findings")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
