@@ -4,6 +4,7 @@
 
 #include "bench.h"
 #include "cli_common.h"
+#include "cli_fit.h"
 #include "cli_lesson.h"
 #include "cli_numerics.h"
 #include "format/atomic_file.h"
@@ -85,6 +86,21 @@ Commands:
       --balls N              balls in the gas (default 300)
       --time T               simulated time [s] (default 60)
       --dt DT                time step [s] (default 0.001)
+  fit SCENE.json MEASUREMENT.csv [OPTIONS]
+                             fit the scene's parameters to a measured time series by least
+                             squares over runs of the scene; prints each value with its
+                             95 % interval and standard uncertainty, and the residual RMS
+                             (file layouts: lessons/measure/MEASUREMENT_FORMAT.md)
+      --param P              a parameter, once per parameter (one to three): restitution,
+                             friction (every body), restitution:BODY, friction:BODY,
+                             restitution:A,B, friction:A,B (a pair), vx:BODY, vy:BODY
+      --quantity Q:BODY      what the measurement holds: x, y, vx, vy or v of a body
+      --bounce-times         fit restitution from the times of the bounces alone
+                             (successive flights shrink by e); no --quantity
+      --time-zero T          the file's time at which the scene starts [s] (default 0)
+      --origin X,Y           where the scene's origin is in the file's frame [m]
+      --time-unit U          the file's time unit: s, ms, min (default: from the header)
+      --length-unit U        the file's length unit: m, cm, mm (default: from the header)
   --help                     this text
   --version                  the version of rigidlab-cli
 
@@ -329,6 +345,7 @@ constexpr Command kCommands[] = {
     {QLatin1StringView("bench"), &commandBench},
     {QLatin1StringView("lesson"), &cli::commandLesson},
     {QLatin1StringView("lessons"), &cli::commandLessons},
+    {QLatin1StringView("fit"), &cli::commandFit},
 };
 
 } // namespace

@@ -1078,6 +1078,173 @@
     </message>
 </context>
 <context>
+    <name>rigidlab::measure</name>
+    <message>
+        <source>unknown body &quot;%1&quot; (the scene has: %2)</source>
+        <translation>neznámé těleso &quot;%1&quot; (scéna má: %2)</translation>
+    </message>
+    <message>
+        <source>the measurement does not depend on %1: it cannot be fitted from it</source>
+        <translation>měření na %1 nezávisí: z&#xa0;něj ho nelze určit</translation>
+    </message>
+    <message>
+        <source>the parameters cannot be told apart by this measurement</source>
+        <translation>toto měření parametry od sebe neodliší</translation>
+    </message>
+    <message>
+        <source>unknown parameter &quot;%1&quot; (expected restitution, friction, vx or vy)</source>
+        <translation>neznámý parametr &quot;%1&quot; (očekáváno: restitution, friction, vx nebo vy)</translation>
+    </message>
+    <message>
+        <source>%1: name one body, as in %2:ball</source>
+        <translation>%1: uveďte jedno těleso, např. %2:ball</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: expected QUANTITY:BODY with QUANTITY x, y, vx, vy or v, as in y:ball</source>
+        <translation>&quot;%1&quot;: očekáváno VELIČINA:TĚLESO, kde VELIČINA je x, y, vx, vy nebo v, např. y:ball</translation>
+    </message>
+    <message>
+        <source>the measurement lasts %1 s, more than %2 steps of the scene&apos;s %3 s</source>
+        <translation>měření trvá %1&#xa0;s, víc než %2 kroků scény po %3&#xa0;s</translation>
+    </message>
+    <message>
+        <source>fit one to three parameters</source>
+        <translation>určit lze jeden až tři parametry</translation>
+    </message>
+    <message>
+        <source>%1 points cannot fit %2 parameters: measure more</source>
+        <translation>počet bodů (%1) nestačí na počet parametrů (%2): změřte víc</translation>
+    </message>
+    <message>
+        <source>%1 bounce times: e needs at least %2 (three flights between them)</source>
+        <translation>časů odrazů je %1: k&#xa0;určení e je potřeba aspoň %2 (tři lety mezi nimi)</translation>
+    </message>
+    <message>
+        <source>bounce %1 is not after bounce %2</source>
+        <translation>odraz %1 nenásleduje po odrazu %2</translation>
+    </message>
+    <message>
+        <source>the flights between the bounces do not get shorter (e = %1): not the bounces of one ball</source>
+        <translation>lety mezi odrazy se nezkracují (e = %1): to nejsou odrazy jednoho míčku</translation>
+    </message>
+    <message>
+        <source>column %1</source>
+        <translation>sloupec %1</translation>
+    </message>
+    <message>
+        <source>column %1 (&quot;%2&quot;)</source>
+        <translation>sloupec %1 (&quot;%2&quot;)</translation>
+    </message>
+    <message>
+        <source>line %1, %2</source>
+        <translation>řádek %1, %2</translation>
+    </message>
+    <message>
+        <source>%1: unknown unit &quot;%2&quot; for %3 (expected %4, or set the unit)</source>
+        <translation>%1: neznámá jednotka &quot;%2&quot; pro %3 (očekáváno %4, nebo jednotku nastavte)</translation>
+    </message>
+    <message>
+        <source>%1: the time is missing</source>
+        <translation>%1: chybí čas</translation>
+    </message>
+    <message>
+        <source>%1: %2 is too large in the lab&apos;s units</source>
+        <translation>%1: %2 je v&#xa0;jednotkách laboratoře příliš velké</translation>
+    </message>
+    <message>
+        <source>%1: the time %2 is not after %3 on line %4 (time must rise from row to row)</source>
+        <translation>%1: čas %2 není větší než %3 na řádku %4 (čas musí od řádku k&#xa0;řádku růst)</translation>
+    </message>
+    <message>
+        <source>the mapping names %1 columns, the file has %2</source>
+        <translation>přiřazení uvádí sloupců: %1, soubor jich má %2</translation>
+    </message>
+    <message>
+        <source>%1 and %2 both hold %3: map one of them</source>
+        <translation>%1 i&#xa0;%2 obsahují %3: přiřaďte jen jeden z&#xa0;nich</translation>
+    </message>
+    <message>
+        <source>no column holds the time (name it t or Time (s), or map a column to it)</source>
+        <translation>žádný sloupec neobsahuje čas (pojmenujte ho t nebo Time (s), nebo mu sloupec přiřaďte)</translation>
+    </message>
+    <message>
+        <source>line %1: only one column; a time series needs the time and a measured value (or read it as bounce times)</source>
+        <translation>řádek %1: jen jeden sloupec; časová řada potřebuje čas a&#xa0;naměřenou hodnotu (nebo ho načtěte jako časy odrazů)</translation>
+    </message>
+    <message>
+        <source>%1: no numbers from time zero on</source>
+        <translation>%1: od nulového času dál žádná čísla</translation>
+    </message>
+    <message>
+        <source>no column holds a measured value (x, y, vx, vy or v)</source>
+        <translation>žádný sloupec neobsahuje naměřenou hodnotu (x, y, vx, vy nebo v)</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>řádek %1</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>řádek %1, sloupec %2</translation>
+    </message>
+    <message>
+        <source>line %1, column %2 (&quot;%3&quot;)</source>
+        <translation>řádek %1, sloupec %2 (&quot;%3&quot;)</translation>
+    </message>
+    <message>
+        <source>%1: binary data (byte %2), not text</source>
+        <translation>%1: binární data (bajt %2), ne text</translation>
+    </message>
+    <message>
+        <source>%1: %2 values where the header (or the first row) has %3: a ragged row</source>
+        <translation>%1: hodnot je %2, ale záhlaví (nebo první řádek) jich má %3: nerovný řádek</translation>
+    </message>
+    <message>
+        <source>%1: more than %2 rows of numbers (the limit)</source>
+        <translation>%1: víc než %2 řádků čísel (limit)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a number</source>
+        <translation>&quot;%1&quot; není číslo</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a finite number</source>
+        <translation>&quot;%1&quot; není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1: the header names %2 columns, the rows below it have %3</source>
+        <translation>%1: záhlaví uvádí sloupců: %2, řádky pod ním jich mají %3</translation>
+    </message>
+    <message>
+        <source>larger than %1 MB (the limit)</source>
+        <translation>větší než %1&#xa0;MB (limit)</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>soubor je prázdný</translation>
+    </message>
+    <message>
+        <source>%1: a quote (&quot;) is not closed</source>
+        <translation>%1: uvozovka (&quot;) není uzavřená</translation>
+    </message>
+    <message>
+        <source>no row of numbers in the first %1 lines</source>
+        <translation>v&#xa0;prvních %1 řádcích není žádný řádek čísel</translation>
+    </message>
+    <message>
+        <source>no row of numbers (a measurement has a number in every column of its rows)</source>
+        <translation>žádný řádek čísel (měření má v&#xa0;každém sloupci svých řádků číslo)</translation>
+    </message>
+    <message>
+        <source>%1: %2 columns, more than %3 (the limit)</source>
+        <translation>%1: sloupců je %2, víc než %3 (limit)</translation>
+    </message>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>nelze číst: %1</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::BouncePanel</name>
     <message>
         <source>Heights of the centre above where it touched down. With a coefficient of restitution e, each bounce should reach e² times the one before.</source>
