@@ -114,7 +114,7 @@ void TestSoftSolver::stackStands()
     RL_VERIFY_AT_MOST(maxTurn, 0.01);
 }
 
-// Pyramids of 1 m boxes at dt = 1/60 s for 10 s, the benchmark's figures (tests/bench): the
+// Pyramids of 1 m boxes at dt = 1/60 s for 10 s, the benchmark's figures (bench/): the
 // top box's height within 5 cm of where it started and nothing toppled (no box moved more than
 // 0.5 m sideways or turned more than 0.2 rad). The sequential-impulse solver's top sinks
 // 0.13-0.23 m at base 40. No box creeps more than 3 cm sideways (with the contact's damping

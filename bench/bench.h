@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Benchmarks: the same scenes built in any engine, stepped and timed by one harness, so that
-// RigidLab and its peers (Box2D, Chipmunk: tests/bench/) are measured on equal terms.
+// RigidLab and its peers (Box2D, Chipmunk: bench/) are measured on equal terms.
 //
 // A scene is described here without reference to an engine (shapes, poses, densities,
 // friction); an engine adapter builds it in its own world. The harness times the steps
