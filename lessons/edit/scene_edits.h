@@ -9,6 +9,7 @@
 // index in scene.bodies (physics::BodyId); physics::kWorld stands for the world.
 
 #include "format/scene.h"
+#include "format/scene_schema.h"
 
 #include <QCoreApplication>
 #include <QString>
@@ -82,7 +83,15 @@ EditResult addSpring(const Scene& scene, physics::BodyId a, const physics::Vec2&
                      physics::BodyId b, const physics::Vec2& pointB, double stiffness,
                      double damping = 0.0);
 
-/// A number of a body the inspector edits.
+/// Sets the field `key` of object `index` of `object` (scene_schema.h) to `value`: for a pair,
+/// `component` 0 or 1 sets that component alone (a number), -1 the whole pair. Checked with
+/// the loader's rules and words; a body's pins to the world follow its position and angle.
+/// Setting density lets the mass follow from it again; an unset value (std::monostate) gives
+/// an optional field back to its default (a body's restitution: the world's).
+EditResult setField(const Scene& scene, schema::Object object, std::size_t index,
+                    std::string_view key, const schema::Value& value, int component = -1);
+
+/// A number of a body, by name (setField with its key and component).
 enum class BodyNumber {
     PositionX,       ///< [m]
     PositionY,       ///< [m]

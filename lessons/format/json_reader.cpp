@@ -303,24 +303,26 @@ void JsonReader::warn(const QString& place, const QString& what)
 bool JsonReader::checkKeys(const QJsonObject& object, const QString& place,
                            std::initializer_list<QStringView> allowed)
 {
+    QStringList names;
+    for (QStringView a : allowed) {
+        names.append(a.toString());
+    }
+    return checkKeys(object, place, names);
+}
+
+bool JsonReader::checkKeys(const QJsonObject& object, const QString& place,
+                           const QStringList& allowed)
+{
     if (failed()) {
         return false;
     }
     // QJsonObject iterates its keys sorted: with several unknown keys, the first in
     // alphabetical order is reported, whatever their order in the file.
     for (auto it = object.begin(); it != object.end(); ++it) {
-        const QString key = it.key();
-        bool known = false;
-        for (QStringView a : allowed) {
-            known = known || key == a;
-        }
-        if (!known) {
-            QStringList names;
-            for (QStringView a : allowed) {
-                names.append(a.toString());
-            }
-            return fail(joinPlace(place, key),
-                        FileMessages::tr("unknown key (allowed here: %1)").arg(names.join(u", ")));
+        if (!allowed.contains(it.key())) {
+            return fail(
+                joinPlace(place, it.key()),
+                FileMessages::tr("unknown key (allowed here: %1)").arg(allowed.join(u", ")));
         }
     }
     return true;

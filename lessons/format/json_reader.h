@@ -22,7 +22,7 @@
 namespace rigidlab::lessons::detail {
 
 /// The translation context of what the scene and lesson loaders say about a file. The window
-/// shows these messages in its language (issue 14); rigidlab-cli installs no translation, so
+/// shows these messages in its language; rigidlab-cli installs no translation, so
 /// its messages stay English.
 struct FileMessages {
     Q_DECLARE_TR_FUNCTIONS(FileMessages)
@@ -90,6 +90,7 @@ public:
     /// Every key of `object` must be one of `allowed`; the first other one is an error.
     bool checkKeys(const QJsonObject& object, const QString& place,
                    std::initializer_list<QStringView> allowed);
+    bool checkKeys(const QJsonObject& object, const QString& place, const QStringList& allowed);
 
     /// The document's first key, `key`, must hold `version`; `document` names the kind of file
     /// in the message ("a scene file").

@@ -31,8 +31,6 @@ inline constexpr std::array<std::string_view, 6> kStepOverlayNames{
     "velocities", "contacts", "boxes", "centres", "trails", "springs"};
 inline constexpr std::array<std::string_view, 5> kStepPanelNames{"controls", "inspector", "sat",
                                                                  "bounces", "collision"};
-inline constexpr std::array<std::string_view, 8> kStepControlNames{
-    "integrator", "dt", "solver", "iterations", "restitution", "friction", "gravity", "timeScale"};
 
 /// The version this loader reads (the value of the top-level key "rigidlab-lesson").
 inline constexpr int kLessonFormatVersion = 1;
@@ -108,7 +106,7 @@ struct Comparison {
 /// A step that opens the scene editor (its "editor" key): what the student may use.
 struct EditorLock {
     QStringList tools;      ///< of lessons::kEditorToolNames (editor_tools.h), enabled
-    QStringList properties; ///< of lessons::kEditorPropertyNames, editable; the rest locked
+    QStringList properties; ///< of schema::editorPropertyNames(), editable; the rest locked
 };
 
 struct LessonStep {

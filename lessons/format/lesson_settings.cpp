@@ -2,6 +2,7 @@
 // Lesson files: a step's "settings" on top of its scene's and the worlds its "compare" runs
 // side by side (lessons/LESSON_FORMAT.md). Read for lesson_step.cpp.
 
+#include "format/field_reading.h"
 #include "format/lesson_reading.h"
 #include "format/scene_loader.h"
 #include "format/view_text.h"
@@ -9,13 +10,6 @@
 #include <array>
 
 namespace rigidlab::lessons::detail {
-
-namespace {
-
-constexpr double kMinTimeScale = 0.1;
-constexpr double kMaxTimeScale = 4.0;
-
-} // namespace
 
 bool readSettings(JsonReader& in, const QJsonObject& object, const QString& place,
                   StepSettings& settings)
@@ -25,82 +19,17 @@ bool readSettings(JsonReader& in, const QJsonObject& object, const QString& plac
     }
     const QString at = joinPlace(place, u"settings");
     QJsonObject s;
-    if (!in.asObject(object.value(u"settings"), at, s) ||
-        !in.checkKeys(s, at,
-                      {u"integrator", u"dt", u"solver", u"iterations", u"restitution", u"friction",
-                       u"gravity", u"timeScale"})) {
+    QStringList keys;
+    for (const schema::SettingsField& f : schema::settingsFields()) {
+        keys << QString::fromLatin1(f.key.data(), qsizetype(f.key.size()));
+    }
+    if (!in.asObject(object.value(u"settings"), at, s) || !in.checkKeys(s, at, keys)) {
         return false;
     }
-    QString name;
-    if (s.contains(u"integrator")) {
-        if (!in.string(s, u"integrator", at, name)) {
+    for (const schema::SettingsField& f : schema::settingsFields()) {
+        if (!readPlainField(in, f, s, at, settings, 0)) {
             return false;
         }
-        settings.integrator = physics::integratorFromName(name.toStdString());
-        if (!settings.integrator) {
-            return in.fail(joinPlace(at, u"integrator"), unknownIntegrator(name));
-        }
-    }
-    if (s.contains(u"dt")) {
-        double dt = 0;
-        if (!in.number(s, u"dt", at, dt, NumberRule::Positive)) {
-            return false;
-        }
-        if (dt < kMinDt || dt > kMaxDt) {
-            return in.fail(joinPlace(at, u"dt"),
-                           FileMessages::tr("must be from %1 to %2 s, got %3")
-                               .arg(formatNumber(kMinDt), formatNumber(kMaxDt), formatNumber(dt)));
-        }
-        settings.dt = dt;
-    }
-    if (s.contains(u"solver")) {
-        if (!in.string(s, u"solver", at, name)) {
-            return false;
-        }
-        settings.solver = physics::solverFromName(name.toStdString());
-        if (!settings.solver) {
-            return in.fail(joinPlace(at, u"solver"), unknownSolver(name));
-        }
-    }
-    if (s.contains(u"iterations")) {
-        int n = 0;
-        if (!in.integer(s, u"iterations", at, n, 1, kMaxIterations)) {
-            return false;
-        }
-        settings.iterations = n;
-    }
-    double value = 0;
-    if (s.contains(u"restitution")) {
-        if (!in.number(s, u"restitution", at, value, NumberRule::UnitInterval,
-                       limits::kRestitution)) {
-            return false;
-        }
-        settings.restitution = value;
-    }
-    if (s.contains(u"friction")) {
-        if (!in.number(s, u"friction", at, value, NumberRule::NonNegative, limits::kFriction)) {
-            return false;
-        }
-        settings.friction = value;
-    }
-    if (s.contains(u"gravity")) {
-        bool on = true;
-        if (!in.boolean(s, u"gravity", at, on)) {
-            return false;
-        }
-        settings.gravity = on;
-    }
-    if (s.contains(u"timeScale")) {
-        if (!in.number(s, u"timeScale", at, value, NumberRule::Positive)) {
-            return false;
-        }
-        if (value < kMinTimeScale || value > kMaxTimeScale) {
-            return in.fail(joinPlace(at, u"timeScale"),
-                           FileMessages::tr("must be from %1 to %2, got %3")
-                               .arg(formatNumber(kMinTimeScale), formatNumber(kMaxTimeScale),
-                                    formatNumber(value)));
-        }
-        settings.timeScale = value;
     }
     return true;
 }

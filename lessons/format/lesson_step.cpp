@@ -9,6 +9,7 @@
 #include "format/lesson_reading.h"
 #include "format/scene_loader.h"
 #include "format/scene_path.h"
+#include "format/scene_schema.h"
 
 #include <QDir>
 #include <QFileInfo>
@@ -198,7 +199,8 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
     }
     if (object.contains(u"allow")) {
         QStringList allow;
-        if (!readNames(in, object, u"allow", place, kStepControlNames, u"control", allow)) {
+        if (!readNames(in, object, u"allow", place, schema::stepControlNames(), u"control",
+                       allow)) {
             return false;
         }
         step.allow = allow;
@@ -211,7 +213,7 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
         if (!in.asObject(object.value(u"editor"), at, editor) ||
             !in.checkKeys(editor, at, {u"tools", u"properties"}) ||
             !readNames(in, editor, u"tools", at, kEditorToolNames, u"tool", lock.tools) ||
-            !readNames(in, editor, u"properties", at, kEditorPropertyNames, u"property",
+            !readNames(in, editor, u"properties", at, schema::editorPropertyNames(), u"property",
                        lock.properties)) {
             return false;
         }
@@ -219,7 +221,7 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
             for (std::string_view name : kEditorToolNames)
                 lock.tools << QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
         if (!editor.contains(u"properties"))
-            for (std::string_view name : kEditorPropertyNames)
+            for (std::string_view name : schema::editorPropertyNames())
                 lock.properties << QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
         step.editor = lock;
     }

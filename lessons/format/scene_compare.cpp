@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "format/scene_compare.h"
+#include "format/scene_schema.h"
 
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
@@ -30,21 +31,6 @@ QString text(const QString& s)
     return u'"' + s + u'"';
 }
 
-QString text(std::string_view s)
-{
-    return text(QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size())));
-}
-
-QString text(const std::string& s)
-{
-    return text(std::string_view(s));
-}
-
-QString text(bool b)
-{
-    return b ? QStringLiteral("true") : QStringLiteral("false");
-}
-
 QString text(int i)
 {
     return QString::number(i);
@@ -56,11 +42,6 @@ QString text(const LocalTextMap& m)
     for (auto it = m.cbegin(); it != m.cend(); ++it)
         parts << it.key() + QStringLiteral(": ") + text(it.value());
     return u'{' + parts.join(QStringLiteral(", ")) + u'}';
-}
-
-QString text(const std::optional<bool>& b)
-{
-    return b ? text(*b) : QStringLiteral("unset");
 }
 
 QString text(const std::vector<Vec2>& list)
@@ -95,29 +76,33 @@ QString at(const char* list, std::size_t i, const char* key)
     return QStringLiteral("%1[%2].%3").arg(QLatin1String(list)).arg(i).arg(QLatin1String(key));
 }
 
-void compareWorld(Differ& d, const physics::WorldDef& a, const physics::WorldDef& b)
+/// Every field of `object` the schema lists, the shape aside (compareShape), and the texts of
+/// every language.
+void compareFields(Differ& d, schema::Object object, const Scene& a, const Scene& b, std::size_t i)
 {
-    d.field(QStringLiteral("world.gravity"), a.gravity, b.gravity);
-    d.field(QStringLiteral("world.dt"), a.dt, b.dt);
-    d.field(QStringLiteral("world.integrator"), physics::integratorName(a.integrator),
-            physics::integratorName(b.integrator));
-    d.field(QStringLiteral("world.solver"), physics::solverName(a.solver),
-            physics::solverName(b.solver));
-    d.field(QStringLiteral("world.iterations"), a.iterations, b.iterations);
-    d.field(QStringLiteral("world.restitution"), a.restitution, b.restitution);
-    d.field(QStringLiteral("world.friction"), a.friction, b.friction);
-    d.field(QStringLiteral("world.gravitation"), a.gravitation, b.gravitation);
-    d.field(QStringLiteral("world.drag"), a.drag, b.drag);
-    d.field(QStringLiteral("world.tolerance.absolute"), a.tolerances.absolute,
-            b.tolerances.absolute);
-    d.field(QStringLiteral("world.tolerance.relative"), a.tolerances.relative,
-            b.tolerances.relative);
-    d.field(QStringLiteral("world.continuous"), a.continuous, b.continuous);
-    d.field(QStringLiteral("world.sleep"), a.sleep, b.sleep);
+    const QString place = schema::placeOf(object, i);
+    for (const schema::Field& f : schema::fields(object)) {
+        if (f.kind == schema::Kind::Shape || f.kind == schema::Kind::Size)
+            continue;
+        const QString key = QString::fromLatin1(f.key.data(), qsizetype(f.key.size()));
+        const QString at = place.isEmpty() ? key : place + u'.' + key;
+        const schema::Value x = f.get(a, i);
+        const schema::Value y = f.get(b, i);
+        if (!(x == y))
+            d.note(at, schema::text(x) + QStringLiteral(" vs ") + schema::text(y));
+        if (f.texts)
+            d.field(at + QStringLiteral(" (every language)"), f.texts(a, i), f.texts(b, i));
+    }
 }
 
-void compareShape(Differ& d, std::size_t i, const physics::Shape& a, const physics::Shape& b)
+void compareShape(Differ& d, std::size_t i, const Scene& sa, const Scene& sb)
 {
+    const physics::Shape& a = sa.bodies[i].shape;
+    const physics::Shape& b = sb.bodies[i].shape;
+    const auto original = [](const Scene& s, std::size_t k) {
+        return k < s.originalVertices.size() ? s.originalVertices[k] : std::vector<Vec2>{};
+    };
+    d.field(at("bodies", i, "shape (as the file gave it)"), original(sa, i), original(sb, i));
     const physics::Circle* ca = a.asCircle();
     const physics::Circle* cb = b.asCircle();
     if (!ca != !cb) {
@@ -133,71 +118,26 @@ void compareShape(Differ& d, std::size_t i, const physics::Shape& a, const physi
     d.field(at("bodies", i, "shape.normals"), a.asPolygon()->normals, b.asPolygon()->normals);
 }
 
-void compareBody(Differ& d, std::size_t i, const physics::BodyDef& a, const physics::BodyDef& b)
-{
-    d.field(at("bodies", i, "id"), a.name, b.name);
-    d.field(at("bodies", i, "type"), static_cast<int>(a.type), static_cast<int>(b.type));
-    compareShape(d, i, a.shape, b.shape);
-    d.field(at("bodies", i, "position"), a.position, b.position);
-    d.field(at("bodies", i, "angle"), a.angle, b.angle);
-    d.field(at("bodies", i, "velocity"), a.velocity, b.velocity);
-    d.field(at("bodies", i, "angularVelocity"), a.angularVelocity, b.angularVelocity);
-    d.field(at("bodies", i, "density"), a.density, b.density);
-    d.field(at("bodies", i, "mass"), a.mass, b.mass);
-    d.field(at("bodies", i, "restitution"), a.restitution, b.restitution);
-    d.field(at("bodies", i, "friction"), a.friction, b.friction);
-    d.field(at("bodies", i, "collide"), a.collide, b.collide);
-}
-
 } // namespace
 
 QString sceneDifference(const Scene& a, const Scene& b)
 {
+    using schema::Object;
     Differ d;
-    d.field(QStringLiteral("title"), a.title, b.title);
-    d.field(QStringLiteral("description"), a.description, b.description);
-    d.field(QStringLiteral("title (every language)"), a.titles, b.titles);
-    d.field(QStringLiteral("description (every language)"), a.descriptions, b.descriptions);
-    compareWorld(d, a.world, b.world);
-    d.field(QStringLiteral("bodies (count)"), static_cast<int>(a.bodies.size()),
-            static_cast<int>(b.bodies.size()));
-    for (std::size_t i = 0; i < a.bodies.size() && i < b.bodies.size(); ++i) {
-        compareBody(d, i, a.bodies[i], b.bodies[i]);
-        const auto original = [](const Scene& s, std::size_t k) {
-            return k < s.originalVertices.size() ? s.originalVertices[k] : std::vector<Vec2>{};
-        };
-        d.field(at("bodies", i, "shape (as the file gave it)"), original(a, i), original(b, i));
-        d.field(at("bodies", i, "colour"), a.colourOf(i), b.colourOf(i));
-        const auto id = static_cast<physics::BodyId>(i);
-        d.field(at("bodies", i, "label"), a.hasLabel(id) ? a.bodyLabel(id) : QString(),
-                b.hasLabel(id) ? b.bodyLabel(id) : QString());
-        const auto labelTexts = [](const Scene& s, std::size_t k) {
-            return k < s.labelTexts.size() ? s.labelTexts[k] : LocalTextMap{};
-        };
-        d.field(at("bodies", i, "label (every language)"), labelTexts(a, i), labelTexts(b, i));
-    }
-    d.field(QStringLiteral("springs (count)"), static_cast<int>(a.springs.size()),
-            static_cast<int>(b.springs.size()));
-    for (std::size_t i = 0; i < a.springs.size() && i < b.springs.size(); ++i) {
-        const physics::SpringDef& x = a.springs[i];
-        const physics::SpringDef& y = b.springs[i];
-        d.field(at("springs", i, "a"), static_cast<int>(x.a), static_cast<int>(y.a));
-        d.field(at("springs", i, "anchorA"), x.anchorA, y.anchorA);
-        d.field(at("springs", i, "b"), static_cast<int>(x.b), static_cast<int>(y.b));
-        d.field(at("springs", i, "anchorB"), x.anchorB, y.anchorB);
-        d.field(at("springs", i, "stiffness"), x.stiffness, y.stiffness);
-        d.field(at("springs", i, "damping"), x.damping, y.damping);
-        d.field(at("springs", i, "restLength"), x.restLength, y.restLength);
-    }
-    d.field(QStringLiteral("joints (count)"), static_cast<int>(a.joints.size()),
-            static_cast<int>(b.joints.size()));
-    for (std::size_t i = 0; i < a.joints.size() && i < b.joints.size(); ++i) {
-        const physics::PinJointDef& x = a.joints[i];
-        const physics::PinJointDef& y = b.joints[i];
-        d.field(at("joints", i, "a"), static_cast<int>(x.a), static_cast<int>(y.a));
-        d.field(at("joints", i, "anchorA"), x.anchorA, y.anchorA);
-        d.field(at("joints", i, "b"), static_cast<int>(x.b), static_cast<int>(y.b));
-        d.field(at("joints", i, "anchorB"), x.anchorB, y.anchorB);
+    compareFields(d, Object::Scene, a, b, 0);
+    // dopri5's relative tolerance: the file has one tolerance for both, the row the absolute.
+    d.field(QStringLiteral("world.tolerance.relative"), a.world.tolerances.relative,
+            b.world.tolerances.relative);
+    compareFields(d, Object::World, a, b, 0);
+    for (const Object object : {Object::Body, Object::Spring, Object::Joint}) {
+        const std::size_t n = schema::count(a, object);
+        d.field(schema::placeOf(object, 0).section(u'[', 0, 0) + QStringLiteral(" (count)"),
+                static_cast<int>(n), static_cast<int>(schema::count(b, object)));
+        for (std::size_t i = 0; i < n && i < schema::count(b, object); ++i) {
+            compareFields(d, object, a, b, i);
+            if (object == Object::Body)
+                compareShape(d, i, a, b);
+        }
     }
     return d.first();
 }

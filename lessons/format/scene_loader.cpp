@@ -9,8 +9,10 @@
 #include "format/json_reader.h"
 #include "format/local_text.h"
 
+#include "format/field_reading.h"
 #include "format/limits.h"
 #include "format/scene_rules.h"
+#include "format/scene_schema.h"
 
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
@@ -38,14 +40,6 @@ namespace {
 /// Anchors closer than this count as one point when a pin joint is loaded [m].
 constexpr double kJointAnchorTolerance = 1e-6;
 
-/// What a scene keeps of a body beside its physics::BodyDef (parallel lists in Scene).
-struct BodyExtras {
-    std::vector<Vec2> original; ///< the file's vertices of a polygon replaced by its hull
-    QString label;              ///< in the language shown
-    LocalTextMap labels;        ///< every language's, when the file gave an object
-    QString colour;             ///< "#rrggbb" or empty
-};
-
 class SceneReader {
 public:
     SceneReader(const QString& sourceName, const SceneLoadOptions& options)
@@ -61,10 +55,16 @@ private:
     bool readText(const QJsonObject& root, QStringView key, QString& out, LocalTextMap& all);
     /// A body's "colour": "#rrggbb", kept in lower case; absent: empty.
     bool readColour(const QJsonObject& body, const QString& place, QString& out);
+    /// Every row of `object` (scene_schema.h) in file order: the plain kinds through
+    /// readPlainField, the others here.
+    bool readFields(schema::Object object, const QJsonObject& json, const QString& place,
+                    std::size_t index);
+    bool readField(const schema::Field& field, const QJsonObject& json, const QString& place,
+                   std::size_t index);
+    bool readId(const QJsonObject& body, const QString& place, std::size_t index);
     bool readWorld(const QJsonObject& root);
     bool readBodies(const QJsonObject& root);
-    bool readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
-                  BodyExtras& extras);
+    bool readBody(const QJsonValue& value, const QString& place, std::size_t index);
     /// A body's optional "label": a name a class reads, in every language it has.
     bool readLabel(const QJsonObject& body, const QString& place, QString& label,
                    LocalTextMap& all);
@@ -91,12 +91,9 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
 {
     const bool ok = m_in.formatVersion(root, QStringLiteral("rigidlab"),
                                        FileMessages::tr("a scene file"), kSceneFormatVersion) &&
-                    m_in.checkKeys(root, {},
-                                   {u"rigidlab", u"title", u"description", u"world", u"bodies",
-                                    u"springs", u"joints"}) &&
-                    readText(root, u"title", m_scene.title, m_scene.titles) &&
-                    readText(root, u"description", m_scene.description, m_scene.descriptions) &&
-                    readWorld(root) && readBodies(root) && readSprings(root) && readJoints(root);
+                    m_in.checkKeys(root, {}, schema::keys(schema::Object::Scene)) &&
+                    readFields(schema::Object::Scene, root, {}, 0) && readWorld(root) &&
+                    readBodies(root) && readSprings(root) && readJoints(root);
     if (ok) {
         m_texts.warnMissing();
     }
@@ -152,6 +149,54 @@ bool SceneReader::readColour(const QJsonObject& body, const QString& place, QStr
     return true;
 }
 
+bool SceneReader::readFields(schema::Object object, const QJsonObject& json, const QString& place,
+                             std::size_t index)
+{
+    for (const schema::Field& field : schema::fields(object)) {
+        if (!readField(field, json, place, index)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool SceneReader::readField(const schema::Field& field, const QJsonObject& json,
+                            const QString& place, std::size_t index)
+{
+    using schema::Kind;
+    const QString key = QString::fromLatin1(field.key.data(), qsizetype(field.key.size()));
+    switch (field.kind) {
+    case Kind::Text:
+        return readId(json, place, index);
+    case Kind::LocalText:
+        if (place.isEmpty()) {
+            return key == u"title" ? readText(json, key, m_scene.title, m_scene.titles)
+                                   : readText(json, key, m_scene.description, m_scene.descriptions);
+        }
+        return readLabel(json, place, m_scene.labels[index], m_scene.labelTexts[index]);
+    case Kind::Colour:
+        return readColour(json, place, m_scene.colours[index]);
+    case Kind::Shape:
+        if (!json.contains(key)) {
+            return m_in.fail(joinPlace(place, key), FileMessages::tr("required, but missing"));
+        }
+        return readShape(json.value(key), joinPlace(place, key), m_scene.bodies[index].shape,
+                         m_scene.originalVertices[index]);
+    case Kind::Size: // a part of the shape
+        return true;
+    case Kind::End: {
+        BodyId end = physics::kWorld;
+        if (!readEnd(json, key, place, end, field.optional)) {
+            return false;
+        }
+        field.set(m_scene, index, static_cast<int>(end));
+        return true;
+    }
+    default:
+        return detail::readPlainField(m_in, field, json, place, m_scene, index);
+    }
+}
+
 bool SceneReader::readWorld(const QJsonObject& root)
 {
     if (!root.contains(u"world")) {
@@ -159,64 +204,9 @@ bool SceneReader::readWorld(const QJsonObject& root)
     }
     const QString place = QStringLiteral("world");
     QJsonObject world;
-    physics::WorldDef& def = m_scene.world;
-    if (!m_in.asObject(root.value(u"world"), place, world) ||
-        !m_in.checkKeys(world, place,
-                        {u"gravity", u"dt", u"integrator", u"solver", u"iterations", u"restitution",
-                         u"friction", u"gravitation", u"drag", u"sleep", u"continuous",
-                         u"tolerance"}) ||
-        !m_in.vec2(world, u"gravity", place, def.gravity, limits::kGravity) ||
-        !m_in.number(world, u"dt", place, def.dt, NumberRule::Positive)) {
-        return false;
-    }
-    if (def.dt < kMinDt || def.dt > kMaxDt) {
-        return m_in.fail(joinPlace(place, u"dt"),
-                         FileMessages::tr("must be from %1 to %2 s, got %3")
-                             .arg(detail::formatNumber(kMinDt), detail::formatNumber(kMaxDt),
-                                  detail::formatNumber(def.dt)));
-    }
-
-    QString name;
-    if (world.contains(u"integrator")) {
-        if (!m_in.string(world, u"integrator", place, name)) {
-            return false;
-        }
-        const auto kind = physics::integratorFromName(name.toStdString());
-        if (!kind) {
-            return m_in.fail(joinPlace(place, u"integrator"), detail::unknownIntegrator(name));
-        }
-        def.integrator = *kind;
-    }
-    if (world.contains(u"solver")) {
-        if (!m_in.string(world, u"solver", place, name)) {
-            return false;
-        }
-        const auto kind = physics::solverFromName(name.toStdString());
-        if (!kind) {
-            return m_in.fail(joinPlace(place, u"solver"), detail::unknownSolver(name));
-        }
-        def.solver = *kind;
-    }
-    if (world.contains(u"sleep")) {
-        bool sleep = false;
-        if (!m_in.boolean(world, u"sleep", place, sleep, false)) {
-            return false;
-        }
-        def.sleep = sleep;
-    }
-    return m_in.integer(world, u"iterations", place, def.iterations, 1, kMaxIterations) &&
-           m_in.number(world, u"restitution", place, def.restitution, NumberRule::UnitInterval,
-                       limits::kRestitution) &&
-           m_in.number(world, u"friction", place, def.friction, NumberRule::NonNegative,
-                       limits::kFriction) &&
-           m_in.number(world, u"gravitation", place, def.gravitation, NumberRule::NonNegative,
-                       limits::kGravitation) &&
-           m_in.number(world, u"drag", place, def.drag, NumberRule::NonNegative, limits::kDrag) &&
-           m_in.boolean(world, u"continuous", place, def.continuous) &&
-           m_in.number(world, u"tolerance", place, def.tolerances.absolute, NumberRule::Positive,
-                       limits::kTolerance) &&
-           m_in.number(world, u"tolerance", place, def.tolerances.relative, NumberRule::Positive,
-                       limits::kTolerance);
+    return m_in.asObject(root.value(u"world"), place, world) &&
+           m_in.checkKeys(world, place, schema::keys(schema::Object::World)) &&
+           readFields(schema::Object::World, world, place, 0);
 }
 
 bool SceneReader::readBodies(const QJsonObject& root)
@@ -234,23 +224,19 @@ bool SceneReader::readBodies(const QJsonObject& root)
                                     .arg(bodies.size())
                                     .arg(kMaxBodies));
     }
-    m_scene.bodies.reserve(static_cast<size_t>(bodies.size()));
-    m_scene.originalVertices.reserve(static_cast<size_t>(bodies.size()));
-    m_scene.labels.reserve(static_cast<size_t>(bodies.size()));
-    m_scene.labelTexts.reserve(static_cast<size_t>(bodies.size()));
-    m_scene.colours.reserve(static_cast<size_t>(bodies.size()));
+    const auto n = static_cast<size_t>(bodies.size());
+    m_scene.bodies.reserve(n);
+    // The lists beside `bodies` have an entry for every body, empty unless the file fills it.
+    m_scene.originalVertices.resize(n);
+    m_scene.labels.resize(n);
+    m_scene.labelTexts.resize(n);
+    m_scene.colours.resize(n);
     for (qsizetype i = 0; i < bodies.size(); ++i) {
-        physics::BodyDef def;
-        BodyExtras extras;
-        if (!readBody(bodies[i], indexPlace(place, i), def, extras)) {
+        m_scene.bodies.emplace_back();
+        if (!readBody(bodies[i], indexPlace(place, i), static_cast<size_t>(i))) {
             return false;
         }
-        m_ids.insert(QString::fromStdString(def.name), static_cast<BodyId>(i));
-        m_scene.bodies.push_back(std::move(def));
-        m_scene.originalVertices.push_back(std::move(extras.original));
-        m_scene.labels.push_back(std::move(extras.label));
-        m_scene.labelTexts.push_back(std::move(extras.labels));
-        m_scene.colours.push_back(std::move(extras.colour));
+        m_ids.insert(QString::fromStdString(m_scene.bodies.back().name), static_cast<BodyId>(i));
     }
     return true;
 }
@@ -294,17 +280,10 @@ bool SceneReader::readLabel(const QJsonObject& body, const QString& place, QStri
     return true;
 }
 
-bool SceneReader::readBody(const QJsonValue& value, const QString& place, physics::BodyDef& def,
-                           BodyExtras& extras)
+bool SceneReader::readId(const QJsonObject& body, const QString& place, std::size_t index)
 {
-    QJsonObject body;
     QString id;
-    if (!m_in.asObject(value, place, body) ||
-        !m_in.checkKeys(body, place,
-                        {u"id", u"label", u"type", u"shape", u"position", u"angle", u"velocity",
-                         u"angularVelocity", u"density", u"mass", u"restitution", u"friction",
-                         u"collide", u"colour"}) ||
-        !m_in.string(body, u"id", place, id, true)) {
+    if (!m_in.string(body, u"id", place, id, true)) {
         return false;
     }
     const QString idPlace = joinPlace(place, u"id");
@@ -314,60 +293,28 @@ bool SceneReader::readBody(const QJsonValue& value, const QString& place, physic
     if (const auto other = m_ids.constFind(id); other != m_ids.constEnd()) {
         return m_in.fail(idPlace, rules::duplicateId(id, other.value()));
     }
-    def.name = id.toStdString();
-    if (!readLabel(body, place, extras.label, extras.labels)) {
-        return false;
-    }
+    m_scene.bodies[index].name = id.toStdString();
+    return true;
+}
 
-    if (body.contains(u"type")) {
-        QString type;
-        if (!m_in.string(body, u"type", place, type)) {
-            return false;
-        }
-        if (type == u"dynamic") {
-            def.type = physics::BodyType::Dynamic;
-        } else if (type == u"static") {
-            def.type = physics::BodyType::Static;
-        } else if (type == u"kinematic") {
-            def.type = physics::BodyType::Kinematic;
-        } else {
-            return m_in.fail(joinPlace(place, u"type"),
-                             FileMessages::tr("unknown body type \"%1\" (expected dynamic, static, "
-                                              "kinematic)")
-                                 .arg(type));
-        }
-    }
-    if (!body.contains(u"shape")) {
-        return m_in.fail(joinPlace(place, u"shape"), FileMessages::tr("required, but missing"));
-    }
-    if (!readShape(body.value(u"shape"), joinPlace(place, u"shape"), def.shape, extras.original)) {
+bool SceneReader::readBody(const QJsonValue& value, const QString& place, std::size_t index)
+{
+    QJsonObject body;
+    if (!m_in.asObject(value, place, body) ||
+        !m_in.checkKeys(body, place, schema::keys(schema::Object::Body))) {
         return false;
     }
     if (body.contains(u"density") && body.contains(u"mass")) {
         return m_in.fail(joinPlace(place, u"mass"),
                          FileMessages::tr("give \"density\" or \"mass\", not both"));
     }
-    if (!m_in.vec2(body, u"position", place, def.position, limits::kCoordinate) ||
-        !m_in.number(body, u"angle", place, def.angle, NumberRule::Finite, limits::kAngle) ||
-        !m_in.vec2(body, u"velocity", place, def.velocity, limits::kVelocity) ||
-        !m_in.number(body, u"angularVelocity", place, def.angularVelocity, NumberRule::Finite,
-                     limits::kAngularVelocity) ||
-        !m_in.number(body, u"density", place, def.density, NumberRule::Positive,
-                     limits::kDensity) ||
-        !m_in.number(body, u"mass", place, def.mass, NumberRule::Positive, limits::kMass) ||
-        !m_in.number(body, u"restitution", place, def.restitution, NumberRule::UnitInterval,
-                     limits::kRestitution) ||
-        !m_in.number(body, u"friction", place, def.friction, NumberRule::NonNegative,
-                     limits::kFriction) ||
-        !m_in.boolean(body, u"collide", place, def.collide) ||
-        !readColour(body, place, extras.colour)) {
+    if (!readFields(schema::Object::Body, body, place, index)) {
         return false;
     }
-
+    const physics::BodyDef& def = m_scene.bodies[index];
     if (const auto problem = rules::checkMass(def)) {
         return m_in.fail(joinPlace(place, problem->key), problem->what);
     }
-
     if (def.type == physics::BodyType::Static &&
         (def.velocity != Vec2::Zero() || def.angularVelocity != 0)) {
         m_in.warn(place, FileMessages::tr("a static body never moves: its velocity is ignored "
@@ -512,37 +459,30 @@ bool SceneReader::readSprings(const QJsonObject& root)
 bool SceneReader::readSpring(const QJsonValue& value, const QString& place)
 {
     QJsonObject object;
-    physics::SpringDef spring;
     if (!m_in.asObject(value, place, object) ||
-        !m_in.checkKeys(
-            object, place,
-            {u"a", u"anchorA", u"b", u"anchorB", u"stiffness", u"damping", u"restLength"}) ||
-        !readEnd(object, u"a", place, spring.a, true) ||
-        !m_in.vec2(object, u"anchorA", place, spring.anchorA, limits::kCoordinate) ||
-        !readEnd(object, u"b", place, spring.b, true) ||
-        !m_in.vec2(object, u"anchorB", place, spring.anchorB, limits::kCoordinate)) {
+        !m_in.checkKeys(object, place, schema::keys(schema::Object::Spring))) {
         return false;
     }
+    const std::size_t index = m_scene.springs.size();
+    m_scene.springs.emplace_back();
+    if (!readFields(schema::Object::Spring, object, place, index)) {
+        return false;
+    }
+    physics::SpringDef& spring = m_scene.springs.back();
     if (spring.a == physics::kWorld && spring.b == physics::kWorld) {
         return m_in.fail(place, rules::springBothInWorld());
     }
     if (spring.a == spring.b) {
         return m_in.fail(joinPlace(place, u"b"), rules::springSameBody());
     }
-    spring.restLength =
-        (worldPoint(spring.b, spring.anchorB) - worldPoint(spring.a, spring.anchorA)).norm();
-    if (!m_in.number(object, u"stiffness", place, spring.stiffness, NumberRule::NonNegative,
-                     limits::kStiffness) ||
-        !m_in.number(object, u"damping", place, spring.damping, NumberRule::NonNegative,
-                     limits::kDamping) ||
-        !m_in.number(object, u"restLength", place, spring.restLength, NumberRule::NonNegative,
-                     limits::kRestLength)) {
-        return false;
+    if (!object.contains(u"restLength")) {
+        // Without one, the spring rests as it is drawn.
+        spring.restLength =
+            (worldPoint(spring.b, spring.anchorB) - worldPoint(spring.a, spring.anchorA)).norm();
+        if (!std::isfinite(spring.restLength)) {
+            return m_in.fail(place, FileMessages::tr("the anchors are too far apart to measure"));
+        }
     }
-    if (!std::isfinite(spring.restLength)) {
-        return m_in.fail(place, FileMessages::tr("the anchors are too far apart to measure"));
-    }
-    m_scene.springs.push_back(spring);
     return true;
 }
 
@@ -572,22 +512,16 @@ bool SceneReader::readJoints(const QJsonObject& root)
 bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
 {
     QJsonObject object;
-    QString type;
-    physics::PinJointDef joint;
     if (!m_in.asObject(value, place, object) ||
-        !m_in.checkKeys(object, place, {u"type", u"a", u"anchorA", u"b", u"anchorB"}) ||
-        !m_in.string(object, u"type", place, type, true)) {
+        !m_in.checkKeys(object, place, schema::keys(schema::Object::Joint))) {
         return false;
     }
-    if (type != u"pin") {
-        return m_in.fail(joinPlace(place, u"type"),
-                         FileMessages::tr("unknown joint type \"%1\" (expected pin)").arg(type));
-    }
-    if (!readEnd(object, u"a", place, joint.a, false) ||
-        !m_in.vec2(object, u"anchorA", place, joint.anchorA, limits::kCoordinate) ||
-        !readEnd(object, u"b", place, joint.b, true)) {
+    const std::size_t index = m_scene.joints.size();
+    m_scene.joints.emplace_back();
+    if (!readFields(schema::Object::Joint, object, place, index)) {
         return false;
     }
+    physics::PinJointDef& joint = m_scene.joints.back();
     if (joint.a == joint.b) {
         return m_in.fail(joinPlace(place, u"b"), rules::pinSameBody());
     }
@@ -595,9 +529,6 @@ bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
     // (or of the world) that coincides with anchorA at load.
     const Vec2 pinPoint = worldPoint(joint.a, joint.anchorA);
     if (object.contains(u"anchorB")) {
-        if (!m_in.vec2(object, u"anchorB", place, joint.anchorB, limits::kCoordinate)) {
-            return false;
-        }
         const double gap = (worldPoint(joint.b, joint.anchorB) - pinPoint).norm();
         if (!(gap <= kJointAnchorTolerance)) {
             m_in.warn(place, FileMessages::tr("the anchors are %1 m apart at the start; the joint "
@@ -610,7 +541,6 @@ bool SceneReader::readJoint(const QJsonValue& value, const QString& place)
         const physics::BodyDef& b = m_scene.bodies[static_cast<size_t>(joint.b)];
         joint.anchorB = physics::Transform(b.position, b.angle).applyInverse(pinPoint);
     }
-    m_scene.joints.push_back(joint);
     return true;
 }
 

@@ -7,6 +7,7 @@
 #include "format/atomic_file.h"
 #include "format/languages.h"
 #include "format/scene_loader.h"
+#include "format/scene_schema.h"
 
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
@@ -17,6 +18,8 @@
 
 #include <charconv>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 
 namespace rigidlab::lessons {
 
@@ -43,11 +46,6 @@ QByteArray string(const QString& text)
 {
     const QByteArray array = QJsonDocument(QJsonArray{text}).toJson(QJsonDocument::Compact);
     return array.mid(1, array.size() - 2); // without [ ]
-}
-
-QByteArray string(std::string_view text)
-{
-    return string(QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size())));
 }
 
 /// `"key": value` pairs joined into one object on one line.
@@ -83,30 +81,6 @@ QByteArray localText(const QString& shown, const LocalTextMap& all, const QStrin
     return '{' + parts.join(", ") + '}';
 }
 
-QByteArray worldObject(const physics::WorldDef& w)
-{
-    QByteArray out = "{\n";
-    QByteArrayList lines;
-    const auto add = [&lines](const char* key, const QByteArray& value) {
-        lines << QByteArray("    \"" + QByteArray(key) + "\": " + value);
-    };
-    add("gravity", vec2(w.gravity));
-    add("dt", number(w.dt));
-    add("integrator", string(physics::integratorName(w.integrator)));
-    add("solver", string(physics::solverName(w.solver)));
-    add("iterations", QByteArray::number(w.iterations));
-    add("restitution", number(w.restitution));
-    add("friction", number(w.friction));
-    add("gravitation", number(w.gravitation));
-    add("drag", number(w.drag));
-    add("continuous", w.continuous ? "true" : "false");
-    // The format has one tolerance for both; a scene read from a file has them equal.
-    add("tolerance", number(w.tolerances.absolute));
-    if (w.sleep)
-        add("sleep", *w.sleep ? "true" : "false");
-    return out + lines.join(",\n") + "\n  }";
-}
-
 QByteArray vertexList(const std::vector<Vec2>& vertices)
 {
     QByteArrayList parts;
@@ -138,61 +112,66 @@ QByteArray shapeObject(const physics::Shape& shape, const std::vector<Vec2>& ori
     return Line().add("type", "\"polygon\"").add("vertices", vertexList(p.vertices)).object();
 }
 
-QByteArray bodyType(physics::BodyType type)
+/// A value of a plain kind as JSON.
+QByteArray json(const schema::Value& value)
 {
-    switch (type) {
-    case physics::BodyType::Static:
-        return "\"static\"";
-    case physics::BodyType::Kinematic:
-        return "\"kinematic\"";
-    case physics::BodyType::Dynamic:
-        break;
-    }
-    return "\"dynamic\"";
+    return std::visit(
+        [](const auto& v) -> QByteArray {
+            using T = std::decay_t<decltype(v)>;
+            if constexpr (std::is_same_v<T, std::monostate>)
+                return "null";
+            else if constexpr (std::is_same_v<T, double>)
+                return number(v);
+            else if constexpr (std::is_same_v<T, int>)
+                return QByteArray::number(v);
+            else if constexpr (std::is_same_v<T, bool>)
+                return v ? "true" : "false";
+            else if constexpr (std::is_same_v<T, Vec2>)
+                return vec2(v);
+            else
+                return string(v);
+        },
+        value);
 }
 
-QByteArray bodyObject(const Scene& scene, std::size_t i)
+/// The JSON of `field` of object `index`.
+QByteArray fieldJson(const Scene& scene, const schema::Field& field, std::size_t i)
 {
-    const physics::BodyDef& b = scene.bodies[i];
     static const std::vector<Vec2> none;
-    Line line;
-    line.add("id", string(b.name));
-    if (const auto id = static_cast<physics::BodyId>(i); scene.hasLabel(id)) {
-        const LocalTextMap texts =
-            i < scene.labelTexts.size() ? scene.labelTexts[i] : LocalTextMap{};
-        line.add("label", localText(scene.bodyLabel(id), texts, scene.language));
+    switch (field.kind) {
+    case schema::Kind::LocalText:
+        return localText(std::get<QString>(field.get(scene, i)), field.texts(scene, i),
+                         scene.language);
+    case schema::Kind::Shape:
+        return shapeObject(scene.bodies[i].shape,
+                           i < scene.originalVertices.size() ? scene.originalVertices[i] : none);
+    default:
+        return json(field.get(scene, i));
     }
-    line.add("type", bodyType(b.type));
-    line.add(
-        "shape",
-        shapeObject(b.shape, i < scene.originalVertices.size() ? scene.originalVertices[i] : none));
-    line.add("position", vec2(b.position)).add("angle", number(b.angle));
-    if (b.velocity != Vec2::Zero())
-        line.add("velocity", vec2(b.velocity));
-    if (b.angularVelocity != 0)
-        line.add("angularVelocity", number(b.angularVelocity));
-    if (b.mass > 0)
-        line.add("mass", number(b.mass));
-    else
-        line.add("density", number(b.density));
-    if (b.restitution >= 0)
-        line.add("restitution", number(b.restitution));
-    if (b.friction >= 0)
-        line.add("friction", number(b.friction));
-    if (!b.collide)
-        line.add("collide", "false");
-    if (const QString colour = scene.colourOf(i); !colour.isEmpty())
-        line.add("colour", string(colour));
-    return line.object();
 }
 
-/// A spring's or joint's end: the body's id, or null for the world.
-QByteArray end(const Scene& scene, physics::BodyId body)
+/// The `"key": value` pairs of the fields of `object` the file holds, in file order.
+QByteArrayList pairs(const Scene& scene, schema::Object object, std::size_t i)
 {
-    if (body == physics::kWorld || body < 0 ||
-        static_cast<std::size_t>(body) >= scene.bodies.size())
-        return "null";
-    return string(scene.bodies[static_cast<std::size_t>(body)].name);
+    QByteArrayList out, last;
+    for (const schema::Field& f : schema::fields(object)) {
+        if (f.kind == schema::Kind::Size || (f.written && !f.written(scene, i)))
+            continue;
+        (f.writtenLast ? last : out)
+            << QByteArray('"' + QByteArray(f.key.data(), qsizetype(f.key.size())) +
+                          "\": " + fieldJson(scene, f, i));
+    }
+    return out + last;
+}
+
+QByteArray worldObject(const Scene& scene)
+{
+    return "{\n    " + pairs(scene, schema::Object::World, 0).join(",\n    ") + "\n  }";
+}
+
+QByteArray lineObject(const Scene& scene, schema::Object object, std::size_t i)
+{
+    return '{' + pairs(scene, object, i).join(", ") + '}';
 }
 
 QByteArray list(const QByteArrayList& items)
@@ -206,35 +185,19 @@ QByteArray list(const QByteArrayList& items)
 
 QByteArray sceneToJson(const Scene& scene)
 {
+    using schema::Object;
     QByteArrayList bodies, springs, joints;
     for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-        bodies << bodyObject(scene, i);
-    for (const physics::SpringDef& s : scene.springs)
-        springs << Line()
-                       .add("a", end(scene, s.a))
-                       .add("anchorA", vec2(s.anchorA))
-                       .add("b", end(scene, s.b))
-                       .add("anchorB", vec2(s.anchorB))
-                       .add("stiffness", number(s.stiffness))
-                       .add("damping", number(s.damping))
-                       .add("restLength", number(s.restLength))
-                       .object();
-    for (const physics::PinJointDef& j : scene.joints)
-        joints << Line()
-                      .add("type", "\"pin\"")
-                      .add("a", end(scene, j.a))
-                      .add("anchorA", vec2(j.anchorA))
-                      .add("b", end(scene, j.b))
-                      .add("anchorB", vec2(j.anchorB))
-                      .object();
+        bodies << lineObject(scene, Object::Body, i);
+    for (std::size_t i = 0; i < scene.springs.size(); ++i)
+        springs << lineObject(scene, Object::Spring, i);
+    for (std::size_t i = 0; i < scene.joints.size(); ++i)
+        joints << lineObject(scene, Object::Joint, i);
 
     QByteArrayList top;
     top << "\"rigidlab\": " + QByteArray::number(kSceneFormatVersion);
-    top << "\"title\": " + localText(scene.title, scene.titles, scene.language);
-    if (!scene.description.isEmpty() || !scene.descriptions.isEmpty())
-        top << "\"description\": " +
-                   localText(scene.description, scene.descriptions, scene.language);
-    top << "\"world\": " + worldObject(scene.world);
+    top << pairs(scene, Object::Scene, 0);
+    top << "\"world\": " + worldObject(scene);
     top << "\"bodies\": " + list(bodies);
     if (!springs.isEmpty())
         top << "\"springs\": " + list(springs);

@@ -9,6 +9,7 @@
 #include "format/editor_tools.h"
 #include "format/languages.h"
 #include "format/lesson_catalog.h"
+#include "format/scene_schema.h"
 
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -409,9 +410,11 @@ void TestLesson::rejectsBadLesson_data()
                                 << steps0 + R"(editor.tools[1]: "box" is listed twice)";
     QTest::newRow("unknown-property")
         << oneStep(R"("editor": {"properties": ["colour", "size"]})")
-        << steps0 + R"(editor.properties[1]: unknown property "size" (expected id, type, )"
-                    "density, mass, restitution, friction, velocity, angularVelocity, colour, "
-                    "stiffness, damping, restLength, gravity, dt, integrator, solver, iterations)";
+        << steps0 + R"(editor.properties[1]: unknown property "size" (expected id, label, )"
+                    "type, width, height, radius, position, angle, velocity, angularVelocity, "
+                    "density, mass, restitution, friction, colour, stiffness, damping, "
+                    "restLength, gravity, dt, integrator, solver, iterations, title, "
+                    "description)";
     QTest::newRow("editor-unknown-key")
         << oneStep(R"("editor": {"tool": ["box"]})")
         << steps0 + "editor.tool: unknown key (allowed here: tools, properties)";
@@ -680,7 +683,7 @@ void TestLesson::editorListsDefaultToAll()
     const auto& editor = open.lesson.steps[0].editor;
     QVERIFY(editor);
     QCOMPARE(editor->tools.size(), qsizetype(lessons::kEditorToolNames.size()));
-    QCOMPARE(editor->properties.size(), qsizetype(lessons::kEditorPropertyNames.size()));
+    QCOMPARE(editor->properties.size(), qsizetype(lessons::schema::editorPropertyNames().size()));
     QVERIFY(editor->tools.contains(QStringLiteral("duplicate")));
     QVERIFY(editor->properties.contains(QStringLiteral("iterations")));
     const lessons::LessonLoadResult none =
