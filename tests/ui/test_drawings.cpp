@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// A few drawings (issues 11 and 12): the error-vs-run-time panel on a 1024 × 768 screen, its
+// A few drawings: the error-vs-run-time panel on a 1024 × 768 screen, its
 // order labels apart and in words where no order can be measured; the compared worlds drawn
 // with their floors; velocity arrows only where they have a length; the billiards break big
-// and slow enough to watch.
+// and slow enough to watch; springs whose coils stay apart with presentation mode's thick lines.
 
+#include "common/theme.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/error_panel.h"
 #include "plots/work_precision_plot.h"
@@ -17,6 +18,8 @@
 #include "numerics/error_vs_time.h"
 
 #include <QDockWidget>
+#include <QImage>
+#include <QPainter>
 #include <QtTest>
 
 #include <qcustomplot.h>
@@ -67,6 +70,8 @@ private slots:
     void billiardsBallsBigAndBreakSlow();
     void bodiesLargeEnoughAfterTheStep_data();
     void bodiesLargeEnoughAfterTheStep();
+    void springCoilsStayApart_data();
+    void springCoilsStayApart();
 };
 
 void TestDrawings::errorPanelOpensOnASmallScreen()
@@ -366,6 +371,64 @@ void TestDrawings::bodiesLargeEnoughAfterTheStep()
     QVERIFY2(
         inside * 10 >= moving.size() * 8,
         qPrintable(QStringLiteral("%1 of %2 bodies in the view").arg(inside).arg(moving.size())));
+}
+
+void TestDrawings::springCoilsStayApart_data()
+{
+    QTest::addColumn<bool>("presentation");
+    QTest::addColumn<double>("lengthPx");
+    for (const bool presentation : {false, true})
+        for (const double length : {30.0, 60.0, 120.0, 400.0})
+            QTest::addRow("%s, %g px", presentation ? "presentation" : "window", length)
+                << presentation << length;
+}
+
+void TestDrawings::springCoilsStayApart()
+{
+    // Presentation mode drew a short spring as a solid black bar: its 12 coils, 3 px thick,
+    // filled the 60 px between the anchors. Each half-turn now keeps 2.5 pen widths along
+    // the spring, so that background shows between the strokes.
+    QFETCH(bool, presentation);
+    QFETCH(double, lengthPx);
+    ui::theme::setPresentation(presentation);
+    const double pen = ui::theme::lineWidth(1.5); // as the overlay draws springs
+    ui::theme::setPresentation(false);
+    constexpr double px = 0.01; // [m per pixel]
+    const QPointF a(1, 2), b = a + QPointF(lengthPx * px, 0);
+    const QPolygonF zig = ui::OverlayItem::springZigzag(a, b, px, pen);
+    QCOMPARE(zig.front(), a);
+    QCOMPARE(zig.back(), b);
+    const int halfTurns = static_cast<int>(zig.size()) - 1;
+    QVERIFY2(halfTurns >= 2 && halfTurns <= 24, qPrintable(QString::number(halfTurns)));
+    const double step = lengthPx / halfTurns; // [px] along the spring
+    QVERIFY2(step >= 2.5 * pen || halfTurns == 2,
+             qPrintable(QStringLiteral("%1 px per half-turn, pen %2 px").arg(step).arg(pen)));
+    if (lengthPx >= 24 * 2.5 * pen) // a long spring keeps every coil
+        QCOMPARE(halfTurns, 24);
+
+    // Drawn: the band the coils take is not mostly ink.
+    QImage image(static_cast<int>(lengthPx) + 40, 80, QImage::Format_RGB32);
+    image.fill(Qt::white);
+    {
+        QPainter p(&image);
+        p.setRenderHint(QPainter::Antialiasing);
+        p.translate(20 - a.x() / px, 40 + a.y() / px);
+        p.scale(1 / px, -1 / px);
+        QPen ink(Qt::black, pen);
+        ink.setCosmetic(true);
+        p.setPen(ink);
+        p.drawPolyline(zig);
+    }
+    double amplitude = 0; // [px]
+    for (const QPointF& q : zig)
+        amplitude = std::max(amplitude, std::abs(q.y() - a.y()) / px);
+    int inked = 0, all = 0;
+    for (int x = 20 + static_cast<int>(step); x < 20 + static_cast<int>(lengthPx - step); ++x)
+        for (int y = 40 - static_cast<int>(amplitude / 2); y <= 40 + amplitude / 2; ++y, ++all)
+            inked += qGray(image.pixel(x, y)) < 128 ? 1 : 0;
+    QVERIFY(all > 0);
+    QVERIFY2(inked < 0.6 * all,
+             qPrintable(QStringLiteral("%1 of %2 pixels inked").arg(inked).arg(all)));
 }
 
 RIGIDLAB_TEST_MAIN(TestDrawings)

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The separating-axis view shows its axis (the lessons issue): for every shipped SAT case and
+// The separating-axis view shows its axis: for every shipped SAT case and
 // every axis, the world view shows both projection intervals and the gap or overlap label,
 // also after Fit scene and after a body was dragged away; the label is readable and the table
 // fits the window's right column without a horizontal scroll bar.
@@ -8,10 +8,14 @@
 #include "lesson_player/lesson_player.h"
 #include "panels/sat_panel.h"
 #include "simulation/simulation_controller.h"
+#include "view/sat_view_model.h"
 #include "view/world_view.h"
 #include "window/main_window.h"
 
 #include "format/lesson.h"
+#include "format/scene_loader.h"
+
+#include <QGraphicsScene>
 
 #include <QApplication>
 #include <QHeaderView>
@@ -72,7 +76,7 @@ QString notShown(const SatOverlayItem::Geometry& g, const QRectF& visible)
                                                     .arg(visible.bottom());
 }
 
-/// A window of the issue's size, shown (offscreen), at a lesson's SAT step.
+/// A window of a projector's size (1024 × 768), shown (offscreen), at a lesson's SAT step.
 struct Window {
     MainWindow w;
     bool open(const QString& path, int step)
@@ -111,6 +115,61 @@ private slots:
         QVERIFY(std::abs(satGap().hueF() - satOverlap().hueF()) > 0.1);
     }
 
+    // The overlay draws from the view model alone, no panel (no widget) in sight: the view
+    // layer needs nothing from the panels.
+    void overlayReadsTheModelAlone()
+    {
+        const lessons::SceneLoadResult loaded = lessons::loadSceneJson(R"({"rigidlab": 1,
+            "world": {"gravity": [0, 0]}, "bodies": [
+            {"id": "a", "shape": {"type": "box", "width": 1, "height": 1}, "position": [0, 0]},
+            {"id": "b", "shape": {"type": "box", "width": 1, "height": 1}, "position": [0.8, 0.3],
+             "angle": 0.3}]})",
+                                                                       QStringLiteral("pair.json"));
+        QVERIFY2(loaded.ok, qPrintable(loaded.error));
+        ui::SimulationController c;
+        c.loadScene(loaded.scene, QString());
+        ui::SatViewModel model(c);
+        QGraphicsScene scene;
+        auto* overlay = new SatOverlayItem(model);
+        scene.addItem(overlay);
+        QVERIFY(!overlay->geometry(0.01).valid); // no pair yet
+        model.setBodies(0, 1);
+        QVERIFY(model.active());
+        QCOMPARE(model.shown(), 1);
+        const physics::SatResult& r = model.result();
+        QVERIFY(r.intersects);
+        const int total = static_cast<int>(r.axes.size());
+        QVERIFY(total >= 2);
+        const SatOverlayItem::Geometry first = overlay->geometry(0.01);
+        QVERIFY(first.valid);
+        QVERIFY(!first.contact);
+        model.showAll();
+        QCOMPARE(model.shown(), total);
+        QVERIFY(model.complete());
+        const SatOverlayItem::Geometry last = overlay->geometry(0.01);
+        QVERIFY(last.contact);
+        QVERIFY(last.label.contains(QStringLiteral("least overlap")));
+        model.previousAxis();
+        QCOMPARE(model.shown(), total - 1);
+        // Nothing moved: a refresh says so; an id the world does not hold is no pair.
+        QVERIFY(!model.refresh());
+        model.setBodies(0, 7);
+        QVERIFY(!model.active());
+        QVERIFY(!overlay->geometry(0.01).valid);
+    }
+    void panelAndOverlayShareTheModel()
+    {
+        Window win;
+        const auto steps = satSteps();
+        QVERIFY(win.open(steps.front().first, steps.front().second));
+        const ui::SatPanel& sat = win.w.satPanel();
+        QVERIFY(sat.active());
+        QCOMPARE(sat.model().bodyA(), sat.bodyA());
+        QCOMPARE(&sat.model().result(), &sat.result());
+        win.w.satPanel().nextAxis();
+        QCOMPARE(sat.model().shown(), sat.shown());
+        QCOMPARE(sat.table().rowCount(), sat.model().shown());
+    }
     void everyAxisIsInView_data()
     {
         QTest::addColumn<QString>("path");

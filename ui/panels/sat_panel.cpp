@@ -36,10 +36,11 @@ QString num(double v, int decimals = 3)
 } // namespace
 
 SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
-    : QWidget(parent), m_controller(controller), m_overlay(new SatOverlayItem(*this)),
-      m_verdict(new QLabel(this)), m_table(new QTableWidget(0, 3, this)),
-      m_summary(new QLabel(this)), m_prev(new QPushButton(tr("◀ Previous"), this)),
-      m_next(new QPushButton(tr("Next ▶"), this)), m_all_button(new QPushButton(tr("All"), this))
+    : QWidget(parent), m_controller(controller), m_model(controller),
+      m_overlay(new SatOverlayItem(m_model)), m_verdict(new QLabel(this)),
+      m_table(new QTableWidget(0, 3, this)), m_summary(new QLabel(this)),
+      m_prev(new QPushButton(tr("◀ Previous"), this)), m_next(new QPushButton(tr("Next ▶"), this)),
+      m_all_button(new QPushButton(tr("All"), this))
 {
     m_overlay->setOnDestroyed([this] { m_overlay = nullptr; });
     connect(&m_controller, &QObject::destroyed, this, [this] {
@@ -58,6 +59,18 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     m_verdict->setFont(f);
     m_verdict->setWordWrap(true);
     layout->addWidget(m_verdict);
+    buildTable();
+    layout->addWidget(m_table, 1);
+    m_summary->setWordWrap(true);
+    layout->addWidget(m_summary);
+    buildButtons(layout);
+    connect(&m_controller, &SimulationController::worldChanged, this, &SatPanel::refresh);
+    fitFonts();
+    refresh();
+}
+
+void SatPanel::buildTable()
+{
     // Three columns: what an axis means ("separates", "least overlap") is a second line under
     // its overlap rather than a fourth column, empty on most rows.
     // Two lines each, the unit on the second, so that the headers fit a narrow column whole.
@@ -97,9 +110,10 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
                 [this] { exportCsvInteractively(this, csv(), tr("separating_axes")); });
         menu.exec(m_table->viewport()->mapToGlobal(pos));
     });
-    layout->addWidget(m_table, 1);
-    m_summary->setWordWrap(true);
-    layout->addWidget(m_summary);
+}
+
+void SatPanel::buildButtons(QBoxLayout* layout)
+{
     // Side by side where they fit with their whole text, else one under the other
     // (resizeEvent()).
     auto* buttons = new QBoxLayout(QBoxLayout::LeftToRight);
@@ -115,9 +129,6 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     connect(m_prev, &QPushButton::clicked, this, &SatPanel::previousAxis);
     connect(m_next, &QPushButton::clicked, this, &SatPanel::nextAxis);
     connect(m_all_button, &QPushButton::clicked, this, &SatPanel::showAll);
-    connect(&m_controller, &SimulationController::worldChanged, this, &SatPanel::refresh);
-    fitFonts();
-    refresh();
 }
 
 void SatPanel::fitFonts()
@@ -214,15 +225,8 @@ void SatPanel::setBodies(int a, int b)
 {
     if (m_overlay)
         m_overlay->dataChanging();
-    const int n = static_cast<int>(m_controller.world().bodies().size());
-    auto polygon = [&](int id) {
-        return id >= 0 && id < n && m_controller.world().body(id).shape.asPolygon();
-    };
-    m_a = polygon(a) && polygon(b) ? a : -1;
-    m_b = m_a >= 0 ? b : -1;
-    m_shown = 1;
-    m_all = false;
-    refresh();
+    m_model.setBodies(a, b);
+    updateTable();
     followAxis(true);
 }
 
@@ -230,8 +234,7 @@ void SatPanel::nextAxis()
 {
     if (m_overlay)
         m_overlay->dataChanging();
-    m_all = false;
-    m_shown = std::min<int>(m_shown + 1, static_cast<int>(m_result.axes.size()));
+    m_model.nextAxis();
     updateTable();
     followAxis(true);
 }
@@ -240,8 +243,7 @@ void SatPanel::previousAxis()
 {
     if (m_overlay)
         m_overlay->dataChanging();
-    m_all = false;
-    m_shown = std::max(1, m_shown - 1);
+    m_model.previousAxis();
     updateTable();
     followAxis(true);
 }
@@ -250,7 +252,7 @@ void SatPanel::showAll()
 {
     if (m_overlay)
         m_overlay->dataChanging();
-    m_all = true;
+    m_model.showAll();
     updateTable();
     followAxis(true);
 }
@@ -259,28 +261,11 @@ void SatPanel::refresh()
 {
     if (m_overlay)
         m_overlay->dataChanging();
-    // The pair was checked to be two polygons when it was set; a world replaced since is
-    // checked again rather than trusted.
-    const physics::Polygon* pa =
-        active() ? m_controller.world().body(m_a).shape.asPolygon() : nullptr;
-    const physics::Polygon* pb =
-        active() ? m_controller.world().body(m_b).shape.asPolygon() : nullptr;
-    if (!pa || !pb) {
-        m_result = physics::SatResult{};
-        updateTable();
-        return;
-    }
-    const physics::Body& a = m_controller.world().body(m_a);
-    const physics::Body& b = m_controller.world().body(m_b);
-    m_result = physics::satPolygons(*pa, a.transform(), *pb, b.transform());
+    const bool moved = m_model.refresh();
     updateTable();
     // Follow only a pair that moved, so that a student's own zoom holds while nothing moves.
-    const std::array<double, 6> poses{a.position.x(), a.position.y(), a.angle,
-                                      b.position.x(), b.position.y(), b.angle};
-    if (poses != m_poses) {
-        m_poses = poses;
+    if (moved)
         followAxis(false);
-    }
 }
 
 WorldView* SatPanel::worldView()
@@ -341,68 +326,34 @@ void SatPanel::followAxis(bool always)
 
 void SatPanel::updateTable()
 {
-    const auto& axes = m_result.axes;
-    const int total = static_cast<int>(axes.size());
-    if (m_all)
-        m_shown = total;
-    m_shown = std::clamp(m_shown, std::min(1, total), total);
-    m_table->setRowCount(m_shown);
-    auto name = [&](int owner) {
-        const int id = owner == 0 ? m_a : m_b;
-        return id >= 0 ? m_controller.scene().bodyLabel(id) : QString();
-    };
-    for (int i = 0; i < m_shown; ++i) {
-        const physics::SatAxis& ax = axes[static_cast<std::size_t>(i)];
-        const bool separates = i == m_result.separatingAxis;
-        const bool least = i == m_result.leastAxis && m_shown == total;
-        const QString overlap =
-            ax.overlap < 0 ? tr("gap %1").arg(num(-ax.overlap, 2)) : num(ax.overlap, 2);
-        const QString note = separates ? tr("separates") : least ? tr("least overlap") : QString();
-        const QStringList cells{
-            tr("%1 %2", "polygon (A or B), edge number")
-                .arg(ax.owner == 0 ? tr("A") : tr("B"))
-                .arg(ax.edge),
-            tr("A %1 … %2\nB %3 … %4")
-                .arg(num(ax.minA, 2), num(ax.maxA, 2), num(ax.minB, 2), num(ax.maxB, 2)),
-            note.isEmpty() ? overlap : overlap + QLatin1Char('\n') + note};
-        QString tip =
-            tr("Axis %1: the normal of edge %2 of %3. On it, %4 covers [%5, %6] m and %7 covers "
-               "[%8, %9] m.")
-                .arg(i + 1)
-                .arg(ax.edge)
-                .arg(name(ax.owner), name(0), num(ax.minA), num(ax.maxA), name(1), num(ax.minB),
-                     num(ax.maxB));
-        tip += QLatin1Char(' ') + (ax.overlap < 0
-                                       ? tr("They are %1 m apart: a gap.").arg(num(-ax.overlap))
-                                       : tr("They overlap by %1 m.").arg(num(ax.overlap)));
-        if (separates)
-            tip += QLatin1Char(' ') + tr("This axis separates the polygons: they cannot touch, "
-                                         "and the test stops here (no collision).");
-        else if (least)
-            tip += QLatin1Char(' ') + tr("The least overlap of all axes: this axis is the "
-                                         "contact normal, and the overlap is the depth.");
-        for (int c = 0; c < cells.size(); ++c) {
-            auto* item = new QTableWidgetItem(cells[c]);
-            item->setToolTip(tip);
+    const physics::SatResult& result = m_model.result();
+    const int total = static_cast<int>(result.axes.size());
+    const int shown = m_model.shown();
+    m_table->setRowCount(shown);
+    for (int i = 0; i < shown; ++i) {
+        const RowText row = rowText(i);
+        for (int c = 0; c < row.cells.size(); ++c) {
+            auto* item = new QTableWidgetItem(row.cells[c]);
+            item->setToolTip(row.tip);
             item->setTextAlignment(Qt::AlignRight | Qt::AlignVCenter);
-            if (i == m_shown - 1)
+            if (i == shown - 1)
                 item->setBackground(QColor(255, 244, 200));
             m_table->setItem(i, c, item);
         }
     }
-    m_prev->setEnabled(active() && m_shown > 1);
-    m_next->setEnabled(active() && m_shown < total);
-    m_all_button->setEnabled(active() && m_shown < total);
+    m_prev->setEnabled(active() && shown > 1);
+    m_next->setEnabled(active() && shown < total);
+    m_all_button->setEnabled(active() && shown < total);
     if (!active()) {
         m_verdict->setText(tr("No pair of polygons to test."));
         m_summary->clear();
-    } else if (m_shown < total) {
+    } else if (shown < total) {
         m_verdict->setText(
-            tr("Axis %1 of %2 tested so far: no separating axis yet.").arg(m_shown).arg(total));
+            tr("Axis %1 of %2 tested so far: no separating axis yet.").arg(shown).arg(total));
         m_summary->setText(summary());
-    } else if (!m_result.intersects) {
+    } else if (!result.intersects) {
         m_verdict->setText(tr("Separated: axis %1 has a gap, so the test stops there.")
-                               .arg(m_result.separatingAxis + 1));
+                               .arg(result.separatingAxis + 1));
         m_summary->setText(summary());
     } else {
         m_verdict->setText(tr("Overlapping: no axis separates them."));
@@ -413,6 +364,45 @@ void SatPanel::updateTable()
         m_overlay->update();
 }
 
+SatPanel::RowText SatPanel::rowText(int i) const
+{
+    const physics::SatResult& result = m_model.result();
+    auto name = [&](int owner) {
+        const int id = owner == 0 ? m_model.bodyA() : m_model.bodyB();
+        return id >= 0 ? m_controller.scene().bodyLabel(id) : QString();
+    };
+    const physics::SatAxis& ax = result.axes[static_cast<std::size_t>(i)];
+    const bool separates = i == result.separatingAxis;
+    const bool least = i == result.leastAxis && m_model.complete();
+    const QString overlap =
+        ax.overlap < 0 ? tr("gap %1").arg(num(-ax.overlap, 2)) : num(ax.overlap, 2);
+    const QString note = separates ? tr("separates") : least ? tr("least overlap") : QString();
+    RowText row;
+    row.cells =
+        QStringList{tr("%1 %2", "polygon (A or B), edge number")
+                        .arg(ax.owner == 0 ? tr("A") : tr("B"))
+                        .arg(ax.edge),
+                    tr("A %1 … %2\nB %3 … %4")
+                        .arg(num(ax.minA, 2), num(ax.maxA, 2), num(ax.minB, 2), num(ax.maxB, 2)),
+                    note.isEmpty() ? overlap : overlap + QLatin1Char('\n') + note};
+    row.tip = tr("Axis %1: the normal of edge %2 of %3. On it, %4 covers [%5, %6] m and %7 covers "
+                 "[%8, %9] m.")
+                  .arg(i + 1)
+                  .arg(ax.edge)
+                  .arg(name(ax.owner), name(0), num(ax.minA), num(ax.maxA), name(1), num(ax.minB),
+                       num(ax.maxB));
+    row.tip +=
+        QLatin1Char(' ') + (ax.overlap < 0 ? tr("They are %1 m apart: a gap.").arg(num(-ax.overlap))
+                                           : tr("They overlap by %1 m.").arg(num(ax.overlap)));
+    if (separates)
+        row.tip += QLatin1Char(' ') + tr("This axis separates the polygons: they cannot touch, "
+                                         "and the test stops here (no collision).");
+    else if (least)
+        row.tip += QLatin1Char(' ') + tr("The least overlap of all axes: this axis is the "
+                                         "contact normal, and the overlap is the depth.");
+    return row;
+}
+
 CsvTable SatPanel::csv() const
 {
     CsvTable table;
@@ -421,12 +411,12 @@ CsvTable SatPanel::csv() const
         QStringLiteral("normal x"),    QStringLiteral("normal y"),  QStringLiteral("A min [m]"),
         QStringLiteral("A max [m]"),   QStringLiteral("B min [m]"), QStringLiteral("B max [m]"),
         QStringLiteral("overlap [m]"), QStringLiteral("note")};
-    const auto& axes = m_result.axes;
-    const int total = static_cast<int>(axes.size());
-    for (int i = 0; i < m_shown && i < total; ++i) {
-        const physics::SatAxis& ax = axes[static_cast<std::size_t>(i)];
-        const bool separates = i == m_result.separatingAxis;
-        const bool least = i == m_result.leastAxis && m_shown == total;
+    const physics::SatResult& result = m_model.result();
+    const int total = static_cast<int>(result.axes.size());
+    for (int i = 0; i < m_model.shown() && i < total; ++i) {
+        const physics::SatAxis& ax = result.axes[static_cast<std::size_t>(i)];
+        const bool separates = i == result.separatingAxis;
+        const bool least = i == result.leastAxis && m_model.complete();
         table.rows << QStringList{QString::number(i + 1),
                                   ax.owner == 0 ? QStringLiteral("A") : QStringLiteral("B"),
                                   QString::number(ax.edge),
@@ -448,30 +438,31 @@ QString SatPanel::summary() const
 {
     if (!active())
         return QString();
+    const physics::SatResult& result = m_model.result();
     const auto& bodies = m_controller.world().bodies();
     const auto vertexCount = [&](int id) {
         const physics::Polygon* p = bodies[static_cast<std::size_t>(id)].shape.asPolygon();
         return p ? static_cast<int>(p->vertices.size()) : 0;
     };
-    const int kA = vertexCount(m_a);
-    const int kB = vertexCount(m_b);
+    const int kA = vertexCount(m_model.bodyA());
+    const int kB = vertexCount(m_model.bodyB());
     const int k = kA + kB;
     QString text = tr("The test needed %1 of at most %2 axes (one per edge, %3 + %4), each "
                       "projecting all %2 vertices: %5 projections, against the paper's worst "
                       "case of (k₁ + k₂)² = %6.")
-                       .arg(m_result.axesTested)
+                       .arg(result.axesTested)
                        .arg(k)
                        .arg(kA)
                        .arg(kB)
-                       .arg(m_result.axesTested * k)
+                       .arg(result.axesTested * k)
                        .arg(k * k);
-    if (m_result.intersects && m_shown == static_cast<int>(m_result.axes.size())) {
+    if (result.intersects && m_model.complete()) {
         text += QStringLiteral("\n") +
                 tr("Least overlap on axis %1: normal (%2, %3) from A to B, depth %4 m, "
                    "%5 contact point(s) from clipping.")
-                    .arg(m_result.leastAxis + 1)
-                    .arg(num(m_result.normal.x()), num(m_result.normal.y()), num(m_result.depth))
-                    .arg(m_result.manifold.pointCount);
+                    .arg(result.leastAxis + 1)
+                    .arg(num(result.normal.x()), num(result.normal.y()), num(result.depth))
+                    .arg(result.manifold.pointCount);
     }
     return text;
 }

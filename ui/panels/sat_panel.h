@@ -9,13 +9,13 @@
 
 #include "panels/fitting_table.h"
 #include "view/sat_overlay.h"
+#include "view/sat_view_model.h"
 
 #include "rigidlab/physics/sat.h"
 
 #include <QPointer>
 
 #include <QWidget>
-#include <array>
 
 class QBoxLayout;
 class QLabel;
@@ -40,12 +40,14 @@ public:
     /// projections and the label of the axis shown.
     SatOverlayItem* overlay() { return m_overlay; }
     const SatOverlayItem& overlayItem() const { return *m_overlay; }
-    const physics::SatResult& result() const { return m_result; }
+    /// What the table and the overlay both show.
+    const SatViewModel& model() const { return m_model; }
+    const physics::SatResult& result() const { return m_model.result(); }
     /// How many of the tested axes are shown (the step the student is at).
-    int shown() const { return m_shown; }
-    bool active() const { return m_a >= 0 && m_b >= 0; }
-    int bodyA() const { return m_a; }
-    int bodyB() const { return m_b; }
+    int shown() const { return m_model.shown(); }
+    bool active() const { return m_model.active(); }
+    int bodyA() const { return m_model.bodyA(); }
+    int bodyB() const { return m_model.bodyB(); }
     const SimulationController& controller() const { return m_controller; }
     QString summary() const; ///< the text under the table
     const QTableWidget& table() const { return *m_table; }
@@ -65,6 +67,14 @@ protected:
 
 private:
     void updateTable();
+    /// Row `i` of the table: its three cells and the tooltip that explains them.
+    struct RowText {
+        QStringList cells;
+        QString tip;
+    };
+    RowText rowText(int i) const;
+    void buildTable();
+    void buildButtons(QBoxLayout* layout);
     /// The table and its header at the window's (maybe presentation) scale; the buttons as
     /// wide as their text.
     void fitFonts();
@@ -80,13 +90,8 @@ private:
     void followAxis(bool always);
 
     SimulationController& m_controller;
+    SatViewModel m_model; ///< before the overlay, which reads it
     SatOverlayItem* m_overlay;
-    int m_a = -1, m_b = -1;
-    int m_shown = 1;
-    bool m_all = false;
-    physics::SatResult m_result;
-    std::array<double, 6>
-        m_poses{}; ///< the pair's poses at the last refresh: x, y [m], angle [rad]
     QLabel* m_verdict;
     QTableWidget* m_table;
     QLabel* m_summary;

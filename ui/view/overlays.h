@@ -7,6 +7,7 @@
 #include "rigidlab/physics/world.h"
 
 #include <QGraphicsItem>
+#include <QPolygonF>
 
 #include <deque>
 #include <functional>
@@ -42,10 +43,27 @@ public:
     using FrozenPose = std::function<std::optional<physics::Transform>(int, physics::BodyId)>;
     void setFrozenPose(FrozenPose frozen) { m_frozen = std::move(frozen); }
 
+    /// A spring's zigzag from a to b (scene coordinates [m]) for a view at px metres per
+    /// pixel, drawn with a pen penPx wide: at most 12 turns, fewer where the spring is short
+    /// on screen, so that its coils stay apart even with presentation mode's thick lines
+    /// (each half-turn at least 2.5 pen widths along the spring, its amplitude growing
+    /// with the pen).
+    static QPolygonF springZigzag(const QPointF& a, const QPointF& b, double px, double penPx);
+
     QRectF boundingRect() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:
+    void paintTrails(QPainter* p) const;
+    void paintBoundingBoxes(QPainter* p) const;
+    /// Springs, pin joints and the grab line, of the main world and the compared ones.
+    void paintSpringsJoints(QPainter* p, double px) const;
+    void paintCentresOfMass(QPainter* p, double px) const;
+    void paintVelocities(QPainter* p, double px) const;
+    void paintContacts(QPainter* p, double px) const;
+    /// A body's pose as drawn in world w (0 the main one, v + 1 compared world v).
+    physics::Transform drawnTransform(int w, const physics::World& in, physics::BodyId id) const;
+
     const SimulationController& m_controller;
     bool m_on[kOverlayCount] = {false, false, false, false, false, true};
     std::vector<std::deque<QPointF>> m_trails; ///< bounded, per body

@@ -2,8 +2,8 @@
 #include "view/sat_overlay.h"
 
 #include "common/theme.h"
-#include "panels/sat_panel.h"
 #include "simulation/simulation_controller.h"
+#include "view/sat_view_model.h"
 
 #include <QFontMetricsF>
 #include <QGraphicsScene>
@@ -19,7 +19,8 @@ namespace rigidlab::ui {
 namespace {
 
 // Sizes on screen [px]: the line lies this far beside the shapes, each interval this far
-// off the line, drawn this thick; the gap or overlap is drawn bolder than the 4 px.
+// off the line, drawn this thick; the gap or overlap is drawn bolder than 4 px, to stand out from
+// the intervals.
 constexpr double kLineOffset = 40.0;
 constexpr double kIntervalOffset = 8.0;
 constexpr double kIntervalWidth = 7.0;
@@ -106,7 +107,7 @@ const std::vector<physics::Vec2>& polygonVertices(const physics::Shape& shape)
 
 } // namespace
 
-SatOverlayItem::SatOverlayItem(const SatPanel& panel) : m_panel(panel)
+SatOverlayItem::SatOverlayItem(const SatViewModel& model) : m_model(model)
 {
     setZValue(20);
     setAcceptedMouseButtons(Qt::NoButton);
@@ -136,17 +137,17 @@ QFont SatOverlayItem::viewFont() const
 SatOverlayItem::Geometry SatOverlayItem::geometry(double px) const
 {
     Geometry g;
-    if (m_detached || !m_panel.active())
+    if (m_detached || !m_model.active())
         return g;
-    const physics::SatResult& r = m_panel.result();
+    const physics::SatResult& r = m_model.result();
     const int total = static_cast<int>(r.axes.size());
-    const int shown = std::min(m_panel.shown(), total);
+    const int shown = std::min(m_model.shown(), total);
     if (shown <= 0)
         return g;
     // The ids are checked against the world: a new scene may be in place before the panel
     // is told its new pair.
-    const auto& world = m_panel.controller().world();
-    for (const int id : {m_panel.bodyA(), m_panel.bodyB()})
+    const auto& world = m_model.controller().world();
+    for (const int id : {m_model.bodyA(), m_model.bodyB()})
         if (id < 0 || id >= static_cast<int>(world.bodies().size()) ||
             polygonVertices(world.body(id).shape).empty())
             return g;
@@ -158,7 +159,7 @@ SatOverlayItem::Geometry SatOverlayItem::geometry(double px) const
     // The line lies beside the two shapes tested (not the rest of the scene), past their
     // farthest point along t.
     double tMax = -1e300;
-    for (const int id : {m_panel.bodyA(), m_panel.bodyB()}) {
+    for (const int id : {m_model.bodyA(), m_model.bodyB()}) {
         const physics::Body& b = world.body(id);
         const physics::Transform xf = b.transform();
         for (const auto& v : polygonVertices(b.shape)) {
@@ -217,8 +218,8 @@ QRectF SatOverlayItem::hullRect() const
     QRectF box;
     if (m_detached)
         return box;
-    const auto& scene = m_panel.controller().scene();
-    const auto& world = m_panel.controller().world();
+    const auto& scene = m_model.controller().scene();
+    const auto& world = m_model.controller().world();
     for (std::size_t i = 0; i < scene.originalVertices.size() && i < world.bodies().size(); ++i) {
         if (scene.originalVertices[i].empty())
             continue;
@@ -242,8 +243,8 @@ void SatOverlayItem::paintHulls(QPainter* p, double px) const
 {
     // A body whose outline was not convex is handled as its convex hull (the seed's
     // caveat): shade the area the hull adds, where contacts are found wrongly.
-    const auto& scene = m_panel.controller().scene();
-    const auto& world = m_panel.controller().world();
+    const auto& scene = m_model.controller().scene();
+    const auto& world = m_model.controller().world();
     for (std::size_t i = 0; i < scene.originalVertices.size() && i < world.bodies().size(); ++i) {
         const auto& original = scene.originalVertices[i];
         if (original.empty())
@@ -281,8 +282,8 @@ void SatOverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget
     const Geometry g = geometry(px);
     if (!g.valid)
         return;
-    const physics::SatResult& r = m_panel.result();
-    const int shown = std::min<int>(m_panel.shown(), static_cast<int>(r.axes.size()));
+    const physics::SatResult& r = m_model.result();
+    const int shown = std::min<int>(m_model.shown(), static_cast<int>(r.axes.size()));
     const physics::SatAxis& ax = r.axes[static_cast<std::size_t>(shown - 1)];
     const QPointF n = qt(ax.axis), t(-n.y(), n.x());
 
@@ -309,8 +310,8 @@ void SatOverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget
     p->drawLine(g.span.p2() - tick, g.span.p2() + tick);
     // The edge the axis comes from, thick, in its polygon's colour.
     {
-        const auto& world = m_panel.controller().world();
-        const physics::Body& owner = world.body(ax.owner == 0 ? m_panel.bodyA() : m_panel.bodyB());
+        const auto& world = m_model.controller().world();
+        const physics::Body& owner = world.body(ax.owner == 0 ? m_model.bodyA() : m_model.bodyB());
         const auto& v = polygonVertices(owner.shape);
         const physics::Transform xf = owner.transform();
         const std::size_t e = static_cast<std::size_t>(ax.edge);

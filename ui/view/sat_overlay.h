@@ -26,7 +26,7 @@
 
 namespace rigidlab::ui {
 
-class SatPanel;
+class SatViewModel;
 
 class SatOverlayItem : public QGraphicsItem {
     Q_DECLARE_TR_FUNCTIONS(SatOverlayItem)
@@ -49,11 +49,12 @@ public:
         QRectF drawn;         ///< everything above (shapes included)
     };
 
-    explicit SatOverlayItem(const SatPanel& panel);
+    /// Draws what `model` holds; the model outlives the item or detach() is called first.
+    explicit SatOverlayItem(const SatViewModel& model);
     ~SatOverlayItem() override;
     /// Called when the item is deleted (by its scene, when the scene goes first).
     void setOnDestroyed(std::function<void()> f) { m_onDestroyed = std::move(f); }
-    /// From now on the item draws nothing and reads nothing of the panel (whose controller
+    /// From now on the item draws nothing and reads nothing of the model (whose controller
     /// or itself is being destroyed while the item may still be asked for its bounds).
     void detach()
     {
@@ -72,13 +73,13 @@ public:
     Geometry geometry() const { return geometry(pixelSize()); }
     /// Metres per pixel of the first view showing the scene (0.01 without one).
     double pixelSize() const;
-    /// Call before the data drawn changes (the panel does).
+    /// Call before the data drawn changes (the panel that changes the model does).
     void dataChanging() { prepareGeometryChange(); }
 
 private:
     void paintHulls(QPainter* painter, double px) const;
     QRectF hullRect() const;
-    const SatPanel& m_panel;
+    const SatViewModel& m_model;
     std::function<void()> m_onDestroyed;
     bool m_detached = false;
 };

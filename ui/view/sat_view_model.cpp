@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "view/sat_view_model.h"
+
+#include "simulation/simulation_controller.h"
+
+#include <algorithm>
+
+namespace rigidlab::ui {
+
+void SatViewModel::setBodies(int a, int b)
+{
+    const int n = static_cast<int>(m_controller.world().bodies().size());
+    auto polygon = [&](int id) {
+        return id >= 0 && id < n && m_controller.world().body(id).shape.asPolygon();
+    };
+    m_a = polygon(a) && polygon(b) ? a : -1;
+    m_b = m_a >= 0 ? b : -1;
+    m_shown = 1;
+    m_all = false;
+    refresh();
+}
+
+void SatViewModel::nextAxis()
+{
+    m_all = false;
+    m_shown = std::min<int>(m_shown + 1, static_cast<int>(m_result.axes.size()));
+    settle();
+}
+
+void SatViewModel::previousAxis()
+{
+    m_all = false;
+    m_shown = std::max(1, m_shown - 1);
+    settle();
+}
+
+void SatViewModel::showAll()
+{
+    m_all = true;
+    settle();
+}
+
+void SatViewModel::settle()
+{
+    const int total = static_cast<int>(m_result.axes.size());
+    if (m_all)
+        m_shown = total;
+    m_shown = std::clamp(m_shown, std::min(1, total), total);
+}
+
+bool SatViewModel::refresh()
+{
+    // The pair was checked to be two polygons when it was set; a world replaced since is
+    // checked again rather than trusted.
+    const auto& world = m_controller.world();
+    const int n = static_cast<int>(world.bodies().size());
+    const bool inWorld = active() && m_a < n && m_b < n;
+    const physics::Polygon* pa = inWorld ? world.body(m_a).shape.asPolygon() : nullptr;
+    const physics::Polygon* pb = inWorld ? world.body(m_b).shape.asPolygon() : nullptr;
+    if (!pa || !pb) {
+        m_result = physics::SatResult{};
+        settle();
+        return false;
+    }
+    const physics::Body& a = world.body(m_a);
+    const physics::Body& b = world.body(m_b);
+    m_result = physics::satPolygons(*pa, a.transform(), *pb, b.transform());
+    settle();
+    const std::array<double, 6> poses{a.position.x(), a.position.y(), a.angle,
+                                      b.position.x(), b.position.y(), b.angle};
+    if (poses == m_poses)
+        return false;
+    m_poses = poses;
+    return true;
+}
+
+} // namespace rigidlab::ui
