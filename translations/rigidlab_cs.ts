@@ -1600,16 +1600,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Editor</translation>
     </message>
     <message>
-        <source>Edit the scene: draw bodies, pins and springs (%1); leave to run it</source>
-        <translation>Upravit scénu: kreslit tělesa, čepy a&#xa0;pružiny (%1); po opuštění se scéna spustí</translation>
-    </message>
-    <message>
         <source>Delete selected body</source>
         <translation>Smazat vybrané těleso</translation>
-    </message>
-    <message>
-        <source>Edit mode: the world is paused at its start; leave Edit mode or press Space to run it</source>
-        <translation>Editor: svět stojí na začátku; spustíte ho vypnutím editoru nebo mezerníkem</translation>
     </message>
     <message>
         <source>Select a body to turn it</source>
@@ -1738,6 +1730,62 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Velocity</source>
         <translation>Rychlost</translation>
+    </message>
+    <message>
+        <source>Edit the scene: draw bodies, pins and springs (%1); leaving it keeps the world paused at its start</source>
+        <translation>Upravit scénu: kreslit tělesa, čepy a&#xa0;pružiny (%1); po opuštění editoru svět stojí na začátku</translation>
+    </message>
+    <message>
+        <source>Edit mode: the world is paused at its start; press Space to run it</source>
+        <translation>Editor: svět stojí na začátku; spustíte ho mezerníkem</translation>
+    </message>
+    <message>
+        <source>Delete: click a body to delete it with its springs and pins; the Delete key deletes the selected body or spring</source>
+        <translation>Smazat: kliknutím smažete těleso i&#xa0;s&#xa0;jeho pružinami a&#xa0;čepy; klávesa Delete smaže vybrané těleso nebo pružinu</translation>
+    </message>
+    <message>
+        <source>Duplicate: click a body to place a copy beside it; Enter copies the selected body</source>
+        <translation>Duplikovat: kliknutím položíte vedle tělesa jeho kopii; Enter zkopíruje vybrané těleso</translation>
+    </message>
+    <message>
+        <source>Select a body to duplicate it</source>
+        <translation>Vyberte těleso, které chcete duplikovat</translation>
+    </message>
+    <message>
+        <source>Pin: click a point of a body, then a second body or empty space for the world; Enter pins the selected body to the world at its centre</source>
+        <translation>Čep: klikněte na bod tělesa, pak na druhé těleso nebo na prázdné místo pro okolí; Enter připne vybrané těleso k&#xa0;okolí v&#xa0;jeho středu</translation>
+    </message>
+    <message>
+        <source>Polygon: click the vertices, then double-click or press Enter to close it; Backspace drops the last point; Enter with no points adds a triangle</source>
+        <translation>Mnohoúhelník: klikejte na vrcholy, dvojklikem nebo klávesou Enter ho uzavřete; Backspace odebere poslední bod; Enter bez bodů přidá trojúhelník</translation>
+    </message>
+    <message>
+        <source>Rotate: drag a body, or anywhere for the selected one, to turn it about its origin; a click selects; Q and E turn the selected body by 5°</source>
+        <translation>Otočení: tažením tělesa (nebo kdekoli pro vybrané těleso) ho otočíte kolem jeho počátku; kliknutí vybírá; Q a&#xa0;E otočí vybrané těleso o&#xa0;5°</translation>
+    </message>
+    <message>
+        <source>Select: click a body or a spring to select it, drag a body to move it, drag the arrow&apos;s handle to set its velocity; the arrow keys nudge, Q and E turn</source>
+        <translation>Výběr: kliknutím vyberete těleso nebo pružinu, tažením těleso posunete, tažením konce šipky nastavíte jeho rychlost; šipky posunou o&#xa0;kousek, Q a&#xa0;E otočí</translation>
+    </message>
+    <message>
+        <source>Circle: drag from the centre outwards to draw one; a click draws nothing; Enter adds one at the view&apos;s centre</source>
+        <translation>Kruh: nakreslíte ho tažením od středu ven; samotné kliknutí nic nenakreslí; Enter přidá kruh doprostřed pohledu</translation>
+    </message>
+    <message>
+        <source>Box: drag from corner to corner to draw one; a click draws nothing; Enter adds one at the view&apos;s centre</source>
+        <translation>Obdélník: nakreslíte ho tažením z&#xa0;rohu do rohu; samotné kliknutí nic nenakreslí; Enter přidá obdélník doprostřed pohledu</translation>
+    </message>
+    <message>
+        <source>Ground: drag from corner to corner to draw static ground or a wall; a click draws nothing; Enter adds a floor at the view&apos;s centre</source>
+        <translation>Podložka: statickou podložku nebo stěnu nakreslíte tažením z&#xa0;rohu do rohu; samotné kliknutí nic nenakreslí; Enter přidá podlahu doprostřed pohledu</translation>
+    </message>
+    <message>
+        <source>Spring: drag from one point to another (a body or empty space, the world, at each end); a click draws nothing; Enter hangs the selected body from the world</source>
+        <translation>Pružina: táhněte od jednoho bodu k&#xa0;druhému (na každém konci těleso, nebo prázdné místo pro okolí); samotné kliknutí nic nenakreslí; Enter zavěsí vybrané těleso na okolí</translation>
+    </message>
+    <message>
+        <source>Select a body to hang it from a spring</source>
+        <translation>Vyberte těleso, které chcete zavěsit na pružinu</translation>
     </message>
 </context>
 <context>

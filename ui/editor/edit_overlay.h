@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// What Edit mode draws over the world: the grid, the selected body's outline and rotate
-// handle and velocity arrow, overlapping bodies, the shape, pin or spring being drawn with its
-// size, and where the pointer snaps to another body.
+// What Edit mode draws over the world: the grid, overlapping bodies, the selected body's
+// outline, rotate handle and velocity arrow, the selected spring, what the tool in use draws
+// (the shape, pin or spring being drawn, with its size) and where the pointer snaps to
+// another body.
 
 #include <QGraphicsItem>
 
@@ -19,9 +20,14 @@ public:
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
 private:
-    /// The selected body's velocity arrow (editor/velocity_arrow.h), its speed while dragged.
-    void paintVelocity(QPainter* painter, double zoom) const;
-    static void drawSnapMarker(QPainter* painter, const Snap& snap, double zoom);
+    /// The grid, as dots at its crossings, where snapping puts points.
+    void paintGrid(QPainter& painter, const QWidget* widget) const;
+    /// Overlapping bodies, shown before the scene runs.
+    void paintOverlaps(QPainter& painter) const;
+    /// The selected body: its outline, its origin, the rotate handle and the velocity arrow.
+    void paintSelectedBody(QPainter& painter, double zoom) const;
+    void paintSelectedSpring(QPainter& painter) const;
+    static void paintSnapMarker(QPainter& painter, const Snap& snap, double zoom);
 
     const EditTools& m_tools;
 };

@@ -3,6 +3,7 @@
 
 #include "editor/edit_overlay.h"
 #include "editor/scene_document.h"
+#include "editor/tools/all_tools.h"
 
 #include "edit/scene_edits.h"
 #include "format/editor_tools.h"
@@ -14,13 +15,9 @@
 #include <QAction>
 #include <QActionGroup>
 #include <QGraphicsScene>
-#include <QKeyEvent>
-#include <QMouseEvent>
 #include <QUndoStack>
 
-#include <algorithm>
 #include <cmath>
-#include <numbers>
 
 namespace rigidlab::ui {
 
@@ -29,12 +26,8 @@ namespace edit = lessons::edit;
 
 namespace {
 
-/// A pointer this close to another body's vertex, centre or edge snaps to it [px].
-constexpr double kVertexSnapPixels = 8.0;
 /// Q and E turn by this much, as they do outside Edit mode [rad].
 constexpr double kTurnStep = 5.0 * std::numbers::pi / 180.0;
-/// Dragging the rotate handle with the grid on turns in steps of this much [rad].
-constexpr double kAngleSnap = 15.0 * std::numbers::pi / 180.0;
 
 struct ToolInfo {
     const char* name; ///< the action's objectName and its row in shortcuts.h
@@ -82,35 +75,34 @@ double roundStep(double v)
     return 10.0 * decade;
 }
 
-/// The body's width along x [m], for placing a duplicate beside it.
-double bodyWidth(const physics::BodyDef& def)
-{
-    return def.shape.visit(
-        physics::Overloaded{[](const physics::Circle& c) { return 2.0 * c.radius; },
-                            [&def](const physics::Polygon& p) {
-                                const physics::Rotation q(def.angle);
-                                double lo = 0.0;
-                                double hi = 0.0;
-                                for (const Vec2& v : p.vertices) {
-                                    lo = std::min(lo, q.apply(v).x());
-                                    hi = std::max(hi, q.apply(v).x());
-                                }
-                                return hi - lo;
-                            }});
-}
-
 } // namespace
 
 EditTools::EditTools(WorldView& view, SimulationController& simulation, SceneDocument& document,
                      QObject* parent)
     : QObject(parent), m_view(view), m_simulation(simulation), m_document(document)
 {
+    for (size_t i = 0; i < m_tools.size(); ++i) {
+        m_tools[i] = makeTool(static_cast<EditTool>(i), *this);
+    }
+    createActions();
+
+    m_overlay = new EditOverlay(*this);
+    m_overlay->setZValue(20);
+    m_overlay->setVisible(false);
+    m_view.scene()->addItem(m_overlay);
+    followSimulation();
+}
+
+EditTools::~EditTools() = default;
+
+void EditTools::createActions()
+{
     m_editAction = new QAction(tr("Edit"), this);
     m_editAction->setObjectName(QStringLiteral("editMode"));
     m_editAction->setCheckable(true);
     m_editAction->setShortcuts(controlKeys("editMode"));
-    m_editAction->setToolTip(tr("Edit the scene: draw bodies, pins and springs (%1); leave to "
-                                "run it")
+    m_editAction->setToolTip(tr("Edit the scene: draw bodies, pins and springs (%1); leaving it "
+                                "keeps the world paused at its start")
                                  .arg(controlKeysText("editMode")));
     connect(m_editAction, &QAction::toggled, this, &EditTools::setEditing);
 
@@ -145,12 +137,10 @@ EditTools::EditTools(WorldView& view, SimulationController& simulation, SceneDoc
     m_deleteSelection->setShortcuts(controlKeys("editDelete"));
     m_deleteSelection->setEnabled(false);
     connect(m_deleteSelection, &QAction::triggered, this, &EditTools::deleteSelected);
+}
 
-    m_overlay = new EditOverlay(*this);
-    m_overlay->setZValue(20);
-    m_overlay->setVisible(false);
-    m_view.scene()->addItem(m_overlay);
-
+void EditTools::followSimulation()
+{
     connect(&m_document, &SceneDocument::sceneChanged, this, [this] {
         if (m_editing && m_reloadsWorld) {
             reloadWorld();
@@ -171,10 +161,12 @@ EditTools::EditTools(WorldView& view, SimulationController& simulation, SceneDoc
         m_view.selectBody(m_selected);
         refreshOverlay();
     });
-    // Run (Space) while editing leaves Edit mode and runs the scene as edited.
+    // Run (Space) while editing leaves Edit mode and runs the scene as edited (leaving Edit
+    // mode reloads the world, which pauses it).
     connect(&m_simulation, &SimulationController::runningChanged, this, [this](bool running) {
         if (running && m_editing) {
             setEditing(false);
+            m_simulation.setRunning(true);
         }
     });
 }
@@ -209,24 +201,25 @@ void EditTools::setEditing(bool on)
     m_deleteSelection->setEnabled(on);
     cancelGesture();
     m_overlay->setVisible(on);
-    // The view holds still under the pen while the world is rebuilt after each edit.
-    m_view.setFitOnRebuild(!on);
+    // The view holds still under the pen while the world is rebuilt after each edit, and as
+    // Edit mode is left: the class sees the scene as it was drawn (a long floor would make a
+    // view fitted to it small).
+    m_view.setFitOnRebuild(false);
     if (on) {
         m_view.installEventFilter(this);
         m_view.viewport()->installEventFilter(this);
         m_simulation.setRunning(false);
         m_simulation.setStepsHeld(true); // Step, Back and the clock leave the scene alone
         reloadWorld();
-        say(tr("Edit mode: the world is paused at its start; leave Edit mode or press Space to "
-               "run it"));
+        say(tr("Edit mode: the world is paused at its start; press Space to run it"));
     } else {
         m_view.removeEventFilter(this);
         m_view.viewport()->removeEventFilter(this);
         m_simulation.setStepsHeld(false);
-        reloadWorld();
+        reloadWorld(); // paused at the start of the scene as edited: the class predicts first
+        m_view.setFitOnRebuild(true);
         m_selected = -1;
         say({});
-        m_simulation.setRunning(true);
     }
     updateSnapText();
     emit editingChanged(on);
@@ -293,7 +286,7 @@ void EditTools::setTool(EditTool tool)
     cancelGesture();
     m_tool = tool;
     m_toolActions[static_cast<size_t>(tool)]->setChecked(true);
-    say(tr(kTools[static_cast<size_t>(tool)].tip));
+    say(current().status());
 }
 
 void EditTools::selectBody(int body)
@@ -384,506 +377,6 @@ void EditTools::deleteSelected()
     selectBody(-1);
 }
 
-void EditTools::closePolygon()
-{
-    if (m_polygon.empty()) {
-        return;
-    }
-    const std::vector<Vec2> points = m_polygon;
-    m_polygon.clear();
-    const auto result = edit::addPolygon(m_document.scene(), points);
-    if (apply(tr("Add polygon %1").arg(bodyName(result.scene, result.body)), result)) {
-        selectBody(result.body);
-    }
-    refreshOverlay();
-}
-
-bool EditTools::eventFilter(QObject* watched, QEvent* event)
-{
-    if (!m_editing) {
-        return false;
-    }
-    if (watched == m_view.viewport()) {
-        switch (event->type()) {
-        case QEvent::MouseButtonPress:
-            return mousePress(static_cast<QMouseEvent*>(event));
-        case QEvent::MouseButtonDblClick:
-            if (auto* mouse = static_cast<QMouseEvent*>(event);
-                m_tool == EditTool::Polygon && mouse->button() == Qt::LeftButton) {
-                // The double-click's point, unless its first click placed it already.
-                const Vec2 p = snapped(m_view.worldAt(mouse->position().toPoint()));
-                if (m_polygon.empty() || m_polygon.back() != p) {
-                    m_polygon.push_back(p);
-                }
-                closePolygon();
-                return true;
-            }
-            return mousePress(static_cast<QMouseEvent*>(event));
-        case QEvent::MouseMove:
-            return mouseMove(static_cast<QMouseEvent*>(event));
-        case QEvent::MouseButtonRelease:
-            return mouseRelease(static_cast<QMouseEvent*>(event));
-        default:
-            return false;
-        }
-    }
-    if (watched == &m_view) {
-        if (event->type() == QEvent::ShortcutOverride && wantsKey(static_cast<QKeyEvent*>(event))) {
-            event->accept(); // the key comes as a key press, not as the window's shortcut
-            return true;
-        }
-        if (event->type() == QEvent::KeyPress) {
-            return keyPress(static_cast<QKeyEvent*>(event));
-        }
-    }
-    return false;
-}
-
-bool EditTools::wantsKey(const QKeyEvent* event) const
-{
-    if (event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier)) {
-        return false;
-    }
-    switch (event->key()) {
-    case Qt::Key_Left:
-    case Qt::Key_Right:
-    case Qt::Key_Up:
-    case Qt::Key_Down:
-    case Qt::Key_Q:
-    case Qt::Key_E:
-        return m_selected >= 0;
-    case Qt::Key_Delete:
-        return m_selected >= 0 || m_selectedSpring >= 0;
-    case Qt::Key_Return:
-    case Qt::Key_Enter:
-    case Qt::Key_Escape:
-    case Qt::Key_Backspace:
-        return !m_polygon.empty() || m_drag.active || m_pinStart.has_value();
-    default:
-        return false;
-    }
-}
-
-bool EditTools::keyPress(QKeyEvent* event)
-{
-    // A locked tool's key (its action is disabled, so no shortcut takes it): said, not ignored.
-    const QKeySequence pressed(event->keyCombination());
-    for (size_t i = 0; i < kTools.size(); ++i) {
-        if (locked(static_cast<EditTool>(i)) && m_toolActions[i]->shortcuts().contains(pressed)) {
-            setTool(static_cast<EditTool>(i));
-            return true;
-        }
-    }
-    if (!wantsKey(event)) {
-        return false;
-    }
-    // One grid step, or a tenth of one with Shift (or with the grid off).
-    const double step =
-        gridStep() *
-        ((event->modifiers() & Qt::ShiftModifier) || !m_snapAction->isChecked() ? 0.1 : 1.0);
-    switch (event->key()) {
-    case Qt::Key_Left:
-        nudgeSelected(Vec2(-step, 0.0));
-        break;
-    case Qt::Key_Right:
-        nudgeSelected(Vec2(step, 0.0));
-        break;
-    case Qt::Key_Up:
-        nudgeSelected(Vec2(0.0, step));
-        break;
-    case Qt::Key_Down:
-        nudgeSelected(Vec2(0.0, -step));
-        break;
-    case Qt::Key_Q:
-        rotateSelected(kTurnStep);
-        break;
-    case Qt::Key_E:
-        rotateSelected(-kTurnStep);
-        break;
-    case Qt::Key_Return:
-    case Qt::Key_Enter:
-        closePolygon();
-        break;
-    case Qt::Key_Delete:
-        deleteSelected();
-        break;
-    case Qt::Key_Backspace:
-        if (!m_polygon.empty()) {
-            m_polygon.pop_back();
-            refreshOverlay();
-        }
-        break;
-    case Qt::Key_Escape:
-        cancelGesture();
-        say({});
-        break;
-    default:
-        return false;
-    }
-    return true;
-}
-
-bool EditTools::mousePress(QMouseEvent* event)
-{
-    if (event->button() != Qt::LeftButton) {
-        return false; // the middle button pans, as outside Edit mode
-    }
-    m_view.setFocus(Qt::MouseFocusReason);
-    const Vec2 raw = m_view.worldAt(event->position().toPoint());
-    const Vec2 p = snapped(raw);
-    const lessons::Scene& scene = m_document.scene();
-    m_drag = Drag{};
-    m_drag.start = p;
-    m_drag.current = p;
-    switch (m_tool) {
-    case EditTool::Select:
-    case EditTool::Rotate: {
-        if (m_tool == EditTool::Select && pressVelocityHandle(raw)) {
-            return true;
-        }
-        const int body =
-            bodyAt(raw) >= 0 ? bodyAt(raw) : (m_tool == EditTool::Rotate ? m_selected : -1);
-        if (body < 0) {
-            selectBody(-1);
-            if (const int spring = springAt(raw); spring >= 0 && m_tool == EditTool::Select) {
-                selectSpring(spring);
-                return true;
-            }
-            selectSpring(-1);
-            return false; // empty space pans
-        }
-        selectBody(body);
-        const auto& def = scene.bodies[static_cast<size_t>(body)];
-        m_drag.active = true;
-        m_drag.body = body;
-        m_drag.grabOffset = def.position - raw;
-        m_drag.startAngle = def.angle;
-        m_drag.pointerAngle = std::atan2(raw.y() - def.position.y(), raw.x() - def.position.x());
-        m_drag.mergeId = m_nextMergeId++;
-        return true;
-    }
-    case EditTool::Circle:
-    case EditTool::Box:
-    case EditTool::Ground:
-        m_drag.active = true;
-        refreshOverlay();
-        return true;
-    case EditTool::Spring:
-        m_drag.active = true;
-        m_drag.bodyA = bodyAtOrSnapped(raw);
-        refreshOverlay();
-        return true;
-    case EditTool::Polygon:
-        m_polygon.push_back(p);
-        if (const auto preview = edit::previewPolygon(m_polygon); !preview.warning.isEmpty()) {
-            say(tr("Not convex: it will be replaced by the convex hull shown"));
-        } else {
-            say(tr("%n point(s); double-click or Enter closes the polygon, Escape drops it", "",
-                   static_cast<int>(m_polygon.size())));
-        }
-        refreshOverlay();
-        return true;
-    case EditTool::Pin: {
-        const int body = bodyAtOrSnapped(raw);
-        if (!m_pinStart) {
-            if (body < 0) {
-                say(tr("Click a point of a body to pin it"));
-                return true;
-            }
-            m_pinStart = std::pair{body, p};
-            selectBody(body);
-            say(tr("Now click a second body, or empty space to pin it to the world"));
-            refreshOverlay();
-            return true;
-        }
-        const auto [first, point] = *m_pinStart;
-        m_pinStart.reset();
-        apply(body < 0 ? tr("Pin %1 to the world").arg(bodyName(scene, first))
-                       : tr("Pin %1 to %2").arg(bodyName(scene, first), bodyName(scene, body)),
-              edit::addPin(scene, first, body, point));
-        refreshOverlay();
-        return true;
-    }
-    case EditTool::Delete: {
-        const int body = bodyAt(raw);
-        if (body >= 0) {
-            selectBody(body);
-            deleteSelected();
-        }
-        return true;
-    }
-    case EditTool::Duplicate: {
-        const int body = bodyAt(raw);
-        if (body >= 0) {
-            const auto& def = scene.bodies[static_cast<size_t>(body)];
-            const double width = bodyWidth(def);
-            const double offset =
-                m_snapAction->isChecked() ? std::ceil(width / gridStep()) * gridStep() : width;
-            const auto result = edit::duplicateBody(scene, body, Vec2(offset, 0.0));
-            if (apply(
-                    tr("Duplicate %1 as %2")
-                        .arg(QString::fromStdString(def.name), bodyName(result.scene, result.body)),
-                    result)) {
-                selectBody(result.body);
-            }
-        }
-        return true;
-    }
-    }
-    return false;
-}
-
-bool EditTools::mouseMove(QMouseEvent* event)
-{
-    const Vec2 raw = m_view.worldAt(event->position().toPoint());
-    updateSnapText();
-    m_pointer = snapped(raw, m_drag.active ? m_drag.body : -1);
-    const bool hadMarker = m_bodySnap.has_value();
-    updateSnapMarker(raw);
-    if (!m_drag.active) {
-        // Repainted for a gesture under way, or for a snap marker that shows, moves or goes;
-        // a pointer crossing empty space repaints nothing.
-        if (!m_polygon.empty() || m_pinStart || hadMarker || m_bodySnap) {
-            refreshOverlay();
-        }
-        return false;
-    }
-    m_drag.current = m_pointer;
-    m_drag.moved = true;
-    if (m_drag.velocity) {
-        dragVelocity(raw);
-        return true;
-    }
-    const lessons::Scene& scene = m_document.scene();
-    switch (m_tool) {
-    case EditTool::Select: {
-        const Vec2 target = movedBodyTarget(m_drag, raw);
-        const auto& def = scene.bodies[static_cast<size_t>(m_drag.body)];
-        if (apply(tr("Move %1").arg(QString::fromStdString(def.name)),
-                  edit::moveBody(scene, m_drag.body, target), m_drag.mergeId)) {
-            say(tr("%1 at (%2; %3) m")
-                    .arg(QString::fromStdString(def.name), metres(target.x()), metres(target.y())));
-        }
-        return true;
-    }
-    case EditTool::Rotate: {
-        const auto& def = scene.bodies[static_cast<size_t>(m_drag.body)];
-        const double pointer = std::atan2(raw.y() - def.position.y(), raw.x() - def.position.x());
-        double angle = m_drag.startAngle + (pointer - m_drag.pointerAngle);
-        if (m_snapAction->isChecked()) {
-            angle = std::round(angle / kAngleSnap) * kAngleSnap;
-        }
-        if (apply(tr("Rotate %1").arg(QString::fromStdString(def.name)),
-                  edit::rotateBody(scene, m_drag.body, angle), m_drag.mergeId)) {
-            say(tr("%1 at %2°")
-                    .arg(QString::fromStdString(def.name),
-                         formatNumber(angle * 180.0 / std::numbers::pi, 4)));
-        }
-        return true;
-    }
-    case EditTool::Circle:
-        say(tr("Circle: centre (%1; %2) m, radius %3 m")
-                .arg(metres(m_drag.start.x()), metres(m_drag.start.y()),
-                     metres((m_drag.current - m_drag.start).norm())));
-        break;
-    case EditTool::Box:
-    case EditTool::Ground: {
-        const Vec2 size = (m_drag.current - m_drag.start).cwiseAbs();
-        say(tr("%1 × %2 m").arg(metres(size.x()), metres(size.y())));
-        break;
-    }
-    case EditTool::Spring:
-        say(tr("Spring: length %1 m").arg(metres((m_drag.current - m_drag.start).norm())));
-        break;
-    default:
-        break;
-    }
-    refreshOverlay();
-    return true;
-}
-
-bool EditTools::mouseRelease(QMouseEvent* event)
-{
-    if (event->button() != Qt::LeftButton || !m_drag.active) {
-        return false;
-    }
-    const Vec2 raw = m_view.worldAt(event->position().toPoint());
-    const Drag drag = m_drag;
-    m_drag = Drag{};
-    const lessons::Scene& scene = m_document.scene();
-    Vec2 end = snapped(raw);
-    if (m_snapAction->isChecked() && (m_tool == EditTool::Box || m_tool == EditTool::Ground)) {
-        // A thin box whose two edges snap to one grid line keeps one grid step across, the way
-        // it was dragged, instead of being refused as flat (a ramp drawn on a 1 m grid).
-        for (int k = 0; k < 2; ++k) {
-            if (end[k] == drag.start[k] && raw[k] != drag.start[k]) {
-                end[k] = drag.start[k] + (raw[k] > drag.start[k] ? gridStep() : -gridStep());
-            }
-        }
-    }
-    const Vec2 centre = 0.5 * (drag.start + end);
-    const Vec2 size = (end - drag.start).cwiseAbs();
-    edit::EditResult result;
-    QString what;
-    switch (m_tool) {
-    case EditTool::Circle:
-        what = tr("Add circle %1");
-        result = edit::addCircle(scene, drag.start, (end - drag.start).norm());
-        break;
-    case EditTool::Box:
-        what = tr("Add box %1");
-        result = edit::addBox(scene, centre, size.x(), size.y());
-        break;
-    case EditTool::Ground:
-        what = tr("Add ground %1");
-        result = edit::addGround(scene, centre, size.x(), size.y());
-        break;
-    case EditTool::Spring:
-        what = tr("Add spring from %1 to %2");
-        result = edit::addSpring(scene, drag.bodyA, drag.start, bodyAtOrSnapped(raw), end,
-                                 kSpringStiffness);
-        if (result.ok) {
-            const auto& spring = result.scene.springs.back();
-            what = what.arg(bodyName(scene, spring.a), bodyName(scene, spring.b));
-        }
-        break;
-    default:
-        m_bodySnap.reset(); // the body is set down
-        refreshOverlay();
-        return true; // a move or a turn is applied as it goes
-    }
-    if (result.ok && m_tool != EditTool::Spring) {
-        what = what.arg(bodyName(result.scene, result.body));
-    }
-    if (apply(what, result) && m_tool != EditTool::Spring) {
-        selectBody(result.body);
-    }
-    refreshOverlay();
-    return true;
-}
-
-int EditTools::bodyAt(const Vec2& p) const
-{
-    const auto& bodies = m_document.scene().bodies;
-    for (int i = static_cast<int>(bodies.size()) - 1; i >= 0; --i) {
-        const auto& def = bodies[static_cast<size_t>(i)];
-        const Vec2 local = physics::Transform(def.position, def.angle).applyInverse(p);
-        const bool inside = def.shape.visit(physics::Overloaded{
-            [&](const physics::Circle& c) { return (local - c.center).norm() <= c.radius; },
-            [&](const physics::Polygon& poly) {
-                for (size_t k = 0; k < poly.vertices.size(); ++k) {
-                    if (poly.normals[k].dot(local - poly.vertices[k]) > 0) {
-                        return false;
-                    }
-                }
-                return true;
-            }});
-        if (inside) {
-            return i;
-        }
-    }
-    return -1;
-}
-
-int EditTools::springAt(const Vec2& p) const
-{
-    const lessons::Scene& scene = m_document.scene();
-    const double reach = kVertexSnapPixels / std::max(m_view.zoom(), 1e-9);
-    const auto end = [&scene](physics::BodyId body, const Vec2& anchor) {
-        if (body == physics::kWorld) {
-            return anchor;
-        }
-        const auto& def = scene.bodies[static_cast<size_t>(body)];
-        return physics::Transform(def.position, def.angle).apply(anchor);
-    };
-    for (int i = static_cast<int>(scene.springs.size()) - 1; i >= 0; --i) {
-        const auto& s = scene.springs[static_cast<size_t>(i)];
-        const Vec2 a = end(s.a, s.anchorA);
-        const Vec2 b = end(s.b, s.anchorB);
-        const Vec2 ab = b - a;
-        const double t =
-            ab.squaredNorm() > 0 ? std::clamp((p - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-        if ((a + t * ab - p).norm() <= reach) {
-            return i;
-        }
-    }
-    return -1;
-}
-
-Vec2 EditTools::snapToGrid(const Vec2& p) const
-{
-    const double step = gridStep();
-    return Vec2(std::round(p.x() / step) * step, std::round(p.y() / step) * step);
-}
-
-Vec2 EditTools::snapped(const Vec2& p, int except) const
-{
-    if (!m_snapAction->isChecked()) {
-        return p;
-    }
-    // Another body's vertex, centre or edge first: a ball's centre exactly on a corner or on
-    // a ramp's surface.
-    if (const auto snap = featureSnap(p, except)) {
-        return snap->point;
-    }
-    return snapToGrid(p);
-}
-
-std::optional<Snap> EditTools::featureSnap(const Vec2& p, int except) const
-{
-    if (!m_snapAction->isChecked()) {
-        return std::nullopt;
-    }
-    const double reach = kVertexSnapPixels / std::max(m_view.zoom(), 1e-9);
-    return snapToBodies(m_document.scene(), p, reach, except);
-}
-
-int EditTools::bodyAtOrSnapped(const Vec2& raw) const
-{
-    if (const int body = bodyAt(raw); body >= 0) {
-        return body;
-    }
-    const auto snap = featureSnap(raw);
-    return snap ? snap->body : -1;
-}
-
-Vec2 EditTools::movedBodyTarget(const Drag& drag, const Vec2& raw)
-{
-    const Vec2 free = raw + drag.grabOffset;
-    m_bodySnap.reset();
-    if (!m_snapAction->isChecked()) {
-        return free;
-    }
-    const double reach = kVertexSnapPixels / std::max(m_view.zoom(), 1e-9);
-    if (const auto snap = snapMovedBody(m_document.scene(), drag.body, free, raw, reach)) {
-        m_bodySnap = snap->target;
-        return snap->position;
-    }
-    return snapToGrid(free);
-}
-
-void EditTools::updateSnapMarker(const Vec2& raw)
-{
-    switch (m_tool) {
-    case EditTool::Circle:
-    case EditTool::Box:
-    case EditTool::Polygon:
-    case EditTool::Ground:
-    case EditTool::Pin:
-    case EditTool::Spring:
-        m_bodySnap = featureSnap(raw);
-        break;
-    case EditTool::Select:
-        if (!m_drag.active) {
-            m_bodySnap.reset(); // a drag sets it as the body moves
-        }
-        break;
-    default:
-        m_bodySnap.reset();
-        break;
-    }
-}
-
 bool EditTools::apply(const QString& what, const edit::EditResult& result, int mergeId)
 {
     if (!result.ok) {
@@ -959,10 +452,10 @@ void EditTools::refreshOverlay()
 
 void EditTools::cancelGesture()
 {
-    m_drag = Drag{};
+    for (const auto& tool : m_tools) {
+        tool->cancel();
+    }
     m_bodySnap.reset();
-    m_polygon.clear();
-    m_pinStart.reset();
     if (m_overlay) {
         refreshOverlay();
     }

@@ -2,14 +2,18 @@
 #pragma once
 // Edit mode and the editor's tools on the world view (issue 15).
 //
-// EditTools watches the view's mouse and keys through an event filter while Edit mode is on,
-// turns each gesture into one of the pure scene edits of lessons/edit/ and hands the edited
-// copy to the SceneDocument (one undo step per gesture: a drag merges). It never touches a
-// world: while editing it reloads the simulation from the document, at t = 0, after each
-// change, so what the view shows is the scene as edited. Entering Edit mode pauses; leaving it
-// runs the scene as edited. Refusals and warnings go out through message() for the status bar.
+// EditTools watches the view's mouse and keys through an event filter while Edit mode is on
+// and hands each gesture to the tool in use (editor/tools/: one class per tool), which turns
+// it into one of the pure scene edits of lessons/edit/; EditTools applies it to the
+// SceneDocument (one undo step per gesture: a drag merges). It never touches a world: while
+// editing it reloads the simulation from the document, at t = 0, after each change, so what
+// the view shows is the scene as edited. Entering Edit mode pauses; leaving it keeps the
+// world paused at the start of the scene as edited, so that a class can predict before the
+// teacher presses Run (Run while editing leaves Edit mode and runs). Refusals, warnings and
+// what the tool in use does go out through message() for the status bar.
 
 #include "editor/edit_snap.h"
+#include "editor/tools/tool.h"
 #include "editor/velocity_arrow.h"
 
 #include "rigidlab/physics/forces.h"
@@ -21,6 +25,7 @@
 #include <QStringList>
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -61,6 +66,7 @@ class EditTools : public QObject {
 public:
     EditTools(WorldView& view, SimulationController& simulation, SceneDocument& document,
               QObject* parent = nullptr);
+    ~EditTools() override;
 
     /// Edit mode on and off (checkable).
     QAction* editAction() const { return m_editAction; }
@@ -106,10 +112,12 @@ public:
     /// The last message sent (refusal, warning or the size being drawn).
     const QString& lastMessage() const { return m_lastMessage; }
     /// The polygon being drawn, its points [m] (for tests and the overlay).
-    const std::vector<physics::Vec2>& polygonPoints() const { return m_polygon; }
+    const std::vector<physics::Vec2>& polygonPoints() const;
     /// Where the pointer snaps to another body now (a vertex, a centre, an edge), shown by a
     /// marker; nullopt when it snaps to the grid or not at all.
     const std::optional<Snap>& bodySnap() const { return m_bodySnap; }
+    /// The tool in use, for the overlay.
+    const Tool& activeTool() const { return *m_tools[static_cast<size_t>(m_tool)]; }
 
     /// Body `body`'s id for the History ("Add circle circle1"), "the world" for kWorld.
     static QString bodyName(const lessons::Scene& scene, int body);
@@ -118,6 +126,46 @@ public:
     static constexpr double kSpringStiffness = 50.0;
     /// The grid's step is a round number of metres about this many pixels wide.
     static constexpr double kGridPixels = 40.0;
+
+    // What the tools (editor/tools/) work with: the scene, snapping, the history, the status.
+    const lessons::Scene& scene() const;
+    WorldView& worldView() { return m_view; }
+    bool snapping() const;
+    /// `pixels` of the view at its zoom now, in metres.
+    double pixelsToMetres(double pixels) const;
+    /// The grid point nearest the middle of what the view shows [m] (where a key adds a body).
+    physics::Vec2 viewCentre() const;
+    /// The body under a world point, the topmost (last drawn), or -1.
+    int bodyAt(const physics::Vec2& p) const;
+    /// The spring within a few pixels of a world point, or -1.
+    int springAt(const physics::Vec2& p) const;
+    /// A point snapped to another body's vertex or centre, else to its edge, within a few
+    /// pixels, else to the grid, when snapping is on; `except` is left out (the body being
+    /// moved). A grid point that lies on the edge snapped to is taken instead of the edge's
+    /// nearest point, so that sizes drawn on the grid along a floor are grid sizes.
+    physics::Vec2 snapped(const physics::Vec2& p, int except = -1) const;
+    /// The body snapping would put p on (snapped()), nullopt for the grid or no snapping.
+    std::optional<Snap> featureSnap(const physics::Vec2& p, int except = -1) const;
+    /// The body under the pointer, else the one its point snaps to (a spring's or pin's end
+    /// put on an edge from just outside it), else -1 (the world).
+    int bodyAtOrSnapped(const physics::Vec2& raw) const;
+    /// Where body `body` dragged by `raw` goes (`grabOffset`, its origin minus the press, kept):
+    /// onto another body when one of its points comes within a few pixels of one (bodySnap()
+    /// says which), else its origin on the grid when snapping is on.
+    physics::Vec2 movedBodyTarget(int body, const physics::Vec2& grabOffset,
+                                  const physics::Vec2& raw);
+    void clearBodySnap() { m_bodySnap.reset(); }
+    physics::Vec2 snapToGrid(const physics::Vec2& p) const;
+    /// Applies an edit (or says why not); returns whether it was applied.
+    bool apply(const QString& what, const lessons::edit::EditResult& result, int mergeId = -1);
+    void say(const QString& text);
+    /// "r = 0,5 m" and the like, in the locale.
+    QString metres(double v) const;
+    /// A new merge id: the edits of one drag made with it are one step of the history.
+    int newMergeId() { return m_nextMergeId++; }
+    /// The selected body's velocity arrow (editor/velocity_arrow.h), when it moves.
+    std::optional<VelocityArrow> selectedArrow() const;
+    void refreshOverlay();
 
 public slots:
     void setEditing(bool on);
@@ -145,22 +193,6 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    friend class EditOverlay;
-    struct Drag {
-        bool active = false;
-        physics::Vec2 start = physics::Vec2::Zero();      ///< where the press was [m], snapped
-        physics::Vec2 current = physics::Vec2::Zero();    ///< [m], snapped
-        physics::Vec2 grabOffset = physics::Vec2::Zero(); ///< body origin minus the press [m]
-        double startAngle = 0.0;                          ///< the body's angle at the press [rad]
-        double pointerAngle = 0.0; ///< the pointer's angle about the origin at the press [rad]
-        int body = -1;
-        physics::BodyId bodyA = physics::kWorld; ///< a spring's first end
-        bool moved = false;
-        int mergeId = -1;
-        bool velocity = false; ///< dragging the velocity arrow of `body`
-        physics::Vec2 startVelocity = physics::Vec2::Zero(); ///< its velocity at the press [m/s]
-    };
-
     /// A run of arrow keys (or of Q and E) on one body, one step of the history as a drag
     /// is: anything else in between (an edit, an undo) starts a new run.
     struct KeyRun {
@@ -172,50 +204,21 @@ private:
     };
     int keyRunMergeId(KeyRun::Kind kind);
 
+    void createActions();
+    void followSimulation();
+    bool viewportEvent(QEvent* event);
     bool mousePress(QMouseEvent* event);
     bool mouseMove(QMouseEvent* event);
     bool mouseRelease(QMouseEvent* event);
     bool keyPress(QKeyEvent* event);
     /// Keys the window's shortcuts would take that Edit mode uses (arrows, Q, E, Enter...).
     bool wantsKey(const QKeyEvent* event) const;
-
-    /// The velocity arrow (edit_tools_velocity.cpp): the selected body's, when it moves.
-    std::optional<VelocityArrow> selectedArrow() const;
-    /// Starts dragging the selected body's velocity arrow when `raw` [m] is on its handle.
-    bool pressVelocityHandle(const physics::Vec2& raw);
-    /// Sets the velocity as the arrow's handle is dragged to `raw` [m]; one undo step a drag.
-    void dragVelocity(const physics::Vec2& raw);
-    /// "ball: v = (1,5; −2) m/s, |v| = 2,5 m/s", in the locale.
-    QString velocityText(const physics::BodyDef& def) const;
-
-    /// The body under a world point, the topmost (last drawn), or -1.
-    int bodyAt(const physics::Vec2& p) const;
-    /// The spring within a few pixels of a world point, or -1.
-    int springAt(const physics::Vec2& p) const;
-    /// A point snapped to another body's vertex or centre, else to its edge, within a few
-    /// pixels, else to the grid, when snapping is on; `except` is left out (the body being
-    /// moved).
-    physics::Vec2 snapped(const physics::Vec2& p, int except = -1) const;
-    /// The body snapping would put p on (snapped()), nullopt for the grid or no snapping.
-    std::optional<Snap> featureSnap(const physics::Vec2& p, int except = -1) const;
-    /// The body under the pointer, else the one its point snaps to (a spring's or pin's end
-    /// put on an edge from just outside it), else -1 (the world).
-    int bodyAtOrSnapped(const physics::Vec2& raw) const;
-    /// Where a body dragged by `raw` goes (grab offset kept): onto another body when one of
-    /// its points comes within a few pixels of one (m_bodySnap says which), else its origin
-    /// on the grid when snapping is on.
-    physics::Vec2 movedBodyTarget(const Drag& drag, const physics::Vec2& raw);
-    /// The snap marker for the pointer at `raw`, shown while a drawing tool is in use.
-    void updateSnapMarker(const physics::Vec2& raw);
-    physics::Vec2 snapToGrid(const physics::Vec2& p) const;
-    /// Applies an edit (or says why not); returns whether it was applied.
-    bool apply(const QString& what, const lessons::edit::EditResult& result, int mergeId = -1);
-    void say(const QString& text);
-    /// "r = 0,5 m" and the like, in the locale.
-    QString metres(double v) const;
+    /// Arrows, Q, E, Delete and Escape, for the selection and the gesture under way.
+    bool selectionKey(const QKeyEvent* event);
+    ToolPointer pointerAt(const QMouseEvent* event) const;
+    Tool& current() { return *m_tools[static_cast<size_t>(m_tool)]; }
     void reloadWorld();
     void updateSnapText();
-    void refreshOverlay();
     void cancelGesture();
 
     WorldView& m_view;
@@ -225,6 +228,7 @@ private:
     QAction* m_editAction = nullptr;
     QActionGroup* m_toolGroup = nullptr;
     std::array<QAction*, kEditToolCount> m_toolActions{};
+    std::array<std::unique_ptr<Tool>, kEditToolCount> m_tools;
     QAction* m_snapAction = nullptr;
     QAction* m_deleteSelection = nullptr;
     bool m_editing = false;
@@ -235,12 +239,7 @@ private:
     EditTool m_tool = EditTool::Select;
     int m_selected = -1;
     int m_selectedSpring = -1;
-    Drag m_drag;
-    std::vector<physics::Vec2> m_polygon;            ///< points of the polygon being drawn [m]
-    physics::Vec2 m_pointer = physics::Vec2::Zero(); ///< last pointer position [m], snapped
-    std::optional<Snap> m_bodySnap;                  ///< see bodySnap()
-    /// The pin being placed: its body and point, after the first click.
-    std::optional<std::pair<physics::BodyId, physics::Vec2>> m_pinStart;
+    std::optional<Snap> m_bodySnap; ///< see bodySnap()
     int m_nextMergeId = 1000;
     KeyRun m_keyRun;
     QString m_lastMessage;

@@ -8,6 +8,7 @@
 #include "format/scene.h"
 
 #include <QObject>
+#include <QRectF>
 #include <QString>
 
 class QUndoStack;
@@ -35,6 +36,20 @@ public:
     void apply(const QString& what, const lessons::Scene& edited, int mergeId = -1);
     /// After a save to path: remembers the path and marks the present state as saved.
     void markSaved(const QString& path);
+
+    /// A new scene titled `title`: the default world (physics::WorldDef) and a long static
+    /// ground, its top at y = 0 and kNewGroundLength long, so that a cart pushed at a few m/s
+    /// from the middle rolls for seconds before it reaches an end.
+    static lessons::Scene newScene(const QString& title);
+    /// The length of a new scene's ground [m].
+    static constexpr double kNewGroundLength = 40.0;
+    /// What the view shows of a new scene first [m]: the middle of its ground and room above
+    /// it, at a zoom that draws on a 1 m grid or so (the whole ground would make it coarse).
+    static QRectF newSceneFrame();
+    /// A file name for a scene that has none yet, from its title, safe on any disk and share:
+    /// lower-case ASCII letters and digits joined by "_", diacritics taken off ("Nová scéna"
+    /// -> "nova_scena.json"), "scene.json" when nothing is left.
+    static QString safeFileName(const QString& title);
 
 signals:
     /// After every apply, undo, redo and reset.
