@@ -1760,14 +1760,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Mnohoúhelník: klikejte na vrcholy, dvojklikem nebo klávesou Enter ho uzavřete; Backspace odebere poslední bod; Enter bez bodů přidá trojúhelník</translation>
     </message>
     <message>
-        <source>Rotate: drag a body, or anywhere for the selected one, to turn it about its origin; a click selects; Q and E turn the selected body by 5°</source>
-        <translation>Otočení: tažením tělesa (nebo kdekoli pro vybrané těleso) ho otočíte kolem jeho počátku; kliknutí vybírá; Q a&#xa0;E otočí vybrané těleso o&#xa0;5°</translation>
-    </message>
-    <message>
-        <source>Select: click a body or a spring to select it, drag a body to move it, drag the arrow&apos;s handle to set its velocity; the arrow keys nudge, Q and E turn</source>
-        <translation>Výběr: kliknutím vyberete těleso nebo pružinu, tažením těleso posunete, tažením konce šipky nastavíte jeho rychlost; šipky posunou o&#xa0;kousek, Q a&#xa0;E otočí</translation>
-    </message>
-    <message>
         <source>Circle: drag from the centre outwards to draw one; a click draws nothing; Enter adds one at the view&apos;s centre</source>
         <translation>Kruh: nakreslíte ho tažením od středu ven; samotné kliknutí nic nenakreslí; Enter přidá kruh doprostřed pohledu</translation>
     </message>
@@ -1786,6 +1778,22 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Select a body to hang it from a spring</source>
         <translation>Vyberte těleso, které chcete zavěsit na pružinu</translation>
+    </message>
+    <message>
+        <source>The scene has no body to select</source>
+        <translation>Ve scéně není žádné těleso, které by šlo vybrat</translation>
+    </message>
+    <message>
+        <source>%1 selected</source>
+        <translation>Vybráno: %1</translation>
+    </message>
+    <message>
+        <source>Rotate: drag a body, or anywhere for the selected one, to turn it about its origin; a click selects, and so does Enter, body after body; Q and E turn the selected body by 5°</source>
+        <translation>Otočení: tažením tělesa (nebo kdekoli pro vybrané těleso) ho otočíte kolem jeho počátku; kliknutí vybírá, Enter vybírá jedno těleso po druhém; Q a&#xa0;E otočí vybrané těleso o&#xa0;5°</translation>
+    </message>
+    <message>
+        <source>Select: click a body or a spring to select it, drag a body to move it, drag the arrow&apos;s handle to set its velocity; Enter selects the next body, the arrow keys nudge, Q and E turn</source>
+        <translation>Výběr: kliknutím vyberete těleso nebo pružinu, tažením těleso posunete, tažením konce šipky nastavíte jeho rychlost; Enter vybere další těleso, šipky posunou o&#xa0;kousek, Q a&#xa0;E otočí</translation>
     </message>
 </context>
 <context>

@@ -186,6 +186,18 @@ void TestEditorTools::keyboardDrawsWithEveryTool()
             1e-9);
     QTest::keyClick(&rig.view, Qt::Key_Delete); // the selected triangle
     QCOMPARE(rig.index("polygon1"), -1);
+    // Select and Rotate: Enter selects body after body, then the keys move and turn it.
+    rig.use(EditTool::Select);
+    rig.tools.selectBody(-1);
+    QTest::keyClick(&rig.view, Qt::Key_Return);
+    QCOMPARE(rig.tools.selectedBody(), 0);
+    QTest::keyClick(&rig.view, Qt::Key_Return);
+    QCOMPARE(rig.tools.selectedBody(), 1);
+    rig.use(EditTool::Rotate);
+    QTest::keyClick(&rig.view, Qt::Key_Return);
+    QCOMPARE(rig.tools.selectedBody(), 2);
+    QTest::keyClick(&rig.view, Qt::Key_Q);
+    QVERIFY(std::abs(rig.scene().bodies[2].angle - 5.0 * std::numbers::pi / 180.0) < 1e-12);
 
     for (int i = 0; i < kEditToolCount; ++i) {
         rig.use(static_cast<EditTool>(i));

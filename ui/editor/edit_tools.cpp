@@ -303,6 +303,17 @@ void EditTools::selectBody(int body)
     emit selectionChanged();
 }
 
+void EditTools::selectNextBody()
+{
+    const int count = static_cast<int>(m_document.scene().bodies.size());
+    if (count == 0) {
+        say(tr("The scene has no body to select"));
+        return;
+    }
+    selectBody((m_selected + 1) % count);
+    say(tr("%1 selected").arg(bodyName(m_document.scene(), m_selected)));
+}
+
 void EditTools::selectSpring(int spring)
 {
     if (spring >= static_cast<int>(m_document.scene().springs.size())) {

@@ -172,6 +172,8 @@ public slots:
     void setTool(rigidlab::ui::EditTool tool);
     void selectBody(int body);
     void selectSpring(int spring);
+    /// Selects the body after the selected one (the first when none is), for the keyboard.
+    void selectNextBody();
     /// Turns the selected body by `radians` about its origin (Q, E).
     void rotateSelected(double radians);
     /// Moves the selected body by `offset` [m] (arrow keys).

@@ -28,7 +28,18 @@ double angleAbout(const Vec2& origin, const Vec2& p)
 QString RotateTool::status() const
 {
     return tr("Rotate: drag a body, or anywhere for the selected one, to turn it about its "
-              "origin; a click selects; Q and E turn the selected body by 5°");
+              "origin; a click selects, and so does Enter, body after body; Q and E turn the "
+              "selected body by 5°");
+}
+
+bool RotateTool::wantsKey(int key) const
+{
+    return m_body < 0 && (key == Qt::Key_Return || key == Qt::Key_Enter);
+}
+
+void RotateTool::key(int /*key*/)
+{
+    m_tools.selectNextBody();
 }
 
 bool RotateTool::press(const ToolPointer& pointer)

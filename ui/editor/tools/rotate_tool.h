@@ -15,6 +15,8 @@ public:
     bool press(const ToolPointer& pointer) override;
     bool move(const ToolPointer& pointer) override;
     bool release(const ToolPointer& pointer) override;
+    bool wantsKey(int key) const override;
+    void key(int key) override;
     QString status() const override;
     bool busy() const override { return m_body >= 0; }
     void cancel() override { m_body = -1; }

@@ -13,7 +13,18 @@ namespace edit = lessons::edit;
 QString SelectTool::status() const
 {
     return tr("Select: click a body or a spring to select it, drag a body to move it, drag "
-              "the arrow's handle to set its velocity; the arrow keys nudge, Q and E turn");
+              "the arrow's handle to set its velocity; Enter selects the next body, the arrow "
+              "keys nudge, Q and E turn");
+}
+
+bool SelectTool::wantsKey(int key) const
+{
+    return m_body < 0 && (key == Qt::Key_Return || key == Qt::Key_Enter);
+}
+
+void SelectTool::key(int /*key*/)
+{
+    m_tools.selectNextBody();
 }
 
 bool SelectTool::press(const ToolPointer& pointer)
