@@ -1941,8 +1941,46 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>%1&#xa0;rad/s</translation>
     </message>
     <message>
-        <source>%1 J</source>
-        <translation>%1&#xa0;J</translation>
+        <source>Speed |v|</source>
+        <translation>Velikost rychlosti |v|</translation>
+    </message>
+    <message>
+        <source>%1 m/s</source>
+        <translation>%1&#xa0;m/s</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>%1&#xa0;°/s</source>
+        <translation>%1&#xa0;°/s</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <comment>angle unit: degrees</comment>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>rad</source>
+        <comment>angle unit: radians</comment>
+        <translation>rad</translation>
+    </message>
+    <message>
+        <source>degrees</source>
+        <translation>stupně</translation>
+    </message>
+    <message>
+        <source>radians</source>
+        <translation>radiány</translation>
+    </message>
+    <message>
+        <source>Unit of angles</source>
+        <translation>Jednotka úhlů</translation>
+    </message>
+    <message>
+        <source>Angles and angular velocities in degrees or in radians</source>
+        <translation>Úhly a úhlové rychlosti ve stupních nebo v radiánech</translation>
     </message>
 </context>
 <context>

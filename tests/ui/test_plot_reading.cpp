@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Plots that tell the truth (issue 12): going back on the timeline keeps the plots up to the
+// Plots that tell the truth: going back on the timeline keeps the plots up to the
 // moment chosen and branches them when the run goes on; a short run gets a short time axis;
-// legends in words, and curves that coincide all visible, in the window and in exports; the
-// labels of marks close together stacked or merged; exports start in the documents folder and
-// remember the last one chosen.
+// legends in words, and curves that coincide all visible, in the window and in exports.
+// (Marks and export folders: test_plot_marks.cpp.)
 #include "common/display_names.h"
 #include "common/export_folder.h"
 #include "lesson_player/lesson_player.h"
@@ -101,34 +100,6 @@ int pixelsOf(const QImage& image, const QColor& color, int tolerance = 40)
     return n;
 }
 
-/// The rectangle a mark's label takes on screen [px].
-QRectF labelRect(const QCPItemText* label)
-{
-    return QRectF(label->topLeft->pixelPosition(), label->bottomRight->pixelPosition());
-}
-
-/// Answers the next modal file dialog: records where it opened, then chooses `choose` (a
-/// file or folder name typed into its name field), or cancels if empty.
-void answerFileDialog(QString* openedIn, const QString& choose)
-{
-    QTimer::singleShot(0, [openedIn, choose] {
-        auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
-        if (!dialog) {
-            answerFileDialog(openedIn, choose); // not shown yet
-            return;
-        }
-        *openedIn = dialog->directory().absolutePath();
-        if (choose.isEmpty()) {
-            dialog->reject();
-            return;
-        }
-        auto* name = dialog->findChild<QLineEdit*>(QStringLiteral("fileNameEdit"));
-        if (name)
-            name->setText(choose);
-        static_cast<QDialog*>(dialog)->accept(); // as its Save or Choose button
-    });
-}
-
 } // namespace
 
 class TestPlotReading : public QObject {
@@ -144,11 +115,6 @@ private slots:
     void namesInWords();
     void comparedCurvesStayVisible();
     void runawayGoesOffScale();
-    void closeMarksStack();
-    void coincidingMarksMerge();
-    void exportFolderDefaultsAndRemembers();
-    void plotExportDialogStartsThere();
-    void lessonExportDialogStartsThere();
 };
 
 void TestPlotReading::scrubBackKeepsPointsAndShowsTheMoment()
@@ -525,172 +491,6 @@ void TestPlotReading::comparedCurvesStayVisible()
         QVERIFY2(pixelsOf(curves, plotColor(i)) > 100,
                  qPrintable(
                      QStringLiteral("curve %1: %2 px").arg(i).arg(pixelsOf(curves, plotColor(i)))));
-}
-
-void TestPlotReading::closeMarksStack()
-{
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    plot->resize(640, 360);
-    plot->show();
-    QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
-    feed(buffer, *plot, 0.0, 10.0);
-    // A few tenths of a second apart: lines pixels apart, labels wider than that.
-    const double times[] = {4.0, 4.2, 4.4, 4.6};
-    for (const double t : times)
-        plot->addMark(t, QStringLiteral("dt = %1 ms").arg(t));
-    plot->plot()->replot();
-    QCOMPARE(plot->markCount(), 4);
-    int visible = 0;
-    for (int i = 0; i < plot->markCount(); ++i) {
-        QCPItemText* a = plot->markLabel(i);
-        if (!a->visible())
-            continue;
-        ++visible;
-        for (int j = 0; j < i; ++j) {
-            QCPItemText* b = plot->markLabel(j);
-            if (b->visible())
-                QVERIFY2(!labelRect(a).intersects(labelRect(b)),
-                         qPrintable(QStringLiteral("labels %1 and %2 overlap: %3,%4 %5x%6 and "
-                                                   "%7,%8 %9x%10")
-                                        .arg(j)
-                                        .arg(i)
-                                        .arg(labelRect(b).x())
-                                        .arg(labelRect(b).y())
-                                        .arg(labelRect(b).width())
-                                        .arg(labelRect(b).height())
-                                        .arg(labelRect(a).x())
-                                        .arg(labelRect(a).y())
-                                        .arg(labelRect(a).width())
-                                        .arg(labelRect(a).height())));
-        }
-        // Above the plot, where it hides no curve.
-        QVERIFY(labelRect(a).bottom() <= plot->plot()->axisRect()->top() + 1);
-        QVERIFY(labelRect(a).top() >= 0);
-    }
-    // Stacked on the rows there are, the one more merged into its neighbour's label: every
-    // change is still said.
-    QCOMPARE(visible, PlotWidget::kMarkRows);
-    QString said;
-    for (int i = 0; i < plot->markCount(); ++i)
-        if (plot->markLabel(i)->visible())
-            said += plot->markLabel(i)->text() + u'|';
-    for (const double t : times)
-        QVERIFY2(said.contains(QStringLiteral("dt = %1 ms").arg(t)), qPrintable(said));
-
-    // In an export of another width too.
-    QTemporaryDir dir;
-    QVERIFY(exportPlot(*plot, dir.filePath(QStringLiteral("marks.svg")), ExportFormat::Svg).ok);
-    plot->plot()->replot();
-    for (int i = 1; i < plot->markCount(); ++i)
-        QVERIFY(!labelRect(plot->markLabel(i)).intersects(labelRect(plot->markLabel(i - 1))));
-}
-
-void TestPlotReading::coincidingMarksMerge()
-{
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    plot->resize(640, 360);
-    plot->show();
-    QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
-    feed(buffer, *plot, 0.0, 10.0);
-    // Two changes in one moment (a lesson step's settings), and one a pixel later.
-    plot->addMark(5.0, QStringLiteral("dt = 5 ms"));
-    plot->addMark(5.0, QStringLiteral("Runge–Kutta 4"));
-    plot->addMark(5.005, QStringLiteral("e = 0.5"));
-    plot->addMark(8.0, QStringLiteral("μ = 0.3"));
-    plot->plot()->replot();
-    QStringList shown;
-    for (int i = 0; i < plot->markCount(); ++i)
-        if (plot->markLabel(i)->visible())
-            shown << plot->markLabel(i)->text();
-    QCOMPARE(shown.size(), 2);
-    QVERIFY(shown[0].contains(QStringLiteral("dt = 5 ms")));
-    QVERIFY(shown[0].contains(QStringLiteral("Runge–Kutta 4")));
-    QVERIFY(shown[0].contains(QStringLiteral("e = 0.5")));
-    QCOMPARE(shown[1], QStringLiteral("μ = 0.3"));
-
-    // Zoomed in, they are apart again: each its own label.
-    plot->plot()->xAxis->setRange(4.99, 5.01);
-    plot->plot()->replot();
-    int visible = 0;
-    for (int i = 0; i < 3; ++i)
-        visible += plot->markLabel(i)->visible() ? 1 : 0;
-    QCOMPARE(visible, 2); // the two at exactly 5 s still share one
-}
-
-void TestPlotReading::exportFolderDefaultsAndRemembers()
-{
-    QSettings().remove(QLatin1String(kExportFolderKey));
-    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    QVERIFY(!documents.isEmpty());
-    QVERIFY(QDir().mkpath(documents));
-    QCOMPARE(exportFolder(), documents);
-
-    QTemporaryDir chosen;
-    rememberExportFolder(QDir(chosen.path()).filePath(QStringLiteral("energy.png")));
-    QCOMPARE(exportFolder(), QDir(chosen.path()).absolutePath());
-    // Remembered across runs: in the settings.
-    QCOMPARE(QSettings().value(QLatin1String(kExportFolderKey)).toString(),
-             QDir(chosen.path()).absolutePath());
-
-    // A folder since removed falls back to the documents.
-    const QString gone = QDir(chosen.path()).filePath(QStringLiteral("gone"));
-    QVERIFY(QDir().mkpath(gone));
-    rememberExportFolder(gone);
-    QCOMPARE(exportFolder(), gone);
-    QVERIFY(QDir(gone).removeRecursively());
-    QCOMPARE(exportFolder(), documents);
-    QSettings().remove(QLatin1String(kExportFolderKey));
-}
-
-void TestPlotReading::plotExportDialogStartsThere()
-{
-    QSettings().remove(QLatin1String(kExportFolderKey));
-    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    QVERIFY(QDir().mkpath(documents));
-    std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    QSignalSpy exported(plot.get(), &PlotWidget::exported);
-
-    QString openedIn;
-    QTemporaryDir chosen;
-    const QString file = QDir(chosen.path()).filePath(QStringLiteral("mine.csv"));
-    answerFileDialog(&openedIn, file);
-    plot->exportInteractively(ExportFormat::Csv);
-    QCOMPARE(openedIn, QDir(documents).absolutePath());
-    QCOMPARE(exported.count(), 1);
-    QVERIFY(QFileInfo::exists(file));
-
-    // The next dialog, of this plot or another, opens where the last export went.
-    std::unique_ptr<PlotWidget> other(makeDriftPlot(nullptr));
-    answerFileDialog(&openedIn, QString());
-    other->exportInteractively(ExportFormat::Png);
-    QCOMPARE(openedIn, QDir(chosen.path()).absolutePath());
-    QSettings().remove(QLatin1String(kExportFolderKey));
-}
-
-void TestPlotReading::lessonExportDialogStartsThere()
-{
-    QSettings().remove(QLatin1String(kExportFolderKey));
-    const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    QVERIFY(QDir().mkpath(documents));
-    ui::MainWindow w;
-    QCOMPARE(w.openLesson(lessonPath("energy_drift"), true), QString());
-
-    QString openedIn;
-    QTemporaryDir chosen;
-    answerFileDialog(&openedIn, chosen.path());
-    emit w.lessonPlayer().exportRequested();
-    QCOMPARE(openedIn, QDir(documents).absolutePath());
-    QCOMPARE(exportFolder(), QDir(chosen.path()).absolutePath());
-    QVERIFY(!QDir(chosen.path()).entryList(QDir::Files).isEmpty());
-
-    answerFileDialog(&openedIn, QString());
-    emit w.lessonPlayer().exportRequested();
-    QCOMPARE(openedIn, QDir(chosen.path()).absolutePath());
-    QSettings().remove(QLatin1String(kExportFolderKey));
 }
 
 RIGIDLAB_TEST_MAIN(TestPlotReading)

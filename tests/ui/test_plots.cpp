@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The live plots and their export: data from a SampleBuffer reaches the series, memory stays
-// bounded over long runs, time travel and marks behave, and every export is either a valid
-// file or nothing at all.
+// The live plots: data from a SampleBuffer reaches the series, memory stays bounded over long
+// runs, time travel and marks behave. (Their export: test_plot_export.cpp.)
 
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
@@ -15,42 +14,18 @@
 #include <QXmlStreamReader>
 #include <QtTest>
 
+#include "plot_test_samples.h"
 #include "sourced_plot.h"
 #include "test_main.h"
 
 #include <cmath>
 
-#ifdef Q_OS_UNIX
-#include <csignal>
-#include <sys/resource.h>
-#endif
-
 using namespace rigidlab::ui;
+using rigidlab::test::feed;
+using rigidlab::test::sampleAt;
 using rigidlab::test::SourcedPlot;
 
 namespace {
-
-/// Every export format, with the name its data rows go by.
-constexpr std::pair<ExportFormat, const char*> kExportFormats[] = {{ExportFormat::Png, "png"},
-                                                                   {ExportFormat::Pdf, "pdf"},
-                                                                   {ExportFormat::Svg, "svg"},
-                                                                   {ExportFormat::Csv, "csv"}};
-
-/// A deterministic sample at time t [s]; every field differs from the others.
-Sample sampleAt(double t)
-{
-    Sample s;
-    s.t = t;
-    s.kinetic = 1.5 + std::sin(t);
-    s.potential = 2.25 - std::sin(t);
-    s.total = s.kinetic + s.potential;
-    s.px = 0.5 * t;
-    s.py = -0.25 * t + 1.0 / 3.0;
-    s.angularMomentum = 0.1 + t * t;
-    s.driftPercent = 1e-7 * t;
-    s.dissipated = 0.125 * t;
-    return s;
-}
 
 double field(const Sample& s, const QString& name)
 {
@@ -86,78 +61,15 @@ PlotWidget* makePlot(const QString& kind, QWidget* parent)
     qFatal("unknown plot kind %s", qPrintable(kind));
 }
 
-/// Pushes samples t = first, first + dt, ... (count of them) and drains after each chunk.
-void feed(SampleBuffer& buffer, PlotWidget& plot, double first, double dt, int count)
-{
-    const int chunk = static_cast<int>(buffer.capacity() / 2);
-    for (int i = 0; i < count; ++i) {
-        buffer.push(sampleAt(first + dt * i));
-        if ((i + 1) % chunk == 0)
-            plot.drain();
-    }
-    plot.drain();
-}
-
-QStringList entries(const QString& dir)
-{
-    return QDir(dir).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden, QDir::Name);
-}
-
-QByteArray readAll(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-#ifdef Q_OS_UNIX
-/// Makes every write past `bytes` fail with EFBIG, for root too (permissions do not stop
-/// root, a file size limit does): an export that fails halfway through writing.
-class FileSizeLimit {
-public:
-    explicit FileSizeLimit(rlim_t bytes)
-    {
-        getrlimit(RLIMIT_FSIZE, &m_old);
-        m_oldHandler = std::signal(SIGXFSZ, SIG_IGN); // else the process is killed
-        rlimit limited = m_old;
-        limited.rlim_cur = bytes;
-        m_active = setrlimit(RLIMIT_FSIZE, &limited) == 0;
-    }
-    ~FileSizeLimit()
-    {
-        setrlimit(RLIMIT_FSIZE, &m_old);
-        std::signal(SIGXFSZ, m_oldHandler);
-    }
-    bool isActive() const { return m_active; }
-
-private:
-    rlimit m_old{};
-    void (*m_oldHandler)(int) = nullptr;
-    bool m_active = false;
-};
-#endif
-
 } // namespace
 
 class TestPlots : public QObject {
     Q_OBJECT
-
 private slots:
     void seriesReceiveSamples_data();
     void seriesReceiveSamples();
     void directSeriesRestartWhenTimeGoesBack();
     void drainReplotsOnlyOnChange();
-
-    void formatFromSuffix_data();
-    void formatFromSuffix();
-    void exportWritesValidFile_data();
-    void exportWritesValidFile();
-    void csvHasFullPrecisionAndUnits();
-    void exportReplacesExistingFile();
-    void failedExportLeavesNothing_data();
-    void failedExportLeavesNothing();
-    void failedExportKeepsExistingFile_data();
-    void failedExportKeepsExistingFile();
-
     void memoryStaysBounded_data();
     void memoryStaysBounded();
     void thinningKeepsNewestPointAndEvenSpacing();
@@ -265,267 +177,6 @@ void TestPlots::drainReplotsOnlyOnChange()
     buffer.push(sampleAt(0.25));
     QCOMPARE(plot.drain(), 1);
     QTRY_COMPARE(replots.count(), 1);
-}
-
-void TestPlots::formatFromSuffix_data()
-{
-    QTest::addColumn<QString>("suffix");
-    QTest::addColumn<int>("format"); // -1: unknown
-    QTest::newRow("png") << "png" << int(ExportFormat::Png);
-    QTest::newRow("dot PDF") << ".PDF" << int(ExportFormat::Pdf);
-    QTest::newRow("Svg") << "Svg" << int(ExportFormat::Svg);
-    QTest::newRow("csv") << "csv" << int(ExportFormat::Csv);
-    QTest::newRow("jpeg") << "jpeg" << -1;
-    QTest::newRow("empty") << "" << -1;
-}
-
-void TestPlots::formatFromSuffix()
-{
-    QFETCH(QString, suffix);
-    QFETCH(int, format);
-    const std::optional<ExportFormat> found = rigidlab::ui::formatFromSuffix(suffix);
-    QCOMPARE(found.has_value(), format >= 0);
-    if (found) {
-        QCOMPARE(int(*found), format);
-        QCOMPARE(rigidlab::ui::formatFromSuffix(suffixFor(*found)), found);
-    }
-}
-
-void TestPlots::exportWritesValidFile_data()
-{
-    QTest::addColumn<int>("format");
-    QTest::newRow("png") << int(ExportFormat::Png);
-    QTest::newRow("pdf") << int(ExportFormat::Pdf);
-    QTest::newRow("svg") << int(ExportFormat::Svg);
-    QTest::newRow("csv") << int(ExportFormat::Csv);
-}
-
-void TestPlots::exportWritesValidFile()
-{
-    QFETCH(int, format);
-    const auto fmt = ExportFormat(format);
-
-    PlotWidget* plot = makeEnergyPlot(nullptr);
-    std::unique_ptr<PlotWidget> owner(plot);
-    SampleBuffer buffer;
-    plot->setSource(&buffer);
-    feed(buffer, *plot, 0.0, 0.05, 150);
-    plot->addMark(3.0, QStringLiteral("RK4"));
-    plot->drain();
-
-    QTemporaryDir dir;
-    QVERIFY(dir.isValid());
-    const QString path = dir.filePath("energy." + suffixFor(fmt));
-    const ExportResult result = exportPlot(*plot, path, fmt);
-    QVERIFY2(result.ok, qPrintable(result.error));
-    QVERIFY(result.error.isEmpty());
-    QCOMPARE(entries(dir.path()), QStringList{QFileInfo(path).fileName()}); // no leftovers
-
-    const QByteArray bytes = readAll(path);
-    switch (fmt) {
-    case ExportFormat::Png: {
-        QImage image;
-        QVERIFY(image.loadFromData(bytes, "PNG"));
-        const ExportOptions defaults;
-        QCOMPARE(image.size(), defaults.logicalSize * defaults.pngPixelRatio);
-        QCOMPARE(image.size(), QSize(1600, 1000));
-        QCOMPARE(image.pixelColor(0, 0), QColor(Qt::white));
-        int inked = 0; // curves, text and axes: far from an empty white picture
-        for (int y = 0; y < image.height(); y += 4)
-            for (int x = 0; x < image.width(); x += 4)
-                inked += image.pixelColor(x, y) != QColor(Qt::white) ? 1 : 0;
-        QVERIFY2(inked > 2000, qPrintable(QString::number(inked)));
-        break;
-    }
-    case ExportFormat::Pdf:
-        QVERIFY(bytes.startsWith("%PDF-"));
-        QVERIFY(bytes.trimmed().endsWith("%%EOF"));
-        break;
-    case ExportFormat::Svg: {
-        QXmlStreamReader xml(bytes);
-        QString root;
-        while (!xml.atEnd()) {
-            xml.readNext();
-            if (xml.isStartElement() && root.isEmpty())
-                root = xml.name().toString();
-        }
-        QVERIFY2(!xml.hasError(), qPrintable(xml.errorString()));
-        QCOMPARE(root, QStringLiteral("svg"));
-        QSvgRenderer renderer(path);
-        QVERIFY(renderer.isValid());
-        break;
-    }
-    case ExportFormat::Csv: {
-        const QList<QByteArray> lines = bytes.trimmed().split('\n');
-        QCOMPARE(lines.first(), QByteArray("t [s],kinetic [J],potential [J],total [J],dissipated "
-                                           "[J],total + dissipated [J]"));
-        QCOMPARE(lines.size(), 1 + 150);
-        for (const QByteArray& line : lines)
-            QCOMPARE(line.count(','), 5);
-        break;
-    }
-    }
-}
-
-void TestPlots::csvHasFullPrecisionAndUnits()
-{
-    auto [buffer, plot] = SourcedPlot(makeMomentumPlot(nullptr));
-    feed(buffer, *plot, 0.1, 0.1, 40); // 0.1 is not exact in binary: a good test of precision
-
-    QTemporaryDir dir;
-    const QString path = dir.filePath("momentum.csv");
-    const ExportResult result = exportPlot(*plot, path, ExportFormat::Csv);
-    QVERIFY2(result.ok, qPrintable(result.error));
-
-    const QList<QByteArray> lines = readAll(path).trimmed().split('\n');
-    QCOMPARE(QString::fromUtf8(lines.first()),
-             QStringLiteral("t [s],px [kg m/s],py [kg m/s],L [kg m²/s]"));
-    QCOMPARE(lines.size(), 41);
-    for (int i = 0; i < 40; ++i) {
-        const QList<QByteArray> cells = lines[i + 1].split(',');
-        QCOMPARE(cells.size(), 4);
-        const Sample s = sampleAt(0.1 + 0.1 * i);
-        // Exact equality: the text reads back as the very same double.
-        QVERIFY(cells[0].toDouble() == s.t);
-        QVERIFY(cells[1].toDouble() == s.px);
-        QVERIFY(cells[2].toDouble() == s.py);
-        QVERIFY(cells[3].toDouble() == s.angularMomentum);
-    }
-}
-
-void TestPlots::exportReplacesExistingFile()
-{
-    auto [buffer, plot] = SourcedPlot(makeDriftPlot(nullptr));
-    feed(buffer, *plot, 0.0, 0.5, 4);
-
-    QTemporaryDir dir;
-    const QString path = dir.filePath("drift.csv");
-    {
-        QFile old(path);
-        QVERIFY(old.open(QIODevice::WriteOnly));
-        old.write("an older export, much longer than the new one\n");
-    }
-    const ExportResult result = exportPlot(*plot, path, ExportFormat::Csv);
-    QVERIFY2(result.ok, qPrintable(result.error));
-    QCOMPARE(readAll(path).trimmed().split('\n').size(), 5);
-    QCOMPARE(entries(dir.path()), QStringList{"drift.csv"});
-}
-
-void TestPlots::failedExportLeavesNothing_data()
-{
-    QTest::addColumn<int>("format");
-    QTest::addColumn<QString>("failure");
-    for (const auto& [format, name] : kExportFormats)
-        for (const char* failure :
-             {"missing directory", "target is a directory", "read-only directory"})
-            QTest::addRow("%s, %s", name, failure) << int(format) << QString(failure);
-}
-
-void TestPlots::failedExportLeavesNothing()
-{
-    QFETCH(int, format);
-    QFETCH(QString, failure);
-    const auto fmt = ExportFormat(format);
-
-    auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
-    feed(buffer, *plot, 0.0, 0.05, 100);
-
-    QTemporaryDir dir;
-    QVERIFY(dir.isValid());
-    const QString name = "energy." + suffixFor(fmt);
-    QString path;
-    QString watched = dir.path(); // nothing may appear or vanish in here
-    if (failure == "missing directory") {
-        path = dir.filePath("no/such/dir/" + name);
-    } else if (failure == "target is a directory") {
-        path = dir.filePath(name);
-        QVERIFY(QDir(dir.path()).mkdir(name));
-    } else {
-        watched = dir.filePath("read-only");
-        QVERIFY(QDir(dir.path()).mkdir("read-only"));
-        QVERIFY(QFile::setPermissions(watched, QFile::ReadOwner | QFile::ExeOwner |
-                                                   QFile::ReadGroup | QFile::ExeGroup |
-                                                   QFile::ReadOther | QFile::ExeOther));
-        QFile probe(watched + "/probe");
-        if (probe.open(QIODevice::WriteOnly)) {
-            probe.remove();
-            QSKIP("permissions do not stop this user (root): covered by the other rows and "
-                  "by failedExportKeepsExistingFile");
-        }
-        path = watched + '/' + name;
-    }
-    const QStringList before = entries(watched);
-
-    const ExportResult result = exportPlot(*plot, path, fmt);
-    QFile::setPermissions(watched, QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
-
-    QVERIFY(!result.ok);
-    QVERIFY2(result.error.startsWith("cannot write "), qPrintable(result.error));
-    QVERIFY2(result.error.contains(QDir::toNativeSeparators(path)), qPrintable(result.error));
-    QCOMPARE(entries(watched), before);
-    if (failure == "target is a directory")
-        QVERIFY(QFileInfo(path).isDir());
-    else
-        QVERIFY(!QFileInfo::exists(path));
-}
-
-void TestPlots::failedExportKeepsExistingFile_data()
-{
-    QTest::addColumn<int>("format");
-    QTest::addColumn<QString>("failure");
-    for (const auto& [format, name] : kExportFormats)
-        for (const char* failure : {"file size limit", "read-only directory"})
-            QTest::addRow("%s, %s", name, failure) << int(format) << QString(failure);
-}
-
-void TestPlots::failedExportKeepsExistingFile()
-{
-    QFETCH(int, format);
-    QFETCH(QString, failure);
-    const auto fmt = ExportFormat(format);
-
-    auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
-    feed(buffer, *plot, 0.0, 0.05, 200); // well over the size limit below, in every format
-
-    QTemporaryDir dir;
-    const QString path = dir.filePath("energy." + suffixFor(fmt));
-    const QByteArray precious = "the export from last week's lecture\n";
-    {
-        QFile old(path);
-        QVERIFY(old.open(QIODevice::WriteOnly));
-        QCOMPARE(old.write(precious), precious.size());
-    }
-
-    ExportResult result;
-    if (failure == "file size limit") {
-#ifdef Q_OS_UNIX
-        // Fails halfway through writing, for root too.
-        FileSizeLimit limit(1024);
-        QVERIFY(limit.isActive());
-        result = exportPlot(*plot, path, fmt);
-#else
-        QSKIP("needs a POSIX file size limit");
-#endif
-    } else {
-        const auto readOnly = QFile::ReadOwner | QFile::ExeOwner | QFile::ReadGroup |
-                              QFile::ExeGroup | QFile::ReadOther | QFile::ExeOther;
-        QVERIFY(QFile::setPermissions(dir.path(), readOnly));
-        QFile probe(dir.filePath("probe"));
-        const bool permissionsIgnored = probe.open(QIODevice::WriteOnly);
-        if (!permissionsIgnored)
-            result = exportPlot(*plot, path, fmt);
-        probe.remove();
-        QFile::setPermissions(dir.path(), readOnly | QFile::WriteOwner);
-        if (permissionsIgnored)
-            QSKIP("permissions do not stop this user (root): see the file size limit rows");
-    }
-    QVERIFY(!result.ok);
-    // What and where: "cannot write /tmp/.../energy.png: File too large".
-    const QString where = "cannot write " + QDir::toNativeSeparators(path) + ": ";
-    QVERIFY2(result.error.startsWith(where), qPrintable(result.error));
-    QVERIFY2(result.error.size() > where.size(), qPrintable(result.error));
-    QCOMPARE(readAll(path), precious);
-    QCOMPARE(entries(dir.path()), QStringList{QFileInfo(path).fileName()}); // no temporary left
 }
 
 void TestPlots::memoryStaysBounded_data()

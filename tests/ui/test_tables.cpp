@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The lessons' tables in the window's narrow right column (issue 12): at 200 px every cell of
+// The lessons' tables in the window's narrow right column: at 200 px every cell of
 // the bounce and collision tables is shown whole, inside the table, and a table of few rows
 // is as tall as its rows; the bounce, collision and SAT tables export as CSV with a decimal
 // point, numbers that read back exactly.

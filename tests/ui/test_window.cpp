@@ -64,8 +64,8 @@ private slots:
         QTest::newRow("negative noise")
             << -9.9e-7 << QStringLiteral("de_DE") << QStringLiteral("0");
         // Above the rounding: shown as it is, in three digits.
-        QTest::newRow("just above") << 2e-6 << QStringLiteral("en_US")
-                                    << QLocale(QStringLiteral("en_US")).toString(2e-6, 'g', 3);
+        QTest::newRow("just above")
+            << 2e-6 << QStringLiteral("en_US") << QStringLiteral("0.000002");
         QTest::newRow("small, German")
             << 0.0125 << QStringLiteral("de_DE") << QStringLiteral("0,0125");
         QTest::newRow("large, German")

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "common/status_text.h"
 
+#include "common/number_format.h"
+
 #include <QCoreApplication>
 
 #include <cmath>
@@ -22,7 +24,7 @@ QString driftPercentText(double percent, const QLocale& locale)
         return StatusWords::tr("–", "no drift to show");
     if (std::abs(percent) < kDriftShownAsZeroPercent)
         return locale.toString(0);
-    return locale.toString(percent, 'g', 3);
+    return formatReadable(percent, 3, 0, locale); // "1040", not "1,04E+03"
 }
 
 } // namespace rigidlab::ui

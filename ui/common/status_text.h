@@ -11,7 +11,8 @@ namespace rigidlab::ui {
 inline constexpr double kDriftShownAsZeroPercent = 1e-6;
 
 /// The energy drift [%] as the status bar shows it, without the unit: "0" below
-/// kDriftShownAsZeroPercent, else three significant digits ("-3.27", "0.0125"), in `locale`;
+/// kDriftShownAsZeroPercent, else three significant digits in fixed notation ("-3.27",
+/// "0.0125", "1040"; common/number_format.h), in `locale`;
 /// "–" when it is not a number.
 QString driftPercentText(double percent, const QLocale& locale = QLocale());
 

@@ -92,6 +92,9 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     connect(m_gravity, &QCheckBox::toggled, &m_controller,
             &SimulationController::setGravityEnabled);
     connect(&m_controller, &SimulationController::settingsChanged, this, &ControlPanel::refresh);
+    // Going back in time restores the settings that were in force then: the fields show them,
+    // not the ones changed later (whose marks on the plots turn to ghosts).
+    connect(&m_controller, &SimulationController::rewound, this, &ControlPanel::refresh);
     refresh();
 }
 

@@ -22,11 +22,7 @@ class ControlPanel : public QWidget {
 public:
     explicit ControlPanel(SimulationController& controller, QWidget* parent = nullptr);
 
-    QComboBox* integratorBox() const { return m_integrator; }
-    QComboBox* solverBox() const { return m_solver; }
     NumberField* iterationsField() const { return m_iterations; }
-    NumberField* dtField() const { return m_dt; } ///< in ms
-    NumberField* timeScaleField() const { return m_timeScale; }
     NumberField* restitutionField() const { return m_restitution; }
     NumberField* frictionField() const { return m_friction; }
     QCheckBox* gravityBox() const { return m_gravity; }

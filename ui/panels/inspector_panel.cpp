@@ -1,35 +1,42 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/inspector_panel.h"
 
+#include "common/number_format.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
 
 #include "format/limits.h"
 
+#include <QComboBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 
 #include <cmath>
+#include <numbers>
 
 namespace rigidlab::ui {
 
 namespace {
 
-/// A speed below this is rounding noise, shown as 0 [m/s] (or [rad/s]): far below anything a
-/// lesson measures, far above the noise of a body at rest (a few ulp of g dt).
-constexpr double kSpeedNoise = 1e-12;
-/// A kinetic energy below this fraction of the scene's energy scale shows as 0.
-constexpr double kEnergyNoise = 1e-12;
+// Digits are counted against each quantity's scale, so that its noise reads 0: a body at rest
+// moves at 1e-19 m/s, a box lying flat is turned by 4e-7 rad (common/number_format.h).
+constexpr int kDigits = 4;
+/// [m]: positions to the millimetre.
+constexpr double kLengthScale = 1.0;
+/// [m/s]: velocities to the millimetre per second.
+constexpr double kSpeedScale = 1.0;
+/// Half a turn [rad] or [°]: angles to a thousandth of a radian or a tenth of a degree.
+constexpr double kAngleScaleRad = std::numbers::pi;
+constexpr double kAngleScaleDeg = 180.0;
+/// [rad/s]: angular velocities to a thousandth of a radian per second.
+constexpr double kTurnRateScaleRad = 1.0;
+/// Kinetic energy gets more digits against the scene's energy scale, which may be large.
+constexpr int kEnergyDigits = 6;
 
-QString num(double v, int precision = 4)
+QString num(double v, double scale = 0)
 {
-    return formatNumber(v, precision);
-}
-
-double denoise(double v, double noise)
-{
-    return std::abs(v) < noise ? 0.0 : v;
+    return formatReadable(v, kDigits, scale);
 }
 
 } // namespace
@@ -38,7 +45,8 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     : QWidget(parent), m_controller(controller), m_name(new QLabel(this)), m_mass(new QLabel(this)),
       m_massEdit(new NumberField(this)), m_massUnit(new QLabel(tr("kg"), this)),
       m_inertia(new QLabel(this)), m_position(new QLabel(this)), m_angle(new QLabel(this)),
-      m_velocity(new QLabel(this)), m_omega(new QLabel(this)), m_energy(new QLabel(this)),
+      m_velocity(new QLabel(this)), m_speed(new QLabel(this)), m_omega(new QLabel(this)),
+      m_angleUnit(new QComboBox(this)), m_energy(new QLabel(this)),
       m_restitution(new NumberField(this)), m_friction(new NumberField(this))
 {
     // The mass: a field with its unit for a dynamic body, "infinite" for the others.
@@ -61,14 +69,15 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     form->addRow(tr("Mass m"), massRow);
     form->addRow(tr("Inertia I"), m_inertia);
     form->addRow(tr("Position"), m_position);
-    form->addRow(tr("Angle θ"), m_angle);
+    form->addRow(tr("Angle θ"), angleRow());
     form->addRow(tr("Velocity v"), m_velocity);
+    form->addRow(tr("Speed |v|"), m_speed);
     form->addRow(tr("Angular vel. ω"), m_omega);
     form->addRow(tr("Kinetic energy"), m_energy);
     form->addRow(tr("Restitution e"), m_restitution);
     form->addRow(tr("Friction μ"), m_friction);
     for (QLabel* l :
-         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_omega, m_energy})
+         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);
     // Each field sends only its own value: the other keeps the body's, not a stale text.
     connect(m_restitution, &NumberField::valueEdited, this, [this](double e) {
@@ -120,7 +129,8 @@ void InspectorPanel::refresh()
         m_name->setText(tr("click a body"));
         m_massEdit->setVisible(false);
         m_mass->setVisible(true);
-        for (QLabel* l : {m_mass, m_inertia, m_position, m_angle, m_velocity, m_omega, m_energy})
+        for (QLabel* l :
+             {m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
             l->setText(QStringLiteral("–"));
         return;
     }
@@ -144,24 +154,61 @@ void InspectorPanel::refresh()
     }
     const physics::Vec2 o = b.origin();
     const physics::Vec2 v = m_controller.world().originVelocity(m_body);
-    m_position->setText(tr("(%1, %2) m").arg(num(o.x()), num(o.y())));
-    m_angle->setText(tr("%1 rad").arg(num(b.angle)));
-    m_velocity->setText(
-        tr("(%1, %2) m/s").arg(num(denoise(v.x(), kSpeedNoise)), num(denoise(v.y(), kSpeedNoise))));
-    m_omega->setText(tr("%1 rad/s").arg(num(denoise(b.angularVelocity, kSpeedNoise))));
+    m_position->setText(tr("(%1, %2) m").arg(num(o.x(), kLengthScale), num(o.y(), kLengthScale)));
+    m_velocity->setText(tr("(%1, %2) m/s").arg(num(v.x(), kSpeedScale), num(v.y(), kSpeedScale)));
+    m_speed->setText(tr("%1 m/s").arg(num(v.norm(), kSpeedScale)));
+    if (anglesInDegrees()) {
+        constexpr double kDeg = 180.0 / std::numbers::pi;
+        m_angle->setText(tr("%1°").arg(num(b.angle * kDeg, kAngleScaleDeg)));
+        m_omega->setText(tr("%1 °/s").arg(num(b.angularVelocity * kDeg, kTurnRateScaleRad * kDeg)));
+    } else {
+        m_angle->setText(tr("%1 rad").arg(num(b.angle, kAngleScaleRad)));
+        m_omega->setText(tr("%1 rad/s").arg(num(b.angularVelocity, kTurnRateScaleRad)));
+    }
     const double ke = b.isDynamic() ? 0.5 * b.mass * b.velocity.squaredNorm() +
                                           0.5 * b.inertia * b.angularVelocity * b.angularVelocity
                                     : 0.0;
-    m_energy->setText(tr("%1 J").arg(num(denoise(ke, kEnergyNoise * m_controller.energyScale()))));
+    m_energy->setText(
+        formatQuantity(ke, QStringLiteral("J"), kEnergyDigits, m_controller.energyScale()));
     m_restitution->setValue(b.restitution);
     m_friction->setValue(b.friction);
+}
+
+QWidget* InspectorPanel::angleRow()
+{
+    // Degrees first: the unit of a school's protractor. Radians for the formulas.
+    m_angleUnit->addItem(tr("°", "angle unit: degrees"));
+    m_angleUnit->addItem(tr("rad", "angle unit: radians"));
+    m_angleUnit->setItemData(0, tr("degrees"), Qt::ToolTipRole);
+    m_angleUnit->setItemData(1, tr("radians"), Qt::ToolTipRole);
+    m_angleUnit->setObjectName(QStringLiteral("angleUnit"));
+    m_angleUnit->setAccessibleName(tr("Unit of angles"));
+    m_angleUnit->setToolTip(tr("Angles and angular velocities in degrees or in radians"));
+    m_angleUnit->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    connect(m_angleUnit, &QComboBox::currentIndexChanged, this, &InspectorPanel::refresh);
+    auto* row = new QWidget(this);
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_angle, 1);
+    layout->addWidget(m_angleUnit);
+    return row;
+}
+
+bool InspectorPanel::anglesInDegrees() const
+{
+    return m_angleUnit->currentIndex() != 1;
+}
+
+void InspectorPanel::setAnglesInDegrees(bool degrees)
+{
+    m_angleUnit->setCurrentIndex(degrees ? 0 : 1);
 }
 
 QString InspectorPanel::text() const
 {
     QStringList parts;
     for (QLabel* l :
-         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_omega, m_energy})
+         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
         parts << l->text();
     return parts.join(QLatin1Char('\n'));
 }

@@ -2,10 +2,12 @@
 #pragma once
 // The selected body, in numbers: mass, inertia, pose, velocities, energy. Its restitution and
 // friction can be edited, and the mass of a dynamic body. Numbers are shown in the locale and
-// rounded to what is physically meaningful: rounding noise shows as 0.
+// rounded to what is physically meaningful: rounding noise shows as 0 (common/number_format.h).
+// Angles in degrees (the school's unit) or radians, as the student chooses.
 
 #include <QWidget>
 
+class QComboBox;
 class QLabel;
 
 namespace rigidlab::ui {
@@ -22,6 +24,9 @@ public:
     NumberField* massField() const { return m_massEdit; }
     NumberField* restitutionField() const { return m_restitution; }
     NumberField* frictionField() const { return m_friction; }
+    /// Angles and angular velocities in degrees (the default) or radians.
+    bool anglesInDegrees() const;
+    void setAnglesInDegrees(bool degrees);
 
 signals:
     /// A typed value was refused; `message` names the allowed range (for the status bar).
@@ -33,6 +38,9 @@ public slots:
     void refresh();
 
 private:
+    /// The angle and its unit's choice, side by side.
+    QWidget* angleRow();
+
     SimulationController& m_controller;
     int m_body = -1;
     QLabel* m_name;
@@ -43,7 +51,9 @@ private:
     QLabel* m_position;
     QLabel* m_angle;
     QLabel* m_velocity;
+    QLabel* m_speed; ///< |v|
     QLabel* m_omega;
+    QComboBox* m_angleUnit; ///< degrees, radians
     QLabel* m_energy;
     NumberField* m_restitution;
     NumberField* m_friction;

@@ -2,6 +2,7 @@
 #include "plots/lesson_export.h"
 
 #include "common/display_names.h"
+#include "common/number_format.h"
 #include "plots/plot_widget.h"
 #include "plots/step_sampler.h"
 
@@ -57,7 +58,8 @@ PlotWidget* makeComparePlot(const lessons::LessonStep& step, const QString& titl
                            ? value(s, index)
                            : std::numeric_limits<double>::quiet_NaN();
             });
-        // The legend in words; the CSV keeps the lesson file's code names as column heads.
+        // The legend in words; a handout's CSV keeps the lesson file's code names as column
+        // heads (scripts read them), one exported from the window the legend's words.
         // Curves that coincide (Verlet under RK4) stay visible: each later one in its own dashes.
         plot->setSeriesLegend(series, methodDisplayName(step.compare->label(i)));
         plot->setSeriesPen(series, plotPenStyle(i), plotPenWidthFactor(i, count));
@@ -147,7 +149,7 @@ QString stepCaption(const lessons::Lesson& lesson, int step, const physics::Worl
             names.append(methodDisplayName(s.compare->label(i)));
         how += LessonExport::tr(" · solvers %1").arg(names.join(QStringLiteral(", ")));
     }
-    how += LessonExport::tr(" · dt = %1 s").arg(QLocale().toString(settings.dt, 'g', 6));
+    how += LessonExport::tr(" · dt = %1 s").arg(formatReadable(settings.dt, 6));
     return first + u'\n' + how;
 }
 

@@ -195,15 +195,14 @@ void appendNumber(QByteArray& out, double value)
     out.append(buffer.data(), end - buffer.data());
 }
 
-QByteArray encodeCsv(const PlotWidget& plot)
+QByteArray encodeCsv(const PlotWidget& plot, bool legendNames)
 {
     QByteArray text = "t [s]";
     std::vector<std::vector<QPointF>> columns;
     for (int i = 0; i < plot.seriesCount(); ++i) {
         const QString unit = plot.seriesUnit(i);
-        const QString head = unit.isEmpty()
-                                 ? plot.seriesName(i)
-                                 : QStringLiteral("%1 [%2]").arg(plot.seriesName(i), unit);
+        const QString name = legendNames ? plot.seriesLegend(i) : plot.seriesName(i);
+        const QString head = unit.isEmpty() ? name : QStringLiteral("%1 [%2]").arg(name, unit);
         text += ',' + csvField(head);
         columns.push_back(plot.points(i));
     }
@@ -321,7 +320,7 @@ ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat form
     QString why;
     bool encoded = true;
     if (format == ExportFormat::Csv) {
-        bytes = encodeCsv(plot);
+        bytes = encodeCsv(plot, options.legendNames);
     } else {
         QCustomPlot& qcp = *plot.plot();
         // Two points per pixel column: of the image for a PNG, of a fine print for the rest.

@@ -30,6 +30,10 @@ struct ExportOptions {
     QSize logicalSize{800, 500};
     /// PNG only: image pixels per logical pixel (2 -> 1600 x 1000 px, sharp when printed).
     double pngPixelRatio = 2.0;
+    /// CSV only: column heads as the legend names the series, in the window's language
+    /// ("Explicitní Euler [J]"), rather than the names they were added with (a lesson file's
+    /// code names, "euler [J]", which the handouts keep for scripts that read them).
+    bool legendNames = false;
 };
 
 struct ExportResult {

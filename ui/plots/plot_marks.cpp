@@ -38,6 +38,91 @@ QFont markFont(const QFont& base)
     return f;
 }
 
+/// Marks close together on screen, sharing one label.
+struct MarkGroup {
+    std::size_t first = 0; ///< the mark whose label shows the group's
+    QStringList texts;
+    double x = 0; ///< [px] of the first mark
+    double lastX = 0;
+};
+
+/// Where a group's label goes.
+struct PlacedLabel {
+    double left = 0; ///< [px]
+    bool leftwards = false;
+    std::size_t row = 0;
+};
+
+QString groupText(const MarkGroup& g)
+{
+    return g.texts.join(QStringLiteral(", "));
+}
+
+/// The marks in `range`, hidden until placed, in groups: marks within kMergePx of the one
+/// before share its label. (A template for the widget's private Mark type.)
+template <class Marks, class Pixel>
+std::vector<MarkGroup> groupMarks(const Marks& marks, const QCPRange& range, Pixel pixel)
+{
+    std::vector<MarkGroup> groups;
+    for (std::size_t i = 0; i < marks.size(); ++i) {
+        const auto& mark = marks[i];
+        mark.label->setVisible(false);
+        if (!range.contains(mark.t))
+            continue;
+        const double x = pixel(mark.t);
+        if (!groups.empty() && x - groups.back().lastX < PlotWidget::kMergePx &&
+            marks[groups.back().first].ghost == mark.ghost) {
+            MarkGroup& g = groups.back();
+            if (!mark.text.isEmpty() && !g.texts.contains(mark.text))
+                g.texts.append(mark.text);
+            g.lastX = x;
+            continue;
+        }
+        groups.push_back({i, mark.text.isEmpty() ? QStringList() : QStringList{mark.text}, x, x});
+    }
+    return groups;
+}
+
+/// Each group's label on the lowest of `rows` rows where it overlaps nothing. A label that
+/// finds no row is merged into the label before it, and the rows are laid out again (the
+/// groups only get fewer, so this ends).
+std::vector<PlacedLabel> placeLabels(std::vector<MarkGroup>& groups, const QFontMetricsF& metrics,
+                                     double axisPx, std::size_t rows, double rightMarginPx)
+{
+    std::vector<PlacedLabel> placed;
+    for (;;) {
+        placed.clear();
+        std::vector<double> rowEnd(rows, -std::numeric_limits<double>::infinity());
+        std::size_t crowded = 0; // the first group with no room, 0 if none
+        for (std::size_t k = 0; k < groups.size() && crowded == 0; ++k) {
+            const MarkGroup& g = groups[k];
+            const double w = metrics.horizontalAdvance(groupText(g)) + kLabelPadding.left() +
+                             kLabelPadding.right();
+            // Near the right edge the label reads leftwards from its line, not cut off.
+            const bool leftwards = g.x + w > axisPx + rightMarginPx && g.x - w >= 0;
+            const double left = leftwards ? g.x - w : g.x;
+            std::size_t row = 0;
+            while (row < rowEnd.size() && rowEnd[row] + kLabelGapPx > left)
+                ++row;
+            if (row == rowEnd.size() && k > 0) {
+                crowded = k;
+                break;
+            }
+            row = std::min(row, rowEnd.size() - 1);
+            rowEnd[row] = left + w;
+            placed.push_back({left, leftwards, row});
+        }
+        if (crowded == 0)
+            return placed;
+        MarkGroup& into = groups[crowded - 1];
+        for (const QString& text : groups[crowded].texts)
+            if (!into.texts.contains(text))
+                into.texts.append(text);
+        into.lastX = groups[crowded].lastX;
+        groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(crowded));
+    }
+}
+
 } // namespace
 
 void PlotWidget::addMark(double t, const QString& label)
@@ -120,78 +205,13 @@ void PlotWidget::fitMarks(int widthPx)
     const QCPRange range = m_plot->xAxis->range();
     const auto pixel = [&](double t) { return (t - range.lower) / range.size() * axisPx; };
 
-    // Marks within kMergePx of the one before share its label: one group each.
-    struct Group {
-        std::size_t first = 0; ///< the mark whose label shows the group's
-        QStringList texts;
-        double x = 0; ///< [px] of the first mark
-        double lastX = 0;
-    };
-    std::vector<Group> groups;
-    for (std::size_t i = 0; i < m_marks.size(); ++i) {
-        const Mark& mark = m_marks[i];
-        mark.label->setVisible(false);
-        if (!range.contains(mark.t))
-            continue;
-        const double x = pixel(mark.t);
-        if (!groups.empty() && x - groups.back().lastX < kMergePx &&
-            m_marks[groups.back().first].ghost == mark.ghost) {
-            Group& g = groups.back();
-            if (!mark.text.isEmpty() && !g.texts.contains(mark.text))
-                g.texts.append(mark.text);
-            g.lastX = x;
-            continue;
-        }
-        groups.push_back({i, mark.text.isEmpty() ? QStringList() : QStringList{mark.text}, x, x});
-    }
-
-    // Each group's label on the lowest row where it overlaps nothing. A label that finds no
-    // row is merged into the label before it, and the rows are laid out again (the groups
-    // only get fewer, so this ends).
-    struct Placed {
-        double left = 0; ///< [px]
-        bool leftwards = false;
-        std::size_t row = 0;
-    };
-    std::vector<Placed> placed;
-    const auto textOf = [](const Group& g) { return g.texts.join(QStringLiteral(", ")); };
-    for (;;) {
-        placed.clear();
-        std::array<double, kMarkRows> rowEnd;
-        rowEnd.fill(-std::numeric_limits<double>::infinity());
-        std::size_t crowded = 0; // the first group with no room, 0 if none
-        for (std::size_t k = 0; k < groups.size() && crowded == 0; ++k) {
-            const Group& g = groups[k];
-            const double w =
-                metrics.horizontalAdvance(textOf(g)) + kLabelPadding.left() + kLabelPadding.right();
-            // Near the right edge the label reads leftwards from its line, not cut off.
-            const bool leftwards = g.x + w > axisPx + kRightMarginPx && g.x - w >= 0;
-            const double left = leftwards ? g.x - w : g.x;
-            std::size_t row = 0;
-            while (row < rowEnd.size() && rowEnd[row] + kLabelGapPx > left)
-                ++row;
-            if (row == rowEnd.size() && k > 0) {
-                crowded = k;
-                break;
-            }
-            row = std::min(row, rowEnd.size() - 1);
-            rowEnd[row] = left + w;
-            placed.push_back({left, leftwards, row});
-        }
-        if (crowded == 0)
-            break;
-        Group& into = groups[crowded - 1];
-        for (const QString& text : groups[crowded].texts)
-            if (!into.texts.contains(text))
-                into.texts.append(text);
-        into.lastX = groups[crowded].lastX;
-        groups.erase(groups.begin() + static_cast<std::ptrdiff_t>(crowded));
-    }
-
+    std::vector<MarkGroup> groups = groupMarks(m_marks, range, pixel);
+    const std::vector<PlacedLabel> placed =
+        placeLabels(groups, metrics, axisPx, kMarkRows, kRightMarginPx);
     int rows = m_marks.empty() ? 0 : 1;
     for (std::size_t k = 0; k < groups.size(); ++k) {
         const Mark& mark = m_marks[groups[k].first];
-        const QString text = textOf(groups[k]);
+        const QString text = groupText(groups[k]);
         mark.label->setText(text);
         mark.label->setVisible(!text.isEmpty());
         mark.label->setPositionAlignment((placed[k].leftwards ? Qt::AlignRight : Qt::AlignLeft) |

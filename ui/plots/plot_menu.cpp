@@ -98,7 +98,10 @@ void PlotWidget::exportInteractively(ExportFormat format)
         format = *typed;
     rememberExportFolder(path);
 
-    const ExportResult result = exportPlot(*this, path, format);
+    // Exported from the window: the columns are named as the legend on screen names them.
+    ExportOptions options;
+    options.legendNames = true;
+    const ExportResult result = exportPlot(*this, path, format, options);
     if (!result.ok) {
         QMessageBox::warning(this, tr("Export failed"), result.error);
         return;

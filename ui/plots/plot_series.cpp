@@ -196,6 +196,19 @@ void PlotSeries::draw(double from, double to, int columns, bool logKeys) const
 
 namespace {
 
+using PointIt = std::vector<PlotPoint>::const_iterator;
+
+/// Points drawn one by one, with their markers if any.
+void drawAsTheyAre(PointIt begin, PointIt end, ColumnGraph* graph)
+{
+    QVector<QCPGraphData> drawn;
+    drawn.reserve(static_cast<qsizetype>(end - begin));
+    for (auto it = begin; it != end; ++it)
+        drawn.append(QCPGraphData(it->t, it->v));
+    graph->data()->set(drawn, true);
+    graph->setColumns({});
+}
+
 void drawPoints(const std::vector<PlotPoint>& points, ColumnGraph* graph, double from, double to,
                 int columns, bool logKeys)
 {
@@ -209,17 +222,12 @@ void drawPoints(const std::vector<PlotPoint>& points, ColumnGraph* graph, double
     const auto count = static_cast<std::size_t>(end - begin);
     columns = std::max(columns, 1);
 
-    QVector<QCPGraphData> drawn;
     const bool log = logKeys && from > 0 && to > from;
     // A few points are drawn as they are (with their markers, if any). More go by pixel
     // column: spread over the few columns of a run's first second, 200 points of a zigzag
     // cost as much as 2000.
     if (count <= kFewPoints || !(to > from)) {
-        drawn.reserve(static_cast<qsizetype>(count));
-        for (auto it = begin; it != end; ++it)
-            drawn.append(QCPGraphData(it->t, it->v));
-        graph->data()->set(drawn, true);
-        graph->setColumns({});
+        drawAsTheyAre(begin, end, graph);
         return;
     }
 
@@ -231,6 +239,7 @@ void drawPoints(const std::vector<PlotPoint>& points, ColumnGraph* graph, double
     };
 
     constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
+    QVector<QCPGraphData> drawn;
     std::vector<ColumnGraph::Column> dense;
     dense.reserve(static_cast<std::size_t>(2 * columns + 4));
     drawn.reserve(3 * columns + 6);

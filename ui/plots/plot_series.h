@@ -60,6 +60,9 @@ public:
     PlotSeries(ColumnGraph* graph, QString name, YAxis axis, SampleValue value);
 
     const QString& name() const { return m_name; }
+    /// The name in the legend, in words (the name itself until one is set).
+    const QString& legend() const { return m_legend.isEmpty() ? m_name : m_legend; }
+    void setLegend(QString legend) { m_legend = std::move(legend); }
     YAxis axis() const { return m_axis; }
     ColumnGraph* graph() const { return m_graph; }
     /// The graph that draws the ghost (owned by the QCustomPlot); nullptr draws none.
@@ -114,6 +117,7 @@ private:
     std::vector<PlotPoint> m_points;     ///< sorted by t
     std::vector<PlotPoint> m_ghost;      ///< sorted by t, all after m_points
     QString m_name;
+    QString m_legend;
     YAxis m_axis = YAxis::Left;
     SampleValue m_value;
     double m_widthFactor = 1.0;       ///< of the plot's line width

@@ -37,6 +37,10 @@ constexpr double kPresentationAxisLabelPt = 18;
 constexpr double kPresentationTickLabelPt = 16;
 constexpr double kPresentationLegendPt = 16;
 constexpr double kPresentationTitlePt = 20;
+const QColor kCaptionColour(0x40, 0x40, 0x40);
+/// QCustomPlot's own grid colour, and the darker one of presentation mode.
+const QColor kGridColour(200, 200, 200);
+const QColor kPresentationGridColour(0x80, 0x80, 0x80);
 
 /// Opacity of the ghost: the run's future before the timeline went back.
 constexpr double kGhostAlpha = 0.4;
@@ -80,7 +84,7 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
     m_plot->plotLayout()->setRowStretchFactor(0, 0.001);
     m_plot->plotLayout()->setRowStretchFactor(1, 0.001);
     m_caption = new QCPTextElement(m_plot, QString(), sized(base, kCaptionPt));
-    m_caption->setTextColor(QColor(0x40, 0x40, 0x40));
+    m_caption->setTextColor(kCaptionColour);
     m_plot->legend->setVisible(true);
     m_plot->legend->setFillOrder(QCPLayoutGrid::foColumnsFirst);
     m_plot->legend->setBorderPen(Qt::NoPen);
@@ -327,7 +331,8 @@ int PlotWidget::wrapLegend(int widthPx)
 
 void PlotWidget::setSeriesLegend(int series, const QString& legend)
 {
-    const PlotSeries& s = m_series.at(series);
+    PlotSeries& s = m_series.at(series);
+    s.setLegend(legend);
     s.graph()->setName((s.axis() == YAxis::Right ? tr("%1 (right axis)").arg(legend) : legend) +
                        (offScale(series) ? offScaleMark() : QString()));
     fitLegend(m_plot->width());
@@ -354,6 +359,11 @@ QCPGraph* PlotWidget::graph(int series) const
 QString PlotWidget::seriesName(int series) const
 {
     return m_series.at(series).name();
+}
+
+QString PlotWidget::seriesLegend(int series) const
+{
+    return m_series.at(series).legend();
 }
 
 QString PlotWidget::seriesUnit(int series) const
@@ -393,6 +403,11 @@ void PlotWidget::placeFollowButton()
     m_followButton->move(width() - m_followButton->width() - margin, margin);
 }
 
+QColor PlotWidget::captionColour() const
+{
+    return m_caption->textColor();
+}
+
 void PlotWidget::setPresentation(bool on)
 {
     m_presentation = on;
@@ -408,6 +423,15 @@ void PlotWidget::setPresentation(bool on)
         axis->setBasePen(axisPen);
     }
     fitMarks(); // the top margin follows the tick labels' size
+    // Black on white for a washed-out projector: the caption black, the grid dark enough
+    // to be seen. The curves keep their colours (and dashes), which tell compared runs apart.
+    m_caption->setTextColor(on ? QColor(Qt::black) : kCaptionColour);
+    for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis}) {
+        QPen grid = axis->grid()->pen();
+        grid.setColor(on ? kPresentationGridColour : kGridColour);
+        grid.setWidthF(on ? 1.0 : 0.0);
+        axis->grid()->setPen(grid);
+    }
     for (const PlotSeries& series : m_series) {
         for (QCPGraph* g : {static_cast<QCPGraph*>(series.graph()),
                             static_cast<QCPGraph*>(series.ghostGraph())}) {

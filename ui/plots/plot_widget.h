@@ -83,6 +83,8 @@ public:
     QString caption() const { return m_captionText; }
     void setCaptionShown(bool shown);
     bool captionShown() const { return m_captionShown; }
+    /// The caption's text colour: grey in the window, black in presentation mode.
+    QColor captionColour() const;
 
     /// Labels a value axis "quantity [unit]"; the unit also heads the CSV columns.
     void setYAxisLabel(const QString& quantity, const QString& unit, YAxis axis = YAxis::Left);
@@ -125,6 +127,8 @@ public:
     /// The graph that draws a series, for styling (pen, scatter); owned by plot().
     QCPGraph* graph(int series) const;
     QString seriesName(int series) const;
+    /// The series' name as the legend gives it (setSeriesLegend), without "(right axis)".
+    QString seriesLegend(int series) const;
     QString seriesUnit(int series) const;
     /// The points of a series as (t [s], value), oldest first.
     std::vector<QPointF> points(int series) const;

@@ -4,7 +4,6 @@
 #include "view/world_view.h"
 
 #include "common/theme.h"
-#include "panels/divergence_text.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"
@@ -17,6 +16,26 @@
 #include <cmath>
 
 namespace rigidlab::ui {
+
+namespace {
+
+physics::Transform transformAt(const physics::Vec2& origin, double angle)
+{
+    physics::Transform t;
+    t.q = physics::Rotation(angle);
+    t.p = origin;
+    return t;
+}
+
+/// Whether a body at p is a sane sight in the view showing `shown` (anywhere, before the
+/// view has a size).
+bool inSight(const QRectF& shown, const physics::Vec2& p)
+{
+    return std::isfinite(p.x()) && std::isfinite(p.y()) &&
+           (shown.isEmpty() || shown.contains(QPointF(p.x(), p.y())));
+}
+
+} // namespace
 
 WorldView::WorldView(SimulationController& controller, QWidget* parent)
     : QGraphicsView(parent), m_controller(controller), m_scene(new QGraphicsScene(this))
@@ -122,26 +141,23 @@ void WorldView::syncPoses()
     // A stopped world stays drawn, frozen where it last was in sight while it ran (in the
     // steps before it diverged its bodies may already fly far off): not gone, and its last
     // sane pose.
-    const auto transformAt = [](const physics::Vec2& origin, double angle) {
-        physics::Transform t;
-        t.q = physics::Rotation(angle);
-        t.p = origin;
-        return t;
-    };
     const QRectF shown = mapToScene(viewport()->rect()).boundingRect();
-    const auto inSight = [&shown](const physics::Vec2& p) {
-        return std::isfinite(p.x()) && std::isfinite(p.y()) &&
-               (shown.isEmpty() || shown.contains(QPointF(p.x(), p.y())));
-    };
-    const std::size_t worlds = static_cast<std::size_t>(m_controller.variantCount()) + 1;
-    m_drawnRunning.resize(worlds, false);
+    m_drawnRunning.resize(static_cast<std::size_t>(m_controller.variantCount()) + 1, false);
+    syncMainPoses(shown);
+    syncGhostPoses(shown);
+    followContent();
+    m_overlays->refresh();
+}
+
+void WorldView::syncMainPoses(const QRectF& shown)
+{
     const physics::World& main = m_controller.world();
     const bool mainFrozen = main.divergence() && m_drawnRunning[0];
     std::vector<Pose> poses(m_items.size());
     bool mainSane = !main.divergence();
     for (std::size_t i = 0; i < m_items.size(); ++i) {
         poses[i] = m_controller.drawPose(static_cast<physics::BodyId>(i));
-        mainSane = mainSane && inSight(poses[i].origin);
+        mainSane = mainSane && inSight(shown, poses[i].origin);
     }
     m_itemPoses.resize(m_items.size());
     for (std::size_t i = 0; i < m_items.size(); ++i) {
@@ -154,14 +170,18 @@ void WorldView::syncPoses()
             m_items[i]->setPose(poses[i].origin.x(), poses[i].origin.y(), poses[i].angle);
     }
     m_drawnRunning[0] = m_drawnRunning[0] || mainSane;
+}
 
+void WorldView::syncGhostPoses(const QRectF& shown)
+{
+    const std::size_t worlds = m_drawnRunning.size();
     std::vector<bool> sane(worlds, true);
     for (const Ghost& g : m_ghosts) {
         const physics::World& vw = m_controller.variant(g.variant);
         const physics::Vec2 o =
             vw.body(g.body).origin() + (g.variant + 1) * m_controller.variantOffset();
         const auto w = static_cast<std::size_t>(g.variant) + 1;
-        sane[w] = sane[w] && !vw.divergence() && inSight(o);
+        sane[w] = sane[w] && !vw.divergence() && inSight(shown, o);
     }
     for (Ghost& g : m_ghosts) {
         const physics::World& vw = m_controller.variant(g.variant);
@@ -180,6 +200,10 @@ void WorldView::syncPoses()
     }
     for (std::size_t w = 1; w < worlds; ++w)
         m_drawnRunning[w] = m_drawnRunning[w] || sane[w];
+}
+
+void WorldView::followContent()
+{
     if (const int stopped = stoppedCount(); stopped != m_stoppedCount) {
         // A world stopped: what auto-fit widened to follow it is given back, so that the
         // worlds still running are shown as large as at the start.
@@ -201,7 +225,6 @@ void WorldView::syncPoses()
             showRect(m_fitted); // a world stopped: its legend line grew, the bodies move down
         }
     }
-    m_overlays->refresh();
 }
 
 std::optional<physics::Transform> WorldView::frozenPose(int world, physics::BodyId body) const

@@ -83,6 +83,13 @@ protected:
     bool viewportEvent(QEvent* event) override;
 
 private:
+    /// syncPoses() for the main world's bodies, then the compared worlds' ghosts, for a view
+    /// showing `shown` of the scene [m].
+    void syncMainPoses(const QRectF& shown);
+    void syncGhostPoses(const QRectF& shown);
+    /// Auto-fit after the bodies moved: follows bodies leaving the fitted area, gives back
+    /// what it widened for a world that stopped.
+    void followContent();
     physics::Vec2 toWorld(const QPoint& viewPos) const;
     /// Everything the scene shows: bodies, spring and joint anchors [m].
     QRectF contentRect() const;

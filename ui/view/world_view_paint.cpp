@@ -4,6 +4,7 @@
 
 #include "view/world_view.h"
 
+#include "common/number_format.h"
 #include "common/theme.h"
 #include "panels/divergence_text.h"
 #include "plots/plot_widget.h"
@@ -66,7 +67,7 @@ QString WorldView::legendLine(int world) const
     // A stopped world gets one short line, readable from the back of the room; the numbers
     // (how far the energy grew, which body) are in legendDetail, the line's tooltip.
     if (const auto& d = w.divergence()) {
-        const QString time = QLocale().toString(d->time, 'g', 3);
+        const QString time = formatReadable(d->time, 3);
         if (d->kind == physics::Divergence::Kind::EnergyGrowth)
             return tr("%1 — blew up at t = %2 s").arg(name, time);
         return tr("%1 — stopped at t = %2 s: %3").arg(name, time, divergenceShort(*d));
