@@ -35,6 +35,34 @@ int usage()
     return 2;
 }
 
+/// RigidLab (both solvers) and every peer this build has; `missing` gets each peer left out,
+/// with the reason.
+std::vector<std::unique_ptr<bench::BenchEngine>>
+makeEngines([[maybe_unused]] std::vector<std::string>& missing)
+{
+    std::vector<std::unique_ptr<bench::BenchEngine>> engines;
+    engines.push_back(bench::makeRigidLabBenchEngine());
+    bench::RigidLabBenchSettings soft;
+    soft.solver = physics::SolverKind::SoftStep;
+    engines.push_back(bench::makeRigidLabBenchEngine(soft));
+#ifdef RIGIDLAB_BENCH_BOX2D_V3
+    engines.push_back(bench::makeBox2dV3Engine());
+#elif defined(RIGIDLAB_BENCH_BOX2D_V3_MISSING)
+    missing.push_back(std::string("Box2D v3: ") + RIGIDLAB_BENCH_BOX2D_V3_MISSING);
+#endif
+#ifdef RIGIDLAB_BENCH_CHIPMUNK
+    engines.push_back(bench::makeChipmunkEngine());
+#else
+    missing.push_back("Chipmunk 7: not found (apt-get install libchipmunk-dev)");
+#endif
+#ifdef RIGIDLAB_BENCH_BOX2D
+    engines.push_back(bench::makeBox2dEngine());
+#else
+    missing.push_back("Box2D 2.4: not found (apt-get install libbox2d-dev)");
+#endif
+    return engines;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -70,26 +98,7 @@ int main(int argc, char** argv)
 
     // Each peer left out of this build, with the reason (said under the table).
     std::vector<std::string> missing;
-    std::vector<std::unique_ptr<bench::BenchEngine>> engines;
-    engines.push_back(bench::makeRigidLabBenchEngine());
-    bench::RigidLabBenchSettings soft;
-    soft.solver = physics::SolverKind::SoftStep;
-    engines.push_back(bench::makeRigidLabBenchEngine(soft));
-#ifdef RIGIDLAB_BENCH_BOX2D_V3
-    engines.push_back(bench::makeBox2dV3Engine());
-#elif defined(RIGIDLAB_BENCH_BOX2D_V3_MISSING)
-    missing.push_back(std::string("Box2D v3: ") + RIGIDLAB_BENCH_BOX2D_V3_MISSING);
-#endif
-#ifdef RIGIDLAB_BENCH_CHIPMUNK
-    engines.push_back(bench::makeChipmunkEngine());
-#else
-    missing.push_back("Chipmunk 7: not found (apt-get install libchipmunk-dev)");
-#endif
-#ifdef RIGIDLAB_BENCH_BOX2D
-    engines.push_back(bench::makeBox2dEngine());
-#else
-    missing.push_back("Box2D 2.4: not found (apt-get install libbox2d-dev)");
-#endif
+    std::vector<std::unique_ptr<bench::BenchEngine>> engines = makeEngines(missing);
 
     std::vector<bench::BenchResult> results;
     for (const std::string& name : scenes) {

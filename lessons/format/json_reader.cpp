@@ -192,9 +192,8 @@ QString describeRange(const limits::Range& range)
 QString unknownIntegrator(const QString& name)
 {
     QStringList names;
-    for (auto k : {physics::IntegratorKind::Euler, physics::IntegratorKind::SymplecticEuler,
-                   physics::IntegratorKind::Verlet, physics::IntegratorKind::RK4})
-        names.append(textFromView(physics::integratorName(k)));
+    for (const physics::IntegratorInfo& info : physics::kIntegrators)
+        names.append(textFromView(info.name));
     return FileMessages::tr("unknown integrator \"%1\" (expected %2)").arg(name, names.join(u", "));
 }
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The conservation experiments behind `rigidlab-cli conserve` (issue 16): what an impact
+// The conservation experiments behind `rigidlab-cli conserve`: what an impact
 // solver must keep, measured on scenes whose exact answer is known.
 //   gas     an elastic gas (e = 1, no friction, no gravity) of balls in a closed box of static
 //           walls: the kinetic energy must stay what it was.

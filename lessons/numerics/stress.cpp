@@ -172,33 +172,27 @@ World oscillator(IntegratorKind k, double dt, double stiffness)
     return w;
 }
 
-/// The theoretical limit of w dt for a method on an undamped oscillator, 0 for none.
+/// The theoretical limit of w dt for a method on an undamped oscillator, 0 for none (the
+/// integrator's own, physics::IntegratorInfo).
 double stabilityBound(IntegratorKind k)
 {
-    switch (k) {
-    case IntegratorKind::SymplecticEuler:
-    case IntegratorKind::Verlet:
-        return 2.0;
-    case IntegratorKind::RK4:
-        return 2.0 * std::sqrt(2.0); // |1 - x^2/2 + x^4/24| <= 1 for x <= 2 sqrt(2)
-    default:
-        return 0.0;
-    }
+    return physics::integratorInfo(k).stabilityBound;
 }
 
 QString limitText(IntegratorKind k, double omega)
 {
-    switch (k) {
-    case IntegratorKind::Euler:
+    switch (physics::integratorInfo(k).stability) {
+    case physics::Stability::Unstable:
         return QStringLiteral("none: energy x (1 + (w dt)^2) per step");
-    case IntegratorKind::DormandPrince:
+    case physics::Stability::Adaptive:
         return QStringLiteral("adaptive: substeps as needed");
-    case IntegratorKind::ImplicitMidpoint:
+    case physics::Stability::AStable:
         return QStringLiteral("none: A-stable");
-    default:
-        return QStringLiteral("w dt < %1: dt < %2")
-            .arg(QString::number(stabilityBound(k), 'g', 3), seconds(stabilityBound(k) / omega));
+    case physics::Stability::Bounded:
+        break;
     }
+    return QStringLiteral("w dt < %1: dt < %2")
+        .arg(QString::number(stabilityBound(k), 'g', 3), seconds(stabilityBound(k) / omega));
 }
 
 /// Scans dt downwards from 0.5 s (60 steps per decade... 1.25x apart) for the largest dt
@@ -393,7 +387,7 @@ void dtRange(std::vector<StressRow>& rows)
     // Past 1e-4 s a 10 cm ball falling at 4.4 m/s moves a sizeable part of itself per step: at
     // 0.01 s it sinks 3 cm into the ground before the position pass catches up, at 0.1 s
     // 7 cm (its bounces are not warm started into the next step, which held it up before the
-    // collision phase of issue 16, when the verdict was "jittering"), and at 0.5 s (2.45 m per
+    // collision phase, when the verdict was "jittering"), and at 0.5 s (2.45 m per
     // step) it ends below the ground.
     const std::pair<double, const char*> runs[] = {{1e-6, "stable"},
                                                    {1e-4, "stable"},

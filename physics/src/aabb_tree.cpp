@@ -37,7 +37,6 @@ int AabbTree::insert(const Aabb& box, int value)
     n.value = value;
     n.height = 0;
     insertLeaf(leaf);
-    ++m_leaves;
     return leaf;
 }
 
@@ -46,7 +45,6 @@ void AabbTree::remove(int leaf)
     assert(m_nodes[static_cast<size_t>(leaf)].isLeaf());
     removeLeaf(leaf);
     release(leaf);
-    --m_leaves;
 }
 
 void AabbTree::insertLeaf(int leaf)

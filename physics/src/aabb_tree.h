@@ -34,7 +34,6 @@ public:
     void remove(int leaf);
     const Aabb& box(int node) const { return m_nodes[static_cast<size_t>(node)].box; }
     int value(int leaf) const { return m_nodes[static_cast<size_t>(leaf)].value; }
-    int leafCount() const { return m_leaves; }
     /// Height of the tree (0 when empty, 1 for a single leaf).
     int height() const
     {
@@ -84,7 +83,6 @@ private:
     std::vector<Node> m_nodes;
     int m_root = kNull;
     int m_free = kNull;
-    int m_leaves = 0;
     mutable std::vector<int> m_stack; ///< query scratch
 };
 

@@ -47,6 +47,21 @@ inline AppliedLoad appliedLoad(const WorldDef& def, const Body& b, const Vec2& v
     return load;
 }
 
+/// A body's acceleration from its applied load at its own velocities: (0 + F) / m [m/s^2] and
+/// (0 + M) / I [rad/s^2], the sum Dynamics::appliedAccelerations starts from 0 (so -0 becomes
+/// +0). The direct integration and the soft step take it from here, so that their symplectic
+/// Euler and the integrator's over the state give the same bits.
+struct BodyAcceleration {
+    Vec2 linear = Vec2::Zero();
+    double angular = 0.0;
+};
+inline BodyAcceleration appliedAcceleration(const WorldDef& def, const Body& b)
+{
+    const AppliedLoad load = appliedLoad(def, b, b.velocity, b.angularVelocity);
+    return {Vec2(0.0 + load.force.x(), 0.0 + load.force.y()) * b.invMass,
+            (0.0 + load.torque) * b.invInertia};
+}
+
 class Dynamics final : public OdeSystem {
 public:
     Dynamics(const WorldDef& def, const std::vector<Body>& bodies, const std::vector<int>& slot,

@@ -11,14 +11,14 @@
 //     gravitation) is done straight on the bodies (integration.cpp): the same update on the
 //     same forces as the integrator over the ODE system, without gathering the state into
 //     vectors and scattering it back.
-// Also here: each body's placement for the step, recomputed only for bodies that moved.
+// Also here: each body's placement for the step, the plain path (every body anew); the fast
+// one recomputes only the bodies that moved (fast/body_placement.cpp).
 
 #include "rigidlab/physics/world.h"
 
-#include "world_scratch.h"
+#include "stages.h"
 
 #include <algorithm>
-#include <limits>
 
 namespace rigidlab::physics {
 
@@ -45,13 +45,15 @@ const char* stageName(Stage s)
     return "?";
 }
 
-World::Plan World::planStep() const
+StepPlan planStep(const WorldDef& def, const std::vector<Body>& bodies,
+                  const std::vector<SpringDef>& springs, const std::vector<PinJointDef>& joints,
+                  const std::vector<std::pair<int, int>>& jointPairs, bool plain)
 {
-    Plan plan;
+    StepPlan plan;
     int collidable = 0, collidableDynamic = 0, dynamic = 0;
     BodyId first = -1, second = -1;
-    for (size_t i = 0; i < m_bodies.size(); ++i) {
-        const Body& b = m_bodies[i];
+    for (size_t i = 0; i < bodies.size(); ++i) {
+        const Body& b = bodies[i];
         dynamic += b.isDynamic() ? 1 : 0;
         if (!b.collide)
             continue;
@@ -61,30 +63,28 @@ World::Plan World::planStep() const
     }
     plan.collide = collidableDynamic >= 1 && collidable >= 2;
     if (plan.collide && collidable == 2 &&
-        std::binary_search(m_jointPairs.begin(), m_jointPairs.end(), std::pair(first, second)))
+        std::binary_search(jointPairs.begin(), jointPairs.end(), std::pair(first, second)))
         plan.collide = false; // the only two are pinned together
-    plan.direct = m_def.integrator == IntegratorKind::SymplecticEuler && m_springs.empty() &&
-                  m_joints.empty() && m_def.gravitation == 0.0;
-    plan.soft = plan.direct && m_def.solver == SolverKind::SoftStep;
-    plan.sleep = m_def.sleep.value_or(dynamic >= kLargeSceneBodies);
+    // Only contacts couple the bodies: the soft step can run, and symplectic Euler can run
+    // straight on the bodies (fast/integrate_direct.cpp; the plain path takes the integrator).
+    const bool contactsOnly = def.integrator == IntegratorKind::SymplecticEuler &&
+                              springs.empty() && joints.empty() && def.gravitation == 0.0;
+    plan.soft = contactsOnly && def.solver == SolverKind::SoftStep;
+    plan.direct = contactsOnly && !plain;
+    plan.sleep = def.sleep.value_or(dynamic >= kLargeSceneBodies);
     plan.dynamic = dynamic;
     return plan;
 }
 
-void World::updateTransforms()
+void placeBodies(StepContext& ctx)
 {
-    Scratch& s = *m_scratch;
-    const size_t n = m_bodies.size();
-    if (s.xf.size() != n) {
-        s.xf.resize(n);
-        // NaN never equals itself: every new entry is computed below.
-        s.xfPosition.resize(n, Vec2::Constant(std::numeric_limits<double>::quiet_NaN()));
-        s.xfAngle.resize(n, std::numeric_limits<double>::quiet_NaN());
-    }
+    StepScratch& s = ctx.scratch;
+    const size_t n = ctx.bodies.size();
+    s.xf.resize(n);
+    s.xfPosition.resize(n);
+    s.xfAngle.resize(n);
     for (size_t i = 0; i < n; ++i) {
-        const Body& b = m_bodies[i];
-        if (b.angle == s.xfAngle[i] && b.position == s.xfPosition[i])
-            continue; // has not moved: the same transform, without a sine and a cosine
+        const Body& b = ctx.bodies[i];
         s.xf[i] = b.transform();
         s.xfAngle[i] = b.angle;
         s.xfPosition[i] = b.position;

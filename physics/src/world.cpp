@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // World::step(): the stages in the order of physics::Stage (profile.h), which names each
-// stage's file. This file only calls them; the world is built and changed in world_setup.cpp.
+// stage's file. This file only computes the step's context (stages/step_context.h) and calls
+// the stages (stages/stages.h); the world is built and changed in world_setup.cpp.
 
 #include "rigidlab/physics/world.h"
 
 #include "cpu_state.h"
-#include "narrow_phase.h"
-#include "world_scratch.h"
+#include "stages.h"
 
 #include <cassert>
 #include <utility>
@@ -35,35 +35,33 @@ void World::step()
     clearUpperVectorState();
     const auto start = StageTimer::Clock::now();
     m_profile = StepProfile{};
-    // The plan (step_plan.cpp): contacts only if some two bodies can collide, the direct
-    // integration when only contacts couple the bodies, islands when sleeping.
-    m_plan = planStep();
-    if (!m_plan.sleep)
-        m_profile.awake = m_plan.dynamic;
+    StepContext ctx = context();
+    if (!ctx.plan.sleep)
+        m_profile.awake = ctx.plan.dynamic;
 
     // Stage::BroadPhase, Stage::NarrowPhase: the contacts where the shapes stand now.
-    if (m_plan.collide) {
-        rememberStartVelocities();
-        findContacts();
+    if (ctx.plan.collide) {
+        rememberStartVelocities(ctx);
+        findContacts(ctx);
     } else {
         m_contacts.clear();
     }
     // Stage::Islands: a body touched by an awake one wakes, with everything touching it.
-    if (m_plan.sleep)
-        wakeIslands();
-    if (m_plan.soft) {
+    if (ctx.plan.sleep)
+        wakeIslands(ctx);
+    if (ctx.plan.soft) {
         // Stage::Forces, Stage::Integration, Stage::ContactSolve in substeps: the soft step.
-        softStep();
+        softStep(ctx);
     } else {
         // Stage::Forces, Stage::Integration.
-        integrate();
+        integrate(ctx);
         // Stage::ContactSolve: impulses on the new velocities, then position correction.
-        if (!m_contacts.empty() && m_plan.anyAwake)
-            solveContacts();
+        if (!m_contacts.empty() && ctx.plan.anyAwake)
+            solveContacts(ctx);
     }
     // Stage::Sleep: islands that have rested long enough.
-    if (m_plan.sleep)
-        sleepIslands();
+    if (ctx.plan.sleep)
+        sleepIslands(ctx);
 
     for (Body& b : m_bodies) {
         b.force = Vec2::Zero();
@@ -82,26 +80,46 @@ void World::step()
         std::chrono::duration<double, std::milli>(StageTimer::Clock::now() - start).count();
 }
 
-void World::findContacts()
+StepContext World::context()
 {
-    Scratch& s = *m_scratch;
-    std::swap(s.previous, m_contacts);
-    m_contacts.clear();
-    const double margin = m_contactSettings.margin;
-
-    StageTimer broad(m_profile, Stage::BroadPhase);
-    updateTransforms();
-    s.broadPhase.findPairs(m_bodies, s.xf, margin, m_def.dt, m_jointPairs, s.pairs);
-    // Fast bodies: pairs and margins over their motion in this step (continuous collision).
-    addSweptPairs(s.pairs);
-    broad.stop();
-    m_profile.pairs = static_cast<int>(s.pairs.size());
-
-    StageTimer narrow(m_profile, Stage::NarrowPhase);
-    s.narrow.reuseFaces = m_contactSettings.reuseFaces;
-    narrowPhase(m_bodies, s.xf, s.pairs, margin, m_sweep, s.previous, s.narrow, m_contacts);
-    m_profile.contacts = static_cast<int>(m_contacts.size());
-    m_profile.reusedFaces = s.narrow.reused;
+    // The plan (step_plan.cpp): contacts only if some two bodies can collide, the direct
+    // integration when only contacts couple the bodies, islands when sleeping.
+    const bool plain = m_engineSettings.plainPaths;
+    const StepPlan plan = planStep(m_def, m_bodies, m_springs, m_joints, m_jointPairs, plain);
+    const SoftStepSettings& soft = m_contactSettings.soft;
+    const double dt = m_def.dt;
+    const int substeps = plan.soft ? soft.substeps : 1;
+    const double h = dt / substeps;
+    StepContext ctx{.dt = dt,
+                    .invDt = 1.0 / dt,
+                    .substeps = substeps,
+                    .h = h,
+                    .invH = 1.0 / h,
+                    .softness = {},
+                    .restitutionThreshold = restitutionThreshold(m_def, m_contactSettings),
+                    .plain = plain,
+                    .plan = plan,
+                    .def = m_def,
+                    .contactSettings = m_contactSettings,
+                    .bodies = m_bodies,
+                    .springs = m_springs,
+                    .joints = m_joints,
+                    .contacts = m_contacts,
+                    .moving = m_moving,
+                    .slot = m_slot,
+                    .jointPairs = m_jointPairs,
+                    .sweep = m_sweep,
+                    .integrator = *m_integrator,
+                    .time = m_time,
+                    .evaluations = m_evaluations,
+                    .collisionLoss = m_collisionLoss,
+                    .dragLoss = m_dragLoss,
+                    .dampingLoss = m_dampingLoss,
+                    .scratch = *m_scratch,
+                    .profile = m_profile};
+    if (plan.soft)
+        softContactCoefficients(soft, h, ctx.softness);
+    return ctx;
 }
 
 } // namespace rigidlab::physics

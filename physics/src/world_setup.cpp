@@ -104,20 +104,6 @@ void World::setGravity(const Vec2& g)
     wakeAll();
 }
 
-void World::setGravitation(double G)
-{
-    assert(limits::kGravitation.contains(G));
-    m_def.gravitation = G;
-    wakeAll();
-}
-
-void World::setDrag(double drag)
-{
-    assert(limits::kDrag.contains(drag));
-    m_def.drag = drag;
-    wakeAll();
-}
-
 void World::setRestitution(double e)
 {
     assert(limits::kRestitution.contains(e));
@@ -206,6 +192,39 @@ Vec2 World::originVelocity(BodyId id) const
 {
     const Body& b = body(id);
     return b.pointVelocity(b.origin());
+}
+
+// Sleeping (islands.cpp does the islands).
+
+bool World::sleepEnabled() const
+{
+    if (m_def.sleep)
+        return *m_def.sleep;
+    const auto dynamic = std::count_if(m_bodies.begin(), m_bodies.end(),
+                                       [](const Body& b) { return b.isDynamic(); });
+    return dynamic >= kLargeSceneBodies;
+}
+
+void World::setSleep(std::optional<bool> on)
+{
+    m_def.sleep = on;
+    if (!sleepEnabled())
+        wakeAll();
+}
+
+void World::wakeBody(BodyId id)
+{
+    Body& b = mutableBody(id);
+    b.awake = true;
+    b.sleepTime = 0.0;
+}
+
+void World::wakeAll()
+{
+    for (Body& b : m_bodies) {
+        b.awake = true;
+        b.sleepTime = 0.0;
+    }
 }
 
 } // namespace rigidlab::physics

@@ -230,7 +230,7 @@ void TestCli::badInput_data()
     QTest::newRow("unknown-integrator")
         << QByteArray(R"({"rigidlab": 1, "world": {"integrator": "rk5"}, "bodies": []})")
         << "world.integrator: unknown integrator \"rk5\" (expected euler, symplectic-euler, "
-           "verlet, rk4)";
+           "verlet, rk4, dopri5, implicit-midpoint)";
 }
 
 void TestCli::badInput()

@@ -440,7 +440,7 @@ void TestLesson::rejectsBadLesson_data()
     QTest::newRow("compare-unknown-integrator")
         << oneStep(R"("compare": {"integrators": ["euler", "rk5"]})")
         << steps0 + R"(compare.integrators[1]: unknown integrator "rk5" (expected euler, )"
-                    "symplectic-euler, verlet, rk4)";
+                    "symplectic-euler, verlet, rk4, dopri5, implicit-midpoint)";
     QTest::newRow("compare-and-setting")
         << oneStep(
                R"("settings": {"integrator": "rk4"}, "compare": {"integrators": ["euler", "rk4"]})")

@@ -148,7 +148,7 @@ void TestLessons::rejectsBadScene_data()
     QTest::newRow("unknown-integrator")
         << sceneWith(R"("world": {"integrator": "rk5"}, "bodies": [])")
         << R"(world.integrator: unknown integrator "rk5" )"
-           "(expected euler, symplectic-euler, verlet, rk4)";
+           "(expected euler, symplectic-euler, verlet, rk4, dopri5, implicit-midpoint)";
     QTest::newRow("unknown-solver") << sceneWith(R"("world": {"solver": "magic"}, "bodies": [])")
                                     << R"(world.solver: unknown solver "magic" (expected )"
                                        "seed-impulse, sequential-impulse, soft-step)";

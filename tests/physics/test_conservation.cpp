@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Impacts that conserve what physics conserves (issue 16), for every solver that bounces (the
+// Impacts that conserve what physics conserves, for every solver that bounces (the
 // soft step bounces in the sequential solver's collision phase, before its substeps):
 //  - an elastic gas (e = 1, no friction, no gravity, balls in a closed box of static walls)
 //    keeps its kinetic energy, also when a ball bounces off a wall into a neighbour a few

@@ -12,7 +12,10 @@
 // this build (x86-64, -O2/-O3 without -ffast-math, without FMA contraction, glibc's libm); another
 // platform or compiler may need its own.
 //
-// A second test checks that a copied world steps exactly as its original, for the same rows.
+// A second test checks that a copied world steps exactly as its original, for the same rows,
+// and a third that the plain paths of every stage (EngineSettings::plainPaths: the textbook
+// algorithms of physics/src/stages/ without the accelerations of physics/src/fast/) give the
+// same hashes, bit for bit.
 
 #include "physics_test_util.h"
 
@@ -173,9 +176,14 @@ private slots:
     void copyStepsIdentically_data();
     void copyStepsIdentically();
     void narrowPhaseCacheChangesNothing();
+    void plainPathsGiveTheGoldenHashes_data();
+    void plainPathsGiveTheGoldenHashes();
+    void plainPathsStepAsTheFastOnes_data();
+    void plainPathsStepAsTheFastOnes();
 
 private:
     void rows(bool withHashes);
+    static void checkGoldenRun(bool plain);
 };
 
 void TestGolden::rows(bool withHashes)
@@ -243,13 +251,14 @@ void TestGolden::goldenRun_data()
 
 // Every row must have had contacts and, in the mixed scene, kept its joints: a hash of a
 // scene where nothing touched would pin less than it claims.
-void TestGolden::goldenRun()
+void TestGolden::checkGoldenRun(bool plain)
 {
     QFETCH(SceneFn, scene);
     QFETCH(SolverKind, solver);
     QFETCH(IntegratorKind, integrator);
     QFETCH(quint64, hash);
     World world = scene(solver, integrator);
+    world.engineSettings().plainPaths = plain;
     int contactSteps = 0;
     for (int i = 0; i < kSteps; ++i) {
         world.step();
@@ -261,6 +270,11 @@ void TestGolden::goldenRun()
     QVERIFY2(actual == hash, qPrintable(QStringLiteral("state hash 0x%1, stored 0x%2")
                                             .arg(actual, 16, 16, QLatin1Char('0'))
                                             .arg(hash, 16, 16, QLatin1Char('0'))));
+}
+
+void TestGolden::goldenRun()
+{
+    checkGoldenRun(false);
 }
 
 void TestGolden::copyStepsIdentically_data()
@@ -323,6 +337,79 @@ void TestGolden::narrowPhaseCacheChangesNothing()
     // The scene does what the test needs: pairs apart for most of the run, contacts too.
     QVERIFY2(stepsWithPairsApart > kSteps / 2, qPrintable(QString::number(stepsWithPairsApart)));
     QVERIFY2(stepsWithContacts > 0, "no contact in the run");
+}
+
+void TestGolden::plainPathsGiveTheGoldenHashes_data()
+{
+    rows(true);
+}
+
+// The same stored hashes with every stage on its plain path: the accelerations change no bit.
+void TestGolden::plainPathsGiveTheGoldenHashes()
+{
+    checkGoldenRun(true);
+}
+
+namespace {
+
+World softContactScene()
+{
+    return contactScene(SolverKind::SoftStep, IntegratorKind::SymplecticEuler);
+}
+
+World softMixedScene()
+{
+    // Springs and joints: the soft step gives way to the sequential-impulse solver.
+    return mixedScene(SolverKind::SoftStep, IntegratorKind::SymplecticEuler);
+}
+
+World sequentialDiamonds()
+{
+    return diamondScene();
+}
+
+World softDiamonds()
+{
+    World world = diamondScene();
+    world.setSolver(SolverKind::SoftStep);
+    return world;
+}
+
+using PlainSceneFn = World (*)();
+
+} // namespace
+
+Q_DECLARE_METATYPE(PlainSceneFn)
+
+void TestGolden::plainPathsStepAsTheFastOnes_data()
+{
+    QTest::addColumn<PlainSceneFn>("scene");
+    QTest::newRow("soft-contact") << PlainSceneFn{softContactScene};
+    QTest::newRow("soft-mixed") << PlainSceneFn{softMixedScene};
+    QTest::newRow("diamonds-seq") << PlainSceneFn{sequentialDiamonds};
+    QTest::newRow("diamonds-soft") << PlainSceneFn{softDiamonds};
+}
+
+// The scenes the golden rows leave out (the soft step, its SIMD kernel and colouring; pairs
+// the SAT finds apart step after step): the plain paths and the fast ones stay bit-identical
+// at every step, and the fast run did use its accelerations.
+void TestGolden::plainPathsStepAsTheFastOnes()
+{
+    QFETCH(PlainSceneFn, scene);
+    World fast = scene();
+    World plain = scene();
+    plain.engineSettings().plainPaths = true;
+    int contactSteps = 0;
+    for (int i = 0; i < kSteps; ++i) {
+        fast.step();
+        plain.step();
+        QCOMPARE(stateHash(plain), stateHash(fast));
+        QCOMPARE(plain.profile().contacts, fast.profile().contacts);
+        QCOMPARE(plain.profile().reusedFaces, 0);
+        contactSteps += fast.contacts().empty() ? 0 : 1;
+    }
+    QVERIFY(!fast.divergence());
+    QVERIFY2(contactSteps > 0, "no contact in the run");
 }
 
 RIGIDLAB_TEST_GUILESS_MAIN(TestGolden)

@@ -4,6 +4,7 @@
 // is known for (with the exact per-step factors where they exist), free flight, and the
 // period of a large-amplitude pendulum against the elliptic-integral formula.
 
+#include "elliptic.h"
 #include "physics_test_util.h"
 
 #include <rigidlab/physics/integrator.h>
@@ -21,36 +22,6 @@ using namespace rigidlab::physics;
 using rigidlab::test::isClose;
 
 namespace {
-
-/// Complete elliptic integral of the first kind K(k) (modulus k) by the arithmetic-geometric
-/// mean: K(k) = pi / (2 AGM(1, sqrt(1 - k^2))) (Abramowitz & Stegun 17.6).
-double ellipticK(double k)
-{
-    double a = 1.0;
-    double b = std::sqrt(1.0 - k * k);
-    for (int i = 0; i < 64 && std::abs(a - b) > 1e-16 * a; ++i) {
-        const double an = 0.5 * (a + b);
-        b = std::sqrt(a * b);
-        a = an;
-    }
-    return std::numbers::pi / (a + b); // pi / (2 * AGM) with AGM = (a + b) / 2 at convergence
-}
-
-/// K(k) by composite Simpson on the integral over [0, pi/2] of 1/sqrt(1 - k^2 sin^2 phi),
-/// a second, independent way used to check ellipticK (the integrand is smooth for k < 1).
-double ellipticKSimpson(double k, int intervals)
-{
-    const double a = 0.0, b = std::numbers::pi / 2;
-    const double h = (b - a) / intervals;
-    auto f = [k](double phi) {
-        return 1.0 / std::sqrt(1.0 - k * k * std::sin(phi) * std::sin(phi));
-    };
-    double s = f(a) + f(b);
-    for (int i = 1; i < intervals; ++i) {
-        s += (i % 2 ? 4.0 : 2.0) * f(a + i * h);
-    }
-    return s * h / 3.0;
-}
 
 /// x'' = -w^2 x, one body's three coordinates: the direct test system for the integrators.
 class HarmonicSystem : public OdeSystem {
@@ -497,9 +468,9 @@ void TestIntegrators::pendulumPeriodMatchesElliptic()
     rigidlab::test::PendulumSpec spec;
     spec.theta0 = theta0;
     const double k = std::sin(theta0 / 2.0);
-    const double K = ellipticK(k);
-    RL_VERIFY_NEAR(K, ellipticKSimpson(k, 20000), 0.0, 1e-10);
-    RL_VERIFY_NEAR(ellipticK(0.0), std::numbers::pi / 2.0, 0.0, 1e-15);
+    const double K = rigidlab::test::ellipticK(k);
+    RL_VERIFY_NEAR(K, rigidlab::test::ellipticKSimpson(k, 20000), 0.0, 1e-10);
+    RL_VERIFY_NEAR(rigidlab::test::ellipticK(0.0), std::numbers::pi / 2.0, 0.0, 1e-15);
 
     const double leq = rigidlab::test::pendulumEquivalentLength(spec);
     const double exact = 4.0 * std::sqrt(leq / spec.gravity) * K;

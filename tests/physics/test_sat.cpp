@@ -136,6 +136,42 @@ struct Tally {
 
 enum class PairKind { Random, Touching, NearParallel };
 
+/// B placed on a random face of A (placed by xfA): its lowest vertex along the face's normal at
+/// a random point of the face, touching (PairKind::Touching) or turned to lie almost flat on it
+/// and sunk a little (PairKind::NearParallel).
+Transform placedOnFace(const Polygon& a, const Transform& xfA, const Polygon& b, PairKind kind,
+                       std::mt19937_64& rng)
+{
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    auto angle = [&] { return kPi * (2.0 * unit(rng) - 1.0); };
+    // One face of A: world vertices p0 -> p1, outward normal n.
+    const auto wa = rigidlab::test::worldVertices(a, xfA);
+    const std::size_t fa = static_cast<std::size_t>(unit(rng) * wa.size()) % wa.size();
+    const Vec2 p0 = wa[fa], p1 = wa[(fa + 1) % wa.size()];
+    const Vec2 n = Vec2((p1 - p0).y(), -(p1 - p0).x()).normalized();
+    double angleB = angle();
+    double overlap = 0.0;
+    if (kind == PairKind::NearParallel) {
+        // Turn B so that one of its edge normals is -n, then off by a tiny angle.
+        const std::size_t fb =
+            static_cast<std::size_t>(unit(rng) * b.normals.size()) % b.normals.size();
+        const Vec2 nb = b.normals[fb];
+        const double target = std::atan2(-n.y(), -n.x());
+        const double tilt = (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -9.0 + 6.0 * unit(rng));
+        angleB = target - std::atan2(nb.y(), nb.x()) + tilt;
+        overlap = unit(rng) < 0.1 ? 0.0 : 0.2 * unit(rng);
+    }
+    // Place B's lowest vertex along n at a random point of A's face, sunk by overlap.
+    const Transform rotB(Vec2::Zero(), angleB);
+    const auto wb0 = rigidlab::test::worldVertices(b, rotB);
+    std::size_t low = 0;
+    for (std::size_t k = 1; k < wb0.size(); ++k)
+        if (wb0[k].dot(n) < wb0[low].dot(n))
+            low = k;
+    const Vec2 onFace = p0 + unit(rng) * (p1 - p0) - overlap * n;
+    return Transform(onFace - wb0[low], angleB);
+}
+
 } // namespace
 
 Q_DECLARE_METATYPE(PairKind)
@@ -392,9 +428,8 @@ void TestSat::randomPairsAgreeWithMinkowski()
     Tally tally;
     auto polygonOf = [](const std::vector<Vec2>& hull, Polygon& out) {
         auto built = makePolygon(hull);
-        if (!built.ok() || !rigidlab::test::sameLoop(built.value().polygon.vertices, hull)) {
+        if (!built.ok() || !rigidlab::test::sameLoop(built.value().polygon.vertices, hull))
             return false;
-        }
         out = built.value().polygon;
         return true;
     };
@@ -410,35 +445,7 @@ void TestSat::randomPairsAgreeWithMinkowski()
             const double dir = angle();
             xfB = Transform(xfA.p + dist * Vec2(std::cos(dir), std::sin(dir)), angle());
         } else {
-            // One face of A: world vertices p0 -> p1, outward normal n.
-            const auto wa = rigidlab::test::worldVertices(a, xfA);
-            const std::size_t fa = static_cast<std::size_t>(unit(rng) * wa.size()) % wa.size();
-            const Vec2 p0 = wa[fa], p1 = wa[(fa + 1) % wa.size()];
-            const Vec2 n = Vec2((p1 - p0).y(), -(p1 - p0).x()).normalized();
-            double angleB = angle();
-            double overlap = 0.0;
-            if (kind == PairKind::NearParallel) {
-                // Turn B so that one of its edge normals is -n, then off by a tiny angle.
-                const std::size_t fb =
-                    static_cast<std::size_t>(unit(rng) * b.normals.size()) % b.normals.size();
-                const Vec2 nb = b.normals[fb];
-                const double target = std::atan2(-n.y(), -n.x());
-                const double tilt =
-                    (unit(rng) < 0.5 ? -1.0 : 1.0) * std::pow(10.0, -9.0 + 6.0 * unit(rng));
-                angleB = target - std::atan2(nb.y(), nb.x()) + tilt;
-                overlap = unit(rng) < 0.1 ? 0.0 : 0.2 * unit(rng);
-            }
-            // Place B's lowest vertex along n at a random point of A's face, sunk by overlap.
-            const Transform rotB(Vec2::Zero(), angleB);
-            const auto wb0 = rigidlab::test::worldVertices(b, rotB);
-            std::size_t low = 0;
-            for (std::size_t k = 1; k < wb0.size(); ++k) {
-                if (wb0[k].dot(n) < wb0[low].dot(n)) {
-                    low = k;
-                }
-            }
-            const Vec2 onFace = p0 + unit(rng) * (p1 - p0) - overlap * n;
-            xfB = Transform(onFace - wb0[low], angleB);
+            xfB = placedOnFace(a, xfA, b, kind, rng);
         }
         if (!checkPair(a, xfA, b, xfB, tally)) {
             return;

@@ -289,9 +289,9 @@ void TestSoftSolver::headOnCircles()
 }
 
 // 100 elastic, frictionless balls in a closed box of static walls, no gravity, dt = 1 ms,
-// 10 s: the kinetic energy must stay within a band, and every ball inside. Measured: it loses
-// 7.3 % in the 10 s. That misses issue 16's target (1 % in 60 s with 300 balls) and is left
-// for the work on impacts; the band only guards against heating and against a leak.
+// 10 s: the kinetic energy must stay within a band, and every ball inside. The soft step
+// loses more of it than the goal for impacts (1 % in 60 s with 300 balls); the band only
+// guards against heating and against a leak.
 void TestSoftSolver::elasticGas()
 {
     WorldDef def = rigidlab::test::quietWorldDef(IntegratorKind::SymplecticEuler, 1e-3);

@@ -21,11 +21,67 @@ enum class IntegratorKind {
     ImplicitMidpoint, ///< implicit midpoint by Newton's method: order 2, A-stable, symplectic
 };
 
-/// Every integrator, in the order menus list them.
-inline constexpr std::array<IntegratorKind, 6> kAllIntegrators{
-    IntegratorKind::Euler, IntegratorKind::SymplecticEuler, IntegratorKind::Verlet,
-    IntegratorKind::RK4,   IntegratorKind::DormandPrince,   IntegratorKind::ImplicitMidpoint,
+/// How a method behaves on the undamped oscillator x'' = -w^2 x at a fixed step dt.
+enum class Stability {
+    Bounded,  ///< stable for w dt below IntegratorInfo::stabilityBound
+    Unstable, ///< no bound: the energy grows every step (by (1 + (w dt)^2) for explicit Euler)
+    Adaptive, ///< substeps as the error control needs them, whatever dt
+    AStable,  ///< stable for every dt
 };
+
+/// How the energy drag and dampers take over a step is measured (dissipation.cpp): the
+/// power of the dissipative forces, P(q, v, u) with u the mean of the step's velocities.
+enum class DissipationRule {
+    StartOfStep, ///< h P(q0, v0, u): the force the method used, the one at the start
+    Midpoint,    ///< h P(qm, u, u) at the midpoint, where the method evaluates it
+    Trapezoid,   ///< h/2 (P(q0, v0, u) + P(q1, v1, u)): both ends, as the method's average
+};
+
+/// An integrator's facts, held on the integrator: every reader (the scene format, the
+/// stress suite, the menus, the dissipation's measure) takes them from kIntegrators.
+struct IntegratorInfo {
+    IntegratorKind kind;
+    std::string_view name; ///< the scene-file (JSON) key, "symplectic-euler"
+    int order;             ///< order of accuracy in theory
+    Stability stability;
+    /// With Stability::Bounded, the largest w dt that stays stable on the undamped
+    /// oscillator; 0 for the others.
+    double stabilityBound;
+    DissipationRule dissipation;
+};
+
+/// Every integrator, in the order menus list them. A new integrator is a row here, an enum
+/// value above, and its class in makeIntegrator (integrators.cpp).
+inline constexpr std::array<IntegratorInfo, 6> kIntegrators{{
+    {IntegratorKind::Euler, "euler", 1, Stability::Unstable, 0.0, DissipationRule::StartOfStep},
+    {IntegratorKind::SymplecticEuler, "symplectic-euler", 1, Stability::Bounded, 2.0,
+     DissipationRule::StartOfStep},
+    {IntegratorKind::Verlet, "verlet", 2, Stability::Bounded, 2.0, DissipationRule::Trapezoid},
+    // |1 - x^2/2 + x^4/24| <= 1 for x = w dt <= 2 sqrt(2)
+    {IntegratorKind::RK4, "rk4", 4, Stability::Bounded, 2.8284271247461903,
+     DissipationRule::Trapezoid},
+    {IntegratorKind::DormandPrince, "dopri5", 5, Stability::Adaptive, 0.0,
+     DissipationRule::Trapezoid},
+    {IntegratorKind::ImplicitMidpoint, "implicit-midpoint", 2, Stability::AStable, 0.0,
+     DissipationRule::Midpoint},
+}};
+
+/// Every integrator's kind, in the order of kIntegrators.
+inline constexpr std::array<IntegratorKind, kIntegrators.size()> kAllIntegrators = [] {
+    std::array<IntegratorKind, kIntegrators.size()> kinds{};
+    for (size_t i = 0; i < kIntegrators.size(); ++i)
+        kinds[i] = kIntegrators[i].kind;
+    return kinds;
+}();
+
+/// The row of kIntegrators of `kind`.
+constexpr const IntegratorInfo& integratorInfo(IntegratorKind kind)
+{
+    for (const IntegratorInfo& info : kIntegrators)
+        if (info.kind == kind)
+            return info;
+    return kIntegrators[0]; // unreachable: every kind has its row (integrators.cpp checks it)
+}
 
 /// Error control of the adaptive integrator: a substep is accepted when its estimated local
 /// error e_i satisfies sqrt(mean((e_i / (absolute + relative |y_i|))^2)) <= 1 over the state
@@ -66,11 +122,10 @@ public:
 
 std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const Tolerances& tolerances = {});
 
-/// The scene-file name ("euler", "symplectic-euler", "verlet", "rk4", "dopri5",
-/// "implicit-midpoint").
+/// The scene-file name (IntegratorInfo::name).
 std::string_view integratorName(IntegratorKind kind);
 std::optional<IntegratorKind> integratorFromName(std::string_view name);
-/// The order of accuracy in theory (1, 1, 2, 4, 5, 2).
+/// The order of accuracy in theory (IntegratorInfo::order).
 int integratorOrder(IntegratorKind kind);
 
 } // namespace rigidlab::physics

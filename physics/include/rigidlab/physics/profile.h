@@ -5,27 +5,33 @@
 namespace rigidlab::physics {
 
 /// The stages of a step, in the order World::step() runs them: the one description of that
-/// order (world.h and the stages' files refer to it). Before the stages, the step's plan
-/// (step_plan.cpp) leaves out what the scene does not need; after them, a non-finite state or
-/// runaway energy stops the world (divergence.cpp).
+/// order (world.h and the stages' files refer to it). Each stage is a free function of the
+/// step's context in physics/src/stages/ (stages.h), written as a textbook writes it; where it
+/// has an acceleration, that is in physics/src/fast/ (EngineSettings::plainPaths runs the
+/// plain ones, with the same bits). Before the stages, the step's plan (step_plan.cpp) leaves
+/// out what the scene does not need; after them, a non-finite state or runaway energy stops
+/// the world (divergence.cpp).
 enum class Stage {
     /// Pairs of bodies whose boxes overlap (broad_phase.cpp), and fast bodies' pairs over
-    /// their motion (continuous.cpp).
+    /// their motion (continuous.cpp). Each body's placement: step_plan.cpp, or only the
+    /// bodies that moved in fast/body_placement.cpp.
     BroadPhase,
-    /// The contacts of those pairs: SAT (sat.cpp), manifolds (manifold.cpp), warm start and
-    /// mixed materials (narrow_phase.cpp).
+    /// The contacts of those pairs: SAT (sat.cpp; fast/sat_fast.cpp), manifolds
+    /// (manifold.cpp), warm start and mixed materials (narrow_phase.cpp; the kept faces in
+    /// fast/kept_faces.cpp).
     NarrowPhase,
     /// Touching bodies grouped; a woken body wakes its island (islands.cpp).
     Islands,
     /// Applied forces and the pin joints' exact forces (forces.cpp, joints.cpp), evaluated at
     /// every stage of the integrator, so timed from inside Integration.
     Forces,
-    /// The integrator (integrators*.cpp, integration.cpp), then the joints projected back
-    /// (joints.cpp).
+    /// The integrator (integrators/, integration.cpp; symplectic Euler straight on the
+    /// bodies in fast/integrate_direct.cpp), then the joints projected back (joints.cpp).
     Integration,
     /// Impulses, the joints projected again, position correction (contact_response.cpp,
     /// contact_solver.cpp). The soft step (soft_step.cpp) runs Forces, Integration and
-    /// ContactSolve together in substeps, its contacts in soft_solver.cpp and soft_kernel.cpp.
+    /// ContactSolve together in substeps, its contacts in soft_solver.cpp, coloured in
+    /// fast/soft_colouring.cpp and solved by fast/soft_kernel.cpp.
     ContactSolve,
     /// Resting islands put to sleep (islands.cpp).
     Sleep,

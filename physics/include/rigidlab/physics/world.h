@@ -19,10 +19,14 @@
 
 namespace rigidlab::physics {
 
+// Private (physics/src/stages/step_context.h): the buffers a step reuses, and its context.
+struct StepScratch;
+struct StepContext;
+
 class World {
 public:
     explicit World(const WorldDef& def = {});
-    // All defaulted (in world.cpp, where Scratch is complete). A copy steps on bit for bit
+    // All defaulted (in world.cpp, where StepScratch is complete). A copy steps on bit for bit
     // as the original: it carries the integrator's state (ClonePtr) and starts with empty
     // buffers (FreshOnCopy), which hold no state.
     ~World();
@@ -48,12 +52,9 @@ public:
     void setIntegrator(IntegratorKind kind);
     void setSolver(SolverKind kind) { m_def.solver = kind; }
     void setIterations(int n);
-    // A change of gravity, gravitation, drag, restitution or friction wakes every body.
+    // A change of gravity, restitution or friction wakes every body.
     void setGravity(const Vec2& g);
-    void setGravitation(double G);
-    void setDrag(double drag);
     void setTolerances(const Tolerances& tolerances);
-    void setContinuous(bool on) { m_def.continuous = on; }
     /// Sets the default coefficient of restitution and gives it to every body.
     void setRestitution(double e);
     /// Sets the default friction coefficient and gives it to every body.
@@ -61,13 +62,14 @@ public:
     ContactSettings& contactSettings() { return m_contactSettings; }
     const ContactSettings& contactSettings() const { return m_contactSettings; }
     DivergenceSettings& divergenceSettings() { return m_divergenceSettings; }
+    /// How the engine computes (the plain paths or the fast ones): the same bits either way.
+    EngineSettings& engineSettings() { return m_engineSettings; }
+    const EngineSettings& engineSettings() const { return m_engineSettings; }
     /// The integrator in use (its error estimate, its substeps).
     const Integrator& integrator() const { return *m_integrator; }
 
-    /// Set when a step diverged (divergence.cpp): step() then does nothing until reset.
+    /// Set when a step diverged (divergence.cpp): step() then does nothing more.
     const std::optional<Divergence>& divergence() const { return m_divergence; }
-    /// Forgets a divergence, so that stepping goes on (from a state the caller restored).
-    void clearDivergence() { m_divergence.reset(); }
 
     // State.
     const std::vector<Body>& bodies() const { return m_bodies; }
@@ -128,54 +130,15 @@ public:
     std::unique_ptr<OdeSystem> equations() const;
 
 private:
-    struct Scratch;
-    /// The velocities at the start of the step, to time bounces within it (contact_response.cpp).
-    void rememberStartVelocities();
-    /// Stage::BroadPhase and Stage::NarrowPhase (world.cpp, narrow_phase.cpp).
-    void findContacts();
-    /// Stage::Forces and Stage::Integration (integration.cpp).
-    void integrate();
-    /// Stage::ContactSolve (contact_response.cpp).
-    void solveContacts();
-    /// Stage::Forces, Stage::Integration and Stage::ContactSolve together, in substeps: the
-    /// soft step (soft_step.cpp, soft_solver.cpp).
-    void softStep();
-    /// The soft step's collision phase, before its substeps (soft_step.cpp): the bounces of
-    /// the sequential solver's collision phase (contact_collisions.cpp). Returns the kinetic
-    /// energy they took [J].
-    double softCollisions(double threshold);
-    /// What this step needs, from what the world holds (step_plan.cpp).
-    struct Plan {
-        bool collide = false; ///< some two bodies can collide: broad and narrow phase
-        bool direct = false;  ///< symplectic Euler on the bodies, without the ODE state
-        bool sleep = false;   ///< islands and sleeping
-        bool anyAwake = true; ///< some dynamic body is awake (after wakeIslands())
-        /// The soft step: SolverKind::SoftStep on the direct plan (otherwise the
-        /// sequential-impulse solver stands in for it).
-        bool soft = false;
-        int dynamic = 0; ///< dynamic bodies
-    };
-    Plan planStep() const;
-    /// This step's placement of every body, recomputed only for bodies that moved.
-    void updateTransforms();
-    /// Symplectic Euler straight on the bodies (integration.cpp): the ODE system's arithmetic
-    /// without gathering the state into vectors.
-    void integrateDirect();
-    /// Groups touching bodies into islands; an island with an awake body wakes whole.
-    void wakeIslands();
-    /// Puts islands that have rested long enough to sleep.
-    void sleepIslands();
+    /// The step's context: its numbers, its plan and the world's parts (stages/step_context.h).
+    StepContext context();
     void wakeAll();
-    /// Pairs for bodies that move more than their own size in a step (continuous.cpp), and
-    /// the speculative margin each body's motion asks for [m] (m_sweep).
-    void addSweptPairs(std::vector<std::pair<int, int>>& pairs);
     void rememberStartEnergy();
     void checkDivergence();
-    /// Gathers the moving bodies' state, lets `fn(dynamics, q, v)` change it, scatters it back.
-    template <typename Fn> void withState(Fn&& fn);
 
     WorldDef m_def;
     ContactSettings m_contactSettings;
+    EngineSettings m_engineSettings;
     std::vector<Body> m_bodies;
     std::vector<SpringDef> m_springs;
     std::vector<PinJointDef> m_joints;
@@ -184,7 +147,7 @@ private:
     std::vector<BodyId> m_moving; ///< bodies in the integrated state, in id order
     std::vector<int> m_slot;      ///< each body's index in m_moving, -1 for static bodies
     std::vector<std::pair<int, int>> m_jointPairs; ///< body pairs joined by a pin, sorted
-    FreshOnCopy<Scratch> m_scratch; ///< buffers reused from step to step (world_scratch.h)
+    FreshOnCopy<StepScratch> m_scratch; ///< buffers reused from step to step (step_context.h)
     double m_time = 0;
     long long m_steps = 0;
     long long m_evaluations = 0;
@@ -197,7 +160,6 @@ private:
     std::optional<double> m_energyStart; ///< total energy before the first step [J]
     double m_energyScale = 0;            ///< see DivergenceSettings::energyGrowth [J]
     std::vector<double> m_sweep;         ///< per body: extra contact margin this step [m]
-    Plan m_plan;                         ///< this step's, from planStep()
     StepProfile m_profile;               ///< the last step's
 };
 

@@ -127,6 +127,14 @@ private:
     /// Approaches slower than `impact` do not bounce [m/s], nor, at a point that pushed in the
     /// step before (a resting contact), slower than `resting`.
     void prepare(double impact, double resting);
+    /// Point i of constraint c from the contact's point: lever arms, masses, the target
+    /// normal velocity, whether it closes within the step and may bounce.
+    void preparePoint(Constraint& c, int i, const Contact& ct, double impact, double resting);
+    /// The bouncing points' lever arms at the moment of impact and their bounce velocity.
+    void prepareBounces(Constraint& c, const Contact& ct);
+    /// The collision phase's share of what point `id` of `ct` carried from last step [N s]
+    /// (last step's contacts walked with m_previousCursor, in pair order).
+    double lastBounce(const Contact& ct, std::uint32_t id);
     /// Applies the warm start impulses (warmNormal, warmTangent).
     void warmStart();
     /// Lever arms of point i from the centres at the fraction f of the step, about one point
@@ -160,6 +168,7 @@ private:
 
     std::vector<Contact>* m_contacts = nullptr;
     const std::vector<Contact>* m_previous = nullptr;
+    size_t m_previousCursor = 0; ///< in *m_previous, while prepare() walks the contacts
     std::vector<Body>* m_bodies = nullptr;
     const ContactSettings* m_settings = nullptr;
     double m_dt = 0;

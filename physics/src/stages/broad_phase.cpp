@@ -61,10 +61,8 @@ void BroadPhase::queryTree(const Aabb& box, std::vector<int>& out) const
     m_tree->query(box, [&](int id) { out.push_back(id); });
 }
 
-void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
-                           double margin, double dt,
-                           const std::vector<std::pair<int, int>>& excluded,
-                           std::vector<std::pair<int, int>>& pairs)
+void BroadPhase::updateBoxes(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
+                             double margin, double dt)
 {
     const size_t n = bodies.size();
     m_leaf.resize(n, AabbTree::kNull);
@@ -95,6 +93,15 @@ void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Tr
         m_moved[i] = 1;
         m_movedList.push_back(static_cast<int>(i));
     }
+}
+
+void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
+                           double margin, double dt,
+                           const std::vector<std::pair<int, int>>& excluded,
+                           std::vector<std::pair<int, int>>& pairs)
+{
+    const size_t n = bodies.size();
+    updateBoxes(bodies, xf, margin, dt);
 
     // New neighbours of the bodies that moved. A pair of two moved bodies is taken when the
     // lower id asks.

@@ -8,7 +8,7 @@
 //   - a force or torque is applied to one of its bodies (the user pulling it),
 //   - a moving kinematic body touches it,
 //   - World::wakeBody, setBodyOrigin or setBodyVelocity names one of its bodies, or a
-//     change of gravity, gravitation, drag, restitution or friction wakes everything.
+//     change of gravity, restitution or friction wakes everything.
 // The thresholds are Box2D's (b2_linearSleepTolerance, b2_angularSleepTolerance,
 // b2_timeToSleep).
 //
@@ -18,7 +18,7 @@
 
 #include "rigidlab/physics/world.h"
 
-#include "world_scratch.h"
+#include "stages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,48 +61,23 @@ bool touchesAsMoving(const Body& kinematic)
            (kinematic.velocity != Vec2::Zero() || kinematic.angularVelocity != 0.0);
 }
 
-} // namespace
-
-bool World::sleepEnabled() const
+void wake(Body& b)
 {
-    if (m_def.sleep)
-        return *m_def.sleep;
-    const auto dynamic = std::count_if(m_bodies.begin(), m_bodies.end(),
-                                       [](const Body& b) { return b.isDynamic(); });
-    return dynamic >= kLargeSceneBodies;
-}
-
-void World::setSleep(std::optional<bool> on)
-{
-    m_def.sleep = on;
-    if (!sleepEnabled())
-        wakeAll();
-}
-
-void World::wakeBody(BodyId id)
-{
-    Body& b = mutableBody(id);
     b.awake = true;
     b.sleepTime = 0.0;
 }
 
-void World::wakeAll()
-{
-    for (Body& b : m_bodies) {
-        b.awake = true;
-        b.sleepTime = 0.0;
-    }
-}
+} // namespace
 
-void World::wakeIslands()
+void wakeIslands(StepContext& ctx)
 {
-    StageTimer timer(m_profile, Stage::Islands);
-    Scratch& s = *m_scratch;
-    const size_t n = m_bodies.size();
+    StageTimer timer(ctx.profile, Stage::Islands);
+    StepScratch& s = ctx.scratch;
+    const size_t n = ctx.bodies.size();
     // Nothing awake, nothing pushed, no kinematic body moving: nothing can wake (contacts
     // between sleeping bodies are last step's, unchanged). The whole check is this loop.
     bool anyAwake = false;
-    for (const Body& b : m_bodies) {
+    for (const Body& b : ctx.bodies) {
         if ((b.isDynamic() && (b.awake || b.force != Vec2::Zero() || b.torque != 0.0)) ||
             touchesAsMoving(b)) {
             anyAwake = true;
@@ -111,101 +86,101 @@ void World::wakeIslands()
     }
     s.islandParent.resize(n);
     std::iota(s.islandParent.begin(), s.islandParent.end(), 0);
-    m_plan.anyAwake = anyAwake;
+    ctx.plan.anyAwake = anyAwake;
     if (!anyAwake)
         return;
 
     std::vector<int>& parent = s.islandParent;
-    for (const Contact& c : m_contacts) {
-        const Body& a = m_bodies[static_cast<size_t>(c.a)];
-        const Body& b = m_bodies[static_cast<size_t>(c.b)];
+    for (const Contact& c : ctx.contacts) {
+        const Body& a = ctx.bodies[static_cast<size_t>(c.a)];
+        const Body& b = ctx.bodies[static_cast<size_t>(c.b)];
         if (a.isDynamic() && b.isDynamic())
             unite(parent, c.a, c.b);
         else if (touchesAsMoving(a) && b.isDynamic())
-            wakeBody(c.b);
+            wake(ctx.bodies[static_cast<size_t>(c.b)]);
         else if (touchesAsMoving(b) && a.isDynamic())
-            wakeBody(c.a);
+            wake(ctx.bodies[static_cast<size_t>(c.a)]);
     }
     auto joined = [&](BodyId a, BodyId b) {
-        if (a != kWorld && b != kWorld && m_bodies[static_cast<size_t>(a)].isDynamic() &&
-            m_bodies[static_cast<size_t>(b)].isDynamic())
+        if (a != kWorld && b != kWorld && ctx.bodies[static_cast<size_t>(a)].isDynamic() &&
+            ctx.bodies[static_cast<size_t>(b)].isDynamic())
             unite(parent, a, b);
     };
-    for (const PinJointDef& j : m_joints)
+    for (const PinJointDef& j : ctx.joints)
         joined(j.a, j.b);
-    for (const SpringDef& sp : m_springs)
+    for (const SpringDef& sp : ctx.springs)
         joined(sp.a, sp.b);
 
     // A pushed body wakes; an island with an awake body wakes whole.
     std::vector<double>& islandAwake = s.islandRest; // per root: 1 if awake
     islandAwake.assign(n, 0.0);
     for (size_t i = 0; i < n; ++i) {
-        Body& b = m_bodies[i];
+        Body& b = ctx.bodies[i];
         if (!b.isDynamic())
             continue;
         if (b.force != Vec2::Zero() || b.torque != 0.0)
-            wakeBody(static_cast<BodyId>(i));
+            wake(b);
         if (b.awake)
             islandAwake[static_cast<size_t>(findRoot(parent, static_cast<int>(i)))] = 1.0;
     }
     for (size_t i = 0; i < n; ++i) {
-        Body& b = m_bodies[i];
+        Body& b = ctx.bodies[i];
         if (b.isDynamic() && !b.awake &&
             islandAwake[static_cast<size_t>(findRoot(parent, static_cast<int>(i)))] != 0.0)
-            wakeBody(static_cast<BodyId>(i));
+            wake(b);
     }
 }
 
-void World::sleepIslands()
+void sleepIslands(StepContext& ctx)
 {
-    StageTimer timer(m_profile, Stage::Sleep);
-    Scratch& s = *m_scratch;
-    const size_t n = m_bodies.size();
+    StageTimer timer(ctx.profile, Stage::Sleep);
+    StepScratch& s = ctx.scratch;
+    const size_t n = ctx.bodies.size();
     std::vector<int>& parent = s.islandParent; // from wakeIslands(): the contacts are the same
-    const double h = m_def.dt;
+    const double h = ctx.def.dt;
 
     // Each awake body's time at rest; the least over its island decides.
     std::vector<double>& rest = s.islandRest; // per root: the island's least rest time
     constexpr double kUnseen = std::numeric_limits<double>::infinity();
     rest.assign(n, kUnseen);
     for (size_t i = 0; i < n; ++i) {
-        Body& b = m_bodies[i];
+        Body& b = ctx.bodies[i];
         if (!b.isDynamic()) {
             continue;
         }
         if (!b.awake) {
-            ++m_profile.asleep;
+            ++ctx.profile.asleep;
             continue;
         }
-        ++m_profile.awake;
+        ++ctx.profile.awake;
         const bool still =
             b.velocity.squaredNorm() <= kLinearSleepTolerance * kLinearSleepTolerance &&
             std::abs(b.angularVelocity) <= kAngularSleepTolerance;
         b.sleepTime = still ? b.sleepTime + h : 0.0;
         double& r = rest[static_cast<size_t>(findRoot(parent, static_cast<int>(i)))];
         if (r == kUnseen)
-            ++m_profile.islands; // the first awake body seen of this island
+            ++ctx.profile.islands; // the first awake body seen of this island
         r = std::min(r, b.sleepTime);
     }
     // A moving kinematic body keeps what it touches awake.
-    for (const Contact& c : m_contacts) {
-        const Body& a = m_bodies[static_cast<size_t>(c.a)];
-        const Body& b = m_bodies[static_cast<size_t>(c.b)];
+    for (const Contact& c : ctx.contacts) {
+        const Body& a = ctx.bodies[static_cast<size_t>(c.a)];
+        const Body& b = ctx.bodies[static_cast<size_t>(c.b)];
         if (touchesAsMoving(a) && b.isDynamic())
             rest[static_cast<size_t>(findRoot(parent, c.b))] = 0.0;
         else if (touchesAsMoving(b) && a.isDynamic())
             rest[static_cast<size_t>(findRoot(parent, c.a))] = 0.0;
     }
     for (size_t i = 0; i < n; ++i) {
-        Body& b = m_bodies[i];
+        Body& b = ctx.bodies[i];
         if (!b.isActive() ||
             rest[static_cast<size_t>(findRoot(parent, static_cast<int>(i)))] < kTimeToSleep)
             continue;
         b.awake = false;
         b.velocity = Vec2::Zero();
         b.angularVelocity = 0.0;
-        --m_profile.awake;
-        ++m_profile.asleep;
+        --ctx.profile.awake;
+        ++ctx.profile.asleep;
     }
 }
 

@@ -19,14 +19,20 @@ namespace rigidlab::physics {
 /// A soft constraint's coefficients for one substep (soft_solver.cpp).
 using soft::Softness;
 
+/// The soft contact's coefficients at the substep h [s]: between two moving bodies [0],
+/// against a body that does not move [1] (twice the frequency).
+void softContactCoefficients(const SoftStepSettings& settings, double h, Softness (&out)[2]);
+
 class SoftSolver {
 public:
     /// Takes this step's contacts and bodies, before anything moved. acceleration and
     /// angularAcceleration: each body's applied load over its mass, constant over the step.
+    /// h: the substep [s]; softness: the contact's coefficients at it
+    /// (softContactCoefficients). plain: colour anew and solve one contact per block.
     void begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                const std::vector<Vec2>& acceleration,
-               const std::vector<double>& angularAcceleration, double dt,
-               const SoftStepSettings& settings);
+               const std::vector<double>& angularAcceleration, double h,
+               const Softness (&softness)[2], const SoftStepSettings& settings, bool plain);
 
     // A substep, in this order (Catto's soft step).
     void integrateVelocities();
@@ -47,11 +53,6 @@ public:
     double loadPower() const;
 
     int constraintCount() const { return static_cast<int>(m_slots.size()); }
-    int colourCount() const { return m_colourCount; }
-    /// Contacts that found no colour and are solved one by one.
-    int overflowCount() const { return m_overflow; }
-    /// The kernel in use ("4 lanes, AVX2").
-    const char* kernelName() const { return m_kernel.name; }
 
     /// Colours a deterministic graph colouring may use; more contacts at one body overflow.
     static constexpr int kMaxColours = 64;
@@ -70,7 +71,10 @@ private:
         bool operator==(const ColourKey&) const = default;
     };
     static ColourKey colourKey(const Contact& ct, const std::vector<Body>& bodies);
+    /// Colours the contacts (fast/soft_colouring.cpp), or keeps last step's colouring.
     void buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
+    /// Packs the coloured contacts into blocks of m_width lanes, the overflow last.
+    void layBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
     /// Whether the colouring of the last buildBlocks() holds for these contacts: the same keys
     /// in the same order, the same bodies and lanes (a pile at rest, step after step). Then
     /// the blocks only need their lanes filled again.
@@ -89,6 +93,8 @@ private:
     SoftStepSettings m_settings;
     double m_substep = 0; ///< [s]
     soft::Kernel m_kernel{};
+    int m_width = 1;      ///< lanes filled per block: the kernel's, 1 on the plain path
+    bool m_plain = false; ///< the plain path: no colouring kept from step to step
     soft::PassSettings m_pass;
 
     std::vector<soft::BodyState> m_state;      ///< per body, and a spare one for empty lanes

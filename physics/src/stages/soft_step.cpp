@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::Forces, Stage::Integration and Stage::ContactSolve of the soft step
-// (SolverKind::SoftStep, World::Plan::soft): the forces once, at the start of the step, then
+// (SolverKind::SoftStep, StepPlan::soft): the forces once, at the start of the step, then
 // the collision phase, then substeps of integration and contact solve (soft_solver.cpp).
 //
 //   collisions                    bounces, as the sequential solver's collision phase
@@ -34,7 +34,7 @@
 
 #include "dynamics.h"
 #include "restitution.h"
-#include "world_scratch.h"
+#include "stages.h"
 
 namespace rigidlab::physics {
 
@@ -89,27 +89,27 @@ bool collisionsToSolve(const std::vector<Contact>& contacts, const std::vector<C
     return false;
 }
 
-} // namespace
-
-double World::softCollisions(double threshold)
+/// The soft step's collision phase, before its substeps: the bounces of the sequential
+/// solver's collision phase (contact_collisions.cpp). Returns the kinetic energy they took [J].
+double softCollisions(StepContext& ctx, double threshold)
 {
-    Scratch& s = *m_scratch;
+    StepScratch& s = ctx.scratch;
     s.impactShift.clear();
     s.impactTurn.clear();
-    const double h = m_def.dt;
-    if (m_contacts.empty() ||
-        !collisionsToSolve(m_contacts, s.previous, m_bodies, s.acceleration, s.angularAcceleration,
-                           h, threshold, s.anyRestitution))
+    const double h = ctx.def.dt;
+    if (ctx.contacts.empty() ||
+        !collisionsToSolve(ctx.contacts, s.previous, ctx.bodies, s.acceleration,
+                           s.angularAcceleration, h, threshold, s.anyRestitution))
         return 0.0;
     // Each moving body where it would end the step without contacts (symplectic Euler): where
     // the sequential solver's collision phase finds it.
-    const size_t n = m_bodies.size();
+    const size_t n = ctx.bodies.size();
     s.softVelocity.resize(n);
     s.softAngularVelocity.resize(n);
     s.velocityBefore.resize(n);
     s.angularVelocityBefore.resize(n);
     for (size_t i = 0; i < n; ++i) {
-        Body& b = m_bodies[i];
+        Body& b = ctx.bodies[i];
         if (!b.isActive())
             continue;
         s.softVelocity[i] = b.velocity;
@@ -121,9 +121,9 @@ double World::softCollisions(double threshold)
         b.position += h * b.velocity;
     }
     ContactSolver& solver = s.solver;
-    solver.begin(m_contacts, s.previous, m_bodies, m_contactSettings, h, s.xfPosition,
+    solver.begin(ctx.contacts, s.previous, ctx.bodies, ctx.contactSettings, h, s.xfPosition,
                  s.velocityAtStart, s.angularVelocityAtStart);
-    const bool bounced = solver.solveCollisionPhase(threshold, m_def.iterations);
+    const bool bounced = solver.solveCollisionPhase(threshold, ctx.def.iterations);
     const std::vector<double>& impact = solver.impactFractions();
     // Back to the start of the step with the bounces' velocity changes; the substeps add the
     // forces. A change at the fraction f moves the body by (1 - f) dt times it by the end of
@@ -134,7 +134,7 @@ double World::softCollisions(double threshold)
     }
     double loss = 0.0;
     for (size_t i = 0; i < n; ++i) {
-        Body& b = m_bodies[i];
+        Body& b = ctx.bodies[i];
         if (!b.isActive())
             continue;
         const Vec2 dv = b.velocity - s.velocityBefore[i];
@@ -156,86 +156,97 @@ double World::softCollisions(double threshold)
     return loss;
 }
 
-void World::softStep()
+/// Stage::Forces of the soft step: each body's applied load over its mass and inertia
+/// (appliedAcceleration, dynamics.h: the direct integration's), held over the substeps as
+/// symplectic Euler holds it over the step.
+/// Returns the drag's power at the start of the step [W].
+double softForces(StepContext& ctx)
 {
-    const double h = m_def.dt;
-    Scratch& s = *m_scratch;
-    const size_t n = m_bodies.size();
-
-    // Forces: each body's applied load (appliedLoad, forces.cpp) over its mass and inertia,
-    // held over the substeps as symplectic Euler holds it over the step.
-    StageTimer forces(m_profile, Stage::Forces);
+    StepScratch& s = ctx.scratch;
+    const size_t n = ctx.bodies.size();
+    StageTimer forces(ctx.profile, Stage::Forces);
     s.acceleration.resize(n);
     s.angularAcceleration.resize(n);
     double dragPower = 0.0; // at the start of the step [W]
     s.anyRestitution = false;
     for (size_t i = 0; i < n; ++i) {
-        const Body& b = m_bodies[i];
+        const Body& b = ctx.bodies[i];
         s.anyRestitution = s.anyRestitution || b.restitution > 0.0;
         if (!b.isActive())
             continue;
-        const AppliedLoad load = appliedLoad(m_def, b, b.velocity, b.angularVelocity);
-        s.acceleration[i] = load.force * b.invMass;
-        s.angularAcceleration[i] = load.torque * b.invInertia;
-        if (m_def.drag != 0.0)
-            dragPower += m_def.drag * (b.mass * b.velocity.squaredNorm() +
-                                       b.inertia * b.angularVelocity * b.angularVelocity);
+        const BodyAcceleration a = appliedAcceleration(ctx.def, b);
+        s.acceleration[i] = a.linear;
+        s.angularAcceleration[i] = a.angular;
+        if (ctx.def.drag != 0.0)
+            dragPower += ctx.def.drag * (b.mass * b.velocity.squaredNorm() +
+                                         b.inertia * b.angularVelocity * b.angularVelocity);
     }
-    ++m_evaluations;
-    m_profile.directIntegration = true;
-    forces.stop();
+    ++ctx.evaluations;
+    ctx.profile.directIntegration = true;
+    return dragPower;
+}
+
+} // namespace
+
+void softStep(StepContext& ctx)
+{
+    const double h = ctx.def.dt;
+    StepScratch& s = ctx.scratch;
+    const size_t n = ctx.bodies.size();
+
+    const double dragPower = softForces(ctx); // at the start of the step [W]
 
     SoftSolver& solver = s.softSolver;
-    const SoftStepSettings& settings = m_contactSettings.soft;
+    const SoftStepSettings& settings = ctx.contactSettings.soft;
     double loss = 0.0;
     {
-        StageTimer timer(m_profile, Stage::ContactSolve);
-        const double threshold = restitutionThreshold(m_def, m_contactSettings);
-        loss += softCollisions(threshold);
-        solver.begin(m_contacts, m_bodies, s.acceleration, s.angularAcceleration, h, settings);
+        StageTimer timer(ctx.profile, Stage::ContactSolve);
+        loss += softCollisions(ctx, ctx.restitutionThreshold);
+        solver.begin(ctx.contacts, ctx.bodies, s.acceleration, s.angularAcceleration, ctx.h,
+                     ctx.softness, settings, ctx.plain);
     }
     const bool contacts = solver.constraintCount() > 0;
-    const double sub = h / settings.substeps; // [s]
-    for (int k = 0; k < settings.substeps; ++k) {
+    const double sub = ctx.h; // [s]
+    for (int k = 0; k < ctx.substeps; ++k) {
         {
-            StageTimer timer(m_profile, Stage::Integration);
+            StageTimer timer(ctx.profile, Stage::Integration);
             solver.integrateVelocities();
         }
         if (contacts) {
-            StageTimer timer(m_profile, Stage::ContactSolve);
+            StageTimer timer(ctx.profile, Stage::ContactSolve);
             loss += solver.kineticEnergy() - 0.5 * sub * solver.loadPower();
             solver.warmStart();
             solver.solve(true);
         }
         {
-            StageTimer timer(m_profile, Stage::Integration);
+            StageTimer timer(ctx.profile, Stage::Integration);
             solver.integratePositions();
         }
         if (contacts) {
-            StageTimer timer(m_profile, Stage::ContactSolve);
-            solver.solve(false, k + 1 < settings.substeps);
+            StageTimer timer(ctx.profile, Stage::ContactSolve);
+            solver.solve(false, k + 1 < ctx.substeps);
             loss -= solver.kineticEnergy() - 0.5 * sub * solver.loadPower();
         }
     }
     {
-        StageTimer timer(m_profile, Stage::ContactSolve);
-        solver.end(m_bodies);
+        StageTimer timer(ctx.profile, Stage::ContactSolve);
+        solver.end(ctx.bodies);
         if (!s.impactShift.empty()) {
             // Bounced bodies flew on until their impact (softCollisions()); the contacts
             // report the bounce with the rest of their impulse, as the sequential solver's.
             for (size_t i = 0; i < n; ++i) {
-                m_bodies[i].position += s.impactShift[i];
-                m_bodies[i].angle += s.impactTurn[i];
+                ctx.bodies[i].position += s.impactShift[i];
+                ctx.bodies[i].angle += s.impactTurn[i];
             }
-            for (Contact& ct : m_contacts)
+            for (Contact& ct : ctx.contacts)
                 for (size_t k = 0; k < 2; ++k)
                     ct.normalImpulse[k] += ct.bounceImpulse[k];
         }
     }
-    m_collisionLoss += loss;
-    m_dragLoss += h * dragPower;
-    m_profile.solved = solver.constraintCount();
-    m_profile.positionPasses = 0;
+    ctx.collisionLoss += loss;
+    ctx.dragLoss += h * dragPower;
+    ctx.profile.solved = solver.constraintCount();
+    ctx.profile.positionPasses = 0;
 }
 
 } // namespace rigidlab::physics

@@ -17,8 +17,9 @@
 // its middle rows slid metres apart in 10 s). Bounces are not solved here: the collision phase
 // gives them before the substeps (soft_step.cpp), from each contact's approach at its impact.
 //
-// Speed (soft_kernel.h): the contacts are coloured so that no two of one colour share a
-// moving body, and the kernel solves one colour's contacts side by side in SIMD lanes.
+// Speed (fast/soft_kernel.h, fast/soft_colouring.cpp): the contacts are coloured so that no
+// two of one colour share a moving body, and the kernel solves one colour's contacts side by
+// side in SIMD lanes.
 
 #include "soft_solver.h"
 
@@ -55,23 +56,34 @@ bool haveAvx2()
 }
 } // namespace soft
 
+void softContactCoefficients(const SoftStepSettings& settings, double h, Softness (&out)[2])
+{
+    // The two softnesses a contact can have (fillLane): between moving bodies, and twice the
+    // frequency against a body that does not move.
+    const double hertz = settings.contactFrequency / h;
+    out[0] = softness(hertz, settings.dampingRatio, h);
+    out[1] = softness(2.0 * hertz, settings.dampingRatio, h);
+}
+
 void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                        const std::vector<Vec2>& acceleration,
-                       const std::vector<double>& angularAcceleration, double dt,
-                       const SoftStepSettings& settings)
+                       const std::vector<double>& angularAcceleration, double h,
+                       const Softness (&softness)[2], const SoftStepSettings& settings, bool plain)
 {
     m_contacts = &contacts;
     m_settings = settings;
     m_energyValid = false;
-    m_substep = dt / settings.substeps;
+    m_substep = h;
+    // The plain path solves one contact per block (the second lane of the two-lane kernel
+    // empty), in the colours' order: the order the wide kernels solve them in, so the same
+    // bits. The fast path fills every lane, four where the processor has AVX2.
     static const bool wide = soft::haveAvx2() && soft::kernel4Avx2().solve != nullptr;
-    m_kernel = wide && settings.wideKernel ? soft::kernel4Avx2() : soft::kernel2();
+    m_kernel = wide && settings.wideKernel && !plain ? soft::kernel4Avx2() : soft::kernel2();
+    m_width = plain ? 1 : m_kernel.width;
+    m_plain = plain;
     m_pass.maxPushSpeed = settings.maxPushSpeed;
-    // The two softnesses a contact can have (fillLane): between moving bodies, and twice the
-    // frequency against a body that does not move.
-    const double hertz = m_settings.contactFrequency / m_substep;
-    m_pass.softness[0] = softness(hertz, m_settings.dampingRatio, m_substep);
-    m_pass.softness[1] = softness(2.0 * hertz, m_settings.dampingRatio, m_substep);
+    m_pass.softness[0] = softness[0];
+    m_pass.softness[1] = softness[1];
 
     const size_t n = bodies.size();
     m_state.assign(n + 1, soft::BodyState{});
@@ -103,126 +115,6 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
         }
     }
     buildBlocks(contacts, bodies);
-}
-
-SoftSolver::ColourKey SoftSolver::colourKey(const Contact& ct, const std::vector<Body>& bodies)
-{
-    return {ct.a, ct.b, bodies[static_cast<size_t>(ct.a)].isActive(),
-            bodies[static_cast<size_t>(ct.b)].isActive()};
-}
-
-bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
-                               const std::vector<Body>& bodies) const
-{
-    if (contacts.size() != m_keys.size() || bodies.size() != m_keyBodies ||
-        m_kernel.width != m_keyWidth)
-        return false;
-    for (size_t ci = 0; ci < contacts.size(); ++ci)
-        if (!(colourKey(contacts[ci], bodies) == m_keys[ci]))
-            return false;
-    return true;
-}
-
-void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies)
-{
-    if (sameColouring(contacts, bodies)) {
-        // The same contacts between the same bodies: the same colours, blocks and lanes as
-        // colouring them again would give; only what the lanes hold has changed.
-        for (const Slot& slot : m_slots)
-            fillLane(slot.contact, contacts[static_cast<size_t>(slot.contact)], bodies,
-                     m_blocks[static_cast<size_t>(slot.block)], slot.lane);
-        return;
-    }
-
-    // Greedy colouring in the contacts' order (deterministic): each contact takes the lowest
-    // colour that neither of its moving bodies has yet. A body that does not move (static,
-    // kinematic, asleep) is only read, so any number of contacts of one colour may share it.
-    m_keys.clear();
-    m_keyBodies = bodies.size();
-    m_keyWidth = m_kernel.width;
-    m_colourMask.assign(bodies.size(), 0);
-    m_candidates.clear();
-    m_colourOf.clear();
-    m_colourSize.assign(kMaxColours, 0);
-    m_overflow = 0;
-    for (size_t ci = 0; ci < contacts.size(); ++ci) {
-        const Contact& ct = contacts[ci];
-        const Body& a = bodies[static_cast<size_t>(ct.a)];
-        const Body& b = bodies[static_cast<size_t>(ct.b)];
-        m_keys.push_back(colourKey(ct, bodies));
-        if (!a.isActive() && !b.isActive())
-            continue;
-        std::uint64_t used = 0;
-        if (a.isActive())
-            used |= m_colourMask[static_cast<size_t>(ct.a)];
-        if (b.isActive())
-            used |= m_colourMask[static_cast<size_t>(ct.b)];
-        int colour = -1;
-        if (~used != 0) {
-            colour = std::countr_zero(~used);
-            const std::uint64_t bit = std::uint64_t{1} << colour;
-            if (a.isActive())
-                m_colourMask[static_cast<size_t>(ct.a)] |= bit;
-            if (b.isActive())
-                m_colourMask[static_cast<size_t>(ct.b)] |= bit;
-            ++m_colourSize[static_cast<size_t>(colour)];
-        } else {
-            ++m_overflow;
-        }
-        m_candidates.push_back(static_cast<int>(ci));
-        m_colourOf.push_back(colour);
-    }
-    m_colourCount = 0;
-    for (int c = 0; c < kMaxColours; ++c)
-        if (m_colourSize[static_cast<size_t>(c)] > 0)
-            m_colourCount = c + 1;
-
-    // Blocks: colour by colour, m_kernel.width lanes each; the overflow last, one contact
-    // per block (solved one after the other). Empty lanes point at the spare body (index n)
-    // with zero masses, so they change nothing.
-    const int width = m_kernel.width;
-    int blocks = m_overflow;
-    for (int c = 0; c < m_colourCount; ++c)
-        blocks += (m_colourSize[static_cast<size_t>(c)] + width - 1) / width;
-    m_blocks.assign(static_cast<size_t>(blocks), soft::Block{});
-    const int spare = static_cast<int>(bodies.size());
-    for (soft::Block& k : m_blocks)
-        for (int lane = 0; lane < soft::kBlockWidth; ++lane)
-            k.a[lane] = k.b[lane] = spare;
-    // First block of each colour, then filled in the contacts' order.
-    std::vector<int>& next = m_nextBlock;
-    std::vector<int>& lane = m_nextLane;
-    next.assign(static_cast<size_t>(m_colourCount) + 1, 0);
-    lane.assign(static_cast<size_t>(m_colourCount) + 1, 0);
-    int start = 0;
-    for (int c = 0; c < m_colourCount; ++c) {
-        next[static_cast<size_t>(c)] = start;
-        start += (m_colourSize[static_cast<size_t>(c)] + width - 1) / width;
-    }
-    int overflowBlock = start;
-    m_slots.clear();
-    m_slots.reserve(m_candidates.size());
-    for (size_t k = 0; k < m_candidates.size(); ++k) {
-        const int ci = m_candidates[k];
-        const int colour = m_colourOf[k];
-        Slot slot;
-        slot.contact = ci;
-        if (colour >= 0) {
-            const auto c = static_cast<size_t>(colour);
-            slot.block = next[c];
-            slot.lane = lane[c];
-            if (++lane[c] == width) {
-                lane[c] = 0;
-                ++next[c];
-            }
-        } else {
-            slot.block = overflowBlock++;
-            slot.lane = 0;
-        }
-        fillLane(ci, contacts[static_cast<size_t>(ci)], bodies,
-                 m_blocks[static_cast<size_t>(slot.block)], slot.lane);
-        m_slots.push_back(slot);
-    }
 }
 
 void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector<Body>& bodies,

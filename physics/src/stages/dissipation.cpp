@@ -92,16 +92,15 @@ Dissipation stepDissipation(const Dynamics& dynamics, IntegratorKind kind, doubl
     u = 0.5 * (v0 + v1);
     Dissipation p;
     double weight = h;
-    switch (kind) {
-    case IntegratorKind::Euler:
-    case IntegratorKind::SymplecticEuler:
+    switch (integratorInfo(kind).dissipation) {
+    case DissipationRule::StartOfStep:
         p = dynamics.dissipation(q0, v0, u);
         break;
-    case IntegratorKind::ImplicitMidpoint:
+    case DissipationRule::Midpoint:
         qm = 0.5 * (q0 + q1);
         p = dynamics.dissipation(qm, u, u);
         break;
-    default: {
+    case DissipationRule::Trapezoid: {
         p = dynamics.dissipation(q0, v0, u);
         const Dissipation end = dynamics.dissipation(q1, v1, u);
         p.drag += end.drag;

@@ -126,19 +126,15 @@ private:
     VectorXd m_q, m_v2, m_v3, m_v4;
 };
 
-struct NamedIntegrator {
-    IntegratorKind kind;
-    std::string_view name;
-    int order;
-};
-constexpr std::array<NamedIntegrator, 6> kIntegrators{{
-    {IntegratorKind::Euler, "euler", 1},
-    {IntegratorKind::SymplecticEuler, "symplectic-euler", 1},
-    {IntegratorKind::Verlet, "verlet", 2},
-    {IntegratorKind::RK4, "rk4", 4},
-    {IntegratorKind::DormandPrince, "dopri5", 5},
-    {IntegratorKind::ImplicitMidpoint, "implicit-midpoint", 2},
-}};
+// Every kind has its row in kIntegrators, at its own index.
+constexpr bool everyKindHasItsRow()
+{
+    for (size_t i = 0; i < kIntegrators.size(); ++i)
+        if (static_cast<size_t>(kIntegrators[i].kind) != i)
+            return false;
+    return true;
+}
+static_assert(everyKindHasItsRow());
 
 } // namespace
 
@@ -163,10 +159,7 @@ std::unique_ptr<Integrator> makeIntegrator(IntegratorKind kind, const Tolerances
 
 std::string_view integratorName(IntegratorKind kind)
 {
-    for (const auto& i : kIntegrators)
-        if (i.kind == kind)
-            return i.name;
-    return "?";
+    return integratorInfo(kind).name;
 }
 
 std::optional<IntegratorKind> integratorFromName(std::string_view name)
@@ -179,10 +172,7 @@ std::optional<IntegratorKind> integratorFromName(std::string_view name)
 
 int integratorOrder(IntegratorKind kind)
 {
-    for (const auto& i : kIntegrators)
-        if (i.kind == kind)
-            return i.order;
-    return 0;
+    return integratorInfo(kind).order;
 }
 
 } // namespace rigidlab::physics

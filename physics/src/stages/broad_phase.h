@@ -61,6 +61,10 @@ public:
 
 private:
     void queryTree(const Aabb& box, std::vector<int>& out) const;
+    /// Each body's box grown by margin; a body that left its fat box goes back into the tree
+    /// with a new one, fattened by its motion over dt, and is listed as moved.
+    void updateBoxes(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
+                     double margin, double dt);
 
     std::unique_ptr<AabbTree> m_tree;
     std::vector<int> m_leaf; ///< per body: its leaf in the tree, -1 if none

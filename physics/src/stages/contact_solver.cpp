@@ -117,26 +117,29 @@ const Rotation& ContactSolver::rotation(int body)
     return m_rotation[i];
 }
 
+double ContactSolver::lastBounce(const Contact& ct, std::uint32_t id)
+{
+    const std::vector<Contact>& before = *m_previous;
+    size_t& next = m_previousCursor;
+    while (next < before.size() &&
+           std::pair(before[next].a, before[next].b) < std::pair(ct.a, ct.b))
+        ++next;
+    if (next == before.size() || before[next].a != ct.a || before[next].b != ct.b)
+        return 0.0;
+    const Contact& last = before[next];
+    for (int k = 0; k < last.manifold.pointCount; ++k)
+        if (last.manifold.points[static_cast<size_t>(k)].id == id)
+            return last.bounceImpulse[static_cast<size_t>(k)];
+    return 0.0;
+}
+
 void ContactSolver::prepare(double impact, double resting)
 {
     std::vector<Contact>& contacts = *m_contacts;
     const std::vector<Body>& bodies = *m_bodies;
     m_constraints.reserve(contacts.size());
     // Last step's contacts, walked with one cursor: both lists are sorted by pair.
-    size_t previous = 0;
-    const std::vector<Contact>& before = *m_previous;
-    const auto lastBounce = [&before](size_t& next, const Contact& ct, std::uint32_t id) {
-        while (next < before.size() &&
-               std::pair(before[next].a, before[next].b) < std::pair(ct.a, ct.b))
-            ++next;
-        if (next == before.size() || before[next].a != ct.a || before[next].b != ct.b)
-            return 0.0;
-        const Contact& last = before[next];
-        for (int k = 0; k < last.manifold.pointCount; ++k)
-            if (last.manifold.points[static_cast<size_t>(k)].id == id)
-                return last.bounceImpulse[static_cast<size_t>(k)];
-        return 0.0;
-    };
+    m_previousCursor = 0;
     for (size_t ci = 0; ci < contacts.size(); ++ci) {
         const Contact& ct = contacts[ci];
         const Body& a = bodies[static_cast<size_t>(ct.a)];
@@ -159,89 +162,99 @@ void ContactSolver::prepare(double impact, double resting)
         // integration, a fast pair's normal would turn within the step, and a contact that was
         // barely separating could look as if it separated fast: pushing on it hands out
         // energy (an elastic gas heated up).
-        const std::vector<Vec2>& x0 = *m_startPosition;
         c.normal = ct.manifold.normal;
         c.tangent = Vec2(c.normal.y(), -c.normal.x());
         c.restitution = ct.restitution;
-        const Vec2 centreA = x0[static_cast<size_t>(ct.a)], centreB = x0[static_cast<size_t>(ct.b)];
-        const size_t ia = static_cast<size_t>(ct.a), ib = static_cast<size_t>(ct.b);
-        for (int i = 0; i < c.count; ++i) {
-            const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
-            Point& p = c.p[i];
-            p.normalImpulse = ct.normalImpulse[static_cast<size_t>(i)];
-            p.tangentImpulse = ct.tangentImpulse[static_cast<size_t>(i)];
-            p.bounceImpulse = 0.0;
-            p.point = cp.point;
-            p.timed = false;
-            p.rA = cp.point - centreA;
-            p.rB = cp.point - centreB;
-            setMasses(c, i);
-
-            // Target normal velocity, from the velocity before any impulse of this step.
-            const double vn = normalVelocity(c, i, m_velocity[ia], m_velocity[ib]);
-            const double sep = cp.separation;
-            const double speculative = sep > 0 ? -sep / m_dt : 0.0;
-            p.separation = sep;
-            p.closes = closesWithinStep(sep, vn, m_dt, m_softPhase);
-            p.bias = speculative;
-            p.speculative = speculative;
-            p.vnPrepared = vn;
-            p.bounces = false;
-            p.impact = 0.0;
-            p.forcing = 0.0;
-            // A point that pushed in the step before is resting (its impulse was carried over):
-            // it keeps the larger threshold, so that a stack does not hop on the solver's
-            // leftovers; a new contact bounces from the small one. What it carried from a
-            // bounce (the collision phase's part, Contact::bounceImpulse) is neither warm
-            // started nor a reason to stop bouncing: only the rest, and friction in proportion.
-            if (p.normalImpulse > 0) {
-                if (vn > std::max(impact, resting)) {
-                    // Separating faster than a resting contact may bounce: not resting.
-                    p.normalImpulse = p.tangentImpulse = 0.0;
-                } else if (const double bounced = lastBounce(previous, ct, cp.id); bounced > 0) {
-                    const double rest = std::max(p.normalImpulse - bounced, 0.0);
-                    p.tangentImpulse *= rest / p.normalImpulse;
-                    p.normalImpulse = rest;
-                }
-            }
-            p.threshold = p.normalImpulse > 0 ? std::max(impact, resting) : impact;
-            if (sep > 0) {
-                const double vn0 = startNormalVelocity(c, i);
-                p.forcing = vn - vn0;
-                p.impact = impactFraction(sep, vn0, m_dt);
-            }
-            p.bounces = p.closes && vn < -p.threshold;
-        }
-        // Bounces within the step: the lever arms at the moment of impact, the earliest of the
-        // manifold's points (the body's velocity change is placed there, impactFractions()).
-        double first = 1.0;
         for (int i = 0; i < c.count; ++i)
-            if (c.p[i].bounces && c.p[i].separation > 0)
-                first = std::min(first, c.p[i].impact);
-        for (int i = 0; i < c.count; ++i) {
-            Point& p = c.p[i];
-            if (!p.bounces)
-                continue;
-            p.bounces = false;
-            if (p.separation > 0) {
-                placeAt(c, i, first);
-                p.impact = first;
-                p.vnPrepared = normalVelocity(c, i, m_velocity[ia], m_velocity[ib]);
-                p.forcing = p.vnPrepared - startNormalVelocity(c, i);
-            }
-            const double bounce = bounceVelocity(p.vnPrepared, ct.restitution,
-                                                 p.separation > 0 ? p.impact : 0.0, p.forcing);
-            if (bounce > p.speculative && bounce >= 0) {
-                p.bias = bounce;
-                p.bounces = true;
-            }
-        }
-        for (Point& p : c.p)
-            if (!p.bounces)
-                p.impact = 0.0;
+            preparePoint(c, i, ct, impact, resting);
+        prepareBounces(c, ct);
         if (c.count == 2)
             prepareBlock(c);
     }
+}
+
+void ContactSolver::preparePoint(Constraint& c, int i, const Contact& ct, double impact,
+                                 double resting)
+{
+    const std::vector<Vec2>& x0 = *m_startPosition;
+    const size_t ia = static_cast<size_t>(ct.a), ib = static_cast<size_t>(ct.b);
+    const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
+    Point& p = c.p[i];
+    p.normalImpulse = ct.normalImpulse[static_cast<size_t>(i)];
+    p.tangentImpulse = ct.tangentImpulse[static_cast<size_t>(i)];
+    p.bounceImpulse = 0.0;
+    p.point = cp.point;
+    p.timed = false;
+    p.rA = cp.point - x0[ia];
+    p.rB = cp.point - x0[ib];
+    setMasses(c, i);
+
+    // Target normal velocity, from the velocity before any impulse of this step.
+    const double vn = normalVelocity(c, i, m_velocity[ia], m_velocity[ib]);
+    const double sep = cp.separation;
+    const double speculative = sep > 0 ? -sep / m_dt : 0.0;
+    p.separation = sep;
+    p.closes = closesWithinStep(sep, vn, m_dt, m_softPhase);
+    p.bias = speculative;
+    p.speculative = speculative;
+    p.vnPrepared = vn;
+    p.bounces = false;
+    p.impact = 0.0;
+    p.forcing = 0.0;
+    // A point that pushed in the step before is resting (its impulse was carried over):
+    // it keeps the larger threshold, so that a stack does not hop on the solver's
+    // leftovers; a new contact bounces from the small one. What it carried from a
+    // bounce (the collision phase's part, Contact::bounceImpulse) is neither warm
+    // started nor a reason to stop bouncing: only the rest, and friction in proportion.
+    if (p.normalImpulse > 0) {
+        if (vn > std::max(impact, resting)) {
+            // Separating faster than a resting contact may bounce: not resting.
+            p.normalImpulse = p.tangentImpulse = 0.0;
+        } else if (const double bounced = lastBounce(ct, cp.id); bounced > 0) {
+            const double rest = std::max(p.normalImpulse - bounced, 0.0);
+            p.tangentImpulse *= rest / p.normalImpulse;
+            p.normalImpulse = rest;
+        }
+    }
+    p.threshold = p.normalImpulse > 0 ? std::max(impact, resting) : impact;
+    if (sep > 0) {
+        const double vn0 = startNormalVelocity(c, i);
+        p.forcing = vn - vn0;
+        p.impact = impactFraction(sep, vn0, m_dt);
+    }
+    p.bounces = p.closes && vn < -p.threshold;
+}
+
+void ContactSolver::prepareBounces(Constraint& c, const Contact& ct)
+{
+    const size_t ia = static_cast<size_t>(ct.a), ib = static_cast<size_t>(ct.b);
+    // Bounces within the step: the lever arms at the moment of impact, the earliest of the
+    // manifold's points (the body's velocity change is placed there, impactFractions()).
+    double first = 1.0;
+    for (int i = 0; i < c.count; ++i)
+        if (c.p[i].bounces && c.p[i].separation > 0)
+            first = std::min(first, c.p[i].impact);
+    for (int i = 0; i < c.count; ++i) {
+        Point& p = c.p[i];
+        if (!p.bounces)
+            continue;
+        p.bounces = false;
+        if (p.separation > 0) {
+            placeAt(c, i, first);
+            p.impact = first;
+            p.vnPrepared = normalVelocity(c, i, m_velocity[ia], m_velocity[ib]);
+            p.forcing = p.vnPrepared - startNormalVelocity(c, i);
+        }
+        const double bounce = bounceVelocity(p.vnPrepared, ct.restitution,
+                                             p.separation > 0 ? p.impact : 0.0, p.forcing);
+        if (bounce > p.speculative && bounce >= 0) {
+            p.bias = bounce;
+            p.bounces = true;
+        }
+    }
+    for (Point& p : c.p)
+        if (!p.bounces)
+            p.impact = 0.0;
 }
 
 double ContactSolver::startNormalVelocity(const Constraint& c, int i) const

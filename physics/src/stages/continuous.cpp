@@ -19,7 +19,7 @@
 #include "rigidlab/physics/world.h"
 
 #include "broad_phase.h"
-#include "world_scratch.h"
+#include "stages.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,25 +61,25 @@ double ownSize(const Body& b)
 
 } // namespace
 
-void World::addSweptPairs(std::vector<std::pair<int, int>>& pairs)
+void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
 {
-    m_sweep.clear();
-    if (!m_def.continuous)
+    ctx.sweep.clear();
+    if (!ctx.def.continuous)
         return;
-    const double h = m_def.dt;
+    const double h = ctx.def.dt;
     std::vector<int> fast;
-    for (size_t i = 0; i < m_bodies.size(); ++i) {
-        const Body& b = m_bodies[i];
+    for (size_t i = 0; i < ctx.bodies.size(); ++i) {
+        const Body& b = ctx.bodies[i];
         if (!b.moves() || !b.collide)
             continue;
         const double reach = outerRadius(b);
         const double motion = (b.velocity.norm() + std::abs(b.angularVelocity) * reach) * h +
-                              (b.isDynamic() ? m_def.gravity.norm() * h * h : 0.0);
+                              (b.isDynamic() ? ctx.def.gravity.norm() * h * h : 0.0);
         if (!(motion > ownSize(b)) || !std::isfinite(motion))
             continue;
-        if (m_sweep.empty())
-            m_sweep.assign(m_bodies.size(), 0.0);
-        m_sweep[i] = motion;
+        if (ctx.sweep.empty())
+            ctx.sweep.assign(ctx.bodies.size(), 0.0);
+        ctx.sweep[i] = motion;
         fast.push_back(static_cast<int>(i));
     }
     if (fast.empty())
@@ -87,24 +87,24 @@ void World::addSweptPairs(std::vector<std::pair<int, int>>& pairs)
     // Few bodies are fast: test each one's grown box against the boxes near it (the broad
     // phase's tree holds every slow body's box) and against the other fast bodies' grown boxes.
     const size_t before = pairs.size();
-    const double margin = m_contactSettings.margin;
-    const Scratch& s = *m_scratch;
+    const double margin = ctx.contactSettings.margin;
+    const StepScratch& s = ctx.scratch;
     for (int f : fast) {
-        const Body& a = m_bodies[static_cast<size_t>(f)];
+        const Body& a = ctx.bodies[static_cast<size_t>(f)];
         const Aabb box = computeAabb(a.shape, s.xf[static_cast<size_t>(f)],
-                                     margin + m_sweep[static_cast<size_t>(f)]);
+                                     margin + ctx.sweep[static_cast<size_t>(f)]);
         auto consider = [&](int j) {
-            const Body& b = m_bodies[static_cast<size_t>(j)];
+            const Body& b = ctx.bodies[static_cast<size_t>(j)];
             if (j == f || !b.collide || (!a.isDynamic() && !b.isDynamic()))
                 return;
-            const double sweep = m_sweep[static_cast<size_t>(j)];
+            const double sweep = ctx.sweep[static_cast<size_t>(j)];
             const Aabb other =
                 sweep > 0 ? computeAabb(b.shape, s.xf[static_cast<size_t>(j)], margin + sweep)
                           : s.broadPhase.box(j);
             if (!box.overlaps(other))
                 return;
             const std::pair<int, int> p = std::minmax(f, j);
-            if (std::binary_search(m_jointPairs.begin(), m_jointPairs.end(), p))
+            if (std::binary_search(ctx.jointPairs.begin(), ctx.jointPairs.end(), p))
                 return;
             pairs.push_back(p);
         };

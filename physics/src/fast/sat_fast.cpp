@@ -1,27 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Stage::NarrowPhase (profile.h), its test for polygons: the separating axis theorem (the
-// seed's method). The manifolds it leads to are built in manifold.cpp.
-//
-// SAT: two convex polygons are disjoint exactly when some line separates them, and it is
-// enough to try the normals of their edges (Ericson, Real-Time Collision Detection, 5.2.1).
-// Each axis is projected on both polygons; the first axis with a gap ends the test. When no
-// axis separates, the axis with the least overlap gives the normal and the depth, and the
-// reference face for the manifold (manifold.cpp) is chosen here.
+// The acceleration of the SAT (stages/sat.cpp) for the narrow phase (fast/kept_faces.cpp):
+// the same arithmetic in the same order, so the same manifold bit for bit, for less work.
+//   - Each polygon is placed once per step, with its own projection on each of its edge
+//     normals (placePolygon, WorldPolygons): a pair projects only the other polygon.
+//   - Two boxes (the common case) run with their vertex count known at compile time, the
+//     loops unrolled.
+//   - A hint (last step's separating axis of the pair) is tried first: it settles a pair
+//     still apart with one axis, and cannot change the result (see collidePlacedPolygons).
+//   - The faces chosen come with how far that choice was from changing (FaceChoice), for the
+//     kept faces of the narrow phase.
 
 #include "manifold.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <type_traits>
 
 namespace rigidlab::physics {
 
 namespace {
-
-// The reference face changes from A to B only when B's axis is better by this much [m],
-// so that two nearly parallel faces do not swap roles from one step to the next.
-constexpr double kReferenceHysteresis = 0.0005;
 
 // No next overlap yet [m].
 constexpr double kNone = std::numeric_limits<double>::infinity();
@@ -41,7 +38,8 @@ template <int kCount = 0>
 }
 
 /// Places `p` by `xf` into the arrays (room for its vertex count), with its own projection
-/// interval on each edge normal; returns the vertex count. The one placement both paths use.
+/// interval on each edge normal; returns the vertex count. The vertices and normals are
+/// placePolygon's of stages/sat.cpp, the same arithmetic.
 int placePolygon(const Polygon& p, const Transform& xf, Vec2* v, Vec2* n, double* ownMin,
                  double* ownMax)
 {
@@ -78,10 +76,9 @@ template <int kCount = 0>
     }
 }
 
-/// The engine's path keeps of the verdict what satImpl writes, and the manifold goes straight
-/// to the contact (no SatResult with a manifold of its own to copy from).
+/// What satImpl finds; the manifold goes straight to the contact.
 struct EngineVerdict {
-    int axesTested = 0, separatingAxis = -1, leastAxis = -1;
+    int axesTested = 0;
     bool intersects = false;
     Vec2 normal = Vec2::Zero();
     double depth = 0;
@@ -89,110 +86,24 @@ struct EngineVerdict {
     FaceChoice* choice = nullptr; ///< when given, how far the choice of faces was from changing
 };
 
-/// The SAT proper. Record: keep every axis for the lesson; else the engine's path, the same
-/// arithmetic in the same order without building the axis records (twice as fast).
-/// `hint`: an axis (index in the order tested) to try first, as last step's separating axis
-/// of the pair (the engine's path only). Returns the index of the axis that separated the
-/// polygons by more than margin, or -1.
-///
-/// The hint cannot change the result: the polygons are farther apart than margin when any
-/// axis shows it, and then there is no manifold whichever axis it was; when the hinted axis
-/// does not show it, the test runs as without a hint.
-/// kCount: both polygons' vertex count when known at compile time (4: two boxes, the
-/// narrow phase's common case, its loops unrolled; the same arithmetic in the same order),
-/// else 0. Result: SatResult, or EngineVerdict (the engine's path: the manifold in place).
-template <bool kRecord, int kCount = 0, typename Result>
-int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb,
-            const Transform& xfB, double margin, int hint, Result& r)
+/// Reference face, incident edge, clipping and the choice's margins (FaceChoice), once no
+/// axis separated the polygons by more than margin. leastOwn, nextOwn and leastEdge: per
+/// polygon, its least one-sided overlap, the next one, and that least edge.
+void clipChosenFaces(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb,
+                     const Transform& xfB, double margin, const double (&leastOwn)[2],
+                     const double (&nextOwn)[2], const int (&leastEdge)[2], double least,
+                     EngineVerdict& r)
 {
-    const int countA = kCount > 0 ? kCount : wa.count;
-    const int countB = kCount > 0 ? kCount : wb.count;
-    if constexpr (kRecord)
-        r.axes.reserve(static_cast<size_t>(countA + countB));
-    if (!kRecord && hint >= 0 && hint < countA + countB) {
-        const int owner = hint < countA ? 0 : 1;
-        double minA, maxA, minB, maxB;
-        projectOn<kCount>(wa, wb, owner, owner == 0 ? hint : hint - countA, minA, maxA, minB, maxB);
-        if (std::min(maxA - minB, maxB - minA) < -margin) {
-            r.axesTested = 1;
-            r.intersects = false;
-            return hint;
-        }
-    }
-
-    // Least overlap over all axes (the depth), and over each polygon's own axes (to pick
-    // the reference face with hysteresis).
-    double least = 0.0, leastOwn[2] = {0.0, 0.0};
-    // The next one-sided overlap of each polygon: how far its reference edge is from another.
-    double nextOwn[2] = {kNone, kNone};
-    int leastIndex = -1, leastEdge[2] = {-1, -1};
-    int index = 0;
-    for (int owner = 0; owner < 2; ++owner) {
-        const WorldPolygon& p = owner == 0 ? wa : wb;
-        const int count = owner == 0 ? countA : countB;
-        for (int e = 0; e < count; ++e, ++index) {
-            const Vec2& axis = p.n[static_cast<size_t>(e)];
-            double minA, maxA, minB, maxB;
-            projectOn<kCount>(wa, wb, owner, e, minA, maxA, minB, maxB);
-            const double pushB = maxA - minB; // move B along +axis by this
-            const double pushA = maxB - minA; // or along -axis by this
-            const double overlap = std::min(pushB, pushA);
-            if constexpr (kRecord) {
-                SatAxis ax;
-                ax.owner = owner;
-                ax.edge = e;
-                ax.axis = axis;
-                ax.minA = minA;
-                ax.maxA = maxA;
-                ax.minB = minB;
-                ax.maxB = maxB;
-                ax.overlap = overlap;
-                r.axes.push_back(ax);
-            }
-            if (overlap < -margin) {
-                // The first separating axis ends the test (the seed's early stop).
-                r.axesTested = index + 1;
-                r.separatingAxis = kRecord ? index : -1;
-                r.intersects = false;
-                return index;
-            }
-            if (leastIndex < 0 || overlap < least) {
-                least = overlap;
-                leastIndex = index;
-                r.normal = pushB <= pushA ? axis : Vec2(-axis);
-            }
-            // One-sided overlap along this polygon's outward normal, towards the other one.
-            const double own = owner == 0 ? pushB : pushA;
-            if (leastEdge[owner] < 0 || own < leastOwn[owner]) {
-                if (leastEdge[owner] >= 0)
-                    nextOwn[owner] = leastOwn[owner];
-                leastOwn[owner] = own;
-                leastEdge[owner] = e;
-            } else {
-                nextOwn[owner] = std::min(nextOwn[owner], own);
-            }
-        }
-    }
-    r.axesTested = index;
-    r.intersects = least >= 0.0;
-    r.leastAxis = kRecord ? leastIndex : -1;
-    r.depth = least;
-    if (!r.intersects && margin <= 0.0)
-        return -1;
-
     // Reference face: A's unless B's one-sided overlap is clearly smaller.
     const int owner = leastOwn[1] < leastOwn[0] - kReferenceHysteresis ? 1 : 0;
     const WorldPolygon& ref = owner == 0 ? wa : wb;
     const WorldPolygon& inc = owner == 0 ? wb : wa;
     const Transform& xfRef = owner == 0 ? xfA : xfB;
     const Transform& xfInc = owner == 0 ? xfB : xfA;
-    // The choice's margins (FaceChoice), for the engine's path when asked: every overlap
-    // changes by at most as much as the other polygon's vertices move in this polygon's
-    // frame, so each polygon keeps its least edge while that is less than half of the edge's
-    // lead over the next.
-    FaceChoice* choice = nullptr;
-    if constexpr (std::is_same_v<Result, EngineVerdict>)
-        choice = r.choice;
+    // The choice's margins (FaceChoice), when asked: every overlap changes by at most as much
+    // as the other polygon's vertices move in this polygon's frame, so each polygon keeps its
+    // least edge while that is less than half of the edge's lead over the next.
+    FaceChoice* choice = r.choice;
     double lead = 0.0;
     const Faces faces{owner, leastEdge[owner],
                       incidentEdge(ref, leastEdge[owner], inc, choice ? &lead : nullptr)};
@@ -208,16 +119,80 @@ int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb
                                .norm(),
                    .turnRoom = 0.5 * lead,
                    .kept = kept};
+}
+
+/// The SAT of stages/sat.cpp, the same arithmetic in the same order, on polygons placed once
+/// per step. `hint`: an axis (index in the order tested) to try first. Returns the index of
+/// the axis that separated the polygons by more than margin, or -1.
+///
+/// The hint cannot change the result: the polygons are farther apart than margin when any
+/// axis shows it, and then there is no manifold whichever axis it was; when the hinted axis
+/// does not show it, the test runs as without a hint.
+/// kCount: both polygons' vertex count when known at compile time (4: two boxes, the
+/// narrow phase's common case, its loops unrolled), else 0.
+template <int kCount = 0>
+int satImpl(const WorldPolygon& wa, const Transform& xfA, const WorldPolygon& wb,
+            const Transform& xfB, double margin, int hint, EngineVerdict& r)
+{
+    const int countA = kCount > 0 ? kCount : wa.count;
+    const int countB = kCount > 0 ? kCount : wb.count;
+    if (hint >= 0 && hint < countA + countB) {
+        const int owner = hint < countA ? 0 : 1;
+        double minA, maxA, minB, maxB;
+        projectOn<kCount>(wa, wb, owner, owner == 0 ? hint : hint - countA, minA, maxA, minB, maxB);
+        if (std::min(maxA - minB, maxB - minA) < -margin) {
+            r.axesTested = 1;
+            r.intersects = false;
+            return hint;
+        }
+    }
+    double least = 0.0, leastOwn[2] = {0.0, 0.0};
+    double nextOwn[2] = {kNone, kNone};
+    int leastIndex = -1, leastEdge[2] = {-1, -1};
+    int index = 0;
+    for (int owner = 0; owner < 2; ++owner) {
+        const WorldPolygon& p = owner == 0 ? wa : wb;
+        const int count = owner == 0 ? countA : countB;
+        for (int e = 0; e < count; ++e, ++index) {
+            const Vec2& axis = p.n[static_cast<size_t>(e)];
+            double minA, maxA, minB, maxB;
+            projectOn<kCount>(wa, wb, owner, e, minA, maxA, minB, maxB);
+            const double pushB = maxA - minB; // move B along +axis by this
+            const double pushA = maxB - minA; // or along -axis by this
+            const double overlap = std::min(pushB, pushA);
+            if (overlap < -margin) {
+                r.axesTested = index + 1;
+                r.intersects = false;
+                return index;
+            }
+            if (leastIndex < 0 || overlap < least) {
+                least = overlap;
+                leastIndex = index;
+                r.normal = pushB <= pushA ? axis : Vec2(-axis);
+            }
+            // The next one-sided overlap of each polygon: how far its least edge is from
+            // another (FaceChoice::edgeRoom).
+            const double own = owner == 0 ? pushB : pushA;
+            if (leastEdge[owner] < 0 || own < leastOwn[owner]) {
+                if (leastEdge[owner] >= 0)
+                    nextOwn[owner] = leastOwn[owner];
+                leastOwn[owner] = own;
+                leastEdge[owner] = e;
+            } else {
+                nextOwn[owner] = std::min(nextOwn[owner], own);
+            }
+        }
+    }
+    r.axesTested = index;
+    r.intersects = least >= 0.0;
+    r.depth = least;
+    if (!r.intersects && margin <= 0.0)
+        return -1;
+    clipChosenFaces(wa, xfA, wb, xfB, margin, leastOwn, nextOwn, leastEdge, least, r);
     return -1;
 }
 
 } // namespace
-
-void toWorld(const Polygon& p, const Transform& xf, PlacedPolygon& out)
-{
-    out.count =
-        placePolygon(p, xf, out.v.data(), out.n.data(), out.ownMin.data(), out.ownMax.data());
-}
 
 void WorldPolygons::reset(size_t bodies)
 {
@@ -249,22 +224,8 @@ void collidePlacedPolygons(const WorldPolygon& a, const Transform& xfA, const Wo
 {
     EngineVerdict r{.manifold = manifold, .choice = choice};
     separatingAxis = a.count == 4 && b.count == 4
-                         ? satImpl<false, 4>(a, xfA, b, xfB, margin, separatingAxis, r)
-                         : satImpl<false>(a, xfA, b, xfB, margin, separatingAxis, r);
-}
-
-SatResult satPolygons(const Polygon& a, const Transform& xfA, const Polygon& b,
-                      const Transform& xfB, double margin, bool record)
-{
-    SatResult r;
-    PlacedPolygon pa, pb;
-    toWorld(a, xfA, pa);
-    toWorld(b, xfB, pb);
-    if (record)
-        satImpl<true>(pa.view(), xfA, pb.view(), xfB, margin, -1, r);
-    else
-        satImpl<false>(pa.view(), xfA, pb.view(), xfB, margin, -1, r);
-    return r;
+                         ? satImpl<4>(a, xfA, b, xfB, margin, separatingAxis, r)
+                         : satImpl(a, xfA, b, xfB, margin, separatingAxis, r);
 }
 
 } // namespace rigidlab::physics

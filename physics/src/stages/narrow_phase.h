@@ -44,18 +44,66 @@ struct NarrowPhaseCache {
     std::vector<TouchingPair> touching, previousTouching;
     bool reuseFaces = true; ///< off: every pair gets the whole SAT (to test that it is the same)
     int reused = 0;         ///< pairs clipped from kept faces in the last call
+    /// Forgets what was kept (the plain path keeps nothing).
+    void clear()
+    {
+        separated.clear();
+        previousSeparated.clear();
+        touching.clear();
+        previousTouching.clear();
+        reused = 0;
+    }
 };
+
+/// Last step's records of pairs (contacts, separated pairs), looked up pair by pair in
+/// increasing order: both lists are sorted, so one cursor walks through them once.
+template <typename Record> class PreviousPairs {
+public:
+    explicit PreviousPairs(const std::vector<Record>& records) : m_records(records) {}
+    /// Last step's record of the pair (a, b), or null. Calls come in increasing (a, b).
+    const Record* find(int a, int b)
+    {
+        while (m_next < m_records.size() &&
+               std::pair(m_records[m_next].a, m_records[m_next].b) < std::pair(a, b))
+            ++m_next;
+        if (m_next < m_records.size() && m_records[m_next].a == a && m_records[m_next].b == b)
+            return &m_records[m_next];
+        return nullptr;
+    }
+
+private:
+    const std::vector<Record>& m_records;
+    size_t m_next = 0;
+};
+
+/// Static, or dynamic and asleep: it does not move this step.
+inline bool rests(const Body& body)
+{
+    return body.type == BodyType::Static || (body.isDynamic() && !body.awake);
+}
+
+/// A body's swept margin this step [m] (continuous.cpp); `sweep` is empty when no body is fast.
+inline double sweptMargin(const std::vector<double>& sweep, int body)
+{
+    return sweep.empty() ? 0.0 : sweep[static_cast<size_t>(body)];
+}
 
 /// The contacts of `pairs` (a < b, sorted), in their order: each pair's manifold
 /// (collideShapes, manifold.cpp) for shapes closer than margin plus both bodies' swept margins
 /// (`sweep`, per body [m], empty when no body is fast: continuous.cpp), with the pair's mixed
 /// material and the impulses that `previous` (last step's contacts, sorted) held for the same
 /// features. Two resting bodies (asleep, or asleep on a static one) keep last step's contact.
-/// `xf`: each body's placement now. `cache`: see NarrowPhaseCache.
+/// `xf`: each body's placement now. The plain path (narrow_phase.cpp).
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
                  const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                 NarrowPhaseCache& cache, std::vector<Contact>& contacts);
+                 std::vector<Contact>& contacts);
+/// The same contacts as narrowPhase, bit for bit, keeping work in `cache` from step to step
+/// (fast/kept_faces.cpp; see NarrowPhaseCache).
+void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
+                     const std::vector<std::pair<int, int>>& pairs, double margin,
+                     const std::vector<double>& sweep, const std::vector<Contact>& previous,
+                     NarrowPhaseCache& cache, std::vector<Contact>& contacts);
 
 /// The material of a contact from its two bodies': restitution the larger of the two (a ball
 /// bounces off a rubber floor as the floor makes it), friction the geometric mean (Box2D's
@@ -65,5 +113,8 @@ void mixMaterials(const Body& a, const Body& b, Contact& c);
 /// Warm start: gives each point of `c` the impulses of the point of `previous` (the same pair
 /// last step) that the same features made (ContactPoint::id).
 void carryImpulses(const Contact& previous, Contact& c);
+
+/// A contact with its manifold made: its mixed material and last step's impulses.
+void finishContact(const Body& a, const Body& b, PreviousPairs<Contact>& before, Contact& c);
 
 } // namespace rigidlab::physics

@@ -32,8 +32,13 @@ struct PlacedPolygon {
     WorldPolygon view() const { return {v.data(), n.data(), ownMin.data(), ownMax.data(), count}; }
 };
 
-/// Places `p` by `xf` (sat.cpp).
+/// Places `p` by `xf`: its vertices and edge normals in the world (sat.cpp; ownMin and ownMax
+/// are left for the fast path's placement, fast/sat_fast.cpp).
 void toWorld(const Polygon& p, const Transform& xf, PlacedPolygon& out);
+
+/// The reference face changes from A to B only when B's axis is better by this much [m],
+/// so that two nearly parallel faces do not swap roles from one step to the next.
+inline constexpr double kReferenceHysteresis = 0.0005;
 
 /// The polygons of a step's bodies placed in the world, each computed on first use with the
 /// same arithmetic as toWorld (so that a pair's SAT gives the same bits either way).

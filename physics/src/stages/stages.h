@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Private: the stages of a step (profile.h's Stage), as free functions of the step's context
+// (step_context.h). World::step() calls them in order; each reads the context and writes the
+// world's parts it names. A stage's plain path is in stages/, its acceleration (where it has
+// one) in fast/, chosen by StepContext::plain.
+
+#include "step_context.h"
+
+#include <utility>
+#include <vector>
+
+namespace rigidlab::physics {
+
+/// What this step needs, from what the world holds (step_plan.cpp).
+StepPlan planStep(const WorldDef& def, const std::vector<Body>& bodies,
+                  const std::vector<SpringDef>& springs, const std::vector<PinJointDef>& joints,
+                  const std::vector<std::pair<int, int>>& jointPairs, bool plain);
+
+/// Each body's placement for the step, StepScratch::xf. Plain: every body's anew
+/// (step_plan.cpp); fast: only the bodies that moved (fast/body_placement.cpp).
+void placeBodies(StepContext& ctx);
+void placeMovedBodies(StepContext& ctx);
+
+/// The velocities at the start of the step, to time bounces within it (contact_response.cpp).
+void rememberStartVelocities(StepContext& ctx);
+
+/// Stage::BroadPhase and Stage::NarrowPhase: the contacts where the shapes stand now
+/// (broad_phase.cpp, continuous.cpp, narrow_phase.cpp).
+void findContacts(StepContext& ctx);
+/// Pairs for bodies that move more than their own size in a step, and the speculative margin
+/// each body's motion asks for [m] (StepContext::sweep) (continuous.cpp).
+void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs);
+
+/// Stage::Islands: groups touching bodies; an island with an awake body wakes whole
+/// (islands.cpp).
+void wakeIslands(StepContext& ctx);
+
+/// Stage::Forces and Stage::Integration: the integrator over the ODE state (integration.cpp),
+/// or with StepPlan::direct symplectic Euler straight on the bodies
+/// (fast/integrate_direct.cpp).
+void integrate(StepContext& ctx);
+void integrateDirect(StepContext& ctx);
+
+/// Stage::ContactSolve: impulses on the new velocities, then position correction
+/// (contact_response.cpp, contact_solver.cpp).
+void solveContacts(StepContext& ctx);
+
+/// Stage::Forces, Stage::Integration and Stage::ContactSolve together, in substeps: the soft
+/// step (soft_step.cpp, soft_solver.cpp).
+void softStep(StepContext& ctx);
+
+/// Stage::Sleep: islands that have rested long enough (islands.cpp).
+void sleepIslands(StepContext& ctx);
+
+} // namespace rigidlab::physics

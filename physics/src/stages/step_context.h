@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// Private: what every stage of a step reads and writes, computed once at the start of
+// World::step() (after Box2D v3's b2StepContext): the step and the substep with their
+// inverses, the soft contact's coefficients, the plan of the step, the world's parts, the
+// buffers reused from step to step, and the profile. No stage reads the world's settings on
+// its own. The stages are free functions of this context (stages.h).
+//
+// Nothing in StepScratch is state: a copied world starts with empty buffers (FreshOnCopy)
+// and steps exactly as the original (the golden test checks it).
+
+#include "rigidlab/physics/world.h"
+
+#include "broad_phase.h"
+#include "contact_solver.h"
+#include "dynamics.h"
+#include "narrow_phase.h"
+#include "soft_solver.h"
+
+#include <Eigen/Core>
+
+#include <chrono>
+#include <utility>
+#include <vector>
+
+namespace rigidlab::physics {
+
+/// What a step needs, from what the world holds (step_plan.cpp): the stages a scene does not
+/// need are left out.
+struct StepPlan {
+    bool collide = false; ///< some two bodies can collide: broad and narrow phase
+    bool direct = false;  ///< symplectic Euler on the bodies, without the ODE state
+    bool sleep = false;   ///< islands and sleeping
+    bool anyAwake = true; ///< some dynamic body is awake (after wakeIslands())
+    /// The soft step: SolverKind::SoftStep with symplectic Euler and nothing but contacts
+    /// coupling the bodies (otherwise the sequential-impulse solver stands in for it).
+    bool soft = false;
+    int dynamic = 0; ///< dynamic bodies
+};
+
+/// The world's buffers reused from step to step.
+struct StepScratch {
+    BroadPhase broadPhase;
+    std::vector<std::pair<int, int>> pairs;
+    std::vector<Contact> previous;
+    NarrowPhaseCache narrow; ///< saves the narrow phase work, changes no result (narrow_phase.h)
+    Eigen::VectorXd q, v;
+    Eigen::VectorXd shake; ///< positions before the joint projection (symplectic Euler)
+    /// The state at the start of the step, the mean velocity and the midpoint, for the
+    /// energy that drag and dampers take (dissipation.cpp).
+    Eigen::VectorXd q0, v0, meanVelocity, midpoint;
+    std::vector<Vec2> velocityBefore, velocityAtStart;
+    std::vector<double> angularVelocityBefore, angularVelocityAtStart;
+    ContactSolver solver;
+    SoftSolver softSolver;
+    /// The soft step's collision phase: each body's velocities at the start of the step, and
+    /// how far its bounce moves it back, -f dt dv and -f dt dw (empty: nothing bounced).
+    std::vector<Vec2> softVelocity, impactShift;
+    std::vector<double> softAngularVelocity, impactTurn;
+    /// Some body has restitution this step (else no contact has, and none can bounce).
+    bool anyRestitution = true;
+    /// Each body's applied load over its mass and inertia [m/s^2] and [rad/s^2] (the direct
+    /// integration's and the soft step's).
+    std::vector<Vec2> acceleration;
+    std::vector<double> angularAcceleration;
+    /// Each body's placement at the start of the step, and the pose it was computed for.
+    std::vector<Transform> xf;
+    std::vector<Vec2> xfPosition;
+    std::vector<double> xfAngle;
+    /// Islands (islands.cpp): union-find parents and the bodies of each island.
+    std::vector<int> islandParent;
+    std::vector<int> islandOrder, islandStart;
+    std::vector<double> islandRest;
+};
+
+/// The step's numbers, the world's parts and the buffers, handed to every stage.
+struct StepContext {
+    // Computed once per step.
+    double dt = 0;    ///< the step [s]
+    double invDt = 0; ///< 1 / dt [1/s]
+    int substeps = 1; ///< the soft step's substeps (1 for the other solvers)
+    double h = 0;     ///< the substep dt / substeps [s]
+    double invH = 0;  ///< 1 / h [1/s]
+    /// The soft contact's coefficients at the substep (soft step only): between two moving
+    /// bodies [0], against a body that does not move [1] (twice the frequency).
+    Softness softness[2];
+    /// Below this approach speed a new contact rests instead of bouncing [m/s]
+    /// (restitutionThreshold(), settings.h).
+    double restitutionThreshold = 0;
+    bool plain = false; ///< EngineSettings::plainPaths: the plain paths of every stage
+    StepPlan plan;
+
+    // The world's settings and parts.
+    const WorldDef& def;
+    const ContactSettings& contactSettings;
+    std::vector<Body>& bodies;
+    const std::vector<SpringDef>& springs;
+    const std::vector<PinJointDef>& joints;
+    std::vector<Contact>& contacts;
+    const std::vector<BodyId>& moving;                  ///< bodies in the ODE state, in id order
+    const std::vector<int>& slot;                       ///< each body's index in moving, or -1
+    const std::vector<std::pair<int, int>>& jointPairs; ///< pinned body pairs, sorted
+    std::vector<double>& sweep;                         ///< per body: extra contact margin [m]
+    Integrator& integrator;
+    double time; ///< at the start of the step [s]
+    // What the step adds to the world's totals.
+    long long& evaluations;
+    double& collisionLoss; ///< [J]
+    double& dragLoss;      ///< [J]
+    double& dampingLoss;   ///< [J]
+
+    StepScratch& scratch;
+    StepProfile& profile;
+};
+
+/// Times a stage into the step's profile: the wall time from construction to stop().
+class StageTimer {
+public:
+    using Clock = std::chrono::steady_clock;
+    StageTimer(StepProfile& profile, Stage stage)
+        : m_profile(profile), m_stage(static_cast<int>(stage)), m_start(Clock::now())
+    {
+    }
+    ~StageTimer() { stop(); }
+    StageTimer(const StageTimer&) = delete;
+    StageTimer& operator=(const StageTimer&) = delete;
+    void stop()
+    {
+        if (m_stopped)
+            return;
+        m_stopped = true;
+        m_profile.ran[m_stage] = true;
+        m_profile.ms[m_stage] +=
+            std::chrono::duration<double, std::milli>(Clock::now() - m_start).count();
+    }
+
+private:
+    StepProfile& m_profile;
+    int m_stage;
+    Clock::time_point m_start;
+    bool m_stopped = false;
+};
+
+/// Gathers the moving bodies' state into the ODE vectors, lets `fn(dynamics, q, v)` change
+/// it, scatters it back (a body asleep keeps its state).
+template <typename Fn> inline void withState(StepContext& ctx, Fn&& fn)
+{
+    Eigen::VectorXd& q = ctx.scratch.q;
+    Eigen::VectorXd& v = ctx.scratch.v;
+    const Eigen::Index n = 3 * static_cast<Eigen::Index>(ctx.moving.size());
+    q.resize(n);
+    v.resize(n);
+    for (size_t s = 0; s < ctx.moving.size(); ++s) {
+        const Body& b = ctx.bodies[static_cast<size_t>(ctx.moving[s])];
+        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
+        q.segment<3>(i) << b.position.x(), b.position.y(), b.angle;
+        v.segment<3>(i) << b.velocity.x(), b.velocity.y(), b.angularVelocity;
+    }
+    Dynamics dynamics(ctx.def, ctx.bodies, ctx.slot, ctx.springs, ctx.joints);
+    fn(dynamics, q, v);
+    ctx.evaluations += dynamics.evaluations;
+    for (size_t s = 0; s < ctx.moving.size(); ++s) {
+        Body& b = ctx.bodies[static_cast<size_t>(ctx.moving[s])];
+        if (b.isDynamic() && !b.awake)
+            continue; // asleep: it does not move, whatever the integrator made of it
+        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
+        b.position = Vec2(q[i], q[i + 1]);
+        b.angle = q[i + 2];
+        b.velocity = Vec2(v[i], v[i + 1]);
+        b.angularVelocity = v[i + 2];
+    }
+}
+
+} // namespace rigidlab::physics
