@@ -8,7 +8,9 @@
 
 #include <QStringList>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 namespace rigidlab::cli {
 
@@ -102,10 +104,20 @@ QString number(double v)
     return QString::number(v, 'g', 6);
 }
 
+/// The value and its uncertainties, the 95 % half-width to two significant digits and the
+/// value to the same decimal place (0.71993 ± 0.00021).
 void printValue(const QString& name, const measure::FittedValue& v)
 {
+    const double u = v.halfWidth95;
+    if (!(u > 0) || !std::isfinite(u)) {
+        printOut(QStringLiteral("%1 = %2 ± %3 (95 %), standard uncertainty %4\n")
+                     .arg(name, number(v.value), number(u), number(v.standardError)));
+        return;
+    }
+    const int decimals = std::clamp(1 - static_cast<int>(std::floor(std::log10(u))), 0, 15);
+    const auto fixed = [&](double x) { return QString::number(x, 'f', decimals); };
     printOut(QStringLiteral("%1 = %2 ± %3 (95 %), standard uncertainty %4\n")
-                 .arg(name, number(v.value), number(v.halfWidth95), number(v.standardError)));
+                 .arg(name, fixed(v.value), fixed(u), QString::number(v.standardError, 'g', 2)));
 }
 
 int fitBounces(const QStringList& params, const measure::Measurement& m, const QString& file)

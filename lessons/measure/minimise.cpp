@@ -162,7 +162,21 @@ Minimum minimiseInBounds(const Objective& f, const std::vector<double>& lo,
         std::vector<double> step(n);
         for (std::size_t i = 0; i < n; ++i)
             step[i] = 0.25 * cell[i];
-        m = minimiseNelderMead(f, bestX, step, nearLo, nearHi);
+        // Within the whole bounds: a valley across the grid can lead out of the cells about
+        // the best grid point.
+        m = minimiseNelderMead(f, bestX, step, lo, hi);
+        // Restarted with a fresh simplex while that helps: in a long narrow valley (μ against
+        // the push-off speed) the simplex can shrink across it and stall far from the bottom.
+        for (int restart = 0; restart < 8; ++restart) {
+            const Minimum again = minimiseNelderMead(f, m.x, step, lo, hi);
+            const int total = m.evaluations + again.evaluations;
+            const bool better = again.value < m.value * (1 - 1e-9);
+            if (again.value <= m.value)
+                m = again;
+            m.evaluations = total;
+            if (!better)
+                break;
+        }
     }
     m.evaluations += evaluations;
     if (best < m.value) { // the grid's point was better (a flat or rough residual)

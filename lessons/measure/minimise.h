@@ -30,8 +30,9 @@ Minimum minimiseNelderMead(const Objective& f, std::vector<double> start,
                            const std::vector<double>& hi, double tolerance = 1e-10,
                            int maxEvaluations = 400);
 
-/// A grid of `grid` points per axis over the bounds, then Brent (one parameter) or Nelder–Mead
-/// (more) from the best grid point, within the grid cells around it.
+/// A grid of `grid` points per axis over the bounds, then from the best grid point Brent (one
+/// parameter, within the grid cells around it) or Nelder–Mead (more, within the bounds,
+/// restarted while that helps).
 Minimum minimiseInBounds(const Objective& f, const std::vector<double>& lo,
                          const std::vector<double>& hi, int grid);
 

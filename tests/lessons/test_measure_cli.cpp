@@ -69,6 +69,15 @@ void TestMeasure::cliFitsSamples_data()
         << QStringList{sample("box_slide.json"), sample("box_phyphox_cs.csv"),
                        "--param=friction:box,floor", "--quantity", "x:box"}
         << "friction:box,floor" << 0.33 << 0.02;
+    QTest::newRow("friction-and-speed-plain") << QStringList{sample("box_slide.json"),
+                                                             sample("box_plain.csv"),
+                                                             "--param",
+                                                             "friction:box,floor",
+                                                             "--param",
+                                                             "vx:box",
+                                                             "--quantity",
+                                                             "x:box"}
+                                              << "friction:box,floor" << 0.33 << 0.02;
     QTest::newRow("bounce-times") << QStringList{sample("ball_floor.json"),
                                                  sample("ball_bounces_phyphox.csv"), "--param",
                                                  "restitution:ball", "--bounce-times"}
