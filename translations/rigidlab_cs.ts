@@ -941,6 +941,18 @@
         <source>Run the simulation past the top of bounce number %1 first.</source>
         <translation>Nejdřív nechte simulaci běžet až za vrchol odskoku číslo %1.</translation>
     </message>
+    <message>
+        <source>Right: when it runs, the simulation will measure %1 (you said %2).</source>
+        <translation>Správně: až simulace poběží, naměří %1 (vaše odpověď: %2).</translation>
+    </message>
+    <message>
+        <source>Not quite: when it runs, the simulation will measure %1 (you said %2).</source>
+        <translation>Ne tak docela: až simulace poběží, naměří %1 (vaše odpověď: %2).</translation>
+    </message>
+    <message>
+        <source>When it runs, the simulation will measure %1.</source>
+        <translation>Až simulace poběží, naměří %1.</translation>
+    </message>
 </context>
 <context>
     <name>LessonExport</name>

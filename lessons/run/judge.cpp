@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 #include <QLocale>
+#include <QRegularExpression>
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +16,7 @@ namespace rigidlab::lessons {
 namespace {
 
 // Every message is one whole sentence, its numbers as %1 placeholders, so that a translator
-// can reorder it (issue 14): no sentence is assembled from words.
+// can reorder it: no sentence is assembled from words.
 struct Judge {
     Q_DECLARE_TR_FUNCTIONS(Judge)
 };
@@ -41,7 +42,8 @@ QString formatValue(double value, const Question& q)
             digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 12);
         text = locale.toString(value, 'f', std::abs(value) < 1 ? decimals : 0);
     }
-    return q.unit.isEmpty() ? text : text + u' ' + q.unit;
+    // A no-break space: the unit stays on the number's line.
+    return q.unit.isEmpty() ? text : text + QChar(0x00A0) + q.unit;
 }
 
 QString notYet(const Measure& m)
@@ -71,7 +73,18 @@ Verdict judge(const Question& q, double answer, const Measurements& m, const Sce
     return judgeAttempt(q, answer, m.value(q.measure, scene), std::numeric_limits<int>::max());
 }
 
-Verdict judgeAttempt(const Question& q, double answer, std::optional<double> value, int attempt)
+QString keepUnitsTogether(QString text)
+{
+    // A line may break after a slash between letters ("m/" | "s"); a word joiner after each
+    // slash that follows a number's unit ("3 m/s", "2 rad/s") forbids it. The no-break
+    // space between the number and its unit is the text's own.
+    static const QRegularExpression unitSlash(QStringLiteral("(\\d\\x{00A0}[^\\s/]+)/(?=\\S)"));
+    text.replace(unitSlash, QStringLiteral("\\1/") + QChar(0x2060));
+    return text;
+}
+
+Verdict judgeAttempt(const Question& q, double answer, std::optional<double> value, int attempt,
+                     bool ahead)
 {
     Verdict verdict;
     if (!value) {
@@ -93,17 +106,25 @@ Verdict judgeAttempt(const Question& q, double answer, std::optional<double> val
                 ? Judge::tr("Not quite (you said %1). Try once more.").arg(formatValue(answer, q))
                 : Judge::tr("Not quite (you said %1). Hint: %2")
                       .arg(formatValue(answer, q), q.hint);
+        verdict.message = keepUnitsTogether(verdict.message);
         return verdict;
     }
     verdict.shown = true;
+    // Measured ahead, the window's own run has not shown it yet: said as what it will show.
+    const QString message =
+        ahead
+            ? (verdict.right
+                   ? Judge::tr("Right: when it runs, the simulation will measure %1 (you said %2).")
+                   : Judge::tr("Not quite: when it runs, the simulation will measure %1 (you "
+                               "said %2)."))
+            : (verdict.right ? Judge::tr("Right: the simulation measured %1 (you said %2).")
+                             : Judge::tr("Not quite: the simulation measured %1 (you said %2)."));
     verdict.message =
-        (verdict.right ? Judge::tr("Right: the simulation measured %1 (you said %2).")
-                       : Judge::tr("Not quite: the simulation measured %1 (you said %2)."))
-            .arg(formatValue(*value, q), formatValue(answer, q));
+        keepUnitsTogether(message.arg(formatValue(*value, q), formatValue(answer, q)));
     return verdict;
 }
 
-Verdict showAnswer(const Question& q, std::optional<double> value)
+Verdict showAnswer(const Question& q, std::optional<double> value, bool ahead)
 {
     Verdict verdict;
     if (!value) {
@@ -113,7 +134,10 @@ Verdict showAnswer(const Question& q, std::optional<double> value)
     verdict.measured = true;
     verdict.shown = true;
     verdict.value = *value;
-    verdict.message = Judge::tr("The simulation measured %1.").arg(formatValue(*value, q));
+    verdict.message =
+        keepUnitsTogether((ahead ? Judge::tr("When it runs, the simulation will measure %1.")
+                                 : Judge::tr("The simulation measured %1."))
+                              .arg(formatValue(*value, q)));
     return verdict;
 }
 

@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace rigidlab::lessons {
 
@@ -221,6 +222,29 @@ CollisionEvent Measurements::collisionEvent(const physics::World& world,
     return e;
 }
 
+double Measurements::touchdownY(const physics::World& world, BodyId i) const
+{
+    // The step's contacts were made from the poses before it: the centre then, moved across
+    // the gap along the normal (a pointing to b), is where the surfaces met. Of several points the
+    // one with the least gap meets first: a box lands on its lowest corner.
+    const auto at = static_cast<std::size_t>(i);
+    std::optional<double> touch;
+    for (const physics::Contact& c : world.contacts()) {
+        if (c.a != i && c.b != i)
+            continue;
+        const physics::Manifold& m = c.manifold;
+        for (int k = 0; k < m.pointCount; ++k) {
+            if (!(c.normalImpulse[static_cast<std::size_t>(k)] > 0))
+                continue;
+            const double gap = m.points[static_cast<std::size_t>(k)].separation;
+            const double shift = (c.b == i ? -gap : gap) * m.normal.y();
+            const double y = m_lastPosition[at].y() + shift;
+            touch = touch ? std::max(*touch, y) : y;
+        }
+    }
+    return touch.value_or(world.body(i).position.y());
+}
+
 void Measurements::observe(const physics::World& world)
 {
     const auto& bodies = world.bodies();
@@ -248,9 +272,10 @@ void Measurements::observe(const physics::World& world)
         Peak& peak = m_peaks[i];
         if (m_lastVelocity[i].y() < 0 && vy > kBounceSpeed &&
             m_bounces[i].size() < kMaxBouncesPerBody) {
+            const double touch = touchdownY(world, static_cast<BodyId>(i));
             m_bounces[i].push_back(t);
-            m_bounceY[i].push_back(y);
-            peak = {true, t, y, y};
+            m_bounceY[i].push_back(touch);
+            peak = {true, t, y, touch};
         } else if (peak.armed) {
             if (y > peak.y) {
                 peak.t = t;

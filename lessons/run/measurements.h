@@ -17,9 +17,12 @@
 namespace rigidlab::lessons {
 
 struct ApexEvent {
-    double t = 0;       ///< [s]
-    double y = 0;       ///< height of the centre of mass [m]
-    double bounceY = 0; ///< height of the centre at the bounce just before this apex [m]
+    double t = 0; ///< [s]
+    double y = 0; ///< height of the centre of mass [m]
+    /// Height of the centre where the body touched down at the bounce before this apex: the
+    /// centre before that step, moved along the contact's normal by the gap the contact
+    /// closed, so exact to rounding rather than to a step [m].
+    double bounceY = 0;
 };
 
 struct CollisionEvent {
@@ -84,10 +87,13 @@ private:
     static std::vector<std::pair<physics::BodyId, physics::BodyId>>
     touchingPairs(const physics::World& world);
     CollisionEvent collisionEvent(const physics::World& world, const physics::Contact& c) const;
+    /// The height of body i's centre where it touched what made it bounce this step (see
+    /// ApexEvent::bounceY); its height now when no contact pushed it.
+    double touchdownY(const physics::World& world, physics::BodyId i) const;
 
     std::vector<std::vector<ApexEvent>> m_apexes;
     std::vector<std::vector<double>> m_bounces; ///< bounce times per body [s]
-    std::vector<std::vector<double>> m_bounceY; ///< the centre's height at each bounce [m]
+    std::vector<std::vector<double>> m_bounceY; ///< the centre's touchdown height [m]
     std::vector<Peak> m_peaks;
     std::vector<CollisionEvent> m_collisions;
     std::vector<Timed> m_timed;
@@ -120,10 +126,16 @@ Verdict judge(const Question& q, double answer, const Measurements& m, const Sce
 
 /// The same with the value at hand (nullopt: not measured yet), for the student's try number
 /// `attempt` (1, 2, ...): a wrong first try reads the question's hint, not the value; later
-/// tries, and a right answer, give it.
-Verdict judgeAttempt(const Question& q, double answer, std::optional<double> value, int attempt);
+/// tries, and a right answer, give it. `ahead`: the value was measured by a run without a
+/// window (the window's run is held back), so the message says what the run will measure.
+Verdict judgeAttempt(const Question& q, double answer, std::optional<double> value, int attempt,
+                     bool ahead = false);
 
 /// What the student reads on asking to be shown the answer (nullopt: not measured yet).
-Verdict showAnswer(const Question& q, std::optional<double> value);
+Verdict showAnswer(const Question& q, std::optional<double> value, bool ahead = false);
+
+/// `text` with a word joiner after the slash of every unit that follows a number and a
+/// no-break space ("3 m/s"), so that no line breaks inside the unit.
+QString keepUnitsTogether(QString text);
 
 } // namespace rigidlab::lessons

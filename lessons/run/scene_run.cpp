@@ -15,6 +15,7 @@
 #include <cmath>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace rigidlab::lessons {
@@ -227,6 +228,121 @@ QString formatEnergy(double joules)
     return QString::number(joules, 'g', 6) + QStringLiteral(" J");
 }
 
+/// The number of steps the options ask for, or why they cannot be run (`error`).
+std::optional<long long> stepsToRun(const RunOptions& options, const physics::WorldDef& def,
+                                    QString& error)
+{
+    if (options.time && options.steps) {
+        error = QStringLiteral("give a time or a number of steps, not both");
+        return std::nullopt;
+    }
+    if (!(std::isfinite(def.dt) && def.dt >= kMinDt && def.dt <= kMaxDt)) {
+        error = QStringLiteral("the step must be from 1e-07 to 1 s");
+        return std::nullopt;
+    }
+    if (options.every < 1) {
+        error = QStringLiteral("rows must be written every 1 or more steps");
+        return std::nullopt;
+    }
+    long long steps = 0;
+    if (options.steps) {
+        steps = *options.steps;
+    } else {
+        const double time = options.time.value_or(kDefaultRunTime);
+        if (!(std::isfinite(time) && time >= 0)) {
+            error = QStringLiteral("the time must be a number >= 0");
+            return std::nullopt;
+        }
+        if (time / def.dt > static_cast<double>(kMaxRunSteps)) {
+            error = QStringLiteral("%1 s at a step of %2 s is more than %3 steps")
+                        .arg(QString::number(time), QString::number(def.dt))
+                        .arg(kMaxRunSteps);
+            return std::nullopt;
+        }
+        steps = stepsForTime(time, def.dt);
+    }
+    if (steps < 0 || steps > kMaxRunSteps) {
+        error = QStringLiteral("the number of steps must be from 0 to %1").arg(kMaxRunSteps);
+        return std::nullopt;
+    }
+    if (!options.tracePath.isEmpty() && !options.diagnosticsPath.isEmpty() &&
+        QFileInfo(options.tracePath).absoluteFilePath() ==
+            QFileInfo(options.diagnosticsPath).absoluteFilePath()) {
+        error = QStringLiteral("the trace and the diagnostics name the same file");
+        return std::nullopt;
+    }
+    return steps;
+}
+
+/// Why the run cannot go on after step `step`, or an empty string.
+QString blowUp(const physics::World& world, long long step)
+{
+    // The world stops itself on a non-finite state or runaway energy, with a diagnosis.
+    if (const auto& diverged = world.divergence()) {
+        return QStringLiteral("the simulation blew up at step %1: %2; nothing was "
+                              "written. Try a smaller --dt or another --integrator.")
+            .arg(QString::number(diverged->step), divergenceMessage(*diverged));
+    }
+    // Finite bodies can still give an infinite energy (a speed whose square overflows,
+    // two attracting bodies at one point), so both are checked.
+    const int bad = firstNonFiniteBody(world);
+    if (bad >= 0 || !std::isfinite(world.diagnostics().total)) {
+        const QString what =
+            bad >= 0
+                ? QStringLiteral("body \"%1\"").arg(QString::fromStdString(world.body(bad).name))
+                : QStringLiteral("the total energy");
+        return QStringLiteral("the simulation blew up at step %1 (t = %2 s): %3 is no "
+                              "longer finite; nothing was written. Try a smaller --dt or "
+                              "another --integrator.")
+            .arg(step)
+            .arg(world.time())
+            .arg(what);
+    }
+    return QString();
+}
+
+/// What the run ended with: its time and energies, the losses since `start`.
+void recordEnd(RunReport& report, const physics::World& world, const physics::Diagnostics& start)
+{
+    report.simulatedTime = world.time();
+    report.energyEnd = world.diagnostics().total;
+    report.collisionLoss = world.diagnostics().collisionLoss - start.collisionLoss;
+    report.dissipated = world.diagnostics().dissipated - start.dissipated;
+}
+
+/// Puts both finished outputs in place, or neither (`error` says why).
+bool commitOutputs(CsvFile& trace, CsvFile& diagnostics, const RunOptions& options, QString& error)
+{
+    // Both files are complete in their temporary files before either is put in place, so a
+    // full disk leaves both previous files as they were. Only a rename can still fail after
+    // that; then the previous trace, kept under a second name meanwhile, is put back.
+    if (!trace.finish(error) || !diagnostics.finish(error)) {
+        return false;
+    }
+    const QString previousTrace = options.tracePath + QStringLiteral(".previous");
+    const bool keptTrace = trace.isOpen() && diagnostics.isOpen() &&
+                           QFileInfo::exists(options.tracePath) &&
+                           keepUnderSecondName(options.tracePath, previousTrace);
+    if (!trace.commit(error)) {
+        if (keptTrace) {
+            QFile::remove(previousTrace);
+        }
+        return false;
+    }
+    if (!diagnostics.commit(error)) {
+        // Take the new trace away again, so that a failed run changes nothing.
+        QFile::remove(options.tracePath);
+        if (keptTrace) {
+            QFile::rename(previousTrace, options.tracePath);
+        }
+        return false;
+    }
+    if (keptTrace) {
+        QFile::remove(previousTrace);
+    }
+    return true;
+}
+
 } // namespace
 
 QString RunReport::profileTable() const
@@ -331,49 +447,17 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
     def.dt = options.dt.value_or(def.dt);
     def.integrator = options.integrator.value_or(def.integrator);
     def.solver = options.solver.value_or(def.solver);
-    if (options.time && options.steps) {
-        return fail(RunStatus::BadOptions, QStringLiteral("give a time or a number of steps, "
-                                                          "not both"));
+    QString error;
+    const std::optional<long long> toRun = stepsToRun(options, def, error);
+    if (!toRun) {
+        return fail(RunStatus::BadOptions, error);
     }
-    if (!(std::isfinite(def.dt) && def.dt >= kMinDt && def.dt <= kMaxDt)) {
-        return fail(RunStatus::BadOptions, QStringLiteral("the step must be from 1e-07 to 1 s"));
-    }
-    if (options.every < 1) {
-        return fail(RunStatus::BadOptions, QStringLiteral("rows must be written every 1 or more "
-                                                          "steps"));
-    }
-    long long steps = 0;
-    if (options.steps) {
-        steps = *options.steps;
-    } else {
-        const double time = options.time.value_or(kDefaultRunTime);
-        if (!(std::isfinite(time) && time >= 0)) {
-            return fail(RunStatus::BadOptions, QStringLiteral("the time must be a number >= 0"));
-        }
-        if (time / def.dt > static_cast<double>(kMaxRunSteps)) {
-            return fail(RunStatus::BadOptions,
-                        QStringLiteral("%1 s at a step of %2 s is more than %3 steps")
-                            .arg(QString::number(time), QString::number(def.dt))
-                            .arg(kMaxRunSteps));
-        }
-        steps = stepsForTime(time, def.dt);
-    }
-    if (steps < 0 || steps > kMaxRunSteps) {
-        return fail(RunStatus::BadOptions,
-                    QStringLiteral("the number of steps must be from 0 to %1").arg(kMaxRunSteps));
-    }
-    if (!options.tracePath.isEmpty() && !options.diagnosticsPath.isEmpty() &&
-        QFileInfo(options.tracePath).absoluteFilePath() ==
-            QFileInfo(options.diagnosticsPath).absoluteFilePath()) {
-        return fail(RunStatus::BadOptions,
-                    QStringLiteral("the trace and the diagnostics name the same file"));
-    }
+    const long long steps = *toRun;
     report.dt = def.dt;
     report.integrator = def.integrator;
     report.solver = def.solver;
 
     // Open the outputs first, so that a bad path fails before the run rather than after it.
-    QString error;
     CsvFile trace;
     CsvFile diagnostics;
     if ((!options.tracePath.isEmpty() && !trace.open(options.tracePath, kTraceHeader, error)) ||
@@ -402,27 +486,8 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
                 addProfile(*report.profile, world.profile());
             }
         }
-        // The world stops itself on a non-finite state or runaway energy, with a diagnosis.
-        if (const auto& diverged = world.divergence()) {
-            return fail(RunStatus::NonFinite,
-                        QStringLiteral("the simulation blew up at step %1: %2; nothing was "
-                                       "written. Try a smaller --dt or another --integrator.")
-                            .arg(QString::number(diverged->step), divergenceMessage(*diverged)));
-        }
-        // Finite bodies can still give an infinite energy (a speed whose square overflows,
-        // two attracting bodies at one point), so both are checked.
-        const int bad = firstNonFiniteBody(world);
-        if (bad >= 0 || !std::isfinite(world.diagnostics().total)) {
-            const QString what = bad >= 0 ? QStringLiteral("body \"%1\"")
-                                                .arg(QString::fromStdString(world.body(bad).name))
-                                          : QStringLiteral("the total energy");
-            return fail(RunStatus::NonFinite,
-                        QStringLiteral("the simulation blew up at step %1 (t = %2 s): %3 is no "
-                                       "longer finite; nothing was written. Try a smaller --dt or "
-                                       "another --integrator.")
-                            .arg(step)
-                            .arg(world.time())
-                            .arg(what));
+        if (const QString why = blowUp(world, step); !why.isEmpty()) {
+            return fail(RunStatus::NonFinite, why);
         }
         if (step % options.every == 0 || step == steps) {
             if (trace.isOpen()) {
@@ -439,39 +504,12 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
     }
     report.wallSeconds = static_cast<double>(clock.nsecsElapsed()) * 1e-9;
 
-    // Both files are complete in their temporary files before either is put in place, so a
-    // full disk leaves both previous files as they were. Only a rename can still fail after
-    // that; then the previous trace, kept under a second name meanwhile, is put back.
-    if (!trace.finish(error) || !diagnostics.finish(error)) {
+    if (!commitOutputs(trace, diagnostics, options, error)) {
         return fail(RunStatus::OutputError, error);
-    }
-    const QString previousTrace = options.tracePath + QStringLiteral(".previous");
-    const bool keptTrace = trace.isOpen() && diagnostics.isOpen() &&
-                           QFileInfo::exists(options.tracePath) &&
-                           keepUnderSecondName(options.tracePath, previousTrace);
-    if (!trace.commit(error)) {
-        if (keptTrace) {
-            QFile::remove(previousTrace);
-        }
-        return fail(RunStatus::OutputError, error);
-    }
-    if (!diagnostics.commit(error)) {
-        // Take the new trace away again, so that a failed run changes nothing.
-        QFile::remove(options.tracePath);
-        if (keptTrace) {
-            QFile::rename(previousTrace, options.tracePath);
-        }
-        return fail(RunStatus::OutputError, error);
-    }
-    if (keptTrace) {
-        QFile::remove(previousTrace);
     }
     report.status = RunStatus::Ok;
     report.steps = steps;
-    report.simulatedTime = world.time();
-    report.energyEnd = world.diagnostics().total;
-    report.collisionLoss = world.diagnostics().collisionLoss - start.collisionLoss;
-    report.dissipated = world.diagnostics().dissipated - start.dissipated;
+    recordEnd(report, world, start);
     return report;
 }
 

@@ -108,6 +108,7 @@ private slots:
 
     // test_lesson_physics.cpp
     void judgeApexRightAndWrong();
+    void verdictsOfARunNotYetShownSayWhatItWillMeasure();
     void judgeTimedValue();
     void judgeWaitsInWholeSentences();
     void judgeMessages_data();
@@ -119,6 +120,8 @@ private slots:
     void shippedQuestionsHaveTheirTextbookAnswers_data();
     void shippedQuestionsHaveTheirTextbookAnswers();
     void restitutionBounceRatiosAreESquared();
+    void bounceHeightsAreExactMechanics();
+    void restitutionDriftIsTheContactsNotTheFlight();
     void energyDriftClaims();
     void pendulumEulerGoesOverTheTop();
     void smallerStepShrinksDrift();
@@ -132,4 +135,7 @@ private slots:
     void worldsStopWhereTheTextSays();
     void stiffSpringsEulerTenfoldWhereTheorySays();
     void divergenceMessageWords();
+
+    // test_lesson_physics_texts.cpp
+    void unitsStayWithTheirNumbers();
 };

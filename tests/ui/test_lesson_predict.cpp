@@ -100,7 +100,7 @@ private slots:
         const std::optional<double> b = lessons::measureAhead(step, step.questions[0].measure);
         QVERIFY(b);
         QVERIFY(std::abs(*b - 2.0) < 0.02); // equal masses, e = 1: b takes a's 2 m/s
-        const QString bText = QString::number(*b, 'g', 3) + QStringLiteral(" m/s");
+        const QString bText = QString::number(*b, 'g', 3) + QStringLiteral("\u00a0m/\u2060s");
 
         // A wrong first try: the hint, not the value; everything stays held.
         player.answer(0, QStringLiteral("5"));
@@ -111,9 +111,10 @@ private slots:
         QVERIFY(!controller.isRunning());
         QVERIFY(!play->isEnabled());
 
-        // A wrong second try: the value, and the inspector and the run are released.
+        // A wrong second try: the value, said as what the held run will measure, and the
+        // inspector and the run are released.
         player.answer(0, QStringLiteral("4"));
-        QVERIFY2(player.result(0).contains(QStringLiteral("measured ") + bText),
+        QVERIFY2(player.result(0).contains(QStringLiteral("will measure ") + bText),
                  qPrintable(player.result(0)));
         QVERIFY(!w.dock(QStringLiteral("inspector"))->isHidden());
         QVERIFY(play->isEnabled());
@@ -184,7 +185,10 @@ private slots:
         QCOMPARE(w.openLesson(m_path, true), QString());
         auto& player = w.lessonPlayer();
         player.showMe(0);
-        QVERIFY2(player.result(0).startsWith(QStringLiteral("The simulation measured 2")),
+        // Measured ahead: said as what the run, still at t = 0, will measure.
+        QCOMPARE(w.controller().world().time(), 0.0);
+        QVERIFY2(player.result(0).startsWith(
+                     QStringLiteral("When it runs, the simulation will measure 2")),
                  qPrintable(player.result(0)));
         QVERIFY(!w.dock(QStringLiteral("inspector"))->isHidden());
         QVERIFY(w.controller().isRunning());

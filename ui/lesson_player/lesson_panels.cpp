@@ -76,6 +76,46 @@ QPushButton* addTableAndExport(QVBoxLayout* layout, FittingTable* table, QWidget
 
 } // namespace
 
+/// The collision table's rows in all three forms, one quantity at a time: a wide row, a
+/// title and a row of the narrow table, and one CSV row per component. Held, the "after"
+/// values read "?" (and are left out of the CSV).
+struct CollisionRows {
+    TableText& wide;
+    TableText& narrow;
+    CsvTable& csv;
+    bool afterHeld = false;
+
+    QString after(const QString& text) const
+    {
+        return afterHeld && !text.isEmpty() ? heldText() : text;
+    }
+    QString afterCsv(double v) const { return afterHeld ? QString() : csvNumber(v); }
+    void addTitle(const QString& quantity)
+    {
+        narrow.rows << QStringList{quantity};
+        narrow.titleRows.resize(narrow.rows.size());
+        narrow.titleRows.last() = true;
+    }
+    void addVector(const QString& quantity, const QString& csvX, const QString& csvY,
+                   const physics::Vec2& v0, const physics::Vec2& v1)
+    {
+        wide.rows << QStringList{quantity, vec(v0), after(vec(v1))};
+        addTitle(quantity);
+        narrow.rows << QStringList{vecStacked(v0), after(vecStacked(v1))};
+        csv.rows << QStringList{csvX, csvNumber(v0.x()), afterCsv(v1.x())};
+        csv.rows << QStringList{csvY, csvNumber(v0.y()), afterCsv(v1.y())};
+    }
+    void addScalar(const QString& quantity, const QString& csvName, double v0, double v1,
+                   int digits, bool hasBefore)
+    {
+        const QString before = hasBefore ? num(v0, digits) : QString();
+        wide.rows << QStringList{quantity, before, after(num(v1, digits))};
+        addTitle(quantity);
+        narrow.rows << QStringList{before, after(num(v1, digits))};
+        csv.rows << QStringList{csvName, hasBefore ? csvNumber(v0) : QString(), afterCsv(v1)};
+    }
+};
+
 BouncePanel::BouncePanel(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_table(new FittingTable(this))
 {
@@ -104,23 +144,7 @@ void BouncePanel::refreshNow()
     const QString heldTip = m_heightsHeld ? tr("Answer the lesson's question first") : QString();
     TableText wide, narrow;
     CsvTable csv;
-    wide.headers = QStringList{tr("ball"), tr("e"), tr("drop h₀ [m]")};
-    csv.headers =
-        QStringList{QStringLiteral("ball"), QStringLiteral("e"), QStringLiteral("drop h0 [m]")};
-    wide.headerTips = QStringList{QString(), QString(), heldTip};
-    for (int i = 1; i <= kBouncesShown; ++i) {
-        wide.headers << tr("h%1 [m]").arg(i) << tr("h%1/h%2").arg(i).arg(i - 1);
-        csv.headers << QStringLiteral("h%1 [m]").arg(i)
-                    << QStringLiteral("h%1/h%2").arg(i).arg(i - 1);
-        wide.headerTips << heldTip << heldTip;
-    }
-    // Short headers, the unit on a line of its own: the narrow column of a projector has
-    // room for three short words; the bounce's number says what it is with the tooltip.
-    narrow.headers = QStringList{tr("no.", "a bounce's number"), tr("h\n[m]"), tr("ratio")};
-    narrow.headerTips =
-        QStringList{tr("The bounce: the drop, then the first bounce, the second…"), heldTip,
-                    tr("The height over the one before: compare it with e²") +
-                        (heldTip.isEmpty() ? QString() : QStringLiteral("\n") + heldTip)};
+    setHeaders(wide, narrow, csv, heldTip);
 
     const auto& world = m_controller.world();
     const lessons::Scene& scene = m_controller.scene();
@@ -181,6 +205,28 @@ void BouncePanel::refreshNow()
     m_table->setCsv(csv, tr("bounces"));
 }
 
+void BouncePanel::setHeaders(TableText& wide, TableText& narrow, CsvTable& csv,
+                             const QString& heldTip)
+{
+    wide.headers = QStringList{tr("ball"), tr("e"), tr("drop h₀ [m]")};
+    csv.headers =
+        QStringList{QStringLiteral("ball"), QStringLiteral("e"), QStringLiteral("drop h0 [m]")};
+    wide.headerTips = QStringList{QString(), QString(), heldTip};
+    for (int i = 1; i <= kBouncesShown; ++i) {
+        wide.headers << tr("h%1 [m]").arg(i) << tr("h%1/h%2").arg(i).arg(i - 1);
+        csv.headers << QStringLiteral("h%1 [m]").arg(i)
+                    << QStringLiteral("h%1/h%2").arg(i).arg(i - 1);
+        wide.headerTips << heldTip << heldTip;
+    }
+    // Short headers, the unit on a line of its own: the narrow column of a projector has
+    // room for three short words; the bounce's number says what it is with the tooltip.
+    narrow.headers = QStringList{tr("no.", "a bounce's number"), tr("h\n[m]"), tr("ratio")};
+    narrow.headerTips =
+        QStringList{tr("The bounce: the drop, then the first bounce, the second…"), heldTip,
+                    tr("The height over the one before: compare it with e²") +
+                        (heldTip.isEmpty() ? QString() : QStringLiteral("\n") + heldTip)};
+}
+
 void BouncePanel::setHeightsHeld(bool held)
 {
     if (held == m_heightsHeld)
@@ -234,32 +280,7 @@ void CollisionPanel::refresh()
     const lessons::Scene& scene = m_controller.scene();
     const QString names[2] = {scene.bodyLabel(e.a), scene.bodyLabel(e.b)};
     m_title->setText(tr("Collision of %1 and %2 at t = %3 s").arg(names[0], names[1], num(e.t)));
-    const auto after = [this](const QString& text) {
-        return m_afterHeld && !text.isEmpty() ? heldText() : text;
-    };
-    const auto afterCsv = [this](double v) { return m_afterHeld ? QString() : csvNumber(v); };
-    // One quantity in all three forms: a wide row, a title and a row of the narrow table,
-    // and one CSV row per component.
-    const auto addVector = [&](const QString& quantity, const QString& csvX, const QString& csvY,
-                               const physics::Vec2& v0, const physics::Vec2& v1) {
-        wide.rows << QStringList{quantity, vec(v0), after(vec(v1))};
-        narrow.rows << QStringList{quantity};
-        narrow.titleRows.resize(narrow.rows.size());
-        narrow.titleRows.last() = true;
-        narrow.rows << QStringList{vecStacked(v0), after(vecStacked(v1))};
-        csv.rows << QStringList{csvX, csvNumber(v0.x()), afterCsv(v1.x())};
-        csv.rows << QStringList{csvY, csvNumber(v0.y()), afterCsv(v1.y())};
-    };
-    const auto addScalar = [&](const QString& quantity, const QString& csvName, double v0,
-                               double v1, int digits, bool hasBefore) {
-        const QString before = hasBefore ? num(v0, digits) : QString();
-        wide.rows << QStringList{quantity, before, after(num(v1, digits))};
-        narrow.rows << QStringList{quantity};
-        narrow.titleRows.resize(narrow.rows.size());
-        narrow.titleRows.last() = true;
-        narrow.rows << QStringList{before, after(num(v1, digits))};
-        csv.rows << QStringList{csvName, hasBefore ? csvNumber(v0) : QString(), afterCsv(v1)};
-    };
+    CollisionRows rows{wide, narrow, csv, m_afterHeld};
     physics::Vec2 pBefore = physics::Vec2::Zero(), pAfter = physics::Vec2::Zero();
     double keBefore = 0, keAfter = 0;
     for (int k = 0; k < 2; ++k) {
@@ -268,12 +289,12 @@ void CollisionPanel::refresh()
             continue;
         const QString& name = names[k];
         const auto v0 = e.velocityBefore[k], v1 = e.velocityAfter[k];
-        addVector(tr("%1: velocity [m/s]").arg(name),
-                  QStringLiteral("%1: velocity x [m/s]").arg(name),
-                  QStringLiteral("%1: velocity y [m/s]").arg(name), v0, v1);
-        addScalar(tr("%1: angular velocity ω [rad/s]").arg(name),
-                  QStringLiteral("%1: angular velocity [rad/s]").arg(name), e.angularBefore[k],
-                  e.angularAfter[k], 3, true);
+        rows.addVector(tr("%1: velocity [m/s]").arg(name),
+                       QStringLiteral("%1: velocity x [m/s]").arg(name),
+                       QStringLiteral("%1: velocity y [m/s]").arg(name), v0, v1);
+        rows.addScalar(tr("%1: angular velocity ω [rad/s]").arg(name),
+                       QStringLiteral("%1: angular velocity [rad/s]").arg(name), e.angularBefore[k],
+                       e.angularAfter[k], 3, true);
         pBefore += b.mass * v0;
         pAfter += b.mass * v1;
         keBefore += 0.5 * b.mass * v0.squaredNorm() +
@@ -281,29 +302,32 @@ void CollisionPanel::refresh()
         keAfter += 0.5 * b.mass * v1.squaredNorm() +
                    0.5 * b.inertia * e.angularAfter[k] * e.angularAfter[k];
     }
-    addVector(tr("momentum p [kg m/s]"), QStringLiteral("momentum x [kg m/s]"),
-              QStringLiteral("momentum y [kg m/s]"), pBefore, pAfter);
-    addScalar(tr("kinetic energy [J]"), QStringLiteral("kinetic energy [J]"), keBefore, keAfter, 4,
-              true);
-    for (int k = 0; k < 2; ++k) {
-        const physics::Body& b = *bodies[k];
-        if (!b.isDynamic() || b.inertia <= 0)
-            continue;
-        const QString& name = names[k];
-        if (std::abs(e.predictedFull[k] - e.predictedWithoutRotation[k]) < 1e-12 &&
-            std::abs(e.angularAfter[k]) < 1e-12)
-            continue; // no spin involved
-        addScalar(tr("%1: ω by the full formula").arg(name),
-                  QStringLiteral("%1: angular velocity by the full formula [rad/s]").arg(name), 0,
-                  e.predictedFull[k], 3, false);
-        addScalar(
-            tr("%1: ω without (r×n)²/I terms").arg(name),
-            QStringLiteral("%1: angular velocity without (r x n)^2/I terms [rad/s]").arg(name), 0,
-            e.predictedWithoutRotation[k], 3, false);
-    }
+    rows.addVector(tr("momentum p [kg m/s]"), QStringLiteral("momentum x [kg m/s]"),
+                   QStringLiteral("momentum y [kg m/s]"), pBefore, pAfter);
+    rows.addScalar(tr("kinetic energy [J]"), QStringLiteral("kinetic energy [J]"), keBefore,
+                   keAfter, 4, true);
+    for (int k = 0; k < 2; ++k)
+        addPredictedSpins(rows, e, k, *bodies[k], names[k]);
     narrow.titleRows.resize(narrow.rows.size());
     m_table->setContent(wide, narrow);
     m_table->setCsv(csv, tr("collision"));
+}
+
+void CollisionPanel::addPredictedSpins(CollisionRows& rows, const lessons::CollisionEvent& e, int k,
+                                       const physics::Body& b, const QString& name)
+{
+    if (!b.isDynamic() || b.inertia <= 0)
+        return;
+    if (std::abs(e.predictedFull[k] - e.predictedWithoutRotation[k]) < 1e-12 &&
+        std::abs(e.angularAfter[k]) < 1e-12)
+        return; // no spin involved
+    rows.addScalar(tr("%1: ω by the full formula").arg(name),
+                   QStringLiteral("%1: angular velocity by the full formula [rad/s]").arg(name), 0,
+                   e.predictedFull[k], 3, false);
+    rows.addScalar(
+        tr("%1: ω without (r×n)²/I terms").arg(name),
+        QStringLiteral("%1: angular velocity without (r x n)^2/I terms [rad/s]").arg(name), 0,
+        e.predictedWithoutRotation[k], 3, false);
 }
 
 void CollisionPanel::setAfterHeld(bool held)

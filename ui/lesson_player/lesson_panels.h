@@ -11,7 +11,16 @@
 
 class QLabel;
 
+namespace rigidlab::lessons {
+struct CollisionEvent;
+}
+namespace rigidlab::physics {
+struct Body;
+}
+
 namespace rigidlab::ui {
+
+struct CollisionRows;
 
 class SimulationController;
 
@@ -29,6 +38,9 @@ public slots:
 private:
     /// Fills the table whether or not the panel is shown.
     void refreshNow();
+    /// The tables' column headers; `heldTip` on those held back.
+    static void setHeaders(TableText& wide, TableText& narrow, CsvTable& csv,
+                           const QString& heldTip);
 
     SimulationController& m_controller;
     FittingTable* m_table;
@@ -47,6 +59,11 @@ public slots:
     void refresh();
 
 private:
+    /// Body k's spin after the hit as the impulse formula predicts it, with and without its
+    /// rotational terms, when the hit involves a spin.
+    static void addPredictedSpins(CollisionRows& rows, const lessons::CollisionEvent& e, int k,
+                                  const physics::Body& b, const QString& name);
+
     SimulationController& m_controller;
     QLabel* m_title;
     FittingTable* m_table;

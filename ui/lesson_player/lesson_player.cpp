@@ -36,9 +36,6 @@ namespace rigidlab::ui {
 
 namespace {
 
-/// The largest answer taken, in the question's unit: far beyond any measured value, and small
-/// enough that |answer - measured| stays finite.
-constexpr double kMaxAnswer = 1e15;
 /// The least share of the lesson column's height that the step's text has in sight when a
 /// step opens: the introduction folds away rather than take it.
 constexpr double kTextShare = 0.4;
@@ -94,34 +91,7 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     m_lessonBox->view()->setItemDelegate(new FullTextDelegate(m_lessonBox->view()));
     layout->addWidget(m_lessonBox);
-    QFont big = m_title->font();
-    big.setPointSizeF(big.pointSizeF() * 1.35);
-    big.setBold(true);
-    m_title->setFont(big);
-    m_title->setWordWrap(true);
-    m_about->setWordWrap(true);
-    // Grey through the palette, not a style sheet: a style sheet would keep the text at its
-    // first font when presentation mode enlarges the window's.
-    QPalette grey = m_about->palette();
-    grey.setColor(QPalette::WindowText, QColor(0x55, 0x55, 0x55)); // 7.5:1 on white
-    m_about->setPalette(grey);
-    layout->addWidget(m_title);
-    // The introduction folds away, leaving its room to the step's text and questions.
-    m_aboutToggle->setObjectName(QStringLiteral("lessonIntroToggle"));
-    m_aboutToggle->setText(tr("Introduction"));
-    m_aboutToggle->setToolTip(tr("Show or hide the lesson's introduction"));
-    m_aboutToggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_aboutToggle->setAutoRaise(true);
-    m_aboutToggle->setCheckable(true);
-    m_aboutToggle->setChecked(true);
-    m_aboutToggle->setArrowType(Qt::DownArrow);
-    connect(m_aboutToggle, &QToolButton::toggled, this, [this](bool on) {
-        m_aboutToggle->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
-        m_about->setVisible(on && (!m_lesson || m_step == 0));
-    });
-    connect(m_aboutToggle, &QToolButton::clicked, this, [this] { m_aboutChosen = true; });
-    layout->addWidget(m_aboutToggle);
-    layout->addWidget(m_about);
+    buildIntroduction(layout);
     // On a first start, with no lesson open, the way in: one button to the first lesson.
     m_start->setObjectName(QStringLiteral("startFirstLesson"));
     connect(m_start, &QPushButton::clicked, this, [this] {
@@ -158,6 +128,44 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     layout->addWidget(m_questionBox);
     // The start page (no lesson, so no text) keeps to the top instead of spreading out.
     layout->addStretch(0);
+    buildNavigation(layout);
+    showStep();
+}
+
+void LessonPlayer::buildIntroduction(QVBoxLayout* layout)
+{
+    QFont big = m_title->font();
+    big.setPointSizeF(big.pointSizeF() * 1.35);
+    big.setBold(true);
+    m_title->setFont(big);
+    m_title->setWordWrap(true);
+    m_about->setWordWrap(true);
+    // Grey through the palette, not a style sheet: a style sheet would keep the text at its
+    // first font when presentation mode enlarges the window's.
+    QPalette grey = m_about->palette();
+    grey.setColor(QPalette::WindowText, QColor(0x55, 0x55, 0x55)); // 7.5:1 on white
+    m_about->setPalette(grey);
+    layout->addWidget(m_title);
+    // The introduction folds away, leaving its room to the step's text and questions.
+    m_aboutToggle->setObjectName(QStringLiteral("lessonIntroToggle"));
+    m_aboutToggle->setText(tr("Introduction"));
+    m_aboutToggle->setToolTip(tr("Show or hide the lesson's introduction"));
+    m_aboutToggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_aboutToggle->setAutoRaise(true);
+    m_aboutToggle->setCheckable(true);
+    m_aboutToggle->setChecked(true);
+    m_aboutToggle->setArrowType(Qt::DownArrow);
+    connect(m_aboutToggle, &QToolButton::toggled, this, [this](bool on) {
+        m_aboutToggle->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
+        m_about->setVisible(on && (!m_lesson || m_step == 0));
+    });
+    connect(m_aboutToggle, &QToolButton::clicked, this, [this] { m_aboutChosen = true; });
+    layout->addWidget(m_aboutToggle);
+    layout->addWidget(m_about);
+}
+
+void LessonPlayer::buildNavigation(QVBoxLayout* layout)
+{
     // The buttons are a widget of their own, so that the window can keep them in sight below
     // the lesson that scrolls (takeNavigation()). Two buttons a row, so that the panel fits
     // the narrow column of a 1024-pixel projector.
@@ -188,7 +196,6 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
         if (!error.isEmpty() && !m_openCancelled)
             QMessageBox::warning(this, tr("Cannot open lesson"), error);
     });
-    showStep();
 }
 
 void LessonPlayer::showCurrentLessonTip()
@@ -341,7 +348,7 @@ void LessonPlayer::showStep()
     m_progress->setValue(m_step + 1);
     m_stepCount->setText(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
     m_stepTitle->setText(s.title);
-    m_text->showMarkdown(s.text);
+    m_text->showMarkdown(lessons::keepUnitsTogether(s.text));
     m_back->setEnabled(m_step > 0);
     m_next->setEnabled(m_step + 1 < static_cast<int>(l.steps.size()));
     m_export->setEnabled(!s.plots.isEmpty());
@@ -393,191 +400,6 @@ bool LessonPlayer::eventFilter(QObject* watched, QEvent* event)
             fitIntroduction();
     }
     return QWidget::eventFilter(watched, event);
-}
-
-void LessonPlayer::buildQuestions()
-{
-    while (QLayoutItem* item = m_questionLayout->takeAt(0)) {
-        delete item->widget();
-        delete item;
-    }
-    m_rows.clear();
-    if (!m_lesson)
-        return;
-    const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
-    for (std::size_t i = 0; i < step.questions.size(); ++i) {
-        const lessons::Question& q = step.questions[i];
-        auto* box = new QWidget(m_questionBox);
-        auto* v = new QVBoxLayout(box);
-        v->setContentsMargins(0, 4, 0, 4);
-        auto* prompt = new QLabel(q.prompt, box);
-        prompt->setWordWrap(true);
-        v->addWidget(prompt);
-        // The answer and its unit on a line of their own, the buttons below: side by side
-        // they left the answer a few letters wide in a narrow column.
-        auto* row = new QHBoxLayout;
-        auto* buttons = new QHBoxLayout;
-        auto* edit = new QLineEdit(box);
-        // No validator: it would drop the separator the locale does not use ("0.0156" typed
-        // in Czech became 00156). What was typed is read when it is checked, point or comma.
-        edit->setPlaceholderText(tr("your answer"));
-        row->addWidget(edit, 1);
-        row->addWidget(new QLabel(q.unit, box));
-        auto* check = new QPushButton(tr("Check"), box);
-        buttons->addWidget(check);
-        auto* show = new QPushButton(tr("Show me"), box);
-        show->setToolTip(tr("Give up and show the measured value"));
-        buttons->addWidget(show);
-        v->addLayout(row);
-        v->addLayout(buttons);
-        auto* result = new QLabel(box);
-        result->setWordWrap(true);
-        result->setVisible(false); // no empty line under the buttons before the first try
-        v->addWidget(result);
-        m_questionLayout->addWidget(box);
-        QuestionRow questionRow;
-        questionRow.edit = edit;
-        questionRow.result = result;
-        questionRow.show = show;
-        m_rows.push_back(questionRow);
-        auto judge = [this, i, edit, result] {
-            if (!m_lesson)
-                return;
-            const std::optional<double> parsed = parseNumber(edit->text());
-            if (!parsed) {
-                result->setStyleSheet(QStringLiteral("color: #a05a00;"));
-                result->setText(tr("Type a number first."));
-                result->setVisible(true);
-                return;
-            }
-            const double answer = *parsed;
-            if (std::abs(answer) > kMaxAnswer) {
-                result->setStyleSheet(QStringLiteral("color: #a05a00;"));
-                result->setText(tr("Type a number from %1 to %2.")
-                                    .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
-                result->setVisible(true);
-                return;
-            }
-            applyTry(i, QuestionTry{answer, measuredValue(i)});
-        };
-        connect(check, &QPushButton::clicked, this, judge);
-        connect(edit, &QLineEdit::returnPressed, this, judge);
-        connect(show, &QPushButton::clicked, this, [this, i] {
-            if (m_lesson && i < m_rows.size())
-                applyTry(i, QuestionTry{std::nullopt, measuredValue(i)});
-        });
-    }
-}
-
-std::optional<double> LessonPlayer::measuredValue(std::size_t i)
-{
-    const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
-    const lessons::Question& q = step.questions[i];
-    if (const auto live = m_controller.measurements().value(q.measure, step.scene))
-        return live;
-    // While the scene may not run, the student could never get a verdict: the same run is
-    // done without a window instead (it is deterministic, so it measures what the window
-    // will show once it runs).
-    if (!heldBack().contains(QStringView(lessons::kHoldBackRun)))
-        return std::nullopt;
-    QuestionRow& row = m_rows[i];
-    if (!row.aheadDone) {
-        row.ahead = lessons::measureAhead(step, q.measure);
-        row.aheadDone = true;
-    }
-    return row.ahead;
-}
-
-void LessonPlayer::applyTry(std::size_t i, const QuestionTry& attempt)
-{
-    const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
-    QuestionRow& row = m_rows[i];
-    row.tries.push_back(attempt);
-    if (!attempt.answer)
-        return settle(i, lessons::showAnswer(q, attempt.measured));
-    if (attempt.measured && !row.answered)
-        ++row.attempts;
-    // Once answered, every later try is judged with the value given.
-    settle(i, lessons::judgeAttempt(q, *attempt.answer, attempt.measured,
-                                    row.answered ? 2 : row.attempts));
-}
-
-StepWork LessonPlayer::work() const
-{
-    StepWork out;
-    for (const QuestionRow& row : m_rows) {
-        out.tries.push_back(row.tries);
-        out.typed << row.edit->text();
-    }
-    return out;
-}
-
-void LessonPlayer::restoreWork(const StepWork& work)
-{
-    if (!m_lesson)
-        return;
-    for (std::size_t i = 0; i < m_rows.size(); ++i) {
-        if (i < work.tries.size())
-            for (const QuestionTry& attempt : work.tries[i])
-                applyTry(i, attempt);
-        if (i < static_cast<std::size_t>(work.typed.size()))
-            m_rows[i].edit->setText(work.typed[static_cast<qsizetype>(i)]);
-    }
-}
-
-void LessonPlayer::settle(std::size_t i, const lessons::Verdict& v)
-{
-    QuestionRow& row = m_rows[i];
-    row.result->setStyleSheet(!v.measured ? QStringLiteral("color: #a05a00;")
-                              : v.right   ? QStringLiteral("color: #1e7b34; font-weight: bold;")
-                              : v.shown   ? QStringLiteral("color: #b3261e; font-weight: bold;")
-                                          : QStringLiteral("color: #a05a00; font-weight: bold;"));
-    row.result->setText(v.message);
-    row.result->setVisible(true);
-    if (!v.measured && heldBack().contains(QStringView(lessons::kHoldBackRun))) {
-        // Not measurable without a window within the limit: let the scene run rather than
-        // leave the student with no way on.
-        row.answered = true;
-        emit heldBackChanged(heldBack());
-        return;
-    }
-    if (!v.shown || row.answered)
-        return;
-    row.answered = true;
-    row.show->setEnabled(false);
-    emit heldBackChanged(heldBack());
-}
-
-QStringList LessonPlayer::heldBack() const
-{
-    if (!m_lesson)
-        return {};
-    std::vector<bool> answered;
-    for (const QuestionRow& row : m_rows)
-        answered.push_back(row.answered);
-    return m_lesson->steps[static_cast<size_t>(m_step)].heldBack(answered);
-}
-
-void LessonPlayer::showMe(int question)
-{
-    if (question < 0 || question >= static_cast<int>(m_rows.size()))
-        return;
-    m_rows[static_cast<size_t>(question)].show->click();
-}
-
-void LessonPlayer::answer(int question, const QString& text)
-{
-    if (question < 0 || question >= static_cast<int>(m_rows.size()))
-        return;
-    m_rows[static_cast<size_t>(question)].edit->setText(text);
-    emit m_rows[static_cast<size_t>(question)].edit->returnPressed();
-}
-
-QString LessonPlayer::result(int question) const
-{
-    if (question < 0 || question >= static_cast<int>(m_rows.size()))
-        return QString();
-    return m_rows[static_cast<size_t>(question)].result->text();
 }
 
 void LessonPlayer::fitTextMinimum()

@@ -34,6 +34,9 @@ class StepText;
 struct QuestionTry {
     std::optional<double> answer;   ///< in the question's unit; nullopt for "Show me"
     std::optional<double> measured; ///< nullopt while not measured yet
+    /// Measured by a run without a window while the window's run was held back: the verdict
+    /// says what the run will measure.
+    bool ahead = false;
     bool operator==(const QuestionTry&) const = default;
 };
 
@@ -110,6 +113,10 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
+    /// The lesson's title and its introduction, which folds away.
+    void buildIntroduction(QVBoxLayout* layout);
+    /// Back, Next, Restart step and Export plots, and what the buttons and the list do.
+    void buildNavigation(QVBoxLayout* layout);
     void showStep();
     /// The list box's tooltip: the chosen lesson's full line, and what the list holds.
     void showCurrentLessonTip();
@@ -124,8 +131,11 @@ private:
     /// Judges a try at question i (and remembers it): its verdict shown, what it releases
     /// released.
     void applyTry(std::size_t i, const QuestionTry& attempt);
-    /// The measured value question i is judged against, nullopt while not measured yet.
-    std::optional<double> measuredValue(std::size_t i);
+    /// A try at question i without an answer yet: the value it is judged against (nullopt
+    /// while not measured yet) and whether it was measured ahead.
+    QuestionTry measuredTry(std::size_t i);
+    /// Scrolls question i's verdict into sight in the lesson's column.
+    void revealResult(std::size_t i);
     /// Shows a verdict under question i; one that gives the value answers the question.
     void settle(std::size_t i, const lessons::Verdict& verdict);
 

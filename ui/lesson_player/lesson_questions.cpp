@@ -1,0 +1,237 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The lesson player's questions: answer boxes, Check and Show me, verdicts, and what the
+// answers release of what the step holds back.
+
+#include "lesson_player/lesson_player.h"
+
+#include "panels/number_field.h"
+#include "simulation/simulation_controller.h"
+
+#include "run/measurements.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPointer>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// The largest answer taken, in the question's unit: far beyond any measured value, and small
+/// enough that |answer - measured| stays finite.
+constexpr double kMaxAnswer = 1e15;
+
+} // namespace
+
+void LessonPlayer::buildQuestions()
+{
+    while (QLayoutItem* item = m_questionLayout->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    m_rows.clear();
+    if (!m_lesson)
+        return;
+    const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
+    for (std::size_t i = 0; i < step.questions.size(); ++i) {
+        const lessons::Question& q = step.questions[i];
+        auto* box = new QWidget(m_questionBox);
+        auto* v = new QVBoxLayout(box);
+        v->setContentsMargins(0, 4, 0, 4);
+        auto* prompt = new QLabel(lessons::keepUnitsTogether(q.prompt), box);
+        prompt->setWordWrap(true);
+        v->addWidget(prompt);
+        // The answer and its unit on a line of their own, the buttons below: side by side
+        // they left the answer a few letters wide in a narrow column.
+        auto* row = new QHBoxLayout;
+        auto* buttons = new QHBoxLayout;
+        auto* edit = new QLineEdit(box);
+        // No validator: it would drop the separator the locale does not use ("0.0156" typed
+        // in Czech became 00156). What was typed is read when it is checked, point or comma.
+        edit->setPlaceholderText(tr("your answer"));
+        row->addWidget(edit, 1);
+        row->addWidget(new QLabel(q.unit, box));
+        auto* check = new QPushButton(tr("Check"), box);
+        buttons->addWidget(check);
+        auto* show = new QPushButton(tr("Show me"), box);
+        show->setToolTip(tr("Give up and show the measured value"));
+        buttons->addWidget(show);
+        v->addLayout(row);
+        v->addLayout(buttons);
+        auto* result = new QLabel(box);
+        result->setWordWrap(true);
+        result->setVisible(false); // no empty line under the buttons before the first try
+        v->addWidget(result);
+        m_questionLayout->addWidget(box);
+        QuestionRow questionRow;
+        questionRow.edit = edit;
+        questionRow.result = result;
+        questionRow.show = show;
+        m_rows.push_back(questionRow);
+        auto judge = [this, i, edit, result] {
+            if (!m_lesson)
+                return;
+            const std::optional<double> parsed = parseNumber(edit->text());
+            if (!parsed) {
+                result->setStyleSheet(QStringLiteral("color: #a05a00;"));
+                result->setText(tr("Type a number first."));
+                result->setVisible(true);
+                return;
+            }
+            const double answer = *parsed;
+            if (std::abs(answer) > kMaxAnswer) {
+                result->setStyleSheet(QStringLiteral("color: #a05a00;"));
+                result->setText(tr("Type a number from %1 to %2.")
+                                    .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
+                result->setVisible(true);
+                return;
+            }
+            QuestionTry attempt = measuredTry(i);
+            attempt.answer = answer;
+            applyTry(i, attempt);
+        };
+        connect(check, &QPushButton::clicked, this, judge);
+        connect(edit, &QLineEdit::returnPressed, this, judge);
+        connect(show, &QPushButton::clicked, this, [this, i] {
+            if (m_lesson && i < m_rows.size())
+                applyTry(i, measuredTry(i));
+        });
+    }
+}
+
+QuestionTry LessonPlayer::measuredTry(std::size_t i)
+{
+    const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
+    const lessons::Question& q = step.questions[i];
+    if (const auto live = m_controller.measurements().value(q.measure, step.scene))
+        return QuestionTry{std::nullopt, live, false};
+    // While the scene may not run, the student could never get a verdict: the same run is
+    // done without a window instead (it is deterministic, so it measures what the window
+    // will show once it runs).
+    if (!heldBack().contains(QStringView(lessons::kHoldBackRun)))
+        return QuestionTry{};
+    QuestionRow& row = m_rows[i];
+    if (!row.aheadDone) {
+        row.ahead = lessons::measureAhead(step, q.measure);
+        row.aheadDone = true;
+    }
+    return QuestionTry{std::nullopt, row.ahead, row.ahead.has_value()};
+}
+
+void LessonPlayer::applyTry(std::size_t i, const QuestionTry& attempt)
+{
+    const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
+    QuestionRow& row = m_rows[i];
+    row.tries.push_back(attempt);
+    if (!attempt.answer)
+        return settle(i, lessons::showAnswer(q, attempt.measured, attempt.ahead));
+    if (attempt.measured && !row.answered)
+        ++row.attempts;
+    // Once answered, every later try is judged with the value given.
+    settle(i, lessons::judgeAttempt(q, *attempt.answer, attempt.measured,
+                                    row.answered ? 2 : row.attempts, attempt.ahead));
+}
+
+StepWork LessonPlayer::work() const
+{
+    StepWork out;
+    for (const QuestionRow& row : m_rows) {
+        out.tries.push_back(row.tries);
+        out.typed << row.edit->text();
+    }
+    return out;
+}
+
+void LessonPlayer::restoreWork(const StepWork& work)
+{
+    if (!m_lesson)
+        return;
+    for (std::size_t i = 0; i < m_rows.size(); ++i) {
+        if (i < work.tries.size())
+            for (const QuestionTry& attempt : work.tries[i])
+                applyTry(i, attempt);
+        if (i < static_cast<std::size_t>(work.typed.size()))
+            m_rows[i].edit->setText(work.typed[static_cast<qsizetype>(i)]);
+    }
+}
+
+void LessonPlayer::settle(std::size_t i, const lessons::Verdict& v)
+{
+    QuestionRow& row = m_rows[i];
+    row.result->setStyleSheet(!v.measured ? QStringLiteral("color: #a05a00;")
+                              : v.right   ? QStringLiteral("color: #1e7b34; font-weight: bold;")
+                              : v.shown   ? QStringLiteral("color: #b3261e; font-weight: bold;")
+                                          : QStringLiteral("color: #a05a00; font-weight: bold;"));
+    row.result->setText(v.message);
+    row.result->setVisible(true);
+    revealResult(i);
+    if (!v.measured && heldBack().contains(QStringView(lessons::kHoldBackRun))) {
+        // Not measurable without a window within the limit: let the scene run rather than
+        // leave the student with no way on.
+        row.answered = true;
+        emit heldBackChanged(heldBack());
+        return;
+    }
+    if (!v.shown || row.answered)
+        return;
+    row.answered = true;
+    row.show->setEnabled(false);
+    emit heldBackChanged(heldBack());
+}
+
+void LessonPlayer::revealResult(std::size_t i)
+{
+    // The questions come after the step's text in a scrolling column: the verdict just shown
+    // may lie below its bottom edge. Once the layout has made room for it, it is scrolled
+    // into sight (the question's box with it, so that the answer stays beside its verdict).
+    QScrollArea* scroll = scrollArea();
+    if (!scroll)
+        return;
+    const QPointer<QLabel> result = m_rows[i].result;
+    const QPointer<QScrollArea> area = scroll;
+    QTimer::singleShot(0, this, [result, area] {
+        if (result && area && result->isVisible())
+            area->ensureWidgetVisible(result, 0, 8);
+    });
+}
+
+QStringList LessonPlayer::heldBack() const
+{
+    if (!m_lesson)
+        return {};
+    std::vector<bool> answered;
+    for (const QuestionRow& row : m_rows)
+        answered.push_back(row.answered);
+    return m_lesson->steps[static_cast<size_t>(m_step)].heldBack(answered);
+}
+
+void LessonPlayer::showMe(int question)
+{
+    if (question < 0 || question >= static_cast<int>(m_rows.size()))
+        return;
+    m_rows[static_cast<size_t>(question)].show->click();
+}
+
+void LessonPlayer::answer(int question, const QString& text)
+{
+    if (question < 0 || question >= static_cast<int>(m_rows.size()))
+        return;
+    m_rows[static_cast<size_t>(question)].edit->setText(text);
+    emit m_rows[static_cast<size_t>(question)].edit->returnPressed();
+}
+
+QString LessonPlayer::result(int question) const
+{
+    if (question < 0 || question >= static_cast<int>(m_rows.size()))
+        return QString();
+    return m_rows[static_cast<size_t>(question)].result->text();
+}
+
+} // namespace rigidlab::ui
