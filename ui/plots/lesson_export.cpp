@@ -3,7 +3,7 @@
 
 #include "common/display_names.h"
 #include "plots/plot_widget.h"
-#include "plots/step_sampler.h"
+#include "simulation/step_sampler.h"
 
 #include "run/scene_run.h"
 
