@@ -26,10 +26,12 @@ QString driftExplanation()
         "<p>Energy drift: how far the total energy (motion, height, springs) has moved from its "
         "value at the start, as a share of it, after adding back what bounces, friction, drag "
         "and dampers took. Exact physics would keep it at 0.</p>"
-        "<p>What is left is numerical error: the integrator's, step by step, and that of the "
+        "<p>What is left is numerical error: the integrator's, step by step; that of the "
         "corrections after contacts and joints are solved (bodies that sank into each other "
-        "are pushed apart, pins are pulled back together). A method that follows a free fall "
-        "exactly, such as velocity Verlet, still drifts where bodies touch.</p>");
+        "are pushed apart, pins are pulled back together); and that of the estimate of what "
+        "the contacts took, which grows steadily while bodies rest on each other. A method "
+        "that follows a free fall exactly, such as velocity Verlet, still drifts where bodies "
+        "touch.</p>");
 }
 
 } // namespace rigidlab::ui

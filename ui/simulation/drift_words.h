@@ -3,10 +3,12 @@
 // The energy drift in words a teacher can explain to a class: what the number is the error
 // of. The drift (step_sampler.h: EnergyReference) is the change of the total energy since the
 // start (kinetic energy, gravity, springs), with what contacts, friction, drag and dampers
-// took added back. What is left is every numerical error of the step: the integrator's, and
-// that of the corrections after the contacts and joints are solved (overlapping bodies pushed
-// apart, pins pulled back together), which take or give energy no force accounts for. So a
-// method that follows a free fall exactly (velocity Verlet) still drifts where bodies touch.
+// took added back. What is left is every numerical error of the step: the integrator's; that
+// of the corrections after the contacts and joints are solved (overlapping bodies pushed
+// apart, pins pulled back together), which take or give energy no force accounts for; and
+// that of the estimate of what resting contacts took, which grows with every step a body
+// rests on another. So a method that follows a free fall exactly (velocity Verlet) still
+// drifts where bodies touch (test_simulation).
 
 #include <QString>
 
