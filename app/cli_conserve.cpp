@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// rigidlab-cli conserve: the conservation experiments of issue 16 (numerics/conservation.h),
+// rigidlab-cli conserve: the conservation experiments (numerics/conservation.h),
 // run with every solver that resolves impacts. Argument handling only.
 
 #include "cli_common.h"

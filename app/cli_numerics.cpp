@@ -42,27 +42,10 @@ QString plotPathFor(const QString& path, const QString& problem, bool several)
     return info.dir().filePath(info.completeBaseName() + u'-' + problem + u'.' + info.suffix());
 }
 
-} // namespace
-
-std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv)
+/// error-vs-time's options from its command line into `options`: an empty string, or what is
+/// wrong with them.
+QString readSweepOptions(const CommandLine& args, lessons::SweepOptions& options)
 {
-    if (argc > 1 &&
-        (std::strcmp(argv[1], "error-vs-time") == 0 || std::strcmp(argv[1], "lesson") == 0)) {
-        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
-            qputenv("QT_QPA_PLATFORM", "offscreen");
-        return std::make_unique<QApplication>(argc, argv);
-    }
-    return std::make_unique<QCoreApplication>(argc, argv);
-}
-
-int commandErrorVsTime(const QStringList& words)
-{
-    CommandLine args(QStringLiteral("error-vs-time"));
-    for (const char* name : {"problem", "integrators", "dt-from", "dt-to", "points", "t-end", "csv",
-                             "plot", "tol-from", "tol-to", "min-cpu"})
-        args.addValue(QLatin1StringView(name));
-    if (!args.parseOptionsOnly(words))
-        return usageError(args.command(), args.error());
     QString error;
     // A positive number from an option, when given.
     const auto number = [&](const char* name) -> std::optional<double> {
@@ -71,8 +54,6 @@ int commandErrorVsTime(const QStringList& words)
             return std::nullopt;
         return positiveNumber(QStringLiteral("--") + QLatin1StringView(name), *text, error);
     };
-
-    lessons::SweepOptions options;
     if (const auto problem = args.value(QStringLiteral("problem")); problem && *problem != u"all")
         options.problems = problem->split(u',', Qt::SkipEmptyParts);
     if (const auto integrators = args.value(QStringLiteral("integrators")))
@@ -93,29 +74,29 @@ int commandErrorVsTime(const QStringList& words)
             error = QStringLiteral("--points: must be a whole number");
     }
     if (!error.isEmpty())
-        return usageError(args.command(), error);
-    if (const QString bad = lessons::checkSweepOptions(options); !bad.isEmpty())
-        return usageError(args.command(), bad);
-    const QString plotPath = args.value(QStringLiteral("plot")).value_or(QString());
-    std::optional<ui::ExportFormat> format;
-    if (!plotPath.isEmpty()) {
-        format = ui::formatFromSuffix(QFileInfo(plotPath).suffix());
-        if (!format || *format == ui::ExportFormat::Csv)
-            return usageError(args.command(), QStringLiteral("--plot: a .png, .pdf or .svg file"));
-    }
+        return error;
+    return lessons::checkSweepOptions(options);
+}
 
+/// Runs the sweep, printing each row as it is done.
+std::vector<lessons::SweepRow> runAndPrintSweep(const lessons::SweepOptions& options)
+{
     std::printf("%-16s %-18s %12s %9s %11s %11s %11s %11s %11s\n", "problem", "integrator", "dt",
                 "steps", "evaluations", "error", "max_error", "energy_err", "seconds");
-    const std::vector<lessons::SweepRow> rows =
-        lessons::runSweep(options, [](const lessons::SweepRow& r, int, int) {
-            std::printf("%-16s %-18s %12.4g %9lld %11lld %11.3e %11.3e %11.3e %11.3e\n",
-                        qPrintable(r.problem), qPrintable(r.integrator), r.dt, r.steps,
-                        r.evaluations, r.error, r.maxError, r.energyError, r.seconds);
-            std::fflush(stdout);
-            return true;
-        });
+    return lessons::runSweep(options, [](const lessons::SweepRow& r, int, int) {
+        std::printf("%-16s %-18s %12.4g %9lld %11lld %11.3e %11.3e %11.3e %11.3e\n",
+                    qPrintable(r.problem), qPrintable(r.integrator), r.dt, r.steps, r.evaluations,
+                    r.error, r.maxError, r.energyError, r.seconds);
+        std::fflush(stdout);
+        return true;
+    });
+}
 
-    // Observed orders, per problem and integrator.
+/// Prints the observed order of each integrator on each problem; returns the problems of
+/// `rows`, in their order.
+QStringList printObservedOrders(const std::vector<lessons::SweepRow>& rows,
+                                const lessons::SweepOptions& options)
+{
     QStringList problems;
     for (const lessons::SweepRow& r : rows)
         if (!problems.contains(r.problem))
@@ -138,23 +119,66 @@ int commandErrorVsTime(const QStringList& words)
     std::printf("seconds: CPU time of the integration alone, the smallest of repeated runs (at "
                 "least %d, and until %g s of CPU time were spent on the row).\n",
                 options.minRepeats, options.minTimingSeconds);
+    return problems;
+}
 
+/// The work-precision diagram of each problem into `path` (FILE-PROBLEM.png for several).
+int writeWorkPrecisionPlots(const std::vector<lessons::SweepRow>& rows, const QStringList& problems,
+                            const QString& path, ui::ExportFormat format)
+{
+    ui::WorkPrecisionPlot plot;
+    plot.resize(800, 500);
+    plot.setRows(rows);
+    for (const QString& p : problems) {
+        plot.setProblem(p);
+        const QString file = plotPathFor(path, p, problems.size() > 1);
+        const ui::ExportResult r = ui::exportPlot(plot, file, format);
+        if (!r.ok)
+            return outputError(r.error);
+        std::printf("wrote %s\n", qPrintable(file));
+    }
+    return kExitOk;
+}
+
+} // namespace
+
+std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv)
+{
+    if (argc > 1 &&
+        (std::strcmp(argv[1], "error-vs-time") == 0 || std::strcmp(argv[1], "lesson") == 0)) {
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+        return std::make_unique<QApplication>(argc, argv);
+    }
+    return std::make_unique<QCoreApplication>(argc, argv);
+}
+
+int commandErrorVsTime(const QStringList& words)
+{
+    CommandLine args(QStringLiteral("error-vs-time"));
+    for (const char* name : {"problem", "integrators", "dt-from", "dt-to", "points", "t-end", "csv",
+                             "plot", "tol-from", "tol-to", "min-cpu"})
+        args.addValue(QLatin1StringView(name));
+    if (!args.parseOptionsOnly(words))
+        return usageError(args.command(), args.error());
+    lessons::SweepOptions options;
+    if (const QString bad = readSweepOptions(args, options); !bad.isEmpty())
+        return usageError(args.command(), bad);
+    const QString plotPath = args.value(QStringLiteral("plot")).value_or(QString());
+    std::optional<ui::ExportFormat> format;
+    if (!plotPath.isEmpty()) {
+        format = ui::formatFromSuffix(QFileInfo(plotPath).suffix());
+        if (!format || *format == ui::ExportFormat::Csv)
+            return usageError(args.command(), QStringLiteral("--plot: a .png, .pdf or .svg file"));
+    }
+
+    const std::vector<lessons::SweepRow> rows = runAndPrintSweep(options);
+    const QStringList problems = printObservedOrders(rows, options);
     if (const auto csv = args.value(QStringLiteral("csv"));
         csv && !writeFile(*csv, lessons::sweepCsv(rows)))
         return kExitOutputError;
-    if (format) {
-        ui::WorkPrecisionPlot plot;
-        plot.resize(800, 500);
-        plot.setRows(rows);
-        for (const QString& p : problems) {
-            plot.setProblem(p);
-            const QString path = plotPathFor(plotPath, p, problems.size() > 1);
-            const ui::ExportResult r = ui::exportPlot(plot, path, *format);
-            if (!r.ok)
-                return outputError(r.error);
-            std::printf("wrote %s\n", qPrintable(path));
-        }
-    }
+    if (format)
+        return writeWorkPrecisionPlots(rows, problems, plotPath, *format);
     return kExitOk;
 }
 

@@ -12,6 +12,8 @@
 #include "window/main_window.h"
 #include "window/screenshots.h"
 
+#include "format/languages.h"
+
 #include "rigidlab/version.h"
 
 #include <QApplication>
@@ -111,140 +113,136 @@ std::optional<double> parseScale(const QString& text)
     return f;
 }
 
-/// Fills `options` from the arguments. Returns -1 to go on, else the exit status (0 after
-/// --help or --version, 2 after a mistake, said on one line in `message`).
-int parseArguments(const QStringList& args, Options& options, QString& message)
+/// The codes of the shipped languages as --lang's value name: "en|cs".
+QString languageChoices()
 {
-    QCommandLineParser parser;
+    QStringList codes;
+    for (const rigidlab::lessons::Language& l : rigidlab::lessons::kLanguages)
+        codes << l.code.toString();
+    return codes.join(QLatin1Char('|'));
+}
+
+/// rigidlab's options, and what each option's value must be (said the same way whether it is
+/// missing or wrong).
+struct OptionSet {
+    QCommandLineOption help{{QStringLiteral("h"), QStringLiteral("help")},
+                            CommandLine::tr("Show this text and quit.")};
+    QCommandLineOption version{QStringLiteral("version"),
+                               CommandLine::tr("Show the version and quit.")};
+    QCommandLineOption step{QStringLiteral("step"),
+                            CommandLine::tr("With a lesson: start at step N (1 = first)."),
+                            QStringLiteral("N")};
+    QCommandLineOption measure{
+        QStringLiteral("measure-frames"),
+        CommandLine::tr("Run the scene for N frames, print the median and 95th-percentile "
+                        "frame time and the physics share, and quit."),
+        QStringLiteral("N")};
+    QCommandLineOption screenshots{
+        QStringLiteral("screenshots"),
+        CommandLine::tr("Write a PNG of the window on the welcome scene and on every step of "
+                        "every shipped lesson into DIR, with DIR/index.txt, and quit."),
+        QStringLiteral("DIR")};
+    QCommandLineOption size{QStringLiteral("size"),
+                            CommandLine::tr("Window (and screenshot) size in pixels, e.g. 1024x768 "
+                                            "(screenshots: 1280x720 unless given)."),
+                            QStringLiteral("WxH")};
+    QCommandLineOption scale{
+        QStringLiteral("scale"),
+        CommandLine::tr("Scale factor of the whole interface (QT_SCALE_FACTOR), e.g. 1.5."),
+        QStringLiteral("F")};
+    QCommandLineOption present{QStringLiteral("present"),
+                               CommandLine::tr("Presentation mode: full screen, large type "
+                                               "and thick lines for a projector (F11).")};
+    QCommandLineOption lang{
+        QStringLiteral("lang"),
+        CommandLine::tr("Language of the interface, one of %1 (View › Language saves a "
+                        "choice; without either, the system's language).")
+            .arg(rigidlab::lessons::shippedLanguageCodes()),
+        languageChoices()};
+
+    QString stepNeeds = CommandLine::tr("a whole number from 1");
+    QString sizeNeeds =
+        CommandLine::tr("WIDTHxHEIGHT in pixels, each from %1 to %2").arg(kMinSide).arg(kMaxSide);
+    QString scaleNeeds = CommandLine::tr("a number greater than 0 and at most %1").arg(kMaxScale);
+    QString langNeeds = CommandLine::tr("one of %1").arg(rigidlab::lessons::shippedLanguageCodes());
+    QString dirNeeds = CommandLine::tr("a folder");
+
+    /// The options that take a value, with what the value must be.
+    std::array<std::pair<const QCommandLineOption*, QString>, 6> valueRules() const
+    {
+        return {{{&step, stepNeeds},
+                 {&measure, stepNeeds},
+                 {&size, sizeNeeds},
+                 {&scale, scaleNeeds},
+                 {&lang, langNeeds},
+                 {&screenshots, dirNeeds}}};
+    }
+};
+
+/// "--NAME needs WHAT, got "GOT"": a value missing or wrong.
+QString needs(const QString& name, const QString& what, const QString& got)
+{
+    return CommandLine::tr("--%1 needs %2, got \"%3\"").arg(name, what, got);
+}
+
+void describe(QCommandLineParser& parser, const OptionSet& o)
+{
     parser.setApplicationDescription(
         CommandLine::tr("RigidLab %1: a lab for 2D rigid-body mechanics.")
             .arg(QStringLiteral(RIGIDLAB_VERSION)));
     parser.addPositionalArgument(QStringLiteral("FILE.json"),
                                  CommandLine::tr("A scene or a lesson to open."),
                                  QStringLiteral("[FILE.json]"));
-    const QCommandLineOption help({QStringLiteral("h"), QStringLiteral("help")},
-                                  CommandLine::tr("Show this text and quit."));
-    const QCommandLineOption version(QStringLiteral("version"),
-                                     CommandLine::tr("Show the version and quit."));
-    const QCommandLineOption step(QStringLiteral("step"),
-                                  CommandLine::tr("With a lesson: start at step N (1 = first)."),
-                                  QStringLiteral("N"));
-    const QCommandLineOption measure(
-        QStringLiteral("measure-frames"),
-        CommandLine::tr("Run the scene for N frames, print the median and 95th-percentile "
-                        "frame time and the physics share, and quit."),
-        QStringLiteral("N"));
-    const QCommandLineOption screenshots(
-        QStringLiteral("screenshots"),
-        CommandLine::tr("Write a PNG of the window on the welcome scene and on every step of "
-                        "every shipped lesson into DIR, with DIR/index.txt, and quit."),
-        QStringLiteral("DIR"));
-    const QCommandLineOption size(
-        QStringLiteral("size"),
-        CommandLine::tr("Window (and screenshot) size in pixels, e.g. 1024x768 "
-                        "(screenshots: 1280x720 unless given)."),
-        QStringLiteral("WxH"));
-    const QCommandLineOption scale(
-        QStringLiteral("scale"),
-        CommandLine::tr("Scale factor of the whole interface (QT_SCALE_FACTOR), e.g. 1.5."),
-        QStringLiteral("F"));
-    const QCommandLineOption present(QStringLiteral("present"),
-                                     CommandLine::tr("Presentation mode: full screen, large type "
-                                                     "and thick lines for a projector (F11)."));
-    const QCommandLineOption lang(
-        QStringLiteral("lang"),
-        CommandLine::tr("Language of the interface: cs or en (View › Language saves a "
-                        "choice; without either, the system's language)."),
-        QStringLiteral("cs|en"));
-    for (const QCommandLineOption* o :
-         {&help, &version, &step, &measure, &screenshots, &size, &scale, &present, &lang})
-        parser.addOption(*o);
+    for (const QCommandLineOption* option :
+         {&o.help, &o.version, &o.step, &o.measure, &o.screenshots, &o.size, &o.scale, &o.present,
+          &o.lang})
+        parser.addOption(*option);
+}
 
-    const QStringList withProgram = QStringList{QStringLiteral("rigidlab")} + args;
-    // What each option's value must be, said the same way whether it is missing or wrong.
-    const auto needs = [](const QString& name, const QString& what, const QString& got) {
-        return CommandLine::tr("--%1 needs %2, got \"%3\"").arg(name, what, got);
-    };
-    const QString stepNeeds = CommandLine::tr("a whole number from 1");
-    const QString sizeNeeds =
-        CommandLine::tr("WIDTHxHEIGHT in pixels, each from %1 to %2").arg(kMinSide).arg(kMaxSide);
-    const QString scaleNeeds =
-        CommandLine::tr("a number greater than 0 and at most %1").arg(kMaxScale);
-    const QString langNeeds = CommandLine::tr("cs or en");
-    const QString dirNeeds = CommandLine::tr("a folder");
-    const std::array<std::pair<const QCommandLineOption*, QString>, 6> valueRules{
-        {{&step, stepNeeds},
-         {&measure, stepNeeds},
-         {&size, sizeNeeds},
-         {&scale, scaleNeeds},
-         {&lang, langNeeds},
-         {&screenshots, dirNeeds}}};
-    if (!parser.parse(withProgram)) {
-        // A value option last, without its value: say what the value should be.
-        for (const auto& [option, what] : valueRules)
-            if (!args.isEmpty() && args.last() == QStringLiteral("--") + option->names().first()) {
-                message = needs(option->names().first(), what, QString());
-                return 2;
-            }
-        message = CommandLine::tr("%1 (try rigidlab --help)").arg(parser.errorText());
+/// Reads the options' values into `options`. Returns -1 to go on, else 2 with the mistake in
+/// `message`.
+int readValues(const QCommandLineParser& parser, const OptionSet& o, Options& options,
+               QString& message)
+{
+    const auto value = [&](const QCommandLineOption& option) { return parser.value(option); };
+    const auto refuse = [&](const char* name, const QString& what, const QString& got) {
+        message = needs(QLatin1String(name), what, got);
         return 2;
-    }
-    if (parser.isSet(help)) {
-        message = parser.helpText().replace(QStringLiteral("<executable_name>"),
-                                            QStringLiteral("rigidlab"));
-        return 0;
-    }
-    if (parser.isSet(version)) {
-        message = QStringLiteral("rigidlab " RIGIDLAB_VERSION);
-        return 0;
-    }
-    const auto value = [&](const QCommandLineOption& o) { return parser.value(o); };
-    if (parser.isSet(step)) {
-        const auto n = positiveInt(value(step));
-        if (!n) {
-            message = needs(QStringLiteral("step"), stepNeeds, value(step));
-            return 2;
-        }
+    };
+    if (parser.isSet(o.step)) {
+        const auto n = positiveInt(value(o.step));
+        if (!n)
+            return refuse("step", o.stepNeeds, value(o.step));
         options.step = *n;
     }
-    if (parser.isSet(measure)) {
-        const auto n = positiveInt(value(measure));
-        if (!n) {
-            message = needs(QStringLiteral("measure-frames"), stepNeeds, value(measure));
-            return 2;
-        }
+    if (parser.isSet(o.measure)) {
+        const auto n = positiveInt(value(o.measure));
+        if (!n)
+            return refuse("measure-frames", o.stepNeeds, value(o.measure));
         options.measureFrames = *n;
     }
-    if (parser.isSet(size)) {
-        options.size = parseSize(value(size));
-        if (!options.size) {
-            message = needs(QStringLiteral("size"), sizeNeeds, value(size));
-            return 2;
-        }
+    if (parser.isSet(o.size) && !(options.size = parseSize(value(o.size))))
+        return refuse("size", o.sizeNeeds, value(o.size));
+    if (parser.isSet(o.scale) && !(options.scale = parseScale(value(o.scale))))
+        return refuse("scale", o.scaleNeeds, value(o.scale));
+    if (parser.isSet(o.lang)) {
+        options.lang = value(o.lang);
+        if (!rigidlab::lessons::isShippedLanguage(options.lang))
+            return refuse("lang", o.langNeeds, options.lang);
     }
-    if (parser.isSet(scale)) {
-        options.scale = parseScale(value(scale));
-        if (!options.scale) {
-            message = needs(QStringLiteral("scale"), scaleNeeds, value(scale));
-            return 2;
-        }
+    if (parser.isSet(o.screenshots)) {
+        options.screenshots = value(o.screenshots);
+        if (options.screenshots.isEmpty())
+            return refuse("screenshots", o.dirNeeds, QString());
     }
-    if (parser.isSet(lang)) {
-        options.lang = value(lang);
-        if (options.lang != QLatin1String("cs") && options.lang != QLatin1String("en")) {
-            message = needs(QStringLiteral("lang"), langNeeds, options.lang);
-            return 2;
-        }
-    }
-    if (parser.isSet(screenshots)) {
-        options.screenshots = value(screenshots);
-        if (options.screenshots.isEmpty()) {
-            message = needs(QStringLiteral("screenshots"), dirNeeds, QString());
-            return 2;
-        }
-    }
-    options.present = parser.isSet(present);
+    options.present = parser.isSet(o.present);
+    return -1;
+}
 
+/// Reads the file named and checks that the options go together. Returns -1 to go on, else 2
+/// with the mistake in `message`.
+int readFile(const QCommandLineParser& parser, Options& options, QString& message)
+{
     const QStringList files = parser.positionalArguments();
     if (files.size() > 1) {
         message = CommandLine::tr("one file at a time (got %1 and %2)").arg(files[0], files[1]);
@@ -263,6 +261,37 @@ int parseArguments(const QStringList& args, Options& options, QString& message)
     return -1;
 }
 
+/// Fills `options` from the arguments. Returns -1 to go on, else the exit status (0 after
+/// --help or --version, 2 after a mistake, said on one line in `message`).
+int parseArguments(const QStringList& args, Options& options, QString& message)
+{
+    const OptionSet o;
+    QCommandLineParser parser;
+    describe(parser, o);
+    if (!parser.parse(QStringList{QStringLiteral("rigidlab")} + args)) {
+        // A value option last, without its value: say what the value should be.
+        for (const auto& [option, what] : o.valueRules())
+            if (!args.isEmpty() && args.last() == QStringLiteral("--") + option->names().first()) {
+                message = needs(option->names().first(), what, QString());
+                return 2;
+            }
+        message = CommandLine::tr("%1 (try rigidlab --help)").arg(parser.errorText());
+        return 2;
+    }
+    if (parser.isSet(o.help)) {
+        message = parser.helpText().replace(QStringLiteral("<executable_name>"),
+                                            QStringLiteral("rigidlab"));
+        return 0;
+    }
+    if (parser.isSet(o.version)) {
+        message = QStringLiteral("rigidlab " RIGIDLAB_VERSION);
+        return 0;
+    }
+    if (const int status = readValues(parser, o, options, message); status >= 0)
+        return status;
+    return readFile(parser, options, message);
+}
+
 /// Whether Qt has somewhere to show a window: a display, or a platform chosen explicitly
 /// (QT_QPA_PLATFORM=offscreen for tests and headless machines).
 bool haveDisplay()
@@ -270,6 +299,116 @@ bool haveDisplay()
     return !qEnvironmentVariableIsEmpty("DISPLAY") ||
            !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
            !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+}
+
+/// rigidlab --screenshots: the shipped views as PNGs, then the exit status.
+int writeScreenshots(const Options& options)
+{
+    rigidlab::ui::ScreenshotOptions shots;
+    shots.folder = options.screenshots;
+    if (options.size)
+        shots.size = *options.size;
+    if (options.present)
+        shots.setUp = [](rigidlab::ui::MainWindow& w) {
+            // Fonts, lines and palette of presentation mode, at the projector's size given by
+            // --size rather than this display's.
+            w.setPresentation(true);
+            w.setWindowState(Qt::WindowNoState);
+        };
+    const rigidlab::ui::ScreenshotResult r = rigidlab::ui::writeScreenshots(shots);
+    for (const QString& note : r.notes)
+        QTextStream(stderr) << "rigidlab: " << note << '\n';
+    if (!r.ok) {
+        QTextStream(stderr) << "rigidlab: " << r.error << '\n';
+        return 1;
+    }
+    QTextStream(stdout) << CommandLine::tr("%n file(s) written into %1", nullptr,
+                                           static_cast<int>(r.files.size()))
+                               .arg(QDir::toNativeSeparators(options.screenshots))
+                        << '\n';
+    return 0;
+}
+
+/// Opens the welcome scene, then the file asked for (a scene or a lesson, at its step).
+void openFirstDocument(rigidlab::ui::MainWindow& window, const Options& options)
+{
+    const QString welcome =
+        QDir(rigidlab::ui::MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json"));
+    // Open the welcome scene first, so that a broken file leaves something alive behind the
+    // error dialog.
+    window.openScene(welcome, !options.file.isEmpty());
+    if (options.file.isEmpty())
+        return;
+    // A lesson says so with its top-level key; anything else is read as a scene.
+    QFile f(options.file);
+    const bool lesson =
+        f.open(QIODevice::ReadOnly) && QJsonDocument::fromJson(f.read(8 << 20))
+                                           .object()
+                                           .contains(QLatin1String("rigidlab-lesson"));
+    const QString error = lesson ? window.openLesson(options.file) : window.openScene(options.file);
+    if (!error.isEmpty())
+        QTextStream(stderr) << error << '\n';
+    else if (lesson && options.step > 1)
+        window.lessonPlayer().goToStep(options.step - 1);
+}
+
+/// rigidlab --measure-frames: prints the frame times when `frames` frames (after the warm-up)
+/// are measured, and quits.
+void measureFrames(rigidlab::ui::SimulationController& controller, int frames)
+{
+    const std::clock_t cpuStart = std::clock();
+    QObject::connect(
+        &controller, &rigidlab::ui::SimulationController::framesMeasured, qApp,
+        [cpuStart](const std::vector<double>& frameMs, const std::vector<double>& physicsMs) {
+            const double cpuMs = 1e3 * static_cast<double>(std::clock() - cpuStart) /
+                                 CLOCKS_PER_SEC / static_cast<double>(frameMs.size());
+            printFrameTimes({frameMs.begin() + kWarmUpFrames, frameMs.end()},
+                            {physicsMs.begin() + kWarmUpFrames, physicsMs.end()}, cpuMs);
+            QApplication::exit(0);
+        });
+    controller.measureFrames(frames + kWarmUpFrames);
+}
+
+/// The window as the command line asks for it, running unless a lesson waits for Run. Returns
+/// -1 to go on, else the exit status.
+int openWindow(const Options& options)
+{
+    // On the heap: View › Language replaces it with a new window (language_switch.h).
+    auto* window = new rigidlab::ui::MainWindow;
+    window->setAttribute(Qt::WA_DeleteOnClose);
+    // The window sizes itself for the screen it is on (MainWindow::fitToScreen); --size
+    // overrides that.
+    if (options.size)
+        window->resize(*options.size);
+    openFirstDocument(*window, options);
+    window->show();
+    if (options.present)
+        window->setPresentation(true);
+    rigidlab::ui::followLanguageChoice(window);
+    const bool opened = window->lastError().isEmpty();
+    // A lesson waits for the student to press Run; a measurement runs it at once.
+    if (opened && (!window->lessonPlayer().lesson() || options.measureFrames > 0))
+        window->controller().setRunning(true);
+    if (options.measureFrames > 0) {
+        if (!opened) {
+            QTextStream(stderr) << "rigidlab: --measure-frames needs a scene that opens\n";
+            return 2;
+        }
+        measureFrames(window->controller(), options.measureFrames);
+    }
+    return -1;
+}
+
+/// Deletes the windows left: they are on the heap, and the last one may still be open after
+/// QApplication::exit.
+void deleteWindows()
+{
+    QList<QPointer<rigidlab::ui::MainWindow>> windows;
+    for (QWidget* w : QApplication::topLevelWidgets())
+        if (auto* main = qobject_cast<rigidlab::ui::MainWindow*>(w))
+            windows << main;
+    for (const QPointer<rigidlab::ui::MainWindow>& w : windows)
+        delete w.data();
 }
 
 } // namespace
@@ -309,93 +448,11 @@ int main(int argc, char** argv)
     rigidlab::ui::applyLanguage(rigidlab::ui::chooseLanguage(
         options.lang, rigidlab::ui::savedLanguage(), QLocale::system()));
 
-    if (!options.screenshots.isEmpty()) {
-        rigidlab::ui::ScreenshotOptions shots;
-        shots.folder = options.screenshots;
-        if (options.size)
-            shots.size = *options.size;
-        if (options.present)
-            shots.setUp = [](rigidlab::ui::MainWindow& w) {
-                // Fonts, lines and palette of presentation mode, at the projector's size
-                // given by --size rather than this display's.
-                w.setPresentation(true);
-                w.setWindowState(Qt::WindowNoState);
-            };
-        const rigidlab::ui::ScreenshotResult r = rigidlab::ui::writeScreenshots(shots);
-        for (const QString& note : r.notes)
-            QTextStream(stderr) << "rigidlab: " << note << '\n';
-        if (!r.ok) {
-            QTextStream(stderr) << "rigidlab: " << r.error << '\n';
-            return 1;
-        }
-        QTextStream(stdout) << CommandLine::tr("%n file(s) written into %1", nullptr,
-                                               static_cast<int>(r.files.size()))
-                                   .arg(QDir::toNativeSeparators(options.screenshots))
-                            << '\n';
-        return 0;
-    }
-
-    // On the heap: View › Language replaces it with a new window (language_switch.h).
-    auto* windowPointer = new rigidlab::ui::MainWindow;
-    windowPointer->setAttribute(Qt::WA_DeleteOnClose);
-    rigidlab::ui::MainWindow& window = *windowPointer;
-    // The window sizes itself for the screen it is on (MainWindow::fitToScreen); --size
-    // overrides that.
-    if (options.size)
-        window.resize(*options.size);
-    const QString file = options.file;
-    const int step = options.step;
-    const int measureFrames = options.measureFrames;
-    const QString welcome =
-        QDir(rigidlab::ui::MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json"));
-    // Open the welcome scene first, so that a broken file leaves something alive behind the
-    // error dialog.
-    window.openScene(welcome, file.isEmpty() ? false : true);
-    if (!file.isEmpty()) {
-        // A lesson says so with its top-level key; anything else is read as a scene.
-        QFile f(file);
-        const bool lesson =
-            f.open(QIODevice::ReadOnly) && QJsonDocument::fromJson(f.read(8 << 20))
-                                               .object()
-                                               .contains(QLatin1String("rigidlab-lesson"));
-        const QString error = lesson ? window.openLesson(file) : window.openScene(file);
-        if (!error.isEmpty())
-            QTextStream(stderr) << error << '\n';
-        else if (lesson && step > 1)
-            window.lessonPlayer().goToStep(step - 1);
-    }
-    window.show();
-    if (options.present)
-        window.setPresentation(true);
-    rigidlab::ui::followLanguageChoice(windowPointer);
-    // A lesson waits for the student to press Run; a measurement runs it at once.
-    if (window.lastError().isEmpty() && (!window.lessonPlayer().lesson() || measureFrames > 0))
-        window.controller().setRunning(true);
-    if (measureFrames > 0) {
-        if (!window.lastError().isEmpty()) {
-            QTextStream(stderr) << "rigidlab: --measure-frames needs a scene that opens\n";
-            return 2;
-        }
-        rigidlab::ui::SimulationController& controller = window.controller();
-        const std::clock_t cpuStart = std::clock();
-        QObject::connect(
-            &controller, &rigidlab::ui::SimulationController::framesMeasured, &app,
-            [cpuStart](const std::vector<double>& frames, const std::vector<double>& physics) {
-                const double cpuMs = 1e3 * static_cast<double>(std::clock() - cpuStart) /
-                                     CLOCKS_PER_SEC / static_cast<double>(frames.size());
-                printFrameTimes({frames.begin() + kWarmUpFrames, frames.end()},
-                                {physics.begin() + kWarmUpFrames, physics.end()}, cpuMs);
-                QApplication::exit(0);
-            });
-        controller.measureFrames(measureFrames + kWarmUpFrames);
-    }
+    if (!options.screenshots.isEmpty())
+        return writeScreenshots(options);
+    if (const int status = openWindow(options); status >= 0)
+        return status;
     const int status = QApplication::exec();
-    // The windows are on the heap (the last one may still be open after QApplication::exit).
-    QList<QPointer<rigidlab::ui::MainWindow>> windows;
-    for (QWidget* w : QApplication::topLevelWidgets())
-        if (auto* main = qobject_cast<rigidlab::ui::MainWindow*>(w))
-            windows << main;
-    for (const QPointer<rigidlab::ui::MainWindow>& w : windows)
-        delete w.data();
+    deleteWindows();
     return status;
 }

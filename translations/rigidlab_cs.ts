@@ -71,10 +71,6 @@
         <translation>číslo větší než 0 a&#xa0;nejvýše %1</translation>
     </message>
     <message>
-        <source>cs or en</source>
-        <translation>cs nebo en</translation>
-    </message>
-    <message>
         <source>a folder</source>
         <translation>složku</translation>
     </message>
@@ -98,10 +94,6 @@
         <source>no display to open the window on: set DISPLAY (an X server, or Xvfb) or WAYLAND_DISPLAY, or QT_QPA_PLATFORM=offscreen</source>
         <translation>není displej, na kterém by se otevřelo okno: nastavte DISPLAY (X server nebo Xvfb) nebo WAYLAND_DISPLAY, případně QT_QPA_PLATFORM=offscreen</translation>
     </message>
-    <message>
-        <source>Language of the interface: cs or en (View › Language saves a choice; without either, the system&apos;s language).</source>
-        <translation>Jazyk rozhraní: cs nebo en (volbu uloží i&#xa0;Zobrazení › Jazyk; bez obojího jazyk systému).</translation>
-    </message>
     <message numerus="yes">
         <source>%n file(s) written into %1</source>
         <translation>
@@ -109,6 +101,14 @@
             <numerusform>%n soubory zapsány do %1</numerusform>
             <numerusform>%n souborů zapsáno do %1</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Language of the interface, one of %1 (View › Language saves a choice; without either, the system&apos;s language).</source>
+        <translation>Jazyk rozhraní, jeden z&#xa0;kódů %1 (volbu uloží i&#xa0;Zobrazení › Jazyk; bez obojího jazyk systému).</translation>
+    </message>
+    <message>
+        <source>one of %1</source>
+        <translation>jeden z&#xa0;kódů %1</translation>
     </message>
 </context>
 <context>
@@ -335,6 +335,21 @@
     <message>
         <source>stopped at t = %1 s: %2</source>
         <translation>zastaveno v&#xa0;čase t = %1&#xa0;s: %2</translation>
+    </message>
+</context>
+<context>
+    <name>DriftWords</name>
+    <message>
+        <source>energy drift %1 %</source>
+        <translation>energetický drift %1&#xa0;%</translation>
+    </message>
+    <message>
+        <source>energy drift (integrator, contacts, joints) %1 %</source>
+        <translation>energetický drift (integrátor, kontakty, klouby) %1&#xa0;%</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Energy drift: how far the total energy (motion, height, springs) has moved from its value at the start, as a share of it, after adding back what bounces, friction, drag and dampers took. Exact physics would keep it at 0.&lt;/p&gt;&lt;p&gt;What is left is numerical error: the integrator&apos;s, step by step; that of the corrections after contacts and joints are solved (bodies that sank into each other are pushed apart, pins are pulled back together); and that of the estimate of what the contacts took, which grows steadily while bodies rest on each other. A method that follows a free fall exactly, such as velocity Verlet, still drifts where bodies touch.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Energetický drift: o&#xa0;kolik se celková energie (pohyb, výška, pružiny) změnila od začátku, jako podíl počáteční hodnoty, po přičtení toho, co odebraly odrazy, tření, odpor prostředí a&#xa0;tlumiče. Přesná fyzika by ho udržela na 0.&lt;/p&gt;&lt;p&gt;Co zbývá, je numerická chyba: chyba integrátoru krok za krokem; chyba oprav po vyřešení kontaktů a&#xa0;kloubů (tělesa, která se do sebe zabořila, se odsunou od sebe, čepy se přitáhnou zpět k&#xa0;sobě); a&#xa0;chyba odhadu toho, co odebraly kontakty, která stále roste, dokud na sobě tělesa leží. Metoda, která sleduje volný pád přesně, například rychlostní Verletova metoda, proto i&#xa0;tak driftuje tam, kde se tělesa dotýkají.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -2348,14 +2363,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>running</source>
         <translation>běží</translation>
-    </message>
-    <message>
-        <source>energy drift %1 %</source>
-        <translation>energetický drift %1&#xa0;%</translation>
-    </message>
-    <message>
-        <source>energy drift (numerical error) %1 %</source>
-        <translation>energetický drift (numerická chyba) %1&#xa0;%</translation>
     </message>
     <message>
         <source> · dissipated %1 J</source>

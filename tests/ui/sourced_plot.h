@@ -7,7 +7,7 @@
 //     plot->drain();
 
 #include "plots/plot_widget.h"
-#include "plots/sample_buffer.h"
+#include "simulation/sample_buffer.h"
 
 #include <memory>
 

@@ -6,7 +6,7 @@
 #include "common/language.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_widget.h"
-#include "plots/step_sampler.h"
+#include "simulation/step_sampler.h"
 
 #include "format/lesson.h"
 

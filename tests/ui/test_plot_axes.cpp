@@ -7,8 +7,8 @@
 #include "plots/plot_export.h"
 #include "plots/plot_range.h"
 #include "plots/plot_widget.h"
-#include "plots/step_sampler.h"
 #include "simulation/simulation_controller.h"
+#include "simulation/step_sampler.h"
 
 #include "format/scene_loader.h"
 

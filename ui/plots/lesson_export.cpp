@@ -4,7 +4,7 @@
 #include "common/display_names.h"
 #include "common/number_format.h"
 #include "plots/plot_widget.h"
-#include "plots/step_sampler.h"
+#include "simulation/step_sampler.h"
 
 #include "run/scene_run.h"
 

@@ -31,7 +31,7 @@
 //   points ______/\____|. . . .          ghost: faded, dashed
 //                       t (timeline)
 
-#include "plots/sample_buffer.h"
+#include "simulation/sample_buffer.h"
 
 #include <QString>
 

@@ -25,7 +25,7 @@
 
 #include "plots/plot_export.h"
 #include "plots/plot_series.h"
-#include "plots/sample_buffer.h"
+#include "simulation/sample_buffer.h"
 
 #include <QColor>
 #include <QElapsedTimer>

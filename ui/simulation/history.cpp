@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "simulation/history.h"
 
-#include "plots/step_sampler.h"
+#include "simulation/step_sampler.h"
 
 #include <algorithm>
 #include <limits>

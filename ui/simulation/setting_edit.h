@@ -5,8 +5,9 @@
 // of the same start they give the same world, bit for bit (the engine is deterministic), and
 // the same change marks on the plots. The language switch rebuilds the run from them.
 
-#include "rigidlab/physics/forces.h"
+#include "rigidlab/physics/world.h"
 
+#include <utility>
 #include <vector>
 
 namespace rigidlab::ui {
@@ -33,5 +34,25 @@ struct SettingEdit {
 };
 
 using SettingEdits = std::vector<SettingEdit>;
+
+/// The edits that give a world started as `start` the settings `now` (dt, integrator, solver,
+/// iterations, restitution, friction, gravity), all at step 0: what a reset keeps.
+SettingEdits editsAtStart(const physics::WorldDef& start, const physics::WorldDef& now);
+
+/// The edits of the run the controller has, in order. A change made after going back drops
+/// the edits of the future it replaces.
+class SettingEditLog {
+public:
+    const SettingEdits& edits() const { return m_edits; }
+    /// Logs `edit` as made at `step`; the edits made after `step` go.
+    void log(SettingEdit edit, long long step);
+    /// Drops the edits made after `step` (the run branched there).
+    void dropAfter(long long step);
+    /// The run starts again with these edits (a new scene: none).
+    void restart(SettingEdits edits = {}) { m_edits = std::move(edits); }
+
+private:
+    SettingEdits m_edits;
+};
 
 } // namespace rigidlab::ui

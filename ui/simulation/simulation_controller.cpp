@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "simulation/simulation_controller.h"
 
+#include "simulation/variant_layout.h"
+
 #include "rigidlab/physics/limits.h"
 
 #include "common/display_names.h"
-#include "plots/step_sampler.h"
 
 #include "format/limits.h"
 #include "format/scene_loader.h"
@@ -12,9 +13,7 @@
 #include <QLocale>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <numbers>
 #include <optional>
 
 namespace rigidlab::ui {
@@ -30,68 +29,8 @@ QString markNumber(double value)
     return locale.toString(value, 'g', 6);
 }
 
-constexpr int kFrameIntervalMs = 16;      // about 60 frames per second
-constexpr double kMaxFrameSeconds = 0.1;  // a longer gap (a paused debugger) counts as this
-constexpr double kPhysicsBudgetMs = 12.0; // physics may take this much of a frame
-constexpr double kGrabFrequency = 3.0;    // the grab spring's natural frequency [Hz]
-
-/// The box [m] around a world's static bodies (floor, walls); empty when it has none.
-/// corners: min x, min y, max x, max y.
-std::optional<std::array<double, 4>> staticExtent(const physics::World& world)
-{
-    std::optional<std::array<double, 4>> box;
-    auto add = [&box](const physics::Vec2& p) {
-        if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
-            return;
-        if (!box) {
-            box = std::array<double, 4>{p.x(), p.y(), p.x(), p.y()};
-            return;
-        }
-        auto& b = *box;
-        b = {std::min(b[0], p.x()), std::min(b[1], p.y()), std::max(b[2], p.x()),
-             std::max(b[3], p.y())};
-    };
-    for (const physics::Body& b : world.bodies()) {
-        if (b.moves())
-            continue;
-        const physics::Transform t = b.transform();
-        b.shape.visit(physics::Overloaded{[&](const physics::Circle& circle) {
-                                              const physics::Vec2 c = t.apply(circle.center);
-                                              const double r = circle.radius;
-                                              add(c - physics::Vec2(r, r));
-                                              add(c + physics::Vec2(r, r));
-                                          },
-                                          [&](const physics::Polygon& polygon) {
-                                              for (const physics::Vec2& v : polygon.vertices)
-                                                  add(t.apply(v));
-                                          }});
-    }
-    return box;
-}
-
-/// The shift between compared worlds drawn beside each other: the lesson's, or, where their
-/// floors and walls would overlap at it (a stack's floor is wider than the shift), as far in
-/// the same direction as the main world's static bodies are long, plus a gap. Never shorter
-/// than the lesson's. It only moves the drawing: the compared worlds run where they are.
-physics::Vec2 besideOffset(const physics::World& main, const physics::Vec2& offset)
-{
-    const double length = offset.norm();
-    const auto box = staticExtent(main);
-    if (!(length > 0) || !std::isfinite(length) || !box)
-        return offset;
-    const auto& b = *box;
-    const double w = b[2] - b[0], h = b[3] - b[1];
-    const bool overlap = std::abs(offset.x()) < w && std::abs(offset.y()) < h;
-    if (!overlap)
-        return offset;
-    // The box's length along the shift's direction, so that the shifted box clears it.
-    const physics::Vec2 dir = offset / length;
-    const double alongX = std::abs(dir.x()) > 1e-12 ? w / std::abs(dir.x()) : HUGE_VAL;
-    const double alongY = std::abs(dir.y()) > 1e-12 ? h / std::abs(dir.y()) : HUGE_VAL;
-    const double extent = std::min(alongX, alongY);
-    const double gap = std::max(0.5, 0.1 * extent);
-    return dir * std::max(length, extent + gap);
-}
+constexpr int kFrameIntervalMs = 16;     // about 60 frames per second
+constexpr double kMaxFrameSeconds = 0.1; // a longer gap (a paused debugger) counts as this
 
 } // namespace
 
@@ -107,7 +46,6 @@ SimulationController::SimulationController(QObject* parent) : QObject(parent)
     m_frameTimer.setTimerType(Qt::PreciseTimer);
     m_frameTimer.setInterval(kFrameIntervalMs);
     connect(&m_frameTimer, &QTimer::timeout, this, &SimulationController::advanceFrame);
-    m_rateClock.start();
 }
 
 void SimulationController::loadScene(const lessons::Scene& scene, const QString& path)
@@ -125,7 +63,7 @@ void SimulationController::loadWorlds(const lessons::Scene& scene, const QString
     m_scene = scene;
     m_path = path;
     m_sceneGravity = scene.world.gravity;
-    m_grab.reset();
+    m_grab.release();
     m_world = std::move(worlds.front());
     m_worldStart = m_world;
     m_variants.assign(std::make_move_iterator(worlds.begin() + 1),
@@ -133,8 +71,8 @@ void SimulationController::loadWorlds(const lessons::Scene& scene, const QString
     m_variantStarts = m_variants;
     m_variantLabels = labels;
     m_variantOffset = m_variants.empty() ? offset : besideOffset(m_world, offset);
-    m_watched.clear();
-    m_edits.clear();
+    m_watch.forget();
+    m_edits.restart();
     resetClock();
     emit sceneLoaded();
     emit settingsChanged();
@@ -146,7 +84,7 @@ void SimulationController::reset()
     // Back to the start, keeping the settings the user chose since.
     const physics::WorldDef settings = m_world.def();
     setRunning(false);
-    m_grab.reset();
+    m_grab.release();
     m_world = m_worldStart;
     m_world.setDt(settings.dt);
     m_world.setIntegrator(settings.integrator);
@@ -162,67 +100,27 @@ void SimulationController::reset()
         w.setGravity(settings.gravity);
     });
     // The run starts again with the settings kept: edits at step 0, made as just above.
-    using Kind = SettingEdit::Kind;
-    const physics::WorldDef& start = m_worldStart.def();
-    m_edits.clear();
-    if (settings.dt != start.dt)
-        m_edits.push_back({0, Kind::Dt, -1, settings.dt, 0.0, 0});
-    if (settings.integrator != start.integrator)
-        m_edits.push_back(
-            {0, Kind::Integrator, -1, 0.0, 0.0, static_cast<int>(settings.integrator)});
-    if (settings.solver != start.solver)
-        m_edits.push_back({0, Kind::Solver, -1, 0.0, 0.0, static_cast<int>(settings.solver)});
-    if (settings.iterations != start.iterations)
-        m_edits.push_back({0, Kind::Iterations, -1, 0.0, 0.0, settings.iterations});
-    if (settings.restitution != start.restitution)
-        m_edits.push_back({0, Kind::Restitution, -1, settings.restitution, 0.0, 0});
-    if (settings.friction != start.friction)
-        m_edits.push_back({0, Kind::Friction, -1, settings.friction, 0.0, 0});
-    if (settings.gravity != start.gravity)
-        m_edits.push_back({0, Kind::Gravity, -1, 0.0, 0.0, settings.gravity.isZero() ? 0 : 1});
+    m_edits.restart(editsAtStart(m_worldStart.def(), settings));
     resetClock();
     emit worldChanged();
 }
 
 void SimulationController::resetClock()
 {
-    m_world.updateDiagnostics();
-    m_energyReference = EnergyReference::of(m_world);
+    forEachWorld([](physics::World& w) { w.updateDiagnostics(); });
     m_history.reset(m_world);
     m_previousPoses.clear();
     m_accumulator = 0.0;
     m_slow = false;
-    m_sampleClock.reset();
-    m_samples.clear();
-    resetVariants();
-    m_measurements.reset(m_world, m_watched);
+    m_sampler.restart(m_world, m_variants);
+    m_watch.restart(m_world);
     emit samplesCleared();
     pushSample();
 }
 
-void SimulationController::resetVariants()
-{
-    m_variantReferences.clear();
-    for (physics::World& w : m_variants) {
-        w.updateDiagnostics();
-        m_variantReferences.push_back(EnergyReference::of(w));
-    }
-}
-
 void SimulationController::watch(const std::vector<lessons::Measure>& measures)
 {
-    m_watched = measures;
-    m_measurements.reset(m_world, m_watched);
-}
-
-double SimulationController::driftPercent() const
-{
-    return m_energyReference.driftPercent(m_world.diagnostics());
-}
-
-double SimulationController::dissipated() const
-{
-    return m_energyReference.dissipatedSince(m_world.diagnostics());
+    m_watch.watch(measures, m_world);
 }
 
 Pose SimulationController::drawPose(physics::BodyId id) const
@@ -245,14 +143,8 @@ void SimulationController::setRunning(bool running)
     m_running = running;
     m_accumulator = 0.0;
     if (running) {
-        m_wall.start();
+        m_timing.runStarted();
         m_frameTimer.start();
-        // The rates measure this run only, not the pause before it.
-        m_rateClock.restart();
-        m_stepsThisSecond = 0;
-        m_simulatedThisSecond = 0.0;
-        m_stepsPerSecond = 0.0;
-        m_realTimeFactor.reset();
     } else {
         m_frameTimer.stop();
         m_slow = false;
@@ -265,21 +157,11 @@ void SimulationController::doStep()
 {
     const long long step = m_world.stepCount();
     const bool replaying = step < m_history.latest();
-    std::optional<UserInput> input;
-    if (m_grab) {
-        // The grab spring: k = m w^2, critically damped, at the grabbed point.
-        const physics::Body& b = m_world.body(m_grab->body);
-        const physics::Vec2 p = b.transform().apply(m_grab->localPoint);
-        const double h = m_world.def().dt;
-        const double w = std::min(2.0 * std::numbers::pi * kGrabFrequency, 0.5 / h);
-        const physics::Vec2 f =
-            b.mass * (w * w * (m_grab->target - p) - 2.0 * w * b.pointVelocity(p));
-        input = UserInput{m_grab->body, f, physics::cross(physics::Vec2(p - b.position), f)};
-        if (replaying) {
-            m_history.branchAt(m_world); // a new push makes a new future
-            dropEditsAfterNow();
-        }
-    } else if (replaying) {
+    std::optional<UserInput> input = m_grab.input(m_world);
+    if (input && replaying) {
+        m_history.branchAt(m_world); // a new push makes a new future
+        m_edits.dropAfter(step);
+    } else if (!input && replaying) {
         if (const UserInput* logged = m_history.inputFor(step))
             input = *logged;
     }
@@ -292,73 +174,48 @@ void SimulationController::doStep()
     for (physics::World& w : m_variants)
         w.step();
     m_history.recorded(m_world, input ? &*input : nullptr);
-    m_measurements.observe(m_world);
-    ++m_stepsThisSecond;
+    m_watch.observe(m_world);
+    m_timing.stepTaken();
     pushSample();
 }
 
 void SimulationController::pushSample()
 {
-    // Taken when due as the lesson export takes them (step_sampler.h: SampleClock).
-    if (!m_sampleClock.due(stepTime(m_world)))
-        return;
-    // Variant 0 is the main world; the others follow in order (step_sampler.h, as the
-    // lesson export samples).
-    m_samples.push(makeSample(m_world, m_energyReference, m_variants, m_variantReferences,
-                              !m_variantLabels.isEmpty()));
+    // Variant 0 is the main world; the others follow in order, as the lesson export samples.
+    m_sampler.record(m_world, m_variants, !m_variantLabels.isEmpty());
 }
 
 void SimulationController::advanceFrame()
 {
-    QElapsedTimer physicsClock;
-    physicsClock.start();
-    // Nanoseconds: restart() would round to whole milliseconds and lose ~3% of the time.
-    const double unclampedWall = m_wall.nsecsElapsed() * 1e-9;
-    const double wall = std::min(unclampedWall, kMaxFrameSeconds);
-    m_wall.start();
+    advanceClock(m_timing.wallSinceLastFrame());
+}
+
+void SimulationController::advanceClock(double wallSeconds)
+{
+    m_timing.physicsStarted();
+    const double wall = std::min(wallSeconds, kMaxFrameSeconds);
     const double h = m_world.def().dt;
     // A frame longer than kMaxFrameSeconds (the window was busy) loses the rest of its time:
     // the run fell behind real time, and says so.
-    bool slow = unclampedWall > kMaxFrameSeconds;
+    bool slow = wallSeconds > kMaxFrameSeconds;
     if (m_running && !m_stepsHeld) {
         m_accumulator += wall * m_timeScale;
         while (m_accumulator >= h) {
-            if (physicsClock.nsecsElapsed() * 1e-6 > kPhysicsBudgetMs) {
+            if (m_timing.physicsOverBudget()) {
                 slow = true;
                 m_accumulator = 0.0; // drop what cannot be done in time
                 break;
             }
             doStep();
             m_accumulator -= h;
-            m_simulatedThisSecond += h;
+            m_timing.simulated(h);
         }
     }
-    m_physicsMs = physicsClock.nsecsElapsed() * 1e-6;
-    m_frameMs = wall * 1e3;
-    if (m_measureFrames > 0) {
-        m_measuredFrameMs.push_back(unclampedWall * 1e3);
-        m_measuredPhysicsMs.push_back(m_physicsMs);
-        if (--m_measureFrames == 0)
-            emit framesMeasured(m_measuredFrameMs, m_measuredPhysicsMs);
-    }
+    if (m_timing.frameDone(wallSeconds, wall))
+        emit framesMeasured(m_timing.measuredFrameMs(), m_timing.measuredPhysicsMs());
     m_slow = slow;
-    if (m_rateClock.elapsed() >= 1000) {
-        const double seconds = static_cast<double>(m_rateClock.nsecsElapsed()) * 1e-9;
-        m_rateClock.restart();
-        m_stepsPerSecond = static_cast<double>(m_stepsThisSecond) / seconds;
-        m_realTimeFactor = m_simulatedThisSecond / seconds;
-        m_stepsThisSecond = 0;
-        m_simulatedThisSecond = 0.0;
-    }
     emit worldChanged();
     emit frameAdvanced();
-}
-
-void SimulationController::measureFrames(int frames)
-{
-    m_measureFrames = frames;
-    m_measuredFrameMs.clear();
-    m_measuredPhysicsMs.clear();
 }
 
 void SimulationController::stepForward()
@@ -395,9 +252,9 @@ void SimulationController::seek(long long step)
         w.updateDiagnostics();
         m_variants[i] = std::move(w);
     }
-    m_measurements.rewind(m_world);
+    m_watch.rewind(m_world);
     m_previousPoses.clear();
-    m_sampleClock.rewound(stepTime(m_world)); // sample again from here on
+    m_sampler.rewound(stepTime(m_world)); // sample again from here on
     emit rewound(stepTime(m_world));
     pushSample();
     emit worldChanged();
@@ -412,19 +269,6 @@ void SimulationController::setTimeScale(double scale)
         return;
     m_timeScale = scale;
     emit settingsChanged();
-}
-
-void SimulationController::dropEditsAfterNow()
-{
-    const long long now = m_world.stepCount();
-    std::erase_if(m_edits, [now](const SettingEdit& e) { return e.step > now; });
-}
-
-void SimulationController::logEdit(SettingEdit edit)
-{
-    dropEditsAfterNow();
-    edit.step = m_world.stepCount();
-    m_edits.push_back(edit);
 }
 
 void SimulationController::applyEdit(const SettingEdit& edit)
@@ -563,34 +407,6 @@ void SimulationController::rotateBody(physics::BodyId id, double radians)
     logEdit({0, SettingEdit::Kind::BodyRotation, id, radians, 0.0, 0});
     m_world.setBodyAngle(id, angle); // about the centre of mass; wakes the body
     afterEdit(QString());
-}
-
-void SimulationController::grab(physics::BodyId id, const physics::Vec2& worldPoint)
-{
-    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
-        !m_world.body(id).isDynamic())
-        return;
-    m_grab = Grab{id, m_world.body(id).transform().applyInverse(worldPoint), worldPoint};
-}
-
-void SimulationController::dragTo(const physics::Vec2& worldPoint)
-{
-    if (m_grab)
-        m_grab->target = worldPoint;
-}
-
-void SimulationController::release()
-{
-    m_grab.reset();
-}
-
-bool SimulationController::grabLine(physics::Vec2& from, physics::Vec2& to) const
-{
-    if (!m_grab)
-        return false;
-    from = m_world.body(m_grab->body).transform().apply(m_grab->localPoint);
-    to = m_grab->target;
-    return true;
 }
 
 } // namespace rigidlab::ui

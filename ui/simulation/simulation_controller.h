@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The one owner of the world and its clock. The window's widgets read from it and ask it to
-// change things; nothing else steps or edits the world.
+// change things; nothing else steps or edits the world. It hands the rest to its helpers:
+// the plots' samples and the energy references (sample_recorder.h), a lesson's measurements
+// (lesson_watch.h), the grab spring (grab_spring.h), frame timing (frame_timing.h), the
+// settings-edit log (setting_edit.h) and time travel (history.h).
 //
 // Real time: the physics runs on a fixed dt. Each frame adds the wall time that passed
 // (times the time scale) to an accumulator and takes as many steps as fit; the view draws
@@ -9,16 +12,16 @@
 // number of steps or milliseconds of physics (no spiral of death): when it has to stop early
 // the run is marked "slower than real time".
 
-#include "plots/sample_buffer.h"
-#include "plots/step_sampler.h"
+#include "simulation/frame_timing.h"
+#include "simulation/grab_spring.h"
 #include "simulation/history.h"
+#include "simulation/lesson_watch.h"
+#include "simulation/sample_recorder.h"
 #include "simulation/setting_edit.h"
 
 #include "format/scene.h"
 #include "rigidlab/physics/world.h"
-#include "run/measurements.h"
 
-#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
 #include <QTimer>
@@ -49,7 +52,10 @@ public:
     const lessons::Scene& scene() const { return m_scene; }
     const QString& scenePath() const { return m_path; }
     const physics::World& world() const { return m_world; }
-    const SampleBuffer& samples() const { return m_samples; }
+    const SampleBuffer& samples() const { return m_sampler.samples(); }
+    /// The clock's time: the time of the world's current step as the plots, the timeline and
+    /// the status bar show it (stepTime: t = 0.35, not 0.35000000000000009) [s].
+    double time() const { return stepTime(m_world); }
 
     // Worlds run side by side with the main one (a lesson comparing integrators or solvers).
     // They step in lockstep with it and share its dt, restitution, friction and gravity.
@@ -61,38 +67,38 @@ public:
 
     // What a lesson measures while the world runs (bounces, collisions, timed values).
     void watch(const std::vector<lessons::Measure>& measures);
-    const lessons::Measurements& measurements() const { return m_measurements; }
+    const lessons::Measurements& measurements() const { return m_watch.measurements(); }
 
     bool isRunning() const { return m_running; }
     double timeScale() const { return m_timeScale; }
     bool slowerThanRealTime() const { return m_slow; }
     /// Steps per second of wall time, over the last second.
-    double stepsPerSecond() const { return m_stepsPerSecond; }
+    double stepsPerSecond() const { return m_timing.stepsPerSecond(); }
     /// Simulated seconds per wall second while running, over the last whole second since
     /// play was pressed; nothing before that second has passed.
-    std::optional<double> realTimeFactor() const { return m_realTimeFactor; }
+    std::optional<double> realTimeFactor() const { return m_timing.realTimeFactor(); }
     /// Wall time of the last frame, and the part of it spent in physics [ms].
-    double frameMilliseconds() const { return m_frameMs; }
-    double physicsMilliseconds() const { return m_physicsMs; }
+    double frameMilliseconds() const { return m_timing.frameMilliseconds(); }
+    double physicsMilliseconds() const { return m_timing.physicsMilliseconds(); }
     /// Records the wall time of the next `frames` frames (from one frame to the next, drawing
     /// included) and the physics part of each, then emits framesMeasured (rigidlab
     /// --measure-frames).
-    void measureFrames(int frames);
+    void measureFrames(int frames) { m_timing.measureFrames(frames); }
     /// Relative energy drift since the start, the numerical error alone: what contacts, drag
-    /// and dampers took is added back [%].
-    double driftPercent() const;
+    /// and dampers took is added back [%] (drift_words.h says it in words).
+    double driftPercent() const { return m_sampler.driftPercent(m_world); }
     /// The scene's energy scale: |E0|, or another scale when E0 is near 0 [J]. Energies far
     /// below it are rounding, not physics.
-    double energyScale() const { return m_energyReference.scale; }
+    double energyScale() const { return m_sampler.energyScale(); }
     /// Energy taken since the start by contacts (bounces, friction), drag and dampers [J].
-    double dissipated() const;
+    double dissipated() const { return m_sampler.dissipated(m_world); }
 
     /// The body pose to draw: between the last two steps, by how far the clock is into the next.
     Pose drawPose(physics::BodyId id) const;
 
     /// The settings changed by hand in this run, in order, each at its step (reset() keeps
     /// the ones it keeps, as edits at step 0; a change after going back drops the later ones).
-    const SettingEdits& edits() const { return m_edits; }
+    const SettingEdits& edits() const { return m_edits.edits(); }
     /// Makes `edit` as its setter would, now (at whatever step the world is).
     void applyEdit(const SettingEdit& edit);
 
@@ -105,18 +111,19 @@ public:
     double earliestTime() const { return m_history.earliestTime(); }
     long long currentStep() const { return m_world.stepCount(); }
 
-    // Dragging a body: a stiff, critically damped spring from a point of the body to the
-    // cursor, applied through the seed's force accumulator, so that the physics stays physical
-    // and a release throws the body with the velocity it has.
-    void grab(physics::BodyId id, const physics::Vec2& worldPoint);
-    void dragTo(const physics::Vec2& worldPoint);
-    void release();
-    std::optional<physics::BodyId> grabbed() const
+    // Dragging a body with the grab spring (grab_spring.h).
+    void grab(physics::BodyId id, const physics::Vec2& worldPoint)
     {
-        return m_grab ? std::optional(m_grab->body) : std::nullopt;
+        m_grab.grab(m_world, id, worldPoint);
     }
+    void dragTo(const physics::Vec2& worldPoint) { m_grab.dragTo(worldPoint); }
+    void release() { m_grab.release(); }
+    std::optional<physics::BodyId> grabbed() const { return m_grab.body(); }
     /// The grab spring's two ends for drawing, when dragging.
-    bool grabLine(physics::Vec2& from, physics::Vec2& to) const;
+    bool grabLine(physics::Vec2& from, physics::Vec2& to) const
+    {
+        return m_grab.line(m_world, from, to);
+    }
 
     /// Held, the world never steps: Step, Back and seek do nothing (the scene editor holds it
     /// while editing; running it again leaves Edit mode first, which lets go).
@@ -148,6 +155,9 @@ public slots:
     void rotateBody(physics::BodyId id, double radians);
     /// Advances the clock by the wall time since the last frame (the frame timer calls it).
     void advanceFrame();
+    /// Advances the clock as a frame would after `wallSeconds` of wall time (advanceFrame
+    /// with the time measured; a test gives it).
+    void advanceClock(double wallSeconds);
 
 signals:
     void sceneLoaded();
@@ -171,10 +181,8 @@ private:
     void pushSample();
     void afterEdit(const QString& mark);
     /// Logs an edit made now; edits of the future the change drops go.
-    void logEdit(SettingEdit edit);
-    void dropEditsAfterNow();
+    void logEdit(const SettingEdit& edit) { m_edits.log(edit, m_world.stepCount()); }
     void resetClock();
-    void resetVariants();
     template <typename Fn> void forEachWorld(Fn&& fn);
 
     lessons::Scene m_scene;
@@ -183,40 +191,23 @@ private:
     physics::World m_worldStart; ///< as loaded, for reset
     std::vector<Pose> m_previousPoses;
     History m_history;
-    SampleBuffer m_samples;
-    EnergyReference m_energyReference; ///< what the main world's drift is measured against
-    SampleClock m_sampleClock;         ///< when the next sample is due (as the lesson export's)
+    SampleRecorder m_sampler;
     physics::Vec2 m_sceneGravity = physics::Vec2::Zero();
     std::vector<physics::World> m_variants;
     std::vector<physics::World> m_variantStarts; ///< to rebuild them on reset and seek
-    std::vector<EnergyReference> m_variantReferences;
     QStringList m_variantLabels;
     physics::Vec2 m_variantOffset = physics::Vec2::Zero();
-    lessons::Measurements m_measurements;
-    std::vector<lessons::Measure> m_watched;
-    SettingEdits m_edits;
+    LessonWatch m_watch;
+    SettingEditLog m_edits;
+    GrabSpring m_grab;
+    FrameTiming m_timing;
 
     QTimer m_frameTimer;
-    QElapsedTimer m_wall;
     double m_accumulator = 0.0; ///< simulated time owed to the clock [s]
     double m_timeScale = 1.0;
     bool m_running = false;
     bool m_stepsHeld = false; ///< see setStepsHeld
     bool m_slow = false;
-    double m_frameMs = 0.0, m_physicsMs = 0.0, m_stepsPerSecond = 0.0;
-    int m_measureFrames = 0; ///< frames still to record, see measureFrames()
-    std::vector<double> m_measuredFrameMs, m_measuredPhysicsMs;
-    long long m_stepsThisSecond = 0;
-    double m_simulatedThisSecond = 0.0; ///< simulated time the clock ran since m_rateClock [s]
-    std::optional<double> m_realTimeFactor;
-    QElapsedTimer m_rateClock;
-
-    struct Grab {
-        physics::BodyId body = -1;
-        physics::Vec2 localPoint = physics::Vec2::Zero(); ///< in the body's origin frame [m]
-        physics::Vec2 target = physics::Vec2::Zero();     ///< the cursor [m]
-    };
-    std::optional<Grab> m_grab;
 };
 
 } // namespace rigidlab::ui

@@ -5,6 +5,7 @@
 #include "common/display_names.h"
 #include "common/status_text.h"
 #include "panels/divergence_banner.h"
+#include "simulation/drift_words.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 #include "window/settings_sync.h"
@@ -77,7 +78,7 @@ void MainWindow::updateStatus()
     const QLocale locale;
     const physics::World& w = m_controller->world();
     const bool running = m_controller->isRunning();
-    m_statusTime->setText(tr("t = %1 s").arg(locale.toString(w.time(), 'f', 3)));
+    m_statusTime->setText(tr("t = %1 s").arg(locale.toString(m_controller->time(), 'f', 3)));
     // Simulated seconds per wall second; while paused there is no rate to show.
     if (!running)
         m_statusRate->setText(tr("paused"));
@@ -86,11 +87,11 @@ void MainWindow::updateStatus()
     else
         m_statusRate->setText(tr("running"));
     // Drift is the numerical error alone: what contacts, friction, drag and dampers took is
-    // physics, said apart.
+    // physics, said apart. The label says whose error; the tooltip explains it.
     // On a projector, in short: the line must fit 1024 pixels at one and a half times the size.
     QString drift =
-        (m_presentation ? tr("energy drift %1 %") : tr("energy drift (numerical error) %1 %"))
-            .arg(driftPercentText(m_controller->driftPercent(), locale));
+        driftLabel(m_presentation).arg(driftPercentText(m_controller->driftPercent(), locale));
+    m_statusDrift->setToolTip(driftExplanation());
     const double lost = m_controller->dissipated();
     if (std::abs(lost) > 1e-9)
         drift += (m_presentation ? tr(" · dissipated %1 J")
@@ -147,11 +148,13 @@ void MainWindow::updateTimeline()
 {
     // The label follows the drag too; the slider itself is left to the hand that holds it.
     const long long lo = m_controller->earliestStep(), hi = m_controller->latestStep();
+    // One clock: the status bar's time moves with the timeline's, in the same frame.
+    const QString t = QLocale().toString(m_controller->time(), 'f', 3);
+    m_statusTime->setText(tr("t = %1 s").arg(t));
     // Step counts grouped as the locale does ("10 000" in Czech), as on the plots' axes.
-    m_timeLabel->setText(tr(" step %1 of %2 · t = %3 s")
-                             .arg(QLocale().toString(m_controller->currentStep()),
-                                  QLocale().toString(hi),
-                                  QLocale().toString(m_controller->world().time(), 'f', 3)));
+    m_timeLabel->setText(
+        tr(" step %1 of %2 · t = %3 s")
+            .arg(QLocale().toString(m_controller->currentStep()), QLocale().toString(hi), t));
     if (m_timeline->isSliderDown())
         return;
     const QSignalBlocker block(m_timeline);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "plots/step_sampler.h"
+#include "simulation/step_sampler.h"
 
 #include "run/scene_run.h"
 

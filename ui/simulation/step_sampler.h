@@ -5,7 +5,7 @@
 // The window's controller and the headless lesson export (lesson_export.h) sample the same
 // way, so that an exported plot shows what the window showed.
 
-#include "plots/sample_buffer.h"
+#include "simulation/sample_buffer.h"
 
 #include "rigidlab/physics/world.h"
 
