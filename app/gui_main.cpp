@@ -231,7 +231,7 @@ int parseArguments(const QStringList& args, Options& options, QString& message)
     }
     if (parser.isSet(lang)) {
         options.lang = value(lang);
-        if (options.lang != QLatin1String("cs") && options.lang != QLatin1String("en")) {
+        if (!rigidlab::ui::findLanguage(options.lang)) {
             message = needs(QStringLiteral("lang"), langNeeds, options.lang);
             return 2;
         }
