@@ -45,14 +45,6 @@ std::span<const SettingsField> settingsFields()
     return rows::settingsRows();
 }
 
-const SettingsField* findSettingsField(std::string_view key)
-{
-    for (const SettingsField& f : rows::settingsRows())
-        if (f.key == key)
-            return &f;
-    return nullptr;
-}
-
 QStringList keys(Object object)
 {
     QStringList out;
