@@ -305,24 +305,8 @@
         <translation>celková energie</translation>
     </message>
     <message>
-        <source>the %1 of body “%2” is no longer finite</source>
-        <translation>%1 tělesa „%2“ už není konečné číslo</translation>
-    </message>
-    <message>
         <source>the total energy is no longer finite</source>
         <translation>celková energie už není konečné číslo</translation>
-    </message>
-    <message>
-        <source>the total energy grew from %1 J to %2 J, past the bound of %3 J</source>
-        <translation>celková energie vzrostla z&#xa0;%1&#xa0;J na %2&#xa0;J, přes mez %3&#xa0;J</translation>
-    </message>
-    <message>
-        <source> (body “%1” holds the most kinetic energy)</source>
-        <translation> (největší kinetickou energii má těleso „%1“)</translation>
-    </message>
-    <message>
-        <source>The simulation diverged at t = %1 s (step %2, dt = %3 s, %4): %5. It stopped here rather than draw garbage.</source>
-        <translation>Simulace divergovala v&#xa0;čase t = %1&#xa0;s (krok %2, dt = %3&#xa0;s, %4): %5. Zastavila se tady, aby nekreslila nesmysly.</translation>
     </message>
     <message>
         <source>energy blew up</source>
@@ -335,6 +319,26 @@
     <message>
         <source>stopped at t = %1 s: %2</source>
         <translation>zastaveno v&#xa0;čase t = %1&#xa0;s: %2</translation>
+    </message>
+    <message>
+        <source>body &quot;%1&quot;: %2 is no longer finite</source>
+        <translation>těleso „%1“: %2 už není konečné číslo</translation>
+    </message>
+    <message>
+        <source>the total energy grew to %1 J, past the bound of %2 J</source>
+        <translation>celková energie vzrostla na %1&#xa0;J, přes mez %2&#xa0;J</translation>
+    </message>
+    <message>
+        <source> (body &quot;%1&quot; holds the most kinetic energy)</source>
+        <translation> (největší kinetickou energii má těleso „%1“)</translation>
+    </message>
+    <message>
+        <source>diverged at t = %1 s (step %2, dt = %3 s, %4): %5</source>
+        <translation>divergovala v&#xa0;čase t = %1&#xa0;s (krok %2, dt = %3&#xa0;s, %4): %5</translation>
+    </message>
+    <message>
+        <source>The simulation %1. It stopped here rather than draw garbage.</source>
+        <translation>Simulace %1. Zastavila se tady, aby nekreslila nesmysly.</translation>
     </message>
 </context>
 <context>
@@ -401,6 +405,26 @@
     <message>
         <source>%1; overlapping bodies are pushed apart when the scene runs</source>
         <translation>%1; překrývající se tělesa se po spuštění scény od sebe odtlačí</translation>
+    </message>
+    <message>
+        <source>must be given</source>
+        <translation>musí být zadáno</translation>
+    </message>
+    <message>
+        <source>a shape is drawn, or changed through its sizes</source>
+        <translation>tvar se kreslí nebo mění přes své rozměry</translation>
+    </message>
+    <message>
+        <source>not a value this field holds</source>
+        <translation>tato vlastnost takovou hodnotu nemá</translation>
+    </message>
+    <message>
+        <source>there is no property &quot;%1&quot;</source>
+        <translation>vlastnost „%1“ neexistuje</translation>
+    </message>
+    <message>
+        <source>there is no %1</source>
+        <translation>%1 neexistuje</translation>
     </message>
 </context>
 <context>
@@ -662,16 +686,8 @@
         <translation>neznámý integrátor &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
-        <source>must be from %1 to %2 s, got %3</source>
-        <translation>musí být od %1 do %2&#xa0;s, je %3</translation>
-    </message>
-    <message>
         <source>unknown solver &quot;%1&quot; (expected %2)</source>
         <translation>neznámý řešič &quot;%1&quot; (očekáváno: %2)</translation>
-    </message>
-    <message>
-        <source>must be from %1 to %2, got %3</source>
-        <translation>musí být od %1 do %2, je %3</translation>
     </message>
     <message>
         <source>compare &quot;integrators&quot; or &quot;solvers&quot;, not both</source>
@@ -1048,6 +1064,197 @@
     <message>
         <source>least overlap: axis %1, the contact normal (arrow)</source>
         <translation>nejmenší překryv: osa %1, normála kontaktu (šipka)</translation>
+    </message>
+</context>
+<context>
+    <name>SceneSchema</name>
+    <message>
+        <source>dynamic</source>
+        <translation>dynamické</translation>
+    </message>
+    <message>
+        <source>static</source>
+        <translation>statické</translation>
+    </message>
+    <message>
+        <source>kinematic</source>
+        <translation>kinematické</translation>
+    </message>
+    <message>
+        <source>Title</source>
+        <translation>Název</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Popis</translation>
+    </message>
+    <message>
+        <source>Gravity gx</source>
+        <translation>Tíhové zrychlení gx</translation>
+    </message>
+    <message>
+        <source>Gravity gy</source>
+        <translation>Tíhové zrychlení gy</translation>
+    </message>
+    <message>
+        <source>Time step dt</source>
+        <translation>Časový krok dt</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>Integrátor</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Řešič</translation>
+    </message>
+    <message>
+        <source>Iterations</source>
+        <translation>Iterace</translation>
+    </message>
+    <message>
+        <source>Restitution e</source>
+        <translation>Koeficient restituce e</translation>
+    </message>
+    <message>
+        <source>Friction μ</source>
+        <translation>Tření μ</translation>
+    </message>
+    <message>
+        <source>Gravitation G</source>
+        <translation>Gravitační konstanta G</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Odpor prostředí</translation>
+    </message>
+    <message>
+        <source>Sleep</source>
+        <translation>Uspávání</translation>
+    </message>
+    <message>
+        <source>Continuous collision</source>
+        <translation>Spojitá detekce srážek</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerance</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>Id</translation>
+    </message>
+    <message>
+        <source>Label</source>
+        <translation>Popisek</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Tvar</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Šířka</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Výška</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Poloměr</translation>
+    </message>
+    <message>
+        <source>Position x</source>
+        <translation>Poloha x</translation>
+    </message>
+    <message>
+        <source>Position y</source>
+        <translation>Poloha y</translation>
+    </message>
+    <message>
+        <source>Angle θ</source>
+        <translation>Úhel θ</translation>
+    </message>
+    <message>
+        <source>Velocity vx</source>
+        <translation>Rychlost vx</translation>
+    </message>
+    <message>
+        <source>Velocity vy</source>
+        <translation>Rychlost vy</translation>
+    </message>
+    <message>
+        <source>Angular vel. ω</source>
+        <translation>Úhlová rychlost ω</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>Hustota</translation>
+    </message>
+    <message>
+        <source>Mass</source>
+        <translation>Hmotnost</translation>
+    </message>
+    <message>
+        <source>Collides</source>
+        <translation>Srážky</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Barva</translation>
+    </message>
+    <message>
+        <source>Body A</source>
+        <translation>Těleso A</translation>
+    </message>
+    <message>
+        <source>Anchor A x</source>
+        <translation>Úchyt A x</translation>
+    </message>
+    <message>
+        <source>Anchor A y</source>
+        <translation>Úchyt A y</translation>
+    </message>
+    <message>
+        <source>Body B</source>
+        <translation>Těleso B</translation>
+    </message>
+    <message>
+        <source>Anchor B x</source>
+        <translation>Úchyt B x</translation>
+    </message>
+    <message>
+        <source>Anchor B y</source>
+        <translation>Úchyt B y</translation>
+    </message>
+    <message>
+        <source>Stiffness k</source>
+        <translation>Tuhost pružiny k</translation>
+    </message>
+    <message>
+        <source>Damping c</source>
+        <translation>Tlumení c</translation>
+    </message>
+    <message>
+        <source>Rest length</source>
+        <translation>Klidová délka</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>Gravitace</translation>
+    </message>
+    <message>
+        <source>Time scale</source>
+        <translation>Zpomalení času</translation>
     </message>
 </context>
 <context>
@@ -1898,14 +2105,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>The body&apos;s mass; its moment of inertia scales with it</source>
         <translation>Hmotnost tělesa; moment setrvačnosti se mění úměrně s&#xa0;ní</translation>
-    </message>
-    <message>
-        <source>Restitution e</source>
-        <translation>Koeficient restituce e</translation>
-    </message>
-    <message>
-        <source>Friction μ</source>
-        <translation>Tření μ</translation>
     </message>
     <message>
         <source>Body</source>
@@ -2856,54 +3055,6 @@ B&#xa0;%3 … %4</translation>
         <translation>Těleso</translation>
     </message>
     <message>
-        <source>Id</source>
-        <translation>Id</translation>
-    </message>
-    <message>
-        <source>dynamic</source>
-        <translation>dynamické</translation>
-    </message>
-    <message>
-        <source>static</source>
-        <translation>statické</translation>
-    </message>
-    <message>
-        <source>kinematic</source>
-        <translation>kinematické</translation>
-    </message>
-    <message>
-        <source>Type</source>
-        <translation>Typ</translation>
-    </message>
-    <message>
-        <source>Density</source>
-        <translation>Hustota</translation>
-    </message>
-    <message>
-        <source>Mass</source>
-        <translation>Hmotnost</translation>
-    </message>
-    <message>
-        <source>Restitution e</source>
-        <translation>Koeficient restituce e</translation>
-    </message>
-    <message>
-        <source>Friction μ</source>
-        <translation>Tření μ</translation>
-    </message>
-    <message>
-        <source>Velocity vx</source>
-        <translation>Rychlost vx</translation>
-    </message>
-    <message>
-        <source>Velocity vy</source>
-        <translation>Rychlost vy</translation>
-    </message>
-    <message>
-        <source>Angular vel. ω</source>
-        <translation>Úhlová rychlost ω</translation>
-    </message>
-    <message>
         <source>Set %1</source>
         <translation>Nastavit: %1</translation>
     </message>
@@ -2912,60 +3063,8 @@ B&#xa0;%3 … %4</translation>
         <translation>Pružina</translation>
     </message>
     <message>
-        <source>Stiffness k</source>
-        <translation>Tuhost pružiny k</translation>
-    </message>
-    <message>
-        <source>Damping c</source>
-        <translation>Tlumení c</translation>
-    </message>
-    <message>
-        <source>Rest length</source>
-        <translation>Klidová délka</translation>
-    </message>
-    <message>
         <source>World</source>
         <translation>Svět</translation>
-    </message>
-    <message>
-        <source>Gravity gx</source>
-        <translation>Tíhové zrychlení gx</translation>
-    </message>
-    <message>
-        <source>Gravity gy</source>
-        <translation>Tíhové zrychlení gy</translation>
-    </message>
-    <message>
-        <source>Time step dt</source>
-        <translation>Časový krok dt</translation>
-    </message>
-    <message>
-        <source>ms</source>
-        <translation>ms</translation>
-    </message>
-    <message>
-        <source>Iterations</source>
-        <translation>Iterace</translation>
-    </message>
-    <message>
-        <source>Integrator</source>
-        <translation>Integrátor</translation>
-    </message>
-    <message>
-        <source>Set integrator</source>
-        <translation>Nastavit integrátor</translation>
-    </message>
-    <message>
-        <source>Solver</source>
-        <translation>Řešič</translation>
-    </message>
-    <message>
-        <source>Set solver</source>
-        <translation>Nastavit řešič</translation>
-    </message>
-    <message>
-        <source>Colour</source>
-        <translation>Barva</translation>
     </message>
     <message>
         <source>Default colour</source>
@@ -2990,6 +3089,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Set %1 of spring %2</source>
         <translation>Nastavit %1 pružiny %2</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scéna</translation>
     </message>
 </context>
 <context>

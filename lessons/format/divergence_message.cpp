@@ -2,13 +2,15 @@
 #include "format/divergence_message.h"
 #include "format/view_text.h"
 
+#include "rigidlab/physics/integrator.h"
+
 namespace rigidlab::lessons {
 
 namespace {
 
-QString number(double value)
+QString number(const QLocale& numbers, double value)
 {
-    return QString::number(value, 'g', 6);
+    return numbers.toString(value, 'g', 6);
 }
 
 } // namespace
@@ -18,39 +20,44 @@ QString quantityName(physics::Divergence::Quantity quantity)
     using Q = physics::Divergence::Quantity;
     switch (quantity) {
     case Q::Position:
-        return QStringLiteral("position");
+        return DivergenceWords::tr("position");
     case Q::Angle:
-        return QStringLiteral("angle");
+        return DivergenceWords::tr("angle");
     case Q::Velocity:
-        return QStringLiteral("velocity");
+        return DivergenceWords::tr("velocity");
     case Q::AngularVelocity:
-        return QStringLiteral("angular velocity");
+        return DivergenceWords::tr("angular velocity");
     case Q::TotalEnergy:
-        return QStringLiteral("total energy");
+        return DivergenceWords::tr("total energy");
     }
     return QString();
 }
 
-QString divergenceMessage(const physics::Divergence& d)
+QString divergenceReason(const physics::Divergence& d, const QString& bodyLabel,
+                         const QLocale& numbers)
 {
-    const std::string_view integrator = physics::integratorName(d.integrator);
-    const QString where =
-        QStringLiteral("diverged at t = %1 s (step %2, dt = %3 s, %4): ")
-            .arg(number(d.time), QString::number(d.step), number(d.dt), textFromView(integrator));
-    const QString body = QString::fromStdString(d.bodyName);
+    const QString body = bodyLabel.isEmpty() ? QString::fromStdString(d.bodyName) : bodyLabel;
     const bool energy = d.quantity == physics::Divergence::Quantity::TotalEnergy;
-    QString line;
     if (d.kind == physics::Divergence::Kind::NonFinite && !energy)
-        return where + QStringLiteral("body \"%1\": %2 is no longer finite")
-                           .arg(body, quantityName(d.quantity));
-    if (d.kind == physics::Divergence::Kind::NonFinite)
-        line = where + QStringLiteral("the total energy is no longer finite");
-    else
-        line = where + QStringLiteral("the total energy grew to %1 J, past the bound of %2 J")
-                           .arg(number(d.value), number(d.bound));
+        return DivergenceWords::tr("body \"%1\": %2 is no longer finite")
+            .arg(body, quantityName(d.quantity));
+    QString reason =
+        d.kind == physics::Divergence::Kind::NonFinite
+            ? DivergenceWords::tr("the total energy is no longer finite")
+            : DivergenceWords::tr("the total energy grew to %1 J, past the bound of %2 J")
+                  .arg(number(numbers, d.value), number(numbers, d.bound));
     if (d.body != physics::kWorld)
-        line += QStringLiteral(" (body \"%1\" holds the most kinetic energy)").arg(body);
-    return line;
+        reason += DivergenceWords::tr(" (body \"%1\" holds the most kinetic energy)").arg(body);
+    return reason;
+}
+
+QString divergenceMessage(const physics::Divergence& d, const QString& bodyLabel,
+                          const QLocale& numbers)
+{
+    return DivergenceWords::tr("diverged at t = %1 s (step %2, dt = %3 s, %4): %5")
+        .arg(number(numbers, d.time), numbers.toString(qlonglong(d.step)), number(numbers, d.dt),
+             textFromView(physics::integratorName(d.integrator)),
+             divergenceReason(d, bodyLabel, numbers));
 }
 
 } // namespace rigidlab::lessons

@@ -131,6 +131,34 @@ bool readScene(JsonReader& in, const QJsonObject& object, const QString& place,
     return true;
 }
 
+/// The step's "editor": {"tools": [...], "properties": [...]}: each list absent means all,
+/// empty means none.
+bool readEditorLock(JsonReader& in, const QJsonObject& object, const QString& place,
+                    LessonStep& step)
+{
+    if (!object.contains(u"editor")) {
+        return true;
+    }
+    const QString at = joinPlace(place, u"editor");
+    QJsonObject editor;
+    EditorLock lock;
+    if (!in.asObject(object.value(u"editor"), at, editor) ||
+        !in.checkKeys(editor, at, {u"tools", u"properties"}) ||
+        !readNames(in, editor, u"tools", at, kEditorToolNames, u"tool", lock.tools) ||
+        !readNames(in, editor, u"properties", at, schema::editorPropertyNames(), u"property",
+                   lock.properties)) {
+        return false;
+    }
+    if (!editor.contains(u"tools"))
+        for (std::string_view name : kEditorToolNames)
+            lock.tools << QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
+    if (!editor.contains(u"properties"))
+        for (std::string_view name : schema::editorPropertyNames())
+            lock.properties << QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
+    step.editor = lock;
+    return true;
+}
+
 } // namespace
 
 bool readDistinctNames(
@@ -205,25 +233,8 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
         }
         step.allow = allow;
     }
-    if (object.contains(u"editor")) {
-        // {"tools": [...], "properties": [...]}: each list absent means all, empty means none.
-        const QString at = joinPlace(place, u"editor");
-        QJsonObject editor;
-        EditorLock lock;
-        if (!in.asObject(object.value(u"editor"), at, editor) ||
-            !in.checkKeys(editor, at, {u"tools", u"properties"}) ||
-            !readNames(in, editor, u"tools", at, kEditorToolNames, u"tool", lock.tools) ||
-            !readNames(in, editor, u"properties", at, schema::editorPropertyNames(), u"property",
-                       lock.properties)) {
-            return false;
-        }
-        if (!editor.contains(u"tools"))
-            for (std::string_view name : kEditorToolNames)
-                lock.tools << QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
-        if (!editor.contains(u"properties"))
-            for (std::string_view name : schema::editorPropertyNames())
-                lock.properties << QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
-        step.editor = lock;
+    if (!readEditorLock(in, object, place, step)) {
+        return false;
     }
     if (!readSat(in, object, place, step.scene, step.sat) ||
         !readQuestions(in, *context.texts, object, place, step, step.questions) ||

@@ -91,7 +91,6 @@ std::span<const Field> fields(Object object);
 const Field* findField(Object object, std::string_view key);
 /// The rows of a lesson step's "settings".
 std::span<const SettingsField> settingsFields();
-const SettingsField* findSettingsField(std::string_view key);
 
 /// The keys of `object` in file order, the extra keys of the format appended ("rigidlab").
 QStringList keys(Object object);

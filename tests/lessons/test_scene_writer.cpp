@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Saving a scene (issue 15): every shipped scene read, written and read back is the same scene
+// Saving a scene: every shipped scene read, written and read back is the same scene
 // in every field, in every language; the written file passes `rigidlab-cli validate`; numbers
 // read back bit for bit whatever the locale; a body's colour is read, checked and written.
 

@@ -107,6 +107,7 @@ private slots:
     void shapeRoundTrips();
     void everySettingIsRead();
     void keysAreUnique();
+    void absentFieldsReadAsTheirDefault();
     void safeFileNames_data();
     void safeFileNames();
     void titleIsWritten();
@@ -234,6 +235,22 @@ void TestSchema::keysAreUnique()
     QVERIFY(std::find(names.begin(), names.end(), "title") != names.end());
 }
 
+void TestSchema::absentFieldsReadAsTheirDefault()
+{
+    const SceneLoadResult r = loadSceneJson(
+        R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": {"type": "circle", "radius": 1}}]})",
+        QStringLiteral("bare.json"));
+    QVERIFY2(r.ok, qPrintable(r.error));
+    for (Object o : {Object::World, Object::Body}) {
+        for (const schema::Field& f : schema::fields(o)) {
+            if (f.required || f.kind == Kind::Shape || f.kind == Kind::Size)
+                continue;
+            QVERIFY2(f.get(r.scene, 0) == schema::defaultValue(f),
+                     qPrintable(keyOf(f.key) + u' ' + schema::text(f.get(r.scene, 0))));
+        }
+    }
+}
+
 void TestSchema::safeFileNames_data()
 {
     QTest::addColumn<QString>("title");
@@ -241,7 +258,8 @@ void TestSchema::safeFileNames_data()
     QTest::newRow("czech") << QStringLiteral("Nová scéna") << QStringLiteral("nova_scena.json");
     QTest::newRow("carts") << QStringLiteral("Srážka vozíků!")
                            << QStringLiteral("srazka_voziku.json");
-    QTest::newRow("windows") << QStringLiteral(" a/b:c*?\"<>| d ") << QStringLiteral("a_b_c_d.json");
+    QTest::newRow("windows") << QStringLiteral(" a/b:c*?\"<>| d ")
+                             << QStringLiteral("a_b_c_d.json");
     QTest::newRow("empty") << QString() << QStringLiteral("scene.json");
     QTest::newRow("only-marks") << QStringLiteral("…") << QStringLiteral("scene.json");
     QTest::newRow("long") << QString(100, u'x') << QString(60, u'x') + QStringLiteral(".json");

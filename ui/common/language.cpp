@@ -17,7 +17,7 @@ const QString kSettingKey = QStringLiteral("language");
 struct Installed {
     QPointer<QTranslator> lab;
     QPointer<QTranslator> qt;
-    QString code = QStringLiteral("en");
+    QString code = lessons::kFallbackLanguage.toString();
 };
 
 Installed& installed()
@@ -46,7 +46,11 @@ const lessons::Language* findLanguage(const QString& code)
 
 QString languageForLocale(const QLocale& system)
 {
-    return system.language() == QLocale::Czech ? QStringLiteral("cs") : QStringLiteral("en");
+    // The shipped language the system speaks, by the language of each one's locale.
+    for (const lessons::Language& l : lessons::kLanguages)
+        if (QLocale(l.locale.toString()).language() == system.language())
+            return l.code.toString();
+    return lessons::kFallbackLanguage.toString();
 }
 
 QString chooseLanguage(const QString& commandLine, const QString& saved, const QLocale& system)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The window's languages (issue 14; the list is lessons::kLanguages): which one to start in, and
+// The window's languages (the list is lessons::kLanguages): which one to start in, and
 // putting one in effect (RigidLab's translation, Qt's own for its standard dialogs, and the locale
 // that numbers on screen follow). Files always use the decimal point, whatever the language.
 

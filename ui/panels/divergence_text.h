@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The window's words for a divergence (physics::Divergence is data only): translated with
-// tr(), numbers in the user's locale. The command line has its own English line
-// (lessons/divergence_message.h).
+// The window's words for a divergence: the lab's one message (lessons/format/
+// divergence_message.h), translated, with numbers in the user's locale, framed for the banner,
+// a legend and a label beside a stopped world.
 
 #include "rigidlab/physics/divergence.h"
 
@@ -10,13 +10,11 @@
 
 namespace rigidlab::ui {
 
-/// What went wrong, as a clause: "the total energy grew from 0.5 J to 1e+06 J, past the bound
-/// of 1e+06 J (body “puck” holds the most kinetic energy)". `bodyLabel` names the body as the
-/// scene labels it (lessons::Scene::bodyLabel); empty, the body's id is named.
+/// What went wrong, as a clause (lessons::divergenceReason in the user's locale). `bodyLabel`
+/// names the body as the scene labels it (lessons::Scene::bodyLabel); empty, by its id.
 QString divergenceReason(const physics::Divergence& d, const QString& bodyLabel = {});
 
-/// The banner's sentence: when (time, step, dt, integrator), what went wrong, and that the
-/// run stopped there.
+/// The banner's sentence: the message (when, what went wrong), and that the run stopped there.
 QString divergenceSentence(const physics::Divergence& d, const QString& bodyLabel = {});
 
 /// Why, in a few words for a legend read from the back of a room: "energy blew up".

@@ -6,6 +6,7 @@
 #include "simulation/simulation_controller.h"
 
 #include "format/limits.h"
+#include "format/scene_schema.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -58,10 +59,15 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     m_massEdit->setObjectName(QStringLiteral("mass"));
     m_massEdit->setRange(lessons::limits::kMass, tr("Mass m"));
     m_massEdit->setToolTip(tr("The body's mass; its moment of inertia scales with it"));
+    // The editable rows are the scene schema's (lessons/format/scene_schema.h): its label and
+    // range, so that the inspector and the editor say the same.
+    namespace schema = lessons::schema;
+    const schema::Field& restitution = *schema::findField(schema::Object::Body, "restitution");
+    const schema::Field& friction = *schema::findField(schema::Object::Body, "friction");
     m_restitution->setObjectName(QStringLiteral("bodyRestitution"));
-    m_restitution->setRange(lessons::limits::kRestitution, tr("Restitution e"));
+    m_restitution->setRange(restitution.range, schema::label(restitution));
     m_friction->setObjectName(QStringLiteral("bodyFriction"));
-    m_friction->setRange(lessons::limits::kFriction, tr("Friction μ"));
+    m_friction->setRange(friction.range, schema::label(friction));
 
     auto* form = new QFormLayout(this);
     form->setRowWrapPolicy(QFormLayout::WrapLongRows); // labels above fields when narrow
@@ -74,8 +80,8 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     form->addRow(tr("Speed |v|"), m_speed);
     form->addRow(tr("Angular vel. ω"), m_omega);
     form->addRow(tr("Kinetic energy"), m_energy);
-    form->addRow(tr("Restitution e"), m_restitution);
-    form->addRow(tr("Friction μ"), m_friction);
+    form->addRow(schema::label(restitution), m_restitution);
+    form->addRow(schema::label(friction), m_friction);
     for (QLabel* l :
          {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -135,11 +141,8 @@ void InspectorPanel::refresh()
         return;
     }
     const physics::Body& b = m_controller.world().body(m_body);
-    const char* kind = b.type == physics::BodyType::Static      ? "static"
-                       : b.type == physics::BodyType::Kinematic ? "kinematic"
-                                                                : "dynamic";
-    m_name->setText(
-        QStringLiteral("%1 (%2)").arg(m_controller.scene().bodyLabel(m_body), tr(kind)));
+    m_name->setText(QStringLiteral("%1 (%2)").arg(m_controller.scene().bodyLabel(m_body),
+                                                  lessons::schema::bodyTypeLabel(b.type)));
     m_massEdit->setVisible(b.isDynamic());
     m_massUnit->setVisible(b.isDynamic());
     m_mass->setVisible(!b.isDynamic());

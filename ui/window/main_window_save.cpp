@@ -13,6 +13,7 @@
 #include "format/scene_catalog.h"
 #include "format/scene_compare.h"
 #include "format/scene_loader.h"
+#include "format/scene_schema.h"
 #include "format/scene_writer.h"
 
 #include "rigidlab/physics/shape.h"
@@ -42,21 +43,6 @@ bool isShipped(const QString& path)
     const QString folder = file.absoluteDir().canonicalPath();
     return !folder.isEmpty() &&
            (folder == shipped || folder.startsWith(shipped + QLatin1Char('/')));
-}
-
-/// A file name for a scene that has none yet, from its title: "My ramp" -> "my_ramp.json".
-QString fileNameFor(const QString& title)
-{
-    QString name;
-    for (const QChar c : title.trimmed().toLower()) {
-        if (c.isLetterOrNumber())
-            name += c;
-        else if (!name.endsWith(QLatin1Char('_')))
-            name += QLatin1Char('_');
-    }
-    while (name.endsWith(QLatin1Char('_')))
-        name.chop(1);
-    return (name.isEmpty() ? QStringLiteral("scene") : name.left(60)) + QStringLiteral(".json");
 }
 
 } // namespace
@@ -125,8 +111,8 @@ bool MainWindow::saveSceneAs()
     const QString folder = lessons::userScenesDir();
     QDir().mkpath(folder); // so that the dialog starts there
     const QString current = m_documentIsFile ? QFileInfo(m_document->path()).fileName() : QString();
-    const QString suggested =
-        QDir(folder).filePath(current.isEmpty() ? fileNameFor(m_document->scene().title) : current);
+    const QString suggested = QDir(folder).filePath(
+        current.isEmpty() ? lessons::schema::safeFileName(m_document->scene().title) : current);
     QString path;
     if (m_savePathAsker) {
         path = m_savePathAsker(suggested);
