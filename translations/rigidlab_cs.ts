@@ -281,6 +281,10 @@
         <source>Save the scene under another name</source>
         <translation>Uložit scénu pod jiným jménem</translation>
     </message>
+    <message>
+        <source>Help: this list of keys and mouse actions</source>
+        <translation>Nápověda: tento přehled kláves a&#xa0;ovládání myší</translation>
+    </message>
 </context>
 <context>
     <name>DivergenceWords</name>
@@ -1001,6 +1005,54 @@
     </message>
 </context>
 <context>
+    <name>PlotExportMenu</name>
+    <message>
+        <source>Export plot</source>
+        <translation>Exportovat graf</translation>
+    </message>
+    <message>
+        <source>%1 files (*.%2)</source>
+        <translation>Soubory %1 (*.%2)</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export se nezdařil</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>Exportováno: %1</translation>
+    </message>
+    <message>
+        <source>As %1…</source>
+        <translation>Jako %1…</translation>
+    </message>
+    <message>
+        <source>No plot is shown</source>
+        <translation>Žádný graf není zobrazen</translation>
+    </message>
+</context>
+<context>
+    <name>QAbstractFileIconProvider</name>
+    <message>
+        <source>Folder</source>
+        <comment>All other platforms</comment>
+        <translation>Složka</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <comment>All other platforms</comment>
+        <translation>Zástupce</translation>
+    </message>
+    <message>
+        <source>Drive</source>
+        <translation>Jednotka</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Neznámý</translation>
+    </message>
+</context>
+<context>
     <name>SatOverlayItem</name>
     <message>
         <source>gap %1 m</source>
@@ -1048,6 +1100,22 @@
     <message>
         <source>%1, step %2 of %3: %4, after %5 s</source>
         <translation>%1, krok %2 z&#xa0;%3: %4, po %5&#xa0;s</translation>
+    </message>
+    <message>
+        <source>a lesson step with the controls, the inspector and the collision table shown</source>
+        <translation>krok lekce s&#xa0;ovládáním, inspektorem a&#xa0;tabulkou srážky</translation>
+    </message>
+    <message>
+        <source>Help › Controls over the window</source>
+        <translation>Nápověda › Ovládání nad oknem</translation>
+    </message>
+    <message>
+        <source>the same step in presentation mode</source>
+        <translation>týž krok v&#xa0;režimu prezentace</translation>
+    </message>
+    <message>
+        <source>the editor on a new scene</source>
+        <translation>editor s&#xa0;novou scénou</translation>
     </message>
 </context>
 <context>
@@ -1818,7 +1886,23 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
-    <name>rigidlab::ui::MainWindow</name>
+    <name>rigidlab::ui::LessonSession</name>
+    <message>
+        <source>Cannot open lesson</source>
+        <translation>Lekci nelze otevřít</translation>
+    </message>
+    <message>
+        <source>Open lesson</source>
+        <translation>Otevřít lekci</translation>
+    </message>
+    <message>
+        <source>RigidLab lessons (*.json)</source>
+        <translation>Lekce RigidLabu (*.json)</translation>
+    </message>
+    <message>
+        <source>%1 — step %2 — RigidLab</source>
+        <translation>%1 – krok %2 – RigidLab</translation>
+    </message>
     <message>
         <source>Export the step&apos;s plots into</source>
         <translation>Exportovat grafy kroku do složky</translation>
@@ -1831,93 +1915,16 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Plots written to %1</source>
         <translation>Grafy zapsány do %1</translation>
     </message>
+</context>
+<context>
+    <name>rigidlab::ui::MainWindow</name>
     <message>
         <source>RigidLab</source>
         <translation>RigidLab</translation>
     </message>
     <message>
-        <source>Pause</source>
-        <translation>Pozastavit</translation>
-    </message>
-    <message>
-        <source>Play</source>
-        <translation>Spustit</translation>
-    </message>
-    <message>
-        <source>Simulation</source>
-        <translation>Simulace</translation>
-    </message>
-    <message>
-        <source>Play or pause (%1)</source>
-        <translation>Spustit nebo pozastavit (%1)</translation>
-    </message>
-    <message>
-        <source>Step</source>
-        <translation>Krok</translation>
-    </message>
-    <message>
-        <source>One step forward (%1)</source>
-        <translation>O&#xa0;jeden krok vpřed (%1)</translation>
-    </message>
-    <message>
-        <source>Back</source>
-        <translation>Zpět</translation>
-    </message>
-    <message>
-        <source>One step back in time (%1)</source>
-        <translation>O&#xa0;jeden krok zpět v&#xa0;čase (%1)</translation>
-    </message>
-    <message>
-        <source>Reset</source>
-        <translation>Na začátek</translation>
-    </message>
-    <message>
-        <source>Back to the start of the scene (%1)</source>
-        <translation>Zpět na začátek scény (%1)</translation>
-    </message>
-    <message>
-        <source>Fit scene</source>
-        <translation>Celá scéna</translation>
-    </message>
-    <message>
-        <source>Zoom to show every body (%1)</source>
-        <translation>Přiblížit tak, aby byla vidět všechna tělesa (%1)</translation>
-    </message>
-    <message>
-        <source>Turn selected body left</source>
-        <translation>Otočit vybrané těleso doleva</translation>
-    </message>
-    <message>
-        <source>Turn selected body right</source>
-        <translation>Otočit vybrané těleso doprava</translation>
-    </message>
-    <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
-        <source>Timeline</source>
-        <translation>Časová osa</translation>
-    </message>
-    <message>
-        <source>Time travel: drag to go back to any moment, then play to go on (or change a setting to branch)</source>
-        <translation>Cesta časem: tažením se vraťte do libovolného okamžiku a&#xa0;spuštěním pokračujte (nebo změnou nastavení začněte novou větev)</translation>
-    </message>
-    <message>
-        <source> Timeline </source>
-        <translation> Časová osa </translation>
-    </message>
-    <message>
-        <source>Lesson</source>
-        <translation>Lekce</translation>
-    </message>
-    <message>
         <source>Controls</source>
         <translation>Ovládání</translation>
-    </message>
-    <message>
-        <source>Inspector</source>
-        <translation>Inspektor</translation>
     </message>
     <message>
         <source>Energy</source>
@@ -1934,31 +1941,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Drift</source>
         <translation>Drift</translation>
-    </message>
-    <message>
-        <source>Separating axis test</source>
-        <translation>Test oddělující osy</translation>
-    </message>
-    <message>
-        <source>Axis test</source>
-        <comment>short for: separating axis test</comment>
-        <translation>Test os</translation>
-    </message>
-    <message>
-        <source>Bounces</source>
-        <translation>Odrazy</translation>
-    </message>
-    <message>
-        <source>Collision</source>
-        <translation>Srážka</translation>
-    </message>
-    <message>
-        <source>Error vs run time</source>
-        <translation>Chyba vs. doba běhu</translation>
-    </message>
-    <message>
-        <source>Side by side</source>
-        <translation>Vedle sebe</translation>
     </message>
     <message>
         <source>&amp;File</source>
@@ -1989,10 +1971,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>&amp;Exportovat graf</translation>
     </message>
     <message>
-        <source>As %1…</source>
-        <translation>Jako %1…</translation>
-    </message>
-    <message>
         <source>&amp;Quit</source>
         <translation>&amp;Ukončit</translation>
     </message>
@@ -2017,112 +1995,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>&amp;Nápověda</translation>
     </message>
     <message>
-        <source>&amp;Controls</source>
-        <translation>&amp;Ovládání</translation>
-    </message>
-    <message>
-        <source>&amp;About RigidLab</source>
-        <translation>O&#xa0;&amp;aplikaci RigidLab</translation>
-    </message>
-    <message>
         <source>Show or hide: %1</source>
         <translation>Zobrazit nebo skrýt: %1</translation>
-    </message>
-    <message>
-        <source>Cannot open scene</source>
-        <translation>Scénu nelze otevřít</translation>
-    </message>
-    <message>
-        <source>Open scene</source>
-        <translation>Otevřít scénu</translation>
-    </message>
-    <message>
-        <source>RigidLab scenes (*.json)</source>
-        <translation>Scény RigidLabu (*.json)</translation>
-    </message>
-    <message>
-        <source>Export plot</source>
-        <translation>Exportovat graf</translation>
-    </message>
-    <message>
-        <source>%1 files (*.%2)</source>
-        <translation>Soubory %1 (*.%2)</translation>
-    </message>
-    <message>
-        <source>Exported %1</source>
-        <translation>Exportováno: %1</translation>
-    </message>
-    <message>
-        <source>slower than real time</source>
-        <translation>pomaleji než v&#xa0;reálném čase</translation>
-    </message>
-    <message>
-        <source>Status &amp;details (steps/s, stage timings)</source>
-        <translation>Po&amp;drobnosti stavu (kroky/s, časy fází)</translation>
-    </message>
-    <message>
-        <source>t = %1 s</source>
-        <translation>t = %1&#xa0;s</translation>
-    </message>
-    <message>
-        <source>paused</source>
-        <translation>pozastaveno</translation>
-    </message>
-    <message>
-        <source>%1 × real time</source>
-        <translation>%1&#xa0;× reálný čas</translation>
-    </message>
-    <message>
-        <source>running</source>
-        <translation>běží</translation>
-    </message>
-    <message>
-        <source>energy drift %1 %</source>
-        <translation>energetický drift %1&#xa0;%</translation>
-    </message>
-    <message>
-        <source>energy drift (numerical error) %1 %</source>
-        <translation>energetický drift (numerická chyba) %1&#xa0;%</translation>
-    </message>
-    <message>
-        <source> · dissipated %1 J</source>
-        <translation> · disipovaná energie %1&#xa0;J</translation>
-    </message>
-    <message>
-        <source> · dissipated by contacts, friction, drag and dampers %1 J</source>
-        <translation> · energie odebraná kontakty, třením, odporem prostředí a&#xa0;tlumiči %1&#xa0;J</translation>
-    </message>
-    <message>
-        <source>%1 %2</source>
-        <translation>%1 %2</translation>
-    </message>
-    <message>
-        <source>last step %1 ms: %2</source>
-        <translation>poslední krok %1&#xa0;ms: %2</translation>
-    </message>
-    <message>
-        <source>%1 steps/s · frame %2 ms (physics %3 ms) · %4</source>
-        <translation>%1&#xa0;kroků/s · snímek %2&#xa0;ms (fyzika %3&#xa0;ms) · %4</translation>
-    </message>
-    <message>
-        <source> step %1 of %2 · t = %3 s</source>
-        <translation> krok %1 z&#xa0;%2 · t = %3&#xa0;s</translation>
-    </message>
-    <message>
-        <source>Cannot open lesson</source>
-        <translation>Lekci nelze otevřít</translation>
-    </message>
-    <message>
-        <source>Open lesson</source>
-        <translation>Otevřít lekci</translation>
-    </message>
-    <message>
-        <source>RigidLab lessons (*.json)</source>
-        <translation>Lekce RigidLabu (*.json)</translation>
-    </message>
-    <message>
-        <source>%1 — step %2 — RigidLab</source>
-        <translation>%1 – krok %2 – RigidLab</translation>
     </message>
     <message>
         <source>&amp;Language</source>
@@ -2176,18 +2050,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Springs</source>
         <translation>Pružiny</translation>
     </message>
-    <message numerus="yes">
-        <source> · %1 error estimate %2 (%Ln substep(s))</source>
-        <translation>
-            <numerusform> · %1: odhad chyby %2 (%Ln podkrok)</numerusform>
-            <numerusform> · %1: odhad chyby %2 (%Ln podkroky)</numerusform>
-            <numerusform> · %1: odhad chyby %2 (%Ln podkroků)</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>&amp;Your own scenes</source>
-        <translation>&amp;Vlastní scény</translation>
-    </message>
     <message>
         <source>Scene editor</source>
         <translation>Editor scény</translation>
@@ -2207,10 +2069,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>%1 (%2)[*] — RigidLab</source>
         <translation>%1 (%2)[*] – RigidLab</translation>
-    </message>
-    <message>
-        <source>%1 was not opened: the edited scene stays.</source>
-        <translation>%1 nebyl otevřen: upravovaná scéna zůstává.</translation>
     </message>
     <message>
         <source>&amp;New scene</source>
@@ -2237,46 +2095,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Z&amp;novu</translation>
     </message>
     <message>
-        <source>New scene</source>
-        <translation>Nová scéna</translation>
-    </message>
-    <message>
-        <source>Edits made before the language changed</source>
-        <translation>Úpravy provedené před změnou jazyka</translation>
-    </message>
-    <message>
-        <source>%1 comes with RigidLab and is not overwritten: save your version under a name of its own.</source>
-        <translation>%1 je dodáván s RigidLabem a nepřepisuje se: uložte svou verzi pod vlastním jménem.</translation>
-    </message>
-    <message>
-        <source>Save scene as</source>
-        <translation>Uložit scénu jako</translation>
-    </message>
-    <message>
-        <source>%1 comes with RigidLab and is not overwritten. Choose another name, or a folder of your own (your scenes are in %2).</source>
-        <translation>%1 je dodáván s RigidLabem a nepřepisuje se. Zvolte jiné jméno nebo vlastní složku (vaše scény jsou v %2).</translation>
-    </message>
-    <message>
-        <source>Scene not saved</source>
-        <translation>Scéna nebyla uložena</translation>
-    </message>
-    <message>
-        <source>Saved %1</source>
-        <translation>Uloženo: %1</translation>
-    </message>
-    <message>
-        <source>Unsaved changes</source>
-        <translation>Neuložené změny</translation>
-    </message>
-    <message>
-        <source>The scene “%1” has changes that are not saved.</source>
-        <translation>Scéna „%1“ má neuložené změny.</translation>
-    </message>
-    <message>
-        <source>Save them before going on?</source>
-        <translation>Uložit je před pokračováním?</translation>
-    </message>
-    <message>
         <source>Scene as opened</source>
         <translation>Scéna, jak byla otevřena</translation>
     </message>
@@ -2293,8 +2111,12 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Historie úprav</translation>
     </message>
     <message>
-        <source>The world does not step in Edit mode: leave it (%1) or press Play to run the scene as edited</source>
-        <translation>V editoru svět nekrokuje: vypněte ho (%1) nebo stiskněte Spustit a scéna poběží tak, jak je upravená</translation>
+        <source>&amp;Controls…</source>
+        <translation>&amp;Ovládání…</translation>
+    </message>
+    <message>
+        <source>&amp;About RigidLab…</source>
+        <translation>O&#xa0;&amp;aplikaci RigidLab…</translation>
     </message>
 </context>
 <context>
@@ -2745,6 +2567,255 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>m = %1 kg</source>
         <translation>m = %1&#xa0;kg</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::StatusLine</name>
+    <message>
+        <source>slower than real time</source>
+        <translation>pomaleji než v&#xa0;reálném čase</translation>
+    </message>
+    <message>
+        <source>Status &amp;details (steps/s, stage timings)</source>
+        <translation>Po&amp;drobnosti stavu (kroky/s, časy fází)</translation>
+    </message>
+    <message>
+        <source>Timeline</source>
+        <translation>Časová osa</translation>
+    </message>
+    <message>
+        <source>Time travel: drag to go back to any moment, then play to go on (or change a setting to branch)</source>
+        <translation>Cesta časem: tažením se vraťte do libovolného okamžiku a&#xa0;spuštěním pokračujte (nebo změnou nastavení začněte novou větev)</translation>
+    </message>
+    <message>
+        <source> Timeline </source>
+        <translation> Časová osa </translation>
+    </message>
+    <message>
+        <source>t = %1 s</source>
+        <translation>t = %1&#xa0;s</translation>
+    </message>
+    <message>
+        <source>paused</source>
+        <translation>pozastaveno</translation>
+    </message>
+    <message>
+        <source>%1 × real time</source>
+        <translation>%1&#xa0;× reálný čas</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>běží</translation>
+    </message>
+    <message>
+        <source>energy drift %1 %</source>
+        <translation>energetický drift %1&#xa0;%</translation>
+    </message>
+    <message>
+        <source>energy drift (numerical error) %1 %</source>
+        <translation>energetický drift (numerická chyba) %1&#xa0;%</translation>
+    </message>
+    <message>
+        <source> · dissipated %1 J</source>
+        <translation> · disipovaná energie %1&#xa0;J</translation>
+    </message>
+    <message>
+        <source> · dissipated by contacts, friction, drag and dampers %1 J</source>
+        <translation> · energie odebraná kontakty, třením, odporem prostředí a&#xa0;tlumiči %1&#xa0;J</translation>
+    </message>
+    <message numerus="yes">
+        <source> · %1 error estimate %2 (%Ln substep(s))</source>
+        <translation>
+            <numerusform> · %1: odhad chyby %2 (%Ln podkrok)</numerusform>
+            <numerusform> · %1: odhad chyby %2 (%Ln podkroky)</numerusform>
+            <numerusform> · %1: odhad chyby %2 (%Ln podkroků)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>last step %1 ms: %2</source>
+        <translation>poslední krok %1&#xa0;ms: %2</translation>
+    </message>
+    <message>
+        <source>%1 steps/s · frame %2 ms (physics %3 ms) · %4</source>
+        <translation>%1&#xa0;kroků/s · snímek %2&#xa0;ms (fyzika %3&#xa0;ms) · %4</translation>
+    </message>
+    <message>
+        <source> step %1 of %2 · t = %3 s</source>
+        <translation> krok %1 z&#xa0;%2 · t = %3&#xa0;s</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::WindowActions</name>
+    <message>
+        <source>Simulation</source>
+        <translation>Simulace</translation>
+    </message>
+    <message>
+        <source>Play</source>
+        <translation>Spustit</translation>
+    </message>
+    <message>
+        <source>Play or pause (%1)</source>
+        <translation>Spustit nebo pozastavit (%1)</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Krok</translation>
+    </message>
+    <message>
+        <source>One step forward (%1)</source>
+        <translation>O&#xa0;jeden krok vpřed (%1)</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Zpět</translation>
+    </message>
+    <message>
+        <source>One step back in time (%1)</source>
+        <translation>O&#xa0;jeden krok zpět v&#xa0;čase (%1)</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Na začátek</translation>
+    </message>
+    <message>
+        <source>Back to the start of the scene (%1)</source>
+        <translation>Zpět na začátek scény (%1)</translation>
+    </message>
+    <message>
+        <source>Fit scene</source>
+        <translation>Celá scéna</translation>
+    </message>
+    <message>
+        <source>Zoom to show every body (%1)</source>
+        <translation>Přiblížit tak, aby byla vidět všechna tělesa (%1)</translation>
+    </message>
+    <message>
+        <source>Pause</source>
+        <translation>Pozastavit</translation>
+    </message>
+    <message>
+        <source>Turn selected body left</source>
+        <translation>Otočit vybrané těleso doleva</translation>
+    </message>
+    <message>
+        <source>Turn selected body right</source>
+        <translation>Otočit vybrané těleso doprava</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>The world does not step in Edit mode: leave it (%1) or press Play to run the scene as edited</source>
+        <translation>V editoru svět nekrokuje: vypněte ho (%1) nebo stiskněte Spustit a scéna poběží tak, jak je upravená</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::WindowDocuments</name>
+    <message>
+        <source>Cannot open scene</source>
+        <translation>Scénu nelze otevřít</translation>
+    </message>
+    <message>
+        <source>%1 was not opened: the edited scene stays.</source>
+        <translation>%1 nebyl otevřen: upravovaná scéna zůstává.</translation>
+    </message>
+    <message>
+        <source>Open scene</source>
+        <translation>Otevřít scénu</translation>
+    </message>
+    <message>
+        <source>RigidLab scenes (*.json)</source>
+        <translation>Scény RigidLabu (*.json)</translation>
+    </message>
+    <message>
+        <source>New scene</source>
+        <translation>Nová scéna</translation>
+    </message>
+    <message>
+        <source>Edits made before the language changed</source>
+        <translation>Úpravy provedené před změnou jazyka</translation>
+    </message>
+    <message>
+        <source>%1 comes with RigidLab and is not overwritten: save your version under a name of its own.</source>
+        <translation>%1 je dodáván s RigidLabem a nepřepisuje se: uložte svou verzi pod vlastním jménem.</translation>
+    </message>
+    <message>
+        <source>Save scene as</source>
+        <translation>Uložit scénu jako</translation>
+    </message>
+    <message>
+        <source>%1 comes with RigidLab and is not overwritten. Choose another name, or a folder of your own (your scenes are in %2).</source>
+        <translation>%1 je dodáván s RigidLabem a nepřepisuje se. Zvolte jiné jméno nebo vlastní složku (vaše scény jsou v %2).</translation>
+    </message>
+    <message>
+        <source>Scene not saved</source>
+        <translation>Scéna nebyla uložena</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Uloženo: %1</translation>
+    </message>
+    <message>
+        <source>Unsaved changes</source>
+        <translation>Neuložené změny</translation>
+    </message>
+    <message>
+        <source>The scene “%1” has changes that are not saved.</source>
+        <translation>Scéna „%1“ má neuložené změny.</translation>
+    </message>
+    <message>
+        <source>Save them before going on?</source>
+        <translation>Uložit je před pokračováním?</translation>
+    </message>
+    <message>
+        <source>&amp;Your own scenes</source>
+        <translation>&amp;Vlastní scény</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::WindowLayout</name>
+    <message>
+        <source>Controls</source>
+        <translation>Ovládání</translation>
+    </message>
+    <message>
+        <source>Inspector</source>
+        <translation>Inspektor</translation>
+    </message>
+    <message>
+        <source>Axis test</source>
+        <comment>short for: separating axis test</comment>
+        <translation>Test os</translation>
+    </message>
+    <message>
+        <source>Separating axis test</source>
+        <translation>Test oddělující osy</translation>
+    </message>
+    <message>
+        <source>Bounces</source>
+        <translation>Odrazy</translation>
+    </message>
+    <message>
+        <source>Collision</source>
+        <translation>Srážka</translation>
+    </message>
+    <message>
+        <source>Error vs run time</source>
+        <translation>Chyba vs. doba běhu</translation>
+    </message>
+    <message>
+        <source>Side by side</source>
+        <translation>Vedle sebe</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lekce</translation>
     </message>
 </context>
 <context>

@@ -25,6 +25,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QContextMenuEvent>
+#include <QDialog>
 #include <QDir>
 #include <QDockWidget>
 #include <QElapsedTimer>
@@ -34,6 +35,7 @@
 #include <QLineEdit>
 #include <QMap>
 #include <QMenu>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QRegularExpression>
 #include <QSet>
@@ -310,10 +312,16 @@ bool reachable(const QWidget* w)
     if (w->isVisible())
         return true;
     for (const QWidget* p = w; p; p = p->parentWidget())
-        if (const auto* dock = qobject_cast<const QDockWidget*>(p))
+        if (const auto* dock = qobject_cast<const QDockWidget*>(p)) {
+            // Behind another's tab the window hides the dock's content (the keyboard must not
+            // reach it): what the content shows once its tab is chosen counts.
+            const QWidget* content = dock->widget();
+            const bool inContent =
+                content && (w == content || (content->isAncestorOf(w) && w->isVisibleTo(content)));
             return dock->toggleViewAction()->isChecked() && !dock->isFloating() &&
                    dock->parentWidget() && dock->parentWidget()->isVisible() &&
-                   (w == dock || w->isVisibleTo(dock));
+                   (w == dock || inContent || w->isVisibleTo(dock));
+        }
     return false;
 }
 
@@ -418,6 +426,16 @@ QList<std::pair<QString, Texts>> textsOfWindow(const QString& language)
         out.append({QStringLiteral("%1 step %2").arg(QFileInfo(path).fileName()).arg(index + 1),
                     collect(w)});
     });
+    // Help › Controls (F1), and the editor on a new scene.
+    if (auto* help = w.findChild<QAction*>(QStringLiteral("help")))
+        help->trigger();
+    QCoreApplication::processEvents();
+    out.append({QStringLiteral("Help › Controls"), collect(w)});
+    delete w.findChild<QDialog*>(QStringLiteral("controlsHelpDialog"));
+    w.setUnsavedAsker([] { return int(QMessageBox::Discard); });
+    w.newScene();
+    QCoreApplication::processEvents();
+    out.append({QStringLiteral("new scene in the editor"), collect(w)});
     return out;
 }
 
