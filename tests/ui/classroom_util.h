@@ -82,7 +82,8 @@ inline QStringList outside(const MainWindow& window)
         if (r.isEmpty() || !inside.contains(r))
             out << QStringLiteral("%1 \"%2\" at (%3,%4 %5x%6)")
                        .arg(QString::fromLatin1(w->metaObject()->className()),
-                            w->property("text").toString())
+                            w->property("text").toString() + QLatin1Char(' ') +
+                                (w->parentWidget() ? w->parentWidget()->objectName() : QString()))
                        .arg(r.x())
                        .arg(r.y())
                        .arg(r.width())

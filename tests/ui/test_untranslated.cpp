@@ -145,6 +145,10 @@ bool invariant(const QString& piece)
 {
     if (invariantTexts().contains(piece))
         return true;
+    // A key as the keyboard names it ("Ctrl+Shift+Z"): the same in both languages.
+    static const QRegularExpression keys(QStringLiteral("^(Ctrl|Shift|Alt|Meta)(\\+\\S+)+$"));
+    if (keys.match(piece).hasMatch())
+        return true;
     static const QRegularExpression word(QStringLiteral("\\p{L}{3,}"));
     auto it = word.globalMatch(piece);
     while (it.hasNext())
