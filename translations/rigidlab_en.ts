@@ -22,22 +22,22 @@
     </message>
 </context>
 <context>
-    <name>rigidlab::ui::MainWindow</name>
-    <message numerus="yes">
-        <source> · %1 error estimate %2 (%Ln substep(s))</source>
-        <translation>
-            <numerusform> · %1 error estimate %2 (%Ln substep)</numerusform>
-            <numerusform> · %1 error estimate %2 (%Ln substeps)</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>rigidlab::ui::SimulationController</name>
     <message numerus="yes">
         <source>%n iteration(s)</source>
         <translation>
             <numerusform>%n iteration</numerusform>
             <numerusform>%n iterations</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::StatusLine</name>
+    <message numerus="yes">
+        <source> · %1 error estimate %2 (%Ln substep(s))</source>
+        <translation>
+            <numerusform> · %1 error estimate %2 (%Ln substep)</numerusform>
+            <numerusform> · %1 error estimate %2 (%Ln substeps)</numerusform>
         </translation>
     </message>
 </context>

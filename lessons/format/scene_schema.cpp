@@ -7,6 +7,7 @@
 #include "format/scene_schema_rows.h"
 
 #include <QCoreApplication>
+#include <QHash>
 
 #include <algorithm>
 
@@ -188,31 +189,43 @@ QString bodyTypeLabel(BodyType type)
     return {};
 }
 
-QString safeFileName(const QString& title)
+QString safeFileStem(const QString& title, const QString& fallback)
 {
-    // Decomposed, a letter with a mark is the letter and the mark: the letter stays.
-    const QString plain = title.normalized(QString::NormalizationForm_KD).toLower();
+    // Letters that do not decompose into a base letter and marks, as they are written in ASCII.
+    static const QHash<QChar, QString> spelled{
+        {QChar(0x00DF), QStringLiteral("ss")}, {QChar(0x00E6), QStringLiteral("ae")},
+        {QChar(0x00F8), QStringLiteral("o")},  {QChar(0x0153), QStringLiteral("oe")},
+        {QChar(0x0142), QStringLiteral("l")},  {QChar(0x0111), QStringLiteral("d")},
+        {QChar(0x0131), QStringLiteral("i")},  {QChar(0x00F0), QStringLiteral("d")},
+        {QChar(0x00FE), QStringLiteral("th")}};
     QString name;
-    for (const QChar c : plain) {
+    const auto append = [&name](QChar c) {
         if ((c >= u'a' && c <= u'z') || (c >= u'0' && c <= u'9'))
             name += c;
-        else if (c.category() == QChar::Mark_NonSpacing)
-            continue;
         else if (!name.isEmpty() && !name.endsWith(u'_'))
             name += u'_';
+    };
+    // Decomposed, a letter with a mark is the letter and the mark: the letter stays.
+    for (const QChar c : title.toLower().normalized(QString::NormalizationForm_KD)) {
+        if (c.category() == QChar::Mark_NonSpacing)
+            continue; // the accent of "á", the caron of "č"
+        if (const auto it = spelled.find(c); it != spelled.end())
+            for (const QChar letter : *it)
+                append(letter);
+        else
+            append(c);
     }
-    while (name.endsWith(u'_'))
-        name.chop(1);
     // Long names are cut where a file system of a school computer still takes them whole.
     constexpr qsizetype kMaxStem = 60;
-    if (name.size() > kMaxStem) {
-        name.truncate(kMaxStem);
-        while (name.endsWith(u'_'))
-            name.chop(1);
-    }
-    if (name.isEmpty())
-        name = QStringLiteral("scene");
-    return name + QStringLiteral(".json");
+    name.truncate(kMaxStem);
+    while (name.endsWith(u'_'))
+        name.chop(1);
+    return name.isEmpty() ? fallback : name;
+}
+
+QString safeFileName(const QString& title)
+{
+    return safeFileStem(title, QStringLiteral("scene")) + QStringLiteral(".json");
 }
 
 } // namespace rigidlab::lessons::schema

@@ -123,5 +123,7 @@ QString bodyTypeLabel(physics::BodyType type); ///< translated: "dynamic" → "d
 /// with ".json": "Nová scéna" → "nova_scena.json", "Srážka vozíků!" → "srazka_voziku.json".
 /// Diacritics lose their marks; what a Windows share or a USB stick would mangle goes.
 QString safeFileName(const QString& title);
+/// The same name without its ending, or `fallback` when nothing of the title is left.
+QString safeFileStem(const QString& title, const QString& fallback);
 
 } // namespace rigidlab::lessons::schema

@@ -11,7 +11,7 @@
 #include "view/world_view.h"
 #include "window/language_switch.h"
 #include "window/main_window.h"
-#include "window/shortcuts.h"
+#include "common/shortcuts.h"
 
 #include "format/data_dirs.h"
 #include "format/scene_compare.h"

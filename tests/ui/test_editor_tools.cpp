@@ -6,6 +6,7 @@
 #include "editor_test_util.h"
 
 #include "edit/scene_edits.h"
+#include "format/scene_schema.h"
 
 #include "test_main.h"
 
@@ -238,13 +239,13 @@ void TestEditorTools::safeFileNames()
         {QStringLiteral("Наклонная"), QStringLiteral("scene.json")},
         {QString(), QStringLiteral("scene.json")}};
     for (const auto& [title, expected] : cases) {
-        const QString name = SceneDocument::safeFileName(title);
+        const QString name = lessons::schema::safeFileName(title);
         QCOMPARE(name, expected);
         for (const QChar c : name) {
             QVERIFY2(c.unicode() < 128, qPrintable(name));
         }
     }
-    QVERIFY(SceneDocument::safeFileName(QString(200, QLatin1Char('a'))).size() <= 65);
+    QVERIFY(lessons::schema::safeFileName(QString(200, QLatin1Char('a'))).size() <= 65);
 }
 
 // A ramp turned by 20° (its sides off the grid): a circle drawn from a few pixels beside its

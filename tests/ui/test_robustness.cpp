@@ -156,8 +156,10 @@ QAction* findAction(QWidget* root, const QString& menuPath)
                 found = a;
         if (!found)
             return nullptr;
-        if (found->menu())
+        if (found->menu()) {
+            emit found->menu()->aboutToShow(); // a menu may be filled as it opens
             actions = found->menu()->actions();
+        }
     }
     return found;
 }
@@ -238,8 +240,13 @@ private slots:
         QVERIFY(!w.controller().world().divergence());
         for (const physics::Body& b : w.controller().world().bodies())
             QVERIFY(std::isfinite(b.position.x()) && std::isfinite(b.position.y()));
+    }
 
-        // Out-of-range values sent to the controller directly change nothing.
+    // Out-of-range values sent to the controller directly change nothing.
+    void outOfRangeCallsChangeNothing()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(scene("box_stack.json"), true), QString());
         const physics::WorldDef before = w.controller().world().def();
         const double scale = w.controller().timeScale();
         w.controller().setDt(0.0);

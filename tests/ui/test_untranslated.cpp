@@ -1,12 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// No English left in the Czech window, no Czech in the English one (issue 14). The window is
-// opened in each language on the welcome scene and on every step of every shipped lesson, and
-// every text a student can see or open is collected: visible widgets' texts, tooltips and status
-// tips, every action of every menu (hidden menus too: a student opens them), tab, combo box,
-// table and header texts, the text browsers' sentences, and each plot's title, axis labels,
-// legend and marks. Texts are paired by where they are (the path of object names, or class and
-// index, from the window, and the property), which is the same in both languages because both
-// windows are built by the same code in the same order.
+// No English left in the Czech window, no Czech in the English one. The window is opened in
+// each language on the welcome scene, every step of every shipped lesson and Help › Controls;
+// every text a student can see or open is collected (widgets' texts, tooltips, every menu's
+// actions, tabs, tables, text browsers, plots' titles, axes, legends, marks) and paired by
+// where it is (the path of object names from the window, and the property), the same in both
+// languages because both windows are built by the same code in the same order.
 
 #include "common/language.h"
 #include "lesson_player/lesson_player.h"
@@ -138,10 +136,13 @@ QStringList pieces(const QString& text)
 }
 
 /// Whether a text reads the same in every language: no word of three letters or more (numbers,
-/// symbols, units such as "m/s" or "J"), or a proper name or symbol of invariantTexts().
+/// symbols, units such as "m/s" or "J"), a key ("Ctrl+Z"), or a name of invariantTexts().
 bool invariant(const QString& piece)
 {
     if (invariantTexts().contains(piece))
+        return true;
+    static const QRegularExpression keys(QStringLiteral("^(Ctrl|Shift|Alt|Meta)(\\+\\S+)+$"));
+    if (keys.match(piece).hasMatch())
         return true;
     static const QRegularExpression word(QStringLiteral("\\p{L}{3,}"));
     auto it = word.globalMatch(piece);
@@ -310,10 +311,15 @@ bool reachable(const QWidget* w)
     if (w->isVisible())
         return true;
     for (const QWidget* p = w; p; p = p->parentWidget())
-        if (const auto* dock = qobject_cast<const QDockWidget*>(p))
+        if (const auto* dock = qobject_cast<const QDockWidget*>(p)) {
+            // Behind a tab the dock's content is hidden: what it shows once chosen counts.
+            const QWidget* content = dock->widget();
+            const bool inContent =
+                content && (w == content || (content->isAncestorOf(w) && w->isVisibleTo(content)));
             return dock->toggleViewAction()->isChecked() && !dock->isFloating() &&
                    dock->parentWidget() && dock->parentWidget()->isVisible() &&
-                   (w == dock || w->isVisibleTo(dock));
+                   (w == dock || inContent || w->isVisibleTo(dock));
+        }
     return false;
 }
 
@@ -418,6 +424,10 @@ QList<std::pair<QString, Texts>> textsOfWindow(const QString& language)
         out.append({QStringLiteral("%1 step %2").arg(QFileInfo(path).fileName()).arg(index + 1),
                     collect(w)});
     });
+    if (auto* help = w.findChild<QAction*>(QStringLiteral("help"))) // Help › Controls (F1)
+        help->trigger();
+    QCoreApplication::processEvents();
+    out.append({QStringLiteral("Help › Controls"), collect(w)});
     return out;
 }
 

@@ -48,6 +48,9 @@ bool presentation();
 inline constexpr double kPresentationMinLinePx = 3.0;
 /// How much larger text is in presentation mode.
 inline constexpr double kPresentationFontScale = 1.5;
+/// How much larger than the system's text the texts a class reads are (the lesson's text, the
+/// status bar), in every mode: a projector at 1024×768 is read from the back of the room.
+inline constexpr double kReadingFontScale = 1.25;
 /// A line drawn `widthPx` wide in the window, as wide as it is drawn now [px].
 double lineWidth(double widthPx);
 

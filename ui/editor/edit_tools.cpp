@@ -10,7 +10,7 @@
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
-#include "window/shortcuts.h"
+#include "common/shortcuts.h"
 
 #include <QAction>
 #include <QActionGroup>

@@ -3,7 +3,6 @@
 
 #include "rigidlab/physics/shape.h"
 
-#include <QHash>
 #include <QUndoCommand>
 #include <QUndoStack>
 
@@ -92,47 +91,6 @@ QRectF SceneDocument::newSceneFrame()
 {
     // 12 m of the ground's middle and 5 m above it (the view adds its margin).
     return {-6.0, -0.5, 12.0, 5.5};
-}
-
-QString SceneDocument::safeFileName(const QString& title)
-{
-    // Letters that do not decompose into a base letter and marks, as they are usually written
-    // in ASCII.
-    static const QHash<QChar, QString> spelled{
-        {QChar(0x00DF), QStringLiteral("ss")}, {QChar(0x00E6), QStringLiteral("ae")},
-        {QChar(0x00F8), QStringLiteral("o")},  {QChar(0x0153), QStringLiteral("oe")},
-        {QChar(0x0142), QStringLiteral("l")},  {QChar(0x0111), QStringLiteral("d")},
-        {QChar(0x0131), QStringLiteral("i")},  {QChar(0x00F0), QStringLiteral("d")},
-        {QChar(0x00FE), QStringLiteral("th")}};
-    QString name;
-    const auto append = [&name](QChar c) {
-        if (c.unicode() < 128 && c.isLetterOrNumber()) {
-            name += c;
-        } else if (!name.isEmpty() && !name.endsWith(QLatin1Char('_'))) {
-            name += QLatin1Char('_');
-        }
-    };
-    const QString decomposed = title.trimmed().toLower().normalized(QString::NormalizationForm_KD);
-    for (const QChar c : decomposed) {
-        if (c.category() == QChar::Mark_NonSpacing) {
-            continue; // the accent of "á", the caron of "č"
-        }
-        if (const auto it = spelled.find(c); it != spelled.end()) {
-            for (const QChar s : *it) {
-                append(s);
-            }
-        } else {
-            append(c);
-        }
-    }
-    while (name.endsWith(QLatin1Char('_'))) {
-        name.chop(1);
-    }
-    name = name.left(60);
-    while (name.endsWith(QLatin1Char('_'))) {
-        name.chop(1);
-    }
-    return (name.isEmpty() ? QStringLiteral("scene") : name) + QStringLiteral(".json");
 }
 
 void SceneDocument::setScene(const lessons::Scene& scene)

@@ -46,10 +46,6 @@ public:
     /// What the view shows of a new scene first [m]: the middle of its ground and room above
     /// it, at a zoom that draws on a 1 m grid or so (the whole ground would make it coarse).
     static QRectF newSceneFrame();
-    /// A file name for a scene that has none yet, from its title, safe on any disk and share:
-    /// lower-case ASCII letters and digits joined by "_", diacritics taken off ("Nová scéna"
-    /// -> "nova_scena.json"), "scene.json" when nothing is left.
-    static QString safeFileName(const QString& title);
 
 signals:
     /// After every apply, undo, redo and reset.

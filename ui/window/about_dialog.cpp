@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/about_dialog.h"
 
-#include "common/modal_scope.h"
-
 #include "rigidlab/version.h"
 
 #include <Eigen/Core>
@@ -42,8 +40,13 @@ QString aboutText()
 
 void showAbout(QWidget* parent)
 {
-    const ModalScope modal;
-    QMessageBox::about(parent, About::tr("About RigidLab"), aboutText());
+    // Not blocking: the window can check and close it like any other dialog.
+    auto* box = new QMessageBox(QMessageBox::Information, About::tr("About RigidLab"), aboutText(),
+                                QMessageBox::Ok, parent);
+    box->setObjectName(QStringLiteral("aboutBox"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->setTextFormat(Qt::RichText);
+    box->open();
 }
 
 } // namespace rigidlab::ui

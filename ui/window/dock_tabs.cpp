@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/dock_tabs.h"
 
+#include <QApplication>
 #include <QDockWidget>
 #include <QEvent>
 #include <QHelpEvent>
@@ -14,6 +15,15 @@ namespace rigidlab::ui {
 namespace {
 
 const char* const kFullTitle = "fullTitle";
+
+/// Whole titles: a tab bar that must not scroll or elide is as wide as all its tabs, and the
+/// dock column makes room for it.
+void keepWhole(QTabBar& bar)
+{
+    bar.setElideMode(Qt::ElideNone);
+    bar.setUsesScrollButtons(false);
+    bar.setExpanding(false);
+}
 /// The keeper's object name, by which a dock finds its window's keeper (the keeper has no
 /// meta-object of its own, so findChild<DockTabKeeper*> would take any child for it).
 const char* const kKeeperName = "rigidlabDockTabKeeper";
@@ -34,8 +44,7 @@ protected:
         if (watched == &m_window && event->type() == QEvent::ChildPolished) {
             auto* child = static_cast<QChildEvent*>(event)->child();
             if (auto* bar = qobject_cast<QTabBar*>(child)) {
-                bar->setElideMode(Qt::ElideNone);
-                bar->setUsesScrollButtons(true);
+                keepWhole(*bar);
                 bar->installEventFilter(this);
             }
         } else if (event->type() == QEvent::ToolTip) {
@@ -99,10 +108,31 @@ void keepDockTabsWhole(QMainWindow& window)
     window.installEventFilter(keeper);
     // The tab bars made already.
     for (QTabBar* bar : window.findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
-        bar->setElideMode(Qt::ElideNone);
-        bar->setUsesScrollButtons(true);
+        keepWhole(*bar);
         bar->installEventFilter(keeper);
     }
+}
+
+void keepFocusInSight(QDockWidget& dock)
+{
+    QObject::connect(&dock, &QDockWidget::visibilityChanged, &dock,
+                     [d = &dock](bool) { showContentIfInSight(*d); });
+}
+
+void showContentIfInSight(QDockWidget& dock)
+{
+    QWidget* content = dock.widget();
+    if (!content || dock.isHidden())
+        return;
+    // A dock behind another's tab is moved off the window's left or top edge, not hidden.
+    const QRect r = dock.geometry();
+    const bool behind = dock.isWindow() ? false : (r.right() < 0 || r.bottom() < 0);
+    if (content->isHidden() == behind)
+        return;
+    const bool hadFocus = content->isAncestorOf(QApplication::focusWidget());
+    content->setVisible(!behind);
+    if (behind && hadFocus && dock.parentWidget())
+        dock.parentWidget()->setFocus(Qt::OtherFocusReason);
 }
 
 } // namespace rigidlab::ui

@@ -14,8 +14,15 @@ void setFullTitle(QDockWidget& dock, const QString& fullTitle);
 /// The full title setFullTitle gave, or else the dock's title.
 QString fullTitle(const QDockWidget& dock);
 
-/// Keeps the tabs of `window`'s tabbed docks whole: a tab is never elided (the row scrolls
-/// instead), and its tooltip is the dock's full title.
+/// Keeps the tabs of `window`'s tabbed docks whole: a tab is never elided nor scrolled away
+/// (the column is as wide as its tabs), and its tooltip is the dock's full title.
 void keepDockTabsWhole(QMainWindow& window);
+
+/// Keeps the keyboard out of `dock` while it lies behind another dock's tab: Qt moves such a
+/// dock out of sight rather than hiding it, so Tab would walk into fields nobody can see. Its
+/// content is hidden while it is behind, shown when its tab is chosen.
+void keepFocusInSight(QDockWidget& dock);
+/// The same, now (after docks were moved or a dock got new content).
+void showContentIfInSight(QDockWidget& dock);
 
 } // namespace rigidlab::ui

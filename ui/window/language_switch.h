@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Switching the window's language (issue 14): View › Language, and a new window in the new
+// Switching the window's language: View › Language, and a new window in the new
 // language that carries on where the old one was. The window is rebuilt rather than
 // retranslated in place: every text is then made by the code that makes it in the first
 // place, so no widget can be left half in the old language.

@@ -1,11 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// MainWindow's making and closing: the parts and how they are wired, its settings.
-// Its other parts: main_window_menus.cpp (actions, toolbars, menus), main_window_docks.cpp,
-// main_window_files.cpp (scenes, recent files, plot export), main_window_lesson.cpp,
-// main_window_status.cpp (status bar, timeline), main_window_layout.cpp.
+// MainWindow's making and closing: the panels, the parts that each do one job, and how they
+// are connected; its settings. The menus: main_window_menus.cpp; the editor's toolbar and
+// docks: main_window_editor.cpp.
 #include "window/main_window.h"
 
-#include "common/export_folder.h"
 #include "common/modal_scope.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
@@ -13,27 +11,30 @@
 #include "lesson_player/lesson_player.h"
 #include "panels/control_panel.h"
 #include "panels/divergence_banner.h"
+#include "panels/error_panel.h"
 #include "panels/inspector_panel.h"
 #include "panels/sat_panel.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
+#include "window/lesson_session.h"
 #include "window/settings_sync.h"
+#include "window/status_line.h"
+#include "window/window_actions.h"
+#include "window/window_documents.h"
+#include "window/window_layout.h"
 #include "window/window_names.h"
+#include "window/window_plots.h"
 
 #include "format/data_dirs.h"
 #include "format/lesson.h"
-#include "format/lesson_catalog.h"
 
 #include <QAction>
 #include <QCloseEvent>
 #include <QDockWidget>
-#include <QFileDialog>
 #include <QFileInfo>
-#include <QMessageBox>
 #include <QSettings>
 #include <QStatusBar>
-#include <QStyle>
 #include <QToolBar>
 
 namespace rigidlab::ui {
@@ -48,38 +49,41 @@ MainWindow::MainWindow(QWidget* parent)
       m_collision(new CollisionPanel(*m_controller, this))
 {
     m_view->scene()->addItem(m_sat->overlay());
-    m_player->listLessons(lessons::allLessonsInOrder()); // shipped, then the user's own
-    connect(m_player, &LessonPlayer::stepActivated, this, &MainWindow::applyLessonStep);
-    connect(m_player, &LessonPlayer::lessonClosed, this, &MainWindow::leaveLesson);
-    connect(m_player, &LessonPlayer::heldBackChanged, this, [this](const QStringList& held) {
-        const bool wasHeld = m_runHeld;
-        applyHeldBack(held);
-        if (wasHeld && !m_runHeld)
-            m_controller->setRunning(true); // predicted: now see
-    });
-    connect(m_player, &LessonPlayer::exportRequested, this, [this] {
-        const ModalScope modal;
-        const QString folder = QFileDialog::getExistingDirectory(
-            this, tr("Export the step's plots into"), exportFolder());
-        if (folder.isEmpty())
-            return;
-        rememberExportFolder(folder);
-        const QStringList errors = exportStepPlots(folder);
-        if (!errors.isEmpty())
-            QMessageBox::warning(this, tr("Export failed"), errors.join(QLatin1Char('\n')));
-        else
-            statusBar()->showMessage(tr("Plots written to %1").arg(folder), 6000);
-    });
     setWindowTitle(tr("RigidLab"));
     setCentralWidget(m_view);
-    buildActions();
-    buildDocks();
+    m_actions = new WindowActions(*this, *m_controller, *m_view);
+    m_plots = {makeEnergyPlot(this), makeMomentumPlot(this), makeDriftPlot(this)};
+    WindowLayout::Panels panels;
+    panels.lesson = m_player;
+    panels.lessonNavigation = m_player->takeNavigation();
+    panels.controls = m_controls;
+    panels.inspector = m_inspector;
+    panels.plots = m_plots;
+    panels.sat = m_sat;
+    panels.bounces = m_bounces;
+    panels.collision = m_collision;
+    panels.error = new ErrorPanel(this);
+    m_layout = new WindowLayout(*this, panels);
+    m_status = new StatusLine(*this, *m_controller, *m_view);
+    m_documents = new WindowDocuments(*this, *m_document);
     buildEditor();
+    m_session = new LessonSession({*this, *m_player, *m_controller, *m_document, *m_documents,
+                                   *m_editTools, *m_layout, *m_actions, *m_view, *m_controls,
+                                   *m_sat, *m_bounces, *m_collision, m_plots});
     buildMenus();
-
     new DivergenceBanner(*m_controller, m_view);
-    buildStatusBar();
+    wirePanels();
+    wireDocument();
+    for (PlotWidget* plot : m_plots)
+        followController(*plot, *m_controller);
+    restoreSettings();
+    updateStatus();
+}
 
+MainWindow::~MainWindow() = default;
+
+void MainWindow::wirePanels()
+{
     connect(m_view, &WorldView::bodySelected, m_inspector, &InspectorPanel::setBody);
     // A typed value refused (out of range, not a number) is said in the status bar too.
     // (Received by the status bar itself: a field left while the window is being destroyed
@@ -88,26 +92,44 @@ MainWindow::MainWindow(QWidget* parent)
     const auto showRefusal = [bar](const QString& why) { bar->showMessage(why, 8000); };
     connect(m_controls, &ControlPanel::inputRefused, bar, showRefusal);
     connect(m_inspector, &InspectorPanel::inputRefused, bar, showRefusal);
-    connect(m_controller, &SimulationController::runningChanged, this, [this](bool running) {
-        m_playAction->setText(running ? tr("Pause") : tr("Play"));
-        m_playAction->setIcon(
-            style()->standardIcon(running ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
+    connect(m_documents, &WindowDocuments::message, bar, &QStatusBar::showMessage);
+    connect(m_session, &LessonSession::runHeldChanged, this,
+            [this](bool held) { m_actions->setRunState(m_editTools->editing(), held); });
+    connect(m_session, &LessonSession::left, this, &MainWindow::showSceneTitle);
+    connect(m_layout, &WindowLayout::presentationChanged, this, [this](bool on) {
+        m_status->setPresentation(on);
+        m_view->scene()->update();
+        m_view->viewport()->update();
+        if (m_presentAction)
+            m_presentAction->setChecked(on);
     });
-    connect(m_controller, &SimulationController::worldChanged, this, &MainWindow::updateTimeline);
+}
+
+void MainWindow::wireDocument()
+{
+    m_documents->setLeaveLesson([this] {
+        if (m_session->inLesson())
+            m_player->closeLesson();
+    });
+    // A teacher starting a new scene wants to draw at once.
+    // The view shows the middle of the new ground, at a zoom that draws on a 1 m grid.
+    connect(m_documents, &WindowDocuments::newSceneMade, this, [this] {
+        m_view->fitRect(SceneDocument::newSceneFrame(), 20);
+        m_editTools->setEditing(true);
+    });
+    m_player->setLeaveGuard([this] { return confirmLeaveScene(); });
     connect(m_controller, &SimulationController::sceneLoaded, this, [this] {
-        if (!m_inLesson) // in a lesson, its title and step stay (applyLessonStep)
+        if (!m_session->inLesson()) // in a lesson, its title and step stay
             showSceneTitle();
     });
     // Every change to the document (an edit, undo, redo, opening) rebuilds the world from it,
     // so Run starts from the scene as edited and Reset returns to it. A lesson step loads its
     // worlds itself (compared worlds too) when it starts the document over.
     connect(m_document, &SceneDocument::sceneChanged, this, [this] {
-        if (m_lessonLoading)
+        if (m_session->loading())
             return;
-        const lessons::Lesson* lesson = m_player->lesson();
-        if (m_inLesson && lesson) // the step's settings, compared worlds and measurements stay
-            loadStepWorlds(lesson->steps[static_cast<size_t>(m_player->stepIndex())],
-                           m_document->scene(), m_document->path());
+        if (m_session->inLesson() && m_player->lesson())
+            m_session->reloadStepWorlds();
         else
             m_controller->loadScene(m_document->scene(), m_document->path());
     });
@@ -116,17 +138,10 @@ MainWindow::MainWindow(QWidget* parent)
             setWindowModified(modified);
     });
     connect(m_document, &SceneDocument::pathChanged, this, [this] {
-        if (!m_inLesson)
+        if (!m_session->inLesson())
             showSceneTitle();
     });
-    m_player->setLeaveGuard([this] { return confirmLeaveScene(); });
-    for (PlotWidget* plot : m_plots)
-        followController(plot);
-    restoreSettings();
-    updateStatus();
 }
-
-MainWindow::~MainWindow() = default;
 
 void MainWindow::showSceneTitle()
 {
@@ -142,35 +157,136 @@ void MainWindow::showSceneTitle()
     setWindowModified(m_document->isModified());
 }
 
-void MainWindow::followController(PlotWidget* plot)
+QList<PlotWidget*> MainWindow::plotsOnScreen() const
 {
-    // The live samples, cleared with a new scene, cut back on a rewind, marked where a setting
-    // changed, drained after each frame.
-    plot->setSource(&m_controller->samples());
-    connect(m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
-    connect(m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
-    connect(m_controller, &SimulationController::marked, plot, &PlotWidget::addMark);
-    connect(m_controller, &SimulationController::frameAdvanced, plot, &PlotWidget::frameAdvanced);
-    // The plot keeps its points as far back as the timeline goes (going back shows them).
-    connect(m_controller, &SimulationController::worldChanged, plot,
-            [plot, c = m_controller] { plot->setTimelineStart(c->earliestTime()); });
+    // The standard plots whose docks are shown, then the compared worlds' plots of a lesson
+    // step: what the student sees, not the plots the step hides.
+    QList<PlotWidget*> plots;
+    for (std::size_t i = 0; i < kPlotNames.size(); ++i)
+        if (!m_layout->dock(QLatin1String(kPlotNames[i].name))->isHidden())
+            plots << m_plots[i];
+    if (!m_layout->compareDock()->isHidden())
+        for (PlotWidget* plot : m_session->comparePlots())
+            plots << plot;
+    return plots;
 }
 
+// The parts' answers.
+QString MainWindow::openScene(const QString& path, bool quiet)
+{
+    return m_documents->openScene(path, quiet);
+}
+bool MainWindow::newScene()
+{
+    return m_documents->newScene();
+}
+bool MainWindow::saveScene()
+{
+    return m_documents->saveScene();
+}
+bool MainWindow::saveSceneAs()
+{
+    return m_documents->saveSceneAs();
+}
+bool MainWindow::confirmLeaveScene()
+{
+    return m_documents->confirmLeaveScene();
+}
+void MainWindow::setSavePathAsker(SavePathAsker asker)
+{
+    m_documents->setSavePathAsker(std::move(asker));
+}
+void MainWindow::setUnsavedAsker(UnsavedAsker asker)
+{
+    m_documents->setUnsavedAsker(std::move(asker));
+}
+const QString& MainWindow::lastFolder() const
+{
+    return m_documents->lastFolder();
+}
+bool MainWindow::documentIsFile() const
+{
+    return m_documents->documentIsFile();
+}
+void MainWindow::adoptDocument(const lessons::Scene& edited, const QString& path, bool isFile,
+                               bool modified)
+{
+    m_documents->adoptDocument(edited, path, isFile, modified);
+}
+QString MainWindow::lastError() const
+{
+    return m_documents->lastError();
+}
 QString MainWindow::scenesFolder()
 {
     return lessons::shippedScenesDir();
 }
-
 QString MainWindow::lessonsFolder()
 {
     return lessons::shippedLessonsDir();
+}
+QString MainWindow::openLesson(const QString& path, bool quiet)
+{
+    return m_session->openLesson(path, quiet);
+}
+PlotWidget* MainWindow::comparePlot() const
+{
+    return m_session->comparePlots().empty() ? nullptr : m_session->comparePlots().front();
+}
+const std::vector<PlotWidget*>& MainWindow::comparePlots() const
+{
+    return m_session->comparePlots();
+}
+QDockWidget* MainWindow::dock(const QString& name) const
+{
+    return m_layout->dock(name);
+}
+QStringList MainWindow::exportStepPlots(const QString& folder)
+{
+    return m_session->exportStepPlots(folder);
+}
+QAction* MainWindow::overlayAction(Overlay overlay) const
+{
+    return m_actions->overlay(overlay);
+}
+QString MainWindow::statusText() const
+{
+    return m_status->text();
+}
+QAction* MainWindow::statusDetailsAction() const
+{
+    return m_status->detailsAction();
+}
+void MainWindow::setDetailsShown(bool shown)
+{
+    m_status->setDetailsShown(shown);
+}
+void MainWindow::updateStatus()
+{
+    m_status->update();
+}
+void MainWindow::fitToScreen(const QRect& available)
+{
+    m_layout->fitToScreen(available);
+}
+bool MainWindow::compactLayout() const
+{
+    return m_layout->compact();
+}
+void MainWindow::setPresentation(bool on)
+{
+    m_layout->setPresentation(on);
+}
+bool MainWindow::presentation() const
+{
+    return m_layout->presentation();
 }
 
 void MainWindow::restoreSettings()
 {
     QSettings s;
-    m_lastFolder = s.value(QStringLiteral("lastFolder")).toString();
-    restoreLayout(s);
+    m_documents->restoreSettings();
+    m_layout->restore(s);
     // A layout saved in Edit mode would show the editor's tools and docks outside it.
     const bool editing = m_editTools && m_editTools->editing();
     if (auto* tools = findChild<QToolBar*>(QStringLiteral("editToolbar")))
@@ -182,9 +298,8 @@ void MainWindow::restoreSettings()
         const QString key =
             QStringLiteral("overlays/") + QLatin1String(kOverlayNames[i].settingKey);
         if (s.contains(key))
-            m_overlayActions[i]->setChecked(s.value(key).toBool());
+            m_actions->overlays()[i]->setChecked(s.value(key).toBool());
     }
-    rebuildRecentMenu();
 }
 
 void MainWindow::closeEvent(QCloseEvent* event)
@@ -208,12 +323,24 @@ void MainWindow::closeEvent(QCloseEvent* event)
     }
     m_controller->setRunning(false);
     QSettings s;
-    saveLayout(s);
+    m_layout->save(s);
     for (std::size_t i = 0; i < kOverlayNames.size(); ++i)
         s.setValue(QStringLiteral("overlays/") + QLatin1String(kOverlayNames[i].settingKey),
-                   m_overlayActions[i]->isChecked());
+                   m_actions->overlays()[i]->isChecked());
     syncSettings(s, *this);
     event->accept();
+}
+
+void MainWindow::showEvent(QShowEvent* event)
+{
+    QMainWindow::showEvent(event);
+    m_layout->windowShown();
+}
+
+void MainWindow::resizeEvent(QResizeEvent* event)
+{
+    QMainWindow::resizeEvent(event);
+    m_layout->windowResized();
 }
 
 } // namespace rigidlab::ui

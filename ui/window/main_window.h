@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The lab window: the world view in the middle; controls, inspector and plots in docks;
-// a timeline for time travel; menus, a toolbar and a status bar.
+// a timeline for time travel; menus, a toolbar and a status bar. MainWindow makes the panels
+// and the parts that each do one job (window_documents.h, lesson_session.h, window_layout.h,
+// status_line.h, window_actions.h) and connects them; its public functions are the parts'
+// answers, for the program and the tests.
 
 #include "view/overlays.h"
 
-#include <QFont>
+#include <QList>
 #include <QMainWindow>
-#include <QMap>
-#include <QPalette>
-#include <QPointer>
 #include <QString>
 
 #include <array>
@@ -38,10 +38,15 @@ class ControlPanel;
 class EditTools;
 class InspectorPanel;
 class LessonPlayer;
+class LessonSession;
 class SatPanel;
 class PlotWidget;
 class SceneDocument;
 class SimulationController;
+class StatusLine;
+class WindowActions;
+class WindowDocuments;
+class WindowLayout;
 class WorldView;
 
 class MainWindow : public QMainWindow {
@@ -58,7 +63,7 @@ public:
     bool newScene();
     /// File › Save: writes the scene to its file; a scene with none (a new one, a lesson's) or
     /// a shipped one goes to Save As. True when written; on failure the writer's message is
-    /// shown and lastError() holds it (main_window_save.cpp).
+    /// shown and lastError() holds it.
     bool saveScene();
     /// File › Save As: asks for a file (starting in the user's scenes folder) and writes there.
     /// A shipped scene is never overwritten. True when written.
@@ -69,16 +74,16 @@ public:
     /// The file Save As writes to, given the suggested path; empty to cancel. Unset: a file
     /// dialog. (Tests answer without a dialog.)
     using SavePathAsker = std::function<QString(const QString& suggested)>;
-    void setSavePathAsker(SavePathAsker asker) { m_savePathAsker = std::move(asker); }
+    void setSavePathAsker(SavePathAsker asker);
     /// The folder the Open dialog starts in (empty: the shipped scenes).
-    const QString& lastFolder() const { return m_lastFolder; }
+    const QString& lastFolder() const;
     /// The answer to the unsaved-changes question: QMessageBox::Save, Discard or Cancel.
     /// Unset: a message box.
     using UnsavedAsker = std::function<int()>;
-    void setUnsavedAsker(UnsavedAsker asker) { m_unsavedAsker = std::move(asker); }
+    void setUnsavedAsker(UnsavedAsker asker);
     /// Whether the document is a scene file of its own, which Save writes to (not a new scene
     /// nor a lesson's).
-    bool documentIsFile() const { return m_documentIsFile; }
+    bool documentIsFile() const;
     /// Takes over the scene another window was editing (a language switch): `edited`, which
     /// belongs to the file at `path` when `isFile`, `modified` if it has unsaved edits (then
     /// undoing goes back to the file as saved, or to the scene as it was).
@@ -95,13 +100,10 @@ public:
     BouncePanel& bouncePanel() { return *m_bounces; }
     CollisionPanel& collisionPanel() { return *m_collision; }
     /// The first plot comparing worlds side by side in this lesson step, or nullptr.
-    PlotWidget* comparePlot() const
-    {
-        return m_comparePlots.empty() ? nullptr : m_comparePlots.front();
-    }
+    PlotWidget* comparePlot() const;
     /// Every plot comparing worlds in this step (compare-energy, compare-drift), in the order
     /// the step names them.
-    const std::vector<PlotWidget*>& comparePlots() const { return m_comparePlots; }
+    const std::vector<PlotWidget*>& comparePlots() const;
     /// The dock holding a panel or plot, by its lesson name ("energy", "sat", ...).
     QDockWidget* dock(const QString& name) const;
     /// Writes the current step's plots (PNG, PDF, SVG, CSV) into a folder; returns errors.
@@ -114,32 +116,29 @@ public:
     WorldView& view() { return *m_view; }
     ControlPanel& controls() { return *m_controls; }
     InspectorPanel& inspector() { return *m_inspector; }
-    /// The scene editor: Edit mode and its tools (main_window_editor.cpp).
+    /// The scene editor: Edit mode and its tools.
     EditTools& editTools() { return *m_editTools; }
     PlotWidget* plot(int index) const { return m_plots[static_cast<size_t>(index)]; }
     static constexpr int kPlotCount = 3;
-    QString lastError() const { return m_lastError; }
-    QAction* overlayAction(Overlay overlay) const
-    {
-        return m_overlayActions[static_cast<size_t>(overlay)];
-    }
+    QString lastError() const;
+    QAction* overlayAction(Overlay overlay) const;
     /// Help › Controls (rich text), from the table that registers the keys (shortcuts.h).
     QString controlsHelpText() const;
     /// What the status bar shows now, its visible parts joined.
     QString statusText() const;
     /// View › Status details: steps/s, frame and stage timings in the status bar.
-    QAction* statusDetailsAction() const { return m_detailsAction; }
+    QAction* statusDetailsAction() const;
 
     /// Sizes the window for a screen's available area (never larger) and arranges the docks
-    /// for it: on a small screen the plots share a tabbed dock (main_window_layout.cpp).
+    /// for it: on a small screen the plots share a tabbed dock (window_layout.cpp).
     void fitToScreen(const QRect& available);
     /// Whether the docks are arranged for a small screen.
-    bool compactLayout() const { return m_compact; }
+    bool compactLayout() const;
     /// Presentation mode (View › Presentation, F11, rigidlab --present): full screen, larger
     /// text, thicker lines, a high-contrast palette, no developer details. Leaving it
     /// restores the layout.
     void setPresentation(bool on);
-    bool presentation() const { return m_presentation; }
+    bool presentation() const;
     /// Stage timings and steps per second in the status bar, where View › Status details asks
     /// for them and presentation mode does not hide them.
     void setDetailsShown(bool shown);
@@ -155,59 +154,29 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private slots:
-    void openDialog();
-    void openLessonDialog();
-    void applyLessonStep(const rigidlab::lessons::Lesson& lesson, int step);
-    void leaveLesson();
-    /// The window's title outside a lesson: the scene's.
-    void showSceneTitle();
-    /// Hides what the lesson step's questions still hold back, shows what they released.
-    void applyHeldBack(const QStringList& held);
     void updateStatus();
-    void updateTimeline();
 
 private:
-    /// Loads a lesson step's worlds (compared ones too) from `scene`, with the step's settings
-    /// and measurements; returns the compared worlds' labels, empty when none.
-    QStringList loadStepWorlds(const lessons::LessonStep& step, const lessons::Scene& scene,
-                               const QString& path);
-    void buildActions();
+    void wireDocument();
+    void wirePanels();
     void buildMenus();
-    void buildStatusBar();
-    void buildDocks();
-    /// The scene editor's document, tools and toolbar (main_window_editor.cpp).
+    void buildFileMenu();
+    void buildEditMenu();
+    void buildViewMenu();
+    void buildHelpMenu();
+    /// The scene editor's tools, toolbar and docks (main_window_editor.cpp).
     void buildEditor();
-    /// The editor's History dock, a tab beside its Properties (main_window_history.cpp).
-    void buildHistory(QDockWidget& properties);
-    /// What Edit mode changes in the rest of the window: Step and Back off while editing, a
-    /// lesson step's measurements kept on the world as edited (main_window_editor.cpp).
-    void followEditMode();
-    /// Step and Back: disabled while editing (the world does not step) or while a question
-    /// holds the run back, with a tooltip saying why.
-    void updateStepActions();
-    void addRecent(const QString& path);
-    /// File › Your own scenes, made when the user's scenes folder holds any, remade after a
-    /// save (main_window_save.cpp).
-    void rebuildOwnScenesMenu();
-    /// Writes the document to `path`: true when written, else the reason is shown.
-    bool writeDocument(const QString& path);
-    void rebuildRecentMenu();
-    void exportPlotDialog(PlotWidget* plot, const QString& format);
+    QDockWidget* buildPropertiesDock();
+    void buildHistoryDock(QDockWidget& properties);
+    /// The plots on screen now: File › Export plot offers these.
+    QList<PlotWidget*> plotsOnScreen() const;
+    void showControlsHelp();
+    /// The window's title outside a lesson: the scene's.
+    void showSceneTitle();
     void restoreSettings();
-    /// Connects a plot to the controller's samples and clock.
-    void followController(PlotWidget* plot);
-    QRect availableScreenArea() const;
-    /// Stacked plots on a roomy `screen`, tabbed on a small one; side columns for the window.
-    void arrangeDocks(const QSize& screen, int windowWidth);
-    /// Side columns no wider than their share of `windowWidth`: the world keeps half.
-    void fitSideColumns(int windowWidth);
-    void saveLayout(QSettings& settings) const;
-    void restoreLayout(const QSettings& settings);
 
     SimulationController* m_controller;
     SceneDocument* m_document;
-    /// A lesson step is starting the document over: it loads its own worlds (compared ones too).
-    bool m_lessonLoading = false;
     WorldView* m_view;
     ControlPanel* m_controls;
     InspectorPanel* m_inspector;
@@ -215,60 +184,18 @@ private:
     SatPanel* m_sat;
     BouncePanel* m_bounces;
     CollisionPanel* m_collision;
-    std::vector<PlotWidget*> m_comparePlots; ///< in m_compareDock
-    QDockWidget* m_compareDock = nullptr;
-    QMap<QString, QDockWidget*> m_docks;
-    bool m_inLesson = false;
-    bool m_closePending = false; ///< asked to close while a dialog's answer was pending
-    bool m_runHeld = false;      ///< a question keeps the scene from running until it is answered
     std::array<PlotWidget*, kPlotCount> m_plots{};
-    QSlider* m_timeline = nullptr;
-    QLabel* m_timeLabel = nullptr;
-    QLabel* m_statusTime = nullptr;
-    QLabel* m_statusRate = nullptr;
-    QLabel* m_statusDrift = nullptr;
-    QLabel* m_statusSlow = nullptr;
-    QLabel* m_statusDetails = nullptr;
-    QAction* m_detailsAction = nullptr;
-    QMenu* m_recentMenu = nullptr;
-    QMenu* m_scenesMenu = nullptr;
+    bool m_closePending = false; ///< asked to close while a dialog's answer was pending
+
+    // The parts the window wires together, each with one job.
+    WindowActions* m_actions = nullptr;     ///< run actions, overlays, simulation toolbar
+    WindowLayout* m_layout = nullptr;       ///< docks, their places, presentation mode
+    StatusLine* m_status = nullptr;         ///< status bar and timeline
+    WindowDocuments* m_documents = nullptr; ///< scene files and recent files
+    EditTools* m_editTools = nullptr;       ///< the scene editor (ui/editor)
+    LessonSession* m_session = nullptr;     ///< a lesson's steps in the window
     QMenu* m_viewMenu = nullptr;
-    QMenu* m_editMenu = nullptr;
-    QMenu* m_fileMenu = nullptr;
-    QMenu* m_ownScenesMenu = nullptr;     ///< File › Your own scenes, when there are any
-    QAction* m_ownScenesBefore = nullptr; ///< the File menu entry it goes before
-    /// The document is a scene file of its own (opened or saved): Save writes to its path.
-    /// A new scene and a lesson's scene (its path is the lesson's) go to Save As.
-    bool m_documentIsFile = false;
-    SavePathAsker m_savePathAsker;
-    UnsavedAsker m_unsavedAsker;
-    QAction* m_undoAction = nullptr;
-    QAction* m_redoAction = nullptr;
-    QAction* m_playAction = nullptr;
-    QAction* m_stepAction = nullptr;
-    QAction* m_backAction = nullptr;
-    QAction* m_resetAction = nullptr;
-    QAction* m_fitAction = nullptr;
-    std::array<QAction*, kOverlayCount> m_overlayActions{};
-    QList<QAction*> m_rotateActions;
-    QString m_lastError;
-    QString m_lastFolder;
-
-    // Layout and presentation mode (main_window_layout.cpp).
-    QRect m_screenArea;     ///< the available area the layout was made for
-    bool m_compact = false; ///< plots tabbed for a small screen
-    bool m_presentation = false;
-    bool m_restoreStatePending = false; ///< docks to put back once full screen has ended
-    bool m_normalWasMaximized = false;
-    QByteArray m_normalGeometry; ///< before presentation mode
-    QByteArray m_normalState;
-    QFont m_normalFont;
-    std::vector<std::pair<QPointer<QWidget>, QFont>> m_explicitFonts; ///< before presentation
-    QPalette m_normalPalette;
     QAction* m_presentAction = nullptr;
-
-    // The scene editor's tools (main_window_editor.cpp).
-    EditTools* m_editTools = nullptr;
 };
 
 } // namespace rigidlab::ui

@@ -9,12 +9,17 @@
 #include "format/atomic_file.h"
 #include "format/lesson.h"
 
+#include <QAction>
 #include <QBuffer>
 #include <QCoreApplication>
+#include <QDialog>
 #include <QDir>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QImage>
 #include <QLayout>
+#include <QMessageBox>
+#include <QPainter>
 #include <QPixmap>
 #include <QSettings>
 #include <QStandardPaths>
@@ -55,11 +60,18 @@ void settle(MainWindow& window)
     }
 }
 
-/// Grabs the window as `size` device pixels and writes it as a PNG, atomically.
-QString shoot(MainWindow& window, const QSize& size, const QString& path)
+/// Grabs the window as `size` device pixels, with `over` (a dialog) drawn where it stands, and
+/// writes it as a PNG, atomically.
+QString shoot(MainWindow& window, const QSize& size, const QString& path, QWidget* over)
 {
     settle(window);
     QImage image = window.grab().toImage();
+    if (over) {
+        QCoreApplication::processEvents();
+        QPainter painter(&image);
+        const QPoint at = over->mapToGlobal(QPoint(0, 0)) - window.mapToGlobal(QPoint(0, 0));
+        painter.drawPixmap(at * window.devicePixelRatioF(), over->grab());
+    }
     // Window sizes are logical pixels; with a scale factor the grab has more device pixels.
     if (image.size() != size)
         image = image.copy(QRect(QPoint(0, 0), size));
@@ -118,10 +130,125 @@ private:
 
 } // namespace
 
+namespace {
+
+/// Writes the PNGs into one folder and keeps the index of what each shows.
+class Shooter {
+public:
+    Shooter(MainWindow& window, const ScreenshotOptions& options, ScreenshotResult& result)
+        : m_window(window), m_options(options), m_result(result), m_folder(options.folder)
+    {
+    }
+    /// Shoots the window (with `over`, a dialog of it, drawn where it stands) as `name`.
+    bool write(const QString& name, const QString& what, QWidget* over = nullptr)
+    {
+        const QString error = shoot(m_window, m_options.size, m_folder.filePath(name), over);
+        if (!error.isEmpty()) {
+            m_result.error = error;
+            return false;
+        }
+        m_result.files << name;
+        m_index << name + QLatin1Char('\t') + what;
+        return true;
+    }
+    bool writeIndex()
+    {
+        const QString error = lessons::writeFileAtomically(
+            m_folder.filePath(QStringLiteral("index.txt")),
+            (m_index.join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8());
+        if (!error.isEmpty()) {
+            m_result.error = error;
+            return false;
+        }
+        m_result.files << QStringLiteral("index.txt");
+        return true;
+    }
+    bool fail(const QString& error)
+    {
+        m_result.error = error;
+        return false;
+    }
+
+private:
+    MainWindow& m_window;
+    const ScreenshotOptions& m_options;
+    ScreenshotResult& m_result;
+    QDir m_folder;
+    QStringList m_index;
+};
+
+bool shootLessons(MainWindow& window, const ScreenshotOptions& options, Shooter& shooter)
+{
+    const QStringList lessonFiles =
+        options.lessons ? *options.lessons : window.lessonPlayer().lessonPaths();
+    for (const QString& path : lessonFiles) {
+        if (const QString error = window.openLesson(path, true); !error.isEmpty())
+            return shooter.fail(error);
+        const lessons::Lesson& lesson = *window.lessonPlayer().lesson();
+        const int count = static_cast<int>(lesson.steps.size());
+        const int shots =
+            options.maxStepsPerLesson > 0 ? std::min(count, options.maxStepsPerLesson) : count;
+        for (int i = 0; i < shots; ++i) {
+            window.lessonPlayer().goToStep(i);
+            const lessons::LessonStep& step = lesson.steps[static_cast<std::size_t>(i)];
+            runFor(window.controller(), step.exportTime);
+            const QString name = QStringLiteral("%1-%2.png")
+                                     .arg(QFileInfo(path).completeBaseName())
+                                     .arg(i + 1, 2, 10, QLatin1Char('0'));
+            if (!shooter.write(name, Screenshots::tr("%1, step %2 of %3: %4, after %5 s")
+                                         .arg(lesson.title)
+                                         .arg(i + 1)
+                                         .arg(count)
+                                         .arg(step.title, QString::number(step.exportTime))))
+                return false;
+        }
+    }
+    return true;
+}
+
+/// The views a teacher checks before a class: every panel of a lesson step at once, Help ›
+/// Controls, the editor on a new scene, and presentation mode.
+bool shootClassroom(MainWindow& window, Shooter& shooter)
+{
+    const QString lesson =
+        QDir(MainWindow::lessonsFolder()).filePath(QStringLiteral("restitution.json"));
+    if (const QString error = window.openLesson(lesson, true); !error.isEmpty())
+        return shooter.fail(error);
+    window.lessonPlayer().goToStep(2); // the collision table and the controls
+    runFor(window.controller(), 1.0);
+    for (const char* name : {"controls", "inspector", "collision"})
+        if (QDockWidget* dock = window.dock(QLatin1String(name)); dock && dock->isHidden())
+            dock->toggleViewAction()->trigger(); // as ticked in the View menu
+    if (!shooter.write(QStringLiteral("90-panels.png"),
+                       Screenshots::tr("a lesson step with the controls, the inspector and the "
+                                       "collision table shown")))
+        return false;
+    if (QAction* help = window.findChild<QAction*>(QStringLiteral("help")))
+        help->trigger();
+    auto* helpDialog = window.findChild<QDialog*>(QStringLiteral("controlsHelpDialog"));
+    const bool helpShot =
+        shooter.write(QStringLiteral("91-help-controls.png"),
+                      Screenshots::tr("Help › Controls over the window"), helpDialog);
+    delete helpDialog;
+    if (!helpShot)
+        return false;
+    window.setPresentation(true);
+    const bool presented = shooter.write(QStringLiteral("92-presentation.png"),
+                                         Screenshots::tr("the same step in presentation mode"));
+    window.setPresentation(false);
+    if (!presented)
+        return false;
+    window.setUnsavedAsker([] { return int(QMessageBox::Discard); });
+    window.newScene();
+    return shooter.write(QStringLiteral("93-editor.png"),
+                         Screenshots::tr("the editor on a new scene"));
+}
+
+} // namespace
+
 ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
 {
     ScreenshotResult result;
-    const QDir folder(options.folder);
     if (!QDir().mkpath(options.folder)) {
         result.error = Screenshots::tr("cannot create the folder %1")
                            .arg(QDir::toNativeSeparators(options.folder));
@@ -146,18 +273,7 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
     if (const QString note = fitWindow(window, options.size); !note.isEmpty())
         result.notes << note;
 
-    QStringList index;
-    const auto write = [&](const QString& name, const QString& what) {
-        const QString error = shoot(window, options.size, folder.filePath(name));
-        if (!error.isEmpty()) {
-            result.error = error;
-            return false;
-        }
-        result.files << name;
-        index << name + QLatin1Char('\t') + what;
-        return true;
-    };
-
+    Shooter shooter(window, options, result);
     if (options.welcome) {
         const QString welcome =
             QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json"));
@@ -166,48 +282,16 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
             return result;
         }
         runFor(window.controller(), options.welcomeSeconds);
-        if (!write(QStringLiteral("00-welcome.png"),
-                   Screenshots::tr("the welcome scene after %1 s")
-                       .arg(QString::number(options.welcomeSeconds))))
+        if (!shooter.write(QStringLiteral("00-welcome.png"),
+                           Screenshots::tr("the welcome scene after %1 s")
+                               .arg(QString::number(options.welcomeSeconds))))
             return result;
     }
-
-    const QStringList lessonFiles =
-        options.lessons ? *options.lessons : window.lessonPlayer().lessonPaths();
-    for (const QString& path : lessonFiles) {
-        if (const QString error = window.openLesson(path, true); !error.isEmpty()) {
-            result.error = error;
-            return result;
-        }
-        const lessons::Lesson& lesson = *window.lessonPlayer().lesson();
-        const int count = static_cast<int>(lesson.steps.size());
-        const int shots =
-            options.maxStepsPerLesson > 0 ? std::min(count, options.maxStepsPerLesson) : count;
-        for (int i = 0; i < shots; ++i) {
-            window.lessonPlayer().goToStep(i);
-            const lessons::LessonStep& step = lesson.steps[static_cast<std::size_t>(i)];
-            runFor(window.controller(), step.exportTime);
-            const QString name = QStringLiteral("%1-%2.png")
-                                     .arg(QFileInfo(path).completeBaseName())
-                                     .arg(i + 1, 2, 10, QLatin1Char('0'));
-            if (!write(name, Screenshots::tr("%1, step %2 of %3: %4, after %5 s")
-                                 .arg(lesson.title)
-                                 .arg(i + 1)
-                                 .arg(count)
-                                 .arg(step.title, QString::number(step.exportTime))))
-                return result;
-        }
-    }
-
-    const QString indexPath = folder.filePath(QStringLiteral("index.txt"));
-    const QString error = lessons::writeFileAtomically(
-        indexPath, (index.join(QLatin1Char('\n')) + QLatin1Char('\n')).toUtf8());
-    if (!error.isEmpty()) {
-        result.error = error;
+    if (!shootLessons(window, options, shooter))
         return result;
-    }
-    result.files << QStringLiteral("index.txt");
-    result.ok = true;
+    if (options.classroom && !shootClassroom(window, shooter))
+        return result;
+    result.ok = shooter.writeIndex();
     return result;
 }
 

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// rigidlab --screenshots DIR: the plain window at a given size on the welcome scene and on
-// every step of the shipped lessons, one PNG per view and an index of what each shows. For
-// checking the layout at classroom sizes (a projector's 1024×768) without clicking through.
+// rigidlab --screenshots DIR: the plain window at a given size on the welcome scene, on
+// every step of the shipped lessons and in the views a teacher checks before a class, one PNG per
+// view and an index of what each shows. For checking the layout at classroom sizes (a projector's
+// 1024×768) without clicking through.
 
 #include <QSize>
 #include <QString>
@@ -22,6 +23,10 @@ struct ScreenshotOptions {
     bool welcome = true;                ///< shoot the welcome scene (00-welcome.png)
     std::optional<QStringList> lessons; ///< lesson files; nullopt: all shipped lessons
     int maxStepsPerLesson = 0;          ///< 0: every step
+    /// Shoot the classroom views too: a lesson step with the controls, inspector and
+    /// collision panels (90-panels.png), Help › Controls (91-help-controls.png), presentation
+    /// mode (92-presentation.png) and the editor on a new scene (93-editor.png).
+    bool classroom = true;
     /// Called on the new window before anything is shot (presentation mode, ...).
     std::function<void(MainWindow&)> setUp;
 };

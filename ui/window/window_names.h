@@ -9,7 +9,9 @@
 
 #include "format/lesson.h"
 
+#include <QCoreApplication>
 #include <QLatin1String>
+#include <QString>
 #include <QtGlobal>
 
 #include <array>
@@ -17,6 +19,13 @@
 #include <string_view>
 
 namespace rigidlab::ui {
+
+/// A name from the tables below in the window's language (their translation context is the
+/// window's, where they were first written).
+inline QString windowNameText(const char* text)
+{
+    return QCoreApplication::translate("rigidlab::ui::MainWindow", text);
+}
 
 struct OverlayNames {
     Overlay overlay;

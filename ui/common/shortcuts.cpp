@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "window/shortcuts.h"
+#include "common/shortcuts.h"
 
 #include <QCoreApplication>
 

@@ -43,7 +43,7 @@ inline constexpr std::array kControls{
     ControlInfo{"presentation", "F11", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Presentation mode: full screen, large type and "
                                               "thick lines for a projector")},
-    // Edit mode (issue 15). The tools' keys work only in Edit mode, where they must not be
+    // Edit mode. The tools' keys work only in Edit mode, where they must not be
     // one of the keys above (S R F Q E ...) nor an overlay's (V C B M T J). In Edit mode the
     // arrows nudge and Q, E turn the selected body in the scene, not in the running world.
     ControlInfo{"editMode", "Ctrl+E", nullptr,
@@ -89,6 +89,8 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "Open a lesson")},
     ControlInfo{"quit", "Ctrl+Q", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Quit RigidLab")},
+    ControlInfo{"help", "F1", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Help: this list of keys and mouse actions")},
     ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Click a body"),
                 QT_TRANSLATE_NOOP("Controls", "Select it and show it in the inspector")},
     ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Drag a body"),

@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "window/status_line.h"
+
+#include "common/display_names.h"
+#include "common/status_text.h"
+#include "common/theme.h"
+#include "panels/divergence_banner.h"
+#include "simulation/drift_words.h"
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
+#include "window/settings_sync.h"
+#include "window/window_layout.h"
+
+#include <QAction>
+#include <QLabel>
+#include <QLocale>
+#include <QMainWindow>
+#include <QSettings>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QStatusBar>
+#include <QTimer>
+#include <QToolBar>
+
+#include <cmath>
+#include <optional>
+
+namespace rigidlab::ui {
+
+StatusLine::StatusLine(QMainWindow& window, SimulationController& controller, WorldView& view)
+    : QObject(&window), m_window(window), m_controller(controller), m_view(view)
+{
+    QStatusBar* bar = window.statusBar();
+    // Readable from the back of a classroom, not only from the teacher's chair.
+    QFont font = bar->font();
+    font.setPointSizeF(font.pointSizeF() * theme::kReadingFontScale);
+    bar->setFont(font);
+    bar->setProperty(kReadingSizeProperty, true);
+    m_time = new QLabel(&window);
+    m_rate = new QLabel(&window);
+    m_drift = new QLabel(&window);
+    m_details = new QLabel(&window);
+    m_slow = new QLabel(tr("slower than real time"), &window);
+    m_slow->setStyleSheet(QStringLiteral("color: white; background: #c0392b; padding: 1px 6px;"));
+    m_slow->setVisible(false);
+    // A dot between the items: the style's own separators are faint or none (presentation
+    // mode's palette), and "t = 2,000 s paused energy drift" reads as one phrase.
+    const auto separator = [&window](const QString& name) {
+        auto* dot = new QLabel(QStringLiteral("·"), &window);
+        dot->setObjectName(name);
+        return dot;
+    };
+    bar->addWidget(m_time);
+    bar->addWidget(separator(QStringLiteral("statusSeparator")));
+    bar->addWidget(m_rate);
+    bar->addWidget(separator(QStringLiteral("statusSeparator")));
+    bar->addWidget(m_drift);
+    bar->addWidget(separator(QStringLiteral("statusDetailsSeparator")));
+    bar->addWidget(m_details);
+    bar->addPermanentWidget(m_slow);
+
+    // The timings are for whoever tunes the engine, not for the class: off unless asked for.
+    const QString key = QStringLiteral("status/details");
+    m_detailsAction = new QAction(tr("Status &details (steps/s, stage timings)"), this);
+    m_detailsAction->setObjectName(QStringLiteral("statusDetails"));
+    m_detailsAction->setCheckable(true);
+    m_detailsAction->setChecked(QSettings().value(key, false).toBool());
+    setDetailsShown(true);
+    connect(m_detailsAction, &QAction::toggled, this, [this, key](bool on) {
+        setDetailsShown(on);
+        QSettings s;
+        s.setValue(key, on);
+        syncSettings(s, m_window);
+        update();
+    });
+    buildTimeline();
+    connect(&controller, &SimulationController::worldChanged, this, &StatusLine::updateTimeline);
+
+    auto* statusTimer = new QTimer(this);
+    connect(statusTimer, &QTimer::timeout, this, &StatusLine::update);
+    statusTimer->start(250);
+}
+
+void StatusLine::buildTimeline()
+{
+    // The timeline: drag to any earlier moment of the run.
+    auto* timebar = new QToolBar(tr("Timeline"), &m_window);
+    timebar->setObjectName(QStringLiteral("timelineToolbar"));
+    m_window.addToolBar(Qt::BottomToolBarArea, timebar);
+    m_timeline = new QSlider(Qt::Horizontal, timebar);
+    m_timeline->setToolTip(tr("Time travel: drag to go back to any moment, then play to go on "
+                              "(or change a setting to branch)"));
+    m_timeline->setObjectName(QStringLiteral("timeline"));
+    m_timeline->setAccessibleName(tr("Timeline"));
+    m_timeLabel = new QLabel(timebar);
+    m_timeLabel->setObjectName(QStringLiteral("timelineLabel"));
+    m_timeLabel->setMinimumWidth(180);
+    timebar->addWidget(new QLabel(tr(" Timeline "), timebar));
+    timebar->addWidget(m_timeline);
+    timebar->addWidget(m_timeLabel);
+    connect(m_timeline, &QSlider::valueChanged, this, [this](int value) {
+        if (m_timeline->isSliderDown() || value != m_controller.currentStep())
+            m_controller.seek(value);
+    });
+}
+
+void StatusLine::update()
+{
+    const QLocale locale;
+    const bool running = m_controller.isRunning();
+    m_time->setText(tr("t = %1 s").arg(locale.toString(m_controller.time(), 'f', 3)));
+    // Simulated seconds per wall second; while paused there is no rate to show.
+    if (!running)
+        m_rate->setText(tr("paused"));
+    else if (const std::optional<double> factor = m_controller.realTimeFactor())
+        m_rate->setText(tr("%1 × real time").arg(locale.toString(*factor, 'f', 2)));
+    else
+        m_rate->setText(tr("running"));
+    // The short wording of presentation mode where the full one would be cut (a 1024-pixel
+    // window at the classroom text size); the full one in the tooltip.
+    const QString full = driftText(m_presentation);
+    int others = 0;
+    for (const QLabel* label : m_window.statusBar()->findChildren<QLabel*>())
+        if (label != m_drift && !label->isHidden())
+            others += label->sizeHint().width() + 8;
+    const bool fits =
+        m_drift->fontMetrics().horizontalAdvance(full) + others < m_window.statusBar()->width();
+    m_drift->setText(fits ? full : driftText(true));
+    m_drift->setToolTip(driftText(false) + QStringLiteral("\n\n") + driftExplanation());
+    if (m_detailsAction->isChecked())
+        m_details->setText(detailsText(running));
+    else
+        m_details->clear();
+    // Over the world, a banner when it diverged.
+    if (auto* banner = m_window.findChild<DivergenceBanner*>()) {
+        banner->refresh();
+        banner->setGeometry(0, 0, m_view.width(), banner->sizeHint().height());
+        banner->raise();
+    }
+    m_slow->setVisible(running && m_controller.slowerThanRealTime());
+}
+
+QString StatusLine::driftText(bool brief) const
+{
+    const QLocale locale;
+    const physics::World& w = m_controller.world();
+    // Drift is the numerical error alone: what contacts, friction, drag and dampers took is
+    // physics, said apart. The label says whose error (drift_words.h).
+    // In short (`brief`) on a projector: the line must fit 1024 pixels at the larger size.
+    QString drift =
+        driftLabel(brief).arg(driftPercentText(m_controller.driftPercent(), locale));
+    const double lost = m_controller.dissipated();
+    if (std::abs(lost) > 1e-9)
+        drift += (brief ? tr(" · dissipated %1 J")
+                        : tr(" · dissipated by contacts, friction, drag and dampers %1 J"))
+                     .arg(locale.toString(lost, 'g', 3));
+    // The adaptive integrator's own estimate of its local error, live (a developer's detail,
+    // not shown on a projector).
+    if (const auto estimate = w.integrator().errorEstimate(); estimate && !brief)
+        drift += tr(" · %1 error estimate %2 (%Ln substep(s))", nullptr, w.integrator().substeps())
+                     .arg(integratorDisplayName(w.def().integrator))
+                     .arg(locale.toString(*estimate, 'g', 2));
+    return drift;
+}
+
+QString StatusLine::detailsText(bool running) const
+{
+    const QLocale locale;
+    // The last step's stages that ran, with their times (physics/profile.h).
+    QStringList stages;
+    const physics::StepProfile& profile = m_controller.world().profile();
+    for (int k = 0; k < physics::kStageCount; ++k)
+        if (profile.ran[k])
+            stages << tr("%1 %2").arg(stageDisplayName(static_cast<physics::Stage>(k)),
+                                      locale.toString(profile.ms[k], 'f', 2));
+    const QString step =
+        tr("last step %1 ms: %2")
+            .arg(locale.toString(profile.total, 'f', 2), stages.join(QStringLiteral(", ")));
+    // Rates only while the clock runs: a paused world has none, and an old one is stale.
+    if (!running)
+        return step;
+    return tr("%1 steps/s · frame %2 ms (physics %3 ms) · %4")
+        .arg(locale.toString(m_controller.stepsPerSecond(), 'f', 0),
+             locale.toString(m_controller.frameMilliseconds(), 'f', 1),
+             locale.toString(m_controller.physicsMilliseconds(), 'f', 1), step);
+}
+
+QString StatusLine::text() const
+{
+    QStringList parts;
+    for (const QLabel* label : {m_time, m_rate, m_drift, m_details, m_slow})
+        if (!label->isHidden() && !label->text().isEmpty())
+            parts << label->text();
+    return parts.join(QStringLiteral(" | "));
+}
+
+void StatusLine::updateTimeline()
+{
+    // The label follows the drag too; the slider itself is left to the hand that holds it.
+    const long long lo = m_controller.earliestStep(), hi = m_controller.latestStep();
+    // One clock: the status bar's time moves with the timeline's, in the same frame.
+    const QString t = QLocale().toString(m_controller.time(), 'f', 3);
+    m_time->setText(tr("t = %1 s").arg(t));
+    // Step counts grouped as the locale does ("10 000" in Czech), as on the plots' axes.
+    m_timeLabel->setText(
+        tr(" step %1 of %2 · t = %3 s")
+            .arg(QLocale().toString(m_controller.currentStep()), QLocale().toString(hi), t));
+    if (m_timeline->isSliderDown())
+        return;
+    const QSignalBlocker block(m_timeline);
+    m_timeline->setRange(static_cast<int>(lo), static_cast<int>(hi));
+    m_timeline->setValue(static_cast<int>(m_controller.currentStep()));
+}
+
+void StatusLine::setPresentation(bool on)
+{
+    m_presentation = on;
+    // No developer details on a projector.
+    setDetailsShown(!on);
+    update(); // the short status line of presentation mode, or the full one
+}
+
+void StatusLine::setDetailsShown(bool shown)
+{
+    // Presentation mode hides them whatever View › Status details says.
+    m_details->setVisible(shown && m_detailsAction->isChecked() && !m_presentation);
+    if (auto* dot = m_window.findChild<QLabel*>(QStringLiteral("statusDetailsSeparator")))
+        dot->setVisible(!m_details->isHidden());
+}
+
+} // namespace rigidlab::ui

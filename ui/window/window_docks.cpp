@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// WindowLayout's docks: the lesson, the panels, the plots, each under its lesson name.
+#include "window/window_layout.h"
+
+#include "common/theme.h"
+#include "plots/plot_widget.h"
+#include "window/dock_tabs.h"
+#include "window/window_names.h"
+
+#include <QAction>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+#include <algorithm>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// Text read by a class from the back of the room: `panel` and the widgets in it that chose a
+/// size of their own (a title, the step's text) grow by theme::kReadingFontScale.
+void enlargeForReading(QWidget& panel)
+{
+    for (QWidget* w : panel.findChildren<QWidget*>())
+        if (w->testAttribute(Qt::WA_SetFont)) {
+            QFont f = w->font();
+            f.setPointSizeF(f.pointSizeF() * theme::kReadingFontScale);
+            w->setFont(f);
+            w->setProperty(kReadingSizeProperty, true);
+        }
+    QFont f = panel.font();
+    f.setPointSizeF(f.pointSizeF() * theme::kReadingFontScale);
+    panel.setFont(f);
+    panel.setProperty(kReadingSizeProperty, true);
+}
+
+} // namespace
+
+WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
+    : QObject(&window), m_window(window)
+{
+    window.setDockOptions(QMainWindow::AnimatedDocks | QMainWindow::AllowTabbedDocks);
+    // Short dock titles, whole on their tabs; the full ones in tooltips.
+    keepDockTabsWhole(window);
+    buildLessonDock(panels);
+    addDock(tr("Controls"), QStringLiteral("controls"), panels.controls, Qt::RightDockWidgetArea);
+    addDock(tr("Inspector"), QStringLiteral("inspector"), panels.inspector,
+            Qt::RightDockWidgetArea);
+    static_assert(kPlotNames.size() == std::tuple_size_v<decltype(panels.plots)>);
+    for (std::size_t i = 0; i < kPlotNames.size(); ++i) {
+        PlotWidget* plot = panels.plots[i];
+        // Small enough that the plots fit beside the world on a 1024×768 projector.
+        plot->setMinimumSize(180, 150);
+        plot->setTitleShown(false); // the dock shows it
+        addDock(windowNameText(kPlotNames[i].shortTitle), QLatin1String(kPlotNames[i].name), plot,
+                Qt::RightDockWidgetArea, windowNameText(kPlotNames[i].title));
+    }
+    addDock(tr("Axis test", "short for: separating axis test"), QStringLiteral("sat"), panels.sat,
+            Qt::RightDockWidgetArea, tr("Separating axis test"))
+        ->hide();
+    addDock(tr("Bounces"), QStringLiteral("bounces"), panels.bounces, Qt::RightDockWidgetArea)
+        ->hide();
+    addDock(tr("Collision"), QStringLiteral("collision"), panels.collision, Qt::RightDockWidgetArea)
+        ->hide();
+    // The work-precision sweep, hidden until asked for (View menu).
+    addDock(tr("Error vs run time"), QStringLiteral("errorDock"), panels.error,
+            Qt::BottomDockWidgetArea)
+        ->hide();
+    m_compareDock = new QDockWidget(tr("Side by side"), &window);
+    m_compareDock->setObjectName(QStringLiteral("compareDock"));
+    setFullTitle(*m_compareDock, m_compareDock->windowTitle());
+    window.addDockWidget(Qt::RightDockWidgetArea, m_compareDock);
+    keepFocusInSight(*m_compareDock);
+    m_compareDock->hide();
+}
+
+QDockWidget* WindowLayout::addDock(const QString& title, const QString& name, QWidget* w, int area,
+                                   const QString& full)
+{
+    auto* dock = new QDockWidget(title, &m_window);
+    dock->setObjectName(name + QStringLiteral("Dock"));
+    setFullTitle(*dock, full.isEmpty() ? title : full);
+    if (qobject_cast<PlotWidget*>(w)) {
+        dock->setWidget(w);
+    } else {
+        // Lists as narrow as a short name: a long entry ("Dormand-Prince 5(4), adaptive")
+        // must not widen the side column on a small projector.
+        for (QComboBox* box : w->findChildren<QComboBox*>()) {
+            box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+            box->setMinimumContentsLength(8);
+        }
+        // A panel taller or wider than its dock scrolls instead of being cut.
+        auto* scroll = new QScrollArea(dock);
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidget(w);
+        dock->setWidget(scroll);
+    }
+    m_window.addDockWidget(static_cast<Qt::DockWidgetArea>(area), dock);
+    m_docks.insert(name, dock);
+    keepFocusInSight(*dock);
+    showWhenAsked(*dock);
+    return dock;
+}
+
+void WindowLayout::buildLessonDock(const Panels& panels)
+{
+    QDockWidget* lessonDock =
+        addDock(tr("Lesson"), QStringLiteral("lesson"), panels.lesson, Qt::LeftDockWidgetArea);
+    enlargeForReading(*panels.lesson);
+    // Back, Next, Restart and Export stay in sight below the lesson, which scrolls.
+    auto* box = new QWidget(lessonDock);
+    auto* column = new QVBoxLayout(box);
+    column->setContentsMargins(0, 0, 0, 4);
+    column->addWidget(lessonDock->widget(), 1);
+    column->addWidget(panels.lessonNavigation);
+    lessonDock->setWidget(box);
+}
+
+void WindowLayout::showWhenAsked(QDockWidget& dock)
+{
+    // Ticked in the View menu: in front of the docks it shares tabs with, in a column wide
+    // enough to read it.
+    connect(dock.toggleViewAction(), &QAction::triggered, this, [this, d = &dock](bool on) {
+        if (!on)
+            return;
+        d->raise();
+        fitSideColumns();
+    });
+}
+
+QDockWidget* WindowLayout::dock(const QString& name) const
+{
+    if (name == QLatin1String("compare-energy") || name == QLatin1String("compare-drift"))
+        return m_compareDock;
+    return m_docks.value(name, nullptr);
+}
+
+void WindowLayout::raiseFirst(QList<QDockWidget*> docks) const
+{
+    // Its table first (its numbers are what the questions ask about), then the first plot it
+    // lists (its text talks about it), then the controls, which the student finds by their tab.
+    const auto rank = [this](QDockWidget* d) {
+        for (const char* table : {"sat", "bounces", "collision"})
+            if (d == m_docks.value(QLatin1String(table)))
+                return 0;
+        return d == m_docks.value(QStringLiteral("controls")) ||
+                       d == m_docks.value(QStringLiteral("inspector"))
+                   ? 2
+                   : 1;
+    };
+    std::stable_sort(docks.begin(), docks.end(),
+                     [&](QDockWidget* a, QDockWidget* b) { return rank(a) < rank(b); });
+    // The first of each tab group: the table, the plot and the controls each have a place.
+    QList<QDockWidget*> raisedWith;
+    for (QDockWidget* d : docks) {
+        const QList<QDockWidget*> tabs = m_window.tabifiedDockWidgets(d);
+        if (std::any_of(tabs.begin(), tabs.end(),
+                        [&](QDockWidget* t) { return raisedWith.contains(t); }))
+            continue;
+        d->raise();
+        raisedWith << d;
+    }
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,247 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// WindowLayout's arrangement for the screen it is on: what a teacher projecting the lab at
+// 1024×768 in a bright room, and a student on a small laptop, need.
+//
+// The rules, in order: the window never opens larger than the screen's available area; the
+// world view keeps at least half of the width; every panel a lesson step shows is in sight
+// (panels share tabs only with panels of their kind, and each kind has its own place in the
+// column); the lesson text and the world win over the plots; every panel scrolls rather than
+// being cut. The layout is remembered per screen size, so a laptop and the classroom
+// projector each keep their own.
+
+#include "window/window_layout.h"
+
+#include "panels/error_panel.h"
+#include "window/dock_tabs.h"
+#include "window/window_names.h"
+
+#include <QDockWidget>
+#include <QGuiApplication>
+#include <QMainWindow>
+#include <QScreen>
+#include <QSettings>
+#include <QTabBar>
+#include <QTimer>
+
+#include <algorithm>
+#include <array>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// The window's size where the screen allows it [px].
+constexpr QSize kPreferredSize(1500, 920);
+/// On a screen smaller than this the plots are tabbed rather than stacked [px].
+constexpr QSize kRoomy(1600, 1000);
+/// The share of the window's width each side column takes at most; together they leave the
+/// world at least half.
+constexpr double kLeftShare = 0.26;
+constexpr double kRightShare = 0.22;
+/// How the right column's height is shared on a small screen, by kind: the controls and the
+/// inspector (the most rows), the tables, the plots.
+constexpr std::array<int, 3> kCompactHeightWeights{5, 4, 4};
+/// The side columns' widths where there is room [px].
+constexpr int kLeftWidth = 400;
+constexpr int kRightWidth = 480;
+
+QString sizeKey(const QSize& size)
+{
+    return QStringLiteral("layout/%1x%2/").arg(size.width()).arg(size.height());
+}
+
+} // namespace
+
+QRect WindowLayout::availableScreenArea() const
+{
+    const QScreen* s = m_window.screen() ? m_window.screen() : QGuiApplication::primaryScreen();
+    return s ? s->availableGeometry() : QRect(QPoint(0, 0), kPreferredSize);
+}
+
+void WindowLayout::fitToScreen(const QRect& available)
+{
+    m_screenArea = available;
+    // The frame the window manager adds (known once the window is shown) counts too.
+    const QSize frame =
+        m_window.isVisible() ? m_window.frameGeometry().size() - m_window.size() : QSize(0, 0);
+    const QSize size = kPreferredSize.boundedTo(available.size() - frame);
+    if (!m_window.isFullScreen() && !m_window.isMaximized()) {
+        m_window.resize(size);
+        m_window.move(available.topLeft() + QPoint((available.width() - size.width()) / 2,
+                                                   (available.height() - size.height()) / 2));
+    }
+    arrangeDocks(available.size());
+    if (QDockWidget* error = m_docks.value(QStringLiteral("errorDock")))
+        ErrorPanel::placeDock(*error, available, m_compact);
+}
+
+void WindowLayout::arrangeDocks(const QSize& screen)
+{
+    m_compact = screen.width() < kRoomy.width() || screen.height() < kRoomy.height();
+    QList<QDockWidget*> plots;
+    for (const PlotNames& plot : kPlotNames)
+        plots << m_docks.value(QLatin1String(plot.name));
+    plots << m_compareDock;
+    const QList<QDockWidget*> settings{m_docks.value(QStringLiteral("controls")),
+                                       m_docks.value(QStringLiteral("inspector"))};
+    QList<QDockWidget*> tables;
+    for (const char* name : {"sat", "bounces", "collision"})
+        tables << m_docks.value(QLatin1String(name));
+    // Each dock is put back at the end of its side, one row each, in order (this also takes
+    // it out of any tab group an earlier arrangement made: splitting a dock that shares tabs
+    // would only add a tab), then the docks of a kind are tabbed together.
+    QList<QDockWidget*> left{m_docks.value(QStringLiteral("lesson"))};
+    QList<QList<QDockWidget*>> groups;
+    if (m_compact) {
+        // On a small screen the lesson has the left column to itself (its text, questions and
+        // buttons need the height). The right column has a place for each kind, top to
+        // bottom: the controls and the inspector, the tables, the plots. A step's panel is
+        // never behind a plot's tab, and a place with nothing shown takes no room.
+        groups = {settings, tables, plots};
+    } else {
+        // The controls and the inspector under the lesson; the plots stacked one above the
+        // other on the right, the tables (SAT, bounces, collision) below them.
+        left << settings;
+        for (QDockWidget* plot : plots)
+            groups << QList<QDockWidget*>{plot};
+        groups << tables;
+    }
+    for (QDockWidget* d : left)
+        m_window.addDockWidget(Qt::LeftDockWidgetArea, d);
+    for (const QList<QDockWidget*>& group : groups)
+        for (QDockWidget* d : group)
+            m_window.addDockWidget(Qt::RightDockWidgetArea, d);
+    if (left.contains(settings.first()))
+        m_window.tabifyDockWidget(settings.first(), settings.last());
+    for (const QList<QDockWidget*>& group : groups)
+        for (int i = 1; i < group.size(); ++i)
+            m_window.tabifyDockWidget(group.first(), group.at(i));
+    m_rightGroups = m_compact ? groups : QList<QList<QDockWidget*>>();
+    settings.first()->raise();
+    plots.first()->raise();
+    fitSideColumns();
+}
+
+void WindowLayout::regroup()
+{
+    for (const QList<QDockWidget*>& group : std::as_const(m_rightGroups)) {
+        QDockWidget* first = nullptr;
+        for (QDockWidget* d : group) {
+            if (d->isHidden())
+                continue;
+            if (!first)
+                first = d;
+            else if (!m_window.tabifiedDockWidgets(first).contains(d))
+                m_window.tabifyDockWidget(first, d);
+        }
+    }
+}
+
+void WindowLayout::fitSideColumns()
+{
+    const int windowWidth = m_window.width();
+    const int left = std::min(kLeftWidth, static_cast<int>(kLeftShare * windowWidth));
+    const int right = std::min(kRightWidth, static_cast<int>(kRightShare * windowWidth));
+    QList<QDockWidget*> leftDocks, rightDocks;
+    for (QDockWidget* d : m_window.findChildren<QDockWidget*>()) {
+        if (d->isHidden())
+            continue;
+        if (m_window.dockWidgetArea(d) == Qt::LeftDockWidgetArea)
+            leftDocks << d;
+        else if (m_window.dockWidgetArea(d) == Qt::RightDockWidgetArea)
+            rightDocks << d;
+    }
+    if (!leftDocks.isEmpty())
+        m_window.resizeDocks({leftDocks.first()}, {left}, Qt::Horizontal);
+    if (!rightDocks.isEmpty())
+        m_window.resizeDocks({rightDocks.first()}, {right}, Qt::Horizontal);
+    // Once the docks have their places: those behind a tab take no keyboard focus.
+    QTimer::singleShot(0, this, [this] {
+        for (QDockWidget* d : m_window.findChildren<QDockWidget*>())
+            showContentIfInSight(*d);
+        // Likewise the tab bars the window keeps aside, out of sight, for later tab groups.
+        for (QTabBar* bar :
+             m_window.findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+            const QRect r = bar->geometry();
+            bar->setFocusPolicy(r.right() < 0 || r.bottom() < 0 ? Qt::NoFocus : Qt::TabFocus);
+        }
+        // A dock shown again may come back as a column of its own beside its kind's tabs,
+        // past the window's edge: back into its tab group.
+        for (const QList<QDockWidget*>& group : std::as_const(m_rightGroups))
+            for (QDockWidget* d : group)
+                if (!d->isHidden() && d->geometry().right() >= m_window.width()) {
+                    regroup();
+                    break;
+                }
+        shareColumnHeight();
+    });
+}
+
+void WindowLayout::shareColumnHeight()
+{
+    // On a small screen the right column's kinds share its height by their weights: the
+    // controls are not squeezed to a few rows by a plot. Each kind by its dock in front.
+    QList<QDockWidget*> shown;
+    QList<int> heights;
+    for (qsizetype g = 0; g < m_rightGroups.size(); ++g)
+        for (QDockWidget* d : m_rightGroups[g])
+            if (!d->isHidden() && d->geometry().right() >= 0 && d->geometry().bottom() >= 0) {
+                shown << d;
+                heights << kCompactHeightWeights[static_cast<std::size_t>(g)] * 100;
+                break;
+            }
+    if (shown.size() > 1)
+        m_window.resizeDocks(shown, heights, Qt::Vertical);
+}
+
+void WindowLayout::save(QSettings& s) const
+{
+    const QString key = sizeKey(m_screenArea.size());
+    if (m_presentation) {
+        // Presentation mode is for the moment: the layout to remember is the one before it.
+        s.setValue(key + QStringLiteral("geometry"), m_normalGeometry);
+        s.setValue(key + QStringLiteral("state"), m_normalState);
+    } else {
+        s.setValue(key + QStringLiteral("geometry"), m_window.saveGeometry());
+        s.setValue(key + QStringLiteral("state"), m_window.saveState());
+    }
+}
+
+void WindowLayout::restore(const QSettings& s)
+{
+    const QRect available = availableScreenArea();
+    fitToScreen(available);
+    const QString key = sizeKey(available.size());
+    if (!s.contains(key + QStringLiteral("state")))
+        return;
+    m_window.restoreGeometry(s.value(key + QStringLiteral("geometry")).toByteArray());
+    m_window.restoreState(s.value(key + QStringLiteral("state")).toByteArray());
+    // Never larger than the screen, whatever was saved (the screen may have shrunk).
+    if (!m_window.isMaximized() && !m_window.isFullScreen() &&
+        (m_window.width() > available.width() || m_window.height() > available.height()))
+        m_window.resize(m_window.size().boundedTo(available.size()));
+}
+
+void WindowLayout::windowShown()
+{
+    // The window manager's frame is known once the window is shown: the window and its frame
+    // together must fit the screen's available area.
+    if (!m_screenArea.isEmpty() && !m_window.isFullScreen() && !m_window.isMaximized())
+        QTimer::singleShot(0, this, [this] {
+            const QSize outer = m_window.frameGeometry().size();
+            if (outer.width() > m_screenArea.width() || outer.height() > m_screenArea.height())
+                fitToScreen(m_screenArea);
+        });
+}
+
+void WindowLayout::windowResized()
+{
+    if (m_presentation && m_window.isFullScreen())
+        fitSideColumns();
+    if (m_restoreStatePending && !m_presentation && !m_window.isFullScreen()) {
+        m_restoreStatePending = false;
+        m_window.restoreState(m_normalState);
+    }
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "window/window_plots.h"
+
+#include "common/export_folder.h"
+#include "common/modal_scope.h"
+#include "format/scene_schema.h"
+#include "plots/plot_export.h"
+#include "plots/plot_widget.h"
+#include "simulation/simulation_controller.h"
+#include "window/window_documents.h"
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QFileDialog>
+#include <QMainWindow>
+#include <QMenu>
+#include <QMessageBox>
+#include <QPointer>
+#include <QStatusBar>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// The translation context of the export texts.
+struct PlotExportMenu {
+    Q_DECLARE_TR_FUNCTIONS(PlotExportMenu)
+};
+
+void exportPlotDialog(QWidget& window, PlotWidget& plot, const QString& format)
+{
+    const ModalScope modal;
+    const QString suffix = format.toLower();
+    // The plot's title as the file's name ("energie.csv"), not one name for every plot.
+    const QString suggested = lessons::schema::safeFileStem(plot.title(), QStringLiteral("plot")) + QLatin1Char('.') + suffix;
+    const QString path = QFileDialog::getSaveFileName(
+        &window, PlotExportMenu::tr("Export plot"), QDir(exportFolder()).filePath(suggested),
+        PlotExportMenu::tr("%1 files (*.%2)").arg(format, suffix));
+    if (path.isEmpty())
+        return;
+    rememberExportFolder(path);
+    const ExportResult r = exportPlot(plot, path, *formatFromSuffix(suffix));
+    if (!r.ok)
+        QMessageBox::warning(&window, PlotExportMenu::tr("Export failed"), r.error);
+    else if (auto* main = qobject_cast<QMainWindow*>(&window))
+        main->statusBar()->showMessage(PlotExportMenu::tr("Exported %1").arg(path), 5000);
+}
+
+} // namespace
+
+void followController(PlotWidget& plot, SimulationController& controller)
+{
+    // The live samples, cleared with a new scene, cut back on a rewind, marked where a setting
+    // changed, drained after each frame.
+    plot.setSource(&controller.samples());
+    QObject::connect(&controller, &SimulationController::samplesCleared, &plot, &PlotWidget::clear);
+    QObject::connect(&controller, &SimulationController::rewound, &plot, &PlotWidget::rewind);
+    QObject::connect(&controller, &SimulationController::marked, &plot, &PlotWidget::addMark);
+    QObject::connect(&controller, &SimulationController::frameAdvanced, &plot,
+                     &PlotWidget::frameAdvanced);
+    // The plot keeps its points as far back as the timeline goes (going back shows them).
+    QObject::connect(&controller, &SimulationController::worldChanged, &plot,
+                     [p = &plot, c = &controller] { p->setTimelineStart(c->earliestTime()); });
+}
+
+void fillExportMenu(QMenu& menu, QWidget& window, std::function<QList<PlotWidget*>()> onScreen)
+{
+    // Made when it opens: a lesson step shows other plots than the plain lab.
+    QObject::connect(&menu, &QMenu::aboutToShow, &menu, [&menu, &window, onScreen] {
+        menu.clear();
+        qDeleteAll(menu.findChildren<QMenu*>(QString(), Qt::FindDirectChildrenOnly));
+        const QList<PlotWidget*> plots = onScreen();
+        for (PlotWidget* plot : plots) {
+            QMenu* sub = menu.addMenu(plot->title());
+            for (const char* fmt : {"PNG", "PDF", "SVG", "CSV"})
+                sub->addAction(PlotExportMenu::tr("As %1…").arg(QLatin1String(fmt)), &window,
+                               [&window, p = QPointer<PlotWidget>(plot), fmt] {
+                                   if (p)
+                                       exportPlotDialog(window, *p, QString::fromLatin1(fmt));
+                               });
+        }
+        if (plots.isEmpty())
+            menu.addAction(PlotExportMenu::tr("No plot is shown"))->setEnabled(false);
+    });
+}
+
+} // namespace rigidlab::ui

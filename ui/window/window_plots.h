@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The window's plots and the controller: each plot follows the live samples; File › Export
+// plot offers the plots that are on screen, each in four formats.
+
+#include <QList>
+
+#include <functional>
+
+class QMenu;
+class QWidget;
+
+namespace rigidlab::ui {
+
+class PlotWidget;
+class SimulationController;
+
+/// Connects a plot to the controller's samples and clock.
+void followController(PlotWidget& plot, SimulationController& controller);
+
+/// Fills `menu` (File › Export plot) each time it opens with the plots `onScreen` returns:
+/// one submenu per plot under its title, PNG, PDF, SVG and CSV in each. The file dialog is
+/// parented to `window`; the default file name is the plot's title in plain letters.
+void fillExportMenu(QMenu& menu, QWidget& window, std::function<QList<PlotWidget*>()> onScreen);
+
+} // namespace rigidlab::ui
