@@ -46,7 +46,7 @@ int commandConserve(const QStringList& words)
                 QStringLiteral("--dt: must be from 1e-05 to 0.05 s, got \"%1\"").arg(*dt));
         gas.dt = *h;
     }
-    constexpr physics::SolverKind kSolvers[] = {physics::SolverKind::SeedImpulse,
+    constexpr physics::SolverKind kSolvers[] = {physics::SolverKind::PaperImpulse,
                                                 physics::SolverKind::SequentialImpulse,
                                                 physics::SolverKind::SoftStep};
     std::vector<lessons::ConservationResult> rows;

@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
-# Robustness builds (issue 7).
+# Robustness builds.
 #
 # RIGIDLAB_SANITIZE: everything (the engine, the lessons, the window, the programs and every
 # test) built with AddressSanitizer and UndefinedBehaviorSanitizer; `./lab test-sanitize` runs

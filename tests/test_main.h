@@ -7,7 +7,7 @@
 // reads a path, each run gets a fresh home folder of its own, removed when it ends: settings
 // (QSettings in QStandardPaths' test mode), the documents folder that exports default to, and
 // the last export folder all live there. Its organisation and application names are the
-// executable's. Issue 10: a window test failed on a fresh machine when it ran beside others.
+// executable's. A window test once failed on a fresh machine when it ran beside others.
 
 #include <QFileInfo>
 #include <QStandardPaths>

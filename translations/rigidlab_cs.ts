@@ -71,10 +71,6 @@
         <translation>číslo větší než 0 a&#xa0;nejvýše %1</translation>
     </message>
     <message>
-        <source>cs or en</source>
-        <translation>cs nebo en</translation>
-    </message>
-    <message>
         <source>a folder</source>
         <translation>složku</translation>
     </message>
@@ -98,10 +94,6 @@
         <source>no display to open the window on: set DISPLAY (an X server, or Xvfb) or WAYLAND_DISPLAY, or QT_QPA_PLATFORM=offscreen</source>
         <translation>není displej, na kterém by se otevřelo okno: nastavte DISPLAY (X server nebo Xvfb) nebo WAYLAND_DISPLAY, případně QT_QPA_PLATFORM=offscreen</translation>
     </message>
-    <message>
-        <source>Language of the interface: cs or en (View › Language saves a choice; without either, the system&apos;s language).</source>
-        <translation>Jazyk rozhraní: cs nebo en (volbu uloží i&#xa0;Zobrazení › Jazyk; bez obojího jazyk systému).</translation>
-    </message>
     <message numerus="yes">
         <source>%n file(s) written into %1</source>
         <translation>
@@ -109,6 +101,14 @@
             <numerusform>%n soubory zapsány do %1</numerusform>
             <numerusform>%n souborů zapsáno do %1</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Language of the interface, one of %1 (View › Language saves a choice; without either, the system&apos;s language).</source>
+        <translation>Jazyk rozhraní, jeden z&#xa0;kódů %1 (volbu uloží i&#xa0;Zobrazení › Jazyk; bez obojího jazyk systému).</translation>
+    </message>
+    <message>
+        <source>one of %1</source>
+        <translation>jeden z&#xa0;kódů %1</translation>
     </message>
 </context>
 <context>
@@ -309,24 +309,8 @@
         <translation>celková energie</translation>
     </message>
     <message>
-        <source>the %1 of body “%2” is no longer finite</source>
-        <translation>%1 tělesa „%2“ už není konečné číslo</translation>
-    </message>
-    <message>
         <source>the total energy is no longer finite</source>
         <translation>celková energie už není konečné číslo</translation>
-    </message>
-    <message>
-        <source>the total energy grew from %1 J to %2 J, past the bound of %3 J</source>
-        <translation>celková energie vzrostla z&#xa0;%1&#xa0;J na %2&#xa0;J, přes mez %3&#xa0;J</translation>
-    </message>
-    <message>
-        <source> (body “%1” holds the most kinetic energy)</source>
-        <translation> (největší kinetickou energii má těleso „%1“)</translation>
-    </message>
-    <message>
-        <source>The simulation diverged at t = %1 s (step %2, dt = %3 s, %4): %5. It stopped here rather than draw garbage.</source>
-        <translation>Simulace divergovala v&#xa0;čase t = %1&#xa0;s (krok %2, dt = %3&#xa0;s, %4): %5. Zastavila se tady, aby nekreslila nesmysly.</translation>
     </message>
     <message>
         <source>energy blew up</source>
@@ -339,6 +323,41 @@
     <message>
         <source>stopped at t = %1 s: %2</source>
         <translation>zastaveno v&#xa0;čase t = %1&#xa0;s: %2</translation>
+    </message>
+    <message>
+        <source>body &quot;%1&quot;: %2 is no longer finite</source>
+        <translation>těleso „%1“: %2 už není konečné číslo</translation>
+    </message>
+    <message>
+        <source>the total energy grew to %1 J, past the bound of %2 J</source>
+        <translation>celková energie vzrostla na %1&#xa0;J, přes mez %2&#xa0;J</translation>
+    </message>
+    <message>
+        <source> (body &quot;%1&quot; holds the most kinetic energy)</source>
+        <translation> (největší kinetickou energii má těleso „%1“)</translation>
+    </message>
+    <message>
+        <source>diverged at t = %1 s (step %2, dt = %3 s, %4): %5</source>
+        <translation>divergovala v&#xa0;čase t = %1&#xa0;s (krok %2, dt = %3&#xa0;s, %4): %5</translation>
+    </message>
+    <message>
+        <source>The simulation %1. It stopped here rather than draw garbage.</source>
+        <translation>Simulace %1. Zastavila se tady, aby nekreslila nesmysly.</translation>
+    </message>
+</context>
+<context>
+    <name>DriftWords</name>
+    <message>
+        <source>energy drift %1 %</source>
+        <translation>energetický drift %1&#xa0;%</translation>
+    </message>
+    <message>
+        <source>energy drift (integrator, contacts, joints) %1 %</source>
+        <translation>energetický drift (integrátor, kontakty, klouby) %1&#xa0;%</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;Energy drift: how far the total energy (motion, height, springs) has moved from its value at the start, as a share of it, after adding back what bounces, friction, drag and dampers took. Exact physics would keep it at 0.&lt;/p&gt;&lt;p&gt;What is left is numerical error: the integrator&apos;s, step by step; that of the corrections after contacts and joints are solved (bodies that sank into each other are pushed apart, pins are pulled back together); and that of the estimate of what the contacts took, which grows steadily while bodies rest on each other. A method that follows a free fall exactly, such as velocity Verlet, still drifts where bodies touch.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Energetický drift: o&#xa0;kolik se celková energie (pohyb, výška, pružiny) změnila od začátku, jako podíl počáteční hodnoty, po přičtení toho, co odebraly odrazy, tření, odpor prostředí a&#xa0;tlumiče. Přesná fyzika by ho udržela na 0.&lt;/p&gt;&lt;p&gt;Co zbývá, je numerická chyba: chyba integrátoru krok za krokem; chyba oprav po vyřešení kontaktů a&#xa0;kloubů (tělesa, která se do sebe zabořila, se odsunou od sebe, čepy se přitáhnou zpět k&#xa0;sobě); a&#xa0;chyba odhadu toho, co odebraly kontakty, která stále roste, dokud na sobě tělesa leží. Metoda, která sleduje volný pád přesně, například rychlostní Verletova metoda, proto i&#xa0;tak driftuje tam, kde se tělesa dotýkají.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -390,6 +409,26 @@
     <message>
         <source>%1; overlapping bodies are pushed apart when the scene runs</source>
         <translation>%1; překrývající se tělesa se po spuštění scény od sebe odtlačí</translation>
+    </message>
+    <message>
+        <source>must be given</source>
+        <translation>musí být zadáno</translation>
+    </message>
+    <message>
+        <source>a shape is drawn, or changed through its sizes</source>
+        <translation>tvar se kreslí nebo mění přes své rozměry</translation>
+    </message>
+    <message>
+        <source>not a value this field holds</source>
+        <translation>tato vlastnost takovou hodnotu nemá</translation>
+    </message>
+    <message>
+        <source>there is no property &quot;%1&quot;</source>
+        <translation>vlastnost „%1“ neexistuje</translation>
+    </message>
+    <message>
+        <source>there is no %1</source>
+        <translation>%1 neexistuje</translation>
     </message>
 </context>
 <context>
@@ -651,16 +690,8 @@
         <translation>neznámý integrátor &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
-        <source>must be from %1 to %2 s, got %3</source>
-        <translation>musí být od %1 do %2&#xa0;s, je %3</translation>
-    </message>
-    <message>
         <source>unknown solver &quot;%1&quot; (expected %2)</source>
         <translation>neznámý řešič &quot;%1&quot; (očekáváno: %2)</translation>
-    </message>
-    <message>
-        <source>must be from %1 to %2, got %3</source>
-        <translation>musí být od %1 do %2, je %3</translation>
     </message>
     <message>
         <source>compare &quot;integrators&quot; or &quot;solvers&quot;, not both</source>
@@ -945,6 +976,18 @@
         <source>Run the simulation past the top of bounce number %1 first.</source>
         <translation>Nejdřív nechte simulaci běžet až za vrchol odskoku číslo %1.</translation>
     </message>
+    <message>
+        <source>Right: when it runs, the simulation will measure %1 (you said %2).</source>
+        <translation>Správně: až simulace poběží, naměří %1 (vaše odpověď: %2).</translation>
+    </message>
+    <message>
+        <source>Not quite: when it runs, the simulation will measure %1 (you said %2).</source>
+        <translation>Ne tak docela: až simulace poběží, naměří %1 (vaše odpověď: %2).</translation>
+    </message>
+    <message>
+        <source>When it runs, the simulation will measure %1.</source>
+        <translation>Až simulace poběží, naměří %1.</translation>
+    </message>
 </context>
 <context>
     <name>LessonExport</name>
@@ -1076,6 +1119,197 @@
     </message>
 </context>
 <context>
+    <name>SceneSchema</name>
+    <message>
+        <source>Body A</source>
+        <translation>Těleso A</translation>
+    </message>
+    <message>
+        <source>Anchor A x</source>
+        <translation>Úchyt A x</translation>
+    </message>
+    <message>
+        <source>Anchor A y</source>
+        <translation>Úchyt A y</translation>
+    </message>
+    <message>
+        <source>Body B</source>
+        <translation>Těleso B</translation>
+    </message>
+    <message>
+        <source>Anchor B x</source>
+        <translation>Úchyt B x</translation>
+    </message>
+    <message>
+        <source>Anchor B y</source>
+        <translation>Úchyt B y</translation>
+    </message>
+    <message>
+        <source>Stiffness k</source>
+        <translation>Tuhost pružiny k</translation>
+    </message>
+    <message>
+        <source>Damping c</source>
+        <translation>Tlumení c</translation>
+    </message>
+    <message>
+        <source>Rest length</source>
+        <translation>Klidová délka</translation>
+    </message>
+    <message>
+        <source>Type</source>
+        <translation>Typ</translation>
+    </message>
+    <message>
+        <source>Integrator</source>
+        <translation>Integrátor</translation>
+    </message>
+    <message>
+        <source>Time step dt</source>
+        <translation>Časový krok dt</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Řešič</translation>
+    </message>
+    <message>
+        <source>Iterations</source>
+        <translation>Iterace</translation>
+    </message>
+    <message>
+        <source>Restitution e</source>
+        <translation>Koeficient restituce e</translation>
+    </message>
+    <message>
+        <source>Friction μ</source>
+        <translation>Tření μ</translation>
+    </message>
+    <message>
+        <source>Gravity</source>
+        <translation>Gravitace</translation>
+    </message>
+    <message>
+        <source>Time scale</source>
+        <translation>Zpomalení času</translation>
+    </message>
+    <message>
+        <source>Title</source>
+        <translation>Název</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Popis</translation>
+    </message>
+    <message>
+        <source>Gravity gx</source>
+        <translation>Tíhové zrychlení gx</translation>
+    </message>
+    <message>
+        <source>Gravity gy</source>
+        <translation>Tíhové zrychlení gy</translation>
+    </message>
+    <message>
+        <source>ms</source>
+        <translation>ms</translation>
+    </message>
+    <message>
+        <source>Gravitation G</source>
+        <translation>Gravitační konstanta G</translation>
+    </message>
+    <message>
+        <source>Drag</source>
+        <translation>Odpor prostředí</translation>
+    </message>
+    <message>
+        <source>Sleep</source>
+        <translation>Uspávání</translation>
+    </message>
+    <message>
+        <source>Continuous collision</source>
+        <translation>Spojitá detekce srážek</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Tolerance</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>Id</translation>
+    </message>
+    <message>
+        <source>Label</source>
+        <translation>Popisek</translation>
+    </message>
+    <message>
+        <source>Shape</source>
+        <translation>Tvar</translation>
+    </message>
+    <message>
+        <source>Width</source>
+        <translation>Šířka</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Výška</translation>
+    </message>
+    <message>
+        <source>Radius</source>
+        <translation>Poloměr</translation>
+    </message>
+    <message>
+        <source>Position x</source>
+        <translation>Poloha x</translation>
+    </message>
+    <message>
+        <source>Position y</source>
+        <translation>Poloha y</translation>
+    </message>
+    <message>
+        <source>Angle θ</source>
+        <translation>Úhel θ</translation>
+    </message>
+    <message>
+        <source>Velocity vx</source>
+        <translation>Rychlost vx</translation>
+    </message>
+    <message>
+        <source>Velocity vy</source>
+        <translation>Rychlost vy</translation>
+    </message>
+    <message>
+        <source>Angular vel. ω</source>
+        <translation>Úhlová rychlost ω</translation>
+    </message>
+    <message>
+        <source>Density</source>
+        <translation>Hustota</translation>
+    </message>
+    <message>
+        <source>Mass</source>
+        <translation>Hmotnost</translation>
+    </message>
+    <message>
+        <source>Collides</source>
+        <translation>Srážky</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Barva</translation>
+    </message>
+    <message>
+        <source>dynamic</source>
+        <translation>dynamické</translation>
+    </message>
+    <message>
+        <source>static</source>
+        <translation>statické</translation>
+    </message>
+    <message>
+        <source>kinematic</source>
+        <translation>kinematické</translation>
+    </message>
+</context>
+<context>
     <name>Screenshots</name>
     <message>
         <source>cannot encode %1 as PNG</source>
@@ -1143,6 +1377,173 @@
     <message>
         <source> (your own)</source>
         <translation> (vlastní)</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::measure</name>
+    <message>
+        <source>unknown body &quot;%1&quot; (the scene has: %2)</source>
+        <translation>neznámé těleso &quot;%1&quot; (scéna má: %2)</translation>
+    </message>
+    <message>
+        <source>the measurement does not depend on %1: it cannot be fitted from it</source>
+        <translation>měření na %1 nezávisí: z&#xa0;něj ho nelze určit</translation>
+    </message>
+    <message>
+        <source>the parameters cannot be told apart by this measurement</source>
+        <translation>toto měření parametry od sebe neodliší</translation>
+    </message>
+    <message>
+        <source>unknown parameter &quot;%1&quot; (expected restitution, friction, vx or vy)</source>
+        <translation>neznámý parametr &quot;%1&quot; (očekáváno: restitution, friction, vx nebo vy)</translation>
+    </message>
+    <message>
+        <source>%1: name one body, as in %2:ball</source>
+        <translation>%1: uveďte jedno těleso, např. %2:ball</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: expected QUANTITY:BODY with QUANTITY x, y, vx, vy or v, as in y:ball</source>
+        <translation>&quot;%1&quot;: očekáváno VELIČINA:TĚLESO, kde VELIČINA je x, y, vx, vy nebo v, např. y:ball</translation>
+    </message>
+    <message>
+        <source>the measurement lasts %1 s, more than %2 steps of the scene&apos;s %3 s</source>
+        <translation>měření trvá %1&#xa0;s, víc než %2 kroků scény po %3&#xa0;s</translation>
+    </message>
+    <message>
+        <source>fit one to three parameters</source>
+        <translation>určit lze jeden až tři parametry</translation>
+    </message>
+    <message>
+        <source>%1 points cannot fit %2 parameters: measure more</source>
+        <translation>počet bodů (%1) nestačí na počet parametrů (%2): změřte víc</translation>
+    </message>
+    <message>
+        <source>%1 bounce times: e needs at least %2 (three flights between them)</source>
+        <translation>časů odrazů je %1: k&#xa0;určení e je potřeba aspoň %2 (tři lety mezi nimi)</translation>
+    </message>
+    <message>
+        <source>bounce %1 is not after bounce %2</source>
+        <translation>odraz %1 nenásleduje po odrazu %2</translation>
+    </message>
+    <message>
+        <source>the flights between the bounces do not get shorter (e = %1): not the bounces of one ball</source>
+        <translation>lety mezi odrazy se nezkracují (e = %1): to nejsou odrazy jednoho míčku</translation>
+    </message>
+    <message>
+        <source>column %1</source>
+        <translation>sloupec %1</translation>
+    </message>
+    <message>
+        <source>column %1 (&quot;%2&quot;)</source>
+        <translation>sloupec %1 (&quot;%2&quot;)</translation>
+    </message>
+    <message>
+        <source>line %1, %2</source>
+        <translation>řádek %1, %2</translation>
+    </message>
+    <message>
+        <source>%1: unknown unit &quot;%2&quot; for %3 (expected %4, or set the unit)</source>
+        <translation>%1: neznámá jednotka &quot;%2&quot; pro %3 (očekáváno %4, nebo jednotku nastavte)</translation>
+    </message>
+    <message>
+        <source>%1: the time is missing</source>
+        <translation>%1: chybí čas</translation>
+    </message>
+    <message>
+        <source>%1: %2 is too large in the lab&apos;s units</source>
+        <translation>%1: %2 je v&#xa0;jednotkách laboratoře příliš velké</translation>
+    </message>
+    <message>
+        <source>%1: the time %2 is not after %3 on line %4 (time must rise from row to row)</source>
+        <translation>%1: čas %2 není větší než %3 na řádku %4 (čas musí od řádku k&#xa0;řádku růst)</translation>
+    </message>
+    <message>
+        <source>the mapping names %1 columns, the file has %2</source>
+        <translation>přiřazení uvádí sloupců: %1, soubor jich má %2</translation>
+    </message>
+    <message>
+        <source>%1 and %2 both hold %3: map one of them</source>
+        <translation>%1 i&#xa0;%2 obsahují %3: přiřaďte jen jeden z&#xa0;nich</translation>
+    </message>
+    <message>
+        <source>no column holds the time (name it t or Time (s), or map a column to it)</source>
+        <translation>žádný sloupec neobsahuje čas (pojmenujte ho t nebo Time (s), nebo mu sloupec přiřaďte)</translation>
+    </message>
+    <message>
+        <source>line %1: only one column; a time series needs the time and a measured value (or read it as bounce times)</source>
+        <translation>řádek %1: jen jeden sloupec; časová řada potřebuje čas a&#xa0;naměřenou hodnotu (nebo ho načtěte jako časy odrazů)</translation>
+    </message>
+    <message>
+        <source>%1: no numbers from time zero on</source>
+        <translation>%1: od nulového času dál žádná čísla</translation>
+    </message>
+    <message>
+        <source>no column holds a measured value (x, y, vx, vy or v)</source>
+        <translation>žádný sloupec neobsahuje naměřenou hodnotu (x, y, vx, vy nebo v)</translation>
+    </message>
+    <message>
+        <source>line %1</source>
+        <translation>řádek %1</translation>
+    </message>
+    <message>
+        <source>line %1, column %2</source>
+        <translation>řádek %1, sloupec %2</translation>
+    </message>
+    <message>
+        <source>line %1, column %2 (&quot;%3&quot;)</source>
+        <translation>řádek %1, sloupec %2 (&quot;%3&quot;)</translation>
+    </message>
+    <message>
+        <source>%1: binary data (byte %2), not text</source>
+        <translation>%1: binární data (bajt %2), ne text</translation>
+    </message>
+    <message>
+        <source>%1: %2 values where the header (or the first row) has %3: a ragged row</source>
+        <translation>%1: hodnot je %2, ale záhlaví (nebo první řádek) jich má %3: nerovný řádek</translation>
+    </message>
+    <message>
+        <source>%1: more than %2 rows of numbers (the limit)</source>
+        <translation>%1: víc než %2 řádků čísel (limit)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a number</source>
+        <translation>&quot;%1&quot; není číslo</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a finite number</source>
+        <translation>&quot;%1&quot; není konečné číslo</translation>
+    </message>
+    <message>
+        <source>%1: the header names %2 columns, the rows below it have %3</source>
+        <translation>%1: záhlaví uvádí sloupců: %2, řádky pod ním jich mají %3</translation>
+    </message>
+    <message>
+        <source>larger than %1 MB (the limit)</source>
+        <translation>větší než %1&#xa0;MB (limit)</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>soubor je prázdný</translation>
+    </message>
+    <message>
+        <source>%1: a quote (&quot;) is not closed</source>
+        <translation>%1: uvozovka (&quot;) není uzavřená</translation>
+    </message>
+    <message>
+        <source>no row of numbers in the first %1 lines</source>
+        <translation>v&#xa0;prvních %1 řádcích není žádný řádek čísel</translation>
+    </message>
+    <message>
+        <source>no row of numbers (a measurement has a number in every column of its rows)</source>
+        <translation>žádný řádek čísel (měření má v&#xa0;každém sloupci svých řádků číslo)</translation>
+    </message>
+    <message>
+        <source>%1: %2 columns, more than %3 (the limit)</source>
+        <translation>%1: sloupců je %2, víc než %3 (limit)</translation>
+    </message>
+    <message>
+        <source>cannot read: %1</source>
+        <translation>nelze číst: %1</translation>
     </message>
 </context>
 <context>
@@ -1387,7 +1788,7 @@ y %2</translation>
         <translation>V&#xa0;tomto kroku lekce pevně dané</translation>
     </message>
     <message>
-        <source>Seed impulse: one impulse per contact, once (the paper&apos;s method).
+        <source>The paper&apos;s impulse: one impulse per contact, once.
 Sequential impulse: iterated, clamped, warm started.
 Soft step: springy contacts solved in small substeps; stiff stacks.</source>
         <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
@@ -1501,16 +1902,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Editor</translation>
     </message>
     <message>
-        <source>Edit the scene: draw bodies, pins and springs (%1); leave to run it</source>
-        <translation>Upravit scénu: kreslit tělesa, čepy a&#xa0;pružiny (%1); po opuštění se scéna spustí</translation>
-    </message>
-    <message>
         <source>Delete selected body</source>
         <translation>Smazat vybrané těleso</translation>
-    </message>
-    <message>
-        <source>Edit mode: the world is paused at its start; leave Edit mode or press Space to run it</source>
-        <translation>Editor: svět stojí na začátku; spustíte ho vypnutím editoru nebo mezerníkem</translation>
     </message>
     <message>
         <source>Select a body to turn it</source>
@@ -1640,6 +2033,70 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Velocity</source>
         <translation>Rychlost</translation>
     </message>
+    <message>
+        <source>Edit the scene: draw bodies, pins and springs (%1); leaving it keeps the world paused at its start</source>
+        <translation>Upravit scénu: kreslit tělesa, čepy a&#xa0;pružiny (%1); po opuštění editoru svět stojí na začátku</translation>
+    </message>
+    <message>
+        <source>Edit mode: the world is paused at its start; press Space to run it</source>
+        <translation>Editor: svět stojí na začátku; spustíte ho mezerníkem</translation>
+    </message>
+    <message>
+        <source>The scene has no body to select</source>
+        <translation>Ve scéně není žádné těleso, které by šlo vybrat</translation>
+    </message>
+    <message>
+        <source>%1 selected</source>
+        <translation>Vybráno: %1</translation>
+    </message>
+    <message>
+        <source>Delete: click a body to delete it with its springs and pins; the Delete key deletes the selected body or spring</source>
+        <translation>Smazat: kliknutím smažete těleso i&#xa0;s&#xa0;jeho pružinami a&#xa0;čepy; klávesa Delete smaže vybrané těleso nebo pružinu</translation>
+    </message>
+    <message>
+        <source>Duplicate: click a body to place a copy beside it; Enter copies the selected body</source>
+        <translation>Duplikovat: kliknutím položíte vedle tělesa jeho kopii; Enter zkopíruje vybrané těleso</translation>
+    </message>
+    <message>
+        <source>Select a body to duplicate it</source>
+        <translation>Vyberte těleso, které chcete duplikovat</translation>
+    </message>
+    <message>
+        <source>Pin: click a point of a body, then a second body or empty space for the world; Enter pins the selected body to the world at its centre</source>
+        <translation>Čep: klikněte na bod tělesa, pak na druhé těleso nebo na prázdné místo pro okolí; Enter připne vybrané těleso k&#xa0;okolí v&#xa0;jeho středu</translation>
+    </message>
+    <message>
+        <source>Polygon: click the vertices, then double-click or press Enter to close it; Backspace drops the last point; Enter with no points adds a triangle</source>
+        <translation>Mnohoúhelník: klikejte na vrcholy, dvojklikem nebo klávesou Enter ho uzavřete; Backspace odebere poslední bod; Enter bez bodů přidá trojúhelník</translation>
+    </message>
+    <message>
+        <source>Rotate: drag a body, or anywhere for the selected one, to turn it about its origin; a click selects, and so does Enter, body after body; Q and E turn the selected body by 5°</source>
+        <translation>Otočení: tažením tělesa (nebo kdekoli pro vybrané těleso) ho otočíte kolem jeho počátku; kliknutí vybírá, Enter vybírá jedno těleso po druhém; Q a&#xa0;E otočí vybrané těleso o&#xa0;5°</translation>
+    </message>
+    <message>
+        <source>Select: click a body or a spring to select it, drag a body to move it, drag the arrow&apos;s handle to set its velocity; Enter selects the next body, the arrow keys nudge, Q and E turn</source>
+        <translation>Výběr: kliknutím vyberete těleso nebo pružinu, tažením těleso posunete, tažením konce šipky nastavíte jeho rychlost; Enter vybere další těleso, šipky posunou o&#xa0;kousek, Q a&#xa0;E otočí</translation>
+    </message>
+    <message>
+        <source>Circle: drag from the centre outwards to draw one; a click draws nothing; Enter adds one at the view&apos;s centre</source>
+        <translation>Kruh: nakreslíte ho tažením od středu ven; samotné kliknutí nic nenakreslí; Enter přidá kruh doprostřed pohledu</translation>
+    </message>
+    <message>
+        <source>Box: drag from corner to corner to draw one; a click draws nothing; Enter adds one at the view&apos;s centre</source>
+        <translation>Obdélník: nakreslíte ho tažením z&#xa0;rohu do rohu; samotné kliknutí nic nenakreslí; Enter přidá obdélník doprostřed pohledu</translation>
+    </message>
+    <message>
+        <source>Ground: drag from corner to corner to draw static ground or a wall; a click draws nothing; Enter adds a floor at the view&apos;s centre</source>
+        <translation>Podložka: statickou podložku nebo stěnu nakreslíte tažením z&#xa0;rohu do rohu; samotné kliknutí nic nenakreslí; Enter přidá podlahu doprostřed pohledu</translation>
+    </message>
+    <message>
+        <source>Spring: drag from one point to another (a body or empty space, the world, at each end); a click draws nothing; Enter hangs the selected body from the world</source>
+        <translation>Pružina: táhněte od jednoho bodu k&#xa0;druhému (na každém konci těleso, nebo prázdné místo pro okolí); samotné kliknutí nic nenakreslí; Enter zavěsí vybrané těleso na okolí</translation>
+    </message>
+    <message>
+        <source>Select a body to hang it from a spring</source>
+        <translation>Vyberte těleso, které chcete zavěsit na pružinu</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::ErrorPanel</name>
@@ -1718,14 +2175,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Hmotnost tělesa; moment setrvačnosti se mění úměrně s&#xa0;ní</translation>
     </message>
     <message>
-        <source>Restitution e</source>
-        <translation>Koeficient restituce e</translation>
-    </message>
-    <message>
-        <source>Friction μ</source>
-        <translation>Tření μ</translation>
-    </message>
-    <message>
         <source>Body</source>
         <translation>Těleso</translation>
     </message>
@@ -1786,8 +2235,46 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>%1&#xa0;rad/s</translation>
     </message>
     <message>
-        <source>%1 J</source>
-        <translation>%1&#xa0;J</translation>
+        <source>Speed |v|</source>
+        <translation>Velikost rychlosti |v|</translation>
+    </message>
+    <message>
+        <source>%1 m/s</source>
+        <translation>%1&#xa0;m/s</translation>
+    </message>
+    <message>
+        <source>%1°</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>%1&#xa0;°/s</source>
+        <translation>%1&#xa0;°/s</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <comment>angle unit: degrees</comment>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>rad</source>
+        <comment>angle unit: radians</comment>
+        <translation>rad</translation>
+    </message>
+    <message>
+        <source>degrees</source>
+        <translation>stupně</translation>
+    </message>
+    <message>
+        <source>radians</source>
+        <translation>radiány</translation>
+    </message>
+    <message>
+        <source>Unit of angles</source>
+        <translation>Jednotka úhlů</translation>
+    </message>
+    <message>
+        <source>Angles and angular velocities in degrees or in radians</source>
+        <translation>Úhly a úhlové rychlosti ve stupních nebo v radiánech</translation>
     </message>
 </context>
 <context>
@@ -2398,54 +2885,6 @@ B&#xa0;%3 … %4</translation>
         <translation>Těleso</translation>
     </message>
     <message>
-        <source>Id</source>
-        <translation>Id</translation>
-    </message>
-    <message>
-        <source>dynamic</source>
-        <translation>dynamické</translation>
-    </message>
-    <message>
-        <source>static</source>
-        <translation>statické</translation>
-    </message>
-    <message>
-        <source>kinematic</source>
-        <translation>kinematické</translation>
-    </message>
-    <message>
-        <source>Type</source>
-        <translation>Typ</translation>
-    </message>
-    <message>
-        <source>Density</source>
-        <translation>Hustota</translation>
-    </message>
-    <message>
-        <source>Mass</source>
-        <translation>Hmotnost</translation>
-    </message>
-    <message>
-        <source>Restitution e</source>
-        <translation>Koeficient restituce e</translation>
-    </message>
-    <message>
-        <source>Friction μ</source>
-        <translation>Tření μ</translation>
-    </message>
-    <message>
-        <source>Velocity vx</source>
-        <translation>Rychlost vx</translation>
-    </message>
-    <message>
-        <source>Velocity vy</source>
-        <translation>Rychlost vy</translation>
-    </message>
-    <message>
-        <source>Angular vel. ω</source>
-        <translation>Úhlová rychlost ω</translation>
-    </message>
-    <message>
         <source>Set %1</source>
         <translation>Nastavit: %1</translation>
     </message>
@@ -2454,60 +2893,8 @@ B&#xa0;%3 … %4</translation>
         <translation>Pružina</translation>
     </message>
     <message>
-        <source>Stiffness k</source>
-        <translation>Tuhost pružiny k</translation>
-    </message>
-    <message>
-        <source>Damping c</source>
-        <translation>Tlumení c</translation>
-    </message>
-    <message>
-        <source>Rest length</source>
-        <translation>Klidová délka</translation>
-    </message>
-    <message>
         <source>World</source>
         <translation>Svět</translation>
-    </message>
-    <message>
-        <source>Gravity gx</source>
-        <translation>Tíhové zrychlení gx</translation>
-    </message>
-    <message>
-        <source>Gravity gy</source>
-        <translation>Tíhové zrychlení gy</translation>
-    </message>
-    <message>
-        <source>Time step dt</source>
-        <translation>Časový krok dt</translation>
-    </message>
-    <message>
-        <source>ms</source>
-        <translation>ms</translation>
-    </message>
-    <message>
-        <source>Iterations</source>
-        <translation>Iterace</translation>
-    </message>
-    <message>
-        <source>Integrator</source>
-        <translation>Integrátor</translation>
-    </message>
-    <message>
-        <source>Set integrator</source>
-        <translation>Nastavit integrátor</translation>
-    </message>
-    <message>
-        <source>Solver</source>
-        <translation>Řešič</translation>
-    </message>
-    <message>
-        <source>Set solver</source>
-        <translation>Nastavit řešič</translation>
-    </message>
-    <message>
-        <source>Colour</source>
-        <translation>Barva</translation>
     </message>
     <message>
         <source>Default colour</source>
@@ -2532,6 +2919,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Set %1 of spring %2</source>
         <translation>Nastavit %1 pružiny %2</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scéna</translation>
     </message>
 </context>
 <context>
@@ -2606,14 +2997,6 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>running</source>
         <translation>běží</translation>
-    </message>
-    <message>
-        <source>energy drift %1 %</source>
-        <translation>energetický drift %1&#xa0;%</translation>
-    </message>
-    <message>
-        <source>energy drift (numerical error) %1 %</source>
-        <translation>energetický drift (numerická chyba) %1&#xa0;%</translation>
     </message>
     <message>
         <source> · dissipated %1 J</source>
@@ -2919,7 +3302,7 @@ B&#xa0;%3 … %4</translation>
         <translation>Implicitní střední bod</translation>
     </message>
     <message>
-        <source>Seed impulse</source>
+        <source>The paper&apos;s impulse</source>
         <translation>Kontakt po kontaktu</translation>
     </message>
     <message>

@@ -200,7 +200,7 @@ QString unknownIntegrator(const QString& name)
 QString unknownSolver(const QString& name)
 {
     QStringList names;
-    for (auto k : {physics::SolverKind::SeedImpulse, physics::SolverKind::SequentialImpulse,
+    for (auto k : {physics::SolverKind::PaperImpulse, physics::SolverKind::SequentialImpulse,
                    physics::SolverKind::SoftStep})
         names.append(textFromView(physics::solverName(k)));
     return FileMessages::tr("unknown solver \"%1\" (expected %2)").arg(name, names.join(u", "));

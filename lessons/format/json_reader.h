@@ -57,7 +57,7 @@ FileBytes readFileBytes(const QString& path, qint64 limit);
 /// "from 1e-09 to 1e+12 kg": how messages state an allowed range.
 QString describeRange(const limits::Range& range);
 
-/// "unknown integrator "NAME" (expected euler, symplectic-euler, verlet, rk4)": the seed's four
+/// "unknown integrator "NAME" (expected euler, symplectic-euler, verlet, rk4)": the paper's four
 /// are listed, though every name physics::integratorFromName knows is accepted.
 QString unknownIntegrator(const QString& name);
 /// "unknown solver "NAME" (expected seed-impulse, sequential-impulse, soft-step)".

@@ -174,7 +174,7 @@ inline QStringList solverOptions()
 {
     // The soft step is for large scenes, chosen in a file; the editor offers the two a lesson
     // compares.
-    return {fromView(physics::solverName(physics::SolverKind::SeedImpulse)),
+    return {fromView(physics::solverName(physics::SolverKind::PaperImpulse)),
             fromView(physics::solverName(physics::SolverKind::SequentialImpulse))};
 }
 inline QStringList bodyTypeOptions()

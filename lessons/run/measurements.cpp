@@ -14,7 +14,7 @@
 //     j = -(1 + e) v_rel.n / (1/mA + 1/mB + (rA x n)^2 / IA + (rB x n)^2 / IB)
 //     wA' = wA - (rA x n) j / IA,   wB' = wB + (rB x n) j / IB
 //
-// and, as the seed paper prints it (its equation 1.4), without the two rotational terms in
+// and, as the paper prints it (its equation 1.4), without the two rotational terms in
 // the denominator: the same spins from a larger j.
 
 #include "run/measurements.h"
@@ -206,7 +206,7 @@ CollisionEvent Measurements::collisionEvent(const physics::World& world,
     const Vec2 vB = m_lastVelocity[ib] + physics::cross(m_lastAngular[ib], rB);
     const double vn = (vB - vA).dot(n);
     // The sequential-impulse solver lets slow approaches rest instead of bouncing.
-    const bool bounces = world.def().solver == physics::SolverKind::SeedImpulse ||
+    const bool bounces = world.def().solver == physics::SolverKind::PaperImpulse ||
                          vn < -physics::restitutionThreshold(world.def(), world.contactSettings());
     const double restitution = bounces ? c.restitution : 0.0;
     const double rnA = physics::cross(rA, n);

@@ -34,7 +34,7 @@ struct CollisionEvent {
     double angularBefore[2] = {0, 0}; ///< [rad/s]
     double angularAfter[2] = {0, 0};
     /// Angular velocities right after the hit as predicted by the full impulse formula and by
-    /// the seed's printed formula without the rotational terms, from the normal impulse alone
+    /// the paper's printed formula without the rotational terms, from the normal impulse alone
     /// (friction left out) [rad/s].
     double predictedFull[2] = {0, 0};
     double predictedWithoutRotation[2] = {0, 0};

@@ -361,7 +361,7 @@ void TestLesson::everyField()
     QCOMPARE(s.scene.bodies.size(), std::size_t{4});
     QVERIFY(!s.settings.integrator);
     QCOMPARE(*s.settings.dt, 0.002);
-    QCOMPARE(*s.settings.solver, physics::SolverKind::SeedImpulse);
+    QCOMPARE(*s.settings.solver, physics::SolverKind::PaperImpulse);
     QCOMPARE(*s.settings.iterations, 7);
     QCOMPARE(*s.settings.restitution, 0.25);
     QCOMPARE(*s.settings.friction, 0.5);
@@ -495,7 +495,7 @@ void TestLesson::buildStepWorldsMakesOneWorldPerVariant()
     const lessons::Lesson stacks = shippedLesson("stacks");
     std::vector<physics::World> solvers = lessons::buildStepWorlds(stacks.steps[0]);
     QCOMPARE(solvers.size(), std::size_t{2});
-    QCOMPARE(solvers[0].def().solver, physics::SolverKind::SeedImpulse);
+    QCOMPARE(solvers[0].def().solver, physics::SolverKind::PaperImpulse);
     QCOMPARE(solvers[1].def().solver, physics::SolverKind::SequentialImpulse);
     QCOMPARE(stacks.steps[0].compare->label(0), QStringLiteral("seed-impulse"));
     // Without a comparison, one world.
@@ -507,7 +507,7 @@ void TestLesson::applySettingsOverridesScene()
     lessons::StepSettings settings;
     settings.integrator = physics::IntegratorKind::RK4;
     settings.dt = 0.004;
-    settings.solver = physics::SolverKind::SeedImpulse;
+    settings.solver = physics::SolverKind::PaperImpulse;
     settings.iterations = 3;
     settings.restitution = 0.3;
     settings.friction = 0.7;
@@ -517,7 +517,7 @@ void TestLesson::applySettingsOverridesScene()
     lessons::applySettings(settings, world);
     QCOMPARE(world.def().integrator, physics::IntegratorKind::RK4);
     QCOMPARE(world.def().dt, 0.004);
-    QCOMPARE(world.def().solver, physics::SolverKind::SeedImpulse);
+    QCOMPARE(world.def().solver, physics::SolverKind::PaperImpulse);
     QCOMPARE(world.def().iterations, 3);
     QCOMPARE(world.def().gravity, physics::Vec2::Zero());
     for (const physics::Body& b : world.bodies()) {

@@ -4,6 +4,7 @@
 
 #include "test_lesson_physics.h"
 #include "test_lesson.h"
+#include "near.h"
 #include "test_main.h"
 
 #include "edit/scene_edits.h"
@@ -36,7 +37,7 @@ void TestLesson::judgeApexRightAndWrong()
     lessons::Verdict right = lessons::judge(q, 0.41, run.measurements[0], step.scene);
     QVERIFY(right.measured);
     QVERIFY(right.right);
-    QVERIFY(std::abs(right.value - expected) < 1e-4);
+    RL_VERIFY_NEAR(right.value, expected, 1e-4, 0);
     QCOMPARE(right.message,
              QStringLiteral("Right: the simulation measured 0.41\u00a0m (you said 0.41\u00a0m)."));
     lessons::Verdict wrong = lessons::judge(q, 0.5, run.measurements[0], step.scene);
@@ -321,17 +322,17 @@ void TestLesson::collisionPredictionsOfOffCentreHit()
     const double inertia = (4.0 + 0.01) / 12.0;
     const double jFull = 2 * 3 / (1 / 0.25 + 1 + 0.64 / inertia);
     const double jWithout = 2 * 3 / (1 / 0.25 + 1.0);
-    QVERIFY(std::abs(hit.predictedFull[0] - 0.8 * jFull / inertia) < 1e-3);
-    QVERIFY(std::abs(hit.predictedWithoutRotation[0] - 0.8 * jWithout / inertia) < 1e-3);
+    RL_VERIFY_NEAR(hit.predictedFull[0], 0.8 * jFull / inertia, 1e-3, 0);
+    RL_VERIFY_NEAR(hit.predictedWithoutRotation[0], 0.8 * jWithout / inertia, 1e-3, 0);
     // The engine does what the full formula predicts.
-    QVERIFY(std::abs(hit.angularAfter[0] - hit.predictedFull[0]) < 1e-3);
+    RL_VERIFY_NEAR(hit.angularAfter[0], hit.predictedFull[0], 1e-3, 0);
     QCOMPARE(hit.angularBefore[0], 0.0);
-    QVERIFY(std::abs(hit.velocityBefore[1].y() - 3.0) < 1e-9);
-    QVERIFY(std::abs(hit.velocityAfter[0].y() - jFull / 1.0) < 1e-3);
-    QVERIFY(std::abs(hit.velocityAfter[1].y() - (3.0 - jFull / 0.25)) < 1e-3);
+    RL_VERIFY_NEAR(hit.velocityBefore[1].y(), 3.0, 1e-9, 0);
+    RL_VERIFY_NEAR(hit.velocityAfter[0].y(), jFull / 1.0, 1e-3, 0);
+    RL_VERIFY_NEAR(hit.velocityAfter[1].y(), (3.0 - jFull / 0.25), 1e-3, 0);
     // Kinetic energy is kept by the full formula (e = 1).
     const physics::World& w = run.worlds[0];
-    QVERIFY(std::abs(w.diagnostics().kinetic - 0.5 * 0.25 * 9.0) < 1e-6);
+    RL_VERIFY_NEAR(w.diagnostics().kinetic, 0.5 * 0.25 * 9.0, 1e-6, 0);
 }
 
 void TestLesson::shippedQuestionsHaveTheirTextbookAnswers_data()

@@ -122,7 +122,7 @@ void TestLesson::energyDriftClaims()
         const lessons::LessonStep& step = stepOf(lesson, 0);
         StepRun run(step);
         const double e0 = run.worlds[0].diagnostics().total;
-        QVERIFY(std::abs(e0 - 0.45) < 1e-12);
+        RL_VERIFY_NEAR(e0, 0.45, 1e-12, 0);
         std::vector<double> low(4, 0), high(4, 0);
         run.run(10.0, [&](std::size_t i) {
             const double d = driftPercent(run.worlds[i], e0);
@@ -208,8 +208,8 @@ void TestLesson::smallerStepShrinksDrift()
         });
     }
     QVERIFY(worst[0][0] / worst[1][0] > 10);                // Euler
-    QVERIFY(std::abs(worst[0][1] / worst[1][1] - 10) < 1);  // symplectic Euler
-    QVERIFY(std::abs(worst[0][2] / worst[1][2] - 100) < 5); // Verlet
+    RL_VERIFY_NEAR(worst[0][1] / worst[1][1], 10, 1, 0);  // symplectic Euler
+    RL_VERIFY_NEAR(worst[0][2] / worst[1][2], 100, 5, 0); // Verlet
     QVERIFY(worst[0][3] / worst[1][3] > 1e4);               // RK4
     for (int i = 0; i < 4; ++i)
         QVERIFY(worst[1][i] > 0); // smaller, never none
@@ -336,8 +336,8 @@ void TestLesson::softStepPyramidStands()
     QVERIFY2(sequentialSink > 5 * std::abs(softSink), qPrintable(figures));
     // Standing: no box moved more than 0.5 m sideways or turned more than 0.2 rad.
     for (std::size_t b = 0; b < start.size(); ++b) {
-        QVERIFY(std::abs(soft.bodies()[b].position.x() - start[b].position.x()) < 0.5);
-        QVERIFY(std::abs(soft.bodies()[b].angle - start[b].angle) < 0.2);
+        RL_VERIFY_NEAR(soft.bodies()[b].position.x(), start[b].position.x(), 0.5, 0);
+        RL_VERIFY_NEAR(soft.bodies()[b].angle, start[b].angle, 0.2, 0);
     }
     // "Watch the total energy: it stays flat (within two tenths of a per cent: the little the
     // pyramid settles)", and its change is a small part of what the sinking sequential pyramid
@@ -369,15 +369,15 @@ void TestLesson::billiardsBreakConservesMomentum()
     for (std::size_t i = 0; i < 2; ++i) {
         // The cue ball's 0.17 kg × (4, 0.01) m/s.
         QVERIFY(std::abs(lowestPx[i] - 0.68) < 1e-9 && std::abs(highestPx[i] - 0.68) < 1e-9);
-        QVERIFY(std::abs(run.worlds[i].diagnostics().momentum.y() - 0.0017) < 1e-9);
+        RL_VERIFY_NEAR(run.worlds[i].diagnostics().momentum.y(), 0.0017, 1e-9, 0);
         // Many collisions happened.
         QVERIFY(run.measurements[i].collisions().size() > 20);
     }
     // With e = 0.93 sequential impulses end the break below the cue ball's kinetic energy.
-    // The seed's contact-by-contact impulse ends it elsewhere: which way depends on the
+    // The paper's contact-by-contact impulse ends it elsewhere: which way depends on the
     // order round-off gives the simultaneous contacts (a Release and a sanitizer build
     // differ), and in some orders it still ends above the start, an open problem of the
-    // seed solver with many simultaneous contacts. What the lesson claims is only that the
+    // paper's solver with many simultaneous contacts. What the lesson claims is only that the
     // two differ while both keep the momentum.
     const double k0 = 0.5 * 0.17 * (16 + 0.0001);
     const double k[2] = {run.worlds[0].diagnostics().kinetic, run.worlds[1].diagnostics().kinetic};

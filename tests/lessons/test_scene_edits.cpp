@@ -3,6 +3,7 @@
 // loader uses for the same mistake in a file, deleting a body with its springs and pins, and
 // ids that stay unique.
 
+#include "near.h"
 #include "test_scene_edits.h"
 
 using namespace rigidlab;
@@ -85,7 +86,7 @@ void TestSceneEdits::addsPolygonAtItsCentroid()
     QCOMPARE(QString::fromStdString(def.name), QStringLiteral("polygon1"));
     QVERIFY(near(def.position, Vec2(2.0, 2.0), 1e-12));
     const physics::MassProperties mass = physics::computeMass(def.shape, 1.0);
-    QVERIFY(std::abs(mass.area - 4.5) < 1e-12);
+    RL_VERIFY_NEAR(mass.area, 4.5, 1e-12, 0);
     QVERIFY(near(mass.centroid, Vec2::Zero(), 1e-12));
     // Every point drawn is a vertex where it was drawn.
     const physics::Transform xf(def.position, def.angle);

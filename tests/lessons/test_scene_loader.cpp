@@ -332,7 +332,7 @@ void TestLessons::everyField()
     QCOMPARE(s.world.gravity, Vec2(0.5, -3));
     QCOMPARE(s.world.dt, 0.002);
     QCOMPARE(s.world.integrator, physics::IntegratorKind::RK4);
-    QCOMPARE(s.world.solver, physics::SolverKind::SeedImpulse);
+    QCOMPARE(s.world.solver, physics::SolverKind::PaperImpulse);
     QCOMPARE(s.world.iterations, 7);
     QCOMPARE(s.world.restitution, 0.25);
     QCOMPARE(s.world.friction, 0.75);

@@ -1,8 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // Shared helpers of the physics tests:
-//  - isClose / RL_VERIFY_NEAR: a tolerance comparison that works near zero (qFuzzyCompare
-//    does not) and prints both numbers and the tolerance when it fails;
+//  - RL_VERIFY_NEAR and the other comparisons of tests/near.h;
 //  - builders for the scenes several tests share (a body on a spring, a pendulum, bodies);
 //  - small independent geometry and statistics (a gift-wrapping hull, a least-squares slope),
 //    so that no test checks the engine against the engine's own code.
@@ -10,6 +9,8 @@
 #include <rigidlab/physics/body.h>
 #include <rigidlab/physics/shape.h>
 #include <rigidlab/physics/world.h>
+
+#include "near.h"
 
 #include <QByteArray>
 #include <QTest>
@@ -24,59 +25,6 @@
 namespace rigidlab::test {
 
 using physics::Vec2;
-
-/// True when |actual - expected| <= max(absTol, relTol * max(|actual|, |expected|)).
-/// The absolute floor is what makes comparisons of quantities that should be zero possible.
-inline bool isClose(double actual, double expected, double absTol, double relTol = 0.0)
-{
-    if (!std::isfinite(actual) || !std::isfinite(expected)) {
-        return false;
-    }
-    const double scale = std::max(std::abs(actual), std::abs(expected));
-    return std::abs(actual - expected) <= std::max(absTol, relTol * scale);
-}
-
-/// The failure message of RL_VERIFY_NEAR: both values, their difference and the tolerance.
-inline QByteArray nearMessage(const char* what, double actual, double expected, double absTol,
-                              double relTol)
-{
-    char buf[512];
-    std::snprintf(buf, sizeof buf,
-                  "%s: got %.17g, expected %.17g (difference %.3g, tolerance abs %.3g rel %.3g)",
-                  what, actual, expected, actual - expected, absTol, relTol);
-    return QByteArray(buf);
-}
-
-/// A message for a failed inequality: "what: got X, bound B".
-inline QByteArray boundMessage(const char* what, double actual, double bound)
-{
-    char buf[512];
-    std::snprintf(buf, sizeof buf, "%s: got %.17g, bound %.17g", what, actual, bound);
-    return QByteArray(buf);
-}
-
-} // namespace rigidlab::test
-
-/// QVERIFY that actual is within max(absTol, relTol * magnitude) of expected.
-#define RL_VERIFY_NEAR(actual, expected, absTol, relTol)                                           \
-    do {                                                                                           \
-        const double rlActual = (actual);                                                          \
-        const double rlExpected = (expected);                                                      \
-        QVERIFY2(::rigidlab::test::isClose(rlActual, rlExpected, (absTol), (relTol)),              \
-                 ::rigidlab::test::nearMessage(#actual, rlActual, rlExpected, (absTol), (relTol))  \
-                     .constData());                                                                \
-    } while (false)
-
-/// QVERIFY that actual <= bound, printing both when it is not.
-#define RL_VERIFY_AT_MOST(actual, bound)                                                           \
-    do {                                                                                           \
-        const double rlActual = (actual);                                                          \
-        const double rlBound = (bound);                                                            \
-        QVERIFY2(rlActual <= rlBound,                                                              \
-                 ::rigidlab::test::boundMessage(#actual, rlActual, rlBound).constData());          \
-    } while (false)
-
-namespace rigidlab::test {
 
 // ---------------------------------------------------------------------------------------------
 // Body and world builders

@@ -54,12 +54,12 @@ private slots:
 
 void TestCollisions::solverNames()
 {
-    for (SolverKind kind : {SolverKind::SeedImpulse, SolverKind::SequentialImpulse}) {
+    for (SolverKind kind : {SolverKind::PaperImpulse, SolverKind::SequentialImpulse}) {
         const auto parsed = solverFromName(solverName(kind));
         QVERIFY(parsed.has_value());
         QVERIFY(*parsed == kind);
     }
-    QVERIFY(solverName(SolverKind::SeedImpulse) != solverName(SolverKind::SequentialImpulse));
+    QVERIFY(solverName(SolverKind::PaperImpulse) != solverName(SolverKind::SequentialImpulse));
     QVERIFY(!solverFromName("no-such-solver").has_value());
 }
 
@@ -75,7 +75,7 @@ void TestCollisions::headOnCircles_data()
     QTest::addColumn<SolverKind>("solver");
     QTest::addColumn<double>("eA");
     QTest::addColumn<double>("eB");
-    for (auto [name, solver] : {std::pair{"seed", SolverKind::SeedImpulse},
+    for (auto [name, solver] : {std::pair{"paper", SolverKind::PaperImpulse},
                                 std::pair{"sequential", SolverKind::SequentialImpulse}}) {
         QTest::addRow("%s elastic", name) << solver << 1.0 << 1.0;
         QTest::addRow("%s e=0.5", name) << solver << 0.5 << 0.5;
@@ -138,7 +138,7 @@ void TestCollisions::bounceHeight_data()
     QTest::addColumn<SolverKind>("solver");
     QTest::addColumn<double>("e");
     QTest::addColumn<double>("dt");
-    for (auto [name, solver] : {std::pair{"seed", SolverKind::SeedImpulse},
+    for (auto [name, solver] : {std::pair{"paper", SolverKind::PaperImpulse},
                                 std::pair{"sequential", SolverKind::SequentialImpulse}}) {
         for (double e : {0.8, 0.6}) {
             for (double dt : {1e-3, 1e-4}) {
@@ -197,7 +197,7 @@ void TestCollisions::bounceHeight()
 void TestCollisions::momentumConservedInFreeCollisions_data()
 {
     QTest::addColumn<SolverKind>("solver");
-    QTest::newRow("seed") << SolverKind::SeedImpulse;
+    QTest::newRow("paper") << SolverKind::PaperImpulse;
     QTest::newRow("sequential") << SolverKind::SequentialImpulse;
 }
 
@@ -206,7 +206,7 @@ void TestCollisions::momentumConservedInFreeCollisions_data()
 // collisions (both solvers), to 1e-9 m/s.
 void TestCollisions::slowElasticCollision()
 {
-    for (SolverKind solver : {SolverKind::SeedImpulse, SolverKind::SequentialImpulse}) {
+    for (SolverKind solver : {SolverKind::PaperImpulse, SolverKind::SequentialImpulse}) {
         WorldDef def = rigidlab::test::quietWorldDef(IntegratorKind::SymplecticEuler, 1e-3);
         def.solver = solver;
         def.restitution = 1.0;
@@ -358,7 +358,7 @@ void TestCollisions::momentumConservedInFreeCollisions()
 //     j = -(1 + e) (vB - vA).n / (1/mA + 1/mB + (rA x n)^2 / IA + (rB x n)^2 / IB)
 // with mB = rho w h, IB = mB (w^2 + h^2) / 12, mA = rho pi r^2, all computed here. Then
 //     vA' = vA - j n / mA,  vB' = vB + j n / mB,  wB' = (rB x n) j / IB.
-// Checked within 1e-6 relative. The seed's printed formula (no rotational terms) would give a
+// Checked within 1e-6 relative. The paper's printed formula (no rotational terms) would give a
 // rod spin more than 5 % different, so the test tells the two apart. Kinetic energy is kept
 // for e = 1 within 1e-9 relative, and for any e the loss equals diagnostics().collisionLoss
 // within 1e-9 of the initial kinetic energy.
@@ -366,7 +366,7 @@ void TestCollisions::offCentreHitUsesFullDenominator_data()
 {
     QTest::addColumn<SolverKind>("solver");
     QTest::addColumn<double>("e");
-    for (auto [name, solver] : {std::pair{"seed", SolverKind::SeedImpulse},
+    for (auto [name, solver] : {std::pair{"paper", SolverKind::PaperImpulse},
                                 std::pair{"sequential", SolverKind::SequentialImpulse}}) {
         QTest::addRow("%s e=1", name) << solver << 1.0;
         QTest::addRow("%s e=0.5", name) << solver << 0.5;
@@ -401,8 +401,8 @@ void TestCollisions::offCentreHitUsesFullDenominator()
     const double j = -(1.0 + e) * vRelN / (1.0 / mA + 1.0 / mB + rBxn * rBxn / iB);
     const double jSeed = -(1.0 + e) * vRelN / (1.0 / mA + 1.0 / mB);
     const double vA = speed - j / mA, vB = j / mB, wB = rBxn * j / iB;
-    const double wSeed = rBxn * jSeed / iB;
-    QVERIFY(std::abs(wSeed - wB) > 0.05 * std::abs(wB));
+    const double wPaper = rBxn * jSeed / iB;
+    QVERIFY(std::abs(wPaper - wB) > 0.05 * std::abs(wB));
 
     world.updateDiagnostics();
     const double ke0 = rigidlab::test::kineticEnergy(world);
@@ -439,7 +439,7 @@ void TestCollisions::offCentreHitUsesFullDenominator()
 void TestCollisions::kinematicAndStaticBodies_data()
 {
     QTest::addColumn<SolverKind>("solver");
-    QTest::newRow("seed") << SolverKind::SeedImpulse;
+    QTest::newRow("paper") << SolverKind::PaperImpulse;
     QTest::newRow("sequential") << SolverKind::SequentialImpulse;
 }
 

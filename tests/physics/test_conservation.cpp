@@ -63,7 +63,7 @@ private slots:
 static void solverRows()
 {
     QTest::addColumn<SolverKind>("solver");
-    QTest::newRow("seed-impulse") << SolverKind::SeedImpulse;
+    QTest::newRow("seed-impulse") << SolverKind::PaperImpulse;
     QTest::newRow("sequential-impulse") << SolverKind::SequentialImpulse;
     QTest::newRow("soft-step") << SolverKind::SoftStep;
 }
@@ -196,7 +196,7 @@ void TestConservation::touchingRowGainsNothing_data()
 {
     QTest::addColumn<SolverKind>("solver");
     QTest::addColumn<double>("gap");
-    for (const auto& [name, kind] : {std::pair("seed-impulse", SolverKind::SeedImpulse),
+    for (const auto& [name, kind] : {std::pair("seed-impulse", SolverKind::PaperImpulse),
                                      std::pair("sequential-impulse", SolverKind::SequentialImpulse),
                                      std::pair("soft-step", SolverKind::SoftStep)}) {
         QTest::addRow("%s, gap 0.7 mm", name) << kind << 0.0007;

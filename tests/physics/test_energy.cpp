@@ -156,7 +156,7 @@ void TestEnergy::drag()
 // A 0.4 m x 0.2 m block slides at v0 = 2 m/s on a static floor, friction 0.5 (each body's,
 // so the pair's too), no bounce, g = 9.81. Exactly it stops after v0 / (mu g) = 0.41 s and
 // v0^2 / (2 mu g) = 0.408 m, and friction has taken all its kinetic energy, m v0^2 / 2. Run
-// 1 s, sequential impulses (the seed's one impulse per point leaves the block rocking). The
+// 1 s, sequential impulses (the paper's one impulse per point leaves the block rocking). The
 // block rests on the floor all along, and a resting contact takes nothing (the normal impulse
 // cancels gravity within the step), while friction's impulses add up to the kinetic energy
 // exactly (m dv . (v0 + v1) / 2 summed over the steps telescopes). So the count is exact but

@@ -199,17 +199,17 @@ void TestGolden::rows(bool withHashes)
         IntegratorKind integrator;
         std::uint64_t hash;
     };
-    constexpr SolverKind kSeed = SolverKind::SeedImpulse;
+    constexpr SolverKind kPaper = SolverKind::PaperImpulse;
     constexpr SolverKind kSeq = SolverKind::SequentialImpulse;
     const Row table[] = {
-        {"mixed-seed-euler", mixedScene, kSeed, IntegratorKind::Euler, 0xca61577ad317d51eull},
-        {"mixed-seed-symplectic", mixedScene, kSeed, IntegratorKind::SymplecticEuler,
+        {"mixed-paper-euler", mixedScene, kPaper, IntegratorKind::Euler, 0xca61577ad317d51eull},
+        {"mixed-paper-symplectic", mixedScene, kPaper, IntegratorKind::SymplecticEuler,
          0x11981a4bd983d30bull},
-        {"mixed-seed-verlet", mixedScene, kSeed, IntegratorKind::Verlet, 0x846651ef0313216full},
-        {"mixed-seed-rk4", mixedScene, kSeed, IntegratorKind::RK4, 0xfbe4a7ea3fef7b1bull},
-        {"mixed-seed-dopri5", mixedScene, kSeed, IntegratorKind::DormandPrince,
+        {"mixed-paper-verlet", mixedScene, kPaper, IntegratorKind::Verlet, 0x846651ef0313216full},
+        {"mixed-paper-rk4", mixedScene, kPaper, IntegratorKind::RK4, 0xfbe4a7ea3fef7b1bull},
+        {"mixed-paper-dopri5", mixedScene, kPaper, IntegratorKind::DormandPrince,
          0xb36eab1a829b8880ull},
-        {"mixed-seed-midpoint", mixedScene, kSeed, IntegratorKind::ImplicitMidpoint,
+        {"mixed-paper-midpoint", mixedScene, kPaper, IntegratorKind::ImplicitMidpoint,
          0x53628658eb602149ull},
         {"mixed-seq-euler", mixedScene, kSeq, IntegratorKind::Euler, 0xb927b433a1e5d62dull},
         {"mixed-seq-symplectic", mixedScene, kSeq, IntegratorKind::SymplecticEuler,
@@ -220,14 +220,14 @@ void TestGolden::rows(bool withHashes)
          0xfc8b074b8e105aeeull},
         {"mixed-seq-midpoint", mixedScene, kSeq, IntegratorKind::ImplicitMidpoint,
          0x60fcfcbc3c382430ull},
-        {"contact-seed-euler", contactScene, kSeed, IntegratorKind::Euler, 0x2a88056116faf680ull},
-        {"contact-seed-symplectic", contactScene, kSeed, IntegratorKind::SymplecticEuler,
+        {"contact-paper-euler", contactScene, kPaper, IntegratorKind::Euler, 0x2a88056116faf680ull},
+        {"contact-paper-symplectic", contactScene, kPaper, IntegratorKind::SymplecticEuler,
          0xe2d7d20d6a6dff2full},
-        {"contact-seed-verlet", contactScene, kSeed, IntegratorKind::Verlet, 0xb193439c9e8d200full},
-        {"contact-seed-rk4", contactScene, kSeed, IntegratorKind::RK4, 0x8464e618250325e3ull},
-        {"contact-seed-dopri5", contactScene, kSeed, IntegratorKind::DormandPrince,
+        {"contact-paper-verlet", contactScene, kPaper, IntegratorKind::Verlet, 0xb193439c9e8d200full},
+        {"contact-paper-rk4", contactScene, kPaper, IntegratorKind::RK4, 0x8464e618250325e3ull},
+        {"contact-paper-dopri5", contactScene, kPaper, IntegratorKind::DormandPrince,
          0xa2c55d9fc1d74dfcull},
-        {"contact-seed-midpoint", contactScene, kSeed, IntegratorKind::ImplicitMidpoint,
+        {"contact-paper-midpoint", contactScene, kPaper, IntegratorKind::ImplicitMidpoint,
          0x85830b77a9f18074ull},
         {"contact-seq-euler", contactScene, kSeq, IntegratorKind::Euler, 0x336aee78abceeca3ull},
         {"contact-seq-symplectic", contactScene, kSeq, IntegratorKind::SymplecticEuler,
@@ -294,7 +294,7 @@ void TestGolden::copyStepsIdentically()
     for (int i = 0; i < kSteps / 2; ++i)
         original.step();
     World copied(original);
-    World assigned = scene(SolverKind::SeedImpulse, IntegratorKind::Euler);
+    World assigned = scene(SolverKind::PaperImpulse, IntegratorKind::Euler);
     assigned.step();
     assigned = original;
     QCOMPARE(stateHash(copied), stateHash(original));

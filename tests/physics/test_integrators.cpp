@@ -105,7 +105,7 @@ void TestIntegrators::names()
     QVERIFY(!integratorFromName("leapfrog").has_value());
 }
 
-// One step of each method on x'' = -w^2 x against the method's own formula (the seed's
+// One step of each method on x'' = -w^2 x against the method's own formula (the paper's
 // equations), so that a method cannot pass the convergence test while being another method.
 // Tolerance 1e-14 relative: a handful of rounding errors on numbers of order 1.
 void TestIntegrators::oneStepMatchesFormula_data()
@@ -391,7 +391,7 @@ void TestIntegrators::rk4EnergyDecaysByExactFactor()
     QVERIFY2(loss > 0.0 && loss < 1e-3, qPrintable(QString("relative loss %1").arg(loss)));
 }
 
-// The seed's warning: with explicit Euler a frictionless pendulum gains energy until it goes
+// The paper's warning: with explicit Euler a frictionless pendulum gains energy until it goes
 // over the top. Pendulum L = 1 m, theta0 = 1 rad, g = 9.81, dt = 0.01 s. Why 60 s is enough:
 // in the linearised model Euler scales the energy by 1 + (w0 h)^2 per step, w0^2 = g/L, i.e.
 // at a rate of about w0^2 h = 0.098 per second; the energy must grow from
@@ -517,7 +517,7 @@ void TestIntegrators::pendulumPeriodMatchesElliptic()
 //    |w / w0 - 1| <= w h = 0.05 over 2000 steps (16 turns), the size of a first-order
 //    method's energy band (symplectic Euler's is ~u/2 in energy, see
 //    symplecticEnergyStaysBounded); a method that gains energy every turn leaves it.
-//  - Explicit Euler gains energy (the seed's point): its spin never falls; and its pin holds
+//  - Explicit Euler gains energy (the paper's point): its spin never falls; and its pin holds
 //    as long as the step stays a sensible one (w h < 1 rad per step; Euler's spin-up makes
 //    it leave that range, after which nothing is asked of it).
 void TestIntegrators::pinnedSpinStaysUniform_data()

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The integrators beyond the seed's, and what keeps the engine honest on extreme cases:
+// The integrators beyond the paper's, and what keeps the engine honest on extreme cases:
 //  - Dormand-Prince 5(4): fifth order at fixed substeps, its error estimate, tolerance control;
 //  - implicit midpoint: second order, and stable on the stiffest spring (k = 1e7 at m = 1)
 //    where every explicit method diverges;

@@ -415,7 +415,7 @@ void TestStep::keptFacesChangeNothing_data()
     QTest::addColumn<SolverKind>("solver");
     QTest::newRow("sequential impulses") << SolverKind::SequentialImpulse;
     QTest::newRow("soft step") << SolverKind::SoftStep;
-    QTest::newRow("seed impulse") << SolverKind::SeedImpulse;
+    QTest::newRow("paper's impulse") << SolverKind::PaperImpulse;
 }
 
 void TestStep::keptFacesChangeNothing()

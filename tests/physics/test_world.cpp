@@ -298,8 +298,8 @@ void TestWorld::identicalWorldsAreBitIdentical_data()
     QTest::newRow("sequential symplectic-euler")
         << SolverKind::SequentialImpulse << IntegratorKind::SymplecticEuler;
     QTest::newRow("sequential rk4") << SolverKind::SequentialImpulse << IntegratorKind::RK4;
-    QTest::newRow("seed verlet") << SolverKind::SeedImpulse << IntegratorKind::Verlet;
-    QTest::newRow("seed euler") << SolverKind::SeedImpulse << IntegratorKind::Euler;
+    QTest::newRow("seed verlet") << SolverKind::PaperImpulse << IntegratorKind::Verlet;
+    QTest::newRow("seed euler") << SolverKind::PaperImpulse << IntegratorKind::Euler;
 }
 
 void TestWorld::identicalWorldsAreBitIdentical()
@@ -334,7 +334,7 @@ void TestWorld::copiedWorldContinuesIdentically()
     }
     QVERIFY(!original.contacts().empty());
     World copied(original);
-    World assigned = buildFullScene(SolverKind::SeedImpulse, IntegratorKind::Euler);
+    World assigned = buildFullScene(SolverKind::PaperImpulse, IntegratorKind::Euler);
     assigned.step();
     assigned = original;
     QVERIFY(bitIdentical(stateOf(copied), stateOf(original)));

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The window in a classroom (issue 11): at every projector and laptop size it fits the screen,
+// The window in a classroom: at every projector and laptop size it fits the screen,
 // the world keeps half of the width, every control of every lesson step can be reached, and
 // the lesson panel's texts do not overlap; presentation mode is large and thick enough for the
 // back of a room and gives the layout back when it ends.

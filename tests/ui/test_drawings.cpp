@@ -26,6 +26,7 @@
 
 #include <cmath>
 
+#include "near.h"
 #include "test_main.h"
 
 using namespace rigidlab;
@@ -185,8 +186,8 @@ void TestDrawings::ghostWorldsDrawTheirFloor()
                 floor = floor || !b.moves();
                 // Drawn where the compared world is: shifted by its offset.
                 const physics::Vec2 at = b.origin() + (v + 1) * c.variantOffset();
-                QVERIFY(std::abs(item->pos().x() - at.x()) < 1e-9);
-                QVERIFY(std::abs(item->pos().y() - at.y()) < 1e-9);
+                RL_VERIFY_NEAR(item->pos().x(), at.x(), 1e-9, 0);
+                RL_VERIFY_NEAR(item->pos().y(), at.y(), 1e-9, 0);
             }
             QVERIFY2(floor, "the compared stack stands on a drawn floor");
         }

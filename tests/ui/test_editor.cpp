@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The scene editor (issue 15), driven as a teacher drives it: Edit mode, the tools' actions,
+// The scene editor, driven as a teacher drives it: Edit mode, the tools' actions,
 // mouse drags and clicks on the view. Every edit is undone back to the scene as opened (field
 // by field) and redone; refusals and warnings reach the status line with the loader's words.
 // (The tools one by one: test_editor_tools.cpp; the editor in the window: test_editor_window.)
@@ -13,6 +13,7 @@
 
 #include "edit/scene_edits.h"
 
+#include "near.h"
 #include "test_main.h"
 
 #include <QComboBox>
@@ -92,7 +93,7 @@ void drawEveryKind(Rig& rig)
     rig.use(EditTool::Circle);
     rig.drag(rig.px(-4, 2), rig.px(-3, 2));
     QVERIFY(near(rig.body("circle1").position, Vec2(-4 * g, 2 * g)));
-    QVERIFY(std::abs(rig.body("circle1").shape.asCircle()->radius - g) < kTolerance);
+    RL_VERIFY_NEAR(rig.body("circle1").shape.asCircle()->radius, g, kTolerance, 0);
 
     rig.use(EditTool::Box);
     rig.drag(rig.px(2, 0), rig.px(4, 2));
@@ -127,7 +128,7 @@ void drawEveryKind(Rig& rig)
     QCOMPARE(rig.scene().springs.size(), size_t(1));
     QCOMPARE(rig.scene().springs[0].a, physics::kWorld);
     QCOMPARE(rig.scene().springs[0].b, rig.index("box1"));
-    QVERIFY(std::abs(rig.scene().springs[0].restLength - 7 * g) < kTolerance);
+    RL_VERIFY_NEAR(rig.scene().springs[0].restLength, 7 * g, kTolerance, 0);
     QCOMPARE(rig.scene().springs[0].stiffness, EditTools::kSpringStiffness);
 }
 
@@ -293,10 +294,10 @@ void TestEditor::keysNudgeAndTurn()
     QVERIFY(near(rig.body("box1").position, Vec2(2 * rig.g, 2 * rig.g)));
     QCOMPARE(undo.count(), 2); // the box, and one step for the run of arrow keys
     QTest::keyClick(&rig.view, Qt::Key_Q);
-    QVERIFY(std::abs(rig.body("box1").angle - 5.0 * std::numbers::pi / 180.0) < 1e-12);
+    RL_VERIFY_NEAR(rig.body("box1").angle, 5.0 * std::numbers::pi / 180.0, 1e-12, 0);
     QTest::keyClick(&rig.view, Qt::Key_E);
     QTest::keyClick(&rig.view, Qt::Key_E);
-    QVERIFY(std::abs(rig.body("box1").angle + 5.0 * std::numbers::pi / 180.0) < 1e-12);
+    RL_VERIFY_NEAR(rig.body("box1").angle + 5.0 * std::numbers::pi / 180.0, 0.0, 1e-12, 0);
     QCOMPARE(undo.count(), 3); // one step for the turns
     QCOMPARE(undo.text(2), QStringLiteral("Rotate box1"));
     undo.undo();

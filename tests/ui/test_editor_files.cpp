@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The scene editor's files (issue 15): the window's document, New, Save, Save As, unsaved
+// The scene editor's files: the window's document, New, Save, Save As, unsaved
 // changes asked about, Run and Reset from the scene as edited, undo and redo from the Edit menu.
 // The dialogs are answered through the window's askers, so no dialog opens.
 

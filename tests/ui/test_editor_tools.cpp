@@ -8,6 +8,7 @@
 #include "edit/scene_edits.h"
 #include "format/scene_schema.h"
 
+#include "near.h"
 #include "test_main.h"
 
 #include <QUndoStack>
@@ -47,7 +48,7 @@ void TestEditorTools::thinBoxOnTheGridKeepsOneStep()
     const auto [lo, hi] =
         std::minmax_element(box->vertices.begin(), box->vertices.end(),
                             [](const Vec2& a, const Vec2& b) { return a.y() < b.y(); });
-    QVERIFY(std::abs((hi->y() - lo->y()) - rig.g) < kTolerance);
+    RL_VERIFY_NEAR((hi->y() - lo->y()), rig.g, kTolerance, 0);
 }
 
 namespace {
@@ -198,7 +199,7 @@ void TestEditorTools::keyboardDrawsWithEveryTool()
     QTest::keyClick(&rig.view, Qt::Key_Return);
     QCOMPARE(rig.tools.selectedBody(), 2);
     QTest::keyClick(&rig.view, Qt::Key_Q);
-    QVERIFY(std::abs(rig.scene().bodies[2].angle - 5.0 * std::numbers::pi / 180.0) < 1e-12);
+    RL_VERIFY_NEAR(rig.scene().bodies[2].angle, 5.0 * std::numbers::pi / 180.0, 1e-12, 0);
 
     for (int i = 0; i < kEditToolCount; ++i) {
         rig.use(static_cast<EditTool>(i));
@@ -261,7 +262,7 @@ void TestEditorTools::snapsToOtherBodiesEdges()
         QTest::keyClick(&rig.view, Qt::Key_E);
     }
     const Side top = topSide(rig.body("ground1"));
-    QVERIFY(std::abs(top.normal.y() - std::cos(20.0 * std::numbers::pi / 180.0)) < 1e-12);
+    RL_VERIFY_NEAR(top.normal.y(), std::cos(20.0 * std::numbers::pi / 180.0), 1e-12, 0);
     const double pixel = 1.0 / rig.view.zoom(); // [m]
     const auto toView = [&rig](const Vec2& p) {
         return rig.view.mapFromScene(QPointF(p.x(), p.y()));

@@ -13,6 +13,7 @@
 #include "edit/scene_edits.h"
 #include "format/lesson.h"
 
+#include "near.h"
 #include "test_main.h"
 
 #include <QComboBox>
@@ -391,7 +392,7 @@ void TestEditorWindow::lessonStepBuiltInTheEditorIsJudged()
     QVERIFY(measured);
     // Momentum and an elastic hit: v1 = (m1 - m2) / (m1 + m2) u = -u/2 for m2 = 3 m1.
     const auto& moving = step.scene.bodies[*step.scene.bodyIndex(QStringLiteral("moving"))];
-    QVERIFY(std::abs(*measured - (-0.5 * moving.velocity.x())) < 1e-3);
+    RL_VERIFY_NEAR(*measured, (-0.5 * moving.velocity.x()), 1e-3, 0);
 
     // Leaving the lesson unlocks the editor's properties.
     w.lessonPlayer().closeLesson();

@@ -15,6 +15,7 @@
 
 #include "first_question.h"
 #include "test_files.h"
+#include "near.h"
 #include "test_main.h"
 
 #include <QLineEdit>
@@ -433,7 +434,7 @@ private slots:
         const std::optional<double> value = measured.value;
         QVERIFY(value);
         // A value below 1, so that a dropped separator (0.4096 read as 4096) would be wrong.
-        QVERIFY(std::abs(*value) < 1 && std::abs(*value) > 0.01);
+        RL_VERIFY_NEAR(*value, 0.0, 1 && std::abs(*value) > 0.01, 0);
         // (The questions sit below the lesson's scrolling text, in the dock.)
         const auto* questions = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
         QVERIFY(questions);

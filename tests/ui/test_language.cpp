@@ -14,6 +14,7 @@
 
 #include "first_question.h"
 #include "shipped_lessons.h"
+#include "near.h"
 #include "test_main.h"
 
 #include <qcustomplot.h>
@@ -494,7 +495,7 @@ private slots:
         QVERIFY(measured.step >= 0);
         const std::optional<double> value = measured.value;
         QVERIFY(value);
-        QVERIFY(std::abs(*value) < 1 && std::abs(*value) > 0.01); // "0,4" misread as 4 fails
+        RL_VERIFY_NEAR(*value, 0.0, 1 && std::abs(*value) > 0.01, 0); // "0,4" misread as 4 fails
         const QString point = QString::number(*value, 'f', 4);
         QString comma = point;
         comma.replace(u'.', u',');

@@ -14,6 +14,7 @@
 
 #include <qcustomplot.h>
 
+#include "near.h"
 #include "test_main.h"
 
 #include <QFile>
@@ -118,8 +119,8 @@ void TestPlotAxes::niceRangeRule()
     QVERIFY(r.lower < std::min(min, max) && r.upper > std::max(min, max));
     if (flat) {
         // Centred on the data, as tall as its magnitude says.
-        QVERIFY(std::abs(0.5 * (r.lower + r.upper) - 0.5 * (min + max)) <= 1e-15 * halfSpan);
-        QVERIFY(std::abs(0.5 * (r.upper - r.lower) - halfSpan) <= 1e-12 * halfSpan);
+        RL_VERIFY_NEAR(0.5 * (r.lower + r.upper), 0.5 * (min + max), 1e-15 * halfSpan, 0);
+        RL_VERIFY_NEAR(0.5 * (r.upper - r.lower), halfSpan, 1e-12 * halfSpan, 0);
     } else {
         // Fitted: the data fills all but the margins.
         const double span = std::abs(max - min);
@@ -136,14 +137,14 @@ void TestPlotAxes::niceRangeMinimumSpan()
     const double scale = 1.4;
     const AxisRange r = niceRange(-0.002159, -0.002062, scale, 0.02);
     QVERIFY(!r.flat);
-    QVERIFY(std::abs((r.upper - r.lower) - 0.02 * scale) <= 1e-15);
-    QVERIFY(std::abs(0.5 * (r.upper + r.lower) - 0.5 * (-0.002159 - 0.002062)) <= 1e-15);
+    RL_VERIFY_NEAR((r.upper - r.lower), 0.02 * scale, 1e-15, 0);
+    RL_VERIFY_NEAR(0.5 * (r.upper + r.lower), 0.5 * (-0.002159 - 0.002062), 1e-15, 0);
     // Without it, the same data fills the axis (the energy drift wants that).
     const AxisRange fitted = niceRange(-0.002159, -0.002062, scale);
     QVERIFY((-0.002062 + 0.002159) > 0.8 * (fitted.upper - fitted.lower));
     // A variation larger than the minimum is fitted as usual.
     const AxisRange large = niceRange(0.0, 1.0, 1.0, 0.02);
-    QVERIFY(std::abs((large.upper - large.lower) - (1 + 2 * kValueMargin)) <= 1e-12);
+    RL_VERIFY_NEAR((large.upper - large.lower), (1 + 2 * kValueMargin), 1e-12, 0);
 }
 
 void TestPlotAxes::niceRangeLabelsAreDistinct_data()

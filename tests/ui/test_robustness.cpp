@@ -122,7 +122,7 @@ void onModal(std::function<void(QWidget*)> action)
 /// Closes `window` from inside a modal dialog's event loop, then runs the deferred deletions that
 /// loop may run before the dialog returns. Whether a busy loop runs them first depends on what
 /// else is pending (file-system watchers, other threads' events): on a loaded machine it did,
-/// the window and its dialog were deleted and the export was dropped (issue 10). Doing it here
+/// the window and its dialog were deleted and the export was dropped. Doing it here
 /// makes that order certain instead of rare.
 void closeAndRunDeferredDeletes(QWidget* window)
 {
@@ -132,7 +132,7 @@ void closeAndRunDeferredDeletes(QWidget* window)
 
 /// Chooses `path` in a (Qt, not native) file dialog as a user does: types it, whole, into the
 /// file name field. QFileDialog::selectFile() does not write the field while it has the focus,
-/// so whether it took depended on when the dialog's window became active (issue 10: on a
+/// so whether it took depended on when the dialog's window became active (on a
 /// loaded machine the export went to the dialog's default name instead).
 void typeIntoFileDialog(QFileDialog* dialog, const QString& path)
 {

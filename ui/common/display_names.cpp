@@ -57,8 +57,8 @@ struct SolverWords {
 };
 
 constexpr std::array<SolverWords, 3> kSolverWords{{
-    {physics::SolverKind::SeedImpulse,
-     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Seed impulse")},
+    {physics::SolverKind::PaperImpulse,
+     QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "The paper's impulse")},
     {physics::SolverKind::SequentialImpulse,
      QT_TRANSLATE_NOOP("rigidlab::ui::displayNames", "Sequential impulse")},
     {physics::SolverKind::SoftStep,

@@ -15,7 +15,7 @@ namespace rigidlab::ui {
 
 /// "Explicit Euler", "Velocity Verlet", ..., translated.
 QString integratorDisplayName(physics::IntegratorKind kind);
-/// "Seed impulse", "Sequential impulse", translated.
+/// "The paper's impulse", "Sequential impulse", translated.
 QString solverDisplayName(physics::SolverKind kind);
 /// A step's stage in words ("broad phase"), translated: the physics names it in English for
 /// the CLI and stays free of languages.

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Where the editor's pointer snaps to other bodies (issue 15): their vertices and centres, and
+// Where the editor's pointer snaps to other bodies: their vertices and centres, and
 // the nearest point of their edges. Pure geometry on the scene being edited; the reach comes
 // in metres (the editor turns its few pixels into metres at the zoom of the moment, so that
 // snapping feels the same at every zoom).

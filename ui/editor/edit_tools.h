@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Edit mode and the editor's tools on the world view (issue 15).
+// Edit mode and the editor's tools on the world view.
 //
 // EditTools watches the view's mouse and keys through an event filter while Edit mode is on
 // and hands each gesture to the tool in use (editor/tools/: one class per tool), which turns

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// A body's initial velocity drawn as an arrow from its origin, for Edit mode (issue 15).
+// A body's initial velocity drawn as an arrow from its origin, for Edit mode.
 //
 // The arrow is the path the body would cover in kArrowSeconds at that velocity, so that one
 // metre of arrow on the world's scale is one metre per second, and the grid (whose step is in

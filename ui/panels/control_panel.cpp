@@ -32,9 +32,9 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
         m_integrator->addItem(integratorDisplayName(kind), int(kind));
     m_integrator->setToolTip(tr("How positions and velocities are advanced in each step"));
     for (const SolverKind kind :
-         {SolverKind::SeedImpulse, SolverKind::SequentialImpulse, SolverKind::SoftStep})
+         {SolverKind::PaperImpulse, SolverKind::SequentialImpulse, SolverKind::SoftStep})
         m_solver->addItem(solverDisplayName(kind), int(kind));
-    m_solver->setToolTip(tr("Seed impulse: one impulse per contact, once (the paper's method).\n"
+    m_solver->setToolTip(tr("The paper's impulse: one impulse per contact, once.\n"
                             "Sequential impulse: iterated, clamped, warm started.\n"
                             "Soft step: springy contacts solved in small substeps; stiff stacks."));
     // Every range is a scene file's (lessons/limits.h): what a file may hold can be typed.

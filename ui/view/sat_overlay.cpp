@@ -241,7 +241,7 @@ QRectF SatOverlayItem::boundingRect() const
 
 void SatOverlayItem::paintHulls(QPainter* p, double px) const
 {
-    // A body whose outline was not convex is handled as its convex hull (the seed's
+    // A body whose outline was not convex is handled as its convex hull (the paper's
     // caveat): shade the area the hull adds, where contacts are found wrongly.
     const auto& scene = m_model.controller().scene();
     const auto& world = m_model.controller().world();

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The seed's four integrators over the whole state (q, v), forces evaluated again at every
+// The paper's four integrators over the whole state (q, v), forces evaluated again at every
 // stage; the adaptive and implicit ones are in integrators_adaptive.cpp and
 // integrator_implicit.cpp.
 
@@ -17,7 +17,7 @@ namespace {
 
 using Eigen::VectorXd;
 
-/// Explicit Euler (the seed's): both q and v advance with the rates at the start.
+/// Explicit Euler (the paper's): both q and v advance with the rates at the start.
 ///   q1 = q0 + h v0,  v1 = v0 + h a(q0, v0)
 class ExplicitEuler final : public Integrator {
 public:
@@ -60,7 +60,7 @@ private:
     VectorXd m_a;
 };
 
-/// Velocity Verlet (the seed's formula):
+/// Velocity Verlet (the paper's formula):
 ///   q1 = q0 + h v0 + h^2/2 a0,  v1 = v0 + h/2 (a0 + a1),  a1 = a(q1, v~1)
 /// For velocity-dependent forces (drag, dampers, joints) a1 needs a velocity at t + h:
 /// the first-order prediction v~1 = v0 + h a0 keeps the method second order.

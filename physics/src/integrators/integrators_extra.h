@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Private: the integrators beyond the seed's, each in a file of its own.
+// Private: the integrators beyond the paper's, each in a file of its own.
 
 #include "rigidlab/physics/integrator.h"
 

@@ -142,7 +142,7 @@ int ContactSolver::solveCollisions(int sweeps)
 
 bool ContactSolver::solveCollisionPhase(double threshold, int sweeps)
 {
-    m_seed = false;
+    m_paperImpulse = false;
     m_softPhase = true;
     prepare(threshold, m_settings->restitutionThreshold);
     for (Constraint& c : m_constraints)

@@ -48,7 +48,7 @@ void solveContacts(StepContext& ctx)
     ContactSolver& solver = s.solver;
     solver.begin(ctx.contacts, s.previous, ctx.bodies, ctx.contactSettings, h, s.xfPosition,
                  s.velocityAtStart, s.angularVelocityAtStart);
-    if (ctx.def.solver == SolverKind::SeedImpulse)
+    if (ctx.def.solver == SolverKind::PaperImpulse)
         solver.solveSeed();
     else
         solver.solveSequential(ctx.def.iterations, true, ctx.restitutionThreshold);

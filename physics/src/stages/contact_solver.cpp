@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::ContactSolve (profile.h): collision response by impulses.
 //
-// The seed's impulse (its equations 1.1-1.6): with n from A to B and the relative normal
+// The paper's impulse (its equations 1.1-1.6): with n from A to B and the relative normal
 // velocity vn = (vB + wB x rB - vA - wA x rA) . n < 0, the impulse
 //     j = -(1 + e) vn / (1/mA + 1/mB + (rA x n)^2 / IA + (rB x n)^2 / IB)
 // changes vA by -j n / mA, vB by +j n / mB, wA by -(rA x j n) / IA and wB by +(rB x j n) / IB.
@@ -47,7 +47,7 @@ struct NamedSolver {
     std::string_view name;
 };
 constexpr std::array<NamedSolver, 3> kSolvers{{
-    {SolverKind::SeedImpulse, "seed-impulse"},
+    {SolverKind::PaperImpulse, "seed-impulse"},
     {SolverKind::SequentialImpulse, "sequential-impulse"},
     {SolverKind::SoftStep, "soft-step"},
 }};
@@ -387,7 +387,7 @@ void ContactSolver::warmStart()
 
 void ContactSolver::solveSequential(int iterations, bool warm, double threshold)
 {
-    m_seed = false;
+    m_paperImpulse = false;
     prepare(threshold, m_settings->restitutionThreshold);
     // The collision phase: bounces, each from the approach it has when it is met. Last step's
     // impulses wait: they are the contact phase's starting guess.
@@ -437,8 +437,8 @@ void ContactSolver::solveSequential(int iterations, bool warm, double threshold)
 
 void ContactSolver::solveSeed()
 {
-    // The seed has no threshold: every approaching contact gets its impulse, once, in order.
-    m_seed = true;
+    // The paper has no threshold: every approaching contact gets its impulse, once, in order.
+    m_paperImpulse = true;
     prepare(0.0, 0.0);
     for (Constraint& c : m_constraints) {
         for (Point& p : c.p)
@@ -509,7 +509,7 @@ bool ContactSolver::appliedImpulse() const
 const std::vector<double>& ContactSolver::impactFractions()
 {
     // A body bounced by every contact that pushed it moved freely until its earliest impact;
-    // any contact that pushed it without a bounce (resting) makes it 0. The seed's impulses
+    // any contact that pushed it without a bounce (resting) makes it 0. The paper's impulses
     // are its bounces; the sequential solver's bounces are its collision phase's.
     m_impact.assign(m_bodies->size(), 1.0);
     for (const Constraint& c : m_constraints) {
@@ -519,7 +519,7 @@ const std::vector<double>& ContactSolver::impactFractions()
             if (p.bounceImpulse > 0)
                 at = p.impact;
             if (p.normalImpulse > 0)
-                at = std::min(at, m_seed ? p.impact : 0.0);
+                at = std::min(at, m_paperImpulse ? p.impact : 0.0);
             if (at == 1.0)
                 continue;
             for (int id : {c.a, c.b}) {

@@ -28,7 +28,7 @@ public:
                const std::vector<Vec2>& startPosition, const std::vector<Vec2>& startVelocity,
                const std::vector<double>& startAngularVelocity);
 
-    /// Seed impulse: one impulse per contact point, in order, with the full denominator
+    /// The paper's impulse: one impulse per contact point, in order, with the full denominator
     /// 1/mA + 1/mB + (rA x n)^2/IA + (rB x n)^2/IB and Coulomb friction.
     void solveSeed();
 
@@ -180,7 +180,7 @@ private:
     std::vector<Velocity> m_velocity; ///< per body
     std::vector<double> m_impact;     ///< per body, see impactFractions()
     std::vector<Rotation> m_rotation; ///< per body, valid where m_rotationStamp == m_stamp
-    bool m_seed = false;              ///< this step's solver is the seed's impulse
+    bool m_paperImpulse = false;              ///< this step's solver is the paper's impulse
     /// The soft step's collision phase (solveCollisionPhase()): a point timed within the step
     /// bounces even if its arms at the impact slow its approach below closing, and a gap
     /// that closes exactly at the end of the step bounces too (bounceTarget()).

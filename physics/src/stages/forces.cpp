@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Stage::Forces (profile.h): the applied forces (the seed's force and torque accumulators,
+// Stage::Forces (profile.h): the applied forces (the paper's force and torque accumulators,
 // gravity, springs, mutual gravitation, linear drag), turned into accelerations. A body's own
 // load is appliedLoad (dynamics.h).
 

@@ -51,7 +51,7 @@ struct Body {
     double friction = 0.0;    ///< resolved against the world's default
     bool collide = true;
 
-    /// The seed's accumulators: force and torque applied by the user for the next step,
+    /// The paper's accumulators: force and torque applied by the user for the next step,
     /// cleared after it. Force acts at the centre of mass [N], torque [N m].
     Vec2 force = Vec2::Zero();
     double torque = 0.0;

@@ -12,7 +12,7 @@
 namespace rigidlab::physics {
 
 enum class SolverKind {
-    SeedImpulse,       ///< the seed's impulse, contact by contact, once (full denominator)
+    PaperImpulse,       ///< the paper's impulse, contact by contact, once (full denominator)
     SequentialImpulse, ///< accumulated, clamped impulses, iterated and warm started
     /// Soft contacts in substeps with relaxation, after the sequential solver's collision
     /// phase for the bounces (soft_step.cpp, soft_solver.cpp).

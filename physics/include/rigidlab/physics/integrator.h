@@ -13,10 +13,10 @@
 namespace rigidlab::physics {
 
 enum class IntegratorKind {
-    Euler,            ///< explicit Euler, the seed's own: order 1, energy grows
+    Euler,            ///< explicit Euler, the paper's own: order 1, energy grows
     SymplecticEuler,  ///< semi-implicit Euler: velocity first, then position: order 1, bounded
-    Verlet,           ///< velocity Verlet, the seed's formula: order 2, bounded
-    RK4,              ///< classic Runge-Kutta, the seed's: order 4, slow drift
+    Verlet,           ///< velocity Verlet, the paper's formula: order 2, bounded
+    RK4,              ///< classic Runge-Kutta, the paper's: order 4, slow drift
     DormandPrince,    ///< embedded Runge-Kutta 5(4), adaptive substeps within each step
     ImplicitMidpoint, ///< implicit midpoint by Newton's method: order 2, A-stable, symplectic
 };

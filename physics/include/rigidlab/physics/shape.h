@@ -61,7 +61,7 @@ struct PolygonBuild {
 
 /// Builds a convex polygon: 3 to kMaxPolygonVertices distinct vertices and a positive area are
 /// required; clockwise input is reversed; a non-convex list is replaced by its convex hull (with a
-/// warning, as in the seed paper: detection is then exact only for the hull).
+/// warning, as in the paper: detection is then exact only for the hull).
 Result<PolygonBuild> makePolygon(const std::vector<Vec2>& vertices);
 
 /// The convex hull, counter-clockwise, collinear points dropped (Andrew's monotone chain).
