@@ -84,6 +84,8 @@ private slots:
     // test_lesson_loader.cpp
     void shippedLessonsLoad_data();
     void shippedLessonsLoad();
+    void shippedLessonsLabelEveryBody_data();
+    void shippedLessonsLabelEveryBody();
     void sceneTextsInLessonLanguage();
     void validateRecognisesLessons();
     void shippedLessonsInTeachingOrder();

@@ -8,7 +8,7 @@
 #include "common/theme.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/divergence_banner.h"
-#include "panels/divergence_text.h"
+#include "common/divergence_text.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"
 #include "view/world_view.h"

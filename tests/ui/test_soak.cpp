@@ -128,6 +128,48 @@ QByteArray gasScene()
            bodies + "]}";
 }
 
+/// The simulated time of the soak: RIGIDLAB_SOAK_SECONDS, or the suite's short run [s].
+double soakSeconds()
+{
+    bool ok = false;
+    const double seconds = qEnvironmentVariable("RIGIDLAB_SOAK_SECONDS").toDouble(&ok);
+    return ok && seconds > 0 ? seconds : kDefaultSeconds;
+}
+
+/// The window with the soak's scene and every plot live, one of them keeping the whole run
+/// (thinned to its point budget); the suite's short run keeps a smaller history.
+void showLive(ui::MainWindow& window, const lessons::Scene& scene)
+{
+    window.resize(1400, 900);
+    window.show();
+    window.controller().loadScene(scene, QStringLiteral("soak.json"));
+    if (qEnvironmentVariableIsEmpty("RIGIDLAB_SOAK_SECONDS"))
+        window.controller().setHistoryBudget(kTestHistoryBudget);
+    window.plot(0)->setRangeMode(ui::RangeMode::WholeRun);
+}
+
+/// One line of the soak's progress: memory, history, contacts, bodies that left the box.
+void reportProgress(const ui::SimulationController& controller, long long step)
+{
+    int outside = 0;
+    for (const physics::Body& b : controller.world().bodies())
+        outside += b.isDynamic() && (std::abs(b.position.x()) > 6 || std::abs(b.position.y()) > 4);
+    qInfo("soak: step %lld (t = %.0f s): %.1f MiB resident, history from step %lld, "
+          "%d contacts, %d bodies outside the box, E = %.1f J",
+          step, controller.world().time(), residentBytes() / 1048576.0, controller.earliestStep(),
+          controller.world().diagnostics().contacts, outside,
+          controller.world().diagnostics().total);
+}
+
+/// The step rates of the first and last tenth, and what each plot holds.
+void reportRates(ui::MainWindow& window, double firstRate, double lastRate)
+{
+    qInfo("soak: %.0f steps per CPU second in the first tenth, %.0f in the last (ratio %.2f)",
+          firstRate, lastRate, lastRate / firstRate);
+    for (int i = 0; i < ui::MainWindow::kPlotCount; ++i)
+        qInfo("soak: plot %d holds %d points", i, window.plot(i)->pointCount());
+}
+
 } // namespace
 
 class TestSoak : public QObject {
@@ -163,10 +205,7 @@ private slots:
 
     void longRunStaysFlat()
     {
-        bool ok = false;
-        double seconds = qEnvironmentVariable("RIGIDLAB_SOAK_SECONDS").toDouble(&ok);
-        if (!ok || !(seconds > 0))
-            seconds = kDefaultSeconds;
+        const double seconds = soakSeconds();
 
         const lessons::SceneLoadResult loaded =
             lessons::loadSceneJson(gasScene(), QStringLiteral("soak.json"));
@@ -174,16 +213,10 @@ private slots:
         QCOMPARE(loaded.scene.bodies.size(), std::size_t{204});
 
         ui::MainWindow window;
-        window.resize(1400, 900);
-        window.show();
+        showLive(window, loaded.scene);
         auto& controller = window.controller();
-        controller.loadScene(loaded.scene, QStringLiteral("soak.json"));
-        if (qEnvironmentVariableIsEmpty("RIGIDLAB_SOAK_SECONDS"))
-            controller.setHistoryBudget(kTestHistoryBudget);
-        // Every plot live, one of them keeping the whole run (thinned to its point budget).
         for (int i = 0; i < ui::MainWindow::kPlotCount; ++i)
             QVERIFY(window.plot(i)->isVisible());
-        window.plot(0)->setRangeMode(ui::RangeMode::WholeRun);
 
         const double dt = controller.world().def().dt;
         const long long steps = std::llround(seconds / dt);
@@ -213,17 +246,8 @@ private slots:
             // Warm: the history at its budget and the first tenth over.
             if (rssWarm < 0 && i >= tenth && historyFullAt > 0)
                 rssWarm = residentBytes();
-            if (i % tenth == 0) {
-                int outside = 0;
-                for (const physics::Body& b : controller.world().bodies())
-                    outside += b.isDynamic() &&
-                               (std::abs(b.position.x()) > 6 || std::abs(b.position.y()) > 4);
-                qInfo("soak: step %lld (t = %.0f s): %.1f MiB resident, history from step %lld, "
-                      "%d contacts, %d bodies outside the box, E = %.1f J",
-                      i, controller.world().time(), residentBytes() / 1048576.0,
-                      controller.earliestStep(), controller.world().diagnostics().contacts, outside,
-                      controller.world().diagnostics().total);
-            }
+            if (i % tenth == 0)
+                reportProgress(controller, i);
             if (const auto& d = controller.world().divergence())
                 QFAIL(qPrintable(lessons::divergenceMessage(*d)));
         }
@@ -236,10 +260,7 @@ private slots:
         qInfo("soak: resident memory %.1f MiB at the start, %.1f MiB when warm (history full "
               "at step %lld), %.1f MiB at the end",
               rssStart / 1048576.0, rssWarm / 1048576.0, historyFullAt, rssEnd / 1048576.0);
-        qInfo("soak: %.0f steps per CPU second in the first tenth, %.0f in the last (ratio %.2f)",
-              firstRate, lastRate, lastRate / firstRate);
-        for (int i = 0; i < ui::MainWindow::kPlotCount; ++i)
-            qInfo("soak: plot %d holds %d points", i, window.plot(i)->pointCount());
+        reportRates(window, firstRate, lastRate);
 
         QCOMPARE(controller.world().stepCount(), steps);
         if (!kMeasure)

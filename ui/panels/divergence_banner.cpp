@@ -2,7 +2,7 @@
 #include "panels/divergence_banner.h"
 
 #include "common/theme.h"
-#include "panels/divergence_text.h"
+#include "common/divergence_text.h"
 #include "simulation/simulation_controller.h"
 
 #include "format/scene_loader.h"

@@ -6,7 +6,7 @@
 
 #include "common/number_format.h"
 #include "common/theme.h"
-#include "panels/divergence_text.h"
+#include "common/divergence_text.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "panels/divergence_text.h"
+#include "common/divergence_text.h"
 
 #include "format/divergence_message.h"
 
