@@ -440,6 +440,11 @@ int main(int argc, char** argv)
     if (options.scale)
         qputenv("QT_SCALE_FACTOR", QByteArray::number(*options.scale));
 
+    // Qt's file dialog writes its dates in the system's locale, not the one the window sets:
+    // --lang sets the system's date conventions too ("3. 12." in Czech, not "3 Dec").
+    if (const auto* language = rigidlab::ui::findLanguage(options.lang))
+        qputenv("LC_TIME", language->locale.toString().toLatin1() + ".UTF-8");
+
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RigidLab"));
     QApplication::setApplicationName(QStringLiteral("RigidLab"));

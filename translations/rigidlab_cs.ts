@@ -210,8 +210,8 @@
         <translation>Vrátit se k&#xa0;libovolnému dřívějšímu okamžiku běhu</translation>
     </message>
     <message>
-        <source>Edit mode on or off: draw the scene; leaving it runs the scene as edited</source>
-        <translation>Editor zapnout nebo vypnout: kreslit scénu; po jeho vypnutí se spustí upravená scéna</translation>
+        <source>Edit mode on or off: draw the scene; leaving it loads the scene as edited, paused</source>
+        <translation>Editor zapnout nebo vypnout: kreslit scénu; po jeho vypnutí se načte upravená scéna, zastavená</translation>
     </message>
     <message>
         <source>Edit: select and move bodies (arrows nudge)</source>

@@ -48,7 +48,7 @@ inline constexpr std::array kControls{
     // arrows nudge and Q, E turn the selected body in the scene, not in the running world.
     ControlInfo{"editMode", "Ctrl+E", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Edit mode on or off: draw the scene; leaving it "
-                                              "runs the scene as edited")},
+                                              "loads the scene as edited, paused")},
     ControlInfo{"toolSelect", "A", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Edit: select and move bodies (arrows nudge)")},
     ControlInfo{"toolRotate", "W", nullptr,

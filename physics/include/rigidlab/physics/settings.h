@@ -93,7 +93,7 @@ struct EngineSettings {
     /// anew, the SAT over every axis without hints, kept faces or unrolled boxes, the contacts
     /// coloured anew each step and solved one lane at a time, symplectic Euler through the
     /// integrator over the state vectors. The golden runs give the same hashes either way
-    /// (test_plain_paths.cpp).
+    /// (tests/physics/test_golden.cpp).
     bool plainPaths = false;
 };
 
