@@ -4,7 +4,7 @@
 // different from the others.
 
 #include "plots/plot_widget.h"
-#include "plots/sample_buffer.h"
+#include "simulation/sample_buffer.h"
 
 #include <cmath>
 

@@ -14,10 +14,11 @@
 #include "format/limits.h"
 
 #include "first_question.h"
-#include "test_files.h"
 #include "near.h"
+#include "test_files.h"
 #include "test_main.h"
 
+#include <QDockWidget>
 #include <QLineEdit>
 #include <QLocale>
 #include <QSignalSpy>
@@ -60,6 +61,17 @@ NumberField* field(MainWindow& w, const QString& name)
 {
     NumberField* f = w.controls().findChild<NumberField*>(name);
     return f ? f : w.inspector().findChild<NumberField*>(name);
+}
+
+/// Brings the dock that holds `w` to the front of its tab group, as a click on its tab does.
+void showDockOf(QWidget* w)
+{
+    for (QWidget* p = w; p; p = p->parentWidget())
+        if (auto* dock = qobject_cast<QDockWidget*>(p)) {
+            dock->raise();
+            QCoreApplication::processEvents();
+            return;
+        }
 }
 
 /// What the controller holds for a field, in the field's unit.
@@ -198,6 +210,7 @@ private slots:
         auto& c = w.controller();
         NumberField* f = field(w, name);
         QVERIFY2(f, qPrintable(name));
+        showDockOf(f); // the Inspector shares its place with the Controls: its tab is clicked
         QVERIFY(f->isVisible() && f->isEnabled());
         QVERIFY(!near(held(w, name, 1), expected)); // the test would notice no change
         c.setRunning(true);

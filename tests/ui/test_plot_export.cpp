@@ -6,7 +6,7 @@
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
-#include "plots/sample_buffer.h"
+#include "simulation/sample_buffer.h"
 
 #include <qcustomplot.h>
 

@@ -7,7 +7,7 @@
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
-#include "plots/sample_buffer.h"
+#include "simulation/sample_buffer.h"
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 

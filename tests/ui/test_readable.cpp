@@ -4,11 +4,11 @@
 // in a light and a dark system palette; and where a lesson's text says a world stops, it
 // stops there and the window says why.
 
+#include "common/divergence_text.h"
 #include "common/number_format.h"
 #include "common/theme.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/divergence_banner.h"
-#include "common/divergence_text.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"
 #include "view/world_view.h"
@@ -230,7 +230,7 @@ private slots:
         QVERIFY(banner);
 
         // Step 1 says explicit Euler, the main world, stops "at about 30 s" and says why.
-        QVERIFY(w.lessonPlayer().lesson()->steps[0].text.contains(QStringLiteral("at about 30 s")));
+        QVERIFY(w.lessonPlayer().lesson()->steps[0].text.contains(u"at about 30\u00a0s"));
         stepUntilStopped(c, 31);
         const auto& d = c.world().divergence();
         QVERIFY2(d, qPrintable(QString::number(c.world().time())));

@@ -146,6 +146,16 @@ void showLive(ui::MainWindow& window, const lessons::Scene& scene)
     if (qEnvironmentVariableIsEmpty("RIGIDLAB_SOAK_SECONDS"))
         window.controller().setHistoryBudget(kTestHistoryBudget);
     window.plot(0)->setRangeMode(ui::RangeMode::WholeRun);
+    // The plots share one place in the window, behind tabs: each is floated out, so that every
+    // one is drawn as it runs (the heaviest the window gets).
+    for (int i = 0; i < ui::MainWindow::kPlotCount; ++i)
+        for (QWidget* p = window.plot(i); p; p = p->parentWidget())
+            if (auto* dock = qobject_cast<QDockWidget*>(p)) {
+                dock->setFloating(true);
+                dock->show();
+                break;
+            }
+    QCoreApplication::processEvents();
 }
 
 /// One line of the soak's progress: memory, history, contacts, bodies that left the box.
