@@ -131,12 +131,18 @@ void LessonSession::applyStep(const lessons::Lesson& lesson, int index)
 
 void LessonSession::showStepDocks(const lessons::LessonStep& step, const QStringList& labels)
 {
-    // Only what the step names: panels, plots.
+    // Only what the step names: panels, plots. Those its questions hold back stay hidden
+    // (shown and hidden again, a dock would leave the one it shares tabs with out of place).
+    const QStringList held = m_parts.player.heldBack();
     const QMap<QString, QDockWidget*>& docks = m_parts.layout.docks();
     for (auto it = docks.cbegin(); it != docks.cend(); ++it) {
         if (it.key() == QLatin1String("lesson"))
             continue;
-        it.value()->setVisible(step.panels.contains(it.key()) || step.plots.contains(it.key()));
+        const bool panel = step.panels.contains(it.key());
+        const bool plot = step.plots.contains(it.key());
+        const bool heldBack = (panel && held.contains(QStringLiteral("panel:") + it.key())) ||
+                              (plot && held.contains(QStringLiteral("plot:") + it.key()));
+        it.value()->setVisible((panel || plot) && !heldBack);
     }
     QDockWidget* compareDock = m_parts.layout.compareDock();
     delete compareDock->widget();

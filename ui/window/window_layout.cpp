@@ -17,6 +17,7 @@
 
 #include <QDockWidget>
 #include <QGuiApplication>
+#include <QLayout>
 #include <QMainWindow>
 #include <QScreen>
 #include <QSettings>
@@ -65,12 +66,18 @@ void WindowLayout::fitToScreen(const QRect& available)
     const QSize frame =
         m_window.isVisible() ? m_window.frameGeometry().size() - m_window.size() : QSize(0, 0);
     const QSize size = kPreferredSize.boundedTo(available.size() - frame);
-    if (!m_window.isFullScreen() && !m_window.isMaximized()) {
+    const bool sized = !m_window.isFullScreen() && !m_window.isMaximized();
+    if (sized) {
         m_window.resize(size);
         m_window.move(available.topLeft() + QPoint((available.width() - size.width()) / 2,
                                                    (available.height() - size.height()) / 2));
     }
     arrangeDocks(available.size());
+    // While the docks were put back one row each, their minimum heights added up and may have
+    // grown the window past the screen; tabbed, they fit again.
+    m_window.layout()->activate();
+    if (sized)
+        m_window.resize(size);
     if (QDockWidget* error = m_docks.value(QStringLiteral("errorDock")))
         ErrorPanel::placeDock(*error, available, m_compact);
 }
