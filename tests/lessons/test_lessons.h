@@ -89,4 +89,5 @@ private slots:
     void satReport();
     void satReportRejects_data();
     void satReportRejects();
+    void sweptBoundsFollowTheMotion();
 };

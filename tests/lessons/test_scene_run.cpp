@@ -6,7 +6,9 @@
 #include "format/document.h"
 #include "format/sat_report.h"
 #include "run/scene_run.h"
+#include "run/swept_bounds.h"
 
+#include "near.h"
 #include "test_main.h"
 
 #include <QDir>
@@ -234,8 +236,8 @@ void TestLessons::satReport()
     QCOMPARE(o[u"intersects"].toBool(), true);
     QVERIFY(o[u"separatingAxis"].isNull());
     QCOMPARE(o[u"axes"].toArray().size(), 8);
-    QVERIFY(isClose(o[u"depth"].toDouble(), 0.25, 1e-12));
-    QVERIFY(isClose(o[u"normal"].toArray()[0].toDouble(), 1.0, 1e-12));
+    RL_VERIFY_NEAR(o[u"depth"].toDouble(), 0.25, 1e-12, 0.0);
+    RL_VERIFY_NEAR(o[u"normal"].toArray()[0].toDouble(), 1.0, 1e-12, 0.0);
     QVERIFY(!o[u"contacts"].toArray().isEmpty());
     const QJsonObject axis = o[u"axes"].toArray()[0].toObject();
     for (const char* key : {"owner", "edge", "axis", "a", "b", "overlap"}) {
@@ -292,3 +294,42 @@ void TestLessons::satReportRejects()
 }
 
 RIGIDLAB_TEST_GUILESS_MAIN(TestLessons)
+
+/// A lesson step frames where its bodies will go: a free ball at 2 m/s for 1.5 s sweeps
+/// from x = -r to 3 + r, exactly as uniform motion says; a falling box sweeps down by g t²/2;
+/// the world itself is not stepped; a static body adds nothing.
+void TestLessons::sweptBoundsFollowTheMotion()
+{
+    physics::WorldDef def;
+    def.gravity = Vec2::Zero();
+    def.dt = 0.01;
+    physics::World world(def);
+    const double r = 0.25;
+    physics::BodyDef ball;
+    ball.shape = physics::makeCircleShape(r);
+    ball.velocity = Vec2(2.0, 0.0);
+    world.addBody(ball);
+    physics::BodyDef wall;
+    wall.type = physics::BodyType::Static;
+    wall.shape = physics::makeCircleShape(1.0);
+    wall.position = Vec2(0.0, -50.0);
+    world.addBody(wall);
+    const QRectF box = lessons::sweptBounds(world, 1.5);
+    RL_VERIFY_NEAR(box.left(), -r, 1e-9, 0.0);
+    RL_VERIFY_NEAR(box.right(), 3.0 + r, 1e-9, 0.0);
+    RL_VERIFY_NEAR(box.top(), -r, 1e-9, 0.0);
+    RL_VERIFY_NEAR(box.bottom(), r, 1e-9, 0.0);
+    QCOMPARE(world.time(), 0.0);
+
+    physics::WorldDef fallDef;
+    fallDef.dt = 0.001;
+    physics::World fall(fallDef);
+    physics::BodyDef box1;
+    box1.shape = physics::makePolygonShape(physics::makeBox(0.5, 0.5));
+    fall.addBody(box1);
+    const QRectF swept = lessons::sweptBounds(fall, 1.0);
+    const double drop = 0.5 * 9.81 * 1.0 * 1.0; // symplectic Euler adds g·dt·t/2 more
+    RL_VERIFY_NEAR(swept.top(), -0.25 - drop, 9.81 * 0.001 * 1.0, 0.0);
+    RL_VERIFY_NEAR(swept.bottom(), 0.25, 1e-12, 0.0);
+    RL_VERIFY_NEAR(swept.width(), 0.5, 1e-12, 0.0);
+}

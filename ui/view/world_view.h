@@ -56,6 +56,10 @@ public:
     /// More for Fit scene to show besides the bodies: a panel's drawing over the world, in
     /// world coordinates [m] (an empty rect when it draws nothing).
     void setFitExtra(std::function<QRectF()> extra) { m_fitExtra = std::move(extra); }
+    /// The region [m] the run's event will sweep (a lesson step's bodies from its start to its
+    /// export time): fits the view to it with the bodies, at once and whenever the view fits
+    /// again, so that the class sees the whole event. An empty rect turns it off.
+    void setActionBounds(const QRectF& worldRect);
     /// Whether loading a scene fits the view to it (the default). The scene editor turns it off
     /// while it reloads the world after each edit, so that the view holds still under the pen
     /// (nor does it widen to follow a body drawn outside what it shows).
@@ -136,6 +140,7 @@ private:
     int m_legendReserved = 0; ///< the legend's height the last fit kept free [px]
     QPoint m_lastMouse;
     std::function<QRectF()> m_fitExtra; ///< see setFitExtra
+    QRectF m_action;                    ///< see setActionBounds
     bool m_fitOnRebuild = true;         ///< see setFitOnRebuild
 };
 

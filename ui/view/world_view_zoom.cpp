@@ -56,7 +56,15 @@ QRectF WorldView::contentRect() const
     }
     if (m_fitExtra)
         box |= m_fitExtra();
+    if (!m_action.isEmpty())
+        box |= m_action;
     return box;
+}
+
+void WorldView::setActionBounds(const QRectF& worldRect)
+{
+    m_action = worldRect;
+    fitScene();
 }
 
 void WorldView::fitScene()

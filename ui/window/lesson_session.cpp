@@ -25,6 +25,7 @@
 #include "format/data_dirs.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
+#include "run/swept_bounds.h"
 
 #include <QAction>
 #include <QDockWidget>
@@ -123,10 +124,28 @@ void LessonSession::applyStep(const lessons::Lesson& lesson, int index)
     } else {
         m_parts.sat.setBodies(-1, -1);
     }
+    frameStepAction(step);
     if (!step.editor)
         m_parts.controller.setRunning(step.autoplay && !m_runHeld);
-    else
-        m_parts.view.fitScene(); // the view holds still while editing: the scene shown whole
+}
+
+void LessonSession::frameStepAction(const lessons::LessonStep& step)
+{
+    // The class sees the step's whole event, not bodies that leave the view after the hit:
+    // the view frames where the bodies will go until the step's export time. A step with the
+    // editor holds still, the scene shown whole (what will happen depends on the edits).
+    if (step.editor) {
+        m_parts.view.setActionBounds({});
+        return;
+    }
+    const SimulationController& c = m_parts.controller;
+    QRectF action = lessons::sweptBounds(c.world(), step.exportTime);
+    for (int v = 0; v < c.variantCount(); ++v) {
+        const physics::Vec2 shift = (v + 1) * c.variantOffset();
+        action |= lessons::sweptBounds(c.variant(v), step.exportTime)
+                      .translated(shift.x(), shift.y());
+    }
+    m_parts.view.setActionBounds(action);
 }
 
 void LessonSession::showStepDocks(const lessons::LessonStep& step, const QStringList& labels)
@@ -297,6 +316,7 @@ void LessonSession::leave()
     m_parts.sat.setBodies(-1, -1);
     applyHeldBack({});
     m_parts.layout.fitSideColumns();
+    m_parts.view.setActionBounds({});
 }
 
 void LessonSession::exportDialog()

@@ -85,6 +85,7 @@ signals:
 
 private:
     void applyStep(const lessons::Lesson& lesson, int index);
+    void frameStepAction(const lessons::LessonStep& step);
     void showStepDocks(const lessons::LessonStep& step, const QStringList& labels);
     void makeComparePlots(const lessons::LessonStep& step);
     void showStepOverlays(const lessons::LessonStep& step);
