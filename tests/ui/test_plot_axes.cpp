@@ -79,6 +79,7 @@ private slots:
     void niceRangeLabelsAreDistinct();
     void noisyConstantIsDrawnFlat_data();
     void noisyConstantIsDrawnFlat();
+    void tickLabelsAreFixedNotation();
     void pointsHandedToGraphStayBounded();
     void csvTimesAreStepTimes();
     void conservedMomentumIsDrawnFlat();
@@ -224,6 +225,40 @@ void TestPlotAxes::noisyConstantIsDrawnFlat()
     const QStringList labels = tickLabels(axis);
     QVERIFY2(labels.size() >= 3, qPrintable(labels.join(' ')));
     QVERIFY2(allDistinct(labels), qPrintable(labels.join(' ')));
+}
+
+/// A small quantity (a drift of 4·10⁻⁵ %) is labelled as people write it, in the window's
+/// locale, never "4E-05"; each label reads back as its tick's value.
+void TestPlotAxes::tickLabelsAreFixedNotation()
+{
+    QLocale::setDefault(QLocale(QLocale::Czech));
+    PlotWidget plot(QStringLiteral("drift"));
+    QLocale::setDefault(QLocale::c());
+    plot.resize(640, 400);
+    plot.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&plot));
+    plot.setRangeMode(RangeMode::WholeRun);
+    const int s = plot.addSeries(QStringLiteral("q"), Qt::black);
+    for (int k = 0; k <= 100; ++k)
+        plot.appendPoint(s, k * 0.01, 4e-5 * k / 100.0);
+    plot.drain();
+    plot.plot()->replot();
+    const QCPAxis* axis = plot.plot()->yAxis;
+    const QStringList labels = tickLabels(axis);
+    QVERIFY2(labels.size() >= 3, qPrintable(labels.join(' ')));
+    const QVector<double> ticks = axis->tickVector();
+    QCOMPARE(ticks.size(), labels.size());
+    const QLocale czech(QLocale::Czech);
+    for (int i = 0; i < labels.size(); ++i) {
+        QVERIFY2(!labels[i].contains(u'E') && !labels[i].contains(u'e'), qPrintable(labels[i]));
+        bool ok = false;
+        const double read = czech.toDouble(labels[i], &ok);
+        QVERIFY2(ok, qPrintable(labels[i]));
+        QVERIFY2(
+            std::abs(read - ticks[i]) <= 1e-3 * axis->range().size(),
+            qPrintable(
+                QStringLiteral("%1 reads %2, tick %3").arg(labels[i]).arg(read).arg(ticks[i])));
+    }
 }
 
 void TestPlotAxes::pointsHandedToGraphStayBounded()

@@ -7,6 +7,7 @@
 #include "common/theme.h"
 #include "plots/column_graph.h"
 #include "plots/plot_range.h"
+#include "plots/readable_ticker.h"
 
 #include <qcustomplot.h>
 
@@ -94,6 +95,7 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
     m_plot->axisRect()->setMinimumMargins(QMargins(0, 0, kRightMarginPx, 0));
 
     for (QCPAxis* axis : {m_plot->xAxis, m_plot->yAxis, m_plot->yAxis2}) {
+        axis->setTicker(QSharedPointer<QCPAxisTicker>(new ReadableTicker));
         axis->setLabelFont(sized(base, kAxisLabelPt));
         axis->setTickLabelFont(sized(base, kTickLabelPt));
     }

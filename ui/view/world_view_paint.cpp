@@ -4,9 +4,9 @@
 
 #include "view/world_view.h"
 
+#include "common/divergence_text.h"
 #include "common/number_format.h"
 #include "common/theme.h"
-#include "common/divergence_text.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"

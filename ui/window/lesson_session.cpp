@@ -142,8 +142,8 @@ void LessonSession::frameStepAction(const lessons::LessonStep& step)
     QRectF action = lessons::sweptBounds(c.world(), step.exportTime);
     for (int v = 0; v < c.variantCount(); ++v) {
         const physics::Vec2 shift = (v + 1) * c.variantOffset();
-        action |= lessons::sweptBounds(c.variant(v), step.exportTime)
-                      .translated(shift.x(), shift.y());
+        action |=
+            lessons::sweptBounds(c.variant(v), step.exportTime).translated(shift.x(), shift.y());
     }
     m_parts.view.setActionBounds(action);
 }

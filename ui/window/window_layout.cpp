@@ -26,6 +26,7 @@
 
 #include <algorithm>
 #include <array>
+#include <numeric>
 
 namespace rigidlab::ui {
 
@@ -187,18 +188,35 @@ void WindowLayout::fitSideColumns()
 void WindowLayout::shareColumnHeight()
 {
     // On a small screen the right column's kinds share its height by their weights: the
-    // controls are not squeezed to a few rows by a plot. Each kind by its dock in front.
-    QList<QDockWidget*> shown;
-    QList<int> heights;
-    for (qsizetype g = 0; g < m_rightGroups.size(); ++g)
+    // controls are not squeezed to a few rows by a plot, nor a plot by a table. Each kind by
+    // its dock in front.
+    QList<QList<QDockWidget*>> groups;
+    QList<int> weights;
+    int total = 0;
+    for (qsizetype g = 0; g < m_rightGroups.size(); ++g) {
+        QList<QDockWidget*> group;
         for (QDockWidget* d : m_rightGroups[g])
-            if (!d->isHidden() && d->geometry().right() >= 0 && d->geometry().bottom() >= 0) {
-                shown << d;
-                heights << kCompactHeightWeights[static_cast<std::size_t>(g)] * 100;
-                break;
-            }
-    if (shown.size() > 1)
-        m_window.resizeDocks(shown, heights, Qt::Vertical);
+            if (!d->isHidden() && d->geometry().right() >= 0 && d->geometry().bottom() >= 0)
+                group << d;
+        if (group.isEmpty())
+            continue;
+        total += group.first()->height();
+        groups << group;
+        weights << kCompactHeightWeights[static_cast<std::size_t>(g)];
+    }
+    if (groups.size() < 2)
+        return;
+    // In pixels that add up to the column's height as it is: resizeDocks() fits the sizes it
+    // is given into the column, and sizes adding up to more are cut from the last dock (the
+    // plots) down to its minimum, while the rest goes to an expanding table.
+    const int weightSum = std::accumulate(weights.begin(), weights.end(), 0);
+    QList<QDockWidget*> front;
+    QList<int> heights;
+    for (qsizetype g = 0; g < groups.size(); ++g) {
+        front << groups[g].first();
+        heights << total * weights[g] / weightSum;
+    }
+    m_window.resizeDocks(front, heights, Qt::Vertical);
 }
 
 void WindowLayout::save(QSettings& s) const
