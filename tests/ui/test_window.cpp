@@ -15,7 +15,9 @@
 #include <QCheckBox>
 #include <QFile>
 #include <QImage>
+#include <QLabel>
 #include <QMessageBox>
+#include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -284,6 +286,35 @@ private slots:
         }
         QImage png(dir.filePath(QStringLiteral("energy.png")));
         QVERIFY(!png.isNull());
+    }
+
+    /// A status-bar message (the editor's hint) stands alone: no label of the status line is
+    /// drawn over it, not even one shown again while the message lasts (the details turned
+    /// on), and the line comes back when the message ends.
+    void statusMessageIsNotDrawnOver()
+    {
+        MainWindow w;
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QStatusBar* bar = w.statusBar();
+        const auto drawnLabels = [bar] {
+            QStringList drawn;
+            for (const QLabel* label : bar->findChildren<QLabel*>())
+                if (label->isVisible() && !label->text().isEmpty())
+                    drawn << label->text();
+            return drawn;
+        };
+        QVERIFY(!drawnLabels().isEmpty());
+        bar->showMessage(QStringLiteral("a hint for the editor"));
+        QAction* details = w.findChild<QAction*>(QStringLiteral("statusDetails"));
+        QVERIFY(details);
+        details->setChecked(!details->isChecked());
+        w.controller().stepForward();
+        QCoreApplication::processEvents();
+        QVERIFY2(drawnLabels().isEmpty(), qPrintable(drawnLabels().join(QStringLiteral(" | "))));
+        bar->clearMessage();
+        QCoreApplication::processEvents();
+        QVERIFY(drawnLabels().join(u' ').contains(QStringLiteral("t =")));
     }
 };
 

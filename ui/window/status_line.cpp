@@ -58,6 +58,17 @@ StatusLine::StatusLine(QMainWindow& window, SimulationController& controller, Wo
     bar->addWidget(separator(QStringLiteral("statusDetailsSeparator")));
     bar->addWidget(m_details);
     bar->addPermanentWidget(m_slow);
+    // A message (the editor's hint, a refusal) takes the line's place while it lasts. The
+    // status bar hides its widgets only if they are visible at that moment, so a label shown
+    // again later, or one not yet on screen, would be drawn over the message.
+    connect(bar, &QStatusBar::messageChanged, this, [this](const QString& message) {
+        m_messageShown = !message.isEmpty();
+        for (QLabel* label : {m_time, m_rate, m_drift})
+            label->setVisible(!m_messageShown);
+        for (auto* dot : m_window.findChildren<QLabel*>(QStringLiteral("statusSeparator")))
+            dot->setVisible(!m_messageShown);
+        setDetailsShown(!m_presentation);
+    });
 
     // The timings are for whoever tunes the engine, not for the class: off unless asked for.
     const QString key = QStringLiteral("status/details");
@@ -147,8 +158,7 @@ QString StatusLine::driftText(bool brief) const
     // Drift is the numerical error alone: what contacts, friction, drag and dampers took is
     // physics, said apart. The label says whose error (drift_words.h).
     // In short (`brief`) on a projector: the line must fit 1024 pixels at the larger size.
-    QString drift =
-        driftLabel(brief).arg(driftPercentText(m_controller.driftPercent(), locale));
+    QString drift = driftLabel(brief).arg(driftPercentText(m_controller.driftPercent(), locale));
     const double lost = m_controller.dissipated();
     if (std::abs(lost) > 1e-9)
         drift += (brief ? tr(" · dissipated %1 J")
@@ -223,7 +233,8 @@ void StatusLine::setPresentation(bool on)
 void StatusLine::setDetailsShown(bool shown)
 {
     // Presentation mode hides them whatever View › Status details says.
-    m_details->setVisible(shown && m_detailsAction->isChecked() && !m_presentation);
+    m_details->setVisible(shown && m_detailsAction->isChecked() && !m_presentation &&
+                          !m_messageShown);
     if (auto* dot = m_window.findChild<QLabel*>(QStringLiteral("statusDetailsSeparator")))
         dot->setVisible(!m_details->isHidden());
 }

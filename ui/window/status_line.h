@@ -46,6 +46,7 @@ private:
     SimulationController& m_controller;
     WorldView& m_view;
     bool m_presentation = false;
+    bool m_messageShown = false; ///< a status-bar message stands in the line's place
     QSlider* m_timeline = nullptr;
     QLabel* m_timeLabel = nullptr;
     QLabel* m_time = nullptr;
