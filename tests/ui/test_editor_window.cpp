@@ -40,6 +40,7 @@ private slots:
     void lessonStepBuiltInTheEditorIsJudged();
     void lessonLocksProperties();
     void lessonLocksTheArrowAndTheColour();
+    void returnHandsTheKeyboardBackToTheScene();
 };
 
 namespace {
@@ -481,6 +482,51 @@ void TestEditorWindow::lessonLocksTheArrowAndTheColour()
     QVERIFY(rig.properties.findChild<QWidget*>(QStringLiteral("colourPick"))->isEnabled());
     rig.drag(from, from + QPoint(60, -40));
     QVERIFY(rig.body("circle1").velocity.norm() > 0.0);
+}
+
+// A value typed into a property and taken with Return hands the keyboard back to the scene:
+// Ctrl+Z then undoes the edit (it does not go into the field), and the tools' keys act.
+void TestEditorWindow::returnHandsTheKeyboardBackToTheScene()
+{
+    MainWindow w;
+    w.resize(1024, 768);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowActive(&w));
+    QVERIFY(w.newScene());
+    EditTools& tools = w.editTools();
+    WorldView& view = w.view();
+    const double g = tools.gridStep();
+    const auto px = [&view, g](double x, double y) {
+        return view.mapFromScene(QPointF(x * g, y * g));
+    };
+    tools.toolAction(EditTool::Circle)->trigger();
+    QTest::mousePress(view.viewport(), Qt::LeftButton, {}, px(-2, 3));
+    QTest::mouseMove(view.viewport(), px(-1.5, 3));
+    QTest::mouseMove(view.viewport(), px(-1, 3));
+    QTest::mouseRelease(view.viewport(), Qt::LeftButton, {}, px(-1, 3));
+    const auto circle = w.document()->scene().bodyIndex(QStringLiteral("circle1"));
+    QVERIFY(circle);
+    const lessons::Scene drawn = w.document()->scene();
+    auto* properties = w.findChild<QDockWidget*>(QStringLiteral("propertiesDock"));
+    QVERIFY(properties);
+    properties->show();
+    properties->raise();
+    auto* friction = properties->findChild<NumberField*>(QStringLiteral("friction"));
+    QVERIFY(friction);
+    friction->setFocus(Qt::TabFocusReason);
+    QCoreApplication::processEvents();
+    QVERIFY(friction->hasFocus());
+    friction->selectAll();
+    QTest::keyClicks(friction, QStringLiteral("0.45"));
+    QTest::keyClick(friction, Qt::Key_Return);
+    QCOMPARE(w.document()->scene().bodies[static_cast<size_t>(*circle)].friction, 0.45);
+    QVERIFY2(view.hasFocus(),
+             qPrintable(QApplication::focusWidget() ? QApplication::focusWidget()->objectName()
+                                                    : QStringLiteral("nothing")));
+    // Ctrl+Z on the keyboard, where the focus is now: the edit goes, the field shows it.
+    QTest::keyClick(QApplication::focusWidget(), Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(difference(w.document()->scene(), drawn), QString());
+    QCOMPARE(w.document()->scene().bodies.size(), drawn.bodies.size());
 }
 
 RIGIDLAB_TEST_MAIN(TestEditorWindow)
