@@ -130,6 +130,12 @@ void showContentIfInSight(QDockWidget& dock)
     if (content->isHidden() == behind)
         return;
     const bool hadFocus = content->isAncestorOf(QApplication::focusWidget());
+    // Hidden, the content keeps its place in the dock's layout: a dock shrunk to its title
+    // bar would cap the height of the whole tab group (to its minimum) and leave the column's
+    // height to the other docks.
+    QSizePolicy policy = content->sizePolicy();
+    policy.setRetainSizeWhenHidden(true);
+    content->setSizePolicy(policy);
     content->setVisible(!behind);
     if (behind && hadFocus && dock.parentWidget())
         dock.parentWidget()->setFocus(Qt::OtherFocusReason);
