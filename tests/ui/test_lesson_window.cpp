@@ -103,7 +103,7 @@ private slots:
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         int steps = 0;
-        QStringList outside;   // every body out of sight, of every step, said at the end
+        QStringList outside; // every body out of sight, of every step, said at the end
         rigidlab::test::visitShippedSteps(w, [&](const QString& path, int index,
                                                  const lessons::LessonStep& step) {
             ++steps;
@@ -158,6 +158,44 @@ private slots:
         for (const QString& line : outside)
             qInfo("%s", qPrintable(line)); // the failure message below is cut short
         QVERIFY2(outside.isEmpty(), qPrintable(outside.join(u'\n')));
+    }
+
+    /// At 1024×768 the right column's kinds share its height: with the controls and inspector, the
+    /// collision table and a plot all shown, none is squeezed to a few rows (each has at least a
+    /// fifth of the column), whatever hides behind their tabs.
+    void rightColumnIsShared()
+    {
+        MainWindow w;
+        w.fitToScreen(QRect(0, 0, 1024, 768));
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QCOMPARE(w.openLesson(
+                     QDir(MainWindow::lessonsFolder()).filePath(QStringLiteral("restitution.json")),
+                     true),
+                 QString());
+        w.lessonPlayer().goToStep(2); // the collision table and two plots
+        for (const char* name : {"controls", "inspector", "collision"})
+            if (QDockWidget* dock = w.dock(QLatin1String(name)); dock && dock->isHidden())
+                dock->toggleViewAction()->trigger(); // as ticked in the View menu
+        for (int i = 0; i < 5; ++i)                  // the layout's queued passes
+            QCoreApplication::processEvents();
+        QList<QDockWidget*> column;
+        int total = 0;
+        for (QDockWidget* d : w.findChildren<QDockWidget*>())
+            if (d->isVisible() && w.dockWidgetArea(d) == Qt::RightDockWidgetArea &&
+                d->geometry().right() >= 0 && d->geometry().bottom() >= 0) {
+                column << d;
+                total += d->height();
+            }
+        QStringList names;
+        for (QDockWidget* d : column)
+            names << d->objectName();
+        QVERIFY2(column.size() >= 3, qPrintable(names.join(u' ')));
+        for (QDockWidget* d : column)
+            QVERIFY2(d->height() >= total / 5, qPrintable(QStringLiteral("%1: %2 px of %3")
+                                                              .arg(d->objectName())
+                                                              .arg(d->height())
+                                                              .arg(total)));
     }
 
     /// The questions sit below a long text in a short dock: after Check, the verdict is
