@@ -43,6 +43,9 @@ constexpr double kRightShare = 0.22;
 /// How the right column's height is shared on a small screen, by kind: the controls and the
 /// inspector (the most rows), the tables, the plots.
 constexpr std::array<int, 3> kCompactHeightWeights{5, 4, 4};
+/// The same in presentation mode, where the type is large: a plot needs the most height to
+/// keep its legend and both axes readable; the controls and tables scroll.
+constexpr std::array<int, 3> kPresentationHeightWeights{3, 3, 5};
 /// The side columns' widths where there is room [px].
 constexpr int kLeftWidth = 400;
 constexpr int kRightWidth = 480;
@@ -202,7 +205,8 @@ void WindowLayout::shareColumnHeight()
             continue;
         total += group.first()->height();
         groups << group;
-        weights << kCompactHeightWeights[static_cast<std::size_t>(g)];
+        weights << (m_presentation ? kPresentationHeightWeights
+                                   : kCompactHeightWeights)[static_cast<std::size_t>(g)];
     }
     if (groups.size() < 2)
         return;
