@@ -125,7 +125,6 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
     m_followButton->setVisible(false);
     m_followButton->raise();
     connect(m_followButton, &QToolButton::clicked, this, &PlotWidget::follow);
-
     m_plot->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(m_plot, &QWidget::customContextMenuRequested, this, &PlotWidget::showContextMenu);
 
