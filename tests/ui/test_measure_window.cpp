@@ -249,10 +249,24 @@ void TestMeasureWindow::overlayOnPlotsAndTrailInTheScene()
     const measure::Series& x = *session.measurement().find(Quantity::X);
     RL_VERIFY_NEAR(trail.points()[5].x(), x.value[5], 0, 0);
     RL_VERIFY_NEAR(trail.points()[5].y(), y.value[5], 0, 0);
-    // Hiding the residuals hides their plot.
+    // File › Export plot offers both, as it offers the other plots on screen.
+    auto* exportMenu = w.findChild<QMenu*>(QStringLiteral("exportMenu"));
+    QVERIFY(exportMenu);
+    const auto offered = [&] {
+        emit exportMenu->aboutToShow();
+        QStringList texts;
+        for (const QAction* a : exportMenu->actions())
+            texts << a->text();
+        return texts;
+    };
+    QVERIFY2(offered().contains(plot.title()), qPrintable(offered().join(u'|')));
+    QVERIFY(offered().contains(panel.residualPlot()->title()));
+    // Hiding the residuals hides their plot, and Export plot no longer offers it.
     w.show();
     panel.residualsShown()->setChecked(false);
     QVERIFY(panel.residualPlot()->isHidden());
+    QVERIFY(!offered().contains(panel.residualPlot()->title()));
+    QVERIFY(offered().contains(plot.title()));
 }
 
 void TestMeasureWindow::residualsAreMeasuredMinusSimulated()

@@ -207,6 +207,13 @@ void MeasurementPanel::clearPlots()
     m_residual->clear();
 }
 
+std::vector<PlotWidget*> MeasurementPanel::plotsShown() const
+{
+    if (m_showResiduals->isChecked())
+        return {m_comparison, m_residual};
+    return {m_comparison};
+}
+
 std::vector<int> MeasurementPanel::fitChoices() const
 {
     std::vector<int> chosen;

@@ -49,6 +49,8 @@ public:
     PlotWidget* comparisonPlot() const { return m_comparison; }
     PlotWidget* residualPlot() const { return m_residual; }
     QCheckBox* residualsShown() const { return m_showResiduals; }
+    /// The comparison, and the residuals unless hidden: what File › Export plot offers.
+    std::vector<PlotWidget*> plotsShown() const;
     QLabel* message() const { return m_message; }
 
     // The fit.

@@ -174,6 +174,11 @@ QList<PlotWidget*> MainWindow::plotsOnScreen() const
     if (!m_layout->compareDock()->isHidden())
         for (PlotWidget* plot : m_session->comparePlots())
             plots << plot;
+    // An imported measurement's comparison and residuals, as its dock shows them.
+    if (QDockWidget* dock = m_layout->dock(QStringLiteral("measurement"));
+        dock && !dock->isHidden())
+        for (PlotWidget* plot : m_measurement->panel()->plotsShown())
+            plots << plot;
     return plots;
 }
 
