@@ -2887,6 +2887,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Fit the initial velocity vy</source>
         <translation>Určit z&#xa0;měření počáteční rychlost vy</translation>
     </message>
+    <message>
+        <source>No measurement yet: File › Import measurement… (%1), or drop a CSV file on the window.</source>
+        <translation>Zatím žádné měření: Soubor › Importovat měření… (%1), nebo přetáhněte soubor CSV do okna.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementSession</name>

@@ -478,6 +478,10 @@ void TestMeasureWindow::controlsAreNamedAndReachable()
         if (menu->menu() && menu->menu()->actions().contains(import))
             inFileMenu = true;
     QVERIFY(inFileMenu);
+    // Before anything is imported, the dock (View › Measurement) says how to import.
+    QVERIFY2(session.panel()->findChild<QLabel*>()->text().contains(
+                 import->shortcut().toString(QKeySequence::NativeText)),
+             qPrintable(session.panel()->findChild<QLabel*>()->text()));
     QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
     MeasurementImportDialog dialog(sample("ball_tracker.csv"));
     for (QWidget* root : {static_cast<QWidget*>(session.panel()), static_cast<QWidget*>(&dialog)}) {

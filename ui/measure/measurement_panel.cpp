@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "measure/measurement_panel.h"
 
+#include "common/shortcuts.h"
 #include "measure/import_dialog.h"
 #include "plots/plot_widget.h"
 
@@ -41,6 +42,10 @@ MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
     m_source = new QLabel(this);
     m_source->setWordWrap(true);
     m_source->setAccessibleName(tr("Measurement imported"));
+    // Shown in the View menu (and restored with the layout) before anything is imported.
+    m_source->setText(tr("No measurement yet: File › Import measurement… (%1), or drop a CSV "
+                         "file on the window.")
+                          .arg(controlKeysText("importMeasurement")));
     layout->addWidget(m_source);
 
     auto* form = new QFormLayout;
