@@ -149,6 +149,19 @@ void TestMeasureWindow::dialogMapsColumnsUnitsAndOffsets()
 
 void TestMeasureWindow::dialogRemembersTheMapping()
 {
+    // A file of many columns: the dialog still fits a 1024×768 projector (its columns scroll).
+    QByteArray wide = "t";
+    QByteArray row = "0";
+    for (int c = 1; c < 40; ++c) {
+        wide += ",c" + QByteArray::number(c);
+        row += "," + QByteArray::number(c);
+    }
+    const QString widePath =
+        write(m_dir, QStringLiteral("wide.csv"), wide + "\n" + row + "\n0.1," + row.mid(2) + "\n");
+    MeasurementImportDialog many(widePath);
+    QVERIFY(many.mappingBox(39) != nullptr);
+    RL_VERIFY_AT_MOST(many.sizeHint().height(), 700);
+
     {
         MeasurementImportDialog d(sample("ball_plain.csv"));
         QCOMPARE(d.mappingBox(1)->currentData().toInt(), static_cast<int>(Quantity::Y));

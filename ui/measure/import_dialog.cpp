@@ -13,6 +13,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSettings>
 #include <QTableWidget>
 #include <QVBoxLayout>
@@ -30,6 +31,8 @@ constexpr Quantity kQuantities[] = {Quantity::Ignored, Quantity::Time,      Quan
                                     Quantity::Speed,   Quantity::BounceTime};
 /// Rows of the preview: enough to check the units, few enough to fit a small screen.
 constexpr int kPreviewRows = 8;
+/// Height of the list of columns before it scrolls [px].
+constexpr int kColumnsMaxHeightPx = 180;
 /// Offsets a file may need [s], [m]: a video's time zero, an origin anywhere on a table.
 constexpr double kOffsetLimit = 1e5;
 
@@ -135,9 +138,18 @@ MeasurementImportDialog::MeasurementImportDialog(const QString& path, QWidget* p
     m_message->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
     m_message->setAccessibleName(tr("What the file holds, or what is wrong with it"));
     if (m_table.ok) {
-        auto* grid = new QGridLayout;
+        // The columns scroll: a file may have dozens (a phone's every sensor), the dialog
+        // must still fit a projector's 768 px.
+        auto* columns = new QWidget;
+        auto* grid = new QGridLayout(columns);
         buildColumns(*grid);
-        layout->addLayout(grid);
+        auto* scroll = new QScrollArea(this);
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        scroll->setWidget(columns);
+        scroll->setMaximumHeight(kColumnsMaxHeightPx);
+        scroll->setMinimumHeight(std::min(kColumnsMaxHeightPx, columns->sizeHint().height()));
+        layout->addWidget(scroll);
         auto* form = new QFormLayout;
         buildOffsets(*form);
         layout->addLayout(form);
