@@ -285,6 +285,18 @@
         <source>Help: this list of keys and mouse actions</source>
         <translation>Nápověda: tento přehled kláves a&#xa0;ovládání myší</translation>
     </message>
+    <message>
+        <source>Import a measurement (CSV) to compare and fit</source>
+        <translation>Importovat měření (CSV) k&#xa0;porovnání a&#xa0;určení parametrů</translation>
+    </message>
+    <message>
+        <source>Drop a CSV file on the window</source>
+        <translation>Přetáhnout soubor CSV do okna</translation>
+    </message>
+    <message>
+        <source>Import it as a measurement</source>
+        <translation>Importovat ho jako měření</translation>
+    </message>
 </context>
 <context>
     <name>DivergenceWords</name>
@@ -1350,6 +1362,10 @@
     <message>
         <source>the editor on a new scene</source>
         <translation>editor s&#xa0;novou scénou</translation>
+    </message>
+    <message>
+        <source>a measured drop over the simulated one, the residuals and e fitted to it</source>
+        <translation>naměřený pád přes simulovaný, rezidua a&#xa0;e určené z&#xa0;měření</translation>
     </message>
 </context>
 <context>
@@ -2607,6 +2623,343 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::MeasurementImportDialog</name>
+    <message>
+        <source>not used</source>
+        <translation>nepoužít</translation>
+    </message>
+    <message>
+        <source>time t [s]</source>
+        <translation>čas t [s]</translation>
+    </message>
+    <message>
+        <source>position x [m]</source>
+        <translation>poloha x [m]</translation>
+    </message>
+    <message>
+        <source>position y (height) [m]</source>
+        <translation>poloha y (výška) [m]</translation>
+    </message>
+    <message>
+        <source>velocity vx [m/s]</source>
+        <translation>rychlost vx [m/s]</translation>
+    </message>
+    <message>
+        <source>velocity vy [m/s]</source>
+        <translation>rychlost vy [m/s]</translation>
+    </message>
+    <message>
+        <source>speed v [m/s]</source>
+        <translation>velikost rychlosti v&#xa0;[m/s]</translation>
+    </message>
+    <message>
+        <source>bounce times [s]</source>
+        <translation>časy odrazů [s]</translation>
+    </message>
+    <message>
+        <source>Import measurement</source>
+        <translation>Import měření</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Soubor</translation>
+    </message>
+    <message>
+        <source>What the file holds, or what is wrong with it</source>
+        <translation>Co soubor obsahuje, nebo co je v&#xa0;něm špatně</translation>
+    </message>
+    <message>
+        <source>Preview: the first points in the lab&apos;s units</source>
+        <translation>Náhled: první body v&#xa0;jednotkách laboratoře</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <translation>Importovat</translation>
+    </message>
+    <message>
+        <source>Column</source>
+        <translation>Sloupec</translation>
+    </message>
+    <message>
+        <source>holds</source>
+        <translation>obsahuje</translation>
+    </message>
+    <message>
+        <source>column %1</source>
+        <translation>sloupec %1</translation>
+    </message>
+    <message>
+        <source>What column %1 holds</source>
+        <translation>Co obsahuje sloupec %1</translation>
+    </message>
+    <message>
+        <source>as the header says (else s)</source>
+        <translation>podle hlavičky (jinak s)</translation>
+    </message>
+    <message>
+        <source>Unit of the times in the file</source>
+        <translation>Jednotka časů v&#xa0;souboru</translation>
+    </message>
+    <message>
+        <source>as the header says (else m)</source>
+        <translation>podle hlavičky (jinak m)</translation>
+    </message>
+    <message>
+        <source>Unit of the lengths in the file</source>
+        <translation>Jednotka délek v&#xa0;souboru</translation>
+    </message>
+    <message>
+        <source>Time zero: the file&apos;s time at which the scene starts</source>
+        <translation>Počátek času: čas v&#xa0;souboru, kdy scéna začíná</translation>
+    </message>
+    <message>
+        <source>Origin x: where the scene&apos;s origin is in the file</source>
+        <translation>Počátek x: kde v&#xa0;souboru leží počátek scény</translation>
+    </message>
+    <message>
+        <source>Origin y: where the scene&apos;s origin is in the file</source>
+        <translation>Počátek y: kde v&#xa0;souboru leží počátek scény</translation>
+    </message>
+    <message>
+        <source>Time &amp;unit:</source>
+        <translation>&amp;Jednotka času:</translation>
+    </message>
+    <message>
+        <source>&amp;Length unit:</source>
+        <translation>Jednotka &amp;délky:</translation>
+    </message>
+    <message>
+        <source>Time &amp;zero (file time at the scene&apos;s start):</source>
+        <translation>&amp;Počátek času (čas v&#xa0;souboru na začátku scény):</translation>
+    </message>
+    <message>
+        <source>Scene origin in the file, &amp;x:</source>
+        <translation>Počátek scény v&#xa0;souboru, &amp;x:</translation>
+    </message>
+    <message>
+        <source>Scene origin in the file, &amp;y:</source>
+        <translation>Počátek scény v&#xa0;souboru, &amp;y:</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n bounce time(s)</source>
+        <translation>
+            <numerusform>%n čas odrazu</numerusform>
+            <numerusform>%n časy odrazů</numerusform>
+            <numerusform>%n časů odrazů</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n bod</numerusform>
+            <numerusform>%n body</numerusform>
+            <numerusform>%n bodů</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s) before time zero left out</source>
+        <translation>
+            <numerusform>%n řádek před počátkem času vynechán</numerusform>
+            <numerusform>%n řádky před počátkem času vynechány</numerusform>
+            <numerusform>%n řádků před počátkem času vynecháno</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::MeasurementPanel</name>
+    <message>
+        <source>Measurement imported</source>
+        <translation>Importované měření</translation>
+    </message>
+    <message>
+        <source>Body the measurement is compared with</source>
+        <translation>Těleso, se kterým se měření porovnává</translation>
+    </message>
+    <message>
+        <source>Measured quantity compared</source>
+        <translation>Porovnávaná měřená veličina</translation>
+    </message>
+    <message>
+        <source>&amp;Body:</source>
+        <translation>&amp;Těleso:</translation>
+    </message>
+    <message>
+        <source>&amp;Quantity:</source>
+        <translation>&amp;Veličina:</translation>
+    </message>
+    <message>
+        <source>Measured and simulated</source>
+        <translation>Naměřené a&#xa0;simulované</translation>
+    </message>
+    <message>
+        <source>Plot: measured points and the simulated line</source>
+        <translation>Graf: naměřené body a&#xa0;simulovaná čára</translation>
+    </message>
+    <message>
+        <source>measured</source>
+        <translation>naměřené</translation>
+    </message>
+    <message>
+        <source>simulated</source>
+        <translation>simulované</translation>
+    </message>
+    <message>
+        <source>Residuals: measured − simulated</source>
+        <translation>Rezidua: naměřené − simulované</translation>
+    </message>
+    <message>
+        <source>Plot: residuals, measured minus simulated</source>
+        <translation>Graf: rezidua, naměřené minus simulované</translation>
+    </message>
+    <message>
+        <source>measured − simulated</source>
+        <translation>naměřené − simulované</translation>
+    </message>
+    <message>
+        <source>Why the simulation cannot be compared</source>
+        <translation>Proč simulaci nelze porovnat</translation>
+    </message>
+    <message>
+        <source>Fit to the measurement</source>
+        <translation>Určení z&#xa0;měření</translation>
+    </message>
+    <message>
+        <source>F&amp;it</source>
+        <translation>&amp;Určit z&#xa0;měření</translation>
+    </message>
+    <message>
+        <source>Fit the ticked parameters to the measurement</source>
+        <translation>Určit zaškrtnuté parametry z&#xa0;měření metodou nejmenších čtverců</translation>
+    </message>
+    <message>
+        <source>&amp;Apply to scene</source>
+        <translation>&amp;Použít ve scéně</translation>
+    </message>
+    <message>
+        <source>Apply the fitted values to the scene (can be undone)</source>
+        <translation>Použít určené hodnoty ve scéně (lze vrátit)</translation>
+    </message>
+    <message>
+        <source>Fitted values</source>
+        <translation>Určené hodnoty</translation>
+    </message>
+    <message>
+        <source>e from the bounce times</source>
+        <translation>e z&#xa0;časů odrazů</translation>
+    </message>
+    <message>
+        <source>Apply &amp;e from the bounce times</source>
+        <translation>Použít &amp;e z&#xa0;časů odrazů</translation>
+    </message>
+    <message>
+        <source>Show &amp;residuals</source>
+        <translation>Zobrazit &amp;rezidua</translation>
+    </message>
+    <message>
+        <source>&amp;e (restitution)</source>
+        <translation>&amp;e (restituce)</translation>
+    </message>
+    <message>
+        <source>&amp;μ (friction)</source>
+        <translation>&amp;μ (tření)</translation>
+    </message>
+    <message>
+        <source>initial v&amp;x</source>
+        <translation>počáteční v&amp;x</translation>
+    </message>
+    <message>
+        <source>initial v&amp;y</source>
+        <translation>počáteční v&amp;y</translation>
+    </message>
+    <message>
+        <source>Fit the coefficient of restitution e</source>
+        <translation>Určit z&#xa0;měření koeficient restituce e</translation>
+    </message>
+    <message>
+        <source>Fit the friction coefficient μ</source>
+        <translation>Určit z&#xa0;měření součinitel tření μ</translation>
+    </message>
+    <message>
+        <source>Fit the initial velocity vx</source>
+        <translation>Určit z&#xa0;měření počáteční rychlost vx</translation>
+    </message>
+    <message>
+        <source>Fit the initial velocity vy</source>
+        <translation>Určit z&#xa0;měření počáteční rychlost vy</translation>
+    </message>
+    <message>
+        <source>No measurement yet: File › Import measurement… (%1), or drop a CSV file on the window.</source>
+        <translation>Zatím žádné měření: Soubor › Importovat měření… (%1), nebo přetáhněte soubor CSV do okna.</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::MeasurementSession</name>
+    <message>
+        <source>&amp;Import measurement…</source>
+        <translation>&amp;Importovat měření…</translation>
+    </message>
+    <message>
+        <source>Read a measured time series (Tracker, phyphox or plain CSV) to compare the scene with and fit it to</source>
+        <translation>Načíst naměřenou časovou řadu (CSV z&#xa0;Trackeru, z&#xa0;phyphoxu nebo prosté) k&#xa0;porovnání se scénou a&#xa0;k&#xa0;určení jejích parametrů</translation>
+    </message>
+    <message>
+        <source>Import measurement</source>
+        <translation>Import měření</translation>
+    </message>
+    <message>
+        <source>Measurements (*.csv *.txt *.tsv);;All files (*)</source>
+        <translation>Měření (*.csv *.txt *.tsv);;Všechny soubory (*)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n point(s) of %2</source>
+        <translation>
+            <numerusform>%1: %2, %n bod</numerusform>
+            <numerusform>%1: %2, %n body</numerusform>
+            <numerusform>%1: %2, %n bodů</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Import a measurement of a position or velocity first.</source>
+        <translation>Nejprve importujte měření polohy nebo rychlosti.</translation>
+    </message>
+    <message>
+        <source>Tick a parameter to fit.</source>
+        <translation>Zaškrtněte parametr, který se má určit.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Residual RMS: %1 over %n point(s)</source>
+        <translation>
+            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
+            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
+            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Fit first: there are no fitted values to apply.</source>
+        <translation>Nejprve parametry určete: zatím nejsou žádné hodnoty k&#xa0;použití.</translation>
+    </message>
+    <message>
+        <source>Apply fitted values</source>
+        <translation>Použití určených hodnot</translation>
+    </message>
+    <message>
+        <source>There is no e from bounce times to apply.</source>
+        <translation>Není žádné e z&#xa0;časů odrazů, které by šlo použít.</translation>
+    </message>
+    <message>
+        <source>Apply e from the bounce times</source>
+        <translation>Použití e z&#xa0;časů odrazů</translation>
+    </message>
+    <message>
+        <source>%1 = %2%3 (95&#xa0;%)</source>
+        <translation>%1 = %2%3 (95&#xa0;%)</translation>
+    </message>
+    <message>
+        <source>From the bounce times alone: e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
+        <translation>Jen z&#xa0;časů odrazů: e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::NumberField</name>
     <message>
         <source>%1 %2</source>
@@ -3199,6 +3552,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Lesson</source>
         <translation>Lekce</translation>
+    </message>
+    <message>
+        <source>Measurement</source>
+        <translation>Měření</translation>
     </message>
 </context>
 <context>

@@ -22,6 +22,47 @@
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::MeasurementImportDialog</name>
+    <message numerus="yes">
+        <source>%n bounce time(s)</source>
+        <translation>
+            <numerusform>%n bounce time</numerusform>
+            <numerusform>%n bounce times</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n point(s)</source>
+        <translation>
+            <numerusform>%n point</numerusform>
+            <numerusform>%n points</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n row(s) before time zero left out</source>
+        <translation>
+            <numerusform>%n row before time zero left out</numerusform>
+            <numerusform>%n rows before time zero left out</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::MeasurementSession</name>
+    <message numerus="yes">
+        <source>%1: %n point(s) of %2</source>
+        <translation>
+            <numerusform>%1: %n point of %2</numerusform>
+            <numerusform>%1: %n points of %2</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Residual RMS: %1 over %n point(s)</source>
+        <translation>
+            <numerusform>Residual RMS: %1 over %n point</numerusform>
+            <numerusform>Residual RMS: %1 over %n points</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::SimulationController</name>
     <message numerus="yes">
         <source>%n iteration(s)</source>

@@ -41,7 +41,8 @@ foreach(file
         share/man/man1/rigidlab.1.gz share/man/man1/rigidlab-cli.1.gz
         share/doc/rigidlab/README.md share/doc/rigidlab/LICENSE share/doc/rigidlab/copyright
         share/doc/rigidlab/SCENE_FORMAT.md share/doc/rigidlab/LESSON_FORMAT.md
-        share/rigidlab/scenes/welcome.json)
+        share/rigidlab/scenes/welcome.json
+        share/rigidlab/measure/samples/ball_tracker.csv)
     if(NOT EXISTS ${root}/${file})
         fail("${file} is not installed")
     endif()

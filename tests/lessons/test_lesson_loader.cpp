@@ -197,14 +197,16 @@ void TestLesson::shippedLessonsInTeachingOrder()
     for (std::size_t i = 1; i < entries.size(); ++i)
         QVERIFY2(entries[i - 1].order < entries[i].order, qPrintable(entries[i].path));
     // The teaching order: how a step works first, then collisions, their detection, stacks,
-    // stiffness, and the billiards break that puts collisions and momentum together.
+    // stiffness, the billiards break that puts collisions and momentum together, and last the
+    // lab checked against a measurement.
     QStringList names;
     for (const lessons::LessonEntry& e : entries)
         names << QFileInfo(e.path).baseName();
     const QStringList expected{
-        QStringLiteral("energy_drift"),    QStringLiteral("restitution"),
-        QStringLiteral("separating_axis"), QStringLiteral("stacks"),
-        QStringLiteral("stiff_springs"),   QStringLiteral("billiards_momentum")};
+        QStringLiteral("energy_drift"),      QStringLiteral("restitution"),
+        QStringLiteral("separating_axis"),   QStringLiteral("stacks"),
+        QStringLiteral("stiff_springs"),     QStringLiteral("billiards_momentum"),
+        QStringLiteral("lab_vs_measurement")};
     QCOMPARE(names, expected);
     // The menu line: number, title, description and time, each as the file gives it.
     const lessons::LessonEntry& first = entries.front();

@@ -87,6 +87,8 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "Save the scene under another name")},
     ControlInfo{"openLesson", "Ctrl+L", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Open a lesson")},
+    ControlInfo{"importMeasurement", "Ctrl+I", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Import a measurement (CSV) to compare and fit")},
     ControlInfo{"quit", "Ctrl+Q", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Quit RigidLab")},
     ControlInfo{"help", "F1", nullptr,
@@ -99,6 +101,8 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "Pan the view")},
     ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Mouse wheel"),
                 QT_TRANSLATE_NOOP("Controls", "Zoom about the pointer")},
+    ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Drop a CSV file on the window"),
+                QT_TRANSLATE_NOOP("Controls", "Import it as a measurement")},
     ControlInfo{{}, nullptr, QT_TRANSLATE_NOOP("Controls", "Drag the timeline"),
                 QT_TRANSLATE_NOOP("Controls", "Go back to any earlier moment of the run")},
 };

@@ -225,8 +225,8 @@ void drawPoints(const std::vector<PlotPoint>& points, ColumnGraph* graph, double
     const bool log = logKeys && from > 0 && to > from;
     // A few points are drawn as they are (with their markers, if any). More go by pixel
     // column: spread over the few columns of a run's first second, 200 points of a zigzag
-    // cost as much as 2000.
-    if (count <= kFewPoints || !(to > from)) {
+    // cost as much as 2000. Markers without a line (measured points) are each a point.
+    if (count <= kFewPoints || !(to > from) || graph->lineStyle() == QCPGraph::lsNone) {
         drawAsTheyAre(begin, end, graph);
         return;
     }

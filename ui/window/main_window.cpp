@@ -9,6 +9,8 @@
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
+#include "measure/measurement_panel.h"
+#include "measure/measurement_session.h"
 #include "panels/control_panel.h"
 #include "panels/divergence_banner.h"
 #include "panels/error_panel.h"
@@ -63,7 +65,10 @@ MainWindow::MainWindow(QWidget* parent)
     panels.bounces = m_bounces;
     panels.collision = m_collision;
     panels.error = new ErrorPanel(this);
+    m_measurement = new MeasurementSession(*this, *m_view, *m_document);
+    panels.measurement = m_measurement->panel();
     m_layout = new WindowLayout(*this, panels);
+    m_measurement->setDock(m_layout->dock(QStringLiteral("measurement")));
     m_status = new StatusLine(*this, *m_controller, *m_view);
     m_documents = new WindowDocuments(*this, *m_document);
     buildEditor();
@@ -93,6 +98,7 @@ void MainWindow::wirePanels()
     connect(m_controls, &ControlPanel::inputRefused, bar, showRefusal);
     connect(m_inspector, &InspectorPanel::inputRefused, bar, showRefusal);
     connect(m_documents, &WindowDocuments::message, bar, &QStatusBar::showMessage);
+    connect(m_measurement, &MeasurementSession::message, bar, &QStatusBar::showMessage);
     connect(m_session, &LessonSession::runHeldChanged, this,
             [this](bool held) { m_actions->setRunState(m_editTools->editing(), held); });
     connect(m_session, &LessonSession::left, this, &MainWindow::showSceneTitle);
@@ -167,6 +173,11 @@ QList<PlotWidget*> MainWindow::plotsOnScreen() const
             plots << m_plots[i];
     if (!m_layout->compareDock()->isHidden())
         for (PlotWidget* plot : m_session->comparePlots())
+            plots << plot;
+    // An imported measurement's comparison and residuals, as its dock shows them.
+    if (QDockWidget* dock = m_layout->dock(QStringLiteral("measurement"));
+        dock && !dock->isHidden())
+        for (PlotWidget* plot : m_measurement->panel()->plotsShown())
             plots << plot;
     return plots;
 }

@@ -39,6 +39,7 @@ class EditTools;
 class InspectorPanel;
 class LessonPlayer;
 class LessonSession;
+class MeasurementSession;
 class SatPanel;
 class PlotWidget;
 class SceneDocument;
@@ -118,6 +119,8 @@ public:
     InspectorPanel& inspector() { return *m_inspector; }
     /// The scene editor: Edit mode and its tools.
     EditTools& editTools() { return *m_editTools; }
+    /// An imported measurement, its comparison and fit (ui/measure).
+    MeasurementSession& measurement() { return *m_measurement; }
     PlotWidget* plot(int index) const { return m_plots[static_cast<size_t>(index)]; }
     static constexpr int kPlotCount = 3;
     QString lastError() const;
@@ -188,12 +191,13 @@ private:
     bool m_closePending = false; ///< asked to close while a dialog's answer was pending
 
     // The parts the window wires together, each with one job.
-    WindowActions* m_actions = nullptr;     ///< run actions, overlays, simulation toolbar
-    WindowLayout* m_layout = nullptr;       ///< docks, their places, presentation mode
-    StatusLine* m_status = nullptr;         ///< status bar and timeline
-    WindowDocuments* m_documents = nullptr; ///< scene files and recent files
-    EditTools* m_editTools = nullptr;       ///< the scene editor (ui/editor)
-    LessonSession* m_session = nullptr;     ///< a lesson's steps in the window
+    WindowActions* m_actions = nullptr;          ///< run actions, overlays, simulation toolbar
+    WindowLayout* m_layout = nullptr;            ///< docks, their places, presentation mode
+    StatusLine* m_status = nullptr;              ///< status bar and timeline
+    WindowDocuments* m_documents = nullptr;      ///< scene files and recent files
+    EditTools* m_editTools = nullptr;            ///< the scene editor (ui/editor)
+    LessonSession* m_session = nullptr;          ///< a lesson's steps in the window
+    MeasurementSession* m_measurement = nullptr; ///< an imported measurement (ui/measure)
     QMenu* m_viewMenu = nullptr;
     QAction* m_presentAction = nullptr;
 };

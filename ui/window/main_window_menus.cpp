@@ -5,6 +5,7 @@
 #include "common/shortcuts.h"
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
+#include "measure/measurement_session.h"
 #include "window/about_dialog.h"
 #include "window/help_dialog.h"
 #include "window/language_switch.h"
@@ -61,6 +62,7 @@ void MainWindow::buildFileMenu()
           "openScene");
     named(file->addAction(tr("Open &lesson…"), m_session, &LessonSession::openLessonDialog),
           "openLesson");
+    file->addAction(m_measurement->importAction());
     QMenu* lessonsMenu = file->addMenu(tr("Le&ssons"));
     for (int i = 0; i < m_player->lessonPaths().size(); ++i) {
         const QString path = m_player->lessonPaths()[i];

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/screenshots.h"
 
+#include "editor/edit_tools.h"
 #include "lesson_player/lesson_player.h"
+#include "measure/measurement_session.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 
 #include "format/atomic_file.h"
+#include "format/data_dirs.h"
 #include "format/lesson.h"
 
 #include <QAction>
@@ -244,6 +247,32 @@ bool shootClassroom(MainWindow& window, Shooter& shooter)
                          Screenshots::tr("the editor on a new scene"));
 }
 
+/// The shipped measured drop over the simulated one in the Measurement dock, its residuals
+/// and e fitted to it (the lesson "Is the lab right?").
+bool shootMeasurement(MainWindow& window, Shooter& shooter)
+{
+    const QString scene =
+        QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("lab_vs_measurement.json"));
+    if (window.editTools().editing())
+        window.editTools().setEditing(false);
+    if (const QString error = window.openScene(scene, true); !error.isEmpty())
+        return shooter.fail(error);
+    // The classroom shot's panels make way.
+    for (const char* name : {"controls", "inspector", "collision"})
+        if (QDockWidget* dock = window.dock(QLatin1String(name)); dock && !dock->isHidden())
+            dock->toggleViewAction()->trigger();
+    MeasurementSession& measurement = window.measurement();
+    if (const QString error = measurement.load(lessons::shippedDataDir() +
+                                               QStringLiteral("/measure/samples/ball_tracker.csv"));
+        !error.isEmpty())
+        return shooter.fail(error);
+    measurement.fit();
+    runFor(window.controller(), 1.6);
+    return shooter.write(QStringLiteral("94-measurement.png"),
+                         Screenshots::tr("a measured drop over the simulated one, the residuals "
+                                         "and e fitted to it"));
+}
+
 } // namespace
 
 ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
@@ -290,6 +319,8 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
     if (!shootLessons(window, options, shooter))
         return result;
     if (options.classroom && !shootClassroom(window, shooter))
+        return result;
+    if (options.classroom && !shootMeasurement(window, shooter))
         return result;
     result.ok = shooter.writeIndex();
     return result;

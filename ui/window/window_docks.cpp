@@ -69,6 +69,9 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
     addDock(tr("Error vs run time"), QStringLiteral("errorDock"), panels.error,
             Qt::BottomDockWidgetArea)
         ->hide();
+    addDock(tr("Measurement"), QStringLiteral("measurement"), panels.measurement,
+            Qt::RightDockWidgetArea)
+        ->hide();
     m_compareDock = new QDockWidget(tr("Side by side"), &window);
     m_compareDock->setObjectName(QStringLiteral("compareDock"));
     setFullTitle(*m_compareDock, m_compareDock->windowTitle());

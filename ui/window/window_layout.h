@@ -46,6 +46,7 @@ public:
         QWidget* bounces = nullptr;
         QWidget* collision = nullptr;
         QWidget* error = nullptr;
+        QWidget* measurement = nullptr; ///< an imported measurement and its fit
     };
     /// Makes the docks on `window`.
     WindowLayout(QMainWindow& window, const Panels& panels);

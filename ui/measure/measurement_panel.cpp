@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "measure/measurement_panel.h"
+
+#include "common/shortcuts.h"
+#include "measure/import_dialog.h"
+#include "plots/plot_widget.h"
+
+#include <qcustomplot.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// Height of each plot in the dock: both fit beside the world on a 1024×768 projector.
+constexpr int kPlotHeight = 130;
+constexpr double kMarkerPx = 6.0;
+
+/// Draws a series as markers of `shape` without a line between them.
+void asMarkers(PlotWidget& plot, int series, QCPScatterStyle::ScatterShape shape)
+{
+    QCPGraph* g = plot.graph(series);
+    g->setLineStyle(QCPGraph::lsNone);
+    g->setScatterStyle(QCPScatterStyle(shape, g->pen().color(), kMarkerPx));
+}
+
+} // namespace
+
+MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("measurementPanel"));
+    auto* layout = new QVBoxLayout(this);
+    m_source = new QLabel(this);
+    m_source->setWordWrap(true);
+    m_source->setAccessibleName(tr("Measurement imported"));
+    // Shown in the View menu (and restored with the layout) before anything is imported.
+    m_source->setText(tr("No measurement yet: File › Import measurement… (%1), or drop a CSV "
+                         "file on the window.")
+                          .arg(controlKeysText("importMeasurement")));
+    layout->addWidget(m_source);
+
+    auto* form = new QFormLayout;
+    m_body = new QComboBox(this);
+    m_body->setAccessibleName(tr("Body the measurement is compared with"));
+    m_quantity = new QComboBox(this);
+    m_quantity->setAccessibleName(tr("Measured quantity compared"));
+    form->addRow(tr("&Body:"), m_body);
+    form->addRow(tr("&Quantity:"), m_quantity);
+    layout->addLayout(form);
+    for (QComboBox* box : {m_body, m_quantity})
+        connect(box, &QComboBox::currentIndexChanged, this, &MeasurementPanel::choiceChanged);
+
+    m_comparison = new PlotWidget(tr("Measured and simulated"), this);
+    m_comparison->setAccessibleName(tr("Plot: measured points and the simulated line"));
+    m_comparison->setRangeMode(RangeMode::WholeRun);
+    m_comparison->setMinimumHeight(kPlotHeight);
+    m_comparison->setTitleShown(false); // the legend names both; exports show the title
+    m_comparison->addSeries(tr("measured"), plotColor(0));
+    m_comparison->addSeries(tr("simulated"), plotColor(1));
+    asMarkers(*m_comparison, kMeasured, QCPScatterStyle::ssCircle);
+    layout->addWidget(m_comparison, 1);
+
+    m_showResiduals = new QCheckBox(tr("Show &residuals"), this);
+    m_showResiduals->setChecked(true);
+    layout->addWidget(m_showResiduals);
+    m_residual = new PlotWidget(tr("Residuals: measured − simulated"), this);
+    m_residual->setAccessibleName(tr("Plot: residuals, measured minus simulated"));
+    m_residual->setRangeMode(RangeMode::WholeRun);
+    m_residual->setMinimumHeight(kPlotHeight);
+    m_residual->setTitleShown(false); // the checkbox above says what it is
+    m_residual->addSeries(tr("measured − simulated"), plotColor(2));
+    asMarkers(*m_residual, kResidual, QCPScatterStyle::ssCross);
+    layout->addWidget(m_residual, 1);
+    connect(m_showResiduals, &QCheckBox::toggled, m_residual, &QWidget::setVisible);
+
+    m_message = new QLabel(this);
+    m_message->setWordWrap(true);
+    m_message->setAccessibleName(tr("Why the simulation cannot be compared"));
+    m_message->hide();
+    layout->addWidget(m_message);
+    layout->addWidget(buildFit());
+}
+
+QWidget* MeasurementPanel::buildFit()
+{
+    auto* box = new QGroupBox(tr("Fit to the measurement"), this);
+    auto* layout = new QVBoxLayout(box);
+    const QString names[kFitParameters] = {tr("&e (restitution)"), tr("&μ (friction)"),
+                                           tr("initial v&x"), tr("initial v&y")};
+    const QString full[kFitParameters] = {
+        tr("Fit the coefficient of restitution e"), tr("Fit the friction coefficient μ"),
+        tr("Fit the initial velocity vx"), tr("Fit the initial velocity vy")};
+    // Two by two: the dock may be as narrow as a side column on a projector.
+    auto* grid = new QGridLayout;
+    for (int i = 0; i < kFitParameters; ++i) {
+        m_parameters[i] = new QCheckBox(names[i], box);
+        m_parameters[i]->setAccessibleName(full[i]);
+        grid->addWidget(m_parameters[i], i / 2, i % 2);
+    }
+    layout->addLayout(grid);
+    m_parameters[0]->setChecked(true);
+    auto* buttons = new QHBoxLayout;
+    m_fit = new QPushButton(tr("F&it"), box);
+    m_fit->setAccessibleName(tr("Fit the ticked parameters to the measurement"));
+    m_apply = new QPushButton(tr("&Apply to scene"), box);
+    m_apply->setAccessibleName(tr("Apply the fitted values to the scene (can be undone)"));
+    m_apply->setEnabled(false);
+    buttons->addWidget(m_fit);
+    buttons->addWidget(m_apply);
+    layout->addLayout(buttons);
+    m_fitResult = new QLabel(box);
+    m_fitResult->setWordWrap(true);
+    m_fitResult->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
+    m_fitResult->setAccessibleName(tr("Fitted values"));
+    layout->addWidget(m_fitResult);
+    m_bounceResult = new QLabel(box);
+    m_bounceResult->setWordWrap(true);
+    m_bounceResult->setTextInteractionFlags(Qt::TextSelectableByMouse |
+                                            Qt::TextSelectableByKeyboard);
+    m_bounceResult->setAccessibleName(tr("e from the bounce times"));
+    m_bounceResult->hide();
+    layout->addWidget(m_bounceResult);
+    m_applyBounce = new QPushButton(tr("Apply &e from the bounce times"), box);
+    m_applyBounce->setAccessibleName(m_applyBounce->text().remove(QLatin1Char('&')));
+    m_applyBounce->hide();
+    layout->addWidget(m_applyBounce);
+    connect(m_fit, &QPushButton::clicked, this, &MeasurementPanel::fitRequested);
+    connect(m_apply, &QPushButton::clicked, this, &MeasurementPanel::applyRequested);
+    connect(m_applyBounce, &QPushButton::clicked, this, &MeasurementPanel::applyBounceRequested);
+    return box;
+}
+
+void MeasurementPanel::setSource(const QString& text)
+{
+    m_source->setText(text);
+}
+
+void MeasurementPanel::setChoices(const QStringList& bodies,
+                                  const std::vector<measure::Quantity>& quantities)
+{
+    const QSignalBlocker blockBody(m_body), blockQuantity(m_quantity);
+    const QString body = m_body->currentText();
+    const int quantity = m_quantity->currentData().toInt();
+    m_body->clear();
+    m_body->addItems(bodies);
+    m_body->setCurrentIndex(std::max(0, m_body->findText(body)));
+    m_quantity->clear();
+    for (const measure::Quantity q : quantities)
+        m_quantity->addItem(quantityText(q), static_cast<int>(q));
+    // The same quantity as before, else the height (what a dropped ball is filmed for).
+    int index = m_quantity->findData(quantity);
+    if (index < 0)
+        index = m_quantity->findData(static_cast<int>(measure::Quantity::Y));
+    m_quantity->setCurrentIndex(std::max(0, index));
+    m_fit->setEnabled(!quantities.empty() && !bodies.isEmpty());
+}
+
+int MeasurementPanel::body() const
+{
+    return m_body->currentIndex();
+}
+
+void MeasurementPanel::setBody(int index)
+{
+    m_body->setCurrentIndex(index);
+}
+
+measure::Quantity MeasurementPanel::quantity() const
+{
+    return m_quantity->currentIndex() < 0
+               ? measure::Quantity::Ignored
+               : static_cast<measure::Quantity>(m_quantity->currentData().toInt());
+}
+
+void MeasurementPanel::showComparison(const measure::Series& measured,
+                                      const std::vector<double>& lineT,
+                                      const std::vector<double>& lineValue,
+                                      const std::vector<double>& residuals, const QString& error)
+{
+    clearPlots();
+    m_message->setText(error);
+    m_message->setVisible(!error.isEmpty());
+    // The quantity's symbol (x, y, vx, ...): a long name would not fit a short plot's side.
+    const QString symbol = measure::quantityName(measured.quantity);
+    const QString unit = quantityUnit(measured.quantity);
+    m_comparison->setYAxisLabel(symbol, unit);
+    m_residual->setYAxisLabel(QStringLiteral("Δ") + symbol, unit);
+    for (std::size_t i = 0; i < measured.t.size(); ++i)
+        m_comparison->appendPoint(kMeasured, measured.t[i], measured.value[i]);
+    if (!error.isEmpty())
+        return;
+    for (std::size_t i = 0; i < lineT.size(); ++i)
+        m_comparison->appendPoint(kSimulated, lineT[i], lineValue[i]);
+    for (std::size_t i = 0; i < residuals.size(); ++i)
+        m_residual->appendPoint(kResidual, measured.t[i], residuals[i]);
+    m_comparison->drain();
+    m_residual->drain();
+}
+
+void MeasurementPanel::clearPlots()
+{
+    m_comparison->clear();
+    m_residual->clear();
+}
+
+std::vector<PlotWidget*> MeasurementPanel::plotsShown() const
+{
+    if (m_showResiduals->isChecked())
+        return {m_comparison, m_residual};
+    return {m_comparison};
+}
+
+std::vector<int> MeasurementPanel::fitChoices() const
+{
+    std::vector<int> chosen;
+    for (int i = 0; i < kFitParameters; ++i)
+        if (m_parameters[i]->isChecked())
+            chosen.push_back(i);
+    return chosen;
+}
+
+void MeasurementPanel::setFitChoice(int parameter, bool on)
+{
+    m_parameters[parameter]->setChecked(on);
+}
+
+void MeasurementPanel::showFit(const QString& text, bool applicable)
+{
+    m_fitResult->setText(text);
+    m_apply->setEnabled(applicable);
+}
+
+void MeasurementPanel::showBounceFit(const QString& text, bool applicable)
+{
+    m_bounceResult->setText(text);
+    m_bounceResult->setVisible(!text.isEmpty());
+    m_applyBounce->setVisible(!text.isEmpty());
+    m_applyBounce->setEnabled(applicable);
+}
+
+QString MeasurementPanel::fitText() const
+{
+    return m_fitResult->text();
+}
+
+QString MeasurementPanel::bounceFitText() const
+{
+    return m_bounceResult->text();
+}
+
+} // namespace rigidlab::ui

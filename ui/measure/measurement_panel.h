@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The Measurement dock: the measured points as markers over the simulated line of the same
+// quantity, the residuals (measured − simulated) as a plot of their own, and the fit. Markers
+// and line differ in shape as well as colour, and the legend names both. The panel only
+// shows; MeasurementSession (measurement_session.h) reads, runs and fits.
+
+#include "measure/measurement.h"
+
+#include <QString>
+#include <QWidget>
+
+#include <vector>
+
+class QCheckBox;
+class QComboBox;
+class QLabel;
+class QPushButton;
+
+namespace rigidlab::ui {
+
+class PlotWidget;
+
+class MeasurementPanel : public QWidget {
+    Q_OBJECT
+public:
+    explicit MeasurementPanel(QWidget* parent = nullptr);
+
+    /// Series of the comparison plot and of the residual plot.
+    enum Series { kMeasured = 0, kSimulated = 1 };
+    enum ResidualSeries { kResidual = 0 };
+
+    /// What was imported, one line ("ball.csv: 97 points of y").
+    void setSource(const QString& text);
+    /// The bodies to compare with (their ids) and the measured quantities; keeps the choice
+    /// where it still exists.
+    void setChoices(const QStringList& bodies, const std::vector<measure::Quantity>& quantities);
+    int body() const;
+    measure::Quantity quantity() const;
+    void setBody(int index);
+
+    /// Draws the measured points, the simulated line and the residuals; `error` (a run that
+    /// failed) replaces them with a message.
+    void showComparison(const measure::Series& measured, const std::vector<double>& lineT,
+                        const std::vector<double>& lineValue, const std::vector<double>& residuals,
+                        const QString& error);
+    void clearPlots();
+
+    PlotWidget* comparisonPlot() const { return m_comparison; }
+    PlotWidget* residualPlot() const { return m_residual; }
+    QCheckBox* residualsShown() const { return m_showResiduals; }
+    /// The comparison, and the residuals unless hidden: what File › Export plot offers.
+    std::vector<PlotWidget*> plotsShown() const;
+    QLabel* message() const { return m_message; }
+
+    // The fit.
+    /// The parameters ticked: 0 restitution, 1 friction, 2 vx, 3 vy.
+    std::vector<int> fitChoices() const;
+    void setFitChoice(int parameter, bool on);
+    static constexpr int kFitParameters = 4;
+    /// The fit's result in words, and whether it can be applied.
+    void showFit(const QString& text, bool applicable);
+    /// e from bounce times alone, in words; empty hides it.
+    void showBounceFit(const QString& text, bool applicable);
+    QString fitText() const;
+    QString bounceFitText() const;
+    QPushButton* fitButton() const { return m_fit; }
+    QPushButton* applyButton() const { return m_apply; }
+    QPushButton* applyBounceButton() const { return m_applyBounce; }
+
+signals:
+    void choiceChanged();
+    void fitRequested();
+    void applyRequested();
+    void applyBounceRequested();
+
+private:
+    QWidget* buildFit();
+
+    QLabel* m_source = nullptr;
+    QComboBox* m_body = nullptr;
+    QComboBox* m_quantity = nullptr;
+    PlotWidget* m_comparison = nullptr;
+    PlotWidget* m_residual = nullptr;
+    QCheckBox* m_showResiduals = nullptr;
+    QLabel* m_message = nullptr;
+    QCheckBox* m_parameters[kFitParameters] = {};
+    QPushButton* m_fit = nullptr;
+    QLabel* m_fitResult = nullptr;
+    QPushButton* m_apply = nullptr;
+    QLabel* m_bounceResult = nullptr;
+    QPushButton* m_applyBounce = nullptr;
+};
+
+} // namespace rigidlab::ui

@@ -1,0 +1,458 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "measure/measurement_session.h"
+
+#include "common/modal_scope.h"
+#include "common/number_format.h"
+#include "common/shortcuts.h"
+#include "editor/scene_document.h"
+#include "measure/import_dialog.h"
+#include "measure/measured_trail.h"
+#include "measure/measurement_panel.h"
+#include "view/world_view.h"
+
+#include "edit/scene_edits.h"
+#include "format/data_dirs.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDir>
+#include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGraphicsScene>
+#include <QMainWindow>
+#include <QMimeData>
+#include <QTimer>
+
+#include <cmath>
+#include <map>
+
+namespace rigidlab::ui {
+
+using measure::ParameterKind;
+using measure::Quantity;
+
+namespace {
+
+/// The Measurement dock's width when it opens: its own share of the window, at least enough
+/// for the plots' tick labels and the fitted values [px].
+constexpr int kDockWidthPx = 360;
+constexpr double kDockShare = 0.36;
+/// Points of the simulated line: smooth on any plot a dock can be, cheap to run again.
+constexpr int kLinePoints = 600;
+constexpr ParameterKind kPanelKinds[MeasurementPanel::kFitParameters] = {
+    ParameterKind::Restitution, ParameterKind::Friction, ParameterKind::VelocityX,
+    ParameterKind::VelocityY};
+
+/// A file dropped that could be a measurement (the reader says whether it is one).
+QString droppedMeasurement(const QMimeData* mime)
+{
+    if (!mime || !mime->hasUrls())
+        return {};
+    for (const QUrl& url : mime->urls()) {
+        const QString suffix = QFileInfo(url.toLocalFile()).suffix().toLower();
+        if (url.isLocalFile() && (suffix == QLatin1String("csv") ||
+                                  suffix == QLatin1String("txt") || suffix == QLatin1String("tsv")))
+            return url.toLocalFile();
+    }
+    return {};
+}
+
+lessons::edit::BodyNumber bodyNumberOf(ParameterKind kind)
+{
+    switch (kind) {
+    case ParameterKind::Restitution:
+        return lessons::edit::BodyNumber::Restitution;
+    case ParameterKind::Friction:
+        return lessons::edit::BodyNumber::Friction;
+    case ParameterKind::VelocityX:
+        return lessons::edit::BodyNumber::VelocityX;
+    case ParameterKind::VelocityY:
+        return lessons::edit::BodyNumber::VelocityY;
+    }
+    return lessons::edit::BodyNumber::Restitution;
+}
+
+QString parameterSymbol(ParameterKind kind)
+{
+    switch (kind) {
+    case ParameterKind::Restitution:
+        return QStringLiteral("e");
+    case ParameterKind::Friction:
+        return QStringLiteral("μ");
+    case ParameterKind::VelocityX:
+        return QStringLiteral("vx");
+    case ParameterKind::VelocityY:
+        return QStringLiteral("vy");
+    }
+    return {};
+}
+
+QString parameterUnit(ParameterKind kind)
+{
+    return kind == ParameterKind::VelocityX || kind == ParameterKind::VelocityY
+               ? QStringLiteral("\u00A0m/s")
+               : QString();
+}
+
+/// The samples folder shipped with the lab (lessons/measure/samples in the source tree).
+QString samplesFolder()
+{
+    const QString dir = lessons::shippedDataDir();
+    return dir.isEmpty() ? QString() : dir + QStringLiteral("/measure/samples");
+}
+
+} // namespace
+
+QString valueWithUncertainty(double value, double uncertainty)
+{
+    const QLocale locale;
+    if (!(uncertainty > 0) || !std::isfinite(uncertainty) || !std::isfinite(value))
+        return formatReadable(value, 4);
+    const int decimals =
+        std::clamp(1 - static_cast<int>(std::floor(std::log10(uncertainty))), 0, kMostDecimals);
+    return locale.toString(value, 'f', decimals) + QStringLiteral("\u00A0±\u00A0") +
+           locale.toString(uncertainty, 'f', decimals);
+}
+
+MeasurementSession::MeasurementSession(QWidget& window, WorldView& view, SceneDocument& document)
+    : QObject(&window), m_window(window), m_view(view), m_document(document)
+{
+    m_import = new QAction(tr("&Import measurement…"), this);
+    m_import->setObjectName(QStringLiteral("importMeasurement"));
+    m_import->setShortcuts(controlKeys("importMeasurement"));
+    m_import->setToolTip(tr("Read a measured time series (Tracker, phyphox or plain CSV) to "
+                            "compare the scene with and fit it to"));
+    connect(m_import, &QAction::triggered, this, &MeasurementSession::importInteractively);
+    m_panel = new MeasurementPanel(&window);
+    m_trail = new MeasuredTrailItem;
+    view.scene()->addItem(m_trail);
+    window.setAcceptDrops(true);
+    window.installEventFilter(this);
+    view.viewport()->installEventFilter(this);
+    connect(m_panel, &MeasurementPanel::choiceChanged, this, &MeasurementSession::compare);
+    connect(m_panel, &MeasurementPanel::fitRequested, this, [this] { fit(); });
+    connect(m_panel, &MeasurementPanel::applyRequested, this, [this] {
+        if (const QString error = apply(); !error.isEmpty())
+            emit message(error, 8000);
+    });
+    connect(m_panel, &MeasurementPanel::applyBounceRequested, this, [this] {
+        if (const QString error = applyBounceFit(); !error.isEmpty())
+            emit message(error, 8000);
+    });
+    connect(&document, &SceneDocument::sceneChanged, this, [this] {
+        updateChoices();
+        compare();
+    });
+}
+
+MeasurementSession::~MeasurementSession() = default; // the view's scene owns the trail
+
+void MeasurementSession::importInteractively()
+{
+    QString folder = m_lastFolder.isEmpty() ? samplesFolder() : m_lastFolder;
+    QString path;
+    {
+        ModalScope scope;
+        path = QFileDialog::getOpenFileName(&m_window, tr("Import measurement"), folder,
+                                            tr("Measurements (*.csv *.txt *.tsv);;All files (*)"));
+    }
+    if (path.isEmpty())
+        return;
+    m_lastFolder = QFileInfo(path).absolutePath();
+    if (const QString error = importFile(path); !error.isEmpty())
+        emit message(error, 10000);
+}
+
+QString MeasurementSession::importFile(const QString& path)
+{
+    std::optional<measure::MeasurementOptions> options;
+    QString error;
+    if (m_asker) {
+        options = m_asker(path, error);
+    } else {
+        ModalScope scope;
+        MeasurementImportDialog dialog(path, &m_window);
+        if (dialog.exec() == QDialog::Accepted)
+            options = dialog.options();
+        else
+            error = dialog.error();
+    }
+    if (!options)
+        return error;
+    return load(path, *options);
+}
+
+QString MeasurementSession::load(const QString& path, const measure::MeasurementOptions& options)
+{
+    measure::MeasurementResult read = measure::readMeasurementFile(path, options);
+    if (!read.ok) {
+        emit message(read.error, 10000);
+        return read.error;
+    }
+    m_measurement = std::move(read.measurement);
+    m_path = path;
+    m_fit = {};
+    m_fitted.clear();
+    m_panel->showFit(QString(), false);
+    QStringList what;
+    for (const measure::Series& s : m_measurement->series)
+        what << quantityText(s.quantity);
+    if (!m_measurement->bounces.empty())
+        what << quantityText(Quantity::BounceTime);
+    const int points = m_measurement->series.empty()
+                           ? static_cast<int>(m_measurement->bounces.size())
+                           : static_cast<int>(m_measurement->series.front().t.size());
+    m_panel->setSource(tr("%1: %n point(s) of %2", nullptr, points)
+                           .arg(QFileInfo(path).fileName(), what.join(QStringLiteral(", "))));
+    updateChoices();
+    updateBounceFit();
+    compare();
+    showDock();
+    emit imported(path);
+    return {};
+}
+
+void MeasurementSession::showDock()
+{
+    if (!m_dock)
+        return;
+    auto* window = qobject_cast<QMainWindow*>(&m_window);
+    if (window && m_dock->isHidden()) {
+        // In the place of the tallest dock beside it (the plots), in front, in a column wide
+        // enough for two plots' tick labels and the fit's numbers.
+        QDockWidget* tallest = nullptr;
+        for (QDockWidget* d : window->findChildren<QDockWidget*>())
+            if (d != m_dock && !d->isHidden() && !d->isFloating() &&
+                window->dockWidgetArea(d) == window->dockWidgetArea(m_dock) &&
+                (!tallest || d->height() > tallest->height()))
+                tallest = d;
+        if (tallest)
+            window->tabifyDockWidget(tallest, m_dock);
+        // Never narrower than the plots' tick labels need, on a projector's 1024 px too (the
+        // side column's own share of the window is less).
+        m_dock->setMinimumWidth(
+            std::min(kDockWidthPx, static_cast<int>(kDockShare * window->width())));
+    }
+    m_dock->show();
+    m_dock->raise();
+}
+
+std::optional<physics::BodyId> MeasurementSession::body() const
+{
+    const lessons::Scene& scene = m_document.scene();
+    int index = m_panel->body();
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+        if (scene.bodies[i].type != physics::BodyType::Static && index-- == 0)
+            return static_cast<physics::BodyId>(i);
+    return std::nullopt;
+}
+
+std::optional<measure::Target> MeasurementSession::target() const
+{
+    const auto b = body();
+    const Quantity q = m_panel->quantity();
+    if (!b || q == Quantity::Ignored)
+        return std::nullopt;
+    return measure::Target{q, *b,
+                           measure::quantityName(q) + QLatin1Char(':') +
+                               QString::fromStdString(m_document.scene().bodies[*b].name)};
+}
+
+void MeasurementSession::updateChoices()
+{
+    if (!m_measurement)
+        return;
+    QStringList bodies;
+    for (const physics::BodyDef& b : m_document.scene().bodies)
+        if (b.type != physics::BodyType::Static)
+            bodies << QString::fromStdString(b.name);
+    std::vector<Quantity> quantities;
+    for (const measure::Series& s : m_measurement->series)
+        quantities.push_back(s.quantity);
+    m_panel->setChoices(bodies, quantities);
+}
+
+void MeasurementSession::compare()
+{
+    m_simulated.clear();
+    m_residuals.clear();
+    const auto t = target();
+    const measure::Series* series = m_measurement && t ? m_measurement->find(t->quantity) : nullptr;
+    if (!series) {
+        m_panel->clearPlots();
+        updateTrail();
+        return;
+    }
+    const lessons::Scene& scene = m_document.scene();
+    measure::Simulated at = measure::simulateAt(scene, *t, series->t);
+    std::vector<double> lineT;
+    const double end = series->t.back();
+    const double step = std::max(scene.world.dt, end / kLinePoints);
+    for (double time = 0; time <= end + 0.5 * step; time += step)
+        lineT.push_back(std::min(time, end));
+    measure::Simulated line = at.ok ? measure::simulateAt(scene, *t, lineT) : at;
+    if (at.ok && line.ok) {
+        m_simulated = at.values;
+        for (std::size_t i = 0; i < series->value.size(); ++i)
+            m_residuals.push_back(series->value[i] - m_simulated[i]);
+    }
+    m_panel->showComparison(*series, lineT, line.values, m_residuals,
+                            at.ok && line.ok ? QString() : (at.ok ? line.error : at.error));
+    updateTrail();
+}
+
+void MeasurementSession::updateTrail()
+{
+    std::vector<QPointF> points;
+    const auto t = target();
+    if (m_measurement && t) {
+        const physics::Vec2 start = m_document.scene().bodies[t->body].position;
+        const measure::Series* xs = m_measurement->find(Quantity::X);
+        const measure::Series* ys = m_measurement->find(Quantity::Y);
+        std::map<int, QPointF> byLine; // the file's line: a point seen in both columns
+        if (xs)
+            for (std::size_t i = 0; i < xs->t.size(); ++i)
+                byLine[xs->lines[i]] = QPointF(xs->value[i], ys ? NAN : start.y());
+        if (ys)
+            for (std::size_t i = 0; i < ys->t.size(); ++i) {
+                auto [it, added] =
+                    byLine.try_emplace(ys->lines[i], QPointF(xs ? NAN : start.x(), ys->value[i]));
+                if (!added)
+                    it->second.setY(ys->value[i]);
+            }
+        for (const auto& [line, p] : byLine)
+            if (std::isfinite(p.x()) && std::isfinite(p.y()))
+                points.push_back(p);
+    }
+    m_trail->setPoints(std::move(points));
+}
+
+const measure::FitResult& MeasurementSession::fit()
+{
+    m_fit = {};
+    m_fitted.clear();
+    const auto t = target();
+    const measure::Series* series = m_measurement && t ? m_measurement->find(t->quantity) : nullptr;
+    const lessons::Scene& scene = m_document.scene();
+    if (!series) {
+        m_fit.error = tr("Import a measurement of a position or velocity first.");
+    } else {
+        for (const int i : m_panel->fitChoices())
+            m_fitted.push_back(
+                measure::Parameter{kPanelKinds[i], {t->body}, parameterSymbol(kPanelKinds[i])});
+        QApplication::setOverrideCursor(Qt::WaitCursor);
+        if (m_fitted.empty())
+            m_fit.error = tr("Tick a parameter to fit.");
+        else
+            m_fit = measure::fitScene(scene, m_fitted, *t, *series);
+        QApplication::restoreOverrideCursor();
+    }
+    if (!m_fit.ok) {
+        m_panel->showFit(m_fit.error, false);
+        return m_fit;
+    }
+    QStringList lines;
+    for (std::size_t i = 0; i < m_fitted.size(); ++i)
+        lines << tr("%1 = %2%3 (95 %)")
+                     .arg(m_fitted[i].name,
+                          valueWithUncertainty(m_fit.values[i].value, m_fit.values[i].halfWidth95),
+                          parameterUnit(m_fitted[i].kind));
+    lines << tr("Residual RMS: %1 over %n point(s)", nullptr, m_fit.points)
+                 .arg(formatQuantity(m_fit.rms, quantityUnit(t->quantity), 2));
+    m_panel->showFit(lines.join(QLatin1Char('\n')), true);
+    return m_fit;
+}
+
+QString MeasurementSession::apply()
+{
+    if (!m_fit.ok)
+        return tr("Fit first: there are no fitted values to apply.");
+    std::vector<double> values;
+    for (const measure::FittedValue& v : m_fit.values)
+        values.push_back(v.value);
+    return applyValues(m_fitted, values, tr("Apply fitted values"));
+}
+
+QString MeasurementSession::applyBounceFit()
+{
+    const auto b = body();
+    if (!m_bounceFit.ok || !b)
+        return tr("There is no e from bounce times to apply.");
+    return applyValues({measure::Parameter{ParameterKind::Restitution, {*b}, {}}},
+                       {m_bounceFit.e.value}, tr("Apply e from the bounce times"));
+}
+
+QString MeasurementSession::applyValues(const std::vector<measure::Parameter>& parameters,
+                                        const std::vector<double>& values, const QString& what)
+{
+    lessons::Scene scene = m_document.scene();
+    for (std::size_t i = 0; i < parameters.size(); ++i)
+        for (const physics::BodyId body : parameters[i].bodies) {
+            lessons::edit::EditResult r = lessons::edit::setBodyNumber(
+                scene, body, bodyNumberOf(parameters[i].kind), values[i]);
+            if (!r.ok)
+                return r.error;
+            scene = std::move(r.scene);
+        }
+    m_document.apply(what, scene);
+    return {};
+}
+
+void MeasurementSession::updateBounceFit()
+{
+    m_bounceFit = {};
+    if (!m_measurement || m_measurement->bounces.empty()) {
+        m_panel->showBounceFit(QString(), false);
+        return;
+    }
+    m_bounceFit = measure::fitBounceTimes(m_measurement->bounces);
+    if (!m_bounceFit.ok) {
+        m_panel->showBounceFit(m_bounceFit.error, false);
+        return;
+    }
+    QStringList flights;
+    for (const double f : m_bounceFit.flightTimes)
+        flights << formatQuantity(f, QStringLiteral("s"), 3);
+    m_panel->showBounceFit(
+        tr("From the bounce times alone: e = %1 (95 %). Each flight between bounces lasts e "
+           "times the one before: %2.")
+            .arg(valueWithUncertainty(m_bounceFit.e.value, m_bounceFit.e.halfWidth95),
+                 flights.join(QStringLiteral(", "))),
+        true);
+}
+
+bool MeasurementSession::eventFilter(QObject* watched, QEvent* event)
+{
+    switch (event->type()) {
+    case QEvent::DragEnter:
+    case QEvent::DragMove: {
+        auto* drag = static_cast<QDragMoveEvent*>(event);
+        if (droppedMeasurement(drag->mimeData()).isEmpty())
+            break;
+        drag->acceptProposedAction();
+        return true;
+    }
+    case QEvent::Drop: {
+        auto* drop = static_cast<QDropEvent*>(event);
+        const QString path = droppedMeasurement(drop->mimeData());
+        if (path.isEmpty())
+            break;
+        drop->acceptProposedAction();
+        // The dialog opens after the drop is done: the application the file came from is not
+        // kept waiting for it.
+        QTimer::singleShot(0, this, [this, path] {
+            if (const QString error = importFile(path); !error.isEmpty())
+                emit message(error, 10000);
+        });
+        return true;
+    }
+    default:
+        break;
+    }
+    return QObject::eventFilter(watched, event);
+}
+
+} // namespace rigidlab::ui

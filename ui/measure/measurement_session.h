@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// A measurement in the window: File › Import measurement… (or a CSV dropped on the window)
+// reads it through the import dialog; the Measurement dock compares it with the scene as
+// edited, run headless from t = 0 (lessons/measure/fit.h's simulateAt, the same run the fit
+// uses), and the scene view shows the measured positions as a faint trail. The fit's values
+// go into the scene as one edit of its document, which Undo takes back.
+
+#include "measure/fit.h"
+#include "measure/measurement.h"
+
+#include <QObject>
+#include <QString>
+
+#include <functional>
+#include <optional>
+#include <vector>
+
+class QAction;
+class QDockWidget;
+class QWidget;
+
+namespace rigidlab::ui {
+
+class MeasuredTrailItem;
+class MeasurementPanel;
+class SceneDocument;
+class WorldView;
+
+class MeasurementSession : public QObject {
+    Q_OBJECT
+public:
+    /// `window` gets the import action's drops; the view gets the trail.
+    MeasurementSession(QWidget& window, WorldView& view, SceneDocument& document);
+    ~MeasurementSession() override;
+
+    /// File › Import measurement… (its keys from the key table).
+    QAction* importAction() const { return m_import; }
+    MeasurementPanel* panel() const { return m_panel; }
+    /// The dock the panel is in; shown when a measurement is imported.
+    void setDock(QDockWidget* dock) { m_dock = dock; }
+    const MeasuredTrailItem* trail() const { return m_trail; }
+
+    /// Asks for a file, then runs the import dialog on it.
+    void importInteractively();
+    /// Runs the import dialog on `path` and loads what it accepts; returns the refusal, empty
+    /// when imported or cancelled.
+    QString importFile(const QString& path);
+    /// Loads `path` with `options` without a dialog; on an error nothing changes and the
+    /// error (naming the file, line and column) is returned.
+    QString load(const QString& path, const measure::MeasurementOptions& options = {});
+
+    /// What the import dialog answers: the measurement's options, or nullopt when cancelled.
+    /// Unset: the dialog, modal. (Tests answer without a dialog.)
+    using ImportAsker = std::function<std::optional<measure::MeasurementOptions>(
+        const QString& path, QString& error)>;
+    void setImportAsker(ImportAsker asker) { m_asker = std::move(asker); }
+
+    bool hasMeasurement() const { return m_measurement.has_value(); }
+    const measure::Measurement& measurement() const { return *m_measurement; }
+    /// The simulated values at the measured times and the residuals, of the last comparison.
+    const std::vector<double>& simulated() const { return m_simulated; }
+    const std::vector<double>& residuals() const { return m_residuals; }
+    /// The body chosen in the panel, or nullopt (a scene without a dynamic body).
+    std::optional<physics::BodyId> body() const;
+    /// The target compared: the panel's body and quantity, or nullopt.
+    std::optional<measure::Target> target() const;
+
+    /// Fits the parameters ticked in the panel; the result stays for apply().
+    const measure::FitResult& fit();
+    const measure::FitResult& lastFit() const { return m_fit; }
+    const std::vector<measure::Parameter>& fittedParameters() const { return m_fitted; }
+    /// Puts the fitted values into the scene, one undoable edit; returns the refusal or empty.
+    QString apply();
+    /// e from the bounce times, when the measurement has them.
+    const measure::BounceFit& bounceFit() const { return m_bounceFit; }
+    QString applyBounceFit();
+
+    /// Compares the measurement with the scene as it is now.
+    void compare();
+
+signals:
+    /// A measurement was imported (the path).
+    void imported(const QString& path);
+    /// Why an import failed, for the status bar.
+    void message(const QString& text, int timeoutMs);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+private:
+    /// Shows the dock in front, the first time in the place of the plots beside the view.
+    void showDock();
+    void updateChoices();
+    void updateTrail();
+    void updateBounceFit();
+    QString applyValues(const std::vector<measure::Parameter>& parameters,
+                        const std::vector<double>& values, const QString& what);
+
+    QWidget& m_window;
+    WorldView& m_view;
+    SceneDocument& m_document;
+    QAction* m_import = nullptr;
+    MeasurementPanel* m_panel = nullptr;
+    QDockWidget* m_dock = nullptr;
+    MeasuredTrailItem* m_trail = nullptr; ///< owned by the view's scene
+    ImportAsker m_asker;
+    QString m_path;
+    QString m_lastFolder;
+    std::optional<measure::Measurement> m_measurement;
+    std::vector<double> m_simulated;
+    std::vector<double> m_residuals;
+    measure::FitResult m_fit;
+    std::vector<measure::Parameter> m_fitted;
+    measure::BounceFit m_bounceFit;
+};
+
+/// "0,720 ± 0,012": a value to the digits its uncertainty leaves meaningful (two of the
+/// uncertainty), in the locale's numbers.
+QString valueWithUncertainty(double value, double uncertainty);
+
+} // namespace rigidlab::ui
