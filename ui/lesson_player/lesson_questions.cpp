@@ -130,6 +130,7 @@ void LessonPlayer::applyTry(std::size_t i, const QuestionTry& attempt)
     const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
     QuestionRow& row = m_rows[i];
     row.tries.push_back(attempt);
+    recordTry(i);
     if (!attempt.answer)
         return settle(i, lessons::showAnswer(q, attempt.measured, attempt.ahead));
     if (attempt.measured && !row.answered)
