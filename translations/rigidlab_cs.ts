@@ -285,6 +285,10 @@
         <source>Help: this list of keys and mouse actions</source>
         <translation>Nápověda: tento přehled kláves a&#xa0;ovládání myší</translation>
     </message>
+    <message>
+        <source>Hand in the lesson&apos;s worksheet (PDF)</source>
+        <translation>Odevzdat pracovní list lekce (PDF)</translation>
+    </message>
 </context>
 <context>
     <name>DivergenceWords</name>
@@ -2546,10 +2550,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Vaše třída na pracovní list, který odevzdáte</translation>
     </message>
     <message>
-        <source>Write your worksheet as a PDF: the questions, your answers and their verdicts, the plots and the settings</source>
-        <translation>Zapíše váš pracovní list jako PDF: otázky, vaše odpovědi a&#xa0;jejich hodnocení, grafy a&#xa0;nastavení</translation>
-    </message>
-    <message>
         <source>Open a lesson first.</source>
         <translation>Nejdřív otevřete lekci.</translation>
     </message>
@@ -2588,6 +2588,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Hand in…</source>
         <translation>Odevzdat…</translation>
+    </message>
+    <message>
+        <source>Write your worksheet as a PDF: the questions, your answers and their verdicts, the plots and the settings (%1)</source>
+        <translation>Zapíše váš pracovní list jako PDF: otázky, vaše odpovědi a&#xa0;jejich hodnocení, grafy a&#xa0;nastavení (%1)</translation>
     </message>
 </context>
 <context>

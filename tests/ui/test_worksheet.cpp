@@ -8,6 +8,7 @@
 
 #include "common/language.h"
 #include "common/number_format.h"
+#include "common/shortcuts.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
@@ -21,7 +22,10 @@
 
 #include <QDir>
 #include <QFile>
+#include <QLabel>
+#include <QLineEdit>
 #include <QProcess>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -163,6 +167,7 @@ private slots:
     void emptySheetAndKey();
     void handInNeedsAPlaceToWrite();
     void cliRefusesDamagedAnswers();
+    void nameAndHandInAreReachable();
 };
 
 void TestWorksheet::handInAfterAnswering_data()
@@ -347,6 +352,38 @@ void TestWorksheet::cliRefusesDamagedAnswers()
         QVERIFY2(cli.err.contains(message), qPrintable(cli.err));
         QVERIFY(!QFile::exists(out));
     }
+}
+
+void TestWorksheet::nameAndHandInAreReachable()
+{
+    // The name and class have accessible names and labels that lead to them (Alt+letter);
+    // Hand in has a key, listed in Help › Controls, and on the last step says it finishes.
+    ui::MainWindow w;
+    QCOMPARE(w.openLesson(kLessonPath, true), QString());
+    for (const char* name : {"studentName", "studentClass"}) {
+        auto* field = w.findChild<QLineEdit*>(QLatin1String(name));
+        QVERIFY2(field && field->isVisibleTo(&w), name);
+        QVERIFY(!field->accessibleName().isEmpty());
+        bool labelled = false;
+        for (QLabel* label : w.findChildren<QLabel*>())
+            labelled = labelled || (label->buddy() == field && label->text().contains(u'&'));
+        QVERIFY2(labelled, name);
+    }
+    auto* handIn = w.findChild<QPushButton*>(QStringLiteral("handIn"));
+    QVERIFY(handIn && handIn->isVisibleTo(&w));
+    QVERIFY(!handIn->shortcut().isEmpty());
+    QCOMPARE(handIn->shortcut(), ui::controlKeys("handIn").value(0));
+    QVERIFY(
+        ui::controlsHelpHtml({}).contains(handIn->shortcut().toString(QKeySequence::NativeText)));
+    const QString early = handIn->text();
+    w.lessonPlayer().goToStep(static_cast<int>(w.lessonPlayer().lesson()->steps.size()) - 1);
+    QVERIFY(handIn->text() != early);
+    // The name typed is kept for the session: a new window shows it.
+    w.lessonPlayer().setStudent(QStringLiteral("Petr"), QStringLiteral("3.A"));
+    ui::MainWindow other;
+    QCOMPARE(other.findChild<QLineEdit*>(QStringLiteral("studentName"))->text(),
+             QStringLiteral("Petr"));
+    QCOMPARE(other.lessonPlayer().student(), QStringLiteral("Petr"));
 }
 
 RIGIDLAB_TEST_MAIN(TestWorksheet)

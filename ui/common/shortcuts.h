@@ -87,6 +87,8 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "Save the scene under another name")},
     ControlInfo{"openLesson", "Ctrl+L", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Open a lesson")},
+    ControlInfo{"handIn", "Ctrl+H", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Hand in the lesson's worksheet (PDF)")},
     ControlInfo{"quit", "Ctrl+Q", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Quit RigidLab")},
     ControlInfo{"help", "F1", nullptr,

@@ -7,6 +7,7 @@
 #include "common/export_folder.h"
 #include "common/language.h"
 #include "common/modal_scope.h"
+#include "common/shortcuts.h"
 #include "simulation/simulation_controller.h"
 #include "worksheet/worksheet.h"
 
@@ -75,8 +76,13 @@ void LessonPlayer::buildStudentFields(QVBoxLayout* layout)
     connect(m_studentClass, &QLineEdit::textChanged, this,
             [](const QString& text) { session().className = text.simplified(); });
     m_handIn->setObjectName(QStringLiteral("handIn"));
+    // A key as well as the button (Help › Controls lists it).
+    const QList<QKeySequence> keys = controlKeys("handIn");
+    if (!keys.isEmpty())
+        m_handIn->setShortcut(keys.front());
     m_handIn->setToolTip(tr("Write your worksheet as a PDF: the questions, your answers and "
-                            "their verdicts, the plots and the settings"));
+                            "their verdicts, the plots and the settings (%1)")
+                             .arg(controlKeysText("handIn")));
     layout->addWidget(m_studentBox);
 }
 
