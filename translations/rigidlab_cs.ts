@@ -2593,6 +2593,34 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Write your worksheet as a PDF: the questions, your answers and their verdicts, the plots and the settings (%1)</source>
         <translation>Zapíše váš pracovní list jako PDF: otázky, vaše odpovědi a&#xa0;jejich hodnocení, grafy a&#xa0;nastavení (%1)</translation>
     </message>
+    <message>
+        <source>&amp;Worksheet to print…</source>
+        <translation>&amp;Pracovní list k&#xa0;tisku…</translation>
+    </message>
+    <message>
+        <source>The open lesson&apos;s questions with lines to write on, and its figures</source>
+        <translation>Otázky otevřené lekce s&#xa0;řádky na psaní a&#xa0;její obrázky</translation>
+    </message>
+    <message>
+        <source>Teacher&apos;s &amp;key…</source>
+        <translation>&amp;Klíč pro učitele…</translation>
+    </message>
+    <message>
+        <source>The open lesson&apos;s questions with the values the simulation measures</source>
+        <translation>Otázky otevřené lekce s&#xa0;hodnotami, které simulace naměří</translation>
+    </message>
+    <message>
+        <source>Teacher&apos;s key</source>
+        <translation>Klíč pro učitele</translation>
+    </message>
+    <message>
+        <source>Worksheet to print</source>
+        <translation>Pracovní list k&#xa0;tisku</translation>
+    </message>
+    <message>
+        <source>Cannot write the worksheet</source>
+        <translation>Pracovní list nelze zapsat</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonSession</name>

@@ -20,6 +20,7 @@
 
 #include "test_main.h"
 
+#include <QAction>
 #include <QDir>
 #include <QFile>
 #include <QLabel>
@@ -378,12 +379,19 @@ void TestWorksheet::nameAndHandInAreReachable()
     const QString early = handIn->text();
     w.lessonPlayer().goToStep(static_cast<int>(w.lessonPlayer().lesson()->steps.size()) - 1);
     QVERIFY(handIn->text() != early);
+    // The teacher's sheets are in the File menu while a lesson is open.
+    for (const char* name : {"emptyWorksheet", "worksheetKey"}) {
+        auto* action = w.findChild<QAction*>(QLatin1String(name));
+        QVERIFY2(action && action->isEnabled(), name);
+        QVERIFY(action->text().contains(u'&'));
+    }
     // The name typed is kept for the session: a new window shows it.
     w.lessonPlayer().setStudent(QStringLiteral("Petr"), QStringLiteral("3.A"));
     ui::MainWindow other;
     QCOMPARE(other.findChild<QLineEdit*>(QStringLiteral("studentName"))->text(),
              QStringLiteral("Petr"));
     QCOMPARE(other.lessonPlayer().student(), QStringLiteral("Petr"));
+    QVERIFY(!other.findChild<QAction*>(QStringLiteral("worksheetKey"))->isEnabled()); // no lesson
 }
 
 RIGIDLAB_TEST_MAIN(TestWorksheet)

@@ -20,6 +20,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QMessageBox>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -193,6 +194,46 @@ void LessonPlayer::handInInteractively()
         this, tr("Handed in"),
         tr("Your worksheet is in %1, your answers beside it in %2.")
             .arg(QDir::toNativeSeparators(path), QDir::toNativeSeparators(answersPathFor(path))));
+}
+
+void LessonPlayer::addWorksheetActions(QMenu& menu)
+{
+    QAction* empty = menu.addAction(tr("&Worksheet to print…"), this,
+                                    [this] { writeSheetInteractively(false); });
+    empty->setObjectName(QStringLiteral("emptyWorksheet"));
+    empty->setToolTip(tr("The open lesson's questions with lines to write on, and its figures"));
+    QAction* key =
+        menu.addAction(tr("Teacher's &key…"), this, [this] { writeSheetInteractively(true); });
+    key->setObjectName(QStringLiteral("worksheetKey"));
+    key->setToolTip(tr("The open lesson's questions with the values the simulation measures"));
+    for (QAction* action : {empty, key}) {
+        action->setEnabled(m_lesson != nullptr);
+        connect(this, &LessonPlayer::stepActivated, action, [action] { action->setEnabled(true); });
+        connect(this, &LessonPlayer::lessonClosed, action, [action] { action->setEnabled(false); });
+    }
+}
+
+void LessonPlayer::writeSheetInteractively(bool key)
+{
+    if (!m_lesson)
+        return;
+    const ModalScope modal;
+    const QString stem = QFileInfo(m_lesson->path).completeBaseName();
+    const QString proposal =
+        QDir(exportFolder())
+            .filePath(stem + (key ? QStringLiteral("-key.pdf") : QStringLiteral("-worksheet.pdf")));
+    const QString path =
+        QFileDialog::getSaveFileName(this, key ? tr("Teacher's key") : tr("Worksheet to print"),
+                                     proposal, tr("PDF document (*.pdf)"));
+    if (path.isEmpty())
+        return;
+    rememberExportFolder(path);
+    lessons::Answers none;
+    none.lessonFile = QFileInfo(m_lesson->path).fileName();
+    const WorksheetResult written =
+        writeWorksheet(*m_lesson, none, key ? WorksheetKind::Key : WorksheetKind::Empty, path);
+    if (!written.ok)
+        QMessageBox::warning(this, tr("Cannot write the worksheet"), written.error);
 }
 
 void LessonPlayer::showHandIn()

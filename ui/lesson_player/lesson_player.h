@@ -19,6 +19,7 @@
 class QComboBox;
 class QLabel;
 class QLineEdit;
+class QMenu;
 class QProgressBar;
 class QScrollArea;
 class QPushButton;
@@ -97,6 +98,9 @@ public:
     /// Writes the worksheet to `pdfPath` and the answers beside it (answersPathFor). Returns
     /// the error, empty on success.
     QString handIn(const QString& pdfPath);
+    /// For the teacher: "Worksheet to print…" (the empty sheet) and "Teacher's key…" added to
+    /// `menu`, on while a lesson is open.
+    void addWorksheetActions(QMenu& menu);
 
 public slots:
     void next();
@@ -145,6 +149,8 @@ private:
     void recordSettings();
     /// Starts the lesson's record, unless it is the lesson the session's record is of.
     static void startRecord(const lessons::Lesson& lesson);
+    /// Asks for a file and writes the empty worksheet (or the key) of the open lesson there.
+    void writeSheetInteractively(bool key);
     /// On the last step, Hand in says that it finishes the lesson.
     void showHandIn();
     /// Judges a try at question i (and remembers it): its verdict shown, what it releases

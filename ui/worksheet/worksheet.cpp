@@ -30,6 +30,10 @@ struct Worksheet {
     Q_DECLARE_TR_FUNCTIONS(Worksheet)
 };
 
+/// What a question needs on the page below its prompt to start there rather than on the next
+/// page: an answer line or two [device pixels].
+constexpr int kQuestionRoom = 90;
+
 /// The verdicts of a question's tries, judged again in order as the lesson player judged
 /// them: a wrong first try reads the hint, later ones and a right one give the value, and
 /// once the value was given every later try is judged with it.
@@ -188,9 +192,19 @@ void SheetWriter::writeStep(int index, int& figures)
     auto holder = std::make_unique<QWidget>();
     const StepPlots plots = runStepPlots(step, holder.get());
 
-    m_pages.keepRoom(m_pages.heightOf(step.title, m_heading) * 4);
-    m_pages.text(Worksheet::tr("Step %1: %2").arg(index + 1).arg(step.title), m_heading);
-    m_pages.text(settingsLine(step, plots.settings), m_small);
+    // The step's heading stays on the page of what follows it: its first question, else its
+    // first figure.
+    const QString heading = Worksheet::tr("Step %1: %2").arg(index + 1).arg(step.title);
+    const QString settings = settingsLine(step, plots.settings);
+    int first = 0;
+    if (!step.questions.empty())
+        first = m_pages.heightOf(step.questions.front().prompt, m_bold) + kQuestionRoom;
+    else if (!plots.plots.empty())
+        first = m_pages.heightOf(plots.plots.front()->title(), m_small) + m_pages.figureHeight();
+    m_pages.keepRoom(m_pages.heightOf(heading, m_heading) + m_pages.heightOf(settings, m_small) +
+                     first);
+    m_pages.text(heading, m_heading);
+    m_pages.text(settings, m_small);
     m_pages.gap(6);
     for (int q = 0; q < static_cast<int>(step.questions.size()); ++q)
         writeQuestion(step, index, q);
@@ -217,7 +231,7 @@ void SheetWriter::writeQuestion(const lessons::LessonStep& step, int s, int q)
                                .arg(s + 1)
                                .arg(q + 1)
                                .arg(lessons::keepUnitsTogether(question.prompt));
-    m_pages.keepRoom(m_pages.heightOf(prompt, m_bold) + 90);
+    m_pages.keepRoom(m_pages.heightOf(prompt, m_bold) + kQuestionRoom);
     m_pages.text(prompt, m_bold);
     const std::vector<lessons::AnswerTry>& tries = triesOf(s, q);
     const int indent = 18;
