@@ -208,7 +208,7 @@ void TestWorksheet::handInAfterAnswering()
     const QString pdf = dir.filePath(QStringLiteral("sheet.pdf"));
     QCOMPARE(player.handIn(pdf), QString());
     const QString text = pdfText(pdf);
-    QVERIFY2(!text.isEmpty(), "pdftotext read nothing");
+    QVERIFY2(!text.isEmpty(), "pdftotext read nothing (is poppler-utils installed?)");
     for (const QString& expected :
          {QStringLiteral("Jana Nováková"), QStringLiteral("2.B"), lesson.title})
         QVERIFY2(text.contains(flat(expected)), qPrintable(expected));
