@@ -35,26 +35,14 @@ struct Worksheet {
 constexpr int kQuestionRoom = 90;
 
 /// The verdicts of a question's tries, judged again in order as the lesson player judged
-/// them: a wrong first try reads the hint, later ones and a right one give the value, and
-/// once the value was given every later try is judged with it.
+/// them.
 std::vector<lessons::Verdict> judgeTries(const lessons::Question& q,
                                          const std::vector<lessons::AnswerTry>& tries)
 {
     std::vector<lessons::Verdict> out;
-    int attempts = 0;
-    bool answered = false;
-    for (const lessons::AnswerTry& t : tries) {
-        lessons::Verdict v;
-        if (!t.answer) {
-            v = lessons::showAnswer(q, t.measured, t.ahead);
-        } else {
-            if (t.measured && !answered)
-                ++attempts;
-            v = lessons::judgeAttempt(q, *t.answer, t.measured, answered ? 2 : attempts, t.ahead);
-        }
-        answered = answered || v.shown;
-        out.push_back(v);
-    }
+    lessons::TryCount count;
+    for (const lessons::AnswerTry& t : tries)
+        out.push_back(lessons::judgeTry(q, t, count));
     return out;
 }
 
