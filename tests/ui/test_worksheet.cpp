@@ -99,6 +99,23 @@ bool fontsEmbedded(const QString& pdf)
     return true;
 }
 
+/// Every page A4 portrait (pdfinfo of the first and the last page).
+bool pagesAreA4(const QString& pdf)
+{
+    const Tool run =
+        runTool(QStringLiteral("pdfinfo"), {QStringLiteral("-f"), QStringLiteral("1"),
+                                            QStringLiteral("-l"), QStringLiteral("1000"), pdf});
+    const QStringList sizes =
+        run.out.split(u'\n').filter(QRegularExpression(QStringLiteral("^Page +\\d+ size:")));
+    if (run.exitCode != 0 || sizes.isEmpty())
+        return false;
+    for (const QString& line : sizes)
+        if (!line.contains(QStringLiteral("595.28 x 841.89 pts (A4)")) &&
+            !line.contains(QStringLiteral("595 x 842 pts (A4)")))
+            return false;
+    return true;
+}
+
 /// How many figures of step `step` (1-based) the text captions: "Figure 2.1:", "Figure 2.2:"…
 int figuresOfStep(const QString& text, const QString& word, int step)
 {
@@ -228,6 +245,7 @@ void TestWorksheet::handInAfterAnswering()
     }
     QCOMPARE(rasterImages(pdf), 0);
     QVERIFY(fontsEmbedded(pdf));
+    QVERIFY(pagesAreA4(pdf));
 
     // The answers file beside it reads back, and makes the same sheet without the window.
     const QString answersPath = ui::answersPathFor(pdf);
@@ -293,6 +311,7 @@ void TestWorksheet::emptySheetAndKey()
     QCOMPARE(rasterImages(empty), 0);
     QCOMPARE(rasterImages(key), 0);
     QVERIFY(fontsEmbedded(empty) && fontsEmbedded(key));
+    QVERIFY(pagesAreA4(empty) && pagesAreA4(key));
 
     // rigidlab-cli makes the same two sheets.
     for (const auto& [file, text, extra] :
