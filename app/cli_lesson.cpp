@@ -58,8 +58,9 @@ int writeWorksheetCommand(const CommandLine& args, const QString& lessonPath, co
             return inputError(read.error);
         answers = read.answers;
     }
+    // --lang was checked; the answers' language by their reader. English without either.
     QString language = args.value(QStringLiteral("lang")).value_or(answers.language);
-    if (language.isEmpty() || !lessons::setLessonLanguage(language))
+    if (language.isEmpty())
         language = QStringLiteral("en");
     lessons::setLessonLanguage(language);
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(lessonPath);

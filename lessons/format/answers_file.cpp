@@ -2,6 +2,7 @@
 #include "format/answers_file.h"
 
 #include "format/json_reader.h"
+#include "format/languages.h"
 
 #include <QDate>
 #include <QJsonArray>
@@ -145,6 +146,10 @@ bool readAnswers(JsonReader& r, const QJsonObject& root, Answers& out)
         !readText(r, root, u"class", out.className, false) ||
         !readText(r, root, u"date", out.date, false))
         return false;
+    if (!out.language.isEmpty() && !isShippedLanguage(out.language))
+        return r.fail(QStringLiteral("language"),
+                      FileMessages::tr("unknown language \"%1\" (expected %2)")
+                          .arg(out.language, shippedLanguageCodes()));
     if (!out.date.isEmpty() && !QDate::fromString(out.date, Qt::ISODate).isValid())
         return r.fail(QStringLiteral("date"),
                       FileMessages::tr("must be a date YYYY-MM-DD, got \"%1\"").arg(out.date));

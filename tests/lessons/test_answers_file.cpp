@@ -109,6 +109,8 @@ void TestAnswersFile::refusesDamaged_data()
     QTest::newRow("student-long")
         << withRest((R"(, "student": ")" + QByteArray(201, 'x') + '"').constData())
         << QStringLiteral("student: longer than 200 characters");
+    QTest::newRow("language-unknown")
+        << withRest(R"(, "language": "de")") << QStringLiteral("language: unknown language \"de\"");
     QTest::newRow("date-bad") << withRest(R"(, "date": "3.12.2026")")
                               << QStringLiteral("date: must be a date YYYY-MM-DD");
     QTest::newRow("steps-object") << withRest(R"(, "steps": {})")
