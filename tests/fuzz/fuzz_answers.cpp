@@ -30,8 +30,8 @@ void checkValue(const std::optional<double>& value)
 
 void checkAnswers(const lessons::Answers& a)
 {
-    for (const QString* text : {&a.lessonFile, &a.lessonTitle, &a.language, &a.student,
-                                &a.className, &a.date})
+    for (const QString* text :
+         {&a.lessonFile, &a.lessonTitle, &a.language, &a.student, &a.className, &a.date})
         FUZZ_CHECK(text->size() <= lessons::kMaxAnswerText && !text->contains(u'\n'));
     FUZZ_CHECK(a.steps.size() <= static_cast<std::size_t>(lessons::kMaxAnswerSteps));
     for (const lessons::StepAnswers& step : a.steps) {
