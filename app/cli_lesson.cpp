@@ -5,7 +5,9 @@
 
 #include "common/language.h"
 #include "plots/lesson_export.h"
+#include "worksheet/worksheet.h"
 
+#include "format/answers_file.h"
 #include "format/data_dirs.h"
 #include "format/languages.h"
 #include "format/lesson.h"
@@ -43,6 +45,50 @@ void printOutline(const lessons::Lesson& lesson)
     }
 }
 
+/// `--worksheet OUT.pdf`: the empty sheet, the key (--key) or a student's sheet from the
+/// answers the window saved (--answers), in --lang or else the language the answers were
+/// given in.
+int writeWorksheetCommand(const CommandLine& args, const QString& lessonPath, const QString& out)
+{
+    lessons::Answers answers;
+    const auto answersPath = args.value(QStringLiteral("answers"));
+    if (answersPath) {
+        const lessons::AnswersLoadResult read = lessons::loadAnswersFile(*answersPath);
+        if (!read.ok)
+            return inputError(read.error);
+        answers = read.answers;
+    }
+    // --lang was checked; the answers' language by their reader. English without either.
+    QString language = args.value(QStringLiteral("lang")).value_or(answers.language);
+    if (language.isEmpty())
+        language = QStringLiteral("en");
+    lessons::setLessonLanguage(language);
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(lessonPath);
+    printWarnings(loaded.warnings);
+    if (!loaded.ok)
+        return inputError(loaded.error);
+    std::vector<int> questions;
+    for (const lessons::LessonStep& step : loaded.lesson.steps)
+        questions.push_back(static_cast<int>(step.questions.size()));
+    if (const QString bad = lessons::answersMismatch(answers, questions); !bad.isEmpty())
+        return inputError(QStringLiteral("%1: %2 (answers for another lesson?)")
+                              .arg(answersPath.value_or(QString()), bad));
+    if (const auto student = args.value(QStringLiteral("student")))
+        answers.student = *student;
+    // The sheet speaks the lesson's language; the program's own messages stay English.
+    ui::applyLanguage(language);
+    const ui::WorksheetKind kind = args.isSet(QStringLiteral("key")) ? ui::WorksheetKind::Key
+                                   : answersPath                     ? ui::WorksheetKind::Answers
+                                                                     : ui::WorksheetKind::Empty;
+    const ui::WorksheetResult written = ui::writeWorksheet(loaded.lesson, answers, kind, out);
+    if (!written.ok)
+        return outputError(written.error);
+    printOut(QStringLiteral("wrote %1 (%2 pages)\n")
+                 .arg(QDir::toNativeSeparators(out))
+                 .arg(written.pages));
+    return kExitOk;
+}
+
 } // namespace
 
 void addLanguageOption(CommandLine& args)
@@ -67,6 +113,10 @@ int commandLesson(const QStringList& words)
 {
     CommandLine args(QStringLiteral("lesson"));
     args.addValue(QStringLiteral("export"), QStringLiteral("folder"));
+    args.addValue(QStringLiteral("worksheet"), QStringLiteral("PDF file"));
+    args.addValue(QStringLiteral("student"), QStringLiteral("name"));
+    args.addValue(QStringLiteral("answers"), QStringLiteral("answers file"));
+    args.addSwitch(QStringLiteral("key"));
     addLanguageOption(args);
     if (!args.parse(words))
         return usageError(args.command(), args.error());
@@ -79,6 +129,21 @@ int commandLesson(const QStringList& words)
     const auto path = args.onlyFile(QStringLiteral("lesson file"));
     if (!path)
         return usageError(args.command(), args.error());
+    const auto worksheet = args.value(QStringLiteral("worksheet"));
+    if (worksheet && worksheet->isEmpty())
+        return usageError(args.command(), QStringLiteral("--worksheet: needs a PDF file"));
+    if (worksheet && exportDir)
+        return usageError(args.command(),
+                          QStringLiteral("--worksheet and --export: one at a time"));
+    for (const char* option : {"student", "answers", "key"})
+        if (!worksheet && args.isSet(QLatin1StringView(option)))
+            return usageError(
+                args.command(),
+                QStringLiteral("--%1: only with --worksheet").arg(QLatin1StringView(option)));
+    if (args.isSet(QStringLiteral("key")) && args.isSet(QStringLiteral("student")))
+        return usageError(args.command(), QStringLiteral("--key: the key has no student"));
+    if (worksheet)
+        return writeWorksheetCommand(args, *path, *worksheet);
 
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(*path);
     printWarnings(loaded.warnings);

@@ -63,6 +63,13 @@ Commands:
       --lang en|cs           the language of the lesson's texts: outline, step titles,
                              plot titles, axes, legends and captions of --export (default en;
                              English where a text has none)
+      --worksheet OUT.pdf    write the lesson's worksheet (A4 PDF): empty, to print before
+                             class; with --answers FILE the student's, from the answers
+                             file the window saves beside a handed-in sheet
+                             (lessons/ANSWERS_FORMAT.md); with --key the teacher's key
+      --student NAME         the name on the worksheet (instead of the answers file's)
+      --answers FILE         the answers the sheet shows (its language is the default)
+      --key                  the measured answers, for the teacher
   lessons                    the shipped lessons: each file's path and title (the data
                              folder: RIGIDLAB_DATA_DIR, else beside the installed program),
                              then the user's own (~/.local/share/rigidlab/lessons), marked

@@ -297,6 +297,10 @@
         <source>Import it as a measurement</source>
         <translation>Importovat ho jako měření</translation>
     </message>
+    <message>
+        <source>Hand in the lesson&apos;s worksheet (PDF)</source>
+        <translation>Odevzdat pracovní list lekce (PDF)</translation>
+    </message>
 </context>
 <context>
     <name>DivergenceWords</name>
@@ -941,6 +945,38 @@
         <source>must be a colour &quot;#rrggbb&quot; (six hexadecimal digits, as &quot;#d04030&quot;), got &quot;%1&quot;</source>
         <translation>musí být barva &quot;#rrggbb&quot; (šest šestnáctkových číslic, např. &quot;#d04030&quot;), je &quot;%1&quot;</translation>
     </message>
+    <message>
+        <source>must be one line</source>
+        <translation>musí být na jednom řádku</translation>
+    </message>
+    <message>
+        <source>more than %1 entries</source>
+        <translation>víc než %1 položek</translation>
+    </message>
+    <message>
+        <source>must be from -%1 to %1, got %2</source>
+        <translation>musí být od -%1 do %1, je %2</translation>
+    </message>
+    <message>
+        <source>an answers file</source>
+        <translation>soubor odpovědí</translation>
+    </message>
+    <message>
+        <source>must be a date YYYY-MM-DD, got &quot;%1&quot;</source>
+        <translation>musí být datum RRRR-MM-DD, je „%1“</translation>
+    </message>
+    <message>
+        <source>must be a JSON object {...}</source>
+        <translation>musí být objekt JSON {...}</translation>
+    </message>
+    <message>
+        <source>steps: %1 steps, the lesson has %2</source>
+        <translation>steps: %1 kroků, lekce jich má %2</translation>
+    </message>
+    <message>
+        <source>steps[%1].questions: %2 questions, the lesson&apos;s step %3 has %4</source>
+        <translation>steps[%1].questions: %2 otázek, krok %3 lekce jich má %4</translation>
+    </message>
 </context>
 <context>
     <name>Judge</name>
@@ -1374,6 +1410,124 @@
         <source>–</source>
         <comment>no drift to show</comment>
         <translation>–</translation>
+    </message>
+</context>
+<context>
+    <name>Worksheet</name>
+    <message>
+        <source>… not measured yet</source>
+        <translation>… ještě nezměřeno</translation>
+    </message>
+    <message>
+        <source>◆ shown</source>
+        <translation>◆ ukázáno</translation>
+    </message>
+    <message>
+        <source>✓ right</source>
+        <translation>✓ správně</translation>
+    </message>
+    <message>
+        <source>✗ not right</source>
+        <translation>✗ nesprávně</translation>
+    </message>
+    <message>
+        <source>Settings: integrator %1 · dt = %2 s · solver %3</source>
+        <translation>Nastavení: integrátor %1 · dt = %2 s · řešič %3</translation>
+    </message>
+    <message>
+        <source>Worksheet</source>
+        <translation>Pracovní list</translation>
+    </message>
+    <message>
+        <source>Worksheet to fill in</source>
+        <translation>Pracovní list k&#xa0;vyplnění</translation>
+    </message>
+    <message>
+        <source>Teacher&apos;s key: the measured answers</source>
+        <translation>Klíč pro učitele: změřené odpovědi</translation>
+    </message>
+    <message>
+        <source>Name: %1</source>
+        <translation>Jméno: %1</translation>
+    </message>
+    <message>
+        <source>Class: %1</source>
+        <translation>Třída: %1</translation>
+    </message>
+    <message>
+        <source>Date: %1</source>
+        <translation>Datum: %1</translation>
+    </message>
+    <message>
+        <source>Step %1: %2</source>
+        <translation>Krok %1: %2</translation>
+    </message>
+    <message>
+        <source>Figure %1.%2: %3</source>
+        <translation>Obrázek %1.%2: %3</translation>
+    </message>
+    <message>
+        <source>Question %1.%2: %3</source>
+        <translation>Otázka %1.%2: %3</translation>
+    </message>
+    <message>
+        <source>Your prediction (%1):</source>
+        <translation>Vaše předpověď (%1):</translation>
+    </message>
+    <message>
+        <source>Measured (%1):</source>
+        <translation>Naměřeno (%1):</translation>
+    </message>
+    <message>
+        <source>Not measured within the step&apos;s run.</source>
+        <translation>V&#xa0;běhu kroku se nic nezměřilo.</translation>
+    </message>
+    <message>
+        <source>Measured: %1 (accepted from %2 to %3)</source>
+        <translation>Naměřeno: %1 (uznává se od %2 do %3)</translation>
+    </message>
+    <message>
+        <source>Not answered.</source>
+        <translation>Bez odpovědi.</translation>
+    </message>
+    <message>
+        <source>Prediction %1</source>
+        <translation>Předpověď %1</translation>
+    </message>
+    <message>
+        <source>Answer %1</source>
+        <translation>Odpověď %1</translation>
+    </message>
+    <message>
+        <source>Show me</source>
+        <translation>Ukaž mi</translation>
+    </message>
+    <message>
+        <source>(no answer)</source>
+        <translation>(bez odpovědi)</translation>
+    </message>
+    <message>
+        <source>Measured value: %1</source>
+        <translation>Naměřená hodnota: %1</translation>
+    </message>
+    <message>
+        <source>teacher&apos;s key</source>
+        <translation>klíč pro učitele</translation>
+    </message>
+    <message>
+        <source>%1 does not fit the lesson: %2</source>
+        <translation>%1 nepatří k&#xa0;lekci: %2</translation>
+    </message>
+    <message>
+        <source>cannot write %1: could not start drawing the PDF</source>
+        <translation>nelze zapsat %1: kreslení PDF nešlo začít</translation>
+    </message>
+</context>
+<context>
+    <name>WorksheetText</name>
+    <message>
+        <source>page %1</source>
+        <translation>strana %1</translation>
     </message>
 </context>
 <context>
@@ -2386,6 +2540,102 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>The lesson was not opened: the edited scene stays.</source>
         <translation>Lekce nebyla otevřena: upravovaná scéna zůstává.</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Jméno:</translation>
+    </message>
+    <message>
+        <source>C&amp;lass:</source>
+        <translation>&amp;Třída:</translation>
+    </message>
+    <message>
+        <source>Your name</source>
+        <translation>Vaše jméno</translation>
+    </message>
+    <message>
+        <source>Your name, for the worksheet you hand in</source>
+        <translation>Vaše jméno na pracovní list, který odevzdáte</translation>
+    </message>
+    <message>
+        <source>Your class</source>
+        <translation>Vaše třída</translation>
+    </message>
+    <message>
+        <source>Your class, for the worksheet you hand in</source>
+        <translation>Vaše třída na pracovní list, který odevzdáte</translation>
+    </message>
+    <message>
+        <source>Open a lesson first.</source>
+        <translation>Nejdřív otevřete lekci.</translation>
+    </message>
+    <message>
+        <source>Hand in</source>
+        <translation>Odevzdat</translation>
+    </message>
+    <message>
+        <source>Type your name first: it goes on the worksheet.</source>
+        <translation>Nejdřív napište své jméno: patří na pracovní list.</translation>
+    </message>
+    <message>
+        <source>Hand in the worksheet</source>
+        <translation>Odevzdat pracovní list</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>Dokument PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Cannot hand in</source>
+        <translation>Nelze odevzdat</translation>
+    </message>
+    <message>
+        <source>Handed in</source>
+        <translation>Odevzdáno</translation>
+    </message>
+    <message>
+        <source>Your worksheet is in %1, your answers beside it in %2.</source>
+        <translation>Váš pracovní list je v&#xa0;%1, vaše odpovědi vedle něj v&#xa0;%2.</translation>
+    </message>
+    <message>
+        <source>Finish: hand in the worksheet…</source>
+        <translation>Konec: odevzdat pracovní list…</translation>
+    </message>
+    <message>
+        <source>Hand in…</source>
+        <translation>Odevzdat…</translation>
+    </message>
+    <message>
+        <source>Write your worksheet as a PDF: the questions, your answers and their verdicts, the plots and the settings (%1)</source>
+        <translation>Zapíše váš pracovní list jako PDF: otázky, vaše odpovědi a&#xa0;jejich hodnocení, grafy a&#xa0;nastavení (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Worksheet to print…</source>
+        <translation>&amp;Pracovní list k&#xa0;tisku…</translation>
+    </message>
+    <message>
+        <source>The open lesson&apos;s questions with lines to write on, and its figures</source>
+        <translation>Otázky otevřené lekce s&#xa0;řádky na psaní a&#xa0;její obrázky</translation>
+    </message>
+    <message>
+        <source>Teacher&apos;s &amp;key…</source>
+        <translation>&amp;Klíč pro učitele…</translation>
+    </message>
+    <message>
+        <source>The open lesson&apos;s questions with the values the simulation measures</source>
+        <translation>Otázky otevřené lekce s&#xa0;hodnotami, které simulace naměří</translation>
+    </message>
+    <message>
+        <source>Teacher&apos;s key</source>
+        <translation>Klíč pro učitele</translation>
+    </message>
+    <message>
+        <source>Worksheet to print</source>
+        <translation>Pracovní list k&#xa0;tisku</translation>
+    </message>
+    <message>
+        <source>Cannot write the worksheet</source>
+        <translation>Pracovní list nelze zapsat</translation>
     </message>
 </context>
 <context>

@@ -141,6 +141,23 @@ Verdict showAnswer(const Question& q, std::optional<double> value, bool ahead)
     return verdict;
 }
 
+Verdict judgeTry(const Question& q, const AnswerTry& attempt, TryCount& count)
+{
+    Verdict verdict;
+    if (!attempt.answer) {
+        verdict = showAnswer(q, attempt.measured, attempt.ahead);
+    } else {
+        // Only tries judged against a value count; once the value was given, every try is
+        // judged as a later one (with the value, not the hint).
+        if (attempt.measured && !count.answered)
+            ++count.attempts;
+        verdict = judgeAttempt(q, *attempt.answer, attempt.measured,
+                               count.answered ? 2 : count.attempts, attempt.ahead);
+    }
+    count.answered = count.answered || verdict.shown;
+    return verdict;
+}
+
 std::optional<double> measureAhead(const LessonStep& step, const Measure& measure)
 {
     std::vector<physics::World> worlds = buildStepWorlds(step);

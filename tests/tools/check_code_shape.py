@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The code's shape, as docs/design.md promises it: no source or test file over 600 lines, no
-function over 80 lines except those named in design.md's "Long on purpose" table, and no ui/
-subfolder that includes another which includes it back.
+function over 80 lines except those named in design.md's "Long on purpose" table, no ui/
+subfolder that includes another which includes it back, and no ui/ room that includes one of
+its own or a later layer (UI_LAYERS).
 
 Functions are found by Universal Ctags (their first and last line); a file is every tracked
 .cpp/.h under physics/, lessons/, ui/, app/, bench/ and tests/. Exit 0 when everything holds;
@@ -63,6 +64,30 @@ def long_functions(root, files):
     return found
 
 
+# The ui/ rooms in their layers, lowest first (docs/design.md, "Layers and folders"): a room
+# includes only rooms of a lower layer. Rooms of one layer (editor, lesson_player) do not
+# include each other. A room not listed here is only checked for include cycles.
+UI_LAYERS = {"common": 0, "simulation": 1, "plots": 2, "worksheet": 3, "view": 4, "panels": 5,
+             "editor": 6, "lesson_player": 6, "measure": 7, "window": 8}
+
+
+def layer_breaches(root):
+    ui = root / "ui"
+    if not ui.is_dir():
+        return []
+    pattern = re.compile(r'#include\s+"([a-z_]+)/')
+    found = set()
+    for room in sorted(p.name for p in ui.iterdir() if p.is_dir() and p.name in UI_LAYERS):
+        for f in sorted((ui / room).rglob("*")):
+            if f.suffix not in (".cpp", ".h"):
+                continue
+            for m in pattern.finditer(f.read_text(encoding="utf-8", errors="replace")):
+                used = m.group(1)
+                if used != room and UI_LAYERS.get(used, -1) >= UI_LAYERS[room]:
+                    found.add((f.relative_to(root).as_posix(), used))
+    return sorted(found)
+
+
 def include_cycles(root):
     ui = root / "ui"
     if not ui.is_dir():
@@ -94,6 +119,8 @@ def main():
                             f"{MAX_FUNCTION_LINES}, or listed in docs/design.md, Long on purpose)")
     for a, b in include_cycles(root):
         problems.append(f"ui/{a} and ui/{b} include each other")
+    for path, used in layer_breaches(root):
+        problems.append(f"{path}: includes ui/{used}, a room of its own or a later layer")
     for p in problems:
         print(p)
     print(f"{len(files)} files read, {len(problems)} findings")

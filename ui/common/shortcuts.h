@@ -89,6 +89,8 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "Open a lesson")},
     ControlInfo{"importMeasurement", "Ctrl+I", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Import a measurement (CSV) to compare and fit")},
+    ControlInfo{"handIn", "Ctrl+H", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Hand in the lesson's worksheet (PDF)")},
     ControlInfo{"quit", "Ctrl+Q", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Quit RigidLab")},
     ControlInfo{"help", "F1", nullptr,

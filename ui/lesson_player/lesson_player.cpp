@@ -86,12 +86,15 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
       m_restart(new QPushButton(tr("Restart step"), this)),
       m_next(new QPushButton(tr("Next ▶"), this)),
       m_export(new QPushButton(tr("Export plots…"), this)),
+      m_handIn(new QPushButton(tr("Hand in…"), this)), m_studentBox(new QWidget(this)),
+      m_studentName(new QLineEdit(m_studentBox)), m_studentClass(new QLineEdit(m_studentBox)),
       m_start(new QPushButton(tr("Start the first lesson"), this))
 {
     auto* layout = new QVBoxLayout(this);
     m_lessonBox->view()->setItemDelegate(new FullTextDelegate(m_lessonBox->view()));
     layout->addWidget(m_lessonBox);
     buildIntroduction(layout);
+    buildStudentFields(layout);
     // On a first start, with no lesson open, the way in: one button to the first lesson.
     m_start->setObjectName(QStringLiteral("startFirstLesson"));
     connect(m_start, &QPushButton::clicked, this, [this] {
@@ -179,12 +182,14 @@ void LessonPlayer::buildNavigation(QVBoxLayout* layout)
     buttons->addWidget(m_next, 0, 1);
     buttons->addWidget(m_restart, 1, 0);
     buttons->addWidget(m_export, 1, 1);
+    buttons->addWidget(m_handIn, 2, 0, 1, 2);
     layout->addWidget(m_navigation);
 
     connect(m_back, &QPushButton::clicked, this, &LessonPlayer::back);
     connect(m_next, &QPushButton::clicked, this, &LessonPlayer::next);
     connect(m_restart, &QPushButton::clicked, this, &LessonPlayer::restartStep);
     connect(m_export, &QPushButton::clicked, this, &LessonPlayer::exportRequested);
+    connect(m_handIn, &QPushButton::clicked, this, &LessonPlayer::handInInteractively);
     connect(m_lessonBox, &QComboBox::currentIndexChanged, this,
             &LessonPlayer::showCurrentLessonTip);
     connect(m_lessonBox, &QComboBox::activated, this, [this](int index) {
@@ -265,6 +270,7 @@ QString LessonPlayer::openLesson(const QString& path)
     if (index >= 0)
         m_lessonBox->setCurrentIndex(index);
     m_step = 0;
+    startRecord(*m_lesson);
     showStep();
     emit stepActivated(*m_lesson, m_step);
     return QString();
@@ -284,6 +290,7 @@ void LessonPlayer::goToStep(int index)
 {
     if (!m_lesson || index < 0 || index >= static_cast<int>(m_lesson->steps.size()))
         return;
+    recordSettings(); // the world still runs the step being left
     m_step = index;
     showStep();
     emit stepActivated(*m_lesson, m_step);
@@ -305,10 +312,11 @@ void LessonPlayer::restartStep()
 void LessonPlayer::showStep()
 {
     const bool has = m_lesson != nullptr;
-    for (QWidget* w : {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepCount),
-                       static_cast<QWidget*>(m_stepTitle), static_cast<QWidget*>(m_restart),
-                       static_cast<QWidget*>(m_back), static_cast<QWidget*>(m_next),
-                       static_cast<QWidget*>(m_export)})
+    for (QWidget* w :
+         {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepCount),
+          static_cast<QWidget*>(m_stepTitle), static_cast<QWidget*>(m_restart),
+          static_cast<QWidget*>(m_back), static_cast<QWidget*>(m_next),
+          static_cast<QWidget*>(m_export), static_cast<QWidget*>(m_handIn), m_studentBox})
         w->setVisible(has);
     // No lesson: a "start here" page instead of an empty text box.
     m_text->setVisible(has);
@@ -352,6 +360,7 @@ void LessonPlayer::showStep()
     m_back->setEnabled(m_step > 0);
     m_next->setEnabled(m_step + 1 < static_cast<int>(l.steps.size()));
     m_export->setEnabled(!s.plots.isEmpty());
+    showHandIn();
     buildQuestions();
     fitIntroduction();
     // A new step is read from its top.

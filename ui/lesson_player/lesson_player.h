@@ -3,6 +3,7 @@
 // The lesson player: pick a lesson, read a step, answer its questions, go back and forth.
 // It only shows; the window applies each step (scene, settings, panels) when told to.
 
+#include "format/answers_file.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
 #include "run/measurements.h"
@@ -18,6 +19,7 @@
 class QComboBox;
 class QLabel;
 class QLineEdit;
+class QMenu;
 class QProgressBar;
 class QScrollArea;
 class QPushButton;
@@ -30,15 +32,8 @@ class SimulationController;
 class StepText;
 
 /// One try at a question: Check with a typed answer, or "Show me" (no answer), with the
-/// measured value it was judged against.
-struct QuestionTry {
-    std::optional<double> answer;   ///< in the question's unit; nullopt for "Show me"
-    std::optional<double> measured; ///< nullopt while not measured yet
-    /// Measured by a run without a window while the window's run was held back: the verdict
-    /// says what the run will measure.
-    bool ahead = false;
-    bool operator==(const QuestionTry&) const = default;
-};
+/// measured value it was judged against. The same record the answers file keeps.
+using QuestionTry = lessons::AnswerTry;
 
 /// What the student did on the current step's questions: enough to show the same verdicts
 /// again, in another language (the language switch).
@@ -93,18 +88,36 @@ public:
     /// fills the boxes: the same verdicts in the current language, and what they released.
     void restoreWork(const StepWork& work);
 
+    /// The student's name and class, typed once above the lesson and kept for the session
+    /// (another lesson, a language switch).
+    void setStudent(const QString& name, const QString& className);
+    QString student() const;
+    /// The work on the open lesson so far, every step visited, with who and when: what Hand in
+    /// writes (the worksheet and the answers file beside it).
+    lessons::Answers answers() const;
+    /// Writes the worksheet to `pdfPath` and the answers beside it (answersPathFor). Returns
+    /// the error, empty on success.
+    QString handIn(const QString& pdfPath);
+    /// For the teacher: "Worksheet to print…" (the empty sheet) and "Teacher's key…" added to
+    /// `menu`, on while a lesson is open.
+    void addWorksheetActions(QMenu& menu);
+
 public slots:
     void next();
     void back();
     void restartStep();
     void goToStep(int index);
     void closeLesson();
+    /// Asks for the name if none is typed, then for the file, and hands in.
+    void handInInteractively();
 
 signals:
     /// The window should set up this step.
     void stepActivated(const rigidlab::lessons::Lesson& lesson, int step);
     void exportRequested();
     void lessonClosed();
+    /// A worksheet was handed in: the PDF and the answers file beside it.
+    void handedIn(const QString& pdfPath, const QString& answersPath);
     /// An answer released some of what the step held back; `held` is what it still holds.
     void heldBackChanged(const QStringList& held);
 
@@ -128,6 +141,18 @@ private:
     /// than kTextShare of the column's height (unless the reader opened it by hand).
     void fitIntroduction();
     void buildQuestions();
+    /// The student's name and class fields.
+    void buildStudentFields(QVBoxLayout* layout);
+    /// Keeps question i's tries, and the settings the step runs with, in the lesson's record.
+    void recordTry(std::size_t i);
+    /// Keeps the settings the current step's world runs with in the lesson's record.
+    void recordSettings();
+    /// Starts the lesson's record, unless it is the lesson the session's record is of.
+    static void startRecord(const lessons::Lesson& lesson);
+    /// Asks for a file and writes the empty worksheet (or the key) of the open lesson there.
+    void writeSheetInteractively(bool key);
+    /// On the last step, Hand in says that it finishes the lesson.
+    void showHandIn();
     /// Judges a try at question i (and remembers it): its verdict shown, what it releases
     /// released.
     void applyTry(std::size_t i, const QuestionTry& attempt);
@@ -160,6 +185,10 @@ private:
     QPushButton* m_restart;
     QPushButton* m_next;
     QPushButton* m_export;
+    QPushButton* m_handIn;
+    QWidget* m_studentBox; ///< the name and class, shown while a lesson is open
+    QLineEdit* m_studentName;
+    QLineEdit* m_studentClass;
     QPushButton* m_start; ///< opens the first lesson; shown while none is open
     struct QuestionRow {
         QLineEdit* edit = nullptr;

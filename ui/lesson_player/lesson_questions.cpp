@@ -130,13 +130,13 @@ void LessonPlayer::applyTry(std::size_t i, const QuestionTry& attempt)
     const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
     QuestionRow& row = m_rows[i];
     row.tries.push_back(attempt);
-    if (!attempt.answer)
-        return settle(i, lessons::showAnswer(q, attempt.measured, attempt.ahead));
-    if (attempt.measured && !row.answered)
-        ++row.attempts;
-    // Once answered, every later try is judged with the value given.
-    settle(i, lessons::judgeAttempt(q, *attempt.answer, attempt.measured,
-                                    row.answered ? 2 : row.attempts, attempt.ahead));
+    recordTry(i);
+    // Counted here; whether it answered the question is settle()'s to say (it also releases
+    // what the question held back).
+    lessons::TryCount count{row.attempts, row.answered};
+    const lessons::Verdict verdict = lessons::judgeTry(q, attempt, count);
+    row.attempts = count.attempts;
+    settle(i, verdict);
 }
 
 StepWork LessonPlayer::work() const

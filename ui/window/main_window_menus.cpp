@@ -70,6 +70,7 @@ void MainWindow::buildFileMenu()
                                [this, path] { openLesson(path); });
     }
     lessonsMenu->setEnabled(!m_player->lessonPaths().isEmpty());
+    m_player->addWorksheetActions(*file); // the open lesson's empty worksheet and its key
     QMenu* recentMenu = file->addMenu(tr("Open &recent"));
     recentMenu->setObjectName(QStringLiteral("recentMenu")); // file names: no language
     QMenu* scenesMenu = file->addMenu(tr("&Shipped scenes"));
