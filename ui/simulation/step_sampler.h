@@ -7,6 +7,7 @@
 
 #include "simulation/sample_buffer.h"
 
+#include "export/step_time.h"
 #include "rigidlab/physics/world.h"
 
 #include <vector>
@@ -38,11 +39,9 @@ struct EnergyReference {
     }
 };
 
-/// The time of step k of a run on a fixed dt [s], as the double nearest the exact product:
-/// with dt = 0.01, step 35 is at 35 / 100 = 0.35, where k * dt gives 0.35000000000000003 and
-/// the sum of k dts 0.35000000000000009. Exact when dt is a decimal of up to 9 places or the
-/// reciprocal of a whole number (1/240 s); k * dt otherwise.
-double stepTime(long long k, double dt);
+/// The time of step k of a run on a fixed dt [s], as a person writes it (lessons/export/
+/// step_time.h has the rule): with dt = 0.01, step 35 is at 0.35.
+using lessons::stepTime;
 /// The time of the world's current step [s]: stepTime(steps, dt) when the world ran on one dt
 /// since t = 0, so that the plots and their CSV say t = 0.35; after a change of dt mid-run,
 /// the world's summed time.
