@@ -90,6 +90,9 @@ public:
     /// the lesson's and its step ("Energy drift, step 2").
     void setExportContext(const QString& context) { m_exportContext = context; }
     QString exportContext() const { return m_exportContext; }
+    /// The file name an export dialog proposes: the context, the plot's title and the
+    /// language, safe on a Windows share and a USB stick ("welcome_energy_en.csv").
+    QString proposedFileName(ExportFormat format) const;
 
     /// Labels a value axis "quantity [unit]"; the unit also heads the CSV columns.
     void setYAxisLabel(const QString& quantity, const QString& unit, YAxis axis = YAxis::Left);
@@ -280,9 +283,6 @@ private:
     void placeFollowButton();
     void showContextMenu(const QPoint& pos);
     void installMenuAndCopy(); ///< the context menu, and Ctrl+C for copyData()
-    /// A file name for an export in `format`: the context (exportContext), the plot and the
-    /// language, safe on any file system.
-    QString proposedFileName(ExportFormat format) const;
     void onRangeChanged();
     QCPAxis* axisFor(YAxis axis) const;
 
