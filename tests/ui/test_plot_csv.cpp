@@ -6,6 +6,7 @@
 
 #include "common/export_folder.h"
 #include "common/language.h"
+#include "panels/fitting_table.h"
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
 #include "simulation/step_sampler.h"
@@ -104,6 +105,7 @@ private slots:
     void timesAsWritten();
     void dialogProposesAndRemembers();
     void copyIsTabSeparatedInTheLanguage();
+    void tableReadoutInBothDialects();
 };
 
 void TestPlotCsv::timesAsWritten_data()
@@ -227,6 +229,40 @@ void TestPlotCsv::copyIsTabSeparatedInTheLanguage()
     QCOMPARE(table.rows.at(3).front(), QStringLiteral("0,01"));
     const auto py = readNumber(table.rows.at(3).at(2), ',');
     QVERIFY(py && *py < 0); // falling
+}
+
+// A lesson's readout table: its CSV in either dialect reads back to the same numbers, and
+// Ctrl+C copies it tab-separated with the language's decimal sign.
+void TestPlotCsv::tableReadoutInBothDialects()
+{
+    CsvTable csv;
+    csv.headers = {QStringLiteral("bounce"), QStringLiteral("h [m]"), QStringLiteral("e; ratio")};
+    csv.rows = {{QStringLiteral("1"), csvNumber(0.1 + 0.2), csvNumber(0.75)},
+                {QStringLiteral("2"), csvNumber(-29.43), QString()}};
+    const QByteArray plain = csvBytes(csv);
+    const QByteArray czech =
+        csvBytes(csv, lessons::csvConventions(lessons::CsvDialect::Spreadsheet, "cs"));
+    QVERIFY(!plain.startsWith("\xEF\xBB\xBF"));
+    QVERIFY(czech.startsWith("\xEF\xBB\xBF"));
+    const test::CsvTable p = readCsv(plain, ',');
+    const test::CsvTable c = readCsv(czech, ';');
+    QCOMPARE(c.rows.front().at(2), QStringLiteral("e; ratio")); // quoted, read back whole
+    QCOMPARE(c.rows.at(1).at(1), QStringLiteral("0,30000000000000004"));
+    for (int r = 1; r < 3; ++r)
+        for (int f = 0; f < 3; ++f) {
+            const auto a = readNumber(p.rows[r][f], '.');
+            const auto b = readNumber(c.rows[r][f], ',');
+            QVERIFY(a && b);
+            QVERIFY((std::isnan(*a) && std::isnan(*b)) || *a == *b);
+        }
+
+    FittingTable table;
+    table.setCsv(csv, QStringLiteral("bounces"));
+    QVERIFY(applyLanguage(QStringLiteral("cs")));
+    table.copyData();
+    QVERIFY(applyLanguage(QStringLiteral("en")));
+    const test::CsvTable copied = readCsv(QApplication::clipboard()->text().toUtf8(), '\t');
+    QCOMPARE(copied.rows.at(2).at(1), QStringLiteral("-29,43"));
 }
 
 RIGIDLAB_TEST_MAIN(TestPlotCsv)
