@@ -4,6 +4,7 @@
 #include "export/csv_columns.h"
 #include "export/csv_writer.h"
 #include "export/noise_floor.h"
+#include "export/quantity_scales.h"
 #include "export/step_time.h"
 #include "format/atomic_file.h"
 #include "format/divergence_message.h"
@@ -154,9 +155,11 @@ void writeDiagnosticsRow(CsvWriter& csv, const physics::World& world,
     for (double v : {d.kinetic, d.potential, d.total}) {
         csv.number(withoutNoise(v, scale));
     }
-    for (double v : {d.momentum.x(), d.momentum.y(), d.angularMomentum}) {
-        csv.number(withoutNoise(v, 0.0));
-    }
+    // The momenta's scales are the plots' (quantity_scales.h), taken of the bodies as they are.
+    const MomentumScales momentum = momentumScales(world);
+    csv.number(withoutNoise(d.momentum.x(), momentum.linear));
+    csv.number(withoutNoise(d.momentum.y(), momentum.linear));
+    csv.number(withoutNoise(d.angularMomentum, momentum.angular));
     csv.integer(d.contacts);
     const double dissipated = d.dissipated - start.dissipated;
     csv.number(withoutNoise(dissipated, scale));

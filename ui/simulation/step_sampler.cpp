@@ -20,24 +20,6 @@ double stepTime(const physics::World& world)
     return lessons::stepTime(world.stepCount(), world.def().dt, world.time());
 }
 
-MomentumScales momentumScales(const physics::World& world)
-{
-    double extent = kMinExtent;
-    for (const physics::Body& b : world.bodies())
-        if (b.isDynamic())
-            extent = std::max(extent, b.position.norm());
-    const double fall = std::sqrt(2.0 * world.def().gravity.norm() * extent);
-    MomentumScales s;
-    for (const physics::Body& b : world.bodies()) {
-        if (!b.isDynamic())
-            continue;
-        const double p = b.mass * (b.velocity.norm() + fall);
-        s.linear += p;
-        s.angular += p * extent + b.inertia * std::abs(b.angularVelocity);
-    }
-    return s;
-}
-
 bool SampleClock::due(double t)
 {
     // The 1e-12 keeps a step that lands on the interval, up to rounding, from being skipped.

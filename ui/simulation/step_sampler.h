@@ -7,6 +7,7 @@
 
 #include "simulation/sample_buffer.h"
 
+#include "export/quantity_scales.h"
 #include "export/step_time.h"
 #include "rigidlab/physics/world.h"
 
@@ -47,16 +48,11 @@ using lessons::stepTime;
 /// the world's summed time.
 double stepTime(const physics::World& world);
 
-/// What momenta are worth in a scene, from its bodies as they are now: each body's mass times
-/// its speed plus the speed of a fall across the scene, sqrt(2 |g| extent), and for angular
-/// momentum that times the extent (the farthest centre of mass from the origin, at least
-/// kMinExtent) plus I |omega|.
-struct MomentumScales {
-    double linear = 0;  ///< [kg m/s]
-    double angular = 0; ///< [kg m^2/s]
-};
-inline constexpr double kMinExtent = 0.1; ///< [m]
-MomentumScales momentumScales(const physics::World& world);
+/// What momenta are worth in a scene (lessons/export/quantity_scales.h): the plots' noise
+/// floor and the files' come from the same scales.
+using lessons::kMinExtent;
+using lessons::MomentumScales;
+using lessons::momentumScales;
 
 /// Takes a sample at most every kSampleInterval of simulated time: the first one always, then
 /// the first step at least the interval after the last sample.
