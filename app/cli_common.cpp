@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli_common.h"
 
+#include "common/language.h"
+#include "format/languages.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -182,6 +185,40 @@ std::optional<long long> wholeNumber(const QString& option, const QString& text,
         return std::nullopt;
     }
     return value;
+}
+
+std::optional<lessons::CsvConventions> csvOption(const CommandLine& args, QString& error)
+{
+    const auto lang = args.value(QStringLiteral("lang"));
+    if (lang && !lessons::isShippedLanguage(*lang)) {
+        error = QStringLiteral("--lang: unknown language \"%1\" (expected %2)")
+                    .arg(*lang, lessons::shippedLanguageCodes());
+        return std::nullopt;
+    }
+    const QString language = lang.value_or(QStringLiteral("en"));
+    const auto name = args.value(QStringLiteral("csv-dialect"));
+    if (!name)
+        return lessons::csvConventions(lessons::CsvDialect::Plain, language);
+    const auto dialect = lessons::csvDialectFromName(*name);
+    if (!dialect) {
+        error = QStringLiteral("--csv-dialect: unknown dialect \"%1\" (expected %2)")
+                    .arg(*name, lessons::csvDialectNames());
+        return std::nullopt;
+    }
+    return lessons::csvConventions(*dialect, language);
+}
+
+bool applyOutputLanguage(const CommandLine& args, QString& error)
+{
+    const auto lang = args.value(QStringLiteral("lang"));
+    if (!lang)
+        return true;
+    if (!ui::applyLanguage(*lang)) {
+        error = QStringLiteral("--lang: unknown language \"%1\" (expected %2)")
+                    .arg(*lang, lessons::shippedLanguageCodes());
+        return false;
+    }
+    return true;
 }
 
 } // namespace rigidlab::cli

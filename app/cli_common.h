@@ -4,6 +4,8 @@
 // command line (Qt's QCommandLineParser, one per command, with the messages of one style).
 // Messages stay English: scripts read them.
 
+#include "export/csv_dialect.h"
+
 #include <QCommandLineParser>
 #include <QString>
 #include <QStringList>
@@ -80,5 +82,14 @@ std::optional<double> positiveNumber(const QString& option, const QString& text,
 /// A whole number in [min, max] from an option's text, or nothing with `error` set.
 std::optional<long long> wholeNumber(const QString& option, const QString& text, long long min,
                                      long long max, QString& error);
+
+/// The CSV dialect of --csv-dialect plain|spreadsheet (plain when not given) in the language of
+/// --lang (English when not given), or nothing with `error` set.
+std::optional<lessons::CsvConventions> csvOption(const CommandLine& args, QString& error);
+
+/// Puts --lang's language in effect for what the command writes (CSV heads, handouts), after
+/// its input was read: its own messages stay English. True when --lang is not given; false for
+/// a language the lab does not ship (`error` says so).
+bool applyOutputLanguage(const CommandLine& args, QString& error);
 
 } // namespace rigidlab::cli

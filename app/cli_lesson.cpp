@@ -117,11 +117,15 @@ int commandLesson(const QStringList& words)
     args.addValue(QStringLiteral("student"), QStringLiteral("name"));
     args.addValue(QStringLiteral("answers"), QStringLiteral("answers file"));
     args.addSwitch(QStringLiteral("key"));
+    args.addValue(QStringLiteral("csv-dialect"), QStringLiteral("dialect"));
     addLanguageOption(args);
     if (!args.parse(words))
         return usageError(args.command(), args.error());
     QString languageError;
     if (!applyLanguageOption(args, languageError))
+        return usageError(args.command(), languageError);
+    const auto csv = csvOption(args, languageError);
+    if (!csv)
         return usageError(args.command(), languageError);
     const auto exportDir = args.value(QStringLiteral("export"));
     if (exportDir && exportDir->isEmpty())
@@ -156,10 +160,12 @@ int commandLesson(const QStringList& words)
 
     // The handouts speak the lesson's language (titles, axes, legends, captions, and the
     // locale's decimal comma on the axes); this program's own messages stay English, so the
-    // translation comes in only now, after loading. Files' numbers keep the decimal point.
+    // translation comes in only now, after loading. The CSV's numbers follow --csv-dialect.
     if (const auto lang = args.value(QStringLiteral("lang")))
         ui::applyLanguage(*lang);
-    const ui::PlotFilesResult written = ui::exportLessonPlots(loaded.lesson, *exportDir);
+    ui::ExportOptions options;
+    options.csv = *csv;
+    const ui::PlotFilesResult written = ui::exportLessonPlots(loaded.lesson, *exportDir, options);
     for (const QString& file : written.files)
         printOut(QStringLiteral("wrote %1\n").arg(QDir::toNativeSeparators(file)));
     if (!written.ok)

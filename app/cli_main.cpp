@@ -37,11 +37,16 @@ Commands:
       --dt H                 time step [s], overrides the scene's (1e-07 to 1)
       --integrator NAME      euler, symplectic-euler, verlet, rk4
       --solver NAME          seed-impulse, sequential-impulse, soft-step
-      --trace FILE.csv       step,t,body,x,y,angle,vx,vy,omega per dynamic body
-      --diagnostics FILE.csv step,t,kinetic,potential,total,px,py,angular_momentum,contacts,
-                             dissipated,drift; dissipated: energy taken by contacts,
-                             drag and dampers [J]; drift: the numerical error,
-                             (total + dissipated - E0)/|E0|
+      --trace FILE.csv       step, t [s], body, x [m], y [m], angle [rad], v_x [m/s],
+                             v_y [m/s], ω [rad/s] per dynamic body
+      --diagnostics FILE.csv step, t [s], E_k [J], E_p [J], E [J], p_x [kg m/s],
+                             p_y [kg m/s], L [kg m²/s], contacts, E_diss [J], drift [1];
+                             E_diss: energy taken by contacts, drag and dampers;
+                             drift: the numerical error, (E + E_diss - E0)/|E0|
+      --csv-dialect D        plain (default: comma, decimal point, no BOM) or spreadsheet
+                             (the --lang language's: Czech ';' and decimal comma; with a
+                             UTF-8 BOM); times as a person writes them, noise as 0
+      --lang en|cs           the language of the files' column heads (default en)
       --every K              write rows every K steps (default 1; step 0 and the last
                              step are always written)
       --profile              print each stage's time per step (broad phase, narrow phase,
@@ -60,6 +65,7 @@ Commands:
   lesson LESSON.json         a lesson's steps, with their plots, panels and questions
       --export DIR           run every step that has plots for its exportTime and write
                              them as PNG, PDF, SVG and CSV into DIR/NN-step-title/
+      --csv-dialect D        the handouts' CSV: plain (default) or spreadsheet (see run)
       --lang en|cs           the language of the lesson's texts: outline, step titles,
                              plot titles, axes, legends and captions of --export (default en;
                              English where a text has none)
@@ -197,8 +203,8 @@ bool readRunOptions(const CommandLine& args, lessons::RunOptions& options, QStri
 int commandRun(const QStringList& words)
 {
     CommandLine args(QStringLiteral("run"));
-    for (const char* name :
-         {"time", "steps", "dt", "integrator", "solver", "trace", "diagnostics", "every"})
+    for (const char* name : {"time", "steps", "dt", "integrator", "solver", "trace", "diagnostics",
+                             "every", "csv-dialect", "lang"})
         args.addValue(QLatin1StringView(name));
     args.addSwitch(QStringLiteral("profile"));
     QString error;
@@ -207,6 +213,10 @@ int commandRun(const QStringList& words)
         return usageError(args.command(), args.error());
     if (!readRunOptions(args, options, error))
         return usageError(args.command(), error);
+    const auto csv = csvOption(args, error);
+    if (!csv)
+        return usageError(args.command(), error);
+    options.csv = *csv;
     options.profile = args.isSet(QStringLiteral("profile"));
     const auto path = args.onlyFile();
     if (!path)
@@ -216,6 +226,8 @@ int commandRun(const QStringList& words)
     if (!loaded.ok) {
         return inputError(loaded.error);
     }
+    // The files' heads in --lang's language; checked above, so this cannot fail.
+    applyOutputLanguage(args, error);
     const lessons::RunReport report = lessons::runScene(loaded.scene, options, *path);
     switch (report.status) {
     case lessons::RunStatus::Ok:

@@ -303,6 +303,33 @@
     </message>
 </context>
 <context>
+    <name>CsvColumns</name>
+    <message>
+        <source>step</source>
+        <translation>krok</translation>
+    </message>
+    <message>
+        <source>body</source>
+        <translation>těleso</translation>
+    </message>
+    <message>
+        <source>angle [rad]</source>
+        <translation>úhel [rad]</translation>
+    </message>
+    <message>
+        <source>contacts</source>
+        <translation>kontakty</translation>
+    </message>
+    <message>
+        <source>drift [1]</source>
+        <translation>drift [1]</translation>
+    </message>
+    <message>
+        <source>drift [%]</source>
+        <translation>drift [%]</translation>
+    </message>
+</context>
+<context>
     <name>DivergenceWords</name>
     <message>
         <source>position</source>
@@ -1097,18 +1124,6 @@
 </context>
 <context>
     <name>PlotExportMenu</name>
-    <message>
-        <source>Export plot</source>
-        <translation>Exportovat graf</translation>
-    </message>
-    <message>
-        <source>%1 files (*.%2)</source>
-        <translation>Soubory %1 (*.%2)</translation>
-    </message>
-    <message>
-        <source>Export failed</source>
-        <translation>Export se nezdařil</translation>
-    </message>
     <message>
         <source>Exported %1</source>
         <translation>Exportováno: %1</translation>
@@ -2322,12 +2337,12 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Exportovat tabulku do CSV</translation>
     </message>
     <message>
-        <source>CSV files (*.csv)</source>
-        <translation>Soubory CSV (*.csv)</translation>
-    </message>
-    <message>
         <source>Export failed</source>
         <translation>Export se nezdařil</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Kopírovat</translation>
     </message>
 </context>
 <context>
@@ -3338,6 +3353,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>energy drift (numerical error)</source>
         <translation>energetický drift (numerická chyba)</translation>
     </message>
+    <message>
+        <source>Copy data shown</source>
+        <translation>Kopírovat zobrazená data</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::SatPanel</name>
@@ -3994,6 +4013,26 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>empty picture size</source>
         <translation>prázdná velikost obrázku</translation>
+    </message>
+    <message>
+        <source>comma</source>
+        <translation>čárka</translation>
+    </message>
+    <message>
+        <source>decimal comma</source>
+        <translation>desetinná čárka</translation>
+    </message>
+    <message>
+        <source>decimal point</source>
+        <translation>desetinná tečka</translation>
+    </message>
+    <message>
+        <source>CSV for a spreadsheet (%1, %2) (*.csv)</source>
+        <translation>CSV pro tabulkový procesor (%1, %2) (*.csv)</translation>
+    </message>
+    <message>
+        <source>CSV plain, for scripts (%1, %2) (*.csv)</source>
+        <translation>CSV prosté, pro skripty (%1, %2) (*.csv)</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "run/scene_run.h"
 
+#include "export/csv_columns.h"
+#include "export/csv_writer.h"
+#include "export/noise_floor.h"
+#include "export/quantity_scales.h"
+#include "export/step_time.h"
 #include "format/atomic_file.h"
 #include "format/divergence_message.h"
 #include "format/scene_loader.h"
@@ -11,7 +16,6 @@
 #include <QSaveFile>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -26,58 +30,26 @@ namespace {
 /// without commit, it leaves nothing behind.
 class CsvFile {
 public:
-    bool open(const QString& path, const char* header, QString& error)
+    bool open(const QString& path, const CsvConventions& conventions, const QStringList& header,
+              QString& error)
     {
         m_file = std::make_unique<QSaveFile>(path);
-        // Unbuffered (the rows are gathered in m_buffer): a failing write says why at once.
+        // Unbuffered (the rows are gathered in the writer): a failing write says why at once.
         if (!m_file->open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
             error = QStringLiteral("cannot write %1: %2").arg(path, m_file->errorString());
             return false;
         }
-        m_buffer = header;
-        m_buffer += '\n';
+        m_csv = CsvWriter(conventions);
+        m_csv.row(header);
         return true;
     }
     bool isOpen() const { return m_file != nullptr; }
-
-    /// Numbers go out as the shortest text that reads back to the same double (t = 0.005,
-    /// not 0.0050000000000000001) and never depend on the locale (QCoreApplication sets the C
-    /// library's locale from the environment, so printf might write decimal commas).
-    void number(double value)
-    {
-        char text[32];
-        const auto end = std::to_chars(text, text + sizeof text, value);
-        m_buffer.append(text, end.ptr);
-    }
-    void integer(long long value)
-    {
-        char text[24];
-        const auto end = std::to_chars(text, text + sizeof text, value);
-        m_buffer.append(text, end.ptr);
-    }
-    /// A text field, quoted as RFC 4180 asks when it holds a comma, a quote or a line break.
-    void text(const std::string& value)
-    {
-        if (value.find_first_of(",\"\r\n") == std::string::npos) {
-            m_buffer += value;
-            return;
-        }
-        m_buffer += '"';
-        for (char c : value) {
-            m_buffer += c;
-            if (c == '"') {
-                m_buffer += '"';
-            }
-        }
-        m_buffer += '"';
-    }
-    void comma() { m_buffer += ','; }
-    void endRow() { m_buffer += '\n'; }
+    CsvWriter& csv() { return m_csv; }
 
     /// Hands the buffer to the file once it is large.
     bool flushIfLarge(QString& error)
     {
-        return m_buffer.size() < (std::size_t{1} << 16) || flush(error);
+        return m_csv.size() < (std::size_t{1} << 16) || flush(error);
     }
     /// Writes the rest into the temporary file and checks that all of it got there (a full
     /// disk shows here, before anything is put in place); true at once for a file never opened.
@@ -115,10 +87,11 @@ private:
     {
         // A write that stops short is tried again: the second attempt is the one that fails
         // and says why ("File too large").
-        const auto size = static_cast<qint64>(m_buffer.size());
+        const std::string rows = m_csv.take();
+        const auto size = static_cast<qint64>(rows.size());
         qint64 done = 0;
         while (done < size) {
-            const qint64 n = m_file->write(m_buffer.data() + done, size - done);
+            const qint64 n = m_file->write(rows.data() + done, size - done);
             if (n <= 0) {
                 error = QStringLiteral("cannot write %1: %2")
                             .arg(m_file->fileName(), m_file->errorString());
@@ -126,12 +99,11 @@ private:
             }
             done += n;
         }
-        m_buffer.clear();
         return true;
     }
 
     std::unique_ptr<QSaveFile> m_file;
-    std::string m_buffer;
+    CsvWriter m_csv;
 };
 
 /// A second name for the file at `path` (a hard link, else a copy), so that it can be put
@@ -145,7 +117,13 @@ bool keepUnderSecondName(const QString& path, const QString& second)
     return !error || QFile::copy(path, second);
 }
 
-void writeTraceRows(CsvFile& csv, const physics::World& world)
+/// The time of the world's step as a person writes it [s].
+double honestTime(const physics::World& world)
+{
+    return stepTime(world.stepCount(), world.def().dt, world.time());
+}
+
+void writeTraceRows(CsvWriter& csv, const physics::World& world)
 {
     const auto& bodies = world.bodies();
     for (std::size_t i = 0; i < bodies.size(); ++i) {
@@ -156,37 +134,37 @@ void writeTraceRows(CsvFile& csv, const physics::World& world)
         const physics::Vec2 origin = body.origin();
         const physics::Vec2 velocity = world.originVelocity(static_cast<physics::BodyId>(i));
         csv.integer(world.stepCount());
-        csv.comma();
-        csv.number(world.time());
-        csv.comma();
+        csv.number(honestTime(world));
         csv.text(body.name);
+        // No scale is known for a position or a speed: only what is noise in any unit goes.
         for (double v : {origin.x(), origin.y(), body.angle, velocity.x(), velocity.y(),
                          body.angularVelocity}) {
-            csv.comma();
-            csv.number(v);
+            csv.number(withoutNoise(v, 0.0));
         }
         csv.endRow();
     }
 }
 
 /// A row of the diagnostics; start: the world's at step 0, scale: energyScale(start).
-void writeDiagnosticsRow(CsvFile& csv, const physics::World& world,
+void writeDiagnosticsRow(CsvWriter& csv, const physics::World& world,
                          const physics::Diagnostics& start, double scale)
 {
     const physics::Diagnostics& d = world.diagnostics();
     csv.integer(world.stepCount());
-    for (double v : {world.time(), d.kinetic, d.potential, d.total, d.momentum.x(), d.momentum.y(),
-                     d.angularMomentum}) {
-        csv.comma();
-        csv.number(v);
+    csv.number(honestTime(world));
+    for (double v : {d.kinetic, d.potential, d.total}) {
+        csv.number(withoutNoise(v, scale));
     }
-    csv.comma();
+    // The momenta's scales are the plots' (quantity_scales.h), taken of the bodies as they are.
+    const MomentumScales momentum = momentumScales(world);
+    csv.number(withoutNoise(d.momentum.x(), momentum.linear));
+    csv.number(withoutNoise(d.momentum.y(), momentum.linear));
+    csv.number(withoutNoise(d.angularMomentum, momentum.angular));
     csv.integer(d.contacts);
     const double dissipated = d.dissipated - start.dissipated;
-    for (double v : {dissipated, (d.total + dissipated - start.total) / scale}) {
-        csv.comma();
-        csv.number(v);
-    }
+    csv.number(withoutNoise(dissipated, scale));
+    // The drift is relative: what it is worth is 1, all of the starting energy.
+    csv.number(withoutNoise((d.total + dissipated - start.total) / scale, 1.0));
     csv.endRow();
 }
 
@@ -345,6 +323,27 @@ bool commitOutputs(CsvFile& trace, CsvFile& diagnostics, const RunOptions& optio
 
 } // namespace
 
+QStringList traceHeader()
+{
+    QStringList heads;
+    for (const CsvColumn c :
+         {CsvColumn::Step, CsvColumn::Time, CsvColumn::Body, CsvColumn::X, CsvColumn::Y,
+          CsvColumn::Angle, CsvColumn::Vx, CsvColumn::Vy, CsvColumn::Omega})
+        heads.append(csvColumnHead(c));
+    return heads;
+}
+
+QStringList diagnosticsHeader()
+{
+    QStringList heads;
+    for (const CsvColumn c :
+         {CsvColumn::Step, CsvColumn::Time, CsvColumn::Kinetic, CsvColumn::Potential,
+          CsvColumn::Total, CsvColumn::Px, CsvColumn::Py, CsvColumn::AngularMomentum,
+          CsvColumn::Contacts, CsvColumn::Dissipated, CsvColumn::Drift})
+        heads.append(csvColumnHead(c));
+    return heads;
+}
+
 QString RunReport::profileTable() const
 {
     if (!profile) {
@@ -460,9 +459,10 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
     // Open the outputs first, so that a bad path fails before the run rather than after it.
     CsvFile trace;
     CsvFile diagnostics;
-    if ((!options.tracePath.isEmpty() && !trace.open(options.tracePath, kTraceHeader, error)) ||
+    if ((!options.tracePath.isEmpty() &&
+         !trace.open(options.tracePath, options.csv, traceHeader(), error)) ||
         (!options.diagnosticsPath.isEmpty() &&
-         !diagnostics.open(options.diagnosticsPath, kDiagnosticsHeader, error))) {
+         !diagnostics.open(options.diagnosticsPath, options.csv, diagnosticsHeader(), error))) {
         return fail(RunStatus::OutputError, error);
     }
 
@@ -491,10 +491,10 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
         }
         if (step % options.every == 0 || step == steps) {
             if (trace.isOpen()) {
-                writeTraceRows(trace, world);
+                writeTraceRows(trace.csv(), world);
             }
             if (diagnostics.isOpen()) {
-                writeDiagnosticsRow(diagnostics, world, start, report.energyScale);
+                writeDiagnosticsRow(diagnostics.csv(), world, start, report.energyScale);
             }
             if ((trace.isOpen() && !trace.flushIfLarge(error)) ||
                 (diagnostics.isOpen() && !diagnostics.flushIfLarge(error))) {

@@ -3,25 +3,30 @@
 // Running a scene headless for a fixed number of steps, writing a trace of the bodies and
 // the world's diagnostics as CSV (for `rigidlab-cli run`, and for tests that pin a run).
 //
-// Trace:       step,t,body,x,y,angle,vx,vy,omega
-//              a row per dynamic body per written step; x, y: the body origin [m];
-//              angle [rad]; vx, vy: velocity of the origin [m/s]; omega [rad/s].
-// Diagnostics: step,t,kinetic,potential,total,px,py,angular_momentum,contacts,dissipated,drift
-//              energies [J], momentum [kg m/s], angular momentum about the origin [kg m^2/s];
-//              dissipated: the energy taken since step 0 by contacts (inelastic bounces and
-//              friction), drag and the dampers of springs [J]; drift: the numerical error,
-//              (total + dissipated - E0) / |E0| with E0 the total at step 0 (relative; see
-//              energyScale()).
-// Rows are written every `every` steps; step 0 and the last step always. Numbers carry 17
-// significant digits, so that two runs compare bit for bit. The files are written whole or
-// not at all: nothing is left behind by a run that fails.
+// Trace:       step,t [s],body,x [m],y [m],angle [rad],v_x [m/s],v_y [m/s],ω [rad/s]
+//              a row per dynamic body per written step; x, y: the body origin; v_x, v_y:
+//              velocity of the origin.
+// Diagnostics: step,t [s],E_k [J],E_p [J],E [J],p_x [kg m/s],p_y [kg m/s],L [kg m²/s],
+//              contacts,E_diss [J],drift [1]
+//              L: angular momentum about the origin; E_diss: the energy taken since step 0 by
+//              contacts (inelastic bounces and friction), drag and the dampers of springs;
+//              drift: the numerical error, (E + E_diss - E0) / |E0| with E0 the total at step 0
+//              (relative; see energyScale()).
+// The heads are those of lessons/export/csv_columns.h, in the language in effect. Rows are
+// written every `every` steps; step 0 and the last step always. Written by the lab's one CSV
+// writer (lessons/export/csv_writer.h): t as a person writes step k's time (step_time.h),
+// every number the shortest text that reads back to the same double, a value below its noise
+// floor (noise_floor.h) as 0, in the dialect asked for. The files are written whole or not at
+// all: nothing is left behind by a run that fails.
 
+#include "export/csv_dialect.h"
 #include "format/scene.h"
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
 #include "rigidlab/physics/profile.h"
 
 #include <QString>
+#include <QStringList>
 
 #include <optional>
 
@@ -29,9 +34,9 @@ namespace rigidlab::lessons {
 
 inline constexpr double kDefaultRunTime = 5.0;         ///< when neither time nor steps [s]
 inline constexpr long long kMaxRunSteps = 100'000'000; ///< a mistyped --time stops here
-inline constexpr const char* kTraceHeader = "step,t,body,x,y,angle,vx,vy,omega";
-inline constexpr const char* kDiagnosticsHeader =
-    "step,t,kinetic,potential,total,px,py,angular_momentum,contacts,dissipated,drift";
+/// The trace's and the diagnostics' column heads, in the language in effect.
+QStringList traceHeader();
+QStringList diagnosticsHeader();
 
 struct RunOptions {
     std::optional<double> time;     ///< simulated time [s]; not with steps
@@ -42,6 +47,7 @@ struct RunOptions {
     QString tracePath;       ///< empty: no trace
     QString diagnosticsPath; ///< empty: no diagnostics
     long long every = 1;     ///< write every this many steps (>= 1)
+    CsvConventions csv;      ///< the files' dialect (plain unless asked)
     bool profile = false;    ///< add up each stage's time over the run (RunReport::profile)
 };
 

@@ -197,8 +197,9 @@ private slots:
         // Without the limit both are replaced, and nothing else is left.
         const lessons::RunReport r = lessons::runScene(loaded.scene, options, "ball_drop");
         QCOMPARE(r.status, lessons::RunStatus::Ok);
-        QVERIFY(readAll(options.tracePath).startsWith(lessons::kTraceHeader));
-        QVERIFY(readAll(options.diagnosticsPath).startsWith(lessons::kDiagnosticsHeader));
+        QVERIFY(readAll(options.tracePath).startsWith(lessons::traceHeader().join(u',').toUtf8()));
+        QVERIFY(readAll(options.diagnosticsPath)
+                    .startsWith(lessons::diagnosticsHeader().join(u',').toUtf8()));
         QCOMPARE(entries(dir.path()),
                  (QStringList{QStringLiteral("diagnostics.csv"), QStringLiteral("trace.csv")}));
     }

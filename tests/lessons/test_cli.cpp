@@ -102,8 +102,9 @@ void TestCli::help()
     QVERIFY(!run.crashed);
     QCOMPARE(run.exitCode, 0);
     QVERIFY(run.out.startsWith("usage: rigidlab-cli"));
-    for (const char* word : {"run", "validate", "sat", "--time", "--steps", "--dt", "--integrator",
-                             "--solver", "--trace", "--diagnostics", "--every", "--lang"}) {
+    for (const char* word :
+         {"run", "validate", "sat", "--time", "--steps", "--dt", "--integrator", "--solver",
+          "--trace", "--diagnostics", "--every", "--lang", "--csv-dialect"}) {
         QVERIFY2(run.out.contains(word), word);
     }
 }
@@ -128,6 +129,11 @@ void TestCli::usageErrors_data()
                                    << "--time: must be a finite number, got \"inf\"";
     QTest::newRow("time-nan") << QStringList{"run", ball, "--time", "nan"}
                               << "--time: must be a finite number, got \"nan\"";
+    QTest::newRow("csv-dialect-unknown")
+        << QStringList{"run", ball, "--csv-dialect", "excel"}
+        << "run: --csv-dialect: unknown dialect \"excel\" (expected plain, spreadsheet)";
+    QTest::newRow("run-lang-unknown") << QStringList{"run", ball, "--lang", "de"}
+                                      << "run: --lang: unknown language \"de\" (expected en, cs)";
     QTest::newRow("steps-fraction") << QStringList{"run", ball, "--steps", "1.5"}
                                     << "--steps: must be a whole number from 0 to 100000000";
     QTest::newRow("steps-negative") << QStringList{"run", ball, "--steps", "-3"}
@@ -362,9 +368,13 @@ void TestCli::runWritesHeaders()
     QCOMPARE(run.exitCode, 0);
     const QList<QByteArray> t = readAll(trace).split('\n');
     const QList<QByteArray> d = readAll(diagnostics).split('\n');
-    QCOMPARE(t.front(), QByteArray("step,t,body,x,y,angle,vx,vy,omega"));
-    QCOMPARE(d.front(), QByteArray("step,t,kinetic,potential,total,px,py,angular_momentum,"
-                                   "contacts,dissipated,drift"));
+    // Every quantity names its unit; English without --lang.
+    QCOMPARE(QString::fromUtf8(t.front()),
+             QStringLiteral("step,t [s],body,x [m],y [m],angle [rad],v_x [m/s],v_y [m/s],"
+                            "ω [rad/s]"));
+    QCOMPARE(QString::fromUtf8(d.front()),
+             QStringLiteral("step,t [s],E_k [J],E_p [J],E [J],p_x [kg m/s],p_y [kg m/s],"
+                            "L [kg m²/s],contacts,E_diss [J],drift [1]"));
     QVERIFY(t[1].startsWith("0,0,"));
     QVERIFY(d[1].startsWith("0,0,"));
     QVERIFY(d[d.size() - 2].startsWith("50,"));

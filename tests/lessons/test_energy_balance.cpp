@@ -75,20 +75,20 @@ void TestLessons::welcomeDriftIsTheErrorAlone()
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     const Columns d = runDiagnostics(loaded.scene, 10.0, 10);
     QCOMPARE(d.rows.size(), std::size_t{1001});
-    const double e0 = d.at(0, "total");
+    const double e0 = d.at(0, "E [J]");
     QVERIFY(e0 > 0);
-    QCOMPARE(d.at(0, "dissipated"), 0.0);
-    QCOMPARE(d.at(0, "drift"), 0.0);
+    QCOMPARE(d.at(0, "E_diss [J]"), 0.0);
+    QCOMPARE(d.at(0, "drift [1]"), 0.0);
     double worst = 0;
     for (std::size_t r = 0; r < d.rows.size(); ++r) {
-        const double drift = d.at(r, "drift");
+        const double drift = d.at(r, "drift [1]");
         QVERIFY(std::isfinite(drift));
         // The column is what it says it is.
-        QVERIFY(isClose(drift, (d.at(r, "total") + d.at(r, "dissipated") - e0) / e0, 1e-12));
+        QVERIFY(isClose(drift, (d.at(r, "E [J]") + d.at(r, "E_diss [J]") - e0) / e0, 1e-12));
         worst = std::max(worst, std::abs(drift));
     }
     const std::size_t last = d.rows.size() - 1;
-    const double fell = (e0 - d.at(last, "total")) / e0;
+    const double fell = (e0 - d.at(last, "E [J]")) / e0;
     QVERIFY2(fell > 0.10, qPrintable(QStringLiteral("the total fell by %1 only").arg(fell)));
     QVERIFY2(worst <= 0.01, qPrintable(QStringLiteral("the drift reached %1").arg(worst)));
 }
@@ -135,15 +135,15 @@ void TestLessons::conservativeDriftIsTheEnergyChange()
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     const Columns d = runDiagnostics(loaded.scene, time, 10);
     QVERIFY(d.rows.size() > 100);
-    const double e0 = d.at(0, "total");
+    const double e0 = d.at(0, "E [J]");
     QVERIFY(e0 > 0);
     for (std::size_t r = 0; r < d.rows.size(); ++r) {
-        const double plain = (d.at(r, "total") - e0) / e0;
-        QVERIFY2(isClose(d.at(r, "drift"), plain, 1e-9),
+        const double plain = (d.at(r, "E [J]") - e0) / e0;
+        QVERIFY2(isClose(d.at(r, "drift [1]"), plain, 1e-9),
                  qPrintable(QStringLiteral("row %1: drift %2, energy change %3")
                                 .arg(r)
-                                .arg(d.at(r, "drift"))
+                                .arg(d.at(r, "drift [1]"))
                                 .arg(plain)));
     }
-    QVERIFY(d.at(d.rows.size() - 1, "t") >= time - 1e-9);
+    QVERIFY(d.at(d.rows.size() - 1, "t [s]") >= time - 1e-9);
 }

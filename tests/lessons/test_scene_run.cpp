@@ -104,7 +104,7 @@ void TestLessons::runWritesHeadersAndRows()
     QCOMPARE(report.steps, 10);
 
     const QList<QByteArray> trace = readAll(options.tracePath).split('\n');
-    QCOMPARE(trace.front(), QByteArray(lessons::kTraceHeader));
+    QCOMPARE(trace.front(), lessons::traceHeader().join(u',').toUtf8());
     QCOMPARE(trace.back(), QByteArray()); // ends with a line break
     // Steps 0, 4, 8 and the last, 10; the two dynamic bodies each; the static one never.
     QCOMPARE(trace.size(), 1 + 4 * 2 + 1);
@@ -116,7 +116,7 @@ void TestLessons::runWritesHeadersAndRows()
     QCOMPARE(trace[8].count(','), 8);
 
     const QList<QByteArray> diagnostics = readAll(options.diagnosticsPath).split('\n');
-    QCOMPARE(diagnostics.front(), QByteArray(lessons::kDiagnosticsHeader));
+    QCOMPARE(diagnostics.front(), lessons::diagnosticsHeader().join(u',').toUtf8());
     QCOMPARE(diagnostics.size(), 1 + 4 + 1);
     QVERIFY(diagnostics[1].startsWith("0,0,0,"));
     QVERIFY(diagnostics[4].startsWith("10,"));

@@ -288,7 +288,7 @@ void TestLessonExport::headlessSamplingKeepsTheWindowsInterval()
     const QString folder = QDir(dir.path()).filePath(ui::stepFolderName(bounces, 1));
     QByteArray header;
     const auto rows = csvRows(QDir(folder).filePath(QStringLiteral("momentum.csv")), &header);
-    QCOMPARE(header, QByteArray("t [s],px [kg m/s],py [kg m/s],L [kg m²/s]"));
+    QCOMPARE(header, QByteArray("t [s],p_x [kg m/s],p_y [kg m/s],L [kg m²/s]"));
 
     physics::World world = lessons::buildStepWorlds(bounces.steps[1])[0];
     world.updateDiagnostics();

@@ -1,23 +1,28 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/fitting_table.h"
 
+#include "common/export_folder.h"
+#include "common/language.h"
 #include "common/modal_scope.h"
+#include "plots/plot_export.h"
 
+#include "export/csv_writer.h"
 #include "format/atomic_file.h"
+#include "format/scene_schema.h"
 
+#include <QClipboard>
 #include <QContextMenuEvent>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QHeaderView>
 #include <QMenu>
 #include <QMessageBox>
 #include <QScrollBar>
-#include <QStandardPaths>
+#include <QShortcut>
 
 #include <algorithm>
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <numeric>
 
@@ -38,25 +43,6 @@ constexpr int kSlack = 3;
 /// A column never gets narrower than this, so that "–" and "?" still have room [px].
 constexpr int kMinColumn = 24;
 
-QByteArray csvCell(const QString& cell)
-{
-    QByteArray utf8 = cell.toUtf8();
-    if (!utf8.contains(',') && !utf8.contains('"') && !utf8.contains('\n') && !utf8.contains('\r'))
-        return utf8;
-    utf8.replace("\"", "\"\"");
-    return '"' + utf8 + '"';
-}
-
-void appendLine(QByteArray& out, const QStringList& cells)
-{
-    for (int c = 0; c < cells.size(); ++c) {
-        if (c > 0)
-            out += ',';
-        out += csvCell(cells[c]);
-    }
-    out += "\r\n";
-}
-
 /// The width of the widest line of `text` in `fm` [px].
 int textWidth(const QFontMetrics& fm, const QString& text)
 {
@@ -72,19 +58,28 @@ QString csvNumber(double value)
 {
     if (!std::isfinite(value))
         return QString();
-    std::array<char, 32> buffer{};
-    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    Q_ASSERT(ec == std::errc());
-    return QString::fromLatin1(buffer.data(), static_cast<qsizetype>(end - buffer.data()));
+    return QString::fromStdString(lessons::formatCsvNumber(value));
 }
 
-QByteArray csvBytes(const CsvTable& table)
+QByteArray csvBytes(const CsvTable& table, const lessons::CsvConventions& conventions)
 {
-    QByteArray out;
-    appendLine(out, table.headers);
-    for (const QStringList& row : table.rows)
-        appendLine(out, row);
-    return out;
+    // Through the lab's one writer: a cell that is a number (csvNumber's text) takes the
+    // dialect's decimal sign, the rest is text.
+    lessons::CsvWriter csv(conventions);
+    csv.row(table.headers);
+    for (const QStringList& row : table.rows) {
+        for (const QString& cell : row) {
+            bool number = false;
+            const double value = cell.toDouble(&number);
+            if (number && std::isfinite(value))
+                csv.number(value);
+            else
+                csv.text(cell);
+        }
+        csv.endRow();
+    }
+    const std::string& data = csv.data();
+    return QByteArray(data.data(), static_cast<qsizetype>(data.size()));
 }
 
 CsvTable parseCsv(const QByteArray& bytes)
@@ -131,26 +126,43 @@ CsvTable parseCsv(const QByteArray& bytes)
     return table;
 }
 
-QString writeCsv(const QString& path, const CsvTable& table)
+QString writeCsv(const QString& path, const CsvTable& table,
+                 const lessons::CsvConventions& conventions)
 {
-    return lessons::writeFileAtomically(path, csvBytes(table));
+    return lessons::writeFileAtomically(path, csvBytes(table, conventions));
 }
 
 void exportCsvInteractively(QWidget* parent, const CsvTable& table, const QString& baseName)
 {
+    using lessons::CsvDialect;
     const ModalScope modal;
-    const QString dir = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
-    const QString suggested = QDir(dir).filePath(
-        (baseName.isEmpty() ? QStringLiteral("table") : baseName) + QStringLiteral(".csv"));
-    QFileDialog dialog(parent, FittingTable::tr("Export table as CSV"), suggested,
-                       FittingTable::tr("CSV files (*.csv)"));
+    // Where the plots' exports go (the last folder, else Documents), in the same dialect.
+    const QString stem = lessons::schema::safeFileStem(
+        QStringList{baseName, currentLanguage()}.join(u' '), QStringLiteral("table"));
+    QFileDialog dialog(parent, FittingTable::tr("Export table as CSV"),
+                       QDir(exportFolder()).filePath(stem + QStringLiteral(".csv")));
+    const QString spreadsheet = csvFilterFor(CsvDialect::Spreadsheet);
+    const QString plain = csvFilterFor(CsvDialect::Plain);
+    dialog.setNameFilters({spreadsheet, plain});
+    dialog.selectNameFilter(windowCsvDialect() == CsvDialect::Plain ? plain : spreadsheet);
     dialog.setAcceptMode(QFileDialog::AcceptSave);
     dialog.setDefaultSuffix(QStringLiteral("csv"));
     if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
         return;
-    const QString why = writeCsv(dialog.selectedFiles().constFirst(), table);
+    const QString path = dialog.selectedFiles().constFirst();
+    rememberExportFolder(path);
+    const CsvDialect chosen =
+        dialog.selectedNameFilter() == plain ? CsvDialect::Plain : CsvDialect::Spreadsheet;
+    rememberCsvDialect(chosen);
+    const QString why = writeCsv(path, table, lessons::csvConventions(chosen, currentLanguage()));
     if (!why.isEmpty())
         QMessageBox::warning(parent, FittingTable::tr("Export failed"), why);
+}
+
+void FittingTable::copyData() const
+{
+    const QByteArray text = csvBytes(m_csv, lessons::clipboardConventions(currentLanguage()));
+    QGuiApplication::clipboard()->setText(QString::fromUtf8(text));
 }
 
 FittingTable::FittingTable(QWidget* parent) : QTableWidget(parent)
@@ -166,6 +178,9 @@ FittingTable::FittingTable(QWidget* parent) : QTableWidget(parent)
     setWordWrap(true);
     setTextElideMode(Qt::ElideNone);
     setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
+    // Ctrl+C copies the table's numbers, tab-separated, for a spreadsheet.
+    auto* copy = new QShortcut(QKeySequence::Copy, this, this, &FittingTable::copyData);
+    copy->setContext(Qt::WidgetShortcut);
 }
 
 void FittingTable::setContent(const TableText& wide, const TableText& narrow)
@@ -334,6 +349,9 @@ void FittingTable::contextMenuEvent(QContextMenuEvent* event)
     QAction* exportAction = menu.addAction(tr("Export as CSV…"));
     exportAction->setEnabled(!m_csv.headers.isEmpty());
     connect(exportAction, &QAction::triggered, this, &FittingTable::exportCsvInteractively);
+    QAction* copyAction = menu.addAction(tr("Copy"), this, &FittingTable::copyData);
+    copyAction->setShortcut(QKeySequence::Copy);
+    copyAction->setEnabled(!m_csv.headers.isEmpty());
     menu.exec(event->globalPos());
 }
 

@@ -8,8 +8,11 @@
 // The table is as tall as its rows (no inner scroll bar while the column has the height).
 //
 // The table also exports itself as CSV (its context menu, or a panel's button): the numbers
-// as they are, with a decimal point and in their shortest form that reads back exactly,
-// written atomically.
+// as they are, in their shortest form that reads back exactly, through the lab's CSV writer
+// (lessons/export/csv_writer.h) in the window's dialect, written atomically. Ctrl+C copies
+// them as tab-separated text in the language's number format.
+
+#include "export/csv_dialect.h"
 
 #include <QList>
 #include <QStringList>
@@ -38,14 +41,17 @@ struct CsvTable {
 /// The shortest text that reads back as the same double, with a decimal point; empty for a
 /// value that is not finite (a gap).
 QString csvNumber(double value);
-/// RFC 4180 text of the table: comma separated, quoted where a cell needs it, CRLF lines.
-QByteArray csvBytes(const CsvTable& table);
+/// The table as CSV in a dialect (plain, RFC 4180, unless told), through the lab's writer:
+/// a number cell takes the dialect's decimal sign, a cell is quoted where it needs it.
+QByteArray csvBytes(const CsvTable& table, const lessons::CsvConventions& conventions = {});
 /// Reads back what csvBytes wrote (used by the tests and by nothing else).
 CsvTable parseCsv(const QByteArray& bytes);
 /// Writes the table to `path` atomically: empty on success, else the reason.
-QString writeCsv(const QString& path, const CsvTable& table);
-/// Asks for a file name (`baseName`.csv offered) and writes the table there; a failure is
-/// shown in a message box.
+QString writeCsv(const QString& path, const CsvTable& table,
+                 const lessons::CsvConventions& conventions = {});
+/// Asks for a file name (from `baseName` and the language, in the folder last exported into)
+/// and a dialect (the window's, remembered when changed), and writes the table there; a
+/// failure is shown in a message box.
 void exportCsvInteractively(QWidget* parent, const CsvTable& table, const QString& baseName);
 
 class FittingTable : public QTableWidget {
@@ -62,6 +68,9 @@ public:
     QString exportCsv(const QString& path) const;
     /// Asks for a file name and writes the CSV there; a failure is shown in a message box.
     void exportCsvInteractively();
+    /// Puts the table's numbers on the clipboard, tab-separated, in the language's number
+    /// format (Ctrl+C).
+    void copyData() const;
 
     bool isNarrow() const { return m_narrow; }
     const TableText& shownText() const { return m_narrow ? m_narrowText : m_wideText; }

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plots/plot_export.h"
 
+#include "common/language.h"
 #include "plots/plot_widget.h"
+
+#include "export/csv_columns.h"
+#include "export/csv_writer.h"
+#include "export/noise_floor.h"
 
 #include <qcustomplot.h>
 
@@ -13,10 +18,9 @@
 #include <QPageSize>
 #include <QPdfWriter>
 #include <QSaveFile>
+#include <QSettings>
 #include <QSvgGenerator>
 
-#include <array>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -174,42 +178,31 @@ bool encodeSvg(QCustomPlot& plot, const QString& title, const ExportOptions& opt
         why);
 }
 
-/// RFC 4180: a field with a comma, quote or line break is quoted, quotes doubled.
-QByteArray csvField(const QString& text)
-{
-    QByteArray utf8 = text.toUtf8();
-    if (!utf8.contains(',') && !utf8.contains('"') && !utf8.contains('\n') && !utf8.contains('\r'))
-        return utf8;
-    utf8.replace("\"", "\"\"");
-    return '"' + utf8 + '"';
-}
+} // namespace
 
-/// The shortest text that reads back as the same double; a gap (NaN) is an empty cell.
-void appendNumber(QByteArray& out, double value)
+QByteArray plotTable(const PlotWidget& plot, const lessons::CsvConventions& conventions,
+                     bool legendNames, bool visibleOnly)
 {
-    if (std::isnan(value))
-        return;
-    std::array<char, 32> buffer{};
-    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    Q_ASSERT(ec == std::errc());
-    out.append(buffer.data(), end - buffer.data());
-}
-
-QByteArray encodeCsv(const PlotWidget& plot, bool legendNames)
-{
-    QByteArray text = "t [s]";
+    lessons::CsvWriter csv(conventions);
+    QStringList heads{lessons::csvColumnHead(lessons::CsvColumn::Time)};
     std::vector<std::vector<QPointF>> columns;
+    std::vector<double> scales;
     for (int i = 0; i < plot.seriesCount(); ++i) {
-        const QString unit = plot.seriesUnit(i);
-        const QString name = legendNames ? plot.seriesLegend(i) : plot.seriesName(i);
-        const QString head = unit.isEmpty() ? name : QStringLiteral("%1 [%2]").arg(name, unit);
-        text += ',' + csvField(head);
-        columns.push_back(plot.points(i));
+        QString head = plot.seriesColumn(i);
+        if (head.isEmpty()) {
+            const QString unit = plot.seriesUnit(i);
+            const QString name = legendNames ? plot.seriesLegend(i) : plot.seriesName(i);
+            head = unit.isEmpty() ? name : QStringLiteral("%1 [%2]").arg(name, unit);
+        }
+        heads.append(head);
+        columns.push_back(visibleOnly ? plot.visiblePoints(i) : plot.points(i));
+        scales.push_back(plot.seriesScale(i));
     }
-    text += '\n';
+    csv.row(heads);
 
     // One row per distinct time over all series (series fed point by point need not share
-    // their times); a series with no point at that time leaves its cell empty.
+    // their times); a series with no point at that time leaves its cell empty. The times are
+    // the samples' (step_sampler.h), written as a person writes them.
     std::vector<std::size_t> next(columns.size(), 0);
     for (;;) {
         double t = std::numeric_limits<double>::infinity();
@@ -218,17 +211,20 @@ QByteArray encodeCsv(const PlotWidget& plot, bool legendNames)
                 t = std::min(t, columns[c][next[c]].x());
         if (std::isinf(t))
             break;
-        appendNumber(text, t);
+        csv.number(t);
         for (std::size_t c = 0; c < columns.size(); ++c) {
-            text += ',';
             if (next[c] < columns[c].size() && columns[c][next[c]].x() == t)
-                appendNumber(text, columns[c][next[c]++].y());
+                csv.number(lessons::withoutNoise(columns[c][next[c]++].y(), scales[c]));
+            else
+                csv.number(std::numeric_limits<double>::quiet_NaN()); // an empty cell
         }
-        text += '\n';
+        csv.endRow();
     }
-
-    return text;
+    const std::string& data = csv.data();
+    return QByteArray(data.data(), static_cast<qsizetype>(data.size()));
 }
+
+namespace {
 
 /// Writes all of `bytes`, or says why not. A write that stops short is tried again: the
 /// second attempt is the one that reports the cause ("File too large").
@@ -296,6 +292,42 @@ QString fileFilterFor(ExportFormat format)
     Q_UNREACHABLE();
 }
 
+lessons::CsvDialect windowCsvDialect()
+{
+    const QString saved = QSettings().value(QLatin1String(kCsvDialectKey)).toString();
+    return lessons::csvDialectFromName(saved).value_or(lessons::CsvDialect::Spreadsheet);
+}
+
+void rememberCsvDialect(lessons::CsvDialect dialect)
+{
+    QSettings().setValue(QLatin1String(kCsvDialectKey), lessons::csvDialectName(dialect));
+}
+
+ExportOptions windowExportOptions()
+{
+    ExportOptions options;
+    options.csv = lessons::csvConventions(windowCsvDialect(), currentLanguage());
+    return options;
+}
+
+QString csvFilterFor(lessons::CsvDialect dialect)
+{
+    const lessons::CsvConventions c = lessons::csvConventions(dialect, currentLanguage());
+    const QString separator =
+        c.separator == ';' ? QStringLiteral(";")
+                           : QCoreApplication::translate("rigidlab::ui::exportPlot", "comma");
+    const QString decimal =
+        c.decimal == ',' ? QCoreApplication::translate("rigidlab::ui::exportPlot", "decimal comma")
+                         : QCoreApplication::translate("rigidlab::ui::exportPlot", "decimal point");
+    if (dialect == lessons::CsvDialect::Spreadsheet)
+        return QCoreApplication::translate("rigidlab::ui::exportPlot",
+                                           "CSV for a spreadsheet (%1, %2) (*.csv)")
+            .arg(separator, decimal);
+    return QCoreApplication::translate("rigidlab::ui::exportPlot",
+                                       "CSV plain, for scripts (%1, %2) (*.csv)")
+        .arg(separator, decimal);
+}
+
 ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat format,
                         const ExportOptions& options)
 {
@@ -320,7 +352,7 @@ ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat form
     QString why;
     bool encoded = true;
     if (format == ExportFormat::Csv) {
-        bytes = encodeCsv(plot, options.legendNames);
+        bytes = plotTable(plot, options.csv, options.legendNames);
     } else {
         QCustomPlot& qcp = *plot.plot();
         // Two points per pixel column: of the image for a PNG, of a fine print for the rest.

@@ -6,6 +6,8 @@
 // written, so a failed export never leaves a broken or half-written file and never destroys a
 // file that was already at that path.
 
+#include "export/csv_dialect.h"
+
 #include <QSize>
 #include <QString>
 
@@ -34,7 +36,26 @@ struct ExportOptions {
     /// ("Explicitní Euler [J]"), rather than the names they were added with (a lesson file's
     /// code names, "euler [J]", which the handouts keep for scripts that read them).
     bool legendNames = false;
+    /// CSV only: the dialect (lessons/export/csv_dialect.h); plain unless asked.
+    lessons::CsvConventions csv;
 };
+
+/// The dialect the window's CSV exports use: the one last chosen in an export dialog
+/// (QSettings kCsvDialectKey), else the spreadsheet dialect.
+lessons::CsvDialect windowCsvDialect();
+/// Remembers the dialect chosen for the next export.
+void rememberCsvDialect(lessons::CsvDialect dialect);
+inline constexpr char kCsvDialectKey[] = "csvDialect";
+/// The options the window exports with: its CSV dialect in the language in effect.
+ExportOptions windowExportOptions();
+/// A file dialog filter for a CSV dialect in the language in effect, saying what it is:
+/// "CSV for a spreadsheet (;, decimal comma) (*.csv)".
+QString csvFilterFor(lessons::CsvDialect dialect);
+
+/// The plot's data as a CSV table: a time column "t [s]" and a column per series, a row per
+/// distinct time; with `visibleOnly`, the points over the time axis' range alone.
+QByteArray plotTable(const PlotWidget& plot, const lessons::CsvConventions& conventions,
+                     bool legendNames, bool visibleOnly = false);
 
 struct ExportResult {
     bool ok = false;

@@ -4,35 +4,28 @@
 #include "plots/plot_widget.h"
 
 #include "common/export_folder.h"
+#include "common/language.h"
 #include "common/modal_scope.h"
+
+#include "format/scene_schema.h"
 
 #include <qcustomplot.h>
 
 #include <QActionGroup>
+#include <QClipboard>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QMenu>
 #include <QMessageBox>
-#include <QRegularExpression>
+#include <QShortcut>
 
 #include <algorithm>
 #include <utility>
 #include <vector>
 
 namespace rigidlab::ui {
-
-namespace {
-
-QString fileStem(const QString& title)
-{
-    QString stem = title.toLower();
-    stem.replace(QRegularExpression(QStringLiteral("[^a-z0-9]+")), QStringLiteral("_"));
-    stem.remove(QRegularExpression(QStringLiteral("^_+|_+$")));
-    return stem.isEmpty() ? QStringLiteral("plot") : stem;
-}
-
-} // namespace
 
 void PlotWidget::showContextMenu(const QPoint& pos)
 {
@@ -50,6 +43,8 @@ void PlotWidget::showContextMenu(const QPoint& pos)
         connect(menu->addAction(entry.second), &QAction::triggered, this,
                 [this, format] { exportInteractively(format); });
     }
+    QAction* copy = menu->addAction(tr("Copy data shown"), this, &PlotWidget::copyData);
+    copy->setShortcut(QKeySequence::Copy); // shown in the menu; the plot's own shortcut acts
     menu->addSeparator();
 
     QAction* followAction = menu->addAction(tr("Follow"));
@@ -82,16 +77,35 @@ void PlotWidget::showContextMenu(const QPoint& pos)
     menu->popup(m_plot->mapToGlobal(pos));
 }
 
-void PlotWidget::exportInteractively(ExportFormat format)
+QString PlotWidget::proposedFileName(ExportFormat format) const
 {
+    // What it is of, which plot, in which language: "welcome_energie_cs.csv", not plot.csv
+    // three times over; safe on a school's Windows share and a USB stick.
+    const QString words = QStringList{m_exportContext, title(), currentLanguage()}.join(u' ');
+    return lessons::schema::safeFileStem(words, QStringLiteral("plot")) + u'.' + suffixFor(format);
+}
+
+QString PlotWidget::exportInteractively(ExportFormat format)
+{
+    using lessons::CsvDialect;
     const ModalScope modal;
     const QString dir = exportFolder(); // the last one chosen, else the documents folder
-    const QString suggested = QDir(dir).filePath(fileStem(title()) + '.' + suffixFor(format));
-    QFileDialog dialog(this, tr("Export plot"), suggested, fileFilterFor(format));
+    const QString suggested = QDir(dir).filePath(proposedFileName(format));
+    QFileDialog dialog(this, tr("Export plot"), suggested);
+    // A CSV's dialect is one of the filters, each saying what it writes; the one last chosen
+    // comes first.
+    const QString spreadsheet = csvFilterFor(CsvDialect::Spreadsheet);
+    const QString plain = csvFilterFor(CsvDialect::Plain);
+    if (format == ExportFormat::Csv) {
+        dialog.setNameFilters({spreadsheet, plain});
+        dialog.selectNameFilter(windowCsvDialect() == CsvDialect::Plain ? plain : spreadsheet);
+    } else {
+        dialog.setNameFilter(fileFilterFor(format));
+    }
     dialog.setAcceptMode(QFileDialog::AcceptSave);
     dialog.setDefaultSuffix(suffixFor(format)); // added before the overwrite question
     if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
-        return;
+        return {};
     const QString path = dialog.selectedFiles().constFirst();
     // What the user typed wins: "energy.pdf" typed in the PNG dialog is a PDF.
     if (const auto typed = formatFromSuffix(QFileInfo(path).suffix()))
@@ -99,14 +113,39 @@ void PlotWidget::exportInteractively(ExportFormat format)
     rememberExportFolder(path);
 
     // Exported from the window: the columns are named as the legend on screen names them.
-    ExportOptions options;
+    ExportOptions options = windowExportOptions();
     options.legendNames = true;
+    if (dialog.selectedNameFilter() == plain || dialog.selectedNameFilter() == spreadsheet) {
+        const CsvDialect chosen =
+            dialog.selectedNameFilter() == plain ? CsvDialect::Plain : CsvDialect::Spreadsheet;
+        rememberCsvDialect(chosen);
+        options.csv = lessons::csvConventions(chosen, currentLanguage());
+    }
     const ExportResult result = exportPlot(*this, path, format, options);
     if (!result.ok) {
         QMessageBox::warning(this, tr("Export failed"), result.error);
-        return;
+        return {};
     }
     emit exported(path);
+    return path;
+}
+
+void PlotWidget::installMenuAndCopy()
+{
+    m_plot->setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(m_plot, &QWidget::customContextMenuRequested, this, &PlotWidget::showContextMenu);
+    // Ctrl+C while the plot has the focus (a click gives it) copies the data shown.
+    setFocusPolicy(Qt::ClickFocus);
+    auto* copy = new QShortcut(QKeySequence::Copy, this, this, &PlotWidget::copyData);
+    copy->setContext(Qt::WidgetWithChildrenShortcut);
+}
+
+void PlotWidget::copyData()
+{
+    drain();
+    const QByteArray table =
+        plotTable(*this, lessons::clipboardConventions(currentLanguage()), true, true);
+    QGuiApplication::clipboard()->setText(QString::fromUtf8(table));
 }
 
 } // namespace rigidlab::ui

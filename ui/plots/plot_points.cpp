@@ -32,6 +32,16 @@ std::vector<QPointF> PlotWidget::points(int series) const
     return out;
 }
 
+std::vector<QPointF> PlotWidget::visiblePoints(int series) const
+{
+    const QCPRange shown = m_plot->xAxis->range();
+    std::vector<QPointF> out;
+    for (const PlotPoint& p : m_series.at(series).points())
+        if (p.t >= shown.lower && p.t <= shown.upper)
+            out.emplace_back(p.t, p.v);
+    return out;
+}
+
 int PlotWidget::pointCount(int series) const
 {
     return m_series.at(series).size();

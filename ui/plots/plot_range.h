@@ -17,6 +17,8 @@
 //          bodies could have, |E0| for energy...). It keeps a quantity that is zero up to
 //          rounding (p = 0 ± 5e-16) from being magnified: without it, the floor of a zero is 0.
 
+#include "export/noise_floor.h"
+
 namespace rigidlab::ui {
 
 struct AxisRange {
@@ -27,11 +29,10 @@ struct AxisRange {
     int labelDigits = 6;
 };
 
-/// Variation below this fraction of the magnitude is rounding noise.
-inline constexpr double kNoiseFloor = 1e-9;
-/// The smallest magnitude the noise floor is taken of [unit of the quantity]: below 1e-12 in
-/// any unit is noise.
-inline constexpr double kMinMagnitude = 1e-3;
+/// The noise floor's rule is the files' too (lessons/export/noise_floor.h): what is drawn
+/// flat is written as 0.
+using lessons::kMinMagnitude;
+using lessons::kNoiseFloor;
 /// A flat series sits in an axis this fraction of its magnitude above and below it.
 inline constexpr double kFlatHalfSpan = 0.05;
 /// Fraction of the data's span added above and below a varying series.

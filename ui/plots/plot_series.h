@@ -63,6 +63,9 @@ public:
     /// The name in the legend, in words (the name itself until one is set).
     const QString& legend() const { return m_legend.isEmpty() ? m_name : m_legend; }
     void setLegend(QString legend) { m_legend = std::move(legend); }
+    /// The head of its column in a CSV ("E_k [J]"); empty: its name and the axis' unit.
+    const QString& column() const { return m_column; }
+    void setColumn(QString column) { m_column = std::move(column); }
     YAxis axis() const { return m_axis; }
     ColumnGraph* graph() const { return m_graph; }
     /// The graph that draws the ghost (owned by the QCustomPlot); nullptr draws none.
@@ -118,6 +121,7 @@ private:
     std::vector<PlotPoint> m_ghost;      ///< sorted by t, all after m_points
     QString m_name;
     QString m_legend;
+    QString m_column;
     YAxis m_axis = YAxis::Left;
     SampleValue m_value;
     double m_widthFactor = 1.0;       ///< of the plot's line width

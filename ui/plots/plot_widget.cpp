@@ -69,6 +69,7 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot);
     setMinimumSize(320, 220);
+    installMenuAndCopy();
 
     const QFont base = font();
     m_plot->setNoAntialiasingOnDrag(true);
@@ -125,8 +126,6 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
     m_followButton->setVisible(false);
     m_followButton->raise();
     connect(m_followButton, &QToolButton::clicked, this, &PlotWidget::follow);
-    m_plot->setContextMenuPolicy(Qt::CustomContextMenu);
-    connect(m_plot, &QWidget::customContextMenuRequested, this, &PlotWidget::showContextMenu);
 
     m_timer->setInterval(kRefreshIntervalMs);
     m_timer->setTimerType(Qt::PreciseTimer);
@@ -370,6 +369,21 @@ QString PlotWidget::seriesLegend(int series) const
 QString PlotWidget::seriesUnit(int series) const
 {
     return yAxisUnit(m_series.at(series).axis());
+}
+
+void PlotWidget::setSeriesColumn(int series, const QString& head)
+{
+    m_series.at(series).setColumn(head);
+}
+
+QString PlotWidget::seriesColumn(int series) const
+{
+    return m_series.at(series).column();
+}
+
+double PlotWidget::seriesScale(int series) const
+{
+    return valueScale(m_series.at(series).axis());
 }
 
 void PlotWidget::requestReplot()

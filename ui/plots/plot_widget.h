@@ -86,6 +86,14 @@ public:
     /// The caption's text colour: grey in the window, black in presentation mode.
     QColor captionColour() const;
 
+    /// What the plot's data is of, for the names its exports propose: the scene's title, or
+    /// the lesson's and its step ("Energy drift, step 2").
+    void setExportContext(const QString& context) { m_exportContext = context; }
+    QString exportContext() const { return m_exportContext; }
+    /// The file name an export dialog proposes: the context, the plot's title and the
+    /// language, safe on a Windows share and a USB stick ("welcome_energy_en.csv").
+    QString proposedFileName(ExportFormat format) const;
+
     /// Labels a value axis "quantity [unit]"; the unit also heads the CSV columns.
     void setYAxisLabel(const QString& quantity, const QString& unit, YAxis axis = YAxis::Left);
     QString yAxisUnit(YAxis axis) const;
@@ -130,6 +138,15 @@ public:
     /// The series' name as the legend gives it (setSeriesLegend), without "(right axis)".
     QString seriesLegend(int series) const;
     QString seriesUnit(int series) const;
+    /// The head of a series' CSV column, the same as the command line's for that quantity
+    /// (lessons/export/csv_columns.h: "E_k [J]"); unset, its name and unit: "euler [J]".
+    void setSeriesColumn(int series, const QString& head);
+    QString seriesColumn(int series) const;
+    /// What the series' quantity is worth in the scene (its axis' valueScale): a value below
+    /// its noise floor is written as 0 (lessons/export/noise_floor.h).
+    double seriesScale(int series) const;
+    /// The points of the series with t in the time axis' range as shown [s].
+    std::vector<QPointF> visiblePoints(int series) const;
     /// The points of a series as (t [s], value), oldest first.
     std::vector<QPointF> points(int series) const;
     int pointCount(int series) const;
@@ -209,8 +226,15 @@ public slots:
     /// frame's deadline; its own timer then only stands in while no frames come (a paused
     /// run).
     void frameAdvanced();
-    /// Asks for a file name, then exports; a failure is shown in a message box.
-    void exportInteractively(rigidlab::ui::ExportFormat format);
+    /// Asks for a file name, then exports; a failure is shown in a message box. Returns the
+    /// file written, or an empty string. The dialog opens in the folder last exported into
+    /// (else Documents) with a name proposed from the export context, the plot's title and
+    /// the language; a CSV's dialect is one of its filters, the window's by default, and a
+    /// change is remembered.
+    QString exportInteractively(rigidlab::ui::ExportFormat format);
+    /// Puts the data shown (the series over the time axis' range) on the clipboard as
+    /// tab-separated text in the language's number format (Ctrl+C).
+    void copyData();
 
 signals:
     void followingChanged(bool following);
@@ -258,6 +282,7 @@ private:
     double timeSpan(double run) const; // the time axis for a run this long in window mode
     void placeFollowButton();
     void showContextMenu(const QPoint& pos);
+    void installMenuAndCopy(); ///< the context menu, and Ctrl+C for copyData()
     void onRangeChanged();
     QCPAxis* axisFor(YAxis axis) const;
 
@@ -266,6 +291,7 @@ private:
     QCPTextElement* m_title = nullptr;   ///< owned by m_plot's layout
     QCPTextElement* m_caption = nullptr; ///< child of m_plot; in its layout while shown
     QString m_captionText;
+    QString m_exportContext;
     bool m_captionShown = false;
     QToolButton* m_followButton = nullptr; ///< child, shown while paused
     QTimer* m_timer = nullptr;             ///< child

@@ -4,8 +4,11 @@
 
 #include "plots/plot_widget.h"
 
+#include "export/csv_columns.h"
+
 #include <algorithm>
 #include <iterator>
+#include <utility>
 
 namespace rigidlab::ui {
 
@@ -46,17 +49,25 @@ PlotWidget* makeEnergyPlot(QWidget* parent)
     auto* plot = new PlotWidget(PlotWidget::tr("Energy"), parent);
     plot->setYAxisLabel(PlotWidget::tr("energy E"), QStringLiteral("J"));
     plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
-    plot->addSeries(PlotWidget::tr("kinetic"), plotColor(1),
-                    [](const Sample& s) { return s.kinetic; });
-    plot->addSeries(PlotWidget::tr("potential"), plotColor(0),
-                    [](const Sample& s) { return s.potential; });
-    plot->addSeries(PlotWidget::tr("total"), plotColor(6), [](const Sample& s) { return s.total; });
+    using lessons::CsvColumn;
+    const int kinetic = plot->addSeries(PlotWidget::tr("kinetic"), plotColor(1),
+                                        [](const Sample& s) { return s.kinetic; });
+    const int potential = plot->addSeries(PlotWidget::tr("potential"), plotColor(0),
+                                          [](const Sample& s) { return s.potential; });
+    const int total = plot->addSeries(PlotWidget::tr("total"), plotColor(6),
+                                      [](const Sample& s) { return s.total; });
     // The energy balance: what contacts, friction, drag and dampers took since the start, and
     // the total with it added back, which stays at the starting energy but for the drift.
-    plot->addSeries(PlotWidget::tr("dissipated"), plotColor(2),
-                    [](const Sample& s) { return s.dissipated; });
+    const int dissipated = plot->addSeries(PlotWidget::tr("dissipated"), plotColor(2),
+                                           [](const Sample& s) { return s.dissipated; });
     const int balance = plot->addSeries(PlotWidget::tr("total + dissipated"), plotColor(4),
                                         [](const Sample& s) { return s.total + s.dissipated; });
+    // The CSV heads the command line's diagnostics use for the same quantities.
+    for (const auto& [series, column] :
+         {std::pair{kinetic, CsvColumn::Kinetic}, std::pair{potential, CsvColumn::Potential},
+          std::pair{total, CsvColumn::Total}, std::pair{dissipated, CsvColumn::Dissipated},
+          std::pair{balance, CsvColumn::TotalDissipated}})
+        plot->setSeriesColumn(series, lessons::csvColumnHead(column));
     // With nothing dissipated it lies on the total: dashed, so that both stay visible.
     plot->setSeriesPen(balance, plotPenStyle(1));
     return plot;
@@ -71,11 +82,16 @@ PlotWidget* makeMomentumPlot(QWidget* parent)
     plot->setValueScale(YAxis::Right, [](const Sample& s) { return s.angularMomentumScale; });
     plot->setMinimumSpan(YAxis::Left, kConservedMinimumSpan);
     plot->setMinimumSpan(YAxis::Right, kConservedMinimumSpan);
-    plot->addSeries(QStringLiteral("px"), plotColor(0), [](const Sample& s) { return s.px; });
-    plot->addSeries(QStringLiteral("py"), plotColor(1), [](const Sample& s) { return s.py; });
-    plot->addSeries(
+    const int px =
+        plot->addSeries(QStringLiteral("px"), plotColor(0), [](const Sample& s) { return s.px; });
+    const int py =
+        plot->addSeries(QStringLiteral("py"), plotColor(1), [](const Sample& s) { return s.py; });
+    const int l = plot->addSeries(
         QStringLiteral("L"), plotColor(2), [](const Sample& s) { return s.angularMomentum; },
         YAxis::Right);
+    plot->setSeriesColumn(px, lessons::csvColumnHead(lessons::CsvColumn::Px));
+    plot->setSeriesColumn(py, lessons::csvColumnHead(lessons::CsvColumn::Py));
+    plot->setSeriesColumn(l, lessons::csvColumnHead(lessons::CsvColumn::AngularMomentum));
     return plot;
 }
 
@@ -88,8 +104,9 @@ PlotWidget* makeDriftPlot(QWidget* parent)
     // formula, (E + E_dissipated − E₀)/|E₀|, which the README and the lesson give).
     plot->setYAxisLabel(PlotWidget::tr("drift"), QStringLiteral("%"));
     plot->setValueScale(YAxis::Left, kDriftScalePercent);
-    plot->addSeries(PlotWidget::tr("energy drift (numerical error)"), plotColor(3),
-                    [](const Sample& s) { return s.driftPercent; });
+    const int drift = plot->addSeries(PlotWidget::tr("energy drift (numerical error)"),
+                                      plotColor(3), [](const Sample& s) { return s.driftPercent; });
+    plot->setSeriesColumn(drift, lessons::csvColumnHead(lessons::CsvColumn::DriftPercent));
     return plot;
 }
 

@@ -15,48 +15,9 @@ EnergyReference EnergyReference::of(const physics::World& world)
     return {d.total, d.dissipated, lessons::energyScale(d)};
 }
 
-double stepTime(long long k, double dt)
-{
-    // Integers below 2^53 are exact doubles, and a division is correctly rounded: (k m) / 10^d
-    // is the double nearest the decimal k dt.
-    constexpr double kExactInteger = 9007199254740992.0; // 2^53
-    double scale = 1.0;
-    for (int places = 0; places <= 9; ++places, scale *= 10.0) {
-        const double m = std::round(dt * scale);
-        if (m > 0 && m / scale == dt && static_cast<double>(k) * m < kExactInteger)
-            return static_cast<double>(k) * m / scale;
-    }
-    const double n = std::round(1.0 / dt);
-    if (n > 0 && 1.0 / n == dt)
-        return static_cast<double>(k) / n;
-    return static_cast<double>(k) * dt;
-}
-
 double stepTime(const physics::World& world)
 {
-    const double exact = stepTime(world.stepCount(), world.def().dt);
-    // The sum of k dts is within k rounding errors of k dt; a dt changed mid-run, or a world
-    // that did not start at 0, is far from it.
-    const double tolerance = 1e-9 * std::max(exact, world.def().dt);
-    return std::abs(world.time() - exact) <= tolerance ? exact : world.time();
-}
-
-MomentumScales momentumScales(const physics::World& world)
-{
-    double extent = kMinExtent;
-    for (const physics::Body& b : world.bodies())
-        if (b.isDynamic())
-            extent = std::max(extent, b.position.norm());
-    const double fall = std::sqrt(2.0 * world.def().gravity.norm() * extent);
-    MomentumScales s;
-    for (const physics::Body& b : world.bodies()) {
-        if (!b.isDynamic())
-            continue;
-        const double p = b.mass * (b.velocity.norm() + fall);
-        s.linear += p;
-        s.angular += p * extent + b.inertia * std::abs(b.angularVelocity);
-    }
-    return s;
+    return lessons::stepTime(world.stepCount(), world.def().dt, world.time());
 }
 
 bool SampleClock::due(double t)

@@ -7,6 +7,8 @@
 
 #include "simulation/sample_buffer.h"
 
+#include "export/quantity_scales.h"
+#include "export/step_time.h"
 #include "rigidlab/physics/world.h"
 
 #include <vector>
@@ -38,26 +40,19 @@ struct EnergyReference {
     }
 };
 
-/// The time of step k of a run on a fixed dt [s], as the double nearest the exact product:
-/// with dt = 0.01, step 35 is at 35 / 100 = 0.35, where k * dt gives 0.35000000000000003 and
-/// the sum of k dts 0.35000000000000009. Exact when dt is a decimal of up to 9 places or the
-/// reciprocal of a whole number (1/240 s); k * dt otherwise.
-double stepTime(long long k, double dt);
+/// The time of step k of a run on a fixed dt [s], as a person writes it (lessons/export/
+/// step_time.h has the rule): with dt = 0.01, step 35 is at 0.35.
+using lessons::stepTime;
 /// The time of the world's current step [s]: stepTime(steps, dt) when the world ran on one dt
 /// since t = 0, so that the plots and their CSV say t = 0.35; after a change of dt mid-run,
 /// the world's summed time.
 double stepTime(const physics::World& world);
 
-/// What momenta are worth in a scene, from its bodies as they are now: each body's mass times
-/// its speed plus the speed of a fall across the scene, sqrt(2 |g| extent), and for angular
-/// momentum that times the extent (the farthest centre of mass from the origin, at least
-/// kMinExtent) plus I |omega|.
-struct MomentumScales {
-    double linear = 0;  ///< [kg m/s]
-    double angular = 0; ///< [kg m^2/s]
-};
-inline constexpr double kMinExtent = 0.1; ///< [m]
-MomentumScales momentumScales(const physics::World& world);
+/// What momenta are worth in a scene (lessons/export/quantity_scales.h): the plots' noise
+/// floor and the files' come from the same scales.
+using lessons::kMinExtent;
+using lessons::MomentumScales;
+using lessons::momentumScales;
 
 /// Takes a sample at most every kSampleInterval of simulated time: the first one always, then
 /// the first step at least the interval after the last sample.

@@ -368,7 +368,7 @@ QStringList LessonSession::exportStepPlots(const QString& folder)
     const QString caption =
         lesson ? stepCaption(*lesson, m_parts.player.stepIndex(), m_parts.controller.world().def())
                : m_parts.controller.scene().title;
-    const PlotFilesResult r = exportPlots(plots, folder, caption);
+    const PlotFilesResult r = exportPlots(plots, folder, caption, windowExportOptions());
     return r.ok ? QStringList() : QStringList{r.error};
 }
 

@@ -1,20 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/window_plots.h"
 
-#include "common/export_folder.h"
-#include "common/modal_scope.h"
-#include "format/scene_schema.h"
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "window/window_documents.h"
 
 #include <QCoreApplication>
-#include <QDir>
-#include <QFileDialog>
 #include <QMainWindow>
 #include <QMenu>
-#include <QMessageBox>
 #include <QPointer>
 #include <QStatusBar>
 
@@ -29,20 +23,9 @@ struct PlotExportMenu {
 
 void exportPlotDialog(QWidget& window, PlotWidget& plot, const QString& format)
 {
-    const ModalScope modal;
-    const QString suffix = format.toLower();
-    // The plot's title as the file's name ("energie.csv"), not one name for every plot.
-    const QString suggested = lessons::schema::safeFileStem(plot.title(), QStringLiteral("plot")) + QLatin1Char('.') + suffix;
-    const QString path = QFileDialog::getSaveFileName(
-        &window, PlotExportMenu::tr("Export plot"), QDir(exportFolder()).filePath(suggested),
-        PlotExportMenu::tr("%1 files (*.%2)").arg(format, suffix));
-    if (path.isEmpty())
-        return;
-    rememberExportFolder(path);
-    const ExportResult r = exportPlot(plot, path, *formatFromSuffix(suffix));
-    if (!r.ok)
-        QMessageBox::warning(&window, PlotExportMenu::tr("Export failed"), r.error);
-    else if (auto* main = qobject_cast<QMainWindow*>(&window))
+    // The plot's own dialog (folder, proposed name, CSV dialect), then a word in the status bar.
+    const QString path = plot.exportInteractively(*formatFromSuffix(format.toLower()));
+    if (auto* main = qobject_cast<QMainWindow*>(&window); main && !path.isEmpty())
         main->statusBar()->showMessage(PlotExportMenu::tr("Exported %1").arg(path), 5000);
 }
 
@@ -60,7 +43,10 @@ void followController(PlotWidget& plot, SimulationController& controller)
                      &PlotWidget::frameAdvanced);
     // The plot keeps its points as far back as the timeline goes (going back shows them).
     QObject::connect(&controller, &SimulationController::worldChanged, &plot,
-                     [p = &plot, c = &controller] { p->setTimelineStart(c->earliestTime()); });
+                     [p = &plot, c = &controller] {
+                         p->setTimelineStart(c->earliestTime());
+                         p->setExportContext(c->scene().title); // names its exports
+                     });
 }
 
 void fillExportMenu(QMenu& menu, QWidget& window, std::function<QList<PlotWidget*>()> onScreen)
