@@ -182,18 +182,16 @@ PlotFilesResult exportPlots(const std::vector<PlotWidget*>& plots, const QString
     return result;
 }
 
-PlotFilesResult exportStepPlots(const lessons::Lesson& lesson, int step, const QString& dir,
-                                const ExportOptions& options)
+StepPlots runStepPlots(const lessons::LessonStep& step, QWidget* holder)
 {
-    const lessons::LessonStep& s = lesson.steps.at(static_cast<std::size_t>(step));
-    if (s.plots.isEmpty())
-        return {true, {}, {}};
-
-    // The worlds, sampled exactly as the window's controller samples them.
-    std::vector<physics::World> worlds = lessons::buildStepWorlds(s);
+    StepPlots out;
+    std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
     physics::World main = std::move(worlds.front());
     std::vector<physics::World> variants(std::make_move_iterator(worlds.begin() + 1),
                                          std::make_move_iterator(worlds.end()));
+    out.settings = main.def();
+    if (step.plots.isEmpty())
+        return out;
     main.updateDiagnostics();
     const EnergyReference mainReference = EnergyReference::of(main);
     std::vector<EnergyReference> references;
@@ -201,46 +199,54 @@ PlotFilesResult exportStepPlots(const lessons::Lesson& lesson, int step, const Q
         w.updateDiagnostics();
         references.push_back(EnergyReference::of(w));
     }
-    const bool compared = s.compare.has_value();
+    const bool compared = step.compare.has_value();
 
-    // The plots are never shown; they only need a parent to be owned by.
-    auto holder = std::make_unique<QWidget>();
-    std::vector<PlotWidget*> plots = makeStepPlots(s, holder.get());
+    out.plots = makeStepPlots(step, holder);
     SampleBuffer buffer;
-    for (PlotWidget* plot : plots) {
+    for (PlotWidget* plot : out.plots) {
         plot->setRangeMode(RangeMode::WholeRun);
         plot->setSource(&buffer);
     }
+    // The plots read the buffer only when drained: drained well before its ring wraps round,
+    // so that no sample of the run is lost, and once more at the end.
+    const std::uint64_t drainEvery = buffer.capacity() / 2;
+    std::uint64_t sinceDrain = 0;
     const auto drainAll = [&] {
-        for (PlotWidget* plot : plots)
+        for (PlotWidget* plot : out.plots)
             plot->drain();
+        sinceDrain = 0;
     };
-
     SampleClock clock;
     clock.due(main.time());
     buffer.push(makeSample(main, mainReference, variants, references, compared));
-    const long long steps = lessons::stepsForTime(s.exportTime, main.def().dt);
-    // Drain well before the ring wraps round, so that no sample is lost.
-    const std::uint64_t drainEvery = buffer.capacity() / 2;
-    std::uint64_t sinceDrain = 0;
-    for (long long i = 0; i < steps; ++i) {
-        if (main.divergence())
-            break; // the main world stopped (see physics/divergence.h): so do its plots
+    const long long steps = lessons::stepsForTime(step.exportTime, main.def().dt);
+    for (long long i = 0; i < steps && !main.divergence(); ++i) {
         main.step();
         for (physics::World& w : variants)
             w.step();
         if (clock.due(main.time())) {
             buffer.push(makeSample(main, mainReference, variants, references, compared));
-            if (++sinceDrain >= drainEvery) {
+            if (++sinceDrain >= drainEvery)
                 drainAll();
-                sinceDrain = 0;
-            }
         }
     }
     drainAll();
+    for (PlotWidget* plot : out.plots)
+        plot->setSource(nullptr); // the buffer goes out of scope here
+    return out;
+}
 
-    return exportPlots(plots, QDir(dir).filePath(stepFolderName(lesson, step)),
-                       stepCaption(lesson, step, main.def()), options);
+PlotFilesResult exportStepPlots(const lessons::Lesson& lesson, int step, const QString& dir,
+                                const ExportOptions& options)
+{
+    const lessons::LessonStep& s = lesson.steps.at(static_cast<std::size_t>(step));
+    if (s.plots.isEmpty())
+        return {true, {}, {}};
+    // The plots are never shown; they only need a parent to be owned by.
+    auto holder = std::make_unique<QWidget>();
+    const StepPlots ran = runStepPlots(s, holder.get());
+    return exportPlots(ran.plots, QDir(dir).filePath(stepFolderName(lesson, step)),
+                       stepCaption(lesson, step, ran.settings), options);
 }
 
 PlotFilesResult exportLessonPlots(const lessons::Lesson& lesson, const QString& dir,

@@ -60,6 +60,16 @@ struct PlotFilesResult {
 PlotFilesResult exportPlots(const std::vector<PlotWidget*>& plots, const QString& dir,
                             const QString& caption, const ExportOptions& options = {});
 
+struct StepPlots {
+    std::vector<PlotWidget*> plots; ///< children of the holder given, in the step's order
+    physics::WorldDef settings;     ///< of the main world as it ran
+};
+
+/// Headless: the step's worlds built and run for its exportTime, sampled exactly as the
+/// window's controller samples them, into the step's plots, children of `holder`. The main
+/// world's divergence stops the run (and its plots), as in the window.
+StepPlots runStepPlots(const lessons::LessonStep& step, QWidget* holder);
+
 /// Headless: builds the step's worlds, runs them for its exportTime, and writes its plots
 /// into DIR/stepFolderName(). A step without plots writes nothing and succeeds.
 PlotFilesResult exportStepPlots(const lessons::Lesson& lesson, int step, const QString& dir,

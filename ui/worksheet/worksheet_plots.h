@@ -4,6 +4,8 @@
 // its exportTime and sampled as the window samples them, with the settings the student ran
 // the step with (the answers file's integrator, dt and solver) on top of the step's own.
 
+#include "plots/lesson_export.h"
+
 #include "format/answers_file.h"
 #include "format/lesson.h"
 
@@ -15,16 +17,8 @@ namespace rigidlab::ui {
 
 class PlotWidget;
 
-struct StepPlots {
-    std::vector<PlotWidget*> plots; ///< children of the holder given, in the step's order
-    physics::WorldDef settings;     ///< of the main world as it ran
-};
-
 /// The step with the student's settings applied (those the answers give; nullopt keep the
 /// step's). The settings stay within the step's: a comparison keeps its own integrators.
 lessons::LessonStep stepAsRun(const lessons::LessonStep& step, const lessons::StepAnswers& ran);
-
-/// The step's plots filled by a run without a window, children of `holder`.
-StepPlots runStepPlots(const lessons::LessonStep& step, QWidget* holder);
 
 } // namespace rigidlab::ui
