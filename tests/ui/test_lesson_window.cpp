@@ -53,6 +53,15 @@ void writeTo(const QString& path, const QByteArray& bytes)
     QCOMPARE(file.write(bytes), bytes.size());
 }
 
+/// The window as a 1024×768 projector shows it, with a shipped lesson open.
+void openOnProjector(MainWindow& w, const QString& lesson)
+{
+    w.fitToScreen(QRect(0, 0, 1024, 768));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QCOMPARE(w.openLesson(QDir(MainWindow::lessonsFolder()).filePath(lesson), true), QString());
+}
+
 } // namespace
 
 class TestLessonWindow : public QObject {
@@ -166,13 +175,7 @@ private slots:
     void rightColumnIsShared()
     {
         MainWindow w;
-        w.fitToScreen(QRect(0, 0, 1024, 768));
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QCOMPARE(w.openLesson(
-                     QDir(MainWindow::lessonsFolder()).filePath(QStringLiteral("restitution.json")),
-                     true),
-                 QString());
+        openOnProjector(w, QStringLiteral("restitution.json"));
         w.lessonPlayer().goToStep(2); // the collision table and two plots
         for (const char* name : {"controls", "inspector", "collision"})
             if (QDockWidget* dock = w.dock(QLatin1String(name)); dock && dock->isHidden())
@@ -203,13 +206,7 @@ private slots:
     void verdictScrolledIntoSight()
     {
         MainWindow w;
-        w.fitToScreen(QRect(0, 0, 1024, 768));
-        w.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QCOMPARE(w.openLesson(
-                     QDir(MainWindow::lessonsFolder()).filePath(QStringLiteral("restitution.json")),
-                     true),
-                 QString());
+        openOnProjector(w, QStringLiteral("restitution.json"));
         auto& player = w.lessonPlayer();
         QWidget* viewport = player.parentWidget();
         auto* scroll = qobject_cast<QScrollArea*>(viewport ? viewport->parentWidget() : nullptr);
