@@ -6,7 +6,8 @@
 // start of the step with the fixed margin (ContactSettings::margin, 1 cm), a bullet that moves
 // 1.5 m per step is never near enough to the wall to get one, and jumps over it.
 //
-// So a body that moves more than its own size in a step gets a margin as large as its motion
+// So a body that moves more than its own size in a step (the soft step: more than the margin)
+// gets a margin as large as its motion
 // bound, |v| dt + |w| R dt + |g| dt^2 (R its farthest point from the centre of mass), both in
 // the broad phase (its box grown by that) and in the narrow phase (the pair's margin):
 //
@@ -75,7 +76,11 @@ void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
         const double reach = outerRadius(b);
         const double motion = (b.velocity.norm() + std::abs(b.angularVelocity) * reach) * h +
                               (b.isDynamic() ? ctx.def.gravity.norm() * h * h : 0.0);
-        if (!(motion > ownSize(b)) || !std::isfinite(motion))
+        // The soft step times each impact from the contact's gap at the start of the step
+        // (soft_impacts.cpp), so it wants the contact of every body that moves more than the
+        // margin in a step, before the two overlap; the impulse solvers only the bullets'.
+        const double fastAbove = ctx.plan.soft ? ctx.contactSettings.margin : ownSize(b);
+        if (!(motion > fastAbove) || !std::isfinite(motion))
             continue;
         if (ctx.sweep.empty())
             ctx.sweep.assign(ctx.bodies.size(), 0.0);

@@ -50,6 +50,15 @@ void solveContacts(StepContext& ctx);
 /// step (soft_step.cpp, soft_solver.cpp).
 void softStep(StepContext& ctx);
 
+/// Whether `ct` is an impact faster than `threshold` [m/s] within the step that can be solved
+/// exactly: no impulse carried from the step before, the bodies touching within the step flown
+/// freely. The caller checks that neither moving body has another contact.
+bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, IsolatedImpact& out);
+
+/// The soft step's continuous collision: each fast body put back where its motion in the
+/// step first comes within the slop of a body that does not move (soft_continuous.cpp).
+void softSweepBack(StepContext& ctx);
+
 /// Stage::Sleep: islands that have rested long enough (islands.cpp).
 void sleepIslands(StepContext& ctx);
 

@@ -38,6 +38,14 @@ struct StepPlan {
     int dynamic = 0; ///< dynamic bodies
 };
 
+/// An isolated impact of the soft step (soft_impacts.cpp): when, and the exact impulse's
+/// velocity changes of the contact's two bodies.
+struct IsolatedImpact {
+    double fraction = 0;                         ///< of the step before the impact
+    Vec2 dvA = Vec2::Zero(), dvB = Vec2::Zero(); ///< [m/s]
+    double dwA = 0, dwB = 0;                     ///< [rad/s]
+    double impulse[2] = {0, 0};                  ///< normal, per manifold point [N s]
+};
 /// The world's buffers reused from step to step.
 struct StepScratch {
     BroadPhase broadPhase;
@@ -57,6 +65,13 @@ struct StepScratch {
     /// how far its bounce moves it back, -f dt dv and -f dt dw (empty: nothing bounced).
     std::vector<Vec2> softVelocity, impactShift;
     std::vector<double> softAngularVelocity, impactTurn;
+    /// The soft step's isolated impacts (soft_impacts.cpp): per body, how many contacts it
+    /// has; per contact, whether it is solved as one; the impacts, by contact.
+    std::vector<int> contactsOf;
+    std::vector<char> isolated;
+    std::vector<std::pair<int, IsolatedImpact>> impacts;
+    /// Per body, the fraction of the step before its velocity changed in the collision phase.
+    std::vector<double> impactFraction;
     /// Some body has restitution this step (else no contact has, and none can bounce).
     bool anyRestitution = true;
     /// Each body's applied load over its mass and inertia [m/s^2] and [rad/s^2] (the direct
