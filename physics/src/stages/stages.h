@@ -12,6 +12,11 @@
 
 namespace rigidlab::physics {
 
+/// Why the sequential-impulse solver would stand in for the soft step in this world, whatever
+/// the solver asked for (step_plan.cpp).
+SoftStepStandIn softStandIn(const WorldDef& def, const std::vector<SpringDef>& springs,
+                            const std::vector<PinJointDef>& joints);
+
 /// What this step needs, from what the world holds (step_plan.cpp).
 StepPlan planStep(const WorldDef& def, const std::vector<Body>& bodies,
                   const std::vector<SpringDef>& springs, const std::vector<PinJointDef>& joints,
