@@ -70,6 +70,9 @@ struct StepScratch {
     std::vector<int> contactsOf;
     std::vector<char> isolated;
     std::vector<std::pair<int, IsolatedImpact>> impacts;
+    /// The joints whose bodies a contact touched this step, with every joint that shares a
+    /// body with them (contact_response.cpp).
+    std::vector<PinJointDef> touchedJoints;
     /// Per body, the fraction of the step before its velocity changed in the collision phase.
     std::vector<double> impactFraction;
     /// Some body has restitution this step (else no contact has, and none can bounce).
@@ -157,8 +160,10 @@ private:
 };
 
 /// Gathers the moving bodies' state into the ODE vectors, lets `fn(dynamics, q, v)` change
-/// it, scatters it back (a body asleep keeps its state).
-template <typename Fn> inline void withState(StepContext& ctx, Fn&& fn)
+/// it, scatters it back (a body asleep keeps its state). joints: the joints the dynamics
+/// holds, when not all of the world's.
+template <typename Fn>
+inline void withState(StepContext& ctx, Fn&& fn, const std::vector<PinJointDef>* joints = nullptr)
 {
     Eigen::VectorXd& q = ctx.scratch.q;
     Eigen::VectorXd& v = ctx.scratch.v;
@@ -171,7 +176,7 @@ template <typename Fn> inline void withState(StepContext& ctx, Fn&& fn)
         q.segment<3>(i) << b.position.x(), b.position.y(), b.angle;
         v.segment<3>(i) << b.velocity.x(), b.velocity.y(), b.angularVelocity;
     }
-    Dynamics dynamics(ctx.def, ctx.bodies, ctx.slot, ctx.springs, ctx.joints);
+    Dynamics dynamics(ctx.def, ctx.bodies, ctx.slot, ctx.springs, joints ? *joints : ctx.joints);
     fn(dynamics, q, v);
     ctx.evaluations += dynamics.evaluations;
     for (size_t s = 0; s < ctx.moving.size(); ++s) {
