@@ -45,6 +45,8 @@ double outerRadius(const Body& b)
                    }});
 }
 
+} // namespace
+
 /// The body's smallest width: what it must not jump past [m].
 double ownSize(const Body& b)
 {
@@ -59,8 +61,6 @@ double ownSize(const Body& b)
                                         return 2.0 * std::max(d, 0.0);
                                     }});
 }
-
-} // namespace
 
 void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
 {
@@ -89,34 +89,44 @@ void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
     }
     if (fast.empty())
         return;
-    // Few bodies are fast: test each one's grown box against the boxes near it (the broad
-    // phase's tree holds every slow body's box) and against the other fast bodies' grown boxes.
+    // Each fast body's grown box against the boxes near it (the broad phase's tree holds every
+    // body's box), then the fast bodies' grown boxes against each other, swept along x (the
+    // soft step makes every body faster than the margin a fast one: a falling pile of
+    // thousands, which a test of every two would make quadratic).
     const size_t before = pairs.size();
     const double margin = ctx.contactSettings.margin;
     const StepScratch& s = ctx.scratch;
-    for (int f : fast) {
+    std::vector<std::pair<Aabb, int>> grown;
+    grown.reserve(fast.size());
+    for (int f : fast)
+        grown.emplace_back(computeAabb(ctx.bodies[static_cast<size_t>(f)].shape,
+                                       s.xf[static_cast<size_t>(f)],
+                                       margin + ctx.sweep[static_cast<size_t>(f)]),
+                           f);
+    const auto add = [&](int f, int j) {
         const Body& a = ctx.bodies[static_cast<size_t>(f)];
-        const Aabb box = computeAabb(a.shape, s.xf[static_cast<size_t>(f)],
-                                     margin + ctx.sweep[static_cast<size_t>(f)]);
-        auto consider = [&](int j) {
-            const Body& b = ctx.bodies[static_cast<size_t>(j)];
-            if (j == f || !b.collide || (!a.isDynamic() && !b.isDynamic()))
-                return;
-            const double sweep = ctx.sweep[static_cast<size_t>(j)];
-            const Aabb other =
-                sweep > 0 ? computeAabb(b.shape, s.xf[static_cast<size_t>(j)], margin + sweep)
-                          : s.broadPhase.box(j);
-            if (!box.overlaps(other))
-                return;
-            const std::pair<int, int> p = std::minmax(f, j);
-            if (std::binary_search(ctx.jointPairs.begin(), ctx.jointPairs.end(), p))
-                return;
-            pairs.push_back(p);
-        };
-        s.broadPhase.query(box, consider);
-        for (int g : fast)
-            consider(g);
-    }
+        const Body& b = ctx.bodies[static_cast<size_t>(j)];
+        if (j == f || !b.collide || (!a.isDynamic() && !b.isDynamic()))
+            return;
+        const std::pair<int, int> p = std::minmax(f, j);
+        if (std::binary_search(ctx.jointPairs.begin(), ctx.jointPairs.end(), p))
+            return;
+        pairs.push_back(p);
+    };
+    for (const auto& [box, f] : grown)
+        s.broadPhase.query(box, [&](int j) {
+            if (ctx.sweep[static_cast<size_t>(j)] > 0)
+                return; // another fast body: its grown box, below
+            if (box.overlaps(s.broadPhase.box(j)))
+                add(f, j);
+        });
+    std::sort(grown.begin(), grown.end(),
+              [](const auto& x, const auto& y) { return x.first.lo.x() < y.first.lo.x(); });
+    for (size_t i = 0; i < grown.size(); ++i)
+        for (size_t k = i + 1; k < grown.size() && grown[k].first.lo.x() <= grown[i].first.hi.x();
+             ++k)
+            if (grown[i].first.overlaps(grown[k].first))
+                add(grown[i].second, grown[k].second);
     if (pairs.size() == before)
         return;
     std::sort(pairs.begin(), pairs.end());

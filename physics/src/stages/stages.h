@@ -60,8 +60,12 @@ void softStep(StepContext& ctx);
 /// freely. The caller checks that neither moving body has another contact.
 bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, IsolatedImpact& out);
 
-/// The soft step's continuous collision: each fast body put back where its motion in the
-/// step first comes within the slop of a body that does not move (soft_continuous.cpp).
+/// The body's smallest width: what it must not jump past in a step [m] (continuous.cpp).
+double ownSize(const Body& b);
+
+/// The soft step's continuous collision: each body that moved more than its own size put back where
+/// its motion in the step first comes within the slop of a body that does not move
+/// (soft_continuous.cpp).
 void softSweepBack(StepContext& ctx);
 
 /// Stage::Sleep: islands that have rested long enough (islands.cpp).
