@@ -3,13 +3,15 @@
 // (SolverKind::SoftStep, StepPlan::soft): the forces once, at the start of the step, then
 // the collision phase, then substeps of integration and contact solve (soft_solver.cpp).
 //
-//   collisions                    bounces, as the sequential solver's collision phase
+//   collisions                    isolated impacts exactly at their moment (soft_impacts.cpp),
+//                                 the other bounces as the sequential solver's collision phase
 //   for each substep h = dt / substeps:
 //       v += h a                  integrate velocities
 //       warm start                the contacts' impulses so far
 //       solve, with soft bias     pushes overlaps apart, softly
 //       x += h v                  integrate positions
 //       relax, without bias       takes the push's velocity out again
+//   sweep back                    a bullet to where it first touches a wall (soft_continuous.cpp)
 //
 // Bounces come first, from the sequential solver's collision phase (contact_collisions.cpp,
 // restitution.h), on the bodies as they would end the step without contacts: each contact
