@@ -172,10 +172,10 @@ inline QStringList integratorOptions()
 }
 inline QStringList solverOptions()
 {
-    // The soft step is for large scenes, chosen in a file; the editor offers the two a lesson
-    // compares.
+    // The soft step, every scene's default, and the two a lesson compares it with.
     return {fromView(physics::solverName(physics::SolverKind::PaperImpulse)),
-            fromView(physics::solverName(physics::SolverKind::SequentialImpulse))};
+            fromView(physics::solverName(physics::SolverKind::SequentialImpulse)),
+            fromView(physics::solverName(physics::SolverKind::SoftStep))};
 }
 inline QStringList bodyTypeOptions()
 {

@@ -424,12 +424,20 @@ QString RunReport::summary(const QString& sourceName) const
             .arg(sourceName, QString::number(steps), QString::number(dt, 'g', 6),
                  QString::number(simulatedTime, 'g', 8), QString::number(wallSeconds, 'f', 3),
                  name(physics::integratorName(integrator)), name(physics::solverName(solver)));
+    // The solver that ran, when it is not the one asked for, and why.
+    const QString standInNote =
+        standIn == physics::SoftStepStandIn::None
+            ? QString()
+            : QStringLiteral(" The soft step runs only with the symplectic-euler integrator and "
+                             "without springs, pin joints or gravitation; the sequential-impulse "
+                             "solver ran instead (%1).")
+                  .arg(name(physics::standInName(standIn)));
     const QString energy =
         QStringLiteral(" Total energy went from %1 to %2; contacts took %3, drag and dampers "
                        "%4; the rest, %5, is the numerical error.")
             .arg(formatEnergy(energyStart), formatEnergy(energyEnd), formatEnergy(collisionLoss),
                  formatEnergy(dissipated - collisionLoss), drift);
-    return run + energy;
+    return run + standInNote + energy;
 }
 
 RunReport runScene(const Scene& scene, const RunOptions& options, const QString& sourceName)
@@ -469,6 +477,7 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
     Scene settings = scene;
     settings.world = def;
     physics::World world = buildWorld(settings);
+    report.standIn = world.softStepStandIn();
     world.updateDiagnostics();
     const physics::Diagnostics start = world.diagnostics();
     report.energyStart = start.total;

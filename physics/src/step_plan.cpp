@@ -45,6 +45,50 @@ const char* stageName(Stage s)
     return "?";
 }
 
+SoftStepStandIn softStandIn(const WorldDef& def, const std::vector<SpringDef>& springs,
+                            const std::vector<PinJointDef>& joints)
+{
+    if (def.integrator != IntegratorKind::SymplecticEuler)
+        return SoftStepStandIn::Integrator;
+    if (!springs.empty())
+        return SoftStepStandIn::Springs;
+    if (!joints.empty())
+        return SoftStepStandIn::Joints;
+    if (def.gravitation != 0.0)
+        return SoftStepStandIn::Gravitation;
+    return SoftStepStandIn::None;
+}
+
+std::string_view standInName(SoftStepStandIn why)
+{
+    switch (why) {
+    case SoftStepStandIn::None:
+        return "";
+    case SoftStepStandIn::Integrator:
+        return "integrator";
+    case SoftStepStandIn::Springs:
+        return "springs";
+    case SoftStepStandIn::Joints:
+        return "pin-joints";
+    case SoftStepStandIn::Gravitation:
+        return "gravitation";
+    }
+    return "";
+}
+
+SoftStepStandIn World::softStepStandIn() const
+{
+    if (m_def.solver != SolverKind::SoftStep)
+        return SoftStepStandIn::None;
+    return softStandIn(m_def, m_springs, m_joints);
+}
+
+SolverKind World::solverRunning() const
+{
+    return softStepStandIn() == SoftStepStandIn::None ? m_def.solver
+                                                      : SolverKind::SequentialImpulse;
+}
+
 StepPlan planStep(const WorldDef& def, const std::vector<Body>& bodies,
                   const std::vector<SpringDef>& springs, const std::vector<PinJointDef>& joints,
                   const std::vector<std::pair<int, int>>& jointPairs, bool plain)
@@ -67,8 +111,7 @@ StepPlan planStep(const WorldDef& def, const std::vector<Body>& bodies,
         plan.collide = false; // the only two are pinned together
     // Only contacts couple the bodies: the soft step can run, and symplectic Euler can run
     // straight on the bodies (fast/integrate_direct.cpp; the plain path takes the integrator).
-    const bool contactsOnly = def.integrator == IntegratorKind::SymplecticEuler &&
-                              springs.empty() && joints.empty() && def.gravitation == 0.0;
+    const bool contactsOnly = softStandIn(def, springs, joints) == SoftStepStandIn::None;
     plan.soft = contactsOnly && def.solver == SolverKind::SoftStep;
     plan.direct = contactsOnly && !plain;
     plan.sleep = def.sleep.value_or(dynamic >= kLargeSceneBodies);

@@ -49,13 +49,14 @@ void World::step()
     // Stage::Islands: a body touched by an awake one wakes, with everything touching it.
     if (ctx.plan.sleep)
         wakeIslands(ctx);
-    if (ctx.plan.soft) {
+    if (ctx.plan.soft && ctx.plan.anyAwake) {
         // Stage::Forces, Stage::Integration, Stage::ContactSolve in substeps: the soft step.
         softStep(ctx);
     } else {
         // Stage::Forces, Stage::Integration.
         integrate(ctx);
-        // Stage::ContactSolve: impulses on the new velocities, then position correction.
+        // Stage::ContactSolve: impulses on the new velocities, then position correction. (The
+        // soft step with every body asleep comes here too: only kinematic bodies move.)
         if (!m_contacts.empty() && ctx.plan.anyAwake)
             solveContacts(ctx);
     }

@@ -82,6 +82,7 @@ class TestLesson : public QObject {
 
 private slots:
     // test_lesson_loader.cpp
+    void shippedScenesUseTheSoftStep();
     void shippedLessonsLoad_data();
     void shippedLessonsLoad();
     void shippedLessonsLabelEveryBody_data();

@@ -207,10 +207,10 @@ void TestLesson::smallerStepShrinksDrift()
             worst[k][i] = std::max(worst[k][i], std::abs(driftPercent(run.worlds[i], e0)));
         });
     }
-    QVERIFY(worst[0][0] / worst[1][0] > 10);                // Euler
+    QVERIFY(worst[0][0] / worst[1][0] > 10);              // Euler
     RL_VERIFY_NEAR(worst[0][1] / worst[1][1], 10, 1, 0);  // symplectic Euler
     RL_VERIFY_NEAR(worst[0][2] / worst[1][2], 100, 5, 0); // Verlet
-    QVERIFY(worst[0][3] / worst[1][3] > 1e4);               // RK4
+    QVERIFY(worst[0][3] / worst[1][3] > 1e4);             // RK4
     for (int i = 0; i < 4; ++i)
         QVERIFY(worst[1][i] > 0); // smaller, never none
 }

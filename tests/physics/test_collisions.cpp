@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Collision response against textbook mechanics: head-on collisions of circles, the bounce
 // height of a dropped ball, momentum in free multi-body collisions, an off-centre hit that
-// needs the full impulse denominator, and kinematic and static bodies. Both solvers where
-// the outcome is the same for both.
+// needs the full impulse denominator, and kinematic and static bodies. Every solver where
+// the outcome is the same for all (the soft step's own exact cases: test_soft_exact.cpp).
 
 #include "physics_test_util.h"
 
@@ -54,7 +54,8 @@ private slots:
 
 void TestCollisions::solverNames()
 {
-    for (SolverKind kind : {SolverKind::PaperImpulse, SolverKind::SequentialImpulse}) {
+    for (SolverKind kind :
+         {SolverKind::PaperImpulse, SolverKind::SequentialImpulse, SolverKind::SoftStep}) {
         const auto parsed = solverFromName(solverName(kind));
         QVERIFY(parsed.has_value());
         QVERIFY(*parsed == kind);
@@ -76,7 +77,8 @@ void TestCollisions::headOnCircles_data()
     QTest::addColumn<double>("eA");
     QTest::addColumn<double>("eB");
     for (auto [name, solver] : {std::pair{"paper", SolverKind::PaperImpulse},
-                                std::pair{"sequential", SolverKind::SequentialImpulse}}) {
+                                std::pair{"sequential", SolverKind::SequentialImpulse},
+                                std::pair{"soft", SolverKind::SoftStep}}) {
         QTest::addRow("%s elastic", name) << solver << 1.0 << 1.0;
         QTest::addRow("%s e=0.5", name) << solver << 0.5 << 0.5;
         QTest::addRow("%s e=max(0.2,0.5)", name) << solver << 0.2 << 0.5;
@@ -139,7 +141,8 @@ void TestCollisions::bounceHeight_data()
     QTest::addColumn<double>("e");
     QTest::addColumn<double>("dt");
     for (auto [name, solver] : {std::pair{"paper", SolverKind::PaperImpulse},
-                                std::pair{"sequential", SolverKind::SequentialImpulse}}) {
+                                std::pair{"sequential", SolverKind::SequentialImpulse},
+                                std::pair{"soft", SolverKind::SoftStep}}) {
         for (double e : {0.8, 0.6}) {
             for (double dt : {1e-3, 1e-4}) {
                 QTest::addRow("%s e=%g dt=%g", name, e, dt) << solver << e << dt;
@@ -199,6 +202,7 @@ void TestCollisions::momentumConservedInFreeCollisions_data()
     QTest::addColumn<SolverKind>("solver");
     QTest::newRow("paper") << SolverKind::PaperImpulse;
     QTest::newRow("sequential") << SolverKind::SequentialImpulse;
+    QTest::newRow("soft") << SolverKind::SoftStep;
 }
 
 // Equal balls closing at 0.2 m/s without gravity, e = 1: far below the 0.5 m/s that keeps
@@ -206,7 +210,8 @@ void TestCollisions::momentumConservedInFreeCollisions_data()
 // collisions (both solvers), to 1e-9 m/s.
 void TestCollisions::slowElasticCollision()
 {
-    for (SolverKind solver : {SolverKind::PaperImpulse, SolverKind::SequentialImpulse}) {
+    for (SolverKind solver :
+         {SolverKind::PaperImpulse, SolverKind::SequentialImpulse, SolverKind::SoftStep}) {
         WorldDef def = rigidlab::test::quietWorldDef(IntegratorKind::SymplecticEuler, 1e-3);
         def.solver = solver;
         def.restitution = 1.0;
@@ -367,7 +372,8 @@ void TestCollisions::offCentreHitUsesFullDenominator_data()
     QTest::addColumn<SolverKind>("solver");
     QTest::addColumn<double>("e");
     for (auto [name, solver] : {std::pair{"paper", SolverKind::PaperImpulse},
-                                std::pair{"sequential", SolverKind::SequentialImpulse}}) {
+                                std::pair{"sequential", SolverKind::SequentialImpulse},
+                                std::pair{"soft", SolverKind::SoftStep}}) {
         QTest::addRow("%s e=1", name) << solver << 1.0;
         QTest::addRow("%s e=0.5", name) << solver << 0.5;
     }
@@ -441,6 +447,7 @@ void TestCollisions::kinematicAndStaticBodies_data()
     QTest::addColumn<SolverKind>("solver");
     QTest::newRow("paper") << SolverKind::PaperImpulse;
     QTest::newRow("sequential") << SolverKind::SequentialImpulse;
+    QTest::newRow("soft") << SolverKind::SoftStep;
 }
 
 void TestCollisions::kinematicAndStaticBodies()

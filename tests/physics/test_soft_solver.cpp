@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <string_view>
 #include <vector>
 
 using namespace rigidlab::physics;
@@ -341,6 +342,33 @@ void TestSoftSolver::standsInForOtherPlans()
         return std::vector<double>{b.position.x(), b.position.y(), b.angle, b.velocity.x()};
     };
     QVERIFY(run(SolverKind::SoftStep) == run(SolverKind::SequentialImpulse));
+
+    // The world says which solver runs, and why, for the lab to tell the user.
+    WorldDef def = softDef(1e-3);
+    QVERIFY(World(def).softStepStandIn() == SoftStepStandIn::None);
+    QVERIFY(World(def).solverRunning() == SolverKind::SoftStep);
+    def.integrator = IntegratorKind::Verlet;
+    QVERIFY(World(def).softStepStandIn() == SoftStepStandIn::Integrator);
+    QVERIFY(World(def).solverRunning() == SolverKind::SequentialImpulse);
+    def.integrator = IntegratorKind::SymplecticEuler;
+    def.gravitation = 1e-3;
+    QVERIFY(World(def).softStepStandIn() == SoftStepStandIn::Gravitation);
+    def.gravitation = 0.0;
+    World springs(def);
+    const BodyId a = springs.addBody(boxBody(1.0, 1.0, Vec2(0.0, 0.0)));
+    const BodyId b = springs.addBody(boxBody(1.0, 1.0, Vec2(2.0, 0.0)));
+    SpringDef spring;
+    spring.a = a;
+    spring.b = b;
+    spring.restLength = 2.0;
+    spring.stiffness = 10.0;
+    springs.addSpring(spring);
+    QVERIFY(springs.softStepStandIn() == SoftStepStandIn::Springs);
+    QVERIFY(springs.solverRunning() == SolverKind::SequentialImpulse);
+    QCOMPARE(standInName(SoftStepStandIn::Springs), std::string_view("springs"));
+    def.solver = SolverKind::SequentialImpulse; // nothing stands in for a solver not asked for
+    def.integrator = IntegratorKind::Verlet;
+    QVERIFY(World(def).softStepStandIn() == SoftStepStandIn::None);
 }
 
 // Two identical worlds give the same bits, and so does a copy made halfway; the two-lane and

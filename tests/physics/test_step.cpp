@@ -66,6 +66,7 @@ World dropScene(const WorldDef& def)
 World pileScene(int n, std::optional<bool> sleep)
 {
     WorldDef def;
+    def.solver = SolverKind::SequentialImpulse; // the path this test is about
     def.dt = 1.0 / 60.0;
     def.restitution = 0.0;
     def.friction = 0.6;
@@ -152,6 +153,7 @@ void TestStep::pendulumLeavesOutCollision()
 void TestStep::stagesOfAContactScene()
 {
     WorldDef def;
+    def.solver = SolverKind::SequentialImpulse; // the path this test is about
     def.dt = 1.0 / 120.0;
     def.sleep = false;
     World world = dropScene(def);
@@ -176,6 +178,7 @@ void TestStep::stagesOfAContactScene()
 void TestStep::directIntegrationIsTheGeneralOneBitForBit()
 {
     WorldDef def;
+    def.solver = SolverKind::SequentialImpulse; // the path this test is about
     def.dt = 1.0 / 240.0;
     def.drag = 0.05;
     World direct = dropScene(def);
@@ -299,6 +302,7 @@ void TestStep::sleepIsOnInLargeScenesOnly()
 void TestStep::broadPhaseFindsEveryTouchingPair()
 {
     WorldDef def;
+    def.solver = SolverKind::SequentialImpulse; // the path this test is about
     def.dt = 1.0 / 60.0;
     def.continuous = false; // continuous collision adds pairs for fast bodies on purpose
     def.sleep = false;
@@ -386,6 +390,7 @@ void TestStep::boxFaceBounce()
 void TestStep::heavyBoxOnLightBoxStands()
 {
     WorldDef def;
+    def.solver = SolverKind::SequentialImpulse; // the path this test is about
     def.dt = 1.0 / 60.0;
     def.restitution = 0.0;
     def.friction = 0.6;

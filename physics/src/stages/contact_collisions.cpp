@@ -61,6 +61,8 @@ void ContactSolver::placeAt(Constraint& c, int i, double f)
 bool ContactSolver::bounceTarget(Constraint& c, int i, const Velocity& a, const Velocity& b,
                                  double& target)
 {
+    if (m_exempt && (*m_exempt)[static_cast<size_t>(c.contact)])
+        return false;
     Point& p = c.p[i];
     double vn = normalVelocity(c, i, a, b);
     // A point already timed closes within the step: its lever arms at the impact may make its
@@ -140,10 +142,12 @@ int ContactSolver::solveCollisions(int sweeps)
     return made;
 }
 
-bool ContactSolver::solveCollisionPhase(double threshold, int sweeps)
+bool ContactSolver::solveCollisionPhase(double threshold, int sweeps,
+                                        const std::vector<char>* exempt)
 {
     m_paperImpulse = false;
     m_softPhase = true;
+    m_exempt = exempt;
     prepare(threshold, m_settings->restitutionThreshold);
     for (Constraint& c : m_constraints)
         for (Point& p : c.p) {
@@ -152,6 +156,7 @@ bool ContactSolver::solveCollisionPhase(double threshold, int sweeps)
             p.normalImpulse = p.tangentImpulse = 0.0;
         }
     solveCollisions(std::max(sweeps, 1));
+    m_exempt = nullptr;
     storeVelocities();
     bool bounced = false;
     for (Constraint& c : m_constraints) {

@@ -56,8 +56,10 @@ public:
     /// contact's bounces to Contact::bounceImpulse and what remains of its carried impulses
     /// (prepare(): none where it separates, less last step's bounce) to normalImpulse and
     /// tangentImpulse, the other solver's warm start. Returns whether anything bounced;
-    /// impactFractions() then tells when.
-    bool solveCollisionPhase(double threshold, int sweeps);
+    /// impactFractions() then tells when. exempt: per contact, non-zero for a contact solved
+    /// elsewhere (the soft step's isolated impacts), which does not bounce here.
+    bool solveCollisionPhase(double threshold, int sweeps,
+                             const std::vector<char>* exempt = nullptr);
 
     /// Both solvers end by writing the velocities back to the bodies and the accumulated
     /// impulses to the contacts.
@@ -180,11 +182,12 @@ private:
     std::vector<Velocity> m_velocity; ///< per body
     std::vector<double> m_impact;     ///< per body, see impactFractions()
     std::vector<Rotation> m_rotation; ///< per body, valid where m_rotationStamp == m_stamp
-    bool m_paperImpulse = false;              ///< this step's solver is the paper's impulse
+    bool m_paperImpulse = false;      ///< this step's solver is the paper's impulse
     /// The soft step's collision phase (solveCollisionPhase()): a point timed within the step
     /// bounces even if its arms at the impact slow its approach below closing, and a gap
     /// that closes exactly at the end of the step bounces too (bounceTarget()).
     bool m_softPhase = false;
+    const std::vector<char>* m_exempt = nullptr; ///< see solveCollisionPhase()
     std::vector<unsigned> m_rotationStamp;
     unsigned m_stamp = 0;
 };

@@ -6,7 +6,8 @@
 // start of the step with the fixed margin (ContactSettings::margin, 1 cm), a bullet that moves
 // 1.5 m per step is never near enough to the wall to get one, and jumps over it.
 //
-// So a body that moves more than its own size in a step gets a margin as large as its motion
+// So a body that moves more than its own size in a step (the soft step: more than the margin)
+// gets a margin as large as its motion
 // bound, |v| dt + |w| R dt + |g| dt^2 (R its farthest point from the centre of mass), both in
 // the broad phase (its box grown by that) and in the narrow phase (the pair's margin):
 //
@@ -44,6 +45,8 @@ double outerRadius(const Body& b)
                    }});
 }
 
+} // namespace
+
 /// The body's smallest width: what it must not jump past [m].
 double ownSize(const Body& b)
 {
@@ -59,8 +62,6 @@ double ownSize(const Body& b)
                                     }});
 }
 
-} // namespace
-
 void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
 {
     ctx.sweep.clear();
@@ -75,7 +76,11 @@ void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
         const double reach = outerRadius(b);
         const double motion = (b.velocity.norm() + std::abs(b.angularVelocity) * reach) * h +
                               (b.isDynamic() ? ctx.def.gravity.norm() * h * h : 0.0);
-        if (!(motion > ownSize(b)) || !std::isfinite(motion))
+        // The soft step times each impact from the contact's gap at the start of the step
+        // (soft_impacts.cpp), so it wants the contact of every body that moves more than the
+        // margin in a step, before the two overlap; the impulse solvers only the bullets'.
+        const double fastAbove = ctx.plan.soft ? ctx.contactSettings.margin : ownSize(b);
+        if (!(motion > fastAbove) || !std::isfinite(motion))
             continue;
         if (ctx.sweep.empty())
             ctx.sweep.assign(ctx.bodies.size(), 0.0);
@@ -84,34 +89,44 @@ void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
     }
     if (fast.empty())
         return;
-    // Few bodies are fast: test each one's grown box against the boxes near it (the broad
-    // phase's tree holds every slow body's box) and against the other fast bodies' grown boxes.
+    // Each fast body's grown box against the boxes near it (the broad phase's tree holds every
+    // body's box), then the fast bodies' grown boxes against each other, swept along x (the
+    // soft step makes every body faster than the margin a fast one: a falling pile of
+    // thousands, which a test of every two would make quadratic).
     const size_t before = pairs.size();
     const double margin = ctx.contactSettings.margin;
     const StepScratch& s = ctx.scratch;
-    for (int f : fast) {
+    std::vector<std::pair<Aabb, int>> grown;
+    grown.reserve(fast.size());
+    for (int f : fast)
+        grown.emplace_back(computeAabb(ctx.bodies[static_cast<size_t>(f)].shape,
+                                       s.xf[static_cast<size_t>(f)],
+                                       margin + ctx.sweep[static_cast<size_t>(f)]),
+                           f);
+    const auto add = [&](int f, int j) {
         const Body& a = ctx.bodies[static_cast<size_t>(f)];
-        const Aabb box = computeAabb(a.shape, s.xf[static_cast<size_t>(f)],
-                                     margin + ctx.sweep[static_cast<size_t>(f)]);
-        auto consider = [&](int j) {
-            const Body& b = ctx.bodies[static_cast<size_t>(j)];
-            if (j == f || !b.collide || (!a.isDynamic() && !b.isDynamic()))
-                return;
-            const double sweep = ctx.sweep[static_cast<size_t>(j)];
-            const Aabb other =
-                sweep > 0 ? computeAabb(b.shape, s.xf[static_cast<size_t>(j)], margin + sweep)
-                          : s.broadPhase.box(j);
-            if (!box.overlaps(other))
-                return;
-            const std::pair<int, int> p = std::minmax(f, j);
-            if (std::binary_search(ctx.jointPairs.begin(), ctx.jointPairs.end(), p))
-                return;
-            pairs.push_back(p);
-        };
-        s.broadPhase.query(box, consider);
-        for (int g : fast)
-            consider(g);
-    }
+        const Body& b = ctx.bodies[static_cast<size_t>(j)];
+        if (j == f || !b.collide || (!a.isDynamic() && !b.isDynamic()))
+            return;
+        const std::pair<int, int> p = std::minmax(f, j);
+        if (std::binary_search(ctx.jointPairs.begin(), ctx.jointPairs.end(), p))
+            return;
+        pairs.push_back(p);
+    };
+    for (const auto& [box, f] : grown)
+        s.broadPhase.query(box, [&](int j) {
+            if (ctx.sweep[static_cast<size_t>(j)] > 0)
+                return; // another fast body: its grown box, below
+            if (box.overlaps(s.broadPhase.box(j)))
+                add(f, j);
+        });
+    std::sort(grown.begin(), grown.end(),
+              [](const auto& x, const auto& y) { return x.first.lo.x() < y.first.lo.x(); });
+    for (size_t i = 0; i < grown.size(); ++i)
+        for (size_t k = i + 1; k < grown.size() && grown[k].first.lo.x() <= grown[i].first.hi.x();
+             ++k)
+            if (grown[i].first.overlaps(grown[k].first))
+                add(grown[i].second, grown[k].second);
     if (pairs.size() == before)
         return;
     std::sort(pairs.begin(), pairs.end());

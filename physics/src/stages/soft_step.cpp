@@ -3,13 +3,15 @@
 // (SolverKind::SoftStep, StepPlan::soft): the forces once, at the start of the step, then
 // the collision phase, then substeps of integration and contact solve (soft_solver.cpp).
 //
-//   collisions                    bounces, as the sequential solver's collision phase
+//   collisions                    isolated impacts exactly at their moment (soft_impacts.cpp),
+//                                 the other bounces as the sequential solver's collision phase
 //   for each substep h = dt / substeps:
 //       v += h a                  integrate velocities
 //       warm start                the contacts' impulses so far
 //       solve, with soft bias     pushes overlaps apart, softly
 //       x += h v                  integrate positions
 //       relax, without bias       takes the push's velocity out again
+//   sweep back                    a bullet to where it first touches a wall (soft_continuous.cpp)
 //
 // Bounces come first, from the sequential solver's collision phase (contact_collisions.cpp,
 // restitution.h), on the bodies as they would end the step without contacts: each contact
@@ -35,6 +37,8 @@
 #include "dynamics.h"
 #include "restitution.h"
 #include "stages.h"
+
+#include <tuple>
 
 namespace rigidlab::physics {
 
@@ -89,17 +93,75 @@ bool collisionsToSolve(const std::vector<Contact>& contacts, const std::vector<C
     return false;
 }
 
-/// The soft step's collision phase, before its substeps: the bounces of the sequential
-/// solver's collision phase (contact_collisions.cpp). Returns the kinetic energy they took [J].
+/// The isolated impacts of this step (soft_impacts.cpp): contacts whose moving bodies have no
+/// other contact, each solved exactly at its moment of impact. Fills StepScratch::impacts and
+/// StepScratch::isolated; returns whether there are any.
+bool findIsolatedImpacts(StepContext& ctx, double threshold)
+{
+    StepScratch& s = ctx.scratch;
+    s.impacts.clear();
+    s.isolated.clear();
+    s.contactsOf.assign(ctx.bodies.size(), 0);
+    for (const Contact& ct : ctx.contacts) {
+        ++s.contactsOf[static_cast<size_t>(ct.a)];
+        ++s.contactsOf[static_cast<size_t>(ct.b)];
+    }
+    const auto alone = [&](int id) {
+        const auto i = static_cast<size_t>(id);
+        return !ctx.bodies[i].isActive() || s.contactsOf[i] == 1;
+    };
+    for (size_t k = 0; k < ctx.contacts.size(); ++k) {
+        const Contact& ct = ctx.contacts[k];
+        IsolatedImpact impact;
+        if (!alone(ct.a) || !alone(ct.b) || !isolatedImpact(ctx, ct, threshold, impact))
+            continue;
+        if (s.isolated.empty())
+            s.isolated.assign(ctx.contacts.size(), 0);
+        s.isolated[k] = 1;
+        s.impacts.emplace_back(static_cast<int>(k), impact);
+    }
+    return !s.impacts.empty();
+}
+
+/// The isolated impacts' velocity changes to their bodies (where they end the step without
+/// contacts), their moments to StepScratch::impactFraction, their impulses to the contacts.
+void applyIsolatedImpacts(StepContext& ctx)
+{
+    StepScratch& s = ctx.scratch;
+    for (const auto& [k, impact] : s.impacts) {
+        Contact& ct = ctx.contacts[static_cast<size_t>(k)];
+        for (const auto& [id, dv, dw] :
+             {std::tuple(ct.a, impact.dvA, impact.dwA), std::tuple(ct.b, impact.dvB, impact.dwB)}) {
+            Body& b = ctx.bodies[static_cast<size_t>(id)];
+            if (!b.isActive())
+                continue;
+            b.velocity += dv;
+            b.angularVelocity += dw;
+            s.impactFraction[static_cast<size_t>(id)] = impact.fraction;
+        }
+        // The impulse is reported as a bounce (added after the substeps); nothing to warm start.
+        for (size_t p = 0; p < 2; ++p) {
+            ct.normalImpulse[p] = ct.tangentImpulse[p] = 0.0;
+            ct.bounceImpulse[p] = impact.impulse[p];
+        }
+    }
+}
+
+/// The soft step's collision phase, before its substeps: the isolated impacts' exact impulses,
+/// and the bounces of the sequential solver's collision phase (contact_collisions.cpp) for the
+/// rest. Returns the kinetic energy they took [J].
 double softCollisions(StepContext& ctx, double threshold)
 {
     StepScratch& s = ctx.scratch;
     s.impactShift.clear();
     s.impactTurn.clear();
     const double h = ctx.def.dt;
-    if (ctx.contacts.empty() ||
-        !collisionsToSolve(ctx.contacts, s.previous, ctx.bodies, s.acceleration,
-                           s.angularAcceleration, h, threshold, s.anyRestitution))
+    if (ctx.contacts.empty())
+        return 0.0;
+    const bool exact = findIsolatedImpacts(ctx, threshold);
+    const bool general = collisionsToSolve(ctx.contacts, s.previous, ctx.bodies, s.acceleration,
+                                           s.angularAcceleration, h, threshold, s.anyRestitution);
+    if (!exact && !general)
         return 0.0;
     // Each moving body where it would end the step without contacts (symplectic Euler): where
     // the sequential solver's collision phase finds it.
@@ -120,15 +182,26 @@ double softCollisions(StepContext& ctx, double threshold)
         s.angularVelocityBefore[i] = b.angularVelocity;
         b.position += h * b.velocity;
     }
-    ContactSolver& solver = s.solver;
-    solver.begin(ctx.contacts, s.previous, ctx.bodies, ctx.contactSettings, h, s.xfPosition,
-                 s.velocityAtStart, s.angularVelocityAtStart);
-    const bool bounced = solver.solveCollisionPhase(threshold, ctx.def.iterations);
-    const std::vector<double>& impact = solver.impactFractions();
+    bool bounced = false;
+    if (general) {
+        ContactSolver& solver = s.solver;
+        solver.begin(ctx.contacts, s.previous, ctx.bodies, ctx.contactSettings, h, s.xfPosition,
+                     s.velocityAtStart, s.angularVelocityAtStart);
+        bounced = solver.solveCollisionPhase(threshold, ctx.def.iterations,
+                                             exact ? &s.isolated : nullptr);
+    }
+    // When each body's velocity changed: the collision phase's moments, and the isolated
+    // impacts' (their bodies have no other contact, so no bounce of the phase).
+    if (bounced)
+        s.impactFraction = s.solver.impactFractions();
+    else if (exact)
+        s.impactFraction.assign(n, 0.0);
+    applyIsolatedImpacts(ctx);
     // Back to the start of the step with the bounces' velocity changes; the substeps add the
     // forces. A change at the fraction f moves the body by (1 - f) dt times it by the end of
     // the step, the substeps by dt times it: the rest is taken back after them.
-    if (bounced) {
+    const bool moved = bounced || exact;
+    if (moved) {
         s.impactShift.assign(n, Vec2::Zero());
         s.impactTurn.assign(n, 0.0);
     }
@@ -142,9 +215,9 @@ double softCollisions(StepContext& ctx, double threshold)
         b.position = s.xfPosition[i];
         b.velocity = s.softVelocity[i] + dv;
         b.angularVelocity = s.softAngularVelocity[i] + dw;
-        if (!bounced)
+        if (!moved)
             continue;
-        const double f = impact[i];
+        const double f = s.impactFraction[i];
         s.impactShift[i] = -(f * h) * dv;
         s.impactTurn[i] = -(f * h) * dw;
         // The kinetic energy the bounce took, at the velocities of its moment.
@@ -242,6 +315,10 @@ void softStep(StepContext& ctx)
                 for (size_t k = 0; k < 2; ++k)
                     ct.normalImpulse[k] += ct.bounceImpulse[k];
         }
+    }
+    {
+        StageTimer timer(ctx.profile, Stage::ContactSolve);
+        softSweepBack(ctx);
     }
     ctx.collisionLoss += loss;
     ctx.dragLoss += h * dragPower;

@@ -12,6 +12,11 @@
 
 namespace rigidlab::physics {
 
+/// Why the sequential-impulse solver would stand in for the soft step in this world, whatever
+/// the solver asked for (step_plan.cpp).
+SoftStepStandIn softStandIn(const WorldDef& def, const std::vector<SpringDef>& springs,
+                            const std::vector<PinJointDef>& joints);
+
 /// What this step needs, from what the world holds (step_plan.cpp).
 StepPlan planStep(const WorldDef& def, const std::vector<Body>& bodies,
                   const std::vector<SpringDef>& springs, const std::vector<PinJointDef>& joints,
@@ -49,6 +54,19 @@ void solveContacts(StepContext& ctx);
 /// Stage::Forces, Stage::Integration and Stage::ContactSolve together, in substeps: the soft
 /// step (soft_step.cpp, soft_solver.cpp).
 void softStep(StepContext& ctx);
+
+/// Whether `ct` is an impact faster than `threshold` [m/s] within the step that can be solved
+/// exactly: no impulse carried from the step before, the bodies touching within the step flown
+/// freely. The caller checks that neither moving body has another contact.
+bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, IsolatedImpact& out);
+
+/// The body's smallest width: what it must not jump past in a step [m] (continuous.cpp).
+double ownSize(const Body& b);
+
+/// The soft step's continuous collision: each body that moved more than its own size put back where
+/// its motion in the step first comes within the slop of a body that does not move
+/// (soft_continuous.cpp).
+void softSweepBack(StepContext& ctx);
 
 /// Stage::Sleep: islands that have rested long enough (islands.cpp).
 void sleepIslands(StepContext& ctx);

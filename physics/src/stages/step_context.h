@@ -38,6 +38,14 @@ struct StepPlan {
     int dynamic = 0; ///< dynamic bodies
 };
 
+/// An isolated impact of the soft step (soft_impacts.cpp): when, and the exact impulse's
+/// velocity changes of the contact's two bodies.
+struct IsolatedImpact {
+    double fraction = 0;                         ///< of the step before the impact
+    Vec2 dvA = Vec2::Zero(), dvB = Vec2::Zero(); ///< [m/s]
+    double dwA = 0, dwB = 0;                     ///< [rad/s]
+    double impulse[2] = {0, 0};                  ///< normal, per manifold point [N s]
+};
 /// The world's buffers reused from step to step.
 struct StepScratch {
     BroadPhase broadPhase;
@@ -57,6 +65,16 @@ struct StepScratch {
     /// how far its bounce moves it back, -f dt dv and -f dt dw (empty: nothing bounced).
     std::vector<Vec2> softVelocity, impactShift;
     std::vector<double> softAngularVelocity, impactTurn;
+    /// The soft step's isolated impacts (soft_impacts.cpp): per body, how many contacts it
+    /// has; per contact, whether it is solved as one; the impacts, by contact.
+    std::vector<int> contactsOf;
+    std::vector<char> isolated;
+    std::vector<std::pair<int, IsolatedImpact>> impacts;
+    /// The joints whose bodies a contact touched this step, with every joint that shares a
+    /// body with them (contact_response.cpp).
+    std::vector<PinJointDef> touchedJoints;
+    /// Per body, the fraction of the step before its velocity changed in the collision phase.
+    std::vector<double> impactFraction;
     /// Some body has restitution this step (else no contact has, and none can bounce).
     bool anyRestitution = true;
     /// Each body's applied load over its mass and inertia [m/s^2] and [rad/s^2] (the direct
@@ -142,8 +160,10 @@ private:
 };
 
 /// Gathers the moving bodies' state into the ODE vectors, lets `fn(dynamics, q, v)` change
-/// it, scatters it back (a body asleep keeps its state).
-template <typename Fn> inline void withState(StepContext& ctx, Fn&& fn)
+/// it, scatters it back (a body asleep keeps its state). joints: the joints the dynamics
+/// holds, when not all of the world's.
+template <typename Fn>
+inline void withState(StepContext& ctx, Fn&& fn, const std::vector<PinJointDef>* joints = nullptr)
 {
     Eigen::VectorXd& q = ctx.scratch.q;
     Eigen::VectorXd& v = ctx.scratch.v;
@@ -156,7 +176,7 @@ template <typename Fn> inline void withState(StepContext& ctx, Fn&& fn)
         q.segment<3>(i) << b.position.x(), b.position.y(), b.angle;
         v.segment<3>(i) << b.velocity.x(), b.velocity.y(), b.angularVelocity;
     }
-    Dynamics dynamics(ctx.def, ctx.bodies, ctx.slot, ctx.springs, ctx.joints);
+    Dynamics dynamics(ctx.def, ctx.bodies, ctx.slot, ctx.springs, joints ? *joints : ctx.joints);
     fn(dynamics, q, v);
     ctx.evaluations += dynamics.evaluations;
     for (size_t s = 0; s < ctx.moving.size(); ++s) {

@@ -12,7 +12,7 @@
 namespace rigidlab::physics {
 
 enum class SolverKind {
-    PaperImpulse,       ///< the paper's impulse, contact by contact, once (full denominator)
+    PaperImpulse,      ///< the paper's impulse, contact by contact, once (full denominator)
     SequentialImpulse, ///< accumulated, clamped impulses, iterated and warm started
     /// Soft contacts in substeps with relaxation, after the sequential solver's collision
     /// phase for the bounces (soft_step.cpp, soft_solver.cpp).
@@ -21,7 +21,19 @@ enum class SolverKind {
     SoftStep,
 };
 
+/// Why the sequential-impulse solver stands in for the soft step (the first that applies),
+/// or None when the soft step runs (or was not asked for).
+enum class SoftStepStandIn {
+    None,
+    Integrator,  ///< an integrator other than symplectic Euler
+    Springs,     ///< the world has springs
+    Joints,      ///< the world has pin joints
+    Gravitation, ///< mutual gravitation (G != 0)
+};
+
 std::string_view solverName(SolverKind kind);
+/// A name for each reason: "integrator", "springs", "pin-joints", "gravitation" ("" for None).
+std::string_view standInName(SoftStepStandIn why);
 std::optional<SolverKind> solverFromName(std::string_view name);
 
 struct Contact {

@@ -51,6 +51,11 @@ public:
     void setDt(double dt);
     void setIntegrator(IntegratorKind kind);
     void setSolver(SolverKind kind) { m_def.solver = kind; }
+    /// Why the sequential-impulse solver stands in for the soft step asked for (step_plan.cpp),
+    /// or None; and the solver that runs, which a user must be told when it is not the one
+    /// asked for.
+    SoftStepStandIn softStepStandIn() const;
+    SolverKind solverRunning() const;
     void setIterations(int n);
     // A change of gravity, restitution or friction wakes every body.
     void setGravity(const Vec2& g);

@@ -1,0 +1,242 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The soft step's isolated impacts (soft_step.cpp): two bodies, one contact, no other contact
+// on either moving body. Such an impact is the textbook's, and gets its exact impulse.
+//
+// The collision phase shared with the sequential solver (contact_collisions.cpp) bounces a
+// contact with the normal and points the narrow phase found at the start of the step, a few
+// millimetres before the bodies touch: a cut shot of two billiard balls then pushes along a
+// line a little off the line of centres at the impact, and the balls leave at 89.9995°. Here
+// the moment of impact is found from the shapes themselves, and the impulse is taken there:
+//
+//     f         Newton's iteration on the gap s(f) of the bodies flown freely to the fraction
+//               f of the step (as the step moves them: x0 + f dt v, angle0 + f dt w, with the
+//               velocities the forces give at the end of the step), f += s / (-vn dt), until
+//               s is round-off. The gap of convex shapes approaching is convex in f, so each
+//               step lands short of the root, and the iteration closes in from below.
+//     impulse   the manifold at f: its normal, its touching points and lever arms from the
+//               centres at f. The velocities at f (the forces' share f dt a on those of the
+//               start) get the impulses that turn each approach vn into -e vn, with Coulomb
+//               friction, solved to convergence (one contact: a handful of passes).
+//
+// The impulse's velocity change is added to the end-of-step velocities (the forces act on
+// after the impact as before it), and soft_step.cpp moves each body as if it had flown on
+// until f, as for the collision phase's bounces. One impulse at one point both bodies share,
+// about the centres where they are at the impact, conserves linear and angular momentum to
+// round-off; at e = 1 without friction, kinetic energy too.
+
+#include "rigidlab/physics/world.h"
+
+#include "stages.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigidlab::physics {
+
+namespace {
+
+/// A body's pose and velocities over the step, free flight (symplectic Euler: the position
+/// moves with the velocity at the end of the step).
+struct Flight {
+    Vec2 x0 = Vec2::Zero();     ///< centre of mass at the start [m]
+    double angle0 = 0;          ///< [rad]
+    Vec2 v = Vec2::Zero();      ///< at the end of the step, before contacts [m/s]
+    double w = 0;               ///< [rad/s]
+    Vec2 vStart = Vec2::Zero(); ///< at the start of the step [m/s]
+    double wStart = 0;          ///< [rad/s]
+    Vec2 a = Vec2::Zero();      ///< applied load over mass [m/s^2]
+    double alpha = 0;           ///< [rad/s^2]
+    double invMass = 0, invInertia = 0;
+
+    Vec2 centre(double f, double dt) const { return x0 + (f * dt) * v; }
+    Transform transform(const Body& b, double f, double dt) const
+    {
+        Transform t;
+        t.q = Rotation(angle0 + f * dt * w);
+        t.p = centre(f, dt) - t.q.apply(b.localCenter);
+        return t;
+    }
+};
+
+Flight flightOf(const StepContext& ctx, int id)
+{
+    const auto i = static_cast<size_t>(id);
+    const Body& b = ctx.bodies[i];
+    const StepScratch& s = ctx.scratch;
+    Flight fl;
+    fl.x0 = s.xfPosition[i];
+    fl.angle0 = s.xfAngle[i];
+    fl.vStart = b.velocity;
+    fl.wStart = b.angularVelocity;
+    fl.v = b.velocity;
+    fl.w = b.angularVelocity;
+    if (b.isActive()) {
+        fl.a = s.acceleration[i];
+        fl.alpha = s.angularAcceleration[i];
+        fl.v += ctx.def.dt * fl.a;
+        fl.w += ctx.def.dt * fl.alpha;
+        fl.invMass = b.invMass;
+        fl.invInertia = b.invInertia;
+    }
+    return fl;
+}
+
+struct Velocity {
+    Vec2 v = Vec2::Zero(); ///< [m/s]
+    double w = 0;          ///< [rad/s]
+};
+
+/// The deepest point of a manifold: its index.
+int deepest(const Manifold& m)
+{
+    return m.pointCount > 1 && m.points[1].separation < m.points[0].separation ? 1 : 0;
+}
+
+/// Relative normal velocity of B against A at the world point p [m/s].
+double approach(const Velocity& a, const Velocity& b, const Vec2& p, const Vec2& cA, const Vec2& cB,
+                const Vec2& n)
+{
+    return (b.v + cross(b.w, Vec2(p - cB)) - a.v - cross(a.w, Vec2(p - cA))).dot(n);
+}
+
+/// The fraction of the step at which the two bodies touch, flown freely, and their manifold
+/// then; false when they do not touch within the step or the iteration does not settle.
+bool timeOfImpact(const StepContext& ctx, const Contact& ct, const Flight& A, const Flight& B,
+                  double& f, Manifold& m)
+{
+    const Body& a = ctx.bodies[static_cast<size_t>(ct.a)];
+    const Body& b = ctx.bodies[static_cast<size_t>(ct.b)];
+    const double dt = ctx.def.dt;
+    double start = INFINITY;
+    for (int i = 0; i < ct.manifold.pointCount; ++i)
+        start = std::min(start, ct.manifold.points[static_cast<size_t>(i)].separation);
+    const double margin = std::max(ctx.contactSettings.margin, 2.0 * std::abs(start)) + 1e-3;
+    constexpr double kTouching = 1e-12; // [m]
+    constexpr int kIterations = 50;
+    f = 0.0;
+    for (int k = 0; k < kIterations; ++k) {
+        const Transform xfA = A.transform(a, f, dt), xfB = B.transform(b, f, dt);
+        m = collideShapes(a.shape, xfA, b.shape, xfB, margin);
+        if (m.pointCount == 0)
+            return false;
+        const ContactPoint& cp = m.points[static_cast<size_t>(deepest(m))];
+        if (cp.separation <= kTouching)
+            return true; // touching (or overlapping already at the start, f = 0)
+        const double vn =
+            approach({A.v, A.w}, {B.v, B.w}, cp.point, A.centre(f, dt), B.centre(f, dt), m.normal);
+        if (!(vn < 0.0))
+            return false;
+        f += cp.separation / (-vn * dt);
+        if (!(f <= 1.0))
+            return false;
+    }
+    return false;
+}
+
+/// A touching point of an isolated impact: lever arms from the centres at the impact, its
+/// effective masses, its target normal velocity and its accumulated impulses.
+struct Arm {
+    Vec2 rA = Vec2::Zero(), rB = Vec2::Zero(); ///< [m]
+    double normalMass = 0, tangentMass = 0;    ///< [kg]
+    double target = 0;                         ///< normal velocity after the impact [m/s]
+    double normal = 0, tangent = 0;            ///< [N s]
+};
+
+/// Sequential impulses on this one contact, to convergence: normal impulses to their targets
+/// (accumulated, never pulling), friction within its cone. Changes va and vb.
+void solveImpact(Arm* arm, int count, const Vec2& n, double friction, const Flight& A,
+                 const Flight& B, Velocity& va, Velocity& vb)
+{
+    const Vec2 t(n.y(), -n.x());
+    auto apply = [&](const Arm& r, const Vec2& dir, double lambda) {
+        va.v -= (A.invMass * lambda) * dir;
+        va.w -= A.invInertia * lambda * cross(r.rA, dir);
+        vb.v += (B.invMass * lambda) * dir;
+        vb.w += B.invInertia * lambda * cross(r.rB, dir);
+    };
+    constexpr int kPasses = 500;
+    for (int pass = 0; pass < kPasses; ++pass) {
+        double change = 0.0, scale = 0.0;
+        for (int i = 0; i < count; ++i) {
+            Arm& r = arm[i];
+            const double vn = (vb.v + cross(vb.w, r.rB) - va.v - cross(va.w, r.rA)).dot(n);
+            const double next = std::max(r.normal + r.normalMass * (r.target - vn), 0.0);
+            apply(r, n, next - r.normal);
+            change = std::max(change, std::abs(next - r.normal));
+            r.normal = next;
+            const double vt = (vb.v + cross(vb.w, r.rB) - va.v - cross(va.w, r.rA)).dot(t);
+            const double limit = friction * r.normal;
+            const double nextT = std::clamp(r.tangent - r.tangentMass * vt, -limit, limit);
+            apply(r, t, nextT - r.tangent);
+            change = std::max(change, std::abs(nextT - r.tangent));
+            r.tangent = nextT;
+            scale = std::max(scale, r.normal);
+        }
+        if (change <= 1e-15 * scale)
+            return;
+    }
+}
+
+} // namespace
+
+bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, IsolatedImpact& out)
+{
+    for (int i = 0; i < ct.manifold.pointCount; ++i)
+        if (ct.normalImpulse[static_cast<size_t>(i)] != 0.0)
+            return false; // a resting contact, carried from the step before
+    const Flight A = flightOf(ctx, ct.a), B = flightOf(ctx, ct.b);
+    if (A.invMass == 0.0 && B.invMass == 0.0)
+        return false;
+    double f = 0;
+    Manifold m;
+    if (!timeOfImpact(ctx, ct, A, B, f, m))
+        return false;
+    const double dt = ctx.def.dt;
+    const Vec2 cA = A.centre(f, dt), cB = B.centre(f, dt);
+    // The velocities at the impact: the forces' share of the step so far on those at the start.
+    const double fdt = f * dt;
+    Velocity va{A.vStart + fdt * A.a, A.wStart + fdt * A.alpha};
+    Velocity vb{B.vStart + fdt * B.a, B.wStart + fdt * B.alpha};
+    if (A.invMass == 0.0) // a kinematic or static body keeps its velocity
+        va = {A.v, A.w};
+    if (B.invMass == 0.0)
+        vb = {B.v, B.w};
+    const Vec2 n = m.normal, t(n.y(), -n.x());
+    const double least = m.points[static_cast<size_t>(deepest(m))].separation;
+    constexpr double kFlat = 1e-9; // [m]: a second point this close touches too
+    Arm arm[2];
+    int count = 0;
+    for (int i = 0; i < m.pointCount; ++i) {
+        const ContactPoint& cp = m.points[static_cast<size_t>(i)];
+        if (cp.separation > least + kFlat)
+            continue;
+        Arm& r = arm[count++];
+        r.rA = cp.point - cA;
+        r.rB = cp.point - cB;
+        const double rnA = cross(r.rA, n), rnB = cross(r.rB, n);
+        const double rtA = cross(r.rA, t), rtB = cross(r.rB, t);
+        r.normalMass =
+            1.0 / (A.invMass + B.invMass + A.invInertia * rnA * rnA + B.invInertia * rnB * rnB);
+        r.tangentMass =
+            1.0 / (A.invMass + B.invMass + A.invInertia * rtA * rtA + B.invInertia * rtB * rtB);
+        const double vn = approach(va, vb, cp.point, cA, cB, n);
+        r.target = vn < 0.0 ? -ct.restitution * vn : 0.0;
+        if (i == deepest(m) && !(vn < -threshold))
+            return false; // too slow to be an impact: the substeps' contact rests it
+    }
+    const Velocity before[2] = {va, vb};
+    solveImpact(arm, count, n, ct.friction, A, B, va, vb);
+    out = IsolatedImpact{};
+    out.fraction = f;
+    out.dvA = va.v - before[0].v;
+    out.dwA = va.w - before[0].w;
+    out.dvB = vb.v - before[1].v;
+    out.dwB = vb.w - before[1].w;
+    // The contact's points at the start of the step take the impulses of the points that
+    // touched, by their order (a manifold found apart has its points in the same order).
+    for (int i = 0; i < count && i < ct.manifold.pointCount; ++i)
+        out.impulse[static_cast<size_t>(i)] = arm[i].normal;
+    return true;
+}
+
+} // namespace rigidlab::physics
