@@ -89,8 +89,9 @@ Commands:
       --tol-from A --tol-to B  the tolerances swept by the adaptive ones (1e-3 to 1e-11)
       --t-end T              end time [s] (default: each problem's own)
       --min-cpu S            CPU time spent timing each row (default 0.05 s)
-      --csv FILE.csv         problem,integrator,dt,steps,evaluations,error,max_error,
-                             energy_error,seconds
+      --csv FILE.csv         problem,integrator,dt [s],steps,evaluations,error,max_error,
+                             energy_error,seconds [s]
+      --csv-dialect D        plain (default) or spreadsheet in --lang's conventions (see run)
       --plot FILE.png|.pdf|.svg  the work-precision diagram (FILE-PROBLEM.png for several)
   stress [OPTIONS]           stiff and extreme cases, each with its verdict
       --case NAME            one case (default: all; --case list names them)

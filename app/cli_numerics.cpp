@@ -157,10 +157,14 @@ int commandErrorVsTime(const QStringList& words)
 {
     CommandLine args(QStringLiteral("error-vs-time"));
     for (const char* name : {"problem", "integrators", "dt-from", "dt-to", "points", "t-end", "csv",
-                             "plot", "tol-from", "tol-to", "min-cpu"})
+                             "plot", "tol-from", "tol-to", "min-cpu", "csv-dialect", "lang"})
         args.addValue(QLatin1StringView(name));
     if (!args.parseOptionsOnly(words))
         return usageError(args.command(), args.error());
+    QString csvError;
+    const auto conventions = csvOption(args, csvError);
+    if (!conventions)
+        return usageError(args.command(), csvError);
     lessons::SweepOptions options;
     if (const QString bad = readSweepOptions(args, options); !bad.isEmpty())
         return usageError(args.command(), bad);
@@ -175,7 +179,7 @@ int commandErrorVsTime(const QStringList& words)
     const std::vector<lessons::SweepRow> rows = runAndPrintSweep(options);
     const QStringList problems = printObservedOrders(rows, options);
     if (const auto csv = args.value(QStringLiteral("csv"));
-        csv && !writeFile(*csv, lessons::sweepCsv(rows)))
+        csv && !writeFile(*csv, lessons::sweepCsv(rows, *conventions)))
         return kExitOutputError;
     if (format)
         return writeWorkPrecisionPlots(rows, problems, plotPath, *format);

@@ -2,6 +2,8 @@
 // The work-precision sweep (see error_vs_time.h).
 
 #include "numerics/error_vs_time.h"
+
+#include "export/csv_writer.h"
 #include "format/view_text.h"
 
 #include "numerics/sweep_run.h"
@@ -172,13 +174,6 @@ SweepRow measure(const ReferenceProblem& problem, const QString& integrator, dou
     return row;
 }
 
-void appendNumber(QByteArray& out, double value)
-{
-    char text[32];
-    const auto end = std::to_chars(text, text + sizeof text, value, std::chars_format::general, 17);
-    out.append(text, end.ptr - text);
-}
-
 } // namespace
 
 QStringList sweepIntegratorNames()
@@ -314,22 +309,22 @@ OrderGap orderGap(const std::vector<SweepRow>& rows, const QString& problem,
     return small >= large ? OrderGap::RoundOff : OrderGap::TooLarge;
 }
 
-QByteArray sweepCsv(const std::vector<SweepRow>& rows)
+QByteArray sweepCsv(const std::vector<SweepRow>& rows, const CsvConventions& conventions)
 {
-    QByteArray out(kSweepCsvHeader);
-    out += '\n';
+    CsvWriter csv(conventions);
+    csv.row(QString::fromLatin1(kSweepCsvHeader).split(u','));
     for (const SweepRow& r : rows) {
-        out += r.problem.toUtf8() + ',' + r.integrator.toUtf8() + ',';
-        appendNumber(out, r.dt);
-        out += ',' + QByteArray::number(r.steps) + ',' + QByteArray::number(r.evaluations) + ',';
-        for (double v : {r.error, r.maxError, r.energyError}) {
-            appendNumber(out, v);
-            out += ',';
-        }
-        appendNumber(out, r.seconds);
-        out += '\n';
+        csv.text(r.problem);
+        csv.text(r.integrator);
+        csv.number(r.dt);
+        csv.integer(r.steps);
+        csv.integer(r.evaluations);
+        for (double v : {r.error, r.maxError, r.energyError, r.seconds})
+            csv.number(v);
+        csv.endRow();
     }
-    return out;
+    const std::string& data = csv.data();
+    return QByteArray(data.data(), static_cast<qsizetype>(data.size()));
 }
 
 } // namespace rigidlab::lessons

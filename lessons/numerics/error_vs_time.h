@@ -21,6 +21,7 @@
 // ("odeint-dopri5") on the same equations. Fixed-step methods sweep dt; the adaptive ones
 // sweep their tolerance (absolute = relative) over [tolFrom, tolTo] instead, in as many points.
 
+#include "export/csv_dialect.h"
 #include "numerics/reference_problems.h"
 
 #include <QByteArray>
@@ -34,8 +35,9 @@
 
 namespace rigidlab::lessons {
 
-inline constexpr const char* kSweepCsvHeader =
-    "problem,integrator,dt,steps,evaluations,error,max_error,energy_error,seconds";
+/// The sweep's CSV head: the error columns are in the problem's own unit (its state's norm).
+inline constexpr const char* kSweepCsvHeader = "problem,integrator,dt [s],steps,evaluations,"
+                                               "error,max_error,energy_error,seconds [s]";
 
 struct SweepOptions {
     QStringList problems;               ///< names; empty: all
@@ -97,7 +99,8 @@ enum class OrderGap {
 OrderGap orderGap(const std::vector<SweepRow>& rows, const QString& problem,
                   const QString& integrator);
 
-/// The rows as CSV, header kSweepCsvHeader, numbers with 17 significant digits.
-QByteArray sweepCsv(const std::vector<SweepRow>& rows);
+/// The rows as CSV in `conventions` (export/csv_writer.h: every number the shortest text
+/// that reads back to it), head kSweepCsvHeader.
+QByteArray sweepCsv(const std::vector<SweepRow>& rows, const CsvConventions& conventions = {});
 
 } // namespace rigidlab::lessons

@@ -456,9 +456,8 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
     def.solver = options.solver.value_or(def.solver);
     QString error;
     const std::optional<long long> toRun = stepsToRun(options, def, error);
-    if (!toRun) {
+    if (!toRun)
         return fail(RunStatus::BadOptions, error);
-    }
     const long long steps = *toRun;
     report.dt = def.dt;
     report.integrator = def.integrator;

@@ -25,6 +25,10 @@ void TestLesson::shippedScenesUseTheSoftStep()
          QStringLiteral("the balls hang on pins, where the sequential solver would stand in for "
                         "the soft step; the paper's impulse passes the blow pair by pair along "
                         "the 1 mm gaps, as the description tells")},
+        {QStringLiteral("lab_vs_measurement.json"),
+         QStringLiteral("the same as measure/samples/ball_floor.json, from which the shipped "
+                        "sample measurements were made: the lesson fits e to them with the "
+                        "solver that made them")},
     };
     // Lessons whose steps name or compare other solvers, and why.
     const std::map<QString, QString> lessons = {

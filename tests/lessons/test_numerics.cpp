@@ -11,6 +11,7 @@
 #include "near.h"
 #include "test_main.h"
 
+#include <QLocale>
 #include <QTest>
 
 #include <cmath>
@@ -125,8 +126,20 @@ void TestNumerics::csvHeader()
     QVERIFY(cancelled);
     QCOMPARE(int(rows.size()), 1);
     const QByteArray csv = lessons::sweepCsv(rows);
-    QVERIFY(csv.startsWith("problem,integrator,dt,steps,evaluations,error,max_error,"
-                           "energy_error,seconds\nspinning-body,verlet,"));
+    QVERIFY2(csv.startsWith("problem,integrator,dt [s],steps,evaluations,error,max_error,"
+                            "energy_error,seconds [s]\nspinning-body,verlet,"),
+             csv.constData());
+    // Shortest round trip: the step reads back as the run's dt, in few digits.
+    const QList<QByteArray> cells = csv.split('\n').at(1).split(',');
+    QCOMPARE(cells.at(2).toDouble(), rows.front().dt);
+    QVERIFY2(cells.at(2).size() <= 17, cells.at(2).constData());
+    // The Czech spreadsheet dialect: BOM, ';' and decimal comma.
+    const QByteArray czech = lessons::sweepCsv(
+        rows, lessons::csvConventions(lessons::CsvDialect::Spreadsheet, QStringLiteral("cs")));
+    QVERIFY(czech.startsWith("\xEF\xBB\xBFproblem;integrator;dt [s];"));
+    const QList<QByteArray> czechCells = czech.split('\n').at(1).split(';');
+    QCOMPARE(QLocale(QLocale::Czech).toDouble(QString::fromUtf8(czechCells.at(2))),
+             rows.front().dt);
 }
 
 void TestNumerics::badOptions()

@@ -113,13 +113,18 @@ void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
             return;
         pairs.push_back(p);
     };
-    for (const auto& [box, f] : grown)
+    for (const auto& entry : grown) {
+        // Named, not a structured binding: clang before 16 (the fuzz build's) cannot capture
+        // one in a lambda.
+        const auto& box = entry.first;
+        const int f = entry.second;
         s.broadPhase.query(box, [&](int j) {
             if (ctx.sweep[static_cast<size_t>(j)] > 0)
                 return; // another fast body: its grown box, below
             if (box.overlaps(s.broadPhase.box(j)))
                 add(f, j);
         });
+    }
     std::sort(grown.begin(), grown.end(),
               [](const auto& x, const auto& y) { return x.first.lo.x() < y.first.lo.x(); });
     for (size_t i = 0; i < grown.size(); ++i)
