@@ -27,8 +27,6 @@
 
 namespace rigidlab::physics {
 
-namespace {
-
 /// Distance from the centre of mass to the shape's farthest point [m].
 double outerRadius(const Body& b)
 {
@@ -44,8 +42,6 @@ double outerRadius(const Body& b)
                        return std::sqrt(r2);
                    }});
 }
-
-} // namespace
 
 /// The body's smallest width: what it must not jump past [m].
 double ownSize(const Body& b)

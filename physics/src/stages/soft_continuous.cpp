@@ -86,19 +86,6 @@ double firstTouch(const StepContext& ctx, int fast, int other, double reach, dou
     return t; // still closing in after many steps: stop where it is, short of touching
 }
 
-/// The farthest point of the body's shape from its centre of mass [m].
-double reachOf(const Body& b)
-{
-    return b.shape.visit(
-        Overloaded{[&](const Circle& c) { return (c.center - b.localCenter).norm() + c.radius; },
-                   [&](const Polygon& p) {
-                       double r2 = 0;
-                       for (const Vec2& v : p.vertices)
-                           r2 = std::max(r2, (v - b.localCenter).squaredNorm());
-                       return std::sqrt(r2);
-                   }});
-}
-
 } // namespace
 
 void softSweepBack(StepContext& ctx)
@@ -115,7 +102,7 @@ void softSweepBack(StepContext& ctx)
         // its step).
         if (!(ctx.sweep[i] > 0) || !a.isActive() || !a.collide || !(ctx.sweep[i] > ownSize(a)))
             continue;
-        const double reach = reachOf(a);
+        const double reach = outerRadius(a);
         const Vec2 x0 = s.xfPosition[i];
         const double angle0 = s.xfAngle[i];
         // Everything the motion could reach: the box of the start's pose grown by the sweep.

@@ -60,6 +60,8 @@ void softStep(StepContext& ctx);
 /// freely. The caller checks that neither moving body has another contact.
 bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, IsolatedImpact& out);
 
+/// Distance from the body's centre of mass to its shape's farthest point [m] (continuous.cpp).
+double outerRadius(const Body& b);
 /// The body's smallest width: what it must not jump past in a step [m] (continuous.cpp).
 double ownSize(const Body& b);
 
