@@ -84,6 +84,11 @@ void solveContacts(StepContext& ctx)
     ContactSolver& solver = s.solver;
     solver.begin(ctx.contacts, s.previous, ctx.bodies, ctx.contactSettings, h, s.xfPosition,
                  s.velocityAtStart, s.angularVelocityAtStart);
+    // The pins a contact touches are solved with the contacts (contact_solver_pins.cpp); the
+    // paper's impulse stays the paper's, one impulse per contact point.
+    const bool jointed = touchedJoints(ctx);
+    if (jointed && ctx.def.solver != SolverKind::PaperImpulse)
+        solver.setPins(s.touchedJoints);
     if (ctx.def.solver == SolverKind::PaperImpulse)
         solver.solveSeed();
     else
@@ -108,7 +113,6 @@ void solveContacts(StepContext& ctx)
     // pendulum's velocity again whenever some box elsewhere rests on the floor pumped energy
     // into it (the welcome scene's wrecking ball: 3 % in 2 minutes). The joints no contact
     // touches are left alone for the same reason.
-    const bool jointed = touchedJoints(ctx);
     if (jointed && solver.appliedImpulse())
         withState(
             ctx,

@@ -86,6 +86,7 @@ void ContactSolver::begin(std::vector<Contact>& contacts, const std::vector<Cont
     m_startAngularVelocity = &startAngularVelocity;
     m_softPhase = false;
     m_constraints.clear();
+    m_pins.clear();
     const size_t n = bodies.size();
     m_velocity.resize(n);
     for (size_t i = 0; i < n; ++i) {
@@ -431,6 +432,7 @@ void ContactSolver::solveSequential(int iterations, bool warm, double threshold)
             m_velocity[static_cast<size_t>(c.a)] = a;
             m_velocity[static_cast<size_t>(c.b)] = b;
         }
+        solvePins();
     }
     store();
 }
@@ -582,6 +584,7 @@ int ContactSolver::solvePositions(int passes)
                     m_rotationStamp[static_cast<size_t>(c.b)] = 0;
             }
         }
+        solvePinPositions();
         if (worst >= -3.0 * s.linearSlop)
             break;
     }

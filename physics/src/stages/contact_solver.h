@@ -11,6 +11,8 @@
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/world.h"
 
+#include <Eigen/Dense>
+
 #include <algorithm>
 #include <vector>
 
@@ -75,6 +77,11 @@ public:
     /// passes, fewer once every contact is within the allowed penetration. Moves the bodies.
     /// Returns the passes made.
     int solvePositions(int passes);
+
+    /// The pin joints that share a body with this step's contacts, solved with them: in every
+    /// velocity iteration after the contacts, and in every position pass
+    /// (contact_solver_pins.cpp). Set after begin(), before the solve; none by default.
+    void setPins(const std::vector<PinJointDef>& pins);
 
     /// Contacts solved this step (those with an awake dynamic body).
     int constraintCount() const { return static_cast<int>(m_constraints.size()); }
@@ -159,6 +166,22 @@ private:
     static void solveNormalPoint(Constraint& c, int i, Velocity& a, Velocity& b);
     static void solveNormalBlock(Constraint& c, Velocity& a, Velocity& b);
     static double normalVelocity(const Constraint& c, int i, const Velocity& a, const Velocity& b);
+    /// A pin joint as the solver sees it: body indices (-1 for the world), lever arms and
+    /// the inverse of its 2x2 mass matrix, and its accumulated impulse (on A; -impulse on B).
+    struct Pin {
+        int a = -1, b = -1;
+        Vec2 anchorA = Vec2::Zero(), anchorB = Vec2::Zero(); ///< from the centres, body frame
+        double invMassA = 0, invIA = 0, invMassB = 0, invIB = 0;
+        Vec2 rA = Vec2::Zero(), rB = Vec2::Zero(); ///< lever arms in the world [m]
+        Eigen::Matrix2d mass = Eigen::Matrix2d::Zero();
+        Vec2 impulse = Vec2::Zero(); ///< accumulated this step [N s]
+    };
+    /// Lever arms and mass matrix of each pin at the bodies' present angles.
+    void preparePins();
+    /// One Gauss-Seidel pass over the pins' velocity constraints.
+    void solvePins();
+    /// One pass of position corrections onto the pins (the bodies move).
+    void solvePinPositions();
     /// Velocities and impulses back to the bodies and contacts.
     void store();
     /// The solver's velocities back to the bodies (the first half of store()).
@@ -179,6 +202,7 @@ private:
     const std::vector<double>* m_startAngularVelocity = nullptr;
 
     std::vector<Constraint> m_constraints;
+    std::vector<Pin> m_pins;
     std::vector<Velocity> m_velocity; ///< per body
     std::vector<double> m_impact;     ///< per body, see impactFractions()
     std::vector<Rotation> m_rotation; ///< per body, valid where m_rotationStamp == m_stamp
