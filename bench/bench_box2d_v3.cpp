@@ -2,7 +2,9 @@
 // Box2D v3's side of the benchmarks: the same bodies in a b2World of the C API, on one thread.
 // Built only when ./lab bench is given a Box2D v3 source tree (BOX2D_V3_DIR, CMakeLists.txt):
 // this is the one translation unit that includes v3's <box2d/box2d.h>, which has the same name
-// as 2.4's (bench_box2d.cpp).
+// as 2.4's (bench_box2d.cpp). It is compiled twice, once for each build of Box2D v3 (SSE2, its
+// default, and AVX2), each copy into a shared library of its own with a factory of its own
+// (RIGIDLAB_BENCH_BOX2D_V3_FACTORY) and a name with the build (RIGIDLAB_BENCH_BOX2D_V3_LABEL).
 
 #include "bench_peers.h"
 
@@ -23,12 +25,13 @@ class Box2dV3Engine final : public bench::BenchEngine {
 public:
     ~Box2dV3Engine() override { destroy(); }
 
-    std::string name() const override { return "Box2D v3"; }
+    std::string name() const override { return "Box2D v3 " RIGIDLAB_BENCH_BOX2D_V3_LABEL; }
     std::string settings() const override
     {
         const b2Version v = b2GetVersion();
         return std::to_string(v.major) + "." + std::to_string(v.minor) + "." +
-               std::to_string(v.revision) + ", " + std::to_string(kSubSteps) +
+               std::to_string(v.revision) + " built with " RIGIDLAB_BENCH_BOX2D_V3_LABEL ", " +
+               std::to_string(kSubSteps) +
                " substeps, single precision, one thread (workerCount 1, no task system), "
                "sleeping off";
     }
@@ -108,7 +111,7 @@ private:
 
 } // namespace
 
-std::unique_ptr<bench::BenchEngine> makeBox2dV3Engine()
+[[gnu::visibility("default")]] std::unique_ptr<bench::BenchEngine> RIGIDLAB_BENCH_BOX2D_V3_FACTORY()
 {
     return std::make_unique<Box2dV3Engine>();
 }

@@ -46,7 +46,8 @@ makeEngines([[maybe_unused]] std::vector<std::string>& missing)
     soft.solver = physics::SolverKind::SoftStep;
     engines.push_back(bench::makeRigidLabBenchEngine(soft));
 #ifdef RIGIDLAB_BENCH_BOX2D_V3
-    engines.push_back(bench::makeBox2dV3Engine());
+    engines.push_back(bench::makeBox2dV3Engine_sse2());
+    engines.push_back(bench::makeBox2dV3Engine_avx2());
 #elif defined(RIGIDLAB_BENCH_BOX2D_V3_MISSING)
     missing.push_back(std::string("Box2D v3: ") + RIGIDLAB_BENCH_BOX2D_V3_MISSING);
 #endif

@@ -14,8 +14,10 @@ namespace rigidlab::bench {
 std::unique_ptr<bench::BenchEngine> makeBox2dEngine();
 #endif
 #ifdef RIGIDLAB_BENCH_BOX2D_V3
-/// Box2D v3 (single precision) at its usual settings (4 substeps), on one thread.
-std::unique_ptr<bench::BenchEngine> makeBox2dV3Engine();
+/// Box2D v3 (single precision) at its usual settings (4 substeps), on one thread: as it
+/// builds by default (SSE2) and with its AVX2 option (each in a shared library of its own).
+std::unique_ptr<bench::BenchEngine> makeBox2dV3Engine_sse2();
+std::unique_ptr<bench::BenchEngine> makeBox2dV3Engine_avx2();
 #endif
 #ifdef RIGIDLAB_BENCH_CHIPMUNK
 /// Chipmunk 7 (double precision) at its usual settings: 10 iterations.
