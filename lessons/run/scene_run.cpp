@@ -418,19 +418,22 @@ QString RunReport::summary(const QString& sourceName) const
                               .arg(QString::number(100.0 * this->drift(), 'g', 4));
     // Each part in one multi-argument arg(), so that a '%' in a file name is never taken for
     // a placeholder.
+    // The solver that ran: the sequential-impulse solver where it stood in for the soft step.
+    const physics::SolverKind ran =
+        standIn == physics::SoftStepStandIn::None ? solver : physics::SolverKind::SequentialImpulse;
     const QString run =
         QStringLiteral("%1: %2 steps of %3 s (%4 s simulated) in %5 s of wall time, with the %6 "
                        "integrator and the %7 solver.")
             .arg(sourceName, QString::number(steps), QString::number(dt, 'g', 6),
                  QString::number(simulatedTime, 'g', 8), QString::number(wallSeconds, 'f', 3),
-                 name(physics::integratorName(integrator)), name(physics::solverName(solver)));
+                 name(physics::integratorName(integrator)), name(physics::solverName(ran)));
     // The solver that ran, when it is not the one asked for, and why.
     const QString standInNote =
         standIn == physics::SoftStepStandIn::None
             ? QString()
-            : QStringLiteral(" The soft step runs only with the symplectic-euler integrator and "
-                             "without springs, pin joints or gravitation; the sequential-impulse "
-                             "solver ran instead (%1).")
+            : QStringLiteral(" The scene asks for the soft step, which runs only with the "
+                             "symplectic-euler integrator and without springs, pin joints or "
+                             "gravitation (here: %1).")
                   .arg(name(physics::standInName(standIn)));
     const QString energy =
         QStringLiteral(" Total energy went from %1 to %2; contacts took %3, drag and dampers "

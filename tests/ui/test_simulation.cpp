@@ -4,6 +4,7 @@
 // of compared worlds), the one clock the status bar and the timeline read, and what the
 // status bar's energy drift is the error of.
 
+#include "common/display_names.h"
 #include "simulation/drift_words.h"
 #include "simulation/frame_timing.h"
 #include "simulation/grab_spring.h"
@@ -349,6 +350,33 @@ private slots:
         for (const QLabel* label : w.findChildren<QLabel*>())
             found = found || label->toolTip().contains(driftExplanation());
         QVERIFY(found);
+    }
+
+    void statusSaysWhichSolverRuns()
+    {
+        // The welcome scene asks for the soft step, but has springs and pins: the sequential
+        // solver runs, and the status bar must not claim the soft step.
+        MainWindow w;
+        QCOMPARE(
+            w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/welcome.json"), true),
+            QString());
+        QCOMPARE(w.controller().world().def().solver, physics::SolverKind::SoftStep);
+        QMetaObject::invokeMethod(&w, "updateStatus");
+        auto* solver = w.findChild<QLabel*>(QStringLiteral("statusSolver"));
+        QVERIFY(solver);
+        const QString sequential = solverDisplayName(physics::SolverKind::SequentialImpulse);
+        const QString soft = solverDisplayName(physics::SolverKind::SoftStep);
+        QVERIFY2(solver->text().startsWith(sequential) && !solver->text().contains(soft),
+                 qPrintable(solver->text()));
+        QVERIFY2(solver->toolTip().contains(QStringLiteral("springs")),
+                 qPrintable(solver->toolTip()));
+        QVERIFY(w.statusText().contains(solver->text()));
+        // A stack of boxes alone: the soft step runs, and says so.
+        QCOMPARE(
+            w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/box_stack.json"), true),
+            QString());
+        QMetaObject::invokeMethod(&w, "updateStatus");
+        QCOMPARE(solver->text(), soft);
     }
 };
 

@@ -9,6 +9,7 @@
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 #include "window/settings_sync.h"
+#include "window/status_solver.h"
 #include "window/window_layout.h"
 
 #include <QAction>
@@ -39,6 +40,8 @@ StatusLine::StatusLine(QMainWindow& window, SimulationController& controller, Wo
     m_time = new QLabel(&window);
     m_rate = new QLabel(&window);
     m_drift = new QLabel(&window);
+    m_solver = new QLabel(&window);
+    m_solver->setObjectName(QStringLiteral("statusSolver"));
     m_details = new QLabel(&window);
     m_slow = new QLabel(tr("slower than real time"), &window);
     m_slow->setStyleSheet(QStringLiteral("color: white; background: #c0392b; padding: 1px 6px;"));
@@ -55,6 +58,8 @@ StatusLine::StatusLine(QMainWindow& window, SimulationController& controller, Wo
     bar->addWidget(m_rate);
     bar->addWidget(separator(QStringLiteral("statusSeparator")));
     bar->addWidget(m_drift);
+    bar->addWidget(separator(QStringLiteral("statusSeparator")));
+    bar->addWidget(m_solver);
     bar->addWidget(separator(QStringLiteral("statusDetailsSeparator")));
     bar->addWidget(m_details);
     bar->addPermanentWidget(m_slow);
@@ -63,7 +68,7 @@ StatusLine::StatusLine(QMainWindow& window, SimulationController& controller, Wo
     // again later, or one not yet on screen, would be drawn over the message.
     connect(bar, &QStatusBar::messageChanged, this, [this](const QString& message) {
         m_messageShown = !message.isEmpty();
-        for (QLabel* label : {m_time, m_rate, m_drift})
+        for (QLabel* label : {m_time, m_rate, m_drift, m_solver})
             label->setVisible(!m_messageShown);
         for (auto* dot : m_window.findChildren<QLabel*>(QStringLiteral("statusSeparator")))
             dot->setVisible(!m_messageShown);
@@ -129,6 +134,9 @@ void StatusLine::update()
         m_rate->setText(tr("running"));
     // The short wording of presentation mode where the full one would be cut (a 1024-pixel
     // window at the classroom text size); the full one in the tooltip.
+    // The solver that runs, not only the one asked for (status_solver.h).
+    m_solver->setText(solverStatusText(m_controller.world()));
+    m_solver->setToolTip(solverStatusTip(m_controller.world()));
     const QString full = driftText(m_presentation);
     int others = 0;
     for (const QLabel* label : m_window.statusBar()->findChildren<QLabel*>())
@@ -198,7 +206,7 @@ QString StatusLine::detailsText(bool running) const
 QString StatusLine::text() const
 {
     QStringList parts;
-    for (const QLabel* label : {m_time, m_rate, m_drift, m_details, m_slow})
+    for (const QLabel* label : {m_time, m_rate, m_drift, m_solver, m_details, m_slow})
         if (!label->isHidden() && !label->text().isEmpty())
             parts << label->text();
     return parts.join(QStringLiteral(" | "));

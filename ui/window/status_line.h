@@ -52,6 +52,7 @@ private:
     QLabel* m_time = nullptr;
     QLabel* m_rate = nullptr;
     QLabel* m_drift = nullptr;
+    QLabel* m_solver = nullptr; ///< the contact solver that runs (status_solver.h)
     QLabel* m_slow = nullptr;
     QLabel* m_details = nullptr;
     QAction* m_detailsAction = nullptr;
