@@ -3652,6 +3652,34 @@ B&#xa0;%3 … %4</translation>
         <source> step %1 of %2 · t = %3 s</source>
         <translation> krok %1 z&#xa0;%2 · t = %3&#xa0;s</translation>
     </message>
+    <message>
+        <source>%1 instead of the soft step</source>
+        <translation>%1 místo měkkého kroku</translation>
+    </message>
+    <message>
+        <source>Contact solver: %1</source>
+        <translation>Řešič kontaktů: %1</translation>
+    </message>
+    <message>
+        <source>The soft step runs only with the symplectic Euler integrator.</source>
+        <translation>Měkký krok běží jen se symplektickou Eulerovou metodou.</translation>
+    </message>
+    <message>
+        <source>The soft step does not handle springs yet.</source>
+        <translation>Měkký krok zatím neumí pružiny.</translation>
+    </message>
+    <message>
+        <source>The soft step does not handle pin joints yet.</source>
+        <translation>Měkký krok zatím neumí čepy.</translation>
+    </message>
+    <message>
+        <source>The soft step does not handle gravitation between bodies yet.</source>
+        <translation>Měkký krok zatím neumí gravitaci mezi tělesy.</translation>
+    </message>
+    <message>
+        <source>%1 The sequential-impulse solver runs instead.</source>
+        <translation>%1 Místo něj běží řešič postupných impulsů.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::WindowActions</name>
