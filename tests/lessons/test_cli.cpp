@@ -550,7 +550,7 @@ void TestCli::bench()
     QCOMPARE(run.exitCode, 0);
     const QString out = QString::fromUtf8(run.out);
     QVERIFY2(out.startsWith(QStringLiteral("engine")), qPrintable(out));
-    QVERIFY(out.contains(QStringLiteral("RigidLab    stack-12     12")));
+    QVERIFY(out.contains(QStringLiteral("RigidLab       stack-12     12")));
     QVERIFY(out.contains(QStringLiteral("0 moved")));
 
     QTemporaryDir dir;
