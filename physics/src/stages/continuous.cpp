@@ -107,7 +107,11 @@ void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
         const std::pair<int, int> p = std::minmax(f, j);
         if (std::binary_search(ctx.jointPairs.begin(), ctx.jointPairs.end(), p))
             return;
-        pairs.push_back(p);
+        // Most are pairs the broad phase found already (its list is sorted): only the new
+        // ones are added, so that the list is not sorted whole again every step.
+        const auto found = pairs.begin() + static_cast<std::ptrdiff_t>(before);
+        if (!std::binary_search(pairs.begin(), found, p))
+            pairs.push_back(p);
     };
     for (const auto& entry : grown) {
         // Named, not a structured binding: clang before 16 (the fuzz build's) cannot capture
@@ -130,8 +134,13 @@ void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
                 add(grown[i].second, grown[k].second);
     if (pairs.size() == before)
         return;
-    std::sort(pairs.begin(), pairs.end());
-    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    // The new pairs sorted and merged into the broad phase's: the same sorted list of
+    // distinct pairs as sorting the whole.
+    const auto found = pairs.begin() + static_cast<std::ptrdiff_t>(before);
+    std::sort(found, pairs.end());
+    pairs.erase(std::unique(found, pairs.end()), pairs.end());
+    std::inplace_merge(pairs.begin(), pairs.begin() + static_cast<std::ptrdiff_t>(before),
+                       pairs.end());
 }
 
 } // namespace rigidlab::physics
