@@ -58,6 +58,23 @@ double ownSize(const Body& b)
                                     }});
 }
 
+namespace {
+
+/// The pairs from `before` on (none of them among the sorted ones before it) sorted, made
+/// distinct and merged in: the same sorted list of distinct pairs as sorting the whole.
+void mergeNewPairs(std::vector<std::pair<int, int>>& pairs, size_t before)
+{
+    if (pairs.size() == before)
+        return;
+    const auto found = pairs.begin() + static_cast<std::ptrdiff_t>(before);
+    std::sort(found, pairs.end());
+    pairs.erase(std::unique(found, pairs.end()), pairs.end());
+    std::inplace_merge(pairs.begin(), pairs.begin() + static_cast<std::ptrdiff_t>(before),
+                       pairs.end());
+}
+
+} // namespace
+
 void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
 {
     ctx.sweep.clear();
@@ -132,15 +149,7 @@ void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs)
              ++k)
             if (grown[i].first.overlaps(grown[k].first))
                 add(grown[i].second, grown[k].second);
-    if (pairs.size() == before)
-        return;
-    // The new pairs sorted and merged into the broad phase's: the same sorted list of
-    // distinct pairs as sorting the whole.
-    const auto found = pairs.begin() + static_cast<std::ptrdiff_t>(before);
-    std::sort(found, pairs.end());
-    pairs.erase(std::unique(found, pairs.end()), pairs.end());
-    std::inplace_merge(pairs.begin(), pairs.begin() + static_cast<std::ptrdiff_t>(before),
-                       pairs.end());
+    mergeNewPairs(pairs, before);
 }
 
 } // namespace rigidlab::physics
