@@ -110,7 +110,8 @@ QString sceneNameFor(const QString& fileName, const std::map<QString, QJsonObjec
         stem = QStringLiteral("scene");
     QString name = kScenesFolder.toString() + stem + QStringLiteral(".json");
     for (int n = 2; taken.count(name) != 0; ++n)
-        name = kScenesFolder.toString() + stem + u'-' + QString::number(n) + QStringLiteral(".json");
+        name =
+            kScenesFolder.toString() + stem + u'-' + QString::number(n) + QStringLiteral(".json");
     return name;
 }
 
@@ -184,6 +185,14 @@ LessonPackResult packFolderLesson(const QString& lessonPath, const LessonPackInf
 bool isLessonPackPath(const QString& path)
 {
     return path.endsWith(QStringLiteral(".rlesson"), Qt::CaseInsensitive);
+}
+
+bool isLessonDocument(const QString& path)
+{
+    if (isLessonPackPath(path))
+        return true;
+    const detail::FileBytes file = detail::readFileBytes(path, kMaxLessonFileBytes);
+    return file.ok && QJsonDocument::fromJson(file.bytes).object().contains(u"rigidlab-lesson");
 }
 
 LessonPackResult readLessonPackObject(const QJsonObject& root, const QString& path)

@@ -32,6 +32,11 @@ inline constexpr int kMaxPackedScenes = 100;
 /// True for a path ending in ".rlesson" (in any case).
 bool isLessonPackPath(const QString& path);
 
+/// True for a file the window opens as a lesson rather than a scene: a .rlesson, or JSON whose
+/// top level holds "rigidlab-lesson". (Anything else is tried as a scene, whose loader says
+/// what is wrong.)
+bool isLessonDocument(const QString& path);
+
 /// Who made the file and when; both may be empty.
 struct LessonPackInfo {
     QString author; ///< free text, one line
