@@ -2495,6 +2495,61 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::LessonDraft</name>
+    <message>
+        <source>Step 1</source>
+        <translation>Krok 1</translation>
+    </message>
+    <message>
+        <source>Edit text</source>
+        <translation>Úprava textu</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Krok %1</translation>
+    </message>
+    <message>
+        <source>Add step</source>
+        <translation>Přidání kroku</translation>
+    </message>
+    <message>
+        <source>Remove step</source>
+        <translation>Odebrání kroku</translation>
+    </message>
+    <message>
+        <source>Move step</source>
+        <translation>Přesun kroku</translation>
+    </message>
+    <message>
+        <source>Duplicate step</source>
+        <translation>Zdvojení kroku</translation>
+    </message>
+    <message>
+        <source>Set scene</source>
+        <translation>Nastavení scény</translation>
+    </message>
+    <message>
+        <source>Set author</source>
+        <translation>Nastavení autora</translation>
+    </message>
+    <message>
+        <source>new lesson.rlesson</source>
+        <translation>nová lekce.rlesson</translation>
+    </message>
+    <message>
+        <source>The lesson has no file yet: use Save As.</source>
+        <translation>Lekce ještě nemá soubor: použijte Uložit jako.</translation>
+    </message>
+    <message>
+        <source>%1: a lesson is saved as one file ending in .rlesson</source>
+        <translation>%1: lekce se ukládá jako jeden soubor s příponou .rlesson</translation>
+    </message>
+    <message>
+        <source>%1 comes with RigidLab and is not overwritten.</source>
+        <translation>%1 je součástí RigidLabu a nepřepíše se.</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::LessonPlayer</name>
     <message>
         <source>◀ Back</source>
