@@ -111,7 +111,10 @@ bool applyLanguageOption(const CommandLine& args, QString& error)
 
 int commandLesson(const QStringList& words)
 {
+    if (const auto packing = commandLessonPacking(words))
+        return *packing;
     CommandLine args(QStringLiteral("lesson"));
+    args.addSwitch(QStringLiteral("validate"));
     args.addValue(QStringLiteral("export"), QStringLiteral("folder"));
     args.addValue(QStringLiteral("worksheet"), QStringLiteral("PDF file"));
     args.addValue(QStringLiteral("student"), QStringLiteral("name"));
@@ -139,6 +142,9 @@ int commandLesson(const QStringList& words)
     if (worksheet && exportDir)
         return usageError(args.command(),
                           QStringLiteral("--worksheet and --export: one at a time"));
+    if (args.isSet(QStringLiteral("validate")) && (worksheet || exportDir))
+        return usageError(args.command(),
+                          QStringLiteral("--validate: alone (not with --export or --worksheet)"));
     for (const char* option : {"student", "answers", "key"})
         if (!worksheet && args.isSet(QLatin1StringView(option)))
             return usageError(
@@ -153,6 +159,12 @@ int commandLesson(const QStringList& words)
     printWarnings(loaded.warnings);
     if (!loaded.ok)
         return inputError(loaded.error);
+    if (args.isSet(QStringLiteral("validate"))) {
+        printOut(QStringLiteral("ok: %1: lesson \"%2\", %3 steps\n")
+                     .arg(*path, loaded.lesson.title)
+                     .arg(loaded.lesson.steps.size()));
+        return kExitOk;
+    }
     if (!exportDir) {
         printOutline(loaded.lesson);
         return kExitOk;

@@ -5,6 +5,8 @@
 
 #include <QStringList>
 
+#include <optional>
+
 namespace rigidlab::cli {
 
 class CommandLine;
@@ -16,9 +18,14 @@ void addLanguageOption(CommandLine& args);
 /// lab does not ship.
 bool applyLanguageOption(const CommandLine& args, QString& error);
 
-/// `lesson LESSON.json [--export DIR] [--lang CODE]`. Draws with the window's plot widget, so
-/// it needs a QApplication (on the offscreen platform: nothing is shown).
+/// `lesson LESSON.json|FILE.rlesson [--validate | --export DIR] [--lang CODE]`. Draws with the
+/// window's plot widget, so it needs a QApplication (on the offscreen platform: nothing is shown).
 int commandLesson(const QStringList& words);
+
+/// `lesson pack LESSON.json -o FILE.rlesson [--author NAME] [--date YYYY-MM-DD]` and
+/// `lesson unpack FILE.rlesson -o DIR` (cli_lesson_pack.cpp); nothing when `words` starts
+/// with neither.
+std::optional<int> commandLessonPacking(const QStringList& words);
 
 /// `lessons`: the shipped lessons in teaching order, one line each: the file's path, a tab,
 /// its title.

@@ -63,6 +63,8 @@ Commands:
       --export FILE.json     write the scene as a scene file instead of running it
   sat PAIR.json              the separating axis test on polygon pairs, as JSON
   lesson LESSON.json         a lesson's steps, with their plots, panels and questions
+                             (LESSON.json or a lesson in one file, FILE.rlesson)
+      --validate             only check it: "ok: ..." or what is wrong and where
       --export DIR           run every step that has plots for its exportTime and write
                              them as PNG, PDF, SVG and CSV into DIR/NN-step-title/
       --csv-dialect D        the handouts' CSV: plain (default) or spreadsheet (see run)
@@ -76,6 +78,12 @@ Commands:
       --student NAME         the name on the worksheet (instead of the answers file's)
       --answers FILE         the answers the sheet shows (its language is the default)
       --key                  the measured answers, for the teacher
+  lesson pack LESSON.json -o FILE.rlesson
+                             the lesson and every scene it uses in one file, to share
+      --author NAME          who made it, shown in the lesson lists
+      --date YYYY-MM-DD      when it was made (default: none)
+  lesson unpack FILE.rlesson -o DIR
+                             the reverse: DIR/FILE.json and its scenes in DIR/scenes/
   lessons                    the shipped lessons: each file's path and title (the data
                              folder: RIGIDLAB_DATA_DIR, else beside the installed program),
                              then the user's own (~/.local/share/rigidlab/lessons), marked

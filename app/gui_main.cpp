@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// rigidlab: the lab window. `rigidlab [FILE.json] [--step N]` opens that scene or lesson
-// (at step N), or the welcome scene and the lesson list. `rigidlab --measure-frames N
+// rigidlab: the lab window. `rigidlab [FILE.json|FILE.rlesson] [--step N]` opens that scene or
+// lesson (at step N), or the welcome scene and the lesson list. `rigidlab --measure-frames N
 // SCENE.json` runs the scene in the window for N frames and prints their times.
 // `rigidlab --screenshots DIR` writes a PNG of the window on every shipped view
 // (ui/screenshots.h). `rigidlab --help` lists the rest.
@@ -13,16 +13,14 @@
 #include "window/screenshots.h"
 
 #include "format/languages.h"
+#include "format/lesson_pack.h"
 
 #include "rigidlab/version.h"
 
 #include <QApplication>
 #include <QCommandLineParser>
 #include <QDir>
-#include <QFile>
 #include <QFileInfo>
-#include <QJsonDocument>
-#include <QJsonObject>
 #include <QLocale>
 #include <QPointer>
 #include <QSize>
@@ -190,9 +188,10 @@ void describe(QCommandLineParser& parser, const OptionSet& o)
     parser.setApplicationDescription(
         CommandLine::tr("RigidLab %1: a lab for 2D rigid-body mechanics.")
             .arg(QStringLiteral(RIGIDLAB_VERSION)));
-    parser.addPositionalArgument(QStringLiteral("FILE.json"),
-                                 CommandLine::tr("A scene or a lesson to open."),
-                                 QStringLiteral("[FILE.json]"));
+    parser.addPositionalArgument(
+        QStringLiteral("FILE.json"),
+        CommandLine::tr("A scene or a lesson (FILE.json, or FILE.rlesson) to open."),
+        QStringLiteral("[FILE.json]"));
     for (const QCommandLineOption* option :
          {&o.help, &o.version, &o.step, &o.measure, &o.screenshots, &o.size, &o.scale, &o.present,
           &o.lang})
@@ -339,12 +338,9 @@ void openFirstDocument(rigidlab::ui::MainWindow& window, const Options& options)
     window.openScene(welcome, !options.file.isEmpty());
     if (options.file.isEmpty())
         return;
-    // A lesson says so with its top-level key; anything else is read as a scene.
-    QFile f(options.file);
-    const bool lesson =
-        f.open(QIODevice::ReadOnly) && QJsonDocument::fromJson(f.read(8 << 20))
-                                           .object()
-                                           .contains(QLatin1String("rigidlab-lesson"));
+    // A lesson says so with its top-level key or its suffix (.rlesson); anything else is read
+    // as a scene.
+    const bool lesson = rigidlab::lessons::isLessonDocument(options.file);
     const QString error = lesson ? window.openLesson(options.file) : window.openScene(options.file);
     if (!error.isEmpty())
         QTextStream(stderr) << error << '\n';

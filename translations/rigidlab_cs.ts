@@ -19,10 +19,6 @@
         <translation>RigidLab %1: laboratoř mechaniky tuhých těles ve 2D.</translation>
     </message>
     <message>
-        <source>A scene or a lesson to open.</source>
-        <translation>Scéna nebo lekce, která se má otevřít.</translation>
-    </message>
-    <message>
         <source>Show this text and quit.</source>
         <translation>Vypsat tento text a&#xa0;skončit.</translation>
     </message>
@@ -109,6 +105,10 @@
     <message>
         <source>one of %1</source>
         <translation>jeden z&#xa0;kódů %1</translation>
+    </message>
+    <message>
+        <source>A scene or a lesson (FILE.json, or FILE.rlesson) to open.</source>
+        <translation>Scéna nebo lekce (FILE.json nebo FILE.rlesson), která se má otevřít.</translation>
     </message>
 </context>
 <context>
@@ -1004,6 +1004,34 @@
         <source>steps[%1].questions: %2 questions, the lesson&apos;s step %3 has %4</source>
         <translation>steps[%1].questions: %2 otázek, krok %3 lekce jich má %4</translation>
     </message>
+    <message>
+        <source>must be one line of at most %1 characters</source>
+        <translation>musí být jeden řádek o nejvýše %1 znacích</translation>
+    </message>
+    <message>
+        <source>must be a date written YYYY-MM-DD, got &quot;%1&quot;</source>
+        <translation>musí být datum ve tvaru RRRR-MM-DD, je „%1“</translation>
+    </message>
+    <message>
+        <source>holds %1 scenes; a lesson file holds at most %2</source>
+        <translation>obsahuje %1 scén; soubor lekce jich obsahuje nejvýše %2</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not a scene&apos;s name in a lesson file (scenes/NAME.json, NAME of letters, digits, _ . -)</source>
+        <translation>„%1“ není název scény v souboru lekce (scenes/NÁZEV.json, NÁZEV z písmen, číslic, _ . -)</translation>
+    </message>
+    <message>
+        <source>a lesson file (.rlesson)</source>
+        <translation>soubor lekce (.rlesson)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot; is not among the scenes this file holds (%2)</source>
+        <translation>„%1“ není mezi scénami, které tento soubor obsahuje (%2)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>žádné</translation>
+    </message>
 </context>
 <context>
     <name>Judge</name>
@@ -1562,6 +1590,10 @@
     <message>
         <source> (your own)</source>
         <translation> (vlastní)</translation>
+    </message>
+    <message>
+        <source> (your own: %1)</source>
+        <translation> (vlastní: %1)</translation>
     </message>
 </context>
 <context>
@@ -2463,6 +2495,61 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::LessonDraft</name>
+    <message>
+        <source>Step 1</source>
+        <translation>Krok 1</translation>
+    </message>
+    <message>
+        <source>Edit text</source>
+        <translation>Úprava textu</translation>
+    </message>
+    <message>
+        <source>Step %1</source>
+        <translation>Krok %1</translation>
+    </message>
+    <message>
+        <source>Add step</source>
+        <translation>Přidání kroku</translation>
+    </message>
+    <message>
+        <source>Remove step</source>
+        <translation>Odebrání kroku</translation>
+    </message>
+    <message>
+        <source>Move step</source>
+        <translation>Přesun kroku</translation>
+    </message>
+    <message>
+        <source>Duplicate step</source>
+        <translation>Zdvojení kroku</translation>
+    </message>
+    <message>
+        <source>Set scene</source>
+        <translation>Nastavení scény</translation>
+    </message>
+    <message>
+        <source>Set author</source>
+        <translation>Nastavení autora</translation>
+    </message>
+    <message>
+        <source>new lesson.rlesson</source>
+        <translation>nová lekce.rlesson</translation>
+    </message>
+    <message>
+        <source>The lesson has no file yet: use Save As.</source>
+        <translation>Lekce ještě nemá soubor: použijte Uložit jako.</translation>
+    </message>
+    <message>
+        <source>%1: a lesson is saved as one file ending in .rlesson</source>
+        <translation>%1: lekce se ukládá jako jeden soubor s příponou .rlesson</translation>
+    </message>
+    <message>
+        <source>%1 comes with RigidLab and is not overwritten.</source>
+        <translation>%1 je součástí RigidLabu a nepřepíše se.</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::LessonPlayer</name>
     <message>
         <source>◀ Back</source>
@@ -2664,10 +2751,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Otevřít lekci</translation>
     </message>
     <message>
-        <source>RigidLab lessons (*.json)</source>
-        <translation>Lekce RigidLabu (*.json)</translation>
-    </message>
-    <message>
         <source>%1 — step %2 — RigidLab</source>
         <translation>%1 – krok %2 – RigidLab</translation>
     </message>
@@ -2682,6 +2765,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Plots written to %1</source>
         <translation>Grafy zapsány do %1</translation>
+    </message>
+    <message>
+        <source>RigidLab lessons (*.json *.rlesson)</source>
+        <translation>Lekce RigidLabu (*.json *.rlesson)</translation>
+    </message>
+    <message>
+        <source>Add a folder of lessons</source>
+        <translation>Přidat složku s lekcemi</translation>
     </message>
 </context>
 <context>
@@ -2885,6 +2976,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>&amp;About RigidLab…</source>
         <translation>O&#xa0;&amp;aplikaci RigidLab…</translation>
+    </message>
+    <message>
+        <source>&amp;Add a folder of lessons…</source>
+        <translation>&amp;Přidat složku s lekcemi…</translation>
     </message>
 </context>
 <context>
@@ -3759,10 +3854,6 @@ B&#xa0;%3 … %4</translation>
         <translation>%1 nebyl otevřen: upravovaná scéna zůstává.</translation>
     </message>
     <message>
-        <source>Open scene</source>
-        <translation>Otevřít scénu</translation>
-    </message>
-    <message>
         <source>RigidLab scenes (*.json)</source>
         <translation>Scény RigidLabu (*.json)</translation>
     </message>
@@ -3809,6 +3900,14 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>&amp;Your own scenes</source>
         <translation>&amp;Vlastní scény</translation>
+    </message>
+    <message>
+        <source>Open scene or lesson</source>
+        <translation>Otevřít scénu nebo lekci</translation>
+    </message>
+    <message>
+        <source>RigidLab scenes and lessons (*.json *.rlesson);;Lessons in one file (*.rlesson)</source>
+        <translation>Scény a lekce RigidLabu (*.json *.rlesson);;Lekce v jednom souboru (*.rlesson)</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 #include "format/json_reader.h"
 
 #include "format/lesson.h"
+#include "format/lesson_pack.h"
 #include "format/scene_loader.h"
 
 #include <QJsonObject>
@@ -38,9 +39,8 @@ DocumentCheck checkScene(const QJsonObject& root, const QString& sourceName)
     return check;
 }
 
-DocumentCheck checkLesson(const QJsonObject& root, const QString& sourceName)
+DocumentCheck lessonCheck(const LessonLoadResult& loaded)
 {
-    LessonLoadResult loaded = loadLessonObject(root, sourceName);
     DocumentCheck check;
     check.kind = QStringLiteral("lesson");
     check.ok = loaded.ok;
@@ -62,6 +62,28 @@ DocumentCheck checkLesson(const QJsonObject& root, const QString& sourceName)
     return check;
 }
 
+DocumentCheck checkLessonPack(const QJsonObject& root, const QString& sourceName)
+{
+    const LessonPackResult read = readLessonPackObject(root, sourceName);
+    if (!read.ok) {
+        DocumentCheck check;
+        check.kind = QStringLiteral("lesson");
+        check.error = read.error;
+        return check;
+    }
+    DocumentCheck check = lessonCheck(loadLessonPack(read.pack, sourceName));
+    if (check.ok)
+        check.summary +=
+            QStringLiteral(", ") + countNoun(static_cast<qsizetype>(read.pack.scenes.size()),
+                                             u"scene inside", u"scenes inside");
+    return check;
+}
+
+DocumentCheck checkLesson(const QJsonObject& root, const QString& sourceName)
+{
+    return lessonCheck(loadLessonObject(root, sourceName));
+}
+
 /// A kind of document: the top-level key that holds its format version, and its checker.
 struct DocumentKind {
     QStringView versionKey;
@@ -73,10 +95,11 @@ struct DocumentKind {
 constexpr std::array kKinds = {
     DocumentKind{u"rigidlab", u"a scene", &checkScene},
     DocumentKind{u"rigidlab-lesson", u"a lesson", &checkLesson},
+    DocumentKind{u"rigidlab-lesson-file", u"a lesson in one file (.rlesson)", &checkLessonPack},
 };
 
 /// The largest document of any kind [bytes].
-constexpr qint64 kMaxDocumentBytes = kMaxSceneFileBytes;
+constexpr qint64 kMaxDocumentBytes = kMaxLessonPackBytes;
 
 } // namespace
 

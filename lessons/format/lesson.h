@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <optional>
 #include <string_view>
 #include <utility>
@@ -151,6 +152,10 @@ struct Lesson {
 struct LessonLoadOptions {
     /// The language its texts are kept in (languages.h); a text without it is English.
     QString language = lessonLanguage();
+    /// The scenes a lesson file carries inside it (a .rlesson, lesson_pack.h), by the path its
+    /// steps name them with, already read in `language`. When set, a step's scene path is looked
+    /// up here and never on disk; a path not here is an error.
+    const std::map<QString, Scene>* embeddedScenes = nullptr;
 };
 
 struct LessonLoadResult {
@@ -163,7 +168,8 @@ struct LessonLoadResult {
 /// Reads and checks a lesson, keeping its texts in `options.language`; scene paths are
 /// relative to the lesson's folder and stay where format/scene_path.h allows. Every text is
 /// checked in every language it has, whichever is kept; a translated lesson warns of each text
-/// that lacks a shipped language.
+/// that lacks a shipped language. A path ending in .rlesson is read as a lesson in one file,
+/// its scenes inside it (format/lesson_pack.h).
 LessonLoadResult loadLessonFile(const QString& path, const LessonLoadOptions& options = {});
 /// The same for a lesson held in memory; `path` names it in messages, and scene paths are
 /// relative to its folder.

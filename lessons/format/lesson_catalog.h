@@ -19,9 +19,12 @@ struct LessonEntry {
     int order = 0;       ///< the file's "order"; 0: not given
     int minutes = 0;     ///< estimated time [min]; 0: not given
     bool own = false;    ///< one of the user's own lessons, not a shipped one
+    QString author;      ///< who made it (a .rlesson's "author"); may be empty
+    QString date; ///< YYYY-MM-DD: an own .rlesson's "date", else the file's; empty for the rest
 };
 
-/// The lessons of `folder` that load, in teaching order: by their "order", then those without
+/// The lessons of `folder` that load (lesson files *.json and lessons in one file *.rlesson),
+/// in teaching order: by their "order", then those without
 /// one, each group by file name. A file that does not load is left out (the tests check that
 /// every shipped one loads).
 std::vector<LessonEntry> lessonsInOrder(const QString& folder);
@@ -30,8 +33,17 @@ std::vector<LessonEntry> lessonsInOrder(const QString& folder);
 std::vector<LessonEntry> shippedLessonsInOrder();
 
 /// What the lesson menu lists: shippedLessonsInOrder(), then the user's own lessons
-/// (lessonsInOrder(userLessonsDir()), each marked `own`).
+/// (lessonsInOrder(userLessonsDir()), then of each added folder), each marked `own`, with its
+/// author and date.
 std::vector<LessonEntry> allLessonsInOrder();
+
+/// The folders of lessons the user added (a shared drive, say), kept in the settings under
+/// "lessons/folders"; each is listed after the data folder's own lessons.
+QStringList addedLessonFolders();
+/// Adds `folder` (absolute) to them, once; false when it was there already.
+bool addLessonFolder(const QString& folder);
+/// Removes `folder` from them; false when it was not there.
+bool removeLessonFolder(const QString& folder);
 
 /// The menu line of the lesson at 1-based `position` in the teaching order:
 /// "1. Title — description (≈N min)", the parts that are not given left out; a lesson of the

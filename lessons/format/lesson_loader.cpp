@@ -8,6 +8,7 @@
 #include "format/lesson.h"
 
 #include "format/json_reader.h"
+#include "format/lesson_pack.h"
 #include "format/lesson_reading.h"
 
 #include <QFileInfo>
@@ -38,6 +39,7 @@ public:
         m_lesson.path = absolutePath;
         m_step.folder = QFileInfo(absolutePath).absolutePath();
         m_step.texts = &m_texts;
+        m_step.embedded = options.embeddedScenes;
     }
 
     LessonLoadResult read(const QJsonObject& root);
@@ -152,6 +154,9 @@ LessonLoadResult loadLessonObject(const QJsonObject& root, const QString& path,
 LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path,
                                 const LessonLoadOptions& options)
 {
+    if (isLessonPackPath(path)) {
+        return loadLessonPack(bytes, path, options);
+    }
     const detail::ParsedJson parsed = detail::parseJson(bytes, path, kMaxLessonFileBytes);
     if (!parsed.ok) {
         LessonLoadResult result;
@@ -169,7 +174,8 @@ LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path,
 
 LessonLoadResult loadLessonFile(const QString& path, const LessonLoadOptions& options)
 {
-    const detail::FileBytes file = detail::readFileBytes(path, kMaxLessonFileBytes);
+    const detail::FileBytes file = detail::readFileBytes(
+        path, isLessonPackPath(path) ? kMaxLessonPackBytes : kMaxLessonFileBytes);
     if (!file.ok) {
         LessonLoadResult result;
         result.error = file.error;

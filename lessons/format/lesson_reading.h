@@ -14,6 +14,7 @@
 #include <vector>
 
 #include <functional>
+#include <map>
 
 namespace rigidlab::lessons::detail {
 
@@ -22,6 +23,8 @@ struct StepContext {
     QString folder;              ///< the lesson's folder, absolute; scene paths start here
     qint64 bodies = 0;           ///< bodies in the scenes of the steps read so far
     LocalTexts* texts = nullptr; ///< the lesson's texts, in its language
+    /// The scenes the lesson file carries (LessonLoadOptions::embeddedScenes), or null.
+    const std::map<QString, Scene>* embedded = nullptr;
 };
 
 /// One step of "steps", at `place`; adds its bodies to `context.bodies`.

@@ -71,9 +71,30 @@ bool readNames(JsonReader& in, const QJsonObject& object, QStringView key, const
         out);
 }
 
+/// A scene the lesson file carries inside it, by the path the step names it with.
+bool readEmbeddedScene(JsonReader& in, const QString& name, const QString& place,
+                       const StepContext& context, LessonStep& step)
+{
+    const auto it = context.embedded->find(name);
+    if (it == context.embedded->end()) {
+        QStringList held;
+        for (const auto& [key, scene] : *context.embedded)
+            held.append(key);
+        return in.fail(
+            place, FileMessages::tr("\"%1\" is not among the scenes this file holds "
+                                    "(%2)")
+                       .arg(name, held.isEmpty() ? FileMessages::tr("none") : held.join(u", ")));
+    }
+    step.scene = it->second;
+    return true;
+}
+
 bool readSceneFile(JsonReader& in, const QString& relative, const QString& place,
                    const StepContext& context, LessonStep& step)
 {
+    if (context.embedded) {
+        return readEmbeddedScene(in, relative, place, context, step);
+    }
     // The rules for where a scene file may be are in scene_path.cpp.
     const ScenePathResult resolved = resolveScenePath(context.folder, relative);
     if (!resolved.ok) {

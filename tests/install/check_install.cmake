@@ -41,6 +41,7 @@ foreach(file
         share/man/man1/rigidlab.1.gz share/man/man1/rigidlab-cli.1.gz
         share/doc/rigidlab/README.md share/doc/rigidlab/LICENSE share/doc/rigidlab/copyright
         share/doc/rigidlab/SCENE_FORMAT.md share/doc/rigidlab/LESSON_FORMAT.md
+        share/doc/rigidlab/RLESSON_FORMAT.md
         share/rigidlab/scenes/welcome.json
         share/rigidlab/measure/samples/ball_tracker.csv)
     if(NOT EXISTS ${root}/${file})
@@ -85,6 +86,23 @@ string(REGEX MATCHALL "[^\n]+" listed_with_own "${OUT}")
 list(POP_BACK listed_with_own last)
 if(NOT listed_with_own STREQUAL listed OR NOT last STREQUAL "${own}/mine.json\tMine\tyour own")
     fail("rigidlab-cli lessons did not list the user's own lesson last:\n${OUT}")
+endif()
+
+# A lesson in one file: the installed program packs a shipped lesson, validates it and unpacks
+# it; the installed MIME type and desktop file claim .rlesson for a double-click.
+set(pack ${WORK}/restitution.rlesson)
+run_ok(${root}/bin/rigidlab-cli lesson pack ${root}/share/rigidlab/lessons/restitution.json
+    -o ${pack})
+run_ok(${root}/bin/rigidlab-cli lesson ${pack} --validate)
+run_ok(${root}/bin/rigidlab-cli lesson unpack ${pack} -o ${WORK}/unpacked)
+if(NOT EXISTS ${WORK}/unpacked/restitution.json)
+    fail("rigidlab-cli lesson unpack wrote no restitution.json:\n${OUT}")
+endif()
+file(READ ${root}/share/mime/packages/rigidlab.xml mime)
+file(READ ${root}/share/applications/io.github.rigidlab.RigidLab.desktop desktop)
+if(NOT mime MATCHES "glob pattern=\"\\*\\.rlesson\""
+   OR NOT desktop MATCHES "application/x-rigidlab-lesson-file;")
+    fail("the MIME type of .rlesson is not installed with the desktop file")
 endif()
 
 # The validators of the desktop files, where installed (./lab package installs them).

@@ -219,6 +219,10 @@ private slots:
             << "sweep.csv";
         QTest::newRow("bench --export")
             << QStringList{"bench", "--scene", "pyramid-20", "--export", "FILE"} << "scene.json";
+        QTest::newRow("lesson pack")
+            << QStringList{"lesson", "pack",
+                           kSource + QStringLiteral("/lessons/lessons/stacks.json"), "-o", "FILE"}
+            << "stacks.rlesson";
     }
     void cliWritersKeepThePreviousFile()
     {

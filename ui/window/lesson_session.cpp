@@ -77,11 +77,26 @@ QString LessonSession::openLesson(const QString& path, bool quiet)
 void LessonSession::openLessonDialog()
 {
     const ModalScope modal;
-    const QString path =
-        QFileDialog::getOpenFileName(&m_parts.window, tr("Open lesson"),
-                                     lessons::shippedLessonsDir(), tr("RigidLab lessons (*.json)"));
+    const QString path = QFileDialog::getOpenFileName(&m_parts.window, tr("Open lesson"),
+                                                      lessons::shippedLessonsDir(),
+                                                      tr("RigidLab lessons (*.json *.rlesson)"));
     if (!path.isEmpty())
         openLesson(path, false);
+}
+
+void LessonSession::addLessonFolderDialog()
+{
+    const ModalScope modal;
+    const QString folder = QFileDialog::getExistingDirectory(
+        &m_parts.window, tr("Add a folder of lessons"), lessons::userLessonsDir());
+    if (!folder.isEmpty())
+        addLessonFolder(folder);
+}
+
+void LessonSession::addLessonFolder(const QString& folder)
+{
+    lessons::addLessonFolder(folder);
+    m_parts.player.listLessons(lessons::allLessonsInOrder()); // shipped, own, added
 }
 
 const lessons::LessonStep* LessonSession::currentStep() const

@@ -62,6 +62,11 @@ public:
     /// Opens a lesson at its first step; returns the error, empty on success.
     QString openLesson(const QString& path, bool quiet);
     void openLessonDialog();
+    /// File › Lessons › Add a folder of lessons: a folder (a shared drive, say) whose lessons
+    /// are listed from now on after the user's own (lessons::addLessonFolder).
+    void addLessonFolderDialog();
+    /// Adds `folder` to the listed ones and lists the lessons again.
+    void addLessonFolder(const QString& folder);
     bool inLesson() const { return m_inLesson; }
     /// A question keeps the scene from running until it is answered.
     bool runHeld() const { return m_runHeld; }

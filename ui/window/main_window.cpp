@@ -24,12 +24,14 @@
 #include "window/status_line.h"
 #include "window/window_actions.h"
 #include "window/window_documents.h"
+#include "window/window_drop.h"
 #include "window/window_layout.h"
 #include "window/window_names.h"
 #include "window/window_plots.h"
 
 #include "format/data_dirs.h"
 #include "format/lesson.h"
+#include "format/lesson_pack.h"
 
 #include <QAction>
 #include <QCloseEvent>
@@ -124,6 +126,15 @@ void MainWindow::wireDocument()
         m_editTools->setEditing(true);
     });
     m_player->setLeaveGuard([this] { return confirmLeaveScene(); });
+    // File › Open, and a file dropped on the window, open a lesson as a lesson.
+    connect(m_documents, &WindowDocuments::lessonChosen, this,
+            [this](const QString& path) { openLesson(path); });
+    new WindowDrop(*this, [this](const QString& path) {
+        if (lessons::isLessonDocument(path))
+            openLesson(path);
+        else
+            openScene(path);
+    });
     connect(m_controller, &SimulationController::sceneLoaded, this, [this] {
         if (!m_session->inLesson()) // in a lesson, its title and step stay
             showSceneTitle();

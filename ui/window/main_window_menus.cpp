@@ -64,12 +64,22 @@ void MainWindow::buildFileMenu()
           "openLesson");
     file->addAction(m_measurement->importAction());
     QMenu* lessonsMenu = file->addMenu(tr("Le&ssons"));
-    for (int i = 0; i < m_player->lessonPaths().size(); ++i) {
-        const QString path = m_player->lessonPaths()[i];
-        lessonsMenu->addAction(m_player->lessonMenuTexts()[i], this,
-                               [this, path] { openLesson(path); });
-    }
-    lessonsMenu->setEnabled(!m_player->lessonPaths().isEmpty());
+    // Filled as it opens: a folder of lessons added since lists its lessons at once.
+    const auto fillLessons = [this, lessonsMenu] {
+        lessonsMenu->clear();
+        for (int i = 0; i < m_player->lessonPaths().size(); ++i) {
+            const QString path = m_player->lessonPaths()[i];
+            lessonsMenu->addAction(m_player->lessonMenuTexts()[i], this,
+                                   [this, path] { openLesson(path); });
+        }
+        lessonsMenu->addSeparator();
+        lessonsMenu
+            ->addAction(tr("&Add a folder of lessons…"), m_session,
+                        &LessonSession::addLessonFolderDialog)
+            ->setObjectName(QStringLiteral("addLessonFolder"));
+    };
+    fillLessons();
+    connect(lessonsMenu, &QMenu::aboutToShow, this, fillLessons);
     m_player->addWorksheetActions(*file); // the open lesson's empty worksheet and its key
     QMenu* recentMenu = file->addMenu(tr("Open &recent"));
     recentMenu->setObjectName(QStringLiteral("recentMenu")); // file names: no language

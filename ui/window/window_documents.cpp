@@ -7,6 +7,7 @@
 #include "window/settings_sync.h"
 
 #include "format/data_dirs.h"
+#include "format/lesson_pack.h"
 #include "format/scene_loader.h"
 
 #include "rigidlab/physics/shape.h"
@@ -83,9 +84,14 @@ void WindowDocuments::openDialog()
 {
     const ModalScope modal;
     const QString folder = m_lastFolder.isEmpty() ? lessons::shippedScenesDir() : m_lastFolder;
-    const QString path = QFileDialog::getOpenFileName(&m_window, tr("Open scene"), folder,
-                                                      tr("RigidLab scenes (*.json)"));
-    if (!path.isEmpty())
+    const QString path = QFileDialog::getOpenFileName(
+        &m_window, tr("Open scene or lesson"), folder,
+        tr("RigidLab scenes and lessons (*.json *.rlesson);;Lessons in one file (*.rlesson)"));
+    if (path.isEmpty())
+        return;
+    if (lessons::isLessonDocument(path))
+        emit lessonChosen(path);
+    else
         openScene(path, false);
 }
 

@@ -57,6 +57,8 @@ public:
     void restoreSettings();
 
 signals:
+    /// File › Open chose a lesson (a .rlesson, or a lesson's .json): the lesson opens.
+    void lessonChosen(const QString& path);
     /// A new scene was made: the editor opens, so that the teacher can draw at once.
     void newSceneMade();
     /// A message for the status bar, shown for `ms` milliseconds.
