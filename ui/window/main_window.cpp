@@ -7,6 +7,7 @@
 #include "common/modal_scope.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
+#include "instruments/instruments.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
 #include "measure/measurement_panel.h"
@@ -72,6 +73,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_status = new StatusLine(*this, *m_controller, *m_view);
     m_documents = new WindowDocuments(*this, *m_document);
     buildEditor();
+    m_instruments = new Instruments(*this, *m_controller, *m_view);
     m_session = new LessonSession({*this, *m_player, *m_controller, *m_document, *m_documents,
                                    *m_editTools, *m_layout, *m_actions, *m_view, *m_controls,
                                    *m_sat, *m_bounces, *m_collision, m_plots});
@@ -174,6 +176,7 @@ QList<PlotWidget*> MainWindow::plotsOnScreen() const
     if (!m_layout->compareDock()->isHidden())
         for (PlotWidget* plot : m_session->comparePlots())
             plots << plot;
+    plots << m_instruments->graphsShown(); // graphs of chosen bodies
     // An imported measurement's comparison and residuals, as its dock shows them.
     if (QDockWidget* dock = m_layout->dock(QStringLiteral("measurement"));
         dock && !dock->isHidden())
