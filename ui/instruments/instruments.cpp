@@ -128,6 +128,7 @@ PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
     auto* plot = new PlotWidget(graphTitle(spec), &m_window);
     plot->setObjectName(QStringLiteral("bodyGraph"));
     plot->setExportContext(m_controller.scene().title);
+    plot->addMenuAction(m_graphAction); // another graph, from this one's menu
     auto* feed = new GraphFeed(*plot, spec.quantity, spec.frame);
     const lessons::Scene& scene = m_controller.scene();
     if (spec.eachBody)

@@ -109,9 +109,11 @@ QWidget* InstrumentsPanel::makeRulerTab()
     form->addRow(m_snap);
     m_rulerReading = readingLabel(tab, tr("Length measured by the ruler"));
     form->addRow(tr("Length"), m_rulerReading);
-    form->addRow(new QLabel(tr("Drag on the scene with Shift held to lay the ruler; drag its "
+    auto* hint = new QLabel(tr("Drag on the scene with Shift held to lay the ruler; drag its "
                                "ends to move them."),
-                            tab));
+                            tab);
+    hint->setWordWrap(true);
+    form->addRow(hint);
     for (QDoubleSpinBox* f : m_rulerFields)
         connect(f, &QDoubleSpinBox::valueChanged, this, &InstrumentsPanel::pointsTyped);
     return tab;

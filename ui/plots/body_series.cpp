@@ -72,6 +72,14 @@ QString quantitySymbol(BodyQuantity q)
     return QString::fromLatin1(kSymbols[static_cast<int>(q)]);
 }
 
+QString quantityAxisName(BodyQuantity q)
+{
+    // Short, as the standard plots' axes are ("energy E", "p"): a narrow plot keeps them whole.
+    static const char* const kAxis[kBodyQuantityCount] = {"x", "y", "vx",  "vy", "|v|", "|a|", "θ",
+                                                          "θ", "ω", "E_k", "px", "py",  "L"};
+    return QString::fromUtf8(kAxis[static_cast<int>(q)]);
+}
+
 QString quantityUnit(BodyQuantity q)
 {
     static const char* const kUnits[kBodyQuantityCount] = {
@@ -143,7 +151,7 @@ double bodyValue(const physics::World& world, physics::BodyId id, BodyQuantity q
 BodyGraph::BodyGraph(PlotWidget& plot, BodyQuantity quantity, ReferenceFrame frame)
     : m_plot(plot), m_quantity(quantity), m_frame(std::move(frame))
 {
-    m_plot.setYAxisLabel(quantityName(quantity), quantityUnit(quantity));
+    m_plot.setYAxisLabel(quantityAxisName(quantity), quantityUnit(quantity));
     m_plot.setValueScale(YAxis::Left, quantityScale(quantity));
 }
 

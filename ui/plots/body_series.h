@@ -42,6 +42,8 @@ inline constexpr int kBodyQuantityCount = 13;
 QString quantityName(BodyQuantity q);
 /// Its symbol as a CSV head writes it ("v_x", "E_k").
 QString quantitySymbol(BodyQuantity q);
+/// Its symbol on a plot's value axis ("vx", "θ").
+QString quantityAxisName(BodyQuantity q);
 /// Its SI unit ("m/s", "°").
 QString quantityUnit(BodyQuantity q);
 

@@ -81,8 +81,10 @@ MainWindow::MainWindow(QWidget* parent)
     new DivergenceBanner(*m_controller, m_view);
     wirePanels();
     wireDocument();
-    for (PlotWidget* plot : m_plots)
+    for (PlotWidget* plot : m_plots) {
         followController(*plot, *m_controller);
+        plot->addMenuAction(m_instruments->graphAction()); // graphs of chosen bodies
+    }
     restoreSettings();
     updateStatus();
 }
@@ -99,6 +101,8 @@ void MainWindow::wirePanels()
     const auto showRefusal = [bar](const QString& why) { bar->showMessage(why, 8000); };
     connect(m_controls, &ControlPanel::inputRefused, bar, showRefusal);
     connect(m_inspector, &InspectorPanel::inputRefused, bar, showRefusal);
+    connect(m_inspector, &InspectorPanel::graphRequested, m_instruments,
+            [this](int body) { m_instruments->askGraph({body}); });
     connect(m_documents, &WindowDocuments::message, bar, &QStatusBar::showMessage);
     connect(m_measurement, &MeasurementSession::message, bar, &QStatusBar::showMessage);
     connect(m_session, &LessonSession::runHeldChanged, this,
