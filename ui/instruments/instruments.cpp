@@ -32,10 +32,9 @@ public:
 
 QString graphTitle(const BodyGraphSpec& spec)
 {
-    QString title = Instruments::tr("Graph: %1").arg(quantityName(spec.quantity));
-    if (!spec.frame.isLab())
-        title += Instruments::tr(" (centre-of-mass frame)");
-    return title;
+    return spec.frame.isLab() ? Instruments::tr("Graph: %1").arg(quantityName(spec.quantity))
+                              : Instruments::tr("Graph: %1 (centre-of-mass frame)")
+                                    .arg(quantityName(spec.quantity));
 }
 
 } // namespace

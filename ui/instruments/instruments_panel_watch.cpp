@@ -242,7 +242,7 @@ void InstrumentsPanel::copyProbe()
 {
     const QString body = m_controller.scene().bodyLabel(std::max(0, probeBody()));
     QApplication::clipboard()->setText(
-        tr("%1 at t = %2 s").arg(body, QLocale().toString(m_controller.time())) +
+        tr("%1 at t = %2 s").arg(body, QLocale().toString(m_controller.time())) +
         QLatin1Char('\n') + probeText());
 }
 
