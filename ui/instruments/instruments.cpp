@@ -126,6 +126,7 @@ PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
 {
     auto* plot = new PlotWidget(graphTitle(spec), &m_window);
     plot->setObjectName(QStringLiteral("bodyGraph"));
+    plot->setTitleShown(false); // its dock says it; exports do
     plot->setExportContext(m_controller.scene().title);
     plot->addMenuAction(m_graphAction); // another graph, from this one's menu
     auto* feed = new GraphFeed(*plot, spec.quantity, spec.frame);
@@ -153,11 +154,15 @@ PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
     dock->setObjectName(QStringLiteral("bodyGraphDock%1").arg(m_graphDocks.size()));
     dock->setAttribute(Qt::WA_DeleteOnClose);
     dock->setWidget(plot);
-    m_window.addDockWidget(Qt::BottomDockWidgetArea, dock);
+    if (m_placeGraph)
+        m_placeGraph(dock);
+    else
+        m_window.addDockWidget(Qt::BottomDockWidgetArea, dock);
     m_graphDocks << dock;
     connect(dock, &QObject::destroyed, this,
             [this, dock] { m_graphDocks.removeAll(static_cast<QDockWidget*>(dock)); });
     dock->show();
+    dock->raise(); // in front of the plots it may share tabs with
     return plot;
 }
 

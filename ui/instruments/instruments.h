@@ -8,7 +8,9 @@
 #include "instruments/body_graph_dialog.h"
 
 #include <QList>
+
 #include <QObject>
+#include <functional>
 
 class QAction;
 class QDockWidget;
@@ -35,6 +37,11 @@ public:
     void setAvailable(bool available);
     bool available() const { return m_available; }
 
+    /// Where a graph's dock goes (the window tabs it with its plots); unset, below the scene.
+    void setGraphPlacer(std::function<void(QDockWidget*)> placer)
+    {
+        m_placeGraph = std::move(placer);
+    }
     /// A graph of bodies in a dock of its own, recorded from now on; returns its plot.
     PlotWidget* showGraph(const BodyGraphSpec& spec);
     /// Asks which graph, starting from `bodies` ticked, then shows it.
@@ -55,6 +62,7 @@ private:
     QList<QDockWidget*> m_graphDocks;
     std::vector<physics::BodyId> m_frame; ///< the view's frame: empty, the lab's
     bool m_available = true;
+    std::function<void(QDockWidget*)> m_placeGraph; ///< see setGraphPlacer
 };
 
 } // namespace rigidlab::ui

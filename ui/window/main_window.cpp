@@ -74,6 +74,13 @@ MainWindow::MainWindow(QWidget* parent)
     m_documents = new WindowDocuments(*this, *m_document);
     buildEditor();
     m_instruments = new Instruments(*this, *m_controller, *m_view);
+    m_instruments->setGraphPlacer([this](QDockWidget* graph) {
+        // A tab beside the plots: the scene keeps its height on a small screen.
+        addDockWidget(Qt::RightDockWidgetArea, graph);
+        if (QDockWidget* plots = m_layout->dock(QLatin1String(kPlotNames[0].name));
+            plots && !plots->isHidden())
+            tabifyDockWidget(plots, graph);
+    });
     m_session = new LessonSession({*this, *m_player, *m_controller, *m_document, *m_documents,
                                    *m_editTools, *m_layout, *m_actions, *m_view, *m_controls,
                                    *m_sat, *m_bounces, *m_collision, m_plots});
