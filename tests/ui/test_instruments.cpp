@@ -13,6 +13,7 @@
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
+#include "view/world_view.h"
 #include "window/main_window.h"
 
 #include "format/scene_loader.h"
@@ -22,6 +23,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLocale>
+#include <QMouseEvent>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -361,6 +363,61 @@ private slots:
         }
         for (const QPointF& p : plotX.points(0))
             QCOMPARE(p.y(), 0.5);
+    }
+
+    void viewFollowsTheCentreOfMassFrame()
+    {
+        ui::MainWindow w;
+        w.resize(1024, 768);
+        w.show();
+        QVERIFY(w.openScene(
+                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"),
+                     true)
+                    .isEmpty());
+        w.instruments().panel()->setFrameBodies({0, 1});
+        runFor(w.controller(), 1.5);
+        // The view's centre is the two balls' centre of mass, wherever it went.
+        const physics::World& world = w.controller().world();
+        const physics::Vec2 com = (world.body(0).position + world.body(1).position) / 2;
+        const QPointF centre = w.view().mapToScene(w.view().viewport()->rect().center());
+        const double pixel = 1.0 / w.view().zoom();
+        RL_VERIFY_NEAR(centre.x(), com.x(), 2 * pixel, 0);
+        RL_VERIFY_NEAR(centre.y(), com.y(), 2 * pixel, 0);
+        // It moved on from x = -0.5 at 1 m/s: the view went with it.
+        RL_VERIFY_NEAR(com.x(), -0.5 + w.controller().time(), 1e-9, 0);
+    }
+
+    void rulerLaidWithTheMouse()
+    {
+        ui::MainWindow w;
+        w.resize(1024, 768);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        QVERIFY(w.openScene(
+                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"),
+                     true)
+                    .isEmpty());
+        w.instruments().dock()->show();
+        InstrumentsPanel& panel = *w.instruments().panel();
+        panel.tabs()->setCurrentIndex(InstrumentsPanel::RulerTab);
+        QCoreApplication::processEvents();
+        // Shift and a drag from near one ball's centre to near the other's: snapped, 2 m.
+        ui::WorldView& view = w.view();
+        const auto at = [&](double x, double y) {
+            return view.mapFromScene(QPointF(x, y)) + QPoint(2, -1); // a hand is not exact
+        };
+        QWidget* viewport = view.viewport();
+        QTest::mousePress(viewport, Qt::LeftButton, Qt::ShiftModifier, at(-1.5, 0));
+        QMouseEvent move(QEvent::MouseMove, at(0.5, 0), viewport->mapToGlobal(at(0.5, 0)),
+                         Qt::NoButton, Qt::LeftButton, Qt::ShiftModifier);
+        QCoreApplication::sendEvent(viewport, &move);
+        QTest::mouseRelease(viewport, Qt::LeftButton, Qt::ShiftModifier, at(0.5, 0));
+        QCOMPARE(panel.rulerStart(), physics::Vec2(-1.5, 0));
+        QCOMPARE(panel.rulerEnd(), physics::Vec2(0.5, 0));
+        RL_VERIFY_NEAR(panel.rulerLength(), 2.0, 1e-12, 0);
+        // The ruler is not a grab: the balls stayed where they were.
+        QCOMPARE(w.controller().world().body(0).position, physics::Vec2(-1.5, 0));
+        QVERIFY(!w.controller().grabbed());
     }
 
     void lessonCanHideThem()
