@@ -311,6 +311,11 @@ private slots:
         QVERIFY2(table.rows[0][3].startsWith(QStringLiteral("p_x")), qPrintable(table.rows[0][3]));
         for (int i = 1; i < table.rows.size(); ++i)
             RL_VERIFY_NEAR(table.rows[i][3].toDouble(), 2.0, 1e-12, 0);
+        // Back on the timeline to before the hit: the curves end there, the rest is the ghost.
+        w.controller().seek(500);
+        QCOMPARE(plot->points(2).back().x(), 0.5);
+        QVERIFY(!plot->ghostPoints(2).empty());
+        RL_VERIFY_NEAR(plot->points(0).back().y(), 2.0, 1e-12, 0);
     }
 
     void centreOfMassFrameShowsOppositeMomenta()

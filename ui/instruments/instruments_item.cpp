@@ -201,11 +201,14 @@ std::optional<InstrumentsMouse::Handle> InstrumentsMouse::handleAt(const QPoint&
         const QPointF s = m_view.mapFromScene(QPointF(p.x(), p.y()));
         return QLineF(s, QPointF(viewPos)).length() <= kGrabPx;
     };
-    if (near(m_panel.rulerStart()))
+    // Only the instrument drawn (the open tab's) has ends to grab.
+    const int tab = m_panel.tabs()->currentIndex();
+    if (tab == InstrumentsPanel::RulerTab && near(m_panel.rulerStart()))
         return Handle::RulerA;
-    if (near(m_panel.rulerEnd()))
+    if (tab == InstrumentsPanel::RulerTab && near(m_panel.rulerEnd()))
         return Handle::RulerB;
-    if (m_panel.protractorMode() == InstrumentsPanel::ProtractorMode::Lines) {
+    if (tab == InstrumentsPanel::ProtractorTab &&
+        m_panel.protractorMode() == InstrumentsPanel::ProtractorMode::Lines) {
         if (near(m_panel.protractorVertex()))
             return Handle::Vertex;
         if (near(m_panel.protractorArmA()))
