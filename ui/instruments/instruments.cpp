@@ -151,7 +151,7 @@ PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
     connect(&m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
     connect(&m_controller, &SimulationController::frameAdvanced, plot, &PlotWidget::frameAdvanced);
     auto* dock = new QDockWidget(plot->title(), &m_window);
-    dock->setObjectName(QStringLiteral("bodyGraphDock%1").arg(m_graphDocks.size()));
+    dock->setObjectName(QStringLiteral("bodyGraphDock%1").arg(++m_graphsMade));
     dock->setAttribute(Qt::WA_DeleteOnClose);
     dock->setWidget(plot);
     if (m_placeGraph)

@@ -60,6 +60,7 @@ private:
     QDockWidget* m_dock;
     QAction* m_graphAction;
     QList<QDockWidget*> m_graphDocks;
+    int m_graphsMade = 0; ///< names each graph's dock apart from the ones closed before
     std::vector<physics::BodyId> m_frame; ///< the view's frame: empty, the lab's
     bool m_available = true;
     std::function<void(QDockWidget*)> m_placeGraph; ///< see setGraphPlacer
