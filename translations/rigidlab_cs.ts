@@ -1446,6 +1446,14 @@
         <source>a measured drop over the simulated one, the residuals and e fitted to it</source>
         <translation>naměřený pád přes simulovaný, rezidua a&#xa0;e určené z&#xa0;měření</translation>
     </message>
+    <message>
+        <source>the probe beside the ball hit and a graph of both momenta with their sum</source>
+        <translation>sonda u zasažené koule a graf hybností obou koulí s jejich součtem</translation>
+    </message>
+    <message>
+        <source>the ruler between the two balls&apos; starting centres</source>
+        <translation>pravítko mezi počátečními středy obou koulí</translation>
+    </message>
 </context>
 <context>
     <name>StatusWords</name>
@@ -1761,6 +1769,41 @@
     <message>
         <source>cannot read: %1</source>
         <translation>nelze číst: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::BodyGraphDialog</name>
+    <message>
+        <source>A curve for each body</source>
+        <translation>Křivka pro každé těleso</translation>
+    </message>
+    <message>
+        <source>A curve of their sum</source>
+        <translation>Křivka jejich součtu</translation>
+    </message>
+    <message>
+        <source>In the centre-of-mass frame of these bodies</source>
+        <translation>V těžišťové soustavě těchto těles</translation>
+    </message>
+    <message>
+        <source>Graph of bodies</source>
+        <translation>Graf těles</translation>
+    </message>
+    <message>
+        <source>Quantity</source>
+        <translation>Veličina</translation>
+    </message>
+    <message>
+        <source>Bodies</source>
+        <translation>Tělesa</translation>
+    </message>
+    <message>
+        <source>&amp;Quantity</source>
+        <translation>&amp;Veličina</translation>
+    </message>
+    <message>
+        <source>&amp;Bodies</source>
+        <translation>&amp;Tělesa</translation>
     </message>
 </context>
 <context>
@@ -2492,6 +2535,372 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Angles and angular velocities in degrees or in radians</source>
         <translation>Úhly a úhlové rychlosti ve stupních nebo v radiánech</translation>
+    </message>
+    <message>
+        <source>Graph…</source>
+        <translation>Graf…</translation>
+    </message>
+    <message>
+        <source>A graph of this body&apos;s quantities against time</source>
+        <translation>Graf veličin tohoto tělesa v závislosti na čase</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::Instruments</name>
+    <message>
+        <source>Graph: %1</source>
+        <translation>Graf: %1</translation>
+    </message>
+    <message>
+        <source>Graph: %1 (centre-of-mass frame)</source>
+        <translation>Graf: %1 (těžišťová soustava)</translation>
+    </message>
+    <message>
+        <source>&amp;Graph of bodies…</source>
+        <translation>&amp;Graf těles…</translation>
+    </message>
+    <message>
+        <source>Instruments</source>
+        <translation>Měřidla</translation>
+    </message>
+    <message>
+        <source>Plot a quantity of chosen bodies against time</source>
+        <translation>Graf veličiny vybraných těles v závislosti na čase</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::InstrumentsPanel</name>
+    <message>
+        <source>ruler: %1</source>
+        <translation>pravítko: %1</translation>
+    </message>
+    <message>
+        <source>angle: %1</source>
+        <translation>úhel: %1</translation>
+    </message>
+    <message>
+        <source>stopwatch line, %1</source>
+        <translation>čára stopek, %1</translation>
+    </message>
+    <message>
+        <source>Ruler</source>
+        <translation>Pravítko</translation>
+    </message>
+    <message>
+        <source>Protractor</source>
+        <translation>Úhloměr</translation>
+    </message>
+    <message>
+        <source>Stopwatch</source>
+        <translation>Stopky</translation>
+    </message>
+    <message>
+        <source>Probe</source>
+        <translation>Sonda</translation>
+    </message>
+    <message>
+        <source>Frame</source>
+        <translation>Soustava</translation>
+    </message>
+    <message>
+        <source>Instruments</source>
+        <translation>Měřidla</translation>
+    </message>
+    <message>
+        <source>Ruler start x</source>
+        <translation>Začátek pravítka x</translation>
+    </message>
+    <message>
+        <source>Ruler start y</source>
+        <translation>Začátek pravítka y</translation>
+    </message>
+    <message>
+        <source>Ruler end x</source>
+        <translation>Konec pravítka x</translation>
+    </message>
+    <message>
+        <source>Ruler end y</source>
+        <translation>Konec pravítka y</translation>
+    </message>
+    <message>
+        <source>Start</source>
+        <translation>Začátek</translation>
+    </message>
+    <message>
+        <source>End</source>
+        <translation>Konec</translation>
+    </message>
+    <message>
+        <source>Snap to centres and corners</source>
+        <translation>Přichytávat ke středům a rohům</translation>
+    </message>
+    <message>
+        <source>An end near a body&apos;s centre of mass or corner goes exactly there</source>
+        <translation>Konec blízko těžiště nebo rohu tělesa se umístí přesně tam</translation>
+    </message>
+    <message>
+        <source>Length measured by the ruler</source>
+        <translation>Délka změřená pravítkem</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Délka</translation>
+    </message>
+    <message>
+        <source>Drag on the scene with Shift held to lay the ruler; drag its ends to move them.</source>
+        <translation>Pravítko položíte tažením ve scéně s přidrženou klávesou Shift; jeho konce přesunete tažením.</translation>
+    </message>
+    <message>
+        <source>Angle of a body</source>
+        <translation>Úhel tělesa</translation>
+    </message>
+    <message>
+        <source>Angle between two lines</source>
+        <translation>Úhel mezi dvěma přímkami</translation>
+    </message>
+    <message>
+        <source>What the protractor measures</source>
+        <translation>Co úhloměr měří</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Měřit</translation>
+    </message>
+    <message>
+        <source>Body the protractor measures</source>
+        <translation>Těleso, které úhloměr měří</translation>
+    </message>
+    <message>
+        <source>Body</source>
+        <translation>Těleso</translation>
+    </message>
+    <message>
+        <source>Vertex x</source>
+        <translation>Vrchol x</translation>
+    </message>
+    <message>
+        <source>Vertex y</source>
+        <translation>Vrchol y</translation>
+    </message>
+    <message>
+        <source>First line through x</source>
+        <translation>První přímka prochází x</translation>
+    </message>
+    <message>
+        <source>First line through y</source>
+        <translation>První přímka prochází y</translation>
+    </message>
+    <message>
+        <source>Second line through x</source>
+        <translation>Druhá přímka prochází x</translation>
+    </message>
+    <message>
+        <source>Second line through y</source>
+        <translation>Druhá přímka prochází y</translation>
+    </message>
+    <message>
+        <source>Vertex</source>
+        <translation>Vrchol</translation>
+    </message>
+    <message>
+        <source>First line</source>
+        <translation>První přímka</translation>
+    </message>
+    <message>
+        <source>Second line</source>
+        <translation>Druhá přímka</translation>
+    </message>
+    <message>
+        <source>Angle measured by the protractor</source>
+        <translation>Úhel změřený úhloměrem</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Úhel</translation>
+    </message>
+    <message>
+        <source>Start button</source>
+        <translation>tlačítko Start</translation>
+    </message>
+    <message>
+        <source>Stop button</source>
+        <translation>tlačítko Stop</translation>
+    </message>
+    <message>
+        <source>first contact of the body</source>
+        <translation>první dotyk tělesa</translation>
+    </message>
+    <message>
+        <source>the body passing the line</source>
+        <translation>průchod tělesa čarou</translation>
+    </message>
+    <message>
+        <source>the body coming to rest</source>
+        <translation>zastavení tělesa</translation>
+    </message>
+    <message>
+        <source>Time on the stopwatch</source>
+        <translation>Čas na stopkách</translation>
+    </message>
+    <message>
+        <source>Time</source>
+        <translation>Čas</translation>
+    </message>
+    <message>
+        <source>Stopwatch state</source>
+        <translation>Stav stopek</translation>
+    </message>
+    <message>
+        <source>State</source>
+        <translation>Stav</translation>
+    </message>
+    <message>
+        <source>Stop</source>
+        <translation>Stop</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Vynulovat</translation>
+    </message>
+    <message>
+        <source>What starts the stopwatch</source>
+        <translation>Co stopky spustí</translation>
+    </message>
+    <message>
+        <source>What stops the stopwatch</source>
+        <translation>Co stopky zastaví</translation>
+    </message>
+    <message>
+        <source>Starts on</source>
+        <translation>Spustí</translation>
+    </message>
+    <message>
+        <source>Stops on</source>
+        <translation>Zastaví</translation>
+    </message>
+    <message>
+        <source>Body the stopwatch watches</source>
+        <translation>Těleso, které stopky sledují</translation>
+    </message>
+    <message>
+        <source>Height of the line</source>
+        <translation>Výška čáry</translation>
+    </message>
+    <message>
+        <source>The horizontal line y = h that the body&apos;s centre passes</source>
+        <translation>Vodorovná čára y = h, kterou prochází těžiště tělesa</translation>
+    </message>
+    <message>
+        <source>Line at height y</source>
+        <translation>Čára ve výšce y</translation>
+    </message>
+    <message>
+        <source>ready</source>
+        <translation>připraveny</translation>
+    </message>
+    <message>
+        <source>waiting for the start event</source>
+        <translation>čekají na událost, která je spustí</translation>
+    </message>
+    <message>
+        <source>running</source>
+        <translation>běží</translation>
+    </message>
+    <message>
+        <source>stopped</source>
+        <translation>zastaveny</translation>
+    </message>
+    <message>
+        <source>Body the probe reads</source>
+        <translation>Těleso, které sonda měří</translation>
+    </message>
+    <message>
+        <source>Probe reading</source>
+        <translation>Údaje sondy</translation>
+    </message>
+    <message>
+        <source>Copy</source>
+        <translation>Kopírovat</translation>
+    </message>
+    <message>
+        <source>Puts the probe&apos;s numbers on the clipboard</source>
+        <translation>Zkopíruje údaje sondy do schránky</translation>
+    </message>
+    <message>
+        <source>Plot…</source>
+        <translation>Graf…</translation>
+    </message>
+    <message>
+        <source>A graph of this body&apos;s quantities against time</source>
+        <translation>Graf veličin tohoto tělesa v závislosti na čase</translation>
+    </message>
+    <message>
+        <source>no body chosen</source>
+        <translation>není vybráno žádné těleso</translation>
+    </message>
+    <message>
+        <source>x = %1</source>
+        <translation>x = %1</translation>
+    </message>
+    <message>
+        <source>y = %1</source>
+        <translation>y = %1</translation>
+    </message>
+    <message>
+        <source>v = %1</source>
+        <translation>v = %1</translation>
+    </message>
+    <message>
+        <source>|v| = %1</source>
+        <translation>|v| = %1</translation>
+    </message>
+    <message>
+        <source>ω = %1</source>
+        <translation>ω = %1</translation>
+    </message>
+    <message>
+        <source>E_k = %1</source>
+        <translation>E_k = %1</translation>
+    </message>
+    <message>
+        <source>p = %1</source>
+        <translation>p = %1</translation>
+    </message>
+    <message>
+        <source>L = %1</source>
+        <translation>L = %1</translation>
+    </message>
+    <message>
+        <source>weight = %1</source>
+        <translation>tíha = %1</translation>
+    </message>
+    <message>
+        <source>contact force = %1</source>
+        <translation>kontaktní síla = %1</translation>
+    </message>
+    <message>
+        <source>%1 at t = %2&#xa0;s</source>
+        <translation>%1 v čase t = %2&#xa0;s</translation>
+    </message>
+    <message>
+        <source>Lab frame</source>
+        <translation>Laboratorní soustava</translation>
+    </message>
+    <message>
+        <source>Centre-of-mass frame of the bodies ticked</source>
+        <translation>Těžišťová soustava zaškrtnutých těles</translation>
+    </message>
+    <message>
+        <source>Frame of reference</source>
+        <translation>Vztažná soustava</translation>
+    </message>
+    <message>
+        <source>Bodies of the centre-of-mass frame</source>
+        <translation>Tělesa těžišťové soustavy</translation>
+    </message>
+    <message>
+        <source>Plot momenta in this frame…</source>
+        <translation>Graf hybností v této soustavě…</translation>
     </message>
 </context>
 <context>
@@ -3451,6 +3860,58 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Copy data shown</source>
         <translation>Kopírovat zobrazená data</translation>
+    </message>
+    <message>
+        <source>position x</source>
+        <translation>poloha x</translation>
+    </message>
+    <message>
+        <source>position y</source>
+        <translation>poloha y</translation>
+    </message>
+    <message>
+        <source>velocity vx</source>
+        <translation>rychlost vx</translation>
+    </message>
+    <message>
+        <source>velocity vy</source>
+        <translation>rychlost vy</translation>
+    </message>
+    <message>
+        <source>speed |v|</source>
+        <translation>velikost rychlosti |v|</translation>
+    </message>
+    <message>
+        <source>acceleration |a|</source>
+        <translation>velikost zrychlení |a|</translation>
+    </message>
+    <message>
+        <source>angle θ in degrees</source>
+        <translation>úhel θ ve stupních</translation>
+    </message>
+    <message>
+        <source>angle θ in radians</source>
+        <translation>úhel θ v radiánech</translation>
+    </message>
+    <message>
+        <source>angular velocity ω</source>
+        <translation>úhlová rychlost ω</translation>
+    </message>
+    <message>
+        <source>kinetic energy E_k</source>
+        <translation>kinetická energie E_k</translation>
+    </message>
+    <message>
+        <source>momentum px</source>
+        <translation>hybnost px</translation>
+    </message>
+    <message>
+        <source>momentum py</source>
+        <translation>hybnost py</translation>
+    </message>
+    <message>
+        <source>angular momentum L</source>
+        <translation>moment hybnosti L</translation>
     </message>
 </context>
 <context>

@@ -12,6 +12,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QPushButton>
 
 #include <cmath>
 #include <numbers>
@@ -82,6 +83,14 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     form->addRow(tr("Kinetic energy"), m_energy);
     form->addRow(schema::label(restitution), m_restitution);
     form->addRow(schema::label(friction), m_friction);
+    auto* graph = new QPushButton(tr("Graph…"), this);
+    graph->setObjectName(QStringLiteral("inspectorGraph"));
+    graph->setToolTip(tr("A graph of this body's quantities against time"));
+    connect(graph, &QPushButton::clicked, this, [this] {
+        if (m_body >= 0)
+            emit graphRequested(m_body);
+    });
+    form->addRow(graph);
     for (QLabel* l :
          {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);

@@ -31,6 +31,8 @@ public:
 signals:
     /// A typed value was refused; `message` names the allowed range (for the status bar).
     void inputRefused(const QString& message);
+    /// Graph… was pressed: graphs of the body shown.
+    void graphRequested(int body);
 
 public slots:
     /// Shows body `id` (-1: none). An edit in progress is taken for the body shown before.

@@ -73,6 +73,11 @@ void PlotWidget::showContextMenu(const QPoint& pos)
     wholeRun->setChecked(m_rangeMode == RangeMode::WholeRun);
     connect(wholeRun, &QAction::triggered, this, [this] { setRangeMode(RangeMode::WholeRun); });
     menu->addActions(modes->actions());
+    for (QAction* action : std::as_const(m_menuActions))
+        if (action) {
+            menu->addSeparator();
+            menu->addAction(action);
+        }
 
     menu->popup(m_plot->mapToGlobal(pos));
 }

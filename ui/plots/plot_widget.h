@@ -29,7 +29,9 @@
 
 #include <QColor>
 #include <QElapsedTimer>
+#include <QList>
 #include <QPointF>
+#include <QPointer>
 #include <QString>
 #include <QWidget>
 
@@ -39,6 +41,7 @@
 #include <optional>
 #include <vector>
 
+class QAction;
 class QCustomPlot;
 class QCPAxis;
 class QCPGraph;
@@ -202,6 +205,9 @@ public:
     static constexpr int kMarkRows = 3;
     static constexpr double kMergePx = 6.0;
 
+    /// An action the plot's context menu offers after its own (Graph of bodies…); not owned.
+    void addMenuAction(QAction* action) { m_menuActions << action; }
+
     /// The underlying plot, for export and styling. It stays owned by this widget.
     QCustomPlot* plot() const { return m_plot; }
     /// Hands each graph its points decimated to `columns` pixel columns of the time axis
@@ -322,6 +328,7 @@ private:
     bool m_dirty = false;         ///< data changed since the last view update
     bool m_settingRanges = false; ///< our own range changes do not pause following
     bool m_replotWhenShown = false;
+    QList<QPointer<QAction>> m_menuActions; ///< see addMenuAction
 };
 
 // The plots of the lab window and their palette (standard_plots.cpp).

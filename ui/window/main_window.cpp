@@ -7,6 +7,7 @@
 #include "common/modal_scope.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
+#include "instruments/instruments.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
 #include "measure/measurement_panel.h"
@@ -74,6 +75,14 @@ MainWindow::MainWindow(QWidget* parent)
     m_status = new StatusLine(*this, *m_controller, *m_view);
     m_documents = new WindowDocuments(*this, *m_document);
     buildEditor();
+    m_instruments = new Instruments(*this, *m_controller, *m_view);
+    m_instruments->setGraphPlacer([this](QDockWidget* graph) {
+        // A tab beside the plots: the scene keeps its height on a small screen.
+        addDockWidget(Qt::RightDockWidgetArea, graph);
+        if (QDockWidget* plots = m_layout->dock(QLatin1String(kPlotNames[0].name));
+            plots && !plots->isHidden())
+            tabifyDockWidget(plots, graph);
+    });
     m_session = new LessonSession({*this, *m_player, *m_controller, *m_document, *m_documents,
                                    *m_editTools, *m_layout, *m_actions, *m_view, *m_controls,
                                    *m_sat, *m_bounces, *m_collision, m_plots});
@@ -81,8 +90,10 @@ MainWindow::MainWindow(QWidget* parent)
     new DivergenceBanner(*m_controller, m_view);
     wirePanels();
     wireDocument();
-    for (PlotWidget* plot : m_plots)
+    for (PlotWidget* plot : m_plots) {
         followController(*plot, *m_controller);
+        plot->addMenuAction(m_instruments->graphAction()); // graphs of chosen bodies
+    }
     restoreSettings();
     updateStatus();
 }
@@ -99,6 +110,8 @@ void MainWindow::wirePanels()
     const auto showRefusal = [bar](const QString& why) { bar->showMessage(why, 8000); };
     connect(m_controls, &ControlPanel::inputRefused, bar, showRefusal);
     connect(m_inspector, &InspectorPanel::inputRefused, bar, showRefusal);
+    connect(m_inspector, &InspectorPanel::graphRequested, m_instruments,
+            [this](int body) { m_instruments->askGraph({body}); });
     connect(m_documents, &WindowDocuments::message, bar, &QStatusBar::showMessage);
     connect(m_measurement, &MeasurementSession::message, bar, &QStatusBar::showMessage);
     connect(m_session, &LessonSession::runHeldChanged, this,
@@ -185,6 +198,7 @@ QList<PlotWidget*> MainWindow::plotsOnScreen() const
     if (!m_layout->compareDock()->isHidden())
         for (PlotWidget* plot : m_session->comparePlots())
             plots << plot;
+    plots << m_instruments->graphsShown(); // graphs of chosen bodies
     // An imported measurement's comparison and residuals, as its dock shows them.
     if (QDockWidget* dock = m_layout->dock(QStringLiteral("measurement"));
         dock && !dock->isHidden())

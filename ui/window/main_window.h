@@ -37,6 +37,7 @@ class CollisionPanel;
 class ControlPanel;
 class EditTools;
 class InspectorPanel;
+class Instruments;
 class LessonPlayer;
 class LessonSession;
 class MeasurementSession;
@@ -121,6 +122,8 @@ public:
     EditTools& editTools() { return *m_editTools; }
     /// An imported measurement, its comparison and fit (ui/measure).
     MeasurementSession& measurement() { return *m_measurement; }
+    /// The instruments and graphs of chosen bodies (ui/instruments).
+    Instruments& instruments() { return *m_instruments; }
     PlotWidget* plot(int index) const { return m_plots[static_cast<size_t>(index)]; }
     static constexpr int kPlotCount = 3;
     QString lastError() const;
@@ -198,6 +201,7 @@ private:
     EditTools* m_editTools = nullptr;            ///< the scene editor (ui/editor)
     LessonSession* m_session = nullptr;          ///< a lesson's steps in the window
     MeasurementSession* m_measurement = nullptr; ///< an imported measurement (ui/measure)
+    Instruments* m_instruments = nullptr;        ///< ruler, protractor, stopwatch, probe
     QMenu* m_viewMenu = nullptr;
     QAction* m_presentAction = nullptr;
 };

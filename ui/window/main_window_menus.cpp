@@ -4,6 +4,7 @@
 
 #include "common/shortcuts.h"
 #include "editor/scene_document.h"
+#include "instruments/instruments.h"
 #include "lesson_player/lesson_player.h"
 #include "measure/measurement_session.h"
 #include "window/about_dialog.h"
@@ -125,6 +126,7 @@ void MainWindow::buildViewMenu()
     m_viewMenu->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>())
         m_viewMenu->addAction(dock->toggleViewAction());
+    m_viewMenu->addAction(m_instruments->graphAction());
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_status->detailsAction());
 }

@@ -2,6 +2,8 @@
 #include "window/screenshots.h"
 
 #include "editor/edit_tools.h"
+#include "instruments/instruments.h"
+#include "instruments/instruments_panel.h"
 #include "lesson_player/lesson_player.h"
 #include "measure/measurement_session.h"
 #include "plots/plot_widget.h"
@@ -273,6 +275,40 @@ bool shootMeasurement(MainWindow& window, Shooter& shooter)
                                          "and e fitted to it"));
 }
 
+/// The instruments in use on the two balls' collision: the probe beside the ball hit and a
+/// graph of both momenta with their sum; then the ruler across the track.
+bool shootInstruments(MainWindow& window, Shooter& shooter)
+{
+    const QString scene =
+        QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("two_ball_collision.json"));
+    if (const QString error = window.openScene(scene, true); !error.isEmpty())
+        return shooter.fail(error);
+    Instruments& instruments = window.instruments();
+    InstrumentsPanel& panel = *instruments.panel();
+    BodyGraphSpec spec;
+    spec.quantity = BodyQuantity::Px;
+    spec.bodies = {0, 1};
+    spec.sum = true;
+    PlotWidget* graph = instruments.showGraph(spec);
+    instruments.dock()->show();
+    runFor(window.controller(), 1.2);
+    panel.tabs()->setCurrentIndex(InstrumentsPanel::ProbeTab);
+    panel.setProbeBody(1);
+    if (!shooter.write(QStringLiteral("95-instruments-probe.png"),
+                       Screenshots::tr("the probe beside the ball hit and a graph of both "
+                                       "momenta with their sum")))
+        return false;
+    panel.tabs()->setCurrentIndex(InstrumentsPanel::RulerTab);
+    panel.setRuler({-1.5, 0}, {0.5, 0}); // the two balls' centres at the start
+    const bool ruler =
+        shooter.write(QStringLiteral("96-instruments-ruler.png"),
+                      Screenshots::tr("the ruler between the two balls' starting centres"));
+    // The classroom's shots show the window without them.
+    instruments.dock()->hide();
+    delete graph->parentWidget(); // its dock
+    return ruler;
+}
+
 } // namespace
 
 ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
@@ -317,6 +353,8 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
             return result;
     }
     if (!shootLessons(window, options, shooter))
+        return result;
+    if (options.classroom && !shootInstruments(window, shooter))
         return result;
     if (options.classroom && !shootClassroom(window, shooter))
         return result;

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "instruments/instruments.h"
+
+#include "instruments/instruments_item.h"
+#include "instruments/instruments_panel.h"
+#include "plots/body_series.h"
+#include "plots/plot_widget.h"
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
+
+#include <QAction>
+#include <QDockWidget>
+#include <QGraphicsScene>
+#include <QMainWindow>
+#include <QTabWidget>
+
+#include <memory>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// A graph of bodies and the plot it feeds, recorded while the world moves.
+class GraphFeed : public QObject {
+public:
+    GraphFeed(PlotWidget& plot, BodyQuantity q, ReferenceFrame frame)
+        : QObject(&plot), graph(plot, q, std::move(frame))
+    {
+    }
+    BodyGraph graph;
+};
+
+QString graphTitle(const BodyGraphSpec& spec)
+{
+    return spec.frame.isLab() ? Instruments::tr("Graph: %1").arg(quantityName(spec.quantity))
+                              : Instruments::tr("Graph: %1 (centre-of-mass frame)")
+                                    .arg(quantityName(spec.quantity));
+}
+
+} // namespace
+
+Instruments::Instruments(QMainWindow& window, SimulationController& controller, WorldView& view)
+    : QObject(&window), m_window(window), m_controller(controller), m_view(view),
+      m_panel(new InstrumentsPanel(controller, &window)),
+      m_item(new InstrumentsItem(*m_panel, controller)), m_dock(new QDockWidget(&window)),
+      m_graphAction(new QAction(tr("&Graph of bodies…"), this))
+{
+    m_dock->setWindowTitle(tr("Instruments"));
+    m_dock->setObjectName(QStringLiteral("instrumentsDock"));
+    m_dock->setWidget(m_panel);
+    window.addDockWidget(Qt::RightDockWidgetArea, m_dock);
+    m_dock->hide(); // until asked for: View › Instruments
+    m_dock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
+    m_graphAction->setObjectName(QStringLiteral("graphOfBodies"));
+    m_graphAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G));
+    m_graphAction->setToolTip(tr("Plot a quantity of chosen bodies against time"));
+    connect(m_graphAction, &QAction::triggered, this, [this] {
+        const int selected = m_view.selectedBody();
+        askGraph(selected >= 0 ? std::vector<physics::BodyId>{selected}
+                               : std::vector<physics::BodyId>{});
+    });
+    m_view.scene()->addItem(m_item);
+    m_item->setVisible(false);
+    new InstrumentsMouse(*m_panel, m_view);
+    connect(m_dock, &QDockWidget::visibilityChanged, this,
+            [this](bool shown) { m_item->setVisible(shown && m_available); });
+    connect(m_panel, &InstrumentsPanel::changed, this, [this] { m_item->update(); });
+    connect(m_panel->tabs(), &QTabWidget::currentChanged, this, [this] { m_item->update(); });
+    // A body clicked on the scene is the one the open tab measures.
+    connect(&m_view, &WorldView::bodySelected, this, [this](int id) {
+        if (id < 0)
+            return;
+        if (m_panel->tabs()->currentIndex() == InstrumentsPanel::ProbeTab)
+            m_panel->setProbeBody(id);
+        else if (m_panel->tabs()->currentIndex() == InstrumentsPanel::ProtractorTab &&
+                 m_panel->protractorMode() == InstrumentsPanel::ProtractorMode::Body)
+            m_panel->setProtractorBody(id);
+    });
+    connect(m_panel, &InstrumentsPanel::plotRequested, this,
+            [this](int body) { askGraph({body}); });
+    connect(m_panel, &InstrumentsPanel::frameChanged, this,
+            [this](const std::vector<physics::BodyId>& ids) {
+                m_frame = ids;
+                followFrame();
+            });
+    connect(m_panel, &InstrumentsPanel::frameMomentumRequested, this,
+            [this](const std::vector<physics::BodyId>& ids) {
+                BodyGraphSpec spec;
+                spec.quantity = BodyQuantity::Px;
+                spec.bodies = ids;
+                spec.sum = true;
+                spec.frame.bodies = m_frame;
+                showGraph(spec);
+            });
+    connect(&m_controller, &SimulationController::worldChanged, this, &Instruments::followFrame);
+    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
+        // Graphs of the old scene's bodies mean nothing in the new one.
+        for (QDockWidget* dock : std::as_const(m_graphDocks))
+            dock->deleteLater();
+        m_graphDocks.clear();
+        m_frame.clear();
+    });
+}
+
+void Instruments::setAvailable(bool available)
+{
+    m_available = available;
+    if (!available)
+        m_dock->hide();
+    m_dock->toggleViewAction()->setEnabled(available);
+    m_graphAction->setEnabled(available);
+    m_item->setVisible(available && m_dock->isVisible());
+}
+
+void Instruments::followFrame()
+{
+    // In the centre-of-mass frame the view moves with the centre of mass: the bodies are drawn
+    // as an observer riding along sees them.
+    if (m_frame.empty())
+        return;
+    const FrameMotion motion = frameMotion(m_controller.world(), ReferenceFrame{m_frame});
+    m_view.centerOn(QPointF(motion.origin.x(), motion.origin.y()));
+}
+
+PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
+{
+    auto* plot = new PlotWidget(graphTitle(spec), &m_window);
+    plot->setObjectName(QStringLiteral("bodyGraph"));
+    plot->setTitleShown(false); // its dock says it; exports do
+    plot->setExportContext(m_controller.scene().title);
+    plot->addMenuAction(m_graphAction); // another graph, from this one's menu
+    auto* feed = new GraphFeed(*plot, spec.quantity, spec.frame);
+    const lessons::Scene& scene = m_controller.scene();
+    if (spec.eachBody)
+        for (physics::BodyId id : spec.bodies)
+            feed->graph.addBody(id, scene.bodyLabel(id));
+    if (spec.sum && !spec.bodies.empty()) {
+        QStringList names;
+        for (physics::BodyId id : spec.bodies)
+            names << scene.bodyLabel(id);
+        feed->graph.addSum(spec.bodies, names.join(QStringLiteral(" + ")));
+    }
+    // From now on, and with the timeline: going back keeps the future as the plots' ghost.
+    plot->setTimelineStart(m_controller.earliestTime());
+    feed->graph.record(m_controller.world(), m_controller.time());
+    connect(&m_controller, &SimulationController::worldChanged, feed, [this, feed, plot] {
+        feed->graph.record(m_controller.world(), m_controller.time());
+        plot->setTimelineStart(m_controller.earliestTime());
+    });
+    connect(&m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
+    connect(&m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
+    connect(&m_controller, &SimulationController::frameAdvanced, plot, &PlotWidget::frameAdvanced);
+    auto* dock = new QDockWidget(plot->title(), &m_window);
+    dock->setObjectName(QStringLiteral("bodyGraphDock%1").arg(++m_graphsMade));
+    dock->setAttribute(Qt::WA_DeleteOnClose);
+    dock->setWidget(plot);
+    if (m_placeGraph)
+        m_placeGraph(dock);
+    else
+        m_window.addDockWidget(Qt::BottomDockWidgetArea, dock);
+    m_graphDocks << dock;
+    connect(dock, &QObject::destroyed, this,
+            [this, dock] { m_graphDocks.removeAll(static_cast<QDockWidget*>(dock)); });
+    dock->show();
+    dock->raise(); // in front of the plots it may share tabs with
+    return plot;
+}
+
+void Instruments::askGraph(const std::vector<physics::BodyId>& bodies)
+{
+    QStringList labels;
+    for (int i = 0; i < static_cast<int>(m_controller.world().bodies().size()); ++i)
+        labels << m_controller.scene().bodyLabel(i);
+    BodyGraphSpec initial;
+    initial.bodies = bodies;
+    BodyGraphDialog dialog(labels, initial, &m_window);
+    if (dialog.exec() == QDialog::Accepted && !dialog.spec().bodies.empty())
+        showGraph(dialog.spec());
+}
+
+QList<PlotWidget*> Instruments::graphsShown() const
+{
+    QList<PlotWidget*> plots;
+    for (QDockWidget* dock : m_graphDocks)
+        if (!dock->isHidden())
+            if (auto* plot = qobject_cast<PlotWidget*>(dock->widget()))
+                plots << plot;
+    return plots;
+}
+
+} // namespace rigidlab::ui

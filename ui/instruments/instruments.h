@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The instruments in a window: their panel in a dock (View › Instruments), their drawing on
+// the scene, dragging on it, the centre-of-mass frame of the view, and graphs of chosen bodies
+// in docks of their own. The window makes one and gives it its dock place; a lesson may hide
+// them all (setAvailable).
+
+#include "instruments/body_graph_dialog.h"
+
+#include <QList>
+
+#include <QObject>
+#include <functional>
+
+class QAction;
+class QDockWidget;
+class QMainWindow;
+
+namespace rigidlab::ui {
+
+class InstrumentsItem;
+class InstrumentsPanel;
+class PlotWidget;
+class SimulationController;
+class WorldView;
+
+class Instruments : public QObject {
+    Q_OBJECT
+public:
+    Instruments(QMainWindow& window, SimulationController& controller, WorldView& view);
+
+    InstrumentsPanel* panel() const { return m_panel; }
+    QDockWidget* dock() const { return m_dock; }
+    /// Graph of bodies… (the probe's Plot, the inspector's and a plot's menu open it too).
+    QAction* graphAction() const { return m_graphAction; }
+    /// Whether a lesson lets the student use the instruments (true unless it hides them).
+    void setAvailable(bool available);
+    bool available() const { return m_available; }
+
+    /// Where a graph's dock goes (the window tabs it with its plots); unset, below the scene.
+    void setGraphPlacer(std::function<void(QDockWidget*)> placer)
+    {
+        m_placeGraph = std::move(placer);
+    }
+    /// A graph of bodies in a dock of its own, recorded from now on; returns its plot.
+    PlotWidget* showGraph(const BodyGraphSpec& spec);
+    /// Asks which graph, starting from `bodies` ticked, then shows it.
+    void askGraph(const std::vector<physics::BodyId>& bodies);
+    /// The graphs of bodies whose docks are shown (File › Export plot offers them).
+    QList<PlotWidget*> graphsShown() const;
+
+private:
+    void followFrame();
+
+    QMainWindow& m_window;
+    SimulationController& m_controller;
+    WorldView& m_view;
+    InstrumentsPanel* m_panel;
+    InstrumentsItem* m_item;
+    QDockWidget* m_dock;
+    QAction* m_graphAction;
+    QList<QDockWidget*> m_graphDocks;
+    int m_graphsMade = 0; ///< names each graph's dock apart from the ones closed before
+    std::vector<physics::BodyId> m_frame; ///< the view's frame: empty, the lab's
+    bool m_available = true;
+    std::function<void(QDockWidget*)> m_placeGraph; ///< see setGraphPlacer
+};
+
+} // namespace rigidlab::ui
