@@ -1159,6 +1159,59 @@
     </message>
 </context>
 <context>
+    <name>SatHandout</name>
+    <message>
+        <source>The test stops at axis %1 of the %2 it tried: a gap, so no collision.</source>
+        <translation>Test se zastaví u&#xa0;osy %1 z&#xa0;%2 vyzkoušených: mezera, tedy žádná srážka.</translation>
+    </message>
+    <message>
+        <source>All %1 axes overlap: the polygons intersect. Least penetration: axis %2, depth %3.</source>
+        <translation>Všech %1 os se překrývá: mnohoúhelníky se protínají. Nejmenší průnik: osa %2, hloubka %3.</translation>
+    </message>
+    <message>
+        <source>%1. normal of %2, edge %3
+n = (%4, %5)</source>
+        <translation>%1. normála tělesa %2, hrana %3
+n = (%4; %5)</translation>
+    </message>
+    <message>
+        <source>gap %1</source>
+        <translation>mezera %1</translation>
+    </message>
+    <message>
+        <source>overlap %1</source>
+        <translation>překryv %1</translation>
+    </message>
+    <message>
+        <source>separating axis</source>
+        <translation>oddělující osa</translation>
+    </message>
+    <message>
+        <source>least penetration</source>
+        <translation>nejmenší průnik</translation>
+    </message>
+    <message>
+        <source>A [%1, %2]</source>
+        <translation>A [%1; %2]</translation>
+    </message>
+    <message>
+        <source>B [%1, %2]</source>
+        <translation>B [%1; %2]</translation>
+    </message>
+    <message>
+        <source>Separating axis test: %1 (A) and %2 (B)</source>
+        <translation>Test oddělující osy: %1 (A) a&#xa0;%2 (B)</translation>
+    </message>
+    <message>
+        <source>Projections on each axis the test tried, in metres: A filled, B hatched.</source>
+        <translation>Průměty na každou osu, kterou test vyzkoušel, v&#xa0;metrech: A plné, B šrafované.</translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1</source>
+        <translation>nelze vytvořit složku %1</translation>
+    </message>
+</context>
+<context>
     <name>SatOverlayItem</name>
     <message>
         <source>gap %1 m</source>
