@@ -95,6 +95,16 @@ void TestLessonTopics::impulseFormulaTermByTerm()
     RL_VERIFY_NEAR(w.body(rod).velocity.y(), p.rodVelocity, 0, 1e-6);
     RL_VERIFY_NEAR(w.body(rod).angularVelocity, p.rodSpin, 0, 1e-6);
     RL_VERIFY_NEAR(w.body(ball).velocity.y(), p.ballVelocity, 0, 1e-6);
+    // The collision panel's formula reads its terms from the lab's record of the hit: the same
+    // j, approach, lever arms and normal as evaluated here.
+    QCOMPARE(run.measurements[0].collisions().size(), std::size_t{1});
+    const lessons::CollisionEvent& hit = run.measurements[0].collisions().front();
+    RL_VERIFY_NEAR(hit.impulse, p.j, 0, 1e-6);
+    RL_VERIFY_NEAR(hit.approach, -3.0, 0, 1e-9);
+    RL_VERIFY_NEAR(hit.restitution, 1.0, 0, 0);
+    const std::size_t rodSide = hit.a == rod ? 0 : 1;
+    RL_VERIFY_NEAR(std::abs(crossZ(hit.lever[rodSide], hit.normal)), 0.8, 0, 1e-6);
+    RL_VERIFY_NEAR(crossZ(hit.lever[1 - rodSide], hit.normal), 0.0, 1e-9, 0);
     // e = 1: with the rotational terms the kinetic energy is kept.
     RL_VERIFY_NEAR(w.diagnostics().kinetic, e0, 0, 1e-6);
     // Without them (the seed paper's formula) the spin would be far off.
