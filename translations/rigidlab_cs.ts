@@ -1006,6 +1006,45 @@
     </message>
 </context>
 <context>
+    <name>ImpulseFormula</name>
+    <message>
+        <source>(%1, %2)</source>
+        <translation>(%1; %2)</translation>
+    </message>
+    <message>
+        <source>The impulse of this collision, term by term (A: %1, B: %2)</source>
+        <translation>Impuls této srážky člen po členu (A: %1, B: %2)</translation>
+    </message>
+    <message>
+        <source>e = %1: the coefficient of restitution</source>
+        <translation>e = %1: koeficient restituce</translation>
+    </message>
+    <message>
+        <source>n = %1: the contact normal, from B to A</source>
+        <translation>n = %1: normála kontaktu, od B k&#xa0;A</translation>
+    </message>
+    <message>
+        <source>(v&lt;sub&gt;A&lt;/sub&gt; − v&lt;sub&gt;B&lt;/sub&gt;)·n = %1: how fast the contact points approach along n (negative: approaching)</source>
+        <translation>(v&lt;sub&gt;A&lt;/sub&gt; − v&lt;sub&gt;B&lt;/sub&gt;)·n = %1: jak rychle se body dotyku přibližují podél n (záporná: přibližují se)</translation>
+    </message>
+    <message>
+        <source>1/m&lt;sub&gt;A&lt;/sub&gt; = %1, 1/m&lt;sub&gt;B&lt;/sub&gt; = %2: the masses (0 for a body that does not move)</source>
+        <translation>1/m&lt;sub&gt;A&lt;/sub&gt; = %1, 1/m&lt;sub&gt;B&lt;/sub&gt; = %2: hmotnosti (0 pro těleso, které se nehýbe)</translation>
+    </message>
+    <message>
+        <source>r&lt;sub&gt;A&lt;/sub&gt; = %1: the lever arm of A, from its centre of mass to the contact point; (r&lt;sub&gt;A&lt;/sub&gt; × n)²/I&lt;sub&gt;A&lt;/sub&gt; = %2</source>
+        <translation>r&lt;sub&gt;A&lt;/sub&gt; = %1: rameno tělesa A, od jeho těžiště k&#xa0;bodu dotyku; (r&lt;sub&gt;A&lt;/sub&gt; × n)²/I&lt;sub&gt;A&lt;/sub&gt; = %2</translation>
+    </message>
+    <message>
+        <source>r&lt;sub&gt;B&lt;/sub&gt; = %1: the lever arm of B; (r&lt;sub&gt;B&lt;/sub&gt; × n)²/I&lt;sub&gt;B&lt;/sub&gt; = %2</source>
+        <translation>r&lt;sub&gt;B&lt;/sub&gt; = %1: rameno tělesa B; (r&lt;sub&gt;B&lt;/sub&gt; × n)²/I&lt;sub&gt;B&lt;/sub&gt; = %2</translation>
+    </message>
+    <message>
+        <source>j is shown once you have answered the lesson&apos;s question.</source>
+        <translation>j se ukáže, jakmile odpovíte na otázku lekce.</translation>
+    </message>
+</context>
+<context>
     <name>Judge</name>
     <message>
         <source>Run the simulation until t = %1 s first.</source>
@@ -2396,6 +2435,25 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Copy</source>
         <translation>Kopírovat</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::ImpulseFormulaView</name>
+    <message>
+        <source>Impulse formula</source>
+        <translation>Vzorec pro impuls</translation>
+    </message>
+    <message>
+        <source>The numbers of the first collision appear here when it happens.</source>
+        <translation>Čísla první srážky se tu objeví, jakmile k&#xa0;ní dojde.</translation>
+    </message>
+    <message>
+        <source>Impulse formula with these numbers</source>
+        <translation>Vzorec pro impuls s&#xa0;těmito čísly</translation>
+    </message>
+    <message>
+        <source>Show the impulse formula</source>
+        <translation>Zobrazit vzorec pro impuls</translation>
     </message>
 </context>
 <context>
