@@ -6,6 +6,8 @@
 
 #include "test_main.h"
 
+#include "rigidlab/physics/force_breakdown.h"
+
 #include <cmath>
 
 using namespace rigidlab;
@@ -176,6 +178,17 @@ void TestLessonTopics::accumulatorsSumTheFourForces()
     RL_VERIFY_NEAR(net.y(), 0.0, 1e-12, 0);
     RL_VERIFY_NEAR(tau, 0.5, 0, 1e-12);
     RL_VERIFY_NEAR(b0.inertia, boxInertia(2, 0.4, 0.4), 0, 1e-12);
+    // The inspector's forces (physics::forceBreakdown): the same four, the same sums.
+    const physics::ForceBreakdown shown = physics::forceBreakdown(w, crate);
+    QCOMPARE(shown.terms.size(), std::size_t{4});
+    RL_VERIFY_NEAR(shown.terms[0].force.y(), weight.y(), 0, 1e-12);
+    RL_VERIFY_NEAR(shown.terms[1].force.x(), drag.x(), 0, 1e-12);
+    RL_VERIFY_NEAR(shown.force.x(), net.x(), 0, 1e-12);
+    RL_VERIFY_NEAR(shown.force.y(), net.y(), 1e-12, 0);
+    RL_VERIFY_NEAR(shown.torque, tau, 0, 1e-12);
+    // Each spring acts at its anchor on the crate: the cord at the top's middle.
+    RL_VERIFY_NEAR((shown.terms[2].point - b0.position).y(), 0.2, 0, 1e-12);
+    RL_VERIFY_NEAR(shown.terms[3].torque, 0.5, 0, 1e-12);
     w.step();
     const physics::Body& b1 = w.body(crate);
     const double dt = w.def().dt;

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The collision panel's impulse formula with the numbers of the lesson's off-centre hit
 // substituted: each term as the formula evaluated here gives it, j kept back while the
-// velocities after the hit are, and the numbers in the language's own format.
+// velocities after the hit are, and the numbers in the language's own format. And the
+// inspector's forces on the accumulator lesson's crate, summed as its text sums them.
 
 #include "common/language.h"
 #include "common/number_format.h"
+#include "panels/forces_view.h"
 #include "panels/impulse_formula_view.h"
 
 #include "format/lesson.h"
@@ -86,10 +88,35 @@ private slots:
         const QString cs = plain(ui::impulseFormulaText(hit->event, a, b, QStringLiteral("tyč"),
                                                         QStringLiteral("koule"), false));
         QVERIFY(ui::applyLanguage(QStringLiteral("en")));
-        QVERIFY2(cs.contains(QStringLiteral("= %1 N·s")
-                                 .arg(QString::number(j, 'f', 3).replace(u'.', u','))),
-                 qPrintable(cs));
+        QVERIFY2(
+            cs.contains(
+                QStringLiteral("= %1 N·s").arg(QString::number(j, 'f', 3).replace(u'.', u','))),
+            qPrintable(cs));
         QVERIFY2(cs.contains(QStringLiteral("normála")), qPrintable(cs));
+    }
+
+    void forcesOfTheCrate()
+    {
+        const lessons::LessonLoadResult loaded = lessons::loadLessonFile(
+            QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/force_accumulators.json"));
+        QVERIFY2(loaded.ok, qPrintable(loaded.error));
+        const lessons::LessonStep& step = loaded.lesson.steps.at(0);
+        const physics::World world = lessons::buildStepWorlds(step).front();
+        const physics::BodyId crate = *step.scene.bodyIndex(QStringLiteral("crate"));
+        ui::ForcesView view;
+        view.showBody(world, crate);
+        const QString text = plain(view.text());
+        // Weight, drag, the cord and the push; their sums (4, 0) N and 0.5 N m; a and α.
+        for (const QString& expected :
+             {QStringLiteral("weight m g"), QStringLiteral("(0, -20)"), QStringLiteral("(-1, 0)"),
+              QStringLiteral("(0, 20)"), QStringLiteral("(5, 0)"), QStringLiteral("(-0.2, -0.1)"),
+              QStringLiteral("the accumulators"), QStringLiteral("(4, 0)"),
+              QStringLiteral("a = F / m = (2, 0) m/s², α = τ / I = %1 rad/s²")
+                  .arg(ui::formatReadable(0.5 / world.body(crate).inertia, 3))})
+            QVERIFY2(text.contains(expected),
+                     qPrintable(expected + QStringLiteral("\nin\n") + text));
+        view.showNone();
+        QVERIFY(!plain(view.text()).contains(QStringLiteral("(4, 0)")));
     }
 };
 
