@@ -2438,6 +2438,81 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::ForcesView</name>
+    <message>
+        <source>(%1, %2)</source>
+        <translation>(%1; %2)</translation>
+    </message>
+    <message>
+        <source>weight m g</source>
+        <translation>tíha m g</translation>
+    </message>
+    <message>
+        <source>drag</source>
+        <translation>odpor prostředí</translation>
+    </message>
+    <message>
+        <source>spring %1</source>
+        <translation>pružina %1</translation>
+    </message>
+    <message>
+        <source>your pull</source>
+        <translation>váš tah</translation>
+    </message>
+    <message>
+        <source>gravitation</source>
+        <translation>gravitace</translation>
+    </message>
+    <message>
+        <source>force</source>
+        <translation>síla</translation>
+    </message>
+    <message>
+        <source>F [N]</source>
+        <translation>F [N]</translation>
+    </message>
+    <message>
+        <source>acts at r [m]</source>
+        <translation>působí v r [m]</translation>
+    </message>
+    <message>
+        <source>τ = r × F [N·m]</source>
+        <translation>τ = r × F [N·m]</translation>
+    </message>
+    <message>
+        <source>the accumulators</source>
+        <translation>střadače</translation>
+    </message>
+    <message>
+        <source>a = F / m = %1 m/s², α = τ / I = %2 rad/s²</source>
+        <translation>a = F / m = %1 m/s², α = τ / I = %2 rad/s²</translation>
+    </message>
+    <message>
+        <source>Forces on this body</source>
+        <translation>Síly na toto těleso</translation>
+    </message>
+    <message>
+        <source>Show the forces on this body</source>
+        <translation>Zobrazit síly na toto těleso</translation>
+    </message>
+    <message>
+        <source>Free-body diagram</source>
+        <translation>Silový diagram tělesa</translation>
+    </message>
+    <message>
+        <source>Forces and their sums</source>
+        <translation>Síly a jejich součty</translation>
+    </message>
+    <message>
+        <source>No force acts on this body.</source>
+        <translation>Na toto těleso nepůsobí žádná síla.</translation>
+    </message>
+    <message>
+        <source>Click a body to see the forces on it.</source>
+        <translation>Klepněte na těleso a uvidíte síly, které na ně působí.</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::ImpulseFormulaView</name>
     <message>
         <source>Impulse formula</source>
