@@ -66,16 +66,17 @@ protected:
         p.fillRect(rect(), palette().base());
         if (m_forces.terms.empty())
             return;
-        // Lengths: the body's reach and the points of action fill a third of the height;
-        // the largest force is drawn a third of the height long.
+        // Lengths: the body's reach and the points of action fill a fifth of the height and
+        // the largest force is drawn a quarter of it long, so that every arrow and its label
+        // stay inside.
         double reach = 1e-3, largest = std::max(m_forces.force.norm(), 1e-12);
         for (const physics::ForceTerm& t : m_forces.terms) {
             reach = std::max(reach, (t.point - m_body.position).norm());
             largest = std::max(largest, t.force.norm());
         }
         const QPointF centre = rect().center();
-        const double metre = height() / 3.0 / reach;
-        const double newton = height() / 3.0 / largest;
+        const double metre = height() / 5.0 / reach;
+        const double newton = height() / 4.0 / largest;
         const auto at = [&](const physics::Vec2& world) {
             const physics::Vec2 d = world - m_body.position;
             return centre + QPointF(d.x() * metre, -d.y() * metre);
