@@ -1034,6 +1034,45 @@
     </message>
 </context>
 <context>
+    <name>ImpulseFormula</name>
+    <message>
+        <source>(%1, %2)</source>
+        <translation>(%1; %2)</translation>
+    </message>
+    <message>
+        <source>The impulse of this collision, term by term (A: %1, B: %2)</source>
+        <translation>Impuls této srážky člen po členu (A: %1, B: %2)</translation>
+    </message>
+    <message>
+        <source>e = %1: the coefficient of restitution</source>
+        <translation>e = %1: koeficient restituce</translation>
+    </message>
+    <message>
+        <source>n = %1: the contact normal, from B to A</source>
+        <translation>n = %1: normála kontaktu, od B k&#xa0;A</translation>
+    </message>
+    <message>
+        <source>(v&lt;sub&gt;A&lt;/sub&gt; − v&lt;sub&gt;B&lt;/sub&gt;)·n = %1: how fast the contact points approach along n (negative: approaching)</source>
+        <translation>(v&lt;sub&gt;A&lt;/sub&gt; − v&lt;sub&gt;B&lt;/sub&gt;)·n = %1: jak rychle se body dotyku přibližují podél n (záporná: přibližují se)</translation>
+    </message>
+    <message>
+        <source>1/m&lt;sub&gt;A&lt;/sub&gt; = %1, 1/m&lt;sub&gt;B&lt;/sub&gt; = %2: the masses (0 for a body that does not move)</source>
+        <translation>1/m&lt;sub&gt;A&lt;/sub&gt; = %1, 1/m&lt;sub&gt;B&lt;/sub&gt; = %2: hmotnosti (0 pro těleso, které se nehýbe)</translation>
+    </message>
+    <message>
+        <source>r&lt;sub&gt;A&lt;/sub&gt; = %1: the lever arm of A, from its centre of mass to the contact point; (r&lt;sub&gt;A&lt;/sub&gt; × n)²/I&lt;sub&gt;A&lt;/sub&gt; = %2</source>
+        <translation>r&lt;sub&gt;A&lt;/sub&gt; = %1: rameno tělesa A, od jeho těžiště k&#xa0;bodu dotyku; (r&lt;sub&gt;A&lt;/sub&gt; × n)²/I&lt;sub&gt;A&lt;/sub&gt; = %2</translation>
+    </message>
+    <message>
+        <source>r&lt;sub&gt;B&lt;/sub&gt; = %1: the lever arm of B; (r&lt;sub&gt;B&lt;/sub&gt; × n)²/I&lt;sub&gt;B&lt;/sub&gt; = %2</source>
+        <translation>r&lt;sub&gt;B&lt;/sub&gt; = %1: rameno tělesa B; (r&lt;sub&gt;B&lt;/sub&gt; × n)²/I&lt;sub&gt;B&lt;/sub&gt; = %2</translation>
+    </message>
+    <message>
+        <source>j is shown once you have answered the lesson&apos;s question.</source>
+        <translation>j se ukáže, jakmile odpovíte na otázku lekce.</translation>
+    </message>
+</context>
+<context>
     <name>Judge</name>
     <message>
         <source>Run the simulation until t = %1 s first.</source>
@@ -1184,6 +1223,59 @@
     <message>
         <source>Unknown</source>
         <translation>Neznámý</translation>
+    </message>
+</context>
+<context>
+    <name>SatHandout</name>
+    <message>
+        <source>The test stops at axis %1 of the %2 it tried: a gap, so no collision.</source>
+        <translation>Test se zastaví u&#xa0;osy %1 z&#xa0;%2 vyzkoušených: mezera, tedy žádná srážka.</translation>
+    </message>
+    <message>
+        <source>All %1 axes overlap: the polygons intersect. Least penetration: axis %2, depth %3.</source>
+        <translation>Všech %1 os se překrývá: mnohoúhelníky se protínají. Nejmenší průnik: osa %2, hloubka %3.</translation>
+    </message>
+    <message>
+        <source>%1. normal of %2, edge %3
+n = (%4, %5)</source>
+        <translation>%1. normála tělesa %2, hrana %3
+n = (%4; %5)</translation>
+    </message>
+    <message>
+        <source>gap %1</source>
+        <translation>mezera %1</translation>
+    </message>
+    <message>
+        <source>overlap %1</source>
+        <translation>překryv %1</translation>
+    </message>
+    <message>
+        <source>separating axis</source>
+        <translation>oddělující osa</translation>
+    </message>
+    <message>
+        <source>least penetration</source>
+        <translation>nejmenší průnik</translation>
+    </message>
+    <message>
+        <source>A [%1, %2]</source>
+        <translation>A [%1; %2]</translation>
+    </message>
+    <message>
+        <source>B [%1, %2]</source>
+        <translation>B [%1; %2]</translation>
+    </message>
+    <message>
+        <source>Separating axis test: %1 (A) and %2 (B)</source>
+        <translation>Test oddělující osy: %1 (A) a&#xa0;%2 (B)</translation>
+    </message>
+    <message>
+        <source>Projections on each axis the test tried, in metres: A filled, B hatched.</source>
+        <translation>Průměty na každou osu, kterou test vyzkoušel, v&#xa0;metrech: A plné, B šrafované.</translation>
+    </message>
+    <message>
+        <source>cannot make the folder %1</source>
+        <translation>nelze vytvořit složku %1</translation>
     </message>
 </context>
 <context>
@@ -2418,6 +2510,100 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Copy</source>
         <translation>Kopírovat</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::ForcesView</name>
+    <message>
+        <source>(%1, %2)</source>
+        <translation>(%1; %2)</translation>
+    </message>
+    <message>
+        <source>weight m g</source>
+        <translation>tíha m g</translation>
+    </message>
+    <message>
+        <source>drag</source>
+        <translation>odpor prostředí</translation>
+    </message>
+    <message>
+        <source>spring %1</source>
+        <translation>pružina %1</translation>
+    </message>
+    <message>
+        <source>your pull</source>
+        <translation>váš tah</translation>
+    </message>
+    <message>
+        <source>gravitation</source>
+        <translation>gravitace</translation>
+    </message>
+    <message>
+        <source>force</source>
+        <translation>síla</translation>
+    </message>
+    <message>
+        <source>F [N]</source>
+        <translation>F [N]</translation>
+    </message>
+    <message>
+        <source>acts at r [m]</source>
+        <translation>působí v r [m]</translation>
+    </message>
+    <message>
+        <source>τ = r × F [N·m]</source>
+        <translation>τ = r × F [N·m]</translation>
+    </message>
+    <message>
+        <source>the accumulators</source>
+        <translation>střadače</translation>
+    </message>
+    <message>
+        <source>a = F / m = %1 m/s², α = τ / I = %2 rad/s²</source>
+        <translation>a = F / m = %1 m/s², α = τ / I = %2 rad/s²</translation>
+    </message>
+    <message>
+        <source>Forces on this body</source>
+        <translation>Síly na toto těleso</translation>
+    </message>
+    <message>
+        <source>Show the forces on this body</source>
+        <translation>Zobrazit síly na toto těleso</translation>
+    </message>
+    <message>
+        <source>Free-body diagram</source>
+        <translation>Silový diagram tělesa</translation>
+    </message>
+    <message>
+        <source>Forces and their sums</source>
+        <translation>Síly a jejich součty</translation>
+    </message>
+    <message>
+        <source>No force acts on this body.</source>
+        <translation>Na toto těleso nepůsobí žádná síla.</translation>
+    </message>
+    <message>
+        <source>Click a body to see the forces on it.</source>
+        <translation>Klepněte na těleso a uvidíte síly, které na ně působí.</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::ImpulseFormulaView</name>
+    <message>
+        <source>Impulse formula</source>
+        <translation>Vzorec pro impuls</translation>
+    </message>
+    <message>
+        <source>The numbers of the first collision appear here when it happens.</source>
+        <translation>Čísla první srážky se tu objeví, jakmile k&#xa0;ní dojde.</translation>
+    </message>
+    <message>
+        <source>Impulse formula with these numbers</source>
+        <translation>Vzorec pro impuls s&#xa0;těmito čísly</translation>
+    </message>
+    <message>
+        <source>Show the impulse formula</source>
+        <translation>Zobrazit vzorec pro impuls</translation>
     </message>
 </context>
 <context>

@@ -219,6 +219,13 @@ CollisionEvent Measurements::collisionEvent(const physics::World& world,
     e.predictedFull[1] = m_lastAngular[ib] + b.invInertia * rnB * jFull;
     e.predictedWithoutRotation[0] = m_lastAngular[ia] - a.invInertia * rnA * jLinear;
     e.predictedWithoutRotation[1] = m_lastAngular[ib] + b.invInertia * rnB * jLinear;
+    e.point = point;
+    e.normal = n;
+    e.lever[0] = rA;
+    e.lever[1] = rB;
+    e.approach = vn;
+    e.restitution = restitution;
+    e.impulse = jFull;
     return e;
 }
 

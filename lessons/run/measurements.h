@@ -39,6 +39,15 @@ struct CollisionEvent {
     /// (friction left out) [rad/s].
     double predictedFull[2] = {0, 0};
     double predictedWithoutRotation[2] = {0, 0};
+    /// The full formula's terms for that hit, as predictedFull used them, so that the window
+    /// can show j with the numbers substituted: the point the impulse acted at [m], the
+    /// normal from a to b, each centre of mass's lever arm to the point [m], the approach
+    /// (v_b − v_a)·n of the points before the hit (negative: approaching) [m/s], the
+    /// coefficient of restitution used (0 for a slow approach that rests) and j [N s].
+    physics::Vec2 point = physics::Vec2::Zero();
+    physics::Vec2 normal = physics::Vec2::Zero();
+    physics::Vec2 lever[2] = {physics::Vec2::Zero(), physics::Vec2::Zero()};
+    double approach = 0, restitution = 0, impulse = 0;
 };
 
 class Measurements {

@@ -203,10 +203,12 @@ void TestLesson::shippedLessonsInTeachingOrder()
     for (const lessons::LessonEntry& e : entries)
         names << QFileInfo(e.path).baseName();
     const QStringList expected{
-        QStringLiteral("energy_drift"),      QStringLiteral("restitution"),
-        QStringLiteral("separating_axis"),   QStringLiteral("stacks"),
-        QStringLiteral("stiff_springs"),     QStringLiteral("billiards_momentum"),
-        QStringLiteral("lab_vs_measurement")};
+        QStringLiteral("energy_drift"),       QStringLiteral("restitution"),
+        QStringLiteral("separating_axis"),    QStringLiteral("stacks"),
+        QStringLiteral("stiff_springs"),      QStringLiteral("billiards_momentum"),
+        QStringLiteral("lab_vs_measurement"), QStringLiteral("rotation_inertia"),
+        QStringLiteral("force_accumulators"), QStringLiteral("impulse_formula"),
+        QStringLiteral("tunnelling")};
     QCOMPARE(names, expected);
     // The menu line: number, title, description and time, each as the file gives it.
     const lessons::LessonEntry& first = entries.front();

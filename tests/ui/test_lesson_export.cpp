@@ -6,6 +6,7 @@
 #include "common/language.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_widget.h"
+#include "plots/sat_handout.h"
 #include "simulation/step_sampler.h"
 
 #include "format/lesson.h"
@@ -96,6 +97,11 @@ QString checkFile(const QString& path, const QString& caption)
         const QString first = caption.section(u'\n', 0, 0).toHtmlEscaped();
         if (!caption.isEmpty() && !QString::fromUtf8(bytes).contains(first.left(20)))
             return QStringLiteral("SVG without its caption");
+    } else if (path.endsWith(QStringLiteral("sat-projections.csv"))) {
+        if (!bytes.startsWith("axis,body,edge,n_x,n_y,A_min [m],"))
+            return QStringLiteral("SAT table without its header");
+        if (bytes.count('\n') < 2)
+            return QStringLiteral("SAT table without an axis");
     } else if (path.endsWith(QStringLiteral(".csv"))) {
         if (!bytes.startsWith("t [s],"))
             return QStringLiteral("CSV without its header");
@@ -141,6 +147,7 @@ private slots:
     void headlessSamplingKeepsTheWindowsInterval();
     void cliExportsEveryLesson_data();
     void cliExportsEveryLesson();
+    void satHandoutIsTheProjections();
     void cliLessonErrors();
     void cliExportsInCzech();
 };
@@ -316,28 +323,45 @@ void TestLessonExport::headlessSamplingKeepsTheWindowsInterval()
 void TestLessonExport::cliExportsEveryLesson_data()
 {
     QTest::addColumn<QString>("path");
+    QTest::addColumn<QString>("language");
     const QStringList files =
         QDir(kLessonsDir).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
-    QVERIFY(files.size() >= 5);
+    QVERIFY(files.size() >= 10);
     for (const QString& file : files)
-        QTest::newRow(qPrintable(file)) << QDir(kLessonsDir).filePath(file);
+        for (const QString& language : {QStringLiteral("en"), QStringLiteral("cs")})
+            QTest::newRow(qPrintable(file + u' ' + language))
+                << QDir(kLessonsDir).filePath(file) << language;
 }
 
 void TestLessonExport::cliExportsEveryLesson()
 {
+    // Every shipped lesson gives a handout in each language: at least one picture and one
+    // table, each file what it says it is.
     QFETCH(QString, path);
-    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
+    QFETCH(QString, language);
+    const lessons::LessonLoadResult loaded =
+        lessons::loadLessonFile(path, lessons::LessonLoadOptions{language});
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     QTemporaryDir dir;
-    const CliRun run =
-        runCli({QStringLiteral("lesson"), path, QStringLiteral("--export"), dir.path()});
+    const CliRun run = runCli({QStringLiteral("lesson"), path, QStringLiteral("--export"),
+                               dir.path(), QStringLiteral("--lang"), language});
     QVERIFY2(run.exitCode == 0, run.err.constData());
+    QVERIFY(ui::applyLanguage(language)); // the captions compared are the language's
 
-    int plots = 0;
+    int plots = 0, satSteps = 0;
     for (int i = 0; i < static_cast<int>(loaded.lesson.steps.size()); ++i) {
         const lessons::LessonStep& step = loaded.lesson.steps[static_cast<std::size_t>(i)];
         const QDir folder(QDir(dir.path()).filePath(ui::stepFolderName(loaded.lesson, i)));
-        QCOMPARE(folder.exists(), !step.plots.isEmpty());
+        QCOMPARE(folder.exists(), !step.plots.isEmpty() || step.sat.has_value());
+        if (step.sat) {
+            ++satSteps;
+            for (const char* name : {"sat-projections.png", "sat-projections.csv"}) {
+                const QString file = folder.filePath(QLatin1StringView(name));
+                const QString problem = checkFile(file, {});
+                QVERIFY2(problem.isEmpty(), qPrintable(file + QStringLiteral(": ") + problem));
+                QVERIFY(run.out.contains(("wrote " + file).toUtf8()));
+            }
+        }
         // The caption names the lesson, the step, the integrators and dt.
         const std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
         const QString caption = ui::stepCaption(loaded.lesson, i, worlds[0].def());
@@ -351,14 +375,69 @@ void TestLessonExport::cliExportsEveryLesson()
             }
         }
     }
-    // Nothing else was written: four files per plot, no temporary files left behind.
-    int files = 0;
+    QVERIFY(ui::applyLanguage(QStringLiteral("en")));
+    // Nothing else was written: four files per plot, two per SAT step, no temporary files.
+    int files = 0, pngs = 0, csvs = 0;
     QDirIterator it(dir.path(), QDir::Files | QDir::Hidden, QDirIterator::Subdirectories);
     while (it.hasNext()) {
-        it.next();
+        const QString file = it.next();
         ++files;
+        pngs += file.endsWith(QStringLiteral(".png")) ? 1 : 0;
+        csvs += file.endsWith(QStringLiteral(".csv")) ? 1 : 0;
     }
-    QCOMPARE(files, 4 * plots);
+    QCOMPARE(files, 4 * plots + 2 * satSteps);
+    QVERIFY2(pngs >= 1 && csvs >= 1,
+             qPrintable(QStringLiteral("%1 PNG, %2 CSV").arg(pngs).arg(csvs)));
+}
+
+void TestLessonExport::satHandoutIsTheProjections()
+{
+    // The SAT lesson's first step: the table's intervals are the polygons' corners projected
+    // here on each axis, and the test stops where the text says, at the sixth axis of seven,
+    // on a gap of 0.14 m between [−0.71, 0.71] m and [−1.41, −0.85] m.
+    const lessons::Lesson sat = lesson("separating_axis");
+    const lessons::LessonStep& step = sat.steps.at(0);
+    QTemporaryDir dir;
+    const ui::PlotFilesResult written = ui::exportSatHandout(sat, 0, dir.path());
+    QVERIFY2(written.ok, qPrintable(written.error));
+    QCOMPARE(written.files.size(), 2);
+    const std::vector<std::vector<double>> rows =
+        csvRows(QDir(dir.path()).filePath(QStringLiteral("sat-projections.csv")));
+    QCOMPARE(rows.size(), std::size_t{6});
+    const physics::World world = lessons::buildStepWorlds(step).front();
+    const auto corners = [&](const QString& id) {
+        const physics::Body& b = world.body(*step.scene.bodyIndex(id));
+        std::vector<physics::Vec2> out;
+        for (const physics::Vec2& v : b.shape.asPolygon()->vertices)
+            out.push_back(b.transform().apply(v));
+        return out;
+    };
+    const std::vector<physics::Vec2> a = corners(step.sat->first), b = corners(step.sat->second);
+    for (const std::vector<double>& row : rows) {
+        const physics::Vec2 n(row[3], row[4]);
+        for (const auto& [poly, column] : {std::pair{&a, 5}, std::pair{&b, 7}}) {
+            double lo = 1e300, hi = -1e300;
+            for (const physics::Vec2& v : *poly) {
+                lo = std::min(lo, v.dot(n));
+                hi = std::max(hi, v.dot(n));
+            }
+            RL_VERIFY_NEAR(row[static_cast<std::size_t>(column)], lo, 1e-12, 0);
+            RL_VERIFY_NEAR(row[static_cast<std::size_t>(column) + 1], hi, 1e-12, 0);
+        }
+        const double overlap = std::min(row[6] - row[7], row[8] - row[5]);
+        RL_VERIFY_NEAR(row[9], overlap, 1e-12, 0);
+        QCOMPARE(row[10], overlap < 0 ? 1.0 : 0.0);
+    }
+    const std::vector<double>& last = rows.back();
+    RL_VERIFY_NEAR(-last[9], 0.14, 0.005, 0);
+    RL_VERIFY_NEAR(last[5], -0.71, 0.005, 0);
+    RL_VERIFY_NEAR(last[8], -0.85, 0.005, 0);
+    QImage image;
+    QVERIFY(image.load(QDir(dir.path()).filePath(QStringLiteral("sat-projections.png"))));
+    QCOMPARE(image.size(), QSize(1600, 1000));
+    // A step without a pair writes nothing.
+    const ui::PlotFilesResult none = ui::exportSatHandout(lesson("restitution"), 0, dir.path());
+    QVERIFY(none.ok && none.files.isEmpty());
 }
 
 void TestLessonExport::cliLessonErrors()

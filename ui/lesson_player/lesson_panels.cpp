@@ -2,6 +2,7 @@
 #include "lesson_player/lesson_panels.h"
 
 #include "panels/fitting_table.h"
+#include "panels/impulse_formula_view.h"
 #include "simulation/simulation_controller.h"
 
 #include <QCoreApplication>
@@ -237,12 +238,13 @@ void BouncePanel::setHeightsHeld(bool held)
 
 CollisionPanel::CollisionPanel(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_title(new QLabel(this)),
-      m_table(new FittingTable(this))
+      m_table(new FittingTable(this)), m_formula(new ImpulseFormulaView(this))
 {
     auto* layout = new QVBoxLayout(this);
     m_title->setWordWrap(true);
     layout->addWidget(m_title);
     addTableAndExport(layout, m_table, this);
+    layout->insertWidget(layout->count() - 1, m_formula); // above the closing stretch
     connect(&m_controller, &SimulationController::worldChanged, this, &CollisionPanel::refresh);
     connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
         m_shownCount = -1;
@@ -271,6 +273,7 @@ void CollisionPanel::refresh()
         m_title->setText(tr("No collision yet: run the simulation."));
         m_table->setContent(wide, narrow);
         m_table->setCsv(csv, tr("collision"));
+        m_formula->showNone();
         return;
     }
     // The first collision is the one the lesson is about.
@@ -311,6 +314,7 @@ void CollisionPanel::refresh()
     narrow.titleRows.resize(narrow.rows.size());
     m_table->setContent(wide, narrow);
     m_table->setCsv(csv, tr("collision"));
+    m_formula->showHit(e, *bodies[0], *bodies[1], names[0], names[1], m_afterHeld);
 }
 
 void CollisionPanel::addPredictedSpins(CollisionRows& rows, const lessons::CollisionEvent& e, int k,

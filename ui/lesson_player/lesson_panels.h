@@ -23,6 +23,7 @@ namespace rigidlab::ui {
 struct CollisionRows;
 
 class SimulationController;
+class ImpulseFormulaView;
 
 class BouncePanel : public QWidget {
     Q_OBJECT
@@ -67,6 +68,7 @@ private:
     SimulationController& m_controller;
     QLabel* m_title;
     FittingTable* m_table;
+    ImpulseFormulaView* m_formula; ///< j with the hit's numbers, under the table
     int m_shownCount = -1;
     bool m_afterHeld = false;
 };

@@ -2,6 +2,7 @@
 #include "panels/inspector_panel.h"
 
 #include "common/number_format.h"
+#include "panels/forces_view.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
 
@@ -91,6 +92,8 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
             emit graphRequested(m_body);
     });
     form->addRow(graph);
+    m_forces = new ForcesView(this);
+    form->addRow(m_forces);
     for (QLabel* l :
          {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -147,6 +150,7 @@ void InspectorPanel::refresh()
         for (QLabel* l :
              {m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
             l->setText(QStringLiteral("–"));
+        m_forces->showNone();
         return;
     }
     const physics::Body& b = m_controller.world().body(m_body);
@@ -182,6 +186,7 @@ void InspectorPanel::refresh()
                                     : 0.0;
     m_energy->setText(
         formatQuantity(ke, QStringLiteral("J"), kEnergyDigits, m_controller.energyScale()));
+    m_forces->showBody(m_controller.world(), m_body);
     m_restitution->setValue(b.restitution);
     m_friction->setValue(b.friction);
 }

@@ -12,6 +12,7 @@ class QLabel;
 
 namespace rigidlab::ui {
 
+class ForcesView;
 class NumberField;
 class SimulationController;
 
@@ -57,6 +58,7 @@ private:
     QLabel* m_omega;
     QComboBox* m_angleUnit; ///< degrees, radians
     QLabel* m_energy;
+    ForcesView* m_forces; ///< the body's accumulators force by force, folded
     NumberField* m_restitution;
     NumberField* m_friction;
 };

@@ -4,6 +4,7 @@
 #include "common/display_names.h"
 #include "common/number_format.h"
 #include "plots/plot_widget.h"
+#include "plots/sat_handout.h"
 #include "simulation/step_sampler.h"
 
 #include "run/scene_run.h"
@@ -240,13 +241,22 @@ PlotFilesResult exportStepPlots(const lessons::Lesson& lesson, int step, const Q
                                 const ExportOptions& options)
 {
     const lessons::LessonStep& s = lesson.steps.at(static_cast<std::size_t>(step));
-    if (s.plots.isEmpty())
-        return {true, {}, {}};
-    // The plots are never shown; they only need a parent to be owned by.
-    auto holder = std::make_unique<QWidget>();
-    const StepPlots ran = runStepPlots(s, holder.get());
-    return exportPlots(ran.plots, QDir(dir).filePath(stepFolderName(lesson, step)),
-                       stepCaption(lesson, step, ran.settings), options);
+    const QString folder = QDir(dir).filePath(stepFolderName(lesson, step));
+    PlotFilesResult result{true, {}, {}};
+    if (!s.plots.isEmpty()) {
+        // The plots are never shown; they only need a parent to be owned by.
+        auto holder = std::make_unique<QWidget>();
+        const StepPlots ran = runStepPlots(s, holder.get());
+        result = exportPlots(ran.plots, folder, stepCaption(lesson, step, ran.settings), options);
+        if (!result.ok)
+            return result;
+    }
+    // A separating-axis step's handout: the projections on every tested axis.
+    const PlotFilesResult sat = exportSatHandout(lesson, step, folder, options);
+    result.files.append(sat.files);
+    result.ok = sat.ok;
+    result.error = sat.error;
+    return result;
 }
 
 PlotFilesResult exportLessonPlots(const lessons::Lesson& lesson, const QString& dir,

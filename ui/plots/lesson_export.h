@@ -71,11 +71,12 @@ struct StepPlots {
 StepPlots runStepPlots(const lessons::LessonStep& step, QWidget* holder);
 
 /// Headless: builds the step's worlds, runs them for its exportTime, and writes its plots
-/// into DIR/stepFolderName(). A step without plots writes nothing and succeeds.
+/// into DIR/stepFolderName(), and for a step with a `sat` pair its SAT handout
+/// (sat_handout.h). A step with neither writes nothing and succeeds.
 PlotFilesResult exportStepPlots(const lessons::Lesson& lesson, int step, const QString& dir,
                                 const ExportOptions& options = {});
 
-/// exportStepPlots() for every step that has plots.
+/// exportStepPlots() for every step that has plots or a `sat` pair.
 PlotFilesResult exportLessonPlots(const lessons::Lesson& lesson, const QString& dir,
                                   const ExportOptions& options = {});
 
