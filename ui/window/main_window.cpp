@@ -24,6 +24,7 @@
 #include "window/status_line.h"
 #include "window/window_actions.h"
 #include "window/window_documents.h"
+#include "window/window_keyboard.h"
 #include "window/window_layout.h"
 #include "window/window_names.h"
 #include "window/window_plots.h"
@@ -75,6 +76,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_session = new LessonSession({*this, *m_player, *m_controller, *m_document, *m_documents,
                                    *m_editTools, *m_layout, *m_actions, *m_view, *m_controls,
                                    *m_sat, *m_bounces, *m_collision, m_plots});
+    m_keyboard = new WindowKeyboard({*this, *m_view, *m_player, *m_inspector, *m_layout});
     buildMenus();
     new DivergenceBanner(*m_controller, m_view);
     wirePanels();
@@ -82,6 +84,7 @@ MainWindow::MainWindow(QWidget* parent)
     for (PlotWidget* plot : m_plots)
         followController(*plot, *m_controller);
     restoreSettings();
+    m_keyboard->applySavedChoice();
     updateStatus();
 }
 
