@@ -13,6 +13,17 @@
     </message>
 </context>
 <context>
+    <name>AccessibleNames</name>
+    <message>
+        <source>Scroll %1</source>
+        <translation>Posouvat panel %1</translation>
+    </message>
+    <message>
+        <source>Scroll %1 sideways</source>
+        <translation>Posouvat panel %1 do stran</translation>
+    </message>
+</context>
+<context>
     <name>CommandLine</name>
     <message>
         <source>RigidLab %1: a lab for 2D rigid-body mechanics.</source>
@@ -300,6 +311,30 @@
     <message>
         <source>Hand in the lesson&apos;s worksheet (PDF)</source>
         <translation>Odevzdat pracovní list lekce (PDF)</translation>
+    </message>
+    <message>
+        <source>The lesson&apos;s next step</source>
+        <translation>Další krok lekce</translation>
+    </message>
+    <message>
+        <source>The lesson&apos;s previous step</source>
+        <translation>Předchozí krok lekce</translation>
+    </message>
+    <message>
+        <source>Put the keyboard focus on the scene</source>
+        <translation>Přesunout fokus klávesnice na scénu</translation>
+    </message>
+    <message>
+        <source>Select the next body (in the scene: arrows move it, Shift+arrows change its velocity, Enter shows its numbers, Esc lets it go)</source>
+        <translation>Vybrat další těleso (ve scéně: šipky ho posunou, Shift+šipky změní jeho rychlost, Enter ukáže jeho hodnoty, Esc ho pustí)</translation>
+    </message>
+    <message>
+        <source>Select the previous body</source>
+        <translation>Vybrat předchozí těleso</translation>
+    </message>
+    <message>
+        <source>Single-key shortcuts (letters, Space, arrows) on or off</source>
+        <translation>Jednoklávesové zkratky (písmena, mezerník, šipky) zapnout nebo vypnout</translation>
     </message>
 </context>
 <context>
@@ -1138,6 +1173,37 @@
     </message>
 </context>
 <context>
+    <name>PlotWords</name>
+    <message>
+        <source>%1, from %2 to %3</source>
+        <translation>%1, od %2 do %3</translation>
+    </message>
+    <message>
+        <source>%1: no values yet</source>
+        <translation>%1: zatím bez hodnot</translation>
+    </message>
+    <message>
+        <source>%1: now %2, least %3, greatest %4</source>
+        <translation>%1: nyní %2, nejméně %3, nejvíce %4</translation>
+    </message>
+    <message>
+        <source>Plot %1.</source>
+        <translation>Graf %1.</translation>
+    </message>
+    <message>
+        <source>Horizontal axis: %1.</source>
+        <translation>Vodorovná osa: %1.</translation>
+    </message>
+    <message>
+        <source>Vertical axis: %1.</source>
+        <translation>Svislá osa: %1.</translation>
+    </message>
+    <message>
+        <source>Right axis: %1.</source>
+        <translation>Pravá osa: %1.</translation>
+    </message>
+</context>
+<context>
     <name>QAbstractFileIconProvider</name>
     <message>
         <source>Folder</source>
@@ -1370,6 +1436,113 @@
     <message>
         <source>kinematic</source>
         <translation>kinematické</translation>
+    </message>
+</context>
+<context>
+    <name>SceneWords</name>
+    <message>
+        <source>(%1; %2) %3</source>
+        <translation>(%1; %2)&#xa0;%3</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scéna</translation>
+    </message>
+    <message>
+        <source>Scene: %1</source>
+        <translation>Scéna: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>On stage: %n moving body(ies)</source>
+        <translation>
+            <numerusform>Ve scéně: %n pohyblivé těleso</numerusform>
+            <numerusform>Ve scéně: %n pohyblivá tělesa</numerusform>
+            <numerusform>Ve scéně: %n pohyblivých těles</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n fixed body(ies).</source>
+        <translation>
+            <numerusform>, %n pevné těleso.</numerusform>
+            <numerusform>, %n pevná tělesa.</numerusform>
+            <numerusform>, %n pevných těles.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The simulation stopped at %1: it diverged.</source>
+        <translation>Simulace se zastavila v&#xa0;čase %1: výpočet se rozběhl.</translation>
+    </message>
+    <message>
+        <source>Running, time %1.</source>
+        <translation>Běží, čas %1.</translation>
+    </message>
+    <message>
+        <source>Paused at time %1.</source>
+        <translation>Pozastaveno v&#xa0;čase %1.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pair(s) of bodies touch.</source>
+        <translation>
+            <numerusform>Dotýká se %n dvojice těles.</numerusform>
+            <numerusform>Dotýkají se %n dvojice těles.</numerusform>
+            <numerusform>Dotýká se %n dvojic těles.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Selected: %1.</source>
+        <translation>Vybráno: %1.</translation>
+    </message>
+    <message>
+        <source>%1 runs or pauses; %2 and %3 select a body; arrows move it, Shift+arrows change its velocity, Enter shows its numbers.</source>
+        <translation>%1 spustí nebo pozastaví; %2 a&#xa0;%3 vyberou těleso; šipky ho posunou, Shift+šipky změní jeho rychlost, Enter ukáže jeho hodnoty.</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>circle, radius %1</source>
+        <translation>kruh, poloměr %1</translation>
+    </message>
+    <message>
+        <source>box %1 × %2</source>
+        <translation>obdélník %1 × %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>polygon, %n corner(s)</source>
+        <translation>
+            <numerusform>mnohoúhelník, %n vrchol</numerusform>
+            <numerusform>mnohoúhelník, %n vrcholy</numerusform>
+            <numerusform>mnohoúhelník, %n vrcholů</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>mass %1</source>
+        <translation>hmotnost %1</translation>
+    </message>
+    <message>
+        <source>mass infinite</source>
+        <translation>hmotnost nekonečná</translation>
+    </message>
+    <message>
+        <source>position %1</source>
+        <translation>poloha %1</translation>
+    </message>
+    <message>
+        <source>velocity %1, speed %2</source>
+        <translation>rychlost %1, velikost rychlosti %2</translation>
+    </message>
+    <message>
+        <source>touches %1</source>
+        <translation>dotýká se: %1</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Shrnutí</translation>
+    </message>
+    <message>
+        <source>What happened</source>
+        <translation>Co se stalo</translation>
     </message>
 </context>
 <context>
@@ -1800,6 +1973,10 @@
         <source>bounces</source>
         <translation>odrazy</translation>
     </message>
+    <message>
+        <source>Bounce heights</source>
+        <translation>Výšky odskoků</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::CollisionPanel</name>
@@ -1865,6 +2042,10 @@ y %2</translation>
         <source>(%1, %2)</source>
         <comment>a vector&apos;s x and y</comment>
         <translation>(%1; %2)</translation>
+    </message>
+    <message>
+        <source>Velocities before and after</source>
+        <translation>Rychlosti před a&#xa0;po</translation>
     </message>
 </context>
 <context>
@@ -2344,6 +2525,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Copy</source>
         <translation>Kopírovat</translation>
     </message>
+    <message>
+        <source>empty</source>
+        <translation>prázdné</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::InspectorPanel</name>
@@ -2651,6 +2836,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Cannot write the worksheet</source>
         <translation>Pracovní list nelze zapsat</translation>
+    </message>
+    <message>
+        <source>Step text</source>
+        <translation>Text kroku</translation>
+    </message>
+    <message>
+        <source>your answer, in %1</source>
+        <translation>vaše odpověď, v&#xa0;jednotkách %1</translation>
     </message>
 </context>
 <context>
@@ -3357,6 +3550,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Copy data shown</source>
         <translation>Kopírovat zobrazená data</translation>
     </message>
+    <message>
+        <source>Describe this plot…</source>
+        <translation>Popsat tento graf…</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::SatPanel</name>
@@ -3499,6 +3696,25 @@ B&#xa0;%3 … %4</translation>
         <source>Least overlap on axis %1: normal (%2, %3) from A to B, depth %4 m, %5 contact point(s) from clipping.</source>
         <translation>Nejmenší překryv na ose %1: normála (%2; %3) od A&#xa0;k&#xa0;B, hloubka %4&#xa0;m, kontaktní body z&#xa0;ořezání: %5.</translation>
     </message>
+    <message>
+        <source>Axes tested</source>
+        <translation>Testované osy</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::SceneNarrator</name>
+    <message>
+        <source>%1 and %2 touch.</source>
+        <translation>%1 a&#xa0;%2 se dotýkají.</translation>
+    </message>
+    <message>
+        <source>Everything has come to rest.</source>
+        <translation>Všechno se zastavilo.</translation>
+    </message>
+    <message>
+        <source>The simulation diverged and stopped.</source>
+        <translation>Výpočet se rozběhl a&#xa0;simulace se zastavila.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::SceneProperties</name>
@@ -3580,6 +3796,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>m = %1 kg</source>
         <translation>m = %1&#xa0;kg</translation>
+    </message>
+    <message>
+        <source>v = (%1; %2) m/s</source>
+        <translation>v = (%1; %2)&#xa0;m/s</translation>
     </message>
 </context>
 <context>
@@ -3784,6 +4004,37 @@ B&#xa0;%3 … %4</translation>
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::WindowKeyboard</name>
+    <message>
+        <source>Next lesson step</source>
+        <translation>Další krok lekce</translation>
+    </message>
+    <message>
+        <source>Previous lesson step</source>
+        <translation>Předchozí krok lekce</translation>
+    </message>
+    <message>
+        <source>Focus the scene</source>
+        <translation>Fokus na scénu</translation>
+    </message>
+    <message>
+        <source>Select next body</source>
+        <translation>Vybrat další těleso</translation>
+    </message>
+    <message>
+        <source>Select previous body</source>
+        <translation>Vybrat předchozí těleso</translation>
+    </message>
+    <message>
+        <source>Single-key shortcuts</source>
+        <translation>Jednoklávesové zkratky</translation>
+    </message>
+    <message>
+        <source>Letters, Space and arrows alone act as shortcuts; off, only keys with Ctrl, Alt or F-keys do</source>
+        <translation>Písmena, mezerník a&#xa0;šipky samy fungují jako zkratky; vypnuto fungují jen klávesy s&#xa0;Ctrl, Alt nebo klávesy F</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::WindowLayout</name>
     <message>
         <source>Controls</source>
@@ -3899,6 +4150,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>%1 stopped</source>
         <translation>%1: zastaveno</translation>
+    </message>
+    <message>
+        <source>Scene drawing</source>
+        <translation>Kresba scény</translation>
     </message>
 </context>
 <context>
