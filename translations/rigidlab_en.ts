@@ -12,6 +12,37 @@
     </message>
 </context>
 <context>
+    <name>SceneWords</name>
+    <message numerus="yes">
+        <source>On stage: %n moving body(ies)</source>
+        <translation>
+            <numerusform>On stage: %n moving body</numerusform>
+            <numerusform>On stage: %n moving bodies</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>, %n fixed body(ies).</source>
+        <translation>
+            <numerusform>, %n fixed body.</numerusform>
+            <numerusform>, %n fixed bodies.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n pair(s) of bodies touch.</source>
+        <translation>
+            <numerusform>%n pair of bodies touches.</numerusform>
+            <numerusform>%n pairs of bodies touch.</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>polygon, %n corner(s)</source>
+        <translation>
+            <numerusform>polygon, %n corner</numerusform>
+            <numerusform>polygon, %n corners</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::EditTools</name>
     <message numerus="yes">
         <source>%n point(s); double-click or Enter closes the polygon, Escape drops it</source>

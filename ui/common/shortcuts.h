@@ -34,6 +34,21 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "One step back in time")},
     ControlInfo{"reset", "R", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Back to the start of the scene")},
+    ControlInfo{"nextStep", "Alt+Right; Ctrl+PgDown", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "The lesson's next step")},
+    ControlInfo{"previousStep", "Alt+Left; Ctrl+PgUp", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "The lesson's previous step")},
+    ControlInfo{"focusScene", "F6", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Put the keyboard focus on the scene")},
+    ControlInfo{"selectNextBody", "]", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Select the next body (in the scene: arrows move "
+                                              "it, Shift+arrows change its velocity, Enter shows "
+                                              "its numbers, Esc lets it go)")},
+    ControlInfo{"selectPreviousBody", "[", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Select the previous body")},
+    ControlInfo{"singleKeys", "Ctrl+Shift+K", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Single-key shortcuts (letters, Space, arrows) on "
+                                              "or off")},
     ControlInfo{"fit", "F", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Zoom to show every body")},
     ControlInfo{"turnLeft", "Q", nullptr,

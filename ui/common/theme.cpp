@@ -75,6 +75,26 @@ QColor satOverlap()
     return QColor(0x8e, 0x24, 0xaa); // purple, 6.8:1 on the background
 }
 
+QColor focusRing()
+{
+    return g_presentation ? QColor(Qt::black) : QColor(0x0b, 0x3d, 0x91); // 10:1 on #efefef
+}
+
+QColor focusHalo()
+{
+    return QColor(Qt::white);
+}
+
+QColor placeholderText()
+{
+    return QColor(0x5f, 0x5f, 0x5f); // 6.4:1 on white
+}
+
+QColor plotBackground()
+{
+    return QColor(Qt::white);
+}
+
 QColor alertBackground()
 {
     return QColor(0xa3, 0x1f, 0x14); // a darker red than #c0392b, which gives white only 5.4:1

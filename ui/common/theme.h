@@ -36,6 +36,21 @@ QColor satAxis();
 QColor satGap();
 QColor satOverlap();
 
+/// Lines and overlays need at least this contrast against what lies behind them (WCAG 1.4.11,
+/// non-text contrast): plot curves, arrows, the focus ring.
+inline constexpr double kMinOverlayContrast = 3.0;
+
+/// The keyboard focus ring (common/focus_ring.h): dark, at least kMinOverlayContrast against
+/// the window's light backgrounds, with a light halo that gives it the same against anything
+/// dark beneath.
+QColor focusRing();
+QColor focusHalo();
+/// The hint in an empty field ("your answer"): Qt's is the text at half opacity, 4:1 on
+/// white; this grey keeps kMinTextContrast.
+QColor placeholderText();
+/// The background the plots are drawn on (window, presentation and exports alike).
+QColor plotBackground();
+
 /// The divergence banner: its opaque background and its text.
 QColor alertBackground();
 QColor alertText();

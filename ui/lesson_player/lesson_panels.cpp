@@ -120,6 +120,7 @@ struct CollisionRows {
 BouncePanel::BouncePanel(SimulationController& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_table(new FittingTable(this))
 {
+    m_table->setAccessibleName(tr("Bounce heights"));
     auto* layout = new QVBoxLayout(this);
     auto* note = new QLabel(tr("Heights of the centre above where it touched down. With a "
                                "coefficient of restitution e, each bounce should reach e² "
@@ -240,6 +241,7 @@ CollisionPanel::CollisionPanel(SimulationController& controller, QWidget* parent
     : QWidget(parent), m_controller(controller), m_title(new QLabel(this)),
       m_table(new FittingTable(this)), m_formula(new ImpulseFormulaView(this))
 {
+    m_table->setAccessibleName(tr("Velocities before and after"));
     auto* layout = new QVBoxLayout(this);
     m_title->setWordWrap(true);
     layout->addWidget(m_title);

@@ -56,6 +56,10 @@ void LessonPlayer::buildQuestions()
         // No validator: it would drop the separator the locale does not use ("0.0156" typed
         // in Czech became 00156). What was typed is read when it is checked, point or comma.
         edit->setPlaceholderText(tr("your answer"));
+        // A screen reader names the field by its question and says the unit it is in.
+        prompt->setBuddy(edit);
+        if (!q.unit.isEmpty())
+            edit->setAccessibleDescription(tr("your answer, in %1").arg(q.unit));
         row->addWidget(edit, 1);
         row->addWidget(new QLabel(q.unit, box));
         auto* check = new QPushButton(tr("Check"), box);

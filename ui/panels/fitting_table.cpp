@@ -268,6 +268,8 @@ void FittingTable::fill(const TableText& text)
             }
             if (item->text() != cell)
                 item->setText(cell);
+            // A screen reader says "empty" rather than nothing for a cell with no value.
+            item->setData(Qt::AccessibleTextRole, cell.isEmpty() ? tr("empty") : QVariant());
             QFont f = font();
             f.setBold(title);
             item->setFont(f);

@@ -42,6 +42,7 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
       m_prev(new QPushButton(tr("◀ Previous"), this)), m_next(new QPushButton(tr("Next ▶"), this)),
       m_all_button(new QPushButton(tr("All"), this))
 {
+    m_table->setAccessibleName(tr("Axes tested"));
     m_overlay->setOnDestroyed([this] { m_overlay = nullptr; });
     connect(&m_controller, &QObject::destroyed, this, [this] {
         if (m_overlay)

@@ -66,6 +66,45 @@ void ColumnGraph::draw(QCPPainter* painter)
     for (const QRectF& r : spans)
         painter->fillRect(r, pen.color());
     painter->restore();
+    drawMarkers(painter);
+}
+
+void ColumnGraph::drawMarkers(QCPPainter* painter) const
+{
+    if (scatterStyle().isNone() || m_columns.empty())
+        return;
+    const QCPAxis* keys = keyAxis();
+    const QCPAxis* values = valueAxis();
+    // Seven phases a spacing apart: the offsets of series 0..6 do not coincide.
+    double next = keys->coordToPixel(m_columns.front().t) +
+                  std::fmod(m_markerPhase * kMarkerSpacingPx / 7.0, kMarkerSpacingPx);
+    QPen markerPen = pen();
+    markerPen.setStyle(Qt::SolidLine);
+    scatterStyle().applyTo(painter, markerPen);
+    for (const Column& c : m_columns) {
+        if (std::isnan(c.low))
+            continue;
+        const double x = keys->coordToPixel(c.t);
+        if (x < next)
+            continue;
+        scatterStyle().drawShape(painter, x, values->coordToPixel(c.last));
+        next = x + kMarkerSpacingPx;
+    }
+}
+
+QCPScatterStyle::ScatterShape plotMarker(int index)
+{
+    // Shapes that stay apart in greyscale and at 7 px; open ones, so the curve shows through.
+    static const QCPScatterStyle::ScatterShape shapes[] = {QCPScatterStyle::ssCircle,
+                                                           QCPScatterStyle::ssSquare,
+                                                           QCPScatterStyle::ssTriangle,
+                                                           QCPScatterStyle::ssDiamond,
+                                                           QCPScatterStyle::ssTriangleInverted,
+                                                           QCPScatterStyle::ssCross,
+                                                           QCPScatterStyle::ssPlus,
+                                                           QCPScatterStyle::ssStar};
+    const int n = static_cast<int>(std::size(shapes));
+    return shapes[((index % n) + n) % n];
 }
 
 } // namespace rigidlab::ui

@@ -27,6 +27,10 @@
 
 namespace rigidlab::ui {
 
+/// The marker of a plot's index-th series (circle, square, triangle, ...; it cycles after 8):
+/// with the line style, what tells the series apart in greyscale and for colour-blind eyes.
+QCPScatterStyle::ScatterShape plotMarker(int index);
+
 class ColumnGraph : public QCPGraph {
 public:
     /// One pixel column of a dense curve [s, unit of the value]. A NaN `low` is a gap.
@@ -42,6 +46,12 @@ public:
 
     ColumnGraph(QCPAxis* keyAxis, QCPAxis* valueAxis) : QCPGraph(keyAxis, valueAxis) {}
 
+    /// Markers on a dense curve are this far apart [px]; each series starts them at its own
+    /// offset (setMarkerPhase), so that curves lying on one another show every marker.
+    static constexpr double kMarkerSpacingPx = 56.0;
+    /// The index of the series among its plot's, for the offset of its markers.
+    void setMarkerPhase(int index) { m_markerPhase = index; }
+
     /// Draws these columns instead of the data; empty: the data, as a QCPGraph does.
     void setColumns(std::vector<Column> columns) { m_columns = std::move(columns); }
     const std::vector<Column>& columns() const { return m_columns; }
@@ -50,7 +60,11 @@ protected:
     void draw(QCPPainter* painter) override;
 
 private:
+    /// The markers along the columns (the scatter style's shape), one every kMarkerSpacingPx.
+    void drawMarkers(QCPPainter* painter) const;
+
     std::vector<Column> m_columns;
+    int m_markerPhase = 0;
 };
 
 } // namespace rigidlab::ui

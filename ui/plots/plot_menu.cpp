@@ -6,6 +6,7 @@
 #include "common/export_folder.h"
 #include "common/language.h"
 #include "common/modal_scope.h"
+#include "plots/plot_accessible.h"
 
 #include "format/scene_schema.h"
 
@@ -45,6 +46,14 @@ void PlotWidget::showContextMenu(const QPoint& pos)
     }
     QAction* copy = menu->addAction(tr("Copy data shown"), this, &PlotWidget::copyData);
     copy->setShortcut(QKeySequence::Copy); // shown in the menu; the plot's own shortcut acts
+    menu->addAction(tr("Describe this plot…"), this, [this] {
+        drain();
+        QMessageBox box(QMessageBox::Information, title(), describePlot(*this), QMessageBox::Ok,
+                        this);
+        box.setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
+        const ModalScope modal;
+        box.exec();
+    });
     menu->addSeparator();
 
     QAction* followAction = menu->addAction(tr("Follow"));
@@ -139,8 +148,13 @@ void PlotWidget::installMenuAndCopy()
 {
     m_plot->setContextMenuPolicy(Qt::CustomContextMenu);
     connect(m_plot, &QWidget::customContextMenuRequested, this, &PlotWidget::showContextMenu);
-    // Ctrl+C while the plot has the focus (a click gives it) copies the data shown.
-    setFocusPolicy(Qt::ClickFocus);
+    // Ctrl+C while the plot has the focus (a click or Tab gives it) copies the data shown;
+    // the menu key or Shift+F10 opens the menu from the keyboard.
+    setFocusPolicy(Qt::StrongFocus);
+    setContextMenuPolicy(Qt::CustomContextMenu);
+    connect(this, &QWidget::customContextMenuRequested, this,
+            [this](const QPoint& pos) { showContextMenu(m_plot->mapFrom(this, pos)); });
+    installPlotAccessible();
     auto* copy = new QShortcut(QKeySequence::Copy, this, this, &PlotWidget::copyData);
     copy->setContext(Qt::WidgetWithChildrenShortcut);
 }

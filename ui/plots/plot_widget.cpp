@@ -32,6 +32,8 @@ constexpr double kAxisLabelPt = 12;
 constexpr double kTickLabelPt = 11;
 constexpr double kLegendPt = 11;
 constexpr double kLineWidthPx = 2.0;
+/// The series' markers [px] (plotMarker).
+constexpr double kMarkerPx = 7.0;
 /// Presentation mode (theme.h): axis labels readable from the back of a room on a 1024×768
 /// projector, ticks and legend a little smaller.
 constexpr double kPresentationAxisLabelPt = 18;
@@ -247,9 +249,13 @@ int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::S
                          YAxis axis)
 {
     auto* graph = new ColumnGraph(m_plot->xAxis, axisFor(axis)); // owned by m_plot
-    // Dashed means "read me on the right axis", in the legend as on the curve.
+    // Dashed means "read me on the right axis", in the legend as on the curve; else each
+    // series has a style of its own, and a marker: told apart without colour.
+    const int index = seriesCount();
     graph->setPen(QPen(color, theme::lineWidth(kLineWidthPx),
-                       axis == YAxis::Right ? Qt::DashLine : Qt::SolidLine));
+                       axis == YAxis::Right ? Qt::DashLine : plotPenStyleFor(index)));
+    graph->setScatterStyle(QCPScatterStyle(plotMarker(index), color, kMarkerPx));
+    graph->setMarkerPhase(index);
     graph->setName(axis == YAxis::Right ? tr("%1 (right axis)").arg(name) : name);
     if (axis == YAxis::Right) {
         m_plot->yAxis2->setVisible(true);

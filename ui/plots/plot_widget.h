@@ -339,6 +339,9 @@ QColor plotColor(int index);
 /// A pen style for the index-th of curves that may coincide: solid, dashed, dotted, ... (it
 /// cycles after 5), so that a curve drawn over another leaves it visible.
 Qt::PenStyle plotPenStyle(int index);
+/// The line style of a plot's index-th series on the left axis: solid, dash-dot,
+/// dash-dot-dot, dotted (dashed is the right axis').
+Qt::PenStyle plotPenStyleFor(int index);
 /// How much wider than a plain curve the index-th of `count` curves that may coincide is
 /// drawn: the first widest, the last plain, so that each shows around the ones drawn over it.
 double plotPenWidthFactor(int index, int count);

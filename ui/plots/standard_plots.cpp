@@ -14,15 +14,19 @@ namespace rigidlab::ui {
 
 QColor plotColor(int index)
 {
-    // Okabe & Ito's palette: told apart with any colour vision, and on a washed-out projector.
+    // Okabe & Ito's hues, told apart with any colour vision, each dark enough for at least
+    // 3:1 against the plots' white (WCAG 1.4.11): their orange (#E69F00, 2.2:1), sky blue
+    // (#56B4E9, 2.3:1) and reddish purple (#CC79A7, 3.06:1, too close on a projector) are
+    // darkened. Colour is never alone: each series also has its own line style and marker
+    // (plotPenStyleFor, plotMarker).
     static const QColor palette[] = {
-        {0x00, 0x72, 0xB2}, // blue
-        {0xD5, 0x5E, 0x00}, // vermilion
-        {0x00, 0x9E, 0x73}, // bluish green
-        {0xCC, 0x79, 0xA7}, // reddish purple
-        {0xE6, 0x9F, 0x00}, // orange
-        {0x56, 0xB4, 0xE9}, // sky blue
-        {0x20, 0x20, 0x20}, // ink
+        {0x00, 0x72, 0xB2}, // blue, 5.2:1
+        {0xD5, 0x5E, 0x00}, // vermilion, 3.9:1
+        {0x00, 0x9E, 0x73}, // bluish green, 3.4:1
+        {0xB8, 0x58, 0x9A}, // reddish purple, 4.3:1
+        {0xAD, 0x6E, 0x00}, // dark orange, 4.2:1
+        {0x2C, 0x8A, 0xC2}, // darker sky blue, 3.8:1
+        {0x20, 0x20, 0x20}, // ink, 16:1
     };
     const int n = static_cast<int>(std::size(palette));
     return palette[((index % n) + n) % n];
@@ -33,6 +37,16 @@ Qt::PenStyle plotPenStyle(int index)
     // Solid first, then dashes that leave gaps for the curves drawn before to show through.
     static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine, Qt::DashDotLine,
                                           Qt::DashDotDotLine};
+    const int n = static_cast<int>(std::size(styles));
+    return styles[((index % n) + n) % n];
+}
+
+Qt::PenStyle plotPenStyleFor(int index)
+{
+    // Dashed is kept for the right axis (and the dotted ghost is faint): the left-axis series
+    // go solid, dash-dot, dash-dot-dot, then dotted.
+    static const Qt::PenStyle styles[] = {Qt::SolidLine, Qt::DashDotLine, Qt::DashDotDotLine,
+                                          Qt::DotLine};
     const int n = static_cast<int>(std::size(styles));
     return styles[((index % n) + n) % n];
 }

@@ -24,6 +24,8 @@ struct SettingEdit {
         BodyMaterial, ///< body; value: e, value2: μ
         BodyMass,     ///< body; value: mass [kg]
         BodyRotation, ///< body; value: the turn about the centre of mass [rad]
+        BodyMove,     ///< body; value, value2: how far it is moved, x and y [m]
+        BodyPush,     ///< body; value, value2: the velocity added, x and y [m/s]
     };
     long long step = 0; ///< the world's step count when the change was made
     Kind kind = Kind::Dt;

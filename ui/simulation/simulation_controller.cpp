@@ -295,6 +295,10 @@ void SimulationController::applyEdit(const SettingEdit& edit)
         return setBodyMass(edit.body, edit.value);
     case Kind::BodyRotation:
         return rotateBody(edit.body, edit.value);
+    case Kind::BodyMove:
+        return moveBody(edit.body, edit.value, edit.value2);
+    case Kind::BodyPush:
+        return pushBody(edit.body, edit.value, edit.value2);
     }
 }
 
@@ -407,6 +411,34 @@ void SimulationController::rotateBody(physics::BodyId id, double radians)
     logEdit({0, SettingEdit::Kind::BodyRotation, id, radians, 0.0, 0});
     m_world.setBodyAngle(id, angle); // about the centre of mass; wakes the body
     afterEdit(QString());
+}
+
+void SimulationController::moveBody(physics::BodyId id, double dx, double dy)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
+        !m_world.body(id).moves() || !std::isfinite(dx) || !std::isfinite(dy))
+        return;
+    const physics::Body& b = m_world.body(id);
+    const physics::Vec2 origin = b.origin() + physics::Vec2(dx, dy);
+    if (!physics::limits::kCoordinate.contains(origin.x()) ||
+        !physics::limits::kCoordinate.contains(origin.y()))
+        return;
+    logEdit({0, SettingEdit::Kind::BodyMove, id, dx, dy, 0});
+    m_world.setBodyOrigin(id, origin, b.angle);
+    afterEdit(QString());
+}
+
+void SimulationController::pushBody(physics::BodyId id, double dvx, double dvy)
+{
+    if (id < 0 || id >= static_cast<physics::BodyId>(m_world.bodies().size()) ||
+        !m_world.body(id).isDynamic() || !std::isfinite(dvx) || !std::isfinite(dvy))
+        return;
+    const physics::Vec2 v = m_world.originVelocity(id) + physics::Vec2(dvx, dvy);
+    if (!physics::limits::kVelocity.contains(v.x()) || !physics::limits::kVelocity.contains(v.y()))
+        return;
+    logEdit({0, SettingEdit::Kind::BodyPush, id, dvx, dvy, 0});
+    m_world.setBodyVelocity(id, v, m_world.body(id).angularVelocity);
+    afterEdit(tr("v = (%1; %2) m/s").arg(markNumber(v.x()), markNumber(v.y())));
 }
 
 } // namespace rigidlab::ui

@@ -153,6 +153,12 @@ public slots:
     /// Turns a body about its centre of mass by `radians` (a teaching aid: it is moved, not
     /// pushed, so the future branches from here).
     void rotateBody(physics::BodyId id, double radians);
+    /// Moves a moving body by (dx, dy) [m] without turning it, and gives it a velocity
+    /// changed by (dvx, dvy) [m/s] (the scene's keyboard: arrows and Shift+arrows). Like
+    /// rotateBody, a teaching aid the run's future branches from. Non-finite values or a
+    /// static body change nothing.
+    void moveBody(physics::BodyId id, double dx, double dy);
+    void pushBody(physics::BodyId id, double dvx, double dvy);
     /// Advances the clock by the wall time since the last frame (the frame timer calls it).
     void advanceFrame();
     /// Advances the clock as a frame would after `wallSeconds` of wall time (advanceFrame

@@ -7,6 +7,8 @@
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"
+#include "view/scene_narrator.h"
+#include "view/world_view_accessible.h"
 
 #include <QMouseEvent>
 #include <QScrollBar>
@@ -56,6 +58,9 @@ WorldView::WorldView(SimulationController& controller, QWidget* parent)
     setMinimumSize(320, 240);
     setTransform(QTransform::fromScale(100, -100)); // y up
     setFocusPolicy(Qt::StrongFocus);
+    installWorldViewAccessible();
+    m_narrator = new SceneNarrator(m_controller, *this);
+    viewport()->setAccessibleName(tr("Scene drawing"));
     connect(&m_controller, &SimulationController::sceneLoaded, this, &WorldView::rebuild);
     connect(&m_controller, &SimulationController::worldChanged, this, &WorldView::syncPoses);
     connect(&m_controller, &SimulationController::rewound, this,

@@ -16,6 +16,7 @@
 namespace rigidlab::ui {
 
 class BodyItem;
+class SceneNarrator;
 class SimulationController;
 
 class WorldView : public QGraphicsView {
@@ -24,6 +25,9 @@ public:
     explicit WorldView(SimulationController& controller, QWidget* parent = nullptr);
 
     OverlayItem& overlays() { return *m_overlays; }
+    const SimulationController& controller() const { return m_controller; }
+    /// What the view tells a screen reader as the world runs (scene_narrator.h).
+    SceneNarrator& narrator() const { return *m_narrator; }
     /// The item drawing body `id` (for tests).
     const BodyItem* itemFor(int id) const;
     /// The items drawing compared world `variant` (index into the controller's variants),
@@ -72,9 +76,15 @@ public slots:
     void rebuild();
     void syncPoses();
     void selectBody(int id);
+    /// Selects the next (or previous) body that moves, after the selected one, wrapping
+    /// around: choosing a body without a mouse (world_view_keys.cpp).
+    void selectNextBody();
+    void selectPreviousBody();
 
 signals:
     void bodySelected(int id);
+    /// Enter on the selected body: show its numbers (the window raises the inspector).
+    void numbersRequested(int id);
 
 protected:
     void mousePressEvent(QMouseEvent* event) override;
@@ -85,6 +95,10 @@ protected:
     void drawForeground(QPainter* painter, const QRectF& rect) override;
     void resizeEvent(QResizeEvent* event) override;
     bool viewportEvent(QEvent* event) override;
+    /// The scene's keys, with a body selected: arrows move it, Shift+arrows change its
+    /// velocity, Enter asks for its numbers (world_view_keys.cpp).
+    void keyPressEvent(QKeyEvent* event) override;
+    bool event(QEvent* event) override;
 
 private:
     /// syncPoses() for the main world's bodies, then the compared worlds' ghosts, for a view
@@ -97,6 +111,8 @@ private:
     physics::Vec2 toWorld(const QPoint& viewPos) const;
     /// Everything the scene shows: bodies, spring and joint anchors [m].
     QRectF contentRect() const;
+    /// Selects the body `step` places from the selected one among those that move.
+    void selectBodyAfter(int step);
     /// Shows `box` (grown by a margin) in the whole viewport.
     void showRect(QRectF box);
     void setZoom(double pixelsPerMetre);
@@ -104,6 +120,8 @@ private:
     double minimumBodyRadius() const;
     void applyMinimumBodySize();
     QFont legendFont() const;
+    /// The scene's names of its few moving bodies, above them (world_view_labels.cpp).
+    void drawBodyLabels(QPainter* painter) const;
     /// The legend's height from the top of the view [px], 0 without one.
     int legendHeight() const;
     /// How many worlds (the main one and the compared ones) stopped.
@@ -115,6 +133,7 @@ private:
     SimulationController& m_controller;
     QGraphicsScene* m_scene;
     OverlayItem* m_overlays;
+    SceneNarrator* m_narrator;
     std::vector<BodyItem*> m_items;              ///< indexed by body id
     std::vector<physics::Transform> m_itemPoses; ///< as last drawn while the main world ran
     /// Per world (0 the main one): whether it was drawn running since the last rebuild, so

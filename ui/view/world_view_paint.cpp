@@ -161,6 +161,7 @@ void WorldView::drawForeground(QPainter* painter, const QRectF&)
         painter->drawLine(c + QPoint(-r, -r), c + QPoint(r, r));
         painter->drawLine(c + QPoint(-r, r), c + QPoint(r, -r));
     }
+    drawBodyLabels(painter);
     painter->restore();
 }
 

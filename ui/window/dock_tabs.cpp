@@ -7,6 +7,7 @@
 #include <QHelpEvent>
 #include <QMainWindow>
 #include <QTabBar>
+#include <QTimer>
 #include <QToolTip>
 #include <QVariant>
 
@@ -46,6 +47,28 @@ protected:
             if (auto* bar = qobject_cast<QTabBar*>(child)) {
                 keepWhole(*bar);
                 bar->installEventFilter(this);
+                bar->setFocusPolicy(bar->count() > 0 ? Qt::TabFocus : Qt::NoFocus);
+            }
+        } else if ((watched == &m_window && event->type() == QEvent::LayoutRequest) ||
+                   (qobject_cast<QTabBar*>(watched) &&
+                    (event->type() == QEvent::Show || event->type() == QEvent::Resize ||
+                     event->type() == QEvent::Move || event->type() == QEvent::Paint))) {
+            // The window keeps tab bars it no longer uses: without tabs, not a Tab stop with
+            // nothing to say. (Once the window is done moving docks: it empties bars later.)
+            if (!m_focusUpdatePending) {
+                m_focusUpdatePending = true;
+                QTimer::singleShot(0, this, [this] {
+                    m_focusUpdatePending = false;
+                    for (QTabBar* bar :
+                         m_window.findChildren<QTabBar*>(QString(), Qt::FindDirectChildrenOnly)) {
+                        // Nor one the window moved out of sight.
+                        const bool seen =
+                            bar->count() > 0 && m_window.rect().intersects(bar->geometry());
+                        bar->setFocusPolicy(seen ? Qt::TabFocus : Qt::NoFocus);
+                        if (bar->count() == 0)
+                            bar->hide(); // the window shows it again when it uses it
+                    }
+                });
             }
         } else if (event->type() == QEvent::ToolTip) {
             if (auto* bar = qobject_cast<QTabBar*>(watched))
@@ -80,6 +103,7 @@ private:
         return true;
     }
 
+    bool m_focusUpdatePending = false;
     QMainWindow& m_window;
 };
 

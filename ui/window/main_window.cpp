@@ -26,6 +26,7 @@
 #include "window/window_actions.h"
 #include "window/window_documents.h"
 #include "window/window_drop.h"
+#include "window/window_keyboard.h"
 #include "window/window_layout.h"
 #include "window/window_names.h"
 #include "window/window_plots.h"
@@ -86,6 +87,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_session = new LessonSession({*this, *m_player, *m_controller, *m_document, *m_documents,
                                    *m_editTools, *m_layout, *m_actions, *m_view, *m_controls,
                                    *m_sat, *m_bounces, *m_collision, m_plots});
+    m_keyboard = new WindowKeyboard({*this, *m_view, *m_player, *m_inspector, *m_layout});
     buildMenus();
     new DivergenceBanner(*m_controller, m_view);
     wirePanels();
@@ -95,6 +97,7 @@ MainWindow::MainWindow(QWidget* parent)
         plot->addMenuAction(m_instruments->graphAction()); // graphs of chosen bodies
     }
     restoreSettings();
+    m_keyboard->applySavedChoice();
     updateStatus();
 }
 

@@ -48,6 +48,7 @@ class SimulationController;
 class StatusLine;
 class WindowActions;
 class WindowDocuments;
+class WindowKeyboard;
 class WindowLayout;
 class WorldView;
 
@@ -196,6 +197,7 @@ private:
     // The parts the window wires together, each with one job.
     WindowActions* m_actions = nullptr;          ///< run actions, overlays, simulation toolbar
     WindowLayout* m_layout = nullptr;            ///< docks, their places, presentation mode
+    WindowKeyboard* m_keyboard = nullptr;        ///< step, focus and body keys; focus ring
     StatusLine* m_status = nullptr;              ///< status bar and timeline
     WindowDocuments* m_documents = nullptr;      ///< scene files and recent files
     EditTools* m_editTools = nullptr;            ///< the scene editor (ui/editor)

@@ -4,6 +4,7 @@
 // are the editor's (ui/editor); here they are given their places in the window.
 #include "window/main_window.h"
 
+#include "common/accessible_names.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "editor/scene_properties.h"
@@ -77,6 +78,7 @@ QDockWidget* MainWindow::buildPropertiesDock()
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
     auto* dock = new QDockWidget(tr("Properties"), this);
+    nameScrollArea(*scroll, dock->windowTitle());
     dock->setObjectName(QStringLiteral("propertiesDock"));
     dock->setWidget(scroll);
     addDockWidget(Qt::LeftDockWidgetArea, dock);

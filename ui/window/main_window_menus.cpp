@@ -14,6 +14,7 @@
 #include "window/status_line.h"
 #include "window/window_actions.h"
 #include "window/window_documents.h"
+#include "window/window_keyboard.h"
 #include "window/window_layout.h"
 #include "window/window_names.h"
 #include "window/window_plots.h"
@@ -50,6 +51,7 @@ void MainWindow::buildMenus()
     sim->addSeparator();
     for (QAction* a : m_actions->rotate())
         sim->addAction(a);
+    m_keyboard->addToSimulationMenu(*sim);
     buildViewMenu();
     buildHelpMenu();
 }
@@ -129,6 +131,7 @@ void MainWindow::buildViewMenu()
     m_viewMenu->addAction(m_instruments->graphAction());
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_status->detailsAction());
+    m_keyboard->addToViewMenu(*m_viewMenu);
 }
 
 void MainWindow::buildHelpMenu()

@@ -2,6 +2,7 @@
 // WindowLayout's docks: the lesson, the panels, the plots, each under its lesson name.
 #include "window/window_layout.h"
 
+#include "common/accessible_names.h"
 #include "common/theme.h"
 #include "plots/plot_widget.h"
 #include "window/dock_tabs.h"
@@ -100,6 +101,7 @@ QDockWidget* WindowLayout::addDock(const QString& title, const QString& name, QW
         scroll->setWidgetResizable(true);
         scroll->setFrameShape(QFrame::NoFrame);
         scroll->setWidget(w);
+        nameScrollArea(*scroll, title);
         dock->setWidget(scroll);
     }
     m_window.addDockWidget(static_cast<Qt::DockWidgetArea>(area), dock);

@@ -1,0 +1,302 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What a screen reader finds in the lab, through QAccessible in process: every control a
+// student operates has a name and a role (the main window, a lesson, the editor, the export
+// dialog), the scene view's children are its bodies with their numbers, which change as the
+// world runs, events are told through a live status at a calm rate, and a plot reads as its
+// title, axes with units and series with values.
+
+#include "accessible_tree.h"
+#include "common/focus_ring.h"
+#include "common/theme.h"
+#include "editor/edit_tools.h"
+#include "lesson_player/lesson_player.h"
+#include "plots/column_graph.h"
+#include "plots/plot_accessible.h"
+#include "plots/plot_widget.h"
+#include "simulation/simulation_controller.h"
+#include "view/scene_narrator.h"
+#include "view/world_view.h"
+#include "view/world_view_accessible.h"
+#include "window/main_window.h"
+
+#include <QAccessible>
+#include <QDialog>
+#include <QFileDialog>
+#include <QPalette>
+#include <QTimer>
+#include <QtTest>
+#include <qcustomplot.h>
+
+#include "test_main.h"
+
+using namespace rigidlab;
+using rigidlab::test::unnamedInteractive;
+using rigidlab::ui::MainWindow;
+
+namespace {
+
+QString lesson(const char* file)
+{
+    return QDir(MainWindow::lessonsFolder()).filePath(QLatin1String(file));
+}
+
+void showOnProjector(MainWindow& w)
+{
+    w.fitToScreen(QRect(0, 0, 1024, 768));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    QCoreApplication::processEvents(); // what the window does once it is idle, as a reader finds it
+}
+
+} // namespace
+
+class TestAccessibility : public QObject {
+    Q_OBJECT
+private slots:
+    /// Every control showing in the welcome window, each step of every lesson and Edit mode
+    /// has a name and a role.
+    void everyControlHasANameAndARole()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        int interactive = 0;
+        QStringList unnamed;
+        // As a reader finds the window once it has settled (the window arranges its docks'
+        // tab bars after the events that move them).
+        QTRY_VERIFY2_WITH_TIMEOUT((unnamed = unnamedInteractive(w, &interactive)).isEmpty(),
+                                  qPrintable(unnamed.join(QLatin1Char('\n'))), 2000);
+        QVERIFY2(interactive > 20, qPrintable(QString::number(interactive)));
+
+        const QDir dir(MainWindow::lessonsFolder());
+        for (const QString& f : dir.entryList({QStringLiteral("*.json")}, QDir::Files)) {
+            QCOMPARE(w.openLesson(dir.filePath(f), true), QString());
+            const int steps = static_cast<int>(w.lessonPlayer().lesson()->steps.size());
+            for (int i = 0; i < steps; ++i) {
+                w.lessonPlayer().goToStep(i);
+                QTRY_VERIFY2_WITH_TIMEOUT((unnamed = unnamedInteractive(w)).isEmpty(),
+                                          qPrintable(f + QStringLiteral(" step %1:\n").arg(i + 1) +
+                                                     unnamed.join(QLatin1Char('\n'))),
+                                          2000);
+            }
+        }
+        w.editTools().setEditing(true);
+        QTRY_VERIFY2_WITH_TIMEOUT(
+            (unnamed = unnamedInteractive(w)).isEmpty(),
+            qPrintable(QStringLiteral("Edit mode:\n") + unnamed.join(QLatin1Char('\n'))), 2000);
+    }
+
+    /// The plot's export dialog names its controls too.
+    void exportDialogHasNames()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        QStringList unnamed;
+        int interactive = 0;
+        bool seen = false;
+        QTimer::singleShot(0, this, [&] {
+            auto* dialog = qobject_cast<QFileDialog*>(QApplication::activeModalWidget());
+            if (!dialog)
+                return;
+            seen = true;
+            unnamed = unnamedInteractive(*dialog, &interactive);
+            dialog->reject();
+        });
+        w.plot(0)->exportInteractively(ui::ExportFormat::Png);
+        QVERIFY(seen);
+        QVERIFY2(unnamed.isEmpty(), qPrintable(unnamed.join(QLatin1Char('\n'))));
+        QVERIFY(interactive > 5);
+    }
+
+    /// The scene's children are its bodies, with name, shape, mass, position and velocity,
+    /// and their values change as the world runs.
+    void sceneChildrenAreItsBodies()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(w.openLesson(lesson("restitution.json"), true), QString());
+        QAccessibleInterface* scene = QAccessible::queryAccessibleInterface(&w.view());
+        QVERIFY(scene);
+        QVERIFY(!scene->text(QAccessible::Name).isEmpty());
+        const auto& world = w.controller().world();
+        const int bodies = static_cast<int>(world.bodies().size());
+        QVERIFY(bodies >= 2);
+        QCOMPARE(scene->childCount(), ui::WorldViewAccessible::FirstBody + bodies);
+        const QString summary =
+            scene->child(ui::WorldViewAccessible::Summary)->text(QAccessible::Description);
+        QVERIFY2(summary.contains(QString::number(bodies - 1)) ||
+                     summary.contains(QString::number(bodies)),
+                 qPrintable(summary));
+        QStringList before;
+        for (int i = 0; i < bodies; ++i) {
+            QAccessibleInterface* b = scene->child(ui::WorldViewAccessible::FirstBody + i);
+            QVERIFY(b && b->isValid());
+            QCOMPARE(b->parent(), scene);
+            QCOMPARE(scene->indexOfChild(b), ui::WorldViewAccessible::FirstBody + i);
+            QVERIFY2(b->text(QAccessible::Name).startsWith(w.controller().scene().bodyLabel(i)),
+                     qPrintable(b->text(QAccessible::Name)));
+            const QString value = b->text(QAccessible::Value);
+            for (const char* word : {"mass", "position", "velocity"})
+                QVERIFY2(value.contains(QLatin1String(word)), qPrintable(value));
+            if (world.body(i).isDynamic())
+                QVERIFY2(value.contains(QStringLiteral("kg")), qPrintable(value));
+            before << value;
+        }
+        // Run half a second: a falling ball's position and velocity change.
+        for (int k = 0; k < 50; ++k)
+            w.controller().stepForward();
+        int changed = 0;
+        for (int i = 0; i < bodies; ++i)
+            if (scene->child(ui::WorldViewAccessible::FirstBody + i)->text(QAccessible::Value) !=
+                before[i])
+                ++changed;
+        int moving = 0;
+        for (int i = 0; i < bodies; ++i)
+            moving += world.body(i).isDynamic() ? 1 : 0;
+        QCOMPARE(changed, moving);
+    }
+
+    /// Events are told through the live status as value changes, merged and at a calm rate:
+    /// a run of many frames gives a handful of updates, not one per frame.
+    void eventsAreToldPolitely()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(w.openLesson(lesson("restitution.json"), true), QString());
+        ui::SceneNarrator& narrator = w.view().narrator();
+        QSignalSpy told(&narrator, &ui::SceneNarrator::told);
+        const int changesBefore = narrator.statusChanges();
+        int frames = 0;
+        connect(&w.controller(), &ui::SimulationController::frameAdvanced, this, [&] { ++frames; });
+        w.controller().setRunning(true);
+        // The run's own clock, in real time: the balls fall and hit the floor.
+        QElapsedTimer clock;
+        clock.start();
+        QTRY_VERIFY_WITH_TIMEOUT(w.controller().time() > 2.5, 20000);
+        w.controller().setRunning(false);
+        const auto seconds = clock.elapsed() / ui::SceneNarrator::kValueIntervalMs + 1;
+        QVERIFY2(narrator.status().contains(QLatin1String("touch")), qPrintable(narrator.status()));
+        const int changes = narrator.statusChanges() - changesBefore;
+        QVERIFY2(changes >= 1 && changes <= seconds, qPrintable(QString::number(changes)));
+        int statusTold = 0, bodyTold = 0;
+        for (const QList<QVariant>& args : told) {
+            const int child = args.at(0).toInt();
+            statusTold += child == ui::WorldViewAccessible::Status ? 1 : 0;
+            bodyTold += child >= ui::WorldViewAccessible::FirstBody ? 1 : 0;
+        }
+        QCOMPARE(statusTold, changes);
+        const int bodies = static_cast<int>(w.controller().world().bodies().size());
+        // At most one update of each body a second, however many frames ran.
+        QVERIFY2(frames > 3 * seconds, qPrintable(QString::number(frames)));
+        QVERIFY2(
+            bodyTold >= bodies && bodyTold <= seconds * bodies,
+            qPrintable(QStringLiteral("%1 body updates, %2 frames").arg(bodyTold).arg(frames)));
+    }
+
+    /// A plot reads as its title, its axes with units and its series with values now,
+    /// least and greatest.
+    void plotIsDescribed()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(
+            w.openScene(QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json")),
+                        true),
+            QString());
+        for (int k = 0; k < 100; ++k)
+            w.controller().stepForward();
+        ui::PlotWidget* energy = w.plot(0);
+        energy->drain();
+        QAccessibleInterface* a = QAccessible::queryAccessibleInterface(energy);
+        QVERIFY(a);
+        QCOMPARE(a->role(), QAccessible::Chart);
+        QCOMPARE(a->text(QAccessible::Name), energy->title());
+        const QString text = a->text(QAccessible::Description);
+        QCOMPARE(text, ui::describePlot(*energy));
+        QVERIFY2(text.contains(QLatin1String("[s]")) && text.contains(QLatin1String("[J]")),
+                 qPrintable(text));
+        for (int i = 0; i < energy->seriesCount(); ++i)
+            QVERIFY2(text.contains(energy->seriesLegend(i) + QLatin1String(": now")),
+                     qPrintable(text));
+        QVERIFY2(text.contains(QLatin1String("greatest")), qPrintable(text));
+    }
+
+    /// Text at least 4.5:1 and lines and overlays at least 3:1 against what lies behind
+    /// them, computed from the theme's colours, in the window and in presentation mode.
+    void contrastFromTheTheme_data()
+    {
+        QTest::addColumn<bool>("presentation");
+        QTest::newRow("window") << false;
+        QTest::newRow("presentation") << true;
+    }
+    void contrastFromTheTheme()
+    {
+        QFETCH(bool, presentation);
+        MainWindow w; // the window sets the application's readable palette
+        namespace theme = ui::theme;
+        theme::setPresentation(presentation);
+        const auto check = [](const char* what, const QColor& a, const QColor& b, double least) {
+            const double ratio = theme::contrastRatio(a, b);
+            QVERIFY2(ratio >= least, qPrintable(QStringLiteral("%1: %2 on %3 is %4:1, below %5:1")
+                                                    .arg(QLatin1String(what), a.name(), b.name())
+                                                    .arg(ratio, 0, 'f', 2)
+                                                    .arg(least)));
+        };
+        const QColor world = theme::worldBackground();
+        const double text = theme::kMinTextContrast, line = theme::kMinOverlayContrast;
+        check("text over the world", theme::worldText(), world, text);
+        check("alert text over the world", theme::worldAlertText(), world, text);
+        check("SAT gap label", theme::satGap(), theme::worldLabelBox(), text);
+        check("SAT overlap label", theme::satOverlap(), theme::worldLabelBox(), text);
+        check("banner text", theme::alertText(), theme::alertBackground(), text);
+        check("SAT interval A", theme::satProjectionA(), world, line);
+        check("SAT interval B", theme::satProjectionB(), world, line);
+        check("SAT axis", theme::satAxis(), world, line);
+        for (int i = 0; i < 7; ++i)
+            check(qPrintable(QStringLiteral("plot line %1").arg(i)), ui::plotColor(i),
+                  theme::plotBackground(), line);
+        // The focus ring against the window and the panels, and its halo against the ring.
+        const QPalette palette = QApplication::palette();
+        for (const QColor& behind : {palette.color(QPalette::Window), palette.color(QPalette::Base),
+                                     palette.color(QPalette::Button), world})
+            check("focus ring", theme::focusRing(), behind, line);
+        check("focus halo", theme::focusHalo(), theme::focusRing(), line);
+        QVERIFY(ui::FocusRing::ringWidth() >= 2);
+        // The answer field's placeholder text is text too (blended as it is drawn, if the
+        // palette gives it transparent).
+        const QColor base = palette.color(QPalette::Base);
+        const QColor hint = palette.color(QPalette::PlaceholderText);
+        const double a = hint.alphaF();
+        const QColor drawn = QColor::fromRgbF(a * hint.redF() + (1 - a) * base.redF(),
+                                              a * hint.greenF() + (1 - a) * base.greenF(),
+                                              a * hint.blueF() + (1 - a) * base.blueF());
+        check("placeholder text", drawn, base, text);
+        theme::setPresentation(false);
+    }
+
+    /// Every series of a plot differs from the others in line style and in marker, so that
+    /// the plots read in greyscale, on the window and in the exports alike.
+    void plotsReadInGreyscale()
+    {
+        MainWindow w;
+        for (int p = 0; p < MainWindow::kPlotCount; ++p) {
+            ui::PlotWidget* plot = w.plot(p);
+            for (int i = 0; i < plot->seriesCount(); ++i)
+                for (int j = 0; j < i; ++j) {
+                    QVERIFY2(plot->graph(i)->pen().style() != plot->graph(j)->pen().style(),
+                             qPrintable(plot->title() +
+                                        QStringLiteral(": %1 and %2 have one line style")
+                                            .arg(plot->seriesName(i), plot->seriesName(j))));
+                    QVERIFY2(plot->graph(i)->scatterStyle().shape() !=
+                                 plot->graph(j)->scatterStyle().shape(),
+                             qPrintable(plot->title() +
+                                        QStringLiteral(": %1 and %2 have one marker")
+                                            .arg(plot->seriesName(i), plot->seriesName(j))));
+                }
+            for (int i = 0; i < plot->seriesCount(); ++i)
+                QVERIFY(!plot->graph(i)->scatterStyle().isNone());
+        }
+    }
+};
+
+RIGIDLAB_TEST_MAIN(TestAccessibility)
+#include "test_accessibility.moc"

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "view/scene_narrator.h"
+
+#include "simulation/simulation_controller.h"
+#include "view/scene_words.h"
+#include "view/world_view.h"
+#include "view/world_view_accessible.h"
+
+#include <QAccessible>
+
+namespace rigidlab::ui {
+
+SceneNarrator::SceneNarrator(SimulationController& controller, WorldView& view)
+    : QObject(&view), m_controller(controller), m_view(view)
+{
+    m_tick.setInterval(kValueIntervalMs);
+    connect(&m_tick, &QTimer::timeout, this, [this] {
+        tellValues();
+        flush();
+    });
+    connect(&controller, &SimulationController::runningChanged, this, [this](bool running) {
+        if (running)
+            m_tick.start();
+        else
+            m_tick.stop();
+    });
+    connect(&controller, &SimulationController::worldChanged, this, &SceneNarrator::onWorldChanged);
+    connect(&controller, &SimulationController::sceneLoaded, this, &SceneNarrator::onSceneLoaded);
+    connect(&controller, &SimulationController::samplesCleared, this,
+            &SceneNarrator::onSceneLoaded);
+    m_sinceTold.start();
+}
+
+void SceneNarrator::onSceneLoaded()
+{
+    m_touched = false;
+    m_moving = false;
+    m_diverged = false;
+    m_pending.clear();
+}
+
+void SceneNarrator::onWorldChanged()
+{
+    const physics::World& world = m_controller.world();
+    if (!m_touched && !world.contacts().empty()) {
+        m_touched = true;
+        const physics::Contact& c = world.contacts().front();
+        note(tr("%1 and %2 touch.")
+                 .arg(m_controller.scene().bodyLabel(c.a), m_controller.scene().bodyLabel(c.b)));
+    }
+    double fastest = 0;
+    for (std::size_t i = 0; i < world.bodies().size(); ++i)
+        if (world.body(static_cast<physics::BodyId>(i)).isDynamic())
+            fastest =
+                std::max(fastest, world.body(static_cast<physics::BodyId>(i)).velocity.norm());
+    if (fastest > kMovingSpeed)
+        m_moving = true;
+    else if (m_moving && fastest < kRestSpeed && m_controller.isRunning()) {
+        m_moving = false;
+        note(tr("Everything has come to rest."));
+    }
+    if (world.divergence() && !m_diverged) {
+        m_diverged = true;
+        note(tr("The simulation diverged and stopped."));
+    }
+    // Paused, a step or a seek is the student's own doing: tell its result at once, but
+    // never faster than the calm rate.
+    if (m_tick.isActive())
+        return;
+    if (m_sinceTold.elapsed() >= kValueIntervalMs) {
+        tellValues();
+        flush();
+    } else if (!m_pending.isEmpty()) {
+        const int wait = kValueIntervalMs - static_cast<int>(m_sinceTold.elapsed());
+        QTimer::singleShot(wait, this, &SceneNarrator::flush);
+    }
+}
+
+void SceneNarrator::note(const QString& event)
+{
+    if (!m_pending.contains(event))
+        m_pending << event;
+}
+
+void SceneNarrator::flush()
+{
+    if (m_pending.isEmpty())
+        return;
+    m_status = m_pending.join(QLatin1Char(' '));
+    m_pending.clear();
+    ++m_changes;
+    m_sinceTold.restart();
+    tell(WorldViewAccessible::Status, m_status);
+}
+
+void SceneNarrator::tell(int child, const QString& value)
+{
+    emit told(child, value);
+    if (!QAccessible::isActive())
+        return;
+    QAccessibleInterface* view = QAccessible::queryAccessibleInterface(&m_view);
+    if (QAccessibleInterface* item = view ? view->child(child) : nullptr) {
+        QAccessibleValueChangeEvent event(item, value);
+        QAccessible::updateAccessibility(&event);
+    }
+}
+
+void SceneNarrator::tellValues()
+{
+    m_sinceTold.restart();
+    const auto count = static_cast<physics::BodyId>(m_controller.world().bodies().size());
+    for (physics::BodyId id = 0; id < count; ++id)
+        tell(WorldViewAccessible::FirstBody + id, scene_words::bodyValue(m_controller, id));
+}
+
+} // namespace rigidlab::ui

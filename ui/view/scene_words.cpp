@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "view/scene_words.h"
+
+#include "common/number_format.h"
+#include "common/shortcuts.h"
+#include "simulation/simulation_controller.h"
+
+#include "format/scene_schema.h"
+
+#include <QStringList>
+
+#include <cmath>
+
+namespace rigidlab::ui::scene_words {
+
+namespace {
+
+QString metres(double v)
+{
+    return formatQuantity(v, QStringLiteral("m"), 3, 1.0);
+}
+
+QString pair(double x, double y, const QString& unit)
+{
+    return SceneWords::tr("(%1; %2) %3")
+        .arg(formatReadable(x, 3, 1.0), formatReadable(y, 3, 1.0), unit);
+}
+
+/// Whether the polygon is a rectangle: four corners, each edge at a right angle to the next.
+bool isBox(const physics::Polygon& p)
+{
+    if (p.normals.size() != 4)
+        return false;
+    for (std::size_t i = 0; i < 4; ++i)
+        if (std::abs(p.normals[i].dot(p.normals[(i + 1) % 4])) > 1e-9)
+            return false;
+    return true;
+}
+
+QStringList touching(const physics::World& world, physics::BodyId id,
+                     const SimulationController& controller)
+{
+    QStringList names;
+    for (const physics::Contact& c : world.contacts()) {
+        if (c.a != id && c.b != id)
+            continue;
+        const QString other = controller.scene().bodyLabel(c.a == id ? c.b : c.a);
+        if (!names.contains(other))
+            names << other;
+    }
+    return names;
+}
+
+} // namespace
+
+QString sceneName(const SimulationController& controller)
+{
+    const QString title = controller.scene().title;
+    return title.isEmpty() ? SceneWords::tr("Scene") : SceneWords::tr("Scene: %1").arg(title);
+}
+
+QString summary(const SimulationController& controller, int selectedBody)
+{
+    const physics::World& world = controller.world();
+    int moving = 0;
+    for (const physics::Body& b : world.bodies())
+        moving += b.moves() ? 1 : 0;
+    const int fixed = static_cast<int>(world.bodies().size()) - moving;
+    QStringList parts;
+    parts << SceneWords::tr("On stage: %n moving body(ies)", nullptr, moving) +
+                 SceneWords::tr(", %n fixed body(ies).", nullptr, fixed);
+    const QString t = formatQuantity(controller.time(), QStringLiteral("s"), 3, 1.0);
+    if (world.divergence())
+        parts << SceneWords::tr("The simulation stopped at %1: it diverged.").arg(t);
+    else if (controller.isRunning())
+        parts << SceneWords::tr("Running, time %1.").arg(t);
+    else
+        parts << SceneWords::tr("Paused at time %1.").arg(t);
+    if (!world.contacts().empty())
+        parts << SceneWords::tr("%n pair(s) of bodies touch.", nullptr,
+                                static_cast<int>(world.contacts().size()));
+    if (selectedBody >= 0 && selectedBody < static_cast<int>(world.bodies().size()))
+        parts << SceneWords::tr("Selected: %1.").arg(controller.scene().bodyLabel(selectedBody));
+    parts << SceneWords::tr(
+                 "%1 runs or pauses; %2 and %3 select a body; arrows move it, Shift+arrows change "
+                 "its velocity, Enter shows its numbers.")
+                 .arg(controlKeysText("play"), controlKeysText("selectNextBody"),
+                      controlKeysText("selectPreviousBody"));
+    return parts.join(QLatin1Char(' '));
+}
+
+QString bodyName(const SimulationController& controller, physics::BodyId id)
+{
+    const physics::Body& b = controller.world().body(id);
+    return SceneWords::tr("%1 (%2)").arg(controller.scene().bodyLabel(id),
+                                         lessons::schema::bodyTypeLabel(b.type));
+}
+
+QString shapeText(const physics::Shape& shape)
+{
+    if (const physics::Circle* c = shape.asCircle())
+        return SceneWords::tr("circle, radius %1").arg(metres(c->radius));
+    const physics::Polygon* p = shape.asPolygon();
+    if (!p)
+        return {};
+    if (isBox(*p)) {
+        const auto& v = p->vertices;
+        return SceneWords::tr("box %1 × %2")
+            .arg(metres((v[1] - v[0]).norm()), metres((v[2] - v[1]).norm()));
+    }
+    return SceneWords::tr("polygon, %n corner(s)", nullptr, static_cast<int>(p->vertices.size()));
+}
+
+QString bodyValue(const SimulationController& controller, physics::BodyId id)
+{
+    const physics::World& world = controller.world();
+    const physics::Body& b = world.body(id);
+    QStringList parts;
+    parts << shapeText(b.shape);
+    parts << (b.isDynamic()
+                  ? SceneWords::tr("mass %1").arg(formatQuantity(b.mass, QStringLiteral("kg"), 3))
+                  : SceneWords::tr("mass infinite"));
+    const physics::Vec2 o = b.origin();
+    parts << SceneWords::tr("position %1").arg(pair(o.x(), o.y(), QStringLiteral("m")));
+    const physics::Vec2 v = world.originVelocity(id);
+    parts << SceneWords::tr("velocity %1, speed %2")
+                 .arg(pair(v.x(), v.y(), QStringLiteral("m/s")),
+                      formatQuantity(v.norm(), QStringLiteral("m/s"), 3, 1.0));
+    if (const QStringList t = touching(world, id, controller); !t.isEmpty())
+        parts << SceneWords::tr("touches %1").arg(t.join(QStringLiteral(", ")));
+    return parts.join(QStringLiteral("; "));
+}
+
+} // namespace rigidlab::ui::scene_words

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The scene in words, for a screen reader: what the scene view shows a sighted student, read
+// from the controller's world. Modelled on PhET's screen summary: what is on stage, what is
+// happening now, what the student can do; then one line per body (its name, shape, mass,
+// position and velocity). The scene view's accessible tree (world_view_accessible.h) and its
+// announcements (scene_narrator.h) read these; nothing here changes the world.
+
+#include "rigidlab/physics/body.h"
+#include "rigidlab/physics/forces.h"
+
+#include <QCoreApplication>
+#include <QString>
+
+namespace rigidlab::ui {
+
+class SimulationController;
+
+namespace scene_words {
+
+/// The translation context of the scene in words (and of the scene view's children).
+struct SceneWords {
+    Q_DECLARE_TR_FUNCTIONS(SceneWords)
+};
+
+/// The accessible name of the scene view ("Scene: Bouncing balls").
+QString sceneName(const SimulationController& controller);
+/// What is on stage, what happens now and what the keys do, in three or four sentences.
+QString summary(const SimulationController& controller, int selectedBody);
+/// A body's name as a class reads it, with its kind: "red ball (dynamic)".
+QString bodyName(const SimulationController& controller, physics::BodyId id);
+/// A body's shape in words: "circle, radius 0.2 m", "box 1 m × 0.5 m", "polygon, 5 corners".
+QString shapeText(const physics::Shape& shape);
+/// A body's numbers now: shape, mass, position, velocity and what it touches.
+QString bodyValue(const SimulationController& controller, physics::BodyId id);
+
+} // namespace scene_words
+} // namespace rigidlab::ui

@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "window/window_keyboard.h"
+
+#include "common/focus_ring.h"
+#include "common/shortcuts.h"
+#include "common/shortcuts_guard.h"
+#include "common/theme.h"
+#include "lesson_player/lesson_player.h"
+#include "panels/inspector_panel.h"
+#include "panels/number_field.h"
+#include "view/world_view.h"
+#include "window/window_layout.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QMainWindow>
+#include <QMenu>
+#include <QPalette>
+#include <QSettings>
+
+namespace rigidlab::ui {
+
+namespace {
+const QString kSingleKeysSetting = QStringLiteral("keyboard/singleKeyShortcuts");
+} // namespace
+
+WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_parts(parts)
+{
+    ShortcutsGuard::install();
+    FocusRing::install();
+    QPalette palette = QApplication::palette();
+    palette.setColor(QPalette::PlaceholderText, theme::placeholderText());
+    QApplication::setPalette(palette);
+    m_next = make(tr("Next lesson step"), "nextStep");
+    connect(m_next, &QAction::triggered, &parts.player, &LessonPlayer::next);
+    m_previous = make(tr("Previous lesson step"), "previousStep");
+    connect(m_previous, &QAction::triggered, &parts.player, &LessonPlayer::back);
+    m_focusScene = make(tr("Focus the scene"), "focusScene");
+    connect(m_focusScene, &QAction::triggered, &parts.view,
+            [&view = parts.view] { view.setFocus(Qt::ShortcutFocusReason); });
+    m_nextBody = make(tr("Select next body"), "selectNextBody");
+    connect(m_nextBody, &QAction::triggered, &parts.view, &WorldView::selectNextBody);
+    m_previousBody = make(tr("Select previous body"), "selectPreviousBody");
+    connect(m_previousBody, &QAction::triggered, &parts.view, &WorldView::selectPreviousBody);
+    m_singleKeys = make(tr("Single-key shortcuts"), "singleKeys");
+    m_singleKeys->setCheckable(true);
+    m_singleKeys->setChecked(true);
+    m_singleKeys->setToolTip(tr("Letters, Space and arrows alone act as shortcuts; off, only "
+                                "keys with Ctrl, Alt or F-keys do"));
+    connect(m_singleKeys, &QAction::toggled, this, [this](bool on) {
+        setSingleKeyShortcuts(m_parts.window, on);
+        QSettings().setValue(kSingleKeysSetting, on);
+    });
+    connect(&parts.view, &WorldView::numbersRequested, this, &WindowKeyboard::showNumbers);
+}
+
+QAction* WindowKeyboard::make(const QString& text, const char* name)
+{
+    auto* a = new QAction(text, this);
+    a->setObjectName(QLatin1String(name));
+    a->setShortcuts(controlKeys(name));
+    m_parts.window.addAction(a);
+    return a;
+}
+
+void WindowKeyboard::addToSimulationMenu(QMenu& menu) const
+{
+    menu.addSeparator();
+    for (QAction* a : {m_focusScene, m_nextBody, m_previousBody, m_next, m_previous})
+        menu.addAction(a);
+}
+
+void WindowKeyboard::addToViewMenu(QMenu& menu) const
+{
+    menu.addAction(m_singleKeys);
+}
+
+void WindowKeyboard::applySavedChoice()
+{
+    const bool on = QSettings().value(kSingleKeysSetting, true).toBool();
+    if (on != m_singleKeys->isChecked())
+        m_singleKeys->setChecked(on);
+}
+
+void WindowKeyboard::showNumbers(int body)
+{
+    if (body < 0)
+        return;
+    if (QDockWidget* dock = m_parts.layout.dock(QStringLiteral("inspector"))) {
+        dock->show();
+        dock->raise();
+    }
+    // The mass is the number a student changes; the others follow it in the tab order.
+    if (NumberField* mass = m_parts.inspector.massField(); mass && mass->isVisible())
+        mass->setFocus(Qt::OtherFocusReason);
+    else
+        m_parts.inspector.setFocus(Qt::OtherFocusReason);
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The window's keyboard beyond the run actions: the lesson's next and previous step, the
+// focus to the scene, choosing a body without a mouse, single-key shortcuts on or off, and
+// Enter on a body showing its numbers in the inspector. It installs the shortcuts guard
+// (keys go to the focused control first) and the focus ring (common/).
+
+#include <QObject>
+
+class QAction;
+class QMainWindow;
+class QMenu;
+
+namespace rigidlab::ui {
+
+class InspectorPanel;
+class LessonPlayer;
+class WindowLayout;
+class WorldView;
+
+class WindowKeyboard : public QObject {
+    Q_OBJECT
+public:
+    struct Parts {
+        QMainWindow& window;
+        WorldView& view;
+        LessonPlayer& player;
+        InspectorPanel& inspector;
+        WindowLayout& layout;
+    };
+    explicit WindowKeyboard(const Parts& parts);
+
+    /// Adds the lesson-step and body actions to the Simulation menu.
+    void addToSimulationMenu(QMenu& menu) const;
+    /// Adds "Single-key shortcuts" to a menu (View).
+    void addToViewMenu(QMenu& menu) const;
+    QAction* singleKeys() const { return m_singleKeys; }
+    /// Applies the saved choice of single-key shortcuts (after every action exists).
+    void applySavedChoice();
+
+private:
+    QAction* make(const QString& text, const char* name);
+    void showNumbers(int body);
+
+    Parts m_parts;
+    QAction* m_next = nullptr;
+    QAction* m_previous = nullptr;
+    QAction* m_focusScene = nullptr;
+    QAction* m_nextBody = nullptr;
+    QAction* m_previousBody = nullptr;
+    QAction* m_singleKeys = nullptr;
+};
+
+} // namespace rigidlab::ui
