@@ -100,7 +100,7 @@ void LessonEditor::buildLessonFields(QGridLayout& grid)
             auto* edit = new QLineEdit(this);
             QString plain = rows[r].first;
             plain.remove(u'&');
-            edit->setAccessibleName(tr("%1 (%2)").arg(plain, languageName(l)));
+            edit->setAccessibleName(QStringLiteral("%1 (%2)").arg(plain, languageName(l)));
             edit->setObjectName(QStringLiteral("lesson_%1_%2").arg(keys[r], code(l)));
             edit->installEventFilter(this);
             if (l == 0)
@@ -165,22 +165,26 @@ QWidget* LessonEditor::buildStepList()
     layout->addWidget(m_steps, 1);
     auto* buttons = new QGridLayout;
     buttons->addWidget(makeButton(tr("&Add step"), QStringLiteral("addStep"),
-                                  QKeySequence(tr("Ctrl+Shift+N")), &LessonEditor::addStep),
+                                  QKeySequence(QStringLiteral("Ctrl+Shift+N")),
+                                  &LessonEditor::addStep),
                        0, 0);
     buttons->addWidget(makeButton(tr("&Remove step"), QStringLiteral("removeStep"),
-                                  QKeySequence(tr("Ctrl+Del")), &LessonEditor::removeStep),
+                                  QKeySequence(QStringLiteral("Ctrl+Del")),
+                                  &LessonEditor::removeStep),
                        0, 1);
     buttons->addWidget(makeButton(tr("Move &up"), QStringLiteral("moveStepUp"),
-                                  QKeySequence(tr("Alt+Up")), &LessonEditor::moveUp),
+                                  QKeySequence(QStringLiteral("Alt+Up")), &LessonEditor::moveUp),
                        1, 0);
     buttons->addWidget(makeButton(tr("Move do&wn"), QStringLiteral("moveStepDown"),
-                                  QKeySequence(tr("Alt+Down")), &LessonEditor::moveDown),
+                                  QKeySequence(QStringLiteral("Alt+Down")),
+                                  &LessonEditor::moveDown),
                        1, 1);
     buttons->addWidget(makeButton(tr("&Duplicate step"), QStringLiteral("duplicateStep"),
-                                  QKeySequence(tr("Ctrl+D")), &LessonEditor::duplicateStep),
+                                  QKeySequence(QStringLiteral("Ctrl+D")),
+                                  &LessonEditor::duplicateStep),
                        2, 0);
     buttons->addWidget(makeButton(tr("Try as a &student"), QStringLiteral("tryAsStudent"),
-                                  QKeySequence(tr("F5")), &LessonEditor::trySelected),
+                                  QKeySequence(QStringLiteral("F5")), &LessonEditor::trySelected),
                        2, 1);
     layout->addLayout(buttons);
     return box;
@@ -213,8 +217,8 @@ QWidget* LessonEditor::buildStepTexts()
         auto* missing = new QLabel(box);
         missing->setObjectName(QStringLiteral("missing_%1").arg(code(l)));
         missing->setTextFormat(Qt::PlainText);
-        missing->setText(tr("⚠ Not written in %1 yet").arg(lang));
-        missing->setAccessibleName(tr("Not written in %1 yet").arg(lang));
+        missing->setText(tr("⚠ %1: not written yet").arg(lang));
+        missing->setAccessibleName(tr("%1: not written yet").arg(lang));
         auto* preview = new StepText(box);
         preview->setObjectName(QStringLiteral("preview_%1").arg(code(l)));
         preview->setAccessibleName(tr("Preview (%1)").arg(lang));

@@ -236,7 +236,7 @@ void LessonEditor::refreshSteps()
             title = m_draft.text(i, QStringLiteral("title"), codeOf(shownLanguage() == u"cs"));
         const QString marks = stepMarks(i, check);
         QListWidgetItem* item = m_steps->item(i);
-        item->setText(marks.isEmpty() ? tr("%1. %2").arg(i + 1).arg(title)
+        item->setText(marks.isEmpty() ? QStringLiteral("%1. %2").arg(i + 1).arg(title)
                                       : tr("%1. %2 — ⚠ %3").arg(i + 1).arg(title, marks));
         item->setIcon(marks.isEmpty() ? QIcon() : warn);
         QStringList lines;
