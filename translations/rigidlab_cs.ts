@@ -2550,6 +2550,185 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::LessonEditor</name>
+    <message>
+        <source>Czech</source>
+        <translation>čeština</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>angličtina</translation>
+    </message>
+    <message>
+        <source>Lesson editor</source>
+        <translation>Editor lekcí</translation>
+    </message>
+    <message>
+        <source>Problems of the lesson</source>
+        <translation>Problémy lekce</translation>
+    </message>
+    <message>
+        <source>Lesson &amp;title</source>
+        <translation>&amp;Název lekce</translation>
+    </message>
+    <message>
+        <source>S&amp;ummary</source>
+        <translation>&amp;Shrnutí</translation>
+    </message>
+    <message>
+        <source>&amp;Level</source>
+        <translation>Ú&amp;roveň</translation>
+    </message>
+    <message>
+        <source>&amp;Minutes</source>
+        <translation>&amp;Minuty</translation>
+    </message>
+    <message>
+        <source>not said</source>
+        <translation>neuvedeno</translation>
+    </message>
+    <message>
+        <source>&#xa0;min</source>
+        <translation>&#xa0;min</translation>
+    </message>
+    <message>
+        <source>Minutes the lesson takes</source>
+        <translation>Kolik minut lekce trvá</translation>
+    </message>
+    <message>
+        <source>minutes</source>
+        <translation>minuty</translation>
+    </message>
+    <message>
+        <source>S&amp;teps</source>
+        <translation>&amp;Kroky</translation>
+    </message>
+    <message>
+        <source>Steps of the lesson</source>
+        <translation>Kroky lekce</translation>
+    </message>
+    <message>
+        <source>&amp;Add step</source>
+        <translation>&amp;Přidat krok</translation>
+    </message>
+    <message>
+        <source>&amp;Remove step</source>
+        <translation>&amp;Odebrat krok</translation>
+    </message>
+    <message>
+        <source>Move &amp;up</source>
+        <translation>Posunout na&amp;horu</translation>
+    </message>
+    <message>
+        <source>Move do&amp;wn</source>
+        <translation>Posunout &amp;dolů</translation>
+    </message>
+    <message>
+        <source>&amp;Duplicate step</source>
+        <translation>&amp;Zdvojit krok</translation>
+    </message>
+    <message>
+        <source>Try as a &amp;student</source>
+        <translation>Vyzkoušet jako s&amp;tudent</translation>
+    </message>
+    <message>
+        <source>Step title (%1)</source>
+        <translation>Název kroku (%1)</translation>
+    </message>
+    <message>
+        <source>Step text (%1)</source>
+        <translation>Text kroku (%1)</translation>
+    </message>
+    <message>
+        <source>⚠ %1: not written yet</source>
+        <translation>⚠ %1: zatím nenapsáno</translation>
+    </message>
+    <message>
+        <source>%1: not written yet</source>
+        <translation>%1: zatím nenapsáno</translation>
+    </message>
+    <message>
+        <source>Preview (%1)</source>
+        <translation>Náhled (%1)</translation>
+    </message>
+    <message>
+        <source>As the student sees it (%1)</source>
+        <translation>Jak to uvidí student (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Zpět</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>Z&amp;novu</translation>
+    </message>
+    <message>
+        <source>&amp;Save lesson</source>
+        <translation>&amp;Uložit lekci</translation>
+    </message>
+    <message>
+        <source>Save lesson &amp;as…</source>
+        <translation>Uložit lekci &amp;jako…</translation>
+    </message>
+    <message>
+        <source>New lesson</source>
+        <translation>Nová lekce</translation>
+    </message>
+    <message>
+        <source>Save lesson</source>
+        <translation>Uložit lekci</translation>
+    </message>
+    <message>
+        <source>lesson</source>
+        <translation>lekce</translation>
+    </message>
+    <message>
+        <source>Save lesson as</source>
+        <translation>Uložit lekci jako</translation>
+    </message>
+    <message>
+        <source>Lessons in one file (*.rlesson)</source>
+        <translation>Lekce v&#xa0;jednom souboru (*.rlesson)</translation>
+    </message>
+    <message>
+        <source>Try as a student</source>
+        <translation>Vyzkoušet jako student</translation>
+    </message>
+    <message>
+        <source>no %1</source>
+        <translation>chybí %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n problem(s)</source>
+        <translation>
+            <numerusform>%n problém</numerusform>
+            <numerusform>%n problémy</numerusform>
+            <numerusform>%n problémů</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1. %2 — ⚠ %3</source>
+        <translation>%1. %2 — ⚠ %3</translation>
+    </message>
+    <message>
+        <source>No problems found.</source>
+        <translation>Žádné problémy.</translation>
+    </message>
+    <message>
+        <source>new lesson</source>
+        <translation>nová lekce</translation>
+    </message>
+    <message>
+        <source>%1%2 — Lesson editor — RigidLab</source>
+        <translation>%1%2 – Editor lekcí – RigidLab</translation>
+    </message>
+    <message>
+        <source>The lesson has unsaved changes. Save them?</source>
+        <translation>Lekce má neuložené změny. Uložit je?</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::LessonPlayer</name>
     <message>
         <source>◀ Back</source>
@@ -2980,6 +3159,22 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>&amp;Add a folder of lessons…</source>
         <translation>&amp;Přidat složku s lekcemi…</translation>
+    </message>
+    <message>
+        <source>New lesso&amp;n</source>
+        <translation>&amp;Nová lekce</translation>
+    </message>
+    <message>
+        <source>&amp;Edit lesson…</source>
+        <translation>&amp;Upravit lekci…</translation>
+    </message>
+    <message>
+        <source>Edit lesson</source>
+        <translation>Upravit lekci</translation>
+    </message>
+    <message>
+        <source>Lessons (*.rlesson *.json)</source>
+        <translation>Lekce (*.rlesson *.json)</translation>
     </message>
 </context>
 <context>
@@ -3879,7 +4074,7 @@ B&#xa0;%3 … %4</translation>
     </message>
     <message>
         <source>RigidLab scenes and lessons (*.json *.rlesson);;Lessons in one file (*.rlesson)</source>
-        <translation>Scény a lekce RigidLabu (*.json *.rlesson);;Lekce v jednom souboru (*.rlesson)</translation>
+        <translation>Scény a lekce RigidLabu (*.json *.rlesson);;Lekce v&#xa0;jednom souboru (*.rlesson)</translation>
     </message>
 </context>
 <context>
