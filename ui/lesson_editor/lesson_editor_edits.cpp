@@ -200,8 +200,11 @@ void LessonEditor::refreshLesson()
         for (int l = 0; l < 2; ++l) {
             QLineEdit* e = (*edits)[static_cast<std::size_t>(l)];
             const QString t = m_draft.text(-1, key, codeOf(l));
-            if (e->text() != t)
+            if (e->text() != t) {
                 e->setText(t);
+                if (!e->hasFocus())
+                    e->setCursorPosition(0); // the start of a long summary, not its end
+            }
         }
     m_minutes->setValue(m_draft.value(-1, QStringLiteral("minutes")).toInt());
 }

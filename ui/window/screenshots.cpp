@@ -2,6 +2,7 @@
 #include "window/screenshots.h"
 
 #include "editor/edit_tools.h"
+#include "lesson_editor/lesson_editor.h"
 #include "lesson_player/lesson_player.h"
 #include "measure/measurement_session.h"
 #include "plots/plot_widget.h"
@@ -154,6 +155,28 @@ public:
         m_index << name + QLatin1Char('\t') + what;
         return true;
     }
+    /// Shoots `widget`, a window of its own (the lesson editor), at the screenshots' size.
+    bool writeWindow(QWidget& widget, const QString& name, const QString& what)
+    {
+        widget.resize(m_options.size / widget.devicePixelRatioF());
+        settle(m_window);
+        QImage image = widget.grab().toImage();
+        if (image.size() != m_options.size)
+            image = image.copy(QRect(QPoint(0, 0), m_options.size));
+        QByteArray bytes;
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        const QString error = image.save(&buffer, "PNG")
+                                  ? lessons::writeFileAtomically(m_folder.filePath(name), bytes)
+                                  : Screenshots::tr("cannot encode %1 as PNG").arg(name);
+        if (!error.isEmpty()) {
+            m_result.error = error;
+            return false;
+        }
+        m_result.files << name;
+        m_index << name + QLatin1Char('\t') + what;
+        return true;
+    }
     bool writeIndex()
     {
         const QString error = lessons::writeFileAtomically(
@@ -273,6 +296,20 @@ bool shootMeasurement(MainWindow& window, Shooter& shooter)
                                          "and e fitted to it"));
 }
 
+/// The lesson editor on the first shipped lesson (opened as a copy), at its second step.
+bool shootLessonEditor(MainWindow& window, Shooter& shooter)
+{
+    QString error;
+    LessonEditor* editor = window.editLesson(window.lessonPlayer().lessonPaths().value(0), &error);
+    if (editor == nullptr)
+        return shooter.fail(error);
+    editor->selectStep(1);
+    const bool ok = shooter.writeWindow(*editor, QStringLiteral("lesson-editor.png"),
+                                        Screenshots::tr("the lesson editor on a shipped lesson"));
+    delete editor;
+    return ok;
+}
+
 } // namespace
 
 ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
@@ -321,6 +358,8 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
     if (options.classroom && !shootClassroom(window, shooter))
         return result;
     if (options.classroom && !shootMeasurement(window, shooter))
+        return result;
+    if (options.classroom && !shootLessonEditor(window, shooter))
         return result;
     result.ok = shooter.writeIndex();
     return result;
