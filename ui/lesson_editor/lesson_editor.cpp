@@ -261,7 +261,7 @@ void LessonEditor::buildActions()
     addAction(save);
     auto* saveAs = new QAction(tr("Save lesson &as…"), this);
     saveAs->setObjectName(QStringLiteral("lessonSaveAs"));
-    saveAs->setShortcut(QKeySequence::SaveAs);
+    saveAs->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
     connect(saveAs, &QAction::triggered, this, &LessonEditor::saveAsDialog);
     addAction(saveAs);
     // The same actions as buttons, so that the mouse finds them too.
