@@ -1446,6 +1446,10 @@
         <source>a measured drop over the simulated one, the residuals and e fitted to it</source>
         <translation>naměřený pád přes simulovaný, rezidua a&#xa0;e určené z&#xa0;měření</translation>
     </message>
+    <message>
+        <source>the lesson editor on a shipped lesson</source>
+        <translation>editor lekcí s dodanou lekcí</translation>
+    </message>
 </context>
 <context>
     <name>StatusWords</name>
