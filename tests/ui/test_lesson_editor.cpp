@@ -17,6 +17,8 @@
 #include "format/scene_compare.h"
 #include "format/scene_loader.h"
 
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDirIterator>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -120,6 +122,7 @@ private slots:
     // The editor's window, driven with keys and mouse.
     void widgetsTextsAndSteps();
     void widgetsUndoSaveAndTry();
+    void widgetsQuestions();
     // Shipped lessons.
     void shippedLessonsOpenAndSaveUnchanged_data();
     void shippedLessonsOpenAndSaveUnchanged();
@@ -377,9 +380,11 @@ void typeInto(QWidget* field, const QString& text, bool append = false)
 
 void TestLessonEditor::widgetsTextsAndSteps()
 {
-    // File › New lesson in the window opens the editor on the scene being edited.
+    // File › New lesson in the window opens the editor on the scene open in it.
     m_window = std::make_unique<ui::MainWindow>();
     m_window->show();
+    QCOMPARE(m_window->openScene(kSource + QStringLiteral("/lessons/scenes/four_balls.json"), true),
+             QString());
     QAction* create = m_window->findChild<QAction*>(QStringLiteral("newLesson"));
     QVERIFY(create != nullptr);
     create->trigger();
@@ -497,6 +502,58 @@ void TestLessonEditor::widgetsUndoSaveAndTry()
     QCOMPARE(static_cast<int>(w.lessonPlayer().lesson()->steps.size()), 3);
     QCOMPARE(w.lessonPlayer().stepIndex(), 1);
     QCOMPARE(ed->currentStep(), 1);
+}
+
+void TestLessonEditor::widgetsQuestions()
+{
+    QVERIFY(m_editor != nullptr);
+    ui::LessonEditor* ed = m_editor;
+    LessonDraft& d = ed->draft();
+    ed->selectStep(0);
+    const auto questions = [&d] { return d.value(0, QStringLiteral("questions")).toArray(); };
+
+    // A measured question: the body from the scene's bodies, the quantity from a list.
+    QTest::mouseClick(child<QPushButton>(*ed, QStringLiteral("addMeasuredQuestion")),
+                      Qt::LeftButton);
+    QCOMPARE(questions().size(), 1);
+    auto* body = child<QComboBox>(*ed, QStringLiteral("questionBody"));
+    QVERIFY(body->count() > 0);
+    body->setFocus();
+    QTest::keyClick(body, Qt::Key_End);
+    const QString chosen = body->currentData().toString();
+    QCOMPARE(questions().at(0).toObject().value(u"measure").toObject().value(u"body").toString(),
+             chosen);
+    auto* kind = child<QComboBox>(*ed, QStringLiteral("questionKind"));
+    kind->setFocus();
+    QTest::keyClick(kind, Qt::Key_Down); // speed → velocity x
+    QCOMPARE(questions().at(0).toObject().value(u"measure").toObject().value(u"kind").toString(),
+             QStringLiteral("velocity-x"));
+    typeInto(child<QLineEdit>(*ed, QStringLiteral("questionPrompt_cs")),
+             QStringLiteral("Jak rychle?"));
+    QCOMPARE(questions().at(0).toObject().value(u"prompt").toObject().value(u"cs").toString(),
+             QStringLiteral("Jak rychle?"));
+    // The lab's own answer beside the tolerance, or why it has none.
+    const QString answer = child<QLabel>(*ed, QStringLiteral("questionAnswer"))->text();
+    QVERIFY2(answer.contains(QStringLiteral("measures")) || answer.contains(u'⚠'),
+             qPrintable(answer));
+
+    // A predict-first question holds the run back; undone with the key, it is gone.
+    QTest::mouseClick(child<QPushButton>(*ed, QStringLiteral("addPredictQuestion")),
+                      Qt::LeftButton);
+    QCOMPARE(questions().size(), 2);
+    QVERIFY(
+        questions().at(1).toObject().value(u"holdBack").toArray().contains(QStringLiteral("run")));
+    QVERIFY(child<QCheckBox>(*ed, QStringLiteral("questionHoldRun"))->isChecked());
+    auto* steps = child<QListWidget>(*ed, QStringLiteral("lessonSteps"));
+    steps->setFocus();
+    QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(questions().size(), 1);
+    QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(questions().size(), 2);
+    QCOMPARE(ed->save(), QString());
+    ui::LessonEditor again;
+    QCOMPARE(again.open(ed->draft().path()), QString());
+    QCOMPARE(again.draft().value(0, QStringLiteral("questions")).toArray().size(), 2);
     ed->close();
     m_window.reset();
 }

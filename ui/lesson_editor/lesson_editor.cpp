@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/lesson_editor.h"
+#include "lesson_editor/question_editor.h"
 #include "lesson_player/step_text.h"
 
 #include "format/data_dirs.h"
@@ -235,7 +236,13 @@ QWidget* LessonEditor::buildStepTexts()
     }
     grid->setRowStretch(3, 2);
     grid->setRowStretch(5, 1);
-    return box;
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(box);
+    m_questions = new QuestionEditor(m_draft, split);
+    split->addWidget(m_questions);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    return split;
 }
 
 void LessonEditor::buildActions()

@@ -26,6 +26,7 @@ class QTimer;
 
 namespace rigidlab::ui {
 
+class QuestionEditor;
 class StepText;
 
 class LessonEditor : public QWidget {
@@ -40,6 +41,7 @@ public:
     void newLesson(const lessons::Scene& scene);
 
     int currentStep() const;
+    QuestionEditor& questions() { return *m_questions; }
     void selectStep(int index);
 
     /// Save: to the lesson's file, or asks where when it has none. Returns the error.
@@ -95,6 +97,7 @@ private:
     std::array<QLabel*, 2> m_missing{};
     std::array<StepText*, 2> m_preview{};
     QLabel* m_problems = nullptr;
+    QuestionEditor* m_questions = nullptr;
     QAction* m_undo = nullptr;
     QAction* m_redo = nullptr;
     QTimer* m_autosaveTimer = nullptr;

@@ -2,6 +2,7 @@
 // The lesson editor's window: edits made through its fields and buttons, and what it shows
 // read back from the draft after each one (an edit, an undo, a redo, an open).
 #include "lesson_editor/lesson_editor.h"
+#include "lesson_editor/question_editor.h"
 #include "lesson_player/step_text.h"
 
 #include "format/data_dirs.h"
@@ -282,6 +283,7 @@ void LessonEditor::refreshStepTexts()
         m_stepTitle[i]->setEnabled(step >= 0);
         m_stepText[i]->setEnabled(step >= 0);
     }
+    m_questions->setStep(step);
     m_refreshing = was;
 }
 
