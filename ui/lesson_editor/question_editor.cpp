@@ -105,7 +105,12 @@ QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
     layout->addWidget(label);
     layout->addWidget(m_list);
     layout->addLayout(buttons);
+    layout->addLayout(buildForm());
+    refresh();
+}
 
+QFormLayout* QuestionEditor::buildForm()
+{
     auto* form = new QFormLayout;
     for (int l = 0; l < 2; ++l) {
         auto* e = new QLineEdit(this);
@@ -152,14 +157,13 @@ QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
     form->addRow(tr("&Tolerance"), m_tolerance);
     form->addRow(m_holdRun);
     form->addRow(m_answer);
-    layout->addLayout(form);
     connect(m_kind, &QComboBox::activated, this, &QuestionEditor::edited);
     connect(m_body, &QComboBox::activated, this, &QuestionEditor::edited);
     connect(m_time, &QDoubleSpinBox::valueChanged, this, &QuestionEditor::edited);
     connect(m_unit, &QLineEdit::textEdited, this, &QuestionEditor::edited);
     connect(m_tolerance, &QDoubleSpinBox::valueChanged, this, &QuestionEditor::edited);
     connect(m_holdRun, &QCheckBox::toggled, this, &QuestionEditor::edited);
-    refresh();
+    return form;
 }
 
 void QuestionEditor::setStep(int step)
@@ -296,11 +300,10 @@ void QuestionEditor::refresh()
     const QJsonObject q = question();
     const QJsonObject measure = q.value(u"measure").toObject();
     const QJsonValue sceneRef = m_draft.value(m_step, QStringLiteral("scene"));
-    const QJsonObject scene = sceneRef.isObject()
-                                  ? sceneRef.toObject()
-                                  : m_draft.pack().scenes.count(sceneRef.toString()) != 0
-                                        ? m_draft.pack().scenes.at(sceneRef.toString())
-                                        : QJsonObject();
+    const QJsonObject scene = sceneRef.isObject() ? sceneRef.toObject()
+                              : m_draft.pack().scenes.count(sceneRef.toString()) != 0
+                                  ? m_draft.pack().scenes.at(sceneRef.toString())
+                                  : QJsonObject();
     m_body->clear();
     for (const QJsonValue b : scene.value(u"bodies").toArray()) {
         const QString id = b.toObject().value(u"id").toString();

@@ -14,6 +14,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QLineEdit;
 class QListWidget;
@@ -36,6 +37,7 @@ public:
     void removeQuestion();
 
 private:
+    QFormLayout* buildForm();
     QJsonObject question() const;
     /// Replaces the selected question by `q`, one undoable edit.
     void store(const QJsonObject& q);
