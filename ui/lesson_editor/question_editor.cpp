@@ -207,11 +207,11 @@ void QuestionEditor::addQuestion(bool predict)
     QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}, {QStringLiteral("time"), 1}};
     if (m_body->count() > 0)
         measure.insert(QStringLiteral("body"), m_body->itemData(0).toString());
-    QJsonObject q{{QStringLiteral("prompt"),
-                   QJsonObject{{QStringLiteral("en"), tr("How fast is it at 1 s?")}}},
-                  {QStringLiteral("measure"), measure},
-                  {QStringLiteral("unit"), QLatin1String(k.unit)},
-                  {QStringLiteral("tolerance"), 0.05}};
+    QJsonObject q{
+        {QStringLiteral("prompt"), QJsonObject{{shownLanguage(), tr("How fast is it at 1 s?")}}},
+        {QStringLiteral("measure"), measure},
+        {QStringLiteral("unit"), QLatin1String(k.unit)},
+        {QStringLiteral("tolerance"), 0.05}};
     if (predict)
         q.insert(QStringLiteral("holdBack"), QJsonArray{QStringLiteral("run")});
     all.append(q);
