@@ -3653,6 +3653,157 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::QuestionEditor</name>
+    <message>
+        <source>height of a bounce&apos;s top</source>
+        <translation>výška vrcholu odskoku</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>rychlost</translation>
+    </message>
+    <message>
+        <source>velocity x</source>
+        <translation>rychlost x</translation>
+    </message>
+    <message>
+        <source>velocity y</source>
+        <translation>rychlost y</translation>
+    </message>
+    <message>
+        <source>angular velocity</source>
+        <translation>úhlová rychlost</translation>
+    </message>
+    <message>
+        <source>position x</source>
+        <translation>poloha x</translation>
+    </message>
+    <message>
+        <source>position y</source>
+        <translation>poloha y</translation>
+    </message>
+    <message>
+        <source>energy drift</source>
+        <translation>energetický drift</translation>
+    </message>
+    <message>
+        <source>momentum x</source>
+        <translation>hybnost x</translation>
+    </message>
+    <message>
+        <source>momentum y</source>
+        <translation>hybnost y</translation>
+    </message>
+    <message>
+        <source>&amp;Questions of the step</source>
+        <translation>&amp;Otázky kroku</translation>
+    </message>
+    <message>
+        <source>Questions of the step</source>
+        <translation>Otázky kroku</translation>
+    </message>
+    <message>
+        <source>Add a &amp;measured question</source>
+        <translation>Přidat &amp;měřenou otázku</translation>
+    </message>
+    <message>
+        <source>Add a &amp;predict-first question</source>
+        <translation>Přidat otázku s&#xa0;&amp;předpovědí</translation>
+    </message>
+    <message>
+        <source>Remove &amp;question</source>
+        <translation>Odebrat &amp;otázku</translation>
+    </message>
+    <message>
+        <source>Question (Czech)</source>
+        <translation>Otázka (česky)</translation>
+    </message>
+    <message>
+        <source>Question (English)</source>
+        <translation>Otázka (anglicky)</translation>
+    </message>
+    <message>
+        <source>What is measured</source>
+        <translation>Co se měří</translation>
+    </message>
+    <message>
+        <source>Body measured</source>
+        <translation>Měřené těleso</translation>
+    </message>
+    <message>
+        <source>Time of the measurement</source>
+        <translation>Čas měření</translation>
+    </message>
+    <message>
+        <source>Unit of the answer</source>
+        <translation>Jednotka odpovědi</translation>
+    </message>
+    <message>
+        <source>Tolerance of the answer</source>
+        <translation>Tolerance odpovědi</translation>
+    </message>
+    <message>
+        <source>Predict first: the run waits until it is answered</source>
+        <translation>Nejdřív předpověď: simulace počká, až student odpoví</translation>
+    </message>
+    <message>
+        <source>The answer the lab measures</source>
+        <translation>Odpověď, kterou laboratoř naměří</translation>
+    </message>
+    <message>
+        <source>&amp;Measured</source>
+        <translation>&amp;Měří se</translation>
+    </message>
+    <message>
+        <source>&amp;Body</source>
+        <translation>&amp;Těleso</translation>
+    </message>
+    <message>
+        <source>&amp;At time</source>
+        <translation>&amp;V čase</translation>
+    </message>
+    <message>
+        <source>&amp;Unit</source>
+        <translation>&amp;Jednotka</translation>
+    </message>
+    <message>
+        <source>&amp;Tolerance</source>
+        <translation>T&amp;olerance</translation>
+    </message>
+    <message>
+        <source>question</source>
+        <translation>otázka</translation>
+    </message>
+    <message>
+        <source>How fast is it at 1 s?</source>
+        <translation>Jak rychle se pohybuje v&#xa0;čase 1&#xa0;s?</translation>
+    </message>
+    <message>
+        <source>%1. %2 (predict first)</source>
+        <translation>%1. %2 (nejdřív předpověď)</translation>
+    </message>
+    <message>
+        <source>%1 (not in the scene)</source>
+        <translation>%1 (ve scéně není)</translation>
+    </message>
+    <message>
+        <source>This step asks no question.</source>
+        <translation>Tento krok se na nic neptá.</translation>
+    </message>
+    <message>
+        <source>⚠ The lab cannot measure it: %1</source>
+        <translation>⚠ Laboratoř to nemůže změřit: %1</translation>
+    </message>
+    <message>
+        <source>⚠ The run does not get there (or diverges first): raise the step&apos;s export time or choose an earlier time.</source>
+        <translation>⚠ Simulace tam nedoběhne (nebo se dřív rozběhne): prodlužte čas exportu kroku nebo zvolte dřívější čas.</translation>
+    </message>
+    <message>
+        <source>The lab measures %1 %3; answers from %2 to %4 %3 are right.</source>
+        <translation>Laboratoř naměří %1&#xa0;%3; správně jsou odpovědi od %2 do %4&#xa0;%3.</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::SatPanel</name>
     <message>
         <source>◀ Previous</source>
