@@ -105,7 +105,12 @@ QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
     layout->addWidget(label);
     layout->addWidget(m_list);
     layout->addLayout(buttons);
-    layout->addLayout(buildForm());
+    // The selected question's fields, shown only when there is one to edit.
+    m_form = new QWidget(this);
+    m_form->setLayout(buildForm());
+    m_form->layout()->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_form);
+    layout->addWidget(m_answer);
     refresh();
 }
 
@@ -156,7 +161,6 @@ QFormLayout* QuestionEditor::buildForm()
     form->addRow(tr("&Unit"), m_unit);
     form->addRow(tr("&Tolerance"), m_tolerance);
     form->addRow(m_holdRun);
-    form->addRow(m_answer);
     connect(m_kind, &QComboBox::activated, this, &QuestionEditor::edited);
     connect(m_body, &QComboBox::activated, this, &QuestionEditor::edited);
     connect(m_time, &QDoubleSpinBox::valueChanged, this, &QuestionEditor::edited);
@@ -329,9 +333,7 @@ void QuestionEditor::refresh()
     m_tolerance->setValue(q.value(u"tolerance").toDouble(0.05) * 100.0);
     m_holdRun->setChecked(q.value(u"holdBack").toArray().contains(QStringLiteral("run")));
     const bool any = currentQuestion() >= 0;
-    for (QWidget* w : std::initializer_list<QWidget*>{m_prompt[0], m_prompt[1], m_kind, m_unit,
-                                                      m_tolerance, m_holdRun})
-        w->setEnabled(any);
+    m_form->setVisible(any);
     m_refreshing = false;
     showAnswer();
 }

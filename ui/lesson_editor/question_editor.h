@@ -56,6 +56,7 @@ private:
     QDoubleSpinBox* m_tolerance = nullptr;
     QCheckBox* m_holdRun = nullptr;
     QLabel* m_answer = nullptr;
+    QWidget* m_form = nullptr; ///< the selected question's fields
     QJsonObject m_measuredFor; ///< what the answer shown was measured for
 };
 
