@@ -234,8 +234,11 @@ QWidget* LessonEditor::buildStepTexts()
         m_missing[static_cast<std::size_t>(l)] = missing;
         m_preview[static_cast<std::size_t>(l)] = preview;
     }
-    grid->setRowStretch(3, 2);
-    grid->setRowStretch(5, 1);
+    // The text being written gets more room than its preview.
+    grid->setRowStretch(3, 3);
+    grid->setRowStretch(5, 2);
+    for (StepText* preview : m_preview)
+        preview->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Ignored);
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(box);
     m_questions = new QuestionEditor(m_draft, split);
