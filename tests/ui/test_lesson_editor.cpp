@@ -12,6 +12,7 @@
 #include "plots/lesson_export.h"
 #include "test_files.h"
 #include "window/main_window.h"
+#include "window/screenshots.h"
 
 #include "format/lesson_pack.h"
 #include "format/scene_compare.h"
@@ -123,6 +124,7 @@ private slots:
     void widgetsTextsAndSteps();
     void widgetsUndoSaveAndTry();
     void widgetsQuestions();
+    void screenshotOfTheEditor();
     // Shipped lessons.
     void shippedLessonsOpenAndSaveUnchanged_data();
     void shippedLessonsOpenAndSaveUnchanged();
@@ -556,6 +558,21 @@ void TestLessonEditor::widgetsQuestions()
     QCOMPARE(again.draft().value(0, QStringLiteral("questions")).toArray().size(), 2);
     ed->close();
     m_window.reset();
+}
+
+void TestLessonEditor::screenshotOfTheEditor()
+{
+    // rigidlab --screenshots writes the lesson editor at the size asked for.
+    ui::ScreenshotOptions options;
+    options.folder = m_dir.filePath(QStringLiteral("shots"));
+    options.size = QSize(1024, 768);
+    options.welcome = false;
+    options.lessons = QStringList{};
+    const ui::ScreenshotResult r = ui::writeScreenshots(options);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QVERIFY2(r.files.contains(QStringLiteral("lesson-editor.png")), qPrintable(r.files.join(u' ')));
+    const QImage image(m_dir.filePath(QStringLiteral("shots/lesson-editor.png")));
+    QCOMPARE(image.size(), QSize(1024, 768));
 }
 
 RIGIDLAB_TEST_MAIN(TestLessonEditor)
