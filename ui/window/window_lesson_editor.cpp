@@ -19,7 +19,6 @@ void MainWindow::addLessonEditorEntries(QMenu& file)
 {
     QAction* create = file.addAction(tr("New lesso&n"), this, [this] { editLesson(QString()); });
     create->setObjectName(QStringLiteral("newLesson"));
-    create->setShortcut(QKeySequence(QStringLiteral("Ctrl+Alt+N")));
     QAction* edit = file.addAction(tr("&Edit lesson…"), this, [this] {
         const QString path = QFileDialog::getOpenFileName(
             this, tr("Edit lesson"), lessons::userLessonsDir(), tr("Lessons (*.rlesson *.json)"));
@@ -28,7 +27,6 @@ void MainWindow::addLessonEditorEntries(QMenu& file)
             QMessageBox::warning(this, tr("Edit lesson"), error);
     });
     edit->setObjectName(QStringLiteral("editLesson"));
-    edit->setShortcut(QKeySequence(QStringLiteral("Ctrl+Alt+E")));
 }
 
 LessonEditor* MainWindow::editLesson(const QString& path, QString* error)
