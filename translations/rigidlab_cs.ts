@@ -1718,6 +1718,10 @@ n = (%4; %5)</translation>
         <source>the ruler between the two balls' starting centres</source>
         <translation>pravítko mezi počátečními středy obou koulí</translation>
     </message>
+    <message>
+        <source>the lesson editor on a shipped lesson</source>
+        <translation>editor lekcí s dodanou lekcí</translation>
+    </message>
 </context>
 <context>
     <name>StatusWords</name>
@@ -3329,6 +3333,185 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::LessonEditor</name>
+    <message>
+        <source>Czech</source>
+        <translation>čeština</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>angličtina</translation>
+    </message>
+    <message>
+        <source>Lesson editor</source>
+        <translation>Editor lekcí</translation>
+    </message>
+    <message>
+        <source>Problems of the lesson</source>
+        <translation>Problémy lekce</translation>
+    </message>
+    <message>
+        <source>Lesson &amp;title</source>
+        <translation>&amp;Název lekce</translation>
+    </message>
+    <message>
+        <source>S&amp;ummary</source>
+        <translation>&amp;Shrnutí</translation>
+    </message>
+    <message>
+        <source>&amp;Level</source>
+        <translation>Ú&amp;roveň</translation>
+    </message>
+    <message>
+        <source>&amp;Minutes</source>
+        <translation>&amp;Minuty</translation>
+    </message>
+    <message>
+        <source>not said</source>
+        <translation>neuvedeno</translation>
+    </message>
+    <message>
+        <source>&#xa0;min</source>
+        <translation>&#xa0;min</translation>
+    </message>
+    <message>
+        <source>Minutes the lesson takes</source>
+        <translation>Kolik minut lekce trvá</translation>
+    </message>
+    <message>
+        <source>minutes</source>
+        <translation>minuty</translation>
+    </message>
+    <message>
+        <source>S&amp;teps</source>
+        <translation>&amp;Kroky</translation>
+    </message>
+    <message>
+        <source>Steps of the lesson</source>
+        <translation>Kroky lekce</translation>
+    </message>
+    <message>
+        <source>&amp;Add step</source>
+        <translation>&amp;Přidat krok</translation>
+    </message>
+    <message>
+        <source>&amp;Remove step</source>
+        <translation>&amp;Odebrat krok</translation>
+    </message>
+    <message>
+        <source>Move &amp;up</source>
+        <translation>Posunout na&amp;horu</translation>
+    </message>
+    <message>
+        <source>Move do&amp;wn</source>
+        <translation>Posunout &amp;dolů</translation>
+    </message>
+    <message>
+        <source>&amp;Duplicate step</source>
+        <translation>&amp;Zdvojit krok</translation>
+    </message>
+    <message>
+        <source>Try as a &amp;student</source>
+        <translation>Vyzkoušet jako s&amp;tudent</translation>
+    </message>
+    <message>
+        <source>Step title (%1)</source>
+        <translation>Název kroku (%1)</translation>
+    </message>
+    <message>
+        <source>Step text (%1)</source>
+        <translation>Text kroku (%1)</translation>
+    </message>
+    <message>
+        <source>⚠ %1: not written yet</source>
+        <translation>⚠ %1: zatím nenapsáno</translation>
+    </message>
+    <message>
+        <source>%1: not written yet</source>
+        <translation>%1: zatím nenapsáno</translation>
+    </message>
+    <message>
+        <source>Preview (%1)</source>
+        <translation>Náhled (%1)</translation>
+    </message>
+    <message>
+        <source>As the student sees it (%1)</source>
+        <translation>Jak to uvidí student (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Zpět</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>Z&amp;novu</translation>
+    </message>
+    <message>
+        <source>&amp;Save lesson</source>
+        <translation>&amp;Uložit lekci</translation>
+    </message>
+    <message>
+        <source>Save lesson &amp;as…</source>
+        <translation>Uložit lekci &amp;jako…</translation>
+    </message>
+    <message>
+        <source>New lesson</source>
+        <translation>Nová lekce</translation>
+    </message>
+    <message>
+        <source>Save lesson</source>
+        <translation>Uložit lekci</translation>
+    </message>
+    <message>
+        <source>lesson</source>
+        <translation>lekce</translation>
+    </message>
+    <message>
+        <source>Save lesson as</source>
+        <translation>Uložit lekci jako</translation>
+    </message>
+    <message>
+        <source>Lessons in one file (*.rlesson)</source>
+        <translation>Lekce v&#xa0;jednom souboru (*.rlesson)</translation>
+    </message>
+    <message>
+        <source>Try as a student</source>
+        <translation>Vyzkoušet jako student</translation>
+    </message>
+    <message>
+        <source>no %1</source>
+        <translation>chybí %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n problem(s)</source>
+        <translation>
+            <numerusform>%n problém</numerusform>
+            <numerusform>%n problémy</numerusform>
+            <numerusform>%n problémů</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>%1. %2 — ⚠ %3</source>
+        <translation>%1. %2 — ⚠ %3</translation>
+    </message>
+    <message>
+        <source>No problems found.</source>
+        <translation>Žádné problémy.</translation>
+    </message>
+    <message>
+        <source>new lesson</source>
+        <translation>nová lekce</translation>
+    </message>
+    <message>
+        <source>%1%2 — Lesson editor — RigidLab</source>
+        <translation>%1%2 – Editor lekcí – RigidLab</translation>
+    </message>
+    <message>
+        <source>The lesson has unsaved changes. Save them?</source>
+        <translation>Lekce má neuložené změny. Uložit je?</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::LessonPlayer</name>
     <message>
         <source>◀ Back</source>
@@ -3767,6 +3950,22 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     <message>
         <source>&amp;Add a folder of lessons…</source>
         <translation>&amp;Přidat složku s lekcemi…</translation>
+    </message>
+    <message>
+        <source>New lesso&amp;n</source>
+        <translation>&amp;Nová lekce</translation>
+    </message>
+    <message>
+        <source>&amp;Edit lesson…</source>
+        <translation>&amp;Upravit lekci…</translation>
+    </message>
+    <message>
+        <source>Edit lesson</source>
+        <translation>Upravit lekci</translation>
+    </message>
+    <message>
+        <source>Lessons (*.rlesson *.json)</source>
+        <translation>Lekce (*.rlesson *.json)</translation>
     </message>
 </context>
 <context>
@@ -4297,6 +4496,157 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::QuestionEditor</name>
+    <message>
+        <source>height of a bounce&apos;s top</source>
+        <translation>výška vrcholu odskoku</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>rychlost</translation>
+    </message>
+    <message>
+        <source>velocity x</source>
+        <translation>rychlost x</translation>
+    </message>
+    <message>
+        <source>velocity y</source>
+        <translation>rychlost y</translation>
+    </message>
+    <message>
+        <source>angular velocity</source>
+        <translation>úhlová rychlost</translation>
+    </message>
+    <message>
+        <source>position x</source>
+        <translation>poloha x</translation>
+    </message>
+    <message>
+        <source>position y</source>
+        <translation>poloha y</translation>
+    </message>
+    <message>
+        <source>energy drift</source>
+        <translation>energetický drift</translation>
+    </message>
+    <message>
+        <source>momentum x</source>
+        <translation>hybnost x</translation>
+    </message>
+    <message>
+        <source>momentum y</source>
+        <translation>hybnost y</translation>
+    </message>
+    <message>
+        <source>&amp;Questions of the step</source>
+        <translation>&amp;Otázky kroku</translation>
+    </message>
+    <message>
+        <source>Questions of the step</source>
+        <translation>Otázky kroku</translation>
+    </message>
+    <message>
+        <source>Add a &amp;measured question</source>
+        <translation>Přidat &amp;měřenou otázku</translation>
+    </message>
+    <message>
+        <source>Add a &amp;predict-first question</source>
+        <translation>Přidat otázku s&#xa0;&amp;předpovědí</translation>
+    </message>
+    <message>
+        <source>Remove &amp;question</source>
+        <translation>Odebrat &amp;otázku</translation>
+    </message>
+    <message>
+        <source>Question (Czech)</source>
+        <translation>Otázka (česky)</translation>
+    </message>
+    <message>
+        <source>Question (English)</source>
+        <translation>Otázka (anglicky)</translation>
+    </message>
+    <message>
+        <source>What is measured</source>
+        <translation>Co se měří</translation>
+    </message>
+    <message>
+        <source>Body measured</source>
+        <translation>Měřené těleso</translation>
+    </message>
+    <message>
+        <source>Time of the measurement</source>
+        <translation>Čas měření</translation>
+    </message>
+    <message>
+        <source>Unit of the answer</source>
+        <translation>Jednotka odpovědi</translation>
+    </message>
+    <message>
+        <source>Tolerance of the answer</source>
+        <translation>Tolerance odpovědi</translation>
+    </message>
+    <message>
+        <source>Predict first: the run waits until it is answered</source>
+        <translation>Nejdřív předpověď: simulace počká, až student odpoví</translation>
+    </message>
+    <message>
+        <source>The answer the lab measures</source>
+        <translation>Odpověď, kterou laboratoř naměří</translation>
+    </message>
+    <message>
+        <source>&amp;Measured</source>
+        <translation>&amp;Měří se</translation>
+    </message>
+    <message>
+        <source>&amp;Body</source>
+        <translation>&amp;Těleso</translation>
+    </message>
+    <message>
+        <source>&amp;At time</source>
+        <translation>&amp;V čase</translation>
+    </message>
+    <message>
+        <source>&amp;Unit</source>
+        <translation>&amp;Jednotka</translation>
+    </message>
+    <message>
+        <source>&amp;Tolerance</source>
+        <translation>T&amp;olerance</translation>
+    </message>
+    <message>
+        <source>question</source>
+        <translation>otázka</translation>
+    </message>
+    <message>
+        <source>How fast is it at 1 s?</source>
+        <translation>Jak rychle se pohybuje v&#xa0;čase 1&#xa0;s?</translation>
+    </message>
+    <message>
+        <source>%1. %2 (predict first)</source>
+        <translation>%1. %2 (nejdřív předpověď)</translation>
+    </message>
+    <message>
+        <source>%1 (not in the scene)</source>
+        <translation>%1 (ve scéně není)</translation>
+    </message>
+    <message>
+        <source>This step asks no question.</source>
+        <translation>Tento krok se na nic neptá.</translation>
+    </message>
+    <message>
+        <source>⚠ The lab cannot measure it: %1</source>
+        <translation>⚠ Laboratoř to nemůže změřit: %1</translation>
+    </message>
+    <message>
+        <source>⚠ The run does not get there (or diverges first): raise the step&apos;s export time or choose an earlier time.</source>
+        <translation>⚠ Simulace tam nedoběhne (nebo se dřív rozběhne): prodlužte čas exportu kroku nebo zvolte dřívější čas.</translation>
+    </message>
+    <message>
+        <source>The lab measures %1 %3; answers from %2 to %4 %3 are right.</source>
+        <translation>Laboratoř naměří %1&#xa0;%3; správně jsou odpovědi od %2 do %4&#xa0;%3.</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::SatPanel</name>
     <message>
         <source>◀ Previous</source>
@@ -4773,7 +5123,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>RigidLab scenes and lessons (*.json *.rlesson);;Lessons in one file (*.rlesson)</source>
-        <translation>Scény a lekce RigidLabu (*.json *.rlesson);;Lekce v jednom souboru (*.rlesson)</translation>
+        <translation>Scény a lekce RigidLabu (*.json *.rlesson);;Lekce v&#xa0;jednom souboru (*.rlesson)</translation>
     </message>
 </context>
 <context>

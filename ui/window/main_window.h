@@ -38,6 +38,7 @@ class ControlPanel;
 class EditTools;
 class InspectorPanel;
 class Instruments;
+class LessonEditor;
 class LessonPlayer;
 class LessonSession;
 class MeasurementSession;
@@ -99,6 +100,10 @@ public:
     /// Opens a lesson at its first step; returns the error, empty on success.
     QString openLesson(const QString& path, bool quiet = false);
     LessonPlayer& lessonPlayer() { return *m_player; }
+    /// The lesson editor in a window of its own, on the lesson at `path` (a new lesson on the
+    /// scene being edited when empty); Try as a student plays its lesson here. Returns it, or
+    /// nullptr with `error` set when the lesson does not open.
+    LessonEditor* editLesson(const QString& path, QString* error = nullptr);
     SatPanel& satPanel() { return *m_sat; }
     BouncePanel& bouncePanel() { return *m_bounces; }
     CollisionPanel& collisionPanel() { return *m_collision; }
@@ -168,6 +173,8 @@ private:
     void wirePanels();
     void buildMenus();
     void buildFileMenu();
+    /// File › New lesson and Edit lesson…: the lesson editor (window_lesson_editor.cpp).
+    void addLessonEditorEntries(QMenu& file);
     void buildEditMenu();
     void buildViewMenu();
     void buildHelpMenu();

@@ -65,6 +65,7 @@ void MainWindow::buildFileMenu()
           "openScene");
     named(file->addAction(tr("Open &lesson…"), m_session, &LessonSession::openLessonDialog),
           "openLesson");
+    addLessonEditorEntries(*file);
     file->addAction(m_measurement->importAction());
     QMenu* lessonsMenu = file->addMenu(tr("Le&ssons"));
     // Filled as it opens: a folder of lessons added since lists its lessons at once.

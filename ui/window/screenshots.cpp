@@ -4,6 +4,7 @@
 #include "editor/edit_tools.h"
 #include "instruments/instruments.h"
 #include "instruments/instruments_panel.h"
+#include "lesson_editor/lesson_editor.h"
 #include "lesson_player/lesson_player.h"
 #include "measure/measurement_session.h"
 #include "plots/plot_widget.h"
@@ -148,6 +149,28 @@ public:
     bool write(const QString& name, const QString& what, QWidget* over = nullptr)
     {
         const QString error = shoot(m_window, m_options.size, m_folder.filePath(name), over);
+        if (!error.isEmpty()) {
+            m_result.error = error;
+            return false;
+        }
+        m_result.files << name;
+        m_index << name + QLatin1Char('\t') + what;
+        return true;
+    }
+    /// Shoots `widget`, a window of its own (the lesson editor), at the screenshots' size.
+    bool writeWindow(QWidget& widget, const QString& name, const QString& what)
+    {
+        widget.resize(m_options.size / widget.devicePixelRatioF());
+        settle(m_window);
+        QImage image = widget.grab().toImage();
+        if (image.size() != m_options.size)
+            image = image.copy(QRect(QPoint(0, 0), m_options.size));
+        QByteArray bytes;
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        const QString error = image.save(&buffer, "PNG")
+                                  ? lessons::writeFileAtomically(m_folder.filePath(name), bytes)
+                                  : Screenshots::tr("cannot encode %1 as PNG").arg(name);
         if (!error.isEmpty()) {
             m_result.error = error;
             return false;
@@ -309,6 +332,20 @@ bool shootInstruments(MainWindow& window, Shooter& shooter)
     return ruler;
 }
 
+/// The lesson editor on the first shipped lesson (opened as a copy), at its second step.
+bool shootLessonEditor(MainWindow& window, Shooter& shooter)
+{
+    QString error;
+    LessonEditor* editor = window.editLesson(window.lessonPlayer().lessonPaths().value(0), &error);
+    if (editor == nullptr)
+        return shooter.fail(error);
+    editor->selectStep(1);
+    const bool ok = shooter.writeWindow(*editor, QStringLiteral("lesson-editor.png"),
+                                        Screenshots::tr("the lesson editor on a shipped lesson"));
+    delete editor;
+    return ok;
+}
+
 } // namespace
 
 ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
@@ -359,6 +396,8 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
     if (options.classroom && !shootClassroom(window, shooter))
         return result;
     if (options.classroom && !shootMeasurement(window, shooter))
+        return result;
+    if (options.classroom && !shootLessonEditor(window, shooter))
         return result;
     result.ok = shooter.writeIndex();
     return result;

@@ -1,0 +1,300 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lesson_editor/lesson_editor.h"
+#include "lesson_editor/question_editor.h"
+#include "lesson_player/step_text.h"
+
+#include "format/data_dirs.h"
+#include "run/measurements.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QGridLayout>
+#include <QHBoxLayout>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStyle>
+#include <QTimer>
+#include <QUndoStack>
+#include <QVBoxLayout>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// The two languages side by side: Czech on the left, English on the right.
+constexpr std::array<const char*, 2> kCodes{"cs", "en"};
+
+QString code(int language)
+{
+    return QString::fromLatin1(kCodes[static_cast<std::size_t>(language)]);
+}
+
+QString languageName(int language)
+{
+    return language == 0 ? LessonEditor::tr("Czech") : LessonEditor::tr("English");
+}
+
+/// How often the unsaved lesson is written to the autosave [ms].
+constexpr int kAutosaveMs = 30'000;
+
+} // namespace
+
+LessonEditor::LessonEditor(QWidget* parent) : QWidget(parent, Qt::Window)
+{
+    setObjectName(QStringLiteral("lessonEditor"));
+    setAccessibleName(tr("Lesson editor"));
+    m_autosavePath = QDir(lessons::userDataDir()).filePath(QStringLiteral("autosave.rlesson"));
+
+    auto* layout = new QVBoxLayout(this);
+    auto* grid = new QGridLayout;
+    buildLessonFields(*grid);
+    layout->addLayout(grid);
+    auto* split = new QSplitter(Qt::Horizontal, this);
+    split->addWidget(buildStepList());
+    split->addWidget(buildStepTexts());
+    split->setStretchFactor(1, 3);
+    layout->addWidget(split, 1);
+    m_problems = new QLabel(this);
+    m_problems->setObjectName(QStringLiteral("lessonProblems"));
+    m_problems->setWordWrap(true);
+    m_problems->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
+    m_problems->setAccessibleName(tr("Problems of the lesson"));
+    layout->addWidget(m_problems);
+    buildActions();
+
+    m_autosaveTimer = new QTimer(this);
+    m_autosaveTimer->setInterval(kAutosaveMs);
+    connect(m_autosaveTimer, &QTimer::timeout, this, &LessonEditor::autosave);
+    m_autosaveTimer->start();
+    connect(&m_draft, &LessonDraft::changed, this, &LessonEditor::refresh);
+    refresh();
+}
+
+void LessonEditor::buildLessonFields(QGridLayout& grid)
+{
+    for (int l = 0; l < 2; ++l) {
+        auto* head = new QLabel(languageName(l), this);
+        grid.addWidget(head, 0, l + 1);
+    }
+    const std::array<std::pair<QString, std::array<QLineEdit*, 2>*>, 3> rows{{
+        {tr("Lesson &title"), &m_title},
+        {tr("S&ummary"), &m_summary},
+        {tr("&Level"), &m_level},
+    }};
+    const std::array<QString, 3> keys{QStringLiteral("title"), QStringLiteral("summary"),
+                                      QStringLiteral("level")};
+    for (int r = 0; r < 3; ++r) {
+        auto* label = new QLabel(rows[r].first, this);
+        grid.addWidget(label, r + 1, 0);
+        for (int l = 0; l < 2; ++l) {
+            auto* edit = new QLineEdit(this);
+            QString plain = rows[r].first;
+            plain.remove(u'&');
+            edit->setAccessibleName(QStringLiteral("%1 (%2)").arg(plain, languageName(l)));
+            edit->setObjectName(QStringLiteral("lesson_%1_%2").arg(keys[r], code(l)));
+            edit->installEventFilter(this);
+            if (l == 0)
+                label->setBuddy(edit);
+            connect(edit, &QLineEdit::textEdited, this,
+                    [this, key = keys[r], l](const QString& t) { textEdited(-1, key, l, t); });
+            (*rows[r].second)[static_cast<std::size_t>(l)] = edit;
+            grid.addWidget(edit, r + 1, l + 1);
+        }
+    }
+    auto* minutesLabel = new QLabel(tr("&Minutes"), this);
+    m_minutes = new QSpinBox(this);
+    m_minutes->setObjectName(QStringLiteral("lessonMinutes"));
+    m_minutes->setRange(0, 600);
+    m_minutes->setSpecialValueText(tr("not said"));
+    m_minutes->setSuffix(tr("\u00a0min"));
+    m_minutes->setAccessibleName(tr("Minutes the lesson takes"));
+    minutesLabel->setBuddy(m_minutes);
+    connect(m_minutes, &QSpinBox::valueChanged, this, [this](int v) {
+        if (!m_refreshing)
+            m_draft.setValue(-1, QStringLiteral("minutes"), v > 0 ? QJsonValue(v) : QJsonValue(),
+                             tr("minutes"));
+    });
+    grid.addWidget(minutesLabel, 4, 0);
+    grid.addWidget(m_minutes, 4, 1);
+}
+
+QPushButton* LessonEditor::makeButton(const QString& text, const QString& name,
+                                      const QKeySequence& keys, void (LessonEditor::*slot)())
+{
+    auto* button = new QPushButton(text, this);
+    button->setObjectName(name);
+    QString plain = text;
+    plain.remove(u'&');
+    button->setAccessibleName(plain);
+    button->setToolTip(
+        QStringLiteral("%1 (%2)").arg(plain, keys.toString(QKeySequence::NativeText)));
+    connect(button, &QPushButton::clicked, this, slot);
+    auto* action = new QAction(this);
+    action->setShortcut(keys);
+    action->setShortcutContext(Qt::WindowShortcut);
+    connect(action, &QAction::triggered, this, slot);
+    addAction(action);
+    return button;
+}
+
+QWidget* LessonEditor::buildStepList()
+{
+    auto* box = new QWidget(this);
+    auto* layout = new QVBoxLayout(box);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* label = new QLabel(tr("S&teps"), box);
+    m_steps = new QListWidget(box);
+    m_steps->setObjectName(QStringLiteral("lessonSteps"));
+    m_steps->setAccessibleName(tr("Steps of the lesson"));
+    label->setBuddy(m_steps);
+    connect(m_steps, &QListWidget::currentRowChanged, this, [this] {
+        if (!m_refreshing)
+            refreshStepTexts();
+    });
+    layout->addWidget(label);
+    layout->addWidget(m_steps, 1);
+    auto* buttons = new QGridLayout;
+    buttons->addWidget(makeButton(tr("&Add step"), QStringLiteral("addStep"),
+                                  QKeySequence(QStringLiteral("Ctrl+Shift+N")),
+                                  &LessonEditor::addStep),
+                       0, 0);
+    buttons->addWidget(makeButton(tr("&Remove step"), QStringLiteral("removeStep"),
+                                  QKeySequence(QStringLiteral("Ctrl+Del")),
+                                  &LessonEditor::removeStep),
+                       0, 1);
+    buttons->addWidget(makeButton(tr("Move &up"), QStringLiteral("moveStepUp"),
+                                  QKeySequence(QStringLiteral("Alt+Up")), &LessonEditor::moveUp),
+                       1, 0);
+    buttons->addWidget(makeButton(tr("Move do&wn"), QStringLiteral("moveStepDown"),
+                                  QKeySequence(QStringLiteral("Alt+Down")),
+                                  &LessonEditor::moveDown),
+                       1, 1);
+    buttons->addWidget(makeButton(tr("&Duplicate step"), QStringLiteral("duplicateStep"),
+                                  QKeySequence(QStringLiteral("Ctrl+D")),
+                                  &LessonEditor::duplicateStep),
+                       2, 0);
+    buttons->addWidget(makeButton(tr("Try as a &student"), QStringLiteral("tryAsStudent"),
+                                  QKeySequence(QStringLiteral("F5")), &LessonEditor::trySelected),
+                       2, 1);
+    layout->addLayout(buttons);
+    return box;
+}
+
+QWidget* LessonEditor::buildStepTexts()
+{
+    auto* box = new QWidget(this);
+    auto* grid = new QGridLayout(box);
+    grid->setContentsMargins(0, 0, 0, 0);
+    for (int l = 0; l < 2; ++l) {
+        const QString lang = languageName(l);
+        auto* titleLabel = new QLabel(tr("Step title (%1)").arg(lang), box);
+        auto* title = new QLineEdit(box);
+        title->setObjectName(QStringLiteral("stepTitle_%1").arg(code(l)));
+        title->setAccessibleName(tr("Step title (%1)").arg(lang));
+        titleLabel->setBuddy(title);
+        title->installEventFilter(this);
+        connect(title, &QLineEdit::textEdited, this, [this, l](const QString& t) {
+            textEdited(currentStep(), QStringLiteral("title"), l, t);
+        });
+        auto* text = new QPlainTextEdit(box);
+        text->setObjectName(QStringLiteral("stepText_%1").arg(code(l)));
+        text->setAccessibleName(tr("Step text (%1)").arg(lang));
+        text->setTabChangesFocus(true);
+        text->installEventFilter(this);
+        connect(text, &QPlainTextEdit::textChanged, this, [this, l, text] {
+            textEdited(currentStep(), QStringLiteral("text"), l, text->toPlainText());
+        });
+        auto* missing = new QLabel(box);
+        missing->setObjectName(QStringLiteral("missing_%1").arg(code(l)));
+        missing->setTextFormat(Qt::PlainText);
+        missing->setText(tr("⚠ %1: not written yet").arg(lang));
+        missing->setAccessibleName(tr("%1: not written yet").arg(lang));
+        auto* preview = new StepText(box);
+        preview->setObjectName(QStringLiteral("preview_%1").arg(code(l)));
+        preview->setAccessibleName(tr("Preview (%1)").arg(lang));
+        grid->addWidget(titleLabel, 0, l);
+        grid->addWidget(title, 1, l);
+        grid->addWidget(missing, 2, l);
+        grid->addWidget(text, 3, l);
+        grid->addWidget(new QLabel(tr("As the student sees it (%1)").arg(lang), box), 4, l);
+        grid->addWidget(preview, 5, l);
+        m_stepTitle[static_cast<std::size_t>(l)] = title;
+        m_stepText[static_cast<std::size_t>(l)] = text;
+        m_missing[static_cast<std::size_t>(l)] = missing;
+        m_preview[static_cast<std::size_t>(l)] = preview;
+    }
+    // The text being written gets more room than its preview.
+    grid->setRowStretch(3, 3);
+    grid->setRowStretch(5, 2);
+    for (StepText* preview : m_preview)
+        preview->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Ignored);
+    auto* split = new QSplitter(Qt::Vertical, this);
+    split->addWidget(box);
+    m_questions = new QuestionEditor(m_draft, split);
+    split->addWidget(m_questions);
+    split->setStretchFactor(0, 3);
+    split->setStretchFactor(1, 1);
+    return split;
+}
+
+void LessonEditor::buildActions()
+{
+    m_undo = m_draft.undoStack()->createUndoAction(this, tr("&Undo"));
+    m_undo->setObjectName(QStringLiteral("lessonUndo"));
+    m_undo->setShortcut(QKeySequence::Undo);
+    m_redo = m_draft.undoStack()->createRedoAction(this, tr("&Redo"));
+    m_redo->setObjectName(QStringLiteral("lessonRedo"));
+    // Both usual keys for Redo, whatever the platform's own.
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    for (const QKeySequence& k :
+         {QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_Z), QKeySequence(Qt::CTRL | Qt::Key_Y)})
+        if (!redoKeys.contains(k))
+            redoKeys.append(k);
+    m_redo->setShortcuts(redoKeys);
+    addAction(m_undo);
+    addAction(m_redo);
+    auto* save = new QAction(tr("&Save lesson"), this);
+    save->setObjectName(QStringLiteral("lessonSave"));
+    save->setShortcut(QKeySequence::Save);
+    connect(save, &QAction::triggered, this, [this] { LessonEditor::save(); });
+    addAction(save);
+    auto* saveAs = new QAction(tr("Save lesson &as…"), this);
+    saveAs->setObjectName(QStringLiteral("lessonSaveAs"));
+    saveAs->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S));
+    connect(saveAs, &QAction::triggered, this, &LessonEditor::saveAsDialog);
+    addAction(saveAs);
+    // The same actions as buttons, so that the mouse finds them too.
+    auto* row = new QHBoxLayout;
+    for (QAction* a : {m_undo, m_redo, save, saveAs}) {
+        auto* b = new QPushButton(this);
+        b->setObjectName(a->objectName() + QStringLiteral("Button"));
+        const auto sync = [a, b] {
+            QString plain = a->text();
+            plain.remove(u'&');
+            b->setText(plain);
+            b->setAccessibleName(plain);
+            b->setEnabled(a->isEnabled());
+            b->setToolTip(a->shortcut().toString(QKeySequence::NativeText));
+        };
+        sync();
+        connect(a, &QAction::changed, b, sync);
+        connect(b, &QPushButton::clicked, a, &QAction::trigger);
+        b->setFocusPolicy(Qt::TabFocus);
+        row->addWidget(b);
+    }
+    row->addStretch(1);
+    static_cast<QVBoxLayout*>(layout())->insertLayout(0, row);
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The lesson editor's window: the lesson's title, summary, level and minutes; its steps in a
+// list (each marked with what is wrong in it) with buttons to add, remove, move and duplicate
+// them; the selected step's title and text in Czech and English side by side, each with the
+// text as the player shows it and a mark where a language is missing. Everything it shows is
+// read back from its LessonDraft and every change is one of the draft's undoable edits, so
+// the window's Undo and Redo are the draft's own. It saves .rlesson files and, while the
+// lesson has unsaved edits, writes a copy of it now and then (the autosave a crash leaves).
+
+#include "lesson_editor/lesson_draft.h"
+
+#include <QWidget>
+
+#include <array>
+
+class QAction;
+class QGridLayout;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+class QPlainTextEdit;
+class QPushButton;
+class QSpinBox;
+class QTimer;
+
+namespace rigidlab::ui {
+
+class QuestionEditor;
+class StepText;
+
+class LessonEditor : public QWidget {
+    Q_OBJECT
+public:
+    explicit LessonEditor(QWidget* parent = nullptr);
+
+    LessonDraft& draft() { return m_draft; }
+    /// Opens a lesson file; returns the loader's error (empty when it opened).
+    QString open(const QString& path);
+    /// A new lesson with one step on `scene`.
+    void newLesson(const lessons::Scene& scene);
+
+    int currentStep() const;
+    QuestionEditor& questions() { return *m_questions; }
+    void selectStep(int index);
+
+    /// Save: to the lesson's file, or asks where when it has none. Returns the error.
+    QString save();
+    /// Save As to `path` (.rlesson). Returns the error.
+    QString saveAs(const QString& path);
+    /// Where the autosave goes (the lab's data folder unless a test says otherwise).
+    void setAutosavePath(const QString& path) { m_autosavePath = path; }
+    const QString& autosavePath() const { return m_autosavePath; }
+    /// Writes the autosave now when there are unsaved edits; returns whether it wrote one.
+    bool autosave();
+
+signals:
+    /// Try as a student: play the lesson saved at `path` from `step`.
+    void tryAsStudent(const QString& path, int step);
+
+protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+    void closeEvent(QCloseEvent* event) override;
+
+private:
+    void buildLessonFields(QGridLayout& grid);
+    QWidget* buildStepList();
+    QWidget* buildStepTexts();
+    void buildActions();
+    QPushButton* makeButton(const QString& text, const QString& name, const QKeySequence& keys,
+                            void (LessonEditor::*slot)());
+    void addStep();
+    void removeStep();
+    void moveUp();
+    void moveDown();
+    void duplicateStep();
+    void saveAsDialog();
+    void trySelected();
+    void refresh();
+    void refreshLesson();
+    void refreshSteps();
+    void refreshStepTexts();
+    void updateTitle();
+    /// What the step list says after a step's title: its missing languages and problems.
+    QString stepMarks(int index, const LessonDraft::Check& check) const;
+    void textEdited(int step, const QString& key, int language, const QString& text);
+
+    LessonDraft m_draft;
+    bool m_refreshing = false;
+    std::array<QLineEdit*, 2> m_title{};
+    std::array<QLineEdit*, 2> m_summary{};
+    std::array<QLineEdit*, 2> m_level{};
+    QSpinBox* m_minutes = nullptr;
+    QListWidget* m_steps = nullptr;
+    std::array<QLineEdit*, 2> m_stepTitle{};
+    std::array<QPlainTextEdit*, 2> m_stepText{};
+    std::array<QLabel*, 2> m_missing{};
+    std::array<StepText*, 2> m_preview{};
+    QLabel* m_problems = nullptr;
+    QuestionEditor* m_questions = nullptr;
+    QAction* m_undo = nullptr;
+    QAction* m_redo = nullptr;
+    QTimer* m_autosaveTimer = nullptr;
+    QString m_autosavePath;
+};
+
+} // namespace rigidlab::ui

@@ -1,0 +1,334 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The lesson editor's window: edits made through its fields and buttons, and what it shows
+// read back from the draft after each one (an edit, an undo, a redo, an open).
+#include "lesson_editor/lesson_editor.h"
+#include "lesson_editor/question_editor.h"
+#include "lesson_player/step_text.h"
+
+#include "format/data_dirs.h"
+#include "run/measurements.h"
+
+#include <QAction>
+#include <QCloseEvent>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QSpinBox>
+#include <QStyle>
+#include <QUndoStack>
+
+namespace rigidlab::ui {
+
+namespace {
+
+QString codeOf(int language)
+{
+    return language == 0 ? QStringLiteral("cs") : QStringLiteral("en");
+}
+
+QString nameOf(const QString& code)
+{
+    return code == u"cs" ? LessonEditor::tr("Czech") : LessonEditor::tr("English");
+}
+
+/// The language the lab shows, for the checks' messages.
+QString shownLanguage()
+{
+    return QLocale().language() == QLocale::Czech ? QStringLiteral("cs") : QStringLiteral("en");
+}
+
+} // namespace
+
+QString LessonEditor::open(const QString& path)
+{
+    const QString error = m_draft.open(path);
+    selectStep(0);
+    return error;
+}
+
+void LessonEditor::newLesson(const lessons::Scene& scene)
+{
+    m_draft.newLesson(tr("New lesson"), scene);
+    selectStep(0);
+}
+
+int LessonEditor::currentStep() const
+{
+    return m_steps->currentRow();
+}
+
+void LessonEditor::selectStep(int index)
+{
+    m_steps->setCurrentRow(std::clamp(index, 0, std::max(m_draft.stepCount() - 1, 0)));
+    refreshStepTexts();
+}
+
+void LessonEditor::addStep()
+{
+    const int at = currentStep();
+    m_draft.addStep(at);
+    selectStep(at + 1);
+}
+
+void LessonEditor::removeStep()
+{
+    const int at = currentStep();
+    if (at < 0 || m_draft.stepCount() <= 1)
+        return; // a lesson keeps at least one step
+    m_draft.removeStep(at);
+    selectStep(at);
+}
+
+void LessonEditor::moveUp()
+{
+    const int at = currentStep();
+    if (at <= 0)
+        return;
+    m_draft.moveStep(at, at - 1);
+    selectStep(at - 1);
+}
+
+void LessonEditor::moveDown()
+{
+    const int at = currentStep();
+    if (at < 0 || at + 1 >= m_draft.stepCount())
+        return;
+    m_draft.moveStep(at, at + 1);
+    selectStep(at + 1);
+}
+
+void LessonEditor::duplicateStep()
+{
+    const int at = currentStep();
+    if (at < 0)
+        return;
+    m_draft.duplicateStep(at);
+    selectStep(at + 1);
+}
+
+QString LessonEditor::save()
+{
+    if (m_draft.path().isEmpty()) {
+        saveAsDialog();
+        return {};
+    }
+    const QString error = m_draft.save();
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Save lesson"), error);
+    updateTitle();
+    return error;
+}
+
+QString LessonEditor::saveAs(const QString& path)
+{
+    QString target = path;
+    if (!target.endsWith(QStringLiteral(".rlesson"), Qt::CaseInsensitive))
+        target += QStringLiteral(".rlesson");
+    const QString error = m_draft.saveAs(target);
+    updateTitle();
+    return error;
+}
+
+void LessonEditor::saveAsDialog()
+{
+    const QString start =
+        m_draft.path().isEmpty()
+            ? QDir(lessons::userLessonsDir()).filePath(tr("lesson") + QStringLiteral(".rlesson"))
+            : m_draft.path();
+    const QString path = QFileDialog::getSaveFileName(this, tr("Save lesson as"), start,
+                                                      tr("Lessons in one file (*.rlesson)"));
+    if (path.isEmpty())
+        return;
+    QDir().mkpath(QFileInfo(path).absolutePath());
+    const QString error = saveAs(path);
+    if (!error.isEmpty())
+        QMessageBox::warning(this, tr("Save lesson"), error);
+}
+
+bool LessonEditor::autosave()
+{
+    if (!m_draft.isModified() || m_autosavePath.isEmpty())
+        return false;
+    QDir().mkpath(QFileInfo(m_autosavePath).absolutePath());
+    return m_draft.writeCopy(m_autosavePath).isEmpty();
+}
+
+void LessonEditor::trySelected()
+{
+    // The lesson as it is now, unsaved edits too, without touching its file or saved state.
+    const QString path = QDir(QDir::tempPath()).filePath(QStringLiteral("rigidlab-try.rlesson"));
+    const QString error = m_draft.writeCopy(path);
+    if (!error.isEmpty()) {
+        QMessageBox::warning(this, tr("Try as a student"), error);
+        return;
+    }
+    emit tryAsStudent(path, std::max(currentStep(), 0));
+}
+
+void LessonEditor::textEdited(int step, const QString& key, int language, const QString& text)
+{
+    if (m_refreshing || (step < 0 && key == u"text"))
+        return;
+    if (m_draft.text(step, key, codeOf(language)) == text)
+        return;
+    m_draft.setText(step, key, codeOf(language), text);
+}
+
+void LessonEditor::refresh()
+{
+    m_refreshing = true;
+    refreshLesson();
+    refreshSteps();
+    m_refreshing = false;
+    refreshStepTexts();
+    updateTitle();
+}
+
+void LessonEditor::refreshLesson()
+{
+    const std::array<std::pair<QString, std::array<QLineEdit*, 2>*>, 3> rows{{
+        {QStringLiteral("title"), &m_title},
+        {QStringLiteral("summary"), &m_summary},
+        {QStringLiteral("level"), &m_level},
+    }};
+    for (const auto& [key, edits] : rows)
+        for (int l = 0; l < 2; ++l) {
+            QLineEdit* e = (*edits)[static_cast<std::size_t>(l)];
+            const QString t = m_draft.text(-1, key, codeOf(l));
+            if (e->text() != t) {
+                e->setText(t);
+                if (!e->hasFocus())
+                    e->setCursorPosition(0); // the start of a long summary, not its end
+            }
+        }
+    m_minutes->setValue(m_draft.value(-1, QStringLiteral("minutes")).toInt());
+}
+
+QString LessonEditor::stepMarks(int index, const LessonDraft::Check& check) const
+{
+    QStringList marks;
+    for (const QString& key : {QStringLiteral("title"), QStringLiteral("text")})
+        for (const QString& code : m_draft.missingLanguages(index, key)) {
+            const QString m = tr("no %1").arg(nameOf(code));
+            if (!marks.contains(m))
+                marks.append(m);
+        }
+    const qsizetype problems = check.steps.count(index);
+    if (problems > 0)
+        marks.append(tr("%n problem(s)", nullptr, static_cast<int>(problems)));
+    return marks.join(QStringLiteral(", "));
+}
+
+void LessonEditor::refreshSteps()
+{
+    const LessonDraft::Check check = m_draft.check(shownLanguage());
+    const int keep = currentStep();
+    const QIcon warn = style()->standardIcon(QStyle::SP_MessageBoxWarning);
+    while (m_steps->count() > m_draft.stepCount())
+        delete m_steps->takeItem(m_steps->count() - 1);
+    while (m_steps->count() < m_draft.stepCount())
+        m_steps->addItem(QString());
+    for (int i = 0; i < m_draft.stepCount(); ++i) {
+        QString title = m_draft.text(i, QStringLiteral("title"), shownLanguage());
+        if (title.isEmpty())
+            title = m_draft.text(i, QStringLiteral("title"), codeOf(shownLanguage() == u"cs"));
+        const QString marks = stepMarks(i, check);
+        QListWidgetItem* item = m_steps->item(i);
+        item->setText(marks.isEmpty() ? QStringLiteral("%1. %2").arg(i + 1).arg(title)
+                                      : tr("%1. %2 — ⚠ %3").arg(i + 1).arg(title, marks));
+        item->setIcon(marks.isEmpty() ? QIcon() : warn);
+        QStringList lines;
+        for (int k = 0; k < check.steps.size(); ++k) {
+            const QString line = k == 0 && !check.error.isEmpty()
+                                     ? check.error
+                                     : check.warnings.value(k - (check.error.isEmpty() ? 0 : 1));
+            if (check.steps[k] == i)
+                lines.append(line);
+        }
+        item->setToolTip(lines.join(u'\n'));
+    }
+    m_steps->setCurrentRow(std::clamp(keep, 0, m_draft.stepCount() - 1));
+    QStringList all;
+    if (!check.error.isEmpty())
+        all.append(check.error);
+    all.append(check.warnings);
+    m_problems->setText(all.isEmpty() ? tr("No problems found.") : all.join(u'\n'));
+}
+
+void LessonEditor::refreshStepTexts()
+{
+    const int step = currentStep();
+    const bool was = m_refreshing;
+    m_refreshing = true;
+    const QStringList missingTitle = m_draft.missingLanguages(step, QStringLiteral("title"));
+    const QStringList missingText = m_draft.missingLanguages(step, QStringLiteral("text"));
+    for (int l = 0; l < 2; ++l) {
+        const auto i = static_cast<std::size_t>(l);
+        const QString c = codeOf(l);
+        const QString title = step < 0 ? QString() : m_draft.text(step, QStringLiteral("title"), c);
+        const QString text = step < 0 ? QString() : m_draft.text(step, QStringLiteral("text"), c);
+        if (m_stepTitle[i]->text() != title)
+            m_stepTitle[i]->setText(title);
+        if (m_stepText[i]->toPlainText() != text)
+            m_stepText[i]->setPlainText(text);
+        m_missing[i]->setVisible(step >= 0 &&
+                                 (missingTitle.contains(c) || missingText.contains(c)));
+        m_preview[i]->showMarkdown(lessons::keepUnitsTogether(text));
+        m_stepTitle[i]->setEnabled(step >= 0);
+        m_stepText[i]->setEnabled(step >= 0);
+    }
+    m_questions->setStep(step);
+    m_refreshing = was;
+}
+
+void LessonEditor::updateTitle()
+{
+    const QString name =
+        m_draft.path().isEmpty() ? tr("new lesson") : QFileInfo(m_draft.path()).fileName();
+    setWindowTitle(tr("%1%2 — Lesson editor — RigidLab")
+                       .arg(name, m_draft.isModified() ? QStringLiteral("*") : QString()));
+}
+
+bool LessonEditor::eventFilter(QObject* watched, QEvent* event)
+{
+    // Undo and Redo in a text field are the lesson's, not the field's own: one history.
+    if (event->type() == QEvent::ShortcutOverride || event->type() == QEvent::KeyPress) {
+        auto* key = static_cast<QKeyEvent*>(event);
+        const QKeySequence pressed(key->keyCombination());
+        const bool undo = m_undo->shortcuts().contains(pressed);
+        const bool redo = m_redo->shortcuts().contains(pressed);
+        if (undo || redo) {
+            event->accept();
+            if (event->type() == QEvent::KeyPress)
+                (undo ? m_undo : m_redo)->trigger();
+            return true;
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+void LessonEditor::closeEvent(QCloseEvent* event)
+{
+    if (m_draft.isModified()) {
+        const auto answer = QMessageBox::question(
+            this, tr("Lesson editor"), tr("The lesson has unsaved changes. Save them?"),
+            QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+        if (answer == QMessageBox::Cancel) {
+            event->ignore();
+            return;
+        }
+        if (answer == QMessageBox::Save && !save().isEmpty()) {
+            event->ignore();
+            return;
+        }
+    }
+    event->accept();
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,379 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lesson_editor/question_editor.h"
+#include "lesson_editor/lesson_draft.h"
+
+#include "run/measurements.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QLocale>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+namespace rigidlab::ui {
+
+namespace {
+
+struct Kind {
+    const char* id;
+    const char* name;
+    const char* unit;
+    bool body;
+    bool time;
+};
+
+/// The measures the player knows (LESSON_FORMAT.md, `measure`), in the order offered.
+constexpr std::array<Kind, 10> kKinds{{
+    {"apex", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "height of a bounce's top"), "m",
+     true, false},
+    {"speed", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "speed"), "m/s", true, true},
+    {"velocity-x", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "velocity x"), "m/s", true,
+     true},
+    {"velocity-y", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "velocity y"), "m/s", true,
+     true},
+    {"angular-velocity", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "angular velocity"),
+     "rad/s", true, true},
+    {"position-x", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "position x"), "m", true,
+     true},
+    {"position-y", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "position y"), "m", true,
+     true},
+    {"energy-drift", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "energy drift"), "%", false,
+     true},
+    {"momentum-x", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "momentum x"), "kg m/s", false,
+     true},
+    {"momentum-y", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "momentum y"), "kg m/s", false,
+     true},
+}};
+
+const Kind& kindOf(const QString& id)
+{
+    for (const Kind& k : kKinds)
+        if (id == QLatin1String(k.id))
+            return k;
+    return kKinds[0];
+}
+
+QString langCode(int l)
+{
+    return l == 0 ? QStringLiteral("cs") : QStringLiteral("en");
+}
+
+QString shownLanguage()
+{
+    return QLocale().language() == QLocale::Czech ? QStringLiteral("cs") : QStringLiteral("en");
+}
+
+} // namespace
+
+QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
+    : QWidget(parent), m_draft(draft)
+{
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* label = new QLabel(tr("&Questions of the step"), this);
+    m_list = new QListWidget(this);
+    m_list->setObjectName(QStringLiteral("questionList"));
+    m_list->setAccessibleName(tr("Questions of the step"));
+    m_list->setMaximumHeight(70);
+    label->setBuddy(m_list);
+    connect(m_list, &QListWidget::currentRowChanged, this, [this] {
+        if (!m_refreshing)
+            refresh();
+    });
+    auto* buttons = new QHBoxLayout;
+    const auto button = [this, buttons](const QString& text, const char* name, auto slot) {
+        auto* b = new QPushButton(text, this);
+        b->setObjectName(QLatin1String(name));
+        QString plain = text;
+        b->setAccessibleName(plain.remove(u'&'));
+        connect(b, &QPushButton::clicked, this, slot);
+        buttons->addWidget(b);
+    };
+    button(tr("Add a &measured question"), "addMeasuredQuestion", [this] { addQuestion(false); });
+    button(tr("Add a &predict-first question"), "addPredictQuestion",
+           [this] { addQuestion(true); });
+    button(tr("Remove &question"), "removeQuestion", [this] { removeQuestion(); });
+    layout->addWidget(label);
+    layout->addWidget(m_list);
+    layout->addLayout(buttons);
+    // The selected question's fields, shown only when there is one to edit.
+    m_form = new QWidget(this);
+    m_form->setLayout(buildForm());
+    m_form->layout()->setContentsMargins(0, 0, 0, 0);
+    layout->addWidget(m_form);
+    layout->addWidget(m_answer);
+    refresh();
+}
+
+QFormLayout* QuestionEditor::buildForm()
+{
+    auto* form = new QFormLayout;
+    for (int l = 0; l < 2; ++l) {
+        auto* e = new QLineEdit(this);
+        e->setObjectName(QStringLiteral("questionPrompt_%1").arg(langCode(l)));
+        const QString name = l == 0 ? tr("Question (Czech)") : tr("Question (English)");
+        e->setAccessibleName(name);
+        connect(e, &QLineEdit::textEdited, this, &QuestionEditor::edited);
+        m_prompt[static_cast<std::size_t>(l)] = e;
+        form->addRow(name, e);
+    }
+    m_kind = new QComboBox(this);
+    m_kind->setObjectName(QStringLiteral("questionKind"));
+    m_kind->setAccessibleName(tr("What is measured"));
+    for (const Kind& k : kKinds)
+        m_kind->addItem(tr(k.name), QLatin1String(k.id));
+    m_body = new QComboBox(this);
+    m_body->setObjectName(QStringLiteral("questionBody"));
+    m_body->setAccessibleName(tr("Body measured"));
+    m_time = new QDoubleSpinBox(this);
+    m_time->setObjectName(QStringLiteral("questionTime"));
+    m_time->setAccessibleName(tr("Time of the measurement"));
+    m_time->setRange(0, 3600);
+    m_time->setDecimals(2);
+    m_time->setSuffix(QStringLiteral("\u00a0s"));
+    m_unit = new QLineEdit(this);
+    m_unit->setObjectName(QStringLiteral("questionUnit"));
+    m_unit->setAccessibleName(tr("Unit of the answer"));
+    m_tolerance = new QDoubleSpinBox(this);
+    m_tolerance->setObjectName(QStringLiteral("questionTolerance"));
+    m_tolerance->setAccessibleName(tr("Tolerance of the answer"));
+    m_tolerance->setRange(0.1, 100);
+    m_tolerance->setDecimals(1);
+    m_tolerance->setSuffix(QStringLiteral("\u00a0%"));
+    m_holdRun = new QCheckBox(tr("Predict first: the run waits until it is answered"), this);
+    m_holdRun->setObjectName(QStringLiteral("questionHoldRun"));
+    m_answer = new QLabel(this);
+    m_answer->setObjectName(QStringLiteral("questionAnswer"));
+    m_answer->setWordWrap(true);
+    m_answer->setAccessibleName(tr("The answer the lab measures"));
+    form->addRow(tr("&Measured"), m_kind);
+    form->addRow(tr("&Body"), m_body);
+    form->addRow(tr("&At time"), m_time);
+    form->addRow(tr("&Unit"), m_unit);
+    form->addRow(tr("&Tolerance"), m_tolerance);
+    form->addRow(m_holdRun);
+    connect(m_kind, &QComboBox::activated, this, &QuestionEditor::edited);
+    connect(m_body, &QComboBox::activated, this, &QuestionEditor::edited);
+    connect(m_time, &QDoubleSpinBox::valueChanged, this, &QuestionEditor::edited);
+    connect(m_unit, &QLineEdit::textEdited, this, &QuestionEditor::edited);
+    connect(m_tolerance, &QDoubleSpinBox::valueChanged, this, &QuestionEditor::edited);
+    connect(m_holdRun, &QCheckBox::toggled, this, &QuestionEditor::edited);
+    return form;
+}
+
+void QuestionEditor::setStep(int step)
+{
+    if (step != m_step) {
+        m_step = step;
+        m_list->setCurrentRow(0);
+    }
+    refresh();
+}
+
+int QuestionEditor::currentQuestion() const
+{
+    return m_list->currentRow();
+}
+
+QJsonObject QuestionEditor::question() const
+{
+    return m_draft.value(m_step, QStringLiteral("questions"))
+        .toArray()
+        .at(currentQuestion())
+        .toObject();
+}
+
+void QuestionEditor::store(const QJsonObject& q)
+{
+    QJsonArray all = m_draft.value(m_step, QStringLiteral("questions")).toArray();
+    const int at = currentQuestion();
+    if (at < 0 || at >= all.size())
+        return;
+    all[at] = q;
+    m_draft.setValue(m_step, QStringLiteral("questions"), all, tr("question"));
+}
+
+void QuestionEditor::addQuestion(bool predict)
+{
+    if (m_step < 0)
+        return;
+    QJsonArray all = m_draft.value(m_step, QStringLiteral("questions")).toArray();
+    const Kind& k = kKinds[1]; // speed at a time: any body, any scene
+    QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}, {QStringLiteral("time"), 1}};
+    if (m_body->count() > 0)
+        measure.insert(QStringLiteral("body"), m_body->itemData(0).toString());
+    QJsonObject q{
+        {QStringLiteral("prompt"), QJsonObject{{shownLanguage(), tr("How fast is it at 1 s?")}}},
+        {QStringLiteral("measure"), measure},
+        {QStringLiteral("unit"), QLatin1String(k.unit)},
+        {QStringLiteral("tolerance"), 0.05}};
+    if (predict)
+        q.insert(QStringLiteral("holdBack"), QJsonArray{QStringLiteral("run")});
+    all.append(q);
+    m_draft.setValue(m_step, QStringLiteral("questions"), all, tr("question"));
+    m_list->setCurrentRow(static_cast<int>(all.size()) - 1);
+    refresh();
+}
+
+void QuestionEditor::removeQuestion()
+{
+    QJsonArray all = m_draft.value(m_step, QStringLiteral("questions")).toArray();
+    const int at = currentQuestion();
+    if (at < 0 || at >= all.size())
+        return;
+    all.removeAt(at);
+    m_draft.setValue(m_step, QStringLiteral("questions"),
+                     all.isEmpty() ? QJsonValue() : QJsonValue(all), tr("question"));
+}
+
+void QuestionEditor::edited()
+{
+    if (m_refreshing)
+        return;
+    QJsonObject q = question();
+    QJsonObject prompt = q.value(u"prompt").isObject()
+                             ? q.value(u"prompt").toObject()
+                             : QJsonObject{{QStringLiteral("en"), q.value(u"prompt")}};
+    for (int l = 0; l < 2; ++l)
+        prompt.insert(langCode(l), m_prompt[static_cast<std::size_t>(l)]->text());
+    q.insert(QStringLiteral("prompt"), prompt);
+    const Kind& k = kindOf(m_kind->currentData().toString());
+    QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}};
+    const QJsonObject old = q.value(u"measure").toObject();
+    if (k.body && m_body->currentIndex() >= 0)
+        measure.insert(QStringLiteral("body"), m_body->currentData().toString());
+    if (k.time)
+        measure.insert(QStringLiteral("time"), m_time->value());
+    else // an apex keeps its bounce and floor
+        for (const char* key : {"n", "above"})
+            if (old.contains(QLatin1String(key)) && old.value(u"kind").toString() == u"apex")
+                measure.insert(QLatin1String(key), old.value(QLatin1String(key)));
+    q.insert(QStringLiteral("measure"), measure);
+    if (old.value(u"kind").toString() != QLatin1String(k.id) &&
+        m_unit->text() == kindOf(old.value(u"kind").toString()).unit)
+        m_unit->setText(QLatin1String(k.unit)); // the new quantity's unit, unless typed
+    q.insert(QStringLiteral("unit"), m_unit->text());
+    q.insert(QStringLiteral("tolerance"), m_tolerance->value() / 100.0);
+    QJsonArray hold = q.value(u"holdBack").toArray();
+    const bool held = hold.contains(QStringLiteral("run"));
+    if (m_holdRun->isChecked() && !held)
+        hold.append(QStringLiteral("run"));
+    if (!m_holdRun->isChecked() && held)
+        for (qsizetype i = hold.size() - 1; i >= 0; --i)
+            if (hold.at(i).toString() == u"run")
+                hold.removeAt(i);
+    if (hold.isEmpty())
+        q.remove(QStringLiteral("holdBack"));
+    else
+        q.insert(QStringLiteral("holdBack"), hold);
+    store(q);
+}
+
+void QuestionEditor::refresh()
+{
+    m_refreshing = true;
+    const QJsonArray all = m_draft.value(m_step, QStringLiteral("questions")).toArray();
+    const int keep = std::clamp(currentQuestion(), 0, std::max<int>(all.size() - 1, 0));
+    while (m_list->count() > all.size())
+        delete m_list->takeItem(m_list->count() - 1);
+    while (m_list->count() < all.size())
+        m_list->addItem(QString());
+    for (int i = 0; i < all.size(); ++i) {
+        const QJsonValue p = all.at(i).toObject().value(u"prompt");
+        QString text = p.isObject() ? p.toObject().value(shownLanguage()).toString() : p.toString();
+        if (text.isEmpty() && p.isObject())
+            text = p.toObject().value(u"en").toString();
+        const bool predict =
+            all.at(i).toObject().value(u"holdBack").toArray().contains(QStringLiteral("run"));
+        m_list->item(i)->setText(predict ? tr("%1. %2 (predict first)").arg(i + 1).arg(text)
+                                         : QStringLiteral("%1. %2").arg(i + 1).arg(text));
+    }
+    m_list->setCurrentRow(all.isEmpty() ? -1 : keep);
+
+    // The bodies of the step's scene that move, by id, read from the scene itself (so that
+    // they are listed even while the lesson has an error).
+    const QJsonObject q = question();
+    const QJsonObject measure = q.value(u"measure").toObject();
+    const QJsonValue sceneRef = m_draft.value(m_step, QStringLiteral("scene"));
+    const QJsonObject scene = sceneRef.isObject() ? sceneRef.toObject()
+                              : m_draft.pack().scenes.count(sceneRef.toString()) != 0
+                                  ? m_draft.pack().scenes.at(sceneRef.toString())
+                                  : QJsonObject();
+    m_body->clear();
+    for (const QJsonValue b : scene.value(u"bodies").toArray()) {
+        const QString id = b.toObject().value(u"id").toString();
+        if (!id.isEmpty() && b.toObject().value(u"type").toString() != u"static")
+            m_body->addItem(id, id);
+    }
+    const QString body = measure.value(u"body").toString();
+    if (!body.isEmpty() && m_body->findData(body) < 0)
+        m_body->addItem(tr("%1 (not in the scene)").arg(body), body);
+    m_body->setCurrentIndex(m_body->findData(body));
+
+    const QJsonValue p = q.value(u"prompt");
+    for (int l = 0; l < 2; ++l)
+        m_prompt[static_cast<std::size_t>(l)]->setText(
+            p.isObject() ? p.toObject().value(langCode(l)).toString()
+                         : (l == 1 ? p.toString() : QString()));
+    const Kind& k = kindOf(measure.value(u"kind").toString());
+    m_kind->setCurrentIndex(m_kind->findData(QLatin1String(k.id)));
+    m_body->setEnabled(k.body);
+    m_time->setEnabled(k.time);
+    m_time->setValue(measure.value(u"time").toDouble());
+    m_unit->setText(q.value(u"unit").toString());
+    m_tolerance->setValue(q.value(u"tolerance").toDouble(0.05) * 100.0);
+    m_holdRun->setChecked(q.value(u"holdBack").toArray().contains(QStringLiteral("run")));
+    const bool any = currentQuestion() >= 0;
+    m_form->setVisible(any);
+    m_refreshing = false;
+    showAnswer();
+}
+
+void QuestionEditor::showAnswer()
+{
+    // The run is measured again only when what it depends on changed, not at every key typed
+    // into a text of the lesson.
+    QJsonObject depends{{QStringLiteral("question"), question()}};
+    for (const char* key : {"scene", "settings", "exportTime", "compare"})
+        depends.insert(QLatin1String(key), m_draft.value(m_step, QLatin1String(key)));
+    depends.insert(QStringLiteral("step"), m_step);
+    if (depends == m_measuredFor)
+        return;
+    m_measuredFor = depends;
+    const int at = currentQuestion();
+    if (at < 0) {
+        m_answer->setText(m_step < 0 ? QString() : tr("This step asks no question."));
+        return;
+    }
+    QString error;
+    const std::optional<lessons::Lesson> lesson = m_draft.lesson(shownLanguage(), error);
+    if (!lesson || m_step >= static_cast<int>(lesson->steps.size())) {
+        m_answer->setText(tr("⚠ The lab cannot measure it: %1").arg(error));
+        return;
+    }
+    const lessons::LessonStep& step = lesson->steps[static_cast<std::size_t>(m_step)];
+    const lessons::Question& q = step.questions.at(static_cast<std::size_t>(at));
+    const std::optional<double> value = lessons::measureAhead(step, q.measure);
+    const QLocale locale;
+    if (!value) {
+        m_answer->setText(tr("⚠ The run does not get there (or diverges first): raise the step's "
+                             "export time or choose an earlier time."));
+        return;
+    }
+    const double band = std::abs(*value) * q.tolerance + q.absoluteTolerance;
+    m_answer->setText(lessons::keepUnitsTogether(
+        tr("The lab measures %1 %3; answers from %2 to %4 %3 are right.")
+            .arg(locale.toString(*value, 'g', 4), locale.toString(*value - band, 'g', 4), q.unit,
+                 locale.toString(*value + band, 'g', 4))));
+}
+
+} // namespace rigidlab::ui

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The lesson editor's questions of one step: a list of them, buttons to add a measured
+// question or a predict-before-reveal one (which holds the run back until answered) and to
+// remove one, and the selected one's prompt in Czech and English, what is measured (the
+// quantity and the body from lists, the time), its unit and tolerance, and beside them the
+// answer the lab measures for it (the same headless run the player judges against).
+
+#include <QJsonObject>
+#include <QWidget>
+
+#include <array>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLabel;
+class QLineEdit;
+class QListWidget;
+
+namespace rigidlab::ui {
+
+class LessonDraft;
+
+class QuestionEditor : public QWidget {
+    Q_OBJECT
+public:
+    QuestionEditor(LessonDraft& draft, QWidget* parent = nullptr);
+
+    /// Shows the questions of `step` (-1: none).
+    void setStep(int step);
+    /// Reads the step's questions back from the draft (after any edit, undo or redo).
+    void refresh();
+    int currentQuestion() const;
+    void addQuestion(bool predict);
+    void removeQuestion();
+
+private:
+    QFormLayout* buildForm();
+    QJsonObject question() const;
+    /// Replaces the selected question by `q`, one undoable edit.
+    void store(const QJsonObject& q);
+    void edited();
+    void showAnswer();
+
+    LessonDraft& m_draft;
+    int m_step = -1;
+    bool m_refreshing = false;
+    QListWidget* m_list = nullptr;
+    std::array<QLineEdit*, 2> m_prompt{};
+    QComboBox* m_kind = nullptr;
+    QComboBox* m_body = nullptr;
+    QDoubleSpinBox* m_time = nullptr;
+    QLineEdit* m_unit = nullptr;
+    QDoubleSpinBox* m_tolerance = nullptr;
+    QCheckBox* m_holdRun = nullptr;
+    QLabel* m_answer = nullptr;
+    QWidget* m_form = nullptr; ///< the selected question's fields
+    QJsonObject m_measuredFor; ///< what the answer shown was measured for
+};
+
+} // namespace rigidlab::ui
