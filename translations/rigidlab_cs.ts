@@ -1,14 +1,15 @@
-<?xml version='1.0' encoding='utf-8'?>
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
 <TS version="2.1" language="cs_CZ">
 <context>
     <name>About</name>
     <message>
         <source>&lt;h3&gt;RigidLab %1&lt;/h3&gt;&lt;p&gt;A lab for teaching 2D rigid-body mechanics: integrators and their energy drift, collision detection by separating axes, and impulses.&lt;/p&gt;&lt;p&gt;It grows from the paper &lt;i&gt;Simulace mechaniky tuhých těles v reálném čase&lt;/i&gt; (&lt;i&gt;Real-time simulation of rigid-body mechanics&lt;/i&gt;).&lt;/p&gt;&lt;p&gt;Licence: GNU General Public License, version 3 or any later version (GPL-3.0-or-later), as QCustomPlot, which it links, requires. See the LICENSE file.&lt;/p&gt;&lt;p&gt;Built with Qt %2 (running on Qt %3), QCustomPlot %4 and Eigen %5.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;RigidLab %1&lt;/h3&gt;&lt;p&gt;Laboratoř pro výuku mechaniky tuhých těles ve 2D: integrátory a jejich energetický drift, detekce srážek pomocí oddělujících os a impulsy síly.&lt;/p&gt;&lt;p&gt;Vychází z článku &lt;i&gt;Simulace mechaniky tuhých těles v reálném čase&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;Licence: GNU General Public License, verze 3 nebo jakákoli pozdější verze (GPL-3.0-or-later), jak to vyžaduje knihovna QCustomPlot, se kterou je program sestaven. Viz soubor LICENSE.&lt;/p&gt;&lt;p&gt;Sestaveno s Qt %2 (běží na Qt %3), QCustomPlot %4 a Eigen %5.&lt;/p&gt;</translation>
+        <translation>&lt;h3&gt;RigidLab %1&lt;/h3&gt;&lt;p&gt;Laboratoř pro výuku mechaniky tuhých těles ve 2D: integrátory a&#xa0;jejich energetický drift, detekce srážek pomocí oddělujících os a&#xa0;impulsy síly.&lt;/p&gt;&lt;p&gt;Vychází z&#xa0;článku &lt;i&gt;Simulace mechaniky tuhých těles v&#xa0;reálném čase&lt;/i&gt;.&lt;/p&gt;&lt;p&gt;Licence: GNU General Public License, verze 3 nebo jakákoli pozdější verze (GPL-3.0-or-later), jak to vyžaduje knihovna QCustomPlot, se kterou je program sestaven. Viz soubor LICENSE.&lt;/p&gt;&lt;p&gt;Sestaveno s&#xa0;Qt %2 (běží na Qt %3), QCustomPlot %4 a&#xa0;Eigen %5.&lt;/p&gt;</translation>
     </message>
     <message>
         <source>About RigidLab</source>
-        <translation>O aplikaci RigidLab</translation>
+        <translation>O&#xa0;aplikaci RigidLab</translation>
     </message>
 </context>
 <context>
@@ -30,27 +31,27 @@
     </message>
     <message>
         <source>Show this text and quit.</source>
-        <translation>Vypsat tento text a skončit.</translation>
+        <translation>Vypsat tento text a&#xa0;skončit.</translation>
     </message>
     <message>
         <source>Show the version and quit.</source>
-        <translation>Vypsat verzi a skončit.</translation>
+        <translation>Vypsat verzi a&#xa0;skončit.</translation>
     </message>
     <message>
         <source>With a lesson: start at step N (1 = first).</source>
-        <translation>S lekcí: začít krokem N (1 = první).</translation>
+        <translation>S&#xa0;lekcí: začít krokem N (1 = první).</translation>
     </message>
     <message>
         <source>Run the scene for N frames, print the median and 95th-percentile frame time and the physics share, and quit.</source>
-        <translation>Přehrát N snímků scény, vypsat medián a 95. percentil doby snímku a podíl fyziky a skončit.</translation>
+        <translation>Přehrát N snímků scény, vypsat medián a&#xa0;95. percentil doby snímku a&#xa0;podíl fyziky a&#xa0;skončit.</translation>
     </message>
     <message>
         <source>Write a PNG of the window on the welcome scene and on every step of every shipped lesson into DIR, with DIR/index.txt, and quit.</source>
-        <translation>Uložit do složky DIR snímek okna (PNG) s uvítací scénou a s každým krokem každé dodané lekce, k tomu DIR/index.txt, a skončit.</translation>
+        <translation>Uložit do složky DIR snímek okna (PNG) s&#xa0;uvítací scénou a&#xa0;s&#xa0;každým krokem každé dodané lekce, k&#xa0;tomu DIR/index.txt, a&#xa0;skončit.</translation>
     </message>
     <message>
         <source>Window (and screenshot) size in pixels, e.g. 1024x768 (screenshots: 1280x720 unless given).</source>
-        <translation>Velikost okna (a snímků) v pixelech, např. 1024x768 (snímky: 1280x720, pokud není zadána).</translation>
+        <translation>Velikost okna (a&#xa0;snímků) v&#xa0;pixelech, např. 1024x768 (snímky: 1280x720, pokud není zadána).</translation>
     </message>
     <message>
         <source>Scale factor of the whole interface (QT_SCALE_FACTOR), e.g. 1.5.</source>
@@ -58,10 +59,10 @@
     </message>
     <message>
         <source>Presentation mode: full screen, large type and thick lines for a projector (F11).</source>
-        <translation>Režim prezentace: celá obrazovka, velké písmo a silné čáry pro projektor (F11).</translation>
+        <translation>Režim prezentace: celá obrazovka, velké písmo a&#xa0;silné čáry pro projektor (F11).</translation>
     </message>
     <message>
-        <source>--%1 needs %2, got "%3"</source>
+        <source>--%1 needs %2, got &quot;%3&quot;</source>
         <translation>--%1 vyžaduje %2, zadáno „%3“</translation>
     </message>
     <message>
@@ -70,11 +71,11 @@
     </message>
     <message>
         <source>WIDTHxHEIGHT in pixels, each from %1 to %2</source>
-        <translation>ŠÍŘKAxVÝŠKA v pixelech, obojí od %1 do %2</translation>
+        <translation>ŠÍŘKAxVÝŠKA v&#xa0;pixelech, obojí od %1 do %2</translation>
     </message>
     <message>
         <source>a number greater than 0 and at most %1</source>
-        <translation>číslo větší než 0 a nejvýše %1</translation>
+        <translation>číslo větší než 0 a&#xa0;nejvýše %1</translation>
     </message>
     <message>
         <source>a folder</source>
@@ -86,7 +87,7 @@
     </message>
     <message>
         <source>one file at a time (got %1 and %2)</source>
-        <translation>jen jeden soubor najednou (zadáno %1 a %2)</translation>
+        <translation>jen jeden soubor najednou (zadáno %1 a&#xa0;%2)</translation>
     </message>
     <message>
         <source>--measure-frames needs a scene to run</source>
@@ -94,7 +95,7 @@
     </message>
     <message>
         <source>--screenshots shoots the shipped scenes and lessons: give it no FILE and no --measure-frames</source>
-        <translation>--screenshots snímá dodané scény a lekce: nezadávejte k ní FILE ani --measure-frames</translation>
+        <translation>--screenshots snímá dodané scény a&#xa0;lekce: nezadávejte k&#xa0;ní FILE ani --measure-frames</translation>
     </message>
     <message>
         <source>no display to open the window on: set DISPLAY (an X server, or Xvfb) or WAYLAND_DISPLAY, or QT_QPA_PLATFORM=offscreen</source>
@@ -109,12 +110,12 @@
         </translation>
     </message>
     <message>
-        <source>Language of the interface, one of %1 (View › Language saves a choice; without either, the system's language).</source>
-        <translation>Jazyk rozhraní, jeden z kódů %1 (volbu uloží i Zobrazení › Jazyk; bez obojího jazyk systému).</translation>
+        <source>Language of the interface, one of %1 (View › Language saves a choice; without either, the system&apos;s language).</source>
+        <translation>Jazyk rozhraní, jeden z&#xa0;kódů %1 (volbu uloží i&#xa0;Zobrazení › Jazyk; bez obojího jazyk systému).</translation>
     </message>
     <message>
         <source>one of %1</source>
-        <translation>jeden z kódů %1</translation>
+        <translation>jeden z&#xa0;kódů %1</translation>
     </message>
     <message>
         <source>A scene or a lesson (FILE.json, or FILE.rlesson) to open.</source>
@@ -141,11 +142,11 @@
     </message>
     <message>
         <source>One step forward (pauses)</source>
-        <translation>O jeden krok vpřed (pozastaví)</translation>
+        <translation>O&#xa0;jeden krok vpřed (pozastaví)</translation>
     </message>
     <message>
         <source>One step back in time</source>
-        <translation>O jeden krok zpět v čase</translation>
+        <translation>O&#xa0;jeden krok zpět v&#xa0;čase</translation>
     </message>
     <message>
         <source>Back to the start of the scene</source>
@@ -157,15 +158,15 @@
     </message>
     <message>
         <source>Turn the selected body left by 5°</source>
-        <translation>Otočit vybrané těleso o 5° doleva</translation>
+        <translation>Otočit vybrané těleso o&#xa0;5° doleva</translation>
     </message>
     <message>
         <source>Turn the selected body right by 5°</source>
-        <translation>Otočit vybrané těleso o 5° doprava</translation>
+        <translation>Otočit vybrané těleso o&#xa0;5° doprava</translation>
     </message>
     <message>
         <source>Presentation mode: full screen, large type and thick lines for a projector</source>
-        <translation>Režim prezentace: celá obrazovka, velké písmo a silné čáry pro projektor</translation>
+        <translation>Režim prezentace: celá obrazovka, velké písmo a&#xa0;silné čáry pro projektor</translation>
     </message>
     <message>
         <source>Open a scene</source>
@@ -185,7 +186,7 @@
     </message>
     <message>
         <source>Select it and show it in the inspector</source>
-        <translation>Vybrat ho a zobrazit v Inspektoru</translation>
+        <translation>Vybrat ho a&#xa0;zobrazit v&#xa0;Inspektoru</translation>
     </message>
     <message>
         <source>Drag a body</source>
@@ -217,7 +218,7 @@
     </message>
     <message>
         <source>Go back to any earlier moment of the run</source>
-        <translation>Vrátit se k libovolnému dřívějšímu okamžiku běhu</translation>
+        <translation>Vrátit se k&#xa0;libovolnému dřívějšímu okamžiku běhu</translation>
     </message>
     <message>
         <source>Edit mode on or off: draw the scene; leaving it loads the scene as edited, paused</source>
@@ -225,11 +226,11 @@
     </message>
     <message>
         <source>Edit: select and move bodies (arrows nudge)</source>
-        <translation>Editor: vybírat a posouvat tělesa (šipky posunou o kousek)</translation>
+        <translation>Editor: vybírat a&#xa0;posouvat tělesa (šipky posunou o&#xa0;kousek)</translation>
     </message>
     <message>
         <source>Edit: turn a body by dragging (Q, E by 5°)</source>
-        <translation>Editor: otáčet tělesem tažením (Q, E o 5°)</translation>
+        <translation>Editor: otáčet tělesem tažením (Q, E o&#xa0;5°)</translation>
     </message>
     <message>
         <source>Edit: draw a circle from its centre</source>
@@ -249,7 +250,7 @@
     </message>
     <message>
         <source>Edit: pin a body to another or to the world</source>
-        <translation>Editor: připojit těleso čepem k jinému tělesu nebo k okolí</translation>
+        <translation>Editor: připojit těleso čepem k&#xa0;jinému tělesu nebo k&#xa0;okolí</translation>
     </message>
     <message>
         <source>Edit: draw a spring</source>
@@ -265,7 +266,7 @@
     </message>
     <message>
         <source>Edit: snap to the grid and to corners, on or off</source>
-        <translation>Editor: přichytávání k mřížce a k rohům zapnout nebo vypnout</translation>
+        <translation>Editor: přichytávání k&#xa0;mřížce a&#xa0;k&#xa0;rohům zapnout nebo vypnout</translation>
     </message>
     <message>
         <source>Edit: delete the selected body</source>
@@ -293,11 +294,11 @@
     </message>
     <message>
         <source>Help: this list of keys and mouse actions</source>
-        <translation>Nápověda: tento přehled kláves a ovládání myší</translation>
+        <translation>Nápověda: tento přehled kláves a&#xa0;ovládání myší</translation>
     </message>
     <message>
         <source>Import a measurement (CSV) to compare and fit</source>
-        <translation>Importovat měření (CSV) k porovnání a určení parametrů</translation>
+        <translation>Importovat měření (CSV) k&#xa0;porovnání a&#xa0;určení parametrů</translation>
     </message>
     <message>
         <source>Drop a CSV file on the window</source>
@@ -308,15 +309,15 @@
         <translation>Importovat ho jako měření</translation>
     </message>
     <message>
-        <source>Hand in the lesson's worksheet (PDF)</source>
+        <source>Hand in the lesson&apos;s worksheet (PDF)</source>
         <translation>Odevzdat pracovní list lekce (PDF)</translation>
     </message>
     <message>
-        <source>The lesson's next step</source>
+        <source>The lesson&apos;s next step</source>
         <translation>Další krok lekce</translation>
     </message>
     <message>
-        <source>The lesson's previous step</source>
+        <source>The lesson&apos;s previous step</source>
         <translation>Předchozí krok lekce</translation>
     </message>
     <message>
@@ -334,6 +335,14 @@
     <message>
         <source>Single-key shortcuts (letters, Space, arrows) on or off</source>
         <translation>Jednoklávesové zkratky (písmena, mezerník, šipky) zapnout nebo vypnout</translation>
+    </message>
+    <message>
+        <source>Instruments on the scene: ruler, protractor, stopwatch, probe, frame of reference</source>
+        <translation>Přístroje ve scéně: pravítko, úhloměr, stopky, sonda, vztažná soustava</translation>
+    </message>
+    <message>
+        <source>A graph of chosen bodies&apos; quantities against time</source>
+        <translation>Graf veličin vybraných těles v závislosti na čase</translation>
     </message>
 </context>
 <context>
@@ -399,23 +408,23 @@
     </message>
     <message>
         <source>stopped at t = %1 s: %2</source>
-        <translation>zastaveno v čase t = %1 s: %2</translation>
+        <translation>zastaveno v&#xa0;čase t = %1&#xa0;s: %2</translation>
     </message>
     <message>
-        <source>body "%1": %2 is no longer finite</source>
+        <source>body &quot;%1&quot;: %2 is no longer finite</source>
         <translation>těleso „%1“: %2 už není konečné číslo</translation>
     </message>
     <message>
         <source>the total energy grew to %1 J, past the bound of %2 J</source>
-        <translation>celková energie vzrostla na %1 J, přes mez %2 J</translation>
+        <translation>celková energie vzrostla na %1&#xa0;J, přes mez %2&#xa0;J</translation>
     </message>
     <message>
-        <source> (body "%1" holds the most kinetic energy)</source>
+        <source> (body &quot;%1&quot; holds the most kinetic energy)</source>
         <translation> (největší kinetickou energii má těleso „%1“)</translation>
     </message>
     <message>
         <source>diverged at t = %1 s (step %2, dt = %3 s, %4): %5</source>
-        <translation>divergovala v čase t = %1 s (krok %2, dt = %3 s, %4): %5</translation>
+        <translation>divergovala v&#xa0;čase t = %1&#xa0;s (krok %2, dt = %3&#xa0;s, %4): %5</translation>
     </message>
     <message>
         <source>The simulation %1. It stopped here rather than draw garbage.</source>
@@ -426,15 +435,15 @@
     <name>DriftWords</name>
     <message>
         <source>energy drift %1 %</source>
-        <translation>energetický drift %1 %</translation>
+        <translation>energetický drift %1&#xa0;%</translation>
     </message>
     <message>
         <source>energy drift (integrator, contacts, joints) %1 %</source>
-        <translation>energetický drift (integrátor, kontakty, klouby) %1 %</translation>
+        <translation>energetický drift (integrátor, kontakty, klouby) %1&#xa0;%</translation>
     </message>
     <message>
-        <source>&lt;p&gt;Energy drift: how far the total energy (motion, height, springs) has moved from its value at the start, as a share of it, after adding back what bounces, friction, drag and dampers took. Exact physics would keep it at 0.&lt;/p&gt;&lt;p&gt;What is left is numerical error: the integrator's, step by step; that of the corrections after contacts and joints are solved (bodies that sank into each other are pushed apart, pins are pulled back together); and that of the estimate of what the contacts took, which grows steadily while bodies rest on each other. A method that follows a free fall exactly, such as velocity Verlet, still drifts where bodies touch.&lt;/p&gt;</source>
-        <translation>&lt;p&gt;Energetický drift: o kolik se celková energie (pohyb, výška, pružiny) změnila od začátku, jako podíl počáteční hodnoty, po přičtení toho, co odebraly odrazy, tření, odpor prostředí a tlumiče. Přesná fyzika by ho udržela na 0.&lt;/p&gt;&lt;p&gt;Co zbývá, je numerická chyba: chyba integrátoru krok za krokem; chyba oprav po vyřešení kontaktů a kloubů (tělesa, která se do sebe zabořila, se odsunou od sebe, čepy se přitáhnou zpět k sobě); a chyba odhadu toho, co odebraly kontakty, která stále roste, dokud na sobě tělesa leží. Metoda, která sleduje volný pád přesně, například rychlostní Verletova metoda, proto i tak driftuje tam, kde se tělesa dotýkají.&lt;/p&gt;</translation>
+        <source>&lt;p&gt;Energy drift: how far the total energy (motion, height, springs) has moved from its value at the start, as a share of it, after adding back what bounces, friction, drag and dampers took. Exact physics would keep it at 0.&lt;/p&gt;&lt;p&gt;What is left is numerical error: the integrator&apos;s, step by step; that of the corrections after contacts and joints are solved (bodies that sank into each other are pushed apart, pins are pulled back together); and that of the estimate of what the contacts took, which grows steadily while bodies rest on each other. A method that follows a free fall exactly, such as velocity Verlet, still drifts where bodies touch.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;Energetický drift: o&#xa0;kolik se celková energie (pohyb, výška, pružiny) změnila od začátku, jako podíl počáteční hodnoty, po přičtení toho, co odebraly odrazy, tření, odpor prostředí a&#xa0;tlumiče. Přesná fyzika by ho udržela na 0.&lt;/p&gt;&lt;p&gt;Co zbývá, je numerická chyba: chyba integrátoru krok za krokem; chyba oprav po vyřešení kontaktů a&#xa0;kloubů (tělesa, která se do sebe zabořila, se odsunou od sebe, čepy se přitáhnou zpět k&#xa0;sobě); a&#xa0;chyba odhadu toho, co odebraly kontakty, která stále roste, dokud na sobě tělesa leží. Metoda, která sleduje volný pád přesně, například rychlostní Verletova metoda, proto i&#xa0;tak driftuje tam, kde se tělesa dotýkají.&lt;/p&gt;</translation>
     </message>
 </context>
 <context>
@@ -469,7 +478,7 @@
     </message>
     <message>
         <source>a spring of zero length: drag from one point to another</source>
-        <translation>pružina nulové délky: táhněte od jednoho bodu k druhému</translation>
+        <translation>pružina nulové délky: táhněte od jednoho bodu k&#xa0;druhému</translation>
     </message>
     <message>
         <source>the scene holds %1 springs, the most a scene may have</source>
@@ -481,7 +490,7 @@
     </message>
     <message>
         <source>%1 overlaps %2</source>
-        <translation>%1 se překrývá s %2</translation>
+        <translation>%1 se překrývá s&#xa0;%2</translation>
     </message>
     <message>
         <source>%1; overlapping bodies are pushed apart when the scene runs</source>
@@ -500,7 +509,7 @@
         <translation>tato vlastnost takovou hodnotu nemá</translation>
     </message>
     <message>
-        <source>there is no property "%1"</source>
+        <source>there is no property &quot;%1&quot;</source>
         <translation>vlastnost „%1“ neexistuje</translation>
     </message>
     <message>
@@ -528,27 +537,27 @@
     </message>
     <message>
         <source>: too large: more than %1 bytes (the limit is %2 MiB)</source>
-        <translation>: příliš velký: víc než %1 bajtů (limit je %2 MiB)</translation>
+        <translation>: příliš velký: víc než %1 bajtů (limit je %2&#xa0;MiB)</translation>
     </message>
     <message>
-        <source>unterminated object: a ',' or the closing '}' is missing</source>
-        <translation>neukončený objekt: chybí ',' nebo uzavírací '}'</translation>
+        <source>unterminated object: a &apos;,&apos; or the closing &apos;}&apos; is missing</source>
+        <translation>neukončený objekt: chybí &apos;,&apos; nebo uzavírací &apos;}&apos;</translation>
     </message>
     <message>
-        <source>a ':' is missing after a key</source>
-        <translation>za klíčem chybí ':'</translation>
+        <source>a &apos;:&apos; is missing after a key</source>
+        <translation>za klíčem chybí &apos;:&apos;</translation>
     </message>
     <message>
-        <source>unterminated array: a ',' or the closing ']' is missing</source>
-        <translation>neukončené pole: chybí ',' nebo uzavírací ']'</translation>
+        <source>unterminated array: a &apos;,&apos; or the closing &apos;]&apos; is missing</source>
+        <translation>neukončené pole: chybí &apos;,&apos; nebo uzavírací &apos;]&apos;</translation>
     </message>
     <message>
-        <source>a ',' is missing between two values</source>
-        <translation>mezi dvěma hodnotami chybí ','</translation>
+        <source>a &apos;,&apos; is missing between two values</source>
+        <translation>mezi dvěma hodnotami chybí &apos;,&apos;</translation>
     </message>
     <message>
         <source>not a JSON value (text needs double quotes; true, false and null are lower case)</source>
-        <translation>není hodnota JSON (text patří do dvojitých uvozovek; true, false a null se píší malými písmeny)</translation>
+        <translation>není hodnota JSON (text patří do dvojitých uvozovek; true, false a&#xa0;null se píší malými písmeny)</translation>
     </message>
     <message>
         <source>the file ends inside a number</source>
@@ -560,15 +569,15 @@
     </message>
     <message>
         <source>an invalid escape sequence in a string</source>
-        <translation>neplatná escape sekvence v řetězci</translation>
+        <translation>neplatná escape sekvence v&#xa0;řetězci</translation>
     </message>
     <message>
         <source>the text is not valid UTF-8</source>
         <translation>text není platné UTF-8</translation>
     </message>
     <message>
-        <source>unterminated string: the closing '"' is missing</source>
-        <translation>neukončený řetězec: chybí uzavírací '"'</translation>
+        <source>unterminated string: the closing &apos;&quot;&apos; is missing</source>
+        <translation>neukončený řetězec: chybí uzavírací &apos;&quot;&apos;</translation>
     </message>
     <message>
         <source>a value is missing here (JSON allows no trailing comma)</source>
@@ -596,7 +605,7 @@
     </message>
     <message>
         <source>: too large: %1 bytes (the limit is %2 MiB)</source>
-        <translation>: příliš velký: %1 bajtů (limit je %2 MiB)</translation>
+        <translation>: příliš velký: %1 bajtů (limit je %2&#xa0;MiB)</translation>
     </message>
     <message>
         <source>: line 1, column 1: the file is empty</source>
@@ -604,7 +613,7 @@
     </message>
     <message>
         <source>%1: line %2, column %3: arrays and objects nested deeper than %4 levels (the limit)</source>
-        <translation>%1: řádek %2, sloupec %3: pole a objekty vnořené hlouběji než do %4 úrovní (limit)</translation>
+        <translation>%1: řádek %2, sloupec %3: pole a&#xa0;objekty vnořené hlouběji než do %4 úrovní (limit)</translation>
     </message>
     <message>
         <source>number %1 is not a finite double (out of range or malformed)</source>
@@ -623,8 +632,8 @@
         <translation>musí být objekt {...}, je </translation>
     </message>
     <message>
-        <source>missing: %1 starts with "%2": %3 (the format version)</source>
-        <translation>chybí: %1 začíná klíčem "%2": %3 (verze formátu)</translation>
+        <source>missing: %1 starts with &quot;%2&quot;: %3 (the format version)</source>
+        <translation>chybí: %1 začíná klíčem &quot;%2&quot;: %3 (verze formátu)</translation>
     </message>
     <message>
         <source>unsupported format version %1 (this RigidLab reads version %2)</source>
@@ -656,7 +665,7 @@
     </message>
     <message>
         <source>an array of %1 elements</source>
-        <translation>pole s počtem prvků %1</translation>
+        <translation>pole s&#xa0;počtem prvků %1</translation>
     </message>
     <message>
         <source>must be a pair of numbers [x, y], got </source>
@@ -671,8 +680,8 @@
         <translation>musí být celé číslo od %1 do %2</translation>
     </message>
     <message>
-        <source>must be a string "...", got </source>
-        <translation>musí být řetězec "...", je </translation>
+        <source>must be a string &quot;...&quot;, got </source>
+        <translation>musí být řetězec &quot;...&quot;, je </translation>
     </message>
     <message>
         <source>must be true or false, got </source>
@@ -683,12 +692,12 @@
         <translation>musí být %1, je %2</translation>
     </message>
     <message>
-        <source>must be one line (it is shown in the lesson menu); put longer text in "summary"</source>
-        <translation>musí být na jednom řádku (zobrazuje se v nabídce lekcí); delší text patří do "summary"</translation>
+        <source>must be one line (it is shown in the lesson menu); put longer text in &quot;summary&quot;</source>
+        <translation>musí být na jednom řádku (zobrazuje se v&#xa0;nabídce lekcí); delší text patří do &quot;summary&quot;</translation>
     </message>
     <message>
-        <source>is %1 characters long; at most %2 fit a menu line (put longer text in "summary")</source>
-        <translation>má %1 znaků; na řádek nabídky se vejde nejvýš %2 (delší text patří do "summary")</translation>
+        <source>is %1 characters long; at most %2 fit a menu line (put longer text in &quot;summary&quot;)</source>
+        <translation>má %1 znaků; na řádek nabídky se vejde nejvýš %2 (delší text patří do &quot;summary&quot;)</translation>
     </message>
     <message>
         <source>must not be empty (leave the key out instead)</source>
@@ -703,8 +712,8 @@
         <translation>nesmí být prázdné</translation>
     </message>
     <message>
-        <source>must be a non-empty string "...", got </source>
-        <translation>musí být neprázdný řetězec "...", je </translation>
+        <source>must be a non-empty string &quot;...&quot;, got </source>
+        <translation>musí být neprázdný řetězec &quot;...&quot;, je </translation>
     </message>
     <message>
         <source>a lesson needs 1 to %1 steps, got %2</source>
@@ -715,20 +724,20 @@
         <translation>kroky až po tento obsahují celkem %1 těles, víc než limit %2 pro lekci</translation>
     </message>
     <message>
-        <source>"%1" plots the worlds of "compare", and this step has none</source>
-        <translation>"%1" kreslí světy z "compare", ale tento krok žádné nemá</translation>
+        <source>&quot;%1&quot; plots the worlds of &quot;compare&quot;, and this step has none</source>
+        <translation>&quot;%1&quot; kreslí světy z&#xa0;&quot;compare&quot;, ale tento krok žádné nemá</translation>
     </message>
     <message>
         <source>must be at most %1 s, got %2</source>
-        <translation>musí být nejvýš %1 s, je %2</translation>
+        <translation>musí být nejvýš %1&#xa0;s, je %2</translation>
     </message>
     <message>
         <source>%1 s at a step of %2 s is more than %3 steps</source>
-        <translation>%1 s při kroku %2 s je víc než %3 kroků</translation>
+        <translation>%1&#xa0;s při kroku %2&#xa0;s je víc než %3 kroků</translation>
     </message>
     <message>
-        <source>the "sat" panel needs the pair it looks at: add "sat": {"a": ID, "b": ID} to the step</source>
-        <translation>panel "sat" potřebuje dvojici, kterou zkoumá: přidejte do kroku "sat": {"a": ID, "b": ID}</translation>
+        <source>the &quot;sat&quot; panel needs the pair it looks at: add &quot;sat&quot;: {&quot;a&quot;: ID, &quot;b&quot;: ID} to the step</source>
+        <translation>panel &quot;sat&quot; potřebuje dvojici, kterou zkoumá: přidejte do kroku &quot;sat&quot;: {&quot;a&quot;: ID, &quot;b&quot;: ID}</translation>
     </message>
     <message>
         <source>must be a string or an array of strings, got </source>
@@ -736,107 +745,107 @@
     </message>
     <message>
         <source>required, but missing (a scene object, or the path of a scene file)</source>
-        <translation>povinné, ale chybí (objekt scény nebo cesta k souboru scény)</translation>
+        <translation>povinné, ale chybí (objekt scény nebo cesta k&#xa0;souboru scény)</translation>
     </message>
     <message>
         <source>must be a scene object {...} or the path of a scene file, got </source>
-        <translation>musí být objekt scény {...} nebo cesta k souboru scény, je </translation>
+        <translation>musí být objekt scény {...} nebo cesta k&#xa0;souboru scény, je </translation>
     </message>
     <message>
         <source>must name a scene file, got an empty path</source>
         <translation>musí uvádět soubor scény, je prázdná cesta</translation>
     </message>
     <message>
-        <source>use '/' between folders, got "%1"</source>
-        <translation>mezi složkami pište '/', je "%1"</translation>
+        <source>use &apos;/&apos; between folders, got &quot;%1&quot;</source>
+        <translation>mezi složkami pište &apos;/&apos;, je &quot;%1&quot;</translation>
     </message>
     <message>
-        <source>must be a path relative to the lesson's folder, got "%1"</source>
-        <translation>musí být cesta relativní ke složce lekce, je "%1"</translation>
+        <source>must be a path relative to the lesson&apos;s folder, got &quot;%1&quot;</source>
+        <translation>musí být cesta relativní ke složce lekce, je &quot;%1&quot;</translation>
     </message>
     <message>
         <source>must not hold control characters</source>
         <translation>nesmí obsahovat řídicí znaky</translation>
     </message>
     <message>
-        <source>"%1" is not a plain file</source>
-        <translation>"%1" není obyčejný soubor</translation>
+        <source>&quot;%1&quot; is not a plain file</source>
+        <translation>&quot;%1&quot; není obyčejný soubor</translation>
     </message>
     <message>
-        <source>unknown integrator "%1" (expected %2)</source>
-        <translation>neznámý integrátor "%1" (očekáváno: %2)</translation>
+        <source>unknown integrator &quot;%1&quot; (expected %2)</source>
+        <translation>neznámý integrátor &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
-        <source>unknown solver "%1" (expected %2)</source>
-        <translation>neznámý řešič "%1" (očekáváno: %2)</translation>
+        <source>unknown solver &quot;%1&quot; (expected %2)</source>
+        <translation>neznámý řešič &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
-        <source>compare "integrators" or "solvers", not both</source>
-        <translation>porovnávejte "integrators", nebo "solvers", ne obojí</translation>
+        <source>compare &quot;integrators&quot; or &quot;solvers&quot;, not both</source>
+        <translation>porovnávejte &quot;integrators&quot;, nebo &quot;solvers&quot;, ne obojí</translation>
     </message>
     <message>
-        <source>needs "integrators" or "solvers": the worlds to run side by side</source>
-        <translation>potřebuje "integrators" nebo "solvers": světy, které poběží vedle sebe</translation>
+        <source>needs &quot;integrators&quot; or &quot;solvers&quot;: the worlds to run side by side</source>
+        <translation>potřebuje &quot;integrators&quot; nebo &quot;solvers&quot;: světy, které poběží vedle sebe</translation>
     </message>
     <message>
         <source>settings.%1 is given too: the main world runs the first of this list, so leave settings.%1 out</source>
-        <translation>zadáno je i settings.%1: hlavní svět běží s první položkou tohoto seznamu, settings.%1 proto vynechte</translation>
+        <translation>zadáno je i&#xa0;settings.%1: hlavní svět běží s&#xa0;první položkou tohoto seznamu, settings.%1 proto vynechte</translation>
     </message>
     <message>
         <source>compares 2 to %1 worlds, got %2</source>
         <translation>porovnává 2 až %1 světů, je jich %2</translation>
     </message>
     <message>
-        <source>must be a name "...", got </source>
-        <translation>musí být název "...", je </translation>
+        <source>must be a name &quot;...&quot;, got </source>
+        <translation>musí být název &quot;...&quot;, je </translation>
     </message>
     <message>
-        <source>"%1" is listed twice</source>
-        <translation>"%1" je uvedeno dvakrát</translation>
+        <source>&quot;%1&quot; is listed twice</source>
+        <translation>&quot;%1&quot; je uvedeno dvakrát</translation>
     </message>
     <message>
-        <source>unknown %1 "%2" (expected %3)</source>
-        <translation>%1 "%2" neexistuje (očekáváno: %3)</translation>
+        <source>unknown %1 &quot;%2&quot; (expected %3)</source>
+        <translation>%1 &quot;%2&quot; neexistuje (očekáváno: %3)</translation>
     </message>
     <message>
         <source>: the top level must be an object {...}, got an array</source>
         <translation>: nejvyšší úroveň musí být objekt {...}, je pole</translation>
     </message>
     <message>
-        <source>no body with id "%1"</source>
-        <translation>žádné těleso nemá id "%1"</translation>
+        <source>no body with id &quot;%1&quot;</source>
+        <translation>žádné těleso nemá id &quot;%1&quot;</translation>
     </message>
     <message>
-        <source>unknown measure "%1" (expected %2)</source>
-        <translation>neznámé měření "%1" (očekáváno: %2)</translation>
+        <source>unknown measure &quot;%1&quot; (expected %2)</source>
+        <translation>neznámé měření &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
-        <source>body "%1" is static: it never moves</source>
-        <translation>těleso "%1" je statické: nikdy se nepohne</translation>
+        <source>body &quot;%1&quot; is static: it never moves</source>
+        <translation>těleso &quot;%1&quot; je statické: nikdy se nepohne</translation>
     </message>
     <message>
-        <source>body "%1" is kinematic: it never bounces</source>
-        <translation>těleso "%1" je kinematické: nikdy se neodrazí</translation>
+        <source>body &quot;%1&quot; is kinematic: it never bounces</source>
+        <translation>těleso &quot;%1&quot; je kinematické: nikdy se neodrazí</translation>
     </message>
     <message>
-        <source>"%1": this step shows no panel "%2" (its panels: %3)</source>
-        <translation>"%1": tento krok nezobrazuje panel "%2" (jeho panely: %3)</translation>
+        <source>&quot;%1&quot;: this step shows no panel &quot;%2&quot; (its panels: %3)</source>
+        <translation>&quot;%1&quot;: tento krok nezobrazuje panel &quot;%2&quot; (jeho panely: %3)</translation>
     </message>
     <message>
-        <source>"%1": this step shows no plot "%2" (its plots: %3)</source>
-        <translation>"%1": tento krok nezobrazuje graf "%2" (jeho grafy: %3)</translation>
+        <source>&quot;%1&quot;: this step shows no plot &quot;%2&quot; (its plots: %3)</source>
+        <translation>&quot;%1&quot;: tento krok nezobrazuje graf &quot;%2&quot; (jeho grafy: %3)</translation>
     </message>
     <message>
-        <source>"%1" is a column of the %2 panel, which this step does not show</source>
-        <translation>"%1" je sloupec panelu %2, který tento krok nezobrazuje</translation>
+        <source>&quot;%1&quot; is a column of the %2 panel, which this step does not show</source>
+        <translation>&quot;%1&quot; je sloupec panelu %2, který tento krok nezobrazuje</translation>
     </message>
     <message>
-        <source>unknown name "%1" (expected run, panel:NAME, plot:NAME, %2, %3)</source>
-        <translation>neznámý název "%1" (očekáváno: run, panel:NAME, plot:NAME, %2, %3)</translation>
+        <source>unknown name &quot;%1&quot; (expected run, panel:NAME, plot:NAME, %2, %3)</source>
+        <translation>neznámý název &quot;%1&quot; (očekáváno: run, panel:NAME, plot:NAME, %2, %3)</translation>
     </message>
     <message>
         <source>required, but missing (what the answer is checked against)</source>
-        <translation>povinné, ale chybí (s čím se odpověď porovnává)</translation>
+        <translation>povinné, ale chybí (s&#xa0;čím se odpověď porovnává)</translation>
     </message>
     <message>
         <source>0, and so is absoluteTolerance: no typed answer would ever be right</source>
@@ -847,12 +856,12 @@
         <translation>nesmí být prázdné (bez nápovědy klíč vynechte)</translation>
     </message>
     <message>
-        <source>the same body as "a": the test needs two bodies</source>
-        <translation>totéž těleso jako "a": test potřebuje dvě tělesa</translation>
+        <source>the same body as &quot;a&quot;: the test needs two bodies</source>
+        <translation>totéž těleso jako &quot;a&quot;: test potřebuje dvě tělesa</translation>
     </message>
     <message>
-        <source>body "%1" is a circle: the separating axis test steps through polygons (boxes and polygons)</source>
-        <translation>těleso "%1" je kruh: test oddělující osy prochází mnohoúhelníky (obdélníky a mnohoúhelníky)</translation>
+        <source>body &quot;%1&quot; is a circle: the separating axis test steps through polygons (boxes and polygons)</source>
+        <translation>těleso &quot;%1&quot; je kruh: test oddělující osy prochází mnohoúhelníky (obdélníky a&#xa0;mnohoúhelníky)</translation>
     </message>
     <message>
         <source>%1 questions, more than the limit of %2</source>
@@ -875,40 +884,40 @@
         <translation>delší než %1 znaků</translation>
     </message>
     <message>
-        <source>must not be empty (leave "label" out to show the id)</source>
-        <translation>nesmí být prázdný (bez klíče "label" se ukáže id)</translation>
+        <source>must not be empty (leave &quot;label&quot; out to show the id)</source>
+        <translation>nesmí být prázdný (bez klíče &quot;label&quot; se ukáže id)</translation>
     </message>
     <message>
-        <source>duplicate id "%1" (bodies[%2] has it already)</source>
-        <translation>opakované id "%1" (už ho má bodies[%2])</translation>
+        <source>duplicate id &quot;%1&quot; (bodies[%2] has it already)</source>
+        <translation>opakované id &quot;%1&quot; (už ho má bodies[%2])</translation>
     </message>
     <message>
-        <source>unknown body type "%1" (expected dynamic, static, kinematic)</source>
-        <translation>neznámý typ tělesa "%1" (očekáváno: dynamic, static, kinematic)</translation>
+        <source>unknown body type &quot;%1&quot; (expected dynamic, static, kinematic)</source>
+        <translation>neznámý typ tělesa &quot;%1&quot; (očekáváno: dynamic, static, kinematic)</translation>
     </message>
     <message>
-        <source>give "density" or "mass", not both</source>
-        <translation>zadejte "density", nebo "mass", ne obojí</translation>
+        <source>give &quot;density&quot; or &quot;mass&quot;, not both</source>
+        <translation>zadejte &quot;density&quot;, nebo &quot;mass&quot;, ne obojí</translation>
     </message>
     <message>
         <source>too large or too small: its area works out as %1 m^2</source>
-        <translation>příliš velký nebo příliš malý: obsah vychází %1 m^2</translation>
+        <translation>příliš velký nebo příliš malý: obsah vychází %1&#xa0;m^2</translation>
     </message>
     <message>
         <source>the mass works out as %1 kg (density times area); it must be %2</source>
-        <translation>hmotnost vychází %1 kg (hustota krát obsah); musí být %2</translation>
+        <translation>hmotnost vychází %1&#xa0;kg (hustota krát obsah); musí být %2</translation>
     </message>
     <message>
-        <source>a static body never moves: its velocity is ignored (make it "kinematic" to move it)</source>
-        <translation>statické těleso se nikdy nepohne: jeho rychlost se nepoužije (má-li se pohybovat, zadejte "kinematic")</translation>
+        <source>a static body never moves: its velocity is ignored (make it &quot;kinematic&quot; to move it)</source>
+        <translation>statické těleso se nikdy nepohne: jeho rychlost se nepoužije (má-li se pohybovat, zadejte &quot;kinematic&quot;)</translation>
     </message>
     <message>
         <source>a polygon needs 3 to %1 vertices, got %2</source>
         <translation>mnohoúhelník potřebuje 3 až %1 vrcholů, má %2</translation>
     </message>
     <message>
-        <source>unknown shape type "%1" (expected circle, box, polygon)</source>
-        <translation>neznámý typ tvaru "%1" (očekáváno: circle, box, polygon)</translation>
+        <source>unknown shape type &quot;%1&quot; (expected circle, box, polygon)</source>
+        <translation>neznámý typ tvaru &quot;%1&quot; (očekáváno: circle, box, polygon)</translation>
     </message>
     <message>
         <source>required, but missing (a body id)</source>
@@ -932,11 +941,11 @@
     </message>
     <message>
         <source>both ends are fixed in the world (a and b are null): a spring needs a body at one end</source>
-        <translation>oba konce jsou pevně ve světě ("a" i "b" jsou null): pružina potřebuje těleso aspoň na jednom konci</translation>
+        <translation>oba konce jsou pevně ve světě (&quot;a&quot; i&#xa0;&quot;b&quot; jsou null): pružina potřebuje těleso aspoň na jednom konci</translation>
     </message>
     <message>
-        <source>the same body as "a": a spring joins two bodies</source>
-        <translation>totéž těleso jako "a": pružina spojuje dvě tělesa</translation>
+        <source>the same body as &quot;a&quot;: a spring joins two bodies</source>
+        <translation>totéž těleso jako &quot;a&quot;: pružina spojuje dvě tělesa</translation>
     </message>
     <message>
         <source>the anchors are too far apart to measure</source>
@@ -947,64 +956,64 @@
         <translation>počet kloubů %1 překračuje limit %2</translation>
     </message>
     <message>
-        <source>unknown joint type "%1" (expected pin)</source>
-        <translation>neznámý typ kloubu "%1" (očekáváno: pin)</translation>
+        <source>unknown joint type &quot;%1&quot; (expected pin)</source>
+        <translation>neznámý typ kloubu &quot;%1&quot; (očekáváno: pin)</translation>
     </message>
     <message>
-        <source>the same body as "a": a pin joins two bodies</source>
-        <translation>totéž těleso jako "a": čep spojuje dvě tělesa</translation>
+        <source>the same body as &quot;a&quot;: a pin joins two bodies</source>
+        <translation>totéž těleso jako &quot;a&quot;: čep spojuje dvě tělesa</translation>
     </message>
     <message>
         <source>the anchors are %1 m apart at the start; the joint pulls them together at once</source>
-        <translation>kotevní body jsou na začátku %1 m od sebe; kloub je hned stáhne k sobě</translation>
+        <translation>kotevní body jsou na začátku %1&#xa0;m od sebe; kloub je hned stáhne k&#xa0;sobě</translation>
     </message>
     <message>
-        <source>unknown language "%1" (expected %2)</source>
-        <translation>neznámý jazyk "%1" (očekáváno: %2)</translation>
+        <source>unknown language &quot;%1&quot; (expected %2)</source>
+        <translation>neznámý jazyk &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
-        <source>needs the English text "%1", shown when a language is missing</source>
-        <translation>potřebuje anglický text "%1", který se zobrazí, když jazyk chybí</translation>
+        <source>needs the English text &quot;%1&quot;, shown when a language is missing</source>
+        <translation>potřebuje anglický text &quot;%1&quot;, který se zobrazí, když jazyk chybí</translation>
     </message>
     <message>
-        <source>must be %1, or an object of languages {"en": ..., "cs": ...}, got </source>
-        <translation>musí být %1 nebo objekt jazyků {"en": ..., "cs": ...}, je </translation>
+        <source>must be %1, or an object of languages {&quot;en&quot;: ..., &quot;cs&quot;: ...}, got </source>
+        <translation>musí být %1 nebo objekt jazyků {&quot;en&quot;: ..., &quot;cs&quot;: ...}, je </translation>
     </message>
     <message>
-        <source>must be a string "...", or an object of languages {"en": "...", "cs": "..."}, got </source>
-        <translation>musí být řetězec "..." nebo objekt jazyků {"en": "...", "cs": "..."}, je </translation>
+        <source>must be a string &quot;...&quot;, or an object of languages {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, got </source>
+        <translation>musí být řetězec &quot;...&quot; nebo objekt jazyků {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, je </translation>
     </message>
     <message>
         <source>%1 %2, more than the limit of %3</source>
         <translation>%2: počet položek %1 překračuje limit %3</translation>
     </message>
     <message>
-        <source>must be an array [...], or an object of languages {"en": [...], "cs": [...]}, got </source>
-        <translation>musí být pole [...] nebo objekt jazyků {"en": [...], "cs": [...]}, je </translation>
+        <source>must be an array [...], or an object of languages {&quot;en&quot;: [...], &quot;cs&quot;: [...]}, got </source>
+        <translation>musí být pole [...] nebo objekt jazyků {&quot;en&quot;: [...], &quot;cs&quot;: [...]}, je </translation>
     </message>
     <message>
-        <source>no %1 text ("%2"); English is shown instead</source>
-        <translation>chybí text pro jazyk %1 ("%2"); místo něj se zobrazí anglický</translation>
+        <source>no %1 text (&quot;%2&quot;); English is shown instead</source>
+        <translation>chybí text pro jazyk %1 (&quot;%2&quot;); místo něj se zobrazí anglický</translation>
     </message>
     <message>
-        <source>the lesson's folder</source>
+        <source>the lesson&apos;s folder</source>
         <translation>složku lekce</translation>
     </message>
     <message>
         <source>the data folder (scenes/ and lessons/)</source>
-        <translation>datovou složku (scenes/ a lessons/)</translation>
+        <translation>datovou složku (scenes/ a&#xa0;lessons/)</translation>
     </message>
     <message>
-        <source>must not leave %1, got "%2"</source>
-        <translation>nesmí vést mimo %1, je "%2"</translation>
+        <source>must not leave %1, got &quot;%2&quot;</source>
+        <translation>nesmí vést mimo %1, je &quot;%2&quot;</translation>
     </message>
     <message>
-        <source>"%1" leads out of %2 (through a symbolic link)</source>
-        <translation>"%1" vede mimo %2 (přes symbolický odkaz)</translation>
+        <source>&quot;%1&quot; leads out of %2 (through a symbolic link)</source>
+        <translation>&quot;%1&quot; vede mimo %2 (přes symbolický odkaz)</translation>
     </message>
     <message>
-        <source>must be a colour "#rrggbb" (six hexadecimal digits, as "#d04030"), got "%1"</source>
-        <translation>musí být barva "#rrggbb" (šest šestnáctkových číslic, např. "#d04030"), je "%1"</translation>
+        <source>must be a colour &quot;#rrggbb&quot; (six hexadecimal digits, as &quot;#d04030&quot;), got &quot;%1&quot;</source>
+        <translation>musí být barva &quot;#rrggbb&quot; (šest šestnáctkových číslic, např. &quot;#d04030&quot;), je &quot;%1&quot;</translation>
     </message>
     <message>
         <source>must be one line</source>
@@ -1023,7 +1032,7 @@
         <translation>soubor odpovědí</translation>
     </message>
     <message>
-        <source>must be a date YYYY-MM-DD, got "%1"</source>
+        <source>must be a date YYYY-MM-DD, got &quot;%1&quot;</source>
         <translation>musí být datum RRRR-MM-DD, je „%1“</translation>
     </message>
     <message>
@@ -1035,7 +1044,7 @@
         <translation>steps: %1 kroků, lekce jich má %2</translation>
     </message>
     <message>
-        <source>steps[%1].questions: %2 questions, the lesson's step %3 has %4</source>
+        <source>steps[%1].questions: %2 questions, the lesson&apos;s step %3 has %4</source>
         <translation>steps[%1].questions: %2 otázek, krok %3 lekce jich má %4</translation>
     </message>
     <message>
@@ -1043,7 +1052,7 @@
         <translation>musí být jeden řádek o nejvýše %1 znacích</translation>
     </message>
     <message>
-        <source>must be a date written YYYY-MM-DD, got "%1"</source>
+        <source>must be a date written YYYY-MM-DD, got &quot;%1&quot;</source>
         <translation>musí být datum ve tvaru RRRR-MM-DD, je „%1“</translation>
     </message>
     <message>
@@ -1051,7 +1060,7 @@
         <translation>obsahuje %1 scén; soubor lekce jich obsahuje nejvýše %2</translation>
     </message>
     <message>
-        <source>"%1" is not a scene's name in a lesson file (scenes/NAME.json, NAME of letters, digits, _ . -)</source>
+        <source>&quot;%1&quot; is not a scene&apos;s name in a lesson file (scenes/NAME.json, NAME of letters, digits, _ . -)</source>
         <translation>„%1“ není název scény v souboru lekce (scenes/NÁZEV.json, NÁZEV z písmen, číslic, _ . -)</translation>
     </message>
     <message>
@@ -1059,7 +1068,7 @@
         <translation>soubor lekce (.rlesson)</translation>
     </message>
     <message>
-        <source>"%1" is not among the scenes this file holds (%2)</source>
+        <source>&quot;%1&quot; is not among the scenes this file holds (%2)</source>
         <translation>„%1“ není mezi scénami, které tento soubor obsahuje (%2)</translation>
     </message>
     <message>
@@ -1083,7 +1092,7 @@
     </message>
     <message>
         <source>n = %1: the contact normal, from B to A</source>
-        <translation>n = %1: normála kontaktu, od B k A</translation>
+        <translation>n = %1: normála kontaktu, od B k&#xa0;A</translation>
     </message>
     <message>
         <source>(v&lt;sub&gt;A&lt;/sub&gt; − v&lt;sub&gt;B&lt;/sub&gt;)·n = %1: how fast the contact points approach along n (negative: approaching)</source>
@@ -1095,14 +1104,14 @@
     </message>
     <message>
         <source>r&lt;sub&gt;A&lt;/sub&gt; = %1: the lever arm of A, from its centre of mass to the contact point; (r&lt;sub&gt;A&lt;/sub&gt; × n)²/I&lt;sub&gt;A&lt;/sub&gt; = %2</source>
-        <translation>r&lt;sub&gt;A&lt;/sub&gt; = %1: rameno tělesa A, od jeho těžiště k bodu dotyku; (r&lt;sub&gt;A&lt;/sub&gt; × n)²/I&lt;sub&gt;A&lt;/sub&gt; = %2</translation>
+        <translation>r&lt;sub&gt;A&lt;/sub&gt; = %1: rameno tělesa A, od jeho těžiště k&#xa0;bodu dotyku; (r&lt;sub&gt;A&lt;/sub&gt; × n)²/I&lt;sub&gt;A&lt;/sub&gt; = %2</translation>
     </message>
     <message>
         <source>r&lt;sub&gt;B&lt;/sub&gt; = %1: the lever arm of B; (r&lt;sub&gt;B&lt;/sub&gt; × n)²/I&lt;sub&gt;B&lt;/sub&gt; = %2</source>
         <translation>r&lt;sub&gt;B&lt;/sub&gt; = %1: rameno tělesa B; (r&lt;sub&gt;B&lt;/sub&gt; × n)²/I&lt;sub&gt;B&lt;/sub&gt; = %2</translation>
     </message>
     <message>
-        <source>j is shown once you have answered the lesson's question.</source>
+        <source>j is shown once you have answered the lesson&apos;s question.</source>
         <translation>j se ukáže, jakmile odpovíte na otázku lekce.</translation>
     </message>
 </context>
@@ -1110,7 +1119,7 @@
     <name>Judge</name>
     <message>
         <source>Run the simulation until t = %1 s first.</source>
-        <translation>Nejdřív nechte simulaci běžet až do t = %1 s.</translation>
+        <translation>Nejdřív nechte simulaci běžet až do t = %1&#xa0;s.</translation>
     </message>
     <message>
         <source>Type a number first.</source>
@@ -1209,7 +1218,7 @@
     </message>
     <message>
         <source> · dt = %1 s</source>
-        <translation> · dt = %1 s</translation>
+        <translation> · dt = %1&#xa0;s</translation>
     </message>
     <message>
         <source>cannot make the folder %1</source>
@@ -1294,7 +1303,7 @@
     <name>SatHandout</name>
     <message>
         <source>The test stops at axis %1 of the %2 it tried: a gap, so no collision.</source>
-        <translation>Test se zastaví u osy %1 z %2 vyzkoušených: mezera, tedy žádná srážka.</translation>
+        <translation>Test se zastaví u&#xa0;osy %1 z&#xa0;%2 vyzkoušených: mezera, tedy žádná srážka.</translation>
     </message>
     <message>
         <source>All %1 axes overlap: the polygons intersect. Least penetration: axis %2, depth %3.</source>
@@ -1332,11 +1341,11 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>Separating axis test: %1 (A) and %2 (B)</source>
-        <translation>Test oddělující osy: %1 (A) a %2 (B)</translation>
+        <translation>Test oddělující osy: %1 (A) a&#xa0;%2 (B)</translation>
     </message>
     <message>
         <source>Projections on each axis the test tried, in metres: A filled, B hatched.</source>
-        <translation>Průměty na každou osu, kterou test vyzkoušel, v metrech: A plné, B šrafované.</translation>
+        <translation>Průměty na každou osu, kterou test vyzkoušel, v&#xa0;metrech: A plné, B šrafované.</translation>
     </message>
     <message>
         <source>cannot make the folder %1</source>
@@ -1347,11 +1356,11 @@ n = (%4; %5)</translation>
     <name>SatOverlayItem</name>
     <message>
         <source>gap %1 m</source>
-        <translation>mezera %1 m</translation>
+        <translation>mezera %1&#xa0;m</translation>
     </message>
     <message>
         <source>overlap %1 m</source>
-        <translation>překryv %1 m</translation>
+        <translation>překryv %1&#xa0;m</translation>
     </message>
     <message>
         <source>separating axis: no collision</source>
@@ -1561,7 +1570,7 @@ n = (%4; %5)</translation>
     <name>SceneWords</name>
     <message>
         <source>(%1; %2) %3</source>
-        <translation>(%1; %2) %3</translation>
+        <translation>(%1; %2)&#xa0;%3</translation>
     </message>
     <message>
         <source>Scene</source>
@@ -1589,7 +1598,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>The simulation stopped at %1: it diverged.</source>
-        <translation>Simulace se zastavila v čase %1: výpočet se rozběhl.</translation>
+        <translation>Simulace se zastavila v&#xa0;čase %1: výpočet se rozběhl.</translation>
     </message>
     <message>
         <source>Running, time %1.</source>
@@ -1597,7 +1606,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>Paused at time %1.</source>
-        <translation>Pozastaveno v čase %1.</translation>
+        <translation>Pozastaveno v&#xa0;čase %1.</translation>
     </message>
     <message numerus="yes">
         <source>%n pair(s) of bodies touch.</source>
@@ -1613,7 +1622,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>%1 runs or pauses; %2 and %3 select a body; arrows move it, Shift+arrows change its velocity, Enter shows its numbers.</source>
-        <translation>%1 spustí nebo pozastaví; %2 a %3 vyberou těleso; šipky ho posunou, Shift+šipky změní jeho rychlost, Enter ukáže jeho hodnoty.</translation>
+        <translation>%1 spustí nebo pozastaví; %2 a&#xa0;%3 vyberou těleso; šipky ho posunou, Shift+šipky změní jeho rychlost, Enter ukáže jeho hodnoty.</translation>
     </message>
     <message>
         <source>%1 (%2)</source>
@@ -1684,15 +1693,15 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>the welcome scene after %1 s</source>
-        <translation>uvítací scéna po %1 s</translation>
+        <translation>uvítací scéna po %1&#xa0;s</translation>
     </message>
     <message>
         <source>%1, step %2 of %3: %4, after %5 s</source>
-        <translation>%1, krok %2 z %3: %4, po %5 s</translation>
+        <translation>%1, krok %2 z&#xa0;%3: %4, po %5&#xa0;s</translation>
     </message>
     <message>
         <source>a lesson step with the controls, the inspector and the collision table shown</source>
-        <translation>krok lekce s ovládáním, inspektorem a tabulkou srážky</translation>
+        <translation>krok lekce s&#xa0;ovládáním, inspektorem a&#xa0;tabulkou srážky</translation>
     </message>
     <message>
         <source>Help › Controls over the window</source>
@@ -1700,22 +1709,22 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>the same step in presentation mode</source>
-        <translation>týž krok v režimu prezentace</translation>
+        <translation>týž krok v&#xa0;režimu prezentace</translation>
     </message>
     <message>
         <source>the editor on a new scene</source>
-        <translation>editor s novou scénou</translation>
+        <translation>editor s&#xa0;novou scénou</translation>
     </message>
     <message>
         <source>a measured drop over the simulated one, the residuals and e fitted to it</source>
-        <translation>naměřený pád přes simulovaný, rezidua a e určené z měření</translation>
+        <translation>naměřený pád přes simulovaný, rezidua a&#xa0;e určené z&#xa0;měření</translation>
     </message>
     <message>
         <source>the probe beside the ball hit and a graph of both momenta with their sum</source>
         <translation>sonda u zasažené koule a graf hybností obou koulí s jejich součtem</translation>
     </message>
     <message>
-        <source>the ruler between the two balls' starting centres</source>
+        <source>the ruler between the two balls&apos; starting centres</source>
         <translation>pravítko mezi počátečními středy obou koulí</translation>
     </message>
     <message>
@@ -1759,10 +1768,10 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>Worksheet to fill in</source>
-        <translation>Pracovní list k vyplnění</translation>
+        <translation>Pracovní list k&#xa0;vyplnění</translation>
     </message>
     <message>
-        <source>Teacher's key: the measured answers</source>
+        <source>Teacher&apos;s key: the measured answers</source>
         <translation>Klíč pro učitele: změřené odpovědi</translation>
     </message>
     <message>
@@ -1798,8 +1807,8 @@ n = (%4; %5)</translation>
         <translation>Naměřeno (%1):</translation>
     </message>
     <message>
-        <source>Not measured within the step's run.</source>
-        <translation>V běhu kroku se nic nezměřilo.</translation>
+        <source>Not measured within the step&apos;s run.</source>
+        <translation>V&#xa0;běhu kroku se nic nezměřilo.</translation>
     </message>
     <message>
         <source>Measured: %1 (accepted from %2 to %3)</source>
@@ -1830,12 +1839,12 @@ n = (%4; %5)</translation>
         <translation>Naměřená hodnota: %1</translation>
     </message>
     <message>
-        <source>teacher's key</source>
+        <source>teacher&apos;s key</source>
         <translation>klíč pro učitele</translation>
     </message>
     <message>
         <source>%1 does not fit the lesson: %2</source>
-        <translation>%1 nepatří k lekci: %2</translation>
+        <translation>%1 nepatří k&#xa0;lekci: %2</translation>
     </message>
     <message>
         <source>cannot write %1: could not start drawing the PDF</source>
@@ -1861,7 +1870,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source> (≈%1 min)</source>
-        <translation> (≈%1 min)</translation>
+        <translation> (≈%1&#xa0;min)</translation>
     </message>
     <message>
         <source> (your own)</source>
@@ -1875,32 +1884,32 @@ n = (%4; %5)</translation>
 <context>
     <name>rigidlab::measure</name>
     <message>
-        <source>unknown body "%1" (the scene has: %2)</source>
-        <translation>neznámé těleso "%1" (scéna má: %2)</translation>
+        <source>unknown body &quot;%1&quot; (the scene has: %2)</source>
+        <translation>neznámé těleso &quot;%1&quot; (scéna má: %2)</translation>
     </message>
     <message>
         <source>the measurement does not depend on %1: it cannot be fitted from it</source>
-        <translation>měření na %1 nezávisí: z něj ho nelze určit</translation>
+        <translation>měření na %1 nezávisí: z&#xa0;něj ho nelze určit</translation>
     </message>
     <message>
         <source>the parameters cannot be told apart by this measurement</source>
         <translation>toto měření parametry od sebe neodliší</translation>
     </message>
     <message>
-        <source>unknown parameter "%1" (expected restitution, friction, vx or vy)</source>
-        <translation>neznámý parametr "%1" (očekáváno: restitution, friction, vx nebo vy)</translation>
+        <source>unknown parameter &quot;%1&quot; (expected restitution, friction, vx or vy)</source>
+        <translation>neznámý parametr &quot;%1&quot; (očekáváno: restitution, friction, vx nebo vy)</translation>
     </message>
     <message>
         <source>%1: name one body, as in %2:ball</source>
         <translation>%1: uveďte jedno těleso, např. %2:ball</translation>
     </message>
     <message>
-        <source>"%1": expected QUANTITY:BODY with QUANTITY x, y, vx, vy or v, as in y:ball</source>
-        <translation>"%1": očekáváno VELIČINA:TĚLESO, kde VELIČINA je x, y, vx, vy nebo v, např. y:ball</translation>
+        <source>&quot;%1&quot;: expected QUANTITY:BODY with QUANTITY x, y, vx, vy or v, as in y:ball</source>
+        <translation>&quot;%1&quot;: očekáváno VELIČINA:TĚLESO, kde VELIČINA je x, y, vx, vy nebo v, např. y:ball</translation>
     </message>
     <message>
-        <source>the measurement lasts %1 s, more than %2 steps of the scene's %3 s</source>
-        <translation>měření trvá %1 s, víc než %2 kroků scény po %3 s</translation>
+        <source>the measurement lasts %1 s, more than %2 steps of the scene&apos;s %3 s</source>
+        <translation>měření trvá %1&#xa0;s, víc než %2 kroků scény po %3&#xa0;s</translation>
     </message>
     <message>
         <source>fit one to three parameters</source>
@@ -1912,7 +1921,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>%1 bounce times: e needs at least %2 (three flights between them)</source>
-        <translation>časů odrazů je %1: k určení e je potřeba aspoň %2 (tři lety mezi nimi)</translation>
+        <translation>časů odrazů je %1: k&#xa0;určení e je potřeba aspoň %2 (tři lety mezi nimi)</translation>
     </message>
     <message>
         <source>bounce %1 is not after bounce %2</source>
@@ -1927,28 +1936,28 @@ n = (%4; %5)</translation>
         <translation>sloupec %1</translation>
     </message>
     <message>
-        <source>column %1 ("%2")</source>
-        <translation>sloupec %1 ("%2")</translation>
+        <source>column %1 (&quot;%2&quot;)</source>
+        <translation>sloupec %1 (&quot;%2&quot;)</translation>
     </message>
     <message>
         <source>line %1, %2</source>
         <translation>řádek %1, %2</translation>
     </message>
     <message>
-        <source>%1: unknown unit "%2" for %3 (expected %4, or set the unit)</source>
-        <translation>%1: neznámá jednotka "%2" pro %3 (očekáváno %4, nebo jednotku nastavte)</translation>
+        <source>%1: unknown unit &quot;%2&quot; for %3 (expected %4, or set the unit)</source>
+        <translation>%1: neznámá jednotka &quot;%2&quot; pro %3 (očekáváno %4, nebo jednotku nastavte)</translation>
     </message>
     <message>
         <source>%1: the time is missing</source>
         <translation>%1: chybí čas</translation>
     </message>
     <message>
-        <source>%1: %2 is too large in the lab's units</source>
-        <translation>%1: %2 je v jednotkách laboratoře příliš velké</translation>
+        <source>%1: %2 is too large in the lab&apos;s units</source>
+        <translation>%1: %2 je v&#xa0;jednotkách laboratoře příliš velké</translation>
     </message>
     <message>
         <source>%1: the time %2 is not after %3 on line %4 (time must rise from row to row)</source>
-        <translation>%1: čas %2 není větší než %3 na řádku %4 (čas musí od řádku k řádku růst)</translation>
+        <translation>%1: čas %2 není větší než %3 na řádku %4 (čas musí od řádku k&#xa0;řádku růst)</translation>
     </message>
     <message>
         <source>the mapping names %1 columns, the file has %2</source>
@@ -1956,7 +1965,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>%1 and %2 both hold %3: map one of them</source>
-        <translation>%1 i %2 obsahují %3: přiřaďte jen jeden z nich</translation>
+        <translation>%1 i&#xa0;%2 obsahují %3: přiřaďte jen jeden z&#xa0;nich</translation>
     </message>
     <message>
         <source>no column holds the time (name it t or Time (s), or map a column to it)</source>
@@ -1964,7 +1973,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>line %1: only one column; a time series needs the time and a measured value (or read it as bounce times)</source>
-        <translation>řádek %1: jen jeden sloupec; časová řada potřebuje čas a naměřenou hodnotu (nebo ho načtěte jako časy odrazů)</translation>
+        <translation>řádek %1: jen jeden sloupec; časová řada potřebuje čas a&#xa0;naměřenou hodnotu (nebo ho načtěte jako časy odrazů)</translation>
     </message>
     <message>
         <source>%1: no numbers from time zero on</source>
@@ -1983,8 +1992,8 @@ n = (%4; %5)</translation>
         <translation>řádek %1, sloupec %2</translation>
     </message>
     <message>
-        <source>line %1, column %2 ("%3")</source>
-        <translation>řádek %1, sloupec %2 ("%3")</translation>
+        <source>line %1, column %2 (&quot;%3&quot;)</source>
+        <translation>řádek %1, sloupec %2 (&quot;%3&quot;)</translation>
     </message>
     <message>
         <source>%1: binary data (byte %2), not text</source>
@@ -1999,12 +2008,12 @@ n = (%4; %5)</translation>
         <translation>%1: víc než %2 řádků čísel (limit)</translation>
     </message>
     <message>
-        <source>"%1" is not a number</source>
-        <translation>"%1" není číslo</translation>
+        <source>&quot;%1&quot; is not a number</source>
+        <translation>&quot;%1&quot; není číslo</translation>
     </message>
     <message>
-        <source>"%1" is not a finite number</source>
-        <translation>"%1" není konečné číslo</translation>
+        <source>&quot;%1&quot; is not a finite number</source>
+        <translation>&quot;%1&quot; není konečné číslo</translation>
     </message>
     <message>
         <source>%1: the header names %2 columns, the rows below it have %3</source>
@@ -2012,23 +2021,23 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>larger than %1 MB (the limit)</source>
-        <translation>větší než %1 MB (limit)</translation>
+        <translation>větší než %1&#xa0;MB (limit)</translation>
     </message>
     <message>
         <source>the file is empty</source>
         <translation>soubor je prázdný</translation>
     </message>
     <message>
-        <source>%1: a quote (") is not closed</source>
-        <translation>%1: uvozovka (") není uzavřená</translation>
+        <source>%1: a quote (&quot;) is not closed</source>
+        <translation>%1: uvozovka (&quot;) není uzavřená</translation>
     </message>
     <message>
         <source>no row of numbers in the first %1 lines</source>
-        <translation>v prvních %1 řádcích není žádný řádek čísel</translation>
+        <translation>v&#xa0;prvních %1 řádcích není žádný řádek čísel</translation>
     </message>
     <message>
         <source>no row of numbers (a measurement has a number in every column of its rows)</source>
-        <translation>žádný řádek čísel (měření má v každém sloupci svých řádků číslo)</translation>
+        <translation>žádný řádek čísel (měření má v&#xa0;každém sloupci svých řádků číslo)</translation>
     </message>
     <message>
         <source>%1: %2 columns, more than %3 (the limit)</source>
@@ -2081,7 +2090,7 @@ n = (%4; %5)</translation>
         <translation>Výšky středu nad místem, kde se míček dotkl podložky. Při koeficientu restituce e by měl každý odskok dosáhnout e²‑násobku předchozího.</translation>
     </message>
     <message>
-        <source>Answer the lesson's question first</source>
+        <source>Answer the lesson&apos;s question first</source>
         <translation>Nejdřív odpovězte na otázku lekce</translation>
     </message>
     <message>
@@ -2106,7 +2115,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>no.</source>
-        <comment>a bounce's number</comment>
+        <comment>a bounce&apos;s number</comment>
         <translation>č.</translation>
     </message>
     <message>
@@ -2125,7 +2134,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>The height over the one before: compare it with e²</source>
-        <translation>Výška dělená předchozí: porovnejte s e²</translation>
+        <translation>Výška dělená předchozí: porovnejte s&#xa0;e²</translation>
     </message>
     <message>
         <source>%1: e = %2, e² = %3</source>
@@ -2157,7 +2166,7 @@ y %2</source>
 y %2</translation>
     </message>
     <message>
-        <source>Answer the lesson's question first</source>
+        <source>Answer the lesson&apos;s question first</source>
         <translation>Nejdřív odpovězte na otázku lekce</translation>
     </message>
     <message>
@@ -2182,7 +2191,7 @@ y %2</translation>
     </message>
     <message>
         <source>Collision of %1 and %2 at t = %3 s</source>
-        <translation>Srážka: %1 a %2 v čase t = %3 s</translation>
+        <translation>Srážka: %1 a&#xa0;%2 v&#xa0;čase t&#xa0;=&#xa0;%3&#xa0;s</translation>
     </message>
     <message>
         <source>%1: velocity [m/s]</source>
@@ -2210,18 +2219,18 @@ y %2</translation>
     </message>
     <message>
         <source>(%1, %2)</source>
-        <comment>a vector's x and y</comment>
+        <comment>a vector&apos;s x and y</comment>
         <translation>(%1; %2)</translation>
     </message>
     <message>
         <source>Velocities before and after</source>
-        <translation>Rychlosti před a po</translation>
+        <translation>Rychlosti před a&#xa0;po</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::ColourField</name>
     <message>
-        <source>Choose the body's colour</source>
+        <source>Choose the body&apos;s colour</source>
         <translation>Zvolit barvu tělesa</translation>
     </message>
     <message>
@@ -2229,15 +2238,15 @@ y %2</translation>
         <translation>výchozí</translation>
     </message>
     <message>
-        <source>The body's colour as "#rrggbb" (six hexadecimal digits, as "#d04030"); empty for the default</source>
-        <translation>Barva tělesa jako "#rrggbb" (šest šestnáctkových číslic, např. "#d04030"); prázdné pole dá výchozí barvu</translation>
+        <source>The body&apos;s colour as &quot;#rrggbb&quot; (six hexadecimal digits, as &quot;#d04030&quot;); empty for the default</source>
+        <translation>Barva tělesa jako &quot;#rrggbb&quot; (šest šestnáctkových číslic, např. &quot;#d04030&quot;); prázdné pole dá výchozí barvu</translation>
     </message>
     <message>
         <source>Default</source>
         <translation>Výchozí</translation>
     </message>
     <message>
-        <source>Take the body's own colour away: the view colours it</source>
+        <source>Take the body&apos;s own colour away: the view colours it</source>
         <translation>Odebrat tělesu vlastní barvu: obarví ho zobrazení</translation>
     </message>
     <message>
@@ -2253,7 +2262,7 @@ y %2</translation>
     </message>
     <message>
         <source>How positions and velocities are advanced in each step</source>
-        <translation>Jak se v každém kroku posouvají polohy a rychlosti</translation>
+        <translation>Jak se v&#xa0;každém kroku posouvají polohy a&#xa0;rychlosti</translation>
     </message>
     <message>
         <source>Iterations</source>
@@ -2261,7 +2270,7 @@ y %2</translation>
     </message>
     <message>
         <source>Velocity iterations of the sequential-impulse solver</source>
-        <translation>Rychlostní iterace řešiče s postupnými impulsy</translation>
+        <translation>Rychlostní iterace řešiče s&#xa0;postupnými impulsy</translation>
     </message>
     <message>
         <source>dt</source>
@@ -2321,15 +2330,15 @@ y %2</translation>
     </message>
     <message>
         <source>Fixed in this step of the lesson</source>
-        <translation>V tomto kroku lekce pevně dané</translation>
+        <translation>V&#xa0;tomto kroku lekce pevně dané</translation>
     </message>
     <message>
-        <source>The paper's impulse: one impulse per contact, once.
+        <source>The paper&apos;s impulse: one impulse per contact, once.
 Sequential impulse: iterated, clamped, warm started.
 Soft step: springy contacts solved in small substeps; stiff stacks.</source>
         <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
-Postupné impulsy: iterované, omezené, s teplým startem.
-Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.</translation>
+Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.
+Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné stohy.</translation>
     </message>
 </context>
 <context>
@@ -2348,7 +2357,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Back to the start with half the time step</source>
-        <translation>Zpět na začátek s polovičním časovým krokem</translation>
+        <translation>Zpět na začátek s&#xa0;polovičním časovým krokem</translation>
     </message>
 </context>
 <context>
@@ -2359,7 +2368,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Select and move bodies; arrow keys nudge</source>
-        <translation>Vybírat a posouvat tělesa; šipky posunou o kousek</translation>
+        <translation>Vybírat a&#xa0;posouvat tělesa; šipky posunou o&#xa0;kousek</translation>
     </message>
     <message>
         <source>Rotate</source>
@@ -2367,7 +2376,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Turn a body by dragging; Q and E turn by 5°</source>
-        <translation>Otáčet tělesem tažením; Q a E otočí o 5°</translation>
+        <translation>Otáčet tělesem tažením; Q a&#xa0;E otočí o&#xa0;5°</translation>
     </message>
     <message>
         <source>Circle</source>
@@ -2415,7 +2424,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Drag from one point to another; its rest length is the length drawn</source>
-        <translation>Táhněte od jednoho bodu k druhému; klidová délka je nakreslená délka</translation>
+        <translation>Táhněte od jednoho bodu k&#xa0;druhému; klidová délka je nakreslená délka</translation>
     </message>
     <message>
         <source>Delete</source>
@@ -2423,7 +2432,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Click a body to delete it with its springs and pins</source>
-        <translation>Kliknutím smažete těleso i s jeho pružinami a čepy</translation>
+        <translation>Kliknutím smažete těleso i&#xa0;s&#xa0;jeho pružinami a&#xa0;čepy</translation>
     </message>
     <message>
         <source>Duplicate</source>
@@ -2479,11 +2488,11 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Now click a second body, or empty space to pin it to the world</source>
-        <translation>Teď klikněte na druhé těleso, nebo na prázdné místo pro připojení k okolí</translation>
+        <translation>Teď klikněte na druhé těleso, nebo na prázdné místo pro připojení k&#xa0;okolí</translation>
     </message>
     <message>
         <source>%1 at (%2; %3) m</source>
-        <translation>%1 v (%2; %3) m</translation>
+        <translation>%1 v&#xa0;(%2; %3)&#xa0;m</translation>
     </message>
     <message>
         <source>%1 at %2°</source>
@@ -2491,19 +2500,19 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Circle: centre (%1; %2) m, radius %3 m</source>
-        <translation>Kruh: střed (%1; %2) m, poloměr %3 m</translation>
+        <translation>Kruh: střed (%1; %2)&#xa0;m, poloměr %3&#xa0;m</translation>
     </message>
     <message>
         <source>%1 × %2 m</source>
-        <translation>%1 × %2 m</translation>
+        <translation>%1 × %2&#xa0;m</translation>
     </message>
     <message>
         <source>Spring: length %1 m</source>
-        <translation>Pružina: délka %1 m</translation>
+        <translation>Pružina: délka %1&#xa0;m</translation>
     </message>
     <message>
         <source>Grid %1 m</source>
-        <translation>Mřížka %1 m</translation>
+        <translation>Mřížka %1&#xa0;m</translation>
     </message>
     <message>
         <source>This lesson step locks the %1 tool</source>
@@ -2527,7 +2536,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Pin %1 to %2</source>
-        <translation>Připnout %1 k %2</translation>
+        <translation>Připnout %1 k&#xa0;%2</translation>
     </message>
     <message>
         <source>Duplicate %1 as %2</source>
@@ -2558,8 +2567,8 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>Připnout %1 ke světu</translation>
     </message>
     <message>
-        <source>Snap to a grid of %1 m and to other bodies' corners and edges (%2)</source>
-        <translation>Přichytávat k mřížce %1 m a k rohům a hranám jiných těles (%2)</translation>
+        <source>Snap to a grid of %1 m and to other bodies&apos; corners and edges (%2)</source>
+        <translation>Přichytávat k&#xa0;mřížce %1&#xa0;m a&#xa0;k&#xa0;rohům a&#xa0;hranám jiných těles (%2)</translation>
     </message>
     <message>
         <source>This lesson step locks the %1 property</source>
@@ -2571,7 +2580,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Edit the scene: draw bodies, pins and springs (%1); leaving it keeps the world paused at its start</source>
-        <translation>Upravit scénu: kreslit tělesa, čepy a pružiny (%1); po opuštění editoru svět stojí na začátku</translation>
+        <translation>Upravit scénu: kreslit tělesa, čepy a&#xa0;pružiny (%1); po opuštění editoru svět stojí na začátku</translation>
     </message>
     <message>
         <source>Edit mode: the world is paused at its start; press Space to run it</source>
@@ -2587,7 +2596,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Delete: click a body to delete it with its springs and pins; the Delete key deletes the selected body or spring</source>
-        <translation>Smazat: kliknutím smažete těleso i s jeho pružinami a čepy; klávesa Delete smaže vybrané těleso nebo pružinu</translation>
+        <translation>Smazat: kliknutím smažete těleso i&#xa0;s&#xa0;jeho pružinami a&#xa0;čepy; klávesa Delete smaže vybrané těleso nebo pružinu</translation>
     </message>
     <message>
         <source>Duplicate: click a body to place a copy beside it; Enter copies the selected body</source>
@@ -2599,7 +2608,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Pin: click a point of a body, then a second body or empty space for the world; Enter pins the selected body to the world at its centre</source>
-        <translation>Čep: klikněte na bod tělesa, pak na druhé těleso nebo na prázdné místo pro okolí; Enter připne vybrané těleso k okolí v jeho středu</translation>
+        <translation>Čep: klikněte na bod tělesa, pak na druhé těleso nebo na prázdné místo pro okolí; Enter připne vybrané těleso k&#xa0;okolí v&#xa0;jeho středu</translation>
     </message>
     <message>
         <source>Polygon: click the vertices, then double-click or press Enter to close it; Backspace drops the last point; Enter with no points adds a triangle</source>
@@ -2607,27 +2616,27 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Rotate: drag a body, or anywhere for the selected one, to turn it about its origin; a click selects, and so does Enter, body after body; Q and E turn the selected body by 5°</source>
-        <translation>Otočení: tažením tělesa (nebo kdekoli pro vybrané těleso) ho otočíte kolem jeho počátku; kliknutí vybírá, Enter vybírá jedno těleso po druhém; Q a E otočí vybrané těleso o 5°</translation>
+        <translation>Otočení: tažením tělesa (nebo kdekoli pro vybrané těleso) ho otočíte kolem jeho počátku; kliknutí vybírá, Enter vybírá jedno těleso po druhém; Q a&#xa0;E otočí vybrané těleso o&#xa0;5°</translation>
     </message>
     <message>
-        <source>Select: click a body or a spring to select it, drag a body to move it, drag the arrow's handle to set its velocity; Enter selects the next body, the arrow keys nudge, Q and E turn</source>
-        <translation>Výběr: kliknutím vyberete těleso nebo pružinu, tažením těleso posunete, tažením konce šipky nastavíte jeho rychlost; Enter vybere další těleso, šipky posunou o kousek, Q a E otočí</translation>
+        <source>Select: click a body or a spring to select it, drag a body to move it, drag the arrow&apos;s handle to set its velocity; Enter selects the next body, the arrow keys nudge, Q and E turn</source>
+        <translation>Výběr: kliknutím vyberete těleso nebo pružinu, tažením těleso posunete, tažením konce šipky nastavíte jeho rychlost; Enter vybere další těleso, šipky posunou o&#xa0;kousek, Q a&#xa0;E otočí</translation>
     </message>
     <message>
-        <source>Circle: drag from the centre outwards to draw one; a click draws nothing; Enter adds one at the view's centre</source>
+        <source>Circle: drag from the centre outwards to draw one; a click draws nothing; Enter adds one at the view&apos;s centre</source>
         <translation>Kruh: nakreslíte ho tažením od středu ven; samotné kliknutí nic nenakreslí; Enter přidá kruh doprostřed pohledu</translation>
     </message>
     <message>
-        <source>Box: drag from corner to corner to draw one; a click draws nothing; Enter adds one at the view's centre</source>
-        <translation>Obdélník: nakreslíte ho tažením z rohu do rohu; samotné kliknutí nic nenakreslí; Enter přidá obdélník doprostřed pohledu</translation>
+        <source>Box: drag from corner to corner to draw one; a click draws nothing; Enter adds one at the view&apos;s centre</source>
+        <translation>Obdélník: nakreslíte ho tažením z&#xa0;rohu do rohu; samotné kliknutí nic nenakreslí; Enter přidá obdélník doprostřed pohledu</translation>
     </message>
     <message>
-        <source>Ground: drag from corner to corner to draw static ground or a wall; a click draws nothing; Enter adds a floor at the view's centre</source>
-        <translation>Podložka: statickou podložku nebo stěnu nakreslíte tažením z rohu do rohu; samotné kliknutí nic nenakreslí; Enter přidá podlahu doprostřed pohledu</translation>
+        <source>Ground: drag from corner to corner to draw static ground or a wall; a click draws nothing; Enter adds a floor at the view&apos;s centre</source>
+        <translation>Podložka: statickou podložku nebo stěnu nakreslíte tažením z&#xa0;rohu do rohu; samotné kliknutí nic nenakreslí; Enter přidá podlahu doprostřed pohledu</translation>
     </message>
     <message>
         <source>Spring: drag from one point to another (a body or empty space, the world, at each end); a click draws nothing; Enter hangs the selected body from the world</source>
-        <translation>Pružina: táhněte od jednoho bodu k druhému (na každém konci těleso, nebo prázdné místo pro okolí); samotné kliknutí nic nenakreslí; Enter zavěsí vybrané těleso na okolí</translation>
+        <translation>Pružina: táhněte od jednoho bodu k&#xa0;druhému (na každém konci těleso, nebo prázdné místo pro okolí); samotné kliknutí nic nenakreslí; Enter zavěsí vybrané těleso na okolí</translation>
     </message>
     <message>
         <source>Select a body to hang it from a spring</source>
@@ -2666,7 +2675,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>%1 rows: CPU time of each run is the smallest of repeated runs.</source>
-        <translation>Počet řádků: %1. Čas CPU každého běhu je nejkratší z opakovaných běhů.</translation>
+        <translation>Počet řádků: %1. Čas CPU každého běhu je nejkratší z&#xa0;opakovaných běhů.</translation>
     </message>
 </context>
 <context>
@@ -2783,11 +2792,11 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>The numbers of the first collision appear here when it happens.</source>
-        <translation>Čísla první srážky se tu objeví, jakmile k ní dojde.</translation>
+        <translation>Čísla první srážky se tu objeví, jakmile k&#xa0;ní dojde.</translation>
     </message>
     <message>
         <source>Impulse formula with these numbers</source>
-        <translation>Vzorec pro impuls s těmito čísly</translation>
+        <translation>Vzorec pro impuls s&#xa0;těmito čísly</translation>
     </message>
     <message>
         <source>Show the impulse formula</source>
@@ -2805,8 +2814,8 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>Hmotnost m</translation>
     </message>
     <message>
-        <source>The body's mass; its moment of inertia scales with it</source>
-        <translation>Hmotnost tělesa; moment setrvačnosti se mění úměrně s ní</translation>
+        <source>The body&apos;s mass; its moment of inertia scales with it</source>
+        <translation>Hmotnost tělesa; moment setrvačnosti se mění úměrně s&#xa0;ní</translation>
     </message>
     <message>
         <source>Body</source>
@@ -2842,11 +2851,11 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>%1 kg</source>
-        <translation>%1 kg</translation>
+        <translation>%1&#xa0;kg</translation>
     </message>
     <message>
         <source>%1 kg·m²</source>
-        <translation>%1 kg·m²</translation>
+        <translation>%1&#xa0;kg·m²</translation>
     </message>
     <message>
         <source>infinite</source>
@@ -2854,19 +2863,19 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>(%1, %2) m</source>
-        <translation>(%1; %2) m</translation>
+        <translation>(%1; %2)&#xa0;m</translation>
     </message>
     <message>
         <source>%1 rad</source>
-        <translation>%1 rad</translation>
+        <translation>%1&#xa0;rad</translation>
     </message>
     <message>
         <source>(%1, %2) m/s</source>
-        <translation>(%1; %2) m/s</translation>
+        <translation>(%1; %2)&#xa0;m/s</translation>
     </message>
     <message>
         <source>%1 rad/s</source>
-        <translation>%1 rad/s</translation>
+        <translation>%1&#xa0;rad/s</translation>
     </message>
     <message>
         <source>Speed |v|</source>
@@ -2874,15 +2883,15 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>%1 m/s</source>
-        <translation>%1 m/s</translation>
+        <translation>%1&#xa0;m/s</translation>
     </message>
     <message>
         <source>%1°</source>
         <translation>%1°</translation>
     </message>
     <message>
-        <source>%1 °/s</source>
-        <translation>%1 °/s</translation>
+        <source>%1&#xa0;°/s</source>
+        <translation>%1&#xa0;°/s</translation>
     </message>
     <message>
         <source>°</source>
@@ -2915,7 +2924,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>Graf…</translation>
     </message>
     <message>
-        <source>A graph of this body's quantities against time</source>
+        <source>A graph of this body&apos;s quantities against time</source>
         <translation>Graf veličin tohoto tělesa v závislosti na čase</translation>
     </message>
 </context>
@@ -3009,7 +3018,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>Přichytávat ke středům a rohům</translation>
     </message>
     <message>
-        <source>An end near a body's centre of mass or corner goes exactly there</source>
+        <source>An end near a body&apos;s centre of mass or corner goes exactly there</source>
         <translation>Konec blízko těžiště nebo rohu tělesa se umístí přesně tam</translation>
     </message>
     <message>
@@ -3161,7 +3170,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>Výška čáry</translation>
     </message>
     <message>
-        <source>The horizontal line y = h that the body's centre passes</source>
+        <source>The horizontal line y = h that the body&apos;s centre passes</source>
         <translation>Vodorovná čára y = h, kterou prochází těžiště tělesa</translation>
     </message>
     <message>
@@ -3197,7 +3206,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>Kopírovat</translation>
     </message>
     <message>
-        <source>Puts the probe's numbers on the clipboard</source>
+        <source>Puts the probe&apos;s numbers on the clipboard</source>
         <translation>Zkopíruje údaje sondy do schránky</translation>
     </message>
     <message>
@@ -3205,7 +3214,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>Graf…</translation>
     </message>
     <message>
-        <source>A graph of this body's quantities against time</source>
+        <source>A graph of this body&apos;s quantities against time</source>
         <translation>Graf veličin tohoto tělesa v závislosti na čase</translation>
     </message>
     <message>
@@ -3253,8 +3262,8 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>kontaktní síla = %1</translation>
     </message>
     <message>
-        <source>%1 at t = %2 s</source>
-        <translation>%1 v čase t = %2 s</translation>
+        <source>%1 at t = %2&#xa0;s</source>
+        <translation>%1 v čase t = %2&#xa0;s</translation>
     </message>
     <message>
         <source>Lab frame</source>
@@ -3535,14 +3544,14 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>The lessons that come with RigidLab (File › Open lesson for others)</source>
-        <translation>Lekce dodávané s RigidLabem (další otevřete přes Soubor › Otevřít lekci)</translation>
+        <translation>Lekce dodávané s&#xa0;RigidLabem (další otevřete přes Soubor › Otevřít lekci)</translation>
     </message>
     <message>
         <source>Introduction</source>
         <translation>Úvod</translation>
     </message>
     <message>
-        <source>Show or hide the lesson's introduction</source>
+        <source>Show or hide the lesson&apos;s introduction</source>
         <translation>Zobrazit nebo skrýt úvod lekce</translation>
     </message>
     <message>
@@ -3563,19 +3572,19 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>RigidLab is a laboratory of moving bodies: run a prepared scene, change its settings and measure what happens. Each lesson walks you through one idea of mechanics step by step, with questions to answer on the way.</source>
-        <translation>RigidLab je laboratoř pohybujících se těles: spusťte připravenou scénu, změňte její nastavení a změřte, co se stane. Každá lekce vás krok za krokem provede jednou myšlenkou mechaniky a cestou vám položí otázky.</translation>
+        <translation>RigidLab je laboratoř pohybujících se těles: spusťte připravenou scénu, změňte její nastavení a&#xa0;změřte, co se stane. Každá lekce vás krok za krokem provede jednou myšlenkou mechaniky a&#xa0;cestou vám položí otázky.</translation>
     </message>
     <message>
         <source>The first lesson is “%1”; the list above holds the others.</source>
-        <translation>První lekce je „%1“; ostatní najdete v seznamu nahoře.</translation>
+        <translation>První lekce je „%1“; ostatní najdete v&#xa0;seznamu nahoře.</translation>
     </message>
     <message>
         <source>%1 · about %2 min</source>
-        <translation>%1 · asi %2 min</translation>
+        <translation>%1 · asi %2&#xa0;min</translation>
     </message>
     <message>
         <source>Step %1 of %2</source>
-        <translation>Krok %1 z %2</translation>
+        <translation>Krok %1 z&#xa0;%2</translation>
     </message>
     <message>
         <source>your answer</source>
@@ -3591,7 +3600,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Give up and show the measured value</source>
-        <translation>Vzdát to a ukázat naměřenou hodnotu</translation>
+        <translation>Vzdát to a&#xa0;ukázat naměřenou hodnotu</translation>
     </message>
     <message>
         <source>Type a number first.</source>
@@ -3659,7 +3668,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Your worksheet is in %1, your answers beside it in %2.</source>
-        <translation>Váš pracovní list je v %1, vaše odpovědi vedle něj v %2.</translation>
+        <translation>Váš pracovní list je v&#xa0;%1, vaše odpovědi vedle něj v&#xa0;%2.</translation>
     </message>
     <message>
         <source>Finish: hand in the worksheet…</source>
@@ -3671,31 +3680,31 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Write your worksheet as a PDF: the questions, your answers and their verdicts, the plots and the settings (%1)</source>
-        <translation>Zapíše váš pracovní list jako PDF: otázky, vaše odpovědi a jejich hodnocení, grafy a nastavení (%1)</translation>
+        <translation>Zapíše váš pracovní list jako PDF: otázky, vaše odpovědi a&#xa0;jejich hodnocení, grafy a&#xa0;nastavení (%1)</translation>
     </message>
     <message>
         <source>&amp;Worksheet to print…</source>
-        <translation>&amp;Pracovní list k tisku…</translation>
+        <translation>&amp;Pracovní list k&#xa0;tisku…</translation>
     </message>
     <message>
-        <source>The open lesson's questions with lines to write on, and its figures</source>
-        <translation>Otázky otevřené lekce s řádky na psaní a její obrázky</translation>
+        <source>The open lesson&apos;s questions with lines to write on, and its figures</source>
+        <translation>Otázky otevřené lekce s&#xa0;řádky na psaní a&#xa0;její obrázky</translation>
     </message>
     <message>
-        <source>Teacher's &amp;key…</source>
+        <source>Teacher&apos;s &amp;key…</source>
         <translation>&amp;Klíč pro učitele…</translation>
     </message>
     <message>
-        <source>The open lesson's questions with the values the simulation measures</source>
-        <translation>Otázky otevřené lekce s hodnotami, které simulace naměří</translation>
+        <source>The open lesson&apos;s questions with the values the simulation measures</source>
+        <translation>Otázky otevřené lekce s&#xa0;hodnotami, které simulace naměří</translation>
     </message>
     <message>
-        <source>Teacher's key</source>
+        <source>Teacher&apos;s key</source>
         <translation>Klíč pro učitele</translation>
     </message>
     <message>
         <source>Worksheet to print</source>
-        <translation>Pracovní list k tisku</translation>
+        <translation>Pracovní list k&#xa0;tisku</translation>
     </message>
     <message>
         <source>Cannot write the worksheet</source>
@@ -3707,7 +3716,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>your answer, in %1</source>
-        <translation>vaše odpověď, v jednotkách %1</translation>
+        <translation>vaše odpověď, v&#xa0;jednotkách %1</translation>
     </message>
 </context>
 <context>
@@ -3725,7 +3734,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>%1 – krok %2 – RigidLab</translation>
     </message>
     <message>
-        <source>Export the step's plots into</source>
+        <source>Export the step&apos;s plots into</source>
         <translation>Exportovat grafy kroku do složky</translation>
     </message>
     <message>
@@ -3817,7 +3826,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Full screen, larger text and thicker lines for a projector (F11)</source>
-        <translation>Celá obrazovka, větší písmo a silnější čáry pro projektor (F11)</translation>
+        <translation>Celá obrazovka, větší písmo a&#xa0;silnější čáry pro projektor (F11)</translation>
     </message>
     <message>
         <source>&amp;Help</source>
@@ -3841,7 +3850,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>&amp;Contact points and normals</source>
-        <translation>&amp;Kontaktní body a normály</translation>
+        <translation>&amp;Kontaktní body a&#xa0;normály</translation>
     </message>
     <message>
         <source>Contacts</source>
@@ -3873,7 +3882,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>&amp;Springs and joints</source>
-        <translation>P&amp;ružiny a klouby</translation>
+        <translation>P&amp;ružiny a&#xa0;klouby</translation>
     </message>
     <message>
         <source>Springs</source>
@@ -3929,7 +3938,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Every edit since the scene was opened; click one to go back to it (the later ones stay, to redo)</source>
-        <translation>Všechny úpravy od otevření scény; kliknutím na některou se k ní vrátíte (pozdější zůstanou pro opakování)</translation>
+        <translation>Všechny úpravy od otevření scény; kliknutím na některou se k&#xa0;ní vrátíte (pozdější zůstanou pro opakování)</translation>
     </message>
     <message>
         <source>History</source>
@@ -3945,19 +3954,11 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>&amp;About RigidLab…</source>
-        <translation>O &amp;aplikaci RigidLab…</translation>
+        <translation>O&#xa0;&amp;aplikaci RigidLab…</translation>
     </message>
     <message>
         <source>&amp;Add a folder of lessons…</source>
         <translation>&amp;Přidat složku s lekcemi…</translation>
-    </message>
-    <message>
-        <source>New lesso&amp;n</source>
-        <translation>&amp;Nová lekce</translation>
-    </message>
-    <message>
-        <source>&amp;Edit lesson…</source>
-        <translation>&amp;Upravit lekci…</translation>
     </message>
     <message>
         <source>Edit lesson</source>
@@ -3966,6 +3967,14 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     <message>
         <source>Lessons (*.rlesson *.json)</source>
         <translation>Lekce (*.rlesson *.json)</translation>
+    </message>
+    <message>
+        <source>Ne&amp;w lesson</source>
+        <translation>Nová le&amp;kce</translation>
+    </message>
+    <message>
+        <source>Edi&amp;t lesson…</source>
+        <translation>Upravi&amp;t lekci…</translation>
     </message>
 </context>
 <context>
@@ -3996,7 +4005,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>speed v [m/s]</source>
-        <translation>velikost rychlosti v [m/s]</translation>
+        <translation>velikost rychlosti v&#xa0;[m/s]</translation>
     </message>
     <message>
         <source>bounce times [s]</source>
@@ -4012,11 +4021,11 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>What the file holds, or what is wrong with it</source>
-        <translation>Co soubor obsahuje, nebo co je v něm špatně</translation>
+        <translation>Co soubor obsahuje, nebo co je v&#xa0;něm špatně</translation>
     </message>
     <message>
-        <source>Preview: the first points in the lab's units</source>
-        <translation>Náhled: první body v jednotkách laboratoře</translation>
+        <source>Preview: the first points in the lab&apos;s units</source>
+        <translation>Náhled: první body v&#xa0;jednotkách laboratoře</translation>
     </message>
     <message>
         <source>Import</source>
@@ -4044,7 +4053,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Unit of the times in the file</source>
-        <translation>Jednotka časů v souboru</translation>
+        <translation>Jednotka časů v&#xa0;souboru</translation>
     </message>
     <message>
         <source>as the header says (else m)</source>
@@ -4052,19 +4061,19 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Unit of the lengths in the file</source>
-        <translation>Jednotka délek v souboru</translation>
+        <translation>Jednotka délek v&#xa0;souboru</translation>
     </message>
     <message>
-        <source>Time zero: the file's time at which the scene starts</source>
-        <translation>Počátek času: čas v souboru, kdy scéna začíná</translation>
+        <source>Time zero: the file&apos;s time at which the scene starts</source>
+        <translation>Počátek času: čas v&#xa0;souboru, kdy scéna začíná</translation>
     </message>
     <message>
-        <source>Origin x: where the scene's origin is in the file</source>
-        <translation>Počátek x: kde v souboru leží počátek scény</translation>
+        <source>Origin x: where the scene&apos;s origin is in the file</source>
+        <translation>Počátek x: kde v&#xa0;souboru leží počátek scény</translation>
     </message>
     <message>
-        <source>Origin y: where the scene's origin is in the file</source>
-        <translation>Počátek y: kde v souboru leží počátek scény</translation>
+        <source>Origin y: where the scene&apos;s origin is in the file</source>
+        <translation>Počátek y: kde v&#xa0;souboru leží počátek scény</translation>
     </message>
     <message>
         <source>Time &amp;unit:</source>
@@ -4075,16 +4084,16 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
         <translation>Jednotka &amp;délky:</translation>
     </message>
     <message>
-        <source>Time &amp;zero (file time at the scene's start):</source>
-        <translation>&amp;Počátek času (čas v souboru na začátku scény):</translation>
+        <source>Time &amp;zero (file time at the scene&apos;s start):</source>
+        <translation>&amp;Počátek času (čas v&#xa0;souboru na začátku scény):</translation>
     </message>
     <message>
         <source>Scene origin in the file, &amp;x:</source>
-        <translation>Počátek scény v souboru, &amp;x:</translation>
+        <translation>Počátek scény v&#xa0;souboru, &amp;x:</translation>
     </message>
     <message>
         <source>Scene origin in the file, &amp;y:</source>
-        <translation>Počátek scény v souboru, &amp;y:</translation>
+        <translation>Počátek scény v&#xa0;souboru, &amp;y:</translation>
     </message>
     <message numerus="yes">
         <source>%n bounce time(s)</source>
@@ -4135,11 +4144,11 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Measured and simulated</source>
-        <translation>Naměřené a simulované</translation>
+        <translation>Naměřené a&#xa0;simulované</translation>
     </message>
     <message>
         <source>Plot: measured points and the simulated line</source>
-        <translation>Graf: naměřené body a simulovaná čára</translation>
+        <translation>Graf: naměřené body a&#xa0;simulovaná čára</translation>
     </message>
     <message>
         <source>measured</source>
@@ -4167,15 +4176,15 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Fit to the measurement</source>
-        <translation>Určení z měření</translation>
+        <translation>Určení z&#xa0;měření</translation>
     </message>
     <message>
         <source>F&amp;it</source>
-        <translation>&amp;Určit z měření</translation>
+        <translation>&amp;Určit z&#xa0;měření</translation>
     </message>
     <message>
         <source>Fit the ticked parameters to the measurement</source>
-        <translation>Určit zaškrtnuté parametry z měření metodou nejmenších čtverců</translation>
+        <translation>Určit zaškrtnuté parametry z&#xa0;měření metodou nejmenších čtverců</translation>
     </message>
     <message>
         <source>&amp;Apply to scene</source>
@@ -4191,11 +4200,11 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>e from the bounce times</source>
-        <translation>e z časů odrazů</translation>
+        <translation>e z&#xa0;časů odrazů</translation>
     </message>
     <message>
         <source>Apply &amp;e from the bounce times</source>
-        <translation>Použít &amp;e z časů odrazů</translation>
+        <translation>Použít &amp;e z&#xa0;časů odrazů</translation>
     </message>
     <message>
         <source>Show &amp;residuals</source>
@@ -4219,19 +4228,19 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Fit the coefficient of restitution e</source>
-        <translation>Určit z měření koeficient restituce e</translation>
+        <translation>Určit z&#xa0;měření koeficient restituce e</translation>
     </message>
     <message>
         <source>Fit the friction coefficient μ</source>
-        <translation>Určit z měření součinitel tření μ</translation>
+        <translation>Určit z&#xa0;měření součinitel tření μ</translation>
     </message>
     <message>
         <source>Fit the initial velocity vx</source>
-        <translation>Určit z měření počáteční rychlost vx</translation>
+        <translation>Určit z&#xa0;měření počáteční rychlost vx</translation>
     </message>
     <message>
         <source>Fit the initial velocity vy</source>
-        <translation>Určit z měření počáteční rychlost vy</translation>
+        <translation>Určit z&#xa0;měření počáteční rychlost vy</translation>
     </message>
     <message>
         <source>No measurement yet: File › Import measurement… (%1), or drop a CSV file on the window.</source>
@@ -4246,7 +4255,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Read a measured time series (Tracker, phyphox or plain CSV) to compare the scene with and fit it to</source>
-        <translation>Načíst naměřenou časovou řadu (CSV z Trackeru, z phyphoxu nebo prosté) k porovnání se scénou a k určení jejích parametrů</translation>
+        <translation>Načíst naměřenou časovou řadu (CSV z&#xa0;Trackeru, z&#xa0;phyphoxu nebo prosté) k&#xa0;porovnání se scénou a&#xa0;k&#xa0;určení jejích parametrů</translation>
     </message>
     <message>
         <source>Import measurement</source>
@@ -4282,7 +4291,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Fit first: there are no fitted values to apply.</source>
-        <translation>Nejprve parametry určete: zatím nejsou žádné hodnoty k použití.</translation>
+        <translation>Nejprve parametry určete: zatím nejsou žádné hodnoty k&#xa0;použití.</translation>
     </message>
     <message>
         <source>Apply fitted values</source>
@@ -4290,26 +4299,26 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>There is no e from bounce times to apply.</source>
-        <translation>Není žádné e z časů odrazů, které by šlo použít.</translation>
+        <translation>Není žádné e z&#xa0;časů odrazů, které by šlo použít.</translation>
     </message>
     <message>
         <source>Apply e from the bounce times</source>
-        <translation>Použití e z časů odrazů</translation>
+        <translation>Použití e z&#xa0;časů odrazů</translation>
     </message>
     <message>
-        <source>%1 = %2%3 (95 %)</source>
-        <translation>%1 = %2%3 (95 %)</translation>
+        <source>%1 = %2%3 (95&#xa0;%)</source>
+        <translation>%1 = %2%3 (95&#xa0;%)</translation>
     </message>
     <message>
-        <source>From the bounce times alone: e = %1 (95 %). Each flight between bounces lasts e times the one before: %2.</source>
-        <translation>Jen z časů odrazů: e = %1 (95 %). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
+        <source>From the bounce times alone: e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
+        <translation>Jen z&#xa0;časů odrazů: e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::NumberField</name>
     <message>
         <source>%1 %2</source>
-        <translation>%1 %2</translation>
+        <translation>%1&#xa0;%2</translation>
     </message>
     <message>
         <source>%1 must be a whole number from %2 to %3</source>
@@ -4348,7 +4357,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Last %1 s</source>
-        <translation>Posledních %1 s</translation>
+        <translation>Posledních %1&#xa0;s</translation>
     </message>
     <message>
         <source>Whole run</source>
@@ -4670,7 +4679,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Test every axis, up to the verdict</source>
-        <translation>Otestovat všechny osy až k výsledku</translation>
+        <translation>Otestovat všechny osy až k&#xa0;výsledku</translation>
     </message>
     <message>
         <source>axis</source>
@@ -4689,16 +4698,16 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
 [m]</translation>
     </message>
     <message>
-        <source>The axis is the normal of this edge: polygon A or B, then the edge's number.</source>
-        <translation>Osa je normála této hrany: mnohoúhelník A nebo B, pak číslo hrany.</translation>
+        <source>The axis is the normal of this edge: polygon A or B, then the edge&apos;s number.</source>
+        <translation>Osa je normála této hrany: mnohoúhelník A&#xa0;nebo B, pak číslo hrany.</translation>
     </message>
     <message>
         <source>The interval each polygon covers when projected on the axis (A above, B below).</source>
-        <translation>Interval, který každý mnohoúhelník pokryje po promítnutí na osu (A nahoře, B dole).</translation>
+        <translation>Interval, který každý mnohoúhelník pokryje po promítnutí na osu (A&#xa0;nahoře, B dole).</translation>
     </message>
     <message>
-        <source>How far the intervals overlap, in metres; "gap" when they do not, and the axis separates. Below it, what the axis means for the test.</source>
-        <translation>Jak moc se intervaly překrývají, v metrech; „mezera“, když se nepřekrývají a osa je odděluje. Pod tím, co osa znamená pro test.</translation>
+        <source>How far the intervals overlap, in metres; &quot;gap&quot; when they do not, and the axis separates. Below it, what the axis means for the test.</source>
+        <translation>Jak moc se intervaly překrývají, v&#xa0;metrech; „mezera“, když se nepřekrývají a&#xa0;osa je odděluje. Pod tím, co osa znamená pro test.</translation>
     </message>
     <message>
         <source>Export as CSV…</source>
@@ -4710,7 +4719,7 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     </message>
     <message>
         <source>Drag a polygon to move it; Q and E turn the selected one.</source>
-        <translation>Mnohoúhelník posunete tažením; Q a E otáčejí vybraným.</translation>
+        <translation>Mnohoúhelník posunete tažením; Q a&#xa0;E otáčejí vybraným.</translation>
     </message>
     <message>
         <source>gap %1</source>
@@ -4740,52 +4749,52 @@ Měkký krok: pružné kontakty řešené v malých podkrocích; pevné stohy.<
     <message>
         <source>A %1 … %2
 B %3 … %4</source>
-        <translation>A %1 … %2
-B %3 … %4</translation>
+        <translation>A&#xa0;%1 … %2
+B&#xa0;%3 … %4</translation>
     </message>
     <message>
         <source>Axis %1: the normal of edge %2 of %3. On it, %4 covers [%5, %6] m and %7 covers [%8, %9] m.</source>
-        <translation>Osa %1: normála hrany %2 tělesa %3. Na ní %4 pokrývá [%5; %6] m a %7 pokrývá [%8; %9] m.</translation>
+        <translation>Osa %1: normála hrany %2 tělesa %3. Na ní %4 pokrývá [%5; %6]&#xa0;m a&#xa0;%7 pokrývá [%8; %9]&#xa0;m.</translation>
     </message>
     <message>
         <source>They are %1 m apart: a gap.</source>
-        <translation>Jsou od sebe %1 m: mezera.</translation>
+        <translation>Jsou od sebe %1&#xa0;m: mezera.</translation>
     </message>
     <message>
         <source>They overlap by %1 m.</source>
-        <translation>Překrývají se o %1 m.</translation>
+        <translation>Překrývají se o&#xa0;%1&#xa0;m.</translation>
     </message>
     <message>
         <source>This axis separates the polygons: they cannot touch, and the test stops here (no collision).</source>
-        <translation>Tato osa mnohoúhelníky odděluje: nemohou se dotýkat a test tady končí (žádná srážka).</translation>
+        <translation>Tato osa mnohoúhelníky odděluje: nemohou se dotýkat a&#xa0;test tady končí (žádná srážka).</translation>
     </message>
     <message>
         <source>The least overlap of all axes: this axis is the contact normal, and the overlap is the depth.</source>
-        <translation>Nejmenší překryv ze všech os: tato osa je normála kontaktu a překryv je hloubka průniku.</translation>
+        <translation>Nejmenší překryv ze všech os: tato osa je normála kontaktu a&#xa0;překryv je hloubka průniku.</translation>
     </message>
     <message>
         <source>No pair of polygons to test.</source>
-        <translation>Žádná dvojice mnohoúhelníků k testování.</translation>
+        <translation>Žádná dvojice mnohoúhelníků k&#xa0;testování.</translation>
     </message>
     <message>
         <source>Axis %1 of %2 tested so far: no separating axis yet.</source>
-        <translation>Otestována osa %1 z %2: oddělující osa zatím nenalezena.</translation>
+        <translation>Otestována osa %1 z&#xa0;%2: oddělující osa zatím nenalezena.</translation>
     </message>
     <message>
         <source>Separated: axis %1 has a gap, so the test stops there.</source>
-        <translation>Odděleno: na ose %1 je mezera, a tak tam test končí.</translation>
+        <translation>Odděleno: na ose %1 je mezera, a&#xa0;tak tam test končí.</translation>
     </message>
     <message>
         <source>Overlapping: no axis separates them.</source>
         <translation>Překrývají se: žádná osa je neodděluje.</translation>
     </message>
     <message>
-        <source>The test needed %1 of at most %2 axes (one per edge, %3 + %4), each projecting all %2 vertices: %5 projections, against the paper's worst case of (k₁ + k₂)² = %6.</source>
-        <translation>Test potřeboval %1 z nejvýše %2 os (jedna na hranu, %3 + %4) a na každé promítl všech %2 vrcholů: celkem %5 projekcí, oproti nejhoršímu případu podle původního článku (k₁ + k₂)² = %6.</translation>
+        <source>The test needed %1 of at most %2 axes (one per edge, %3 + %4), each projecting all %2 vertices: %5 projections, against the paper&apos;s worst case of (k₁ + k₂)² = %6.</source>
+        <translation>Test potřeboval %1 z&#xa0;nejvýše %2&#xa0;os (jedna na hranu, %3 + %4) a&#xa0;na každé promítl všech %2&#xa0;vrcholů: celkem %5&#xa0;projekcí, oproti nejhoršímu případu podle původního článku (k₁ + k₂)² = %6.</translation>
     </message>
     <message>
         <source>Least overlap on axis %1: normal (%2, %3) from A to B, depth %4 m, %5 contact point(s) from clipping.</source>
-        <translation>Nejmenší překryv na ose %1: normála (%2; %3) od A k B, hloubka %4 m, kontaktní body z ořezání: %5.</translation>
+        <translation>Nejmenší překryv na ose %1: normála (%2; %3) od A&#xa0;k&#xa0;B, hloubka %4&#xa0;m, kontaktní body z&#xa0;ořezání: %5.</translation>
     </message>
     <message>
         <source>Axes tested</source>
@@ -4796,7 +4805,7 @@ B %3 … %4</translation>
     <name>rigidlab::ui::SceneNarrator</name>
     <message>
         <source>%1 and %2 touch.</source>
-        <translation>%1 a %2 se dotýkají.</translation>
+        <translation>%1 a&#xa0;%2 se dotýkají.</translation>
     </message>
     <message>
         <source>Everything has come to rest.</source>
@@ -4804,7 +4813,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>The simulation diverged and stopped.</source>
-        <translation>Výpočet se rozběhl a simulace se zastavila.</translation>
+        <translation>Výpočet se rozběhl a&#xa0;simulace se zastavila.</translation>
     </message>
 </context>
 <context>
@@ -4858,7 +4867,7 @@ B %3 … %4</translation>
     <name>rigidlab::ui::SimulationController</name>
     <message>
         <source>dt = %1 s</source>
-        <translation>dt = %1 s</translation>
+        <translation>dt = %1&#xa0;s</translation>
     </message>
     <message numerus="yes">
         <source>%n iteration(s)</source>
@@ -4886,18 +4895,18 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>m = %1 kg</source>
-        <translation>m = %1 kg</translation>
+        <translation>m = %1&#xa0;kg</translation>
     </message>
     <message>
         <source>v = (%1; %2) m/s</source>
-        <translation>v = (%1; %2) m/s</translation>
+        <translation>v = (%1; %2)&#xa0;m/s</translation>
     </message>
 </context>
 <context>
     <name>rigidlab::ui::StatusLine</name>
     <message>
         <source>slower than real time</source>
-        <translation>pomaleji než v reálném čase</translation>
+        <translation>pomaleji než v&#xa0;reálném čase</translation>
     </message>
     <message>
         <source>Status &amp;details (steps/s, stage timings)</source>
@@ -4909,7 +4918,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>Time travel: drag to go back to any moment, then play to go on (or change a setting to branch)</source>
-        <translation>Cesta časem: tažením se vraťte do libovolného okamžiku a spuštěním pokračujte (nebo změnou nastavení začněte novou větev)</translation>
+        <translation>Cesta časem: tažením se vraťte do libovolného okamžiku a&#xa0;spuštěním pokračujte (nebo změnou nastavení začněte novou větev)</translation>
     </message>
     <message>
         <source> Timeline </source>
@@ -4917,7 +4926,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>t = %1 s</source>
-        <translation>t = %1 s</translation>
+        <translation>t = %1&#xa0;s</translation>
     </message>
     <message>
         <source>paused</source>
@@ -4925,7 +4934,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>%1 × real time</source>
-        <translation>%1 × reálný čas</translation>
+        <translation>%1&#xa0;× reálný čas</translation>
     </message>
     <message>
         <source>running</source>
@@ -4933,11 +4942,11 @@ B %3 … %4</translation>
     </message>
     <message>
         <source> · dissipated %1 J</source>
-        <translation> · disipovaná energie %1 J</translation>
+        <translation> · disipovaná energie %1&#xa0;J</translation>
     </message>
     <message>
         <source> · dissipated by contacts, friction, drag and dampers %1 J</source>
-        <translation> · energie odebraná kontakty, třením, odporem prostředí a tlumiči %1 J</translation>
+        <translation> · energie odebraná kontakty, třením, odporem prostředí a&#xa0;tlumiči %1&#xa0;J</translation>
     </message>
     <message numerus="yes">
         <source> · %1 error estimate %2 (%Ln substep(s))</source>
@@ -4953,15 +4962,15 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>last step %1 ms: %2</source>
-        <translation>poslední krok %1 ms: %2</translation>
+        <translation>poslední krok %1&#xa0;ms: %2</translation>
     </message>
     <message>
         <source>%1 steps/s · frame %2 ms (physics %3 ms) · %4</source>
-        <translation>%1 kroků/s · snímek %2 ms (fyzika %3 ms) · %4</translation>
+        <translation>%1&#xa0;kroků/s · snímek %2&#xa0;ms (fyzika %3&#xa0;ms) · %4</translation>
     </message>
     <message>
         <source> step %1 of %2 · t = %3 s</source>
-        <translation> krok %1 z %2 · t = %3 s</translation>
+        <translation> krok %1 z&#xa0;%2 · t = %3&#xa0;s</translation>
     </message>
     <message>
         <source>%1 instead of the soft step</source>
@@ -5012,7 +5021,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>One step forward (%1)</source>
-        <translation>O jeden krok vpřed (%1)</translation>
+        <translation>O&#xa0;jeden krok vpřed (%1)</translation>
     </message>
     <message>
         <source>Back</source>
@@ -5020,7 +5029,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>One step back in time (%1)</source>
-        <translation>O jeden krok zpět v čase (%1)</translation>
+        <translation>O&#xa0;jeden krok zpět v&#xa0;čase (%1)</translation>
     </message>
     <message>
         <source>Reset</source>
@@ -5154,7 +5163,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>Letters, Space and arrows alone act as shortcuts; off, only keys with Ctrl, Alt or F-keys do</source>
-        <translation>Písmena, mezerník a šipky samy fungují jako zkratky; vypnuto fungují jen klávesy s Ctrl, Alt nebo klávesy F</translation>
+        <translation>Písmena, mezerník a&#xa0;šipky samy fungují jako zkratky; vypnuto fungují jen klávesy s&#xa0;Ctrl, Alt nebo klávesy F</translation>
     </message>
 </context>
 <context>
@@ -5240,11 +5249,11 @@ B %3 … %4</translation>
     <name>rigidlab::ui::WorldView</name>
     <message>
         <source>%1 — blew up at t = %2 s</source>
-        <translation>%1 – výpočet „vybuchl“ v čase t = %2 s</translation>
+        <translation>%1 – výpočet „vybuchl“ v&#xa0;čase t = %2&#xa0;s</translation>
     </message>
     <message>
         <source>%1 — stopped at t = %2 s: %3</source>
-        <translation>%1 – zastaveno v čase t = %2 s: %3</translation>
+        <translation>%1 – zastaveno v&#xa0;čase t = %2&#xa0;s: %3</translation>
     </message>
     <message>
         <source>%1 (solid)</source>
@@ -5264,11 +5273,11 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>%1 m</source>
-        <translation>%1 m</translation>
+        <translation>%1&#xa0;m</translation>
     </message>
     <message>
         <source>%1 cm</source>
-        <translation>%1 cm</translation>
+        <translation>%1&#xa0;cm</translation>
     </message>
     <message>
         <source>%1 stopped</source>
@@ -5306,7 +5315,7 @@ B %3 … %4</translation>
         <translation>Implicitní střední bod</translation>
     </message>
     <message>
-        <source>The paper's impulse</source>
+        <source>The paper&apos;s impulse</source>
         <translation>Kontakt po kontaktu</translation>
     </message>
     <message>
@@ -5358,7 +5367,7 @@ B %3 … %4</translation>
     </message>
     <message>
         <source>not enough memory for a %1 x %2 px image</source>
-        <translation>nedostatek paměti pro obrázek %1 × %2 px</translation>
+        <translation>nedostatek paměti pro obrázek %1&#xa0;× %2&#xa0;px</translation>
     </message>
     <message>
         <source>could not start drawing the PDF</source>

@@ -55,6 +55,12 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "Turn the selected body left by 5°")},
     ControlInfo{"turnRight", "E", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Turn the selected body right by 5°")},
+    ControlInfo{"instruments", "Ctrl+Shift+I", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Instruments on the scene: ruler, protractor, "
+                                              "stopwatch, probe, frame of reference")},
+    ControlInfo{"graphOfBodies", "Ctrl+Shift+G", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "A graph of chosen bodies' quantities against "
+                                              "time")},
     ControlInfo{"presentation", "F11", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Presentation mode: full screen, large type and "
                                               "thick lines for a projector")},

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "instruments/instruments.h"
 
+#include "common/shortcuts.h"
+
 #include "instruments/instruments_item.h"
 #include "instruments/instruments_panel.h"
 #include "plots/body_series.h"
@@ -50,9 +52,10 @@ Instruments::Instruments(QMainWindow& window, SimulationController& controller, 
     m_dock->setWidget(m_panel);
     window.addDockWidget(Qt::RightDockWidgetArea, m_dock);
     m_dock->hide(); // until asked for: View › Instruments
-    m_dock->toggleViewAction()->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_I));
+    m_dock->toggleViewAction()->setObjectName(QStringLiteral("instruments"));
+    m_dock->toggleViewAction()->setShortcuts(controlKeys("instruments"));
     m_graphAction->setObjectName(QStringLiteral("graphOfBodies"));
-    m_graphAction->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_G));
+    m_graphAction->setShortcuts(controlKeys("graphOfBodies"));
     m_graphAction->setToolTip(tr("Plot a quantity of chosen bodies against time"));
     connect(m_graphAction, &QAction::triggered, this, [this] {
         const int selected = m_view.selectedBody();

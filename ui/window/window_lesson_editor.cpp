@@ -17,9 +17,9 @@ namespace rigidlab::ui {
 
 void MainWindow::addLessonEditorEntries(QMenu& file)
 {
-    QAction* create = file.addAction(tr("New lesso&n"), this, [this] { editLesson(QString()); });
+    QAction* create = file.addAction(tr("Ne&w lesson"), this, [this] { editLesson(QString()); });
     create->setObjectName(QStringLiteral("newLesson"));
-    QAction* edit = file.addAction(tr("&Edit lesson…"), this, [this] {
+    QAction* edit = file.addAction(tr("Edi&t lesson…"), this, [this] {
         const QString path = QFileDialog::getOpenFileName(
             this, tr("Edit lesson"), lessons::userLessonsDir(), tr("Lessons (*.rlesson *.json)"));
         QString error;
