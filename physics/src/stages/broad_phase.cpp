@@ -62,11 +62,12 @@ void BroadPhase::queryTree(const Aabb& box, std::vector<int>& out) const
 }
 
 void BroadPhase::updateBoxes(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
-                             double margin, double dt)
+                             double margin, const std::vector<double>& grow, double dt)
 {
     const size_t n = bodies.size();
     m_leaf.resize(n, AabbTree::kNull);
     m_box.resize(n);
+    m_grow.resize(n, 0.0);
     m_moved.assign(n, 0);
     m_movedList.clear();
 
@@ -81,10 +82,15 @@ void BroadPhase::updateBoxes(const std::vector<Body>& bodies, const std::vector<
             }
             continue;
         }
-        if (leaf != AabbTree::kNull && b.isDynamic() && !b.awake)
+        const double g = grow.empty() ? 0.0 : grow[i];
+        if (leaf != AabbTree::kNull && b.isDynamic() && !b.awake && g == m_grow[i])
             continue; // asleep: where it was
-        const Aabb box = computeAabb(b.shape, xf[i], margin);
+        // A fast body's box reaches as far as its motion (continuous.cpp) and its fat box
+        // holds that box: the pairs it needs are then among the tree's kept pairs, with no
+        // query of its own every step, and only a body that outruns its fat box asks again.
+        const Aabb box = computeAabb(b.shape, xf[i], margin + g);
         m_box[i] = box;
+        m_grow[i] = g;
         if (leaf != AabbTree::kNull && m_tree->box(leaf).contains(box))
             continue;
         if (leaf != AabbTree::kNull)
@@ -96,12 +102,12 @@ void BroadPhase::updateBoxes(const std::vector<Body>& bodies, const std::vector<
 }
 
 void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
-                           double margin, double dt,
+                           double margin, const std::vector<double>& grow, double dt,
                            const std::vector<std::pair<int, int>>& excluded,
                            std::vector<std::pair<int, int>>& pairs)
 {
     const size_t n = bodies.size();
-    updateBoxes(bodies, xf, margin, dt);
+    updateBoxes(bodies, xf, margin, grow, dt);
 
     // New neighbours of the bodies that moved. A pair of two moved bodies is taken when the
     // lower id asks.

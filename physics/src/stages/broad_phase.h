@@ -48,27 +48,34 @@ public:
     BroadPhase& operator=(const BroadPhase&) = delete;
 
     /// `xf`: each body's placement now; `dt`: the step [s], to grow a moving body's fat box
-    /// along its motion. `excluded` holds pairs (a < b) that never collide (bodies joined by
-    /// a pin). Bodies asleep keep the box they had.
+    /// along its motion. `grow`: per body, how much more than margin its box reaches [m] (a
+    /// fast body's motion in the step, continuous.cpp), or empty for none. `excluded` holds
+    /// pairs (a < b) that never collide (bodies joined by a pin). Bodies asleep keep the box
+    /// they had.
     void findPairs(const std::vector<Body>& bodies, const std::vector<Transform>& xf, double margin,
-                   double dt, const std::vector<std::pair<int, int>>& excluded,
+                   const std::vector<double>& grow, double dt,
+                   const std::vector<std::pair<int, int>>& excluded,
                    std::vector<std::pair<int, int>>& pairs);
 
     /// Calls fn(id) for every body whose fat box overlaps `box` (as of the last findPairs).
     template <typename Fn> void query(const Aabb& box, Fn&& fn) const;
-    /// A body's box as of the last findPairs, grown by margin [m].
+    /// How many bodies the last findPairs put back in the tree (each one query of it).
+    int refitted() const { return static_cast<int>(m_movedList.size()); }
+    /// A body's box as of the last findPairs, grown by margin and its `grow` [m].
     const Aabb& box(int id) const { return m_box[static_cast<size_t>(id)]; }
 
 private:
     void queryTree(const Aabb& box, std::vector<int>& out) const;
-    /// Each body's box grown by margin; a body that left its fat box goes back into the tree
-    /// with a new one, fattened by its motion over dt, and is listed as moved.
+    /// Each body's box grown by margin and its grow; a body whose box left its fat box goes
+    /// back into the tree with a new one, fattened by its motion over dt, and is listed as
+    /// moved.
     void updateBoxes(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
-                     double margin, double dt);
+                     double margin, const std::vector<double>& grow, double dt);
 
     std::unique_ptr<AabbTree> m_tree;
-    std::vector<int> m_leaf; ///< per body: its leaf in the tree, -1 if none
-    std::vector<Aabb> m_box; ///< per body: its box grown by margin
+    std::vector<int> m_leaf;    ///< per body: its leaf in the tree, -1 if none
+    std::vector<Aabb> m_box;    ///< per body: its box grown by margin and its grow
+    std::vector<double> m_grow; ///< per body: the grow m_box was made with [m]
     std::vector<char> m_moved;
     std::vector<int> m_movedList;
     std::vector<std::pair<int, int>> m_pairs; ///< fat boxes overlapping, sorted

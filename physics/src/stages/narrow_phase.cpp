@@ -86,11 +86,12 @@ void findContacts(StepContext& ctx)
         placeBodies(ctx);
     else
         placeMovedBodies(ctx);
-    s.broadPhase.findPairs(ctx.bodies, s.xf, margin, ctx.dt, ctx.jointPairs, s.pairs);
-    // Fast bodies: pairs and margins over their motion in this step (continuous collision).
-    addSweptPairs(ctx, s.pairs);
+    // Fast bodies: boxes and margins over their motion in this step (continuous collision).
+    findSweeps(ctx);
+    s.broadPhase.findPairs(ctx.bodies, s.xf, margin, ctx.sweep, ctx.dt, ctx.jointPairs, s.pairs);
     broad.stop();
     ctx.profile.pairs = static_cast<int>(s.pairs.size());
+    ctx.profile.refitted = s.broadPhase.refitted();
 
     StageTimer narrow(ctx.profile, Stage::NarrowPhase);
     if (ctx.plain) {

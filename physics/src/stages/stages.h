@@ -33,9 +33,9 @@ void rememberStartVelocities(StepContext& ctx);
 /// Stage::BroadPhase and Stage::NarrowPhase: the contacts where the shapes stand now
 /// (broad_phase.cpp, continuous.cpp, narrow_phase.cpp).
 void findContacts(StepContext& ctx);
-/// Pairs for bodies that move more than their own size in a step, and the speculative margin
-/// each body's motion asks for [m] (StepContext::sweep) (continuous.cpp).
-void addSweptPairs(StepContext& ctx, std::vector<std::pair<int, int>>& pairs);
+/// The speculative margin each fast body's motion asks for [m] (StepContext::sweep): for the
+/// broad phase's boxes and the narrow phase's pairs (continuous.cpp).
+void findSweeps(StepContext& ctx);
 
 /// Stage::Islands: groups touching bodies; an island with an awake body wakes whole
 /// (islands.cpp).

@@ -57,6 +57,8 @@ struct StepProfile {
     int awake = 0;          ///< dynamic bodies awake
     int asleep = 0;         ///< dynamic bodies asleep
     int islands = 0;        ///< islands of awake bodies (when sleeping is on)
+    int fast = 0;           ///< bodies with a swept margin (continuous collision)
+    int refitted = 0;       ///< bodies put back in the broad phase's tree, one query each
 
     double stage(Stage s) const { return ms[static_cast<int>(s)]; }
     bool stageRan(Stage s) const { return ran[static_cast<int>(s)]; }
