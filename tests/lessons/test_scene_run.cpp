@@ -89,7 +89,9 @@ void TestLessons::validateRecognisesScenes()
     QVERIFY(!other.ok);
     QCOMPARE(other.error, path + QStringLiteral(": not a RigidLab document: no format version key "
                                                 "(\"rigidlab\" for a scene, "
-                                                "\"rigidlab-lesson\" for a lesson)"));
+                                                "\"rigidlab-lesson\" for a lesson, "
+                                                "\"rigidlab-lesson-file\" for a lesson in one "
+                                                "file (.rlesson))"));
 }
 
 void TestLessons::runWritesHeadersAndRows()
