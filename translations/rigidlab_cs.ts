@@ -3519,6 +3519,18 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>The lesson has unsaved changes. Save them?</source>
         <translation>Lekce má neuložené změny. Uložit je?</translation>
     </message>
+    <message>
+        <source>The step&apos;s questions and settings</source>
+        <translation>Otázky a nastavení kroku</translation>
+    </message>
+    <message>
+        <source>Questions</source>
+        <translation>Otázky</translation>
+    </message>
+    <message>
+        <source>Shown and locked</source>
+        <translation>Zobrazeno a zamčeno</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonPlayer</name>
@@ -4999,6 +5011,89 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>%1 The sequential-impulse solver runs instead.</source>
         <translation>%1 Místo něj běží řešič postupných impulsů.</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::StepSettingsEditor</name>
+    <message>
+        <source>Energy</source>
+        <translation>Energie</translation>
+    </message>
+    <message>
+        <source>Momentum</source>
+        <translation>Hybnost</translation>
+    </message>
+    <message>
+        <source>Energy drift</source>
+        <translation>Energetický drift</translation>
+    </message>
+    <message>
+        <source>Energy of the compared</source>
+        <translation>Energie porovnávaných světů</translation>
+    </message>
+    <message>
+        <source>Drift of the compared</source>
+        <translation>Drift porovnávaných světů</translation>
+    </message>
+    <message>
+        <source>Controls</source>
+        <translation>Ovládání</translation>
+    </message>
+    <message>
+        <source>Inspector</source>
+        <translation>Inspektor</translation>
+    </message>
+    <message>
+        <source>Separating axes</source>
+        <translation>Oddělující osy</translation>
+    </message>
+    <message>
+        <source>Bounces</source>
+        <translation>Odrazy</translation>
+    </message>
+    <message>
+        <source>Collision</source>
+        <translation>Srážka</translation>
+    </message>
+    <message>
+        <source>What the step shows and lets the student change</source>
+        <translation>Co krok ukazuje a co smí žák měnit</translation>
+    </message>
+    <message>
+        <source>Plots shown</source>
+        <translation>Zobrazené grafy</translation>
+    </message>
+    <message>
+        <source>Panels shown</source>
+        <translation>Zobrazené panely</translation>
+    </message>
+    <message>
+        <source>The student may change (unticked: locked)</source>
+        <translation>Žák smí měnit (nezaškrtnuté: zamčeno)</translation>
+    </message>
+    <message>
+        <source>Plots exported at</source>
+        <translation>Grafy se exportují v čase</translation>
+    </message>
+    <message>
+        <source>The simulated time at which the step&apos;s plots are exported, 0.1 to 600 s</source>
+        <translation>Simulovaný čas, v němž se exportují grafy kroku, 0,1 až 600 s</translation>
+    </message>
+    <message>
+        <source>export time</source>
+        <translation>čas exportu</translation>
+    </message>
+    <message>
+        <source>what the student may change</source>
+        <translation>co smí žák měnit</translation>
+    </message>
+    <message>
+        <source>plots shown</source>
+        <translation>zobrazené grafy</translation>
+    </message>
+    <message>
+        <source>panels shown</source>
+        <translation>zobrazené panely</translation>
     </message>
 </context>
 <context>

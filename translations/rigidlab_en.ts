@@ -53,6 +53,16 @@
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::LessonEditor</name>
+    <message numerus="yes">
+        <source>%n problem(s)</source>
+        <translation>
+            <numerusform>%n problem</numerusform>
+            <numerusform>%n problems</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::MeasurementImportDialog</name>
     <message numerus="yes">
         <source>%n bounce time(s)</source>

@@ -110,6 +110,9 @@ struct EditorLock {
     QStringList properties; ///< of schema::editorPropertyNames(), editable; the rest locked
 };
 
+/// The longest time a step's plots may be exported at [s].
+inline constexpr double kMaxExportTime = 600.0;
+
 struct LessonStep {
     QString title;
     QString text;      ///< Markdown

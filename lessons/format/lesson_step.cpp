@@ -20,8 +20,7 @@ namespace rigidlab::lessons::detail {
 
 namespace {
 
-constexpr double kMaxExportTime = 600.0; ///< [s]
-constexpr double kMaxExportSteps = 1e7;  ///< exportTime / dt at most
+constexpr double kMaxExportSteps = 1e7; ///< exportTime / dt at most
 
 template <typename Names> QString joinNames(const Names& names)
 {

@@ -16,6 +16,7 @@
 
 #include <QAbstractItemView>
 #include <QApplication>
+#include <QComboBox>
 #include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
@@ -145,9 +146,7 @@ void openReadAnswer(MainWindow& w)
 /// Runs and pauses from the scene, selects a body, moves it and changes its velocity.
 void runPauseAndPush(MainWindow& w)
 {
-    ui::LessonPlayer& player = w.lessonPlayer();
     ui::SimulationController& controller = w.controller();
-    const int steps = player.lesson() ? static_cast<int>(player.lesson()->steps.size()) : 0;
     // Run and pause: F6 puts the focus on the scene, Space runs and pauses.
     key(w, Qt::Key_F6);
     QCOMPARE(QApplication::focusWidget(), &w.view());
@@ -297,6 +296,27 @@ private slots:
         key(w, Qt::Key_Backtab);
         key(w, Qt::Key_Backtab);
         QVERIFY(QApplication::focusWidget() != table);
+    }
+
+    /// An arrow on the closed list of lessons opens the list, not the lessons it passes.
+    void arrowsOnTheLessonListOpenNoLesson()
+    {
+        MainWindow w;
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        auto* box = w.lessonPlayer().findChild<QComboBox*>(QStringLiteral("lessonChoice"));
+        QVERIFY(box);
+        QVERIFY(!w.lessonPlayer().lesson());
+        const int before = box->currentIndex();
+        box->setFocus();
+        key(w, Qt::Key_Down);
+        key(w, Qt::Key_Down);
+        QVERIFY(!w.lessonPlayer().lesson());
+        QCOMPARE(box->currentIndex(), before);
+        QVERIFY(box->view()->isVisible());
+        QTest::keyClick(box->view(), Qt::Key_Escape);
+        QVERIFY(!w.lessonPlayer().lesson());
     }
 
     /// Single-key shortcuts switched off: S no longer steps; Ctrl shortcuts still work.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
+#include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/step_text.h"
 
 #include "format/data_dirs.h"
@@ -24,6 +25,7 @@
 #include <QSpinBox>
 #include <QSplitter>
 #include <QStyle>
+#include <QTabWidget>
 #include <QTimer>
 #include <QUndoStack>
 #include <QVBoxLayout>
@@ -241,8 +243,15 @@ QWidget* LessonEditor::buildStepTexts()
         preview->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Ignored);
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(box);
-    m_questions = new QuestionEditor(m_draft, split);
-    split->addWidget(m_questions);
+    // Below the texts: the step's questions, and what it shows and lets the student change.
+    auto* pages = new QTabWidget(split);
+    pages->setObjectName(QStringLiteral("stepPages"));
+    pages->setAccessibleName(tr("The step's questions and settings"));
+    m_questions = new QuestionEditor(m_draft, pages);
+    pages->addTab(m_questions, tr("Questions"));
+    m_settings = new StepSettingsEditor(m_draft, pages);
+    pages->addTab(m_settings, tr("Shown and locked"));
+    split->addWidget(pages);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 1);
     return split;

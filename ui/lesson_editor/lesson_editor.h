@@ -27,6 +27,7 @@ class QTimer;
 namespace rigidlab::ui {
 
 class QuestionEditor;
+class StepSettingsEditor;
 class StepText;
 
 class LessonEditor : public QWidget {
@@ -42,6 +43,7 @@ public:
 
     int currentStep() const;
     QuestionEditor& questions() { return *m_questions; }
+    StepSettingsEditor& stepSettings() { return *m_settings; }
     void selectStep(int index);
 
     /// Save: to the lesson's file, or asks where when it has none. Returns the error.
@@ -98,6 +100,7 @@ private:
     std::array<StepText*, 2> m_preview{};
     QLabel* m_problems = nullptr;
     QuestionEditor* m_questions = nullptr;
+    StepSettingsEditor* m_settings = nullptr;
     QAction* m_undo = nullptr;
     QAction* m_redo = nullptr;
     QTimer* m_autosaveTimer = nullptr;

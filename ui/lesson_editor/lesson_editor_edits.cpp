@@ -3,6 +3,7 @@
 // read back from the draft after each one (an edit, an undo, a redo, an open).
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
+#include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/step_text.h"
 
 #include "format/data_dirs.h"
@@ -284,6 +285,7 @@ void LessonEditor::refreshStepTexts()
         m_stepText[i]->setEnabled(step >= 0);
     }
     m_questions->setStep(step);
+    m_settings->setStep(step);
     m_refreshing = was;
 }
 

@@ -18,6 +18,7 @@
 #include <QFileInfo>
 #include <QGridLayout>
 #include <QHBoxLayout>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -193,6 +194,8 @@ void LessonPlayer::buildNavigation(QVBoxLayout* layout)
     connect(m_handIn, &QPushButton::clicked, this, &LessonPlayer::handInInteractively);
     connect(m_lessonBox, &QComboBox::currentIndexChanged, this,
             &LessonPlayer::showCurrentLessonTip);
+    m_lessonBox->installEventFilter(this);
+    m_lessonBox->setObjectName(QStringLiteral("lessonChoice"));
     connect(m_lessonBox, &QComboBox::activated, this, [this](int index) {
         const QString path = m_lessonBox->itemData(index).toString();
         if (path.isEmpty())
@@ -404,6 +407,16 @@ void LessonPlayer::fitIntroduction()
 
 bool LessonPlayer::eventFilter(QObject* watched, QEvent* event)
 {
+    // On the closed list of lessons an arrow would open each lesson it passes: it opens the
+    // list instead, where the arrows walk and Return opens the one chosen.
+    if (watched == m_lessonBox && event->type() == QEvent::KeyPress) {
+        const int key = static_cast<QKeyEvent*>(event)->key();
+        if (key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_PageUp ||
+            key == Qt::Key_PageDown || key == Qt::Key_Home || key == Qt::Key_End) {
+            m_lessonBox->showPopup();
+            return true;
+        }
+    }
     if (event->type() == QEvent::Resize) {
         const QScrollArea* scroll = scrollArea();
         if (scroll && watched == scroll->viewport())

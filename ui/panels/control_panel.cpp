@@ -70,6 +70,7 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     form->addRow(tr("Restitution e"), m_restitution);
     form->addRow(tr("Friction μ"), m_friction);
     form->addRow(tr("Gravity"), m_gravity);
+    m_gravity->setAccessibleName(tr("Gravity")); // not its box's word "on"
 
     connect(m_integrator, &QComboBox::activated, this, [this] {
         m_controller.setIntegrator(IntegratorKind(m_integrator->currentData().toInt()));

@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+// The lesson editor test's class, in two files: test_lesson_editor.cpp (the lesson as data,
+// shipped lessons) and test_lesson_editor_widgets.cpp (the editor's window, keys and mouse).
+
+#include "lesson_editor/lesson_draft.h"
+#include "lesson_editor/lesson_editor.h"
+#include "lesson_editor/step_settings_editor.h"
+#include "lesson_player/lesson_player.h"
+#include "near.h"
+#include "plots/lesson_export.h"
+#include "test_files.h"
+#include "window/main_window.h"
+#include "window/screenshots.h"
+
+#include "format/lesson_pack.h"
+#include "format/scene_compare.h"
+#include "format/scene_loader.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDirIterator>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QLineEdit>
+#include <QListWidget>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTabWidget>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+#include <memory>
+
+using namespace rigidlab;
+using rigidlab::test::writeFile;
+using rigidlab::ui::LessonDraft;
+
+/// The source tree (its lessons and scenes).
+inline const QString kSource = QStringLiteral(RIGIDLAB_SOURCE_DIR);
+
+class TestLessonEditor : public QObject {
+    Q_OBJECT
+private slots:
+    // In order, on one lesson, as a teacher writes it.
+    void initTestCase();
+    void newLessonWithSteps();
+    void missingTranslationMarked();
+    void questionsLocksAndChecks();
+    void undoAndRedo();
+    void savedAndReopened();
+    void playsAsAStudent();
+    void samePlotsAsByHand();
+    // The editor's window, driven with keys and mouse.
+    void widgetsTextsAndSteps();
+    void widgetsUndoSaveAndTry();
+    void widgetsShownAndLocked();
+    void widgetsQuestions();
+    void screenshotOfTheEditor();
+    // Shipped lessons.
+    void shippedLessonsOpenAndSaveUnchanged_data();
+    void shippedLessonsOpenAndSaveUnchanged();
+
+private:
+    QTemporaryDir m_dir;
+    QString m_saved; ///< where the lesson is saved
+    LessonDraft m_draft;
+    std::unique_ptr<ui::MainWindow> m_window; ///< the window the editor's widgets are in
+    ui::LessonEditor* m_editor = nullptr;
+};

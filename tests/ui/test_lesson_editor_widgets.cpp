@@ -1,0 +1,292 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The lesson editor's window driven with keys and mouse, as a teacher would: texts and steps,
+// undo, save and Try as a student, what a step shows and locks, questions, its screenshot.
+
+#include "test_lesson_editor.h"
+
+namespace {
+
+template <typename W> W* child(QWidget& parent, const QString& name)
+{
+    W* w = parent.findChild<W*>(name);
+    if (w == nullptr)
+        qWarning("no %s", qPrintable(name));
+    return w;
+}
+
+/// Types `text` into `field` as a teacher does: clicked, all selected (or the cursor put at the
+/// end, to `append`), then the keys.
+void typeInto(QWidget* field, const QString& text, bool append = false)
+{
+    QTest::mouseClick(field, Qt::LeftButton, {}, QPoint(5, 5));
+    field->setFocus();
+    if (append)
+        QTest::keyClick(field, Qt::Key_End, Qt::ControlModifier);
+    else
+        QTest::keyClick(field, Qt::Key_A, Qt::ControlModifier);
+    // Each character as a key with its text (QTest::keyClicks knows only ASCII).
+    for (const QChar c : text) {
+        QTest::sendKeyEvent(QTest::Press, field, Qt::Key_unknown, QString(c), {});
+        QTest::sendKeyEvent(QTest::Release, field, Qt::Key_unknown, QString(c), {});
+    }
+}
+
+} // namespace
+
+void TestLessonEditor::widgetsTextsAndSteps()
+{
+    // File › New lesson in the window opens the editor on the scene open in it.
+    m_window = std::make_unique<ui::MainWindow>();
+    m_window->show();
+    QCOMPARE(m_window->openScene(kSource + QStringLiteral("/lessons/scenes/four_balls.json"), true),
+             QString());
+    QAction* create = m_window->findChild<QAction*>(QStringLiteral("newLesson"));
+    QVERIFY(create != nullptr);
+    create->trigger();
+    auto* ed = m_window->findChild<ui::LessonEditor*>(QStringLiteral("lessonEditor"));
+    QVERIFY(ed != nullptr);
+    m_editor = ed;
+    ed->setAutosavePath(m_dir.filePath(QStringLiteral("autosave.rlesson")));
+    QVERIFY(QTest::qWaitForWindowExposed(ed));
+    ed->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(ed));
+    LessonDraft& d = ed->draft();
+    QCOMPARE(d.stepCount(), 1);
+
+    // The lesson's title in both languages, its minutes.
+    typeInto(child<QLineEdit>(*ed, QStringLiteral("lesson_title_cs")), QStringLiteral("Pády"));
+    typeInto(child<QLineEdit>(*ed, QStringLiteral("lesson_title_en")), QStringLiteral("Drops"));
+    QCOMPARE(d.text(-1, QStringLiteral("title"), QStringLiteral("cs")), QStringLiteral("Pády"));
+    QCOMPARE(d.text(-1, QStringLiteral("title"), QStringLiteral("en")), QStringLiteral("Drops"));
+    auto* minutes = child<QSpinBox>(*ed, QStringLiteral("lessonMinutes"));
+    minutes->setFocus();
+    QTest::keyClick(minutes, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(minutes, QStringLiteral("20"));
+    QCOMPARE(d.value(-1, QStringLiteral("minutes")).toInt(), 20);
+
+    // The first step's text in Czech only: English is marked missing, in the list too.
+    typeInto(child<QLineEdit>(*ed, QStringLiteral("stepTitle_cs")), QStringLiteral("Sledujte"));
+    typeInto(child<QPlainTextEdit>(*ed, QStringLiteral("stepText_cs")),
+             QStringLiteral("Pusťte **míčky**."));
+    QCOMPARE(d.text(0, QStringLiteral("text"), QStringLiteral("cs")),
+             QStringLiteral("Pusťte **míčky**."));
+    auto* preview = ed->findChild<QWidget*>(QStringLiteral("preview_cs"));
+    QVERIFY(preview != nullptr);
+    const QString shown = static_cast<QTextEdit*>(preview)->toPlainText();
+    QVERIFY2(shown.contains(QStringLiteral("Pusťte míčky.")), qPrintable(shown)); // no stars
+    auto* missingEn = child<QLabel>(*ed, QStringLiteral("missing_en"));
+    QVERIFY(missingEn->isVisibleTo(ed));
+    QVERIFY(!child<QLabel>(*ed, QStringLiteral("missing_cs"))->isVisibleTo(ed));
+    auto* steps = child<QListWidget>(*ed, QStringLiteral("lessonSteps"));
+    QVERIFY2(steps->item(0)->text().contains(u'⚠'), qPrintable(steps->item(0)->text()));
+    typeInto(child<QLineEdit>(*ed, QStringLiteral("stepTitle_en")), QStringLiteral("Watch"));
+    typeInto(child<QPlainTextEdit>(*ed, QStringLiteral("stepText_en")),
+             QStringLiteral("Drop the balls."));
+    QVERIFY(!missingEn->isVisibleTo(ed));
+    QVERIFY2(!steps->item(0)->text().contains(u'⚠'), qPrintable(steps->item(0)->text()));
+
+    // Steps: added by mouse and by key, duplicated, moved, removed.
+    QTest::mouseClick(child<QPushButton>(*ed, QStringLiteral("addStep")), Qt::LeftButton);
+    QCOMPARE(d.stepCount(), 2);
+    QCOMPARE(ed->currentStep(), 1);
+    typeInto(child<QLineEdit>(*ed, QStringLiteral("stepTitle_en")), QStringLiteral("Measure"));
+    typeInto(child<QLineEdit>(*ed, QStringLiteral("stepTitle_cs")), QStringLiteral("Změřte"));
+    steps->setFocus();
+    QTest::keyClick(steps, Qt::Key_D, Qt::ControlModifier);
+    QCOMPARE(d.stepCount(), 3);
+    QCOMPARE(d.text(2, QStringLiteral("title"), QStringLiteral("en")), QStringLiteral("Measure"));
+    QTest::keyClick(steps, Qt::Key_Up, Qt::AltModifier);
+    QCOMPARE(ed->currentStep(), 1);
+    QTest::keyClick(steps, Qt::Key_Up, Qt::AltModifier);
+    QCOMPARE(ed->currentStep(), 0);
+    QCOMPARE(d.text(0, QStringLiteral("title"), QStringLiteral("en")), QStringLiteral("Measure"));
+    QTest::keyClick(steps, Qt::Key_Down, Qt::AltModifier);
+    QCOMPARE(d.text(0, QStringLiteral("title"), QStringLiteral("en")), QStringLiteral("Watch"));
+    QTest::keyClick(steps, Qt::Key_Delete, Qt::ControlModifier);
+    QCOMPARE(d.stepCount(), 2);
+}
+
+void TestLessonEditor::widgetsUndoSaveAndTry()
+{
+    QVERIFY(m_editor != nullptr);
+    ui::LessonEditor* ed = m_editor;
+    ui::MainWindow& w = *m_window;
+    LessonDraft& d = ed->draft();
+    auto* steps = child<QListWidget>(*ed, QStringLiteral("lessonSteps"));
+    steps->setFocus();
+    // Undo and redo with the keys, in a text field too: one history, the lesson's.
+    QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(d.stepCount(), 3);
+    QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(d.stepCount(), 2);
+    QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(d.stepCount(), 3);
+    auto* enText = child<QPlainTextEdit>(*ed, QStringLiteral("stepText_en"));
+    ed->selectStep(0);
+    typeInto(enText, QStringLiteral(" Now."), true);
+    QCOMPARE(d.text(0, QStringLiteral("text"), QStringLiteral("en")),
+             QStringLiteral("Drop the balls. Now."));
+    QTest::keyClick(enText, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(d.text(0, QStringLiteral("text"), QStringLiteral("en")),
+             QStringLiteral("Drop the balls."));
+    QCOMPARE(enText->toPlainText(), QStringLiteral("Drop the balls."));
+
+    // Autosave while unsaved; Save As, then Ctrl+S; reopened, the same lesson.
+    QVERIFY(ed->autosave());
+    QVERIFY(QFileInfo::exists(ed->autosavePath()));
+    const QString path = m_dir.filePath(QStringLiteral("teacher.rlesson"));
+    QCOMPARE(ed->saveAs(path), QString());
+    QVERIFY(!d.isModified());
+    QVERIFY(!ed->autosave()); // nothing unsaved
+    typeInto(child<QLineEdit>(*ed, QStringLiteral("lesson_summary_en")), QStringLiteral("Balls."));
+    QVERIFY(d.isModified());
+    QTest::keyClick(steps, Qt::Key_S, Qt::ControlModifier);
+    QVERIFY(!d.isModified());
+    ui::LessonEditor again;
+    QCOMPARE(again.open(path), QString());
+    QCOMPARE(again.draft().stepCount(), 3);
+    QCOMPARE(again.draft().text(-1, QStringLiteral("summary"), QStringLiteral("en")),
+             QStringLiteral("Balls."));
+    QCOMPARE(child<QLineEdit>(again, QStringLiteral("stepTitle_cs"))->text(),
+             QStringLiteral("Sledujte"));
+
+    // Try as a student from step 2: the window plays it there; the editor stays at it.
+    ed->selectStep(1);
+    QTest::mouseClick(child<QPushButton>(*ed, QStringLiteral("tryAsStudent")), Qt::LeftButton);
+    QVERIFY(w.lessonPlayer().lesson() != nullptr);
+    QCOMPARE(static_cast<int>(w.lessonPlayer().lesson()->steps.size()), 3);
+    QCOMPARE(w.lessonPlayer().stepIndex(), 1);
+    QCOMPARE(ed->currentStep(), 1);
+}
+
+// What a step shows and what the student may change, ticked with the keyboard: a plot shown,
+// a control locked, the export time typed; each an edit that Ctrl+Z takes back, and the
+// lesson the player reads has them.
+void TestLessonEditor::widgetsShownAndLocked()
+{
+    QVERIFY(m_editor != nullptr);
+    ui::LessonEditor* ed = m_editor;
+    LessonDraft& d = ed->draft();
+    ed->selectStep(0);
+    auto* pages = child<QTabWidget>(*ed, QStringLiteral("stepPages"));
+    pages->setCurrentWidget(&ed->stepSettings());
+    ed->activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(ed));
+    ui::StepSettingsEditor& settings = ed->stepSettings();
+    QCheckBox* energy = settings.box(QStringLiteral("plots"), QStringLiteral("energy"));
+    QCheckBox* dt = settings.box(QStringLiteral("allow"), QStringLiteral("dt"));
+    QVERIFY(energy != nullptr && dt != nullptr);
+    const bool energyBefore = energy->isChecked();
+    QVERIFY2(dt->isChecked(), "a new step lets the student change every control");
+    const QJsonValue allowBefore = d.value(0, QStringLiteral("allow"));
+    const QJsonValue timeBefore = d.value(0, QStringLiteral("exportTime"));
+
+    dt->setFocus();
+    QTest::keyClick(dt, Qt::Key_Space);
+    QVERIFY(!dt->isChecked());
+    const QJsonArray allow = d.value(0, QStringLiteral("allow")).toArray();
+    QVERIFY2(!allow.isEmpty() && !allow.contains(QStringLiteral("dt")),
+             qPrintable(QJsonDocument(allow).toJson(QJsonDocument::Compact)));
+    QString error;
+    std::optional<lessons::Lesson> lesson = d.lesson(QStringLiteral("en"), error);
+    QVERIFY2(lesson.has_value(), qPrintable(error));
+    QVERIFY(lesson->steps[0].allow.has_value());
+    QVERIFY(!lesson->steps[0].allow->contains(QStringLiteral("dt")));
+    QVERIFY(lesson->steps[0].allow->contains(QStringLiteral("integrator")));
+
+    energy->setFocus();
+    QTest::keyClick(energy, Qt::Key_Space);
+    QCOMPARE(energy->isChecked(), !energyBefore);
+    QCOMPARE(d.value(0, QStringLiteral("plots")).toArray().contains(QStringLiteral("energy")),
+             !energyBefore);
+
+    auto* time = child<QDoubleSpinBox>(*ed, QStringLiteral("stepExportTime"));
+    time->setFocus();
+    time->selectAll();
+    QTest::keyClicks(time, QLocale().toString(2.5));
+    QTest::keyClick(time, Qt::Key_Return);
+    RL_VERIFY_NEAR(d.value(0, QStringLiteral("exportTime")).toDouble(), 2.5, 1e-12, 0.0);
+
+    // Undone in turn: the time, the plot, the lock; each box shows the draft again.
+    energy->setFocus();
+    QCOMPARE(d.undoStack()->undoText(), tr("export time"));
+    QTest::keyClick(energy, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(d.value(0, QStringLiteral("exportTime")), timeBefore);
+    QTest::keyClick(energy, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(energy->isChecked(), energyBefore);
+    QTest::keyClick(energy, Qt::Key_Z, Qt::ControlModifier);
+    QVERIFY(dt->isChecked());
+    QCOMPARE(d.value(0, QStringLiteral("allow")), allowBefore);
+    // Locked again for the lesson saved below.
+    QTest::keyClick(energy, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QVERIFY(!dt->isChecked());
+}
+
+void TestLessonEditor::widgetsQuestions()
+{
+    QVERIFY(m_editor != nullptr);
+    ui::LessonEditor* ed = m_editor;
+    LessonDraft& d = ed->draft();
+    ed->selectStep(0);
+    const auto questions = [&d] { return d.value(0, QStringLiteral("questions")).toArray(); };
+
+    // A measured question: the body from the scene's bodies, the quantity from a list.
+    QTest::mouseClick(child<QPushButton>(*ed, QStringLiteral("addMeasuredQuestion")),
+                      Qt::LeftButton);
+    QCOMPARE(questions().size(), 1);
+    auto* body = child<QComboBox>(*ed, QStringLiteral("questionBody"));
+    QVERIFY(body->count() > 0);
+    body->setFocus();
+    QTest::keyClick(body, Qt::Key_End);
+    const QString chosen = body->currentData().toString();
+    QCOMPARE(questions().at(0).toObject().value(u"measure").toObject().value(u"body").toString(),
+             chosen);
+    auto* kind = child<QComboBox>(*ed, QStringLiteral("questionKind"));
+    kind->setFocus();
+    QTest::keyClick(kind, Qt::Key_Down); // speed → velocity x
+    QCOMPARE(questions().at(0).toObject().value(u"measure").toObject().value(u"kind").toString(),
+             QStringLiteral("velocity-x"));
+    typeInto(child<QLineEdit>(*ed, QStringLiteral("questionPrompt_cs")),
+             QStringLiteral("Jak rychle?"));
+    QCOMPARE(questions().at(0).toObject().value(u"prompt").toObject().value(u"cs").toString(),
+             QStringLiteral("Jak rychle?"));
+    // The lab's own answer beside the tolerance, or why it has none.
+    const QString answer = child<QLabel>(*ed, QStringLiteral("questionAnswer"))->text();
+    QVERIFY2(answer.contains(QStringLiteral("measures")) || answer.contains(u'⚠'),
+             qPrintable(answer));
+
+    // A predict-first question holds the run back; undone with the key, it is gone.
+    QTest::mouseClick(child<QPushButton>(*ed, QStringLiteral("addPredictQuestion")),
+                      Qt::LeftButton);
+    QCOMPARE(questions().size(), 2);
+    QVERIFY(
+        questions().at(1).toObject().value(u"holdBack").toArray().contains(QStringLiteral("run")));
+    QVERIFY(child<QCheckBox>(*ed, QStringLiteral("questionHoldRun"))->isChecked());
+    auto* steps = child<QListWidget>(*ed, QStringLiteral("lessonSteps"));
+    steps->setFocus();
+    QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier);
+    QCOMPARE(questions().size(), 1);
+    QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(questions().size(), 2);
+    QCOMPARE(ed->save(), QString());
+    ui::LessonEditor again;
+    QCOMPARE(again.open(ed->draft().path()), QString());
+    QCOMPARE(again.draft().value(0, QStringLiteral("questions")).toArray().size(), 2);
+    ed->close();
+    m_window.reset();
+}
+
+void TestLessonEditor::screenshotOfTheEditor()
+{
+    // rigidlab --screenshots writes the lesson editor at the size asked for.
+    ui::ScreenshotOptions options;
+    options.folder = m_dir.filePath(QStringLiteral("shots"));
+    options.size = QSize(1024, 768);
+    options.welcome = false;
+    options.lessons = QStringList{};
+    const ui::ScreenshotResult r = ui::writeScreenshots(options);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    QVERIFY2(r.files.contains(QStringLiteral("lesson-editor.png")), qPrintable(r.files.join(u' ')));
+    const QImage image(m_dir.filePath(QStringLiteral("shots/lesson-editor.png")));
+    QCOMPARE(image.size(), QSize(1024, 768));
+}

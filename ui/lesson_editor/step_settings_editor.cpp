@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lesson_editor/step_settings_editor.h"
+#include "lesson_editor/lesson_draft.h"
+
+#include "format/lesson.h"
+#include "format/scene_schema.h"
+
+#include <QCheckBox>
+#include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QJsonArray>
+#include <QLabel>
+#include <QVBoxLayout>
+
+namespace rigidlab::ui {
+
+namespace {
+
+QString qs(std::string_view s)
+{
+    return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
+}
+
+/// The step's plots and panels in words, in the order of the format's lists.
+std::vector<std::pair<std::string_view, QString>> plotNames()
+{
+    const std::array<QString, 5> words{
+        StepSettingsEditor::tr("Energy"), StepSettingsEditor::tr("Momentum"),
+        StepSettingsEditor::tr("Energy drift"), StepSettingsEditor::tr("Energy of the compared"),
+        StepSettingsEditor::tr("Drift of the compared")};
+    std::vector<std::pair<std::string_view, QString>> out;
+    for (std::size_t i = 0; i < lessons::kStepPlotNames.size(); ++i)
+        out.emplace_back(lessons::kStepPlotNames[i], words[i]);
+    return out;
+}
+
+std::vector<std::pair<std::string_view, QString>> panelNames()
+{
+    const std::array<QString, 5> words{
+        StepSettingsEditor::tr("Controls"), StepSettingsEditor::tr("Inspector"),
+        StepSettingsEditor::tr("Separating axes"), StepSettingsEditor::tr("Bounces"),
+        StepSettingsEditor::tr("Collision")};
+    std::vector<std::pair<std::string_view, QString>> out;
+    for (std::size_t i = 0; i < lessons::kStepPanelNames.size(); ++i)
+        out.emplace_back(lessons::kStepPanelNames[i], words[i]);
+    return out;
+}
+
+/// The settings a step may allow, named by the schema's own labels.
+std::vector<std::pair<std::string_view, QString>> controlNames()
+{
+    std::vector<std::pair<std::string_view, QString>> out;
+    for (const lessons::schema::SettingsField& f : lessons::schema::settingsFields()) {
+        const QString label =
+            f.label ? QCoreApplication::translate(lessons::schema::kContext, f.label) : qs(f.key);
+        out.emplace_back(f.key, label);
+    }
+    return out;
+}
+
+} // namespace
+
+StepSettingsEditor::StepSettingsEditor(LessonDraft& draft, QWidget* parent)
+    : QWidget(parent), m_draft(draft)
+{
+    setObjectName(QStringLiteral("stepSettings"));
+    setAccessibleName(tr("What the step shows and lets the student change"));
+    auto* layout = new QVBoxLayout(this);
+    auto* row = new QHBoxLayout;
+    row->addWidget(group(tr("Plots shown"), QStringLiteral("plots"), plotNames()));
+    row->addWidget(group(tr("Panels shown"), QStringLiteral("panels"), panelNames()));
+    row->addWidget(group(tr("The student may change (unticked: locked)"), QStringLiteral("allow"),
+                         controlNames()));
+    layout->addLayout(row);
+    auto* form = new QFormLayout;
+    m_exportTime = new QDoubleSpinBox(this);
+    m_exportTime->setObjectName(QStringLiteral("stepExportTime"));
+    m_exportTime->setRange(0.1, lessons::kMaxExportTime);
+    m_exportTime->setDecimals(2);
+    m_exportTime->setSuffix(QStringLiteral("\u00a0s"));
+    m_exportTime->setAccessibleName(tr("Plots exported at"));
+    m_exportTime->setAccessibleDescription(
+        tr("The simulated time at which the step's plots are exported, 0.1 to 600 s"));
+    auto* label = new QLabel(tr("Plots exported at"), this);
+    label->setBuddy(m_exportTime);
+    form->addRow(label, m_exportTime);
+    connect(m_exportTime, &QDoubleSpinBox::editingFinished, this, [this] {
+        if (m_refreshing || m_step < 0)
+            return;
+        const QJsonValue now = m_draft.value(m_step, QStringLiteral("exportTime"));
+        if (now.isDouble() && now.toDouble() == m_exportTime->value())
+            return;
+        m_draft.setValue(m_step, QStringLiteral("exportTime"), m_exportTime->value(),
+                         tr("export time"));
+    });
+    layout->addLayout(form);
+    layout->addStretch(1);
+    setStep(-1);
+}
+
+QGroupBox* StepSettingsEditor::group(const QString& title, const QString& key,
+                                     const std::vector<std::pair<std::string_view, QString>>& names)
+{
+    auto* box = new QGroupBox(title, this);
+    box->setAccessibleName(title);
+    auto* column = new QVBoxLayout(box);
+    for (const auto& [name, words] : names) {
+        auto* tick = new QCheckBox(words, box);
+        tick->setObjectName(key + u'_' + qs(name));
+        tick->setAccessibleName(title + QStringLiteral(": ") + words);
+        connect(tick, &QCheckBox::toggled, this, [this, key] { ticked(key); });
+        column->addWidget(tick);
+        m_rows.push_back({key, qs(name), tick});
+    }
+    column->addStretch(1);
+    return box;
+}
+
+QCheckBox* StepSettingsEditor::box(const QString& key, const QString& name) const
+{
+    for (const Row& r : m_rows)
+        if (r.key == key && r.name == name)
+            return r.box;
+    return nullptr;
+}
+
+void StepSettingsEditor::setStep(int step)
+{
+    m_step = step;
+    refresh();
+}
+
+void StepSettingsEditor::refresh()
+{
+    const bool was = m_refreshing;
+    m_refreshing = true;
+    const bool on = m_step >= 0 && m_step < m_draft.stepCount();
+    for (const Row& r : m_rows) {
+        const QJsonValue v = on ? m_draft.value(m_step, r.key) : QJsonValue();
+        // Plots and panels: only those named are shown. Controls: all may change unless the
+        // step names those that may.
+        const bool ticked = v.isArray() ? v.toArray().contains(QJsonValue(r.name))
+                                        : (r.key == QStringLiteral("allow"));
+        r.box->setChecked(on && ticked);
+        r.box->setEnabled(on);
+    }
+    const QJsonValue t = on ? m_draft.value(m_step, QStringLiteral("exportTime")) : QJsonValue();
+    m_exportTime->setValue(t.isDouble() ? t.toDouble() : lessons::LessonStep{}.exportTime);
+    m_exportTime->setEnabled(on);
+    m_refreshing = was;
+}
+
+void StepSettingsEditor::ticked(const QString& key)
+{
+    if (m_refreshing || m_step < 0)
+        return;
+    QJsonArray names;
+    bool all = true;
+    for (const Row& r : m_rows) {
+        if (r.key != key)
+            continue;
+        if (r.box->isChecked())
+            names.append(r.name);
+        else
+            all = false;
+    }
+    // Every control allowed is what a step without "allow" means: the file stays as it was.
+    const QJsonValue value = (key == QStringLiteral("allow") && all) ||
+                                     (key != QStringLiteral("allow") && names.isEmpty())
+                                 ? QJsonValue()
+                                 : QJsonValue(names);
+    if (value == m_draft.value(m_step, key))
+        return;
+    const QString name = key == QStringLiteral("allow")   ? tr("what the student may change")
+                         : key == QStringLiteral("plots") ? tr("plots shown")
+                                                          : tr("panels shown");
+    m_draft.setValue(m_step, key, value, name);
+}
+
+} // namespace rigidlab::ui
