@@ -3531,6 +3531,26 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Shown and locked</source>
         <translation>Zobrazeno a zamčeno</translation>
     </message>
+    <message>
+        <source>&amp;Edit the step&apos;s scene in the window</source>
+        <translation>&amp;Upravit scénu kroku v okně</translation>
+    </message>
+    <message>
+        <source>Opens this step&apos;s scene in the main window&apos;s scene editor</source>
+        <translation>Otevře scénu tohoto kroku v editoru scén hlavního okna</translation>
+    </message>
+    <message>
+        <source>Take the window&apos;s s&amp;cene for this step</source>
+        <translation>Převzít s&amp;cénu z okna pro tento krok</translation>
+    </message>
+    <message>
+        <source>The scene open in the main window, as edited there, becomes this step&apos;s scene</source>
+        <translation>Scéna otevřená v hlavním okně, tak jak je tam upravená, se stane scénou tohoto kroku</translation>
+    </message>
+    <message>
+        <source>Edit the step&apos;s scene</source>
+        <translation>Upravit scénu kroku</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonPlayer</name>
@@ -5077,7 +5097,7 @@ B&#xa0;%3 … %4</translation>
     </message>
     <message>
         <source>The simulated time at which the step&apos;s plots are exported, 0.1 to 600 s</source>
-        <translation>Simulovaný čas, v němž se exportují grafy kroku, 0,1 až 600 s</translation>
+        <translation>Simulovaný čas, v němž se exportují grafy kroku, 0,1 až 600&#xa0;s</translation>
     </message>
     <message>
         <source>export time</source>

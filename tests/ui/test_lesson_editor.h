@@ -3,6 +3,8 @@
 // The lesson editor test's class, in two files: test_lesson_editor.cpp (the lesson as data,
 // shipped lessons) and test_lesson_editor_widgets.cpp (the editor's window, keys and mouse).
 
+#include "editor/edit_tools.h"
+#include "editor/scene_document.h"
 #include "lesson_editor/lesson_draft.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/step_settings_editor.h"
@@ -58,6 +60,7 @@ private slots:
     void widgetsTextsAndSteps();
     void widgetsUndoSaveAndTry();
     void widgetsShownAndLocked();
+    void widgetsStepSceneFromTheWindow();
     void widgetsQuestions();
     void screenshotOfTheEditor();
     // Shipped lessons.

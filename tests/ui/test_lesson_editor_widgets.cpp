@@ -222,6 +222,49 @@ void TestLessonEditor::widgetsShownAndLocked()
     QVERIFY(!dt->isChecked());
 }
 
+// A step's scene drawn in the window: the window's scene taken for step 2 (undoable), and
+// step 1's scene sent to the window's scene editor.
+void TestLessonEditor::widgetsStepSceneFromTheWindow()
+{
+    QVERIFY(m_editor != nullptr);
+    ui::LessonEditor* ed = m_editor;
+    LessonDraft& d = ed->draft();
+    const auto stepBodies = [&d](int step) {
+        QString error;
+        const std::optional<lessons::Lesson> lesson = d.lesson(QStringLiteral("en"), error);
+        QStringList ids;
+        if (lesson)
+            for (const physics::BodyDef& b :
+                 lesson->steps[static_cast<std::size_t>(step)].scene.bodies)
+                ids << QString::fromStdString(b.name);
+        return ids;
+    };
+    const QStringList before = stepBodies(1);
+    QCOMPARE(m_window->openScene(kSource + QStringLiteral("/lessons/scenes/two_balls.json"), true),
+             QString());
+    QStringList window;
+    for (const physics::BodyDef& b : m_window->document()->scene().bodies)
+        window << QString::fromStdString(b.name);
+    QVERIFY(window != before);
+
+    ed->selectStep(1);
+    QTest::mouseClick(child<QPushButton>(*ed, QStringLiteral("takeWindowScene")), Qt::LeftButton);
+    QCOMPARE(stepBodies(1), window);
+    d.undoStack()->undo();
+    QCOMPARE(stepBodies(1), before);
+    d.undoStack()->redo();
+    QCOMPARE(stepBodies(1), window);
+
+    ed->selectStep(0);
+    QTest::mouseClick(child<QPushButton>(*ed, QStringLiteral("editStepScene")), Qt::LeftButton);
+    QStringList sent;
+    for (const physics::BodyDef& b : m_window->document()->scene().bodies)
+        sent << QString::fromStdString(b.name);
+    QCOMPARE(sent, stepBodies(0));
+    QVERIFY(m_window->editTools().editing());
+    m_window->editTools().setEditing(false);
+}
+
 void TestLessonEditor::widgetsQuestions()
 {
     QVERIFY(m_editor != nullptr);

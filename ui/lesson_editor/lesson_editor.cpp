@@ -189,6 +189,21 @@ QWidget* LessonEditor::buildStepList()
     buttons->addWidget(makeButton(tr("Try as a &student"), QStringLiteral("tryAsStudent"),
                                   QKeySequence(QStringLiteral("F5")), &LessonEditor::trySelected),
                        2, 1);
+    // The step's scene is drawn in the window's scene editor: sent there, and taken back.
+    auto* editScene = new QPushButton(tr("&Edit the step's scene in the window"), box);
+    editScene->setObjectName(QStringLiteral("editStepScene"));
+    editScene->setToolTip(tr("Opens this step's scene in the main window's scene editor"));
+    connect(editScene, &QPushButton::clicked, this, &LessonEditor::sendStepScene);
+    buttons->addWidget(editScene, 3, 0, 1, 2);
+    auto* takeScene = new QPushButton(tr("Take the window's s&cene for this step"), box);
+    takeScene->setObjectName(QStringLiteral("takeWindowScene"));
+    takeScene->setToolTip(tr("The scene open in the main window, as edited there, becomes "
+                             "this step's scene"));
+    connect(takeScene, &QPushButton::clicked, this, [this] {
+        if (currentStep() >= 0)
+            emit stepSceneWanted(currentStep());
+    });
+    buttons->addWidget(takeScene, 4, 0, 1, 2);
     layout->addLayout(buttons);
     return box;
 }

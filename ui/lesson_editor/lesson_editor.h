@@ -59,6 +59,10 @@ public:
 signals:
     /// Try as a student: play the lesson saved at `path` from `step`.
     void tryAsStudent(const QString& path, int step);
+    /// Edit the step's scene in the window's scene editor.
+    void editStepScene(const lessons::Scene& scene);
+    /// The scene open in the window, please, for `step` (LessonDraft::setStepScene).
+    void stepSceneWanted(int step);
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -78,6 +82,7 @@ private:
     void duplicateStep();
     void saveAsDialog();
     void trySelected();
+    void sendStepScene();
     void refresh();
     void refreshLesson();
     void refreshSteps();

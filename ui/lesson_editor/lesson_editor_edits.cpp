@@ -172,6 +172,20 @@ void LessonEditor::trySelected()
     emit tryAsStudent(path, std::max(currentStep(), 0));
 }
 
+void LessonEditor::sendStepScene()
+{
+    const int step = currentStep();
+    if (step < 0)
+        return;
+    QString error;
+    const std::optional<lessons::Lesson> lesson = m_draft.lesson(shownLanguage(), error);
+    if (!lesson || step >= static_cast<int>(lesson->steps.size())) {
+        QMessageBox::warning(this, tr("Edit the step's scene"), error);
+        return;
+    }
+    emit editStepScene(lesson->steps[static_cast<std::size_t>(step)].scene);
+}
+
 void LessonEditor::textEdited(int step, const QString& key, int language, const QString& text)
 {
     if (m_refreshing || (step < 0 && key == u"text"))

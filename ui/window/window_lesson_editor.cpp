@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's way into the lesson editor: File › New lesson and Edit lesson…, and Try as a
 // student, which plays the editor's lesson here from its selected step.
+#include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_player/lesson_player.h"
 #include "window/main_window.h"
+#include "window/window_documents.h"
 
 #include "format/data_dirs.h"
 
@@ -51,6 +53,17 @@ LessonEditor* MainWindow::editLesson(const QString& path, QString* error)
         raise();
         activateWindow();
     });
+    // The step's scene drawn in this window's scene editor, and taken back from it.
+    connect(editor, &LessonEditor::editStepScene, this, [this](const lessons::Scene& scene) {
+        if (!m_documents->confirmLeaveScene())
+            return;
+        adoptDocument(scene, QString(), false, false);
+        m_editTools->setEditing(true);
+        raise();
+        activateWindow();
+    });
+    connect(editor, &LessonEditor::stepSceneWanted, editor,
+            [this, editor](int step) { editor->draft().setStepScene(step, m_document->scene()); });
     editor->resize(1000, 700);
     editor->show();
     return editor;
