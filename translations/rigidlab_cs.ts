@@ -4686,6 +4686,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>The lab measures %1 %3; answers from %2 to %4 %3 are right.</source>
         <translation>Laboratoř naměří %1&#xa0;%3; správně jsou odpovědi od %2 do %4&#xa0;%3.</translation>
     </message>
+    <message>
+        <source>⚠ The integrators a student may choose measure from %1 to %2 %3, wider than the answers judged right: lock the integrator (Shown and locked) or widen the tolerance.</source>
+        <translation>⚠ Integrátory, které si žák může zvolit, naměří od %1 do %2 %3, víc, než kolik pokrývají odpovědi uznané za správné: zamkněte integrátor (Zobrazeno a zamčeno), nebo zvětšete toleranci.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::SatPanel</name>

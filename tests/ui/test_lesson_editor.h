@@ -7,6 +7,7 @@
 #include "editor/scene_document.h"
 #include "lesson_editor/lesson_draft.h"
 #include "lesson_editor/lesson_editor.h"
+#include "lesson_editor/question_editor.h"
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/lesson_player.h"
 #include "near.h"
@@ -61,6 +62,7 @@ private slots:
     void widgetsUndoSaveAndTry();
     void widgetsShownAndLocked();
     void widgetsStepSceneFromTheWindow();
+    void toleranceTighterThanIntegrators();
     void widgetsQuestions();
     void screenshotOfTheEditor();
     // Shipped lessons.

@@ -333,3 +333,36 @@ void TestLessonEditor::screenshotOfTheEditor()
     const QImage image(m_dir.filePath(QStringLiteral("shots/lesson-editor.png")));
     QCOMPARE(image.size(), QSize(1024, 768));
 }
+
+// A tolerance tighter than what the integrators a student may choose measure is said beside
+// the question; with the integrator locked it is not.
+void TestLessonEditor::toleranceTighterThanIntegrators()
+{
+    const lessons::SceneLoadResult scene =
+        lessons::loadSceneFile(kSource + QStringLiteral("/lessons/scenes/spring_oscillator.json"));
+    QVERIFY2(scene.ok, qPrintable(scene.error));
+    ui::LessonEditor ed;
+    ed.newLesson(scene.scene);
+    LessonDraft& d = ed.draft();
+    // Where the undamped block is at 5 s, to 1 %: explicit Euler's amplitude has grown by then.
+    const QJsonObject question =
+        QJsonDocument::fromJson(R"({"prompt": {"en": "Where?", "cs": "Kde?"},
+        "measure": {"kind": "position-y", "body": "undamped", "time": 5},
+        "unit": "m", "tolerance": 0.01})")
+            .object();
+    d.setValue(0, QStringLiteral("questions"), QJsonArray{question}, QStringLiteral("question"));
+    d.setValue(0, QStringLiteral("exportTime"), 6, QStringLiteral("export time"));
+    ed.selectStep(0);
+    auto* list = child<QListWidget>(ed, QStringLiteral("questionList"));
+    list->setCurrentRow(0);
+    const auto answer = [&ed] {
+        return child<QLabel>(ed, QStringLiteral("questionAnswer"))->text();
+    };
+    QVERIFY2(answer().contains(u'⚠') && answer().contains(QStringLiteral("integrator")),
+             qPrintable(answer()));
+    // Locked: the student cannot choose another integrator, so there is nothing to warn of.
+    d.setValue(0, QStringLiteral("allow"), QJsonArray{QStringLiteral("timeScale")},
+               QStringLiteral("lock"));
+    ed.questions().refresh();
+    QVERIFY2(!answer().contains(u'⚠'), qPrintable(answer()));
+}
