@@ -1075,6 +1075,34 @@
         <source>none</source>
         <translation>žádné</translation>
     </message>
+    <message>
+        <source>sets nothing (leave the key out when the student sets nothing)</source>
+        <translation>nic nenastavuje (když student nic nenastavuje, klíč vynechte)</translation>
+    </message>
+    <message>
+        <source>slow motion does not change what is measured: leave it out</source>
+        <translation>zpomalení nemění, co se měří: vynechte ho</translation>
+    </message>
+    <message>
+        <source>this step compares integrators, each world its own: the student cannot choose one</source>
+        <translation>tento krok porovnává integrátory, každý svět má svůj: student žádný vybrat nemůže</translation>
+    </message>
+    <message>
+        <source>this step compares solvers, each world its own: the student cannot choose one</source>
+        <translation>tento krok porovnává řešiče, každý svět má svůj: student žádný vybrat nemůže</translation>
+    </message>
+    <message>
+        <source>the student is asked to set %1, but this step locks it (&quot;allow&quot; does not list it)</source>
+        <translation>student má nastavit %1, ale tento krok to zamyká (&quot;allow&quot; to neuvádí)</translation>
+    </message>
+    <message>
+        <source>the student is asked to set %1 with the controls, but this step does not show the controls panel</source>
+        <translation>student má ovládáním nastavit %1, ale tento krok panel Ovládání nezobrazuje</translation>
+    </message>
+    <message>
+        <source>the student is asked to set %1 with the controls, which this question holds back until it is answered</source>
+        <translation>student má ovládáním nastavit %1, ale tato otázka Ovládání zadržuje, dokud není zodpovězena</translation>
+    </message>
 </context>
 <context>
     <name>ImpulseFormula</name>
@@ -2046,6 +2074,37 @@ n = (%4; %5)</translation>
     <message>
         <source>cannot read: %1</source>
         <translation>nelze číst: %1</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui</name>
+    <message>
+        <source>off</source>
+        <translation>vypnuto</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>zapnuto</translation>
+    </message>
+    <message>
+        <source>%1 = %2</source>
+        <translation>%1 = %2</translation>
+    </message>
+    <message>
+        <source>%1 is %2, not %3</source>
+        <translation>%1: %2, ne %3</translation>
+    </message>
+    <message>
+        <source>%1 was changed during the run</source>
+        <translation>%1: změněno během běhu</translation>
+    </message>
+    <message>
+        <source>This question is asked with %1, which this step does not let you set (a mistake in the lesson): it is judged by that run done without the window.</source>
+        <translation>Tato otázka se ptá na běh s nastavením %1, které vám tento krok nedovolí nastavit (chyba v lekci): odpověď se proto posoudí podle takového běhu spočítaného bez okna.</translation>
+    </message>
+    <message>
+        <source>This question is asked with %1, from the start of the run. In your run %2: set it with the controls, press Reset and run again, then check.</source>
+        <translation>Tato otázka se ptá na běh s nastavením %1 od jeho začátku. Ve vašem běhu %2: nastavte to v Ovládání, stiskněte Na začátek, spusťte běh znovu a pak odpověď zkontrolujte.</translation>
     </message>
 </context>
 <context>

@@ -2,7 +2,10 @@
 // A lesson step's worlds: its scene, its settings on top, and one world per compared variant.
 
 #include "format/lesson.h"
+#include "format/scene_schema.h"
 #include "format/view_text.h"
+
+#include <algorithm>
 
 #include <cassert>
 
@@ -44,6 +47,26 @@ QStringList LessonStep::heldBack(const std::vector<bool>& answered) const
         }
     }
     return held;
+}
+
+LessonStep askedStep(const LessonStep& step, const Question& question)
+{
+    LessonStep asked = step;
+    for (const schema::SettingsField& f : schema::settingsFields()) {
+        const schema::Value v = f.get(question.set, 0);
+        if (!std::holds_alternative<std::monostate>(v)) {
+            f.set(asked.settings, 0, v);
+        }
+    }
+    return asked;
+}
+
+bool asksSettings(const Question& question)
+{
+    const auto fields = schema::settingsFields();
+    return std::any_of(fields.begin(), fields.end(), [&](const schema::SettingsField& f) {
+        return !std::holds_alternative<std::monostate>(f.get(question.set, 0));
+    });
 }
 
 void applySettings(const StepSettings& settings, physics::World& world)

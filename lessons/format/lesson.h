@@ -61,6 +61,18 @@ struct Measure {
     double time = 0;  ///< the others: when the value is read [s]
 };
 
+/// Settings a step sets on top of its scene's.
+struct StepSettings {
+    std::optional<physics::IntegratorKind> integrator;
+    std::optional<double> dt; ///< [s]
+    std::optional<physics::SolverKind> solver;
+    std::optional<int> iterations;
+    std::optional<double> restitution; ///< for every body
+    std::optional<double> friction;    ///< for every body
+    std::optional<bool> gravity;       ///< false: no gravity
+    std::optional<double> timeScale;   ///< the window's slow motion, 0.1 to 4
+};
+
 struct Question {
     QString prompt; ///< plain text, shown above the answer box
     Measure measure;
@@ -74,6 +86,10 @@ struct Question {
     /// answered right, twice wrong or shown: "run", "panel:NAME", "plot:NAME",
     /// "column:collision.after", "column:bounces.heights" (LESSON_FORMAT.md).
     QStringList holdBack;
+    /// The settings the student is asked to set (with the step's controls) before the run
+    /// this question measures: keys of "settings" but timeScale. The answer is measured with
+    /// them, and a run without them is not judged. All unset: the step's own settings.
+    StepSettings set;
 };
 
 /// The names a question may hold back, besides "panel:" and "plot:" with a panel or plot the
@@ -81,18 +97,6 @@ struct Question {
 inline constexpr const char16_t* kHoldBackRun = u"run";
 inline constexpr const char16_t* kHoldBackCollisionAfter = u"column:collision.after";
 inline constexpr const char16_t* kHoldBackBounceHeights = u"column:bounces.heights";
-
-/// Settings a step sets on top of its scene's.
-struct StepSettings {
-    std::optional<physics::IntegratorKind> integrator;
-    std::optional<double> dt; ///< [s]
-    std::optional<physics::SolverKind> solver;
-    std::optional<int> iterations;
-    std::optional<double> restitution; ///< for every body
-    std::optional<double> friction;    ///< for every body
-    std::optional<bool> gravity;       ///< false: no gravity
-    std::optional<double> timeScale;   ///< the window's slow motion, 0.1 to 4
-};
 
 /// Worlds run side by side with the main one, differing in one setting. Variant 0 is the
 /// main world; variant i > 0 is drawn as a ghost, shifted by i * offset.
@@ -181,6 +185,11 @@ LessonLoadResult loadLessonJson(const QByteArray& bytes, const QString& path,
 /// The same for a document already parsed (one whose top level holds "rigidlab-lesson").
 LessonLoadResult loadLessonObject(const QJsonObject& root, const QString& path,
                                   const LessonLoadOptions& options = {});
+
+/// The step as a question asks it: its settings with the question's "set" on top.
+LessonStep askedStep(const LessonStep& step, const Question& question);
+/// Whether the question asks the student to set anything.
+bool asksSettings(const Question& question);
 
 /// Applies a step's settings to a world built from its scene.
 void applySettings(const StepSettings& settings, physics::World& world);

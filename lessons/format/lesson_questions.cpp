@@ -200,7 +200,7 @@ bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, co
     if (!in.asObject(value, place, object) ||
         !in.checkKeys(object, place,
                       {u"prompt", u"measure", u"unit", u"tolerance", u"absoluteTolerance", u"hint",
-                       u"holdBack"}) ||
+                       u"holdBack", u"set"}) ||
         !readNonEmptyText(in, texts, object, u"prompt", place, question.prompt, true,
                           FileMessages::tr("must not be empty"))) {
         return false;
@@ -227,7 +227,8 @@ bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, co
                           FileMessages::tr("must not be empty (leave the key out for no hint)"))) {
         return false;
     }
-    return readHoldBack(in, object, place, step, question.holdBack);
+    return readHoldBack(in, object, place, step, question.holdBack) &&
+           readQuestionSet(in, object, place, step, question.holdBack, question.set);
 }
 
 } // namespace

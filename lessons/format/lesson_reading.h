@@ -42,6 +42,11 @@ bool readDistinctNames(
 bool readSettings(JsonReader& in, const QJsonObject& object, const QString& place,
                   StepSettings& settings);
 
+/// A question's "set": the settings the student is asked to set before the run it measures.
+/// Fails on what cannot be meant; warns when the step does not let the student set them.
+bool readQuestionSet(JsonReader& in, const QJsonObject& question, const QString& place,
+                     const LessonStep& step, const QStringList& holdBack, StepSettings& set);
+
 /// The step's "compare", after its settings (a compared setting may not be set as well).
 bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place, LessonStep& step);
 

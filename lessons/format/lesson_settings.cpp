@@ -11,25 +11,89 @@
 
 namespace rigidlab::lessons::detail {
 
-bool readSettings(JsonReader& in, const QJsonObject& object, const QString& place,
-                  StepSettings& settings)
+namespace {
+
+/// A settings object at `at`: the keys of the settings rows, each read by its row.
+bool readSettingsObject(JsonReader& in, const QJsonValue& value, const QString& at,
+                        StepSettings& settings)
 {
-    if (!object.contains(u"settings")) {
-        return true;
-    }
-    const QString at = joinPlace(place, u"settings");
     QJsonObject s;
     QStringList keys;
     for (const schema::SettingsField& f : schema::settingsFields()) {
         keys << QString::fromLatin1(f.key.data(), qsizetype(f.key.size()));
     }
-    if (!in.asObject(object.value(u"settings"), at, s) || !in.checkKeys(s, at, keys)) {
+    if (!in.asObject(value, at, s) || !in.checkKeys(s, at, keys)) {
         return false;
     }
     for (const schema::SettingsField& f : schema::settingsFields()) {
         if (!readPlainField(in, f, s, at, settings, 0)) {
             return false;
         }
+    }
+    return true;
+}
+
+} // namespace
+
+bool readSettings(JsonReader& in, const QJsonObject& object, const QString& place,
+                  StepSettings& settings)
+{
+    if (!object.contains(u"settings")) {
+        return true;
+    }
+    return readSettingsObject(in, object.value(u"settings"), joinPlace(place, u"settings"),
+                              settings);
+}
+
+bool readQuestionSet(JsonReader& in, const QJsonObject& question, const QString& place,
+                     const LessonStep& step, const QStringList& holdBack, StepSettings& set)
+{
+    if (!question.contains(u"set")) {
+        return true;
+    }
+    const QString at = joinPlace(place, u"set");
+    if (!readSettingsObject(in, question.value(u"set"), at, set)) {
+        return false;
+    }
+    const QStringList keys = question.value(u"set").toObject().keys();
+    if (keys.isEmpty()) {
+        return in.fail(at, FileMessages::tr("sets nothing (leave the key out when the student "
+                                            "sets nothing)"));
+    }
+    if (set.timeScale) {
+        return in.fail(joinPlace(at, u"timeScale"),
+                       FileMessages::tr("slow motion does not change what is measured: leave it "
+                                        "out"));
+    }
+    if (step.compare && !step.compare->integrators.empty() && set.integrator) {
+        return in.fail(joinPlace(at, u"integrator"),
+                       FileMessages::tr("this step compares integrators, each world its own: "
+                                        "the student cannot choose one"));
+    }
+    if (step.compare && !step.compare->solvers.empty() && set.solver) {
+        return in.fail(joinPlace(at, u"solver"),
+                       FileMessages::tr("this step compares solvers, each world its own: the "
+                                        "student cannot choose one"));
+    }
+    // A question the student cannot set up is a mistake in the lesson, but not one that
+    // keeps it from loading: the editor marks it and the player judges such a question by
+    // the run the question asks for, done without a window.
+    for (const QString& key : keys) {
+        if (step.allow && !step.allow->contains(key)) {
+            in.warn(joinPlace(at, key),
+                    FileMessages::tr("the student is asked to set %1, but this step locks it "
+                                     "(\"allow\" does not list it)")
+                        .arg(key));
+        }
+    }
+    if (!step.panels.contains(u"controls")) {
+        in.warn(at, FileMessages::tr("the student is asked to set %1 with the controls, but this "
+                                     "step does not show the controls panel")
+                        .arg(keys.join(u", ")));
+    } else if (holdBack.contains(u"panel:controls")) {
+        in.warn(at, FileMessages::tr("the student is asked to set %1 with the controls, which "
+                                     "this question holds back until it is answered")
+                        .arg(keys.join(u", ")));
     }
     return true;
 }

@@ -108,6 +108,7 @@ private slots:
     void originalVerticesOfNonConvexPolygon();
     void buildStepWorldsMakesOneWorldPerVariant();
     void applySettingsOverridesScene();
+    void questionSetAsksForItsOwnRun();
 
     // test_lesson_physics.cpp
     void judgeApexRightAndWrong();

@@ -178,7 +178,7 @@ void TestLesson::validateRecognisesLessons()
     QCOMPARE(check.kind, QStringLiteral("lesson"));
     QCOMPARE(check.summary,
              QStringLiteral("lesson \"Bounces and collisions: the coefficient of restitution\": "
-                            "4 steps, 6 questions, 7 plots"));
+                            "4 steps, 7 questions, 7 plots"));
 
     const lessons::DocumentCheck sat = lessons::checkDocumentFile(lessonPath("separating_axis"));
     QVERIFY2(sat.ok, qPrintable(sat.error));

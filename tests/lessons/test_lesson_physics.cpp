@@ -3,8 +3,8 @@
 // test_lesson_physics_claims.cpp; their wording: test_lesson_physics_texts.cpp).
 
 #include "test_lesson_physics.h"
-#include "test_lesson.h"
 #include "near.h"
+#include "test_lesson.h"
 #include "test_main.h"
 
 #include "edit/scene_edits.h"
@@ -351,6 +351,8 @@ void TestLesson::shippedQuestionsHaveTheirTextbookAnswers_data()
     QTest::newRow("heavy-ball") << "restitution" << 1 << 0 << 2.0;
     QTest::newRow("light-ball") << "restitution" << 1 << 1 << -1.0;
     QTest::newRow("light-ball-e-0.5") << "restitution" << 2 << 0 << 0.0;
+    // Set to e = 0 by the student, the balls stick: 3 kg m/s shared by 3 kg.
+    QTest::newRow("stuck-together-e-0") << "restitution" << 2 << 1 << 1.0;
     const double inertia = (4.0 + 0.01) / 12.0;
     QTest::newRow("rod-spin") << "restitution" << 3 << 0
                               << 0.8 * (6.0 / (4 + 1 + 0.64 / inertia)) / inertia;
@@ -407,8 +409,10 @@ void TestLesson::shippedQuestionsHaveTheirTextbookAnswers()
     QFETCH(int, question);
     QFETCH(double, answer);
     const lessons::Lesson l = shippedLesson(qPrintable(lesson));
-    const lessons::LessonStep& s = stepOf(l, static_cast<std::size_t>(step));
-    const lessons::Question& q = s.questions.at(static_cast<std::size_t>(question));
+    const lessons::LessonStep& shipped = stepOf(l, static_cast<std::size_t>(step));
+    const lessons::Question& q = shipped.questions.at(static_cast<std::size_t>(question));
+    // The run the question asks for: its "set" on top of the step's settings.
+    const lessons::LessonStep s = lessons::askedStep(shipped, q);
     StepRun run(s);
     // Long enough for every question of the step: its export time covers them.
     run.run(s.exportTime);

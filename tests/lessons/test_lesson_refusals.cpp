@@ -215,6 +215,23 @@ void TestLesson::rejectsBadLesson_data()
         << question("", R"("holdBack": [1])") << q0 + R"(holdBack[0]: must be a name "...", got 1)";
     QTest::newRow("hint-empty") << question("", R"("hint": " ")")
                                 << q0 + "hint: must not be empty (leave the key out for no hint)";
+    QTest::newRow("set-empty") << question("", R"("set": {})")
+                               << q0 + "set: sets nothing (leave the key out when the student "
+                                       "sets nothing)";
+    QTest::newRow("set-time-scale")
+        << question("", R"("set": {"timeScale": 2})")
+        << q0 + "set.timeScale: slow motion does not change what is measured: leave it out";
+    QTest::newRow("set-bad-value") << question("", R"("set": {"restitution": 2})")
+                                   << q0 + "set.restitution: must be a number from 0 to 1, got 2";
+    QTest::newRow("set-unknown-key")
+        << question("", R"("set": {"colour": 1})")
+        << q0 + "set.colour: unknown key (allowed here: integrator, dt, solver, iterations, "
+                "restitution, friction, gravity, timeScale)";
+    QTest::newRow("set-compared-integrator")
+        << question(R"("compare": {"integrators": ["euler", "rk4"]}, )",
+                    R"("set": {"integrator": "rk4"})")
+        << q0 + "set.integrator: this step compares integrators, each world its own: the "
+                "student cannot choose one";
     QTest::newRow("export-time") << oneStep(R"("exportTime": 1000)")
                                  << steps0 + "exportTime: must be at most 600 s, got 1000";
     QTest::newRow("export-steps")

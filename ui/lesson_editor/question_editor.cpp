@@ -393,7 +393,8 @@ void QuestionEditor::showAnswer()
     }
     const lessons::LessonStep& step = lesson->steps[static_cast<std::size_t>(m_step)];
     const lessons::Question& q = step.questions.at(static_cast<std::size_t>(at));
-    const std::optional<double> value = lessons::measureAhead(step, q.measure);
+    const std::optional<double> value =
+        lessons::measureAhead(lessons::askedStep(step, q), q.measure);
     const QLocale locale;
     if (!value) {
         m_answer->setText(tr("⚠ The run does not get there (or diverges first): raise the step's "
@@ -405,7 +406,7 @@ void QuestionEditor::showAnswer()
                        .arg(locale.toString(*value, 'g', 4), locale.toString(*value - band, 'g', 4),
                             q.unit, locale.toString(*value + band, 'g', 4));
     // A student who may choose the integrator must not be marked wrong for choosing another.
-    if (const auto spread = integratorSpread(step, q.measure);
+    if (const auto spread = integratorSpread(lessons::askedStep(step, q), q.measure);
         spread && !lockedIntegrator(step) && spread->second - spread->first > band) {
         text += u'\n' + tr("⚠ The integrators a student may choose measure from %1 to %2 %3, "
                            "wider than the answers judged right: lock the integrator (Shown and "

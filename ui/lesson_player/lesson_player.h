@@ -28,6 +28,7 @@ class QVBoxLayout;
 
 namespace rigidlab::ui {
 
+struct AskedRun;
 class SimulationController;
 class StepText;
 
@@ -158,6 +159,10 @@ private:
     void applyTry(std::size_t i, const QuestionTry& attempt);
     /// A try at question i without an answer yet: the value it is judged against (nullopt
     /// while not measured yet) and whether it was measured ahead.
+    /// Check pressed on question i: the typed number judged, or why it is not.
+    void checkTyped(std::size_t i);
+    /// How the window's run stands to the one question i asks for (asked_run.h).
+    AskedRun askedRunOf(std::size_t i) const;
     QuestionTry measuredTry(std::size_t i);
     /// Scrolls question i's verdict into sight in the lesson's column.
     void revealResult(std::size_t i);

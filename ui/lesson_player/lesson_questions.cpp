@@ -4,6 +4,8 @@
 
 #include "lesson_player/lesson_player.h"
 
+#include "lesson_player/asked_run.h"
+
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
 
@@ -79,27 +81,9 @@ void LessonPlayer::buildQuestions()
         questionRow.result = result;
         questionRow.show = show;
         m_rows.push_back(questionRow);
-        auto judge = [this, i, edit, result] {
-            if (!m_lesson)
-                return;
-            const std::optional<double> parsed = parseNumber(edit->text());
-            if (!parsed) {
-                result->setStyleSheet(QStringLiteral("color: #a05a00;"));
-                result->setText(tr("Type a number first."));
-                result->setVisible(true);
-                return;
-            }
-            const double answer = *parsed;
-            if (std::abs(answer) > kMaxAnswer) {
-                result->setStyleSheet(QStringLiteral("color: #a05a00;"));
-                result->setText(tr("Type a number from %1 to %2.")
-                                    .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
-                result->setVisible(true);
-                return;
-            }
-            QuestionTry attempt = measuredTry(i);
-            attempt.answer = answer;
-            applyTry(i, attempt);
+        auto judge = [this, i] {
+            if (m_lesson && i < m_rows.size())
+                checkTyped(i);
         };
         connect(check, &QPushButton::clicked, this, judge);
         connect(edit, &QLineEdit::returnPressed, this, judge);
@@ -110,20 +94,68 @@ void LessonPlayer::buildQuestions()
     }
 }
 
+namespace {
+
+/// Says why an answer was not judged (nothing typed, a run not the one asked for, ...).
+void sayNotJudged(QLabel* result, const QString& why)
+{
+    result->setStyleSheet(QStringLiteral("color: #a05a00;"));
+    result->setText(why);
+    result->setVisible(true);
+}
+
+} // namespace
+
+void LessonPlayer::checkTyped(std::size_t i)
+{
+    QuestionRow& row = m_rows[i];
+    const std::optional<double> parsed = parseNumber(row.edit->text());
+    if (!parsed) {
+        sayNotJudged(row.result, tr("Type a number first."));
+        return;
+    }
+    const double answer = *parsed;
+    if (std::abs(answer) > kMaxAnswer) {
+        sayNotJudged(row.result, tr("Type a number from %1 to %2.")
+                                     .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
+        return;
+    }
+    // A question that asks for settings first is judged on the run it asks for.
+    const AskedRun asked = askedRunOf(i);
+    if (!asked.matches() && asked.studentCanSet) {
+        sayNotJudged(row.result, askedRunAdvice(asked));
+        return;
+    }
+    QuestionTry attempt = measuredTry(i);
+    attempt.answer = answer;
+    applyTry(i, attempt);
+    if (!asked.matches())
+        row.result->setText(askedRunAdvice(asked) + u' ' + row.result->text());
+}
+
+AskedRun LessonPlayer::askedRunOf(std::size_t i) const
+{
+    const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
+    return askedRun(step, step.questions[i], m_controller.world(), m_controller.edits());
+}
+
 QuestionTry LessonPlayer::measuredTry(std::size_t i)
 {
     const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
     const lessons::Question& q = step.questions[i];
-    if (const auto live = m_controller.measurements().value(q.measure, step.scene))
-        return QuestionTry{std::nullopt, live, false};
+    // The window's run counts when it is the run the question asks for (askedRun).
+    const bool liveCounts = askedRunOf(i).matches();
+    if (liveCounts)
+        if (const auto live = m_controller.measurements().value(q.measure, step.scene))
+            return QuestionTry{std::nullopt, live, false};
     // While the scene may not run, the student could never get a verdict: the same run is
     // done without a window instead (it is deterministic, so it measures what the window
-    // will show once it runs).
-    if (!heldBack().contains(QStringView(lessons::kHoldBackRun)))
+    // will show once it runs). So is the run a question asks for, when the window's is not it.
+    if (liveCounts && !heldBack().contains(QStringView(lessons::kHoldBackRun)))
         return QuestionTry{};
     QuestionRow& row = m_rows[i];
     if (!row.aheadDone) {
-        row.ahead = lessons::measureAhead(step, q.measure);
+        row.ahead = lessons::measureAhead(lessons::askedStep(step, q), q.measure);
         row.aheadDone = true;
     }
     return QuestionTry{std::nullopt, row.ahead, row.ahead.has_value()};

@@ -85,7 +85,7 @@ std::optional<double> keyValue(const lessons::LessonStep& step, const lessons::Q
     for (const lessons::AnswerTry& t : tries)
         if (t.measured && !t.ahead)
             return t.measured;
-    return lessons::measureAhead(step, q.measure);
+    return lessons::measureAhead(lessons::askedStep(step, q), q.measure);
 }
 
 class SheetWriter {
