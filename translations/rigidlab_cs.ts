@@ -5095,6 +5095,10 @@ B&#xa0;%3 … %4</translation>
         <source>%1 The sequential-impulse solver runs instead.</source>
         <translation>%1 Místo něj běží řešič postupných impulsů.</translation>
     </message>
+    <message>
+        <source>A frame&apos;s physics takes longer than the frame has: the clock leaves out the time it cannot catch up with, so the run goes slower than real time instead of falling further behind.</source>
+        <translation>Fyzika jednoho snímku trvá déle, než kolik snímek má času: hodiny vynechají čas, který nestihnou dohnat, a&#xa0;simulace tak běží pomaleji než v&#xa0;reálném čase, místo aby se opožďovala čím dál víc.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::StepSettingsEditor</name>

@@ -10,6 +10,7 @@
 #include "plots/work_precision_plot.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"
+#include "view/label_layout.h"
 #include "view/overlays.h"
 #include "view/world_view.h"
 #include "window/main_window.h"
@@ -73,6 +74,8 @@ private slots:
     void bodiesLargeEnoughAfterTheStep();
     void springCoilsStayApart_data();
     void springCoilsStayApart();
+    void labelsPlacedApartAndInside();
+    void bodyLabelsInSightAndApart();
 };
 
 void TestDrawings::errorPanelOpensOnASmallScreen()
@@ -430,6 +433,104 @@ void TestDrawings::springCoilsStayApart()
     QVERIFY(all > 0);
     QVERIFY2(inked < 0.6 * all,
              qPrintable(QStringLiteral("%1 of %2 pixels inked").arg(inked).arg(all)));
+}
+
+void TestDrawings::labelsPlacedApartAndInside()
+{
+    const QRect area(0, 0, 400, 300);
+    const QSize size(80, 16);
+    // Alone, in the middle: centred above its body.
+    const QRect body(180, 140, 40, 40);
+    const std::vector<QRect> one = ui::placeLabels({{size, body}}, area);
+    QCOMPARE(one.size(), std::size_t{1});
+    QCOMPARE(one[0].center().x(), body.center().x());
+    QVERIFY2(one[0].bottom() < body.top(), "above the body");
+    // At the right edge (a fast ball about to leave): slid inside, still above its body.
+    const QRect edge(390, 140, 20, 20);
+    const QRect cut = ui::placeLabels({{size, edge}}, area)[0];
+    QVERIFY2(area.contains(cut), qPrintable(QStringLiteral("x %1..%2, y %3..%4 inside 400 × 300")
+                                                .arg(cut.left())
+                                                .arg(cut.right())
+                                                .arg(cut.top())
+                                                .arg(cut.bottom())));
+    QVERIFY(cut.bottom() < edge.top());
+    // At the top edge: inside too.
+    QVERIFY(area.contains(ui::placeLabels({{size, QRect(100, 0, 20, 20)}}, area)[0]));
+    // Two bodies close together, three too: no label over another, each still near its body.
+    const std::vector<ui::LabelWish> close = {{size, QRect(150, 150, 30, 30)},
+                                              {size, QRect(185, 150, 30, 30)},
+                                              {size, QRect(170, 152, 30, 30)}};
+    const std::vector<QRect> apart = ui::placeLabels(close, area);
+    for (std::size_t i = 0; i < apart.size(); ++i) {
+        QVERIFY(area.contains(apart[i]));
+        QVERIFY(std::abs(apart[i].center().x() - close[i].body.center().x()) < size.width());
+        for (std::size_t j = 0; j < i; ++j)
+            QVERIFY2(!apart[i].intersects(apart[j]),
+                     qPrintable(QStringLiteral("labels %1 and %2 overlap").arg(i).arg(j)));
+    }
+    // A box already taken (the legend) is kept free as well.
+    const QRect legend(140, 100, 120, 40);
+    for (const QRect& r : ui::placeLabels(close, area, {legend}))
+        QVERIFY(!r.intersects(legend));
+}
+
+void TestDrawings::bodyLabelsInSightAndApart()
+{
+    // At 1024 × 768: the tunnelling lesson's balls, the fastest flying off to the right, and
+    // the two balls that collide; every frame, each label whole in the view and none over
+    // another.
+    MainWindow w;
+    w.fitToScreen(QRect(0, 0, 1024, 768));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    const auto check = [&](const char* what, int frames) {
+        ui::SimulationController& c = w.controller();
+        c.setRunning(true);
+        std::size_t labelled = 0;
+        for (int f = 0; f < frames; ++f) {
+            c.advanceClock(1.0 / 60.0);
+            QCoreApplication::processEvents();
+            const QRect area = w.view().viewport()->rect();
+            const auto labels = w.view().bodyLabelRects();
+            labelled = std::max(labelled, labels.size());
+            for (std::size_t i = 0; i < labels.size(); ++i) {
+                const QRect& r = labels[i].second;
+                QVERIFY2(area.contains(r),
+                         qPrintable(QStringLiteral("%1, frame %2: the label of body %3 at "
+                                                   "x %4..%5, y %6..%7, the view %8 × %9")
+                                        .arg(QLatin1String(what))
+                                        .arg(f)
+                                        .arg(labels[i].first)
+                                        .arg(r.left())
+                                        .arg(r.right())
+                                        .arg(r.top())
+                                        .arg(r.bottom())
+                                        .arg(area.width())
+                                        .arg(area.height())));
+                for (std::size_t j = 0; j < i; ++j)
+                    QVERIFY2(!r.intersects(labels[j].second),
+                             qPrintable(QStringLiteral("%1, frame %2: the labels of bodies %3 "
+                                                       "and %4 overlap")
+                                            .arg(QLatin1String(what))
+                                            .arg(f)
+                                            .arg(labels[i].first)
+                                            .arg(labels[j].first)));
+            }
+        }
+        c.setRunning(false);
+        QVERIFY2(labelled >= 2, what);
+    };
+    QCOMPARE(w.openLesson(lesson("tunnelling"), true), QString());
+    w.lessonPlayer().goToStep(0);
+    check("tunnelling, step 1", 40);
+    if (QTest::currentTestFailed())
+        return;
+    QCOMPARE(
+        w.openScene(
+            QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("two_ball_collision.json")),
+            true),
+        QString());
+    check("two balls colliding", 90);
 }
 
 RIGIDLAB_TEST_MAIN(TestDrawings)

@@ -21,6 +21,7 @@
 #include <QAction>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QLabel>
 #include <QLocale>
 #include <QMouseEvent>
@@ -316,6 +317,59 @@ private slots:
         QCOMPARE(plot->points(2).back().x(), 0.5);
         QVERIFY(!plot->ghostPoints(2).empty());
         RL_VERIFY_NEAR(plot->points(0).back().y(), 2.0, 1e-12, 0);
+    }
+
+    void graphsOfBodiesStayWithTheirBodies()
+    {
+        ui::MainWindow w;
+        QVERIFY(w.openScene(
+                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"),
+                     true)
+                    .isEmpty());
+        ui::Instruments& instruments = w.instruments();
+        ui::BodyGraphSpec resting;
+        resting.quantity = BodyQuantity::Vx;
+        resting.bodies = {1}; // "resting"
+        ui::PlotWidget* kept = instruments.showGraph(resting);
+        ui::BodyGraphSpec both;
+        both.quantity = BodyQuantity::Px;
+        both.bodies = {0, 1};
+        both.sum = true;
+        instruments.showGraph(both);
+        QCOMPARE(instruments.graphsShown().size(), 2);
+        // The same scene again (as an edit or Reset would load it): both graphs stay.
+        QVERIFY(w.openScene(
+                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"),
+                     true)
+                    .isEmpty());
+        QCOMPARE(instruments.graphsShown().size(), 2);
+        // A scene with the resting ball alone, first now, and pushed at 1 m/s: its graph stays
+        // and plots it there; the graph of both balls closes.
+        QTemporaryDir dir;
+        const QString path = dir.filePath(QStringLiteral("resting_alone.json"));
+        QFile file(path);
+        QVERIFY(file.open(QIODevice::WriteOnly));
+        file.write(R"({"rigidlab": 1, "title": "resting alone",
+            "world": {"gravity": [0, 0], "dt": 0.001},
+            "bodies": [
+              {"id": "resting", "label": "ball at rest", "shape": {"type": "circle", "radius": 0.2},
+               "mass": 1, "velocity": [1, 0]},
+              {"id": "other", "shape": {"type": "circle", "radius": 0.2}, "mass": 1,
+               "position": [0, 2]}]})");
+        file.close();
+        QCOMPARE(w.openScene(path, true), QString());
+        QCoreApplication::processEvents(); // the closed dock goes
+        const QList<ui::PlotWidget*> shown = instruments.graphsShown();
+        QCOMPARE(shown.size(), 1);
+        ui::PlotWidget* graph = shown.front();
+        QVERIFY(graph != kept); // a plot of the new scene's world
+        QCOMPARE(graph->seriesCount(), 1);
+        QCOMPARE(graph->seriesLegend(0), QStringLiteral("ball at rest"));
+        runFor(w.controller(), 0.5);
+        const auto points = graph->points(0);
+        QVERIFY(points.size() > 10);
+        for (const QPointF& p : points)
+            RL_VERIFY_NEAR(p.y(), 1.0, 1e-12, 0);
     }
 
     void centreOfMassFrameShowsOppositeMomenta()

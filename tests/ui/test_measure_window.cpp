@@ -34,6 +34,7 @@
 #include <QLabel>
 #include <QMenu>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QMimeData>
 #include <QPushButton>
 #include <QTableWidget>
@@ -59,6 +60,7 @@ private slots:
     void bounceTimesGiveE();
     void droppedCsvIsImported();
     void lessonLoadsAndIsJudged();
+    void measurementGoesWithItsSceneOrLesson();
     void controlsAreNamedAndReachable();
     void uncertaintyInTheLocalesNumbers();
 
@@ -477,6 +479,53 @@ void TestMeasureWindow::lessonLoadsAndIsJudged()
     const lessons::Scene& scene = w.document()->scene();
     RL_VERIFY_NEAR(scene.bodies[ballOf(scene)].restitution, session.lastFit().values[0].value, 0,
                    0);
+}
+
+void TestMeasureWindow::measurementGoesWithItsSceneOrLesson()
+{
+    MainWindow w;
+    w.setUnsavedAsker([] { return int(QMessageBox::Discard); }); // the fit's edit is not kept
+    MeasurementSession& session = w.measurement();
+    const auto shows = [&](const char* when, bool expected) {
+        const bool trail = !session.trail()->points().empty();
+        const bool plotted =
+            session.panel()->comparisonPlot()->pointCount(MeasurementPanel::kMeasured) > 0;
+        QVERIFY2(session.hasMeasurement() == expected && trail == expected && plotted == expected,
+                 qPrintable(QStringLiteral("%1: measurement %2, trail %3, plotted %4")
+                                .arg(QLatin1String(when))
+                                .arg(session.hasMeasurement())
+                                .arg(trail)
+                                .arg(plotted)));
+    };
+    QCOMPARE(w.openScene(sceneFile(), true), QString());
+    QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
+    shows("imported", true);
+    // An edit of the same scene keeps it (the fit is applied as one).
+    QVERIFY(session.fit().ok);
+    QCOMPARE(session.apply(), QString());
+    shows("after the fit was applied", true);
+    // Another scene: no crosses of this measurement in it, no plots, no fit.
+    QCOMPARE(w.openScene(lessons::shippedScenesDir() + QStringLiteral("/welcome.json"), true),
+             QString());
+    shows("another scene opened", false);
+    QVERIFY(session.panel()->fitText().isEmpty());
+    QVERIFY(!session.panel()->applyButton()->isEnabled());
+
+    // A lesson imports in its first step and fits in the next: its steps keep it.
+    const QString lesson =
+        lessons::shippedLessonsDir() + QStringLiteral("/lab_vs_measurement.json");
+    QCOMPARE(w.openLesson(lesson, true), QString());
+    QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
+    w.lessonPlayer().next();
+    QCOMPARE(w.lessonPlayer().stepIndex(), 1);
+    shows("the lesson's next step", true);
+    // A scene of one's own ends the lesson, and the measurement with it.
+    QCOMPARE(w.openScene(sceneFile(), true), QString());
+    shows("the lesson left for a scene", false);
+    // A measurement of a scene does not go into a lesson either.
+    QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
+    QCOMPARE(w.openLesson(lesson, true), QString());
+    shows("a lesson opened", false);
 }
 
 void TestMeasureWindow::controlsAreNamedAndReachable()

@@ -82,6 +82,42 @@ private slots:
             QVERIFY(w.plot(i)->plot()->xAxis->labelFont().pointSizeF() < 18);
     }
 
+    // A dock opened during presentation mode (the inspector, to show the class a value) stays
+    // open when it ends, and one closed during it stays closed: the layout comes back, the
+    // student's latest choices with it.
+    void docksShownDuringPresentationStay()
+    {
+        MainWindow w;
+        showOn(w, QSize(1024, 768));
+        QCOMPARE(w.openScene(MainWindow::scenesFolder() + QStringLiteral("/welcome.json"), true),
+                 QString());
+        QCoreApplication::processEvents();
+        QDockWidget* opened = nullptr;
+        QDockWidget* closed = nullptr;
+        for (QDockWidget* dock : w.findChildren<QDockWidget*>()) {
+            if (dock->isFloating())
+                continue;
+            if (dock->isHidden() && !opened)
+                opened = dock;
+            else if (!dock->isHidden() && !closed)
+                closed = dock;
+        }
+        QVERIFY2(opened && closed, "a dock hidden and one shown to begin with");
+        w.setPresentation(true);
+        QCoreApplication::processEvents();
+        opened->toggleViewAction()->trigger();
+        closed->toggleViewAction()->trigger();
+        QCoreApplication::processEvents();
+        QVERIFY(!opened->isHidden());
+        QVERIFY(closed->isHidden());
+        w.setPresentation(false);
+        for (int i = 0; i < 5; ++i) // the state is restored again once the size is back
+            QCoreApplication::processEvents();
+        QTRY_VERIFY(!w.isFullScreen());
+        QVERIFY2(!opened->isHidden(), qPrintable(opened->objectName()));
+        QVERIFY2(closed->isHidden(), qPrintable(closed->objectName()));
+    }
+
     // Presentation mode at 1024×768: every toolbar action has its button in sight (none in
     // the "»" menu), the status line is not cut, and the plots' tick labels do not overlap
     // nor the legend take the curves' height.

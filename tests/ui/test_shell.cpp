@@ -2,6 +2,7 @@
 // The window's shell (the classroom-window issue): the command line of rigidlab, the
 // screenshot command, Help › Controls and About, and the status bar.
 
+#include "common/language.h"
 #include "simulation/simulation_controller.h"
 #include "window/about_dialog.h"
 #include "window/main_window.h"
@@ -101,6 +102,28 @@ private slots:
             previous = image;
         }
         QVERIFY(lines[1].contains(QStringLiteral("step 1 of")));
+    }
+
+    void screenshotIndexNumbersFollowTheLanguage()
+    {
+        // The index is prose in the window's language: in Czech "po 0,5 s", as on screen.
+        QVERIFY(ui::applyLanguage(QStringLiteral("cs")));
+        QTemporaryDir dir;
+        QVERIFY(dir.isValid());
+        ui::ScreenshotOptions options;
+        options.folder = dir.filePath(QStringLiteral("shots"));
+        options.size = QSize(1024, 768);
+        options.welcomeSeconds = 0.5;
+        options.lessons = QStringList{};
+        options.classroom = false;
+        const ui::ScreenshotResult r = ui::writeScreenshots(options);
+        QVERIFY(ui::applyLanguage(QStringLiteral("en")));
+        QVERIFY2(r.ok, qPrintable(r.error));
+        QFile index(dir.filePath(QStringLiteral("shots/index.txt")));
+        QVERIFY(index.open(QIODevice::ReadOnly));
+        const QString text = QString::fromUtf8(index.readAll());
+        QVERIFY2(text.contains(QStringLiteral("0,5")) && !text.contains(QStringLiteral("0.5")),
+                 qPrintable(text));
     }
 
     void commandLineRefusesBadValues_data()

@@ -5,6 +5,7 @@
 // status bar's energy drift is the error of.
 
 #include "common/display_names.h"
+#include "simulation/catch_up.h"
 #include "simulation/drift_words.h"
 #include "simulation/frame_timing.h"
 #include "simulation/grab_spring.h"
@@ -20,6 +21,9 @@
 #include <QRegularExpression>
 #include <QSignalSpy>
 #include <QtTest>
+
+#include <algorithm>
+#include <limits>
 
 #include "physics/physics_test_util.h"
 #include "test_main.h"
@@ -71,6 +75,42 @@ QString shownTime(const QString& text)
     return t.match(text).captured(1);
 }
 
+/// What a run of frames did under the catch-up rule.
+struct FramesRun {
+    int frames = 0;
+    long long steps = 0;
+    double longestPhysicsMs = 0.0; ///< the most physics one frame did [ms]
+    int mostStepsInAFrame = 0;
+    double mostOwed = 0.0; ///< the most time owed after a frame [s]
+};
+
+/// Runs `frames` frames of a world whose every step costs `stepMs` and whose drawing costs
+/// `drawMs`, with the time given (no clock read): the first frame 20 ms after play, each
+/// next one 16 ms after the last one started, or when the last one finished if it ran late.
+FramesRun runFrames(CatchUp& clock, int frames, double dt, double stepMs, double drawMs)
+{
+    FramesRun run;
+    double wall = 0.020;
+    for (int f = 0; f < frames; ++f) {
+        clock.beginFrame(wall, 1.0);
+        double physicsMs = 0.0;
+        int steps = 0;
+        while (clock.nextStep(dt, physicsMs)) {
+            physicsMs += stepMs;
+            clock.stepTaken(dt, stepMs);
+            ++steps;
+        }
+        clock.endFrame(dt);
+        ++run.frames;
+        run.steps += steps;
+        run.longestPhysicsMs = std::max(run.longestPhysicsMs, physicsMs);
+        run.mostStepsInAFrame = std::max(run.mostStepsInAFrame, steps);
+        run.mostOwed = std::max(run.mostOwed, clock.owed());
+        wall = std::max(0.016, (physicsMs + drawMs) * 1e-3);
+    }
+    return run;
+}
+
 } // namespace
 
 class TestSimulation : public QObject {
@@ -104,6 +144,101 @@ private slots:
         QCOMPARE(c.currentStep(), 7LL + static_cast<long long>(0.1 / kDt));
         // The clock's time is the step's time, the samples' time too.
         QCOMPARE(c.time(), stepTime(c.currentStep(), kDt));
+    }
+
+    void lateFramesOfACheapWorldCatchUp()
+    {
+        // Steps of 0.1 ms: a frame 50 ms late pays all it owes, in one frame.
+        CatchUp clock;
+        runFrames(clock, 5, kDt, 0.1, 2.0);
+        QVERIFY(!clock.slower());
+        clock.beginFrame(0.050, 1.0);
+        int steps = 0;
+        double physicsMs = 0.0;
+        while (clock.nextStep(kDt, physicsMs)) {
+            clock.stepTaken(kDt, 0.1);
+            physicsMs += 0.1;
+            ++steps;
+        }
+        clock.endFrame(kDt);
+        QCOMPARE(steps, 7); // 50 ms and what the last frames left: 7.2 steps of 1/128 s
+        QVERIFY(!clock.slower());
+        QCOMPARE(clock.dropped(), 0.0);
+        RL_VERIFY_AT_MOST(clock.owed(), kDt);
+    }
+
+    void lateFramesOfAHeavyWorldDropTimeAndSaySo()
+    {
+        // The base-100 pyramid on a loaded machine: 9 ms a step, 9 ms to draw, dt = 1/60 s.
+        // Each frame is late (18 ms), and if it took every step it owes it would be later
+        // still the next time. It takes one step and drops the rest.
+        constexpr double dt = 1.0 / 60.0;
+        CatchUp clock;
+        const FramesRun run = runFrames(clock, 300, dt, 9.0, 9.0);
+        QCOMPARE(run.mostStepsInAFrame, 1);
+        RL_VERIFY_AT_MOST(run.longestPhysicsMs, 9.0);
+        RL_VERIFY_AT_MOST(run.mostOwed, dt);
+        QVERIFY(clock.slower());
+        QVERIFY(clock.dropped() > 0.0);
+        RL_VERIFY_NEAR(clock.stepEstimateMs(), 9.0, 1e-9, 0.0);
+
+        // 5 ms a step: two fit the budget of 10 ms, a third would not.
+        CatchUp medium;
+        medium.beginFrame(0.1, 1.0);
+        QVERIFY(medium.nextStep(dt, 0.0));
+        medium.stepTaken(dt, 5.0);
+        QVERIFY(medium.nextStep(dt, 5.0));
+        medium.stepTaken(dt, 5.0);
+        QVERIFY(!medium.nextStep(dt, 10.0));
+        medium.endFrame(dt);
+        RL_VERIFY_AT_MOST(medium.owed(), dt);
+        RL_VERIFY_NEAR(medium.dropped(), 0.1 - 2 * dt - medium.owed(), 1e-12, 0.0);
+
+        // A step dearer than the whole budget: still one step a frame, so the world moves.
+        CatchUp dear;
+        const FramesRun slow = runFrames(dear, 10, dt, 40.0, 6.0);
+        QCOMPARE(slow.steps, 10LL);
+        QCOMPARE(slow.mostStepsInAFrame, 1);
+    }
+
+    void slowerThanRealTimeHoldsForASecond()
+    {
+        constexpr double dt = 1.0 / 60.0;
+        CatchUp clock;
+        clock.beginFrame(0.5, 1.0); // a gap: counts as 0.1 s, the rest is dropped
+        RL_VERIFY_NEAR(clock.dropped(), 0.4, 1e-12, 0.0);
+        while (clock.nextStep(dt, 0.0))
+            clock.stepTaken(dt, 0.1);
+        clock.endFrame(dt);
+        QVERIFY(clock.slower());
+        // Frames on time: still said for a second, so that the status bar can be read...
+        runFrames(clock, 50, dt, 0.1, 2.0); // 0.8 s
+        QVERIFY(clock.slower());
+        // ...then no more.
+        runFrames(clock, 20, dt, 0.1, 2.0);
+        QVERIFY(!clock.slower());
+        // Nonsense times owe nothing.
+        CatchUp odd;
+        odd.beginFrame(std::numeric_limits<double>::quiet_NaN(), 1.0);
+        odd.beginFrame(-1.0, 1.0);
+        QCOMPARE(odd.owed(), 0.0);
+    }
+
+    void controllerDropsWhatAFrameCannotPay()
+    {
+        SimulationController c;
+        c.loadScene(ballScene(false), QStringLiteral("ball.json"));
+        c.setRunning(true);
+        c.advanceClock(1.0);
+        QVERIFY(c.slowerThanRealTime());
+        RL_VERIFY_NEAR(c.droppedSeconds(), 0.9, 1e-12, 0.0);
+        // What the long frame could not pay is not owed the next one.
+        const long long after = c.currentStep();
+        c.advanceClock(kDt);
+        QCOMPARE(c.currentStep(), after + 1);
+        // Paused, the run is not said to be slow.
+        c.setRunning(false);
+        QVERIFY(!c.slowerThanRealTime());
     }
 
     void statusBarAndTimelineShowOneClock()

@@ -54,6 +54,7 @@ void SceneDocument::reset(const lessons::Scene& scene, const QString& path)
         m_path = path;
         emit pathChanged(m_path);
     }
+    emit sceneReset();
     emit sceneChanged();
 }
 

@@ -50,6 +50,9 @@ public:
 signals:
     /// After every apply, undo, redo and reset.
     void sceneChanged();
+    /// reset(): another scene (a file, a new one, a lesson's step) starts over; emitted just
+    /// before its sceneChanged.
+    void sceneReset();
     void modifiedChanged(bool modified);
     void pathChanged(const QString& path);
 

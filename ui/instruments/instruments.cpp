@@ -16,7 +16,9 @@
 #include <QMainWindow>
 #include <QTabWidget>
 
+#include <algorithm>
 #include <memory>
+#include <optional>
 
 namespace rigidlab::ui {
 
@@ -31,6 +33,31 @@ public:
     }
     BodyGraph graph;
 };
+
+/// The scene ids of `bodies`.
+std::vector<std::string> sceneIds(const lessons::Scene& scene,
+                                  const std::vector<physics::BodyId>& bodies)
+{
+    std::vector<std::string> ids;
+    for (physics::BodyId b : bodies)
+        ids.push_back(scene.bodies[static_cast<std::size_t>(b)].name);
+    return ids;
+}
+
+/// The bodies of `scene` with these ids, or nullopt when one is not there.
+std::optional<std::vector<physics::BodyId>> bodiesWithIds(const lessons::Scene& scene,
+                                                          const std::vector<std::string>& ids)
+{
+    std::vector<physics::BodyId> bodies;
+    for (const std::string& id : ids) {
+        const auto found = std::find_if(scene.bodies.begin(), scene.bodies.end(),
+                                        [&](const physics::BodyDef& b) { return b.name == id; });
+        if (found == scene.bodies.end())
+            return std::nullopt;
+        bodies.push_back(static_cast<physics::BodyId>(found - scene.bodies.begin()));
+    }
+    return bodies;
+}
 
 QString graphTitle(const BodyGraphSpec& spec)
 {
@@ -97,10 +124,7 @@ Instruments::Instruments(QMainWindow& window, SimulationController& controller, 
             });
     connect(&m_controller, &SimulationController::worldChanged, this, &Instruments::followFrame);
     connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
-        // Graphs of the old scene's bodies mean nothing in the new one.
-        for (QDockWidget* dock : std::as_const(m_graphDocks))
-            dock->deleteLater();
-        m_graphDocks.clear();
+        keepGraphsOfThisScene();
         m_frame.clear();
     });
 }
@@ -125,7 +149,7 @@ void Instruments::followFrame()
     m_view.centerOn(QPointF(motion.origin.x(), motion.origin.y()));
 }
 
-PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
+PlotWidget* Instruments::makeGraphPlot(const BodyGraphSpec& spec)
 {
     auto* plot = new PlotWidget(graphTitle(spec), &m_window);
     plot->setObjectName(QStringLiteral("bodyGraph"));
@@ -153,6 +177,12 @@ PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
     connect(&m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
     connect(&m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
     connect(&m_controller, &SimulationController::frameAdvanced, plot, &PlotWidget::frameAdvanced);
+    return plot;
+}
+
+PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
+{
+    PlotWidget* plot = makeGraphPlot(spec);
     auto* dock = new QDockWidget(plot->title(), &m_window);
     dock->setObjectName(QStringLiteral("bodyGraphDock%1").arg(++m_graphsMade));
     dock->setAttribute(Qt::WA_DeleteOnClose);
@@ -161,12 +191,40 @@ PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
         m_placeGraph(dock);
     else
         m_window.addDockWidget(Qt::BottomDockWidgetArea, dock);
-    m_graphDocks << dock;
-    connect(dock, &QObject::destroyed, this,
-            [this, dock] { m_graphDocks.removeAll(static_cast<QDockWidget*>(dock)); });
+    const lessons::Scene& scene = m_controller.scene();
+    m_graphs.push_back(
+        {dock, spec, sceneIds(scene, spec.bodies), sceneIds(scene, spec.frame.bodies)});
     dock->show();
     dock->raise(); // in front of the plots it may share tabs with
     return plot;
+}
+
+void Instruments::keepGraphsOfThisScene()
+{
+    const lessons::Scene& scene = m_controller.scene();
+    std::vector<GraphDock> kept;
+    for (GraphDock& g : m_graphs) {
+        if (!g.dock) // closed by the user
+            continue;
+        const auto bodies = bodiesWithIds(scene, g.bodyIds);
+        const auto frame = bodiesWithIds(scene, g.frameIds);
+        if (!bodies || !frame) {
+            // A body of the old scene that the new one lacks: the graph would mean nothing.
+            g.dock->deleteLater();
+            continue;
+        }
+        g.spec.bodies = *bodies;
+        g.spec.frame.bodies = *frame;
+        // A new plot: the bodies' indices, names and the world it reads are the new scene's.
+        QWidget* old = g.dock->widget();
+        g.dock->setWidget(makeGraphPlot(g.spec));
+        if (old) {
+            old->hide();
+            old->deleteLater(); // not now: a signal of the old scene may still be on its way
+        }
+        kept.push_back(std::move(g));
+    }
+    m_graphs = std::move(kept);
 }
 
 void Instruments::askGraph(const std::vector<physics::BodyId>& bodies)
@@ -184,9 +242,9 @@ void Instruments::askGraph(const std::vector<physics::BodyId>& bodies)
 QList<PlotWidget*> Instruments::graphsShown() const
 {
     QList<PlotWidget*> plots;
-    for (QDockWidget* dock : m_graphDocks)
-        if (!dock->isHidden())
-            if (auto* plot = qobject_cast<PlotWidget*>(dock->widget()))
+    for (const GraphDock& g : m_graphs)
+        if (g.dock && !g.dock->isHidden())
+            if (auto* plot = qobject_cast<PlotWidget*>(g.dock->widget()))
                 plots << plot;
     return plots;
 }

@@ -8,9 +8,12 @@
 #include "instruments/body_graph_dialog.h"
 
 #include <QList>
-
 #include <QObject>
+#include <QPointer>
+
 #include <functional>
+#include <string>
+#include <vector>
 
 class QAction;
 class QDockWidget;
@@ -50,7 +53,19 @@ public:
     QList<PlotWidget*> graphsShown() const;
 
 private:
+    /// A graph's dock and what it plots, its bodies also by their scene ids: a new scene
+    /// (another file, or the same one edited) keeps the graphs whose bodies it still has.
+    struct GraphDock {
+        QPointer<QDockWidget> dock;
+        BodyGraphSpec spec;
+        std::vector<std::string> bodyIds;  ///< of spec.bodies
+        std::vector<std::string> frameIds; ///< of spec.frame.bodies
+    };
     void followFrame();
+    /// The plot of a graph, fed from the world from now on.
+    PlotWidget* makeGraphPlot(const BodyGraphSpec& spec);
+    /// Gives the graphs whose bodies the new scene has a plot of them there; closes the others.
+    void keepGraphsOfThisScene();
 
     QMainWindow& m_window;
     SimulationController& m_controller;
@@ -59,7 +74,7 @@ private:
     InstrumentsItem* m_item;
     QDockWidget* m_dock;
     QAction* m_graphAction;
-    QList<QDockWidget*> m_graphDocks;
+    std::vector<GraphDock> m_graphs;
     int m_graphsMade = 0; ///< names each graph's dock apart from the ones closed before
     std::vector<physics::BodyId> m_frame; ///< the view's frame: empty, the lab's
     bool m_available = true;

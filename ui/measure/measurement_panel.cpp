@@ -42,10 +42,6 @@ MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
     m_source = new QLabel(this);
     m_source->setWordWrap(true);
     m_source->setAccessibleName(tr("Measurement imported"));
-    // Shown in the View menu (and restored with the layout) before anything is imported.
-    m_source->setText(tr("No measurement yet: File › Import measurement… (%1), or drop a CSV "
-                         "file on the window.")
-                          .arg(controlKeysText("importMeasurement")));
     layout->addWidget(m_source);
 
     auto* form = new QFormLayout;
@@ -88,6 +84,23 @@ MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
     m_message->hide();
     layout->addWidget(m_message);
     layout->addWidget(buildFit());
+    clear();
+}
+
+void MeasurementPanel::clear()
+{
+    // Shown in the View menu (and restored with the layout) before anything is imported.
+    m_source->setText(tr("No measurement yet: File › Import measurement… (%1), or drop a CSV "
+                         "file on the window.")
+                          .arg(controlKeysText("importMeasurement")));
+    const QSignalBlocker blockBody(m_body), blockQuantity(m_quantity);
+    m_body->clear();
+    m_quantity->clear();
+    clearPlots();
+    m_message->clear();
+    m_message->hide();
+    showFit(QString(), false);
+    showBounceFit(QString(), false);
 }
 
 QWidget* MeasurementPanel::buildFit()

@@ -45,6 +45,8 @@ public:
                         const std::vector<double>& lineValue, const std::vector<double>& residuals,
                         const QString& error);
     void clearPlots();
+    /// Back to how it was before anything was imported: no source, no choices, no plots, no fit.
+    void clear();
 
     PlotWidget* comparisonPlot() const { return m_comparison; }
     PlotWidget* residualPlot() const { return m_residual; }

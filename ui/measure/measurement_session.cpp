@@ -142,6 +142,7 @@ MeasurementSession::MeasurementSession(QWidget& window, WorldView& view, SceneDo
         if (const QString error = applyBounceFit(); !error.isEmpty())
             emit message(error, 8000);
     });
+    connect(&document, &SceneDocument::sceneReset, this, &MeasurementSession::sceneReset);
     connect(&document, &SceneDocument::sceneChanged, this, [this] {
         updateChoices();
         compare();
@@ -194,6 +195,7 @@ QString MeasurementSession::load(const QString& path, const measure::Measurement
     }
     m_measurement = std::move(read.measurement);
     m_path = path;
+    m_measurementLesson = m_lesson;
     m_fit = {};
     m_fitted.clear();
     m_panel->showFit(QString(), false);
@@ -213,6 +215,35 @@ QString MeasurementSession::load(const QString& path, const measure::Measurement
     showDock();
     emit imported(path);
     return {};
+}
+
+void MeasurementSession::setLesson(const QString& lessonPath)
+{
+    m_lesson = lessonPath;
+    if (m_measurement && m_measurementLesson != m_lesson)
+        forget();
+}
+
+void MeasurementSession::sceneReset()
+{
+    // The window may say which lesson is open before or after the step's scene starts over:
+    // either way, a measurement of another lesson or of a scene goes.
+    if (m_measurement && (m_lesson.isEmpty() || m_measurementLesson != m_lesson))
+        forget();
+}
+
+void MeasurementSession::forget()
+{
+    m_measurement.reset();
+    m_path.clear();
+    m_measurementLesson.clear();
+    m_simulated.clear();
+    m_residuals.clear();
+    m_fit = {};
+    m_fitted.clear();
+    m_bounceFit = {};
+    m_panel->clear();
+    updateTrail();
 }
 
 void MeasurementSession::showDock()

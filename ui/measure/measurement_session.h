@@ -5,6 +5,11 @@
 // edited, run headless from t = 0 (lessons/measure/fit.h's simulateAt, the same run the fit
 // uses), and the scene view shows the measured positions as a faint trail. The fit's values
 // go into the scene as one edit of its document, which Undo takes back.
+//
+// A measurement belongs to the scene it was imported into, or to the lesson: when another
+// scene opens (a file, a new scene, another lesson), it is forgotten, trail and plots too, so
+// that no unrelated crosses stay in the scene. The steps of one lesson keep it (a lesson
+// imports in one step and fits in the next).
 
 #include "measure/fit.h"
 #include "measure/measurement.h"
@@ -79,6 +84,13 @@ public:
     /// Compares the measurement with the scene as it is now.
     void compare();
 
+    /// The lesson open (its file), or empty: the window says so when a lesson's step starts
+    /// and when the lesson closes. A measurement imported in another lesson, or outside one,
+    /// is forgotten.
+    void setLesson(const QString& lessonPath);
+    /// Forgets the measurement: the trail, the plots and the fit go.
+    void forget();
+
 signals:
     /// A measurement was imported (the path).
     void imported(const QString& path);
@@ -94,6 +106,8 @@ private:
     void updateChoices();
     void updateTrail();
     void updateBounceFit();
+    /// Another scene opened (SceneDocument::sceneReset).
+    void sceneReset();
     QString applyValues(const std::vector<measure::Parameter>& parameters,
                         const std::vector<double>& values, const QString& what);
 
@@ -107,6 +121,8 @@ private:
     ImportAsker m_asker;
     QString m_path;
     QString m_lastFolder;
+    QString m_lesson;            ///< the lesson open, or empty
+    QString m_measurementLesson; ///< the lesson open when the measurement was imported
     std::optional<measure::Measurement> m_measurement;
     std::vector<double> m_simulated;
     std::vector<double> m_residuals;

@@ -26,9 +26,9 @@ double FrameTiming::wallSinceLastFrame()
     return seconds;
 }
 
-bool FrameTiming::physicsOverBudget() const
+double FrameTiming::physicsElapsedMs() const
 {
-    return m_physicsClock.nsecsElapsed() * 1e-6 > kPhysicsBudgetMs;
+    return static_cast<double>(m_physicsClock.nsecsElapsed()) * 1e-6;
 }
 
 bool FrameTiming::frameDone(double wallSeconds, double countedSeconds)

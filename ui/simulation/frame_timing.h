@@ -3,7 +3,7 @@
 // What the frames of a run cost and how fast the run goes: the wall time of each frame and
 // the physics part of it, steps per second and simulated seconds per wall second over the
 // last whole second, and, when asked (rigidlab --measure-frames), a record of the next frames.
-// It measures; the controller's clock decides what to do with the time.
+// It measures; the controller's clock decides what to do with the time (catch_up.h).
 
 #include <QElapsedTimer>
 
@@ -11,9 +11,6 @@
 #include <vector>
 
 namespace rigidlab::ui {
-
-/// Physics may take this much of a frame [ms]; a frame that needs more drops the rest.
-inline constexpr double kPhysicsBudgetMs = 12.0;
 
 class FrameTiming {
 public:
@@ -26,8 +23,8 @@ public:
     double wallSinceLastFrame();
     /// The frame's physics starts now.
     void physicsStarted() { m_physicsClock.start(); }
-    /// Whether the physics of this frame has used up kPhysicsBudgetMs.
-    bool physicsOverBudget() const;
+    /// The wall time since the frame's physics started [ms].
+    double physicsElapsedMs() const;
     /// One step taken (a frame's, or a single step by hand).
     void stepTaken() { ++m_stepsThisSecond; }
     /// The clock ran `seconds` of simulated time.

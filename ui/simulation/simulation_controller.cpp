@@ -29,8 +29,7 @@ QString markNumber(double value)
     return locale.toString(value, 'g', 6);
 }
 
-constexpr int kFrameIntervalMs = 16;     // about 60 frames per second
-constexpr double kMaxFrameSeconds = 0.1; // a longer gap (a paused debugger) counts as this
+constexpr int kFrameIntervalMs = 16; // about 60 frames per second
 
 } // namespace
 
@@ -110,8 +109,7 @@ void SimulationController::resetClock()
     forEachWorld([](physics::World& w) { w.updateDiagnostics(); });
     m_history.reset(m_world);
     m_previousPoses.clear();
-    m_accumulator = 0.0;
-    m_slow = false;
+    m_catchUp.reset();
     m_sampler.restart(m_world, m_variants);
     m_watch.restart(m_world);
     emit samplesCleared();
@@ -130,7 +128,7 @@ Pose SimulationController::drawPose(physics::BodyId id) const
     const auto i = static_cast<std::size_t>(id);
     if (!m_running || i >= m_previousPoses.size())
         return now;
-    const double alpha = std::clamp(m_accumulator / m_world.def().dt, 0.0, 1.0);
+    const double alpha = std::clamp(m_catchUp.owed() / m_world.def().dt, 0.0, 1.0);
     const Pose& before = m_previousPoses[i];
     return {before.origin + alpha * (now.origin - before.origin),
             before.angle + alpha * (now.angle - before.angle)};
@@ -141,13 +139,12 @@ void SimulationController::setRunning(bool running)
     if (running == m_running)
         return;
     m_running = running;
-    m_accumulator = 0.0;
+    m_catchUp.reset();
     if (running) {
         m_timing.runStarted();
         m_frameTimer.start();
     } else {
         m_frameTimer.stop();
-        m_slow = false;
     }
     emit runningChanged(running);
     emit worldChanged();
@@ -193,27 +190,20 @@ void SimulationController::advanceFrame()
 void SimulationController::advanceClock(double wallSeconds)
 {
     m_timing.physicsStarted();
-    const double wall = std::min(wallSeconds, kMaxFrameSeconds);
     const double h = m_world.def().dt;
-    // A frame longer than kMaxFrameSeconds (the window was busy) loses the rest of its time:
-    // the run fell behind real time, and says so.
-    bool slow = wallSeconds > kMaxFrameSeconds;
     if (m_running && !m_stepsHeld) {
-        m_accumulator += wall * m_timeScale;
-        while (m_accumulator >= h) {
-            if (m_timing.physicsOverBudget()) {
-                slow = true;
-                m_accumulator = 0.0; // drop what cannot be done in time
-                break;
-            }
+        m_catchUp.beginFrame(wallSeconds, m_timeScale);
+        while (m_catchUp.nextStep(h, m_timing.physicsElapsedMs())) {
+            const double before = m_timing.physicsElapsedMs();
             doStep();
-            m_accumulator -= h;
+            m_catchUp.stepTaken(h, m_timing.physicsElapsedMs() - before);
             m_timing.simulated(h);
         }
+        m_catchUp.endFrame(h);
     }
-    if (m_timing.frameDone(wallSeconds, wall))
+    const double counted = std::min(wallSeconds, CatchUp::kMaxGapSeconds);
+    if (m_timing.frameDone(wallSeconds, counted))
         emit framesMeasured(m_timing.measuredFrameMs(), m_timing.measuredPhysicsMs());
-    m_slow = slow;
     emit worldChanged();
     emit frameAdvanced();
 }

@@ -8,10 +8,11 @@
 //
 // Real time: the physics runs on a fixed dt. Each frame adds the wall time that passed
 // (times the time scale) to an accumulator and takes as many steps as fit; the view draws
-// the bodies interpolated between the last two steps. A frame never takes more than a set
-// number of steps or milliseconds of physics (no spiral of death): when it has to stop early
-// the run is marked "slower than real time".
+// the bodies interpolated between the last two steps. A frame takes only the steps that fit
+// its physics budget and drops the time it could not pay (catch_up.h: no spiral of death);
+// then the run is marked "slower than real time".
 
+#include "simulation/catch_up.h"
 #include "simulation/frame_timing.h"
 #include "simulation/grab_spring.h"
 #include "simulation/history.h"
@@ -71,7 +72,10 @@ public:
 
     bool isRunning() const { return m_running; }
     double timeScale() const { return m_timeScale; }
-    bool slowerThanRealTime() const { return m_slow; }
+    /// Whether the clock dropped time it could not catch up with, in the last second.
+    bool slowerThanRealTime() const { return m_running && m_catchUp.slower(); }
+    /// Simulated time the clock dropped since play was pressed [s].
+    double droppedSeconds() const { return m_catchUp.dropped(); }
     /// Steps per second of wall time, over the last second.
     double stepsPerSecond() const { return m_timing.stepsPerSecond(); }
     /// Simulated seconds per wall second while running, over the last whole second since
@@ -209,11 +213,10 @@ private:
     FrameTiming m_timing;
 
     QTimer m_frameTimer;
-    double m_accumulator = 0.0; ///< simulated time owed to the clock [s]
+    CatchUp m_catchUp; ///< the simulated time owed, and how much of it a frame pays
     double m_timeScale = 1.0;
     bool m_running = false;
     bool m_stepsHeld = false; ///< see setStepsHeld
-    bool m_slow = false;
 };
 
 } // namespace rigidlab::ui

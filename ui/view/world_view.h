@@ -11,6 +11,7 @@
 
 #include <functional>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace rigidlab::ui {
@@ -53,6 +54,9 @@ public:
     /// Where the "… stopped" labels beside the stopped ghosts are drawn, in the order of the
     /// compared worlds, in viewport pixels; they never overlap.
     std::vector<QRect> stoppedLabelRects() const;
+    /// Where the bodies' labels are drawn (world_view_labels.cpp): the body's id and its
+    /// label's box in viewport pixels, inside the view and not over each other or the legend.
+    std::vector<std::pair<int, QRect>> bodyLabelRects() const;
 
     /// Shows `worldRect` [m] in the whole viewport with `marginPx` pixels to spare on each
     /// side, and keeps it shown on resize (as Fit scene does) until the user pans or zooms.

@@ -2,12 +2,14 @@
 // WorldView's body labels: the scene's own name of each body that moves ("ball 1"), drawn
 // above it, so that bodies which differ only in colour (the restitution lesson's four balls)
 // are told apart by a word as well (WCAG 1.4.1, use of colour). Drawn for a few bodies only:
-// a billiards break of sixteen labels would hide the table.
+// a billiards break of sixteen labels would hide the table. Where they go is label_layout.h's:
+// inside the view, and below the body or a row further out where another label is.
 #include "view/world_view.h"
 
 #include "common/theme.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"
+#include "view/label_layout.h"
 
 #include <QPainter>
 
@@ -18,7 +20,7 @@ namespace {
 constexpr int kMostBodyLabels = 8;
 } // namespace
 
-void WorldView::drawBodyLabels(QPainter* painter) const
+std::vector<std::pair<int, QRect>> WorldView::bodyLabelRects() const
 {
     const lessons::Scene& scene = m_controller.scene();
     const auto& bodies = m_controller.world().bodies();
@@ -27,21 +29,42 @@ void WorldView::drawBodyLabels(QPainter* painter) const
         if (bodies[i].moves() && scene.hasLabel(static_cast<physics::BodyId>(i)))
             labelled.push_back(static_cast<int>(i));
     if (labelled.empty() || labelled.size() > static_cast<std::size_t>(kMostBodyLabels))
-        return;
+        return {};
     const QFontMetrics fm(legendFont());
+    const QRect area = viewport()->rect();
+    std::vector<int> shown;
+    std::vector<LabelWish> wishes;
     for (const int id : labelled) {
         const BodyItem* item = itemFor(id);
         if (!item || !item->isVisible())
             continue;
         const QRect body = mapFromScene(item->sceneBoundingRect()).boundingRect();
-        const QString text = scene.bodyLabel(id);
-        QRect box = fm.boundingRect(text).adjusted(-3, -1, 3, 1);
-        box.moveCenter(QPoint(body.center().x(), body.top() - 4 - box.height() / 2));
-        if (!viewport()->rect().intersects(box))
+        if (!area.intersects(body)) // out of sight: a label at the edge would point nowhere
             continue;
+        shown.push_back(id);
+        wishes.push_back(
+            {fm.boundingRect(scene.bodyLabel(id)).adjusted(-3, -1, 3, 1).size(), body});
+    }
+    // The legend of compared worlds and the "… stopped" labels are there first.
+    std::vector<QRect> taken;
+    for (const QRect& r : legendLayout())
+        taken.push_back(r.adjusted(-30, -1, 3, 1)); // with its colour swatch, as drawn
+    for (const QRect& r : stoppedLabelRects())
+        taken.push_back(r);
+    const std::vector<QRect> boxes = placeLabels(wishes, area, std::move(taken));
+    std::vector<std::pair<int, QRect>> placed;
+    for (std::size_t i = 0; i < shown.size(); ++i)
+        placed.emplace_back(shown[i], boxes[i]);
+    return placed;
+}
+
+void WorldView::drawBodyLabels(QPainter* painter) const
+{
+    const lessons::Scene& scene = m_controller.scene();
+    for (const auto& [id, box] : bodyLabelRects()) {
         painter->fillRect(box, theme::worldLabelBox());
         painter->setPen(theme::worldText());
-        painter->drawText(box, Qt::AlignCenter, text);
+        painter->drawText(box, Qt::AlignCenter, scene.bodyLabel(id));
     }
 }
 

@@ -117,6 +117,11 @@ void MainWindow::wirePanels()
             [this](int body) { m_instruments->askGraph({body}); });
     connect(m_documents, &WindowDocuments::message, bar, &QStatusBar::showMessage);
     connect(m_measurement, &MeasurementSession::message, bar, &QStatusBar::showMessage);
+    // A measurement stays through the steps of its lesson, not into another scene or lesson.
+    connect(m_player, &LessonPlayer::stepActivated, m_measurement,
+            [this](const lessons::Lesson& lesson, int) { m_measurement->setLesson(lesson.path); });
+    connect(m_player, &LessonPlayer::lessonClosed, m_measurement,
+            [this] { m_measurement->setLesson(QString()); });
     connect(m_session, &LessonSession::runHeldChanged, this,
             [this](bool held) { m_actions->setRunState(m_editTools->editing(), held); });
     connect(m_session, &LessonSession::left, this, &MainWindow::showSceneTitle);

@@ -7,6 +7,7 @@
 #include "common/theme.h"
 #include "plots/plot_widget.h"
 
+#include <QDockWidget>
 #include <QMainWindow>
 #include <QToolBar>
 
@@ -73,17 +74,30 @@ void WindowLayout::setPresentation(bool on)
         // world keeps half of the screen (again once full screen has its size: windowResized).
         fitSideColumns();
     } else {
+        m_shownAtLeaving.clear();
+        for (QDockWidget* dock : m_window.findChildren<QDockWidget*>())
+            m_shownAtLeaving.emplace_back(dock, !dock->isHidden());
         if (m_normalWasMaximized)
             m_window.showMaximized();
         else
             m_window.showNormal();
         // showNormal() gives back the geometry from before full screen (Qt keeps it); the
         // docks take their old places and sizes.
-        m_window.restoreState(m_normalState);
+        restoreNormalState();
         // And again once the window has its old size back (windowResized): a state restored
         // while it was still full screen keeps the docks in proportion instead.
         m_restoreStatePending = true;
     }
+}
+
+void WindowLayout::restoreNormalState()
+{
+    // The saved state shows the docks that were shown when presentation mode began; a dock
+    // opened since (the inspector, to show a value to the class) would close with it.
+    m_window.restoreState(m_normalState);
+    for (const auto& [dock, shown] : m_shownAtLeaving)
+        if (dock && dock->isHidden() == shown)
+            dock->setVisible(shown);
 }
 
 void WindowLayout::scaleExplicitFonts(bool on)

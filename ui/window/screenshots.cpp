@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/screenshots.h"
 
+#include "common/number_format.h"
 #include "editor/edit_tools.h"
 #include "instruments/instruments.h"
 #include "instruments/instruments_panel.h"
@@ -138,7 +139,9 @@ private:
 
 namespace {
 
-/// Writes the PNGs into one folder and keeps the index of what each shows.
+/// Writes the PNGs into one folder and keeps the index of what each shows. The index is
+/// prose for people in the window's language, so its numbers follow the language as on
+/// screen ("po 0,5 s" in Czech); files for programs (CSV, JSON) keep the decimal point.
 class Shooter {
 public:
     Shooter(MainWindow& window, const ScreenshotOptions& options, ScreenshotResult& result)
@@ -227,7 +230,7 @@ bool shootLessons(MainWindow& window, const ScreenshotOptions& options, Shooter&
                                          .arg(lesson.title)
                                          .arg(i + 1)
                                          .arg(count)
-                                         .arg(step.title, QString::number(step.exportTime))))
+                                         .arg(step.title, formatReadable(step.exportTime, 6))))
                 return false;
         }
     }
@@ -386,7 +389,7 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
         runFor(window.controller(), options.welcomeSeconds);
         if (!shooter.write(QStringLiteral("00-welcome.png"),
                            Screenshots::tr("the welcome scene after %1 s")
-                               .arg(QString::number(options.welcomeSeconds))))
+                               .arg(formatReadable(options.welcomeSeconds, 6))))
             return result;
     }
     if (!shootLessons(window, options, shooter))

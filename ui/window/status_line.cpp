@@ -46,6 +46,9 @@ StatusLine::StatusLine(QMainWindow& window, SimulationController& controller, Wo
     m_slow = new QLabel(tr("slower than real time"), &window);
     m_slow->setStyleSheet(QStringLiteral("color: white; background: #c0392b; padding: 1px 6px;"));
     m_slow->setVisible(false);
+    m_slow->setToolTip(tr("A frame's physics takes longer than the frame has: the clock leaves "
+                          "out the time it cannot catch up with, so the run goes slower than "
+                          "real time instead of falling further behind."));
     // A dot between the items: the style's own separators are faint or none (presentation
     // mode's palette), and "t = 2,000 s paused energy drift" reads as one phrase.
     const auto separator = [&window](const QString& name) {

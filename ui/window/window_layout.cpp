@@ -269,7 +269,7 @@ void WindowLayout::windowResized()
         fitSideColumns();
     if (m_restoreStatePending && !m_presentation && !m_window.isFullScreen()) {
         m_restoreStatePending = false;
-        m_window.restoreState(m_normalState);
+        restoreNormalState();
     }
 }
 

@@ -100,6 +100,9 @@ private:
     void scaleExplicitFonts(bool on);
     /// A dock shown from the View menu comes to the front of its tabs.
     void showWhenAsked(QDockWidget& dock);
+    /// The docks' places and sizes from before presentation mode, each dock shown or hidden
+    /// as it was when presentation mode ended (presentation_mode.cpp).
+    void restoreNormalState();
 
     QMainWindow& m_window;
     QMap<QString, QDockWidget*> m_docks;
@@ -113,6 +116,9 @@ private:
     bool m_normalWasMaximized = false;
     QByteArray m_normalGeometry; ///< before presentation mode
     QByteArray m_normalState;
+    /// Each dock and whether it was shown when presentation mode ended: what the student
+    /// opened or closed during it stays so.
+    std::vector<std::pair<QPointer<QWidget>, bool>> m_shownAtLeaving;
     QFont m_normalFont;
     std::vector<std::pair<QPointer<QWidget>, QFont>> m_explicitFonts; ///< before presentation
     QPalette m_normalPalette;
