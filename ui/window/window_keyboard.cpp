@@ -9,6 +9,7 @@
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
 #include "view/world_view.h"
+#include "window/window_keyboard_sight.h"
 #include "window/window_layout.h"
 
 #include <QAction>
@@ -29,6 +30,7 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
 {
     ShortcutsGuard::install();
     FocusRing::install();
+    skipControlsOutOfSight(parts.window);
     QPalette palette = QApplication::palette();
     palette.setColor(QPalette::PlaceholderText, theme::placeholderText());
     QApplication::setPalette(palette);
