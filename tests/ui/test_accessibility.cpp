@@ -23,6 +23,8 @@
 #include <QDialog>
 #include <QFileDialog>
 #include <QPalette>
+#include <QRegularExpression>
+#include <QScopeGuard>
 #include <QTimer>
 #include <QtTest>
 #include <qcustomplot.h>
@@ -218,6 +220,61 @@ private slots:
             QVERIFY2(text.contains(energy->seriesLegend(i) + QLatin1String(": now")),
                      qPrintable(text));
         QVERIFY2(text.contains(QLatin1String("greatest")), qPrintable(text));
+    }
+
+    /// The scene's and the plots' texts say numbers in the locale: its decimal separator, a
+    /// negative value as "minus" (never a sign a screen reader may drop), and coordinates
+    /// separated by ", " after a decimal point, "; " after a decimal comma.
+    void numbersAreSpokenInTheLocale_data()
+    {
+        QTest::addColumn<QString>("locale");
+        QTest::newRow("en") << QStringLiteral("en_US");
+        QTest::newRow("cs") << QStringLiteral("cs_CZ");
+    }
+    void numbersAreSpokenInTheLocale()
+    {
+        QFETCH(QString, locale);
+        const QLocale before;
+        QLocale::setDefault(QLocale(locale));
+        const auto restore = qScopeGuard([&] { QLocale::setDefault(before); });
+        const bool decimalComma = QLocale().decimalPoint() == QLatin1String(",");
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(
+            w.openScene(QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json")),
+                        true),
+            QString());
+        for (int k = 0; k < 60; ++k) // the bodies fall: velocities below zero
+            w.controller().stepForward();
+        QStringList texts;
+        QAccessibleInterface* scene = QAccessible::queryAccessibleInterface(&w.view());
+        QVERIFY(scene);
+        for (int i = ui::WorldViewAccessible::FirstBody; i < scene->childCount(); ++i)
+            texts << scene->child(i)->text(QAccessible::Value);
+        for (int p = 0; p < MainWindow::kPlotCount; ++p) {
+            w.plot(p)->drain();
+            texts << QAccessible::queryAccessibleInterface(w.plot(p))->text(
+                QAccessible::Description);
+        }
+        const QString all = texts.join(QLatin1Char('\n'));
+        const QRegularExpression sign(QStringLiteral("[-\u2212]\\d"));
+        QVERIFY2(!sign.match(all).hasMatch(), qPrintable(sign.match(all).captured() + u'\n' + all));
+        QVERIFY2(all.contains(QLatin1String("minus ")), qPrintable(all));
+        const QRegularExpression decimal(decimalComma ? QStringLiteral("\\d,\\d")
+                                                      : QStringLiteral("\\d\\.\\d"));
+        QVERIFY2(decimal.match(all).hasMatch(), qPrintable(all));
+        // Each body's position and velocity: two coordinates, the locale's separator between.
+        const QString separator = decimalComma ? QStringLiteral("; ") : QStringLiteral(", ");
+        const QRegularExpression pair(QStringLiteral("(position|velocity) \\(([^)]*)\\)"));
+        int pairs = 0;
+        for (auto m = pair.globalMatch(all); m.hasNext(); ++pairs) {
+            const QString inside = m.next().captured(2);
+            QVERIFY2(inside.split(separator).size() == 2, qPrintable(inside));
+            // The other language's separator is not there as well.
+            QVERIFY2(!inside.contains(decimalComma ? QStringLiteral(", ") : QStringLiteral(";")),
+                     qPrintable(inside));
+        }
+        QVERIFY2(pairs >= 2, qPrintable(all));
     }
 
     /// Text at least 4.5:1 and lines and overlays at least 3:1 against what lies behind
