@@ -1569,10 +1569,6 @@ n = (%4; %5)</translation>
 <context>
     <name>SceneWords</name>
     <message>
-        <source>(%1; %2) %3</source>
-        <translation>(%1; %2)&#xa0;%3</translation>
-    </message>
-    <message>
         <source>Scene</source>
         <translation>Scéna</translation>
     </message>
@@ -1730,6 +1726,14 @@ n = (%4; %5)</translation>
     <message>
         <source>the lesson editor on a shipped lesson</source>
         <translation>editor lekcí s dodanou lekcí</translation>
+    </message>
+</context>
+<context>
+    <name>SpokenNumbers</name>
+    <message>
+        <source>minus %1</source>
+        <comment>a negative number read aloud</comment>
+        <translation>minus %1</translation>
     </message>
 </context>
 <context>
