@@ -6,6 +6,8 @@
 // (Space presses a focused button, arrows move in a list), and Tab leaves a table.
 
 #include "common/export_folder.h"
+#include "common/shortcuts.h"
+#include "editor/edit_tools.h"
 #include "lesson_player/lesson_player.h"
 #include "near.h"
 #include "panels/inspector_panel.h"
@@ -16,6 +18,7 @@
 #include "window/main_window.h"
 
 #include <QAbstractItemView>
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDockWidget>
@@ -27,6 +30,8 @@
 #include <QTemporaryDir>
 #include <QTextBrowser>
 #include <QTimer>
+#include <QToolBar>
+#include <QToolButton>
 #include <QtTest>
 
 #include "test_main.h"
@@ -343,6 +348,69 @@ private slots:
                 controlsReached = controlsReached || controls->isAncestorOf(f);
             QVERIFY(controlsReached);
         }
+    }
+
+    /// F10 puts the focus on the toolbar: the arrows move along its buttons (not Step nor
+    /// Back), Down goes to the editor's tools in Edit mode, Space presses a button, Escape
+    /// goes back; Help lists the key.
+    void toolbarByKeyboard()
+    {
+        MainWindow w;
+        w.fitToScreen(QRect(0, 0, 1024, 768));
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(ui::controlsHelpHtml({}).contains(
+            QKeySequence(Qt::Key_F10).toString(QKeySequence::NativeText)));
+        auto* bar = w.findChild<QToolBar*>(QStringLiteral("simulationToolbar"));
+        QVERIFY(bar);
+        const auto buttonOf = [](QWidget* f) { return qobject_cast<QToolButton*>(f); };
+        w.view().setFocus(Qt::OtherFocusReason);
+        key(w, Qt::Key_F10);
+        QToolButton* first = buttonOf(QApplication::focusWidget());
+        QVERIFY(first && bar->isAncestorOf(first));
+        // Right along the buttons to Play, the clock standing still.
+        const long long step = w.controller().currentStep();
+        QToolButton* play = nullptr;
+        for (int i = 0; i < 12 && !play; ++i) {
+            key(w, Qt::Key_Right);
+            QToolButton* b = buttonOf(QApplication::focusWidget());
+            QVERIFY(b && bar->isAncestorOf(b));
+            if (b->defaultAction() && b->defaultAction()->objectName() == QLatin1String("play"))
+                play = b;
+        }
+        QVERIFY(play);
+        QCOMPARE(w.controller().currentStep(), step);
+        key(w, Qt::Key_Left);
+        QVERIFY(QApplication::focusWidget() != play);
+        key(w, Qt::Key_Right);
+        QCOMPARE(QApplication::focusWidget(), play);
+        key(w, Qt::Key_Space);
+        QVERIFY(w.controller().isRunning());
+        QCOMPARE(QApplication::focusWidget(), play);
+        key(w, Qt::Key_Return);
+        QVERIFY(!w.controller().isRunning());
+        key(w, Qt::Key_Escape);
+        QCOMPARE(QApplication::focusWidget(), &w.view());
+
+        // In Edit mode, Down goes to the editor's row of tools, Up back.
+        w.editTools().setEditing(true);
+        QCoreApplication::processEvents();
+        auto* tools = w.findChild<QToolBar*>(QStringLiteral("editToolbar"));
+        QVERIFY(tools && tools->isVisible());
+        w.view().setFocus(Qt::OtherFocusReason);
+        key(w, Qt::Key_F10);
+        key(w, Qt::Key_Down);
+        QVERIFY(tools->isAncestorOf(QApplication::focusWidget()));
+        QCOMPARE(w.editTools().tool(), ui::EditTool::Select);
+        key(w, Qt::Key_Home);
+        key(w, Qt::Key_Right); // the second tool, Rotate
+        key(w, Qt::Key_Space);
+        QCOMPARE(w.editTools().tool(), ui::EditTool::Rotate);
+        key(w, Qt::Key_Up);
+        QVERIFY(bar->isAncestorOf(QApplication::focusWidget()));
+        key(w, Qt::Key_Escape);
+        QCOMPARE(QApplication::focusWidget(), &w.view());
     }
 
     /// Tab leaves a table rather than walking its cells; arrows move within it.

@@ -40,6 +40,10 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "The lesson's previous step")},
     ControlInfo{"focusScene", "F6", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Put the keyboard focus on the scene")},
+    ControlInfo{"focusToolbar", "F10", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Put the keyboard focus on the toolbar: arrows move "
+                                              "between its buttons, Space or Enter presses one, "
+                                              "Esc goes back")},
     ControlInfo{"selectNextBody", "]", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Select the next body (in the scene: arrows move "
                                               "it, Shift+arrows change its velocity, Enter shows "

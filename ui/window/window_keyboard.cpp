@@ -10,6 +10,7 @@
 #include "panels/number_field.h"
 #include "view/world_view.h"
 #include "window/window_keyboard_sight.h"
+#include "window/window_keyboard_toolbar.h"
 #include "window/window_layout.h"
 
 #include <QAction>
@@ -41,6 +42,9 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     m_focusScene = make(tr("Focus the scene"), "focusScene");
     connect(m_focusScene, &QAction::triggered, &parts.view,
             [&view = parts.view] { view.setFocus(Qt::ShortcutFocusReason); });
+    m_focusToolbar = make(tr("Focus the toolbar"), "focusToolbar");
+    connect(m_focusToolbar, &QAction::triggered, new ToolbarKeys(parts.window, parts.view),
+            &ToolbarKeys::enter);
     m_nextBody = make(tr("Select next body"), "selectNextBody");
     connect(m_nextBody, &QAction::triggered, &parts.view, &WorldView::selectNextBody);
     m_previousBody = make(tr("Select previous body"), "selectPreviousBody");
@@ -69,7 +73,8 @@ QAction* WindowKeyboard::make(const QString& text, const char* name)
 void WindowKeyboard::addToSimulationMenu(QMenu& menu) const
 {
     menu.addSeparator();
-    for (QAction* a : {m_focusScene, m_nextBody, m_previousBody, m_next, m_previous})
+    for (QAction* a :
+         {m_focusScene, m_focusToolbar, m_nextBody, m_previousBody, m_next, m_previous})
         menu.addAction(a);
 }
 

@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The window's keyboard beyond the run actions: the lesson's next and previous step, the
-// focus to the scene, choosing a body without a mouse, single-key shortcuts on or off, and
-// Enter on a body showing its numbers in the inspector. It installs the shortcuts guard
-// (keys go to the focused control first) and the focus ring (common/).
+// focus to the scene or to the toolbar (window_keyboard_toolbar.h), choosing a body without a
+// mouse, single-key shortcuts on or off, and Enter on a body showing its numbers in the
+// inspector. It installs the shortcuts guard (keys go to the focused control first), the focus
+// ring (common/) and the guard that keeps Tab to controls in sight (window_keyboard_sight.h).
 
 #include <QObject>
 
@@ -46,6 +47,7 @@ private:
     QAction* m_next = nullptr;
     QAction* m_previous = nullptr;
     QAction* m_focusScene = nullptr;
+    QAction* m_focusToolbar = nullptr;
     QAction* m_nextBody = nullptr;
     QAction* m_previousBody = nullptr;
     QAction* m_singleKeys = nullptr;
