@@ -344,6 +344,10 @@
         <source>A graph of chosen bodies&apos; quantities against time</source>
         <translation>Graf veličin vybraných těles v závislosti na čase</translation>
     </message>
+    <message>
+        <source>Put the keyboard focus on the toolbar: arrows move between its buttons, Space or Enter presses one, Esc goes back</source>
+        <translation>Přesunout fokus klávesnice na panel nástrojů: šipky přecházejí mezi jeho tlačítky, mezerník nebo Enter jedno stiskne, Esc vrátí fokus zpět</translation>
+    </message>
 </context>
 <context>
     <name>CsvColumns</name>
@@ -5287,6 +5291,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Letters, Space and arrows alone act as shortcuts; off, only keys with Ctrl, Alt or F-keys do</source>
         <translation>Písmena, mezerník a&#xa0;šipky samy fungují jako zkratky; vypnuto fungují jen klávesy s&#xa0;Ctrl, Alt nebo klávesy F</translation>
+    </message>
+    <message>
+        <source>Focus the toolbar</source>
+        <translation>Fokus na panel nástrojů</translation>
     </message>
 </context>
 <context>
