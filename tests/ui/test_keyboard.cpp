@@ -25,6 +25,7 @@
 #include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -411,6 +412,75 @@ private slots:
         QVERIFY(bar->isAncestorOf(QApplication::focusWidget()));
         key(w, Qt::Key_Escape);
         QCOMPARE(QApplication::focusWidget(), &w.view());
+    }
+
+    /// In Edit mode the keys do what the mouse does to the view: Insert offers the bodies to
+    /// add at the view's centre, + and − zoom, 0 fits, Ctrl+arrows pan; Help lists them.
+    void editorViewByKeyboard()
+    {
+        MainWindow w;
+        w.fitToScreen(QRect(0, 0, 1024, 768));
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        const QString help = ui::controlsHelpHtml({});
+        for (const Qt::Key k : {Qt::Key_Insert, Qt::Key_Plus, Qt::Key_Minus, Qt::Key_0})
+            QVERIFY2(help.contains(QKeySequence(k).toString(QKeySequence::NativeText)),
+                     qPrintable(QKeySequence(k).toString(QKeySequence::NativeText)));
+        QCOMPARE(
+            w.openScene(QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json")),
+                        true),
+            QString());
+        ui::EditTools& tools = w.editTools();
+        tools.setEditing(true);
+        QCoreApplication::processEvents();
+        w.view().setFocus(Qt::OtherFocusReason);
+        ui::WorldView& view = w.view();
+        const auto middle = [&] { return view.worldAt(view.viewport()->rect().center()); };
+
+        // Zoom: + by a wheel step about the middle, − back, 0 fits again.
+        key(w, Qt::Key_0);
+        const double fitted = view.zoom();
+        const physics::Vec2 c0 = middle();
+        key(w, Qt::Key_Plus);
+        RL_VERIFY_NEAR(view.zoom() / fitted, 1.2, 1e-9, 0);
+        RL_VERIFY_NEAR((middle() - c0).norm(), 0.0, 2.0 / view.zoom(), 0);
+        key(w, Qt::Key_Minus);
+        key(w, Qt::Key_Minus);
+        RL_VERIFY_NEAR(view.zoom() / fitted, 1.0 / 1.2, 1e-9, 0);
+        key(w, Qt::Key_0);
+        RL_VERIFY_NEAR(view.zoom(), fitted, 1e-9 * fitted, 0);
+
+        // Pan: Ctrl+Right shows what lies right, Ctrl+Up what lies above; the clock stays.
+        const long long step = w.controller().currentStep();
+        const physics::Vec2 p0 = middle();
+        key(w, Qt::Key_Right, Qt::ControlModifier);
+        const physics::Vec2 p1 = middle();
+        QVERIFY2(p1.x() > p0.x(), qPrintable(QStringLiteral("%1 %2").arg(p0.x()).arg(p1.x())));
+        RL_VERIFY_NEAR(p1.y(), p0.y(), 2.0 / view.zoom(), 0);
+        key(w, Qt::Key_Up, Qt::ControlModifier);
+        QVERIFY(middle().y() > p1.y());
+        QCOMPARE(w.controller().currentStep(), step);
+
+        // Insert: a menu of bodies; Down and Return add a box at the view's centre.
+        const std::size_t before = tools.scene().bodies.size();
+        key(w, Qt::Key_Insert);
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        QVERIFY(menu);
+        QVERIFY(!menu->accessibleName().isEmpty());
+        QCOMPARE(menu->actions().size(), 4);
+        QTest::keyClick(menu, Qt::Key_Down);
+        QTest::keyClick(menu, Qt::Key_Return);
+        QCoreApplication::processEvents();
+        QCOMPARE(tools.scene().bodies.size(), before + 1);
+        const physics::BodyDef& added = tools.scene().bodies.back();
+        QVERIFY(added.shape.asPolygon() && added.type == physics::BodyType::Dynamic);
+        QCOMPARE(tools.tool(), ui::EditTool::Box);
+        RL_VERIFY_NEAR((added.position - tools.viewCentre()).norm(), 0.0, 1e-9, 0);
+        QCOMPARE(tools.selectedBody(), static_cast<int>(before));
+        // One undo step takes it away.
+        key(w, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(tools.scene().bodies.size(), before);
     }
 
     /// Tab leaves a table rather than walking its cells; arrows move within it.
