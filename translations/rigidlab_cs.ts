@@ -348,6 +348,22 @@
         <source>Put the keyboard focus on the toolbar: arrows move between its buttons, Space or Enter presses one, Esc goes back</source>
         <translation>Přesunout fokus klávesnice na panel nástrojů: šipky přecházejí mezi jeho tlačítky, mezerník nebo Enter jedno stiskne, Esc vrátí fokus zpět</translation>
     </message>
+    <message>
+        <source>Edit: add a circle, a box, a polygon or ground at the view&apos;s centre (a menu)</source>
+        <translation>Editor: přidat kruh, obdélník, mnohoúhelník nebo podložku doprostřed pohledu (nabídka)</translation>
+    </message>
+    <message>
+        <source>Edit: zoom in or out about the middle of the view</source>
+        <translation>Editor: přiblížit nebo oddálit kolem středu pohledu</translation>
+    </message>
+    <message>
+        <source>Edit: zoom to show every body</source>
+        <translation>Editor: přiblížit tak, aby byla vidět všechna tělesa</translation>
+    </message>
+    <message>
+        <source>Edit: pan the view</source>
+        <translation>Editor: posunout pohled</translation>
+    </message>
 </context>
 <context>
     <name>CsvColumns</name>
@@ -2649,6 +2665,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Select a body to hang it from a spring</source>
         <translation>Vyberte těleso, které chcete zavěsit na pružinu</translation>
+    </message>
+    <message>
+        <source>Add a body at the view&apos;s centre</source>
+        <translation>Přidat těleso doprostřed pohledu</translation>
     </message>
 </context>
 <context>
