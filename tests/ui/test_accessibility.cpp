@@ -10,6 +10,7 @@
 #include "common/theme.h"
 #include "editor/edit_tools.h"
 #include "lesson_player/lesson_player.h"
+#include "panels/inspector_panel.h"
 #include "plots/column_graph.h"
 #include "plots/plot_accessible.h"
 #include "plots/plot_widget.h"
@@ -22,6 +23,8 @@
 #include <QAccessible>
 #include <QDialog>
 #include <QFileDialog>
+#include <QFormLayout>
+#include <QLabel>
 #include <QPalette>
 #include <QRegularExpression>
 #include <QScopeGuard>
@@ -275,6 +278,42 @@ private slots:
                      qPrintable(inside));
         }
         QVERIFY2(pairs >= 2, qPrintable(all));
+    }
+
+    /// Each of the inspector's values says its row to a screen reader: the row's label is a
+    /// buddy of its value, and the value's name is "row: value".
+    void inspectorValuesSayTheirRows()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(w.openLesson(lesson("restitution.json"), true), QString());
+        int body = -1;
+        for (int i = 0; i < static_cast<int>(w.controller().world().bodies().size()); ++i)
+            if (w.controller().world().body(i).isDynamic())
+                body = i;
+        QVERIFY(body >= 0);
+        w.inspector().setBody(body);
+        auto* form = qobject_cast<QFormLayout*>(w.inspector().layout());
+        QVERIFY(form);
+        int values = 0;
+        for (int row = 0; row < form->rowCount(); ++row) {
+            QLayoutItem* labelItem = form->itemAt(row, QFormLayout::LabelRole);
+            auto* label = labelItem ? qobject_cast<QLabel*>(labelItem->widget()) : nullptr;
+            if (!label)
+                continue;
+            QVERIFY2(label->buddy(), qPrintable(label->text()));
+            QVERIFY2(label->buddy()->isVisibleTo(&w.inspector()), qPrintable(label->text()));
+            auto* value = qobject_cast<QLabel*>(label->buddy());
+            if (!value)
+                continue; // a field, named by its own label (test above)
+            ++values;
+            QAccessibleInterface* a = QAccessible::queryAccessibleInterface(value);
+            const QString name = a->text(QAccessible::Name);
+            QVERIFY2(name.startsWith(label->text()) && name.contains(value->text()) &&
+                         !value->text().isEmpty(),
+                     qPrintable(label->text() + QStringLiteral(" → ") + name));
+        }
+        QVERIFY2(values >= 8, qPrintable(QString::number(values)));
     }
 
     /// Text at least 4.5:1 and lines and overlays at least 3:1 against what lies behind
