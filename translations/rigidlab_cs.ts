@@ -2955,6 +2955,11 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>A graph of this body&apos;s quantities against time</source>
         <translation>Graf veličin tohoto tělesa v závislosti na čase</translation>
     </message>
+    <message>
+        <source>%1: %2</source>
+        <comment>a value named by its row</comment>
+        <translation>%1: %2</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::Instruments</name>
