@@ -21,10 +21,12 @@
 #include "window/main_window.h"
 
 #include <QAccessible>
+#include <QAction>
 #include <QDialog>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QLabel>
+#include <QMenu>
 #include <QPalette>
 #include <QRegularExpression>
 #include <QScopeGuard>
@@ -314,6 +316,36 @@ private slots:
                      qPrintable(label->text() + QStringLiteral(" → ") + name));
         }
         QVERIFY2(values >= 8, qPrintable(QString::number(values)));
+    }
+
+    /// View › Reduced motion: the docks, menus, lists and tooltips no longer animate; the
+    /// choice is kept for the next window, and undone the platform's effects come back.
+    void reducedMotionStopsAnimations()
+    {
+        const bool menuBefore = QApplication::isEffectEnabled(Qt::UI_AnimateMenu);
+        {
+            MainWindow w;
+            auto* reduced = w.findChild<QAction*>(QStringLiteral("reducedMotion"));
+            QVERIFY(reduced && reduced->isCheckable() && !reduced->isChecked());
+            QVERIFY(!reduced->text().isEmpty());
+            bool inMenu = false;
+            for (QObject* o : reduced->associatedObjects())
+                inMenu = inMenu || qobject_cast<QMenu*>(o);
+            QVERIFY(inMenu);
+            QVERIFY(w.dockOptions().testFlag(QMainWindow::AnimatedDocks));
+            reduced->trigger();
+            QVERIFY(!w.dockOptions().testFlag(QMainWindow::AnimatedDocks));
+            for (const Qt::UIEffect e : {Qt::UI_AnimateMenu, Qt::UI_FadeMenu, Qt::UI_AnimateCombo,
+                                         Qt::UI_AnimateTooltip, Qt::UI_FadeTooltip})
+                QVERIFY2(!QApplication::isEffectEnabled(e), qPrintable(QString::number(e)));
+        }
+        MainWindow again;
+        auto* reduced = again.findChild<QAction*>(QStringLiteral("reducedMotion"));
+        QVERIFY(reduced && reduced->isChecked());
+        QVERIFY(!again.dockOptions().testFlag(QMainWindow::AnimatedDocks));
+        reduced->trigger();
+        QVERIFY(again.dockOptions().testFlag(QMainWindow::AnimatedDocks));
+        QCOMPARE(QApplication::isEffectEnabled(Qt::UI_AnimateMenu), menuBefore);
     }
 
     /// Text at least 4.5:1 and lines and overlays at least 3:1 against what lies behind

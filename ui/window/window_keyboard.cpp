@@ -21,10 +21,16 @@
 #include <QPalette>
 #include <QSettings>
 
+#include <array>
+
 namespace rigidlab::ui {
 
 namespace {
 const QString kSingleKeysSetting = QStringLiteral("keyboard/singleKeyShortcuts");
+const QString kReducedMotionSetting = QStringLiteral("accessibility/reducedMotion");
+/// Qt's animated effects, which reduced motion turns off.
+constexpr std::array kEffects{Qt::UI_AnimateMenu,    Qt::UI_FadeMenu,    Qt::UI_AnimateCombo,
+                              Qt::UI_AnimateTooltip, Qt::UI_FadeTooltip, Qt::UI_AnimateToolBox};
 } // namespace
 
 WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_parts(parts)
@@ -59,6 +65,26 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
         QSettings().setValue(kSingleKeysSetting, on);
     });
     connect(&parts.view, &WorldView::numbersRequested, this, &WindowKeyboard::showNumbers);
+    for (std::size_t i = 0; i < kEffects.size(); ++i)
+        m_effectsBefore[i] = QApplication::isEffectEnabled(kEffects[i]);
+    m_reducedMotion = make(tr("Reduced motion"), "reducedMotion");
+    m_reducedMotion->setCheckable(true);
+    m_reducedMotion->setToolTip(
+        tr("Panels, menus, lists and tooltips appear at once, without animation"));
+    connect(m_reducedMotion, &QAction::toggled, this, [this](bool on) {
+        setReducedMotion(on);
+        QSettings().setValue(kReducedMotionSetting, on);
+    });
+}
+
+void WindowKeyboard::setReducedMotion(bool on)
+{
+    QMainWindow::DockOptions options = m_parts.window.dockOptions();
+    options.setFlag(QMainWindow::AnimatedDocks, !on);
+    m_parts.window.setDockOptions(options);
+    // Off again, each effect is as the platform had it.
+    for (std::size_t i = 0; i < kEffects.size(); ++i)
+        QApplication::setEffectEnabled(kEffects[i], !on && m_effectsBefore[i]);
 }
 
 QAction* WindowKeyboard::make(const QString& text, const char* name)
@@ -81,6 +107,7 @@ void WindowKeyboard::addToSimulationMenu(QMenu& menu) const
 void WindowKeyboard::addToViewMenu(QMenu& menu) const
 {
     menu.addAction(m_singleKeys);
+    menu.addAction(m_reducedMotion);
 }
 
 void WindowKeyboard::applySavedChoice()
@@ -88,6 +115,9 @@ void WindowKeyboard::applySavedChoice()
     const bool on = QSettings().value(kSingleKeysSetting, true).toBool();
     if (on != m_singleKeys->isChecked())
         m_singleKeys->setChecked(on);
+    const bool reduced = QSettings().value(kReducedMotionSetting, false).toBool();
+    if (reduced != m_reducedMotion->isChecked())
+        m_reducedMotion->setChecked(reduced);
 }
 
 void WindowKeyboard::showNumbers(int body)

@@ -8,6 +8,8 @@
 
 #include <QObject>
 
+#include <array>
+
 class QAction;
 class QMainWindow;
 class QMenu;
@@ -36,12 +38,16 @@ public:
     /// Adds "Single-key shortcuts" to a menu (View).
     void addToViewMenu(QMenu& menu) const;
     QAction* singleKeys() const { return m_singleKeys; }
-    /// Applies the saved choice of single-key shortcuts (after every action exists).
+    /// View › Reduced motion: no animated docks, menus, lists or tooltips (kept).
+    QAction* reducedMotion() const { return m_reducedMotion; }
+    /// Applies the saved choices of single-key shortcuts and reduced motion (after every
+    /// action exists).
     void applySavedChoice();
 
 private:
     QAction* make(const QString& text, const char* name);
     void showNumbers(int body);
+    void setReducedMotion(bool on);
 
     Parts m_parts;
     QAction* m_next = nullptr;
@@ -51,6 +57,8 @@ private:
     QAction* m_nextBody = nullptr;
     QAction* m_previousBody = nullptr;
     QAction* m_singleKeys = nullptr;
+    QAction* m_reducedMotion = nullptr;
+    std::array<bool, 6> m_effectsBefore{}; ///< Qt's effects as the platform had them
 };
 
 } // namespace rigidlab::ui
