@@ -5321,6 +5321,14 @@ B&#xa0;%3 … %4</translation>
         <source>Focus the toolbar</source>
         <translation>Fokus na panel nástrojů</translation>
     </message>
+    <message>
+        <source>Reduced motion</source>
+        <translation>Omezit pohyb</translation>
+    </message>
+    <message>
+        <source>Panels, menus, lists and tooltips appear at once, without animation</source>
+        <translation>Panely, nabídky, seznamy a tipy se objeví hned, bez animace</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::WindowLayout</name>
