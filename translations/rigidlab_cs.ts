@@ -344,6 +344,26 @@
         <source>A graph of chosen bodies&apos; quantities against time</source>
         <translation>Graf veličin vybraných těles v závislosti na čase</translation>
     </message>
+    <message>
+        <source>Put the keyboard focus on the toolbar: arrows move between its buttons, Space or Enter presses one, Esc goes back</source>
+        <translation>Přesunout fokus klávesnice na panel nástrojů: šipky přecházejí mezi jeho tlačítky, mezerník nebo Enter jedno stiskne, Esc vrátí fokus zpět</translation>
+    </message>
+    <message>
+        <source>Edit: add a circle, a box, a polygon or ground at the view&apos;s centre (a menu)</source>
+        <translation>Editor: přidat kruh, obdélník, mnohoúhelník nebo podložku doprostřed pohledu (nabídka)</translation>
+    </message>
+    <message>
+        <source>Edit: zoom in or out about the middle of the view</source>
+        <translation>Editor: přiblížit nebo oddálit kolem středu pohledu</translation>
+    </message>
+    <message>
+        <source>Edit: zoom to show every body</source>
+        <translation>Editor: přiblížit tak, aby byla vidět všechna tělesa</translation>
+    </message>
+    <message>
+        <source>Edit: pan the view</source>
+        <translation>Editor: posunout pohled</translation>
+    </message>
 </context>
 <context>
     <name>CsvColumns</name>
@@ -1597,10 +1617,6 @@ n = (%4; %5)</translation>
 <context>
     <name>SceneWords</name>
     <message>
-        <source>(%1; %2) %3</source>
-        <translation>(%1; %2)&#xa0;%3</translation>
-    </message>
-    <message>
         <source>Scene</source>
         <translation>Scéna</translation>
     </message>
@@ -1758,6 +1774,14 @@ n = (%4; %5)</translation>
     <message>
         <source>the lesson editor on a shipped lesson</source>
         <translation>editor lekcí s dodanou lekcí</translation>
+    </message>
+</context>
+<context>
+    <name>SpokenNumbers</name>
+    <message>
+        <source>minus %1</source>
+        <comment>a negative number read aloud</comment>
+        <translation>minus %1</translation>
     </message>
 </context>
 <context>
@@ -2701,6 +2725,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Select a body to hang it from a spring</source>
         <translation>Vyberte těleso, které chcete zavěsit na pružinu</translation>
     </message>
+    <message>
+        <source>Add a body at the view&apos;s centre</source>
+        <translation>Přidat těleso doprostřed pohledu</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::ErrorPanel</name>
@@ -2985,6 +3013,11 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>A graph of this body&apos;s quantities against time</source>
         <translation>Graf veličin tohoto tělesa v závislosti na čase</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <comment>a value named by its row</comment>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -5346,6 +5379,18 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Letters, Space and arrows alone act as shortcuts; off, only keys with Ctrl, Alt or F-keys do</source>
         <translation>Písmena, mezerník a&#xa0;šipky samy fungují jako zkratky; vypnuto fungují jen klávesy s&#xa0;Ctrl, Alt nebo klávesy F</translation>
+    </message>
+    <message>
+        <source>Focus the toolbar</source>
+        <translation>Fokus na panel nástrojů</translation>
+    </message>
+    <message>
+        <source>Reduced motion</source>
+        <translation>Omezit pohyb</translation>
+    </message>
+    <message>
+        <source>Panels, menus, lists and tooltips appear at once, without animation</source>
+        <translation>Panely, nabídky, seznamy a tipy se objeví hned, bez animace</translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,7 @@
 #include "common/theme.h"
 #include "editor/edit_tools.h"
 #include "lesson_player/lesson_player.h"
+#include "panels/inspector_panel.h"
 #include "plots/column_graph.h"
 #include "plots/plot_accessible.h"
 #include "plots/plot_widget.h"
@@ -20,9 +21,15 @@
 #include "window/main_window.h"
 
 #include <QAccessible>
+#include <QAction>
 #include <QDialog>
 #include <QFileDialog>
+#include <QFormLayout>
+#include <QLabel>
+#include <QMenu>
 #include <QPalette>
+#include <QRegularExpression>
+#include <QScopeGuard>
 #include <QTimer>
 #include <QtTest>
 #include <qcustomplot.h>
@@ -218,6 +225,127 @@ private slots:
             QVERIFY2(text.contains(energy->seriesLegend(i) + QLatin1String(": now")),
                      qPrintable(text));
         QVERIFY2(text.contains(QLatin1String("greatest")), qPrintable(text));
+    }
+
+    /// The scene's and the plots' texts say numbers in the locale: its decimal separator, a
+    /// negative value as "minus" (never a sign a screen reader may drop), and coordinates
+    /// separated by ", " after a decimal point, "; " after a decimal comma.
+    void numbersAreSpokenInTheLocale_data()
+    {
+        QTest::addColumn<QString>("locale");
+        QTest::newRow("en") << QStringLiteral("en_US");
+        QTest::newRow("cs") << QStringLiteral("cs_CZ");
+    }
+    void numbersAreSpokenInTheLocale()
+    {
+        QFETCH(QString, locale);
+        const QLocale before;
+        QLocale::setDefault(QLocale(locale));
+        const auto restore = qScopeGuard([&] { QLocale::setDefault(before); });
+        const bool decimalComma = QLocale().decimalPoint() == QLatin1String(",");
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(
+            w.openScene(QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json")),
+                        true),
+            QString());
+        for (int k = 0; k < 60; ++k) // the bodies fall: velocities below zero
+            w.controller().stepForward();
+        QStringList texts;
+        QAccessibleInterface* scene = QAccessible::queryAccessibleInterface(&w.view());
+        QVERIFY(scene);
+        for (int i = ui::WorldViewAccessible::FirstBody; i < scene->childCount(); ++i)
+            texts << scene->child(i)->text(QAccessible::Value);
+        for (int p = 0; p < MainWindow::kPlotCount; ++p) {
+            w.plot(p)->drain();
+            texts << QAccessible::queryAccessibleInterface(w.plot(p))->text(
+                QAccessible::Description);
+        }
+        const QString all = texts.join(QLatin1Char('\n'));
+        const QRegularExpression sign(QStringLiteral("[-\u2212]\\d"));
+        QVERIFY2(!sign.match(all).hasMatch(), qPrintable(sign.match(all).captured() + u'\n' + all));
+        QVERIFY2(all.contains(QLatin1String("minus ")), qPrintable(all));
+        const QRegularExpression decimal(decimalComma ? QStringLiteral("\\d,\\d")
+                                                      : QStringLiteral("\\d\\.\\d"));
+        QVERIFY2(decimal.match(all).hasMatch(), qPrintable(all));
+        // Each body's position and velocity: two coordinates, the locale's separator between.
+        const QString separator = decimalComma ? QStringLiteral("; ") : QStringLiteral(", ");
+        const QRegularExpression pair(QStringLiteral("(position|velocity) \\(([^)]*)\\)"));
+        int pairs = 0;
+        for (auto m = pair.globalMatch(all); m.hasNext(); ++pairs) {
+            const QString inside = m.next().captured(2);
+            QVERIFY2(inside.split(separator).size() == 2, qPrintable(inside));
+            // The other language's separator is not there as well.
+            QVERIFY2(!inside.contains(decimalComma ? QStringLiteral(", ") : QStringLiteral(";")),
+                     qPrintable(inside));
+        }
+        QVERIFY2(pairs >= 2, qPrintable(all));
+    }
+
+    /// Each of the inspector's values says its row to a screen reader: the row's label is a
+    /// buddy of its value, and the value's name is "row: value".
+    void inspectorValuesSayTheirRows()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(w.openLesson(lesson("restitution.json"), true), QString());
+        int body = -1;
+        for (int i = 0; i < static_cast<int>(w.controller().world().bodies().size()); ++i)
+            if (w.controller().world().body(i).isDynamic())
+                body = i;
+        QVERIFY(body >= 0);
+        w.inspector().setBody(body);
+        auto* form = qobject_cast<QFormLayout*>(w.inspector().layout());
+        QVERIFY(form);
+        int values = 0;
+        for (int row = 0; row < form->rowCount(); ++row) {
+            QLayoutItem* labelItem = form->itemAt(row, QFormLayout::LabelRole);
+            auto* label = labelItem ? qobject_cast<QLabel*>(labelItem->widget()) : nullptr;
+            if (!label)
+                continue;
+            QVERIFY2(label->buddy(), qPrintable(label->text()));
+            QVERIFY2(label->buddy()->isVisibleTo(&w.inspector()), qPrintable(label->text()));
+            auto* value = qobject_cast<QLabel*>(label->buddy());
+            if (!value)
+                continue; // a field, named by its own label (test above)
+            ++values;
+            QAccessibleInterface* a = QAccessible::queryAccessibleInterface(value);
+            const QString name = a->text(QAccessible::Name);
+            QVERIFY2(name.startsWith(label->text()) && name.contains(value->text()) &&
+                         !value->text().isEmpty(),
+                     qPrintable(label->text() + QStringLiteral(" → ") + name));
+        }
+        QVERIFY2(values >= 8, qPrintable(QString::number(values)));
+    }
+
+    /// View › Reduced motion: the docks, menus, lists and tooltips no longer animate; the
+    /// choice is kept for the next window, and undone the platform's effects come back.
+    void reducedMotionStopsAnimations()
+    {
+        const bool menuBefore = QApplication::isEffectEnabled(Qt::UI_AnimateMenu);
+        {
+            MainWindow w;
+            auto* reduced = w.findChild<QAction*>(QStringLiteral("reducedMotion"));
+            QVERIFY(reduced && reduced->isCheckable() && !reduced->isChecked());
+            QVERIFY(!reduced->text().isEmpty());
+            bool inMenu = false;
+            for (QObject* o : reduced->associatedObjects())
+                inMenu = inMenu || qobject_cast<QMenu*>(o);
+            QVERIFY(inMenu);
+            QVERIFY(w.dockOptions().testFlag(QMainWindow::AnimatedDocks));
+            reduced->trigger();
+            QVERIFY(!w.dockOptions().testFlag(QMainWindow::AnimatedDocks));
+            for (const Qt::UIEffect e : {Qt::UI_AnimateMenu, Qt::UI_FadeMenu, Qt::UI_AnimateCombo,
+                                         Qt::UI_AnimateTooltip, Qt::UI_FadeTooltip})
+                QVERIFY2(!QApplication::isEffectEnabled(e), qPrintable(QString::number(e)));
+        }
+        MainWindow again;
+        auto* reduced = again.findChild<QAction*>(QStringLiteral("reducedMotion"));
+        QVERIFY(reduced && reduced->isChecked());
+        QVERIFY(!again.dockOptions().testFlag(QMainWindow::AnimatedDocks));
+        reduced->trigger();
+        QVERIFY(again.dockOptions().testFlag(QMainWindow::AnimatedDocks));
+        QCOMPARE(QApplication::isEffectEnabled(Qt::UI_AnimateMenu), menuBefore);
     }
 
     /// Text at least 4.5:1 and lines and overlays at least 3:1 against what lies behind

@@ -6,25 +6,33 @@
 // (Space presses a focused button, arrows move in a list), and Tab leaves a table.
 
 #include "common/export_folder.h"
+#include "common/shortcuts.h"
+#include "editor/edit_tools.h"
 #include "lesson_player/lesson_player.h"
 #include "near.h"
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
+#include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 #include "window/main_window.h"
 
 #include <QAbstractItemView>
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTextBrowser>
 #include <QTimer>
+#include <QToolBar>
+#include <QToolButton>
 #include <QtTest>
 
 #include "test_main.h"
@@ -34,8 +42,31 @@ using rigidlab::ui::MainWindow;
 
 namespace {
 
-/// Every widget that took the focus while it could not be seen: hidden, or out of its
-/// window's sight (Qt moves docks behind a tab away rather than hiding them).
+/// Whether some of `w` shows: its part inside its parents is not empty, and at one point of a
+/// 3×3 grid over that part the window's topmost widget is `w`, its child or its parent, not
+/// another dock or panel lying over it.
+bool seen(const QWidget& w)
+{
+    const QWidget* window = w.window();
+    QRect r(w.mapTo(window, QPoint()), w.size());
+    for (const QWidget* p = w.parentWidget(); p && p != window; p = p->parentWidget())
+        r &= QRect(p->mapTo(window, QPoint()), p->size());
+    r &= window->rect();
+    if (!w.isVisible() || r.isEmpty())
+        return false;
+    for (int i = 1; i <= 3; ++i)
+        for (int j = 1; j <= 3; ++j) {
+            const QPoint at(r.left() + i * r.width() / 4, r.top() + j * r.height() / 4);
+            const QWidget* top = window->childAt(at);
+            if (!top || top == &w || w.isAncestorOf(top) || top->isAncestorOf(&w))
+                return true;
+        }
+    return false;
+}
+
+/// Every widget that took the focus while it could not be seen: hidden, out of its window's
+/// sight (Qt moves docks behind a tab away rather than hiding them), or covered by another
+/// dock lying over it.
 class FocusWatch : public QObject {
 public:
     FocusWatch()
@@ -45,8 +76,7 @@ public:
             if (!now || qobject_cast<QFileDialog*>(now->window()))
                 return;
             ++m_stops;
-            const QRect inWindow(now->mapTo(now->window(), QPoint()), now->size());
-            if (!now->isVisible() || !now->window()->rect().intersects(inWindow))
+            if (!seen(*now))
                 m_hidden << QStringLiteral("%1 '%2' visible %3, %4x%5 at (%6, %7)")
                                 .arg(QLatin1String(now->metaObject()->className()),
                                      now->objectName())
@@ -265,6 +295,192 @@ private slots:
 
         QVERIFY2(watch.stops() > 10, qPrintable(QString::number(watch.stops())));
         QVERIFY2(watch.hidden().isEmpty(), qPrintable(watch.hidden().join(QLatin1Char('\n'))));
+    }
+
+    /// A dock lying on the window under something else (another dock mid-way through an
+    /// animated rearrangement, a panel): Tab and Shift+Tab pass its plots by and still go
+    /// round the window. The energy_drift lesson's compare step, its side-by-side plots
+    /// covered.
+    void tabSkipsADockUnderAnother()
+    {
+        MainWindow w;
+        w.fitToScreen(QRect(0, 0, 1024, 768));
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QCOMPARE(
+            w.openLesson(
+                QDir(MainWindow::lessonsFolder()).filePath(QStringLiteral("energy_drift.json")),
+                true),
+            QString());
+        QCoreApplication::processEvents();
+        auto* compare = w.findChild<QDockWidget*>(QStringLiteral("compareDock"));
+        auto* controls = w.findChild<QDockWidget*>(QStringLiteral("controlsDock"));
+        QVERIFY(compare && controls && compare->isVisible() && controls->isVisible());
+        const QList<ui::PlotWidget*> plots = compare->findChildren<ui::PlotWidget*>();
+        QVERIFY(!plots.isEmpty());
+        for (const ui::PlotWidget* p : plots)
+            QVERIFY2(seen(*p), qPrintable(p->objectName()));
+        // A panel of the window's own size and colour lies over the side-by-side dock; the
+        // window's layout does not move it (a dock the layout placed there, it would).
+        QWidget cover(&w);
+        cover.setAutoFillBackground(true);
+        cover.setGeometry(compare->geometry());
+        cover.show();
+        cover.raise();
+        QCoreApplication::processEvents();
+        for (const ui::PlotWidget* p : plots)
+            QVERIFY2(p->isVisible() && !seen(*p), qPrintable(p->objectName()));
+
+        for (const Qt::Key direction : {Qt::Key_Tab, Qt::Key_Backtab}) {
+            FocusWatch watch;
+            QSet<QWidget*> stops;
+            w.view().setFocus(Qt::OtherFocusReason);
+            for (int i = 0; i < 80; ++i) {
+                key(w, direction);
+                if (QApplication::focusWidget() == &w.view())
+                    break;
+                stops << QApplication::focusWidget();
+            }
+            QCOMPARE(QApplication::focusWidget(), &w.view()); // a whole round
+            QVERIFY2(watch.hidden().isEmpty(), qPrintable(watch.hidden().join(QLatin1Char('\n'))));
+            bool controlsReached = false;
+            for (QWidget* f : std::as_const(stops))
+                controlsReached = controlsReached || controls->isAncestorOf(f);
+            QVERIFY(controlsReached);
+        }
+    }
+
+    /// F10 puts the focus on the toolbar: the arrows move along its buttons (not Step nor
+    /// Back), Down goes to the editor's tools in Edit mode, Space presses a button, Escape
+    /// goes back; Help lists the key.
+    void toolbarByKeyboard()
+    {
+        MainWindow w;
+        w.fitToScreen(QRect(0, 0, 1024, 768));
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QVERIFY(ui::controlsHelpHtml({}).contains(
+            QKeySequence(Qt::Key_F10).toString(QKeySequence::NativeText)));
+        auto* bar = w.findChild<QToolBar*>(QStringLiteral("simulationToolbar"));
+        QVERIFY(bar);
+        const auto buttonOf = [](QWidget* f) { return qobject_cast<QToolButton*>(f); };
+        w.view().setFocus(Qt::OtherFocusReason);
+        key(w, Qt::Key_F10);
+        QToolButton* first = buttonOf(QApplication::focusWidget());
+        QVERIFY(first && bar->isAncestorOf(first));
+        // Right along the buttons to Play, the clock standing still.
+        const long long step = w.controller().currentStep();
+        QToolButton* play = nullptr;
+        for (int i = 0; i < 12 && !play; ++i) {
+            key(w, Qt::Key_Right);
+            QToolButton* b = buttonOf(QApplication::focusWidget());
+            QVERIFY(b && bar->isAncestorOf(b));
+            if (b->defaultAction() && b->defaultAction()->objectName() == QLatin1String("play"))
+                play = b;
+        }
+        QVERIFY(play);
+        QCOMPARE(w.controller().currentStep(), step);
+        key(w, Qt::Key_Left);
+        QVERIFY(QApplication::focusWidget() != play);
+        key(w, Qt::Key_Right);
+        QCOMPARE(QApplication::focusWidget(), play);
+        key(w, Qt::Key_Space);
+        QVERIFY(w.controller().isRunning());
+        QCOMPARE(QApplication::focusWidget(), play);
+        key(w, Qt::Key_Return);
+        QVERIFY(!w.controller().isRunning());
+        key(w, Qt::Key_Escape);
+        QCOMPARE(QApplication::focusWidget(), &w.view());
+
+        // In Edit mode, Down goes to the editor's row of tools, Up back.
+        w.editTools().setEditing(true);
+        QCoreApplication::processEvents();
+        auto* tools = w.findChild<QToolBar*>(QStringLiteral("editToolbar"));
+        QVERIFY(tools && tools->isVisible());
+        w.view().setFocus(Qt::OtherFocusReason);
+        key(w, Qt::Key_F10);
+        key(w, Qt::Key_Down);
+        QVERIFY(tools->isAncestorOf(QApplication::focusWidget()));
+        QCOMPARE(w.editTools().tool(), ui::EditTool::Select);
+        key(w, Qt::Key_Home);
+        key(w, Qt::Key_Right); // the second tool, Rotate
+        key(w, Qt::Key_Space);
+        QCOMPARE(w.editTools().tool(), ui::EditTool::Rotate);
+        key(w, Qt::Key_Up);
+        QVERIFY(bar->isAncestorOf(QApplication::focusWidget()));
+        key(w, Qt::Key_Escape);
+        QCOMPARE(QApplication::focusWidget(), &w.view());
+    }
+
+    /// In Edit mode the keys do what the mouse does to the view: Insert offers the bodies to
+    /// add at the view's centre, + and − zoom, 0 fits, Ctrl+arrows pan; Help lists them.
+    void editorViewByKeyboard()
+    {
+        MainWindow w;
+        w.fitToScreen(QRect(0, 0, 1024, 768));
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        const QString help = ui::controlsHelpHtml({});
+        for (const Qt::Key k : {Qt::Key_Insert, Qt::Key_Plus, Qt::Key_Minus, Qt::Key_0})
+            QVERIFY2(help.contains(QKeySequence(k).toString(QKeySequence::NativeText)),
+                     qPrintable(QKeySequence(k).toString(QKeySequence::NativeText)));
+        QCOMPARE(
+            w.openScene(QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json")),
+                        true),
+            QString());
+        ui::EditTools& tools = w.editTools();
+        tools.setEditing(true);
+        QCoreApplication::processEvents();
+        w.view().setFocus(Qt::OtherFocusReason);
+        ui::WorldView& view = w.view();
+        const auto middle = [&] { return view.worldAt(view.viewport()->rect().center()); };
+
+        // Zoom: + by a wheel step about the middle, − back, 0 fits again.
+        key(w, Qt::Key_0);
+        const double fitted = view.zoom();
+        const physics::Vec2 c0 = middle();
+        key(w, Qt::Key_Plus);
+        RL_VERIFY_NEAR(view.zoom() / fitted, 1.2, 1e-9, 0);
+        RL_VERIFY_NEAR((middle() - c0).norm(), 0.0, 2.0 / view.zoom(), 0);
+        key(w, Qt::Key_Minus);
+        key(w, Qt::Key_Minus);
+        RL_VERIFY_NEAR(view.zoom() / fitted, 1.0 / 1.2, 1e-9, 0);
+        key(w, Qt::Key_0);
+        RL_VERIFY_NEAR(view.zoom(), fitted, 1e-9 * fitted, 0);
+
+        // Pan: Ctrl+Right shows what lies right, Ctrl+Up what lies above; the clock stays.
+        const long long step = w.controller().currentStep();
+        const physics::Vec2 p0 = middle();
+        key(w, Qt::Key_Right, Qt::ControlModifier);
+        const physics::Vec2 p1 = middle();
+        QVERIFY2(p1.x() > p0.x(), qPrintable(QStringLiteral("%1 %2").arg(p0.x()).arg(p1.x())));
+        RL_VERIFY_NEAR(p1.y(), p0.y(), 2.0 / view.zoom(), 0);
+        key(w, Qt::Key_Up, Qt::ControlModifier);
+        QVERIFY(middle().y() > p1.y());
+        QCOMPARE(w.controller().currentStep(), step);
+
+        // Insert: a menu of bodies; Down and Return add a box at the view's centre.
+        const std::size_t before = tools.scene().bodies.size();
+        key(w, Qt::Key_Insert);
+        auto* menu = qobject_cast<QMenu*>(QApplication::activePopupWidget());
+        QVERIFY(menu);
+        QVERIFY(!menu->accessibleName().isEmpty());
+        QCOMPARE(menu->actions().size(), 4);
+        QTest::keyClick(menu, Qt::Key_Down);
+        QTest::keyClick(menu, Qt::Key_Return);
+        QCoreApplication::processEvents();
+        QCOMPARE(tools.scene().bodies.size(), before + 1);
+        const physics::BodyDef& added = tools.scene().bodies.back();
+        QVERIFY(added.shape.asPolygon() && added.type == physics::BodyType::Dynamic);
+        QCOMPARE(tools.tool(), ui::EditTool::Box);
+        RL_VERIFY_NEAR((added.position - tools.viewCentre()).norm(), 0.0, 1e-9, 0);
+        QCOMPARE(tools.selectedBody(), static_cast<int>(before));
+        // One undo step takes it away.
+        key(w, Qt::Key_Z, Qt::ControlModifier);
+        QCOMPARE(tools.scene().bodies.size(), before);
     }
 
     /// Tab leaves a table rather than walking its cells; arrows move within it.

@@ -40,6 +40,10 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "The lesson's previous step")},
     ControlInfo{"focusScene", "F6", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Put the keyboard focus on the scene")},
+    ControlInfo{"focusToolbar", "F10", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Put the keyboard focus on the toolbar: arrows move "
+                                              "between its buttons, Space or Enter presses one, "
+                                              "Esc goes back")},
     ControlInfo{"selectNextBody", "]", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Select the next body (in the scene: arrows move "
                                               "it, Shift+arrows change its velocity, Enter shows "
@@ -94,6 +98,15 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "Edit: snap to the grid and to corners, on or off")},
     ControlInfo{"editDelete", "Del", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Edit: delete the selected body")},
+    ControlInfo{"editAddBody", "Ins", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Edit: add a circle, a box, a polygon or ground at "
+                                              "the view's centre (a menu)")},
+    ControlInfo{"editZoom", "+; -", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Edit: zoom in or out about the middle of the view")},
+    ControlInfo{"editZoomFit", "0", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Edit: zoom to show every body")},
+    ControlInfo{"editPan", "Ctrl+Left; Ctrl+Right; Ctrl+Up; Ctrl+Down", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Edit: pan the view")},
     ControlInfo{"undo", "Ctrl+Z", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Undo the last edit of the scene")},
     ControlInfo{"redo", "Ctrl+Shift+Z", nullptr,

@@ -181,6 +181,11 @@ public slots:
     void deleteSelected();
     /// Closes the polygon being drawn (Enter, double-click).
     void closePolygon();
+    /// Offers the bodies the tools add at the view's centre, in a menu under it (Insert).
+    void chooseBodyToAdd();
+    /// Takes `tool` (Circle, Box, Polygon or Ground) and adds its body at the view's centre,
+    /// as its Enter does; a tool a lesson step locks is refused with a message.
+    void addBodyAtCentre(rigidlab::ui::EditTool tool);
 
 signals:
     void editingChanged(bool on);
@@ -215,6 +220,10 @@ private:
     bool keyPress(QKeyEvent* event);
     /// Keys the window's shortcuts would take that Edit mode uses (arrows, Q, E, Enter...).
     bool wantsKey(const QKeyEvent* event) const;
+    /// Insert, +, −, 0 and Ctrl+arrows: adding a body, zooming and panning the view
+    /// (edit_tools_keys.cpp).
+    static bool isViewKey(const QKeyEvent& event);
+    bool viewKey(const QKeyEvent& event);
     /// Arrows, Q, E, Delete and Escape, for the selection and the gesture under way.
     bool selectionKey(const QKeyEvent* event);
     ToolPointer pointerAt(const QMouseEvent* event) const;

@@ -112,6 +112,9 @@ bool EditTools::mouseRelease(QMouseEvent* event)
 
 bool EditTools::wantsKey(const QKeyEvent* event) const
 {
+    if (isViewKey(*event)) {
+        return true;
+    }
     if (event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier)) {
         return false;
     }
@@ -146,7 +149,7 @@ bool EditTools::keyPress(QKeyEvent* event)
     if (!wantsKey(event)) {
         return false;
     }
-    if (!selectionKey(event)) {
+    if (!viewKey(*event) && !selectionKey(event)) {
         current().key(event->key());
     }
     return true;

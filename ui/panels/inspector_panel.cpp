@@ -37,6 +37,19 @@ constexpr double kTurnRateScaleRad = 1.0;
 /// Kinetic energy gets more digits against the scene's energy scale, which may be large.
 constexpr int kEnergyDigits = 6;
 
+/// Whether `widget` is the field of the form's `row`, or lies in it.
+bool isInRow(const QFormLayout& form, int row, const QWidget& widget)
+{
+    QLayoutItem* field = form.itemAt(row, QFormLayout::FieldRole);
+    if (!field)
+        return false;
+    if (QWidget* w = field->widget())
+        return w == &widget || w->isAncestorOf(&widget);
+    if (QLayout* l = field->layout())
+        return l->indexOf(&widget) >= 0;
+    return false;
+}
+
 QString num(double v, double scale = 0)
 {
     return formatReadable(v, kDigits, scale);
@@ -91,6 +104,7 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
         if (m_body >= 0)
             emit graphRequested(m_body);
     });
+    labelRows(*form);
     form->addRow(graph);
     m_forces = new ForcesView(this);
     form->addRow(m_forces);
@@ -151,6 +165,7 @@ void InspectorPanel::refresh()
              {m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
             l->setText(QStringLiteral("–"));
         m_forces->showNone();
+        nameValues();
         return;
     }
     const physics::Body& b = m_controller.world().body(m_body);
@@ -189,6 +204,36 @@ void InspectorPanel::refresh()
     m_forces->showBody(m_controller.world(), m_body);
     m_restitution->setValue(b.restitution);
     m_friction->setValue(b.friction);
+    nameValues();
+}
+
+void InspectorPanel::labelRows(QFormLayout& form)
+{
+    const QList<QLabel*> values{m_name,     m_mass,  m_inertia, m_position, m_angle,
+                                m_velocity, m_speed, m_omega,   m_energy};
+    for (int row = 0; row < form.rowCount(); ++row) {
+        QLayoutItem* labelItem = form.itemAt(row, QFormLayout::LabelRole);
+        auto* label = labelItem ? qobject_cast<QLabel*>(labelItem->widget()) : nullptr;
+        if (!label)
+            continue;
+        for (QLabel* value : values) {
+            if (!isInRow(form, row, *value))
+                continue;
+            m_rowNames.append({value, label->text()});
+            // QFormLayout gives no buddy to a row that is a layout (the mass: its field, or
+            // "infinite"), and makes the angle's box (value and unit list) the angle's.
+            label->setBuddy(value == m_mass ? static_cast<QWidget*>(m_massEdit) : value);
+        }
+    }
+}
+
+void InspectorPanel::nameValues()
+{
+    for (const auto& [value, row] : std::as_const(m_rowNames)) {
+        const QString name = tr("%1: %2", "a value named by its row").arg(row, value->text());
+        if (value->accessibleName() != name)
+            value->setAccessibleName(name);
+    }
 }
 
 QWidget* InspectorPanel::angleRow()

@@ -5,7 +5,12 @@
 // rounded to what is physically meaningful: rounding noise shows as 0 (common/number_format.h).
 // Angles in degrees (the school's unit) or radians, as the student chooses.
 
+#include <QList>
 #include <QWidget>
+
+#include <utility>
+
+class QFormLayout;
 
 class QComboBox;
 class QLabel;
@@ -43,6 +48,10 @@ public slots:
 private:
     /// The angle and its unit's choice, side by side.
     QWidget* angleRow();
+    /// Each value's row label as its buddy, and its accessible name "row: value", so that a
+    /// screen reader says which number it reads.
+    void labelRows(QFormLayout& form);
+    void nameValues();
 
     SimulationController& m_controller;
     int m_body = -1;
@@ -58,6 +67,8 @@ private:
     QLabel* m_omega;
     QComboBox* m_angleUnit; ///< degrees, radians
     QLabel* m_energy;
+    /// The value labels with their rows' names, for nameValues().
+    QList<std::pair<QLabel*, QString>> m_rowNames;
     ForcesView* m_forces; ///< the body's accumulators force by force, folded
     NumberField* m_restitution;
     NumberField* m_friction;

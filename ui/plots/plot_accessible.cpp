@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plots/plot_accessible.h"
 
-#include "common/number_format.h"
+#include "common/spoken_numbers.h"
 #include "plots/plot_widget.h"
 
 #include <qcustomplot.h>
@@ -26,8 +26,8 @@ QString axisText(const QCPAxis& axis)
 {
     const QCPRange r = axis.range();
     return PlotWords::tr("%1, from %2 to %3")
-        .arg(axis.label(), formatReadable(r.lower, 3, r.size()),
-             formatReadable(r.upper, 3, r.size()));
+        .arg(axis.label(), spokenReadable(r.lower, 3, r.size()),
+             spokenReadable(r.upper, 3, r.size()));
 }
 
 QString seriesText(const PlotWidget& plot, int series)
@@ -47,7 +47,7 @@ QString seriesText(const PlotWidget& plot, int series)
     }
     if (!found)
         return PlotWords::tr("%1: no values yet").arg(plot.seriesLegend(series));
-    const auto quantity = [&](double v) { return formatQuantity(v, unit, 4, scale); };
+    const auto quantity = [&](double v) { return spokenQuantity(v, unit, 4, scale); };
     return PlotWords::tr("%1: now %2, least %3, greatest %4")
         .arg(plot.seriesLegend(series), quantity(points.back().y()), quantity(lo), quantity(hi));
 }

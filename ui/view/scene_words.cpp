@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "view/scene_words.h"
 
-#include "common/number_format.h"
 #include "common/shortcuts.h"
+#include "common/spoken_numbers.h"
 #include "simulation/simulation_controller.h"
 
 #include "format/scene_schema.h"
@@ -17,13 +17,12 @@ namespace {
 
 QString metres(double v)
 {
-    return formatQuantity(v, QStringLiteral("m"), 3, 1.0);
+    return spokenQuantity(v, QStringLiteral("m"), 3, 1.0);
 }
 
 QString pair(double x, double y, const QString& unit)
 {
-    return SceneWords::tr("(%1; %2) %3")
-        .arg(formatReadable(x, 3, 1.0), formatReadable(y, 3, 1.0), unit);
+    return spokenPair(x, y, unit, 3, 1.0);
 }
 
 /// Whether the polygon is a rectangle: four corners, each edge at a right angle to the next.
@@ -69,7 +68,7 @@ QString summary(const SimulationController& controller, int selectedBody)
     QStringList parts;
     parts << SceneWords::tr("On stage: %n moving body(ies)", nullptr, moving) +
                  SceneWords::tr(", %n fixed body(ies).", nullptr, fixed);
-    const QString t = formatQuantity(controller.time(), QStringLiteral("s"), 3, 1.0);
+    const QString t = spokenQuantity(controller.time(), QStringLiteral("s"), 3, 1.0);
     if (world.divergence())
         parts << SceneWords::tr("The simulation stopped at %1: it diverged.").arg(t);
     else if (controller.isRunning())
@@ -118,14 +117,14 @@ QString bodyValue(const SimulationController& controller, physics::BodyId id)
     QStringList parts;
     parts << shapeText(b.shape);
     parts << (b.isDynamic()
-                  ? SceneWords::tr("mass %1").arg(formatQuantity(b.mass, QStringLiteral("kg"), 3))
+                  ? SceneWords::tr("mass %1").arg(spokenQuantity(b.mass, QStringLiteral("kg"), 3))
                   : SceneWords::tr("mass infinite"));
     const physics::Vec2 o = b.origin();
     parts << SceneWords::tr("position %1").arg(pair(o.x(), o.y(), QStringLiteral("m")));
     const physics::Vec2 v = world.originVelocity(id);
     parts << SceneWords::tr("velocity %1, speed %2")
                  .arg(pair(v.x(), v.y(), QStringLiteral("m/s")),
-                      formatQuantity(v.norm(), QStringLiteral("m/s"), 3, 1.0));
+                      spokenQuantity(v.norm(), QStringLiteral("m/s"), 3, 1.0));
     if (const QStringList t = touching(world, id, controller); !t.isEmpty())
         parts << SceneWords::tr("touches %1").arg(t.join(QStringLiteral(", ")));
     return parts.join(QStringLiteral("; "));

@@ -75,6 +75,13 @@ public:
     /// A view position in the world [m].
     physics::Vec2 worldAt(const QPoint& viewPos) const { return toWorld(viewPos); }
 
+    /// Zooms by `factor` about the middle of the view, as the wheel does about the pointer
+    /// (the keyboard's + and −); the view no longer fits itself to the scene.
+    void zoomBy(double factor);
+    /// Moves what the view shows by `pixels` (x right, y down), as dragging empty space does
+    /// (the keyboard's Ctrl+arrows); the view no longer fits itself to the scene.
+    void panBy(const QPoint& pixels);
+
 public slots:
     void fitScene();
     void rebuild();

@@ -160,6 +160,21 @@ void WorldView::wheelEvent(QWheelEvent* event)
     event->accept();
 }
 
+void WorldView::zoomBy(double factor)
+{
+    const QPointF middle = mapToScene(viewport()->rect().center());
+    m_autoFit = false;
+    setZoom(zoom() * factor);
+    centerOn(middle);
+}
+
+void WorldView::panBy(const QPoint& pixels)
+{
+    m_autoFit = false;
+    horizontalScrollBar()->setValue(horizontalScrollBar()->value() + pixels.x());
+    verticalScrollBar()->setValue(verticalScrollBar()->value() + pixels.y());
+}
+
 void WorldView::resizeEvent(QResizeEvent* event)
 {
     QGraphicsView::resizeEvent(event);

@@ -9,6 +9,8 @@
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
 #include "view/world_view.h"
+#include "window/window_keyboard_sight.h"
+#include "window/window_keyboard_toolbar.h"
 #include "window/window_layout.h"
 
 #include <QAction>
@@ -19,16 +21,23 @@
 #include <QPalette>
 #include <QSettings>
 
+#include <array>
+
 namespace rigidlab::ui {
 
 namespace {
 const QString kSingleKeysSetting = QStringLiteral("keyboard/singleKeyShortcuts");
+const QString kReducedMotionSetting = QStringLiteral("accessibility/reducedMotion");
+/// Qt's animated effects, which reduced motion turns off.
+constexpr std::array kEffects{Qt::UI_AnimateMenu,    Qt::UI_FadeMenu,    Qt::UI_AnimateCombo,
+                              Qt::UI_AnimateTooltip, Qt::UI_FadeTooltip, Qt::UI_AnimateToolBox};
 } // namespace
 
 WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_parts(parts)
 {
     ShortcutsGuard::install();
     FocusRing::install();
+    skipControlsOutOfSight(parts.window);
     QPalette palette = QApplication::palette();
     palette.setColor(QPalette::PlaceholderText, theme::placeholderText());
     QApplication::setPalette(palette);
@@ -39,6 +48,9 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     m_focusScene = make(tr("Focus the scene"), "focusScene");
     connect(m_focusScene, &QAction::triggered, &parts.view,
             [&view = parts.view] { view.setFocus(Qt::ShortcutFocusReason); });
+    m_focusToolbar = make(tr("Focus the toolbar"), "focusToolbar");
+    connect(m_focusToolbar, &QAction::triggered, new ToolbarKeys(parts.window, parts.view),
+            &ToolbarKeys::enter);
     m_nextBody = make(tr("Select next body"), "selectNextBody");
     connect(m_nextBody, &QAction::triggered, &parts.view, &WorldView::selectNextBody);
     m_previousBody = make(tr("Select previous body"), "selectPreviousBody");
@@ -53,6 +65,26 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
         QSettings().setValue(kSingleKeysSetting, on);
     });
     connect(&parts.view, &WorldView::numbersRequested, this, &WindowKeyboard::showNumbers);
+    for (std::size_t i = 0; i < kEffects.size(); ++i)
+        m_effectsBefore[i] = QApplication::isEffectEnabled(kEffects[i]);
+    m_reducedMotion = make(tr("Reduced motion"), "reducedMotion");
+    m_reducedMotion->setCheckable(true);
+    m_reducedMotion->setToolTip(
+        tr("Panels, menus, lists and tooltips appear at once, without animation"));
+    connect(m_reducedMotion, &QAction::toggled, this, [this](bool on) {
+        setReducedMotion(on);
+        QSettings().setValue(kReducedMotionSetting, on);
+    });
+}
+
+void WindowKeyboard::setReducedMotion(bool on)
+{
+    QMainWindow::DockOptions options = m_parts.window.dockOptions();
+    options.setFlag(QMainWindow::AnimatedDocks, !on);
+    m_parts.window.setDockOptions(options);
+    // Off again, each effect is as the platform had it.
+    for (std::size_t i = 0; i < kEffects.size(); ++i)
+        QApplication::setEffectEnabled(kEffects[i], !on && m_effectsBefore[i]);
 }
 
 QAction* WindowKeyboard::make(const QString& text, const char* name)
@@ -67,13 +99,15 @@ QAction* WindowKeyboard::make(const QString& text, const char* name)
 void WindowKeyboard::addToSimulationMenu(QMenu& menu) const
 {
     menu.addSeparator();
-    for (QAction* a : {m_focusScene, m_nextBody, m_previousBody, m_next, m_previous})
+    for (QAction* a :
+         {m_focusScene, m_focusToolbar, m_nextBody, m_previousBody, m_next, m_previous})
         menu.addAction(a);
 }
 
 void WindowKeyboard::addToViewMenu(QMenu& menu) const
 {
     menu.addAction(m_singleKeys);
+    menu.addAction(m_reducedMotion);
 }
 
 void WindowKeyboard::applySavedChoice()
@@ -81,6 +115,9 @@ void WindowKeyboard::applySavedChoice()
     const bool on = QSettings().value(kSingleKeysSetting, true).toBool();
     if (on != m_singleKeys->isChecked())
         m_singleKeys->setChecked(on);
+    const bool reduced = QSettings().value(kReducedMotionSetting, false).toBool();
+    if (reduced != m_reducedMotion->isChecked())
+        m_reducedMotion->setChecked(reduced);
 }
 
 void WindowKeyboard::showNumbers(int body)

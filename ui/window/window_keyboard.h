@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The window's keyboard beyond the run actions: the lesson's next and previous step, the
-// focus to the scene, choosing a body without a mouse, single-key shortcuts on or off, and
-// Enter on a body showing its numbers in the inspector. It installs the shortcuts guard
-// (keys go to the focused control first) and the focus ring (common/).
+// focus to the scene or to the toolbar (window_keyboard_toolbar.h), choosing a body without a
+// mouse, single-key shortcuts on or off, and Enter on a body showing its numbers in the
+// inspector. It installs the shortcuts guard (keys go to the focused control first), the focus
+// ring (common/) and the guard that keeps Tab to controls in sight (window_keyboard_sight.h).
 
 #include <QObject>
+
+#include <array>
 
 class QAction;
 class QMainWindow;
@@ -35,20 +38,27 @@ public:
     /// Adds "Single-key shortcuts" to a menu (View).
     void addToViewMenu(QMenu& menu) const;
     QAction* singleKeys() const { return m_singleKeys; }
-    /// Applies the saved choice of single-key shortcuts (after every action exists).
+    /// View › Reduced motion: no animated docks, menus, lists or tooltips (kept).
+    QAction* reducedMotion() const { return m_reducedMotion; }
+    /// Applies the saved choices of single-key shortcuts and reduced motion (after every
+    /// action exists).
     void applySavedChoice();
 
 private:
     QAction* make(const QString& text, const char* name);
     void showNumbers(int body);
+    void setReducedMotion(bool on);
 
     Parts m_parts;
     QAction* m_next = nullptr;
     QAction* m_previous = nullptr;
     QAction* m_focusScene = nullptr;
+    QAction* m_focusToolbar = nullptr;
     QAction* m_nextBody = nullptr;
     QAction* m_previousBody = nullptr;
     QAction* m_singleKeys = nullptr;
+    QAction* m_reducedMotion = nullptr;
+    std::array<bool, 6> m_effectsBefore{}; ///< Qt's effects as the platform had them
 };
 
 } // namespace rigidlab::ui
