@@ -124,7 +124,7 @@ private slots:
     void shippedQuestionsHaveTheirTextbookAnswers();
     void restitutionBounceRatiosAreESquared();
     void bounceHeightsAreExactMechanics();
-    void restitutionDriftIsTheContactsNotTheFlight();
+    void restitutionDriftStaysAtZero();
     void energyDriftClaims();
     void pendulumEulerGoesOverTheTop();
     void smallerStepShrinksDrift();
