@@ -125,7 +125,7 @@ private slots:
     void shippedQuestionsHaveTheirTextbookAnswers();
     void restitutionBounceRatiosAreESquared();
     void bounceHeightsAreExactMechanics();
-    void restitutionDriftIsTheContactsNotTheFlight();
+    void restitutionDriftStaysAtZero();
     void energyDriftClaims();
     void pendulumEulerGoesOverTheTop();
     void smallerStepShrinksDrift();

@@ -94,16 +94,22 @@ void solveContacts(StepContext& ctx)
     else
         solver.solveSequential(ctx.def.iterations, true, ctx.restitutionThreshold);
 
-    // A resting contact's impulse changes the velocity for the whole step, so the position
-    // moves by dt times the change (for symplectic Euler exactly Box2D's order: solve the
-    // velocities, then integrate the positions). A bounce timed at the fraction f of the step
-    // moves it by (1 - f) dt times the change.
+    // A resting contact's impulse P is the constraint force P / dt held through the step,
+    // beside gravity and the rest: the position moves by what the integrator makes of a
+    // constant force, steadyPush dt times the change of velocity (integrator.h). For
+    // symplectic Euler that is dt times the change, exactly Box2D's order (solve the
+    // velocities, then integrate the positions with them); for Verlet, RK4 and the others,
+    // exact on a constant force, half of it. Moving them by the whole dt times the change
+    // lifted a resting body by g dt^2 / 2 every step, and the contacts' bookkeeping counted
+    // the hopping as energy taken. A bounce, an impulse at the fraction f of the step, moves
+    // the position by (1 - f) dt times the change, whatever the integrator.
+    const double steady = integratorInfo(ctx.def.integrator).steadyPush * h;
     const std::vector<double>& impact = solver.impactFractions();
     for (size_t i = 0; i < ctx.bodies.size(); ++i) {
         Body& b = ctx.bodies[i];
         if (!b.isActive())
             continue;
-        const double after = (1.0 - impact[i]) * h;
+        const double after = impact[i] > 0.0 ? (1.0 - impact[i]) * h : steady;
         b.position += after * (b.velocity - s.velocityBefore[i]);
         b.angle += after * (b.angularVelocity - s.angularVelocityBefore[i]);
     }

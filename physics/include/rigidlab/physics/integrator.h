@@ -48,22 +48,30 @@ struct IntegratorInfo {
     /// oscillator; 0 for the others.
     double stabilityBound;
     DissipationRule dissipation;
+    /// How far one step moves the position under a constant acceleration a, from rest:
+    /// q1 - q0 = steadyPush h^2 a. 0 for explicit Euler (q1 = q0 + h v0), 1 for symplectic
+    /// Euler (q1 = q0 + h v1), 1/2 for the methods exact on a constant force (the true
+    /// motion's h^2 a / 2). A resting contact's impulse is such a force held through the step,
+    /// and the contact stage moves the position by what the integrator would have made of it
+    /// (contact_response.cpp).
+    double steadyPush;
 };
 
 /// Every integrator, in the order menus list them. A new integrator is a row here, an enum
 /// value above, and its class in makeIntegrator (integrators.cpp).
 inline constexpr std::array<IntegratorInfo, 6> kIntegrators{{
-    {IntegratorKind::Euler, "euler", 1, Stability::Unstable, 0.0, DissipationRule::StartOfStep},
+    {IntegratorKind::Euler, "euler", 1, Stability::Unstable, 0.0, DissipationRule::StartOfStep,
+     0.0},
     {IntegratorKind::SymplecticEuler, "symplectic-euler", 1, Stability::Bounded, 2.0,
-     DissipationRule::StartOfStep},
-    {IntegratorKind::Verlet, "verlet", 2, Stability::Bounded, 2.0, DissipationRule::Trapezoid},
+     DissipationRule::StartOfStep, 1.0},
+    {IntegratorKind::Verlet, "verlet", 2, Stability::Bounded, 2.0, DissipationRule::Trapezoid, 0.5},
     // |1 - x^2/2 + x^4/24| <= 1 for x = w dt <= 2 sqrt(2)
     {IntegratorKind::RK4, "rk4", 4, Stability::Bounded, 2.8284271247461903,
-     DissipationRule::Trapezoid},
+     DissipationRule::Trapezoid, 0.5},
     {IntegratorKind::DormandPrince, "dopri5", 5, Stability::Adaptive, 0.0,
-     DissipationRule::Trapezoid},
+     DissipationRule::Trapezoid, 0.5},
     {IntegratorKind::ImplicitMidpoint, "implicit-midpoint", 2, Stability::AStable, 0.0,
-     DissipationRule::Midpoint},
+     DissipationRule::Midpoint, 0.5},
 }};
 
 /// Every integrator's kind, in the order of kIntegrators.
