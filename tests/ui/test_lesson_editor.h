@@ -8,6 +8,7 @@
 #include "lesson_editor/lesson_draft.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
+#include "lesson_editor/step_checks.h"
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/lesson_player.h"
 #include "near.h"
@@ -62,9 +63,13 @@ private slots:
     void widgetsUndoSaveAndTry();
     void widgetsShownAndLocked();
     void widgetsStepSceneFromTheWindow();
-    void toleranceTighterThanIntegrators();
     void widgetsQuestions();
     void screenshotOfTheEditor();
+    // The checks that run the steps, in a worker (they wait on its signal, which lets the
+    // window activate another window: after the tests that type into the editor).
+    void toleranceTighterThanIntegrators();
+    void stepThatDivergesIsMarked();
+    void staleStepChecksDropped();
     // Shipped lessons.
     void shippedLessonsOpenAndSaveUnchanged_data();
     void shippedLessonsOpenAndSaveUnchanged();

@@ -296,6 +296,24 @@ LessonDraft::Check LessonDraft::check(const QString& language) const
     return check;
 }
 
+QByteArray LessonDraft::runKey() const
+{
+    QJsonArray steps;
+    for (const QJsonValue& v : m_pack.lesson.value(u"steps").toArray()) {
+        const QJsonObject step = v.toObject();
+        QJsonObject run;
+        for (const char* key : {"settings", "exportTime", "compare", "allow", "questions"})
+            run.insert(QLatin1String(key), step.value(QLatin1String(key)));
+        // A scene named by its file is the pack's copy of that file.
+        const QJsonValue scene = step.value(u"scene");
+        const auto packed = m_pack.scenes.find(scene.toString());
+        run.insert(QStringLiteral("scene"),
+                   packed != m_pack.scenes.end() ? QJsonValue(packed->second) : scene);
+        steps.append(run);
+    }
+    return QJsonDocument(steps).toJson(QJsonDocument::Compact);
+}
+
 std::optional<lessons::Lesson> LessonDraft::lesson(const QString& language, QString& error) const
 {
     lessons::LessonLoadOptions options;

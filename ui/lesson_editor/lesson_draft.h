@@ -67,6 +67,9 @@ public:
         QList<int> steps;
     };
     Check check(const QString& language) const;
+    /// What running the steps depends on (their scenes, settings, locks and questions, not
+    /// their texts), as bytes that change exactly when that does.
+    QByteArray runKey() const;
     /// The lesson as the player reads it, or nothing with `error` set.
     std::optional<lessons::Lesson> lesson(const QString& language, QString& error) const;
 
