@@ -14,6 +14,7 @@
 #include "near.h"
 #include "plots/lesson_export.h"
 #include "test_files.h"
+#include "shipped_lessons.h"
 #include "window/main_window.h"
 #include "window/screenshots.h"
 
@@ -29,11 +30,14 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QToolBar>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QtTest>
 
@@ -70,6 +74,7 @@ private slots:
     void toleranceTighterThanIntegrators();
     void stepThatDivergesIsMarked();
     void staleStepChecksDropped();
+    void tryAndBackToTheEditor();
     // Shipped lessons.
     void shippedLessonsOpenAndSaveUnchanged_data();
     void shippedLessonsOpenAndSaveUnchanged();

@@ -5,6 +5,8 @@
 
 #include "test_lesson_editor.h"
 
+#include "view/world_view.h"
+
 namespace {
 
 /// The spring oscillators (k = 40 N/m, m = 1 kg: omega = 6.3 rad/s), as a lesson's one step.
@@ -77,4 +79,72 @@ void TestLessonEditor::staleStepChecksDropped()
     d.setText(0, QStringLiteral("text"), QStringLiteral("en"), QStringLiteral("Watch."));
     QVERIFY(!ed.stepChecks().isRunning());
     QCOMPARE(ed.stepChecks().findings().size(), std::size_t{1});
+}
+
+// Try as a student from the editor, and back: the window shows the way back while that lesson
+// plays (a bar and a key), which raises the editor at the step the student is on; another
+// lesson or a scene opened takes it away.
+void TestLessonEditor::tryAndBackToTheEditor()
+{
+    ui::MainWindow w;
+    w.setUnsavedAsker([] { return int(QMessageBox::Discard); });
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    ui::LessonEditor* ed = w.editLesson(QString());
+    QVERIFY(ed != nullptr);
+    ed->draft().addStep(0);
+    ed->draft().addStep(1);
+    auto* back = w.findChild<QAction*>(QStringLiteral("backToLessonEditor"));
+    QVERIFY(back != nullptr);
+    QVERIFY(!back->isVisible()); // nothing tried yet
+    QCOMPARE(back->shortcuts().value(0), QKeySequence(QStringLiteral("Ctrl+Shift+L")));
+
+    ed->selectStep(1);
+    QTest::mouseClick(ed->findChild<QPushButton*>(QStringLiteral("tryAsStudent")), Qt::LeftButton);
+    QCOMPARE(w.lessonPlayer().stepIndex(), 1);
+    auto* bar = w.findChild<QToolBar*>(QStringLiteral("backToLessonEditorBar"));
+    QVERIFY(bar != nullptr);
+    QVERIFY(bar->isVisible());
+    QVERIFY(back->isVisible());
+    // The student goes on to the last step; the editor, meanwhile, shows the first.
+    w.lessonPlayer().goToStep(2);
+    ed->selectStep(0);
+    auto* button = qobject_cast<QToolButton*>(bar->widgetForAction(back));
+    QVERIFY(button != nullptr);
+    QCOMPARE(button->accessibleName().isEmpty() ? button->text() : button->accessibleName(),
+             QStringLiteral("Back to the lesson editor"));
+    QTest::mouseClick(button, Qt::LeftButton);
+    QCOMPARE(ed->currentStep(), 2);
+    QVERIFY(ed->isVisible());
+    QTRY_COMPARE(QApplication::activeWindow(), static_cast<QWidget*>(ed));
+    QVERIFY(bar->isVisible()); // the lesson still plays: the way back stays
+
+    // The key, from the window (the scene has the focus: a field would take the letter that
+    // QTest sends with Ctrl, which a real keyboard does not).
+    w.lessonPlayer().goToStep(1);
+    QApplication::setActiveWindow(&w); // the editor, a window of the window's, stays active else
+    QTRY_COMPARE(QApplication::activeWindow(), static_cast<QWidget*>(&w));
+    w.view().setFocus();
+    QTest::keyClick(&w.view(), Qt::Key_L, Qt::ControlModifier | Qt::ShiftModifier);
+    QCOMPARE(ed->currentStep(), 1);
+
+    // A scene opened leaves the lesson: no way back.
+    QCOMPARE(w.openScene(kSource + QStringLiteral("/lessons/scenes/spring_oscillator.json"), true),
+             QString());
+    QVERIFY(!bar->isVisible());
+    QVERIFY(!back->isVisible());
+    // Tried again, then another lesson opened: no way back either.
+    QTest::mouseClick(ed->findChild<QPushButton*>(QStringLiteral("tryAsStudent")), Qt::LeftButton);
+    QVERIFY(bar->isVisible());
+    const QStringList shipped = test::shippedLessons();
+    QVERIFY(!shipped.isEmpty());
+    QCOMPARE(w.openLesson(shipped.front(), true), QString());
+    QVERIFY(!bar->isVisible());
+    QVERIFY(!back->isVisible());
+    // Tried again, then the editor closed: nothing to go back to.
+    QTest::mouseClick(ed->findChild<QPushButton*>(QStringLiteral("tryAsStudent")), Qt::LeftButton);
+    QVERIFY(bar->isVisible());
+    ed->draft().undoStack()->setClean(); // nothing to ask about on closing
+    QVERIFY(ed->close());
+    QTRY_VERIFY(!bar->isVisible());
 }
