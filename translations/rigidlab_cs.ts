@@ -344,6 +344,10 @@
         <source>A graph of chosen bodies&apos; quantities against time</source>
         <translation>Graf veličin vybraných těles v závislosti na čase</translation>
     </message>
+    <message>
+        <source>Back to the lesson editor, at the step the student is on (while trying a lesson from it)</source>
+        <translation>Zpět do editoru lekcí, na krok, na kterém je žák (při zkoušení lekce z editoru)</translation>
+    </message>
 </context>
 <context>
     <name>CsvColumns</name>
@@ -3551,6 +3555,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Edit the step&apos;s scene</source>
         <translation>Upravit scénu kroku</translation>
     </message>
+    <message>
+        <source>Step %1: %2</source>
+        <translation>Krok %1: %2</translation>
+    </message>
+    <message>
+        <source>Running the steps&apos; scenes to check them…</source>
+        <translation>Scény kroků se spouštějí ke kontrole…</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonPlayer</name>
@@ -4007,6 +4019,22 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Edi&amp;t lesson…</source>
         <translation>Upravi&amp;t lekci…</translation>
+    </message>
+    <message>
+        <source>&amp;Back to the lesson editor</source>
+        <translation>&amp;Zpět do editoru lekcí</translation>
+    </message>
+    <message>
+        <source>Trying a lesson</source>
+        <translation>Zkoušení lekce</translation>
+    </message>
+    <message>
+        <source>Trying the lesson as a student sees it.</source>
+        <translation>Zkoušíte lekci tak, jak ji vidí žák.</translation>
+    </message>
+    <message>
+        <source>Back to the lesson editor (%1)</source>
+        <translation>Zpět do editoru lekcí (%1)</translation>
     </message>
 </context>
 <context>
@@ -4686,10 +4714,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>The lab measures %1 %3; answers from %2 to %4 %3 are right.</source>
         <translation>Laboratoř naměří %1&#xa0;%3; správně jsou odpovědi od %2 do %4&#xa0;%3.</translation>
     </message>
-    <message>
-        <source>⚠ The integrators a student may choose measure from %1 to %2 %3, wider than the answers judged right: lock the integrator (Shown and locked) or widen the tolerance.</source>
-        <translation>⚠ Integrátory, které si žák může zvolit, naměří od %1 do %2 %3, víc, než kolik pokrývají odpovědi uznané za správné: zamkněte integrátor (Zobrazeno a zamčeno), nebo zvětšete toleranci.</translation>
-    </message>
 </context>
 <context>
     <name>rigidlab::ui::SatPanel</name>
@@ -5035,6 +5059,17 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>%1 The sequential-impulse solver runs instead.</source>
         <translation>%1 Místo něj běží řešič postupných impulsů.</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::StepChecks</name>
+    <message>
+        <source>The step&apos;s simulation, run with its settings, %1.</source>
+        <translation>Simulace kroku spuštěná s jeho nastavením %1.</translation>
+    </message>
+    <message>
+        <source>Question %1: the integrators a student may choose measure from %2 to %3 %4, wider than the answers judged right (%5 to %6 %4): lock the integrator (Shown and locked) or widen the tolerance.</source>
+        <translation>Otázka %1: integrátory, které si žák může zvolit, naměří od %2 do %3 %4, víc, než kolik pokrývají odpovědi uznané za správné (%5 až %6 %4): zamkněte integrátor (Zobrazeno a zamčeno), nebo zvětšete toleranci.</translation>
     </message>
 </context>
 <context>
