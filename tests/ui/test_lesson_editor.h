@@ -13,8 +13,8 @@
 #include "lesson_player/lesson_player.h"
 #include "near.h"
 #include "plots/lesson_export.h"
-#include "test_files.h"
 #include "shipped_lessons.h"
+#include "test_files.h"
 #include "window/main_window.h"
 #include "window/screenshots.h"
 
@@ -24,7 +24,6 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDirIterator>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLabel>
@@ -44,6 +43,7 @@
 #include <memory>
 
 using namespace rigidlab;
+using rigidlab::test::filesUnder;
 using rigidlab::test::writeFile;
 using rigidlab::ui::LessonDraft;
 
