@@ -4036,6 +4036,34 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Back to the lesson editor (%1)</source>
         <translation>Zpět do editoru lekcí (%1)</translation>
     </message>
+    <message>
+        <source>Energy of the compared</source>
+        <translation>Energie porovnávaných světů</translation>
+    </message>
+    <message>
+        <source>Drift of the compared</source>
+        <translation>Drift porovnávaných světů</translation>
+    </message>
+    <message>
+        <source>Inspector</source>
+        <translation>Inspektor</translation>
+    </message>
+    <message>
+        <source>Separating axis test</source>
+        <translation>Test oddělující osy</translation>
+    </message>
+    <message>
+        <source>Axis test</source>
+        <translation>Test os</translation>
+    </message>
+    <message>
+        <source>Bounces</source>
+        <translation>Odrazy</translation>
+    </message>
+    <message>
+        <source>Collision</source>
+        <translation>Srážka</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementImportDialog</name>
@@ -5075,46 +5103,6 @@ B&#xa0;%3 … %4</translation>
 <context>
     <name>rigidlab::ui::StepSettingsEditor</name>
     <message>
-        <source>Energy</source>
-        <translation>Energie</translation>
-    </message>
-    <message>
-        <source>Momentum</source>
-        <translation>Hybnost</translation>
-    </message>
-    <message>
-        <source>Energy drift</source>
-        <translation>Energetický drift</translation>
-    </message>
-    <message>
-        <source>Energy of the compared</source>
-        <translation>Energie porovnávaných světů</translation>
-    </message>
-    <message>
-        <source>Drift of the compared</source>
-        <translation>Drift porovnávaných světů</translation>
-    </message>
-    <message>
-        <source>Controls</source>
-        <translation>Ovládání</translation>
-    </message>
-    <message>
-        <source>Inspector</source>
-        <translation>Inspektor</translation>
-    </message>
-    <message>
-        <source>Separating axes</source>
-        <translation>Oddělující osy</translation>
-    </message>
-    <message>
-        <source>Bounces</source>
-        <translation>Odrazy</translation>
-    </message>
-    <message>
-        <source>Collision</source>
-        <translation>Srážka</translation>
-    </message>
-    <message>
         <source>What the step shows and lets the student change</source>
         <translation>Co krok ukazuje a co smí žák měnit</translation>
     </message>
@@ -5322,31 +5310,6 @@ B&#xa0;%3 … %4</translation>
 </context>
 <context>
     <name>rigidlab::ui::WindowLayout</name>
-    <message>
-        <source>Controls</source>
-        <translation>Ovládání</translation>
-    </message>
-    <message>
-        <source>Inspector</source>
-        <translation>Inspektor</translation>
-    </message>
-    <message>
-        <source>Axis test</source>
-        <comment>short for: separating axis test</comment>
-        <translation>Test os</translation>
-    </message>
-    <message>
-        <source>Separating axis test</source>
-        <translation>Test oddělující osy</translation>
-    </message>
-    <message>
-        <source>Bounces</source>
-        <translation>Odrazy</translation>
-    </message>
-    <message>
-        <source>Collision</source>
-        <translation>Srážka</translation>
-    </message>
     <message>
         <source>Error vs run time</source>
         <translation>Chyba vs. doba běhu</translation>
