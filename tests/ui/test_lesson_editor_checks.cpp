@@ -9,12 +9,15 @@
 
 namespace {
 
-/// The spring oscillators (k = 40 N/m, m = 1 kg: omega = 6.3 rad/s), as a lesson's one step.
-std::optional<lessons::Scene> springs()
+/// A new lesson in `ed` whose one step is the spring oscillators (k = 40 N/m, m = 1 kg:
+/// omega = 6.3 rad/s); false when their scene does not load.
+bool onSprings(ui::LessonEditor& ed)
 {
     const lessons::SceneLoadResult scene =
         lessons::loadSceneFile(kSource + QStringLiteral("/lessons/scenes/spring_oscillator.json"));
-    return scene.ok ? std::optional(scene.scene) : std::nullopt;
+    if (scene.ok)
+        ed.newLesson(scene.scene);
+    return scene.ok;
 }
 
 /// A dt of 0.5 s: omega dt = 3.2, past the 2 beyond which symplectic Euler's oscillation
@@ -28,10 +31,8 @@ QJsonObject hugeDt()
 
 void TestLessonEditor::stepThatDivergesIsMarked()
 {
-    const std::optional<lessons::Scene> scene = springs();
-    QVERIFY(scene);
     ui::LessonEditor ed;
-    ed.newLesson(*scene);
+    QVERIFY(onSprings(ed));
     LessonDraft& d = ed.draft();
     QSignalSpy checked(&ed.stepChecks(), &ui::StepChecks::finished);
     d.addStep(0);
@@ -60,10 +61,8 @@ void TestLessonEditor::stepThatDivergesIsMarked()
 
 void TestLessonEditor::staleStepChecksDropped()
 {
-    const std::optional<lessons::Scene> scene = springs();
-    QVERIFY(scene);
     ui::LessonEditor ed;
-    ed.newLesson(*scene);
+    QVERIFY(onSprings(ed));
     LessonDraft& d = ed.draft();
     QSignalSpy checked(&ed.stepChecks(), &ui::StepChecks::finished);
     // The diverging dt, taken back before its run could be shown: only the calm lesson's
