@@ -11,9 +11,9 @@
 #include "format/lesson_pack.h"
 #include "format/scene_compare.h"
 
+#include "test_files.h"
 #include "test_main.h"
 
-#include <QDirIterator>
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
@@ -24,6 +24,7 @@
 #include <functional>
 
 using namespace rigidlab;
+using rigidlab::test::filesUnder;
 
 class TestLessonPack : public QObject {
     Q_OBJECT
@@ -83,17 +84,6 @@ Run runCli(const QStringList& arguments)
     run.out = cli.readAllStandardOutput();
     run.err = cli.readAllStandardError();
     return run;
-}
-
-/// The files under `folder`, relative to it, sorted.
-QStringList filesUnder(const QString& folder)
-{
-    QStringList files;
-    QDirIterator it(folder, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext())
-        files.append(QDir(folder).relativeFilePath(it.next()));
-    files.sort();
-    return files;
 }
 
 } // namespace

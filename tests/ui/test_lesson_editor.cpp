@@ -46,17 +46,6 @@ QJsonObject parsed(const char* json)
     return QJsonDocument::fromJson(QByteArray(json)).object();
 }
 
-/// The files under `folder`, relative to it, sorted.
-QStringList filesUnder(const QString& folder)
-{
-    QStringList files;
-    QDirIterator it(folder, QDir::Files, QDirIterator::Subdirectories);
-    while (it.hasNext())
-        files.append(QDir(folder).relativeFilePath(it.next()));
-    files.sort();
-    return files;
-}
-
 QByteArray readAll(const QString& path)
 {
     QFile f(path);

@@ -8,10 +8,12 @@
 #include "lesson_editor/lesson_draft.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
+#include "lesson_editor/step_checks.h"
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/lesson_player.h"
 #include "near.h"
 #include "plots/lesson_export.h"
+#include "shipped_lessons.h"
 #include "test_files.h"
 #include "window/main_window.h"
 #include "window/screenshots.h"
@@ -22,23 +24,26 @@
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDirIterator>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QToolBar>
+#include <QToolButton>
 #include <QUndoStack>
 #include <QtTest>
 
 #include <memory>
 
 using namespace rigidlab;
+using rigidlab::test::filesUnder;
 using rigidlab::test::writeFile;
 using rigidlab::ui::LessonDraft;
 
@@ -62,9 +67,14 @@ private slots:
     void widgetsUndoSaveAndTry();
     void widgetsShownAndLocked();
     void widgetsStepSceneFromTheWindow();
-    void toleranceTighterThanIntegrators();
     void widgetsQuestions();
     void screenshotOfTheEditor();
+    // The checks that run the steps, in a worker (they wait on its signal, which lets the
+    // window activate another window: after the tests that type into the editor).
+    void toleranceTighterThanIntegrators();
+    void stepThatDivergesIsMarked();
+    void staleStepChecksDropped();
+    void tryAndBackToTheEditor();
     // Shipped lessons.
     void shippedLessonsOpenAndSaveUnchanged_data();
     void shippedLessonsOpenAndSaveUnchanged();

@@ -121,6 +121,9 @@ inline constexpr std::array kControls{
                 QT_TRANSLATE_NOOP("Controls", "Save the scene under another name")},
     ControlInfo{"openLesson", "Ctrl+L", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Open a lesson")},
+    ControlInfo{"backToLessonEditor", "Ctrl+Shift+L", nullptr,
+                QT_TRANSLATE_NOOP("Controls", "Back to the lesson editor, at the step the student "
+                                              "is on (while trying a lesson from it)")},
     ControlInfo{"importMeasurement", "Ctrl+I", nullptr,
                 QT_TRANSLATE_NOOP("Controls", "Import a measurement (CSV) to compare and fit")},
     ControlInfo{"handIn", "Ctrl+H", nullptr,

@@ -122,12 +122,12 @@ bool LessonDraft::isModified() const
 
 int LessonDraft::stepCount() const
 {
-    return static_cast<int>(m_pack.lesson.value(u"steps").toArray().size());
+    return static_cast<int>(stepArray().size());
 }
 
 QJsonObject LessonDraft::stepObject(int index) const
 {
-    return m_pack.lesson.value(u"steps").toArray().at(index).toObject();
+    return stepArray().at(index).toObject();
 }
 
 QJsonValue LessonDraft::value(int step, const QString& key) const
@@ -165,19 +165,36 @@ void LessonDraft::apply(const lessons::LessonPack& after, const QString& name, i
     m_undo->push(new Edit(*this, m_pack, pruned, name, mergeId));
 }
 
-void LessonDraft::setValue(int step, const QString& key, const QJsonValue& v, const QString& name)
+QJsonArray LessonDraft::stepArray() const
+{
+    return m_pack.lesson.value(u"steps").toArray();
+}
+
+void LessonDraft::applySteps(const QJsonArray& steps, const QString& name)
+{
+    lessons::LessonPack next = m_pack;
+    next.lesson.insert(QStringLiteral("steps"), steps);
+    apply(next, name);
+}
+
+lessons::LessonPack LessonDraft::withValue(int step, const QString& key, const QJsonValue& v) const
 {
     lessons::LessonPack after = m_pack;
     if (step < 0) {
         v.isNull() ? after.lesson.remove(key) : void(after.lesson.insert(key, v));
-    } else {
-        QJsonArray steps = after.lesson.value(u"steps").toArray();
-        QJsonObject object = steps.at(step).toObject();
-        v.isNull() ? object.remove(key) : void(object.insert(key, v));
-        steps[step] = object;
-        after.lesson.insert(QStringLiteral("steps"), steps);
+        return after;
     }
-    apply(after, name);
+    QJsonArray steps = stepArray();
+    QJsonObject object = steps.at(step).toObject();
+    v.isNull() ? object.remove(key) : void(object.insert(key, v));
+    steps[step] = object;
+    after.lesson.insert(QStringLiteral("steps"), steps);
+    return after;
+}
+
+void LessonDraft::setValue(int step, const QString& key, const QJsonValue& v, const QString& name)
+{
+    apply(withValue(step, key, v), name);
 }
 
 void LessonDraft::setText(int step, const QString& key, const QString& language,
@@ -194,26 +211,16 @@ void LessonDraft::setText(int step, const QString& key, const QString& language,
     } else {
         texts.insert(language, newText);
     }
-    lessons::LessonPack after = m_pack;
     const QJsonValue v = texts.isEmpty() ? QJsonValue() : QJsonValue(texts);
     // One undo step for a run of typing into one text.
     const int mergeId = static_cast<int>(
         qHash(QStringLiteral("%1/%2/%3").arg(step).arg(key, language)) & 0x7fffffff);
-    if (step < 0) {
-        v.isNull() ? after.lesson.remove(key) : void(after.lesson.insert(key, v));
-    } else {
-        QJsonArray steps = after.lesson.value(u"steps").toArray();
-        QJsonObject object = steps.at(step).toObject();
-        v.isNull() ? object.remove(key) : void(object.insert(key, v));
-        steps[step] = object;
-        after.lesson.insert(QStringLiteral("steps"), steps);
-    }
-    apply(after, tr("Edit text"), mergeId);
+    apply(withValue(step, key, v), tr("Edit text"), mergeId);
 }
 
 void LessonDraft::addStep(int after)
 {
-    QJsonArray steps = m_pack.lesson.value(u"steps").toArray();
+    QJsonArray steps = stepArray();
     const int at = std::clamp(after + 1, 0, static_cast<int>(steps.size()));
     // The new step starts from the scene of the step before it (the first step's for a new
     // first step).
@@ -224,43 +231,35 @@ void LessonDraft::addStep(int after)
     if (!scene.isUndefined())
         step.insert(QStringLiteral("scene"), scene);
     steps.insert(at, step);
-    lessons::LessonPack next = m_pack;
-    next.lesson.insert(QStringLiteral("steps"), steps);
-    apply(next, tr("Add step"));
+    applySteps(steps, tr("Add step"));
 }
 
 void LessonDraft::removeStep(int index)
 {
-    QJsonArray steps = m_pack.lesson.value(u"steps").toArray();
+    QJsonArray steps = stepArray();
     if (index < 0 || index >= steps.size())
         return;
     steps.removeAt(index);
-    lessons::LessonPack next = m_pack;
-    next.lesson.insert(QStringLiteral("steps"), steps);
-    apply(next, tr("Remove step"));
+    applySteps(steps, tr("Remove step"));
 }
 
 void LessonDraft::moveStep(int from, int to)
 {
-    QJsonArray steps = m_pack.lesson.value(u"steps").toArray();
+    QJsonArray steps = stepArray();
     if (from < 0 || from >= steps.size() || to < 0 || to >= steps.size() || from == to)
         return;
     const QJsonValue moved = steps.takeAt(from);
     steps.insert(to, moved);
-    lessons::LessonPack next = m_pack;
-    next.lesson.insert(QStringLiteral("steps"), steps);
-    apply(next, tr("Move step"));
+    applySteps(steps, tr("Move step"));
 }
 
 void LessonDraft::duplicateStep(int index)
 {
-    QJsonArray steps = m_pack.lesson.value(u"steps").toArray();
+    QJsonArray steps = stepArray();
     if (index < 0 || index >= steps.size())
         return;
     steps.insert(index + 1, steps.at(index));
-    lessons::LessonPack next = m_pack;
-    next.lesson.insert(QStringLiteral("steps"), steps);
-    apply(next, tr("Duplicate step"));
+    applySteps(steps, tr("Duplicate step"));
 }
 
 void LessonDraft::setStepScene(int index, const lessons::Scene& scene)
@@ -294,6 +293,24 @@ LessonDraft::Check LessonDraft::check(const QString& language) const
         check.steps.append(m.hasMatch() ? m.captured(1).toInt() : -1);
     }
     return check;
+}
+
+QByteArray LessonDraft::runKey() const
+{
+    QJsonArray steps;
+    for (const QJsonValue& v : m_pack.lesson.value(u"steps").toArray()) {
+        const QJsonObject step = v.toObject();
+        QJsonObject run;
+        for (const char* key : {"settings", "exportTime", "compare", "allow", "questions"})
+            run.insert(QLatin1String(key), step.value(QLatin1String(key)));
+        // A scene named by its file is the pack's copy of that file.
+        const QJsonValue scene = step.value(u"scene");
+        const auto packed = m_pack.scenes.find(scene.toString());
+        run.insert(QStringLiteral("scene"),
+                   packed != m_pack.scenes.end() ? QJsonValue(packed->second) : scene);
+        steps.append(run);
+    }
+    return QJsonDocument(steps).toJson(QJsonDocument::Compact);
 }
 
 std::optional<lessons::Lesson> LessonDraft::lesson(const QString& language, QString& error) const

@@ -9,6 +9,7 @@
 #include "format/lesson.h"
 #include "format/lesson_pack.h"
 
+#include <QJsonArray>
 #include <QJsonValue>
 #include <QObject>
 #include <QString>
@@ -67,6 +68,9 @@ public:
         QList<int> steps;
     };
     Check check(const QString& language) const;
+    /// What running the steps depends on (their scenes, settings, locks and questions, not
+    /// their texts), as bytes that change exactly when that does.
+    QByteArray runKey() const;
     /// The lesson as the player reads it, or nothing with `error` set.
     std::optional<lessons::Lesson> lesson(const QString& language, QString& error) const;
 
@@ -87,6 +91,11 @@ private:
     class Edit;
     void apply(const lessons::LessonPack& after, const QString& name, int mergeId = -1);
     QJsonObject stepObject(int index) const;
+    QJsonArray stepArray() const;
+    /// The lesson with its steps replaced by `steps`, as one edit named `name`.
+    void applySteps(const QJsonArray& steps, const QString& name);
+    /// The lesson with a key of the lesson (`step` -1) or of a step set (removed when Null).
+    lessons::LessonPack withValue(int step, const QString& key, const QJsonValue& v) const;
 
     lessons::LessonPack m_pack;
     QString m_path;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
+#include "lesson_editor/step_checks.h"
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/step_text.h"
 
@@ -74,6 +75,8 @@ LessonEditor::LessonEditor(QWidget* parent) : QWidget(parent, Qt::Window)
     m_problems->setAccessibleName(tr("Problems of the lesson"));
     layout->addWidget(m_problems);
     buildActions();
+    m_checks = new StepChecks(this);
+    connect(m_checks, &StepChecks::finished, this, &LessonEditor::refresh);
 
     m_autosaveTimer = new QTimer(this);
     m_autosaveTimer->setInterval(kAutosaveMs);

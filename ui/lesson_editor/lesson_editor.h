@@ -27,6 +27,7 @@ class QTimer;
 namespace rigidlab::ui {
 
 class QuestionEditor;
+class StepChecks;
 class StepSettingsEditor;
 class StepText;
 
@@ -44,6 +45,8 @@ public:
     int currentStep() const;
     QuestionEditor& questions() { return *m_questions; }
     StepSettingsEditor& stepSettings() { return *m_settings; }
+    /// The checks that run the steps' scenes (divergence, integrators' spread), in a worker.
+    StepChecks& stepChecks() { return *m_checks; }
     void selectStep(int index);
 
     /// Save: to the lesson's file, or asks where when it has none. Returns the error.
@@ -89,7 +92,10 @@ private:
     void refreshStepTexts();
     void updateTitle();
     /// What the step list says after a step's title: its missing languages and problems.
-    QString stepMarks(int index, const LessonDraft::Check& check) const;
+    QString stepMarks(int index, const LessonDraft::Check& check,
+                      const QStringList& runLines) const;
+    /// The steps' runs checked again (in the worker) when what they depend on changed.
+    void checkRuns();
     void textEdited(int step, const QString& key, int language, const QString& text);
 
     LessonDraft m_draft;
@@ -106,6 +112,7 @@ private:
     QLabel* m_problems = nullptr;
     QuestionEditor* m_questions = nullptr;
     StepSettingsEditor* m_settings = nullptr;
+    StepChecks* m_checks = nullptr;
     QAction* m_undo = nullptr;
     QAction* m_redo = nullptr;
     QTimer* m_autosaveTimer = nullptr;

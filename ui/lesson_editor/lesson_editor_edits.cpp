@@ -3,6 +3,7 @@
 // read back from the draft after each one (an edit, an undo, a redo, an open).
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
+#include "lesson_editor/step_checks.h"
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/step_text.h"
 
@@ -225,7 +226,8 @@ void LessonEditor::refreshLesson()
     m_minutes->setValue(m_draft.value(-1, QStringLiteral("minutes")).toInt());
 }
 
-QString LessonEditor::stepMarks(int index, const LessonDraft::Check& check) const
+QString LessonEditor::stepMarks(int index, const LessonDraft::Check& check,
+                                const QStringList& runLines) const
 {
     QStringList marks;
     for (const QString& key : {QStringLiteral("title"), QStringLiteral("text")})
@@ -234,26 +236,44 @@ QString LessonEditor::stepMarks(int index, const LessonDraft::Check& check) cons
             if (!marks.contains(m))
                 marks.append(m);
         }
-    const qsizetype problems = check.steps.count(index);
+    const qsizetype problems = check.steps.count(index) + runLines.size();
     if (problems > 0)
         marks.append(tr("%n problem(s)", nullptr, static_cast<int>(problems)));
     return marks.join(QStringLiteral(", "));
 }
 
+void LessonEditor::checkRuns()
+{
+    QString error;
+    const std::optional<lessons::Lesson> lesson = m_draft.lesson(shownLanguage(), error);
+    if (lesson)
+        m_checks->check(*lesson, m_draft.runKey());
+    else
+        m_checks->clear();
+}
+
 void LessonEditor::refreshSteps()
 {
     const LessonDraft::Check check = m_draft.check(shownLanguage());
+    checkRuns();
+    const std::vector<StepFinding>& findings = m_checks->findings();
     const int keep = currentStep();
     const QIcon warn = style()->standardIcon(QStyle::SP_MessageBoxWarning);
     while (m_steps->count() > m_draft.stepCount())
         delete m_steps->takeItem(m_steps->count() - 1);
     while (m_steps->count() < m_draft.stepCount())
         m_steps->addItem(QString());
+    QStringList runProblems;
     for (int i = 0; i < m_draft.stepCount(); ++i) {
         QString title = m_draft.text(i, QStringLiteral("title"), shownLanguage());
         if (title.isEmpty())
             title = m_draft.text(i, QStringLiteral("title"), codeOf(shownLanguage() == u"cs"));
-        const QString marks = stepMarks(i, check);
+        const QStringList runLines = i < static_cast<int>(findings.size())
+                                         ? stepCheckLines(findings[static_cast<std::size_t>(i)])
+                                         : QStringList();
+        for (const QString& line : runLines)
+            runProblems.append(tr("Step %1: %2").arg(i + 1).arg(line));
+        const QString marks = stepMarks(i, check, runLines);
         QListWidgetItem* item = m_steps->item(i);
         item->setText(marks.isEmpty() ? QStringLiteral("%1. %2").arg(i + 1).arg(title)
                                       : tr("%1. %2 — ⚠ %3").arg(i + 1).arg(title, marks));
@@ -266,14 +286,18 @@ void LessonEditor::refreshSteps()
             if (check.steps[k] == i)
                 lines.append(line);
         }
-        item->setToolTip(lines.join(u'\n'));
+        item->setToolTip((lines + runLines).join(u'\n'));
     }
     m_steps->setCurrentRow(std::clamp(keep, 0, m_draft.stepCount() - 1));
     QStringList all;
     if (!check.error.isEmpty())
         all.append(check.error);
     all.append(check.warnings);
-    m_problems->setText(all.isEmpty() ? tr("No problems found.") : all.join(u'\n'));
+    all.append(runProblems);
+    QString text = all.isEmpty() ? tr("No problems found.") : all.join(u'\n');
+    if (m_checks->isRunning())
+        text += u'\n' + tr("Running the steps' scenes to check them…");
+    m_problems->setText(text);
 }
 
 void LessonEditor::refreshStepTexts()

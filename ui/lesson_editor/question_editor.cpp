@@ -29,31 +29,6 @@ namespace rigidlab::ui {
 
 namespace {
 
-/// What the measured quantity reads with each integrator (those whose run gets there): the
-/// least and the greatest; nothing when none does.
-std::optional<std::pair<double, double>> integratorSpread(const lessons::LessonStep& step,
-                                                          const lessons::Measure& measure)
-{
-    std::optional<std::pair<double, double>> range;
-    for (const physics::IntegratorKind kind : physics::kAllIntegrators) {
-        lessons::LessonStep variant = step;
-        variant.settings.integrator = kind;
-        if (const std::optional<double> v = lessons::measureAhead(variant, measure)) {
-            if (!range)
-                range = std::pair(*v, *v);
-            range->first = std::min(range->first, *v);
-            range->second = std::max(range->second, *v);
-        }
-    }
-    return range;
-}
-
-/// Whether the step keeps the student from changing the integrator.
-bool lockedIntegrator(const lessons::LessonStep& step)
-{
-    return step.allow && !step.allow->contains(QStringLiteral("integrator"));
-}
-
 struct Kind {
     const char* id;
     const char* name;
@@ -405,15 +380,8 @@ void QuestionEditor::showAnswer()
     QString text = tr("The lab measures %1 %3; answers from %2 to %4 %3 are right.")
                        .arg(locale.toString(*value, 'g', 4), locale.toString(*value - band, 'g', 4),
                             q.unit, locale.toString(*value + band, 'g', 4));
-    // A student who may choose the integrator must not be marked wrong for choosing another.
-    if (const auto spread = integratorSpread(lessons::askedStep(step, q), q.measure);
-        spread && !lockedIntegrator(step) && spread->second - spread->first > band) {
-        text += u'\n' + tr("⚠ The integrators a student may choose measure from %1 to %2 %3, "
-                           "wider than the answers judged right: lock the integrator (Shown and "
-                           "locked) or widen the tolerance.")
-                            .arg(locale.toString(spread->first, 'g', 4),
-                                 locale.toString(spread->second, 'g', 4), q.unit);
-    }
+    // Whether the integrators a student may choose measure wider apart than this is said in
+    // the step's problems (lesson_editor/step_checks.h): those runs take a worker thread.
     m_answer->setText(lessons::keepUnitsTogether(text));
 }
 

@@ -2,6 +2,8 @@
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_editor/lesson_draft.h"
 
+#include "common/step_part_names.h"
+
 #include "format/lesson.h"
 #include "format/scene_schema.h"
 
@@ -24,28 +26,13 @@ QString qs(std::string_view s)
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-/// The step's plots and panels in words, in the order of the format's lists.
-std::vector<std::pair<std::string_view, QString>> plotNames()
+/// The step's plots or panels in words, as the window titles them (one table for both).
+std::vector<std::pair<std::string_view, QString>>
+partNames(const std::array<StepPartName, 5>& table)
 {
-    const std::array<QString, 5> words{
-        StepSettingsEditor::tr("Energy"), StepSettingsEditor::tr("Momentum"),
-        StepSettingsEditor::tr("Energy drift"), StepSettingsEditor::tr("Energy of the compared"),
-        StepSettingsEditor::tr("Drift of the compared")};
     std::vector<std::pair<std::string_view, QString>> out;
-    for (std::size_t i = 0; i < lessons::kStepPlotNames.size(); ++i)
-        out.emplace_back(lessons::kStepPlotNames[i], words[i]);
-    return out;
-}
-
-std::vector<std::pair<std::string_view, QString>> panelNames()
-{
-    const std::array<QString, 5> words{
-        StepSettingsEditor::tr("Controls"), StepSettingsEditor::tr("Inspector"),
-        StepSettingsEditor::tr("Separating axes"), StepSettingsEditor::tr("Bounces"),
-        StepSettingsEditor::tr("Collision")};
-    std::vector<std::pair<std::string_view, QString>> out;
-    for (std::size_t i = 0; i < lessons::kStepPanelNames.size(); ++i)
-        out.emplace_back(lessons::kStepPanelNames[i], words[i]);
+    for (const StepPartName& part : table)
+        out.emplace_back(part.name, stepPartText(part.title));
     return out;
 }
 
@@ -70,8 +57,9 @@ StepSettingsEditor::StepSettingsEditor(LessonDraft& draft, QWidget* parent)
     setAccessibleName(tr("What the step shows and lets the student change"));
     auto* layout = new QVBoxLayout(this);
     auto* row = new QHBoxLayout;
-    row->addWidget(group(tr("Plots shown"), QStringLiteral("plots"), plotNames()));
-    row->addWidget(group(tr("Panels shown"), QStringLiteral("panels"), panelNames()));
+    row->addWidget(group(tr("Plots shown"), QStringLiteral("plots"), partNames(kStepPlotTitles)));
+    row->addWidget(
+        group(tr("Panels shown"), QStringLiteral("panels"), partNames(kStepPanelTitles)));
     row->addWidget(group(tr("The student may change (unticked: locked)"), QStringLiteral("allow"),
                          controlNames()));
     layout->addLayout(row);

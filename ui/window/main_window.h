@@ -10,6 +10,7 @@
 
 #include <QList>
 #include <QMainWindow>
+#include <QPointer>
 #include <QString>
 
 #include <array>
@@ -23,6 +24,7 @@ class QLabel;
 class QMenu;
 class QSettings;
 class QSlider;
+class QToolBar;
 
 namespace rigidlab::lessons {
 struct Lesson;
@@ -104,6 +106,9 @@ public:
     /// scene being edited when empty); Try as a student plays its lesson here. Returns it, or
     /// nullptr with `error` set when the lesson does not open.
     LessonEditor* editLesson(const QString& path, QString* error = nullptr);
+    /// While a lesson tried from the lesson editor plays: raises the editor with the step the
+    /// student is on selected (the bar above the docks, File › Back to the lesson editor).
+    void backToLessonEditor();
     SatPanel& satPanel() { return *m_sat; }
     BouncePanel& bouncePanel() { return *m_bounces; }
     CollisionPanel& collisionPanel() { return *m_collision; }
@@ -175,6 +180,10 @@ private:
     void buildFileMenu();
     /// File › New lesson and Edit lesson…: the lesson editor (window_lesson_editor.cpp).
     void addLessonEditorEntries(QMenu& file);
+    /// The way back to `editor` shown while the lesson tried from it plays; hidden again when
+    /// another lesson or a scene opens, or the editor closes (window_lesson_editor.cpp).
+    void showWayBack(LessonEditor* editor);
+    void hideWayBack();
     void buildEditMenu();
     void buildViewMenu();
     void buildHelpMenu();
@@ -213,6 +222,12 @@ private:
     Instruments* m_instruments = nullptr;        ///< ruler, protractor, stopwatch, probe
     QMenu* m_viewMenu = nullptr;
     QAction* m_presentAction = nullptr;
+    // Try as a student: the editor the lesson playing was tried from, the lesson's file, and
+    // the way back (the bar is made at the first try, so that no saved layout shows it).
+    QPointer<LessonEditor> m_triedFrom;
+    QString m_triedPath;
+    QAction* m_backToEditor = nullptr;
+    QToolBar* m_backBar = nullptr;
 };
 
 } // namespace rigidlab::ui

@@ -47,8 +47,13 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
     // Short dock titles, whole on their tabs; the full ones in tooltips.
     keepDockTabsWhole(window);
     buildLessonDock(panels);
-    addDock(tr("Controls"), QStringLiteral("controls"), panels.controls, Qt::RightDockWidgetArea);
-    addDock(tr("Inspector"), QStringLiteral("inspector"), panels.inspector,
+    // The panels a lesson step may show, titled from the one table the lesson editor reads.
+    const auto panelTitle = [](std::size_t i, bool full) {
+        return stepPartText(full ? kStepPanelTitles[i].title : kStepPanelTitles[i].shortTitle);
+    };
+    addDock(panelTitle(0, false), QStringLiteral("controls"), panels.controls,
+            Qt::RightDockWidgetArea);
+    addDock(panelTitle(1, false), QStringLiteral("inspector"), panels.inspector,
             Qt::RightDockWidgetArea);
     static_assert(kPlotNames.size() == std::tuple_size_v<decltype(panels.plots)>);
     for (std::size_t i = 0; i < kPlotNames.size(); ++i) {
@@ -59,12 +64,14 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
         addDock(windowNameText(kPlotNames[i].shortTitle), QLatin1String(kPlotNames[i].name), plot,
                 Qt::RightDockWidgetArea, windowNameText(kPlotNames[i].title));
     }
-    addDock(tr("Axis test", "short for: separating axis test"), QStringLiteral("sat"), panels.sat,
-            Qt::RightDockWidgetArea, tr("Separating axis test"))
+    addDock(panelTitle(2, false), QStringLiteral("sat"), panels.sat, Qt::RightDockWidgetArea,
+            panelTitle(2, true))
         ->hide();
-    addDock(tr("Bounces"), QStringLiteral("bounces"), panels.bounces, Qt::RightDockWidgetArea)
+    addDock(panelTitle(3, false), QStringLiteral("bounces"), panels.bounces,
+            Qt::RightDockWidgetArea)
         ->hide();
-    addDock(tr("Collision"), QStringLiteral("collision"), panels.collision, Qt::RightDockWidgetArea)
+    addDock(panelTitle(4, false), QStringLiteral("collision"), panels.collision,
+            Qt::RightDockWidgetArea)
         ->hide();
     // The work-precision sweep, hidden until asked for (View menu).
     addDock(tr("Error vs run time"), QStringLiteral("errorDock"), panels.error,

@@ -1,19 +1,26 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's way into the lesson editor: File › New lesson and Edit lesson…, and Try as a
-// student, which plays the editor's lesson here from its selected step.
+// student, which plays the editor's lesson here from its selected step, with a way back to
+// the editor at the step the student is on while that lesson plays.
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_player/lesson_player.h"
+#include "window/lesson_session.h"
 #include "window/main_window.h"
 #include "window/window_documents.h"
+
+#include "common/shortcuts.h"
 
 #include "format/data_dirs.h"
 
 #include <QAction>
 #include <QFileDialog>
+#include <QFileInfo>
+#include <QLabel>
 #include <QMenu>
 #include <QMessageBox>
+#include <QToolBar>
 
 namespace rigidlab::ui {
 
@@ -29,6 +36,64 @@ void MainWindow::addLessonEditorEntries(QMenu& file)
             QMessageBox::warning(this, tr("Edit lesson"), error);
     });
     edit->setObjectName(QStringLiteral("editLesson"));
+    m_backToEditor =
+        file.addAction(tr("&Back to the lesson editor"), this, &MainWindow::backToLessonEditor);
+    m_backToEditor->setObjectName(QStringLiteral("backToLessonEditor"));
+    m_backToEditor->setShortcuts(controlKeys("backToLessonEditor"));
+    m_backToEditor->setVisible(false); // only while a lesson tried from the editor plays
+    // Another lesson, or a scene (which leaves the lesson), ends the try.
+    // (The action is the context: a window being destroyed has deleted it before the
+    // editor, its child too, whose end would otherwise reach a half-destroyed window.)
+    connect(m_session, &LessonSession::left, m_backToEditor, [this] { hideWayBack(); });
+    connect(m_player, &LessonPlayer::stepActivated, m_backToEditor,
+            [this](const lessons::Lesson& lesson) {
+                if (m_triedFrom && lesson.path != m_triedPath)
+                    hideWayBack();
+            });
+}
+
+void MainWindow::showWayBack(LessonEditor* editor)
+{
+    m_triedFrom = editor;
+    m_triedPath = m_player->lesson() ? m_player->lesson()->path : QString();
+    if (m_backBar == nullptr) {
+        m_backBar = new QToolBar(tr("Trying a lesson"), this);
+        m_backBar->setObjectName(QStringLiteral("backToLessonEditorBar"));
+        m_backBar->setMovable(false);
+        m_backBar->toggleViewAction()->setVisible(false);
+        m_backBar->setToolButtonStyle(Qt::ToolButtonTextOnly);
+        auto* note = new QLabel(tr("Trying the lesson as a student sees it."), m_backBar);
+        note->setContentsMargins(6, 0, 12, 0);
+        m_backBar->addWidget(note);
+        m_backBar->addAction(m_backToEditor);
+        addToolBarBreak(Qt::TopToolBarArea);
+        addToolBar(Qt::TopToolBarArea, m_backBar);
+    }
+    const QString keys = m_backToEditor->shortcut().toString(QKeySequence::NativeText);
+    m_backToEditor->setToolTip(tr("Back to the lesson editor (%1)").arg(keys));
+    m_backToEditor->setVisible(true);
+    m_backBar->show();
+}
+
+void MainWindow::hideWayBack()
+{
+    m_triedFrom = nullptr;
+    m_triedPath.clear();
+    m_backToEditor->setVisible(false);
+    if (m_backBar != nullptr)
+        m_backBar->hide();
+}
+
+void MainWindow::backToLessonEditor()
+{
+    if (!m_triedFrom) {
+        hideWayBack();
+        return;
+    }
+    m_triedFrom->selectStep(m_player->stepIndex());
+    m_triedFrom->show();
+    m_triedFrom->raise();
+    m_triedFrom->activateWindow();
 }
 
 LessonEditor* MainWindow::editLesson(const QString& path, QString* error)
@@ -46,12 +111,18 @@ LessonEditor* MainWindow::editLesson(const QString& path, QString* error)
             return nullptr;
         }
     }
-    connect(editor, &LessonEditor::tryAsStudent, this, [this](const QString& file, int step) {
-        if (!openLesson(file, true).isEmpty())
-            return; // openLesson said what is wrong
-        m_player->goToStep(step);
-        raise();
-        activateWindow();
+    connect(editor, &LessonEditor::tryAsStudent, this,
+            [this, editor](const QString& file, int step) {
+                if (!openLesson(file, true).isEmpty())
+                    return; // openLesson said what is wrong
+                m_player->goToStep(step);
+                showWayBack(editor);
+                raise();
+                activateWindow();
+            });
+    connect(editor, &QObject::destroyed, m_backToEditor, [this, editor] {
+        if (!m_triedFrom || m_triedFrom.data() == editor)
+            hideWayBack(); // the editor closed: there is nothing to go back to
     });
     // The step's scene drawn in this window's scene editor, and taken back from it.
     connect(editor, &LessonEditor::editStepScene, this, [this](const lessons::Scene& scene) {

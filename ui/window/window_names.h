@@ -5,6 +5,7 @@
 // format's lists, lessons/format/lesson.h) and the key that toggles it. Every part of
 // the window that names an overlay or a plot reads it from here.
 
+#include "common/step_part_names.h"
 #include "view/overlays.h"
 
 #include "format/lesson.h"
@@ -77,15 +78,12 @@ struct PlotNames {
     const char* shortTitle; ///< the dock's title (its tab on a narrow column), likewise
 };
 
-/// The window's standard plots, in the order of MainWindow::plot(index).
+/// The window's standard plots, in the order of MainWindow::plot(index): the first of the
+/// step's plots (common/step_part_names.h).
 inline constexpr std::array<PlotNames, 3> kPlotNames{{
-    {lessons::kStepPlotNames[0].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy")},
-    {lessons::kStepPlotNames[1].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum")},
-    {lessons::kStepPlotNames[2].data(),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy drift"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Drift")},
+    {kStepPlotTitles[0].name, kStepPlotTitles[0].title, kStepPlotTitles[0].shortTitle},
+    {kStepPlotTitles[1].name, kStepPlotTitles[1].title, kStepPlotTitles[1].shortTitle},
+    {kStepPlotTitles[2].name, kStepPlotTitles[2].title, kStepPlotTitles[2].shortTitle},
 }};
 
 } // namespace rigidlab::ui

@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lesson_editor/step_checks.h"
+
+#include "format/divergence_message.h"
+#include "run/measurements.h"
+
+#include "rigidlab/physics/integrator.h"
+#include "rigidlab/physics/world.h"
+
+#include <QLocale>
+#include <QThread>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// How many steps the divergence run takes between looks at whether it was cancelled.
+constexpr long long kStepsBetweenLooks = 256;
+
+/// How long the step is run for: its export time, or its questions' latest time [s].
+double runLength(const lessons::LessonStep& step)
+{
+    double until = step.exportTime;
+    for (const lessons::Question& q : step.questions)
+        until = std::max(until, q.measure.time);
+    return until;
+}
+
+/// The step's main world run with the step's settings for runLength(); its divergence, if
+/// any (nothing, too, when cancelled).
+std::optional<physics::Divergence> runForDivergence(const lessons::LessonStep& step,
+                                                    const std::atomic_bool& cancelled)
+{
+    std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
+    if (worlds.empty())
+        return std::nullopt;
+    physics::World& world = worlds.front();
+    const auto steps = static_cast<long long>(std::ceil(runLength(step) / world.def().dt));
+    world.updateDiagnostics(); // the energy at the start, which growth is measured against
+    for (long long i = 0; i < steps && !world.divergence(); ++i) {
+        if (i % kStepsBetweenLooks == 0 && cancelled.load())
+            return std::nullopt;
+        world.step();
+    }
+    return world.divergence();
+}
+
+/// Whether the step keeps the student from changing the integrator.
+bool lockedIntegrator(const lessons::LessonStep& step)
+{
+    return step.allow && !step.allow->contains(QStringLiteral("integrator"));
+}
+
+/// What question `index` reads with each integrator, when that is wider than the answers
+/// judged right: a student who may choose the integrator must not be marked wrong for it.
+std::optional<StepFinding::Spread> spreadOf(const lessons::LessonStep& step, int index,
+                                            const std::atomic_bool& cancelled)
+{
+    const lessons::Question& q = step.questions[static_cast<std::size_t>(index)];
+    // Measured on the run the question asks for; an integrator it asks for is not the
+    // student's to choose.
+    if (q.set.integrator)
+        return std::nullopt;
+    const lessons::LessonStep asked = lessons::askedStep(step, q);
+    const std::optional<double> value = lessons::measureAhead(asked, q.measure);
+    if (!value)
+        return std::nullopt;
+    StepFinding::Spread spread{
+        index, *value, *value, *value, std::abs(*value) * q.tolerance + q.absoluteTolerance,
+        q.unit};
+    for (const physics::IntegratorKind kind : physics::kAllIntegrators) {
+        if (cancelled.load())
+            return std::nullopt;
+        lessons::LessonStep variant = asked;
+        variant.settings.integrator = kind;
+        if (const std::optional<double> v = lessons::measureAhead(variant, q.measure)) {
+            spread.low = std::min(spread.low, *v);
+            spread.high = std::max(spread.high, *v);
+        }
+    }
+    if (spread.high - spread.low <= spread.band)
+        return std::nullopt;
+    return spread;
+}
+
+} // namespace
+
+std::vector<StepFinding> runStepChecks(const lessons::Lesson& lesson,
+                                       const std::atomic_bool& cancelled)
+{
+    std::vector<StepFinding> findings;
+    for (const lessons::LessonStep& step : lesson.steps) {
+        if (cancelled.load())
+            break;
+        StepFinding finding;
+        finding.divergence = runForDivergence(step, cancelled);
+        if (finding.divergence)
+            finding.bodyLabel = step.scene.bodyLabel(finding.divergence->body);
+        if (!lockedIntegrator(step))
+            for (int i = 0; i < static_cast<int>(step.questions.size()); ++i)
+                if (auto spread = spreadOf(step, i, cancelled))
+                    finding.spreads.push_back(*spread);
+        findings.push_back(std::move(finding));
+    }
+    return findings;
+}
+
+QStringList stepCheckLines(const StepFinding& finding)
+{
+    const QLocale locale;
+    QStringList lines;
+    if (finding.divergence)
+        lines.append(
+            StepChecks::tr("The step's simulation, run with its settings, %1.")
+                .arg(lessons::divergenceMessage(*finding.divergence, finding.bodyLabel, locale)));
+    for (const StepFinding::Spread& s : finding.spreads)
+        lines.append(StepChecks::tr("Question %1: the integrators a student may choose measure "
+                                    "from %2 to %3 %4, wider than the answers judged right "
+                                    "(%5 to %6 %4): lock the integrator (Shown and locked) or "
+                                    "widen the tolerance.")
+                         .arg(s.question + 1)
+                         .arg(locale.toString(s.low, 'g', 4), locale.toString(s.high, 'g', 4),
+                              s.unit, locale.toString(s.value - s.band, 'g', 4),
+                              locale.toString(s.value + s.band, 'g', 4)));
+    for (QString& line : lines)
+        line = lessons::keepUnitsTogether(line);
+    return lines;
+}
+
+StepChecks::StepChecks(QObject* parent) : QObject(parent) {}
+
+StepChecks::~StepChecks()
+{
+    // Closing the editor mid-check: the runs stop at their next look, and are waited for.
+    if (m_thread) {
+        m_cancelled->store(true);
+        m_thread->wait();
+        delete m_thread;
+    }
+}
+
+void StepChecks::check(const lessons::Lesson& lesson, const QByteArray& key)
+{
+    if (key == m_key)
+        return;
+    m_key = key;
+    m_findings.clear(); // they were of the lesson before this edit
+    m_pending = lesson;
+    if (m_thread) {
+        m_cancelled->store(true); // the next check starts once this one stopped
+        return;
+    }
+    start();
+}
+
+void StepChecks::clear()
+{
+    m_key.clear();
+    m_pending.reset();
+    m_findings.clear();
+    if (m_thread)
+        m_cancelled->store(true);
+}
+
+void StepChecks::start()
+{
+    m_cancelled = std::make_shared<std::atomic_bool>(false);
+    m_thread = QThread::create([this, lesson = std::move(*m_pending), cancelled = m_cancelled] {
+        m_result = runStepChecks(lesson, *cancelled);
+    });
+    m_pending.reset();
+    connect(m_thread, &QThread::finished, this, &StepChecks::threadDone);
+    m_thread->start(QThread::LowPriority);
+}
+
+void StepChecks::threadDone()
+{
+    m_thread->deleteLater();
+    m_thread = nullptr;
+    std::vector<StepFinding> result = std::move(m_result);
+    m_result.clear();
+    if (m_pending) {
+        start(); // the lesson changed while this ran: its result is of an older lesson
+        return;
+    }
+    if (m_cancelled->load())
+        return;
+    m_findings = std::move(result);
+    emit finished();
+}
+
+} // namespace rigidlab::ui
