@@ -61,9 +61,19 @@ struct Measure {
     double time = 0;  ///< the others: when the value is read [s]
 };
 
+/// The fewest and the most options a choice question offers.
+inline constexpr int kMinChoices = 2;
+inline constexpr int kMaxChoices = 6;
+
+/// A question answered by a number measured from the run (`measure`, `unit`, tolerances) or,
+/// when `choices` is not empty, by picking one of a few texts.
 struct Question {
-    QString prompt; ///< plain text, shown above the answer box
-    Measure measure;
+    QString prompt;  ///< plain text, shown above the answer box (or the options)
+    Measure measure; ///< a measured question's; unused by a choice question
+    /// A choice question's options, in the language the lesson is kept in; empty: the
+    /// question is a measured one.
+    QStringList choices;
+    int answer = 0;                 ///< the right one of `choices` (0-based)
     QString unit;                   ///< shown after the answer box, e.g. "m"
     double tolerance = 0.05;        ///< relative to the measured value
     double absoluteTolerance = 0.0; ///< added to it, for values near zero
@@ -74,6 +84,8 @@ struct Question {
     /// answered right, twice wrong or shown: "run", "panel:NAME", "plot:NAME",
     /// "column:collision.after", "column:bounces.heights" (LESSON_FORMAT.md).
     QStringList holdBack;
+
+    bool isChoice() const { return !choices.isEmpty(); }
 };
 
 /// The names a question may hold back, besides "panel:" and "plot:" with a panel or plot the

@@ -366,6 +366,7 @@ void LessonPlayer::showStep()
     m_export->setEnabled(!s.plots.isEmpty());
     showHandIn();
     buildQuestions();
+    replayRecordedTries(); // a step come back to is as the student left it
     fitIntroduction();
     // A new step is read from its top.
     if (QScrollArea* scroll = scrollArea())
