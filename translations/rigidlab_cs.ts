@@ -1075,6 +1075,42 @@
         <source>none</source>
         <translation>žádné</translation>
     </message>
+    <message>
+        <source>not with &quot;choice&quot;: a try either chooses an option or gives a number</source>
+        <translation>nepatří k &quot;choice&quot;: pokus buď volí možnost, nebo udává číslo</translation>
+    </message>
+    <message>
+        <source>must be the option&apos;s text, 1 to %1 characters</source>
+        <translation>musí být text možnosti, 1 až %1 znaků</translation>
+    </message>
+    <message>
+        <source>only with &quot;choice&quot; (the option chosen)</source>
+        <translation>jen spolu s &quot;choice&quot; (zvolenou možností)</translation>
+    </message>
+    <message>
+        <source>required with &quot;answer&quot;, but missing (the options to choose from)</source>
+        <translation>povinné spolu s &quot;answer&quot;, ale chybí (možnosti, ze kterých se volí)</translation>
+    </message>
+    <message>
+        <source>not for a question with &quot;choices&quot;: it is answered by choosing, nothing is measured</source>
+        <translation>nepatří k otázce s &quot;choices&quot;: odpovídá se na ni výběrem, nic se neměří</translation>
+    </message>
+    <message>
+        <source>must be an array of %1 to %2 options, each a text &quot;...&quot; or {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, got </source>
+        <translation>musí být pole %1 až %2 možností, každá text &quot;...&quot; nebo {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, je </translation>
+    </message>
+    <message>
+        <source>options</source>
+        <translation>možnosti</translation>
+    </message>
+    <message>
+        <source>%1 options, fewer than the %2 a choice needs</source>
+        <translation>počet možností %1 je menší než %2, kolik otázka s výběrem potřebuje</translation>
+    </message>
+    <message>
+        <source>required, but missing (the index of the right option, 0 for the first)</source>
+        <translation>povinné, ale chybí (pořadí správné možnosti, 0 pro první)</translation>
+    </message>
 </context>
 <context>
     <name>ImpulseFormula</name>
@@ -1172,6 +1208,26 @@
     <message>
         <source>When it runs, the simulation will measure %1.</source>
         <translation>Až simulace poběží, naměří %1.</translation>
+    </message>
+    <message>
+        <source>The right answer: “%1”.</source>
+        <translation>Správná odpověď: „%1“.</translation>
+    </message>
+    <message>
+        <source>Not quite (you chose “%1”). Try once more.</source>
+        <translation>Ne tak docela (vaše volba: „%1“). Zkuste to ještě jednou.</translation>
+    </message>
+    <message>
+        <source>Not quite (you chose “%1”). Hint: %2</source>
+        <translation>Ne tak docela (vaše volba: „%1“). Nápověda: %2</translation>
+    </message>
+    <message>
+        <source>Right: “%1”.</source>
+        <translation>Správně: „%1“.</translation>
+    </message>
+    <message>
+        <source>Not quite: the right answer is “%1” (you chose “%2”).</source>
+        <translation>Ne tak docela: správná odpověď je „%1“ (vaše volba: „%2“).</translation>
     </message>
 </context>
 <context>
@@ -1850,6 +1906,10 @@ n = (%4; %5)</translation>
         <source>cannot write %1: could not start drawing the PDF</source>
         <translation>nelze zapsat %1: kreslení PDF nešlo začít</translation>
     </message>
+    <message>
+        <source>Right answer: “%1”</source>
+        <translation>Správná odpověď: „%1“</translation>
+    </message>
 </context>
 <context>
     <name>WorksheetText</name>
@@ -2155,6 +2215,53 @@ n = (%4; %5)</translation>
     <message>
         <source>Bounce heights</source>
         <translation>Výšky odskoků</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::ChoiceEditor</name>
+    <message>
+        <source>O&amp;ptions (Czech and English)</source>
+        <translation>&amp;Možnosti (česky a anglicky)</translation>
+    </message>
+    <message>
+        <source>Options of the choice</source>
+        <translation>Možnosti výběru</translation>
+    </message>
+    <message>
+        <source>Czech</source>
+        <translation>Česky</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>Anglicky</translation>
+    </message>
+    <message>
+        <source>Add o&amp;ption</source>
+        <translation>Přidat mo&amp;žnost</translation>
+    </message>
+    <message>
+        <source>Remove option</source>
+        <translation>Odebrat možnost</translation>
+    </message>
+    <message>
+        <source>Option up</source>
+        <translation>Možnost nahoru</translation>
+    </message>
+    <message>
+        <source>Option down</source>
+        <translation>Možnost dolů</translation>
+    </message>
+    <message>
+        <source>The right option</source>
+        <translation>Správná možnost</translation>
+    </message>
+    <message>
+        <source>&amp;Right option</source>
+        <translation>&amp;Správná možnost</translation>
+    </message>
+    <message>
+        <source>Option %1</source>
+        <translation>Možnost %1</translation>
     </message>
 </context>
 <context>
@@ -3750,6 +3857,18 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>your answer, in %1</source>
         <translation>vaše odpověď, v&#xa0;jednotkách %1</translation>
     </message>
+    <message>
+        <source>Check the option chosen</source>
+        <translation>Zkontrolovat zvolenou možnost</translation>
+    </message>
+    <message>
+        <source>Give up and show the right answer</source>
+        <translation>Vzdát to a ukázat správnou odpověď</translation>
+    </message>
+    <message>
+        <source>Choose an answer first.</source>
+        <translation>Nejdřív zvolte odpověď.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonSession</name>
@@ -4689,6 +4808,30 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>⚠ The integrators a student may choose measure from %1 to %2 %3, wider than the answers judged right: lock the integrator (Shown and locked) or widen the tolerance.</source>
         <translation>⚠ Integrátory, které si žák může zvolit, naměří od %1 do %2 %3, víc, než kolik pokrývají odpovědi uznané za správné: zamkněte integrátor (Zobrazeno a zamčeno), nebo zvětšete toleranci.</translation>
+    </message>
+    <message>
+        <source>Kind of question</source>
+        <translation>Druh otázky</translation>
+    </message>
+    <message>
+        <source>a number measured from the run</source>
+        <translation>číslo změřené v simulaci</translation>
+    </message>
+    <message>
+        <source>a choice of answers</source>
+        <translation>výběr z odpovědí</translation>
+    </message>
+    <message>
+        <source>&amp;Kind</source>
+        <translation>&amp;Druh</translation>
+    </message>
+    <message>
+        <source>Option %1</source>
+        <translation>Možnost %1</translation>
+    </message>
+    <message>
+        <source>The student chooses one of %1 options; the right one is “%2”.</source>
+        <translation>Žák volí jednu z %1 možností; správná je „%2“.</translation>
     </message>
 </context>
 <context>
