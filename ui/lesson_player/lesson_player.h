@@ -152,8 +152,7 @@ private:
     /// Keeps question i's tries, and the settings the step runs with, in the lesson's record.
     void recordTry(std::size_t i);
     /// Judges again the tries the lesson's record holds for the current step (the student
-    /// went on and came back, or restarted it): the same verdicts, and what they released
-    /// stays released.
+    /// went on and came back): the same verdicts, and what they released stays released.
     void replayRecordedTries();
     /// Keeps the settings the current step's world runs with in the lesson's record.
     void recordSettings();
