@@ -31,6 +31,30 @@ namespace {
 /// enough that |answer - measured| stays finite.
 constexpr double kMaxAnswer = 1e15;
 
+/// An option's text beside its radio button: wrapped in the lesson's narrow column (a radio
+/// button's own text never wraps, and widened the column past the dock), and a click on it
+/// chooses the option as a click on the button does.
+class OptionText : public QLabel {
+public:
+    OptionText(const QString& text, QAbstractButton* button, QWidget* parent)
+        : QLabel(text, parent), m_button(button)
+    {
+        setWordWrap(true);
+        setBuddy(button);
+    }
+
+protected:
+    void mouseReleaseEvent(QMouseEvent* event) override
+    {
+        QLabel::mouseReleaseEvent(event);
+        m_button->click();
+        m_button->setFocus();
+    }
+
+private:
+    QAbstractButton* m_button;
+};
+
 /// Says under a question what to do before it can be judged (nothing is counted).
 void askFirst(QLabel* result, const QString& text)
 {
@@ -140,10 +164,13 @@ void LessonPlayer::buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* la
     options->setContentsMargins(0, 0, 0, 0);
     auto* buttonGroup = new QButtonGroup(group);
     for (qsizetype c = 0; c < q.choices.size(); ++c) {
-        auto* option = new QRadioButton(q.choices[c], group);
+        auto* option = new QRadioButton(group);
         option->setAccessibleName(q.choices[c]);
         buttonGroup->addButton(option, static_cast<int>(c));
-        options->addWidget(option);
+        auto* line = new QHBoxLayout;
+        line->addWidget(option, 0, Qt::AlignTop);
+        line->addWidget(new OptionText(lessons::keepUnitsTogether(q.choices[c]), option, group), 1);
+        options->addLayout(line);
     }
     if (QAbstractButton* first = buttonGroup->button(0))
         prompt->setBuddy(first);
