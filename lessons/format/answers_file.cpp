@@ -3,6 +3,7 @@
 
 #include "format/json_reader.h"
 #include "format/languages.h"
+#include "format/lesson.h"
 
 #include <QDate>
 #include <QJsonArray>
@@ -73,11 +74,39 @@ bool readOptionalNumber(JsonReader& r, const QJsonObject& o, QStringView key, co
     return true;
 }
 
+/// A choice question's try: {"choice": 1, "text": "...", "right": false}.
+bool readChoiceTry(JsonReader& r, const QJsonObject& o, const QString& place, AnswerTry& out)
+{
+    for (const QStringView key : {QStringView(u"answer"), QStringView(u"measured")})
+        if (o.contains(key) && !o.value(key).isNull())
+            return r.fail(detail::joinPlace(place, key),
+                          FileMessages::tr("not with \"choice\": a try either chooses an option "
+                                           "or gives a number"));
+    int choice = 0;
+    if (!r.integer(o, u"choice", place, choice, 0, kMaxChoices - 1, true) ||
+        !r.string(o, u"text", place, out.choiceText, true) ||
+        !r.boolean(o, u"right", place, out.right, true))
+        return false;
+    if (out.choiceText.trimmed().isEmpty() || out.choiceText.size() > kMaxAnswerChoiceText)
+        return r.fail(detail::joinPlace(place, u"text"),
+                      FileMessages::tr("must be the option's text, 1 to %1 characters")
+                          .arg(kMaxAnswerChoiceText));
+    out.choice = choice;
+    return true;
+}
+
 bool readTry(JsonReader& r, const QJsonValue& v, const QString& place, AnswerTry& out)
 {
     QJsonObject o;
-    if (!r.asObject(v, place, o) || !r.checkKeys(o, place, {u"answer", u"measured", u"ahead"}))
+    if (!r.asObject(v, place, o) ||
+        !r.checkKeys(o, place, {u"answer", u"measured", u"ahead", u"choice", u"text", u"right"}))
         return false;
+    if (o.contains(u"choice"))
+        return readChoiceTry(r, o, place, out);
+    for (const QStringView key : {QStringView(u"text"), QStringView(u"right")})
+        if (o.contains(key))
+            return r.fail(detail::joinPlace(place, key),
+                          FileMessages::tr("only with \"choice\" (the option chosen)"));
     return readOptionalNumber(r, o, u"answer", place, out.answer) &&
            readOptionalNumber(r, o, u"measured", place, out.measured) &&
            r.boolean(o, u"ahead", place, out.ahead);
@@ -226,9 +255,13 @@ QByteArray answersJson(const Answers& answers)
         for (const std::vector<AnswerTry>& tries : step.questions) {
             QJsonArray list;
             for (const AnswerTry& t : tries)
-                list.append(QJsonObject{{QStringLiteral("answer"), optionalNumber(t.answer)},
-                                        {QStringLiteral("measured"), optionalNumber(t.measured)},
-                                        {QStringLiteral("ahead"), t.ahead}});
+                list.append(
+                    t.choice ? QJsonObject{{QStringLiteral("choice"), *t.choice},
+                                           {QStringLiteral("text"), t.choiceText},
+                                           {QStringLiteral("right"), t.right}}
+                             : QJsonObject{{QStringLiteral("answer"), optionalNumber(t.answer)},
+                                           {QStringLiteral("measured"), optionalNumber(t.measured)},
+                                           {QStringLiteral("ahead"), t.ahead}});
             questions.append(QJsonObject{{QStringLiteral("tries"), list}});
         }
         s.insert(QStringLiteral("questions"), questions);

@@ -30,11 +30,18 @@ inline constexpr double kMaxAnswerMagnitude = 1e15;
 /// The longest name, class, lesson title or file name kept [characters].
 inline constexpr int kMaxAnswerText = 200;
 
-/// One try at a question: an answer checked, or "Show me" (no answer).
+/// The longest option text a choice try keeps [characters].
+inline constexpr int kMaxAnswerChoiceText = 1000;
+
+/// One try at a question: an answer checked, an option chosen, or "Show me" (neither).
 struct AnswerTry {
-    std::optional<double> answer;   ///< in the question's unit; nullopt: "Show me"
+    std::optional<double> answer;   ///< in the question's unit; nullopt: "Show me" or a choice
     std::optional<double> measured; ///< what it was judged against; nullopt: not measured yet
     bool ahead = false;             ///< measured by a run without a window (held-back run)
+    /// A choice question's try: the option chosen (0-based); nullopt: "Show me" or a number.
+    std::optional<int> choice;
+    QString choiceText; ///< the option chosen, as the student read it
+    bool right = false; ///< whether `choice` was the right option
     bool operator==(const AnswerTry&) const = default;
 };
 

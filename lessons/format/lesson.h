@@ -73,9 +73,19 @@ struct StepSettings {
     std::optional<double> timeScale;   ///< the window's slow motion, 0.1 to 4
 };
 
+/// The fewest and the most options a choice question offers.
+inline constexpr int kMinChoices = 2;
+inline constexpr int kMaxChoices = 6;
+
+/// A question answered by a number measured from the run (`measure`, `unit`, tolerances) or,
+/// when `choices` is not empty, by picking one of a few texts.
 struct Question {
-    QString prompt; ///< plain text, shown above the answer box
-    Measure measure;
+    QString prompt;  ///< plain text, shown above the answer box (or the options)
+    Measure measure; ///< a measured question's; unused by a choice question
+    /// A choice question's options, in the language the lesson is kept in; empty: the
+    /// question is a measured one.
+    QStringList choices;
+    int answer = 0;                 ///< the right one of `choices` (0-based)
     QString unit;                   ///< shown after the answer box, e.g. "m"
     double tolerance = 0.05;        ///< relative to the measured value
     double absoluteTolerance = 0.0; ///< added to it, for values near zero
@@ -90,6 +100,8 @@ struct Question {
     /// this question measures: keys of "settings" but timeScale. The answer is measured with
     /// them, and a run without them is not judged. All unset: the step's own settings.
     StepSettings set;
+
+    bool isChoice() const { return !choices.isEmpty(); }
 };
 
 /// The names a question may hold back, besides "panel:" and "plot:" with a panel or plot the

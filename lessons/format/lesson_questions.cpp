@@ -192,6 +192,58 @@ bool readNonEmptyText(JsonReader& in, LocalTexts& texts, const QJsonObject& obje
     return true;
 }
 
+/// The rest of a choice question, once its prompt is read: its options, the right one, and
+/// the hint and holdBack it shares with a measured question. A choice question has nothing
+/// measured, so the keys of a measured answer are refused rather than ignored.
+bool readChoiceQuestion(JsonReader& in, LocalTexts& texts, const QJsonObject& object,
+                        const QString& place, const LessonStep& step, Question& question)
+{
+    const QString at = joinPlace(place, u"choices");
+    if (!object.contains(u"choices")) {
+        return in.fail(at, FileMessages::tr("required with \"answer\", but missing (the options "
+                                            "to choose from)"));
+    }
+    for (const QStringView key : {QStringView(u"measure"), QStringView(u"unit"),
+                                  QStringView(u"tolerance"), QStringView(u"absoluteTolerance"),
+                                  QStringView(u"set")}) {
+        if (object.contains(key)) {
+            return in.fail(joinPlace(place, key),
+                           FileMessages::tr("not for a question with \"choices\": it is "
+                                            "answered by choosing, nothing is measured"));
+        }
+    }
+    // Only the list form, each option a text of its own: an object of languages holding
+    // lists could give the languages different numbers of options.
+    if (!object.value(u"choices").isArray()) {
+        return in.fail(at, FileMessages::tr("must be an array of %1 to %2 options, each a text "
+                                            "\"...\" or {\"en\": \"...\", \"cs\": \"...\"}, got ")
+                                   .arg(kMinChoices)
+                                   .arg(kMaxChoices) +
+                               describeJson(object.value(u"choices")));
+    }
+    if (!texts.list(object, u"choices", place, kMaxChoices, FileMessages::tr("options"),
+                    question.choices)) {
+        return false;
+    }
+    if (question.choices.size() < kMinChoices) {
+        return in.fail(at, FileMessages::tr("%1 options, fewer than the %2 a choice needs")
+                               .arg(question.choices.size())
+                               .arg(kMinChoices));
+    }
+    if (!object.contains(u"answer")) {
+        return in.fail(joinPlace(place, u"answer"),
+                       FileMessages::tr("required, but missing (the index of the right option, "
+                                        "0 for the first)"));
+    }
+    if (!in.integer(object, u"answer", place, question.answer, 0,
+                    static_cast<int>(question.choices.size()) - 1, true) ||
+        !readNonEmptyText(in, texts, object, u"hint", place, question.hint, false,
+                          FileMessages::tr("must not be empty (leave the key out for no hint)"))) {
+        return false;
+    }
+    return readHoldBack(in, object, place, step, question.holdBack);
+}
+
 bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, const QString& place,
                   const LessonStep& step, Question& question)
 {
@@ -200,10 +252,13 @@ bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, co
     if (!in.asObject(value, place, object) ||
         !in.checkKeys(object, place,
                       {u"prompt", u"measure", u"unit", u"tolerance", u"absoluteTolerance", u"hint",
-                       u"holdBack", u"set"}) ||
+                       u"holdBack", u"set", u"choices", u"answer"}) ||
         !readNonEmptyText(in, texts, object, u"prompt", place, question.prompt, true,
                           FileMessages::tr("must not be empty"))) {
         return false;
+    }
+    if (object.contains(u"choices") || object.contains(u"answer")) {
+        return readChoiceQuestion(in, texts, object, place, step, question);
     }
     if (!object.contains(u"measure")) {
         return in.fail(joinPlace(place, u"measure"),

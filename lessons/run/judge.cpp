@@ -141,8 +141,56 @@ Verdict showAnswer(const Question& q, std::optional<double> value, bool ahead)
     return verdict;
 }
 
+namespace {
+
+/// An option's text as a verdict quotes it; a try recorded with another lesson's options may
+/// name one the question no longer has.
+QString optionText(const Question& q, int index)
+{
+    return index >= 0 && index < q.choices.size() ? q.choices[index] : QString();
+}
+
+/// A choice question's try: nothing is measured, so every try is judged. A wrong first try
+/// reads the hint (the right option stays hidden while a second try is worth something);
+/// later tries, a right one and "Show me" name the right option.
+Verdict judgeChoice(const Question& q, const AnswerTry& attempt, TryCount& count)
+{
+    Verdict verdict;
+    verdict.measured = true;
+    verdict.value = q.answer;
+    const QString rightText = optionText(q, q.answer);
+    if (!attempt.choice) {
+        verdict.shown = true;
+        verdict.message = Judge::tr("The right answer: “%1”.").arg(rightText);
+        count.answered = true;
+        return verdict;
+    }
+    if (!count.answered)
+        ++count.attempts;
+    verdict.right = attempt.right;
+    const QString chosen = attempt.choiceText;
+    if (!verdict.right && !count.answered && count.attempts <= 1) {
+        verdict.message =
+            q.hint.isEmpty()
+                ? Judge::tr("Not quite (you chose “%1”). Try once more.").arg(chosen)
+                : Judge::tr("Not quite (you chose “%1”). Hint: %2").arg(chosen, q.hint);
+        return verdict;
+    }
+    verdict.shown = true;
+    verdict.message = verdict.right
+                          ? Judge::tr("Right: “%1”.").arg(chosen)
+                          : Judge::tr("Not quite: the right answer is “%1” (you chose “%2”).")
+                                .arg(rightText, chosen);
+    count.answered = true;
+    return verdict;
+}
+
+} // namespace
+
 Verdict judgeTry(const Question& q, const AnswerTry& attempt, TryCount& count)
 {
+    if (q.isChoice())
+        return judgeChoice(q, attempt, count);
     Verdict verdict;
     if (!attempt.answer) {
         verdict = showAnswer(q, attempt.measured, attempt.ahead);

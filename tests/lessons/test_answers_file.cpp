@@ -44,8 +44,17 @@ lessons::Answers sample()
     first.solver = physics::SolverKind::PaperImpulse;
     // A wrong prediction judged ahead, a right answer, "Show me" before anything was measured,
     // and a value that does not round-trip through a short decimal.
-    first.questions = {{{0.5, 0.4096, true}, {0.41, 0.4096, false}},
-                       {{std::nullopt, std::nullopt, false}, {0.1 + 0.2, -1e-300, false}}};
+    const auto number = [](std::optional<double> answer, std::optional<double> measured,
+                           bool ahead) {
+        lessons::AnswerTry t;
+        t.answer = answer;
+        t.measured = measured;
+        t.ahead = ahead;
+        return t;
+    };
+    first.questions = {
+        {number(0.5, 0.4096, true), number(0.41, 0.4096, false)},
+        {number(std::nullopt, std::nullopt, false), number(0.1 + 0.2, -1e-300, false)}};
     a.steps = {first, lessons::StepAnswers{}};
     return a;
 }

@@ -50,7 +50,8 @@ struct StepRun {
     {
         std::vector<lessons::Measure> watched;
         for (const lessons::Question& q : step.questions)
-            watched.push_back(q.measure);
+            if (!q.isChoice())
+                watched.push_back(q.measure);
         measurements.resize(worlds.size());
         for (std::size_t i = 0; i < worlds.size(); ++i) {
             worlds[i].updateDiagnostics();
@@ -94,6 +95,12 @@ private slots:
     void userLessonsListedAfterShipped();
     void rejectsBadLesson_data();
     void rejectsBadLesson();
+    void choiceQuestionRead();
+    void choiceMissingLanguageWarns();
+    void rejectsBadChoice_data();
+    void rejectsBadChoice();
+    void judgeChoiceTries();
+    void choiceTriesInAnswersFile();
     void rejectsSymbolicLinkOutOfFolder();
     void sceneFileErrorsCarryBothPlaces();
     void inlineSceneErrorsContinueThePlace();

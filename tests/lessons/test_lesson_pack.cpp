@@ -131,6 +131,10 @@ void TestLessonPack::shippedLessonsPack()
         QCOMPARE(a.plots, b.plots);
         QCOMPARE(a.panels, b.panels);
         QCOMPARE(a.questions.size(), b.questions.size());
+        for (std::size_t q = 0; q < a.questions.size(); ++q) { // a choice's options too
+            QCOMPARE(a.questions[q].choices, b.questions[q].choices);
+            QCOMPARE(a.questions[q].answer, b.questions[q].answer);
+        }
         QCOMPARE(a.exportTime, b.exportTime);
         const QString difference = lessons::sceneDifference(a.scene, b.scene);
         QVERIFY2(difference.isEmpty(),

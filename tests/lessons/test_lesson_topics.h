@@ -51,6 +51,7 @@ private slots:
     void impulseFormulaTermByTerm();
     void impulseShrinksAndSpinGrowsWithLeverArm();
     void tunnellingWhereVdtSkipsTheCatchZone();
+    void tunnellingChoiceIsWhatTheRunDoes();
     void tunnellingSpeedSweepMatchesTheRule_data();
     void tunnellingSpeedSweepMatchesTheRule();
     void continuousCollisionContactsAheadOfTime();

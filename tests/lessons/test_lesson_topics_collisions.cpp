@@ -186,11 +186,12 @@ void TestLessonTopics::tunnellingWhereVdtSkipsTheCatchZone()
         QVERIFY2(caught == (x < 0), qPrintable(QStringLiteral("%1 at x = %2").arg(id).arg(x)));
     }
     QString message;
-    QVERIFY2(judgedRight(step, 0, x0Medium + 7.5 * 0.5, run.measurements[0], &message),
+    // Question 0 asks which balls pass (a choice, tunnellingChoiceIsWhatTheRunDoes).
+    QVERIFY2(judgedRight(step, 1, x0Medium + 7.5 * 0.5, run.measurements[0], &message),
              qPrintable(message));
     QVERIFY(
-        !judgedRight(step, 0, -wall.halfThickness - wall.radius, run.measurements[0], &message));
-    QVERIFY2(judgedRight(step, 1, -wall.halfThickness - wall.radius, run.measurements[0], &message),
+        !judgedRight(step, 1, -wall.halfThickness - wall.radius, run.measurements[0], &message));
+    QVERIFY2(judgedRight(step, 2, -wall.halfThickness - wall.radius, run.measurements[0], &message),
              qPrintable(message));
 }
 
@@ -267,4 +268,32 @@ void TestLessonTopics::continuousCollisionContactsAheadOfTime()
     }
     QVERIFY2(widestGap > wall.margin, qPrintable(QString::number(widestGap)));
     RL_VERIFY_NEAR(w.body(fast).position.x(), -wall.halfThickness - wall.radius, 5e-3, 0);
+}
+
+void TestLessonTopics::tunnellingChoiceIsWhatTheRunDoes()
+{
+    // The first step's choice question names the balls that pass through the wall: the one the
+    // run itself sends past the wall's middle by t = 0.5 s. Each option is a set of balls.
+    const lessons::Lesson lesson = shippedLesson("tunnelling");
+    const lessons::LessonStep& step = stepOf(lesson, 0);
+    const lessons::Question& q = step.questions.at(0);
+    QVERIFY(q.isChoice());
+    QCOMPARE(q.holdBack, QStringList{QStringLiteral("run")});
+    const std::vector<QStringList> options{
+        {}, {"fast"}, {"medium", "fast"}, {"slow", "medium", "fast"}};
+    QCOMPARE(q.choices.size(), static_cast<qsizetype>(options.size()));
+    StepRun run(step);
+    run.run(0.5);
+    QStringList passed;
+    for (const char* id : {"slow", "medium", "fast"})
+        if (run.worlds[0].body(bodyId(step.scene, id)).position.x() > 0)
+            passed << QLatin1String(id);
+    const auto it = std::find(options.begin(), options.end(), passed);
+    QVERIFY2(it != options.end(), qPrintable(passed.join(u", ")));
+    QCOMPARE(q.answer, static_cast<int>(it - options.begin()));
+    // The right option's text names the speeds of exactly those balls.
+    QVERIFY2(q.choices[q.answer].contains(QStringLiteral("7.5")) &&
+                 q.choices[q.answer].contains(QStringLiteral("20")) &&
+                 !q.choices[q.answer].contains(QStringLiteral(" 5\u00a0")),
+             qPrintable(q.choices[q.answer]));
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/question_editor.h"
+#include "lesson_editor/choice_editor.h"
 #include "lesson_editor/lesson_draft.h"
 
 #include "run/measurements.h"
@@ -132,6 +133,18 @@ QFormLayout* QuestionEditor::buildForm()
         m_prompt[static_cast<std::size_t>(l)] = e;
         form->addRow(name, e);
     }
+    m_questionKind = new QComboBox(this);
+    m_questionKind->setObjectName(QStringLiteral("questionType"));
+    m_questionKind->setAccessibleName(tr("Kind of question"));
+    m_questionKind->addItem(tr("a number measured from the run"), false);
+    m_questionKind->addItem(tr("a choice of answers"), true);
+    connect(m_questionKind, &QComboBox::activated, this,
+            [this] { setChoice(m_questionKind->currentData().toBool()); });
+    form->addRow(tr("&Kind"), m_questionKind);
+    m_choices = new ChoiceEditor(this);
+    connect(m_choices, &ChoiceEditor::edited, this, &QuestionEditor::edited);
+    form->addRow(m_choices);
+    m_fields = form;
     m_kind = new QComboBox(this);
     m_kind->setObjectName(QStringLiteral("questionKind"));
     m_kind->setAccessibleName(tr("What is measured"));
@@ -208,20 +221,47 @@ void QuestionEditor::store(const QJsonObject& q)
     m_draft.setValue(m_step, QStringLiteral("questions"), all, tr("question"));
 }
 
+QJsonObject QuestionEditor::defaultMeasured() const
+{
+    const Kind& k = kKinds[1]; // speed at a time: any body, any scene
+    QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}, {QStringLiteral("time"), 1}};
+    if (m_body->count() > 0)
+        measure.insert(QStringLiteral("body"), m_body->itemData(0).toString());
+    return QJsonObject{{QStringLiteral("measure"), measure},
+                       {QStringLiteral("unit"), QLatin1String(k.unit)},
+                       {QStringLiteral("tolerance"), 0.05}};
+}
+
+void QuestionEditor::setChoice(bool choice)
+{
+    QJsonObject q = question();
+    if (m_step < 0 || q.isEmpty() || q.contains(u"choices") == choice)
+        return;
+    if (choice) {
+        for (const char* key : {"measure", "unit", "tolerance", "absoluteTolerance"})
+            q.remove(QLatin1String(key));
+        q.insert(QStringLiteral("choices"),
+                 QJsonArray{QJsonObject{{shownLanguage(), tr("Option %1").arg(1)}},
+                            QJsonObject{{shownLanguage(), tr("Option %1").arg(2)}}});
+        q.insert(QStringLiteral("answer"), 0);
+    } else {
+        q.remove(QStringLiteral("choices"));
+        q.remove(QStringLiteral("answer"));
+        const QJsonObject measured = defaultMeasured();
+        for (auto it = measured.begin(); it != measured.end(); ++it)
+            q.insert(it.key(), it.value());
+    }
+    store(q);
+}
+
 void QuestionEditor::addQuestion(bool predict)
 {
     if (m_step < 0)
         return;
     QJsonArray all = m_draft.value(m_step, QStringLiteral("questions")).toArray();
-    const Kind& k = kKinds[1]; // speed at a time: any body, any scene
-    QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}, {QStringLiteral("time"), 1}};
-    if (m_body->count() > 0)
-        measure.insert(QStringLiteral("body"), m_body->itemData(0).toString());
-    QJsonObject q{
-        {QStringLiteral("prompt"), QJsonObject{{shownLanguage(), tr("How fast is it at 1 s?")}}},
-        {QStringLiteral("measure"), measure},
-        {QStringLiteral("unit"), QLatin1String(k.unit)},
-        {QStringLiteral("tolerance"), 0.05}};
+    QJsonObject q = defaultMeasured();
+    q.insert(QStringLiteral("prompt"),
+             QJsonObject{{shownLanguage(), tr("How fast is it at 1 s?")}});
     if (predict)
         q.insert(QStringLiteral("holdBack"), QJsonArray{QStringLiteral("run")});
     all.append(q);
@@ -252,6 +292,27 @@ void QuestionEditor::edited()
     for (int l = 0; l < 2; ++l)
         prompt.insert(langCode(l), m_prompt[static_cast<std::size_t>(l)]->text());
     q.insert(QStringLiteral("prompt"), prompt);
+    if (q.contains(u"choices"))
+        q = m_choices->applyTo(q);
+    else
+        applyMeasured(q);
+    QJsonArray hold = q.value(u"holdBack").toArray();
+    const bool held = hold.contains(QStringLiteral("run"));
+    if (m_holdRun->isChecked() && !held)
+        hold.append(QStringLiteral("run"));
+    if (!m_holdRun->isChecked() && held)
+        for (qsizetype i = hold.size() - 1; i >= 0; --i)
+            if (hold.at(i).toString() == u"run")
+                hold.removeAt(i);
+    if (hold.isEmpty())
+        q.remove(QStringLiteral("holdBack"));
+    else
+        q.insert(QStringLiteral("holdBack"), hold);
+    store(q);
+}
+
+void QuestionEditor::applyMeasured(QJsonObject& q)
+{
     const Kind& k = kindOf(m_kind->currentData().toString());
     QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}};
     const QJsonObject old = q.value(u"measure").toObject();
@@ -269,19 +330,6 @@ void QuestionEditor::edited()
         m_unit->setText(QLatin1String(k.unit)); // the new quantity's unit, unless typed
     q.insert(QStringLiteral("unit"), m_unit->text());
     q.insert(QStringLiteral("tolerance"), m_tolerance->value() / 100.0);
-    QJsonArray hold = q.value(u"holdBack").toArray();
-    const bool held = hold.contains(QStringLiteral("run"));
-    if (m_holdRun->isChecked() && !held)
-        hold.append(QStringLiteral("run"));
-    if (!m_holdRun->isChecked() && held)
-        for (qsizetype i = hold.size() - 1; i >= 0; --i)
-            if (hold.at(i).toString() == u"run")
-                hold.removeAt(i);
-    if (hold.isEmpty())
-        q.remove(QStringLiteral("holdBack"));
-    else
-        q.insert(QStringLiteral("holdBack"), hold);
-    store(q);
 }
 
 void QuestionEditor::refresh()
@@ -338,6 +386,14 @@ void QuestionEditor::refresh()
     m_unit->setText(q.value(u"unit").toString());
     m_tolerance->setValue(q.value(u"tolerance").toDouble(0.05) * 100.0);
     m_holdRun->setChecked(q.value(u"holdBack").toArray().contains(QStringLiteral("run")));
+    // A choice question shows its options in place of what a number is measured by.
+    const bool choice = q.contains(u"choices");
+    m_questionKind->setCurrentIndex(choice ? 1 : 0);
+    for (QWidget* w : std::initializer_list<QWidget*>{m_kind, m_body, m_time, m_unit, m_tolerance})
+        m_fields->setRowVisible(w, !choice);
+    m_fields->setRowVisible(m_choices, choice);
+    if (choice)
+        m_choices->setQuestion(q);
     const bool any = currentQuestion() >= 0;
     m_form->setVisible(any);
     m_refreshing = false;
@@ -368,6 +424,12 @@ void QuestionEditor::showAnswer()
     }
     const lessons::LessonStep& step = lesson->steps[static_cast<std::size_t>(m_step)];
     const lessons::Question& q = step.questions.at(static_cast<std::size_t>(at));
+    if (q.isChoice()) {
+        m_answer->setText(tr("The student chooses one of %1 options; the right one is “%2”.")
+                              .arg(q.choices.size())
+                              .arg(q.choices.value(q.answer)));
+        return;
+    }
     const std::optional<double> value =
         lessons::measureAhead(lessons::askedStep(step, q), q.measure);
     const QLocale locale;

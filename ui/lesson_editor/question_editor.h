@@ -2,9 +2,11 @@
 #pragma once
 // The lesson editor's questions of one step: a list of them, buttons to add a measured
 // question or a predict-before-reveal one (which holds the run back until answered) and to
-// remove one, and the selected one's prompt in Czech and English, what is measured (the
-// quantity and the body from lists, the time), its unit and tolerance, and beside them the
-// answer the lab measures for it (the same headless run the player judges against).
+// remove one, and the selected one's prompt in Czech and English, its kind (a number measured
+// from the run, or a choice), and for a number what is measured (the quantity and the body
+// from lists, the time), its unit and tolerance, and beside them the answer the lab measures
+// for it (the same headless run the player judges against); for a choice, its options
+// (choice_editor.h).
 
 #include <QJsonObject>
 #include <QWidget>
@@ -21,6 +23,7 @@ class QListWidget;
 
 namespace rigidlab::ui {
 
+class ChoiceEditor;
 class LessonDraft;
 
 class QuestionEditor : public QWidget {
@@ -35,6 +38,8 @@ public:
     int currentQuestion() const;
     void addQuestion(bool predict);
     void removeQuestion();
+    /// Makes the selected question a choice (true) or a measured number (false), one edit.
+    void setChoice(bool choice);
 
 private:
     QFormLayout* buildForm();
@@ -42,6 +47,10 @@ private:
     /// Replaces the selected question by `q`, one undoable edit.
     void store(const QJsonObject& q);
     void edited();
+    /// The measured question's fields into `q`: what is measured, its unit and tolerance.
+    void applyMeasured(QJsonObject& q);
+    /// A measured question, of speed at 1 s of the scene's first body that moves.
+    QJsonObject defaultMeasured() const;
     void showAnswer();
 
     LessonDraft& m_draft;
@@ -49,6 +58,9 @@ private:
     bool m_refreshing = false;
     QListWidget* m_list = nullptr;
     std::array<QLineEdit*, 2> m_prompt{};
+    QComboBox* m_questionKind = nullptr; ///< a number measured from the run, or a choice
+    ChoiceEditor* m_choices = nullptr;
+    QFormLayout* m_fields = nullptr; ///< the selected question's form
     QComboBox* m_kind = nullptr;
     QComboBox* m_body = nullptr;
     QDoubleSpinBox* m_time = nullptr;

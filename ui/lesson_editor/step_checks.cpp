@@ -61,8 +61,8 @@ std::optional<StepFinding::Spread> spreadOf(const lessons::LessonStep& step, int
 {
     const lessons::Question& q = step.questions[static_cast<std::size_t>(index)];
     // Measured on the run the question asks for; an integrator it asks for is not the
-    // student's to choose.
-    if (q.set.integrator)
+    // student's to choose. A choice question measures nothing.
+    if (q.isChoice() || q.set.integrator)
         return std::nullopt;
     const lessons::LessonStep asked = lessons::askedStep(step, q);
     const std::optional<double> value = lessons::measureAhead(asked, q.measure);

@@ -119,6 +119,21 @@ void LessonPlayer::recordTry(std::size_t i)
     recordSettings();
 }
 
+void LessonPlayer::replayRecordedTries()
+{
+    const SessionRecord& record = session();
+    if (!m_lesson || record.lessonPath != m_lesson->path)
+        return;
+    // Copied: judging a try writes the record again (the same tries, in the same order).
+    const std::vector<std::vector<QuestionTry>> questions =
+        record.steps.at(static_cast<std::size_t>(m_step)).questions;
+    m_replaying = true;
+    for (std::size_t i = 0; i < std::min(questions.size(), m_rows.size()); ++i)
+        for (const QuestionTry& attempt : questions[i])
+            applyTry(i, attempt);
+    m_replaying = false;
+}
+
 void LessonPlayer::recordSettings()
 {
     SessionRecord& record = session();

@@ -295,8 +295,14 @@ void LessonPlayer::goToStep(int index)
     if (!m_lesson || index < 0 || index >= static_cast<int>(m_lesson->steps.size()))
         return;
     recordSettings(); // the world still runs the step being left
+    const bool cameBack = index != m_step;
     m_step = index;
     showStep();
+    // A step come back to is as the student left it, before the window sets it up with what
+    // its answers released. Restart step starts it afresh, held back again; a lesson opened
+    // anew starts with none shown.
+    if (cameBack)
+        replayRecordedTries();
     emit stepActivated(*m_lesson, m_step);
 }
 

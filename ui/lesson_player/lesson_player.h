@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+class QButtonGroup;
 class QComboBox;
 class QLabel;
 class QLineEdit;
@@ -78,6 +79,8 @@ public:
     /// The answer box and result line of question i of the current step (for tests).
     void answer(int question, const QString& text);
     QString result(int question) const;
+    /// Chooses option `option` of choice question i and presses its Check (for tests).
+    void choose(int question, int option);
     /// Presses question i's "Show me" (for tests).
     void showMe(int question);
     /// What the current step's questions still hold back ("run", "panel:collision", ...):
@@ -142,10 +145,16 @@ private:
     /// than kTextShare of the column's height (unless the reader opened it by hand).
     void fitIntroduction();
     void buildQuestions();
+    /// A choice question's options, as radio buttons in a group named by its prompt, and its
+    /// Check and Show me buttons, under `prompt` in `layout`.
+    void buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout);
     /// The student's name and class fields.
     void buildStudentFields(QVBoxLayout* layout);
     /// Keeps question i's tries, and the settings the step runs with, in the lesson's record.
     void recordTry(std::size_t i);
+    /// Judges again the tries the lesson's record holds for the current step (the student
+    /// went on and came back): the same verdicts, and what they released stays released.
+    void replayRecordedTries();
     /// Keeps the settings the current step's world runs with in the lesson's record.
     void recordSettings();
     /// Starts the lesson's record, unless it is the lesson the session's record is of.
@@ -196,7 +205,9 @@ private:
     QLineEdit* m_studentClass;
     QPushButton* m_start; ///< opens the first lesson; shown while none is open
     struct QuestionRow {
-        QLineEdit* edit = nullptr;
+        QLineEdit* edit = nullptr;       ///< a measured question's answer box
+        QButtonGroup* choices = nullptr; ///< a choice question's options, by their index
+        QPushButton* check = nullptr;
         QLabel* result = nullptr;
         QPushButton* show = nullptr;
         int attempts = 0;      ///< wrong and right tries judged so far
@@ -208,6 +219,9 @@ private:
     std::vector<QuestionRow> m_rows;
     std::function<bool()> m_leaveGuard;
     bool m_openCancelled = false; ///< the last openLesson() was declined by the leave guard
+    /// Tries of the record being judged again while a step is built: the window sets the step
+    /// up with what they released, so no change is announced.
+    bool m_replaying = false;
 };
 
 } // namespace rigidlab::ui

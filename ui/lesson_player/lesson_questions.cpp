@@ -11,11 +11,14 @@
 
 #include "run/measurements.h"
 
+#include <QButtonGroup>
+#include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPointer>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
@@ -29,6 +32,47 @@ namespace {
 /// The largest answer taken, in the question's unit: far beyond any measured value, and small
 /// enough that |answer - measured| stays finite.
 constexpr double kMaxAnswer = 1e15;
+
+/// An option's text beside its radio button: wrapped in the lesson's narrow column (a radio
+/// button's own text never wraps, and widened the column past the dock), and a click on it
+/// chooses the option as a click on the button does.
+class OptionText : public QLabel {
+public:
+    OptionText(const QString& text, QAbstractButton* button, QWidget* parent)
+        : QLabel(text, parent), m_button(button)
+    {
+        setWordWrap(true);
+        setBuddy(button);
+    }
+
+protected:
+    void mouseReleaseEvent(QMouseEvent* event) override
+    {
+        QLabel::mouseReleaseEvent(event);
+        m_button->click();
+        m_button->setFocus();
+    }
+
+private:
+    QAbstractButton* m_button;
+};
+
+/// Says under a question what to do before it can be judged (nothing is counted).
+void askFirst(QLabel* result, const QString& text)
+{
+    result->setStyleSheet(QStringLiteral("color: #a05a00;"));
+    result->setText(text);
+    result->setVisible(true);
+}
+
+/// A try at a measured question, with no answer yet.
+QuestionTry numberTry(std::optional<double> measured, bool ahead)
+{
+    QuestionTry t;
+    t.measured = measured;
+    t.ahead = ahead;
+    return t;
+}
 
 } // namespace
 
@@ -50,6 +94,11 @@ void LessonPlayer::buildQuestions()
         auto* prompt = new QLabel(lessons::keepUnitsTogether(q.prompt), box);
         prompt->setWordWrap(true);
         v->addWidget(prompt);
+        m_questionLayout->addWidget(box);
+        if (q.isChoice()) {
+            buildChoiceRow(i, prompt, v);
+            continue;
+        }
         // The answer and its unit on a line of their own, the buttons below: side by side
         // they left the answer a few letters wide in a narrow column.
         auto* row = new QHBoxLayout;
@@ -75,7 +124,6 @@ void LessonPlayer::buildQuestions()
         result->setWordWrap(true);
         result->setVisible(false); // no empty line under the buttons before the first try
         v->addWidget(result);
-        m_questionLayout->addWidget(box);
         QuestionRow questionRow;
         questionRow.edit = edit;
         questionRow.result = result;
@@ -94,36 +142,24 @@ void LessonPlayer::buildQuestions()
     }
 }
 
-namespace {
-
-/// Says why an answer was not judged (nothing typed, a run not the one asked for, ...).
-void sayNotJudged(QLabel* result, const QString& why)
-{
-    result->setStyleSheet(QStringLiteral("color: #a05a00;"));
-    result->setText(why);
-    result->setVisible(true);
-}
-
-} // namespace
-
 void LessonPlayer::checkTyped(std::size_t i)
 {
     QuestionRow& row = m_rows[i];
     const std::optional<double> parsed = parseNumber(row.edit->text());
     if (!parsed) {
-        sayNotJudged(row.result, tr("Type a number first."));
+        askFirst(row.result, tr("Type a number first."));
         return;
     }
     const double answer = *parsed;
     if (std::abs(answer) > kMaxAnswer) {
-        sayNotJudged(row.result, tr("Type a number from %1 to %2.")
+        askFirst(row.result, tr("Type a number from %1 to %2.")
                                      .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
         return;
     }
     // A question that asks for settings first is judged on the run it asks for.
     const AskedRun asked = askedRunOf(i);
     if (!asked.matches() && asked.studentCanSet) {
-        sayNotJudged(row.result, askedRunAdvice(asked));
+        askFirst(row.result, askedRunAdvice(asked));
         return;
     }
     QuestionTry attempt = measuredTry(i);
@@ -139,6 +175,68 @@ AskedRun LessonPlayer::askedRunOf(std::size_t i) const
     return askedRun(step, step.questions[i], m_controller.world(), m_controller.edits());
 }
 
+void LessonPlayer::buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout)
+{
+    const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
+    QWidget* box = prompt->parentWidget();
+    // The options in a group a screen reader names by the question; the arrow keys move
+    // between them, Tab leaves the group for Check.
+    auto* group = new QGroupBox(box);
+    group->setFlat(true);
+    group->setAccessibleName(q.prompt);
+    auto* options = new QVBoxLayout(group);
+    options->setContentsMargins(0, 0, 0, 0);
+    auto* buttonGroup = new QButtonGroup(group);
+    for (qsizetype c = 0; c < q.choices.size(); ++c) {
+        auto* option = new QRadioButton(group);
+        option->setAccessibleName(q.choices[c]);
+        buttonGroup->addButton(option, static_cast<int>(c));
+        auto* line = new QHBoxLayout;
+        line->addWidget(option, 0, Qt::AlignTop);
+        line->addWidget(new OptionText(lessons::keepUnitsTogether(q.choices[c]), option, group), 1);
+        options->addLayout(line);
+    }
+    if (QAbstractButton* first = buttonGroup->button(0))
+        prompt->setBuddy(first);
+    layout->addWidget(group);
+    auto* buttons = new QHBoxLayout;
+    auto* check = new QPushButton(tr("Check"), box);
+    check->setAccessibleDescription(tr("Check the option chosen"));
+    auto* show = new QPushButton(tr("Show me"), box);
+    show->setToolTip(tr("Give up and show the right answer"));
+    buttons->addWidget(check);
+    buttons->addWidget(show);
+    layout->addLayout(buttons);
+    auto* result = new QLabel(box);
+    result->setWordWrap(true);
+    result->setVisible(false);
+    layout->addWidget(result);
+    QuestionRow row;
+    row.choices = buttonGroup;
+    row.check = check;
+    row.result = result;
+    row.show = show;
+    m_rows.push_back(row);
+    connect(check, &QPushButton::clicked, this, [this, i, buttonGroup, result] {
+        if (!m_lesson)
+            return;
+        const int chosen = buttonGroup->checkedId();
+        if (chosen < 0)
+            return askFirst(result, tr("Choose an answer first."));
+        const lessons::Question& question =
+            m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
+        QuestionTry attempt;
+        attempt.choice = chosen;
+        attempt.choiceText = question.choices.value(chosen);
+        attempt.right = chosen == question.answer;
+        applyTry(i, attempt);
+    });
+    connect(show, &QPushButton::clicked, this, [this, i] {
+        if (m_lesson && i < m_rows.size())
+            applyTry(i, QuestionTry{});
+    });
+}
+
 QuestionTry LessonPlayer::measuredTry(std::size_t i)
 {
     const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
@@ -147,7 +245,7 @@ QuestionTry LessonPlayer::measuredTry(std::size_t i)
     const bool liveCounts = askedRunOf(i).matches();
     if (liveCounts)
         if (const auto live = m_controller.measurements().value(q.measure, step.scene))
-            return QuestionTry{std::nullopt, live, false};
+            return numberTry(live, false);
     // While the scene may not run, the student could never get a verdict: the same run is
     // done without a window instead (it is deterministic, so it measures what the window
     // will show once it runs). So is the run a question asks for, when the window's is not it.
@@ -158,7 +256,7 @@ QuestionTry LessonPlayer::measuredTry(std::size_t i)
         row.ahead = lessons::measureAhead(lessons::askedStep(step, q), q.measure);
         row.aheadDone = true;
     }
-    return QuestionTry{std::nullopt, row.ahead, row.ahead.has_value()};
+    return numberTry(row.ahead, row.ahead.has_value());
 }
 
 void LessonPlayer::applyTry(std::size_t i, const QuestionTry& attempt)
@@ -180,7 +278,10 @@ StepWork LessonPlayer::work() const
     StepWork out;
     for (const QuestionRow& row : m_rows) {
         out.tries.push_back(row.tries);
-        out.typed << row.edit->text();
+        // A choice question's "box" is the option chosen, by its index.
+        out.typed << (row.edit                       ? row.edit->text()
+                      : row.choices->checkedId() < 0 ? QString()
+                                                     : QString::number(row.choices->checkedId()));
     }
     return out;
 }
@@ -189,12 +290,20 @@ void LessonPlayer::restoreWork(const StepWork& work)
 {
     if (!m_lesson)
         return;
+    // Fresh rows: those shown may already hold the record's tries, the same as `work`'s.
+    buildQuestions();
     for (std::size_t i = 0; i < m_rows.size(); ++i) {
         if (i < work.tries.size())
             for (const QuestionTry& attempt : work.tries[i])
                 applyTry(i, attempt);
-        if (i < static_cast<std::size_t>(work.typed.size()))
-            m_rows[i].edit->setText(work.typed[static_cast<qsizetype>(i)]);
+        if (i >= static_cast<std::size_t>(work.typed.size()))
+            continue;
+        const QString& typed = work.typed[static_cast<qsizetype>(i)];
+        if (m_rows[i].edit)
+            m_rows[i].edit->setText(typed);
+        else if (QAbstractButton* option = m_rows[i].choices->button(typed.toInt());
+                 option && !typed.isEmpty())
+            option->setChecked(true);
     }
 }
 
@@ -205,21 +314,29 @@ void LessonPlayer::settle(std::size_t i, const lessons::Verdict& v)
                               : v.right   ? QStringLiteral("color: #1e7b34; font-weight: bold;")
                               : v.shown   ? QStringLiteral("color: #b3261e; font-weight: bold;")
                                           : QStringLiteral("color: #a05a00; font-weight: bold;"));
-    row.result->setText(v.message);
+    // A choice's verdict is marked as well as worded and coloured (a number's says its value).
+    const QString mark = !row.choices || !v.measured ? QString()
+                         : v.right                   ? QStringLiteral("✓ ")
+                         : v.shown && row.tries.back().choice == std::nullopt
+                             ? QStringLiteral("◆ ")
+                             : QStringLiteral("✗ ");
+    row.result->setText(mark + v.message);
     row.result->setVisible(true);
     revealResult(i);
     if (!v.measured && heldBack().contains(QStringView(lessons::kHoldBackRun))) {
         // Not measurable without a window within the limit: let the scene run rather than
         // leave the student with no way on.
         row.answered = true;
-        emit heldBackChanged(heldBack());
+        if (!m_replaying)
+            emit heldBackChanged(heldBack());
         return;
     }
     if (!v.shown || row.answered)
         return;
     row.answered = true;
     row.show->setEnabled(false);
-    emit heldBackChanged(heldBack());
+    if (!m_replaying)
+        emit heldBackChanged(heldBack());
 }
 
 void LessonPlayer::revealResult(std::size_t i)
@@ -255,9 +372,21 @@ void LessonPlayer::showMe(int question)
     m_rows[static_cast<size_t>(question)].show->click();
 }
 
+void LessonPlayer::choose(int question, int option)
+{
+    if (question < 0 || question >= static_cast<int>(m_rows.size()) ||
+        !m_rows[static_cast<size_t>(question)].choices)
+        return;
+    QButtonGroup* group = m_rows[static_cast<size_t>(question)].choices;
+    if (QAbstractButton* b = group->button(option))
+        b->setChecked(true);
+    m_rows[static_cast<size_t>(question)].check->click();
+}
+
 void LessonPlayer::answer(int question, const QString& text)
 {
-    if (question < 0 || question >= static_cast<int>(m_rows.size()))
+    if (question < 0 || question >= static_cast<int>(m_rows.size()) ||
+        !m_rows[static_cast<size_t>(question)].edit)
         return;
     m_rows[static_cast<size_t>(question)].edit->setText(text);
     emit m_rows[static_cast<size_t>(question)].edit->returnPressed();

@@ -257,7 +257,8 @@ QStringList LessonSession::loadStepWorlds(const lessons::LessonStep& step,
         controller.setTimeScale(*step.settings.timeScale);
     std::vector<lessons::Measure> measures;
     for (const lessons::Question& q : step.questions)
-        measures.push_back(q.measure);
+        if (!q.isChoice()) // a choice question measures nothing
+            measures.push_back(q.measure);
     controller.watch(measures);
     return labels;
 }

@@ -107,6 +107,9 @@ private:
     void writeTitle();
     void writeStep(int index, int& figures);
     void writeQuestion(const lessons::LessonStep& step, int s, int q);
+    /// A choice question's options (the key marks the right one) and, handed in, its tries.
+    void writeChoice(const lessons::Question& question,
+                     const std::vector<lessons::AnswerTry>& tries);
     void writeTries(const lessons::Question& question,
                     const std::vector<lessons::AnswerTry>& tries);
     const std::vector<lessons::AnswerTry>& triesOf(int step, int question) const;
@@ -223,6 +226,11 @@ void SheetWriter::writeQuestion(const lessons::LessonStep& step, int s, int q)
     m_pages.text(prompt, m_bold);
     const std::vector<lessons::AnswerTry>& tries = triesOf(s, q);
     const int indent = 18;
+    if (question.isChoice()) {
+        writeChoice(question, tries);
+        m_pages.gap(6);
+        return;
+    }
     switch (m_kind) {
     case WorksheetKind::Empty:
         m_pages.text(Worksheet::tr("Your prediction (%1):").arg(question.unit), m_pages.baseFont(),
@@ -254,6 +262,26 @@ void SheetWriter::writeQuestion(const lessons::LessonStep& step, int s, int q)
     m_pages.gap(6);
 }
 
+void SheetWriter::writeChoice(const lessons::Question& question,
+                              const std::vector<lessons::AnswerTry>& tries)
+{
+    const int indent = 18;
+    // The options to tick by hand; the key marks the right one in bold as well as by its box.
+    for (qsizetype c = 0; c < question.choices.size(); ++c) {
+        const bool right = m_kind == WorksheetKind::Key && c == question.answer;
+        m_pages.text(
+            QStringLiteral("%1 %2").arg(right ? QStringLiteral("[x]") : QStringLiteral("[  ]"),
+                                        question.choices[c]),
+            right ? m_bold : m_pages.baseFont(), indent);
+    }
+    if (m_kind == WorksheetKind::Key)
+        m_pages.text(
+            Worksheet::tr("Right answer: “%1”").arg(question.choices.value(question.answer)),
+            m_bold, indent);
+    else if (m_kind == WorksheetKind::Answers)
+        writeTries(question, tries);
+}
+
 void SheetWriter::writeTries(const lessons::Question& question,
                              const std::vector<lessons::AnswerTry>& tries)
 {
@@ -268,19 +296,21 @@ void SheetWriter::writeTries(const lessons::Question& question,
         const lessons::AnswerTry& t = tries[k];
         const lessons::Verdict& v = verdicts[k];
         // A try before the run measured anything, or judged by a run ahead, is a prediction.
+        const bool given = t.answer || t.choice;
         const QString label = t.answer && (t.ahead || !t.measured)
                                   ? Worksheet::tr("Prediction %1").arg(k + 1)
-                              : t.answer ? Worksheet::tr("Answer %1").arg(k + 1)
-                                         : Worksheet::tr("Show me");
-        const QString answer =
-            t.answer ? quantity(*t.answer, question.unit) : Worksheet::tr("(no answer)");
-        m_pages.text(QStringLiteral("%1: %2 — %3. %4")
-                         .arg(label, answer, verdictWord(v, !t.answer), v.message),
-                     m_pages.baseFont(), indent);
+                              : given ? Worksheet::tr("Answer %1").arg(k + 1)
+                                      : Worksheet::tr("Show me");
+        const QString answer = t.choice   ? QStringLiteral("“%1”").arg(t.choiceText)
+                               : t.answer ? quantity(*t.answer, question.unit)
+                                          : Worksheet::tr("(no answer)");
+        m_pages.text(
+            QStringLiteral("%1: %2 — %3. %4").arg(label, answer, verdictWord(v, !given), v.message),
+            m_pages.baseFont(), indent);
         if (v.measured)
             measured = v.value;
     }
-    if (measured)
+    if (measured && !question.isChoice())
         m_pages.text(Worksheet::tr("Measured value: %1").arg(quantity(*measured, question.unit)),
                      m_bold, indent);
 }

@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lesson_editor/choice_editor.h"
+
+#include "format/lesson.h"
+
+#include <QComboBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QJsonArray>
+#include <QLabel>
+#include <QLocale>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <array>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// The table's columns, as in the rest of the lesson editor: Czech first.
+constexpr std::array<const char*, 2> kColumnLanguages{"cs", "en"};
+
+/// An option's text in `language`: a plain string is English.
+QString optionText(const QJsonValue& option, const QString& language)
+{
+    if (option.isObject())
+        return option.toObject().value(language).toString();
+    return language == u"en" ? option.toString() : QString();
+}
+
+} // namespace
+
+ChoiceEditor::ChoiceEditor(QWidget* parent) : QWidget(parent)
+{
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* label = new QLabel(tr("O&ptions (Czech and English)"), this);
+    m_table = new QTableWidget(0, 2, this);
+    m_table->setObjectName(QStringLiteral("choiceOptions"));
+    m_table->setAccessibleName(tr("Options of the choice"));
+    m_table->setHorizontalHeaderLabels({tr("Czech"), tr("English")});
+    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
+    m_table->setSelectionMode(QAbstractItemView::SingleSelection);
+    m_table->setTabKeyNavigation(false); // Tab leaves the table for the buttons
+    m_table->setMaximumHeight(140);
+    label->setBuddy(m_table);
+    connect(m_table, &QTableWidget::itemChanged, this, [this] {
+        if (!m_showing)
+            emit edited();
+    });
+    connect(m_table, &QTableWidget::currentCellChanged, this, &ChoiceEditor::showButtons);
+    auto* buttons = new QHBoxLayout;
+    const auto button = [this, buttons](const QString& text, const char* name, auto slot) {
+        auto* b = new QPushButton(text, this);
+        b->setObjectName(QLatin1String(name));
+        QString plain = text;
+        b->setAccessibleName(plain.remove(u'&'));
+        connect(b, &QPushButton::clicked, this, slot);
+        buttons->addWidget(b);
+        return b;
+    };
+    m_add = button(tr("Add o&ption"), "addChoiceOption", [this] {
+        addOption(QLocale().language() == QLocale::Czech ? QStringLiteral("cs")
+                                                         : QStringLiteral("en"));
+    });
+    m_remove = button(tr("Remove option"), "removeChoiceOption", [this] { removeOption(); });
+    m_up = button(tr("Option up"), "choiceOptionUp", [this] { moveOption(-1); });
+    m_down = button(tr("Option down"), "choiceOptionDown", [this] { moveOption(1); });
+    m_right = new QComboBox(this);
+    m_right->setObjectName(QStringLiteral("choiceRight"));
+    m_right->setAccessibleName(tr("The right option"));
+    connect(m_right, &QComboBox::activated, this, [this] { emit edited(); });
+    auto* right = new QFormLayout;
+    right->setContentsMargins(0, 0, 0, 0);
+    right->addRow(tr("&Right option"), m_right);
+    layout->addWidget(label);
+    layout->addWidget(m_table);
+    layout->addLayout(buttons);
+    layout->addLayout(right);
+}
+
+void ChoiceEditor::setQuestion(const QJsonObject& q)
+{
+    showOptions(q.value(u"choices").toArray(), q.value(u"answer").toInt());
+}
+
+QJsonArray ChoiceEditor::options() const
+{
+    QJsonArray out;
+    for (int r = 0; r < m_table->rowCount(); ++r) {
+        QJsonObject option;
+        for (int c = 0; c < 2; ++c) {
+            const QTableWidgetItem* item = m_table->item(r, c);
+            const QString text = item ? item->text() : QString();
+            if (!text.isEmpty()) // a language left empty is missing: the loader warns of it
+                option.insert(QLatin1String(kColumnLanguages[static_cast<std::size_t>(c)]), text);
+        }
+        // English must be there (an empty text is refused, and marked, by the loader).
+        if (!option.contains(u"en"))
+            option.insert(QStringLiteral("en"), QString());
+        out.append(option);
+    }
+    return out;
+}
+
+QJsonObject ChoiceEditor::applyTo(QJsonObject q) const
+{
+    q.insert(QStringLiteral("choices"), options());
+    q.insert(QStringLiteral("answer"), std::max(m_right->currentIndex(), 0));
+    return q;
+}
+
+void ChoiceEditor::showOptions(const QJsonArray& options, int right)
+{
+    m_showing = true;
+    const int current = m_table->currentRow();
+    m_table->setRowCount(static_cast<int>(options.size()));
+    m_right->clear();
+    for (int r = 0; r < options.size(); ++r) {
+        for (int c = 0; c < 2; ++c) {
+            const QString language = QLatin1String(kColumnLanguages[static_cast<std::size_t>(c)]);
+            // The items are kept, not made anew: this runs while one of them reports its edit.
+            const QString text = optionText(options.at(r), language);
+            if (QTableWidgetItem* item = m_table->item(r, c))
+                item->setText(text);
+            else
+                m_table->setItem(r, c, new QTableWidgetItem(text));
+        }
+        QString shown = optionText(options.at(r), QLocale().language() == QLocale::Czech
+                                                      ? QStringLiteral("cs")
+                                                      : QStringLiteral("en"));
+        if (shown.isEmpty())
+            shown = optionText(options.at(r), QStringLiteral("en"));
+        m_right->addItem(QStringLiteral("%1. %2").arg(r + 1).arg(shown));
+    }
+    m_right->setCurrentIndex(std::clamp(right, 0, static_cast<int>(options.size()) - 1));
+    if (current >= 0 && current < m_table->rowCount())
+        m_table->setCurrentCell(current, std::max(m_table->currentColumn(), 0));
+    m_showing = false;
+    showButtons();
+}
+
+void ChoiceEditor::showButtons()
+{
+    const int rows = m_table->rowCount();
+    const int at = m_table->currentRow();
+    m_add->setEnabled(rows < lessons::kMaxChoices);
+    m_remove->setEnabled(at >= 0 && rows > lessons::kMinChoices);
+    m_up->setEnabled(at > 0);
+    m_down->setEnabled(at >= 0 && at < rows - 1);
+}
+
+void ChoiceEditor::addOption(const QString& language)
+{
+    QJsonArray all = options();
+    if (all.size() >= lessons::kMaxChoices)
+        return;
+    all.append(QJsonObject{{language, tr("Option %1").arg(all.size() + 1)}});
+    showOptions(all, m_right->currentIndex());
+    m_table->setCurrentCell(static_cast<int>(all.size()) - 1, 0);
+    emit edited();
+}
+
+void ChoiceEditor::removeOption()
+{
+    QJsonArray all = options();
+    const int at = m_table->currentRow();
+    if (at < 0 || at >= all.size() || all.size() <= lessons::kMinChoices)
+        return;
+    all.removeAt(at);
+    int right = m_right->currentIndex();
+    if (right > at || right == static_cast<int>(all.size()))
+        --right; // the right option keeps pointing at the same text where it can
+    showOptions(all, right);
+    emit edited();
+}
+
+void ChoiceEditor::moveOption(int by)
+{
+    QJsonArray all = options();
+    const int at = m_table->currentRow();
+    const int to = at + by;
+    if (at < 0 || to < 0 || to >= all.size())
+        return;
+    const QJsonValue moved = all.at(at);
+    all.removeAt(at);
+    all.insert(to, moved);
+    int right = m_right->currentIndex();
+    if (right == at)
+        right = to;
+    else if (right == to)
+        right = at;
+    showOptions(all, right);
+    m_table->setCurrentCell(to, std::max(m_table->currentColumn(), 0));
+    emit edited();
+}
+
+} // namespace rigidlab::ui
