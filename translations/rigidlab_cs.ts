@@ -364,6 +364,10 @@
         <source>Edit: pan the view</source>
         <translation>Editor: posunout pohled</translation>
     </message>
+    <message>
+        <source>Back to the lesson editor, at the step the student is on (while trying a lesson from it)</source>
+        <translation>Zpět do editoru lekcí, na krok, na kterém je žák (při zkoušení lekce z editoru)</translation>
+    </message>
 </context>
 <context>
     <name>CsvColumns</name>
@@ -1123,6 +1127,42 @@
         <source>the student is asked to set %1 with the controls, which this question holds back until it is answered</source>
         <translation>student má ovládáním nastavit %1, ale tato otázka Ovládání zadržuje, dokud není zodpovězena</translation>
     </message>
+    <message>
+        <source>not with &quot;choice&quot;: a try either chooses an option or gives a number</source>
+        <translation>nepatří k &quot;choice&quot;: pokus buď volí možnost, nebo udává číslo</translation>
+    </message>
+    <message>
+        <source>must be the option&apos;s text, 1 to %1 characters</source>
+        <translation>musí být text možnosti, 1 až %1 znaků</translation>
+    </message>
+    <message>
+        <source>only with &quot;choice&quot; (the option chosen)</source>
+        <translation>jen spolu s &quot;choice&quot; (zvolenou možností)</translation>
+    </message>
+    <message>
+        <source>required with &quot;answer&quot;, but missing (the options to choose from)</source>
+        <translation>povinné spolu s &quot;answer&quot;, ale chybí (možnosti, ze kterých se volí)</translation>
+    </message>
+    <message>
+        <source>not for a question with &quot;choices&quot;: it is answered by choosing, nothing is measured</source>
+        <translation>nepatří k otázce s &quot;choices&quot;: odpovídá se na ni výběrem, nic se neměří</translation>
+    </message>
+    <message>
+        <source>must be an array of %1 to %2 options, each a text &quot;...&quot; or {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, got </source>
+        <translation>musí být pole %1 až %2 možností, každá text &quot;...&quot; nebo {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, je </translation>
+    </message>
+    <message>
+        <source>options</source>
+        <translation>možnosti</translation>
+    </message>
+    <message>
+        <source>%1 options, fewer than the %2 a choice needs</source>
+        <translation>počet možností %1 je menší než %2, kolik otázka s výběrem potřebuje</translation>
+    </message>
+    <message>
+        <source>required, but missing (the index of the right option, 0 for the first)</source>
+        <translation>povinné, ale chybí (pořadí správné možnosti, 0 pro první)</translation>
+    </message>
 </context>
 <context>
     <name>ImpulseFormula</name>
@@ -1220,6 +1260,26 @@
     <message>
         <source>When it runs, the simulation will measure %1.</source>
         <translation>Až simulace poběží, naměří %1.</translation>
+    </message>
+    <message>
+        <source>The right answer: “%1”.</source>
+        <translation>Správná odpověď: „%1“.</translation>
+    </message>
+    <message>
+        <source>Not quite (you chose “%1”). Try once more.</source>
+        <translation>Ne tak docela (vaše volba: „%1“). Zkuste to ještě jednou.</translation>
+    </message>
+    <message>
+        <source>Not quite (you chose “%1”). Hint: %2</source>
+        <translation>Ne tak docela (vaše volba: „%1“). Nápověda: %2</translation>
+    </message>
+    <message>
+        <source>Right: “%1”.</source>
+        <translation>Správně: „%1“.</translation>
+    </message>
+    <message>
+        <source>Not quite: the right answer is “%1” (you chose “%2”).</source>
+        <translation>Ne tak docela: správná odpověď je „%1“ (vaše volba: „%2“).</translation>
     </message>
 </context>
 <context>
@@ -1902,6 +1962,10 @@ n = (%4; %5)</translation>
         <source>cannot write %1: could not start drawing the PDF</source>
         <translation>nelze zapsat %1: kreslení PDF nešlo začít</translation>
     </message>
+    <message>
+        <source>Right answer: “%1”</source>
+        <translation>Správná odpověď: „%1“</translation>
+    </message>
 </context>
 <context>
     <name>WorksheetText</name>
@@ -2238,6 +2302,53 @@ n = (%4; %5)</translation>
     <message>
         <source>Bounce heights</source>
         <translation>Výšky odskoků</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::ChoiceEditor</name>
+    <message>
+        <source>O&amp;ptions (Czech and English)</source>
+        <translation>&amp;Možnosti (česky a anglicky)</translation>
+    </message>
+    <message>
+        <source>Options of the choice</source>
+        <translation>Možnosti výběru</translation>
+    </message>
+    <message>
+        <source>Czech</source>
+        <translation>Česky</translation>
+    </message>
+    <message>
+        <source>English</source>
+        <translation>Anglicky</translation>
+    </message>
+    <message>
+        <source>Add o&amp;ption</source>
+        <translation>Přidat mo&amp;žnost</translation>
+    </message>
+    <message>
+        <source>Remove option</source>
+        <translation>Odebrat možnost</translation>
+    </message>
+    <message>
+        <source>Option up</source>
+        <translation>Možnost nahoru</translation>
+    </message>
+    <message>
+        <source>Option down</source>
+        <translation>Možnost dolů</translation>
+    </message>
+    <message>
+        <source>The right option</source>
+        <translation>Správná možnost</translation>
+    </message>
+    <message>
+        <source>&amp;Right option</source>
+        <translation>&amp;Správná možnost</translation>
+    </message>
+    <message>
+        <source>Option %1</source>
+        <translation>Možnost %1</translation>
     </message>
 </context>
 <context>
@@ -3643,6 +3754,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Edit the step&apos;s scene</source>
         <translation>Upravit scénu kroku</translation>
     </message>
+    <message>
+        <source>Step %1: %2</source>
+        <translation>Krok %1: %2</translation>
+    </message>
+    <message>
+        <source>Running the steps&apos; scenes to check them…</source>
+        <translation>Scény kroků se spouštějí ke kontrole…</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonPlayer</name>
@@ -3841,6 +3960,18 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>your answer, in %1</source>
         <translation>vaše odpověď, v&#xa0;jednotkách %1</translation>
+    </message>
+    <message>
+        <source>Check the option chosen</source>
+        <translation>Zkontrolovat zvolenou možnost</translation>
+    </message>
+    <message>
+        <source>Give up and show the right answer</source>
+        <translation>Vzdát to a ukázat správnou odpověď</translation>
+    </message>
+    <message>
+        <source>Choose an answer first.</source>
+        <translation>Nejdřív zvolte odpověď.</translation>
     </message>
 </context>
 <context>
@@ -4099,6 +4230,50 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Edi&amp;t lesson…</source>
         <translation>Upravi&amp;t lekci…</translation>
+    </message>
+    <message>
+        <source>Energy of the compared</source>
+        <translation>Energie porovnávaných světů</translation>
+    </message>
+    <message>
+        <source>Drift of the compared</source>
+        <translation>Drift porovnávaných světů</translation>
+    </message>
+    <message>
+        <source>Inspector</source>
+        <translation>Inspektor</translation>
+    </message>
+    <message>
+        <source>Separating axis test</source>
+        <translation>Test oddělující osy</translation>
+    </message>
+    <message>
+        <source>Axis test</source>
+        <translation>Test os</translation>
+    </message>
+    <message>
+        <source>Bounces</source>
+        <translation>Odrazy</translation>
+    </message>
+    <message>
+        <source>Collision</source>
+        <translation>Srážka</translation>
+    </message>
+    <message>
+        <source>&amp;Back to the lesson editor</source>
+        <translation>&amp;Zpět do editoru lekcí</translation>
+    </message>
+    <message>
+        <source>Trying a lesson</source>
+        <translation>Zkoušení lekce</translation>
+    </message>
+    <message>
+        <source>Trying the lesson as a student sees it.</source>
+        <translation>Zkoušíte lekci tak, jak ji vidí žák.</translation>
+    </message>
+    <message>
+        <source>Back to the lesson editor (%1)</source>
+        <translation>Zpět do editoru lekcí (%1)</translation>
     </message>
 </context>
 <context>
@@ -4779,8 +4954,59 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Laboratoř naměří %1&#xa0;%3; správně jsou odpovědi od %2 do %4&#xa0;%3.</translation>
     </message>
     <message>
-        <source>⚠ The integrators a student may choose measure from %1 to %2 %3, wider than the answers judged right: lock the integrator (Shown and locked) or widen the tolerance.</source>
-        <translation>⚠ Integrátory, které si žák může zvolit, naměří od %1 do %2 %3, víc, než kolik pokrývají odpovědi uznané za správné: zamkněte integrátor (Zobrazeno a zamčeno), nebo zvětšete toleranci.</translation>
+        <source>Kind of question</source>
+        <translation>Druh otázky</translation>
+    </message>
+    <message>
+        <source>a number measured from the run</source>
+        <translation>číslo změřené v simulaci</translation>
+    </message>
+    <message>
+        <source>a choice of answers</source>
+        <translation>výběr z odpovědí</translation>
+    </message>
+    <message>
+        <source>&amp;Kind</source>
+        <translation>&amp;Druh</translation>
+    </message>
+    <message>
+        <source>A setting the student changes with the controls before the run this question measures (&quot;Set e = 0 and run again&quot;)</source>
+        <translation>Nastavení, které student změní v Ovládání před během, který tato otázka měří („Nastavte e = 0 a spusťte znovu“)</translation>
+    </message>
+    <message>
+        <source>Student &amp;sets first</source>
+        <translation>Student &amp;nejdřív nastaví</translation>
+    </message>
+    <message>
+        <source>Option %1</source>
+        <translation>Možnost %1</translation>
+    </message>
+    <message>
+        <source>The student chooses one of %1 options; the right one is “%2”.</source>
+        <translation>Žák volí jednu z %1 možností; správná je „%2“.</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::QuestionSetEditor</name>
+    <message>
+        <source>Setting the student sets first</source>
+        <translation>Nastavení, které student nejdřív změní</translation>
+    </message>
+    <message>
+        <source>nothing (the step&apos;s settings)</source>
+        <translation>nic (nastavení kroku)</translation>
+    </message>
+    <message>
+        <source>Value the student sets</source>
+        <translation>Hodnota, kterou student nastaví</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>zapnuto</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vypnuto</translation>
     </message>
 </context>
 <context>
@@ -5134,47 +5360,18 @@ B&#xa0;%3 … %4</translation>
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::StepChecks</name>
+    <message>
+        <source>The step&apos;s simulation, run with its settings, %1.</source>
+        <translation>Simulace kroku spuštěná s jeho nastavením %1.</translation>
+    </message>
+    <message>
+        <source>Question %1: the integrators a student may choose measure from %2 to %3 %4, wider than the answers judged right (%5 to %6 %4): lock the integrator (Shown and locked) or widen the tolerance.</source>
+        <translation>Otázka %1: integrátory, které si žák může zvolit, naměří od %2 do %3 %4, víc, než kolik pokrývají odpovědi uznané za správné (%5 až %6 %4): zamkněte integrátor (Zobrazeno a zamčeno), nebo zvětšete toleranci.</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::StepSettingsEditor</name>
-    <message>
-        <source>Energy</source>
-        <translation>Energie</translation>
-    </message>
-    <message>
-        <source>Momentum</source>
-        <translation>Hybnost</translation>
-    </message>
-    <message>
-        <source>Energy drift</source>
-        <translation>Energetický drift</translation>
-    </message>
-    <message>
-        <source>Energy of the compared</source>
-        <translation>Energie porovnávaných světů</translation>
-    </message>
-    <message>
-        <source>Drift of the compared</source>
-        <translation>Drift porovnávaných světů</translation>
-    </message>
-    <message>
-        <source>Controls</source>
-        <translation>Ovládání</translation>
-    </message>
-    <message>
-        <source>Inspector</source>
-        <translation>Inspektor</translation>
-    </message>
-    <message>
-        <source>Separating axes</source>
-        <translation>Oddělující osy</translation>
-    </message>
-    <message>
-        <source>Bounces</source>
-        <translation>Odrazy</translation>
-    </message>
-    <message>
-        <source>Collision</source>
-        <translation>Srážka</translation>
-    </message>
     <message>
         <source>What the step shows and lets the student change</source>
         <translation>Co krok ukazuje a co smí žák měnit</translation>
@@ -5395,31 +5592,6 @@ B&#xa0;%3 … %4</translation>
 </context>
 <context>
     <name>rigidlab::ui::WindowLayout</name>
-    <message>
-        <source>Controls</source>
-        <translation>Ovládání</translation>
-    </message>
-    <message>
-        <source>Inspector</source>
-        <translation>Inspektor</translation>
-    </message>
-    <message>
-        <source>Axis test</source>
-        <comment>short for: separating axis test</comment>
-        <translation>Test os</translation>
-    </message>
-    <message>
-        <source>Separating axis test</source>
-        <translation>Test oddělující osy</translation>
-    </message>
-    <message>
-        <source>Bounces</source>
-        <translation>Odrazy</translation>
-    </message>
-    <message>
-        <source>Collision</source>
-        <translation>Srážka</translation>
-    </message>
     <message>
         <source>Error vs run time</source>
         <translation>Chyba vs. doba běhu</translation>

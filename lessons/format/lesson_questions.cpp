@@ -203,9 +203,9 @@ bool readChoiceQuestion(JsonReader& in, LocalTexts& texts, const QJsonObject& ob
         return in.fail(at, FileMessages::tr("required with \"answer\", but missing (the options "
                                             "to choose from)"));
     }
-    for (const QStringView key : {QStringView(u"measure"), QStringView(u"unit"),
-                                  QStringView(u"tolerance"), QStringView(u"absoluteTolerance"),
-                                  QStringView(u"set")}) {
+    for (const QStringView key :
+         {QStringView(u"measure"), QStringView(u"unit"), QStringView(u"tolerance"),
+          QStringView(u"absoluteTolerance"), QStringView(u"set")}) {
         if (object.contains(key)) {
             return in.fail(joinPlace(place, key),
                            FileMessages::tr("not for a question with \"choices\": it is "

@@ -75,6 +75,7 @@ private slots:
     void stepThatDivergesIsMarked();
     void staleStepChecksDropped();
     void tryAndBackToTheEditor();
+    void questionAsksTheStudentToSet();
     // Shipped lessons.
     void shippedLessonsOpenAndSaveUnchanged_data();
     void shippedLessonsOpenAndSaveUnchanged();

@@ -147,3 +147,57 @@ void TestLessonEditor::tryAndBackToTheEditor()
     QVERIFY(ed->close());
     QTRY_VERIFY(!bar->isVisible());
 }
+
+void TestLessonEditor::questionAsksTheStudentToSet()
+{
+    // A measured question that asks the student to set e = 0 first: chosen from the
+    // settings' list, the value typed; a step without the controls is a problem, named.
+    ui::LessonEditor ed;
+    QVERIFY(onSprings(ed));
+    LessonDraft& d = ed.draft();
+    ed.selectStep(0);
+    auto* add = ed.findChild<QPushButton*>(QStringLiteral("addMeasuredQuestion"));
+    QVERIFY(add != nullptr);
+    QTest::mouseClick(add, Qt::LeftButton);
+    auto* key = ed.findChild<QComboBox*>(QStringLiteral("questionSetKey"));
+    QVERIFY(key != nullptr);
+    const int restitution = key->findData(QStringLiteral("restitution"));
+    QVERIFY(restitution > 0);
+    key->setCurrentIndex(restitution);
+    emit key->activated(restitution);
+    auto* value = ed.findChild<QLineEdit*>(QStringLiteral("questionSetNumber"));
+    QVERIFY(value != nullptr);
+    value->setFocus();
+    value->selectAll();
+    QTest::keyClicks(value, QStringLiteral("0.25"));
+    QTest::keyClick(value, Qt::Key_Return);
+    const auto set = [&d] {
+        return d.value(0, QStringLiteral("questions"))
+            .toArray()
+            .at(0)
+            .toObject()
+            .value(u"set")
+            .toObject();
+    };
+    QCOMPARE(set(), (QJsonObject{{QStringLiteral("restitution"), 0.25}}));
+    const LessonDraft::Check check = d.check(QStringLiteral("en"));
+    QVERIFY2(check.error.isEmpty(), qPrintable(check.error));
+    QVERIFY2(check.warnings.join(u'\n').contains(
+                 QStringLiteral("questions[0].set: the student is asked to set restitution with "
+                                "the controls, but this step does not show the controls panel")),
+             qPrintable(check.warnings.join(u'\n')));
+    // Each change is one undo step: the value typed, then the setting chosen (at the start
+    // of its range).
+    d.undoStack()->undo();
+    QCOMPARE(set(), (QJsonObject{{QStringLiteral("restitution"), 0.0}}));
+    d.undoStack()->undo();
+    QVERIFY(set().isEmpty());
+    d.undoStack()->redo();
+    d.undoStack()->redo();
+    QCOMPARE(set(), (QJsonObject{{QStringLiteral("restitution"), 0.25}}));
+    // "Nothing" removes the key.
+    key->setCurrentIndex(0);
+    emit key->activated(0);
+    QVERIFY(set().isEmpty());
+    QVERIFY(!d.value(0, QStringLiteral("questions")).toArray().at(0).toObject().contains(u"set"));
+}

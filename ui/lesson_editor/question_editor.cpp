@@ -2,6 +2,7 @@
 #include "lesson_editor/question_editor.h"
 #include "lesson_editor/choice_editor.h"
 #include "lesson_editor/lesson_draft.h"
+#include "lesson_editor/question_set_editor.h"
 
 #include "run/measurements.h"
 
@@ -179,6 +180,10 @@ QFormLayout* QuestionEditor::buildForm()
     form->addRow(tr("&At time"), m_time);
     form->addRow(tr("&Unit"), m_unit);
     form->addRow(tr("&Tolerance"), m_tolerance);
+    m_set = new QuestionSetEditor(this);
+    m_set->setToolTip(tr("A setting the student changes with the controls before the run "
+                         "this question measures (\"Set e = 0 and run again\")"));
+    form->addRow(tr("Student &sets first"), m_set);
     form->addRow(m_holdRun);
     connect(m_kind, &QComboBox::activated, this, &QuestionEditor::edited);
     connect(m_body, &QComboBox::activated, this, &QuestionEditor::edited);
@@ -186,6 +191,7 @@ QFormLayout* QuestionEditor::buildForm()
     connect(m_unit, &QLineEdit::textEdited, this, &QuestionEditor::edited);
     connect(m_tolerance, &QDoubleSpinBox::valueChanged, this, &QuestionEditor::edited);
     connect(m_holdRun, &QCheckBox::toggled, this, &QuestionEditor::edited);
+    connect(m_set, &QuestionSetEditor::edited, this, &QuestionEditor::edited);
     return form;
 }
 
@@ -330,6 +336,10 @@ void QuestionEditor::applyMeasured(QJsonObject& q)
         m_unit->setText(QLatin1String(k.unit)); // the new quantity's unit, unless typed
     q.insert(QStringLiteral("unit"), m_unit->text());
     q.insert(QStringLiteral("tolerance"), m_tolerance->value() / 100.0);
+    if (m_set->value().isEmpty())
+        q.remove(QStringLiteral("set"));
+    else
+        q.insert(QStringLiteral("set"), m_set->value());
 }
 
 void QuestionEditor::refresh()
@@ -385,11 +395,13 @@ void QuestionEditor::refresh()
     m_time->setValue(measure.value(u"time").toDouble());
     m_unit->setText(q.value(u"unit").toString());
     m_tolerance->setValue(q.value(u"tolerance").toDouble(0.05) * 100.0);
+    m_set->show(q.value(u"set").toObject());
     m_holdRun->setChecked(q.value(u"holdBack").toArray().contains(QStringLiteral("run")));
     // A choice question shows its options in place of what a number is measured by.
     const bool choice = q.contains(u"choices");
     m_questionKind->setCurrentIndex(choice ? 1 : 0);
-    for (QWidget* w : std::initializer_list<QWidget*>{m_kind, m_body, m_time, m_unit, m_tolerance})
+    for (QWidget* w :
+         std::initializer_list<QWidget*>{m_kind, m_body, m_time, m_unit, m_tolerance, m_set})
         m_fields->setRowVisible(w, !choice);
     m_fields->setRowVisible(m_choices, choice);
     if (choice)

@@ -25,6 +25,7 @@ namespace rigidlab::ui {
 
 class ChoiceEditor;
 class LessonDraft;
+class QuestionSetEditor;
 
 class QuestionEditor : public QWidget {
     Q_OBJECT
@@ -67,6 +68,8 @@ private:
     QLineEdit* m_unit = nullptr;
     QDoubleSpinBox* m_tolerance = nullptr;
     QCheckBox* m_holdRun = nullptr;
+    QuestionSetEditor* m_set = nullptr; ///< what the student sets first
+
     QLabel* m_answer = nullptr;
     QWidget* m_form = nullptr; ///< the selected question's fields
     QJsonObject m_measuredFor; ///< what the answer shown was measured for

@@ -153,7 +153,7 @@ void LessonPlayer::checkTyped(std::size_t i)
     const double answer = *parsed;
     if (std::abs(answer) > kMaxAnswer) {
         askFirst(row.result, tr("Type a number from %1 to %2.")
-                                     .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
+                                 .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
         return;
     }
     // A question that asks for settings first is judged on the run it asks for.
