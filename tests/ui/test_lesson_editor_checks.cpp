@@ -159,6 +159,10 @@ void TestLessonEditor::questionAsksTheStudentToSet()
     auto* add = ed.findChild<QPushButton*>(QStringLiteral("addMeasuredQuestion"));
     QVERIFY(add != nullptr);
     QTest::mouseClick(add, Qt::LeftButton);
+    auto* czech = ed.findChild<QLineEdit*>(QStringLiteral("questionPrompt_cs"));
+    QVERIFY(czech != nullptr);
+    czech->setFocus();
+    QTest::keyClicks(czech, QStringLiteral("Jak rychle?"));
     auto* key = ed.findChild<QComboBox*>(QStringLiteral("questionSetKey"));
     QVERIFY(key != nullptr);
     const int restitution = key->findData(QStringLiteral("restitution"));

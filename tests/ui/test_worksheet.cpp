@@ -128,7 +128,8 @@ int figuresOfStep(const QString& text, const QString& word, int step)
 /// The measured value a question is judged against, as the window will measure it.
 std::optional<double> expectedValue(const lessons::LessonStep& step, const lessons::Question& q)
 {
-    return lessons::measureAhead(step, q.measure);
+    // On the run the question asks for (its "set" on top of the step's settings).
+    return lessons::measureAhead(lessons::askedStep(step, q), q.measure);
 }
 
 /// Answers every question of the open lesson, step by step, in turn: a wrong try then a right
