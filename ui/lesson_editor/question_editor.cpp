@@ -119,6 +119,7 @@ QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
     m_form->layout()->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_form);
     layout->addWidget(m_answer);
+    layout->addStretch(1); // the list and the fields at the top, not spread down the pane
     refresh();
 }
 
