@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/choice_editor.h"
+#include "lesson_editor/editor_button.h"
 
 #include "format/lesson.h"
 
@@ -55,12 +56,8 @@ ChoiceEditor::ChoiceEditor(QWidget* parent) : QWidget(parent)
     connect(m_table, &QTableWidget::currentCellChanged, this, &ChoiceEditor::showButtons);
     auto* buttons = new QHBoxLayout;
     const auto button = [this, buttons](const QString& text, const char* name, auto slot) {
-        auto* b = new QPushButton(text, this);
-        b->setObjectName(QLatin1String(name));
-        QString plain = text;
-        b->setAccessibleName(plain.remove(u'&'));
+        QPushButton* b = addEditorButton(this, buttons, text, name);
         connect(b, &QPushButton::clicked, this, slot);
-        buttons->addWidget(b);
         return b;
     };
     m_add = button(tr("Add o&ption"), "addChoiceOption", [this] {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/question_editor.h"
 #include "lesson_editor/choice_editor.h"
+#include "lesson_editor/editor_button.h"
 #include "lesson_editor/lesson_draft.h"
 #include "lesson_editor/question_set_editor.h"
 
@@ -99,12 +100,8 @@ QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
     });
     auto* buttons = new QHBoxLayout;
     const auto button = [this, buttons](const QString& text, const char* name, auto slot) {
-        auto* b = new QPushButton(text, this);
-        b->setObjectName(QLatin1String(name));
-        QString plain = text;
-        b->setAccessibleName(plain.remove(u'&'));
+        QPushButton* b = addEditorButton(this, buttons, text, name);
         connect(b, &QPushButton::clicked, this, slot);
-        buttons->addWidget(b);
     };
     button(tr("Add a &measured question"), "addMeasuredQuestion", [this] { addQuestion(false); });
     button(tr("Add a &predict-first question"), "addPredictQuestion",
