@@ -224,7 +224,9 @@ private:
     QAction* m_presentAction = nullptr;
     // Try as a student: the editor the lesson playing was tried from, the lesson's file, and
     // the way back (the bar is made at the first try, so that no saved layout shows it).
-    QPointer<LessonEditor> m_triedFrom;
+    // Held as a widget: its end is heard from QWidget's destructor, when it is no longer
+    // a LessonEditor.
+    QPointer<QWidget> m_triedFrom;
     QString m_triedPath;
     QAction* m_backToEditor = nullptr;
     QToolBar* m_backBar = nullptr;

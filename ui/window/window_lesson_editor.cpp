@@ -86,14 +86,15 @@ void MainWindow::hideWayBack()
 
 void MainWindow::backToLessonEditor()
 {
-    if (!m_triedFrom) {
+    auto* editor = qobject_cast<LessonEditor*>(m_triedFrom.data());
+    if (editor == nullptr) {
         hideWayBack();
         return;
     }
-    m_triedFrom->selectStep(m_player->stepIndex());
-    m_triedFrom->show();
-    m_triedFrom->raise();
-    m_triedFrom->activateWindow();
+    editor->selectStep(m_player->stepIndex());
+    editor->show();
+    editor->raise();
+    editor->activateWindow();
 }
 
 LessonEditor* MainWindow::editLesson(const QString& path, QString* error)
@@ -120,8 +121,8 @@ LessonEditor* MainWindow::editLesson(const QString& path, QString* error)
                 raise();
                 activateWindow();
             });
-    connect(editor, &QObject::destroyed, m_backToEditor, [this, editor] {
-        if (!m_triedFrom || m_triedFrom.data() == editor)
+    connect(editor, &QObject::destroyed, m_backToEditor, [this](QObject* gone) {
+        if (!m_triedFrom || m_triedFrom.data() == gone)
             hideWayBack(); // the editor closed: there is nothing to go back to
     });
     // The step's scene drawn in this window's scene editor, and taken back from it.
