@@ -1835,6 +1835,10 @@ n = (%4; %5)</translation>
         <source>the lesson editor on a shipped lesson</source>
         <translation>editor lekcí s dodanou lekcí</translation>
     </message>
+    <message>
+        <source>%1 needs %2×%3 px, more than the %4×%5 asked for</source>
+        <translation>%1 potřebuje %2×%3 px, víc než požadovaných %4×%5</translation>
+    </message>
 </context>
 <context>
     <name>SpokenNumbers</name>
@@ -4930,8 +4934,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Jak rychle se pohybuje v&#xa0;čase 1&#xa0;s?</translation>
     </message>
     <message>
-        <source>%1. %2 (predict first)</source>
-        <translation>%1. %2 (nejdřív předpověď)</translation>
+        <source>%1. Predict first: %2</source>
+        <translation>%1. Nejdřív předpověď: %2</translation>
     </message>
     <message>
         <source>%1 (not in the scene)</source>

@@ -169,7 +169,10 @@ void TestLessonEditor::widgetsShownAndLocked()
     LessonDraft& d = ed->draft();
     ed->selectStep(0);
     auto* pages = child<QTabWidget>(*ed, QStringLiteral("stepPages"));
-    pages->setCurrentWidget(&ed->stepSettings());
+    for (int i = 0; i < pages->count(); ++i)
+        if (pages->widget(i)->isAncestorOf(&ed->stepSettings()))
+            pages->setCurrentIndex(i);
+    QVERIFY(pages->currentWidget()->isAncestorOf(&ed->stepSettings()));
     ed->activateWindow();
     QVERIFY(QTest::qWaitForWindowActive(ed));
     ui::StepSettingsEditor& settings = ed->stepSettings();
@@ -293,6 +296,14 @@ void TestLessonEditor::widgetsQuestions()
              QStringLiteral("Jak rychle?"));
     QCOMPARE(questions().at(0).toObject().value(u"prompt").toObject().value(u"cs").toString(),
              QStringLiteral("Jak rychle?"));
+    // A word mended in the middle: each key is an edit, and the cursor stays where it types.
+    auto* promptCs = child<QLineEdit>(*ed, QStringLiteral("questionPrompt_cs"));
+    promptCs->setFocus();
+    promptCs->setCursorPosition(3);
+    QTest::keyClicks(promptCs, QStringLiteral(" to"));
+    QCOMPARE(promptCs->cursorPosition(), 6);
+    QCOMPARE(questions().at(0).toObject().value(u"prompt").toObject().value(u"cs").toString(),
+             QStringLiteral("Jak to rychle?"));
     // The lab's own answer beside the tolerance, or why it has none.
     const QString answer = child<QLabel>(*ed, QStringLiteral("questionAnswer"))->text();
     QVERIFY2(answer.contains(QStringLiteral("measures")) || answer.contains(u'⚠'),
@@ -305,6 +316,11 @@ void TestLessonEditor::widgetsQuestions()
     QVERIFY(
         questions().at(1).toObject().value(u"holdBack").toArray().contains(QStringLiteral("run")));
     QVERIFY(child<QCheckBox>(*ed, QStringLiteral("questionHoldRun"))->isChecked());
+    // With a question's fields open the editor still fits a 1024×768 projector below its
+    // title bar (at most 48 px): the pages scroll instead of growing the window.
+    const QSize least = ed->minimumSizeHint();
+    QVERIFY2(least.width() <= 1024 && least.height() <= 768 - 48,
+             qPrintable(QStringLiteral("%1×%2 px").arg(least.width()).arg(least.height())));
     auto* steps = child<QListWidget>(*ed, QStringLiteral("lessonSteps"));
     steps->setFocus();
     QTest::keyClick(steps, Qt::Key_Z, Qt::ControlModifier);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/choice_editor.h"
-#include "lesson_editor/editor_button.h"
+#include "lesson_editor/editor_parts.h"
 
 #include "format/lesson.h"
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/lesson_editor.h"
+#include "lesson_editor/editor_parts.h"
 #include "lesson_editor/question_editor.h"
 #include "lesson_editor/step_checks.h"
 #include "lesson_editor/step_settings_editor.h"
@@ -23,6 +24,7 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSpinBox>
 #include <QSplitter>
 #include <QStyle>
@@ -50,6 +52,17 @@ QString languageName(int language)
 
 /// How often the unsaved lesson is written to the autosave [ms].
 constexpr int kAutosaveMs = 30'000;
+
+/// A page of a tab widget that scrolls when the window is shorter than all of it.
+QScrollArea* scrolling(QWidget* page)
+{
+    auto* area = new QScrollArea;
+    area->setWidget(page);
+    area->setWidgetResizable(true);
+    area->setFrameShape(QFrame::NoFrame);
+    area->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    return area;
+}
 
 } // namespace
 
@@ -162,6 +175,7 @@ QWidget* LessonEditor::buildStepList()
     m_steps = new QListWidget(box);
     m_steps->setObjectName(QStringLiteral("lessonSteps"));
     m_steps->setAccessibleName(tr("Steps of the lesson"));
+    fitRowsToWidth(m_steps);
     label->setBuddy(m_steps);
     connect(m_steps, &QListWidget::currentRowChanged, this, [this] {
         if (!m_refreshing)
@@ -266,12 +280,14 @@ QWidget* LessonEditor::buildStepTexts()
     pages->setObjectName(QStringLiteral("stepPages"));
     pages->setAccessibleName(tr("The step's questions and settings"));
     m_questions = new QuestionEditor(m_draft, pages);
-    pages->addTab(m_questions, tr("Questions"));
+    pages->addTab(scrolling(m_questions), tr("Questions"));
     m_settings = new StepSettingsEditor(m_draft, pages);
-    pages->addTab(m_settings, tr("Shown and locked"));
+    pages->addTab(scrolling(m_settings), tr("Shown and locked"));
     split->addWidget(pages);
-    split->setStretchFactor(0, 3);
+    // Half for the texts, half for the questions: the questions are what a step is for.
+    split->setStretchFactor(0, 1);
     split->setStretchFactor(1, 1);
+    split->setSizes({1, 1});
     return split;
 }
 

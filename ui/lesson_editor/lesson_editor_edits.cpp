@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The lesson editor's window: edits made through its fields and buttons, and what it shows
 // read back from the draft after each one (an edit, an undo, a redo, an open).
+#include "lesson_editor/editor_parts.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
 #include "lesson_editor/step_checks.h"
@@ -215,13 +216,7 @@ void LessonEditor::refreshLesson()
     }};
     for (const auto& [key, edits] : rows)
         for (int l = 0; l < 2; ++l) {
-            QLineEdit* e = (*edits)[static_cast<std::size_t>(l)];
-            const QString t = m_draft.text(-1, key, codeOf(l));
-            if (e->text() != t) {
-                e->setText(t);
-                if (!e->hasFocus())
-                    e->setCursorPosition(0); // the start of a long summary, not its end
-            }
+            showText((*edits)[static_cast<std::size_t>(l)], m_draft.text(-1, key, codeOf(l)));
         }
     m_minutes->setValue(m_draft.value(-1, QStringLiteral("minutes")).toInt());
 }
@@ -286,7 +281,7 @@ void LessonEditor::refreshSteps()
             if (check.steps[k] == i)
                 lines.append(line);
         }
-        item->setToolTip((lines + runLines).join(u'\n'));
+        item->setToolTip((QStringList{item->text()} + lines + runLines).join(u'\n'));
     }
     m_steps->setCurrentRow(std::clamp(keep, 0, m_draft.stepCount() - 1));
     QStringList all;
@@ -312,8 +307,7 @@ void LessonEditor::refreshStepTexts()
         const QString c = codeOf(l);
         const QString title = step < 0 ? QString() : m_draft.text(step, QStringLiteral("title"), c);
         const QString text = step < 0 ? QString() : m_draft.text(step, QStringLiteral("text"), c);
-        if (m_stepTitle[i]->text() != title)
-            m_stepTitle[i]->setText(title);
+        showText(m_stepTitle[i], title);
         if (m_stepText[i]->toPlainText() != text)
             m_stepText[i]->setPlainText(text);
         m_missing[i]->setVisible(step >= 0 &&

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/question_editor.h"
 #include "lesson_editor/choice_editor.h"
-#include "lesson_editor/editor_button.h"
+#include "lesson_editor/editor_parts.h"
 #include "lesson_editor/lesson_draft.h"
 #include "lesson_editor/question_set_editor.h"
 
@@ -93,6 +93,7 @@ QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
     m_list->setObjectName(QStringLiteral("questionList"));
     m_list->setAccessibleName(tr("Questions of the step"));
     m_list->setMaximumHeight(70);
+    fitRowsToWidth(m_list);
     label->setBuddy(m_list);
     connect(m_list, &QListWidget::currentRowChanged, this, [this] {
         if (!m_refreshing)
@@ -356,8 +357,10 @@ void QuestionEditor::refresh()
             text = p.toObject().value(u"en").toString();
         const bool predict =
             all.at(i).toObject().value(u"holdBack").toArray().contains(QStringLiteral("run"));
-        m_list->item(i)->setText(predict ? tr("%1. %2 (predict first)").arg(i + 1).arg(text)
+        // The kind first: a long prompt ends in "…", its tooltip has all of it.
+        m_list->item(i)->setText(predict ? tr("%1. Predict first: %2").arg(i + 1).arg(text)
                                          : QStringLiteral("%1. %2").arg(i + 1).arg(text));
+        m_list->item(i)->setToolTip(text);
     }
     m_list->setCurrentRow(all.isEmpty() ? -1 : keep);
 
@@ -383,15 +386,15 @@ void QuestionEditor::refresh()
 
     const QJsonValue p = q.value(u"prompt");
     for (int l = 0; l < 2; ++l)
-        m_prompt[static_cast<std::size_t>(l)]->setText(
-            p.isObject() ? p.toObject().value(langCode(l)).toString()
-                         : (l == 1 ? p.toString() : QString()));
+        showText(m_prompt[static_cast<std::size_t>(l)],
+                 p.isObject() ? p.toObject().value(langCode(l)).toString()
+                              : (l == 1 ? p.toString() : QString()));
     const Kind& k = kindOf(measure.value(u"kind").toString());
     m_kind->setCurrentIndex(m_kind->findData(QLatin1String(k.id)));
     m_body->setEnabled(k.body);
     m_time->setEnabled(k.time);
     m_time->setValue(measure.value(u"time").toDouble());
-    m_unit->setText(q.value(u"unit").toString());
+    showText(m_unit, q.value(u"unit").toString());
     m_tolerance->setValue(q.value(u"tolerance").toDouble(0.05) * 100.0);
     m_set->show(q.value(u"set").toObject());
     m_holdRun->setChecked(q.value(u"holdBack").toArray().contains(QStringLiteral("run")));

@@ -163,7 +163,19 @@ public:
     /// Shoots `widget`, a window of its own (the lesson editor), at the screenshots' size.
     bool writeWindow(QWidget& widget, const QString& name, const QString& what)
     {
-        widget.resize(m_options.size / widget.devicePixelRatioF());
+        const QSize asked = m_options.size / widget.devicePixelRatioF();
+        const QSize least = widget.minimumSizeHint().expandedTo(widget.minimumSize());
+        if (least.width() > asked.width() || least.height() > asked.height()) {
+            // A window that does not fit the screen asked for would be shown cut.
+            m_result.error = Screenshots::tr("%1 needs %2×%3 px, more than the %4×%5 asked for")
+                                 .arg(name)
+                                 .arg(least.width())
+                                 .arg(least.height())
+                                 .arg(asked.width())
+                                 .arg(asked.height());
+            return false;
+        }
+        widget.resize(asked);
         settle(m_window);
         QImage image = widget.grab().toImage();
         if (image.size() != m_options.size)
@@ -335,14 +347,15 @@ bool shootInstruments(MainWindow& window, Shooter& shooter)
     return ruler;
 }
 
-/// The lesson editor on the first shipped lesson (opened as a copy), at its second step.
+/// The lesson editor on the first shipped lesson (opened as a copy), at its first step and
+/// that step's first question.
 bool shootLessonEditor(MainWindow& window, Shooter& shooter)
 {
     QString error;
     LessonEditor* editor = window.editLesson(window.lessonPlayer().lessonPaths().value(0), &error);
     if (editor == nullptr)
         return shooter.fail(error);
-    editor->selectStep(1);
+    editor->selectStep(0);
     const bool ok = shooter.writeWindow(*editor, QStringLiteral("lesson-editor.png"),
                                         Screenshots::tr("the lesson editor on a shipped lesson"));
     delete editor;
