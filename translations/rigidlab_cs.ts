@@ -4279,6 +4279,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Back to the lesson editor (%1)</source>
         <translation>Zpět do editoru lekcí (%1)</translation>
     </message>
+    <message>
+        <source>S&amp;top listing a folder</source>
+        <translation>Přestat &amp;zobrazovat složku</translation>
+    </message>
+    <message>
+        <source>Its lessons are no longer listed; the folder and its files stay</source>
+        <translation>Její lekce už nebudou v seznamu; složka i její soubory zůstanou</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementImportDialog</name>

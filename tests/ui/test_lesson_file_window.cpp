@@ -15,7 +15,9 @@
 #include "format/scene_compare.h"
 
 #include <QAction>
+#include <QDir>
 #include <QDropEvent>
+#include <QMenu>
 #include <QMimeData>
 #include <QTemporaryDir>
 #include <QUrl>
@@ -177,7 +179,23 @@ private slots:
                      QStringLiteral("(your own: Petr, %1)")
                          .arg(QFileInfo(pack).lastModified().date().toString(Qt::ISODate))),
                  qPrintable(again.lessonPlayer().lessonMenuTexts().back()));
-        QVERIFY(lessons::removeLessonFolder(shared.path()));
+        // File › Lessons › Stop listing a folder: its lessons leave the list, its files stay.
+        auto* lessonsMenu = again.findChild<QMenu*>(QStringLiteral("lessonsMenu"));
+        QVERIFY(lessonsMenu);
+        emit lessonsMenu->aboutToShow();
+        auto* stop = lessonsMenu->findChild<QMenu*>(QStringLiteral("stopListingFolder"));
+        QVERIFY(stop);
+        QAction* entry = nullptr;
+        for (QAction* a : stop->actions())
+            if (a->text() == QDir::toNativeSeparators(shared.path()))
+                entry = a;
+        QVERIFY2(entry, qPrintable(shared.path()));
+        entry->trigger();
+        QVERIFY(!lessons::addedLessonFolders().contains(shared.path()));
+        QCOMPARE(again.lessonPlayer().lessonPaths(), before);
+        QVERIFY(QFile::exists(pack));
+        emit lessonsMenu->aboutToShow(); // nothing added: no such entry
+        QVERIFY(lessonsMenu->findChild<QMenu*>(QStringLiteral("stopListingFolder")) == nullptr);
     }
 };
 

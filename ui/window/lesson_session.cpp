@@ -99,6 +99,12 @@ void LessonSession::addLessonFolder(const QString& folder)
     m_parts.player.listLessons(lessons::allLessonsInOrder()); // shipped, own, added
 }
 
+void LessonSession::removeLessonFolder(const QString& folder)
+{
+    lessons::removeLessonFolder(folder);
+    m_parts.player.listLessons(lessons::allLessonsInOrder());
+}
+
 const lessons::LessonStep* LessonSession::currentStep() const
 {
     const lessons::Lesson* lesson = m_parts.player.lesson();

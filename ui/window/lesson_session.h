@@ -67,6 +67,9 @@ public:
     void addLessonFolderDialog();
     /// Adds `folder` to the listed ones and lists the lessons again.
     void addLessonFolder(const QString& folder);
+    /// File › Lessons › Stop listing a folder: its lessons are no longer listed (the folder
+    /// and its files stay as they are).
+    void removeLessonFolder(const QString& folder);
     bool inLesson() const { return m_inLesson; }
     /// A question keeps the scene from running until it is answered.
     bool runHeld() const { return m_runHeld; }

@@ -20,10 +20,13 @@
 #include "window/window_plots.h"
 
 #include "format/data_dirs.h"
+#include "format/lesson_catalog.h"
 #include "format/scene_catalog.h"
 
 #include <QAction>
+#include <QDir>
 #include <QDockWidget>
+#include <QMenu>
 #include <QMenuBar>
 #include <QUndoStack>
 
@@ -68,9 +71,11 @@ void MainWindow::buildFileMenu()
     addLessonEditorEntries(*file);
     file->addAction(m_measurement->importAction());
     QMenu* lessonsMenu = file->addMenu(tr("Le&ssons"));
+    lessonsMenu->setObjectName(QStringLiteral("lessonsMenu"));
     // Filled as it opens: a folder of lessons added since lists its lessons at once.
     const auto fillLessons = [this, lessonsMenu] {
         lessonsMenu->clear();
+        delete lessonsMenu->findChild<QMenu*>(QStringLiteral("stopListingFolder")); // clear() keeps
         for (int i = 0; i < m_player->lessonPaths().size(); ++i) {
             const QString path = m_player->lessonPaths()[i];
             lessonsMenu->addAction(m_player->lessonMenuTexts()[i], this,
@@ -81,6 +86,17 @@ void MainWindow::buildFileMenu()
             ->addAction(tr("&Add a folder of lessons…"), m_session,
                         &LessonSession::addLessonFolderDialog)
             ->setObjectName(QStringLiteral("addLessonFolder"));
+        const QStringList added = lessons::addedLessonFolders();
+        if (added.isEmpty())
+            return;
+        QMenu* stop = lessonsMenu->addMenu(tr("S&top listing a folder"));
+        stop->setObjectName(QStringLiteral("stopListingFolder"));
+        stop->setToolTipsVisible(true);
+        for (const QString& folder : added) {
+            QAction* a = stop->addAction(QDir::toNativeSeparators(folder), m_session,
+                                         [this, folder] { m_session->removeLessonFolder(folder); });
+            a->setToolTip(tr("Its lessons are no longer listed; the folder and its files stay"));
+        }
     };
     fillLessons();
     connect(lessonsMenu, &QMenu::aboutToShow, this, fillLessons);
