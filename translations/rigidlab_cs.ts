@@ -3930,7 +3930,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Zapíše váš pracovní list jako PDF: otázky, vaše odpovědi a&#xa0;jejich hodnocení, grafy a&#xa0;nastavení (%1)</translation>
     </message>
     <message>
-        <source>&amp;Worksheet to print…</source>
+        <source>Works&amp;heet to print…</source>
         <translation>&amp;Pracovní list k&#xa0;tisku…</translation>
     </message>
     <message>
@@ -4048,11 +4048,11 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>&amp;Otevřít scénu…</translation>
     </message>
     <message>
-        <source>Open &amp;lesson…</source>
+        <source>O&amp;pen lesson…</source>
         <translation>Otevřít &amp;lekci…</translation>
     </message>
     <message>
-        <source>Le&amp;ssons</source>
+        <source>&amp;Lessons</source>
         <translation>Lek&amp;ce</translation>
     </message>
     <message>
@@ -4060,7 +4060,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Otevřít &amp;nedávné</translation>
     </message>
     <message>
-        <source>&amp;Shipped scenes</source>
+        <source>Shipped s&amp;cenes</source>
         <translation>&amp;Dodané scény</translation>
     </message>
     <message>
@@ -4229,11 +4229,11 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Ne&amp;w lesson</source>
-        <translation>Nová le&amp;kce</translation>
+        <translation>No&amp;vá lekce</translation>
     </message>
     <message>
         <source>Edi&amp;t lesson…</source>
-        <translation>Upravi&amp;t lekci…</translation>
+        <translation>Up&amp;ravit lekci…</translation>
     </message>
     <message>
         <source>Energy of the compared</source>

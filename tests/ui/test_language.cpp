@@ -13,8 +13,8 @@
 #include "window/main_window.h"
 
 #include "first_question.h"
-#include "shipped_lessons.h"
 #include "near.h"
+#include "shipped_lessons.h"
 #include "test_main.h"
 
 #include <qcustomplot.h>
@@ -29,6 +29,7 @@
 #include <QLocale>
 #include <QMap>
 #include <QMenu>
+#include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
 #include <QSet>
@@ -76,6 +77,57 @@ std::vector<std::vector<double>> markTimes(MainWindow& w)
         out.push_back(times);
     }
     return out;
+}
+
+/// The letter after a text's mnemonic '&' (lower case), or a null char when it has none.
+QChar mnemonicOf(const QString& text)
+{
+    for (qsizetype i = 0; i + 1 < text.size(); ++i) {
+        if (text[i] != u'&')
+            continue;
+        if (text[i + 1] == u'&') {
+            ++i; // "&&" is a literal ampersand
+            continue;
+        }
+        return text[i + 1].toLower();
+    }
+    return {};
+}
+
+/// Every menu of the menu bar and their submenus, each filled as when it opens; in each, the
+/// entries that share a mnemonic letter ("File: k: Nová le&kce, &Klíč pro učitele…").
+QStringList mnemonicClashes(MainWindow& window)
+{
+    QStringList clashes;
+    std::vector<QMenu*> menus;
+    QMap<QChar, QStringList> bar;
+    for (QAction* a : window.menuBar()->actions()) {
+        if (QMenu* m = a->menu())
+            menus.push_back(m);
+        if (const QChar c = mnemonicOf(a->text()); !c.isNull())
+            bar[c] << a->text();
+    }
+    for (auto it = bar.cbegin(); it != bar.cend(); ++it)
+        if (it.value().size() > 1)
+            clashes << QStringLiteral("menu bar: %1: %2").arg(it.key()).arg(it.value().join(u", "));
+    for (std::size_t i = 0; i < menus.size(); ++i) {
+        QMenu* menu = menus[i];
+        emit menu->aboutToShow(); // menus filled as they open (Lessons, Open recent)
+        QMap<QChar, QStringList> letters;
+        for (QAction* a : menu->actions()) {
+            if (!a->isVisible() || a->isSeparator())
+                continue;
+            if (QMenu* sub = a->menu())
+                menus.push_back(sub);
+            if (const QChar c = mnemonicOf(a->text()); !c.isNull())
+                letters[c] << a->text();
+        }
+        for (auto it = letters.cbegin(); it != letters.cend(); ++it)
+            if (it.value().size() > 1)
+                clashes << QStringLiteral("%1: %2: %3")
+                               .arg(menu->title(), QString(it.key()), it.value().join(u", "));
+    }
+    return clashes;
 }
 
 } // namespace
@@ -441,6 +493,23 @@ private slots:
     }
 
     // --- Numbers in Czech ------------------------------------------------------------
+
+    // In every menu, in each language, a letter opens one entry: two entries sharing their
+    // underlined letter make the key only move between them.
+    void menuMnemonicsAreUnique_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("cs") << QStringLiteral("cs");
+    }
+    void menuMnemonicsAreUnique()
+    {
+        QFETCH(QString, language);
+        QVERIFY(ui::applyLanguage(language));
+        MainWindow w;
+        const QStringList clashes = mnemonicClashes(w);
+        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(u'\n')));
+    }
 
     void czechPluralForms()
     {

@@ -187,7 +187,8 @@ private slots:
         QVERIFY(stop);
         QAction* entry = nullptr;
         for (QAction* a : stop->actions())
-            if (a->text() == QDir::toNativeSeparators(shared.path()))
+            if (a->text() ==
+                QDir::toNativeSeparators(shared.path()).replace(u'&', QStringLiteral("&&")))
                 entry = a;
         QVERIFY2(entry, qPrintable(shared.path()));
         entry->trigger();

@@ -107,4 +107,10 @@ QString methodDisplayName(const QString& codeName)
     return codeName;
 }
 
+QString menuEntryText(const QString& name)
+{
+    QString text = name;
+    return text.replace(u'&', QStringLiteral("&&"));
+}
+
 } // namespace rigidlab::ui

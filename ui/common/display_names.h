@@ -20,6 +20,9 @@ QString solverDisplayName(physics::SolverKind kind);
 /// A step's stage in words ("broad phase"), translated: the physics names it in English for
 /// the CLI and stays free of languages.
 QString stageDisplayName(physics::Stage stage);
+/// A name from a file (a lesson's or scene's title, a file name, a folder) as a menu entry:
+/// an '&' in it is shown, not taken for the entry's underlined key.
+QString menuEntryText(const QString& name);
 /// The display name of an integrator or solver given by its code name ("rk4",
 /// "sequential-impulse"); any other text comes back as it is.
 QString methodDisplayName(const QString& codeName);

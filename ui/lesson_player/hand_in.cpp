@@ -213,7 +213,7 @@ void LessonPlayer::handInInteractively()
 
 void LessonPlayer::addWorksheetActions(QMenu& menu)
 {
-    QAction* empty = menu.addAction(tr("&Worksheet to print…"), this,
+    QAction* empty = menu.addAction(tr("Works&heet to print…"), this,
                                     [this] { writeSheetInteractively(false); });
     empty->setObjectName(QStringLiteral("emptyWorksheet"));
     empty->setToolTip(tr("The open lesson's questions with lines to write on, and its figures"));

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // MainWindow's menus: each entry is an action of one of the window's parts.
+#include "common/display_names.h"
 #include "window/main_window.h"
 
 #include "common/shortcuts.h"
@@ -66,11 +67,11 @@ void MainWindow::buildFileMenu()
     named(file->addAction(tr("&New scene"), this, &MainWindow::newScene), "newScene");
     named(file->addAction(tr("&Open scene…"), m_documents, &WindowDocuments::openDialog),
           "openScene");
-    named(file->addAction(tr("Open &lesson…"), m_session, &LessonSession::openLessonDialog),
+    named(file->addAction(tr("O&pen lesson…"), m_session, &LessonSession::openLessonDialog),
           "openLesson");
     addLessonEditorEntries(*file);
     file->addAction(m_measurement->importAction());
-    QMenu* lessonsMenu = file->addMenu(tr("Le&ssons"));
+    QMenu* lessonsMenu = file->addMenu(tr("&Lessons"));
     lessonsMenu->setObjectName(QStringLiteral("lessonsMenu"));
     // Filled as it opens: a folder of lessons added since lists its lessons at once.
     const auto fillLessons = [this, lessonsMenu] {
@@ -78,7 +79,7 @@ void MainWindow::buildFileMenu()
         delete lessonsMenu->findChild<QMenu*>(QStringLiteral("stopListingFolder")); // clear() keeps
         for (int i = 0; i < m_player->lessonPaths().size(); ++i) {
             const QString path = m_player->lessonPaths()[i];
-            lessonsMenu->addAction(m_player->lessonMenuTexts()[i], this,
+            lessonsMenu->addAction(menuEntryText(m_player->lessonMenuTexts()[i]), this,
                                    [this, path] { openLesson(path); });
         }
         lessonsMenu->addSeparator();
@@ -93,7 +94,7 @@ void MainWindow::buildFileMenu()
         stop->setObjectName(QStringLiteral("stopListingFolder"));
         stop->setToolTipsVisible(true);
         for (const QString& folder : added) {
-            QAction* a = stop->addAction(QDir::toNativeSeparators(folder), m_session,
+            QAction* a = stop->addAction(menuEntryText(QDir::toNativeSeparators(folder)), m_session,
                                          [this, folder] { m_session->removeLessonFolder(folder); });
             a->setToolTip(tr("Its lessons are no longer listed; the folder and its files stay"));
         }
@@ -103,9 +104,10 @@ void MainWindow::buildFileMenu()
     m_player->addWorksheetActions(*file); // the open lesson's empty worksheet and its key
     QMenu* recentMenu = file->addMenu(tr("Open &recent"));
     recentMenu->setObjectName(QStringLiteral("recentMenu")); // file names: no language
-    QMenu* scenesMenu = file->addMenu(tr("&Shipped scenes"));
+    QMenu* scenesMenu = file->addMenu(tr("Shipped s&cenes"));
     for (const lessons::SceneEntry& scene : lessons::scenesIn(scenesFolder(), false))
-        scenesMenu->addAction(scene.title, this, [this, p = scene.path] { openScene(p); });
+        scenesMenu->addAction(menuEntryText(scene.title), this,
+                              [this, p = scene.path] { openScene(p); });
     // The user's own scenes (lessons::userScenesDir()) go here when there are any.
     QAction* ownScenesBefore = file->addSeparator();
     named(file->addAction(tr("&Save"), this, &MainWindow::saveScene), "saveScene");

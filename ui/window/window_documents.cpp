@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // WindowDocuments: opening scenes, new scenes, the recent files.
 #include "window/window_documents.h"
+#include "common/display_names.h"
 
 #include "common/modal_scope.h"
 #include "editor/scene_document.h"
@@ -155,7 +156,7 @@ void WindowDocuments::rebuildRecentMenu()
     m_recentMenu->clear();
     const QStringList recent = QSettings().value(QStringLiteral("recentFiles")).toStringList();
     for (const QString& path : recent)
-        m_recentMenu->addAction(QFileInfo(path).fileName(), this,
+        m_recentMenu->addAction(menuEntryText(QFileInfo(path).fileName()), this,
                                 [this, path] { openScene(path, false); });
     m_recentMenu->setEnabled(!recent.isEmpty());
 }

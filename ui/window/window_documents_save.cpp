@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // WindowDocuments' saving: Save, Save As, the question about unsaved changes, and File › Your
 // own scenes, where saved scenes appear.
+#include "common/display_names.h"
 #include "window/window_documents.h"
 
 #include "common/modal_scope.h"
@@ -39,7 +40,6 @@ bool isShipped(const QString& path)
 
 } // namespace
 
-
 bool WindowDocuments::saveScene()
 {
     const QString path = m_document.path();
@@ -61,8 +61,7 @@ bool WindowDocuments::saveSceneAs()
     QDir().mkpath(folder); // so that the dialog starts there
     const QString current = m_documentIsFile ? QFileInfo(m_document.path()).fileName() : QString();
     const QString suggested = QDir(folder).filePath(
-        current.isEmpty() ? lessons::schema::safeFileName(m_document.scene().title)
-                          : current);
+        current.isEmpty() ? lessons::schema::safeFileName(m_document.scene().title) : current);
     QString path;
     if (m_savePathAsker) {
         path = m_savePathAsker(suggested);
@@ -143,7 +142,7 @@ void WindowDocuments::rebuildOwnScenesMenu()
     }
     m_ownScenesMenu->clear();
     for (const lessons::SceneEntry& scene : own)
-        m_ownScenesMenu->addAction(scene.title, this,
+        m_ownScenesMenu->addAction(menuEntryText(scene.title), this,
                                    [this, p = scene.path] { openScene(p, false); });
 }
 
