@@ -2311,7 +2311,7 @@ n = (%4; %5)</translation>
 <context>
     <name>rigidlab::ui::ChoiceEditor</name>
     <message>
-        <source>O&amp;ptions (Czech and English)</source>
+        <source>&amp;Options (Czech and English)</source>
         <translation>&amp;Možnosti (česky a anglicky)</translation>
     </message>
     <message>
@@ -2327,7 +2327,7 @@ n = (%4; %5)</translation>
         <translation>Anglicky</translation>
     </message>
     <message>
-        <source>Add o&amp;ption</source>
+        <source>Add optio&amp;n</source>
         <translation>Přidat mo&amp;žnost</translation>
     </message>
     <message>
@@ -2347,8 +2347,8 @@ n = (%4; %5)</translation>
         <translation>Správná možnost</translation>
     </message>
     <message>
-        <source>&amp;Right option</source>
-        <translation>&amp;Správná možnost</translation>
+        <source>Ri&amp;ght option</source>
+        <translation>Spr&amp;ávná možnost</translation>
     </message>
     <message>
         <source>Option %1</source>
@@ -3571,16 +3571,16 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>&amp;Název lekce</translation>
     </message>
     <message>
-        <source>S&amp;ummary</source>
-        <translation>&amp;Shrnutí</translation>
+        <source>&amp;Summary</source>
+        <translation>S&amp;hrnutí</translation>
     </message>
     <message>
         <source>&amp;Level</source>
         <translation>Ú&amp;roveň</translation>
     </message>
     <message>
-        <source>&amp;Minutes</source>
-        <translation>&amp;Minuty</translation>
+        <source>M&amp;inutes</source>
+        <translation>M&amp;inuty</translation>
     </message>
     <message>
         <source>not said</source>
@@ -3599,7 +3599,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>minuty</translation>
     </message>
     <message>
-        <source>S&amp;teps</source>
+        <source>St&amp;eps</source>
         <translation>&amp;Kroky</translation>
     </message>
     <message>
@@ -3607,28 +3607,28 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Kroky lekce</translation>
     </message>
     <message>
-        <source>&amp;Add step</source>
-        <translation>&amp;Přidat krok</translation>
+        <source>Add step</source>
+        <translation>Přidat krok</translation>
     </message>
     <message>
-        <source>&amp;Remove step</source>
-        <translation>&amp;Odebrat krok</translation>
+        <source>Remove step</source>
+        <translation>Odebrat krok</translation>
     </message>
     <message>
-        <source>Move &amp;up</source>
-        <translation>Posunout na&amp;horu</translation>
+        <source>Move up</source>
+        <translation>Posunout nahoru</translation>
     </message>
     <message>
-        <source>Move do&amp;wn</source>
-        <translation>Posunout &amp;dolů</translation>
+        <source>Move down</source>
+        <translation>Posunout dolů</translation>
     </message>
     <message>
-        <source>&amp;Duplicate step</source>
-        <translation>&amp;Zdvojit krok</translation>
+        <source>Duplicate step</source>
+        <translation>Zdvojit krok</translation>
     </message>
     <message>
-        <source>Try as a &amp;student</source>
-        <translation>Vyzkoušet jako s&amp;tudent</translation>
+        <source>Try as a student</source>
+        <translation>Vyzkoušet jako student</translation>
     </message>
     <message>
         <source>Step title (%1)</source>
@@ -3691,10 +3691,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Lekce v&#xa0;jednom souboru (*.rlesson)</translation>
     </message>
     <message>
-        <source>Try as a student</source>
-        <translation>Vyzkoušet jako student</translation>
-    </message>
-    <message>
         <source>no %1</source>
         <translation>chybí %1</translation>
     </message>
@@ -3739,15 +3735,15 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Zobrazeno a zamčeno</translation>
     </message>
     <message>
-        <source>&amp;Edit the step&apos;s scene in the window</source>
-        <translation>&amp;Upravit scénu kroku v okně</translation>
+        <source>Edit t&amp;he step&apos;s scene in the window</source>
+        <translation>Upr&amp;avit scénu kroku v okně</translation>
     </message>
     <message>
         <source>Opens this step&apos;s scene in the main window&apos;s scene editor</source>
         <translation>Otevře scénu tohoto kroku v editoru scén hlavního okna</translation>
     </message>
     <message>
-        <source>Take the window&apos;s s&amp;cene for this step</source>
+        <source>Take the &amp;window&apos;s scene for this step</source>
         <translation>Převzít s&amp;cénu z okna pro tento krok</translation>
     </message>
     <message>
@@ -4858,7 +4854,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>hybnost y</translation>
     </message>
     <message>
-        <source>&amp;Questions of the step</source>
+        <source>Questions o&amp;f the step</source>
         <translation>&amp;Otázky kroku</translation>
     </message>
     <message>
@@ -4867,7 +4863,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Add a &amp;measured question</source>
-        <translation>Přidat &amp;měřenou otázku</translation>
+        <translation>Přidat měř&amp;enou otázku</translation>
     </message>
     <message>
         <source>Add a &amp;predict-first question</source>
@@ -4875,7 +4871,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Remove &amp;question</source>
-        <translation>Odebrat &amp;otázku</translation>
+        <translation>Ode&amp;brat otázku</translation>
     </message>
     <message>
         <source>Question (Czech)</source>
@@ -4914,8 +4910,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Odpověď, kterou laboratoř naměří</translation>
     </message>
     <message>
-        <source>&amp;Measured</source>
-        <translation>&amp;Měří se</translation>
+        <source>Measu&amp;red</source>
+        <translation>Měří &amp;se</translation>
     </message>
     <message>
         <source>&amp;Body</source>
@@ -4930,8 +4926,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>&amp;Jednotka</translation>
     </message>
     <message>
-        <source>&amp;Tolerance</source>
-        <translation>T&amp;olerance</translation>
+        <source>Toleran&amp;ce</source>
+        <translation>To&amp;lerance</translation>
     </message>
     <message>
         <source>question</source>
@@ -4986,8 +4982,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Nastavení, které student změní v Ovládání před během, který tato otázka měří („Nastavte e = 0 a spusťte znovu“)</translation>
     </message>
     <message>
-        <source>Student &amp;sets first</source>
-        <translation>Student &amp;nejdřív nastaví</translation>
+        <source>Stu&amp;dent sets first</source>
+        <translation>St&amp;udent nejdřív nastaví</translation>
     </message>
     <message>
         <source>Option %1</source>

@@ -13,6 +13,7 @@
 #include "window/main_window.h"
 
 #include "first_question.h"
+#include "mnemonics.h"
 #include "near.h"
 #include "shipped_lessons.h"
 #include "test_main.h"
@@ -79,21 +80,6 @@ std::vector<std::vector<double>> markTimes(MainWindow& w)
     return out;
 }
 
-/// The letter after a text's mnemonic '&' (lower case), or a null char when it has none.
-QChar mnemonicOf(const QString& text)
-{
-    for (qsizetype i = 0; i + 1 < text.size(); ++i) {
-        if (text[i] != u'&')
-            continue;
-        if (text[i + 1] == u'&') {
-            ++i; // "&&" is a literal ampersand
-            continue;
-        }
-        return text[i + 1].toLower();
-    }
-    return {};
-}
-
 /// Every menu of the menu bar and their submenus, each filled as when it opens; in each, the
 /// entries that share a mnemonic letter ("File: k: Nová le&kce, &Klíč pro učitele…").
 QStringList mnemonicClashes(MainWindow& window)
@@ -104,12 +90,11 @@ QStringList mnemonicClashes(MainWindow& window)
     for (QAction* a : window.menuBar()->actions()) {
         if (QMenu* m = a->menu())
             menus.push_back(m);
-        if (const QChar c = mnemonicOf(a->text()); !c.isNull())
+        if (const QChar c = test::mnemonicOf(a->text()); !c.isNull())
             bar[c] << a->text();
     }
-    for (auto it = bar.cbegin(); it != bar.cend(); ++it)
-        if (it.value().size() > 1)
-            clashes << QStringLiteral("menu bar: %1: %2").arg(it.key()).arg(it.value().join(u", "));
+    for (const QString& line : test::sharedLetters(bar))
+        clashes << QStringLiteral("menu bar: ") + line;
     for (std::size_t i = 0; i < menus.size(); ++i) {
         QMenu* menu = menus[i];
         emit menu->aboutToShow(); // menus filled as they open (Lessons, Open recent)
@@ -119,13 +104,11 @@ QStringList mnemonicClashes(MainWindow& window)
                 continue;
             if (QMenu* sub = a->menu())
                 menus.push_back(sub);
-            if (const QChar c = mnemonicOf(a->text()); !c.isNull())
+            if (const QChar c = test::mnemonicOf(a->text()); !c.isNull())
                 letters[c] << a->text();
         }
-        for (auto it = letters.cbegin(); it != letters.cend(); ++it)
-            if (it.value().size() > 1)
-                clashes << QStringLiteral("%1: %2: %3")
-                               .arg(menu->title(), QString(it.key()), it.value().join(u", "));
+        for (const QString& line : test::sharedLetters(letters))
+            clashes << menu->title() + QStringLiteral(": ") + line;
     }
     return clashes;
 }

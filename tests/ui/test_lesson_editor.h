@@ -3,6 +3,7 @@
 // The lesson editor test's class, in two files: test_lesson_editor.cpp (the lesson as data,
 // shipped lessons) and test_lesson_editor_widgets.cpp (the editor's window, keys and mouse).
 
+#include "common/language.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_editor/lesson_draft.h"
@@ -11,6 +12,7 @@
 #include "lesson_editor/step_checks.h"
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/lesson_player.h"
+#include "mnemonics.h"
 #include "near.h"
 #include "plots/lesson_export.h"
 #include "shipped_lessons.h"
@@ -69,6 +71,8 @@ private slots:
     void widgetsStepSceneFromTheWindow();
     void widgetsQuestions();
     void screenshotOfTheEditor();
+    void editorMnemonicsAreUnique_data();
+    void editorMnemonicsAreUnique();
     // The checks that run the steps, in a worker (they wait on its signal, which lets the
     // window activate another window: after the tests that type into the editor).
     void toleranceTighterThanIntegrators();

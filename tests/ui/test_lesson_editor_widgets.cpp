@@ -350,6 +350,47 @@ void TestLessonEditor::screenshotOfTheEditor()
     QCOMPARE(image.size(), QSize(1024, 768));
 }
 
+// Alt and an underlined letter reach one control of the editor, in English and in Czech, on
+// each page of the step (with a measured question's fields open, and a choice's).
+void TestLessonEditor::editorMnemonicsAreUnique_data()
+{
+    QTest::addColumn<QString>("language");
+    QTest::newRow("en") << QStringLiteral("en");
+    QTest::newRow("cs") << QStringLiteral("cs");
+}
+
+void TestLessonEditor::editorMnemonicsAreUnique()
+{
+    QFETCH(QString, language);
+    QVERIFY(ui::applyLanguage(language));
+    const lessons::SceneLoadResult scene =
+        lessons::loadSceneFile(kSource + QStringLiteral("/lessons/scenes/two_balls.json"));
+    QVERIFY2(scene.ok, qPrintable(scene.error));
+    QStringList clashes;
+    {
+        ui::LessonEditor ed;
+        ed.newLesson(scene.scene);
+        ed.show();
+        auto* pages = child<QTabWidget>(ed, QStringLiteral("stepPages"));
+        QTest::mouseClick(child<QPushButton>(ed, QStringLiteral("addMeasuredQuestion")),
+                          Qt::LeftButton);
+        for (int i = 0; i < pages->count(); ++i) {
+            pages->setCurrentIndex(i);
+            for (const QString& line : test::windowMnemonicClashes(ed))
+                clashes << pages->tabText(i) + QStringLiteral(": ") + line;
+        }
+        pages->setCurrentIndex(0);
+        auto* type = child<QComboBox>(ed, QStringLiteral("questionType"));
+        QVERIFY(type != nullptr);
+        type->setCurrentIndex(type->count() - 1); // a choice of answers
+        for (const QString& line : test::windowMnemonicClashes(ed))
+            clashes << QStringLiteral("choice: ") + line;
+    }
+    ui::applyLanguage(QStringLiteral("en"));
+    clashes.removeDuplicates();
+    QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(u'\n')));
+}
+
 // A tolerance tighter than what the integrators a student may choose measure is said in the
 // step's problems, once the runs in the worker are done; with the integrator locked it is not.
 void TestLessonEditor::toleranceTighterThanIntegrators()

@@ -39,7 +39,7 @@ ChoiceEditor::ChoiceEditor(QWidget* parent) : QWidget(parent)
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto* label = new QLabel(tr("O&ptions (Czech and English)"), this);
+    auto* label = new QLabel(tr("&Options (Czech and English)"), this);
     m_table = new QTableWidget(0, 2, this);
     m_table->setObjectName(QStringLiteral("choiceOptions"));
     m_table->setAccessibleName(tr("Options of the choice"));
@@ -60,7 +60,7 @@ ChoiceEditor::ChoiceEditor(QWidget* parent) : QWidget(parent)
         connect(b, &QPushButton::clicked, this, slot);
         return b;
     };
-    m_add = button(tr("Add o&ption"), "addChoiceOption", [this] {
+    m_add = button(tr("Add optio&n"), "addChoiceOption", [this] {
         addOption(QLocale().language() == QLocale::Czech ? QStringLiteral("cs")
                                                          : QStringLiteral("en"));
     });
@@ -73,7 +73,7 @@ ChoiceEditor::ChoiceEditor(QWidget* parent) : QWidget(parent)
     connect(m_right, &QComboBox::activated, this, [this] { emit edited(); });
     auto* right = new QFormLayout;
     right->setContentsMargins(0, 0, 0, 0);
-    right->addRow(tr("&Right option"), m_right);
+    right->addRow(tr("Ri&ght option"), m_right);
     layout->addWidget(label);
     layout->addWidget(m_table);
     layout->addLayout(buttons);

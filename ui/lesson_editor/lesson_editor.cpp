@@ -107,7 +107,7 @@ void LessonEditor::buildLessonFields(QGridLayout& grid)
     }
     const std::array<std::pair<QString, std::array<QLineEdit*, 2>*>, 3> rows{{
         {tr("Lesson &title"), &m_title},
-        {tr("S&ummary"), &m_summary},
+        {tr("&Summary"), &m_summary},
         {tr("&Level"), &m_level},
     }};
     const std::array<QString, 3> keys{QStringLiteral("title"), QStringLiteral("summary"),
@@ -130,7 +130,7 @@ void LessonEditor::buildLessonFields(QGridLayout& grid)
             grid.addWidget(edit, r + 1, l + 1);
         }
     }
-    auto* minutesLabel = new QLabel(tr("&Minutes"), this);
+    auto* minutesLabel = new QLabel(tr("M&inutes"), this);
     m_minutes = new QSpinBox(this);
     m_minutes->setObjectName(QStringLiteral("lessonMinutes"));
     m_minutes->setRange(0, 600);
@@ -171,7 +171,7 @@ QWidget* LessonEditor::buildStepList()
     auto* box = new QWidget(this);
     auto* layout = new QVBoxLayout(box);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto* label = new QLabel(tr("S&teps"), box);
+    auto* label = new QLabel(tr("St&eps"), box);
     m_steps = new QListWidget(box);
     m_steps->setObjectName(QStringLiteral("lessonSteps"));
     m_steps->setAccessibleName(tr("Steps of the lesson"));
@@ -184,35 +184,35 @@ QWidget* LessonEditor::buildStepList()
     layout->addWidget(label);
     layout->addWidget(m_steps, 1);
     auto* buttons = new QGridLayout;
-    buttons->addWidget(makeButton(tr("&Add step"), QStringLiteral("addStep"),
+    buttons->addWidget(makeButton(tr("Add step"), QStringLiteral("addStep"),
                                   QKeySequence(QStringLiteral("Ctrl+Shift+N")),
                                   &LessonEditor::addStep),
                        0, 0);
-    buttons->addWidget(makeButton(tr("&Remove step"), QStringLiteral("removeStep"),
+    buttons->addWidget(makeButton(tr("Remove step"), QStringLiteral("removeStep"),
                                   QKeySequence(QStringLiteral("Ctrl+Del")),
                                   &LessonEditor::removeStep),
                        0, 1);
-    buttons->addWidget(makeButton(tr("Move &up"), QStringLiteral("moveStepUp"),
+    buttons->addWidget(makeButton(tr("Move up"), QStringLiteral("moveStepUp"),
                                   QKeySequence(QStringLiteral("Alt+Up")), &LessonEditor::moveUp),
                        1, 0);
-    buttons->addWidget(makeButton(tr("Move do&wn"), QStringLiteral("moveStepDown"),
+    buttons->addWidget(makeButton(tr("Move down"), QStringLiteral("moveStepDown"),
                                   QKeySequence(QStringLiteral("Alt+Down")),
                                   &LessonEditor::moveDown),
                        1, 1);
-    buttons->addWidget(makeButton(tr("&Duplicate step"), QStringLiteral("duplicateStep"),
+    buttons->addWidget(makeButton(tr("Duplicate step"), QStringLiteral("duplicateStep"),
                                   QKeySequence(QStringLiteral("Ctrl+D")),
                                   &LessonEditor::duplicateStep),
                        2, 0);
-    buttons->addWidget(makeButton(tr("Try as a &student"), QStringLiteral("tryAsStudent"),
+    buttons->addWidget(makeButton(tr("Try as a student"), QStringLiteral("tryAsStudent"),
                                   QKeySequence(QStringLiteral("F5")), &LessonEditor::trySelected),
                        2, 1);
     // The step's scene is drawn in the window's scene editor: sent there, and taken back.
-    auto* editScene = new QPushButton(tr("&Edit the step's scene in the window"), box);
+    auto* editScene = new QPushButton(tr("Edit t&he step's scene in the window"), box);
     editScene->setObjectName(QStringLiteral("editStepScene"));
     editScene->setToolTip(tr("Opens this step's scene in the main window's scene editor"));
     connect(editScene, &QPushButton::clicked, this, &LessonEditor::sendStepScene);
     buttons->addWidget(editScene, 3, 0, 1, 2);
-    auto* takeScene = new QPushButton(tr("Take the window's s&cene for this step"), box);
+    auto* takeScene = new QPushButton(tr("Take the &window's scene for this step"), box);
     takeScene->setObjectName(QStringLiteral("takeWindowScene"));
     takeScene->setToolTip(tr("The scene open in the main window, as edited there, becomes "
                              "this step's scene"));

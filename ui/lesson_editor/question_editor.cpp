@@ -88,7 +88,7 @@ QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto* label = new QLabel(tr("&Questions of the step"), this);
+    auto* label = new QLabel(tr("Questions o&f the step"), this);
     m_list = new QListWidget(this);
     m_list->setObjectName(QStringLiteral("questionList"));
     m_list->setAccessibleName(tr("Questions of the step"));
@@ -174,15 +174,15 @@ QFormLayout* QuestionEditor::buildForm()
     m_answer->setObjectName(QStringLiteral("questionAnswer"));
     m_answer->setWordWrap(true);
     m_answer->setAccessibleName(tr("The answer the lab measures"));
-    form->addRow(tr("&Measured"), m_kind);
+    form->addRow(tr("Measu&red"), m_kind);
     form->addRow(tr("&Body"), m_body);
     form->addRow(tr("&At time"), m_time);
     form->addRow(tr("&Unit"), m_unit);
-    form->addRow(tr("&Tolerance"), m_tolerance);
+    form->addRow(tr("Toleran&ce"), m_tolerance);
     m_set = new QuestionSetEditor(this);
     m_set->setToolTip(tr("A setting the student changes with the controls before the run "
                          "this question measures (\"Set e = 0 and run again\")"));
-    form->addRow(tr("Student &sets first"), m_set);
+    form->addRow(tr("Stu&dent sets first"), m_set);
     form->addRow(m_holdRun);
     connect(m_kind, &QComboBox::activated, this, &QuestionEditor::edited);
     connect(m_body, &QComboBox::activated, this, &QuestionEditor::edited);
