@@ -3762,6 +3762,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Running the steps&apos; scenes to check them…</source>
         <translation>Scény kroků se spouštějí ke kontrole…</translation>
     </message>
+    <message>
+        <source>What the student reads in this step: **bold**, *italic*, a line that starts with “- ” is a list item</source>
+        <translation>Co student v tomto kroku čte: **tučně**, *kurzívou*, řádek začínající „- “ je položka seznamu</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonPlayer</name>

@@ -245,6 +245,9 @@ QWidget* LessonEditor::buildStepTexts()
         text->setObjectName(QStringLiteral("stepText_%1").arg(code(l)));
         text->setAccessibleName(tr("Step text (%1)").arg(lang));
         text->setTabChangesFocus(true);
+        // The markup shown where a new step has no text yet.
+        text->setPlaceholderText(tr("What the student reads in this step: **bold**, *italic*, "
+                                    "a line that starts with “- ” is a list item"));
         text->installEventFilter(this);
         connect(text, &QPlainTextEdit::textChanged, this, [this, l, text] {
             textEdited(currentStep(), QStringLiteral("text"), l, text->toPlainText());
