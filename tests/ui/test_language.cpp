@@ -13,7 +13,6 @@
 #include "window/main_window.h"
 
 #include "first_question.h"
-#include "mnemonics.h"
 #include "near.h"
 #include "shipped_lessons.h"
 #include "test_main.h"
@@ -30,7 +29,6 @@
 #include <QLocale>
 #include <QMap>
 #include <QMenu>
-#include <QMenuBar>
 #include <QProcess>
 #include <QPushButton>
 #include <QSet>
@@ -78,39 +76,6 @@ std::vector<std::vector<double>> markTimes(MainWindow& w)
         out.push_back(times);
     }
     return out;
-}
-
-/// Every menu of the menu bar and their submenus, each filled as when it opens; in each, the
-/// entries that share a mnemonic letter ("File: k: Nová le&kce, &Klíč pro učitele…").
-QStringList mnemonicClashes(MainWindow& window)
-{
-    QStringList clashes;
-    std::vector<QMenu*> menus;
-    QMap<QChar, QStringList> bar;
-    for (QAction* a : window.menuBar()->actions()) {
-        if (QMenu* m = a->menu())
-            menus.push_back(m);
-        if (const QChar c = test::mnemonicOf(a->text()); !c.isNull())
-            bar[c] << a->text();
-    }
-    for (const QString& line : test::sharedLetters(bar))
-        clashes << QStringLiteral("menu bar: ") + line;
-    for (std::size_t i = 0; i < menus.size(); ++i) {
-        QMenu* menu = menus[i];
-        emit menu->aboutToShow(); // menus filled as they open (Lessons, Open recent)
-        QMap<QChar, QStringList> letters;
-        for (QAction* a : menu->actions()) {
-            if (!a->isVisible() || a->isSeparator())
-                continue;
-            if (QMenu* sub = a->menu())
-                menus.push_back(sub);
-            if (const QChar c = test::mnemonicOf(a->text()); !c.isNull())
-                letters[c] << a->text();
-        }
-        for (const QString& line : test::sharedLetters(letters))
-            clashes << menu->title() + QStringLiteral(": ") + line;
-    }
-    return clashes;
 }
 
 } // namespace
@@ -476,23 +441,6 @@ private slots:
     }
 
     // --- Numbers in Czech ------------------------------------------------------------
-
-    // In every menu, in each language, a letter opens one entry: two entries sharing their
-    // underlined letter make the key only move between them.
-    void menuMnemonicsAreUnique_data()
-    {
-        QTest::addColumn<QString>("language");
-        QTest::newRow("en") << QStringLiteral("en");
-        QTest::newRow("cs") << QStringLiteral("cs");
-    }
-    void menuMnemonicsAreUnique()
-    {
-        QFETCH(QString, language);
-        QVERIFY(ui::applyLanguage(language));
-        MainWindow w;
-        const QStringList clashes = mnemonicClashes(w);
-        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(u'\n')));
-    }
 
     void czechPluralForms()
     {

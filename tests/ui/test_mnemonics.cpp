@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Underlined letters, in English and in Czech: in each menu a letter opens one entry, and in
+// the window Alt and a letter reach one control (the menu bar's titles among them), at start
+// and on each shipped lesson's first step. (The lesson editor's: test_lesson_editor.)
+
+#include "common/language.h"
+#include "window/main_window.h"
+
+#include "mnemonics.h"
+#include "shipped_lessons.h"
+#include "test_main.h"
+
+#include <QAction>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMenuBar>
+#include <QtTest>
+
+#include <vector>
+
+using namespace rigidlab;
+using rigidlab::ui::MainWindow;
+
+namespace {
+
+/// Every menu of the menu bar and their submenus, each filled as when it opens; in each, the
+/// entries that share a mnemonic letter ("File: k: Nová le&kce, &Klíč pro učitele…").
+QStringList mnemonicClashes(MainWindow& window)
+{
+    QStringList clashes;
+    std::vector<QMenu*> menus;
+    QMap<QChar, QStringList> bar;
+    for (QAction* a : window.menuBar()->actions()) {
+        if (QMenu* m = a->menu())
+            menus.push_back(m);
+        if (const QChar c = test::mnemonicOf(a->text()); !c.isNull())
+            bar[c] << a->text();
+    }
+    for (const QString& line : test::sharedLetters(bar))
+        clashes << QStringLiteral("menu bar: ") + line;
+    for (std::size_t i = 0; i < menus.size(); ++i) {
+        QMenu* menu = menus[i];
+        emit menu->aboutToShow(); // menus filled as they open (Lessons, Open recent)
+        QMap<QChar, QStringList> letters;
+        for (QAction* a : menu->actions()) {
+            if (!a->isVisible() || a->isSeparator())
+                continue;
+            if (QMenu* sub = a->menu())
+                menus.push_back(sub);
+            if (const QChar c = test::mnemonicOf(a->text()); !c.isNull())
+                letters[c] << a->text();
+        }
+        for (const QString& line : test::sharedLetters(letters))
+            clashes << menu->title() + QStringLiteral(": ") + line;
+    }
+    return clashes;
+}
+
+} // namespace
+
+class TestMnemonics : public QObject {
+    Q_OBJECT
+
+private slots:
+    void cleanupTestCase() { ui::applyLanguage(QStringLiteral("en")); }
+
+    // In every menu, in each language, a letter opens one entry: two entries sharing their
+    // underlined letter make the key only move between them.
+    void menuMnemonicsAreUnique_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("en") << QStringLiteral("en");
+        QTest::newRow("cs") << QStringLiteral("cs");
+    }
+    void menuMnemonicsAreUnique()
+    {
+        QFETCH(QString, language);
+        QVERIFY(ui::applyLanguage(language));
+        MainWindow w;
+        const QStringList clashes = mnemonicClashes(w);
+        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(u'\n')));
+    }
+
+    // The window's own controls (the docks' labels and buttons shown at start) and the menu
+    // bar's titles: Alt and a letter reach one of them.
+    void windowMnemonicsAreUnique_data() { menuMnemonicsAreUnique_data(); }
+    void windowMnemonicsAreUnique()
+    {
+        QFETCH(QString, language);
+        QVERIFY(ui::applyLanguage(language));
+        MainWindow w;
+        w.show();
+        QMap<QChar, QStringList> titles;
+        for (QAction* a : w.menuBar()->actions())
+            if (const QChar c = test::mnemonicOf(a->text()); !c.isNull())
+                titles[c] << a->text();
+        const auto clashesNow = [&w, &titles](const QString& where) {
+            QStringList out;
+            for (const QString& line : test::windowMnemonicClashes(w))
+                out << where + QStringLiteral(": ") + line;
+            // A letter of the window's controls that a menu's title has too.
+            QMap<QChar, QStringList> withTitles = titles;
+            for (QWidget* c : w.findChildren<QWidget*>()) {
+                if (c->window() != &w || !c->isVisibleTo(&w))
+                    continue;
+                QString text;
+                if (auto* label = qobject_cast<QLabel*>(c); label && label->buddy())
+                    text = label->text();
+                else if (auto* button = qobject_cast<QAbstractButton*>(c))
+                    text = button->text();
+                if (const QChar m = test::mnemonicOf(text); !m.isNull() && titles.contains(m))
+                    withTitles[m] << text;
+            }
+            for (const QString& line : test::sharedLetters(withTitles))
+                out << where + QStringLiteral(": ") + line;
+            return out;
+        };
+        QStringList clashes = clashesNow(QStringLiteral("at start"));
+        // Each shipped lesson's first step shows its own controls (answers, hand-in, panels).
+        for (const QString& path : test::shippedLessons()) {
+            QCOMPARE(w.openLesson(path, true), QString());
+            clashes << clashesNow(QFileInfo(path).fileName());
+        }
+        clashes.removeDuplicates();
+        QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(u'\n')));
+    }
+};
+
+RIGIDLAB_TEST_MAIN(TestMnemonics)
+#include "test_mnemonics.moc"
