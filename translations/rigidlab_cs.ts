@@ -4287,6 +4287,26 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Its lessons are no longer listed; the folder and its files stay</source>
         <translation>Její lekce už nebudou v seznamu; složka i její soubory zůstanou</translation>
     </message>
+    <message>
+        <source>A lesson was not saved</source>
+        <translation>Lekce nebyla uložena</translation>
+    </message>
+    <message>
+        <source>RigidLab closed on %1 while a lesson was being written, before it was saved. Open what was kept?</source>
+        <translation>RigidLab se zavřel (%1) uprostřed psaní lekce, dřív než byla uložena. Otevřít, co se zachovalo?</translation>
+    </message>
+    <message>
+        <source>&amp;Open it</source>
+        <translation>&amp;Otevřít ji</translation>
+    </message>
+    <message>
+        <source>&amp;Delete it</source>
+        <translation>&amp;Smazat ji</translation>
+    </message>
+    <message>
+        <source>What was kept does not open: %1</source>
+        <translation>Zachovanou lekci nelze otevřít: %1</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementImportDialog</name>

@@ -24,8 +24,12 @@
 #include "format/scene_compare.h"
 #include "format/scene_loader.h"
 
+#include <QAbstractButton>
+#include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QFile>
+#include <QFileInfo>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QLabel>
@@ -33,10 +37,12 @@
 #include <QListWidget>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTabWidget>
 #include <QTemporaryDir>
+#include <QTimer>
 #include <QToolBar>
 #include <QToolButton>
 #include <QUndoStack>
@@ -73,6 +79,8 @@ private slots:
     void screenshotOfTheEditor();
     void editorMnemonicsAreUnique_data();
     void editorMnemonicsAreUnique();
+    void keptLessonAfterACrash();
+    void windowClosingAsksTheEditor();
     // The checks that run the steps, in a worker (they wait on its signal, which lets the
     // window activate another window: after the tests that type into the editor).
     void toleranceTighterThanIntegrators();

@@ -391,6 +391,99 @@ void TestLessonEditor::editorMnemonicsAreUnique()
     QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(u'\n')));
 }
 
+namespace {
+
+/// Clicks the button named `button` of the message box that opens next (a modal one).
+void clickInNextBox(const QString& button)
+{
+    QTimer::singleShot(0, [button] {
+        QWidget* modal = QApplication::activeModalWidget();
+        auto* b = modal ? modal->findChild<QAbstractButton*>(button) : nullptr;
+        QVERIFY2(b != nullptr, qPrintable(button));
+        b->click();
+    });
+}
+
+/// The button of a QMessageBox for a standard button, named so clickInNextBox finds it.
+void nameStandardButtons()
+{
+    QTimer::singleShot(0, [] {
+        if (auto* box = qobject_cast<QMessageBox*>(QApplication::activeModalWidget()))
+            for (QAbstractButton* b : box->buttons())
+                b->setObjectName(QString::number(box->standardButton(b)));
+    });
+}
+
+} // namespace
+
+// A lesson being written when the lab crashed (its editor gone without closing) is offered
+// at the next New lesson: opened as unsaved work, and its autosave gone once it is saved.
+void TestLessonEditor::keptLessonAfterACrash()
+{
+    const lessons::SceneLoadResult scene =
+        lessons::loadSceneFile(kSource + QStringLiteral("/lessons/scenes/two_balls.json"));
+    QVERIFY2(scene.ok, qPrintable(scene.error));
+    const QString kept = ui::LessonEditor::defaultAutosavePath();
+    QFile::remove(kept);
+    {
+        auto crashed = std::make_unique<ui::LessonEditor>();
+        crashed->newLesson(scene.scene);
+        crashed->draft().setText(-1, QStringLiteral("title"), QStringLiteral("cs"),
+                                 QStringLiteral("Srážky"));
+        QVERIFY(crashed->autosave());
+    } // destroyed without closing, as a crash leaves it
+    QVERIFY(QFileInfo::exists(kept));
+
+    ui::MainWindow w;
+    auto* create = w.findChild<QAction*>(QStringLiteral("newLesson"));
+    QVERIFY(create != nullptr);
+    clickInNextBox(QStringLiteral("keptCancel")); // cancel: nothing opens, it stays
+    create->trigger();
+    QVERIFY(w.findChildren<ui::LessonEditor*>().isEmpty());
+    QVERIFY(QFileInfo::exists(kept));
+
+    clickInNextBox(QStringLiteral("keptOpen"));
+    create->trigger();
+    const QList<ui::LessonEditor*> editors = w.findChildren<ui::LessonEditor*>();
+    QCOMPARE(editors.size(), 1);
+    ui::LessonEditor* ed = editors.front();
+    QCOMPARE(ed->draft().text(-1, QStringLiteral("title"), QStringLiteral("cs")),
+             QStringLiteral("Srážky"));
+    QVERIFY2(ed->draft().isModified(), "what was kept is unsaved work");
+    QVERIFY2(ed->draft().path().isEmpty(), "Save asks where, not into the autosave");
+    // Another New lesson while it is open asks nothing: the open editor owns the autosave.
+    create->trigger();
+    QCOMPARE(w.findChildren<ui::LessonEditor*>().size(), 2);
+    delete w.findChildren<ui::LessonEditor*>().back();
+    QCOMPARE(ed->saveAs(m_dir.filePath(QStringLiteral("kept"))), QString());
+    QVERIFY2(!QFileInfo::exists(kept), "saved: the autosave is not needed any more");
+    QVERIFY(!ed->draft().isModified());
+    delete ed;
+}
+
+// Closing the window while the lesson editor has unsaved edits asks first, and Cancel keeps
+// both open.
+void TestLessonEditor::windowClosingAsksTheEditor()
+{
+    ui::MainWindow w;
+    w.show();
+    ui::LessonEditor* ed = w.editLesson(QString());
+    QVERIFY(ed != nullptr);
+    ed->draft().setText(-1, QStringLiteral("title"), QStringLiteral("en"),
+                        QStringLiteral("Collisions"));
+    QVERIFY(ed->draft().isModified());
+    const QPointer<ui::LessonEditor> editor = ed;
+    nameStandardButtons();
+    clickInNextBox(QString::number(QMessageBox::Cancel));
+    QVERIFY2(!w.close(), "Cancel keeps the window open");
+    QVERIFY(editor && editor->isVisible());
+    QVERIFY(editor->draft().isModified());
+    nameStandardButtons();
+    clickInNextBox(QString::number(QMessageBox::Discard));
+    QVERIFY(w.close());
+    QVERIFY(editor.isNull() || !editor->isVisible());
+}
+
 // A tolerance tighter than what the integrators a student may choose measure is said in the
 // step's problems, once the runs in the worker are done; with the integrator locked it is not.
 void TestLessonEditor::toleranceTighterThanIntegrators()

@@ -115,6 +115,17 @@ QString LessonDraft::open(const QString& path)
     return {};
 }
 
+QString LessonDraft::openKept(const QString& path)
+{
+    const QString error = open(path);
+    if (!error.isEmpty())
+        return error;
+    m_path.clear();
+    m_undo->resetClean(); // no state of it is saved anywhere but in the autosave
+    emit changed();
+    return {};
+}
+
 bool LessonDraft::isModified() const
 {
     return !m_undo->isClean();

@@ -29,6 +29,9 @@ public:
     /// Opens a lesson file (a folder's .json or a .rlesson) with the scenes it uses. A shipped
     /// one opens as a copy: path() is empty and Save asks where. Returns the loader's error.
     QString open(const QString& path);
+    /// Opens what an autosave kept (a .rlesson) as unsaved work: path() is empty, so Save
+    /// asks where, and the draft counts as modified. Returns the loader's error.
+    QString openKept(const QString& path);
 
     const lessons::LessonPack& pack() const { return m_pack; }
     /// The file Save writes; empty for a new lesson or a copy.

@@ -70,7 +70,7 @@ LessonEditor::LessonEditor(QWidget* parent) : QWidget(parent, Qt::Window)
 {
     setObjectName(QStringLiteral("lessonEditor"));
     setAccessibleName(tr("Lesson editor"));
-    m_autosavePath = QDir(lessons::userDataDir()).filePath(QStringLiteral("autosave.rlesson"));
+    m_autosavePath = defaultAutosavePath();
 
     auto* layout = new QVBoxLayout(this);
     auto* grid = new QGridLayout;
@@ -97,6 +97,11 @@ LessonEditor::LessonEditor(QWidget* parent) : QWidget(parent, Qt::Window)
     m_autosaveTimer->start();
     connect(&m_draft, &LessonDraft::changed, this, &LessonEditor::refresh);
     refresh();
+}
+
+QString LessonEditor::defaultAutosavePath()
+{
+    return QDir(lessons::userDataDir()).filePath(QStringLiteral("autosave.rlesson"));
 }
 
 void LessonEditor::buildLessonFields(QGridLayout& grid)

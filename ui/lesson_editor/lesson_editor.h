@@ -41,6 +41,9 @@ public:
     QString open(const QString& path);
     /// A new lesson with one step on `scene`.
     void newLesson(const lessons::Scene& scene);
+    /// The autosave at `path` that a crash left, opened as unsaved work (LessonDraft::openKept);
+    /// this editor's autosave from now on, removed once the lesson is saved or discarded.
+    QString openKept(const QString& path);
 
     int currentStep() const;
     QuestionEditor& questions() { return *m_questions; }
@@ -53,10 +56,13 @@ public:
     QString save();
     /// Save As to `path` (.rlesson). Returns the error.
     QString saveAs(const QString& path);
+    /// Where an editor's autosave goes unless a test says otherwise: the lab's data folder.
+    static QString defaultAutosavePath();
     /// Where the autosave goes (the lab's data folder unless a test says otherwise).
     void setAutosavePath(const QString& path) { m_autosavePath = path; }
     const QString& autosavePath() const { return m_autosavePath; }
     /// Writes the autosave now when there are unsaved edits; returns whether it wrote one.
+    /// It stays after a crash, and is removed when the lesson is saved or its edits discarded.
     bool autosave();
 
 signals:
@@ -117,6 +123,8 @@ private:
     QAction* m_redo = nullptr;
     QTimer* m_autosaveTimer = nullptr;
     QString m_autosavePath;
+    bool m_autosaveOwned = false; ///< the file at m_autosavePath is this editor's to remove
+    void discardAutosave();
 };
 
 } // namespace rigidlab::ui

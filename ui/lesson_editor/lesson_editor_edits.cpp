@@ -14,6 +14,7 @@
 #include <QAction>
 #include <QCloseEvent>
 #include <QDir>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QKeyEvent>
@@ -52,6 +53,17 @@ QString LessonEditor::open(const QString& path)
 {
     const QString error = m_draft.open(path);
     selectStep(0);
+    return error;
+}
+
+QString LessonEditor::openKept(const QString& path)
+{
+    const QString error = m_draft.openKept(path);
+    selectStep(0);
+    if (error.isEmpty()) {
+        m_autosavePath = QFileInfo(path).absoluteFilePath();
+        m_autosaveOwned = true;
+    }
     return error;
 }
 
@@ -124,6 +136,8 @@ QString LessonEditor::save()
     const QString error = m_draft.save();
     if (!error.isEmpty())
         QMessageBox::warning(this, tr("Save lesson"), error);
+    else
+        discardAutosave(); // the file holds it all now
     updateTitle();
     return error;
 }
@@ -134,6 +148,8 @@ QString LessonEditor::saveAs(const QString& path)
     if (!target.endsWith(QStringLiteral(".rlesson"), Qt::CaseInsensitive))
         target += QStringLiteral(".rlesson");
     const QString error = m_draft.saveAs(target);
+    if (error.isEmpty())
+        discardAutosave();
     updateTitle();
     return error;
 }
@@ -159,7 +175,17 @@ bool LessonEditor::autosave()
     if (!m_draft.isModified() || m_autosavePath.isEmpty())
         return false;
     QDir().mkpath(QFileInfo(m_autosavePath).absolutePath());
-    return m_draft.writeCopy(m_autosavePath).isEmpty();
+    if (!m_draft.writeCopy(m_autosavePath).isEmpty())
+        return false;
+    m_autosaveOwned = true;
+    return true;
+}
+
+void LessonEditor::discardAutosave()
+{
+    if (m_autosaveOwned)
+        QFile::remove(m_autosavePath);
+    m_autosaveOwned = false;
 }
 
 void LessonEditor::trySelected()
@@ -357,11 +383,13 @@ void LessonEditor::closeEvent(QCloseEvent* event)
             event->ignore();
             return;
         }
-        if (answer == QMessageBox::Save && !save().isEmpty()) {
+        // Save As asked where, and the teacher cancelled it: the lesson is still unsaved.
+        if (answer == QMessageBox::Save && (!save().isEmpty() || m_draft.isModified())) {
             event->ignore();
             return;
         }
     }
+    discardAutosave(); // saved, or its edits discarded on purpose
     event->accept();
 }
 

@@ -8,6 +8,7 @@
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "instruments/instruments.h"
+#include "lesson_editor/lesson_editor.h"
 #include "lesson_player/lesson_panels.h"
 #include "lesson_player/lesson_player.h"
 #include "measure/measurement_panel.h"
@@ -361,6 +362,12 @@ void MainWindow::closeEvent(QCloseEvent* event)
         }
         return;
     }
+    // A lesson being written with unsaved edits asks first (Save, Discard or Cancel).
+    for (LessonEditor* editor : findChildren<LessonEditor*>())
+        if (editor->isVisible() && !editor->close()) {
+            event->ignore();
+            return;
+        }
     if (!confirmLeaveScene()) { // unsaved edits: Save, Discard or Cancel
         event->ignore();
         return;

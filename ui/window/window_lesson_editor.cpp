@@ -2,6 +2,7 @@
 // The window's way into the lesson editor: File › New lesson and Edit lesson…, and Try as a
 // student, which plays the editor's lesson here from its selected step, with a way back to
 // the editor at the step the student is on while that lesson plays.
+#include "common/modal_scope.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_editor/lesson_editor.h"
@@ -15,20 +16,28 @@
 #include "format/data_dirs.h"
 
 #include <QAction>
+#include <QFile>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QToolBar>
 
 namespace rigidlab::ui {
 
 void MainWindow::addLessonEditorEntries(QMenu& file)
 {
-    QAction* create = file.addAction(tr("Ne&w lesson"), this, [this] { editLesson(QString()); });
+    QAction* create = file.addAction(tr("Ne&w lesson"), this, [this] {
+        if (offerKeptLesson())
+            editLesson(QString());
+    });
     create->setObjectName(QStringLiteral("newLesson"));
     QAction* edit = file.addAction(tr("Edi&t lesson…"), this, [this] {
+        if (!offerKeptLesson())
+            return;
         const QString path = QFileDialog::getOpenFileName(
             this, tr("Edit lesson"), lessons::userLessonsDir(), tr("Lessons (*.rlesson *.json)"));
         QString error;
@@ -50,6 +59,43 @@ void MainWindow::addLessonEditorEntries(QMenu& file)
                 if (m_triedFrom && lesson.path != m_triedPath)
                     hideWayBack();
             });
+}
+
+bool MainWindow::offerKeptLesson()
+{
+    const QString kept = LessonEditor::defaultAutosavePath();
+    if (!QFileInfo::exists(kept) || !findChildren<LessonEditor*>().isEmpty())
+        return true; // nothing kept, or an open editor is writing it now
+    const ModalScope modal;
+    QMessageBox box(
+        QMessageBox::Question, tr("A lesson was not saved"),
+        tr("RigidLab closed on %1 while a lesson was being written, before it was "
+           "saved. Open what was kept?")
+            .arg(QLocale().toString(QFileInfo(kept).lastModified(), QLocale::ShortFormat)),
+        QMessageBox::NoButton, this);
+    box.setObjectName(QStringLiteral("keptLessonBox"));
+    QPushButton* open = box.addButton(tr("&Open it"), QMessageBox::AcceptRole);
+    open->setObjectName(QStringLiteral("keptOpen"));
+    QPushButton* remove = box.addButton(tr("&Delete it"), QMessageBox::DestructiveRole);
+    remove->setObjectName(QStringLiteral("keptDelete"));
+    // Cancel leaves it there: a new editor would write its own autosave over it.
+    box.addButton(QMessageBox::Cancel)->setObjectName(QStringLiteral("keptCancel"));
+    box.setDefaultButton(open);
+    box.exec();
+    if (box.clickedButton() == remove) {
+        QFile::remove(kept);
+        return true;
+    }
+    if (box.clickedButton() != open)
+        return false;
+    LessonEditor* editor = editLesson(QString());
+    const QString error = editor->openKept(kept);
+    if (!error.isEmpty()) {
+        delete editor;
+        QMessageBox::warning(this, tr("A lesson was not saved"),
+                             tr("What was kept does not open: %1").arg(error));
+    }
+    return false;
 }
 
 void MainWindow::showWayBack(LessonEditor* editor)
