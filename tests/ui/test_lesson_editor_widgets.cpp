@@ -473,6 +473,21 @@ void TestLessonEditor::windowClosingAsksTheEditor()
                         QStringLiteral("Collisions"));
     QVERIFY(ed->draft().isModified());
     const QPointer<ui::LessonEditor> editor = ed;
+    // Save, and the Save As that asks where cancelled: nothing is saved, so nothing closes.
+    auto* rejectFileDialog = new QTimer(ed);
+    rejectFileDialog->setInterval(10);
+    connect(rejectFileDialog, &QTimer::timeout, rejectFileDialog, [rejectFileDialog] {
+        if (auto* d = qobject_cast<QFileDialog*>(QApplication::activeModalWidget())) {
+            d->reject();
+            rejectFileDialog->stop();
+        }
+    });
+    rejectFileDialog->start();
+    nameStandardButtons();
+    clickInNextBox(QString::number(QMessageBox::Save));
+    QVERIFY2(!ed->close(), "the lesson is not saved yet");
+    QVERIFY(!rejectFileDialog->isActive()); // the dialog came and was cancelled
+    QVERIFY(editor->draft().isModified());
     nameStandardButtons();
     clickInNextBox(QString::number(QMessageBox::Cancel));
     QVERIFY2(!w.close(), "Cancel keeps the window open");
