@@ -5,6 +5,7 @@
 // CSV dropped on the window; the lesson "Is the lab right?" judged; every new control named
 // and within the keyboard's reach.
 
+#include "common/language.h"
 #include "common/number_format.h"
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
@@ -63,6 +64,7 @@ private slots:
     void measurementGoesWithItsSceneOrLesson();
     void controlsAreNamedAndReachable();
     void uncertaintyInTheLocalesNumbers();
+    void bodiesListedByTheirLabels();
 
 private:
     QTemporaryDir m_dir;
@@ -230,7 +232,8 @@ void TestMeasureWindow::overlayOnPlotsAndTrailInTheScene()
     MeasurementSession& session = w.measurement();
     QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
     MeasurementPanel& panel = *session.panel();
-    panel.setChoices({QStringLiteral("ball")}, {Quantity::X, Quantity::Y});
+    panel.setChoices({{QStringLiteral("ball"), QStringLiteral("ball")}},
+                     {Quantity::X, Quantity::Y});
     // The quantity shown: y.
     auto* quantity = panel.findChildren<QComboBox*>().at(1);
     quantity->setCurrentIndex(quantity->findData(static_cast<int>(Quantity::Y)));
@@ -578,6 +581,19 @@ void TestMeasureWindow::uncertaintyInTheLocalesNumbers()
     QCOMPARE(valueWithUncertainty(12.34, 1.5), QStringLiteral("12.3\u00A0±\u00A01.5"));
     // No uncertainty: the value alone.
     QCOMPARE(valueWithUncertainty(0.5, 0), formatReadable(0.5, 4));
+}
+
+// The bodies to compare with as the class reads them (in Czech "míček"), chosen by their id.
+void TestMeasureWindow::bodiesListedByTheirLabels()
+{
+    QVERIFY(ui::applyLanguage(QStringLiteral("cs")));
+    MainWindow w;
+    QCOMPARE(w.openScene(sceneFile(), true), QString());
+    QCOMPARE(w.measurement().load(sample("ball_tracker.csv")), QString());
+    auto* body = w.measurement().panel()->findChildren<QComboBox*>().at(0);
+    ui::applyLanguage(QStringLiteral("en"));
+    QCOMPARE(body->currentText(), QStringLiteral("míček"));
+    QCOMPARE(body->currentData().toString(), QStringLiteral("ball"));
 }
 
 RIGIDLAB_TEST_MAIN(TestMeasureWindow)

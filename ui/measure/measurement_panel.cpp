@@ -157,15 +157,16 @@ void MeasurementPanel::setSource(const QString& text)
     m_source->setText(text);
 }
 
-void MeasurementPanel::setChoices(const QStringList& bodies,
+void MeasurementPanel::setChoices(const std::vector<BodyChoice>& bodies,
                                   const std::vector<measure::Quantity>& quantities)
 {
     const QSignalBlocker blockBody(m_body), blockQuantity(m_quantity);
-    const QString body = m_body->currentText();
+    const QString body = m_body->currentData().toString();
     const int quantity = m_quantity->currentData().toInt();
     m_body->clear();
-    m_body->addItems(bodies);
-    m_body->setCurrentIndex(std::max(0, m_body->findText(body)));
+    for (const BodyChoice& b : bodies)
+        m_body->addItem(b.label, b.id);
+    m_body->setCurrentIndex(std::max(0, m_body->findData(body)));
     m_quantity->clear();
     for (const measure::Quantity q : quantities)
         m_quantity->addItem(quantityText(q), static_cast<int>(q));
@@ -174,7 +175,7 @@ void MeasurementPanel::setChoices(const QStringList& bodies,
     if (index < 0)
         index = m_quantity->findData(static_cast<int>(measure::Quantity::Y));
     m_quantity->setCurrentIndex(std::max(0, index));
-    m_fit->setEnabled(!quantities.empty() && !bodies.isEmpty());
+    m_fit->setEnabled(!quantities.empty() && !bodies.empty());
 }
 
 int MeasurementPanel::body() const

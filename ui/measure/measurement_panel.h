@@ -32,9 +32,16 @@ public:
 
     /// What was imported, one line ("ball.csv: 97 points of y").
     void setSource(const QString& text);
-    /// The bodies to compare with (their ids) and the measured quantities; keeps the choice
-    /// where it still exists.
-    void setChoices(const QStringList& bodies, const std::vector<measure::Quantity>& quantities);
+    /// A body to compare with: its id, which the choice is kept by, and what a class reads
+    /// for it (its label, lessons::Scene::bodyLabel).
+    struct BodyChoice {
+        QString id;
+        QString label;
+    };
+    /// The bodies to compare with and the measured quantities; keeps the choice where it
+    /// still exists.
+    void setChoices(const std::vector<BodyChoice>& bodies,
+                    const std::vector<measure::Quantity>& quantities);
     int body() const;
     measure::Quantity quantity() const;
     void setBody(int index);

@@ -296,10 +296,12 @@ void MeasurementSession::updateChoices()
 {
     if (!m_measurement)
         return;
-    QStringList bodies;
-    for (const physics::BodyDef& b : m_document.scene().bodies)
-        if (b.type != physics::BodyType::Static)
-            bodies << QString::fromStdString(b.name);
+    const lessons::Scene& scene = m_document.scene();
+    std::vector<MeasurementPanel::BodyChoice> bodies;
+    for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+        if (scene.bodies[i].type != physics::BodyType::Static)
+            bodies.push_back({QString::fromStdString(scene.bodies[i].name),
+                              scene.bodyLabel(static_cast<physics::BodyId>(i))});
     std::vector<Quantity> quantities;
     for (const measure::Series& s : m_measurement->series)
         quantities.push_back(s.quantity);
