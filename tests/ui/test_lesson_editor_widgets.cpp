@@ -423,16 +423,17 @@ void TestLessonEditor::keptLessonAfterACrash()
     const lessons::SceneLoadResult scene =
         lessons::loadSceneFile(kSource + QStringLiteral("/lessons/scenes/two_balls.json"));
     QVERIFY2(scene.ok, qPrintable(scene.error));
-    const QString kept = ui::LessonEditor::defaultAutosavePath();
-    QFile::remove(kept);
+    QString kept;
     {
         auto crashed = std::make_unique<ui::LessonEditor>();
+        kept = crashed->autosavePath();
         crashed->newLesson(scene.scene);
         crashed->draft().setText(-1, QStringLiteral("title"), QStringLiteral("cs"),
                                  QStringLiteral("Srážky"));
         QVERIFY(crashed->autosave());
     } // destroyed without closing, as a crash leaves it
     QVERIFY(QFileInfo::exists(kept));
+    QCOMPARE(ui::LessonEditor::keptLessons(), QStringList{kept});
 
     ui::MainWindow w;
     auto* create = w.findChild<QAction*>(QStringLiteral("newLesson"));
@@ -451,7 +452,10 @@ void TestLessonEditor::keptLessonAfterACrash()
              QStringLiteral("Srážky"));
     QVERIFY2(ed->draft().isModified(), "what was kept is unsaved work");
     QVERIFY2(ed->draft().path().isEmpty(), "Save asks where, not into the autosave");
-    // Another New lesson while it is open asks nothing: the open editor owns the autosave.
+    // Another New lesson while it is open asks nothing: the open editor holds the autosave's
+    // lock, and writes its own file.
+    QVERIFY(ed->autosave());
+    QVERIFY(ui::LessonEditor::keptLessons().isEmpty());
     create->trigger();
     QCOMPARE(w.findChildren<ui::LessonEditor*>().size(), 2);
     delete w.findChildren<ui::LessonEditor*>().back();

@@ -12,6 +12,8 @@
 #include <QAction>
 #include <QApplication>
 #include <QCloseEvent>
+#include <QCoreApplication>
+#include <QDateTime>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -21,6 +23,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QLockFile>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -70,7 +73,7 @@ LessonEditor::LessonEditor(QWidget* parent) : QWidget(parent, Qt::Window)
 {
     setObjectName(QStringLiteral("lessonEditor"));
     setAccessibleName(tr("Lesson editor"));
-    m_autosavePath = defaultAutosavePath();
+    m_autosavePath = newAutosavePath();
 
     auto* layout = new QVBoxLayout(this);
     auto* grid = new QGridLayout;
@@ -99,9 +102,34 @@ LessonEditor::LessonEditor(QWidget* parent) : QWidget(parent, Qt::Window)
     refresh();
 }
 
-QString LessonEditor::defaultAutosavePath()
+LessonEditor::~LessonEditor() = default; // the lock is let go; the autosave stays
+
+QString LessonEditor::newAutosavePath()
 {
-    return QDir(lessons::userDataDir()).filePath(QStringLiteral("autosave.rlesson"));
+    static int made = 0;
+    return QDir(lessons::userDataDir())
+        .filePath(QStringLiteral("autosave-%1-%2-%3.rlesson")
+                      .arg(QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")))
+                      .arg(QCoreApplication::applicationPid())
+                      .arg(++made));
+}
+
+QStringList LessonEditor::keptLessons()
+{
+    const QFileInfoList files =
+        QDir(lessons::userDataDir())
+            .entryInfoList({QStringLiteral("autosave*.rlesson")}, QDir::Files, QDir::Time);
+    QStringList out;
+    for (const QFileInfo& f : files) {
+        // A live editor holds its lock; a crashed one's lock is stale and taken over here.
+        QLockFile probe(f.absoluteFilePath() + QStringLiteral(".lock"));
+        probe.setStaleLockTime(0); // held for hours: stale only when its process is gone
+        if (probe.tryLock(0)) {
+            probe.unlock();
+            out << f.absoluteFilePath();
+        }
+    }
+    return out;
 }
 
 void LessonEditor::buildLessonFields(QGridLayout& grid)

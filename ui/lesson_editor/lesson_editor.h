@@ -6,19 +6,23 @@
 // text as the player shows it and a mark where a language is missing. Everything it shows is
 // read back from its LessonDraft and every change is one of the draft's undoable edits, so
 // the window's Undo and Redo are the draft's own. It saves .rlesson files and, while the
-// lesson has unsaved edits, writes a copy of it now and then (the autosave a crash leaves).
+// lesson has unsaved edits, writes a copy of it now and then (the autosave a crash leaves):
+// a file of its own, held by a lock file while the editor is open, so that two editors never
+// write over each other and a crash's autosave is told from a live one.
 
 #include "lesson_editor/lesson_draft.h"
 
 #include <QWidget>
 
 #include <array>
+#include <memory>
 
 class QAction;
 class QGridLayout;
 class QLabel;
 class QLineEdit;
 class QListWidget;
+class QLockFile;
 class QPlainTextEdit;
 class QPushButton;
 class QSpinBox;
@@ -35,6 +39,7 @@ class LessonEditor : public QWidget {
     Q_OBJECT
 public:
     explicit LessonEditor(QWidget* parent = nullptr);
+    ~LessonEditor() override;
 
     LessonDraft& draft() { return m_draft; }
     /// Opens a lesson file; returns the loader's error (empty when it opened).
@@ -56,8 +61,11 @@ public:
     QString save();
     /// Save As to `path` (.rlesson). Returns the error.
     QString saveAs(const QString& path);
-    /// Where an editor's autosave goes unless a test says otherwise: the lab's data folder.
-    static QString defaultAutosavePath();
+    /// A new editor's autosave: a file of its own in the lab's data folder.
+    static QString newAutosavePath();
+    /// The autosaves that no open editor (of any running lab) holds, newest first: what
+    /// crashes left.
+    static QStringList keptLessons();
     /// Where the autosave goes (the lab's data folder unless a test says otherwise).
     void setAutosavePath(const QString& path) { m_autosavePath = path; }
     const QString& autosavePath() const { return m_autosavePath; }
@@ -124,6 +132,9 @@ private:
     QTimer* m_autosaveTimer = nullptr;
     QString m_autosavePath;
     bool m_autosaveOwned = false; ///< the file at m_autosavePath is this editor's to remove
+    std::unique_ptr<QLockFile> m_autosaveLock; ///< held while this editor owns its autosave
+    /// Holds the lock on m_autosavePath (it is this editor's from now on).
+    void lockAutosave();
     void discardAutosave();
 };
 

@@ -21,6 +21,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QLockFile>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QSpinBox>
@@ -63,6 +64,7 @@ QString LessonEditor::openKept(const QString& path)
     if (error.isEmpty()) {
         m_autosavePath = QFileInfo(path).absoluteFilePath();
         m_autosaveOwned = true;
+        lockAutosave();
     }
     return error;
 }
@@ -175,10 +177,20 @@ bool LessonEditor::autosave()
     if (!m_draft.isModified() || m_autosavePath.isEmpty())
         return false;
     QDir().mkpath(QFileInfo(m_autosavePath).absolutePath());
+    lockAutosave(); // before the file is there, so that no other editor offers it
     if (!m_draft.writeCopy(m_autosavePath).isEmpty())
         return false;
     m_autosaveOwned = true;
     return true;
+}
+
+void LessonEditor::lockAutosave()
+{
+    if (m_autosaveLock && m_autosaveLock->isLocked())
+        return;
+    m_autosaveLock = std::make_unique<QLockFile>(m_autosavePath + QStringLiteral(".lock"));
+    m_autosaveLock->setStaleLockTime(0); // only its process's end makes it stale
+    m_autosaveLock->tryLock(0);
 }
 
 void LessonEditor::discardAutosave()
@@ -186,6 +198,7 @@ void LessonEditor::discardAutosave()
     if (m_autosaveOwned)
         QFile::remove(m_autosavePath);
     m_autosaveOwned = false;
+    m_autosaveLock.reset();
 }
 
 void LessonEditor::trySelected()

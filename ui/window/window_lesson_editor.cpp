@@ -63,9 +63,9 @@ void MainWindow::addLessonEditorEntries(QMenu& file)
 
 bool MainWindow::offerKeptLesson()
 {
-    const QString kept = LessonEditor::defaultAutosavePath();
-    if (!QFileInfo::exists(kept) || !findChildren<LessonEditor*>().isEmpty())
-        return true; // nothing kept, or an open editor is writing it now
+    const QString kept = LessonEditor::keptLessons().value(0); // the newest; others next time
+    if (kept.isEmpty())
+        return true; // nothing a crash left
     const ModalScope modal;
     QMessageBox box(
         QMessageBox::Question, tr("A lesson was not saved"),
@@ -78,7 +78,7 @@ bool MainWindow::offerKeptLesson()
     open->setObjectName(QStringLiteral("keptOpen"));
     QPushButton* remove = box.addButton(tr("&Delete it"), QMessageBox::DestructiveRole);
     remove->setObjectName(QStringLiteral("keptDelete"));
-    // Cancel leaves it there: a new editor would write its own autosave over it.
+    // Cancel leaves it there, to be offered again.
     box.addButton(QMessageBox::Cancel)->setObjectName(QStringLiteral("keptCancel"));
     box.setDefaultButton(open);
     box.exec();
