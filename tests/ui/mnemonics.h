@@ -39,9 +39,9 @@ inline QStringList sharedLetters(const QMap<QChar, QStringList>& letters)
     return out;
 }
 
-/// The controls of `window` shown now (not those of other windows inside it) that share
-/// their underlined letter: labels that name a control, buttons, group boxes, tabs.
-inline QStringList windowMnemonicClashes(QWidget& window)
+/// The underlined letters of the controls of `window` shown now (not those of other windows
+/// inside it), each with its texts: labels that name a control, buttons, group boxes, tabs.
+inline QMap<QChar, QStringList> windowMnemonics(QWidget& window)
 {
     QMap<QChar, QStringList> letters;
     const auto add = [&letters](const QString& text) {
@@ -61,7 +61,13 @@ inline QStringList windowMnemonicClashes(QWidget& window)
             for (int i = 0; i < tabs->count(); ++i)
                 add(tabs->tabText(i));
     }
-    return sharedLetters(letters);
+    return letters;
+}
+
+/// The controls of `window` shown now that share their underlined letter.
+inline QStringList windowMnemonicClashes(QWidget& window)
+{
+    return sharedLetters(windowMnemonics(window));
 }
 
 } // namespace rigidlab::test

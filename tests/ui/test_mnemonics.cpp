@@ -94,24 +94,13 @@ private slots:
         for (QAction* a : w.menuBar()->actions())
             if (const QChar c = test::mnemonicOf(a->text()); !c.isNull())
                 titles[c] << a->text();
+        // Two of the window's controls, or a control and a menu's title, sharing a letter.
         const auto clashesNow = [&w, &titles](const QString& where) {
+            QMap<QChar, QStringList> letters = test::windowMnemonics(w);
+            for (auto it = titles.cbegin(); it != titles.cend(); ++it)
+                letters[it.key()] << it.value();
             QStringList out;
-            for (const QString& line : test::windowMnemonicClashes(w))
-                out << where + QStringLiteral(": ") + line;
-            // A letter of the window's controls that a menu's title has too.
-            QMap<QChar, QStringList> withTitles = titles;
-            for (QWidget* c : w.findChildren<QWidget*>()) {
-                if (c->window() != &w || !c->isVisibleTo(&w))
-                    continue;
-                QString text;
-                if (auto* label = qobject_cast<QLabel*>(c); label && label->buddy())
-                    text = label->text();
-                else if (auto* button = qobject_cast<QAbstractButton*>(c))
-                    text = button->text();
-                if (const QChar m = test::mnemonicOf(text); !m.isNull() && titles.contains(m))
-                    withTitles[m] << text;
-            }
-            for (const QString& line : test::sharedLetters(withTitles))
+            for (const QString& line : test::sharedLetters(letters))
                 out << where + QStringLiteral(": ") + line;
             return out;
         };

@@ -131,10 +131,11 @@ private:
     QAction* m_redo = nullptr;
     QTimer* m_autosaveTimer = nullptr;
     QString m_autosavePath;
-    bool m_autosaveOwned = false; ///< the file at m_autosavePath is this editor's to remove
-    std::unique_ptr<QLockFile> m_autosaveLock; ///< held while this editor owns its autosave
-    /// Holds the lock on m_autosavePath (it is this editor's from now on).
+    /// Held while the file at m_autosavePath is this editor's (to write, and to remove).
+    std::unique_ptr<QLockFile> m_autosaveLock;
+    /// Takes the lock on m_autosavePath: the file is this editor's from now on.
     void lockAutosave();
+    /// Removes this editor's autosave, if it has one, and lets go of its lock.
     void discardAutosave();
 };
 

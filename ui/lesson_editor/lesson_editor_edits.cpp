@@ -62,8 +62,8 @@ QString LessonEditor::openKept(const QString& path)
     const QString error = m_draft.openKept(path);
     selectStep(0);
     if (error.isEmpty()) {
+        discardAutosave(); // its own, if it wrote one: the kept lesson replaced it
         m_autosavePath = QFileInfo(path).absoluteFilePath();
-        m_autosaveOwned = true;
         lockAutosave();
     }
     return error;
@@ -178,10 +178,7 @@ bool LessonEditor::autosave()
         return false;
     QDir().mkpath(QFileInfo(m_autosavePath).absolutePath());
     lockAutosave(); // before the file is there, so that no other editor offers it
-    if (!m_draft.writeCopy(m_autosavePath).isEmpty())
-        return false;
-    m_autosaveOwned = true;
-    return true;
+    return m_draft.writeCopy(m_autosavePath).isEmpty();
 }
 
 void LessonEditor::lockAutosave()
@@ -195,9 +192,9 @@ void LessonEditor::lockAutosave()
 
 void LessonEditor::discardAutosave()
 {
-    if (m_autosaveOwned)
-        QFile::remove(m_autosavePath);
-    m_autosaveOwned = false;
+    if (!m_autosaveLock)
+        return;
+    QFile::remove(m_autosavePath);
     m_autosaveLock.reset();
 }
 

@@ -106,9 +106,9 @@ public:
     /// scene being edited when empty); Try as a student plays its lesson here. Returns it, or
     /// nullptr with `error` set when the lesson does not open.
     LessonEditor* editLesson(const QString& path, QString* error = nullptr);
-    /// Before New lesson and Edit lesson: when an autosave a crash left is there (and no
-    /// editor is open to own it), asks whether to open it (as unsaved work), delete it, or
-    /// cancel. Returns whether to go on with what was asked.
+    /// Before New lesson and Edit lesson: when an autosave a crash left is there (one no open
+    /// editor holds, LessonEditor::keptLessons), asks whether to open it (as unsaved work),
+    /// delete it, or cancel. Returns whether to go on with what was asked.
     bool offerKeptLesson();
     /// While a lesson tried from the lesson editor plays: raises the editor with the step the
     /// student is on selected (the bar above the docks, File › Back to the lesson editor).

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // MainWindow's menus: each entry is an action of one of the window's parts.
-#include "common/display_names.h"
 #include "window/main_window.h"
 
+#include "common/display_names.h"
 #include "common/shortcuts.h"
 #include "editor/scene_document.h"
 #include "instruments/instruments.h"

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // WindowDocuments: opening scenes, new scenes, the recent files.
 #include "window/window_documents.h"
-#include "common/display_names.h"
 
+#include "common/display_names.h"
 #include "common/modal_scope.h"
 #include "editor/scene_document.h"
 #include "window/settings_sync.h"

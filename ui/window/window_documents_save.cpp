@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // WindowDocuments' saving: Save, Save As, the question about unsaved changes, and File › Your
 // own scenes, where saved scenes appear.
-#include "common/display_names.h"
 #include "window/window_documents.h"
 
+#include "common/display_names.h"
 #include "common/modal_scope.h"
 #include "editor/scene_document.h"
 
