@@ -12,6 +12,8 @@
 #include "format/document.h"
 #include "format/sat_report.h"
 #include "format/scene_loader.h"
+#include "rigidlab/physics/contact.h"
+#include "rigidlab/physics/integrator.h"
 #include "rigidlab/version.h"
 #include "run/scene_run.h"
 
@@ -35,17 +37,19 @@ Commands:
       --time T               simulated time [s] (default 5)
       --steps N              number of steps instead of a time
       --dt H                 time step [s], overrides the scene's (1e-07 to 1)
-      --integrator NAME      euler, symplectic-euler, verlet, rk4
-      --solver NAME          seed-impulse, sequential-impulse, soft-step
+      --integrator NAME      @INTEGRATORS@
+      --solver NAME          @SOLVERS@
       --trace FILE.csv       step, t [s], body, x [m], y [m], angle [rad], v_x [m/s],
                              v_y [m/s], ω [rad/s] per dynamic body
       --diagnostics FILE.csv step, t [s], E_k [J], E_p [J], E [J], p_x [kg m/s],
                              p_y [kg m/s], L [kg m²/s], contacts, E_diss [J], drift [1];
                              E_diss: energy taken by contacts, drag and dampers;
                              drift: the numerical error, (E + E_diss - E0)/|E0|
-      --csv-dialect D        plain (default: comma, decimal point, no BOM) or spreadsheet
-                             (the --lang language's: Czech ';' and decimal comma; with a
-                             UTF-8 BOM); times as a person writes them, noise as 0
+      --csv-dialect D        plain (comma, decimal point, no BOM) or spreadsheet (the
+                             --lang language's: Czech ';' and decimal comma; with a UTF-8
+                             BOM); the default is plain, or spreadsheet with a --lang that
+                             writes a decimal comma (cs); times as a person writes them,
+                             noise as 0
       --lang en|cs           the language of the files' column heads (default en)
       --every K              write rows every K steps (default 1; step 0 and the last
                              step are always written)
@@ -67,7 +71,7 @@ Commands:
       --validate             only check it: "ok: ..." or what is wrong and where
       --export DIR           run every step that has plots for its exportTime and write
                              them as PNG, PDF, SVG and CSV into DIR/NN-step-title/
-      --csv-dialect D        the handouts' CSV: plain (default) or spreadsheet (see run)
+      --csv-dialect D        the handouts' CSV: plain or spreadsheet (default as for run)
       --lang en|cs           the language of the lesson's texts: outline, step titles,
                              plot titles, axes, legends and captions of --export (default en;
                              English where a text has none)
@@ -99,7 +103,7 @@ Commands:
       --min-cpu S            CPU time spent timing each row (default 0.05 s)
       --csv FILE.csv         problem,integrator,dt [s],steps,evaluations,error,max_error,
                              energy_error,seconds [s]
-      --csv-dialect D        plain (default) or spreadsheet in --lang's conventions (see run)
+      --csv-dialect D        plain or spreadsheet in --lang's conventions (default as for run)
       --plot FILE.png|.pdf|.svg  the work-precision diagram (FILE-PROBLEM.png for several)
   stress [OPTIONS]           stiff and extreme cases, each with its verdict
       --case NAME            one case (default: all; --case list names them)
@@ -132,6 +136,35 @@ than documented.
 rigidlab-cli's own messages are in English, whatever --lang says: scripts read them.
 Scene format: lessons/SCENE_FORMAT.md.
 )";
+
+/// The names --integrator and --solver take, from the engine's own tables: a new integrator
+/// or solver is listed here without a change to this file.
+QString integratorNames()
+{
+    QStringList names;
+    for (const physics::IntegratorInfo& info : physics::kIntegrators)
+        names << QString::fromUtf8(info.name.data(), qsizetype(info.name.size()));
+    return names.join(QStringLiteral(", "));
+}
+
+QString solverNames()
+{
+    QStringList names;
+    for (const physics::SolverKind kind : physics::kAllSolvers) {
+        const std::string_view name = physics::solverName(kind);
+        names << QString::fromUtf8(name.data(), qsizetype(name.size()));
+    }
+    return names.join(QStringLiteral(", "));
+}
+
+/// kUsage with the names filled in.
+QByteArray usage()
+{
+    return QString::fromUtf8(kUsage)
+        .replace(QStringLiteral("@INTEGRATORS@"), integratorNames())
+        .replace(QStringLiteral("@SOLVERS@"), solverNames())
+        .toUtf8();
+}
 
 /// Reads the run options; false with `error` set when one is wrong.
 bool readRunOptions(const CommandLine& args, lessons::RunOptions& options, QString& error)
@@ -180,18 +213,16 @@ bool readRunOptions(const CommandLine& args, lessons::RunOptions& options, QStri
     if (const auto name = args.value(QStringLiteral("integrator"))) {
         options.integrator = physics::integratorFromName(name->toStdString());
         if (!options.integrator) {
-            error = QStringLiteral("--integrator: unknown integrator \"%1\" (expected euler, "
-                                   "symplectic-euler, verlet, rk4)")
-                        .arg(*name);
+            error = QStringLiteral("--integrator: unknown integrator \"%1\" (expected %2)")
+                        .arg(*name, integratorNames());
             return false;
         }
     }
     if (const auto name = args.value(QStringLiteral("solver"))) {
         options.solver = physics::solverFromName(name->toStdString());
         if (!options.solver) {
-            error = QStringLiteral("--solver: unknown solver \"%1\" (expected seed-impulse, "
-                                   "sequential-impulse, soft-step)")
-                        .arg(*name);
+            error = QStringLiteral("--solver: unknown solver \"%1\" (expected %2)")
+                        .arg(*name, solverNames());
             return false;
         }
     }
@@ -384,12 +415,12 @@ int main(int argc, char* argv[])
     QStringList words = QCoreApplication::arguments();
     words.removeFirst();
     if (words.isEmpty()) {
-        std::fputs(kUsage, stderr);
+        std::fputs(usage().constData(), stderr);
         return kExitBadInput;
     }
     const auto isHelp = [](const QString& word) { return word == u"--help" || word == u"-h"; };
     if (words.front() == u"help" || std::any_of(words.cbegin(), words.cend(), isHelp)) {
-        std::fputs(kUsage, stdout);
+        std::fputs(usage().constData(), stdout);
         return kExitOk;
     }
     if (words.size() == 1 && words.front() == u"--version") {
@@ -402,6 +433,6 @@ int main(int argc, char* argv[])
             return command.run(words);
         }
     }
-    std::fputs(kUsage, stderr);
+    std::fputs(usage().constData(), stderr);
     return usageError(QString(), QStringLiteral("unknown command \"%1\"").arg(name));
 }

@@ -2,7 +2,11 @@
 // rigidlab-cli as a user meets it: run as a process, judged by its exit status, its output
 // and the files it leaves (or must not leave).
 
+#include "cli_run.h"
 #include "test_main.h"
+
+#include "rigidlab/physics/contact.h"
+#include "rigidlab/physics/integrator.h"
 
 #include <QDir>
 #include <QFile>
@@ -10,38 +14,15 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QTest>
 
 namespace {
 
-const QString kCli = QStringLiteral(RIGIDLAB_CLI);
 const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
 
-struct CliRun {
-    int exitCode = -1;
-    bool crashed = true;
-    QByteArray out;
-    QByteArray err;
-};
-
-CliRun runCli(const QStringList& arguments)
-{
-    QProcess process;
-    process.start(kCli, arguments);
-    CliRun run;
-    if (!process.waitForFinished(120'000)) {
-        process.kill();
-        process.waitForFinished();
-        return run;
-    }
-    run.crashed = process.exitStatus() != QProcess::NormalExit;
-    run.exitCode = process.exitCode();
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
-}
+using rigidlab::test::CliRun;
+using rigidlab::test::runCli;
 
 QString scene(const char* name)
 {
@@ -106,6 +87,19 @@ void TestCli::help()
          {"run", "validate", "sat", "--time", "--steps", "--dt", "--integrator", "--solver",
           "--trace", "--diagnostics", "--every", "--lang", "--csv-dialect"}) {
         QVERIFY2(run.out.contains(word), word);
+    }
+    // The names come from the engine's tables: every integrator and solver, on the flags'
+    // lines and in the refusal of an unknown name.
+    const CliRun refused = runCli({QStringLiteral("run"), scene("ball_drop"),
+                                   QStringLiteral("--integrator"), QStringLiteral("rk5")});
+    for (const rigidlab::physics::IntegratorInfo& info : rigidlab::physics::kIntegrators) {
+        const QByteArray name(info.name.data(), qsizetype(info.name.size()));
+        QVERIFY2(run.out.contains(", " + name) || run.out.contains(" " + name + ","), name);
+        QVERIFY2(refused.err.contains(name), refused.err.constData());
+    }
+    for (const rigidlab::physics::SolverKind kind : rigidlab::physics::kAllSolvers) {
+        const std::string_view name = rigidlab::physics::solverName(kind);
+        QVERIFY2(run.out.contains(QByteArray(name.data(), qsizetype(name.size()))), name.data());
     }
 }
 

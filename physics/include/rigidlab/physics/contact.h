@@ -31,6 +31,10 @@ enum class SoftStepStandIn {
     Gravitation, ///< mutual gravitation (G != 0)
 };
 
+/// Every solver, in the order menus and the command line list them.
+inline constexpr std::array<SolverKind, 3> kAllSolvers{
+    SolverKind::PaperImpulse, SolverKind::SequentialImpulse, SolverKind::SoftStep};
+
 std::string_view solverName(SolverKind kind);
 /// A name for each reason: "integrator", "springs", "pin-joints", "gravitation" ("" for None).
 std::string_view standInName(SoftStepStandIn why);
