@@ -197,8 +197,13 @@ std::optional<lessons::CsvConventions> csvOption(const CommandLine& args, QStrin
     }
     const QString language = lang.value_or(QStringLiteral("en"));
     const auto name = args.value(QStringLiteral("csv-dialect"));
-    if (!name)
-        return lessons::csvConventions(lessons::CsvDialect::Plain, language);
+    if (!name) {
+        // A language with a decimal comma (Czech) asks for its spreadsheet's file: plain CSV
+        // there opens with every number as text. --csv-dialect plain still gives the plain one.
+        const bool spreadsheet = lang && lessons::usesDecimalComma(language);
+        return lessons::csvConventions(
+            spreadsheet ? lessons::CsvDialect::Spreadsheet : lessons::CsvDialect::Plain, language);
+    }
     const auto dialect = lessons::csvDialectFromName(*name);
     if (!dialect) {
         error = QStringLiteral("--csv-dialect: unknown dialect \"%1\" (expected %2)")

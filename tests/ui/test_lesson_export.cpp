@@ -15,12 +15,12 @@
 
 #include <QDirIterator>
 #include <QImage>
-#include <QProcess>
 #include <QSvgRenderer>
 #include <QTemporaryDir>
 #include <QXmlStreamReader>
 #include <QtTest>
 
+#include "cli_run.h"
 #include "near.h"
 #include "test_main.h"
 
@@ -32,7 +32,6 @@ using namespace rigidlab;
 namespace {
 
 const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
-const QString kCli = QStringLiteral(RIGIDLAB_CLI);
 
 lessons::Lesson lesson(const char* name)
 {
@@ -70,6 +69,23 @@ std::vector<std::vector<double>> csvRows(const QString& path, QByteArray* header
     return rows;
 }
 
+/// Checks an exported table, its cells separated by commas.
+QString checkCsv(const QString& path, const QByteArray& bytes)
+{
+    if (path.endsWith(QStringLiteral("sat-projections.csv"))) {
+        if (!bytes.startsWith("axis,body,edge,n_x,n_y,A_min [m],"))
+            return QStringLiteral("SAT table without its header");
+        if (bytes.count('\n') < 2)
+            return QStringLiteral("SAT table without an axis");
+    } else {
+        if (!bytes.startsWith("t [s],"))
+            return QStringLiteral("CSV without its header");
+        if (bytes.count('\n') < 10)
+            return QStringLiteral("CSV with almost no rows");
+    }
+    return {};
+}
+
 /// Checks one exported file by its suffix; an empty string when it is good.
 QString checkFile(const QString& path, const QString& caption)
 {
@@ -97,42 +113,20 @@ QString checkFile(const QString& path, const QString& caption)
         const QString first = caption.section(u'\n', 0, 0).toHtmlEscaped();
         if (!caption.isEmpty() && !QString::fromUtf8(bytes).contains(first.left(20)))
             return QStringLiteral("SVG without its caption");
-    } else if (path.endsWith(QStringLiteral("sat-projections.csv"))) {
-        if (!bytes.startsWith("axis,body,edge,n_x,n_y,A_min [m],"))
-            return QStringLiteral("SAT table without its header");
-        if (bytes.count('\n') < 2)
-            return QStringLiteral("SAT table without an axis");
     } else if (path.endsWith(QStringLiteral(".csv"))) {
-        if (!bytes.startsWith("t [s],"))
-            return QStringLiteral("CSV without its header");
-        if (bytes.count('\n') < 10)
-            return QStringLiteral("CSV with almost no rows");
+        // A Czech handout is in the Czech spreadsheet's form: a BOM, ';' between the cells.
+        QByteArray text = bytes;
+        if (text.startsWith("\xEF\xBB\xBF"))
+            text.remove(0, 3).replace(';', ',');
+        return checkCsv(path, text);
     } else {
         return QStringLiteral("unexpected file");
     }
     return {};
 }
 
-struct CliRun {
-    int exitCode = -1;
-    QByteArray out, err;
-};
-
-CliRun runCli(const QStringList& arguments)
-{
-    QProcess process;
-    process.start(kCli, arguments);
-    CliRun run;
-    if (!process.waitForFinished(120'000)) {
-        process.kill();
-        process.waitForFinished();
-        return run;
-    }
-    run.exitCode = process.exitStatus() == QProcess::NormalExit ? process.exitCode() : -2;
-    run.out = process.readAllStandardOutput();
-    run.err = process.readAllStandardError();
-    return run;
-}
+using rigidlab::test::CliRun;
+using rigidlab::test::runCli;
 
 } // namespace
 
@@ -497,7 +491,8 @@ void TestLessonExport::cliLessonErrors()
 void TestLessonExport::cliExportsInCzech()
 {
     // `--lang cs`: the handouts' captions are the Czech ones the window would write (read back
-    // from the SVG), with the decimal comma; the English run's captions are not.
+    // from the SVG), with the decimal comma, and the tables open in a Czech spreadsheet; the
+    // English run's captions are not.
     const QString path = QDir(kLessonsDir).filePath(QStringLiteral("energy_drift.json"));
     QTemporaryDir dir;
     const CliRun run = runCli({QStringLiteral("lesson"), path, QStringLiteral("--export"),
@@ -524,6 +519,9 @@ void TestLessonExport::cliExportsInCzech()
             const QString svg = folder.filePath(name + QStringLiteral(".svg"));
             const QString problem = checkFile(svg, caption);
             QVERIFY2(problem.isEmpty(), qPrintable(svg + QStringLiteral(": ") + problem));
+            // The table is in the Czech spreadsheet's form: a BOM, ';' and decimal commas.
+            const QByteArray table = readAll(folder.filePath(name + QStringLiteral(".csv")));
+            QVERIFY2(table.startsWith("\xEF\xBB\xBFt [s];"), table.left(40).constData());
             ++checked;
         }
     }
