@@ -1,34 +1,45 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// rigidlab-cli run as a user runs it: a separate process, its exit status and what it printed.
-// Tests that link it define RIGIDLAB_CLI (the program's path, from CMake).
+// rigidlab-cli run as a user runs it: a separate process, its exit status, what it printed and
+// how long it took. Tests that run it define RIGIDLAB_CLI (the program's path, from CMake) and
+// depend on the program.
 
 #include <QByteArray>
+#include <QElapsedTimer>
 #include <QProcess>
 #include <QString>
 #include <QStringList>
 
+#include <functional>
+
 namespace rigidlab::test {
 
 struct CliRun {
-    int exitCode = -1;   ///< -1 when it did not finish in time or crashed
+    int exitCode = -1;   ///< -1 when it crashed or did not finish in time
     bool crashed = true; ///< ended by a signal, or did not finish in time
     QByteArray out;
     QByteArray err;
+    qint64 milliseconds = 0; ///< wall time
 };
 
-/// Runs `program` with `arguments`, waiting at most `timeoutMs` (killed after that).
+/// Runs `program` with `arguments`, killed after 300 s; `inChild` (optional) runs in the child
+/// before the program starts (a resource limit).
 inline CliRun runProgram(const QString& program, const QStringList& arguments,
-                         int timeoutMs = 120'000)
+                         const std::function<void()>& inChild = {})
 {
     QProcess process;
+    if (inChild)
+        process.setChildProcessModifier(inChild);
+    QElapsedTimer clock;
+    clock.start();
     process.start(program, arguments);
     CliRun run;
-    if (!process.waitForFinished(timeoutMs)) {
+    if (!process.waitForFinished(300'000)) {
         process.kill();
         process.waitForFinished();
         return run;
     }
+    run.milliseconds = clock.elapsed();
     run.crashed = process.exitStatus() != QProcess::NormalExit;
     run.exitCode = run.crashed ? -1 : process.exitCode();
     run.out = process.readAllStandardOutput();
@@ -38,9 +49,9 @@ inline CliRun runProgram(const QString& program, const QStringList& arguments,
 
 #ifdef RIGIDLAB_CLI
 /// rigidlab-cli with `arguments`.
-inline CliRun runCli(const QStringList& arguments)
+inline CliRun runCli(const QStringList& arguments, const std::function<void()>& inChild = {})
 {
-    return runProgram(QStringLiteral(RIGIDLAB_CLI), arguments);
+    return runProgram(QStringLiteral(RIGIDLAB_CLI), arguments, inChild);
 }
 #endif
 

@@ -13,7 +13,6 @@
 #include <QElapsedTimer>
 #include <QFile>
 #include <QFileInfo>
-#include <QSaveFile>
 
 #include <algorithm>
 #include <cmath>
@@ -26,17 +25,16 @@ namespace rigidlab::lessons {
 
 namespace {
 
-/// A CSV file written through QSaveFile: it appears, complete, only on commit(); dropped
-/// without commit, it leaves nothing behind.
+/// A CSV output (atomic_file.h): a file appears, complete, only on commit(); dropped without
+/// commit, it leaves nothing behind. A device or FIFO gets the rows as they come.
 class CsvFile {
 public:
     bool open(const QString& path, const CsvConventions& conventions, const QStringList& header,
               QString& error)
     {
-        m_file = std::make_unique<QSaveFile>(path);
-        // Unbuffered (the rows are gathered in the writer): a failing write says why at once.
-        if (!m_file->open(QIODevice::WriteOnly | QIODevice::Unbuffered)) {
-            error = QStringLiteral("cannot write %1: %2").arg(path, m_file->errorString());
+        m_file = std::make_unique<OutputFile>(path);
+        if (!m_file->open(error)) {
+            m_file.reset();
             return false;
         }
         m_csv = CsvWriter(conventions);
@@ -44,6 +42,8 @@ public:
         return true;
     }
     bool isOpen() const { return m_file != nullptr; }
+    /// True when commit() replaces a file whole (not a device): only then may it be undone.
+    bool replacesWhole() const { return isOpen() && m_file->replacesWhole(); }
     CsvWriter& csv() { return m_csv; }
 
     /// Hands the buffer to the file once it is large.
@@ -51,58 +51,20 @@ public:
     {
         return m_csv.size() < (std::size_t{1} << 16) || flush(error);
     }
-    /// Writes the rest into the temporary file and checks that all of it got there (a full
-    /// disk shows here, before anything is put in place); true at once for a file never opened.
-    bool finish(QString& error)
-    {
-        if (!isOpen()) {
-            return true;
-        }
-        if (!flush(error)) {
-            return false;
-        }
-        if (!m_file->flush()) {
-            error = QStringLiteral("cannot write %1: %2")
-                        .arg(m_file->fileName(), m_file->errorString());
-            return false;
-        }
-        return true;
-    }
+    /// Writes the rest and checks that all of it got there (a full disk shows here, before
+    /// anything is put in place); true at once for a file never opened.
+    bool finish(QString& error) { return !isOpen() || (flush(error) && m_file->flush(error)); }
     /// Puts the finished file in place; true at once for a file never opened.
-    bool commit(QString& error)
-    {
-        if (!isOpen()) {
-            return true;
-        }
-        QString why;
-        if (!commitChecked(*m_file, why)) {
-            error = QStringLiteral("cannot write %1: %2").arg(m_file->fileName(), why);
-            return false;
-        }
-        return true;
-    }
+    bool commit(QString& error) { return !isOpen() || m_file->commit(error); }
 
 private:
     bool flush(QString& error)
     {
-        // A write that stops short is tried again: the second attempt is the one that fails
-        // and says why ("File too large").
         const std::string rows = m_csv.take();
-        const auto size = static_cast<qint64>(rows.size());
-        qint64 done = 0;
-        while (done < size) {
-            const qint64 n = m_file->write(rows.data() + done, size - done);
-            if (n <= 0) {
-                error = QStringLiteral("cannot write %1: %2")
-                            .arg(m_file->fileName(), m_file->errorString());
-                return false;
-            }
-            done += n;
-        }
-        return true;
+        return m_file->write(rows.data(), static_cast<qint64>(rows.size()), error);
     }
 
-    std::unique_ptr<QSaveFile> m_file;
+    std::unique_ptr<OutputFile> m_file;
     CsvWriter m_csv;
 };
 
@@ -298,7 +260,8 @@ bool commitOutputs(CsvFile& trace, CsvFile& diagnostics, const RunOptions& optio
         return false;
     }
     const QString previousTrace = options.tracePath + QStringLiteral(".previous");
-    const bool keptTrace = trace.isOpen() && diagnostics.isOpen() &&
+    // A device is neither kept nor taken away: what went into it is gone already.
+    const bool keptTrace = trace.replacesWhole() && diagnostics.isOpen() &&
                            QFileInfo::exists(options.tracePath) &&
                            keepUnderSecondName(options.tracePath, previousTrace);
     if (!trace.commit(error)) {
@@ -309,7 +272,9 @@ bool commitOutputs(CsvFile& trace, CsvFile& diagnostics, const RunOptions& optio
     }
     if (!diagnostics.commit(error)) {
         // Take the new trace away again, so that a failed run changes nothing.
-        QFile::remove(options.tracePath);
+        if (trace.replacesWhole()) {
+            QFile::remove(options.tracePath);
+        }
         if (keptTrace) {
             QFile::rename(previousTrace, options.tracePath);
         }

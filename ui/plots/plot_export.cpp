@@ -7,6 +7,7 @@
 #include "export/csv_columns.h"
 #include "export/csv_writer.h"
 #include "export/noise_floor.h"
+#include "format/atomic_file.h"
 
 #include <qcustomplot.h>
 
@@ -17,7 +18,6 @@
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPdfWriter>
-#include <QSaveFile>
 #include <QSettings>
 #include <QSvgGenerator>
 
@@ -224,28 +224,6 @@ QByteArray plotTable(const PlotWidget& plot, const lessons::CsvConventions& conv
     return QByteArray(data.data(), static_cast<qsizetype>(data.size()));
 }
 
-namespace {
-
-/// Writes all of `bytes`, or says why not. A write that stops short is tried again: the
-/// second attempt is the one that reports the cause ("File too large").
-bool writeAll(QSaveFile& file, const QByteArray& bytes, QString& why)
-{
-    qint64 done = 0;
-    while (done < bytes.size()) {
-        const qint64 n = file.write(bytes.constData() + done, bytes.size() - done);
-        if (n <= 0)
-            break;
-        done += n;
-    }
-    // commit() does not check the flush of what may still be buffered (QTBUG-75077).
-    if (done == bytes.size() && file.flush())
-        return true;
-    why = file.errorString();
-    return false;
-}
-
-} // namespace
-
 std::optional<ExportFormat> formatFromSuffix(const QString& suffix)
 {
     QString s = suffix.trimmed().toLower();
@@ -339,12 +317,6 @@ ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat form
         return {false, cannotWrite(path, QCoreApplication::translate("rigidlab::ui::exportPlot",
                                                                      "empty picture size"))};
 
-    // Written to a temporary file next to `path`, renamed over it only by commit().
-    // Unbuffered, so that a failing write reports its cause at once.
-    QSaveFile file(path);
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Unbuffered))
-        return {false, cannotWrite(path, file.errorString())};
-
     // The whole file is made in memory first, then written in one go: the encoders do not
     // all check their writes (QSvgGenerator and QTextStream take a short write silently),
     // and here every byte is checked.
@@ -373,12 +345,11 @@ ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat form
             break;
         }
     }
-    if (!encoded || !writeAll(file, bytes, why)) {
-        file.cancelWriting(); // the temporary file goes; a file already at `path` stays
+    if (!encoded)
         return {false, cannotWrite(path, why)};
-    }
-    if (!file.commit())
-        return {false, cannotWrite(path, file.errorString())};
+    // Made whole before the file is touched: a failed drawing leaves the previous file.
+    if (const QString error = lessons::writeFileAtomically(path, bytes); !error.isEmpty())
+        return {false, error};
     return {true, {}};
 }
 

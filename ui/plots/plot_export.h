@@ -2,9 +2,10 @@
 #pragma once
 // Saving a plot for handouts: PNG, PDF and SVG pictures, and the numbers as CSV.
 //
-// Every export goes through a QSaveFile: the file appears, complete, only when everything was
-// written, so a failed export never leaves a broken or half-written file and never destroys a
-// file that was already at that path.
+// Every export is made whole in memory, then written through lessons' OutputFile
+// (format/atomic_file.h): a file appears, complete, only when everything was written, so a
+// failed export never leaves a broken or half-written file and never destroys a file that was
+// already at that path; a device (/dev/null) is written into, never replaced.
 
 #include "export/csv_dialect.h"
 
