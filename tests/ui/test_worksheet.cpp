@@ -14,6 +14,7 @@
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 #include "worksheet/worksheet.h"
+#include "worksheet/worksheet_plots.h"
 
 #include "format/answers_file.h"
 #include "format/lesson.h"
@@ -190,6 +191,7 @@ private slots:
     void nameAndHandInAreReachable();
     void prematureCheckIsNoAnswer();
     void solverLineNamesTheSolverThatRan();
+    void stepFigureIsTheAskedRun();
 };
 
 void TestWorksheet::handInAfterAnswering_data()
@@ -478,6 +480,47 @@ void TestWorksheet::solverLineNamesTheSolverThatRan()
         }
     }
     QVERIFY2(standIns > 0, "no step of these lessons has a stand-in solver: the check is empty");
+}
+
+void TestWorksheet::stepFigureIsTheAskedRun()
+{
+    // Step 3 of the restitution lesson asks "set e = 0 and run again": once the student has
+    // answered it, the sheet's figure and settings line are of that run, not the step's e = 0.5.
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(kLessonPath);
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    const lessons::Lesson& lesson = loaded.lesson;
+    QVERIFY(lesson.steps.size() >= 3);
+    const lessons::LessonStep& step = lesson.steps[2];
+    const auto asking = std::find_if(step.questions.begin(), step.questions.end(),
+                                     [](const lessons::Question& q) { return q.set.restitution; });
+    QVERIFY(asking != step.questions.end());
+    QCOMPARE(*asking->set.restitution, 0.0);
+    QCOMPARE(step.settings.restitution.value_or(-1), 0.5);
+
+    lessons::Answers answers;
+    answers.student = QStringLiteral("Jana Nováková");
+    answers.steps.resize(lesson.steps.size());
+    lessons::StepAnswers& third = answers.steps[2];
+    third.questions.resize(step.questions.size());
+    const auto q = static_cast<std::size_t>(asking - step.questions.begin());
+    const std::optional<double> value = expectedValue(step, *asking);
+    QVERIFY(value.has_value());
+    third.questions[q].push_back(lessons::AnswerTry{*value, value, false, std::nullopt, {}, false});
+    QCOMPARE(ui::stepAsRun(step, third).settings.restitution.value_or(-1), 0.0);
+    QCOMPARE(ui::stepAsRun(step, lessons::StepAnswers{}).settings.restitution.value_or(-1), 0.5);
+
+    QTemporaryDir dir;
+    const QString pdf = dir.filePath(QStringLiteral("sheet.pdf"));
+    const ui::WorksheetResult r =
+        ui::writeWorksheet(lesson, answers, ui::WorksheetKind::Answers, pdf);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    const QString text = pdfText(pdf);
+    const qsizetype at = text.indexOf(QStringLiteral("Step 3:"));
+    QVERIFY2(at >= 0, qPrintable(text));
+    const QString settings = text.mid(at, text.indexOf(QStringLiteral("Step 4:"), at) - at);
+    QVERIFY2(settings.contains(QStringLiteral("Restitution e = 0 ")) ||
+                 settings.contains(QStringLiteral("Restitution e = 0\n")),
+             qPrintable(settings));
 }
 
 RIGIDLAB_TEST_MAIN(TestWorksheet)

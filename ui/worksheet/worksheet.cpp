@@ -80,9 +80,22 @@ QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& r
                                                    : Worksheet::tr("%1 (instead of %2)")
                                                          .arg(solverDisplayName(running),
                                                               solverDisplayName(ran.solver));
-    return Worksheet::tr("Settings: integrator %1 · dt = %2 s · solver %3")
-        .arg(byIntegrator ? names() : integratorDisplayName(ran.integrator),
-             formatReadable(ran.dt, 6), solver);
+    QString line = Worksheet::tr("Settings: integrator %1 · dt = %2 s · solver %3")
+                       .arg(byIntegrator ? names() : integratorDisplayName(ran.integrator),
+                            formatReadable(ran.dt, 6), solver);
+    // Every other setting the step (or a question the student answered) set: e = 0 is what
+    // "set e = 0 and run again" ran with.
+    for (const lessons::schema::SettingsField& f : lessons::schema::settingsFields()) {
+        const lessons::schema::Value v = f.get(step.settings, 0);
+        if (f.key == "integrator" || f.key == "dt" || f.key == "solver" || f.key == "timeScale" ||
+            std::holds_alternative<std::monostate>(v))
+            continue;
+        line += QStringLiteral(" · %1 = %2")
+                    .arg(QCoreApplication::translate(lessons::schema::kContext, f.label),
+                         std::holds_alternative<double>(v) ? formatReadable(std::get<double>(v), 6)
+                                                           : lessons::schema::text(v));
+    }
+    return line;
 }
 
 /// The measured value of question q of a step for the key: the one the student's tries were
