@@ -90,10 +90,13 @@ QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& r
         if (f.key == "integrator" || f.key == "dt" || f.key == "solver" || f.key == "timeScale" ||
             std::holds_alternative<std::monostate>(v))
             continue;
+        const QString shown = std::holds_alternative<double>(v)
+                                  ? formatReadable(std::get<double>(v), 6)
+                              : std::holds_alternative<bool>(v)
+                                  ? (std::get<bool>(v) ? Worksheet::tr("on") : Worksheet::tr("off"))
+                                  : lessons::schema::text(v);
         line += QStringLiteral(" · %1 = %2")
-                    .arg(QCoreApplication::translate(lessons::schema::kContext, f.label),
-                         std::holds_alternative<double>(v) ? formatReadable(std::get<double>(v), 6)
-                                                           : lessons::schema::text(v));
+                    .arg(QCoreApplication::translate(lessons::schema::kContext, f.label), shown);
     }
     return line;
 }
