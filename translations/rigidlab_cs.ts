@@ -2002,6 +2002,14 @@ n = (%4; %5)</translation>
         <source>%1 (instead of %2)</source>
         <translation>%1 (místo: %2)</translation>
     </message>
+    <message>
+        <source>on</source>
+        <translation>zapnuto</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vypnuto</translation>
+    </message>
 </context>
 <context>
     <name>WorksheetText</name>
