@@ -2,15 +2,16 @@
 // A lesson written in one language only, Czech or English, each with a measured question and a
 // choice question (hand-made .rlesson files in tests/lessons/data/one_language): played in both
 // window languages, its texts shown in the language it has, a Check before the run gets there
-// kept as no answer, its hint after a wrong one, handed in; in the lesson editor it opens with
-// no error, the lab's measured answer shown, its step's scene sent to the window and tried as a
-// student without a dialog, saved and reopened unchanged.
+// kept as no answer, its hint after a wrong one, handed in, its run stopping at its end time; in
+// the lesson editor it opens with no error, the lab's measured answer shown, its step's scene
+// sent to the window and tried as a student without a dialog, saved and reopened unchanged.
 
 #include "common/language.h"
 #include "first_question.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
 #include "lesson_player/lesson_player.h"
+#include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 
 #include "format/lesson.h"
@@ -109,6 +110,23 @@ void TestOneLanguage::playedInBothLanguages()
     QTemporaryDir dir;
     QCOMPARE(player.handIn(dir.filePath(QStringLiteral("sheet.pdf"))), QString());
     QVERIFY(QFileInfo(dir.filePath(QStringLiteral("sheet.pdf"))).size() > 0);
+
+    // Played on, the run stops at the step's end time (3 s), within one step of it; Play
+    // there runs on.
+    ui::SimulationController& c = w.controller();
+    c.setRunning(true);
+    for (int frame = 0; frame < 2000 && c.isRunning(); ++frame)
+        c.advanceClock(1.0 / 60);
+    QVERIFY(!c.isRunning());
+    const double dt = c.world().def().dt;
+    QVERIFY2(std::abs(c.world().time() - 3.0) <= dt,
+             qPrintable(QStringLiteral("stopped at %1 s, end time 3 s, dt %2 s")
+                            .arg(c.world().time())
+                            .arg(dt)));
+    c.setRunning(true);
+    c.advanceClock(1.0 / 60);
+    QVERIFY(c.isRunning());
+    QVERIFY(c.world().time() > 3.0 + dt / 2);
 }
 
 void TestOneLanguage::editedWithoutADialog()
