@@ -195,7 +195,7 @@ std::optional<lessons::CsvConventions> csvOption(const CommandLine& args, QStrin
                     .arg(*lang, lessons::shippedLanguageCodes());
         return std::nullopt;
     }
-    const QString language = lang.value_or(QStringLiteral("en"));
+    const QString language = lang.value_or(lessons::kFallbackLanguage.toString());
     const auto name = args.value(QStringLiteral("csv-dialect"));
     if (!name) {
         // A language with a decimal comma (Czech) asks for its spreadsheet's file: plain CSV

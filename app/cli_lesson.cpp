@@ -61,7 +61,7 @@ int writeWorksheetCommand(const CommandLine& args, const QString& lessonPath, co
     // --lang was checked; the answers' language by their reader. English without either.
     QString language = args.value(QStringLiteral("lang")).value_or(answers.language);
     if (language.isEmpty())
-        language = QStringLiteral("en");
+        language = lessons::kFallbackLanguage.toString();
     lessons::setLessonLanguage(language);
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(lessonPath);
     printWarnings(loaded.warnings);

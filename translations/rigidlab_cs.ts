@@ -876,10 +876,6 @@
         <translation>0, stejně jako absoluteTolerance: žádná zadaná odpověď by nikdy nebyla správná</translation>
     </message>
     <message>
-        <source>must not be empty (leave the key out for no hint)</source>
-        <translation>nesmí být prázdné (bez nápovědy klíč vynechte)</translation>
-    </message>
-    <message>
         <source>the same body as &quot;a&quot;: the test needs two bodies</source>
         <translation>totéž těleso jako &quot;a&quot;: test potřebuje dvě tělesa</translation>
     </message>
@@ -996,10 +992,6 @@
         <translation>neznámý jazyk &quot;%1&quot; (očekáváno: %2)</translation>
     </message>
     <message>
-        <source>needs the English text &quot;%1&quot;, shown when a language is missing</source>
-        <translation>potřebuje anglický text &quot;%1&quot;, který se zobrazí, když jazyk chybí</translation>
-    </message>
-    <message>
         <source>must be %1, or an object of languages {&quot;en&quot;: ..., &quot;cs&quot;: ...}, got </source>
         <translation>musí být %1 nebo objekt jazyků {&quot;en&quot;: ..., &quot;cs&quot;: ...}, je </translation>
     </message>
@@ -1014,10 +1006,6 @@
     <message>
         <source>must be an array [...], or an object of languages {&quot;en&quot;: [...], &quot;cs&quot;: [...]}, got </source>
         <translation>musí být pole [...] nebo objekt jazyků {&quot;en&quot;: [...], &quot;cs&quot;: [...]}, je </translation>
-    </message>
-    <message>
-        <source>no %1 text (&quot;%2&quot;); English is shown instead</source>
-        <translation>chybí text pro jazyk %1 (&quot;%2&quot;); místo něj se zobrazí anglický</translation>
     </message>
     <message>
         <source>the lesson&apos;s folder</source>
@@ -1162,6 +1150,30 @@
     <message>
         <source>required, but missing (the index of the right option, 0 for the first)</source>
         <translation>povinné, ale chybí (pořadí správné možnosti, 0 pro první)</translation>
+    </message>
+    <message>
+        <source>no %1 text (&quot;%2&quot;) in the whole lesson: it will show in %3</source>
+        <translation>v celé lekci chybí text v jazyce %1 (&quot;%2&quot;): zobrazí se v jazyce %3</translation>
+    </message>
+    <message>
+        <source>unknown key</source>
+        <translation>neznámý klíč</translation>
+    </message>
+    <message>
+        <source>the run stops at %1 s, before questions[%2] measures at %3 s</source>
+        <translation>běh se zastaví v čase %1&#xa0;s, dřív než questions[%2] měří v čase %3&#xa0;s</translation>
+    </message>
+    <message>
+        <source>needs a text in at least one language (%1)</source>
+        <translation>potřebuje text aspoň v jednom jazyce (%1)</translation>
+    </message>
+    <message>
+        <source>no %1 text (&quot;%2&quot;): it will show in %3</source>
+        <translation>chybí text v jazyce %1 (&quot;%2&quot;): zobrazí se v jazyce %3</translation>
+    </message>
+    <message>
+        <source>no %1 text (&quot;%2&quot;) in the whole scene: it will show in %3</source>
+        <translation>v celé scéně chybí text v jazyce %1 (&quot;%2&quot;): zobrazí se v jazyce %3</translation>
     </message>
 </context>
 <context>
@@ -1673,6 +1685,22 @@ n = (%4; %5)</translation>
         <source>kinematic</source>
         <translation>kinematické</translation>
     </message>
+    <message>
+        <source>Plots exported at</source>
+        <translation>Grafy se exportují v čase</translation>
+    </message>
+    <message>
+        <source>The run stops at</source>
+        <translation>Běh se zastaví v čase</translation>
+    </message>
+    <message>
+        <source>Starts at once</source>
+        <translation>Spustí se hned</translation>
+    </message>
+    <message>
+        <source>Absolute tolerance</source>
+        <translation>Absolutní tolerance</translation>
+    </message>
 </context>
 <context>
     <name>SceneWords</name>
@@ -1970,6 +1998,18 @@ n = (%4; %5)</translation>
         <source>Right answer: “%1”</source>
         <translation>Správná odpověď: „%1“</translation>
     </message>
+    <message>
+        <source>%1 (instead of %2)</source>
+        <translation>%1 (místo: %2)</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>zapnuto</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>vypnuto</translation>
+    </message>
 </context>
 <context>
     <name>WorksheetText</name>
@@ -1999,6 +2039,17 @@ n = (%4; %5)</translation>
     <message>
         <source> (your own: %1)</source>
         <translation> (vlastní: %1)</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::lessons::Language</name>
+    <message>
+        <source>English</source>
+        <translation>angličtina</translation>
+    </message>
+    <message>
+        <source>Czech</source>
+        <translation>čeština</translation>
     </message>
 </context>
 <context>
@@ -2311,20 +2362,8 @@ n = (%4; %5)</translation>
 <context>
     <name>rigidlab::ui::ChoiceEditor</name>
     <message>
-        <source>&amp;Options (Czech and English)</source>
-        <translation>&amp;Možnosti (česky a anglicky)</translation>
-    </message>
-    <message>
         <source>Options of the choice</source>
         <translation>Možnosti výběru</translation>
-    </message>
-    <message>
-        <source>Czech</source>
-        <translation>Česky</translation>
-    </message>
-    <message>
-        <source>English</source>
-        <translation>Anglicky</translation>
     </message>
     <message>
         <source>Add optio&amp;n</source>
@@ -2353,6 +2392,10 @@ n = (%4; %5)</translation>
     <message>
         <source>Option %1</source>
         <translation>Možnost %1</translation>
+    </message>
+    <message>
+        <source>&amp;Options (one language is enough)</source>
+        <translation>&amp;Možnosti (stačí jeden jazyk)</translation>
     </message>
 </context>
 <context>
@@ -3547,17 +3590,17 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>%1 comes with RigidLab and is not overwritten.</source>
         <translation>%1 je součástí RigidLabu a nepřepíše se.</translation>
     </message>
+    <message>
+        <source>Step %1 has no scene yet.</source>
+        <translation>Krok %1 zatím nemá scénu.</translation>
+    </message>
+    <message>
+        <source>step %1&apos;s scene</source>
+        <translation>scéna kroku %1</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonEditor</name>
-    <message>
-        <source>Czech</source>
-        <translation>čeština</translation>
-    </message>
-    <message>
-        <source>English</source>
-        <translation>angličtina</translation>
-    </message>
     <message>
         <source>Lesson editor</source>
         <translation>Editor lekcí</translation>
@@ -3637,14 +3680,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Step text (%1)</source>
         <translation>Text kroku (%1)</translation>
-    </message>
-    <message>
-        <source>⚠ %1: not written yet</source>
-        <translation>⚠ %1: zatím nenapsáno</translation>
-    </message>
-    <message>
-        <source>%1: not written yet</source>
-        <translation>%1: zatím nenapsáno</translation>
     </message>
     <message>
         <source>Preview (%1)</source>
@@ -3751,10 +3786,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Scéna otevřená v hlavním okně, tak jak je tam upravená, se stane scénou tohoto kroku</translation>
     </message>
     <message>
-        <source>Edit the step&apos;s scene</source>
-        <translation>Upravit scénu kroku</translation>
-    </message>
-    <message>
         <source>Step %1: %2</source>
         <translation>Krok %1: %2</translation>
     </message>
@@ -3765,6 +3796,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>What the student reads in this step: **bold**, *italic*, a line that starts with “- ” is a list item</source>
         <translation>Co student v tomto kroku čte: **tučně**, *kurzívou*, řádek začínající „- “ je položka seznamu</translation>
+    </message>
+    <message>
+        <source>The step&apos;s scene does not open: %1</source>
+        <translation>Scénu kroku nelze otevřít: %1</translation>
+    </message>
+    <message>
+        <source>⚠ %1: not written yet; the student reads the %2 text</source>
+        <translation>⚠ %1: zatím nenapsáno; student čte text v jazyce %2</translation>
     </message>
 </context>
 <context>
@@ -4898,14 +4937,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Ode&amp;brat otázku</translation>
     </message>
     <message>
-        <source>Question (Czech)</source>
-        <translation>Otázka (česky)</translation>
-    </message>
-    <message>
-        <source>Question (English)</source>
-        <translation>Otázka (anglicky)</translation>
-    </message>
-    <message>
         <source>What is measured</source>
         <translation>Co se měří</translation>
     </message>
@@ -4958,10 +4989,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>otázka</translation>
     </message>
     <message>
-        <source>How fast is it at 1 s?</source>
-        <translation>Jak rychle se pohybuje v&#xa0;čase 1&#xa0;s?</translation>
-    </message>
-    <message>
         <source>%1. Predict first: %2</source>
         <translation>%1. Nejdřív předpověď: %2</translation>
     </message>
@@ -4972,10 +4999,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>This step asks no question.</source>
         <translation>Tento krok se na nic neptá.</translation>
-    </message>
-    <message>
-        <source>⚠ The lab cannot measure it: %1</source>
-        <translation>⚠ Laboratoř to nemůže změřit: %1</translation>
     </message>
     <message>
         <source>⚠ The run does not get there (or diverges first): raise the step&apos;s export time or choose an earlier time.</source>
@@ -5016,6 +5039,38 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>The student chooses one of %1 options; the right one is “%2”.</source>
         <translation>Žák volí jednu z %1 možností; správná je „%2“.</translation>
+    </message>
+    <message>
+        <source>How high does %1 rise after its bounce %2?</source>
+        <translation>Jak vysoko vystoupí %1 po %2. odrazu?</translation>
+    </message>
+    <message>
+        <source>What is the %1 at t = %2&#xa0;s?</source>
+        <translation>Jaká je veličina „%1“ v&#xa0;čase t = %2&#xa0;s?</translation>
+    </message>
+    <message>
+        <source>What is the %1 of %2 at t = %3&#xa0;s?</source>
+        <translation>Jaká je veličina „%1“ tělesa %2 v&#xa0;čase t = %3&#xa0;s?</translation>
+    </message>
+    <message>
+        <source>Question (%1)</source>
+        <translation>Otázka (%1)</translation>
+    </message>
+    <message>
+        <source>Hint (%1)</source>
+        <translation>Nápověda (%1)</translation>
+    </message>
+    <message>
+        <source>What the student reads after a wrong first answer; empty: &quot;Try once more.&quot;</source>
+        <translation>Co student uvidí po první špatné odpovědi; prázdné: „Zkuste to ještě jednou.“</translation>
+    </message>
+    <message>
+        <source>⚠ The lesson has a problem to fix first (see below): %1</source>
+        <translation>⚠ V lekci je nejdřív třeba opravit problém (viz níže): %1</translation>
+    </message>
+    <message>
+        <source>The right option</source>
+        <translation>Správná možnost</translation>
     </message>
 </context>
 <context>
@@ -5443,6 +5498,34 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>panels shown</source>
         <translation>zobrazené panely</translation>
+    </message>
+    <message>
+        <source>runs on</source>
+        <translation>běží dál</translation>
+    </message>
+    <message>
+        <source>The run stops at</source>
+        <translation>Běh se zastaví v čase</translation>
+    </message>
+    <message>
+        <source>The simulated time at which the step&apos;s run stops, so that nothing runs off the stage; 0: it runs on</source>
+        <translation>Simulovaný čas, v němž se běh kroku zastaví, aby nic neodjelo ze scény; 0: běží dál</translation>
+    </message>
+    <message>
+        <source>The run st&amp;ops at</source>
+        <translation>Běh se zas&amp;taví v čase</translation>
+    </message>
+    <message>
+        <source>end of the run</source>
+        <translation>konec běhu</translation>
+    </message>
+    <message>
+        <source>Wait for &amp;Play: the step opens paused, so that the class reads and predicts first</source>
+        <translation>Čekat na &amp;spuštění: krok se otevře zastavený, aby třída nejdřív četla a předpovídala</translation>
+    </message>
+    <message>
+        <source>wait for Play</source>
+        <translation>čekat na spuštění</translation>
     </message>
 </context>
 <context>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "format/languages.h"
 
+#include <QCoreApplication>
 #include <QStringList>
 
 namespace rigidlab::lessons {
@@ -39,6 +40,28 @@ QString languageName(QStringView code)
     for (const Language& l : kLanguages) {
         if (l.code == code)
             return l.name.toString();
+    }
+    return {};
+}
+
+QString languageTitle(QStringView code)
+{
+    for (const Language& l : kLanguages) {
+        if (l.code == code)
+            return QCoreApplication::translate("rigidlab::lessons::Language", l.title);
+    }
+    return code.toString();
+}
+
+QString textLanguage(QStringView wanted, const QStringList& present)
+{
+    if (present.contains(wanted))
+        return wanted.toString();
+    if (present.contains(kFallbackLanguage))
+        return kFallbackLanguage.toString();
+    for (const Language& l : kLanguages) {
+        if (present.contains(l.code))
+            return l.code.toString();
     }
     return {};
 }

@@ -128,6 +128,8 @@ struct EditorLock {
 
 /// The longest time a step's plots may be exported at [s].
 inline constexpr double kMaxExportTime = 600.0;
+/// The latest time a step's run may be told to stop at [s] (as late as a question may measure).
+inline constexpr double kMaxEndTime = 3600.0;
 
 struct LessonStep {
     QString title;
@@ -147,7 +149,9 @@ struct LessonStep {
     std::optional<EditorLock> editor;
     std::vector<Question> questions;
     double exportTime = 10.0; ///< simulated seconds run for a headless plot export [s]
-    bool autoplay = true;     ///< start running when the step opens
+    /// The run stops (pauses) when the simulated time reaches it [s]; nullopt: it runs on.
+    std::optional<double> endTime;
+    bool autoplay = true; ///< start running when the step opens
 
     /// What the questions not yet answered (answered[i] false) hold back, in order, each once.
     QStringList heldBack(const std::vector<bool>& answered) const;

@@ -34,7 +34,9 @@ class LessonReader {
 public:
     LessonReader(const QString& sourceName, const QString& absolutePath,
                  const LessonLoadOptions& options)
-        : m_in(sourceName), m_texts(m_in, options.language)
+        : m_in(sourceName),
+          m_texts(m_in, options.language,
+                  FileMessages::tr("no %1 text (\"%2\") in the whole lesson: it will show in %3"))
     {
         m_lesson.path = absolutePath;
         m_step.folder = QFileInfo(absolutePath).absolutePath();

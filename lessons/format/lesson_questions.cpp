@@ -177,43 +177,16 @@ bool readHoldBack(JsonReader& in, const QJsonObject& object, const QString& plac
         out);
 }
 
-/// A text of a question that must not be empty in any of its languages.
-bool readNonEmptyText(JsonReader& in, LocalTexts& texts, const QJsonObject& object, QStringView key,
-                      const QString& place, QString& out, bool required, const QString& whenEmpty)
-{
-    if (!texts.line(object, key, place, out, required)) {
-        return false;
-    }
-    for (const LocalTexts::Variant& v : texts.variants()) {
-        if (v.text.trimmed().isEmpty()) {
-            return in.fail(v.place, whenEmpty);
-        }
-    }
-    return true;
-}
-
-/// The rest of a choice question, once its prompt is read: its options, the right one, and
-/// the hint and holdBack it shares with a measured question. A choice question has nothing
-/// measured, so the keys of a measured answer are refused rather than ignored.
-bool readChoiceQuestion(JsonReader& in, LocalTexts& texts, const QJsonObject& object,
-                        const QString& place, const LessonStep& step, Question& question)
+/// A choice question's options: only the list form, each option a text of its own (an object of
+/// languages holding lists could give the languages different numbers of options).
+bool readChoices(JsonReader& in, LocalTexts& texts, const QJsonObject& object, const QString& place,
+                 Question& question)
 {
     const QString at = joinPlace(place, u"choices");
     if (!object.contains(u"choices")) {
         return in.fail(at, FileMessages::tr("required with \"answer\", but missing (the options "
                                             "to choose from)"));
     }
-    for (const QStringView key :
-         {QStringView(u"measure"), QStringView(u"unit"), QStringView(u"tolerance"),
-          QStringView(u"absoluteTolerance"), QStringView(u"set")}) {
-        if (object.contains(key)) {
-            return in.fail(joinPlace(place, key),
-                           FileMessages::tr("not for a question with \"choices\": it is "
-                                            "answered by choosing, nothing is measured"));
-        }
-    }
-    // Only the list form, each option a text of its own: an object of languages holding
-    // lists could give the languages different numbers of options.
     if (!object.value(u"choices").isArray()) {
         return in.fail(at, FileMessages::tr("must be an array of %1 to %2 options, each a text "
                                             "\"...\" or {\"en\": \"...\", \"cs\": \"...\"}, got ")
@@ -230,60 +203,91 @@ bool readChoiceQuestion(JsonReader& in, LocalTexts& texts, const QJsonObject& ob
                                .arg(question.choices.size())
                                .arg(kMinChoices));
     }
+    return true;
+}
+
+/// The right option of a choice question, after its options.
+bool readAnswer(JsonReader& in, const QJsonObject& object, const QString& place, Question& question)
+{
     if (!object.contains(u"answer")) {
         return in.fail(joinPlace(place, u"answer"),
                        FileMessages::tr("required, but missing (the index of the right option, "
                                         "0 for the first)"));
     }
-    if (!in.integer(object, u"answer", place, question.answer, 0,
-                    static_cast<int>(question.choices.size()) - 1, true) ||
-        !readNonEmptyText(in, texts, object, u"hint", place, question.hint, false,
-                          FileMessages::tr("must not be empty (leave the key out for no hint)"))) {
-        return false;
-    }
-    return readHoldBack(in, object, place, step, question.holdBack);
+    return in.integer(object, u"answer", place, question.answer, 0,
+                      static_cast<int>(question.choices.size()) - 1, true);
 }
 
-bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, const QString& place,
-                  const LessonStep& step, Question& question)
+/// A question's "measure": what its answer is checked against.
+bool readMeasureKey(JsonReader& in, const QJsonObject& object, const QString& place,
+                    const Scene& scene, Question& question)
 {
-    const Scene& scene = step.scene;
-    QJsonObject object;
-    if (!in.asObject(value, place, object) ||
-        !in.checkKeys(object, place,
-                      {u"prompt", u"measure", u"unit", u"tolerance", u"absoluteTolerance", u"hint",
-                       u"holdBack", u"set", u"choices", u"answer"}) ||
-        !readNonEmptyText(in, texts, object, u"prompt", place, question.prompt, true,
-                          FileMessages::tr("must not be empty"))) {
-        return false;
-    }
-    if (object.contains(u"choices") || object.contains(u"answer")) {
-        return readChoiceQuestion(in, texts, object, place, step, question);
-    }
     if (!object.contains(u"measure")) {
         return in.fail(joinPlace(place, u"measure"),
                        FileMessages::tr("required, but missing (what the answer is checked "
                                         "against)"));
     }
-    if (!readMeasure(in, object.value(u"measure"), joinPlace(place, u"measure"), scene,
-                     question.measure) ||
-        !texts.unit(object, u"unit", place, question.unit) ||
-        !in.number(object, u"tolerance", place, question.tolerance, NumberRule::UnitInterval) ||
-        !in.number(object, u"absoluteTolerance", place, question.absoluteTolerance,
-                   NumberRule::NonNegative, limits::kAbsoluteTolerance)) {
+    return readMeasure(in, object.value(u"measure"), joinPlace(place, u"measure"), scene,
+                       question.measure);
+}
+
+/// A part of a question (a row of kind Part), by its key, read by its own function.
+bool readQuestionPart(JsonReader& in, LocalTexts& texts, std::string_view key,
+                      const QJsonObject& object, const QString& place, const LessonStep& step,
+                      Question& question)
+{
+    if (key == "measure")
+        return readMeasureKey(in, object, place, step.scene, question);
+    if (key == "holdBack")
+        return readHoldBack(in, object, place, step, question.holdBack);
+    if (key == "set")
+        return readQuestionSet(in, object, place, step, question.holdBack, question.set);
+    if (key == "choices")
+        return readChoices(in, texts, object, place, question);
+    if (key == "answer")
+        return readAnswer(in, object, place, question);
+    return true;
+}
+
+bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, const QString& place,
+                  const LessonStep& step, Question& question)
+{
+    QJsonObject object;
+    if (!in.asObject(value, place, object) ||
+        !in.checkKeys(object, place, schema::questionKeys())) {
         return false;
     }
-    if (question.tolerance == 0 && question.absoluteTolerance == 0) {
-        return in.fail(joinPlace(place, u"tolerance"),
-                       FileMessages::tr("0, and so is absoluteTolerance: no typed answer would "
-                                        "ever be right"));
+    // A question with "choices" or "answer" is answered by choosing: the keys of a measured
+    // answer are refused rather than ignored.
+    const bool choice = object.contains(u"choices") || object.contains(u"answer");
+    const schema::QuestionKinds kind =
+        choice ? schema::QuestionKinds::Choice : schema::QuestionKinds::Measured;
+    for (const schema::QuestionField& row : schema::questionFields()) {
+        const QString key = QString::fromUtf8(row.key.data(), qsizetype(row.key.size()));
+        if (choice && row.kinds == schema::QuestionKinds::Measured && object.contains(key)) {
+            return in.fail(joinPlace(place, key),
+                           FileMessages::tr("not for a question with \"choices\": it is "
+                                            "answered by choosing, nothing is measured"));
+        }
     }
-    if (!readNonEmptyText(in, texts, object, u"hint", place, question.hint, false,
-                          FileMessages::tr("must not be empty (leave the key out for no hint)"))) {
-        return false;
+    // The rows in the file's order: the texts and plain values as their rows say, each part
+    // by its own function.
+    for (const schema::QuestionField& row : schema::questionFields()) {
+        if (row.kinds != schema::QuestionKinds::All && row.kinds != kind)
+            continue;
+        const bool ok = row.kind == schema::LessonKind::Part
+                            ? readQuestionPart(in, texts, row.key, object, place, step, question)
+                            : readLessonRow(in, texts, row, object, place, question);
+        if (!ok)
+            return false;
+        if (row.key == "absoluteTolerance" && question.tolerance == 0 &&
+            question.absoluteTolerance == 0) {
+            return in.fail(joinPlace(place, u"tolerance"),
+                           FileMessages::tr("0, and so is absoluteTolerance: no typed answer "
+                                            "would ever be right"));
+        }
     }
-    return readHoldBack(in, object, place, step, question.holdBack) &&
-           readQuestionSet(in, object, place, step, question.holdBack, question.set);
+    return true;
 }
 
 } // namespace

@@ -6,7 +6,9 @@
 
 #include "format/json_reader.h"
 
+#include "format/field_reading.h"
 #include "format/lesson.h"
+#include "format/lesson_schema.h"
 #include "format/local_text.h"
 
 #include <optional>
@@ -54,6 +56,39 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
 /// empty when the step has none.
 bool readSat(JsonReader& in, const QJsonObject& step, const QString& place, const Scene& scene,
              std::optional<std::pair<QString, QString>>& out);
+
+/// A lesson row of kind Line, Paragraphs, Unit or Plain (lesson_schema.h) from `object` at
+/// `place` into `target`: a text in the lesson's languages (a line not empty in any of them),
+/// or a number or flag as its value row says. A Part row is its caller's (true).
+template <class Target>
+bool readLessonRow(JsonReader& in, LocalTexts& texts, const schema::LessonFieldOf<Target>& row,
+                   const QJsonObject& object, const QString& place, Target& target)
+{
+    using schema::LessonKind;
+    const QString key = QString::fromUtf8(row.key.data(), qsizetype(row.key.size()));
+    switch (row.kind) {
+    case LessonKind::Line:
+        if (!texts.line(object, key, place, target.*row.text, row.required))
+            return false;
+        for (const LocalTexts::Variant& v : texts.variants()) {
+            if (v.text.trimmed().isEmpty())
+                return in.fail(v.place, row.required
+                                            ? FileMessages::tr("must not be empty")
+                                            : FileMessages::tr("must not be empty (leave the key "
+                                                               "out instead)"));
+        }
+        return true;
+    case LessonKind::Paragraphs:
+        return texts.paragraphs(object, key, place, target.*row.text);
+    case LessonKind::Unit:
+        return texts.unit(object, key, place, target.*row.text);
+    case LessonKind::Plain:
+        return readPlainField(in, row.value, object, place, target, 0);
+    case LessonKind::Part:
+        return true;
+    }
+    return true;
+}
 
 /// The step's "questions", their measures naming bodies of its scene and what they hold
 /// back naming panels and plots it shows.

@@ -15,6 +15,7 @@
 #include <QFileInfo>
 
 #include <array>
+#include <cassert>
 
 namespace rigidlab::lessons::detail {
 
@@ -179,6 +180,97 @@ bool readEditorLock(JsonReader& in, const QJsonObject& object, const QString& pl
     return true;
 }
 
+/// The step's "allow", when it has one: the controls the student may change.
+bool readAllow(JsonReader& in, const QJsonObject& object, const QString& place, LessonStep& step)
+{
+    if (!object.contains(u"allow"))
+        return true;
+    QStringList allow;
+    if (!readNames(in, object, u"allow", place, schema::stepControlNames(), u"control", allow))
+        return false;
+    step.allow = allow;
+    return true;
+}
+
+/// A part of a step (a row of kind Part), by its key, read by its own function.
+bool readStepPart(JsonReader& in, std::string_view key, const QJsonObject& object,
+                  const QString& place, StepContext& context, LessonStep& step)
+{
+    if (key == "scene")
+        return readScene(in, object, place, context, step);
+    if (key == "settings")
+        return readSettings(in, object, place, step.settings);
+    if (key == "compare")
+        return readCompare(in, object, place, step);
+    if (key == "plots")
+        return readNames(in, object, u"plots", place, kStepPlotNames, u"plot", step.plots);
+    if (key == "overlays")
+        return readNames(in, object, u"overlays", place, kStepOverlayNames, u"overlay",
+                         step.overlays);
+    if (key == "panels")
+        return readNames(in, object, u"panels", place, kStepPanelNames, u"panel", step.panels);
+    if (key == "allow")
+        return readAllow(in, object, place, step);
+    if (key == "sat")
+        return readSat(in, object, place, step.scene, step.sat);
+    if (key == "editor")
+        return readEditorLock(in, object, place, step);
+    if (key == "questions")
+        return readQuestions(in, *context.texts, object, place, step, step.questions);
+    assert(false && "a step part without a reader");
+    return in.fail(joinPlace(place, QString::fromUtf8(key.data(), qsizetype(key.size()))),
+                   FileMessages::tr("unknown key"));
+}
+
+/// What a step's parts must agree on, once all are read; adds its bodies to `context.bodies`.
+bool checkStep(JsonReader& in, const QString& place, StepContext& context, const LessonStep& step)
+{
+    // Every step keeps its scene: many steps reading one large scene file add up.
+    context.bodies += static_cast<qint64>(step.scene.bodies.size());
+    if (context.bodies > limits::kMaxLessonBodies) {
+        return in.fail(joinPlace(place, u"scene"),
+                       FileMessages::tr("the steps up to this one hold %1 bodies in all, more "
+                                        "than the limit of %2 for a lesson")
+                           .arg(context.bodies)
+                           .arg(limits::kMaxLessonBodies));
+    }
+    for (qsizetype i = 0; i < step.plots.size(); ++i) {
+        if (step.plots[i].startsWith(u"compare-") && !step.compare) {
+            return in.fail(indexPlace(joinPlace(place, u"plots"), i),
+                           FileMessages::tr("\"%1\" plots the worlds of \"compare\", and this "
+                                            "step has none")
+                               .arg(step.plots[i]));
+        }
+    }
+    const QString exportPlace = joinPlace(place, u"exportTime");
+    const double dt = step.settings.dt.value_or(step.scene.world.dt);
+    if (step.exportTime / dt > kMaxExportSteps) {
+        return in.fail(exportPlace,
+                       FileMessages::tr("%1 s at a step of %2 s is more than %3 steps")
+                           .arg(formatNumber(step.exportTime), formatNumber(dt),
+                                QString::number(static_cast<qint64>(kMaxExportSteps))));
+    }
+    const int panelSat = static_cast<int>(step.panels.indexOf(u"sat"));
+    if (panelSat >= 0 && !step.sat) {
+        return in.fail(indexPlace(joinPlace(place, u"panels"), panelSat),
+                       FileMessages::tr("the \"sat\" panel needs the pair it looks at: add "
+                                        "\"sat\": {\"a\": ID, \"b\": ID} to the step"));
+    }
+    // A question measured after the run stops would need Play again: said, not refused.
+    for (std::size_t i = 0; step.endTime && i < step.questions.size(); ++i) {
+        const Question& q = step.questions[i];
+        if (!q.isChoice() && q.measure.kind != Measure::Kind::Apex &&
+            q.measure.time > *step.endTime)
+            in.warn(joinPlace(place, u"endTime"),
+                    FileMessages::tr("the run stops at %1 s, before questions[%2] measures at "
+                                     "%3 s")
+                        .arg(formatNumber(*step.endTime))
+                        .arg(i)
+                        .arg(formatNumber(q.measure.time)));
+    }
+    return true;
+}
+
 } // namespace
 
 bool readDistinctNames(
@@ -207,81 +299,19 @@ bool readStep(JsonReader& in, const QJsonValue& value, const QString& place, Ste
               LessonStep& step)
 {
     QJsonObject object;
-    if (!in.asObject(value, place, object) ||
-        !in.checkKeys(object, place,
-                      {u"title", u"text", u"scene", u"settings", u"compare", u"plots", u"overlays",
-                       u"panels", u"allow", u"sat", u"editor", u"questions", u"exportTime",
-                       u"autoplay"}) ||
-        !context.texts->line(object, u"title", place, step.title, true)) {
+    if (!in.asObject(value, place, object) || !in.checkKeys(object, place, schema::stepKeys())) {
         return false;
     }
-    for (const LocalTexts::Variant& v : context.texts->variants()) {
-        if (v.text.trimmed().isEmpty()) {
-            return in.fail(v.place, FileMessages::tr("must not be empty"));
-        }
-    }
-    if (!context.texts->paragraphs(object, u"text", place, step.text) ||
-        !readScene(in, object, place, context, step) ||
-        !readSettings(in, object, place, step.settings) || !readCompare(in, object, place, step) ||
-        !readNames(in, object, u"plots", place, kStepPlotNames, u"plot", step.plots) ||
-        !readNames(in, object, u"overlays", place, kStepOverlayNames, u"overlay", step.overlays) ||
-        !readNames(in, object, u"panels", place, kStepPanelNames, u"panel", step.panels)) {
-        return false;
-    }
-    // Every step keeps its scene: many steps reading one large scene file add up.
-    context.bodies += static_cast<qint64>(step.scene.bodies.size());
-    if (context.bodies > limits::kMaxLessonBodies) {
-        return in.fail(joinPlace(place, u"scene"),
-                       FileMessages::tr("the steps up to this one hold %1 bodies in all, more "
-                                        "than the limit of %2 for a lesson")
-                           .arg(context.bodies)
-                           .arg(limits::kMaxLessonBodies));
-    }
-    for (qsizetype i = 0; i < step.plots.size(); ++i) {
-        if (step.plots[i].startsWith(u"compare-") && !step.compare) {
-            return in.fail(indexPlace(joinPlace(place, u"plots"), i),
-                           FileMessages::tr("\"%1\" plots the worlds of \"compare\", and this "
-                                            "step has none")
-                               .arg(step.plots[i]));
-        }
-    }
-    if (object.contains(u"allow")) {
-        QStringList allow;
-        if (!readNames(in, object, u"allow", place, schema::stepControlNames(), u"control",
-                       allow)) {
+    // The rows in the file's order: the texts and plain values as their rows say, each part
+    // by its own function.
+    for (const schema::StepField& row : schema::stepFields()) {
+        const bool ok = row.kind == schema::LessonKind::Part
+                            ? readStepPart(in, row.key, object, place, context, step)
+                            : readLessonRow(in, *context.texts, row, object, place, step);
+        if (!ok)
             return false;
-        }
-        step.allow = allow;
     }
-    if (!readEditorLock(in, object, place, step)) {
-        return false;
-    }
-    if (!readSat(in, object, place, step.scene, step.sat) ||
-        !readQuestions(in, *context.texts, object, place, step, step.questions) ||
-        !in.number(object, u"exportTime", place, step.exportTime, NumberRule::Positive) ||
-        !in.boolean(object, u"autoplay", place, step.autoplay)) {
-        return false;
-    }
-    const QString exportPlace = joinPlace(place, u"exportTime");
-    if (step.exportTime > kMaxExportTime) {
-        return in.fail(exportPlace, FileMessages::tr("must be at most %1 s, got %2")
-                                        .arg(kMaxExportTime)
-                                        .arg(formatNumber(step.exportTime)));
-    }
-    const double dt = step.settings.dt.value_or(step.scene.world.dt);
-    if (step.exportTime / dt > kMaxExportSteps) {
-        return in.fail(exportPlace,
-                       FileMessages::tr("%1 s at a step of %2 s is more than %3 steps")
-                           .arg(formatNumber(step.exportTime), formatNumber(dt),
-                                QString::number(static_cast<qint64>(kMaxExportSteps))));
-    }
-    const int panelSat = static_cast<int>(step.panels.indexOf(u"sat"));
-    if (panelSat >= 0 && !step.sat) {
-        return in.fail(indexPlace(joinPlace(place, u"panels"), panelSat),
-                       FileMessages::tr("the \"sat\" panel needs the pair it looks at: add "
-                                        "\"sat\": {\"a\": ID, \"b\": ID} to the step"));
-    }
-    return true;
+    return checkStep(in, place, context, step);
 }
 
 } // namespace rigidlab::lessons::detail

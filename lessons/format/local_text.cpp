@@ -50,11 +50,10 @@ bool LocalTexts::checkLanguages(const QJsonObject& object, const QString& place)
                                  .arg(it.key(), shippedLanguageCodes()));
         }
     }
-    if (!object.contains(kFallbackLanguage)) {
-        return m_in.fail(place,
-                         FileMessages::tr("needs the English text \"%1\", shown when a language "
-                                          "is missing")
-                             .arg(kFallbackLanguage.toString()));
+    // One language is enough: a text written only in Czech is shown in Czech everywhere.
+    if (object.isEmpty()) {
+        return m_in.fail(place, FileMessages::tr("needs a text in at least one language (%1)")
+                                    .arg(shippedLanguageCodes()));
     }
     m_translated = true;
     return true;
@@ -62,9 +61,10 @@ bool LocalTexts::checkLanguages(const QJsonObject& object, const QString& place)
 
 void LocalTexts::noteMissing(const QString& place, const QStringList& present)
 {
+    ++m_texts;
     for (const Language& l : kLanguages) {
         if (!present.contains(l.code.toString()))
-            m_missing.emplace_back(place, l.code.toString());
+            m_missing.push_back({place, l.code.toString(), textLanguage(l.code, present)});
     }
 }
 
@@ -95,8 +95,7 @@ bool LocalTexts::readText(const QJsonValue& value, const QString& place, ReadOne
     if (!checkLanguages(object, place)) {
         return false;
     }
-    QString chosen;
-    QString fallback;
+    const QString shown = textLanguage(m_language, object.keys());
     for (const Language& l : kLanguages) {
         const auto it = object.constFind(l.code);
         if (it == object.constEnd()) {
@@ -108,13 +107,10 @@ bool LocalTexts::readText(const QJsonValue& value, const QString& place, ReadOne
             return false;
         }
         m_variants.push_back({at, text});
-        if (l.code == m_language)
-            chosen = text;
-        if (l.code == kFallbackLanguage)
-            fallback = text;
+        if (l.code == shown)
+            out = text;
     }
     noteMissing(place, object.keys());
-    out = object.contains(m_language) ? chosen : fallback;
     return true;
 }
 
@@ -142,9 +138,12 @@ bool LocalTexts::unit(const QJsonObject& object, QStringView key, const QString&
                       QString& out)
 {
     const std::size_t missingBefore = m_missing.size();
+    const int textsBefore = m_texts;
     const bool ok = line(object, key, place, out);
-    if (ok && object.value(key).isString())
+    if (ok && object.value(key).isString()) {
         m_missing.resize(missingBefore);
+        m_texts = textsBefore; // a symbol is no text of any language
+    }
     return ok;
 }
 
@@ -214,7 +213,7 @@ bool LocalTexts::list(const QJsonObject& object, QStringView key, const QString&
     if (!checkLanguages(languages, at)) {
         return false;
     }
-    QStringList fallback;
+    const QString shown = textLanguage(m_language, languages.keys());
     for (const Language& l : kLanguages) {
         const auto it = languages.constFind(l.code);
         if (it == languages.constEnd()) {
@@ -229,14 +228,10 @@ bool LocalTexts::list(const QJsonObject& object, QStringView key, const QString&
         if (!readItems(it.value().toArray(), languageAt, false, texts)) {
             return false;
         }
-        if (l.code == m_language)
+        if (l.code == shown)
             out = texts;
-        if (l.code == kFallbackLanguage)
-            fallback = texts;
     }
     noteMissing(at, languages.keys());
-    if (!languages.contains(m_language))
-        out = fallback;
     return true;
 }
 
@@ -245,9 +240,27 @@ void LocalTexts::warnMissing()
     if (!m_translated) {
         return;
     }
-    for (const auto& [place, code] : m_missing) {
-        m_in.warn(place, FileMessages::tr("no %1 text (\"%2\"); English is shown instead")
-                             .arg(languageName(code), code));
+    // A language no text has is said once, for the whole lesson or scene; a language some texts
+    // lack is said of each of them.
+    for (const Language& l : kLanguages) {
+        std::vector<const Missing*> lacking;
+        for (const Missing& m : m_missing) {
+            if (m.code == l.code)
+                lacking.push_back(&m);
+        }
+        if (lacking.empty())
+            continue;
+        const Missing& first = *lacking.front();
+        if (static_cast<int>(lacking.size()) == m_texts && m_texts > 1) {
+            m_in.warn(first.place, m_whole.arg(languageTitle(first.code), first.code,
+                                               languageTitle(first.shownIn)));
+            continue;
+        }
+        for (const Missing* m : lacking) {
+            m_in.warn(m->place,
+                      FileMessages::tr("no %1 text (\"%2\"): it will show in %3")
+                          .arg(languageTitle(m->code), m->code, languageTitle(m->shownIn)));
+        }
     }
 }
 

@@ -9,8 +9,10 @@
 //     "title": {"en": "Bounces", "cs": "Odrazy"}
 //     "text": {"en": ["...", "..."], "cs": ["...", "..."]}
 //
-// English must be there; it is shown when the chosen language is missing. A code the lab does
-// not ship, or a value of the wrong kind, is an error with its place, like every other.
+// One language is enough. A text without the chosen language is shown in English, or without
+// English in the language it has (textLanguage, languages.h). A code the lab does not ship, an
+// object with no language, or a value of the wrong kind, is an error with its place, like every
+// other.
 
 #include "format/json_reader.h"
 
@@ -21,7 +23,12 @@ namespace rigidlab::lessons::detail {
 
 class LocalTexts {
 public:
-    LocalTexts(JsonReader& in, QString language) : m_in(in), m_language(std::move(language)) {}
+    /// `whole` is the warning of a language no text has, "no %1 text (\"%2\") in the whole
+    /// lesson: it will show in %3" (the language, its code, the one shown instead).
+    LocalTexts(JsonReader& in, QString language, QString whole)
+        : m_in(in), m_language(std::move(language)), m_whole(std::move(whole))
+    {
+    }
 
     /// The language the texts are kept in.
     const QString& language() const { return m_language; }
@@ -51,9 +58,10 @@ public:
     };
     const std::vector<Variant>& variants() const { return m_variants; }
 
-    /// Warns of each text that lacks a shipped language, saying where and which. Called once
-    /// the whole lesson or scene is read: one with no text in the object form is in English
-    /// only, and warns of nothing.
+    /// Warns of each text that lacks a shipped language, saying where, which and the language
+    /// it shows in instead; a language no text has is one warning. Called once the whole lesson
+    /// or scene is read: one with no text in the object form is in English only, and warns of
+    /// nothing.
     void warnMissing();
 
 private:
@@ -66,15 +74,23 @@ private:
     /// for the message.
     bool readText(const QJsonValue& value, const QString& place, ReadOne one,
                   QStringView plainKinds, QString& out);
-    /// The object of languages at `place`: every key a shipped code, "en" among them.
+    /// The object of languages at `place`: every key a shipped code, at least one.
     bool checkLanguages(const QJsonObject& object, const QString& place);
     /// Notes the shipped languages `present` lacks, for warnMissing().
     void noteMissing(const QString& place, const QStringList& present);
 
+    struct Missing {
+        QString place;
+        QString code;    ///< the language the text lacks
+        QString shownIn; ///< the language it shows in instead
+    };
+
     JsonReader& m_in;
     QString m_language;
-    bool m_translated = false;                          ///< some text is in the object form
-    std::vector<std::pair<QString, QString>> m_missing; ///< (place, language code)
+    QString m_whole;
+    bool m_translated = false; ///< some text is in the object form
+    int m_texts = 0;           ///< the texts read that a language could be missing from
+    std::vector<Missing> m_missing;
     std::vector<Variant> m_variants;
 };
 

@@ -43,7 +43,9 @@ constexpr double kJointAnchorTolerance = 1e-6;
 class SceneReader {
 public:
     SceneReader(const QString& sourceName, const SceneLoadOptions& options)
-        : m_in(sourceName), m_texts(m_in, options.language)
+        : m_in(sourceName),
+          m_texts(m_in, options.language,
+                  FileMessages::tr("no %1 text (\"%2\") in the whole scene: it will show in %3"))
     {
     }
 

@@ -226,7 +226,7 @@ const Field kBodyFields[] = {
              s.labels[i] = *text;
              LocalTextMap& all = s.labelTexts[i];
              if (!all.isEmpty())
-                 all[all.contains(s.language) ? s.language : kFallbackLanguage.toString()] = *text;
+                 all[textLanguage(s.language, all.keys())] = *text;
          },
      .written = [](const Scene& s,
                    std::size_t i) { return s.hasLabel(static_cast<physics::BodyId>(i)); },

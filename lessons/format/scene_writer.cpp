@@ -69,7 +69,7 @@ QByteArray localText(const QString& shown, const LocalTextMap& all, const QStrin
     if (all.isEmpty())
         return string(shown);
     LocalTextMap texts = all;
-    const QString code = texts.contains(language) ? language : kFallbackLanguage.toString();
+    const QString code = textLanguage(language, texts.keys());
     texts[code] = shown;
     // In the order of the shipped languages (English first), as the shipped files have them.
     QByteArrayList parts;
@@ -212,7 +212,7 @@ void setShown(QString& shown, LocalTextMap& all, const QString& language, const 
 {
     shown = text;
     if (!all.isEmpty())
-        all[all.contains(language) ? language : kFallbackLanguage.toString()] = text;
+        all[textLanguage(language, all.keys())] = text;
 }
 
 } // namespace

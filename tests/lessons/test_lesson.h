@@ -18,6 +18,9 @@ namespace rigidlab::test {
 inline const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
 /// The one folder of shipped scenes, the lessons' included.
 inline const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
+/// Hand-made lessons written in one language only.
+inline const QString kOneLanguageDir =
+    QStringLiteral(RIGIDLAB_SOURCE_DIR "/tests/lessons/data/one_language");
 
 inline QString lessonPath(const char* name)
 {
@@ -110,6 +113,8 @@ private slots:
     void textsInBothForms();
     void textsFallBackToEnglish();
     void missingLanguageWarns();
+    void oneLanguageLessons_data();
+    void oneLanguageLessons();
     void badLanguageObjectRefused_data();
     void badLanguageObjectRefused();
     void originalVerticesOfNonConvexPolygon();

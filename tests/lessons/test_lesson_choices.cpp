@@ -72,8 +72,7 @@ void TestLesson::choiceMissingLanguageWarns()
     QCOMPARE(r.lesson.steps[0].questions[0].choices, (QStringList{"jeden", "two"}));
     QCOMPARE(r.warnings.filter(QStringLiteral("questions")),
              QStringList{QStringLiteral("l.json: steps[0].questions[0].choices[1]: no "
-                                        "Čeština text (\"cs\"); English is shown "
-                                        "instead")});
+                                        "Czech text (\"cs\"): it will show in English")});
 }
 
 void TestLesson::rejectsBadChoice_data()

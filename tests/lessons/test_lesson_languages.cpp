@@ -7,7 +7,9 @@
 
 #include "format/document.h"
 #include "format/languages.h"
+#include "format/lesson_pack.h"
 
+#include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -122,7 +124,7 @@ void TestLesson::missingLanguageWarns()
     json.replace(R"(, "cs": "e na druhou")", "");
     const lessons::LessonLoadResult r = lessons::loadLessonJson(json, QStringLiteral("l.json"));
     QVERIFY2(r.ok, qPrintable(r.error));
-    const QString tail = QStringLiteral(": no Čeština text (\"cs\"); English is shown instead");
+    const QString tail = QStringLiteral(": no Czech text (\"cs\"): it will show in English");
     QCOMPARE(r.warnings,
              (QStringList{QStringLiteral("l.json: steps[0].title") + tail,
                           QStringLiteral("l.json: steps[0].questions[0].hint") + tail}));
@@ -158,12 +160,12 @@ void TestLesson::badLanguageObjectRefused_data()
     const QString s0 = QStringLiteral("steps[0].");
     QTest::newRow("unknown-language") << lesson(R"({"en": "t", "de": "T"})", "")
                                       << R"(title.de: unknown language "de" (expected en, cs))";
-    QTest::newRow("no-english")
-        << lesson(R"({"cs": "t"})", "")
-        << R"(title: needs the English text "en", shown when a language is missing)";
     QTest::newRow("empty-object") << lesson("{}", "")
-                                  << R"(title: needs the English text "en", shown when a )"
-                                     "language is missing";
+                                  << R"(title: needs a text in at least one language (en, cs))";
+    QTest::newRow("empty-prompt-object")
+        << lesson(R"("t")", R"(, "questions": [{"prompt": {}, "measure": {"kind": "apex", )"
+                            R"("body": "ball"}}])")
+        << s0 + R"(questions[0].prompt: needs a text in at least one language (en, cs))";
     QTest::newRow("number-value") << lesson(R"({"en": "t", "cs": 3})", "")
                                   << R"(title.cs: must be a string "...", got 3)";
     QTest::newRow("array-for-a-line")
@@ -207,4 +209,76 @@ void TestLesson::badLanguageObjectRefused()
     const lessons::LessonLoadResult r = lessons::loadLessonJson(json, QStringLiteral("l.json"));
     QVERIFY(!r.ok);
     QCOMPARE(r.error, QStringLiteral("l.json: ") + message);
+}
+
+void TestLesson::oneLanguageLessons_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QString>("written"); // the one language it is written in
+    QTest::addColumn<QString>("title");
+    QTest::addColumn<QString>("choice"); // its first option
+    QTest::addColumn<QString>("label");  // the heavy cart's label
+    QTest::newRow("czech-only") << QStringLiteral("czech_only.rlesson") << QStringLiteral("cs")
+                                << QStringLiteral("Srážka dvou vozíků") << QStringLiteral("lehký")
+                                << QStringLiteral("těžký vozík");
+    QTest::newRow("english-only") << QStringLiteral("english_only.rlesson") << QStringLiteral("en")
+                                  << QStringLiteral("Two carts collide")
+                                  << QStringLiteral("the light one")
+                                  << QStringLiteral("heavy cart");
+}
+
+void TestLesson::oneLanguageLessons()
+{
+    // A lesson written in one language only is a lesson like any other: it loads in every
+    // language, each text shown in the one it has, with one warning for the language it lacks.
+    QFETCH(QString, file);
+    QFETCH(QString, written);
+    QFETCH(QString, title);
+    QFETCH(QString, choice);
+    QFETCH(QString, label);
+    const QString path = kOneLanguageDir + u'/' + file;
+    for (const lessons::Language& language : lessons::kLanguages) {
+        const QString code = language.code.toString();
+        const lessons::LessonLoadResult r = lessons::loadLessonFile(path, {code});
+        QVERIFY2(r.ok, qPrintable(r.error));
+        const lessons::Lesson& l = r.lesson;
+        QCOMPARE(l.title, title);
+        QCOMPARE(l.goals.size(), 1);
+        const lessons::LessonStep& step = l.steps.front();
+        QVERIFY(!step.title.isEmpty());
+        QVERIFY(!step.text.isEmpty());
+        QCOMPARE(step.scene.labels.at(1), label);
+        QCOMPARE(step.endTime, std::optional<double>(3.0));
+        QCOMPARE(step.questions.size(), std::size_t{2});
+        QVERIFY(!step.questions[0].isChoice());
+        QVERIFY(!step.questions[0].hint.isEmpty());
+        QVERIFY(step.questions[1].isChoice());
+        QCOMPARE(step.questions[1].choices.front(), choice);
+        // One warning for the lesson's missing language, one for its scene's: never one per
+        // text, and none at all for the language asked for when it is the one written.
+        for (const lessons::Language& other : lessons::kLanguages) {
+            const QString missing = other.code.toString();
+            const QString line =
+                QStringLiteral("no %1 text (\"%2\") in the whole lesson: it "
+                               "will show in %3")
+                    .arg(lessons::languageTitle(missing), missing, lessons::languageTitle(written));
+            const qsizetype count =
+                std::count_if(r.warnings.begin(), r.warnings.end(),
+                              [&](const QString& w) { return w.endsWith(line); });
+            QCOMPARE(count, missing == written ? 0 : 1);
+        }
+        QCOMPARE(r.warnings.size(), 2);
+    }
+    // Saved and read back, it is the same lesson.
+    QFile in(path);
+    QVERIFY(in.open(QIODevice::ReadOnly));
+    const lessons::LessonPackResult read = lessons::readLessonPack(in.readAll(), path);
+    QVERIFY2(read.ok, qPrintable(read.error));
+    QTemporaryDir dir;
+    const QString copy = dir.filePath(file);
+    writeFile(copy, lessons::lessonPackBytes(read.pack));
+    const lessons::LessonLoadResult again = lessons::loadLessonFile(copy, {written});
+    QVERIFY2(again.ok, qPrintable(again.error));
+    QCOMPARE(again.lesson.title, title);
+    QCOMPARE(again.lesson.steps.front().questions[1].choices.front(), choice);
 }

@@ -39,6 +39,8 @@ private slots:
     void cliPacksValidatesExports_data();
     void cliPacksValidatesExports();
     void cliRefusals();
+    void cliOneLanguageLessons_data();
+    void cliOneLanguageLessons();
 };
 
 namespace {
@@ -412,3 +414,43 @@ void TestLessonPack::cliRefusals()
 
 RIGIDLAB_TEST_GUILESS_MAIN(TestLessonPack)
 #include "test_lesson_pack.moc"
+
+void TestLessonPack::cliOneLanguageLessons_data()
+{
+    QTest::addColumn<QString>("file");
+    QTest::addColumn<QString>("missing"); // the warning's line
+    QTest::newRow("czech-only") << QStringLiteral("czech_only.rlesson")
+                                << QStringLiteral("no English text (\"en\") in the whole lesson: "
+                                                  "it will show in Czech");
+    QTest::newRow("english-only") << QStringLiteral("english_only.rlesson")
+                                  << QStringLiteral("no Czech text (\"cs\") in the whole lesson: "
+                                                    "it will show in English");
+}
+
+void TestLessonPack::cliOneLanguageLessons()
+{
+    // A hand-made lesson in one language validates (exit 0) with one warning saying so, in
+    // either --lang, and exports its plots.
+    QFETCH(QString, file);
+    QFETCH(QString, missing);
+    const QString path =
+        QStringLiteral(RIGIDLAB_SOURCE_DIR "/tests/lessons/data/one_language/") + file;
+    const QByteArray warning = missing.toUtf8();
+    for (const QString& lang : {QStringLiteral("cs"), QStringLiteral("en")}) {
+        const Run run = runCli({QStringLiteral("lesson"), path, QStringLiteral("--validate"),
+                                QStringLiteral("--lang"), lang});
+        QVERIFY2(run.exitCode == 0, (run.out + run.err).constData());
+        QVERIFY2(run.out.startsWith("ok: "), run.out.constData());
+        QVERIFY2((run.out + run.err).contains(warning), (run.out + run.err).constData());
+    }
+    QTemporaryDir dir;
+    const Run exported =
+        runCli({QStringLiteral("lesson"), path, QStringLiteral("--export"), dir.path()});
+    QVERIFY2(exported.exitCode == 0, (exported.out + exported.err).constData());
+    const QStringList steps = QDir(dir.path()).entryList(QDir::Dirs | QDir::NoDotAndDotDot);
+    QCOMPARE(steps.size(), 1);
+    for (const char* name : {"energy.png", "energy.pdf", "energy.svg", "energy.csv"})
+        QVERIFY2(QFileInfo(QDir(dir.filePath(steps.front())).filePath(QLatin1String(name))).size() >
+                     0,
+                 name);
+}

@@ -63,7 +63,7 @@ void TestLesson::rejectsBadLesson_data()
         << oneStep(R"("colour": "red")")
         << steps0 + "colour: unknown key (allowed here: title, text, scene, settings, compare, "
                     "plots, overlays, panels, allow, sat, editor, questions, exportTime, "
-                    "autoplay)";
+                    "endTime, autoplay)";
     QTest::newRow("scene-missing")
         << QByteArray(R"({"rigidlab-lesson": 1, "title": "t", "steps": [{"title": "s"}]})")
         << steps0 + "scene: required, but missing (a scene object, or the path of a scene file)";
@@ -214,7 +214,7 @@ void TestLesson::rejectsBadLesson_data()
     QTest::newRow("hold-back-number")
         << question("", R"("holdBack": [1])") << q0 + R"(holdBack[0]: must be a name "...", got 1)";
     QTest::newRow("hint-empty") << question("", R"("hint": " ")")
-                                << q0 + "hint: must not be empty (leave the key out for no hint)";
+                                << q0 + "hint: must not be empty (leave the key out instead)";
     QTest::newRow("set-empty") << question("", R"("set": {})")
                                << q0 + "set: sets nothing (leave the key out when the student "
                                        "sets nothing)";
@@ -233,7 +233,11 @@ void TestLesson::rejectsBadLesson_data()
         << q0 + "set.integrator: this step compares integrators, each world its own: the "
                 "student cannot choose one";
     QTest::newRow("export-time") << oneStep(R"("exportTime": 1000)")
-                                 << steps0 + "exportTime: must be at most 600 s, got 1000";
+                                 << steps0 + "exportTime: must be from 0 to 600 s, got 1000";
+    QTest::newRow("end-time") << oneStep(R"("endTime": 5000)")
+                              << steps0 + "endTime: must be from 0 to 3600 s, got 5000";
+    QTest::newRow("end-time-text") << oneStep(R"("endTime": "5")")
+                                   << steps0 + R"(endTime: must be a positive number, got "5")";
     QTest::newRow("export-steps")
         << oneStep(R"("settings": {"dt": 1e-7}, "exportTime": 10)")
         << steps0 + "exportTime: 10 s at a step of 1e-07 s is more than 10000000 steps";

@@ -124,14 +124,14 @@ void TestLessons::sceneTexts_data()
         << "Drop"
         << "Míček padá."
         << QStringList{
-               QStringLiteral("x.json: title: no Čeština text (\"cs\"); English is shown instead")};
+               QStringLiteral("x.json: title: no Czech text (\"cs\"): it will show in English")};
     QTest::newRow("plain-beside-object")
         << QByteArray(R"("title": {"en": "Drop", "cs": "Pád"}, "description": "A ball falls.")")
         << "cs"
         << "Pád"
         << "A ball falls."
         << QStringList{QStringLiteral(
-               "x.json: description: no Čeština text (\"cs\"); English is shown instead")};
+               "x.json: description: no Czech text (\"cs\"): it will show in English")};
     // An empty title in the chosen language falls back to the file name, as a plain one does.
     QTest::newRow("object-empty-title")
         << QByteArray(R"("title": {"en": "Drop", "cs": ""})") << "cs"
@@ -177,17 +177,24 @@ void TestLessons::bodyLabels_data()
         << QByteArray(R"("label": "light ball", )") << "cs"
         << "light ball" << true
         << QStringList{QStringLiteral(
-               "x.json: bodies[0].label: no Čeština text (\"cs\"); English is shown instead")};
+               "x.json: bodies[0].label: no Czech text (\"cs\"): it will show in English")};
     // Spaces around it are not part of the name.
     QTest::newRow("trimmed") << QByteArray(R"("label": {"en": " light ball ", "cs": "koule"}, )")
                              << "en"
                              << "light ball" << true << QStringList();
+    // A label in Czech only is shown in Czech in every language, and says so.
+    for (const char* language : {"en", "cs"})
+        QTest::addRow("czech-only-%s", language)
+            << QByteArray(R"("label": {"cs": "lehká koule"}, )") << language << "lehká koule"
+            << true
+            << QStringList{QStringLiteral(
+                   "x.json: bodies[0].label: no English text (\"en\"): it will show in Czech")};
     // In a translated scene a label without Czech warns, as a title does.
     QTest::newRow("missing-cs")
         << QByteArray(R"("label": {"en": "light ball"}, )") << "cs"
         << "light ball" << true
         << QStringList{QStringLiteral(
-               "x.json: bodies[0].label: no Čeština text (\"cs\"); English is shown instead")};
+               "x.json: bodies[0].label: no Czech text (\"cs\"): it will show in English")};
 }
 
 void TestLessons::bodyLabels()
@@ -237,9 +244,9 @@ void TestLessons::rejectsBadBodyLabel_data()
     QTest::newRow("unknown-language")
         << QByteArray(R"("label": {"en": "light ball", "de": "leichte Kugel"})")
         << R"(bodies[0].label.de: unknown language "de" (expected en, cs))";
-    QTest::newRow("no-english") << QByteArray(R"("label": {"cs": "lehká koule"})")
-                                << R"(bodies[0].label: needs the English text "en", shown when a )"
-                                   "language is missing";
+    QTest::newRow("no-language") << QByteArray(R"("label": {})")
+                                 << R"(bodies[0].label: needs a text in at least one language )"
+                                    "(en, cs)";
     QTest::newRow("too-long") << "\"label\": \"" + QByteArray(81, 'x') + '"'
                               << "bodies[0].label: longer than 80 characters";
     QTest::newRow("control") << QByteArray(R"("label": {"en": "light\nball", "cs": "koule"})")
@@ -267,9 +274,8 @@ void TestLessons::rejectsBadSceneText_data()
 
     QTest::newRow("unknown-language") << QByteArray(R"("title": {"en": "Drop", "de": "Fall"})")
                                       << R"(title.de: unknown language "de" (expected en, cs))";
-    QTest::newRow("no-english") << QByteArray(R"("title": {"cs": "Pád"})")
-                                << R"(title: needs the English text "en", shown when a language )"
-                                   "is missing";
+    QTest::newRow("no-language") << QByteArray(R"("title": {})")
+                                 << R"(title: needs a text in at least one language (en, cs))";
     QTest::newRow("language-not-string")
         << QByteArray(R"("description": {"en": "A ball falls.", "cs": ["Míček", "padá."]})")
         << R"(description.cs: must be a string "...", got an array)";

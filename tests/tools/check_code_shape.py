@@ -2,8 +2,10 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The code's shape, as docs/design.md promises it: no source or test file over 600 lines, no
 function over 80 lines except those named in design.md's "Long on purpose" table, no ui/
-subfolder that includes another which includes it back, and no ui/ room that includes one of
-its own or a later layer (UI_LAYERS).
+subfolder that includes another which includes it back, no ui/ room that includes one of
+its own or a later layer (UI_LAYERS), and no language code written as a string ("cs", "en") in
+production code outside the languages table (lessons/format/languages.h and .cpp): every code
+path reads that table.
 
 Functions are found by Universal Ctags (their first and last line); a file is every tracked
 .cpp/.h under physics/, lessons/, ui/, app/, bench/ and tests/. Exit 0 when everything holds;
@@ -105,6 +107,25 @@ def include_cycles(root):
     return [(a, b) for a in rooms for b in rooms if a < b and b in uses[a] and a in uses[b]]
 
 
+LANGUAGE_TABLE = {"lessons/format/languages.h", "lessons/format/languages.cpp"}
+PRODUCTION = ["physics", "lessons", "ui", "app"]
+
+
+def language_literals(root, files):
+    """(path, line number) of each "cs" or "en" string literal outside the languages table."""
+    pattern = re.compile(r'(?:u|QStringLiteral\(|QLatin1String\()?"(?:cs|en)"')
+    out = []
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if rel.split("/")[0] not in PRODUCTION or rel in LANGUAGE_TABLE:
+            continue
+        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            code = line.split("//")[0]
+            if pattern.search(code):
+                out.append((rel, number))
+    return out
+
+
 def main():
     root = Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
     files = sources(root)
@@ -122,6 +143,9 @@ def main():
         problems.append(f"ui/{a} and ui/{b} include each other")
     for path, used in layer_breaches(root):
         problems.append(f"{path}: includes ui/{used}, a room of its own or a later layer")
+    for path, number in language_literals(root, files):
+        problems.append(f"{path}:{number}: a language code written out; read lessons::kLanguages "
+                        f"(lessons/format/languages.h) instead")
     for p in problems:
         print(p)
     print(f"{len(files)} files read, {len(problems)} findings")

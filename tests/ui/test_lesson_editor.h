@@ -89,6 +89,8 @@ private slots:
     void staleStepChecksDropped();
     void tryAndBackToTheEditor();
     void questionAsksTheStudentToSet();
+    void teachersOwnStep();
+    void teachersOwnQuestion();
     // Shipped lessons.
     void shippedLessonsOpenAndSaveUnchanged_data();
     void shippedLessonsOpenAndSaveUnchanged();

@@ -1,11 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The lesson editor's checks that run the steps (ui/lesson_editor/step_checks.h): a step whose
 // scene diverges with its settings is marked in words, a calm one is not, and a result for a
-// lesson changed since is never shown.
+// lesson changed since is never shown. A teacher's own step: wait for Play, an end time, a hint,
+// bodies by their labels, the prompt following the time; saved into her own lessons folder.
 
 #include "test_lesson_editor.h"
 
 #include "view/world_view.h"
+
+#include "format/data_dirs.h"
+#include "format/lesson_catalog.h"
+
+#include <QDoubleSpinBox>
 
 namespace {
 
@@ -18,6 +24,20 @@ bool onSprings(ui::LessonEditor& ed)
     if (scene.ok)
         ed.newLesson(scene.scene);
     return scene.ok;
+}
+
+/// A new lesson titled "Two balls meet" in `ed` on two balls with labels ("light ball", "heavy
+/// ball") and a track; false when their scene does not load.
+bool onTwoBalls(ui::LessonEditor& ed)
+{
+    const lessons::SceneLoadResult scene =
+        lessons::loadSceneFile(kSource + QStringLiteral("/lessons/scenes/two_balls.json"));
+    if (!scene.ok)
+        return false;
+    ed.newLesson(scene.scene);
+    ed.draft().setText(-1, QStringLiteral("title"), QStringLiteral("en"),
+                       QStringLiteral("Two balls meet"));
+    return true;
 }
 
 /// A dt of 0.5 s: omega dt = 3.2, past the 2 beyond which symplectic Euler's oscillation
@@ -95,8 +115,16 @@ void TestLessonEditor::tryAndBackToTheEditor()
     ed->draft().addStep(1);
     auto* back = w.findChild<QAction*>(QStringLiteral("backToLessonEditor"));
     QVERIFY(back != nullptr);
-    QVERIFY(!back->isVisible()); // nothing tried yet
+    // File › Back to the lesson editor is there while an editor is open, tried or not: it
+    // brings the editor opened last to the front, at the step it shows.
+    QVERIFY(back->isVisible());
     QCOMPARE(back->shortcuts().value(0), QKeySequence(QStringLiteral("Ctrl+Shift+L")));
+    ed->selectStep(2);
+    QApplication::setActiveWindow(&w);
+    QTRY_COMPARE(QApplication::activeWindow(), static_cast<QWidget*>(&w));
+    back->trigger();
+    QTRY_COMPARE(QApplication::activeWindow(), static_cast<QWidget*>(ed));
+    QCOMPARE(ed->currentStep(), 2);
 
     ed->selectStep(1);
     QTest::mouseClick(ed->findChild<QPushButton*>(QStringLiteral("tryAsStudent")), Qt::LeftButton);
@@ -131,21 +159,22 @@ void TestLessonEditor::tryAndBackToTheEditor()
     QCOMPARE(w.openScene(kSource + QStringLiteral("/lessons/scenes/spring_oscillator.json"), true),
              QString());
     QVERIFY(!bar->isVisible());
-    QVERIFY(!back->isVisible());
-    // Tried again, then another lesson opened: no way back either.
+    QVERIFY(back->isVisible()); // the editor is still open
+    // Tried again, then another lesson opened: no way back to the step either.
     QTest::mouseClick(ed->findChild<QPushButton*>(QStringLiteral("tryAsStudent")), Qt::LeftButton);
     QVERIFY(bar->isVisible());
     const QStringList shipped = test::shippedLessons();
     QVERIFY(!shipped.isEmpty());
     QCOMPARE(w.openLesson(shipped.front(), true), QString());
     QVERIFY(!bar->isVisible());
-    QVERIFY(!back->isVisible());
+    QVERIFY(back->isVisible());
     // Tried again, then the editor closed: nothing to go back to.
     QTest::mouseClick(ed->findChild<QPushButton*>(QStringLiteral("tryAsStudent")), Qt::LeftButton);
     QVERIFY(bar->isVisible());
     ed->draft().undoStack()->setClean(); // nothing to ask about on closing
     QVERIFY(ed->close());
     QTRY_VERIFY(!bar->isVisible());
+    QTRY_VERIFY(!back->isVisible()); // no editor left to go back to
 }
 
 void TestLessonEditor::questionAsksTheStudentToSet()
@@ -204,4 +233,105 @@ void TestLessonEditor::questionAsksTheStudentToSet()
     emit key->activated(0);
     QVERIFY(set().isEmpty());
     QVERIFY(!d.value(0, QStringLiteral("questions")).toArray().at(0).toObject().contains(u"set"));
+}
+
+void TestLessonEditor::teachersOwnStep()
+{
+    QVERIFY(ui::applyLanguage(QStringLiteral("en")));
+    ui::LessonEditor ed;
+    QVERIFY(onTwoBalls(ed));
+    LessonDraft& d = ed.draft();
+
+    // A new step waits for Play; unticked, it starts at once.
+    auto* wait = ed.stepSettings().waitForPlay();
+    QVERIFY(wait != nullptr);
+    QVERIFY(wait->isChecked());
+    QCOMPARE(d.value(0, QStringLiteral("autoplay")), QJsonValue(false));
+    wait->setChecked(false);
+    QCOMPARE(d.value(0, QStringLiteral("autoplay")), QJsonValue(true));
+    wait->setChecked(true);
+    QCOMPARE(d.value(0, QStringLiteral("autoplay")), QJsonValue(false));
+    ed.selectStep(0);
+    QTest::mouseClick(ed.findChild<QPushButton*>(QStringLiteral("addStep")), Qt::LeftButton);
+    QCOMPARE(d.value(1, QStringLiteral("autoplay")), QJsonValue(false));
+    ed.selectStep(0);
+
+    // The run's end time: typed, one edit, read by the loader; 0 takes it away.
+    QDoubleSpinBox* end = ed.stepSettings().endTime();
+    QVERIFY(end != nullptr);
+    end->setValue(2.5);
+    emit end->editingFinished();
+    QCOMPARE(d.value(0, QStringLiteral("endTime")).toDouble(), 2.5);
+    QString error;
+    std::optional<lessons::Lesson> lesson = d.lesson(QStringLiteral("en"), error);
+    QVERIFY2(lesson, qPrintable(error));
+    QCOMPARE(lesson->steps[0].endTime, std::optional<double>(2.5));
+    QVERIFY(!lesson->steps[0].autoplay);
+}
+
+void TestLessonEditor::teachersOwnQuestion()
+{
+    QVERIFY(ui::applyLanguage(QStringLiteral("en")));
+    ui::LessonEditor ed;
+    QVERIFY(onTwoBalls(ed));
+    LessonDraft& d = ed.draft();
+    QString error;
+
+    // A measured question: its bodies listed by their labels, kept by their ids.
+    QTest::mouseClick(ed.findChild<QPushButton*>(QStringLiteral("addMeasuredQuestion")),
+                      Qt::LeftButton);
+    auto* body = ed.findChild<QComboBox*>(QStringLiteral("questionBody"));
+    QVERIFY(body != nullptr);
+    QStringList shown;
+    for (int i = 0; i < body->count(); ++i)
+        shown << body->itemText(i);
+    QCOMPARE(shown, (QStringList{QStringLiteral("light ball"), QStringLiteral("heavy ball")}));
+    QCOMPARE(body->itemData(1).toString(), QStringLiteral("heavy"));
+
+    // The prompt the editor wrote follows the body and the time chosen.
+    const auto prompt = [&] {
+        return d.value(0, QStringLiteral("questions"))
+            .toArray()
+            .at(0)
+            .toObject()
+            .value(u"prompt")
+            .toObject()
+            .value(u"en")
+            .toString();
+    };
+    QVERIFY2(prompt().contains(QStringLiteral("light ball")), qPrintable(prompt()));
+    body->setCurrentIndex(1);
+    emit body->activated(1);
+    auto* time = ed.findChild<QDoubleSpinBox*>(QStringLiteral("questionTime"));
+    QVERIFY(time != nullptr);
+    time->setValue(0.75);
+    QVERIFY2(prompt().contains(QStringLiteral("heavy ball")), qPrintable(prompt()));
+    QVERIFY2(prompt().contains(QStringLiteral("0.75")), qPrintable(prompt()));
+
+    // A hint, per language; the player reads it.
+    auto* hint = ed.findChild<QLineEdit*>(QStringLiteral("questionHint_en"));
+    QVERIFY(hint != nullptr);
+    hint->setFocus();
+    QTest::keyClicks(hint, QStringLiteral("Momentum is kept."));
+    const std::optional<lessons::Lesson> lesson = d.lesson(QStringLiteral("en"), error);
+    QVERIFY2(lesson, qPrintable(error));
+    QCOMPARE(lesson->steps[0].questions.at(0).hint, QStringLiteral("Momentum is kept."));
+    QCOMPARE(lesson->steps[0].questions.at(0).measure.body, QStringLiteral("heavy"));
+    auto* answer = ed.findChild<QLabel*>(QStringLiteral("questionAnswer"));
+    QVERIFY2(!answer->text().startsWith(u'⚠'), qPrintable(answer->text()));
+
+    // Saved where Save As offers: the teacher's own lessons folder, named after the title, and
+    // listed with her lessons.
+    const QString path = ed.defaultSavePath();
+    QCOMPARE(QFileInfo(path).absolutePath(),
+             QFileInfo(lessons::userLessonsDir()).absoluteFilePath());
+    QCOMPARE(QFileInfo(path).fileName(), QStringLiteral("two_balls_meet.rlesson"));
+    QVERIFY(QDir().mkpath(lessons::userLessonsDir()));
+    QCOMPARE(ed.saveAs(path), QString());
+    bool listed = false;
+    for (const lessons::LessonEntry& entry : lessons::allLessonsInOrder())
+        listed = listed || (entry.own && entry.title == QStringLiteral("Two balls meet"));
+    QVERIFY(listed);
+    QVERIFY(ed.defaultSavePath() != path); // never over it
+    QVERIFY(QFile::remove(path));
 }

@@ -53,11 +53,31 @@ void typeInto(QLineEdit* field, const QString& text)
 }
 
 /// The options of the selected question's table, as {cs, en} per row.
+/// The table's column of a language, by its heading (the window's language comes first).
+int columnOf(QTableWidget* table, const QString& heading)
+{
+    for (int c = 0; c < table->columnCount(); ++c)
+        if (table->horizontalHeaderItem(c)->text() == heading)
+            return c;
+    return -1;
+}
+
+/// The Czech column of the options' table, and the English one.
+int czech(QTableWidget* table)
+{
+    return columnOf(table, QStringLiteral("Czech"));
+}
+int english(QTableWidget* table)
+{
+    return columnOf(table, QStringLiteral("English"));
+}
+
+/// Each option's texts, Czech then English.
 QList<QStringList> tableTexts(QTableWidget* table)
 {
     QList<QStringList> out;
     for (int r = 0; r < table->rowCount(); ++r)
-        out.append({table->item(r, 0)->text(), table->item(r, 1)->text()});
+        out.append({table->item(r, czech(table))->text(), table->item(r, english(table))->text()});
     return out;
 }
 
@@ -144,7 +164,7 @@ void TestLessonEditorChoice::writtenInTheEditor()
     QCOMPARE(table->rowCount(), 3);
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 2; ++c)
-            table->item(r, c)->setText(texts[r][c]);
+            table->item(r, c == 0 ? czech(table) : english(table))->setText(texts[r][c]);
     QCOMPARE(tableTexts(table), texts);
     table->setCurrentCell(2, 0);
     child<QPushButton>(ed, QStringLiteral("choiceOptionUp"))->click();
@@ -180,10 +200,10 @@ void TestLessonEditorChoice::undoRedoOptions(ui::LessonDraft& d, QTableWidget* t
     // Undoing the move puts the options back in their order, in the table too.
     d.undoStack()->undo();
     d.undoStack()->undo();
-    QCOMPARE(table->item(2, 1)->text(), QStringLiteral("the one with e = 0.8"));
+    QCOMPARE(table->item(2, english(table))->text(), QStringLiteral("the one with e = 0.8"));
     d.undoStack()->redo();
     d.undoStack()->redo();
-    QCOMPARE(table->item(1, 1)->text(), QStringLiteral("the one with e = 0.8"));
+    QCOMPARE(table->item(1, english(table))->text(), QStringLiteral("the one with e = 0.8"));
 }
 
 void TestLessonEditorChoice::removedAndSaved(ui::LessonEditor& ed)

@@ -6,6 +6,7 @@
 // step, and embedded fonts. The answers file saved beside it makes the same sheet through
 // rigidlab-cli; the empty sheet and the teacher's key are checked likewise.
 
+#include "common/display_names.h"
 #include "common/language.h"
 #include "common/number_format.h"
 #include "common/shortcuts.h"
@@ -13,6 +14,7 @@
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 #include "worksheet/worksheet.h"
+#include "worksheet/worksheet_plots.h"
 
 #include "format/answers_file.h"
 #include "format/lesson.h"
@@ -187,6 +189,9 @@ private slots:
     void handInNeedsAPlaceToWrite();
     void cliRefusesDamagedAnswers();
     void nameAndHandInAreReachable();
+    void prematureCheckIsNoAnswer();
+    void solverLineNamesTheSolverThatRan();
+    void stepFigureIsTheAskedRun();
 };
 
 void TestWorksheet::handInAfterAnswering_data()
@@ -412,6 +417,110 @@ void TestWorksheet::nameAndHandInAreReachable()
              QStringLiteral("Petr"));
     QCOMPARE(other.lessonPlayer().student(), QStringLiteral("Petr"));
     QVERIFY(!other.findChild<QAction*>(QStringLiteral("worksheetKey"))->isEnabled()); // no lesson
+}
+
+void TestWorksheet::prematureCheckIsNoAnswer()
+{
+    // A Check before the run gets to the time asked says what to do, and the sheet lists only
+    // the answer judged later.
+    ui::MainWindow w;
+    const QString path =
+        QStringLiteral(RIGIDLAB_SOURCE_DIR "/tests/lessons/data/one_language/english_only.rlesson");
+    QCOMPARE(w.openLesson(path, true), QString());
+    ui::LessonPlayer& player = w.lessonPlayer();
+    player.setStudent(QStringLiteral("Jana Nováková"), QStringLiteral("2.B"));
+    const lessons::LessonStep& step = player.lesson()->steps.front();
+    player.answer(0, QStringLiteral("777"));
+    QVERIFY2(player.result(0).contains(QStringLiteral("first")), qPrintable(player.result(0)));
+    std::optional<double> value;
+    for (int k = 0; k < 20000 && !value; ++k) {
+        w.controller().stepForward();
+        value = w.controller().measurements().value(step.questions[0].measure, step.scene);
+    }
+    QVERIFY(value.has_value());
+    player.answer(0, QLocale().toString(*value, 'g', 8));
+    QVERIFY2(player.result(0).startsWith(QStringLiteral("Right")), qPrintable(player.result(0)));
+    QTemporaryDir dir;
+    const QString pdf = dir.filePath(QStringLiteral("sheet.pdf"));
+    QCOMPARE(player.handIn(pdf), QString());
+    const QString text = pdfText(pdf);
+    QVERIFY2(!text.isEmpty(), "pdftotext read nothing (is poppler-utils installed?)");
+    QVERIFY2(!text.contains(QStringLiteral("777")), qPrintable(text));
+    QVERIFY2(text.contains(QStringLiteral("✓ right")), qPrintable(text));
+}
+
+void TestWorksheet::solverLineNamesTheSolverThatRan()
+{
+    // Each step's settings line names the solver that ran, and the one asked for where another
+    // stood in for it (the soft step does not take springs, joints or other integrators).
+    int standIns = 0;
+    for (const QString& file :
+         {QStringLiteral("restitution.json"), QStringLiteral("stacks.json")}) {
+        const lessons::LessonLoadResult loaded =
+            lessons::loadLessonFile(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/") + file);
+        QVERIFY2(loaded.ok, qPrintable(loaded.error));
+        QTemporaryDir dir;
+        const QString pdf = dir.filePath(QStringLiteral("empty.pdf"));
+        const ui::WorksheetResult r =
+            ui::writeWorksheet(loaded.lesson, lessons::Answers{}, ui::WorksheetKind::Empty, pdf);
+        QVERIFY2(r.ok, qPrintable(r.error));
+        const QString text = pdfText(pdf);
+        for (const lessons::LessonStep& step : loaded.lesson.steps) {
+            if (step.compare && !step.compare->solvers.empty())
+                continue; // the compared solvers are named instead
+            const physics::World world = lessons::buildStepWorlds(step).front();
+            QString expected =
+                QStringLiteral("solver ") + ui::solverDisplayName(world.solverRunning());
+            if (world.solverRunning() != world.def().solver) {
+                ++standIns;
+                expected += QStringLiteral(" (instead of %1)")
+                                .arg(ui::solverDisplayName(world.def().solver));
+            }
+            QVERIFY2(text.contains(flat(expected)), qPrintable(expected + u'\n' + text));
+        }
+    }
+    QVERIFY2(standIns > 0, "no step of these lessons has a stand-in solver: the check is empty");
+}
+
+void TestWorksheet::stepFigureIsTheAskedRun()
+{
+    // Step 3 of the restitution lesson asks "set e = 0 and run again": once the student has
+    // answered it, the sheet's figure and settings line are of that run, not the step's e = 0.5.
+    const lessons::LessonLoadResult loaded = lessons::loadLessonFile(kLessonPath);
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    const lessons::Lesson& lesson = loaded.lesson;
+    QVERIFY(lesson.steps.size() >= 3);
+    const lessons::LessonStep& step = lesson.steps[2];
+    const auto asking = std::find_if(step.questions.begin(), step.questions.end(),
+                                     [](const lessons::Question& q) { return q.set.restitution; });
+    QVERIFY(asking != step.questions.end());
+    QCOMPARE(*asking->set.restitution, 0.0);
+    QCOMPARE(step.settings.restitution.value_or(-1), 0.5);
+
+    lessons::Answers answers;
+    answers.student = QStringLiteral("Jana Nováková");
+    answers.steps.resize(lesson.steps.size());
+    lessons::StepAnswers& third = answers.steps[2];
+    third.questions.resize(step.questions.size());
+    const auto q = static_cast<std::size_t>(asking - step.questions.begin());
+    const std::optional<double> value = expectedValue(step, *asking);
+    QVERIFY(value.has_value());
+    third.questions[q].push_back(lessons::AnswerTry{*value, value, false, std::nullopt, {}, false});
+    QCOMPARE(ui::stepAsRun(step, third).settings.restitution.value_or(-1), 0.0);
+    QCOMPARE(ui::stepAsRun(step, lessons::StepAnswers{}).settings.restitution.value_or(-1), 0.5);
+
+    QTemporaryDir dir;
+    const QString pdf = dir.filePath(QStringLiteral("sheet.pdf"));
+    const ui::WorksheetResult r =
+        ui::writeWorksheet(lesson, answers, ui::WorksheetKind::Answers, pdf);
+    QVERIFY2(r.ok, qPrintable(r.error));
+    const QString text = pdfText(pdf);
+    const qsizetype at = text.indexOf(QStringLiteral("Step 3:"));
+    QVERIFY2(at >= 0, qPrintable(text));
+    const QString settings = text.mid(at, text.indexOf(QStringLiteral("Step 4:"), at) - at);
+    QVERIFY2(settings.contains(QStringLiteral("Restitution e = 0 ")) ||
+                 settings.contains(QStringLiteral("Restitution e = 0\n")),
+             qPrintable(settings));
 }
 
 RIGIDLAB_TEST_MAIN(TestWorksheet)

@@ -22,16 +22,13 @@ namespace rigidlab::ui {
 
 namespace {
 
-/// The table's columns, as in the rest of the lesson editor: Czech first.
-constexpr std::array<const char*, 2> kColumnLanguages{"cs", "en"};
-
-/// An option's text in `language`: a plain string is English.
-QString optionText(const QJsonValue& option, const QString& language)
+/// The table's columns, as in the rest of the lesson editor: the window's language first.
+QString columnLanguage(int column)
 {
-    if (option.isObject())
-        return option.toObject().value(language).toString();
-    return language == u"en" ? option.toString() : QString();
+    return editorLanguages()[static_cast<std::size_t>(column)];
 }
+
+constexpr int kColumns = static_cast<int>(kEditorLanguages);
 
 } // namespace
 
@@ -39,11 +36,14 @@ ChoiceEditor::ChoiceEditor(QWidget* parent) : QWidget(parent)
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    auto* label = new QLabel(tr("&Options (Czech and English)"), this);
-    m_table = new QTableWidget(0, 2, this);
+    auto* label = new QLabel(tr("&Options (one language is enough)"), this);
+    m_table = new QTableWidget(0, kColumns, this);
     m_table->setObjectName(QStringLiteral("choiceOptions"));
     m_table->setAccessibleName(tr("Options of the choice"));
-    m_table->setHorizontalHeaderLabels({tr("Czech"), tr("English")});
+    QStringList heads;
+    for (int c = 0; c < kColumns; ++c)
+        heads << lessons::languageTitle(columnLanguage(c));
+    m_table->setHorizontalHeaderLabels(heads);
     m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::Stretch);
     m_table->setSelectionMode(QAbstractItemView::SingleSelection);
     m_table->setTabKeyNavigation(false); // Tab leaves the table for the buttons
@@ -60,10 +60,7 @@ ChoiceEditor::ChoiceEditor(QWidget* parent) : QWidget(parent)
         connect(b, &QPushButton::clicked, this, slot);
         return b;
     };
-    m_add = button(tr("Add optio&n"), "addChoiceOption", [this] {
-        addOption(QLocale().language() == QLocale::Czech ? QStringLiteral("cs")
-                                                         : QStringLiteral("en"));
-    });
+    m_add = button(tr("Add optio&n"), "addChoiceOption", [this] { addOption(currentLanguage()); });
     m_remove = button(tr("Remove option"), "removeChoiceOption", [this] { removeOption(); });
     m_up = button(tr("Option up"), "choiceOptionUp", [this] { moveOption(-1); });
     m_down = button(tr("Option down"), "choiceOptionDown", [this] { moveOption(1); });
@@ -89,17 +86,14 @@ QJsonArray ChoiceEditor::options() const
 {
     QJsonArray out;
     for (int r = 0; r < m_table->rowCount(); ++r) {
-        QJsonObject option;
-        for (int c = 0; c < 2; ++c) {
+        // A language left empty is not written: the student reads the option in one it has
+        // (an option with none is refused, and marked, by the loader).
+        QJsonValue option = QJsonObject();
+        for (int c = 0; c < kColumns; ++c) {
             const QTableWidgetItem* item = m_table->item(r, c);
-            const QString text = item ? item->text() : QString();
-            if (!text.isEmpty()) // a language left empty is missing: the loader warns of it
-                option.insert(QLatin1String(kColumnLanguages[static_cast<std::size_t>(c)]), text);
+            option = withWrittenText(option, columnLanguage(c), item ? item->text() : QString());
         }
-        // English must be there (an empty text is refused, and marked, by the loader).
-        if (!option.contains(u"en"))
-            option.insert(QStringLiteral("en"), QString());
-        out.append(option);
+        out.append(option.isNull() ? QJsonValue(QJsonObject()) : option);
     }
     return out;
 }
@@ -118,21 +112,15 @@ void ChoiceEditor::showOptions(const QJsonArray& options, int right)
     m_table->setRowCount(static_cast<int>(options.size()));
     m_right->clear();
     for (int r = 0; r < options.size(); ++r) {
-        for (int c = 0; c < 2; ++c) {
-            const QString language = QLatin1String(kColumnLanguages[static_cast<std::size_t>(c)]);
+        for (int c = 0; c < kColumns; ++c) {
             // The items are kept, not made anew: this runs while one of them reports its edit.
-            const QString text = optionText(options.at(r), language);
+            const QString text = writtenText(options.at(r), columnLanguage(c));
             if (QTableWidgetItem* item = m_table->item(r, c))
                 item->setText(text);
             else
                 m_table->setItem(r, c, new QTableWidgetItem(text));
         }
-        QString shown = optionText(options.at(r), QLocale().language() == QLocale::Czech
-                                                      ? QStringLiteral("cs")
-                                                      : QStringLiteral("en"));
-        if (shown.isEmpty())
-            shown = optionText(options.at(r), QStringLiteral("en"));
-        m_right->addItem(QStringLiteral("%1. %2").arg(r + 1).arg(shown));
+        m_right->addItem(QStringLiteral("%1. %2").arg(r + 1).arg(shownText(options.at(r))));
     }
     m_right->setCurrentIndex(std::clamp(right, 0, static_cast<int>(options.size()) - 1));
     if (current >= 0 && current < m_table->rowCount())

@@ -39,7 +39,7 @@ signals:
     void edited();
 
 private:
-    /// The options as the table shows them, each {"cs": ..., "en": ...}.
+    /// The options as the table shows them, each an object of the languages written.
     QJsonArray options() const;
     void showOptions(const QJsonArray& options, int right);
     void showButtons();

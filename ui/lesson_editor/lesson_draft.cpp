@@ -4,6 +4,8 @@
 #include "format/atomic_file.h"
 #include "format/data_dirs.h"
 #include "format/languages.h"
+#include "format/lesson_schema.h"
+#include "format/scene_loader.h"
 #include "format/scene_writer.h"
 
 #include <QDate>
@@ -90,7 +92,8 @@ void LessonDraft::newLesson(const QString& title, const lessons::Scene& scene)
     const QString language = lessons::lessonLanguage();
     QJsonObject step{
         {QStringLiteral("title"), QJsonObject{{language, tr("Step 1")}}},
-        {QStringLiteral("scene"), QJsonDocument::fromJson(lessons::sceneToJson(scene)).object()}};
+        {QStringLiteral("scene"), QJsonDocument::fromJson(lessons::sceneToJson(scene)).object()},
+        {QStringLiteral("autoplay"), false}};
     m_pack = {};
     m_pack.lesson = QJsonObject{{QStringLiteral("rigidlab-lesson"), lessons::kLessonFormatVersion},
                                 {QStringLiteral("title"), QJsonObject{{language, title}}},
@@ -152,7 +155,7 @@ QString LessonDraft::text(int step, const QString& key, const QString& language)
     if (v.isObject())
         return joinText(v.toObject().value(language));
     // A plain string (or list of lines) is English.
-    return language == u"en" ? joinText(v) : QString();
+    return language == lessons::kFallbackLanguage ? joinText(v) : QString();
 }
 
 QStringList LessonDraft::missingLanguages(int step, const QString& key) const
@@ -214,7 +217,7 @@ void LessonDraft::setText(int step, const QString& key, const QString& language,
     const QJsonValue old = value(step, key);
     QJsonObject texts = old.isObject() ? old.toObject() : QJsonObject();
     if (!old.isObject() && !old.isNull() && !old.isUndefined())
-        texts.insert(QStringLiteral("en"), old); // a plain text was English
+        texts.insert(lessons::kFallbackLanguage.toString(), old); // a plain text was English
     if (newText.isEmpty()) {
         texts.remove(language);
     } else if (key == u"text" && newText.contains(u'\n')) {
@@ -237,8 +240,10 @@ void LessonDraft::addStep(int after)
     // first step).
     const QJsonValue scene =
         steps.isEmpty() ? QJsonValue() : steps.at(std::max(at - 1, 0)).toObject().value(u"scene");
+    // A new step waits for Play, as every shipped one does: the class reads and predicts first.
     QJsonObject step{{QStringLiteral("title"),
-                      QJsonObject{{lessons::lessonLanguage(), tr("Step %1").arg(at + 1)}}}};
+                      QJsonObject{{lessons::lessonLanguage(), tr("Step %1").arg(at + 1)}}},
+                     {QStringLiteral("autoplay"), false}};
     if (!scene.isUndefined())
         step.insert(QStringLiteral("scene"), scene);
     steps.insert(at, step);
@@ -279,6 +284,34 @@ void LessonDraft::setStepScene(int index, const lessons::Scene& scene)
              QJsonDocument::fromJson(lessons::sceneToJson(scene)).object(), tr("Set scene"));
 }
 
+QJsonObject LessonDraft::sceneObject(int step) const
+{
+    const QJsonValue ref = value(step, QStringLiteral("scene"));
+    if (ref.isObject())
+        return ref.toObject();
+    const auto packed = m_pack.scenes.find(ref.toString());
+    return packed != m_pack.scenes.end() ? packed->second : QJsonObject();
+}
+
+std::optional<lessons::Scene> LessonDraft::stepScene(int step, const QString& language,
+                                                     QString& error) const
+{
+    // The scene alone: a text of the lesson not yet written, or any other problem elsewhere in
+    // it, does not keep the teacher from drawing the step's scene.
+    const QJsonObject object = sceneObject(step);
+    if (object.isEmpty()) {
+        error = tr("Step %1 has no scene yet.").arg(step + 1);
+        return std::nullopt;
+    }
+    const lessons::SceneLoadResult r = lessons::loadSceneObject(
+        object, tr("step %1's scene").arg(step + 1), lessons::SceneLoadOptions{language});
+    if (!r.ok) {
+        error = r.error;
+        return std::nullopt;
+    }
+    return r.scene;
+}
+
 void LessonDraft::setAuthor(const QString& author)
 {
     lessons::LessonPack next = m_pack;
@@ -311,9 +344,13 @@ QByteArray LessonDraft::runKey() const
     QJsonArray steps;
     for (const QJsonValue& v : m_pack.lesson.value(u"steps").toArray()) {
         const QJsonObject step = v.toObject();
+        // The fields the runs depend on, as the lesson schema's rows say.
         QJsonObject run;
-        for (const char* key : {"settings", "exportTime", "compare", "allow", "questions"})
-            run.insert(QLatin1String(key), step.value(QLatin1String(key)));
+        for (const lessons::schema::StepField& row : lessons::schema::stepFields()) {
+            const QString key = QString::fromUtf8(row.key.data(), qsizetype(row.key.size()));
+            if (row.run)
+                run.insert(key, step.value(key));
+        }
         // A scene named by its file is the pack's copy of that file.
         const QJsonValue scene = step.value(u"scene");
         const auto packed = m_pack.scenes.find(scene.toString());

@@ -47,6 +47,12 @@ public:
     QStringList missingLanguages(int step, const QString& key) const;
     /// A value of the lesson or of a step as the file holds it (Null when absent).
     QJsonValue value(int step, const QString& key) const;
+    /// The scene document of a step, inline or the pack's copy of its file; empty when none.
+    QJsonObject sceneObject(int step) const;
+    /// The step's scene read in `language`, whatever the rest of the lesson says; nothing
+    /// with `error` set when the scene itself does not load.
+    std::optional<lessons::Scene> stepScene(int step, const QString& language,
+                                            QString& error) const;
 
     // Edits, each one undo step; `name` is what Edit › Undo says.
     void setText(int step, const QString& key, const QString& language, const QString& text);

@@ -40,18 +40,18 @@ namespace rigidlab::ui {
 
 namespace {
 
-/// The two languages side by side: Czech on the left, English on the right.
-constexpr std::array<const char*, 2> kCodes{"cs", "en"};
-
+/// The code of the editor's column `language` (editorLanguages: the window's first).
 QString code(int language)
 {
-    return QString::fromLatin1(kCodes[static_cast<std::size_t>(language)]);
+    return editorLanguages()[static_cast<std::size_t>(language)];
 }
 
 QString languageName(int language)
 {
-    return language == 0 ? LessonEditor::tr("Czech") : LessonEditor::tr("English");
+    return lessons::languageTitle(code(language));
 }
+
+constexpr int kColumns = static_cast<int>(kEditorLanguages);
 
 /// How often the unsaved lesson is written to the autosave [ms].
 constexpr int kAutosaveMs = 30'000;
@@ -134,11 +134,11 @@ QStringList LessonEditor::keptLessons()
 
 void LessonEditor::buildLessonFields(QGridLayout& grid)
 {
-    for (int l = 0; l < 2; ++l) {
+    for (int l = 0; l < kColumns; ++l) {
         auto* head = new QLabel(languageName(l), this);
         grid.addWidget(head, 0, l + 1);
     }
-    const std::array<std::pair<QString, std::array<QLineEdit*, 2>*>, 3> rows{{
+    const std::array<std::pair<QString, std::array<QLineEdit*, kEditorLanguages>*>, 3> rows{{
         {tr("Lesson &title"), &m_title},
         {tr("&Summary"), &m_summary},
         {tr("&Level"), &m_level},
@@ -148,7 +148,7 @@ void LessonEditor::buildLessonFields(QGridLayout& grid)
     for (int r = 0; r < 3; ++r) {
         auto* label = new QLabel(rows[r].first, this);
         grid.addWidget(label, r + 1, 0);
-        for (int l = 0; l < 2; ++l) {
+        for (int l = 0; l < kColumns; ++l) {
             auto* edit = new QLineEdit(this);
             QString plain = rows[r].first;
             plain.remove(u'&');
@@ -263,7 +263,7 @@ QWidget* LessonEditor::buildStepTexts()
     auto* box = new QWidget(this);
     auto* grid = new QGridLayout(box);
     grid->setContentsMargins(0, 0, 0, 0);
-    for (int l = 0; l < 2; ++l) {
+    for (int l = 0; l < kColumns; ++l) {
         const QString lang = languageName(l);
         auto* titleLabel = new QLabel(tr("Step title (%1)").arg(lang), box);
         auto* title = new QLineEdit(box);
@@ -288,8 +288,6 @@ QWidget* LessonEditor::buildStepTexts()
         auto* missing = new QLabel(box);
         missing->setObjectName(QStringLiteral("missing_%1").arg(code(l)));
         missing->setTextFormat(Qt::PlainText);
-        missing->setText(tr("⚠ %1: not written yet").arg(lang));
-        missing->setAccessibleName(tr("%1: not written yet").arg(lang));
         auto* preview = new StepText(box);
         preview->setObjectName(QStringLiteral("preview_%1").arg(code(l)));
         preview->setAccessibleName(tr("Preview (%1)").arg(lang));

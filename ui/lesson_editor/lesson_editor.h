@@ -2,14 +2,16 @@
 #pragma once
 // The lesson editor's window: the lesson's title, summary, level and minutes; its steps in a
 // list (each marked with what is wrong in it) with buttons to add, remove, move and duplicate
-// them; the selected step's title and text in Czech and English side by side, each with the
-// text as the player shows it and a mark where a language is missing. Everything it shows is
+// them; the selected step's title and text in each language side by side (the window's first),
+// each with the text as the player shows it and a quiet mark where a language is missing (the
+// student then reads the text in the language it has). Everything it shows is
 // read back from its LessonDraft and every change is one of the draft's undoable edits, so
 // the window's Undo and Redo are the draft's own. It saves .rlesson files and, while the
 // lesson has unsaved edits, writes a copy of it now and then (the autosave a crash leaves):
 // a file of its own, held by a lock file while the editor is open, so that two editors never
 // write over each other and a crash's autosave is told from a live one.
 
+#include "lesson_editor/editor_parts.h"
 #include "lesson_editor/lesson_draft.h"
 
 #include <QWidget>
@@ -61,6 +63,9 @@ public:
     QString save();
     /// Save As to `path` (.rlesson). Returns the error.
     QString saveAs(const QString& path);
+    /// Where Save As first offers to save a new lesson: a file named after its title in the
+    /// teacher's own lessons folder (so that the window lists it), not over another one.
+    QString defaultSavePath() const;
     /// A new editor's autosave: a file of its own in the lab's data folder.
     static QString newAutosavePath();
     /// The autosaves that no open editor (of any running lab) holds, newest first: what
@@ -114,15 +119,15 @@ private:
 
     LessonDraft m_draft;
     bool m_refreshing = false;
-    std::array<QLineEdit*, 2> m_title{};
-    std::array<QLineEdit*, 2> m_summary{};
-    std::array<QLineEdit*, 2> m_level{};
+    std::array<QLineEdit*, kEditorLanguages> m_title{};
+    std::array<QLineEdit*, kEditorLanguages> m_summary{};
+    std::array<QLineEdit*, kEditorLanguages> m_level{};
     QSpinBox* m_minutes = nullptr;
     QListWidget* m_steps = nullptr;
-    std::array<QLineEdit*, 2> m_stepTitle{};
-    std::array<QPlainTextEdit*, 2> m_stepText{};
-    std::array<QLabel*, 2> m_missing{};
-    std::array<StepText*, 2> m_preview{};
+    std::array<QLineEdit*, kEditorLanguages> m_stepTitle{};
+    std::array<QPlainTextEdit*, kEditorLanguages> m_stepText{};
+    std::array<QLabel*, kEditorLanguages> m_missing{};
+    std::array<StepText*, kEditorLanguages> m_preview{};
     QLabel* m_problems = nullptr;
     QuestionEditor* m_questions = nullptr;
     StepSettingsEditor* m_settings = nullptr;

@@ -9,6 +9,7 @@
 #include "lesson_player/step_text.h"
 
 #include "format/data_dirs.h"
+#include "format/scene_schema.h"
 #include "run/measurements.h"
 
 #include <QAction>
@@ -32,21 +33,13 @@ namespace rigidlab::ui {
 
 namespace {
 
+/// The code of the editor's column `language` (editorLanguages: the window's first).
 QString codeOf(int language)
 {
-    return language == 0 ? QStringLiteral("cs") : QStringLiteral("en");
+    return editorLanguages()[static_cast<std::size_t>(language)];
 }
 
-QString nameOf(const QString& code)
-{
-    return code == u"cs" ? LessonEditor::tr("Czech") : LessonEditor::tr("English");
-}
-
-/// The language the lab shows, for the checks' messages.
-QString shownLanguage()
-{
-    return QLocale().language() == QLocale::Czech ? QStringLiteral("cs") : QStringLiteral("en");
-}
+constexpr int kColumns = static_cast<int>(kEditorLanguages);
 
 } // namespace
 
@@ -156,12 +149,22 @@ QString LessonEditor::saveAs(const QString& path)
     return error;
 }
 
+QString LessonEditor::defaultSavePath() const
+{
+    // Named after the lesson's title, in the teacher's own lessons folder, where the window's
+    // Lessons list finds it; never over a lesson already there.
+    const QDir folder(lessons::userLessonsDir());
+    const QString stem = lessons::schema::safeFileStem(
+        shownText(m_draft.value(-1, QStringLiteral("title"))), tr("lesson"));
+    QString path = folder.filePath(stem + QStringLiteral(".rlesson"));
+    for (int n = 2; QFileInfo::exists(path); ++n)
+        path = folder.filePath(QStringLiteral("%1_%2.rlesson").arg(stem).arg(n));
+    return path;
+}
+
 void LessonEditor::saveAsDialog()
 {
-    const QString start =
-        m_draft.path().isEmpty()
-            ? QDir(lessons::userLessonsDir()).filePath(tr("lesson") + QStringLiteral(".rlesson"))
-            : m_draft.path();
+    const QString start = m_draft.path().isEmpty() ? defaultSavePath() : m_draft.path();
     const QString path = QFileDialog::getSaveFileName(this, tr("Save lesson as"), start,
                                                       tr("Lessons in one file (*.rlesson)"));
     if (path.isEmpty())
@@ -215,13 +218,15 @@ void LessonEditor::sendStepScene()
     const int step = currentStep();
     if (step < 0)
         return;
+    // Only the scene must load; what it says when it does not joins the problems below, with
+    // no dialog to dismiss.
     QString error;
-    const std::optional<lessons::Lesson> lesson = m_draft.lesson(shownLanguage(), error);
-    if (!lesson || step >= static_cast<int>(lesson->steps.size())) {
-        QMessageBox::warning(this, tr("Edit the step's scene"), error);
+    const std::optional<lessons::Scene> scene = m_draft.stepScene(step, currentLanguage(), error);
+    if (!scene) {
+        m_problems->setText(tr("The step's scene does not open: %1").arg(error));
         return;
     }
-    emit editStepScene(lesson->steps[static_cast<std::size_t>(step)].scene);
+    emit editStepScene(*scene);
 }
 
 void LessonEditor::textEdited(int step, const QString& key, int language, const QString& text)
@@ -245,14 +250,17 @@ void LessonEditor::refresh()
 
 void LessonEditor::refreshLesson()
 {
-    const std::array<std::pair<QString, std::array<QLineEdit*, 2>*>, 3> rows{{
+    const std::array<std::pair<QString, std::array<QLineEdit*, kEditorLanguages>*>, 3> rows{{
         {QStringLiteral("title"), &m_title},
         {QStringLiteral("summary"), &m_summary},
         {QStringLiteral("level"), &m_level},
     }};
     for (const auto& [key, edits] : rows)
-        for (int l = 0; l < 2; ++l) {
-            showText((*edits)[static_cast<std::size_t>(l)], m_draft.text(-1, key, codeOf(l)));
+        for (int l = 0; l < kColumns; ++l) {
+            QLineEdit* edit = (*edits)[static_cast<std::size_t>(l)];
+            showText(edit, m_draft.text(-1, key, codeOf(l)));
+            // The quiet mark of a text not written in this language: what shows instead.
+            edit->setPlaceholderText(shownText(m_draft.value(-1, key)));
         }
     m_minutes->setValue(m_draft.value(-1, QStringLiteral("minutes")).toInt());
 }
@@ -263,7 +271,7 @@ QString LessonEditor::stepMarks(int index, const LessonDraft::Check& check,
     QStringList marks;
     for (const QString& key : {QStringLiteral("title"), QStringLiteral("text")})
         for (const QString& code : m_draft.missingLanguages(index, key)) {
-            const QString m = tr("no %1").arg(nameOf(code));
+            const QString m = tr("no %1").arg(lessons::languageTitle(code));
             if (!marks.contains(m))
                 marks.append(m);
         }
@@ -276,7 +284,7 @@ QString LessonEditor::stepMarks(int index, const LessonDraft::Check& check,
 void LessonEditor::checkRuns()
 {
     QString error;
-    const std::optional<lessons::Lesson> lesson = m_draft.lesson(shownLanguage(), error);
+    const std::optional<lessons::Lesson> lesson = m_draft.lesson(currentLanguage(), error);
     if (lesson)
         m_checks->check(*lesson, m_draft.runKey());
     else
@@ -285,7 +293,7 @@ void LessonEditor::checkRuns()
 
 void LessonEditor::refreshSteps()
 {
-    const LessonDraft::Check check = m_draft.check(shownLanguage());
+    const LessonDraft::Check check = m_draft.check(currentLanguage());
     checkRuns();
     const std::vector<StepFinding>& findings = m_checks->findings();
     const int keep = currentStep();
@@ -296,9 +304,7 @@ void LessonEditor::refreshSteps()
         m_steps->addItem(QString());
     QStringList runProblems;
     for (int i = 0; i < m_draft.stepCount(); ++i) {
-        QString title = m_draft.text(i, QStringLiteral("title"), shownLanguage());
-        if (title.isEmpty())
-            title = m_draft.text(i, QStringLiteral("title"), codeOf(shownLanguage() == u"cs"));
+        const QString title = shownText(m_draft.value(i, QStringLiteral("title")));
         const QStringList runLines = i < static_cast<int>(findings.size())
                                          ? stepCheckLines(findings[static_cast<std::size_t>(i)])
                                          : QStringList();
@@ -338,7 +344,14 @@ void LessonEditor::refreshStepTexts()
     m_refreshing = true;
     const QStringList missingTitle = m_draft.missingLanguages(step, QStringLiteral("title"));
     const QStringList missingText = m_draft.missingLanguages(step, QStringLiteral("text"));
-    for (int l = 0; l < 2; ++l) {
+    QStringList written; // the languages the step's title or text is written in
+    for (const lessons::Language& language : lessons::kLanguages) {
+        const QString c = language.code.toString();
+        if (step >= 0 && (!m_draft.text(step, QStringLiteral("title"), c).isEmpty() ||
+                          !m_draft.text(step, QStringLiteral("text"), c).isEmpty()))
+            written.append(c);
+    }
+    for (int l = 0; l < kColumns; ++l) {
         const auto i = static_cast<std::size_t>(l);
         const QString c = codeOf(l);
         const QString title = step < 0 ? QString() : m_draft.text(step, QStringLiteral("title"), c);
@@ -346,9 +359,19 @@ void LessonEditor::refreshStepTexts()
         showText(m_stepTitle[i], title);
         if (m_stepText[i]->toPlainText() != text)
             m_stepText[i]->setPlainText(text);
-        m_missing[i]->setVisible(step >= 0 &&
+        // A quiet mark, not a refusal: the student reads the language the text has.
+        const QString shownIn = lessons::textLanguage(c, written);
+        m_missing[i]->setVisible(step >= 0 && !shownIn.isEmpty() &&
                                  (missingTitle.contains(c) || missingText.contains(c)));
-        m_preview[i]->showMarkdown(lessons::keepUnitsTogether(text));
+        m_missing[i]->setText(tr("⚠ %1: not written yet; the student reads the %2 text")
+                                  .arg(lessons::languageTitle(c), lessons::languageTitle(shownIn)));
+        m_missing[i]->setAccessibleName(m_missing[i]->text().mid(2));
+        m_stepTitle[i]->setPlaceholderText(
+            step < 0 ? QString() : shownText(m_draft.value(step, QStringLiteral("title"))));
+        // The preview is what the student reads in this language, the fallback included.
+        m_preview[i]->showMarkdown(lessons::keepUnitsTogether(
+            text.isEmpty() && step >= 0 ? m_draft.text(step, QStringLiteral("text"), shownIn)
+                                        : text));
         m_stepTitle[i]->setEnabled(step >= 0);
         m_stepText[i]->setEnabled(step >= 0);
     }

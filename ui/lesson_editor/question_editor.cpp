@@ -71,14 +71,29 @@ const Kind& kindOf(const QString& id)
     return kKinds[0];
 }
 
+/// The code of the editor's column `l` (editorLanguages: the window's first).
 QString langCode(int l)
 {
-    return l == 0 ? QStringLiteral("cs") : QStringLiteral("en");
+    return editorLanguages()[static_cast<std::size_t>(l)];
 }
 
-QString shownLanguage()
+constexpr int kColumns = static_cast<int>(kEditorLanguages);
+
+/// The question a new measured question asks, in the window's language, for what it measures:
+/// it follows the kind, the body (by its label) and the time the teacher chooses.
+QString defaultPrompt(const QJsonObject& measure, const QString& bodyName)
 {
-    return QLocale().language() == QLocale::Czech ? QStringLiteral("cs") : QStringLiteral("en");
+    const Kind& k = kindOf(measure.value(u"kind").toString());
+    const QString quantity = QuestionEditor::tr(k.name);
+    const QString time = QLocale().toString(measure.value(u"time").toDouble(), 'g', 4);
+    if (!k.time)
+        return QuestionEditor::tr("How high does %1 rise after its bounce %2?")
+            .arg(bodyName)
+            .arg(measure.value(u"n").toInt(1));
+    if (!k.body)
+        return QuestionEditor::tr("What is the %1 at t = %2\u00a0s?").arg(quantity, time);
+    return QuestionEditor::tr("What is the %1 of %2 at t = %3\u00a0s?")
+        .arg(quantity, bodyName, time);
 }
 
 } // namespace
@@ -124,15 +139,7 @@ QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
 QFormLayout* QuestionEditor::buildForm()
 {
     auto* form = new QFormLayout;
-    for (int l = 0; l < 2; ++l) {
-        auto* e = new QLineEdit(this);
-        e->setObjectName(QStringLiteral("questionPrompt_%1").arg(langCode(l)));
-        const QString name = l == 0 ? tr("Question (Czech)") : tr("Question (English)");
-        e->setAccessibleName(name);
-        connect(e, &QLineEdit::textEdited, this, &QuestionEditor::edited);
-        m_prompt[static_cast<std::size_t>(l)] = e;
-        form->addRow(name, e);
-    }
+    addLanguageFields(form, QStringLiteral("questionPrompt"), tr("Question (%1)"), m_prompt);
     m_questionKind = new QComboBox(this);
     m_questionKind->setObjectName(QStringLiteral("questionType"));
     m_questionKind->setAccessibleName(tr("Kind of question"));
@@ -183,6 +190,11 @@ QFormLayout* QuestionEditor::buildForm()
     m_set->setToolTip(tr("A setting the student changes with the controls before the run "
                          "this question measures (\"Set e = 0 and run again\")"));
     form->addRow(tr("Stu&dent sets first"), m_set);
+    // The hint, per language: what the student reads after a wrong first try.
+    addLanguageFields(form, QStringLiteral("questionHint"), tr("Hint (%1)"), m_hint);
+    for (QLineEdit* e : m_hint)
+        e->setToolTip(tr("What the student reads after a wrong first answer; empty: \"Try once "
+                         "more.\""));
     form->addRow(m_holdRun);
     connect(m_kind, &QComboBox::activated, this, &QuestionEditor::edited);
     connect(m_body, &QComboBox::activated, this, &QuestionEditor::edited);
@@ -192,6 +204,20 @@ QFormLayout* QuestionEditor::buildForm()
     connect(m_holdRun, &QCheckBox::toggled, this, &QuestionEditor::edited);
     connect(m_set, &QuestionSetEditor::edited, this, &QuestionEditor::edited);
     return form;
+}
+
+void QuestionEditor::addLanguageFields(QFormLayout* form, const QString& name, const QString& label,
+                                       std::array<QLineEdit*, kEditorLanguages>& fields)
+{
+    for (int l = 0; l < kColumns; ++l) {
+        auto* e = new QLineEdit(this);
+        e->setObjectName(name + u'_' + langCode(l));
+        const QString shown = label.arg(lessons::languageTitle(langCode(l)));
+        e->setAccessibleName(shown);
+        connect(e, &QLineEdit::textEdited, this, &QuestionEditor::edited);
+        fields[static_cast<std::size_t>(l)] = e;
+        form->addRow(shown, e);
+    }
 }
 
 void QuestionEditor::setStep(int step)
@@ -230,8 +256,9 @@ QJsonObject QuestionEditor::defaultMeasured() const
 {
     const Kind& k = kKinds[1]; // speed at a time: any body, any scene
     QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}, {QStringLiteral("time"), 1}};
-    if (m_body->count() > 0)
-        measure.insert(QStringLiteral("body"), m_body->itemData(0).toString());
+    const QList<std::pair<QString, QString>> bodies = movingBodies();
+    if (!bodies.isEmpty())
+        measure.insert(QStringLiteral("body"), bodies.front().first);
     return QJsonObject{{QStringLiteral("measure"), measure},
                        {QStringLiteral("unit"), QLatin1String(k.unit)},
                        {QStringLiteral("tolerance"), 0.05}};
@@ -246,8 +273,8 @@ void QuestionEditor::setChoice(bool choice)
         for (const char* key : {"measure", "unit", "tolerance", "absoluteTolerance"})
             q.remove(QLatin1String(key));
         q.insert(QStringLiteral("choices"),
-                 QJsonArray{QJsonObject{{shownLanguage(), tr("Option %1").arg(1)}},
-                            QJsonObject{{shownLanguage(), tr("Option %1").arg(2)}}});
+                 QJsonArray{QJsonObject{{currentLanguage(), tr("Option %1").arg(1)}},
+                            QJsonObject{{currentLanguage(), tr("Option %1").arg(2)}}});
         q.insert(QStringLiteral("answer"), 0);
     } else {
         q.remove(QStringLiteral("choices"));
@@ -265,8 +292,10 @@ void QuestionEditor::addQuestion(bool predict)
         return;
     QJsonArray all = m_draft.value(m_step, QStringLiteral("questions")).toArray();
     QJsonObject q = defaultMeasured();
+    const QJsonObject measure = q.value(u"measure").toObject();
     q.insert(QStringLiteral("prompt"),
-             QJsonObject{{shownLanguage(), tr("How fast is it at 1 s?")}});
+             QJsonObject{{currentLanguage(),
+                          defaultPrompt(measure, bodyName(measure.value(u"body").toString()))}});
     if (predict)
         q.insert(QStringLiteral("holdBack"), QJsonArray{QStringLiteral("run")});
     all.append(q);
@@ -291,16 +320,24 @@ void QuestionEditor::edited()
     if (m_refreshing)
         return;
     QJsonObject q = question();
-    QJsonObject prompt = q.value(u"prompt").isObject()
-                             ? q.value(u"prompt").toObject()
-                             : QJsonObject{{QStringLiteral("en"), q.value(u"prompt")}};
-    for (int l = 0; l < 2; ++l)
-        prompt.insert(langCode(l), m_prompt[static_cast<std::size_t>(l)]->text());
-    q.insert(QStringLiteral("prompt"), prompt);
+    const QJsonObject before = q;
+    // A language left empty is not written: the student reads the text in one it has.
+    for (const auto& [key, fields] : {std::pair{QStringLiteral("prompt"), &m_prompt},
+                                      std::pair{QStringLiteral("hint"), &m_hint}}) {
+        QJsonValue text = q.value(key);
+        for (int l = 0; l < kColumns; ++l)
+            text =
+                withWrittenText(text, langCode(l), (*fields)[static_cast<std::size_t>(l)]->text());
+        if (text.isNull())
+            q.remove(key);
+        else
+            q.insert(key, text);
+    }
     if (q.contains(u"choices"))
         q = m_choices->applyTo(q);
     else
         applyMeasured(q);
+    followMeasure(before, q);
     QJsonArray hold = q.value(u"holdBack").toArray();
     const bool held = hold.contains(QStringLiteral("run"));
     if (m_holdRun->isChecked() && !held)
@@ -314,6 +351,46 @@ void QuestionEditor::edited()
     else
         q.insert(QStringLiteral("holdBack"), hold);
     store(q);
+}
+
+void QuestionEditor::followMeasure(const QJsonObject& before, QJsonObject& q) const
+{
+    // The prompt the editor wrote follows what is measured, until the teacher writes their own.
+    const QJsonObject was = before.value(u"measure").toObject();
+    const QJsonObject now = q.value(u"measure").toObject();
+    if (was == now || now.isEmpty())
+        return;
+    const QString language = currentLanguage();
+    const QJsonValue prompt = q.value(u"prompt");
+    if (writtenText(prompt, language) !=
+        defaultPrompt(was, bodyName(was.value(u"body").toString())))
+        return;
+    q.insert(QStringLiteral("prompt"),
+             withWrittenText(prompt, language,
+                             defaultPrompt(now, bodyName(now.value(u"body").toString()))));
+}
+
+QList<std::pair<QString, QString>> QuestionEditor::movingBodies() const
+{
+    // Read from the scene itself, so that they are listed even while the lesson has an error.
+    QList<std::pair<QString, QString>> out;
+    for (const QJsonValue b : m_draft.sceneObject(m_step).value(u"bodies").toArray()) {
+        const QJsonObject body = b.toObject();
+        const QString id = body.value(u"id").toString();
+        if (id.isEmpty() || body.value(u"type").toString() == u"static")
+            continue;
+        const QString label = shownText(body.value(u"label"));
+        out.append({id, label.isEmpty() ? id : label});
+    }
+    return out;
+}
+
+QString QuestionEditor::bodyName(const QString& id) const
+{
+    for (const auto& [bodyId, name] : movingBodies())
+        if (bodyId == id)
+            return name;
+    return id;
 }
 
 void QuestionEditor::applyMeasured(QJsonObject& q)
@@ -351,10 +428,7 @@ void QuestionEditor::refresh()
     while (m_list->count() < all.size())
         m_list->addItem(QString());
     for (int i = 0; i < all.size(); ++i) {
-        const QJsonValue p = all.at(i).toObject().value(u"prompt");
-        QString text = p.isObject() ? p.toObject().value(shownLanguage()).toString() : p.toString();
-        if (text.isEmpty() && p.isObject())
-            text = p.toObject().value(u"en").toString();
+        const QString text = shownText(all.at(i).toObject().value(u"prompt"));
         const bool predict =
             all.at(i).toObject().value(u"holdBack").toArray().contains(QStringLiteral("run"));
         // The kind first: a long prompt ends in "…", its tooltip has all of it.
@@ -364,31 +438,28 @@ void QuestionEditor::refresh()
     }
     m_list->setCurrentRow(all.isEmpty() ? -1 : keep);
 
-    // The bodies of the step's scene that move, by id, read from the scene itself (so that
-    // they are listed even while the lesson has an error).
+    // The bodies of the step's scene that move, by their labels (the id where there is none),
+    // each kept by its id.
     const QJsonObject q = question();
     const QJsonObject measure = q.value(u"measure").toObject();
-    const QJsonValue sceneRef = m_draft.value(m_step, QStringLiteral("scene"));
-    const QJsonObject scene = sceneRef.isObject() ? sceneRef.toObject()
-                              : m_draft.pack().scenes.count(sceneRef.toString()) != 0
-                                  ? m_draft.pack().scenes.at(sceneRef.toString())
-                                  : QJsonObject();
     m_body->clear();
-    for (const QJsonValue b : scene.value(u"bodies").toArray()) {
-        const QString id = b.toObject().value(u"id").toString();
-        if (!id.isEmpty() && b.toObject().value(u"type").toString() != u"static")
-            m_body->addItem(id, id);
-    }
+    for (const auto& [id, name] : movingBodies())
+        m_body->addItem(name, id);
     const QString body = measure.value(u"body").toString();
     if (!body.isEmpty() && m_body->findData(body) < 0)
         m_body->addItem(tr("%1 (not in the scene)").arg(body), body);
     m_body->setCurrentIndex(m_body->findData(body));
 
-    const QJsonValue p = q.value(u"prompt");
-    for (int l = 0; l < 2; ++l)
-        showText(m_prompt[static_cast<std::size_t>(l)],
-                 p.isObject() ? p.toObject().value(langCode(l)).toString()
-                              : (l == 1 ? p.toString() : QString()));
+    for (const auto& [key, fields] : {std::pair{QStringLiteral("prompt"), &m_prompt},
+                                      std::pair{QStringLiteral("hint"), &m_hint}}) {
+        const QJsonValue v = q.value(key);
+        for (int l = 0; l < kColumns; ++l) {
+            QLineEdit* field = (*fields)[static_cast<std::size_t>(l)];
+            showText(field, writtenText(v, langCode(l)));
+            // The quiet mark of a language not written: the text the student reads instead.
+            field->setPlaceholderText(shownText(v));
+        }
+    }
     const Kind& k = kindOf(measure.value(u"kind").toString());
     m_kind->setCurrentIndex(m_kind->findData(QLatin1String(k.id)));
     m_body->setEnabled(k.body);
@@ -430,13 +501,19 @@ void QuestionEditor::showAnswer()
         return;
     }
     QString error;
-    const std::optional<lessons::Lesson> lesson = m_draft.lesson(shownLanguage(), error);
+    const std::optional<lessons::Lesson> lesson = m_draft.lesson(currentLanguage(), error);
     if (!lesson || m_step >= static_cast<int>(lesson->steps.size())) {
-        m_answer->setText(tr("⚠ The lab cannot measure it: %1").arg(error));
+        // Said again at the next refresh: the problem may be in a text, which `depends` leaves
+        // out, and a line about it must not stay once it is fixed.
+        m_measuredFor = {};
+        m_answer->setText(tr("⚠ The lesson has a problem to fix first (see below): %1").arg(error));
         return;
     }
     const lessons::LessonStep& step = lesson->steps[static_cast<std::size_t>(m_step)];
     const lessons::Question& q = step.questions.at(static_cast<std::size_t>(at));
+    // Nothing is measured for a choice: its line says which option is right.
+    m_answer->setAccessibleName(q.isChoice() ? tr("The right option")
+                                             : tr("The answer the lab measures"));
     if (q.isChoice()) {
         m_answer->setText(tr("The student chooses one of %1 options; the right one is “%2”.")
                               .arg(q.choices.size())

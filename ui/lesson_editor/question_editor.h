@@ -2,16 +2,20 @@
 #pragma once
 // The lesson editor's questions of one step: a list of them, buttons to add a measured
 // question or a predict-before-reveal one (which holds the run back until answered) and to
-// remove one, and the selected one's prompt in Czech and English, its kind (a number measured
-// from the run, or a choice), and for a number what is measured (the quantity and the body
-// from lists, the time), its unit and tolerance, and beside them the answer the lab measures
-// for it (the same headless run the player judges against); for a choice, its options
-// (choice_editor.h).
+// remove one, and the selected one's prompt and hint in each language (one is enough), its
+// kind (a number measured from the run, or a choice), and for a number what is measured (the
+// quantity, the body by its label, the time; the prompt the editor wrote follows them), its
+// unit and tolerance, and beside them the answer the lab measures for it (the same headless
+// run the player judges against); for a choice, its options (choice_editor.h).
+
+#include "lesson_editor/editor_parts.h"
 
 #include <QJsonObject>
+#include <QList>
 #include <QWidget>
 
 #include <array>
+#include <utility>
 
 class QCheckBox;
 class QComboBox;
@@ -44,6 +48,9 @@ public:
 
 private:
     QFormLayout* buildForm();
+    /// A field per language in `form`, named `name`_CODE, labelled `label` with the language.
+    void addLanguageFields(QFormLayout* form, const QString& name, const QString& label,
+                           std::array<QLineEdit*, kEditorLanguages>& fields);
     QJsonObject question() const;
     /// Replaces the selected question by `q`, one undoable edit.
     void store(const QJsonObject& q);
@@ -52,13 +59,21 @@ private:
     void applyMeasured(QJsonObject& q);
     /// A measured question, of speed at 1 s of the scene's first body that moves.
     QJsonObject defaultMeasured() const;
+    /// The prompt of `q` rewritten for its measure when it is still the one the editor wrote
+    /// for `before`'s.
+    void followMeasure(const QJsonObject& before, QJsonObject& q) const;
+    /// The step's bodies that move: (id, label or id), in the scene's order.
+    QList<std::pair<QString, QString>> movingBodies() const;
+    /// A body's label (its id where it has none).
+    QString bodyName(const QString& id) const;
     void showAnswer();
 
     LessonDraft& m_draft;
     int m_step = -1;
     bool m_refreshing = false;
     QListWidget* m_list = nullptr;
-    std::array<QLineEdit*, 2> m_prompt{};
+    std::array<QLineEdit*, kEditorLanguages> m_prompt{};
+    std::array<QLineEdit*, kEditorLanguages> m_hint{};
     QComboBox* m_questionKind = nullptr; ///< a number measured from the run, or a choice
     ChoiceEditor* m_choices = nullptr;
     QFormLayout* m_fields = nullptr; ///< the selected question's form

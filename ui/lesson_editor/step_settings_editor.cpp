@@ -5,6 +5,7 @@
 #include "common/step_part_names.h"
 
 #include "format/lesson.h"
+#include "format/lesson_schema.h"
 #include "format/scene_schema.h"
 
 #include <QCheckBox>
@@ -66,13 +67,15 @@ StepSettingsEditor::StepSettingsEditor(LessonDraft& draft, QWidget* parent)
     auto* form = new QFormLayout;
     m_exportTime = new QDoubleSpinBox(this);
     m_exportTime->setObjectName(QStringLiteral("stepExportTime"));
-    m_exportTime->setRange(0.1, lessons::kMaxExportTime);
+    const lessons::schema::StepField& exportRow = *lessons::schema::findStepField("exportTime");
+    m_exportTime->setRange(0.1, exportRow.value.range.max);
     m_exportTime->setDecimals(2);
     m_exportTime->setSuffix(QStringLiteral("\u00a0s"));
     m_exportTime->setAccessibleName(tr("Plots exported at"));
     m_exportTime->setAccessibleDescription(
         tr("The simulated time at which the step's plots are exported, 0.1 to 600 s"));
-    auto* label = new QLabel(tr("Plots exported at"), this);
+    auto* label = new QLabel(
+        QCoreApplication::translate(lessons::schema::kContext, exportRow.value.label), this);
     label->setBuddy(m_exportTime);
     form->addRow(label, m_exportTime);
     connect(m_exportTime, &QDoubleSpinBox::editingFinished, this, [this] {
@@ -84,6 +87,41 @@ StepSettingsEditor::StepSettingsEditor(LessonDraft& draft, QWidget* parent)
         m_draft.setValue(m_step, QStringLiteral("exportTime"), m_exportTime->value(),
                          tr("export time"));
     });
+    m_endTime = new QDoubleSpinBox(this);
+    m_endTime->setObjectName(QStringLiteral("stepEndTime"));
+    m_endTime->setRange(0, lessons::schema::findStepField("endTime")->value.range.max);
+    m_endTime->setDecimals(2);
+    m_endTime->setSuffix(QStringLiteral("\u00a0s"));
+    m_endTime->setSpecialValueText(tr("runs on"));
+    m_endTime->setAccessibleName(tr("The run stops at"));
+    m_endTime->setAccessibleDescription(
+        tr("The simulated time at which the step's run stops, so that nothing runs off the "
+           "stage; 0: it runs on"));
+    auto* endLabel = new QLabel(tr("The run st&ops at"), this);
+    endLabel->setBuddy(m_endTime);
+    form->addRow(endLabel, m_endTime);
+    connect(m_endTime, &QDoubleSpinBox::editingFinished, this, [this] {
+        if (m_refreshing || m_step < 0)
+            return;
+        const double t = m_endTime->value();
+        const QJsonValue value = t > 0 ? QJsonValue(t) : QJsonValue();
+        if (value == m_draft.value(m_step, QStringLiteral("endTime")))
+            return;
+        m_draft.setValue(m_step, QStringLiteral("endTime"), value, tr("end of the run"));
+    });
+    m_waitForPlay = new QCheckBox(tr("Wait for &Play: the step opens paused, so that the class "
+                                     "reads and predicts first"),
+                                  this);
+    m_waitForPlay->setObjectName(QStringLiteral("stepWaitForPlay"));
+    connect(m_waitForPlay, &QCheckBox::toggled, this, [this](bool wait) {
+        if (m_refreshing || m_step < 0)
+            return;
+        // Written either way: a step without the key starts at once, as the format's default.
+        if (m_draft.value(m_step, QStringLiteral("autoplay")) == QJsonValue(!wait))
+            return;
+        m_draft.setValue(m_step, QStringLiteral("autoplay"), !wait, tr("wait for Play"));
+    });
+    form->addRow(m_waitForPlay);
     layout->addLayout(form);
     layout->addStretch(1);
     setStep(-1);
@@ -138,6 +176,13 @@ void StepSettingsEditor::refresh()
     const QJsonValue t = on ? m_draft.value(m_step, QStringLiteral("exportTime")) : QJsonValue();
     m_exportTime->setValue(t.isDouble() ? t.toDouble() : lessons::LessonStep{}.exportTime);
     m_exportTime->setEnabled(on);
+    const QJsonValue end = on ? m_draft.value(m_step, QStringLiteral("endTime")) : QJsonValue();
+    m_endTime->setValue(end.isDouble() ? end.toDouble() : 0.0);
+    m_endTime->setEnabled(on);
+    const QJsonValue autoplay =
+        on ? m_draft.value(m_step, QStringLiteral("autoplay")) : QJsonValue();
+    m_waitForPlay->setChecked(on && !autoplay.toBool(lessons::LessonStep{}.autoplay));
+    m_waitForPlay->setEnabled(on);
     m_refreshing = was;
 }
 

@@ -2,8 +2,9 @@
 #pragma once
 // The lesson editor's page for what a step shows and lets the student change: its plots and
 // panels (the step's "plots" and "panels"), the controls the student may change (its "allow":
-// an unticked control is locked), and the simulated time at which its plots are exported
-// ("exportTime"). Each tick or value is one undoable edit of the draft; what is shown is read
+// an unticked control is locked), the simulated time at which its plots are exported
+// ("exportTime"), the time its run stops at ("endTime") and whether it waits for Play
+// ("autoplay": false). Each tick or value is one undoable edit of the draft; what is shown is read
 // back from it, so undo and redo show here too.
 
 #include <QStringList>
@@ -32,6 +33,8 @@ public:
     /// The tick box of a plot, panel or control by its name in the file ("energy", "sat",
     /// "dt"); null for an unknown name.
     QCheckBox* box(const QString& key, const QString& name) const;
+    QCheckBox* waitForPlay() const { return m_waitForPlay; }
+    QDoubleSpinBox* endTime() const { return m_endTime; }
 
 private:
     struct Row {
@@ -48,6 +51,8 @@ private:
     bool m_refreshing = false;
     std::vector<Row> m_rows;
     QDoubleSpinBox* m_exportTime = nullptr;
+    QDoubleSpinBox* m_endTime = nullptr; ///< 0: the run goes on
+    QCheckBox* m_waitForPlay = nullptr;
 };
 
 } // namespace rigidlab::ui

@@ -164,6 +164,14 @@ void LessonPlayer::checkTyped(std::size_t i)
     }
     QuestionTry attempt = measuredTry(i);
     attempt.answer = answer;
+    if (!attempt.measured && !heldBack().contains(QStringView(lessons::kHoldBackRun))) {
+        // Nothing to judge it against yet (the run has not got there): said, and not kept as
+        // a try, so that the worksheet lists only answers that were judged.
+        lessons::TryCount count{m_rows[i].attempts, m_rows[i].answered};
+        const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
+        askFirst(row.result, lessons::judgeTry(q, attempt, count).message);
+        return;
+    }
     applyTry(i, attempt);
     if (!asked.matches())
         row.result->setText(askedRunAdvice(asked) + u' ' + row.result->text());

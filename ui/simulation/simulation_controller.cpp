@@ -193,13 +193,19 @@ void SimulationController::advanceClock(double wallSeconds)
     const double h = m_world.def().dt;
     if (m_running && !m_stepsHeld) {
         m_catchUp.beginFrame(wallSeconds, m_timeScale);
-        while (m_catchUp.nextStep(h, m_timing.physicsElapsedMs())) {
+        // Only a run that starts before the end time stops at it: Play once there runs on.
+        const bool ends = m_endTime && m_world.time() < *m_endTime - 0.5 * h;
+        bool ended = false;
+        while (!ended && m_catchUp.nextStep(h, m_timing.physicsElapsedMs())) {
             const double before = m_timing.physicsElapsedMs();
             doStep();
             m_catchUp.stepTaken(h, m_timing.physicsElapsedMs() - before);
             m_timing.simulated(h);
+            ended = ends && m_world.time() >= *m_endTime - 0.5 * h;
         }
         m_catchUp.endFrame(h);
+        if (ended)
+            setRunning(false);
     }
     const double counted = std::min(wallSeconds, CatchUp::kMaxGapSeconds);
     if (m_timing.frameDone(wallSeconds, counted))

@@ -133,6 +133,9 @@ public:
     /// while editing; running it again leaves Edit mode first, which lets go).
     void setStepsHeld(bool held) { m_stepsHeld = held; }
     bool stepsHeld() const { return m_stepsHeld; }
+    /// The running clock pauses when the world's time reaches `time` [s] (a lesson step's
+    /// "endTime"); nullopt: it runs on. Play after it runs on from there.
+    void setEndTime(std::optional<double> time) { m_endTime = time; }
 
 public slots:
     void setRunning(bool running);
@@ -216,7 +219,8 @@ private:
     CatchUp m_catchUp; ///< the simulated time owed, and how much of it a frame pays
     double m_timeScale = 1.0;
     bool m_running = false;
-    bool m_stepsHeld = false; ///< see setStepsHeld
+    bool m_stepsHeld = false;        ///< see setStepsHeld
+    std::optional<double> m_endTime; ///< see setEndTime [s]
 };
 
 } // namespace rigidlab::ui

@@ -146,6 +146,7 @@ void LessonSession::applyStep(const lessons::Lesson& lesson, int index)
         m_parts.sat.setBodies(-1, -1);
     }
     frameStepAction(step);
+    m_parts.controller.setEndTime(step.endTime);
     if (!step.editor)
         m_parts.controller.setRunning(step.autoplay && !m_runHeld);
 }
@@ -160,11 +161,12 @@ void LessonSession::frameStepAction(const lessons::LessonStep& step)
         return;
     }
     const SimulationController& c = m_parts.controller;
-    QRectF action = lessons::sweptBounds(c.world(), step.exportTime);
+    // A step whose run ends earlier frames only what happens until then.
+    const double until = std::min(step.exportTime, step.endTime.value_or(step.exportTime));
+    QRectF action = lessons::sweptBounds(c.world(), until);
     for (int v = 0; v < c.variantCount(); ++v) {
         const physics::Vec2 shift = (v + 1) * c.variantOffset();
-        action |=
-            lessons::sweptBounds(c.variant(v), step.exportTime).translated(shift.x(), shift.y());
+        action |= lessons::sweptBounds(c.variant(v), until).translated(shift.x(), shift.y());
     }
     m_parts.view.setActionBounds(action);
 }
@@ -318,6 +320,7 @@ void LessonSession::leave()
     if (!m_inLesson)
         return;
     m_inLesson = false;
+    m_parts.controller.setEndTime(std::nullopt);
     m_parts.editTools.setAllowedTools(std::nullopt);
     m_parts.editTools.setAllowedProperties(std::nullopt);
     emit left();

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The window's way into the lesson editor: File › New lesson and Edit lesson…, and Try as a
-// student, which plays the editor's lesson here from its selected step, with a way back to
-// the editor at the step the student is on while that lesson plays.
+// student, which plays the editor's lesson here from its selected step. File › Back to the
+// lesson editor leads back to it while one is open: to the step the student is on while its
+// lesson plays, else to the editor opened last.
 #include "common/modal_scope.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
@@ -28,6 +29,19 @@
 
 namespace rigidlab::ui {
 
+namespace {
+
+/// The lesson editor opened last that is still open (the editors are the window's children, in
+/// the order they were made), or null.
+LessonEditor* newestEditor(const QObject& window)
+{
+    const QList<LessonEditor*> editors =
+        window.findChildren<LessonEditor*>(Qt::FindDirectChildrenOnly);
+    return editors.isEmpty() ? nullptr : editors.back();
+}
+
+} // namespace
+
 void MainWindow::addLessonEditorEntries(QMenu& file)
 {
     QAction* create = file.addAction(tr("Ne&w lesson"), this, [this] {
@@ -49,7 +63,7 @@ void MainWindow::addLessonEditorEntries(QMenu& file)
         file.addAction(tr("&Back to the lesson editor"), this, &MainWindow::backToLessonEditor);
     m_backToEditor->setObjectName(QStringLiteral("backToLessonEditor"));
     m_backToEditor->setShortcuts(controlKeys("backToLessonEditor"));
-    m_backToEditor->setVisible(false); // only while a lesson tried from the editor plays
+    m_backToEditor->setVisible(false); // only while a lesson editor is open
     // Another lesson, or a scene (which leaves the lesson), ends the try.
     // (The action is the context: a window being destroyed has deleted it before the
     // editor, its child too, whose end would otherwise reach a half-destroyed window.)
@@ -125,7 +139,7 @@ void MainWindow::hideWayBack()
 {
     m_triedFrom = nullptr;
     m_triedPath.clear();
-    m_backToEditor->setVisible(false);
+    m_backToEditor->setVisible(newestEditor(*this) != nullptr);
     if (m_backBar != nullptr)
         m_backBar->hide();
 }
@@ -133,11 +147,15 @@ void MainWindow::hideWayBack()
 void MainWindow::backToLessonEditor()
 {
     auto* editor = qobject_cast<LessonEditor*>(m_triedFrom.data());
-    if (editor == nullptr) {
-        hideWayBack();
-        return;
+    if (editor != nullptr) {
+        editor->selectStep(m_player->stepIndex()); // the step the student is on
+    } else {
+        editor = newestEditor(*this);
+        if (editor == nullptr) {
+            hideWayBack();
+            return;
+        }
     }
-    editor->selectStep(m_player->stepIndex());
     editor->show();
     editor->raise();
     editor->activateWindow();
@@ -184,6 +202,7 @@ LessonEditor* MainWindow::editLesson(const QString& path, QString* error)
             [this, editor](int step) { editor->draft().setStepScene(step, m_document->scene()); });
     editor->resize(1000, 700);
     editor->show();
+    m_backToEditor->setVisible(true);
     return editor;
 }
 

@@ -61,8 +61,11 @@ QString quantity(double value, const QString& unit)
     return unit.isEmpty() ? formatReadable(value) : formatQuantity(value, unit);
 }
 
-/// "integrator Verlet · dt = 0.001 s · solver The paper's impulse": what repeats the run.
-QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& ran)
+/// "integrator Verlet · dt = 0.001 s · solver The paper's impulse": what repeats the run. The
+/// solver named is the one that ran (`running`), with the one asked for when another stood in
+/// for it (the soft step does not take every scene), as the window's status line says.
+QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& ran,
+                     physics::SolverKind running)
 {
     const auto names = [&] {
         QStringList list;
@@ -72,9 +75,30 @@ QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& r
     };
     const bool byIntegrator = step.compare && !step.compare->integrators.empty();
     const bool bySolver = step.compare && !step.compare->solvers.empty();
-    return Worksheet::tr("Settings: integrator %1 · dt = %2 s · solver %3")
-        .arg(byIntegrator ? names() : integratorDisplayName(ran.integrator),
-             formatReadable(ran.dt, 6), bySolver ? names() : solverDisplayName(ran.solver));
+    const QString solver = bySolver                ? names()
+                           : running == ran.solver ? solverDisplayName(running)
+                                                   : Worksheet::tr("%1 (instead of %2)")
+                                                         .arg(solverDisplayName(running),
+                                                              solverDisplayName(ran.solver));
+    QString line = Worksheet::tr("Settings: integrator %1 · dt = %2 s · solver %3")
+                       .arg(byIntegrator ? names() : integratorDisplayName(ran.integrator),
+                            formatReadable(ran.dt, 6), solver);
+    // Every other setting the step (or a question the student answered) set: e = 0 is what
+    // "set e = 0 and run again" ran with.
+    for (const lessons::schema::SettingsField& f : lessons::schema::settingsFields()) {
+        const lessons::schema::Value v = f.get(step.settings, 0);
+        if (f.key == "integrator" || f.key == "dt" || f.key == "solver" || f.key == "timeScale" ||
+            std::holds_alternative<std::monostate>(v))
+            continue;
+        const QString shown = std::holds_alternative<double>(v)
+                                  ? formatReadable(std::get<double>(v), 6)
+                              : std::holds_alternative<bool>(v)
+                                  ? (std::get<bool>(v) ? Worksheet::tr("on") : Worksheet::tr("off"))
+                                  : lessons::schema::text(v);
+        line += QStringLiteral(" · %1 = %2")
+                    .arg(QCoreApplication::translate(lessons::schema::kContext, f.label), shown);
+    }
+    return line;
 }
 
 /// The measured value of question q of a step for the key: the one the student's tries were
@@ -186,7 +210,8 @@ void SheetWriter::writeStep(int index, int& figures)
     // The step's heading stays on the page of what follows it: its first question, else its
     // first figure.
     const QString heading = Worksheet::tr("Step %1: %2").arg(index + 1).arg(step.title);
-    const QString settings = settingsLine(step, plots.settings);
+    const QString settings =
+        settingsLine(step, plots.settings, lessons::buildStepWorlds(step).front().solverRunning());
     int first = 0;
     if (!step.questions.empty())
         first = m_pages.heightOf(step.questions.front().prompt, m_bold) + kQuestionRoom;

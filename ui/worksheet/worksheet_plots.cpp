@@ -8,6 +8,11 @@ namespace rigidlab::ui {
 lessons::LessonStep stepAsRun(const lessons::LessonStep& step, const lessons::StepAnswers& ran)
 {
     lessons::LessonStep out = step;
+    // A question that asks the student to set something ("set e = 0 and run again") was judged
+    // on that run: a step whose such question was tried shows it (the last one tried).
+    for (std::size_t q = 0; q < step.questions.size() && q < ran.questions.size(); ++q)
+        if (lessons::asksSettings(step.questions[q]) && !ran.questions[q].empty())
+            out = lessons::askedStep(step, step.questions[q]);
     if (ran.integrator)
         out.settings.integrator = ran.integrator;
     if (ran.dt)
