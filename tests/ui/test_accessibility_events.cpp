@@ -18,7 +18,9 @@
 
 #include <QAccessible>
 #include <QAccessibleBridge>
+#include <QAction>
 #include <QApplication>
+#include <QDockWidget>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
@@ -319,6 +321,24 @@ private slots:
                      count.announced().at(before) == player.result(0).simplified(),
                  qPrintable(count.announced().mid(before).join(u'|') + QStringLiteral(" / ") +
                             player.result(0)));
+    }
+
+    /// A panel shown by its key (or the View menu) takes the focus: the student who asked for
+    /// it works in it next.
+    void aDockShownByItsActionTakesTheFocus()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(welcome(), true), QString());
+        showOnProjector(w);
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QDockWidget* inspector = w.dock(QStringLiteral("inspector"));
+        QVERIFY(inspector);
+        inspector->toggleViewAction()->trigger(); // hidden
+        QVERIFY(!inspector->isVisible());
+        w.view().setFocus();
+        inspector->toggleViewAction()->trigger(); // shown again, as its key would
+        QTRY_VERIFY(inspector->isAncestorOf(QApplication::focusWidget()));
     }
 
     /// The first lesson from its start to its end, counted: each step begins with the focus
