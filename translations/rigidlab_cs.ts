@@ -1757,10 +1757,6 @@ n = (%4; %5)</translation>
         <translation>%1 spustí nebo pozastaví; %2 a&#xa0;%3 vyberou těleso; šipky ho posunou, Shift+šipky změní jeho rychlost, Enter ukáže jeho hodnoty.</translation>
     </message>
     <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
-    </message>
-    <message>
         <source>circle, radius %1</source>
         <translation>kruh, poloměr %1</translation>
     </message>
@@ -1803,6 +1799,11 @@ n = (%4; %5)</translation>
     <message>
         <source>What happened</source>
         <translation>Co se stalo</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>a body&apos;s name, then its kind: static, dynamic or kinematic</comment>
+        <translation>%1 (%2 těleso)</translation>
     </message>
 </context>
 <context>
@@ -4016,6 +4017,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Choose an answer first.</source>
         <translation>Nejdřív zvolte odpověď.</translation>
     </message>
+    <message>
+        <source>Step %1 of %2: %3. %4</source>
+        <translation>Krok %1 z&#xa0;%2: %3. %4</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::LessonSession</name>
@@ -5255,6 +5260,22 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>The simulation diverged and stopped.</source>
         <translation>Výpočet se rozběhl a&#xa0;simulace se zastavila.</translation>
+    </message>
+    <message>
+        <source>Running.</source>
+        <translation>Běží.</translation>
+    </message>
+    <message>
+        <source>Paused at %1.</source>
+        <translation>Pozastaveno v&#xa0;čase %1.</translation>
+    </message>
+    <message>
+        <source>%1: position %2, velocity %3.</source>
+        <translation>%1: poloha %2, rychlost %3.</translation>
+    </message>
+    <message>
+        <source>%1, speed %2.</source>
+        <translation>%1, velikost rychlosti %2.</translation>
     </message>
 </context>
 <context>

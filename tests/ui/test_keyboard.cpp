@@ -478,6 +478,8 @@ private slots:
         QCOMPARE(tools.tool(), ui::EditTool::Box);
         RL_VERIFY_NEAR((added.position - tools.viewCentre()).norm(), 0.0, 1e-9, 0);
         QCOMPARE(tools.selectedBody(), static_cast<int>(before));
+        // The keys go on in the scene, on the new body (not in the History list).
+        QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(&view));
         // One undo step takes it away.
         key(w, Qt::Key_Z, Qt::ControlModifier);
         QCOMPARE(tools.scene().bodies.size(), before);

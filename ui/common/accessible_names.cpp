@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "common/accessible_names.h"
 
+#include <QComboBox>
 #include <QCoreApplication>
+#include <QFormLayout>
+#include <QLabel>
 #include <QScrollArea>
 #include <QScrollBar>
 
@@ -15,6 +18,24 @@ void nameScrollArea(QScrollArea& area, const QString& name)
         QCoreApplication::translate("AccessibleNames", "Scroll %1").arg(name));
     area.horizontalScrollBar()->setAccessibleName(
         QCoreApplication::translate("AccessibleNames", "Scroll %1 sideways").arg(name));
+}
+
+void followRows(QFormLayout& form)
+{
+    QWidget* previous = nullptr;
+    for (int row = 0; row < form.rowCount(); ++row) {
+        QLayoutItem* item = form.itemAt(row, QFormLayout::FieldRole);
+        QWidget* field = item ? item->widget() : nullptr;
+        if (!field)
+            continue;
+        if (previous)
+            QWidget::setTabOrder(previous, field);
+        previous = field;
+        QLayoutItem* labelItem = form.itemAt(row, QFormLayout::LabelRole);
+        auto* label = labelItem ? qobject_cast<QLabel*>(labelItem->widget()) : nullptr;
+        if (auto* list = qobject_cast<QComboBox*>(field); list && label)
+            list->setAccessibleName(QString(label->text()).remove(QLatin1Char('&')));
+    }
 }
 
 } // namespace rigidlab::ui

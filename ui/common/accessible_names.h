@@ -4,6 +4,7 @@
 
 #include <QString>
 
+class QFormLayout;
 class QScrollArea;
 
 namespace rigidlab::ui {
@@ -12,5 +13,10 @@ namespace rigidlab::ui {
 /// Controls"), and keeps it out of the Tab order: its fields are Tab stops, and scroll into
 /// view when they take the focus (common/shortcuts_guard.h).
 void nameScrollArea(QScrollArea& area, const QString& name);
+
+/// A form read in the order it is shown: Tab goes down its rows (not in the order the fields
+/// were made), and a list in a row is named by the row's label, its choice being its value
+/// (Qt names a list by its choice).
+void followRows(QFormLayout& form);
 
 } // namespace rigidlab::ui

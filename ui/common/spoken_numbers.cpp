@@ -4,6 +4,7 @@
 #include "common/number_format.h"
 
 #include <QCoreApplication>
+#include <QRegularExpression>
 
 namespace rigidlab::ui {
 
@@ -50,6 +51,22 @@ QString spokenPair(double x, double y, const QString& unit, int significant, dou
                                 coordinateSeparator(locale) +
                                 spokenReadable(y, significant, scale, locale) + QLatin1Char(')');
     return unit.isEmpty() ? coordinates : coordinates + QChar(0x00A0) + unit;
+}
+
+QString spokenSigns(const QString& text)
+{
+    // A sign where a number starts: at the start, or after a space, a bracket, "=" or a
+    // separator; hyphen-minus or the true minus sign (U+2212).
+    static const QRegularExpression sign(QStringLiteral("(^|[\\s(\\[=;:,])[-\\x{2212}](?=\\d)"));
+    QString out;
+    qsizetype from = 0;
+    for (auto m = sign.globalMatch(text); m.hasNext();) {
+        const QRegularExpressionMatch match = m.next();
+        out += text.mid(from, match.capturedStart() - from) + match.captured(1);
+        out += SpokenNumbers::tr("minus %1", "a negative number read aloud").arg(QString());
+        from = match.capturedEnd();
+    }
+    return out + text.mid(from);
 }
 
 } // namespace rigidlab::ui

@@ -32,4 +32,9 @@ QString coordinateSeparator(const QLocale& locale = QLocale());
 QString spokenPair(double x, double y, const QString& unit, int significant = 3, double scale = 0,
                    const QLocale& locale = QLocale());
 
+/// `text` as written for the eye (a status line, a label), with every negative number's sign
+/// said as the word "minus" ("drift -0.15 %" reads "drift minus 0.15 %"). A hyphen between
+/// words or numbers ("1-2", "Runge-Kutta") is left as it is.
+QString spokenSigns(const QString& text);
+
 } // namespace rigidlab::ui

@@ -11,6 +11,7 @@
 #include <QAction>
 #include <QKeyEvent>
 #include <QMenu>
+#include <QTimer>
 
 #include <array>
 
@@ -123,6 +124,9 @@ void EditTools::addBodyAtCentre(EditTool tool)
     Tool& t = current();
     if (t.wantsKey(Qt::Key_Return))
         t.key(Qt::Key_Return); // the tool's own body at the view's centre
+    // The keys go on in the scene, on the new body: once the menu has closed and the panels
+    // that show the edit have changed, which may take the focus.
+    QTimer::singleShot(0, &m_view, [view = &m_view] { view->setFocus(Qt::OtherFocusReason); });
 }
 
 } // namespace rigidlab::ui

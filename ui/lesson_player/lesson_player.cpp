@@ -2,6 +2,7 @@
 #include "lesson_player/lesson_player.h"
 #include "lesson_player/step_text.h"
 
+#include "common/announcer.h"
 #include "common/modal_scope.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
@@ -24,10 +25,12 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalBlocker>
 #include <QStyledItemDelegate>
+#include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
 
@@ -277,6 +280,7 @@ QString LessonPlayer::openLesson(const QString& path)
     startRecord(*m_lesson);
     showStep();
     emit stepActivated(*m_lesson, m_step);
+    announceStep();
     return QString();
 }
 
@@ -304,6 +308,28 @@ void LessonPlayer::goToStep(int index)
     if (cameBack)
         replayRecordedTries();
     emit stepActivated(*m_lesson, m_step);
+    announceStep();
+}
+
+void LessonPlayer::announceStep()
+{
+    if (!m_lesson)
+        return;
+    const lessons::LessonStep& s = m_lesson->steps[static_cast<size_t>(m_step)];
+    // The step's first sentence, which says what it is about.
+    const QString text = m_text->toPlainText().simplified();
+    static const QRegularExpression sentence(QStringLiteral("^.*?[.!?:](?=\\s|$)"));
+    const QRegularExpressionMatch first = sentence.match(text);
+    announce(*this, tr("Step %1 of %2: %3. %4")
+                        .arg(m_step + 1)
+                        .arg(m_lesson->steps.size())
+                        .arg(s.title, first.hasMatch() ? first.captured() : text.left(200)));
+    // Then the focus on the step's text, so that a reader goes on reading it; once the window
+    // has set up the step (docks shown and hidden move the focus).
+    QTimer::singleShot(0, this, [this] {
+        if (m_text->isVisible())
+            m_text->setFocus(Qt::OtherFocusReason);
+    });
 }
 
 void LessonPlayer::next()

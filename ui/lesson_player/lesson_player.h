@@ -135,6 +135,11 @@ private:
     /// Back, Next, Restart step and Export plots, and what the buttons and the list do.
     void buildNavigation(QVBoxLayout* layout);
     void showStep();
+    /// Tells a screen reader the step just shown (its number, title and first sentence) and
+    /// puts the focus on its text.
+    void announceStep();
+    /// Tab in the order the lesson is shown: text, questions, then the step's buttons.
+    void orderTabs();
     /// The list box's tooltip: the chosen lesson's full line, and what the list holds.
     void showCurrentLessonTip();
     /// The text's least height: a few of its lines, whatever its font.

@@ -5,7 +5,9 @@
 #include "lesson_player/lesson_player.h"
 
 #include "lesson_player/asked_run.h"
+#include "lesson_player/step_text.h"
 
+#include "common/announcer.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
 
@@ -140,6 +142,21 @@ void LessonPlayer::buildQuestions()
                 applyTry(i, measuredTry(i));
         });
     }
+    orderTabs();
+}
+
+void LessonPlayer::orderTabs()
+{
+    // Made after the buttons below them, the questions would come last to Tab: the step's
+    // text, its questions with their answers, then Back, Next and the others, as they are
+    // shown.
+    QList<QWidget*> order{m_text};
+    for (QWidget* w : m_questionBox->findChildren<QWidget*>())
+        if (w->focusPolicy() & Qt::TabFocus)
+            order << w;
+    order << m_back << m_next << m_restart << m_export << m_handIn;
+    for (qsizetype k = 1; k < order.size(); ++k)
+        setTabOrder(order[k - 1], order[k]);
 }
 
 void LessonPlayer::checkTyped(std::size_t i)
@@ -331,6 +348,10 @@ void LessonPlayer::settle(std::size_t i, const lessons::Verdict& v)
     row.result->setText(mark + v.message);
     row.result->setVisible(true);
     revealResult(i);
+    // The verdict is told, where the focus stays on the answer or the Check button: a label
+    // that changes out of the focus is not read.
+    if (!m_replaying)
+        announce(*row.result, row.result->text());
     if (!v.measured && heldBack().contains(QStringView(lessons::kHoldBackRun))) {
         // Not measurable without a window within the limit: let the scene run rather than
         // leave the student with no way on.

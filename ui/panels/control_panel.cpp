@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/control_panel.h"
 
+#include "common/accessible_names.h"
 #include "common/display_names.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
@@ -71,6 +72,7 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     form->addRow(tr("Friction μ"), m_friction);
     form->addRow(tr("Gravity"), m_gravity);
     m_gravity->setAccessibleName(tr("Gravity")); // not its box's word "on"
+    followRows(*form); // Tab down the rows; the lists named by their labels
 
     connect(m_integrator, &QComboBox::activated, this, [this] {
         m_controller.setIntegrator(IntegratorKind(m_integrator->currentData().toInt()));

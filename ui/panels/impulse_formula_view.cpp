@@ -83,13 +83,26 @@ void ImpulseFormulaView::setOpen(bool open)
     m_formula->setVisible(open);
 }
 
+namespace {
+
+/// Gives `label` the plain text of `html` as its description, told to a screen reader only
+/// when it changes: the panel is refreshed every frame, and every description set is an event.
+void describe(QLabel& label, const QString& html)
+{
+    const QString plain = QTextDocumentFragment::fromHtml(html).toPlainText();
+    if (label.accessibleDescription() != plain)
+        label.setAccessibleDescription(plain);
+}
+
+} // namespace
+
 void ImpulseFormulaView::showHit(const lessons::CollisionEvent& hit, const physics::Body& a,
                                  const physics::Body& b, const QString& nameA, const QString& nameB,
                                  bool held)
 {
     const QString text = impulseFormulaText(hit, a, b, nameA, nameB, held);
     m_formula->setText(text);
-    m_formula->setAccessibleDescription(QTextDocumentFragment::fromHtml(text).toPlainText());
+    describe(*m_formula, text);
 }
 
 void ImpulseFormulaView::showNone()
@@ -97,8 +110,7 @@ void ImpulseFormulaView::showNone()
     m_formula->setText(QStringLiteral("<p>") + symbols() + QStringLiteral("</p><p>") +
                        tr("The numbers of the first collision appear here when it happens.") +
                        QStringLiteral("</p>"));
-    m_formula->setAccessibleDescription(
-        QTextDocumentFragment::fromHtml(m_formula->text()).toPlainText());
+    describe(*m_formula, m_formula->text());
 }
 
 QString impulseFormulaText(const lessons::CollisionEvent& hit, const physics::Body& a,

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/inspector_panel.h"
 
+#include "common/calm_text.h"
 #include "common/number_format.h"
+#include "common/spoken_numbers.h"
 #include "panels/forces_view.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
@@ -229,11 +231,13 @@ void InspectorPanel::labelRows(QFormLayout& form)
 
 void InspectorPanel::nameValues()
 {
-    for (const auto& [value, row] : std::as_const(m_rowNames)) {
-        const QString name = tr("%1: %2", "a value named by its row").arg(row, value->text());
-        if (value->accessibleName() != name)
-            value->setAccessibleName(name);
-    }
+    // At a calm rate while the clock runs (the values change with every frame), at once for
+    // what the student did; a negative value says "minus", which a reader never drops.
+    const bool now = !m_controller.isRunning();
+    for (const auto& [value, row] : std::as_const(m_rowNames))
+        setCalmAccessibleName(
+            *value, tr("%1: %2", "a value named by its row").arg(row, spokenSigns(value->text())),
+            now);
 }
 
 QWidget* InspectorPanel::angleRow()

@@ -14,18 +14,22 @@ namespace rigidlab::ui {
 
 QColor plotColor(int index)
 {
-    // Okabe & Ito's hues, told apart with any colour vision, each dark enough for at least
-    // 3:1 against the plots' white (WCAG 1.4.11): their orange (#E69F00, 2.2:1), sky blue
-    // (#56B4E9, 2.3:1) and reddish purple (#CC79A7, 3.06:1, too close on a projector) are
-    // darkened. Colour is never alone: each series also has its own line style and marker
+    // Okabe & Ito's hues, each darkened as a whole (its red, green and blue scaled alike, so
+    // the hue stays) until it has at least 3:1 against the plots' white and the world's
+    // background (WCAG 1.4.11), and until any two stay apart for a student with deuteranopia
+    // or protanopia: at least 15 CIELAB ΔE (1976) after Machado, Oliveira and Fernandes'
+    // (2009) simulation at full severity, and at least 23 with normal colour vision
+    // (tests/ui/test_colours checks both, and every shipped plot). The six hues first (the
+    // bodies' colours, bodyColor), ink last.
+    // Colour is never alone: each series also has its own line style and marker
     // (plotPenStyleFor, plotMarker).
     static const QColor palette[] = {
-        {0x00, 0x72, 0xB2}, // blue, 5.2:1
-        {0xD5, 0x5E, 0x00}, // vermilion, 3.9:1
-        {0x00, 0x9E, 0x73}, // bluish green, 3.4:1
-        {0xB8, 0x58, 0x9A}, // reddish purple, 4.3:1
-        {0xAD, 0x6E, 0x00}, // dark orange, 4.2:1
-        {0x2C, 0x8A, 0xC2}, // darker sky blue, 3.8:1
+        {0x00, 0x5D, 0x92}, // blue, 6.8:1 on the world's background
+        {0xAF, 0x4D, 0x00}, // vermilion, 5.2:1
+        {0x00, 0x82, 0x5E}, // bluish green, 4.7:1
+        {0xAB, 0x66, 0x8C}, // reddish purple, 4.0:1
+        {0xBD, 0x82, 0x00}, // orange, 3.2:1
+        {0x47, 0x94, 0xBF}, // sky blue, 3.2:1
         {0x20, 0x20, 0x20}, // ink, 16:1
     };
     const int n = static_cast<int>(std::size(palette));

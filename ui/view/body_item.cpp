@@ -2,6 +2,7 @@
 #include "view/body_item.h"
 
 #include "common/theme.h"
+#include "plots/plot_widget.h"
 
 #include <QPainter>
 
@@ -16,11 +17,11 @@ namespace rigidlab::ui {
 
 QColor bodyColor(int index)
 {
-    static const std::array<QColor, 8> kPalette{QColor(0x4e, 0x79, 0xa7), QColor(0xf2, 0x8e, 0x2b),
-                                                QColor(0x59, 0xa1, 0x4f), QColor(0xe1, 0x57, 0x59),
-                                                QColor(0x76, 0xb7, 0xb2), QColor(0xed, 0xc9, 0x48),
-                                                QColor(0xb0, 0x7a, 0xa1), QColor(0x9c, 0x75, 0x5f)};
-    return kPalette[static_cast<std::size_t>(index) % kPalette.size()];
+    // The plots' hues (plotColor): one palette for curves and bodies, told apart with any
+    // colour vision and at least 3:1 against the world's background. Its first six colours
+    // are the hues; the seventh, ink, is no body's.
+    constexpr int kHues = 6;
+    return plotColor(((index % kHues) + kHues) % kHues);
 }
 
 BodyItem::BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fill)

@@ -56,7 +56,8 @@ private:
     bool m_antialiased = true;
 };
 
-/// A palette that keeps neighbouring bodies apart and reads on a projector.
+/// The index-th body's colour: the plots' hues, apart with any colour vision and at least
+/// 3:1 against the world's background.
 QColor bodyColor(int index);
 
 } // namespace rigidlab::ui

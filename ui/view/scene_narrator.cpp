@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "view/scene_narrator.h"
 
+#include "common/announcer.h"
+#include "common/spoken_numbers.h"
 #include "simulation/simulation_controller.h"
 #include "view/scene_words.h"
 #include "view/world_view.h"
@@ -23,6 +25,25 @@ SceneNarrator::SceneNarrator(SimulationController& controller, WorldView& view)
             m_tick.start();
         else
             m_tick.stop();
+        // Play and pause told, with the time the run stopped at.
+        announce(m_view, running ? tr("Running.")
+                                 : tr("Paused at %1.")
+                                       .arg(spokenQuantity(m_controller.time(), QStringLiteral("s"),
+                                                           3, 1.0)));
+    });
+    m_settle.setSingleShot(true);
+    m_settle.setInterval(kSettleMs);
+    connect(&m_settle, &QTimer::timeout, this, [this] {
+        const auto count = static_cast<int>(m_controller.world().bodies().size());
+        if (m_moved < 0 || m_moved >= count)
+            return;
+        const physics::World& world = m_controller.world();
+        const physics::Vec2 o = world.body(m_moved).origin();
+        const physics::Vec2 v = world.originVelocity(m_moved);
+        announce(m_view, tr("%1: position %2, velocity %3.")
+                             .arg(m_controller.scene().bodyLabel(m_moved),
+                                  spokenPair(o.x(), o.y(), QStringLiteral("m"), 3, 1.0),
+                                  spokenPair(v.x(), v.y(), QStringLiteral("m/s"), 3, 1.0)));
     });
     connect(&controller, &SimulationController::worldChanged, this, &SceneNarrator::onWorldChanged);
     connect(&controller, &SimulationController::sceneLoaded, this, &SceneNarrator::onSceneLoaded);
@@ -33,6 +54,7 @@ SceneNarrator::SceneNarrator(SimulationController& controller, WorldView& view)
 
 void SceneNarrator::onSceneLoaded()
 {
+    m_toldValues.clear();
     m_touched = false;
     m_moving = false;
     m_diverged = false;
@@ -62,6 +84,8 @@ void SceneNarrator::onWorldChanged()
     if (world.divergence() && !m_diverged) {
         m_diverged = true;
         note(tr("The simulation diverged and stopped."));
+        // Told at once, not only in the status: the run is over.
+        announce(m_view, tr("The simulation diverged and stopped."));
     }
     // Paused, a step or a seek is the student's own doing: tell its result at once, but
     // never faster than the calm rate.
@@ -108,9 +132,31 @@ void SceneNarrator::tell(int child, const QString& value)
 void SceneNarrator::tellValues()
 {
     m_sinceTold.restart();
+    // Only what changed: a body at rest, a floor, says the same as a second ago.
     const auto count = static_cast<physics::BodyId>(m_controller.world().bodies().size());
-    for (physics::BodyId id = 0; id < count; ++id)
-        tell(WorldViewAccessible::FirstBody + id, scene_words::bodyValue(m_controller, id));
+    for (physics::BodyId id = 0; id < count; ++id) {
+        const QString value = scene_words::bodyValue(m_controller, id);
+        if (m_toldValues.value(id) == value)
+            continue;
+        m_toldValues.insert(id, value);
+        tell(WorldViewAccessible::FirstBody + id, value);
+    }
+}
+
+void SceneNarrator::tellChosen(int id)
+{
+    if (id < 0 || id >= static_cast<int>(m_controller.world().bodies().size()))
+        return;
+    const physics::Vec2 v = m_controller.world().originVelocity(id);
+    announce(m_view, tr("%1, speed %2.")
+                         .arg(m_controller.scene().bodyLabel(id),
+                              spokenQuantity(v.norm(), QStringLiteral("m/s"), 3, 1.0)));
+}
+
+void SceneNarrator::tellMoved(int id)
+{
+    m_moved = id;
+    m_settle.start();
 }
 
 } // namespace rigidlab::ui

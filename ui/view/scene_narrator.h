@@ -5,9 +5,12 @@
 // coming to rest, the run diverging) merged into one status line, at most once per
 // kValueIntervalMs. Qt 6.4 has no announcement event, so the status is a live child of the
 // scene view (world_view_accessible.h) whose value changes; a reader speaks it without
-// taking the focus. The narrator only reads the world.
+// taking the focus. A body's value is told again only when it changed. What the student does
+// (a body chosen or moved, play and pause) and a divergence are announced (announcer.h). The
+// narrator only reads the world.
 
 #include <QElapsedTimer>
+#include <QHash>
 #include <QObject>
 #include <QStringList>
 #include <QTimer>
@@ -35,6 +38,14 @@ public:
     /// Tells now what is pending (the timer does it at its calm rate).
     void flush();
 
+    /// How long the keys must rest before a moved body's new place is told [ms].
+    static constexpr int kSettleMs = 600;
+    /// Announces the body the student chose: its name and speed ("ball 1, speed 2.1 m/s").
+    void tellChosen(int id);
+    /// Announces where body `id`, moved or pushed with the keys, is and how fast it goes, once
+    /// the keys have rested for kSettleMs (one announcement for a run of presses).
+    void tellMoved(int id);
+
 signals:
     /// A value told to assistive technology (as a value-change event when it listens): of
     /// the scene view's child `child` (WorldViewAccessible::Child, or a body's index after
@@ -51,8 +62,11 @@ private:
     SimulationController& m_controller;
     WorldView& m_view;
     QTimer m_tick;
+    QTimer m_settle; ///< tells the moved body once the keys rest
+    int m_moved = -1;
     QElapsedTimer m_sinceTold;
     QStringList m_pending;
+    QHash<int, QString> m_toldValues; ///< each body's value as last told, by body id
     QString m_status;
     int m_changes = 0;
     bool m_touched = false;  ///< some bodies touched since the scene (re)started

@@ -91,8 +91,11 @@ QString summary(const SimulationController& controller, int selectedBody)
 QString bodyName(const SimulationController& controller, physics::BodyId id)
 {
     const physics::Body& b = controller.world().body(id);
-    return SceneWords::tr("%1 (%2)").arg(controller.scene().bodyLabel(id),
-                                         lessons::schema::bodyTypeLabel(b.type));
+    // The kind is an adjective of "body" (the schema's word for the editor's list), which a
+    // language with genders says with its noun: Czech "podlaha (statické těleso)", never
+    // "podlaha (statické)" after a feminine name.
+    return SceneWords::tr("%1 (%2)", "a body's name, then its kind: static, dynamic or kinematic")
+        .arg(controller.scene().bodyLabel(id), lessons::schema::bodyTypeLabel(b.type));
 }
 
 QString shapeText(const physics::Shape& shape)

@@ -6,6 +6,7 @@
 #include "view/world_view.h"
 
 #include "simulation/simulation_controller.h"
+#include "view/scene_narrator.h"
 #include "view/world_view_accessible.h"
 
 #include <QAccessible>
@@ -43,6 +44,7 @@ void WorldView::selectBodyAfter(int step)
         id = ((id + step) % n + n) % n;
         if (bodies[static_cast<std::size_t>(id)].moves()) {
             selectBody(id);
+            m_narrator->tellChosen(id);
             if (QAccessible::isActive())
                 if (QAccessibleInterface* view = QAccessible::queryAccessibleInterface(this))
                     if (QAccessibleInterface* body =
@@ -94,6 +96,7 @@ void WorldView::keyPressEvent(QKeyEvent* event)
         m_controller.pushBody(m_selected, dx, dy);
     else
         m_controller.moveBody(m_selected, dx, dy);
+    m_narrator->tellMoved(m_selected);
 }
 
 bool WorldView::event(QEvent* event)

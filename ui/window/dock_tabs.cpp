@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/dock_tabs.h"
 
+#include <QAction>
 #include <QApplication>
 #include <QDockWidget>
 #include <QEvent>
@@ -55,6 +56,10 @@ protected:
                      event->type() == QEvent::Move || event->type() == QEvent::Paint))) {
             // The window keeps tab bars it no longer uses: without tabs, not a Tab stop with
             // nothing to say. (Once the window is done moving docks: it empties bars later.)
+            // Only the focus policy changes. Such a bar is not hidden: the window shows every
+            // tab bar of a tabbed area whenever it has laid out its docks, and hiding one asks
+            // for a layout, so the two would hide and show it without end, a flood of events
+            // for a screen reader. The window moves an empty bar out of its sight instead.
             if (!m_focusUpdatePending) {
                 m_focusUpdatePending = true;
                 QTimer::singleShot(0, this, [this] {
@@ -65,8 +70,6 @@ protected:
                         const bool seen =
                             bar->count() > 0 && m_window.rect().intersects(bar->geometry());
                         bar->setFocusPolicy(seen ? Qt::TabFocus : Qt::NoFocus);
-                        if (bar->count() == 0)
-                            bar->hide(); // the window shows it again when it uses it
                     }
                 });
             }
@@ -163,6 +166,26 @@ void showContentIfInSight(QDockWidget& dock)
     content->setVisible(!behind);
     if (behind && hadFocus && dock.parentWidget())
         dock.parentWidget()->setFocus(Qt::OtherFocusReason);
+}
+
+void focusWhenAsked(QDockWidget& dock)
+{
+    QObject::connect(dock.toggleViewAction(), &QAction::triggered, &dock, [d = &dock](bool on) {
+        if (!on)
+            return;
+        QTimer::singleShot(0, d, [d] {
+            if (!d->isVisible() || !d->widget())
+                return;
+            // Its first control that takes Tab, or the panel itself.
+            QWidget* first = d->widget();
+            for (QWidget* w : d->widget()->findChildren<QWidget*>())
+                if ((w->focusPolicy() & Qt::TabFocus) && w->isVisibleTo(d) && w->isEnabled()) {
+                    first = w;
+                    break;
+                }
+            first->setFocus(Qt::ShortcutFocusReason);
+        });
+    });
 }
 
 } // namespace rigidlab::ui

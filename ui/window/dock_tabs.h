@@ -25,4 +25,8 @@ void keepFocusInSight(QDockWidget& dock);
 /// The same, now (after docks were moved or a dock got new content).
 void showContentIfInSight(QDockWidget& dock);
 
+/// Puts the focus in `dock` when it is shown by its action (its key or the View menu), once
+/// the window has made room for it: a student who asked for a panel works in it next.
+void focusWhenAsked(QDockWidget& dock);
+
 } // namespace rigidlab::ui

@@ -9,6 +9,7 @@
 #include "lesson_player/lesson_player.h"
 #include "measure/measurement_session.h"
 #include "window/about_dialog.h"
+#include "window/dock_tabs.h"
 #include "window/help_dialog.h"
 #include "window/language_switch.h"
 #include "window/lesson_session.h"
@@ -145,8 +146,10 @@ void MainWindow::buildViewMenu()
     for (QAction* a : m_actions->overlays())
         m_viewMenu->addAction(a);
     m_viewMenu->addSeparator();
-    for (QDockWidget* dock : findChildren<QDockWidget*>())
+    for (QDockWidget* dock : findChildren<QDockWidget*>()) {
         m_viewMenu->addAction(dock->toggleViewAction());
+        focusWhenAsked(*dock);
+    }
     m_viewMenu->addAction(m_instruments->graphAction());
     m_viewMenu->addSeparator();
     m_viewMenu->addAction(m_status->detailsAction());

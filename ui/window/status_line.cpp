@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/status_line.h"
 
+#include "common/announcer.h"
+#include "common/calm_text.h"
 #include "common/display_names.h"
 #include "common/status_text.h"
 #include "common/theme.h"
@@ -20,6 +22,7 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QStatusBar>
+#include <QTextDocumentFragment>
 #include <QTimer>
 #include <QToolBar>
 
@@ -93,7 +96,12 @@ StatusLine::StatusLine(QMainWindow& window, SimulationController& controller, Wo
         update();
     });
     buildTimeline();
+    // Made now, so that a screen reader knows it before the first announcement.
+    prepareAnnouncer(window);
     connect(&controller, &SimulationController::worldChanged, this, &StatusLine::updateTimeline);
+    m_timelineLater.setSingleShot(true);
+    connect(&m_timelineLater, &QTimer::timeout, this, &StatusLine::updateTimeline);
+    connect(&controller, &SimulationController::runningChanged, this, &StatusLine::updateTimeline);
 
     auto* statusTimer = new QTimer(this);
     connect(statusTimer, &QTimer::timeout, this, &StatusLine::update);
@@ -127,18 +135,18 @@ void StatusLine::update()
 {
     const QLocale locale;
     const bool running = m_controller.isRunning();
-    m_time->setText(tr("t = %1 s").arg(locale.toString(m_controller.time(), 'f', 3)));
+    setCalmText(*m_time, tr("t = %1 s").arg(locale.toString(m_controller.time(), 'f', 3)));
     // Simulated seconds per wall second; while paused there is no rate to show.
     if (!running)
-        m_rate->setText(tr("paused"));
+        setCalmText(*m_rate, tr("paused"));
     else if (const std::optional<double> factor = m_controller.realTimeFactor())
-        m_rate->setText(tr("%1 × real time").arg(locale.toString(*factor, 'f', 2)));
+        setCalmText(*m_rate, tr("%1 × real time").arg(locale.toString(*factor, 'f', 2)));
     else
-        m_rate->setText(tr("running"));
+        setCalmText(*m_rate, tr("running"));
     // The short wording of presentation mode where the full one would be cut (a 1024-pixel
     // window at the classroom text size); the full one in the tooltip.
     // The solver that runs, not only the one asked for (status_solver.h).
-    m_solver->setText(solverStatusText(m_controller.world()));
+    setCalmText(*m_solver, solverStatusText(m_controller.world()));
     m_solver->setToolTip(solverStatusTip(m_controller.world()));
     const QString full = driftText(m_presentation);
     int others = 0;
@@ -147,10 +155,15 @@ void StatusLine::update()
             others += label->sizeHint().width() + 8;
     const bool fits =
         m_drift->fontMetrics().horizontalAdvance(full) + others < m_window.statusBar()->width();
-    m_drift->setText(fits ? full : driftText(true));
+    setCalmText(*m_drift, fits ? full : driftText(true));
     m_drift->setToolTip(driftText(false) + QStringLiteral("\n\n") + driftExplanation());
+    // A reader gets the tooltip's explanation as plain words (the tooltip is rich text, which
+    // it would read tag by tag), once: it does not change as the run goes on.
+    if (m_drift->accessibleDescription().isEmpty())
+        m_drift->setAccessibleDescription(
+            QTextDocumentFragment::fromHtml(driftExplanation()).toPlainText());
     if (m_detailsAction->isChecked())
-        m_details->setText(detailsText(running));
+        setCalmText(*m_details, detailsText(running));
     else
         m_details->clear();
     // Over the world, a banner when it diverged.
@@ -221,13 +234,24 @@ void StatusLine::updateTimeline()
     const long long lo = m_controller.earliestStep(), hi = m_controller.latestStep();
     // One clock: the status bar's time moves with the timeline's, in the same frame.
     const QString t = QLocale().toString(m_controller.time(), 'f', 3);
-    m_time->setText(tr("t = %1 s").arg(t));
+    setCalmText(*m_time, tr("t = %1 s").arg(t));
     // Step counts grouped as the locale does ("10 000" in Czech), as on the plots' axes.
-    m_timeLabel->setText(
-        tr(" step %1 of %2 · t = %3 s")
-            .arg(QLocale().toString(m_controller.currentStep()), QLocale().toString(hi), t));
+    setCalmText(*m_timeLabel, tr(" step %1 of %2 · t = %3 s")
+                                  .arg(QLocale().toString(m_controller.currentStep()),
+                                       QLocale().toString(hi), t));
     if (m_timeline->isSliderDown())
         return;
+    // A slider tells assistive technology of every value it takes. While the clock runs the
+    // timeline follows it once a second (its handle stays at the end of a run that grows);
+    // a step, a seek or a pause moves it at once.
+    if (m_controller.isRunning() && m_timelineMoved.isValid() &&
+        m_timelineMoved.elapsed() < kCalmIntervalMs) {
+        if (!m_timelineLater.isActive())
+            m_timelineLater.start(kCalmIntervalMs - static_cast<int>(m_timelineMoved.elapsed()));
+        return;
+    }
+    m_timelineLater.stop();
+    m_timelineMoved.restart();
     const QSignalBlocker block(m_timeline);
     m_timeline->setRange(static_cast<int>(lo), static_cast<int>(hi));
     m_timeline->setValue(static_cast<int>(m_controller.currentStep()));

@@ -3,8 +3,10 @@
 // Where the run is, below the world: the status bar (time, real-time rate, energy drift,
 // stage timings when asked for) and the timeline to go back to any earlier moment.
 
+#include <QElapsedTimer>
 #include <QObject>
 #include <QString>
+#include <QTimer>
 
 class QAction;
 class QLabel;
@@ -56,6 +58,8 @@ private:
     QLabel* m_slow = nullptr;
     QLabel* m_details = nullptr;
     QAction* m_detailsAction = nullptr;
+    QElapsedTimer m_timelineMoved; ///< since the timeline's slider last moved with the clock
+    QTimer m_timelineLater;        ///< moves it once the calm interval is over
 };
 
 } // namespace rigidlab::ui

@@ -1,0 +1,404 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What the lab tells a screen reader, counted: the window on the welcome scene sends only a
+// few accessibility events a second, paused and running (a reader handles a handful a second;
+// thousands froze Orca), no widget is hidden and shown over and over, and what matters is
+// told: the verdict after Check, a new lesson step, the body chosen and moved in the scene,
+// play and pause, a run that diverged. A step of the first lesson that asks a question takes
+// a few keys: the focus starts on the step's text, Tab reaches the answer.
+
+// This test's accessibility bridge is a plugin built into it (Q_IMPORT_PLUGIN below).
+#define QT_STATICPLUGIN
+
+#include "first_question.h"
+#include "lesson_player/lesson_player.h"
+#include "simulation/simulation_controller.h"
+#include "view/scene_narrator.h"
+#include "view/world_view.h"
+#include "window/main_window.h"
+
+#include <QAccessible>
+#include <QAccessibleBridge>
+#include <QAction>
+#include <QApplication>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMap>
+#include <QTextBrowser>
+#include <QtPlugin>
+#include <QtTest>
+
+#include "test_main.h"
+
+using namespace rigidlab;
+using rigidlab::ui::MainWindow;
+
+namespace {
+
+/// Most accessibility events a second the window may send on its own (paused or running).
+constexpr double kBudgetPerSecond = 30.0;
+/// The seconds each count lasts.
+constexpr int kCountMs = 2000;
+
+/// Counts the accessibility events Qt sends, and the values the scene's narrator tells (it
+/// tells them only when a reader listens, which offscreen nobody does).
+///
+/// Qt hands its events to the platform's bridge: AT-SPI on a desktop. The offscreen platform
+/// has none of its own, and passes them to the bridge plugins it finds, this test's
+/// CountingBridge among them (QAccessible's update handler would see them only where a
+/// reader had switched the platform's accessibility on).
+class EventCount {
+public:
+    EventCount() { s_current = this; }
+    explicit EventCount(MainWindow& w) : EventCount()
+    {
+        QObject::connect(&w.view().narrator(), &ui::SceneNarrator::told, &m_context,
+                         [this](int child, const QString&) {
+                             add(QStringLiteral("narrator value of child %1").arg(child));
+                         });
+    }
+    ~EventCount() { s_current = nullptr; }
+    EventCount(const EventCount&) = delete;
+    EventCount& operator=(const EventCount&) = delete;
+
+    static void handle(QAccessibleEvent* event)
+    {
+        if (s_current)
+            s_current->record(event);
+    }
+
+    void restart()
+    {
+        m_bySource.clear();
+        m_shows.clear();
+        m_total = 0;
+    }
+    int total() const { return m_total; }
+    /// The most frequent sources, "count × source", most first.
+    QString top(int n = 5) const
+    {
+        QList<std::pair<int, QString>> sorted;
+        for (auto it = m_bySource.begin(); it != m_bySource.end(); ++it)
+            sorted.append({it.value(), it.key()});
+        std::sort(sorted.begin(), sorted.end(), std::greater<>());
+        QStringList out;
+        for (int i = 0; i < std::min<qsizetype>(n, sorted.size()); ++i)
+            out << QStringLiteral("%1 × %2").arg(sorted[i].first).arg(sorted[i].second);
+        return out.join(QStringLiteral("; "));
+    }
+    /// How many times one object was shown or hidden, the most of any.
+    int mostShowsOfOneObject() const
+    {
+        int most = 0;
+        for (auto it = m_shows.begin(); it != m_shows.end(); ++it)
+            most = std::max(most, it.value());
+        return most;
+    }
+    /// The announcements told (a notification shown, with its message).
+    const QStringList& announced() const { return m_announced; }
+
+private:
+    void record(QAccessibleEvent* event)
+    {
+        const QAccessible::Event type = event->type();
+        QObject* object = event->object();
+        if (type == QAccessible::ObjectDestroyed || !object) {
+            add(QStringLiteral("event %1").arg(int(type), 0, 16));
+            return;
+        }
+        QAccessibleInterface* iface = event->accessibleInterface();
+        const QString name = iface ? iface->text(QAccessible::Name) : QString();
+        const int role = iface ? int(iface->role()) : -1;
+        add(QStringLiteral("event 0x%1 on %2 '%3' role 0x%4")
+                .arg(int(type), 0, 16)
+                .arg(QString::fromLatin1(object->metaObject()->className()), name.left(40))
+                .arg(role, 0, 16));
+        if (type == QAccessible::ObjectShow || type == QAccessible::ObjectHide)
+            ++m_shows[object];
+        if (type == QAccessible::ObjectShow && role == int(QAccessible::Notification))
+            m_announced << name;
+    }
+
+    void add(const QString& source)
+    {
+        ++m_total;
+        ++m_bySource[source];
+    }
+
+    static inline EventCount* s_current = nullptr;
+    QObject m_context;
+    QMap<QString, int> m_bySource;
+    QMap<QObject*, int> m_shows;
+    QStringList m_announced;
+    int m_total = 0;
+};
+
+class CountingBridge : public QAccessibleBridge {
+public:
+    void setRootObject(QAccessibleInterface*) override {}
+    void notifyAccessibilityUpdate(QAccessibleEvent* event) override { EventCount::handle(event); }
+};
+
+} // namespace
+
+class CountingBridgePlugin : public QAccessibleBridgePlugin {
+    Q_OBJECT
+    Q_PLUGIN_METADATA(IID QAccessibleBridgeFactoryInterface_iid FILE "counting_bridge.json")
+public:
+    QAccessibleBridge* create(const QString&) override { return new CountingBridge; }
+};
+
+Q_IMPORT_PLUGIN(CountingBridgePlugin)
+
+namespace {
+
+void showOnProjector(MainWindow& w)
+{
+    w.fitToScreen(QRect(0, 0, 1024, 768));
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+}
+
+QString welcome()
+{
+    return QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json"));
+}
+
+/// One key pressed and released on the focused control, then what it caused handled, as
+/// between a person's key presses.
+void press(Qt::Key k, Qt::KeyboardModifiers mods = Qt::NoModifier)
+{
+    QWidget* focused = QApplication::focusWidget();
+    QTest::keyClick(focused ? focused : QApplication::activeWindow(), k, mods);
+    QCoreApplication::processEvents();
+}
+
+/// Lets the window run its event loop for `ms` and returns the events a second it sent.
+double eventsPerSecond(EventCount& count, int ms)
+{
+    count.restart();
+    QElapsedTimer clock;
+    clock.start();
+    QTest::qWait(ms);
+    return count.total() * 1000.0 / static_cast<double>(clock.elapsed());
+}
+
+} // namespace
+
+class TestAccessibilityEvents : public QObject {
+    Q_OBJECT
+private slots:
+    /// The counting works: Qt's events reach this test's bridge.
+    void eventsAreCounted()
+    {
+        QLabel label(QStringLiteral("before"));
+        label.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&label));
+        EventCount count;
+        label.setText(QStringLiteral("after"));
+        QVERIFY2(count.total() == 1, qPrintable(count.top()));
+    }
+
+    /// The welcome scene with a body chosen, paused and then running: a few events a second,
+    /// none of a widget shown and hidden again and again.
+    void theWindowIsQuiet()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(welcome(), true), QString());
+        showOnProjector(w);
+        EventCount count(w);
+        // A body chosen, as a student does: the inspector shows its values, which change with
+        // every frame of the run.
+        w.view().selectNextBody();
+        QVERIFY(w.view().selectedBody() >= 0);
+        QTest::qWait(300); // what the window does once, on being shown, is not counted
+
+        const double paused = eventsPerSecond(count, kCountMs);
+        qInfo("paused: %.1f events/s (%s)", paused, qPrintable(count.top()));
+        QVERIFY2(paused <= kBudgetPerSecond,
+                 qPrintable(QStringLiteral("%1 events/s paused, at most %2: %3")
+                                .arg(paused)
+                                .arg(kBudgetPerSecond)
+                                .arg(count.top())));
+        QVERIFY2(count.mostShowsOfOneObject() <= 2, qPrintable(count.top()));
+
+        const double t0 = w.controller().time();
+        w.controller().setRunning(true);
+        const double running = eventsPerSecond(count, kCountMs);
+        qInfo("running: %.1f events/s (%s)", running, qPrintable(count.top()));
+        // It did run: more than a few frames' worth of simulated time passed.
+        QVERIFY2(w.controller().time() - t0 > 0.25,
+                 qPrintable(QStringLiteral("t from %1 to %2").arg(t0).arg(w.controller().time())));
+        QVERIFY2(running <= kBudgetPerSecond,
+                 qPrintable(QStringLiteral("%1 events/s running, at most %2: %3")
+                                .arg(running)
+                                .arg(kBudgetPerSecond)
+                                .arg(count.top())));
+        QVERIFY2(count.mostShowsOfOneObject() <= 2, qPrintable(count.top()));
+    }
+
+    /// In the scene: the body chosen with ] (its name and speed), moved with an arrow (where
+    /// it is now, once the keys rest), play and pause, and a run that diverged are told.
+    void sceneChangesAreAnnounced()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(welcome(), true), QString());
+        showOnProjector(w);
+        EventCount count(w);
+        ui::WorldView& view = w.view();
+        view.setFocus();
+        QTest::keyClick(&view, Qt::Key_BracketRight);
+        const int body = view.selectedBody();
+        QVERIFY(body >= 0);
+        const QString label = w.controller().scene().bodyLabel(body);
+        QCOMPARE(count.announced().size(), 1);
+        QVERIFY2(count.announced().last().startsWith(label + QStringLiteral(", speed ")),
+                 qPrintable(count.announced().last()));
+
+        // Three presses, one announcement once the keys rest, with the new position.
+        for (int i = 0; i < 3; ++i)
+            QTest::keyClick(&view, Qt::Key_Right);
+        QCOMPARE(count.announced().size(), 1);
+        QTRY_COMPARE(count.announced().size(), 2);
+        const QString moved = count.announced().last();
+        QVERIFY2(moved.startsWith(label + QStringLiteral(": position (")) &&
+                     moved.contains(QStringLiteral("velocity (")),
+                 qPrintable(moved));
+        QTest::qWait(2 * ui::SceneNarrator::kSettleMs); // no second one for the same presses
+        QCOMPARE(count.announced().size(), 2);
+
+        w.controller().setRunning(true);
+        QCOMPARE(count.announced().last(), QStringLiteral("Running."));
+        w.controller().setRunning(false);
+        QVERIFY2(count.announced().last().startsWith(QStringLiteral("Paused at ")),
+                 qPrintable(count.announced().last()));
+
+        // The stiff spring past its stability limit: Verlet at dt = 10 ms diverges at once.
+        QCOMPARE(w.openScene(
+                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/stiff_spring.json"), true),
+                 QString());
+        w.controller().setDt(0.01);
+        for (int k = 0; k < 10000 && !w.controller().world().divergence(); ++k)
+            w.controller().stepForward();
+        QVERIFY(w.controller().world().divergence());
+        QVERIFY2(count.announced().contains(QStringLiteral("The simulation diverged and stopped.")),
+                 qPrintable(count.announced().join(u'|')));
+    }
+
+    /// In a lesson: each step is told (its number, title and first sentence) and its text
+    /// takes the focus; the verdict after Check is told with the text it shows.
+    void lessonChangesAreAnnounced()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        EventCount count(w);
+        ui::LessonPlayer& player = w.lessonPlayer();
+        QCOMPARE(w.openLesson(player.firstLessonPath(), true), QString());
+        const auto& steps = player.lesson()->steps;
+        const QString first =
+            QStringLiteral("Step 1 of %1: %2. ").arg(steps.size()).arg(steps.front().title);
+        QVERIFY2(!count.announced().isEmpty() && count.announced().last().startsWith(first),
+                 qPrintable(count.announced().join(u'|')));
+        QTRY_VERIFY(qobject_cast<QTextBrowser*>(QApplication::focusWidget()));
+
+        const MeasuredQuestion q = runToFirstQuestion(w);
+        QVERIFY(q.step >= 0 && q.value);
+        const QString title = steps[static_cast<std::size_t>(q.step)].title;
+        QVERIFY2(
+            count.announced().last().startsWith(
+                QStringLiteral("Step %1 of %2: %3. ").arg(q.step + 1).arg(steps.size()).arg(title)),
+            qPrintable(count.announced().last()));
+        // The first sentence of the text, not all of it.
+        QVERIFY(count.announced().last().size() < 400);
+        const qsizetype before = count.announced().size();
+        player.answer(0, QLocale().toString(*q.value)); // typed, then Return
+        QVERIFY(!player.result(0).isEmpty());
+        // The verdict first (a right answer may then let the run go: "Running.").
+        QVERIFY2(count.announced().size() > before &&
+                     count.announced().at(before) == player.result(0).simplified(),
+                 qPrintable(count.announced().mid(before).join(u'|') + QStringLiteral(" / ") +
+                            player.result(0)));
+    }
+
+    /// A panel shown by its key (or the View menu) takes the focus: the student who asked for
+    /// it works in it next.
+    void aDockShownByItsActionTakesTheFocus()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(welcome(), true), QString());
+        showOnProjector(w);
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QDockWidget* inspector = w.dock(QStringLiteral("inspector"));
+        QVERIFY(inspector);
+        inspector->toggleViewAction()->trigger(); // hidden
+        QVERIFY(!inspector->isVisible());
+        w.view().setFocus();
+        inspector->toggleViewAction()->trigger(); // shown again, as its key would
+        QTRY_VERIFY(inspector->isAncestorOf(QApplication::focusWidget()));
+    }
+
+    /// The first lesson from its start to its end, counted: each step begins with the focus
+    /// on its text, and a step with a question takes at most kMostKeysPerStep key presses:
+    /// Tab to the answer, type it (one press counted for the typing), Return, Alt+Right.
+    void firstLessonInFewKeysAStep()
+    {
+        constexpr int kMostKeysPerStep = 6;
+        MainWindow w;
+        w.fitToScreen(QRect(0, 0, 1024, 768));
+        w.show();
+        w.activateWindow();
+        QVERIFY(QTest::qWaitForWindowActive(&w));
+        ui::LessonPlayer& player = w.lessonPlayer();
+        QCOMPARE(w.openLesson(player.firstLessonPath(), true), QString());
+        const int steps = static_cast<int>(player.lesson()->steps.size());
+        int asked = 0;
+        for (int s = 0; s < steps; ++s) {
+            QCOMPARE(player.stepIndex(), s);
+            QCoreApplication::processEvents();
+            QVERIFY2(
+                qobject_cast<QTextBrowser*>(QApplication::focusWidget()),
+                qPrintable(QStringLiteral("step %1: the focus on %2")
+                               .arg(s + 1)
+                               .arg(QApplication::focusWidget()
+                                        ? QApplication::focusWidget()->metaObject()->className()
+                                        : "nothing")));
+            int presses = 0;
+            QWidget* box = player.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
+            const QList<QLineEdit*> answers =
+                box ? box->findChildren<QLineEdit*>() : QList<QLineEdit*>();
+            if (!answers.isEmpty()) {
+                ++asked;
+                while (QApplication::focusWidget() != answers.first() && presses < 20) {
+                    press(Qt::Key_Tab);
+                    ++presses;
+                }
+                QVERIFY2(
+                    QApplication::focusWidget() == answers.first(),
+                    qPrintable(
+                        QStringLiteral("step %1: not reached in %2 Tabs").arg(s + 1).arg(presses)));
+                QTest::keyClicks(answers.first(), QStringLiteral("1"));
+                ++presses;
+                press(Qt::Key_Return);
+                ++presses;
+            }
+            if (s + 1 < steps) {
+                press(Qt::Key_Right, Qt::AltModifier);
+                ++presses;
+                QCOMPARE(player.stepIndex(), s + 1);
+            }
+            QVERIFY2(presses <= kMostKeysPerStep,
+                     qPrintable(QStringLiteral("step %1: %2 key presses, at most %3")
+                                    .arg(s + 1)
+                                    .arg(presses)
+                                    .arg(kMostKeysPerStep)));
+        }
+        QVERIFY(asked > 0);
+    }
+};
+
+RIGIDLAB_TEST_MAIN(TestAccessibilityEvents)
+#include "test_accessibility_events.moc"

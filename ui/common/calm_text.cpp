@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "common/calm_text.h"
+
+#include "common/spoken_numbers.h"
+
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QTimer>
+
+namespace rigidlab::ui {
+
+namespace {
+
+const char* const kCalmNameObject = "rigidlabCalmName";
+
+/// Holds its widget's next accessible name until the calm interval since the last is over.
+class CalmName : public QObject {
+public:
+    explicit CalmName(QWidget& widget) : QObject(&widget), m_widget(widget)
+    {
+        setObjectName(QLatin1String(kCalmNameObject));
+        m_later.setSingleShot(true);
+        connect(&m_later, &QTimer::timeout, this, &CalmName::tell);
+    }
+
+    void ask(const QString& name, bool now)
+    {
+        m_name = name;
+        if (now) {
+            m_later.stop();
+            tell();
+            return;
+        }
+        if (m_later.isActive())
+            return; // the pending change takes the newest name when it comes
+        if (!m_since.isValid() || m_since.elapsed() >= kCalmIntervalMs)
+            tell();
+        else
+            m_later.start(kCalmIntervalMs - static_cast<int>(m_since.elapsed()));
+    }
+
+private:
+    void tell()
+    {
+        if (m_widget.accessibleName() == m_name)
+            return;
+        m_since.restart();
+        m_widget.setAccessibleName(m_name);
+    }
+
+    QWidget& m_widget;
+    QString m_name;
+    QElapsedTimer m_since;
+    QTimer m_later;
+};
+
+} // namespace
+
+void setCalmAccessibleName(QWidget& widget, const QString& name, bool now)
+{
+    // Found by its name: CalmName has no meta-object of its own for findChild to cast to.
+    auto* calm = static_cast<CalmName*>(
+        widget.findChild<QObject*>(QLatin1String(kCalmNameObject), Qt::FindDirectChildrenOnly));
+    if (!calm)
+        calm = new CalmName(widget);
+    calm->ask(name, now);
+}
+
+void setCalmText(QLabel& label, const QString& text)
+{
+    if (label.text() == text)
+        return;
+    // Named before its first text, so that QLabel does not tell that text as well.
+    if (label.accessibleName().isEmpty())
+        label.setAccessibleName(spokenSigns(text));
+    label.setText(text);
+    setCalmAccessibleName(label, spokenSigns(text));
+}
+
+} // namespace rigidlab::ui
