@@ -160,9 +160,11 @@ int commandLesson(const QStringList& words)
     if (!loaded.ok)
         return inputError(loaded.error);
     if (args.isSet(QStringLiteral("validate"))) {
-        printOut(QStringLiteral("ok: %1: lesson \"%2\", %3 steps\n")
+        const std::size_t steps = loaded.lesson.steps.size();
+        printOut(QStringLiteral("ok: %1: lesson \"%2\", %3 %4\n")
                      .arg(*path, loaded.lesson.title)
-                     .arg(loaded.lesson.steps.size()));
+                     .arg(steps)
+                     .arg(steps == 1 ? QStringLiteral("step") : QStringLiteral("steps")));
         return kExitOk;
     }
     if (!exportDir) {

@@ -441,6 +441,7 @@ void TestLessonPack::cliOneLanguageLessons()
                                 QStringLiteral("--lang"), lang});
         QVERIFY2(run.exitCode == 0, (run.out + run.err).constData());
         QVERIFY2(run.out.startsWith("ok: "), run.out.constData());
+        QVERIFY2(run.out.endsWith(", 1 step\n"), run.out.constData()); // not "1 steps"
         QVERIFY2((run.out + run.err).contains(warning), (run.out + run.err).constData());
     }
     QTemporaryDir dir;
