@@ -236,6 +236,13 @@ void TestLessonPack::refusesDamaged_data()
         o.insert(QStringLiteral("scenes"), scenes);
         return json(o);
     }) << QStringLiteral("scenes: \"scenes/../../x.json\" is not a scene's name");
+    // A pattern's $ also matches before a final line break: the name must end with .json.
+    QTest::newRow("a scene name ending in a newline") << Damage([&](QJsonObject o) {
+        QJsonObject scenes = o.value(u"scenes").toObject();
+        scenes.insert(QStringLiteral("scenes/x.json\n"), QJsonObject());
+        o.insert(QStringLiteral("scenes"), scenes);
+        return json(o);
+    }) << QStringLiteral("scenes: \"scenes/x.json\\n\" is not a scene's name");
     QTest::newRow("a scene not an object") << Damage([&](QJsonObject o) {
         QJsonObject scenes = o.value(u"scenes").toObject();
         scenes.insert(QStringLiteral("scenes/two_balls.json"), 3);
