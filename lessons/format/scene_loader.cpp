@@ -49,9 +49,6 @@ public:
     }
 
     SceneLoadResult read(const QJsonObject& root);
-    /// Refuses a scene whose bodies crowd past the broad phase's budget, and warns about one
-    /// with many overlapping bodies (scene_overlaps.h); false with result.error set.
-    bool checkCrowding(SceneLoadResult& result) const;
 
 private:
     /// A title or description: "..." or {"en": "...", "cs": "..."}, kept in the chosen language;
@@ -111,44 +108,14 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
     if (m_scene.title.isEmpty()) {
         m_scene.title = QFileInfo(m_in.sourceName()).completeBaseName();
     }
-    if (!checkCrowding(result)) {
+    if (const QString crowded = checkCrowding(m_scene, m_in.sourceName(), result.warnings);
+        !crowded.isEmpty()) {
+        result.error = crowded;
         return result;
     }
     result.ok = true;
     result.scene = std::move(m_scene);
     return result;
-}
-
-bool SceneReader::checkCrowding(SceneLoadResult& result) const
-{
-    const OverlapSurvey survey = surveyOverlaps(m_scene, kManyOverlaps);
-    const auto name = [this](physics::BodyId i) {
-        return QString::fromStdString(m_scene.bodies[static_cast<std::size_t>(i)].name);
-    };
-    if (survey.crowded) {
-        const physics::Vec2 at =
-            m_scene.bodies[static_cast<std::size_t>(survey.crowdedAt)].position;
-        result.error = m_in.sourceName() +
-                       FileMessages::tr(": bodies: more than %1 pairs of bodies overlap or "
-                                        "nearly touch (around \"%2\" at %3, %4 m): so crowded "
-                                        "a start needs memory and time growing with the square "
-                                        "of the bodies; spread them out")
-                           .arg(boxPairBudget(m_scene))
-                           .arg(name(survey.crowdedAt))
-                           .arg(at.x())
-                           .arg(at.y());
-        return false;
-    }
-    if (survey.pairs.size() >= kManyOverlaps) {
-        const auto [a, b] = survey.pairs.front();
-        result.warnings << m_in.sourceName() +
-                               FileMessages::tr(": bodies: %1 or more pairs of bodies start "
-                                                "overlapping (\"%2\" and \"%3\" among them): "
-                                                "the contacts push them apart at once")
-                                   .arg(survey.pairs.size())
-                                   .arg(name(a), name(b));
-    }
-    return true;
 }
 
 bool SceneReader::readText(const QJsonObject& root, QStringView key, QString& out,

@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "format/scene_overlaps.h"
 
+#include "format/json_reader.h"
+
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/sat.h"
 #include "rigidlab/physics/settings.h"
 
 #include <algorithm>
-#include <numeric>
 
 namespace rigidlab::lessons {
 
@@ -109,6 +110,35 @@ OverlapSurvey surveyOverlaps(const Scene& scene, std::size_t most)
 std::size_t boxPairBudget(const Scene& scene)
 {
     return kBoxPairsPerBody * scene.bodies.size() + kBoxPairsAlways;
+}
+
+QString checkCrowding(const Scene& scene, const QString& source, QStringList& warnings)
+{
+    using detail::FileMessages;
+    const OverlapSurvey survey = surveyOverlaps(scene, kManyOverlaps);
+    const auto name = [&scene](physics::BodyId i) {
+        return QString::fromStdString(scene.bodies[static_cast<std::size_t>(i)].name);
+    };
+    if (survey.crowded) {
+        const Vec2 at = scene.bodies[static_cast<std::size_t>(survey.crowdedAt)].position;
+        return source + FileMessages::tr(": bodies: more than %1 pairs of bodies overlap or "
+                                         "nearly touch (around \"%2\" at %3, %4 m): so crowded "
+                                         "a start needs memory and time growing with the square "
+                                         "of the bodies; spread them out")
+                            .arg(boxPairBudget(scene))
+                            .arg(name(survey.crowdedAt))
+                            .arg(at.x())
+                            .arg(at.y());
+    }
+    if (survey.pairs.size() >= kManyOverlaps) {
+        const auto [a, b] = survey.pairs.front();
+        warnings << source + FileMessages::tr(": bodies: %1 or more pairs of bodies start "
+                                              "overlapping (\"%2\" and \"%3\" among them): "
+                                              "the contacts push them apart at once")
+                                 .arg(survey.pairs.size())
+                                 .arg(name(a), name(b));
+    }
+    return {};
 }
 
 } // namespace rigidlab::lessons

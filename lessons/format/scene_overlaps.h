@@ -10,6 +10,9 @@
 
 #include "format/scene.h"
 
+#include <QString>
+#include <QStringList>
+
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -40,5 +43,10 @@ std::size_t boxPairBudget(const Scene& scene);
 
 /// From this many overlapping pairs on, validating a scene warns.
 inline constexpr std::size_t kManyOverlaps = 10;
+
+/// The loader's check: "SOURCE: bodies: more than N pairs ... spread them out" when the
+/// scene's boxes crowd past the budget, else empty; from kManyOverlaps overlapping pairs on,
+/// a line in `warnings`.
+QString checkCrowding(const Scene& scene, const QString& source, QStringList& warnings);
 
 } // namespace rigidlab::lessons

@@ -94,8 +94,6 @@ private slots:
     void runProfile();
     void bench();
     void lessonsListsOwn();
-    void worksheetRefusesAnotherLessonsAnswers();
-    void worksheetIsolatesNames();
 };
 
 void TestCli::help()
@@ -170,15 +168,6 @@ void TestCli::usageErrors_data()
         << QStringList{"stress", "--case", "nope"} << "stress: --case: unknown case \"nope\"";
     QTest::newRow("validate-no-file") << QStringList{"validate"} << "validate: which file?";
     QTest::newRow("sat-no-file") << QStringList{"sat"} << "sat: which file?";
-    // The name on a worksheet keeps the answers file's limits: one line of the page header.
-    const QString lesson = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/restitution.json");
-    const QString never = QDir::temp().filePath(QStringLiteral("never-written.pdf"));
-    QTest::newRow("student-two-lines")
-        << QStringList{"lesson", lesson, "--worksheet", never, "--student", "Jana\nNovakova"}
-        << "lesson: --student: must be one line";
-    QTest::newRow("student-too-long")
-        << QStringList{"lesson", lesson, "--worksheet", never, "--student", QString(201, u'a')}
-        << "lesson: --student: longer than 200 characters";
 }
 
 void TestCli::usageErrors()
@@ -603,58 +592,6 @@ void TestCli::lessonsListsOwn()
     const QByteArray added = after.out.mid(before.out.size());
     QCOMPARE(added,
              QFile::encodeName(QFileInfo(lesson).absoluteFilePath()) + "\tMy drop\tyour own\n");
-}
-
-void TestCli::worksheetRefusesAnotherLessonsAnswers()
-{
-    // Answers handed in for the stacks lesson, asked for the restitution lesson's sheet.
-    QTemporaryDir dir;
-    QVERIFY(dir.isValid());
-    const QString answers = dir.filePath(QStringLiteral("stacks-jana.answers.json"));
-    QFile file(answers);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(R"({"rigidlab-answers": 1, "lesson": "stacks.json", "steps": []})");
-    file.close();
-    const QString sheet = dir.filePath(QStringLiteral("sheet.pdf"));
-    const CliRun run =
-        runCli({QStringLiteral("lesson"),
-                QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/restitution.json"),
-                QStringLiteral("--worksheet"), sheet, QStringLiteral("--answers"), answers});
-    QVERIFY(!run.crashed);
-    QCOMPARE(run.exitCode, 2); // bad input
-    QVERIFY2(run.err.contains("lesson: answers to \"stacks.json\", not to \"restitution.json\""),
-             run.err.constData());
-    QVERIFY(!QFile::exists(sheet));
-}
-
-void TestCli::worksheetIsolatesNames()
-{
-    // A name written right to left beside a class: each part of the page header sits in a
-    // bidirectional isolate, so "2.B" is not pulled into the name ("أحمد محمد.B" around "2").
-    // Read back from the PDF's title (pdfinfo), which is the header's line.
-    QTemporaryDir dir;
-    QVERIFY(dir.isValid());
-    const QString answers = dir.filePath(QStringLiteral("restitution.answers.json"));
-    QFile file(answers);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    file.write(R"({"rigidlab-answers": 1, "lesson": "restitution.json", "student": "أحمد محمد",
-                    "class": "2.B", "steps": []})");
-    file.close();
-    const QString sheet = dir.filePath(QStringLiteral("sheet.pdf"));
-    const CliRun run =
-        runCli({QStringLiteral("lesson"),
-                QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/restitution.json"),
-                QStringLiteral("--worksheet"), sheet, QStringLiteral("--answers"), answers});
-    QVERIFY2(!run.crashed && run.exitCode == 0, run.err.constData());
-    QProcess info;
-    info.start(QStringLiteral("pdfinfo"), {sheet});
-    QVERIFY2(info.waitForFinished(30'000) && info.exitCode() == 0,
-             "pdfinfo failed (is poppler-utils installed?)");
-    const QString title = QString::fromUtf8(info.readAllStandardOutput());
-    const QString isolatedName = QChar(0x2068) + QStringLiteral("أحمد محمد") + QChar(0x2069);
-    const QString isolatedClass = QChar(0x2068) + QStringLiteral("2.B") + QChar(0x2069);
-    QVERIFY2(title.contains(isolatedName + QStringLiteral(" · ") + isolatedClass),
-             qPrintable(title));
 }
 
 RIGIDLAB_TEST_GUILESS_MAIN(TestCli)
