@@ -153,6 +153,7 @@ int fitSeries(const lessons::Scene& scene, const std::vector<measure::Parameter>
         return inputError(file + QStringLiteral(": ") + fit.error);
     printOut(
         QStringLiteral("fit: %1 to %2 points of %3\n").arg(target.name).arg(fit.points).arg(file));
+    printOut(measure::describeModel(fit, params) + u'\n');
     for (std::size_t i = 0; i < params.size(); ++i)
         printValue(params[i].name, fit.values[i]);
     const bool speed = target.quantity == measure::Quantity::Vx ||
@@ -206,6 +207,11 @@ int commandFit(const QStringList& words)
         const auto p = measure::parseParameter(text, loaded.scene, error);
         if (!p)
             return usageError(command, QStringLiteral("--param: ") + error);
+        const bool again = std::any_of(params.begin(), params.end(), [&](const auto& q) {
+            return q.kind == p->kind && q.bodies == p->bodies;
+        });
+        if (again)
+            return usageError(command, QStringLiteral("--param: %1 is named twice").arg(text));
         params.push_back(*p);
     }
     if (bounces && params.front().kind != measure::ParameterKind::Restitution)

@@ -14,6 +14,7 @@
 #include "format/lesson_catalog.h"
 
 #include <QDir>
+#include <QFileInfo>
 
 #include <cstdio>
 
@@ -70,11 +71,17 @@ int writeWorksheetCommand(const CommandLine& args, const QString& lessonPath, co
     std::vector<int> questions;
     for (const lessons::LessonStep& step : loaded.lesson.steps)
         questions.push_back(static_cast<int>(step.questions.size()));
-    if (const QString bad = lessons::answersMismatch(answers, questions); !bad.isEmpty())
+    if (const QString bad =
+            lessons::answersMismatch(answers, QFileInfo(loaded.lesson.path).fileName(), questions);
+        !bad.isEmpty())
         return inputError(QStringLiteral("%1: %2 (answers for another lesson?)")
                               .arg(answersPath.value_or(QString()), bad));
-    if (const auto student = args.value(QStringLiteral("student")))
+    if (const auto student = args.value(QStringLiteral("student"))) {
+        // The same limits as the answers file's student: one line of the sheet's header.
+        if (const QString problem = lessons::answerTextProblem(*student); !problem.isEmpty())
+            return usageError(args.command(), QStringLiteral("--student: ") + problem);
         answers.student = *student;
+    }
     // The sheet speaks the lesson's language; the program's own messages stay English.
     ui::applyLanguage(language);
     const ui::WorksheetKind kind = args.isSet(QStringLiteral("key")) ? ui::WorksheetKind::Key

@@ -12,6 +12,7 @@
 #include "window/main_window.h"
 #include "window/screenshots.h"
 
+#include "format/divergence_message.h"
 #include "format/languages.h"
 #include "format/lesson_pack.h"
 
@@ -39,6 +40,8 @@ namespace {
 
 /// Frames run before measuring, so that the first layout and paint do not count.
 constexpr int kWarmUpFrames = 30;
+/// The exit status of a run that diverged, as rigidlab-cli run gives it.
+constexpr int kExitDiverged = 3;
 
 /// Median and 95th percentile of the frame times, the share of physics in them, and the
 /// process's CPU time per frame (what the frames cost on a machine that is not shared).
@@ -362,6 +365,18 @@ void measureFrames(rigidlab::ui::SimulationController& controller, int frames)
                             {physicsMs.begin() + kWarmUpFrames, physicsMs.end()}, cpuMs);
             QApplication::exit(0);
         });
+    // A scene that diverges stops the run (the window's banner), and no more frames come:
+    // said, and the exit status is the command line's for a divergence.
+    QObject::connect(&controller, &rigidlab::ui::SimulationController::runningChanged, qApp,
+                     [&controller](bool running) {
+                         const auto& diverged = controller.world().divergence();
+                         if (running || !diverged)
+                             return;
+                         QTextStream(stderr) << "rigidlab: --measure-frames: the scene "
+                                             << rigidlab::lessons::divergenceMessage(*diverged)
+                                             << "; no frames to measure\n";
+                         QApplication::exit(kExitDiverged);
+                     });
     controller.measureFrames(frames + kWarmUpFrames);
 }
 

@@ -1175,6 +1175,18 @@
         <source>no %1 text (&quot;%2&quot;) in the whole scene: it will show in %3</source>
         <translation>v celé scéně chybí text v jazyce %1 (&quot;%2&quot;): zobrazí se v jazyce %3</translation>
     </message>
+    <message>
+        <source>lesson: answers to &quot;%1&quot;, not to &quot;%2&quot;</source>
+        <translation>lesson: odpovědi k „%1“, ne k „%2“</translation>
+    </message>
+    <message>
+        <source>: bodies: more than %1 pairs of bodies overlap or nearly touch (around &quot;%2&quot; at %3, %4 m): so crowded a start needs memory and time growing with the square of the bodies; spread them out</source>
+        <translation>: bodies: víc než %1 dvojic těles se překrývá nebo téměř dotýká (kolem „%2“ v %3, %4 m): tak nahuštěný začátek potřebuje paměť a čas rostoucí se čtvercem počtu těles; rozmístěte je</translation>
+    </message>
+    <message>
+        <source>: bodies: %1 or more pairs of bodies start overlapping (&quot;%2&quot; and &quot;%3&quot; among them): the contacts push them apart at once</source>
+        <translation>: bodies: %1 nebo víc dvojic těles se na začátku překrývá (mezi nimi „%2“ a „%3“): kontakty je hned odtlačí od sebe</translation>
+    </message>
 </context>
 <context>
     <name>ImpulseFormula</name>
@@ -1350,6 +1362,25 @@
     <message>
         <source>Settings not saved: cannot write %1</source>
         <translation>Nastavení se neuložilo: nelze zapisovat do %1</translation>
+    </message>
+</context>
+<context>
+    <name>OutputMessages</name>
+    <message>
+        <source>cannot write %1: %2</source>
+        <translation>nelze zapsat %1: %2</translation>
+    </message>
+    <message>
+        <source>the disk is full (%1)</source>
+        <translation>disk je plný (%1)</translation>
+    </message>
+    <message>
+        <source>it is a folder, not a file</source>
+        <translation>je to složka, ne soubor</translation>
+    </message>
+    <message>
+        <source>it is neither a file nor a character device or pipe the lab can write to</source>
+        <translation>není to soubor ani znakové zařízení nebo roura, do kterých laboratoř umí zapisovat</translation>
     </message>
 </context>
 <context>
@@ -2100,10 +2131,6 @@ n = (%4; %5)</translation>
         <translation>odraz %1 nenásleduje po odrazu %2</translation>
     </message>
     <message>
-        <source>the flights between the bounces do not get shorter (e = %1): not the bounces of one ball</source>
-        <translation>lety mezi odrazy se nezkracují (e = %1): to nejsou odrazy jednoho míčku</translation>
-    </message>
-    <message>
         <source>column %1</source>
         <translation>sloupec %1</translation>
     </message>
@@ -2218,6 +2245,50 @@ n = (%4; %5)</translation>
     <message>
         <source>cannot read: %1</source>
         <translation>nelze číst: %1</translation>
+    </message>
+    <message>
+        <source>%1 bounce times: more than a ball makes (at most %2); is this the time of every frame?</source>
+        <translation>%1 časů odrazů: víc, než míček udělá (nejvýš %2); není to čas každého snímku?</translation>
+    </message>
+    <message>
+        <source>the flights between the bounces do not get shorter: not the bounces of one ball (evenly spaced times, such as frames?)</source>
+        <translation>lety mezi odrazy se nezkracují: to nejsou odrazy jednoho míčku (rovnoměrně rozložené časy, třeba snímky?)</translation>
+    </message>
+    <message>
+        <source>%1 cannot be determined from these data: values far apart fit them as well (a ball at rest, too few bounces, or too short a measurement)</source>
+        <translation>%1 z těchto dat určit nelze: stejně dobře jim odpovídají i hodně vzdálené hodnoty (míček v klidu, příliš málo odrazů nebo příliš krátké měření)</translation>
+    </message>
+    <message>
+        <source>the measurement ends %1 s after the scene starts: fitting it would run %2 steps of %3 s about %4 times; give the file&apos;s time at which the scene starts (--time-zero) or measure a shorter span</source>
+        <translation>měření končí %1 s po začátku scény: určení by spustilo %2 kroků po %3 s asi %4krát; zadejte čas v souboru, kdy scéna začíná (--time-zero), nebo změřte kratší úsek</translation>
+    </message>
+    <message>
+        <source>model: the exact flights of a ball bouncing on a flat floor (closed form, no time step)</source>
+        <translation>model: přesné lety míčku odrážejícího se od rovné podlahy (vzorcem, bez časového kroku)</translation>
+    </message>
+    <message>
+        <source>%1 by %2</source>
+        <translation>%1 o %2</translation>
+    </message>
+    <message>
+        <source>model: the lab&apos;s run at dt = %1 s; halving the step still moved %2: that is added to the interval</source>
+        <translation>model: běh laboratoře s dt = %1 s; půlení kroku ještě posunulo %2: to je přičteno k intervalu</translation>
+    </message>
+    <message>
+        <source>model: the lab&apos;s run at dt = %1 s (halving the step moved %2, less than a third of the standard uncertainty)</source>
+        <translation>model: běh laboratoře s dt = %1 s (půlení kroku posunulo %2, méně než třetinu standardní nejistoty)</translation>
+    </message>
+    <message>
+        <source>&quot;%1&quot;: %2 does not move by itself (it is not a dynamic body): measure one that does</source>
+        <translation>„%1“: %2 se samo nepohybuje (není to dynamické těleso): měřte takové, které se pohybuje</translation>
+    </message>
+    <message>
+        <source>%1: time zero (%2 s) is so far from the file&apos;s times that they cannot be told apart</source>
+        <translation>%1: nulový čas (%2 s) je tak daleko od časů v souboru, že je nelze rozlišit</translation>
+    </message>
+    <message>
+        <source>the time column holds the time of every frame, not bounce times (name the column of bounce times &quot;bounce&quot;, or fit the positions with --quantity)</source>
+        <translation>sloupec času obsahuje čas každého snímku, ne časy odrazů (pojmenujte sloupec časů odrazů „bounce“, nebo určujte z poloh s --quantity)</translation>
     </message>
 </context>
 <context>

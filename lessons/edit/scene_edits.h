@@ -131,8 +131,11 @@ EditResult setWorldNumber(const Scene& scene, WorldNumber what, double value);
 EditResult setIntegrator(const Scene& scene, physics::IntegratorKind kind);
 EditResult setSolver(const Scene& scene, physics::SolverKind kind);
 
-/// Pairs of bodies (i < j) that overlap as placed, in index order. Touching is not overlapping;
-/// pairs that never collide (two static bodies, a body that passes through all) are left out.
+/// The most overlapping pairs the editor lists (a heap of duplicates has millions).
+inline constexpr std::size_t kMaxListedOverlaps = 100;
+/// Pairs of bodies (i < j) that overlap as placed, in index order, at most kMaxListedOverlaps.
+/// Touching is not overlapping; pairs that never collide (two static bodies, a body that
+/// passes through all) are left out.
 std::vector<std::pair<physics::BodyId, physics::BodyId>> overlappingPairs(const Scene& scene);
 /// "circle1 overlaps box2; overlapping bodies are pushed apart when the scene runs", or empty.
 QString overlapMessage(const Scene& scene);

@@ -32,11 +32,8 @@ bool readText(JsonReader& r, const QJsonObject& o, QStringView key, QString& out
 {
     if (!r.string(o, key, QString(), out, required))
         return false;
-    if (out.size() > kMaxAnswerText)
-        return r.fail(key.toString(),
-                      FileMessages::tr("longer than %1 characters").arg(kMaxAnswerText));
-    if (out.contains(u'\n') || out.contains(u'\r'))
-        return r.fail(key.toString(), FileMessages::tr("must be one line"));
+    if (const QString problem = answerTextProblem(out); !problem.isEmpty())
+        return r.fail(key.toString(), problem);
     return true;
 }
 
@@ -271,8 +268,21 @@ QByteArray answersJson(const Answers& answers)
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
-QString answersMismatch(const Answers& answers, const std::vector<int>& questionsPerStep)
+QString answerTextProblem(const QString& text)
 {
+    if (text.size() > kMaxAnswerText)
+        return FileMessages::tr("longer than %1 characters").arg(kMaxAnswerText);
+    if (text.contains(u'\n') || text.contains(u'\r'))
+        return FileMessages::tr("must be one line");
+    return {};
+}
+
+QString answersMismatch(const Answers& answers, const QString& lessonFile,
+                        const std::vector<int>& questionsPerStep)
+{
+    if (!answers.lessonFile.isEmpty() && answers.lessonFile != lessonFile)
+        return FileMessages::tr("lesson: answers to \"%1\", not to \"%2\"")
+            .arg(answers.lessonFile, lessonFile);
     if (answers.steps.size() > questionsPerStep.size())
         return FileMessages::tr("steps: %1 steps, the lesson has %2")
             .arg(answers.steps.size())

@@ -78,8 +78,15 @@ AnswersLoadResult loadAnswersJson(const QByteArray& bytes, const QString& path);
 /// The file's bytes: what loadAnswersJson() reads back to the same Answers.
 QByteArray answersJson(const Answers& answers);
 
-/// Empty when `answers` fits a lesson with these question counts per step, else the reason
-/// ("steps[2].questions: 3 questions, the lesson's step 3 has 2").
-QString answersMismatch(const Answers& answers, const std::vector<int>& questionsPerStep);
+/// Empty when `answers` fits the lesson in the file `lessonFile` (its name, without the folder)
+/// with these question counts per step, else the reason ("lesson: answers to \"stacks.json\",
+/// not to \"restitution.json\"", "steps[2].questions: 3 questions, the lesson's step 3 has
+/// 2"). Answers that name no lesson (an empty sheet's) fit any.
+QString answersMismatch(const Answers& answers, const QString& lessonFile,
+                        const std::vector<int>& questionsPerStep);
+
+/// Empty when `text` may be a line of an answers file (a student's or a class's name): at most
+/// kMaxAnswerText characters, one line; else the reason ("longer than 200 characters").
+QString answerTextProblem(const QString& text);
 
 } // namespace rigidlab::lessons

@@ -35,7 +35,7 @@ constexpr int kMaxAuthor = 200;
 bool isSceneName(const QString& name)
 {
     static const QRegularExpression pattern(
-        QStringLiteral("^scenes/[A-Za-z0-9_][A-Za-z0-9_.-]{0,79}\\.json$"));
+        QStringLiteral("\\Ascenes/[A-Za-z0-9_][A-Za-z0-9_.-]{0,79}\\.json\\z"));
     return pattern.match(name).hasMatch() && !name.contains(QStringLiteral(".."));
 }
 

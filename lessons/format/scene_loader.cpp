@@ -11,6 +11,7 @@
 
 #include "format/field_reading.h"
 #include "format/limits.h"
+#include "format/scene_overlaps.h"
 #include "format/scene_rules.h"
 #include "format/scene_schema.h"
 
@@ -108,6 +109,11 @@ SceneLoadResult SceneReader::read(const QJsonObject& root)
     }
     if (m_scene.title.isEmpty()) {
         m_scene.title = QFileInfo(m_in.sourceName()).completeBaseName();
+    }
+    if (const QString crowded = checkCrowding(m_scene, m_in.sourceName(), result.warnings);
+        !crowded.isEmpty()) {
+        result.error = crowded;
+        return result;
     }
     result.ok = true;
     result.scene = std::move(m_scene);

@@ -2,6 +2,7 @@
 #include "measure/fit.h"
 
 #include "format/divergence_message.h"
+#include "measure/exact_flights.h"
 #include "measure/minimise.h"
 #include "rigidlab/physics/world.h"
 
@@ -13,49 +14,19 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rigidlab::measure {
 
 namespace {
 
-struct KindName {
-    ParameterKind kind;
-    const char* name;
-};
-constexpr KindName kKindNames[] = {
-    {ParameterKind::Restitution, "restitution"},
-    {ParameterKind::Friction, "friction"},
-    {ParameterKind::VelocityX, "vx"},
-    {ParameterKind::VelocityY, "vy"},
-};
-
-/// Search span of an initial velocity about the scene's [m/s].
-constexpr double kVelocitySpan = 5.0;
-constexpr double kMaxFriction = 2.0;
-
-bool isVelocity(ParameterKind k)
-{
-    return k == ParameterKind::VelocityX || k == ParameterKind::VelocityY;
-}
-
-QString bodyList(const lessons::Scene& scene)
-{
-    QStringList ids;
-    for (const physics::BodyDef& b : scene.bodies)
-        ids << QString::fromStdString(b.name);
-    return ids.join(QStringLiteral(", "));
-}
-
-std::optional<physics::BodyId> findBody(const QString& id, const lessons::Scene& scene,
-                                        QString& error)
-{
-    const auto index = scene.bodyIndex(id);
-    if (!index)
-        error = QCoreApplication::translate("rigidlab::measure",
-                                            "unknown body \"%1\" (the scene has: %2)")
-                    .arg(id, bodyList(scene));
-    return index;
-}
+/// A halving of the step that moves each value by less than this fraction of its standard
+/// uncertainty no longer matters (it adds under 6 % to the interval, in quadrature).
+constexpr double kNegligibleStepChange = 1.0 / 3.0;
+/// Gauss–Newton iterations at each halved step, from the value at the step before.
+constexpr int kRefineIterations = 2;
+/// A 95 % interval wider than this share of the search range determines nothing.
+constexpr double kWidestInterval = 0.5;
 
 /// The quantity's value of a body in the world.
 double read(const physics::World& world, const Target& target)
@@ -77,20 +48,25 @@ double read(const physics::World& world, const Target& target)
     }
 }
 
-double studentsT95(int dof)
-{
-    const boost::math::students_t dist(std::max(dof, 1));
-    return boost::math::quantile(boost::math::complement(dist, 0.025));
-}
-
-/// The simulated values with the parameters set to x, or nothing (the error kept).
+/// The simulated values with the parameters set to x, or nothing (the error kept). Every
+/// sum of squares taken is kept with its point: the identifiability check reads them.
 struct Model {
     const lessons::Scene& scene;
     const std::vector<Parameter>& parameters;
     const Target& target;
-    const std::vector<double>& times;
+    const Series& series;
+    bool exact = false; ///< closed-form flights (exact_flights.h), else the lab's run at dt
+    double dt = 0;      ///< [s]
     int runs = 0;
+    long long work = 0; ///< the lab's steps run so far
     QString error;
+    std::vector<std::pair<std::vector<double>, double>> tried;
+
+    const std::vector<double>& times() const { return series.t; }
+    long long stepsPerRun() const
+    {
+        return static_cast<long long>(std::ceil(series.t.back() / dt)) + 1;
+    }
 
     std::optional<std::vector<double>> operator()(const std::vector<double>& x)
     {
@@ -98,7 +74,11 @@ struct Model {
         for (std::size_t i = 0; i < parameters.size(); ++i)
             setParameter(trial, parameters[i], x[i]);
         ++runs;
-        Simulated s = simulateAt(trial, target, times);
+        if (exact)
+            return exactFlightsAt(trial, target, series.t);
+        trial.world.dt = dt;
+        work += stepsPerRun();
+        Simulated s = simulateAt(trial, target, series.t);
         if (!s.ok) {
             if (error.isEmpty())
                 error = s.error;
@@ -106,13 +86,26 @@ struct Model {
         }
         return std::move(s.values);
     }
+
+    /// Σ (measured − simulated)², infinite where the model fails.
+    double sumSquares(const std::vector<double>& x)
+    {
+        const auto sim = (*this)(x);
+        double s = 0;
+        for (std::size_t i = 0; sim && i < sim->size(); ++i)
+            s += std::pow(series.value[i] - (*sim)[i], 2);
+        if (!sim)
+            s = std::numeric_limits<double>::infinity();
+        tried.emplace_back(x, s);
+        return s;
+    }
 };
 
 /// J: d(simulated)/d(parameter) by central differences (one-sided at a bound).
 std::optional<Eigen::MatrixXd> jacobian(Model& model, const std::vector<double>& x,
                                         const std::vector<std::pair<double, double>>& bounds)
 {
-    const std::size_t n = model.times.size(), k = x.size();
+    const std::size_t n = model.times().size(), k = x.size();
     Eigen::MatrixXd J(n, k);
     for (std::size_t j = 0; j < k; ++j) {
         const double h = 1e-3 * std::max(1.0, bounds[j].second - bounds[j].first);
@@ -136,15 +129,23 @@ FitResult fitFailed(const QString& error)
     return r;
 }
 
+QString notDetermined(const Parameter& p)
+{
+    return QCoreApplication::translate("rigidlab::measure",
+                                       "%1 cannot be determined from these data: values far "
+                                       "apart fit them as well (a ball at rest, too few "
+                                       "bounces, or too short a measurement)")
+        .arg(p.name);
+}
+
 /// The values' standard errors and 95 % half-widths from J and the residuals.
 bool uncertainties(const Eigen::MatrixXd& J, double sumSquares, FitResult& result,
                    const std::vector<Parameter>& parameters)
 {
     const Eigen::MatrixXd JtJ = J.transpose() * J;
     const Eigen::LDLT<Eigen::MatrixXd> ldlt(JtJ);
-    const double scale = JtJ.diagonal().maxCoeff();
     for (Eigen::Index j = 0; j < JtJ.rows(); ++j) {
-        if (!(JtJ(j, j) > 1e-12 * scale) || !(JtJ(j, j) > 0)) {
+        if (!(JtJ(j, j) > 0)) {
             result.error =
                 QCoreApplication::translate("rigidlab::measure",
                                             "the measurement does not depend on %1: it cannot "
@@ -170,121 +171,161 @@ bool uncertainties(const Eigen::MatrixXd& J, double sumSquares, FitResult& resul
     return true;
 }
 
-} // namespace
-
-std::optional<Parameter> parseParameter(const QString& text, const lessons::Scene& scene,
-                                        QString& error)
+/// Whether the data determine each value: its interval is not as wide as the search, and no
+/// point tried far outside it (the grid spans the whole search) fits the data as well as the
+/// interval's own ends. A flat or many-dipped sum of squares has such points; a ball at rest
+/// fits every e alike. The first parameter that is not determined, or none.
+std::optional<std::size_t> undetermined(const FitResult& result, const Model& model,
+                                        const std::vector<double>& best, double bestSum,
+                                        const std::vector<std::pair<double, double>>& bounds)
 {
-    const qsizetype colon = text.indexOf(u':');
-    const QString kindName = colon < 0 ? text : text.left(colon);
-    Parameter p;
-    p.name = text;
-    const auto kind =
-        std::find_if(std::begin(kKindNames), std::end(kKindNames),
-                     [&](const KindName& k) { return kindName == QLatin1StringView(k.name); });
-    if (kind == std::end(kKindNames)) {
-        error = QCoreApplication::translate("rigidlab::measure",
-                                            "unknown parameter \"%1\" (expected restitution, "
-                                            "friction, vx or vy)")
-                    .arg(kindName);
-        return std::nullopt;
+    const double t95 = studentsT95(result.degreesOfFreedom);
+    const double within = bestSum * (1.0 + t95 * t95 / result.degreesOfFreedom);
+    for (std::size_t j = 0; j < best.size(); ++j) {
+        const double range = bounds[j].second - bounds[j].first;
+        const double halfWidth = result.values[j].halfWidth95;
+        if (!(2 * halfWidth < kWidestInterval * range))
+            return j;
+        for (const auto& [x, sum] : model.tried)
+            if (sum <= within && std::abs(x[j] - best[j]) > 2 * halfWidth + 1e-9 * range)
+                return j;
     }
-    p.kind = kind->kind;
-    const QStringList ids =
-        colon < 0 ? QStringList() : text.mid(colon + 1).split(u',', Qt::KeepEmptyParts);
-    for (const QString& id : ids) {
-        const auto body = findBody(id.trimmed(), scene, error);
-        if (!body)
+    return std::nullopt;
+}
+
+/// Residuals, RMS and simulated values at the values in `result`.
+bool fillResiduals(Model& model, FitResult& result)
+{
+    std::vector<double> x;
+    for (const FittedValue& v : result.values)
+        x.push_back(v.value);
+    const auto sim = model(x);
+    if (!sim)
+        return false;
+    result.simulated = *sim;
+    result.residuals.clear();
+    double sum = 0;
+    for (std::size_t i = 0; i < sim->size(); ++i) {
+        result.residuals.push_back(model.series.value[i] - (*sim)[i]);
+        sum += result.residuals.back() * result.residuals.back();
+    }
+    result.rms = std::sqrt(sum / static_cast<double>(sim->size()));
+    return true;
+}
+
+double sumOfSquares(const FitResult& result)
+{
+    double sum = 0;
+    for (const double r : result.residuals)
+        sum += r * r;
+    return sum;
+}
+
+/// Gauss–Newton steps from x with a Jacobian J taken at a nearby step (it hardly changes
+/// when the step is halved), kept in the bounds; nothing when the model fails.
+std::optional<std::vector<double>> gaussNewton(Model& model, std::vector<double> x,
+                                               const Eigen::MatrixXd& J,
+                                               const std::vector<std::pair<double, double>>& bounds)
+{
+    const Eigen::LDLT<Eigen::MatrixXd> normal(J.transpose() * J);
+    for (int iteration = 0; iteration < kRefineIterations; ++iteration) {
+        const auto sim = model(x);
+        if (!sim)
             return std::nullopt;
-        p.bodies.push_back(*body);
+        Eigen::VectorXd r(static_cast<Eigen::Index>(sim->size()));
+        for (std::size_t i = 0; i < sim->size(); ++i)
+            r(static_cast<Eigen::Index>(i)) = model.series.value[i] - (*sim)[i];
+        const Eigen::VectorXd dx = normal.solve(J.transpose() * r);
+        for (std::size_t j = 0; j < x.size(); ++j)
+            x[j] = std::clamp(x[j] + dx(static_cast<Eigen::Index>(j)), bounds[j].first,
+                              bounds[j].second);
     }
-    if (isVelocity(p.kind) && p.bodies.size() != 1) {
-        error = QCoreApplication::translate("rigidlab::measure", "%1: name one body, as in %2:ball")
-                    .arg(text, kindName);
-        return std::nullopt;
-    }
-    return p;
+    return x;
 }
 
-std::optional<Target> parseTarget(const QString& text, const lessons::Scene& scene, QString& error)
+/// Halves the lab's step until that moves no value by more than kNegligibleStepChange of its
+/// standard uncertainty, or the work budget ends (then the last change is added to each
+/// interval). `result` holds the values at the scene's step and gets them at the last step.
+bool refineStep(Model& model, Eigen::MatrixXd J, FitResult& result,
+                const std::vector<Parameter>& parameters,
+                const std::vector<std::pair<double, double>>& bounds, long long maxWork)
 {
-    const qsizetype colon = text.indexOf(u':');
-    const auto quantity = quantityFromName(colon < 0 ? text : text.left(colon));
-    const bool measurable = quantity && *quantity != Quantity::Time &&
-                            *quantity != Quantity::BounceTime && *quantity != Quantity::Ignored;
-    if (!measurable || colon < 0) {
-        error = QCoreApplication::translate("rigidlab::measure",
-                                            "\"%1\": expected QUANTITY:BODY with QUANTITY x, y, "
-                                            "vx, vy or v, as in y:ball")
-                    .arg(text);
-        return std::nullopt;
-    }
-    const auto body = findBody(text.mid(colon + 1).trimmed(), scene, error);
-    if (!body)
-        return std::nullopt;
-    return Target{*quantity, *body, text};
-}
-
-double parameterValue(const lessons::Scene& scene, const Parameter& p)
-{
-    const physics::BodyDef* body =
-        p.bodies.empty() ? nullptr : &scene.bodies[static_cast<std::size_t>(p.bodies.front())];
-    switch (p.kind) {
-    case ParameterKind::Restitution:
-        return body && body->restitution >= 0 ? body->restitution : scene.world.restitution;
-    case ParameterKind::Friction:
-        return body && body->friction >= 0 ? body->friction : scene.world.friction;
-    case ParameterKind::VelocityX:
-        return body ? body->velocity.x() : 0.0;
-    case ParameterKind::VelocityY:
-        return body ? body->velocity.y() : 0.0;
-    }
-    return 0.0;
-}
-
-void setParameter(lessons::Scene& scene, const Parameter& p, double value)
-{
-    std::vector<physics::BodyId> bodies = p.bodies;
-    if (bodies.empty()) {
-        for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-            bodies.push_back(static_cast<physics::BodyId>(i));
-        if (p.kind == ParameterKind::Restitution)
-            scene.world.restitution = value;
-        if (p.kind == ParameterKind::Friction)
-            scene.world.friction = value;
-    }
-    for (const physics::BodyId id : bodies) {
-        physics::BodyDef& b = scene.bodies[static_cast<std::size_t>(id)];
-        switch (p.kind) {
-        case ParameterKind::Restitution:
-            b.restitution = value;
-            break;
-        case ParameterKind::Friction:
-            b.friction = value;
-            break;
-        case ParameterKind::VelocityX:
-            b.velocity.x() = value;
-            break;
-        case ParameterKind::VelocityY:
-            b.velocity.y() = value;
+    std::vector<double> x;
+    for (const FittedValue& v : result.values)
+        x.push_back(v.value);
+    result.stepChange.assign(x.size(), 0.0);
+    const auto negligible = [&] {
+        for (std::size_t j = 0; j < x.size(); ++j)
+            if (!(std::abs(result.stepChange[j]) <=
+                  kNegligibleStepChange * result.values[j].standardError))
+                return false;
+        return true;
+    };
+    // Each level: Gauss–Newton with the Jacobian of the level before (it hardly changes),
+    // then the residuals; a Jacobian of its own only at the last level, for the interval.
+    const long long levelRuns = kRefineIterations + 1;
+    const long long lastRuns = 2 * static_cast<long long>(x.size());
+    bool halved = false;
+    while (!halved || !negligible()) {
+        // At least one halving, else the step's error is unknown; more while the budget lasts.
+        const long long next = 2 * model.stepsPerRun() * (levelRuns + lastRuns);
+        if (halved && model.work + next > maxWork) {
+            result.stepErrorAdded = true;
             break;
         }
+        model.dt /= 2;
+        const auto refined = gaussNewton(model, x, J, bounds);
+        if (!refined)
+            return false;
+        for (std::size_t j = 0; j < x.size(); ++j) {
+            result.stepChange[j] = (*refined)[j] - x[j];
+            result.values[j].value = (*refined)[j];
+        }
+        x = *refined;
+        halved = true;
+        if (!fillResiduals(model, result) ||
+            !uncertainties(J, sumOfSquares(result), result, parameters))
+            return false;
     }
+    const auto lastJ = jacobian(model, x, bounds);
+    if (!lastJ || !uncertainties(*lastJ, sumOfSquares(result), result, parameters))
+        return false;
+    result.step = model.dt;
+    if (result.stepErrorAdded)
+        for (std::size_t j = 0; j < x.size(); ++j) {
+            FittedValue& v = result.values[j];
+            const double change = std::abs(result.stepChange[j]);
+            v.halfWidth95 += change;
+            v.standardError = std::hypot(v.standardError, change);
+        }
+    return true;
 }
 
-std::pair<double, double> parameterBounds(const lessons::Scene& scene, const Parameter& p)
+/// The work of a fit at the scene's own step, estimated before it runs: the grid, the
+/// minimiser and the Jacobian.
+QString tooMuchWork(const Model& model, int grid, std::size_t k, long long maxWork)
 {
-    switch (p.kind) {
-    case ParameterKind::Restitution:
-        return {0.0, 1.0};
-    case ParameterKind::Friction:
-        return {0.0, kMaxFriction};
-    case ParameterKind::VelocityX:
-    case ParameterKind::VelocityY:
-        break;
-    }
-    const double v = parameterValue(scene, p);
-    return {v - kVelocitySpan, v + kVelocitySpan};
+    const double runs = std::pow(grid, static_cast<double>(k)) + 60.0 * static_cast<double>(k);
+    const double steps = static_cast<double>(model.stepsPerRun());
+    if (runs * steps <= static_cast<double>(maxWork))
+        return {};
+    return QCoreApplication::translate("rigidlab::measure",
+                                       "the measurement ends %1 s after the scene starts: "
+                                       "fitting it would run %2 steps of %3 s about %4 times; "
+                                       "give the file's time at which the scene starts "
+                                       "(--time-zero) or measure a shorter span")
+        .arg(model.series.t.back())
+        .arg(model.stepsPerRun())
+        .arg(model.dt)
+        .arg(runs);
+}
+
+} // namespace
+
+double studentsT95(int dof)
+{
+    const boost::math::students_t dist(std::max(dof, 1));
+    return boost::math::quantile(boost::math::complement(dist, 0.025));
 }
 
 Simulated simulateAt(const lessons::Scene& scene, const Target& target,
@@ -325,6 +366,30 @@ Simulated simulateAt(const lessons::Scene& scene, const Target& target,
     return out;
 }
 
+QString describeModel(const FitResult& fit, const std::vector<Parameter>& parameters)
+{
+    if (fit.exact)
+        return QCoreApplication::translate("rigidlab::measure",
+                                           "model: the exact flights of a ball bouncing on a "
+                                           "flat floor (closed form, no time step)");
+    QStringList changes;
+    for (std::size_t i = 0; i < parameters.size() && i < fit.stepChange.size(); ++i)
+        changes << QCoreApplication::translate("rigidlab::measure", "%1 by %2")
+                       .arg(parameters[i].name, QString::number(fit.stepChange[i], 'g', 2));
+    const QString changed = changes.join(QStringLiteral(", "));
+    const QString step = QString::number(fit.step, 'g', 6);
+    if (fit.stepErrorAdded)
+        return QCoreApplication::translate("rigidlab::measure",
+                                           "model: the lab's run at dt = %1 s; halving the "
+                                           "step still moved %2: that is added to the interval")
+            .arg(step, changed);
+    return QCoreApplication::translate("rigidlab::measure",
+                                       "model: the lab's run at dt = %1 s (halving the step "
+                                       "moved %2, less than a third of the standard "
+                                       "uncertainty)")
+        .arg(step, changed);
+}
+
 FitResult fitScene(const lessons::Scene& scene, const std::vector<Parameter>& parameters,
                    const Target& target, const Series& series, const FitOptions& options)
 {
@@ -339,7 +404,16 @@ FitResult fitScene(const lessons::Scene& scene, const std::vector<Parameter>& pa
                                                      "measure more")
                              .arg(n)
                              .arg(k));
-    Model model{scene, parameters, target, series.t, 0, QString()};
+    Model model{scene, parameters, target, series, false, scene.world.dt, 0, 0, {}, {}};
+    model.exact =
+        options.exactWherePossible &&
+        std::none_of(parameters.begin(), parameters.end(),
+                     [](const Parameter& p) { return p.kind == ParameterKind::VelocityX; }) &&
+        exactFlightsAt(scene, target, series.t).has_value();
+    if (!model.exact)
+        if (const QString error = tooMuchWork(model, options.grid, k, options.maxWork);
+            !error.isEmpty())
+            return fitFailed(error);
     std::vector<std::pair<double, double>> bounds;
     std::vector<double> lo, hi;
     for (const Parameter& p : parameters) {
@@ -347,94 +421,30 @@ FitResult fitScene(const lessons::Scene& scene, const std::vector<Parameter>& pa
         lo.push_back(bounds.back().first);
         hi.push_back(bounds.back().second);
     }
-    const auto sumSquares = [&](const std::vector<double>& x) {
-        const auto sim = model(x);
-        if (!sim)
-            return std::numeric_limits<double>::infinity();
-        double s = 0;
-        for (int i = 0; i < n; ++i)
-            s += std::pow(
-                series.value[static_cast<std::size_t>(i)] - (*sim)[static_cast<std::size_t>(i)], 2);
-        return s;
-    };
-    const Minimum best = minimiseInBounds(sumSquares, lo, hi, options.grid);
+    const Minimum best = minimiseInBounds(
+        [&](const std::vector<double>& x) { return model.sumSquares(x); }, lo, hi, options.grid);
     if (!std::isfinite(best.value))
         return fitFailed(model.error);
     FitResult result;
+    result.exact = model.exact;
     result.points = n;
     result.degreesOfFreedom = n - static_cast<int>(k);
     for (double x : best.x)
         result.values.push_back({x, 0, 0});
     const auto J = jacobian(model, best.x, bounds);
-    const auto sim = model(best.x);
-    if (!J || !sim)
+    if (!J || !fillResiduals(model, result))
         return fitFailed(model.error);
-    result.simulated = *sim;
-    for (int i = 0; i < n; ++i)
-        result.residuals.push_back(series.value[static_cast<std::size_t>(i)] -
-                                   result.simulated[static_cast<std::size_t>(i)]);
-    result.rms = std::sqrt(best.value / n);
-    result.runs = model.runs;
     if (!uncertainties(*J, best.value, result, parameters))
         return fitFailed(result.error);
+    if (const auto j = undetermined(result, model, best.x, best.value, bounds))
+        return fitFailed(notDetermined(parameters[*j]));
+    if (model.exact)
+        result.stepChange.assign(k, 0.0);
+    else if (!refineStep(model, *J, result, parameters, bounds, options.maxWork))
+        return fitFailed(result.error.isEmpty() ? model.error : result.error);
+    result.runs = model.runs;
     result.ok = true;
     return result;
-}
-
-BounceFit fitBounceTimes(const std::vector<double>& bounces)
-{
-    BounceFit fit;
-    if (static_cast<int>(bounces.size()) < kMinBounces) {
-        fit.error = QCoreApplication::translate("rigidlab::measure",
-                                                "%1 bounce times: e needs at least %2 (three "
-                                                "flights between them)")
-                        .arg(bounces.size())
-                        .arg(kMinBounces);
-        return fit;
-    }
-    for (std::size_t i = 1; i < bounces.size(); ++i) {
-        fit.flightTimes.push_back(bounces[i] - bounces[i - 1]);
-        if (!(fit.flightTimes.back() > 0) || !std::isfinite(fit.flightTimes.back())) {
-            fit.error =
-                QCoreApplication::translate("rigidlab::measure", "bounce %1 is not after bounce %2")
-                    .arg(i + 1)
-                    .arg(i);
-            return fit;
-        }
-    }
-    // Weighted straight line ln T = a + b i, weights T² (a timing error δ moves ln T by δ/T).
-    double sw = 0, si = 0, sy = 0, sii = 0, siy = 0;
-    const std::size_t m = fit.flightTimes.size();
-    for (std::size_t i = 0; i < m; ++i) {
-        const double T = fit.flightTimes[i], w = T * T, y = std::log(T), x = static_cast<double>(i);
-        sw += w;
-        si += w * x;
-        sy += w * y;
-        sii += w * x * x;
-        siy += w * x * y;
-    }
-    const double det = sw * sii - si * si;
-    const double b = (sw * siy - si * sy) / det, a = (sy - b * si) / sw;
-    double chi2 = 0;
-    for (std::size_t i = 0; i < m; ++i) {
-        const double T = fit.flightTimes[i];
-        chi2 += T * T * std::pow(std::log(T) - a - b * static_cast<double>(i), 2);
-    }
-    fit.degreesOfFreedom = static_cast<int>(m) - 2;
-    const double s2 = chi2 / fit.degreesOfFreedom;
-    fit.rmsLog = std::sqrt(chi2 / sw);
-    fit.e.value = std::exp(b);
-    fit.e.standardError = fit.e.value * std::sqrt(s2 * sw / det);
-    fit.e.halfWidth95 = studentsT95(fit.degreesOfFreedom) * fit.e.standardError;
-    if (!(fit.e.value < 1)) {
-        fit.error = QCoreApplication::translate("rigidlab::measure",
-                                                "the flights between the bounces do not get "
-                                                "shorter (e = %1): not the bounces of one ball")
-                        .arg(fit.e.value);
-        return fit;
-    }
-    fit.ok = true;
-    return fit;
 }
 
 } // namespace rigidlab::measure

@@ -164,6 +164,16 @@ bool convertColumn(const Table& table, std::size_t c, Quantity q, double scale, 
                         .arg(in[r]);
             return false;
         }
+        if (isTime(q) && lastRow >= 0 && !(out[r] > last) &&
+            in[r] > in[static_cast<std::size_t>(lastRow)]) {
+            // Rising in the file, not once time zero is taken off: rounded away.
+            error = QCoreApplication::translate("rigidlab::measure",
+                                                "%1: time zero (%2 s) is so far from the "
+                                                "file's times that they cannot be told apart")
+                        .arg(cellPlace(table, row, c))
+                        .arg(shift);
+            return false;
+        }
         if (isTime(q) && lastRow >= 0 && !(out[r] > last)) {
             error = QCoreApplication::translate("rigidlab::measure",
                                                 "%1: the time %2 is not after %3 on line %4 "
@@ -283,10 +293,10 @@ std::vector<Quantity> guessMapping(const Table& table, Quantity plainValue)
     }
     for (std::size_t c = 0; c < n; ++c) {
         const QString name = table.columns[c].name.toLower().simplified();
+        // Two columns with names of one quantity (t, y, height) both get it: which one is
+        // meant is the user's choice, and toMeasurement refuses the pair until it is made.
         for (const HeaderName& h : kHeaderNames) {
-            const bool taken =
-                std::find(mapping.begin(), mapping.end(), h.quantity) != mapping.end();
-            if (name == QStringView(h.name) && !taken) {
+            if (name == QStringView(h.name)) {
                 mapping[c] = h.quantity;
                 break;
             }
@@ -328,6 +338,17 @@ MeasurementResult toMeasurement(const Table& table, const QString& sourceName,
             collectBounces(lab[c], m.bounces);
     }
     if (options.bounceTimesOnly) {
+        // A time column is read as bounce times only when it is all the file holds: beside
+        // positions or speeds it holds the time of every frame.
+        const auto values = std::count_if(mapping.begin(), mapping.end(), [](Quantity q) {
+            return q != Quantity::Ignored && !isTime(q);
+        });
+        if (m.bounces.empty() && values > 0)
+            return failed(sourceName, QCoreApplication::translate(
+                                          "rigidlab::measure",
+                                          "the time column holds the time of every frame, not "
+                                          "bounce times (name the column of bounce times "
+                                          "\"bounce\", or fit the positions with --quantity)"));
         if (m.bounces.empty())
             collectBounces(time, m.bounces);
         result.ok = true;

@@ -120,8 +120,9 @@ struct MeasurementResult {
     Measurement measurement;
 };
 
-/// The quantity of each column, from its header name (Ignored where unknown). Without a
-/// header: time, then plainValue for two columns, x and y for three.
+/// The quantity of each column, from its header name (Ignored where unknown; two names of one
+/// quantity both get it, which toMeasurement refuses). Without a header: time, then plainValue
+/// for two columns, x and y for three.
 std::vector<Quantity> guessMapping(const Table& table, Quantity plainValue = Quantity::Y);
 
 /// Applies the mapping, units and offsets, and checks the result: a time column that rises

@@ -219,6 +219,14 @@ QString blowUp(const physics::World& world, long long step)
 {
     // The world stops itself on a non-finite state or runaway energy, with a diagnosis.
     if (const auto& diverged = world.divergence()) {
+        // Energy the contacts made is named as such: it is the solver's, not the integrator's.
+        const double added = -world.diagnostics().collisionLoss;
+        if (added > 0)
+            return QStringLiteral("the simulation blew up at step %1: %2; contacts added %3 J: "
+                                  "the run diverged; nothing was written. Look for bodies that "
+                                  "start overlapping, or try a smaller --dt.")
+                .arg(QString::number(diverged->step), divergenceMessage(*diverged),
+                     QString::number(added, 'g', 6));
         return QStringLiteral("the simulation blew up at step %1: %2; nothing was "
                               "written. Try a smaller --dt or another --integrator.")
             .arg(QString::number(diverged->step), divergenceMessage(*diverged));
@@ -400,11 +408,15 @@ QString RunReport::summary(const QString& sourceName) const
                              "symplectic-euler integrator and without springs, pin joints or "
                              "gravitation (here: %1).")
                   .arg(name(physics::standInName(standIn)));
-    const QString energy =
-        QStringLiteral(" Total energy went from %1 to %2; contacts took %3, drag and dampers "
-                       "%4; the rest, %5, is the numerical error.")
-            .arg(formatEnergy(energyStart), formatEnergy(energyEnd), formatEnergy(collisionLoss),
-                 formatEnergy(dissipated - collisionLoss), drift);
+    // Contacts that gave energy back are said to have added it, never booked as a negative
+    // loss (a kinematic body pushing, or a run that diverged for it).
+    const QString contacts =
+        collisionLoss < 0 ? QStringLiteral("contacts added %1").arg(formatEnergy(-collisionLoss))
+                          : QStringLiteral("contacts took %1").arg(formatEnergy(collisionLoss));
+    const QString energy = QStringLiteral(" Total energy went from %1 to %2; %3, drag and dampers "
+                                          "%4; the rest, %5, is the numerical error.")
+                               .arg(formatEnergy(energyStart), formatEnergy(energyEnd), contacts,
+                                    formatEnergy(dissipated - collisionLoss), drift);
     return run + standInNote + energy;
 }
 

@@ -4,8 +4,9 @@
 //
 // Whatever the bytes, the reader returns: answers or one error line naming the source, with
 // nothing half read. Answers it accepts keep within the limits (steps, questions, tries, the
-// length of each text, every value finite and at most kMaxAnswerMagnitude), and written
-// again they read back the same.
+// length of each text, every value finite and at most kMaxAnswerMagnitude, each text one that
+// --student would take too), and written again they read back the same. They fit only the
+// lesson they name: another lesson's file name is a mismatch whatever its questions.
 
 #include "fuzz_check.h"
 
@@ -32,7 +33,13 @@ void checkAnswers(const lessons::Answers& a)
 {
     for (const QString* text :
          {&a.lessonFile, &a.lessonTitle, &a.language, &a.student, &a.className, &a.date})
-        FUZZ_CHECK(text->size() <= lessons::kMaxAnswerText && !text->contains(u'\n'));
+        FUZZ_CHECK(text->size() <= lessons::kMaxAnswerText && !text->contains(u'\n') &&
+                   lessons::answerTextProblem(*text).isEmpty());
+    // The lesson it names, with room for every question it holds, fits; any other does not.
+    std::vector<int> room(a.steps.size(), lessons::kMaxAnswerQuestions);
+    FUZZ_CHECK(lessons::answersMismatch(a, a.lessonFile, room).isEmpty());
+    FUZZ_CHECK(
+        !lessons::answersMismatch(a, a.lessonFile + QStringLiteral(".other"), room).isEmpty());
     FUZZ_CHECK(a.steps.size() <= static_cast<std::size_t>(lessons::kMaxAnswerSteps));
     for (const lessons::StepAnswers& step : a.steps) {
         FUZZ_CHECK(!step.dt || (std::isfinite(*step.dt) && *step.dt > 0));

@@ -5,7 +5,9 @@
 // Whatever the bytes, the reader returns: a table or one error line naming the source. A table
 // it accepts is within the limits (measure/measurement.h), every column has a value (or NaN for
 // an empty cell) per row, and the rows' lines rise. A measurement made from it has rising,
-// finite times and finite values, and a fit of e to its bounce times is finite or refused.
+// finite times and finite values, no two columns of one quantity, and bounce times read from a
+// time column only when nothing else is measured; a fit of e to its bounce times is finite,
+// from at most kMaxBounces flights that shrink (its interval below 1), or refused.
 
 #include "fuzz_check.h"
 
@@ -15,6 +17,7 @@
 #include <QByteArray>
 #include <QString>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -45,9 +48,14 @@ void checkMeasurement(const measure::MeasurementResult& r, const QString& source
     const std::vector<double>& b = r.measurement.bounces;
     for (std::size_t i = 0; i < b.size(); ++i)
         FUZZ_CHECK(std::isfinite(b[i]) && (i == 0 || b[i] > b[i - 1]));
+    const std::vector<measure::Quantity>& mapping = r.measurement.mapping;
+    for (std::size_t c = 0; c < mapping.size(); ++c)
+        for (std::size_t d = c + 1; d < mapping.size(); ++d)
+            FUZZ_CHECK(mapping[c] == measure::Quantity::Ignored || mapping[c] != mapping[d]);
     const measure::BounceFit fit = measure::fitBounceTimes(b);
-    FUZZ_CHECK(!fit.ok ||
-               (std::isfinite(fit.e.value) && fit.e.value < 1 && std::isfinite(fit.e.halfWidth95)));
+    FUZZ_CHECK(!fit.ok || (std::isfinite(fit.e.value) && std::isfinite(fit.e.halfWidth95) &&
+                           fit.e.value + fit.e.halfWidth95 < 1 &&
+                           b.size() <= static_cast<std::size_t>(measure::kMaxBounces)));
 }
 
 } // namespace
@@ -74,6 +82,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     checkMeasurement(measure::toMeasurement(table, source), source);
     measure::MeasurementOptions bounces;
     bounces.bounceTimesOnly = true;
-    checkMeasurement(measure::toMeasurement(table, source, bounces), source);
+    const measure::MeasurementResult read = measure::toMeasurement(table, source, bounces);
+    checkMeasurement(read, source);
+    // Bounce times from the time column only when it is all the file measures.
+    const auto has = [&](measure::Quantity q) {
+        return std::find(read.measurement.mapping.begin(), read.measurement.mapping.end(), q) !=
+               read.measurement.mapping.end();
+    };
+    if (read.ok && !has(measure::Quantity::BounceTime))
+        for (const measure::Quantity q : read.measurement.mapping)
+            FUZZ_CHECK(q == measure::Quantity::Ignored || q == measure::Quantity::Time);
     return 0;
 }

@@ -176,11 +176,23 @@ void TestAnswersFile::refusesDamaged()
 void TestAnswersFile::mismatchWithTheLesson()
 {
     const lessons::Answers a = sample(); // 2 steps, the first with 2 questions
-    QCOMPARE(lessons::answersMismatch(a, {2, 0}), QString());
-    QCOMPARE(lessons::answersMismatch(a, {2, 0, 5}), QString()); // later steps unvisited
-    QVERIFY(lessons::answersMismatch(a, {2}).contains(QStringLiteral("2 steps, the lesson has 1")));
-    QVERIFY(lessons::answersMismatch(a, {1, 0}).contains(
-        QStringLiteral("steps[0].questions: 2 questions, the lesson's step 1 has 1")));
+    const QString file = a.lessonFile;
+    QCOMPARE(lessons::answersMismatch(a, file, {2, 0}), QString());
+    QCOMPARE(lessons::answersMismatch(a, file, {2, 0, 5}), QString()); // later steps unvisited
+    QVERIFY(lessons::answersMismatch(a, file, {2})
+                .contains(QStringLiteral("2 steps, the lesson has 1")));
+    QVERIFY(lessons::answersMismatch(a, file, {1, 0})
+                .contains(QStringLiteral("steps[0].questions: 2 questions, the lesson's step 1 "
+                                         "has 1")));
+    // Answers to another lesson, even one with as many questions.
+    QCOMPARE(lessons::answersMismatch(a, QStringLiteral("stacks.json"), {2, 0}),
+             QStringLiteral("lesson: answers to \"restitution.json\", not to \"stacks.json\""));
+    // A name of more than one line or longer than the file allows, as --student gives it.
+    QCOMPARE(lessons::answerTextProblem(QStringLiteral("Jana Nováková")), QString());
+    QCOMPARE(lessons::answerTextProblem(QStringLiteral("Jana\nNováková")),
+             QStringLiteral("must be one line"));
+    QVERIFY(lessons::answerTextProblem(QString(lessons::kMaxAnswerText + 1, u'a'))
+                .startsWith(QStringLiteral("longer than")));
 }
 
 RIGIDLAB_TEST_GUILESS_MAIN(TestAnswersFile)

@@ -34,6 +34,7 @@ private slots:
     void infoRoundTrips();
     void refusesDamaged_data();
     void refusesDamaged();
+    void refusesSceneNameWithLineBreak();
     void readsNoSceneFromDisk();
     void listedWithAuthorAndDate();
     void cliPacksValidatesExports_data();
@@ -268,6 +269,25 @@ void TestLessonPack::refusesDamaged()
         r.error.startsWith(path + QStringLiteral(": ") + expected),
         qPrintable(QStringLiteral("got: %1\nexpected: %2: %3...").arg(r.error, path, expected)));
     QVERIFY2(!r.error.contains(u'\n'), qPrintable(r.error));
+}
+
+void TestLessonPack::refusesSceneNameWithLineBreak()
+{
+    // A pattern's $ also matches before a final line break: a key "scenes/x.json\n" passed
+    // validate, and unpack wrote a file name with a line break that pack then refused.
+    QJsonObject o = packedRestitution();
+    QJsonObject scenes = o.value(u"scenes").toObject();
+    scenes.insert(QStringLiteral("scenes/x.json\n"), QJsonObject());
+    o.insert(QStringLiteral("scenes"), scenes);
+    QTemporaryDir dir;
+    QVERIFY(dir.isValid());
+    const QString path = dir.filePath(QStringLiteral("newline.rlesson"));
+    QVERIFY(writeFile(path, QJsonDocument(o).toJson()));
+    const lessons::LessonLoadResult r = lessons::loadLessonFile(path);
+    QVERIFY(!r.ok);
+    QCOMPARE(r.error.section(QStringLiteral(" (scenes/NAME.json"), 0, 0),
+             path + QStringLiteral(": scenes: \"scenes/x.json\\n\" is not a scene's name in a "
+                                   "lesson file"));
 }
 
 void TestLessonPack::readsNoSceneFromDisk()

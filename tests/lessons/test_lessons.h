@@ -76,6 +76,7 @@ private slots:
     void shippedScenesLoad_data();
     void shippedScenesLoad();
     void validateRecognisesScenes();
+    void summaryBooksContactsThatAddEnergy();
     void formatDocumentExampleLoads();
     void runWritesHeadersAndRows();
     void runIsDeterministic();

@@ -39,7 +39,7 @@ private slots:
     void parsesParametersAndTargets_data();
     void parsesParametersAndTargets();
     void simulatedSamplesInterpolate();
-    void fitsRestitution();
+    void exactFlightsAreTheLabsLimit();
     void fitsFriction();
     void fitsTwoParameters();
     void bounceTimesGiveRestitution();

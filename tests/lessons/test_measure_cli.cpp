@@ -151,6 +151,15 @@ void TestMeasure::cliRefuses_data()
         << QStringList{ball,      tracker,    "--param",       "restitution",
                        "--param", "friction", "--bounce-times"}
         << "rigidlab-cli: fit: --bounce-times: fits one --param restitution, without --quantity";
+    QTest::newRow("param-twice") << QStringList{ball,         tracker,
+                                                "--param",    "restitution:ball",
+                                                "--param",    "restitution:ball",
+                                                "--quantity", "y:ball"}
+                                 << "rigidlab-cli: fit: --param: restitution:ball is named twice";
+    QTest::newRow("quantity-of-static-body")
+        << QStringList{ball, tracker, "--param", "restitution:ball", "--quantity", "y:floor"}
+        << "rigidlab-cli: fit: --quantity: \"y:floor\": floor does not move by itself (it is not "
+           "a dynamic body): measure one that does";
     QTest::newRow("bad-origin") << QStringList{ball,         tracker,  "--param",  "restitution",
                                                "--quantity", "y:ball", "--origin", "1"}
                                 << "rigidlab-cli: fit: --origin: expected X,Y in metres, got \"1\"";

@@ -104,6 +104,10 @@ void TestMeasure::refusesDamaged_data()
     QTest::newRow("header-mismatch")
         << "header_mismatch.csv"
         << "header_mismatch.csv: line 2: the header names 3 columns, the rows below it have 2";
+    QTest::newRow("two-heights")
+        << "two_heights.csv"
+        << "two_heights.csv: column 2 (\"y\") and column 3 (\"height\") both hold y: map one "
+           "of them";
     QTest::newRow("open-quote") << "open_quote.csv"
                                 << "open_quote.csv: line 1: a quote (\") is not closed";
 }
@@ -221,4 +225,25 @@ void TestMeasure::bounceTimesOnly()
     const auto b = measure::toMeasurement(table.table, QStringLiteral("b.csv"), options);
     QVERIFY2(b.ok, qPrintable(b.error));
     QCOMPARE(b.measurement.bounces, (std::vector<double>{0.45, 1.18}));
+    // A file of positions holds the time of every frame, not bounce times: refused, where a
+    // time column alone is still read as bounce times.
+    const auto positions = measure::readMeasurementFile(
+        QDir(test::kMeasureSamples).filePath(QStringLiteral("ball_tracker.csv")), options);
+    QVERIFY(!positions.ok);
+    QVERIFY2(positions.error.contains(QStringLiteral("holds the time of every frame, not "
+                                                     "bounce times")),
+             qPrintable(positions.error));
+    const auto alone = measure::readTable("t\n0.45\n1.18\n1.7\n", QStringLiteral("t.csv"));
+    QVERIFY(alone.ok);
+    QVERIFY(measure::toMeasurement(alone.table, QStringLiteral("t.csv"), options).ok);
+    // Time zero so far off that the times round together: said, not taken for time going back.
+    measure::MeasurementOptions far;
+    far.timeZero = -1e300;
+    const auto rounded = measure::readMeasurementFile(
+        QDir(test::kMeasureSamples).filePath(QStringLiteral("ball_tracker.csv")), far);
+    QVERIFY(!rounded.ok);
+    QVERIFY2(rounded.error.contains(QStringLiteral("time zero (-1e+300 s) is so far from the "
+                                                   "file's times that they cannot be told "
+                                                   "apart")),
+             qPrintable(rounded.error));
 }

@@ -74,6 +74,28 @@ void TestLessons::shippedScenesLoad()
              qPrintable(summary));
 }
 
+void TestLessons::summaryBooksContactsThatAddEnergy()
+{
+    // A kinematic paddle pushes a resting ball: the contacts pass energy on to it, and the
+    // summary says they added it, never that they "took" a negative amount.
+    const lessons::SceneLoadResult loaded =
+        lessons::loadSceneJson(test::sceneWith(R"("world": {"gravity": [0, 0], "dt": 0.002},
+            "bodies": [
+              {"id": "ball", "shape": {"type": "circle", "radius": 0.1}, "position": [0, 0]},
+              {"id": "paddle", "type": "kinematic", "shape": {"type": "box", "width": 0.2,
+               "height": 0.4}, "position": [-0.5, 0], "velocity": [2, 0]}])"),
+                               QStringLiteral("paddle.json"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    lessons::RunOptions options;
+    options.time = 0.5;
+    const lessons::RunReport report = lessons::runScene(loaded.scene, options, "paddle.json");
+    QVERIFY2(report.status == lessons::RunStatus::Ok, qPrintable(report.error));
+    QVERIFY2(report.collisionLoss < 0, qPrintable(QString::number(report.collisionLoss)));
+    const QString summary = report.summary(QStringLiteral("paddle.json"));
+    QVERIFY2(summary.contains(QStringLiteral("; contacts added ")), qPrintable(summary));
+    QVERIFY2(!summary.contains(QStringLiteral("contacts took")), qPrintable(summary));
+}
+
 void TestLessons::validateRecognisesScenes()
 {
     const lessons::DocumentCheck check =

@@ -520,6 +520,24 @@ private slots:
         QVERIFY2(m.hasMatch(), qPrintable(out));
         QVERIFY(m.captured(1).toDouble() > 0);
         QVERIFY(m.captured(2).toDouble() >= m.captured(1).toDouble());
+
+        // A scene that diverges at once stops its run: the measurement says so and returns,
+        // with the command line's status for a divergence, instead of waiting for frames.
+        QFile diverging(dir.filePath(QStringLiteral("diverging.json")));
+        QVERIFY(diverging.open(QIODevice::WriteOnly));
+        diverging.write(R"({"rigidlab": 1,
+            "world": {"gravity": [0, 0], "dt": 0.02, "integrator": "verlet"},
+            "bodies": [{"id": "mass", "shape": {"type": "circle", "radius": 0.1}, "mass": 1,
+                        "position": [0.1, 0]}],
+            "springs": [{"a": "mass", "b": null, "anchorB": [-1, 0], "stiffness": 1e6,
+                         "restLength": 1}]})");
+        diverging.close();
+        QCOMPARE(
+            run({QStringLiteral("--measure-frames"), QStringLiteral("20"), diverging.fileName()},
+                out, err),
+            3);
+        QVERIFY2(err.contains(QStringLiteral("--measure-frames: the scene diverged at t = ")),
+                 qPrintable(err));
     }
 };
 

@@ -393,6 +393,7 @@ const measure::FitResult& MeasurementSession::fit()
                      .arg(m_fitted[i].name,
                           valueWithUncertainty(m_fit.values[i].value, m_fit.values[i].halfWidth95),
                           parameterUnit(m_fitted[i].kind));
+    lines << measure::describeModel(m_fit, m_fitted);
     lines << tr("Residual RMS: %1 over %n point(s)", nullptr, m_fit.points)
                  .arg(formatQuantity(m_fit.rms, quantityUnit(t->quantity), 2));
     m_panel->showFit(lines.join(QLatin1Char('\n')), true);

@@ -340,14 +340,21 @@ void SheetWriter::writeTries(const lessons::Question& question,
                      m_bold, indent);
 }
 
+/// `text` in a bidirectional isolate (Unicode's FSI … PDI): a name written right to left
+/// keeps to itself and does not reorder the parts around it ("أحمد محمد" beside "2.B").
+QString isolated(const QString& text)
+{
+    return QChar(0x2068) + text + QChar(0x2069);
+}
+
 QString headerLine(const lessons::Lesson& lesson, const lessons::Answers& answers,
                    WorksheetKind kind)
 {
-    QStringList parts{lesson.title};
+    QStringList parts{isolated(lesson.title)};
     if (kind == WorksheetKind::Answers) {
         for (const QString& part : {answers.student, answers.className, answers.date})
             if (!part.isEmpty())
-                parts << part;
+                parts << isolated(part);
     } else if (kind == WorksheetKind::Key) {
         parts << Worksheet::tr("teacher's key");
     }
@@ -363,7 +370,9 @@ WorksheetResult writeWorksheet(const lessons::Lesson& lesson, const lessons::Ans
     std::vector<int> questions;
     for (const lessons::LessonStep& step : lesson.steps)
         questions.push_back(static_cast<int>(step.questions.size()));
-    if (const QString bad = lessons::answersMismatch(answers, questions); !bad.isEmpty()) {
+    if (const QString bad =
+            lessons::answersMismatch(answers, QFileInfo(lesson.path).fileName(), questions);
+        !bad.isEmpty()) {
         result.error =
             Worksheet::tr("%1 does not fit the lesson: %2")
                 .arg(answers.lessonFile.isEmpty() ? lesson.title : answers.lessonFile, bad);
