@@ -29,8 +29,9 @@ void rememberStartVelocities(StepContext& ctx)
 double restitutionThreshold(const WorldDef& def, const ContactSettings& settings)
 {
     constexpr double kFloor = 0.01; // [m/s]
-    return std::min(settings.restitutionThreshold,
-                    std::max(kFloor, 2.0 * def.gravity.norm() * def.dt));
+    const double oneStep = def.gravity.norm() * def.dt;
+    return std::max(std::min(settings.restitutionThreshold, std::max(kFloor, 2.0 * oneStep)),
+                    oneStep);
 }
 
 bool touchedJoints(StepContext& ctx)
