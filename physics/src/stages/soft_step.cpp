@@ -117,6 +117,36 @@ void applyIsolatedImpacts(StepContext& ctx)
     }
 }
 
+/// Each moving body where it would end the step without contacts (symplectic Euler, or where
+/// the integrator put it in a smooth step): where the sequential solver's collision phase finds
+/// it. Keeps the velocities at the start in StepScratch::softVelocity, those at the end in
+/// StepScratch::velocityBefore.
+void placeAtEndOfStep(StepContext& ctx)
+{
+    StepScratch& s = ctx.scratch;
+    const double h = ctx.dt;
+    const size_t n = ctx.bodies.size();
+    s.softVelocity.resize(n);
+    s.softAngularVelocity.resize(n);
+    s.velocityBefore.resize(n);
+    s.angularVelocityBefore.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        Body& b = ctx.bodies[i];
+        if (!b.isActive())
+            continue;
+        s.softVelocity[i] = b.velocity;
+        s.softAngularVelocity[i] = b.angularVelocity;
+        b.velocity += h * s.acceleration[i];
+        b.angularVelocity += h * s.angularAcceleration[i];
+        s.velocityBefore[i] = b.velocity;
+        s.angularVelocityBefore[i] = b.angularVelocity;
+        if (ctx.plan.smooth)
+            b.position = s.smoothEnd[i].position;
+        else
+            b.position += h * b.velocity;
+    }
+}
+
 /// The soft step's collision phase, before its substeps: the isolated impacts' exact impulses,
 /// and the bounces of the sequential solver's collision phase (contact_collisions.cpp) for the
 /// rest. Returns the kinetic energy they took [J].
@@ -134,28 +164,8 @@ double softCollisions(StepContext& ctx, double threshold)
                                            s.angularAcceleration, h, threshold, s.anyRestitution);
     if (!exact && !general)
         return 0.0;
-    // Each moving body where it would end the step without contacts (symplectic Euler): where
-    // the sequential solver's collision phase finds it.
+    placeAtEndOfStep(ctx);
     const size_t n = ctx.bodies.size();
-    s.softVelocity.resize(n);
-    s.softAngularVelocity.resize(n);
-    s.velocityBefore.resize(n);
-    s.angularVelocityBefore.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        Body& b = ctx.bodies[i];
-        if (!b.isActive())
-            continue;
-        s.softVelocity[i] = b.velocity;
-        s.softAngularVelocity[i] = b.angularVelocity;
-        b.velocity += h * s.acceleration[i];
-        b.angularVelocity += h * s.angularAcceleration[i];
-        s.velocityBefore[i] = b.velocity;
-        s.angularVelocityBefore[i] = b.angularVelocity;
-        if (ctx.plan.smooth)
-            b.position = s.smoothEnd[i].position; // where the integrator put it
-        else
-            b.position += h * b.velocity;
-    }
     bool bounced = false;
     if (general) {
         ContactSolver& solver = s.solver;
