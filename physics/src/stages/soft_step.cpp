@@ -313,11 +313,28 @@ void finishSmoothMotion(StepContext& ctx)
         for (const BodyId id : {j.a, j.b})
             if (id != kWorld)
                 s.touched[static_cast<size_t>(id)] = 1;
+    // A body whose contacts pushed nothing this step (a ball rising within the margin of the
+    // floor it bounced off) ends where the substeps put it but for their share of the constant
+    // force (c' - c) dt dv: then it takes the integrator's end too, so that a free flight
+    // stays the integrator's in steps with a contact that does not act.
+    const double shift = ((ctx.substeps + 1.0) / (2.0 * ctx.substeps) - ctx.steadyPush) * ctx.dt;
+    constexpr double kRoundOff = 1e-11; // relative
+    const auto near = [&](const Vec2& a, const Vec2& b) {
+        return (a - b).norm() <= kRoundOff * (1.0 + b.norm());
+    };
     for (size_t i = 0; i < n; ++i) {
         Body& b = ctx.bodies[i];
-        if (!b.isActive() || s.touched[i])
+        if (!b.isActive())
             continue;
         const BodyPose& end = s.smoothEnd[i];
+        const Vec2 dv = end.velocity - s.velocityAtStart[i];
+        const double dw = end.angularVelocity - s.angularVelocityAtStart[i];
+        const bool pushed = !near(b.velocity, end.velocity) ||
+                            !near(Vec2(b.angularVelocity, b.angle),
+                                  Vec2(end.angularVelocity, end.angle + shift * dw)) ||
+                            !near(b.position, end.position + shift * dv);
+        if (s.touched[i] && pushed)
+            continue;
         b.position = end.position;
         b.angle = end.angle;
         b.velocity = end.velocity;
