@@ -45,20 +45,6 @@ const char* stageName(Stage s)
     return "?";
 }
 
-SoftStepStandIn softStandIn(const WorldDef& def, const std::vector<SpringDef>& springs,
-                            const std::vector<PinJointDef>& joints)
-{
-    if (def.integrator != IntegratorKind::SymplecticEuler)
-        return SoftStepStandIn::Integrator;
-    if (!springs.empty())
-        return SoftStepStandIn::Springs;
-    if (!joints.empty())
-        return SoftStepStandIn::Joints;
-    if (def.gravitation != 0.0)
-        return SoftStepStandIn::Gravitation;
-    return SoftStepStandIn::None;
-}
-
 std::string_view standInName(SoftStepStandIn why)
 {
     switch (why) {
@@ -78,9 +64,9 @@ std::string_view standInName(SoftStepStandIn why)
 
 SoftStepStandIn World::softStepStandIn() const
 {
-    if (m_def.solver != SolverKind::SoftStep)
-        return SoftStepStandIn::None;
-    return softStandIn(m_def, m_springs, m_joints);
+    // The soft step runs every world (soft_step.cpp: springs, pins, gravitation and every
+    // integrator in its smooth motion), so no solver stands in for it.
+    return SoftStepStandIn::None;
 }
 
 SolverKind World::solverRunning() const
@@ -109,10 +95,14 @@ StepPlan planStep(const WorldDef& def, const std::vector<Body>& bodies,
     if (plan.collide && collidable == 2 &&
         std::binary_search(jointPairs.begin(), jointPairs.end(), std::pair(first, second)))
         plan.collide = false; // the only two are pinned together
-    // Only contacts couple the bodies: the soft step can run, and symplectic Euler can run
-    // straight on the bodies (fast/integrate_direct.cpp; the plain path takes the integrator).
-    const bool contactsOnly = softStandIn(def, springs, joints) == SoftStepStandIn::None;
-    plan.soft = contactsOnly && def.solver == SolverKind::SoftStep;
+    // Symplectic Euler with only contacts coupling the bodies: it can run straight on the
+    // bodies (fast/integrate_direct.cpp; the plain path takes the integrator), and the soft
+    // step's substeps are all of its motion. Otherwise the soft step lets the integrator move
+    // the bodies first (StepPlan::smooth).
+    const bool contactsOnly = def.integrator == IntegratorKind::SymplecticEuler &&
+                              springs.empty() && joints.empty() && def.gravitation == 0.0;
+    plan.soft = def.solver == SolverKind::SoftStep;
+    plan.smooth = !contactsOnly;
     plan.direct = contactsOnly && !plain;
     plan.sleep = def.sleep.value_or(dynamic >= kLargeSceneBodies);
     plan.dynamic = dynamic;

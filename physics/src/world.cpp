@@ -59,6 +59,12 @@ void World::step()
         // soft step with every body asleep comes here too: only kinematic bodies move.)
         if (!m_contacts.empty() && ctx.plan.anyAwake)
             solveContacts(ctx);
+        // Continuous collision: a bullet whose corner the contacts missed goes back to where
+        // it first touches a wall.
+        if (ctx.plan.collide && ctx.plan.anyAwake) {
+            StageTimer timer(m_profile, Stage::ContactSolve);
+            sweepBackBullets(ctx);
+        }
     }
     // Stage::Sleep: islands that have rested long enough.
     if (ctx.plan.sleep)
@@ -96,6 +102,7 @@ StepContext World::context()
                     .substeps = substeps,
                     .h = h,
                     .invH = 1.0 / h,
+                    .steadyPush = integratorInfo(m_def.integrator).steadyPush,
                     .softness = {},
                     .restitutionThreshold = restitutionThreshold(m_def, m_contactSettings),
                     .plain = plain,

@@ -210,17 +210,21 @@ void TestEnergy::nothingDissipatesNothingCounted()
 // pendulum's energy. (The joints were projected again after every contact solve that pushed
 // anything, and the pendulum's chord velocities, from the SHAKE step, projected onto its
 // tangent gained it 3 % in 2 minutes.) Over 30 s the pendulum's energy stays within the
-// integrator's wobble, 1e-4 of it, as alone; the contacts take nothing.
+// integrator's wobble, 1e-4 of it, as alone; the contacts take nothing (sequential impulses,
+// to 1e-9 J), or the soft contact's settling of the box into the floor by 50 nm in its first
+// steps (the soft step: 2.9e-8 J, bound 1e-7 J).
 void TestEnergy::pendulumBesideRestingBox_data()
 {
     QTest::addColumn<SolverKind>("solver");
-    QTest::newRow("sequential") << SolverKind::SequentialImpulse;
-    QTest::newRow("soft step (stands in)") << SolverKind::SoftStep;
+    QTest::addColumn<double>("settling");
+    QTest::newRow("sequential") << SolverKind::SequentialImpulse << 1e-9;
+    QTest::newRow("soft step") << SolverKind::SoftStep << 1e-7;
 }
 
 void TestEnergy::pendulumBesideRestingBox()
 {
     QFETCH(SolverKind, solver);
+    QFETCH(double, settling);
     const auto run = [solver](bool box) {
         WorldDef def = rigidlab::test::quietWorldDef(IntegratorKind::SymplecticEuler, 1e-3);
         def.gravity = Vec2(0.0, -9.81);
@@ -263,7 +267,7 @@ void TestEnergy::pendulumBesideRestingBox()
           wobble);
     QCOMPARE(beside, alone); // the box's contact leaves the pendulum's motion alone
     RL_VERIFY_AT_MOST(wobble, 1e-3);
-    RL_VERIFY_AT_MOST(std::abs(loss), 1e-9);
+    RL_VERIFY_AT_MOST(std::abs(loss), settling);
     QCOMPARE(none, 0.0);
 }
 

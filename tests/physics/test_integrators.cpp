@@ -458,13 +458,18 @@ void TestIntegrators::eulerPendulumGoesOverTheTop()
 void TestIntegrators::pendulumPeriodMatchesElliptic_data()
 {
     QTest::addColumn<double>("theta0");
-    QTest::newRow("1.0 rad") << 1.0;
-    QTest::newRow("2.5 rad") << 2.5;
+    QTest::addColumn<SolverKind>("solver");
+    for (SolverKind solver : {SolverKind::SequentialImpulse, SolverKind::SoftStep}) {
+        const char* name = solver == SolverKind::SoftStep ? "soft step" : "sequential";
+        QTest::addRow("1.0 rad, %s", name) << 1.0 << solver;
+        QTest::addRow("2.5 rad, %s", name) << 2.5 << solver;
+    }
 }
 
 void TestIntegrators::pendulumPeriodMatchesElliptic()
 {
     QFETCH(double, theta0);
+    QFETCH(SolverKind, solver);
     rigidlab::test::PendulumSpec spec;
     spec.theta0 = theta0;
     const double k = std::sin(theta0 / 2.0);
@@ -480,6 +485,7 @@ void TestIntegrators::pendulumPeriodMatchesElliptic()
 
     const double h = 1e-3;
     World world = rigidlab::test::makePendulum(IntegratorKind::RK4, h, spec);
+    world.setSolver(solver);
     std::vector<double> crossings;
     double previous = pendulumAngle(world, spec.pivot);
     const int maxSteps = static_cast<int>(7.0 * exact / h);

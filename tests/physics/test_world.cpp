@@ -230,14 +230,19 @@ void TestWorld::gravitationOrbit_data()
 {
     QTest::addColumn<double>("f");
     QTest::addColumn<double>("returnTol");
-    QTest::newRow("circular") << 1.0 << 1e-6;
-    QTest::newRow("eccentric") << 0.8 << 1e-5;
+    QTest::addColumn<SolverKind>("solver");
+    for (SolverKind solver : {SolverKind::SequentialImpulse, SolverKind::SoftStep}) {
+        const char* name = solver == SolverKind::SoftStep ? "soft step" : "sequential";
+        QTest::addRow("circular, %s", name) << 1.0 << 1e-6 << solver;
+        QTest::addRow("eccentric, %s", name) << 0.8 << 1e-5 << solver;
+    }
 }
 
 void TestWorld::gravitationOrbit()
 {
     QFETCH(double, f);
     QFETCH(double, returnTol);
+    QFETCH(SolverKind, solver);
     const double G = 1.0, m1 = 3.0, m2 = 1.0, r0 = 2.0, M = m1 + m2;
     const double vRel = f * std::sqrt(G * M / r0);
     const double a = 1.0 / (2.0 / r0 - vRel * vRel / (G * M));
@@ -245,6 +250,7 @@ void TestWorld::gravitationOrbit()
     const int steps = 4000;
     WorldDef def = rigidlab::test::quietWorldDef(IntegratorKind::RK4, period / steps);
     def.gravitation = G;
+    def.solver = solver;
     World world(def);
     const Vec2 p1(-m2 / M * r0, 0.0), p2(m1 / M * r0, 0.0);
     BodyDef b1 = rigidlab::test::circleBody(0.05, p1, Vec2(0.0, -m2 / M * vRel));

@@ -11,6 +11,7 @@
 #include "stages.h"
 
 #include <algorithm>
+#include <tuple>
 
 namespace rigidlab::physics {
 
@@ -28,15 +29,11 @@ void rememberStartVelocities(StepContext& ctx)
 double restitutionThreshold(const WorldDef& def, const ContactSettings& settings)
 {
     constexpr double kFloor = 0.01; // [m/s]
-    return std::min(settings.restitutionThreshold,
-                    std::max(kFloor, 2.0 * def.gravity.norm() * def.dt));
+    const double oneStep = def.gravity.norm() * def.dt;
+    return std::max(std::min(settings.restitutionThreshold, std::max(kFloor, 2.0 * oneStep)),
+                    oneStep);
 }
 
-namespace {
-
-/// The joints a contact of this step touches (one of its bodies is an end), and every joint
-/// that shares a body with one of them, into StepScratch::touchedJoints. Returns whether there
-/// are any.
 bool touchedJoints(StepContext& ctx)
 {
     std::vector<PinJointDef>& touched = ctx.scratch.touchedJoints;
@@ -66,6 +63,53 @@ bool touchedJoints(StepContext& ctx)
     return !touched.empty();
 }
 
+namespace {
+
+/// The isolated impacts (soft_impacts.cpp) of the impulse solvers: two bodies, one contact,
+/// no other contact or pin on either moving body. Each gets the textbook's impulse at its
+/// moment of impact, found from the shapes flown as the integrator moved them, instead of the
+/// solver's impulse on the normal and points of the start of the step (a cut shot then left
+/// at 89.9992° instead of 90°). Its bodies are moved as if they had flown on from the impact
+/// with their new velocities, and their velocities before the solver are set to the new ones,
+/// so that what follows leaves them alone. Fills StepScratch::isolated (the contacts the solver
+/// leaves out); returns the kinetic energy the impacts took [J], at the velocities of their
+/// moments.
+double solveIsolatedImpacts(StepContext& ctx)
+{
+    StepScratch& s = ctx.scratch;
+    if (!findIsolatedImpacts(ctx, ctx.restitutionThreshold, Flown::ToBodies))
+        return 0.0;
+    double loss = 0.0;
+    for (const auto& [k, impact] : s.impacts) {
+        Contact& ct = ctx.contacts[static_cast<size_t>(k)];
+        for (const auto& [id, dv, dw] :
+             {std::tuple(ct.a, impact.dvA, impact.dwA), std::tuple(ct.b, impact.dvB, impact.dwB)}) {
+            const auto i = static_cast<size_t>(id);
+            Body& b = ctx.bodies[i];
+            if (!b.isActive())
+                continue;
+            const double f = impact.fraction, after = (1.0 - f) * ctx.dt;
+            const Vec2 v = s.velocityAtStart[i] + f * (b.velocity - s.velocityAtStart[i]);
+            const double w =
+                s.angularVelocityAtStart[i] + f * (b.angularVelocity - s.angularVelocityAtStart[i]);
+            loss -= b.mass * (v.dot(dv) + 0.5 * dv.squaredNorm()) +
+                    b.inertia * (w * dw + 0.5 * dw * dw);
+            b.velocity += dv;
+            b.angularVelocity += dw;
+            b.position += after * dv;
+            b.angle += after * dw;
+            s.velocityBefore[i] = b.velocity;
+            s.angularVelocityBefore[i] = b.angularVelocity;
+        }
+        // Reported as a bounce, which the next step does not warm start.
+        for (size_t p = 0; p < 2; ++p) {
+            ct.tangentImpulse[p] = 0.0;
+            ct.normalImpulse[p] = ct.bounceImpulse[p] = impact.impulse[p];
+        }
+    }
+    return loss;
+}
+
 } // namespace
 
 void solveContacts(StepContext& ctx)
@@ -74,16 +118,18 @@ void solveContacts(StepContext& ctx)
         return;
     StageTimer timer(ctx.profile, Stage::ContactSolve);
     StepScratch& s = ctx.scratch;
-    const double h = ctx.def.dt;
+    const double h = ctx.dt;
     s.velocityBefore.resize(ctx.bodies.size());
     s.angularVelocityBefore.resize(ctx.bodies.size());
     for (size_t i = 0; i < ctx.bodies.size(); ++i) {
         s.velocityBefore[i] = ctx.bodies[i].velocity;
         s.angularVelocityBefore[i] = ctx.bodies[i].angularVelocity;
     }
+    const double exactLoss = solveIsolatedImpacts(ctx);
     ContactSolver& solver = s.solver;
     solver.begin(ctx.contacts, s.previous, ctx.bodies, ctx.contactSettings, h, s.xfPosition,
                  s.velocityAtStart, s.angularVelocityAtStart);
+    solver.leaveOut(&s.isolated);
     // The pins a contact touches are solved with the contacts (contact_solver_pins.cpp); the
     // paper's impulse stays the paper's, one impulse per contact point.
     const bool jointed = touchedJoints(ctx);
@@ -103,7 +149,7 @@ void solveContacts(StepContext& ctx)
     // lifted a resting body by g dt^2 / 2 every step, and the contacts' bookkeeping counted
     // the hopping as energy taken. A bounce, an impulse at the fraction f of the step, moves
     // the position by (1 - f) dt times the change, whatever the integrator.
-    const double steady = integratorInfo(ctx.def.integrator).steadyPush * h;
+    const double steady = ctx.steadyPush * h;
     const std::vector<double>& impact = solver.impactFractions();
     for (size_t i = 0; i < ctx.bodies.size(); ++i) {
         Body& b = ctx.bodies[i];
@@ -127,6 +173,7 @@ void solveContacts(StepContext& ctx)
             },
             &s.touchedJoints);
     // What the contacts took (dissipation.cpp): friction and inelastic bounces.
+    ctx.collisionLoss += exactLoss;
     ctx.collisionLoss += contactLoss(ctx.bodies, s.velocityAtStart, s.angularVelocityAtStart,
                                      s.velocityBefore, s.angularVelocityBefore, impact);
 

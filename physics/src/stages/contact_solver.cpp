@@ -85,6 +85,7 @@ void ContactSolver::begin(std::vector<Contact>& contacts, const std::vector<Cont
     m_startVelocity = &startVelocity;
     m_startAngularVelocity = &startAngularVelocity;
     m_softPhase = false;
+    m_leftOut = nullptr;
     m_constraints.clear();
     m_pins.clear();
     const size_t n = bodies.size();
@@ -147,6 +148,8 @@ void ContactSolver::prepare(double impact, double resting)
         const Body& b = bodies[static_cast<size_t>(ct.b)];
         if (!a.isActive() && !b.isActive())
             continue; // both asleep (or one asleep on a static body): nothing to solve
+        if (m_leftOut && !m_leftOut->empty() && (*m_leftOut)[ci])
+            continue; // solved exactly elsewhere
         Constraint& c = m_constraints.emplace_back();
         c.contact = static_cast<int>(ci);
         c.a = ct.a;

@@ -83,6 +83,11 @@ public:
     /// (contact_solver_pins.cpp). Set after begin(), before the solve; none by default.
     void setPins(const std::vector<PinJointDef>& pins);
 
+    /// Contacts solved elsewhere this step (non-zero per contact: the isolated impacts solved
+    /// exactly, soft_impacts.cpp), left out of the solve and of the position correction. Set
+    /// after begin(), before the solve; none by default.
+    void leaveOut(const std::vector<char>* contacts) { m_leftOut = contacts; }
+
     /// Contacts solved this step (those with an awake dynamic body).
     int constraintCount() const { return static_cast<int>(m_constraints.size()); }
 
@@ -211,7 +216,8 @@ private:
     /// bounces even if its arms at the impact slow its approach below closing, and a gap
     /// that closes exactly at the end of the step bounces too (bounceTarget()).
     bool m_softPhase = false;
-    const std::vector<char>* m_exempt = nullptr; ///< see solveCollisionPhase()
+    const std::vector<char>* m_exempt = nullptr;  ///< see solveCollisionPhase()
+    const std::vector<char>* m_leftOut = nullptr; ///< see leaveOut()
     std::vector<unsigned> m_rotationStamp;
     unsigned m_stamp = 0;
 };

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Continuous collision of the soft step for fast bodies (a body that moves more than its own
-// size in a step, continuous.cpp's bullet), after its substeps.
+// Continuous collision for fast bodies (a body that moves more than its own size in a step,
+// continuous.cpp's bullet), after the soft step's substeps or the impulse solvers' solve.
 //
 // The speculative contact made at the start of the step (continuous.cpp) stops a body that
 // flies straight at a wall: its closest features then are the ones that hit. A body that turns
@@ -16,7 +16,8 @@
 // Conservative advancement (Mirtich): no step of t passes the first touch. Where the gap falls
 // below the linear slop before t = 1 (half the gap at the start, for a body within the slop
 // then), the body is put back to that pose with its velocities: the next step finds the
-// contact touching, and its collision phase stops it. Box2D v3's continuous
+// contact touching, and its collision phase stops it (the soft step's, or the impulse
+// solvers'). Box2D v3's continuous
 // collision is the same idea, with its own time of impact.
 
 #include "rigidlab/physics/world.h"
@@ -88,7 +89,7 @@ double firstTouch(const StepContext& ctx, int fast, int other, double reach, dou
 
 } // namespace
 
-void softSweepBack(StepContext& ctx)
+void sweepBackBullets(StepContext& ctx)
 {
     if (ctx.sweep.empty())
         return;

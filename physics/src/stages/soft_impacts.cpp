@@ -58,7 +58,7 @@ struct Flight {
     }
 };
 
-Flight flightOf(const StepContext& ctx, int id)
+Flight flightOf(const StepContext& ctx, int id, Flown flown)
 {
     const auto i = static_cast<size_t>(id);
     const Body& b = ctx.bodies[i];
@@ -66,6 +66,27 @@ Flight flightOf(const StepContext& ctx, int id)
     Flight fl;
     fl.x0 = s.xfPosition[i];
     fl.angle0 = s.xfAngle[i];
+    if (flown != Flown::ByForces) {
+        // The integrator's motion in the step taken as a straight line at the mean velocity,
+        // the velocity as changing evenly.
+        const BodyPose end = flown == Flown::ToSmoothEnd
+                                 ? s.smoothEnd[i]
+                                 : BodyPose{b.position, b.angle, b.velocity, b.angularVelocity};
+        fl.vStart = s.velocityAtStart[i];
+        fl.wStart = s.angularVelocityAtStart[i];
+        fl.v = end.velocity;
+        fl.w = end.angularVelocity;
+        if (b.isActive()) {
+            const double invDt = ctx.invDt;
+            fl.a = invDt * (end.velocity - fl.vStart);
+            fl.alpha = invDt * (end.angularVelocity - fl.wStart);
+            fl.v = invDt * (end.position - fl.x0);
+            fl.w = invDt * (end.angle - fl.angle0);
+            fl.invMass = b.invMass;
+            fl.invInertia = b.invInertia;
+        }
+        return fl;
+    }
     fl.vStart = b.velocity;
     fl.wStart = b.angularVelocity;
     fl.v = b.velocity;
@@ -73,8 +94,8 @@ Flight flightOf(const StepContext& ctx, int id)
     if (b.isActive()) {
         fl.a = s.acceleration[i];
         fl.alpha = s.angularAcceleration[i];
-        fl.v += ctx.def.dt * fl.a;
-        fl.w += ctx.def.dt * fl.alpha;
+        fl.v += ctx.dt * fl.a;
+        fl.w += ctx.dt * fl.alpha;
         fl.invMass = b.invMass;
         fl.invInertia = b.invInertia;
     }
@@ -106,7 +127,7 @@ bool timeOfImpact(const StepContext& ctx, const Contact& ct, const Flight& A, co
 {
     const Body& a = ctx.bodies[static_cast<size_t>(ct.a)];
     const Body& b = ctx.bodies[static_cast<size_t>(ct.b)];
-    const double dt = ctx.def.dt;
+    const double dt = ctx.dt;
     double start = INFINITY;
     for (int i = 0; i < ct.manifold.pointCount; ++i)
         start = std::min(start, ct.manifold.points[static_cast<size_t>(i)].separation);
@@ -179,19 +200,20 @@ void solveImpact(Arm* arm, int count, const Vec2& n, double friction, const Flig
 
 } // namespace
 
-bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, IsolatedImpact& out)
+bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, Flown flown,
+                    IsolatedImpact& out)
 {
     for (int i = 0; i < ct.manifold.pointCount; ++i)
         if (ct.normalImpulse[static_cast<size_t>(i)] != 0.0)
             return false; // a resting contact, carried from the step before
-    const Flight A = flightOf(ctx, ct.a), B = flightOf(ctx, ct.b);
+    const Flight A = flightOf(ctx, ct.a, flown), B = flightOf(ctx, ct.b, flown);
     if (A.invMass == 0.0 && B.invMass == 0.0)
         return false;
     double f = 0;
     Manifold m;
     if (!timeOfImpact(ctx, ct, A, B, f, m))
         return false;
-    const double dt = ctx.def.dt;
+    const double dt = ctx.dt;
     const Vec2 cA = A.centre(f, dt), cB = B.centre(f, dt);
     // The velocities at the impact: the forces' share of the step so far on those at the start.
     const double fdt = f * dt;
@@ -237,6 +259,39 @@ bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, Isola
     for (int i = 0; i < count && i < ct.manifold.pointCount; ++i)
         out.impulse[static_cast<size_t>(i)] = arm[i].normal;
     return true;
+}
+
+bool findIsolatedImpacts(StepContext& ctx, double threshold, Flown flown)
+{
+    StepScratch& s = ctx.scratch;
+    s.impacts.clear();
+    s.isolated.clear();
+    s.contactsOf.assign(ctx.bodies.size(), 0);
+    for (const Contact& ct : ctx.contacts) {
+        ++s.contactsOf[static_cast<size_t>(ct.a)];
+        ++s.contactsOf[static_cast<size_t>(ct.b)];
+    }
+    // A pinned body is not free: its impact is the contact's and the pin's together, which
+    // the solvers solve with the pins.
+    for (const PinJointDef& j : ctx.joints)
+        for (const BodyId id : {j.a, j.b})
+            if (id != kWorld)
+                s.contactsOf[static_cast<size_t>(id)] += 2;
+    const auto alone = [&](int id) {
+        const auto i = static_cast<size_t>(id);
+        return !ctx.bodies[i].isActive() || s.contactsOf[i] == 1;
+    };
+    for (size_t k = 0; k < ctx.contacts.size(); ++k) {
+        const Contact& ct = ctx.contacts[k];
+        IsolatedImpact impact;
+        if (!alone(ct.a) || !alone(ct.b) || !isolatedImpact(ctx, ct, threshold, flown, impact))
+            continue;
+        if (s.isolated.empty())
+            s.isolated.assign(ctx.contacts.size(), 0);
+        s.isolated[k] = 1;
+        s.impacts.emplace_back(static_cast<int>(k), impact);
+    }
+    return !s.impacts.empty();
 }
 
 } // namespace rigidlab::physics

@@ -95,6 +95,10 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     m_angularAcceleration.clear();
     m_mass.clear();
     m_inertia.clear();
+    m_drift.clear();
+    m_angularDrift.clear();
+    m_pins.clear();
+    m_invInertia.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const Body& b = bodies[i];
         soft::BodyState& s = m_state[i];
@@ -102,6 +106,7 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
         s.vy = b.velocity.y();
         s.w = b.angularVelocity;
         s.invMass = b.isActive() ? b.invMass : 0.0;
+        m_invInertia[i] = b.isActive() ? b.invInertia : 0.0;
         m_position[i] = b.position;
         m_angle[i] = b.angle;
         if (b.isActive()) {
@@ -190,10 +195,18 @@ void SoftSolver::integrateVelocities()
     m_energyValid = true;
 }
 
+void SoftSolver::setDrift(const std::vector<Vec2>& drift, const std::vector<double>& angularDrift)
+{
+    m_drift = drift;
+    m_angularDrift = angularDrift;
+}
+
 void SoftSolver::warmStart()
 {
     m_energyValid = false;
     m_kernel.warmStart(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data());
+    if (!m_pins.empty())
+        warmStartPins();
 }
 
 void SoftSolver::solve(bool useBias, bool lookAhead)
@@ -207,15 +220,23 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
     m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
+    if (!m_pins.empty())
+        solvePins(useBias);
 }
 
 void SoftSolver::integratePositions()
 {
     const double h = m_substep;
+    const bool drifts = !m_drift.empty();
     auto move = [&](int id) {
         const auto i = static_cast<size_t>(id);
         soft::BodyState& s = m_state[i];
-        const double dx = h * s.vx, dy = h * s.vy, da = h * s.w;
+        double dx = h * s.vx, dy = h * s.vy, da = h * s.w;
+        if (drifts) {
+            dx += h * m_drift[i].x();
+            dy += h * m_drift[i].y();
+            da += h * m_angularDrift[i];
+        }
         m_position[i] += Vec2(dx, dy);
         m_angle[i] += da;
         s.dpx += dx;

@@ -34,6 +34,16 @@ public:
                const std::vector<double>& angularAcceleration, double h,
                const Softness (&softness)[2], const SoftStepSettings& settings, bool plain);
 
+    /// The smooth motion's share of each body's displacement that the velocities do not carry
+    /// (soft_step.cpp: what the chosen integrator's step adds to the substeps' symplectic
+    /// Euler on its mean acceleration), per body [m/s] and [rad/s]; integratePositions() moves
+    /// by h (v + drift). Set after begin(); none by default.
+    void setDrift(const std::vector<Vec2>& drift, const std::vector<double>& angularDrift);
+    /// The pin joints solved with the contacts in every pass, as soft constraints like them
+    /// (soft_pins.cpp): a point-to-point constraint of the two anchors, pushed back softly in
+    /// the biased pass and held rigidly in the relax pass. Set after begin(); none by default.
+    void setPins(const std::vector<PinJointDef>& pins, const std::vector<Body>& bodies);
+
     // A substep, in this order (Catto's soft step).
     void integrateVelocities();
     void warmStart();
@@ -81,6 +91,25 @@ private:
     bool sameColouring(const std::vector<Contact>& contacts, const std::vector<Body>& bodies) const;
     void fillLane(int contactIndex, const Contact& ct, const std::vector<Body>& bodies,
                   soft::Block& block, int lane);
+    /// A pin as the substeps see it (soft_pins.cpp): its bodies (-1 for the world), its anchors
+    /// from the centres of mass in the bodies' frames (the world point for the world), and its
+    /// accumulated impulse in a substep [N s], on B (-impulse on A).
+    struct Pin {
+        int a = -1, b = -1;
+        Vec2 localA = Vec2::Zero(), localB = Vec2::Zero();
+        Vec2 impulse = Vec2::Zero();
+    };
+    /// A pin's lever arm and anchor point in the world for one end, and its body's state.
+    struct PinEnd {
+        Vec2 r = Vec2::Zero(), p = Vec2::Zero();
+        double invMass = 0, invInertia = 0;
+        soft::BodyState* state = nullptr;
+    };
+    PinEnd pinEnd(int body, const Vec2& local);
+    /// One pass over the pins (soft_pins.cpp): with the soft bias, or rigid without it.
+    void solvePins(bool useBias);
+    void warmStartPins();
+
     /// Both sums of kineticEnergy() and loadPower() in one pass over the bodies, kept until
     /// the velocities change (each pass of the substep asks for both, some twice).
     void sumEnergy() const;
@@ -105,6 +134,11 @@ private:
     std::vector<Vec2> m_acceleration;          ///< per moving body [m/s^2]
     std::vector<double> m_angularAcceleration; ///< per moving body [rad/s^2]
     std::vector<double> m_mass, m_inertia;     ///< per moving body
+
+    std::vector<Vec2> m_drift;          ///< per body, empty: none (setDrift())
+    std::vector<double> m_angularDrift; ///< per body
+    std::vector<Pin> m_pins;
+    std::vector<double> m_invInertia; ///< per body, 0 for a body the step does not move
 
     std::vector<soft::Block> m_blocks;
     std::vector<Slot> m_slots;

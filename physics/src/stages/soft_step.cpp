@@ -93,36 +93,6 @@ bool collisionsToSolve(const std::vector<Contact>& contacts, const std::vector<C
     return false;
 }
 
-/// The isolated impacts of this step (soft_impacts.cpp): contacts whose moving bodies have no
-/// other contact, each solved exactly at its moment of impact. Fills StepScratch::impacts and
-/// StepScratch::isolated; returns whether there are any.
-bool findIsolatedImpacts(StepContext& ctx, double threshold)
-{
-    StepScratch& s = ctx.scratch;
-    s.impacts.clear();
-    s.isolated.clear();
-    s.contactsOf.assign(ctx.bodies.size(), 0);
-    for (const Contact& ct : ctx.contacts) {
-        ++s.contactsOf[static_cast<size_t>(ct.a)];
-        ++s.contactsOf[static_cast<size_t>(ct.b)];
-    }
-    const auto alone = [&](int id) {
-        const auto i = static_cast<size_t>(id);
-        return !ctx.bodies[i].isActive() || s.contactsOf[i] == 1;
-    };
-    for (size_t k = 0; k < ctx.contacts.size(); ++k) {
-        const Contact& ct = ctx.contacts[k];
-        IsolatedImpact impact;
-        if (!alone(ct.a) || !alone(ct.b) || !isolatedImpact(ctx, ct, threshold, impact))
-            continue;
-        if (s.isolated.empty())
-            s.isolated.assign(ctx.contacts.size(), 0);
-        s.isolated[k] = 1;
-        s.impacts.emplace_back(static_cast<int>(k), impact);
-    }
-    return !s.impacts.empty();
-}
-
 /// The isolated impacts' velocity changes to their bodies (where they end the step without
 /// contacts), their moments to StepScratch::impactFraction, their impulses to the contacts.
 void applyIsolatedImpacts(StepContext& ctx)
@@ -147,24 +117,14 @@ void applyIsolatedImpacts(StepContext& ctx)
     }
 }
 
-/// The soft step's collision phase, before its substeps: the isolated impacts' exact impulses,
-/// and the bounces of the sequential solver's collision phase (contact_collisions.cpp) for the
-/// rest. Returns the kinetic energy they took [J].
-double softCollisions(StepContext& ctx, double threshold)
+/// Each moving body where it would end the step without contacts (symplectic Euler, or where
+/// the integrator put it in a smooth step): where the sequential solver's collision phase finds
+/// it. Keeps the velocities at the start in StepScratch::softVelocity, those at the end in
+/// StepScratch::velocityBefore.
+void placeAtEndOfStep(StepContext& ctx)
 {
     StepScratch& s = ctx.scratch;
-    s.impactShift.clear();
-    s.impactTurn.clear();
-    const double h = ctx.def.dt;
-    if (ctx.contacts.empty())
-        return 0.0;
-    const bool exact = findIsolatedImpacts(ctx, threshold);
-    const bool general = collisionsToSolve(ctx.contacts, s.previous, ctx.bodies, s.acceleration,
-                                           s.angularAcceleration, h, threshold, s.anyRestitution);
-    if (!exact && !general)
-        return 0.0;
-    // Each moving body where it would end the step without contacts (symplectic Euler): where
-    // the sequential solver's collision phase finds it.
+    const double h = ctx.dt;
     const size_t n = ctx.bodies.size();
     s.softVelocity.resize(n);
     s.softAngularVelocity.resize(n);
@@ -180,8 +140,32 @@ double softCollisions(StepContext& ctx, double threshold)
         b.angularVelocity += h * s.angularAcceleration[i];
         s.velocityBefore[i] = b.velocity;
         s.angularVelocityBefore[i] = b.angularVelocity;
-        b.position += h * b.velocity;
+        if (ctx.plan.smooth)
+            b.position = s.smoothEnd[i].position;
+        else
+            b.position += h * b.velocity;
     }
+}
+
+/// The soft step's collision phase, before its substeps: the isolated impacts' exact impulses,
+/// and the bounces of the sequential solver's collision phase (contact_collisions.cpp) for the
+/// rest. Returns the kinetic energy they took [J].
+double softCollisions(StepContext& ctx, double threshold)
+{
+    StepScratch& s = ctx.scratch;
+    s.impactShift.clear();
+    s.impactTurn.clear();
+    const double h = ctx.dt;
+    if (ctx.contacts.empty())
+        return 0.0;
+    const bool exact =
+        findIsolatedImpacts(ctx, threshold, ctx.plan.smooth ? Flown::ToSmoothEnd : Flown::ByForces);
+    const bool general = collisionsToSolve(ctx.contacts, s.previous, ctx.bodies, s.acceleration,
+                                           s.angularAcceleration, h, threshold, s.anyRestitution);
+    if (!exact && !general)
+        return 0.0;
+    placeAtEndOfStep(ctx);
+    const size_t n = ctx.bodies.size();
     bool bounced = false;
     if (general) {
         ContactSolver& solver = s.solver;
@@ -259,27 +243,126 @@ double softForces(StepContext& ctx)
     return dragPower;
 }
 
-} // namespace
-
-void softStep(StepContext& ctx)
+/// Stage::Forces and Stage::Integration of the soft step with smooth forces the substeps do
+/// not hold constant (StepPlan::smooth: springs, pins, gravitation, or another integrator):
+/// the chosen integrator moves the bodies over the whole step as if there were no contacts
+/// (integration.cpp: its forces at each of its stages, the pins as exact constraint forces,
+/// what drag and dampers took), and each body goes back to the start of the step with what the
+/// substeps need to repeat that motion: its mean acceleration a = (v1 - v0) / dt, held over
+/// the substeps, and the drift u, the part of its displacement that no constant force makes:
+///     x1 - x0 = dt v0 + c dt (v1 - v0) + dt u,
+/// c the integrator's steady push (what it makes of a constant acceleration, integrator.h: 1/2
+/// for Verlet and RK4, 0 for explicit Euler). The substeps make c' = (n + 1) / (2 n) of a
+/// constant acceleration; a body no contact touches takes the integrator's end instead
+/// (finishSmoothMotion()), so without contacts each integrator keeps its order and its bits.
+void softSmoothMotion(StepContext& ctx)
 {
-    const double h = ctx.def.dt;
     StepScratch& s = ctx.scratch;
     const size_t n = ctx.bodies.size();
-
-    const double dragPower = softForces(ctx); // at the start of the step [W]
-
-    SoftSolver& solver = s.softSolver;
-    const SoftStepSettings& settings = ctx.contactSettings.soft;
-    double loss = 0.0;
-    {
-        StageTimer timer(ctx.profile, Stage::ContactSolve);
-        loss += softCollisions(ctx, ctx.restitutionThreshold);
-        solver.begin(ctx.contacts, ctx.bodies, s.acceleration, s.angularAcceleration, ctx.h,
-                     ctx.softness, settings, ctx.plain);
+    // Where the contacts were found: the start of the step (findContacts()).
+    integrate(ctx);
+    const double invDt = ctx.invDt;
+    const double steady = ctx.steadyPush;
+    s.acceleration.resize(n);
+    s.angularAcceleration.resize(n);
+    s.drift.assign(n, Vec2::Zero());
+    s.angularDrift.assign(n, 0.0);
+    s.smoothEnd.resize(n);
+    s.anyRestitution = false;
+    for (size_t i = 0; i < n; ++i) {
+        Body& b = ctx.bodies[i];
+        s.anyRestitution = s.anyRestitution || b.restitution > 0.0;
+        if (!b.moves())
+            continue;
+        s.smoothEnd[i] = {b.position, b.angle, b.velocity, b.angularVelocity};
+        const Vec2 x0 = s.xfPosition[i], v0 = s.velocityAtStart[i];
+        const double angle0 = s.xfAngle[i], w0 = s.angularVelocityAtStart[i];
+        if (b.isActive()) {
+            const Vec2 dv = b.velocity - v0;
+            const double dw = b.angularVelocity - w0;
+            s.acceleration[i] = invDt * dv;
+            s.angularAcceleration[i] = invDt * dw;
+            s.drift[i] = invDt * (b.position - x0) - v0 - steady * dv;
+            s.angularDrift[i] = invDt * (b.angle - angle0) - w0 - steady * dw;
+        }
+        b.position = x0;
+        b.angle = angle0;
+        b.velocity = v0;
+        b.angularVelocity = w0;
     }
-    const bool contacts = solver.constraintCount() > 0;
+}
+
+/// After the substeps of a smooth step: a body no contact touched (nor a pin a contact
+/// touched) ends where the integrator put it, bit for bit. A body in contact keeps the
+/// substeps' motion: its contacts hold it as the soft step holds any body (a resting body's
+/// contact cancels its load within each substep), its drift adds the integrator's motion
+/// beyond a constant force, and only the constant force's share differs from the integrator's
+/// (c' instead of c, softSmoothMotion()): by (c' - c) dt^2 |a| in a step with a contact, 0.1 g
+/// dt^2 for RK4. (Moving such a body by the integrator's share of its whole change of velocity
+/// instead, the contacts' included, left explicit Euler's resting ball, c = 0, unable to move
+/// off its contact within a step: it hovered at 2 cm/s, and its contact's bookkeeping took
+/// 13 % of its energy in a minute.)
+void finishSmoothMotion(StepContext& ctx)
+{
+    StepScratch& s = ctx.scratch;
+    const size_t n = ctx.bodies.size();
+    s.touched.assign(n, 0);
+    for (const Contact& ct : ctx.contacts)
+        s.touched[static_cast<size_t>(ct.a)] = s.touched[static_cast<size_t>(ct.b)] = 1;
+    for (const PinJointDef& j : s.touchedJoints)
+        for (const BodyId id : {j.a, j.b})
+            if (id != kWorld)
+                s.touched[static_cast<size_t>(id)] = 1;
+    // A body whose contacts pushed nothing this step (a ball rising within the margin of the
+    // floor it bounced off) ends where the substeps put it but for their share of the constant
+    // force (c' - c) dt dv: then it takes the integrator's end too, so that a free flight
+    // stays the integrator's in steps with a contact that does not act.
+    const double shift = ((ctx.substeps + 1.0) / (2.0 * ctx.substeps) - ctx.steadyPush) * ctx.dt;
+    constexpr double kRoundOff = 1e-11; // relative
+    const auto near = [&](const Vec2& a, const Vec2& b) {
+        return (a - b).norm() <= kRoundOff * (1.0 + b.norm());
+    };
+    for (size_t i = 0; i < n; ++i) {
+        Body& b = ctx.bodies[i];
+        if (!b.isActive())
+            continue;
+        const BodyPose& end = s.smoothEnd[i];
+        const Vec2 dv = end.velocity - s.velocityAtStart[i];
+        const double dw = end.angularVelocity - s.angularVelocityAtStart[i];
+        const bool pushed = !near(b.velocity, end.velocity) ||
+                            !near(Vec2(b.angularVelocity, b.angle),
+                                  Vec2(end.angularVelocity, end.angle + shift * dw)) ||
+                            !near(b.position, end.position + shift * dv);
+        if (s.touched[i] && pushed)
+            continue;
+        b.position = end.position;
+        b.angle = end.angle;
+        b.velocity = end.velocity;
+        b.angularVelocity = end.angularVelocity;
+    }
+}
+
+/// Back onto the pins the contacts touched (the integrator's projection, joints.cpp), after
+/// the substeps held them softly.
+void projectTouchedPins(StepContext& ctx)
+{
+    withState(
+        ctx,
+        [](Dynamics& d, Eigen::VectorXd& q, Eigen::VectorXd& v) {
+            d.projectJointPositions(q);
+            d.projectJointVelocities(q, v);
+        },
+        &ctx.scratch.touchedJoints);
+}
+
+/// The substeps (soft_solver.cpp), each timed by stage: integrate velocities, warm start,
+/// solve with the soft push, integrate positions, relax. contacts: whether there is anything
+/// to solve. Returns the kinetic energy the contacts took [J] (see the top of this file).
+double softSubsteps(StepContext& ctx, bool contacts)
+{
+    SoftSolver& solver = ctx.scratch.softSolver;
     const double sub = ctx.h; // [s]
+    double loss = 0.0;
     for (int k = 0; k < ctx.substeps; ++k) {
         {
             StageTimer timer(ctx.profile, Stage::Integration);
@@ -301,9 +384,52 @@ void softStep(StepContext& ctx)
             loss -= solver.kineticEnergy() - 0.5 * sub * solver.loadPower();
         }
     }
+    return loss;
+}
+
+} // namespace
+
+void softStep(StepContext& ctx)
+{
+    const double h = ctx.dt;
+    StepScratch& s = ctx.scratch;
+    const size_t n = ctx.bodies.size();
+
+    if (ctx.plan.smooth && ctx.contacts.empty()) {
+        // Nothing for the substeps to solve: the integrator's step, exactly.
+        integrate(ctx);
+        if (ctx.plan.collide) {
+            StageTimer timer(ctx.profile, Stage::ContactSolve);
+            sweepBackBullets(ctx);
+        }
+        return;
+    }
+    double dragPower = 0.0; // at the start of the step [W]; the integrator counts its own
+    if (ctx.plan.smooth)
+        softSmoothMotion(ctx);
+    else
+        dragPower = softForces(ctx);
+
+    SoftSolver& solver = s.softSolver;
+    const SoftStepSettings& settings = ctx.contactSettings.soft;
+    double loss = 0.0;
+    {
+        StageTimer timer(ctx.profile, Stage::ContactSolve);
+        loss += softCollisions(ctx, ctx.restitutionThreshold);
+        solver.begin(ctx.contacts, ctx.bodies, s.acceleration, s.angularAcceleration, ctx.h,
+                     ctx.softness, settings, ctx.plain);
+        if (ctx.plan.smooth)
+            solver.setDrift(s.drift, s.angularDrift);
+    }
+    const bool pinned = touchedJoints(ctx);
+    if (pinned)
+        solver.setPins(s.touchedJoints, ctx.bodies);
+    loss += softSubsteps(ctx, solver.constraintCount() > 0 || pinned);
     {
         StageTimer timer(ctx.profile, Stage::ContactSolve);
         solver.end(ctx.bodies);
+        if (ctx.plan.smooth)
+            finishSmoothMotion(ctx);
         if (!s.impactShift.empty()) {
             // Bounced bodies flew on until their impact (softCollisions()); the contacts
             // report the bounce with the rest of their impulse, as the sequential solver's.
@@ -318,7 +444,9 @@ void softStep(StepContext& ctx)
     }
     {
         StageTimer timer(ctx.profile, Stage::ContactSolve);
-        softSweepBack(ctx);
+        if (pinned)
+            projectTouchedPins(ctx);
+        sweepBackBullets(ctx);
     }
     ctx.collisionLoss += loss;
     ctx.dragLoss += h * dragPower;

@@ -12,11 +12,6 @@
 
 namespace rigidlab::physics {
 
-/// Why the sequential-impulse solver would stand in for the soft step in this world, whatever
-/// the solver asked for (step_plan.cpp).
-SoftStepStandIn softStandIn(const WorldDef& def, const std::vector<SpringDef>& springs,
-                            const std::vector<PinJointDef>& joints);
-
 /// What this step needs, from what the world holds (step_plan.cpp).
 StepPlan planStep(const WorldDef& def, const std::vector<Body>& bodies,
                   const std::vector<SpringDef>& springs, const std::vector<PinJointDef>& joints,
@@ -47,6 +42,11 @@ void wakeIslands(StepContext& ctx);
 void integrate(StepContext& ctx);
 void integrateDirect(StepContext& ctx);
 
+/// The joints a contact of this step touches (one of its bodies is an end), and every joint
+/// that shares a body with one of them, into StepScratch::touchedJoints; whether there are any
+/// (contact_response.cpp). The contact solvers solve these with the contacts.
+bool touchedJoints(StepContext& ctx);
+
 /// Stage::ContactSolve: impulses on the new velocities, then position correction
 /// (contact_response.cpp, contact_solver.cpp).
 void solveContacts(StepContext& ctx);
@@ -55,20 +55,31 @@ void solveContacts(StepContext& ctx);
 /// step (soft_step.cpp, soft_solver.cpp).
 void softStep(StepContext& ctx);
 
+/// How the bodies of an isolated impact fly within the step, from StepScratch::xfPosition and
+/// velocityAtStart: by the soft step's constant forces (soft_step.cpp, symplectic Euler);
+/// to where the integrator has already moved them (the impulse solvers, contact_response.cpp);
+/// or to where the integrator ended the soft step's smooth motion (StepScratch::smoothEnd).
+enum class Flown { ByForces, ToBodies, ToSmoothEnd };
+
 /// Whether `ct` is an impact faster than `threshold` [m/s] within the step that can be solved
 /// exactly: no impulse carried from the step before, the bodies touching within the step flown
-/// freely. The caller checks that neither moving body has another contact.
-bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, IsolatedImpact& out);
+/// freely. The caller checks that neither moving body has another contact (soft_impacts.cpp).
+bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, Flown flown,
+                    IsolatedImpact& out);
+/// The isolated impacts of this step: contacts whose moving bodies have no other contact and
+/// no pin, each solved exactly at its moment of impact (soft_impacts.cpp). Fills
+/// StepScratch::impacts and StepScratch::isolated; returns whether there are any.
+bool findIsolatedImpacts(StepContext& ctx, double threshold, Flown flown);
 
 /// Distance from the body's centre of mass to its shape's farthest point [m] (continuous.cpp).
 double outerRadius(const Body& b);
 /// The body's smallest width: what it must not jump past in a step [m] (continuous.cpp).
 double ownSize(const Body& b);
 
-/// The soft step's continuous collision: each body that moved more than its own size put back where
-/// its motion in the step first comes within the slop of a body that does not move
+/// Continuous collision after every solver: each body that moved more than its own size put
+/// back where its motion in the step first comes within the slop of a body that does not move
 /// (soft_continuous.cpp).
-void softSweepBack(StepContext& ctx);
+void sweepBackBullets(StepContext& ctx);
 
 /// Stage::Sleep: islands that have rested long enough (islands.cpp).
 void sleepIslands(StepContext& ctx);

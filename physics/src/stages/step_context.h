@@ -32,9 +32,11 @@ struct StepPlan {
     bool direct = false;  ///< symplectic Euler on the bodies, without the ODE state
     bool sleep = false;   ///< islands and sleeping
     bool anyAwake = true; ///< some dynamic body is awake (after wakeIslands())
-    /// The soft step: SolverKind::SoftStep with symplectic Euler and nothing but contacts
-    /// coupling the bodies (otherwise the sequential-impulse solver stands in for it).
+    /// The soft step (SolverKind::SoftStep).
     bool soft = false;
+    /// Springs, pins, gravitation or an integrator other than symplectic Euler: the soft step
+    /// lets the integrator carry the smooth motion (soft_step.cpp).
+    bool smooth = false;
     int dynamic = 0; ///< dynamic bodies
 };
 
@@ -46,6 +48,14 @@ struct IsolatedImpact {
     double dwA = 0, dwB = 0;                     ///< [rad/s]
     double impulse[2] = {0, 0};                  ///< normal, per manifold point [N s]
 };
+/// A body's position, angle and velocities.
+struct BodyPose {
+    Vec2 position = Vec2::Zero();
+    double angle = 0;
+    Vec2 velocity = Vec2::Zero();
+    double angularVelocity = 0;
+};
+
 /// The world's buffers reused from step to step.
 struct StepScratch {
     BroadPhase broadPhase;
@@ -81,6 +91,13 @@ struct StepScratch {
     /// integration's and the soft step's).
     std::vector<Vec2> acceleration;
     std::vector<double> angularAcceleration;
+    /// The soft step's smooth motion (StepPlan::smooth, soft_step.cpp): per body, what the
+    /// integrator's displacement adds to the substeps' [m/s] and [rad/s], and where the
+    /// integrator ended the step (kept by a body no contact touches).
+    std::vector<Vec2> drift;
+    std::vector<double> angularDrift;
+    std::vector<BodyPose> smoothEnd;
+    std::vector<char> touched; ///< per body: in a contact, or on a pin a contact touches
     /// Each body's placement at the start of the step, and the pose it was computed for.
     std::vector<Transform> xf;
     std::vector<Vec2> xfPosition;
@@ -99,6 +116,9 @@ struct StepContext {
     int substeps = 1; ///< the soft step's substeps (1 for the other solvers)
     double h = 0;     ///< the substep dt / substeps [s]
     double invH = 0;  ///< 1 / h [1/s]
+    /// What the integrator makes of a constant acceleration over a step, as a share of dt
+    /// times the change of velocity (IntegratorInfo::steadyPush).
+    double steadyPush = 1;
     /// The soft contact's coefficients at the substep (soft step only): between two moving
     /// bodies [0], against a body that does not move [1] (twice the frequency).
     Softness softness[2];

@@ -15,14 +15,15 @@ enum class SolverKind {
     PaperImpulse,      ///< the paper's impulse, contact by contact, once (full denominator)
     SequentialImpulse, ///< accumulated, clamped impulses, iterated and warm started
     /// Soft contacts in substeps with relaxation, after the sequential solver's collision
-    /// phase for the bounces (soft_step.cpp, soft_solver.cpp).
-    /// With springs, joints, gravitation or an integrator other than symplectic Euler, the
-    /// sequential-impulse solver stands in for it.
+    /// phase for the bounces (soft_step.cpp, soft_solver.cpp); with springs, pins,
+    /// gravitation or another integrator than symplectic Euler, that integrator carries the
+    /// smooth motion and the substeps the contacts and the pins they touch.
     SoftStep,
 };
 
-/// Why the sequential-impulse solver stands in for the soft step (the first that applies),
-/// or None when the soft step runs (or was not asked for).
+/// Why the sequential-impulse solver would stand in for the soft step. The soft step now runs
+/// every world, so World::softStepStandIn() is always None; the reasons stay for the callers
+/// that word a hand-over.
 enum class SoftStepStandIn {
     None,
     Integrator,  ///< an integrator other than symplectic Euler
