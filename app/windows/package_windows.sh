@@ -30,7 +30,7 @@ die() { say "$*"; exit 1; }
 WINDOWS_PACKAGES=(g++-mingw-w64-x86-64-posix gcc-mingw-w64-x86-64-posix binutils-mingw-w64-x86-64
                   nsis ninja-build dpkg-dev qt6-base-dev qt6-base-dev-tools qt6-tools-dev
                   qt6-l10n-tools qt6-translations-l10n libeigen3-dev libboost-dev)
-CHECK_PACKAGES=(wine64 xvfb poppler-utils)
+CHECK_PACKAGES=(wine64 xvfb xdotool poppler-utils)
 
 install_packages() {
     local p missing=()
