@@ -6,6 +6,7 @@
 #include "plots/work_precision_plot.h"
 
 #include "format/atomic_file.h"
+#include "format/data_dirs.h"
 #include "numerics/error_vs_time.h"
 #include "numerics/stress.h"
 
@@ -15,9 +16,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <map>
 #include <optional>
+
+#ifdef Q_OS_WIN
+#include <windows.h>
+#endif
 
 namespace rigidlab::cli {
 
@@ -140,14 +146,38 @@ int writeWorkPrecisionPlots(const std::vector<lessons::SweepRow>& rows, const QS
     return kExitOk;
 }
 
+#ifdef Q_OS_WIN
+/// The console's code page when the program started, put back when it ends.
+UINT consoleCodePage = 0;
+#endif
+
+/// The program writes its texts in the system's 8-bit code page (QString::toLocal8Bit); a
+/// Windows console shows another one (the OEM code page: 852 where the ANSI one is 1250), and
+/// would garble the Czech letters. The console shows the ANSI code page while the program runs.
+void matchConsoleCodePage()
+{
+#ifdef Q_OS_WIN
+    consoleCodePage = GetConsoleOutputCP();
+    if (consoleCodePage != 0 && SetConsoleOutputCP(GetACP()))
+        std::atexit([] { SetConsoleOutputCP(consoleCodePage); });
+#endif
+}
+
 } // namespace
 
 std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv)
 {
+    matchConsoleCodePage();
+    lessons::useSettingsFiles();
     if (argc > 1 &&
         (std::strcmp(argv[1], "error-vs-time") == 0 || std::strcmp(argv[1], "lesson") == 0)) {
+        // The plots are drawn into files, never shown: no display is needed. On Windows the
+        // Windows platform needs none either, and its fonts are the system's (Qt's offscreen
+        // platform there would look for fonts in Qt's own folder, and find none).
+#ifndef Q_OS_WIN
         if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM"))
             qputenv("QT_QPA_PLATFORM", "offscreen");
+#endif
         return std::make_unique<QApplication>(argc, argv);
     }
     return std::make_unique<QCoreApplication>(argc, argv);

@@ -12,6 +12,7 @@
 #include "window/main_window.h"
 #include "window/screenshots.h"
 
+#include "format/data_dirs.h"
 #include "format/divergence_message.h"
 #include "format/languages.h"
 #include "format/lesson_pack.h"
@@ -35,6 +36,12 @@
 #include <numeric>
 #include <optional>
 #include <vector>
+
+#ifdef Q_OS_WIN
+#include <windows.h>
+
+#include <shellapi.h>
+#endif
 
 namespace {
 
@@ -295,12 +302,53 @@ int parseArguments(const QStringList& args, Options& options, QString& message)
 }
 
 /// Whether Qt has somewhere to show a window: a display, or a platform chosen explicitly
-/// (QT_QPA_PLATFORM=offscreen for tests and headless machines).
+/// (QT_QPA_PLATFORM=offscreen for tests and headless machines). Windows always has its desktop.
 bool haveDisplay()
 {
+#ifdef Q_OS_WIN
+    return true;
+#else
     return !qEnvironmentVariableIsEmpty("DISPLAY") ||
            !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY") ||
            !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+#endif
+}
+
+/// The arguments after the program's name. On Windows argv is in the ANSI code page, which
+/// lacks letters of most languages (a lesson named "Srážka.rlesson" on a Western code page):
+/// the command line's UTF-16 has them all.
+QStringList programArguments(int argc, char** argv)
+{
+    QStringList args;
+#ifdef Q_OS_WIN
+    Q_UNUSED(argc)
+    Q_UNUSED(argv)
+    int count = 0;
+    if (wchar_t** wide = CommandLineToArgvW(GetCommandLineW(), &count)) {
+        for (int i = 1; i < count; ++i)
+            args << QString::fromWCharArray(wide[i]);
+        LocalFree(wide);
+    }
+#else
+    for (int i = 1; i < argc; ++i)
+        args << QString::fromLocal8Bit(argv[i]);
+#endif
+    return args;
+}
+
+/// Windows starts a GUI program without a console: --help, --version and mistakes then go to
+/// the console it was started from (cmd, PowerShell), unless its output is redirected.
+void useParentConsole()
+{
+#ifdef Q_OS_WIN
+    if (GetFileType(GetStdHandle(STD_OUTPUT_HANDLE)) != FILE_TYPE_UNKNOWN)
+        return; // redirected to a file or a pipe: write there
+    if (AttachConsole(ATTACH_PARENT_PROCESS)) {
+        std::freopen("CONOUT$", "w", stdout);
+        std::freopen("CONOUT$", "w", stderr);
+        SetConsoleOutputCP(CP_UTF8); // QTextStream writes UTF-8
+    }
+#endif
 }
 
 /// rigidlab --screenshots: the shipped views as PNGs, then the exit status.
@@ -427,9 +475,8 @@ void deleteWindows()
 int main(int argc, char** argv)
 {
     // Arguments first: --help, --version and mistakes must not need a display.
-    QStringList args;
-    for (int i = 1; i < argc; ++i)
-        args << QString::fromLocal8Bit(argv[i]);
+    useParentConsole();
+    const QStringList args = programArguments(argc, argv);
     Options options;
     QString message;
     if (const int status = parseArguments(args, options, message); status >= 0) {
@@ -456,6 +503,7 @@ int main(int argc, char** argv)
     if (const auto* language = rigidlab::ui::findLanguage(options.lang))
         qputenv("LC_TIME", language->locale.toString().toLatin1() + ".UTF-8");
 
+    rigidlab::lessons::useSettingsFiles();
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("RigidLab"));
     QApplication::setApplicationName(QStringLiteral("RigidLab"));

@@ -6027,5 +6027,9 @@ B&#xa0;%3 … %4</translation>
         <source>CSV plain, for scripts (%1, %2) (*.csv)</source>
         <translation>CSV prosté, pro skripty (%1, %2) (*.csv)</translation>
     </message>
+    <message>
+        <source>this build of RigidLab cannot write SVG</source>
+        <translation>toto sestavení RigidLabu neumí zapisovat SVG</translation>
+    </message>
 </context>
 </TS>

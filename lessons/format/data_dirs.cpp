@@ -4,6 +4,7 @@
 #include <QCoreApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <QSettings>
 #include <QStandardPaths>
 
 namespace rigidlab::lessons {
@@ -68,6 +69,13 @@ QString userScenesDir()
 QString userLessonsDir()
 {
     return QDir(userDataDir()).filePath(QStringLiteral("lessons"));
+}
+
+void useSettingsFiles()
+{
+#ifdef Q_OS_WIN
+    QSettings::setDefaultFormat(QSettings::IniFormat);
+#endif
 }
 
 } // namespace rigidlab::lessons

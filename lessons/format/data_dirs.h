@@ -28,4 +28,11 @@ QString userDataDir();
 QString userScenesDir();
 QString userLessonsDir();
 
+/// Keeps the user's settings in a file on every system: on Windows an INI file,
+/// %APPDATA%\RigidLab\RigidLab.ini, rather than the registry (elsewhere the native format is
+/// that file already, ~/.config/RigidLab/RigidLab.conf). The window's --screenshots points the
+/// settings at a folder of their own, which only a file allows. Called by both programs before
+/// any QSettings is made.
+void useSettingsFiles();
+
 } // namespace rigidlab::lessons

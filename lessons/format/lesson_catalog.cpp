@@ -27,7 +27,8 @@ const QString kFoldersKey = QStringLiteral("lessons/folders");
 std::unique_ptr<QSettings> settings()
 {
     if (QCoreApplication::organizationName().isEmpty())
-        return std::make_unique<QSettings>(QStringLiteral("RigidLab"), QStringLiteral("RigidLab"));
+        return std::make_unique<QSettings>(QSettings::defaultFormat(), QSettings::UserScope,
+                                           QStringLiteral("RigidLab"), QStringLiteral("RigidLab"));
     return std::make_unique<QSettings>();
 }
 

@@ -168,6 +168,8 @@ PlotFilesResult exportPlots(const std::vector<PlotWidget*>& plots, const QString
         plot->setCaption(caption);
         for (ExportFormat format :
              {ExportFormat::Png, ExportFormat::Pdf, ExportFormat::Svg, ExportFormat::Csv}) {
+            if (!canExport(format))
+                continue;
             const QString path = QDir(dir).filePath(plot->objectName() + u'.' + suffixFor(format));
             const ExportResult written = exportPlot(*plot, path, format, options);
             if (!written.ok) {

@@ -56,7 +56,8 @@ struct PlotFilesResult {
 };
 
 /// Writes each plot as NAME.png, NAME.pdf, NAME.svg and NAME.csv into `dir` (made if
-/// missing), NAME being the plot's objectName, each with `caption` under its title.
+/// missing), NAME being the plot's objectName, each with `caption` under its title; no SVG
+/// where this build cannot write it (canExport).
 PlotFilesResult exportPlots(const std::vector<PlotWidget*>& plots, const QString& dir,
                             const QString& caption, const ExportOptions& options = {});
 

@@ -19,7 +19,9 @@
 #include <QPageSize>
 #include <QPdfWriter>
 #include <QSettings>
+#if RIGIDLAB_HAVE_SVG
 #include <QSvgGenerator>
+#endif
 
 #include <cmath>
 #include <limits>
@@ -161,6 +163,15 @@ bool encodePdf(QCustomPlot& plot, const QString& title, const ExportOptions& opt
 bool encodeSvg(QCustomPlot& plot, const QString& title, const ExportOptions& options,
                QByteArray& bytes, QString& why)
 {
+#if !RIGIDLAB_HAVE_SVG
+    Q_UNUSED(plot)
+    Q_UNUSED(title)
+    Q_UNUSED(options)
+    Q_UNUSED(bytes)
+    why = QCoreApplication::translate("rigidlab::ui::exportPlot",
+                                      "this build of RigidLab cannot write SVG");
+    return false;
+#else
     const QSize logical = options.logicalSize;
     QBuffer out(&bytes);
     out.open(QIODevice::WriteOnly);
@@ -176,6 +187,7 @@ bool encodeSvg(QCustomPlot& plot, const QString& title, const ExportOptions& opt
         plot, svg, logical,
         QCoreApplication::translate("rigidlab::ui::exportPlot", "could not start drawing the SVG"),
         why);
+#endif
 }
 
 } // namespace
@@ -222,6 +234,11 @@ QByteArray plotTable(const PlotWidget& plot, const lessons::CsvConventions& conv
     }
     const std::string& data = csv.data();
     return QByteArray(data.data(), static_cast<qsizetype>(data.size()));
+}
+
+bool canExport(ExportFormat format)
+{
+    return format != ExportFormat::Svg || RIGIDLAB_HAVE_SVG;
 }
 
 std::optional<ExportFormat> formatFromSuffix(const QString& suffix)

@@ -20,6 +20,11 @@ class PlotWidget;
 
 enum class ExportFormat { Png, Pdf, Svg, Csv };
 
+/// Whether this build writes `format`: all but SVG always; SVG where the program was built with
+/// Qt SVG (not the Windows build, whose Qt has no SVG module). Menus and handouts offer only
+/// what it writes.
+bool canExport(ExportFormat format);
+
 /// "png", ".PNG", "pdf"... (case-insensitive, with or without the dot); nullopt if unknown.
 std::optional<ExportFormat> formatFromSuffix(const QString& suffix);
 /// The usual suffix, without the dot: "png".

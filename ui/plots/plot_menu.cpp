@@ -41,6 +41,8 @@ void PlotWidget::showContextMenu(const QPoint& pos)
     };
     for (const auto& entry : exports) {
         const ExportFormat format = entry.first;
+        if (!canExport(format))
+            continue;
         connect(menu->addAction(entry.second), &QAction::triggered, this,
                 [this, format] { exportInteractively(format); });
     }

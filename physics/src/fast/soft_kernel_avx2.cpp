@@ -13,7 +13,7 @@
 namespace rigidlab::physics::soft {
 Kernel kernel4Avx2()
 {
-    return {nullptr, nullptr, nullptr, 0, "none"};
+    return {nullptr, nullptr, 0, "none"};
 }
 } // namespace rigidlab::physics::soft
 #endif
