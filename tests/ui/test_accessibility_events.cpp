@@ -146,7 +146,12 @@ class CountingBridgePlugin : public QAccessibleBridgePlugin {
     Q_OBJECT
     Q_PLUGIN_METADATA(IID QAccessibleBridgeFactoryInterface_iid FILE "counting_bridge.json")
 public:
-    QAccessibleBridge* create(const QString&) override { return new CountingBridge; }
+    // Qt never deletes the bridges it loads: the one bridge lives as long as the program.
+    QAccessibleBridge* create(const QString&) override
+    {
+        static CountingBridge bridge;
+        return &bridge;
+    }
 };
 
 Q_IMPORT_PLUGIN(CountingBridgePlugin)
