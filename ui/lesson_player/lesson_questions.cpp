@@ -5,6 +5,7 @@
 #include "lesson_player/lesson_player.h"
 
 #include "lesson_player/asked_run.h"
+#include "lesson_player/question_area.h"
 #include "lesson_player/step_text.h"
 
 #include "common/announcer.h"
@@ -370,14 +371,12 @@ void LessonPlayer::settle(std::size_t i, const lessons::Verdict& v)
 
 void LessonPlayer::revealResult(std::size_t i)
 {
-    // The questions come after the step's text in a scrolling column: the verdict just shown
-    // may lie below its bottom edge. Once the layout has made room for it, it is scrolled
-    // into sight (the question's box with it, so that the answer stays beside its verdict).
-    QScrollArea* scroll = scrollArea();
-    if (!scroll)
-        return;
+    // The questions are in sight below the text, but a later question's verdict may lie below
+    // the bottom of their area when they do not all fit. Once the layout has made room for
+    // it, it is scrolled into sight (the question's box with it, so that the answer stays
+    // beside its verdict).
     const QPointer<QLabel> result = m_rows[i].result;
-    const QPointer<QScrollArea> area = scroll;
+    const QPointer<QScrollArea> area = m_questionArea;
     QTimer::singleShot(0, this, [result, area] {
         if (result && area && result->isVisible())
             area->ensureWidgetVisible(result, 0, 8);

@@ -12,6 +12,7 @@
 #include "panels/sat_panel.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
+#include "plots/plot_shelf.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
@@ -33,7 +34,6 @@
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QStatusBar>
-#include <QVBoxLayout>
 
 #include <algorithm>
 #include <optional>
@@ -207,9 +207,8 @@ void LessonSession::makeComparePlots(const lessons::LessonStep& step)
     // The step's compared worlds, one plot for each compare-… plot it names, made where the
     // headless export makes them (lesson_export.h), so the window shows and exports the same.
     QDockWidget* compareDock = m_parts.layout.compareDock();
-    auto* box = new QWidget(compareDock);
-    auto* layout = new QVBoxLayout(box);
-    layout->setContentsMargins(0, 0, 0, 0);
+    // Side by side, stacked or behind tabs, as the dock's room keeps each readable.
+    auto* box = new PlotShelf(compareDock);
     QStringList titles;
     for (const QString& name : step.plots) {
         if (!name.startsWith(QLatin1String("compare-")))
@@ -222,7 +221,13 @@ void LessonSession::makeComparePlots(const lessons::LessonStep& step)
         plot->setTitleShown(false);
         plot->setPresentation(m_parts.layout.presentation());
         followController(*plot, m_parts.controller);
-        layout->addWidget(plot);
+        // Its tab says what the plot's values are ("compare-drift": the drift).
+        const QString plain = name.mid(QStringLiteral("compare-").size());
+        const auto* names =
+            std::find_if(kStepPlotTitles.begin(), kStepPlotTitles.end(),
+                         [&](const StepPartName& n) { return plain == QLatin1String(n.name); });
+        box->addPlot(plot, names != kStepPlotTitles.end() ? stepPartText(names->shortTitle)
+                                                          : plot->title());
         m_comparePlots.push_back(plot);
         titles << plot->title();
     }
