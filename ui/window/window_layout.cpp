@@ -79,8 +79,10 @@ void WindowLayout::fitToScreen(const QRect& available)
     const bool sized = !m_window.isFullScreen() && !m_window.isMaximized();
     if (sized) {
         m_window.resize(size);
-        m_window.move(available.topLeft() + QPoint((available.width() - size.width()) / 2,
-                                                   (available.height() - size.height()) / 2));
+        // move() places the frame: centred with it.
+        const QSize outer = size + frame;
+        m_window.move(available.topLeft() + QPoint((available.width() - outer.width()) / 2,
+                                                   (available.height() - outer.height()) / 2));
     }
     arrangeDocks(available.size());
     // While the docks were put back one row each, their minimum heights added up and may have
