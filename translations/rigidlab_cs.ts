@@ -4780,6 +4780,13 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::PlotShelf</name>
+    <message>
+        <source>Plots</source>
+        <translation>Grafy</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::PlotWidget</name>
     <message>
         <source>Export as PNG…</source>
