@@ -29,6 +29,7 @@
 #include <QtPlugin>
 #include <QtTest>
 
+#include "projector_window.h"
 #include "test_main.h"
 
 using namespace rigidlab;
@@ -353,12 +354,8 @@ private slots:
     {
         constexpr int kMostKeysPerStep = 6;
         MainWindow w;
-        w.fitToScreen(QRect(0, 0, 1024, 768));
-        w.show();
-        w.activateWindow();
-        QVERIFY(QTest::qWaitForWindowActive(&w));
+        QCOMPARE(test::openFirstLessonOnProjector(w), QString());
         ui::LessonPlayer& player = w.lessonPlayer();
-        QCOMPARE(w.openLesson(player.firstLessonPath(), true), QString());
         const int steps = static_cast<int>(player.lesson()->steps.size());
         int asked = 0;
         for (int s = 0; s < steps; ++s) {
