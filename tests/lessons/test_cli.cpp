@@ -567,6 +567,8 @@ void TestCli::lessonsListsOwn()
     // rigidlab-cli is no test: its user folder is the documented ~/.local/share/rigidlab, under
     // this run's fresh $HOME (test_main.h).
     const QString own = QDir::homePath() + QStringLiteral("/.local/share/rigidlab/lessons");
+    const CliRun help = runCli({QStringLiteral("--help")});
+    QVERIFY2(help.out.contains("(" + own.toUtf8() + ")"), help.out.constData()); // this system's
     const CliRun before = runCli({QStringLiteral("lessons")});
     QCOMPARE(before.exitCode, 0);
     QVERIFY2(!before.out.contains("your own"), before.out.constData());
