@@ -182,7 +182,7 @@ void TestCli::badInput()
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("x.json"));
     if (!json.isEmpty()) {
-        writeFile(path, json);
+        QVERIFY(writeFile(path, json));
     }
     const QString expected =
         QStringLiteral("error: ") + path + QStringLiteral(": ") + message + u'\n';
@@ -239,8 +239,8 @@ void TestCli::validateWarns()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("l.json"));
-    writeFile(path, R"({"rigidlab": 1, "bodies": [{"id": "l", "shape": {"type": "polygon",
-                        "vertices": [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]}}]})");
+    QVERIFY(writeFile(path, R"({"rigidlab": 1, "bodies": [{"id": "l", "shape": {"type": "polygon",
+                        "vertices": [[0, 0], [2, 0], [2, 1], [1, 1], [1, 2], [0, 2]]}}]})"));
     const CliRun run = runCli({QStringLiteral("validate"), path});
     QCOMPARE(run.exitCode, 0);
     QCOMPARE(QString::fromUtf8(run.out),
@@ -254,9 +254,9 @@ void TestCli::lessonLanguages()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("l.json"));
-    writeFile(path, R"({"rigidlab-lesson": 1, "title": {"en": "Bounces", "cs": "Odrazy"},
+    QVERIFY(writeFile(path, R"({"rigidlab-lesson": 1, "title": {"en": "Bounces", "cs": "Odrazy"},
         "minutes": 5, "steps": [{"title": {"en": "Four balls"}, "scene": {"rigidlab": 1,
-        "bodies": [{"id": "b", "shape": {"type": "circle", "radius": 0.1}}]}}]})");
+        "bodies": [{"id": "b", "shape": {"type": "circle", "radius": 0.1}}]}}]})"));
 
     // The outline in each language; a text without Czech is shown in English.
     CliRun run =
@@ -307,8 +307,8 @@ void TestCli::lessonsListsOwn()
     QVERIFY(QDir().mkpath(own + QStringLiteral("/scenes")));
     QVERIFY(QFile::copy(scene("ball_drop"), own + QStringLiteral("/scenes/drop.json")));
     const QString lesson = own + QStringLiteral("/mine.json");
-    writeFile(lesson, R"({"rigidlab-lesson": 1, "title": "My drop", "order": 1,
-                          "steps": [{"title": "s", "scene": "scenes/drop.json"}]})");
+    QVERIFY(writeFile(lesson, R"({"rigidlab-lesson": 1, "title": "My drop", "order": 1,
+                          "steps": [{"title": "s", "scene": "scenes/drop.json"}]})"));
     const CliRun after = runCli({QStringLiteral("lessons")});
     QCOMPARE(after.exitCode, 0);
     QVERIFY2(after.err.isEmpty(), after.err.constData());

@@ -5,6 +5,7 @@
 // (test_cli.cpp), and what its commands write (test_cli_runs.cpp). Shared helpers here.
 
 #include "cli_run.h"
+#include "test_files.h"
 
 #include <QByteArray>
 #include <QDir>
@@ -16,24 +17,17 @@
 
 namespace rigidlab::test::cli {
 
+using rigidlab::test::readAll;
+using rigidlab::test::writeFile;
+
+using rigidlab::test::readAll;
+using rigidlab::test::writeFile;
+
 inline const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
 
 inline QString scene(const char* name)
 {
     return QDir(kScenesDir).filePath(QLatin1StringView(name) + QStringLiteral(".json"));
-}
-
-inline QByteArray readAll(const QString& path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-inline void writeFile(const QString& path, const QByteArray& bytes)
-{
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    QCOMPARE(file.write(bytes), bytes.size());
 }
 
 /// The files in a directory, hidden ones (temporary files) included.

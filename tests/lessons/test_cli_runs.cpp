@@ -95,11 +95,11 @@ void TestCli::runStopsOnNonFinite()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("stiff.json"));
-    writeFile(path, R"({"rigidlab": 1,
+    QVERIFY(writeFile(path, R"({"rigidlab": 1,
         "world": {"integrator": "euler", "dt": 0.1, "gravity": [0, 0]},
         "bodies": [{"id": "m", "shape": {"type": "circle", "radius": 0.1}, "mass": 0.001,
                     "position": [1, 0]}],
-        "springs": [{"a": "m", "b": null, "stiffness": 100000, "restLength": 0.5}]})");
+        "springs": [{"a": "m", "b": null, "stiffness": 100000, "restLength": 0.5}]})"));
     const QString trace = dir.filePath(QStringLiteral("t.csv"));
     const CliRun run = runCli({QStringLiteral("run"), path, QStringLiteral("--steps"),
                                QStringLiteral("5000"), QStringLiteral("--trace"), trace});
@@ -114,9 +114,9 @@ void TestCli::satOutput()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("pair.json"));
-    writeFile(path, R"({"a": {"vertices": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
+    QVERIFY(writeFile(path, R"({"a": {"vertices": [[-1, -1], [1, -1], [1, 1], [-1, 1]]},
                         "b": {"vertices": [[-1, -1], [1, -1], [1, 1], [-1, 1]],
-                              "position": [1.5, 0.5], "angle": 0.1}})");
+                              "position": [1.5, 0.5], "angle": 0.1}})"));
     const CliRun run = runCli({QStringLiteral("sat"), path});
     QCOMPARE(run.exitCode, 0);
     QVERIFY(run.err.isEmpty());
@@ -147,11 +147,11 @@ void TestCli::satArray()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("pairs.json"));
-    writeFile(path, R"([
+    QVERIFY(writeFile(path, R"([
         {"a": {"vertices": [[0, 0], [1, 0], [0, 1]]},
          "b": {"vertices": [[0, 0], [1, 0], [0, 1]], "position": [5, 0]}},
         {"a": {"vertices": [[0, 0], [1, 0], [0, 1]]},
-         "b": {"vertices": [[0, 0], [1, 0], [0, 1]], "position": [0.2, 0.2]}}])");
+         "b": {"vertices": [[0, 0], [1, 0], [0, 1]], "position": [0.2, 0.2]}}])"));
     const CliRun run = runCli({QStringLiteral("sat"), path});
     QCOMPARE(run.exitCode, 0);
     const QJsonArray list = QJsonDocument::fromJson(run.out).array();
@@ -163,7 +163,7 @@ void TestCli::satArray()
 
     // Bad input: same rules as scenes.
     const QString bad = dir.filePath(QStringLiteral("bad.json"));
-    writeFile(bad, R"({"a": {"vertices": [[0, 0], [1, 0]]}, "b": {"vertices": []}})");
+    QVERIFY(writeFile(bad, R"({"a": {"vertices": [[0, 0], [1, 0]]}, "b": {"vertices": []}})"));
     const CliRun failed = runCli({QStringLiteral("sat"), bad});
     QCOMPARE(failed.exitCode, 2);
     QCOMPARE(QString::fromUtf8(failed.err),

@@ -25,6 +25,7 @@
 
 using namespace rigidlab;
 using rigidlab::test::filesUnder;
+using rigidlab::test::writeFile;
 
 class TestLessonPack : public QObject {
     Q_OBJECT
@@ -51,12 +52,6 @@ const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons
 QStringList shippedLessons()
 {
     return QDir(kLessonsDir).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
-}
-
-bool writeFile(const QString& path, const QByteArray& bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
 }
 
 /// restitution.json packed, as a JSON object to damage.
