@@ -43,6 +43,9 @@ void World::step()
     if (ctx.plan.collide) {
         rememberStartVelocities(ctx);
         findContacts(ctx);
+        // More pairs than the step's work budget: stopped before anything moves.
+        if (stopWhenCrowded())
+            return;
     } else {
         m_contacts.clear();
     }
