@@ -2031,10 +2031,6 @@ n = (%4; %5)</translation>
         <translation>Správná odpověď: „%1“</translation>
     </message>
     <message>
-        <source>%1 (instead of %2)</source>
-        <translation>%1 (místo: %2)</translation>
-    </message>
-    <message>
         <source>on</source>
         <translation>zapnuto</translation>
     </message>
@@ -2652,6 +2648,18 @@ Soft step: springy contacts solved in small substeps; stiff stacks.</source>
         <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
 Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.
 Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné stohy.</translation>
+    </message>
+    <message>
+        <source>Not used: the paper&apos;s impulse solves each contact once, in one pass</source>
+        <translation>Nepoužívá se: řešič Kontakt po kontaktu řeší každý kontakt jednou, v&#xa0;jediném průchodu</translation>
+    </message>
+    <message numerus="yes">
+        <source>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substeps instead</source>
+        <translation>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší v&#xa0;%n podkroku</numerusform>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší ve&#xa0;%n podkrocích</numerusform>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší v&#xa0;%n podkrocích</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -5506,32 +5514,8 @@ B&#xa0;%3 … %4</translation>
         <translation> krok %1 z&#xa0;%2 · t = %3&#xa0;s</translation>
     </message>
     <message>
-        <source>%1 instead of the soft step</source>
-        <translation>%1 místo měkkého kroku</translation>
-    </message>
-    <message>
         <source>Contact solver: %1</source>
         <translation>Řešič kontaktů: %1</translation>
-    </message>
-    <message>
-        <source>The soft step runs only with the symplectic Euler integrator.</source>
-        <translation>Měkký krok běží jen se symplektickou Eulerovou metodou.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle springs yet.</source>
-        <translation>Měkký krok zatím neumí pružiny.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle pin joints yet.</source>
-        <translation>Měkký krok zatím neumí čepy.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle gravitation between bodies yet.</source>
-        <translation>Měkký krok zatím neumí gravitaci mezi tělesy.</translation>
-    </message>
-    <message>
-        <source>%1 The sequential-impulse solver runs instead.</source>
-        <translation>%1 Místo něj běží řešič postupných impulsů.</translation>
     </message>
     <message>
         <source>A frame&apos;s physics takes longer than the frame has: the clock leaves out the time it cannot catch up with, so the run goes slower than real time instead of falling further behind.</source>
