@@ -210,6 +210,10 @@ bool asksSettings(const Question& question);
 /// Applies a step's settings to a world built from its scene.
 void applySettings(const StepSettings& settings, physics::World& world);
 
+/// How long a step runs without a window (its exported plots, the worksheet's figures): its
+/// exportTime, cut short at its endTime, where the window's run stops too [s].
+double exportRunTime(const LessonStep& step);
+
 /// The step's worlds: [0] the main world, then one per compared variant (count() - 1 more,
 /// the first variant being the main world itself).
 std::vector<physics::World> buildStepWorlds(const LessonStep& step);
