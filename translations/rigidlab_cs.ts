@@ -4392,6 +4392,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Add a folder of lessons</source>
         <translation>Přidat složku s lekcemi</translation>
     </message>
+    <message>
+        <source>%1 fell off the stage at t = %2 s: the run paused. Play runs on.</source>
+        <translation>Těleso „%1“ spadlo ze scény v&#xa0;čase t = %2 s: simulace se pozastavila. Tlačítko Spustit ji rozběhne dál.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MainWindow</name>
@@ -4690,6 +4694,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Class res&amp;ults…</source>
         <translation>Výsledk&amp;y třídy…</translation>
+    </message>
+    <message>
+        <source>Measurement</source>
+        <translation>Měření</translation>
     </message>
 </context>
 <context>
@@ -5025,8 +5033,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>%1 = %2%3 (95&#xa0;%)</translation>
     </message>
     <message>
-        <source>From the bounce times alone: e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
-        <translation>Jen z&#xa0;časů odrazů: e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
+        <source>From the bounce times alone (%3): e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
+        <translation>Jen z&#xa0;časů odrazů (%3): e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
     </message>
 </context>
 <context>
@@ -5793,6 +5801,10 @@ B&#xa0;%3 … %4</translation>
         <source>Question %1: the integrators a student may choose measure from %2 to %3 %4, wider than the answers judged right (%5 to %6 %4): lock the integrator (Shown and locked) or widen the tolerance.</source>
         <translation>Otázka %1: integrátory, které si žák může zvolit, naměří od %2 do %3 %4, víc, než kolik pokrývají odpovědi uznané za správné (%5 až %6 %4): zamkněte integrátor (Zobrazeno a zamčeno), nebo zvětšete toleranci.</translation>
     </message>
+    <message>
+        <source>%1 falls off the stage at t = %2 s, and the run stops there: give the step an end time before it, or more ground.</source>
+        <translation>Těleso „%1“ spadne ze scény v&#xa0;čase t = %2 s a simulace se tam zastaví: dejte kroku dřívější čas konce, nebo delší podložku.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::StepSettingsEditor</name>
@@ -6055,10 +6067,6 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Lesson</source>
         <translation>Lekce</translation>
-    </message>
-    <message>
-        <source>Measurement</source>
-        <translation>Měření</translation>
     </message>
 </context>
 <context>

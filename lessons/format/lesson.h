@@ -30,8 +30,8 @@ inline constexpr std::array<std::string_view, 5> kStepPlotNames{"energy", "momen
                                                                 "compare-energy", "compare-drift"};
 inline constexpr std::array<std::string_view, 6> kStepOverlayNames{
     "velocities", "contacts", "boxes", "centres", "trails", "springs"};
-inline constexpr std::array<std::string_view, 5> kStepPanelNames{"controls", "inspector", "sat",
-                                                                 "bounces", "collision"};
+inline constexpr std::array<std::string_view, 6> kStepPanelNames{
+    "controls", "inspector", "sat", "bounces", "collision", "measurement"};
 
 /// The version this loader reads (the value of the top-level key "rigidlab-lesson").
 inline constexpr int kLessonFormatVersion = 1;
@@ -140,7 +140,7 @@ struct LessonStep {
     std::optional<Comparison> compare;
     QStringList plots;    ///< of: energy, momentum, drift, compare-energy, compare-drift
     QStringList overlays; ///< of: velocities, contacts, boxes, centres, trails, springs
-    QStringList panels;   ///< of: controls, inspector, sat, bounces, collision
+    QStringList panels;   ///< of: controls, inspector, sat, bounces, collision, measurement
     /// Controls the student may change (integrator, dt, solver, iterations, restitution,
     /// friction, gravity, timeScale); nullopt: all of them.
     std::optional<QStringList> allow;
