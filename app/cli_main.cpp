@@ -9,6 +9,7 @@
 #include "cli_numerics.h"
 #include "format/atomic_file.h"
 
+#include "format/data_dirs.h"
 #include "format/document.h"
 #include "format/sat_report.h"
 #include "format/scene_loader.h"
@@ -18,6 +19,7 @@
 #include "run/scene_run.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QStringList>
 
 #include <algorithm>
@@ -90,7 +92,7 @@ Commands:
                              the reverse: DIR/FILE.json and its scenes in DIR/scenes/
   lessons                    the shipped lessons: each file's path and title (the data
                              folder: RIGIDLAB_DATA_DIR, else beside the installed program),
-                             then the user's own (~/.local/share/rigidlab/lessons), marked
+                             then the user's own (@USER_LESSONS@), marked
                              "your own" in a third column
   error-vs-time [OPTIONS]    work against precision of every integrator on reference problems
       --problem NAME|all     oscillator, pendulum, kepler, spinning-body, double-pendulum
@@ -163,6 +165,8 @@ QByteArray usage()
     return QString::fromUtf8(kUsage)
         .replace(QStringLiteral("@INTEGRATORS@"), integratorNames())
         .replace(QStringLiteral("@SOLVERS@"), solverNames())
+        .replace(QStringLiteral("@USER_LESSONS@"),
+                 QDir::toNativeSeparators(lessons::userLessonsDir()))
         .toUtf8();
 }
 

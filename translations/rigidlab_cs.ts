@@ -1089,7 +1089,7 @@
     </message>
     <message>
         <source>sets nothing (leave the key out when the student sets nothing)</source>
-        <translation>nic nenastavuje (když student nic nenastavuje, klíč vynechte)</translation>
+        <translation>nic nenastavuje (když žák nic nenastavuje, klíč vynechte)</translation>
     </message>
     <message>
         <source>slow motion does not change what is measured: leave it out</source>
@@ -1097,23 +1097,23 @@
     </message>
     <message>
         <source>this step compares integrators, each world its own: the student cannot choose one</source>
-        <translation>tento krok porovnává integrátory, každý svět má svůj: student žádný vybrat nemůže</translation>
+        <translation>tento krok porovnává integrátory, každý svět má svůj: žák žádný vybrat nemůže</translation>
     </message>
     <message>
         <source>this step compares solvers, each world its own: the student cannot choose one</source>
-        <translation>tento krok porovnává řešiče, každý svět má svůj: student žádný vybrat nemůže</translation>
+        <translation>tento krok porovnává řešiče, každý svět má svůj: žák žádný vybrat nemůže</translation>
     </message>
     <message>
         <source>the student is asked to set %1, but this step locks it (&quot;allow&quot; does not list it)</source>
-        <translation>student má nastavit %1, ale tento krok to zamyká (&quot;allow&quot; to neuvádí)</translation>
+        <translation>žák má nastavit %1, ale tento krok to zamyká (&quot;allow&quot; to neuvádí)</translation>
     </message>
     <message>
         <source>the student is asked to set %1 with the controls, but this step does not show the controls panel</source>
-        <translation>student má ovládáním nastavit %1, ale tento krok panel Ovládání nezobrazuje</translation>
+        <translation>žák má ovládáním nastavit %1, ale tento krok panel Ovládání nezobrazuje</translation>
     </message>
     <message>
         <source>the student is asked to set %1 with the controls, which this question holds back until it is answered</source>
-        <translation>student má ovládáním nastavit %1, ale tato otázka Ovládání zadržuje, dokud není zodpovězena</translation>
+        <translation>žák má ovládáním nastavit %1, ale tato otázka Ovládání zadržuje, dokud není zodpovězena</translation>
     </message>
     <message>
         <source>not with &quot;choice&quot;: a try either chooses an option or gives a number</source>
@@ -3743,7 +3743,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Try as a student</source>
-        <translation>Vyzkoušet jako student</translation>
+        <translation>Vyzkoušet jako žák</translation>
     </message>
     <message>
         <source>Step title (%1)</source>
@@ -3759,7 +3759,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>As the student sees it (%1)</source>
-        <translation>Jak to uvidí student (%1)</translation>
+        <translation>Jak to uvidí žák (%1)</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
@@ -3867,7 +3867,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>What the student reads in this step: **bold**, *italic*, a line that starts with “- ” is a list item</source>
-        <translation>Co student v tomto kroku čte: **tučně**, *kurzívou*, řádek začínající „- “ je položka seznamu</translation>
+        <translation>Co žák v tomto kroku čte: **tučně**, *kurzívou*, řádek začínající „- “ je položka seznamu</translation>
     </message>
     <message>
         <source>The step&apos;s scene does not open: %1</source>
@@ -3875,7 +3875,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>⚠ %1: not written yet; the student reads the %2 text</source>
-        <translation>⚠ %1: zatím nenapsáno; student čte text v jazyce %2</translation>
+        <translation>⚠ %1: zatím nenapsáno; žák čte text v jazyce %2</translation>
     </message>
 </context>
 <context>
@@ -5034,7 +5034,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Predict first: the run waits until it is answered</source>
-        <translation>Nejdřív předpověď: simulace počká, až student odpoví</translation>
+        <translation>Nejdřív předpověď: simulace počká, až žák odpoví</translation>
     </message>
     <message>
         <source>The answer the lab measures</source>
@@ -5102,7 +5102,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>A setting the student changes with the controls before the run this question measures (&quot;Set e = 0 and run again&quot;)</source>
-        <translation>Nastavení, které student změní v Ovládání před během, který tato otázka měří („Nastavte e = 0 a spusťte znovu“)</translation>
+        <translation>Nastavení, které žák změní v Ovládání před během, který tato otázka měří („Nastavte e = 0 a spusťte znovu“)</translation>
     </message>
     <message>
         <source>Stu&amp;dent sets first</source>
@@ -5138,7 +5138,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>What the student reads after a wrong first answer; empty: &quot;Try once more.&quot;</source>
-        <translation>Co student uvidí po první špatné odpovědi; prázdné: „Zkuste to ještě jednou.“</translation>
+        <translation>Co žák uvidí po první špatné odpovědi; prázdné: „Zkuste to ještě jednou.“</translation>
     </message>
     <message>
         <source>⚠ The lesson has a problem to fix first (see below): %1</source>
@@ -5153,7 +5153,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <name>rigidlab::ui::QuestionSetEditor</name>
     <message>
         <source>Setting the student sets first</source>
-        <translation>Nastavení, které student nejdřív změní</translation>
+        <translation>Nastavení, které žák nejdřív změní</translation>
     </message>
     <message>
         <source>nothing (the step&apos;s settings)</source>
@@ -5161,7 +5161,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Value the student sets</source>
-        <translation>Hodnota, kterou student nastaví</translation>
+        <translation>Hodnota, kterou žák nastaví</translation>
     </message>
     <message>
         <source>on</source>

@@ -106,7 +106,7 @@ void TestLessons::validateRecognisesScenes()
 
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("other.json"));
-    writeFile(path, R"({"name": "not ours"})");
+    QVERIFY(writeFile(path, R"({"name": "not ours"})"));
     const lessons::DocumentCheck other = lessons::checkDocumentFile(path);
     QVERIFY(!other.ok);
     QCOMPARE(other.error, path + QStringLiteral(": not a RigidLab document: no format version key "

@@ -162,7 +162,7 @@ private slots:
         QCOMPARE(changed, moving);
     }
 
-    /// Events are told through the live status as value changes, merged and at a calm rate:
+    /// Events are told through the live status, merged and at a calm rate:
     /// a run of many frames gives a handful of updates, not one per frame.
     void eventsAreToldPolitely()
     {

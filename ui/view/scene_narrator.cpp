@@ -120,13 +120,8 @@ void SceneNarrator::flush()
 void SceneNarrator::tell(int child, const QString& value)
 {
     emit told(child, value);
-    if (!QAccessible::isActive())
-        return;
-    QAccessibleInterface* view = QAccessible::queryAccessibleInterface(&m_view);
-    if (QAccessibleInterface* item = view ? view->child(child) : nullptr) {
-        QAccessibleValueChangeEvent event(item, value);
-        QAccessible::updateAccessibility(&event);
-    }
+    if (QAccessible::isActive())
+        tellSceneItemChanged(m_view, child);
 }
 
 void SceneNarrator::tellValues()

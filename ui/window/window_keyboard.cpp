@@ -9,6 +9,7 @@
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
 #include "view/world_view.h"
+#include "window/menu_bar_focus.h"
 #include "window/window_keyboard_sight.h"
 #include "window/window_keyboard_toolbar.h"
 #include "window/window_layout.h"
@@ -38,6 +39,7 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     ShortcutsGuard::install();
     FocusRing::install();
     skipControlsOutOfSight(parts.window);
+    keepMenuBarFocusVisible(parts.window);
     QPalette palette = QApplication::palette();
     palette.setColor(QPalette::PlaceholderText, theme::placeholderText());
     QApplication::setPalette(palette);

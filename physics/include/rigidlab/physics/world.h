@@ -72,7 +72,8 @@ public:
     /// The integrator in use (its error estimate, its substeps).
     const Integrator& integrator() const { return *m_integrator; }
 
-    /// Set when a step diverged (divergence.cpp): step() then does nothing more.
+    /// Set when a step diverged (divergence.cpp), or its bodies crowded past the step's work
+    /// budget (work_budget.h): step() then does nothing more.
     const std::optional<Divergence>& divergence() const { return m_divergence; }
 
     // State.
@@ -139,6 +140,9 @@ private:
     void wakeAll();
     void rememberStartEnergy();
     void checkDivergence();
+    /// Whether this step's broad phase stopped at the work budget (work_budget.h); then the
+    /// world is stopped with that diagnosis (work_budget.cpp).
+    bool stopWhenCrowded();
 
     WorldDef m_def;
     ContactSettings m_contactSettings;
