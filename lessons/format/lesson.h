@@ -5,6 +5,7 @@
 
 #include "format/languages.h"
 #include "format/scene.h"
+#include "format/schema_value.h"
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
 
@@ -17,8 +18,10 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace rigidlab::lessons {
@@ -61,16 +64,39 @@ struct Measure {
     double time = 0;  ///< the others: when the value is read [s]
 };
 
-/// Settings a step sets on top of its scene's.
-struct StepSettings {
-    std::optional<physics::IntegratorKind> integrator;
-    std::optional<double> dt; ///< [s]
-    std::optional<physics::SolverKind> solver;
-    std::optional<int> iterations;
-    std::optional<double> restitution; ///< for every body
-    std::optional<double> friction;    ///< for every body
-    std::optional<bool> gravity;       ///< false: no gravity
-    std::optional<double> timeScale;   ///< the window's slow motion, 0.1 to 4
+/// Settings a step sets on top of its scene's (its "settings", a question's "set"): values by
+/// the key of their row in the run-time settings table (schema::settings(), scene_schema.h),
+/// in the table's value types ("integrator": its name, "gravity": on or off). A key it does not
+/// hold is the scene's.
+class StepSettings {
+public:
+    /// The value given for `key`, or unset.
+    schema::Value value(std::string_view key) const
+    {
+        const auto it = m_values.find(key);
+        return it == m_values.end() ? schema::Value() : it->second;
+    }
+    /// The value for `key` as a T, when it is given (and is one).
+    template <class T> std::optional<T> get(std::string_view key) const
+    {
+        const schema::Value v = value(key);
+        if (const T* t = std::get_if<T>(&v))
+            return *t;
+        return std::nullopt;
+    }
+    bool has(std::string_view key) const { return m_values.find(key) != m_values.end(); }
+    /// Gives `key` the value `v`; unset: the scene's again.
+    void set(std::string_view key, const schema::Value& v)
+    {
+        if (std::holds_alternative<std::monostate>(v))
+            m_values.erase(std::string(key));
+        else
+            m_values.insert_or_assign(std::string(key), v);
+    }
+    bool empty() const { return m_values.empty(); }
+
+private:
+    std::map<std::string, schema::Value, std::less<>> m_values;
 };
 
 /// The fewest and the most options a choice question offers.

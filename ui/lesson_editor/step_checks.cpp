@@ -2,6 +2,7 @@
 #include "lesson_editor/step_checks.h"
 
 #include "format/divergence_message.h"
+#include "format/view_text.h"
 #include "run/measurements.h"
 #include "run/off_stage.h"
 
@@ -70,7 +71,7 @@ std::optional<StepFinding::Spread> spreadOf(const lessons::LessonStep& step, int
     const lessons::Question& q = step.questions[static_cast<std::size_t>(index)];
     // Measured on the run the question asks for; an integrator it asks for is not the
     // student's to choose. A choice question measures nothing.
-    if (q.isChoice() || q.set.integrator)
+    if (q.isChoice() || q.set.has("integrator"))
         return std::nullopt;
     const lessons::LessonStep asked = lessons::askedStep(step, q);
     const std::optional<double> value = lessons::measureAhead(asked, q.measure);
@@ -83,7 +84,7 @@ std::optional<StepFinding::Spread> spreadOf(const lessons::LessonStep& step, int
         if (cancelled.load())
             return std::nullopt;
         lessons::LessonStep variant = asked;
-        variant.settings.integrator = kind;
+        variant.settings.set("integrator", lessons::textFromView(physics::integratorName(kind)));
         if (const std::optional<double> v = lessons::measureAhead(variant, q.measure)) {
             spread.low = std::min(spread.low, *v);
             spread.high = std::max(spread.high, *v);

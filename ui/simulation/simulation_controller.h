@@ -28,6 +28,7 @@
 #include <QTimer>
 
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace rigidlab::ui {
@@ -105,6 +106,12 @@ public:
     const SettingEdits& edits() const { return m_edits.edits(); }
     /// Makes `edit` as its setter would, now (at whatever step the world is).
     void applyEdit(const SettingEdit& edit);
+    /// Changes the run-time setting `key` (a world row of schema::settings()) to `value`, as
+    /// the world row holds it, in every world that follows it (not the compared worlds' own
+    /// integrator or solver). A value the row does not take, or the one in force, changes
+    /// nothing; the world's restitution or friction given again gives the bodies back the
+    /// world's.
+    void setSetting(std::string_view key, const lessons::schema::Value& value);
 
     // Time travel.
     long long earliestStep() const { return m_history.earliest(); }
@@ -201,6 +208,9 @@ private:
     void doStep();
     void pushSample();
     void afterEdit(const QString& mark);
+    /// The words of a setting's change mark on the plots: "dt = 0.002 s", "gravity off".
+    QString settingMark(const lessons::schema::Field& row,
+                        const lessons::schema::Value& value) const;
     /// Logs an edit made now; edits of the future the change drops go.
     void logEdit(const SettingEdit& edit) { m_edits.log(edit, m_world.stepCount()); }
     void resetClock();

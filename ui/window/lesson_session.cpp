@@ -272,8 +272,8 @@ QStringList LessonSession::loadStepWorlds(const lessons::LessonStep& step,
     SimulationController& controller = m_parts.controller;
     controller.loadWorlds(scene, path, std::move(worlds), labels,
                           step.compare ? step.compare->offset : physics::Vec2::Zero());
-    if (step.settings.timeScale)
-        controller.setTimeScale(*step.settings.timeScale);
+    if (const auto scale = step.settings.get<double>("timeScale"))
+        controller.setTimeScale(*scale);
     std::vector<lessons::Measure> measures;
     for (const lessons::Question& q : step.questions)
         if (!q.isChoice()) // a choice question measures nothing

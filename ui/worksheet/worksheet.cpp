@@ -78,8 +78,8 @@ QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& r
                             formatReadable(ran.dt, 6), solver);
     // Every other setting the step (or a question the student answered) set: e = 0 is what
     // "set e = 0 and run again" ran with.
-    for (const lessons::schema::SettingsField& f : lessons::schema::settingsFields()) {
-        const lessons::schema::Value v = f.get(step.settings, 0);
+    for (const lessons::schema::Field& f : lessons::schema::settings()) {
+        const lessons::schema::Value v = step.settings.value(f.key);
         if (f.key == "integrator" || f.key == "dt" || f.key == "solver" || f.key == "timeScale" ||
             std::holds_alternative<std::monostate>(v))
             continue;
