@@ -142,8 +142,8 @@ void TestWorksheetCli::emojiIsNeverLost()
                                      QStringLiteral("UTF-8"), sheet, QStringLiteral("-")});
     QVERIFY2(!text.isEmpty(), "pdftotext read nothing (is poppler-utils installed?)");
     const QString fonts = toolOutput(QStringLiteral("pdffonts"), {sheet});
-    for (const auto& [character, code] : {std::pair{crab, QStringLiteral("1F980")},
-                                          std::pair{grin, QStringLiteral("1F600")}}) {
+    for (const auto& [character, code] :
+         {std::pair{crab, QStringLiteral("1F980")}, std::pair{grin, QStringLiteral("1F600")}}) {
         const QString placeholder = QStringLiteral("[U+%1]").arg(code);
         const QStringList families =
             toolOutput(QStringLiteral("fc-list"),
