@@ -446,7 +446,7 @@ void MeasurementSession::showFitResult()
     const auto t = target();
     QStringList lines;
     for (std::size_t i = 0; i < m_fitted.size(); ++i)
-        lines << tr("%1 = %2%3 (95 %)")
+        lines << tr("%1 = %2%3 (95 %)")
                      .arg(m_fitted[i].name,
                           valueWithUncertainty(m_fit.values[i].value, m_fit.values[i].halfWidth95),
                           parameterUnit(m_fitted[i].kind));
