@@ -7,8 +7,10 @@
 #include "cli_fit.h"
 #include "cli_lesson.h"
 #include "cli_numerics.h"
+#include "cli_results.h"
 #include "format/atomic_file.h"
 
+#include "format/data_dirs.h"
 #include "format/document.h"
 #include "format/sat_report.h"
 #include "format/scene_loader.h"
@@ -18,6 +20,7 @@
 #include "run/scene_run.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QStringList>
 
 #include <algorithm>
@@ -90,8 +93,23 @@ Commands:
                              the reverse: DIR/FILE.json and its scenes in DIR/scenes/
   lessons                    the shipped lessons: each file's path and title (the data
                              folder: RIGIDLAB_DATA_DIR, else beside the installed program),
-                             then the user's own (~/.local/share/rigidlab/lessons), marked
+                             then the user's own (@USER_LESSONS@), marked
                              "your own" in a third column
+  results FOLDER             a class's hand-ins in one table: every answers file of FOLDER
+                             (*.answers.json, as Hand in saves them) judged again; a row
+                             per student (name, class, date), per question the first
+                             answer, its verdict, the tries and whether the hint or Show me
+                             was used, and a last row with the share right at the first
+                             answer. Damaged files and another lesson's are left out, one
+                             line each on standard error
+      --lesson FILE          the lesson to judge by (default: the one most files answer,
+                             found among the shipped lessons and your own)
+      --all-lessons          a table for every lesson the folder answers, instead of
+                             leaving the other lessons' files out
+      -o OUT.csv|OUT.pdf     write the table as CSV or PDF (default: text on stdout)
+      --csv-dialect D        the CSV's dialect (default as for run: the Czech spreadsheet's
+                             with --lang cs)
+      --lang en|cs           the language of the heads, the verdicts and the lesson
   error-vs-time [OPTIONS]    work against precision of every integrator on reference problems
       --problem NAME|all     oscillator, pendulum, kepler, spinning-body, double-pendulum
       --integrators LIST     comma-separated (default: all, Boost.Odeint's odeint-rk4 and
@@ -163,6 +181,8 @@ QByteArray usage()
     return QString::fromUtf8(kUsage)
         .replace(QStringLiteral("@INTEGRATORS@"), integratorNames())
         .replace(QStringLiteral("@SOLVERS@"), solverNames())
+        .replace(QStringLiteral("@USER_LESSONS@"),
+                 QDir::toNativeSeparators(lessons::userLessonsDir()))
         .toUtf8();
 }
 
@@ -404,6 +424,7 @@ constexpr Command kCommands[] = {
     {QLatin1StringView("bench"), &commandBench},
     {QLatin1StringView("lesson"), &cli::commandLesson},
     {QLatin1StringView("lessons"), &cli::commandLessons},
+    {QLatin1StringView("results"), &cli::commandResults},
     {QLatin1StringView("fit"), &cli::commandFit},
 };
 

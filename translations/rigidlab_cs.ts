@@ -24,6 +24,136 @@
     </message>
 </context>
 <context>
+    <name>ClassResults</name>
+    <message>
+        <source>no lesson &quot;%1&quot; among the shipped lessons and your own (name its file)</source>
+        <translation>lekce „%1“ není mezi dodanými ani vašimi vlastními lekcemi (zadejte její soubor)</translation>
+    </message>
+    <message>
+        <source>%1: answers to &quot;%2&quot;, not to &quot;%3&quot;: left out</source>
+        <translation>%1: odpovědi k „%2“, ne k „%3“: vynecháno</translation>
+    </message>
+    <message>
+        <source>%1: %2 (the lesson has changed since?)</source>
+        <translation>%1: %2 (změnila se mezitím lekce?)</translation>
+    </message>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1: taková složka není</translation>
+    </message>
+    <message>
+        <source>%1: the folder cannot be read</source>
+        <translation>%1: složku nelze číst</translation>
+    </message>
+    <message>
+        <source>%1: no answers files (%2) in it</source>
+        <translation>%1: nejsou v ní soubory s odpověďmi (%2)</translation>
+    </message>
+    <message>
+        <source>%1: none of its %2 answers files reads</source>
+        <translation>%1: žádný z jejích %2 souborů s odpověďmi nelze přečíst</translation>
+    </message>
+    <message>
+        <source>%1: its answers name no lesson (name the lesson&apos;s file)</source>
+        <translation>%1: odpovědi neuvádějí lekci (zadejte soubor lekce)</translation>
+    </message>
+    <message>
+        <source>%1: no answers to &quot;%2&quot; in it</source>
+        <translation>%1: nejsou v ní odpovědi k „%2“</translation>
+    </message>
+    <message>
+        <source>✓ right</source>
+        <translation>✓ správně</translation>
+    </message>
+    <message>
+        <source>✗ not right</source>
+        <translation>✗ nesprávně</translation>
+    </message>
+    <message>
+        <source>… not measured yet</source>
+        <translation>… ještě nezměřeno</translation>
+    </message>
+    <message>
+        <source>— not answered</source>
+        <translation>— bez odpovědi</translation>
+    </message>
+    <message>
+        <source>hint, Show me</source>
+        <translation>nápověda, Ukaž mi</translation>
+    </message>
+    <message>
+        <source>hint</source>
+        <translation>nápověda</translation>
+    </message>
+    <message>
+        <source>Show me</source>
+        <translation>Ukaž mi</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Jméno</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Třída</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>%1 first answer</source>
+        <translation>%1 první odpověď</translation>
+    </message>
+    <message>
+        <source>%1 first answer [%2]</source>
+        <translation>%1 první odpověď [%2]</translation>
+    </message>
+    <message>
+        <source>%1 verdict</source>
+        <translation>%1 hodnocení</translation>
+    </message>
+    <message>
+        <source>%1 tries</source>
+        <translation>%1 pokusy</translation>
+    </message>
+    <message>
+        <source>%1 hint or Show me</source>
+        <translation>%1 nápověda nebo Ukaž mi</translation>
+    </message>
+    <message>
+        <source>Right at the first answer [%]</source>
+        <translation>Správně napoprvé [%]</translation>
+    </message>
+    <message>
+        <source>%1 % (%2 of %3)</source>
+        <translation>%1 % (%2 z %3)</translation>
+    </message>
+</context>
+<context>
+    <name>ClassResultsText</name>
+    <message>
+        <source>Students: %1. Each question&apos;s cell: the first answer, its verdict, the tries, hint or Show me used.</source>
+        <translation>Žáků: %1. V buňce každé otázky: první odpověď, její hodnocení, počet pokusů, použitá nápověda nebo Ukaž mi.</translation>
+    </message>
+    <message>
+        <source>Files left out</source>
+        <translation>Vynechané soubory</translation>
+    </message>
+    <message>
+        <source>Class results</source>
+        <translation>Výsledky třídy</translation>
+    </message>
+    <message>
+        <source>Class results: %1</source>
+        <translation>Výsledky třídy: %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: could not start drawing the PDF</source>
+        <translation>nelze zapsat %1: kreslení PDF nešlo začít</translation>
+    </message>
+</context>
+<context>
     <name>CommandLine</name>
     <message>
         <source>RigidLab %1: a lab for 2D rigid-body mechanics.</source>
@@ -1120,7 +1250,7 @@
     </message>
     <message>
         <source>sets nothing (leave the key out when the student sets nothing)</source>
-        <translation>nic nenastavuje (když student nic nenastavuje, klíč vynechte)</translation>
+        <translation>nic nenastavuje (když žák nic nenastavuje, klíč vynechte)</translation>
     </message>
     <message>
         <source>slow motion does not change what is measured: leave it out</source>
@@ -1128,23 +1258,23 @@
     </message>
     <message>
         <source>this step compares integrators, each world its own: the student cannot choose one</source>
-        <translation>tento krok porovnává integrátory, každý svět má svůj: student žádný vybrat nemůže</translation>
+        <translation>tento krok porovnává integrátory, každý svět má svůj: žák žádný vybrat nemůže</translation>
     </message>
     <message>
         <source>this step compares solvers, each world its own: the student cannot choose one</source>
-        <translation>tento krok porovnává řešiče, každý svět má svůj: student žádný vybrat nemůže</translation>
+        <translation>tento krok porovnává řešiče, každý svět má svůj: žák žádný vybrat nemůže</translation>
     </message>
     <message>
         <source>the student is asked to set %1, but this step locks it (&quot;allow&quot; does not list it)</source>
-        <translation>student má nastavit %1, ale tento krok to zamyká (&quot;allow&quot; to neuvádí)</translation>
+        <translation>žák má nastavit %1, ale tento krok to zamyká (&quot;allow&quot; to neuvádí)</translation>
     </message>
     <message>
         <source>the student is asked to set %1 with the controls, but this step does not show the controls panel</source>
-        <translation>student má ovládáním nastavit %1, ale tento krok panel Ovládání nezobrazuje</translation>
+        <translation>žák má ovládáním nastavit %1, ale tento krok panel Ovládání nezobrazuje</translation>
     </message>
     <message>
         <source>the student is asked to set %1 with the controls, which this question holds back until it is answered</source>
-        <translation>student má ovládáním nastavit %1, ale tato otázka Ovládání zadržuje, dokud není zodpovězena</translation>
+        <translation>žák má ovládáním nastavit %1, ale tato otázka Ovládání zadržuje, dokud není zodpovězena</translation>
     </message>
     <message>
         <source>not with &quot;choice&quot;: a try either chooses an option or gives a number</source>
@@ -1930,6 +2060,14 @@ n = (%4; %5)</translation>
         <source>%1 needs %2×%3 px, more than the %4×%5 asked for</source>
         <translation>%1 potřebuje %2×%3 px, víc než požadovaných %4×%5</translation>
     </message>
+    <message>
+        <source>cannot create a temporary folder for the class: %1</source>
+        <translation>nelze vytvořit dočasnou složku pro třídu: %1</translation>
+    </message>
+    <message>
+        <source>File › Class results… on a class of five, with a damaged file and another lesson&apos;s</source>
+        <translation>Soubor › Výsledky třídy… na třídě pěti žáků, s poškozeným souborem a souborem jiné lekce</translation>
+    </message>
 </context>
 <context>
     <name>SpokenNumbers</name>
@@ -2060,10 +2198,6 @@ n = (%4; %5)</translation>
     <message>
         <source>Right answer: “%1”</source>
         <translation>Správná odpověď: „%1“</translation>
-    </message>
-    <message>
-        <source>%1 (instead of %2)</source>
-        <translation>%1 (místo: %2)</translation>
     </message>
     <message>
         <source>on</source>
@@ -2506,6 +2640,125 @@ n = (%4; %5)</translation>
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::ClassResultsDialog</name>
+    <message>
+        <source>Class results</source>
+        <translation>Výsledky třídy</translation>
+    </message>
+    <message>
+        <source>Folder of answers files</source>
+        <translation>Složka se soubory s odpověďmi</translation>
+    </message>
+    <message>
+        <source>the folder the class&apos;s answers files were saved in</source>
+        <translation>složka, do které se uložily soubory s odpověďmi třídy</translation>
+    </message>
+    <message>
+        <source>C&amp;hoose folder…</source>
+        <translation>&amp;Zvolit složku…</translation>
+    </message>
+    <message>
+        <source>Choose the folder of answers files</source>
+        <translation>Zvolit složku se soubory s odpověďmi</translation>
+    </message>
+    <message>
+        <source>&amp;Folder:</source>
+        <translation>&amp;Složka:</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lekce</translation>
+    </message>
+    <message>
+        <source>The lessons the folder holds answers to, the most answered first</source>
+        <translation>Lekce, ke kterým jsou ve složce odpovědi, nejčastější první</translation>
+    </message>
+    <message>
+        <source>&amp;Lesson:</source>
+        <translation>&amp;Lekce:</translation>
+    </message>
+    <message>
+        <source>What was collected</source>
+        <translation>Co se sebralo</translation>
+    </message>
+    <message>
+        <source>Class results table</source>
+        <translation>Tabulka výsledků třídy</translation>
+    </message>
+    <message>
+        <source>A row per student, per question the first answer, its verdict, the tries and hint or Show me used; the last row: the share right at the first answer</source>
+        <translation>Řádek za každého žáka, u každé otázky první odpověď, její hodnocení, počet pokusů a použitá nápověda nebo Ukaž mi; poslední řádek: podíl správně napoprvé</translation>
+    </message>
+    <message>
+        <source>Sort the table by</source>
+        <translation>Řadit tabulku podle</translation>
+    </message>
+    <message>
+        <source>&amp;Descending</source>
+        <translation>S&amp;estupně</translation>
+    </message>
+    <message>
+        <source>Sort descending</source>
+        <translation>Řadit sestupně</translation>
+    </message>
+    <message>
+        <source>&amp;Sort by:</source>
+        <translation>Řadit &amp;podle:</translation>
+    </message>
+    <message>
+        <source>Files left &amp;out:</source>
+        <translation>&amp;Vynechané soubory:</translation>
+    </message>
+    <message>
+        <source>Files left out, one line each</source>
+        <translation>Vynechané soubory, po řádku</translation>
+    </message>
+    <message>
+        <source>Export &amp;CSV…</source>
+        <translation>Exportovat &amp;CSV…</translation>
+    </message>
+    <message>
+        <source>Export the table as CSV</source>
+        <translation>Exportovat tabulku jako CSV</translation>
+    </message>
+    <message>
+        <source>Export &amp;PDF…</source>
+        <translation>Exportovat P&amp;DF…</translation>
+    </message>
+    <message>
+        <source>Export the table as PDF</source>
+        <translation>Exportovat tabulku jako PDF</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavřít</translation>
+    </message>
+    <message>
+        <source>Choose the folder the class&apos;s answers files are in.</source>
+        <translation>Zvolte složku, ve které jsou soubory s odpověďmi třídy.</translation>
+    </message>
+    <message>
+        <source>%1: %2 students, %3 files left out</source>
+        <translation>%1: žáků %2, vynechaných souborů %3</translation>
+    </message>
+    <message>
+        <source>Export class results as CSV</source>
+        <translation>Exportovat výsledky třídy jako CSV</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export se nezdařil</translation>
+    </message>
+    <message>
+        <source>Export class results as PDF</source>
+        <translation>Exportovat výsledky třídy jako PDF</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>Dokument PDF (*.pdf)</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::CollisionPanel</name>
     <message>
         <source>x %1
@@ -2687,6 +2940,18 @@ Soft step: springy contacts solved in small substeps; stiff stacks.</source>
         <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
 Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.
 Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné stohy.</translation>
+    </message>
+    <message>
+        <source>Not used: the paper&apos;s impulse solves each contact once, in one pass</source>
+        <translation>Nepoužívá se: řešič Kontakt po kontaktu řeší každý kontakt jednou, v&#xa0;jediném průchodu</translation>
+    </message>
+    <message numerus="yes">
+        <source>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substeps instead</source>
+        <translation>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší v&#xa0;%n podkroku</numerusform>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší ve&#xa0;%n podkrocích</numerusform>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší v&#xa0;%n podkrocích</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3778,7 +4043,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Try as a student</source>
-        <translation>Vyzkoušet jako student</translation>
+        <translation>Vyzkoušet jako žák</translation>
     </message>
     <message>
         <source>Step title (%1)</source>
@@ -3794,7 +4059,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>As the student sees it (%1)</source>
-        <translation>Jak to uvidí student (%1)</translation>
+        <translation>Jak to uvidí žák (%1)</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
@@ -3902,7 +4167,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>What the student reads in this step: **bold**, *italic*, a line that starts with “- ” is a list item</source>
-        <translation>Co student v tomto kroku čte: **tučně**, *kurzívou*, řádek začínající „- “ je položka seznamu</translation>
+        <translation>Co žák v tomto kroku čte: **tučně**, *kurzívou*, řádek začínající „- “ je položka seznamu</translation>
     </message>
     <message>
         <source>The step&apos;s scene does not open: %1</source>
@@ -3910,7 +4175,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>⚠ %1: not written yet; the student reads the %2 text</source>
-        <translation>⚠ %1: zatím nenapsáno; student čte text v jazyce %2</translation>
+        <translation>⚠ %1: zatím nenapsáno; žák čte text v jazyce %2</translation>
     </message>
 </context>
 <context>
@@ -4161,6 +4426,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Add a folder of lessons</source>
         <translation>Přidat složku s lekcemi</translation>
+    </message>
+    <message>
+        <source>%1 fell off the stage at t = %2 s: the run paused. Play runs on.</source>
+        <translation>Těleso „%1“ spadlo ze scény v&#xa0;čase t = %2 s: simulace se pozastavila. Tlačítko Spustit ji rozběhne dál.</translation>
     </message>
 </context>
 <context>
@@ -4456,6 +4725,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>What was kept does not open: %1</source>
         <translation>Zachovanou lekci nelze otevřít: %1</translation>
+    </message>
+    <message>
+        <source>Class res&amp;ults…</source>
+        <translation>Výsledk&amp;y třídy…</translation>
+    </message>
+    <message>
+        <source>Measurement</source>
+        <translation>Měření</translation>
     </message>
 </context>
 <context>
@@ -4811,8 +5088,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>%1 = %2%3 (95&#xa0;%)</translation>
     </message>
     <message>
-        <source>From the bounce times alone: e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
-        <translation>Jen z&#xa0;časů odrazů: e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
+        <source>From the bounce times alone (%3): e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
+        <translation>Jen z&#xa0;časů odrazů (%3): e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
     </message>
 </context>
 <context>
@@ -5089,7 +5366,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Predict first: the run waits until it is answered</source>
-        <translation>Nejdřív předpověď: simulace počká, až student odpoví</translation>
+        <translation>Nejdřív předpověď: simulace počká, až žák odpoví</translation>
     </message>
     <message>
         <source>The answer the lab measures</source>
@@ -5157,7 +5434,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>A setting the student changes with the controls before the run this question measures (&quot;Set e = 0 and run again&quot;)</source>
-        <translation>Nastavení, které student změní v Ovládání před během, který tato otázka měří („Nastavte e = 0 a spusťte znovu“)</translation>
+        <translation>Nastavení, které žák změní v Ovládání před během, který tato otázka měří („Nastavte e = 0 a spusťte znovu“)</translation>
     </message>
     <message>
         <source>Stu&amp;dent sets first</source>
@@ -5193,7 +5470,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>What the student reads after a wrong first answer; empty: &quot;Try once more.&quot;</source>
-        <translation>Co student uvidí po první špatné odpovědi; prázdné: „Zkuste to ještě jednou.“</translation>
+        <translation>Co žák uvidí po první špatné odpovědi; prázdné: „Zkuste to ještě jednou.“</translation>
     </message>
     <message>
         <source>⚠ The lesson has a problem to fix first (see below): %1</source>
@@ -5208,7 +5485,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <name>rigidlab::ui::QuestionSetEditor</name>
     <message>
         <source>Setting the student sets first</source>
-        <translation>Nastavení, které student nejdřív změní</translation>
+        <translation>Nastavení, které žák nejdřív změní</translation>
     </message>
     <message>
         <source>nothing (the step&apos;s settings)</source>
@@ -5216,7 +5493,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Value the student sets</source>
-        <translation>Hodnota, kterou student nastaví</translation>
+        <translation>Hodnota, kterou žák nastaví</translation>
     </message>
     <message>
         <source>on</source>
@@ -5561,32 +5838,8 @@ B&#xa0;%3 … %4</translation>
         <translation> krok %1 z&#xa0;%2 · t = %3&#xa0;s</translation>
     </message>
     <message>
-        <source>%1 instead of the soft step</source>
-        <translation>%1 místo měkkého kroku</translation>
-    </message>
-    <message>
         <source>Contact solver: %1</source>
         <translation>Řešič kontaktů: %1</translation>
-    </message>
-    <message>
-        <source>The soft step runs only with the symplectic Euler integrator.</source>
-        <translation>Měkký krok běží jen se symplektickou Eulerovou metodou.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle springs yet.</source>
-        <translation>Měkký krok zatím neumí pružiny.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle pin joints yet.</source>
-        <translation>Měkký krok zatím neumí čepy.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle gravitation between bodies yet.</source>
-        <translation>Měkký krok zatím neumí gravitaci mezi tělesy.</translation>
-    </message>
-    <message>
-        <source>%1 The sequential-impulse solver runs instead.</source>
-        <translation>%1 Místo něj běží řešič postupných impulsů.</translation>
     </message>
     <message>
         <source>A frame&apos;s physics takes longer than the frame has: the clock leaves out the time it cannot catch up with, so the run goes slower than real time instead of falling further behind.</source>
@@ -5602,6 +5855,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Question %1: the integrators a student may choose measure from %2 to %3 %4, wider than the answers judged right (%5 to %6 %4): lock the integrator (Shown and locked) or widen the tolerance.</source>
         <translation>Otázka %1: integrátory, které si žák může zvolit, naměří od %2 do %3 %4, víc, než kolik pokrývají odpovědi uznané za správné (%5 až %6 %4): zamkněte integrátor (Zobrazeno a zamčeno), nebo zvětšete toleranci.</translation>
+    </message>
+    <message>
+        <source>%1 falls off the stage at t = %2 s, and the run stops there: give the step an end time before it, or more ground.</source>
+        <translation>Těleso „%1“ spadne ze scény v&#xa0;čase t = %2 s a simulace se tam zastaví: dejte kroku dřívější čas konce, nebo delší podložku.</translation>
     </message>
 </context>
 <context>
@@ -5865,10 +6122,6 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Lesson</source>
         <translation>Lekce</translation>
-    </message>
-    <message>
-        <source>Measurement</source>
-        <translation>Měření</translation>
     </message>
 </context>
 <context>

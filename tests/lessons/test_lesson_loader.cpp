@@ -11,6 +11,7 @@
 #include "format/languages.h"
 #include "format/lesson_catalog.h"
 #include "format/scene_schema.h"
+#include "format/view_text.h"
 
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -24,8 +25,8 @@ void TestLesson::sceneTextsInLessonLanguage()
 {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    writeFile(dir.filePath(QStringLiteral("drop.json")),
-              R"({"rigidlab": 1, "title": {"en": "Drop", "cs": "Pád"}, "bodies": []})");
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("drop.json")),
+                      R"({"rigidlab": 1, "title": {"en": "Drop", "cs": "Pád"}, "bodies": []})"));
     const QByteArray json =
         R"({"rigidlab-lesson": 1, "title": "t", "steps": [
              {"title": "s", "scene": {"rigidlab": 1, "title": {"en": "Inline"},
@@ -223,16 +224,16 @@ void TestLesson::lessonsWithoutOrderComeLast()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
-    writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene);
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene));
     const auto lesson = [](const char* title, const char* more) {
         return QByteArray(R"({"rigidlab-lesson": 1, "title": ")") + title + '"' + more +
                R"(, "steps": [{"title": "s", "scene": "scenes/ok.json"}]})";
     };
-    writeFile(dir.filePath(QStringLiteral("a.json")), lesson("A", ""));
-    writeFile(dir.filePath(QStringLiteral("b.json")), lesson("B", R"(, "order": 7)"));
-    writeFile(dir.filePath(QStringLiteral("c.json")),
-              lesson("C", R"(, "order": 2, "description": "the first", "minutes": 5)"));
-    writeFile(dir.filePath(QStringLiteral("d.json")), lesson("D", R"(, "order": "x")"));
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("a.json")), lesson("A", "")));
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("b.json")), lesson("B", R"(, "order": 7)")));
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("c.json")),
+                      lesson("C", R"(, "order": 2, "description": "the first", "minutes": 5)")));
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("d.json")), lesson("D", R"(, "order": "x")")));
     const std::vector<lessons::LessonEntry> entries = lessons::lessonsInOrder(dir.path());
     QStringList titles;
     for (const lessons::LessonEntry& e : entries)
@@ -257,10 +258,10 @@ void TestLesson::userLessonsListedAfterShipped()
     // A lesson of the user's own, with its scene beside it as in the shipped folder; a place
     // before every shipped one still lists it after them.
     QVERIFY(QDir().mkpath(QDir(own).filePath(QStringLiteral("scenes"))));
-    writeFile(QDir(own).filePath(QStringLiteral("scenes/ok.json")), kScene);
-    writeFile(QDir(own).filePath(QStringLiteral("my_lesson.json")),
-              R"({"rigidlab-lesson": 1, "title": "Mine", "order": 1, "minutes": 10,
-                  "steps": [{"title": "s", "scene": "scenes/ok.json"}]})");
+    QVERIFY(writeFile(QDir(own).filePath(QStringLiteral("scenes/ok.json")), kScene));
+    QVERIFY(writeFile(QDir(own).filePath(QStringLiteral("my_lesson.json")),
+                      R"({"rigidlab-lesson": 1, "title": "Mine", "order": 1, "minutes": 10,
+                  "steps": [{"title": "s", "scene": "scenes/ok.json"}]})"));
     const std::vector<lessons::LessonEntry> all = lessons::allLessonsInOrder();
     QCOMPARE(all.size(), shipped.size() + 1);
     for (std::size_t i = 0; i < shipped.size(); ++i) {
@@ -282,11 +283,11 @@ void TestLesson::rejectsSymbolicLinkOutOfFolder()
     QTemporaryDir outside;
     QTemporaryDir dir;
     QVERIFY(outside.isValid() && dir.isValid());
-    writeFile(outside.filePath(QStringLiteral("secret.json")), kScene);
+    QVERIFY(writeFile(outside.filePath(QStringLiteral("secret.json")), kScene));
     QVERIFY(QFile::link(outside.filePath(QStringLiteral("secret.json")),
                         dir.filePath(QStringLiteral("link.json"))));
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, stepWithScene(R"("link.json")"));
+    QVERIFY(writeFile(path, stepWithScene(R"("link.json")")));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY(!loaded.ok);
     QCOMPARE(loaded.error,
@@ -294,7 +295,7 @@ void TestLesson::rejectsSymbolicLinkOutOfFolder()
                                    "folder (through a symbolic link)"));
 
     // A scene file that is missing says so, with both places.
-    writeFile(path, stepWithScene(R"("scenes/none.json")"));
+    QVERIFY(writeFile(path, stepWithScene(R"("scenes/none.json")")));
     const lessons::LessonLoadResult missing = lessons::loadLessonFile(path);
     QVERIFY(!missing.ok);
     QVERIFY2(missing.error.startsWith(path + QStringLiteral(": steps[0].scene: ")) &&
@@ -307,11 +308,11 @@ void TestLesson::sceneFileErrorsCarryBothPlaces()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
-    writeFile(
+    QVERIFY(writeFile(
         dir.filePath(QStringLiteral("scenes/bad.json")),
-        R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": {"type": "circle", "radius": -1}}]})");
+        R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": {"type": "circle", "radius": -1}}]})"));
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, stepWithScene(R"("scenes/bad.json")"));
+    QVERIFY(writeFile(path, stepWithScene(R"("scenes/bad.json")")));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY(!loaded.ok);
     QCOMPARE(loaded.error, path + QStringLiteral(": steps[0].scene: ") + dir.path() +
@@ -323,11 +324,11 @@ void TestLesson::inlineSceneErrorsContinueThePlace()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(
+    QVERIFY(writeFile(
         path,
         stepWithScene(R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": )"
                       R"({"type": "polygon", "vertices": [[0, 0], [1, 0], [0.2, 0.2], [0, 1]]}}, )"
-                      R"({"id": "c", "color": 1}]})"));
+                      R"({"id": "c", "color": 1}]})")));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY(!loaded.ok);
     QVERIFY2(loaded.error.startsWith(path + QStringLiteral(": steps[0].scene.bodies[1].color: "
@@ -365,7 +366,7 @@ void TestLesson::everyField()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, everyFieldLesson());
+    QVERIFY(writeFile(path, everyFieldLesson()));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     const lessons::Lesson& l = loaded.lesson;
@@ -379,14 +380,15 @@ void TestLesson::everyField()
     QCOMPARE(s.text, QStringLiteral("a\n\nb"));
     QVERIFY(s.scenePath.isEmpty());
     QCOMPARE(s.scene.bodies.size(), std::size_t{4});
-    QVERIFY(!s.settings.integrator);
-    QCOMPARE(*s.settings.dt, 0.002);
-    QCOMPARE(*s.settings.solver, physics::SolverKind::PaperImpulse);
-    QCOMPARE(*s.settings.iterations, 7);
-    QCOMPARE(*s.settings.restitution, 0.25);
-    QCOMPARE(*s.settings.friction, 0.5);
-    QCOMPARE(*s.settings.gravity, false);
-    QCOMPARE(*s.settings.timeScale, 0.5);
+    QVERIFY(!s.settings.has("integrator"));
+    QCOMPARE(*s.settings.get<double>("dt"), 0.002);
+    QCOMPARE(physics::solverFromName(s.settings.get<QString>("solver")->toStdString()),
+             physics::SolverKind::PaperImpulse);
+    QCOMPARE(*s.settings.get<int>("iterations"), 7);
+    QCOMPARE(*s.settings.get<double>("restitution"), 0.25);
+    QCOMPARE(*s.settings.get<double>("friction"), 0.5);
+    QCOMPARE(*s.settings.get<bool>("gravity"), false);
+    QCOMPARE(*s.settings.get<double>("timeScale"), 0.5);
     QVERIFY(s.compare);
     QCOMPARE(s.compare->count(), 2);
     QCOMPARE(s.compare->label(0), QStringLiteral("rk4"));
@@ -427,7 +429,7 @@ void TestLesson::everyField()
     QCOMPARE(s.autoplay, false);
 
     // Defaults.
-    writeFile(path, oneStep(""));
+    QVERIFY(writeFile(path, oneStep("")));
     const lessons::LessonLoadResult bare = lessons::loadLessonFile(path);
     QVERIFY2(bare.ok, qPrintable(bare.error));
     const lessons::LessonStep& d = bare.lesson.steps[0];
@@ -474,7 +476,7 @@ void TestLesson::formatDocumentExampleLoads()
         QVERIFY(QFile::copy(QDir(kScenesDir).filePath(QLatin1StringView(scene)),
                             dir.filePath(QStringLiteral("scenes/") + scene)));
     const QString path = dir.filePath(QStringLiteral("lessons/example.json"));
-    writeFile(path, match.captured(1).toUtf8());
+    QVERIFY(writeFile(path, match.captured(1).toUtf8()));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     QCOMPARE(loaded.lesson.steps.size(), std::size_t{3});
@@ -525,13 +527,15 @@ void TestLesson::buildStepWorldsMakesOneWorldPerVariant()
 void TestLesson::applySettingsOverridesScene()
 {
     lessons::StepSettings settings;
-    settings.integrator = physics::IntegratorKind::RK4;
-    settings.dt = 0.004;
-    settings.solver = physics::SolverKind::PaperImpulse;
-    settings.iterations = 3;
-    settings.restitution = 0.3;
-    settings.friction = 0.7;
-    settings.gravity = false;
+    settings.set("integrator",
+                 lessons::textFromView(physics::integratorName(physics::IntegratorKind::RK4)));
+    settings.set("dt", 0.004);
+    settings.set("solver",
+                 lessons::textFromView(physics::solverName(physics::SolverKind::PaperImpulse)));
+    settings.set("iterations", 3);
+    settings.set("restitution", 0.3);
+    settings.set("friction", 0.7);
+    settings.set("gravity", false);
     const lessons::Lesson lesson = shippedLesson("restitution");
     physics::World world = lessons::buildWorld(lesson.steps[0].scene);
     lessons::applySettings(settings, world);
@@ -547,7 +551,7 @@ void TestLesson::applySettingsOverridesScene()
     // Gravity on for a weightless scene gives it the Earth's.
     physics::World space = lessons::buildWorld(lesson.steps[1].scene);
     lessons::StepSettings on;
-    on.gravity = true;
+    on.set("gravity", true);
     lessons::applySettings(on, space);
     QCOMPARE(space.def().gravity, physics::Vec2(0, -9.81));
 }

@@ -28,7 +28,7 @@ void TestLesson::questionSetAsksForItsOwnRun()
             .arg(QString::fromUtf8(speed));
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, oneStep(qPrintable(questions)));
+    QVERIFY(writeFile(path, oneStep(qPrintable(questions))));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     const QString q = path + QStringLiteral(": steps[0].questions[");
@@ -44,14 +44,14 @@ void TestLesson::questionSetAsksForItsOwnRun()
     QVERIFY(!lessons::asksSettings(step.questions[3]));
     // The asked run: the question's settings on top of the step's, the rest the step's.
     const lessons::LessonStep asked = lessons::askedStep(step, step.questions[1]);
-    QCOMPARE(*asked.settings.restitution, 1.0);
-    QCOMPARE(*asked.settings.friction, 0.1);
-    QCOMPARE(*asked.settings.dt, 0.002);
-    QCOMPARE(*lessons::askedStep(step, step.questions[3]).settings.restitution, 0.5);
+    QCOMPARE(*asked.settings.get<double>("restitution"), 1.0);
+    QCOMPARE(*asked.settings.get<double>("friction"), 0.1);
+    QCOMPARE(*asked.settings.get<double>("dt"), 0.002);
+    QCOMPARE(*lessons::askedStep(step, step.questions[3]).settings.get<double>("restitution"), 0.5);
 
     // Without the controls panel the student cannot set anything.
-    writeFile(path, oneStep(R"("questions": [{"prompt": "a", "measure": {"kind": "speed", )"
-                            R"("body": "ball", "time": 1}, "set": {"gravity": false}}])"));
+    QVERIFY(writeFile(path, oneStep(R"("questions": [{"prompt": "a", "measure": {"kind": "speed", )"
+                                    R"("body": "ball", "time": 1}, "set": {"gravity": false}}])")));
     const lessons::LessonLoadResult noPanel = lessons::loadLessonFile(path);
     QVERIFY2(noPanel.ok, qPrintable(noPanel.error));
     QCOMPARE(noPanel.warnings,

@@ -123,7 +123,7 @@ void TestLesson::rejectsBadLesson_data()
     QTest::newRow("unknown-panel")
         << oneStep(R"("panels": ["table"])")
         << steps0 + R"(panels[0]: unknown panel "table" (expected controls, inspector, sat, )"
-                    "bounces, collision)";
+                    "bounces, collision, measurement)";
     QTest::newRow("unknown-control")
         << oneStep(R"("allow": ["mass"])")
         << steps0 + R"(allow[0]: unknown control "mass" (expected integrator, dt, solver, )"
@@ -250,9 +250,9 @@ void TestLesson::rejectsBadLesson()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
-    writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene);
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene));
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, json);
+    QVERIFY(writeFile(path, json));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY(!loaded.ok);
     QCOMPARE(loaded.error, path + QStringLiteral(": ") + message);

@@ -1,40 +1,28 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `rigidlab-cli fit` as a user meets it: run as a process, judged by its exit status and what
 // it prints.
+#include "cli_run.h"
 #include "test_main.h"
 #include "test_measure.h"
 
 #include <QDir>
-#include <QProcess>
 #include <QRegularExpression>
 #include <QTest>
 
 namespace {
 
-const QString kCli = QStringLiteral(RIGIDLAB_CLI);
-
-struct CliRun {
+/// rigidlab-cli's exit status and what it printed, as text.
+struct CliText {
     int exitCode = -1;
     bool crashed = true;
     QString out;
     QString err;
 };
 
-CliRun runCli(const QStringList& arguments)
+CliText runCli(const QStringList& arguments)
 {
-    QProcess process;
-    process.start(kCli, arguments);
-    CliRun run;
-    if (!process.waitForFinished(120'000)) {
-        process.kill();
-        process.waitForFinished();
-        return run;
-    }
-    run.crashed = process.exitStatus() != QProcess::NormalExit;
-    run.exitCode = process.exitCode();
-    run.out = QString::fromUtf8(process.readAllStandardOutput());
-    run.err = QString::fromUtf8(process.readAllStandardError());
-    return run;
+    const rigidlab::test::CliRun run = rigidlab::test::runCli(arguments);
+    return {run.exitCode, run.crashed, QString::fromUtf8(run.out), QString::fromUtf8(run.err)};
 }
 
 QString sample(const char* name)
@@ -46,7 +34,7 @@ QString sample(const char* name)
 
 void TestMeasure::cliHelp()
 {
-    const CliRun run = runCli({QStringLiteral("--help")});
+    const CliText run = runCli({QStringLiteral("--help")});
     QCOMPARE(run.exitCode, 0);
     QVERIFY(run.out.contains(QStringLiteral("fit SCENE.json MEASUREMENT.csv")));
     QVERIFY(run.out.contains(QStringLiteral("--bounce-times")));
@@ -89,7 +77,7 @@ void TestMeasure::cliFitsSamples()
     QFETCH(QStringList, arguments);
     QFETCH(QString, name);
     QFETCH(double, truth);
-    const CliRun run = runCli(QStringList{QStringLiteral("fit")} + arguments);
+    const CliText run = runCli(QStringList{QStringLiteral("fit")} + arguments);
     QVERIFY2(!run.crashed && run.exitCode == 0, qPrintable(run.err));
     const QRegularExpression line(QRegularExpression::escape(name) +
                                   QStringLiteral(" = (\\S+) ± (\\S+) \\(95 %\\), standard "
@@ -181,7 +169,7 @@ void TestMeasure::cliRefuses()
 {
     QFETCH(QStringList, arguments);
     QFETCH(QString, message);
-    const CliRun run = runCli(QStringList{QStringLiteral("fit")} + arguments);
+    const CliText run = runCli(QStringList{QStringLiteral("fit")} + arguments);
     QVERIFY(!run.crashed);
     QCOMPARE(run.exitCode, 2);
     QVERIFY(run.out.isEmpty());
