@@ -584,6 +584,33 @@
         <source>The simulation %1. It stopped here rather than draw garbage.</source>
         <translation>Simulace %1. Zastavila se tady, aby nekreslila nesmysly.</translation>
     </message>
+    <message>
+        <source>pairs of bodies</source>
+        <translation>dvojice těles</translation>
+    </message>
+    <message>
+        <source>more than %1 pairs of bodies overlap or nearly touch (around body &quot;%2&quot;): so crowded a scene needs memory and time growing with the square of the bodies; spread them out</source>
+        <translation>víc než %1 dvojic těles se překrývá nebo téměř dotýká (kolem tělesa „%2“): tak nahuštěná scéna potřebuje paměť a čas rostoucí se čtvercem počtu těles; rozmístěte je</translation>
+    </message>
+    <message>
+        <source>stopped at t = %1 s, before step %2: %3</source>
+        <translation>zastavila se v&#xa0;čase t = %1&#xa0;s, před krokem %2: %3</translation>
+    </message>
+    <message>
+        <source>The simulation %1. It stopped here rather than freeze the computer.</source>
+        <translation>Simulace %1. Zastavila se tady, aby nezamrzl počítač.</translation>
+    </message>
+    <message>
+        <source>too crowded to run</source>
+        <translation>příliš nahuštěná</translation>
+    </message>
+</context>
+<context>
+    <name>DrawableWords</name>
+    <message>
+        <source>[U+%1]</source>
+        <translation>[U+%1]</translation>
+    </message>
 </context>
 <context>
     <name>DriftWords</name>
@@ -669,6 +696,10 @@
     <message>
         <source>there is no %1</source>
         <translation>%1 neexistuje</translation>
+    </message>
+    <message>
+        <source>the scene</source>
+        <translation>scéna</translation>
     </message>
 </context>
 <context>
@@ -2423,6 +2454,10 @@ n = (%4; %5)</translation>
     <message>
         <source>the time column holds the time of every frame, not bounce times (name the column of bounce times &quot;bounce&quot;, or fit the positions with --quantity)</source>
         <translation>sloupec času obsahuje čas každého snímku, ne časy odrazů (pojmenujte sloupec časů odrazů „bounce“, nebo určujte z poloh s --quantity)</translation>
+    </message>
+    <message>
+        <source>the fit was cancelled</source>
+        <translation>určování z&#xa0;měření bylo zrušeno</translation>
     </message>
 </context>
 <context>
@@ -4968,6 +5003,26 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>No measurement yet: File › Import measurement… (%1), or drop a CSV file on the window.</source>
         <translation>Zatím žádné měření: Soubor › Importovat měření… (%1), nebo přetáhněte soubor CSV do okna.</translation>
+    </message>
+    <message>
+        <source>Cancel fit</source>
+        <translation>Zrušit určování</translation>
+    </message>
+    <message>
+        <source>Cancel the fit that is running</source>
+        <translation>Zrušit probíhající určování z&#xa0;měření</translation>
+    </message>
+    <message>
+        <source>Fit running</source>
+        <translation>Určování z&#xa0;měření probíhá</translation>
+    </message>
+    <message numerus="yes">
+        <source>Fitting… %n run(s) of the model so far</source>
+        <translation>
+            <numerusform>Určuji… zatím %n běh modelu</numerusform>
+            <numerusform>Určuji… zatím %n běhy modelu</numerusform>
+            <numerusform>Určuji… zatím %n běhů modelu</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -97,6 +97,16 @@
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::MeasurementPanel</name>
+    <message numerus="yes">
+        <source>Fitting… %n run(s) of the model so far</source>
+        <translation>
+            <numerusform>Fitting… %n run of the model so far</numerusform>
+            <numerusform>Fitting… %n runs of the model so far</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::MeasurementSession</name>
     <message numerus="yes">
         <source>%1: %n point(s) of %2</source>

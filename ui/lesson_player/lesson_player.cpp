@@ -4,6 +4,7 @@
 #include "lesson_player/step_text.h"
 
 #include "common/announcer.h"
+#include "common/drawable_text.h"
 #include "common/modal_scope.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
@@ -411,7 +412,8 @@ void LessonPlayer::showStep()
     }
     const lessons::Lesson& l = *m_lesson;
     const lessons::LessonStep& s = l.steps[static_cast<size_t>(m_step)];
-    m_title->setText(l.title);
+    // A character no font has (an emoji) shows as its placeholder, not as an empty box.
+    m_title->setText(drawableText(l.title, m_title->font()));
     QString about = l.summary;
     if (!l.level.isEmpty() || l.minutes > 0)
         about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l.level).arg(l.minutes);
@@ -422,8 +424,8 @@ void LessonPlayer::showStep()
     m_progress->setRange(0, static_cast<int>(l.steps.size()));
     m_progress->setValue(m_step + 1);
     m_stepCount->setText(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
-    m_stepTitle->setText(s.title);
-    m_text->showMarkdown(lessons::keepUnitsTogether(s.text));
+    m_stepTitle->setText(drawableText(s.title, m_stepTitle->font()));
+    m_text->showMarkdown(drawableText(lessons::keepUnitsTogether(s.text), m_text->font()));
     m_back->setEnabled(m_step > 0);
     m_next->setEnabled(m_step + 1 < static_cast<int>(l.steps.size()));
     m_export->setEnabled(!s.plots.isEmpty());

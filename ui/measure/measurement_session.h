@@ -16,6 +16,7 @@
 // imports in one step and fits in the next).
 
 #include "measure/fit.h"
+#include "measure/fit_worker.h"
 #include "measure/measurement.h"
 
 #include <QObject>
@@ -28,6 +29,7 @@
 
 class QAction;
 class QDockWidget;
+class QTimer;
 class QWidget;
 
 namespace rigidlab::ui {
@@ -76,8 +78,14 @@ public:
     /// The target compared: the panel's body and quantity, or nullopt.
     std::optional<measure::Target> target() const;
 
-    /// Fits the parameters ticked in the panel; the result stays for apply().
+    /// Fits the parameters ticked in the panel, here and now (the screenshots); the result
+    /// stays for apply().
     const measure::FitResult& fit();
+    /// The same fit in a thread of its own (the panel's Fit button): the panel shows it
+    /// running with a Cancel button; fitFinished() when it ends, lastFit() then holds it.
+    void startFit();
+    void cancelFit();
+    bool fitRunning() const;
     const measure::FitResult& lastFit() const { return m_fit; }
     const std::vector<measure::Parameter>& fittedParameters() const { return m_fitted; }
     /// Puts the fitted values into the scene, one undoable edit; returns the refusal or empty.
@@ -101,6 +109,8 @@ signals:
     void imported(const QString& path);
     /// Why an import failed, for the status bar.
     void message(const QString& text, int timeoutMs);
+    /// A fit started by startFit() ended (cancelled too): lastFit() holds it.
+    void fitFinished();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -115,6 +125,10 @@ private:
     void sceneReset();
     QString applyValues(const std::vector<measure::Parameter>& parameters,
                         const std::vector<double>& values, const QString& what);
+    /// What the panel asks to fit, into m_fitted; nothing (m_fit says why) when it cannot be.
+    std::optional<FitWorker::Job> fitJob();
+    /// m_fit in the panel.
+    void showFitResult();
     /// m_measurement from the files imported, each quantity from the last file that has it.
     void merge();
     /// The files imported, one line each with what is taken from it.
@@ -142,6 +156,8 @@ private:
     std::optional<measure::Measurement> m_measurement;
     std::vector<double> m_simulated;
     std::vector<double> m_residuals;
+    FitWorker* m_fitWorker = nullptr;
+    QTimer* m_fitTimer = nullptr; ///< while a fit runs: its runs so far into the panel
     measure::FitResult m_fit;
     std::vector<measure::Parameter> m_fitted;
     measure::BounceFit m_bounceFit;
