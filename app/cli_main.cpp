@@ -10,6 +10,7 @@
 #include "cli_results.h"
 #include "format/atomic_file.h"
 
+#include "format/data_dirs.h"
 #include "format/document.h"
 #include "format/sat_report.h"
 #include "format/scene_loader.h"
@@ -19,6 +20,7 @@
 #include "run/scene_run.h"
 
 #include <QCoreApplication>
+#include <QDir>
 #include <QStringList>
 
 #include <algorithm>
@@ -91,7 +93,7 @@ Commands:
                              the reverse: DIR/FILE.json and its scenes in DIR/scenes/
   lessons                    the shipped lessons: each file's path and title (the data
                              folder: RIGIDLAB_DATA_DIR, else beside the installed program),
-                             then the user's own (~/.local/share/rigidlab/lessons), marked
+                             then the user's own (@USER_LESSONS@), marked
                              "your own" in a third column
   results FOLDER             a class's hand-ins in one table: every answers file of FOLDER
                              (*.answers.json, as Hand in saves them) judged again; a row
@@ -179,6 +181,8 @@ QByteArray usage()
     return QString::fromUtf8(kUsage)
         .replace(QStringLiteral("@INTEGRATORS@"), integratorNames())
         .replace(QStringLiteral("@SOLVERS@"), solverNames())
+        .replace(QStringLiteral("@USER_LESSONS@"),
+                 QDir::toNativeSeparators(lessons::userLessonsDir()))
         .toUtf8();
 }
 

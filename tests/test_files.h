@@ -12,6 +12,13 @@
 
 namespace rigidlab::test {
 
+/// The file's bytes, or nothing when it cannot be read.
+inline QByteArray readAll(const QString& path)
+{
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
 /// Writes `contents` to `path` (made or truncated); false if the file could not be written.
 inline bool writeFile(const QString& path, const QByteArray& contents)
 {

@@ -1219,7 +1219,7 @@
     </message>
     <message>
         <source>sets nothing (leave the key out when the student sets nothing)</source>
-        <translation>nic nenastavuje (když student nic nenastavuje, klíč vynechte)</translation>
+        <translation>nic nenastavuje (když žák nic nenastavuje, klíč vynechte)</translation>
     </message>
     <message>
         <source>slow motion does not change what is measured: leave it out</source>
@@ -1227,23 +1227,23 @@
     </message>
     <message>
         <source>this step compares integrators, each world its own: the student cannot choose one</source>
-        <translation>tento krok porovnává integrátory, každý svět má svůj: student žádný vybrat nemůže</translation>
+        <translation>tento krok porovnává integrátory, každý svět má svůj: žák žádný vybrat nemůže</translation>
     </message>
     <message>
         <source>this step compares solvers, each world its own: the student cannot choose one</source>
-        <translation>tento krok porovnává řešiče, každý svět má svůj: student žádný vybrat nemůže</translation>
+        <translation>tento krok porovnává řešiče, každý svět má svůj: žák žádný vybrat nemůže</translation>
     </message>
     <message>
         <source>the student is asked to set %1, but this step locks it (&quot;allow&quot; does not list it)</source>
-        <translation>student má nastavit %1, ale tento krok to zamyká (&quot;allow&quot; to neuvádí)</translation>
+        <translation>žák má nastavit %1, ale tento krok to zamyká (&quot;allow&quot; to neuvádí)</translation>
     </message>
     <message>
         <source>the student is asked to set %1 with the controls, but this step does not show the controls panel</source>
-        <translation>student má ovládáním nastavit %1, ale tento krok panel Ovládání nezobrazuje</translation>
+        <translation>žák má ovládáním nastavit %1, ale tento krok panel Ovládání nezobrazuje</translation>
     </message>
     <message>
         <source>the student is asked to set %1 with the controls, which this question holds back until it is answered</source>
-        <translation>student má ovládáním nastavit %1, ale tato otázka Ovládání zadržuje, dokud není zodpovězena</translation>
+        <translation>žák má ovládáním nastavit %1, ale tato otázka Ovládání zadržuje, dokud není zodpovězena</translation>
     </message>
     <message>
         <source>not with &quot;choice&quot;: a try either chooses an option or gives a number</source>
@@ -2169,10 +2169,6 @@ n = (%4; %5)</translation>
         <translation>Správná odpověď: „%1“</translation>
     </message>
     <message>
-        <source>%1 (instead of %2)</source>
-        <translation>%1 (místo: %2)</translation>
-    </message>
-    <message>
         <source>on</source>
         <translation>zapnuto</translation>
     </message>
@@ -2909,6 +2905,18 @@ Soft step: springy contacts solved in small substeps; stiff stacks.</source>
         <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
 Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.
 Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné stohy.</translation>
+    </message>
+    <message>
+        <source>Not used: the paper&apos;s impulse solves each contact once, in one pass</source>
+        <translation>Nepoužívá se: řešič Kontakt po kontaktu řeší každý kontakt jednou, v&#xa0;jediném průchodu</translation>
+    </message>
+    <message numerus="yes">
+        <source>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substeps instead</source>
+        <translation>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší v&#xa0;%n podkroku</numerusform>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší ve&#xa0;%n podkrocích</numerusform>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší v&#xa0;%n podkrocích</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4000,7 +4008,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Try as a student</source>
-        <translation>Vyzkoušet jako student</translation>
+        <translation>Vyzkoušet jako žák</translation>
     </message>
     <message>
         <source>Step title (%1)</source>
@@ -4016,7 +4024,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>As the student sees it (%1)</source>
-        <translation>Jak to uvidí student (%1)</translation>
+        <translation>Jak to uvidí žák (%1)</translation>
     </message>
     <message>
         <source>&amp;Undo</source>
@@ -4124,7 +4132,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>What the student reads in this step: **bold**, *italic*, a line that starts with “- ” is a list item</source>
-        <translation>Co student v tomto kroku čte: **tučně**, *kurzívou*, řádek začínající „- “ je položka seznamu</translation>
+        <translation>Co žák v tomto kroku čte: **tučně**, *kurzívou*, řádek začínající „- “ je položka seznamu</translation>
     </message>
     <message>
         <source>The step&apos;s scene does not open: %1</source>
@@ -4132,7 +4140,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>⚠ %1: not written yet; the student reads the %2 text</source>
-        <translation>⚠ %1: zatím nenapsáno; student čte text v jazyce %2</translation>
+        <translation>⚠ %1: zatím nenapsáno; žák čte text v jazyce %2</translation>
     </message>
 </context>
 <context>
@@ -5295,7 +5303,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Predict first: the run waits until it is answered</source>
-        <translation>Nejdřív předpověď: simulace počká, až student odpoví</translation>
+        <translation>Nejdřív předpověď: simulace počká, až žák odpoví</translation>
     </message>
     <message>
         <source>The answer the lab measures</source>
@@ -5363,7 +5371,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>A setting the student changes with the controls before the run this question measures (&quot;Set e = 0 and run again&quot;)</source>
-        <translation>Nastavení, které student změní v Ovládání před během, který tato otázka měří („Nastavte e = 0 a spusťte znovu“)</translation>
+        <translation>Nastavení, které žák změní v Ovládání před během, který tato otázka měří („Nastavte e = 0 a spusťte znovu“)</translation>
     </message>
     <message>
         <source>Stu&amp;dent sets first</source>
@@ -5399,7 +5407,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>What the student reads after a wrong first answer; empty: &quot;Try once more.&quot;</source>
-        <translation>Co student uvidí po první špatné odpovědi; prázdné: „Zkuste to ještě jednou.“</translation>
+        <translation>Co žák uvidí po první špatné odpovědi; prázdné: „Zkuste to ještě jednou.“</translation>
     </message>
     <message>
         <source>⚠ The lesson has a problem to fix first (see below): %1</source>
@@ -5414,7 +5422,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <name>rigidlab::ui::QuestionSetEditor</name>
     <message>
         <source>Setting the student sets first</source>
-        <translation>Nastavení, které student nejdřív změní</translation>
+        <translation>Nastavení, které žák nejdřív změní</translation>
     </message>
     <message>
         <source>nothing (the step&apos;s settings)</source>
@@ -5422,7 +5430,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Value the student sets</source>
-        <translation>Hodnota, kterou student nastaví</translation>
+        <translation>Hodnota, kterou žák nastaví</translation>
     </message>
     <message>
         <source>on</source>
@@ -5767,32 +5775,8 @@ B&#xa0;%3 … %4</translation>
         <translation> krok %1 z&#xa0;%2 · t = %3&#xa0;s</translation>
     </message>
     <message>
-        <source>%1 instead of the soft step</source>
-        <translation>%1 místo měkkého kroku</translation>
-    </message>
-    <message>
         <source>Contact solver: %1</source>
         <translation>Řešič kontaktů: %1</translation>
-    </message>
-    <message>
-        <source>The soft step runs only with the symplectic Euler integrator.</source>
-        <translation>Měkký krok běží jen se symplektickou Eulerovou metodou.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle springs yet.</source>
-        <translation>Měkký krok zatím neumí pružiny.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle pin joints yet.</source>
-        <translation>Měkký krok zatím neumí čepy.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle gravitation between bodies yet.</source>
-        <translation>Měkký krok zatím neumí gravitaci mezi tělesy.</translation>
-    </message>
-    <message>
-        <source>%1 The sequential-impulse solver runs instead.</source>
-        <translation>%1 Místo něj běží řešič postupných impulsů.</translation>
     </message>
     <message>
         <source>A frame&apos;s physics takes longer than the frame has: the clock leaves out the time it cannot catch up with, so the run goes slower than real time instead of falling further behind.</source>

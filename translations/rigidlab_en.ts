@@ -43,6 +43,16 @@
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::ControlPanel</name>
+    <message numerus="yes">
+        <source>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substeps instead</source>
+        <translation>
+            <numerusform>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substep instead</numerusform>
+            <numerusform>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substeps instead</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::EditTools</name>
     <message numerus="yes">
         <source>%n point(s); double-click or Enter closes the polygon, Escape drops it</source>

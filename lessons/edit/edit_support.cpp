@@ -2,7 +2,10 @@
 #include "edit/edit_support.h"
 
 #include "format/json_reader.h"
+#include "format/scene_overlaps.h"
 #include "format/scene_rules.h"
+
+#include <QStringList>
 
 namespace rigidlab::lessons::edit::support {
 
@@ -19,6 +22,13 @@ EditResult refused(const QString& error)
 
 EditResult accepted(Scene scene, BodyId body, const QString& warning)
 {
+    // Every edit meets the loader's bound on crowding (format/scene_overlaps.h): a body
+    // duplicated again and again onto one place is refused before the scene could freeze the
+    // window, whichever edit made it so.
+    QStringList overlaps; // the editor lists them itself (overlapMessage)
+    if (const QString crowded = checkCrowding(scene, EditMessages::tr("the scene"), overlaps);
+        !crowded.isEmpty())
+        return refused(crowded);
     EditResult r;
     r.ok = true;
     r.scene = std::move(scene);

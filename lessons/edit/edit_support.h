@@ -9,6 +9,8 @@
 namespace rigidlab::lessons::edit::support {
 
 EditResult refused(const QString& error);
+/// The edited scene, or the refusal when its bodies crowd past the engine's work budget
+/// (checkCrowding).
 EditResult accepted(Scene scene, physics::BodyId body = physics::kWorld,
                     const QString& warning = {});
 /// `source: place: must be from MIN to MAX UNIT, got V`, the loader's words, or empty.

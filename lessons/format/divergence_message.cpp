@@ -29,6 +29,8 @@ QString quantityName(physics::Divergence::Quantity quantity)
         return DivergenceWords::tr("angular velocity");
     case Q::TotalEnergy:
         return DivergenceWords::tr("total energy");
+    case Q::BodyPairs:
+        return DivergenceWords::tr("pairs of bodies");
     }
     return QString();
 }
@@ -37,6 +39,11 @@ QString divergenceReason(const physics::Divergence& d, const QString& bodyLabel,
                          const QLocale& numbers)
 {
     const QString body = bodyLabel.isEmpty() ? QString::fromStdString(d.bodyName) : bodyLabel;
+    if (d.kind == physics::Divergence::Kind::Crowded)
+        return DivergenceWords::tr("more than %1 pairs of bodies overlap or nearly touch "
+                                   "(around body \"%2\"): so crowded a scene needs memory and "
+                                   "time growing with the square of the bodies; spread them out")
+            .arg(numbers.toString(qlonglong(d.bound)), body);
     const bool energy = d.quantity == physics::Divergence::Quantity::TotalEnergy;
     if (d.kind == physics::Divergence::Kind::NonFinite && !energy)
         return DivergenceWords::tr("body \"%1\": %2 is no longer finite")
@@ -54,6 +61,10 @@ QString divergenceReason(const physics::Divergence& d, const QString& bodyLabel,
 QString divergenceMessage(const physics::Divergence& d, const QString& bodyLabel,
                           const QLocale& numbers)
 {
+    if (d.kind == physics::Divergence::Kind::Crowded)
+        return DivergenceWords::tr("stopped at t = %1 s, before step %2: %3")
+            .arg(number(numbers, d.time), numbers.toString(qlonglong(d.step + 1)),
+                 divergenceReason(d, bodyLabel, numbers));
     return DivergenceWords::tr("diverged at t = %1 s (step %2, dt = %3 s, %4): %5")
         .arg(number(numbers, d.time), numbers.toString(qlonglong(d.step)), number(numbers, d.dt),
              textFromView(physics::integratorName(d.integrator)),

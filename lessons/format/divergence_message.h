@@ -27,7 +27,8 @@ QString quantityName(physics::Divergence::Quantity quantity);
 QString divergenceReason(const physics::Divergence& d, const QString& bodyLabel = {},
                          const QLocale& numbers = QLocale::c());
 
-/// One line: `diverged at t = 0.125 s (step 125, dt = 0.001 s, euler): ` and the reason.
+/// One line: `diverged at t = 0.125 s (step 125, dt = 0.001 s, euler): ` and the reason; for
+/// a world crowded past its work budget, `stopped at t = 0 s, before step 1: `.
 QString divergenceMessage(const physics::Divergence& d, const QString& bodyLabel = {},
                           const QLocale& numbers = QLocale::c());
 

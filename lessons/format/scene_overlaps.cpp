@@ -6,6 +6,7 @@
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/sat.h"
 #include "rigidlab/physics/settings.h"
+#include "rigidlab/physics/work_budget.h"
 
 #include <algorithm>
 
@@ -15,9 +16,6 @@ namespace {
 
 using physics::BodyDef;
 
-/// The budget of boxPairBudget(): pairs per body, and a floor for small scenes.
-constexpr std::size_t kBoxPairsPerBody = 8;
-constexpr std::size_t kBoxPairsAlways = 1000;
 using physics::Vec2;
 
 struct Box {
@@ -109,7 +107,7 @@ OverlapSurvey surveyOverlaps(const Scene& scene, std::size_t most)
 
 std::size_t boxPairBudget(const Scene& scene)
 {
-    return kBoxPairsPerBody * scene.bodies.size() + kBoxPairsAlways;
+    return physics::pairBudget(scene.bodies.size());
 }
 
 QString checkCrowding(const Scene& scene, const QString& source, QStringList& warnings)

@@ -37,8 +37,9 @@ struct OverlapSurvey {
 /// past boxPairBudget().
 OverlapSurvey surveyOverlaps(const Scene& scene, std::size_t most);
 
-/// The most pairs of overlapping bounding boxes a scene may start with: a few per body (a
-/// packed pyramid or box of balls has about four), far fewer than all pairs of a heap.
+/// The most pairs of overlapping bounding boxes a scene may start with: the engine's work
+/// budget of a step (physics::pairBudget, work_budget.h), which a world built otherwise meets
+/// at its first step.
 std::size_t boxPairBudget(const Scene& scene);
 
 /// From this many overlapping pairs on, validating a scene warns.

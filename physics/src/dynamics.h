@@ -30,6 +30,18 @@ struct Dissipation {
     double damping = 0; ///< dampers of springs
 };
 
+/// What the force sum reads of the world's settings: its applied fields, taken once per step
+/// into the step's context (step_context.h).
+struct ForceField {
+    Vec2 gravity = Vec2::Zero(); ///< uniform acceleration [m/s^2]
+    double drag = 0.0;           ///< linear drag rate [1/s] (WorldDef::drag)
+    double gravitation = 0.0;    ///< Newton's constant G between bodies [m^3/(kg s^2)]
+};
+inline ForceField forceField(const WorldDef& def)
+{
+    return {def.gravity, def.drag, def.gravitation};
+}
+
 /// The applied force and torque on a dynamic body moving at (v, w): gravity, the user's
 /// accumulators and linear drag. The ODE system's force sum (forces.cpp) and the direct
 /// integration (integration.cpp) both take a body's load from here.
@@ -37,12 +49,12 @@ struct AppliedLoad {
     Vec2 force = Vec2::Zero(); ///< [N]
     double torque = 0.0;       ///< [N m]
 };
-inline AppliedLoad appliedLoad(const WorldDef& def, const Body& b, const Vec2& v, double w)
+inline AppliedLoad appliedLoad(const ForceField& field, const Body& b, const Vec2& v, double w)
 {
-    AppliedLoad load{b.mass * def.gravity + b.force, b.torque};
-    if (def.drag != 0.0) {
-        load.force -= def.drag * b.mass * v;
-        load.torque -= def.drag * b.inertia * w;
+    AppliedLoad load{b.mass * field.gravity + b.force, b.torque};
+    if (field.drag != 0.0) {
+        load.force -= field.drag * b.mass * v;
+        load.torque -= field.drag * b.inertia * w;
     }
     return load;
 }
@@ -55,18 +67,18 @@ struct BodyAcceleration {
     Vec2 linear = Vec2::Zero();
     double angular = 0.0;
 };
-inline BodyAcceleration appliedAcceleration(const WorldDef& def, const Body& b)
+inline BodyAcceleration appliedAcceleration(const ForceField& field, const Body& b)
 {
-    const AppliedLoad load = appliedLoad(def, b, b.velocity, b.angularVelocity);
+    const AppliedLoad load = appliedLoad(field, b, b.velocity, b.angularVelocity);
     return {Vec2(0.0 + load.force.x(), 0.0 + load.force.y()) * b.invMass,
             (0.0 + load.torque) * b.invInertia};
 }
 
 class Dynamics final : public OdeSystem {
 public:
-    Dynamics(const WorldDef& def, const std::vector<Body>& bodies, const std::vector<int>& slot,
+    Dynamics(const ForceField& field, const std::vector<Body>& bodies, const std::vector<int>& slot,
              const std::vector<SpringDef>& springs, const std::vector<PinJointDef>& joints)
-        : m_def(def), m_bodies(bodies), m_slot(slot), m_springs(springs), m_joints(joints)
+        : m_field(field), m_bodies(bodies), m_slot(slot), m_springs(springs), m_joints(joints)
     {
     }
 
@@ -129,7 +141,7 @@ private:
     void applyJointVector(const std::vector<JointFrame>& frames, const Eigen::VectorXd& lambda,
                           Eigen::VectorXd& out) const;
 
-    const WorldDef& m_def;
+    ForceField m_field;
     const std::vector<Body>& m_bodies;
     const std::vector<int>& m_slot; ///< state slot of each body, -1 if static
     const std::vector<SpringDef>& m_springs;

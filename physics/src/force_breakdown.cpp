@@ -38,7 +38,7 @@ std::pair<Vec2, double> loadOf(const World& world, BodyId id, const WorldDef& de
 {
     const std::vector<Body> bodies = withoutAccumulators(world);
     const std::vector<int> slot = slotsOf(world);
-    const Dynamics dynamics(def, bodies, slot, springs, {});
+    const Dynamics dynamics(forceField(def), bodies, slot, springs, {});
     Eigen::VectorXd q, v, a;
     world.getState(q, v);
     a.resize(q.size());
@@ -78,7 +78,7 @@ ForceBreakdown forceBreakdown(const World& world, BodyId id)
     world.getState(q, v);
     const std::vector<Body> bodies = withoutAccumulators(world);
     const std::vector<int> slot = slotsOf(world);
-    const Dynamics geometry(only, bodies, slot, world.springs(), {});
+    const Dynamics geometry(forceField(only), bodies, slot, world.springs(), {});
     for (std::size_t s = 0; s < world.springs().size(); ++s) {
         const SpringDef& spring = world.springs()[s];
         if (spring.a != id && spring.b != id)

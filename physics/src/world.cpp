@@ -43,6 +43,9 @@ void World::step()
     if (ctx.plan.collide) {
         rememberStartVelocities(ctx);
         findContacts(ctx);
+        // More pairs than the step's work budget: stopped before anything moves.
+        if (stopWhenCrowded())
+            return;
     } else {
         m_contacts.clear();
     }
@@ -107,7 +110,11 @@ StepContext World::context()
                     .restitutionThreshold = restitutionThreshold(m_def, m_contactSettings),
                     .plain = plain,
                     .plan = plan,
-                    .def = m_def,
+                    .integratorKind = m_def.integrator,
+                    .solver = m_def.solver,
+                    .iterations = m_def.iterations,
+                    .continuous = m_def.continuous,
+                    .field = forceField(m_def),
                     .contactSettings = m_contactSettings,
                     .bodies = m_bodies,
                     .springs = m_springs,

@@ -15,7 +15,7 @@ public:
     WorldEquations(const WorldDef& def, const std::vector<Body>& bodies,
                    const std::vector<int>& slot, const std::vector<SpringDef>& springs,
                    const std::vector<PinJointDef>& joints)
-        : m_dynamics(def, bodies, slot, springs, joints)
+        : m_dynamics(forceField(def), bodies, slot, springs, joints)
     {
     }
     void acceleration(double t, const Eigen::VectorXd& q, const Eigen::VectorXd& v,

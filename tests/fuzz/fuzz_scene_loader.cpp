@@ -4,11 +4,15 @@
 // Whatever the bytes, the loader returns: a scene or one error line naming the source. A scene
 // it accepts is within the limits (lessons/limits.h), so its world starts with finite energy
 // and momentum (a finite number that overflows the physics must be refused at load, not
-// found later as NaN), and a few steps of it run without a sanitizer report.
+// found later as NaN), its bodies do not crowd past the engine's budget of pairs for a step
+// (work_budget.h), and a few steps of it run without a sanitizer report, each within that
+// budget.
 
 #include "fuzz_check.h"
 
 #include "format/scene_loader.h"
+#include "format/scene_overlaps.h"
+#include "rigidlab/physics/work_budget.h"
 #include "rigidlab/physics/world.h"
 
 #include <QByteArray>
@@ -41,6 +45,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const lessons::Scene& scene = r.scene;
     FUZZ_CHECK(scene.bodies.size() <= static_cast<std::size_t>(lessons::kMaxBodies));
     FUZZ_CHECK(scene.originalVertices.size() == scene.bodies.size());
+    FUZZ_CHECK(!lessons::surveyOverlaps(scene, 0).crowded);
 
     physics::World world = lessons::buildWorld(scene);
     world.updateDiagnostics();
@@ -55,6 +60,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (world.bodies().size() <= kMaxBodiesStepped) {
         for (int i = 0; i < kSteps && !world.divergence(); ++i) {
             world.step();
+            FUZZ_CHECK(static_cast<std::size_t>(world.profile().pairs) <=
+                       physics::pairBudget(world.bodies().size()));
         }
     }
     return 0;

@@ -9,6 +9,7 @@
 #include "format/scene_loader.h"
 #include "run/scene_run.h"
 
+#include "cli_run.h"
 #include "test_main.h"
 
 #include <QDir>
@@ -83,34 +84,16 @@ private:
     bool m_active = false;
 };
 
-struct CliRun {
-    int exitCode = -1;
-    bool crashed = true;
-    QByteArray err;
-};
-
 /// rigidlab-cli with a file size limit in the child only.
-CliRun runCliLimited(const QStringList& arguments)
+rigidlab::test::CliRun runCliLimited(const QStringList& arguments)
 {
-    QProcess process;
-    process.setChildProcessModifier([] {
+    return rigidlab::test::runCli(arguments, [] {
         std::signal(SIGXFSZ, SIG_IGN); // kept across exec: writes fail with EFBIG instead
         rlimit limited{};
         getrlimit(RLIMIT_FSIZE, &limited);
         limited.rlim_cur = kLimit;
         setrlimit(RLIMIT_FSIZE, &limited);
     });
-    process.start(kCli, arguments);
-    CliRun run;
-    if (!process.waitForFinished(300'000)) {
-        process.kill();
-        process.waitForFinished();
-        return run;
-    }
-    run.crashed = process.exitStatus() != QProcess::NormalExit;
-    run.exitCode = process.exitCode();
-    run.err = process.readAllStandardError();
-    return run;
 }
 
 } // namespace
@@ -233,7 +216,7 @@ private slots:
         const QString path = dir.filePath(file);
         QVERIFY(writePlain(path, kPrevious));
         arguments.replaceInStrings(QStringLiteral("FILE"), path);
-        const CliRun run = runCliLimited(arguments);
+        const rigidlab::test::CliRun run = runCliLimited(arguments);
         QVERIFY(!run.crashed);
         QVERIFY2(run.exitCode == 1, run.err.constData());
         QVERIFY2(run.err.contains("cannot write " + path.toUtf8()), run.err.constData());
@@ -263,7 +246,7 @@ private slots:
             if (QFileInfo(out.filePath(name)).isFile())
                 contents[name] = readAll(out.filePath(name));
 
-        const CliRun run = runCliLimited(
+        const rigidlab::test::CliRun run = runCliLimited(
             {QStringLiteral("lesson"), lesson, QStringLiteral("--export"), out.path()});
         QVERIFY(!run.crashed);
         QVERIFY2(run.exitCode == 1, run.err.constData());

@@ -6,6 +6,7 @@
 
 #include "format/lesson.h"
 #include "run/measurements.h"
+#include "test_files.h"
 
 #include <QDir>
 #include <QFile>
@@ -34,13 +35,6 @@ inline lessons::Lesson shippedLesson(const char* name)
     if (!loaded.ok)
         qWarning("%s", qPrintable(loaded.error));
     return loaded.lesson;
-}
-
-inline void writeFile(const QString& path, const QByteArray& bytes)
-{
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    QCOMPARE(file.write(bytes), bytes.size());
 }
 
 /// A step's worlds run side by side for `seconds`, each observed by its Measurements (the

@@ -143,7 +143,7 @@ void TestLesson::missingLanguageWarns()
     // carries the same lines.
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("l.json"));
-    writeFile(path, bilingualLesson(true).replace(R"(, "cs": "Odrazy")", ""));
+    QVERIFY(writeFile(path, bilingualLesson(true).replace(R"(, "cs": "Odrazy")", "")));
     const lessons::DocumentCheck check = lessons::checkDocumentFile(path);
     QVERIFY2(check.ok, qPrintable(check.error));
     QCOMPARE(check.warnings, QStringList{path + QStringLiteral(": title") + tail});
@@ -276,7 +276,7 @@ void TestLesson::oneLanguageLessons()
     QVERIFY2(read.ok, qPrintable(read.error));
     QTemporaryDir dir;
     const QString copy = dir.filePath(file);
-    writeFile(copy, lessons::lessonPackBytes(read.pack));
+    QVERIFY(writeFile(copy, lessons::lessonPackBytes(read.pack)));
     const lessons::LessonLoadResult again = lessons::loadLessonFile(copy, {written});
     QVERIFY2(again.ok, qPrintable(again.error));
     QCOMPARE(again.lesson.title, title);

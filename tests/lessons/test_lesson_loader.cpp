@@ -24,8 +24,8 @@ void TestLesson::sceneTextsInLessonLanguage()
 {
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
-    writeFile(dir.filePath(QStringLiteral("drop.json")),
-              R"({"rigidlab": 1, "title": {"en": "Drop", "cs": "Pád"}, "bodies": []})");
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("drop.json")),
+                      R"({"rigidlab": 1, "title": {"en": "Drop", "cs": "Pád"}, "bodies": []})"));
     const QByteArray json =
         R"({"rigidlab-lesson": 1, "title": "t", "steps": [
              {"title": "s", "scene": {"rigidlab": 1, "title": {"en": "Inline"},
@@ -223,16 +223,16 @@ void TestLesson::lessonsWithoutOrderComeLast()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
-    writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene);
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene));
     const auto lesson = [](const char* title, const char* more) {
         return QByteArray(R"({"rigidlab-lesson": 1, "title": ")") + title + '"' + more +
                R"(, "steps": [{"title": "s", "scene": "scenes/ok.json"}]})";
     };
-    writeFile(dir.filePath(QStringLiteral("a.json")), lesson("A", ""));
-    writeFile(dir.filePath(QStringLiteral("b.json")), lesson("B", R"(, "order": 7)"));
-    writeFile(dir.filePath(QStringLiteral("c.json")),
-              lesson("C", R"(, "order": 2, "description": "the first", "minutes": 5)"));
-    writeFile(dir.filePath(QStringLiteral("d.json")), lesson("D", R"(, "order": "x")"));
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("a.json")), lesson("A", "")));
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("b.json")), lesson("B", R"(, "order": 7)")));
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("c.json")),
+                      lesson("C", R"(, "order": 2, "description": "the first", "minutes": 5)")));
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("d.json")), lesson("D", R"(, "order": "x")")));
     const std::vector<lessons::LessonEntry> entries = lessons::lessonsInOrder(dir.path());
     QStringList titles;
     for (const lessons::LessonEntry& e : entries)
@@ -257,10 +257,10 @@ void TestLesson::userLessonsListedAfterShipped()
     // A lesson of the user's own, with its scene beside it as in the shipped folder; a place
     // before every shipped one still lists it after them.
     QVERIFY(QDir().mkpath(QDir(own).filePath(QStringLiteral("scenes"))));
-    writeFile(QDir(own).filePath(QStringLiteral("scenes/ok.json")), kScene);
-    writeFile(QDir(own).filePath(QStringLiteral("my_lesson.json")),
-              R"({"rigidlab-lesson": 1, "title": "Mine", "order": 1, "minutes": 10,
-                  "steps": [{"title": "s", "scene": "scenes/ok.json"}]})");
+    QVERIFY(writeFile(QDir(own).filePath(QStringLiteral("scenes/ok.json")), kScene));
+    QVERIFY(writeFile(QDir(own).filePath(QStringLiteral("my_lesson.json")),
+                      R"({"rigidlab-lesson": 1, "title": "Mine", "order": 1, "minutes": 10,
+                  "steps": [{"title": "s", "scene": "scenes/ok.json"}]})"));
     const std::vector<lessons::LessonEntry> all = lessons::allLessonsInOrder();
     QCOMPARE(all.size(), shipped.size() + 1);
     for (std::size_t i = 0; i < shipped.size(); ++i) {
@@ -282,11 +282,11 @@ void TestLesson::rejectsSymbolicLinkOutOfFolder()
     QTemporaryDir outside;
     QTemporaryDir dir;
     QVERIFY(outside.isValid() && dir.isValid());
-    writeFile(outside.filePath(QStringLiteral("secret.json")), kScene);
+    QVERIFY(writeFile(outside.filePath(QStringLiteral("secret.json")), kScene));
     QVERIFY(QFile::link(outside.filePath(QStringLiteral("secret.json")),
                         dir.filePath(QStringLiteral("link.json"))));
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, stepWithScene(R"("link.json")"));
+    QVERIFY(writeFile(path, stepWithScene(R"("link.json")")));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY(!loaded.ok);
     QCOMPARE(loaded.error,
@@ -294,7 +294,7 @@ void TestLesson::rejectsSymbolicLinkOutOfFolder()
                                    "folder (through a symbolic link)"));
 
     // A scene file that is missing says so, with both places.
-    writeFile(path, stepWithScene(R"("scenes/none.json")"));
+    QVERIFY(writeFile(path, stepWithScene(R"("scenes/none.json")")));
     const lessons::LessonLoadResult missing = lessons::loadLessonFile(path);
     QVERIFY(!missing.ok);
     QVERIFY2(missing.error.startsWith(path + QStringLiteral(": steps[0].scene: ")) &&
@@ -307,11 +307,11 @@ void TestLesson::sceneFileErrorsCarryBothPlaces()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
-    writeFile(
+    QVERIFY(writeFile(
         dir.filePath(QStringLiteral("scenes/bad.json")),
-        R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": {"type": "circle", "radius": -1}}]})");
+        R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": {"type": "circle", "radius": -1}}]})"));
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, stepWithScene(R"("scenes/bad.json")"));
+    QVERIFY(writeFile(path, stepWithScene(R"("scenes/bad.json")")));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY(!loaded.ok);
     QCOMPARE(loaded.error, path + QStringLiteral(": steps[0].scene: ") + dir.path() +
@@ -323,11 +323,11 @@ void TestLesson::inlineSceneErrorsContinueThePlace()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(
+    QVERIFY(writeFile(
         path,
         stepWithScene(R"({"rigidlab": 1, "bodies": [{"id": "b", "shape": )"
                       R"({"type": "polygon", "vertices": [[0, 0], [1, 0], [0.2, 0.2], [0, 1]]}}, )"
-                      R"({"id": "c", "color": 1}]})"));
+                      R"({"id": "c", "color": 1}]})")));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY(!loaded.ok);
     QVERIFY2(loaded.error.startsWith(path + QStringLiteral(": steps[0].scene.bodies[1].color: "
@@ -365,7 +365,7 @@ void TestLesson::everyField()
 {
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, everyFieldLesson());
+    QVERIFY(writeFile(path, everyFieldLesson()));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     const lessons::Lesson& l = loaded.lesson;
@@ -427,7 +427,7 @@ void TestLesson::everyField()
     QCOMPARE(s.autoplay, false);
 
     // Defaults.
-    writeFile(path, oneStep(""));
+    QVERIFY(writeFile(path, oneStep("")));
     const lessons::LessonLoadResult bare = lessons::loadLessonFile(path);
     QVERIFY2(bare.ok, qPrintable(bare.error));
     const lessons::LessonStep& d = bare.lesson.steps[0];
@@ -474,7 +474,7 @@ void TestLesson::formatDocumentExampleLoads()
         QVERIFY(QFile::copy(QDir(kScenesDir).filePath(QLatin1StringView(scene)),
                             dir.filePath(QStringLiteral("scenes/") + scene)));
     const QString path = dir.filePath(QStringLiteral("lessons/example.json"));
-    writeFile(path, match.captured(1).toUtf8());
+    QVERIFY(writeFile(path, match.captured(1).toUtf8()));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     QCOMPARE(loaded.lesson.steps.size(), std::size_t{3});

@@ -11,13 +11,13 @@
 #include "format/lesson_pack.h"
 #include "format/scene_compare.h"
 
+#include "cli_run.h"
 #include "test_files.h"
 #include "test_main.h"
 
 #include <QFile>
 #include <QJsonArray>
 #include <QJsonDocument>
-#include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -25,6 +25,7 @@
 
 using namespace rigidlab;
 using rigidlab::test::filesUnder;
+using rigidlab::test::writeFile;
 
 class TestLessonPack : public QObject {
     Q_OBJECT
@@ -47,17 +48,10 @@ private slots:
 namespace {
 
 const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
-const QString kCli = QStringLiteral(RIGIDLAB_CLI);
 
 QStringList shippedLessons()
 {
     return QDir(kLessonsDir).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
-}
-
-bool writeFile(const QString& path, const QByteArray& bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
 }
 
 /// restitution.json packed, as a JSON object to damage.
@@ -70,24 +64,8 @@ QJsonObject packedRestitution()
     return QJsonDocument::fromJson(lessons::lessonPackBytes(r.pack)).object();
 }
 
-struct Run {
-    int exitCode = -1;
-    QByteArray out;
-    QByteArray err;
-};
-
-Run runCli(const QStringList& arguments)
-{
-    QProcess cli;
-    cli.start(kCli, arguments);
-    Run run;
-    if (!cli.waitForFinished(120'000) || cli.exitStatus() != QProcess::NormalExit)
-        return run;
-    run.exitCode = cli.exitCode();
-    run.out = cli.readAllStandardOutput();
-    run.err = cli.readAllStandardError();
-    return run;
-}
+using rigidlab::test::runCli;
+using Run = rigidlab::test::CliRun;
 
 } // namespace
 

@@ -28,7 +28,7 @@ void TestLesson::questionSetAsksForItsOwnRun()
             .arg(QString::fromUtf8(speed));
     QTemporaryDir dir;
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, oneStep(qPrintable(questions)));
+    QVERIFY(writeFile(path, oneStep(qPrintable(questions))));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     const QString q = path + QStringLiteral(": steps[0].questions[");
@@ -50,8 +50,8 @@ void TestLesson::questionSetAsksForItsOwnRun()
     QCOMPARE(*lessons::askedStep(step, step.questions[3]).settings.restitution, 0.5);
 
     // Without the controls panel the student cannot set anything.
-    writeFile(path, oneStep(R"("questions": [{"prompt": "a", "measure": {"kind": "speed", )"
-                            R"("body": "ball", "time": 1}, "set": {"gravity": false}}])"));
+    QVERIFY(writeFile(path, oneStep(R"("questions": [{"prompt": "a", "measure": {"kind": "speed", )"
+                                    R"("body": "ball", "time": 1}, "set": {"gravity": false}}])")));
     const lessons::LessonLoadResult noPanel = lessons::loadLessonFile(path);
     QVERIFY2(noPanel.ok, qPrintable(noPanel.error));
     QCOMPARE(noPanel.warnings,

@@ -250,9 +250,9 @@ void TestLesson::rejectsBadLesson()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     QVERIFY(QDir(dir.path()).mkdir(QStringLiteral("scenes")));
-    writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene);
+    QVERIFY(writeFile(dir.filePath(QStringLiteral("scenes/ok.json")), kScene));
     const QString path = dir.filePath(QStringLiteral("lesson.json"));
-    writeFile(path, json);
+    QVERIFY(writeFile(path, json));
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(path);
     QVERIFY(!loaded.ok);
     QCOMPARE(loaded.error, path + QStringLiteral(": ") + message);

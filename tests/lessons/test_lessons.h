@@ -4,6 +4,7 @@
 // running scenes, validation and the SAT report (test_scene_run.cpp). Shared helpers here.
 
 #include "format/scene_loader.h"
+#include "test_files.h"
 
 #include <QByteArray>
 #include <QFile>
@@ -32,19 +33,6 @@ inline QByteArray oneBody(const char* fields)
 inline bool isClose(double a, double b, double tol = 1e-12)
 {
     return std::abs(a - b) <= tol;
-}
-
-inline QByteArray readAll(const QString& path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-inline void writeFile(const QString& path, const QByteArray& bytes)
-{
-    QFile file(path);
-    QVERIFY(file.open(QIODevice::WriteOnly));
-    QCOMPARE(file.write(bytes), bytes.size());
 }
 
 } // namespace rigidlab::test

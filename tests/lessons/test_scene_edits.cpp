@@ -3,8 +3,8 @@
 // loader uses for the same mistake in a file, deleting a body with its springs and pins, and
 // ids that stay unique.
 
-#include "near.h"
 #include "test_scene_edits.h"
+#include "near.h"
 
 using namespace rigidlab;
 using namespace rigidlab::test::scene_edits;

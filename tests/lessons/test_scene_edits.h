@@ -97,4 +97,5 @@ private slots:
     void setsVelocityAndColour();
     void setsSpringAndWorldProperties();
     void listsOverlaps();
+    void refusesCrowding();
 };

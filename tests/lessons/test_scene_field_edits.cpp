@@ -4,6 +4,9 @@
 
 #include "test_scene_edits.h"
 
+#include "format/scene_overlaps.h"
+#include "rigidlab/physics/work_budget.h"
+
 using namespace rigidlab;
 using namespace rigidlab::test::scene_edits;
 
@@ -156,4 +159,42 @@ void TestSceneEdits::listsOverlaps()
     // Passing through everything is no overlap.
     scene.bodies[4].collide = false;
     QVERIFY(edit::overlappingPairs(scene).empty());
+}
+
+void TestSceneEdits::refusesCrowding()
+{
+    // Duplicate pressed again and again on one ball puts every copy at one place: once their
+    // boxes make more pairs than the engine's budget for a step, the edit is refused with the
+    // loader's words, and the scene stays as it was.
+    Scene scene = edit::addGround(Scene{}, Vec2(0.0, -0.5), 20.0, 1.0).scene;
+    scene = edit::addCircle(scene, Vec2(0.0, 1.0), 0.1).scene;
+    edit::EditResult r;
+    int copies = 0;
+    for (; copies < 1000; ++copies) {
+        r = edit::duplicateBody(scene, 1, Vec2::Zero());
+        if (!r.ok)
+            break;
+        scene = std::move(r.scene);
+    }
+    QVERIFY2(!r.ok, "never refused");
+    QVERIFY2(r.error.contains(QStringLiteral(": bodies: more than %1 pairs of bodies")
+                                  .arg(lessons::boxPairBudget(scene) + physics::kPairsPerBody)),
+             qPrintable(r.error));
+    QVERIFY2(r.error.contains(QStringLiteral("spread them out")), qPrintable(r.error));
+    // n balls at one point make n (n - 1) / 2 pairs: refused at the first n past the budget.
+    const std::size_t balls = scene.bodies.size(); // the ground and the balls kept
+    const std::size_t n = balls;                   // with the refused copy
+    QVERIFY2(n * (n - 1) / 2 > physics::pairBudget(balls + 1) &&
+                 (n - 1) * (n - 2) / 2 <= physics::pairBudget(balls),
+             qPrintable(QStringLiteral("%1 balls kept").arg(n - 1)));
+    QVERIFY(!lessons::surveyOverlaps(scene, 0).crowded);
+
+    // The editor's own Duplicate places each copy beside the one before: a row of 300 balls
+    // is never crowded.
+    Scene row = edit::addCircle(Scene{}, Vec2(0.0, 1.0), 0.1).scene;
+    for (int i = 0; i < 300; ++i) {
+        r = edit::duplicateBody(row, i, Vec2(0.2, 0.0));
+        QVERIFY2(r.ok, qPrintable(r.error));
+        row = std::move(r.scene);
+    }
 }

@@ -31,7 +31,7 @@ void TestLessons::fileTooLarge()
     QTemporaryDir dir;
     QVERIFY(dir.isValid());
     const QString path = dir.filePath(QStringLiteral("big.json"));
-    writeFile(path, sceneWith(R"("bodies": [])") + QByteArray(9 * 1024 * 1024, ' '));
+    QVERIFY(writeFile(path, sceneWith(R"("bodies": [])") + QByteArray(9 * 1024 * 1024, ' ')));
     const lessons::SceneLoadResult result = lessons::loadSceneFile(path);
     QVERIFY(!result.ok);
     QCOMPARE(result.error, path + QStringLiteral(": too large: more than 8388608 bytes (the "

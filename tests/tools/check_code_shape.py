@@ -5,7 +5,8 @@ function over 80 lines except those named in design.md's "Long on purpose" table
 subfolder that includes another which includes it back, no ui/ room that includes one of
 its own or a later layer (UI_LAYERS), and no language code written as a string ("cs", "en") in
 production code outside the languages table (lessons/format/languages.h and .cpp): every code
-path reads that table.
+path reads that table; and no stage of a step (physics/src/stages, physics/src/fast) reads the
+world's settings (`ctx.def`): it reads the step context's values, computed once.
 
 Functions are found by Universal Ctags (their first and last line); a file is every tracked
 .cpp/.h under physics/, lessons/, ui/, app/, bench/ and tests/. Exit 0 when everything holds;
@@ -126,6 +127,23 @@ def language_literals(root, files):
     return out
 
 
+STAGE_FOLDERS = ["physics/src/stages", "physics/src/fast"]
+
+
+def settings_read_in_stages(root, files):
+    """(path, line number) of each `ctx.def` in a stage file: a stage reads its context only."""
+    pattern = re.compile(r"\bctx\s*\.\s*def\b")
+    out = []
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if not any(rel.startswith(folder + "/") for folder in STAGE_FOLDERS):
+            continue
+        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            if pattern.search(line.split("//")[0]):
+                out.append((rel, number))
+    return out
+
+
 def main():
     root = Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
     files = sources(root)
@@ -146,6 +164,9 @@ def main():
     for path, number in language_literals(root, files):
         problems.append(f"{path}:{number}: a language code written out; read lessons::kLanguages "
                         f"(lessons/format/languages.h) instead")
+    for path, number in settings_read_in_stages(root, files):
+        problems.append(f"{path}:{number}: a stage reads the world's settings; take the value "
+                        f"from the step context (step_context.h), computed once in World::context()")
     for p in problems:
         print(p)
     print(f"{len(files)} files read, {len(problems)} findings")

@@ -80,6 +80,9 @@ private slots:
     void screenshotOfTheEditor();
     void editorMnemonicsAreUnique_data();
     void editorMnemonicsAreUnique();
+    void lettersStayInListsAndFields_data();
+    void lettersStayInListsAndFields();
+    void spinBoxesAndScrollAreasNamed();
     void keptLessonAfterACrash();
     void windowClosingAsksTheEditor();
     // The checks that run the steps, in a worker (they wait on its signal, which lets the

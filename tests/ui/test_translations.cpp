@@ -26,6 +26,7 @@
 #include <QLocale>
 #include <QMap>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSet>
 #include <QSettings>
 #include <QTemporaryDir>
@@ -215,6 +216,27 @@ private slots:
                      qPrintable(QStringLiteral("unfinished in rigidlab_cs.ts:\n") +
                                 unfinished.join(u'\n')));
         }
+    }
+
+    // One Czech word for the one who learns: "žák", as the school says, never "student" as
+    // well (a reader hears both as different people).
+    void czechCallsTheLearnerZak()
+    {
+        const auto committed = readTs(committedTs("rigidlab_cs.ts"));
+        QVERIFY(committed);
+        static const QRegularExpression student(QStringLiteral("\\bstudent"),
+                                                QRegularExpression::CaseInsensitiveOption);
+        QStringList mixed;
+        int zak = 0;
+        for (auto it = committed->cbegin(); it != committed->cend(); ++it)
+            for (const QString& t : it->translations) {
+                if (t.contains(student))
+                    mixed << t;
+                if (t.contains(QStringLiteral("žák"), Qt::CaseInsensitive))
+                    ++zak;
+            }
+        QVERIFY2(zak >= 10, qPrintable(QString::number(zak))); // the word is used
+        QVERIFY2(mixed.isEmpty(), qPrintable(mixed.join(u'\n')));
     }
 
     // English needs its own words only where a count picks the form ("1 step", "2 steps"):

@@ -3,10 +3,12 @@
 
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QSpinBox>
 
 namespace rigidlab::ui {
 
@@ -36,6 +38,16 @@ void followRows(QFormLayout& form)
         if (auto* list = qobject_cast<QComboBox*>(field); list && label)
             list->setAccessibleName(QString(label->text()).remove(QLatin1Char('&')));
     }
+}
+
+void nameWithUnit(QAbstractSpinBox& box, const QString& name)
+{
+    QString unit;
+    if (const auto* d = qobject_cast<const QDoubleSpinBox*>(&box))
+        unit = d->suffix().trimmed();
+    else if (const auto* i = qobject_cast<const QSpinBox*>(&box))
+        unit = i->suffix().trimmed();
+    box.setAccessibleName(unit.isEmpty() ? name : QStringLiteral("%1 [%2]").arg(name, unit));
 }
 
 } // namespace rigidlab::ui

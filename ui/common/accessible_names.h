@@ -4,6 +4,7 @@
 
 #include <QString>
 
+class QAbstractSpinBox;
 class QFormLayout;
 class QScrollArea;
 
@@ -18,5 +19,10 @@ void nameScrollArea(QScrollArea& area, const QString& name);
 /// were made), and a list in a row is named by the row's label, its choice being its value
 /// (Qt names a list by its choice).
 void followRows(QFormLayout& form);
+
+/// Names a spin box by what it holds and the unit it shows after its number, as the window's
+/// fields are named by their labels ("Time step dt [ms]"): "Time of the measurement [s]". A
+/// reader says the name before the number; the unit then is not left to the number's text.
+void nameWithUnit(QAbstractSpinBox& box, const QString& name);
 
 } // namespace rigidlab::ui

@@ -16,6 +16,10 @@ QString divergenceReason(const physics::Divergence& d, const QString& bodyLabel)
 
 QString divergenceSentence(const physics::Divergence& d, const QString& bodyLabel)
 {
+    if (d.kind == physics::Divergence::Kind::Crowded)
+        return DivergenceWords::tr("The simulation %1. It stopped here rather than freeze the "
+                                   "computer.")
+            .arg(lessons::divergenceMessage(d, bodyLabel, QLocale()));
     return DivergenceWords::tr("The simulation %1. It stopped here rather than draw garbage.")
         .arg(lessons::divergenceMessage(d, bodyLabel, QLocale()));
 }
@@ -24,6 +28,8 @@ QString divergenceShort(const physics::Divergence& d)
 {
     if (d.kind == physics::Divergence::Kind::EnergyGrowth)
         return DivergenceWords::tr("energy blew up");
+    if (d.kind == physics::Divergence::Kind::Crowded)
+        return DivergenceWords::tr("too crowded to run");
     return DivergenceWords::tr("%1 no longer finite").arg(lessons::quantityName(d.quantity));
 }
 

@@ -6,6 +6,8 @@
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/step_text.h"
 
+#include "common/accessible_names.h"
+
 #include "format/data_dirs.h"
 #include "run/measurements.h"
 
@@ -56,10 +58,12 @@ constexpr int kColumns = static_cast<int>(kEditorLanguages);
 /// How often the unsaved lesson is written to the autosave [ms].
 constexpr int kAutosaveMs = 30'000;
 
-/// A page of a tab widget that scrolls when the window is shorter than all of it.
-QScrollArea* scrolling(QWidget* page)
+/// A page of a tab widget that scrolls when the window is shorter than all of it, named after
+/// its tab.
+QScrollArea* scrolling(QWidget* page, const QString& name)
 {
     auto* area = new QScrollArea;
+    nameScrollArea(*area, name);
     area->setWidget(page);
     area->setWidgetResizable(true);
     area->setFrameShape(QFrame::NoFrame);
@@ -169,7 +173,7 @@ void LessonEditor::buildLessonFields(QGridLayout& grid)
     m_minutes->setRange(0, 600);
     m_minutes->setSpecialValueText(tr("not said"));
     m_minutes->setSuffix(tr("\u00a0min"));
-    m_minutes->setAccessibleName(tr("Minutes the lesson takes"));
+    nameWithUnit(*m_minutes, tr("Minutes the lesson takes"));
     minutesLabel->setBuddy(m_minutes);
     connect(m_minutes, &QSpinBox::valueChanged, this, [this](int v) {
         if (!m_refreshing)
@@ -314,9 +318,9 @@ QWidget* LessonEditor::buildStepTexts()
     pages->setObjectName(QStringLiteral("stepPages"));
     pages->setAccessibleName(tr("The step's questions and settings"));
     m_questions = new QuestionEditor(m_draft, pages);
-    pages->addTab(scrolling(m_questions), tr("Questions"));
+    pages->addTab(scrolling(m_questions, tr("Questions")), tr("Questions"));
     m_settings = new StepSettingsEditor(m_draft, pages);
-    pages->addTab(scrolling(m_settings), tr("Shown and locked"));
+    pages->addTab(scrolling(m_settings, tr("Shown and locked")), tr("Shown and locked"));
     split->addWidget(pages);
     // Half for the texts, half for the questions: the questions are what a step is for.
     split->setStretchFactor(0, 1);

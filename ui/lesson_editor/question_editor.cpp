@@ -5,6 +5,8 @@
 #include "lesson_editor/lesson_draft.h"
 #include "lesson_editor/question_set_editor.h"
 
+#include "common/accessible_names.h"
+
 #include "run/measurements.h"
 
 #include "rigidlab/physics/integrator.h"
@@ -162,19 +164,19 @@ QFormLayout* QuestionEditor::buildForm()
     m_body->setAccessibleName(tr("Body measured"));
     m_time = new QDoubleSpinBox(this);
     m_time->setObjectName(QStringLiteral("questionTime"));
-    m_time->setAccessibleName(tr("Time of the measurement"));
     m_time->setRange(0, 3600);
     m_time->setDecimals(2);
     m_time->setSuffix(QStringLiteral("\u00a0s"));
+    nameWithUnit(*m_time, tr("Time of the measurement"));
     m_unit = new QLineEdit(this);
     m_unit->setObjectName(QStringLiteral("questionUnit"));
     m_unit->setAccessibleName(tr("Unit of the answer"));
     m_tolerance = new QDoubleSpinBox(this);
     m_tolerance->setObjectName(QStringLiteral("questionTolerance"));
-    m_tolerance->setAccessibleName(tr("Tolerance of the answer"));
     m_tolerance->setRange(0.1, 100);
     m_tolerance->setDecimals(1);
     m_tolerance->setSuffix(QStringLiteral("\u00a0%"));
+    nameWithUnit(*m_tolerance, tr("Tolerance of the answer"));
     m_holdRun = new QCheckBox(tr("Predict first: the run waits until it is answered"), this);
     m_holdRun->setObjectName(QStringLiteral("questionHoldRun"));
     m_answer = new QLabel(this);

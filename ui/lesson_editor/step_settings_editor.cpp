@@ -2,6 +2,7 @@
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_editor/lesson_draft.h"
 
+#include "common/accessible_names.h"
 #include "common/step_part_names.h"
 
 #include "format/lesson.h"
@@ -71,7 +72,7 @@ StepSettingsEditor::StepSettingsEditor(LessonDraft& draft, QWidget* parent)
     m_exportTime->setRange(0.1, exportRow.value.range.max);
     m_exportTime->setDecimals(2);
     m_exportTime->setSuffix(QStringLiteral("\u00a0s"));
-    m_exportTime->setAccessibleName(tr("Plots exported at"));
+    nameWithUnit(*m_exportTime, tr("Plots exported at"));
     m_exportTime->setAccessibleDescription(
         tr("The simulated time at which the step's plots are exported, 0.1 to 600 s"));
     auto* label = new QLabel(
@@ -93,7 +94,7 @@ StepSettingsEditor::StepSettingsEditor(LessonDraft& draft, QWidget* parent)
     m_endTime->setDecimals(2);
     m_endTime->setSuffix(QStringLiteral("\u00a0s"));
     m_endTime->setSpecialValueText(tr("runs on"));
-    m_endTime->setAccessibleName(tr("The run stops at"));
+    nameWithUnit(*m_endTime, tr("The run stops at"));
     m_endTime->setAccessibleDescription(
         tr("The simulated time at which the step's run stops, so that nothing runs off the "
            "stage; 0: it runs on"));

@@ -12,6 +12,10 @@
 class QCheckBox;
 class QComboBox;
 
+namespace rigidlab::physics {
+enum class SolverKind;
+}
+
 namespace rigidlab::ui {
 
 class NumberField;
@@ -40,6 +44,10 @@ public slots:
     void refresh();
 
 private:
+    /// Greys the iterations field where the solver has none, and says what it means under
+    /// each solver (tooltip and accessible description).
+    void showIterationsMeaning(physics::SolverKind solver);
+
     SimulationController& m_controller;
     QComboBox* m_integrator;
     QComboBox* m_solver;

@@ -3,11 +3,11 @@
 // Tells a screen reader what happens in the scene, politely: the bodies' values at a calm
 // rate while the world runs (kValueIntervalMs), and events (the first contact, everything
 // coming to rest, the run diverging) merged into one status line, at most once per
-// kValueIntervalMs. Qt 6.4 has no announcement event, so the status is a live child of the
-// scene view (world_view_accessible.h) whose value changes; a reader speaks it without
-// taking the focus. A body's value is told again only when it changed. What the student does
-// (a body chosen or moved, play and pause) and a divergence are announced (announcer.h). The
-// narrator only reads the world.
+// kValueIntervalMs. Qt 6.4 has no announcement event, so the status is a child of the
+// scene view (world_view_accessible.h) whose description changes; a reader finds it up to
+// date without the focus moving. A body's value is told again only when it changed. What the
+// student does (a body chosen or moved, play and pause) and a divergence are announced
+// (announcer.h). The narrator only reads the world.
 
 #include <QElapsedTimer>
 #include <QHash>
@@ -47,7 +47,7 @@ public:
     void tellMoved(int id);
 
 signals:
-    /// A value told to assistive technology (as a value-change event when it listens): of
+    /// A value told to assistive technology (as a description change when it listens): of
     /// the scene view's child `child` (WorldViewAccessible::Child, or a body's index after
     /// FirstBody).
     void told(int child, const QString& value);

@@ -134,6 +134,15 @@ void installWorldViewAccessible()
     QAccessible::installFactory(worldViewFactory);
 }
 
+void tellSceneItemChanged(WorldView& view, int child)
+{
+    QAccessibleInterface* scene = QAccessible::queryAccessibleInterface(&view);
+    if (QAccessibleInterface* item = scene ? scene->child(child) : nullptr) {
+        QAccessibleEvent event(item, QAccessible::DescriptionChanged);
+        QAccessible::updateAccessibility(&event);
+    }
+}
+
 WorldViewAccessible::WorldViewAccessible(WorldView* view)
     : QAccessibleWidget(view, QAccessible::Graphic)
 {

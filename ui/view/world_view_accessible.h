@@ -6,7 +6,7 @@
 //
 //   scene view        name "Scene: <title>", description: the summary
 //     summary         what is on stage, what is happening now, what the student can do
-//     status          the last events, announced as value changes (scene_narrator.h)
+//     status          the last events, told as description changes (scene_narrator.h)
 //     body 0 … n-1    name and kind; description and value: shape, mass, position, velocity
 //
 // The children are read from the controller's world whenever asked, so that they are never
@@ -23,6 +23,13 @@ class WorldView;
 /// Registers the factory that makes the scene view's interface (once per process; later
 /// calls do nothing).
 void installWorldViewAccessible();
+
+/// Tells assistive technology that child `child` of `view`'s interface (the status, or a body
+/// after WorldViewAccessible::FirstBody) says something new, as a change of its description,
+/// which is what it says. Not a value change: Qt 6.4's AT-SPI bridge drops that for an object
+/// without a numeric value interface ("ValueChanged event and no ValueInterface"), and a
+/// reader's cache of the description (libatspi keeps one) would stay stale.
+void tellSceneItemChanged(WorldView& view, int child);
 
 class WorldViewAccessible : public QAccessibleWidget {
 public:

@@ -4,11 +4,13 @@
 #include "common/focus_ring.h"
 #include "common/shortcuts.h"
 #include "common/shortcuts_guard.h"
+#include "common/tab_bar_accessible.h"
 #include "common/theme.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
 #include "view/world_view.h"
+#include "window/menu_bar_focus.h"
 #include "window/window_keyboard_sight.h"
 #include "window/window_keyboard_toolbar.h"
 #include "window/window_layout.h"
@@ -37,7 +39,9 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
 {
     ShortcutsGuard::install();
     FocusRing::install();
+    installTabBarAccessible();
     skipControlsOutOfSight(parts.window);
+    keepMenuBarFocusVisible(parts.window);
     QPalette palette = QApplication::palette();
     palette.setColor(QPalette::PlaceholderText, theme::placeholderText());
     QApplication::setPalette(palette);

@@ -14,8 +14,8 @@ namespace rigidlab::physics {
 
 void integrateDirect(StepContext& ctx)
 {
-    const double h = ctx.def.dt;
-    const double drag = ctx.def.drag;
+    const double h = ctx.dt;
+    const double drag = ctx.field.drag;
     StepScratch& s = ctx.scratch;
     const size_t n = ctx.bodies.size();
 
@@ -28,7 +28,7 @@ void integrateDirect(StepContext& ctx)
         const Body& b = ctx.bodies[i];
         if (!b.isActive())
             continue;
-        const BodyAcceleration a = appliedAcceleration(ctx.def, b);
+        const BodyAcceleration a = appliedAcceleration(ctx.field, b);
         s.acceleration[i] = a.linear;
         s.angularAcceleration[i] = a.angular;
     }

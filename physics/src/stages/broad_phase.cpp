@@ -5,6 +5,8 @@
 
 #include "aabb_tree.h"
 
+#include "rigidlab/physics/work_budget.h"
+
 #include <algorithm>
 
 namespace rigidlab::physics {
@@ -101,17 +103,32 @@ void BroadPhase::updateBoxes(const std::vector<Body>& bodies, const std::vector<
     }
 }
 
+void BroadPhase::stopCrowded(const Crowding& crowding, std::vector<std::pair<int, int>>& pairs)
+{
+    m_crowding = crowding;
+    pairs.clear();
+    m_found.clear();
+    m_merged.clear();
+    m_pairs.clear();
+    m_tree = std::make_unique<AabbTree>();
+    m_leaf.assign(m_leaf.size(), AabbTree::kNull);
+}
+
 void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                            double margin, const std::vector<double>& grow, double dt,
-                           const std::vector<std::pair<int, int>>& excluded,
+                           const std::vector<std::pair<int, int>>& excluded, std::size_t budget,
                            std::vector<std::pair<int, int>>& pairs)
 {
     const size_t n = bodies.size();
+    m_crowding.reset();
     updateBoxes(bodies, xf, margin, grow, dt);
 
     // New neighbours of the bodies that moved. A pair of two moved bodies is taken when the
-    // lower id asks.
+    // lower id asks. Counted as they come: a heap stops here after a few bodies' queries,
+    // before its pairs fill the memory.
     m_found.clear();
+    std::size_t close = 0; // new pairs whose boxes (not only their fat boxes) overlap
+    const std::size_t fatCap = kFatPairsPerPair * budget;
     for (int i : m_movedList) {
         const bool iDynamic = bodies[static_cast<size_t>(i)].isDynamic();
         queryTree(m_tree->box(m_leaf[static_cast<size_t>(i)]), m_hits);
@@ -121,6 +138,13 @@ void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Tr
             if (!iDynamic && !bodies[static_cast<size_t>(j)].isDynamic())
                 continue; // static and kinematic bodies do not push each other
             m_found.push_back(std::minmax(i, j));
+            if (m_box[static_cast<size_t>(i)].overlaps(m_box[static_cast<size_t>(j)]))
+                ++close;
+            if (close > budget || m_found.size() > fatCap) {
+                const bool fat = close <= budget;
+                stopCrowded({i, fat ? m_found.size() : close, fat}, pairs);
+                return;
+            }
         }
     }
     std::sort(m_found.begin(), m_found.end());
@@ -156,6 +180,8 @@ void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Tr
             continue;
         pairs.push_back(p);
     }
+    if (pairs.size() > budget)
+        stopCrowded({pairs[budget].first, pairs.size(), false}, pairs);
 }
 
 } // namespace rigidlab::physics

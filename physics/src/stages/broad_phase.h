@@ -4,7 +4,9 @@
 
 #include "rigidlab/physics/body.h"
 
+#include <cstddef>
 #include <memory>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -30,6 +32,13 @@ Aabb computeAabb(const Shape& shape, const Transform& xf, double margin);
 
 class AabbTree;
 
+/// Where findPairs stopped: more pairs than its budget (work_budget.h).
+struct Crowding {
+    int body = 0;          ///< a body of the pair that crossed the budget
+    std::size_t pairs = 0; ///< the pairs found when it stopped
+    bool fat = false;      ///< the pairs of fat boxes crossed their cap, not the pairs themselves
+};
+
 /// A dynamic tree of "fat" boxes (each body's box grown by a few centimetres and by its
 /// motion over a couple of steps), and the pairs whose fat boxes overlap, kept from step to
 /// step. A body whose box stays inside its fat box costs nothing but that check; one that
@@ -51,11 +60,15 @@ public:
     /// along its motion. `grow`: per body, how much more than margin its box reaches [m] (a
     /// fast body's motion in the step, continuous.cpp), or empty for none. `excluded` holds
     /// pairs (a < b) that never collide (bodies joined by a pin). Bodies asleep keep the box
-    /// they had.
+    /// they had. `budget`: the most pairs (pairBudget()); past it, or past kFatPairsPerPair
+    /// times it of fat-box pairs, the search stops at once (its memory stays in proportion to
+    /// the budget), `pairs` is empty, crowding() says where, and the tree starts afresh.
     void findPairs(const std::vector<Body>& bodies, const std::vector<Transform>& xf, double margin,
                    const std::vector<double>& grow, double dt,
-                   const std::vector<std::pair<int, int>>& excluded,
+                   const std::vector<std::pair<int, int>>& excluded, std::size_t budget,
                    std::vector<std::pair<int, int>>& pairs);
+    /// Set when the last findPairs stopped at its budget.
+    const std::optional<Crowding>& crowding() const { return m_crowding; }
 
     /// Calls fn(id) for every body whose fat box overlaps `box` (as of the last findPairs).
     template <typename Fn> void query(const Aabb& box, Fn&& fn) const;
@@ -71,6 +84,8 @@ private:
     /// moved.
     void updateBoxes(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                      double margin, const std::vector<double>& grow, double dt);
+    /// Stops a search at its budget: no pairs, and a tree to be built again from nothing.
+    void stopCrowded(const Crowding& crowding, std::vector<std::pair<int, int>>& pairs);
 
     std::unique_ptr<AabbTree> m_tree;
     std::vector<int> m_leaf;    ///< per body: its leaf in the tree, -1 if none
@@ -81,6 +96,7 @@ private:
     std::vector<std::pair<int, int>> m_pairs; ///< fat boxes overlapping, sorted
     std::vector<std::pair<int, int>> m_found, m_merged;
     mutable std::vector<int> m_hits;
+    std::optional<Crowding> m_crowding;
 };
 
 template <typename Fn> void BroadPhase::query(const Aabb& box, Fn&& fn) const

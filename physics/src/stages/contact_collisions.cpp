@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Stage::ContactSolve (profile.h): the sequential solver's collision phase (contact_solver.h,
-// solveCollisions()), before its contact phase (contact_solver.cpp).
+// solveCollisions()), before its contact phase (sequential_impulses.cpp).
 //
 // Guendelman, Bridson and Fedkiw, "Nonconvex rigid bodies with stacking" (SIGGRAPH 2003):
 // sweep over the contacts; each one that closes within the step and approaches faster than

@@ -133,12 +133,12 @@ void solveContacts(StepContext& ctx)
     // The pins a contact touches are solved with the contacts (contact_solver_pins.cpp); the
     // paper's impulse stays the paper's, one impulse per contact point.
     const bool jointed = touchedJoints(ctx);
-    if (jointed && ctx.def.solver != SolverKind::PaperImpulse)
+    if (jointed && ctx.solver != SolverKind::PaperImpulse)
         solver.setPins(s.touchedJoints);
-    if (ctx.def.solver == SolverKind::PaperImpulse)
+    if (ctx.solver == SolverKind::PaperImpulse)
         solver.solveSeed();
     else
-        solver.solveSequential(ctx.def.iterations, true, ctx.restitutionThreshold);
+        solver.solveSequential(ctx.iterations, true, ctx.restitutionThreshold);
 
     // A resting contact's impulse P is the constraint force P / dt held through the step,
     // beside gravity and the rest: the position moves by what the integrator makes of a

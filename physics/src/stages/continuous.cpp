@@ -61,7 +61,7 @@ double ownSize(const Body& b)
 void findSweeps(StepContext& ctx)
 {
     ctx.sweep.clear();
-    if (!ctx.def.continuous)
+    if (!ctx.continuous)
         return;
     const double h = ctx.dt;
     for (size_t i = 0; i < ctx.bodies.size(); ++i) {
@@ -70,7 +70,7 @@ void findSweeps(StepContext& ctx)
             continue;
         const double reach = outerRadius(b);
         const double motion = (b.velocity.norm() + std::abs(b.angularVelocity) * reach) * h +
-                              (b.isDynamic() ? ctx.def.gravity.norm() * h * h : 0.0);
+                              (b.isDynamic() ? ctx.field.gravity.norm() * h * h : 0.0);
         // Every solver times an isolated impact from the contact's gap at the start of the
         // step (soft_impacts.cpp), so it wants the contact of every body that moves more than
         // the margin in a step, before the two overlap (found only once they overlap, a cut

@@ -34,7 +34,7 @@ Vec2 movingPointVelocity(const std::vector<Body>& bodies, const std::vector<int>
 
 bool Dynamics::dissipates() const
 {
-    if (m_def.drag != 0.0)
+    if (m_field.drag != 0.0)
         return true;
     for (const SpringDef& s : m_springs)
         if (s.damping != 0.0)
@@ -119,14 +119,14 @@ Dissipation Dynamics::dissipation(const Eigen::VectorXd& q, const Eigen::VectorX
 {
     Dissipation p;
     // Drag: F = -drag m v, M = -drag I w on every active body.
-    if (m_def.drag != 0.0) {
+    if (m_field.drag != 0.0) {
         for (size_t id = 0; id < m_bodies.size(); ++id) {
             const Body& b = m_bodies[id];
             if (!b.isActive())
                 continue;
             const Eigen::Index i = 3 * static_cast<Eigen::Index>(m_slot[id]);
-            p.drag += m_def.drag * (b.mass * (v[i] * u[i] + v[i + 1] * u[i + 1]) +
-                                    b.inertia * v[i + 2] * u[i + 2]);
+            p.drag += m_field.drag * (b.mass * (v[i] * u[i] + v[i + 1] * u[i + 1]) +
+                                      b.inertia * v[i + 2] * u[i + 2]);
         }
     }
     // Dampers: c dL/dt along n, the force on A being +c dL/dt n (see forces.cpp); its power on

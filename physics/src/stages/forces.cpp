@@ -87,7 +87,7 @@ void Dynamics::appliedAccelerations(const Eigen::VectorXd& q, const Eigen::Vecto
         if (!b.isDynamic())
             continue;
         const Eigen::Index i = 3 * static_cast<Eigen::Index>(m_slot[id]);
-        const AppliedLoad load = appliedLoad(m_def, b, Vec2(v[i], v[i + 1]), v[i + 2]);
+        const AppliedLoad load = appliedLoad(m_field, b, Vec2(v[i], v[i + 1]), v[i + 2]);
         a[i] += load.force.x();
         a[i + 1] += load.force.y();
         a[i + 2] += load.torque;
@@ -111,7 +111,7 @@ void Dynamics::appliedAccelerations(const Eigen::VectorXd& q, const Eigen::Vecto
     }
 
     // Mutual gravitation between dynamic bodies, as point masses at their centres.
-    if (m_def.gravitation != 0.0) {
+    if (m_field.gravitation != 0.0) {
         for (size_t i = 0; i < m_bodies.size(); ++i) {
             if (!m_bodies[i].isDynamic())
                 continue;
@@ -125,7 +125,7 @@ void Dynamics::appliedAccelerations(const Eigen::VectorXd& q, const Eigen::Vecto
                     continue;
                 const double r = std::sqrt(r2);
                 const Vec2 f =
-                    (m_def.gravitation * m_bodies[i].mass * m_bodies[j].mass / (r2 * r)) * d;
+                    (m_field.gravitation * m_bodies[i].mass * m_bodies[j].mass / (r2 * r)) * d;
                 addForce(static_cast<BodyId>(i), f, 0.0);
                 addForce(static_cast<BodyId>(j), -f, 0.0);
             }

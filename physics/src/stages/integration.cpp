@@ -26,7 +26,7 @@ void integrate(StepContext& ctx)
         return;
     }
     StageTimer timer(ctx.profile, Stage::Integration);
-    const double t = ctx.time, h = ctx.def.dt;
+    const double t = ctx.time, h = ctx.dt;
     withState(ctx, [&](Dynamics& dynamics, Eigen::VectorXd& q, Eigen::VectorXd& v) {
         StepScratch& s = ctx.scratch;
         const bool dissipates = dynamics.dissipates();
@@ -37,7 +37,7 @@ void integrate(StepContext& ctx)
         ctx.integrator.step(dynamics, t, h, q, v);
         // What drag and dampers took, before the joints move anything (dissipation.cpp).
         if (dissipates) {
-            const Dissipation loss = stepDissipation(dynamics, ctx.def.integrator, h, s.q0, s.v0, q,
+            const Dissipation loss = stepDissipation(dynamics, ctx.integratorKind, h, s.q0, s.v0, q,
                                                      v, s.meanVelocity, s.midpoint);
             ctx.dragLoss += loss.drag;
             ctx.dampingLoss += loss.damping;
@@ -47,7 +47,7 @@ void integrate(StepContext& ctx)
         ctx.profile.ms[static_cast<int>(Stage::Forces)] += dynamics.forceMilliseconds;
         ctx.profile.ms[static_cast<int>(Stage::Integration)] -= dynamics.forceMilliseconds;
         // Back onto the joints (joints.cpp): SHAKE for symplectic Euler, RATTLE for the others.
-        dynamics.projectAfterStep(ctx.def.integrator, h, q, v, s.shake);
+        dynamics.projectAfterStep(ctx.integratorKind, h, q, v, s.shake);
     });
 }
 

@@ -137,7 +137,7 @@ void sleepIslands(StepContext& ctx)
     StepScratch& s = ctx.scratch;
     const size_t n = ctx.bodies.size();
     std::vector<int>& parent = s.islandParent; // from wakeIslands(): the contacts are the same
-    const double h = ctx.def.dt;
+    const double h = ctx.dt;
 
     // Each awake body's time at rest; the least over its island decides.
     std::vector<double>& rest = s.islandRest; // per root: the island's least rest time

@@ -13,6 +13,8 @@
 
 #include "stages.h"
 
+#include "rigidlab/physics/work_budget.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -88,7 +90,8 @@ void findContacts(StepContext& ctx)
         placeMovedBodies(ctx);
     // Fast bodies: boxes and margins over their motion in this step (continuous collision).
     findSweeps(ctx);
-    s.broadPhase.findPairs(ctx.bodies, s.xf, margin, ctx.sweep, ctx.dt, ctx.jointPairs, s.pairs);
+    s.broadPhase.findPairs(ctx.bodies, s.xf, margin, ctx.sweep, ctx.dt, ctx.jointPairs,
+                           pairBudget(ctx.bodies.size()), s.pairs);
     broad.stop();
     ctx.profile.pairs = static_cast<int>(s.pairs.size());
     ctx.profile.refitted = s.broadPhase.refitted();

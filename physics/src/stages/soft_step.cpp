@@ -171,8 +171,8 @@ double softCollisions(StepContext& ctx, double threshold)
         ContactSolver& solver = s.solver;
         solver.begin(ctx.contacts, s.previous, ctx.bodies, ctx.contactSettings, h, s.xfPosition,
                      s.velocityAtStart, s.angularVelocityAtStart);
-        bounced = solver.solveCollisionPhase(threshold, ctx.def.iterations,
-                                             exact ? &s.isolated : nullptr);
+        bounced =
+            solver.solveCollisionPhase(threshold, ctx.iterations, exact ? &s.isolated : nullptr);
     }
     // When each body's velocity changed: the collision phase's moments, and the isolated
     // impacts' (their bodies have no other contact, so no bounce of the phase).
@@ -231,12 +231,12 @@ double softForces(StepContext& ctx)
         s.anyRestitution = s.anyRestitution || b.restitution > 0.0;
         if (!b.isActive())
             continue;
-        const BodyAcceleration a = appliedAcceleration(ctx.def, b);
+        const BodyAcceleration a = appliedAcceleration(ctx.field, b);
         s.acceleration[i] = a.linear;
         s.angularAcceleration[i] = a.angular;
-        if (ctx.def.drag != 0.0)
-            dragPower += ctx.def.drag * (b.mass * b.velocity.squaredNorm() +
-                                         b.inertia * b.angularVelocity * b.angularVelocity);
+        if (ctx.field.drag != 0.0)
+            dragPower += ctx.field.drag * (b.mass * b.velocity.squaredNorm() +
+                                           b.inertia * b.angularVelocity * b.angularVelocity);
     }
     ++ctx.evaluations;
     ctx.profile.directIntegration = true;

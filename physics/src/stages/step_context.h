@@ -2,9 +2,11 @@
 #pragma once
 // Private: what every stage of a step reads and writes, computed once at the start of
 // World::step() (after Box2D v3's b2StepContext): the step and the substep with their
-// inverses, the soft contact's coefficients, the plan of the step, the world's parts, the
-// buffers reused from step to step, and the profile. No stage reads the world's settings on
-// its own. The stages are free functions of this context (stages.h).
+// inverses, the soft contact's coefficients, the plan of the step, the settings the stages
+// read, the world's parts, the buffers reused from step to step, and the profile. No stage
+// reads the world's settings on its own (tests/tools/check_code_shape.py checks that no stage
+// file reaches for them through the context). The stages are free functions of this context
+// (stages.h).
 //
 // Nothing in StepScratch is state: a copied world starts with empty buffers (FreshOnCopy)
 // and steps exactly as the original (the golden test checks it).
@@ -127,9 +129,14 @@ struct StepContext {
     double restitutionThreshold = 0;
     bool plain = false; ///< EngineSettings::plainPaths: the plain paths of every stage
     StepPlan plan;
+    // The world's settings that the stages read, taken once.
+    IntegratorKind integratorKind = IntegratorKind::SymplecticEuler;
+    SolverKind solver = SolverKind::SoftStep;
+    int iterations = 1;      ///< the impulse solvers' and the soft step's bounce sweeps
+    bool continuous = false; ///< continuous collision (WorldDef::continuous)
+    ForceField field;        ///< gravity, drag and gravitation
 
-    // The world's settings and parts.
-    const WorldDef& def;
+    // The world's parts.
     const ContactSettings& contactSettings;
     std::vector<Body>& bodies;
     const std::vector<SpringDef>& springs;
@@ -196,7 +203,7 @@ inline void withState(StepContext& ctx, Fn&& fn, const std::vector<PinJointDef>*
         q.segment<3>(i) << b.position.x(), b.position.y(), b.angle;
         v.segment<3>(i) << b.velocity.x(), b.velocity.y(), b.angularVelocity;
     }
-    Dynamics dynamics(ctx.def, ctx.bodies, ctx.slot, ctx.springs, joints ? *joints : ctx.joints);
+    Dynamics dynamics(ctx.field, ctx.bodies, ctx.slot, ctx.springs, joints ? *joints : ctx.joints);
     fn(dynamics, q, v);
     ctx.evaluations += dynamics.evaluations;
     for (size_t s = 0; s < ctx.moving.size(); ++s) {

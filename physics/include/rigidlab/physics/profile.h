@@ -29,7 +29,8 @@ enum class Stage {
     /// bodies in fast/integrate_direct.cpp), then the joints projected back (joints.cpp).
     Integration,
     /// Impulses, the joints projected again, position correction (contact_response.cpp,
-    /// contact_solver.cpp). The soft step (soft_step.cpp) runs Forces, Integration and
+    /// contact_solver.cpp, paper_impulse.cpp, sequential_impulses.cpp). The soft step
+    /// (soft_step.cpp) runs Forces, Integration and
     /// ContactSolve together in substeps, its contacts in soft_solver.cpp, coloured in
     /// fast/soft_colouring.cpp and solved by fast/soft_kernel.cpp.
     ContactSolve,

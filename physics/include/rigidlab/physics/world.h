@@ -51,10 +51,6 @@ public:
     void setDt(double dt);
     void setIntegrator(IntegratorKind kind);
     void setSolver(SolverKind kind) { m_def.solver = kind; }
-    /// Why the sequential-impulse solver stands in for the soft step asked for (step_plan.cpp):
-    /// None, since the soft step runs every world; and the solver that runs, the one asked for.
-    SoftStepStandIn softStepStandIn() const;
-    SolverKind solverRunning() const;
     void setIterations(int n);
     // A change of gravity, restitution or friction wakes every body.
     void setGravity(const Vec2& g);
@@ -72,7 +68,8 @@ public:
     /// The integrator in use (its error estimate, its substeps).
     const Integrator& integrator() const { return *m_integrator; }
 
-    /// Set when a step diverged (divergence.cpp): step() then does nothing more.
+    /// Set when a step diverged (divergence.cpp), or its bodies crowded past the step's work
+    /// budget (work_budget.h): step() then does nothing more.
     const std::optional<Divergence>& divergence() const { return m_divergence; }
 
     // State.
@@ -139,6 +136,9 @@ private:
     void wakeAll();
     void rememberStartEnergy();
     void checkDivergence();
+    /// Whether this step's broad phase stopped at the work budget (work_budget.h); then the
+    /// world is stopped with that diagnosis (work_budget.cpp).
+    bool stopWhenCrowded();
 
     WorldDef m_def;
     ContactSettings m_contactSettings;
