@@ -9,11 +9,11 @@
 
 namespace rigidlab::lessons::detail {
 
-/// Reads `field` from `object` at `place` into `target` (object `index`). An absent key is
-/// fine unless the row is required; a kind that is not plain is left to the caller (true).
+/// Reads `field` from `object` at `place` into `out`: unset when the key is absent (fine unless
+/// the row is required) or the kind is not plain (left to the caller).
 template <class Target>
-bool readPlainField(JsonReader& in, const schema::FieldOf<Target>& field, const QJsonObject& object,
-                    const QString& place, Target& target, std::size_t index)
+bool readPlainValue(JsonReader& in, const schema::FieldOf<Target>& field, const QJsonObject& object,
+                    const QString& place, schema::Value& out)
 {
     using schema::Kind;
     const QString key = QString::fromLatin1(field.key.data(), qsizetype(field.key.size()));
@@ -24,7 +24,7 @@ bool readPlainField(JsonReader& in, const schema::FieldOf<Target>& field, const 
         double v = 0;
         if (!in.number(object, key, place, v, field.rule, field.range, field.required))
             return false;
-        field.set(target, index, v);
+        out = v;
         return true;
     }
     case Kind::Integer: {
@@ -32,21 +32,21 @@ bool readPlainField(JsonReader& in, const schema::FieldOf<Target>& field, const 
         if (!in.integer(object, key, place, v, static_cast<int>(field.range.min),
                         static_cast<int>(field.range.max), field.required))
             return false;
-        field.set(target, index, v);
+        out = v;
         return true;
     }
     case Kind::Vec2: {
         physics::Vec2 v = physics::Vec2::Zero();
         if (!in.vec2(object, key, place, v, field.range, field.required))
             return false;
-        field.set(target, index, v);
+        out = v;
         return true;
     }
     case Kind::Bool: {
         bool v = false;
         if (!in.boolean(object, key, place, v, field.required))
             return false;
-        field.set(target, index, v);
+        out = v;
         return true;
     }
     case Kind::Choice: {
@@ -55,12 +55,26 @@ bool readPlainField(JsonReader& in, const schema::FieldOf<Target>& field, const 
             return false;
         if (!field.accepts(name))
             return in.fail(joinPlace(place, key), field.unknown(name));
-        field.set(target, index, name);
+        out = name;
         return true;
     }
     default:
         return true;
     }
+}
+
+/// Reads `field` from `object` at `place` into `target` (object `index`). An absent key is
+/// fine unless the row is required; a kind that is not plain is left to the caller (true).
+template <class Target>
+bool readPlainField(JsonReader& in, const schema::FieldOf<Target>& field, const QJsonObject& object,
+                    const QString& place, Target& target, std::size_t index)
+{
+    schema::Value v;
+    if (!readPlainValue(in, field, object, place, v))
+        return false;
+    if (!std::holds_alternative<std::monostate>(v))
+        field.set(target, index, v);
+    return true;
 }
 
 } // namespace rigidlab::lessons::detail

@@ -11,13 +11,6 @@
 
 namespace rigidlab::lessons {
 
-namespace {
-
-/// Gravity for `gravity: true` on a scene that has none [m/s^2].
-const physics::Vec2 kStandardGravity(0.0, -9.81);
-
-} // namespace
-
 QString Comparison::label(int i) const
 {
     assert(i >= 0 && i < count());
@@ -52,10 +45,9 @@ QStringList LessonStep::heldBack(const std::vector<bool>& answered) const
 LessonStep askedStep(const LessonStep& step, const Question& question)
 {
     LessonStep asked = step;
-    for (const schema::SettingsField& f : schema::settingsFields()) {
-        const schema::Value v = f.get(question.set, 0);
-        if (!std::holds_alternative<std::monostate>(v)) {
-            f.set(asked.settings, 0, v);
+    for (const schema::Field& f : schema::settings()) {
+        if (question.set.has(f.key)) {
+            asked.settings.set(f.key, question.set.value(f.key));
         }
     }
     return asked;
@@ -63,41 +55,22 @@ LessonStep askedStep(const LessonStep& step, const Question& question)
 
 bool asksSettings(const Question& question)
 {
-    const auto fields = schema::settingsFields();
-    return std::any_of(fields.begin(), fields.end(), [&](const schema::SettingsField& f) {
-        return !std::holds_alternative<std::monostate>(f.get(question.set, 0));
-    });
+    return !question.set.empty();
 }
 
 void applySettings(const StepSettings& settings, physics::World& world)
 {
-    if (settings.integrator) {
-        world.setIntegrator(*settings.integrator);
-    }
-    if (settings.dt) {
-        world.setDt(*settings.dt);
-    }
-    if (settings.solver) {
-        world.setSolver(*settings.solver);
-    }
-    if (settings.iterations) {
-        world.setIterations(*settings.iterations);
-    }
-    if (settings.restitution) {
-        world.setRestitution(*settings.restitution);
-    }
-    if (settings.friction) {
-        world.setFriction(*settings.friction);
-    }
-    if (settings.gravity) {
-        // Off: none at all. On: the scene's own gravity, or the Earth's when it has none.
-        if (!*settings.gravity) {
-            world.setGravity(physics::Vec2::Zero());
-        } else if (world.def().gravity == physics::Vec2::Zero()) {
-            world.setGravity(kStandardGravity);
+    // In the table's order; the time scale is the window's clock, not the world's (no apply).
+    for (const schema::Field& f : schema::settings()) {
+        if (f.apply && settings.has(f.key)) {
+            f.apply(world, settings.value(f.key));
         }
     }
-    // timeScale is the window's clock, not the world's.
+}
+
+double exportRunTime(const LessonStep& step)
+{
+    return step.endTime ? std::min(step.exportTime, *step.endTime) : step.exportTime;
 }
 
 std::vector<physics::World> buildStepWorlds(const LessonStep& step)

@@ -5,6 +5,7 @@
 
 #include "format/languages.h"
 #include "format/scene.h"
+#include "format/schema_value.h"
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
 
@@ -17,8 +18,10 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
+#include <variant>
 #include <vector>
 
 namespace rigidlab::lessons {
@@ -30,8 +33,8 @@ inline constexpr std::array<std::string_view, 5> kStepPlotNames{"energy", "momen
                                                                 "compare-energy", "compare-drift"};
 inline constexpr std::array<std::string_view, 6> kStepOverlayNames{
     "velocities", "contacts", "boxes", "centres", "trails", "springs"};
-inline constexpr std::array<std::string_view, 5> kStepPanelNames{"controls", "inspector", "sat",
-                                                                 "bounces", "collision"};
+inline constexpr std::array<std::string_view, 6> kStepPanelNames{
+    "controls", "inspector", "sat", "bounces", "collision", "measurement"};
 
 /// The version this loader reads (the value of the top-level key "rigidlab-lesson").
 inline constexpr int kLessonFormatVersion = 1;
@@ -61,16 +64,39 @@ struct Measure {
     double time = 0;  ///< the others: when the value is read [s]
 };
 
-/// Settings a step sets on top of its scene's.
-struct StepSettings {
-    std::optional<physics::IntegratorKind> integrator;
-    std::optional<double> dt; ///< [s]
-    std::optional<physics::SolverKind> solver;
-    std::optional<int> iterations;
-    std::optional<double> restitution; ///< for every body
-    std::optional<double> friction;    ///< for every body
-    std::optional<bool> gravity;       ///< false: no gravity
-    std::optional<double> timeScale;   ///< the window's slow motion, 0.1 to 4
+/// Settings a step sets on top of its scene's (its "settings", a question's "set"): values by
+/// the key of their row in the run-time settings table (schema::settings(), scene_schema.h),
+/// in the table's value types ("integrator": its name, "gravity": on or off). A key it does not
+/// hold is the scene's.
+class StepSettings {
+public:
+    /// The value given for `key`, or unset.
+    schema::Value value(std::string_view key) const
+    {
+        const auto it = m_values.find(key);
+        return it == m_values.end() ? schema::Value() : it->second;
+    }
+    /// The value for `key` as a T, when it is given (and is one).
+    template <class T> std::optional<T> get(std::string_view key) const
+    {
+        const schema::Value v = value(key);
+        if (const T* t = std::get_if<T>(&v))
+            return *t;
+        return std::nullopt;
+    }
+    bool has(std::string_view key) const { return m_values.find(key) != m_values.end(); }
+    /// Gives `key` the value `v`; unset: the scene's again.
+    void set(std::string_view key, const schema::Value& v)
+    {
+        if (std::holds_alternative<std::monostate>(v))
+            m_values.erase(std::string(key));
+        else
+            m_values.insert_or_assign(std::string(key), v);
+    }
+    bool empty() const { return m_values.empty(); }
+
+private:
+    std::map<std::string, schema::Value, std::less<>> m_values;
 };
 
 /// The fewest and the most options a choice question offers.
@@ -140,7 +166,7 @@ struct LessonStep {
     std::optional<Comparison> compare;
     QStringList plots;    ///< of: energy, momentum, drift, compare-energy, compare-drift
     QStringList overlays; ///< of: velocities, contacts, boxes, centres, trails, springs
-    QStringList panels;   ///< of: controls, inspector, sat, bounces, collision
+    QStringList panels;   ///< of: controls, inspector, sat, bounces, collision, measurement
     /// Controls the student may change (integrator, dt, solver, iterations, restitution,
     /// friction, gravity, timeScale); nullopt: all of them.
     std::optional<QStringList> allow;
@@ -209,6 +235,10 @@ bool asksSettings(const Question& question);
 
 /// Applies a step's settings to a world built from its scene.
 void applySettings(const StepSettings& settings, physics::World& world);
+
+/// How long a step runs without a window (its exported plots, the worksheet's figures): its
+/// exportTime, cut short at its endTime, where the window's run stops too [s].
+double exportRunTime(const LessonStep& step);
 
 /// The step's worlds: [0] the main world, then one per compared variant (count() - 1 more,
 /// the first variant being the main world itself).

@@ -19,15 +19,19 @@ bool readSettingsObject(JsonReader& in, const QJsonValue& value, const QString& 
 {
     QJsonObject s;
     QStringList keys;
-    for (const schema::SettingsField& f : schema::settingsFields()) {
+    for (const schema::Field& f : schema::settings()) {
         keys << QString::fromLatin1(f.key.data(), qsizetype(f.key.size()));
     }
     if (!in.asObject(value, at, s) || !in.checkKeys(s, at, keys)) {
         return false;
     }
-    for (const schema::SettingsField& f : schema::settingsFields()) {
-        if (!readPlainField(in, f, s, at, settings, 0)) {
+    for (const schema::Field& f : schema::settings()) {
+        schema::Value v;
+        if (!readPlainValue(in, f, s, at, v)) {
             return false;
+        }
+        if (!std::holds_alternative<std::monostate>(v)) {
+            settings.set(f.key, v);
         }
     }
     return true;
@@ -60,17 +64,17 @@ bool readQuestionSet(JsonReader& in, const QJsonObject& question, const QString&
         return in.fail(at, FileMessages::tr("sets nothing (leave the key out when the student "
                                             "sets nothing)"));
     }
-    if (set.timeScale) {
+    if (set.has("timeScale")) {
         return in.fail(joinPlace(at, u"timeScale"),
                        FileMessages::tr("slow motion does not change what is measured: leave it "
                                         "out"));
     }
-    if (step.compare && !step.compare->integrators.empty() && set.integrator) {
+    if (step.compare && !step.compare->integrators.empty() && set.has("integrator")) {
         return in.fail(joinPlace(at, u"integrator"),
                        FileMessages::tr("this step compares integrators, each world its own: "
                                         "the student cannot choose one"));
     }
-    if (step.compare && !step.compare->solvers.empty() && set.solver) {
+    if (step.compare && !step.compare->solvers.empty() && set.has("solver")) {
         return in.fail(joinPlace(at, u"solver"),
                        FileMessages::tr("this step compares solvers, each world its own: the "
                                         "student cannot choose one"));
@@ -120,7 +124,7 @@ bool readCompare(JsonReader& in, const QJsonObject& object, const QString& place
     }
     const QStringView key = byIntegrator ? QStringView(u"integrators") : QStringView(u"solvers");
     const QString listAt = joinPlace(at, key);
-    if (byIntegrator ? step.settings.integrator.has_value() : step.settings.solver.has_value()) {
+    if (step.settings.has(byIntegrator ? "integrator" : "solver")) {
         return in.fail(listAt,
                        FileMessages::tr("settings.%1 is given too: the main world runs the first "
                                         "of this list, so leave settings.%1 out")

@@ -243,7 +243,7 @@ bool checkStep(JsonReader& in, const QString& place, StepContext& context, const
         }
     }
     const QString exportPlace = joinPlace(place, u"exportTime");
-    const double dt = step.settings.dt.value_or(step.scene.world.dt);
+    const double dt = step.settings.get<double>("dt").value_or(step.scene.world.dt);
     if (step.exportTime / dt > kMaxExportSteps) {
         return in.fail(exportPlace,
                        FileMessages::tr("%1 s at a step of %2 s is more than %3 steps")

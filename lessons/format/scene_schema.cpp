@@ -41,9 +41,66 @@ const Field* findField(Object object, std::string_view key)
     return nullptr;
 }
 
-std::span<const SettingsField> settingsFields()
+std::span<const Field> settings()
 {
-    return rows::settingsRows();
+    static const std::vector<Field> table = [] {
+        std::vector<Field> out;
+        for (const Field& row : rows::worldRows()) {
+            if (row.setting == 0)
+                continue;
+            Field f = row.stepRow ? *row.stepRow : row;
+            f.setting = row.setting;
+            f.optional = true; // a step that leaves it out keeps the scene's
+            out.push_back(f);
+        }
+        std::stable_sort(out.begin(), out.end(),
+                         [](const Field& a, const Field& b) { return a.setting < b.setting; });
+        // The window's own after the world's.
+        for (const Field& row : rows::windowSettingRows())
+            out.push_back(row);
+        return out;
+    }();
+    return table;
+}
+
+const Field* findSetting(std::string_view key)
+{
+    for (const Field& f : settings())
+        if (f.key == key)
+            return &f;
+    return nullptr;
+}
+
+const Field* worldRowOf(const Field& setting)
+{
+    const Field* row = findField(Object::World, setting.key);
+    return row && row->setting ? row : nullptr;
+}
+
+bool takes(const Field& row, const Value& value)
+{
+    switch (row.kind) {
+    case Kind::Number:
+        if (const double* d = std::get_if<double>(&value))
+            return row.range.contains(*d);
+        return false;
+    case Kind::Integer:
+        if (const int* i = std::get_if<int>(&value))
+            return row.range.contains(*i);
+        return false;
+    case Kind::Vec2:
+        if (const Vec2* v = std::get_if<Vec2>(&value))
+            return row.range.contains(v->x()) && row.range.contains(v->y());
+        return false;
+    case Kind::Bool:
+        return std::holds_alternative<bool>(value);
+    case Kind::Choice:
+        if (const QString* name = std::get_if<QString>(&value))
+            return row.accepts(*name);
+        return false;
+    default:
+        return false;
+    }
 }
 
 QStringList keys(Object object)
@@ -77,7 +134,7 @@ const std::vector<std::string_view>& stepControlNames()
 {
     static const std::vector<std::string_view> names = [] {
         std::vector<std::string_view> out;
-        for (const SettingsField& f : rows::settingsRows())
+        for (const Field& f : settings())
             out.push_back(f.key);
         return out;
     }();

@@ -14,6 +14,7 @@
 #include "format/lesson.h"
 #include "format/limits.h"
 #include "format/scene.h"
+#include "format/schema_value.h"
 
 #include <QString>
 #include <QStringList>
@@ -43,9 +44,6 @@ enum class Kind {
     End,       ///< a spring's or joint's body: its id (QString; set also takes the index, int),
                ///< unset for the world
 };
-
-/// A field's value: unset (the default, the world's, absent), or one of the kinds' types.
-using Value = std::variant<std::monostate, double, int, bool, physics::Vec2, QString>;
 
 /// The translation context of the rows' labels.
 inline constexpr const char* kContext = "SceneSchema";
@@ -80,17 +78,39 @@ template <class Target> struct FieldOf {
     bool writtenLast = false; ///< written after the others (where older files have it)
     /// LocalText: every language's text where the file gave an object of languages.
     LocalTextMap (*texts)(const Target&, std::size_t index) = nullptr;
+
+    // A run-time setting: a world row that a lesson step may set, the controls change during a
+    // run, "allow" may leave free and a reset keeps (schema::settings()).
+    /// Where the settings list it (the controls, a step's settings), from 1; 0: not one.
+    int setting = 0;
+    /// The setting's change to a running world, with a value as this row holds it.
+    void (*apply)(physics::World&, const Value&) = nullptr;
+    /// The row a lesson step gives it by, when a step gives it otherwise than a scene
+    /// (gravity: on or off); null: this row.
+    const FieldOf* stepRow = nullptr;
+    /// The worlds a step compares keep their own (the integrator, the solver): a change in a
+    /// run reaches the main world only.
+    bool mainWorldOnly = false;
 };
 
 using Field = FieldOf<Scene>;
-using SettingsField = FieldOf<StepSettings>;
 
 /// The rows of `object`, in the order of the file.
 std::span<const Field> fields(Object object);
 /// The row of `object` with this key, or null.
 const Field* findField(Object object, std::string_view key);
-/// The rows of a lesson step's "settings".
-std::span<const SettingsField> settingsFields();
+/// The run-time settings, in the order the controls and a step's settings list them: the
+/// world rows that are one (each as a step gives it: its stepRow, else itself), then the
+/// window's time scale (no apply: the window's clock, not the world's). A step's "settings", a
+/// question's "set", "allow", the controls' locks, a reset and the edits of a run read it;
+/// adding a world setting is one world row with `setting` and `apply`.
+std::span<const Field> settings();
+/// The setting with this key, or null.
+const Field* findSetting(std::string_view key);
+/// The world row a setting changes (gravity's vector for its on/off), or null (time scale).
+const Field* worldRowOf(const Field& setting);
+/// Whether `value` is one `row` takes: a number in its range, a name it accepts.
+bool takes(const Field& row, const Value& value);
 
 /// The keys of `object` in file order, the extra keys of the format appended ("rigidlab").
 QStringList keys(Object object);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The rows of springs, pins and a lesson step's settings (scene_schema.h): data, one field a
+// The rows of springs, pins and the window's run-time settings (scene_schema.h): data, one field a
 // row.
 
 #include "format/scene_schema_rows.h"
@@ -99,96 +99,17 @@ const Field kJointFields[] = {
      .set = jointSet<&PinJointDef::anchorB>},
 };
 
-// --- A lesson step's settings --------------------------------------------------------------------
+// --- The window's run-time settings --------------------------------------------------------------
 
-template <auto Member> Value settingGet(const StepSettings& s, std::size_t)
-{
-    const auto& v = s.*Member;
-    return v ? Value(*v) : Value();
-}
-template <auto Member> void settingSet(StepSettings& s, std::size_t, const Value& v)
-{
-    using T = typename std::remove_cvref_t<decltype(s.*Member)>::value_type;
-    if (std::holds_alternative<std::monostate>(v))
-        s.*Member = std::nullopt;
-    else
-        s.*Member = as<T>(v);
-}
-
-const SettingsField kSettingsFields[] = {
-    {.key = "integrator",
-     .label = QT_TRANSLATE_NOOP("SceneSchema", "Integrator"),
-     .kind = Kind::Choice,
-     .get =
-         [](const StepSettings& s, std::size_t) {
-             return s.integrator ? Value(fromView(physics::integratorName(*s.integrator)))
-                                 : Value();
-         },
-     .set =
-         [](StepSettings& s, std::size_t, const Value& v) {
-             s.integrator = physics::integratorFromName(as<QString>(v).toStdString());
-         },
-     .optional = true,
-     .accepts = isIntegrator,
-     .unknown = detail::unknownIntegrator,
-     .options = integratorOptions},
-    {.key = "dt",
-     .label = QT_TRANSLATE_NOOP("SceneSchema", "Time step dt"),
-     .range = limits::kDt,
-     .rule = R::Positive,
-     .get = settingGet<&StepSettings::dt>,
-     .set = settingSet<&StepSettings::dt>,
-     .optional = true},
-    {.key = "solver",
-     .label = QT_TRANSLATE_NOOP("SceneSchema", "Solver"),
-     .kind = Kind::Choice,
-     .get =
-         [](const StepSettings& s, std::size_t) {
-             return s.solver ? Value(fromView(physics::solverName(*s.solver))) : Value();
-         },
-     .set =
-         [](StepSettings& s, std::size_t, const Value& v) {
-             s.solver = physics::solverFromName(as<QString>(v).toStdString());
-         },
-     .optional = true,
-     .accepts = isSolver,
-     .unknown = detail::unknownSolver,
-     .options = solverOptions},
-    {.key = "iterations",
-     .label = QT_TRANSLATE_NOOP("SceneSchema", "Iterations"),
-     .kind = Kind::Integer,
-     .range = limits::kIterations,
-     .get = settingGet<&StepSettings::iterations>,
-     .set = settingSet<&StepSettings::iterations>,
-     .optional = true},
-    {.key = "restitution",
-     .label = QT_TRANSLATE_NOOP("SceneSchema", "Restitution e"),
-     .range = limits::kRestitution,
-     .rule = R::UnitInterval,
-     .get = settingGet<&StepSettings::restitution>,
-     .set = settingSet<&StepSettings::restitution>,
-     .optional = true},
-    {.key = "friction",
-     .label = QT_TRANSLATE_NOOP("SceneSchema", "Friction μ"),
-     .range = limits::kFriction,
-     .rule = R::NonNegative,
-     .get = settingGet<&StepSettings::friction>,
-     .set = settingSet<&StepSettings::friction>,
-     .optional = true},
-    {.key = "gravity",
-     .label = QT_TRANSLATE_NOOP("SceneSchema", "Gravity"),
-     .kind = Kind::Bool,
-     .get = settingGet<&StepSettings::gravity>,
-     .set = settingSet<&StepSettings::gravity>,
-     .optional = true},
-    // The window's slow motion; a factor, so its messages name no unit.
+// The window's slow motion: a setting of the run, not of the world (no apply); a factor, so its
+// messages name no unit.
+const Field kWindowSettings[] = {
     {.key = "timeScale",
      .label = QT_TRANSLATE_NOOP("SceneSchema", "Time scale"),
      .range = {limits::kTimeScale.min, limits::kTimeScale.max, ""},
      .rule = R::Positive,
-     .get = settingGet<&StepSettings::timeScale>,
-     .set = settingSet<&StepSettings::timeScale>,
-     .optional = true},
+     .optional = true,
+     .setting = 1},
 };
 
 } // namespace
@@ -203,9 +124,9 @@ std::span<const Field> jointRows()
     return kJointFields;
 }
 
-std::span<const SettingsField> settingsRows()
+std::span<const Field> windowSettingRows()
 {
-    return kSettingsFields;
+    return kWindowSettings;
 }
 
 } // namespace rigidlab::lessons::schema::rows

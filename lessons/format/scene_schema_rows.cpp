@@ -78,7 +78,29 @@ const Field kSceneFields[] = {
      .texts = [](const Scene& s, std::size_t) { return s.descriptions; }},
 };
 
+using physics::World;
 using physics::WorldDef;
+
+/// Gravity for `gravity: true` on a scene that has none [m/s^2].
+const Vec2 kStandardGravity(0.0, -9.81);
+
+// A lesson step turns gravity on or off: off is none at all, on the scene's own gravity, or
+// the Earth's when the scene has none.
+const Field kGravitySwitch{
+    .key = "gravity",
+    .label = QT_TRANSLATE_NOOP("SceneSchema", "Gravity"),
+    .kind = Kind::Bool,
+    .get = [](const Scene& s, std::size_t) { return Value(!s.world.gravity.isZero()); },
+    .set = [](Scene& s, std::size_t,
+              const Value& v) { s.world.gravity = as<bool>(v) ? kStandardGravity : Vec2::Zero(); },
+    .apply =
+        [](World& w, const Value& v) {
+            if (!as<bool>(v))
+                w.setGravity(Vec2::Zero());
+            else if (w.def().gravity == Vec2::Zero())
+                w.setGravity(kStandardGravity);
+        },
+};
 
 const Field kWorldFields[] = {
     {.key = "gravity",
@@ -88,7 +110,10 @@ const Field kWorldFields[] = {
      .range = limits::kGravity,
      .get = worldGet<&WorldDef::gravity>,
      .set = worldSet<&WorldDef::gravity>,
-     .inEditor = true},
+     .inEditor = true,
+     .setting = 7,
+     .apply = [](World& w, const Value& v) { w.setGravity(as<Vec2>(v)); },
+     .stepRow = &kGravitySwitch},
     {.key = "dt",
      .label = QT_TRANSLATE_NOOP("SceneSchema", "Time step dt"),
      .range = limits::kDt,
@@ -97,7 +122,9 @@ const Field kWorldFields[] = {
      .set = worldSet<&WorldDef::dt>,
      .inEditor = true,
      .shownScale = 1e3,
-     .shownUnit = QT_TRANSLATE_NOOP("SceneSchema", "ms")},
+     .shownUnit = QT_TRANSLATE_NOOP("SceneSchema", "ms"),
+     .setting = 2,
+     .apply = [](World& w, const Value& v) { w.setDt(as<double>(v)); }},
     {.key = "integrator",
      .label = QT_TRANSLATE_NOOP("SceneSchema", "Integrator"),
      .kind = Kind::Choice,
@@ -112,7 +139,15 @@ const Field kWorldFields[] = {
      .inEditor = true,
      .accepts = isIntegrator,
      .unknown = detail::unknownIntegrator,
-     .options = integratorOptions},
+     .options = integratorOptions,
+     .setting = 1,
+     .apply =
+         [](World& w, const Value& v) {
+             // A name the row accepts (the loader and the controls check it).
+             if (const auto kind = physics::integratorFromName(as<QString>(v).toStdString()))
+                 w.setIntegrator(*kind);
+         },
+     .mainWorldOnly = true},
     {.key = "solver",
      .label = QT_TRANSLATE_NOOP("SceneSchema", "Solver"),
      .kind = Kind::Choice,
@@ -125,26 +160,40 @@ const Field kWorldFields[] = {
      .inEditor = true,
      .accepts = isSolver,
      .unknown = detail::unknownSolver,
-     .options = solverOptions},
+     .options = solverOptions,
+     .setting = 3,
+     .apply =
+         [](World& w, const Value& v) {
+             if (const auto kind = physics::solverFromName(as<QString>(v).toStdString()))
+                 w.setSolver(*kind);
+         },
+     .mainWorldOnly = true},
     {.key = "iterations",
      .label = QT_TRANSLATE_NOOP("SceneSchema", "Iterations"),
      .kind = Kind::Integer,
      .range = limits::kIterations,
      .get = worldGet<&WorldDef::iterations>,
      .set = worldSet<&WorldDef::iterations>,
-     .inEditor = true},
+     .inEditor = true,
+     .setting = 4,
+     .apply = [](World& w, const Value& v) { w.setIterations(as<int>(v)); },
+     .mainWorldOnly = true},
     {.key = "restitution",
      .label = QT_TRANSLATE_NOOP("SceneSchema", "Restitution e"),
      .range = limits::kRestitution,
      .rule = R::UnitInterval,
      .get = worldGet<&WorldDef::restitution>,
-     .set = worldSet<&WorldDef::restitution>},
+     .set = worldSet<&WorldDef::restitution>,
+     .setting = 5,
+     .apply = [](World& w, const Value& v) { w.setRestitution(as<double>(v)); }},
     {.key = "friction",
      .label = QT_TRANSLATE_NOOP("SceneSchema", "Friction μ"),
      .range = limits::kFriction,
      .rule = R::NonNegative,
      .get = worldGet<&WorldDef::friction>,
-     .set = worldSet<&WorldDef::friction>},
+     .set = worldSet<&WorldDef::friction>,
+     .setting = 6,
+     .apply = [](World& w, const Value& v) { w.setFriction(as<double>(v)); }},
     {.key = "gravitation",
      .label = QT_TRANSLATE_NOOP("SceneSchema", "Gravitation G"),
      .range = limits::kGravitation,

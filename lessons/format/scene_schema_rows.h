@@ -194,6 +194,7 @@ std::span<const Field> worldRows();
 std::span<const Field> bodyRows();
 std::span<const Field> springRows();
 std::span<const Field> jointRows();
-std::span<const SettingsField> settingsRows();
+/// The run-time settings that are not the world's (the window's time scale).
+std::span<const Field> windowSettingRows();
 
 } // namespace rigidlab::lessons::schema::rows

@@ -11,6 +11,7 @@
 #include "format/languages.h"
 #include "format/lesson_catalog.h"
 #include "format/scene_schema.h"
+#include "format/view_text.h"
 
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -379,14 +380,15 @@ void TestLesson::everyField()
     QCOMPARE(s.text, QStringLiteral("a\n\nb"));
     QVERIFY(s.scenePath.isEmpty());
     QCOMPARE(s.scene.bodies.size(), std::size_t{4});
-    QVERIFY(!s.settings.integrator);
-    QCOMPARE(*s.settings.dt, 0.002);
-    QCOMPARE(*s.settings.solver, physics::SolverKind::PaperImpulse);
-    QCOMPARE(*s.settings.iterations, 7);
-    QCOMPARE(*s.settings.restitution, 0.25);
-    QCOMPARE(*s.settings.friction, 0.5);
-    QCOMPARE(*s.settings.gravity, false);
-    QCOMPARE(*s.settings.timeScale, 0.5);
+    QVERIFY(!s.settings.has("integrator"));
+    QCOMPARE(*s.settings.get<double>("dt"), 0.002);
+    QCOMPARE(physics::solverFromName(s.settings.get<QString>("solver")->toStdString()),
+             physics::SolverKind::PaperImpulse);
+    QCOMPARE(*s.settings.get<int>("iterations"), 7);
+    QCOMPARE(*s.settings.get<double>("restitution"), 0.25);
+    QCOMPARE(*s.settings.get<double>("friction"), 0.5);
+    QCOMPARE(*s.settings.get<bool>("gravity"), false);
+    QCOMPARE(*s.settings.get<double>("timeScale"), 0.5);
     QVERIFY(s.compare);
     QCOMPARE(s.compare->count(), 2);
     QCOMPARE(s.compare->label(0), QStringLiteral("rk4"));
@@ -525,13 +527,15 @@ void TestLesson::buildStepWorldsMakesOneWorldPerVariant()
 void TestLesson::applySettingsOverridesScene()
 {
     lessons::StepSettings settings;
-    settings.integrator = physics::IntegratorKind::RK4;
-    settings.dt = 0.004;
-    settings.solver = physics::SolverKind::PaperImpulse;
-    settings.iterations = 3;
-    settings.restitution = 0.3;
-    settings.friction = 0.7;
-    settings.gravity = false;
+    settings.set("integrator",
+                 lessons::textFromView(physics::integratorName(physics::IntegratorKind::RK4)));
+    settings.set("dt", 0.004);
+    settings.set("solver",
+                 lessons::textFromView(physics::solverName(physics::SolverKind::PaperImpulse)));
+    settings.set("iterations", 3);
+    settings.set("restitution", 0.3);
+    settings.set("friction", 0.7);
+    settings.set("gravity", false);
     const lessons::Lesson lesson = shippedLesson("restitution");
     physics::World world = lessons::buildWorld(lesson.steps[0].scene);
     lessons::applySettings(settings, world);
@@ -547,7 +551,7 @@ void TestLesson::applySettingsOverridesScene()
     // Gravity on for a weightless scene gives it the Earth's.
     physics::World space = lessons::buildWorld(lesson.steps[1].scene);
     lessons::StepSettings on;
-    on.gravity = true;
+    on.set("gravity", true);
     lessons::applySettings(on, space);
     QCOMPARE(space.def().gravity, physics::Vec2(0, -9.81));
 }

@@ -253,7 +253,7 @@ void TestLesson::sequentialImpulseStackMovesLess()
     }
     // Step 2: one iteration with warm starting still stands.
     const lessons::LessonStep& one = stepOf(lesson, 1);
-    QCOMPARE(*one.settings.iterations, 1);
+    QCOMPARE(*one.settings.get<int>("iterations"), 1);
     StepRun run(one);
     const std::vector<physics::Body> start = run.worlds[0].bodies();
     run.run(5.0);
@@ -292,7 +292,10 @@ void TestLesson::softStepPyramidStands()
     const lessons::LessonStep& step = stepOf(lesson, 3);
     QCOMPARE(step.compare->label(0), QStringLiteral("soft-step"));
     QCOMPARE(step.compare->label(1), QStringLiteral("sequential-impulse"));
-    QVERIFY(stepOf(lesson, 4).settings.solver == physics::SolverKind::SoftStep);
+    QVERIFY(
+        physics::solverFromName(
+            stepOf(lesson, 4).settings.get<QString>("solver").value_or(QString()).toStdString()) ==
+        physics::SolverKind::SoftStep);
     StepRun run(step);
     const physics::World& soft = run.worlds[0];
     const physics::World& sequential = run.worlds[1];

@@ -61,13 +61,15 @@ void TestLesson::shippedScenesUseTheSoftStep()
         QVERIFY2(r.ok, qPrintable(r.error));
         bool other = false;
         for (const lessons::LessonStep& step : r.lesson.steps) {
-            other = other || (step.settings.solver &&
-                              *step.settings.solver != physics::SolverKind::SoftStep);
+            other = other ||
+                    (step.settings.has("solver") &&
+                     physics::solverFromName(step.settings.get<QString>("solver")->toStdString()) !=
+                         physics::SolverKind::SoftStep);
             if (step.compare)
                 for (physics::SolverKind k : step.compare->solvers)
                     other = other || k != physics::SolverKind::SoftStep;
             // A step's world is the soft step's unless the step says otherwise.
-            if (!step.settings.solver && !step.compare && !step.scenePath.isEmpty())
+            if (!step.settings.has("solver") && !step.compare && !step.scenePath.isEmpty())
                 QVERIFY2(step.scene.world.solver == physics::SolverKind::SoftStep ||
                              scenes.contains(QFileInfo(step.scenePath).fileName()),
                          qPrintable(name + QStringLiteral(": ") + step.scenePath));

@@ -44,10 +44,10 @@ void TestLesson::questionSetAsksForItsOwnRun()
     QVERIFY(!lessons::asksSettings(step.questions[3]));
     // The asked run: the question's settings on top of the step's, the rest the step's.
     const lessons::LessonStep asked = lessons::askedStep(step, step.questions[1]);
-    QCOMPARE(*asked.settings.restitution, 1.0);
-    QCOMPARE(*asked.settings.friction, 0.1);
-    QCOMPARE(*asked.settings.dt, 0.002);
-    QCOMPARE(*lessons::askedStep(step, step.questions[3]).settings.restitution, 0.5);
+    QCOMPARE(*asked.settings.get<double>("restitution"), 1.0);
+    QCOMPARE(*asked.settings.get<double>("friction"), 0.1);
+    QCOMPARE(*asked.settings.get<double>("dt"), 0.002);
+    QCOMPARE(*lessons::askedStep(step, step.questions[3]).settings.get<double>("restitution"), 0.5);
 
     // Without the controls panel the student cannot set anything.
     QVERIFY(writeFile(path, oneStep(R"("questions": [{"prompt": "a", "measure": {"kind": "speed", )"

@@ -182,7 +182,7 @@ void TestSchema::shapeRoundTrips()
 
 void TestSchema::everySettingIsRead()
 {
-    for (const schema::SettingsField& f : schema::settingsFields()) {
+    for (const schema::Field& f : schema::settings()) {
         StepSettings written;
         Value value;
         switch (f.kind) {
@@ -201,8 +201,8 @@ void TestSchema::everySettingIsRead()
         default:
             QFAIL(qPrintable(keyOf(f.key) + QStringLiteral(": a kind settings do not have")));
         }
-        f.set(written, 0, value);
-        QVERIFY2(f.get(written, 0) == value, f.key.data());
+        written.set(f.key, value);
+        QVERIFY2(written.value(f.key) == value, f.key.data());
         QJsonObject settings;
         settings.insert(keyOf(f.key), std::visit(
                                           [](const auto& v) -> QJsonValue {
@@ -219,8 +219,8 @@ void TestSchema::everySettingIsRead()
         QVERIFY2(detail::readSettings(in, QJsonObject{{QStringLiteral("settings"), settings}},
                                       QStringLiteral("steps[0]"), read),
                  qPrintable(in.error()));
-        QVERIFY2(f.get(read, 0) == value, f.key.data());
-        QCOMPARE(schema::stepControlNames().size(), schema::settingsFields().size());
+        QVERIFY2(read.value(f.key) == value, f.key.data());
+        QCOMPARE(schema::stepControlNames().size(), schema::settings().size());
     }
 }
 

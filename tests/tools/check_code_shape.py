@@ -5,8 +5,10 @@ function over 80 lines except those named in design.md's "Long on purpose" table
 subfolder that includes another which includes it back, no ui/ room that includes one of
 its own or a later layer (UI_LAYERS), and no language code written as a string ("cs", "en") in
 production code outside the languages table (lessons/format/languages.h and .cpp): every code
-path reads that table; and no stage of a step (physics/src/stages, physics/src/fast) reads the
-world's settings (`ctx.def`): it reads the step context's values, computed once.
+path reads that table; no stage of a step (physics/src/stages, physics/src/fast) reads the
+world's settings (`ctx.def`): it reads the step context's values, computed once; and the
+readers of the run-time settings (SETTING_READERS) name no setting: they walk the settings
+table.
 
 Functions are found by Universal Ctags (their first and last line); a file is every tracked
 .cpp/.h under physics/, lessons/, ui/, app/, bench/ and tests/. Exit 0 when everything holds;
@@ -51,7 +53,8 @@ def exceptions(root):
     return allowed
 
 
-def long_functions(root, files):
+def functions(root, files):
+    """(path, first line, last line, name) of every function defined in `files`."""
     cmd = ["ctags", "-x", "--_xformat=%F\t%n\t%e\t%N", "--kinds-c++=f", "--language-force=c++",
            "-f", "-"] + [str(f.relative_to(root)) for f in files]
     out = subprocess.run(cmd, cwd=root, capture_output=True, text=True, check=True).stdout
@@ -60,11 +63,63 @@ def long_functions(root, files):
         parts = line.split("\t")
         if len(parts) != 4 or not parts[2].isdigit():
             continue
-        path, start, end, name = parts[0], int(parts[1]), int(parts[2]), parts[3]
-        length = end - start + 1
-        if length > MAX_FUNCTION_LINES:
-            found.append((path, name, length))
+        found.append((parts[0], int(parts[1]), int(parts[2]), parts[3]))
     return found
+
+
+def long_functions(all_functions):
+    return [(path, name, end - start + 1) for path, start, end, name in all_functions
+            if end - start + 1 > MAX_FUNCTION_LINES]
+
+
+# The readers of the run-time settings (docs/design.md, "A run-time setting of the world"):
+# each walks schema::settings() or the world rows, so none may name a setting itself.
+SETTING_ROWS = ["lessons/format/scene_schema_rows.cpp", "lessons/format/scene_schema_links.cpp"]
+SETTING_READERS = [
+    ("lessons/format/lesson.cpp", "applySettings"),
+    ("lessons/format/lesson.cpp", "askedStep"),
+    ("lessons/format/lesson_settings.cpp", "readSettingsObject"),
+    ("ui/simulation/setting_edit.cpp", "editsAtStart"),
+    ("ui/simulation/simulation_controller.cpp", "reset"),
+    ("ui/simulation/simulation_controller.cpp", "applyEdit"),
+    ("ui/simulation/simulation_controller.cpp", "setSetting"),
+    ("ui/lesson_player/asked_run.cpp", "changes"),
+    ("ui/lesson_player/asked_run.cpp", "askedRun"),
+    ("ui/panels/control_panel.cpp", "setAllowed"),
+]
+
+
+def setting_keys(root):
+    """The keys of the rows that are run-time settings (those with `.setting = N`)."""
+    keys = set()
+    for rel in SETTING_ROWS:
+        text = (root / rel).read_text(encoding="utf-8")
+        for chunk in re.split(r"(?=\.key = \")", text)[1:]:
+            key = re.match(r'\.key = "(\w+)"', chunk).group(1)
+            if re.search(r"\.setting = [1-9]", chunk):
+                keys.add(key)
+    return keys
+
+
+def settings_restated(root, all_functions):
+    """(path, function, what) of each settings reader that names a setting or is gone."""
+    keys = setting_keys(root)
+    pattern = re.compile(r'"(' + "|".join(sorted(keys)) + r')"') if keys else None
+    out = []
+    if len(keys) < 8:
+        out.append((SETTING_ROWS[0], "", f"only {len(keys)} settings found (.setting = N)"))
+    for path, name in SETTING_READERS:
+        spans = [(a, b) for p, a, b, n in all_functions if p == path and n == name]
+        if not spans:
+            out.append((path, name, "not found (update SETTING_READERS)"))
+            continue
+        lines = (root / path).read_text(encoding="utf-8").splitlines()
+        for a, b in spans:
+            for number in range(a, b + 1):
+                code = lines[number - 1].split("//")[0]
+                if pattern and pattern.search(code):
+                    out.append((f"{path}:{number}", name, "names a setting"))
+    return out
 
 
 # The ui/ rooms in their layers, lowest first (docs/design.md, "Layers and folders"): a room
@@ -153,7 +208,8 @@ def main():
         if n > MAX_FILE_LINES:
             problems.append(f"{f.relative_to(root)}: {n} lines (at most {MAX_FILE_LINES})")
     allowed = exceptions(root)
-    for path, name, length in long_functions(root, files):
+    all_functions = functions(root, files)
+    for path, name, length in long_functions(all_functions):
         if (path, name) not in allowed:
             problems.append(f"{path}: function {name} is {length} lines (at most "
                             f"{MAX_FUNCTION_LINES}, or listed in docs/design.md, Long on purpose)")
@@ -164,6 +220,9 @@ def main():
     for path, number in language_literals(root, files):
         problems.append(f"{path}:{number}: a language code written out; read lessons::kLanguages "
                         f"(lessons/format/languages.h) instead")
+    for path, name, what in settings_restated(root, all_functions):
+        problems.append(f"{path}: {name} {what}; read schema::settings() (lessons/format/"
+                        f"scene_schema.h) instead")
     for path, number in settings_read_in_stages(root, files):
         problems.append(f"{path}:{number}: a stage reads the world's settings; take the value "
                         f"from the step context (step_context.h), computed once in World::context()")

@@ -301,7 +301,7 @@ void TestDrawings::billiardsBallsBigAndBreakSlow()
                  qPrintable(QStringLiteral("step %1 at 2 s: balls %2 px across")
                                 .arg(s + 1)
                                 .arg(2 * radius * w.view().zoom())));
-        const double timeScale = l->steps[s].settings.timeScale.value_or(1.0);
+        const double timeScale = l->steps[s].settings.get<double>("timeScale").value_or(1.0);
         QVERIFY2(breakTime / timeScale >= 1.0,
                  qPrintable(QStringLiteral("step %1: the break after %2 s on the clock")
                                 .arg(s + 1)

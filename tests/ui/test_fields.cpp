@@ -12,6 +12,7 @@
 #include "window/main_window.h"
 
 #include "format/limits.h"
+#include "format/scene_schema.h"
 
 #include "first_question.h"
 #include "near.h"
@@ -529,6 +530,24 @@ private slots:
         c.setBodyMass(1, 1e300);
         QCOMPARE(c.world().body(0).mass, 0.0);
         QCOMPARE(c.world().body(1).mass, 1.75);
+    }
+
+    void everySettingHasItsControl()
+    {
+        // A lesson step locks the settings of the table, each by its own control.
+        ui::SimulationController c;
+        ui::ControlPanel panel(c);
+        panel.setAllowed(QStringList{});
+        for (const lessons::schema::Field& f : lessons::schema::settings()) {
+            const QString key = QString::fromLatin1(f.key.data(), qsizetype(f.key.size()));
+            auto* control = panel.findChild<QWidget*>(key, Qt::FindDirectChildrenOnly);
+            QVERIFY2(control, qPrintable(key));
+            QVERIFY2(!control->isEnabled() && control->property("locked").toBool(),
+                     qPrintable(key));
+            panel.setAllowed(QStringList{key});
+            QVERIFY2(!control->property("locked").toBool(), qPrintable(key));
+            panel.setAllowed(QStringList{});
+        }
     }
 
 private:

@@ -408,22 +408,22 @@ private slots:
         now.friction = start.friction + 0.25;
         const SettingEdits edits = editsAtStart(start, now);
         QCOMPARE(edits.size(), 2u);
-        QCOMPARE(edits[0].kind, SettingEdit::Kind::Dt);
-        QCOMPARE(edits[0].value, now.dt);
-        QCOMPARE(edits[1].kind, SettingEdit::Kind::Friction);
-        QCOMPARE(edits[1].value, now.friction);
+        QCOMPARE(edits[0].key, std::string_view("dt"));
+        QCOMPARE(std::get<double>(edits[0].value), now.dt);
+        QCOMPARE(edits[1].key, std::string_view("friction"));
+        QCOMPARE(std::get<double>(edits[1].value), now.friction);
         for (const SettingEdit& e : edits)
             QCOMPARE(e.step, 0LL);
 
         SettingEditLog log;
-        log.log({0, SettingEdit::Kind::Iterations, -1, 0.0, 0.0, 4}, 5);
-        log.log({0, SettingEdit::Kind::Iterations, -1, 0.0, 0.0, 6}, 10);
+        log.log({0, lessons::schema::Object::World, 0, "iterations", 4}, 5);
+        log.log({0, lessons::schema::Object::World, 0, "iterations", 6}, 10);
         QCOMPARE(log.edits().size(), 2u);
         // A change after going back to step 7 drops the future it replaces.
-        log.log({0, SettingEdit::Kind::Iterations, -1, 0.0, 0.0, 8}, 7);
+        log.log({0, lessons::schema::Object::World, 0, "iterations", 8}, 7);
         QCOMPARE(log.edits().size(), 2u);
         QCOMPARE(log.edits()[1].step, 7LL);
-        QCOMPARE(log.edits()[1].number, 8);
+        QCOMPARE(std::get<int>(log.edits()[1].value), 8);
 
         SimulationController c;
         c.loadScene(ballScene(true), QStringLiteral("ball.json"));
@@ -437,7 +437,7 @@ private slots:
         QCOMPARE(c.world().def().friction, 0.9);
         QCOMPARE(c.edits().size(), 1u);
         QCOMPARE(c.edits()[0].step, 0LL);
-        QCOMPARE(c.edits()[0].kind, SettingEdit::Kind::Friction);
+        QCOMPARE(c.edits()[0].key, std::string_view("friction"));
     }
 
     void comparedWorldsAreDrawnClearOfTheFloor()

@@ -490,11 +490,12 @@ void TestWorksheet::stepFigureIsTheAskedRun()
     const lessons::Lesson& lesson = loaded.lesson;
     QVERIFY(lesson.steps.size() >= 3);
     const lessons::LessonStep& step = lesson.steps[2];
-    const auto asking = std::find_if(step.questions.begin(), step.questions.end(),
-                                     [](const lessons::Question& q) { return q.set.restitution; });
+    const auto asking =
+        std::find_if(step.questions.begin(), step.questions.end(),
+                     [](const lessons::Question& q) { return q.set.has("restitution"); });
     QVERIFY(asking != step.questions.end());
-    QCOMPARE(*asking->set.restitution, 0.0);
-    QCOMPARE(step.settings.restitution.value_or(-1), 0.5);
+    QCOMPARE(*asking->set.get<double>("restitution"), 0.0);
+    QCOMPARE(step.settings.get<double>("restitution").value_or(-1), 0.5);
 
     lessons::Answers answers;
     answers.student = QStringLiteral("Jana Nováková");
@@ -505,8 +506,11 @@ void TestWorksheet::stepFigureIsTheAskedRun()
     const std::optional<double> value = expectedValue(step, *asking);
     QVERIFY(value.has_value());
     third.questions[q].push_back(lessons::AnswerTry{*value, value, false, std::nullopt, {}, false});
-    QCOMPARE(ui::stepAsRun(step, third).settings.restitution.value_or(-1), 0.0);
-    QCOMPARE(ui::stepAsRun(step, lessons::StepAnswers{}).settings.restitution.value_or(-1), 0.5);
+    QCOMPARE(ui::stepAsRun(step, third).settings.get<double>("restitution").value_or(-1), 0.0);
+    QCOMPARE(ui::stepAsRun(step, lessons::StepAnswers{})
+                 .settings.get<double>("restitution")
+                 .value_or(-1),
+             0.5);
 
     QTemporaryDir dir;
     const QString pdf = dir.filePath(QStringLiteral("sheet.pdf"));

@@ -22,27 +22,27 @@ QString fromView(std::string_view s)
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-/// The settings a question may ask for: the step's, but slow motion (it changes nothing
+/// The settings a question may ask for: the world's (the window's slow motion changes nothing
 /// measured; the loader refuses it).
-std::vector<const schema::SettingsField*> askable()
+std::vector<const schema::Field*> askable()
 {
-    std::vector<const schema::SettingsField*> out;
-    for (const schema::SettingsField& f : schema::settingsFields())
-        if (f.key != "timeScale")
+    std::vector<const schema::Field*> out;
+    for (const schema::Field& f : schema::settings())
+        if (f.apply)
             out.push_back(&f);
     return out;
 }
 
-const schema::SettingsField* fieldOf(const QString& key)
+const schema::Field* fieldOf(const QString& key)
 {
-    for (const schema::SettingsField* f : askable())
+    for (const schema::Field* f : askable())
         if (fromView(f->key) == key)
             return f;
     return nullptr;
 }
 
 /// A value the setting starts from when the teacher picks it.
-QJsonValue firstValue(const schema::SettingsField& f)
+QJsonValue firstValue(const schema::Field& f)
 {
     switch (f.kind) {
     case schema::Kind::Choice:
@@ -66,7 +66,7 @@ QuestionSetEditor::QuestionSetEditor(QWidget* parent) : QWidget(parent)
     m_key->setObjectName(QStringLiteral("questionSetKey"));
     m_key->setAccessibleName(tr("Setting the student sets first"));
     m_key->addItem(tr("nothing (the step's settings)"), QString());
-    for (const schema::SettingsField* f : askable())
+    for (const schema::Field* f : askable())
         m_key->addItem(QCoreApplication::translate(schema::kContext, f->label), fromView(f->key));
     m_pages = new QStackedWidget(this);
     m_number = new NumberField(this);
@@ -90,8 +90,8 @@ void QuestionSetEditor::show(const QJsonObject& set)
     m_showing = true;
     m_set = set;
     // The first setting the question asks for, in the order of the settings' rows.
-    const schema::SettingsField* shown = nullptr;
-    for (const schema::SettingsField* f : askable())
+    const schema::Field* shown = nullptr;
+    for (const schema::Field* f : askable())
         if (!shown && set.contains(fromView(f->key)))
             shown = f;
     m_key->setCurrentIndex(shown ? m_key->findData(fromView(shown->key)) : 0);
@@ -125,12 +125,12 @@ void QuestionSetEditor::choose()
         return;
     const QString key = m_key->currentData().toString();
     // One setting at a time here: the one shown is replaced, others the file gives stay.
-    for (const schema::SettingsField* f : askable())
+    for (const schema::Field* f : askable())
         if (m_set.contains(fromView(f->key))) {
             m_set.remove(fromView(f->key));
             break;
         }
-    if (const schema::SettingsField* f = fieldOf(key))
+    if (const schema::Field* f = fieldOf(key))
         m_set.insert(key, firstValue(*f));
     show(m_set);
     emit edited();
@@ -141,7 +141,7 @@ void QuestionSetEditor::valueChosen()
     if (m_showing)
         return;
     const QString key = m_key->currentData().toString();
-    const schema::SettingsField* f = fieldOf(key);
+    const schema::Field* f = fieldOf(key);
     if (f == nullptr)
         return;
     if (f->kind == schema::Kind::Choice || f->kind == schema::Kind::Bool)

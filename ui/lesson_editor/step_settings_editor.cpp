@@ -29,8 +29,9 @@ QString qs(std::string_view s)
 }
 
 /// The step's plots or panels in words, as the window titles them (one table for both).
+template <std::size_t N>
 std::vector<std::pair<std::string_view, QString>>
-partNames(const std::array<StepPartName, 5>& table)
+partNames(const std::array<StepPartName, N>& table)
 {
     std::vector<std::pair<std::string_view, QString>> out;
     for (const StepPartName& part : table)
@@ -42,7 +43,7 @@ partNames(const std::array<StepPartName, 5>& table)
 std::vector<std::pair<std::string_view, QString>> controlNames()
 {
     std::vector<std::pair<std::string_view, QString>> out;
-    for (const lessons::schema::SettingsField& f : lessons::schema::settingsFields()) {
+    for (const lessons::schema::Field& f : lessons::schema::settings()) {
         const QString label =
             f.label ? QCoreApplication::translate(lessons::schema::kContext, f.label) : qs(f.key);
         out.emplace_back(f.key, label);

@@ -9,8 +9,6 @@
 #include <QCoreApplication>
 
 #include <algorithm>
-#include <array>
-#include <utility>
 
 namespace rigidlab::ui {
 
@@ -28,24 +26,17 @@ QString fromView(std::string_view s)
     return QString::fromUtf8(s.data(), static_cast<qsizetype>(s.size()));
 }
 
-/// The hand-made edits that change each setting a question may ask for.
-constexpr std::array<std::pair<std::string_view, SettingEdit::Kind>, 7> kEditKinds{{
-    {"dt", SettingEdit::Kind::Dt},
-    {"integrator", SettingEdit::Kind::Integrator},
-    {"solver", SettingEdit::Kind::Solver},
-    {"iterations", SettingEdit::Kind::Iterations},
-    {"restitution", SettingEdit::Kind::Restitution},
-    {"friction", SettingEdit::Kind::Friction},
-    {"gravity", SettingEdit::Kind::Gravity},
-}};
-
+/// Whether a hand-made edit changes the setting `key`: its own, or a body's material, whose
+/// restitution and friction stand in for the world's (the body rows that fall back to it).
 bool changes(const SettingEdit& edit, std::string_view key)
 {
-    // A body's own restitution and friction, set in the inspector, change the run too.
-    if (edit.kind == SettingEdit::Kind::BodyMaterial)
-        return key == "restitution" || key == "friction";
-    return std::any_of(kEditKinds.begin(), kEditKinds.end(),
-                       [&](const auto& k) { return k.first == key && k.second == edit.kind; });
+    if (edit.object == schema::Object::World)
+        return edit.key == key;
+    if (edit.key != body_edit::kMaterial)
+        return false;
+    const auto rows = schema::fields(schema::Object::Body);
+    return std::any_of(rows.begin(), rows.end(),
+                       [&](const schema::Field& f) { return f.fallback == key; });
 }
 
 /// A world setting as a student reads it on the controls.
@@ -64,10 +55,6 @@ QString valueText(const schema::Value& v)
     return {};
 }
 
-QString label(const schema::SettingsField& f)
-{
-    return f.label ? QCoreApplication::translate(schema::kContext, f.label) : fromView(f.key);
-}
 
 } // namespace
 
@@ -84,22 +71,22 @@ AskedRun askedRun(const lessons::LessonStep& step, const lessons::Question& ques
     lessons::Scene live;
     live.world = world.def();
     QStringList askedWords;
-    for (const schema::SettingsField& f : schema::settingsFields()) {
-        if (std::holds_alternative<std::monostate>(f.get(question.set, 0)))
+    for (const schema::Field& f : schema::settings()) {
+        if (!question.set.has(f.key))
             continue;
-        const schema::Field* w = schema::findField(schema::Object::World, f.key);
+        const schema::Field* w = schema::worldRowOf(f);
         if (w == nullptr)
             continue;
         const schema::Value want = w->get(asked, 0);
         const schema::Value have = w->get(live, 0);
-        askedWords << tr("%1 = %2").arg(label(f), valueText(want));
+        askedWords << tr("%1 = %2").arg(schema::label(f), valueText(want));
         if (want != have) {
             run.differences
-                << tr("%1 is %2, not %3").arg(label(f), valueText(have), valueText(want));
+                << tr("%1 is %2, not %3").arg(schema::label(f), valueText(have), valueText(want));
         } else if (std::any_of(edits.begin(), edits.end(), [&](const SettingEdit& e) {
                        return e.step > 0 && changes(e, f.key);
                    })) {
-            run.differences << tr("%1 was changed during the run").arg(label(f));
+            run.differences << tr("%1 was changed during the run").arg(schema::label(f));
         }
         const QString key = fromView(f.key);
         if ((step.allow && !step.allow->contains(key)) || !step.panels.contains(u"controls") ||

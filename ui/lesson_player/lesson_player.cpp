@@ -195,6 +195,12 @@ void LessonPlayer::buildNavigation(QVBoxLayout* layout)
     connect(m_restart, &QPushButton::clicked, this, &LessonPlayer::restartStep);
     connect(m_export, &QPushButton::clicked, this, &LessonPlayer::exportRequested);
     connect(m_handIn, &QPushButton::clicked, this, &LessonPlayer::handInInteractively);
+    // The scene changed (a fitted e applied, an edit): what a run without a window measured
+    // on the old one is measured again when next asked.
+    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
+        for (QuestionRow& row : m_rows)
+            row.aheadDone = false;
+    });
     connect(m_lessonBox, &QComboBox::currentIndexChanged, this,
             &LessonPlayer::showCurrentLessonTip);
     m_lessonBox->installEventFilter(this);

@@ -278,7 +278,11 @@ QuestionTry LessonPlayer::measuredTry(std::size_t i)
         return QuestionTry{};
     QuestionRow& row = m_rows[i];
     if (!row.aheadDone) {
-        row.ahead = lessons::measureAhead(lessons::askedStep(step, q), q.measure);
+        // On the scene as it is now: a fitted e applied to it is what the table shows and
+        // the run will measure, not the step's e as the lesson file gives it.
+        lessons::LessonStep now = step;
+        now.scene = m_controller.scene();
+        row.ahead = lessons::measureAhead(lessons::askedStep(now, q), q.measure);
         row.aheadDone = true;
     }
     return numberTry(row.ahead, row.ahead.has_value());

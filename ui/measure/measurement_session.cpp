@@ -26,6 +26,7 @@
 #include <QMimeData>
 #include <QTimer>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -193,22 +194,17 @@ QString MeasurementSession::load(const QString& path, const measure::Measurement
         emit message(read.error, 10000);
         return read.error;
     }
-    m_measurement = std::move(read.measurement);
-    m_path = path;
+    // A second file adds to the first (a video's heights, then a phone's bounce times): each
+    // quantity comes from the file imported last that has it.
+    if (!m_measurement || m_measurementLesson != m_lesson)
+        forget();
+    m_imports.push_back({QFileInfo(path).fileName(), std::move(read.measurement)});
+    merge();
     m_measurementLesson = m_lesson;
     m_fit = {};
     m_fitted.clear();
     m_panel->showFit(QString(), false);
-    QStringList what;
-    for (const measure::Series& s : m_measurement->series)
-        what << quantityText(s.quantity);
-    if (!m_measurement->bounces.empty())
-        what << quantityText(Quantity::BounceTime);
-    const int points = m_measurement->series.empty()
-                           ? static_cast<int>(m_measurement->bounces.size())
-                           : static_cast<int>(m_measurement->series.front().t.size());
-    m_panel->setSource(tr("%1: %n point(s) of %2", nullptr, points)
-                           .arg(QFileInfo(path).fileName(), what.join(QStringLiteral(", "))));
+    m_panel->setSource(sourceText());
     updateChoices();
     updateBounceFit();
     compare();
@@ -232,10 +228,64 @@ void MeasurementSession::sceneReset()
         forget();
 }
 
+void MeasurementSession::merge()
+{
+    measure::Measurement merged;
+    m_seriesFile.clear();
+    m_bouncesFile.clear();
+    for (const Imported& in : m_imports) {
+        merged.layout = in.measurement.layout;
+        merged.mapping = in.measurement.mapping;
+        merged.rowsBeforeStart = in.measurement.rowsBeforeStart;
+        for (const measure::Series& s : in.measurement.series) {
+            auto same =
+                std::find_if(merged.series.begin(), merged.series.end(),
+                             [&](const measure::Series& m) { return m.quantity == s.quantity; });
+            if (same != merged.series.end())
+                *same = s;
+            else
+                merged.series.push_back(s);
+            m_seriesFile[s.quantity] = in.file;
+        }
+        if (!in.measurement.bounces.empty()) {
+            merged.bounces = in.measurement.bounces;
+            m_bouncesFile = in.file;
+        }
+    }
+    m_measurement = std::move(merged);
+}
+
+QString MeasurementSession::sourceText() const
+{
+    // One line per file, naming what the comparison takes from it.
+    QStringList lines;
+    for (const Imported& in : m_imports) {
+        QStringList what;
+        int points = 0;
+        for (const measure::Series& s : m_measurement->series)
+            if (m_seriesFile.at(s.quantity) == in.file) {
+                what << quantityText(s.quantity);
+                points = std::max(points, static_cast<int>(s.t.size()));
+            }
+        if (m_bouncesFile == in.file && !m_measurement->bounces.empty()) {
+            what << quantityText(Quantity::BounceTime);
+            if (points == 0)
+                points = static_cast<int>(m_measurement->bounces.size());
+        }
+        if (!what.isEmpty())
+            lines << tr("%1: %n point(s) of %2", nullptr, points)
+                         .arg(in.file, what.join(QStringLiteral(", ")));
+    }
+    lines.removeDuplicates();
+    return lines.join(QLatin1Char('\n'));
+}
+
 void MeasurementSession::forget()
 {
     m_measurement.reset();
-    m_path.clear();
+    m_imports.clear();
+    m_seriesFile.clear();
+    m_bouncesFile.clear();
     m_measurementLesson.clear();
     m_simulated.clear();
     m_residuals.clear();
@@ -451,10 +501,10 @@ void MeasurementSession::updateBounceFit()
     for (const double f : m_bounceFit.flightTimes)
         flights << formatQuantity(f, QStringLiteral("s"), 3);
     m_panel->showBounceFit(
-        tr("From the bounce times alone: e = %1 (95 %). Each flight between bounces lasts e "
-           "times the one before: %2.")
+        tr("From the bounce times alone (%3): e = %1 (95 %). Each flight between bounces lasts "
+           "e times the one before: %2.")
             .arg(valueWithUncertainty(m_bounceFit.e.value, m_bounceFit.e.halfWidth95),
-                 flights.join(QStringLiteral(", "))),
+                 flights.join(QStringLiteral(", ")), m_bouncesFile),
         true);
 }
 

@@ -6,6 +6,10 @@
 // uses), and the scene view shows the measured positions as a faint trail. The fit's values
 // go into the scene as one edit of its document, which Undo takes back.
 //
+// A second import adds to the first rather than replacing it (a video's heights, then a
+// phone's bounce times): each quantity comes from the file imported last that has it, and
+// the dock names the file of each.
+//
 // A measurement belongs to the scene it was imported into, or to the lesson: when another
 // scene opens (a file, a new scene, another lesson), it is forgotten, trail and plots too, so
 // that no unrelated crosses stay in the scene. The steps of one lesson keep it (a lesson
@@ -18,6 +22,7 @@
 #include <QString>
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <vector>
 
@@ -110,6 +115,10 @@ private:
     void sceneReset();
     QString applyValues(const std::vector<measure::Parameter>& parameters,
                         const std::vector<double>& values, const QString& what);
+    /// m_measurement from the files imported, each quantity from the last file that has it.
+    void merge();
+    /// The files imported, one line each with what is taken from it.
+    QString sourceText() const;
 
     QWidget& m_window;
     WorldView& m_view;
@@ -119,7 +128,14 @@ private:
     QDockWidget* m_dock = nullptr;
     MeasuredTrailItem* m_trail = nullptr; ///< owned by the view's scene
     ImportAsker m_asker;
-    QString m_path;
+    /// A file imported: its name and what it held.
+    struct Imported {
+        QString file;
+        measure::Measurement measurement;
+    };
+    std::vector<Imported> m_imports;                   ///< in the order imported
+    std::map<measure::Quantity, QString> m_seriesFile; ///< the file each series comes from
+    QString m_bouncesFile;                             ///< the file the bounce times come from
     QString m_lastFolder;
     QString m_lesson;            ///< the lesson open, or empty
     QString m_measurementLesson; ///< the lesson open when the measurement was imported

@@ -8,25 +8,42 @@
 
 #include "format/limits.h"
 #include "format/scene_loader.h"
+#include "format/scene_schema.h"
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QFormLayout>
 #include <QSignalBlocker>
 
-#include <array>
+#include <utility>
 
 namespace rigidlab::ui {
 
 using physics::IntegratorKind;
 using physics::SolverKind;
 
+namespace {
+
+/// A control named by the key of the run-time setting it changes (schema::settings()):
+/// setAllowed finds it by that name.
+template <class Widget, class... Args> Widget* named(const char* key, Args&&... args)
+{
+    auto* widget = new Widget(std::forward<Args>(args)...);
+    widget->setObjectName(QLatin1String(key));
+    return widget;
+}
+
+} // namespace
+
 ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
-    : QWidget(parent), m_controller(controller), m_integrator(new QComboBox(this)),
-      m_solver(new QComboBox(this)), m_iterations(new NumberField(this)),
-      m_dt(new NumberField(this)), m_timeScale(new NumberField(this)),
-      m_restitution(new NumberField(this)), m_friction(new NumberField(this)),
-      m_gravity(new QCheckBox(tr("on"), this))
+    : QWidget(parent), m_controller(controller), m_integrator(named<QComboBox>("integrator", this)),
+      m_solver(named<QComboBox>("solver", this)),
+      m_iterations(named<NumberField>("iterations", this)), m_dt(named<NumberField>("dt", this)),
+      m_timeScale(named<NumberField>("timeScale", this)),
+      m_restitution(named<NumberField>("restitution", this)),
+      m_friction(named<NumberField>("friction", this)),
+      m_gravity(named<QCheckBox>("gravity", tr("on"), this))
 {
     // In words, from the one table of display names; the menus' order is physics'.
     for (const IntegratorKind kind : physics::kAllIntegrators)
@@ -52,11 +69,6 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
         tr("Coefficient of restitution e for every body: 0 sticks, 1 is elastic"));
     m_friction->setRange(limits::kFriction, tr("Friction μ"));
     m_friction->setToolTip(tr("Coulomb friction coefficient μ for every body"));
-    m_iterations->setObjectName(QStringLiteral("iterations"));
-    m_dt->setObjectName(QStringLiteral("dt"));
-    m_timeScale->setObjectName(QStringLiteral("timeScale"));
-    m_restitution->setObjectName(QStringLiteral("restitution"));
-    m_friction->setObjectName(QStringLiteral("friction"));
 
     auto* form = new QFormLayout(this);
     // In a narrow column (a 1024-pixel projector) each label goes above its field rather than
@@ -71,6 +83,7 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     form->addRow(tr("Friction μ"), m_friction);
     form->addRow(tr("Gravity"), m_gravity);
     m_gravity->setAccessibleName(tr("Gravity")); // not its box's word "on"
+    addTableControls(*form);
     followRows(*form); // Tab down the rows; the lists named by their labels
 
     connect(m_integrator, &QComboBox::activated, this, [this] {
@@ -100,20 +113,84 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     refresh();
 }
 
+void ControlPanel::addTableControls(QFormLayout& form)
+{
+    namespace schema = lessons::schema;
+    // A setting of the world without a control of its own above gets one made from its world
+    // row: adding a setting is a row of the table, and the controls follow.
+    for (const schema::Field& setting : schema::settings()) {
+        const schema::Field* row = schema::worldRowOf(setting);
+        const QString key = QString::fromLatin1(setting.key.data(), qsizetype(setting.key.size()));
+        if (row == nullptr || findChild<QWidget*>(key, Qt::FindDirectChildrenOnly))
+            continue;
+        const std::string_view k = row->key;
+        QWidget* control = nullptr;
+        if (row->kind == schema::Kind::Bool) {
+            auto* box = new QCheckBox(tr("on"), this);
+            connect(box, &QCheckBox::toggled, this,
+                    [this, k](bool on) { m_controller.setSetting(k, on); });
+            control = box;
+        } else if (row->kind == schema::Kind::Choice) {
+            auto* list = new QComboBox(this);
+            for (const QString& option : row->options())
+                list->addItem(methodDisplayName(option), option);
+            connect(list, &QComboBox::activated, this, [this, k, list] {
+                m_controller.setSetting(k, list->currentData().toString());
+            });
+            control = list;
+        } else if (row->kind == schema::Kind::Number || row->kind == schema::Kind::Integer) {
+            auto* field = new NumberField(this);
+            const double scale = row->shownScale;
+            field->setRange(NumberField::scaled(row->range, scale), schema::label(*row),
+                            row->shownUnit
+                                ? QCoreApplication::translate(schema::kContext, row->shownUnit)
+                                : QString());
+            const bool integer = row->kind == schema::Kind::Integer;
+            field->setInteger(integer);
+            connect(field, &NumberField::valueEdited, this, [this, k, scale, integer](double v) {
+                m_controller.setSetting(k, integer ? schema::Value(static_cast<int>(v))
+                                                   : schema::Value(v / scale));
+            });
+            connect(field, &NumberField::refused, this, &ControlPanel::inputRefused);
+            control = field;
+        } else {
+            continue; // a pair or a text has no control made for it: give it one above
+        }
+        control->setObjectName(key);
+        control->setAccessibleName(schema::label(*row));
+        form.addRow(schema::label(*row), control);
+        m_tableControls.emplace_back(k, control);
+    }
+}
+
+void ControlPanel::refreshTableControls()
+{
+    namespace schema = lessons::schema;
+    lessons::Scene now;
+    now.world = m_controller.world().def();
+    for (const auto& [key, control] : m_tableControls) {
+        const schema::Field* row = schema::findField(schema::Object::World, key);
+        const schema::Value v = row->get(now, 0);
+        const QSignalBlocker block(control);
+        if (auto* box = qobject_cast<QCheckBox*>(control))
+            box->setChecked(std::get<bool>(v));
+        else if (auto* list = qobject_cast<QComboBox*>(control))
+            list->setCurrentIndex(list->findData(std::get<QString>(v)));
+        else if (auto* field = qobject_cast<NumberField*>(control))
+            field->setValue(std::holds_alternative<int>(v) ? std::get<int>(v)
+                                                           : std::get<double>(v) * row->shownScale);
+    }
+}
+
 void ControlPanel::setAllowed(const std::optional<QStringList>& allowed)
 {
-    const std::array<std::pair<const char*, QWidget*>, 8> controls{{
-        {"integrator", m_integrator},
-        {"dt", m_dt},
-        {"solver", m_solver},
-        {"iterations", m_iterations},
-        {"timeScale", m_timeScale},
-        {"restitution", m_restitution},
-        {"friction", m_friction},
-        {"gravity", m_gravity},
-    }};
-    for (const auto& [name, widget] : controls) {
-        const bool on = !allowed || allowed->contains(QLatin1String(name));
+    // Every run-time setting has its control, named by the setting's key.
+    for (const lessons::schema::Field& f : lessons::schema::settings()) {
+        const QString name = QString::fromLatin1(f.key.data(), qsizetype(f.key.size()));
+        QWidget* widget = findChild<QWidget*>(name, Qt::FindDirectChildrenOnly);
+        if (widget == nullptr)
+            continue;
+        const bool on = !allowed || allowed->contains(name);
         widget->setEnabled(on);
         widget->setProperty("locked", !on);
         widget->setStatusTip(on ? QString() : tr("Fixed in this step of the lesson"));
@@ -159,6 +236,7 @@ void ControlPanel::refresh()
     m_restitution->setValue(d.restitution);
     m_friction->setValue(d.friction);
     m_gravity->setChecked(d.gravity.squaredNorm() > 0);
+    refreshTableControls();
 }
 
 } // namespace rigidlab::ui

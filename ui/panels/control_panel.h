@@ -1,16 +1,22 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The simulation's settings as controls: integrator, solver, iterations, dt, time scale,
-// global restitution and friction, gravity. The number fields take a value on Enter or on
-// leaving them, and refuse what is outside the ranges of lessons/limits.h out loud.
+// The simulation's run-time settings (lessons::schema::settings()) as controls: integrator,
+// solver, iterations, dt, time scale, global restitution and friction, gravity, each made by
+// hand, and any other setting of the table made from its row. The number fields take a value
+// on Enter or on leaving them, and refuse what is outside the ranges of lessons/limits.h out
+// loud.
 
 #include <QStringList>
 #include <QWidget>
 
 #include <optional>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
+class QFormLayout;
 
 namespace rigidlab::physics {
 enum class SolverKind;
@@ -31,8 +37,8 @@ public:
     NumberField* frictionField() const { return m_friction; }
     QCheckBox* gravityBox() const { return m_gravity; }
 
-    /// Which controls the student may change (names: integrator, dt, solver, iterations,
-    /// timeScale, restitution, friction, gravity); nullopt: all of them.
+    /// Which controls the student may change (the settings' keys, a step's "allow"); nullopt:
+    /// all of them.
     void setAllowed(const std::optional<QStringList>& allowed);
 
 signals:
@@ -47,6 +53,9 @@ private:
     /// Greys the iterations field where the solver has none, and says what it means under
     /// each solver (tooltip and accessible description).
     void showIterationsMeaning(physics::SolverKind solver);
+    /// Makes a control for each setting of the table that has none of its own.
+    void addTableControls(QFormLayout& form);
+    void refreshTableControls();
 
     SimulationController& m_controller;
     QComboBox* m_integrator;
@@ -57,6 +66,8 @@ private:
     NumberField* m_restitution;
     NumberField* m_friction;
     QCheckBox* m_gravity;
+    /// The controls made from the table's rows, by setting key.
+    std::vector<std::pair<std::string_view, QWidget*>> m_tableControls;
 };
 
 } // namespace rigidlab::ui

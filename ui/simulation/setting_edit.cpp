@@ -5,22 +5,20 @@ namespace rigidlab::ui {
 
 SettingEdits editsAtStart(const physics::WorldDef& start, const physics::WorldDef& now)
 {
-    using Kind = SettingEdit::Kind;
+    namespace schema = lessons::schema;
+    lessons::Scene before;
+    before.world = start;
+    lessons::Scene after;
+    after.world = now;
     SettingEdits edits;
-    if (now.dt != start.dt)
-        edits.push_back({0, Kind::Dt, -1, now.dt, 0.0, 0});
-    if (now.integrator != start.integrator)
-        edits.push_back({0, Kind::Integrator, -1, 0.0, 0.0, static_cast<int>(now.integrator)});
-    if (now.solver != start.solver)
-        edits.push_back({0, Kind::Solver, -1, 0.0, 0.0, static_cast<int>(now.solver)});
-    if (now.iterations != start.iterations)
-        edits.push_back({0, Kind::Iterations, -1, 0.0, 0.0, now.iterations});
-    if (now.restitution != start.restitution)
-        edits.push_back({0, Kind::Restitution, -1, now.restitution, 0.0, 0});
-    if (now.friction != start.friction)
-        edits.push_back({0, Kind::Friction, -1, now.friction, 0.0, 0});
-    if (now.gravity != start.gravity)
-        edits.push_back({0, Kind::Gravity, -1, 0.0, 0.0, now.gravity.isZero() ? 0 : 1});
+    for (const schema::Field& setting : schema::settings()) {
+        const schema::Field* row = schema::worldRowOf(setting);
+        if (row == nullptr)
+            continue; // the window's, not the world's
+        const schema::Value v = row->get(after, 0);
+        if (v != row->get(before, 0))
+            edits.push_back({0, schema::Object::World, 0, row->key, v});
+    }
     return edits;
 }
 

@@ -5,40 +5,39 @@
 // of the same start they give the same world, bit for bit (the engine is deterministic), and
 // the same change marks on the plots. The language switch rebuilds the run from them.
 
+#include "format/scene_schema.h"
+
 #include "rigidlab/physics/world.h"
 
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace rigidlab::ui {
 
+/// What a hand-made change does to a body, besides its rows (a body's edit whose key is none
+/// of these is its row's): the inspector's actions.
+namespace body_edit {
+inline constexpr std::string_view kMaterial = "material"; ///< value: (e, μ)
+inline constexpr std::string_view kTurn = "turn";         ///< value: about its centre [rad]
+inline constexpr std::string_view kMove = "move";         ///< value: how far, x and y [m]
+inline constexpr std::string_view kPush = "push";         ///< value: velocity added [m/s]
+} // namespace body_edit
+
 struct SettingEdit {
-    enum class Kind {
-        Dt,           ///< value: dt [s]
-        Integrator,   ///< number: physics::IntegratorKind
-        Solver,       ///< number: physics::SolverKind
-        Iterations,   ///< number: iterations
-        Restitution,  ///< value: e
-        Friction,     ///< value: μ
-        Gravity,      ///< number: 1 on, 0 off
-        BodyMaterial, ///< body; value: e, value2: μ
-        BodyMass,     ///< body; value: mass [kg]
-        BodyRotation, ///< body; value: the turn about the centre of mass [rad]
-        BodyMove,     ///< body; value, value2: how far it is moved, x and y [m]
-        BodyPush,     ///< body; value, value2: the velocity added, x and y [m/s]
-    };
     long long step = 0; ///< the world's step count when the change was made
-    Kind kind = Kind::Dt;
-    physics::BodyId body = -1;
-    double value = 0.0;
-    double value2 = 0.0;
-    int number = 0;
+    /// The world: a run-time setting (a world row, schema::settings()); a body: one of its rows
+    /// ("mass") or one of body_edit's actions.
+    lessons::schema::Object object = lessons::schema::Object::World;
+    physics::BodyId index = 0;    ///< the body's id; 0 for the world
+    std::string_view key;         ///< the row's key, or the action's
+    lessons::schema::Value value; ///< as the world row holds it (gravity: its vector)
 };
 
 using SettingEdits = std::vector<SettingEdit>;
 
-/// The edits that give a world started as `start` the settings `now` (dt, integrator, solver,
-/// iterations, restitution, friction, gravity), all at step 0: what a reset keeps.
+/// The edits that give a world started as `start` the run-time settings `now`, all at step 0:
+/// what a reset keeps.
 SettingEdits editsAtStart(const physics::WorldDef& start, const physics::WorldDef& now);
 
 /// The edits of the run the controller has, in order. A change made after going back drops

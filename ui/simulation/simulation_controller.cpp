@@ -9,6 +9,7 @@
 
 #include "format/limits.h"
 #include "format/scene_loader.h"
+#include "format/view_text.h"
 
 #include <QLocale>
 
@@ -80,26 +81,22 @@ void SimulationController::loadWorlds(const lessons::Scene& scene, const QString
 
 void SimulationController::reset()
 {
-    // Back to the start, keeping the settings the user chose since.
-    const physics::WorldDef settings = m_world.def();
+    // Back to the start, keeping the settings the user chose since: made again, as edits at
+    // step 0, in the worlds that follow each of them.
+    const SettingEdits kept = editsAtStart(m_worldStart.def(), m_world.def());
     setRunning(false);
     m_grab.release();
     m_world = m_worldStart;
-    m_world.setDt(settings.dt);
-    m_world.setIntegrator(settings.integrator);
-    m_world.setSolver(settings.solver);
-    m_world.setIterations(settings.iterations);
-    if (settings.restitution != m_worldStart.def().restitution)
-        m_world.setRestitution(settings.restitution);
-    if (settings.friction != m_worldStart.def().friction)
-        m_world.setFriction(settings.friction);
     m_variants = m_variantStarts;
-    forEachWorld([&](physics::World& w) {
-        w.setDt(settings.dt);
-        w.setGravity(settings.gravity);
-    });
-    // The run starts again with the settings kept: edits at step 0, made as just above.
-    m_edits.restart(editsAtStart(m_worldStart.def(), settings));
+    for (const SettingEdit& edit : kept) {
+        const lessons::schema::Field* row =
+            lessons::schema::findField(lessons::schema::Object::World, edit.key);
+        if (row->mainWorldOnly)
+            row->apply(m_world, edit.value);
+        else
+            forEachWorld([&](physics::World& w) { row->apply(w, edit.value); });
+    }
+    m_edits.restart(kept);
     resetClock();
     emit worldChanged();
 }
@@ -195,17 +192,22 @@ void SimulationController::advanceClock(double wallSeconds)
         m_catchUp.beginFrame(wallSeconds, m_timeScale);
         // Only a run that starts before the end time stops at it: Play once there runs on.
         const bool ends = m_endTime && m_world.time() < *m_endTime - 0.5 * h;
-        bool ended = false;
+        // Likewise a run that leaves the stage stops there once, and runs on after Play.
+        const bool onStage = !m_watch.leftStage();
+        bool ended = false, left = false;
         while (!ended && m_catchUp.nextStep(h, m_timing.physicsElapsedMs())) {
             const double before = m_timing.physicsElapsedMs();
             doStep();
             m_catchUp.stepTaken(h, m_timing.physicsElapsedMs() - before);
             m_timing.simulated(h);
-            ended = ends && m_world.time() >= *m_endTime - 0.5 * h;
+            left = onStage && m_watch.leftStage();
+            ended = left || (ends && m_world.time() >= *m_endTime - 0.5 * h);
         }
         m_catchUp.endFrame(h);
         if (ended)
             setRunning(false);
+        if (left)
+            emit leftStage(m_watch.leftStage()->body, m_watch.leftStage()->time);
     }
     const double counted = std::min(wallSeconds, CatchUp::kMaxGapSeconds);
     if (m_timing.frameDone(wallSeconds, counted))
@@ -269,33 +271,65 @@ void SimulationController::setTimeScale(double scale)
 
 void SimulationController::applyEdit(const SettingEdit& edit)
 {
-    using Kind = SettingEdit::Kind;
-    switch (edit.kind) {
-    case Kind::Dt:
-        return setDt(edit.value);
-    case Kind::Integrator:
-        return setIntegrator(static_cast<physics::IntegratorKind>(edit.number));
-    case Kind::Solver:
-        return setSolver(static_cast<physics::SolverKind>(edit.number));
-    case Kind::Iterations:
-        return setIterations(edit.number);
-    case Kind::Restitution:
-        return setRestitution(edit.value);
-    case Kind::Friction:
-        return setFriction(edit.value);
-    case Kind::Gravity:
-        return setGravityEnabled(edit.number != 0);
-    case Kind::BodyMaterial:
-        return setBodyMaterial(edit.body, edit.value, edit.value2);
-    case Kind::BodyMass:
-        return setBodyMass(edit.body, edit.value);
-    case Kind::BodyRotation:
-        return rotateBody(edit.body, edit.value);
-    case Kind::BodyMove:
-        return moveBody(edit.body, edit.value, edit.value2);
-    case Kind::BodyPush:
-        return pushBody(edit.body, edit.value, edit.value2);
-    }
+    using lessons::schema::Object;
+    const auto vec = [&] { return std::get<physics::Vec2>(edit.value); };
+    if (edit.object == Object::World)
+        setSetting(edit.key, edit.value);
+    else if (edit.key == "mass")
+        setBodyMass(edit.index, std::get<double>(edit.value));
+    else if (edit.key == body_edit::kMaterial)
+        setBodyMaterial(edit.index, vec().x(), vec().y());
+    else if (edit.key == body_edit::kTurn)
+        rotateBody(edit.index, std::get<double>(edit.value));
+    else if (edit.key == body_edit::kMove)
+        moveBody(edit.index, vec().x(), vec().y());
+    else if (edit.key == body_edit::kPush)
+        pushBody(edit.index, vec().x(), vec().y());
+}
+
+void SimulationController::setSetting(std::string_view key, const lessons::schema::Value& value)
+{
+    namespace schema = lessons::schema;
+    const schema::Field* row = schema::findField(schema::Object::World, key);
+    if (row == nullptr || row->apply == nullptr || !schema::takes(*row, value))
+        return;
+    lessons::Scene now;
+    now.world = m_world.def();
+    // A body row that falls back to this one ("restitution") may hold the body's own: the
+    // world's value given again gives it back to every body.
+    const auto bodyRows = schema::fields(schema::Object::Body);
+    const bool resetsBodies =
+        std::any_of(bodyRows.begin(), bodyRows.end(),
+                    [&](const schema::Field& f) { return f.fallback == key; });
+    if (!resetsBodies && row->get(now, 0) == value)
+        return;
+    logEdit({0, schema::Object::World, 0, row->key, value});
+    if (row->mainWorldOnly)
+        row->apply(m_world, value);
+    else
+        forEachWorld([&](physics::World& w) { row->apply(w, value); });
+    afterEdit(settingMark(*row, value));
+}
+
+QString SimulationController::settingMark(const lessons::schema::Field& row,
+                                          const lessons::schema::Value& value) const
+{
+    namespace schema = lessons::schema;
+    const double* number = std::get_if<double>(&value);
+    if (row.key == "dt")
+        return tr("dt = %1 s").arg(markNumber(*number));
+    if (row.key == "restitution")
+        return tr("e = %1").arg(markNumber(*number));
+    if (row.key == "friction")
+        return tr("μ = %1").arg(markNumber(*number));
+    if (row.key == "iterations")
+        return tr("%n iteration(s)", nullptr, std::get<int>(value));
+    if (row.key == "gravity")
+        return std::get<physics::Vec2>(value).isZero() ? tr("gravity off") : tr("gravity on");
+    if (const QString* name = std::get_if<QString>(&value))
+        return methodDisplayName(*name);
+    // Any other setting: its label and value, as the file would hold it.
+    return QStringLiteral("%1 = %2").arg(schema::label(row), schema::text(value));
 }
 
 void SimulationController::afterEdit(const QString& mark)
@@ -309,67 +343,38 @@ void SimulationController::afterEdit(const QString& mark)
 
 void SimulationController::setDt(double dt)
 {
-    if (!(dt >= lessons::kMinDt && dt <= lessons::kMaxDt) || dt == m_world.def().dt)
-        return;
-    logEdit({0, SettingEdit::Kind::Dt, -1, dt, 0.0, 0});
-    forEachWorld([dt](physics::World& w) { w.setDt(dt); });
-    afterEdit(tr("dt = %1 s").arg(markNumber(dt)));
+    setSetting("dt", dt);
 }
 
 void SimulationController::setIntegrator(physics::IntegratorKind kind)
 {
-    if (kind == m_world.def().integrator)
-        return;
-    logEdit({0, SettingEdit::Kind::Integrator, -1, 0.0, 0.0, static_cast<int>(kind)});
-    m_world.setIntegrator(kind);
-    afterEdit(integratorDisplayName(kind));
+    setSetting("integrator", lessons::textFromView(physics::integratorName(kind)));
 }
 
 void SimulationController::setSolver(physics::SolverKind kind)
 {
-    if (kind == m_world.def().solver)
-        return;
-    logEdit({0, SettingEdit::Kind::Solver, -1, 0.0, 0.0, static_cast<int>(kind)});
-    m_world.setSolver(kind);
-    afterEdit(solverDisplayName(kind));
+    setSetting("solver", lessons::textFromView(physics::solverName(kind)));
 }
 
 void SimulationController::setIterations(int iterations)
 {
-    if (iterations == m_world.def().iterations || iterations < 1 ||
-        iterations > lessons::kMaxIterations)
-        return;
-    logEdit({0, SettingEdit::Kind::Iterations, -1, 0.0, 0.0, iterations});
-    m_world.setIterations(iterations);
-    afterEdit(tr("%n iteration(s)", nullptr, iterations));
+    setSetting("iterations", iterations);
 }
 
 void SimulationController::setRestitution(double e)
 {
-    if (!lessons::limits::kRestitution.contains(e))
-        return;
-    logEdit({0, SettingEdit::Kind::Restitution, -1, e, 0.0, 0});
-    forEachWorld([e](physics::World& w) { w.setRestitution(e); });
-    afterEdit(tr("e = %1").arg(markNumber(e)));
+    setSetting("restitution", e);
 }
 
 void SimulationController::setFriction(double mu)
 {
-    if (!lessons::limits::kFriction.contains(mu))
-        return;
-    logEdit({0, SettingEdit::Kind::Friction, -1, mu, 0.0, 0});
-    forEachWorld([mu](physics::World& w) { w.setFriction(mu); });
-    afterEdit(tr("μ = %1").arg(markNumber(mu)));
+    setSetting("friction", mu);
 }
 
 void SimulationController::setGravityEnabled(bool on)
 {
-    const physics::Vec2 g = on ? m_sceneGravity : physics::Vec2::Zero();
-    if (g == m_world.def().gravity)
-        return;
-    logEdit({0, SettingEdit::Kind::Gravity, -1, 0.0, 0.0, on ? 1 : 0});
-    forEachWorld([&g](physics::World& w) { w.setGravity(g); });
-    afterEdit(on ? tr("gravity on") : tr("gravity off"));
+    // On: the scene's own gravity.
+    setSetting("gravity", on ? m_sceneGravity : physics::Vec2::Zero());
 }
 
 void SimulationController::setBodyMaterial(physics::BodyId id, double restitution, double friction)
@@ -379,7 +384,8 @@ void SimulationController::setBodyMaterial(physics::BodyId id, double restitutio
     if (!lessons::limits::kRestitution.contains(restitution) ||
         !lessons::limits::kFriction.contains(friction))
         return;
-    logEdit({0, SettingEdit::Kind::BodyMaterial, id, restitution, friction, 0});
+    logEdit({0, lessons::schema::Object::Body, id, body_edit::kMaterial,
+             physics::Vec2(restitution, friction)});
     m_world.setBodyMaterial(id, restitution, friction);
     afterEdit(QString());
 }
@@ -391,7 +397,7 @@ void SimulationController::setBodyMass(physics::BodyId id, double mass)
         return;
     if (!m_world.setBodyMass(id, mass))
         return;
-    logEdit({0, SettingEdit::Kind::BodyMass, id, mass, 0.0, 0});
+    logEdit({0, lessons::schema::Object::Body, id, "mass", mass});
     m_world.updateDiagnostics();
     afterEdit(tr("m = %1 kg").arg(markNumber(mass)));
 }
@@ -404,7 +410,7 @@ void SimulationController::rotateBody(physics::BodyId id, double radians)
     const double angle = m_world.body(id).angle + radians;
     if (!physics::limits::kAngle.contains(angle))
         return;
-    logEdit({0, SettingEdit::Kind::BodyRotation, id, radians, 0.0, 0});
+    logEdit({0, lessons::schema::Object::Body, id, body_edit::kTurn, radians});
     m_world.setBodyAngle(id, angle); // about the centre of mass; wakes the body
     afterEdit(QString());
 }
@@ -419,7 +425,7 @@ void SimulationController::moveBody(physics::BodyId id, double dx, double dy)
     if (!physics::limits::kCoordinate.contains(origin.x()) ||
         !physics::limits::kCoordinate.contains(origin.y()))
         return;
-    logEdit({0, SettingEdit::Kind::BodyMove, id, dx, dy, 0});
+    logEdit({0, lessons::schema::Object::Body, id, body_edit::kMove, physics::Vec2(dx, dy)});
     m_world.setBodyOrigin(id, origin, b.angle);
     afterEdit(QString());
 }
@@ -432,7 +438,7 @@ void SimulationController::pushBody(physics::BodyId id, double dvx, double dvy)
     const physics::Vec2 v = m_world.originVelocity(id) + physics::Vec2(dvx, dvy);
     if (!physics::limits::kVelocity.contains(v.x()) || !physics::limits::kVelocity.contains(v.y()))
         return;
-    logEdit({0, SettingEdit::Kind::BodyPush, id, dvx, dvy, 0});
+    logEdit({0, lessons::schema::Object::Body, id, body_edit::kPush, physics::Vec2(dvx, dvy)});
     m_world.setBodyVelocity(id, v, m_world.body(id).angularVelocity);
     afterEdit(tr("v = (%1; %2) m/s").arg(markNumber(v.x()), markNumber(v.y())));
 }

@@ -28,6 +28,7 @@
 #include <QTimer>
 
 #include <optional>
+#include <string_view>
 #include <vector>
 
 namespace rigidlab::ui {
@@ -105,6 +106,12 @@ public:
     const SettingEdits& edits() const { return m_edits.edits(); }
     /// Makes `edit` as its setter would, now (at whatever step the world is).
     void applyEdit(const SettingEdit& edit);
+    /// Changes the run-time setting `key` (a world row of schema::settings()) to `value`, as
+    /// the world row holds it, in every world that follows it (not the compared worlds' own
+    /// integrator or solver). A value the row does not take, or the one in force, changes
+    /// nothing; the world's restitution or friction given again gives the bodies back the
+    /// world's.
+    void setSetting(std::string_view key, const lessons::schema::Value& value);
 
     // Time travel.
     long long earliestStep() const { return m_history.earliest(); }
@@ -136,6 +143,12 @@ public:
     /// The running clock pauses when the world's time reaches `time` [s] (a lesson step's
     /// "endTime"); nullopt: it runs on. Play after it runs on from there.
     void setEndTime(std::optional<double> time) { m_endTime = time; }
+    /// Whether the running clock pauses when a body leaves the stage (lessons/run/off_stage.h:
+    /// a cart run off the end of its ground), once per run, saying so (leftStage); a lesson
+    /// step turns it on. The stage is the world's as it is now.
+    void setStageWatched(bool on) { m_watch.watchStage(on, m_world); }
+    /// The body that left the stage in this run, and when; nullopt while none has.
+    const std::optional<lessons::OffStage>& offStage() const { return m_watch.leftStage(); }
 
 public slots:
     void setRunning(bool running);
@@ -186,6 +199,8 @@ signals:
     void rewound(double t);
     /// Samples were cleared (new scene, reset).
     void samplesCleared();
+    /// A body left the stage at time t [s] and the run paused (setStageWatched).
+    void leftStage(physics::BodyId body, double t);
     /// measureFrames() is done: each frame's wall time and physics time [ms].
     void framesMeasured(const std::vector<double>& frameMs, const std::vector<double>& physicsMs);
 
@@ -193,6 +208,9 @@ private:
     void doStep();
     void pushSample();
     void afterEdit(const QString& mark);
+    /// The words of a setting's change mark on the plots: "dt = 0.002 s", "gravity off".
+    QString settingMark(const lessons::schema::Field& row,
+                        const lessons::schema::Value& value) const;
     /// Logs an edit made now; edits of the future the change drops go.
     void logEdit(const SettingEdit& edit) { m_edits.log(edit, m_world.stepCount()); }
     void resetClock();

@@ -4,6 +4,7 @@
 #include "common/display_names.h"
 #include "common/export_folder.h"
 #include "common/modal_scope.h"
+#include "common/number_format.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_panels.h"
@@ -25,6 +26,7 @@
 #include "format/data_dirs.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
+#include "run/featured_collision.h"
 #include "run/swept_bounds.h"
 
 #include <QAction>
@@ -54,6 +56,13 @@ LessonSession::LessonSession(const Parts& parts) : QObject(&parts.window), m_par
             m_parts.controller.setRunning(true); // predicted: now see
     });
     connect(&player, &LessonPlayer::exportRequested, this, &LessonSession::exportDialog);
+    connect(&parts.controller, &SimulationController::leftStage, this,
+            [this](physics::BodyId body, double t) {
+                m_parts.window.statusBar()->showMessage(
+                    tr("%1 fell off the stage at t = %2 s: the run paused. Play runs on.")
+                        .arg(m_parts.controller.scene().bodyLabel(body), formatReadable(t, 3)),
+                    20000);
+            });
 }
 
 QString LessonSession::openLesson(const QString& path, bool quiet)
@@ -145,8 +154,10 @@ void LessonSession::applyStep(const lessons::Lesson& lesson, int index)
     } else {
         m_parts.sat.setBodies(-1, -1);
     }
+    m_parts.collision.setNamedBodies(lessons::namedBodies(step, step.scene));
     frameStepAction(step);
     m_parts.controller.setEndTime(step.endTime);
+    m_parts.controller.setStageWatched(true);
     if (!step.editor)
         m_parts.controller.setRunning(step.autoplay && !m_runHeld);
 }
@@ -261,8 +272,8 @@ QStringList LessonSession::loadStepWorlds(const lessons::LessonStep& step,
     SimulationController& controller = m_parts.controller;
     controller.loadWorlds(scene, path, std::move(worlds), labels,
                           step.compare ? step.compare->offset : physics::Vec2::Zero());
-    if (step.settings.timeScale)
-        controller.setTimeScale(*step.settings.timeScale);
+    if (const auto scale = step.settings.get<double>("timeScale"))
+        controller.setTimeScale(*scale);
     std::vector<lessons::Measure> measures;
     for (const lessons::Question& q : step.questions)
         if (!q.isChoice()) // a choice question measures nothing
@@ -321,6 +332,7 @@ void LessonSession::leave()
         return;
     m_inLesson = false;
     m_parts.controller.setEndTime(std::nullopt);
+    m_parts.controller.setStageWatched(false);
     m_parts.editTools.setAllowedTools(std::nullopt);
     m_parts.editTools.setAllowedProperties(std::nullopt);
     emit left();
@@ -339,6 +351,7 @@ void LessonSession::leave()
     m_parts.layout.compareDock()->hide();
     m_parts.controls.setAllowed(std::nullopt);
     m_parts.sat.setBodies(-1, -1);
+    m_parts.collision.setNamedBodies({});
     applyHeldBack({});
     m_parts.layout.fitSideColumns();
     m_parts.view.setActionBounds({});

@@ -77,7 +77,7 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
     addDock(tr("Error vs run time"), QStringLiteral("errorDock"), panels.error,
             Qt::BottomDockWidgetArea)
         ->hide();
-    addDock(tr("Measurement"), QStringLiteral("measurement"), panels.measurement,
+    addDock(panelTitle(5, false), QStringLiteral("measurement"), panels.measurement,
             Qt::RightDockWidgetArea)
         ->hide();
     m_compareDock = new QDockWidget(tr("Side by side"), &window);

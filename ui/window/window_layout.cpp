@@ -93,6 +93,10 @@ void WindowLayout::arrangeDocks(const QSize& screen)
     for (const PlotNames& plot : kPlotNames)
         plots << m_docks.value(QLatin1String(plot.name));
     plots << m_compareDock;
+    // An imported measurement is plotted: its dock shares the plots' place (a lesson step
+    // that shows it beside a table keeps the table in sight).
+    if (QDockWidget* measurement = m_docks.value(QStringLiteral("measurement")))
+        plots << measurement;
     const QList<QDockWidget*> settings{m_docks.value(QStringLiteral("controls")),
                                        m_docks.value(QStringLiteral("inspector"))};
     QList<QDockWidget*> tables;

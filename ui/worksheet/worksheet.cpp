@@ -12,7 +12,6 @@
 #include "format/scene_schema.h"
 #include "run/measurements.h"
 
-#include <QBuffer>
 #include <QCoreApplication>
 #include <QDate>
 #include <QDir>
@@ -79,8 +78,8 @@ QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& r
                             formatReadable(ran.dt, 6), solver);
     // Every other setting the step (or a question the student answered) set: e = 0 is what
     // "set e = 0 and run again" ran with.
-    for (const lessons::schema::SettingsField& f : lessons::schema::settingsFields()) {
-        const lessons::schema::Value v = f.get(step.settings, 0);
+    for (const lessons::schema::Field& f : lessons::schema::settings()) {
+        const lessons::schema::Value v = step.settings.value(f.key);
         if (f.key == "integrator" || f.key == "dt" || f.key == "solver" || f.key == "timeScale" ||
             std::holds_alternative<std::monostate>(v))
             continue;
@@ -371,24 +370,22 @@ WorksheetResult writeWorksheet(const lessons::Lesson& lesson, const lessons::Ans
                 .arg(answers.lessonFile.isEmpty() ? lesson.title : answers.lessonFile, bad);
         return result;
     }
-    QByteArray bytes;
-    {
-        QBuffer out(&bytes);
-        out.open(QIODevice::WriteOnly);
-        QPdfWriter pdf(&out);
-        pdf.setCreator(QStringLiteral("RigidLab"));
-        pdf.setTitle(headerLine(lesson, answers, kind));
-        WorksheetPages pages(pdf, headerLine(lesson, answers, kind));
-        if (!pages.began()) {
-            result.error = Worksheet::tr("cannot write %1: could not start drawing the PDF")
-                               .arg(QDir::toNativeSeparators(path));
-            return result;
-        }
-        SheetWriter(lesson, answers, kind, pages).write(result.figures);
-        result.pages = pages.pages();
-        pages.end();
+    const std::optional<QByteArray> bytes =
+        drawPdf(headerLine(lesson, answers, kind), [&](QPdfWriter& pdf) {
+            WorksheetPages pages(pdf, headerLine(lesson, answers, kind));
+            if (!pages.began())
+                return false;
+            SheetWriter(lesson, answers, kind, pages).write(result.figures);
+            result.pages = pages.pages();
+            pages.end();
+            return true;
+        });
+    if (!bytes) {
+        result.error = Worksheet::tr("cannot write %1: could not start drawing the PDF")
+                           .arg(QDir::toNativeSeparators(path));
+        return result;
     }
-    if (const QString error = lessons::writeFileAtomically(path, bytes); !error.isEmpty()) {
+    if (const QString error = lessons::writeFileAtomically(path, *bytes); !error.isEmpty()) {
         result.error = error;
         result.figures.clear();
         return result;

@@ -3,6 +3,7 @@
 
 #include "plots/plot_widget.h"
 
+#include <QBuffer>
 #include <QCoreApplication>
 #include <QFontMetrics>
 #include <QPageLayout>
@@ -28,6 +29,22 @@ constexpr double kMarginMm = 15.0;
 constexpr int kWritingLine = 30;
 
 } // namespace
+
+std::optional<QByteArray> drawPdf(const QString& title,
+                                  const std::function<bool(QPdfWriter&)>& draw)
+{
+    QByteArray bytes;
+    {
+        QBuffer out(&bytes);
+        out.open(QIODevice::WriteOnly);
+        QPdfWriter pdf(&out);
+        pdf.setCreator(QStringLiteral("RigidLab"));
+        pdf.setTitle(title);
+        if (!draw(pdf))
+            return std::nullopt;
+    } // the writer finishes the file as it goes, before its buffer closes
+    return bytes;
+}
 
 WorksheetPages::WorksheetPages(QPdfWriter& pdf, const QString& header)
     : m_pdf(pdf), m_header(header)

@@ -3,6 +3,8 @@
 
 #include "plots/lesson_export.h"
 
+#include "format/view_text.h"
+
 namespace rigidlab::ui {
 
 lessons::LessonStep stepAsRun(const lessons::LessonStep& step, const lessons::StepAnswers& ran)
@@ -14,11 +16,12 @@ lessons::LessonStep stepAsRun(const lessons::LessonStep& step, const lessons::St
         if (lessons::asksSettings(step.questions[q]) && !ran.questions[q].empty())
             out = lessons::askedStep(step, step.questions[q]);
     if (ran.integrator)
-        out.settings.integrator = ran.integrator;
+        out.settings.set("integrator",
+                         lessons::textFromView(physics::integratorName(*ran.integrator)));
     if (ran.dt)
-        out.settings.dt = ran.dt;
+        out.settings.set("dt", *ran.dt);
     if (ran.solver)
-        out.settings.solver = ran.solver;
+        out.settings.set("solver", lessons::textFromView(physics::solverName(*ran.solver)));
     return out;
 }
 
