@@ -78,7 +78,7 @@ QString tableHtml(const lessons::ClassTable& table)
                                                  "me used.")
                                 .arg(table.rows.size()));
     html +=
-        QStringLiteral("<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\" width=\"100%\">");
+        QStringLiteral("<table border=\"1\" cellspacing=\"0\" cellpadding=\"3\" width=\"98%\">");
     // The heads of a question's group name it once: the first head of the group.
     html += tableRow(
         columns,
