@@ -7,6 +7,7 @@
 #include "cli_fit.h"
 #include "cli_lesson.h"
 #include "cli_numerics.h"
+#include "cli_results.h"
 #include "format/atomic_file.h"
 
 #include "format/data_dirs.h"
@@ -94,6 +95,21 @@ Commands:
                              folder: RIGIDLAB_DATA_DIR, else beside the installed program),
                              then the user's own (@USER_LESSONS@), marked
                              "your own" in a third column
+  results FOLDER             a class's hand-ins in one table: every answers file of FOLDER
+                             (*.answers.json, as Hand in saves them) judged again; a row
+                             per student (name, class, date), per question the first
+                             answer, its verdict, the tries and whether the hint or Show me
+                             was used, and a last row with the share right at the first
+                             answer. Damaged files and another lesson's are left out, one
+                             line each on standard error
+      --lesson FILE          the lesson to judge by (default: the one most files answer,
+                             found among the shipped lessons and your own)
+      --all-lessons          a table for every lesson the folder answers, instead of
+                             leaving the other lessons' files out
+      -o OUT.csv|OUT.pdf     write the table as CSV or PDF (default: text on stdout)
+      --csv-dialect D        the CSV's dialect (default as for run: the Czech spreadsheet's
+                             with --lang cs)
+      --lang en|cs           the language of the heads, the verdicts and the lesson
   error-vs-time [OPTIONS]    work against precision of every integrator on reference problems
       --problem NAME|all     oscillator, pendulum, kepler, spinning-body, double-pendulum
       --integrators LIST     comma-separated (default: all, Boost.Odeint's odeint-rk4 and
@@ -408,6 +424,7 @@ constexpr Command kCommands[] = {
     {QLatin1StringView("bench"), &commandBench},
     {QLatin1StringView("lesson"), &cli::commandLesson},
     {QLatin1StringView("lessons"), &cli::commandLessons},
+    {QLatin1StringView("results"), &cli::commandResults},
     {QLatin1StringView("fit"), &cli::commandFit},
 };
 

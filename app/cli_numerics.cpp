@@ -169,8 +169,8 @@ std::unique_ptr<QCoreApplication> makeApplication(int& argc, char** argv)
 {
     matchConsoleCodePage();
     lessons::useSettingsFiles();
-    if (argc > 1 &&
-        (std::strcmp(argv[1], "error-vs-time") == 0 || std::strcmp(argv[1], "lesson") == 0)) {
+    if (argc > 1 && (std::strcmp(argv[1], "error-vs-time") == 0 ||
+                     std::strcmp(argv[1], "lesson") == 0 || std::strcmp(argv[1], "results") == 0)) {
         // The plots are drawn into files, never shown: no display is needed. On Windows the
         // Windows platform needs none either, and its fonts are the system's (Qt's offscreen
         // platform there would look for fonts in Qt's own folder, and find none).

@@ -24,6 +24,136 @@
     </message>
 </context>
 <context>
+    <name>ClassResults</name>
+    <message>
+        <source>no lesson &quot;%1&quot; among the shipped lessons and your own (name its file)</source>
+        <translation>lekce „%1“ není mezi dodanými ani vašimi vlastními lekcemi (zadejte její soubor)</translation>
+    </message>
+    <message>
+        <source>%1: answers to &quot;%2&quot;, not to &quot;%3&quot;: left out</source>
+        <translation>%1: odpovědi k „%2“, ne k „%3“: vynecháno</translation>
+    </message>
+    <message>
+        <source>%1: %2 (the lesson has changed since?)</source>
+        <translation>%1: %2 (změnila se mezitím lekce?)</translation>
+    </message>
+    <message>
+        <source>%1: no such folder</source>
+        <translation>%1: taková složka není</translation>
+    </message>
+    <message>
+        <source>%1: the folder cannot be read</source>
+        <translation>%1: složku nelze číst</translation>
+    </message>
+    <message>
+        <source>%1: no answers files (%2) in it</source>
+        <translation>%1: nejsou v ní soubory s odpověďmi (%2)</translation>
+    </message>
+    <message>
+        <source>%1: none of its %2 answers files reads</source>
+        <translation>%1: žádný z jejích %2 souborů s odpověďmi nelze přečíst</translation>
+    </message>
+    <message>
+        <source>%1: its answers name no lesson (name the lesson&apos;s file)</source>
+        <translation>%1: odpovědi neuvádějí lekci (zadejte soubor lekce)</translation>
+    </message>
+    <message>
+        <source>%1: no answers to &quot;%2&quot; in it</source>
+        <translation>%1: nejsou v ní odpovědi k „%2“</translation>
+    </message>
+    <message>
+        <source>✓ right</source>
+        <translation>✓ správně</translation>
+    </message>
+    <message>
+        <source>✗ not right</source>
+        <translation>✗ nesprávně</translation>
+    </message>
+    <message>
+        <source>… not measured yet</source>
+        <translation>… ještě nezměřeno</translation>
+    </message>
+    <message>
+        <source>— not answered</source>
+        <translation>— bez odpovědi</translation>
+    </message>
+    <message>
+        <source>hint, Show me</source>
+        <translation>nápověda, Ukaž mi</translation>
+    </message>
+    <message>
+        <source>hint</source>
+        <translation>nápověda</translation>
+    </message>
+    <message>
+        <source>Show me</source>
+        <translation>Ukaž mi</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Jméno</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Třída</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>%1 first answer</source>
+        <translation>%1 první odpověď</translation>
+    </message>
+    <message>
+        <source>%1 first answer [%2]</source>
+        <translation>%1 první odpověď [%2]</translation>
+    </message>
+    <message>
+        <source>%1 verdict</source>
+        <translation>%1 hodnocení</translation>
+    </message>
+    <message>
+        <source>%1 tries</source>
+        <translation>%1 pokusy</translation>
+    </message>
+    <message>
+        <source>%1 hint or Show me</source>
+        <translation>%1 nápověda nebo Ukaž mi</translation>
+    </message>
+    <message>
+        <source>Right at the first answer [%]</source>
+        <translation>Správně napoprvé [%]</translation>
+    </message>
+    <message>
+        <source>%1 % (%2 of %3)</source>
+        <translation>%1 % (%2 z %3)</translation>
+    </message>
+</context>
+<context>
+    <name>ClassResultsText</name>
+    <message>
+        <source>Students: %1. Each question&apos;s cell: the first answer, its verdict, the tries, hint or Show me used.</source>
+        <translation>Žáků: %1. V buňce každé otázky: první odpověď, její hodnocení, počet pokusů, použitá nápověda nebo Ukaž mi.</translation>
+    </message>
+    <message>
+        <source>Files left out</source>
+        <translation>Vynechané soubory</translation>
+    </message>
+    <message>
+        <source>Class results</source>
+        <translation>Výsledky třídy</translation>
+    </message>
+    <message>
+        <source>Class results: %1</source>
+        <translation>Výsledky třídy: %1</translation>
+    </message>
+    <message>
+        <source>cannot write %1: could not start drawing the PDF</source>
+        <translation>nelze zapsat %1: kreslení PDF nešlo začít</translation>
+    </message>
+</context>
+<context>
     <name>CommandLine</name>
     <message>
         <source>RigidLab %1: a lab for 2D rigid-body mechanics.</source>
@@ -454,6 +584,33 @@
         <source>The simulation %1. It stopped here rather than draw garbage.</source>
         <translation>Simulace %1. Zastavila se tady, aby nekreslila nesmysly.</translation>
     </message>
+    <message>
+        <source>pairs of bodies</source>
+        <translation>dvojice těles</translation>
+    </message>
+    <message>
+        <source>more than %1 pairs of bodies overlap or nearly touch (around body &quot;%2&quot;): so crowded a scene needs memory and time growing with the square of the bodies; spread them out</source>
+        <translation>víc než %1 dvojic těles se překrývá nebo téměř dotýká (kolem tělesa „%2“): tak nahuštěná scéna potřebuje paměť a čas rostoucí se čtvercem počtu těles; rozmístěte je</translation>
+    </message>
+    <message>
+        <source>stopped at t = %1 s, before step %2: %3</source>
+        <translation>zastavila se v&#xa0;čase t = %1&#xa0;s, před krokem %2: %3</translation>
+    </message>
+    <message>
+        <source>The simulation %1. It stopped here rather than freeze the computer.</source>
+        <translation>Simulace %1. Zastavila se tady, aby nezamrzl počítač.</translation>
+    </message>
+    <message>
+        <source>too crowded to run</source>
+        <translation>příliš nahuštěná</translation>
+    </message>
+</context>
+<context>
+    <name>DrawableWords</name>
+    <message>
+        <source>[U+%1]</source>
+        <translation>[U+%1]</translation>
+    </message>
 </context>
 <context>
     <name>DriftWords</name>
@@ -539,6 +696,10 @@
     <message>
         <source>there is no %1</source>
         <translation>%1 neexistuje</translation>
+    </message>
+    <message>
+        <source>the scene</source>
+        <translation>scéna</translation>
     </message>
 </context>
 <context>
@@ -1899,6 +2060,14 @@ n = (%4; %5)</translation>
         <source>%1 needs %2×%3 px, more than the %4×%5 asked for</source>
         <translation>%1 potřebuje %2×%3 px, víc než požadovaných %4×%5</translation>
     </message>
+    <message>
+        <source>cannot create a temporary folder for the class: %1</source>
+        <translation>nelze vytvořit dočasnou složku pro třídu: %1</translation>
+    </message>
+    <message>
+        <source>File › Class results… on a class of five, with a damaged file and another lesson&apos;s</source>
+        <translation>Soubor › Výsledky třídy… na třídě pěti žáků, s poškozeným souborem a souborem jiné lekce</translation>
+    </message>
 </context>
 <context>
     <name>SpokenNumbers</name>
@@ -2029,10 +2198,6 @@ n = (%4; %5)</translation>
     <message>
         <source>Right answer: “%1”</source>
         <translation>Správná odpověď: „%1“</translation>
-    </message>
-    <message>
-        <source>%1 (instead of %2)</source>
-        <translation>%1 (místo: %2)</translation>
     </message>
     <message>
         <source>on</source>
@@ -2290,6 +2455,10 @@ n = (%4; %5)</translation>
         <source>the time column holds the time of every frame, not bounce times (name the column of bounce times &quot;bounce&quot;, or fit the positions with --quantity)</source>
         <translation>sloupec času obsahuje čas každého snímku, ne časy odrazů (pojmenujte sloupec časů odrazů „bounce“, nebo určujte z poloh s --quantity)</translation>
     </message>
+    <message>
+        <source>the fit was cancelled</source>
+        <translation>určování z&#xa0;měření bylo zrušeno</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui</name>
@@ -2468,6 +2637,125 @@ n = (%4; %5)</translation>
     <message>
         <source>&amp;Options (one language is enough)</source>
         <translation>&amp;Možnosti (stačí jeden jazyk)</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::ClassResultsDialog</name>
+    <message>
+        <source>Class results</source>
+        <translation>Výsledky třídy</translation>
+    </message>
+    <message>
+        <source>Folder of answers files</source>
+        <translation>Složka se soubory s odpověďmi</translation>
+    </message>
+    <message>
+        <source>the folder the class&apos;s answers files were saved in</source>
+        <translation>složka, do které se uložily soubory s odpověďmi třídy</translation>
+    </message>
+    <message>
+        <source>C&amp;hoose folder…</source>
+        <translation>&amp;Zvolit složku…</translation>
+    </message>
+    <message>
+        <source>Choose the folder of answers files</source>
+        <translation>Zvolit složku se soubory s odpověďmi</translation>
+    </message>
+    <message>
+        <source>&amp;Folder:</source>
+        <translation>&amp;Složka:</translation>
+    </message>
+    <message>
+        <source>Lesson</source>
+        <translation>Lekce</translation>
+    </message>
+    <message>
+        <source>The lessons the folder holds answers to, the most answered first</source>
+        <translation>Lekce, ke kterým jsou ve složce odpovědi, nejčastější první</translation>
+    </message>
+    <message>
+        <source>&amp;Lesson:</source>
+        <translation>&amp;Lekce:</translation>
+    </message>
+    <message>
+        <source>What was collected</source>
+        <translation>Co se sebralo</translation>
+    </message>
+    <message>
+        <source>Class results table</source>
+        <translation>Tabulka výsledků třídy</translation>
+    </message>
+    <message>
+        <source>A row per student, per question the first answer, its verdict, the tries and hint or Show me used; the last row: the share right at the first answer</source>
+        <translation>Řádek za každého žáka, u každé otázky první odpověď, její hodnocení, počet pokusů a použitá nápověda nebo Ukaž mi; poslední řádek: podíl správně napoprvé</translation>
+    </message>
+    <message>
+        <source>Sort the table by</source>
+        <translation>Řadit tabulku podle</translation>
+    </message>
+    <message>
+        <source>&amp;Descending</source>
+        <translation>S&amp;estupně</translation>
+    </message>
+    <message>
+        <source>Sort descending</source>
+        <translation>Řadit sestupně</translation>
+    </message>
+    <message>
+        <source>&amp;Sort by:</source>
+        <translation>Řadit &amp;podle:</translation>
+    </message>
+    <message>
+        <source>Files left &amp;out:</source>
+        <translation>&amp;Vynechané soubory:</translation>
+    </message>
+    <message>
+        <source>Files left out, one line each</source>
+        <translation>Vynechané soubory, po řádku</translation>
+    </message>
+    <message>
+        <source>Export &amp;CSV…</source>
+        <translation>Exportovat &amp;CSV…</translation>
+    </message>
+    <message>
+        <source>Export the table as CSV</source>
+        <translation>Exportovat tabulku jako CSV</translation>
+    </message>
+    <message>
+        <source>Export &amp;PDF…</source>
+        <translation>Exportovat P&amp;DF…</translation>
+    </message>
+    <message>
+        <source>Export the table as PDF</source>
+        <translation>Exportovat tabulku jako PDF</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Zavřít</translation>
+    </message>
+    <message>
+        <source>Choose the folder the class&apos;s answers files are in.</source>
+        <translation>Zvolte složku, ve které jsou soubory s odpověďmi třídy.</translation>
+    </message>
+    <message>
+        <source>%1: %2 students, %3 files left out</source>
+        <translation>%1: žáků %2, vynechaných souborů %3</translation>
+    </message>
+    <message>
+        <source>Export class results as CSV</source>
+        <translation>Exportovat výsledky třídy jako CSV</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export se nezdařil</translation>
+    </message>
+    <message>
+        <source>Export class results as PDF</source>
+        <translation>Exportovat výsledky třídy jako PDF</translation>
+    </message>
+    <message>
+        <source>PDF document (*.pdf)</source>
+        <translation>Dokument PDF (*.pdf)</translation>
     </message>
 </context>
 <context>
@@ -2652,6 +2940,18 @@ Soft step: springy contacts solved in small substeps; stiff stacks.</source>
         <translation>Kontakt po kontaktu: jeden impuls na každý kontakt, jednou (metoda původního článku, ze kterého laboratoř vychází).
 Postupné impulsy: iterované, omezené, s&#xa0;teplým startem.
 Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné stohy.</translation>
+    </message>
+    <message>
+        <source>Not used: the paper&apos;s impulse solves each contact once, in one pass</source>
+        <translation>Nepoužívá se: řešič Kontakt po kontaktu řeší každý kontakt jednou, v&#xa0;jediném průchodu</translation>
+    </message>
+    <message numerus="yes">
+        <source>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substeps instead</source>
+        <translation>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší v&#xa0;%n podkroku</numerusform>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší ve&#xa0;%n podkrocích</numerusform>
+            <numerusform>Měkký krok: iterace průchodu odrazů na začátku každého kroku; kontakty v&#xa0;klidu se místo toho řeší v&#xa0;%n podkrocích</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -4127,6 +4427,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Add a folder of lessons</source>
         <translation>Přidat složku s lekcemi</translation>
     </message>
+    <message>
+        <source>%1 fell off the stage at t = %2 s: the run paused. Play runs on.</source>
+        <translation>Těleso „%1“ spadlo ze scény v&#xa0;čase t = %2 s: simulace se pozastavila. Tlačítko Spustit ji rozběhne dál.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MainWindow</name>
@@ -4422,6 +4726,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>What was kept does not open: %1</source>
         <translation>Zachovanou lekci nelze otevřít: %1</translation>
     </message>
+    <message>
+        <source>Class res&amp;ults…</source>
+        <translation>Výsledk&amp;y třídy…</translation>
+    </message>
+    <message>
+        <source>Measurement</source>
+        <translation>Měření</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementImportDialog</name>
@@ -4692,6 +5004,26 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>No measurement yet: File › Import measurement… (%1), or drop a CSV file on the window.</source>
         <translation>Zatím žádné měření: Soubor › Importovat měření… (%1), nebo přetáhněte soubor CSV do okna.</translation>
     </message>
+    <message>
+        <source>Cancel fit</source>
+        <translation>Zrušit určování</translation>
+    </message>
+    <message>
+        <source>Cancel the fit that is running</source>
+        <translation>Zrušit probíhající určování z&#xa0;měření</translation>
+    </message>
+    <message>
+        <source>Fit running</source>
+        <translation>Určování z&#xa0;měření probíhá</translation>
+    </message>
+    <message numerus="yes">
+        <source>Fitting… %n run(s) of the model so far</source>
+        <translation>
+            <numerusform>Určuji… zatím %n běh modelu</numerusform>
+            <numerusform>Určuji… zatím %n běhy modelu</numerusform>
+            <numerusform>Určuji… zatím %n běhů modelu</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementSession</name>
@@ -4756,8 +5088,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>%1 = %2%3 (95&#xa0;%)</translation>
     </message>
     <message>
-        <source>From the bounce times alone: e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
-        <translation>Jen z&#xa0;časů odrazů: e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
+        <source>From the bounce times alone (%3): e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
+        <translation>Jen z&#xa0;časů odrazů (%3): e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
     </message>
 </context>
 <context>
@@ -4777,6 +5109,13 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>“%1” is not a number: %2</source>
         <translation>„%1“ není číslo: %2</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::PlotShelf</name>
+    <message>
+        <source>Plots</source>
+        <translation>Grafy</translation>
     </message>
 </context>
 <context>
@@ -5506,32 +5845,8 @@ B&#xa0;%3 … %4</translation>
         <translation> krok %1 z&#xa0;%2 · t = %3&#xa0;s</translation>
     </message>
     <message>
-        <source>%1 instead of the soft step</source>
-        <translation>%1 místo měkkého kroku</translation>
-    </message>
-    <message>
         <source>Contact solver: %1</source>
         <translation>Řešič kontaktů: %1</translation>
-    </message>
-    <message>
-        <source>The soft step runs only with the symplectic Euler integrator.</source>
-        <translation>Měkký krok běží jen se symplektickou Eulerovou metodou.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle springs yet.</source>
-        <translation>Měkký krok zatím neumí pružiny.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle pin joints yet.</source>
-        <translation>Měkký krok zatím neumí čepy.</translation>
-    </message>
-    <message>
-        <source>The soft step does not handle gravitation between bodies yet.</source>
-        <translation>Měkký krok zatím neumí gravitaci mezi tělesy.</translation>
-    </message>
-    <message>
-        <source>%1 The sequential-impulse solver runs instead.</source>
-        <translation>%1 Místo něj běží řešič postupných impulsů.</translation>
     </message>
     <message>
         <source>A frame&apos;s physics takes longer than the frame has: the clock leaves out the time it cannot catch up with, so the run goes slower than real time instead of falling further behind.</source>
@@ -5547,6 +5862,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Question %1: the integrators a student may choose measure from %2 to %3 %4, wider than the answers judged right (%5 to %6 %4): lock the integrator (Shown and locked) or widen the tolerance.</source>
         <translation>Otázka %1: integrátory, které si žák může zvolit, naměří od %2 do %3 %4, víc, než kolik pokrývají odpovědi uznané za správné (%5 až %6 %4): zamkněte integrátor (Zobrazeno a zamčeno), nebo zvětšete toleranci.</translation>
+    </message>
+    <message>
+        <source>%1 falls off the stage at t = %2 s, and the run stops there: give the step an end time before it, or more ground.</source>
+        <translation>Těleso „%1“ spadne ze scény v&#xa0;čase t = %2 s a simulace se tam zastaví: dejte kroku dřívější čas konce, nebo delší podložku.</translation>
     </message>
 </context>
 <context>
@@ -5810,10 +6129,6 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>Lesson</source>
         <translation>Lekce</translation>
-    </message>
-    <message>
-        <source>Measurement</source>
-        <translation>Měření</translation>
     </message>
 </context>
 <context>

@@ -43,6 +43,16 @@
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::ControlPanel</name>
+    <message numerus="yes">
+        <source>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substeps instead</source>
+        <translation>
+            <numerusform>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substep instead</numerusform>
+            <numerusform>Soft step: iterations of its bounce pass at the start of each step; the resting contacts are solved in %n substeps instead</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::EditTools</name>
     <message numerus="yes">
         <source>%n point(s); double-click or Enter closes the polygon, Escape drops it</source>
@@ -83,6 +93,16 @@
         <translation>
             <numerusform>%n row before time zero left out</numerusform>
             <numerusform>%n rows before time zero left out</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::MeasurementPanel</name>
+    <message numerus="yes">
+        <source>Fitting… %n run(s) of the model so far</source>
+        <translation>
+            <numerusform>Fitting… %n run of the model so far</numerusform>
+            <numerusform>Fitting… %n runs of the model so far</numerusform>
         </translation>
     </message>
 </context>

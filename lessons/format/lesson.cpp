@@ -68,6 +68,11 @@ void applySettings(const StepSettings& settings, physics::World& world)
     }
 }
 
+double exportRunTime(const LessonStep& step)
+{
+    return step.endTime ? std::min(step.exportTime, *step.endTime) : step.exportTime;
+}
+
 std::vector<physics::World> buildStepWorlds(const LessonStep& step)
 {
     physics::World main = buildWorld(step.scene);

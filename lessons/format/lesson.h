@@ -33,8 +33,8 @@ inline constexpr std::array<std::string_view, 5> kStepPlotNames{"energy", "momen
                                                                 "compare-energy", "compare-drift"};
 inline constexpr std::array<std::string_view, 6> kStepOverlayNames{
     "velocities", "contacts", "boxes", "centres", "trails", "springs"};
-inline constexpr std::array<std::string_view, 5> kStepPanelNames{"controls", "inspector", "sat",
-                                                                 "bounces", "collision"};
+inline constexpr std::array<std::string_view, 6> kStepPanelNames{
+    "controls", "inspector", "sat", "bounces", "collision", "measurement"};
 
 /// The version this loader reads (the value of the top-level key "rigidlab-lesson").
 inline constexpr int kLessonFormatVersion = 1;
@@ -166,7 +166,7 @@ struct LessonStep {
     std::optional<Comparison> compare;
     QStringList plots;    ///< of: energy, momentum, drift, compare-energy, compare-drift
     QStringList overlays; ///< of: velocities, contacts, boxes, centres, trails, springs
-    QStringList panels;   ///< of: controls, inspector, sat, bounces, collision
+    QStringList panels;   ///< of: controls, inspector, sat, bounces, collision, measurement
     /// Controls the student may change (integrator, dt, solver, iterations, restitution,
     /// friction, gravity, timeScale); nullopt: all of them.
     std::optional<QStringList> allow;
@@ -235,6 +235,10 @@ bool asksSettings(const Question& question);
 
 /// Applies a step's settings to a world built from its scene.
 void applySettings(const StepSettings& settings, physics::World& world);
+
+/// How long a step runs without a window (its exported plots, the worksheet's figures): its
+/// exportTime, cut short at its endTime, where the window's run stops too [s].
+double exportRunTime(const LessonStep& step);
 
 /// The step's worlds: [0] the main world, then one per compared variant (count() - 1 more,
 /// the first variant being the main world itself).

@@ -57,6 +57,7 @@ struct Model {
     const Series& series;
     bool exact = false; ///< closed-form flights (exact_flights.h), else the lab's run at dt
     double dt = 0;      ///< [s]
+    const FitOptions& options;
     int runs = 0;
     long long work = 0; ///< the lab's steps run so far
     QString error;
@@ -70,6 +71,12 @@ struct Model {
 
     std::optional<std::vector<double>> operator()(const std::vector<double>& x)
     {
+        // Cancelled: every run fails at once, and the fit with it (the minimiser's remaining
+        // trials cost nothing).
+        if (options.cancelled && options.cancelled->load())
+            return std::nullopt;
+        if (options.runs)
+            options.runs->fetch_add(1);
         lessons::Scene trial = scene;
         for (std::size_t i = 0; i < parameters.size(); ++i)
             setParameter(trial, parameters[i], x[i]);
@@ -390,8 +397,11 @@ QString describeModel(const FitResult& fit, const std::vector<Parameter>& parame
         .arg(step, changed);
 }
 
-FitResult fitScene(const lessons::Scene& scene, const std::vector<Parameter>& parameters,
-                   const Target& target, const Series& series, const FitOptions& options)
+namespace {
+
+/// fitScene's work, a cancelled fit aside.
+FitResult fitAll(const lessons::Scene& scene, const std::vector<Parameter>& parameters,
+                 const Target& target, const Series& series, const FitOptions& options)
 {
     const std::size_t k = parameters.size();
     const int n = static_cast<int>(series.t.size());
@@ -404,7 +414,7 @@ FitResult fitScene(const lessons::Scene& scene, const std::vector<Parameter>& pa
                                                      "measure more")
                              .arg(n)
                              .arg(k));
-    Model model{scene, parameters, target, series, false, scene.world.dt, 0, 0, {}, {}};
+    Model model{scene, parameters, target, series, false, scene.world.dt, options, 0, 0, {}, {}};
     model.exact =
         options.exactWherePossible &&
         std::none_of(parameters.begin(), parameters.end(),
@@ -444,6 +454,22 @@ FitResult fitScene(const lessons::Scene& scene, const std::vector<Parameter>& pa
         return fitFailed(result.error.isEmpty() ? model.error : result.error);
     result.runs = model.runs;
     result.ok = true;
+    return result;
+}
+
+} // namespace
+
+FitResult fitScene(const lessons::Scene& scene, const std::vector<Parameter>& parameters,
+                   const Target& target, const Series& series, const FitOptions& options)
+{
+    FitResult result = fitAll(scene, parameters, target, series, options);
+    // Cancelled while it ran: whatever the runs left, no value (a result finished just as
+    // the flag was set is dropped too: the user asked for none).
+    if (options.cancelled && options.cancelled->load()) {
+        result =
+            fitFailed(QCoreApplication::translate("rigidlab::measure", "the fit was cancelled"));
+        result.cancelled = true;
+    }
     return result;
 }
 

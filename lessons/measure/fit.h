@@ -35,6 +35,7 @@
 
 #include <QString>
 
+#include <atomic>
 #include <optional>
 #include <vector>
 
@@ -118,6 +119,7 @@ struct FitResult {
     int points = 0;
     int degreesOfFreedom = 0;
     int runs = 0;                  ///< simulations run
+    bool cancelled = false;        ///< stopped by FitOptions::cancelled (error says so)
     std::vector<double> simulated; ///< at the measured times, with the fitted values
     std::vector<double> residuals; ///< measured − simulated
 };
@@ -127,6 +129,12 @@ struct FitOptions {
     /// Off: the lab's run even where the flights are exact (to compare the two).
     bool exactWherePossible = true;
     long long maxWork = kMaxFitWork; ///< steps of the lab's engine, at most
+    /// For a fit in a thread of its own (the window's): set from another thread, the fit stops
+    /// at its next run and fails with FitResult::cancelled; null, it runs to the end.
+    const std::atomic_bool* cancelled = nullptr;
+    /// Counts the model's runs as they end (read from another thread, for a progress
+    /// indication); may be null.
+    std::atomic_int* runs = nullptr;
 };
 
 /// Fits the parameters (one to three) to the series, the target read from the scene.

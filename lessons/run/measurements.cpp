@@ -236,9 +236,9 @@ double Measurements::touchdownY(const physics::World& world, BodyId i) const
     // one with the least gap meets first: a box lands on its lowest corner.
     const auto at = static_cast<std::size_t>(i);
     std::optional<double> touch;
-    for (const physics::Contact& c : world.contacts()) {
-        if (c.a != i && c.b != i)
-            continue;
+    for (int j = m_contactStart[at]; j < m_contactStart[at + 1]; ++j) {
+        const physics::Contact& c =
+            world.contacts()[static_cast<std::size_t>(m_contactList[static_cast<std::size_t>(j)])];
         const physics::Manifold& m = c.manifold;
         for (int k = 0; k < m.pointCount; ++k) {
             if (!(c.normalImpulse[static_cast<std::size_t>(k)] > 0))
@@ -250,6 +250,27 @@ double Measurements::touchdownY(const physics::World& world, BodyId i) const
         }
     }
     return touch.value_or(world.body(i).position.y());
+}
+
+void Measurements::indexContacts(const physics::World& world)
+{
+    // A counting sort of the contacts by body: each body's in the contacts' order.
+    const auto& contacts = world.contacts();
+    m_contactStart.assign(world.bodies().size() + 1, 0);
+    for (const physics::Contact& c : contacts) {
+        ++m_contactStart[static_cast<std::size_t>(c.a) + 1];
+        ++m_contactStart[static_cast<std::size_t>(c.b) + 1];
+    }
+    for (std::size_t i = 1; i < m_contactStart.size(); ++i)
+        m_contactStart[i] += m_contactStart[i - 1];
+    m_contactList.assign(static_cast<std::size_t>(m_contactStart.back()), 0);
+    std::vector<int> next(m_contactStart.begin(), m_contactStart.end() - 1);
+    for (std::size_t k = 0; k < contacts.size(); ++k) {
+        m_contactList[static_cast<std::size_t>(next[static_cast<std::size_t>(contacts[k].a)]++)] =
+            static_cast<int>(k);
+        m_contactList[static_cast<std::size_t>(next[static_cast<std::size_t>(contacts[k].b)]++)] =
+            static_cast<int>(k);
+    }
 }
 
 void Measurements::observe(const physics::World& world)
@@ -269,6 +290,7 @@ void Measurements::observe(const physics::World& world)
     const double t = world.time();
 
     // Bounces and apexes.
+    bool indexed = false; // indexContacts() for this step, at the first bounce
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const physics::Body& b = bodies[i];
         if (!b.isDynamic()) {
@@ -279,6 +301,10 @@ void Measurements::observe(const physics::World& world)
         Peak& peak = m_peaks[i];
         if (m_lastVelocity[i].y() < 0 && vy > kBounceSpeed &&
             m_bounces[i].size() < kMaxBouncesPerBody) {
+            if (!indexed) {
+                indexContacts(world);
+                indexed = true;
+            }
             const double touch = touchdownY(world, static_cast<BodyId>(i));
             m_bounces[i].push_back(t);
             m_bounceY[i].push_back(touch);

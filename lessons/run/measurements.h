@@ -98,8 +98,12 @@ private:
     touchingPairs(const physics::World& world);
     CollisionEvent collisionEvent(const physics::World& world, const physics::Contact& c) const;
     /// The height of body i's centre where it touched what made it bounce this step (see
-    /// ApexEvent::bounceY); its height now when no contact pushed it.
+    /// ApexEvent::bounceY); its height now when no contact pushed it. Reads the contacts of
+    /// indexContacts().
     double touchdownY(const physics::World& world, physics::BodyId i) const;
+    /// Each body's contacts this step, by index (m_contactStart, m_contactList): a pile that
+    /// settles bounces thousands of bodies in one step, and each would search every contact.
+    void indexContacts(const physics::World& world);
 
     std::vector<std::vector<ApexEvent>> m_apexes;
     std::vector<std::vector<double>> m_bounces; ///< bounce times per body [s]
@@ -112,6 +116,8 @@ private:
     std::vector<double> m_lastAngular;         ///< [rad/s]
     std::vector<physics::Vec2> m_lastPosition; ///< centres of mass [m]
     std::vector<std::pair<physics::BodyId, physics::BodyId>> m_touching;
+    /// Body i's contacts are m_contactList[m_contactStart[i] .. m_contactStart[i + 1]).
+    std::vector<int> m_contactStart, m_contactList;
     bool m_resync = false; ///< the next observe() only reads the state
     /// Total minus dissipated energy at the start, and what the drift is relative to [J].
     double m_energy0 = 0, m_energyScale = 1;

@@ -391,23 +391,12 @@ QString RunReport::summary(const QString& sourceName) const
                               .arg(QString::number(100.0 * this->drift(), 'g', 4));
     // Each part in one multi-argument arg(), so that a '%' in a file name is never taken for
     // a placeholder.
-    // The solver that ran: the sequential-impulse solver where it stood in for the soft step.
-    const physics::SolverKind ran =
-        standIn == physics::SoftStepStandIn::None ? solver : physics::SolverKind::SequentialImpulse;
     const QString run =
         QStringLiteral("%1: %2 steps of %3 s (%4 s simulated) in %5 s of wall time, with the %6 "
                        "integrator and the %7 solver.")
             .arg(sourceName, QString::number(steps), QString::number(dt, 'g', 6),
                  QString::number(simulatedTime, 'g', 8), QString::number(wallSeconds, 'f', 3),
-                 name(physics::integratorName(integrator)), name(physics::solverName(ran)));
-    // The solver that ran, when it is not the one asked for, and why.
-    const QString standInNote =
-        standIn == physics::SoftStepStandIn::None
-            ? QString()
-            : QStringLiteral(" The scene asks for the soft step, which runs only with the "
-                             "symplectic-euler integrator and without springs, pin joints or "
-                             "gravitation (here: %1).")
-                  .arg(name(physics::standInName(standIn)));
+                 name(physics::integratorName(integrator)), name(physics::solverName(solver)));
     // Contacts that gave energy back are said to have added it, never booked as a negative
     // loss (a kinematic body pushing, or a run that diverged for it).
     const QString contacts =
@@ -417,7 +406,7 @@ QString RunReport::summary(const QString& sourceName) const
                                           "%4; the rest, %5, is the numerical error.")
                                .arg(formatEnergy(energyStart), formatEnergy(energyEnd), contacts,
                                     formatEnergy(dissipated - collisionLoss), drift);
-    return run + standInNote + energy;
+    return run + energy;
 }
 
 RunReport runScene(const Scene& scene, const RunOptions& options, const QString& sourceName)
@@ -456,7 +445,6 @@ RunReport runScene(const Scene& scene, const RunOptions& options, const QString&
     Scene settings = scene;
     settings.world = def;
     physics::World world = buildWorld(settings);
-    report.standIn = world.softStepStandIn();
     world.updateDiagnostics();
     const physics::Diagnostics start = world.diagnostics();
     report.energyStart = start.total;

@@ -72,8 +72,6 @@ struct RunReport {
     double energyScale = 1;   ///< what the drift is relative to, energyScale() at step 0 [J]
     physics::IntegratorKind integrator = physics::IntegratorKind::SymplecticEuler;
     physics::SolverKind solver = physics::SolverKind::SequentialImpulse;
-    /// Why the sequential-impulse solver ran for the soft step asked for (None: as asked).
-    physics::SoftStepStandIn standIn = physics::SoftStepStandIn::None;
     /// With RunOptions::profile: each stage's time and ran flag summed over the steps [ms]
     /// (ran: the stage ran at least once), the counts of the last step.
     std::optional<physics::StepProfile> profile;

@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "run/swept_bounds.h"
 
+#include "run/off_stage.h"
+
 #include "rigidlab/physics/overloaded.h"
 
 #include <algorithm>
 
 namespace rigidlab::lessons {
 
-namespace {
-
-/// The axis-aligned box of one body where it is now [m].
-QRectF bodyBox(const physics::Body& body)
+QRectF bodyBounds(const physics::Body& body)
 {
     const physics::Transform t = body.transform();
     return body.shape.visit(physics::Overloaded{
@@ -29,12 +28,14 @@ QRectF bodyBox(const physics::Body& body)
         }});
 }
 
+namespace {
+
 QRectF movingBodiesBox(const physics::World& world)
 {
     QRectF box;
     for (const physics::Body& b : world.bodies())
         if (b.moves())
-            box |= bodyBox(b);
+            box |= bodyBounds(b);
     return box;
 }
 
@@ -49,10 +50,11 @@ QRectF sweptBounds(const physics::World& world, double until)
         return box;
     const double dt = world.def().dt;
     const double maxSteps = kSweepBodyStepBudget / static_cast<double>(moving);
+    const StageFloor floor = stageFloor(world);
     physics::World copy(world);
     for (long long k = 0; copy.time() < until - 0.5 * dt && k < maxSteps; ++k) {
         copy.step();
-        if (copy.divergence())
+        if (copy.divergence() || offStage(copy, floor))
             break;
         box |= movingBodiesBox(copy);
     }

@@ -45,36 +45,6 @@ const char* stageName(Stage s)
     return "?";
 }
 
-std::string_view standInName(SoftStepStandIn why)
-{
-    switch (why) {
-    case SoftStepStandIn::None:
-        return "";
-    case SoftStepStandIn::Integrator:
-        return "integrator";
-    case SoftStepStandIn::Springs:
-        return "springs";
-    case SoftStepStandIn::Joints:
-        return "pin-joints";
-    case SoftStepStandIn::Gravitation:
-        return "gravitation";
-    }
-    return "";
-}
-
-SoftStepStandIn World::softStepStandIn() const
-{
-    // The soft step runs every world (soft_step.cpp: springs, pins, gravitation and every
-    // integrator in its smooth motion), so no solver stands in for it.
-    return SoftStepStandIn::None;
-}
-
-SolverKind World::solverRunning() const
-{
-    return softStepStandIn() == SoftStepStandIn::None ? m_def.solver
-                                                      : SolverKind::SequentialImpulse;
-}
-
 StepPlan planStep(const WorldDef& def, const std::vector<Body>& bodies,
                   const std::vector<SpringDef>& springs, const std::vector<PinJointDef>& joints,
                   const std::vector<std::pair<int, int>>& jointPairs, bool plain)

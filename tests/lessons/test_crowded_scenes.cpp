@@ -3,10 +3,14 @@
 // documented limits, but every pair of them is a contact: the loader refuses the heap in one
 // line, within 5 s and 1 GB (the child runs under an address-space limit), through
 // `rigidlab-cli validate` and `run` alike; a few overlapping bodies load with a warning from
-// ten pairs on; a packed pyramid, whose boxes only touch, loads as before.
+// ten pairs on; a packed pyramid, whose boxes only touch, loads as before. A heap that reaches
+// the engine some other way stops before its first step, in the lab's words.
 
+#include "format/divergence_message.h"
 #include "format/scene_loader.h"
 #include "format/scene_overlaps.h"
+
+#include "rigidlab/physics/world.h"
 
 #include "cli_run.h"
 #include "test_main.h"
@@ -121,6 +125,30 @@ private slots:
             lessons::loadSceneFile(writeScene(dir, QStringLiteral("three.json"), heap(3)));
         QVERIFY2(three.ok && three.warnings.isEmpty(), qPrintable(three.warnings.join(u'\n')));
         QCOMPARE(lessons::surveyOverlaps(three.scene, 100).pairs.size(), std::size_t{3});
+    }
+
+    void heapBuiltDirectlyStopsWithAMessage()
+    {
+        // Read without the loader's check (as a program or the editor could build it): the
+        // world stops before its first step, and the one message says why, in one line.
+        lessons::Scene scene = lessons::loadSceneJson(heap(5), QStringLiteral("few")).scene;
+        const physics::BodyDef ball = scene.bodies.back();
+        while (scene.bodies.size() < 1001) {
+            scene.bodies.push_back(ball);
+            scene.bodies.back().name = "ball" + std::to_string(scene.bodies.size());
+        }
+        physics::World world = lessons::buildWorld(scene);
+        world.step();
+        QVERIFY(world.divergence());
+        QCOMPARE(world.time(), 0.0);
+        const QString message = lessons::divergenceMessage(*world.divergence());
+        QVERIFY2(message.startsWith(QStringLiteral("stopped at t = 0 s, before step 1: more "
+                                                   "than %1 pairs of bodies overlap or nearly "
+                                                   "touch (around body \"ball")
+                                        .arg(lessons::boxPairBudget(scene))),
+                 qPrintable(message));
+        QVERIFY2(message.endsWith(QStringLiteral("spread them out")), qPrintable(message));
+        QVERIFY(!message.contains(u'\n'));
     }
 
     void packedPyramidLoads()

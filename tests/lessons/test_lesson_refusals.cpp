@@ -123,7 +123,7 @@ void TestLesson::rejectsBadLesson_data()
     QTest::newRow("unknown-panel")
         << oneStep(R"("panels": ["table"])")
         << steps0 + R"(panels[0]: unknown panel "table" (expected controls, inspector, sat, )"
-                    "bounces, collision)";
+                    "bounces, collision, measurement)";
     QTest::newRow("unknown-control")
         << oneStep(R"("allow": ["mass"])")
         << steps0 + R"(allow[0]: unknown control "mass" (expected integrator, dt, solver, )"

@@ -62,16 +62,12 @@ void TestLessons::shippedScenesLoad()
     options.time = 0.2;
     const lessons::RunReport report = lessons::runScene(result.scene, options, path);
     QVERIFY2(report.status == lessons::RunStatus::Ok, qPrintable(report.error));
-    // The summary names the solver that ran: where the sequential-impulse solver stood in for
-    // the soft step (springs, pins, gravitation, another integrator), not the soft step.
+    // The summary names the solver that ran, the scene's.
     const QString summary = report.summary(path);
-    const bool standIn = report.standIn != physics::SoftStepStandIn::None;
-    const QString ran = QStringLiteral("the %1 solver.")
-                            .arg(QLatin1String(physics::solverName(
-                                standIn ? physics::SolverKind::SequentialImpulse : report.solver)));
+    QCOMPARE(report.solver, result.scene.world.solver);
+    const QString ran =
+        QStringLiteral("the %1 solver.").arg(QLatin1String(physics::solverName(report.solver)));
     QVERIFY2(summary.contains(ran), qPrintable(summary));
-    QVERIFY2(!standIn || !summary.contains(QStringLiteral("soft-step solver")),
-             qPrintable(summary));
 }
 
 void TestLessons::summaryBooksContactsThatAddEnergy()

@@ -41,6 +41,15 @@ namespace rigidlab::test::classroom {
 
 using rigidlab::ui::MainWindow;
 
+/// A classroom projector's screen, the smallest the lab is made for [px].
+inline constexpr QSize kProjector(1024, 768);
+
+/// "x,y WxH", for messages.
+inline QString rectText(const QRect& r)
+{
+    return QStringLiteral("%1,%2 %3x%4").arg(r.x()).arg(r.y()).arg(r.width()).arg(r.height());
+}
+
 inline bool interactive(const QWidget* w)
 {
     return qobject_cast<const QAbstractButton*>(w) || qobject_cast<const QLineEdit*>(w) ||

@@ -30,6 +30,7 @@
 #include <QPalette>
 #include <QRegularExpression>
 #include <QScopeGuard>
+#include <QTabBar>
 #include <QTimer>
 #include <QtTest>
 #include <qcustomplot.h>
@@ -197,6 +198,47 @@ private slots:
         QVERIFY2(
             bodyTold >= bodies && bodyTold <= seconds * bodies,
             qPrintable(QStringLiteral("%1 body updates, %2 frames").arg(bodyTold).arg(frames)));
+    }
+
+    /// A tab says it is focused only where the keys go: the current tab of the tab bar that
+    /// has the focus, not the current tab of every tab bar (Qt's own interface says that).
+    void onlyTheFocusedTabIsFocused()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        w.view().setFocus();
+        QCoreApplication::processEvents();
+        const auto focusedTabs = [&w] {
+            QStringList out;
+            for (QTabBar* bar : w.findChildren<QTabBar*>()) {
+                QAccessibleInterface* list = QAccessible::queryAccessibleInterface(bar);
+                for (int i = 0; list && i < bar->count(); ++i)
+                    if (QAccessibleInterface* tab = list->child(i);
+                        tab && tab->role() == QAccessible::PageTab && tab->state().focused)
+                        out << tab->text(QAccessible::Name);
+            }
+            return out;
+        };
+        QStringList tabs;
+        for (QTabBar* bar : w.findChildren<QTabBar*>())
+            if (bar->isVisible() && bar->count() > 1)
+                tabs << bar->tabText(bar->currentIndex());
+        QVERIFY2(!tabs.isEmpty(), "no tab bar with tabs shown"); // there is something to check
+        QVERIFY2(focusedTabs().isEmpty(), qPrintable(focusedTabs().join(u',')));
+        // Focused, a bar's current tab is the one focused, and it presses with its action.
+        QTabBar* bar = nullptr;
+        for (QTabBar* b : w.findChildren<QTabBar*>())
+            if (b->isVisible() && b->count() > 1)
+                bar = b;
+        bar->setFocus(Qt::TabFocusReason);
+        QCoreApplication::processEvents();
+        QCOMPARE(focusedTabs(), QStringList{bar->tabText(bar->currentIndex()).remove(u'&')});
+        QAccessibleInterface* list = QAccessible::queryAccessibleInterface(bar);
+        const int other = bar->currentIndex() == 0 ? 1 : 0;
+        QCOMPARE(list->child(other)->role(), QAccessible::PageTab);
+        list->child(other)->actionInterface()->doAction(QAccessibleActionInterface::pressAction());
+        QCOMPARE(bar->currentIndex(), other);
+        QCOMPARE(list->focusChild(), list->child(other));
     }
 
     /// A plot reads as its title, its axes with units and its series with values now,

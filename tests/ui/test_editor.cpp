@@ -12,11 +12,13 @@
 #include "view/body_item.h"
 
 #include "edit/scene_edits.h"
+#include "rigidlab/physics/work_budget.h"
 
 #include "near.h"
 #include "test_main.h"
 
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QSignalSpy>
 #include <QToolButton>
 #include <QUndoStack>
@@ -40,6 +42,7 @@ private slots:
     void velocityByDraggingTheArrow();
     void colourInTheProperties();
     void propertiesShowWhatMatters();
+    void duplicatePastTheBudgetIsRefused();
 };
 
 void TestEditor::editModePausesAndRunsAsEdited()
@@ -502,3 +505,43 @@ void TestEditor::propertiesShowWhatMatters()
 
 RIGIDLAB_TEST_MAIN(TestEditor)
 #include "test_editor.moc"
+
+// Duplicate clicked again and again on one ball puts every copy at one place beside it: past
+// the engine's budget of pairs for a step the editor refuses the copy with a message in the
+// status line, quickly, and the scene as it stands runs (or stops with its diagnosis): the
+// window never freezes.
+void TestEditor::duplicatePastTheBudgetIsRefused()
+{
+    Rig rig;
+    rig.use(EditTool::Circle);
+    rig.drag(rig.px(0, 4), rig.px(1, 4));
+    rig.use(EditTool::Duplicate);
+    QElapsedTimer clock;
+    clock.start();
+    std::size_t bodies = 0;
+    int clicks = 0;
+    for (; clicks < 200 && !rig.tools.lastMessage().contains(QStringLiteral("spread them out"));
+         ++clicks) {
+        bodies = rig.scene().bodies.size();
+        rig.click(rig.px(0, 4)); // the first ball, every time
+    }
+    const qint64 ms = clock.elapsed();
+    const QString message = rig.tools.lastMessage();
+    QVERIFY2(
+        message.contains(
+            QStringLiteral("more than %1 pairs of bodies").arg(physics::pairBudget(bodies + 1))),
+        qPrintable(message));
+    QCOMPARE(rig.scene().bodies.size(), bodies); // the refused copy is not made
+    qInfo("refused the copy after %d clicks (%zu bodies) in %lld ms", clicks, bodies, ms);
+    RL_VERIFY_AT_MOST(ms, 5000);
+    // Run the scene as it stands for a few frames: it runs, or stops with a diagnosis.
+    rig.tools.editAction()->trigger();
+    QVERIFY(!rig.tools.editing());
+    clock.restart();
+    for (int i = 0; i < 5; ++i)
+        rig.simulation.stepForward();
+    RL_VERIFY_AT_MOST(clock.elapsed(), 5000);
+    const physics::World& world = rig.simulation.world();
+    QVERIFY2(world.divergence() || world.stepCount() == 5,
+             qPrintable(QString::number(world.stepCount())));
+}

@@ -26,6 +26,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <tuple>
 
 using namespace rigidlab;
 
@@ -139,6 +140,7 @@ private slots:
     void captionOnlyInExports();
     void headlessSamplesAreTheWorldsOwn();
     void headlessSamplingKeepsTheWindowsInterval();
+    void exportStopsAtTheEndTime();
     void cliExportsEveryLesson_data();
     void cliExportsEveryLesson();
     void satHandoutIsTheProjections();
@@ -312,6 +314,28 @@ void TestLessonExport::headlessSamplingKeepsTheWindowsInterval()
         QCOMPARE(rows[n][3], expected[n].angularMomentum);
     }
     RL_VERIFY_NEAR(rows.back()[1], 3.0, 1e-9, 0); // 1 kg at 3 m/s, all the way through
+}
+
+void TestLessonExport::exportStopsAtTheEndTime()
+{
+    // The step runs 2 s for its export (samples every 5 ms); told to stop at 1.2 s, as the
+    // window's run stops there, its plots end there too. An end after the export time
+    // changes nothing.
+    lessons::Lesson bounces = lesson("restitution");
+    lessons::LessonStep& step = bounces.steps[1];
+    QCOMPARE(step.exportTime, 2.0);
+    for (const auto& [end, rowsWanted, lastWanted] :
+         {std::tuple{1.2, std::size_t{241}, 1.2}, std::tuple{5.0, std::size_t{401}, 2.0}}) {
+        step.endTime = end;
+        QCOMPARE(lessons::exportRunTime(step), std::min(end, 2.0));
+        QTemporaryDir dir;
+        const ui::PlotFilesResult written = ui::exportStepPlots(bounces, 1, dir.path());
+        QVERIFY2(written.ok, qPrintable(written.error));
+        const QString folder = QDir(dir.path()).filePath(ui::stepFolderName(bounces, 1));
+        const auto rows = csvRows(QDir(folder).filePath(QStringLiteral("momentum.csv")));
+        QCOMPARE(rows.size(), rowsWanted);
+        RL_VERIFY_NEAR(rows.back()[0], lastWanted, 1e-9, 0);
+    }
 }
 
 void TestLessonExport::cliExportsEveryLesson_data()

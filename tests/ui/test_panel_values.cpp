@@ -70,6 +70,7 @@ private slots:
     void anglesInDegreesOrRadians();
     void roundingNoiseOfSpeedsIsZero();
     void settingShownWhereItIsMade();
+    void iterationsSayWhatTheyMean();
 };
 
 void TestPanelValues::flatBoxShowsZero()
@@ -173,6 +174,42 @@ void TestPanelValues::settingShownWhereItIsMade()
     c.seek(before - 10);
     QCOMPARE(c.world().def().iterations, 10);
     QCOMPARE(iterations->text(), QStringLiteral("10"));
+}
+
+void TestPanelValues::iterationsSayWhatTheyMean()
+{
+    // The iterations field is greyed only where the solver has none, and says why; under the
+    // soft step it sets the bounce pass's sweeps, and says so. The tooltip and the screen
+    // reader's description tell the same.
+    QTemporaryDir dir;
+    MainWindow w;
+    QVERIFY(openBoxes(w, dir));
+    ui::SimulationController& c = w.controller();
+    auto* iterations = w.controls().findChild<ui::NumberField*>(QStringLiteral("iterations"));
+    QVERIFY(iterations);
+    const struct {
+        physics::SolverKind solver;
+        bool enabled;
+        const char* word;
+    } rows[] = {
+        {physics::SolverKind::PaperImpulse, false, "once"},
+        {physics::SolverKind::SequentialImpulse, true, "sequential-impulse"},
+        {physics::SolverKind::SoftStep, true, "bounce pass"},
+    };
+    QStringList seen;
+    for (const auto& row : rows) {
+        c.setSolver(row.solver);
+        const QString tip = iterations->toolTip();
+        QCOMPARE(iterations->isEnabled(), row.enabled);
+        QVERIFY2(tip.contains(QLatin1String(row.word)), qPrintable(tip));
+        QCOMPARE(iterations->accessibleDescription(), tip);
+        QVERIFY2(!seen.contains(tip), qPrintable(tip));
+        seen << tip;
+    }
+    const QString soft = seen.last();
+    QVERIFY2(soft.contains(QString::number(c.world().contactSettings().soft.substeps) +
+                           QStringLiteral(" substeps")),
+             qPrintable(soft));
 }
 
 RIGIDLAB_TEST_MAIN(TestPanelValues)

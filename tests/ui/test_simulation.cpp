@@ -500,7 +500,6 @@ private slots:
         auto* solver = w.findChild<QLabel*>(QStringLiteral("statusSolver"));
         QVERIFY(solver);
         const QString soft = solverDisplayName(physics::SolverKind::SoftStep);
-        QCOMPARE(w.controller().world().solverRunning(), physics::SolverKind::SoftStep);
         QCOMPARE(solver->text(), soft);
         QVERIFY2(solver->toolTip().contains(soft), qPrintable(solver->toolTip()));
         QVERIFY(w.statusText().contains(solver->text()));

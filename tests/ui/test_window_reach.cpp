@@ -20,8 +20,6 @@ using namespace rigidlab::test::classroom;
 
 namespace {
 
-constexpr QSize kProjector(1024, 768);
-
 /// The dock `w` is in, or nullptr.
 const QDockWidget* dockOf(const QWidget* w)
 {

@@ -472,13 +472,9 @@ void TestWorksheet::solverLineNamesTheSolverThatRan()
             if (step.compare && !step.compare->solvers.empty())
                 continue; // the compared solvers are named instead
             const physics::World world = lessons::buildStepWorlds(step).front();
-            QString expected =
-                QStringLiteral("solver ") + ui::solverDisplayName(world.solverRunning());
+            const QString expected =
+                QStringLiteral("solver ") + ui::solverDisplayName(world.def().solver);
             ++checked;
-            if (world.solverRunning() != world.def().solver) {
-                expected += QStringLiteral(" (instead of %1)")
-                                .arg(ui::solverDisplayName(world.def().solver));
-            }
             QVERIFY2(text.contains(flat(expected)), qPrintable(expected + u'\n' + text));
         }
     }

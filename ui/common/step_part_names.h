@@ -48,7 +48,7 @@ inline constexpr std::array<StepPartName, 5> kStepPlotTitles{{
 }};
 
 /// In the order of lessons::kStepPanelNames.
-inline constexpr std::array<StepPartName, 5> kStepPanelTitles{{
+inline constexpr std::array<StepPartName, 6> kStepPanelTitles{{
     {lessons::kStepPanelNames[0].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Controls"),
      QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Controls")},
     {lessons::kStepPanelNames[1].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Inspector"),
@@ -60,6 +60,9 @@ inline constexpr std::array<StepPartName, 5> kStepPanelTitles{{
      QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Bounces")},
     {lessons::kStepPanelNames[4].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Collision"),
      QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Collision")},
+    {lessons::kStepPanelNames[5].data(),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Measurement"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Measurement")},
 }};
 
 static_assert(kStepPlotTitles.size() == lessons::kStepPlotNames.size());

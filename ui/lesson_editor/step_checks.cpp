@@ -4,6 +4,7 @@
 #include "format/divergence_message.h"
 #include "format/view_text.h"
 #include "run/measurements.h"
+#include "run/off_stage.h"
 
 #include "rigidlab/physics/integrator.h"
 #include "rigidlab/physics/world.h"
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rigidlab::ui {
 
@@ -30,23 +32,29 @@ double runLength(const lessons::LessonStep& step)
     return until;
 }
 
-/// The step's main world run with the step's settings for runLength(); its divergence, if
-/// any (nothing, too, when cancelled).
-std::optional<physics::Divergence> runForDivergence(const lessons::LessonStep& step,
-                                                    const std::atomic_bool& cancelled)
+/// The step's main world run with the step's settings for runLength(): its divergence, if
+/// any, and the first body to leave the stage before the step's end time (nothing, too, when
+/// cancelled).
+void runStepWorld(const lessons::LessonStep& step, const std::atomic_bool& cancelled,
+                  StepFinding& finding)
 {
     std::vector<physics::World> worlds = lessons::buildStepWorlds(step);
     if (worlds.empty())
-        return std::nullopt;
+        return;
     physics::World& world = worlds.front();
     const auto steps = static_cast<long long>(std::ceil(runLength(step) / world.def().dt));
     world.updateDiagnostics(); // the energy at the start, which growth is measured against
+    const lessons::StageFloor floor = lessons::stageFloor(world);
+    const double end = step.endTime.value_or(std::numeric_limits<double>::infinity());
     for (long long i = 0; i < steps && !world.divergence(); ++i) {
         if (i % kStepsBetweenLooks == 0 && cancelled.load())
-            return std::nullopt;
+            return;
         world.step();
+        if (!finding.offStage && world.time() < end)
+            if (const auto body = lessons::offStage(world, floor))
+                finding.offStage = lessons::OffStage{*body, world.time()};
     }
-    return world.divergence();
+    finding.divergence = world.divergence();
 }
 
 /// Whether the step keeps the student from changing the integrator.
@@ -97,9 +105,11 @@ std::vector<StepFinding> runStepChecks(const lessons::Lesson& lesson,
         if (cancelled.load())
             break;
         StepFinding finding;
-        finding.divergence = runForDivergence(step, cancelled);
+        runStepWorld(step, cancelled, finding);
         if (finding.divergence)
             finding.bodyLabel = step.scene.bodyLabel(finding.divergence->body);
+        if (finding.offStage)
+            finding.offStageLabel = step.scene.bodyLabel(finding.offStage->body);
         if (!lockedIntegrator(step))
             for (int i = 0; i < static_cast<int>(step.questions.size()); ++i)
                 if (auto spread = spreadOf(step, i, cancelled))
@@ -117,6 +127,11 @@ QStringList stepCheckLines(const StepFinding& finding)
         lines.append(
             StepChecks::tr("The step's simulation, run with its settings, %1.")
                 .arg(lessons::divergenceMessage(*finding.divergence, finding.bodyLabel, locale)));
+    if (finding.offStage)
+        lines.append(
+            StepChecks::tr("%1 falls off the stage at t = %2 s, and the run stops there: "
+                           "give the step an end time before it, or more ground.")
+                .arg(finding.offStageLabel, locale.toString(finding.offStage->time, 'g', 3)));
     for (const StepFinding::Spread& s : finding.spreads)
         lines.append(StepChecks::tr("Question %1: the integrators a student may choose measure "
                                     "from %2 to %3 %4, wider than the answers judged right "

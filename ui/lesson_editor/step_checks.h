@@ -2,12 +2,14 @@
 #pragma once
 // The lesson editor's checks that run the steps' scenes: whether a step's scene diverges when
 // run with the step's settings for its export time (and up to its questions' latest time),
-// and whether the integrators a student may choose measure a question wider apart than the
-// answers judged right. These runs take seconds, so they run in a thread of their own; an
-// edit while they run cancels them, and a result for a lesson that has changed since is
-// dropped. The findings are data; the editor words them (stepCheckLines).
+// whether a body falls off the stage before the step's end time, and whether the integrators
+// a student may choose measure a question wider apart than the answers judged right. These runs
+// take seconds, so they run in a thread of their own; an edit while they run cancels them, and a
+// result for a lesson that has changed since is dropped. The findings are data; the editor words
+// them (stepCheckLines).
 
 #include "format/lesson.h"
+#include "run/off_stage.h"
 
 #include "rigidlab/physics/divergence.h"
 
@@ -27,6 +29,9 @@ namespace rigidlab::ui {
 struct StepFinding {
     std::optional<physics::Divergence> divergence; ///< the step's own run diverged
     QString bodyLabel;                             ///< the diverged body, as the scene labels it
+    /// The first body to fall off the stage before the step's end time (run/off_stage.h).
+    std::optional<lessons::OffStage> offStage;
+    QString offStageLabel; ///< that body, as the scene labels it
     /// A question whose answers judged right are narrower than what the integrators measure.
     struct Spread {
         int question = 0; ///< its index in the step

@@ -29,8 +29,9 @@ QString qs(std::string_view s)
 }
 
 /// The step's plots or panels in words, as the window titles them (one table for both).
+template <std::size_t N>
 std::vector<std::pair<std::string_view, QString>>
-partNames(const std::array<StepPartName, 5>& table)
+partNames(const std::array<StepPartName, N>& table)
 {
     std::vector<std::pair<std::string_view, QString>> out;
     for (const StepPartName& part : table)

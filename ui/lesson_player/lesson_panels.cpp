@@ -5,6 +5,8 @@
 #include "panels/impulse_formula_view.h"
 #include "simulation/simulation_controller.h"
 
+#include "run/featured_collision.h"
+
 #include <QCoreApplication>
 #include <QLabel>
 #include <QLocale>
@@ -271,16 +273,17 @@ void CollisionPanel::refresh()
     narrow.headerTips = QStringList{QString(), heldTip};
     csv.headers =
         QStringList{QStringLiteral("quantity"), QStringLiteral("before"), QStringLiteral("after")};
-    if (events.empty()) {
+    const auto& world = m_controller.world();
+    // The one the lesson is about: not the carts settling on the ground at the first step.
+    const lessons::CollisionEvent* featured = lessons::featuredCollision(events, world, m_named);
+    if (!featured) {
         m_title->setText(tr("No collision yet: run the simulation."));
         m_table->setContent(wide, narrow);
         m_table->setCsv(csv, tr("collision"));
         m_formula->showNone();
         return;
     }
-    // The first collision is the one the lesson is about.
-    const lessons::CollisionEvent& e = events.front();
-    const auto& world = m_controller.world();
+    const lessons::CollisionEvent& e = *featured;
     const physics::Body* bodies[2] = {&world.body(e.a), &world.body(e.b)};
     const lessons::Scene& scene = m_controller.scene();
     const QString names[2] = {scene.bodyLabel(e.a), scene.bodyLabel(e.b)};
@@ -334,6 +337,15 @@ void CollisionPanel::addPredictedSpins(CollisionRows& rows, const lessons::Colli
         tr("%1: ω without (r×n)²/I terms").arg(name),
         QStringLiteral("%1: angular velocity without (r x n)^2/I terms [rad/s]").arg(name), 0,
         e.predictedWithoutRotation[k], 3, false);
+}
+
+void CollisionPanel::setNamedBodies(std::vector<physics::BodyId> bodies)
+{
+    if (bodies == m_named)
+        return;
+    m_named = std::move(bodies);
+    m_shownCount = -1;
+    refresh();
 }
 
 void CollisionPanel::setAfterHeld(bool held)

@@ -7,7 +7,11 @@
 
 #include "panels/fitting_table.h"
 
+#include "rigidlab/physics/forces.h"
+
 #include <QWidget>
+
+#include <vector>
 
 class QLabel;
 
@@ -53,8 +57,13 @@ class CollisionPanel : public QWidget {
 public:
     explicit CollisionPanel(SimulationController& controller, QWidget* parent = nullptr);
     FittingTable* table() const { return m_table; }
+    /// Which collision the table shows, and when ("Collision of … at t = … s").
+    QLabel* title() const { return m_title; }
     /// Held: the "after" column reads "?" until the student has answered.
     void setAfterHeld(bool held);
+    /// The bodies the lesson step names (lessons::namedBodies): the panel shows their
+    /// collision (lessons::featuredCollision). Empty outside a lesson.
+    void setNamedBodies(std::vector<physics::BodyId> bodies);
 
 public slots:
     void refresh();
@@ -68,7 +77,8 @@ private:
     SimulationController& m_controller;
     QLabel* m_title;
     FittingTable* m_table;
-    ImpulseFormulaView* m_formula; ///< j with the hit's numbers, under the table
+    ImpulseFormulaView* m_formula;        ///< j with the hit's numbers, under the table
+    std::vector<physics::BodyId> m_named; ///< see setNamedBodies
     int m_shownCount = -1;
     bool m_afterHeld = false;
 };

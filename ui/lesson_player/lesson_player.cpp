@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_player/lesson_player.h"
+#include "lesson_player/question_area.h"
 #include "lesson_player/step_text.h"
 
 #include "common/announcer.h"
+#include "common/drawable_text.h"
 #include "common/modal_scope.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
@@ -26,6 +28,7 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
+#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalBlocker>
@@ -43,8 +46,13 @@ namespace {
 /// The least share of the lesson column's height that the step's text has in sight when a
 /// step opens: the introduction folds away rather than take it.
 constexpr double kTextShare = 0.4;
+/// The lines of the step's text kept in sight below its title before the questions below it
+/// take the column's height (the first question is in sight whatever the text leaves it).
+constexpr int kTextLines = 6;
 /// The longest short title a lesson has in the list box [characters].
 constexpr int kShortTitleLength = 24;
+/// The least room between the lesson list's popup and the screen's edges [px].
+constexpr int kPopupMarginPx = 8;
 /// The list's role holding an entry's full menu line (the box itself shows the short one).
 constexpr int kFullTextRole = Qt::UserRole + 1;
 
@@ -126,14 +134,17 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     QFont textFont = m_text->font();
     textFont.setPointSizeF(textFont.pointSizeF() * 1.1); // readable on a projector
     m_text->setFont(textFont);
-    // The text is as tall as its words; the lesson's column scrolls it, with the title above
-    // it and the questions below it, while the buttons stay (takeNavigation()). Questions kept
-    // in sight below the scrolling part left the text no room on a projector: the text comes
-    // first, the questions follow it as a reader reaches them.
+    // The text is as tall as its words; the lesson's column scrolls it, with the titles above
+    // it. The questions and the buttons stay in sight below it (takeNavigation()): the class
+    // sees what it is asked, where it answers and the verdict while the text is read.
     layout->addWidget(m_text);
     m_questionBox->setObjectName(QStringLiteral("lessonQuestions"));
     m_questionLayout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_questionBox);
+    // The questions and their verdicts as large as the step's text (the text's font is
+    // followed, in eventFilter; presentation mode scales the text, not them twice).
+    m_questionBox->setProperty(kFontFollowsProperty, true);
+    m_questionBox->setFont(m_text->font());
+    m_text->installEventFilter(this);
     // The start page (no lesson, so no text) keeps to the top instead of spreading out.
     layout->addStretch(0);
     buildNavigation(layout);
@@ -174,15 +185,23 @@ void LessonPlayer::buildIntroduction(QVBoxLayout* layout)
 
 void LessonPlayer::buildNavigation(QVBoxLayout* layout)
 {
-    // The buttons are a widget of their own, so that the window can keep them in sight below
-    // the lesson that scrolls (takeNavigation()). Two buttons a row, so that the panel fits
-    // the narrow column of a 1024-pixel projector.
+    // The questions and the buttons are a widget of their own, so that the window can keep
+    // them in sight below the lesson that scrolls (takeNavigation()). Two buttons a row, so
+    // that the panel fits the narrow column of a 1024-pixel projector.
     m_navigation = new QWidget(this);
-    m_navigation->setObjectName(QStringLiteral("lessonNavigation"));
-    auto* buttons = new QGridLayout(m_navigation);
+    m_navigation->setObjectName(QStringLiteral("lessonInSight"));
+    auto* column = new QVBoxLayout(m_navigation);
+    column->setContentsMargins(0, 0, 0, 0);
+    m_questionArea = new QuestionArea(m_questionBox, m_navigation);
+    column->addWidget(m_questionArea);
+    m_buttons = new QWidget(m_navigation);
+    m_buttons->setObjectName(QStringLiteral("lessonNavigation"));
+    column->addWidget(m_buttons);
+    auto* buttons = new QGridLayout(m_buttons);
     // In line with the text above, wherever the window puts them.
     const QMargins margins = layout->contentsMargins();
     buttons->setContentsMargins(margins.left(), 0, margins.right(), 0);
+    m_questionBox->setContentsMargins(margins.left(), 0, margins.right(), 0);
     buttons->addWidget(m_back, 0, 0);
     buttons->addWidget(m_next, 0, 1);
     buttons->addWidget(m_restart, 1, 0);
@@ -195,6 +214,12 @@ void LessonPlayer::buildNavigation(QVBoxLayout* layout)
     connect(m_restart, &QPushButton::clicked, this, &LessonPlayer::restartStep);
     connect(m_export, &QPushButton::clicked, this, &LessonPlayer::exportRequested);
     connect(m_handIn, &QPushButton::clicked, this, &LessonPlayer::handInInteractively);
+    // The scene changed (a fitted e applied, an edit): what a run without a window measured
+    // on the old one is measured again when next asked.
+    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
+        for (QuestionRow& row : m_rows)
+            row.aheadDone = false;
+    });
     connect(m_lessonBox, &QComboBox::currentIndexChanged, this,
             &LessonPlayer::showCurrentLessonTip);
     m_lessonBox->installEventFilter(this);
@@ -245,8 +270,15 @@ void LessonPlayer::listLessons(const std::vector<lessons::LessonEntry>& entries)
     // The box stays as narrow as its column; its list opens as wide as its longest line.
     m_lessonBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
     m_lessonBox->setMinimumContentsLength(12);
-    m_lessonBox->view()->setTextElideMode(Qt::ElideNone);
-    m_lessonBox->view()->setMinimumWidth(m_lessonBox->view()->sizeHintForColumn(0) + 24);
+    // Never wider than the screen, though: a line too long for it loses words in its middle,
+    // not its end (the lesson's time).
+    QAbstractItemView* view = m_lessonBox->view();
+    const int wanted =
+        view->sizeHintForColumn(0) + 24 + view->verticalScrollBar()->sizeHint().width();
+    const QScreen* screen = m_lessonBox->screen();
+    const int most = screen ? screen->availableGeometry().width() - 2 * kPopupMarginPx : wanted;
+    view->setTextElideMode(wanted > most ? Qt::ElideMiddle : Qt::ElideNone);
+    view->setMinimumWidth(std::min(wanted, most));
     showCurrentLessonTip();
     if (!m_lesson)
         showStep(); // the start page names the first lesson
@@ -380,7 +412,8 @@ void LessonPlayer::showStep()
     }
     const lessons::Lesson& l = *m_lesson;
     const lessons::LessonStep& s = l.steps[static_cast<size_t>(m_step)];
-    m_title->setText(l.title);
+    // A character no font has (an emoji) shows as its placeholder, not as an empty box.
+    m_title->setText(drawableText(l.title, m_title->font()));
     QString about = l.summary;
     if (!l.level.isEmpty() || l.minutes > 0)
         about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l.level).arg(l.minutes);
@@ -391,17 +424,23 @@ void LessonPlayer::showStep()
     m_progress->setRange(0, static_cast<int>(l.steps.size()));
     m_progress->setValue(m_step + 1);
     m_stepCount->setText(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
-    m_stepTitle->setText(s.title);
-    m_text->showMarkdown(lessons::keepUnitsTogether(s.text));
+    m_stepTitle->setText(drawableText(s.title, m_stepTitle->font()));
+    m_text->showMarkdown(drawableText(lessons::keepUnitsTogether(s.text), m_text->font()));
     m_back->setEnabled(m_step > 0);
     m_next->setEnabled(m_step + 1 < static_cast<int>(l.steps.size()));
     m_export->setEnabled(!s.plots.isEmpty());
     showHandIn();
     buildQuestions();
     fitIntroduction();
-    // A new step is read from its top.
-    if (QScrollArea* scroll = scrollArea())
-        scroll->verticalScrollBar()->setValue(0);
+    fitQuestionRoom();
+    // A new step is read from its top: the lesson's title and introduction on the first
+    // step while it is open, else the step's own title (the lesson's is a scroll up).
+    const auto toTop = [this] {
+        if (QScrollArea* scroll = scrollArea())
+            scroll->verticalScrollBar()->setValue(stepTop());
+    };
+    toTop();
+    QTimer::singleShot(0, this, toTop); // once the text's new height is laid out
 }
 
 QScrollArea* LessonPlayer::scrollArea() const
@@ -451,8 +490,14 @@ bool LessonPlayer::eventFilter(QObject* watched, QEvent* event)
     }
     if (event->type() == QEvent::Resize) {
         const QScrollArea* scroll = scrollArea();
-        if (scroll && watched == scroll->viewport())
+        if (scroll && watched == scroll->viewport()) {
             fitIntroduction();
+            fitQuestionRoom();
+        }
+    }
+    if (watched == m_text && event->type() == QEvent::FontChange) {
+        m_questionBox->setFont(m_text->font());
+        fitQuestionRoom();
     }
     return QWidget::eventFilter(watched, event);
 }
@@ -465,6 +510,35 @@ void LessonPlayer::fitTextMinimum()
     if (auto* scroll = qobject_cast<QScrollArea*>(viewport ? viewport->parentWidget() : nullptr))
         scroll->setMinimumHeight(4 * QFontMetrics(m_text->font()).lineSpacing() +
                                  2 * m_text->frameWidth() + 8);
+}
+
+int LessonPlayer::stepTop() const
+{
+    // The lesson's title and the name fields are a scroll up, once the introduction has
+    // folded away (it does when the column is short) or on a later step.
+    const bool fromStep = m_lesson && (m_step > 0 || m_about->isHidden());
+    return fromStep ? std::max(0, m_stepCount->y() - layout()->spacing()) : 0;
+}
+
+void LessonPlayer::fitQuestionRoom()
+{
+    QScrollArea* scroll = scrollArea();
+    QWidget* column = scroll ? scroll->parentWidget() : nullptr;
+    if (!column || column != m_navigation->parentWidget())
+        return m_questionArea->fit();
+    // What the column shows of a step when it opens (showStep() scrolls there): what is above
+    // the text from stepTop(), then kTextLines of the text.
+    layout()->activate();
+    const int text = m_text->y() - stepTop() +
+                     kTextLines * QFontMetrics(m_text->font()).lineSpacing() +
+                     2 * m_text->frameWidth() + 2 * scroll->frameWidth();
+    const int columnSpacing = column->layout() ? std::max(0, column->layout()->spacing()) : 0;
+    const QMargins columnMargins =
+        column->layout() ? column->layout()->contentsMargins() : QMargins();
+    const int room = column->height() - columnMargins.top() - columnMargins.bottom() - text -
+                     m_buttons->sizeHint().height() - 2 * columnSpacing -
+                     std::max(0, m_navigation->layout()->spacing());
+    m_questionArea->setRoom(std::max(0, room));
 }
 
 void LessonPlayer::changeEvent(QEvent* event)

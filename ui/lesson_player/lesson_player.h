@@ -30,6 +30,7 @@ class QVBoxLayout;
 namespace rigidlab::ui {
 
 struct AskedRun;
+class QuestionArea;
 class SimulationController;
 class StepText;
 
@@ -49,9 +50,9 @@ class LessonPlayer : public QWidget {
 public:
     explicit LessonPlayer(SimulationController& controller, QWidget* parent = nullptr);
 
-    /// Hands the step's questions (answer boxes, Check, Show me) and the Back / Next / Restart
-    /// step / Export plots buttons to the caller, to lay out where they stay in sight (below
-    /// a scrolling lesson); the caller owns them then.
+    /// Hands the step's questions (answer boxes, Check, Show me, verdicts) and the Back / Next /
+    /// Restart step / Export plots buttons to the caller, to lay out where they stay in sight
+    /// (below the scrolling lesson, in the same column); the caller owns them then.
     QWidget* takeNavigation();
 
     /// Lists the lessons of `folder` in teaching order, numbered (lessons::lessonsInOrder).
@@ -144,6 +145,12 @@ private:
     void showCurrentLessonTip();
     /// The text's least height: a few of its lines, whatever its font.
     void fitTextMinimum();
+    /// The questions' height in the column: what the step's text leaves them when it has
+    /// kTextLines lines in sight below its title (the first question whole in any case).
+    void fitQuestionRoom();
+    /// Where the lesson's column is scrolled to when a step opens [px]: its top on the first
+    /// step while its introduction is open, else the step's count and title.
+    int stepTop() const;
     /// The scroll area the window put the player in, if any.
     QScrollArea* scrollArea() const;
     /// Folds the introduction away on the first step when it would leave the step's text less
@@ -200,6 +207,8 @@ private:
     QWidget* m_questionBox;
     QVBoxLayout* m_questionLayout;
     QWidget* m_navigation = nullptr; ///< the questions; Back, Next, Restart step, Export plots
+    QuestionArea* m_questionArea = nullptr; ///< the questions, in sight below the text
+    QWidget* m_buttons = nullptr;           ///< Back, Next, Restart step, Export plots, Hand in
     QPushButton* m_back;
     QPushButton* m_restart;
     QPushButton* m_next;

@@ -5,6 +5,7 @@
 #include "lesson_player/lesson_player.h"
 
 #include "lesson_player/asked_run.h"
+#include "lesson_player/question_area.h"
 #include "lesson_player/step_text.h"
 
 #include "common/announcer.h"
@@ -278,7 +279,11 @@ QuestionTry LessonPlayer::measuredTry(std::size_t i)
         return QuestionTry{};
     QuestionRow& row = m_rows[i];
     if (!row.aheadDone) {
-        row.ahead = lessons::measureAhead(lessons::askedStep(step, q), q.measure);
+        // On the scene as it is now: a fitted e applied to it is what the table shows and
+        // the run will measure, not the step's e as the lesson file gives it.
+        lessons::LessonStep now = step;
+        now.scene = m_controller.scene();
+        row.ahead = lessons::measureAhead(lessons::askedStep(now, q), q.measure);
         row.aheadDone = true;
     }
     return numberTry(row.ahead, row.ahead.has_value());
@@ -370,14 +375,12 @@ void LessonPlayer::settle(std::size_t i, const lessons::Verdict& v)
 
 void LessonPlayer::revealResult(std::size_t i)
 {
-    // The questions come after the step's text in a scrolling column: the verdict just shown
-    // may lie below its bottom edge. Once the layout has made room for it, it is scrolled
-    // into sight (the question's box with it, so that the answer stays beside its verdict).
-    QScrollArea* scroll = scrollArea();
-    if (!scroll)
-        return;
+    // The questions are in sight below the text, but a later question's verdict may lie below
+    // the bottom of their area when they do not all fit. Once the layout has made room for
+    // it, it is scrolled into sight (the question's box with it, so that the answer stays
+    // beside its verdict).
     const QPointer<QLabel> result = m_rows[i].result;
-    const QPointer<QScrollArea> area = scroll;
+    const QPointer<QScrollArea> area = m_questionArea;
     QTimer::singleShot(0, this, [result, area] {
         if (result && area && result->isVisible())
             area->ensureWidgetVisible(result, 0, 8);

@@ -14,6 +14,7 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QProgressBar>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -127,9 +128,20 @@ QWidget* MeasurementPanel::buildFit()
     m_apply = new QPushButton(tr("&Apply to scene"), box);
     m_apply->setAccessibleName(tr("Apply the fitted values to the scene (can be undone)"));
     m_apply->setEnabled(false);
+    // While a fit runs: a busy bar (a fit cannot say how many runs it will need) and Cancel.
+    m_cancelFit = new QPushButton(tr("Cancel fit"), box);
+    m_cancelFit->setAccessibleName(tr("Cancel the fit that is running"));
+    m_cancelFit->hide();
+    m_fitProgress = new QProgressBar(box);
+    m_fitProgress->setRange(0, 0);
+    m_fitProgress->setTextVisible(false);
+    m_fitProgress->setAccessibleName(tr("Fit running"));
+    m_fitProgress->hide();
     buttons->addWidget(m_fit);
+    buttons->addWidget(m_cancelFit);
     buttons->addWidget(m_apply);
     layout->addLayout(buttons);
+    layout->addWidget(m_fitProgress);
     m_fitResult = new QLabel(box);
     m_fitResult->setWordWrap(true);
     m_fitResult->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
@@ -147,6 +159,7 @@ QWidget* MeasurementPanel::buildFit()
     m_applyBounce->hide();
     layout->addWidget(m_applyBounce);
     connect(m_fit, &QPushButton::clicked, this, &MeasurementPanel::fitRequested);
+    connect(m_cancelFit, &QPushButton::clicked, this, &MeasurementPanel::cancelFitRequested);
     connect(m_apply, &QPushButton::clicked, this, &MeasurementPanel::applyRequested);
     connect(m_applyBounce, &QPushButton::clicked, this, &MeasurementPanel::applyBounceRequested);
     return box;
@@ -249,8 +262,31 @@ void MeasurementPanel::setFitChoice(int parameter, bool on)
 
 void MeasurementPanel::showFit(const QString& text, bool applicable)
 {
+    const bool focus = m_cancelFit->hasFocus();
+    m_fitProgress->hide();
+    m_cancelFit->hide();
+    m_fit->show();
+    if (focus)
+        m_fit->setFocus(); // the keyboard stays where the fit was asked for
     m_fitResult->setText(text);
     m_apply->setEnabled(applicable);
+}
+
+void MeasurementPanel::showFitRunning(int runs)
+{
+    const bool focus = m_fit->hasFocus();
+    m_fitProgress->show();
+    m_cancelFit->show();
+    m_fit->hide();
+    if (focus)
+        m_cancelFit->setFocus();
+    m_apply->setEnabled(false);
+    m_fitResult->setText(tr("Fitting… %n run(s) of the model so far", nullptr, runs));
+}
+
+bool MeasurementPanel::fitRunning() const
+{
+    return !m_cancelFit->isHidden();
 }
 
 void MeasurementPanel::showBounceFit(const QString& text, bool applicable)

@@ -15,6 +15,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QProgressBar;
 class QPushButton;
 
 namespace rigidlab::ui {
@@ -67,19 +68,25 @@ public:
     std::vector<int> fitChoices() const;
     void setFitChoice(int parameter, bool on);
     static constexpr int kFitParameters = 4;
-    /// The fit's result in words, and whether it can be applied.
+    /// The fit's result in words, and whether it can be applied; ends showFitRunning.
     void showFit(const QString& text, bool applicable);
+    /// A fit is running (`runs` of the model so far): a busy bar and Cancel in place of Fit.
+    void showFitRunning(int runs);
+    bool fitRunning() const;
     /// e from bounce times alone, in words; empty hides it.
     void showBounceFit(const QString& text, bool applicable);
     QString fitText() const;
     QString bounceFitText() const;
     QPushButton* fitButton() const { return m_fit; }
+    QPushButton* cancelFitButton() const { return m_cancelFit; }
+    QProgressBar* fitProgress() const { return m_fitProgress; }
     QPushButton* applyButton() const { return m_apply; }
     QPushButton* applyBounceButton() const { return m_applyBounce; }
 
 signals:
     void choiceChanged();
     void fitRequested();
+    void cancelFitRequested();
     void applyRequested();
     void applyBounceRequested();
 
@@ -95,6 +102,8 @@ private:
     QLabel* m_message = nullptr;
     QCheckBox* m_parameters[kFitParameters] = {};
     QPushButton* m_fit = nullptr;
+    QPushButton* m_cancelFit = nullptr;
+    QProgressBar* m_fitProgress = nullptr;
     QLabel* m_fitResult = nullptr;
     QPushButton* m_apply = nullptr;
     QLabel* m_bounceResult = nullptr;

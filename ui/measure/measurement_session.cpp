@@ -26,6 +26,7 @@
 #include <QMimeData>
 #include <QTimer>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -42,6 +43,8 @@ constexpr int kDockWidthPx = 360;
 constexpr double kDockShare = 0.36;
 /// Points of the simulated line: smooth on any plot a dock can be, cheap to run again.
 constexpr int kLinePoints = 600;
+/// How often a running fit's count of runs is shown [ms].
+constexpr int kFitProgressMs = 200;
 constexpr ParameterKind kPanelKinds[MeasurementPanel::kFitParameters] = {
     ParameterKind::Restitution, ParameterKind::Friction, ParameterKind::VelocityX,
     ParameterKind::VelocityY};
@@ -133,7 +136,19 @@ MeasurementSession::MeasurementSession(QWidget& window, WorldView& view, SceneDo
     window.installEventFilter(this);
     view.viewport()->installEventFilter(this);
     connect(m_panel, &MeasurementPanel::choiceChanged, this, &MeasurementSession::compare);
-    connect(m_panel, &MeasurementPanel::fitRequested, this, [this] { fit(); });
+    connect(m_panel, &MeasurementPanel::fitRequested, this, &MeasurementSession::startFit);
+    connect(m_panel, &MeasurementPanel::cancelFitRequested, this, &MeasurementSession::cancelFit);
+    m_fitWorker = new FitWorker(this);
+    m_fitTimer = new QTimer(this);
+    m_fitTimer->setInterval(kFitProgressMs);
+    connect(m_fitTimer, &QTimer::timeout, this,
+            [this] { m_panel->showFitRunning(m_fitWorker->runs()); });
+    connect(m_fitWorker, &FitWorker::finished, this, [this](const measure::FitResult& result) {
+        m_fitTimer->stop();
+        m_fit = result;
+        showFitResult();
+        emit fitFinished();
+    });
     connect(m_panel, &MeasurementPanel::applyRequested, this, [this] {
         if (const QString error = apply(); !error.isEmpty())
             emit message(error, 8000);
@@ -193,22 +208,17 @@ QString MeasurementSession::load(const QString& path, const measure::Measurement
         emit message(read.error, 10000);
         return read.error;
     }
-    m_measurement = std::move(read.measurement);
-    m_path = path;
+    // A second file adds to the first (a video's heights, then a phone's bounce times): each
+    // quantity comes from the file imported last that has it.
+    if (!m_measurement || m_measurementLesson != m_lesson)
+        forget();
+    m_imports.push_back({QFileInfo(path).fileName(), std::move(read.measurement)});
+    merge();
     m_measurementLesson = m_lesson;
     m_fit = {};
     m_fitted.clear();
     m_panel->showFit(QString(), false);
-    QStringList what;
-    for (const measure::Series& s : m_measurement->series)
-        what << quantityText(s.quantity);
-    if (!m_measurement->bounces.empty())
-        what << quantityText(Quantity::BounceTime);
-    const int points = m_measurement->series.empty()
-                           ? static_cast<int>(m_measurement->bounces.size())
-                           : static_cast<int>(m_measurement->series.front().t.size());
-    m_panel->setSource(tr("%1: %n point(s) of %2", nullptr, points)
-                           .arg(QFileInfo(path).fileName(), what.join(QStringLiteral(", "))));
+    m_panel->setSource(sourceText());
     updateChoices();
     updateBounceFit();
     compare();
@@ -232,10 +242,66 @@ void MeasurementSession::sceneReset()
         forget();
 }
 
+void MeasurementSession::merge()
+{
+    measure::Measurement merged;
+    m_seriesFile.clear();
+    m_bouncesFile.clear();
+    for (const Imported& in : m_imports) {
+        merged.layout = in.measurement.layout;
+        merged.mapping = in.measurement.mapping;
+        merged.rowsBeforeStart = in.measurement.rowsBeforeStart;
+        for (const measure::Series& s : in.measurement.series) {
+            auto same =
+                std::find_if(merged.series.begin(), merged.series.end(),
+                             [&](const measure::Series& m) { return m.quantity == s.quantity; });
+            if (same != merged.series.end())
+                *same = s;
+            else
+                merged.series.push_back(s);
+            m_seriesFile[s.quantity] = in.file;
+        }
+        if (!in.measurement.bounces.empty()) {
+            merged.bounces = in.measurement.bounces;
+            m_bouncesFile = in.file;
+        }
+    }
+    m_measurement = std::move(merged);
+}
+
+QString MeasurementSession::sourceText() const
+{
+    // One line per file, naming what the comparison takes from it.
+    QStringList lines;
+    for (const Imported& in : m_imports) {
+        QStringList what;
+        int points = 0;
+        for (const measure::Series& s : m_measurement->series)
+            if (m_seriesFile.at(s.quantity) == in.file) {
+                what << quantityText(s.quantity);
+                points = std::max(points, static_cast<int>(s.t.size()));
+            }
+        if (m_bouncesFile == in.file && !m_measurement->bounces.empty()) {
+            what << quantityText(Quantity::BounceTime);
+            if (points == 0)
+                points = static_cast<int>(m_measurement->bounces.size());
+        }
+        if (!what.isEmpty())
+            lines << tr("%1: %n point(s) of %2", nullptr, points)
+                         .arg(in.file, what.join(QStringLiteral(", ")));
+    }
+    lines.removeDuplicates();
+    return lines.join(QLatin1Char('\n'));
+}
+
 void MeasurementSession::forget()
 {
+    m_fitWorker->discard(); // its result would be of a measurement that is gone
+    m_fitTimer->stop();
     m_measurement.reset();
-    m_path.clear();
+    m_imports.clear();
+    m_seriesFile.clear();
+    m_bouncesFile.clear();
     m_measurementLesson.clear();
     m_simulated.clear();
     m_residuals.clear();
@@ -363,30 +429,71 @@ void MeasurementSession::updateTrail()
     m_trail->setPoints(std::move(points));
 }
 
-const measure::FitResult& MeasurementSession::fit()
+std::optional<FitWorker::Job> MeasurementSession::fitJob()
 {
     m_fit = {};
     m_fitted.clear();
     const auto t = target();
     const measure::Series* series = m_measurement && t ? m_measurement->find(t->quantity) : nullptr;
-    const lessons::Scene& scene = m_document.scene();
     if (!series) {
         m_fit.error = tr("Import a measurement of a position or velocity first.");
-    } else {
-        for (const int i : m_panel->fitChoices())
-            m_fitted.push_back(
-                measure::Parameter{kPanelKinds[i], {t->body}, parameterSymbol(kPanelKinds[i])});
+        return std::nullopt;
+    }
+    for (const int i : m_panel->fitChoices())
+        m_fitted.push_back(
+            measure::Parameter{kPanelKinds[i], {t->body}, parameterSymbol(kPanelKinds[i])});
+    if (m_fitted.empty()) {
+        m_fit.error = tr("Tick a parameter to fit.");
+        return std::nullopt;
+    }
+    return FitWorker::Job{m_document.scene(), m_fitted, *t, *series};
+}
+
+const measure::FitResult& MeasurementSession::fit()
+{
+    m_fitWorker->discard(); // this fit replaces it
+    m_fitTimer->stop();
+    if (const auto job = fitJob()) {
         QApplication::setOverrideCursor(Qt::WaitCursor);
-        if (m_fitted.empty())
-            m_fit.error = tr("Tick a parameter to fit.");
-        else
-            m_fit = measure::fitScene(scene, m_fitted, *t, *series);
+        m_fit = measure::fitScene(job->scene, job->parameters, job->target, job->series);
         QApplication::restoreOverrideCursor();
     }
+    showFitResult();
+    return m_fit;
+}
+
+void MeasurementSession::startFit()
+{
+    std::optional<FitWorker::Job> job = fitJob();
+    if (!job) {
+        m_fitWorker->discard();
+        m_fitTimer->stop();
+        showFitResult();
+        emit fitFinished();
+        return;
+    }
+    m_fitWorker->start(std::move(*job));
+    m_panel->showFitRunning(0);
+    m_fitTimer->start();
+}
+
+void MeasurementSession::cancelFit()
+{
+    m_fitWorker->cancel();
+}
+
+bool MeasurementSession::fitRunning() const
+{
+    return m_fitWorker->isRunning();
+}
+
+void MeasurementSession::showFitResult()
+{
     if (!m_fit.ok) {
         m_panel->showFit(m_fit.error, false);
-        return m_fit;
+        return;
     }
+    const auto t = target();
     QStringList lines;
     for (std::size_t i = 0; i < m_fitted.size(); ++i)
         lines << tr("%1 = %2%3 (95 %)")
@@ -394,10 +501,10 @@ const measure::FitResult& MeasurementSession::fit()
                           valueWithUncertainty(m_fit.values[i].value, m_fit.values[i].halfWidth95),
                           parameterUnit(m_fitted[i].kind));
     lines << measure::describeModel(m_fit, m_fitted);
-    lines << tr("Residual RMS: %1 over %n point(s)", nullptr, m_fit.points)
-                 .arg(formatQuantity(m_fit.rms, quantityUnit(t->quantity), 2));
+    if (t)
+        lines << tr("Residual RMS: %1 over %n point(s)", nullptr, m_fit.points)
+                     .arg(formatQuantity(m_fit.rms, quantityUnit(t->quantity), 2));
     m_panel->showFit(lines.join(QLatin1Char('\n')), true);
-    return m_fit;
 }
 
 QString MeasurementSession::apply()
@@ -451,10 +558,10 @@ void MeasurementSession::updateBounceFit()
     for (const double f : m_bounceFit.flightTimes)
         flights << formatQuantity(f, QStringLiteral("s"), 3);
     m_panel->showBounceFit(
-        tr("From the bounce times alone: e = %1 (95 %). Each flight between bounces lasts e "
-           "times the one before: %2.")
+        tr("From the bounce times alone (%3): e = %1 (95 %). Each flight between bounces lasts "
+           "e times the one before: %2.")
             .arg(valueWithUncertainty(m_bounceFit.e.value, m_bounceFit.e.halfWidth95),
-                 flights.join(QStringLiteral(", "))),
+                 flights.join(QStringLiteral(", ")), m_bouncesFile),
         true);
 }
 

@@ -6,23 +6,30 @@
 // uses), and the scene view shows the measured positions as a faint trail. The fit's values
 // go into the scene as one edit of its document, which Undo takes back.
 //
+// A second import adds to the first rather than replacing it (a video's heights, then a
+// phone's bounce times): each quantity comes from the file imported last that has it, and
+// the dock names the file of each.
+//
 // A measurement belongs to the scene it was imported into, or to the lesson: when another
 // scene opens (a file, a new scene, another lesson), it is forgotten, trail and plots too, so
 // that no unrelated crosses stay in the scene. The steps of one lesson keep it (a lesson
 // imports in one step and fits in the next).
 
 #include "measure/fit.h"
+#include "measure/fit_worker.h"
 #include "measure/measurement.h"
 
 #include <QObject>
 #include <QString>
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <vector>
 
 class QAction;
 class QDockWidget;
+class QTimer;
 class QWidget;
 
 namespace rigidlab::ui {
@@ -71,8 +78,14 @@ public:
     /// The target compared: the panel's body and quantity, or nullopt.
     std::optional<measure::Target> target() const;
 
-    /// Fits the parameters ticked in the panel; the result stays for apply().
+    /// Fits the parameters ticked in the panel, here and now (the screenshots); the result
+    /// stays for apply().
     const measure::FitResult& fit();
+    /// The same fit in a thread of its own (the panel's Fit button): the panel shows it
+    /// running with a Cancel button; fitFinished() when it ends, lastFit() then holds it.
+    void startFit();
+    void cancelFit();
+    bool fitRunning() const;
     const measure::FitResult& lastFit() const { return m_fit; }
     const std::vector<measure::Parameter>& fittedParameters() const { return m_fitted; }
     /// Puts the fitted values into the scene, one undoable edit; returns the refusal or empty.
@@ -96,6 +109,8 @@ signals:
     void imported(const QString& path);
     /// Why an import failed, for the status bar.
     void message(const QString& text, int timeoutMs);
+    /// A fit started by startFit() ended (cancelled too): lastFit() holds it.
+    void fitFinished();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -110,6 +125,14 @@ private:
     void sceneReset();
     QString applyValues(const std::vector<measure::Parameter>& parameters,
                         const std::vector<double>& values, const QString& what);
+    /// What the panel asks to fit, into m_fitted; nothing (m_fit says why) when it cannot be.
+    std::optional<FitWorker::Job> fitJob();
+    /// m_fit in the panel.
+    void showFitResult();
+    /// m_measurement from the files imported, each quantity from the last file that has it.
+    void merge();
+    /// The files imported, one line each with what is taken from it.
+    QString sourceText() const;
 
     QWidget& m_window;
     WorldView& m_view;
@@ -119,13 +142,22 @@ private:
     QDockWidget* m_dock = nullptr;
     MeasuredTrailItem* m_trail = nullptr; ///< owned by the view's scene
     ImportAsker m_asker;
-    QString m_path;
+    /// A file imported: its name and what it held.
+    struct Imported {
+        QString file;
+        measure::Measurement measurement;
+    };
+    std::vector<Imported> m_imports;                   ///< in the order imported
+    std::map<measure::Quantity, QString> m_seriesFile; ///< the file each series comes from
+    QString m_bouncesFile;                             ///< the file the bounce times come from
     QString m_lastFolder;
     QString m_lesson;            ///< the lesson open, or empty
     QString m_measurementLesson; ///< the lesson open when the measurement was imported
     std::optional<measure::Measurement> m_measurement;
     std::vector<double> m_simulated;
     std::vector<double> m_residuals;
+    FitWorker* m_fitWorker = nullptr;
+    QTimer* m_fitTimer = nullptr; ///< while a fit runs: its runs so far into the panel
     measure::FitResult m_fit;
     std::vector<measure::Parameter> m_fitted;
     measure::BounceFit m_bounceFit;

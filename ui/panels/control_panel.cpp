@@ -59,7 +59,6 @@ ControlPanel::ControlPanel(SimulationController& controller, QWidget* parent)
     namespace limits = lessons::limits;
     m_iterations->setRange(limits::kIterations, tr("Iterations"));
     m_iterations->setInteger(true);
-    m_iterations->setToolTip(tr("Velocity iterations of the sequential-impulse solver"));
     // dt in milliseconds reads better in class than 0.001 s.
     m_dt->setRange(NumberField::scaled(limits::kDt, 1e3), tr("dt"), tr("ms"));
     m_dt->setToolTip(tr("The fixed time step [ms]"));
@@ -199,6 +198,30 @@ void ControlPanel::setAllowed(const std::optional<QStringList>& allowed)
     refresh();
 }
 
+void ControlPanel::showIterationsMeaning(SolverKind solver)
+{
+    // What the number does under each solver, said where a greyed field leaves the student
+    // guessing (tooltip and screen reader alike).
+    QString meaning;
+    switch (solver) {
+    case SolverKind::PaperImpulse:
+        meaning = tr("Not used: the paper's impulse solves each contact once, in one pass");
+        break;
+    case SolverKind::SequentialImpulse:
+        meaning = tr("Velocity iterations of the sequential-impulse solver");
+        break;
+    case SolverKind::SoftStep:
+        meaning = tr("Soft step: iterations of its bounce pass at the start of each step; the "
+                     "resting contacts are solved in %n substeps instead",
+                     nullptr, m_controller.world().contactSettings().soft.substeps);
+        break;
+    }
+    m_iterations->setEnabled(solver != SolverKind::PaperImpulse &&
+                             !m_iterations->property("locked").toBool());
+    m_iterations->setToolTip(meaning);
+    m_iterations->setAccessibleDescription(meaning);
+}
+
 void ControlPanel::refresh()
 {
     const physics::WorldDef& d = m_controller.world().def();
@@ -206,8 +229,7 @@ void ControlPanel::refresh()
     m_integrator->setCurrentIndex(m_integrator->findData(int(d.integrator)));
     m_solver->setCurrentIndex(m_solver->findData(int(d.solver)));
     m_iterations->setValue(d.iterations);
-    m_iterations->setEnabled(d.solver == SolverKind::SequentialImpulse &&
-                             !m_iterations->property("locked").toBool());
+    showIterationsMeaning(d.solver);
     // The value in force; a field being typed in keeps its text (NumberField::setValue).
     m_dt->setValue(d.dt * 1e3);
     m_timeScale->setValue(m_controller.timeScale());

@@ -18,6 +18,10 @@ class QCheckBox;
 class QComboBox;
 class QFormLayout;
 
+namespace rigidlab::physics {
+enum class SolverKind;
+}
+
 namespace rigidlab::ui {
 
 class NumberField;
@@ -46,6 +50,9 @@ public slots:
     void refresh();
 
 private:
+    /// Greys the iterations field where the solver has none, and says what it means under
+    /// each solver (tooltip and accessible description).
+    void showIterationsMeaning(physics::SolverKind solver);
     /// Makes a control for each setting of the table that has none of its own.
     void addTableControls(QFormLayout& form);
     void refreshTableControls();

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/fitting_table.h"
 
-#include "common/export_folder.h"
 #include "common/language.h"
 #include "common/modal_scope.h"
 #include "plots/plot_export.h"
@@ -12,8 +11,6 @@
 
 #include <QClipboard>
 #include <QContextMenuEvent>
-#include <QDir>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QHeaderView>
@@ -134,27 +131,16 @@ QString writeCsv(const QString& path, const CsvTable& table,
 
 void exportCsvInteractively(QWidget* parent, const CsvTable& table, const QString& baseName)
 {
-    using lessons::CsvDialect;
     const ModalScope modal;
     // Where the plots' exports go (the last folder, else Documents), in the same dialect.
     const QString stem = lessons::schema::safeFileStem(
         QStringList{baseName, currentLanguage()}.join(u' '), QStringLiteral("table"));
-    QFileDialog dialog(parent, FittingTable::tr("Export table as CSV"),
-                       QDir(exportFolder()).filePath(stem + QStringLiteral(".csv")));
-    const QString spreadsheet = csvFilterFor(CsvDialect::Spreadsheet);
-    const QString plain = csvFilterFor(CsvDialect::Plain);
-    dialog.setNameFilters({spreadsheet, plain});
-    dialog.selectNameFilter(windowCsvDialect() == CsvDialect::Plain ? plain : spreadsheet);
-    dialog.setAcceptMode(QFileDialog::AcceptSave);
-    dialog.setDefaultSuffix(QStringLiteral("csv"));
-    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
+    const auto chosen =
+        askCsvFile(parent, FittingTable::tr("Export table as CSV"), stem + QStringLiteral(".csv"));
+    if (!chosen)
         return;
-    const QString path = dialog.selectedFiles().constFirst();
-    rememberExportFolder(path);
-    const CsvDialect chosen =
-        dialog.selectedNameFilter() == plain ? CsvDialect::Plain : CsvDialect::Spreadsheet;
-    rememberCsvDialect(chosen);
-    const QString why = writeCsv(path, table, lessons::csvConventions(chosen, currentLanguage()));
+    const QString why =
+        writeCsv(chosen->path, table, lessons::csvConventions(chosen->dialect, currentLanguage()));
     if (!why.isEmpty())
         QMessageBox::warning(parent, FittingTable::tr("Export failed"), why);
 }

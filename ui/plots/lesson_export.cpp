@@ -222,7 +222,7 @@ StepPlots runStepPlots(const lessons::LessonStep& step, QWidget* holder)
     SampleClock clock;
     clock.due(main.time());
     buffer.push(makeSample(main, mainReference, variants, references, compared));
-    const long long steps = lessons::stepsForTime(step.exportTime, main.def().dt);
+    const long long steps = lessons::stepsForTime(lessons::exportRunTime(step), main.def().dt);
     for (long long i = 0; i < steps && !main.divergence(); ++i) {
         main.step();
         for (physics::World& w : variants)

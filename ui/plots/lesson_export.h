@@ -5,8 +5,9 @@
 //
 // The window's "Export plots" writes the live plots with exportPlots(); the headless export
 // (`rigidlab-cli lesson LESSON.json --export DIR`) builds the step's worlds, runs them for the
-// step's exportTime, samples them as the window does (step_sampler.h) and writes the same
-// plots with exportStepPlots().
+// step's exportTime (cut at its endTime, where the window's run stops: exportRunTime()),
+// samples them as the window does (step_sampler.h) and writes the same plots with
+// exportStepPlots().
 //
 // Plot names (LessonStep::plots) and what they show:
 //   energy          kinetic, potential and total energy of the main world [J]
@@ -66,12 +67,12 @@ struct StepPlots {
     physics::WorldDef settings;     ///< of the main world as it ran
 };
 
-/// Headless: the step's worlds built and run for its exportTime, sampled exactly as the
+/// Headless: the step's worlds built and run for lessons::exportRunTime(), sampled exactly as the
 /// window's controller samples them, into the step's plots, children of `holder`. The main
 /// world's divergence stops the run (and its plots), as in the window.
 StepPlots runStepPlots(const lessons::LessonStep& step, QWidget* holder);
 
-/// Headless: builds the step's worlds, runs them for its exportTime, and writes its plots
+/// Headless: builds the step's worlds, runs them for exportRunTime(), and writes its plots
 /// into DIR/stepFolderName(), and for a step with a `sat` pair its SAT handout
 /// (sat_handout.h). A step with neither writes nothing and succeeds.
 PlotFilesResult exportStepPlots(const lessons::Lesson& lesson, int step, const QString& dir,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plots/plot_export.h"
 
+#include "common/export_folder.h"
 #include "common/language.h"
 #include "plots/plot_widget.h"
 
@@ -13,6 +14,7 @@
 
 #include <QBuffer>
 #include <QDir>
+#include <QFileDialog>
 #include <QImage>
 #include <QImageWriter>
 #include <QPageLayout>
@@ -321,6 +323,26 @@ QString csvFilterFor(lessons::CsvDialect dialect)
     return QCoreApplication::translate("rigidlab::ui::exportPlot",
                                        "CSV plain, for scripts (%1, %2) (*.csv)")
         .arg(separator, decimal);
+}
+
+std::optional<CsvChoice> askCsvFile(QWidget* parent, const QString& title, const QString& suggested)
+{
+    using lessons::CsvDialect;
+    QFileDialog dialog(parent, title, QDir(exportFolder()).filePath(suggested));
+    const QString spreadsheet = csvFilterFor(CsvDialect::Spreadsheet);
+    const QString plain = csvFilterFor(CsvDialect::Plain);
+    dialog.setNameFilters({spreadsheet, plain});
+    dialog.selectNameFilter(windowCsvDialect() == CsvDialect::Plain ? plain : spreadsheet);
+    dialog.setAcceptMode(QFileDialog::AcceptSave);
+    dialog.setDefaultSuffix(QStringLiteral("csv"));
+    if (dialog.exec() != QDialog::Accepted || dialog.selectedFiles().isEmpty())
+        return std::nullopt;
+    const CsvChoice chosen{dialog.selectedFiles().constFirst(), dialog.selectedNameFilter() == plain
+                                                                    ? CsvDialect::Plain
+                                                                    : CsvDialect::Spreadsheet};
+    rememberExportFolder(chosen.path);
+    rememberCsvDialect(chosen.dialect);
+    return chosen;
 }
 
 ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat format,

@@ -14,6 +14,8 @@
 
 #include <optional>
 
+class QWidget;
+
 namespace rigidlab::ui {
 
 class PlotWidget;
@@ -57,6 +59,17 @@ ExportOptions windowExportOptions();
 /// A file dialog filter for a CSV dialect in the language in effect, saying what it is:
 /// "CSV for a spreadsheet (;, decimal comma) (*.csv)".
 QString csvFilterFor(lessons::CsvDialect dialect);
+
+/// A CSV file chosen in a save dialog, in the dialect its filter named.
+struct CsvChoice {
+    QString path;
+    lessons::CsvDialect dialect = lessons::CsvDialect::Spreadsheet;
+};
+/// Asks where to save a CSV table, starting at `suggested` (a file name, put in the folder
+/// last exported into) with the dialect last chosen offered first, and remembers the folder and
+/// the dialect chosen; nothing when cancelled.
+std::optional<CsvChoice> askCsvFile(QWidget* parent, const QString& title,
+                                    const QString& suggested);
 
 /// The plot's data as a CSV table: a time column "t [s]" and a column per series, a row per
 /// distinct time; with `visibleOnly`, the points over the time axis' range alone.

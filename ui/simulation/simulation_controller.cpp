@@ -192,17 +192,22 @@ void SimulationController::advanceClock(double wallSeconds)
         m_catchUp.beginFrame(wallSeconds, m_timeScale);
         // Only a run that starts before the end time stops at it: Play once there runs on.
         const bool ends = m_endTime && m_world.time() < *m_endTime - 0.5 * h;
-        bool ended = false;
+        // Likewise a run that leaves the stage stops there once, and runs on after Play.
+        const bool onStage = !m_watch.leftStage();
+        bool ended = false, left = false;
         while (!ended && m_catchUp.nextStep(h, m_timing.physicsElapsedMs())) {
             const double before = m_timing.physicsElapsedMs();
             doStep();
             m_catchUp.stepTaken(h, m_timing.physicsElapsedMs() - before);
             m_timing.simulated(h);
-            ended = ends && m_world.time() >= *m_endTime - 0.5 * h;
+            left = onStage && m_watch.leftStage();
+            ended = left || (ends && m_world.time() >= *m_endTime - 0.5 * h);
         }
         m_catchUp.endFrame(h);
         if (ended)
             setRunning(false);
+        if (left)
+            emit leftStage(m_watch.leftStage()->body, m_watch.leftStage()->time);
     }
     const double counted = std::min(wallSeconds, CatchUp::kMaxGapSeconds);
     if (m_timing.frameDone(wallSeconds, counted))

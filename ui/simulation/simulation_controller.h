@@ -143,6 +143,12 @@ public:
     /// The running clock pauses when the world's time reaches `time` [s] (a lesson step's
     /// "endTime"); nullopt: it runs on. Play after it runs on from there.
     void setEndTime(std::optional<double> time) { m_endTime = time; }
+    /// Whether the running clock pauses when a body leaves the stage (lessons/run/off_stage.h:
+    /// a cart run off the end of its ground), once per run, saying so (leftStage); a lesson
+    /// step turns it on. The stage is the world's as it is now.
+    void setStageWatched(bool on) { m_watch.watchStage(on, m_world); }
+    /// The body that left the stage in this run, and when; nullopt while none has.
+    const std::optional<lessons::OffStage>& offStage() const { return m_watch.leftStage(); }
 
 public slots:
     void setRunning(bool running);
@@ -193,6 +199,8 @@ signals:
     void rewound(double t);
     /// Samples were cleared (new scene, reset).
     void samplesCleared();
+    /// A body left the stage at time t [s] and the run paused (setStageWatched).
+    void leftStage(physics::BodyId body, double t);
     /// measureFrames() is done: each frame's wall time and physics time [ms].
     void framesMeasured(const std::vector<double>& frameMs, const std::vector<double>& physicsMs);
 

@@ -9,6 +9,7 @@
 #include "view/world_view_accessible.h"
 
 #include <QAccessible>
+#include <QMetaMethod>
 
 namespace rigidlab::ui {
 
@@ -127,10 +128,19 @@ void SceneNarrator::tell(int child, const QString& value)
 void SceneNarrator::tellValues()
 {
     m_sinceTold.restart();
+    // Nobody listens (no assistive technology, nothing connected to told()): the words of
+    // thousands of bodies would cost the window a frame every second for nothing. The values
+    // not told are told at the first tick someone listens (none was told, so all changed).
+    if (!QAccessible::isActive() &&
+        !isSignalConnected(QMetaMethod::fromSignal(&SceneNarrator::told)))
+        return;
     // Only what changed: a body at rest, a floor, says the same as a second ago.
     const auto count = static_cast<physics::BodyId>(m_controller.world().bodies().size());
+    const std::vector<std::vector<physics::BodyId>> touches =
+        scene_words::touchingBodies(m_controller);
     for (physics::BodyId id = 0; id < count; ++id) {
-        const QString value = scene_words::bodyValue(m_controller, id);
+        const QString value =
+            scene_words::bodyValue(m_controller, id, touches[static_cast<std::size_t>(id)]);
         if (m_toldValues.value(id) == value)
             continue;
         m_toldValues.insert(id, value);

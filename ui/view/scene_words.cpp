@@ -36,16 +36,15 @@ bool isBox(const physics::Polygon& p)
     return true;
 }
 
-QStringList touching(const physics::World& world, physics::BodyId id,
-                     const SimulationController& controller)
+/// The names of the bodies `touches`, each name once.
+QStringList touchingNames(const std::vector<physics::BodyId>& touches,
+                          const SimulationController& controller)
 {
     QStringList names;
-    for (const physics::Contact& c : world.contacts()) {
-        if (c.a != id && c.b != id)
-            continue;
-        const QString other = controller.scene().bodyLabel(c.a == id ? c.b : c.a);
-        if (!names.contains(other))
-            names << other;
+    for (const physics::BodyId other : touches) {
+        const QString name = controller.scene().bodyLabel(other);
+        if (!names.contains(name))
+            names << name;
     }
     return names;
 }
@@ -113,7 +112,28 @@ QString shapeText(const physics::Shape& shape)
     return SceneWords::tr("polygon, %n corner(s)", nullptr, static_cast<int>(p->vertices.size()));
 }
 
+std::vector<std::vector<physics::BodyId>> touchingBodies(const SimulationController& controller)
+{
+    const physics::World& world = controller.world();
+    std::vector<std::vector<physics::BodyId>> touches(world.bodies().size());
+    for (const physics::Contact& c : world.contacts()) {
+        touches[static_cast<std::size_t>(c.a)].push_back(c.b);
+        touches[static_cast<std::size_t>(c.b)].push_back(c.a);
+    }
+    return touches;
+}
+
 QString bodyValue(const SimulationController& controller, physics::BodyId id)
+{
+    std::vector<physics::BodyId> touches;
+    for (const physics::Contact& c : controller.world().contacts())
+        if (c.a == id || c.b == id)
+            touches.push_back(c.a == id ? c.b : c.a);
+    return bodyValue(controller, id, touches);
+}
+
+QString bodyValue(const SimulationController& controller, physics::BodyId id,
+                  const std::vector<physics::BodyId>& touches)
 {
     const physics::World& world = controller.world();
     const physics::Body& b = world.body(id);
@@ -128,7 +148,7 @@ QString bodyValue(const SimulationController& controller, physics::BodyId id)
     parts << SceneWords::tr("velocity %1, speed %2")
                  .arg(pair(v.x(), v.y(), QStringLiteral("m/s")),
                       spokenQuantity(v.norm(), QStringLiteral("m/s"), 3, 1.0));
-    if (const QStringList t = touching(world, id, controller); !t.isEmpty())
+    if (const QStringList t = touchingNames(touches, controller); !t.isEmpty())
         parts << SceneWords::tr("touches %1").arg(t.join(QStringLiteral(", ")));
     return parts.join(QStringLiteral("; "));
 }

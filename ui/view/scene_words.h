@@ -12,6 +12,8 @@
 #include <QCoreApplication>
 #include <QString>
 
+#include <vector>
+
 namespace rigidlab::ui {
 
 class SimulationController;
@@ -33,6 +35,12 @@ QString bodyName(const SimulationController& controller, physics::BodyId id);
 QString shapeText(const physics::Shape& shape);
 /// A body's numbers now: shape, mass, position, velocity and what it touches.
 QString bodyValue(const SimulationController& controller, physics::BodyId id);
+/// Per body, the bodies its contacts touch now, in the order of the world's contacts: one
+/// pass over the contacts for every body (a pile of 5,000 boxes has 10,000 contacts).
+std::vector<std::vector<physics::BodyId>> touchingBodies(const SimulationController& controller);
+/// bodyValue() with what the body touches taken from touchingBodies().
+QString bodyValue(const SimulationController& controller, physics::BodyId id,
+                  const std::vector<physics::BodyId>& touches);
 
 } // namespace scene_words
 } // namespace rigidlab::ui

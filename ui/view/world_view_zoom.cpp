@@ -33,12 +33,24 @@ QRectF WorldView::contentRect() const
     // and following them would shrink the worlds still running to a dot.
     QRectF box;
     const physics::World& w = m_controller.world();
+    // With the run's event known, the scenery is framed only around it: the carts of a step
+    // and the ground under them, not the whole 40 m of ground. Worlds compared side by side
+    // keep theirs whole: each world's floor is part of that picture.
+    const double grow = 0.15 * std::max(m_action.width(), m_action.height()) + 0.2;
+    const QRectF around = m_action.adjusted(-grow, -grow, grow, grow);
+    const bool clip = !m_action.isEmpty() && m_controller.variantOffset().isZero();
+    const auto scenery = [&](const QRectF& r, bool moves) {
+        return moves || !clip ? r : r & around;
+    };
     if (!w.divergence())
-        for (const BodyItem* item : m_items)
-            box |= item->sceneBoundingRect();
+        for (std::size_t i = 0; i < m_items.size(); ++i)
+            box |= scenery(m_items[i]->sceneBoundingRect(),
+                           i >= w.bodies().size() || w.bodies()[i].moves());
     for (const Ghost& g : m_ghosts)
-        if (!m_controller.variant(g.variant).divergence())
-            box |= g.item->sceneBoundingRect();
+        if (const physics::World& vw = m_controller.variant(g.variant); !vw.divergence())
+            box |= scenery(g.item->sceneBoundingRect(),
+                           static_cast<std::size_t>(g.body) >= vw.bodies().size() ||
+                               vw.bodies()[static_cast<std::size_t>(g.body)].moves());
     auto add = [&](physics::BodyId id, const physics::Vec2& anchor) {
         const physics::Vec2 p =
             id == physics::kWorld ? anchor : w.body(id).transform().apply(anchor);

@@ -4,6 +4,7 @@
 #include "common/display_names.h"
 #include "common/export_folder.h"
 #include "common/modal_scope.h"
+#include "common/number_format.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_panels.h"
@@ -12,6 +13,7 @@
 #include "panels/sat_panel.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
+#include "plots/plot_shelf.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
@@ -25,6 +27,7 @@
 #include "format/data_dirs.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
+#include "run/featured_collision.h"
 #include "run/swept_bounds.h"
 
 #include <QAction>
@@ -33,7 +36,6 @@
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QStatusBar>
-#include <QVBoxLayout>
 
 #include <algorithm>
 #include <optional>
@@ -54,6 +56,13 @@ LessonSession::LessonSession(const Parts& parts) : QObject(&parts.window), m_par
             m_parts.controller.setRunning(true); // predicted: now see
     });
     connect(&player, &LessonPlayer::exportRequested, this, &LessonSession::exportDialog);
+    connect(&parts.controller, &SimulationController::leftStage, this,
+            [this](physics::BodyId body, double t) {
+                m_parts.window.statusBar()->showMessage(
+                    tr("%1 fell off the stage at t = %2 s: the run paused. Play runs on.")
+                        .arg(m_parts.controller.scene().bodyLabel(body), formatReadable(t, 3)),
+                    20000);
+            });
 }
 
 QString LessonSession::openLesson(const QString& path, bool quiet)
@@ -145,8 +154,10 @@ void LessonSession::applyStep(const lessons::Lesson& lesson, int index)
     } else {
         m_parts.sat.setBodies(-1, -1);
     }
+    m_parts.collision.setNamedBodies(lessons::namedBodies(step, step.scene));
     frameStepAction(step);
     m_parts.controller.setEndTime(step.endTime);
+    m_parts.controller.setStageWatched(true);
     if (!step.editor)
         m_parts.controller.setRunning(step.autoplay && !m_runHeld);
 }
@@ -207,9 +218,8 @@ void LessonSession::makeComparePlots(const lessons::LessonStep& step)
     // The step's compared worlds, one plot for each compare-… plot it names, made where the
     // headless export makes them (lesson_export.h), so the window shows and exports the same.
     QDockWidget* compareDock = m_parts.layout.compareDock();
-    auto* box = new QWidget(compareDock);
-    auto* layout = new QVBoxLayout(box);
-    layout->setContentsMargins(0, 0, 0, 0);
+    // Side by side, stacked or behind tabs, as the dock's room keeps each readable.
+    auto* box = new PlotShelf(compareDock);
     QStringList titles;
     for (const QString& name : step.plots) {
         if (!name.startsWith(QLatin1String("compare-")))
@@ -222,7 +232,13 @@ void LessonSession::makeComparePlots(const lessons::LessonStep& step)
         plot->setTitleShown(false);
         plot->setPresentation(m_parts.layout.presentation());
         followController(*plot, m_parts.controller);
-        layout->addWidget(plot);
+        // Its tab says what the plot's values are ("compare-drift": the drift).
+        const QString plain = name.mid(QStringLiteral("compare-").size());
+        const auto* names =
+            std::find_if(kStepPlotTitles.begin(), kStepPlotTitles.end(),
+                         [&](const StepPartName& n) { return plain == QLatin1String(n.name); });
+        box->addPlot(plot, names != kStepPlotTitles.end() ? stepPartText(names->shortTitle)
+                                                          : plot->title());
         m_comparePlots.push_back(plot);
         titles << plot->title();
     }
@@ -321,6 +337,7 @@ void LessonSession::leave()
         return;
     m_inLesson = false;
     m_parts.controller.setEndTime(std::nullopt);
+    m_parts.controller.setStageWatched(false);
     m_parts.editTools.setAllowedTools(std::nullopt);
     m_parts.editTools.setAllowedProperties(std::nullopt);
     emit left();
@@ -339,6 +356,7 @@ void LessonSession::leave()
     m_parts.layout.compareDock()->hide();
     m_parts.controls.setAllowed(std::nullopt);
     m_parts.sat.setBodies(-1, -1);
+    m_parts.collision.setNamedBodies({});
     applyHeldBack({});
     m_parts.layout.fitSideColumns();
     m_parts.view.setActionBounds({});

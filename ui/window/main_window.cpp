@@ -394,4 +394,10 @@ void MainWindow::resizeEvent(QResizeEvent* event)
     m_layout->windowResized();
 }
 
+void MainWindow::moveEvent(QMoveEvent* event)
+{
+    QMainWindow::moveEvent(event);
+    m_layout->windowMoved();
+}
+
 } // namespace rigidlab::ui

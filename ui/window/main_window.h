@@ -35,6 +35,7 @@ struct Scene;
 namespace rigidlab::ui {
 
 class BouncePanel;
+class ClassResultsDialog;
 class CollisionPanel;
 class ControlPanel;
 class EditTools;
@@ -113,6 +114,9 @@ public:
     /// While a lesson tried from the lesson editor plays: raises the editor with the step the
     /// student is on selected (the bar above the docks, File › Back to the lesson editor).
     void backToLessonEditor();
+    /// File › Class results…: the dialog that collects a class's answers files (one per
+    /// window, raised again when open). Returns it.
+    ClassResultsDialog* showClassResults();
     SatPanel& satPanel() { return *m_sat; }
     BouncePanel& bouncePanel() { return *m_bounces; }
     CollisionPanel& collisionPanel() { return *m_collision; }
@@ -173,6 +177,7 @@ protected:
     void closeEvent(QCloseEvent* event) override;
     void showEvent(QShowEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
+    void moveEvent(QMoveEvent* event) override;
 
 private slots:
     void updateStatus();

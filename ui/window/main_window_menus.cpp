@@ -9,6 +9,7 @@
 #include "lesson_player/lesson_player.h"
 #include "measure/measurement_session.h"
 #include "window/about_dialog.h"
+#include "window/class_results_dialog.h"
 #include "window/dock_tabs.h"
 #include "window/help_dialog.h"
 #include "window/language_switch.h"
@@ -103,6 +104,8 @@ void MainWindow::buildFileMenu()
     fillLessons();
     connect(lessonsMenu, &QMenu::aboutToShow, this, fillLessons);
     m_player->addWorksheetActions(*file); // the open lesson's empty worksheet and its key
+    named(file->addAction(tr("Class res&ults…"), this, &MainWindow::showClassResults),
+          "classResults");
     QMenu* recentMenu = file->addMenu(tr("Open &recent"));
     recentMenu->setObjectName(QStringLiteral("recentMenu")); // file names: no language
     QMenu* scenesMenu = file->addMenu(tr("Shipped s&cenes"));
@@ -163,6 +166,19 @@ void MainWindow::buildHelpMenu()
         named(help->addAction(tr("&Controls…"), this, &MainWindow::showControlsHelp), "help");
     addAction(controls); // F1 works in full screen too
     help->addAction(tr("&About RigidLab…"), this, [this] { showAbout(this); });
+}
+
+ClassResultsDialog* MainWindow::showClassResults()
+{
+    auto* dialog = findChild<ClassResultsDialog*>();
+    if (dialog == nullptr) {
+        dialog = new ClassResultsDialog(this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+    }
+    dialog->show();
+    dialog->raise();
+    dialog->activateWindow();
+    return dialog;
 }
 
 void MainWindow::showControlsHelp()

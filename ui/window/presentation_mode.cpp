@@ -5,6 +5,7 @@
 #include "window/window_layout.h"
 
 #include "common/theme.h"
+#include "lesson_player/question_area.h"
 #include "plots/plot_widget.h"
 
 #include <QDockWidget>
@@ -93,7 +94,10 @@ void WindowLayout::setPresentation(bool on)
 void WindowLayout::restoreNormalState()
 {
     // The saved state shows the docks that were shown when presentation mode began; a dock
-    // opened since (the inspector, to show a value to the class) would close with it.
+    // opened since (the inspector, to show a value to the class) would close with it. The
+    // plots' least heights for the large type would hold the docks taller than they were:
+    // they are made again for the restored sizes.
+    relaxPlotHeights();
     m_window.restoreState(m_normalState);
     for (const auto& [dock, shown] : m_shownAtLeaving)
         if (dock && dock->isHidden() == shown)
@@ -112,7 +116,8 @@ void WindowLayout::scaleExplicitFonts(bool on)
         return;
     }
     for (QWidget* w : m_window.findChildren<QWidget*>()) {
-        if (!w->testAttribute(Qt::WA_SetFont) || qobject_cast<PlotWidget*>(w) ||
+        if (!w->testAttribute(Qt::WA_SetFont) || w->property(kFontFollowsProperty).toBool() ||
+            qobject_cast<PlotWidget*>(w) ||
             (w->parentWidget() && qobject_cast<PlotWidget*>(w->parentWidget())))
             continue;
         m_explicitFonts.push_back({QPointer<QWidget>(w), w->font()});

@@ -10,6 +10,8 @@
 #include "measure/measurement_session.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
+#include "window/class_results_dialog.h"
+#include "window/demo_class.h"
 #include "window/main_window.h"
 
 #include "format/atomic_file.h"
@@ -362,6 +364,26 @@ bool shootLessonEditor(MainWindow& window, Shooter& shooter)
     return ok;
 }
 
+/// File › Class results… on a made-up class (demo_class.h) that handed in the restitution
+/// lesson: its table, the summary row and the two files left out.
+bool shootClassResults(MainWindow& window, Shooter& shooter)
+{
+    const QTemporaryDir folder;
+    if (!folder.isValid())
+        return shooter.fail(Screenshots::tr("cannot create a temporary folder for the class: %1")
+                                .arg(folder.errorString()));
+    if (const QString error = writeDemoClass(folder.path()); !error.isEmpty())
+        return shooter.fail(error);
+    ClassResultsDialog* dialog = window.showClassResults();
+    dialog->setFolder(folder.path());
+    const bool ok = shooter.write(QStringLiteral("97-class-results.png"),
+                                  Screenshots::tr("File › Class results… on a class of five, "
+                                                  "with a damaged file and another lesson's"),
+                                  dialog);
+    delete dialog;
+    return ok;
+}
+
 } // namespace
 
 ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
@@ -414,6 +436,8 @@ ScreenshotResult writeScreenshots(const ScreenshotOptions& options)
     if (options.classroom && !shootMeasurement(window, shooter))
         return result;
     if (options.classroom && !shootLessonEditor(window, shooter))
+        return result;
+    if (options.classroom && !shootClassResults(window, shooter))
         return result;
     result.ok = shooter.writeIndex();
     return result;

@@ -26,7 +26,8 @@ struct ScreenshotOptions {
     /// Shoot the classroom views too: a lesson step with the controls, inspector and
     /// collision panels (90-panels.png), Help › Controls (91-help-controls.png), presentation
     /// mode (92-presentation.png), the editor on a new scene (93-editor.png) and a measurement
-    /// with its residuals and fit (94-measurement.png), the lesson editor (lesson-editor.png).
+    /// with its residuals and fit (94-measurement.png), the lesson editor (lesson-editor.png)
+    /// and File › Class results… on a made-up class (97-class-results.png).
     bool classroom = true;
     /// Called on the new window before anything is shot (presentation mode, ...).
     std::function<void(MainWindow&)> setUp;

@@ -1,9 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The status line's solver word: the contact solver that runs, which is not always the one
-// the scene asked for. The soft step does not yet handle springs, pin joints, gravitation or
-// an integrator other than symplectic Euler; there the sequential-impulse solver stands in
-// (physics::World::solverRunning()), and the status line says so instead of "soft step".
+// The status line's solver word: the contact solver that runs, the one the scene asked for
+// (the soft step runs every world: springs, pins, gravitation and every integrator).
 
 #include <QString>
 
@@ -13,9 +11,9 @@ class World;
 
 namespace rigidlab::ui {
 
-/// The solver that runs, in a few words ("Sequential impulse instead of the soft step").
+/// The solver that runs, in a few words ("Soft step").
 QString solverStatusText(const physics::World& world);
-/// Why, when another solver stands in for the one asked for; the solver's name otherwise.
+/// The same for the tooltip ("Contact solver: Soft step").
 QString solverStatusTip(const physics::World& world);
 
 } // namespace rigidlab::ui

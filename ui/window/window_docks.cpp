@@ -77,7 +77,7 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
     addDock(tr("Error vs run time"), QStringLiteral("errorDock"), panels.error,
             Qt::BottomDockWidgetArea)
         ->hide();
-    addDock(tr("Measurement"), QStringLiteral("measurement"), panels.measurement,
+    addDock(panelTitle(5, false), QStringLiteral("measurement"), panels.measurement,
             Qt::RightDockWidgetArea)
         ->hide();
     m_compareDock = new QDockWidget(tr("Side by side"), &window);
@@ -123,7 +123,8 @@ void WindowLayout::buildLessonDock(const Panels& panels)
     QDockWidget* lessonDock =
         addDock(tr("Lesson"), QStringLiteral("lesson"), panels.lesson, Qt::LeftDockWidgetArea);
     enlargeForReading(*panels.lesson);
-    // Back, Next, Restart and Export stay in sight below the lesson, which scrolls.
+    // The step's questions and Back, Next, Restart and Export stay in sight below the lesson,
+    // which scrolls.
     auto* box = new QWidget(lessonDock);
     auto* column = new QVBoxLayout(box);
     column->setContentsMargins(0, 0, 0, 4);

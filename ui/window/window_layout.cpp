@@ -12,6 +12,8 @@
 #include "window/window_layout.h"
 
 #include "panels/error_panel.h"
+#include "plots/plot_shelf.h"
+#include "plots/plot_widget.h"
 #include "window/dock_tabs.h"
 #include "window/window_names.h"
 
@@ -23,6 +25,8 @@
 #include <QSettings>
 #include <QTabBar>
 #include <QTimer>
+
+#include <qcustomplot.h>
 
 #include <algorithm>
 #include <array>
@@ -41,11 +45,13 @@ constexpr QSize kRoomy(1600, 1000);
 constexpr double kLeftShare = 0.26;
 constexpr double kRightShare = 0.22;
 /// How the right column's height is shared on a small screen, by kind: the controls and the
-/// inspector (the most rows), the tables, the plots.
+/// inspector (the most rows), the tables (the plots have their place under the world; their
+/// weight counts only where they are in the column).
 constexpr std::array<int, 3> kCompactHeightWeights{5, 4, 4};
-/// The same in presentation mode, where the type is large: a plot needs the most height to
-/// keep its legend and both axes readable; the controls and tables scroll.
+/// The same in presentation mode, where the type is large; the controls and tables scroll.
 constexpr std::array<int, 3> kPresentationHeightWeights{3, 3, 5};
+/// A plot's least height where the room is not short [px].
+constexpr int kPlotMinimumHeight = 150;
 /// The side columns' widths where there is room [px].
 constexpr int kLeftWidth = 400;
 constexpr int kRightWidth = 480;
@@ -73,8 +79,10 @@ void WindowLayout::fitToScreen(const QRect& available)
     const bool sized = !m_window.isFullScreen() && !m_window.isMaximized();
     if (sized) {
         m_window.resize(size);
-        m_window.move(available.topLeft() + QPoint((available.width() - size.width()) / 2,
-                                                   (available.height() - size.height()) / 2));
+        // move() places the frame: centred with it.
+        const QSize outer = size + frame;
+        m_window.move(available.topLeft() + QPoint((available.width() - outer.width()) / 2,
+                                                   (available.height() - outer.height()) / 2));
     }
     arrangeDocks(available.size());
     // While the docks were put back one row each, their minimum heights added up and may have
@@ -93,6 +101,10 @@ void WindowLayout::arrangeDocks(const QSize& screen)
     for (const PlotNames& plot : kPlotNames)
         plots << m_docks.value(QLatin1String(plot.name));
     plots << m_compareDock;
+    // An imported measurement is plotted: its dock shares the plots' place (a lesson step
+    // that shows it beside a table keeps the table in sight).
+    if (QDockWidget* measurement = m_docks.value(QStringLiteral("measurement")))
+        plots << measurement;
     const QList<QDockWidget*> settings{m_docks.value(QStringLiteral("controls")),
                                        m_docks.value(QStringLiteral("inspector"))};
     QList<QDockWidget*> tables;
@@ -106,8 +118,10 @@ void WindowLayout::arrangeDocks(const QSize& screen)
     if (m_compact) {
         // On a small screen the lesson has the left column to itself (its text, questions and
         // buttons need the height). The right column has a place for each kind, top to
-        // bottom: the controls and the inspector, the tables, the plots. A step's panel is
-        // never behind a plot's tab, and a place with nothing shown takes no room.
+        // bottom: the controls and the inspector, the tables. A step's panel is never behind
+        // a plot's tab, and a place with nothing shown takes no room. The plots, tabbed, go
+        // under the world and the right column, as wide as both: in a column a fifth of
+        // 1024 px wide their data area was too small to read (fitPlotHeight()).
         groups = {settings, tables, plots};
     } else {
         // The controls and the inspector under the lesson; the plots stacked one above the
@@ -117,11 +131,18 @@ void WindowLayout::arrangeDocks(const QSize& screen)
             groups << QList<QDockWidget*>{plot};
         groups << tables;
     }
+    // On a small screen the bottom area lies under the world and the right column, the lesson
+    // beside it keeping the whole height; else it spans the window (the work-precision sweep).
+    m_window.setCorner(Qt::BottomLeftCorner,
+                       m_compact ? Qt::LeftDockWidgetArea : Qt::BottomDockWidgetArea);
+    m_window.setCorner(Qt::BottomRightCorner, Qt::BottomDockWidgetArea);
     for (QDockWidget* d : left)
         m_window.addDockWidget(Qt::LeftDockWidgetArea, d);
     for (const QList<QDockWidget*>& group : groups)
         for (QDockWidget* d : group)
-            m_window.addDockWidget(Qt::RightDockWidgetArea, d);
+            m_window.addDockWidget(m_compact && group == plots ? Qt::BottomDockWidgetArea
+                                                               : Qt::RightDockWidgetArea,
+                                   d);
     if (left.contains(settings.first()))
         m_window.tabifyDockWidget(settings.first(), settings.last());
     for (const QList<QDockWidget*>& group : groups)
@@ -185,7 +206,54 @@ void WindowLayout::fitSideColumns()
                     break;
                 }
         shareColumnHeight();
+        fitPlotHeight();
     });
+}
+
+void WindowLayout::fitPlotHeight()
+{
+    // The plots under the world (a small screen) at least as tall as keeps a readable data
+    // area, kLeastDataArea, with their legends and axis titles above and below it: as their
+    // least height, which the window keeps whatever else is shown. Again whenever one's size
+    // changes (a legend wraps to more rows in less width, presentation mode's type).
+    for (PlotWidget* plot : m_window.findChildren<PlotWidget*>()) {
+        QDockWidget* dock = nullptr;
+        for (QWidget* p = plot->parentWidget(); p && !dock; p = p->parentWidget())
+            dock = qobject_cast<QDockWidget*>(p);
+        if (!dock || !plot->isVisible())
+            continue;
+        plot->installEventFilter(this);
+        int least = kPlotMinimumHeight;
+        // Plots one above the other in a shelf have each its least height already (the shelf
+        // stacks them only then); their least heights added up would hold the dock that tall.
+        const auto* shelf = qobject_cast<const PlotShelf*>(plot->parentWidget());
+        const bool stacked = shelf && shelf->arrangement() == PlotShelf::Arrangement::Column;
+        if (m_compact && !stacked && m_window.dockWidgetArea(dock) == Qt::BottomDockWidgetArea) {
+            plot->plot()->replot(QCustomPlot::rpImmediateRefresh); // laid out at its size now
+            least = std::max(least, plotSizeFor(*plot, kLeastDataArea).height());
+        }
+        if (plot->minimumHeight() != least)
+            plot->setMinimumHeight(least);
+    }
+}
+
+void WindowLayout::relaxPlotHeights()
+{
+    for (PlotWidget* plot : m_window.findChildren<PlotWidget*>())
+        plot->setMinimumHeight(std::min(plot->minimumHeight(), kPlotMinimumHeight));
+}
+
+bool WindowLayout::eventFilter(QObject* watched, QEvent* event)
+{
+    if (event->type() == QEvent::Resize && qobject_cast<PlotWidget*>(watched) &&
+        !m_plotFitPending) {
+        m_plotFitPending = true;
+        QTimer::singleShot(0, this, [this] {
+            m_plotFitPending = false;
+            fitPlotHeight();
+        });
+    }
+    return QObject::eventFilter(watched, event);
 }
 
 void WindowLayout::shareColumnHeight()
@@ -199,7 +267,8 @@ void WindowLayout::shareColumnHeight()
     for (qsizetype g = 0; g < m_rightGroups.size(); ++g) {
         QList<QDockWidget*> group;
         for (QDockWidget* d : m_rightGroups[g])
-            if (!d->isHidden() && d->geometry().right() >= 0 && d->geometry().bottom() >= 0)
+            if (!d->isHidden() && d->geometry().right() >= 0 && d->geometry().bottom() >= 0 &&
+                m_window.dockWidgetArea(d) == Qt::RightDockWidgetArea)
                 group << d;
         if (group.isEmpty())
             continue;
@@ -253,14 +322,29 @@ void WindowLayout::restore(const QSettings& s)
 
 void WindowLayout::windowShown()
 {
-    // The window manager's frame is known once the window is shown: the window and its frame
-    // together must fit the screen's available area.
-    if (!m_screenArea.isEmpty() && !m_window.isFullScreen() && !m_window.isMaximized())
-        QTimer::singleShot(0, this, [this] {
-            const QSize outer = m_window.frameGeometry().size();
-            if (outer.width() > m_screenArea.width() || outer.height() > m_screenArea.height())
-                fitToScreen(m_screenArea);
-        });
+    QTimer::singleShot(0, this, &WindowLayout::keepFrameOnScreen);
+}
+
+void WindowLayout::windowMoved()
+{
+    // A window manager (openbox) frames the window after it is shown, and moves it as it does:
+    // only then is the frame known.
+    keepFrameOnScreen();
+}
+
+void WindowLayout::keepFrameOnScreen()
+{
+    if (m_screenArea.isEmpty() || m_presentation || m_window.isFullScreen() ||
+        m_window.isMaximized() || !m_window.isVisible())
+        return;
+    // The window and its frame together within the screen's available area: else the status
+    // bar (paused, drift, the solver that ran) lies below a 1024×768 projector's edge.
+    const QRect outer = m_window.frameGeometry();
+    const QSize frame = outer.size() - m_window.size();
+    if (frame == m_frameFitted || m_screenArea.contains(outer))
+        return;
+    m_frameFitted = frame;
+    fitToScreen(m_screenArea);
 }
 
 void WindowLayout::windowResized()

@@ -84,6 +84,7 @@ public:
     /// The window's show and resize events, which the layout follows.
     void windowShown();
     void windowResized();
+    void windowMoved();
 
 signals:
     void presentationChanged(bool on);
@@ -94,8 +95,17 @@ private:
     void buildLessonDock(const Panels& panels);
     /// Stacked plots on a roomy `screen`, tabbed on a small one.
     void arrangeDocks(const QSize& screen);
+    /// The window and its frame inside the screen's available area, once the window manager
+    /// has told the frame (after the window is shown, often later than its first move).
+    void keepFrameOnScreen();
     /// The right column's height shared by its kinds' weights (a small screen).
     void shareColumnHeight();
+    /// The plots under the world tall enough for a readable data area (a small screen).
+    void fitPlotHeight();
+    /// The plots' least heights back to the plain one (until fitPlotHeight() runs again).
+    void relaxPlotHeights();
+    /// A plot resized: fitPlotHeight() again, once the layout has settled.
+    bool eventFilter(QObject* watched, QEvent* event) override;
     /// Fonts set on widgets of their own grow with presentation mode, and come back after.
     void scaleExplicitFonts(bool on);
     /// A dock shown from the View menu comes to the front of its tabs.
@@ -113,6 +123,8 @@ private:
     bool m_compact = false; ///< plots tabbed for a small screen
     bool m_presentation = false;
     bool m_restoreStatePending = false; ///< docks to put back once full screen has ended
+    bool m_plotFitPending = false;      ///< a fitPlotHeight() is queued
+    QSize m_frameFitted; ///< the window manager's frame the window was last fitted with [px]
     bool m_normalWasMaximized = false;
     QByteArray m_normalGeometry; ///< before presentation mode
     QByteArray m_normalState;

@@ -12,7 +12,6 @@
 #include "format/scene_schema.h"
 #include "run/measurements.h"
 
-#include <QBuffer>
 #include <QCoreApplication>
 #include <QDate>
 #include <QDir>
@@ -61,11 +60,9 @@ QString quantity(double value, const QString& unit)
     return unit.isEmpty() ? formatReadable(value) : formatQuantity(value, unit);
 }
 
-/// "integrator Verlet · dt = 0.001 s · solver The paper's impulse": what repeats the run. The
-/// solver named is the one that ran (`running`), with the one asked for when another stood in
-/// for it (the soft step does not take every scene), as the window's status line says.
-QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& ran,
-                     physics::SolverKind running)
+/// "integrator Verlet · dt = 0.001 s · solver The paper's impulse": what repeats the run, as
+/// the window's status line names the solver.
+QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& ran)
 {
     const auto names = [&] {
         QStringList list;
@@ -75,11 +72,7 @@ QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& r
     };
     const bool byIntegrator = step.compare && !step.compare->integrators.empty();
     const bool bySolver = step.compare && !step.compare->solvers.empty();
-    const QString solver = bySolver                ? names()
-                           : running == ran.solver ? solverDisplayName(running)
-                                                   : Worksheet::tr("%1 (instead of %2)")
-                                                         .arg(solverDisplayName(running),
-                                                              solverDisplayName(ran.solver));
+    const QString solver = bySolver ? names() : solverDisplayName(ran.solver);
     QString line = Worksheet::tr("Settings: integrator %1 · dt = %2 s · solver %3")
                        .arg(byIntegrator ? names() : integratorDisplayName(ran.integrator),
                             formatReadable(ran.dt, 6), solver);
@@ -210,8 +203,7 @@ void SheetWriter::writeStep(int index, int& figures)
     // The step's heading stays on the page of what follows it: its first question, else its
     // first figure.
     const QString heading = Worksheet::tr("Step %1: %2").arg(index + 1).arg(step.title);
-    const QString settings =
-        settingsLine(step, plots.settings, lessons::buildStepWorlds(step).front().solverRunning());
+    const QString settings = settingsLine(step, plots.settings);
     int first = 0;
     if (!step.questions.empty())
         first = m_pages.heightOf(step.questions.front().prompt, m_bold) + kQuestionRoom;
@@ -378,24 +370,22 @@ WorksheetResult writeWorksheet(const lessons::Lesson& lesson, const lessons::Ans
                 .arg(answers.lessonFile.isEmpty() ? lesson.title : answers.lessonFile, bad);
         return result;
     }
-    QByteArray bytes;
-    {
-        QBuffer out(&bytes);
-        out.open(QIODevice::WriteOnly);
-        QPdfWriter pdf(&out);
-        pdf.setCreator(QStringLiteral("RigidLab"));
-        pdf.setTitle(headerLine(lesson, answers, kind));
-        WorksheetPages pages(pdf, headerLine(lesson, answers, kind));
-        if (!pages.began()) {
-            result.error = Worksheet::tr("cannot write %1: could not start drawing the PDF")
-                               .arg(QDir::toNativeSeparators(path));
-            return result;
-        }
-        SheetWriter(lesson, answers, kind, pages).write(result.figures);
-        result.pages = pages.pages();
-        pages.end();
+    const std::optional<QByteArray> bytes =
+        drawPdf(headerLine(lesson, answers, kind), [&](QPdfWriter& pdf) {
+            WorksheetPages pages(pdf, headerLine(lesson, answers, kind));
+            if (!pages.began())
+                return false;
+            SheetWriter(lesson, answers, kind, pages).write(result.figures);
+            result.pages = pages.pages();
+            pages.end();
+            return true;
+        });
+    if (!bytes) {
+        result.error = Worksheet::tr("cannot write %1: could not start drawing the PDF")
+                           .arg(QDir::toNativeSeparators(path));
+        return result;
     }
-    if (const QString error = lessons::writeFileAtomically(path, bytes); !error.isEmpty()) {
+    if (const QString error = lessons::writeFileAtomically(path, *bytes); !error.isEmpty()) {
         result.error = error;
         result.figures.clear();
         return result;

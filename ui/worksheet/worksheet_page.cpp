@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "worksheet/worksheet_page.h"
 
+#include "common/drawable_text.h"
 #include "plots/plot_widget.h"
 
+#include <QBuffer>
 #include <QCoreApplication>
 #include <QFontMetrics>
 #include <QPageLayout>
@@ -28,6 +30,22 @@ constexpr double kMarginMm = 15.0;
 constexpr int kWritingLine = 30;
 
 } // namespace
+
+std::optional<QByteArray> drawPdf(const QString& title,
+                                  const std::function<bool(QPdfWriter&)>& draw)
+{
+    QByteArray bytes;
+    {
+        QBuffer out(&bytes);
+        out.open(QIODevice::WriteOnly);
+        QPdfWriter pdf(&out);
+        pdf.setCreator(QStringLiteral("RigidLab"));
+        pdf.setTitle(title);
+        if (!draw(pdf))
+            return std::nullopt;
+    } // the writer finishes the file as it goes, before its buffer closes
+    return bytes;
+}
 
 WorksheetPages::WorksheetPages(QPdfWriter& pdf, const QString& header)
     : m_pdf(pdf), m_header(header)
@@ -66,7 +84,8 @@ void WorksheetPages::drawHeader()
     const QFontMetrics fm(small, &m_pdf);
     const QString number = WorksheetText::tr("page %1").arg(m_pages);
     const int numberWidth = fm.horizontalAdvance(number) + 8;
-    const QString header = fm.elidedText(m_header, Qt::ElideRight, page.width() - numberWidth - 8);
+    const QString header = fm.elidedText(drawableText(m_header, small), Qt::ElideRight,
+                                         page.width() - numberWidth - 8);
     m_painter.drawText(QRect(0, 0, page.width() - numberWidth, fm.height()),
                        Qt::AlignLeft | Qt::AlignVCenter, header);
     m_painter.drawText(QRect(page.width() - numberWidth, 0, numberWidth, fm.height()),
@@ -95,7 +114,7 @@ int WorksheetPages::heightOf(const QString& text, const QFont& font, int indent)
 {
     m_painter.setFont(font);
     const QRect box(m_area.left() + indent, 0, m_area.width() - indent, 100000);
-    return m_painter.boundingRect(box, Qt::TextWordWrap, text).height();
+    return m_painter.boundingRect(box, Qt::TextWordWrap, drawableText(text, font)).height();
 }
 
 void WorksheetPages::text(const QString& text, const QFont& font, int indent)
@@ -106,8 +125,9 @@ void WorksheetPages::text(const QString& text, const QFont& font, int indent)
     keepRoom(height);
     m_painter.setFont(font);
     m_painter.setPen(Qt::black);
+    // A character no font has would print as nothing: its placeholder instead.
     m_painter.drawText(QRect(m_area.left() + indent, m_y, m_area.width() - indent, height),
-                       Qt::TextWordWrap, text);
+                       Qt::TextWordWrap, drawableText(text, font));
     m_y += height;
 }
 

@@ -6,12 +6,22 @@
 
 #include <qcustomplot.h>
 
+#include <QByteArray>
 #include <QFont>
 #include <QString>
+
+#include <functional>
+#include <optional>
 
 class QPdfWriter;
 
 namespace rigidlab::ui {
+
+/// A PDF drawn into memory, to be written whole (lessons/format/atomic_file.h): `draw` gets a
+/// writer with the lab as its creator and `title` as its title, and returns false when it
+/// could not draw; nothing is returned then.
+std::optional<QByteArray> drawPdf(const QString& title,
+                                  const std::function<bool(QPdfWriter&)>& draw);
 
 class PlotWidget;
 

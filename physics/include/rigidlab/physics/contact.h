@@ -21,24 +21,11 @@ enum class SolverKind {
     SoftStep,
 };
 
-/// Why the sequential-impulse solver would stand in for the soft step. The soft step now runs
-/// every world, so World::softStepStandIn() is always None; the reasons stay for the callers
-/// that word a hand-over.
-enum class SoftStepStandIn {
-    None,
-    Integrator,  ///< an integrator other than symplectic Euler
-    Springs,     ///< the world has springs
-    Joints,      ///< the world has pin joints
-    Gravitation, ///< mutual gravitation (G != 0)
-};
-
 /// Every solver, in the order menus and the command line list them.
 inline constexpr std::array<SolverKind, 3> kAllSolvers{
     SolverKind::PaperImpulse, SolverKind::SequentialImpulse, SolverKind::SoftStep};
 
 std::string_view solverName(SolverKind kind);
-/// A name for each reason: "integrator", "springs", "pin-joints", "gravitation" ("" for None).
-std::string_view standInName(SoftStepStandIn why);
 std::optional<SolverKind> solverFromName(std::string_view name);
 
 struct Contact {

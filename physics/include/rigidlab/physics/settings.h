@@ -18,10 +18,12 @@ struct WorldDef {
     double dt = 0.001;        ///< fixed time step [s]
     IntegratorKind integrator = IntegratorKind::SymplecticEuler;
     /// The soft step by default: it keeps stacks and pyramids standing, and is exact where the
-    /// lab promises (isolated impacts, soft_impacts.cpp); where it cannot run (springs, joints,
-    /// gravitation, another integrator) the sequential-impulse solver stands in for it.
+    /// lab promises (isolated impacts, soft_impacts.cpp), with springs, joints, gravitation
+    /// and every integrator.
     SolverKind solver = SolverKind::SoftStep;
-    int iterations = 10;      ///< velocity iterations of the sequential-impulse solver
+    /// Velocity iterations of the sequential-impulse solver, and the sweeps of the soft step's
+    /// bounce pass (its resting contacts take SoftStepSettings::substeps instead).
+    int iterations = 10;
     double restitution = 0.5; ///< default coefficient of restitution of bodies
     double friction = 0.3;    ///< default friction coefficient of bodies
     double gravitation = 0.0; ///< Newton's constant G between bodies [m^3/(kg s^2)], 0 = off

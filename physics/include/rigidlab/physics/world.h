@@ -51,10 +51,6 @@ public:
     void setDt(double dt);
     void setIntegrator(IntegratorKind kind);
     void setSolver(SolverKind kind) { m_def.solver = kind; }
-    /// Why the sequential-impulse solver stands in for the soft step asked for (step_plan.cpp):
-    /// None, since the soft step runs every world; and the solver that runs, the one asked for.
-    SoftStepStandIn softStepStandIn() const;
-    SolverKind solverRunning() const;
     void setIterations(int n);
     // A change of gravity, restitution or friction wakes every body.
     void setGravity(const Vec2& g);

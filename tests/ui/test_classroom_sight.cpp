@@ -1,0 +1,205 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// What a class sees on a 1024×768 projector, in Czech (the longest texts), in the window, with
+// the Instruments open and in presentation mode, on every step of every shipped lesson,
+// nothing scrolled: the first question's answer box, its Check button and its verdict in
+// sight in the Lesson dock; the verdict as large as the step's text; each plot shown with a
+// data area a class can read and no legend over its data.
+
+#include "classroom_util.h"
+#include "test_main.h"
+
+#include "common/language.h"
+#include "plots/plot_shelf.h"
+
+#include <QRadioButton>
+
+using namespace rigidlab;
+using rigidlab::test::visitShippedSteps;
+using rigidlab::ui::MainWindow;
+using namespace rigidlab::test::classroom;
+
+namespace {
+
+enum class Mode { Window, Instruments, Presentation };
+
+/// `w`'s rectangle in `dock`'s coordinates, and how much of it is drawn (not cut by a scroll
+/// area or the dock's edge), as "x,y WxH (drawn WxH)" for messages.
+QString placeOf(const QWidget& w, const QWidget& dock)
+{
+    const QRect drawn = w.visibleRegion().boundingRect();
+    return QStringLiteral("%1 (drawn %2x%3) in the dock's %4x%5")
+        .arg(rectText(QRect(w.mapTo(&dock, QPoint(0, 0)), w.size())))
+        .arg(drawn.width())
+        .arg(drawn.height())
+        .arg(dock.width())
+        .arg(dock.height());
+}
+
+/// The layout passes a change queues, done (a scroll bar that comes or goes lays the
+/// questions out again at the new width, and so on): what the class sees a moment later.
+void settle()
+{
+    for (int pass = 0; pass < 4; ++pass)
+        QCoreApplication::processEvents();
+}
+
+/// Whole in sight in `dock` as it is now, without scrolling anything.
+bool inSight(const QWidget& w, const QWidget& dock)
+{
+    const QRect r(w.mapTo(&dock, QPoint(0, 0)), w.size());
+    return w.isVisible() && dock.rect().contains(r) &&
+           w.visibleRegion().boundingRect().size() == w.size();
+}
+
+} // namespace
+
+Q_DECLARE_METATYPE(Mode)
+
+class TestClassroomSight : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() { QVERIFY(ui::applyLanguage(QStringLiteral("cs"))); }
+    void cleanupTestCase() { ui::applyLanguage(QStringLiteral("en")); }
+
+    void everyStepInSight_data()
+    {
+        QTest::addColumn<Mode>("mode");
+        QTest::newRow("window") << Mode::Window;
+        QTest::newRow("instruments") << Mode::Instruments;
+        QTest::newRow("presentation") << Mode::Presentation;
+    }
+    void everyStepInSight()
+    {
+        QFETCH(Mode, mode);
+        MainWindow w;
+        if (mode == Mode::Presentation)
+            presentOn(w, kProjector);
+        else
+            showOn(w, kProjector);
+        auto* lessonDock = w.findChild<QDockWidget*>(QStringLiteral("lessonDock"));
+        QVERIFY(lessonDock);
+        int questions = 0;
+        int plots = 0;
+        const bool walked =
+            visitShippedSteps(w, [&](const QString& path, int i, const lessons::LessonStep& step) {
+                if (mode == Mode::Instruments) {
+                    auto* instruments =
+                        w.findChild<QDockWidget*>(QStringLiteral("instrumentsDock"));
+                    QVERIFY(instruments);
+                    instruments->show();
+                    instruments->raise();
+                    QCoreApplication::processEvents();
+                }
+                const QString where =
+                    QStringLiteral("%1 step %2: ").arg(QFileInfo(path).baseName()).arg(i + 1);
+                settle();
+                if (!step.questions.empty()) {
+                    checkFirstQuestion(w, *lessonDock, step.questions.front(), where);
+                    ++questions;
+                }
+                if (QTest::currentTestFailed())
+                    return;
+                plots += checkPlots(w, where);
+            });
+        if (!walked)
+            return;
+        QVERIFY2(questions >= 10, qPrintable(QString::number(questions)));
+        QVERIFY2(plots >= 20, qPrintable(QString::number(plots)));
+    }
+
+private:
+    /// The first question's answer box (a choice's options) and Check in sight; Check pressed
+    /// with no answer, its line in sight too, in a font no smaller than the step's text.
+    static void checkFirstQuestion(MainWindow& w, const QDockWidget& dock,
+                                   const lessons::Question& q, const QString& where)
+    {
+        auto* box = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
+        QVERIFY(box);
+        const QLayout* rows = box->layout();
+        QVERIFY(rows && rows->count() > 0 && rows->itemAt(0)->widget());
+        QWidget* first = rows->itemAt(0)->widget();
+        QList<QWidget*> answer;
+        if (q.isChoice())
+            for (QRadioButton* option : first->findChildren<QRadioButton*>())
+                answer << option;
+        else
+            answer << first->findChild<QLineEdit*>();
+        QPushButton* check = nullptr;
+        for (QPushButton* b : first->findChildren<QPushButton*>())
+            if (b->text() == QCoreApplication::translate("rigidlab::ui::LessonPlayer", "Check"))
+                check = b;
+        QVERIFY2(check && !answer.isEmpty() && answer.front(),
+                 qPrintable(where + QStringLiteral("no answer box or Check")));
+        for (const QWidget* x : answer)
+            QVERIFY2(inSight(*x, dock),
+                     qPrintable(where + QStringLiteral("answer box at ") + placeOf(*x, dock)));
+        QVERIFY2(inSight(*check, dock),
+                 qPrintable(where + QStringLiteral("Check at ") + placeOf(*check, dock)));
+        // Nothing typed or chosen: Check says what to do first, on the verdict's line.
+        check->click();
+        settle();
+        QLabel* verdict = nullptr;
+        for (QLabel* l : first->findChildren<QLabel*>())
+            if (l->isVisible() && l->wordWrap() && !l->buddy() && !l->text().isEmpty() &&
+                l->parentWidget() == first)
+                verdict = l;
+        QVERIFY2(verdict, qPrintable(where + QStringLiteral("no verdict after Check")));
+        QVERIFY2(inSight(*verdict, dock),
+                 qPrintable(where + QStringLiteral("verdict \"%1\" at ").arg(verdict->text()) +
+                            placeOf(*verdict, dock)));
+        const auto* text = w.lessonPlayer().findChild<QTextBrowser*>();
+        QVERIFY(text);
+        const int verdictPx = QFontInfo(verdict->font()).pixelSize();
+        const int textPx = QFontInfo(text->font()).pixelSize();
+        QVERIFY2(verdictPx >= textPx,
+                 qPrintable(
+                     where +
+                     QStringLiteral("verdict %1 px, step text %2 px").arg(verdictPx).arg(textPx)));
+    }
+
+    /// Each plot in sight: its data area at least kLeastDataArea, no legend over it. Returns
+    /// how many were measured.
+    static int checkPlots(MainWindow& w, const QString& where)
+    {
+        int measured = 0;
+        for (ui::PlotWidget* plot : w.findChildren<ui::PlotWidget*>()) {
+            // (The plot's own region is empty: its QCustomPlot, opaque, covers it.)
+            const QRegion region = plot->plot()->visibleRegion();
+            if (!plot->isVisible() || region.isEmpty())
+                continue;
+            // As the next frame draws it.
+            plot->plot()->replot(QCustomPlot::rpImmediateRefresh);
+            const QRect data = plot->plot()->axisRect()->rect();
+            const QString name = plot->objectName().isEmpty() ? plot->title() : plot->objectName();
+            const QRect drawn = region.boundingRect();
+            if (!(data.width() >= ui::kLeastDataArea.width() &&
+                  data.height() >= ui::kLeastDataArea.height() &&
+                  drawn.size() == plot->plot()->size()))
+                QTest::qFail(qPrintable(where + QStringLiteral("plot %1: data %2x%3 of %4x%5 "
+                                                               "(drawn %6x%7), at least %8x%9")
+                                                    .arg(name)
+                                                    .arg(data.width())
+                                                    .arg(data.height())
+                                                    .arg(plot->width())
+                                                    .arg(plot->height())
+                                                    .arg(drawn.width())
+                                                    .arg(drawn.height())
+                                                    .arg(ui::kLeastDataArea.width())
+                                                    .arg(ui::kLeastDataArea.height())),
+                             __FILE__, __LINE__);
+            const QCPLegend* legend = plot->plot()->legend;
+            if (legend->visible() && legend->outerRect().intersects(data))
+                QTest::qFail(qPrintable(where + QStringLiteral("plot %1: legend %2 over data %3")
+                                                    .arg(name, rectText(legend->outerRect()),
+                                                         rectText(data))),
+                             __FILE__, __LINE__);
+            if (QTest::currentTestFailed())
+                return measured;
+            ++measured;
+        }
+        return measured;
+    }
+};
+
+RIGIDLAB_TEST_MAIN(TestClassroomSight)
+#include "test_classroom_sight.moc"
