@@ -4894,7 +4894,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>&amp;Body:</source>
-        <translation>&amp;Těleso:</translation>
+        <translation>Tě&amp;leso:</translation>
     </message>
     <message>
         <source>&amp;Quantity:</source>
@@ -4969,7 +4969,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Zobrazit &amp;rezidua</translation>
     </message>
     <message>
-        <source>&amp;e (restitution)</source>
+        <source>e (res&amp;titution)</source>
         <translation>&amp;e (restituce)</translation>
     </message>
     <message>
@@ -6345,6 +6345,13 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>this build of RigidLab cannot write SVG</source>
         <translation>toto sestavení RigidLabu neumí zapisovat SVG</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::QuestionArea</name>
+    <message>
+        <source>Questions</source>
+        <translation>Otázky</translation>
     </message>
 </context>
 </TS>

@@ -402,7 +402,8 @@ private slots:
                                         ? QApplication::focusWidget()->metaObject()->className()
                                         : "nothing")));
             int presses = 0;
-            QWidget* box = player.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
+            // The questions sit in the Lesson dock below the player's text, not inside the player.
+            QWidget* box = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
             const QList<QLineEdit*> answers =
                 box ? box->findChildren<QLineEdit*>() : QList<QLineEdit*>();
             if (!answers.isEmpty()) {

@@ -141,7 +141,8 @@ void openReadAnswer(MainWindow& w)
     // Answer: go on through the steps (Alt+Right) to one with a question, Tab to its
     // field, type and press Return: a verdict shows.
     const auto answerField = [&]() -> QLineEdit* {
-        QWidget* box = player.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
+        // In the Lesson dock below the player's text, not inside the player.
+        QWidget* box = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
         const auto edits = box ? box->findChildren<QLineEdit*>() : QList<QLineEdit*>();
         return edits.isEmpty() ? nullptr : edits.first();
     };
@@ -317,7 +318,11 @@ private slots:
         auto* compare = w.findChild<QDockWidget*>(QStringLiteral("compareDock"));
         auto* controls = w.findChild<QDockWidget*>(QStringLiteral("controlsDock"));
         QVERIFY(compare && controls && compare->isVisible() && controls->isVisible());
-        const QList<ui::PlotWidget*> plots = compare->findChildren<ui::PlotWidget*>();
+        // The compared plots on show (at 1024x768 they may be tabs: one shows at a time).
+        QList<ui::PlotWidget*> plots;
+        for (ui::PlotWidget* p : compare->findChildren<ui::PlotWidget*>())
+            if (p->isVisible())
+                plots << p;
         QVERIFY(!plots.isEmpty());
         for (const ui::PlotWidget* p : plots)
             QVERIFY2(seen(*p), qPrintable(p->objectName()));

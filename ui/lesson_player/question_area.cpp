@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_player/question_area.h"
 
+#include "common/accessible_names.h"
+
 #include <QDockWidget>
 #include <QEvent>
 #include <QLayout>
@@ -24,6 +26,9 @@ int heightAt(const QWidget& w, int width)
 QuestionArea::QuestionArea(QWidget* questions, QWidget* parent) : QScrollArea(parent)
 {
     setObjectName(QStringLiteral("lessonQuestionArea"));
+    // Named with its scroll bars; the Tab key goes through the questions' fields and buttons
+    // (each scrolled into sight), not to the area around them.
+    nameScrollArea(*this, tr("Questions"));
     setWidgetResizable(true);
     setFrameShape(QFrame::NoFrame);
     // The prompts and verdicts wrap to the column: never a sideways scroll bar.

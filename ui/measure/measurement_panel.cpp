@@ -108,7 +108,7 @@ QWidget* MeasurementPanel::buildFit()
 {
     auto* box = new QGroupBox(tr("Fit to the measurement"), this);
     auto* layout = new QVBoxLayout(box);
-    const QString names[kFitParameters] = {tr("&e (restitution)"), tr("&μ (friction)"),
+    const QString names[kFitParameters] = {tr("e (res&titution)"), tr("&μ (friction)"),
                                            tr("initial v&x"), tr("initial v&y")};
     const QString full[kFitParameters] = {
         tr("Fit the coefficient of restitution e"), tr("Fit the friction coefficient μ"),
