@@ -24,8 +24,6 @@
 #include <QJsonObject>
 #include <QLabel>
 #include <QMenu>
-#include <QScrollArea>
-#include <QScrollBar>
 #include <QSet>
 #include <QSettings>
 #include <QTableWidget>
