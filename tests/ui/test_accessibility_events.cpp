@@ -325,6 +325,25 @@ private slots:
                  qPrintable(count.announced().join(u'|')));
     }
 
+    /// F6 on the scene that has the focus already moves nothing, so a reader would say
+    /// nothing: the scene's name and summary are told instead.
+    void focusSceneKeyOnTheSceneSaysWhereItIs()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(welcome(), true), QString());
+        showOnProjector(w);
+        w.view().setFocus();
+        QTRY_COMPARE(QApplication::focusWidget(), &w.view());
+        EventCount count(w);
+        press(Qt::Key_F6);
+        QCOMPARE(QApplication::focusWidget(), &w.view());
+        QCOMPARE(count.announced().size(), 1);
+        const QString told = count.announced().last();
+        QVERIFY2(told.startsWith(QStringLiteral("Scene: ")) &&
+                     told.contains(QStringLiteral("On stage: ")),
+                 qPrintable(told));
+    }
+
     /// In a lesson: each step is told (its number, title and first sentence) and its text
     /// takes the focus; the verdict after Check is told with the text it shows.
     void lessonChangesAreAnnounced()

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/window_keyboard.h"
 
+#include "common/announcer.h"
 #include "common/focus_ring.h"
 #include "common/shortcuts.h"
 #include "common/shortcuts_guard.h"
@@ -9,6 +10,7 @@
 #include "lesson_player/lesson_player.h"
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
+#include "view/scene_words.h"
 #include "view/world_view.h"
 #include "window/menu_bar_focus.h"
 #include "window/window_keyboard_sight.h"
@@ -50,8 +52,14 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     m_previous = make(tr("Previous lesson step"), "previousStep");
     connect(m_previous, &QAction::triggered, &parts.player, &LessonPlayer::back);
     m_focusScene = make(tr("Focus the scene"), "focusScene");
-    connect(m_focusScene, &QAction::triggered, &parts.view,
-            [&view = parts.view] { view.setFocus(Qt::ShortcutFocusReason); });
+    connect(m_focusScene, &QAction::triggered, &parts.view, [&view = parts.view] {
+        // A reader speaks a focus that moves; on the scene already, F6 says where it is.
+        if (view.hasFocus())
+            announce(view, scene_words::sceneName(view.controller()) + QStringLiteral(". ") +
+                               scene_words::summary(view.controller(), view.selectedBody()));
+        else
+            view.setFocus(Qt::ShortcutFocusReason);
+    });
     m_focusToolbar = make(tr("Focus the toolbar"), "focusToolbar");
     connect(m_focusToolbar, &QAction::triggered, new ToolbarKeys(parts.window, parts.view),
             &ToolbarKeys::enter);
