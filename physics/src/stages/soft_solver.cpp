@@ -67,13 +67,13 @@ void softContactCoefficients(const SoftStepSettings& settings, double h, Softnes
 
 void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                        const std::vector<Vec2>& acceleration,
-                       const std::vector<double>& angularAcceleration, double h,
+                       const std::vector<double>& angularAcceleration, const Substeps& substeps,
                        const Softness (&softness)[2], const SoftStepSettings& settings, bool plain)
 {
     m_contacts = &contacts;
     m_settings = settings;
     m_energyValid = false;
-    m_substep = h;
+    m_substeps = substeps;
     // The plain path solves one contact per block (the second lane of the two-lane kernel
     // empty), in the colours' order: the order the wide kernels solve them in, so the same
     // bits. The fast path fills every lane, four where the processor has AVX2.
@@ -142,7 +142,7 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
     k.ny[l] = n.y();
     k.friction[l] = ct.friction;
 
-    const double substeps = m_settings.substeps;
+    const double substeps = m_substeps.count;
     for (int i = 0; i < ct.manifold.pointCount; ++i) {
         const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
         soft::PointLanes& p = k.p[i];
@@ -178,7 +178,7 @@ void SoftSolver::integrateVelocities()
 {
     // The energy sums of the new velocities in the same pass (the same arithmetic, in the
     // same order, as sumEnergy()): soft_step.cpp asks for them next.
-    const double h = m_substep;
+    const double h = m_substeps.h;
     double e = 0.0, p = 0.0;
     for (size_t k = 0; k < m_moving.size(); ++k) {
         soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
@@ -216,7 +216,7 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
     // look-ahead t is as good as 0, so that no gap asks anything of the velocities. 1e-200 s
     // keeps s / t finite for any gap and any mass.
     constexpr double kNoLookAhead = 1e200; // [1/s]
-    m_pass.inverseSubstep = lookAhead ? 1.0 / m_substep : kNoLookAhead;
+    m_pass.inverseSubstep = lookAhead ? m_substeps.invH : kNoLookAhead;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
     m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
@@ -226,7 +226,7 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
 
 void SoftSolver::integratePositions()
 {
-    const double h = m_substep;
+    const double h = m_substeps.h;
     const bool drifts = !m_drift.empty();
     auto move = [&](int id) {
         const auto i = static_cast<size_t>(id);
@@ -297,7 +297,7 @@ void SoftSolver::end(std::vector<Body>& bodies)
         write(id);
     for (int id : m_kinematic)
         write(id);
-    const double substeps = m_settings.substeps;
+    const double substeps = m_substeps.count;
     for (const Slot& slot : m_slots) {
         Contact& ct = (*m_contacts)[static_cast<size_t>(slot.contact)];
         const soft::Block& k = m_blocks[static_cast<size_t>(slot.block)];

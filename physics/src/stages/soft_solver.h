@@ -23,15 +23,22 @@ using soft::Softness;
 /// against a body that does not move [1] (twice the frequency).
 void softContactCoefficients(const SoftStepSettings& settings, double h, Softness (&out)[2]);
 
+/// The step's substeps, as the step context has them (StepContext::substeps, h, invH).
+struct Substeps {
+    int count = 1;   ///< substeps per step
+    double h = 0;    ///< the substep [s]
+    double invH = 0; ///< 1 / h [1/s]
+};
+
 class SoftSolver {
 public:
     /// Takes this step's contacts and bodies, before anything moved. acceleration and
     /// angularAcceleration: each body's applied load over its mass, constant over the step.
-    /// h: the substep [s]; softness: the contact's coefficients at it
-    /// (softContactCoefficients). plain: colour anew and solve one contact per block.
+    /// substeps: the step's, from its context; softness: the contact's coefficients at the
+    /// substep (softContactCoefficients). plain: colour anew and solve one contact per block.
     void begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                const std::vector<Vec2>& acceleration,
-               const std::vector<double>& angularAcceleration, double h,
+               const std::vector<double>& angularAcceleration, const Substeps& substeps,
                const Softness (&softness)[2], const SoftStepSettings& settings, bool plain);
 
     /// The smooth motion's share of each body's displacement that the velocities do not carry
@@ -120,7 +127,7 @@ private:
 
     std::vector<Contact>* m_contacts = nullptr;
     SoftStepSettings m_settings;
-    double m_substep = 0; ///< [s]
+    Substeps m_substeps;
     soft::Kernel m_kernel{};
     int m_width = 1;      ///< lanes filled per block: the kernel's, 1 on the plain path
     bool m_plain = false; ///< the plain path: no colouring kept from step to step

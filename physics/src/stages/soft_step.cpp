@@ -416,8 +416,9 @@ void softStep(StepContext& ctx)
     {
         StageTimer timer(ctx.profile, Stage::ContactSolve);
         loss += softCollisions(ctx, ctx.restitutionThreshold);
-        solver.begin(ctx.contacts, ctx.bodies, s.acceleration, s.angularAcceleration, ctx.h,
-                     ctx.softness, settings, ctx.plain);
+        solver.begin(ctx.contacts, ctx.bodies, s.acceleration, s.angularAcceleration,
+                     {.count = ctx.substeps, .h = ctx.h, .invH = ctx.invH}, ctx.softness, settings,
+                     ctx.plain);
         if (ctx.plan.smooth)
             solver.setDrift(s.drift, s.angularDrift);
     }
