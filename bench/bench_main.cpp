@@ -45,6 +45,8 @@ makeEngines([[maybe_unused]] std::vector<std::string>& missing)
     bench::RigidLabBenchSettings soft;
     soft.solver = physics::SolverKind::SoftStep;
     engines.push_back(bench::makeRigidLabBenchEngine(soft));
+    soft.singlePrecision = true; // opt-in, measured beside the default
+    engines.push_back(bench::makeRigidLabBenchEngine(soft));
 #ifdef RIGIDLAB_BENCH_BOX2D_V3
     engines.push_back(bench::makeBox2dV3Engine_sse2());
     engines.push_back(bench::makeBox2dV3Engine_avx2());

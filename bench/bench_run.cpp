@@ -174,6 +174,11 @@ std::string softStepTargets(const std::vector<BenchResult>& results)
         if (!soft)
             continue;
         out += "  " + scene + ":";
+        // The opt-in single-precision passes against the same bounds, for comparison only.
+        if (const BenchResult* single = find("RigidLab SS f32", scene))
+            for (const char* build : {"SSE2", "AVX2"})
+                if (const BenchResult* v3 = find(std::string("Box2D v3 ") + build, scene))
+                    out += format(" (f32: %.2fx ", single->msPerStep / v3->msPerStep) + build + ")";
         // Box2D v3 as it builds by default (SSE2) and with its AVX2 option: the soft step, in
         // double precision, no slower than the first and within 1.25 times the second.
         for (const auto& [build, bound] : {std::pair("SSE2", 1.0), std::pair("AVX2", 1.25)}) {

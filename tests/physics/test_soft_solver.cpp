@@ -121,17 +121,23 @@ void TestSoftSolver::stackStands()
 // 0.5 m sideways or turned more than 0.2 rad). The sequential-impulse solver's top sinks
 // 0.13-0.23 m at base 40. No box creeps more than 3 cm sideways (with the contact's damping
 // ratio at 10 the middle boxes of base 40 crept up to 0.14 m; at 2 up to 1.4 cm).
+// The same with the contact passes in single precision (SoftStepSettings::singlePrecision).
 void TestSoftSolver::pyramidStands_data()
 {
     QTest::addColumn<int>("base");
-    QTest::newRow("base 20") << 20;
-    QTest::newRow("base 40") << 40;
+    QTest::addColumn<bool>("single");
+    QTest::newRow("base 20") << 20 << false;
+    QTest::newRow("base 40") << 40 << false;
+    QTest::newRow("base 20, single precision") << 20 << true;
+    QTest::newRow("base 40, single precision") << 40 << true;
 }
 
 void TestSoftSolver::pyramidStands()
 {
     QFETCH(int, base);
+    QFETCH(bool, single);
     World world(softDef(1.0 / 60.0));
+    world.contactSettings().soft.singlePrecision = single;
     const BodyId top = buildPyramid(world, base);
     std::vector<Vec2> start;
     for (const Body& b : world.bodies())
@@ -408,12 +414,15 @@ void TestSoftSolver::runsEveryWorld()
 }
 
 // Two identical worlds give the same bits, and so does a copy made halfway; the two-lane and
-// the four-lane kernels give the same bits too (each lane is solved alone).
+// the four-lane kernels give the same bits too (each lane is solved alone), and so do the
+// four-lane and eight-lane kernels of single precision.
 void TestSoftSolver::deterministic()
 {
-    {
+    for (const bool single : {false, true}) {
         World wide(softDef(1.0 / 60.0)), narrow(softDef(1.0 / 60.0));
         narrow.contactSettings().soft.wideKernel = false;
+        wide.contactSettings().soft.singlePrecision = single;
+        narrow.contactSettings().soft.singlePrecision = single;
         buildPyramid(wide, 12);
         buildPyramid(narrow, 12);
         for (int i = 0; i < 120; ++i) {

@@ -411,7 +411,9 @@ void softStep(StepContext& ctx)
         dragPower = softForces(ctx);
 
     SoftSolver& solver = s.softSolver;
-    const SoftStepSettings& settings = ctx.contactSettings.soft;
+    const bool pinned = touchedJoints(ctx);
+    SoftStepSettings settings = ctx.contactSettings.soft;
+    settings.singlePrecision = settings.singlePrecision && !pinned; // the pins are in double
     double loss = 0.0;
     {
         StageTimer timer(ctx.profile, Stage::ContactSolve);
@@ -422,7 +424,6 @@ void softStep(StepContext& ctx)
         if (ctx.plan.smooth)
             solver.setDrift(s.drift, s.angularDrift);
     }
-    const bool pinned = touchedJoints(ctx);
     if (pinned)
         solver.setPins(s.touchedJoints, ctx.bodies);
     loss += softSubsteps(ctx, solver.constraintCount() > 0 || pinned);
