@@ -108,7 +108,7 @@ int main(int argc, char** argv)
         const bench::BenchScene scene = *bench::makeBenchScene(name);
         for (auto& engine : engines) {
             results.push_back(bench::runBench(*engine, scene, options));
-            std::fprintf(stderr, "  %-13s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
+            std::fprintf(stderr, "  %-15s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
                          name.c_str(), results.back().msPerStep);
         }
     }
