@@ -2757,6 +2757,10 @@ n = (%4; %5)</translation>
         <source>PDF document (*.pdf)</source>
         <translation>Dokument PDF (*.pdf)</translation>
     </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::CollisionPanel</name>
@@ -5290,6 +5294,13 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::QuestionArea</name>
+    <message>
+        <source>Questions</source>
+        <translation>Otázky</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::QuestionEditor</name>
     <message>
         <source>height of a bounce&apos;s top</source>
@@ -6345,13 +6356,6 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>this build of RigidLab cannot write SVG</source>
         <translation>toto sestavení RigidLabu neumí zapisovat SVG</translation>
-    </message>
-</context>
-<context>
-    <name>rigidlab::ui::QuestionArea</name>
-    <message>
-        <source>Questions</source>
-        <translation>Otázky</translation>
     </message>
 </context>
 </TS>
