@@ -5028,6 +5028,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
             <numerusform>Určuji… zatím %n běhů modelu</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Residuals</source>
+        <translation>Rezidua</translation>
+    </message>
+    <message>
+        <source>Comparison and fit</source>
+        <translation>Porovnání a&#xa0;určení z&#xa0;měření</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementSession</name>
