@@ -35,7 +35,7 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
         // The same contacts between the same bodies: the same colours, blocks and lanes as
         // colouring them again would give; only what the lanes hold has changed.
         for (const Slot& slot : m_slots)
-            fillLane(contacts[static_cast<size_t>(slot.contact)], bodies, slot.block, slot.lane);
+            fillLane(contacts[static_cast<size_t>(slot.contact)], slot.block, slot.lane);
         return;
     }
 
@@ -126,7 +126,7 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
             slot.block = overflowBlock++;
             slot.lane = 0;
         }
-        fillLane(contacts[static_cast<size_t>(ci)], bodies, slot.block, slot.lane);
+        fillLane(contacts[static_cast<size_t>(ci)], slot.block, slot.lane);
         m_slots.push_back(slot);
     }
 }

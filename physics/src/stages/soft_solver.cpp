@@ -156,24 +156,24 @@ void SoftSolver::resetBlocks(int count, int spare)
         reset(m_blocks);
 }
 
-void SoftSolver::fillLane(const Contact& ct, const std::vector<Body>& bodies, int block, int lane)
+void SoftSolver::fillLane(const Contact& ct, int block, int lane)
 {
     if (m_single)
-        fillLaneOf(ct, bodies, m_singleBlocks[static_cast<size_t>(block)], lane);
+        fillLaneOf(ct, m_singleBlocks[static_cast<size_t>(block)], lane);
     else
-        fillLaneOf(ct, bodies, m_blocks[static_cast<size_t>(block)], lane);
+        fillLaneOf(ct, m_blocks[static_cast<size_t>(block)], lane);
 }
 
-template <typename BlockType>
-void SoftSolver::fillLaneOf(const Contact& ct, const std::vector<Body>& bodies, BlockType& k,
-                            int lane)
+template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, BlockType& k, int lane)
 {
-    const Body& a = bodies[static_cast<size_t>(ct.a)];
-    const Body& b = bodies[static_cast<size_t>(ct.b)];
-    // The inverse masses are the bodies' own (BodyState::invMass, set in begin()).
-    const double mA = m_state[static_cast<size_t>(ct.a)].invMass;
-    const double mB = m_state[static_cast<size_t>(ct.b)].invMass;
-    const double iA = a.isActive() ? a.invInertia : 0.0, iB = b.isActive() ? b.invInertia : 0.0;
+    // The bodies as begin() took them (inverse masses and inertias, 0 for a body the step does
+    // not move; centres of mass), without reaching into the bodies again: the lanes are filled
+    // in the colours' order, and the bodies' large records would be read out of order.
+    const auto ia = static_cast<size_t>(ct.a), ib = static_cast<size_t>(ct.b);
+    const double mA = m_state[ia].invMass, mB = m_state[ib].invMass;
+    const double iA = m_invInertia[ia], iB = m_invInertia[ib];
+    const Vec2& centreA = m_position[ia];
+    const Vec2& centreB = m_position[ib];
     const auto l = static_cast<size_t>(lane);
     k.a[l] = ct.a;
     k.b[l] = ct.b;
@@ -189,7 +189,7 @@ void SoftSolver::fillLaneOf(const Contact& ct, const std::vector<Body>& bodies, 
         const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
         auto& p = k.p[i];
         // Lever arms from the centres of mass where the narrow phase found the contact.
-        const Vec2 rA = cp.point - a.position, rB = cp.point - b.position;
+        const Vec2 rA = cp.point - centreA, rB = cp.point - centreB;
         p.rAx[l] = rA.x();
         p.rAy[l] = rA.y();
         p.rBx[l] = rB.x();

@@ -97,13 +97,12 @@ private:
     /// the blocks only need their lanes filled again.
     bool sameColouring(const std::vector<Contact>& contacts, const std::vector<Body>& bodies) const;
     /// Fills lane `lane` of block `block` (of m_blocks, or m_singleBlocks when m_single) with
-    /// the contact ct.
-    void fillLane(const Contact& ct, const std::vector<Body>& bodies, int block, int lane);
+    /// the contact ct, from the bodies as begin() took them.
+    void fillLane(const Contact& ct, int block, int lane);
     /// Empty blocks for the colouring, every lane on the spare body.
     void resetBlocks(int count, int spare);
     // The passes over the bodies and blocks of either precision (soft_solver.cpp).
-    template <typename BlockType>
-    void fillLaneOf(const Contact& ct, const std::vector<Body>& bodies, BlockType& k, int lane);
+    template <typename BlockType> void fillLaneOf(const Contact& ct, BlockType& k, int lane);
     template <typename State> void integrateVelocitiesOf(std::vector<State>& state);
     template <typename State> void integratePositionsOf(std::vector<State>& state);
     template <typename State> void sumEnergyOf(const std::vector<State>& state) const;
