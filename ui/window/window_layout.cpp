@@ -22,8 +22,11 @@
 #include <QLayout>
 #include <QMainWindow>
 #include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QTabBar>
+#include <QTableWidget>
 #include <QTimer>
 
 #include <qcustomplot.h>
@@ -207,7 +210,30 @@ void WindowLayout::fitSideColumns()
                 }
         shareColumnHeight();
         fitPlotHeight();
+        scrollTablesToData();
     });
+}
+
+void WindowLayout::scrollTablesToData()
+{
+    // A table panel's description above its table may fill a short dock (presentation mode's
+    // type): the dock scrolls so that as much of the table as fits is in sight, its head
+    // first, and the description only as far as room is left.
+    for (const char* name : {"sat", "bounces", "collision"}) {
+        QDockWidget* dock = m_docks.value(QLatin1String(name));
+        auto* scroll = dock ? qobject_cast<QScrollArea*>(dock->widget()) : nullptr;
+        if (!scroll || dock->isHidden() || !scroll->widget())
+            continue;
+        const auto* table = scroll->widget()->findChild<QTableWidget*>();
+        if (!table || !table->isVisible())
+            continue;
+        const int top = table->mapTo(scroll->widget(), QPoint(0, 0)).y();
+        const int bottom = top + table->height();
+        const int needed = std::max(0, bottom - scroll->viewport()->height());
+        QScrollBar* bar = scroll->verticalScrollBar();
+        if (bar->value() < std::min(top, needed))
+            bar->setValue(std::min(top, needed));
+    }
 }
 
 void WindowLayout::fitPlotHeight()

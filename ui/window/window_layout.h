@@ -105,6 +105,8 @@ private:
     void shareColumnHeight();
     /// The plots under the world tall enough for a readable data area (a small screen).
     void fitPlotHeight();
+    /// Each table panel shown scrolled to its table, not to the description above it.
+    void scrollTablesToData();
     /// The plots' least heights back to the plain one (until fitPlotHeight() runs again).
     void relaxPlotHeights();
     /// fitPlotHeight() once the layout has settled (several asks, one run).
