@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Lesson 7, "Is the lab right?", agrees with itself: the Measurement panel is shown in every
 // step whose text sends the student to it; the bounce times imported after the video's
-// heights are added beside them, each named by its file; a question judges the scene as it is
-// now (after a fitted e was applied to it, not the e the lesson file gives); a student who
-// follows a hint exactly, rounded as a person writes it, is judged right.
+// heights are added beside them, each named by its file, and a second file of the heights is
+// plotted beside the first (the last one compared and fitted, and said to be); a question judges
+// the scene as it is now (after a fitted e was applied to it, not the e the lesson file gives); a
+// student who follows a hint exactly, rounded as a person writes it, is judged right.
 
 #include "common/language.h"
 #include "editor/scene_document.h"
@@ -13,6 +14,8 @@
 #include "plots/plot_widget.h"
 #include "window/main_window.h"
 
+#include <qcustomplot.h>
+
 #include "format/data_dirs.h"
 #include "format/lesson.h"
 #include "run/measurements.h"
@@ -20,6 +23,7 @@
 #include "near.h"
 #include "test_main.h"
 
+#include <QComboBox>
 #include <QDockWidget>
 #include <QLabel>
 #include <QMessageBox>
@@ -67,6 +71,7 @@ private slots:
     void measurementPanelWhereTheTextUsesIt_data();
     void measurementPanelWhereTheTextUsesIt();
     void secondImportIsAddedBesideTheFirst();
+    void secondFileOfTheSameQuantityIsShownBeside();
     void questionJudgesTheSceneAsItIsNow();
     void hintsFollowedExactlyAreRight();
 };
@@ -143,6 +148,53 @@ void TestLabVsMeasurement::secondImportIsAddedBesideTheFirst()
     QVERIFY2(lines[2].startsWith(QStringLiteral("ball_phyphox.csv")) &&
                  lines[2].contains(QStringLiteral("position y")),
              qPrintable(lines[2]));
+}
+
+void TestLabVsMeasurement::secondFileOfTheSameQuantityIsShownBeside()
+{
+    MainWindow w;
+    w.setUnsavedAsker([] { return int(QMessageBox::Discard); });
+    QCOMPARE(w.openLesson(lessonFile(), true), QString());
+    MeasurementSession& session = w.measurement();
+    QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
+    const measure::Series tracker = *session.measurement().find(Quantity::Y);
+    QCOMPARE(session.load(sample("ball_phyphox.csv")), QString());
+    const measure::Series phone = *session.measurement().find(Quantity::Y);
+    QVERIFY(tracker.value != phone.value);
+    const PlotWidget& plot = *session.panel()->comparisonPlot();
+    QCOMPARE(session.panel()->quantity(), Quantity::Y);
+    // The heights of both files on the plot, each named by its file.
+    int trackerSeries = -1;
+    for (int i = 0; i < plot.seriesCount(); ++i)
+        if (plot.seriesLegend(i) == QLatin1String("ball_tracker.csv"))
+            trackerSeries = i;
+    QVERIFY2(trackerSeries > MeasurementPanel::kSimulated,
+             qPrintable(QString::number(trackerSeries)));
+    const auto shown = plot.points(trackerSeries);
+    QCOMPARE(shown.size(), tracker.t.size());
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        RL_VERIFY_NEAR(shown[i].x(), tracker.t[i], 0, 0);
+        RL_VERIFY_NEAR(shown[i].y(), tracker.value[i], 0, 0);
+    }
+    QVERIFY(plot.graph(trackerSeries)->scatterStyle().shape() !=
+            plot.graph(MeasurementPanel::kMeasured)->scatterStyle().shape());
+    // The last file is the one compared: its points, its residuals, the fit's, and it says so.
+    QCOMPARE(static_cast<std::size_t>(plot.pointCount(MeasurementPanel::kMeasured)),
+             phone.t.size());
+    QCOMPARE(plot.seriesLegend(MeasurementPanel::kMeasured),
+             QStringLiteral("ball_phyphox.csv (fit, residuals)"));
+    QCOMPARE(session.residuals().size(), phone.t.size());
+    const measure::FitResult& fit = session.fit();
+    QVERIFY2(fit.ok, qPrintable(fit.error));
+    QCOMPARE(static_cast<std::size_t>(fit.points), phone.t.size());
+    QVERIFY2(session.panel()->fitText().contains(QStringLiteral("ball_phyphox.csv")),
+             qPrintable(session.panel()->fitText()));
+    // x is in the video only: no other file beside it, the points just "measured".
+    auto* quantity = session.panel()->findChildren<QComboBox*>().at(1);
+    quantity->setCurrentIndex(quantity->findData(static_cast<int>(Quantity::X)));
+    QCOMPARE(plot.seriesLegend(MeasurementPanel::kMeasured), QStringLiteral("measured"));
+    QCOMPARE(plot.pointCount(trackerSeries), 0);
+    QVERIFY(!plot.plot()->legend->hasItemWithPlottable(plot.graph(trackerSeries)));
 }
 
 void TestLabVsMeasurement::questionJudgesTheSceneAsItIsNow()
