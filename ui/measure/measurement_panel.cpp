@@ -332,6 +332,7 @@ void MeasurementPanel::clearPlots()
     m_residual->clear();
     for (const int series : m_otherSeries)
         m_comparison->graph(series)->removeFromLegend();
+    m_othersShown = 0;
     m_comparison->setSeriesLegend(kMeasured, tr("measured"));
 }
 
@@ -368,6 +369,10 @@ void MeasurementPanel::showOtherFiles(const QString& comparedFile,
     m_comparison->setSeriesLegend(
         kMeasured, others.empty() ? tr("measured") : tr("%1 (fit, residuals)").arg(comparedFile));
     m_comparison->drain();
+    if (others.size() != m_othersShown) {
+        m_othersShown = others.size();
+        emit legendChanged();
+    }
 }
 
 std::vector<PlotWidget*> MeasurementPanel::plotsShown() const

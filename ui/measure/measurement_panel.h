@@ -102,6 +102,9 @@ public:
 
 signals:
     void choiceChanged();
+    /// The comparison's legend names other series (another file's): it may take another row
+    /// from the data area.
+    void legendChanged();
     void fitRequested();
     void cancelFitRequested();
     void applyRequested();
@@ -129,6 +132,7 @@ private:
     PlotWidget* m_comparison = nullptr;
     PlotWidget* m_residual = nullptr;
     std::vector<int> m_otherSeries; ///< the other files' series in m_comparison, in order
+    std::size_t m_othersShown = 0;  ///< how many of them the legend names
     QCheckBox* m_showResiduals = nullptr;
     QLabel* m_message = nullptr;
     QGroupBox* m_fitBox = nullptr;

@@ -74,6 +74,8 @@ MainWindow::MainWindow(QWidget* parent)
     panels.measurement = m_measurement->panel();
     m_layout = new WindowLayout(*this, panels);
     m_measurement->setDock(m_layout->dock(QStringLiteral("measurement")));
+    connect(m_measurement->panel(), &MeasurementPanel::legendChanged, m_layout,
+            &WindowLayout::fitPlotHeightSoon);
     m_status = new StatusLine(*this, *m_controller, *m_view);
     m_documents = new WindowDocuments(*this, *m_document);
     buildEditor();

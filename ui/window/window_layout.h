@@ -73,6 +73,9 @@ public:
     bool compact() const { return m_compact; }
     /// Side columns no wider than their share of the window's width: the world keeps half.
     void fitSideColumns();
+    /// The plots' least heights again once the layout has settled (several asks, one run):
+    /// a plot's legend took another row, say.
+    void fitPlotHeightSoon();
     void save(QSettings& settings) const;
     void restore(const QSettings& settings);
 
@@ -109,8 +112,6 @@ private:
     void scrollTablesToData();
     /// The plots' least heights back to the plain one (until fitPlotHeight() runs again).
     void relaxPlotHeights();
-    /// fitPlotHeight() once the layout has settled (several asks, one run).
-    void fitPlotHeightSoon();
     /// A plot resized: fitPlotHeight() again, once the layout has settled.
     bool eventFilter(QObject* watched, QEvent* event) override;
     /// Fonts set on widgets of their own grow with presentation mode, and come back after.
