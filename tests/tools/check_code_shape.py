@@ -8,7 +8,8 @@ production code outside the languages table (lessons/format/languages.h and .cpp
 path reads that table; no stage of a step (physics/src/stages, physics/src/fast) reads the
 world's settings (`ctx.def`): it reads the step context's values, computed once; and the
 readers of the run-time settings (SETTING_READERS) name no setting: they walk the settings
-table.
+table; and each rule of the engine written once (ONE_HOME: the bounce -e vn, drag's power,
+the state gather, the material that falls back to the world's) appears only in its home file.
 
 Functions are found by Universal Ctags (their first and last line); a file is every tracked
 .cpp/.h under physics/, lessons/, ui/, app/, bench/ and tests/. Exit 0 when everything holds;
@@ -199,6 +200,34 @@ def settings_read_in_stages(root, files):
     return out
 
 
+# A physics rule, the one file that writes it, and what writing it again looks like.
+ONE_HOME = [
+    ("the bounce -e vn", "physics/src/stages/restitution.h",
+     re.compile(r"-\s*(?:\w+\s*(?:\.|->)\s*)*(?:restitution|e)\s*\*")),
+    ("drag's power", "physics/src/stages/dynamics.h",
+     re.compile(r"\bdrag\s*\*\s*\(\s*\w+\s*(?:\.|->)\s*mass\b")),
+    ("the gather of the ODE state", "physics/src/stages/dynamics.h",
+     re.compile(r"segment<3>\(\s*\w+\s*\)\s*<<")),
+    ("the world's material for a body without its own", "physics/include/rigidlab/physics/body.h",
+     re.compile(r"\b(?:restitution|friction)\s*>=\s*0(?:\.0)?\s*\?")),
+]
+
+
+def rules_restated(root, files):
+    """(path, line number, rule) of each physics rule written outside its home (ONE_HOME)."""
+    out = []
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if rel.split("/")[0] not in PRODUCTION:
+            continue
+        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            code = line.split("//")[0]
+            for rule, home, pattern in ONE_HOME:
+                if rel != home and pattern.search(code):
+                    out.append((rel, number, rule, home))
+    return out
+
+
 def main():
     root = Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
     files = sources(root)
@@ -226,6 +255,8 @@ def main():
     for path, number in settings_read_in_stages(root, files):
         problems.append(f"{path}:{number}: a stage reads the world's settings; take the value "
                         f"from the step context (step_context.h), computed once in World::context()")
+    for path, number, rule, home in rules_restated(root, files):
+        problems.append(f"{path}:{number}: {rule} written again; call the function in {home}")
     for p in problems:
         print(p)
     print(f"{len(files)} files read, {len(problems)} findings")
