@@ -13,6 +13,7 @@
 
 #include "panels/error_panel.h"
 #include "plots/plot_shelf.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "window/dock_tabs.h"
 #include "window/window_names.h"
@@ -101,8 +102,9 @@ void WindowLayout::arrangeDocks(const QSize& screen)
 {
     m_compact = screen.width() < kRoomy.width() || screen.height() < kRoomy.height();
     QList<QDockWidget*> plots;
-    for (const PlotNames& plot : kPlotNames)
-        plots << m_docks.value(QLatin1String(plot.name));
+    for (const PlotRow& row : kPlotRows) // the window's own plots, in the table's order
+        if (row.inWindow())
+            plots << m_docks.value(plotName(row));
     plots << m_compareDock;
     // An imported measurement is plotted: its dock shares the plots' place (a lesson step
     // that shows it beside a table keeps the table in sight).

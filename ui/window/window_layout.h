@@ -41,7 +41,7 @@ public:
         QWidget* lessonNavigation = nullptr; ///< below the lesson, outside its scrolling
         QWidget* controls = nullptr;
         QWidget* inspector = nullptr;
-        std::array<PlotWidget*, 3> plots{}; ///< in the order of kPlotNames
+        QList<PlotWidget*> plots; ///< each under its object name, its row's (plot_table.h)
         QWidget* sat = nullptr;
         QWidget* bounces = nullptr;
         QWidget* collision = nullptr;
