@@ -78,7 +78,7 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
             Qt::BottomDockWidgetArea)
         ->hide();
     addDock(panelTitle(5, false), QStringLiteral("measurement"), panels.measurement,
-            Qt::RightDockWidgetArea)
+            Qt::RightDockWidgetArea, QString(), Scrolling::Own)
         ->hide();
     m_compareDock = new QDockWidget(tr("Side by side"), &window);
     m_compareDock->setObjectName(QStringLiteral("compareDock"));
@@ -89,20 +89,20 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
 }
 
 QDockWidget* WindowLayout::addDock(const QString& title, const QString& name, QWidget* w, int area,
-                                   const QString& full)
+                                   const QString& full, Scrolling scrolling)
 {
     auto* dock = new QDockWidget(title, &m_window);
     dock->setObjectName(name + QStringLiteral("Dock"));
     setFullTitle(*dock, full.isEmpty() ? title : full);
-    if (qobject_cast<PlotWidget*>(w)) {
+    // Lists as narrow as a short name: a long entry ("Dormand-Prince 5(4), adaptive") must not
+    // widen the side column on a small projector.
+    for (QComboBox* box : w->findChildren<QComboBox*>()) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(8);
+    }
+    if (qobject_cast<PlotWidget*>(w) || scrolling == Scrolling::Own) {
         dock->setWidget(w);
     } else {
-        // Lists as narrow as a short name: a long entry ("Dormand-Prince 5(4), adaptive")
-        // must not widen the side column on a small projector.
-        for (QComboBox* box : w->findChildren<QComboBox*>()) {
-            box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-            box->setMinimumContentsLength(8);
-        }
         // A panel taller or wider than its dock scrolls instead of being cut.
         auto* scroll = new QScrollArea(dock);
         scroll->setWidgetResizable(true);
@@ -114,6 +114,12 @@ QDockWidget* WindowLayout::addDock(const QString& title, const QString& name, QW
     m_window.addDockWidget(static_cast<Qt::DockWidgetArea>(area), dock);
     m_docks.insert(name, dock);
     keepFocusInSight(*dock);
+    // Its plots, first seen when its tab comes to the front (a measurement imported), as
+    // tall as every plot shown.
+    connect(dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible)
+            fitPlotHeightSoon();
+    });
     showWhenAsked(*dock);
     return dock;
 }

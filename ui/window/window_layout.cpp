@@ -243,16 +243,21 @@ void WindowLayout::relaxPlotHeights()
         plot->setMinimumHeight(std::min(plot->minimumHeight(), kPlotMinimumHeight));
 }
 
+void WindowLayout::fitPlotHeightSoon()
+{
+    if (m_plotFitPending)
+        return;
+    m_plotFitPending = true;
+    QTimer::singleShot(0, this, [this] {
+        m_plotFitPending = false;
+        fitPlotHeight();
+    });
+}
+
 bool WindowLayout::eventFilter(QObject* watched, QEvent* event)
 {
-    if (event->type() == QEvent::Resize && qobject_cast<PlotWidget*>(watched) &&
-        !m_plotFitPending) {
-        m_plotFitPending = true;
-        QTimer::singleShot(0, this, [this] {
-            m_plotFitPending = false;
-            fitPlotHeight();
-        });
-    }
+    if (event->type() == QEvent::Resize && qobject_cast<PlotWidget*>(watched))
+        fitPlotHeightSoon();
     return QObject::eventFilter(watched, event);
 }
 

@@ -46,7 +46,7 @@ public:
         QWidget* bounces = nullptr;
         QWidget* collision = nullptr;
         QWidget* error = nullptr;
-        QWidget* measurement = nullptr; ///< an imported measurement and its fit
+        QWidget* measurement = nullptr; ///< an imported measurement and its fit; scrolls itself
     };
     /// Makes the docks on `window`.
     WindowLayout(QMainWindow& window, const Panels& panels);
@@ -90,8 +90,11 @@ signals:
     void presentationChanged(bool on);
 
 private:
+    /// Who scrolls a panel taller or wider than its dock: a scroll area the dock puts it in,
+    /// or the panel itself (one that keeps its plots in sight and scrolls only the rest).
+    enum class Scrolling { InDock, Own };
     QDockWidget* addDock(const QString& title, const QString& name, QWidget* w, int area,
-                         const QString& full = QString());
+                         const QString& full = QString(), Scrolling scrolling = Scrolling::InDock);
     void buildLessonDock(const Panels& panels);
     /// Stacked plots on a roomy `screen`, tabbed on a small one.
     void arrangeDocks(const QSize& screen);
@@ -104,6 +107,8 @@ private:
     void fitPlotHeight();
     /// The plots' least heights back to the plain one (until fitPlotHeight() runs again).
     void relaxPlotHeights();
+    /// fitPlotHeight() once the layout has settled (several asks, one run).
+    void fitPlotHeightSoon();
     /// A plot resized: fitPlotHeight() again, once the layout has settled.
     bool eventFilter(QObject* watched, QEvent* event) override;
     /// Fonts set on widgets of their own grow with presentation mode, and come back after.

@@ -411,17 +411,19 @@ void softStep(StepContext& ctx)
         dragPower = softForces(ctx);
 
     SoftSolver& solver = s.softSolver;
-    const SoftStepSettings& settings = ctx.contactSettings.soft;
+    const bool pinned = touchedJoints(ctx);
+    SoftStepSettings settings = ctx.contactSettings.soft;
+    settings.singlePrecision = settings.singlePrecision && !pinned; // the pins are in double
     double loss = 0.0;
     {
         StageTimer timer(ctx.profile, Stage::ContactSolve);
         loss += softCollisions(ctx, ctx.restitutionThreshold);
-        solver.begin(ctx.contacts, ctx.bodies, s.acceleration, s.angularAcceleration, ctx.h,
-                     ctx.softness, settings, ctx.plain);
+        solver.begin(ctx.contacts, ctx.bodies, s.acceleration, s.angularAcceleration,
+                     {.count = ctx.substeps, .h = ctx.h, .invH = ctx.invH}, ctx.softness, settings,
+                     ctx.plain);
         if (ctx.plan.smooth)
             solver.setDrift(s.drift, s.angularDrift);
     }
-    const bool pinned = touchedJoints(ctx);
     if (pinned)
         solver.setPins(s.touchedJoints, ctx.bodies);
     loss += softSubsteps(ctx, solver.constraintCount() > 0 || pinned);
