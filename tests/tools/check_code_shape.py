@@ -10,7 +10,12 @@ world's settings (`ctx.def`): it reads the step context's values, computed once;
 readers of the run-time settings (SETTING_READERS) name no setting: they walk the settings
 table; each rule of the engine written once (ONE_HOME: the bounce -e vn, drag's power,
 the state gather, the material that falls back to the world's) appears only in its home file;
-and no plot is named outside the plots' table (ui/plots/plot_table.h).
+no plot is named outside the plots' table (ui/plots/plot_table.h); and no production code
+tests a question's kind by a flag (`isChoice()`, an empty `choices`, `holds_alternative` of a
+kind): where the kinds differ it visits Question::kind, so that a new kind does not compile
+until every such place handles it; and the lesson editor (QUESTION_KEY_READERS) writes no
+question's key as a string: it names them through the lesson schema's question_keys
+(lessons/format/lesson_schema.h), which its rows are written with.
 
 Functions are found by Universal Ctags (their first and last line); a file is every tracked
 .cpp/.h under physics/, lessons/, ui/, app/, bench/ and tests/. Exit 0 when everything holds;
@@ -261,6 +266,49 @@ def plots_named(root, files):
             if pattern.search(code) or (not rel.startswith("lessons/") and prefix.search(code))]
 
 
+QUESTION_KIND_FLAG = re.compile(
+    r"\bisChoice\s*\(\s*\)|\bchoices\s*\.\s*(?:isEmpty|empty)\s*\(\s*\)"
+    r"|holds_alternative\s*<\s*(?:lessons::)?\w+Question\s*>")
+
+
+def question_kind_flags(root, files):
+    """A finding for each test of a question's kind by a flag in production code."""
+    out = []
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if rel.split("/")[0] not in PRODUCTION:
+            continue
+        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            if QUESTION_KIND_FLAG.search(line.split("//")[0]):
+                out.append(f"{rel}:{number}: a question's kind tested by a flag; visit "
+                           f"Question::kind (lessons/format/lesson.h) with one case per kind")
+    return out
+
+
+LESSON_SCHEMA = "lessons/format/lesson_schema.h"
+QUESTION_KEY_READERS = ["ui/lesson_editor/"]
+
+
+def question_key_literals(root, files):
+    """A finding for each question row's key written as a string literal in the lesson editor:
+    the keys are the ones lesson_schema.h spells in its `question_keys` namespace."""
+    header = (root / LESSON_SCHEMA).read_text(encoding="utf-8")
+    keys = re.findall(r'inline constexpr std::string_view k\w+ = "(\w+)";', header)
+    if not keys:
+        return [f"{LESSON_SCHEMA}: no question keys found (namespace question_keys)"]
+    pattern = re.compile(r'"(' + "|".join(keys) + r')"')
+    out = []
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if not any(rel.startswith(reader) for reader in QUESTION_KEY_READERS):
+            continue
+        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            for m in pattern.finditer(line.split("//")[0]):
+                out.append(f"{rel}:{number}: the question key \"{m.group(1)}\" written out; name "
+                           f"it through lessons::schema::question_keys (lesson_schema.h)")
+    return out
+
+
 def main():
     root = Path(sys.argv[1] if len(sys.argv) > 1 else ".").resolve()
     files = sources(root)
@@ -293,6 +341,7 @@ def main():
                         f"from the step context (step_context.h), computed once in World::context()")
     for path, number, rule, home in rules_restated(root, files):
         problems.append(f"{path}:{number}: {rule} written again; call the function in {home}")
+    problems += question_kind_flags(root, files) + question_key_literals(root, files)
     for p in problems:
         print(p)
     print(f"{len(files)} files read, {len(problems)} findings")

@@ -14,8 +14,12 @@
 #include "measure/measurement_session.h"
 #include "plots/plot_shelf.h"
 
+#include "question_kinds.h"
+
 #include <QHeaderView>
 #include <QRadioButton>
+
+using rigidlab::test::isChoice;
 
 using namespace rigidlab;
 using rigidlab::test::visitShippedSteps;
@@ -130,7 +134,7 @@ private:
         QVERIFY(rows && rows->count() > 0 && rows->itemAt(0)->widget());
         QWidget* first = rows->itemAt(0)->widget();
         QList<QWidget*> answer;
-        if (q.isChoice())
+        if (isChoice(q))
             for (QRadioButton* option : first->findChildren<QRadioButton*>())
                 answer << option;
         else

@@ -30,7 +30,10 @@
 #include <QMessageBox>
 #include <QtTest>
 
+#include "question_kinds.h"
 #include <cmath>
+
+using rigidlab::test::measuredOf;
 
 using namespace rigidlab;
 using namespace rigidlab::ui;
@@ -240,9 +243,9 @@ void TestLabVsMeasurement::questionJudgesTheSceneAsItIsNow()
     const lessons::LessonStep& step = player.lesson()->steps[0];
     lessons::LessonStep now = step;
     now.scene = scene;
-    const auto value = lessons::measureAhead(now, step.questions[0].measure);
+    const auto value = lessons::measureAhead(now, measuredOf(step.questions[0]).measure);
     QVERIFY(value);
-    RL_VERIFY_NEAR(*value, e * e, 0, step.questions[0].tolerance);
+    RL_VERIFY_NEAR(*value, e * e, 0, measuredOf(step.questions[0]).tolerance);
 }
 
 void TestLabVsMeasurement::hintsFollowedExactlyAreRight()
@@ -254,7 +257,7 @@ void TestLabVsMeasurement::hintsFollowedExactlyAreRight()
         const lessons::LessonStep& step = lesson.steps[static_cast<std::size_t>(s)];
         const lessons::Question& q = step.questions.at(0);
         QVERIFY(!q.hint.isEmpty());
-        const auto lab = lessons::measureAhead(step, q.measure);
+        const auto lab = lessons::measureAhead(step, measuredOf(q).measure);
         QVERIFY(lab);
         // Exactly, and as written to two decimals (0.27 m), on the first try.
         for (const double answer : {byHint[s], rounded(byHint[s], 2)}) {

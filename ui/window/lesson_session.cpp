@@ -277,8 +277,8 @@ QStringList LessonSession::loadStepWorlds(const lessons::LessonStep& step,
         controller.setTimeScale(*scale);
     std::vector<lessons::Measure> measures;
     for (const lessons::Question& q : step.questions)
-        if (!q.isChoice()) // a choice question measures nothing
-            measures.push_back(q.measure);
+        if (const auto* measured = q.as<lessons::MeasuredQuestion>()) // the others measure nothing
+            measures.push_back(measured->measure);
     controller.watch(measures);
     return labels;
 }
