@@ -91,6 +91,7 @@ private slots:
     void stepThatDivergesIsMarked();
     void staleStepChecksDropped();
     void tryAndBackToTheEditor();
+    void cancelledStepChecksLeaveNoWarning();
     void questionAsksTheStudentToSet();
     void teachersOwnStep();
     void teachersOwnQuestion();
