@@ -187,12 +187,33 @@ std::optional<long long> wholeNumber(const QString& option, const QString& text,
     return value;
 }
 
+namespace {
+
+QString unknownLanguage(const QString& lang)
+{
+    return QStringLiteral("--lang: unknown language \"%1\" (expected %2)")
+        .arg(lang, lessons::shippedLanguageCodes());
+}
+
+/// --lang, when given, put in effect by `apply`; false with `error` set for a language the lab
+/// does not ship (which `apply` refuses).
+bool applyLang(const CommandLine& args, QString& error, bool (*apply)(const QString&))
+{
+    const auto lang = args.value(QStringLiteral("lang"));
+    if (lang && !apply(*lang)) {
+        error = unknownLanguage(*lang);
+        return false;
+    }
+    return true;
+}
+
+} // namespace
+
 std::optional<lessons::CsvConventions> csvOption(const CommandLine& args, QString& error)
 {
     const auto lang = args.value(QStringLiteral("lang"));
     if (lang && !lessons::isShippedLanguage(*lang)) {
-        error = QStringLiteral("--lang: unknown language \"%1\" (expected %2)")
-                    .arg(*lang, lessons::shippedLanguageCodes());
+        error = unknownLanguage(*lang);
         return std::nullopt;
     }
     const QString language = lang.value_or(lessons::kFallbackLanguage.toString());
@@ -215,15 +236,30 @@ std::optional<lessons::CsvConventions> csvOption(const CommandLine& args, QStrin
 
 bool applyOutputLanguage(const CommandLine& args, QString& error)
 {
-    const auto lang = args.value(QStringLiteral("lang"));
-    if (!lang)
-        return true;
-    if (!ui::applyLanguage(*lang)) {
-        error = QStringLiteral("--lang: unknown language \"%1\" (expected %2)")
-                    .arg(*lang, lessons::shippedLanguageCodes());
-        return false;
-    }
-    return true;
+    return applyLang(args, error, ui::applyLanguage);
+}
+
+void addLanguageOption(CommandLine& args)
+{
+    args.addValue(QStringLiteral("lang"), QStringLiteral("language"));
+}
+
+bool applyLanguageOption(const CommandLine& args, QString& error)
+{
+    return applyLang(args, error, lessons::setLessonLanguage);
+}
+
+void addLanguageAndCsvOptions(CommandLine& args)
+{
+    args.addValue(QStringLiteral("csv-dialect"), QStringLiteral("dialect"));
+    addLanguageOption(args);
+}
+
+std::optional<lessons::CsvConventions> lessonLanguageAndCsv(const CommandLine& args, QString& error)
+{
+    if (!applyLanguageOption(args, error))
+        return std::nullopt;
+    return csvOption(args, error);
 }
 
 } // namespace rigidlab::cli

@@ -83,6 +83,20 @@ std::optional<double> positiveNumber(const QString& option, const QString& text,
 std::optional<long long> wholeNumber(const QString& option, const QString& text, long long min,
                                      long long max, QString& error);
 
+/// The option `--lang CODE` of the commands that read lessons: the language their texts are
+/// read in (format/languages.h). The CLI's own messages stay English.
+void addLanguageOption(CommandLine& args);
+/// Sets the lessons' language from `--lang`, if given; false with `error` set for a code the
+/// lab does not ship.
+bool applyLanguageOption(const CommandLine& args, QString& error);
+
+/// `--lang CODE` and `--csv-dialect D`, of the commands that read lessons and write CSV.
+void addLanguageAndCsvOptions(CommandLine& args);
+/// The lessons' language set from --lang (applyLanguageOption), then the CSV dialect read in
+/// its conventions (csvOption); nothing with `error` set when either is wrong.
+std::optional<lessons::CsvConventions> lessonLanguageAndCsv(const CommandLine& args,
+                                                            QString& error);
+
 /// The CSV dialect of --csv-dialect plain|spreadsheet (plain when not given) in the language of
 /// --lang (English when not given), or nothing with `error` set.
 std::optional<lessons::CsvConventions> csvOption(const CommandLine& args, QString& error);

@@ -68,11 +68,9 @@ int writeWorksheetCommand(const CommandLine& args, const QString& lessonPath, co
     printWarnings(loaded.warnings);
     if (!loaded.ok)
         return inputError(loaded.error);
-    std::vector<int> questions;
-    for (const lessons::LessonStep& step : loaded.lesson.steps)
-        questions.push_back(static_cast<int>(step.questions.size()));
     if (const QString bad =
-            lessons::answersMismatch(answers, QFileInfo(loaded.lesson.path).fileName(), questions);
+            lessons::answersMismatch(answers, QFileInfo(loaded.lesson.path).fileName(),
+                                     lessons::questionCounts(loaded.lesson));
         !bad.isEmpty())
         return inputError(QStringLiteral("%1: %2 (answers for another lesson?)")
                               .arg(answersPath.value_or(QString()), bad));
@@ -98,24 +96,6 @@ int writeWorksheetCommand(const CommandLine& args, const QString& lessonPath, co
 
 } // namespace
 
-void addLanguageOption(CommandLine& args)
-{
-    args.addValue(QStringLiteral("lang"), QStringLiteral("language"));
-}
-
-bool applyLanguageOption(const CommandLine& args, QString& error)
-{
-    const auto lang = args.value(QStringLiteral("lang"));
-    if (!lang)
-        return true;
-    if (!lessons::setLessonLanguage(*lang)) {
-        error = QStringLiteral("--lang: unknown language \"%1\" (expected %2)")
-                    .arg(*lang, lessons::shippedLanguageCodes());
-        return false;
-    }
-    return true;
-}
-
 int commandLesson(const QStringList& words)
 {
     if (const auto packing = commandLessonPacking(words))
@@ -127,14 +107,11 @@ int commandLesson(const QStringList& words)
     args.addValue(QStringLiteral("student"), QStringLiteral("name"));
     args.addValue(QStringLiteral("answers"), QStringLiteral("answers file"));
     args.addSwitch(QStringLiteral("key"));
-    args.addValue(QStringLiteral("csv-dialect"), QStringLiteral("dialect"));
-    addLanguageOption(args);
+    addLanguageAndCsvOptions(args);
     if (!args.parse(words))
         return usageError(args.command(), args.error());
     QString languageError;
-    if (!applyLanguageOption(args, languageError))
-        return usageError(args.command(), languageError);
-    const auto csv = csvOption(args, languageError);
+    const auto csv = lessonLanguageAndCsv(args, languageError);
     if (!csv)
         return usageError(args.command(), languageError);
     const auto exportDir = args.value(QStringLiteral("export"));

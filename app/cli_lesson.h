@@ -11,13 +11,6 @@ namespace rigidlab::cli {
 
 class CommandLine;
 
-/// The option `--lang CODE` of the commands that read lessons: the language their texts are
-/// read in (format/languages.h). The CLI's own messages stay English.
-void addLanguageOption(CommandLine& args);
-/// Sets the lessons' language from `--lang`, if given; false with `error` set for a code the
-/// lab does not ship.
-bool applyLanguageOption(const CommandLine& args, QString& error);
-
 /// `lesson LESSON.json|FILE.rlesson [--validate | --export DIR] [--lang CODE]`. Draws with the
 /// window's plot widget, so it needs a QApplication (on the offscreen platform: nothing is shown).
 int commandLesson(const QStringList& words);

@@ -2,7 +2,6 @@
 #include "cli_results.h"
 
 #include "cli_common.h"
-#include "cli_lesson.h"
 
 #include "common/language.h"
 #include "worksheet/class_results_pdf.h"
@@ -76,14 +75,11 @@ int commandResults(const QStringList& words)
     args.addValue(QStringLiteral("lesson"), QStringLiteral("lesson file"));
     args.addValue(QStringLiteral("o"), QStringLiteral("file"));
     args.addSwitch(QStringLiteral("all-lessons"));
-    args.addValue(QStringLiteral("csv-dialect"), QStringLiteral("dialect"));
-    addLanguageOption(args);
+    addLanguageAndCsvOptions(args);
     if (!args.parse(words))
         return usageError(args.command(), args.error());
     QString error;
-    if (!applyLanguageOption(args, error))
-        return usageError(args.command(), error);
-    const auto csv = csvOption(args, error);
+    const auto csv = lessonLanguageAndCsv(args, error);
     if (!csv)
         return usageError(args.command(), error);
     const auto folder = args.onlyFile(QStringLiteral("folder"));

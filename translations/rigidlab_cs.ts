@@ -5036,6 +5036,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Comparison and fit</source>
         <translation>Porovnání a&#xa0;určení z&#xa0;měření</translation>
     </message>
+    <message>
+        <source>%1 (fit, residuals)</source>
+        <translation>%1 (určení, rezidua)</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementSession</name>
@@ -5078,6 +5082,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
             <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
             <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Fitted to the measurement in %1.</source>
+        <translation>Určeno z&#xa0;měření v&#xa0;souboru %1.</translation>
     </message>
     <message>
         <source>Fit first: there are no fitted values to apply.</source>

@@ -10,6 +10,8 @@
 #include "run/scene_run.h"
 
 #include "cli_run.h"
+#include "file_size_limit.h"
+#include "test_files.h"
 #include "test_main.h"
 
 #include <QDir>
@@ -25,6 +27,10 @@
 
 using namespace rigidlab;
 
+using rigidlab::test::FileSizeLimit;
+using rigidlab::test::readAll;
+using rigidlab::test::writeFile;
+
 namespace {
 
 const QString kCli = QStringLiteral(RIGIDLAB_CLI);
@@ -32,18 +38,6 @@ const QString kSource = QStringLiteral(RIGIDLAB_SOURCE_DIR);
 const QByteArray kPrevious = "the previous file, which must survive\n";
 /// Enough for a header or two, far too little for any real output [bytes].
 constexpr rlim_t kLimit = 200;
-
-QByteArray readAll(const QString& path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
-
-bool writePlain(const QString& path, const QByteArray& bytes)
-{
-    QFile file(path);
-    return file.open(QIODevice::WriteOnly) && file.write(bytes) == bytes.size();
-}
 
 /// Every entry of a folder, hidden ones (temporary files) included, recursively.
 QStringList entries(const QString& dir)
@@ -59,30 +53,6 @@ QStringList entries(const QString& dir)
     }
     return out;
 }
-
-/// A file size limit on this process (and SIGXFSZ ignored, else it kills us).
-class FileSizeLimit {
-public:
-    explicit FileSizeLimit(rlim_t bytes)
-    {
-        getrlimit(RLIMIT_FSIZE, &m_old);
-        m_oldHandler = std::signal(SIGXFSZ, SIG_IGN);
-        rlimit limited = m_old;
-        limited.rlim_cur = bytes;
-        m_active = setrlimit(RLIMIT_FSIZE, &limited) == 0;
-    }
-    ~FileSizeLimit()
-    {
-        setrlimit(RLIMIT_FSIZE, &m_old);
-        std::signal(SIGXFSZ, m_oldHandler);
-    }
-    bool isActive() const { return m_active; }
-
-private:
-    rlimit m_old{};
-    void (*m_oldHandler)(int) = nullptr;
-    bool m_active = false;
-};
 
 /// rigidlab-cli with a file size limit in the child only.
 rigidlab::test::CliRun runCliLimited(const QStringList& arguments)
@@ -107,7 +77,7 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("out.csv"));
-        QVERIFY(writePlain(path, kPrevious));
+        QVERIFY(writeFile(path, kPrevious));
         const QByteArray big(100000, 'x');
         {
             FileSizeLimit limit(kLimit);
@@ -144,7 +114,7 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(QStringLiteral("out.csv"));
-        QVERIFY(writePlain(path, kPrevious));
+        QVERIFY(writeFile(path, kPrevious));
         const auto readOnly = QFile::ReadOwner | QFile::ExeOwner;
         QVERIFY(QFile::setPermissions(dir.path(), readOnly));
         const QString error = lessons::writeFileAtomically(path, "new");
@@ -164,8 +134,8 @@ private slots:
         options.time = 1.0;
         options.tracePath = dir.filePath(QStringLiteral("trace.csv"));
         options.diagnosticsPath = dir.filePath(QStringLiteral("diagnostics.csv"));
-        QVERIFY(writePlain(options.tracePath, kPrevious));
-        QVERIFY(writePlain(options.diagnosticsPath, kPrevious));
+        QVERIFY(writeFile(options.tracePath, kPrevious));
+        QVERIFY(writeFile(options.diagnosticsPath, kPrevious));
         {
             FileSizeLimit limit(kLimit);
             QVERIFY(limit.isActive());
@@ -214,7 +184,7 @@ private slots:
         QTemporaryDir dir;
         QVERIFY(dir.isValid());
         const QString path = dir.filePath(file);
-        QVERIFY(writePlain(path, kPrevious));
+        QVERIFY(writeFile(path, kPrevious));
         arguments.replaceInStrings(QStringLiteral("FILE"), path);
         const rigidlab::test::CliRun run = runCliLimited(arguments);
         QVERIFY(!run.crashed);

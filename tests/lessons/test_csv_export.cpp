@@ -13,6 +13,7 @@
 #include "export/step_time.h"
 #include "format/scene_loader.h"
 #include "run/scene_run.h"
+#include "test_files.h"
 
 #include <QDir>
 #include <QFile>
@@ -25,18 +26,13 @@
 #include <cstring>
 
 using namespace rigidlab;
+using test::readAll;
 using test::readCsv;
 using test::readNumber;
 
 namespace {
 
 const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
-
-QByteArray readAll(const QString& path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
 
 lessons::Scene loadScene(const char* name)
 {

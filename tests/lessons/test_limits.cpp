@@ -11,6 +11,7 @@
 #include "rigidlab/physics/shape.h"
 
 #include "near.h"
+#include "test_files.h"
 #include "test_main.h"
 
 #include <QDir>
@@ -24,6 +25,8 @@
 #include <cmath>
 
 using namespace rigidlab;
+
+using rigidlab::test::writeFile;
 
 namespace {
 
@@ -48,12 +51,6 @@ QByteArray linkScene(const QByteArray& key, const QByteArray& link)
            R"({"id": "a", "shape": {"type": "circle", "radius": 0.5}},)"
            R"({"id": "b", "shape": {"type": "circle", "radius": 0.5}, "position": [2, 0]}], ")" +
            key + R"(": [)" + link + "]}";
-}
-
-bool writeFile(const QString& path, const QByteArray& bytes)
-{
-    QFile f(path);
-    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size();
 }
 
 /// A lesson of one step whose scene is `scene` (a JSON value: a path string or an object).

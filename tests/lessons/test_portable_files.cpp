@@ -26,15 +26,10 @@
 #include <QtTest>
 
 using namespace rigidlab;
+using rigidlab::test::readAll;
 using rigidlab::test::writeFile;
 
 namespace {
-
-QByteArray readAll(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
 
 /// The same text with Windows' line ends.
 QByteArray withCrlf(QByteArray lf)

@@ -3,20 +3,9 @@
 // thousands of random convex polygon pairs (general, touching, and near-parallel), plus named
 // box and circle cases whose answers follow from the geometry.
 //
-// Independent method. D = B (+) (-A) is the convex hull of all differences vB - vA of world
-// vertices (built here by gift wrapping, not by the engine's convexHull). A and B intersect
-// iff the origin lies in D. With D's faces written n_f . x <= c_f (n_f outward, unit):
-//   - the origin is inside iff every c_f >= 0, and max_f(-c_f) is the SAT's largest gap;
-//   - the penetration depth is min_f c_f (the distance from the origin to D's nearest face);
-//   - moving B by -c_f n_f pushes the origin out through that face, so the normal from A to
-//     B is -n_f of the nearest face (n_f itself is the outward normal of A - B's face).
-//
-//          D = B - A                       origin inside D, nearest face on the left:
-//        +-----------+                      n_f = (-1, 0), c_f = depth, B must move +x
-//   n_f  | o         |
-//   <--  |           |
-//        +-----------+
+// The independent method is in minkowski_reference.h.
 
+#include "minkowski_reference.h"
 #include "physics_test_util.h"
 
 #include <rigidlab/physics/sat.h>
@@ -32,58 +21,14 @@
 
 using namespace rigidlab::physics;
 using rigidlab::test::isClose;
+using rigidlab::test::maxAlong;
+using rigidlab::test::minAlong;
+using rigidlab::test::Minkowski;
+using rigidlab::test::minkowski;
 
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-/// The faces of the Minkowski difference B - A, from world vertices.
-struct Minkowski {
-    std::vector<Vec2> normals; ///< outward unit normals of D's faces
-    std::vector<double> c;     ///< offsets: n . x <= c on D
-    double maxGap = 0;         ///< max(-c): > 0 separated, < 0 intersecting
-    int nearest = -1;          ///< face of least c
-    double secondC = INFINITY; ///< the next least c (of a face with another normal)
-};
-
-bool minkowski(const std::vector<Vec2>& a, const std::vector<Vec2>& b, Minkowski& out)
-{
-    std::vector<Vec2> diff;
-    for (const Vec2& vb : b) {
-        for (const Vec2& va : a) {
-            diff.push_back(vb - va);
-        }
-    }
-    const std::vector<Vec2> hull = rigidlab::test::giftWrapHull(diff);
-    if (hull.size() < 3) {
-        return false;
-    }
-    out = Minkowski{};
-    out.maxGap = -INFINITY;
-    double best = INFINITY;
-    for (std::size_t i = 0; i < hull.size(); ++i) {
-        const Vec2 e = hull[(i + 1) % hull.size()] - hull[i];
-        if (e.norm() < 1e-12) {
-            continue; // a sliver face has no reliable normal; its neighbours bound it anyway
-        }
-        const Vec2 n = Vec2(e.y(), -e.x()).normalized(); // outward for a CCW hull
-        const double c = n.dot(hull[i]);
-        out.normals.push_back(n);
-        out.c.push_back(c);
-        out.maxGap = std::max(out.maxGap, -c);
-        if (c < best) {
-            best = c;
-            out.nearest = static_cast<int>(out.c.size()) - 1;
-        }
-    }
-    for (std::size_t i = 0; i < out.c.size(); ++i) {
-        if (static_cast<int>(i) != out.nearest &&
-            out.normals[i].dot(out.normals[out.nearest]) < 1.0 - 1e-9) {
-            out.secondC = std::min(out.secondC, out.c[i]);
-        }
-    }
-    return true;
-}
 
 /// A random convex polygon: the hull (the test's own gift wrapping) of 3 to 8 points in a
 /// disc (radius 0.2 to 1.5 m) whose centre is off the body origin, made into a Polygon by
@@ -110,20 +55,6 @@ std::vector<Vec2> randomHull(std::mt19937_64& rng)
             return hull;
         }
     }
-}
-
-/// Support of world vertices along d: the largest projection.
-double maxAlong(const std::vector<Vec2>& v, const Vec2& d)
-{
-    double m = -INFINITY;
-    for (const Vec2& p : v) {
-        m = std::max(m, p.dot(d));
-    }
-    return m;
-}
-double minAlong(const std::vector<Vec2>& v, const Vec2& d)
-{
-    return -maxAlong(v, -d);
 }
 
 /// What one pair gives; counts kept so the test can show it covered the cases it claims to.

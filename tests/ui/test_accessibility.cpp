@@ -9,6 +9,7 @@
 #include "common/focus_ring.h"
 #include "common/theme.h"
 #include "editor/edit_tools.h"
+#include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/inspector_panel.h"
 #include "plots/column_graph.h"
@@ -23,6 +24,7 @@
 #include <QAccessible>
 #include <QAction>
 #include <QDialog>
+#include <QDockWidget>
 #include <QFileDialog>
 #include <QFormLayout>
 #include <QLabel>
@@ -32,6 +34,8 @@
 #include <QScopeGuard>
 #include <QTabBar>
 #include <QTimer>
+#include <QUndoStack>
+#include <QUndoView>
 #include <QtTest>
 #include <qcustomplot.h>
 
@@ -109,7 +113,7 @@ private slots:
             unnamed = unnamedInteractive(*dialog, &interactive);
             dialog->reject();
         });
-        w.plot(0)->exportInteractively(ui::ExportFormat::Png);
+        w.plot(u"energy")->exportInteractively(ui::ExportFormat::Png);
         QVERIFY(seen);
         QVERIFY2(unnamed.isEmpty(), qPrintable(unnamed.join(QLatin1Char('\n'))));
         QVERIFY(interactive > 5);
@@ -241,6 +245,70 @@ private slots:
         QCOMPARE(list->focusChild(), list->child(other));
     }
 
+    /// The History list's entry for the scene's state now says it is focused only while the
+    /// list has the focus (Qt's list cells say it of the current item): with the keys in the
+    /// scene, "Scene as opened" is selected, not focused; Tab into the list focuses it, and
+    /// going in and out of the list undoes nothing.
+    void historyEntryFocusedOnlyInTheList()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        QVERIFY(w.newScene());
+        if (!w.editTools().editing())
+            w.editTools().editAction()->trigger();
+        auto* dock = w.findChild<QDockWidget*>(QStringLiteral("historyDock"));
+        auto* history = w.findChild<QUndoView*>(QStringLiteral("historyView"));
+        QVERIFY(dock != nullptr && history != nullptr);
+        dock->raise(); // a tab behind the Properties
+        QCoreApplication::processEvents();
+        QVERIFY(history->isVisible());
+        QUndoStack& stack = *w.document()->undoStack();
+        // Each entry's name and whether it says it is selected and focused: "name s f". The
+        // list's interface is made again for each look: with no screen reader listening, Qt
+        // does not tell it of its model's resets, and its cells would keep the old rows.
+        const auto entries = [history] {
+            QStringList out;
+            if (QAccessibleInterface* old = QAccessible::queryAccessibleInterface(history))
+                QAccessible::deleteAccessibleInterface(QAccessible::uniqueId(old));
+            QAccessibleInterface* list = QAccessible::queryAccessibleInterface(history);
+            for (int i = 0; list && i < list->childCount(); ++i)
+                if (QAccessibleInterface* item = list->child(i)) {
+                    const QAccessible::State state = item->state();
+                    out << QStringLiteral("%1%2%3").arg(item->text(QAccessible::Name),
+                                                        state.selected ? " s" : "",
+                                                        state.focused ? " f" : "");
+                }
+            return out;
+        };
+        w.view().setFocus();
+        QCoreApplication::processEvents();
+        QVERIFY(!history->hasFocus());
+        QCOMPARE(entries(), QStringList{QStringLiteral("Scene as opened s")});
+        // An edit: its entry is the state now, selected and not focused either.
+        stack.push(new QUndoCommand(QStringLiteral("An edit")));
+        QCoreApplication::processEvents();
+        QCOMPARE(entries(),
+                 (QStringList{QStringLiteral("Scene as opened"), QStringLiteral("An edit s")}));
+        history->setFocus(Qt::TabFocusReason);
+        QCoreApplication::processEvents();
+        QVERIFY(history->hasFocus());
+        QCOMPARE(entries(),
+                 (QStringList{QStringLiteral("Scene as opened"), QStringLiteral("An edit s f")}));
+        QCOMPARE(stack.index(), 1);
+        w.view().setFocus();
+        QCoreApplication::processEvents();
+        QCOMPARE(entries(),
+                 (QStringList{QStringLiteral("Scene as opened"), QStringLiteral("An edit s")}));
+        QCOMPARE(stack.index(), 1);
+        // The keys still move through the list: Up goes back to the scene as opened.
+        history->setFocus(Qt::TabFocusReason);
+        QCoreApplication::processEvents();
+        QTest::keyClick(history, Qt::Key_Up);
+        QCOMPARE(stack.index(), 0);
+        QCOMPARE(entries(),
+                 (QStringList{QStringLiteral("Scene as opened s f"), QStringLiteral("An edit")}));
+    }
+
     /// A plot reads as its title, its axes with units and its series with values now,
     /// least and greatest.
     void plotIsDescribed()
@@ -253,7 +321,7 @@ private slots:
             QString());
         for (int k = 0; k < 100; ++k)
             w.controller().stepForward();
-        ui::PlotWidget* energy = w.plot(0);
+        ui::PlotWidget* energy = w.plot(u"energy");
         energy->drain();
         QAccessibleInterface* a = QAccessible::queryAccessibleInterface(energy);
         QVERIFY(a);
@@ -298,10 +366,9 @@ private slots:
         QVERIFY(scene);
         for (int i = ui::WorldViewAccessible::FirstBody; i < scene->childCount(); ++i)
             texts << scene->child(i)->text(QAccessible::Value);
-        for (int p = 0; p < MainWindow::kPlotCount; ++p) {
-            w.plot(p)->drain();
-            texts << QAccessible::queryAccessibleInterface(w.plot(p))->text(
-                QAccessible::Description);
+        for (auto* plot : w.plots()) {
+            plot->drain();
+            texts << QAccessible::queryAccessibleInterface(plot)->text(QAccessible::Description);
         }
         const QString all = texts.join(QLatin1Char('\n'));
         const QRegularExpression sign(QStringLiteral("[-\u2212]\\d"));
@@ -448,8 +515,7 @@ private slots:
     void plotsReadInGreyscale()
     {
         MainWindow w;
-        for (int p = 0; p < MainWindow::kPlotCount; ++p) {
-            ui::PlotWidget* plot = w.plot(p);
+        for (ui::PlotWidget* plot : w.plots()) {
             for (int i = 0; i < plot->seriesCount(); ++i)
                 for (int j = 0; j < i; ++j) {
                     QVERIFY2(plot->graph(i)->pen().style() != plot->graph(j)->pen().style(),

@@ -3,7 +3,8 @@
 // the Instruments open and in presentation mode, on every step of every shipped lesson,
 // nothing scrolled: the first question's answer box, its Check button and its verdict in
 // sight in the Lesson dock; the verdict as large as the step's text; each plot shown with a
-// data area a class can read and no legend over its data.
+// data area a class can read and no legend over its data; each table panel scrolled to its
+// table, not to the description above it.
 
 #include "classroom_util.h"
 #include "test_main.h"
@@ -13,7 +14,12 @@
 #include "measure/measurement_session.h"
 #include "plots/plot_shelf.h"
 
+#include "question_kinds.h"
+
+#include <QHeaderView>
 #include <QRadioButton>
+
+using rigidlab::test::isChoice;
 
 using namespace rigidlab;
 using rigidlab::test::visitShippedSteps;
@@ -103,6 +109,7 @@ private slots:
                 if (QTest::currentTestFailed())
                     return;
                 plots += checkPlots(w, where);
+                checkTables(w, where);
                 // The Measurement panel's plots are held to the rule like the others: where
                 // a step shows the panel, they are among those measured.
                 if (w.measurement().panel()->comparisonPlot()->isVisible())
@@ -127,7 +134,7 @@ private:
         QVERIFY(rows && rows->count() > 0 && rows->itemAt(0)->widget());
         QWidget* first = rows->itemAt(0)->widget();
         QList<QWidget*> answer;
-        if (q.isChoice())
+        if (isChoice(q))
             for (QRadioButton* option : first->findChildren<QRadioButton*>())
                 answer << option;
         else
@@ -163,6 +170,32 @@ private:
                  qPrintable(
                      where +
                      QStringLiteral("verdict %1 px, step text %2 px").arg(verdictPx).arg(textPx)));
+    }
+
+    /// Each table panel in sight shows its table's head and first rows, not only the
+    /// description above it.
+    static void checkTables(MainWindow& w, const QString& where)
+    {
+        for (const char* name : {"sat", "bounces", "collision"}) {
+            QDockWidget* dock = w.dock(QLatin1String(name));
+            if (!dock || dock->isHidden() || dock->visibleRegion().isEmpty())
+                continue;
+            const auto* table = dock->findChild<QTableWidget*>();
+            if (!table)
+                continue;
+            const auto* scroll = qobject_cast<const QScrollArea*>(dock->widget());
+            QVERIFY(scroll);
+            const int drawn = QRect(table->mapTo(scroll->viewport(), QPoint(0, 0)), table->size())
+                                  .intersected(scroll->viewport()->rect())
+                                  .height();
+            const int wanted =
+                std::min(table->height(), 3 * table->verticalHeader()->defaultSectionSize());
+            QVERIFY2(drawn >= wanted,
+                     qPrintable(where + QStringLiteral("%1 table: %2 px of it in sight, %3 wanted")
+                                            .arg(QLatin1String(name))
+                                            .arg(drawn)
+                                            .arg(wanted)));
+        }
     }
 
     /// Each plot in sight: its data area at least kLeastDataArea, no legend over it. Returns

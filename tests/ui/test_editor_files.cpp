@@ -3,6 +3,7 @@
 // changes asked about, Run and Reset from the scene as edited, undo and redo from the Edit menu.
 // The dialogs are answered through the window's askers, so no dialog opens.
 
+#include "common/shortcuts.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "lesson_player/lesson_player.h"
@@ -11,7 +12,6 @@
 #include "view/world_view.h"
 #include "window/language_switch.h"
 #include "window/main_window.h"
-#include "common/shortcuts.h"
 
 #include "format/data_dirs.h"
 #include "format/scene_compare.h"
@@ -30,22 +30,19 @@
 #include <QUndoStack>
 #include <QtTest>
 
+#include "test_files.h"
 #include "test_main.h"
 
 using namespace rigidlab;
 using rigidlab::ui::MainWindow;
+
+using rigidlab::test::readAll;
 
 namespace {
 
 QString shippedScene(const char* name)
 {
     return QDir(MainWindow::scenesFolder()).filePath(QLatin1String(name));
-}
-
-QByteArray readAll(const QString& path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
 /// The index of the first dynamic body.

@@ -6,6 +6,7 @@
 #include "editor_test_util.h"
 
 #include "edit/scene_edits.h"
+#include "format/scene_loader.h"
 #include "format/scene_schema.h"
 
 #include "near.h"
@@ -33,6 +34,7 @@ private slots:
     void lessonLocksTools();
     void newSceneGroundHoldsACart();
     void safeFileNames();
+    void undoTextsNameBodiesByLabel();
 };
 
 // A ramp drawn thinner than the grid: both its long edges snap to one grid line, and it keeps
@@ -383,6 +385,30 @@ void TestEditorTools::lessonLocksTools()
     QCOMPARE(rig.tools.tool(), EditTool::Circle);
     rig.tools.setAllowedTools(std::nullopt);
     QVERIFY(rig.tools.toolAction(EditTool::Box)->isEnabled());
+}
+
+// The History names a body as the rest of the window does: by its label ("light ball"), not
+// its id ("b1"); a body without a label by its id.
+void TestEditorTools::undoTextsNameBodiesByLabel()
+{
+    const lessons::SceneLoadResult loaded = lessons::loadSceneJson(
+        R"({"rigidlab": 1, "title": "labels", "bodies": [
+            {"id": "b1", "label": "light ball", "shape": {"type": "circle", "radius": 0.5}},
+            {"id": "b2", "shape": {"type": "circle", "radius": 0.5}, "position": [3, 0]}]})",
+        QStringLiteral("labels.json"));
+    QVERIFY2(loaded.ok, qPrintable(loaded.error));
+    Rig rig(loaded.scene);
+    const QUndoStack& undo = *rig.document.undoStack();
+    rig.tools.selectBody(0);
+    rig.tools.nudgeSelected(Vec2(rig.g, 0.0));
+    QCOMPARE(undo.text(undo.index() - 1), QStringLiteral("Move light ball"));
+    rig.tools.rotateSelected(0.1);
+    QCOMPARE(undo.text(undo.index() - 1), QStringLiteral("Rotate light ball"));
+    rig.tools.deleteSelected();
+    QCOMPARE(undo.text(undo.index() - 1), QStringLiteral("Delete light ball"));
+    rig.tools.selectBody(0); // b2, now the first
+    rig.tools.nudgeSelected(Vec2(rig.g, 0.0));
+    QCOMPARE(undo.text(undo.index() - 1), QStringLiteral("Move b2"));
 }
 
 RIGIDLAB_TEST_MAIN(TestEditorTools)

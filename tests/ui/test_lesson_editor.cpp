@@ -46,12 +46,6 @@ QJsonObject parsed(const char* json)
     return QJsonDocument::fromJson(QByteArray(json)).object();
 }
 
-QByteArray readAll(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
 /// Writes a step's texts in both languages, as the editor's side-by-side fields do.
 void writeStep(LessonDraft& d, int step, const char* enTitle, const char* csTitle,
                const QString& enText, const QString& csText)

@@ -53,6 +53,7 @@
 
 using namespace rigidlab;
 using rigidlab::test::filesUnder;
+using rigidlab::test::readAll;
 using rigidlab::test::writeFile;
 using rigidlab::ui::LessonDraft;
 
@@ -90,6 +91,7 @@ private slots:
     void toleranceTighterThanIntegrators();
     void stepThatDivergesIsMarked();
     void staleStepChecksDropped();
+    void cancelledStepChecksLeaveNoWarning();
     void tryAndBackToTheEditor();
     void questionAsksTheStudentToSet();
     void teachersOwnStep();

@@ -6,12 +6,17 @@
 
 #include "test_lesson_editor.h"
 
+#include "common/job_progress.h"
 #include "view/world_view.h"
 
 #include "format/data_dirs.h"
 #include "format/lesson_catalog.h"
 
+#include "question_kinds.h"
 #include <QDoubleSpinBox>
+#include <QPushButton>
+
+using rigidlab::test::measuredOf;
 
 namespace {
 
@@ -98,6 +103,56 @@ void TestLessonEditor::staleStepChecksDropped()
     d.setText(0, QStringLiteral("text"), QStringLiteral("en"), QStringLiteral("Watch."));
     QVERIFY(!ed.stepChecks().isRunning());
     QCOMPARE(ed.stepChecks().findings().size(), std::size_t{1});
+}
+
+// The checks' progress and Cancel under the problems, reached with the keyboard: Cancel stops
+// the running checks, and what they would have found is never shown, also once the editor
+// refreshes for a text typed; the problems say the steps were not checked.
+void TestLessonEditor::cancelledStepChecksLeaveNoWarning()
+{
+    ui::LessonEditor ed;
+    ed.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&ed));
+    QVERIFY(onSprings(ed));
+    QSignalSpy checked(&ed.stepChecks(), &ui::StepChecks::finished);
+    if (ed.stepChecks().isRunning())
+        QVERIFY(checked.wait(60'000));
+    auto* progress = ed.findChild<ui::JobProgress*>(QStringLiteral("stepChecksProgress"));
+    QVERIFY(progress != nullptr);
+    QVERIFY(progress->isHidden());
+    checked.clear();
+    LessonDraft& d = ed.draft();
+    d.setValue(0, QStringLiteral("settings"), hugeDt(), QStringLiteral("dt"));
+    QVERIFY(ed.stepChecks().isRunning());
+    QVERIFY(progress->isVisible());
+    QPushButton* cancel = progress->cancelButton();
+    QVERIFY(cancel->focusPolicy() & Qt::TabFocus);
+    QCOMPARE(cancel->accessibleName(), QStringLiteral("Cancel checking the steps' scenes"));
+    cancel->setFocus();
+    QTest::keyClick(cancel, Qt::Key_Space);
+    QVERIFY(checked.wait(60'000));
+    QCOMPARE(checked.count(), 1);
+    QVERIFY(!ed.stepChecks().isRunning());
+    QVERIFY(ed.stepChecks().wasCancelled());
+    QVERIFY(ed.stepChecks().findings().empty());
+    QVERIFY(progress->isHidden());
+    QVERIFY(!cancel->hasFocus());
+    auto* steps = ed.findChild<QListWidget*>(QStringLiteral("lessonSteps"));
+    QVERIFY(steps != nullptr);
+    auto* problems = ed.findChild<QLabel*>(QStringLiteral("lessonProblems"));
+    QVERIFY(problems != nullptr);
+    for (int typed = 0; typed < 2; ++typed) {
+        QVERIFY2(!steps->item(0)->toolTip().contains(QStringLiteral("diverged")),
+                 qPrintable(steps->item(0)->toolTip()));
+        QVERIFY2(!problems->text().contains(QStringLiteral("diverged")),
+                 qPrintable(problems->text()));
+        QVERIFY2(!problems->text().contains(QStringLiteral("Running")),
+                 qPrintable(problems->text()));
+        QVERIFY2(problems->text().contains(QStringLiteral("not checked")),
+                 qPrintable(problems->text()));
+        d.setText(0, QStringLiteral("text"), QStringLiteral("en"), QStringLiteral("Watch."));
+        QVERIFY(!ed.stepChecks().isRunning());
+    }
 }
 
 // Try as a student from the editor, and back: the window shows the way back while that lesson
@@ -316,7 +371,7 @@ void TestLessonEditor::teachersOwnQuestion()
     const std::optional<lessons::Lesson> lesson = d.lesson(QStringLiteral("en"), error);
     QVERIFY2(lesson, qPrintable(error));
     QCOMPARE(lesson->steps[0].questions.at(0).hint, QStringLiteral("Momentum is kept."));
-    QCOMPARE(lesson->steps[0].questions.at(0).measure.body, QStringLiteral("heavy"));
+    QCOMPARE(measuredOf(lesson->steps[0].questions.at(0)).measure.body, QStringLiteral("heavy"));
     auto* answer = ed.findChild<QLabel*>(QStringLiteral("questionAnswer"));
     QVERIFY2(!answer->text().startsWith(u'⚠'), qPrintable(answer->text()));
 

@@ -22,6 +22,7 @@
 
 #include "cli_run.h"
 #include "near.h"
+#include "test_files.h"
 #include "test_main.h"
 
 #include <charconv>
@@ -29,6 +30,8 @@
 #include <tuple>
 
 using namespace rigidlab;
+
+using rigidlab::test::readAll;
 
 namespace {
 
@@ -41,12 +44,6 @@ lessons::Lesson lesson(const char* name)
     if (!loaded.ok)
         qWarning("%s", qPrintable(loaded.error));
     return loaded.lesson;
-}
-
-QByteArray readAll(const QString& path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
 /// The rows of a CSV file written by the export (numbers only after the header).

@@ -8,6 +8,7 @@
 #include "common/language.h"
 #include "panels/fitting_table.h"
 #include "plots/plot_export.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/step_sampler.h"
 
@@ -26,6 +27,7 @@
 
 #include "csv_reader.h"
 #include "sourced_plot.h"
+#include "test_files.h"
 #include "test_main.h"
 
 #include <cmath>
@@ -33,16 +35,11 @@
 
 using namespace rigidlab;
 using namespace rigidlab::ui;
+using test::readAll;
 using test::readCsv;
 using test::readNumber;
 
 namespace {
-
-QByteArray readAll(const QString& path)
-{
-    QFile file(path);
-    return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
-}
 
 /// Runs a shipped scene for `seconds` at `dt`, sampled as the window samples it, into `plot`.
 void runInto(test::SourcedPlot& sourced, const char* scene, double dt, double seconds)

@@ -5,6 +5,7 @@
 #include "common/display_names.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/sample_buffer.h"
 
@@ -20,17 +21,18 @@
 
 #include "plot_test_samples.h"
 #include "sourced_plot.h"
+#include "test_files.h"
 #include "test_main.h"
 
 #include <cmath>
 
 #ifdef Q_OS_UNIX
-#include <csignal>
-#include <sys/resource.h>
+#include "file_size_limit.h"
 #endif
 
 using namespace rigidlab::ui;
 using rigidlab::test::feed;
+using rigidlab::test::readAll;
 using rigidlab::test::sampleAt;
 using rigidlab::test::SourcedPlot;
 
@@ -46,39 +48,6 @@ QStringList entries(const QString& dir)
 {
     return QDir(dir).entryList(QDir::AllEntries | QDir::NoDotAndDotDot | QDir::Hidden, QDir::Name);
 }
-
-QByteArray readAll(const QString& path)
-{
-    QFile f(path);
-    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
-}
-
-#ifdef Q_OS_UNIX
-/// Makes every write past `bytes` fail with EFBIG, for root too (permissions do not stop
-/// root, a file size limit does): an export that fails halfway through writing.
-class FileSizeLimit {
-public:
-    explicit FileSizeLimit(rlim_t bytes)
-    {
-        getrlimit(RLIMIT_FSIZE, &m_old);
-        m_oldHandler = std::signal(SIGXFSZ, SIG_IGN); // else the process is killed
-        rlimit limited = m_old;
-        limited.rlim_cur = bytes;
-        m_active = setrlimit(RLIMIT_FSIZE, &limited) == 0;
-    }
-    ~FileSizeLimit()
-    {
-        setrlimit(RLIMIT_FSIZE, &m_old);
-        std::signal(SIGXFSZ, m_oldHandler);
-    }
-    bool isActive() const { return m_active; }
-
-private:
-    rlimit m_old{};
-    void (*m_oldHandler)(int) = nullptr;
-    bool m_active = false;
-};
-#endif
 
 } // namespace
 
@@ -333,7 +302,7 @@ void TestPlotExport::failedExportKeepsExistingFile()
     if (failure == "file size limit") {
 #ifdef Q_OS_UNIX
         // Fails halfway through writing, for root too.
-        FileSizeLimit limit(1024);
+        rigidlab::test::FileSizeLimit limit(1024);
         QVERIFY(limit.isActive());
         result = exportPlot(*plot, path, fmt);
 #else

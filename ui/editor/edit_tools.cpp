@@ -5,12 +5,12 @@
 #include "editor/scene_document.h"
 #include "editor/tools/all_tools.h"
 
+#include "common/shortcuts.h"
 #include "edit/scene_edits.h"
 #include "format/editor_tools.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
-#include "common/shortcuts.h"
 
 #include <QAction>
 #include <QActionGroup>
@@ -336,7 +336,7 @@ void EditTools::rotateSelected(double radians)
     }
     const auto& def = m_document.scene().bodies[static_cast<size_t>(m_selected)];
     const int mergeId = keyRunMergeId(KeyRun::Kind::Turn);
-    apply(tr("Rotate %1").arg(QString::fromStdString(def.name)),
+    apply(tr("Rotate %1").arg(bodyName(m_document.scene(), m_selected)),
           edit::rotateBody(m_document.scene(), m_selected, def.angle + radians), mergeId);
     m_keyRun.index = m_document.undoStack()->index();
 }
@@ -348,7 +348,7 @@ void EditTools::nudgeSelected(const Vec2& offset)
     }
     const auto& def = m_document.scene().bodies[static_cast<size_t>(m_selected)];
     const int mergeId = keyRunMergeId(KeyRun::Kind::Nudge);
-    apply(tr("Move %1").arg(QString::fromStdString(def.name)),
+    apply(tr("Move %1").arg(bodyName(m_document.scene(), m_selected)),
           edit::moveBody(m_document.scene(), m_selected, def.position + offset), mergeId);
     m_keyRun.index = m_document.undoStack()->index();
 }
@@ -381,10 +381,9 @@ void EditTools::deleteSelected()
         return;
     }
     const int body = m_selected;
-    const QString id =
-        QString::fromStdString(m_document.scene().bodies[static_cast<size_t>(body)].name);
+    const QString name = bodyName(m_document.scene(), body);
     m_selected = -1;
-    apply(tr("Delete %1").arg(id), edit::deleteBody(m_document.scene(), body));
+    apply(tr("Delete %1").arg(name), edit::deleteBody(m_document.scene(), body));
     selectBody(-1);
 }
 
@@ -411,7 +410,7 @@ QString EditTools::bodyName(const lessons::Scene& scene, int body)
     if (body < 0 || static_cast<size_t>(body) >= scene.bodies.size()) {
         return tr("the world");
     }
-    return QString::fromStdString(scene.bodies[static_cast<size_t>(body)].name);
+    return scene.bodyLabel(body);
 }
 
 void EditTools::say(const QString& text)

@@ -119,7 +119,8 @@ public:
     /// The tool in use, for the overlay.
     const Tool& activeTool() const { return *m_tools[static_cast<size_t>(m_tool)]; }
 
-    /// Body `body`'s id for the History ("Add circle circle1"), "the world" for kWorld.
+    /// Body `body` as the History and the messages name it: its label as the rest of the window
+    /// shows it, its id when it has none ("Add circle circle1"); "the world" for kWorld.
     static QString bodyName(const lessons::Scene& scene, int body);
 
     /// The stiffness of a new spring [N/m] (the inspector changes it).

@@ -251,8 +251,11 @@ QString SceneProperties::editName(const Row& row, int component) const
     const int index = indexOf(row.object);
     if (row.object == Object::Body) {
         const QString body = EditTools::bodyName(m_document.scene(), index);
-        if (row.field->key == "id")
-            return tr("Rename %1 to %2").arg(body, idField()->text());
+        if (row.field->key == "id") // the id itself, which the label (if any) does not show
+            return tr("Rename %1 to %2")
+                .arg(QString::fromStdString(
+                         m_document.scene().bodies[static_cast<std::size_t>(index)].name),
+                     idField()->text());
         if (row.field->key == "type")
             return tr("Set type of %1").arg(body);
         return tr("Set %1 of %2").arg(label, body);

@@ -7,6 +7,7 @@
 #include "lesson_player/step_text.h"
 
 #include "common/accessible_names.h"
+#include "common/job_progress.h"
 
 #include "format/data_dirs.h"
 #include "run/measurements.h"
@@ -97,6 +98,10 @@ LessonEditor::LessonEditor(QWidget* parent) : QWidget(parent, Qt::Window)
     buildActions();
     m_checks = new StepChecks(this);
     connect(m_checks, &StepChecks::finished, this, &LessonEditor::refresh);
+    auto* progress = new JobProgress(m_checks->job(), tr("Checking the steps' scenes"),
+                                     tr("Cancel checking the steps' scenes"), this);
+    progress->setObjectName(QStringLiteral("stepChecksProgress"));
+    layout->addWidget(progress);
 
     m_autosaveTimer = new QTimer(this);
     m_autosaveTimer->setInterval(kAutosaveMs);

@@ -334,6 +334,8 @@ void LessonEditor::refreshSteps()
     QString text = all.isEmpty() ? tr("No problems found.") : all.join(u'\n');
     if (m_checks->isRunning())
         text += u'\n' + tr("Running the steps' scenes to check them…");
+    else if (m_checks->wasCancelled())
+        text += u'\n' + tr("The steps' scenes were not checked: the checks were cancelled.");
     m_problems->setText(text);
 }
 

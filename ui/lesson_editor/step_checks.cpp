@@ -10,7 +10,6 @@
 #include "rigidlab/physics/world.h"
 
 #include <QLocale>
-#include <QThread>
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +27,8 @@ double runLength(const lessons::LessonStep& step)
 {
     double until = step.exportTime;
     for (const lessons::Question& q : step.questions)
-        until = std::max(until, q.measure.time);
+        if (const auto* measured = q.as<lessons::MeasuredQuestion>())
+            until = std::max(until, measured->measure.time);
     return until;
 }
 
@@ -68,12 +68,14 @@ bool lockedIntegrator(const lessons::LessonStep& step)
 std::optional<StepFinding::Spread> spreadOf(const lessons::LessonStep& step, int index,
                                             const std::atomic_bool& cancelled)
 {
-    const lessons::Question& q = step.questions[static_cast<std::size_t>(index)];
+    const lessons::Question& question = step.questions[static_cast<std::size_t>(index)];
     // Measured on the run the question asks for; an integrator it asks for is not the
-    // student's to choose. A choice question measures nothing.
-    if (q.isChoice() || q.set.has("integrator"))
+    // student's to choose. The other kinds measure nothing.
+    const auto* measured = question.as<lessons::MeasuredQuestion>();
+    if (!measured || measured->set.has("integrator"))
         return std::nullopt;
-    const lessons::LessonStep asked = lessons::askedStep(step, q);
+    const lessons::MeasuredQuestion& q = *measured;
+    const lessons::LessonStep asked = lessons::askedStep(step, question);
     const std::optional<double> value = lessons::measureAhead(asked, q.measure);
     if (!value)
         return std::nullopt;
@@ -98,7 +100,8 @@ std::optional<StepFinding::Spread> spreadOf(const lessons::LessonStep& step, int
 } // namespace
 
 std::vector<StepFinding> runStepChecks(const lessons::Lesson& lesson,
-                                       const std::atomic_bool& cancelled)
+                                       const std::atomic_bool& cancelled,
+                                       std::atomic_int* stepsDone)
 {
     std::vector<StepFinding> findings;
     for (const lessons::LessonStep& step : lesson.steps) {
@@ -115,6 +118,8 @@ std::vector<StepFinding> runStepChecks(const lessons::Lesson& lesson,
                 if (auto spread = spreadOf(step, i, cancelled))
                     finding.spreads.push_back(*spread);
         findings.push_back(std::move(finding));
+        if (stepsDone)
+            ++*stepsDone;
     }
     return findings;
 }
@@ -146,17 +151,7 @@ QStringList stepCheckLines(const StepFinding& finding)
     return lines;
 }
 
-StepChecks::StepChecks(QObject* parent) : QObject(parent) {}
-
-StepChecks::~StepChecks()
-{
-    // Closing the editor mid-check: the runs stop at their next look, and are waited for.
-    if (m_thread) {
-        m_cancelled->store(true);
-        m_thread->wait();
-        delete m_thread;
-    }
-}
+StepChecks::StepChecks(QObject* parent) : QObject(parent), m_job(new BackgroundJob(this)) {}
 
 void StepChecks::check(const lessons::Lesson& lesson, const QByteArray& key)
 {
@@ -164,48 +159,27 @@ void StepChecks::check(const lessons::Lesson& lesson, const QByteArray& key)
         return;
     m_key = key;
     m_findings.clear(); // they were of the lesson before this edit
-    m_pending = lesson;
-    if (m_thread) {
-        m_cancelled->store(true); // the next check starts once this one stopped
-        return;
-    }
-    start();
+    m_cancelled = false;
+    m_job->start(
+        [lesson](BackgroundJob::Control& control) {
+            control.total.store(static_cast<int>(lesson.steps.size()));
+            return runStepChecks(lesson, control.cancelled, &control.done);
+        },
+        [this](std::vector<StepFinding> result, bool cancelled) {
+            // Cancelled, the steps run so far are left unsaid rather than told as the lesson's.
+            m_cancelled = cancelled;
+            if (!cancelled)
+                m_findings = std::move(result);
+            emit finished();
+        });
 }
 
 void StepChecks::clear()
 {
     m_key.clear();
-    m_pending.reset();
     m_findings.clear();
-    if (m_thread)
-        m_cancelled->store(true);
-}
-
-void StepChecks::start()
-{
-    m_cancelled = std::make_shared<std::atomic_bool>(false);
-    m_thread = QThread::create([this, lesson = std::move(*m_pending), cancelled = m_cancelled] {
-        m_result = runStepChecks(lesson, *cancelled);
-    });
-    m_pending.reset();
-    connect(m_thread, &QThread::finished, this, &StepChecks::threadDone);
-    m_thread->start(QThread::LowPriority);
-}
-
-void StepChecks::threadDone()
-{
-    m_thread->deleteLater();
-    m_thread = nullptr;
-    std::vector<StepFinding> result = std::move(m_result);
-    m_result.clear();
-    if (m_pending) {
-        start(); // the lesson changed while this ran: its result is of an older lesson
-        return;
-    }
-    if (m_cancelled->load())
-        return;
-    m_findings = std::move(result);
-    emit finished();
+    m_cancelled = false;
+    m_job->discard();
 }
 
 } // namespace rigidlab::ui

@@ -4,9 +4,11 @@
 // run with the step's settings for its export time (and up to its questions' latest time),
 // whether a body falls off the stage before the step's end time, and whether the integrators
 // a student may choose measure a question wider apart than the answers judged right. These runs
-// take seconds, so they run in a thread of their own; an edit while they run cancels them, and a
-// result for a lesson that has changed since is dropped. The findings are data; the editor words
-// them (stepCheckLines).
+// take seconds, so they run as a BackgroundJob (common/background_job.h); an edit while they run
+// cancels them, a result for a lesson that has changed since is dropped, and the teacher may
+// cancel them. The findings are data; the editor words them (stepCheckLines).
+
+#include "common/background_job.h"
 
 #include "format/lesson.h"
 #include "run/off_stage.h"
@@ -17,11 +19,8 @@
 #include <QStringList>
 
 #include <atomic>
-#include <memory>
 #include <optional>
 #include <vector>
-
-class QThread;
 
 namespace rigidlab::ui {
 
@@ -45,9 +44,10 @@ struct StepFinding {
 };
 
 /// The runs of every step of `lesson`, one after another; stops early (returning what it has)
-/// once `cancelled` is set.
+/// once `cancelled` is set. `stepsDone`, when given, counts the steps checked.
 std::vector<StepFinding> runStepChecks(const lessons::Lesson& lesson,
-                                       const std::atomic_bool& cancelled);
+                                       const std::atomic_bool& cancelled,
+                                       std::atomic_int* stepsDone = nullptr);
 
 /// The findings in words, one line each, in the lab's language and numbers.
 QStringList stepCheckLines(const StepFinding& finding);
@@ -56,7 +56,6 @@ class StepChecks : public QObject {
     Q_OBJECT
 public:
     explicit StepChecks(QObject* parent = nullptr);
-    ~StepChecks() override;
 
     /// Checks `lesson` in the worker; a check of an older lesson still running is cancelled
     /// and its result never shown. `key` says what the runs depend on: the same key as the
@@ -64,25 +63,23 @@ public:
     void check(const lessons::Lesson& lesson, const QByteArray& key);
     /// Forgets the findings (the lesson cannot be read): nothing is being checked.
     void clear();
-    bool isRunning() const { return m_thread != nullptr; }
+    bool isRunning() const { return m_job->isRunning(); }
+    /// Whether the last check was cancelled by hand (job().cancel()): it found nothing.
+    bool wasCancelled() const { return m_cancelled; }
     /// The last finished check's findings, one per step (empty while none finished).
     const std::vector<StepFinding>& findings() const { return m_findings; }
+    /// The worker, for a progress indication and its Cancel (which finishes with no findings).
+    BackgroundJob& job() { return *m_job; }
 
 signals:
-    /// A check finished for the lesson as it is now: findings() holds it.
+    /// A check finished, or was cancelled, for the lesson as it is now: findings() holds it.
     void finished();
 
 private:
-    void start();
-    void threadDone();
-
-    QThread* m_thread = nullptr;
-    std::shared_ptr<std::atomic_bool> m_cancelled;
-    std::vector<StepFinding> m_result; ///< written by the worker, read after it finished
+    BackgroundJob* m_job = nullptr;
     std::vector<StepFinding> m_findings;
-    std::optional<lessons::Lesson> m_pending; ///< to check once the running check stopped
-    QByteArray m_key;                         ///< what the last check asked depended on
-    bool m_stale = false;                     ///< the running check is of an older lesson
+    QByteArray m_key; ///< what the last check asked depended on
+    bool m_cancelled = false;
 };
 
 } // namespace rigidlab::ui

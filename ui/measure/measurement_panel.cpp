@@ -22,6 +22,8 @@
 #include <QScrollBar>
 #include <QVBoxLayout>
 
+#include <iterator>
+
 namespace rigidlab::ui {
 
 namespace {
@@ -328,6 +330,49 @@ void MeasurementPanel::clearPlots()
 {
     m_comparison->clear();
     m_residual->clear();
+    for (const int series : m_otherSeries)
+        m_comparison->graph(series)->removeFromLegend();
+    m_othersShown = 0;
+    m_comparison->setSeriesLegend(kMeasured, tr("measured"));
+}
+
+void MeasurementPanel::showOtherFiles(const QString& comparedFile,
+                                      const std::vector<FileSeries>& others)
+{
+    // Each file's markers in a shape of their own beside the circles compared; a series once
+    // added stays (a plot keeps its series), out of the legend while no file needs it.
+    constexpr QCPScatterStyle::ScatterShape kShapes[] = {
+        QCPScatterStyle::ssTriangle, QCPScatterStyle::ssSquare, QCPScatterStyle::ssDiamond,
+        QCPScatterStyle::ssTriangleInverted};
+    constexpr int kFirstColour = 3; // after the measured, simulated and residual series
+    while (m_otherSeries.size() < others.size()) {
+        const auto k = static_cast<int>(m_otherSeries.size());
+        const int series = m_comparison->addSeries(QString(), plotColor(kFirstColour + k));
+        asMarkers(*m_comparison, series, kShapes[k % std::size(kShapes)]);
+        m_otherSeries.push_back(series);
+    }
+    for (std::size_t k = 0; k < m_otherSeries.size(); ++k) {
+        const int series = m_otherSeries[k];
+        if (k >= others.size()) {
+            m_comparison->graph(series)->removeFromLegend();
+            continue;
+        }
+        const FileSeries& other = others[k];
+        m_comparison->graph(series)->addToLegend();
+        m_comparison->setSeriesLegend(series, other.file);
+        m_comparison->setSeriesColumn(
+            series, QStringLiteral("%1 [%2]").arg(other.file, m_comparison->seriesUnit(series)));
+        for (std::size_t i = 0; i < other.series.t.size(); ++i)
+            m_comparison->appendPoint(series, other.series.t[i], other.series.value[i]);
+    }
+    // Named by its file too where there are others, and what it is used for.
+    m_comparison->setSeriesLegend(
+        kMeasured, others.empty() ? tr("measured") : tr("%1 (fit, residuals)").arg(comparedFile));
+    m_comparison->drain();
+    if (others.size() != m_othersShown) {
+        m_othersShown = others.size();
+        emit legendChanged();
+    }
 }
 
 std::vector<PlotWidget*> MeasurementPanel::plotsShown() const

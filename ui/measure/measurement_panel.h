@@ -12,6 +12,7 @@
 // scroll area of its own.
 
 #include "measure/measurement.h"
+#include "measure/measurement_files.h"
 
 #include <QString>
 #include <QWidget>
@@ -63,6 +64,11 @@ public:
     void showComparison(const measure::Series& measured, const std::vector<double>& lineT,
                         const std::vector<double>& lineValue, const std::vector<double>& residuals,
                         const QString& error);
+    /// The same quantity measured in other files, each as markers of a shape of its own named
+    /// by its file, beside the points compared, which come from `comparedFile` (the last file
+    /// imported that has the quantity: the residuals and the fit use it, and its legend says
+    /// so). Without others the points compared are "measured". After showComparison().
+    void showOtherFiles(const QString& comparedFile, const std::vector<FileSeries>& others);
     void clearPlots();
     /// Back to how it was before anything was imported: no source, no choices, no plots, no fit.
     void clear();
@@ -96,6 +102,9 @@ public:
 
 signals:
     void choiceChanged();
+    /// The comparison's legend names other series (another file's): it may take another row
+    /// from the data area.
+    void legendChanged();
     void fitRequested();
     void cancelFitRequested();
     void applyRequested();
@@ -122,6 +131,8 @@ private:
     QComboBox* m_quantity = nullptr;
     PlotWidget* m_comparison = nullptr;
     PlotWidget* m_residual = nullptr;
+    std::vector<int> m_otherSeries; ///< the other files' series in m_comparison, in order
+    std::size_t m_othersShown = 0;  ///< how many of them the legend names
     QCheckBox* m_showResiduals = nullptr;
     QLabel* m_message = nullptr;
     QGroupBox* m_fitBox = nullptr;

@@ -22,6 +22,16 @@ SettingEdits editsAtStart(const physics::WorldDef& start, const physics::WorldDe
     return edits;
 }
 
+void applyToComparedWorld(const SettingEdit& edit, physics::World& world)
+{
+    namespace schema = lessons::schema;
+    if (edit.object != schema::Object::World)
+        return;
+    const schema::Field* row = schema::findField(schema::Object::World, edit.key);
+    if (row != nullptr && row->apply != nullptr && !row->mainWorldOnly)
+        row->apply(world, edit.value);
+}
+
 void SettingEditLog::log(SettingEdit edit, long long step)
 {
     dropAfter(step);

@@ -40,6 +40,12 @@ using SettingEdits = std::vector<SettingEdit>;
 /// what a reset keeps.
 SettingEdits editsAtStart(const physics::WorldDef& start, const physics::WorldDef& now);
 
+/// Makes a world setting's edit in a compared world (one run beside the main world, for
+/// example with another integrator): every world follows the settings, except those the
+/// comparison is about (schema::Field::mainWorldOnly: integrator, solver, iterations). A body's
+/// edit is the main world's only.
+void applyToComparedWorld(const SettingEdit& edit, physics::World& world);
+
 /// The edits of the run the controller has, in order. A change made after going back drops
 /// the edits of the future it replaces.
 class SettingEditLog {

@@ -89,12 +89,10 @@ void SimulationController::reset()
     m_world = m_worldStart;
     m_variants = m_variantStarts;
     for (const SettingEdit& edit : kept) {
-        const lessons::schema::Field* row =
-            lessons::schema::findField(lessons::schema::Object::World, edit.key);
-        if (row->mainWorldOnly)
-            row->apply(m_world, edit.value);
-        else
-            forEachWorld([&](physics::World& w) { row->apply(w, edit.value); });
+        lessons::schema::findField(lessons::schema::Object::World, edit.key)
+            ->apply(m_world, edit.value);
+        for (physics::World& w : m_variants)
+            applyToComparedWorld(edit, w);
     }
     m_edits.restart(kept);
     resetClock();
@@ -241,12 +239,18 @@ void SimulationController::seek(long long step)
     m_world = m_history.restore(step);
     m_world.updateDiagnostics();
     // The compared worlds have no history of their own: they are small (lesson scenes)
-    // and replay from their start, deterministically.
+    // and replay from their start, deterministically, with the settings changed on the way
+    // made again at the steps they were made at.
+    const SettingEdits& edits = m_edits.edits();
     for (std::size_t i = 0; i < m_variants.size(); ++i) {
         physics::World w = m_variantStarts[i];
-        w.setDt(m_world.def().dt);
-        while (w.stepCount() < step)
-            w.step();
+        auto edit = edits.begin();
+        for (;; w.step()) {
+            for (; edit != edits.end() && edit->step <= w.stepCount(); ++edit)
+                applyToComparedWorld(*edit, w);
+            if (w.stepCount() >= step)
+                break;
+        }
         w.updateDiagnostics();
         m_variants[i] = std::move(w);
     }
@@ -303,11 +307,11 @@ void SimulationController::setSetting(std::string_view key, const lessons::schem
                     [&](const schema::Field& f) { return f.fallback == key; });
     if (!resetsBodies && row->get(now, 0) == value)
         return;
-    logEdit({0, schema::Object::World, 0, row->key, value});
-    if (row->mainWorldOnly)
-        row->apply(m_world, value);
-    else
-        forEachWorld([&](physics::World& w) { row->apply(w, value); });
+    const SettingEdit edit{0, schema::Object::World, 0, row->key, value};
+    logEdit(edit);
+    row->apply(m_world, value);
+    for (physics::World& w : m_variants)
+        applyToComparedWorld(edit, w);
     afterEdit(settingMark(*row, value));
 }
 

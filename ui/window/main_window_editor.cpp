@@ -5,6 +5,7 @@
 #include "window/main_window.h"
 
 #include "common/accessible_names.h"
+#include "common/current_with_focus.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "editor/scene_properties.h"
@@ -105,6 +106,7 @@ void MainWindow::buildHistoryDock(QDockWidget& properties)
     view->setToolTip(tr("Every edit since the scene was opened; click one to go back to it "
                         "(the later ones stay, to redo)"));
     view->setAccessibleName(tr("History of edits"));
+    keepCurrentOnlyWhileFocused(*view);
     // As narrow as the other panels: a long entry scrolls rather than widening the column.
     view->setHorizontalScrollBarPolicy(Qt::ScrollBarAsNeeded);
     view->setTextElideMode(Qt::ElideRight);

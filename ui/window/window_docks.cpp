@@ -4,6 +4,7 @@
 
 #include "common/accessible_names.h"
 #include "common/theme.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "window/dock_tabs.h"
 #include "window/window_names.h"
@@ -55,14 +56,14 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
             Qt::RightDockWidgetArea);
     addDock(panelTitle(1, false), QStringLiteral("inspector"), panels.inspector,
             Qt::RightDockWidgetArea);
-    static_assert(kPlotNames.size() == std::tuple_size_v<decltype(panels.plots)>);
-    for (std::size_t i = 0; i < kPlotNames.size(); ++i) {
-        PlotWidget* plot = panels.plots[i];
+    for (PlotWidget* plot : panels.plots) {
+        const PlotRow* row = findPlot(plot->objectName());
+        Q_ASSERT(row); // made by its row (makeWorldPlot)
         // Small enough that the plots fit beside the world on a 1024×768 projector.
         plot->setMinimumSize(180, 150);
         plot->setTitleShown(false); // the dock shows it
-        addDock(windowNameText(kPlotNames[i].shortTitle), QLatin1String(kPlotNames[i].name), plot,
-                Qt::RightDockWidgetArea, windowNameText(kPlotNames[i].title));
+        addDock(plotTitle(*row, false), plot->objectName(), plot, Qt::RightDockWidgetArea,
+                plotTitle(*row));
     }
     addDock(panelTitle(2, false), QStringLiteral("sat"), panels.sat, Qt::RightDockWidgetArea,
             panelTitle(2, true))
@@ -153,8 +154,8 @@ void WindowLayout::showWhenAsked(QDockWidget& dock)
 
 QDockWidget* WindowLayout::dock(const QString& name) const
 {
-    if (name == QLatin1String("compare-energy") || name == QLatin1String("compare-drift"))
-        return m_compareDock;
+    if (const PlotRow* plot = findPlot(name); plot && !plot->inWindow())
+        return m_compareDock; // the compared worlds' plots share one dock
     return m_docks.value(name, nullptr);
 }
 

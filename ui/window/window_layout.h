@@ -41,7 +41,7 @@ public:
         QWidget* lessonNavigation = nullptr; ///< below the lesson, outside its scrolling
         QWidget* controls = nullptr;
         QWidget* inspector = nullptr;
-        std::array<PlotWidget*, 3> plots{}; ///< in the order of kPlotNames
+        QList<PlotWidget*> plots; ///< each under its object name, its row's (plot_table.h)
         QWidget* sat = nullptr;
         QWidget* bounces = nullptr;
         QWidget* collision = nullptr;
@@ -73,6 +73,9 @@ public:
     bool compact() const { return m_compact; }
     /// Side columns no wider than their share of the window's width: the world keeps half.
     void fitSideColumns();
+    /// The plots' least heights again once the layout has settled (several asks, one run):
+    /// a plot's legend took another row, say.
+    void fitPlotHeightSoon();
     void save(QSettings& settings) const;
     void restore(const QSettings& settings);
 
@@ -105,10 +108,10 @@ private:
     void shareColumnHeight();
     /// The plots under the world tall enough for a readable data area (a small screen).
     void fitPlotHeight();
+    /// Each table panel shown scrolled to its table, not to the description above it.
+    void scrollTablesToData();
     /// The plots' least heights back to the plain one (until fitPlotHeight() runs again).
     void relaxPlotHeights();
-    /// fitPlotHeight() once the layout has settled (several asks, one run).
-    void fitPlotHeightSoon();
     /// A plot resized: fitPlotHeight() again, once the layout has settled.
     bool eventFilter(QObject* watched, QEvent* event) override;
     /// Fonts set on widgets of their own grow with presentation mode, and come back after.

@@ -83,7 +83,7 @@ void DuplicateTool::duplicate(int body)
     const double width = bodyWidth(def);
     const double g = m_tools.gridStep();
     const double offset = m_tools.snapping() ? std::ceil(width / g) * g : width;
-    const QString name = QString::fromStdString(def.name);
+    const QString name = EditTools::bodyName(scene, body);
     const auto result = lessons::edit::duplicateBody(scene, body, Vec2(offset, 0.0));
     if (m_tools.apply(
             tr("Duplicate %1 as %2").arg(name, EditTools::bodyName(result.scene, result.body)),

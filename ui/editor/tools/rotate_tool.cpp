@@ -71,7 +71,7 @@ bool RotateTool::move(const ToolPointer& pointer)
     if (m_tools.snapping()) {
         angle = std::round(angle / kAngleSnap) * kAngleSnap;
     }
-    const QString name = QString::fromStdString(def.name);
+    const QString name = EditTools::bodyName(scene, m_body);
     if (m_tools.apply(tr("Rotate %1").arg(name), lessons::edit::rotateBody(scene, m_body, angle),
                       m_mergeId)) {
         m_tools.say(tr("%1 at %2°").arg(name, formatNumber(angle * 180.0 / std::numbers::pi, 4)));

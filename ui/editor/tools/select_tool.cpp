@@ -63,7 +63,7 @@ bool SelectTool::move(const ToolPointer& pointer)
     }
     const lessons::Scene& scene = m_tools.scene();
     const Vec2 target = m_tools.movedBodyTarget(m_body, m_grabOffset, pointer.raw);
-    const QString name = QString::fromStdString(scene.bodies[static_cast<size_t>(m_body)].name);
+    const QString name = EditTools::bodyName(scene, m_body);
     if (m_tools.apply(tr("Move %1").arg(name), edit::moveBody(scene, m_body, target), m_mergeId)) {
         m_tools.say(tr("%1 at (%2; %3) m")
                         .arg(name, m_tools.metres(target.x()), m_tools.metres(target.y())));

@@ -6,8 +6,8 @@
 
 #include "editor/tools/tool.h"
 
-namespace rigidlab::physics {
-struct BodyDef;
+namespace rigidlab::lessons {
+struct Scene;
 }
 
 namespace rigidlab::ui {
@@ -35,7 +35,7 @@ private:
     /// Sets the velocity as the arrow's handle is dragged to `raw` [m]; one undo step a drag.
     void dragVelocity(const physics::Vec2& raw);
     /// "ball: v = (1,5; −2) m/s, |v| = 2,5 m/s", in the locale.
-    static QString velocityText(const physics::BodyDef& def);
+    static QString velocityText(const lessons::Scene& scene, int body);
 
     int m_body = -1;         ///< the body being dragged, -1 when no drag is under way
     bool m_velocity = false; ///< dragging its velocity arrow rather than the body

@@ -41,7 +41,7 @@ bool SelectTool::pressVelocityHandle(const Vec2& raw)
     m_press = raw;
     m_startVelocity = def.velocity;
     m_mergeId = m_tools.newMergeId();
-    m_tools.say(velocityText(def));
+    m_tools.say(velocityText(m_tools.scene(), selected));
     m_tools.refreshOverlay();
     return true;
 }
@@ -58,17 +58,18 @@ void SelectTool::dragVelocity(const Vec2& raw)
     if (v == def.velocity) {
         return;
     }
-    const QString name = QString::fromStdString(def.name);
+    const QString name = EditTools::bodyName(scene, m_body);
     if (m_tools.apply(tr("Set velocity of %1").arg(name), edit::setBodyVelocity(scene, m_body, v),
                       m_mergeId)) {
-        m_tools.say(velocityText(m_tools.scene().bodies[static_cast<size_t>(m_body)]));
+        m_tools.say(velocityText(m_tools.scene(), m_body));
     }
 }
 
-QString SelectTool::velocityText(const physics::BodyDef& def)
+QString SelectTool::velocityText(const lessons::Scene& scene, int body)
 {
+    const physics::BodyDef& def = scene.bodies[static_cast<size_t>(body)];
     return tr("%1: v = (%2; %3) m/s, |v| = %4 m/s (arrow: the distance covered in %5 s)")
-        .arg(QString::fromStdString(def.name), formatNumber(def.velocity.x(), 4),
+        .arg(EditTools::bodyName(scene, body), formatNumber(def.velocity.x(), 4),
              formatNumber(def.velocity.y(), 4), formatNumber(def.velocity.norm(), 4),
              formatNumber(kArrowSeconds, 3));
 }
