@@ -68,11 +68,9 @@ int writeWorksheetCommand(const CommandLine& args, const QString& lessonPath, co
     printWarnings(loaded.warnings);
     if (!loaded.ok)
         return inputError(loaded.error);
-    std::vector<int> questions;
-    for (const lessons::LessonStep& step : loaded.lesson.steps)
-        questions.push_back(static_cast<int>(step.questions.size()));
     if (const QString bad =
-            lessons::answersMismatch(answers, QFileInfo(loaded.lesson.path).fileName(), questions);
+            lessons::answersMismatch(answers, QFileInfo(loaded.lesson.path).fileName(),
+                                     lessons::questionCounts(loaded.lesson));
         !bad.isEmpty())
         return inputError(QStringLiteral("%1: %2 (answers for another lesson?)")
                               .arg(answersPath.value_or(QString()), bad));

@@ -138,6 +138,9 @@ struct RigidLabBenchSettings {
     int iterations = 8;         ///< velocity iterations
     int positionIterations = 3; ///< position correction passes (at most)
     bool sleep = false;
+    /// The soft step's contact passes in single precision (SoftStepSettings::singlePrecision):
+    /// the row "RigidLab SS f32", opt-in, not the default solver.
+    bool singlePrecision = false;
 };
 std::unique_ptr<BenchEngine> makeRigidLabBenchEngine(const RigidLabBenchSettings& settings = {});
 

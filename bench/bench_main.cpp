@@ -45,6 +45,8 @@ makeEngines([[maybe_unused]] std::vector<std::string>& missing)
     bench::RigidLabBenchSettings soft;
     soft.solver = physics::SolverKind::SoftStep;
     engines.push_back(bench::makeRigidLabBenchEngine(soft));
+    soft.singlePrecision = true; // opt-in, measured beside the default
+    engines.push_back(bench::makeRigidLabBenchEngine(soft));
 #ifdef RIGIDLAB_BENCH_BOX2D_V3
     engines.push_back(bench::makeBox2dV3Engine_sse2());
     engines.push_back(bench::makeBox2dV3Engine_avx2());
@@ -106,7 +108,7 @@ int main(int argc, char** argv)
         const bench::BenchScene scene = *bench::makeBenchScene(name);
         for (auto& engine : engines) {
             results.push_back(bench::runBench(*engine, scene, options));
-            std::fprintf(stderr, "  %-13s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
+            std::fprintf(stderr, "  %-15s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
                          name.c_str(), results.back().msPerStep);
         }
     }

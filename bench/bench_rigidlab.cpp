@@ -36,15 +36,20 @@ public:
 
     std::string name() const override
     {
-        return m_settings.solver == physics::SolverKind::SoftStep ? "RigidLab SS" : "RigidLab";
+        if (m_settings.solver != physics::SolverKind::SoftStep)
+            return "RigidLab";
+        return m_settings.singlePrecision ? "RigidLab SS f32" : "RigidLab SS";
     }
     std::string settings() const override
     {
         if (m_settings.solver == physics::SolverKind::SoftStep)
             return std::string(physics::solverName(m_settings.solver)) + ", " +
                    std::to_string(physics::SoftStepSettings{}.substeps) +
-                   " substeps, symplectic Euler, double precision, sleeping " +
-                   (m_settings.sleep ? "on" : "off");
+                   " substeps, symplectic Euler, " +
+                   (m_settings.singlePrecision
+                        ? "contact passes in single precision (the rest double), "
+                        : "double precision, ") +
+                   "sleeping " + (m_settings.sleep ? "on" : "off");
         return std::string(physics::solverName(m_settings.solver)) + ", " +
                std::to_string(m_settings.iterations) + " velocity / " +
                std::to_string(m_settings.positionIterations) +
@@ -80,6 +85,7 @@ physics::World buildBenchWorld(const BenchScene& scene, const RigidLabBenchSetti
     def.sleep = settings.sleep;
     physics::World world(def);
     world.contactSettings().positionIterations = settings.positionIterations;
+    world.contactSettings().soft.singlePrecision = settings.singlePrecision;
     for (const BenchBody& b : scene.bodies) {
         physics::BodyDef d;
         d.type = b.isStatic ? physics::BodyType::Static : physics::BodyType::Dynamic;

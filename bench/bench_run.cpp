@@ -140,7 +140,7 @@ std::string benchTable(const std::vector<BenchResult>& results)
             s.append(width - s.size(), ' ');
         return s;
     };
-    std::string out = pad("engine", 15) + pad("scene", 13) + pad("bodies", 8) + pad("ms/step", 10) +
+    std::string out = pad("engine", 17) + pad("scene", 13) + pad("bodies", 8) + pad("ms/step", 10) +
                       pad("ratio", 8) + pad("stability (10 s)", 26) + "counts\n";
     for (const BenchResult& r : results) {
         const auto it = ours.find(r.scene);
@@ -150,7 +150,7 @@ std::string benchTable(const std::vector<BenchResult>& results)
             if (&r != it->second)
                 counts = atLeastAsStable(*it->second, r) ? "yes" : "no: RigidLab less stable";
         }
-        out += pad(r.engine, 15) + pad(r.scene, 13) + pad(std::to_string(r.bodies), 8) +
+        out += pad(r.engine, 17) + pad(r.scene, 13) + pad(std::to_string(r.bodies), 8) +
                pad(format("%.3f", r.msPerStep), 10) + pad(ratio, 8) + pad(stabilityText(r), 26) +
                counts + "\n";
     }
@@ -185,6 +185,16 @@ std::string softStepTargets(const std::vector<BenchResult>& results)
             } else {
                 out += " " + engine + " missing;";
             }
+        }
+        // The opt-in single-precision passes (not the default solver), for comparison only.
+        if (const BenchResult* single = find("RigidLab SS f32", scene)) {
+            std::string against;
+            for (const char* build : {"SSE2", "AVX2"})
+                if (const BenchResult* v3 = find(std::string("Box2D v3 ") + build, scene))
+                    against += (against.empty() ? "" : ", ") +
+                               format("%.2fx ", single->msPerStep / v3->msPerStep) + build;
+            if (!against.empty())
+                out += " opt-in single precision: " + against + ";";
         }
         if (const BenchResult* cp = find("Chipmunk", scene)) {
             const double ratio = cp->msPerStep / soft->msPerStep;

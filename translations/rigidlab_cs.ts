@@ -468,7 +468,7 @@
     </message>
     <message>
         <source>Instruments on the scene: ruler, protractor, stopwatch, probe, frame of reference</source>
-        <translation>Přístroje ve scéně: pravítko, úhloměr, stopky, sonda, vztažná soustava</translation>
+        <translation>Měřidla ve scéně: pravítko, úhloměr, stopky, sonda, vztažná soustava</translation>
     </message>
     <message>
         <source>A graph of chosen bodies&apos; quantities against time</source>
@@ -1755,11 +1755,11 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>Gravity</source>
-        <translation>Gravitace</translation>
+        <translation>Tíhová síla</translation>
     </message>
     <message>
         <source>Time scale</source>
-        <translation>Zpomalení času</translation>
+        <translation>Časové měřítko</translation>
     </message>
     <message>
         <source>Title</source>
@@ -2488,7 +2488,7 @@ n = (%4; %5)</translation>
     </message>
     <message>
         <source>This question is asked with %1, from the start of the run. In your run %2: set it with the controls, press Reset and run again, then check.</source>
-        <translation>Tato otázka se ptá na běh s nastavením %1 od jeho začátku. Ve vašem běhu %2: nastavte to v Ovládání, stiskněte Na začátek, spusťte běh znovu a pak odpověď zkontrolujte.</translation>
+        <translation>Tato otázka se ptá na běh s nastavením %1 od jeho začátku; váš běh se liší (%2). Nastavte to v Ovládání, stiskněte Na začátek, spusťte běh znovu a pak odpověď zkontrolujte.</translation>
     </message>
 </context>
 <context>
@@ -2756,6 +2756,10 @@ n = (%4; %5)</translation>
     <message>
         <source>PDF document (*.pdf)</source>
         <translation>Dokument PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
     </message>
 </context>
 <context>
@@ -5043,6 +5047,18 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
             <numerusform>Určuji… zatím %n běhů modelu</numerusform>
         </translation>
     </message>
+    <message>
+        <source>Residuals</source>
+        <translation>Rezidua</translation>
+    </message>
+    <message>
+        <source>Comparison and fit</source>
+        <translation>Porovnání a&#xa0;určení z&#xa0;měření</translation>
+    </message>
+    <message>
+        <source>%1 (fit, residuals)</source>
+        <translation>%1 (určení, rezidua)</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementSession</name>
@@ -5085,6 +5101,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
             <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
             <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Fitted to the measurement in %1.</source>
+        <translation>Určeno z&#xa0;měření v&#xa0;souboru %1.</translation>
     </message>
     <message>
         <source>Fit first: there are no fitted values to apply.</source>
@@ -5309,6 +5329,13 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::QuestionArea</name>
+    <message>
+        <source>Questions</source>
+        <translation>Otázky</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::QuestionEditor</name>
     <message>
         <source>height of a bounce&apos;s top</source>
@@ -5464,7 +5491,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Stu&amp;dent sets first</source>
-        <translation>St&amp;udent nejdřív nastaví</translation>
+        <translation>Žá&amp;k nejdřív nastaví</translation>
     </message>
     <message>
         <source>Option %1</source>
@@ -6364,13 +6391,6 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>this build of RigidLab cannot write SVG</source>
         <translation>toto sestavení RigidLabu neumí zapisovat SVG</translation>
-    </message>
-</context>
-<context>
-    <name>rigidlab::ui::QuestionArea</name>
-    <message>
-        <source>Questions</source>
-        <translation>Otázky</translation>
     </message>
 </context>
 </TS>

@@ -45,9 +45,12 @@ QStringList LessonStep::heldBack(const std::vector<bool>& answered) const
 LessonStep askedStep(const LessonStep& step, const Question& question)
 {
     LessonStep asked = step;
-    for (const schema::Field& f : schema::settings()) {
-        if (question.set.has(f.key)) {
-            asked.settings.set(f.key, question.set.value(f.key));
+    // Only a measured question runs the step; the others ask it as it is.
+    if (const MeasuredQuestion* measured = question.as<MeasuredQuestion>()) {
+        for (const schema::Field& f : schema::settings()) {
+            if (measured->set.has(f.key)) {
+                asked.settings.set(f.key, measured->set.value(f.key));
+            }
         }
     }
     return asked;
@@ -55,7 +58,16 @@ LessonStep askedStep(const LessonStep& step, const Question& question)
 
 bool asksSettings(const Question& question)
 {
-    return !question.set.empty();
+    const MeasuredQuestion* measured = question.as<MeasuredQuestion>();
+    return measured && !measured->set.empty();
+}
+
+std::vector<int> questionCounts(const Lesson& lesson)
+{
+    std::vector<int> counts;
+    for (const LessonStep& step : lesson.steps)
+        counts.push_back(static_cast<int>(step.questions.size()));
+    return counts;
 }
 
 void applySettings(const StepSettings& settings, physics::World& world)

@@ -103,18 +103,31 @@ private:
 inline constexpr int kMinChoices = 2;
 inline constexpr int kMaxChoices = 6;
 
-/// A question answered by a number measured from the run (`measure`, `unit`, tolerances) or,
-/// when `choices` is not empty, by picking one of a few texts.
-struct Question {
-    QString prompt;  ///< plain text, shown above the answer box (or the options)
-    Measure measure; ///< a measured question's; unused by a choice question
-    /// A choice question's options, in the language the lesson is kept in; empty: the
-    /// question is a measured one.
-    QStringList choices;
-    int answer = 0;                 ///< the right one of `choices` (0-based)
+/// A question answered by a number measured from the run: the answer typed is right within
+/// the tolerances of the value `measure` reads.
+struct MeasuredQuestion {
+    Measure measure;                ///< what the answer is checked against
     QString unit;                   ///< shown after the answer box, e.g. "m"
     double tolerance = 0.05;        ///< relative to the measured value
     double absoluteTolerance = 0.0; ///< added to it, for values near zero
+    /// The settings the student is asked to set (with the step's controls) before the run
+    /// this question measures: keys of "settings" but timeScale. The answer is measured with
+    /// them, and a run without them is not judged. All unset: the step's own settings.
+    StepSettings set;
+};
+
+/// A question answered by picking one of a few texts; nothing is measured.
+struct ChoiceQuestion {
+    /// The options, in the language the lesson is kept in (kMinChoices to kMaxChoices).
+    QStringList choices;
+    int answer = 0; ///< the right one of `choices` (0-based)
+};
+
+/// A question: what every kind has (its prompt, hint and what it holds back) and its kind, a
+/// type of its own. Where the kinds differ the code visits `kind` (physics/overloaded.h), so
+/// that a new kind does not compile until every such place handles it.
+struct Question {
+    QString prompt; ///< plain text, shown above the answer box (or the options)
     /// Read after a wrong first try, instead of the measured value (lesson data, so that it
     /// is translated with the lesson); empty: none.
     QString hint;
@@ -122,12 +135,13 @@ struct Question {
     /// answered right, twice wrong or shown: "run", "panel:NAME", "plot:NAME",
     /// "column:collision.after", "column:bounces.heights" (LESSON_FORMAT.md).
     QStringList holdBack;
-    /// The settings the student is asked to set (with the step's controls) before the run
-    /// this question measures: keys of "settings" but timeScale. The answer is measured with
-    /// them, and a run without them is not judged. All unset: the step's own settings.
-    StepSettings set;
+    std::variant<MeasuredQuestion, ChoiceQuestion> kind;
 
-    bool isChoice() const { return !choices.isEmpty(); }
+    /// The kind's own part when the question is of kind K, else null: for a place that reads
+    /// one kind only (the others have nothing of the sort); where each kind does something
+    /// of its own, visit `kind` instead.
+    template <class K> const K* as() const { return std::get_if<K>(&kind); }
+    template <class K> K* as() { return std::get_if<K>(&kind); }
 };
 
 /// The names a question may hold back, besides "panel:" and "plot:" with a panel or plot the
@@ -232,6 +246,10 @@ LessonLoadResult loadLessonObject(const QJsonObject& root, const QString& path,
 LessonStep askedStep(const LessonStep& step, const Question& question);
 /// Whether the question asks the student to set anything.
 bool asksSettings(const Question& question);
+
+/// The question counts of the lesson's steps, in order: what an answers file is checked
+/// against (answersMismatch, answers_file.h).
+std::vector<int> questionCounts(const Lesson& lesson);
 
 /// Applies a step's settings to a world built from its scene.
 void applySettings(const StepSettings& settings, physics::World& world);

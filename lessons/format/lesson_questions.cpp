@@ -5,6 +5,9 @@
 #include "format/lesson_reading.h"
 
 #include <array>
+#include <cassert>
+#include <type_traits>
+#include <variant>
 
 namespace rigidlab::lessons::detail {
 
@@ -180,7 +183,7 @@ bool readHoldBack(JsonReader& in, const QJsonObject& object, const QString& plac
 /// A choice question's options: only the list form, each option a text of its own (an object of
 /// languages holding lists could give the languages different numbers of options).
 bool readChoices(JsonReader& in, LocalTexts& texts, const QJsonObject& object, const QString& place,
-                 Question& question)
+                 ChoiceQuestion& choice)
 {
     const QString at = joinPlace(place, u"choices");
     if (!object.contains(u"choices")) {
@@ -195,32 +198,33 @@ bool readChoices(JsonReader& in, LocalTexts& texts, const QJsonObject& object, c
                                describeJson(object.value(u"choices")));
     }
     if (!texts.list(object, u"choices", place, kMaxChoices, FileMessages::tr("options"),
-                    question.choices)) {
+                    choice.choices)) {
         return false;
     }
-    if (question.choices.size() < kMinChoices) {
+    if (choice.choices.size() < kMinChoices) {
         return in.fail(at, FileMessages::tr("%1 options, fewer than the %2 a choice needs")
-                               .arg(question.choices.size())
+                               .arg(choice.choices.size())
                                .arg(kMinChoices));
     }
     return true;
 }
 
 /// The right option of a choice question, after its options.
-bool readAnswer(JsonReader& in, const QJsonObject& object, const QString& place, Question& question)
+bool readAnswer(JsonReader& in, const QJsonObject& object, const QString& place,
+                ChoiceQuestion& choice)
 {
     if (!object.contains(u"answer")) {
         return in.fail(joinPlace(place, u"answer"),
                        FileMessages::tr("required, but missing (the index of the right option, "
                                         "0 for the first)"));
     }
-    return in.integer(object, u"answer", place, question.answer, 0,
-                      static_cast<int>(question.choices.size()) - 1, true);
+    return in.integer(object, u"answer", place, choice.answer, 0,
+                      static_cast<int>(choice.choices.size()) - 1, true);
 }
 
 /// A question's "measure": what its answer is checked against.
 bool readMeasureKey(JsonReader& in, const QJsonObject& object, const QString& place,
-                    const Scene& scene, Question& question)
+                    const Scene& scene, MeasuredQuestion& measured)
 {
     if (!object.contains(u"measure")) {
         return in.fail(joinPlace(place, u"measure"),
@@ -228,25 +232,81 @@ bool readMeasureKey(JsonReader& in, const QJsonObject& object, const QString& pl
                                         "against)"));
     }
     return readMeasure(in, object.value(u"measure"), joinPlace(place, u"measure"), scene,
-                       question.measure);
+                       measured.measure);
 }
 
-/// A part of a question (a row of kind Part), by its key, read by its own function.
-bool readQuestionPart(JsonReader& in, LocalTexts& texts, std::string_view key,
-                      const QJsonObject& object, const QString& place, const LessonStep& step,
-                      Question& question)
+/// What reading a question's parts needs besides the JSON object.
+struct QuestionReading {
+    JsonReader& in;
+    LocalTexts& texts;
+    const QJsonObject& object;
+    const QString& place;
+    const LessonStep& step;
+    const Question& question; ///< every question's fields, read before its kind's
+};
+
+/// A part of a question (a row of kind Part), by its key, read by its own function: one
+/// overload per kind of question.
+bool readKindPart(const QuestionReading& r, std::string_view key, MeasuredQuestion& measured)
 {
-    if (key == "measure")
-        return readMeasureKey(in, object, place, step.scene, question);
-    if (key == "holdBack")
-        return readHoldBack(in, object, place, step, question.holdBack);
-    if (key == "set")
-        return readQuestionSet(in, object, place, step, question.holdBack, question.set);
-    if (key == "choices")
-        return readChoices(in, texts, object, place, question);
-    if (key == "answer")
-        return readAnswer(in, object, place, question);
+    if (key == schema::question_keys::kMeasure)
+        return readMeasureKey(r.in, r.object, r.place, r.step.scene, measured);
+    if (key == schema::question_keys::kSet)
+        return readQuestionSet(r.in, r.object, r.place, r.step, r.question.holdBack, measured.set);
     return true;
+}
+
+bool readKindPart(const QuestionReading& r, std::string_view key, ChoiceQuestion& choice)
+{
+    if (key == schema::question_keys::kChoices)
+        return readChoices(r.in, r.texts, r.object, r.place, choice);
+    if (key == schema::question_keys::kAnswer)
+        return readAnswer(r.in, r.object, r.place, choice);
+    return true;
+}
+
+/// Checks across a kind's fields, after its rows.
+bool checkKind(const QuestionReading& r, const MeasuredQuestion& measured)
+{
+    if (measured.tolerance == 0 && measured.absoluteTolerance == 0) {
+        return r.in.fail(joinPlace(r.place, u"tolerance"),
+                         FileMessages::tr("0, and so is absoluteTolerance: no typed answer "
+                                          "would ever be right"));
+    }
+    return true;
+}
+
+bool checkKind(const QuestionReading&, const ChoiceQuestion&)
+{
+    return true;
+}
+
+/// What a key of another kind is told in a question of this kind. A measured question is
+/// one that holds no other kind's key (questionKindIn), so it never meets one.
+QString otherKindsKey(const MeasuredQuestion&)
+{
+    assert(false && "a question with another kind's key is of that kind");
+    return {};
+}
+
+QString otherKindsKey(const ChoiceQuestion&)
+{
+    return FileMessages::tr("not for a question with \"choices\": it is answered by "
+                            "choosing, nothing is measured");
+}
+
+/// The kind's own rows, in the file's order: the texts and plain values as their rows say,
+/// each part by its own function.
+template <class K> bool readKind(const QuestionReading& r, K& kind)
+{
+    for (const schema::KindField<K>& row : schema::kindFields(std::type_identity<K>{})) {
+        const bool ok = row.kind == schema::LessonKind::Part
+                            ? readKindPart(r, row.key, kind)
+                            : readLessonRow(r.in, r.texts, row, r.object, r.place, kind);
+        if (!ok)
+            return false;
+    }
+    return checkKind(r, kind);
 }
 
 bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, const QString& place,
@@ -257,37 +317,28 @@ bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, co
         !in.checkKeys(object, place, schema::questionKeys())) {
         return false;
     }
-    // A question with "choices" or "answer" is answered by choosing: the keys of a measured
-    // answer are refused rather than ignored.
-    const bool choice = object.contains(u"choices") || object.contains(u"answer");
-    const schema::QuestionKinds kind =
-        choice ? schema::QuestionKinds::Choice : schema::QuestionKinds::Measured;
-    for (const schema::QuestionField& row : schema::questionFields()) {
-        const QString key = QString::fromUtf8(row.key.data(), qsizetype(row.key.size()));
-        if (choice && row.kinds == schema::QuestionKinds::Measured && object.contains(key)) {
-            return in.fail(joinPlace(place, key),
-                           FileMessages::tr("not for a question with \"choices\": it is "
-                                            "answered by choosing, nothing is measured"));
+    // The keys of another kind of question are refused rather than ignored.
+    question.kind = schema::newQuestionKind(schema::questionKindIn(object));
+    const QStringList own = schema::questionKindKeys(question.kind.index());
+    for (std::size_t k = 0; k < std::variant_size_v<decltype(Question::kind)>; ++k) {
+        for (const QString& key : schema::questionKindKeys(k)) {
+            if (!own.contains(key) && object.contains(key)) {
+                return in.fail(joinPlace(place, key),
+                               std::visit([](const auto& kind) { return otherKindsKey(kind); },
+                                          question.kind));
+            }
         }
     }
-    // The rows in the file's order: the texts and plain values as their rows say, each part
-    // by its own function.
     for (const schema::QuestionField& row : schema::questionFields()) {
-        if (row.kinds != schema::QuestionKinds::All && row.kinds != kind)
-            continue;
         const bool ok = row.kind == schema::LessonKind::Part
-                            ? readQuestionPart(in, texts, row.key, object, place, step, question)
+                            ? row.key != schema::question_keys::kHoldBack ||
+                                  readHoldBack(in, object, place, step, question.holdBack)
                             : readLessonRow(in, texts, row, object, place, question);
         if (!ok)
             return false;
-        if (row.key == "absoluteTolerance" && question.tolerance == 0 &&
-            question.absoluteTolerance == 0) {
-            return in.fail(joinPlace(place, u"tolerance"),
-                           FileMessages::tr("0, and so is absoluteTolerance: no typed answer "
-                                            "would ever be right"));
-        }
     }
-    return true;
+    const QuestionReading reading{in, texts, object, place, step, question};
+    return std::visit([&](auto& kind) { return readKind(reading, kind); }, question.kind);
 }
 
 } // namespace

@@ -75,37 +75,41 @@ const StepField kStepFields[] = {
 };
 
 const QuestionField kQuestionFields[] = {
-    {.key = "prompt", .kind = LessonKind::Line, .required = true, .text = &Question::prompt},
-    {.key = "measure", .kinds = QuestionKinds::Measured},
-    {.key = "unit",
-     .kind = LessonKind::Unit,
-     .text = &Question::unit,
-     .kinds = QuestionKinds::Measured},
-    {.key = "tolerance",
+    {.key = question_keys::kPrompt,
+     .kind = LessonKind::Line,
+     .required = true,
+     .text = &Question::prompt},
+    {.key = question_keys::kHint, .kind = LessonKind::Line, .text = &Question::hint},
+    {.key = question_keys::kHoldBack},
+};
+
+const KindField<MeasuredQuestion> kMeasuredFields[] = {
+    {.key = question_keys::kMeasure},
+    {.key = question_keys::kUnit, .kind = LessonKind::Unit, .text = &MeasuredQuestion::unit},
+    {.key = question_keys::kTolerance,
      .kind = LessonKind::Plain,
-     .value = {.key = "tolerance",
+     .value = {.key = question_keys::kTolerance,
                .label = QT_TRANSLATE_NOOP("SceneSchema", "Tolerance"),
                .kind = Kind::Number,
                .range = {0.0, 1.0, ""},
                .rule = detail::NumberRule::UnitInterval,
-               .get = numberGet<Question, &Question::tolerance>,
-               .set = numberSet<Question, &Question::tolerance>},
-     .kinds = QuestionKinds::Measured},
-    {.key = "absoluteTolerance",
+               .get = numberGet<MeasuredQuestion, &MeasuredQuestion::tolerance>,
+               .set = numberSet<MeasuredQuestion, &MeasuredQuestion::tolerance>}},
+    {.key = question_keys::kAbsoluteTolerance,
      .kind = LessonKind::Plain,
-     .value = {.key = "absoluteTolerance",
+     .value = {.key = question_keys::kAbsoluteTolerance,
                .label = QT_TRANSLATE_NOOP("SceneSchema", "Absolute tolerance"),
                .kind = Kind::Number,
                .range = limits::kAbsoluteTolerance,
                .rule = detail::NumberRule::NonNegative,
-               .get = numberGet<Question, &Question::absoluteTolerance>,
-               .set = numberSet<Question, &Question::absoluteTolerance>},
-     .kinds = QuestionKinds::Measured},
-    {.key = "hint", .kind = LessonKind::Line, .text = &Question::hint},
-    {.key = "holdBack"},
-    {.key = "set", .kinds = QuestionKinds::Measured},
-    {.key = "choices", .kinds = QuestionKinds::Choice},
-    {.key = "answer", .kinds = QuestionKinds::Choice},
+               .get = numberGet<MeasuredQuestion, &MeasuredQuestion::absoluteTolerance>,
+               .set = numberSet<MeasuredQuestion, &MeasuredQuestion::absoluteTolerance>}},
+    {.key = question_keys::kSet},
+};
+
+const KindField<ChoiceQuestion> kChoiceFields[] = {
+    {.key = question_keys::kChoices},
+    {.key = question_keys::kAnswer},
 };
 
 template <class Row> const Row* findRow(std::span<const Row> rows, std::string_view key)
@@ -127,6 +131,53 @@ std::span<const QuestionField> questionFields()
     return kQuestionFields;
 }
 
+std::span<const KindField<MeasuredQuestion>> kindFields(std::type_identity<MeasuredQuestion>)
+{
+    return kMeasuredFields;
+}
+
+std::span<const KindField<ChoiceQuestion>> kindFields(std::type_identity<ChoiceQuestion>)
+{
+    return kChoiceFields;
+}
+
+std::size_t questionKindIn(const QJsonObject& object)
+{
+    std::size_t index = 0;
+    std::size_t found = 0;
+    forEachQuestionKind([&]<class K>(std::type_identity<K> kind) {
+        if (found == 0 && index > 0)
+            for (const KindField<K>& f : kindFields(kind))
+                if (object.contains(rows::fromView(f.key)))
+                    found = index;
+        ++index;
+    });
+    return found;
+}
+
+decltype(Question::kind) newQuestionKind(std::size_t index)
+{
+    decltype(Question::kind) kind;
+    std::size_t at = 0;
+    forEachQuestionKind([&]<class K>(std::type_identity<K>) {
+        if (at++ == index)
+            kind = K{};
+    });
+    return kind;
+}
+
+QStringList questionKindKeys(std::size_t index)
+{
+    QStringList keys;
+    std::size_t at = 0;
+    forEachQuestionKind([&]<class K>(std::type_identity<K> kind) {
+        if (at++ == index)
+            for (const KindField<K>& f : kindFields(kind))
+                keys << rows::fromView(f.key);
+    });
+    return keys;
+}
+
 const StepField* findStepField(std::string_view key)
 {
     return findRow(stepFields(), key);
@@ -145,12 +196,13 @@ QStringList stepKeys()
     return keys;
 }
 
-QStringList questionKeys(QuestionKinds kinds)
+QStringList questionKeys()
 {
     QStringList keys;
     for (const QuestionField& f : questionFields())
-        if (kinds == QuestionKinds::All || f.kinds == QuestionKinds::All || f.kinds == kinds)
-            keys << rows::fromView(f.key);
+        keys << rows::fromView(f.key);
+    for (std::size_t k = 0; k < std::variant_size_v<decltype(Question::kind)>; ++k)
+        keys << questionKindKeys(k);
     return keys;
 }
 

@@ -9,14 +9,24 @@
 // worlds, the names a step shows, a measure, the options of a choice) is a row of kind Part,
 // read by its own function (lesson_step.cpp, lesson_questions.cpp). A new step or question
 // field is one row here, and what reads it (the player, the export).
+//
+// A question's rows are those of every question (questionFields) and those of its kind
+// (kindFields, one table per type of Question::kind): the loader reads a question's kind
+// from the keys it holds (questionKindIn) and the rows of that kind only.
 
+#include "format/lesson.h"
 #include "format/scene_schema.h"
 
 #include <QString>
 #include <QStringList>
 
+#include <QJsonObject>
+
+#include <cstddef>
 #include <span>
 #include <string_view>
+#include <type_traits>
+#include <variant>
 
 namespace rigidlab::lessons::schema {
 
@@ -29,9 +39,6 @@ enum class LessonKind {
     Part,       ///< read by its own function
 };
 
-/// The kinds of question a question row belongs to (the keys of the other kind are refused).
-enum class QuestionKinds { All, Measured, Choice };
-
 template <class Target> struct LessonFieldOf {
     std::string_view key; ///< the JSON key
     LessonKind kind = LessonKind::Part;
@@ -41,28 +48,90 @@ template <class Target> struct LessonFieldOf {
     /// Plain: the value's row, as a scene field's (its kind Number or Bool, range, rule, label,
     /// get and set), read by detail::readPlainField.
     FieldOf<Target> value{};
-    /// Questions: which kind of question has it.
-    QuestionKinds kinds = QuestionKinds::All;
     /// Whether the steps' runs depend on it: the editor's checks run them again when it
     /// changes (the texts never make them).
     bool run = false;
 };
 
+/// The JSON keys of a question's rows, spelt once: the rows are written with them, and the
+/// lesson editor, which edits a lesson's JSON, names a question's keys through them (jsonKey).
+namespace question_keys {
+inline constexpr std::string_view kPrompt = "prompt";
+inline constexpr std::string_view kHint = "hint";
+inline constexpr std::string_view kHoldBack = "holdBack";
+inline constexpr std::string_view kMeasure = "measure";
+inline constexpr std::string_view kUnit = "unit";
+inline constexpr std::string_view kTolerance = "tolerance";
+inline constexpr std::string_view kAbsoluteTolerance = "absoluteTolerance";
+inline constexpr std::string_view kSet = "set";
+inline constexpr std::string_view kChoices = "choices";
+inline constexpr std::string_view kAnswer = "answer";
+} // namespace question_keys
+
+/// A row's key as a JSON object's.
+inline QString jsonKey(std::string_view key)
+{
+    return QString::fromUtf8(key.data(), qsizetype(key.size()));
+}
+
 using StepField = LessonFieldOf<LessonStep>;
+/// A row every question has, whatever its kind.
 using QuestionField = LessonFieldOf<Question>;
+/// A row of one kind of question.
+template <class K> using KindField = LessonFieldOf<K>;
 
 /// The rows of a lesson step, in the order of the file.
 std::span<const StepField> stepFields();
-/// The rows of a question, in the order of the file.
+/// The rows every question has, in the order of the file.
 std::span<const QuestionField> questionFields();
+/// The rows of each kind of question, in the order of the file. A kind of Question::kind
+/// without its table here does not compile where the kinds' rows are read.
+std::span<const KindField<MeasuredQuestion>> kindFields(std::type_identity<MeasuredQuestion>);
+std::span<const KindField<ChoiceQuestion>> kindFields(std::type_identity<ChoiceQuestion>);
+
+/// Calls `f(std::type_identity<K>{})` for each kind K of Question::kind, in its order.
+template <class F> void forEachQuestionKind(F&& f)
+{
+    [&]<class... K>(std::type_identity<std::variant<K...>>) {
+        (f(std::type_identity<K>{}), ...);
+    }(std::type_identity<decltype(Question::kind)>{});
+}
+
+/// The index of kind K in Question::kind (the value questionKindIn gives for it).
+template <class K> constexpr std::size_t questionKindIndex()
+{
+    return []<class... Ks>(std::type_identity<std::variant<Ks...>>) {
+        std::size_t index = 0;
+        bool found = false;
+        ((found = found || std::is_same_v<K, Ks>, index += found ? 0 : 1), ...);
+        return index;
+    }(std::type_identity<decltype(Question::kind)>{});
+}
+
+/// The index in Question::kind of the kind of question `object` is: the first kind after
+/// the first that it holds a key of, else the first (a measured question, whose keys are
+/// missing or wrong then: the loader says which).
+std::size_t questionKindIn(const QJsonObject& object);
+/// A new question's part of the kind at `index` of Question::kind, as its struct starts.
+decltype(Question::kind) newQuestionKind(std::size_t index);
+/// The keys of the kind at `index` of Question::kind, in their order.
+QStringList questionKindKeys(std::size_t index);
+
 /// The row of a step with this key, or null.
 const StepField* findStepField(std::string_view key);
-/// The row of a question with this key, or null.
+/// The row every question has with this key, or null.
 const QuestionField* findQuestionField(std::string_view key);
+/// The row of kind K with this key, or null.
+template <class K> const KindField<K>* findKindField(std::string_view key)
+{
+    for (const KindField<K>& f : kindFields(std::type_identity<K>{}))
+        if (f.key == key)
+            return &f;
+    return nullptr;
+}
 
-/// The keys of the rows, in their order (`kinds`: only those of the questions of that kind,
-/// and those of every question).
+/// The keys of the rows, in their order (a question's: every question's, then each kind's).
 QStringList stepKeys();
-QStringList questionKeys(QuestionKinds kinds = QuestionKinds::All);
+QStringList questionKeys();
 
 } // namespace rigidlab::lessons::schema

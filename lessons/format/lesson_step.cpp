@@ -258,15 +258,14 @@ bool checkStep(JsonReader& in, const QString& place, StepContext& context, const
     }
     // A question measured after the run stops would need Play again: said, not refused.
     for (std::size_t i = 0; step.endTime && i < step.questions.size(); ++i) {
-        const Question& q = step.questions[i];
-        if (!q.isChoice() && q.measure.kind != Measure::Kind::Apex &&
-            q.measure.time > *step.endTime)
+        const MeasuredQuestion* q = step.questions[i].as<MeasuredQuestion>();
+        if (q && q->measure.kind != Measure::Kind::Apex && q->measure.time > *step.endTime)
             in.warn(joinPlace(place, u"endTime"),
                     FileMessages::tr("the run stops at %1 s, before questions[%2] measures at "
                                      "%3 s")
                         .arg(formatNumber(*step.endTime))
                         .arg(i)
-                        .arg(formatNumber(q.measure.time)));
+                        .arg(formatNumber(q->measure.time)));
     }
     return true;
 }

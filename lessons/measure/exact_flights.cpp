@@ -128,9 +128,8 @@ std::optional<std::vector<double>> exactFlightsAt(const lessons::Scene& scene, c
     f.v0 = ball.velocity.y();
     if (f.y0 < f.c)
         return std::nullopt; // starts inside the floor
-    const auto resolved = [&w](double own, double world) { return own >= 0 ? own : world; };
-    f.e = std::max(resolved(ball.restitution, w.restitution),
-                   resolved(floor->restitution, w.restitution));
+    f.e = std::max(physics::resolvedMaterial(ball.restitution, w.restitution),
+                   physics::resolvedMaterial(floor->restitution, w.restitution));
     f.rest = f.y0 == f.c && f.v0 <= 0;
     const double offset = ball.position.y() - centre.y(); // origin below or above the centre
     std::vector<double> out;

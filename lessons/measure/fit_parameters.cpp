@@ -119,9 +119,11 @@ double parameterValue(const lessons::Scene& scene, const Parameter& p)
         p.bodies.empty() ? nullptr : &scene.bodies[static_cast<std::size_t>(p.bodies.front())];
     switch (p.kind) {
     case ParameterKind::Restitution:
-        return body && body->restitution >= 0 ? body->restitution : scene.world.restitution;
+        return body ? physics::resolvedMaterial(body->restitution, scene.world.restitution)
+                    : scene.world.restitution;
     case ParameterKind::Friction:
-        return body && body->friction >= 0 ? body->friction : scene.world.friction;
+        return body ? physics::resolvedMaterial(body->friction, scene.world.friction)
+                    : scene.world.friction;
     case ParameterKind::VelocityX:
         return body ? body->velocity.x() : 0.0;
     case ParameterKind::VelocityY:

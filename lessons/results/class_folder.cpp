@@ -46,6 +46,15 @@ QStringList lessonsNamed(const std::vector<HandedIn>& read)
     return names;
 }
 
+/// The title the first answers file of lesson `file` gives it.
+QString titleNamedIn(const std::vector<HandedIn>& read, const QString& file)
+{
+    for (const HandedIn& h : read)
+        if (h.answers.lessonFile == file && !h.answers.lessonTitle.isEmpty())
+            return h.answers.lessonTitle;
+    return QString();
+}
+
 /// The lesson called `file` among the shipped lessons and the user's own; nullopt with
 /// `error` set when there is none or it does not load.
 std::optional<Lesson> findLesson(const QString& file, QString& error)
@@ -151,6 +160,8 @@ ClassCollection collectClass(const QString& folder, const ClassOptions& options)
     }
     out.skipped = f.damaged;
     out.lessonFiles = lessonsNamed(f.read);
+    for (const QString& file : out.lessonFiles)
+        out.lessonTitles.append(titleNamedIn(f.read, file));
     if (f.read.empty()) {
         out.error = ClassResults::tr("%1: none of its %2 answers files reads")
                         .arg(native(folder))

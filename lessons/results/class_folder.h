@@ -55,6 +55,9 @@ struct ClassCollection {
     QStringList skipped;
     /// Every lesson the folder's answers name (file names), the most answered first.
     QStringList lessonFiles;
+    /// Their titles, in the same order, as the first answers file of each names it (in the
+    /// language that student played it in).
+    QStringList lessonTitles;
 };
 
 ClassCollection collectClass(const QString& folder, const ClassOptions& options = {});

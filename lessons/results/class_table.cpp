@@ -3,6 +3,8 @@
 
 #include "run/measurements.h"
 
+#include "rigidlab/physics/overloaded.h"
+
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QLocale>
@@ -18,11 +20,12 @@ struct ClassResults {
     Q_DECLARE_TR_FUNCTIONS(ClassResults)
 };
 
-// What the table reads of a question, in one place: the question's kinds are to become
-// types of their own, and only these lines then change.
+// What the table reads of a question, in one place.
 bool isChoiceQuestion(const Question& q)
 {
-    return q.isChoice();
+    return std::visit(physics::Overloaded{[](const MeasuredQuestion&) { return false; },
+                                          [](const ChoiceQuestion&) { return true; }},
+                      q.kind);
 }
 bool hasHint(const Question& q)
 {
@@ -30,7 +33,9 @@ bool hasHint(const Question& q)
 }
 QString unitOf(const Question& q)
 {
-    return isChoiceQuestion(q) ? QString() : q.unit;
+    return std::visit(physics::Overloaded{[](const MeasuredQuestion& m) { return m.unit; },
+                                          [](const ChoiceQuestion&) { return QString(); }},
+                      q.kind);
 }
 
 /// The tries of question `q` of step `s`, none when the student did not get there.
@@ -143,14 +148,6 @@ std::optional<double> ClassTable::rightFirstPercent(std::size_t q) const
         return std::nullopt;
     // To a tenth of a per cent: what a table of a class tells apart, without round-off digits.
     return std::round(1000.0 * rightFirst(q) / static_cast<double>(rows.size())) / 10.0;
-}
-
-std::vector<int> questionCounts(const Lesson& lesson)
-{
-    std::vector<int> counts;
-    for (const LessonStep& step : lesson.steps)
-        counts.push_back(static_cast<int>(step.questions.size()));
-    return counts;
 }
 
 ClassTable emptyClassTable(const Lesson& lesson)

@@ -74,9 +74,6 @@ ClassTable emptyClassTable(const Lesson& lesson);
 /// A student's row: `answers` (which fit the lesson, answersMismatch()) judged again.
 StudentRow studentRow(const Lesson& lesson, const Answers& answers, const QString& file);
 
-/// The question counts of the lesson's steps, as answersMismatch() takes them.
-std::vector<int> questionCounts(const Lesson& lesson);
-
 // ---- The columns: one list ----
 
 /// What a column shows.

@@ -41,8 +41,8 @@ std::vector<physics::BodyId> namedBodies(const LessonStep& step, const Scene& sc
 {
     QStringList ids;
     for (const Question& q : step.questions)
-        if (!q.isChoice() && !q.measure.body.isEmpty())
-            ids << q.measure.body;
+        if (const MeasuredQuestion* m = q.as<MeasuredQuestion>(); m && !m->measure.body.isEmpty())
+            ids << m->measure.body;
     if (step.sat)
         ids << step.sat->first << step.sat->second;
     std::vector<physics::BodyId> out;

@@ -7,7 +7,10 @@
 #include <QLocale>
 #include <QRegularExpression>
 
+#include "rigidlab/physics/overloaded.h"
+
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 
@@ -23,7 +26,7 @@ struct Judge {
 
 /// A number as a student would write it: enough significant digits to tell the tolerance
 /// apart (three at the usual 5 %), no rounding noise, no "-0".
-QString formatValue(double value, const Question& q)
+QString formatValue(double value, const MeasuredQuestion& q)
 {
     int digits = 3;
     if (q.tolerance > 0) {
@@ -44,6 +47,14 @@ QString formatValue(double value, const Question& q)
     }
     // A no-break space: the unit stays on the number's line.
     return q.unit.isEmpty() ? text : text + QChar(0x00A0) + q.unit;
+}
+
+/// The measured part of a question judged against a value.
+const MeasuredQuestion& measuredPart(const Question& q)
+{
+    const MeasuredQuestion* m = q.as<MeasuredQuestion>();
+    assert(m && "only a measured question is judged against a value");
+    return *m;
 }
 
 QString notYet(const Measure& m)
@@ -70,7 +81,8 @@ QString notYet(const Measure& m)
 Verdict judge(const Question& q, double answer, const Measurements& m, const Scene& scene)
 {
     // Without a count of tries every answer is a last try: the value is always given.
-    return judgeAttempt(q, answer, m.value(q.measure, scene), std::numeric_limits<int>::max());
+    return judgeAttempt(q, answer, m.value(measuredPart(q).measure, scene),
+                        std::numeric_limits<int>::max());
 }
 
 QString keepUnitsTogether(QString text)
@@ -83,9 +95,10 @@ QString keepUnitsTogether(QString text)
     return text;
 }
 
-Verdict judgeAttempt(const Question& q, double answer, std::optional<double> value, int attempt,
-                     bool ahead)
+Verdict judgeAttempt(const Question& question, double answer, std::optional<double> value,
+                     int attempt, bool ahead)
 {
+    const MeasuredQuestion& q = measuredPart(question);
     Verdict verdict;
     if (!value) {
         verdict.message = notYet(q.measure);
@@ -102,10 +115,10 @@ Verdict judgeAttempt(const Question& q, double answer, std::optional<double> val
     if (!verdict.right && attempt <= 1) {
         // A second try is only worth something while the value is still unknown.
         verdict.message =
-            q.hint.isEmpty()
+            question.hint.isEmpty()
                 ? Judge::tr("Not quite (you said %1). Try once more.").arg(formatValue(answer, q))
                 : Judge::tr("Not quite (you said %1). Hint: %2")
-                      .arg(formatValue(answer, q), q.hint);
+                      .arg(formatValue(answer, q), question.hint);
         verdict.message = keepUnitsTogether(verdict.message);
         return verdict;
     }
@@ -124,8 +137,9 @@ Verdict judgeAttempt(const Question& q, double answer, std::optional<double> val
     return verdict;
 }
 
-Verdict showAnswer(const Question& q, std::optional<double> value, bool ahead)
+Verdict showAnswer(const Question& question, std::optional<double> value, bool ahead)
 {
+    const MeasuredQuestion& q = measuredPart(question);
     Verdict verdict;
     if (!value) {
         verdict.message = notYet(q.measure);
@@ -145,7 +159,7 @@ namespace {
 
 /// An option's text as a verdict quotes it; a try recorded with another lesson's options may
 /// name one the question no longer has.
-QString optionText(const Question& q, int index)
+QString optionText(const ChoiceQuestion& q, int index)
 {
     return index >= 0 && index < q.choices.size() ? q.choices[index] : QString();
 }
@@ -153,7 +167,8 @@ QString optionText(const Question& q, int index)
 /// A choice question's try: nothing is measured, so every try is judged. A wrong first try
 /// reads the hint (the right option stays hidden while a second try is worth something);
 /// later tries, a right one and "Show me" name the right option.
-Verdict judgeChoice(const Question& q, const AnswerTry& attempt, TryCount& count)
+Verdict judgeChoice(const Question& question, const ChoiceQuestion& q, const AnswerTry& attempt,
+                    TryCount& count)
 {
     Verdict verdict;
     verdict.measured = true;
@@ -171,9 +186,9 @@ Verdict judgeChoice(const Question& q, const AnswerTry& attempt, TryCount& count
     const QString chosen = attempt.choiceText;
     if (!verdict.right && !count.answered && count.attempts <= 1) {
         verdict.message =
-            q.hint.isEmpty()
+            question.hint.isEmpty()
                 ? Judge::tr("Not quite (you chose “%1”). Try once more.").arg(chosen)
-                : Judge::tr("Not quite (you chose “%1”). Hint: %2").arg(chosen, q.hint);
+                : Judge::tr("Not quite (you chose “%1”). Hint: %2").arg(chosen, question.hint);
         return verdict;
     }
     verdict.shown = true;
@@ -185,12 +200,9 @@ Verdict judgeChoice(const Question& q, const AnswerTry& attempt, TryCount& count
     return verdict;
 }
 
-} // namespace
-
-Verdict judgeTry(const Question& q, const AnswerTry& attempt, TryCount& count)
+/// A measured question's try: an answer judged against the value measured, or "Show me".
+Verdict judgeMeasured(const Question& q, const AnswerTry& attempt, TryCount& count)
 {
-    if (q.isChoice())
-        return judgeChoice(q, attempt, count);
     Verdict verdict;
     if (!attempt.answer) {
         verdict = showAnswer(q, attempt.measured, attempt.ahead);
@@ -204,6 +216,17 @@ Verdict judgeTry(const Question& q, const AnswerTry& attempt, TryCount& count)
     }
     count.answered = count.answered || verdict.shown;
     return verdict;
+}
+
+} // namespace
+
+Verdict judgeTry(const Question& q, const AnswerTry& attempt, TryCount& count)
+{
+    return std::visit(
+        physics::Overloaded{
+            [&](const MeasuredQuestion&) { return judgeMeasured(q, attempt, count); },
+            [&](const ChoiceQuestion& choice) { return judgeChoice(q, choice, attempt, count); }},
+        q.kind);
 }
 
 std::optional<double> measureAhead(const LessonStep& step, const Measure& measure)

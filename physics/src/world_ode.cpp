@@ -32,27 +32,12 @@ private:
 
 void World::getState(Eigen::VectorXd& q, Eigen::VectorXd& v) const
 {
-    const Eigen::Index n = 3 * static_cast<Eigen::Index>(m_moving.size());
-    q.resize(n);
-    v.resize(n);
-    for (size_t s = 0; s < m_moving.size(); ++s) {
-        const Body& b = m_bodies[static_cast<size_t>(m_moving[s])];
-        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
-        q.segment<3>(i) << b.position.x(), b.position.y(), b.angle;
-        v.segment<3>(i) << b.velocity.x(), b.velocity.y(), b.angularVelocity;
-    }
+    gatherState(m_bodies, m_moving, q, v);
 }
 
 void World::setState(const Eigen::VectorXd& q, const Eigen::VectorXd& v)
 {
-    for (size_t s = 0; s < m_moving.size(); ++s) {
-        Body& b = m_bodies[static_cast<size_t>(m_moving[s])];
-        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
-        b.position = Vec2(q[i], q[i + 1]);
-        b.angle = q[i + 2];
-        b.velocity = Vec2(v[i], v[i + 1]);
-        b.angularVelocity = v[i + 2];
-    }
+    scatterState(q, v, m_moving, Sleepers::Write, m_bodies);
 }
 
 std::unique_ptr<OdeSystem> World::equations() const

@@ -29,8 +29,8 @@ BodyId World::addBody(const BodyDef& def)
     b.type = def.type;
     b.shape = def.shape;
     b.collide = def.collide;
-    b.restitution = def.restitution >= 0 ? def.restitution : m_def.restitution;
-    b.friction = def.friction >= 0 ? def.friction : m_def.friction;
+    b.restitution = resolvedMaterial(def.restitution, m_def.restitution);
+    b.friction = resolvedMaterial(def.friction, m_def.friction);
 
     const MassProperties mp = computeMass(def.shape, def.mass > 0 ? 1.0 : def.density);
     b.localCenter = mp.centroid;

@@ -8,6 +8,7 @@
 #include "run/measurements.h"
 #include "test_files.h"
 
+#include "question_kinds.h"
 #include <QDir>
 #include <QFile>
 #include <QObject>
@@ -47,8 +48,8 @@ struct StepRun {
     {
         std::vector<lessons::Measure> watched;
         for (const lessons::Question& q : step.questions)
-            if (!q.isChoice())
-                watched.push_back(q.measure);
+            if (!isChoice(q))
+                watched.push_back(measuredOf(q).measure);
         measurements.resize(worlds.size());
         for (std::size_t i = 0; i < worlds.size(); ++i) {
             worlds[i].updateDiagnostics();

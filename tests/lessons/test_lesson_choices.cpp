@@ -6,6 +6,7 @@
 #include "test_lesson_json.h"
 
 #include "format/answers_file.h"
+#include "question_kinds.h"
 
 using namespace rigidlab;
 using namespace rigidlab::test;
@@ -38,9 +39,9 @@ void TestLesson::choiceQuestionRead()
         const lessons::LessonLoadResult r = lessons::loadLessonJson(json, "l.json", o);
         QVERIFY2(r.ok, qPrintable(r.error));
         const lessons::Question& q = r.lesson.steps.at(0).questions.at(0);
-        QVERIFY(q.isChoice());
-        QCOMPARE(q.choices, options);
-        QCOMPARE(q.answer, 2);
+        QVERIFY(isChoice(q));
+        QCOMPARE(choiceOf(q).choices, options);
+        QCOMPARE(choiceOf(q).answer, 2);
         QCOMPARE(q.holdBack, QStringList{"run"});
         QVERIFY(!q.hint.isEmpty());
         // A predict-first choice holds the run back until it is answered, as a number does.
@@ -55,7 +56,7 @@ void TestLesson::choiceQuestionRead()
         oneStep(R"("questions": [{"prompt": "p", "measure": {"kind": "apex", "body": "ball"}}])"),
         "l.json");
     QVERIFY2(measured.ok, qPrintable(measured.error));
-    QVERIFY(!measured.lesson.steps[0].questions[0].isChoice());
+    QVERIFY(!isChoice(measured.lesson.steps[0].questions[0]));
 }
 
 void TestLesson::choiceMissingLanguageWarns()
@@ -69,7 +70,7 @@ void TestLesson::choiceMissingLanguageWarns()
     o.language = QStringLiteral("cs");
     const lessons::LessonLoadResult r = lessons::loadLessonJson(json, "l.json", o);
     QVERIFY2(r.ok, qPrintable(r.error));
-    QCOMPARE(r.lesson.steps[0].questions[0].choices, (QStringList{"jeden", "two"}));
+    QCOMPARE(choiceOf(r.lesson.steps[0].questions[0]).choices, (QStringList{"jeden", "two"}));
     QCOMPARE(r.warnings.filter(QStringLiteral("questions")),
              QStringList{QStringLiteral("l.json: steps[0].questions[0].choices[1]: no "
                                         "Czech text (\"cs\"): it will show in English")});
@@ -143,14 +144,14 @@ void TestLesson::judgeChoiceTries()
 {
     lessons::Question q;
     q.prompt = QStringLiteral("Which?");
-    q.choices = {QStringLiteral("up"), QStringLiteral("down"), QStringLiteral("still")};
-    q.answer = 1;
+    q.kind = lessons::ChoiceQuestion{
+        {QStringLiteral("up"), QStringLiteral("down"), QStringLiteral("still")}, 1};
     q.hint = QStringLiteral("gravity");
     const auto pick = [&q](int c) {
         lessons::AnswerTry t;
         t.choice = c;
-        t.choiceText = q.choices[c];
-        t.right = c == q.answer;
+        t.choiceText = choiceOf(q).choices[c];
+        t.right = c == choiceOf(q).answer;
         return t;
     };
     // A wrong first try reads the hint and leaves the question open; the second gives the

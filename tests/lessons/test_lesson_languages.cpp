@@ -9,6 +9,7 @@
 #include "format/languages.h"
 #include "format/lesson_pack.h"
 
+#include "question_kinds.h"
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -104,7 +105,7 @@ void TestLesson::textsFallBackToEnglish()
         QCOMPARE(r.lesson.title, QStringLiteral("Bounces"));
         QCOMPARE(r.lesson.goals, QStringList{QStringLiteral("Predict.")});
         QCOMPARE(r.lesson.steps.front().text, QStringLiteral("One.\nTwo."));
-        QCOMPARE(r.lesson.steps.front().questions.front().unit, QStringLiteral("m"));
+        QCOMPARE(measuredOf(r.lesson.steps.front().questions.front()).unit, QStringLiteral("m"));
     }
     // Without options the loader reads the language chosen for the app.
     QCOMPARE(lessons::lessonLanguage(), QStringLiteral("en"));
@@ -250,10 +251,10 @@ void TestLesson::oneLanguageLessons()
         QCOMPARE(step.scene.labels.at(1), label);
         QCOMPARE(step.endTime, std::optional<double>(3.0));
         QCOMPARE(step.questions.size(), std::size_t{2});
-        QVERIFY(!step.questions[0].isChoice());
+        QVERIFY(!isChoice(step.questions[0]));
         QVERIFY(!step.questions[0].hint.isEmpty());
-        QVERIFY(step.questions[1].isChoice());
-        QCOMPARE(step.questions[1].choices.front(), choice);
+        QVERIFY(isChoice(step.questions[1]));
+        QCOMPARE(choiceOf(step.questions[1]).choices.front(), choice);
         // One warning for the lesson's missing language, one for its scene's: never one per
         // text, and none at all for the language asked for when it is the one written.
         for (const lessons::Language& other : lessons::kLanguages) {
@@ -280,5 +281,5 @@ void TestLesson::oneLanguageLessons()
     const lessons::LessonLoadResult again = lessons::loadLessonFile(copy, {written});
     QVERIFY2(again.ok, qPrintable(again.error));
     QCOMPARE(again.lesson.title, title);
-    QCOMPARE(again.lesson.steps.front().questions[1].choices.front(), choice);
+    QCOMPARE(choiceOf(again.lesson.steps.front().questions[1]).choices.front(), choice);
 }

@@ -13,6 +13,7 @@
 #include "format/scene_schema.h"
 #include "format/view_text.h"
 
+#include "question_kinds.h"
 #include <QFileInfo>
 #include <QRegularExpression>
 #include <QTemporaryDir>
@@ -405,16 +406,16 @@ void TestLesson::everyField()
     QCOMPARE(s.questions.size(), std::size_t{2});
     const lessons::Question& q = s.questions[0];
     QCOMPARE(q.prompt, QStringLiteral("p"));
-    QCOMPARE(q.measure.kind, lessons::Measure::Kind::Apex);
-    QCOMPARE(q.measure.body, QStringLiteral("ball"));
-    QCOMPARE(q.measure.n, 3);
-    QCOMPARE(q.measure.above, 0.1);
-    QCOMPARE(q.unit, QStringLiteral("m"));
-    QCOMPARE(q.tolerance, 0.1);
-    QCOMPARE(q.absoluteTolerance, 0.01);
-    QCOMPARE(s.questions[1].measure.kind, lessons::Measure::Kind::MomentumY);
-    QCOMPARE(s.questions[1].measure.time, 2.5);
-    QCOMPARE(s.questions[1].tolerance, 0.05);
+    QCOMPARE(measuredOf(q).measure.kind, lessons::Measure::Kind::Apex);
+    QCOMPARE(measuredOf(q).measure.body, QStringLiteral("ball"));
+    QCOMPARE(measuredOf(q).measure.n, 3);
+    QCOMPARE(measuredOf(q).measure.above, 0.1);
+    QCOMPARE(measuredOf(q).unit, QStringLiteral("m"));
+    QCOMPARE(measuredOf(q).tolerance, 0.1);
+    QCOMPARE(measuredOf(q).absoluteTolerance, 0.01);
+    QCOMPARE(measuredOf(s.questions[1]).measure.kind, lessons::Measure::Kind::MomentumY);
+    QCOMPARE(measuredOf(s.questions[1]).measure.time, 2.5);
+    QCOMPARE(measuredOf(s.questions[1]).tolerance, 0.05);
     QCOMPARE(q.hint, QStringLiteral("h"));
     const QString run = QStringLiteral("run"), controls = QStringLiteral("panel:controls"),
                   momentum = QStringLiteral("plot:momentum");

@@ -21,7 +21,10 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "question_kinds.h"
 #include <functional>
+
+using rigidlab::test::choiceOf;
 
 using namespace rigidlab;
 using rigidlab::test::filesUnder;
@@ -113,8 +116,11 @@ void TestLessonPack::shippedLessonsPack()
         QCOMPARE(a.panels, b.panels);
         QCOMPARE(a.questions.size(), b.questions.size());
         for (std::size_t q = 0; q < a.questions.size(); ++q) { // a choice's options too
-            QCOMPARE(a.questions[q].choices, b.questions[q].choices);
-            QCOMPARE(a.questions[q].answer, b.questions[q].answer);
+            QCOMPARE(a.questions[q].kind.index(), b.questions[q].kind.index());
+            if (const auto* choice = a.questions[q].as<lessons::ChoiceQuestion>()) {
+                QCOMPARE(choice->choices, choiceOf(b.questions[q]).choices);
+                QCOMPARE(choice->answer, choiceOf(b.questions[q]).answer);
+            }
         }
         QCOMPARE(a.exportTime, b.exportTime);
         const QString difference = lessons::sceneDifference(a.scene, b.scene);

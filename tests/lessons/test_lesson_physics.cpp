@@ -12,6 +12,7 @@
 
 #include <QRegularExpression>
 
+#include "question_kinds.h"
 #include <algorithm>
 #include <cmath>
 
@@ -59,7 +60,7 @@ void TestLesson::verdictsOfARunNotYetShownSayWhatItWillMeasure()
     const lessons::Lesson lesson = shippedLesson("restitution");
     const lessons::LessonStep& step = stepOf(lesson, 0);
     const lessons::Question& q = step.questions.at(0);
-    const std::optional<double> ahead = lessons::measureAhead(step, q.measure);
+    const std::optional<double> ahead = lessons::measureAhead(step, measuredOf(q).measure);
     QVERIFY(ahead);
     QCOMPARE(lessons::judgeAttempt(q, 0.41, ahead, 1, true).message,
              QStringLiteral("Right: when it runs, the simulation will measure 0.41\u00a0m (you "
@@ -95,7 +96,7 @@ void TestLesson::judgeTimedValue()
              QStringLiteral("Right: the simulation measured 64.8\u00a0% (you said 64.8\u00a0%)."));
     // The value stays what it was at 5 s while the run goes on.
     run.run(1.0);
-    QCOMPARE(*run.measurements[0].value(q.measure, step.scene), v.value);
+    QCOMPARE(*run.measurements[0].value(measuredOf(q).measure, step.scene), v.value);
     QVERIFY(!lessons::judge(q, 70, run.measurements[0], step.scene).right);
 }
 
@@ -134,15 +135,15 @@ void TestLesson::judgeWaitsInWholeSentences()
     // Each apex a question may wait for has a sentence of its own (a translator may reorder
     // it), not an English ordinal put into one.
     lessons::Question q;
-    q.measure.kind = lessons::Measure::Kind::Apex;
-    q.measure.body = QStringLiteral("ball");
+    measuredOf(q).measure.kind = lessons::Measure::Kind::Apex;
+    measuredOf(q).measure.body = QStringLiteral("ball");
     const std::pair<int, const char*> cases[] = {
         {1, "Run the simulation past the top of the first bounce first."},
         {3, "Run the simulation past the top of the third bounce first."},
         {12, "Run the simulation past the top of bounce number 12 first."},
     };
     for (const auto& [n, message] : cases) {
-        q.measure.n = n;
+        measuredOf(q).measure.n = n;
         const lessons::Verdict v = lessons::judgeAttempt(q, 1.0, std::nullopt, 1);
         QVERIFY(!v.measured && !v.right);
         QCOMPARE(v.message, QString::fromUtf8(message));
@@ -171,13 +172,13 @@ void TestLesson::judgeMessages()
     physics::World world = lessons::buildWorld(scene);
     world.updateDiagnostics();
     lessons::Question q;
-    q.measure.kind = lessons::Measure::Kind::VelocityX;
-    q.measure.body = QStringLiteral("ball");
-    q.unit = unit;
-    q.tolerance = tolerance;
-    q.absoluteTolerance = absolute;
+    measuredOf(q).measure.kind = lessons::Measure::Kind::VelocityX;
+    measuredOf(q).measure.body = QStringLiteral("ball");
+    measuredOf(q).unit = unit;
+    measuredOf(q).tolerance = tolerance;
+    measuredOf(q).absoluteTolerance = absolute;
     lessons::Measurements m;
-    m.reset(world, {q.measure});
+    m.reset(world, {measuredOf(q).measure});
     const lessons::Verdict v = lessons::judge(q, answer, m, scene);
     QVERIFY(v.measured);
     QCOMPARE(v.right, right);
@@ -187,8 +188,8 @@ void TestLesson::judgeMessages()
 void TestLesson::judgeAttemptGivesHintThenValue()
 {
     lessons::Question q;
-    q.unit = QStringLiteral("m/s");
-    q.tolerance = 0.02;
+    measuredOf(q).unit = QStringLiteral("m/s");
+    measuredOf(q).tolerance = 0.02;
     q.hint = QStringLiteral("Momentum is conserved.");
     const double value = -1.0;
     // A wrong first try reads the hint and not the value; the second gives it.
@@ -215,8 +216,8 @@ void TestLesson::judgeAttemptGivesHintThenValue()
     QCOMPARE(bare.message, QStringLiteral("Not quite (you said 1\u00a0m/\u2060s). Try once more."));
     QVERIFY(!bare.shown);
     // Not measured yet: no try is spent, and Show me says what to do first.
-    q.measure.time = 1.5;
-    q.measure.kind = lessons::Measure::Kind::VelocityX;
+    measuredOf(q).measure.time = 1.5;
+    measuredOf(q).measure.kind = lessons::Measure::Kind::VelocityX;
     const lessons::Verdict early = lessons::judgeAttempt(q, 1.0, std::nullopt, 1);
     QVERIFY(!early.measured && !early.shown);
     QCOMPARE(early.message, QStringLiteral("Run the simulation until t = 1.5 s first."));
@@ -421,7 +422,7 @@ void TestLesson::shippedQuestionsHaveTheirTextbookAnswers()
     QVERIFY2(v.right, qPrintable(v.message));
     // Run without a window from the start, the measure comes out the same: bit for bit, as
     // the physics is deterministic.
-    const std::optional<double> ahead = lessons::measureAhead(s, q.measure);
+    const std::optional<double> ahead = lessons::measureAhead(s, measuredOf(q).measure);
     QVERIFY(ahead);
     QCOMPARE(*ahead, v.value);
     // The hint helps without giving the value away.

@@ -11,6 +11,7 @@
 
 #include <QRegularExpression>
 
+#include "question_kinds.h"
 #include <algorithm>
 #include <cmath>
 
@@ -468,7 +469,8 @@ void TestLesson::billiardsCushionsWhereTheTextSays()
     QVERIFY(breakAt > 0 && cushionAt > breakAt);
     double lastQuestion = 0;
     for (const lessons::Question& q : step.questions)
-        lastQuestion = std::max(lastQuestion, q.measure.time);
+        if (const auto* measured = q.as<lessons::MeasuredQuestion>())
+            lastQuestion = std::max(lastQuestion, measured->measure.time);
     QVERIFY2(breakAt < lastQuestion && lastQuestion < cushionAt,
              qPrintable(QStringLiteral("break %1 s, question %2 s, cushion %3 s")
                             .arg(breakAt)

@@ -6,6 +6,7 @@
 #include "test_lesson_physics.h"
 
 #include "format/languages.h"
+#include "run/measurements.h"
 
 #include <QDirIterator>
 #include <QRegularExpression>
@@ -80,6 +81,18 @@ QStringList breaksInsideUnits(const QString& text)
     return out;
 }
 
+/// The verdicts made from a measured question's hint, value and answer: its first and second
+/// wrong try and its value shown (a choice question's verdicts quote its options, which are
+/// texts of the lesson checked above).
+QStringList verdictsOf(const lessons::Question& q)
+{
+    if (!q.as<lessons::MeasuredQuestion>())
+        return {};
+    return {lessons::judgeAttempt(q, 3.25, 1.75, 1).message,
+            lessons::judgeAttempt(q, 3.25, 1.75, 2).message,
+            lessons::showAnswer(q, 1.75, true).message};
+}
+
 } // namespace
 
 void TestLesson::unitsStayWithTheirNumbers()
@@ -107,15 +120,12 @@ void TestLesson::unitsStayWithTheirNumbers()
             // The verdicts made from a question: its hint, its value and the answer.
             for (const lessons::LessonStep& step : r.lesson.steps)
                 for (const lessons::Question& q : step.questions) {
-                    for (int attempt : {1, 2}) {
-                        ++verdicts;
-                        const QString v = lessons::judgeAttempt(q, 3.25, 1.75, attempt).message;
+                    const QStringList messages = verdictsOf(q);
+                    if (!messages.isEmpty())
+                        verdicts += 2; // a first and a second try
+                    for (const QString& v : messages)
                         for (const QString& at : breaksInsideUnits(v))
                             broken << where + QStringLiteral("verdict \"") + at + u'"';
-                    }
-                    const QString shown = lessons::showAnswer(q, 1.75, true).message;
-                    for (const QString& at : breaksInsideUnits(shown))
-                        broken << where + QStringLiteral("verdict \"") + at + u'"';
                 }
         }
     }

@@ -5,6 +5,7 @@
 
 #include "test_lesson_topics.h"
 
+#include "question_kinds.h"
 #include <algorithm>
 #include <cmath>
 
@@ -277,11 +278,11 @@ void TestLessonTopics::tunnellingChoiceIsWhatTheRunDoes()
     const lessons::Lesson lesson = shippedLesson("tunnelling");
     const lessons::LessonStep& step = stepOf(lesson, 0);
     const lessons::Question& q = step.questions.at(0);
-    QVERIFY(q.isChoice());
+    QVERIFY(isChoice(q));
     QCOMPARE(q.holdBack, QStringList{QStringLiteral("run")});
     const std::vector<QStringList> options{
         {}, {"fast"}, {"medium", "fast"}, {"slow", "medium", "fast"}};
-    QCOMPARE(q.choices.size(), static_cast<qsizetype>(options.size()));
+    QCOMPARE(choiceOf(q).choices.size(), static_cast<qsizetype>(options.size()));
     StepRun run(step);
     run.run(0.5);
     QStringList passed;
@@ -290,10 +291,10 @@ void TestLessonTopics::tunnellingChoiceIsWhatTheRunDoes()
             passed << QLatin1String(id);
     const auto it = std::find(options.begin(), options.end(), passed);
     QVERIFY2(it != options.end(), qPrintable(passed.join(u", ")));
-    QCOMPARE(q.answer, static_cast<int>(it - options.begin()));
+    QCOMPARE(choiceOf(q).answer, static_cast<int>(it - options.begin()));
     // The right option's text names the speeds of exactly those balls.
-    QVERIFY2(q.choices[q.answer].contains(QStringLiteral("7.5")) &&
-                 q.choices[q.answer].contains(QStringLiteral("20")) &&
-                 !q.choices[q.answer].contains(QStringLiteral(" 5\u00a0")),
-             qPrintable(q.choices[q.answer]));
+    QVERIFY2(choiceOf(q).choices[choiceOf(q).answer].contains(QStringLiteral("7.5")) &&
+                 choiceOf(q).choices[choiceOf(q).answer].contains(QStringLiteral("20")) &&
+                 !choiceOf(q).choices[choiceOf(q).answer].contains(QStringLiteral(" 5\u00a0")),
+             qPrintable(choiceOf(q).choices[choiceOf(q).answer]));
 }

@@ -8,7 +8,14 @@ production code outside the languages table (lessons/format/languages.h and .cpp
 path reads that table; no stage of a step (physics/src/stages, physics/src/fast) reads the
 world's settings (`ctx.def`): it reads the step context's values, computed once; and the
 readers of the run-time settings (SETTING_READERS) name no setting: they walk the settings
-table.
+table; each rule of the engine written once (ONE_HOME: the bounce -e vn, drag's power,
+the state gather, the material that falls back to the world's) appears only in its home file;
+no plot is named outside the plots' table (ui/plots/plot_table.h); and no production code
+tests a question's kind by a flag (`isChoice()`, an empty `choices`, `holds_alternative` of a
+kind): where the kinds differ it visits Question::kind, so that a new kind does not compile
+until every such place handles it; and the lesson editor (QUESTION_KEY_READERS) writes no
+question's key as a string: it names them through the lesson schema's question_keys
+(lessons/format/lesson_schema.h), which its rows are written with.
 
 Functions are found by Universal Ctags (their first and last line); a file is every tracked
 .cpp/.h under physics/, lessons/, ui/, app/, bench/ and tests/. Exit 0 when everything holds;
@@ -167,19 +174,22 @@ LANGUAGE_TABLE = {"lessons/format/languages.h", "lessons/format/languages.cpp"}
 PRODUCTION = ["physics", "lessons", "ui", "app"]
 
 
+def production_code(root, files, table):
+    """(path, line number, the line without its comment) of each line of production code outside
+    the files of `table`, the one place allowed to write what a check looks for."""
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if rel.split("/")[0] not in PRODUCTION or rel in table:
+            continue
+        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            yield rel, number, line.split("//")[0]
+
+
 def language_literals(root, files):
     """(path, line number) of each "cs" or "en" string literal outside the languages table."""
     pattern = re.compile(r'(?:u|QStringLiteral\(|QLatin1String\()?"(?:cs|en)"')
-    out = []
-    for f in files:
-        rel = f.relative_to(root).as_posix()
-        if rel.split("/")[0] not in PRODUCTION or rel in LANGUAGE_TABLE:
-            continue
-        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
-            code = line.split("//")[0]
-            if pattern.search(code):
-                out.append((rel, number))
-    return out
+    return [(rel, number) for rel, number, code in production_code(root, files, LANGUAGE_TABLE)
+            if pattern.search(code)]
 
 
 STAGE_FOLDERS = ["physics/src/stages", "physics/src/fast"]
@@ -196,6 +206,106 @@ def settings_read_in_stages(root, files):
         for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
             if pattern.search(line.split("//")[0]):
                 out.append((rel, number))
+    return out
+
+
+# A physics rule, the one file that writes it, and what writing it again looks like.
+ONE_HOME = [
+    ("the bounce -e vn", "physics/src/stages/restitution.h",
+     re.compile(r"-\s*(?:\w+\s*(?:\.|->)\s*)*(?:restitution|e)\s*\*")),
+    ("drag's power", "physics/src/stages/dynamics.h",
+     re.compile(r"\bdrag\s*\*\s*\(\s*\w+\s*(?:\.|->)\s*mass\b")),
+    ("the gather of the ODE state", "physics/src/stages/dynamics.h",
+     re.compile(r"segment<3>\(\s*\w+\s*\)\s*<<")),
+    ("the world's material for a body without its own", "physics/include/rigidlab/physics/body.h",
+     re.compile(r"\b(?:restitution|friction)\s*>=\s*0(?:\.0)?\s*\?")),
+]
+
+
+def rules_restated(root, files):
+    """(path, line number, rule) of each physics rule written outside its home (ONE_HOME)."""
+    out = []
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if rel.split("/")[0] not in PRODUCTION:
+            continue
+        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            code = line.split("//")[0]
+            for rule, home, pattern in ONE_HOME:
+                if rel != home and pattern.search(code):
+                    out.append((rel, number, rule, home))
+    return out
+
+
+# The plots' table (ui/plots/plot_table.h): the window, the lesson steps, the exports, the CLI
+# and the lesson editor make and name the plots from its rows, so no production file but the
+# table and the lesson format's list names a plot, takes a row by its place in the table
+# (kPlotRows[i]) or, above the lesson format, tells a kind of plot by its name's prefix
+# ("compare-": the row says).
+PLOT_TABLE = {"ui/plots/plot_table.h", "ui/plots/plot_table.cpp", "lessons/format/lesson.h"}
+
+
+def plot_names(root):
+    text = (root / "lessons/format/lesson.h").read_text(encoding="utf-8")
+    m = re.search(r"kStepPlotNames\{([^}]*)\}", text)
+    return re.findall(r'"([\w-]+)"', m.group(1)) if m else []
+
+
+def plots_named(root, files):
+    """(path, line number) of each plot named outside the plots' table: its name written as a Qt
+    string, its row taken by index, or its kind told by the name's prefix."""
+    names = plot_names(root)
+    if not names:
+        return [("lessons/format/lesson.h", 0)]
+    pattern = re.compile(r'(?:QLatin1String\(|QStringLiteral\(|\bu)"(?:' +
+                         "|".join(re.escape(n) for n in names) + r')"|\bkPlotRows\s*\[')
+    # The lesson loader (lessons/, below the table) refuses a compared worlds' plot in a step
+    # that compares none by the format's own rule: their names start with "compare-".
+    prefix = re.compile(r'"compare-"')
+    return [(rel, number) for rel, number, code in production_code(root, files, PLOT_TABLE)
+            if pattern.search(code) or (not rel.startswith("lessons/") and prefix.search(code))]
+
+
+QUESTION_KIND_FLAG = re.compile(
+    r"\bisChoice\s*\(\s*\)|\bchoices\s*\.\s*(?:isEmpty|empty)\s*\(\s*\)"
+    r"|holds_alternative\s*<\s*(?:lessons::)?\w+Question\s*>")
+
+
+def question_kind_flags(root, files):
+    """A finding for each test of a question's kind by a flag in production code."""
+    out = []
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if rel.split("/")[0] not in PRODUCTION:
+            continue
+        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            if QUESTION_KIND_FLAG.search(line.split("//")[0]):
+                out.append(f"{rel}:{number}: a question's kind tested by a flag; visit "
+                           f"Question::kind (lessons/format/lesson.h) with one case per kind")
+    return out
+
+
+LESSON_SCHEMA = "lessons/format/lesson_schema.h"
+QUESTION_KEY_READERS = ["ui/lesson_editor/"]
+
+
+def question_key_literals(root, files):
+    """A finding for each question row's key written as a string literal in the lesson editor:
+    the keys are the ones lesson_schema.h spells in its `question_keys` namespace."""
+    header = (root / LESSON_SCHEMA).read_text(encoding="utf-8")
+    keys = re.findall(r'inline constexpr std::string_view k\w+ = "(\w+)";', header)
+    if not keys:
+        return [f"{LESSON_SCHEMA}: no question keys found (namespace question_keys)"]
+    pattern = re.compile(r'"(' + "|".join(keys) + r')"')
+    out = []
+    for f in files:
+        rel = f.relative_to(root).as_posix()
+        if not any(rel.startswith(reader) for reader in QUESTION_KEY_READERS):
+            continue
+        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
+            for m in pattern.finditer(line.split("//")[0]):
+                out.append(f"{rel}:{number}: the question key \"{m.group(1)}\" written out; name "
+                           f"it through lessons::schema::question_keys (lesson_schema.h)")
     return out
 
 
@@ -223,9 +333,15 @@ def main():
     for path, name, what in settings_restated(root, all_functions):
         problems.append(f"{path}: {name} {what}; read schema::settings() (lessons/format/"
                         f"scene_schema.h) instead")
+    for path, number in plots_named(root, files):
+        problems.append(f"{path}:{number}: a plot named by hand; take it from the plots' table "
+                        f"(ui/plots/plot_table.h)")
     for path, number in settings_read_in_stages(root, files):
         problems.append(f"{path}:{number}: a stage reads the world's settings; take the value "
                         f"from the step context (step_context.h), computed once in World::context()")
+    for path, number, rule, home in rules_restated(root, files):
+        problems.append(f"{path}:{number}: {rule} written again; call the function in {home}")
+    problems += question_kind_flags(root, files) + question_key_literals(root, files)
     for p in problems:
         print(p)
     print(f"{len(files)} files read, {len(problems)} findings")

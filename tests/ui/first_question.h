@@ -7,6 +7,8 @@
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 
+#include "question_kinds.h"
+
 #include <optional>
 
 struct MeasuredQuestion {
@@ -30,7 +32,8 @@ inline MeasuredQuestion runToFirstQuestion(rigidlab::ui::MainWindow& w, int maxS
     const auto& st = steps[static_cast<std::size_t>(q.step)];
     for (int k = 0; k < maxSteps && !q.value; ++k) {
         w.controller().stepForward();
-        q.value = w.controller().measurements().value(st.questions[0].measure, st.scene);
+        q.value = w.controller().measurements().value(
+            rigidlab::test::measuredOf(st.questions[0]).measure, st.scene);
     }
     return q;
 }

@@ -113,7 +113,7 @@ private slots:
             unnamed = unnamedInteractive(*dialog, &interactive);
             dialog->reject();
         });
-        w.plot(0)->exportInteractively(ui::ExportFormat::Png);
+        w.plot(u"energy")->exportInteractively(ui::ExportFormat::Png);
         QVERIFY(seen);
         QVERIFY2(unnamed.isEmpty(), qPrintable(unnamed.join(QLatin1Char('\n'))));
         QVERIFY(interactive > 5);
@@ -321,7 +321,7 @@ private slots:
             QString());
         for (int k = 0; k < 100; ++k)
             w.controller().stepForward();
-        ui::PlotWidget* energy = w.plot(0);
+        ui::PlotWidget* energy = w.plot(u"energy");
         energy->drain();
         QAccessibleInterface* a = QAccessible::queryAccessibleInterface(energy);
         QVERIFY(a);
@@ -366,10 +366,9 @@ private slots:
         QVERIFY(scene);
         for (int i = ui::WorldViewAccessible::FirstBody; i < scene->childCount(); ++i)
             texts << scene->child(i)->text(QAccessible::Value);
-        for (int p = 0; p < MainWindow::kPlotCount; ++p) {
-            w.plot(p)->drain();
-            texts << QAccessible::queryAccessibleInterface(w.plot(p))->text(
-                QAccessible::Description);
+        for (auto* plot : w.plots()) {
+            plot->drain();
+            texts << QAccessible::queryAccessibleInterface(plot)->text(QAccessible::Description);
         }
         const QString all = texts.join(QLatin1Char('\n'));
         const QRegularExpression sign(QStringLiteral("[-\u2212]\\d"));
@@ -516,8 +515,7 @@ private slots:
     void plotsReadInGreyscale()
     {
         MainWindow w;
-        for (int p = 0; p < MainWindow::kPlotCount; ++p) {
-            ui::PlotWidget* plot = w.plot(p);
+        for (ui::PlotWidget* plot : w.plots()) {
             for (int i = 0; i < plot->seriesCount(); ++i)
                 for (int j = 0; j < i; ++j) {
                     QVERIFY2(plot->graph(i)->pen().style() != plot->graph(j)->pen().style(),

@@ -9,6 +9,8 @@
 // This test's accessibility bridge is a plugin built into it (Q_IMPORT_PLUGIN below).
 #define QT_STATICPLUGIN
 
+#include "common/caret_before_focus.h"
+#include "common/spoken_numbers.h"
 #include "first_question.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
@@ -22,11 +24,14 @@
 #include <QAction>
 #include <QApplication>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMap>
+#include <QPushButton>
 #include <QTextBrowser>
+#include <QVBoxLayout>
 #include <QtPlugin>
 #include <QtTest>
 
@@ -74,6 +79,7 @@ public:
     {
         m_bySource.clear();
         m_shows.clear();
+        m_sequence.clear();
         m_total = 0;
     }
     int total() const { return m_total; }
@@ -99,6 +105,23 @@ public:
     }
     /// The announcements told (a notification shown, with its message).
     const QStringList& announced() const { return m_announced; }
+    /// The events of `object`, in the order they came.
+    QList<QAccessible::Event> eventsOf(const QObject* object) const
+    {
+        QList<QAccessible::Event> out;
+        for (const auto& [type, source] : m_sequence)
+            if (source == object)
+                out << type;
+        return out;
+    }
+    /// The events of `object` in order, as hexadecimal codes ("11b 8005").
+    QString orderOf(const QObject* object) const
+    {
+        QStringList out;
+        for (QAccessible::Event e : eventsOf(object))
+            out << QString::number(int(e), 16);
+        return out.join(u' ');
+    }
     /// The events of items with no object of their own, each with the item's description.
     const QList<std::pair<QAccessible::Event, QString>>& itemEvents() const { return m_items; }
 
@@ -107,6 +130,7 @@ private:
     {
         const QAccessible::Event type = event->type();
         QObject* object = event->object();
+        m_sequence.append({type, object});
         if (type == QAccessible::ObjectDestroyed || !object) {
             add(QStringLiteral("event %1").arg(int(type), 0, 16));
             // An item with no object of its own (the scene's bodies and status): what it says.
@@ -139,6 +163,7 @@ private:
     QMap<QObject*, int> m_shows;
     QStringList m_announced;
     QList<std::pair<QAccessible::Event, QString>> m_items;
+    QList<std::pair<QAccessible::Event, const QObject*>> m_sequence;
     int m_total = 0;
 };
 
@@ -176,6 +201,14 @@ void showOnProjector(MainWindow& w)
 QString welcome()
 {
     return QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json"));
+}
+
+/// Whether a field's events (in order) tell its focus, and no caret move before it (a
+/// selection change before it Orca leaves alone).
+bool caretStaysBehindFocus(const QList<QAccessible::Event>& events)
+{
+    const qsizetype focus = events.indexOf(QAccessible::Focus);
+    return focus >= 0 && !events.first(focus).contains(QAccessible::TextCaretMoved);
 }
 
 /// One key pressed and released on the focused control, then what it caused handled, as
@@ -325,6 +358,39 @@ private slots:
                  qPrintable(count.announced().join(u'|')));
     }
 
+    /// A text field reached by Tab tells its focus before anything else: Orca takes a caret
+    /// event of a field as its new focus, silently, and then says nothing for the focus event.
+    void aFieldTellsItsFocusFirst()
+    {
+        ui::placeCaretsBeforeFocus();
+        QWidget form;
+        auto* layout = new QVBoxLayout(&form);
+        auto* button = new QPushButton(QStringLiteral("Before"), &form);
+        auto* field = new QLineEdit(&form);
+        field->setAccessibleName(QStringLiteral("Answer"));
+        auto* spin = new QDoubleSpinBox(&form);
+        spin->setAccessibleName(QStringLiteral("Time step"));
+        layout->addWidget(button);
+        layout->addWidget(field);
+        layout->addWidget(spin);
+        form.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&form));
+        button->setFocus();
+        QTRY_VERIFY(button->hasFocus());
+        EventCount count;
+        QTest::keyClick(button, Qt::Key_Tab);
+        QVERIFY(field->hasFocus());
+        QVERIFY2(caretStaysBehindFocus(count.eventsOf(field)), qPrintable(count.orderOf(field)));
+        QTest::keyClick(field, Qt::Key_Tab);
+        QVERIFY(spin->hasFocus());
+        // A spin box's focus is told of the box, its caret of the field inside it.
+        const QLineEdit* spinField = spin->findChild<QLineEdit*>();
+        QVERIFY2(count.eventsOf(spin).contains(QAccessible::Focus),
+                 qPrintable(count.orderOf(spin)));
+        QVERIFY2(!count.eventsOf(spinField).contains(QAccessible::TextCaretMoved),
+                 qPrintable(count.orderOf(spinField)));
+    }
+
     /// F6 on the scene that has the focus already moves nothing, so a reader would say
     /// nothing: the scene's name and summary are told instead.
     void focusSceneKeyOnTheSceneSaysWhereItIs()
@@ -361,6 +427,11 @@ private slots:
         QVERIFY2(!count.announced().isEmpty() && count.announced().last().startsWith(first),
                  qPrintable(count.announced().join(u'|')));
         QTRY_VERIFY(qobject_cast<QTextBrowser*>(QApplication::focusWidget()));
+        // The focused text says itself: a reader speaks a text of this kind by its name.
+        auto* text = qobject_cast<QTextBrowser*>(QApplication::focusWidget());
+        const QString said = QAccessible::queryAccessibleInterface(text)->text(QAccessible::Name);
+        QVERIFY2(!said.isEmpty() && said == ui::spokenSigns(text->toPlainText().simplified()),
+                 qPrintable(said));
 
         const MeasuredQuestion q = runToFirstQuestion(w);
         QVERIFY(q.step >= 0 && q.value);

@@ -61,6 +61,16 @@ void TestClassResultsWindow::menuOpensTheDemoClass()
     // Five students and the summary row; the damaged file and the other lesson's, a line each.
     QCOMPARE(dialog->view()->model()->rowCount(), 6);
     QCOMPARE(dialog->skippedList()->count(), 2);
+    // The lesson is chosen by its title (the answers' own), its file beside it.
+    QComboBox* lessonBox = nullptr;
+    for (auto* box : dialog->findChildren<QComboBox*>())
+        if (box->currentData().toString().endsWith(QLatin1String(".json")))
+            lessonBox = box;
+    QVERIFY(lessonBox);
+    const QString file = lessonBox->currentData().toString();
+    QVERIFY2(lessonBox->currentText().contains(QStringLiteral("(%1)").arg(file)) &&
+                 !lessonBox->currentText().startsWith(file),
+             qPrintable(lessonBox->currentText()));
     QStringList lines;
     for (int i = 0; i < dialog->skippedList()->count(); ++i)
         lines << dialog->skippedList()->item(i)->text();

@@ -5,7 +5,10 @@
 // back of a room and gives the layout back when it ends.
 
 #include "classroom_util.h"
+#include "question_kinds.h"
 #include "test_main.h"
+
+using rigidlab::test::isChoice;
 
 using namespace rigidlab;
 using rigidlab::test::shippedLessons;
@@ -123,7 +126,7 @@ private slots:
                 // A Check button each; an answer box each but the choice questions.
                 const auto typed = static_cast<std::size_t>(
                     std::count_if(step.questions.begin(), step.questions.end(),
-                                  [](const lessons::Question& q) { return !q.isChoice(); }));
+                                  [](const lessons::Question& q) { return !isChoice(q); }));
                 QCOMPARE(static_cast<std::size_t>(widgets.size()), asked + typed);
                 for (const QWidget* x : widgets) {
                     // The questions follow the text in the lesson's scrolling column: scrolled

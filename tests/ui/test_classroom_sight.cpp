@@ -3,15 +3,23 @@
 // the Instruments open and in presentation mode, on every step of every shipped lesson,
 // nothing scrolled: the first question's answer box, its Check button and its verdict in
 // sight in the Lesson dock; the verdict as large as the step's text; each plot shown with a
-// data area a class can read and no legend over its data.
+// data area a class can read and no legend over its data; each table panel scrolled to its
+// table, not to the description above it.
 
 #include "classroom_util.h"
 #include "test_main.h"
 
 #include "common/language.h"
+#include "measure/measurement_panel.h"
+#include "measure/measurement_session.h"
 #include "plots/plot_shelf.h"
 
+#include "question_kinds.h"
+
+#include <QHeaderView>
 #include <QRadioButton>
+
+using rigidlab::test::isChoice;
 
 using namespace rigidlab;
 using rigidlab::test::visitShippedSteps;
@@ -80,6 +88,7 @@ private slots:
         QVERIFY(lessonDock);
         int questions = 0;
         int plots = 0;
+        int measurementPlots = 0; // steps whose Measurement panel's plots were measured
         const bool walked =
             visitShippedSteps(w, [&](const QString& path, int i, const lessons::LessonStep& step) {
                 if (mode == Mode::Instruments) {
@@ -100,11 +109,17 @@ private slots:
                 if (QTest::currentTestFailed())
                     return;
                 plots += checkPlots(w, where);
+                checkTables(w, where);
+                // The Measurement panel's plots are held to the rule like the others: where
+                // a step shows the panel, they are among those measured.
+                if (w.measurement().panel()->comparisonPlot()->isVisible())
+                    ++measurementPlots;
             });
         if (!walked)
             return;
         QVERIFY2(questions >= 10, qPrintable(QString::number(questions)));
         QVERIFY2(plots >= 20, qPrintable(QString::number(plots)));
+        QVERIFY2(measurementPlots >= 2, qPrintable(QString::number(measurementPlots)));
     }
 
 private:
@@ -119,7 +134,7 @@ private:
         QVERIFY(rows && rows->count() > 0 && rows->itemAt(0)->widget());
         QWidget* first = rows->itemAt(0)->widget();
         QList<QWidget*> answer;
-        if (q.isChoice())
+        if (isChoice(q))
             for (QRadioButton* option : first->findChildren<QRadioButton*>())
                 answer << option;
         else
@@ -157,12 +172,30 @@ private:
                      QStringLiteral("verdict %1 px, step text %2 px").arg(verdictPx).arg(textPx)));
     }
 
-    static bool inMeasurementPanel(const QWidget& w)
+    /// Each table panel in sight shows its table's head and first rows, not only the
+    /// description above it.
+    static void checkTables(MainWindow& w, const QString& where)
     {
-        for (const QWidget* p = w.parentWidget(); p; p = p->parentWidget())
-            if (p->objectName() == QLatin1String("measurementPanel"))
-                return true;
-        return false;
+        for (const char* name : {"sat", "bounces", "collision"}) {
+            QDockWidget* dock = w.dock(QLatin1String(name));
+            if (!dock || dock->isHidden() || dock->visibleRegion().isEmpty())
+                continue;
+            const auto* table = dock->findChild<QTableWidget*>();
+            if (!table)
+                continue;
+            const auto* scroll = qobject_cast<const QScrollArea*>(dock->widget());
+            QVERIFY(scroll);
+            const int drawn = QRect(table->mapTo(scroll->viewport(), QPoint(0, 0)), table->size())
+                                  .intersected(scroll->viewport()->rect())
+                                  .height();
+            const int wanted =
+                std::min(table->height(), 3 * table->verticalHeader()->defaultSectionSize());
+            QVERIFY2(drawn >= wanted,
+                     qPrintable(where + QStringLiteral("%1 table: %2 px of it in sight, %3 wanted")
+                                            .arg(QLatin1String(name))
+                                            .arg(drawn)
+                                            .arg(wanted)));
+        }
     }
 
     /// Each plot in sight: its data area at least kLeastDataArea, no legend over it. Returns
@@ -174,10 +207,6 @@ private:
             // (The plot's own region is empty: its QCustomPlot, opaque, covers it.)
             const QRegion region = plot->plot()->visibleRegion();
             if (!plot->isVisible() || region.isEmpty())
-                continue;
-            // Not held to the rule yet: the Measurement panel (lesson 7) stacks its form, two
-            // plots and the fit in one column that scrolls inside its dock at 1024x768.
-            if (inMeasurementPanel(*plot))
                 continue;
             // As the next frame draws it.
             plot->plot()->replot(QCustomPlot::rpImmediateRefresh);

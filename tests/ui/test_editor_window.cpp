@@ -24,7 +24,10 @@
 #include <QUndoStack>
 #include <QUndoView>
 
+#include "question_kinds.h"
 #include <cmath>
+
+using rigidlab::test::measuredOf;
 
 using namespace rigidlab;
 using namespace rigidlab::ui;
@@ -392,7 +395,7 @@ void TestEditorWindow::lessonStepBuiltInTheEditorIsJudged()
     while (w.controller().world().time() < 2.5) {
         w.controller().stepForward();
     }
-    const auto measured = w.controller().measurements().value(q.measure, step.scene);
+    const auto measured = w.controller().measurements().value(measuredOf(q).measure, step.scene);
     QVERIFY(measured);
     // Momentum and an elastic hit: v1 = (m1 - m2) / (m1 + m2) u = -u/2 for m2 = 3 m1.
     const auto& moving = step.scene.bodies[*step.scene.bodyIndex(QStringLiteral("moving"))];

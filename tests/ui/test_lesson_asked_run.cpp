@@ -14,8 +14,11 @@
 #include "test_files.h"
 #include "test_main.h"
 
+#include "question_kinds.h"
 #include <QTemporaryDir>
 #include <QtTest>
+
+using rigidlab::test::measuredOf;
 
 using namespace rigidlab;
 using rigidlab::test::writeFile;
@@ -80,10 +83,10 @@ private slots:
         const lessons::Question& q = step.questions[0];
         // The asked run measures the textbook value; the step's own (e = 1) another.
         const std::optional<double> asked =
-            lessons::measureAhead(lessons::askedStep(step, q), q.measure);
+            lessons::measureAhead(lessons::askedStep(step, q), measuredOf(q).measure);
         QVERIFY(asked);
         RL_VERIFY_NEAR(*asked, 1.0, 0.02, 0); // equal masses stuck together share 2 m/s
-        const std::optional<double> own = lessons::measureAhead(step, q.measure);
+        const std::optional<double> own = lessons::measureAhead(step, measuredOf(q).measure);
         QVERIFY(own);
         RL_VERIFY_NEAR(*own, 2.0, 0.02, 0);
 
@@ -107,7 +110,7 @@ private slots:
         // Reset keeps e = 0 from the start: now the window's run is judged.
         controller.reset();
         runTo(controller, 1.6);
-        const auto live = controller.measurements().value(q.measure, step.scene);
+        const auto live = controller.measurements().value(measuredOf(q).measure, step.scene);
         QVERIFY(live);
         QCOMPARE(*live, *asked);
         player.answer(0, QStringLiteral("1"));

@@ -12,8 +12,11 @@
 #include "format/data_dirs.h"
 #include "format/lesson_catalog.h"
 
+#include "question_kinds.h"
 #include <QDoubleSpinBox>
 #include <QPushButton>
+
+using rigidlab::test::measuredOf;
 
 namespace {
 
@@ -368,7 +371,7 @@ void TestLessonEditor::teachersOwnQuestion()
     const std::optional<lessons::Lesson> lesson = d.lesson(QStringLiteral("en"), error);
     QVERIFY2(lesson, qPrintable(error));
     QCOMPARE(lesson->steps[0].questions.at(0).hint, QStringLiteral("Momentum is kept."));
-    QCOMPARE(lesson->steps[0].questions.at(0).measure.body, QStringLiteral("heavy"));
+    QCOMPARE(measuredOf(lesson->steps[0].questions.at(0)).measure.body, QStringLiteral("heavy"));
     auto* answer = ed.findChild<QLabel*>(QStringLiteral("questionAnswer"));
     QVERIFY2(!answer->text().startsWith(u'⚠'), qPrintable(answer->text()));
 

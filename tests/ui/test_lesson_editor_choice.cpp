@@ -16,6 +16,7 @@
 
 #include "test_main.h"
 
+#include "question_kinds.h"
 #include <QAction>
 #include <QButtonGroup>
 #include <QComboBox>
@@ -29,6 +30,9 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 #include <QtTest>
+
+using rigidlab::test::choiceOf;
+using rigidlab::test::isChoice;
 
 using namespace rigidlab;
 
@@ -240,7 +244,7 @@ void TestLessonEditorChoice::savedReopenedAndPlayed()
     QCOMPARE(w.openLesson(m_saved, true), QString());
     ui::LessonPlayer& player = w.lessonPlayer();
     const lessons::Question& question = player.lesson()->steps.at(0).questions.at(0);
-    QVERIFY(question.isChoice());
+    QVERIFY(isChoice(question));
     QGroupBox* group = nullptr;
     for (QGroupBox* g : w.findChildren<QGroupBox*>())
         if (g->accessibleName() == question.prompt)
@@ -249,7 +253,7 @@ void TestLessonEditorChoice::savedReopenedAndPlayed()
     const QList<QRadioButton*> options = group->findChildren<QRadioButton*>();
     QCOMPARE(options.size(), 3);
     for (int i = 0; i < 3; ++i)
-        QCOMPARE(options[i]->accessibleName(), question.choices[i]);
+        QCOMPARE(options[i]->accessibleName(), choiceOf(question).choices[i]);
     QVERIFY(player.heldBack().contains(QStringLiteral("run")));
 
     // Check with nothing chosen asks for a choice, and counts nothing.
@@ -267,7 +271,8 @@ void TestLessonEditorChoice::savedReopenedAndPlayed()
     // still held back.
     player.choose(0, 2);
     QVERIFY2(verdictOf(player).startsWith(QStringLiteral("✗")), qPrintable(verdictOf(player)));
-    QVERIFY2(!verdictOf(player).contains(question.choices[1]), qPrintable(verdictOf(player)));
+    QVERIFY2(!verdictOf(player).contains(choiceOf(question).choices[1]),
+             qPrintable(verdictOf(player)));
     QVERIFY(player.heldBack().contains(QStringLiteral("run")));
     // The right one: marked right, the run released.
     player.choose(0, 1);
@@ -277,9 +282,9 @@ void TestLessonEditorChoice::savedReopenedAndPlayed()
     const lessons::Answers answers = player.answers();
     const std::vector<lessons::AnswerTry>& tries = answers.steps.at(0).questions.at(0);
     QCOMPARE(tries.size(), std::size_t{2});
-    QCOMPARE(tries[0].choiceText, question.choices[2]);
+    QCOMPARE(tries[0].choiceText, choiceOf(question).choices[2]);
     QVERIFY(!tries[0].right);
-    QCOMPARE(tries[1].choiceText, question.choices[1]);
+    QCOMPARE(tries[1].choiceText, choiceOf(question).choices[1]);
     QVERIFY(tries[1].right);
     const lessons::AnswersLoadResult read =
         lessons::loadAnswersJson(lessons::answersJson(answers), QStringLiteral("a.json"));
@@ -313,7 +318,8 @@ void TestLessonEditorChoice::playedWrongTwiceOrShown()
             QVERIFY2(verdictOf(player).startsWith(QStringLiteral("✗")),
                      qPrintable(verdictOf(player)));
         }
-        QVERIFY2(verdictOf(player).contains(question.choices[1]), qPrintable(verdictOf(player)));
+        QVERIFY2(verdictOf(player).contains(choiceOf(question).choices[1]),
+                 qPrintable(verdictOf(player)));
         QVERIFY(player.heldBack().isEmpty());
         QVERIFY(w.controller().isRunning()); // predicted, now see: the run starts
     }

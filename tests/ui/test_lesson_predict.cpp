@@ -11,15 +11,18 @@
 #include "format/lesson.h"
 #include "run/measurements.h"
 
-#include "test_files.h"
 #include "near.h"
+#include "test_files.h"
 #include "test_main.h"
 
+#include "question_kinds.h"
 #include <QAction>
 #include <QDockWidget>
 #include <QTableWidget>
 #include <QTemporaryDir>
 #include <QtTest>
+
+using rigidlab::test::measuredOf;
 
 using namespace rigidlab;
 using rigidlab::test::writeFile;
@@ -98,7 +101,8 @@ private slots:
         QCOMPARE(controller.world().time(), 0.0);
 
         // The value the answer is judged against, measured without the window.
-        const std::optional<double> b = lessons::measureAhead(step, step.questions[0].measure);
+        const std::optional<double> b =
+            lessons::measureAhead(step, measuredOf(step.questions[0]).measure);
         QVERIFY(b);
         RL_VERIFY_NEAR(*b, 2.0, 0.02, 0); // equal masses, e = 1: b takes a's 2 m/s
         const QString bText = QString::number(*b, 'g', 3) + QStringLiteral("\u00a0m/\u2060s");
@@ -157,7 +161,8 @@ private slots:
         QCOMPARE(w.openLesson(m_path, true), QString());
         auto& player = w.lessonPlayer();
         const lessons::LessonStep& step = player.lesson()->steps[0];
-        const std::optional<double> b = lessons::measureAhead(step, step.questions[0].measure);
+        const std::optional<double> b =
+            lessons::measureAhead(step, measuredOf(step.questions[0]).measure);
         QVERIFY(b);
         QVERIFY(w.dock(QStringLiteral("inspector"))->isHidden());
         player.answer(0, QString::number(*b, 'g', 10));
@@ -170,7 +175,7 @@ private slots:
         while (w.controller().world().time() < 1.6)
             w.controller().stepForward();
         const auto live =
-            w.controller().measurements().value(step.questions[0].measure, step.scene);
+            w.controller().measurements().value(measuredOf(step.questions[0]).measure, step.scene);
         QVERIFY(live);
         QCOMPARE(*live, *b);
         // Restarting the step holds it all back again.

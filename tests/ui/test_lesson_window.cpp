@@ -30,7 +30,10 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "question_kinds.h"
 #include "test_main.h"
+
+using rigidlab::test::measuredOf;
 
 using namespace rigidlab;
 using rigidlab::test::shippedLessons;
@@ -282,7 +285,7 @@ private slots:
                     for (int k = 0; k < 200000 && !value; ++k) {
                         w.controller().stepForward();
                         value = w.controller().measurements().value(
-                            qs[static_cast<size_t>(q)].measure,
+                            measuredOf(qs[static_cast<size_t>(q)]).measure,
                             steps[static_cast<size_t>(s)].scene);
                     }
                     QVERIFY2(value, qPrintable(qs[static_cast<size_t>(q)].prompt));

@@ -43,7 +43,10 @@
 #include <QTemporaryDir>
 #include <QUndoStack>
 
+#include "question_kinds.h"
 #include <cmath>
+
+using rigidlab::test::measuredOf;
 
 using namespace rigidlab;
 using namespace rigidlab::ui;
@@ -358,11 +361,11 @@ void TestMeasureWindow::lessonLoadsAndIsJudged()
     const double expected[] = {0.8 * 0.8, std::pow(0.72, 4)};
     for (int s = 0; s < 2; ++s) {
         const lessons::LessonStep& step = lesson.steps[static_cast<std::size_t>(s)];
-        const auto value = lessons::measureAhead(step, step.questions[0].measure);
+        const auto value = lessons::measureAhead(step, measuredOf(step.questions[0]).measure);
         QVERIFY(value);
         // Within the questions' tolerance: the steps in which the ball touches the floor are not
         // exact (the restitution lesson says so too).
-        RL_VERIFY_NEAR(*value, expected[s], 0, step.questions[0].tolerance);
+        RL_VERIFY_NEAR(*value, expected[s], 0, measuredOf(step.questions[0]).tolerance);
         QVERIFY(lessons::judgeAttempt(step.questions[0], expected[s], value, 1).right);
         QVERIFY(!lessons::judgeAttempt(step.questions[0], expected[s] * 1.2, value, 1).right);
     }

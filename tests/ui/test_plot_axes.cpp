@@ -6,6 +6,7 @@
 
 #include "plots/plot_export.h"
 #include "plots/plot_range.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "simulation/step_sampler.h"

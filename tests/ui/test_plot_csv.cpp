@@ -8,6 +8,7 @@
 #include "common/language.h"
 #include "panels/fitting_table.h"
 #include "plots/plot_export.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/step_sampler.h"
 

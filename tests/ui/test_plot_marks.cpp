@@ -6,6 +6,7 @@
 #include "lesson_player/lesson_player.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/sample_buffer.h"
 #include "simulation/simulation_controller.h"

@@ -8,6 +8,7 @@
 #include "lesson_player/lesson_player.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/sample_buffer.h"
 #include "simulation/simulation_controller.h"
@@ -279,7 +280,7 @@ void TestPlotReading::windowTimelineFollowsTheScrub()
     SimulationController& c = w.controller();
     for (int i = 0; i < 600; ++i)
         c.stepForward();
-    PlotWidget* energy = w.plot(0);
+    PlotWidget* energy = w.plot(u"energy");
     energy->drain();
     const double end = c.world().time();
     QVERIFY(end > 0.5);
@@ -301,14 +302,13 @@ void TestPlotReading::windowTimelineFollowsTheScrub()
     const double chosen = c.world().time();
     QVERIFY(chosen < end);
     energy->drain();
-    for (int i = 0; i < MainWindow::kPlotCount; ++i) {
-        PlotWidget* plot = w.plot(i);
+    for (PlotWidget* plot : w.plots()) {
         plot->drain();
         QVERIFY(plot->points(0).front().x() < 0.05); // from the start of the run
         QCOMPARE(plot->points(0).back().x(), chosen);
         QVERIFY(plot->pointCount(0) > 50);
         QVERIFY(!plot->ghostPoints(0).empty());
-        QVERIFY2(timeRange(*plot).contains(chosen), qPrintable(QString::number(i)));
+        QVERIFY2(timeRange(*plot).contains(chosen), qPrintable(plot->objectName()));
     }
 
     // Play on from there: the new points come after the branch point.

@@ -3,6 +3,7 @@
 // runs, time travel and marks behave. (Their export: test_plot_export.cpp.)
 
 #include "plots/plot_export.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/sample_buffer.h"
 
@@ -50,15 +51,13 @@ double field(const Sample& s, const QString& name)
     qFatal("unknown sample field %s", qPrintable(name));
 }
 
+/// The window's plot by its row in the plots' table, as the window makes it.
 PlotWidget* makePlot(const QString& kind, QWidget* parent)
 {
-    if (kind == "energy")
-        return makeEnergyPlot(parent);
-    if (kind == "momentum")
-        return makeMomentumPlot(parent);
-    if (kind == "drift")
-        return makeDriftPlot(parent);
-    qFatal("unknown plot kind %s", qPrintable(kind));
+    const PlotRow* row = findPlot(kind);
+    if (!row || !row->inWindow())
+        qFatal("no window plot %s in the plots' table", qPrintable(kind));
+    return makeWorldPlot(*row, parent);
 }
 
 } // namespace
@@ -68,6 +67,8 @@ class TestPlots : public QObject {
 private slots:
     void seriesReceiveSamples_data();
     void seriesReceiveSamples();
+    void tableRowsMakeTheirPlots();
+    void quantityRowMakesItsPlot();
     void directSeriesRestartWhenTimeGoesBack();
     void drainReplotsOnlyOnChange();
     void memoryStaysBounded_data();
@@ -107,6 +108,7 @@ void TestPlots::seriesReceiveSamples()
     QWidget window;
     PlotWidget* plot = makePlot(kind, &window);
     QCOMPARE(plot->parent(), &window);
+    QCOMPARE(plot->objectName(), kind); // found by its name: its dock, its file
     QCOMPARE(plot->seriesCount(), fields.size());
     for (int i = 0; i < plot->seriesCount(); ++i)
         QCOMPARE(plot->seriesName(i) + " [" + plot->seriesUnit(i) + "]", headers[i]);
@@ -131,6 +133,50 @@ void TestPlots::seriesReceiveSamples()
             QCOMPARE(pts[i].y(), field(s, fields[c]));
         }
     }
+}
+
+void TestPlots::tableRowsMakeTheirPlots()
+{
+    // Each row is found by its name, and each of the window's rows makes a plot named after
+    // it, with a title and at least one curve (the compared worlds' rows: test_lesson_export).
+    int windowRows = 0;
+    for (const PlotRow& row : kPlotRows) {
+        const QString name = plotName(row);
+        QCOMPARE(findPlot(name), &row);
+        QVERIFY2(!plotTitle(row).isEmpty() && !plotTitle(row, false).isEmpty(), qPrintable(name));
+        if (!row.inWindow())
+            continue;
+        ++windowRows;
+        std::unique_ptr<PlotWidget> plot(makeWorldPlot(row, nullptr));
+        QCOMPARE(plot->objectName(), name);
+        QVERIFY2(plot->seriesCount() > 0, qPrintable(name));
+    }
+    QVERIFY(windowRows > 0);
+    QCOMPARE(findPlot(u"energies"), nullptr);
+}
+
+void TestPlots::quantityRowMakesItsPlot()
+{
+    // A plot of one quantity is made from its row alone: title, axis, one curve of the sample.
+    static constexpr PlotRow row{.name = "kinetic-alone",
+                                 .title = "Kinetic energy",
+                                 .shortTitle = "Kinetic",
+                                 .quantity = "kinetic energy",
+                                 .unit = "J",
+                                 .sample = [](const Sample& s) { return s.kinetic; }};
+    std::unique_ptr<PlotWidget> plot(makeWorldPlot(row, nullptr));
+    QCOMPARE(plot->objectName(), QStringLiteral("kinetic-alone"));
+    QCOMPARE(plot->title(), QStringLiteral("Kinetic energy"));
+    QCOMPARE(plot->seriesCount(), 1);
+    QCOMPARE(plot->seriesName(0), QStringLiteral("kinetic energy"));
+    QCOMPARE(plot->yAxisUnit(YAxis::Left), QStringLiteral("J"));
+    SampleBuffer buffer;
+    plot->setSource(&buffer);
+    for (int i = 0; i < 10; ++i)
+        buffer.push(sampleAt(0.1 * i));
+    QCOMPARE(plot->drain(), 10);
+    for (int i = 0; i < 10; ++i)
+        QCOMPARE(plot->points(0).at(static_cast<std::size_t>(i)).y(), sampleAt(0.1 * i).kinetic);
 }
 
 void TestPlots::directSeriesRestartWhenTimeGoesBack()

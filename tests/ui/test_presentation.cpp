@@ -57,8 +57,8 @@ private slots:
         QVERIFY(w.isFullScreen());
         QVERIFY(w.font().pointSizeF() >= 1.5 * font.pointSizeF() - 1e-9);
         QVERIFY(ui::theme::lineWidth(1.0) >= ui::theme::kPresentationMinLinePx);
-        for (int i = 0; i < MainWindow::kPlotCount; ++i) {
-            QCustomPlot* plot = w.plot(i)->plot();
+        for (auto* shown : w.plots()) {
+            QCustomPlot* plot = shown->plot();
             QVERIFY(plot->xAxis->labelFont().pointSizeF() >= 18);
             QVERIFY(plot->yAxis->labelFont().pointSizeF() >= 18);
             QVERIFY(plot->graphCount() > 0);
@@ -78,8 +78,8 @@ private slots:
         // laid out again at the restored size).
         QTRY_VERIFY2(samePlaces(dockPlaces(w), before),
                      qPrintable(describe(dockPlaces(w), before)));
-        for (int i = 0; i < MainWindow::kPlotCount; ++i)
-            QVERIFY(w.plot(i)->plot()->xAxis->labelFont().pointSizeF() < 18);
+        for (auto* plot : w.plots())
+            QVERIFY(plot->plot()->xAxis->labelFont().pointSizeF() < 18);
     }
 
     // A dock opened during presentation mode (the inspector, to show the class a value) stays
@@ -129,8 +129,8 @@ private slots:
                  QString());
         runFor(w.controller(), 2.0);
         QMetaObject::invokeMethod(&w, "updateStatus");
-        for (int i = 0; i < MainWindow::kPlotCount; ++i)
-            w.plot(i)->drain();
+        for (auto* plot : w.plots())
+            plot->drain();
         QCoreApplication::processEvents();
         QVERIFY(w.presentation());
         QCOMPARE(w.size(), QSize(1024, 768));
@@ -181,7 +181,7 @@ private slots:
                                     .arg(label->sizeHint().width())));
         }
 
-        QCustomPlot* energy = w.plot(0)->plot();
+        QCustomPlot* energy = w.plot(u"energy")->plot();
         QVERIFY(energy->isVisible());
         energy->replot();
         energy->replot(); // the ticks follow the labels' width measured by the replot before

@@ -312,8 +312,8 @@ private slots:
             w.controller().stepForward();
         w.controller().stepBack();
         QTest::qWait(100);
-        for (int i = 0; i < MainWindow::kPlotCount; ++i)
-            w.plot(i)->drain();
+        for (auto* plot : w.plots())
+            plot->drain();
         QVERIFY(w.controller().currentStep() <= at + 10);
         // Halve dt: back to the start with dt = 5 ms, where Verlet is stable.
         auto* halve = banner->findChild<QPushButton*>(QStringLiteral("halveDt"));
@@ -442,9 +442,9 @@ private slots:
         // Plots start again from the new scene's t = 0.
         for (int i = 0; i < 50; ++i)
             w.controller().stepForward();
-        for (int i = 0; i < MainWindow::kPlotCount; ++i) {
-            w.plot(i)->drain();
-            QVERIFY(w.plot(i)->pointCount() > 0);
+        for (auto* plot : w.plots()) {
+            plot->drain();
+            QVERIFY(plot->pointCount() > 0);
         }
         // A second lesson over the first, mid-run, and the sweep running through it all.
         QCOMPARE(w.openLesson(lesson("stacks.json"), true), QString());

@@ -145,11 +145,11 @@ void showLive(ui::MainWindow& window, const lessons::Scene& scene)
     window.controller().loadScene(scene, QStringLiteral("soak.json"));
     if (qEnvironmentVariableIsEmpty("RIGIDLAB_SOAK_SECONDS"))
         window.controller().setHistoryBudget(kTestHistoryBudget);
-    window.plot(0)->setRangeMode(ui::RangeMode::WholeRun);
+    window.plot(u"energy")->setRangeMode(ui::RangeMode::WholeRun);
     // The plots share one place in the window, behind tabs: each is floated out, so that every
     // one is drawn as it runs (the heaviest the window gets).
-    for (int i = 0; i < ui::MainWindow::kPlotCount; ++i)
-        for (QWidget* p = window.plot(i); p; p = p->parentWidget())
+    for (QWidget* plot : window.plots())
+        for (QWidget* p = plot; p; p = p->parentWidget())
             if (auto* dock = qobject_cast<QDockWidget*>(p)) {
                 dock->setFloating(true);
                 dock->show();
@@ -176,8 +176,8 @@ void reportRates(ui::MainWindow& window, double firstRate, double lastRate)
 {
     qInfo("soak: %.0f steps per CPU second in the first tenth, %.0f in the last (ratio %.2f)",
           firstRate, lastRate, lastRate / firstRate);
-    for (int i = 0; i < ui::MainWindow::kPlotCount; ++i)
-        qInfo("soak: plot %d holds %d points", i, window.plot(i)->pointCount());
+    for (const auto* plot : window.plots())
+        qInfo("soak: plot %s holds %d points", qPrintable(plot->objectName()), plot->pointCount());
 }
 
 } // namespace
@@ -225,8 +225,8 @@ private slots:
         ui::MainWindow window;
         showLive(window, loaded.scene);
         auto& controller = window.controller();
-        for (int i = 0; i < ui::MainWindow::kPlotCount; ++i)
-            QVERIFY(window.plot(i)->isVisible());
+        for (const auto* plot : window.plots())
+            QVERIFY(plot->isVisible());
 
         const double dt = controller.world().def().dt;
         const long long steps = std::llround(seconds / dt);

@@ -111,9 +111,9 @@ private slots:
         QCOMPARE(w.openScene(scene("ball_drop.json"), true), QString());
         for (int i = 0; i < 300; ++i)
             w.controller().stepForward();
-        for (int i = 0; i < MainWindow::kPlotCount; ++i) {
-            w.plot(i)->drain();
-            QVERIFY2(w.plot(i)->pointCount() > 10, qPrintable(QString::number(i)));
+        for (auto* plot : w.plots()) {
+            plot->drain();
+            QVERIFY2(plot->pointCount() > 10, qPrintable(plot->objectName()));
         }
     }
 
@@ -275,12 +275,12 @@ private slots:
         QCOMPARE(w.openScene(scene("spring_oscillator.json"), true), QString());
         for (int i = 0; i < 500; ++i)
             w.controller().stepForward();
-        w.plot(0)->drain();
+        w.plot(u"energy")->drain();
         QTemporaryDir dir;
         for (const char* suffix : {"png", "pdf", "svg", "csv"}) {
             const QString path = dir.filePath(QStringLiteral("energy.") + QLatin1String(suffix));
-            const auto r =
-                ui::exportPlot(*w.plot(0), path, *ui::formatFromSuffix(QLatin1String(suffix)));
+            const auto r = ui::exportPlot(*w.plot(u"energy"), path,
+                                          *ui::formatFromSuffix(QLatin1String(suffix)));
             QVERIFY2(r.ok, qPrintable(r.error));
             QVERIFY(QFileInfo(path).size() > 100);
         }

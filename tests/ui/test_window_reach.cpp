@@ -284,8 +284,8 @@ private slots:
         auto* menu = w.findChild<QMenu*>(QStringLiteral("exportMenu"));
         QVERIFY(menu);
         QStringList titles;
-        for (int i = 0; i < MainWindow::kPlotCount; ++i)
-            titles << w.plot(i)->title();
+        for (const auto* plot : w.plots())
+            titles << plot->title();
         QCOMPARE(menuTexts(*menu), titles);
         QCOMPARE(
             w.openLesson(MainWindow::lessonsFolder() + QStringLiteral("/energy_drift.json"), true),

@@ -22,6 +22,7 @@
 
 #include "test_main.h"
 
+#include "question_kinds.h"
 #include <QAction>
 #include <QDir>
 #include <QFile>
@@ -33,6 +34,8 @@
 #include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
+
+using rigidlab::test::measuredOf;
 
 using namespace rigidlab;
 
@@ -131,7 +134,7 @@ int figuresOfStep(const QString& text, const QString& word, int step)
 std::optional<double> expectedValue(const lessons::LessonStep& step, const lessons::Question& q)
 {
     // On the run the question asks for (its "set" on top of the step's settings).
-    return lessons::measureAhead(lessons::askedStep(step, q), q.measure);
+    return lessons::measureAhead(lessons::askedStep(step, q), measuredOf(q).measure);
 }
 
 /// Answers every question of the open lesson, step by step, in turn: a wrong try then a right
@@ -304,7 +307,7 @@ void TestWorksheet::emptySheetAndKey()
             // The key gives the value the run measures, as the window writes it.
             const std::optional<double> value = expectedValue(step, q);
             QVERIFY(value);
-            const QString measured = flat(ui::formatQuantity(*value, q.unit));
+            const QString measured = flat(ui::formatQuantity(*value, measuredOf(q).unit));
             QVERIFY2(keyText.contains(measured),
                      qPrintable(measured + QStringLiteral("\n") + keyText));
             QVERIFY2(!emptyText.contains(measured), qPrintable(measured));
@@ -437,7 +440,8 @@ void TestWorksheet::prematureCheckIsNoAnswer()
     std::optional<double> value;
     for (int k = 0; k < 20000 && !value; ++k) {
         w.controller().stepForward();
-        value = w.controller().measurements().value(step.questions[0].measure, step.scene);
+        value =
+            w.controller().measurements().value(measuredOf(step.questions[0]).measure, step.scene);
     }
     QVERIFY(value.has_value());
     player.answer(0, QLocale().toString(*value, 'g', 8));
@@ -491,10 +495,12 @@ void TestWorksheet::stepFigureIsTheAskedRun()
     QVERIFY(lesson.steps.size() >= 3);
     const lessons::LessonStep& step = lesson.steps[2];
     const auto asking =
-        std::find_if(step.questions.begin(), step.questions.end(),
-                     [](const lessons::Question& q) { return q.set.has("restitution"); });
+        std::find_if(step.questions.begin(), step.questions.end(), [](const lessons::Question& q) {
+            const auto* measured = q.as<lessons::MeasuredQuestion>();
+            return measured && measured->set.has("restitution");
+        });
     QVERIFY(asking != step.questions.end());
-    QCOMPARE(*asking->set.get<double>("restitution"), 0.0);
+    QCOMPARE(*measuredOf(*asking).set.get<double>("restitution"), 0.0);
     QCOMPARE(step.settings.get<double>("restitution").value_or(-1), 0.5);
 
     lessons::Answers answers;

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The one table of what the window calls the plots and panels a lesson step may show: the
-// lesson format's name (lessons/format/lesson.h), the full title and the short one (a dock's
-// tab on a narrow column). The window titles its docks from it (window/window_names.h) and
-// the lesson editor lists a step's plots and panels from it, so the two say the same. Here in
-// common/ because both the window and the lesson editor include it.
+// The one table of what the window calls the panels a lesson step may show: the lesson
+// format's name (lessons/format/lesson.h), the full title and the short one (a dock's tab on a
+// narrow column). The window titles its docks from it and the lesson editor lists a step's
+// panels from it, so the two say the same (the plots' titles are their rows', plot_table.h).
+// Here in common/ because both the window and the lesson editor include it.
 
 #include "format/lesson.h"
 
@@ -30,23 +30,6 @@ inline QString stepPartText(const char* text)
     return QCoreApplication::translate(kStepPartContext, text);
 }
 
-/// In the order of lessons::kStepPlotNames; the first three are the window's standard plots.
-inline constexpr std::array<StepPartName, 5> kStepPlotTitles{{
-    {lessons::kStepPlotNames[0].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy")},
-    {lessons::kStepPlotNames[1].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum")},
-    {lessons::kStepPlotNames[2].data(),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy drift"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Drift")},
-    {lessons::kStepPlotNames[3].data(),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy of the compared"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy of the compared")},
-    {lessons::kStepPlotNames[4].data(),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Drift of the compared"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Drift of the compared")},
-}};
-
 /// In the order of lessons::kStepPanelNames.
 inline constexpr std::array<StepPartName, 6> kStepPanelTitles{{
     {lessons::kStepPanelNames[0].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Controls"),
@@ -65,7 +48,6 @@ inline constexpr std::array<StepPartName, 6> kStepPanelTitles{{
      QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Measurement")},
 }};
 
-static_assert(kStepPlotTitles.size() == lessons::kStepPlotNames.size());
 static_assert(kStepPanelTitles.size() == lessons::kStepPanelNames.size());
 
 } // namespace rigidlab::ui

@@ -3,6 +3,7 @@
 #include "lesson_editor/editor_parts.h"
 
 #include "format/lesson.h"
+#include "format/lesson_schema.h"
 
 #include <QComboBox>
 #include <QFormLayout>
@@ -21,6 +22,9 @@
 namespace rigidlab::ui {
 
 namespace {
+
+namespace keys = lessons::schema::question_keys;
+using lessons::schema::jsonKey;
 
 /// The table's columns, as in the rest of the lesson editor: the window's language first.
 QString columnLanguage(int column)
@@ -79,7 +83,8 @@ ChoiceEditor::ChoiceEditor(QWidget* parent) : QWidget(parent)
 
 void ChoiceEditor::setQuestion(const QJsonObject& q)
 {
-    showOptions(q.value(u"choices").toArray(), q.value(u"answer").toInt());
+    showOptions(q.value(jsonKey(keys::kChoices)).toArray(),
+                q.value(jsonKey(keys::kAnswer)).toInt());
 }
 
 QJsonArray ChoiceEditor::options() const
@@ -100,8 +105,8 @@ QJsonArray ChoiceEditor::options() const
 
 QJsonObject ChoiceEditor::applyTo(QJsonObject q) const
 {
-    q.insert(QStringLiteral("choices"), options());
-    q.insert(QStringLiteral("answer"), std::max(m_right->currentIndex(), 0));
+    q.insert(jsonKey(keys::kChoices), options());
+    q.insert(jsonKey(keys::kAnswer), std::max(m_right->currentIndex(), 0));
     return q;
 }
 

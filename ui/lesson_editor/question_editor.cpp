@@ -7,9 +7,11 @@
 
 #include "common/accessible_names.h"
 
+#include "format/lesson_schema.h"
 #include "run/measurements.h"
 
 #include "rigidlab/physics/integrator.h"
+#include "rigidlab/physics/overloaded.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -29,6 +31,7 @@
 #include <algorithm>
 #include <optional>
 #include <utility>
+#include <variant>
 
 namespace rigidlab::ui {
 
@@ -80,6 +83,12 @@ QString langCode(int l)
 }
 
 constexpr int kColumns = static_cast<int>(kEditorLanguages);
+
+namespace keys = lessons::schema::question_keys;
+using lessons::schema::jsonKey;
+
+/// A choice question's place among the kinds of question.
+constexpr std::size_t kChoice = lessons::schema::questionKindIndex<lessons::ChoiceQuestion>();
 
 /// The question a new measured question asks, in the window's language, for what it measures:
 /// it follows the kind, the body (by its label) and the time the teacher chooses.
@@ -145,10 +154,19 @@ QFormLayout* QuestionEditor::buildForm()
     m_questionKind = new QComboBox(this);
     m_questionKind->setObjectName(QStringLiteral("questionType"));
     m_questionKind->setAccessibleName(tr("Kind of question"));
-    m_questionKind->addItem(tr("a number measured from the run"), false);
-    m_questionKind->addItem(tr("a choice of answers"), true);
+    // One item per kind of question, its index in Question::kind as its data.
+    for (std::size_t k = 0; k < std::variant_size_v<decltype(lessons::Question::kind)>; ++k)
+        m_questionKind->addItem(
+            std::visit(physics::Overloaded{[](const lessons::MeasuredQuestion&) {
+                                               return tr("a number measured from the run");
+                                           },
+                                           [](const lessons::ChoiceQuestion&) {
+                                               return tr("a choice of answers");
+                                           }},
+                       lessons::schema::newQuestionKind(k)),
+            QVariant::fromValue(k));
     connect(m_questionKind, &QComboBox::activated, this,
-            [this] { setChoice(m_questionKind->currentData().toBool()); });
+            [this] { setKind(m_questionKind->currentData().value<std::size_t>()); });
     form->addRow(tr("&Kind"), m_questionKind);
     m_choices = new ChoiceEditor(this);
     connect(m_choices, &ChoiceEditor::edited, this, &QuestionEditor::edited);
@@ -261,30 +279,35 @@ QJsonObject QuestionEditor::defaultMeasured() const
     const QList<std::pair<QString, QString>> bodies = movingBodies();
     if (!bodies.isEmpty())
         measure.insert(QStringLiteral("body"), bodies.front().first);
-    return QJsonObject{{QStringLiteral("measure"), measure},
-                       {QStringLiteral("unit"), QLatin1String(k.unit)},
-                       {QStringLiteral("tolerance"), 0.05}};
+    return QJsonObject{{jsonKey(keys::kMeasure), measure},
+                       {jsonKey(keys::kUnit), QLatin1String(k.unit)},
+                       {jsonKey(keys::kTolerance), 0.05}};
 }
 
-void QuestionEditor::setChoice(bool choice)
+QJsonObject QuestionEditor::defaultChoice() const
+{
+    return QJsonObject{{jsonKey(keys::kChoices),
+                        QJsonArray{QJsonObject{{currentLanguage(), tr("Option %1").arg(1)}},
+                                   QJsonObject{{currentLanguage(), tr("Option %1").arg(2)}}}},
+                       {jsonKey(keys::kAnswer), 0}};
+}
+
+void QuestionEditor::setKind(std::size_t kind)
 {
     QJsonObject q = question();
-    if (m_step < 0 || q.isEmpty() || q.contains(u"choices") == choice)
+    const std::size_t was = lessons::schema::questionKindIn(q);
+    if (m_step < 0 || q.isEmpty() || was == kind)
         return;
-    if (choice) {
-        for (const char* key : {"measure", "unit", "tolerance", "absoluteTolerance"})
-            q.remove(QLatin1String(key));
-        q.insert(QStringLiteral("choices"),
-                 QJsonArray{QJsonObject{{currentLanguage(), tr("Option %1").arg(1)}},
-                            QJsonObject{{currentLanguage(), tr("Option %1").arg(2)}}});
-        q.insert(QStringLiteral("answer"), 0);
-    } else {
-        q.remove(QStringLiteral("choices"));
-        q.remove(QStringLiteral("answer"));
-        const QJsonObject measured = defaultMeasured();
-        for (auto it = measured.begin(); it != measured.end(); ++it)
-            q.insert(it.key(), it.value());
-    }
+    // The keys of the kind it was go (its rows say which); the new kind's start as a new
+    // question of that kind does.
+    for (const QString& key : lessons::schema::questionKindKeys(was))
+        q.remove(key);
+    const QJsonObject fresh = std::visit(
+        physics::Overloaded{[this](const lessons::MeasuredQuestion&) { return defaultMeasured(); },
+                            [this](const lessons::ChoiceQuestion&) { return defaultChoice(); }},
+        lessons::schema::newQuestionKind(kind));
+    for (auto it = fresh.begin(); it != fresh.end(); ++it)
+        q.insert(it.key(), it.value());
     store(q);
 }
 
@@ -294,12 +317,12 @@ void QuestionEditor::addQuestion(bool predict)
         return;
     QJsonArray all = m_draft.value(m_step, QStringLiteral("questions")).toArray();
     QJsonObject q = defaultMeasured();
-    const QJsonObject measure = q.value(u"measure").toObject();
-    q.insert(QStringLiteral("prompt"),
+    const QJsonObject measure = q.value(jsonKey(keys::kMeasure)).toObject();
+    q.insert(jsonKey(keys::kPrompt),
              QJsonObject{{currentLanguage(),
                           defaultPrompt(measure, bodyName(measure.value(u"body").toString()))}});
     if (predict)
-        q.insert(QStringLiteral("holdBack"), QJsonArray{QStringLiteral("run")});
+        q.insert(jsonKey(keys::kHoldBack), QJsonArray{QStringLiteral("run")});
     all.append(q);
     m_draft.setValue(m_step, QStringLiteral("questions"), all, tr("question"));
     m_list->setCurrentRow(static_cast<int>(all.size()) - 1);
@@ -324,8 +347,8 @@ void QuestionEditor::edited()
     QJsonObject q = question();
     const QJsonObject before = q;
     // A language left empty is not written: the student reads the text in one it has.
-    for (const auto& [key, fields] : {std::pair{QStringLiteral("prompt"), &m_prompt},
-                                      std::pair{QStringLiteral("hint"), &m_hint}}) {
+    for (const auto& [key, fields] :
+         {std::pair{jsonKey(keys::kPrompt), &m_prompt}, std::pair{jsonKey(keys::kHint), &m_hint}}) {
         QJsonValue text = q.value(key);
         for (int l = 0; l < kColumns; ++l)
             text =
@@ -335,12 +358,12 @@ void QuestionEditor::edited()
         else
             q.insert(key, text);
     }
-    if (q.contains(u"choices"))
+    if (lessons::schema::questionKindIn(q) == kChoice)
         q = m_choices->applyTo(q);
     else
         applyMeasured(q);
     followMeasure(before, q);
-    QJsonArray hold = q.value(u"holdBack").toArray();
+    QJsonArray hold = q.value(jsonKey(keys::kHoldBack)).toArray();
     const bool held = hold.contains(QStringLiteral("run"));
     if (m_holdRun->isChecked() && !held)
         hold.append(QStringLiteral("run"));
@@ -349,25 +372,25 @@ void QuestionEditor::edited()
             if (hold.at(i).toString() == u"run")
                 hold.removeAt(i);
     if (hold.isEmpty())
-        q.remove(QStringLiteral("holdBack"));
+        q.remove(jsonKey(keys::kHoldBack));
     else
-        q.insert(QStringLiteral("holdBack"), hold);
+        q.insert(jsonKey(keys::kHoldBack), hold);
     store(q);
 }
 
 void QuestionEditor::followMeasure(const QJsonObject& before, QJsonObject& q) const
 {
     // The prompt the editor wrote follows what is measured, until the teacher writes their own.
-    const QJsonObject was = before.value(u"measure").toObject();
-    const QJsonObject now = q.value(u"measure").toObject();
+    const QJsonObject was = before.value(jsonKey(keys::kMeasure)).toObject();
+    const QJsonObject now = q.value(jsonKey(keys::kMeasure)).toObject();
     if (was == now || now.isEmpty())
         return;
     const QString language = currentLanguage();
-    const QJsonValue prompt = q.value(u"prompt");
+    const QJsonValue prompt = q.value(jsonKey(keys::kPrompt));
     if (writtenText(prompt, language) !=
         defaultPrompt(was, bodyName(was.value(u"body").toString())))
         return;
-    q.insert(QStringLiteral("prompt"),
+    q.insert(jsonKey(keys::kPrompt),
              withWrittenText(prompt, language,
                              defaultPrompt(now, bodyName(now.value(u"body").toString()))));
 }
@@ -399,7 +422,7 @@ void QuestionEditor::applyMeasured(QJsonObject& q)
 {
     const Kind& k = kindOf(m_kind->currentData().toString());
     QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}};
-    const QJsonObject old = q.value(u"measure").toObject();
+    const QJsonObject old = q.value(jsonKey(keys::kMeasure)).toObject();
     if (k.body && m_body->currentIndex() >= 0)
         measure.insert(QStringLiteral("body"), m_body->currentData().toString());
     if (k.time)
@@ -408,16 +431,16 @@ void QuestionEditor::applyMeasured(QJsonObject& q)
         for (const char* key : {"n", "above"})
             if (old.contains(QLatin1String(key)) && old.value(u"kind").toString() == u"apex")
                 measure.insert(QLatin1String(key), old.value(QLatin1String(key)));
-    q.insert(QStringLiteral("measure"), measure);
+    q.insert(jsonKey(keys::kMeasure), measure);
     if (old.value(u"kind").toString() != QLatin1String(k.id) &&
         m_unit->text() == kindOf(old.value(u"kind").toString()).unit)
         m_unit->setText(QLatin1String(k.unit)); // the new quantity's unit, unless typed
-    q.insert(QStringLiteral("unit"), m_unit->text());
-    q.insert(QStringLiteral("tolerance"), m_tolerance->value() / 100.0);
+    q.insert(jsonKey(keys::kUnit), m_unit->text());
+    q.insert(jsonKey(keys::kTolerance), m_tolerance->value() / 100.0);
     if (m_set->value().isEmpty())
-        q.remove(QStringLiteral("set"));
+        q.remove(jsonKey(keys::kSet));
     else
-        q.insert(QStringLiteral("set"), m_set->value());
+        q.insert(jsonKey(keys::kSet), m_set->value());
 }
 
 void QuestionEditor::refresh()
@@ -430,9 +453,12 @@ void QuestionEditor::refresh()
     while (m_list->count() < all.size())
         m_list->addItem(QString());
     for (int i = 0; i < all.size(); ++i) {
-        const QString text = shownText(all.at(i).toObject().value(u"prompt"));
-        const bool predict =
-            all.at(i).toObject().value(u"holdBack").toArray().contains(QStringLiteral("run"));
+        const QString text = shownText(all.at(i).toObject().value(jsonKey(keys::kPrompt)));
+        const bool predict = all.at(i)
+                                 .toObject()
+                                 .value(jsonKey(keys::kHoldBack))
+                                 .toArray()
+                                 .contains(QStringLiteral("run"));
         // The kind first: a long prompt ends in "…", its tooltip has all of it.
         m_list->item(i)->setText(predict ? tr("%1. Predict first: %2").arg(i + 1).arg(text)
                                          : QStringLiteral("%1. %2").arg(i + 1).arg(text));
@@ -443,7 +469,7 @@ void QuestionEditor::refresh()
     // The bodies of the step's scene that move, by their labels (the id where there is none),
     // each kept by its id.
     const QJsonObject q = question();
-    const QJsonObject measure = q.value(u"measure").toObject();
+    const QJsonObject measure = q.value(jsonKey(keys::kMeasure)).toObject();
     m_body->clear();
     for (const auto& [id, name] : movingBodies())
         m_body->addItem(name, id);
@@ -452,8 +478,8 @@ void QuestionEditor::refresh()
         m_body->addItem(tr("%1 (not in the scene)").arg(body), body);
     m_body->setCurrentIndex(m_body->findData(body));
 
-    for (const auto& [key, fields] : {std::pair{QStringLiteral("prompt"), &m_prompt},
-                                      std::pair{QStringLiteral("hint"), &m_hint}}) {
+    for (const auto& [key, fields] :
+         {std::pair{jsonKey(keys::kPrompt), &m_prompt}, std::pair{jsonKey(keys::kHint), &m_hint}}) {
         const QJsonValue v = q.value(key);
         for (int l = 0; l < kColumns; ++l) {
             QLineEdit* field = (*fields)[static_cast<std::size_t>(l)];
@@ -467,13 +493,15 @@ void QuestionEditor::refresh()
     m_body->setEnabled(k.body);
     m_time->setEnabled(k.time);
     m_time->setValue(measure.value(u"time").toDouble());
-    showText(m_unit, q.value(u"unit").toString());
-    m_tolerance->setValue(q.value(u"tolerance").toDouble(0.05) * 100.0);
-    m_set->show(q.value(u"set").toObject());
-    m_holdRun->setChecked(q.value(u"holdBack").toArray().contains(QStringLiteral("run")));
+    showText(m_unit, q.value(jsonKey(keys::kUnit)).toString());
+    m_tolerance->setValue(q.value(jsonKey(keys::kTolerance)).toDouble(0.05) * 100.0);
+    m_set->show(q.value(jsonKey(keys::kSet)).toObject());
+    m_holdRun->setChecked(
+        q.value(jsonKey(keys::kHoldBack)).toArray().contains(QStringLiteral("run")));
     // A choice question shows its options in place of what a number is measured by.
-    const bool choice = q.contains(u"choices");
-    m_questionKind->setCurrentIndex(choice ? 1 : 0);
+    const std::size_t kind = lessons::schema::questionKindIn(q);
+    const bool choice = kind == kChoice;
+    m_questionKind->setCurrentIndex(m_questionKind->findData(QVariant::fromValue(kind)));
     for (QWidget* w :
          std::initializer_list<QWidget*>{m_kind, m_body, m_time, m_unit, m_tolerance, m_set})
         m_fields->setRowVisible(w, !choice);
@@ -512,18 +540,27 @@ void QuestionEditor::showAnswer()
         return;
     }
     const lessons::LessonStep& step = lesson->steps[static_cast<std::size_t>(m_step)];
-    const lessons::Question& q = step.questions.at(static_cast<std::size_t>(at));
-    // Nothing is measured for a choice: its line says which option is right.
-    m_answer->setAccessibleName(q.isChoice() ? tr("The right option")
-                                             : tr("The answer the lab measures"));
-    if (q.isChoice()) {
-        m_answer->setText(tr("The student chooses one of %1 options; the right one is “%2”.")
-                              .arg(q.choices.size())
-                              .arg(q.choices.value(q.answer)));
-        return;
-    }
+    const lessons::Question& question = step.questions.at(static_cast<std::size_t>(at));
+    std::visit(physics::Overloaded{
+                   [&](const lessons::MeasuredQuestion& q) { showMeasured(step, question, q); },
+                   [&](const lessons::ChoiceQuestion& q) {
+                       // Nothing is measured for a choice: its line says which option is right.
+                       m_answer->setAccessibleName(tr("The right option"));
+                       m_answer->setText(
+                           tr("The student chooses one of %1 options; the right one is “%2”.")
+                               .arg(q.choices.size())
+                               .arg(q.choices.value(q.answer)));
+                   }},
+               question.kind);
+}
+
+void QuestionEditor::showMeasured(const lessons::LessonStep& step,
+                                  const lessons::Question& question,
+                                  const lessons::MeasuredQuestion& q)
+{
+    m_answer->setAccessibleName(tr("The answer the lab measures"));
     const std::optional<double> value =
-        lessons::measureAhead(lessons::askedStep(step, q), q.measure);
+        lessons::measureAhead(lessons::askedStep(step, question), q.measure);
     const QLocale locale;
     if (!value) {
         m_answer->setText(tr("⚠ The run does not get there (or diverges first): raise the step's "

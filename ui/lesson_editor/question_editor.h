@@ -10,11 +10,14 @@
 
 #include "lesson_editor/editor_parts.h"
 
+#include "format/lesson.h"
+
 #include <QJsonObject>
 #include <QList>
 #include <QWidget>
 
 #include <array>
+#include <cstddef>
 #include <utility>
 
 class QCheckBox;
@@ -43,8 +46,9 @@ public:
     int currentQuestion() const;
     void addQuestion(bool predict);
     void removeQuestion();
-    /// Makes the selected question a choice (true) or a measured number (false), one edit.
-    void setChoice(bool choice);
+    /// Makes the selected question one of the kind at `kind` in lessons::Question::kind (a
+    /// measured number, a choice), one edit.
+    void setKind(std::size_t kind);
 
 private:
     QFormLayout* buildForm();
@@ -59,6 +63,8 @@ private:
     void applyMeasured(QJsonObject& q);
     /// A measured question, of speed at 1 s of the scene's first body that moves.
     QJsonObject defaultMeasured() const;
+    /// A choice question's keys, of two options, the first right.
+    QJsonObject defaultChoice() const;
     /// The prompt of `q` rewritten for its measure when it is still the one the editor wrote
     /// for `before`'s.
     void followMeasure(const QJsonObject& before, QJsonObject& q) const;
@@ -66,7 +72,10 @@ private:
     QList<std::pair<QString, QString>> movingBodies() const;
     /// A body's label (its id where it has none).
     QString bodyName(const QString& id) const;
+    /// Under the question, what the lab measures for it or which option is right.
     void showAnswer();
+    void showMeasured(const lessons::LessonStep& step, const lessons::Question& question,
+                      const lessons::MeasuredQuestion& q);
 
     LessonDraft& m_draft;
     int m_step = -1;

@@ -27,7 +27,8 @@ double runLength(const lessons::LessonStep& step)
 {
     double until = step.exportTime;
     for (const lessons::Question& q : step.questions)
-        until = std::max(until, q.measure.time);
+        if (const auto* measured = q.as<lessons::MeasuredQuestion>())
+            until = std::max(until, measured->measure.time);
     return until;
 }
 
@@ -67,12 +68,14 @@ bool lockedIntegrator(const lessons::LessonStep& step)
 std::optional<StepFinding::Spread> spreadOf(const lessons::LessonStep& step, int index,
                                             const std::atomic_bool& cancelled)
 {
-    const lessons::Question& q = step.questions[static_cast<std::size_t>(index)];
+    const lessons::Question& question = step.questions[static_cast<std::size_t>(index)];
     // Measured on the run the question asks for; an integrator it asks for is not the
-    // student's to choose. A choice question measures nothing.
-    if (q.isChoice() || q.set.has("integrator"))
+    // student's to choose. The other kinds measure nothing.
+    const auto* measured = question.as<lessons::MeasuredQuestion>();
+    if (!measured || measured->set.has("integrator"))
         return std::nullopt;
-    const lessons::LessonStep asked = lessons::askedStep(step, q);
+    const lessons::MeasuredQuestion& q = *measured;
+    const lessons::LessonStep asked = lessons::askedStep(step, question);
     const std::optional<double> value = lessons::measureAhead(asked, q.measure);
     if (!value)
         return std::nullopt;

@@ -4,6 +4,7 @@
 
 #include "common/accessible_names.h"
 #include "common/step_part_names.h"
+#include "plots/plot_table.h"
 
 #include "format/lesson.h"
 #include "format/lesson_schema.h"
@@ -39,6 +40,15 @@ partNames(const std::array<StepPartName, N>& table)
     return out;
 }
 
+/// The step's plots in words, as the window titles them (their rows, plot_table.h).
+std::vector<std::pair<std::string_view, QString>> plotNames()
+{
+    std::vector<std::pair<std::string_view, QString>> out;
+    for (const PlotRow& plot : kPlotRows)
+        out.emplace_back(plot.name, plotTitle(plot));
+    return out;
+}
+
 /// The settings a step may allow, named by the schema's own labels.
 std::vector<std::pair<std::string_view, QString>> controlNames()
 {
@@ -60,7 +70,7 @@ StepSettingsEditor::StepSettingsEditor(LessonDraft& draft, QWidget* parent)
     setAccessibleName(tr("What the step shows and lets the student change"));
     auto* layout = new QVBoxLayout(this);
     auto* row = new QHBoxLayout;
-    row->addWidget(group(tr("Plots shown"), QStringLiteral("plots"), partNames(kStepPlotTitles)));
+    row->addWidget(group(tr("Plots shown"), QStringLiteral("plots"), plotNames()));
     row->addWidget(
         group(tr("Panels shown"), QStringLiteral("panels"), partNames(kStepPanelTitles)));
     row->addWidget(group(tr("The student may change (unticked: locked)"), QStringLiteral("allow"),

@@ -55,7 +55,6 @@ QString valueText(const schema::Value& v)
     return {};
 }
 
-
 } // namespace
 
 AskedRun askedRun(const lessons::LessonStep& step, const lessons::Question& question,
@@ -64,6 +63,8 @@ AskedRun askedRun(const lessons::LessonStep& step, const lessons::Question& ques
     AskedRun run;
     if (!lessons::asksSettings(question))
         return run;
+    // Only a measured question asks for settings.
+    const lessons::StepSettings& set = question.as<lessons::MeasuredQuestion>()->set;
     // The world the question asks for, built as the step builds its own, and the window's:
     // compared through the scene format's world rows, which read a WorldDef's settings.
     lessons::Scene asked;
@@ -72,7 +73,7 @@ AskedRun askedRun(const lessons::LessonStep& step, const lessons::Question& ques
     live.world = world.def();
     QStringList askedWords;
     for (const schema::Field& f : schema::settings()) {
-        if (!question.set.has(f.key))
+        if (!set.has(f.key))
             continue;
         const schema::Field* w = schema::worldRowOf(f);
         if (w == nullptr)

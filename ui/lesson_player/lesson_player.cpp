@@ -102,7 +102,7 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
       m_studentName(new QLineEdit(m_studentBox)), m_studentClass(new QLineEdit(m_studentBox)),
       m_start(new QPushButton(tr("Start the first lesson"), this))
 {
-    m_text->setAccessibleName(tr("Step text"));
+    m_text->setNameWhenEmpty(tr("Step text"));
     auto* layout = new QVBoxLayout(this);
     m_lessonBox->view()->setItemDelegate(new FullTextDelegate(m_lessonBox->view()));
     layout->addWidget(m_lessonBox);

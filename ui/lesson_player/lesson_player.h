@@ -157,9 +157,13 @@ private:
     /// than kTextShare of the column's height (unless the reader opened it by hand).
     void fitIntroduction();
     void buildQuestions();
-    /// A choice question's options, as radio buttons in a group named by its prompt, and its
-    /// Check and Show me buttons, under `prompt` in `layout`.
-    void buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout);
+    /// The answers of question `i`, under its `prompt` in `layout`, one function per kind: a
+    /// measured question's answer box with its unit, a choice question's options as radio
+    /// buttons in a group named by its prompt; and their Check and Show me buttons.
+    void buildMeasuredRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
+                          const lessons::MeasuredQuestion& q);
+    void buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
+                        const lessons::ChoiceQuestion& q);
     /// The student's name and class fields.
     void buildStudentFields(QVBoxLayout* layout);
     /// Keeps question i's tries, and the settings the step runs with, in the lesson's record.

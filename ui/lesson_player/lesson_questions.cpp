@@ -26,7 +26,10 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include "rigidlab/physics/overloaded.h"
+
 #include <cmath>
+#include <variant>
 
 namespace rigidlab::ui {
 
@@ -98,10 +101,22 @@ void LessonPlayer::buildQuestions()
         prompt->setWordWrap(true);
         v->addWidget(prompt);
         m_questionLayout->addWidget(box);
-        if (q.isChoice()) {
-            buildChoiceRow(i, prompt, v);
-            continue;
-        }
+        std::visit(physics::Overloaded{[&](const lessons::MeasuredQuestion& measured) {
+                                           buildMeasuredRow(i, prompt, v, measured);
+                                       },
+                                       [&](const lessons::ChoiceQuestion& choice) {
+                                           buildChoiceRow(i, prompt, v, choice);
+                                       }},
+                   q.kind);
+    }
+    orderTabs();
+}
+
+void LessonPlayer::buildMeasuredRow(std::size_t i, QLabel* prompt, QVBoxLayout* v,
+                                    const lessons::MeasuredQuestion& q)
+{
+    QWidget* box = prompt->parentWidget();
+    {
         // The answer and its unit on a line of their own, the buttons below: side by side
         // they left the answer a few letters wide in a narrow column.
         auto* row = new QHBoxLayout;
@@ -143,7 +158,6 @@ void LessonPlayer::buildQuestions()
                 applyTry(i, measuredTry(i));
         });
     }
-    orderTabs();
 }
 
 void LessonPlayer::orderTabs()
@@ -201,15 +215,15 @@ AskedRun LessonPlayer::askedRunOf(std::size_t i) const
     return askedRun(step, step.questions[i], m_controller.world(), m_controller.edits());
 }
 
-void LessonPlayer::buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout)
+void LessonPlayer::buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
+                                  const lessons::ChoiceQuestion& q)
 {
-    const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
     QWidget* box = prompt->parentWidget();
     // The options in a group a screen reader names by the question; the arrow keys move
     // between them, Tab leaves the group for Check.
     auto* group = new QGroupBox(box);
     group->setFlat(true);
-    group->setAccessibleName(q.prompt);
+    group->setAccessibleName(m_lesson->steps[static_cast<size_t>(m_step)].questions[i].prompt);
     auto* options = new QVBoxLayout(group);
     options->setContentsMargins(0, 0, 0, 0);
     auto* buttonGroup = new QButtonGroup(group);
@@ -249,12 +263,12 @@ void LessonPlayer::buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* la
         const int chosen = buttonGroup->checkedId();
         if (chosen < 0)
             return askFirst(result, tr("Choose an answer first."));
-        const lessons::Question& question =
-            m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
+        const auto* question =
+            m_lesson->steps[static_cast<size_t>(m_step)].questions[i].as<lessons::ChoiceQuestion>();
         QuestionTry attempt;
         attempt.choice = chosen;
-        attempt.choiceText = question.choices.value(chosen);
-        attempt.right = chosen == question.answer;
+        attempt.choiceText = question->choices.value(chosen);
+        attempt.right = chosen == question->answer;
         applyTry(i, attempt);
     });
     connect(show, &QPushButton::clicked, this, [this, i] {
@@ -267,10 +281,11 @@ QuestionTry LessonPlayer::measuredTry(std::size_t i)
 {
     const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
     const lessons::Question& q = step.questions[i];
+    const lessons::Measure& measure = q.as<lessons::MeasuredQuestion>()->measure;
     // The window's run counts when it is the run the question asks for (askedRun).
     const bool liveCounts = askedRunOf(i).matches();
     if (liveCounts)
-        if (const auto live = m_controller.measurements().value(q.measure, step.scene))
+        if (const auto live = m_controller.measurements().value(measure, step.scene))
             return numberTry(live, false);
     // While the scene may not run, the student could never get a verdict: the same run is
     // done without a window instead (it is deterministic, so it measures what the window
@@ -283,7 +298,7 @@ QuestionTry LessonPlayer::measuredTry(std::size_t i)
         // the run will measure, not the step's e as the lesson file gives it.
         lessons::LessonStep now = step;
         now.scene = m_controller.scene();
-        row.ahead = lessons::measureAhead(lessons::askedStep(now, q), q.measure);
+        row.ahead = lessons::measureAhead(lessons::askedStep(now, q), measure);
         row.aheadDone = true;
     }
     return numberTry(row.ahead, row.ahead.has_value());

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_player/step_text.h"
 
+#include "common/spoken_numbers.h"
+
 #include <QAbstractTextDocumentLayout>
 #include <QEvent>
 #include <QResizeEvent>
@@ -55,6 +57,21 @@ void StepText::showMarkdown(const QString& markdown)
     m_markdown = markdown;
     m_fittedWidth = -1;
     fit();
+    tellName();
+}
+
+void StepText::setNameWhenEmpty(const QString& name)
+{
+    m_nameWhenEmpty = name;
+    tellName();
+}
+
+void StepText::tellName()
+{
+    // A reader speaks a focused text of this kind (a label) by its name alone, so its name is
+    // what it shows, as a label's is: the step puts the focus here to have it read.
+    const QString spoken = spokenSigns(toPlainText().simplified());
+    setAccessibleName(spoken.isEmpty() ? m_nameWhenEmpty : spoken);
 }
 
 void StepText::fit()

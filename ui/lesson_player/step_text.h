@@ -16,6 +16,8 @@ public:
 
     /// Shows `markdown`, fitted to the current width.
     void showMarkdown(const QString& markdown);
+    /// The accessible name while no text is shown; with a text, the text is its name.
+    void setNameWhenEmpty(const QString& name);
     /// The scale of the tables' text that made them fit (1 when they fit as they are).
     double tableScale() const { return m_tableScale; }
 
@@ -31,8 +33,11 @@ protected:
 private:
     /// Lays the text out again at the viewport's width, its tables' text as large as fits.
     void fit();
+    /// Names the widget for assistive technology by its text (setNameWhenEmpty()).
+    void tellName();
 
     QString m_markdown;
+    QString m_nameWhenEmpty;
     double m_tableScale = 1.0;
     int m_fittedWidth = -1; ///< viewport width of the last fit() [px]
 };

@@ -1,29 +1,37 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "measure/measurement_panel.h"
 
+#include "common/accessible_names.h"
 #include "common/shortcuts.h"
 #include "measure/import_dialog.h"
+#include "plots/plot_shelf.h"
 #include "plots/plot_widget.h"
 
 #include <qcustomplot.h>
 
+#include <QBoxLayout>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGridLayout>
 #include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QVBoxLayout>
+
+#include <iterator>
 
 namespace rigidlab::ui {
 
 namespace {
 
-/// Height of each plot in the dock: both fit beside the world on a 1024×768 projector.
-constexpr int kPlotHeight = 130;
+/// Each plot's least size until the window sets a height of its own
+/// (WindowLayout::fitPlotHeight) [px]. Narrow: side by side, the plots' least widths would
+/// hold the dock wider than the screen before they go behind tabs.
+constexpr QSize kPlotLeast(180, 130);
 constexpr double kMarkerPx = 6.0;
 
 /// Draws a series as markers of `shape` without a line between them.
@@ -39,53 +47,137 @@ void asMarkers(PlotWidget& plot, int series, QCPScatterStyle::ScatterShape shape
 MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
 {
     setObjectName(QStringLiteral("measurementPanel"));
-    auto* layout = new QVBoxLayout(this);
-    m_source = new QLabel(this);
+    m_layout = new QBoxLayout(QBoxLayout::LeftToRight, this);
+    m_layout->setContentsMargins(0, 0, 0, 0);
+    m_layout->addWidget(buildControls());
+
+    // Side by side, stacked or behind tabs, as the room left keeps each readable.
+    m_plots = new PlotShelf(this);
+    m_comparison = new PlotWidget(tr("Measured and simulated"), m_plots);
+    m_comparison->setAccessibleName(tr("Plot: measured points and the simulated line"));
+    m_comparison->setRangeMode(RangeMode::WholeRun);
+    m_comparison->setMinimumSize(kPlotLeast);
+    m_comparison->setTitleShown(false); // the legend names both; exports show the title
+    m_comparison->addSeries(tr("measured"), plotColor(0));
+    m_comparison->addSeries(tr("simulated"), plotColor(1));
+    asMarkers(*m_comparison, kMeasured, QCPScatterStyle::ssCircle);
+    m_plots->addPlot(m_comparison, m_comparison->title());
+
+    m_residual = new PlotWidget(tr("Residuals: measured − simulated"), m_plots);
+    m_residual->setAccessibleName(tr("Plot: residuals, measured minus simulated"));
+    m_residual->setRangeMode(RangeMode::WholeRun);
+    m_residual->setMinimumSize(kPlotLeast);
+    m_residual->setTitleShown(false); // the tab or the check box says what it is
+    m_residual->addSeries(tr("measured − simulated"), plotColor(2));
+    asMarkers(*m_residual, kResidual, QCPScatterStyle::ssCross);
+    m_plots->addPlot(m_residual, tr("Residuals"));
+    connect(m_showResiduals, &QCheckBox::toggled, this,
+            [this](bool on) { m_plots->setPlotShown(m_residual, on); });
+    m_layout->addWidget(m_plots, 1);
+    // Arranged for its size now, before it is first shown: the dock keeps the panel's least
+    // size even while it is behind another dock's tab, and two plots stacked would hold the
+    // window taller than a projector's screen.
+    m_plots->arrange();
+    clear();
+}
+
+QWidget* MeasurementPanel::buildControls()
+{
+    // What is chosen and fitted scrolls on its own, so that the plots beside or below it keep
+    // their whole height in a short dock.
+    m_controls = new QScrollArea(this);
+    m_controls->setWidgetResizable(true);
+    m_controls->setFrameShape(QFrame::NoFrame);
+    m_controls->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    nameScrollArea(*m_controls, tr("Comparison and fit"));
+    auto* box = new QWidget(m_controls);
+    auto* layout = new QVBoxLayout(box);
+    m_source = new QLabel(box);
     m_source->setWordWrap(true);
     m_source->setAccessibleName(tr("Measurement imported"));
     layout->addWidget(m_source);
 
     auto* form = new QFormLayout;
-    m_body = new QComboBox(this);
+    m_body = new QComboBox(box);
     m_body->setAccessibleName(tr("Body the measurement is compared with"));
-    m_quantity = new QComboBox(this);
+    m_quantity = new QComboBox(box);
     m_quantity->setAccessibleName(tr("Measured quantity compared"));
     form->addRow(tr("&Body:"), m_body);
     form->addRow(tr("&Quantity:"), m_quantity);
     layout->addLayout(form);
-    for (QComboBox* box : {m_body, m_quantity})
-        connect(box, &QComboBox::currentIndexChanged, this, &MeasurementPanel::choiceChanged);
-
-    m_comparison = new PlotWidget(tr("Measured and simulated"), this);
-    m_comparison->setAccessibleName(tr("Plot: measured points and the simulated line"));
-    m_comparison->setRangeMode(RangeMode::WholeRun);
-    m_comparison->setMinimumHeight(kPlotHeight);
-    m_comparison->setTitleShown(false); // the legend names both; exports show the title
-    m_comparison->addSeries(tr("measured"), plotColor(0));
-    m_comparison->addSeries(tr("simulated"), plotColor(1));
-    asMarkers(*m_comparison, kMeasured, QCPScatterStyle::ssCircle);
-    layout->addWidget(m_comparison, 1);
-
-    m_showResiduals = new QCheckBox(tr("Show &residuals"), this);
+    for (QComboBox* list : {m_body, m_quantity})
+        connect(list, &QComboBox::currentIndexChanged, this, &MeasurementPanel::choiceChanged);
+    m_showResiduals = new QCheckBox(tr("Show &residuals"), box);
     m_showResiduals->setChecked(true);
     layout->addWidget(m_showResiduals);
-    m_residual = new PlotWidget(tr("Residuals: measured − simulated"), this);
-    m_residual->setAccessibleName(tr("Plot: residuals, measured minus simulated"));
-    m_residual->setRangeMode(RangeMode::WholeRun);
-    m_residual->setMinimumHeight(kPlotHeight);
-    m_residual->setTitleShown(false); // the checkbox above says what it is
-    m_residual->addSeries(tr("measured − simulated"), plotColor(2));
-    asMarkers(*m_residual, kResidual, QCPScatterStyle::ssCross);
-    layout->addWidget(m_residual, 1);
-    connect(m_showResiduals, &QCheckBox::toggled, m_residual, &QWidget::setVisible);
 
-    m_message = new QLabel(this);
+    m_message = new QLabel(box);
     m_message->setWordWrap(true);
     m_message->setAccessibleName(tr("Why the simulation cannot be compared"));
     m_message->hide();
     layout->addWidget(m_message);
-    layout->addWidget(buildFit());
-    clear();
+    layout->addWidget(buildFit(*box));
+    layout->addStretch(1);
+    m_controls->setWidget(box);
+    return m_controls;
+}
+
+void MeasurementPanel::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    arrange();
+}
+
+void MeasurementPanel::arrange()
+{
+    // The controls beside the plots where both fit across (a wide, short dock under the world
+    // on a projector), the fit's choices one under another if only that makes them fit (its
+    // large type in presentation mode); else above the plots, across the dock.
+    const int plotWidth = plotSizeFor(*m_comparison, kLeastDataArea).width();
+    bool beside = false;
+    int controlsWidth = 0;
+    for (const bool narrow : {false, true}) {
+        setFitNarrow(narrow);
+        controlsWidth = leastControlsWidth();
+        beside = width() >= controlsWidth + m_layout->spacing() + plotWidth;
+        if (beside)
+            break;
+    }
+    if (!beside)
+        setFitNarrow(false);
+    const QBoxLayout::Direction direction =
+        beside ? QBoxLayout::LeftToRight : QBoxLayout::TopToBottom;
+    if (m_layout->direction() != direction)
+        m_layout->setDirection(direction);
+    if (beside) {
+        m_controls->setFixedWidth(controlsWidth);
+    } else {
+        m_controls->setMinimumWidth(0);
+        m_controls->setMaximumWidth(QWIDGETSIZE_MAX);
+    }
+}
+
+void MeasurementPanel::setFitNarrow(bool narrow)
+{
+    if (narrow == m_fitNarrow)
+        return;
+    m_fitNarrow = narrow;
+    for (int i = 0; i < kFitParameters; ++i) {
+        m_fitGrid->removeWidget(m_parameters[i]);
+        m_fitGrid->addWidget(m_parameters[i], narrow ? i : i / 2, narrow ? 0 : i % 2);
+    }
+    m_fitButtons->setDirection(narrow ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight);
+}
+
+int MeasurementPanel::leastControlsWidth() const
+{
+    // Laid out again as they are placed now (a layout recomputes its sizes when activated).
+    QWidget* controls = m_controls->widget();
+    m_fitBox->layout()->activate();
+    m_fitBox->updateGeometry();
+    controls->layout()->activate();
+    return controls->minimumSizeHint().width() +
+           m_controls->verticalScrollBar()->sizeHint().width();
 }
 
 void MeasurementPanel::clear()
@@ -104,25 +196,26 @@ void MeasurementPanel::clear()
     showBounceFit(QString(), false);
 }
 
-QWidget* MeasurementPanel::buildFit()
+QWidget* MeasurementPanel::buildFit(QWidget& parent)
 {
-    auto* box = new QGroupBox(tr("Fit to the measurement"), this);
+    auto* box = new QGroupBox(tr("Fit to the measurement"), &parent);
+    m_fitBox = box;
     auto* layout = new QVBoxLayout(box);
     const QString names[kFitParameters] = {tr("e (res&titution)"), tr("&μ (friction)"),
                                            tr("initial v&x"), tr("initial v&y")};
     const QString full[kFitParameters] = {
         tr("Fit the coefficient of restitution e"), tr("Fit the friction coefficient μ"),
         tr("Fit the initial velocity vx"), tr("Fit the initial velocity vy")};
-    // Two by two: the dock may be as narrow as a side column on a projector.
-    auto* grid = new QGridLayout;
+    // Two by two, or one under another (setFitNarrow).
+    m_fitGrid = new QGridLayout;
     for (int i = 0; i < kFitParameters; ++i) {
         m_parameters[i] = new QCheckBox(names[i], box);
         m_parameters[i]->setAccessibleName(full[i]);
-        grid->addWidget(m_parameters[i], i / 2, i % 2);
+        m_fitGrid->addWidget(m_parameters[i], i / 2, i % 2);
     }
-    layout->addLayout(grid);
+    layout->addLayout(m_fitGrid);
     m_parameters[0]->setChecked(true);
-    auto* buttons = new QHBoxLayout;
+    m_fitButtons = new QBoxLayout(QBoxLayout::LeftToRight);
     m_fit = new QPushButton(tr("F&it"), box);
     m_fit->setAccessibleName(tr("Fit the ticked parameters to the measurement"));
     m_apply = new QPushButton(tr("&Apply to scene"), box);
@@ -137,10 +230,10 @@ QWidget* MeasurementPanel::buildFit()
     m_fitProgress->setTextVisible(false);
     m_fitProgress->setAccessibleName(tr("Fit running"));
     m_fitProgress->hide();
-    buttons->addWidget(m_fit);
-    buttons->addWidget(m_cancelFit);
-    buttons->addWidget(m_apply);
-    layout->addLayout(buttons);
+    m_fitButtons->addWidget(m_fit);
+    m_fitButtons->addWidget(m_cancelFit);
+    m_fitButtons->addWidget(m_apply);
+    layout->addLayout(m_fitButtons);
     layout->addWidget(m_fitProgress);
     m_fitResult = new QLabel(box);
     m_fitResult->setWordWrap(true);
@@ -237,6 +330,49 @@ void MeasurementPanel::clearPlots()
 {
     m_comparison->clear();
     m_residual->clear();
+    for (const int series : m_otherSeries)
+        m_comparison->graph(series)->removeFromLegend();
+    m_othersShown = 0;
+    m_comparison->setSeriesLegend(kMeasured, tr("measured"));
+}
+
+void MeasurementPanel::showOtherFiles(const QString& comparedFile,
+                                      const std::vector<FileSeries>& others)
+{
+    // Each file's markers in a shape of their own beside the circles compared; a series once
+    // added stays (a plot keeps its series), out of the legend while no file needs it.
+    constexpr QCPScatterStyle::ScatterShape kShapes[] = {
+        QCPScatterStyle::ssTriangle, QCPScatterStyle::ssSquare, QCPScatterStyle::ssDiamond,
+        QCPScatterStyle::ssTriangleInverted};
+    constexpr int kFirstColour = 3; // after the measured, simulated and residual series
+    while (m_otherSeries.size() < others.size()) {
+        const auto k = static_cast<int>(m_otherSeries.size());
+        const int series = m_comparison->addSeries(QString(), plotColor(kFirstColour + k));
+        asMarkers(*m_comparison, series, kShapes[k % std::size(kShapes)]);
+        m_otherSeries.push_back(series);
+    }
+    for (std::size_t k = 0; k < m_otherSeries.size(); ++k) {
+        const int series = m_otherSeries[k];
+        if (k >= others.size()) {
+            m_comparison->graph(series)->removeFromLegend();
+            continue;
+        }
+        const FileSeries& other = others[k];
+        m_comparison->graph(series)->addToLegend();
+        m_comparison->setSeriesLegend(series, other.file);
+        m_comparison->setSeriesColumn(
+            series, QStringLiteral("%1 [%2]").arg(other.file, m_comparison->seriesUnit(series)));
+        for (std::size_t i = 0; i < other.series.t.size(); ++i)
+            m_comparison->appendPoint(series, other.series.t[i], other.series.value[i]);
+    }
+    // Named by its file too where there are others, and what it is used for.
+    m_comparison->setSeriesLegend(
+        kMeasured, others.empty() ? tr("measured") : tr("%1 (fit, residuals)").arg(comparedFile));
+    m_comparison->drain();
+    if (others.size() != m_othersShown) {
+        m_othersShown = others.size();
+        emit legendChanged();
+    }
 }
 
 std::vector<PlotWidget*> MeasurementPanel::plotsShown() const
@@ -270,6 +406,7 @@ void MeasurementPanel::showFit(const QString& text, bool applicable)
         m_fit->setFocus(); // the keyboard stays where the fit was asked for
     m_fitResult->setText(text);
     m_apply->setEnabled(applicable);
+    arrange(); // Fit back in place of Cancel
 }
 
 void MeasurementPanel::showFitRunning(int runs)
@@ -282,6 +419,7 @@ void MeasurementPanel::showFitRunning(int runs)
         m_cancelFit->setFocus();
     m_apply->setEnabled(false);
     m_fitResult->setText(tr("Fitting… %n run(s) of the model so far", nullptr, runs));
+    arrange(); // Cancel in place of Fit
 }
 
 bool MeasurementPanel::fitRunning() const
@@ -295,6 +433,7 @@ void MeasurementPanel::showBounceFit(const QString& text, bool applicable)
     m_bounceResult->setVisible(!text.isEmpty());
     m_applyBounce->setVisible(!text.isEmpty());
     m_applyBounce->setEnabled(applicable);
+    arrange();
 }
 
 QString MeasurementPanel::fitText() const

@@ -4,22 +4,34 @@
 // quantity, the residuals (measured − simulated) as a plot of their own, and the fit. Markers
 // and line differ in shape as well as colour, and the legend names both. The panel only
 // shows; MeasurementSession (measurement_session.h) reads, runs and fits.
+//
+// The choices and the fit form a column that scrolls on its own, beside the plots where the
+// dock is wide enough for both (under the world on a 1024×768 projector), else above them;
+// the plots are side by side, stacked or behind tabs as keeps each one's data area readable
+// (PlotShelf). So the dock never scrolls its plots out of sight, and it is not put in a
+// scroll area of its own.
 
 #include "measure/measurement.h"
+#include "measure/measurement_files.h"
 
 #include <QString>
 #include <QWidget>
 
 #include <vector>
 
+class QBoxLayout;
 class QCheckBox;
 class QComboBox;
+class QGridLayout;
+class QGroupBox;
 class QLabel;
 class QProgressBar;
 class QPushButton;
+class QScrollArea;
 
 namespace rigidlab::ui {
 
+class PlotShelf;
 class PlotWidget;
 
 class MeasurementPanel : public QWidget {
@@ -52,6 +64,11 @@ public:
     void showComparison(const measure::Series& measured, const std::vector<double>& lineT,
                         const std::vector<double>& lineValue, const std::vector<double>& residuals,
                         const QString& error);
+    /// The same quantity measured in other files, each as markers of a shape of its own named
+    /// by its file, beside the points compared, which come from `comparedFile` (the last file
+    /// imported that has the quantity: the residuals and the fit use it, and its legend says
+    /// so). Without others the points compared are "measured". After showComparison().
+    void showOtherFiles(const QString& comparedFile, const std::vector<FileSeries>& others);
     void clearPlots();
     /// Back to how it was before anything was imported: no source, no choices, no plots, no fit.
     void clear();
@@ -85,21 +102,43 @@ public:
 
 signals:
     void choiceChanged();
+    /// The comparison's legend names other series (another file's): it may take another row
+    /// from the data area.
+    void legendChanged();
     void fitRequested();
     void cancelFitRequested();
     void applyRequested();
     void applyBounceRequested();
 
-private:
-    QWidget* buildFit();
+protected:
+    void resizeEvent(QResizeEvent* event) override;
 
+private:
+    QWidget* buildControls();
+    QWidget* buildFit(QWidget& parent);
+    /// The controls beside the plots or above them, for the panel's size now.
+    void arrange();
+    /// The fit's choices and buttons one under another, or two by two and in a row.
+    void setFitNarrow(bool narrow);
+    /// The controls' least width as they are placed now, with room for their scroll bar [px].
+    int leastControlsWidth() const;
+
+    QBoxLayout* m_layout = nullptr;
+    QScrollArea* m_controls = nullptr;
+    PlotShelf* m_plots = nullptr;
     QLabel* m_source = nullptr;
     QComboBox* m_body = nullptr;
     QComboBox* m_quantity = nullptr;
     PlotWidget* m_comparison = nullptr;
     PlotWidget* m_residual = nullptr;
+    std::vector<int> m_otherSeries; ///< the other files' series in m_comparison, in order
+    std::size_t m_othersShown = 0;  ///< how many of them the legend names
     QCheckBox* m_showResiduals = nullptr;
     QLabel* m_message = nullptr;
+    QGroupBox* m_fitBox = nullptr;
+    QGridLayout* m_fitGrid = nullptr;
+    QBoxLayout* m_fitButtons = nullptr;
+    bool m_fitNarrow = false;
     QCheckBox* m_parameters[kFitParameters] = {};
     QPushButton* m_fit = nullptr;
     QPushButton* m_cancelFit = nullptr;

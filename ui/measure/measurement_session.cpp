@@ -208,8 +208,7 @@ QString MeasurementSession::load(const QString& path, const measure::Measurement
         emit message(read.error, 10000);
         return read.error;
     }
-    // A second file adds to the first (a video's heights, then a phone's bounce times): each
-    // quantity comes from the file imported last that has it.
+    // A second file adds to the first (measurement_files.h).
     if (!m_measurement || m_measurementLesson != m_lesson)
         forget();
     m_imports.push_back({QFileInfo(path).fileName(), std::move(read.measurement)});
@@ -244,36 +243,17 @@ void MeasurementSession::sceneReset()
 
 void MeasurementSession::merge()
 {
-    measure::Measurement merged;
-    m_seriesFile.clear();
-    m_bouncesFile.clear();
-    for (const Imported& in : m_imports) {
-        merged.layout = in.measurement.layout;
-        merged.mapping = in.measurement.mapping;
-        merged.rowsBeforeStart = in.measurement.rowsBeforeStart;
-        for (const measure::Series& s : in.measurement.series) {
-            auto same =
-                std::find_if(merged.series.begin(), merged.series.end(),
-                             [&](const measure::Series& m) { return m.quantity == s.quantity; });
-            if (same != merged.series.end())
-                *same = s;
-            else
-                merged.series.push_back(s);
-            m_seriesFile[s.quantity] = in.file;
-        }
-        if (!in.measurement.bounces.empty()) {
-            merged.bounces = in.measurement.bounces;
-            m_bouncesFile = in.file;
-        }
-    }
-    m_measurement = std::move(merged);
+    MergedMeasurement merged = mergeMeasurementFiles(m_imports);
+    m_measurement = std::move(merged.measurement);
+    m_seriesFile = std::move(merged.seriesFile);
+    m_bouncesFile = std::move(merged.bouncesFile);
 }
 
 QString MeasurementSession::sourceText() const
 {
     // One line per file, naming what the comparison takes from it.
     QStringList lines;
-    for (const Imported& in : m_imports) {
+    for (const MeasurementFile& in : m_imports) {
         QStringList what;
         int points = 0;
         for (const measure::Series& s : m_measurement->series)
@@ -400,6 +380,9 @@ void MeasurementSession::compare()
     }
     m_panel->showComparison(*series, lineT, line.values, m_residuals,
                             at.ok && line.ok ? QString() : (at.ok ? line.error : at.error));
+    // The same quantity from the other files, beside it.
+    const QString& file = m_seriesFile.at(t->quantity);
+    m_panel->showOtherFiles(file, otherFileSeries(m_imports, t->quantity, file));
     updateTrail();
 }
 
@@ -501,9 +484,12 @@ void MeasurementSession::showFitResult()
                           valueWithUncertainty(m_fit.values[i].value, m_fit.values[i].halfWidth95),
                           parameterUnit(m_fitted[i].kind));
     lines << measure::describeModel(m_fit, m_fitted);
-    if (t)
+    if (t) {
         lines << tr("Residual RMS: %1 over %n point(s)", nullptr, m_fit.points)
                      .arg(formatQuantity(m_fit.rms, quantityUnit(t->quantity), 2));
+        if (const auto file = m_seriesFile.find(t->quantity); file != m_seriesFile.end())
+            lines << tr("Fitted to the measurement in %1.").arg(file->second);
+    }
     m_panel->showFit(lines.join(QLatin1Char('\n')), true);
 }
 

@@ -7,8 +7,9 @@
 // go into the scene as one edit of its document, which Undo takes back.
 //
 // A second import adds to the first rather than replacing it (a video's heights, then a
-// phone's bounce times): each quantity comes from the file imported last that has it, and
-// the dock names the file of each.
+// phone's bounce times): each quantity is compared and fitted from the file imported last
+// that has it, the dock names the file of each, and the plot shows the same quantity from
+// the earlier files beside it, each named by its file (measurement_files.h).
 //
 // A measurement belongs to the scene it was imported into, or to the lesson: when another
 // scene opens (a file, a new scene, another lesson), it is forgotten, trail and plots too, so
@@ -18,6 +19,7 @@
 #include "measure/fit.h"
 #include "measure/fit_worker.h"
 #include "measure/measurement.h"
+#include "measure/measurement_files.h"
 
 #include <QObject>
 #include <QString>
@@ -142,12 +144,7 @@ private:
     QDockWidget* m_dock = nullptr;
     MeasuredTrailItem* m_trail = nullptr; ///< owned by the view's scene
     ImportAsker m_asker;
-    /// A file imported: its name and what it held.
-    struct Imported {
-        QString file;
-        measure::Measurement measurement;
-    };
-    std::vector<Imported> m_imports;                   ///< in the order imported
+    std::vector<MeasurementFile> m_imports;            ///< in the order imported
     std::map<measure::Quantity, QString> m_seriesFile; ///< the file each series comes from
     QString m_bouncesFile;                             ///< the file the bounce times come from
     QString m_lastFolder;

@@ -3,6 +3,7 @@
 
 #include "common/display_names.h"
 #include "common/number_format.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "plots/sat_handout.h"
 #include "simulation/step_sampler.h"
@@ -70,25 +71,32 @@ PlotWidget* makeComparePlot(const lessons::LessonStep& step, const QString& titl
 
 } // namespace
 
+PlotWidget* makeCompareEnergyPlot(const lessons::LessonStep& step, QWidget* parent)
+{
+    return makeComparePlot(
+        step, LessonExport::tr("Total energy %1").arg(comparedBy(step)),
+        LessonExport::tr("energy E"), QStringLiteral("J"),
+        [](const Sample& s, std::size_t i) { return s.variantTotal[i]; }, parent);
+}
+
+PlotWidget* makeCompareDriftPlot(const lessons::LessonStep& step, QWidget* parent)
+{
+    return makeComparePlot(
+        step, LessonExport::tr("Energy drift %1").arg(comparedBy(step)), LessonExport::tr("drift"),
+        QStringLiteral("%"),
+        [](const Sample& s, std::size_t i) { return s.variantDriftPercent[i]; }, parent);
+}
+
 PlotWidget* makeStepPlot(const lessons::LessonStep& step, const QString& name, QWidget* parent)
 {
-    if (name == u"energy")
-        return makeEnergyPlot(parent);
-    if (name == u"momentum")
-        return makeMomentumPlot(parent);
-    if (name == u"drift")
-        return makeDriftPlot(parent);
-    if (name == u"compare-energy")
-        return makeComparePlot(
-            step, LessonExport::tr("Total energy %1").arg(comparedBy(step)),
-            LessonExport::tr("energy E"), QStringLiteral("J"),
-            [](const Sample& s, std::size_t i) { return s.variantTotal[i]; }, parent);
-    if (name == u"compare-drift")
-        return makeComparePlot(
-            step, LessonExport::tr("Energy drift %1").arg(comparedBy(step)),
-            LessonExport::tr("drift"), QStringLiteral("%"),
-            [](const Sample& s, std::size_t i) { return s.variantDriftPercent[i]; }, parent);
-    return nullptr; // the loader admits no other name
+    const PlotRow* row = findPlot(name);
+    if (row == nullptr)
+        return nullptr; // the loader admits no other name
+    if (row->inWindow())
+        return makeWorldPlot(*row, parent);
+    PlotWidget* plot = row->makeCompared(step, parent);
+    plot->setObjectName(name);
+    return plot;
 }
 
 std::vector<PlotWidget*> makeStepPlots(const lessons::LessonStep& step, QWidget* parent)
@@ -99,7 +107,6 @@ std::vector<PlotWidget*> makeStepPlots(const lessons::LessonStep& step, QWidget*
         Q_ASSERT(plot);
         if (!plot)
             continue;
-        plot->setObjectName(name);
         plots.push_back(plot);
     }
     return plots;

@@ -9,13 +9,8 @@
 // samples them as the window does (step_sampler.h) and writes the same plots with
 // exportStepPlots().
 //
-// Plot names (LessonStep::plots) and what they show:
-//   energy          kinetic, potential and total energy of the main world [J]
-//   momentum        px, py [kg m/s] and the angular momentum L [kg m^2/s]
-//   drift           relative drift of the main world's total energy [%]
-//   compare-energy  the total energy of each compared world, one curve each [J]
-//   compare-drift   the energy drift of each compared world [%]
-// Files are named after the plot: DIR/02-energy-drift/compare-energy.png.
+// The plots by name (LessonStep::plots) are the rows of plot_table.h. Files are named after the
+// plot: DIR/02-energy-drift/compare-energy.png.
 
 #include "plots/plot_export.h"
 
@@ -32,12 +27,13 @@ namespace rigidlab::ui {
 
 class PlotWidget;
 
-/// One of the step's plots by its name in the lesson, a child of `parent`; nullptr for a name
-/// the loader does not admit. The window and the headless export both make their plots here.
+/// One of the step's plots by its name in the lesson (its row in plot_table.h), a child of
+/// `parent`, its objectName that name; nullptr for a name the loader does not admit. The
+/// window and the headless export both make their plots here.
 PlotWidget* makeStepPlot(const lessons::LessonStep& step, const QString& name, QWidget* parent);
 
-/// The step's plots, in the order it names them, children of `parent`. Each plot's
-/// objectName is its name in the lesson ("compare-energy"). The caller connects their source.
+/// The step's plots (makeStepPlot), in the order it names them, children of `parent`. The
+/// caller connects their source.
 std::vector<PlotWidget*> makeStepPlots(const lessons::LessonStep& step, QWidget* parent);
 
 /// The folder for a step's plots: its number from 01 and its title in lower case, words

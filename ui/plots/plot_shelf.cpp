@@ -8,6 +8,8 @@
 #include <QBoxLayout>
 #include <QTabBar>
 
+#include <algorithm>
+
 namespace rigidlab::ui {
 
 QSize plotDataArea(const PlotWidget& plot)
@@ -44,7 +46,7 @@ PlotShelf::PlotShelf(QWidget* parent)
         if (m_arrangement != Arrangement::Tabs)
             return;
         for (std::size_t i = 0; i < m_plots.size(); ++i)
-            m_plots[i]->setVisible(static_cast<int>(i) == index);
+            m_plots[i]->setVisible(m_shown[i] && static_cast<int>(i) == index);
     });
 }
 
@@ -52,17 +54,31 @@ void PlotShelf::addPlot(PlotWidget* plot, const QString& tab)
 {
     plot->setParent(this);
     m_plots.push_back(plot);
+    m_shown.push_back(true);
     m_plotsLayout->addWidget(plot, 1);
     m_tabs->addTab(tab);
     m_tabs->setTabToolTip(m_tabs->count() - 1, plot->title());
     apply(m_arrangement);
 }
 
+void PlotShelf::setPlotShown(PlotWidget* plot, bool shown)
+{
+    const auto at = std::find(m_plots.begin(), m_plots.end(), plot);
+    if (at == m_plots.end())
+        return;
+    const auto i = static_cast<std::size_t>(at - m_plots.begin());
+    m_shown[i] = shown;
+    m_tabs->setTabVisible(static_cast<int>(i), shown);
+    apply(m_arrangement);
+    arrange();
+}
+
 void PlotShelf::arrange()
 {
     if (m_arranging)
         return;
-    if (m_plots.size() < 2)
+    const int n = static_cast<int>(std::count(m_shown.begin(), m_shown.end(), true));
+    if (n < 2)
         return apply(Arrangement::Column);
     // Each plot's least size, from one laid out now (they share their fonts and style).
     const PlotWidget* shown = m_plots.front();
@@ -70,7 +86,6 @@ void PlotShelf::arrange()
         if (p->isVisible())
             shown = p;
     const QSize least = plotSizeFor(*shown, kLeastDataArea);
-    const int n = static_cast<int>(m_plots.size());
     const int gaps = (n - 1) * std::max(0, m_plotsLayout->spacing());
     if (width() >= n * least.width() + gaps)
         apply(Arrangement::Row);
@@ -88,8 +103,16 @@ void PlotShelf::apply(Arrangement arrangement)
     m_plotsLayout->setDirection(arrangement == Arrangement::Row ? QBoxLayout::LeftToRight
                                                                 : QBoxLayout::TopToBottom);
     m_tabs->setVisible(tabs);
+    // The tab in front is one of a plot shown.
+    const int current = m_tabs->currentIndex();
+    if (current >= 0 && !m_shown[static_cast<std::size_t>(current)]) {
+        const auto first = std::find(m_shown.begin(), m_shown.end(), true);
+        if (first != m_shown.end())
+            m_tabs->setCurrentIndex(static_cast<int>(first - m_shown.begin()));
+    }
     for (std::size_t i = 0; i < m_plots.size(); ++i)
-        m_plots[i]->setVisible(!tabs || static_cast<int>(i) == m_tabs->currentIndex());
+        m_plots[i]->setVisible(m_shown[i] &&
+                               (!tabs || static_cast<int>(i) == m_tabs->currentIndex()));
     m_arranging = false;
 }
 

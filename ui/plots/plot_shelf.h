@@ -35,6 +35,9 @@ public:
 
     /// Adds `plot` (the shelf owns it), named `tab` on its tab when they are one at a time.
     void addPlot(PlotWidget* plot, const QString& tab);
+    /// Shows `plot` or leaves it out (its owner's choice): one left out takes no room and has
+    /// no tab, and the others are arranged without it.
+    void setPlotShown(PlotWidget* plot, bool shown);
     Arrangement arrangement() const { return m_arrangement; }
     /// Arranges the plots for the shelf's size now.
     void arrange();
@@ -48,6 +51,7 @@ private:
     QTabBar* m_tabs;
     QBoxLayout* m_plotsLayout;
     std::vector<PlotWidget*> m_plots;
+    std::vector<bool> m_shown; ///< per plot: not left out by setPlotShown()
     Arrangement m_arrangement = Arrangement::Column;
     bool m_arranging = false;
 };

@@ -354,11 +354,7 @@ inline constexpr double kDriftScalePercent = 100.0;
 /// 1e-4 of it, which the solver makes, shows as a pixel or two, not as a full-height jump.
 inline constexpr double kConservedMinimumSpan = 0.02;
 
-/// Kinetic, potential and total energy [J].
-PlotWidget* makeEnergyPlot(QWidget* parent);
-/// Linear momentum px, py [kg m/s] (left axis) and angular momentum L [kg m²/s] (right axis).
-PlotWidget* makeMomentumPlot(QWidget* parent);
-/// Relative drift of the total energy [%].
-PlotWidget* makeDriftPlot(QWidget* parent);
+// The window's plots (makeEnergyPlot, makeMomentumPlot, makeDriftPlot) are made by their rows
+// of the plots' table, plot_table.h, which declares them.
 
 } // namespace rigidlab::ui

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The plots of the lab window, each a few lines over PlotWidget; and the palette they share.
-// Declared in plot_widget.h.
+// The plots are declared in plot_table.h (made by their rows), the palette in plot_widget.h.
 
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 
 #include "export/csv_columns.h"

@@ -11,9 +11,15 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 
 namespace rigidlab::ui {
+
+namespace {
+
+/// The fill of static bodies: a light grey under their hatching.
+const QColor kGround(0xb8, 0xb8, 0xb8);
+
+} // namespace
 
 QColor bodyColor(int index)
 {
@@ -25,7 +31,8 @@ QColor bodyColor(int index)
 }
 
 BodyItem::BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fill)
-    : m_bodyId(bodyId), m_kind(kind), m_fill(fill)
+    : m_bodyId(bodyId), m_kind(kind), m_fill(fill), m_edge(fill.darker(160)),
+      m_needle(fill.darker(220))
 {
     shape.visit(physics::Overloaded{[this](const physics::Circle& c) {
                                         const QPointF centre(c.center.x(), c.center.y());
@@ -47,9 +54,21 @@ BodyItem::BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fil
 
 void BodyItem::setPose(double x, double y, double angle)
 {
-    setPos(x, y);
-    // The view flips y, so a positive rotation here turns counter-clockwise on screen.
-    setRotation(angle * 180.0 / std::numbers::pi);
+    // One transform instead of a position and a rotation in degrees, which Qt would turn back
+    // into a sine and a cosine. As QTransform(m11, m12, m21, m22, dx, dy) maps a row vector:
+    // rotated by the angle, then moved to the origin. The view flips y, so a positive angle
+    // turns counter-clockwise on screen.
+    const double c = std::cos(angle), s = std::sin(angle);
+    setTransform(QTransform(c, s, -s, c, x, y));
+}
+
+bool BodyItem::containsScenePoint(const QPointF& p) const
+{
+    // Into the body's frame: the shift undone, then the rotation (its inverse, the transpose).
+    const QTransform frame = transform();
+    const double c = frame.m11(), s = frame.m12();
+    const double dx = p.x() - frame.dx(), dy = p.y() - frame.dy();
+    return m_path.contains(QPointF(c * dx + s * dy, -s * dx + c * dy));
 }
 
 void BodyItem::setMinimumRadius(double metres)
@@ -82,15 +101,17 @@ void BodyItem::rebuildDrawn()
     } else {
         m_polygon = grow.map(m_truePolygon);
     }
-    update();
+    const QRectF drawn = m_path.boundingRect();
+    m_drawnSize = std::max(drawn.width(), drawn.height());
+    m_reach = 0;
+    for (const QPointF& corner :
+         {drawn.topLeft(), drawn.topRight(), drawn.bottomLeft(), drawn.bottomRight()})
+        m_reach = std::max(m_reach, std::hypot(corner.x(), corner.y()));
 }
 
 void BodyItem::setSelectedBody(bool selected)
 {
-    if (selected != m_selected) {
-        m_selected = selected;
-        update();
-    }
+    m_selected = selected;
 }
 
 QRectF BodyItem::boundingRect() const
@@ -107,44 +128,55 @@ QPainterPath BodyItem::shape() const
 
 void BodyItem::paint(QPainter* painter, const QStyleOptionGraphicsItem*, QWidget*)
 {
-    painter->setRenderHint(QPainter::Antialiasing, m_antialiased);
-    QPen pen(m_selected ? QColor(20, 20, 20) : m_fill.darker(160),
-             theme::lineWidth(m_selected ? 3.0 : 1.0));
+    draw(*painter);
+}
+
+void BodyItem::drawDot(QPainter& painter, const QPointF& at, double sidePx) const
+{
+    const double half = 0.5 * std::max(1.0, sidePx);
+    painter.fillRect(QRectF(at.x() - half, at.y() - half, 2 * half, 2 * half),
+                     m_kind == 1 ? kGround : m_fill);
+}
+
+void BodyItem::draw(QPainter& painter) const
+{
+    // The selected body's outline is thick and near black: it shows without telling by colour.
+    QPen pen(m_selected ? QColor(20, 20, 20) : m_edge, theme::lineWidth(m_selected ? 3.0 : 1.0));
     pen.setCosmetic(true);
-    painter->setPen(pen);
+    painter.setPen(pen);
     if (m_kind == 1) {
         // Static bodies: grey with hatching, so they read as fixed ground.
-        painter->setBrush(QColor(0xb8, 0xb8, 0xb8));
-        painter->drawPath(m_path);
+        painter.setBrush(kGround);
+        painter.drawPath(m_path);
         QBrush hatch(QColor(0x80, 0x80, 0x80), Qt::BDiagPattern);
         hatch.setTransform(QTransform::fromScale(0.02, 0.02));
-        painter->setBrush(hatch);
-        painter->drawPath(m_path);
+        painter.setBrush(hatch);
+        painter.drawPath(m_path);
     } else if (m_kind == 3) {
         // A ghost: its colour's outline over a faint fill, so that the bodies it overlaps
         // stay visible.
         QPen outline(m_fill, theme::lineWidth(2.5));
         outline.setCosmetic(true);
-        painter->setPen(outline);
+        painter.setPen(outline);
         QColor fill = m_fill;
         fill.setAlpha(60);
-        painter->setBrush(fill);
-        painter->drawPath(m_path);
+        painter.setBrush(fill);
+        painter.drawPath(m_path);
     } else {
         QColor fill = m_fill;
         if (m_kind == 2)
             fill.setAlpha(120); // kinematic: see-through
-        painter->setBrush(fill);
+        painter.setBrush(fill);
         if (m_polygon.isEmpty())
-            painter->drawEllipse(m_circle);
+            painter.drawEllipse(m_circle);
         else
-            painter->drawPolygon(m_polygon);
+            painter.drawPolygon(m_polygon);
     }
     if (!m_radiusLine.isNull()) {
-        QPen line(m_fill.darker(220), theme::lineWidth(2.0));
+        QPen line(m_needle, theme::lineWidth(2.0));
         line.setCosmetic(true);
-        painter->setPen(line);
-        painter->drawLine(m_radiusLine);
+        painter.setPen(line);
+        painter.drawLine(m_radiusLine);
     }
 }
 

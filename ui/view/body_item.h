@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// One graphics item per body. It draws the body's shape in the body's own frame and only
-// follows the pose it is given; it holds no physics.
+// One body's drawing: its shape in the body's own frame, the pose it is given, its colour and
+// whether it is selected; it holds no physics. The view does not add it to the scene: one
+// BodiesItem paints every body in a single pass (bodies_item.h), and this item keeps the
+// geometry that picking, the labels and the screen reader ask for (its scene bounding box,
+// its outline).
 
 #include "rigidlab/physics/shape.h"
 
@@ -22,16 +25,28 @@ public:
     int bodyId() const { return m_bodyId; }
     /// The colour it is filled with: the scene's "colour", or one of the view's.
     QColor fill() const { return m_fill; }
-    /// Places the item: origin [m] and angle [rad] (counter-clockwise, y up).
+    /// Places the item: origin [m] and angle [rad] (counter-clockwise, y up). Its transform()
+    /// is then the body's frame in the scene: rotation by the angle, then the origin.
     void setPose(double x, double y, double angle);
     void setSelectedBody(bool selected);
-    /// Smooth edges (the default). A scene of hundreds of bodies draws them without: each is
-    /// a few pixels across, and antialiasing them took a large part of a frame.
-    void setAntialiased(bool on) { m_antialiased = on; }
+    bool selectedBody() const { return m_selected; }
     /// The least half-size [m] a moving body is drawn with, so that a small body far zoomed
     /// out still reads as a body, not a dot (the view sets it from its zoom). A static body
     /// is always drawn at its true size.
     void setMinimumRadius(double metres);
+    /// How far the drawn outline reaches from the origin [m]: a circle about the pose that
+    /// holds the whole drawing, whatever the angle.
+    double reach() const { return m_reach; }
+    /// The drawn outline's larger side [m].
+    double drawnSize() const { return m_drawnSize; }
+    /// Whether the scene point [m] lies on the body as drawn (grown to the minimum radius).
+    bool containsScenePoint(const QPointF& p) const;
+
+    /// Draws the body in its own frame [m]: the painter's transform must place that frame.
+    void draw(QPainter& painter) const;
+    /// Draws the body as a square dot of its colour, `sidePx` across, centred on device point
+    /// `at` (the painter in device pixels): what a body two or three pixels across can show.
+    void drawDot(QPainter& painter, const QPointF& at, double sidePx) const;
 
     QRectF boundingRect() const override;
     QPainterPath shape() const override;
@@ -44,6 +59,10 @@ private:
     int m_bodyId;
     int m_kind;
     QColor m_fill;
+    QColor m_edge;           ///< the outline's colour, darker than the fill
+    QColor m_needle;         ///< circles: the radius line's colour
+    double m_reach = 0;      ///< see reach() [m]
+    double m_drawnSize = 0;  ///< see drawnSize() [m]
     QPainterPath m_truePath; ///< the shape at its true size [m]
     QPainterPath m_path;     ///< as drawn (see setMinimumRadius)
     QPolygonF m_truePolygon;
@@ -53,7 +72,6 @@ private:
     QRectF m_circle;        ///< circles: the bounding square, drawn as an ellipse
     QLineF m_radiusLine;    ///< circles: a radius, so that rotation shows
     bool m_selected = false;
-    bool m_antialiased = true;
 };
 
 /// The index-th body's colour: the plots' hues, apart with any colour vision and at least

@@ -6,6 +6,7 @@
 #include "common/theme.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
+#include "view/bodies_item.h"
 #include "view/body_item.h"
 #include "view/scene_narrator.h"
 #include "view/world_view_accessible.h"
@@ -49,6 +50,8 @@ WorldView::WorldView(SimulationController& controller, QWidget* parent)
     m_overlays->setFrozenPose(
         [this](int world, physics::BodyId body) { return frozenPose(world, body); });
     m_scene->addItem(m_overlays);
+    m_bodiesItem = new BodiesItem;
+    m_scene->addItem(m_bodiesItem);
     setRenderHint(QPainter::Antialiasing);
     setViewportUpdateMode(QGraphicsView::FullViewportUpdate);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
@@ -68,35 +71,54 @@ WorldView::WorldView(SimulationController& controller, QWidget* parent)
     rebuild();
 }
 
+WorldView::~WorldView()
+{
+    // The bodies' items are not the scene's but these members': the scene outlives them a
+    // little (a child of the view), so its painter lets go of them first.
+    m_bodiesItem->setBodies({});
+}
+
 std::vector<const BodyItem*> WorldView::ghostItems(int variant) const
 {
     std::vector<const BodyItem*> out;
     for (const Ghost& g : m_ghosts)
         if (g.variant == variant)
-            out.push_back(g.item);
+            out.push_back(g.item.get());
     return out;
 }
 
 const BodyItem* WorldView::itemFor(int id) const
 {
-    return id >= 0 && id < static_cast<int>(m_items.size()) ? m_items[static_cast<size_t>(id)]
+    return id >= 0 && id < static_cast<int>(m_items.size()) ? m_items[static_cast<size_t>(id)].get()
                                                             : nullptr;
 }
 
-/// From this many bodies on, they are drawn without antialiasing (see BodyItem).
+int WorldView::bodyAt(const QPoint& viewPos) const
+{
+    // Topmost first, as painted: the selected body over all (BodiesItem paints it last),
+    // then a moving body over the ground, a later body over an earlier.
+    const QPointF at = mapToScene(viewPos);
+    if (const BodyItem* chosen = itemFor(m_selected); chosen && chosen->containsScenePoint(at))
+        return m_selected;
+    const BodyItem* hit = nullptr;
+    for (const auto& item : m_items)
+        if (item->containsScenePoint(at) && (!hit || item->zValue() >= hit->zValue()))
+            hit = item.get();
+    return hit ? hit->bodyId() : -1;
+}
+
+/// From this many bodies on, the scene is a crowd (WorldView::m_crowded).
 constexpr std::size_t kManyBodies = 300;
 
 void WorldView::rebuild()
 {
-    for (BodyItem* item : m_items)
-        delete item;
+    m_bodiesItem->setBodies({});
     m_items.clear();
-    for (const Ghost& g : m_ghosts)
-        delete g.item;
     m_ghosts.clear();
     const bool comparing = !m_controller.variantLabels().isEmpty();
     m_selected = -1;
     const auto& bodies = m_controller.world().bodies();
+    m_crowded = bodies.size() >= kManyBodies;
     int colour = 0;
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const physics::Body& b = bodies[i];
@@ -108,11 +130,7 @@ void WorldView::rebuild()
         // The scene's own colour for the body, where it gives one ("colour": "#rrggbb").
         if (const QString own = m_controller.scene().colourOf(i); !own.isEmpty() && !comparing)
             fill = QColor::fromString(own);
-        auto* item = new BodyItem(static_cast<int>(i), b.shape, kind, fill);
-        item->setAntialiased(bodies.size() < kManyBodies);
-        item->setMinimumRadius(minimumBodyRadius());
-        m_scene->addItem(item);
-        m_items.push_back(item);
+        m_items.push_back(std::make_unique<BodyItem>(static_cast<int>(i), b.shape, kind, fill));
     }
     // A compared world drawn beside the main one (an offset) needs its floor and walls too,
     // or its bodies stand in mid-air; drawn over the main one, its static bodies would only
@@ -123,14 +141,14 @@ void WorldView::rebuild()
         for (std::size_t i = 0; i < vb.size(); ++i) {
             if (!vb[i].moves() && !beside)
                 continue;
-            auto* item = new BodyItem(static_cast<int>(i), vb[i].shape, 3, plotColor(v + 1));
+            auto item =
+                std::make_unique<BodyItem>(static_cast<int>(i), vb[i].shape, 3, plotColor(v + 1));
             item->setZValue(vb[i].moves() ? 2 : 1.5);
-            item->setAcceptedMouseButtons(Qt::NoButton);
-            item->setMinimumRadius(minimumBodyRadius());
-            m_scene->addItem(item);
-            m_ghosts.push_back({v, static_cast<int>(i), item, physics::Transform()});
+            m_ghosts.push_back({v, static_cast<int>(i), std::move(item), physics::Transform()});
         }
     }
+    applyMinimumBodySize();
+    paintBodiesInOrder();
     m_overlays->clearTrails();
     m_drawnRunning.clear();
     syncPoses();
@@ -139,6 +157,22 @@ void WorldView::rebuild()
         fitScene();
     }
     emit bodySelected(-1);
+}
+
+void WorldView::paintBodiesInOrder()
+{
+    // The order the scene painted the bodies' own items in: by their z (the ground, the
+    // moving bodies, the compared worlds' ground, their moving bodies), then as added.
+    std::vector<const BodyItem*> order;
+    for (const auto& item : m_items)
+        order.push_back(item.get());
+    for (const Ghost& g : m_ghosts)
+        order.push_back(g.item.get());
+    std::stable_sort(order.begin(), order.end(), [](const BodyItem* a, const BodyItem* b) {
+        return a->zValue() < b->zValue();
+    });
+    m_bodiesItem->setBodies(std::move(order));
+    m_bodiesItem->setAntialiased(!m_crowded);
 }
 
 void WorldView::syncPoses()
@@ -151,6 +185,7 @@ void WorldView::syncPoses()
     syncMainPoses(shown);
     syncGhostPoses(shown);
     followContent();
+    m_bodiesItem->update();
     m_overlays->refresh();
 }
 
@@ -254,6 +289,8 @@ void WorldView::selectBody(int id)
     m_selected = id >= 0 && id < static_cast<int>(m_items.size()) ? id : -1;
     if (m_selected >= 0)
         m_items[static_cast<size_t>(m_selected)]->setSelectedBody(true);
+    applyMinimumBodySize(); // in a crowd only the selected body is grown
+    m_bodiesItem->update();
     emit bodySelected(m_selected);
 }
 
@@ -273,18 +310,15 @@ void WorldView::mousePressEvent(QMouseEvent* event)
     }
     if (event->button() != Qt::LeftButton)
         return QGraphicsView::mousePressEvent(event);
-    BodyItem* hit = nullptr;
-    for (QGraphicsItem* item : items(event->pos()))
-        if ((hit = qgraphicsitem_cast<BodyItem*>(item)))
-            break;
-    if (!hit) {
+    const int hit = bodyAt(event->pos());
+    if (hit < 0) {
         m_panning = true;
         setCursor(Qt::ClosedHandCursor);
         return;
     }
-    selectBody(hit->bodyId());
+    selectBody(hit);
     m_autoFit = false; // the view must hold still under the hand that drags
-    m_controller.grab(hit->bodyId(), toWorld(event->pos()));
+    m_controller.grab(hit, toWorld(event->pos()));
     if (m_controller.grabbed())
         setCursor(Qt::ClosedHandCursor);
 }

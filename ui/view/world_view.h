@@ -10,12 +10,14 @@
 #include <QGraphicsView>
 
 #include <functional>
+#include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
 
 namespace rigidlab::ui {
 
+class BodiesItem;
 class BodyItem;
 class SceneNarrator;
 class SimulationController;
@@ -24,6 +26,7 @@ class WorldView : public QGraphicsView {
     Q_OBJECT
 public:
     explicit WorldView(SimulationController& controller, QWidget* parent = nullptr);
+    ~WorldView() override;
 
     OverlayItem& overlays() { return *m_overlays; }
     const SimulationController& controller() const { return m_controller; }
@@ -35,6 +38,11 @@ public:
     /// in body order (for tests).
     std::vector<const BodyItem*> ghostItems(int variant) const;
     int selectedBody() const { return m_selected; }
+    /// The main world's body drawn at view position `viewPos` (the topmost where bodies
+    /// overlap), or -1: what a click there grabs and selects.
+    int bodyAt(const QPoint& viewPos) const;
+    /// The one item that paints every body (for tests).
+    const BodiesItem& bodiesItem() const { return *m_bodiesItem; }
     /// Pixels per metre now.
     double zoom() const { return transform().m11(); }
 
@@ -116,6 +124,8 @@ private:
     /// showing `shown` of the scene [m].
     void syncMainPoses(const QRectF& shown);
     void syncGhostPoses(const QRectF& shown);
+    /// Hands the bodies' items to m_bodiesItem in the order they are painted.
+    void paintBodiesInOrder();
     /// Auto-fit after the bodies moved: follows bodies leaving the fitted area, gives back
     /// what it widened for a world that stopped.
     void followContent();
@@ -145,16 +155,17 @@ private:
     QGraphicsScene* m_scene;
     OverlayItem* m_overlays;
     SceneNarrator* m_narrator;
-    std::vector<BodyItem*> m_items;              ///< indexed by body id
-    std::vector<physics::Transform> m_itemPoses; ///< as last drawn while the main world ran
+    BodiesItem* m_bodiesItem; ///< paints m_items and the ghosts; owned by the scene
+    std::vector<std::unique_ptr<BodyItem>> m_items; ///< indexed by body id; not in the scene
+    std::vector<physics::Transform> m_itemPoses;    ///< as last drawn while the main world ran
     /// Per world (0 the main one): whether it was drawn running since the last rebuild, so
     /// that once stopped it is drawn frozen there rather than where it flew off to.
     std::vector<bool> m_drawnRunning;
     struct Ghost {
         int variant = 0; ///< index into the controller's variants
         int body = 0;
-        BodyItem* item = nullptr;
-        physics::Transform pose; ///< as last drawn while its world ran [m]
+        std::unique_ptr<BodyItem> item; ///< not in the scene: m_bodiesItem paints it
+        physics::Transform pose;        ///< as last drawn while its world ran [m]
     };
     /// The pose body `body` of world `world` (0 the main one, v + 1 compared world v) is
     /// frozen at, once that world stopped: as last drawn before it did.
@@ -172,6 +183,9 @@ private:
     std::function<QRectF()> m_fitExtra; ///< see setFitExtra
     QRectF m_action;                    ///< see setActionBounds
     bool m_fitOnRebuild = true;         ///< see setFitOnRebuild
+    /// Hundreds of bodies: drawn without antialiasing, and not grown to the readable size
+    /// (see applyMinimumBodySize).
+    bool m_crowded = false;
 };
 
 } // namespace rigidlab::ui

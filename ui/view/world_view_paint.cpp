@@ -205,7 +205,7 @@ const BodyItem* WorldView::ghostOf(int variant) const
 {
     const auto ghost = std::find_if(m_ghosts.begin(), m_ghosts.end(),
                                     [variant](const Ghost& g) { return g.variant == variant; });
-    return ghost == m_ghosts.end() ? nullptr : ghost->item;
+    return ghost == m_ghosts.end() ? nullptr : ghost->item.get();
 }
 
 QString WorldView::stoppedLabel(int variant) const
@@ -235,7 +235,7 @@ std::vector<QRect> WorldView::stoppedLabelRects() const
             return box;
         };
         const auto coversBody = [this](const QRect& box) {
-            for (const BodyItem* item : m_items)
+            for (const auto& item : m_items)
                 if (item && item->isVisible() &&
                     mapFromScene(item->sceneBoundingRect()).boundingRect().intersects(box))
                     return true;

@@ -6,6 +6,7 @@
 
 #include "common/theme.h"
 #include "simulation/simulation_controller.h"
+#include "view/bodies_item.h"
 #include "view/body_item.h"
 
 #include <QScrollBar>
@@ -151,11 +152,16 @@ double WorldView::minimumBodyRadius() const
 
 void WorldView::applyMinimumBodySize()
 {
+    // In a crowd (hundreds of bodies) a body grown to the readable size only covers its
+    // neighbours: the base-100 pyramid's 2 px boxes grown to 10 px painted each pixel some
+    // 25 times over and hid the pile's shape. There the bodies keep their true size, and only
+    // the selected one is grown, so that it stays in sight.
     const double r = minimumBodyRadius();
-    for (BodyItem* item : m_items)
-        item->setMinimumRadius(r);
+    for (const auto& item : m_items)
+        item->setMinimumRadius(m_crowded && !item->selectedBody() ? 0.0 : r);
     for (const Ghost& g : m_ghosts)
-        g.item->setMinimumRadius(r);
+        g.item->setMinimumRadius(m_crowded ? 0.0 : r);
+    m_bodiesItem->update();
 }
 
 void WorldView::wheelEvent(QWheelEvent* event)

@@ -66,7 +66,8 @@ void ClassResultsDialog::buildChoosers(QVBoxLayout& layout)
     m_lesson->setAccessibleName(tr("Lesson"));
     m_lesson->setAccessibleDescription(
         tr("The lessons the folder holds answers to, the most answered first"));
-    connect(m_lesson, &QComboBox::activated, this, [this] { setLesson(m_lesson->currentText()); });
+    connect(m_lesson, &QComboBox::activated, this,
+            [this] { setLesson(m_lesson->currentData().toString()); });
     auto* lessonLabel = new QLabel(tr("&Lesson:"), this);
     lessonLabel->setBuddy(m_lesson);
     form->addRow(lessonLabel, m_lesson);
@@ -151,9 +152,14 @@ void ClassResultsDialog::setFolder(const QString& folder)
     m_folderEdit->setText(QDir::toNativeSeparators(folder));
     collect(QString());
     m_lesson->clear();
-    m_lesson->addItems(m_collected.lessonFiles);
+    // A teacher knows a lesson by its title; the file tells apart two of one title.
+    for (qsizetype i = 0; i < m_collected.lessonFiles.size(); ++i) {
+        const QString& file = m_collected.lessonFiles[i];
+        const QString title = m_collected.lessonTitles.value(i);
+        m_lesson->addItem(title.isEmpty() ? file : tr("%1 (%2)").arg(title, file), file);
+    }
     if (!m_collected.tables.empty())
-        m_lesson->setCurrentText(m_collected.tables.front().lessonFile);
+        m_lesson->setCurrentIndex(m_lesson->findData(m_collected.tables.front().lessonFile));
 }
 
 void ClassResultsDialog::setLesson(const QString& lessonFile)

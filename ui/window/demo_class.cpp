@@ -48,6 +48,8 @@ lessons::Answers student(const QString& name, const QString& date,
 {
     lessons::Answers a;
     a.lessonFile = QStringLiteral("restitution.json");
+    // As the window's Hand in writes it: the title in the language played (this class's).
+    a.lessonTitle = QStringLiteral("Odrazy a srážky: koeficient restituce");
     a.student = name;
     a.className = QStringLiteral("2.B");
     a.date = date;
@@ -103,6 +105,7 @@ QString writeDemoClass(const QString& folder)
     // A file cut short in the copying, and a hand-in of another lesson.
     lessons::Answers other = students.front().answers;
     other.lessonFile = QStringLiteral("tunnelling.json");
+    other.lessonTitle = QStringLiteral("Tunelování a spojitá detekce srážek");
     other.steps.clear();
     other.student = QStringLiteral("Karel Malý");
     for (const auto& [name, bytes] :

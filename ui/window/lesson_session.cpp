@@ -14,6 +14,7 @@
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
 #include "plots/plot_shelf.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
@@ -222,23 +223,18 @@ void LessonSession::makeComparePlots(const lessons::LessonStep& step)
     auto* box = new PlotShelf(compareDock);
     QStringList titles;
     for (const QString& name : step.plots) {
-        if (!name.startsWith(QLatin1String("compare-")))
+        const PlotRow* row = findPlot(name);
+        if (!row || row->inWindow())
             continue;
         PlotWidget* plot = makeStepPlot(step, name, box);
         if (!plot)
             continue;
-        plot->setObjectName(name);
         plot->setMinimumSize(180, 150);
         plot->setTitleShown(false);
         plot->setPresentation(m_parts.layout.presentation());
         followController(*plot, m_parts.controller);
-        // Its tab says what the plot's values are ("compare-drift": the drift).
-        const QString plain = name.mid(QStringLiteral("compare-").size());
-        const auto* names =
-            std::find_if(kStepPlotTitles.begin(), kStepPlotTitles.end(),
-                         [&](const StepPartName& n) { return plain == QLatin1String(n.name); });
-        box->addPlot(plot, names != kStepPlotTitles.end() ? stepPartText(names->shortTitle)
-                                                          : plot->title());
+        // Its tab says what the plot's values are (the drift), its row's short title.
+        box->addPlot(plot, plotTitle(*row, false));
         m_comparePlots.push_back(plot);
         titles << plot->title();
     }
@@ -281,8 +277,8 @@ QStringList LessonSession::loadStepWorlds(const lessons::LessonStep& step,
         controller.setTimeScale(*scale);
     std::vector<lessons::Measure> measures;
     for (const lessons::Question& q : step.questions)
-        if (!q.isChoice()) // a choice question measures nothing
-            measures.push_back(q.measure);
+        if (const auto* measured = q.as<lessons::MeasuredQuestion>()) // the others measure nothing
+            measures.push_back(measured->measure);
     controller.watch(measures);
     return labels;
 }
@@ -341,14 +337,13 @@ void LessonSession::leave()
     m_parts.editTools.setAllowedTools(std::nullopt);
     m_parts.editTools.setAllowedProperties(std::nullopt);
     emit left();
-    // Back to the plain lab: controls, inspector and the three plots.
+    // Back to the plain lab: controls, inspector and the window's own plots.
     const QMap<QString, QDockWidget*>& docks = m_parts.layout.docks();
     for (auto it = docks.cbegin(); it != docks.cend(); ++it) {
-        const bool standard =
-            it.key() == QLatin1String("lesson") || it.key() == QLatin1String("controls") ||
-            it.key() == QLatin1String("inspector") ||
-            std::any_of(kPlotNames.begin(), kPlotNames.end(),
-                        [&](const PlotNames& p) { return it.key() == QLatin1String(p.name); });
+        const PlotRow* plot = findPlot(it.key());
+        const bool standard = it.key() == QLatin1String("lesson") ||
+                              it.key() == QLatin1String("controls") ||
+                              it.key() == QLatin1String("inspector") || (plot && plot->inWindow());
         it.value()->setVisible(standard);
     }
     delete m_parts.layout.compareDock()->widget();
@@ -382,11 +377,10 @@ QStringList LessonSession::exportStepPlots(const QString& folder)
     // The plots as the student sees them, with a caption naming the lesson, step,
     // integrator and dt (or just the scene's title outside a lesson).
     std::vector<PlotWidget*> plots;
-    const auto nameOf = [](std::size_t i) { return QLatin1String(kPlotNames[i].name); };
     const auto plotNamed = [&](const QString& name) -> PlotWidget* {
-        for (std::size_t i = 0; i < kPlotNames.size(); ++i)
-            if (nameOf(i) == name)
-                return m_parts.plots[i];
+        for (PlotWidget* plot : m_parts.plots)
+            if (plot->objectName() == name)
+                return plot;
         for (PlotWidget* plot : m_comparePlots)
             if (plot->objectName() == name)
                 return plot;
@@ -400,12 +394,10 @@ QStringList LessonSession::exportStepPlots(const QString& folder)
             if (PlotWidget* plot = plotNamed(name))
                 plots.push_back(plot);
     } else {
-        for (std::size_t i = 0; i < kPlotNames.size(); ++i)
-            if (!m_parts.layout.dock(nameOf(i))->isHidden())
-                plots.push_back(m_parts.plots[i]);
+        for (PlotWidget* plot : m_parts.plots)
+            if (!m_parts.layout.dock(plot->objectName())->isHidden())
+                plots.push_back(plot);
     }
-    for (std::size_t i = 0; i < kPlotNames.size(); ++i)
-        m_parts.plots[i]->setObjectName(nameOf(i));
     for (PlotWidget* plot : plots)
         plot->drain();
     const QString caption =

@@ -5,6 +5,7 @@
 // exporting the step's plots. The lesson's text and questions are the player's
 // (lesson_player/); this is what the rest of the window does for it.
 
+#include <QList>
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -55,7 +56,7 @@ public:
         SatPanel& sat;
         BouncePanel& bounces;
         CollisionPanel& collision;
-        std::array<PlotWidget*, 3> plots; ///< the standard plots, in the order of kPlotNames
+        QList<PlotWidget*> plots; ///< the window's own, each named by its row (plot_table.h)
     };
     explicit LessonSession(const Parts& parts);
 

@@ -18,6 +18,7 @@
 #include "panels/error_panel.h"
 #include "panels/inspector_panel.h"
 #include "panels/sat_panel.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
@@ -59,7 +60,9 @@ MainWindow::MainWindow(QWidget* parent)
     setWindowTitle(tr("RigidLab"));
     setCentralWidget(m_view);
     m_actions = new WindowActions(*this, *m_controller, *m_view);
-    m_plots = {makeEnergyPlot(this), makeMomentumPlot(this), makeDriftPlot(this)};
+    for (const PlotRow& row : kPlotRows)
+        if (row.inWindow())
+            m_plots << makeWorldPlot(row, this);
     WindowLayout::Panels panels;
     panels.lesson = m_player;
     panels.lessonNavigation = m_player->takeNavigation();
@@ -74,6 +77,8 @@ MainWindow::MainWindow(QWidget* parent)
     panels.measurement = m_measurement->panel();
     m_layout = new WindowLayout(*this, panels);
     m_measurement->setDock(m_layout->dock(QStringLiteral("measurement")));
+    connect(m_measurement->panel(), &MeasurementPanel::legendChanged, m_layout,
+            &WindowLayout::fitPlotHeightSoon);
     m_status = new StatusLine(*this, *m_controller, *m_view);
     m_documents = new WindowDocuments(*this, *m_document);
     buildEditor();
@@ -81,7 +86,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_instruments->setGraphPlacer([this](QDockWidget* graph) {
         // A tab beside the plots: the scene keeps its height on a small screen.
         addDockWidget(Qt::RightDockWidgetArea, graph);
-        if (QDockWidget* plots = m_layout->dock(QLatin1String(kPlotNames[0].name));
+        if (QDockWidget* plots = m_layout->dock(m_plots.front()->objectName());
             plots && !plots->isHidden())
             tabifyDockWidget(plots, graph);
     });
@@ -201,9 +206,9 @@ QList<PlotWidget*> MainWindow::plotsOnScreen() const
     // The standard plots whose docks are shown, then the compared worlds' plots of a lesson
     // step: what the student sees, not the plots the step hides.
     QList<PlotWidget*> plots;
-    for (std::size_t i = 0; i < kPlotNames.size(); ++i)
-        if (!m_layout->dock(QLatin1String(kPlotNames[i].name))->isHidden())
-            plots << m_plots[i];
+    for (PlotWidget* plot : m_plots)
+        if (!m_layout->dock(plot->objectName())->isHidden())
+            plots << plot;
     if (!m_layout->compareDock()->isHidden())
         for (PlotWidget* plot : m_session->comparePlots())
             plots << plot;
@@ -274,6 +279,14 @@ QString MainWindow::openLesson(const QString& path, bool quiet)
 {
     return m_session->openLesson(path, quiet);
 }
+PlotWidget* MainWindow::plot(QStringView name) const
+{
+    for (PlotWidget* plot : m_plots)
+        if (plot->objectName() == name)
+            return plot;
+    return nullptr;
+}
+
 PlotWidget* MainWindow::comparePlot() const
 {
     return m_session->comparePlots().empty() ? nullptr : m_session->comparePlots().front();

@@ -143,8 +143,10 @@ public:
     MeasurementSession& measurement() { return *m_measurement; }
     /// The instruments and graphs of chosen bodies (ui/instruments).
     Instruments& instruments() { return *m_instruments; }
-    PlotWidget* plot(int index) const { return m_plots[static_cast<size_t>(index)]; }
-    static constexpr int kPlotCount = 3;
+    /// The window's own plot by its name in lessons (plot_table.h: "energy"), or nullptr.
+    PlotWidget* plot(QStringView name) const;
+    /// The window's own plots, one per row of the plots' table that is of the main world.
+    const QList<PlotWidget*>& plots() const { return m_plots; }
     QString lastError() const;
     QAction* overlayAction(Overlay overlay) const;
     /// Help › Controls (rich text), from the table that registers the keys (shortcuts.h).
@@ -216,7 +218,7 @@ private:
     SatPanel* m_sat;
     BouncePanel* m_bounces;
     CollisionPanel* m_collision;
-    std::array<PlotWidget*, kPlotCount> m_plots{};
+    QList<PlotWidget*> m_plots;  ///< each named by its row (plot_table.h)
     bool m_closePending = false; ///< asked to close while a dialog's answer was pending
 
     // The parts the window wires together, each with one job.

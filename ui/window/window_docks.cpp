@@ -4,6 +4,7 @@
 
 #include "common/accessible_names.h"
 #include "common/theme.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "window/dock_tabs.h"
 #include "window/window_names.h"
@@ -55,14 +56,14 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
             Qt::RightDockWidgetArea);
     addDock(panelTitle(1, false), QStringLiteral("inspector"), panels.inspector,
             Qt::RightDockWidgetArea);
-    static_assert(kPlotNames.size() == std::tuple_size_v<decltype(panels.plots)>);
-    for (std::size_t i = 0; i < kPlotNames.size(); ++i) {
-        PlotWidget* plot = panels.plots[i];
+    for (PlotWidget* plot : panels.plots) {
+        const PlotRow* row = findPlot(plot->objectName());
+        Q_ASSERT(row); // made by its row (makeWorldPlot)
         // Small enough that the plots fit beside the world on a 1024×768 projector.
         plot->setMinimumSize(180, 150);
         plot->setTitleShown(false); // the dock shows it
-        addDock(windowNameText(kPlotNames[i].shortTitle), QLatin1String(kPlotNames[i].name), plot,
-                Qt::RightDockWidgetArea, windowNameText(kPlotNames[i].title));
+        addDock(plotTitle(*row, false), plot->objectName(), plot, Qt::RightDockWidgetArea,
+                plotTitle(*row));
     }
     addDock(panelTitle(2, false), QStringLiteral("sat"), panels.sat, Qt::RightDockWidgetArea,
             panelTitle(2, true))
@@ -78,7 +79,7 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
             Qt::BottomDockWidgetArea)
         ->hide();
     addDock(panelTitle(5, false), QStringLiteral("measurement"), panels.measurement,
-            Qt::RightDockWidgetArea)
+            Qt::RightDockWidgetArea, QString(), Scrolling::Own)
         ->hide();
     m_compareDock = new QDockWidget(tr("Side by side"), &window);
     m_compareDock->setObjectName(QStringLiteral("compareDock"));
@@ -89,20 +90,20 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
 }
 
 QDockWidget* WindowLayout::addDock(const QString& title, const QString& name, QWidget* w, int area,
-                                   const QString& full)
+                                   const QString& full, Scrolling scrolling)
 {
     auto* dock = new QDockWidget(title, &m_window);
     dock->setObjectName(name + QStringLiteral("Dock"));
     setFullTitle(*dock, full.isEmpty() ? title : full);
-    if (qobject_cast<PlotWidget*>(w)) {
+    // Lists as narrow as a short name: a long entry ("Dormand-Prince 5(4), adaptive") must not
+    // widen the side column on a small projector.
+    for (QComboBox* box : w->findChildren<QComboBox*>()) {
+        box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+        box->setMinimumContentsLength(8);
+    }
+    if (qobject_cast<PlotWidget*>(w) || scrolling == Scrolling::Own) {
         dock->setWidget(w);
     } else {
-        // Lists as narrow as a short name: a long entry ("Dormand-Prince 5(4), adaptive")
-        // must not widen the side column on a small projector.
-        for (QComboBox* box : w->findChildren<QComboBox*>()) {
-            box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-            box->setMinimumContentsLength(8);
-        }
         // A panel taller or wider than its dock scrolls instead of being cut.
         auto* scroll = new QScrollArea(dock);
         scroll->setWidgetResizable(true);
@@ -114,6 +115,12 @@ QDockWidget* WindowLayout::addDock(const QString& title, const QString& name, QW
     m_window.addDockWidget(static_cast<Qt::DockWidgetArea>(area), dock);
     m_docks.insert(name, dock);
     keepFocusInSight(*dock);
+    // Its plots, first seen when its tab comes to the front (a measurement imported), as
+    // tall as every plot shown.
+    connect(dock, &QDockWidget::visibilityChanged, this, [this](bool visible) {
+        if (visible)
+            fitPlotHeightSoon();
+    });
     showWhenAsked(*dock);
     return dock;
 }
@@ -147,8 +154,8 @@ void WindowLayout::showWhenAsked(QDockWidget& dock)
 
 QDockWidget* WindowLayout::dock(const QString& name) const
 {
-    if (name == QLatin1String("compare-energy") || name == QLatin1String("compare-drift"))
-        return m_compareDock;
+    if (const PlotRow* plot = findPlot(name); plot && !plot->inWindow())
+        return m_compareDock; // the compared worlds' plots share one dock
     return m_docks.value(name, nullptr);
 }
 

@@ -13,6 +13,7 @@
 
 #include "panels/error_panel.h"
 #include "plots/plot_shelf.h"
+#include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "window/dock_tabs.h"
 #include "window/window_names.h"
@@ -22,8 +23,11 @@
 #include <QLayout>
 #include <QMainWindow>
 #include <QScreen>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSettings>
 #include <QTabBar>
+#include <QTableWidget>
 #include <QTimer>
 
 #include <qcustomplot.h>
@@ -98,8 +102,9 @@ void WindowLayout::arrangeDocks(const QSize& screen)
 {
     m_compact = screen.width() < kRoomy.width() || screen.height() < kRoomy.height();
     QList<QDockWidget*> plots;
-    for (const PlotNames& plot : kPlotNames)
-        plots << m_docks.value(QLatin1String(plot.name));
+    for (const PlotRow& row : kPlotRows) // the window's own plots, in the table's order
+        if (row.inWindow())
+            plots << m_docks.value(plotName(row));
     plots << m_compareDock;
     // An imported measurement is plotted: its dock shares the plots' place (a lesson step
     // that shows it beside a table keeps the table in sight).
@@ -207,7 +212,30 @@ void WindowLayout::fitSideColumns()
                 }
         shareColumnHeight();
         fitPlotHeight();
+        scrollTablesToData();
     });
+}
+
+void WindowLayout::scrollTablesToData()
+{
+    // A table panel's description above its table may fill a short dock (presentation mode's
+    // type): the dock scrolls so that as much of the table as fits is in sight, its head
+    // first, and the description only as far as room is left.
+    for (const char* name : {"sat", "bounces", "collision"}) {
+        QDockWidget* dock = m_docks.value(QLatin1String(name));
+        auto* scroll = dock ? qobject_cast<QScrollArea*>(dock->widget()) : nullptr;
+        if (!scroll || dock->isHidden() || !scroll->widget())
+            continue;
+        const auto* table = scroll->widget()->findChild<QTableWidget*>();
+        if (!table || !table->isVisible())
+            continue;
+        const int top = table->mapTo(scroll->widget(), QPoint(0, 0)).y();
+        const int bottom = top + table->height();
+        const int needed = std::max(0, bottom - scroll->viewport()->height());
+        QScrollBar* bar = scroll->verticalScrollBar();
+        if (bar->value() < std::min(top, needed))
+            bar->setValue(std::min(top, needed));
+    }
 }
 
 void WindowLayout::fitPlotHeight()
@@ -243,16 +271,21 @@ void WindowLayout::relaxPlotHeights()
         plot->setMinimumHeight(std::min(plot->minimumHeight(), kPlotMinimumHeight));
 }
 
+void WindowLayout::fitPlotHeightSoon()
+{
+    if (m_plotFitPending)
+        return;
+    m_plotFitPending = true;
+    QTimer::singleShot(0, this, [this] {
+        m_plotFitPending = false;
+        fitPlotHeight();
+    });
+}
+
 bool WindowLayout::eventFilter(QObject* watched, QEvent* event)
 {
-    if (event->type() == QEvent::Resize && qobject_cast<PlotWidget*>(watched) &&
-        !m_plotFitPending) {
-        m_plotFitPending = true;
-        QTimer::singleShot(0, this, [this] {
-            m_plotFitPending = false;
-            fitPlotHeight();
-        });
-    }
+    if (event->type() == QEvent::Resize && qobject_cast<PlotWidget*>(watched))
+        fitPlotHeightSoon();
     return QObject::eventFilter(watched, event);
 }
 

@@ -41,12 +41,12 @@ public:
         QWidget* lessonNavigation = nullptr; ///< below the lesson, outside its scrolling
         QWidget* controls = nullptr;
         QWidget* inspector = nullptr;
-        std::array<PlotWidget*, 3> plots{}; ///< in the order of kPlotNames
+        QList<PlotWidget*> plots; ///< each under its object name, its row's (plot_table.h)
         QWidget* sat = nullptr;
         QWidget* bounces = nullptr;
         QWidget* collision = nullptr;
         QWidget* error = nullptr;
-        QWidget* measurement = nullptr; ///< an imported measurement and its fit
+        QWidget* measurement = nullptr; ///< an imported measurement and its fit; scrolls itself
     };
     /// Makes the docks on `window`.
     WindowLayout(QMainWindow& window, const Panels& panels);
@@ -73,6 +73,9 @@ public:
     bool compact() const { return m_compact; }
     /// Side columns no wider than their share of the window's width: the world keeps half.
     void fitSideColumns();
+    /// The plots' least heights again once the layout has settled (several asks, one run):
+    /// a plot's legend took another row, say.
+    void fitPlotHeightSoon();
     void save(QSettings& settings) const;
     void restore(const QSettings& settings);
 
@@ -90,8 +93,11 @@ signals:
     void presentationChanged(bool on);
 
 private:
+    /// Who scrolls a panel taller or wider than its dock: a scroll area the dock puts it in,
+    /// or the panel itself (one that keeps its plots in sight and scrolls only the rest).
+    enum class Scrolling { InDock, Own };
     QDockWidget* addDock(const QString& title, const QString& name, QWidget* w, int area,
-                         const QString& full = QString());
+                         const QString& full = QString(), Scrolling scrolling = Scrolling::InDock);
     void buildLessonDock(const Panels& panels);
     /// Stacked plots on a roomy `screen`, tabbed on a small one.
     void arrangeDocks(const QSize& screen);
@@ -102,6 +108,8 @@ private:
     void shareColumnHeight();
     /// The plots under the world tall enough for a readable data area (a small screen).
     void fitPlotHeight();
+    /// Each table panel shown scrolled to its table, not to the description above it.
+    void scrollTablesToData();
     /// The plots' least heights back to the plain one (until fitPlotHeight() runs again).
     void relaxPlotHeights();
     /// A plot resized: fitPlotHeight() again, once the layout has settled.

@@ -71,19 +71,4 @@ inline QLatin1String lessonOverlayName(Overlay overlay)
     return QLatin1String(name.data(), static_cast<qsizetype>(name.size()));
 }
 
-struct PlotNames {
-    const char* name;       ///< the dock's and the lesson's name
-    const char* title;      ///< the Export menu's entry and the dock's full title, for tr()
-                            ///< ("rigidlab::ui::MainWindow")
-    const char* shortTitle; ///< the dock's title (its tab on a narrow column), likewise
-};
-
-/// The window's standard plots, in the order of MainWindow::plot(index): the first of the
-/// step's plots (common/step_part_names.h).
-inline constexpr std::array<PlotNames, 3> kPlotNames{{
-    {kStepPlotTitles[0].name, kStepPlotTitles[0].title, kStepPlotTitles[0].shortTitle},
-    {kStepPlotTitles[1].name, kStepPlotTitles[1].title, kStepPlotTitles[1].shortTitle},
-    {kStepPlotTitles[2].name, kStepPlotTitles[2].title, kStepPlotTitles[2].shortTitle},
-}};
-
 } // namespace rigidlab::ui

@@ -12,6 +12,8 @@
 #include "format/scene_schema.h"
 #include "run/measurements.h"
 
+#include "rigidlab/physics/overloaded.h"
+
 #include <QCoreApplication>
 #include <QDate>
 #include <QDir>
@@ -20,6 +22,7 @@
 
 #include <cmath>
 #include <memory>
+#include <variant>
 
 namespace rigidlab::ui {
 
@@ -97,12 +100,13 @@ QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& r
 /// The measured value of question q of a step for the key: the one the student's tries were
 /// judged against, else a run without a window.
 std::optional<double> keyValue(const lessons::LessonStep& step, const lessons::Question& q,
+                               const lessons::MeasuredQuestion& measured,
                                const std::vector<lessons::AnswerTry>& tries)
 {
     for (const lessons::AnswerTry& t : tries)
         if (t.measured && !t.ahead)
             return t.measured;
-    return lessons::measureAhead(lessons::askedStep(step, q), q.measure);
+    return lessons::measureAhead(lessons::askedStep(step, q), measured.measure);
 }
 
 class SheetWriter {
@@ -124,11 +128,18 @@ private:
     void writeTitle();
     void writeStep(int index, int& figures);
     void writeQuestion(const lessons::LessonStep& step, int s, int q);
+    /// A measured question's lines to fill in, the value the key accepts or, handed in, its
+    /// tries and the value measured.
+    void writeMeasured(const lessons::LessonStep& step, const lessons::Question& question,
+                       const lessons::MeasuredQuestion& measured,
+                       const std::vector<lessons::AnswerTry>& tries);
     /// A choice question's options (the key marks the right one) and, handed in, its tries.
-    void writeChoice(const lessons::Question& question,
+    void writeChoice(const lessons::Question& question, const lessons::ChoiceQuestion& choice,
                      const std::vector<lessons::AnswerTry>& tries);
-    void writeTries(const lessons::Question& question,
-                    const std::vector<lessons::AnswerTry>& tries);
+    /// The tries with their verdicts, a typed answer in `unit`; the value last measured.
+    std::optional<double> writeTries(const lessons::Question& question,
+                                     const std::vector<lessons::AnswerTry>& tries,
+                                     const QString& unit);
     const std::vector<lessons::AnswerTry>& triesOf(int step, int question) const;
 
     const lessons::Lesson& m_lesson;
@@ -242,70 +253,78 @@ void SheetWriter::writeQuestion(const lessons::LessonStep& step, int s, int q)
     m_pages.keepRoom(m_pages.heightOf(prompt, m_bold) + kQuestionRoom);
     m_pages.text(prompt, m_bold);
     const std::vector<lessons::AnswerTry>& tries = triesOf(s, q);
+    std::visit(physics::Overloaded{[&](const lessons::MeasuredQuestion& measured) {
+                                       writeMeasured(step, question, measured, tries);
+                                   },
+                                   [&](const lessons::ChoiceQuestion& choice) {
+                                       writeChoice(question, choice, tries);
+                                   }},
+               question.kind);
+    m_pages.gap(6);
+}
+
+void SheetWriter::writeMeasured(const lessons::LessonStep& step, const lessons::Question& question,
+                                const lessons::MeasuredQuestion& measured,
+                                const std::vector<lessons::AnswerTry>& tries)
+{
     const int indent = 18;
-    if (question.isChoice()) {
-        writeChoice(question, tries);
-        m_pages.gap(6);
-        return;
-    }
+    const QString& unit = measured.unit;
     switch (m_kind) {
     case WorksheetKind::Empty:
-        m_pages.text(Worksheet::tr("Your prediction (%1):").arg(question.unit), m_pages.baseFont(),
-                     indent);
+        m_pages.text(Worksheet::tr("Your prediction (%1):").arg(unit), m_pages.baseFont(), indent);
         m_pages.writingLines(1, indent);
-        m_pages.text(Worksheet::tr("Measured (%1):").arg(question.unit), m_pages.baseFont(),
-                     indent);
+        m_pages.text(Worksheet::tr("Measured (%1):").arg(unit), m_pages.baseFont(), indent);
         m_pages.writingLines(1, indent);
         break;
     case WorksheetKind::Key: {
-        const std::optional<double> value = keyValue(step, question, tries);
+        const std::optional<double> value = keyValue(step, question, measured, tries);
         if (!value) {
             m_pages.text(Worksheet::tr("Not measured within the step's run."), m_pages.baseFont(),
                          indent);
             break;
         }
-        const double slack = question.tolerance * std::abs(*value) + question.absoluteTolerance;
+        const double slack = measured.tolerance * std::abs(*value) + measured.absoluteTolerance;
         m_pages.text(Worksheet::tr("Measured: %1 (accepted from %2 to %3)")
-                         .arg(quantity(*value, question.unit),
-                              quantity(*value - slack, question.unit),
-                              quantity(*value + slack, question.unit)),
+                         .arg(quantity(*value, unit), quantity(*value - slack, unit),
+                              quantity(*value + slack, unit)),
                      m_pages.baseFont(), indent);
         break;
     }
     case WorksheetKind::Answers:
-        writeTries(question, tries);
+        if (const std::optional<double> value = writeTries(question, tries, unit))
+            m_pages.text(Worksheet::tr("Measured value: %1").arg(quantity(*value, unit)), m_bold,
+                         indent);
         break;
     }
-    m_pages.gap(6);
 }
 
 void SheetWriter::writeChoice(const lessons::Question& question,
+                              const lessons::ChoiceQuestion& choice,
                               const std::vector<lessons::AnswerTry>& tries)
 {
     const int indent = 18;
     // The options to tick by hand; the key marks the right one in bold as well as by its box.
-    for (qsizetype c = 0; c < question.choices.size(); ++c) {
-        const bool right = m_kind == WorksheetKind::Key && c == question.answer;
-        m_pages.text(
-            QStringLiteral("%1 %2").arg(right ? QStringLiteral("[x]") : QStringLiteral("[  ]"),
-                                        question.choices[c]),
-            right ? m_bold : m_pages.baseFont(), indent);
+    for (qsizetype c = 0; c < choice.choices.size(); ++c) {
+        const bool right = m_kind == WorksheetKind::Key && c == choice.answer;
+        m_pages.text(QStringLiteral("%1 %2").arg(
+                         right ? QStringLiteral("[x]") : QStringLiteral("[  ]"), choice.choices[c]),
+                     right ? m_bold : m_pages.baseFont(), indent);
     }
     if (m_kind == WorksheetKind::Key)
-        m_pages.text(
-            Worksheet::tr("Right answer: “%1”").arg(question.choices.value(question.answer)),
-            m_bold, indent);
+        m_pages.text(Worksheet::tr("Right answer: “%1”").arg(choice.choices.value(choice.answer)),
+                     m_bold, indent);
     else if (m_kind == WorksheetKind::Answers)
-        writeTries(question, tries);
+        writeTries(question, tries, QString());
 }
 
-void SheetWriter::writeTries(const lessons::Question& question,
-                             const std::vector<lessons::AnswerTry>& tries)
+std::optional<double> SheetWriter::writeTries(const lessons::Question& question,
+                                              const std::vector<lessons::AnswerTry>& tries,
+                                              const QString& unit)
 {
     const int indent = 18;
     if (tries.empty()) {
         m_pages.text(Worksheet::tr("Not answered."), m_pages.baseFont(), indent);
-        return;
+        return std::nullopt;
     }
     const std::vector<lessons::Verdict> verdicts = judgeTries(question, tries);
     std::optional<double> measured;
@@ -319,7 +338,7 @@ void SheetWriter::writeTries(const lessons::Question& question,
                               : given ? Worksheet::tr("Answer %1").arg(k + 1)
                                       : Worksheet::tr("Show me");
         const QString answer = t.choice   ? QStringLiteral("“%1”").arg(t.choiceText)
-                               : t.answer ? quantity(*t.answer, question.unit)
+                               : t.answer ? quantity(*t.answer, unit)
                                           : Worksheet::tr("(no answer)");
         m_pages.text(
             QStringLiteral("%1: %2 — %3. %4").arg(label, answer, verdictWord(v, !given), v.message),
@@ -327,9 +346,7 @@ void SheetWriter::writeTries(const lessons::Question& question,
         if (v.measured)
             measured = v.value;
     }
-    if (measured && !question.isChoice())
-        m_pages.text(Worksheet::tr("Measured value: %1").arg(quantity(*measured, question.unit)),
-                     m_bold, indent);
+    return measured;
 }
 
 /// `text` in a bidirectional isolate (Unicode's FSI … PDI): a name written right to left
@@ -359,11 +376,8 @@ WorksheetResult writeWorksheet(const lessons::Lesson& lesson, const lessons::Ans
                                WorksheetKind kind, const QString& path)
 {
     WorksheetResult result;
-    std::vector<int> questions;
-    for (const lessons::LessonStep& step : lesson.steps)
-        questions.push_back(static_cast<int>(step.questions.size()));
-    if (const QString bad =
-            lessons::answersMismatch(answers, QFileInfo(lesson.path).fileName(), questions);
+    if (const QString bad = lessons::answersMismatch(answers, QFileInfo(lesson.path).fileName(),
+                                                     lessons::questionCounts(lesson));
         !bad.isEmpty()) {
         result.error =
             Worksheet::tr("%1 does not fit the lesson: %2")

@@ -52,8 +52,8 @@ void integrateDirect(StepContext& ctx)
         symplecticEulerUpdate(h, a, b.velocity, b.position);
         symplecticEulerUpdate(h, alpha, b.angularVelocity, b.angle);
         if (drag != 0.0 && b.isDynamic())
-            dragLoss += drag * (b.mass * v0.dot(0.5 * (v0 + b.velocity)) +
-                                b.inertia * w0 * 0.5 * (w0 + b.angularVelocity));
+            dragLoss +=
+                dragPower(drag, b, v0, w0, 0.5 * (v0 + b.velocity), 0.5 * (w0 + b.angularVelocity));
     }
     ctx.dragLoss += h * dragLoss;
 }

@@ -20,7 +20,8 @@ SoftSolver::ColourKey SoftSolver::colourKey(const Contact& ct, const std::vector
 bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
                                const std::vector<Body>& bodies) const
 {
-    if (contacts.size() != m_keys.size() || bodies.size() != m_keyBodies || m_width != m_keyWidth)
+    if (contacts.size() != m_keys.size() || bodies.size() != m_keyBodies || m_width != m_keyWidth ||
+        m_single != m_keySingle)
         return false;
     for (size_t ci = 0; ci < contacts.size(); ++ci)
         if (!(colourKey(contacts[ci], bodies) == m_keys[ci]))
@@ -34,8 +35,7 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
         // The same contacts between the same bodies: the same colours, blocks and lanes as
         // colouring them again would give; only what the lanes hold has changed.
         for (const Slot& slot : m_slots)
-            fillLane(slot.contact, contacts[static_cast<size_t>(slot.contact)], bodies,
-                     m_blocks[static_cast<size_t>(slot.block)], slot.lane);
+            fillLane(contacts[static_cast<size_t>(slot.contact)], slot.block, slot.lane);
         return;
     }
 
@@ -45,6 +45,7 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
     m_keys.clear();
     m_keyBodies = bodies.size();
     m_keyWidth = m_width;
+    m_keySingle = m_single;
     m_colourMask.assign(bodies.size(), 0);
     m_candidates.clear();
     m_colourOf.clear();
@@ -94,11 +95,7 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
     int blocks = m_overflow;
     for (int c = 0; c < m_colourCount; ++c)
         blocks += (m_colourSize[static_cast<size_t>(c)] + width - 1) / width;
-    m_blocks.assign(static_cast<size_t>(blocks), soft::Block{});
-    const int spare = static_cast<int>(bodies.size());
-    for (soft::Block& k : m_blocks)
-        for (int lane = 0; lane < soft::kBlockWidth; ++lane)
-            k.a[lane] = k.b[lane] = spare;
+    resetBlocks(blocks, static_cast<int>(bodies.size()));
     // First block of each colour, then filled in the contacts' order.
     std::vector<int>& next = m_nextBlock;
     std::vector<int>& lane = m_nextLane;
@@ -129,8 +126,7 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
             slot.block = overflowBlock++;
             slot.lane = 0;
         }
-        fillLane(ci, contacts[static_cast<size_t>(ci)], bodies,
-                 m_blocks[static_cast<size_t>(slot.block)], slot.lane);
+        fillLane(contacts[static_cast<size_t>(ci)], slot.block, slot.lane);
         m_slots.push_back(slot);
     }
 }

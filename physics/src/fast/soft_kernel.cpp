@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The soft step's contact passes over blocks of lanes (soft_kernel.h), written once with the
-// compiler's vector types (GCC and Clang) for RIGIDLAB_SOFT_WIDTH lanes of doubles. Compiled
-// as it is for two lanes, and by soft_kernel_avx2.cpp for four lanes with AVX2.
+// compiler's vector types (GCC and Clang) for RIGIDLAB_SOFT_WIDTH lanes of RIGIDLAB_SOFT_REAL
+// (double unless said). Compiled as it is for two lanes of doubles, by soft_kernel_avx2.cpp for
+// four lanes with AVX2, and by soft_kernel_single*.cpp for four and eight lanes of floats.
 //
 // Per lane and point, with the normal n from A to B, the tangent t = (n.y, -n.x), the lever
 // arms rA, rB and the relative velocity dv = vB + wB x rB - vA - wA x rA (Catto, "Solver2D",
@@ -21,22 +22,30 @@
 #define RIGIDLAB_SOFT_WIDTH 2
 #define RIGIDLAB_SOFT_NAMESPACE lanes2
 #endif
+#ifndef RIGIDLAB_SOFT_REAL
+#define RIGIDLAB_SOFT_REAL double
+#endif
 
 namespace rigidlab::physics::soft {
 namespace RIGIDLAB_SOFT_NAMESPACE {
 namespace {
 
 constexpr int W = RIGIDLAB_SOFT_WIDTH;
-using V = double __attribute__((vector_size(W * sizeof(double))));
+using Real = RIGIDLAB_SOFT_REAL;
+using V = Real __attribute__((vector_size(W * sizeof(Real))));
+/// The blocks and bodies of this precision (soft_kernel.h).
+using Block = BlockOf<Real, sizeof(Real) == sizeof(double) ? kBlockWidth : kSingleBlockWidth>;
+using BodyState = typename Block::State;
+using PointLanes = PointLanesOf<Real, Block::kWidth>;
 
 // The kernel leans on no library (see soft_kernel.h): loads, stores and selections by hand.
-inline V load(const double* p)
+inline V load(const Real* p)
 {
     V v;
     __builtin_memcpy(&v, p, sizeof(V));
     return v;
 }
-inline void store(double* p, const V& v)
+inline void store(Real* p, const V& v)
 {
     __builtin_memcpy(p, &v, sizeof(V));
 }
@@ -44,7 +53,7 @@ inline V splat(double x)
 {
     V v;
     for (int i = 0; i < W; ++i)
-        v[i] = x;
+        v[i] = static_cast<Real>(x);
     return v;
 }
 inline V vmax(const V& a, const V& b)
@@ -75,9 +84,28 @@ struct Motion {
 inline void transpose(const int* index, const BodyState* bodies, int offset, V (&out)[4])
 {
     const auto field = [&](int lane) {
-        return reinterpret_cast<const double*>(&bodies[index[lane]]) + offset;
+        return reinterpret_cast<const Real*>(&bodies[index[lane]]) + offset;
     };
-#if RIGIDLAB_SOFT_WIDTH == 4
+#if RIGIDLAB_SOFT_WIDTH == 8
+    // Eight rows of four floats: rows i and i + 4 side by side in one register, then the
+    // four-row transpose within each 128-bit half.
+    using R = Real __attribute__((vector_size(4 * sizeof(Real))));
+    const auto rows = [&](int i) {
+        R lo, hi;
+        __builtin_memcpy(&lo, field(i), sizeof(R));
+        __builtin_memcpy(&hi, field(i + 4), sizeof(R));
+        return V(__builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7));
+    };
+    const V c0 = rows(0), c1 = rows(1), c2 = rows(2), c3 = rows(3);
+    const V t0 = __builtin_shufflevector(c0, c1, 0, 8, 1, 9, 4, 12, 5, 13);
+    const V t1 = __builtin_shufflevector(c0, c1, 2, 10, 3, 11, 6, 14, 7, 15);
+    const V t2 = __builtin_shufflevector(c2, c3, 0, 8, 1, 9, 4, 12, 5, 13);
+    const V t3 = __builtin_shufflevector(c2, c3, 2, 10, 3, 11, 6, 14, 7, 15);
+    out[0] = __builtin_shufflevector(t0, t2, 0, 1, 8, 9, 4, 5, 12, 13);
+    out[1] = __builtin_shufflevector(t0, t2, 2, 3, 10, 11, 6, 7, 14, 15);
+    out[2] = __builtin_shufflevector(t1, t3, 0, 1, 8, 9, 4, 5, 12, 13);
+    out[3] = __builtin_shufflevector(t1, t3, 2, 3, 10, 11, 6, 7, 14, 15);
+#elif RIGIDLAB_SOFT_WIDTH == 4
     // Rows r_i = body i's four fields; unpack pairs of rows, then swap the 128-bit halves.
     const V r0 = load(field(0)), r1 = load(field(1)), r2 = load(field(2)), r3 = load(field(3));
     const V t0 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);
@@ -88,7 +116,7 @@ inline void transpose(const int* index, const BodyState* bodies, int offset, V (
     out[1] = __builtin_shufflevector(t1, t3, 0, 1, 4, 5);
     out[2] = __builtin_shufflevector(t0, t2, 2, 3, 6, 7);
     out[3] = __builtin_shufflevector(t1, t3, 2, 3, 6, 7);
-#elif RIGIDLAB_SOFT_WIDTH == 2
+#elif RIGIDLAB_SOFT_WIDTH == 2 && !RIGIDLAB_SOFT_SINGLE
     const V a0 = load(field(0)), a1 = load(field(0) + 2);
     const V b0 = load(field(1)), b1 = load(field(1) + 2);
     out[0] = __builtin_shufflevector(a0, b0, 0, 2);
@@ -105,9 +133,9 @@ inline void transpose(const int* index, const BodyState* bodies, int offset, V (
 inline Side gather(const int* index, const BodyState* bodies)
 {
     static_assert(__builtin_offsetof(BodyState, vx) == 0 &&
-                  __builtin_offsetof(BodyState, vy) == sizeof(double) &&
-                  __builtin_offsetof(BodyState, w) == 2 * sizeof(double) &&
-                  __builtin_offsetof(BodyState, invMass) == 3 * sizeof(double));
+                  __builtin_offsetof(BodyState, vy) == sizeof(Real) &&
+                  __builtin_offsetof(BodyState, w) == 2 * sizeof(Real) &&
+                  __builtin_offsetof(BodyState, invMass) == 3 * sizeof(Real));
     V f[4];
     transpose(index, bodies, 0, f);
     return {f[0], f[1], f[2], f[3]};
@@ -119,8 +147,23 @@ inline void scatter(const int* index, BodyState* bodies, const Side& s)
     // or the spare body of an empty lane) may stand in several lanes: each writes back the
     // velocity it read, since its inverse mass is 0. The rows are the gather's transposed
     // back, the inverse mass with them as it was read.
-    const auto row = [&](int lane) { return reinterpret_cast<double*>(&bodies[index[lane]]); };
-#if RIGIDLAB_SOFT_WIDTH == 4
+    const auto row = [&](int lane) { return reinterpret_cast<Real*>(&bodies[index[lane]]); };
+#if RIGIDLAB_SOFT_WIDTH == 8
+    using R = Real __attribute__((vector_size(4 * sizeof(Real))));
+    const auto put = [&](int lane, const R& r) { __builtin_memcpy(row(lane), &r, sizeof(R)); };
+    const V u0 = __builtin_shufflevector(s.vx, s.vy, 0, 8, 1, 9, 4, 12, 5, 13);
+    const V u1 = __builtin_shufflevector(s.vx, s.vy, 2, 10, 3, 11, 6, 14, 7, 15);
+    const V u2 = __builtin_shufflevector(s.w, s.m, 0, 8, 1, 9, 4, 12, 5, 13);
+    const V u3 = __builtin_shufflevector(s.w, s.m, 2, 10, 3, 11, 6, 14, 7, 15);
+    put(0, __builtin_shufflevector(u0, u2, 0, 1, 8, 9));
+    put(1, __builtin_shufflevector(u0, u2, 2, 3, 10, 11));
+    put(2, __builtin_shufflevector(u1, u3, 0, 1, 8, 9));
+    put(3, __builtin_shufflevector(u1, u3, 2, 3, 10, 11));
+    put(4, __builtin_shufflevector(u0, u2, 4, 5, 12, 13));
+    put(5, __builtin_shufflevector(u0, u2, 6, 7, 14, 15));
+    put(6, __builtin_shufflevector(u1, u3, 4, 5, 12, 13));
+    put(7, __builtin_shufflevector(u1, u3, 6, 7, 14, 15));
+#elif RIGIDLAB_SOFT_WIDTH == 4
     const V t0 = __builtin_shufflevector(s.vx, s.vy, 0, 4, 2, 6);
     const V t1 = __builtin_shufflevector(s.vx, s.vy, 1, 5, 3, 7);
     const V t2 = __builtin_shufflevector(s.w, s.m, 0, 4, 2, 6);
@@ -129,14 +172,14 @@ inline void scatter(const int* index, BodyState* bodies, const Side& s)
     store(row(1), __builtin_shufflevector(t1, t3, 0, 1, 4, 5));
     store(row(2), __builtin_shufflevector(t0, t2, 2, 3, 6, 7));
     store(row(3), __builtin_shufflevector(t1, t3, 2, 3, 6, 7));
-#elif RIGIDLAB_SOFT_WIDTH == 2
+#elif RIGIDLAB_SOFT_WIDTH == 2 && !RIGIDLAB_SOFT_SINGLE
     store(row(0), __builtin_shufflevector(s.vx, s.vy, 0, 2));
     store(row(0) + 2, __builtin_shufflevector(s.w, s.m, 0, 2));
     store(row(1), __builtin_shufflevector(s.vx, s.vy, 1, 3));
     store(row(1) + 2, __builtin_shufflevector(s.w, s.m, 1, 3));
 #else
     for (int i = 0; i < W; ++i) {
-        double* b = row(i);
+        Real* b = row(i);
         b[0] = s.vx[i];
         b[1] = s.vy[i];
         b[2] = s.w[i];
@@ -147,13 +190,12 @@ inline void scatter(const int* index, BodyState* bodies, const Side& s)
 
 inline Motion gatherMotion(const Block& k, const BodyState* bodies)
 {
-    constexpr int kOffset = __builtin_offsetof(BodyState, dpx) / sizeof(double);
-    static_assert(__builtin_offsetof(BodyState, dpy) ==
-                      __builtin_offsetof(BodyState, dpx) + sizeof(double) &&
-                  __builtin_offsetof(BodyState, qc) ==
-                      __builtin_offsetof(BodyState, dpx) + 2 * sizeof(double) &&
-                  __builtin_offsetof(BodyState, qs) ==
-                      __builtin_offsetof(BodyState, dpx) + 3 * sizeof(double));
+    constexpr int kOffset = __builtin_offsetof(BodyState, dpx) / sizeof(Real);
+    static_assert(
+        __builtin_offsetof(BodyState, dpy) == __builtin_offsetof(BodyState, dpx) + sizeof(Real) &&
+        __builtin_offsetof(BodyState, qc) ==
+            __builtin_offsetof(BodyState, dpx) + 2 * sizeof(Real) &&
+        __builtin_offsetof(BodyState, qs) == __builtin_offsetof(BodyState, dpx) + 3 * sizeof(Real));
     V a[4], b[4];
     transpose(k.a, bodies, kOffset, a);
     transpose(k.b, bodies, kOffset, b);
@@ -286,16 +328,17 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
 } // namespace
 } // namespace RIGIDLAB_SOFT_NAMESPACE
 
-#if RIGIDLAB_SOFT_WIDTH == 2
+#if defined(RIGIDLAB_SOFT_KERNEL)
+// The kernel's name and width, from the file that compiles this one again.
+RIGIDLAB_SOFT_KERNEL
+{
+    return {RIGIDLAB_SOFT_NAMESPACE::warmStartBlocks, RIGIDLAB_SOFT_NAMESPACE::solveBlocks,
+            RIGIDLAB_SOFT_WIDTH, RIGIDLAB_SOFT_NAME};
+}
+#else
 Kernel kernel2()
 {
     return {lanes2::warmStartBlocks, lanes2::solveBlocks, 2, "2 lanes"};
-}
-#else
-Kernel kernel4Avx2()
-{
-    return {RIGIDLAB_SOFT_NAMESPACE::warmStartBlocks, RIGIDLAB_SOFT_NAMESPACE::solveBlocks, 4,
-            "4 lanes, AVX2"};
 }
 #endif
 

@@ -8,54 +8,69 @@
 // The kernel then solves the lanes of a block side by side, in SIMD registers of doubles:
 // two lanes (SSE2, every x86-64) or four (AVX2, chosen at run time where the processor has
 // it). Since the lanes of a block touch distinct moving bodies, the result of a lane does not
-// depend on its neighbours: both widths give the same bits.
+// depend on its neighbours: both widths give the same bits. With
+// SoftStepSettings::singlePrecision the same passes run on floats (Box2D v3's choice): four
+// lanes (SSE2) or eight (AVX2), again the same bits at either width, but not the bits of
+// double precision.
 //
 // This header and soft_kernel.cpp include nothing but plain C++ types: soft_kernel.cpp is
-// compiled twice (soft_kernel_avx2.cpp with -mavx2), and an inline function shared with the
+// compiled four times (soft_kernel_avx2.cpp with -mavx2, soft_kernel_single.cpp and
+// again soft_kernel_avx2.cpp in single precision), and an inline function shared with the
 // rest of the engine (Eigen's, the standard library's) could otherwise be taken by the linker
 // from the AVX2 copy and run on a processor without it.
 
 namespace rigidlab::physics::soft {
 
-/// Lanes stored per block: the widest kernel's.
+/// Lanes stored per block: the widest kernel's (four doubles or eight floats in AVX2).
 inline constexpr int kBlockWidth = 4;
+inline constexpr int kSingleBlockWidth = 8;
 
-/// One body as the kernel sees it. Velocities change in the kernel; the displacement and
-/// rotation are written by the substep's integration of positions (soft_solver.cpp).
-struct alignas(64) BodyState {
-    double vx = 0, vy = 0; ///< velocity of the centre of mass [m/s]
-    double w = 0;          ///< angular velocity [rad/s]
+/// One body as the kernel sees it, in double precision (BodyState) or single
+/// (SingleBodyState, SoftStepSettings::singlePrecision). Velocities change in the kernel; the
+/// displacement and rotation are written by the substep's integration of positions
+/// (soft_solver.cpp).
+template <typename Real> struct alignas(8 * sizeof(Real)) BodyStateOf {
+    Real vx = 0, vy = 0; ///< velocity of the centre of mass [m/s]
+    Real w = 0;          ///< angular velocity [rad/s]
     /// 1 / mass [1/kg], 0 for a body the step does not move: loaded with the velocity as one
     /// vector, so that the blocks need not carry it per lane.
-    double invMass = 0;
-    double dpx = 0, dpy = 0; ///< displacement of the centre of mass since the step began [m]
-    double qc = 1, qs = 0;   ///< cos and sin of the rotation since the step began
+    Real invMass = 0;
+    Real dpx = 0, dpy = 0; ///< displacement of the centre of mass since the step began [m]
+    Real qc = 1, qs = 0;   ///< cos and sin of the rotation since the step began
 };
 
 /// One point of each lane's manifold. A manifold with one point leaves the second's masses 0,
 /// which makes its impulses 0.
-struct alignas(32) PointLanes {
-    double rAx[kBlockWidth]{}, rAy[kBlockWidth]{}; ///< lever arm from A's centre [m]
-    double rBx[kBlockWidth]{}, rBy[kBlockWidth]{}; ///< lever arm from B's centre [m]
+template <typename Real, int Width> struct alignas(32) PointLanesOf {
+    Real rAx[Width]{}, rAy[Width]{}; ///< lever arm from A's centre [m]
+    Real rBx[Width]{}, rBy[Width]{}; ///< lever arm from B's centre [m]
     /// The separation with the lever arms' share taken off: the separation now is
     /// n . (dpB + qB rB - dpA - qA rA) + base [m].
-    double base[kBlockWidth]{};
-    double normalMass[kBlockWidth]{};     ///< 1 / K along the normal [kg]
-    double tangentMass[kBlockWidth]{};    ///< 1 / K along the tangent [kg]
-    double normalImpulse[kBlockWidth]{};  ///< accumulated within a substep [N s]
-    double tangentImpulse[kBlockWidth]{}; ///< accumulated within a substep [N s]
+    Real base[Width]{};
+    Real normalMass[Width]{};     ///< 1 / K along the normal [kg]
+    Real tangentMass[Width]{};    ///< 1 / K along the tangent [kg]
+    Real normalImpulse[Width]{};  ///< accumulated within a substep [N s]
+    Real tangentImpulse[Width]{}; ///< accumulated within a substep [N s]
 };
 
-/// A block's lanes. The inverse masses are the bodies' (BodyState::invMass), and the soft
+/// A block's lanes. The inverse masses are the bodies' (BodyStateOf::invMass), and the soft
 /// coefficients the pass's (PassSettings): the blocks are streamed through memory in every
 /// pass, and on a large pile they no longer fit in the cache.
-struct alignas(32) Block {
-    int a[kBlockWidth]{}, b[kBlockWidth]{}; ///< body indices; empty lanes use the spare body
-    double invIA[kBlockWidth]{}, invIB[kBlockWidth]{}; ///< 0 for a body the step does not move
-    double nx[kBlockWidth]{}, ny[kBlockWidth]{};       ///< unit normal from A to B
-    double friction[kBlockWidth]{};
-    PointLanes p[2];
+template <typename Real, int Width> struct alignas(32) BlockOf {
+    using State = BodyStateOf<Real>;
+    static constexpr int kWidth = Width;
+    int a[Width]{}, b[Width]{};          ///< body indices; empty lanes use the spare body
+    Real invIA[Width]{}, invIB[Width]{}; ///< 0 for a body the step does not move
+    Real nx[Width]{}, ny[Width]{};       ///< unit normal from A to B
+    Real friction[Width]{};
+    PointLanesOf<Real, Width> p[2];
 };
+
+using BodyState = BodyStateOf<double>;
+using Block = BlockOf<double, kBlockWidth>;
+/// Single precision: half the bytes per lane, twice the lanes per register.
+using SingleBodyState = BodyStateOf<float>;
+using SingleBlock = BlockOf<float, kSingleBlockWidth>;
 
 /// The soft constraint's coefficients for one substep (soft_solver.cpp).
 struct Softness {
@@ -76,19 +91,26 @@ struct PassSettings {
 };
 
 /// The kernel's passes over blocks [0, count), in order.
-struct Kernel {
+template <typename BlockType> struct KernelOf {
+    using State = typename BlockType::State;
     /// Applies the accumulated impulses (warm start).
-    void (*warmStart)(Block* blocks, int count, BodyState* bodies);
+    void (*warmStart)(BlockType* blocks, int count, State* bodies);
     /// One pass of normal and friction impulses, soft with bias or rigid without (relax).
-    void (*solve)(Block* blocks, int count, BodyState* bodies, const PassSettings& s);
+    void (*solve)(BlockType* blocks, int count, State* bodies, const PassSettings& s);
     int width; ///< lanes solved together
     const char* name;
 };
+using Kernel = KernelOf<Block>;
+using SingleKernel = KernelOf<SingleBlock>;
 
 /// The two-lane kernel (SSE2 on x86-64, the compiler's vectors elsewhere).
 Kernel kernel2();
 /// The four-lane kernel compiled for AVX2 (x86-64 only; nullptr elsewhere).
 Kernel kernel4Avx2();
+/// The same passes in single precision: four lanes (SSE2), and eight compiled for AVX2
+/// (x86-64 only; nullptr elsewhere).
+SingleKernel singleKernel4();
+SingleKernel singleKernel8Avx2();
 /// Whether the four-lane AVX2 kernel can run here.
 bool haveAvx2();
 

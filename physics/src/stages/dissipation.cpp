@@ -125,8 +125,8 @@ Dissipation Dynamics::dissipation(const Eigen::VectorXd& q, const Eigen::VectorX
             if (!b.isActive())
                 continue;
             const Eigen::Index i = 3 * static_cast<Eigen::Index>(m_slot[id]);
-            p.drag += m_field.drag * (b.mass * (v[i] * u[i] + v[i + 1] * u[i + 1]) +
-                                      b.inertia * v[i + 2] * u[i + 2]);
+            p.drag += dragPower(m_field.drag, b, Vec2(v[i], v[i + 1]), v[i + 2],
+                                Vec2(u[i], u[i + 1]), u[i + 2]);
         }
     }
     // Dampers: c dL/dt along n, the force on A being +c dL/dt n (see forces.cpp); its power on

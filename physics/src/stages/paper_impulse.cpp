@@ -36,7 +36,8 @@ void ContactSolver::solveSeed()
             // approaches only now (a ball struck into its touching neighbour) bounces too.
             double target = 0.0;
             if (p.bounces) {
-                p.bias = std::max(p.bias - c.restitution * (vn - p.vnPrepared), p.speculative);
+                p.bias =
+                    std::max(p.bias + rebound(vn - p.vnPrepared, c.restitution), p.speculative);
             } else if (bounceTarget(c, i, a, b, target)) {
                 p.bias = target;
                 p.bounces = true;

@@ -52,12 +52,22 @@ inline double impactFraction(double separation, double vn, double dt)
     return f < 1.0 ? f : 1.0;
 }
 
+/// The bounce itself: the normal velocity [m/s] that an approach vn [m/s] leaves with at the
+/// impact, for the restitution e (Newton's law of restitution). Every solver's bounce is
+/// this one expression: the impulse solvers' target (bounceVelocity), its update when other
+/// impulses changed the approach (paper_impulse.cpp), and the soft step's isolated impact
+/// (soft_impacts.cpp).
+inline double rebound(double vn, double e)
+{
+    return -e * vn;
+}
+
 /// The normal velocity after a bounce [m/s] (see above): vn the approach now, e the
 /// restitution, f the fraction of the step at the impact, forcing what the forces of the
 /// whole step added to vn (0 for a contact touching at the start).
 inline double bounceVelocity(double vn, double e, double f, double forcing)
 {
-    return -e * vn + (1.0 + e) * (1.0 - f) * forcing;
+    return rebound(vn, e) + (1.0 + e) * (1.0 - f) * forcing;
 }
 
 /// Where a body's centre of mass was at the fraction f of the step [m], from where it ends

@@ -26,6 +26,7 @@
 
 #include "rigidlab/physics/world.h"
 
+#include "restitution.h"
 #include "stages.h"
 
 #include <algorithm>
@@ -242,7 +243,7 @@ bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, Flown
         r.tangentMass =
             1.0 / (A.invMass + B.invMass + A.invInertia * rtA * rtA + B.invInertia * rtB * rtB);
         const double vn = approach(va, vb, cp.point, cA, cB, n);
-        r.target = vn < 0.0 ? -ct.restitution * vn : 0.0;
+        r.target = vn < 0.0 ? rebound(vn, ct.restitution) : 0.0;
         if (i == deepest(m) && !(vn < -threshold))
             return false; // too slow to be an impact: the substeps' contact rests it
     }

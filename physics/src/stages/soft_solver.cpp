@@ -27,6 +27,7 @@
 #include <bit>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 namespace rigidlab::physics {
 
@@ -67,19 +68,23 @@ void softContactCoefficients(const SoftStepSettings& settings, double h, Softnes
 
 void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                        const std::vector<Vec2>& acceleration,
-                       const std::vector<double>& angularAcceleration, double h,
+                       const std::vector<double>& angularAcceleration, const Substeps& substeps,
                        const Softness (&softness)[2], const SoftStepSettings& settings, bool plain)
 {
     m_contacts = &contacts;
     m_settings = settings;
     m_energyValid = false;
-    m_substep = h;
+    m_substeps = substeps;
     // The plain path solves one contact per block (the second lane of the two-lane kernel
     // empty), in the colours' order: the order the wide kernels solve them in, so the same
     // bits. The fast path fills every lane, four where the processor has AVX2.
     static const bool wide = soft::haveAvx2() && soft::kernel4Avx2().solve != nullptr;
+    static const bool wideSingle = soft::haveAvx2() && soft::singleKernel8Avx2().solve != nullptr;
     m_kernel = wide && settings.wideKernel && !plain ? soft::kernel4Avx2() : soft::kernel2();
-    m_width = plain ? 1 : m_kernel.width;
+    m_singleKernel = wideSingle && settings.wideKernel && !plain ? soft::singleKernel8Avx2()
+                                                                 : soft::singleKernel4();
+    m_single = settings.singlePrecision;
+    m_width = plain ? 1 : m_single ? m_singleKernel.width : m_kernel.width;
     m_plain = plain;
     m_pass.maxPushSpeed = settings.maxPushSpeed;
     m_pass.softness[0] = softness[0];
@@ -119,19 +124,56 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
             m_kinematic.push_back(static_cast<int>(i));
         }
     }
+    if (m_single) {
+        m_singleState.resize(n + 1);
+        for (size_t i = 0; i <= n; ++i) {
+            const soft::BodyState& d = m_state[i];
+            m_singleState[i] = {static_cast<float>(d.vx),
+                                static_cast<float>(d.vy),
+                                static_cast<float>(d.w),
+                                static_cast<float>(d.invMass),
+                                0.0f,
+                                0.0f,
+                                1.0f,
+                                0.0f};
+        }
+    }
     buildBlocks(contacts, bodies);
 }
 
-void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector<Body>& bodies,
-                          soft::Block& k, int lane)
+void SoftSolver::resetBlocks(int count, int spare)
 {
-    (void)contactIndex;
-    const Body& a = bodies[static_cast<size_t>(ct.a)];
-    const Body& b = bodies[static_cast<size_t>(ct.b)];
-    // The inverse masses are the bodies' own (BodyState::invMass, set in begin()).
-    const double mA = m_state[static_cast<size_t>(ct.a)].invMass;
-    const double mB = m_state[static_cast<size_t>(ct.b)].invMass;
-    const double iA = a.isActive() ? a.invInertia : 0.0, iB = b.isActive() ? b.invInertia : 0.0;
+    const auto reset = [&](auto& blocks) {
+        using BlockType = typename std::remove_reference_t<decltype(blocks)>::value_type;
+        blocks.assign(static_cast<size_t>(count), BlockType{});
+        for (BlockType& k : blocks)
+            for (int lane = 0; lane < BlockType::kWidth; ++lane)
+                k.a[lane] = k.b[lane] = spare;
+    };
+    if (m_single)
+        reset(m_singleBlocks);
+    else
+        reset(m_blocks);
+}
+
+void SoftSolver::fillLane(const Contact& ct, int block, int lane)
+{
+    if (m_single)
+        fillLaneOf(ct, m_singleBlocks[static_cast<size_t>(block)], lane);
+    else
+        fillLaneOf(ct, m_blocks[static_cast<size_t>(block)], lane);
+}
+
+template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, BlockType& k, int lane)
+{
+    // The bodies as begin() took them (inverse masses and inertias, 0 for a body the step does
+    // not move; centres of mass), without reaching into the bodies again: the lanes are filled
+    // in the colours' order, and the bodies' large records would be read out of order.
+    const auto ia = static_cast<size_t>(ct.a), ib = static_cast<size_t>(ct.b);
+    const double mA = m_state[ia].invMass, mB = m_state[ib].invMass;
+    const double iA = m_invInertia[ia], iB = m_invInertia[ib];
+    const Vec2& centreA = m_position[ia];
+    const Vec2& centreB = m_position[ib];
     const auto l = static_cast<size_t>(lane);
     k.a[l] = ct.a;
     k.b[l] = ct.b;
@@ -142,12 +184,12 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
     k.ny[l] = n.y();
     k.friction[l] = ct.friction;
 
-    const double substeps = m_settings.substeps;
+    const double substeps = m_substeps.count;
     for (int i = 0; i < ct.manifold.pointCount; ++i) {
         const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
-        soft::PointLanes& p = k.p[i];
+        auto& p = k.p[i];
         // Lever arms from the centres of mass where the narrow phase found the contact.
-        const Vec2 rA = cp.point - a.position, rB = cp.point - b.position;
+        const Vec2 rA = cp.point - centreA, rB = cp.point - centreB;
         p.rAx[l] = rA.x();
         p.rAy[l] = rA.y();
         p.rBx[l] = rB.x();
@@ -167,21 +209,29 @@ void SoftSolver::fillLane(int contactIndex, const Contact& ct, const std::vector
     // A point the manifold lacks: zero masses, so zero impulses (a block filled again may
     // hold last step's second point here).
     for (int i = ct.manifold.pointCount; i < 2; ++i) {
-        soft::PointLanes& p = k.p[i];
-        for (double* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
-                              p.normalImpulse, p.tangentImpulse})
+        auto& p = k.p[i];
+        for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
+                            p.normalImpulse, p.tangentImpulse})
             field[l] = 0.0;
     }
 }
 
 void SoftSolver::integrateVelocities()
 {
+    if (m_single)
+        integrateVelocitiesOf(m_singleState);
+    else
+        integrateVelocitiesOf(m_state);
+}
+
+template <typename State> void SoftSolver::integrateVelocitiesOf(std::vector<State>& state)
+{
     // The energy sums of the new velocities in the same pass (the same arithmetic, in the
     // same order, as sumEnergy()): soft_step.cpp asks for them next.
-    const double h = m_substep;
+    const double h = m_substeps.h;
     double e = 0.0, p = 0.0;
     for (size_t k = 0; k < m_moving.size(); ++k) {
-        soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
+        State& s = state[static_cast<size_t>(m_moving[k])];
         const Vec2& a = m_acceleration[k];
         const double alpha = m_angularAcceleration[k];
         s.vx += h * a.x();
@@ -204,7 +254,11 @@ void SoftSolver::setDrift(const std::vector<Vec2>& drift, const std::vector<doub
 void SoftSolver::warmStart()
 {
     m_energyValid = false;
-    m_kernel.warmStart(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data());
+    if (m_single)
+        m_singleKernel.warmStart(m_singleBlocks.data(), static_cast<int>(m_singleBlocks.size()),
+                                 m_singleState.data());
+    else
+        m_kernel.warmStart(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data());
     if (!m_pins.empty())
         warmStartPins();
 }
@@ -216,21 +270,33 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
     // look-ahead t is as good as 0, so that no gap asks anything of the velocities. 1e-200 s
     // keeps s / t finite for any gap and any mass.
     constexpr double kNoLookAhead = 1e200; // [1/s]
-    m_pass.inverseSubstep = lookAhead ? 1.0 / m_substep : kNoLookAhead;
+    m_pass.inverseSubstep = lookAhead ? m_substeps.invH : kNoLookAhead;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
-    m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
+    if (m_single)
+        m_singleKernel.solve(m_singleBlocks.data(), static_cast<int>(m_singleBlocks.size()),
+                             m_singleState.data(), m_pass);
+    else
+        m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
     if (!m_pins.empty())
         solvePins(useBias);
 }
 
 void SoftSolver::integratePositions()
 {
-    const double h = m_substep;
+    if (m_single)
+        integratePositionsOf(m_singleState);
+    else
+        integratePositionsOf(m_state);
+}
+
+template <typename State> void SoftSolver::integratePositionsOf(std::vector<State>& state)
+{
+    const double h = m_substeps.h;
     const bool drifts = !m_drift.empty();
     auto move = [&](int id) {
         const auto i = static_cast<size_t>(id);
-        soft::BodyState& s = m_state[i];
+        State& s = state[i];
         double dx = h * s.vx, dy = h * s.vy, da = h * s.w;
         if (drifts) {
             dx += h * m_drift[i].x();
@@ -256,9 +322,17 @@ void SoftSolver::integratePositions()
 
 void SoftSolver::sumEnergy() const
 {
+    if (m_single)
+        sumEnergyOf(m_singleState);
+    else
+        sumEnergyOf(m_state);
+}
+
+template <typename State> void SoftSolver::sumEnergyOf(const std::vector<State>& state) const
+{
     double e = 0.0, p = 0.0;
     for (size_t k = 0; k < m_moving.size(); ++k) {
-        const soft::BodyState& s = m_state[static_cast<size_t>(m_moving[k])];
+        const State& s = state[static_cast<size_t>(m_moving[k])];
         e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
         p += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
              m_inertia[k] * m_angularAcceleration[k] * s.w;
@@ -284,10 +358,20 @@ double SoftSolver::loadPower() const
 
 void SoftSolver::end(std::vector<Body>& bodies)
 {
+    if (m_single)
+        endOf(bodies, m_singleState, m_singleBlocks);
+    else
+        endOf(bodies, m_state, m_blocks);
+}
+
+template <typename State, typename BlockType>
+void SoftSolver::endOf(std::vector<Body>& bodies, const std::vector<State>& state,
+                       const std::vector<BlockType>& blocks)
+{
     auto write = [&](int id) {
         const auto i = static_cast<size_t>(id);
         Body& b = bodies[i];
-        const soft::BodyState& s = m_state[i];
+        const State& s = state[i];
         b.velocity = Vec2(s.vx, s.vy);
         b.angularVelocity = s.w;
         b.position = m_position[i];
@@ -297,10 +381,10 @@ void SoftSolver::end(std::vector<Body>& bodies)
         write(id);
     for (int id : m_kinematic)
         write(id);
-    const double substeps = m_settings.substeps;
+    const double substeps = m_substeps.count;
     for (const Slot& slot : m_slots) {
         Contact& ct = (*m_contacts)[static_cast<size_t>(slot.contact)];
-        const soft::Block& k = m_blocks[static_cast<size_t>(slot.block)];
+        const BlockType& k = blocks[static_cast<size_t>(slot.block)];
         const auto l = static_cast<size_t>(slot.lane);
         for (int i = 0; i < ct.manifold.pointCount; ++i) {
             ct.normalImpulse[static_cast<size_t>(i)] = substeps * k.p[i].normalImpulse[l];

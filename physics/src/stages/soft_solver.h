@@ -23,15 +23,22 @@ using soft::Softness;
 /// against a body that does not move [1] (twice the frequency).
 void softContactCoefficients(const SoftStepSettings& settings, double h, Softness (&out)[2]);
 
+/// The step's substeps, as the step context has them (StepContext::substeps, h, invH).
+struct Substeps {
+    int count = 1;   ///< substeps per step
+    double h = 0;    ///< the substep [s]
+    double invH = 0; ///< 1 / h [1/s]
+};
+
 class SoftSolver {
 public:
     /// Takes this step's contacts and bodies, before anything moved. acceleration and
     /// angularAcceleration: each body's applied load over its mass, constant over the step.
-    /// h: the substep [s]; softness: the contact's coefficients at it
-    /// (softContactCoefficients). plain: colour anew and solve one contact per block.
+    /// substeps: the step's, from its context; softness: the contact's coefficients at the
+    /// substep (softContactCoefficients). plain: colour anew and solve one contact per block.
     void begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
                const std::vector<Vec2>& acceleration,
-               const std::vector<double>& angularAcceleration, double h,
+               const std::vector<double>& angularAcceleration, const Substeps& substeps,
                const Softness (&softness)[2], const SoftStepSettings& settings, bool plain);
 
     /// The smooth motion's share of each body's displacement that the velocities do not carry
@@ -89,8 +96,19 @@ private:
     /// in the same order, the same bodies and lanes (a pile at rest, step after step). Then
     /// the blocks only need their lanes filled again.
     bool sameColouring(const std::vector<Contact>& contacts, const std::vector<Body>& bodies) const;
-    void fillLane(int contactIndex, const Contact& ct, const std::vector<Body>& bodies,
-                  soft::Block& block, int lane);
+    /// Fills lane `lane` of block `block` (of m_blocks, or m_singleBlocks when m_single) with
+    /// the contact ct, from the bodies as begin() took them.
+    void fillLane(const Contact& ct, int block, int lane);
+    /// Empty blocks for the colouring, every lane on the spare body.
+    void resetBlocks(int count, int spare);
+    // The passes over the bodies and blocks of either precision (soft_solver.cpp).
+    template <typename BlockType> void fillLaneOf(const Contact& ct, BlockType& k, int lane);
+    template <typename State> void integrateVelocitiesOf(std::vector<State>& state);
+    template <typename State> void integratePositionsOf(std::vector<State>& state);
+    template <typename State> void sumEnergyOf(const std::vector<State>& state) const;
+    template <typename State, typename BlockType>
+    void endOf(std::vector<Body>& bodies, const std::vector<State>& state,
+               const std::vector<BlockType>& blocks);
     /// A pin as the substeps see it (soft_pins.cpp): its bodies (-1 for the world), its anchors
     /// from the centres of mass in the bodies' frames (the world point for the world), and its
     /// accumulated impulse in a substep [N s], on B (-impulse on A).
@@ -120,20 +138,23 @@ private:
 
     std::vector<Contact>* m_contacts = nullptr;
     SoftStepSettings m_settings;
-    double m_substep = 0; ///< [s]
+    Substeps m_substeps;
     soft::Kernel m_kernel{};
-    int m_width = 1;      ///< lanes filled per block: the kernel's, 1 on the plain path
-    bool m_plain = false; ///< the plain path: no colouring kept from step to step
+    soft::SingleKernel m_singleKernel{};
+    int m_width = 1;       ///< lanes filled per block: the kernel's, 1 on the plain path
+    bool m_plain = false;  ///< the plain path: no colouring kept from step to step
+    bool m_single = false; ///< the contact passes in single precision (m_single* below)
     soft::PassSettings m_pass;
 
-    std::vector<soft::BodyState> m_state;      ///< per body, and a spare one for empty lanes
-    std::vector<int> m_moving;                 ///< awake dynamic bodies
-    std::vector<int> m_kinematic;              ///< kinematic bodies
-    std::vector<Vec2> m_position;              ///< centre of mass [m], per body
-    std::vector<double> m_angle;               ///< [rad], per body
-    std::vector<Vec2> m_acceleration;          ///< per moving body [m/s^2]
-    std::vector<double> m_angularAcceleration; ///< per moving body [rad/s^2]
-    std::vector<double> m_mass, m_inertia;     ///< per moving body
+    std::vector<soft::BodyState> m_state;             ///< per body, and a spare one for empty lanes
+    std::vector<soft::SingleBodyState> m_singleState; ///< the same, when m_single
+    std::vector<int> m_moving;                        ///< awake dynamic bodies
+    std::vector<int> m_kinematic;                     ///< kinematic bodies
+    std::vector<Vec2> m_position;                     ///< centre of mass [m], per body
+    std::vector<double> m_angle;                      ///< [rad], per body
+    std::vector<Vec2> m_acceleration;                 ///< per moving body [m/s^2]
+    std::vector<double> m_angularAcceleration;        ///< per moving body [rad/s^2]
+    std::vector<double> m_mass, m_inertia;            ///< per moving body
 
     std::vector<Vec2> m_drift;          ///< per body, empty: none (setDrift())
     std::vector<double> m_angularDrift; ///< per body
@@ -141,6 +162,7 @@ private:
     std::vector<double> m_invInertia; ///< per body, 0 for a body the step does not move
 
     std::vector<soft::Block> m_blocks;
+    std::vector<soft::SingleBlock> m_singleBlocks; ///< instead of m_blocks when m_single
     std::vector<Slot> m_slots;
     std::vector<std::uint64_t> m_colourMask; ///< per body: colours of its contacts
     std::vector<int> m_colourOf;             ///< per candidate contact, -1 overflow
@@ -152,6 +174,7 @@ private:
     std::vector<ColourKey> m_keys; ///< per contact, of the colouring in m_blocks
     size_t m_keyBodies = 0;        ///< the body count of that colouring
     int m_keyWidth = 0;            ///< the kernel width of that colouring
+    bool m_keySingle = false;      ///< the precision of that colouring
 };
 
 } // namespace rigidlab::physics

@@ -224,7 +224,7 @@ double softForces(StepContext& ctx)
     StageTimer forces(ctx.profile, Stage::Forces);
     s.acceleration.resize(n);
     s.angularAcceleration.resize(n);
-    double dragPower = 0.0; // at the start of the step [W]
+    double power = 0.0; // drag's, at the start of the step [W]
     s.anyRestitution = false;
     for (size_t i = 0; i < n; ++i) {
         const Body& b = ctx.bodies[i];
@@ -235,12 +235,12 @@ double softForces(StepContext& ctx)
         s.acceleration[i] = a.linear;
         s.angularAcceleration[i] = a.angular;
         if (ctx.field.drag != 0.0)
-            dragPower += ctx.field.drag * (b.mass * b.velocity.squaredNorm() +
-                                           b.inertia * b.angularVelocity * b.angularVelocity);
+            power += dragPower(ctx.field.drag, b, b.velocity, b.angularVelocity, b.velocity,
+                               b.angularVelocity);
     }
     ++ctx.evaluations;
     ctx.profile.directIntegration = true;
-    return dragPower;
+    return power;
 }
 
 /// Stage::Forces and Stage::Integration of the soft step with smooth forces the substeps do
@@ -404,24 +404,26 @@ void softStep(StepContext& ctx)
         }
         return;
     }
-    double dragPower = 0.0; // at the start of the step [W]; the integrator counts its own
+    double dragAtStart = 0.0; // at the start of the step [W]; the integrator counts its own
     if (ctx.plan.smooth)
         softSmoothMotion(ctx);
     else
-        dragPower = softForces(ctx);
+        dragAtStart = softForces(ctx);
 
     SoftSolver& solver = s.softSolver;
-    const SoftStepSettings& settings = ctx.contactSettings.soft;
+    const bool pinned = touchedJoints(ctx);
+    SoftStepSettings settings = ctx.contactSettings.soft;
+    settings.singlePrecision = settings.singlePrecision && !pinned; // the pins are in double
     double loss = 0.0;
     {
         StageTimer timer(ctx.profile, Stage::ContactSolve);
         loss += softCollisions(ctx, ctx.restitutionThreshold);
-        solver.begin(ctx.contacts, ctx.bodies, s.acceleration, s.angularAcceleration, ctx.h,
-                     ctx.softness, settings, ctx.plain);
+        solver.begin(ctx.contacts, ctx.bodies, s.acceleration, s.angularAcceleration,
+                     {.count = ctx.substeps, .h = ctx.h, .invH = ctx.invH}, ctx.softness, settings,
+                     ctx.plain);
         if (ctx.plan.smooth)
             solver.setDrift(s.drift, s.angularDrift);
     }
-    const bool pinned = touchedJoints(ctx);
     if (pinned)
         solver.setPins(s.touchedJoints, ctx.bodies);
     loss += softSubsteps(ctx, solver.constraintCount() > 0 || pinned);
@@ -449,7 +451,7 @@ void softStep(StepContext& ctx)
         sweepBackBullets(ctx);
     }
     ctx.collisionLoss += loss;
-    ctx.dragLoss += h * dragPower;
+    ctx.dragLoss += h * dragAtStart;
     ctx.profile.solved = solver.constraintCount();
     ctx.profile.positionPasses = 0;
 }

@@ -194,28 +194,11 @@ inline void withState(StepContext& ctx, Fn&& fn, const std::vector<PinJointDef>*
 {
     Eigen::VectorXd& q = ctx.scratch.q;
     Eigen::VectorXd& v = ctx.scratch.v;
-    const Eigen::Index n = 3 * static_cast<Eigen::Index>(ctx.moving.size());
-    q.resize(n);
-    v.resize(n);
-    for (size_t s = 0; s < ctx.moving.size(); ++s) {
-        const Body& b = ctx.bodies[static_cast<size_t>(ctx.moving[s])];
-        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
-        q.segment<3>(i) << b.position.x(), b.position.y(), b.angle;
-        v.segment<3>(i) << b.velocity.x(), b.velocity.y(), b.angularVelocity;
-    }
+    gatherState(ctx.bodies, ctx.moving, q, v);
     Dynamics dynamics(ctx.field, ctx.bodies, ctx.slot, ctx.springs, joints ? *joints : ctx.joints);
     fn(dynamics, q, v);
     ctx.evaluations += dynamics.evaluations;
-    for (size_t s = 0; s < ctx.moving.size(); ++s) {
-        Body& b = ctx.bodies[static_cast<size_t>(ctx.moving[s])];
-        if (b.isDynamic() && !b.awake)
-            continue; // asleep: it does not move, whatever the integrator made of it
-        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
-        b.position = Vec2(q[i], q[i + 1]);
-        b.angle = q[i + 2];
-        b.velocity = Vec2(v[i], v[i + 1]);
-        b.angularVelocity = v[i + 2];
-    }
+    scatterState(q, v, ctx.moving, Sleepers::Keep, ctx.bodies);
 }
 
 } // namespace rigidlab::physics

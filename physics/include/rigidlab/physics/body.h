@@ -31,6 +31,14 @@ struct BodyDef {
     bool collide = true;          ///< false: passes through everything
 };
 
+/// A BodyDef's restitution or friction as the body gets it: its own, or the world's when it
+/// has none (< 0). World::addBody and every reader of a scene that predicts the body's motion
+/// resolve it here.
+inline double resolvedMaterial(double own, double world)
+{
+    return own >= 0 ? own : world;
+}
+
 /// A body as the world keeps it. The state is held at the centre of mass.
 struct Body {
     std::string name;

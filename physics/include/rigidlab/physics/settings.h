@@ -66,6 +66,12 @@ struct SoftStepSettings {
     /// The four-lane AVX2 kernel where the processor has it; false: the two-lane one. Both
     /// give the same bits (soft_kernel.h).
     bool wideKernel = true;
+    /// The contact passes (warm start, soft solve, relax) in single precision: eight lanes
+    /// with AVX2, four without, half the bytes per contact (Box2D v3's choice). Off: every
+    /// golden hash and exactness test is the double-precision step's. The collision phase, the
+    /// isolated impacts, the positions and the energy books stay in double either way; a
+    /// world whose contacts touch a pin joint solves in double.
+    bool singlePrecision = false;
 };
 
 /// Tuning of contacts that a scene does not set (Box2D's choices, in metres).

@@ -2,7 +2,8 @@
 #pragma once
 // Private: the world's bodies and force elements seen as one ODE system over the state
 // (q, v) of the moving bodies. forces.cpp gives the applied forces, joints.cpp the exact
-// constraint forces of the pin joints and the projections that remove drift after a step.
+// constraint forces of the pin joints and the projections that remove drift after a step,
+// dissipation.cpp what drag and the dampers take.
 
 #include "rigidlab/physics/body.h"
 #include "rigidlab/physics/forces.h"
@@ -57,6 +58,54 @@ inline AppliedLoad appliedLoad(const ForceField& field, const Body& b, const Vec
         load.torque -= field.drag * b.inertia * w;
     }
     return load;
+}
+
+/// The power linear drag takes from body b [W] when the drag acts at its velocities (v, w) and
+/// the body moves at (u, uw): -(F . u + M uw) with F = -drag m v and M = -drag I w. The force
+/// sum's accounting (dissipation.cpp), the direct integration and the soft step all count
+/// drag through this one function, so that they take the same bits from the same motion.
+inline double dragPower(double drag, const Body& b, const Vec2& v, double w, const Vec2& u,
+                        double uw)
+{
+    return drag * (b.mass * (v.x() * u.x() + v.y() * u.y()) + b.inertia * w * uw);
+}
+
+/// The moving bodies' state as the ODE vectors: (x, y, angle) and (vx, vy, w) of each body of
+/// `moving`, in that order. World::getState and the stages' withState (step_context.h) both
+/// gather it here.
+inline void gatherState(const std::vector<Body>& bodies, const std::vector<BodyId>& moving,
+                        Eigen::VectorXd& q, Eigen::VectorXd& v)
+{
+    const Eigen::Index n = 3 * static_cast<Eigen::Index>(moving.size());
+    q.resize(n);
+    v.resize(n);
+    for (size_t s = 0; s < moving.size(); ++s) {
+        const Body& b = bodies[static_cast<size_t>(moving[s])];
+        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
+        q.segment<3>(i) << b.position.x(), b.position.y(), b.angle;
+        v.segment<3>(i) << b.velocity.x(), b.velocity.y(), b.angularVelocity;
+    }
+}
+
+/// Whether scatterState writes the state of a dynamic body asleep too.
+enum class Sleepers { Write, Keep };
+/// Writes the ODE vectors back onto the bodies of `moving` (gatherState's inverse). A step
+/// keeps a sleeper's state (Sleepers::Keep): it does not move, whatever the integrator made
+/// of it; World::setState writes every body.
+inline void scatterState(const Eigen::VectorXd& q, const Eigen::VectorXd& v,
+                         const std::vector<BodyId>& moving, Sleepers sleepers,
+                         std::vector<Body>& bodies)
+{
+    for (size_t s = 0; s < moving.size(); ++s) {
+        Body& b = bodies[static_cast<size_t>(moving[s])];
+        if (sleepers == Sleepers::Keep && b.isDynamic() && !b.awake)
+            continue;
+        const Eigen::Index i = 3 * static_cast<Eigen::Index>(s);
+        b.position = Vec2(q[i], q[i + 1]);
+        b.angle = q[i + 2];
+        b.velocity = Vec2(v[i], v[i + 1]);
+        b.angularVelocity = v[i + 2];
+    }
 }
 
 /// A body's acceleration from its applied load at its own velocities: (0 + F) / m [m/s^2] and

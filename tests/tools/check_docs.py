@@ -1,0 +1,114 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: GPL-3.0-or-later
+"""The user's documents hold together: the English manual (docs/manual.md), its Czech
+translation (docs/manual.cs.md), both READMEs and docs/accessibility.md.
+
+- Every relative link names a file that exists, and every #anchor names a heading of the file
+  it points into (GitHub's heading anchors: lower case, punctuation dropped, spaces to '-').
+- The two manuals link to each other, and each README to the manual in its language.
+- The Czech manual has the English one's sections: the same sequence of heading levels.
+- Every key the English manual names (F6, Ctrl+Shift+S, Alt+Up, …) appears in the Czech one,
+  and every key of the English Keys table in the Czech Keys table (Space is "Mezerník" there,
+  as the Czech window writes it). Alt with a single letter is a menu or field mnemonic,
+  which differs between the languages, so it is not compared.
+
+Exit 0 when everything holds; otherwise one line per finding and exit 1.
+
+usage: check_docs.py SOURCE_DIR
+"""
+import re
+import sys
+from pathlib import Path
+
+DOCUMENTS = ["docs/manual.md", "docs/manual.cs.md", "README.md", "README.cs.md",
+             "docs/accessibility.md"]
+LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
+KEY = re.compile(r"(?<![\w+])((?:(?:Ctrl|Shift|Alt)\+)+(?:F\d{1,2}|[A-Z]\b|Up|Down|Left|Right|"
+                 r"Del|PgUp|PgDown|Backspace|Space)|F\d{1,2}\b)")
+# The Czech window's names of keys that Qt translates (Help › Controls shows them so).
+CZECH_KEY_NAMES = {"Space": "Mezerník"}
+
+
+def prose(text):
+    """The text without fenced code blocks, where '#' starts a shell comment, not a heading."""
+    return re.sub(r"^```.*?^```", "", text, flags=re.S | re.M)
+
+
+def headings(text):
+    return [(len(m.group(1)), m.group(2).strip())
+            for m in re.finditer(r"^(#{1,6}) +(.+)$", prose(text), re.M)]
+
+
+def slug(title):
+    title = re.sub(r"[`*]", "", title).lower()
+    return re.sub(r"[^\w\- ]", "", title).replace(" ", "-")
+
+
+def check_links(root, name, text, problems):
+    for target in LINK.findall(prose(text)):
+        if re.match(r"[a-z]+:", target):
+            continue  # a web address or mailto: not checked offline
+        path, _, anchor = target.partition("#")
+        file = (root / name).parent / path if path else root / name
+        if not file.exists():
+            problems.append(f"{name}: link to {target}: no such file")
+            continue
+        if anchor and file.suffix == ".md":
+            slugs = {slug(t) for _, t in headings(file.read_text(encoding="utf-8"))}
+            if anchor not in slugs:
+                problems.append(f"{name}: link to {target}: no heading with that anchor")
+
+
+def keys_table(text):
+    """The first column of the table under the '## Keys' (or '## Klávesy') heading."""
+    section = re.search(r"^## (?:Keys|Klávesy)\n(.*?)(?=^## )", text, re.S | re.M)
+    if not section:
+        return ""
+    return "\n".join(line.split("|")[1] for line in section.group(1).splitlines()
+                     if line.startswith("|") and "---" not in line)
+
+
+def table_keys(column):
+    words = set(re.findall(r"(?:(?:Ctrl|Shift|Alt)\+)*[^\s/()]+", column))
+    return {w for w in words if w not in {"or", "nebo", "key", "klávesa"}}
+
+
+def check_keys(english, czech, problems):
+    def named(text):
+        return {k for k in KEY.findall(text) if not re.fullmatch(r"Alt\+[A-Z]", k)}
+
+    for key in sorted(named(english) - named(czech)):
+        problems.append(f"docs/manual.cs.md: the key {key} of the English manual is not named")
+    english_table, czech_table = table_keys(keys_table(english)), table_keys(keys_table(czech))
+    if not english_table:
+        problems.append("docs/manual.md: no Keys table found")
+    for key in sorted(english_table):
+        if CZECH_KEY_NAMES.get(key, key) not in czech_table:
+            problems.append(f"docs/manual.cs.md: the Keys table lacks {key}")
+
+
+def main(root):
+    root = Path(root)
+    texts = {name: (root / name).read_text(encoding="utf-8") for name in DOCUMENTS}
+    problems = []
+    for name, text in texts.items():
+        check_links(root, name, text, problems)
+    for name, target in [("docs/manual.md", "manual.cs.md"), ("docs/manual.cs.md", "manual.md"),
+                         ("README.md", "docs/manual.md"), ("README.cs.md", "docs/manual.cs.md")]:
+        if f"]({target}" not in texts[name]:
+            problems.append(f"{name}: no link to {target}")
+    english, czech = texts["docs/manual.md"], texts["docs/manual.cs.md"]
+    levels_en = [level for level, _ in headings(english)]
+    levels_cs = [level for level, _ in headings(czech)]
+    if levels_en != levels_cs:
+        problems.append(f"docs/manual.cs.md: heading levels {levels_cs} differ from the English "
+                        f"manual's {levels_en}")
+    check_keys(english, czech, problems)
+    for line in problems:
+        print(line)
+    print(f"{len(problems)} problem(s) in {len(texts)} documents")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1]))
