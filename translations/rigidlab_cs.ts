@@ -3913,6 +3913,13 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::JobProgress</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Zrušit</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::LessonDraft</name>
     <message>
         <source>Step 1</source>
@@ -4180,6 +4187,18 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>⚠ %1: not written yet; the student reads the %2 text</source>
         <translation>⚠ %1: zatím nenapsáno; žák čte text v jazyce %2</translation>
+    </message>
+    <message>
+        <source>Checking the steps&apos; scenes</source>
+        <translation>Kontrola scén kroků</translation>
+    </message>
+    <message>
+        <source>Cancel checking the steps&apos; scenes</source>
+        <translation>Zrušit kontrolu scén kroků</translation>
+    </message>
+    <message>
+        <source>The steps&apos; scenes were not checked: the checks were cancelled.</source>
+        <translation>Scény kroků nebyly zkontrolovány: kontrola byla zrušena.</translation>
     </message>
 </context>
 <context>
