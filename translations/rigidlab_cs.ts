@@ -5491,7 +5491,7 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
     <message>
         <source>Stu&amp;dent sets first</source>
-        <translation>Žá&amp;k nejdřív nastaví</translation>
+        <translation>Žák m&amp;usí nejdřív nastavit</translation>
     </message>
     <message>
         <source>Option %1</source>
