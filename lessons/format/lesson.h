@@ -27,7 +27,7 @@
 namespace rigidlab::lessons {
 
 /// The names a lesson step may list (lessons/LESSON_FORMAT.md), in one place: the loader checks
-/// steps against them and the window's table (ui/window/window_names.h) takes its lesson names
+/// steps against them and the plots' table (ui/plots/plot_table.h) takes its row names
 /// from them, in the same order.
 inline constexpr std::array<std::string_view, 5> kStepPlotNames{"energy", "momentum", "drift",
                                                                 "compare-energy", "compare-drift"};

@@ -32,7 +32,6 @@ public:
     void moveOption(int by);
 
     QTableWidget* table() const { return m_table; }
-    QComboBox* rightOption() const { return m_right; }
 
 signals:
     /// The teacher changed an option, their order or the right one: applyTo() has it.

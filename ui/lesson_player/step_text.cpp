@@ -83,7 +83,6 @@ void StepText::fit()
     option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
     document()->setDefaultTextOption(option);
     const QList<QTextTable*> tables = tablesOf(*document());
-    m_tableScale = 1.0;
     for (QTextTable* table : tables) {
         // As wide as the column at most, with thin cells.
         QTextTableFormat format = table->format();
@@ -101,7 +100,6 @@ void StepText::fit()
     const double base = font().pointSizeF();
     document()->setTextWidth(width);
     for (const double scale : std::array{1.0, 0.9, 0.8, 0.7}) {
-        m_tableScale = scale;
         if (scale < 1.0) {
             for (QTextTable* table : tables) {
                 QTextCursor cursor = table->firstCursorPosition();

@@ -18,8 +18,6 @@ public:
     void showMarkdown(const QString& markdown);
     /// The accessible name while no text is shown; with a text, the text is its name.
     void setNameWhenEmpty(const QString& name);
-    /// The scale of the tables' text that made them fit (1 when they fit as they are).
-    double tableScale() const { return m_tableScale; }
 
     bool hasHeightForWidth() const override { return true; }
     int heightForWidth(int width) const override;
@@ -38,7 +36,6 @@ private:
 
     QString m_markdown;
     QString m_nameWhenEmpty;
-    double m_tableScale = 1.0;
     int m_fittedWidth = -1; ///< viewport width of the last fit() [px]
 };
 

@@ -89,7 +89,6 @@ public:
     void cancelFit();
     bool fitRunning() const;
     const measure::FitResult& lastFit() const { return m_fit; }
-    const std::vector<measure::Parameter>& fittedParameters() const { return m_fitted; }
     /// Puts the fitted values into the scene, one undoable edit; returns the refusal or empty.
     QString apply();
     /// e from the bounce times, when the measurement has them.

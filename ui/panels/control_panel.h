@@ -32,7 +32,6 @@ class ControlPanel : public QWidget {
 public:
     explicit ControlPanel(SimulationController& controller, QWidget* parent = nullptr);
 
-    NumberField* iterationsField() const { return m_iterations; }
     NumberField* restitutionField() const { return m_restitution; }
     NumberField* frictionField() const { return m_friction; }
     QCheckBox* gravityBox() const { return m_gravity; }

@@ -42,7 +42,6 @@ public:
     physics::World restore(long long step) const;
     /// The input logged for the step that leads to `step + 1`, or nullptr.
     const UserInput* inputFor(long long step) const;
-    std::size_t snapshotCount() const { return m_snapshots.size(); }
     /// The most the snapshots may take [bytes]; the oldest go first when it shrinks.
     void setBudget(std::size_t bytes);
     std::size_t budget() const { return m_budget; }
