@@ -338,24 +338,16 @@ const std::vector<double>& ContactSolver::impactFractions()
     // A body bounced by every contact that pushed it moved freely until its earliest impact;
     // any contact that pushed it without a bounce (resting) makes it 0. The paper's impulses
     // are its bounces; the sequential solver's bounces are its collision phase's.
-    // In the soft step's collision phase (m_softPhase) a bounce timed at the very end of the
-    // step (f = 1: the approach at the start would not have closed the gap, the forces of the
-    // step close it) is placed there. Taken for "untouched", it moved the body by a whole step
-    // of its bounce from where it started: at dt = 0.2 s a ball dropped from 2 m rose to 6 m.
-    // The other solvers keep their bits (their golden runs).
-    constexpr double kUntouched = 2.0; // beyond any fraction of the step
-    m_impact.assign(m_bodies->size(), kUntouched);
+    m_impact.assign(m_bodies->size(), 1.0);
     for (const Constraint& c : m_constraints) {
         for (int i = 0; i < c.count; ++i) {
             const Point& p = c.p[i];
-            if (!(p.bounceImpulse > 0) && !(p.normalImpulse > 0))
-                continue;
             double at = 1.0;
             if (p.bounceImpulse > 0)
                 at = p.impact;
             if (p.normalImpulse > 0)
                 at = std::min(at, m_paperImpulse ? p.impact : 0.0);
-            if (at == 1.0 && !m_softPhase)
+            if (at == 1.0)
                 continue;
             for (int id : {c.a, c.b}) {
                 double& f = m_impact[static_cast<size_t>(id)];
@@ -364,7 +356,7 @@ const std::vector<double>& ContactSolver::impactFractions()
         }
     }
     for (double& f : m_impact)
-        if (f == kUntouched)
+        if (f == 1.0)
             f = 0.0; // untouched: no velocity change to place
     return m_impact;
 }
