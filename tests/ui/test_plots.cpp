@@ -144,6 +144,12 @@ void TestPlots::tableRowsMakeTheirPlots()
         const QString name = plotName(row);
         QCOMPARE(findPlot(name), &row);
         QVERIFY2(!plotTitle(row).isEmpty() && !plotTitle(row, false).isEmpty(), qPrintable(name));
+        // A row says once how its plot is made: a quantity, or make, or makeCompared. (Checked
+        // here, not by a static_assert: with the sanitizers on, GCC does not take a function's
+        // address as a constant.)
+        const bool quantity = row.quantity && row.unit && row.sample;
+        QVERIFY2(int(quantity) + int(row.make != nullptr) + int(row.makeCompared != nullptr) == 1,
+                 qPrintable(name));
         if (!row.inWindow())
             continue;
         ++windowRows;

@@ -28,20 +28,6 @@ constexpr bool namesInFormatOrder()
 // The lesson loader admits the names of lessons::kStepPlotNames: a row for each, in order.
 static_assert(namesInFormatOrder(), "one plot row for each of lessons::kStepPlotNames");
 
-constexpr bool eachMadeOneWay()
-{
-    for (const PlotRow& row : kPlotRows) {
-        const bool quantity = row.quantity && row.unit && row.sample;
-        if ((quantity ? 1 : 0) + (row.make ? 1 : 0) + (row.makeCompared ? 1 : 0) != 1)
-            return false;
-        if (!row.title || !row.shortTitle)
-            return false;
-    }
-    return true;
-}
-// A row says how its plot is made once: a quantity, or make, or makeCompared; and its titles.
-static_assert(eachMadeOneWay(), "a plot row gives its titles and one way to make the plot");
-
 QString translated(const char* text)
 {
     return QCoreApplication::translate("rigidlab::ui::MainWindow", text);
