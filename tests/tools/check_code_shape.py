@@ -224,17 +224,8 @@ ONE_HOME = [
 
 def rules_restated(root, files):
     """(path, line number, rule) of each physics rule written outside its home (ONE_HOME)."""
-    out = []
-    for f in files:
-        rel = f.relative_to(root).as_posix()
-        if rel.split("/")[0] not in PRODUCTION:
-            continue
-        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
-            code = line.split("//")[0]
-            for rule, home, pattern in ONE_HOME:
-                if rel != home and pattern.search(code):
-                    out.append((rel, number, rule, home))
-    return out
+    return [(rel, number, rule, home) for rel, number, code in production_code(root, files, set())
+            for rule, home, pattern in ONE_HOME if rel != home and pattern.search(code)]
 
 
 # The plots' table (ui/plots/plot_table.h): the window, the lesson steps, the exports, the CLI
@@ -273,16 +264,10 @@ QUESTION_KIND_FLAG = re.compile(
 
 def question_kind_flags(root, files):
     """A finding for each test of a question's kind by a flag in production code."""
-    out = []
-    for f in files:
-        rel = f.relative_to(root).as_posix()
-        if rel.split("/")[0] not in PRODUCTION:
-            continue
-        for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
-            if QUESTION_KIND_FLAG.search(line.split("//")[0]):
-                out.append(f"{rel}:{number}: a question's kind tested by a flag; visit "
-                           f"Question::kind (lessons/format/lesson.h) with one case per kind")
-    return out
+    return [f"{rel}:{number}: a question's kind tested by a flag; visit Question::kind "
+            f"(lessons/format/lesson.h) with one case per kind"
+            for rel, number, code in production_code(root, files, set())
+            if QUESTION_KIND_FLAG.search(code)]
 
 
 LESSON_SCHEMA = "lessons/format/lesson_schema.h"
