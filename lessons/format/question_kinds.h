@@ -6,6 +6,7 @@
 
 #include "format/question_kinds/choice.h"
 #include "format/question_kinds/measured.h"
+#include "format/question_kinds/number_given.h"
 
 #include <variant>
 
@@ -13,6 +14,6 @@ namespace rigidlab::lessons {
 
 /// A question's kind: its type, and what a question of it holds besides every question's prompt,
 /// hint and holdBack. The first is the kind of a question that holds no other kind's key.
-using QuestionKind = std::variant<MeasuredQuestion, ChoiceQuestion>;
+using QuestionKind = std::variant<MeasuredQuestion, ChoiceQuestion, NumberGivenQuestion>;
 
 } // namespace rigidlab::lessons

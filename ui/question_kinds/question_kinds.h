@@ -6,3 +6,4 @@
 // lines and page by its type; a kind of lessons::QuestionKind missing here does not compile.
 
 #include "question_kinds/kind_ui.h"
+#include "question_kinds/number_given.h"
