@@ -5233,6 +5233,17 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::PlotExporter</name>
+    <message>
+        <source>Export plot</source>
+        <translation>Exportovat graf</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export se nezdařil</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::PlotWidget</name>
     <message>
         <source>Export as PNG…</source>
@@ -5261,14 +5272,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Whole run</source>
         <translation>Celý běh</translation>
-    </message>
-    <message>
-        <source>Export plot</source>
-        <translation>Exportovat graf</translation>
-    </message>
-    <message>
-        <source>Export failed</source>
-        <translation>Export se nezdařil</translation>
     </message>
     <message>
         <source>time t [s]</source>

@@ -14,6 +14,7 @@
 #include "panels/inspector_panel.h"
 #include "plots/column_graph.h"
 #include "plots/plot_accessible.h"
+#include "plots/plot_exporter.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/scene_narrator.h"
@@ -113,7 +114,7 @@ private slots:
             unnamed = unnamedInteractive(*dialog, &interactive);
             dialog->reject();
         });
-        w.plot(u"energy")->exportInteractively(ui::ExportFormat::Png);
+        w.plot(u"energy")->exporter().exportInteractively(ui::ExportFormat::Png);
         QVERIFY(seen);
         QVERIFY2(unnamed.isEmpty(), qPrintable(unnamed.join(QLatin1Char('\n'))));
         QVERIFY(interactive > 5);
@@ -331,8 +332,8 @@ private slots:
         QCOMPARE(text, ui::describePlot(*energy));
         QVERIFY2(text.contains(QLatin1String("[s]")) && text.contains(QLatin1String("[J]")),
                  qPrintable(text));
-        for (int i = 0; i < energy->seriesCount(); ++i)
-            QVERIFY2(text.contains(energy->seriesLegend(i) + QLatin1String(": now")),
+        for (int i = 0; i < energy->model().seriesCount(); ++i)
+            QVERIFY2(text.contains(energy->model().seriesLegend(i) + QLatin1String(": now")),
                      qPrintable(text));
         QVERIFY2(text.contains(QLatin1String("greatest")), qPrintable(text));
     }
@@ -516,19 +517,21 @@ private slots:
     {
         MainWindow w;
         for (ui::PlotWidget* plot : w.plots()) {
-            for (int i = 0; i < plot->seriesCount(); ++i)
+            for (int i = 0; i < plot->model().seriesCount(); ++i)
                 for (int j = 0; j < i; ++j) {
-                    QVERIFY2(plot->graph(i)->pen().style() != plot->graph(j)->pen().style(),
-                             qPrintable(plot->title() +
-                                        QStringLiteral(": %1 and %2 have one line style")
-                                            .arg(plot->seriesName(i), plot->seriesName(j))));
-                    QVERIFY2(plot->graph(i)->scatterStyle().shape() !=
-                                 plot->graph(j)->scatterStyle().shape(),
-                             qPrintable(plot->title() +
-                                        QStringLiteral(": %1 and %2 have one marker")
-                                            .arg(plot->seriesName(i), plot->seriesName(j))));
+                    QVERIFY2(
+                        plot->graph(i)->pen().style() != plot->graph(j)->pen().style(),
+                        qPrintable(plot->title() + QStringLiteral(": %1 and %2 have one line style")
+                                                       .arg(plot->model().seriesName(i),
+                                                            plot->model().seriesName(j))));
+                    QVERIFY2(
+                        plot->graph(i)->scatterStyle().shape() !=
+                            plot->graph(j)->scatterStyle().shape(),
+                        qPrintable(plot->title() + QStringLiteral(": %1 and %2 have one marker")
+                                                       .arg(plot->model().seriesName(i),
+                                                            plot->model().seriesName(j))));
                 }
-            for (int i = 0; i < plot->seriesCount(); ++i)
+            for (int i = 0; i < plot->model().seriesCount(); ++i)
                 QVERIFY(!plot->graph(i)->scatterStyle().isNone());
         }
     }

@@ -71,7 +71,7 @@ std::vector<std::vector<double>> markTimes(MainWindow& w)
     std::vector<std::vector<double>> out;
     for (auto* plot : w.plots()) {
         std::vector<double> times;
-        for (int i = 0; i < plot->markCount(); ++i)
+        for (int i = 0; i < plot->model().markCount(); ++i)
             times.push_back(plot->markLabel(i)->position->key());
         out.push_back(times);
     }
@@ -387,7 +387,7 @@ private slots:
         QCOMPARE(czech->controller().world().def().restitution, 0.3);
         QCOMPARE(czech->controller().currentStep(), 25);
         QVERIFY(bodyCoordinates(*czech) == bodies);
-        QCOMPARE(czech->plot(u"energy")->markCount(), 0);
+        QCOMPARE(czech->plot(u"energy")->model().markCount(), 0);
         delete czech;
     }
 

@@ -55,7 +55,7 @@ QString markTexts(MainWindow& w)
 {
     QStringList texts;
     for (const ui::PlotWidget* plot : w.findChildren<ui::PlotWidget*>())
-        for (int i = 0; i < plot->markCount(); ++i)
+        for (int i = 0; i < plot->model().markCount(); ++i)
             texts << plot->markLabel(i)->text();
     return texts.join(u'|');
 }

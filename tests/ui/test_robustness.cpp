@@ -444,7 +444,7 @@ private slots:
             w.controller().stepForward();
         for (auto* plot : w.plots()) {
             plot->drain();
-            QVERIFY(plot->pointCount() > 0);
+            QVERIFY(plot->model().pointCount() > 0);
         }
         // A second lesson over the first, mid-run, and the sweep running through it all.
         QCOMPARE(w.openLesson(lesson("stacks.json"), true), QString());

@@ -145,7 +145,7 @@ void showLive(ui::MainWindow& window, const lessons::Scene& scene)
     window.controller().loadScene(scene, QStringLiteral("soak.json"));
     if (qEnvironmentVariableIsEmpty("RIGIDLAB_SOAK_SECONDS"))
         window.controller().setHistoryBudget(kTestHistoryBudget);
-    window.plot(u"energy")->setRangeMode(ui::RangeMode::WholeRun);
+    window.plot(u"energy")->model().setRangeMode(ui::RangeMode::WholeRun);
     // The plots share one place in the window, behind tabs: each is floated out, so that every
     // one is drawn as it runs (the heaviest the window gets).
     for (QWidget* plot : window.plots())
@@ -177,7 +177,8 @@ void reportRates(ui::MainWindow& window, double firstRate, double lastRate)
     qInfo("soak: %.0f steps per CPU second in the first tenth, %.0f in the last (ratio %.2f)",
           firstRate, lastRate, lastRate / firstRate);
     for (const auto* plot : window.plots())
-        qInfo("soak: plot %s holds %d points", qPrintable(plot->objectName()), plot->pointCount());
+        qInfo("soak: plot %s holds %d points", qPrintable(plot->objectName()),
+              plot->model().pointCount());
 }
 
 } // namespace

@@ -113,7 +113,7 @@ private slots:
             w.controller().stepForward();
         for (auto* plot : w.plots()) {
             plot->drain();
-            QVERIFY2(plot->pointCount() > 10, qPrintable(plot->objectName()));
+            QVERIFY2(plot->model().pointCount() > 10, qPrintable(plot->objectName()));
         }
     }
 

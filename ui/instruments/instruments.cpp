@@ -6,6 +6,7 @@
 #include "instruments/instruments_item.h"
 #include "instruments/instruments_panel.h"
 #include "plots/body_series.h"
+#include "plots/plot_exporter.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
@@ -154,7 +155,7 @@ PlotWidget* Instruments::makeGraphPlot(const BodyGraphSpec& spec)
     auto* plot = new PlotWidget(graphTitle(spec), &m_window);
     plot->setObjectName(QStringLiteral("bodyGraph"));
     plot->setTitleShown(false); // its dock says it; exports do
-    plot->setExportContext(m_controller.scene().title);
+    plot->exporter().setContext(m_controller.scene().title);
     plot->addMenuAction(m_graphAction); // another graph, from this one's menu
     auto* feed = new GraphFeed(*plot, spec.quantity, spec.frame);
     const lessons::Scene& scene = m_controller.scene();
@@ -168,11 +169,11 @@ PlotWidget* Instruments::makeGraphPlot(const BodyGraphSpec& spec)
         feed->graph.addSum(spec.bodies, names.join(QStringLiteral(" + ")));
     }
     // From now on, and with the timeline: going back keeps the future as the plots' ghost.
-    plot->setTimelineStart(m_controller.earliestTime());
+    plot->model().setTimelineStart(m_controller.earliestTime());
     feed->graph.record(m_controller.world(), m_controller.time());
     connect(&m_controller, &SimulationController::worldChanged, feed, [this, feed, plot] {
         feed->graph.record(m_controller.world(), m_controller.time());
-        plot->setTimelineStart(m_controller.earliestTime());
+        plot->model().setTimelineStart(m_controller.earliestTime());
     });
     connect(&m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
     connect(&m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);

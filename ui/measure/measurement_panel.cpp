@@ -55,7 +55,7 @@ MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
     m_plots = new PlotShelf(this);
     m_comparison = new PlotWidget(tr("Measured and simulated"), m_plots);
     m_comparison->setAccessibleName(tr("Plot: measured points and the simulated line"));
-    m_comparison->setRangeMode(RangeMode::WholeRun);
+    m_comparison->model().setRangeMode(RangeMode::WholeRun);
     m_comparison->setMinimumSize(kPlotLeast);
     m_comparison->setTitleShown(false); // the legend names both; exports show the title
     m_comparison->addSeries(tr("measured"), plotColor(0));
@@ -65,7 +65,7 @@ MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
 
     m_residual = new PlotWidget(tr("Residuals: measured − simulated"), m_plots);
     m_residual->setAccessibleName(tr("Plot: residuals, measured minus simulated"));
-    m_residual->setRangeMode(RangeMode::WholeRun);
+    m_residual->model().setRangeMode(RangeMode::WholeRun);
     m_residual->setMinimumSize(kPlotLeast);
     m_residual->setTitleShown(false); // the tab or the check box says what it is
     m_residual->addSeries(tr("measured − simulated"), plotColor(2));
@@ -315,13 +315,13 @@ void MeasurementPanel::showComparison(const measure::Series& measured,
     m_comparison->setYAxisLabel(symbol, unit);
     m_residual->setYAxisLabel(QStringLiteral("Δ") + symbol, unit);
     for (std::size_t i = 0; i < measured.t.size(); ++i)
-        m_comparison->appendPoint(kMeasured, measured.t[i], measured.value[i]);
+        m_comparison->model().appendPoint(kMeasured, measured.t[i], measured.value[i]);
     if (!error.isEmpty())
         return;
     for (std::size_t i = 0; i < lineT.size(); ++i)
-        m_comparison->appendPoint(kSimulated, lineT[i], lineValue[i]);
+        m_comparison->model().appendPoint(kSimulated, lineT[i], lineValue[i]);
     for (std::size_t i = 0; i < residuals.size(); ++i)
-        m_residual->appendPoint(kResidual, measured.t[i], residuals[i]);
+        m_residual->model().appendPoint(kResidual, measured.t[i], residuals[i]);
     m_comparison->drain();
     m_residual->drain();
 }
@@ -360,10 +360,11 @@ void MeasurementPanel::showOtherFiles(const QString& comparedFile,
         const FileSeries& other = others[k];
         m_comparison->graph(series)->addToLegend();
         m_comparison->setSeriesLegend(series, other.file);
-        m_comparison->setSeriesColumn(
-            series, QStringLiteral("%1 [%2]").arg(other.file, m_comparison->seriesUnit(series)));
+        m_comparison->model().setSeriesColumn(
+            series,
+            QStringLiteral("%1 [%2]").arg(other.file, m_comparison->model().seriesUnit(series)));
         for (std::size_t i = 0; i < other.series.t.size(); ++i)
-            m_comparison->appendPoint(series, other.series.t[i], other.series.value[i]);
+            m_comparison->model().appendPoint(series, other.series.t[i], other.series.value[i]);
     }
     // Named by its file too where there are others, and what it is used for.
     m_comparison->setSeriesLegend(

@@ -2,6 +2,7 @@
 #include "window/window_plots.h"
 
 #include "plots/plot_export.h"
+#include "plots/plot_exporter.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "window/window_documents.h"
@@ -24,7 +25,7 @@ struct PlotExportMenu {
 void exportPlotDialog(QWidget& window, PlotWidget& plot, const QString& format)
 {
     // The plot's own dialog (folder, proposed name, CSV dialect), then a word in the status bar.
-    const QString path = plot.exportInteractively(*formatFromSuffix(format.toLower()));
+    const QString path = plot.exporter().exportInteractively(*formatFromSuffix(format.toLower()));
     if (auto* main = qobject_cast<QMainWindow*>(&window); main && !path.isEmpty())
         main->statusBar()->showMessage(PlotExportMenu::tr("Exported %1").arg(path), 5000);
 }
@@ -35,17 +36,18 @@ void followController(PlotWidget& plot, SimulationController& controller)
 {
     // The live samples, cleared with a new scene, cut back on a rewind, marked where a setting
     // changed, drained after each frame.
-    plot.setSource(&controller.samples());
+    plot.model().setSource(&controller.samples());
     QObject::connect(&controller, &SimulationController::samplesCleared, &plot, &PlotWidget::clear);
     QObject::connect(&controller, &SimulationController::rewound, &plot, &PlotWidget::rewind);
-    QObject::connect(&controller, &SimulationController::marked, &plot, &PlotWidget::addMark);
+    QObject::connect(&controller, &SimulationController::marked, &plot.model(),
+                     &PlotModel::addMark);
     QObject::connect(&controller, &SimulationController::frameAdvanced, &plot,
                      &PlotWidget::frameAdvanced);
     // The plot keeps its points as far back as the timeline goes (going back shows them).
     QObject::connect(&controller, &SimulationController::worldChanged, &plot,
                      [p = &plot, c = &controller] {
-                         p->setTimelineStart(c->earliestTime());
-                         p->setExportContext(c->scene().title); // names its exports
+                         p->model().setTimelineStart(c->earliestTime());
+                         p->exporter().setContext(c->scene().title); // names its exports
                      });
 }
 
