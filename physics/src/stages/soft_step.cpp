@@ -52,8 +52,8 @@ namespace {
 /// in a pyramid of 5050 boxes one such contact somewhere made every step pay for the phase.
 bool collisionsToSolve(const std::vector<Contact>& contacts, const std::vector<Contact>& previous,
                        const std::vector<Body>& bodies, const std::vector<Vec2>& acceleration,
-                       const std::vector<double>& angularAcceleration, double dt, double threshold,
-                       bool anyRestitution)
+                       const std::vector<double>& angularAcceleration, double dt, double h,
+                       double threshold, bool anyRestitution)
 {
     for (const Contact& ct : previous)
         if (ct.bounceImpulse[0] > 0 || ct.bounceImpulse[1] > 0)
@@ -86,7 +86,18 @@ bool collisionsToSolve(const std::vector<Contact>& contacts, const std::vector<C
             const ContactPoint& cp = ct.manifold.points[static_cast<size_t>(i)];
             const double vn = (vB + cross(wB, cp.point - cB) - vA - cross(wA, cp.point - cA))
                                   .dot(ct.manifold.normal);
-            if (vn < -threshold && closesWithinStep(cp.separation, vn, dt, true))
+            if (!(vn < -threshold))
+                continue;
+            // Closing on the substeps' parabola (restitution.h) or on the line at the end
+            // velocities.
+            const double vn0 =
+                (bodies[static_cast<size_t>(ct.b)].velocity +
+                 cross(bodies[static_cast<size_t>(ct.b)].angularVelocity, cp.point - cB) -
+                 bodies[static_cast<size_t>(ct.a)].velocity -
+                 cross(bodies[static_cast<size_t>(ct.a)].angularVelocity, cp.point - cA))
+                    .dot(ct.manifold.normal);
+            if (closesWithinStep(cp.separation, vn, dt, true) ||
+                substepImpactFraction(cp.separation, vn0, vn - vn0, dt, h) <= 1.0)
                 return true;
         }
     }
@@ -160,8 +171,9 @@ double softCollisions(StepContext& ctx, double threshold)
         return 0.0;
     const bool exact =
         findIsolatedImpacts(ctx, threshold, ctx.plan.smooth ? Flown::ToSmoothEnd : Flown::ByForces);
-    const bool general = collisionsToSolve(ctx.contacts, s.previous, ctx.bodies, s.acceleration,
-                                           s.angularAcceleration, h, threshold, s.anyRestitution);
+    const bool general =
+        collisionsToSolve(ctx.contacts, s.previous, ctx.bodies, s.acceleration,
+                          s.angularAcceleration, h, ctx.h, threshold, s.anyRestitution);
     if (!exact && !general)
         return 0.0;
     placeAtEndOfStep(ctx);
@@ -171,8 +183,8 @@ double softCollisions(StepContext& ctx, double threshold)
         ContactSolver& solver = s.solver;
         solver.begin(ctx.contacts, s.previous, ctx.bodies, ctx.contactSettings, h, s.xfPosition,
                      s.velocityAtStart, s.angularVelocityAtStart);
-        bounced =
-            solver.solveCollisionPhase(threshold, ctx.iterations, exact ? &s.isolated : nullptr);
+        bounced = solver.solveCollisionPhase(threshold, ctx.iterations, ctx.h,
+                                             exact ? &s.isolated : nullptr);
     }
     // When each body's velocity changed: the collision phase's moments, and the isolated
     // impacts' (their bodies have no other contact, so no bounce of the phase).
