@@ -314,8 +314,14 @@ template <typename State> void SoftSolver::integratePositionsOf(std::vector<Stat
         s.qc = c * inv;
         s.qs = sn * inv;
     };
-    for (int id : m_moving)
-        move(id);
+    double power = 0.0; // movePower(), in the same pass
+    for (size_t k = 0; k < m_moving.size(); ++k) {
+        const State& s = state[static_cast<size_t>(m_moving[k])];
+        move(m_moving[k]);
+        power += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
+                 m_inertia[k] * m_angularAcceleration[k] * s.w;
+    }
+    m_movePower = power;
     for (int id : m_kinematic)
         move(id);
 }
