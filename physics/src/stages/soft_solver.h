@@ -164,6 +164,9 @@ private:
     std::vector<double> m_angularDrift; ///< per body
     std::vector<Pin> m_pins;
     std::vector<double> m_invInertia; ///< per body, 0 for a body the step does not move
+    /// Per body: whether its contacts' lever arms turn with it (integratePositions()); not for
+    /// a circle about its centre of mass, whose touching point stays where the normal meets it.
+    std::vector<char> m_turns;
 
     std::vector<soft::Block> m_blocks;
     std::vector<soft::SingleBlock> m_singleBlocks; ///< instead of m_blocks when m_single
