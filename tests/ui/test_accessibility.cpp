@@ -22,6 +22,8 @@
 #include "view/world_view_accessible.h"
 #include "window/main_window.h"
 
+#include "rigidlab/physics/touching.h"
+
 #include <QAccessible>
 #include <QAction>
 #include <QDialog>
@@ -166,6 +168,37 @@ private slots:
         for (int i = 0; i < bodies; ++i)
             moving += world.body(i).isDynamic() ? 1 : 0;
         QCOMPARE(changed, moving);
+    }
+
+    /// At dt = 0.2 s the ball drop's balls, 1 m apart, get contacts ahead of time while they
+    /// fall (continuous collision's look-ahead: between the balls a gap of 0.8 m): neither the
+    /// scene's summary, nor a ball's value, nor the narrator says that anything touches.
+    void lookAheadIsNoTouch()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(
+            w.openScene(QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("ball_drop.json")),
+                        true),
+            QString());
+        w.controller().setDt(0.2);
+        QAccessibleInterface* scene = QAccessible::queryAccessibleInterface(&w.view());
+        QVERIFY(scene);
+        const auto& world = w.controller().world();
+        int ahead = 0;
+        for (int k = 0; k < 2; ++k) { // 0.4 s: the balls are still 1.2 m above the floor
+            w.controller().stepForward();
+            for (const physics::Contact& c : world.contacts())
+                ahead += physics::touches(c) ? 0 : 1;
+            QCoreApplication::processEvents();
+            const QString summary =
+                scene->child(ui::WorldViewAccessible::Summary)->text(QAccessible::Description);
+            const QString ball =
+                scene->child(ui::WorldViewAccessible::FirstBody + 1)->text(QAccessible::Value);
+            for (const QString& text : {summary, ball, w.view().narrator().status()})
+                QVERIFY2(!text.contains(QLatin1String("touch")), qPrintable(text));
+        }
+        QVERIFY(ahead > 0); // there were contacts ahead of time to be told apart
     }
 
     /// Events are told through the live status, merged and at a calm rate:

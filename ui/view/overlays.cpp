@@ -5,6 +5,8 @@
 
 #include "simulation/simulation_controller.h"
 
+#include "rigidlab/physics/touching.h"
+
 #include <QPainter>
 #include <QStyleOptionGraphicsItem>
 
@@ -266,6 +268,8 @@ void OverlayItem::paintContacts(QPainter* p, double px) const
 {
     for (const physics::Contact& c : m_controller.world().contacts()) {
         for (int i = 0; i < c.manifold.pointCount; ++i) {
+            if (!physics::touches(c, i))
+                continue; // a point the step looked ahead for: nothing touches there
             const auto& cp = c.manifold.points[static_cast<std::size_t>(i)];
             const QPointF pt = toQt(cp.point);
             p->setPen(cosmeticPen(QColor(200, 30, 30), 2.0));

@@ -8,8 +8,12 @@
 #include "view/world_view.h"
 #include "view/world_view_accessible.h"
 
+#include "rigidlab/physics/touching.h"
+
 #include <QAccessible>
 #include <QMetaMethod>
+
+#include <algorithm>
 
 namespace rigidlab::ui {
 
@@ -65,11 +69,17 @@ void SceneNarrator::onSceneLoaded()
 void SceneNarrator::onWorldChanged()
 {
     const physics::World& world = m_controller.world();
-    if (!m_touched && !world.contacts().empty()) {
-        m_touched = true;
-        const physics::Contact& c = world.contacts().front();
-        note(tr("%1 and %2 touch.")
-                 .arg(m_controller.scene().bodyLabel(c.a), m_controller.scene().bodyLabel(c.b)));
+    if (!m_touched) {
+        // The first pair that touches (physics/touching.h), not one the step looked ahead for.
+        const auto touching =
+            std::find_if(world.contacts().begin(), world.contacts().end(),
+                         [](const physics::Contact& c) { return physics::touches(c); });
+        if (touching != world.contacts().end()) {
+            m_touched = true;
+            note(tr("%1 and %2 touch.")
+                     .arg(m_controller.scene().bodyLabel(touching->a),
+                          m_controller.scene().bodyLabel(touching->b)));
+        }
     }
     double fastest = 0;
     for (std::size_t i = 0; i < world.bodies().size(); ++i)

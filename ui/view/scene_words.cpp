@@ -7,8 +7,11 @@
 
 #include "format/scene_schema.h"
 
+#include "rigidlab/physics/touching.h"
+
 #include <QStringList>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rigidlab::ui::scene_words {
@@ -74,9 +77,12 @@ QString summary(const SimulationController& controller, int selectedBody)
         parts << SceneWords::tr("Running, time %1.").arg(t);
     else
         parts << SceneWords::tr("Paused at time %1.").arg(t);
-    if (!world.contacts().empty())
-        parts << SceneWords::tr("%n pair(s) of bodies touch.", nullptr,
-                                static_cast<int>(world.contacts().size()));
+    // Only pairs that touch: not a contact the step made ahead (physics/touching.h).
+    const auto touching =
+        std::count_if(world.contacts().begin(), world.contacts().end(),
+                      [](const physics::Contact& c) { return physics::touches(c); });
+    if (touching > 0)
+        parts << SceneWords::tr("%n pair(s) of bodies touch.", nullptr, static_cast<int>(touching));
     if (selectedBody >= 0 && selectedBody < static_cast<int>(world.bodies().size()))
         parts << SceneWords::tr("Selected: %1.").arg(controller.scene().bodyLabel(selectedBody));
     parts << SceneWords::tr(
@@ -117,6 +123,8 @@ std::vector<std::vector<physics::BodyId>> touchingBodies(const SimulationControl
     const physics::World& world = controller.world();
     std::vector<std::vector<physics::BodyId>> touches(world.bodies().size());
     for (const physics::Contact& c : world.contacts()) {
+        if (!physics::touches(c))
+            continue;
         touches[static_cast<std::size_t>(c.a)].push_back(c.b);
         touches[static_cast<std::size_t>(c.b)].push_back(c.a);
     }
@@ -127,7 +135,7 @@ QString bodyValue(const SimulationController& controller, physics::BodyId id)
 {
     std::vector<physics::BodyId> touches;
     for (const physics::Contact& c : controller.world().contacts())
-        if (c.a == id || c.b == id)
+        if ((c.a == id || c.b == id) && physics::touches(c))
             touches.push_back(c.a == id ? c.b : c.a);
     return bodyValue(controller, id, touches);
 }

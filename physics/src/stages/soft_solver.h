@@ -68,6 +68,9 @@ public:
     double kineticEnergy() const;
     /// Power of the applied loads at the present velocities, sum m a.v + I alpha w [W].
     double loadPower() const;
+    /// Power of the applied loads at the velocities the last integratePositions() moved the
+    /// bodies with [W]: the load's work over that substep is h times it.
+    double movePower() const { return m_movePower; }
 
     int constraintCount() const { return static_cast<int>(m_slots.size()); }
 
@@ -134,6 +137,7 @@ private:
 
     /// The sums of sumEnergy() for the present velocities, valid while m_energyValid.
     mutable double m_energy = 0, m_power = 0;
+    double m_movePower = 0; ///< see movePower() [W]
     mutable bool m_energyValid = false;
 
     std::vector<Contact>* m_contacts = nullptr;
@@ -160,6 +164,9 @@ private:
     std::vector<double> m_angularDrift; ///< per body
     std::vector<Pin> m_pins;
     std::vector<double> m_invInertia; ///< per body, 0 for a body the step does not move
+    /// Per body: whether its contacts' lever arms turn with it (integratePositions()); not for
+    /// a circle about its centre of mass, whose touching point stays where the normal meets it.
+    std::vector<char> m_turns;
 
     std::vector<soft::Block> m_blocks;
     std::vector<soft::SingleBlock> m_singleBlocks; ///< instead of m_blocks when m_single
