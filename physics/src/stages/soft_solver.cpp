@@ -232,17 +232,23 @@ template <typename State> void SoftSolver::integrateVelocitiesOf(std::vector<Sta
     double e = 0.0, p = 0.0;
     for (size_t k = 0; k < m_moving.size(); ++k) {
         State& s = state[static_cast<size_t>(m_moving[k])];
-        const Vec2& a = m_acceleration[k];
-        const double alpha = m_angularAcceleration[k];
-        s.vx += h * a.x();
-        s.vy += h * a.y();
-        s.w += h * alpha;
-        e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
-        p += m_mass[k] * (a.x() * s.vx + a.y() * s.vy) + m_inertia[k] * alpha * s.w;
+        s.vx += h * m_acceleration[k].x();
+        s.vy += h * m_acceleration[k].y();
+        s.w += h * m_angularAcceleration[k];
+        addEnergy(k, s, e, p);
     }
     m_energy = 0.5 * e;
     m_power = p;
     m_energyValid = true;
+}
+
+template <typename State>
+void SoftSolver::addEnergy(size_t k, const State& s, double& energy, double& power) const
+{
+    // Twice the kinetic energy, and the loads' power, of moving body k.
+    energy += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
+    power += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
+             m_inertia[k] * m_angularAcceleration[k] * s.w;
 }
 
 void SoftSolver::setDrift(const std::vector<Vec2>& drift, const std::vector<double>& angularDrift)
@@ -331,12 +337,8 @@ void SoftSolver::sumEnergy() const
 template <typename State> void SoftSolver::sumEnergyOf(const std::vector<State>& state) const
 {
     double e = 0.0, p = 0.0;
-    for (size_t k = 0; k < m_moving.size(); ++k) {
-        const State& s = state[static_cast<size_t>(m_moving[k])];
-        e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
-        p += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
-             m_inertia[k] * m_angularAcceleration[k] * s.w;
-    }
+    for (size_t k = 0; k < m_moving.size(); ++k)
+        addEnergy(k, state[static_cast<size_t>(m_moving[k])], e, p);
     m_energy = 0.5 * e;
     m_power = p;
     m_energyValid = true;

@@ -106,6 +106,10 @@ private:
     template <typename State> void integrateVelocitiesOf(std::vector<State>& state);
     template <typename State> void integratePositionsOf(std::vector<State>& state);
     template <typename State> void sumEnergyOf(const std::vector<State>& state) const;
+    /// Adds twice moving body k's kinetic energy to energy, its loads' power to power (the one
+    /// formula of integrateVelocitiesOf() and sumEnergyOf()).
+    template <typename State>
+    void addEnergy(size_t k, const State& s, double& energy, double& power) const;
     template <typename State, typename BlockType>
     void endOf(std::vector<Body>& bodies, const std::vector<State>& state,
                const std::vector<BlockType>& blocks);
