@@ -24,6 +24,7 @@
 #include "soft_solver.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <numbers>
@@ -126,6 +127,7 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     }
     if (m_single) {
         m_singleState.resize(n + 1);
+        m_singleBase.resize(n + 1);
         for (size_t i = 0; i <= n; ++i) {
             const soft::BodyState& d = m_state[i];
             m_singleState[i] = {static_cast<float>(d.vx),
@@ -218,10 +220,55 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
 
 void SoftSolver::integrateVelocities()
 {
+    integrateVelocitiesOf(m_state);
     if (m_single)
-        integrateVelocitiesOf(m_singleState);
-    else
-        integrateVelocitiesOf(m_state);
+        toSingle(false);
+}
+
+void SoftSolver::toSingle(bool motion)
+{
+    auto copy = [&](int id) {
+        const auto i = static_cast<size_t>(id);
+        const soft::BodyState& d = m_state[i];
+        soft::SingleBodyState& f = m_singleState[i];
+        f.vx = static_cast<float>(d.vx);
+        f.vy = static_cast<float>(d.vy);
+        f.w = static_cast<float>(d.w);
+        m_singleBase[i] = {f.vx, f.vy, f.w};
+        if (motion) {
+            f.dpx = static_cast<float>(d.dpx);
+            f.dpy = static_cast<float>(d.dpy);
+            f.qc = static_cast<float>(d.qc);
+            f.qs = static_cast<float>(d.qs);
+        }
+    };
+    for (int id : m_moving)
+        copy(id);
+    if (motion)
+        for (int id : m_kinematic)
+            copy(id);
+}
+
+void SoftSolver::fromSingle()
+{
+    // Only the passes' change goes back, not the rounded velocity: a body whose contacts
+    // pushed nothing (two balls parting after their exact impact) keeps every bit of its
+    // velocity, as in double precision. (The change is taken against the velocities as
+    // toSingle() wrote them, kept in m_singleBase: written as f - float(d), GCC 12 at -O2
+    // turned the vectorised float(d) into d, and the rounding came back.)
+    for (int id : m_moving) {
+        const auto i = static_cast<size_t>(id);
+        soft::BodyState& d = m_state[i];
+        soft::SingleBodyState& f = m_singleState[i];
+        std::array<float, 3>& base = m_singleBase[i];
+        d.vx += static_cast<double>(f.vx) - static_cast<double>(base[0]);
+        d.vy += static_cast<double>(f.vy) - static_cast<double>(base[1]);
+        d.w += static_cast<double>(f.w) - static_cast<double>(base[2]);
+        f.vx = static_cast<float>(d.vx);
+        f.vy = static_cast<float>(d.vy);
+        f.w = static_cast<float>(d.w);
+        base = {f.vx, f.vy, f.w};
+    }
 }
 
 template <typename State> void SoftSolver::integrateVelocitiesOf(std::vector<State>& state)
@@ -279,10 +326,11 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
     m_pass.inverseSubstep = lookAhead ? m_substeps.invH : kNoLookAhead;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
-    if (m_single)
+    if (m_single) {
         m_singleKernel.solve(m_singleBlocks.data(), static_cast<int>(m_singleBlocks.size()),
                              m_singleState.data(), m_pass);
-    else
+        fromSingle();
+    } else
         m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
     if (!m_pins.empty())
         solvePins(useBias);
@@ -290,10 +338,9 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
 
 void SoftSolver::integratePositions()
 {
+    integratePositionsOf(m_state);
     if (m_single)
-        integratePositionsOf(m_singleState);
-    else
-        integratePositionsOf(m_state);
+        toSingle(true);
 }
 
 template <typename State> void SoftSolver::integratePositionsOf(std::vector<State>& state)
@@ -328,10 +375,7 @@ template <typename State> void SoftSolver::integratePositionsOf(std::vector<Stat
 
 void SoftSolver::sumEnergy() const
 {
-    if (m_single)
-        sumEnergyOf(m_singleState);
-    else
-        sumEnergyOf(m_state);
+    sumEnergyOf(m_state);
 }
 
 template <typename State> void SoftSolver::sumEnergyOf(const std::vector<State>& state) const
@@ -361,7 +405,7 @@ double SoftSolver::loadPower() const
 void SoftSolver::end(std::vector<Body>& bodies)
 {
     if (m_single)
-        endOf(bodies, m_singleState, m_singleBlocks);
+        endOf(bodies, m_state, m_singleBlocks);
     else
         endOf(bodies, m_state, m_blocks);
 }
