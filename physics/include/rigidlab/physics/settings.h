@@ -75,6 +75,12 @@ struct SoftStepSettings {
     /// off. The collision phase, the positions and the energy books stay in double either
     /// way; a world whose contacts touch a pin joint solves in double.
     bool singlePrecision = false;
+    /// Two polygons that moved less than this against each other since the full test made
+    /// their manifold keep it (Box2D v3.2's contact recycling, narrow_phase.cpp): each point
+    /// stays on both bodies and its separation follows them, as the substeps already move
+    /// it. Bodies faster than the contact margin always get the full test. 0: every pair every
+    /// step [m].
+    double recycleDistance = 0.005;
 };
 
 /// Tuning of contacts that a scene does not set (Box2D's choices, in metres).
