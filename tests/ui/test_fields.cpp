@@ -22,6 +22,7 @@
 #include <QDockWidget>
 #include <QLineEdit>
 #include <QLocale>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -372,6 +373,77 @@ private slots:
         QCOMPARE(f->error(), QString());
         QCOMPARE(c.world().def().restitution, before);
         c.setRunning(false);
+    }
+
+    // Long decimals are rounded on screen, never in force: 1/60 s reads "16,6667" ms in
+    // Czech, and no field in the window shows more than NumberField::kShownDigits digits of a
+    // value the program holds. Leaving the field untouched keeps 1/60 s; a value typed while
+    // it runs is held as typed and shown with every digit typed, frame after frame.
+    void longDecimalsAreRoundedOnScreenOnly_data()
+    {
+        QTest::addColumn<QString>("locale");
+        QTest::addColumn<QString>("shown"); // 1/60 s in ms
+        QTest::addColumn<QString>("typed");
+        QTest::newRow("cs") << QStringLiteral("cs_CZ") << QStringLiteral("16,6667")
+                            << QStringLiteral("4,1666667");
+        QTest::newRow("en") << QStringLiteral("en_US") << QStringLiteral("16.6667")
+                            << QStringLiteral("4.1666667");
+    }
+    void longDecimalsAreRoundedOnScreenOnly()
+    {
+        QFETCH(QString, locale);
+        QFETCH(QString, shown);
+        QFETCH(QString, typed);
+        QLocale::setDefault(QLocale(locale));
+        MainWindow w;
+        QVERIFY(openBallDrop(w));
+        auto& c = w.controller();
+        c.setDt(1.0 / 60.0);
+        c.setRestitution(1.0 / 3.0);
+        c.setFriction(2.0 / 3.0);
+        c.setTimeScale(1.0 / 3.0);
+        c.setBodyMass(1, std::sqrt(2.0));
+        w.inspector().refresh();
+        NumberField* dt = field(w, QStringLiteral("dt"));
+        QCOMPARE(dt->text(), shown);
+        for (NumberField* f : w.findChildren<NumberField*>()) {
+            const QString digits = f->text()
+                                       .remove(QRegularExpression(QStringLiteral("[^0-9]")))
+                                       .remove(QRegularExpression(QStringLiteral("^0+")));
+            QVERIFY2(digits.size() <= NumberField::kShownDigits,
+                     qPrintable(f->objectName() + QStringLiteral(" shows ") + f->text()));
+        }
+        // In and out without typing: the value in force is not the rounded one shown.
+        dt->setFocus();
+        QTRY_VERIFY(dt->hasFocus());
+        QTest::keyClick(dt, Qt::Key_Return);
+        w.view().setFocus();
+        QTRY_VERIFY(!dt->hasFocus());
+        QCOMPARE(c.world().def().dt, 1.0 / 60.0);
+        // Typed while it runs: held to the last digit, and shown so.
+        c.setRunning(true);
+        dt->setFocus();
+        QTRY_VERIFY(dt->hasFocus());
+        dt->selectAll();
+        QTest::keyClicks(dt, typed);
+        QVERIFY(nextFrame(c));
+        QTest::keyClick(dt, Qt::Key_Return);
+        QVERIFY2(near(c.world().def().dt, 4.1666667e-3, 1e-15),
+                 qPrintable(QString::number(c.world().def().dt, 'g', 17)));
+        for (int frame = 0; frame < 3; ++frame) {
+            QVERIFY(nextFrame(c));
+            w.controls().refresh();
+            QCOMPARE(dt->text(), typed);
+        }
+        // Escape brings back the value in force as it was typed, not rounded.
+        dt->selectAll();
+        QTest::keyClicks(dt, QStringLiteral("7"));
+        QTest::keyClick(dt, Qt::Key_Escape);
+        QCOMPARE(dt->text(), typed);
+        c.setRunning(false);
+        // A value from elsewhere is rounded again.
+        c.setDt(1.0 / 60.0);
+        QCOMPARE(dt->text(), shown);
     }
 
     void windowShortcutsStayOutOfTheField()
