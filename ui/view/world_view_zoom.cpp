@@ -52,6 +52,13 @@ QRectF WorldView::contentRect() const
             box |= scenery(g.item->sceneBoundingRect(),
                            static_cast<std::size_t>(g.body) >= vw.bodies().size() ||
                                vw.bodies()[static_cast<std::size_t>(g.body)].moves());
+    return box | anchorsAndExtras();
+}
+
+QRectF WorldView::anchorsAndExtras() const
+{
+    QRectF box;
+    const physics::World& w = m_controller.world();
     auto add = [&](physics::BodyId id, const physics::Vec2& anchor) {
         const physics::Vec2 p =
             id == physics::kWorld ? anchor : w.body(id).transform().apply(anchor);
@@ -72,6 +79,28 @@ QRectF WorldView::contentRect() const
     if (!m_action.isEmpty())
         box |= m_action;
     return box;
+}
+
+bool WorldView::contentWithin(const QRectF& area) const
+{
+    // A body's outline lies within its reach of its origin at any angle: the square of that
+    // half-side about the origin inside `area` holds the outline too, without mapping the
+    // outline's box through the pose (contentRect's walk, every frame, cost the base-100
+    // pyramid 2.3 % of its CPU). What contentRect leaves out is left out here too.
+    const auto within = [&area](const BodyItem& item) {
+        const QTransform& t = item.transform();
+        const double r = item.reach();
+        return area.contains(QRectF(t.dx() - r, t.dy() - r, 2 * r, 2 * r));
+    };
+    if (!m_controller.world().divergence())
+        for (const auto& item : m_items)
+            if (!within(*item))
+                return false;
+    for (const Ghost& g : m_ghosts)
+        if (!m_controller.variant(g.variant).divergence() && !within(*g.item))
+            return false;
+    const QRectF rest = anchorsAndExtras();
+    return rest.isNull() || area.contains(rest);
 }
 
 void WorldView::setActionBounds(const QRectF& worldRect)
