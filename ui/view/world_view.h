@@ -132,6 +132,9 @@ private:
     physics::Vec2 toWorld(const QPoint& viewPos) const;
     /// Everything the scene shows: bodies, spring and joint anchors [m].
     QRectF contentRect() const;
+    /// The part of `item` (body `body` of `world`) that contentRect takes: its box, the
+    /// scenery's cut to the run's event [m].
+    QRectF shownRect(const BodyItem& item, const physics::World& world, physics::BodyId body) const;
     /// What contentRect adds to the bodies: spring and joint anchors, the fit's extra and the
     /// run's event [m].
     QRectF anchorsAndExtras() const;
