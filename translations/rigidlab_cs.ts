@@ -2143,6 +2143,10 @@ n = (%4; %5)</translation>
         <source>File › Class results… on a class of five, with a damaged file and another lesson&apos;s</source>
         <translation>Soubor › Výsledky třídy… na třídě pěti žáků, s poškozeným souborem a souborem jiné lekce</translation>
     </message>
+    <message>
+        <source>the window system made the window %1×%2 (logical pixels), not the %3×%4 asked for</source>
+        <translation>okenní systém dal oknu velikost %1×%2 (logických pixelů), ne požadovaných %3×%4</translation>
+    </message>
 </context>
 <context>
     <name>SpokenNumbers</name>

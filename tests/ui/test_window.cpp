@@ -2,17 +2,24 @@
 // The lab window, driven as a user would: keys, mouse, menus, under the offscreen platform.
 
 #include "common/status_text.h"
+#include "lesson_player/lesson_panels.h"
+#include "measure/measurement_panel.h"
+#include "measure/measurement_session.h"
 #include "panels/control_panel.h"
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
+#include "panels/sat_panel.h"
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"
 #include "view/world_view.h"
+#include "window/dock_tabs.h"
 #include "window/main_window.h"
+#include "window/window_names.h"
 
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QFile>
 #include <QImage>
 #include <QLabel>
@@ -25,6 +32,8 @@
 #include "test_main.h"
 
 #include <cstring>
+#include <map>
+#include <string_view>
 
 using namespace rigidlab;
 using rigidlab::test::writeFile;
@@ -103,6 +112,30 @@ private slots:
         QTRY_VERIFY_WITH_TIMEOUT(world.time() > 0.05, 10000);
         w.controller().setRunning(false);
         QVERIFY(world.body(world.bodies().size() - 1).position.y() < y0);
+    }
+
+    // Each panel a lesson step may show is the dock of its lesson-format name, under that
+    // name's titles (short on the tab, full in the tooltip), holding that panel.
+    void panelDocksAreTitledByTheirNames()
+    {
+        MainWindow w;
+        const std::map<std::string_view, QWidget*> panels{{"controls", &w.controls()},
+                                                          {"inspector", &w.inspector()},
+                                                          {"sat", &w.satPanel()},
+                                                          {"bounces", &w.bouncePanel()},
+                                                          {"collision", &w.collisionPanel()},
+                                                          {"measurement", w.measurement().panel()}};
+        QCOMPARE(panels.size(), ui::kStepPanelTitles.size());
+        for (const ui::StepPartName& part : ui::kStepPanelTitles) {
+            const QString name = QLatin1String(part.name);
+            QDockWidget* dock = w.dock(name);
+            QVERIFY2(dock, part.name);
+            QCOMPARE(dock->objectName(), name + QStringLiteral("Dock"));
+            QCOMPARE(dock->windowTitle(), ui::stepPartText(part.shortTitle));
+            QCOMPARE(ui::fullTitle(*dock), ui::stepPartText(part.title));
+            QVERIFY2(dock->isAncestorOf(panels.at(part.name)), part.name);
+            QCOMPARE(&ui::stepPanel(part.name), &part);
+        }
     }
 
     void plotsReceiveData()

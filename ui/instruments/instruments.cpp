@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "instruments/instruments.h"
 
+#include "common/accessible_names.h"
 #include "common/shortcuts.h"
 
 #include "instruments/instruments_item.h"
@@ -15,6 +16,7 @@
 #include <QDockWidget>
 #include <QGraphicsScene>
 #include <QMainWindow>
+#include <QScrollArea>
 #include <QTabWidget>
 
 #include <algorithm>
@@ -77,7 +79,14 @@ Instruments::Instruments(QMainWindow& window, SimulationController& controller, 
 {
     m_dock->setWindowTitle(tr("Instruments"));
     m_dock->setObjectName(QStringLiteral("instrumentsDock"));
-    m_dock->setWidget(m_panel);
+    // A panel that scrolls, as the window's others do: its tabs' least height added to a
+    // lesson step's panels and plots held the window taller than a 1024×768 projector.
+    auto* scroll = new QScrollArea(m_dock);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(m_panel);
+    nameScrollArea(*scroll, m_dock->windowTitle());
+    m_dock->setWidget(scroll);
     window.addDockWidget(Qt::RightDockWidgetArea, m_dock);
     m_dock->hide(); // until asked for: View › Instruments
     m_dock->toggleViewAction()->setObjectName(QStringLiteral("instruments"));

@@ -20,8 +20,10 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <iterator>
 
 namespace rigidlab::ui {
@@ -33,6 +35,8 @@ namespace {
 /// hold the dock wider than the screen before they go behind tabs.
 constexpr QSize kPlotLeast(180, 130);
 constexpr double kMarkerPx = 6.0;
+/// The controls beside the plots take up to 1/kControlsShare of the panel's width.
+constexpr int kControlsShare = 3;
 
 /// Draws a series as markers of `shape` without a line between them.
 void asMarkers(PlotWidget& plot, int series, QCPScatterStyle::ScatterShape shape)
@@ -150,6 +154,11 @@ void MeasurementPanel::arrange()
     if (m_layout->direction() != direction)
         m_layout->setDirection(direction);
     if (beside) {
+        // Wider than their least width, up to a third of the panel, where the plots keep
+        // room to be read: the fit's result then wraps to fewer lines, and in a short dock
+        // (presentation mode's type on a projector) its last line stays in sight.
+        const int room = width() - m_layout->spacing() - plotWidth;
+        controlsWidth = std::max(controlsWidth, std::min(room, width() / kControlsShare));
         m_controls->setFixedWidth(controlsWidth);
     } else {
         m_controls->setMinimumWidth(0);
@@ -408,6 +417,27 @@ void MeasurementPanel::showFit(const QString& text, bool applicable)
     m_fitResult->setText(text);
     m_apply->setEnabled(applicable);
     arrange(); // Fit back in place of Cancel
+    showResultsSoon();
+}
+
+void MeasurementPanel::showResultsSoon()
+{
+    // A result below the fold of a short dock (a 1024×768 projector) is missed: once laid out,
+    // the controls scroll down to the last line of the results, then, if they are taller than
+    // the dock, back to their first line.
+    QTimer::singleShot(0, this, [this] {
+        if (m_fitResult->text().isEmpty() && m_bounceResult->isHidden())
+            return;
+        for (QWidget* last :
+             {static_cast<QWidget*>(m_applyBounce), static_cast<QWidget*>(m_bounceResult),
+              static_cast<QWidget*>(m_fitResult)})
+            if (!last->isHidden()) {
+                m_controls->ensureWidgetVisible(last, 0, 0);
+                break;
+            }
+        if (!m_fitResult->text().isEmpty())
+            m_controls->ensureWidgetVisible(m_fitResult, 0, 0);
+    });
 }
 
 void MeasurementPanel::showFitRunning(int runs)
@@ -435,6 +465,7 @@ void MeasurementPanel::showBounceFit(const QString& text, bool applicable)
     m_applyBounce->setVisible(!text.isEmpty());
     m_applyBounce->setEnabled(applicable);
     arrange();
+    showResultsSoon();
 }
 
 QString MeasurementPanel::fitText() const

@@ -257,7 +257,9 @@ void WorldView::followContent()
         // Follow bodies that leave the fitted area, by widening it (within the limit); not
         // while the scene is being edited, where the view holds still under the pen (a body
         // drawn outside the area would make everything jump).
-        const QRectF wanted = (m_fitted | contentRect()) & m_fitLimit;
+        // Most frames every body lies well inside: said without the exact outlines.
+        const QRectF wanted = contentWithin(m_fitted) ? m_fitted & m_fitLimit
+                                                      : (m_fitted | contentRect()) & m_fitLimit;
         if (!m_fitted.contains(wanted)) {
             m_fitted |= wanted;
             showRect(m_fitted);

@@ -132,6 +132,15 @@ private:
     physics::Vec2 toWorld(const QPoint& viewPos) const;
     /// Everything the scene shows: bodies, spring and joint anchors [m].
     QRectF contentRect() const;
+    /// The part of `item` (body `body` of `world`) that contentRect takes: its box, the
+    /// scenery's cut to the run's event [m].
+    QRectF shownRect(const BodyItem& item, const physics::World& world, physics::BodyId body) const;
+    /// What contentRect adds to the bodies: spring and joint anchors, the fit's extra and the
+    /// run's event [m].
+    QRectF anchorsAndExtras() const;
+    /// Whether contentRect() lies within `area`: true only when it does, and false (the
+    /// exact rectangle then to be asked for) when a body's reach comes near the edge.
+    bool contentWithin(const QRectF& area) const;
     /// Selects the body `step` places from the selected one among those that move.
     void selectBodyAfter(int step);
     /// Shows `box` (grown by a margin) in the whole viewport.
