@@ -5,7 +5,7 @@
 #include "view/world_view.h"
 
 #include "common/theme.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 #include "view/bodies_item.h"
 #include "view/body_item.h"
 
@@ -33,13 +33,13 @@ QRectF WorldView::contentRect() const
     // A world that stopped (diverged) is left out: its bodies may lie a billion metres away,
     // and following them would shrink the worlds still running to a dot.
     QRectF box;
-    const physics::World& w = m_controller.world();
+    const physics::World& w = m_run.world();
     // With the run's event known, the scenery is framed only around it: the carts of a step
     // and the ground under them, not the whole 40 m of ground. Worlds compared side by side
     // keep theirs whole: each world's floor is part of that picture.
     const double grow = 0.15 * std::max(m_action.width(), m_action.height()) + 0.2;
     const QRectF around = m_action.adjusted(-grow, -grow, grow, grow);
-    const bool clip = !m_action.isEmpty() && m_controller.variantOffset().isZero();
+    const bool clip = !m_action.isEmpty() && m_run.variantOffset().isZero();
     const auto scenery = [&](const QRectF& r, bool moves) {
         return moves || !clip ? r : r & around;
     };
@@ -48,7 +48,7 @@ QRectF WorldView::contentRect() const
             box |= scenery(m_items[i]->sceneBoundingRect(),
                            i >= w.bodies().size() || w.bodies()[i].moves());
     for (const Ghost& g : m_ghosts)
-        if (const physics::World& vw = m_controller.variant(g.variant); !vw.divergence())
+        if (const physics::World& vw = m_run.variant(g.variant); !vw.divergence())
             box |= scenery(g.item->sceneBoundingRect(),
                            static_cast<std::size_t>(g.body) >= vw.bodies().size() ||
                                vw.bodies()[static_cast<std::size_t>(g.body)].moves());
