@@ -38,8 +38,8 @@ inline bool near(double a, double b, double rel = 1e-12)
 /// Lets the running simulation take at least one more frame of steps.
 inline bool nextFrame(const ui::SimulationController& c)
 {
-    const long long s = c.currentStep();
-    return QTest::qWaitFor([&] { return c.currentStep() > s; }, 5000);
+    const long long s = c.world().stepCount();
+    return QTest::qWaitFor([&] { return c.world().stepCount() > s; }, 5000);
 }
 
 /// A field by its name: "dt", "restitution", ... in the panel, "mass" in the inspector.

@@ -477,7 +477,7 @@ private slots:
         RL_VERIFY_NEAR(panel.rulerLength(), 2.0, 1e-12, 0);
         // The ruler is not a grab: the balls stayed where they were.
         QCOMPARE(w.controller().world().body(0).position, physics::Vec2(-1.5, 0));
-        QVERIFY(!w.controller().grabbed());
+        QVERIFY(!w.controller().grabSpring().body());
     }
 
     void lessonCanHideThem()

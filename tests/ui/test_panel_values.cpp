@@ -153,7 +153,7 @@ void TestPanelValues::settingShownWhereItIsMade()
     ui::SimulationController& c = w.controller();
     for (int i = 0; i < 100; ++i)
         c.stepForward();
-    const long long before = c.currentStep();
+    const long long before = c.world().stepCount();
     // Typed into the control panel: the world runs with it, the field and a mark say so.
     auto* iterations = w.controls().findChild<ui::NumberField*>(QStringLiteral("iterations"));
     QVERIFY(iterations);

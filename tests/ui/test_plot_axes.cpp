@@ -310,7 +310,7 @@ void TestPlotAxes::csvTimesAreStepTimes()
     PlotWidget* plot = makeEnergyPlot(nullptr);
     std::unique_ptr<PlotWidget> owner(plot);
     plot->model().setRangeMode(RangeMode::WholeRun);
-    plot->model().setSource(&controller.samples());
+    plot->model().setSource(&controller.recorder().samples());
 
     constexpr int kSteps = 300;
     double summed = 0;
@@ -364,7 +364,7 @@ void TestPlotAxes::conservedMomentumIsDrawnFlat()
     plot->show();
     QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
     plot->model().setRangeMode(RangeMode::WholeRun);
-    plot->model().setSource(&controller.samples());
+    plot->model().setSource(&controller.recorder().samples());
     for (int k = 0; k < 2000; ++k)
         controller.stepForward();
     QVERIFY(controller.world().bodies()[1].velocity.x() > 1.9); // they did collide

@@ -10,7 +10,6 @@
 #include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/sample_buffer.h"
-#include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 
 #include "format/lesson.h"

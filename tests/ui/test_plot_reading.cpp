@@ -293,7 +293,7 @@ void TestPlotReading::windowTimelineFollowsTheScrub()
     timeline->setSliderDown(true); // a hand on it
     timeline->setValue(target);
     timeline->setSliderDown(false);
-    QCOMPARE(c.currentStep(), target);
+    QCOMPARE(c.world().stepCount(), target);
     QVERIFY2(label->text().contains(QStringLiteral("step %1 ").arg(target)),
              qPrintable(label->text()));
     QVERIFY2(label->text().contains(QLocale().toString(c.world().time(), 'f', 3)),

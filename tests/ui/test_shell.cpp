@@ -325,10 +325,10 @@ private slots:
         // Running: the rate, in simulated seconds per wall second once a second has passed.
         c.setRunning(true);
         QVERIFY2(status().contains(QStringLiteral("steps/s")), qPrintable(status()));
-        QTRY_VERIFY_WITH_TIMEOUT(c.realTimeFactor().has_value(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(c.timing().realTimeFactor().has_value(), 10000);
         text = status();
         QVERIFY2(text.contains(QStringLiteral("× real time")), qPrintable(text));
-        QVERIFY(*c.realTimeFactor() > 0.0);
+        QVERIFY(*c.timing().realTimeFactor() > 0.0);
 
         // Details off: no stage names even while running.
         w.statusDetailsAction()->setChecked(false);

@@ -166,8 +166,8 @@ void reportProgress(const ui::SimulationController& controller, long long step)
         outside += b.isDynamic() && (std::abs(b.position.x()) > 6 || std::abs(b.position.y()) > 4);
     qInfo("soak: step %lld (t = %.0f s): %.1f MiB resident, history from step %lld, "
           "%d contacts, %d bodies outside the box, E = %.1f J",
-          step, controller.world().time(), residentBytes() / 1048576.0, controller.earliestStep(),
-          controller.world().diagnostics().contacts, outside,
+          step, controller.world().time(), residentBytes() / 1048576.0,
+          controller.history().earliest(), controller.world().diagnostics().contacts, outside,
           controller.world().diagnostics().total);
 }
 
@@ -252,7 +252,7 @@ private slots:
                 QCoreApplication::processEvents();
                 frame.start();
             }
-            if (historyFullAt < 0 && controller.earliestStep() > 0)
+            if (historyFullAt < 0 && controller.history().earliest() > 0)
                 historyFullAt = i;
             // Warm: the history at its budget and the first tenth over.
             if (rssWarm < 0 && i >= tenth && historyFullAt > 0)

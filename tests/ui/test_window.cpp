@@ -164,15 +164,15 @@ private slots:
         QVERIFY(c.isRunning());
         QTest::keyClick(&w.view(), Qt::Key_Space);
         QVERIFY(!c.isRunning());
-        const long long s0 = c.currentStep();
+        const long long s0 = c.world().stepCount();
         QTest::keyClick(&w.view(), Qt::Key_S);
-        QCOMPARE(c.currentStep(), s0 + 1);
+        QCOMPARE(c.world().stepCount(), s0 + 1);
         QTest::keyClick(&w.view(), Qt::Key_Right);
-        QCOMPARE(c.currentStep(), s0 + 2);
+        QCOMPARE(c.world().stepCount(), s0 + 2);
         QTest::keyClick(&w.view(), Qt::Key_Left);
-        QCOMPARE(c.currentStep(), s0 + 1);
+        QCOMPARE(c.world().stepCount(), s0 + 1);
         QTest::keyClick(&w.view(), Qt::Key_R);
-        QCOMPARE(c.currentStep(), 0LL);
+        QCOMPARE(c.world().stepCount(), 0LL);
         QVERIFY(w.overlayAction(ui::Overlay::Velocities));
         const bool before = w.view().overlays().isEnabled(ui::Overlay::Velocities);
         QTest::keyClick(&w.view(), Qt::Key_V);
@@ -205,7 +205,7 @@ private slots:
         const QByteArray end = stateBytes(c.world());
         for (int i = 0; i < back; ++i)
             c.stepBack();
-        QCOMPARE(c.currentStep(), static_cast<long long>(steps - back));
+        QCOMPARE(c.world().stepCount(), static_cast<long long>(steps - back));
         QVERIFY(stateBytes(c.world()) == middle);
         for (int i = 0; i < back; ++i)
             c.stepForward();
@@ -223,12 +223,12 @@ private slots:
         for (int i = 0; i < 400; ++i)
             c.stepForward();
         c.seek(200);
-        QCOMPARE(c.latestStep(), 400LL);
+        QCOMPARE(c.history().latest(), 400LL);
         ui::NumberField* e = w.controls().restitutionField();
         e->selectAll();
         QTest::keyClicks(e, QStringLiteral("0.2"));
         QTest::keyClick(e, Qt::Key_Return);
-        QCOMPARE(c.latestStep(), 200LL);
+        QCOMPARE(c.history().latest(), 200LL);
         QCOMPARE(c.world().def().restitution, 0.2);
     }
 
@@ -245,7 +245,7 @@ private slots:
         const physics::Vec2 start = c.world().body(ball).position;
         const QPoint at = w.view().mapFromScene(QPointF(start.x(), start.y()));
         QTest::mousePress(w.view().viewport(), Qt::LeftButton, {}, at);
-        QVERIFY(c.grabbed().has_value());
+        QVERIFY(c.grabSpring().body().has_value());
         QCOMPARE(w.inspector().body(), static_cast<int>(ball));
         QTest::mouseMove(w.view().viewport(), at + QPoint(0, -60));
         // Upwards, where nothing is in the way.
@@ -253,7 +253,7 @@ private slots:
         for (int i = 0; i < 1500; ++i)
             c.stepForward();
         QTest::mouseRelease(w.view().viewport(), Qt::LeftButton, {}, at + QPoint(0, -60));
-        QVERIFY(!c.grabbed().has_value());
+        QVERIFY(!c.grabSpring().body().has_value());
         const physics::Vec2 end = c.world().body(ball).position;
         // The spring pulls the grabbed point to the cursor.
         QVERIFY(wanted > 0.1);
@@ -298,7 +298,7 @@ private slots:
             for (const physics::Body& b : w.controller().world().bodies())
                 QVERIFY2(std::isfinite(b.position.x()) && std::isfinite(b.position.y()),
                          qPrintable(name));
-            QVERIFY(std::isfinite(w.controller().driftPercent()));
+            QVERIFY(std::isfinite(w.controller().recorder().driftPercent(w.controller().world())));
         }
     }
 

@@ -186,13 +186,13 @@ void TestWorldViewCrowd::aClickSelectsAndGrabs()
     const physics::Vec2 centre = crowd.controller.world().body(id).position;
     QTest::mousePress(crowd.view.viewport(), Qt::LeftButton, {}, crowd.at(centre.x(), centre.y()));
     QCOMPARE(crowd.view.selectedBody(), id);
-    QVERIFY(crowd.controller.grabbed().has_value());
+    QVERIFY(crowd.controller.grabSpring().body().has_value());
     QTest::mouseRelease(crowd.view.viewport(), Qt::LeftButton, {},
                         crowd.at(centre.x(), centre.y()));
-    QVERIFY(!crowd.controller.grabbed().has_value());
+    QVERIFY(!crowd.controller.grabSpring().body().has_value());
     // A press on empty space selects nothing and grabs nothing (it pans).
     QTest::mousePress(crowd.view.viewport(), Qt::LeftButton, {}, crowd.at(12, 8.5));
-    QVERIFY(!crowd.controller.grabbed().has_value());
+    QVERIFY(!crowd.controller.grabSpring().body().has_value());
     QTest::mouseRelease(crowd.view.viewport(), Qt::LeftButton, {}, crowd.at(12, 8.5));
 }
 

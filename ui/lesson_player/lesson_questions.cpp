@@ -221,7 +221,7 @@ void LessonPlayer::checkTyped(std::size_t i)
 AskedRun LessonPlayer::askedRunOf(std::size_t i) const
 {
     const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
-    return askedRun(step, step.questions[i], m_controller.world(), m_controller.edits());
+    return askedRun(step, step.questions[i], m_controller.world(), m_controller.editLog().edits());
 }
 
 void LessonPlayer::buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
@@ -294,7 +294,7 @@ QuestionTry LessonPlayer::measuredTry(std::size_t i)
     // The window's run counts when it is the run the question asks for (askedRun).
     const bool liveCounts = askedRunOf(i).matches();
     if (liveCounts)
-        if (const auto live = m_controller.measurements().value(measure, step.scene))
+        if (const auto live = m_controller.lessonWatch().measurements().value(measure, step.scene))
             return numberTry(live, false);
     // While the scene may not run, the student could never get a verdict: the same run is
     // done without a window instead (it is deterministic, so it measures what the window

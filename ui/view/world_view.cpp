@@ -41,7 +41,8 @@ bool inSight(const QRectF& shown, const physics::Vec2& p)
 } // namespace
 
 WorldView::WorldView(SimulationController& controller, QWidget* parent)
-    : QGraphicsView(parent), m_controller(controller), m_scene(new QGraphicsScene(this))
+    : QGraphicsView(parent), m_controller(controller), m_run(controller),
+      m_scene(new QGraphicsScene(this))
 {
     m_scene->setSceneRect(-1e5, -1e5, 2e5, 2e5);
     m_scene->setItemIndexMethod(QGraphicsScene::NoIndex); // items move every frame
@@ -321,7 +322,7 @@ void WorldView::mousePressEvent(QMouseEvent* event)
     selectBody(hit);
     m_autoFit = false; // the view must hold still under the hand that drags
     m_controller.grab(hit, toWorld(event->pos()));
-    if (m_controller.grabbed())
+    if (m_controller.grabSpring().body())
         setCursor(Qt::ClosedHandCursor);
 }
 
@@ -335,7 +336,7 @@ void WorldView::mouseMoveEvent(QMouseEvent* event)
         verticalScrollBar()->setValue(verticalScrollBar()->value() - delta.y());
         return;
     }
-    if (m_controller.grabbed()) {
+    if (m_controller.grabSpring().body()) {
         m_controller.dragTo(toWorld(event->pos()));
         m_overlays->update();
         return;

@@ -20,6 +20,7 @@ namespace rigidlab::ui {
 class BodiesItem;
 class BodyItem;
 class SceneNarrator;
+class RunView;
 class SimulationController;
 
 class WorldView : public QGraphicsView {
@@ -29,7 +30,8 @@ public:
     ~WorldView() override;
 
     OverlayItem& overlays() { return *m_overlays; }
-    const SimulationController& controller() const { return m_controller; }
+    /// The run the view shows.
+    const RunView& run() const { return m_run; }
     /// What the view tells a screen reader as the world runs (scene_narrator.h).
     SceneNarrator& narrator() const { return *m_narrator; }
     /// The item drawing body `id` (for tests).
@@ -160,7 +162,8 @@ private:
     const BodyItem* ghostOf(int variant) const;
     QString stoppedLabel(int variant) const;
 
-    SimulationController& m_controller;
+    SimulationController& m_controller; ///< changes the run: grabbing, moving a body
+    const RunView& m_run;               ///< the same run, read
     QGraphicsScene* m_scene;
     OverlayItem* m_overlays;
     SceneNarrator* m_narrator;

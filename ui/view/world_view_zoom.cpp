@@ -5,7 +5,7 @@
 #include "view/world_view.h"
 
 #include "common/theme.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 #include "view/bodies_item.h"
 #include "view/body_item.h"
 
@@ -33,12 +33,12 @@ QRectF WorldView::contentRect() const
     // A world that stopped (diverged) is left out: its bodies may lie a billion metres away,
     // and following them would shrink the worlds still running to a dot.
     QRectF box;
-    const physics::World& w = m_controller.world();
+    const physics::World& w = m_run.world();
     if (!w.divergence())
         for (std::size_t i = 0; i < m_items.size(); ++i)
             box |= shownRect(*m_items[i], w, static_cast<physics::BodyId>(i));
     for (const Ghost& g : m_ghosts)
-        if (const physics::World& vw = m_controller.variant(g.variant); !vw.divergence())
+        if (const physics::World& vw = m_run.variant(g.variant); !vw.divergence())
             box |= shownRect(*g.item, vw, g.body);
     return box | anchorsAndExtras();
 }
@@ -51,7 +51,7 @@ QRectF WorldView::shownRect(const BodyItem& item, const physics::World& world,
     // keep theirs whole: each world's floor is part of that picture.
     const QRectF r = item.sceneBoundingRect();
     const auto i = static_cast<std::size_t>(body);
-    if (m_action.isEmpty() || !m_controller.variantOffset().isZero() ||
+    if (m_action.isEmpty() || !m_run.variantOffset().isZero() ||
         i >= world.bodies().size() || world.bodies()[i].moves())
         return r;
     const double grow = 0.15 * std::max(m_action.width(), m_action.height()) + 0.2;
@@ -61,7 +61,7 @@ QRectF WorldView::shownRect(const BodyItem& item, const physics::World& world,
 QRectF WorldView::anchorsAndExtras() const
 {
     QRectF box;
-    const physics::World& w = m_controller.world();
+    const physics::World& w = m_run.world();
     auto add = [&](physics::BodyId id, const physics::Vec2& anchor) {
         const physics::Vec2 p =
             id == physics::kWorld ? anchor : w.body(id).transform().apply(anchor);
@@ -103,13 +103,13 @@ bool WorldView::contentWithin(const QRectF& area) const
         const double r = item.reach();
         return area.contains(QRectF(t.dx() - r, t.dy() - r, 2 * r, 2 * r));
     };
-    const physics::World& w = m_controller.world();
+    const physics::World& w = m_run.world();
     if (!w.divergence())
         for (std::size_t i = 0; i < m_items.size(); ++i)
             if (!within(*m_items[i], w, static_cast<physics::BodyId>(i)))
                 return false;
     for (const Ghost& g : m_ghosts)
-        if (const physics::World& vw = m_controller.variant(g.variant);
+        if (const physics::World& vw = m_run.variant(g.variant);
             !vw.divergence() && !within(*g.item, vw, g.body))
             return false;
     const QRectF rest = anchorsAndExtras();
