@@ -3495,8 +3495,12 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Čísla první srážky se tu objeví, jakmile k&#xa0;ní dojde.</translation>
     </message>
     <message>
-        <source>Impulse formula with these numbers</source>
-        <translation>Vzorec pro impuls s&#xa0;těmito čísly</translation>
+        <source>Impulse formula</source>
+        <translation>Vzorec impulsu</translation>
+    </message>
+    <message>
+        <source>The impulse formula with this collision&apos;s numbers</source>
+        <translation>Vzorec impulsu s&#xa0;čísly této srážky</translation>
     </message>
     <message>
         <source>Show the impulse formula</source>

@@ -21,6 +21,7 @@
 #include <QHeaderView>
 #include <QMessageBox>
 #include <QRadioButton>
+#include <QScrollBar>
 
 using rigidlab::test::isChoice;
 
@@ -237,6 +238,16 @@ private:
                                             .arg(QLatin1String(name))
                                             .arg(drawn)
                                             .arg(wanted)));
+            // Sideways too: every column in sight without scrolling (a panel wider than its
+            // dock hid the collision table's "after" column off to the right).
+            const int across = QRect(table->mapTo(scroll->viewport(), QPoint(0, 0)), table->size())
+                                   .intersected(scroll->viewport()->rect())
+                                   .width();
+            QVERIFY2(across >= table->width() && !table->horizontalScrollBar()->isVisible(),
+                     qPrintable(where + QStringLiteral("%1 table: %2 of its %3 px across in sight")
+                                            .arg(QLatin1String(name))
+                                            .arg(across)
+                                            .arg(table->width())));
         }
     }
 

@@ -55,7 +55,10 @@ ImpulseFormulaView::ImpulseFormulaView(QWidget* parent)
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    m_toggle->setText(tr("Impulse formula with these numbers"));
+    // Short: the toolbutton does not wrap, and a longer text made the collision panel wider
+    // than the window's right-hand column at 1024 x 768 (its "after" column out of sight).
+    m_toggle->setText(tr("Impulse formula"));
+    m_toggle->setToolTip(tr("The impulse formula with this collision's numbers"));
     m_toggle->setCheckable(true);
     m_toggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
     m_toggle->setArrowType(Qt::RightArrow);
