@@ -3,6 +3,7 @@
 
 #include "cli_common.h"
 
+#include "plots/plot_export.h"
 #include "plots/work_precision_plot.h"
 
 #include "format/atomic_file.h"

@@ -288,8 +288,7 @@ int parseArguments(const QStringList& args, Options& options, QString& message)
         return 2;
     }
     if (parser.isSet(o.help)) {
-        message = parser.helpText().replace(QStringLiteral("<executable_name>"),
-                                            QStringLiteral("rigidlab"));
+        message = parser.helpText();
         return 0;
     }
     if (parser.isSet(o.version)) {
@@ -470,14 +469,35 @@ void deleteWindows()
         delete w.data();
 }
 
-} // namespace
-
-int main(int argc, char** argv)
+/// The language the command line asks for (--lang CODE or --lang=CODE), read before the
+/// options are, so that what they say about a mistake is said in it; empty when none is asked.
+QString languageAsked(const QStringList& args)
 {
-    // Arguments first: --help, --version and mistakes must not need a display.
-    useParentConsole();
-    const QStringList args = programArguments(argc, argv);
-    Options options;
+    const QString flag = QStringLiteral("--lang");
+    QString asked;
+    for (qsizetype i = 0; i < args.size(); ++i) {
+        if (args[i] == flag && i + 1 < args.size())
+            asked = args[i + 1];
+        else if (args[i].startsWith(flag + QLatin1Char('=')))
+            asked = args[i].mid(flag.size() + 1);
+    }
+    return asked;
+}
+
+/// Reads the arguments, in the language they ask for (else the saved one, else the system's),
+/// and says --help, --version, a mistake or the lack of a display. Returns -1 to go on, else
+/// the exit status.
+int readArguments(const QStringList& args, Options& options)
+{
+    // Translations need an application, and the window's needs a display that --help and a
+    // mistake must not: a core application for the time it takes to read the arguments.
+    // Named as the help's usage line names the program, whatever path started it.
+    int readerArgc = 1;
+    char readerName[] = "rigidlab";
+    char* readerArgv[] = {readerName, nullptr};
+    QCoreApplication reader(readerArgc, readerArgv);
+    rigidlab::ui::applyLanguage(rigidlab::ui::chooseLanguage(
+        languageAsked(args), rigidlab::ui::savedLanguage(), QLocale::system()));
     QString message;
     if (const int status = parseArguments(args, options, message); status >= 0) {
         if (status == 0)
@@ -494,20 +514,35 @@ int main(int argc, char** argv)
                             << '\n';
         return 2;
     }
+    return -1;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    useParentConsole();
+    rigidlab::lessons::useSettingsFiles();
+    // Before any application: the saved language is read with them, and the process's locale
+    // is set once, when the first application starts. Qt's file dialog writes its dates in
+    // that locale, not the one the window sets: --lang sets the date conventions too
+    // ("3. 12." in Czech, not "3 Dec").
+    QCoreApplication::setOrganizationName(QStringLiteral("RigidLab"));
+    QCoreApplication::setApplicationName(QStringLiteral("RigidLab"));
+    QCoreApplication::setApplicationVersion(QStringLiteral(RIGIDLAB_VERSION));
+    const QStringList args = programArguments(argc, argv);
+    if (const auto* language = rigidlab::ui::findLanguage(languageAsked(args)))
+        qputenv("LC_TIME", language->locale.toString().toLatin1() + ".UTF-8");
+
+    // Arguments first: --help, --version and mistakes must not need a display.
+    Options options;
+    if (const int status = readArguments(args, options); status >= 0)
+        return status;
     // Read when the application starts; every widget is scaled by it.
     if (options.scale)
         qputenv("QT_SCALE_FACTOR", QByteArray::number(*options.scale));
 
-    // Qt's file dialog writes its dates in the system's locale, not the one the window sets:
-    // --lang sets the system's date conventions too ("3. 12." in Czech, not "3 Dec").
-    if (const auto* language = rigidlab::ui::findLanguage(options.lang))
-        qputenv("LC_TIME", language->locale.toString().toLatin1() + ".UTF-8");
-
-    rigidlab::lessons::useSettingsFiles();
     QApplication app(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("RigidLab"));
-    QApplication::setApplicationName(QStringLiteral("RigidLab"));
-    QApplication::setApplicationVersion(QStringLiteral(RIGIDLAB_VERSION));
     // --lang, else View › Language's saved choice, else the system's language.
     rigidlab::ui::applyLanguage(rigidlab::ui::chooseLanguage(
         options.lang, rigidlab::ui::savedLanguage(), QLocale::system()));

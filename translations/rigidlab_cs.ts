@@ -1348,6 +1348,10 @@
         <source>: bodies: %1 or more pairs of bodies start overlapping (&quot;%2&quot; and &quot;%3&quot; among them): the contacts push them apart at once</source>
         <translation>: bodies: %1 nebo víc dvojic těles se na začátku překrývá (mezi nimi „%2“ a „%3“): kontakty je hned odtlačí od sebe</translation>
     </message>
+    <message>
+        <source>not for a question with &quot;number&quot;: its answer is the number the lesson gives, nothing is measured or chosen</source>
+        <translation>nepatří k otázce s &quot;number&quot;: její odpovědí je číslo, které uvádí lekce, nic se neměří ani nevybírá</translation>
+    </message>
 </context>
 <context>
     <name>ImpulseFormula</name>
@@ -1466,6 +1470,18 @@
         <source>Not quite: the right answer is “%1” (you chose “%2”).</source>
         <translation>Ne tak docela: správná odpověď je „%1“ (vaše volba: „%2“).</translation>
     </message>
+    <message>
+        <source>The right answer is %1.</source>
+        <translation>Správný výsledek je %1.</translation>
+    </message>
+    <message>
+        <source>Right: the answer is %1 (you said %2).</source>
+        <translation>Správně: výsledek je %1 (vaše odpověď: %2).</translation>
+    </message>
+    <message>
+        <source>Not quite: the right answer is %1 (you said %2).</source>
+        <translation>Ne tak docela: správný výsledek je %1 (vaše odpověď: %2).</translation>
+    </message>
 </context>
 <context>
     <name>LessonExport</name>
@@ -1523,6 +1539,57 @@
     <message>
         <source>Settings not saved: cannot write %1</source>
         <translation>Nastavení se neuložilo: nelze zapisovat do %1</translation>
+    </message>
+</context>
+<context>
+    <name>NumberGivenQuestion</name>
+    <message>
+        <source>The right answer</source>
+        <translation>Správný výsledek</translation>
+    </message>
+    <message>
+        <source>How far off an answer may be</source>
+        <translation>O kolik se odpověď smí lišit</translation>
+    </message>
+    <message>
+        <source>Unit of the answer</source>
+        <translation>Jednotka odpovědi</translation>
+    </message>
+    <message>
+        <source>Right ans&amp;wer</source>
+        <translation>Správný &amp;výsledek</translation>
+    </message>
+    <message>
+        <source>Right &amp;within ±</source>
+        <translation>Správně v &amp;rozmezí ±</translation>
+    </message>
+    <message>
+        <source>&amp;Unit</source>
+        <translation>&amp;Jednotka</translation>
+    </message>
+    <message>
+        <source>Give up and show the right answer</source>
+        <translation>Vzdát to a ukázat správnou odpověď</translation>
+    </message>
+    <message>
+        <source>Your answer (%1):</source>
+        <translation>Vaše odpověď (%1):</translation>
+    </message>
+    <message>
+        <source>Right answer: %1 (accepted from %2 to %3)</source>
+        <translation>Správný výsledek: %1 (uznává se od %2 do %3)</translation>
+    </message>
+    <message>
+        <source>Right answer: %1</source>
+        <translation>Správný výsledek: %1</translation>
+    </message>
+    <message>
+        <source>a number the lesson gives</source>
+        <translation>číslo, které uvádí lekce</translation>
+    </message>
+    <message>
+        <source>The right answer is %1; answers from %2 to %3 are right.</source>
+        <translation>Správný výsledek je %1; správně jsou odpovědi od %2 do %3.</translation>
     </message>
 </context>
 <context>
@@ -1893,6 +1960,14 @@ n = (%4; %5)</translation>
         <source>Absolute tolerance</source>
         <translation>Absolutní tolerance</translation>
     </message>
+    <message>
+        <source>Right answer</source>
+        <translation>Správný výsledek</translation>
+    </message>
+    <message>
+        <source>Right within</source>
+        <translation>Správně v rozmezí</translation>
+    </message>
 </context>
 <context>
     <name>SceneWords</name>
@@ -2067,6 +2142,10 @@ n = (%4; %5)</translation>
     <message>
         <source>File › Class results… on a class of five, with a damaged file and another lesson&apos;s</source>
         <translation>Soubor › Výsledky třídy… na třídě pěti žáků, s poškozeným souborem a souborem jiné lekce</translation>
+    </message>
+    <message>
+        <source>the window system made the window %1×%2 (logical pixels), not the %3×%4 asked for</source>
+        <translation>okenní systém dal oknu velikost %1×%2 (logických pixelů), ne požadovaných %3×%4</translation>
     </message>
 </context>
 <context>
@@ -5158,6 +5237,17 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::PlotExporter</name>
+    <message>
+        <source>Export plot</source>
+        <translation>Exportovat graf</translation>
+    </message>
+    <message>
+        <source>Export failed</source>
+        <translation>Export se nezdařil</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::PlotWidget</name>
     <message>
         <source>Export as PNG…</source>
@@ -5186,14 +5276,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Whole run</source>
         <translation>Celý běh</translation>
-    </message>
-    <message>
-        <source>Export plot</source>
-        <translation>Exportovat graf</translation>
-    </message>
-    <message>
-        <source>Export failed</source>
-        <translation>Export se nezdařil</translation>
     </message>
     <message>
         <source>time t [s]</source>
@@ -5532,6 +5614,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>The right option</source>
         <translation>Správná možnost</translation>
+    </message>
+    <message>
+        <source>The right answer</source>
+        <translation>Správný výsledek</translation>
     </message>
 </context>
 <context>

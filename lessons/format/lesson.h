@@ -4,8 +4,10 @@
 // only the plots, overlays and panels the step needs. Format: lessons/LESSON_FORMAT.md.
 
 #include "format/languages.h"
+#include "format/question_kinds.h"
 #include "format/scene.h"
 #include "format/schema_value.h"
+#include "format/step_settings.h"
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
 
@@ -43,86 +45,6 @@ inline constexpr int kMaxVariants = 6;
 /// The largest lesson file read [bytes].
 inline constexpr qint64 kMaxLessonFileBytes = 8 * 1024 * 1024;
 
-/// What a question reads from the running simulation.
-struct Measure {
-    enum class Kind {
-        Apex,            ///< height of the body's n-th apex after a bounce, above `above` [m]
-        Speed,           ///< |v| of the body at `time` [m/s]
-        VelocityX,       ///< vx of the body at `time` [m/s]
-        VelocityY,       ///< vy of the body at `time` [m/s]
-        AngularVelocity, ///< omega of the body at `time` [rad/s]
-        PositionX,       ///< x of the body origin at `time` [m]
-        PositionY,       ///< y of the body origin at `time` [m]
-        EnergyDrift,     ///< (E + dissipated - E0) / |E0| at `time` [%]
-        MomentumX,       ///< total px at `time` [kg m/s]
-        MomentumY,       ///< total py at `time` [kg m/s]
-    };
-    Kind kind = Kind::Apex;
-    QString body;     ///< body id (not for EnergyDrift, MomentumX, MomentumY)
-    int n = 1;        ///< Apex: 1 = the apex after the first bounce
-    double above = 0; ///< Apex: heights are measured above this y [m]
-    double time = 0;  ///< the others: when the value is read [s]
-};
-
-/// Settings a step sets on top of its scene's (its "settings", a question's "set"): values by
-/// the key of their row in the run-time settings table (schema::settings(), scene_schema.h),
-/// in the table's value types ("integrator": its name, "gravity": on or off). A key it does not
-/// hold is the scene's.
-class StepSettings {
-public:
-    /// The value given for `key`, or unset.
-    schema::Value value(std::string_view key) const
-    {
-        const auto it = m_values.find(key);
-        return it == m_values.end() ? schema::Value() : it->second;
-    }
-    /// The value for `key` as a T, when it is given (and is one).
-    template <class T> std::optional<T> get(std::string_view key) const
-    {
-        const schema::Value v = value(key);
-        if (const T* t = std::get_if<T>(&v))
-            return *t;
-        return std::nullopt;
-    }
-    bool has(std::string_view key) const { return m_values.find(key) != m_values.end(); }
-    /// Gives `key` the value `v`; unset: the scene's again.
-    void set(std::string_view key, const schema::Value& v)
-    {
-        if (std::holds_alternative<std::monostate>(v))
-            m_values.erase(std::string(key));
-        else
-            m_values.insert_or_assign(std::string(key), v);
-    }
-    bool empty() const { return m_values.empty(); }
-
-private:
-    std::map<std::string, schema::Value, std::less<>> m_values;
-};
-
-/// The fewest and the most options a choice question offers.
-inline constexpr int kMinChoices = 2;
-inline constexpr int kMaxChoices = 6;
-
-/// A question answered by a number measured from the run: the answer typed is right within
-/// the tolerances of the value `measure` reads.
-struct MeasuredQuestion {
-    Measure measure;                ///< what the answer is checked against
-    QString unit;                   ///< shown after the answer box, e.g. "m"
-    double tolerance = 0.05;        ///< relative to the measured value
-    double absoluteTolerance = 0.0; ///< added to it, for values near zero
-    /// The settings the student is asked to set (with the step's controls) before the run
-    /// this question measures: keys of "settings" but timeScale. The answer is measured with
-    /// them, and a run without them is not judged. All unset: the step's own settings.
-    StepSettings set;
-};
-
-/// A question answered by picking one of a few texts; nothing is measured.
-struct ChoiceQuestion {
-    /// The options, in the language the lesson is kept in (kMinChoices to kMaxChoices).
-    QStringList choices;
-    int answer = 0; ///< the right one of `choices` (0-based)
-};
-
 /// A question: what every kind has (its prompt, hint and what it holds back) and its kind, a
 /// type of its own. Where the kinds differ the code visits `kind` (physics/overloaded.h), so
 /// that a new kind does not compile until every such place handles it.
@@ -135,7 +57,7 @@ struct Question {
     /// answered right, twice wrong or shown: "run", "panel:NAME", "plot:NAME",
     /// "column:collision.after", "column:bounces.heights" (LESSON_FORMAT.md).
     QStringList holdBack;
-    std::variant<MeasuredQuestion, ChoiceQuestion> kind;
+    QuestionKind kind;
 
     /// The kind's own part when the question is of kind K, else null: for a place that reads
     /// one kind only (the others have nothing of the sort); where each kind does something

@@ -246,7 +246,7 @@ struct QuestionReading {
 };
 
 /// A part of a question (a row of kind Part), by its key, read by its own function: one
-/// overload per kind of question.
+/// overload per kind of question that has parts (format/question_kind.h).
 bool readKindPart(const QuestionReading& r, std::string_view key, MeasuredQuestion& measured)
 {
     if (key == schema::question_keys::kMeasure)
@@ -265,48 +265,24 @@ bool readKindPart(const QuestionReading& r, std::string_view key, ChoiceQuestion
     return true;
 }
 
-/// Checks across a kind's fields, after its rows.
-bool checkKind(const QuestionReading& r, const MeasuredQuestion& measured)
-{
-    if (measured.tolerance == 0 && measured.absoluteTolerance == 0) {
-        return r.in.fail(joinPlace(r.place, u"tolerance"),
-                         FileMessages::tr("0, and so is absoluteTolerance: no typed answer "
-                                          "would ever be right"));
-    }
-    return true;
-}
-
-bool checkKind(const QuestionReading&, const ChoiceQuestion&)
-{
-    return true;
-}
-
-/// What a key of another kind is told in a question of this kind. A measured question is
-/// one that holds no other kind's key (questionKindIn), so it never meets one.
-QString otherKindsKey(const MeasuredQuestion&)
-{
-    assert(false && "a question with another kind's key is of that kind");
-    return {};
-}
-
-QString otherKindsKey(const ChoiceQuestion&)
-{
-    return FileMessages::tr("not for a question with \"choices\": it is answered by "
-                            "choosing, nothing is measured");
-}
-
 /// The kind's own rows, in the file's order: the texts and plain values as their rows say,
 /// each part by its own function.
 template <class K> bool readKind(const QuestionReading& r, K& kind)
 {
     for (const schema::KindField<K>& row : schema::kindFields(std::type_identity<K>{})) {
-        const bool ok = row.kind == schema::LessonKind::Part
-                            ? readKindPart(r, row.key, kind)
-                            : readLessonRow(r.in, r.texts, row, r.object, r.place, kind);
+        bool ok = true;
+        if (row.kind != schema::LessonKind::Part)
+            ok = readLessonRow(r.in, r.texts, row, r.object, r.place, kind);
+        else if constexpr (requires { readKindPart(r, row.key, kind); })
+            ok = readKindPart(r, row.key, kind);
+        else
+            assert(false && "a kind with a part has its readKindPart here");
         if (!ok)
             return false;
     }
-    return checkKind(r, kind);
+    if (const std::optional<KindProblem> problem = kindProblem(kind))
+        return r.in.fail(joinPlace(r.place, schema::jsonKey(problem->key)), problem->message);
+    return true;
 }
 
 bool readQuestion(JsonReader& in, LocalTexts& texts, const QJsonValue& value, const QString& place,

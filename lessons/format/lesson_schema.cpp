@@ -13,17 +13,6 @@ namespace {
 
 using rows::as;
 
-/// A plain number of a step or question, by its member.
-template <class Target, double Target::*member> Value numberGet(const Target& t, std::size_t)
-{
-    return t.*member;
-}
-template <class Target, double Target::*member>
-void numberSet(Target& t, std::size_t, const Value& v)
-{
-    t.*member = as<double>(v);
-}
-
 const StepField kStepFields[] = {
     {.key = "title", .kind = LessonKind::Line, .required = true, .text = &LessonStep::title},
     {.key = "text", .kind = LessonKind::Paragraphs, .text = &LessonStep::text},
@@ -83,40 +72,22 @@ const QuestionField kQuestionFields[] = {
     {.key = question_keys::kHoldBack},
 };
 
-const KindField<MeasuredQuestion> kMeasuredFields[] = {
-    {.key = question_keys::kMeasure},
-    {.key = question_keys::kUnit, .kind = LessonKind::Unit, .text = &MeasuredQuestion::unit},
-    {.key = question_keys::kTolerance,
-     .kind = LessonKind::Plain,
-     .value = {.key = question_keys::kTolerance,
-               .label = QT_TRANSLATE_NOOP("SceneSchema", "Tolerance"),
-               .kind = Kind::Number,
-               .range = {0.0, 1.0, ""},
-               .rule = detail::NumberRule::UnitInterval,
-               .get = numberGet<MeasuredQuestion, &MeasuredQuestion::tolerance>,
-               .set = numberSet<MeasuredQuestion, &MeasuredQuestion::tolerance>}},
-    {.key = question_keys::kAbsoluteTolerance,
-     .kind = LessonKind::Plain,
-     .value = {.key = question_keys::kAbsoluteTolerance,
-               .label = QT_TRANSLATE_NOOP("SceneSchema", "Absolute tolerance"),
-               .kind = Kind::Number,
-               .range = limits::kAbsoluteTolerance,
-               .rule = detail::NumberRule::NonNegative,
-               .get = numberGet<MeasuredQuestion, &MeasuredQuestion::absoluteTolerance>,
-               .set = numberSet<MeasuredQuestion, &MeasuredQuestion::absoluteTolerance>}},
-    {.key = question_keys::kSet},
-};
-
-const KindField<ChoiceQuestion> kChoiceFields[] = {
-    {.key = question_keys::kChoices},
-    {.key = question_keys::kAnswer},
-};
-
 template <class Row> const Row* findRow(std::span<const Row> rows, std::string_view key)
 {
     const auto it =
         std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.key == key; });
     return it == rows.end() ? nullptr : &*it;
+}
+
+/// How many kinds of question have a row with this key.
+int kindsWithKey(std::string_view key)
+{
+    int kinds = 0;
+    forEachQuestionKind([&]<class K>(std::type_identity<K> kind) {
+        for (const KindField<K>& f : kindFields(kind))
+            kinds += f.key == key ? 1 : 0;
+    });
+    return kinds;
 }
 
 } // namespace
@@ -131,24 +102,15 @@ std::span<const QuestionField> questionFields()
     return kQuestionFields;
 }
 
-std::span<const KindField<MeasuredQuestion>> kindFields(std::type_identity<MeasuredQuestion>)
-{
-    return kMeasuredFields;
-}
-
-std::span<const KindField<ChoiceQuestion>> kindFields(std::type_identity<ChoiceQuestion>)
-{
-    return kChoiceFields;
-}
-
 std::size_t questionKindIn(const QJsonObject& object)
 {
+    // A key that several kinds have ("unit") tells none of them apart.
     std::size_t index = 0;
     std::size_t found = 0;
     forEachQuestionKind([&]<class K>(std::type_identity<K> kind) {
         if (found == 0 && index > 0)
             for (const KindField<K>& f : kindFields(kind))
-                if (object.contains(rows::fromView(f.key)))
+                if (object.contains(rows::fromView(f.key)) && kindsWithKey(f.key) == 1)
                     found = index;
         ++index;
     });
@@ -202,7 +164,9 @@ QStringList questionKeys()
     for (const QuestionField& f : questionFields())
         keys << rows::fromView(f.key);
     for (std::size_t k = 0; k < std::variant_size_v<decltype(Question::kind)>; ++k)
-        keys << questionKindKeys(k);
+        for (const QString& key : questionKindKeys(k))
+            if (!keys.contains(key)) // a key that several kinds have, once
+                keys << key;
     return keys;
 }
 

@@ -15,6 +15,7 @@
 // from the keys it holds (questionKindIn) and the rows of that kind only.
 
 #include "format/lesson.h"
+#include "format/lesson_rows.h"
 #include "format/scene_schema.h"
 
 #include <QString>
@@ -30,64 +31,17 @@
 
 namespace rigidlab::lessons::schema {
 
-/// How a lesson row is read and edited.
-enum class LessonKind {
-    Line,       ///< one line of text in the lesson's languages (one is enough), not empty
-    Paragraphs, ///< Markdown in the lesson's languages: a string or an array of lines
-    Unit,       ///< a symbol ("m/s", the same in every language) or a worded unit per language
-    Plain,      ///< a number or a flag: its `value` row reads and ranges it (field_reading.h)
-    Part,       ///< read by its own function
-};
-
-template <class Target> struct LessonFieldOf {
-    std::string_view key; ///< the JSON key
-    LessonKind kind = LessonKind::Part;
-    bool required = false;
-    /// Line, Paragraphs, Unit: where the text goes, in the language the lesson is read in.
-    QString Target::*text = nullptr;
-    /// Plain: the value's row, as a scene field's (its kind Number or Bool, range, rule, label,
-    /// get and set), read by detail::readPlainField.
-    FieldOf<Target> value{};
-    /// Whether the steps' runs depend on it: the editor's checks run them again when it
-    /// changes (the texts never make them).
-    bool run = false;
-};
-
-/// The JSON keys of a question's rows, spelt once: the rows are written with them, and the
-/// lesson editor, which edits a lesson's JSON, names a question's keys through them (jsonKey).
-namespace question_keys {
-inline constexpr std::string_view kPrompt = "prompt";
-inline constexpr std::string_view kHint = "hint";
-inline constexpr std::string_view kHoldBack = "holdBack";
-inline constexpr std::string_view kMeasure = "measure";
-inline constexpr std::string_view kUnit = "unit";
-inline constexpr std::string_view kTolerance = "tolerance";
-inline constexpr std::string_view kAbsoluteTolerance = "absoluteTolerance";
-inline constexpr std::string_view kSet = "set";
-inline constexpr std::string_view kChoices = "choices";
-inline constexpr std::string_view kAnswer = "answer";
-} // namespace question_keys
-
-/// A row's key as a JSON object's.
-inline QString jsonKey(std::string_view key)
-{
-    return QString::fromUtf8(key.data(), qsizetype(key.size()));
-}
-
 using StepField = LessonFieldOf<LessonStep>;
 /// A row every question has, whatever its kind.
 using QuestionField = LessonFieldOf<Question>;
-/// A row of one kind of question.
-template <class K> using KindField = LessonFieldOf<K>;
 
 /// The rows of a lesson step, in the order of the file.
 std::span<const StepField> stepFields();
 /// The rows every question has, in the order of the file.
 std::span<const QuestionField> questionFields();
-/// The rows of each kind of question, in the order of the file. A kind of Question::kind
-/// without its table here does not compile where the kinds' rows are read.
-std::span<const KindField<MeasuredQuestion>> kindFields(std::type_identity<MeasuredQuestion>);
-std::span<const KindField<ChoiceQuestion>> kindFields(std::type_identity<ChoiceQuestion>);
+// The rows of each kind of question, kindFields(std::type_identity<K>), are in its own file
+// (format/question_kinds/): a kind of Question::kind without them does not compile where the
+// kinds' rows are read.
 
 /// Calls `f(std::type_identity<K>{})` for each kind K of Question::kind, in its order.
 template <class F> void forEachQuestionKind(F&& f)
@@ -109,8 +63,8 @@ template <class K> constexpr std::size_t questionKindIndex()
 }
 
 /// The index in Question::kind of the kind of question `object` is: the first kind after
-/// the first that it holds a key of, else the first (a measured question, whose keys are
-/// missing or wrong then: the loader says which).
+/// the first that it holds a key of its own of (one no other kind has), else the first (a measured
+/// question, whose keys are missing or wrong then: the loader says which).
 std::size_t questionKindIn(const QJsonObject& object);
 /// A new question's part of the kind at `index` of Question::kind, as its struct starts.
 decltype(Question::kind) newQuestionKind(std::size_t index);

@@ -11,7 +11,6 @@
 // "mass 0: from the density", which reach the lab as an unset value (std::monostate).
 
 #include "format/json_reader.h"
-#include "format/lesson.h"
 #include "format/limits.h"
 #include "format/scene.h"
 #include "format/schema_value.h"

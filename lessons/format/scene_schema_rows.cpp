@@ -4,6 +4,8 @@
 
 #include "format/scene_schema_rows.h"
 
+#include "format/languages.h"
+
 #include "format/scene_writer.h"
 
 #include "rigidlab/physics/shape.h"

@@ -3,8 +3,6 @@
 
 #include "run/measurements.h"
 
-#include "rigidlab/physics/overloaded.h"
-
 #include <QCoreApplication>
 #include <QFileInfo>
 #include <QLocale>
@@ -20,22 +18,14 @@ struct ClassResults {
     Q_DECLARE_TR_FUNCTIONS(ClassResults)
 };
 
-// What the table reads of a question, in one place.
-bool isChoiceQuestion(const Question& q)
+// What the table reads of a question, in one place: how its kind is answered.
+AnswerForm formOf(const Question& q)
 {
-    return std::visit(physics::Overloaded{[](const MeasuredQuestion&) { return false; },
-                                          [](const ChoiceQuestion&) { return true; }},
-                      q.kind);
+    return std::visit([](const auto& kind) { return answerForm(kind); }, q.kind);
 }
 bool hasHint(const Question& q)
 {
     return !q.hint.isEmpty();
-}
-QString unitOf(const Question& q)
-{
-    return std::visit(physics::Overloaded{[](const MeasuredQuestion& m) { return m.unit; },
-                                          [](const ChoiceQuestion&) { return QString(); }},
-                      q.kind);
 }
 
 /// The tries of question `q` of step `s`, none when the student did not get there.
@@ -159,7 +149,7 @@ ClassTable emptyClassTable(const Lesson& lesson)
         const auto& questions = lesson.steps[s].questions;
         for (std::size_t q = 0; q < questions.size(); ++q)
             table.questions.push_back({static_cast<int>(s), static_cast<int>(q),
-                                       unitOf(questions[q]), isChoiceQuestion(questions[q])});
+                                       formOf(questions[q]).unit, formOf(questions[q]).chosen});
     }
     return table;
 }

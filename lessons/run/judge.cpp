@@ -5,7 +5,6 @@
 
 #include <QCoreApplication>
 #include <QLocale>
-#include <QRegularExpression>
 
 #include "rigidlab/physics/overloaded.h"
 
@@ -18,35 +17,10 @@ namespace rigidlab::lessons {
 
 namespace {
 
-// Every message is one whole sentence, its numbers as %1 placeholders, so that a translator
-// can reorder it: no sentence is assembled from words.
-struct Judge {
-    Q_DECLARE_TR_FUNCTIONS(Judge)
-};
-
-/// A number as a student would write it: enough significant digits to tell the tolerance
-/// apart (three at the usual 5 %), no rounding noise, no "-0".
+/// A measured value or answer as the verdict writes it.
 QString formatValue(double value, const MeasuredQuestion& q)
 {
-    int digits = 3;
-    if (q.tolerance > 0) {
-        digits = std::clamp(static_cast<int>(std::ceil(-std::log10(q.tolerance))) + 1, 3, 8);
-    }
-    if (std::abs(value) < 1e-12) {
-        value = 0;
-    }
-    // On screen, so in the window's locale: "0,41" in Czech (the answer box reads both).
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    QString text = locale.toString(value, 'g', digits);
-    if (text.contains(locale.exponential(), Qt::CaseInsensitive)) {
-        // 1e-05 reads badly; fixed notation with the same digits
-        const int decimals = std::clamp(
-            digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 12);
-        text = locale.toString(value, 'f', std::abs(value) < 1 ? decimals : 0);
-    }
-    // A no-break space: the unit stays on the number's line.
-    return q.unit.isEmpty() ? text : text + QChar(0x00A0) + q.unit;
+    return formatAnswer(value, q.tolerance, q.unit);
 }
 
 /// The measured part of a question judged against a value.
@@ -83,16 +57,6 @@ Verdict judge(const Question& q, double answer, const Measurements& m, const Sce
     // Without a count of tries every answer is a last try: the value is always given.
     return judgeAttempt(q, answer, m.value(measuredPart(q).measure, scene),
                         std::numeric_limits<int>::max());
-}
-
-QString keepUnitsTogether(QString text)
-{
-    // A line may break after a slash between letters ("m/" | "s"); a word joiner after each
-    // slash that follows a number's unit ("3 m/s", "2 rad/s") forbids it. The no-break
-    // space between the number and its unit is the text's own.
-    static const QRegularExpression unitSlash(QStringLiteral("(\\d\\x{00A0}[^\\s/]+)/(?=\\S)"));
-    text.replace(unitSlash, QStringLiteral("\\1/") + QChar(0x2060));
-    return text;
 }
 
 Verdict judgeAttempt(const Question& question, double answer, std::optional<double> value,
@@ -157,49 +121,6 @@ Verdict showAnswer(const Question& question, std::optional<double> value, bool a
 
 namespace {
 
-/// An option's text as a verdict quotes it; a try recorded with another lesson's options may
-/// name one the question no longer has.
-QString optionText(const ChoiceQuestion& q, int index)
-{
-    return index >= 0 && index < q.choices.size() ? q.choices[index] : QString();
-}
-
-/// A choice question's try: nothing is measured, so every try is judged. A wrong first try
-/// reads the hint (the right option stays hidden while a second try is worth something);
-/// later tries, a right one and "Show me" name the right option.
-Verdict judgeChoice(const Question& question, const ChoiceQuestion& q, const AnswerTry& attempt,
-                    TryCount& count)
-{
-    Verdict verdict;
-    verdict.measured = true;
-    verdict.value = q.answer;
-    const QString rightText = optionText(q, q.answer);
-    if (!attempt.choice) {
-        verdict.shown = true;
-        verdict.message = Judge::tr("The right answer: “%1”.").arg(rightText);
-        count.answered = true;
-        return verdict;
-    }
-    if (!count.answered)
-        ++count.attempts;
-    verdict.right = attempt.right;
-    const QString chosen = attempt.choiceText;
-    if (!verdict.right && !count.answered && count.attempts <= 1) {
-        verdict.message =
-            question.hint.isEmpty()
-                ? Judge::tr("Not quite (you chose “%1”). Try once more.").arg(chosen)
-                : Judge::tr("Not quite (you chose “%1”). Hint: %2").arg(chosen, question.hint);
-        return verdict;
-    }
-    verdict.shown = true;
-    verdict.message = verdict.right
-                          ? Judge::tr("Right: “%1”.").arg(chosen)
-                          : Judge::tr("Not quite: the right answer is “%1” (you chose “%2”).")
-                                .arg(rightText, chosen);
-    count.answered = true;
-    return verdict;
-}
-
 /// A measured question's try: an answer judged against the value measured, or "Show me".
 Verdict judgeMeasured(const Question& q, const AnswerTry& attempt, TryCount& count)
 {
@@ -222,10 +143,12 @@ Verdict judgeMeasured(const Question& q, const AnswerTry& attempt, TryCount& cou
 
 Verdict judgeTry(const Question& q, const AnswerTry& attempt, TryCount& count)
 {
+    // The measured kind's verdict needs the question whole (its hint, its measure); every
+    // other kind judges itself (format/question_kind.h).
     return std::visit(
         physics::Overloaded{
             [&](const MeasuredQuestion&) { return judgeMeasured(q, attempt, count); },
-            [&](const ChoiceQuestion& choice) { return judgeChoice(q, choice, attempt, count); }},
+            [&](const auto& kind) { return judgeKindTry(kind, q.hint, attempt, count); }},
         q.kind);
 }
 

@@ -7,6 +7,7 @@
 
 #include "format/answers_file.h"
 #include "format/lesson.h"
+#include "format/verdict.h"
 #include "rigidlab/physics/world.h"
 
 #include <QString>
@@ -129,14 +130,6 @@ private:
 /// time, if later) or diverges first.
 std::optional<double> measureAhead(const LessonStep& step, const Measure& measure);
 
-struct Verdict {
-    bool measured = false; ///< false: run the simulation further first
-    bool right = false;
-    bool shown = false; ///< the message gives the measured value
-    double value = 0;   ///< what was measured
-    QString message;    ///< what the student reads
-};
-
 /// Compares an answer with the measured value.
 Verdict judge(const Question& q, double answer, const Measurements& m, const Scene& scene);
 
@@ -150,20 +143,9 @@ Verdict judgeAttempt(const Question& q, double answer, std::optional<double> val
 /// What the student reads on asking to be shown the answer (nullopt: not measured yet).
 Verdict showAnswer(const Question& q, std::optional<double> value, bool ahead = false);
 
-/// Where a question's tries stand: the tries judged against a measured value, and whether
-/// the value has been given (after which every try is judged as a later one).
-struct TryCount {
-    int attempts = 0;
-    bool answered = false;
-};
-
 /// Judges the next try at a question as the lesson player does (an answer with
 /// judgeAttempt, "Show me" with showAnswer) and counts it in `count`. The lesson player and
 /// the worksheet, which judges a handed-in file's tries again, both judge here.
 Verdict judgeTry(const Question& q, const AnswerTry& attempt, TryCount& count);
-
-/// `text` with a word joiner after the slash of every unit that follows a number and a
-/// no-break space ("3 m/s"), so that no line breaks inside the unit.
-QString keepUnitsTogether(QString text);
 
 } // namespace rigidlab::lessons

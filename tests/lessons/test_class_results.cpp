@@ -120,6 +120,7 @@ class TestClassResults : public QObject {
 private slots:
     void init();
     void outcomesOfTheTries();
+    void numberGivenColumn();
     void filesLeftOutWithALineEach();
     void lessonFoundByItsName();
     void everyLessonWhenAsked();
@@ -205,6 +206,43 @@ void TestClassResults::outcomesOfTheTries()
              QStringLiteral("1.2 first answer [m]"));
     // One list of columns: the student's three, then four per question.
     QCOMPARE(lessons::classColumns(t).size(), std::size_t{3 + 4 * 7});
+}
+
+void TestClassResults::numberGivenColumn()
+{
+    // A question whose answer the lesson gives: its column names its unit, a typed number is
+    // judged against it as the player judged it.
+    lessons::Lesson lesson;
+    lesson.path = QStringLiteral("/l/given.json");
+    lessons::LessonStep step;
+    lessons::Question q;
+    q.prompt = QStringLiteral("p");
+    q.hint = QStringLiteral("p = m v");
+    q.kind = lessons::NumberGivenQuestion{0.8, 0.05, QStringLiteral("kg m/s")};
+    step.questions = {q};
+    lesson.steps = {step};
+    lessons::ClassTable t = lessons::emptyClassTable(lesson);
+    QCOMPARE(t.questions.size(), std::size_t{1});
+    QCOMPARE(t.questions[0].unit, QStringLiteral("kg m/s"));
+    QVERIFY(!t.questions[0].choice);
+    QCOMPARE(lessons::classColumnHead(t, {lessons::ClassColumnKind::FirstAnswer, 0}),
+             QStringLiteral("1.1 first answer [kg m/s]"));
+    const auto row = [&](std::vector<lessons::AnswerTry> tries) {
+        return lessons::studentRow(
+            lesson, answers(QStringLiteral("given.json"), QStringLiteral("A"), {{tries}}),
+            QStringLiteral("a.answers.json"));
+    };
+    using V = lessons::FirstVerdict;
+    const lessons::StudentRow right = row({checked(0.84, 0.8)});
+    QCOMPARE(right.questions[0].first, V::Right);
+    QCOMPARE(right.questions[0].firstNumber, std::optional<double>(0.84));
+    const lessons::StudentRow wrong = row({checked(0.9, 0.8), checked(0.8, 0.8)});
+    QCOMPARE(wrong.questions[0].first, V::NotRight);
+    QCOMPARE(wrong.questions[0].tries, 2);
+    QVERIFY(wrong.questions[0].hint);
+    const lessons::StudentRow shown = row({showMe(0.8)});
+    QCOMPARE(shown.questions[0].first, V::None);
+    QVERIFY(shown.questions[0].showMe);
 }
 
 void TestClassResults::filesLeftOutWithALineEach()

@@ -99,6 +99,10 @@ private slots:
     void rejectsBadChoice();
     void judgeChoiceTries();
     void choiceTriesInAnswersFile();
+    void numberGivenRead();
+    void rejectsBadNumberGiven_data();
+    void rejectsBadNumberGiven();
+    void judgeNumberGivenTries();
     void rejectsSymbolicLinkOutOfFolder();
     void sceneFileErrorsCarryBothPlaces();
     void inlineSceneErrorsContinueThePlace();

@@ -45,6 +45,25 @@ inline physics::WorldDef quietWorldDef(physics::IntegratorKind integrator, doubl
     return def;
 }
 
+/// A world for exactness tests of one solver: symplectic Euler at dt, every body's default
+/// restitution e and friction, no sleep (quietWorldDef's otherwise: no gravity, no drag).
+inline physics::WorldDef exactWorld(physics::SolverKind solver, double dt, double e,
+                                    double friction)
+{
+    physics::WorldDef def = quietWorldDef(physics::IntegratorKind::SymplecticEuler, dt);
+    def.solver = solver;
+    def.restitution = e;
+    def.friction = friction;
+    def.sleep = false;
+    return def;
+}
+
+/// The solver's name in scene files, for the rows' names.
+inline const char* solverLabel(physics::SolverKind solver)
+{
+    return physics::solverName(solver).data(); // the names are string literals
+}
+
 inline physics::BodyDef circleBody(double radius, const Vec2& origin,
                                    const Vec2& velocity = Vec2::Zero(), double density = 1.0)
 {

@@ -4,8 +4,8 @@
 // equal balls (they leave at 90°, the object ball along the line of centres at the impact), an
 // oblique collision of unequal balls with restitution, a box's corner striking another box,
 // Newton's cradle, a disc's oblique bounce off a wall with Coulomb friction, and fast bodies
-// that must not pass through a thin wall; for the soft step also rolling and sliding into
-// rolling.
+// that must not pass through a thin wall; for the soft step also sliding into rolling (its
+// coarse steps: test_soft_coarse.cpp).
 
 #include "physics_test_util.h"
 
@@ -20,6 +20,8 @@
 
 using namespace rigidlab::physics;
 using rigidlab::test::circleBody;
+using rigidlab::test::exactWorld;
+using rigidlab::test::solverLabel;
 
 namespace {
 
@@ -27,22 +29,6 @@ constexpr double kG = 9.81; // [m/s^2]
 
 constexpr SolverKind kSolvers[] = {SolverKind::SoftStep, SolverKind::SequentialImpulse,
                                    SolverKind::PaperImpulse};
-
-/// The solver's name in scene files, for the rows' names.
-const char* solverLabel(SolverKind solver)
-{
-    return solverName(solver).data(); // the names are string literals
-}
-
-WorldDef exactWorld(SolverKind solver, double dt, double e, double friction)
-{
-    WorldDef def = rigidlab::test::quietWorldDef(IntegratorKind::SymplecticEuler, dt);
-    def.solver = solver;
-    def.restitution = e;
-    def.friction = friction;
-    def.sleep = false;
-    return def;
-}
 
 /// The angle between two vectors [rad].
 double angleBetween(const Vec2& a, const Vec2& b)
@@ -68,11 +54,6 @@ private slots:
     void wallBounce();
     void thinWallStops_data();
     void thinWallStops();
-    void restingBallAtLongSteps_data();
-    void restingBallAtLongSteps();
-    void rollingKeepsSpeed();
-    void rollingDiscRidesLow_data();
-    void rollingDiscRidesLow();
     void slidingIntoRolling();
 };
 
@@ -376,118 +357,6 @@ void TestSoftExact::thinWallStops()
     }
     RL_VERIFY_AT_MOST(farthest, 2.975);
     QVERIFY(world.body(id).velocity.x() <= 0.0); // it came back
-}
-
-// A ball (e = 0.5) put down on the floor at long steps, dt = 0.1 s to 0.5 s, the soft step and
-// sequential impulses: it stays at rest, its height within 1 mm over 10 s after the first 10.
-// (A hop of one step lands at about g dt; bouncing from that, it hopped 75 mm at dt = 0.1 s,
-// forever. The paper's impulse has no threshold, as in the paper: it bounces every approach.)
-void TestSoftExact::restingBallAtLongSteps_data()
-{
-    QTest::addColumn<SolverKind>("solver");
-    QTest::addColumn<double>("dt");
-    for (SolverKind solver : {SolverKind::SoftStep, SolverKind::SequentialImpulse})
-        for (double dt : {0.1, 0.2, 0.5})
-            QTest::addRow("%s, dt %g s", solverLabel(solver), dt) << solver << dt;
-}
-
-void TestSoftExact::restingBallAtLongSteps()
-{
-    QFETCH(SolverKind, solver);
-    QFETCH(double, dt);
-    WorldDef def = exactWorld(solver, dt, 0.5, 0.6);
-    def.gravity = Vec2(0.0, -kG);
-    World world(def);
-    BodyDef ground = rigidlab::test::boxBody(100.0, 1.0, Vec2(0.0, -0.5));
-    ground.type = BodyType::Static;
-    world.addBody(ground);
-    const BodyId id = world.addBody(circleBody(0.2, Vec2(0.0, 0.2)));
-    const int steps = static_cast<int>(std::lround(10.0 / dt));
-    for (int i = 0; i < steps; ++i)
-        world.step();
-    double low = INFINITY, high = -INFINITY;
-    for (int i = 0; i < steps; ++i) {
-        world.step();
-        low = std::min(low, world.body(id).position.y());
-        high = std::max(high, world.body(id).position.y());
-    }
-    RL_VERIFY_AT_MOST(high - low, 1e-3);
-    RL_VERIFY_NEAR(high, 0.2, 0.02, 0.0);
-}
-
-// A disc rolling on level ground keeps its speed: friction does no work, and the contact takes
-// nothing. Over 10 s after the first second (in which the soft contact settles, the disc
-// sinking a fraction of a millimetre and rolling about a point that much nearer its centre),
-// to 1e-9 of the speed.
-void TestSoftExact::rollingKeepsSpeed()
-{
-    const double r = 0.2, v = 2.0;
-    WorldDef def = exactWorld(SolverKind::SoftStep, 1.0 / 60.0, 0.0, 0.6);
-    def.gravity = Vec2(0.0, -kG);
-    World world(def);
-    BodyDef ground = rigidlab::test::boxBody(100.0, 1.0, Vec2(40.0, -0.5));
-    ground.type = BodyType::Static;
-    world.addBody(ground);
-    BodyDef disc = circleBody(r, Vec2(0.0, r), Vec2(v, 0.0));
-    disc.angularVelocity = -v / r;
-    const BodyId id = world.addBody(disc);
-    for (int i = 0; i < 60; ++i)
-        world.step();
-    const Vec2 settled = world.body(id).velocity;
-    const double spin = world.body(id).angularVelocity;
-    RL_VERIFY_NEAR(settled.x(), v, 0.0, 2e-3);
-    for (int i = 0; i < 600; ++i)
-        world.step();
-    const Body& b = world.body(id);
-    RL_VERIFY_NEAR(b.velocity.x(), settled.x(), 1e-9 * v, 0.0);
-    RL_VERIFY_NEAR(b.angularVelocity, spin, 1e-9 * v / r, 0.0);
-    RL_VERIFY_NEAR(b.position.y(), r, 2e-3, 0.0);
-}
-
-// A disc of radius 0.1 m rolling on level ground in the soft step rides low: the substeps turn
-// the contact's lever arm with the disc, which lifts the contact point on a circle by
-// r (1 - cos(w t)), a gap that is not there, and the disc settles into the floor until it is
-// paid for. docs/manual.md ("The soft step at coarse steps") gives these numbers: how low it
-// rides after 1 s, and that it stays there (within 1 um from 1 s to 11 s); a disc at rest sinks
-// 0.01 mm.
-void TestSoftExact::rollingDiscRidesLow_data()
-{
-    QTest::addColumn<double>("speed"); // [m/s]
-    QTest::addColumn<double>("dt");    // [s]
-    QTest::addColumn<double>("bound"); // the sink stays below [m]
-    QTest::addRow("1 m/s, 60 Hz") << 1.0 << 1.0 / 60.0 << 1.0e-3;
-    QTest::addRow("2 m/s, 60 Hz") << 2.0 << 1.0 / 60.0 << 2.0e-3;
-    QTest::addRow("4 m/s, 60 Hz") << 4.0 << 1.0 / 60.0 << 2.5e-3;
-    QTest::addRow("2 m/s, 120 Hz") << 2.0 << 1.0 / 120.0 << 0.5e-3;
-}
-
-void TestSoftExact::rollingDiscRidesLow()
-{
-    QFETCH(double, speed);
-    QFETCH(double, dt);
-    QFETCH(double, bound);
-    const double r = 0.1;
-    WorldDef def = exactWorld(SolverKind::SoftStep, dt, 0.0, 0.5);
-    def.gravity = Vec2(0.0, -kG);
-    World world(def);
-    BodyDef ground = rigidlab::test::boxBody(200.0, 0.4, Vec2(0.0, -0.2));
-    ground.type = BodyType::Static;
-    world.addBody(ground);
-    BodyDef disc = circleBody(r, Vec2(-50.0, r), Vec2(speed, 0.0));
-    disc.mass = 1.0;
-    disc.angularVelocity = -speed / r;
-    const BodyId id = world.addBody(disc);
-    const int second = static_cast<int>(std::lround(1.0 / dt));
-    for (int i = 0; i < second; ++i)
-        world.step();
-    const double settled = r - world.body(id).position.y();
-    for (int i = 0; i < 10 * second; ++i)
-        world.step();
-    const double sink = r - world.body(id).position.y();
-    qInfo("rolling at %g m/s, dt = %g s: rides %.3f mm low after 1 s, %.3f mm after 11 s", speed,
-          dt, 1e3 * settled, 1e3 * sink);
-    RL_VERIFY_AT_MOST(sink, bound);
-    RL_VERIFY_NEAR(sink, settled, 1e-6, 0.0);
 }
 
 // A disc (I = m r^2 / 2) put down sliding at v0 without spin on ground of friction mu: it

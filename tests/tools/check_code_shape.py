@@ -132,8 +132,8 @@ def settings_restated(root, all_functions):
 # The ui/ rooms in their layers, lowest first (docs/design.md, "Layers and folders"): a room
 # includes only rooms of a lower layer. Rooms of one layer (editor, lesson_player) do not
 # include each other. A room not listed here is only checked for include cycles.
-UI_LAYERS = {"common": 0, "simulation": 1, "plots": 2, "worksheet": 3, "view": 4, "panels": 5,
-             "instruments": 5, "editor": 6, "lesson_player": 6, "measure": 7,
+UI_LAYERS = {"common": 0, "simulation": 1, "question_kinds": 1, "plots": 2, "worksheet": 3,
+             "view": 4, "panels": 5, "instruments": 5, "editor": 6, "lesson_player": 6, "measure": 7,
              "lesson_editor": 7, "window": 8}
 
 
@@ -270,17 +270,20 @@ def question_kind_flags(root, files):
             if QUESTION_KIND_FLAG.search(code)]
 
 
-LESSON_SCHEMA = "lessons/format/lesson_schema.h"
-QUESTION_KEY_READERS = ["ui/lesson_editor/"]
+# Where the question keys are spelt: every question's, and each kind's in its own file.
+QUESTION_KEY_HEADERS = ["lessons/format/lesson_rows.h", "lessons/format/question_kinds/"]
+QUESTION_KEY_READERS = ["ui/lesson_editor/", "ui/question_kinds/"]
 
 
 def question_key_literals(root, files):
     """A finding for each question row's key written as a string literal in the lesson editor:
     the keys are the ones lesson_schema.h spells in its `question_keys` namespace."""
-    header = (root / LESSON_SCHEMA).read_text(encoding="utf-8")
+    headers = [root / QUESTION_KEY_HEADERS[0]] + sorted(
+        (root / QUESTION_KEY_HEADERS[1]).glob("*.h"))
+    header = "".join(h.read_text(encoding="utf-8") for h in headers)
     keys = re.findall(r'inline constexpr std::string_view k\w+ = "(\w+)";', header)
     if not keys:
-        return [f"{LESSON_SCHEMA}: no question keys found (namespace question_keys)"]
+        return [f"{QUESTION_KEY_HEADERS[0]}: no question keys found (namespace question_keys)"]
     pattern = re.compile(r'"(' + "|".join(keys) + r')"')
     out = []
     for f in files:
@@ -290,7 +293,7 @@ def question_key_literals(root, files):
         for number, line in enumerate(f.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
             for m in pattern.finditer(line.split("//")[0]):
                 out.append(f"{rel}:{number}: the question key \"{m.group(1)}\" written out; name "
-                           f"it through lessons::schema::question_keys (lesson_schema.h)")
+                           f"it through lessons::schema::question_keys (lesson_rows.h, its kind's file)")
     return out
 
 

@@ -147,6 +147,23 @@ inline QString largestMinimums(const QWidget& window)
     return out.join(QStringLiteral(", "));
 }
 
+/// Where the frame of window `w` (the window manager's decoration included) leaves a screen
+/// of size `screen`, said with the widgets that hold it large; empty when it lies inside. A
+/// window 1143 px wide on a 1024-pixel projector hides its right-hand docks.
+inline QString frameOutside(const QWidget& w, const QSize& screen)
+{
+    const QRect frame = w.frameGeometry();
+    if (QRect(QPoint(0, 0), screen).contains(frame))
+        return QString();
+    return QStringLiteral("the window's frame %1 leaves the %2x%3 screen (least size %4x%5: %6)")
+        .arg(rectText(frame))
+        .arg(screen.width())
+        .arg(screen.height())
+        .arg(w.minimumSizeHint().width())
+        .arg(w.minimumSizeHint().height())
+        .arg(largestMinimums(w));
+}
+
 struct DockPlace {
     QString name;
     bool hidden = false;
@@ -220,13 +237,16 @@ inline void showOn(MainWindow& w, const QSize& screen)
 }
 
 /// The window in presentation mode as a 1024×768 projector shows it (as rigidlab --present
-/// --screenshots makes it: full screen is the offscreen platform's own size).
+/// --screenshots makes it: full screen is the offscreen platform's own size). Full screen has
+/// no frame: the window with its frame covers the screen, as much of it as full screen would.
 inline void presentOn(MainWindow& w, const QSize& screen)
 {
     showOn(w, screen);
     w.setPresentation(true);
     w.setWindowState(Qt::WindowNoState);
-    w.resize(screen);
+    const QSize frame = w.frameGeometry().size() - w.size();
+    w.resize(screen - frame);
+    w.move(0, 0); // move() places the frame
     QCoreApplication::processEvents();
 }
 

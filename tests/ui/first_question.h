@@ -32,7 +32,7 @@ inline MeasuredQuestion runToFirstQuestion(rigidlab::ui::MainWindow& w, int maxS
     const auto& st = steps[static_cast<std::size_t>(q.step)];
     for (int k = 0; k < maxSteps && !q.value; ++k) {
         w.controller().stepForward();
-        q.value = w.controller().measurements().value(
+        q.value = w.controller().lessonWatch().measurements().value(
             rigidlab::test::measuredOf(st.questions[0]).measure, st.scene);
     }
     return q;

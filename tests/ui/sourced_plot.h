@@ -18,7 +18,7 @@ struct SourcedPlot {
     std::unique_ptr<ui::PlotWidget> plot;
 
     /// Takes `made` (a plot without a parent) and sets `buffer` as its source.
-    explicit SourcedPlot(ui::PlotWidget* made) : plot(made) { plot->setSource(&buffer); }
+    explicit SourcedPlot(ui::PlotWidget* made) : plot(made) { plot->model().setSource(&buffer); }
     SourcedPlot(const SourcedPlot&) = delete;
     SourcedPlot& operator=(const SourcedPlot&) = delete;
 };

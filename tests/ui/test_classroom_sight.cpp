@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What a class sees on a 1024×768 projector, in Czech (the longest texts), in the window, with
 // the Instruments open and in presentation mode, on every step of every shipped lesson,
-// nothing scrolled: the first question's answer box, its Check button and its verdict in
-// sight in the Lesson dock; the verdict as large as the step's text; each plot shown with a
-// data area a class can read and no legend over its data; each table panel scrolled to its
-// table, not to the description above it.
+// nothing scrolled: the window's frame on the screen; the first question's answer box, its
+// Check button and its verdict in sight in the Lesson dock; the verdict as large as the step's
+// text; each plot shown with a data area a class can read and no legend over its data; each
+// table panel scrolled to its table, not to the description above it.
 
 #include "classroom_util.h"
 #include "test_main.h"
@@ -14,9 +14,12 @@
 #include "measure/measurement_session.h"
 #include "plots/plot_shelf.h"
 
+#include "format/data_dirs.h"
+
 #include "question_kinds.h"
 
 #include <QHeaderView>
+#include <QMessageBox>
 #include <QRadioButton>
 
 using rigidlab::test::isChoice;
@@ -85,6 +88,7 @@ private slots:
             presentOn(w, kProjector);
         else
             showOn(w, kProjector);
+        QVERIFY2(frameOutside(w, kProjector).isEmpty(), qPrintable(frameOutside(w, kProjector)));
         auto* lessonDock = w.findChild<QDockWidget*>(QStringLiteral("lessonDock"));
         QVERIFY(lessonDock);
         int questions = 0;
@@ -103,6 +107,10 @@ private slots:
                 const QString where =
                     QStringLiteral("%1 step %2: ").arg(QFileInfo(path).baseName()).arg(i + 1);
                 settle();
+                // Whatever the step shows, the window stays on the screen: a wider one would
+                // pass every check below with its right-hand docks off the projector.
+                if (const QString off = frameOutside(w, kProjector); !off.isEmpty())
+                    QFAIL(qPrintable(where + off));
                 if (!step.questions.empty()) {
                     checkFirstQuestion(w, *lessonDock, step.questions.front(), where);
                     ++questions;
@@ -121,6 +129,40 @@ private slots:
         QVERIFY2(questions >= 10, qPrintable(QString::number(questions)));
         QVERIFY2(plots >= atLeast(20, 17), qPrintable(QString::number(plots)));
         QVERIFY2(measurementPlots >= atLeast(2, 1), qPrintable(QString::number(measurementPlots)));
+    }
+
+    // Lesson 7's fit on the projector: once Fit has answered, every line of its result is in
+    // sight in the Measurement dock (the controls' column scrolls to it). In the window only:
+    // in presentation mode the panel is a few pixels taller than its dock.
+    void fitResultInSight()
+    {
+        MainWindow w;
+        w.setUnsavedAsker([] { return int(QMessageBox::Discard); });
+        showOn(w, kProjector);
+        QCOMPARE(
+            w.openLesson(lessons::shippedLessonsDir() + QStringLiteral("/lab_vs_measurement.json"),
+                         true),
+            QString());
+        w.lessonPlayer().goToStep(1); // "Fit e to the measurement"
+        ui::MeasurementSession& session = w.measurement();
+        QCOMPARE(session.load(lessons::shippedDataDir() +
+                              QStringLiteral("/measure/samples/ball_tracker.csv")),
+                 QString());
+        settle();
+        QVERIFY2(session.fit().ok, qPrintable(session.fit().error));
+        settle();
+        ui::MeasurementPanel& panel = *session.panel();
+        QLabel* result = nullptr;
+        for (QLabel* l : panel.findChildren<QLabel*>())
+            if (l->isVisible() && l->text() == panel.fitText())
+                result = l;
+        QVERIFY2(result && panel.fitText().contains(QStringLiteral("±")),
+                 qPrintable(panel.fitText()));
+        QDockWidget* dock = w.dock(QStringLiteral("measurement"));
+        QVERIFY(dock && !dock->visibleRegion().isEmpty());
+        QVERIFY2(frameOutside(w, kProjector).isEmpty(), qPrintable(frameOutside(w, kProjector)));
+        QVERIFY2(inSight(*result, *dock),
+                 qPrintable(QStringLiteral("fit result at ") + placeOf(*result, *dock)));
     }
 
 private:

@@ -130,8 +130,8 @@ QStringList problems(const QList<std::pair<QString, QColor>>& colours, const QCo
 QStringList plotProblems(const ui::PlotWidget& plot)
 {
     QList<std::pair<QString, QColor>> colours;
-    for (int s = 0; s < plot.seriesCount(); ++s)
-        colours.append({plot.seriesName(s), plot.graph(s)->pen().color()});
+    for (int s = 0; s < plot.model().seriesCount(); ++s)
+        colours.append({plot.model().seriesName(s), plot.graph(s)->pen().color()});
     QStringList out;
     for (const QString& p : problems(colours, ui::theme::plotBackground()))
         out << plot.title() + QStringLiteral(": ") + p;

@@ -281,7 +281,7 @@ void TestDrawings::billiardsBallsBigAndBreakSlow()
         double breakTime = -1;
         while (c.world().time() < 3.0) {
             c.stepForward();
-            if (breakTime < 0 && !c.measurements().collisions().empty())
+            if (breakTime < 0 && !c.lessonWatch().measurements().collisions().empty())
                 breakTime = c.world().time();
             if (breakTime >= 0 && c.world().time() > breakTime + 0.5)
                 break;

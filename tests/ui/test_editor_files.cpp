@@ -159,7 +159,7 @@ private slots:
         moveBody(w, i, by);
         // The world is rebuilt from the edit, paused at t = 0.
         QVERIFY(originOf(w, i) == physics::Vec2(opened + by));
-        QCOMPARE(w.controller().currentStep(), 0LL);
+        QCOMPARE(w.controller().world().stepCount(), 0LL);
         QVERIFY(w.document()->isModified());
         QVERIFY(w.isWindowModified()); // the "*" of the title
         for (int k = 0; k < 50; ++k)

@@ -328,7 +328,7 @@ void TestEditorWindow::newSceneOpensEditModeAndTheWorldHolds()
     w.controller().stepBack();
     w.controller().seek(10);
     w.controller().advanceFrame();
-    QCOMPARE(w.controller().currentStep(), 0LL);
+    QCOMPARE(w.controller().world().stepCount(), 0LL);
     QCOMPARE(w.controller().world().time(), 0.0);
 
     // Leaving Edit mode keeps the scene paused at its start; Step and Back are back with their
@@ -339,7 +339,7 @@ void TestEditorWindow::newSceneOpensEditModeAndTheWorldHolds()
     QVERIFY(step->isEnabled() && back->isEnabled());
     QCOMPARE(step->toolTip(), stepTip);
     w.controller().stepForward();
-    QCOMPARE(w.controller().currentStep(), 1LL);
+    QCOMPARE(w.controller().world().stepCount(), 1LL);
 }
 
 void TestEditorWindow::lessonStepBuiltInTheEditorIsJudged()
@@ -395,7 +395,8 @@ void TestEditorWindow::lessonStepBuiltInTheEditorIsJudged()
     while (w.controller().world().time() < 2.5) {
         w.controller().stepForward();
     }
-    const auto measured = w.controller().measurements().value(measuredOf(q).measure, step.scene);
+    const auto measured =
+        w.controller().lessonWatch().measurements().value(measuredOf(q).measure, step.scene);
     QVERIFY(measured);
     // Momentum and an elastic hit: v1 = (m1 - m2) / (m1 + m2) u = -u/2 for m2 = 3 m1.
     const auto& moving = step.scene.bodies[*step.scene.bodyIndex(QStringLiteral("moving"))];

@@ -14,6 +14,7 @@
 #include "format/limits.h"
 #include "format/scene_schema.h"
 
+#include "fields_util.h"
 #include "first_question.h"
 #include "near.h"
 #include "test_files.h"
@@ -22,6 +23,7 @@
 #include <QDockWidget>
 #include <QLineEdit>
 #include <QLocale>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QtTest>
 
@@ -32,88 +34,7 @@ using rigidlab::test::writeFile;
 using rigidlab::ui::MainWindow;
 using rigidlab::ui::NumberField;
 
-namespace {
-
-QString scene(const char* name)
-{
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/") + QLatin1String(name);
-}
-
-QString lesson(const char* name)
-{
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/") + QLatin1String(name);
-}
-
-/// |a - b| within a relative tolerance; near zero qFuzzyCompare would fail.
-bool near(double a, double b, double rel = 1e-12)
-{
-    return std::abs(a - b) <= rel * std::max(std::abs(a), std::abs(b));
-}
-
-/// Lets the running simulation take at least one more frame of steps.
-bool nextFrame(const ui::SimulationController& c)
-{
-    const long long s = c.currentStep();
-    return QTest::qWaitFor([&] { return c.currentStep() > s; }, 5000);
-}
-
-/// A field by its name: "dt", "restitution", ... in the panel, "mass" in the inspector.
-NumberField* field(MainWindow& w, const QString& name)
-{
-    NumberField* f = w.controls().findChild<NumberField*>(name);
-    return f ? f : w.inspector().findChild<NumberField*>(name);
-}
-
-/// Brings the dock that holds `w` to the front of its tab group, as a click on its tab does.
-void showDockOf(QWidget* w)
-{
-    for (QWidget* p = w; p; p = p->parentWidget())
-        if (auto* dock = qobject_cast<QDockWidget*>(p)) {
-            dock->raise();
-            QCoreApplication::processEvents();
-            return;
-        }
-}
-
-/// What the controller holds for a field, in the field's unit.
-double held(const MainWindow& w, const QString& name, physics::BodyId body)
-{
-    const physics::World& world = const_cast<MainWindow&>(w).controller().world();
-    if (name == QLatin1String("dt"))
-        return world.def().dt * 1e3;
-    if (name == QLatin1String("restitution"))
-        return world.def().restitution;
-    if (name == QLatin1String("friction"))
-        return world.def().friction;
-    if (name == QLatin1String("timeScale"))
-        return const_cast<MainWindow&>(w).controller().timeScale();
-    if (name == QLatin1String("iterations"))
-        return world.def().iterations;
-    if (name == QLatin1String("mass"))
-        return world.body(body).mass;
-    return std::nan("");
-}
-
-/// Opens ball_drop with its first ball ("bouncy", dynamic) in the inspector, the window
-/// shown and active (shortcuts need an active window).
-bool openBallDrop(MainWindow& w)
-{
-    if (!w.openScene(scene("ball_drop.json"), true).isEmpty())
-        return false;
-    // The sequential solver, whose iterations field the tests type into (the scene's is the
-    // soft step, where the field is disabled).
-    w.controller().setSolver(physics::SolverKind::SequentialImpulse);
-    w.show();
-    if (!QTest::qWaitForWindowExposed(&w))
-        return false;
-    w.activateWindow();
-    if (!QTest::qWaitForWindowActive(&w))
-        return false;
-    w.inspector().setBody(1);
-    return w.controller().world().body(1).isDynamic();
-}
-
-} // namespace
+using namespace rigidlab::test::fields;
 
 class TestFields : public QObject {
     Q_OBJECT
@@ -374,6 +295,77 @@ private slots:
         c.setRunning(false);
     }
 
+    // Long decimals are rounded on screen, never in force: 1/60 s reads "16,6667" ms in
+    // Czech, and no field in the window shows more than NumberField::kShownDigits digits of a
+    // value the program holds. Leaving the field untouched keeps 1/60 s; a value typed while
+    // it runs is held as typed and shown with every digit typed, frame after frame.
+    void longDecimalsAreRoundedOnScreenOnly_data()
+    {
+        QTest::addColumn<QString>("locale");
+        QTest::addColumn<QString>("shown"); // 1/60 s in ms
+        QTest::addColumn<QString>("typed");
+        QTest::newRow("cs") << QStringLiteral("cs_CZ") << QStringLiteral("16,6667")
+                            << QStringLiteral("4,1666667");
+        QTest::newRow("en") << QStringLiteral("en_US") << QStringLiteral("16.6667")
+                            << QStringLiteral("4.1666667");
+    }
+    void longDecimalsAreRoundedOnScreenOnly()
+    {
+        QFETCH(QString, locale);
+        QFETCH(QString, shown);
+        QFETCH(QString, typed);
+        QLocale::setDefault(QLocale(locale));
+        MainWindow w;
+        QVERIFY(openBallDrop(w));
+        auto& c = w.controller();
+        c.setDt(1.0 / 60.0);
+        c.setRestitution(1.0 / 3.0);
+        c.setFriction(2.0 / 3.0);
+        c.setTimeScale(1.0 / 3.0);
+        c.setBodyMass(1, std::sqrt(2.0));
+        w.inspector().refresh();
+        NumberField* dt = field(w, QStringLiteral("dt"));
+        QCOMPARE(dt->text(), shown);
+        for (NumberField* f : w.findChildren<NumberField*>()) {
+            const QString digits = f->text()
+                                       .remove(QRegularExpression(QStringLiteral("[^0-9]")))
+                                       .remove(QRegularExpression(QStringLiteral("^0+")));
+            QVERIFY2(digits.size() <= NumberField::kShownDigits,
+                     qPrintable(f->objectName() + QStringLiteral(" shows ") + f->text()));
+        }
+        // In and out without typing: the value in force is not the rounded one shown.
+        dt->setFocus();
+        QTRY_VERIFY(dt->hasFocus());
+        QTest::keyClick(dt, Qt::Key_Return);
+        w.view().setFocus();
+        QTRY_VERIFY(!dt->hasFocus());
+        QCOMPARE(c.world().def().dt, 1.0 / 60.0);
+        // Typed while it runs: held to the last digit, and shown so.
+        c.setRunning(true);
+        dt->setFocus();
+        QTRY_VERIFY(dt->hasFocus());
+        dt->selectAll();
+        QTest::keyClicks(dt, typed);
+        QVERIFY(nextFrame(c));
+        QTest::keyClick(dt, Qt::Key_Return);
+        QVERIFY2(near(c.world().def().dt, 4.1666667e-3, 1e-15),
+                 qPrintable(QString::number(c.world().def().dt, 'g', 17)));
+        for (int frame = 0; frame < 3; ++frame) {
+            QVERIFY(nextFrame(c));
+            w.controls().refresh();
+            QCOMPARE(dt->text(), typed);
+        }
+        // Escape brings back the value in force as it was typed, not rounded.
+        dt->selectAll();
+        QTest::keyClicks(dt, QStringLiteral("7"));
+        QTest::keyClick(dt, Qt::Key_Escape);
+        QCOMPARE(dt->text(), typed);
+        c.setRunning(false);
+        // A value from elsewhere is rounded again.
+        c.setDt(1.0 / 60.0);
+        QCOMPARE(dt->text(), shown);
+    }
+
     void windowShortcutsStayOutOfTheField()
     {
         MainWindow w;
@@ -383,7 +375,7 @@ private slots:
         f->setFocus();
         QTRY_VERIFY(f->hasFocus());
         const QString shown = f->text();
-        const long long step = c.currentStep();
+        const long long step = c.world().stepCount();
         QTest::keyClick(f, Qt::Key_Space);
         QVERIFY(!c.isRunning());
         QCOMPARE(f->text(), shown); // a space neither plays nor erases the number
@@ -391,14 +383,14 @@ private slots:
                             Qt::Key_F, Qt::Key_Q, Qt::Key_E, Qt::Key_V, Qt::Key_Up, Qt::Key_Down})
             QTest::keyClick(f, key);
         QVERIFY(!c.isRunning());
-        QCOMPARE(c.currentStep(), step);
+        QCOMPARE(c.world().stepCount(), step);
         QVERIFY(f->hasFocus());
         QTest::keyClick(f, Qt::Key_Escape);
         QCOMPARE(f->text(), shown);
         // The same keys on the view do act: the test above could fail.
         w.view().setFocus();
         QTest::keyClick(&w.view(), Qt::Key_S);
-        QCOMPARE(c.currentStep(), step + 1);
+        QCOMPARE(c.world().stepCount(), step + 1);
         QTest::keyClick(&w.view(), Qt::Key_Space);
         QVERIFY(c.isRunning());
         // While running, typing into a field and Space there leave it running.

@@ -204,13 +204,13 @@ void runPauseAndPush(MainWindow& w)
     QVERIFY(controller.world().body(body).isDynamic());
     const physics::Vec2 v0 = controller.world().originVelocity(body);
     const physics::Vec2 p0 = controller.world().body(body).origin();
-    const long long step0 = controller.currentStep();
+    const long long step0 = controller.world().stepCount();
     key(w, Qt::Key_Right, Qt::ShiftModifier);
     RL_VERIFY_NEAR(controller.world().originVelocity(body).x() - v0.x(), 0.5, 1e-12, 0);
     RL_VERIFY_NEAR(controller.world().originVelocity(body).y() - v0.y(), 0.0, 1e-12, 0);
     key(w, Qt::Key_Right);
     RL_VERIFY_NEAR(controller.world().body(body).origin().x() - p0.x(), 0.1, 1e-12, 0);
-    QCOMPARE(controller.currentStep(), step0); // the arrows moved the body, not the clock
+    QCOMPARE(controller.world().stepCount(), step0); // the arrows moved the body, not the clock
     key(w, Qt::Key_Return);
     QVERIFY(w.inspector().isVisible());
     QVERIFY(w.inspector().isAncestorOf(QApplication::focusWidget()));
@@ -376,7 +376,7 @@ private slots:
         QToolButton* first = buttonOf(QApplication::focusWidget());
         QVERIFY(first && bar->isAncestorOf(first));
         // Right along the buttons to Play, the clock standing still.
-        const long long step = w.controller().currentStep();
+        const long long step = w.controller().world().stepCount();
         QToolButton* play = nullptr;
         for (int i = 0; i < 12 && !play; ++i) {
             key(w, Qt::Key_Right);
@@ -386,7 +386,7 @@ private slots:
                 play = b;
         }
         QVERIFY(play);
-        QCOMPARE(w.controller().currentStep(), step);
+        QCOMPARE(w.controller().world().stepCount(), step);
         key(w, Qt::Key_Left);
         QVERIFY(QApplication::focusWidget() != play);
         key(w, Qt::Key_Right);
@@ -457,7 +457,7 @@ private slots:
         RL_VERIFY_NEAR(view.zoom(), fitted, 1e-9 * fitted, 0);
 
         // Pan: Ctrl+Right shows what lies right, Ctrl+Up what lies above; the clock stays.
-        const long long step = w.controller().currentStep();
+        const long long step = w.controller().world().stepCount();
         const physics::Vec2 p0 = middle();
         key(w, Qt::Key_Right, Qt::ControlModifier);
         const physics::Vec2 p1 = middle();
@@ -465,7 +465,7 @@ private slots:
         RL_VERIFY_NEAR(p1.y(), p0.y(), 2.0 / view.zoom(), 0);
         key(w, Qt::Key_Up, Qt::ControlModifier);
         QVERIFY(middle().y() > p1.y());
-        QCOMPARE(w.controller().currentStep(), step);
+        QCOMPARE(w.controller().world().stepCount(), step);
 
         // Insert: a menu of bodies; Down and Return add a box at the view's centre.
         const std::size_t before = tools.scene().bodies.size();
@@ -510,10 +510,10 @@ private slots:
         table->setFocus(Qt::TabFocusReason);
         QCOMPARE(QApplication::focusWidget(), table);
         table->setCurrentCell(0, 0);
-        const long long step = w.controller().currentStep();
+        const long long step = w.controller().world().stepCount();
         key(w, Qt::Key_Down);
-        QCOMPARE(table->currentRow(), 1);             // the arrow moved in the table
-        QCOMPARE(w.controller().currentStep(), step); // and was not Step
+        QCOMPARE(table->currentRow(), 1);                   // the arrow moved in the table
+        QCOMPARE(w.controller().world().stepCount(), step); // and was not Step
         key(w, Qt::Key_Tab);
         QVERIFY(QApplication::focusWidget() != table);
         key(w, Qt::Key_Backtab);
@@ -550,17 +550,17 @@ private slots:
         w.activateWindow();
         QVERIFY(QTest::qWaitForWindowActive(&w));
         w.view().setFocus();
-        const long long start = w.controller().currentStep();
+        const long long start = w.controller().world().stepCount();
         key(w, Qt::Key_S);
-        QCOMPARE(w.controller().currentStep(), start + 1);
+        QCOMPARE(w.controller().world().stepCount(), start + 1);
         key(w, Qt::Key_K, Qt::ControlModifier | Qt::ShiftModifier); // off
         key(w, Qt::Key_S);
         key(w, Qt::Key_Space);
-        QCOMPARE(w.controller().currentStep(), start + 1);
+        QCOMPARE(w.controller().world().stepCount(), start + 1);
         QVERIFY(!w.controller().isRunning());
         key(w, Qt::Key_K, Qt::ControlModifier | Qt::ShiftModifier); // on again
         key(w, Qt::Key_S);
-        QCOMPARE(w.controller().currentStep(), start + 2);
+        QCOMPARE(w.controller().world().stepCount(), start + 2);
     }
 };
 

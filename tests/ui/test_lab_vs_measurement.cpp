@@ -131,14 +131,16 @@ void TestLabVsMeasurement::secondImportIsAddedBesideTheFirst()
     QCOMPARE(w.openLesson(lessonFile(), true), QString());
     MeasurementSession& session = w.measurement();
     QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
-    const int measured = session.panel()->comparisonPlot()->pointCount(MeasurementPanel::kMeasured);
+    const int measured =
+        session.panel()->comparisonPlot()->model().pointCount(MeasurementPanel::kMeasured);
     QVERIFY(measured > 10);
     w.lessonPlayer().next();
     QCOMPARE(session.load(sample("ball_bounces_phyphox.csv"), bounceTimes()), QString());
     // Both kept: the heights still compared point by point, e from the bounce times beside.
     QVERIFY(session.measurement().find(Quantity::Y));
     QVERIFY(!session.measurement().bounces.empty());
-    QCOMPARE(session.panel()->comparisonPlot()->pointCount(MeasurementPanel::kMeasured), measured);
+    QCOMPARE(session.panel()->comparisonPlot()->model().pointCount(MeasurementPanel::kMeasured),
+             measured);
     QVERIFY2(session.bounceFit().ok, qPrintable(session.bounceFit().error));
     // Each named by its file.
     const QString source = session.panel()->findChild<QLabel*>()->text();
@@ -181,12 +183,12 @@ void TestLabVsMeasurement::secondFileOfTheSameQuantityIsShownBeside()
     QCOMPARE(session.panel()->quantity(), Quantity::Y);
     // The heights of both files on the plot, each named by its file.
     int trackerSeries = -1;
-    for (int i = 0; i < plot.seriesCount(); ++i)
-        if (plot.seriesLegend(i) == QLatin1String("ball_tracker.csv"))
+    for (int i = 0; i < plot.model().seriesCount(); ++i)
+        if (plot.model().seriesLegend(i) == QLatin1String("ball_tracker.csv"))
             trackerSeries = i;
     QVERIFY2(trackerSeries > MeasurementPanel::kSimulated,
              qPrintable(QString::number(trackerSeries)));
-    const auto shown = plot.points(trackerSeries);
+    const auto shown = plot.model().points(trackerSeries);
     QCOMPARE(shown.size(), tracker.t.size());
     for (std::size_t i = 0; i < shown.size(); ++i) {
         RL_VERIFY_NEAR(shown[i].x(), tracker.t[i], 0, 0);
@@ -201,9 +203,9 @@ void TestLabVsMeasurement::secondFileOfTheSameQuantityIsShownBeside()
     QVERIFY2(data.width() >= kLeastDataArea.width() && data.height() >= kLeastDataArea.height(),
              qPrintable(QStringLiteral("%1x%2").arg(data.width()).arg(data.height())));
     // The last file is the one compared: its points, its residuals, the fit's, and it says so.
-    QCOMPARE(static_cast<std::size_t>(plot.pointCount(MeasurementPanel::kMeasured)),
+    QCOMPARE(static_cast<std::size_t>(plot.model().pointCount(MeasurementPanel::kMeasured)),
              phone.t.size());
-    QCOMPARE(plot.seriesLegend(MeasurementPanel::kMeasured),
+    QCOMPARE(plot.model().seriesLegend(MeasurementPanel::kMeasured),
              QStringLiteral("ball_phyphox.csv (fit, residuals)"));
     QCOMPARE(session.residuals().size(), phone.t.size());
     const measure::FitResult& fit = session.fit();
@@ -214,8 +216,8 @@ void TestLabVsMeasurement::secondFileOfTheSameQuantityIsShownBeside()
     // x is in the video only: no other file beside it, the points just "measured".
     auto* quantity = session.panel()->findChildren<QComboBox*>().at(1);
     quantity->setCurrentIndex(quantity->findData(static_cast<int>(Quantity::X)));
-    QCOMPARE(plot.seriesLegend(MeasurementPanel::kMeasured), QStringLiteral("measured"));
-    QCOMPARE(plot.pointCount(trackerSeries), 0);
+    QCOMPARE(plot.model().seriesLegend(MeasurementPanel::kMeasured), QStringLiteral("measured"));
+    QCOMPARE(plot.model().pointCount(trackerSeries), 0);
     QVERIFY(!plot.plot()->legend->hasItemWithPlottable(plot.graph(trackerSeries)));
 }
 

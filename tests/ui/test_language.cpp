@@ -71,7 +71,7 @@ std::vector<std::vector<double>> markTimes(MainWindow& w)
     std::vector<std::vector<double>> out;
     for (auto* plot : w.plots()) {
         std::vector<double> times;
-        for (int i = 0; i < plot->markCount(); ++i)
+        for (int i = 0; i < plot->model().markCount(); ++i)
             times.push_back(plot->markLabel(i)->position->key());
         out.push_back(times);
     }
@@ -252,7 +252,7 @@ private slots:
         w->show();
         QVERIFY(QTest::qWaitForWindowExposed(w));
         const double time = w->controller().world().time();
-        const long long steps = w->controller().currentStep();
+        const long long steps = w->controller().world().stepCount();
         const std::vector<double> bodies = bodyCoordinates(*w);
         QCOMPARE(steps, 77);
         QVERIFY(time > 0);
@@ -266,7 +266,7 @@ private slots:
         QVERIFY(czech->lessonPlayer().lesson());
         QCOMPARE(czech->lessonPlayer().lesson()->path, path);
         QCOMPARE(czech->lessonPlayer().stepIndex(), 1);
-        QCOMPARE(czech->controller().currentStep(), steps);
+        QCOMPARE(czech->controller().world().stepCount(), steps);
         QCOMPARE(czech->controller().world().time(), time);
         QVERIFY(bodyCoordinates(*czech) == bodies); // the same run, replayed exactly
         auto* cs = czech->findChild<QAction*>(QStringLiteral("language-cs"));
@@ -278,7 +278,7 @@ private slots:
         QCOMPARE(ui::currentLanguage(), QStringLiteral("en"));
         QCOMPARE(english->lessonPlayer().lesson()->path, path);
         QCOMPARE(english->lessonPlayer().stepIndex(), 1);
-        QCOMPARE(english->controller().currentStep(), steps);
+        QCOMPARE(english->controller().world().stepCount(), steps);
         QCOMPARE(english->controller().world().time(), time);
         QVERIFY(bodyCoordinates(*english) == bodies);
         delete english;
@@ -330,11 +330,11 @@ private slots:
         controller.setTimeScale(0.5);
         for (int i = 0; i < 20; ++i)
             controller.stepForward();
-        QCOMPARE(controller.edits().size(), std::size_t(2));
+        QCOMPARE(controller.editLog().edits().size(), std::size_t(2));
         const std::vector<std::vector<double>> marks = markTimes(*w);
         QCOMPARE(marks.front().size(), std::size_t(2)); // the energy plot marks both changes
         const std::vector<double> bodies = bodyCoordinates(*w);
-        const long long steps = controller.currentStep();
+        const long long steps = controller.world().stepCount();
         const int step = player.stepIndex();
         const auto tries = player.work().tries;
         QCOMPARE(tries.front().size(), std::size_t(2));
@@ -352,7 +352,7 @@ private slots:
         QCOMPARE(czech->controller().world().def().integrator, integrator);
         QCOMPARE(czech->controller().world().def().dt, dt);
         QCOMPARE(czech->controller().timeScale(), 0.5);
-        QCOMPARE(czech->controller().currentStep(), steps);
+        QCOMPARE(czech->controller().world().stepCount(), steps);
         QVERIFY(bodyCoordinates(*czech) == bodies); // the same run, changes and all
         QVERIFY(markTimes(*czech) == marks);
 
@@ -378,16 +378,16 @@ private slots:
         controller.setDt(dt);
         controller.setRestitution(0.3);
         controller.reset();
-        QCOMPARE(controller.edits().size(), std::size_t(2));
+        QCOMPARE(controller.editLog().edits().size(), std::size_t(2));
         for (int i = 0; i < 25; ++i)
             controller.stepForward();
         const std::vector<double> bodies = bodyCoordinates(*w);
         MainWindow* czech = ui::switchLanguage(w, QStringLiteral("cs"));
         QCOMPARE(czech->controller().world().def().dt, dt);
         QCOMPARE(czech->controller().world().def().restitution, 0.3);
-        QCOMPARE(czech->controller().currentStep(), 25);
+        QCOMPARE(czech->controller().world().stepCount(), 25);
         QVERIFY(bodyCoordinates(*czech) == bodies);
-        QCOMPARE(czech->plot(u"energy")->markCount(), 0);
+        QCOMPARE(czech->plot(u"energy")->model().markCount(), 0);
         delete czech;
     }
 
@@ -406,7 +406,7 @@ private slots:
         QVERIFY(czech->controller().isRunning());
         czech->controller().setRunning(false);
         // Running may have taken a step or two since: the 40th is in the history.
-        QVERIFY(czech->controller().currentStep() >= 40);
+        QVERIFY(czech->controller().world().stepCount() >= 40);
         czech->controller().seek(40);
         QVERIFY(bodyCoordinates(*czech) == bodies);
         QCOMPARE(ui::switchLanguage(czech, QStringLiteral("xx")), czech); // no such language

@@ -110,7 +110,8 @@ private slots:
         // Reset keeps e = 0 from the start: now the window's run is judged.
         controller.reset();
         runTo(controller, 1.6);
-        const auto live = controller.measurements().value(measuredOf(q).measure, step.scene);
+        const auto live =
+            controller.lessonWatch().measurements().value(measuredOf(q).measure, step.scene);
         QVERIFY(live);
         QCOMPARE(*live, *asked);
         player.answer(0, QStringLiteral("1"));

@@ -155,15 +155,15 @@ void TestLessonExport::stepPlotsAreTheNamedOnes()
     QCOMPARE(plots[0]->objectName(), QStringLiteral("compare-energy"));
     QCOMPARE(plots[1]->objectName(), QStringLiteral("compare-drift"));
     QCOMPARE(plots[0]->title(), QStringLiteral("Total energy by integrator"));
-    QCOMPARE(plots[0]->seriesCount(), 4);
+    QCOMPARE(plots[0]->model().seriesCount(), 4);
     const QStringList names = {QStringLiteral("euler"), QStringLiteral("symplectic-euler"),
                                QStringLiteral("verlet"), QStringLiteral("rk4")};
     for (int i = 0; i < 4; ++i) {
-        QCOMPARE(plots[0]->seriesName(i), names[i]);
-        QCOMPARE(plots[1]->seriesName(i), names[i]);
+        QCOMPARE(plots[0]->model().seriesName(i), names[i]);
+        QCOMPARE(plots[1]->model().seriesName(i), names[i]);
     }
-    QCOMPARE(plots[0]->seriesUnit(0), QStringLiteral("J"));
-    QCOMPARE(plots[1]->seriesUnit(0), QStringLiteral("%"));
+    QCOMPARE(plots[0]->model().seriesUnit(0), QStringLiteral("J"));
+    QCOMPARE(plots[1]->model().seriesUnit(0), QStringLiteral("%"));
 
     // One curve per variant, read from the samples' variant columns.
     ui::SampleBuffer buffer;
@@ -174,19 +174,19 @@ void TestLessonExport::stepPlotsAreTheNamedOnes()
     s.variantDriftPercent = {10, 20, 30, 40, 0, 0};
     buffer.push(s);
     for (ui::PlotWidget* p : plots) {
-        p->setSource(&buffer);
+        p->model().setSource(&buffer);
         QCOMPARE(p->drain(), 1);
     }
     for (int i = 0; i < 4; ++i) {
-        QCOMPARE(plots[0]->points(i).at(0).y(), 1.0 + i);
-        QCOMPARE(plots[1]->points(i).at(0).y(), 10.0 * (i + 1));
+        QCOMPARE(plots[0]->model().points(i).at(0).y(), 1.0 + i);
+        QCOMPARE(plots[1]->model().points(i).at(0).y(), 10.0 * (i + 1));
     }
 
     const lessons::Lesson stacks = lesson("stacks");
     std::vector<ui::PlotWidget*> solvers = ui::makeStepPlots(stacks.steps[0], &parent);
     QCOMPARE(solvers.size(), std::size_t{1});
     QCOMPARE(solvers[0]->title(), QStringLiteral("Total energy by solver"));
-    QCOMPARE(solvers[0]->seriesName(0), QStringLiteral("seed-impulse"));
+    QCOMPARE(solvers[0]->model().seriesName(0), QStringLiteral("seed-impulse"));
 
     const lessons::Lesson bounces = lesson("restitution");
     std::vector<ui::PlotWidget*> plain = ui::makeStepPlots(bounces.steps[1], &parent);

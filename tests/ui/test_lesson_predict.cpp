@@ -130,7 +130,7 @@ private slots:
         controller.setRunning(false);
         while (controller.world().time() < 1.6)
             controller.stepForward();
-        QVERIFY(!controller.measurements().collisions().empty());
+        QVERIFY(!controller.lessonWatch().measurements().collisions().empty());
         ui::CollisionPanel& panel = w.collisionPanel();
         panel.refresh();
         const ui::FittingTable* table = panel.table();
@@ -174,8 +174,8 @@ private slots:
         w.controller().setRunning(false);
         while (w.controller().world().time() < 1.6)
             w.controller().stepForward();
-        const auto live =
-            w.controller().measurements().value(measuredOf(step.questions[0]).measure, step.scene);
+        const auto live = w.controller().lessonWatch().measurements().value(
+            measuredOf(step.questions[0]).measure, step.scene);
         QVERIFY(live);
         QCOMPARE(*live, *b);
         // Restarting the step holds it all back again.
@@ -220,7 +220,7 @@ private slots:
         QVERIFY(!w.dock(QStringLiteral("collision"))->isHidden());
         for (int k = 0; k < 1500; ++k)
             w.controller().stepForward();
-        QVERIFY(!w.controller().measurements().collisions().empty());
+        QVERIFY(!w.controller().lessonWatch().measurements().collisions().empty());
         w.collisionPanel().refresh();
         for (const QString& cell : column(w.collisionPanel().table(), 2))
             QVERIFY2(cell.isEmpty() || cell == QStringLiteral("?"), qPrintable(cell));

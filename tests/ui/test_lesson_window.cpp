@@ -288,7 +288,7 @@ private slots:
                     std::optional<double> value;
                     for (int k = 0; k < 200000 && !value; ++k) {
                         w.controller().stepForward();
-                        value = w.controller().measurements().value(
+                        value = w.controller().lessonWatch().measurements().value(
                             measuredOf(qs[static_cast<size_t>(q)]).measure,
                             steps[static_cast<size_t>(s)].scene);
                     }

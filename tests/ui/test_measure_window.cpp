@@ -174,7 +174,7 @@ void TestMeasureWindow::damagedFilesAreRefusedAndNothingChanges()
     MeasurementSession& session = w.measurement();
     QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
     const std::size_t points = session.measurement().series[0].t.size();
-    const int measuredOnPlot = session.panel()->comparisonPlot()->pointCount(0);
+    const int measuredOnPlot = session.panel()->comparisonPlot()->model().pointCount(0);
     QCOMPARE(static_cast<std::size_t>(measuredOnPlot), points * 1); // y (the first series)
 
     struct Damaged {
@@ -197,7 +197,7 @@ void TestMeasureWindow::damagedFilesAreRefusedAndNothingChanges()
         QVERIFY2(error.contains(d.where), qPrintable(d.where + QStringLiteral(" in ") + error));
         // Nothing changed: the measurement and its plot are the good one's.
         QCOMPARE(session.measurement().series[0].t.size(), points);
-        QCOMPARE(session.panel()->comparisonPlot()->pointCount(0), measuredOnPlot);
+        QCOMPARE(session.panel()->comparisonPlot()->model().pointCount(0), measuredOnPlot);
         // The dialog says the same and offers nothing to import.
         MeasurementImportDialog dialog(path);
         QVERIFY2(!dialog.error().isEmpty(), d.name);
@@ -227,17 +227,18 @@ void TestMeasureWindow::overlayOnPlotsAndTrailInTheScene()
     quantity->setCurrentIndex(quantity->findData(static_cast<int>(Quantity::Y)));
     const measure::Series& y = *session.measurement().find(Quantity::Y);
     PlotWidget& plot = *panel.comparisonPlot();
-    QCOMPARE(static_cast<std::size_t>(plot.pointCount(MeasurementPanel::kMeasured)), y.t.size());
-    QVERIFY(plot.pointCount(MeasurementPanel::kSimulated) > 100);
+    QCOMPARE(static_cast<std::size_t>(plot.model().pointCount(MeasurementPanel::kMeasured)),
+             y.t.size());
+    QVERIFY(plot.model().pointCount(MeasurementPanel::kSimulated) > 100);
     // Markers, not a line, told apart by shape and named in the legend.
     QCPGraph* measured = plot.graph(MeasurementPanel::kMeasured);
     QCOMPARE(measured->lineStyle(), QCPGraph::lsNone);
     QCOMPARE(measured->scatterStyle().shape(), QCPScatterStyle::ssCircle);
     QVERIFY(plot.graph(MeasurementPanel::kSimulated)->lineStyle() != QCPGraph::lsNone);
-    QCOMPARE(plot.seriesLegend(MeasurementPanel::kMeasured), QStringLiteral("measured"));
-    QCOMPARE(plot.seriesLegend(MeasurementPanel::kSimulated), QStringLiteral("simulated"));
+    QCOMPARE(plot.model().seriesLegend(MeasurementPanel::kMeasured), QStringLiteral("measured"));
+    QCOMPARE(plot.model().seriesLegend(MeasurementPanel::kSimulated), QStringLiteral("simulated"));
     QVERIFY(plot.plot()->legend->visible());
-    const auto points = plot.points(MeasurementPanel::kMeasured);
+    const auto points = plot.model().points(MeasurementPanel::kMeasured);
     for (std::size_t i = 0; i < y.t.size(); ++i) {
         RL_VERIFY_NEAR(points[i].x(), y.t[i], 0, 0);
         RL_VERIFY_NEAR(points[i].y(), y.value[i], 0, 0);
@@ -288,7 +289,8 @@ void TestMeasureWindow::residualsAreMeasuredMinusSimulated()
     const measure::Target target{Quantity::Y, ballOf(scene), QStringLiteral("y:ball")};
     const measure::Simulated sim = measure::simulateAt(scene, target, y.t);
     QVERIFY(sim.ok);
-    const auto residuals = session.panel()->residualPlot()->points(MeasurementPanel::kResidual);
+    const auto residuals =
+        session.panel()->residualPlot()->model().points(MeasurementPanel::kResidual);
     QCOMPARE(residuals.size(), y.t.size());
     for (std::size_t i = 0; i < y.t.size(); ++i) {
         RL_VERIFY_NEAR(residuals[i].x(), y.t[i], 0, 0);
@@ -395,7 +397,7 @@ void TestMeasureWindow::measurementGoesWithItsSceneOrLesson()
     const auto shows = [&](const char* when, bool expected) {
         const bool trail = !session.trail()->points().empty();
         const bool plotted =
-            session.panel()->comparisonPlot()->pointCount(MeasurementPanel::kMeasured) > 0;
+            session.panel()->comparisonPlot()->model().pointCount(MeasurementPanel::kMeasured) > 0;
         QVERIFY2(session.hasMeasurement() == expected && trail == expected && plotted == expected,
                  qPrintable(QStringLiteral("%1: measurement %2, trail %3, plotted %4")
                                 .arg(QLatin1String(when))

@@ -55,7 +55,7 @@ QString markTexts(MainWindow& w)
 {
     QStringList texts;
     for (const ui::PlotWidget* plot : w.findChildren<ui::PlotWidget*>())
-        for (int i = 0; i < plot->markCount(); ++i)
+        for (int i = 0; i < plot->model().markCount(); ++i)
             texts << plot->markLabel(i)->text();
     return texts.join(u'|');
 }
@@ -153,7 +153,7 @@ void TestPanelValues::settingShownWhereItIsMade()
     ui::SimulationController& c = w.controller();
     for (int i = 0; i < 100; ++i)
         c.stepForward();
-    const long long before = c.currentStep();
+    const long long before = c.world().stepCount();
     // Typed into the control panel: the world runs with it, the field and a mark say so.
     auto* iterations = w.controls().findChild<ui::NumberField*>(QStringLiteral("iterations"));
     QVERIFY(iterations);

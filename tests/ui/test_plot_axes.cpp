@@ -60,7 +60,7 @@ bool allDistinct(const QStringList& labels)
 std::pair<double, double> extremes(const PlotWidget& plot, int series)
 {
     double lo = INFINITY, hi = -INFINITY;
-    for (const QPointF& p : plot.points(series)) {
+    for (const QPointF& p : plot.model().points(series)) {
         lo = std::min(lo, p.y());
         hi = std::max(hi, p.y());
     }
@@ -203,12 +203,12 @@ void TestPlotAxes::noisyConstantIsDrawnFlat()
     plot.resize(640, 400);
     plot.show();
     QVERIFY(QTest::qWaitForWindowExposed(&plot));
-    plot.setRangeMode(RangeMode::WholeRun);
-    plot.setValueScale(YAxis::Left, scale);
+    plot.model().setRangeMode(RangeMode::WholeRun);
+    plot.model().setValueScale(YAxis::Left, scale);
     const int s = plot.addSeries(QStringLiteral("q"), Qt::black);
     Noise rng;
     for (int k = 0; k < 2000; ++k)
-        plot.appendPoint(s, k * 0.005, value + noise * rng.next());
+        plot.model().appendPoint(s, k * 0.005, value + noise * rng.next());
     plot.drain();
     plot.plot()->replot();
 
@@ -238,10 +238,10 @@ void TestPlotAxes::tickLabelsAreFixedNotation()
     plot.resize(640, 400);
     plot.show();
     QVERIFY(QTest::qWaitForWindowExposed(&plot));
-    plot.setRangeMode(RangeMode::WholeRun);
+    plot.model().setRangeMode(RangeMode::WholeRun);
     const int s = plot.addSeries(QStringLiteral("q"), Qt::black);
     for (int k = 0; k <= 100; ++k)
-        plot.appendPoint(s, k * 0.01, 4e-5 * k / 100.0);
+        plot.model().appendPoint(s, k * 0.01, 4e-5 * k / 100.0);
     plot.drain();
     plot.plot()->replot();
     const QCPAxis* axis = plot.plot()->yAxis;
@@ -268,8 +268,8 @@ void TestPlotAxes::pointsHandedToGraphStayBounded()
     plot.resize(600, 300);
     plot.show();
     QVERIFY(QTest::qWaitForWindowExposed(&plot));
-    plot.setRangeMode(RangeMode::WholeRun);
-    plot.setPointBudget(200000); // keep every point: the graph must still get few
+    plot.model().setRangeMode(RangeMode::WholeRun);
+    plot.model().setPointBudget(200000); // keep every point: the graph must still get few
     const int s = plot.addSeries(QStringLiteral("noise"), Qt::black);
     Noise rng;
     constexpr int kSamples = 100000;
@@ -278,9 +278,9 @@ void TestPlotAxes::pointsHandedToGraphStayBounded()
         const double v = rng.next();
         lo = std::min(lo, v);
         hi = std::max(hi, v);
-        plot.appendPoint(s, k * 1e-3, v);
+        plot.model().appendPoint(s, k * 1e-3, v);
     }
-    QCOMPARE(plot.pointCount(s), kSamples); // the CSV still has them all
+    QCOMPARE(plot.model().pointCount(s), kSamples); // the CSV still has them all
     plot.drain();
     plot.plot()->replot();
 
@@ -309,8 +309,8 @@ void TestPlotAxes::csvTimesAreStepTimes()
     const double dt = controller.world().def().dt;
     PlotWidget* plot = makeEnergyPlot(nullptr);
     std::unique_ptr<PlotWidget> owner(plot);
-    plot->setRangeMode(RangeMode::WholeRun);
-    plot->setSource(&controller.samples());
+    plot->model().setRangeMode(RangeMode::WholeRun);
+    plot->model().setSource(&controller.recorder().samples());
 
     constexpr int kSteps = 300;
     double summed = 0;
@@ -363,8 +363,8 @@ void TestPlotAxes::conservedMomentumIsDrawnFlat()
     plot->resize(640, 400);
     plot->show();
     QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
-    plot->setRangeMode(RangeMode::WholeRun);
-    plot->setSource(&controller.samples());
+    plot->model().setRangeMode(RangeMode::WholeRun);
+    plot->model().setSource(&controller.recorder().samples());
     for (int k = 0; k < 2000; ++k)
         controller.stepForward();
     QVERIFY(controller.world().bodies()[1].velocity.x() > 1.9); // they did collide
@@ -385,7 +385,7 @@ void TestPlotAxes::conservedMomentumIsDrawnFlat()
             const auto [l, h] = extremes(*plot, s);
             QVERIFY2(h - l < 1e-6 * axis->range().size(),
                      qPrintable(QString("%1: %2 .. %3 on %4 .. %5")
-                                    .arg(plot->seriesName(s))
+                                    .arg(plot->model().seriesName(s))
                                     .arg(l, 0, 'g', 17)
                                     .arg(h, 0, 'g', 17)
                                     .arg(axis->range().lower)

@@ -8,6 +8,7 @@
 #include "common/language.h"
 #include "panels/fitting_table.h"
 #include "plots/plot_export.h"
+#include "plots/plot_exporter.h"
 #include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/step_sampler.h"
@@ -53,7 +54,7 @@ void runInto(test::SourcedPlot& sourced, const char* scene, double dt, double se
     physics::World world = lessons::buildWorld(settings);
     world.updateDiagnostics();
     const EnergyReference reference = EnergyReference::of(world);
-    sourced.plot->setRangeMode(RangeMode::WholeRun);
+    sourced.plot->model().setRangeMode(RangeMode::WholeRun);
     SampleClock clock;
     const long long steps = lessons::stepsForTime(seconds, dt);
     for (long long k = 0; k <= steps; ++k) {
@@ -184,15 +185,15 @@ void TestPlotCsv::dialogProposesAndRemembers()
     QCOMPARE(windowCsvDialect(), lessons::CsvDialect::Spreadsheet);
     test::SourcedPlot sourced(makeEnergyPlot(nullptr));
     runInto(sourced, "ball_drop", 0.001, 0.5);
-    sourced.plot->setExportContext(QStringLiteral("Pád míče"));
-    QCOMPARE(sourced.plot->proposedFileName(ExportFormat::Csv),
+    sourced.plot->exporter().setContext(QStringLiteral("Pád míče"));
+    QCOMPARE(sourced.plot->exporter().proposedFileName(ExportFormat::Csv),
              QStringLiteral("pad_mice_energy_en.csv"));
 
     QTemporaryDir dir;
     QString proposed, selected;
     const QString spreadsheetFile = dir.filePath(QStringLiteral("a.csv"));
     answerDialog(&proposed, &selected, spreadsheetFile);
-    QCOMPARE(sourced.plot->exportInteractively(ExportFormat::Csv), spreadsheetFile);
+    QCOMPARE(sourced.plot->exporter().exportInteractively(ExportFormat::Csv), spreadsheetFile);
     QCOMPARE(proposed, QStringLiteral("pad_mice_energy_en.csv"));
     QCOMPARE(selected, csvFilterFor(lessons::CsvDialect::Spreadsheet)); // says which
     QVERIFY(readAll(spreadsheetFile).startsWith("\xEF\xBB\xBF"));
@@ -200,11 +201,11 @@ void TestPlotCsv::dialogProposesAndRemembers()
     // Plain chosen once is remembered: the next dialog starts with it.
     const QString plainFile = dir.filePath(QStringLiteral("b.csv"));
     answerDialog(&proposed, &selected, plainFile, csvFilterFor(lessons::CsvDialect::Plain));
-    QCOMPARE(sourced.plot->exportInteractively(ExportFormat::Csv), plainFile);
+    QCOMPARE(sourced.plot->exporter().exportInteractively(ExportFormat::Csv), plainFile);
     QVERIFY(readAll(plainFile).startsWith("t [s],"));
     QCOMPARE(windowCsvDialect(), lessons::CsvDialect::Plain);
     answerDialog(&proposed, &selected, QString());
-    sourced.plot->exportInteractively(ExportFormat::Csv);
+    sourced.plot->exporter().exportInteractively(ExportFormat::Csv);
     QCOMPARE(selected, csvFilterFor(lessons::CsvDialect::Plain));
     QSettings().remove(QLatin1String(kCsvDialectKey));
     QSettings().remove(QLatin1String(kExportFolderKey));
@@ -215,7 +216,7 @@ void TestPlotCsv::copyIsTabSeparatedInTheLanguage()
     test::SourcedPlot sourced(makeMomentumPlot(nullptr));
     runInto(sourced, "ball_drop", 0.001, 0.5);
     QVERIFY(applyLanguage(QStringLiteral("cs")));
-    sourced.plot->copyData();
+    sourced.plot->exporter().copyData();
     QVERIFY(applyLanguage(QStringLiteral("en")));
     const test::CsvTable table = readCsv(QApplication::clipboard()->text().toUtf8(), '\t');
     QVERIFY(!table.bom);

@@ -109,9 +109,9 @@ void TestPlotExport::exportWritesValidFile()
     PlotWidget* plot = makeEnergyPlot(nullptr);
     std::unique_ptr<PlotWidget> owner(plot);
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     feed(buffer, *plot, 0.0, 0.05, 150);
-    plot->addMark(3.0, QStringLiteral("RK4"));
+    plot->model().addMark(3.0, QStringLiteral("RK4"));
     plot->drain();
 
     QTemporaryDir dir;
@@ -342,10 +342,10 @@ void TestPlotExport::windowExportNamesColumnsAsTheLegend()
     PlotWidget* plot =
         makeStepPlot(loaded.lesson.steps[0], QStringLiteral("compare-energy"), &parent);
     QVERIFY(plot);
-    QVERIFY(plot->seriesCount() >= 2);
-    QCOMPARE(plot->seriesName(0), QStringLiteral("euler"));
-    QCOMPARE(plot->seriesLegend(0), methodDisplayName(QStringLiteral("euler")));
-    QVERIFY(plot->seriesLegend(0) != plot->seriesName(0));
+    QVERIFY(plot->model().seriesCount() >= 2);
+    QCOMPARE(plot->model().seriesName(0), QStringLiteral("euler"));
+    QCOMPARE(plot->model().seriesLegend(0), methodDisplayName(QStringLiteral("euler")));
+    QVERIFY(plot->model().seriesLegend(0) != plot->model().seriesName(0));
     QTemporaryDir dir;
     const auto header = [&](bool legendNames) {
         ExportOptions options;
@@ -357,8 +357,8 @@ void TestPlotExport::windowExportNamesColumnsAsTheLegend()
     const QString handout = header(false), window = header(true);
     QVERIFY2(handout.startsWith(QStringLiteral("t [s],euler [J],")), qPrintable(handout));
     QStringList expected{QStringLiteral("t [s]")};
-    for (int i = 0; i < plot->seriesCount(); ++i)
-        expected << plot->seriesLegend(i) + " [" + plot->seriesUnit(i) + "]";
+    for (int i = 0; i < plot->model().seriesCount(); ++i)
+        expected << plot->model().seriesLegend(i) + " [" + plot->model().seriesUnit(i) + "]";
     QCOMPARE(window.split(u','), expected);
 }
 

@@ -6,10 +6,10 @@
 #include "lesson_player/lesson_player.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
+#include "plots/plot_exporter.h"
 #include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "simulation/sample_buffer.h"
-#include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 
 #include "format/lesson.h"
@@ -118,16 +118,16 @@ void TestPlotMarks::closeMarksStack()
     plot->show();
     QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     feed(buffer, *plot, 0.0, 10.0);
     // A few tenths of a second apart: lines pixels apart, labels wider than that.
     const double times[] = {4.0, 4.2, 4.4, 4.6};
     for (const double t : times)
-        plot->addMark(t, QStringLiteral("dt = %1 ms").arg(t));
+        plot->model().addMark(t, QStringLiteral("dt = %1 ms").arg(t));
     plot->plot()->replot();
-    QCOMPARE(plot->markCount(), 4);
+    QCOMPARE(plot->model().markCount(), 4);
     int visible = 0;
-    for (int i = 0; i < plot->markCount(); ++i) {
+    for (int i = 0; i < plot->model().markCount(); ++i) {
         QCPItemText* a = plot->markLabel(i);
         if (!a->visible())
             continue;
@@ -157,7 +157,7 @@ void TestPlotMarks::closeMarksStack()
     // change is still said.
     QCOMPARE(visible, PlotWidget::kMarkRows);
     QString said;
-    for (int i = 0; i < plot->markCount(); ++i)
+    for (int i = 0; i < plot->model().markCount(); ++i)
         if (plot->markLabel(i)->visible())
             said += plot->markLabel(i)->text() + u'|';
     for (const double t : times)
@@ -167,7 +167,7 @@ void TestPlotMarks::closeMarksStack()
     QTemporaryDir dir;
     QVERIFY(exportPlot(*plot, dir.filePath(QStringLiteral("marks.svg")), ExportFormat::Svg).ok);
     plot->plot()->replot();
-    for (int i = 1; i < plot->markCount(); ++i)
+    for (int i = 1; i < plot->model().markCount(); ++i)
         QVERIFY(!labelRect(plot->markLabel(i)).intersects(labelRect(plot->markLabel(i - 1))));
 }
 
@@ -178,16 +178,16 @@ void TestPlotMarks::coincidingMarksMerge()
     plot->show();
     QVERIFY(QTest::qWaitForWindowExposed(plot.get()));
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     feed(buffer, *plot, 0.0, 10.0);
     // Two changes in one moment (a lesson step's settings), and one a pixel later.
-    plot->addMark(5.0, QStringLiteral("dt = 5 ms"));
-    plot->addMark(5.0, QStringLiteral("Runge–Kutta 4"));
-    plot->addMark(5.005, QStringLiteral("e = 0.5"));
-    plot->addMark(8.0, QStringLiteral("μ = 0.3"));
+    plot->model().addMark(5.0, QStringLiteral("dt = 5 ms"));
+    plot->model().addMark(5.0, QStringLiteral("Runge–Kutta 4"));
+    plot->model().addMark(5.005, QStringLiteral("e = 0.5"));
+    plot->model().addMark(8.0, QStringLiteral("μ = 0.3"));
     plot->plot()->replot();
     QStringList shown;
-    for (int i = 0; i < plot->markCount(); ++i)
+    for (int i = 0; i < plot->model().markCount(); ++i)
         if (plot->markLabel(i)->visible())
             shown << plot->markLabel(i)->text();
     QCOMPARE(shown.size(), 2);
@@ -236,13 +236,13 @@ void TestPlotMarks::plotExportDialogStartsThere()
     const QString documents = QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation);
     QVERIFY(QDir().mkpath(documents));
     std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    QSignalSpy exported(plot.get(), &PlotWidget::exported);
+    QSignalSpy exported(&plot->exporter(), &PlotExporter::exported);
 
     QString openedIn;
     QTemporaryDir chosen;
     const QString file = QDir(chosen.path()).filePath(QStringLiteral("mine.csv"));
     answerFileDialog(&openedIn, file);
-    plot->exportInteractively(ExportFormat::Csv);
+    plot->exporter().exportInteractively(ExportFormat::Csv);
     QCOMPARE(openedIn, QDir(documents).absolutePath());
     QCOMPARE(exported.count(), 1);
     QVERIFY(QFileInfo::exists(file));
@@ -250,7 +250,7 @@ void TestPlotMarks::plotExportDialogStartsThere()
     // The next dialog, of this plot or another, opens where the last export went.
     std::unique_ptr<PlotWidget> other(makeDriftPlot(nullptr));
     answerFileDialog(&openedIn, QString());
-    other->exportInteractively(ExportFormat::Png);
+    other->exporter().exportInteractively(ExportFormat::Png);
     QCOMPARE(openedIn, QDir(chosen.path()).absolutePath());
     QSettings().remove(QLatin1String(kExportFolderKey));
 }

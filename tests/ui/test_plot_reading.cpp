@@ -122,44 +122,44 @@ void TestPlotReading::scrubBackKeepsPointsAndShowsTheMoment()
 {
     auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
     feed(buffer, *plot, 0.0, 8.0);
-    plot->addMark(2.0, QStringLiteral("dt = 5 ms"));
-    plot->addMark(6.0, QStringLiteral("RK4"));
+    plot->model().addMark(2.0, QStringLiteral("dt = 5 ms"));
+    plot->model().addMark(6.0, QStringLiteral("RK4"));
 
     travel(buffer, *plot, 4.0);
-    for (int s = 0; s < plot->seriesCount(); ++s) {
-        const std::vector<QPointF> pts = plot->points(s);
+    for (int s = 0; s < plot->model().seriesCount(); ++s) {
+        const std::vector<QPointF> pts = plot->model().points(s);
         QCOMPARE(pts.front().x(), 0.0);
         QCOMPARE(pts.back().x(), 4.0);
         QCOMPARE(static_cast<int>(pts.size()), 4 * 64 + 1);
         // What came after is kept, as the ghost.
-        const std::vector<QPointF> ghost = plot->ghostPoints(s);
+        const std::vector<QPointF> ghost = plot->model().ghostPoints(s);
         QCOMPARE(ghost.front().x(), 4.0 + kDt);
         QCOMPARE(ghost.back().x(), 8.0);
     }
-    QCOMPARE(plot->points(2).back().y(), sampleAt(4.0).total);
+    QCOMPARE(plot->model().points(2).back().y(), sampleAt(4.0).total);
     const QCPRange range = timeRange(*plot);
     QVERIFY2(range.lower <= 4.0 && 4.0 < range.upper,
              qPrintable(QStringLiteral("%1 .. %2").arg(range.lower).arg(range.upper)));
     QVERIFY(range.upper <= 8.0); // the whole run, shorter than the window: its old future too
-    QCOMPARE(plot->markCount(), 2);
-    QVERIFY(!plot->markIsGhost(0));
-    QVERIFY(plot->markIsGhost(1));
+    QCOMPARE(plot->model().markCount(), 2);
+    QVERIFY(!plot->model().markIsGhost(0));
+    QVERIFY(plot->model().markIsGhost(1));
 
     // Forward again along the same timeline: the ghost points are points again.
     travel(buffer, *plot, 6.0);
-    QCOMPARE(plot->points(0).back().x(), 6.0);
-    QCOMPARE(static_cast<int>(plot->points(0).size()), 6 * 64 + 1);
-    QCOMPARE(plot->ghostPoints(0).front().x(), 6.0 + kDt);
+    QCOMPARE(plot->model().points(0).back().x(), 6.0);
+    QCOMPARE(static_cast<int>(plot->model().points(0).size()), 6 * 64 + 1);
+    QCOMPARE(plot->model().ghostPoints(0).front().x(), 6.0 + kDt);
     QVERIFY(timeRange(*plot).contains(6.0));
-    QVERIFY(!plot->markIsGhost(1)); // the mark at 6 s is on the timeline again
+    QVERIFY(!plot->model().markIsGhost(1)); // the mark at 6 s is on the timeline again
 
     // Back to the start, from a plot the user had dragged aside.
     plot->plot()->xAxis->setRange(6.5, 7.5);
     QVERIFY(!plot->isFollowing());
     travel(buffer, *plot, 0.0);
     QVERIFY(plot->isFollowing());
-    QCOMPARE(plot->pointCount(0), 1);
-    QCOMPARE(static_cast<int>(plot->ghostPoints(0).size()), 8 * 64);
+    QCOMPARE(plot->model().pointCount(0), 1);
+    QCOMPARE(static_cast<int>(plot->model().ghostPoints(0).size()), 8 * 64);
     QVERIFY(timeRange(*plot).contains(0.0));
 }
 
@@ -167,63 +167,63 @@ void TestPlotReading::playingOnBranchesAfterThePoint()
 {
     auto [buffer, plot] = SourcedPlot(makeDriftPlot(nullptr));
     feed(buffer, *plot, 0.0, 8.0);
-    plot->addMark(6.0, QStringLiteral("RK4"));
+    plot->model().addMark(6.0, QStringLiteral("RK4"));
     travel(buffer, *plot, 3.0);
 
     // The run goes on from 3 s: the new points come after the branch point, evenly.
     feed(buffer, *plot, 3.0 + kDt, 5.0);
-    std::vector<QPointF> pts = plot->points(0);
+    std::vector<QPointF> pts = plot->model().points(0);
     QCOMPARE(pts.back().x(), 5.0);
     QCOMPARE(static_cast<int>(pts.size()), 5 * 64 + 1);
     for (std::size_t k = 1; k < pts.size(); ++k)
         QCOMPARE(pts[k].x() - pts[k - 1].x(), kDt);
     // The old future is overwritten as far as the new branch has come, and drawn beyond it.
-    QCOMPARE(plot->ghostPoints(0).front().x(), 5.0 + kDt);
-    QCOMPARE(plot->markCount(), 1); // the mark at 6 s is still ahead
+    QCOMPARE(plot->model().ghostPoints(0).front().x(), 5.0 + kDt);
+    QCOMPARE(plot->model().markCount(), 1); // the mark at 6 s is still ahead
     QVERIFY(timeRange(*plot).contains(5.0));
 
     feed(buffer, *plot, 5.0 + kDt, 7.0);
-    QCOMPARE(plot->markCount(), 0); // passed by a run that did not make that change
-    QCOMPARE(plot->ghostPoints(0).front().x(), 7.0 + kDt);
+    QCOMPARE(plot->model().markCount(), 0); // passed by a run that did not make that change
+    QCOMPARE(plot->model().ghostPoints(0).front().x(), 7.0 + kDt);
     feed(buffer, *plot, 7.0 + kDt, 9.0);
-    QVERIFY(plot->ghostPoints(0).empty());
-    QCOMPARE(plot->points(0).back().x(), 9.0);
+    QVERIFY(plot->model().ghostPoints(0).empty());
+    QCOMPARE(plot->model().points(0).back().x(), 9.0);
     QCOMPARE(timeRange(*plot).upper, 9.0);
 }
 
 void TestPlotReading::scrubBackReachesAsFarAsTheTimeline()
 {
     auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
-    plot->setTimelineStart(0.0);
+    plot->model().setTimelineStart(0.0);
     feed(buffer, *plot, 0.0, 40.0); // four windows
-    QCOMPARE(plot->points(0).front().x(), 0.0);
+    QCOMPARE(plot->model().points(0).front().x(), 0.0);
 
     travel(buffer, *plot, 5.0);
-    QCOMPARE(plot->points(0).front().x(), 0.0);
-    QCOMPARE(plot->points(0).back().x(), 5.0);
+    QCOMPARE(plot->model().points(0).front().x(), 0.0);
+    QCOMPARE(plot->model().points(0).back().x(), 5.0);
     QCOMPARE(timeRange(*plot).lower, 0.0);
     QVERIFY(timeRange(*plot).contains(5.0));
-    QCOMPARE(timeRange(*plot).size(), plot->windowSeconds());
+    QCOMPARE(timeRange(*plot).size(), plot->model().windowSeconds());
 
     travel(buffer, *plot, 25.0);
-    QCOMPARE(timeRange(*plot).size(), plot->windowSeconds());
+    QCOMPARE(timeRange(*plot).size(), plot->model().windowSeconds());
     QVERIFY(timeRange(*plot).contains(25.0));
     QVERIFY(timeRange(*plot).upper < 40.0);
 
     // Once the timeline forgets its start, so does the plot (a window and its margin kept).
-    plot->setTimelineStart(20.0);
+    plot->model().setTimelineStart(20.0);
     feed(buffer, *plot, 25.0 + kDt, 35.0);
-    QVERIFY(plot->points(0).front().x() >= 20.0 - 1e-9);
-    QVERIFY(plot->points(0).front().x() < 24.0);
+    QVERIFY(plot->model().points(0).front().x() >= 20.0 - 1e-9);
+    QVERIFY(plot->model().points(0).front().x() < 24.0);
 
     // A timeline longer than half the point budget: the oldest go, the window is not thinned.
     std::unique_ptr<PlotWidget> small(makeEnergyPlot(nullptr));
     SampleBuffer smallBuffer;
-    small->setSource(&smallBuffer);
-    small->setPointBudget(2000); // half of it: 15.6 s at 64 Hz, more than the window
-    small->setTimelineStart(0.0);
+    small->model().setSource(&smallBuffer);
+    small->model().setPointBudget(2000); // half of it: 15.6 s at 64 Hz, more than the window
+    small->model().setTimelineStart(0.0);
     feed(smallBuffer, *small, 0.0, 60.0); // 3841 samples
-    const std::vector<QPointF> pts = small->points(0);
+    const std::vector<QPointF> pts = small->model().points(0);
     QVERIFY2(pts.size() <= 1001 && pts.size() >= 900, qPrintable(QString::number(pts.size())));
     QCOMPARE(pts.back().x(), 60.0);
     for (std::size_t k = 1; k < pts.size(); ++k)
@@ -233,9 +233,9 @@ void TestPlotReading::scrubBackReachesAsFarAsTheTimeline()
 void TestPlotReading::ghostIsDrawnFadedOutsideTheLegend()
 {
     std::unique_ptr<PlotWidget> plot(makeMomentumPlot(nullptr));
-    plot->setRangeMode(RangeMode::WholeRun);
+    plot->model().setRangeMode(RangeMode::WholeRun);
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     feed(buffer, *plot, 0.0, 4.0);
     const int legendItems = plot->plot()->legend->itemCount();
     travel(buffer, *plot, 2.0);
@@ -244,10 +244,10 @@ void TestPlotReading::ghostIsDrawnFadedOutsideTheLegend()
     plot->prepareGraphs(400);
 
     QCustomPlot* qcp = plot->plot();
-    QCOMPARE(qcp->graphCount(), 2 * plot->seriesCount());
+    QCOMPARE(qcp->graphCount(), 2 * plot->model().seriesCount());
     QCOMPARE(qcp->legend->itemCount(), legendItems);
     int ghosts = 0;
-    for (int s = 0; s < plot->seriesCount(); ++s) {
+    for (int s = 0; s < plot->model().seriesCount(); ++s) {
         QCPGraph* own = plot->graph(s);
         for (int g = 0; g < qcp->graphCount(); ++g) {
             QCPGraph* other = qcp->graph(g);
@@ -263,10 +263,10 @@ void TestPlotReading::ghostIsDrawnFadedOutsideTheLegend()
             ++ghosts;
         }
     }
-    QCOMPARE(ghosts, plot->seriesCount());
+    QCOMPARE(ghosts, plot->model().seriesCount());
 
     plot->clear();
-    QVERIFY(plot->ghostPoints(0).empty());
+    QVERIFY(plot->model().ghostPoints(0).empty());
 }
 
 void TestPlotReading::windowTimelineFollowsTheScrub()
@@ -284,7 +284,7 @@ void TestPlotReading::windowTimelineFollowsTheScrub()
     energy->drain();
     const double end = c.world().time();
     QVERIFY(end > 0.5);
-    QCOMPARE(energy->points(0).back().x(), end);
+    QCOMPARE(energy->model().points(0).back().x(), end);
 
     auto* timeline = w.findChild<QSlider*>(QStringLiteral("timeline"));
     auto* label = w.findChild<QLabel*>(QStringLiteral("timelineLabel"));
@@ -293,7 +293,7 @@ void TestPlotReading::windowTimelineFollowsTheScrub()
     timeline->setSliderDown(true); // a hand on it
     timeline->setValue(target);
     timeline->setSliderDown(false);
-    QCOMPARE(c.currentStep(), target);
+    QCOMPARE(c.world().stepCount(), target);
     QVERIFY2(label->text().contains(QStringLiteral("step %1 ").arg(target)),
              qPrintable(label->text()));
     QVERIFY2(label->text().contains(QLocale().toString(c.world().time(), 'f', 3)),
@@ -304,10 +304,10 @@ void TestPlotReading::windowTimelineFollowsTheScrub()
     energy->drain();
     for (PlotWidget* plot : w.plots()) {
         plot->drain();
-        QVERIFY(plot->points(0).front().x() < 0.05); // from the start of the run
-        QCOMPARE(plot->points(0).back().x(), chosen);
-        QVERIFY(plot->pointCount(0) > 50);
-        QVERIFY(!plot->ghostPoints(0).empty());
+        QVERIFY(plot->model().points(0).front().x() < 0.05); // from the start of the run
+        QCOMPARE(plot->model().points(0).back().x(), chosen);
+        QVERIFY(plot->model().pointCount(0) > 50);
+        QVERIFY(!plot->model().ghostPoints(0).empty());
         QVERIFY2(timeRange(*plot).contains(chosen), qPrintable(plot->objectName()));
     }
 
@@ -315,13 +315,13 @@ void TestPlotReading::windowTimelineFollowsTheScrub()
     for (int i = 0; i < 40; ++i)
         c.stepForward();
     energy->drain();
-    const std::vector<QPointF> pts = energy->points(0);
+    const std::vector<QPointF> pts = energy->model().points(0);
     QCOMPARE(pts.back().x(), c.world().time());
     QVERIFY(pts.back().x() > chosen);
     for (std::size_t k = 1; k < pts.size(); ++k)
         QVERIFY(pts[k].x() > pts[k - 1].x());
-    QVERIFY(!energy->ghostPoints(0).empty()); // the rest of the old future, faded
-    QVERIFY(energy->ghostPoints(0).front().x() > pts.back().x());
+    QVERIFY(!energy->model().ghostPoints(0).empty()); // the rest of the old future, faded
+    QVERIFY(energy->model().ghostPoints(0).front().x() > pts.back().x());
     QVERIFY(timeRange(*energy).contains(c.world().time()));
 }
 
@@ -344,11 +344,11 @@ void TestPlotReading::shortRunGetsShortAxis()
     // The run fills the axis (within a round step), not the first part of a 10 s window.
     QVERIFY2(range.upper >= run && range.upper <= run * 1.1 + 1e-9,
              qPrintable(QStringLiteral("%1 .. %2").arg(range.lower).arg(range.upper)));
-    QVERIFY(range.upper <= plot->windowSeconds());
+    QVERIFY(range.upper <= plot->model().windowSeconds());
 
     // It grows to the window, then scrolls.
     feed(buffer, *plot, run + kDt, 15.0);
-    QCOMPARE(timeRange(*plot).size(), plot->windowSeconds());
+    QCOMPARE(timeRange(*plot).size(), plot->model().windowSeconds());
     QCOMPARE(timeRange(*plot).upper, 15.0);
 }
 
@@ -410,10 +410,10 @@ void TestPlotReading::runawayGoesOffScale()
     PlotWidget* plot =
         makeStepPlot(loaded.lesson.steps[2], QStringLiteral("compare-energy"), &parent);
     QVERIFY(plot);
-    QCOMPARE(plot->seriesCount(), 4);
-    plot->setRangeMode(RangeMode::WholeRun);
+    QCOMPARE(plot->model().seriesCount(), 4);
+    plot->model().setRangeMode(RangeMode::WholeRun);
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     const double e0 = 1000.0;
     auto sampleAt = [e0](double t, double growth) {
         Sample s;
@@ -460,13 +460,13 @@ void TestPlotReading::comparedCurvesStayVisible()
     PlotWidget* plot =
         makeStepPlot(loaded.lesson.steps[0], QStringLiteral("compare-energy"), &parent);
     QVERIFY(plot);
-    QCOMPARE(plot->seriesCount(), 4);
+    QCOMPARE(plot->model().seriesCount(), 4);
     for (int i = 0; i < 4; ++i)
         for (int j = 0; j < i; ++j)
             QVERIFY(plot->graph(i)->pen().style() != plot->graph(j)->pen().style());
-    plot->setRangeMode(RangeMode::WholeRun);
+    plot->model().setRangeMode(RangeMode::WholeRun);
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     for (int k = 0; k <= 256; ++k) {
         Sample s;
         s.t = k * kDt;

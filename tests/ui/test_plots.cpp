@@ -109,14 +109,15 @@ void TestPlots::seriesReceiveSamples()
     PlotWidget* plot = makePlot(kind, &window);
     QCOMPARE(plot->parent(), &window);
     QCOMPARE(plot->objectName(), kind); // found by its name: its dock, its file
-    QCOMPARE(plot->seriesCount(), fields.size());
-    for (int i = 0; i < plot->seriesCount(); ++i)
-        QCOMPARE(plot->seriesName(i) + " [" + plot->seriesUnit(i) + "]", headers[i]);
+    QCOMPARE(plot->model().seriesCount(), fields.size());
+    for (int i = 0; i < plot->model().seriesCount(); ++i)
+        QCOMPARE(plot->model().seriesName(i) + " [" + plot->model().seriesUnit(i) + "]",
+                 headers[i]);
 
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     QCOMPARE(plot->drain(), 0);
-    QCOMPARE(plot->pointCount(), 0);
+    QCOMPARE(plot->model().pointCount(), 0);
 
     const double dt = 1.0 / 64; // [s]
     for (int i = 0; i < 300; ++i)
@@ -125,7 +126,7 @@ void TestPlots::seriesReceiveSamples()
     QCOMPARE(plot->drain(), 0); // the cursor moved on
 
     for (int c = 0; c < fields.size(); ++c) {
-        const std::vector<QPointF> pts = plot->points(c);
+        const std::vector<QPointF> pts = plot->model().points(c);
         QCOMPARE(static_cast<int>(pts.size()), 300);
         for (int i = 0; i < 300; ++i) {
             const Sample s = sampleAt(dt * i);
@@ -155,7 +156,7 @@ void TestPlots::tableRowsMakeTheirPlots()
         ++windowRows;
         std::unique_ptr<PlotWidget> plot(makeWorldPlot(row, nullptr));
         QCOMPARE(plot->objectName(), name);
-        QVERIFY2(plot->seriesCount() > 0, qPrintable(name));
+        QVERIFY2(plot->model().seriesCount() > 0, qPrintable(name));
     }
     QVERIFY(windowRows > 0);
     QCOMPARE(findPlot(u"energies"), nullptr);
@@ -173,16 +174,17 @@ void TestPlots::quantityRowMakesItsPlot()
     std::unique_ptr<PlotWidget> plot(makeWorldPlot(row, nullptr));
     QCOMPARE(plot->objectName(), QStringLiteral("kinetic-alone"));
     QCOMPARE(plot->title(), QStringLiteral("Kinetic energy"));
-    QCOMPARE(plot->seriesCount(), 1);
-    QCOMPARE(plot->seriesName(0), QStringLiteral("kinetic energy"));
-    QCOMPARE(plot->yAxisUnit(YAxis::Left), QStringLiteral("J"));
+    QCOMPARE(plot->model().seriesCount(), 1);
+    QCOMPARE(plot->model().seriesName(0), QStringLiteral("kinetic energy"));
+    QCOMPARE(plot->model().unit(YAxis::Left), QStringLiteral("J"));
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     for (int i = 0; i < 10; ++i)
         buffer.push(sampleAt(0.1 * i));
     QCOMPARE(plot->drain(), 10);
     for (int i = 0; i < 10; ++i)
-        QCOMPARE(plot->points(0).at(static_cast<std::size_t>(i)).y(), sampleAt(0.1 * i).kinetic);
+        QCOMPARE(plot->model().points(0).at(static_cast<std::size_t>(i)).y(),
+                 sampleAt(0.1 * i).kinetic);
 }
 
 void TestPlots::directSeriesRestartWhenTimeGoesBack()
@@ -192,20 +194,20 @@ void TestPlots::directSeriesRestartWhenTimeGoesBack()
     const int euler = plot.addSeries(QStringLiteral("explicit Euler"), plotColor(0));
     const int verlet = plot.addSeries(QStringLiteral("Verlet"), plotColor(1));
     for (int i = 0; i < 10; ++i) {
-        plot.appendPoint(euler, 0.5 * i, 1.0 + 0.1 * i);
-        plot.appendPoint(verlet, 0.5 * i, 1.0);
+        plot.model().appendPoint(euler, 0.5 * i, 1.0 + 0.1 * i);
+        plot.model().appendPoint(verlet, 0.5 * i, 1.0);
     }
-    plot.appendPoint(verlet, 5.0, std::numeric_limits<double>::infinity()); // a gap
+    plot.model().appendPoint(verlet, 5.0, std::numeric_limits<double>::infinity()); // a gap
     plot.drain();
-    QCOMPARE(plot.pointCount(euler), 10);
-    QCOMPARE(plot.pointCount(verlet), 11);
-    QVERIFY(std::isnan(plot.points(verlet).back().y()));
+    QCOMPARE(plot.model().pointCount(euler), 10);
+    QCOMPARE(plot.model().pointCount(verlet), 11);
+    QVERIFY(std::isnan(plot.model().points(verlet).back().y()));
 
-    plot.appendPoint(euler, 2.0, 7.0); // this series starts over at t = 2 s
-    const std::vector<QPointF> pts = plot.points(euler);
+    plot.model().appendPoint(euler, 2.0, 7.0); // this series starts over at t = 2 s
+    const std::vector<QPointF> pts = plot.model().points(euler);
     QCOMPARE(static_cast<int>(pts.size()), 5);
     QCOMPARE(pts.back(), QPointF(2.0, 7.0));
-    QCOMPARE(plot.pointCount(verlet), 11);
+    QCOMPARE(plot.model().pointCount(verlet), 11);
 }
 
 void TestPlots::drainReplotsOnlyOnChange()
@@ -215,7 +217,7 @@ void TestPlots::drainReplotsOnlyOnChange()
                                        [](const Sample& s) { return s.kinetic; });
     Q_UNUSED(kinetic);
     SampleBuffer buffer;
-    plot.setSource(&buffer);
+    plot.model().setSource(&buffer);
     plot.resize(640, 400);
     plot.show();
     QVERIFY(QTest::qWaitForWindowExposed(&plot));
@@ -249,13 +251,13 @@ void TestPlots::memoryStaysBounded()
     QFETCH(double, dt);
 
     std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    plot->setRangeMode(wholeRun ? RangeMode::WholeRun : RangeMode::Window);
+    plot->model().setRangeMode(wholeRun ? RangeMode::WholeRun : RangeMode::Window);
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
 
     const int total = 2'000'000;
     const int chunk = 4096;
-    const int budget = plot->pointBudget();
+    const int budget = plot->model().pointBudget();
     const double viewLower = 100.0 * chunk * dt - 5; // [s] where a paused user looks
     for (int i = 0; i < total; i += chunk) {
         for (int j = i; j < std::min(i + chunk, total); ++j)
@@ -263,15 +265,17 @@ void TestPlots::memoryStaysBounded()
         plot->drain();
         if (paused && i == 100 * chunk)
             plot->plot()->xAxis->setRange(viewLower, viewLower + 2);
-        for (int s = 0; s < plot->seriesCount(); ++s)
-            QVERIFY2(plot->pointCount(s) <= budget,
-                     qPrintable(QString("%1 points at sample %2").arg(plot->pointCount(s)).arg(i)));
-        QCOMPARE(plot->markCount(), 0);
+        for (int s = 0; s < plot->model().seriesCount(); ++s)
+            QVERIFY2(
+                plot->model().pointCount(s) <= budget,
+                qPrintable(
+                    QString("%1 points at sample %2").arg(plot->model().pointCount(s)).arg(i)));
+        QCOMPARE(plot->model().markCount(), 0);
     }
     QCOMPARE(plot->isFollowing(), !paused);
 
     const double last = dt * (total - 1);
-    const std::vector<QPointF> pts = plot->points(2);
+    const std::vector<QPointF> pts = plot->model().points(2);
     QCOMPARE(pts.back().x(), last); // the curve reaches the end of the run
     if (wholeRun) {
         QCOMPARE(pts.front().x(), 0.0); // ... and still starts at its beginning
@@ -279,23 +283,23 @@ void TestPlots::memoryStaysBounded()
     } else if (paused) {
         QVERIFY(pts.front().x() <= viewLower + 10 * dt); // what the user looks at stays
     } else {
-        QVERIFY(pts.front().x() >= last - 1.1 * plot->windowSeconds() - dt);
+        QVERIFY(pts.front().x() >= last - 1.1 * plot->model().windowSeconds() - dt);
     }
 }
 
 void TestPlots::thinningKeepsNewestPointAndEvenSpacing()
 {
     PlotWidget plot(QStringLiteral("Energy"));
-    plot.setRangeMode(RangeMode::WholeRun);
+    plot.model().setRangeMode(RangeMode::WholeRun);
     const int total = plot.addSeries(QStringLiteral("total"), plotColor(0),
                                      [](const Sample& s) { return s.total; });
-    plot.setPointBudget(64);
+    plot.model().setPointBudget(64);
     SampleBuffer buffer(16);
-    plot.setSource(&buffer);
+    plot.model().setSource(&buffer);
     for (int i = 0; i < 5000; ++i) {
         buffer.push(sampleAt(i));
         plot.drain();
-        const std::vector<QPointF> pts = plot.points(total);
+        const std::vector<QPointF> pts = plot.model().points(total);
         QVERIFY(static_cast<int>(pts.size()) <= 64);
         QCOMPARE(pts.front().x(), 0.0);
         QCOMPARE(pts.back().x(), double(i));
@@ -308,9 +312,9 @@ void TestPlots::thinningKeepsNewestPointAndEvenSpacing()
 void TestPlots::windowModeScrolls()
 {
     std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    QCOMPARE(plot->windowSeconds(), 10.0);
+    QCOMPARE(plot->model().windowSeconds(), 10.0);
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     feed(buffer, *plot, 0.0, 1.0 / 64, 64 * 4); // 4 s: fewer than a window, which it fits
     QCOMPARE(plot->plot()->xAxis->range().lower, 0.0);
     QVERIFY(plot->plot()->xAxis->range().upper >= 4.0 - 1.0 / 64);
@@ -319,13 +323,13 @@ void TestPlots::windowModeScrolls()
     feed(buffer, *plot, 4.0, 1.0 / 64, 64 * 26 + 1); // on to 30 s
     QCOMPARE(plot->plot()->xAxis->range().upper, 30.0);
     QCOMPARE(plot->plot()->xAxis->range().lower, 20.0);
-    QVERIFY(plot->points(0).front().x() >= 30.0 - 11.0);
+    QVERIFY(plot->model().points(0).front().x() >= 30.0 - 11.0);
 
-    plot->setWindowSeconds(2.5);
+    plot->model().setWindowSeconds(2.5);
     plot->drain();
     QCOMPARE(plot->plot()->xAxis->range().lower, 27.5);
 
-    plot->setRangeMode(RangeMode::WholeRun);
+    plot->model().setRangeMode(RangeMode::WholeRun);
     feed(buffer, *plot, 30.0 + 1.0 / 64, 1.0 / 64, 64);
     QCOMPARE(plot->plot()->xAxis->range().upper, 31.0);
     QVERIFY(plot->plot()->xAxis->range().lower <= 27.5);
@@ -335,72 +339,72 @@ void TestPlots::rewindKeepsLaterPointsAsGhost()
 {
     auto [buffer, plot] = SourcedPlot(makeEnergyPlot(nullptr));
     feed(buffer, *plot, 0.0, 1.0 / 64, 64 * 8); // 0 .. 8 s
-    plot->addMark(2.0, QStringLiteral("dt = 5 ms"));
-    plot->addMark(6.0, QStringLiteral("RK4"));
+    plot->model().addMark(2.0, QStringLiteral("dt = 5 ms"));
+    plot->model().addMark(6.0, QStringLiteral("RK4"));
 
     plot->rewind(4.0);
     plot->drain();
-    for (int s = 0; s < plot->seriesCount(); ++s) {
-        QCOMPARE(plot->pointCount(s), 64 * 4 + 1);
-        QCOMPARE(plot->points(s).back().x(), 4.0);
-        QCOMPARE(static_cast<int>(plot->ghostPoints(s).size()), 64 * 4 - 1);
+    for (int s = 0; s < plot->model().seriesCount(); ++s) {
+        QCOMPARE(plot->model().pointCount(s), 64 * 4 + 1);
+        QCOMPARE(plot->model().points(s).back().x(), 4.0);
+        QCOMPARE(static_cast<int>(plot->model().ghostPoints(s).size()), 64 * 4 - 1);
     }
-    QCOMPARE(plot->markCount(), 2); // the one at 6 s in the ghost
-    QVERIFY(plot->markIsGhost(1));
+    QCOMPARE(plot->model().markCount(), 2); // the one at 6 s in the ghost
+    QVERIFY(plot->model().markIsGhost(1));
 
     // The run goes on from t = 4 s on a new branch, overwriting the ghost as it goes.
     feed(buffer, *plot, 4.0 + 1.0 / 64, 1.0 / 64, 64);
-    QCOMPARE(plot->pointCount(0), 64 * 5 + 1);
-    QCOMPARE(plot->points(0).back().x(), 5.0);
-    QCOMPARE(plot->ghostPoints(0).front().x(), 5.0 + 1.0 / 64);
+    QCOMPARE(plot->model().pointCount(0), 64 * 5 + 1);
+    QCOMPARE(plot->model().points(0).back().x(), 5.0);
+    QCOMPARE(plot->model().ghostPoints(0).front().x(), 5.0 + 1.0 / 64);
 
     plot->clear();
-    QCOMPARE(plot->pointCount(), 0);
-    QCOMPARE(plot->markCount(), 0);
+    QCOMPARE(plot->model().pointCount(), 0);
+    QCOMPARE(plot->model().markCount(), 0);
     QCOMPARE(plot->plot()->itemCount(), 0);
 }
 
 void TestPlots::sampleGoingBackRewinds()
 {
     auto [buffer, plot] = SourcedPlot(makeDriftPlot(nullptr));
-    plot->addMark(2.0, QStringLiteral("Verlet"));
-    plot->addMark(5.0, QStringLiteral("RK4"));
+    plot->model().addMark(2.0, QStringLiteral("Verlet"));
+    plot->model().addMark(5.0, QStringLiteral("RK4"));
     feed(buffer, *plot, 0.0, 0.5, 13); // 0 .. 6 s
     // Stepped back to 2 s without a rewind() call: the samples say so themselves.
     feed(buffer, *plot, 2.0, 0.5, 3); // 2, 2.5, 3 s
-    const std::vector<QPointF> pts = plot->points(0);
+    const std::vector<QPointF> pts = plot->model().points(0);
     QCOMPARE(static_cast<int>(pts.size()), 7);
     QCOMPARE(pts.back().x(), 3.0);
     for (std::size_t k = 1; k < pts.size(); ++k)
         QCOMPARE(pts[k].x() - pts[k - 1].x(), 0.5);
-    QCOMPARE(plot->markCount(), 1); // the mark at 2 s starts the new branch
+    QCOMPARE(plot->model().markCount(), 1); // the mark at 2 s starts the new branch
 
     // A new scene in the same buffer starts over at t = 0.
     feed(buffer, *plot, 0.0, 0.5, 2);
-    QCOMPARE(plot->pointCount(), 2);
+    QCOMPARE(plot->model().pointCount(), 2);
 }
 
 void TestPlots::marksAreBounded()
 {
     std::unique_ptr<PlotWidget> plot(makeEnergyPlot(nullptr));
-    plot->setRangeMode(RangeMode::WholeRun);
+    plot->model().setRangeMode(RangeMode::WholeRun);
     for (int i = 0; i < 500; ++i)
-        plot->addMark(0.1 * i, QStringLiteral("mark %1").arg(i));
-    QCOMPARE(plot->markCount(), PlotWidget::kMaxMarks);
-    QCOMPARE(plot->plot()->itemCount(), 2 * PlotWidget::kMaxMarks);
+        plot->model().addMark(0.1 * i, QStringLiteral("mark %1").arg(i));
+    QCOMPARE(plot->model().markCount(), PlotModel::kMaxMarks);
+    QCOMPARE(plot->plot()->itemCount(), 2 * PlotModel::kMaxMarks);
 
     plot->clear();
-    plot->setRangeMode(RangeMode::Window);
+    plot->model().setRangeMode(RangeMode::Window);
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     for (int second = 0; second < 100; ++second) {
         feed(buffer, *plot, second, 0.25, 4);
-        plot->addMark(second + 0.5, QStringLiteral("dt = %1 ms").arg(second));
+        plot->model().addMark(second + 0.5, QStringLiteral("dt = %1 ms").arg(second));
     }
     // Marks that scrolled out of the window (and its margin) are gone.
-    QVERIFY(plot->markCount() <= 12);
-    QVERIFY(plot->markCount() >= 10);
-    QCOMPARE(plot->plot()->itemCount(), 2 * plot->markCount());
+    QVERIFY(plot->model().markCount() <= 12);
+    QVERIFY(plot->model().markCount() >= 10);
+    QCOMPARE(plot->plot()->itemCount(), 2 * plot->model().markCount());
 }
 
 void TestPlots::userRangeChangePausesFollowing()
@@ -418,15 +422,15 @@ void TestPlots::userRangeChangePausesFollowing()
 
     feed(buffer, *plot, 30.0, 1.0 / 64, 64 * 30); // data keeps arriving
     QCOMPARE(plot->plot()->xAxis->range(), QCPRange(22, 25));
-    QCOMPARE(plot->points(0).back().x(), 60.0 - 1.0 / 64);
-    QCOMPARE(plot->points(0).front().x(), 22.0); // what the user looks at stays
+    QCOMPARE(plot->model().points(0).back().x(), 60.0 - 1.0 / 64);
+    QCOMPARE(plot->model().points(0).front().x(), 22.0); // what the user looks at stays
 
     plot->follow();
     plot->drain();
     QVERIFY(plot->isFollowing());
     QCOMPARE(following.count(), 2);
     QCOMPARE(plot->plot()->xAxis->range().upper, 60.0 - 1.0 / 64);
-    QVERIFY(plot->points(0).front().x() >= 60.0 - 11.0 - 1.0 / 64);
+    QVERIFY(plot->model().points(0).front().x() >= 60.0 - 11.0 - 1.0 / 64);
 }
 
 void TestPlots::wheelPausesFollowing()
@@ -434,7 +438,7 @@ void TestPlots::wheelPausesFollowing()
     PlotWidget* plot = makeMomentumPlot(nullptr);
     std::unique_ptr<PlotWidget> owner(plot);
     SampleBuffer buffer;
-    plot->setSource(&buffer);
+    plot->model().setSource(&buffer);
     plot->resize(800, 500);
     plot->show();
     QVERIFY(QTest::qWaitForWindowExposed(plot));
@@ -506,15 +510,15 @@ void TestPlots::contextMenuOffersExportsAndRanges()
         QVERIFY2(action(menu, QString::fromUtf8(text)), text);
     QVERIFY(action(menu, "Last 10 s")->isChecked());
     action(menu, "Whole run")->trigger();
-    QCOMPARE(plot->rangeMode(), RangeMode::WholeRun);
+    QCOMPARE(plot->model().rangeMode(), RangeMode::WholeRun);
     menu->close();
     QTRY_VERIFY(!plot->findChild<QMenu*>()); // deleted on close
 
     menu = openMenu();
     QVERIFY(action(menu, "Whole run")->isChecked());
     action(menu, "Last 30 s")->trigger();
-    QCOMPARE(plot->rangeMode(), RangeMode::Window);
-    QCOMPARE(plot->windowSeconds(), 30.0);
+    QCOMPARE(plot->model().rangeMode(), RangeMode::Window);
+    QCOMPARE(plot->model().windowSeconds(), 30.0);
     action(menu, "Follow")->trigger(); // unchecks: pauses
     QVERIFY(!plot->isFollowing());
     menu->close();

@@ -133,7 +133,7 @@ private slots:
             plot->drain();
         QCoreApplication::processEvents();
         QVERIFY(w.presentation());
-        QCOMPARE(w.size(), QSize(1024, 768));
+        QCOMPARE(w.frameGeometry(), QRect(0, 0, 1024, 768)); // as full screen covers it
 
         // Every visible toolbar's actions in sight, when running and in Edit mode (where the
         // scene editor's tools get a row of their own).

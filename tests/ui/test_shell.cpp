@@ -183,8 +183,69 @@ private slots:
                     QStringLiteral("--screenshots"), QStringLiteral("/nonexistent/shots")},
                    none, out, err),
             2);
-        QVERIFY2(err.contains(QStringLiteral("display")), qPrintable(err));
+        QVERIFY2(err.contains(QStringLiteral("DISPLAY")), qPrintable(err));
         QCOMPARE(err.count(QLatin1Char('\n')), 1);
+    }
+
+    // The arguments are read in the language they ask for: a mistake, Qt's own word for an
+    // unknown option, the help and the lack of a display, all in Czech with --lang cs (and
+    // still in English with --lang en).
+    void commandLineSpeaksTheLanguageAskedFor_data()
+    {
+        QTest::addColumn<QString>("lang");
+        QTest::newRow("cs") << QStringLiteral("cs");
+        QTest::newRow("en") << QStringLiteral("en");
+    }
+    void commandLineSpeaksTheLanguageAskedFor()
+    {
+        QFETCH(QString, lang);
+        QVERIFY(ui::applyLanguage(lang));
+        const auto said = [](const char* context, const char* text) {
+            return QCoreApplication::translate(context, text);
+        };
+        const QString stepWrong =
+            said("CommandLine", "--%1 needs %2, got \"%3\"")
+                .arg(QStringLiteral("step"), said("CommandLine", "a whole number from 1"),
+                     QStringLiteral("x"));
+        const QString unknown =
+            said("QCommandLineParser", "Unknown option '%1'.").arg(QStringLiteral("colour"));
+        const QString helpLine = said("CommandLine", "Show this text and quit.");
+        const QString noDisplay =
+            said("CommandLine", "no display to open the window on: set DISPLAY (an X "
+                                "server, or Xvfb) or WAYLAND_DISPLAY, or "
+                                "QT_QPA_PLATFORM=offscreen");
+        QVERIFY(ui::applyLanguage(QStringLiteral("en")));
+        if (lang == QLatin1String("cs")) // the test would notice English
+            for (const QString& text : {stepWrong, unknown, helpLine, noDisplay})
+                QVERIFY2(!text.contains(QStringLiteral("needs")) &&
+                             !text.contains(QStringLiteral("Unknown")) &&
+                             !text.contains(QStringLiteral("Show")) &&
+                             !text.contains(QStringLiteral("no display")),
+                         qPrintable(text));
+
+        const QProcessEnvironment env = test::offscreenEnvironment();
+        QString out, err;
+        // The flag before --lang and after it: both are read in its language.
+        QCOMPARE(
+            runGui({QStringLiteral("--step"), QStringLiteral("x"), QStringLiteral("--lang"), lang},
+                   env, out, err),
+            2);
+        QCOMPARE(err.trimmed(), QStringLiteral("rigidlab: ") + stepWrong);
+        QCOMPARE(
+            runGui({QStringLiteral("--lang=") + lang, QStringLiteral("--colour")}, env, out, err),
+            2);
+        QVERIFY2(err.contains(unknown), qPrintable(err));
+        QCOMPARE(runGui({QStringLiteral("--lang"), lang, QStringLiteral("--help")}, env, out, err),
+                 0);
+        QVERIFY2(out.contains(helpLine), qPrintable(out));
+        // The usage line names the program, not the path it was started by.
+        QVERIFY2(out.section(QLatin1Char('\n'), 0, 0).contains(QStringLiteral(" rigidlab ")),
+                 qPrintable(out));
+        QProcessEnvironment none = QProcessEnvironment::systemEnvironment();
+        for (const char* name : {"DISPLAY", "WAYLAND_DISPLAY", "QT_QPA_PLATFORM"})
+            none.remove(QLatin1String(name));
+        QCOMPARE(runGui({QStringLiteral("--lang"), lang}, none, out, err), 2);
+        QCOMPARE(err.trimmed(), QStringLiteral("rigidlab: ") + noDisplay);
     }
 
     void controlsHelpListsEveryShortcut()
@@ -264,10 +325,10 @@ private slots:
         // Running: the rate, in simulated seconds per wall second once a second has passed.
         c.setRunning(true);
         QVERIFY2(status().contains(QStringLiteral("steps/s")), qPrintable(status()));
-        QTRY_VERIFY_WITH_TIMEOUT(c.realTimeFactor().has_value(), 10000);
+        QTRY_VERIFY_WITH_TIMEOUT(c.timing().realTimeFactor().has_value(), 10000);
         text = status();
         QVERIFY2(text.contains(QStringLiteral("× real time")), qPrintable(text));
-        QVERIFY(*c.realTimeFactor() > 0.0);
+        QVERIFY(*c.timing().realTimeFactor() > 0.0);
 
         // Details off: no stage names even while running.
         w.statusDetailsAction()->setChecked(false);

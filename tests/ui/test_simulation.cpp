@@ -124,26 +124,26 @@ private slots:
         QCOMPARE(c.world().def().dt, kDt);
         // Paused, a frame takes no step.
         c.advanceClock(5 * kDt);
-        QCOMPARE(c.currentStep(), 0LL);
+        QCOMPARE(c.world().stepCount(), 0LL);
         c.setRunning(true);
         c.advanceClock(5 * kDt);
-        QCOMPARE(c.currentStep(), 5LL);
+        QCOMPARE(c.world().stepCount(), 5LL);
         QVERIFY(!c.slowerThanRealTime());
         // At half speed, four steps' worth of wall time owes two.
         c.setTimeScale(0.5);
         c.advanceClock(4 * kDt);
-        QCOMPARE(c.currentStep(), 7LL);
+        QCOMPARE(c.world().stepCount(), 7LL);
         c.setTimeScale(1.0);
         // A frame after a long gap counts as 0.1 s at most, and says the run fell behind.
         c.advanceClock(1.0);
-        QCOMPARE(c.currentStep(), 7LL + static_cast<long long>(0.1 / kDt));
+        QCOMPARE(c.world().stepCount(), 7LL + static_cast<long long>(0.1 / kDt));
         QVERIFY(c.slowerThanRealTime());
         // Held (the editor), the world never steps.
         c.setStepsHeld(true);
         c.advanceClock(5 * kDt);
-        QCOMPARE(c.currentStep(), 7LL + static_cast<long long>(0.1 / kDt));
+        QCOMPARE(c.world().stepCount(), 7LL + static_cast<long long>(0.1 / kDt));
         // The clock's time is the step's time, the samples' time too.
-        QCOMPARE(c.time(), stepTime(c.currentStep(), kDt));
+        QCOMPARE(c.time(), stepTime(c.world().stepCount(), kDt));
     }
 
     void lateFramesOfACheapWorldCatchUp()
@@ -231,11 +231,11 @@ private slots:
         c.setRunning(true);
         c.advanceClock(1.0);
         QVERIFY(c.slowerThanRealTime());
-        RL_VERIFY_NEAR(c.droppedSeconds(), 0.9, 1e-12, 0.0);
+        RL_VERIFY_NEAR(c.catchUp().dropped(), 0.9, 1e-12, 0.0);
         // What the long frame could not pay is not owed the next one.
-        const long long after = c.currentStep();
+        const long long after = c.world().stepCount();
         c.advanceClock(kDt);
-        QCOMPARE(c.currentStep(), after + 1);
+        QCOMPARE(c.world().stepCount(), after + 1);
         // Paused, the run is not said to be slow.
         c.setRunning(false);
         QVERIFY(!c.slowerThanRealTime());
@@ -266,7 +266,7 @@ private slots:
             if (QTest::currentTestFailed())
                 return;
         }
-        QVERIFY(c.currentStep() > 0);
+        QVERIFY(c.world().stepCount() > 0);
         // The status bar's own refresh reads the same clock.
         QMetaObject::invokeMethod(&w, "updateStatus");
         check("status refreshed");
@@ -276,7 +276,7 @@ private slots:
         check("step");
         c.stepBack();
         check("back");
-        c.seek(c.currentStep() / 2);
+        c.seek(c.world().stepCount() / 2);
         check("seek");
         c.reset();
         check("reset");
@@ -288,12 +288,12 @@ private slots:
         c.loadScene(ballScene(false), QStringLiteral("ball.json"));
         // Only a dynamic body of the world can be held.
         c.grab(7, physics::Vec2(0, 0));
-        QVERIFY(!c.grabbed());
+        QVERIFY(!c.grabSpring().body());
         c.grab(0, physics::Vec2(0, 0));
-        QCOMPARE(c.grabbed(), std::optional<physics::BodyId>(0));
+        QCOMPARE(c.grabSpring().body(), std::optional<physics::BodyId>(0));
         c.dragTo(physics::Vec2(1, 0));
         physics::Vec2 from, to;
-        QVERIFY(c.grabLine(from, to));
+        QVERIFY(c.grabSpring().line(c.world(), from, to));
         QCOMPARE(to, physics::Vec2(1, 0));
         const GrabSpring idle;
         QVERIFY(!idle.input(c.world())); // a spring that holds nothing pushes nothing
@@ -306,13 +306,13 @@ private slots:
                 QStringLiteral("x %1 m, vx %2 m/s").arg(ball.position.x()).arg(ball.velocity.x())));
         RL_VERIFY_NEAR(ball.position.y(), 0.0, 1e-12, 0.0);
         c.release();
-        QVERIFY(!c.grabbed());
-        QVERIFY(!c.grabLine(from, to));
+        QVERIFY(!c.grabSpring().body());
+        QVERIFY(!c.grabSpring().line(c.world(), from, to));
 
         // The pushes are logged: going back and forth replays them bit for bit.
         const physics::Vec2 there = ball.position;
         c.seek(0);
-        while (c.currentStep() < 20)
+        while (c.world().stepCount() < 20)
             c.stepForward();
         QCOMPARE(c.world().body(0).position, there);
     }
@@ -371,17 +371,17 @@ private slots:
         c.loadScene(ballScene(true), QStringLiteral("ball.json"));
         // A sample at the start, then one every kSampleInterval (1/240 s) of simulated time:
         // with dt = 1/128 s, one per step.
-        QCOMPARE(c.samples().written(), 1u);
+        QCOMPARE(c.recorder().samples().written(), 1u);
         for (int i = 0; i < 4; ++i)
             c.stepForward();
         std::uint64_t cursor = 0;
-        const std::vector<Sample> samples = c.samples().readSince(cursor);
+        const std::vector<Sample> samples = c.recorder().samples().readSince(cursor);
         QCOMPARE(samples.size(), 5u);
         QCOMPARE(samples.back().t, c.time());
-        RL_VERIFY_NEAR(samples.back().driftPercent, c.driftPercent(), 0.0, 0.0);
+        RL_VERIFY_NEAR(samples.back().driftPercent, c.recorder().driftPercent(c.world()), 0.0, 0.0);
         // A reset forgets them and samples the start again.
         c.reset();
-        QCOMPARE(c.samples().readSince(cursor).size(), 1u);
+        QCOMPARE(c.recorder().samples().readSince(cursor).size(), 1u);
 
         // The recorder alone: the references are the worlds at restart.
         physics::World world = lessons::buildWorld(ballScene(true));
@@ -430,14 +430,14 @@ private slots:
         for (int i = 0; i < 3; ++i)
             c.stepForward();
         c.setFriction(0.9);
-        QCOMPARE(c.edits().size(), 1u);
-        QCOMPARE(c.edits()[0].step, 3LL);
+        QCOMPARE(c.editLog().edits().size(), 1u);
+        QCOMPARE(c.editLog().edits()[0].step, 3LL);
         c.reset();
-        QCOMPARE(c.currentStep(), 0LL);
+        QCOMPARE(c.world().stepCount(), 0LL);
         QCOMPARE(c.world().def().friction, 0.9);
-        QCOMPARE(c.edits().size(), 1u);
-        QCOMPARE(c.edits()[0].step, 0LL);
-        QCOMPARE(c.edits()[0].key, std::string_view("friction"));
+        QCOMPARE(c.editLog().edits().size(), 1u);
+        QCOMPARE(c.editLog().edits()[0].step, 0LL);
+        QCOMPARE(c.editLog().edits()[0].key, std::string_view("friction"));
     }
 
     void comparedWorldsFollowTheSettingsBackAndReset()
@@ -508,13 +508,13 @@ private slots:
         c.loadScene(ballScene(true, "verlet"), QStringLiteral("ball.json"));
         for (int i = 0; i < 128; ++i)
             c.stepForward();
-        RL_VERIFY_AT_MOST(std::abs(c.driftPercent()), 1e-9);
+        RL_VERIFY_AT_MOST(std::abs(c.recorder().driftPercent(c.world())), 1e-9);
 
         c.loadScene(bouncingBall(), QStringLiteral("bounce.json"));
         double largest = 0.0;
         for (int i = 0; i < 3 * 128; ++i) {
             c.stepForward();
-            largest = std::max(largest, std::abs(c.driftPercent()));
+            largest = std::max(largest, std::abs(c.recorder().driftPercent(c.world())));
         }
         QVERIFY2(largest > 1e-6, qPrintable(QStringLiteral("largest drift %1 %").arg(largest)));
 

@@ -145,7 +145,7 @@ void showLive(ui::MainWindow& window, const lessons::Scene& scene)
     window.controller().loadScene(scene, QStringLiteral("soak.json"));
     if (qEnvironmentVariableIsEmpty("RIGIDLAB_SOAK_SECONDS"))
         window.controller().setHistoryBudget(kTestHistoryBudget);
-    window.plot(u"energy")->setRangeMode(ui::RangeMode::WholeRun);
+    window.plot(u"energy")->model().setRangeMode(ui::RangeMode::WholeRun);
     // The plots share one place in the window, behind tabs: each is floated out, so that every
     // one is drawn as it runs (the heaviest the window gets).
     for (QWidget* plot : window.plots())
@@ -166,8 +166,8 @@ void reportProgress(const ui::SimulationController& controller, long long step)
         outside += b.isDynamic() && (std::abs(b.position.x()) > 6 || std::abs(b.position.y()) > 4);
     qInfo("soak: step %lld (t = %.0f s): %.1f MiB resident, history from step %lld, "
           "%d contacts, %d bodies outside the box, E = %.1f J",
-          step, controller.world().time(), residentBytes() / 1048576.0, controller.earliestStep(),
-          controller.world().diagnostics().contacts, outside,
+          step, controller.world().time(), residentBytes() / 1048576.0,
+          controller.history().earliest(), controller.world().diagnostics().contacts, outside,
           controller.world().diagnostics().total);
 }
 
@@ -177,7 +177,8 @@ void reportRates(ui::MainWindow& window, double firstRate, double lastRate)
     qInfo("soak: %.0f steps per CPU second in the first tenth, %.0f in the last (ratio %.2f)",
           firstRate, lastRate, lastRate / firstRate);
     for (const auto* plot : window.plots())
-        qInfo("soak: plot %s holds %d points", qPrintable(plot->objectName()), plot->pointCount());
+        qInfo("soak: plot %s holds %d points", qPrintable(plot->objectName()),
+              plot->model().pointCount());
 }
 
 } // namespace
@@ -251,7 +252,7 @@ private slots:
                 QCoreApplication::processEvents();
                 frame.start();
             }
-            if (historyFullAt < 0 && controller.earliestStep() > 0)
+            if (historyFullAt < 0 && controller.history().earliest() > 0)
                 historyFullAt = i;
             // Warm: the history at its budget and the first tenth over.
             if (rssWarm < 0 && i >= tenth && historyFullAt > 0)

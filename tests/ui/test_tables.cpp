@@ -186,7 +186,7 @@ void TestTables::collisionFitsANarrowColumn()
         w.lessonPlayer().goToStep(step);
         for (int k = 0; k < 2000; ++k)
             w.controller().stepForward();
-        QVERIFY(!w.controller().measurements().collisions().empty());
+        QVERIFY(!w.controller().lessonWatch().measurements().collisions().empty());
         ui::CollisionPanel panel(w.controller());
         const QString problems = checkAtWidth(panel, kNarrow);
         QVERIFY2(problems.isEmpty(), qPrintable(QStringLiteral("step %1: ").arg(step) + problems));
@@ -271,8 +271,8 @@ void TestTables::bouncesCsvHasTheNumbers()
         QCOMPARE(row[1].toDouble(&ok), body->restitution);
         QVERIFY(ok);
         // The first bounce's height: the measured apex, exactly.
-        const auto& apexes =
-            w.controller().measurements().apexes(static_cast<int>(body - bodies.begin()));
+        const auto& apexes = w.controller().lessonWatch().measurements().apexes(
+            static_cast<int>(body - bodies.begin()));
         if (!apexes.empty()) {
             QCOMPARE(row[3].toDouble(&ok), apexes.front().y - apexes.front().bounceY);
             QVERIFY(ok);
@@ -318,7 +318,8 @@ void TestTables::collisionCsvHoldsBackTheAfterColumn()
                                         QStringLiteral("after")}));
     QCOMPARE(back.rows, panel.table()->csv().rows);
     // The momentum before and after, as the event recorded it, to the last bit.
-    const lessons::CollisionEvent& e = w.controller().measurements().collisions().front();
+    const lessons::CollisionEvent& e =
+        w.controller().lessonWatch().measurements().collisions().front();
     const auto& world = w.controller().world();
     const double pBefore = world.body(e.a).mass * e.velocityBefore[0].x() +
                            world.body(e.b).mass * e.velocityBefore[1].x();

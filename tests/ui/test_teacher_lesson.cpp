@@ -69,7 +69,7 @@ void TestTeacherLesson::collisionPanelShowsTheCarts()
     stepUntil(c, 2.0);
     // The carts settled on the ground in the first step (recorded as contacts that began),
     // then hit each other: 1.6 m apart at 4 m/s, at about 0.4 s.
-    const auto& events = c.measurements().collisions();
+    const auto& events = c.lessonWatch().measurements().collisions();
     QVERIFY(events.size() >= 3);
     QVERIFY2(events.front().t < 0.01, qPrintable(QString::number(events.front().t)));
     const lessons::CollisionEvent* hit = lessons::featuredCollision(
@@ -145,8 +145,8 @@ void TestTeacherLesson::runStopsWhenACartFallsOff()
     }
     QVERIFY(!c.isRunning());
     QCOMPARE(left.count(), 1);
-    QVERIFY(c.offStage());
-    QCOMPARE(c.offStage()->body, 1); // the light cart
+    QVERIFY(c.lessonWatch().leftStage());
+    QCOMPARE(c.lessonWatch().leftStage()->body, 1); // the light cart
     QVERIFY2(c.world().time() > 9.5 && c.world().time() < 12,
              qPrintable(QString::number(c.world().time())));
     const QString message = w.statusBar()->currentMessage();

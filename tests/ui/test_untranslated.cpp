@@ -9,7 +9,6 @@
 
 #include "common/language.h"
 #include "lesson_player/lesson_player.h"
-#include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 
 #include "shipped_lessons.h"

@@ -2,17 +2,24 @@
 // The lab window, driven as a user would: keys, mouse, menus, under the offscreen platform.
 
 #include "common/status_text.h"
+#include "lesson_player/lesson_panels.h"
+#include "measure/measurement_panel.h"
+#include "measure/measurement_session.h"
 #include "panels/control_panel.h"
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
+#include "panels/sat_panel.h"
 #include "plots/plot_export.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"
 #include "view/world_view.h"
+#include "window/dock_tabs.h"
 #include "window/main_window.h"
+#include "window/window_names.h"
 
 #include <QCheckBox>
+#include <QDockWidget>
 #include <QFile>
 #include <QImage>
 #include <QLabel>
@@ -25,6 +32,8 @@
 #include "test_main.h"
 
 #include <cstring>
+#include <map>
+#include <string_view>
 
 using namespace rigidlab;
 using rigidlab::test::writeFile;
@@ -105,6 +114,30 @@ private slots:
         QVERIFY(world.body(world.bodies().size() - 1).position.y() < y0);
     }
 
+    // Each panel a lesson step may show is the dock of its lesson-format name, under that
+    // name's titles (short on the tab, full in the tooltip), holding that panel.
+    void panelDocksAreTitledByTheirNames()
+    {
+        MainWindow w;
+        const std::map<std::string_view, QWidget*> panels{{"controls", &w.controls()},
+                                                          {"inspector", &w.inspector()},
+                                                          {"sat", &w.satPanel()},
+                                                          {"bounces", &w.bouncePanel()},
+                                                          {"collision", &w.collisionPanel()},
+                                                          {"measurement", w.measurement().panel()}};
+        QCOMPARE(panels.size(), ui::kStepPanelTitles.size());
+        for (const ui::StepPartName& part : ui::kStepPanelTitles) {
+            const QString name = QLatin1String(part.name);
+            QDockWidget* dock = w.dock(name);
+            QVERIFY2(dock, part.name);
+            QCOMPARE(dock->objectName(), name + QStringLiteral("Dock"));
+            QCOMPARE(dock->windowTitle(), ui::stepPartText(part.shortTitle));
+            QCOMPARE(ui::fullTitle(*dock), ui::stepPartText(part.title));
+            QVERIFY2(dock->isAncestorOf(panels.at(part.name)), part.name);
+            QCOMPARE(&ui::stepPanel(part.name), &part);
+        }
+    }
+
     void plotsReceiveData()
     {
         MainWindow w;
@@ -113,7 +146,7 @@ private slots:
             w.controller().stepForward();
         for (auto* plot : w.plots()) {
             plot->drain();
-            QVERIFY2(plot->pointCount() > 10, qPrintable(plot->objectName()));
+            QVERIFY2(plot->model().pointCount() > 10, qPrintable(plot->objectName()));
         }
     }
 
@@ -131,15 +164,15 @@ private slots:
         QVERIFY(c.isRunning());
         QTest::keyClick(&w.view(), Qt::Key_Space);
         QVERIFY(!c.isRunning());
-        const long long s0 = c.currentStep();
+        const long long s0 = c.world().stepCount();
         QTest::keyClick(&w.view(), Qt::Key_S);
-        QCOMPARE(c.currentStep(), s0 + 1);
+        QCOMPARE(c.world().stepCount(), s0 + 1);
         QTest::keyClick(&w.view(), Qt::Key_Right);
-        QCOMPARE(c.currentStep(), s0 + 2);
+        QCOMPARE(c.world().stepCount(), s0 + 2);
         QTest::keyClick(&w.view(), Qt::Key_Left);
-        QCOMPARE(c.currentStep(), s0 + 1);
+        QCOMPARE(c.world().stepCount(), s0 + 1);
         QTest::keyClick(&w.view(), Qt::Key_R);
-        QCOMPARE(c.currentStep(), 0LL);
+        QCOMPARE(c.world().stepCount(), 0LL);
         QVERIFY(w.overlayAction(ui::Overlay::Velocities));
         const bool before = w.view().overlays().isEnabled(ui::Overlay::Velocities);
         QTest::keyClick(&w.view(), Qt::Key_V);
@@ -172,7 +205,7 @@ private slots:
         const QByteArray end = stateBytes(c.world());
         for (int i = 0; i < back; ++i)
             c.stepBack();
-        QCOMPARE(c.currentStep(), static_cast<long long>(steps - back));
+        QCOMPARE(c.world().stepCount(), static_cast<long long>(steps - back));
         QVERIFY(stateBytes(c.world()) == middle);
         for (int i = 0; i < back; ++i)
             c.stepForward();
@@ -190,12 +223,12 @@ private slots:
         for (int i = 0; i < 400; ++i)
             c.stepForward();
         c.seek(200);
-        QCOMPARE(c.latestStep(), 400LL);
+        QCOMPARE(c.history().latest(), 400LL);
         ui::NumberField* e = w.controls().restitutionField();
         e->selectAll();
         QTest::keyClicks(e, QStringLiteral("0.2"));
         QTest::keyClick(e, Qt::Key_Return);
-        QCOMPARE(c.latestStep(), 200LL);
+        QCOMPARE(c.history().latest(), 200LL);
         QCOMPARE(c.world().def().restitution, 0.2);
     }
 
@@ -212,7 +245,7 @@ private slots:
         const physics::Vec2 start = c.world().body(ball).position;
         const QPoint at = w.view().mapFromScene(QPointF(start.x(), start.y()));
         QTest::mousePress(w.view().viewport(), Qt::LeftButton, {}, at);
-        QVERIFY(c.grabbed().has_value());
+        QVERIFY(c.grabSpring().body().has_value());
         QCOMPARE(w.inspector().body(), static_cast<int>(ball));
         QTest::mouseMove(w.view().viewport(), at + QPoint(0, -60));
         // Upwards, where nothing is in the way.
@@ -220,7 +253,7 @@ private slots:
         for (int i = 0; i < 1500; ++i)
             c.stepForward();
         QTest::mouseRelease(w.view().viewport(), Qt::LeftButton, {}, at + QPoint(0, -60));
-        QVERIFY(!c.grabbed().has_value());
+        QVERIFY(!c.grabSpring().body().has_value());
         const physics::Vec2 end = c.world().body(ball).position;
         // The spring pulls the grabbed point to the cursor.
         QVERIFY(wanted > 0.1);
@@ -265,7 +298,7 @@ private slots:
             for (const physics::Body& b : w.controller().world().bodies())
                 QVERIFY2(std::isfinite(b.position.x()) && std::isfinite(b.position.y()),
                          qPrintable(name));
-            QVERIFY(std::isfinite(w.controller().driftPercent()));
+            QVERIFY(std::isfinite(w.controller().recorder().driftPercent(w.controller().world())));
         }
     }
 

@@ -440,8 +440,8 @@ void TestWorksheet::prematureCheckIsNoAnswer()
     std::optional<double> value;
     for (int k = 0; k < 20000 && !value; ++k) {
         w.controller().stepForward();
-        value =
-            w.controller().measurements().value(measuredOf(step.questions[0]).measure, step.scene);
+        value = w.controller().lessonWatch().measurements().value(
+            measuredOf(step.questions[0]).measure, step.scene);
     }
     QVERIFY(value.has_value());
     player.answer(0, QLocale().toString(*value, 'g', 8));

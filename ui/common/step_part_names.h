@@ -12,6 +12,7 @@
 #include <QString>
 
 #include <array>
+#include <string_view>
 
 namespace rigidlab::ui {
 
@@ -48,6 +49,28 @@ inline constexpr std::array<StepPartName, 6> kStepPanelTitles{{
      QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Measurement")},
 }};
 
-static_assert(kStepPanelTitles.size() == lessons::kStepPanelNames.size());
+/// The titles of the panel that the lesson format calls `name` ("controls", "collision"):
+/// found by name, so that no caller depends on the table's order. A name that is not in the
+/// table is a programming error.
+constexpr const StepPartName& stepPanel(std::string_view name)
+{
+    std::size_t i = 0;
+    while (i + 1 < kStepPanelTitles.size() && std::string_view(kStepPanelTitles[i].name) != name)
+        ++i;
+    Q_ASSERT(std::string_view(kStepPanelTitles[i].name) == name);
+    return kStepPanelTitles[i];
+}
+
+/// Every panel the lesson format names has its titles, under the same name.
+constexpr bool everyPanelTitled()
+{
+    if (kStepPanelTitles.size() != lessons::kStepPanelNames.size())
+        return false;
+    for (const std::string_view name : lessons::kStepPanelNames)
+        if (std::string_view(stepPanel(name).name) != name)
+            return false;
+    return true;
+}
+static_assert(everyPanelTitled(), "a title for each of lessons::kStepPanelNames");
 
 } // namespace rigidlab::ui

@@ -377,7 +377,7 @@ void SceneProperties::showRow(const Row& row, int index)
         const double shown = f.key == "mass" ? (massGiven ? def.mass : def.density * area)
                                              : (massGiven ? def.mass / area : def.density);
         static_cast<NumberField*>(row.widgets[0])
-            ->setValue(shown, given ? NumberField::kFullDigits : kComputedDigits);
+            ->setValue(shown, given ? NumberField::kShownDigits : kComputedDigits);
         return;
     }
     if (const auto* v = std::get_if<physics::Vec2>(&value)) {

@@ -3,6 +3,8 @@
 
 #include "simulation/step_sampler.h"
 
+#include "rigidlab/physics/touching.h"
+
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -13,20 +15,12 @@ namespace {
 
 constexpr double kDegreesPerRadian = 180.0 / std::numbers::pi;
 
-/// Whether body `id` touches another body in this world: a contact point at or inside, or
-/// one that pushed this step (a solver that times the bounce within the step leaves the
-/// bodies apart again by the step's end).
+/// Whether body `id` touches another body in this world (physics::touches()).
 bool touches(const physics::World& world, physics::BodyId id)
 {
-    for (const physics::Contact& c : world.contacts()) {
-        if (c.a != id && c.b != id)
-            continue;
-        for (int i = 0; i < c.manifold.pointCount; ++i) {
-            const auto k = static_cast<std::size_t>(i);
-            if (c.manifold.points[k].separation <= 0.0 || c.normalImpulse[k] > 0.0)
-                return true;
-        }
-    }
+    for (const physics::Contact& c : world.contacts())
+        if ((c.a == id || c.b == id) && physics::touches(c))
+            return true;
     return false;
 }
 

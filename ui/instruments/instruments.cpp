@@ -1,19 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "instruments/instruments.h"
 
+#include "common/accessible_names.h"
 #include "common/shortcuts.h"
 
 #include "instruments/instruments_item.h"
 #include "instruments/instruments_panel.h"
 #include "plots/body_series.h"
+#include "plots/plot_exporter.h"
 #include "plots/plot_widget.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/history.h"
+#include "simulation/run_view.h"
 #include "view/world_view.h"
 
 #include <QAction>
 #include <QDockWidget>
 #include <QGraphicsScene>
 #include <QMainWindow>
+#include <QScrollArea>
 #include <QTabWidget>
 
 #include <algorithm>
@@ -68,15 +72,21 @@ QString graphTitle(const BodyGraphSpec& spec)
 
 } // namespace
 
-Instruments::Instruments(QMainWindow& window, SimulationController& controller, WorldView& view)
-    : QObject(&window), m_window(window), m_controller(controller), m_view(view),
-      m_panel(new InstrumentsPanel(controller, &window)),
-      m_item(new InstrumentsItem(*m_panel, controller)), m_dock(new QDockWidget(&window)),
-      m_graphAction(new QAction(tr("&Graph of bodies…"), this))
+Instruments::Instruments(QMainWindow& window, const RunView& run, WorldView& view)
+    : QObject(&window), m_window(window), m_run(run), m_view(view),
+      m_panel(new InstrumentsPanel(run, &window)), m_item(new InstrumentsItem(*m_panel, run)),
+      m_dock(new QDockWidget(&window)), m_graphAction(new QAction(tr("&Graph of bodies…"), this))
 {
     m_dock->setWindowTitle(tr("Instruments"));
     m_dock->setObjectName(QStringLiteral("instrumentsDock"));
-    m_dock->setWidget(m_panel);
+    // A panel that scrolls, as the window's others do: its tabs' least height added to a
+    // lesson step's panels and plots held the window taller than a 1024×768 projector.
+    auto* scroll = new QScrollArea(m_dock);
+    scroll->setWidgetResizable(true);
+    scroll->setFrameShape(QFrame::NoFrame);
+    scroll->setWidget(m_panel);
+    nameScrollArea(*scroll, m_dock->windowTitle());
+    m_dock->setWidget(scroll);
     window.addDockWidget(Qt::RightDockWidgetArea, m_dock);
     m_dock->hide(); // until asked for: View › Instruments
     m_dock->toggleViewAction()->setObjectName(QStringLiteral("instruments"));
@@ -122,8 +132,8 @@ Instruments::Instruments(QMainWindow& window, SimulationController& controller, 
                 spec.frame.bodies = m_frame;
                 showGraph(spec);
             });
-    connect(&m_controller, &SimulationController::worldChanged, this, &Instruments::followFrame);
-    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
+    connect(&m_run, &RunView::worldChanged, this, &Instruments::followFrame);
+    connect(&m_run, &RunView::sceneLoaded, this, [this] {
         keepGraphsOfThisScene();
         m_frame.clear();
     });
@@ -145,7 +155,7 @@ void Instruments::followFrame()
     // as an observer riding along sees them.
     if (m_frame.empty())
         return;
-    const FrameMotion motion = frameMotion(m_controller.world(), ReferenceFrame{m_frame});
+    const FrameMotion motion = frameMotion(m_run.world(), ReferenceFrame{m_frame});
     m_view.centerOn(QPointF(motion.origin.x(), motion.origin.y()));
 }
 
@@ -154,10 +164,10 @@ PlotWidget* Instruments::makeGraphPlot(const BodyGraphSpec& spec)
     auto* plot = new PlotWidget(graphTitle(spec), &m_window);
     plot->setObjectName(QStringLiteral("bodyGraph"));
     plot->setTitleShown(false); // its dock says it; exports do
-    plot->setExportContext(m_controller.scene().title);
+    plot->exporter().setContext(m_run.scene().title);
     plot->addMenuAction(m_graphAction); // another graph, from this one's menu
     auto* feed = new GraphFeed(*plot, spec.quantity, spec.frame);
-    const lessons::Scene& scene = m_controller.scene();
+    const lessons::Scene& scene = m_run.scene();
     if (spec.eachBody)
         for (physics::BodyId id : spec.bodies)
             feed->graph.addBody(id, scene.bodyLabel(id));
@@ -168,15 +178,15 @@ PlotWidget* Instruments::makeGraphPlot(const BodyGraphSpec& spec)
         feed->graph.addSum(spec.bodies, names.join(QStringLiteral(" + ")));
     }
     // From now on, and with the timeline: going back keeps the future as the plots' ghost.
-    plot->setTimelineStart(m_controller.earliestTime());
-    feed->graph.record(m_controller.world(), m_controller.time());
-    connect(&m_controller, &SimulationController::worldChanged, feed, [this, feed, plot] {
-        feed->graph.record(m_controller.world(), m_controller.time());
-        plot->setTimelineStart(m_controller.earliestTime());
+    plot->model().setTimelineStart(m_run.history().earliestTime());
+    feed->graph.record(m_run.world(), m_run.time());
+    connect(&m_run, &RunView::worldChanged, feed, [this, feed, plot] {
+        feed->graph.record(m_run.world(), m_run.time());
+        plot->model().setTimelineStart(m_run.history().earliestTime());
     });
-    connect(&m_controller, &SimulationController::rewound, plot, &PlotWidget::rewind);
-    connect(&m_controller, &SimulationController::samplesCleared, plot, &PlotWidget::clear);
-    connect(&m_controller, &SimulationController::frameAdvanced, plot, &PlotWidget::frameAdvanced);
+    connect(&m_run, &RunView::rewound, plot, &PlotWidget::rewind);
+    connect(&m_run, &RunView::samplesCleared, plot, &PlotWidget::clear);
+    connect(&m_run, &RunView::frameAdvanced, plot, &PlotWidget::frameAdvanced);
     return plot;
 }
 
@@ -191,7 +201,7 @@ PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
         m_placeGraph(dock);
     else
         m_window.addDockWidget(Qt::BottomDockWidgetArea, dock);
-    const lessons::Scene& scene = m_controller.scene();
+    const lessons::Scene& scene = m_run.scene();
     m_graphs.push_back(
         {dock, spec, sceneIds(scene, spec.bodies), sceneIds(scene, spec.frame.bodies)});
     dock->show();
@@ -201,7 +211,7 @@ PlotWidget* Instruments::showGraph(const BodyGraphSpec& spec)
 
 void Instruments::keepGraphsOfThisScene()
 {
-    const lessons::Scene& scene = m_controller.scene();
+    const lessons::Scene& scene = m_run.scene();
     std::vector<GraphDock> kept;
     for (GraphDock& g : m_graphs) {
         if (!g.dock) // closed by the user
@@ -230,8 +240,8 @@ void Instruments::keepGraphsOfThisScene()
 void Instruments::askGraph(const std::vector<physics::BodyId>& bodies)
 {
     QStringList labels;
-    for (int i = 0; i < static_cast<int>(m_controller.world().bodies().size()); ++i)
-        labels << m_controller.scene().bodyLabel(i);
+    for (int i = 0; i < static_cast<int>(m_run.world().bodies().size()); ++i)
+        labels << m_run.scene().bodyLabel(i);
     BodyGraphSpec initial;
     initial.bodies = bodies;
     BodyGraphDialog dialog(labels, initial, &m_window);

@@ -24,13 +24,13 @@ namespace rigidlab::ui {
 class InstrumentsItem;
 class InstrumentsPanel;
 class PlotWidget;
-class SimulationController;
+class RunView;
 class WorldView;
 
 class Instruments : public QObject {
     Q_OBJECT
 public:
-    Instruments(QMainWindow& window, SimulationController& controller, WorldView& view);
+    Instruments(QMainWindow& window, const RunView& run, WorldView& view);
 
     InstrumentsPanel* panel() const { return m_panel; }
     QDockWidget* dock() const { return m_dock; }
@@ -68,7 +68,7 @@ private:
     void keepGraphsOfThisScene();
 
     QMainWindow& m_window;
-    SimulationController& m_controller;
+    const RunView& m_run;
     WorldView& m_view;
     InstrumentsPanel* m_panel;
     InstrumentsItem* m_item;

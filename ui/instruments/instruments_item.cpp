@@ -2,7 +2,7 @@
 #include "instruments/instruments_item.h"
 
 #include "instruments/instruments_panel.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 #include "view/world_view.h"
 
 #include <QApplication>
@@ -54,9 +54,8 @@ void label(QPainter& p, const QPointF& at, const QString& text)
 
 } // namespace
 
-InstrumentsItem::InstrumentsItem(const InstrumentsPanel& panel,
-                                 const SimulationController& controller)
-    : m_panel(panel), m_controller(controller)
+InstrumentsItem::InstrumentsItem(const InstrumentsPanel& panel, const RunView& run)
+    : m_panel(panel), m_run(run)
 {
     setZValue(1000); // over the bodies and overlays
 }
@@ -116,7 +115,7 @@ void InstrumentsItem::paintProtractor(QPainter& p) const
     const Device d{m_device};
     physics::Vec2 vertex = m_panel.protractorVertex();
     physics::Vec2 armA = m_panel.protractorArmA(), armB = m_panel.protractorArmB();
-    const physics::World& w = m_controller.world();
+    const physics::World& w = m_run.world();
     const int id = m_panel.protractorBody();
     if (m_panel.protractorMode() == InstrumentsPanel::ProtractorMode::Body) {
         if (id < 0 || id >= static_cast<int>(w.bodies().size()))
@@ -177,7 +176,7 @@ void InstrumentsItem::paintStopwatchLine(QPainter& p) const
 void InstrumentsItem::paintProbe(QPainter& p) const
 {
     const int id = m_panel.probeBody();
-    const physics::World& w = m_controller.world();
+    const physics::World& w = m_run.world();
     if (id < 0 || id >= static_cast<int>(w.bodies().size()))
         return;
     const Device d{m_device};
@@ -186,7 +185,7 @@ void InstrumentsItem::paintProbe(QPainter& p) const
     p.drawLine(c - QPointF(6, 6), c + QPointF(6, 6));
     p.drawLine(c - QPointF(6, -6), c + QPointF(6, -6));
     label(p, c + QPointF(12, 0),
-          m_controller.scene().bodyLabel(id) + QLatin1Char('\n') + m_panel.probeText());
+          m_run.scene().bodyLabel(id) + QLatin1Char('\n') + m_panel.probeText());
 }
 
 InstrumentsMouse::InstrumentsMouse(InstrumentsPanel& panel, WorldView& view)

@@ -17,12 +17,12 @@
 namespace rigidlab::ui {
 
 class InstrumentsPanel;
-class SimulationController;
+class RunView;
 class WorldView;
 
 class InstrumentsItem : public QGraphicsItem {
 public:
-    InstrumentsItem(const InstrumentsPanel& panel, const SimulationController& controller);
+    InstrumentsItem(const InstrumentsPanel& panel, const RunView& run);
     QRectF boundingRect() const override;
     void paint(QPainter* painter, const QStyleOptionGraphicsItem* option, QWidget* widget) override;
 
@@ -33,7 +33,7 @@ private:
     void paintProbe(QPainter& p) const;
 
     const InstrumentsPanel& m_panel;
-    const SimulationController& m_controller;
+    const RunView& m_run;
     QTransform m_device; ///< world to device pixels, while painting
 };
 

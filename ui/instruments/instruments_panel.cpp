@@ -2,7 +2,7 @@
 #include "instruments/instruments_panel.h"
 
 #include "common/number_format.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -62,8 +62,8 @@ QWidget* pointRow(QWidget* parent, QDoubleSpinBox* x, QDoubleSpinBox* y)
 
 } // namespace
 
-InstrumentsPanel::InstrumentsPanel(SimulationController& controller, QWidget* parent)
-    : QWidget(parent), m_controller(controller), m_tabs(new QTabWidget(this))
+InstrumentsPanel::InstrumentsPanel(const RunView& run, QWidget* parent)
+    : QWidget(parent), m_run(run), m_tabs(new QTabWidget(this))
 {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
@@ -74,13 +74,13 @@ InstrumentsPanel::InstrumentsPanel(SimulationController& controller, QWidget* pa
     m_tabs->addTab(makeProbeTab(), tr("Probe"));
     m_tabs->addTab(makeFrameTab(), tr("Frame"));
     m_tabs->setAccessibleName(tr("Instruments"));
-    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
+    connect(&m_run, &RunView::sceneLoaded, this, [this] {
         m_stopwatch.reset();
         fillBodyLists();
         refresh();
     });
-    connect(&m_controller, &SimulationController::worldChanged, this, [this] {
-        m_stopwatch.observe(m_controller.world());
+    connect(&m_run, &RunView::worldChanged, this, [this] {
+        m_stopwatch.observe(m_run.world());
         refresh();
     });
     fillBodyLists();
@@ -171,7 +171,7 @@ bool InstrumentsPanel::snapping() const
 
 void InstrumentsPanel::setRuler(const physics::Vec2& a, const physics::Vec2& b)
 {
-    const physics::World& w = m_controller.world();
+    const physics::World& w = m_run.world();
     m_rulerA = snapping() ? instruments::snapPoint(w, a, m_snapRadius).point : a;
     m_rulerB = snapping() ? instruments::snapPoint(w, b, m_snapRadius).point : b;
     showPoints();
@@ -206,7 +206,7 @@ int InstrumentsPanel::protractorBody() const
 void InstrumentsPanel::setProtractorLines(const physics::Vec2& vertex, const physics::Vec2& a,
                                           const physics::Vec2& b)
 {
-    const physics::World& w = m_controller.world();
+    const physics::World& w = m_run.world();
     const auto snap = [&](const physics::Vec2& p) {
         return snapping() ? instruments::snapPoint(w, p, m_snapRadius).point : p;
     };
@@ -222,7 +222,7 @@ double InstrumentsPanel::protractorDegrees() const
     if (protractorMode() == ProtractorMode::Lines)
         return instruments::angleBetweenDegrees(m_vertex, m_armA, m_armB);
     const int id = protractorBody();
-    const physics::World& w = m_controller.world();
+    const physics::World& w = m_run.world();
     if (id < 0 || id >= static_cast<int>(w.bodies().size()))
         return std::nan("");
     return instruments::bodyAngleDegrees(w.body(id));

@@ -26,7 +26,7 @@ class QTabWidget;
 
 namespace rigidlab::ui {
 
-class SimulationController;
+class RunView;
 
 class InstrumentsPanel : public QWidget {
     Q_OBJECT
@@ -34,7 +34,7 @@ public:
     enum Tab { RulerTab, ProtractorTab, StopwatchTab, ProbeTab, FrameTab };
     enum class ProtractorMode { Body, Lines };
 
-    explicit InstrumentsPanel(SimulationController& controller, QWidget* parent = nullptr);
+    explicit InstrumentsPanel(const RunView& run, QWidget* parent = nullptr);
 
     QTabWidget* tabs() const { return m_tabs; }
     /// How close a dragged or typed end must come to snap [m] (the view sets it from its zoom).
@@ -118,7 +118,7 @@ private:
     void triggersChanged();
     QString num(double v, const QString& unit, double scale = 1.0) const;
 
-    SimulationController& m_controller;
+    const RunView& m_run;
     QTabWidget* m_tabs;
     double m_snapRadius = 0.05;
     physics::Vec2 m_rulerA{0, 0}, m_rulerB{1, 0};

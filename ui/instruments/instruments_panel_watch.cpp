@@ -3,7 +3,8 @@
 #include "instruments/instruments_panel.h"
 
 #include "common/number_format.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
+#include "simulation/sample_recorder.h"
 
 #include <QApplication>
 #include <QClipboard>
@@ -126,13 +127,13 @@ void InstrumentsPanel::setStopTrigger(const instruments::TriggerSpec& spec)
 
 void InstrumentsPanel::startStopwatch()
 {
-    m_stopwatch.press(m_controller.world());
+    m_stopwatch.press(m_run.world());
     refresh();
 }
 
 void InstrumentsPanel::stopStopwatch()
 {
-    m_stopwatch.halt(m_controller.world());
+    m_stopwatch.halt(m_run.world());
     refresh();
 }
 
@@ -144,13 +145,13 @@ void InstrumentsPanel::resetStopwatch()
 
 double InstrumentsPanel::stopwatchSeconds() const
 {
-    return m_stopwatch.reading(m_controller.world());
+    return m_stopwatch.reading(m_run.world());
 }
 
 QString InstrumentsPanel::stopwatchText() const
 {
     // Digits to the step: dt = 0.001 s shows milliseconds.
-    const double dt = m_controller.world().def().dt;
+    const double dt = m_run.world().def().dt;
     const int decimals = std::clamp(static_cast<int>(std::ceil(-std::log10(dt) - 1e-9)), 0, 6);
     return QLocale().toString(stopwatchSeconds(), 'f', decimals) + QStringLiteral("\u00a0s");
 }
@@ -209,13 +210,13 @@ int InstrumentsPanel::probeBody() const
 
 instruments::ProbeReading InstrumentsPanel::probeReading() const
 {
-    return instruments::probeBody(m_controller.world(), probeBody());
+    return instruments::probeBody(m_run.world(), probeBody());
 }
 
 QStringList InstrumentsPanel::probeLines() const
 {
     const int id = probeBody();
-    if (id < 0 || id >= static_cast<int>(m_controller.world().bodies().size()))
+    if (id < 0 || id >= static_cast<int>(m_run.world().bodies().size()))
         return {tr("no body chosen")};
     const instruments::ProbeReading r = probeReading();
     const auto vec = [this](const physics::Vec2& v, const QString& unit) {
@@ -223,7 +224,7 @@ QStringList InstrumentsPanel::probeLines() const
                    .arg(formatReadable(v.x(), 4, 1.0), formatReadable(v.y(), 4, 1.0)) +
                QChar(0x00a0) + unit;
     };
-    const double scale = m_controller.energyScale();
+    const double scale = m_run.recorder().energyScale();
     return {
         tr("x = %1").arg(num(r.position.x(), QStringLiteral("m"))),
         tr("y = %1").arg(num(r.position.y(), QStringLiteral("m"))),
@@ -240,10 +241,10 @@ QStringList InstrumentsPanel::probeLines() const
 
 void InstrumentsPanel::copyProbe()
 {
-    const QString body = m_controller.scene().bodyLabel(std::max(0, probeBody()));
+    const QString body = m_run.scene().bodyLabel(std::max(0, probeBody()));
     QApplication::clipboard()->setText(
-        tr("%1 at t = %2 s").arg(body, QLocale().toString(m_controller.time())) +
-        QLatin1Char('\n') + probeText());
+        tr("%1 at t = %2 s").arg(body, QLocale().toString(m_run.time())) + QLatin1Char('\n') +
+        probeText());
 }
 
 QWidget* InstrumentsPanel::makeFrameTab()
@@ -301,19 +302,19 @@ void InstrumentsPanel::setFrameBodies(const std::vector<physics::BodyId>& ids)
 
 void InstrumentsPanel::fillBodyLists()
 {
-    const auto count = static_cast<int>(m_controller.world().bodies().size());
+    const auto count = static_cast<int>(m_run.world().bodies().size());
     for (QComboBox* box : {m_protractorBody, m_watchBody, m_probeBody}) {
         const QSignalBlocker block(box);
         box->clear();
         for (int i = 0; i < count; ++i)
-            box->addItem(m_controller.scene().bodyLabel(i));
+            box->addItem(m_run.scene().bodyLabel(i));
     }
     const QSignalBlocker block(m_frameBodies);
     m_frameBodies->clear();
     for (int i = 0; i < count; ++i) {
-        auto* item = new QListWidgetItem(m_controller.scene().bodyLabel(i), m_frameBodies);
+        auto* item = new QListWidgetItem(m_run.scene().bodyLabel(i), m_frameBodies);
         item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
-        item->setCheckState(m_controller.world().body(i).isDynamic() ? Qt::Checked : Qt::Unchecked);
+        item->setCheckState(m_run.world().body(i).isDynamic() ? Qt::Checked : Qt::Unchecked);
     }
     m_frame->setCurrentIndex(0);
     triggersChanged();

@@ -3,7 +3,10 @@
 #include "lesson_editor/choice_editor.h"
 #include "lesson_editor/editor_parts.h"
 #include "lesson_editor/lesson_draft.h"
+#include "lesson_editor/measure_names.h"
 #include "lesson_editor/question_set_editor.h"
+
+#include "question_kinds/question_kinds.h"
 
 #include "common/accessible_names.h"
 
@@ -37,45 +40,6 @@ namespace rigidlab::ui {
 
 namespace {
 
-struct Kind {
-    const char* id;
-    const char* name;
-    const char* unit;
-    bool body;
-    bool time;
-};
-
-/// The measures the player knows (LESSON_FORMAT.md, `measure`), in the order offered.
-constexpr std::array<Kind, 10> kKinds{{
-    {"apex", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "height of a bounce's top"), "m",
-     true, false},
-    {"speed", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "speed"), "m/s", true, true},
-    {"velocity-x", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "velocity x"), "m/s", true,
-     true},
-    {"velocity-y", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "velocity y"), "m/s", true,
-     true},
-    {"angular-velocity", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "angular velocity"),
-     "rad/s", true, true},
-    {"position-x", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "position x"), "m", true,
-     true},
-    {"position-y", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "position y"), "m", true,
-     true},
-    {"energy-drift", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "energy drift"), "%", false,
-     true},
-    {"momentum-x", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "momentum x"), "kg m/s", false,
-     true},
-    {"momentum-y", QT_TRANSLATE_NOOP("rigidlab::ui::QuestionEditor", "momentum y"), "kg m/s", false,
-     true},
-}};
-
-const Kind& kindOf(const QString& id)
-{
-    for (const Kind& k : kKinds)
-        if (id == QLatin1String(k.id))
-            return k;
-    return kKinds[0];
-}
-
 /// The code of the editor's column `l` (editorLanguages: the window's first).
 QString langCode(int l)
 {
@@ -87,24 +51,10 @@ constexpr int kColumns = static_cast<int>(kEditorLanguages);
 namespace keys = lessons::schema::question_keys;
 using lessons::schema::jsonKey;
 
-/// A choice question's place among the kinds of question.
-constexpr std::size_t kChoice = lessons::schema::questionKindIndex<lessons::ChoiceQuestion>();
-
-/// The question a new measured question asks, in the window's language, for what it measures:
-/// it follows the kind, the body (by its label) and the time the teacher chooses.
-QString defaultPrompt(const QJsonObject& measure, const QString& bodyName)
+/// The kind of a question as the draft holds it, as a fresh one of that kind.
+lessons::QuestionKind kindIn(const QJsonObject& q)
 {
-    const Kind& k = kindOf(measure.value(u"kind").toString());
-    const QString quantity = QuestionEditor::tr(k.name);
-    const QString time = QLocale().toString(measure.value(u"time").toDouble(), 'g', 4);
-    if (!k.time)
-        return QuestionEditor::tr("How high does %1 rise after its bounce %2?")
-            .arg(bodyName)
-            .arg(measure.value(u"n").toInt(1));
-    if (!k.body)
-        return QuestionEditor::tr("What is the %1 at t = %2\u00a0s?").arg(quantity, time);
-    return QuestionEditor::tr("What is the %1 of %2 at t = %3\u00a0s?")
-        .arg(quantity, bodyName, time);
+    return lessons::schema::newQuestionKind(lessons::schema::questionKindIn(q));
 }
 
 } // namespace
@@ -151,31 +101,12 @@ QFormLayout* QuestionEditor::buildForm()
 {
     auto* form = new QFormLayout;
     addLanguageFields(form, QStringLiteral("questionPrompt"), tr("Question (%1)"), m_prompt);
-    m_questionKind = new QComboBox(this);
-    m_questionKind->setObjectName(QStringLiteral("questionType"));
-    m_questionKind->setAccessibleName(tr("Kind of question"));
-    // One item per kind of question, its index in Question::kind as its data.
-    for (std::size_t k = 0; k < std::variant_size_v<decltype(lessons::Question::kind)>; ++k)
-        m_questionKind->addItem(
-            std::visit(physics::Overloaded{[](const lessons::MeasuredQuestion&) {
-                                               return tr("a number measured from the run");
-                                           },
-                                           [](const lessons::ChoiceQuestion&) {
-                                               return tr("a choice of answers");
-                                           }},
-                       lessons::schema::newQuestionKind(k)),
-            QVariant::fromValue(k));
-    connect(m_questionKind, &QComboBox::activated, this,
-            [this] { setKind(m_questionKind->currentData().value<std::size_t>()); });
-    form->addRow(tr("&Kind"), m_questionKind);
-    m_choices = new ChoiceEditor(this);
-    connect(m_choices, &ChoiceEditor::edited, this, &QuestionEditor::edited);
-    form->addRow(m_choices);
+    addKindRows(form);
     m_fields = form;
     m_kind = new QComboBox(this);
     m_kind->setObjectName(QStringLiteral("questionKind"));
     m_kind->setAccessibleName(tr("What is measured"));
-    for (const Kind& k : kKinds)
+    for (const MeasureName& k : kMeasureNames)
         m_kind->addItem(tr(k.name), QLatin1String(k.id));
     m_body = new QComboBox(this);
     m_body->setObjectName(QStringLiteral("questionBody"));
@@ -226,6 +157,45 @@ QFormLayout* QuestionEditor::buildForm()
     return form;
 }
 
+void QuestionEditor::addKindRows(QFormLayout* form)
+{
+    m_questionKind = new QComboBox(this);
+    m_questionKind->setObjectName(QStringLiteral("questionType"));
+    m_questionKind->setAccessibleName(tr("Kind of question"));
+    // One item per kind of question, its index in Question::kind as its data.
+    for (std::size_t k = 0; k < std::variant_size_v<decltype(lessons::Question::kind)>; ++k)
+        m_questionKind->addItem(
+            std::visit(physics::Overloaded{
+                           [](const lessons::MeasuredQuestion&) {
+                               return tr("a number measured from the run");
+                           },
+                           [](const lessons::ChoiceQuestion&) { return tr("a choice of answers"); },
+                           [](const auto& kind) {
+                               return kindTitle(std::type_identity<std::decay_t<decltype(kind)>>{});
+                           }},
+                       lessons::schema::newQuestionKind(k)),
+            QVariant::fromValue(k));
+    connect(m_questionKind, &QComboBox::activated, this,
+            [this] { setKind(m_questionKind->currentData().value<std::size_t>()); });
+    form->addRow(tr("&Kind"), m_questionKind);
+    m_choices = new ChoiceEditor(this);
+    connect(m_choices, &ChoiceEditor::edited, this, &QuestionEditor::edited);
+    form->addRow(m_choices);
+    // The page of each kind of ui/question_kinds/ (the older kinds' fields are this form's).
+    m_pages.assign(std::variant_size_v<lessons::QuestionKind>, nullptr);
+    for (std::size_t k = 0; k < m_pages.size(); ++k)
+        std::visit(physics::Overloaded{[](const lessons::MeasuredQuestion&) {},
+                                       [](const lessons::ChoiceQuestion&) {},
+                                       [&](const auto& kind) {
+                                           m_pages[k] = editorPage(
+                                               std::type_identity<std::decay_t<decltype(kind)>>{},
+                                               this);
+                                           m_pages[k]->edited = [this] { edited(); };
+                                           form->addRow(m_pages[k]);
+                                       }},
+                   lessons::schema::newQuestionKind(k));
+}
+
 void QuestionEditor::addLanguageFields(QFormLayout* form, const QString& name, const QString& label,
                                        std::array<QLineEdit*, kEditorLanguages>& fields)
 {
@@ -274,7 +244,7 @@ void QuestionEditor::store(const QJsonObject& q)
 
 QJsonObject QuestionEditor::defaultMeasured() const
 {
-    const Kind& k = kKinds[1]; // speed at a time: any body, any scene
+    const MeasureName& k = kMeasureNames[1]; // speed at a time: any body, any scene
     QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}, {QStringLiteral("time"), 1}};
     const QList<std::pair<QString, QString>> bodies = movingBodies();
     if (!bodies.isEmpty())
@@ -302,10 +272,14 @@ void QuestionEditor::setKind(std::size_t kind)
     // question of that kind does.
     for (const QString& key : lessons::schema::questionKindKeys(was))
         q.remove(key);
-    const QJsonObject fresh = std::visit(
-        physics::Overloaded{[this](const lessons::MeasuredQuestion&) { return defaultMeasured(); },
-                            [this](const lessons::ChoiceQuestion&) { return defaultChoice(); }},
-        lessons::schema::newQuestionKind(kind));
+    const QJsonObject fresh =
+        std::visit(physics::Overloaded{
+                       [this](const lessons::MeasuredQuestion&) { return defaultMeasured(); },
+                       [this](const lessons::ChoiceQuestion&) { return defaultChoice(); },
+                       [this](const auto& kind) {
+                           return newKindKeys(std::type_identity<std::decay_t<decltype(kind)>>{});
+                       }},
+                   lessons::schema::newQuestionKind(kind));
     for (auto it = fresh.begin(); it != fresh.end(); ++it)
         q.insert(it.key(), it.value());
     store(q);
@@ -358,10 +332,11 @@ void QuestionEditor::edited()
         else
             q.insert(key, text);
     }
-    if (lessons::schema::questionKindIn(q) == kChoice)
-        q = m_choices->applyTo(q);
-    else
-        applyMeasured(q);
+    std::visit(physics::Overloaded{
+                   [&](const lessons::MeasuredQuestion&) { applyMeasured(q); },
+                   [&](const lessons::ChoiceQuestion&) { q = m_choices->applyTo(q); },
+                   [&](const auto&) { m_pages[lessons::schema::questionKindIn(q)]->applyTo(q); }},
+               kindIn(q));
     followMeasure(before, q);
     QJsonArray hold = q.value(jsonKey(keys::kHoldBack)).toArray();
     const bool held = hold.contains(QStringLiteral("run"));
@@ -420,7 +395,7 @@ QString QuestionEditor::bodyName(const QString& id) const
 
 void QuestionEditor::applyMeasured(QJsonObject& q)
 {
-    const Kind& k = kindOf(m_kind->currentData().toString());
+    const MeasureName& k = measureName(m_kind->currentData().toString());
     QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}};
     const QJsonObject old = q.value(jsonKey(keys::kMeasure)).toObject();
     if (k.body && m_body->currentIndex() >= 0)
@@ -433,7 +408,7 @@ void QuestionEditor::applyMeasured(QJsonObject& q)
                 measure.insert(QLatin1String(key), old.value(QLatin1String(key)));
     q.insert(jsonKey(keys::kMeasure), measure);
     if (old.value(u"kind").toString() != QLatin1String(k.id) &&
-        m_unit->text() == kindOf(old.value(u"kind").toString()).unit)
+        m_unit->text() == measureName(old.value(u"kind").toString()).unit)
         m_unit->setText(QLatin1String(k.unit)); // the new quantity's unit, unless typed
     q.insert(jsonKey(keys::kUnit), m_unit->text());
     q.insert(jsonKey(keys::kTolerance), m_tolerance->value() / 100.0);
@@ -488,7 +463,7 @@ void QuestionEditor::refresh()
             field->setPlaceholderText(shownText(v));
         }
     }
-    const Kind& k = kindOf(measure.value(u"kind").toString());
+    const MeasureName& k = measureName(measure.value(u"kind").toString());
     m_kind->setCurrentIndex(m_kind->findData(QLatin1String(k.id)));
     m_body->setEnabled(k.body);
     m_time->setEnabled(k.time);
@@ -498,16 +473,24 @@ void QuestionEditor::refresh()
     m_set->show(q.value(jsonKey(keys::kSet)).toObject());
     m_holdRun->setChecked(
         q.value(jsonKey(keys::kHoldBack)).toArray().contains(QStringLiteral("run")));
-    // A choice question shows its options in place of what a number is measured by.
+    // Each kind shows its own fields only: the measured kind's rows, the options of a choice,
+    // the page of a kind of ui/question_kinds/.
     const std::size_t kind = lessons::schema::questionKindIn(q);
-    const bool choice = kind == kChoice;
+    const bool measured = kind == lessons::schema::questionKindIndex<lessons::MeasuredQuestion>();
+    const bool choice = kind == lessons::schema::questionKindIndex<lessons::ChoiceQuestion>();
     m_questionKind->setCurrentIndex(m_questionKind->findData(QVariant::fromValue(kind)));
     for (QWidget* w :
          std::initializer_list<QWidget*>{m_kind, m_body, m_time, m_unit, m_tolerance, m_set})
-        m_fields->setRowVisible(w, !choice);
+        m_fields->setRowVisible(w, measured);
     m_fields->setRowVisible(m_choices, choice);
     if (choice)
         m_choices->setQuestion(q);
+    for (std::size_t k = 0; k < m_pages.size(); ++k)
+        if (m_pages[k]) {
+            m_fields->setRowVisible(m_pages[k], k == kind);
+            if (k == kind)
+                m_pages[k]->showQuestion(q);
+        }
     const bool any = currentQuestion() >= 0;
     m_form->setVisible(any);
     m_refreshing = false;
@@ -550,6 +533,10 @@ void QuestionEditor::showAnswer()
                            tr("The student chooses one of %1 options; the right one is “%2”.")
                                .arg(q.choices.size())
                                .arg(q.choices.value(q.answer)));
+                   },
+                   [&](const auto& kind) {
+                       m_answer->setAccessibleName(tr("The right answer"));
+                       m_answer->setText(lessons::keepUnitsTogether(answerLine(kind)));
                    }},
                question.kind);
 }

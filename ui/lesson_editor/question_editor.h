@@ -19,6 +19,7 @@
 #include <array>
 #include <cstddef>
 #include <utility>
+#include <vector>
 
 class QCheckBox;
 class QComboBox;
@@ -31,6 +32,7 @@ class QListWidget;
 namespace rigidlab::ui {
 
 class ChoiceEditor;
+class KindPage;
 class LessonDraft;
 class QuestionSetEditor;
 
@@ -52,6 +54,10 @@ public:
 
 private:
     QFormLayout* buildForm();
+    /// The question's kind in `form`: its chooser, the options of a choice and the page of each
+    /// kind of ui/question_kinds/ (the measured kind's fields are the form's own rows), each
+    /// shown for a question of its kind.
+    void addKindRows(QFormLayout* form);
     /// A field per language in `form`, named `name`_CODE, labelled `label` with the language.
     void addLanguageFields(QFormLayout* form, const QString& name, const QString& label,
                            std::array<QLineEdit*, kEditorLanguages>& fields);
@@ -85,6 +91,9 @@ private:
     std::array<QLineEdit*, kEditorLanguages> m_hint{};
     QComboBox* m_questionKind = nullptr; ///< a number measured from the run, or a choice
     ChoiceEditor* m_choices = nullptr;
+    /// The page of each kind of ui/question_kinds/, by its index in lessons::QuestionKind; null
+    /// for the measured and the choice kind, whose fields are the form's own rows.
+    std::vector<KindPage*> m_pages;
     QFormLayout* m_fields = nullptr; ///< the selected question's form
     QComboBox* m_kind = nullptr;
     QComboBox* m_body = nullptr;

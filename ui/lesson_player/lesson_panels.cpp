@@ -3,7 +3,8 @@
 
 #include "panels/fitting_table.h"
 #include "panels/impulse_formula_view.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/lesson_watch.h"
+#include "simulation/run_view.h"
 
 #include "run/featured_collision.h"
 
@@ -119,7 +120,7 @@ struct CollisionRows {
     }
 };
 
-BouncePanel::BouncePanel(SimulationController& controller, QWidget* parent)
+BouncePanel::BouncePanel(const RunView& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_table(new FittingTable(this))
 {
     m_table->setAccessibleName(tr("Bounce heights"));
@@ -131,8 +132,8 @@ BouncePanel::BouncePanel(SimulationController& controller, QWidget* parent)
     note->setWordWrap(true);
     layout->addWidget(note);
     addTableAndExport(layout, m_table, this);
-    connect(&m_controller, &SimulationController::worldChanged, this, &BouncePanel::refresh);
-    connect(&m_controller, &SimulationController::sceneLoaded, this, &BouncePanel::refresh);
+    connect(&m_controller, &RunView::worldChanged, this, &BouncePanel::refresh);
+    connect(&m_controller, &RunView::sceneLoaded, this, &BouncePanel::refresh);
     refreshNow();
 }
 
@@ -165,7 +166,7 @@ void BouncePanel::refreshNow()
             continue;
         const QString name = scene.bodyLabel(static_cast<physics::BodyId>(id));
         const double e = b.restitution;
-        const auto& apexes = m_controller.measurements().apexes(static_cast<int>(id));
+        const auto& apexes = m_controller.lessonWatch().measurements().apexes(static_cast<int>(id));
         // The drop height: from where the body started to where it first touched down.
         double previous = apexes.empty()
                               ? NAN
@@ -239,7 +240,7 @@ void BouncePanel::setHeightsHeld(bool held)
     refreshNow();
 }
 
-CollisionPanel::CollisionPanel(SimulationController& controller, QWidget* parent)
+CollisionPanel::CollisionPanel(const RunView& controller, QWidget* parent)
     : QWidget(parent), m_controller(controller), m_title(new QLabel(this)),
       m_table(new FittingTable(this)), m_formula(new ImpulseFormulaView(this))
 {
@@ -249,8 +250,8 @@ CollisionPanel::CollisionPanel(SimulationController& controller, QWidget* parent
     layout->addWidget(m_title);
     addTableAndExport(layout, m_table, this);
     layout->insertWidget(layout->count() - 1, m_formula); // above the closing stretch
-    connect(&m_controller, &SimulationController::worldChanged, this, &CollisionPanel::refresh);
-    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
+    connect(&m_controller, &RunView::worldChanged, this, &CollisionPanel::refresh);
+    connect(&m_controller, &RunView::sceneLoaded, this, [this] {
         m_shownCount = -1;
         refresh();
     });
@@ -259,7 +260,7 @@ CollisionPanel::CollisionPanel(SimulationController& controller, QWidget* parent
 
 void CollisionPanel::refresh()
 {
-    const auto& events = m_controller.measurements().collisions();
+    const auto& events = m_controller.lessonWatch().measurements().collisions();
     const int count = static_cast<int>(events.size());
     if (count == m_shownCount)
         return;

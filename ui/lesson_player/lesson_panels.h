@@ -26,13 +26,13 @@ namespace rigidlab::ui {
 
 struct CollisionRows;
 
-class SimulationController;
+class RunView;
 class ImpulseFormulaView;
 
 class BouncePanel : public QWidget {
     Q_OBJECT
 public:
-    explicit BouncePanel(SimulationController& controller, QWidget* parent = nullptr);
+    explicit BouncePanel(const RunView& controller, QWidget* parent = nullptr);
     FittingTable* table() const { return m_table; }
     /// Held: the measured heights and their ratios read "?" until the student has answered.
     void setHeightsHeld(bool held);
@@ -47,7 +47,7 @@ private:
     static void setHeaders(TableText& wide, TableText& narrow, CsvTable& csv,
                            const QString& heldTip);
 
-    SimulationController& m_controller;
+    const RunView& m_controller;
     FittingTable* m_table;
     bool m_heightsHeld = false;
 };
@@ -55,7 +55,7 @@ private:
 class CollisionPanel : public QWidget {
     Q_OBJECT
 public:
-    explicit CollisionPanel(SimulationController& controller, QWidget* parent = nullptr);
+    explicit CollisionPanel(const RunView& controller, QWidget* parent = nullptr);
     FittingTable* table() const { return m_table; }
     /// Which collision the table shows, and when ("Collision of … at t = … s").
     QLabel* title() const { return m_title; }
@@ -74,7 +74,7 @@ private:
     static void addPredictedSpins(CollisionRows& rows, const lessons::CollisionEvent& e, int k,
                                   const physics::Body& b, const QString& name);
 
-    SimulationController& m_controller;
+    const RunView& m_controller;
     QLabel* m_title;
     FittingTable* m_table;
     ImpulseFormulaView* m_formula;        ///< j with the hit's numbers, under the table

@@ -6,6 +6,7 @@
 #include "format/answers_file.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
+#include "question_kinds/kind_ui.h"
 #include "run/measurements.h"
 
 #include <QWidget>
@@ -164,6 +165,12 @@ private:
                           const lessons::MeasuredQuestion& q);
     void buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
                         const lessons::ChoiceQuestion& q);
+    /// Keeps the parts of the next question's answer row.
+    void addRow(const AnswerRow& parts);
+    /// What question i's answer row, as its kind builds it, asks of the player.
+    RowHooks rowHooks(std::size_t i);
+    /// The number typed for question i, checked; nullopt when it is none (said under it).
+    std::optional<double> typedAnswer(std::size_t i);
     /// The student's name and class fields.
     void buildStudentFields(QVBoxLayout* layout);
     /// Keeps question i's tries, and the settings the step runs with, in the lesson's record.

@@ -10,6 +10,7 @@
 
 #include "common/announcer.h"
 #include "panels/number_field.h"
+#include "question_kinds/question_kinds.h"
 #include "simulation/simulation_controller.h"
 
 #include "run/measurements.h"
@@ -101,12 +102,15 @@ void LessonPlayer::buildQuestions()
         prompt->setWordWrap(true);
         v->addWidget(prompt);
         m_questionLayout->addWidget(box);
-        std::visit(physics::Overloaded{[&](const lessons::MeasuredQuestion& measured) {
-                                           buildMeasuredRow(i, prompt, v, measured);
-                                       },
-                                       [&](const lessons::ChoiceQuestion& choice) {
-                                           buildChoiceRow(i, prompt, v, choice);
-                                       }},
+        // The kinds older than ui/question_kinds/ are built here; every other builds its own.
+        std::visit(physics::Overloaded{
+                       [&](const lessons::MeasuredQuestion& measured) {
+                           buildMeasuredRow(i, prompt, v, measured);
+                       },
+                       [&](const lessons::ChoiceQuestion& choice) {
+                           buildChoiceRow(i, prompt, v, choice);
+                       },
+                       [&](const auto& kind) { addRow(answerRow(kind, prompt, v, rowHooks(i))); }},
                    q.kind);
     }
     orderTabs();
@@ -115,49 +119,45 @@ void LessonPlayer::buildQuestions()
 void LessonPlayer::buildMeasuredRow(std::size_t i, QLabel* prompt, QVBoxLayout* v,
                                     const lessons::MeasuredQuestion& q)
 {
-    QWidget* box = prompt->parentWidget();
-    {
-        // The answer and its unit on a line of their own, the buttons below: side by side
-        // they left the answer a few letters wide in a narrow column.
-        auto* row = new QHBoxLayout;
-        auto* buttons = new QHBoxLayout;
-        auto* edit = new QLineEdit(box);
-        // No validator: it would drop the separator the locale does not use ("0.0156" typed
-        // in Czech became 00156). What was typed is read when it is checked, point or comma.
-        edit->setPlaceholderText(tr("your answer"));
-        // A screen reader names the field by its question and says the unit it is in.
-        prompt->setBuddy(edit);
-        if (!q.unit.isEmpty())
-            edit->setAccessibleDescription(tr("your answer, in %1").arg(q.unit));
-        row->addWidget(edit, 1);
-        row->addWidget(new QLabel(q.unit, box));
-        auto* check = new QPushButton(tr("Check"), box);
-        buttons->addWidget(check);
-        auto* show = new QPushButton(tr("Show me"), box);
-        show->setToolTip(tr("Give up and show the measured value"));
-        buttons->addWidget(show);
-        v->addLayout(row);
-        v->addLayout(buttons);
-        auto* result = new QLabel(box);
-        result->setWordWrap(true);
-        result->setVisible(false); // no empty line under the buttons before the first try
-        v->addWidget(result);
-        QuestionRow questionRow;
-        questionRow.edit = edit;
-        questionRow.result = result;
-        questionRow.show = show;
-        m_rows.push_back(questionRow);
-        auto judge = [this, i] {
-            if (m_lesson && i < m_rows.size())
-                checkTyped(i);
-        };
-        connect(check, &QPushButton::clicked, this, judge);
-        connect(edit, &QLineEdit::returnPressed, this, judge);
-        connect(show, &QPushButton::clicked, this, [this, i] {
-            if (m_lesson && i < m_rows.size())
-                applyTry(i, measuredTry(i));
-        });
-    }
+    const AnswerRow parts =
+        typedNumberRow(prompt, v, q.unit, tr("Give up and show the measured value"));
+    addRow(parts);
+    auto judge = [this, i] {
+        if (m_lesson && i < m_rows.size())
+            checkTyped(i);
+    };
+    connect(parts.check, &QPushButton::clicked, this, judge);
+    connect(parts.edit, &QLineEdit::returnPressed, this, judge);
+    connect(parts.show, &QPushButton::clicked, this, [this, i] {
+        if (m_lesson && i < m_rows.size())
+            applyTry(i, measuredTry(i));
+    });
+}
+
+void LessonPlayer::addRow(const AnswerRow& parts)
+{
+    QuestionRow row;
+    row.edit = parts.edit;
+    row.choices = parts.choices;
+    row.check = parts.check;
+    row.result = parts.result;
+    row.show = parts.show;
+    m_rows.push_back(row);
+}
+
+RowHooks LessonPlayer::rowHooks(std::size_t i)
+{
+    RowHooks hooks;
+    hooks.judge = [this, i](const QuestionTry& attempt) {
+        if (m_lesson && i < m_rows.size())
+            applyTry(i, attempt);
+    };
+    hooks.typedNumber = [this, i]() -> std::optional<double> {
+        if (!m_lesson || i >= m_rows.size())
+            return std::nullopt;
+        return typedAnswer(i);
+    };
+    return hooks;
 }
 
 void LessonPlayer::orderTabs()
@@ -174,20 +174,29 @@ void LessonPlayer::orderTabs()
         setTabOrder(order[k - 1], order[k]);
 }
 
-void LessonPlayer::checkTyped(std::size_t i)
+std::optional<double> LessonPlayer::typedAnswer(std::size_t i)
 {
     QuestionRow& row = m_rows[i];
     const std::optional<double> parsed = parseNumber(row.edit->text());
     if (!parsed) {
         askFirst(row.result, tr("Type a number first."));
-        return;
+        return std::nullopt;
     }
-    const double answer = *parsed;
-    if (std::abs(answer) > kMaxAnswer) {
+    if (std::abs(*parsed) > kMaxAnswer) {
         askFirst(row.result, tr("Type a number from %1 to %2.")
                                  .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
-        return;
+        return std::nullopt;
     }
+    return parsed;
+}
+
+void LessonPlayer::checkTyped(std::size_t i)
+{
+    QuestionRow& row = m_rows[i];
+    const std::optional<double> typed = typedAnswer(i);
+    if (!typed)
+        return;
+    const double answer = *typed;
     // A question that asks for settings first is judged on the run it asks for.
     const AskedRun asked = askedRunOf(i);
     if (!asked.matches() && asked.studentCanSet) {
@@ -212,7 +221,7 @@ void LessonPlayer::checkTyped(std::size_t i)
 AskedRun LessonPlayer::askedRunOf(std::size_t i) const
 {
     const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
-    return askedRun(step, step.questions[i], m_controller.world(), m_controller.edits());
+    return askedRun(step, step.questions[i], m_controller.world(), m_controller.editLog().edits());
 }
 
 void LessonPlayer::buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
@@ -285,7 +294,7 @@ QuestionTry LessonPlayer::measuredTry(std::size_t i)
     // The window's run counts when it is the run the question asks for (askedRun).
     const bool liveCounts = askedRunOf(i).matches();
     if (liveCounts)
-        if (const auto live = m_controller.measurements().value(measure, step.scene))
+        if (const auto live = m_controller.lessonWatch().measurements().value(measure, step.scene))
             return numberTry(live, false);
     // While the scene may not run, the student could never get a verdict: the same run is
     // done without a window instead (it is deterministic, so it measures what the window

@@ -20,8 +20,10 @@
 #include <QPushButton>
 #include <QScrollArea>
 #include <QScrollBar>
+#include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <iterator>
 
 namespace rigidlab::ui {
@@ -33,6 +35,8 @@ namespace {
 /// hold the dock wider than the screen before they go behind tabs.
 constexpr QSize kPlotLeast(180, 130);
 constexpr double kMarkerPx = 6.0;
+/// The controls beside the plots take up to 1/kControlsShare of the panel's width.
+constexpr int kControlsShare = 3;
 
 /// Draws a series as markers of `shape` without a line between them.
 void asMarkers(PlotWidget& plot, int series, QCPScatterStyle::ScatterShape shape)
@@ -55,7 +59,7 @@ MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
     m_plots = new PlotShelf(this);
     m_comparison = new PlotWidget(tr("Measured and simulated"), m_plots);
     m_comparison->setAccessibleName(tr("Plot: measured points and the simulated line"));
-    m_comparison->setRangeMode(RangeMode::WholeRun);
+    m_comparison->model().setRangeMode(RangeMode::WholeRun);
     m_comparison->setMinimumSize(kPlotLeast);
     m_comparison->setTitleShown(false); // the legend names both; exports show the title
     m_comparison->addSeries(tr("measured"), plotColor(0));
@@ -65,7 +69,7 @@ MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
 
     m_residual = new PlotWidget(tr("Residuals: measured − simulated"), m_plots);
     m_residual->setAccessibleName(tr("Plot: residuals, measured minus simulated"));
-    m_residual->setRangeMode(RangeMode::WholeRun);
+    m_residual->model().setRangeMode(RangeMode::WholeRun);
     m_residual->setMinimumSize(kPlotLeast);
     m_residual->setTitleShown(false); // the tab or the check box says what it is
     m_residual->addSeries(tr("measured − simulated"), plotColor(2));
@@ -150,6 +154,11 @@ void MeasurementPanel::arrange()
     if (m_layout->direction() != direction)
         m_layout->setDirection(direction);
     if (beside) {
+        // Wider than their least width, up to a third of the panel, where the plots keep
+        // room to be read: the fit's result then wraps to fewer lines, and in a short dock
+        // (presentation mode's type on a projector) its last line stays in sight.
+        const int room = width() - m_layout->spacing() - plotWidth;
+        controlsWidth = std::max(controlsWidth, std::min(room, width() / kControlsShare));
         m_controls->setFixedWidth(controlsWidth);
     } else {
         m_controls->setMinimumWidth(0);
@@ -315,13 +324,13 @@ void MeasurementPanel::showComparison(const measure::Series& measured,
     m_comparison->setYAxisLabel(symbol, unit);
     m_residual->setYAxisLabel(QStringLiteral("Δ") + symbol, unit);
     for (std::size_t i = 0; i < measured.t.size(); ++i)
-        m_comparison->appendPoint(kMeasured, measured.t[i], measured.value[i]);
+        m_comparison->model().appendPoint(kMeasured, measured.t[i], measured.value[i]);
     if (!error.isEmpty())
         return;
     for (std::size_t i = 0; i < lineT.size(); ++i)
-        m_comparison->appendPoint(kSimulated, lineT[i], lineValue[i]);
+        m_comparison->model().appendPoint(kSimulated, lineT[i], lineValue[i]);
     for (std::size_t i = 0; i < residuals.size(); ++i)
-        m_residual->appendPoint(kResidual, measured.t[i], residuals[i]);
+        m_residual->model().appendPoint(kResidual, measured.t[i], residuals[i]);
     m_comparison->drain();
     m_residual->drain();
 }
@@ -360,10 +369,11 @@ void MeasurementPanel::showOtherFiles(const QString& comparedFile,
         const FileSeries& other = others[k];
         m_comparison->graph(series)->addToLegend();
         m_comparison->setSeriesLegend(series, other.file);
-        m_comparison->setSeriesColumn(
-            series, QStringLiteral("%1 [%2]").arg(other.file, m_comparison->seriesUnit(series)));
+        m_comparison->model().setSeriesColumn(
+            series,
+            QStringLiteral("%1 [%2]").arg(other.file, m_comparison->model().seriesUnit(series)));
         for (std::size_t i = 0; i < other.series.t.size(); ++i)
-            m_comparison->appendPoint(series, other.series.t[i], other.series.value[i]);
+            m_comparison->model().appendPoint(series, other.series.t[i], other.series.value[i]);
     }
     // Named by its file too where there are others, and what it is used for.
     m_comparison->setSeriesLegend(
@@ -407,6 +417,27 @@ void MeasurementPanel::showFit(const QString& text, bool applicable)
     m_fitResult->setText(text);
     m_apply->setEnabled(applicable);
     arrange(); // Fit back in place of Cancel
+    showResultsSoon();
+}
+
+void MeasurementPanel::showResultsSoon()
+{
+    // A result below the fold of a short dock (a 1024×768 projector) is missed: once laid out,
+    // the controls scroll down to the last line of the results, then, if they are taller than
+    // the dock, back to their first line.
+    QTimer::singleShot(0, this, [this] {
+        if (m_fitResult->text().isEmpty() && m_bounceResult->isHidden())
+            return;
+        for (QWidget* last :
+             {static_cast<QWidget*>(m_applyBounce), static_cast<QWidget*>(m_bounceResult),
+              static_cast<QWidget*>(m_fitResult)})
+            if (!last->isHidden()) {
+                m_controls->ensureWidgetVisible(last, 0, 0);
+                break;
+            }
+        if (!m_fitResult->text().isEmpty())
+            m_controls->ensureWidgetVisible(m_fitResult, 0, 0);
+    });
 }
 
 void MeasurementPanel::showFitRunning(int runs)
@@ -434,6 +465,7 @@ void MeasurementPanel::showBounceFit(const QString& text, bool applicable)
     m_applyBounce->setVisible(!text.isEmpty());
     m_applyBounce->setEnabled(applicable);
     arrange();
+    showResultsSoon();
 }
 
 QString MeasurementPanel::fitText() const

@@ -114,6 +114,8 @@ protected:
     void resizeEvent(QResizeEvent* event) override;
 
 private:
+    /// Scrolls the fit's results into sight once they are laid out.
+    void showResultsSoon();
     QWidget* buildControls();
     QWidget* buildFit(QWidget& parent);
     /// The controls beside the plots or above them, for the panel's size now.

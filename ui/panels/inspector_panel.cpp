@@ -201,8 +201,8 @@ void InspectorPanel::refresh()
     const double ke = b.isDynamic() ? 0.5 * b.mass * b.velocity.squaredNorm() +
                                           0.5 * b.inertia * b.angularVelocity * b.angularVelocity
                                     : 0.0;
-    m_energy->setText(
-        formatQuantity(ke, QStringLiteral("J"), kEnergyDigits, m_controller.energyScale()));
+    m_energy->setText(formatQuantity(ke, QStringLiteral("J"), kEnergyDigits,
+                                     m_controller.recorder().energyScale()));
     m_forces->showBody(m_controller.world(), m_body);
     m_restitution->setValue(b.restitution);
     m_friction->setValue(b.friction);

@@ -85,7 +85,7 @@ QString formatNumber(double v, int significant)
 
 NumberField::NumberField(QWidget* parent) : QLineEdit(parent)
 {
-    display(m_value);
+    display(m_value, m_digits);
 }
 
 void NumberField::setRange(const lessons::limits::Range& range, const QString& name,
@@ -110,9 +110,14 @@ void NumberField::setValue(double v, int significant)
     m_value = v;
     m_digits = significant;
     // An edit in progress keeps its text; otherwise the text changes only when it must, so
-    // that a redraw of the panel leaves the cursor where it is.
-    if (!isModified() && text() != formatNumber(v, m_digits))
-        display(v);
+    // that a redraw of the panel leaves the cursor where it is. A typed value that came back
+    // through a unit (2.5 ms, held as 0.0025 s) may differ in its last bits: to kFullDigits it
+    // reads the same, and the field keeps showing it as typed.
+    if (isModified() || text() == formatNumber(v, m_digits) ||
+        text() == formatNumber(v, kFullDigits))
+        return;
+    m_typed = false;
+    display(v, m_digits);
 }
 
 QString NumberField::rangeSentence() const
@@ -161,7 +166,9 @@ bool NumberField::commit()
     setModified(false);
     const bool changed = *v != m_value;
     m_value = *v;
-    display(m_value);
+    // Every digit typed stays in sight: the value taken is the value shown.
+    m_typed = true;
+    display(m_value, kFullDigits);
     if (changed)
         emit valueEdited(m_value);
     return true;
@@ -172,12 +179,12 @@ void NumberField::revert()
     m_reverted = false;
     setError(QString());
     setModified(false);
-    display(m_value);
+    display(m_value, shownDigits());
 }
 
-void NumberField::display(double v)
+void NumberField::display(double v, int digits)
 {
-    setText(formatNumber(v, m_digits));
+    setText(formatNumber(v, digits));
     setModified(false);
 }
 
@@ -247,7 +254,7 @@ void NumberField::focusOutEvent(QFocusEvent* e)
     if (!away && isModified() && !commit()) {
         // Leaving with a refused value: the value in force comes back, the mark and its
         // message stay until the next edit, so that the refusal is not missed.
-        display(m_value);
+        display(m_value, shownDigits());
         m_reverted = true;
     }
     QLineEdit::focusOutEvent(e);

@@ -51,10 +51,14 @@ public:
     double value() const { return m_value; }
     /// Shows `v` as the value in force, to `significant` digits (fewer for a value computed
     /// from others, such as a mass from density and area, where the last digits are rounding
-    /// noise). An edit in progress is left alone: the value it would restore on Escape
-    /// becomes `v`.
-    void setValue(double v, int significant = kFullDigits);
-    /// The digits a value typed or read from a file is shown with.
+    /// noise). A text that already says `v` stays: the rounded one, or a value as it was
+    /// typed (to kFullDigits), so that what a teacher typed is what the field goes on showing.
+    /// An edit in progress is left alone: the value it would restore on Escape becomes `v`.
+    void setValue(double v, int significant = kShownDigits);
+    /// The digits a value from a file or from the program is shown with: 1/60 s reads
+    /// "16.6667" ms, not "16.6666666667".
+    static constexpr int kShownDigits = 6;
+    /// The digits a typed value is shown with once taken: every digit a person types.
     static constexpr int kFullDigits = 12;
 
     /// Takes what was typed, as Enter does; false when it was refused.
@@ -78,8 +82,13 @@ protected:
     void focusOutEvent(QFocusEvent* e) override;
 
 private:
-    void display(double v);
-    int m_digits = kFullDigits; ///< see setValue
+    /// Shows `v` to `digits` significant digits, as the value in force.
+    void display(double v, int digits);
+    int m_digits = kShownDigits; ///< see setValue
+    /// The value in force was typed here: it is shown with every digit typed (kFullDigits).
+    bool m_typed = false;
+    /// The digits the value in force is shown with.
+    int shownDigits() const { return m_typed ? kFullDigits : m_digits; }
     /// "dt must be from 0.0001 ms to 1000 ms".
     QString rangeSentence() const;
     void setError(const QString& message);

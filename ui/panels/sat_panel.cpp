@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/sat_panel.h"
 
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 #include "view/world_view.h"
 
 #include <QApplication>
@@ -35,16 +35,15 @@ QString num(double v, int decimals = 3)
 
 } // namespace
 
-SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
-    : QWidget(parent), m_controller(controller), m_model(controller),
-      m_overlay(new SatOverlayItem(m_model)), m_verdict(new QLabel(this)),
-      m_table(new QTableWidget(0, 3, this)), m_summary(new QLabel(this)),
-      m_prev(new QPushButton(tr("◀ Previous"), this)), m_next(new QPushButton(tr("Next ▶"), this)),
-      m_all_button(new QPushButton(tr("All"), this))
+SatPanel::SatPanel(const RunView& run, QWidget* parent)
+    : QWidget(parent), m_run(run), m_model(run), m_overlay(new SatOverlayItem(m_model)),
+      m_verdict(new QLabel(this)), m_table(new QTableWidget(0, 3, this)),
+      m_summary(new QLabel(this)), m_prev(new QPushButton(tr("◀ Previous"), this)),
+      m_next(new QPushButton(tr("Next ▶"), this)), m_all_button(new QPushButton(tr("All"), this))
 {
     m_table->setAccessibleName(tr("Axes tested"));
     m_overlay->setOnDestroyed([this] { m_overlay = nullptr; });
-    connect(&m_controller, &QObject::destroyed, this, [this] {
+    connect(&m_run, &QObject::destroyed, this, [this] {
         if (m_overlay)
             m_overlay->detach();
     });
@@ -65,7 +64,7 @@ SatPanel::SatPanel(SimulationController& controller, QWidget* parent)
     m_summary->setWordWrap(true);
     layout->addWidget(m_summary);
     buildButtons(layout);
-    connect(&m_controller, &SimulationController::worldChanged, this, &SatPanel::refresh);
+    connect(&m_run, &RunView::worldChanged, this, &SatPanel::refresh);
     fitFonts();
     refresh();
 }
@@ -370,7 +369,7 @@ SatPanel::RowText SatPanel::rowText(int i) const
     const physics::SatResult& result = m_model.result();
     auto name = [&](int owner) {
         const int id = owner == 0 ? m_model.bodyA() : m_model.bodyB();
-        return id >= 0 ? m_controller.scene().bodyLabel(id) : QString();
+        return id >= 0 ? m_run.scene().bodyLabel(id) : QString();
     };
     const physics::SatAxis& ax = result.axes[static_cast<std::size_t>(i)];
     const bool separates = i == result.separatingAxis;
@@ -440,7 +439,7 @@ QString SatPanel::summary() const
     if (!active())
         return QString();
     const physics::SatResult& result = m_model.result();
-    const auto& bodies = m_controller.world().bodies();
+    const auto& bodies = m_run.world().bodies();
     const auto vertexCount = [&](int id) {
         const physics::Polygon* p = bodies[static_cast<std::size_t>(id)].shape.asPolygon();
         return p ? static_cast<int>(p->vertices.size()) : 0;

@@ -24,13 +24,13 @@ class QTableWidget;
 
 namespace rigidlab::ui {
 
-class SimulationController;
+class RunView;
 class WorldView;
 
 class SatPanel : public QWidget {
     Q_OBJECT
 public:
-    SatPanel(SimulationController& controller, QWidget* parent = nullptr);
+    SatPanel(const RunView& run, QWidget* parent = nullptr);
     ~SatPanel() override;
 
     /// The two bodies to test (ids), or -1 for none.
@@ -48,7 +48,6 @@ public:
     bool active() const { return m_model.active(); }
     int bodyA() const { return m_model.bodyA(); }
     int bodyB() const { return m_model.bodyB(); }
-    const SimulationController& controller() const { return m_controller; }
     QString summary() const; ///< the text under the table
     const QTableWidget& table() const { return *m_table; }
     /// The axes shown, as "Export as CSV…" in the table's context menu writes them.
@@ -89,7 +88,7 @@ private:
     /// axes, otherwise (a body dragged or turned) only when part of it left the view.
     void followAxis(bool always);
 
-    SimulationController& m_controller;
+    const RunView& m_run;
     SatViewModel m_model; ///< before the overlay, which reads it
     SatOverlayItem* m_overlay;
     QLabel* m_verdict;

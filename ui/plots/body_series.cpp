@@ -152,7 +152,7 @@ BodyGraph::BodyGraph(PlotWidget& plot, BodyQuantity quantity, ReferenceFrame fra
     : m_plot(plot), m_quantity(quantity), m_frame(std::move(frame))
 {
     m_plot.setYAxisLabel(quantityAxisName(quantity), quantityUnit(quantity));
-    m_plot.setValueScale(YAxis::Left, quantityScale(quantity));
+    m_plot.model().setValueScale(YAxis::Left, quantityScale(quantity));
 }
 
 int BodyGraph::addBody(physics::BodyId id, const QString& label)
@@ -166,9 +166,9 @@ int BodyGraph::addSum(std::vector<physics::BodyId> ids, const QString& label)
     const int index = curveCount();
     const int series = m_plot.addSeries(label, plotColor(index));
     m_plot.setSeriesPen(series, plotPenStyle(index));
-    m_plot.setSeriesColumn(series,
-                           QStringLiteral("%1 %2 [%3]")
-                               .arg(quantitySymbol(m_quantity), label, quantityUnit(m_quantity)));
+    m_plot.model().setSeriesColumn(
+        series, QStringLiteral("%1 %2 [%3]")
+                    .arg(quantitySymbol(m_quantity), label, quantityUnit(m_quantity)));
     Curve curve;
     curve.series = series;
     curve.bodies = std::move(ids);
@@ -180,7 +180,7 @@ void BodyGraph::record(const physics::World& world, double t)
 {
     const FrameMotion motion = frameMotion(world, m_frame);
     for (Curve& curve : m_curves)
-        m_plot.appendPoint(curve.series, t, valueOf(curve, world, motion, t));
+        m_plot.model().appendPoint(curve.series, t, valueOf(curve, world, motion, t));
 }
 
 double BodyGraph::valueOf(Curve& curve, const physics::World& world, const FrameMotion& motion,

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace rigidlab::ui {
 
@@ -105,6 +106,116 @@ QCPScatterStyle::ScatterShape plotMarker(int index)
                                                            QCPScatterStyle::ssStar};
     const int n = static_cast<int>(std::size(shapes));
     return shapes[((index % n) + n) % n];
+}
+
+namespace {
+
+/// Up to this many points a curve is drawn point by point.
+constexpr std::size_t kFewPoints = 64;
+
+bool earlier(const PlotPoint& p, double t)
+{
+    return p.t < t;
+}
+
+bool later(double t, const PlotPoint& p)
+{
+    return t < p.t;
+}
+
+using PointIt = std::vector<PlotPoint>::const_iterator;
+
+/// Points drawn one by one, with their markers if any.
+void drawAsTheyAre(PointIt begin, PointIt end, ColumnGraph* graph)
+{
+    QVector<QCPGraphData> drawn;
+    drawn.reserve(static_cast<qsizetype>(end - begin));
+    for (auto it = begin; it != end; ++it)
+        drawn.append(QCPGraphData(it->t, it->v));
+    graph->data()->set(drawn, true);
+    graph->setColumns({});
+}
+
+} // namespace
+
+void ColumnGraph::setPoints(const std::vector<PlotPoint>& points, double from, double to,
+                            int columns, bool logKeys)
+{
+    // The points in range, and one on either side so that the line reaches the edges.
+    auto begin = std::lower_bound(points.begin(), points.end(), from, earlier);
+    auto end = std::upper_bound(begin, points.end(), to, later);
+    if (begin != points.begin())
+        --begin;
+    if (end != points.end())
+        ++end;
+    const auto count = static_cast<std::size_t>(end - begin);
+    columns = std::max(columns, 1);
+
+    const bool log = logKeys && from > 0 && to > from;
+    // A few points are drawn as they are (with their markers, if any). More go by pixel
+    // column: spread over the few columns of a run's first second, 200 points of a zigzag
+    // cost as much as 2000. Markers without a line (measured points) are each a point.
+    if (count <= kFewPoints || !(to > from) || lineStyle() == QCPGraph::lsNone) {
+        drawAsTheyAre(begin, end, this);
+        return;
+    }
+
+    // Which pixel column a time falls in; the neighbours outside the range get their own.
+    const double span = log ? std::log(to / from) : to - from;
+    const auto columnOf = [&](double t) {
+        const double x = (log ? std::log(t / from) : t - from) / span * columns;
+        return static_cast<long long>(std::floor(std::clamp(x, -1.0, double(columns))));
+    };
+
+    constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
+    QVector<QCPGraphData> drawn;
+    std::vector<ColumnGraph::Column> dense;
+    dense.reserve(static_cast<std::size_t>(2 * columns + 4));
+    drawn.reserve(3 * columns + 6);
+    long long column = std::numeric_limits<long long>::min();
+    auto first = end, last = end, lowest = end, highest = end; // end while the column is empty
+    double gapT = kGap; // the column's last gap [s], NaN if none
+    const auto flush = [&] {
+        if (first != end) {
+            // In the order they came, so the line runs through the column as the data did.
+            const auto a = std::min(lowest, highest), b = std::max(lowest, highest);
+            drawn.append(QCPGraphData(a->t, a->v));
+            if (b != a)
+                drawn.append(QCPGraphData(b->t, b->v));
+            dense.push_back({first->t, lowest->v, highest->v, first->v, last->v});
+        }
+        // One gap per column that has one, after its extremes (their order within a column
+        // is below a pixel); the keys stay sorted.
+        const bool lastIsGap = !drawn.isEmpty() && std::isnan(drawn.back().value);
+        if (!std::isnan(gapT) && !lastIsGap) {
+            const double t = drawn.isEmpty() ? gapT : std::max(gapT, drawn.back().key);
+            drawn.append(QCPGraphData(t, kGap));
+            dense.push_back({t, kGap, kGap, kGap, kGap});
+        }
+        first = last = lowest = highest = end;
+        gapT = kGap;
+    };
+    for (auto it = begin; it != end; ++it) {
+        const long long c = columnOf(it->t);
+        if (c != column) {
+            flush();
+            column = c;
+        }
+        if (std::isnan(it->v)) {
+            gapT = it->t;
+            continue;
+        }
+        if (first == end)
+            first = it;
+        last = it;
+        if (lowest == end || it->v < lowest->v)
+            lowest = it;
+        if (highest == end || it->v > highest->v)
+            highest = it;
+    }
+    flush();
+    data()->set(drawn, true);
+    setColumns(std::move(dense));
 }
 
 } // namespace rigidlab::ui

@@ -21,6 +21,8 @@
 //
 // Without columns (setColumns with none) it is a plain QCPGraph of its data.
 
+#include "plots/plot_series.h"
+
 #include <qcustomplot.h>
 
 #include <vector>
@@ -52,6 +54,13 @@ public:
     /// The index of the series among its plot's, for the offset of its markers.
     void setMarkerPhase(int index) { m_markerPhase = index; }
 
+    /// Takes the points to draw for the time range [from, to] [s] spread over `columns` pixel
+    /// columns (on a log time axis if `logKeys`): the points in range and the one on either
+    /// side, as they are if there are few, else each column's lowest and highest, in the
+    /// order they came, and the columns. A gap (NaN) stays a gap. At most 3 * columns + 6
+    /// points, whatever the data.
+    void setPoints(const std::vector<PlotPoint>& points, double from, double to, int columns,
+                   bool logKeys);
     /// Draws these columns instead of the data; empty: the data, as a QCPGraph does.
     void setColumns(std::vector<Column> columns) { m_columns = std::move(columns); }
     const std::vector<Column>& columns() const { return m_columns; }

@@ -42,9 +42,9 @@ PlotWidget* makeComparePlot(const lessons::LessonStep& step, const QString& titl
     auto* plot = new PlotWidget(title, parent);
     plot->setYAxisLabel(quantity, unit);
     if (unit == u"%")
-        plot->setValueScale(YAxis::Left, kDriftScalePercent);
+        plot->model().setValueScale(YAxis::Left, kDriftScalePercent);
     else {
-        plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
+        plot->model().setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
         // A run that blew up (1e10 J) goes off the top rather than flatten the others to 0.
         // (Drifts are not clipped: explicit Euler's +172 % beside Verlet's 0.01 % is the
         // lesson.)
@@ -214,8 +214,8 @@ StepPlots runStepPlots(const lessons::LessonStep& step, QWidget* holder)
     out.plots = makeStepPlots(step, holder);
     SampleBuffer buffer;
     for (PlotWidget* plot : out.plots) {
-        plot->setRangeMode(RangeMode::WholeRun);
-        plot->setSource(&buffer);
+        plot->model().setRangeMode(RangeMode::WholeRun);
+        plot->model().setSource(&buffer);
     }
     // The plots read the buffer only when drained: drained well before its ring wraps round,
     // so that no sample of the run is lost, and once more at the end.
@@ -242,7 +242,7 @@ StepPlots runStepPlots(const lessons::LessonStep& step, QWidget* holder)
     }
     drainAll();
     for (PlotWidget* plot : out.plots)
-        plot->setSource(nullptr); // the buffer goes out of scope here
+        plot->model().setSource(nullptr); // the buffer goes out of scope here
     return out;
 }
 

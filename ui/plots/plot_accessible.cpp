@@ -30,7 +30,7 @@ QString axisText(const QCPAxis& axis)
              spokenReadable(r.upper, 3, r.size()));
 }
 
-QString seriesText(const PlotWidget& plot, int series)
+QString seriesText(const PlotModel& plot, int series)
 {
     const std::vector<QPointF> points = plot.points(series);
     const QString unit = plot.seriesUnit(series);
@@ -96,8 +96,8 @@ QString describePlot(const PlotWidget& plot)
     parts << PlotWords::tr("Vertical axis: %1.").arg(axisText(*p.yAxis));
     if (p.yAxis2->visible())
         parts << PlotWords::tr("Right axis: %1.").arg(axisText(*p.yAxis2));
-    for (int i = 0; i < plot.seriesCount(); ++i)
-        parts << seriesText(plot, i) + QLatin1Char('.');
+    for (int i = 0; i < plot.model().seriesCount(); ++i)
+        parts << seriesText(plot.model(), i) + QLatin1Char('.');
     return parts.join(QLatin1Char(' '));
 }
 

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// PlotWidget's axes: the time range (a window that follows, or the whole run), the value
-// axes fitted to what is shown, their ticks, and what is off scale.
+// PlotWidget and the run: draining the model, following the newest time (or rewinding with
+// it), the time axis and the value axes fitted to what is shown, their ticks, and what is off
+// scale.
 
 #include "plots/plot_widget.h"
 
 #include "plots/column_graph.h"
-#include "plots/plot_range.h"
 
 #include <qcustomplot.h>
 
@@ -24,12 +24,57 @@ namespace {
 
 /// Ticks an axis has at most (QCPAxisTicker's default); fewer where their labels would meet.
 constexpr int kTickCount = 5;
-/// Smallest time span [s] shown in whole-run mode, so a single point has an axis.
-constexpr double kMinWholeRunSpan = 1e-3;
 /// Pixel columns assumed for a plot that was never laid out.
 constexpr int kDefaultColumns = 800;
+/// A frame may come this much early and still count as the refresh interval passed [ms].
+constexpr int kFrameSlackMs = 8;
 
 } // namespace
+
+void PlotWidget::frameAdvanced()
+{
+    m_sinceFrame.start();
+    // At 60 frames per second, every second frame: ~30 Hz.
+    if (!m_sinceDrain.isValid() || m_sinceDrain.elapsed() >= kRefreshIntervalMs - kFrameSlackMs)
+        drain();
+}
+
+int PlotWidget::drain()
+{
+    m_sinceDrain.start();
+    const int taken = m_model->takeSamples();
+    if (m_model->takeChanged()) {
+        updateRanges();
+        requestReplot();
+    }
+    return taken;
+}
+
+void PlotWidget::rewind(double t)
+{
+    m_model->rewind(t);
+    // The timeline is where the user looks now: a plot dragged aside follows it again.
+    if (std::isfinite(t))
+        setFollowing(true);
+}
+
+void PlotWidget::clear()
+{
+    m_model->clear();
+    for (const Curves& curves : m_curves)
+        for (ColumnGraph* g : {curves.graph, curves.ghost}) {
+            g->data()->clear();
+            g->setColumns({});
+        }
+    setFollowing(true);
+    QScopedValueRollback<bool> guard(m_settingRanges, true);
+    m_plot->xAxis->setRange(0, m_model->windowSeconds());
+}
+
+PlotRange PlotWidget::shownTimes() const
+{
+    return {m_plot->xAxis->range().lower, m_plot->xAxis->range().upper};
+}
 
 void PlotWidget::fitTicks()
 {
@@ -77,15 +122,15 @@ QString PlotWidget::offScaleMark() const
 
 void PlotWidget::setOffScale(YAxis axis, const std::vector<bool>& offScale)
 {
-    m_offScale.resize(m_series.size(), false);
+    m_offScale.resize(m_curves.size(), false);
     bool changed = false;
-    for (std::size_t i = 0; i < m_series.size() && i < offScale.size(); ++i) {
-        if (m_series[i].axis() != axis) // the other axis's series keep their mark
+    for (std::size_t i = 0; i < m_curves.size() && i < offScale.size(); ++i) {
+        if (m_model->series(static_cast<int>(i)).axis() != axis) // the other axis's keep theirs
             continue;
         if (m_offScale[i] == offScale[i])
             continue;
         m_offScale[i] = offScale[i];
-        QCPGraph* g = m_series[i].graph();
+        QCPGraph* g = m_curves[i].graph;
         QString name = g->name();
         if (offScale[i])
             name += offScaleMark();
@@ -98,47 +143,23 @@ void PlotWidget::setOffScale(YAxis axis, const std::vector<bool>& offScale)
         fitLegend(m_plot->width());
 }
 
-void PlotWidget::setRangeMode(RangeMode mode)
-{
-    if (mode == m_rangeMode)
-        return;
-    m_rangeMode = mode;
-    trimToWindow();
-    m_dirty = true;
-    emit rangeModeChanged(mode);
-}
-
-void PlotWidget::setWindowSeconds(double seconds)
-{
-    Q_ASSERT(std::isfinite(seconds) && seconds > 0);
-    if (!std::isfinite(seconds) || seconds <= 0)
-        return;
-    m_windowSeconds = seconds;
-    trimToWindow();
-    m_dirty = true;
-}
-
-void PlotWidget::setPointBudget(int points)
-{
-    m_pointBudget = std::max(points, 16);
-}
-
 void PlotWidget::setFollowing(bool following)
 {
     if (following == m_following)
         return;
     m_following = following;
     m_followButton->setVisible(!following);
-    if (following) {
-        trimToWindow();
-        m_dirty = true;
-    }
+    // Paused, the points shown stay; following, the model keeps its window again.
+    m_model->setHeldFrom(following ? std::nullopt
+                                   : std::optional<double>(m_plot->xAxis->range().lower));
     emit followingChanged(following);
 }
 
 void PlotWidget::onRangeChanged()
 {
-    updateMarkLabels();
+    fitMarks();
+    if (!m_following)
+        m_model->setHeldFrom(m_plot->xAxis->range().lower);
     if (m_settingRanges)
         return;
     // Changed by the user (drag, wheel) or by a caller: stop following, show the new range.
@@ -148,100 +169,33 @@ void PlotWidget::onRangeChanged()
 
 void PlotWidget::updateRanges()
 {
-    if (!m_following || !m_latestT)
+    if (!m_following)
+        return;
+    const std::optional<PlotRange> times =
+        m_model->followedRange(m_plot->xAxis->scaleType() == QCPAxis::stLogarithmic);
+    if (!times)
         return;
     QScopedValueRollback<bool> guard(m_settingRanges, true);
-
-    double first = *m_latestT;
-    for (const PlotSeries& series : m_series)
-        if (!series.isEmpty())
-            first = std::min(first, series.firstKey());
-    const std::optional<double> ghost = ghostEnd();
-
-    if (m_rangeMode == RangeMode::Window) {
-        // Gone back on the timeline: the moment chosen, and a little of the old future after
-        // it. Until a whole window has run, the axis fits the run, from the left edge.
-        double end = *m_latestT;
-        if (ghost)
-            end = std::max(end, std::min(*ghost, end + kGhostLookahead * m_windowSeconds));
-        // The span is the whole run's, the old future's too: scrubbing does not zoom.
-        const double span = timeSpan(std::max(end, ghost.value_or(end)) - first);
-        m_plot->xAxis->setRange(std::max(end, first + span), span, Qt::AlignRight);
-    } else if (m_plot->xAxis->scaleType() == QCPAxis::stLogarithmic) {
-        // A log axis (work against precision): a third of a decade beyond the points.
-        m_plot->xAxis->setRange(first / 2, *m_latestT * 2);
-    } else {
-        const double end = std::max(*m_latestT, ghost.value_or(*m_latestT));
-        m_plot->xAxis->setRange(first, first + std::max(end - first, kMinWholeRunSpan));
-    }
+    m_plot->xAxis->setRange(times->lower, times->upper);
     fitValueAxis(YAxis::Left);
     fitValueAxis(YAxis::Right);
 }
 
-double PlotWidget::timeSpan(double run) const
-{
-    if (!(run < m_windowSeconds))
-        return m_windowSeconds;
-    // Rounded up to a twentieth-ish round step: the axis grows in small jumps, and the run
-    // fills at least 19/20 of it.
-    const double step = niceStep(std::max(run, kMinTimeSpan), 20);
-    const double rounded = std::ceil(run / step - 1e-9) * step;
-    return std::clamp(rounded, std::min(kMinTimeSpan, m_windowSeconds), m_windowSeconds);
-}
-
 void PlotWidget::fitValueAxis(YAxis axis)
 {
-    const QCPRange keys = m_plot->xAxis->range();
     QCPAxis* valueAxis = axisFor(axis);
     const bool log = valueAxis->scaleType() == QCPAxis::stLogarithmic;
-    struct Extent {
-        std::size_t series;
-        double lo, hi, magnitude;
-    };
-    std::vector<Extent> extents;
-    for (std::size_t i = 0; i < m_series.size(); ++i) {
-        const PlotSeries& series = m_series[i];
-        if (series.axis() != axis || !series.graph()->visible())
-            continue;
-        double lo = 0, hi = 0;
-        if (!series.valueRange(keys.lower, keys.upper, log, lo, hi))
-            continue;
-        extents.push_back({i, lo, hi, std::max(std::abs(lo), std::abs(hi))});
-    }
-    if (extents.empty())
+    std::vector<bool> shown;
+    for (const Curves& curves : m_curves)
+        shown.push_back(curves.graph->visible());
+    const std::optional<ValueFit> fit =
+        m_model->fitValues(axis, shownTimes(), log, shown, m_offScaleClipping);
+    if (!fit)
         return;
-    // A compared run that blew up (1e10 J beside 1000 J) would flatten the runs that survive
-    // to a line at 0: the axis fits the survivors, and the runs beyond kOffScaleRatio times
-    // them go off the top, said so in the legend.
-    std::vector<bool> offScale(m_series.size(), false);
-    if (m_offScaleClipping && !log) {
-        std::sort(extents.begin(), extents.end(),
-                  [](const Extent& a, const Extent& b) { return a.magnitude < b.magnitude; });
-        const double floor = std::max(valueScale(axis), kMinMagnitude);
-        std::size_t kept = 1;
-        while (kept < extents.size() &&
-               extents[kept].magnitude <=
-                   kOffScaleRatio * std::max(extents[kept - 1].magnitude, floor))
-            ++kept;
-        for (std::size_t k = kept; k < extents.size(); ++k)
-            offScale[extents[k].series] = true;
-        extents.resize(kept);
-    }
-    setOffScale(axis, offScale);
-    double lowest = extents.front().lo, highest = extents.front().hi;
-    for (const Extent& e : extents) {
-        lowest = std::min(lowest, e.lo);
-        highest = std::max(highest, e.hi);
-    }
-    if (log) {
-        valueAxis->setRange(lowest / 2, highest * 2);
-        return;
-    }
-    // Rounding noise is drawn flat, and the ticks always read differently (plot_range.h).
-    const AxisRange range =
-        niceRange(lowest, highest, valueScale(axis), m_minimumSpan[axis == YAxis::Left ? 0 : 1]);
-    valueAxis->setNumberPrecision(range.labelDigits);
-    valueAxis->setRange(range.lower, range.upper);
+    setOffScale(axis, fit->offScale);
+    if (!log)
+        valueAxis->setNumberPrecision(fit->labelDigits);
+    valueAxis->setRange(fit->range.lower, fit->range.upper);
 }
 
 void PlotWidget::prepareGraphs(int columns)
@@ -250,9 +204,12 @@ void PlotWidget::prepareGraphs(int columns)
         columns = m_plot->width() > 0 ? m_plot->width() : kDefaultColumns;
     const QCPRange keys = m_plot->xAxis->range();
     const bool log = m_plot->xAxis->scaleType() == QCPAxis::stLogarithmic;
-    for (const PlotSeries& series : m_series) {
-        series.ghostGraph()->setVisible(series.graph()->visible());
-        series.draw(keys.lower, keys.upper, columns, log);
+    for (std::size_t i = 0; i < m_curves.size(); ++i) {
+        const Curves& curves = m_curves[i];
+        const PlotSeries& series = m_model->series(static_cast<int>(i));
+        curves.ghost->setVisible(curves.graph->visible());
+        curves.graph->setPoints(series.points(), keys.lower, keys.upper, columns, log);
+        curves.ghost->setPoints(series.ghost(), keys.lower, keys.upper, columns, log);
     }
 }
 

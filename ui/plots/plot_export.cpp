@@ -194,23 +194,17 @@ bool encodeSvg(QCustomPlot& plot, const QString& title, const ExportOptions& opt
 
 } // namespace
 
-QByteArray plotTable(const PlotWidget& plot, const lessons::CsvConventions& conventions,
-                     bool legendNames, bool visibleOnly)
+QByteArray plotTable(const PlotModel& model, const lessons::CsvConventions& conventions,
+                     bool legendNames, std::optional<PlotRange> within)
 {
     lessons::CsvWriter csv(conventions);
     QStringList heads{lessons::csvColumnHead(lessons::CsvColumn::Time)};
     std::vector<std::vector<QPointF>> columns;
     std::vector<double> scales;
-    for (int i = 0; i < plot.seriesCount(); ++i) {
-        QString head = plot.seriesColumn(i);
-        if (head.isEmpty()) {
-            const QString unit = plot.seriesUnit(i);
-            const QString name = legendNames ? plot.seriesLegend(i) : plot.seriesName(i);
-            head = unit.isEmpty() ? name : QStringLiteral("%1 [%2]").arg(name, unit);
-        }
-        heads.append(head);
-        columns.push_back(visibleOnly ? plot.visiblePoints(i) : plot.points(i));
-        scales.push_back(plot.seriesScale(i));
+    for (int i = 0; i < model.seriesCount(); ++i) {
+        heads.append(model.csvHead(i, legendNames));
+        columns.push_back(model.points(i, within));
+        scales.push_back(model.seriesScale(i));
     }
     csv.row(heads);
 
@@ -363,7 +357,7 @@ ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat form
     QString why;
     bool encoded = true;
     if (format == ExportFormat::Csv) {
-        bytes = plotTable(plot, options.csv, options.legendNames);
+        bytes = plotTable(plot.model(), options.csv, options.legendNames);
     } else {
         QCustomPlot& qcp = *plot.plot();
         // Two points per pixel column: of the image for a PNG, of a fine print for the rest.

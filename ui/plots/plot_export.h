@@ -8,6 +8,7 @@
 // already at that path; a device (/dev/null) is written into, never replaced.
 
 #include "export/csv_dialect.h"
+#include "plots/plot_model.h"
 
 #include <QSize>
 #include <QString>
@@ -71,10 +72,11 @@ struct CsvChoice {
 std::optional<CsvChoice> askCsvFile(QWidget* parent, const QString& title,
                                     const QString& suggested);
 
-/// The plot's data as a CSV table: a time column "t [s]" and a column per series, a row per
-/// distinct time; with `visibleOnly`, the points over the time axis' range alone.
-QByteArray plotTable(const PlotWidget& plot, const lessons::CsvConventions& conventions,
-                     bool legendNames, bool visibleOnly = false);
+/// The plot's data as a CSV table: a time column "t [s]" and a column per series (headed by
+/// PlotModel::csvHead), a row per distinct time; with `within`, the points in that time
+/// range alone (the time axis as shown).
+QByteArray plotTable(const PlotModel& model, const lessons::CsvConventions& conventions,
+                     bool legendNames, std::optional<PlotRange> within = std::nullopt);
 
 struct ExportResult {
     bool ok = false;

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <vector>
 
@@ -58,15 +59,14 @@ QString groupText(const MarkGroup& g)
     return g.texts.join(QStringLiteral(", "));
 }
 
-/// The marks in `range`, hidden until placed, in groups: marks within kMergePx of the one
-/// before share its label. (A template for the widget's private Mark type.)
-template <class Marks, class Pixel>
-std::vector<MarkGroup> groupMarks(const Marks& marks, const QCPRange& range, Pixel pixel)
+/// The marks in `range` in groups: marks within kMergePx of the one before share its label.
+template <class Pixel>
+std::vector<MarkGroup> groupMarks(const std::deque<PlotMark>& marks, const QCPRange& range,
+                                  Pixel pixel)
 {
     std::vector<MarkGroup> groups;
     for (std::size_t i = 0; i < marks.size(); ++i) {
-        const auto& mark = marks[i];
-        mark.label->setVisible(false);
+        const PlotMark& mark = marks[i];
         if (!range.contains(mark.t))
             continue;
         const double x = pixel(mark.t);
@@ -125,65 +125,57 @@ std::vector<PlacedLabel> placeLabels(std::vector<MarkGroup>& groups, const QFont
 
 } // namespace
 
-void PlotWidget::addMark(double t, const QString& label)
+void PlotWidget::syncMarks()
 {
-    if (!std::isfinite(t))
-        return;
-    Mark mark;
-    mark.t = t;
-    mark.text = label;
-
-    // x in time, y as a fraction of the axis rect: the line spans the plot at any zoom.
-    mark.line = new QCPItemLine(m_plot);
-    for (QCPItemPosition* end : {mark.line->start, mark.line->end}) {
-        end->setAxes(m_plot->xAxis, m_plot->yAxis);
-        end->setAxisRect(m_plot->axisRect());
-        end->setTypeX(QCPItemPosition::ptPlotCoords);
-        end->setTypeY(QCPItemPosition::ptAxisRectRatio);
+    for (const MarkItems& items : m_markItems) {
+        m_plot->removeItem(items.label); // first: it hangs from the line's top
+        m_plot->removeItem(items.line);
     }
-    mark.line->start->setCoords(t, 0); // the top of the axis rect
-    mark.line->end->setCoords(t, 1);
+    m_markItems.clear();
+    for (const PlotMark& mark : m_model->marks()) {
+        MarkItems items;
+        // x in time, y as a fraction of the axis rect: the line spans the plot at any zoom.
+        items.line = new QCPItemLine(m_plot);
+        for (QCPItemPosition* end : {items.line->start, items.line->end}) {
+            end->setAxes(m_plot->xAxis, m_plot->yAxis);
+            end->setAxisRect(m_plot->axisRect());
+            end->setTypeX(QCPItemPosition::ptPlotCoords);
+            end->setTypeY(QCPItemPosition::ptAxisRectRatio);
+        }
+        items.line->start->setCoords(mark.t, 0); // the top of the axis rect
+        items.line->end->setCoords(mark.t, 1);
 
-    // The label sits in a strip above the axis rect, where it hides no curve, its row
-    // (fitMarks) a pixel offset up from the line's top; outside the axis rect it is not
-    // clipped, so fitMarks() hides it when its line is out of view.
-    mark.label = new QCPItemText(m_plot);
-    mark.label->setClipToAxisRect(false);
-    mark.label->position->setAxes(m_plot->xAxis, m_plot->yAxis);
-    mark.label->position->setAxisRect(m_plot->axisRect());
-    mark.label->position->setTypeX(QCPItemPosition::ptPlotCoords);
-    mark.label->position->setParentAnchorY(mark.line->start);
-    mark.label->position->setTypeY(QCPItemPosition::ptAbsolute);
-    mark.label->position->setCoords(t, 0);
-    mark.label->setPadding(kLabelPadding);
-    mark.label->setFont(markFont(font()));
-    mark.label->setText(label);
-    styleMark(mark);
+        // The label sits in a strip above the axis rect, where it hides no curve, its row
+        // (fitMarks) a pixel offset up from the line's top; outside the axis rect it is not
+        // clipped, so fitMarks() hides it when its line is out of view.
+        items.label = new QCPItemText(m_plot);
+        items.label->setClipToAxisRect(false);
+        items.label->position->setAxes(m_plot->xAxis, m_plot->yAxis);
+        items.label->position->setAxisRect(m_plot->axisRect());
+        items.label->position->setTypeX(QCPItemPosition::ptPlotCoords);
+        items.label->position->setParentAnchorY(items.line->start);
+        items.label->position->setTypeY(QCPItemPosition::ptAbsolute);
+        items.label->position->setCoords(mark.t, 0);
+        items.label->setPadding(kLabelPadding);
+        items.label->setFont(markFont(font()));
+        items.label->setText(mark.text);
 
-    const auto at = std::upper_bound(m_marks.begin(), m_marks.end(), t,
-                                     [](double time, const Mark& m) { return time < m.t; });
-    m_marks.insert(at, mark);
-    while (m_marks.size() > static_cast<std::size_t>(kMaxMarks))
-        removeMark(0);
-    trimToWindow();
-    updateMarkLabels();
-    m_dirty = true;
-}
-
-void PlotWidget::styleMark(const Mark& mark)
-{
-    QColor line = kLine, ink = kInk;
-    if (mark.ghost) {
-        line.setAlpha(kGhostAlpha);
-        ink.setAlpha(kGhostAlpha);
+        // A mark in the run's abandoned future is faded and dotted, as its curves are.
+        QColor line = kLine, ink = kInk;
+        if (mark.ghost) {
+            line.setAlpha(kGhostAlpha);
+            ink.setAlpha(kGhostAlpha);
+        }
+        items.line->setPen(QPen(line, 1.5, mark.ghost ? Qt::DotLine : Qt::DashLine));
+        items.label->setColor(ink);
+        m_markItems.push_back(items);
     }
-    mark.line->setPen(QPen(line, 1.5, mark.ghost ? Qt::DotLine : Qt::DashLine));
-    mark.label->setColor(ink);
-}
-
-void PlotWidget::updateMarkLabels()
-{
     fitMarks();
+}
+
+QCPItemText* PlotWidget::markLabel(int index) const
+{
+    return m_markItems.at(static_cast<std::size_t>(index)).label;
 }
 
 void PlotWidget::fitMarks(int widthPx)
@@ -205,18 +197,23 @@ void PlotWidget::fitMarks(int widthPx)
     const QCPRange range = m_plot->xAxis->range();
     const auto pixel = [&](double t) { return (t - range.lower) / range.size() * axisPx; };
 
-    std::vector<MarkGroup> groups = groupMarks(m_marks, range, pixel);
+    const std::deque<PlotMark>& marks = m_model->marks();
+    Q_ASSERT(marks.size() == m_markItems.size());
+    for (const MarkItems& items : m_markItems)
+        items.label->setVisible(false); // until placed
+    std::vector<MarkGroup> groups = groupMarks(marks, range, pixel);
     const std::vector<PlacedLabel> placed =
         placeLabels(groups, metrics, axisPx, kMarkRows, kRightMarginPx);
-    int rows = m_marks.empty() ? 0 : 1;
+    int rows = marks.empty() ? 0 : 1;
     for (std::size_t k = 0; k < groups.size(); ++k) {
-        const Mark& mark = m_marks[groups[k].first];
+        const PlotMark& mark = marks[groups[k].first];
+        QCPItemText* label = m_markItems[groups[k].first].label;
         const QString text = groupText(groups[k]);
-        mark.label->setText(text);
-        mark.label->setVisible(!text.isEmpty());
-        mark.label->setPositionAlignment((placed[k].leftwards ? Qt::AlignRight : Qt::AlignLeft) |
-                                         Qt::AlignBottom);
-        mark.label->position->setCoords(mark.t, -static_cast<double>(placed[k].row) * rowPx);
+        label->setText(text);
+        label->setVisible(!text.isEmpty());
+        label->setPositionAlignment((placed[k].leftwards ? Qt::AlignRight : Qt::AlignLeft) |
+                                    Qt::AlignBottom);
+        label->position->setCoords(mark.t, -static_cast<double>(placed[k].row) * rowPx);
         rows = std::max(rows, static_cast<int>(placed[k].row) + 1);
     }
 
@@ -230,16 +227,6 @@ void PlotWidget::fitMarks(int widthPx)
         m_markStrip = strip;
         m_plot->axisRect()->setMinimumMargins(QMargins(0, top, kRightMarginPx, 0));
     }
-}
-
-void PlotWidget::removeMark(std::size_t index)
-{
-    m_plot->removeItem(m_marks[index].label); // first: it hangs from the line's top
-    m_plot->removeItem(m_marks[index].line);
-    m_marks.erase(m_marks.begin() + static_cast<std::ptrdiff_t>(index));
-    if (m_marks.empty())
-        updateMarkLabels();
-    m_dirty = true;
 }
 
 } // namespace rigidlab::ui

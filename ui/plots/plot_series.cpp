@@ -1,10 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "plots/plot_series.h"
 
-#include "plots/column_graph.h"
-
-#include <qcustomplot.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -13,9 +9,6 @@
 namespace rigidlab::ui {
 
 namespace {
-
-/// Up to this many points a curve is drawn point by point.
-constexpr std::size_t kFewPoints = 64;
 
 bool earlier(const PlotPoint& p, double t)
 {
@@ -42,15 +35,11 @@ bool lowestHighest(const std::vector<PlotPoint>& points, double from, double to,
     return found;
 }
 
-void drawPoints(const std::vector<PlotPoint>& points, ColumnGraph* graph, double from, double to,
-                int columns, bool logKeys);
-
 } // namespace
 
-PlotSeries::PlotSeries(ColumnGraph* graph, QString name, YAxis axis, SampleValue value)
-    : m_graph(graph), m_name(std::move(name)), m_axis(axis), m_value(std::move(value))
+PlotSeries::PlotSeries(QString name, YAxis axis, SampleValue value)
+    : m_name(std::move(name)), m_axis(axis), m_value(std::move(value))
 {
-    Q_ASSERT(m_graph);
 }
 
 double PlotSeries::firstKey() const
@@ -161,12 +150,6 @@ void PlotSeries::clear()
 {
     m_points.clear();
     m_ghost.clear();
-    m_graph->data()->clear();
-    m_graph->setColumns({});
-    if (m_ghostGraph) {
-        m_ghostGraph->data()->clear();
-        m_ghostGraph->setColumns({});
-    }
     m_stride = 1;
     m_sinceKept = 0;
     m_lastIsProvisional = false;
@@ -186,109 +169,5 @@ bool PlotSeries::valueRange(double from, double to, bool positiveOnly, double& l
     const bool found = lowestHighest(m_points, from, to, positiveOnly, lowest, highest, false);
     return lowestHighest(m_ghost, from, to, positiveOnly, lowest, highest, found);
 }
-
-void PlotSeries::draw(double from, double to, int columns, bool logKeys) const
-{
-    drawPoints(m_points, m_graph, from, to, columns, logKeys);
-    if (m_ghostGraph)
-        drawPoints(m_ghost, m_ghostGraph, from, to, columns, logKeys);
-}
-
-namespace {
-
-using PointIt = std::vector<PlotPoint>::const_iterator;
-
-/// Points drawn one by one, with their markers if any.
-void drawAsTheyAre(PointIt begin, PointIt end, ColumnGraph* graph)
-{
-    QVector<QCPGraphData> drawn;
-    drawn.reserve(static_cast<qsizetype>(end - begin));
-    for (auto it = begin; it != end; ++it)
-        drawn.append(QCPGraphData(it->t, it->v));
-    graph->data()->set(drawn, true);
-    graph->setColumns({});
-}
-
-void drawPoints(const std::vector<PlotPoint>& points, ColumnGraph* graph, double from, double to,
-                int columns, bool logKeys)
-{
-    // The points in range, and one on either side so that the line reaches the edges.
-    auto begin = std::lower_bound(points.begin(), points.end(), from, earlier);
-    auto end = std::upper_bound(begin, points.end(), to, later);
-    if (begin != points.begin())
-        --begin;
-    if (end != points.end())
-        ++end;
-    const auto count = static_cast<std::size_t>(end - begin);
-    columns = std::max(columns, 1);
-
-    const bool log = logKeys && from > 0 && to > from;
-    // A few points are drawn as they are (with their markers, if any). More go by pixel
-    // column: spread over the few columns of a run's first second, 200 points of a zigzag
-    // cost as much as 2000. Markers without a line (measured points) are each a point.
-    if (count <= kFewPoints || !(to > from) || graph->lineStyle() == QCPGraph::lsNone) {
-        drawAsTheyAre(begin, end, graph);
-        return;
-    }
-
-    // Which pixel column a time falls in; the neighbours outside the range get their own.
-    const double span = log ? std::log(to / from) : to - from;
-    const auto columnOf = [&](double t) {
-        const double x = (log ? std::log(t / from) : t - from) / span * columns;
-        return static_cast<long long>(std::floor(std::clamp(x, -1.0, double(columns))));
-    };
-
-    constexpr double kGap = std::numeric_limits<double>::quiet_NaN();
-    QVector<QCPGraphData> drawn;
-    std::vector<ColumnGraph::Column> dense;
-    dense.reserve(static_cast<std::size_t>(2 * columns + 4));
-    drawn.reserve(3 * columns + 6);
-    long long column = std::numeric_limits<long long>::min();
-    auto first = end, last = end, lowest = end, highest = end; // end while the column is empty
-    double gapT = kGap; // the column's last gap [s], NaN if none
-    const auto flush = [&] {
-        if (first != end) {
-            // In the order they came, so the line runs through the column as the data did.
-            const auto a = std::min(lowest, highest), b = std::max(lowest, highest);
-            drawn.append(QCPGraphData(a->t, a->v));
-            if (b != a)
-                drawn.append(QCPGraphData(b->t, b->v));
-            dense.push_back({first->t, lowest->v, highest->v, first->v, last->v});
-        }
-        // One gap per column that has one, after its extremes (their order within a column
-        // is below a pixel); the keys stay sorted.
-        const bool lastIsGap = !drawn.isEmpty() && std::isnan(drawn.back().value);
-        if (!std::isnan(gapT) && !lastIsGap) {
-            const double t = drawn.isEmpty() ? gapT : std::max(gapT, drawn.back().key);
-            drawn.append(QCPGraphData(t, kGap));
-            dense.push_back({t, kGap, kGap, kGap, kGap});
-        }
-        first = last = lowest = highest = end;
-        gapT = kGap;
-    };
-    for (auto it = begin; it != end; ++it) {
-        const long long c = columnOf(it->t);
-        if (c != column) {
-            flush();
-            column = c;
-        }
-        if (std::isnan(it->v)) {
-            gapT = it->t;
-            continue;
-        }
-        if (first == end)
-            first = it;
-        last = it;
-        if (lowest == end || it->v < lowest->v)
-            lowest = it;
-        if (highest == end || it->v > highest->v)
-            highest = it;
-    }
-    flush();
-    graph->data()->set(drawn, true);
-    graph->setColumns(std::move(dense));
-}
-
-} // namespace
 
 } // namespace rigidlab::ui

@@ -1,13 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// One curve of a live plot, kept within a point budget however long the run, and handed to
-// its QCPGraph decimated to the pixels it is drawn on.
-//
-// The series keeps its points (what the CSV export writes) apart from what it hands its
-// graph to draw (draw()). A few points, the graph gets as they are. More, it gets each
-// pixel column's lowest and highest point, and draws the column as a ColumnGraph does
-// (column_graph.h): a replot costs the same for a smooth curve and for rounding noise, and no more
-// than the pixels.
+// One curve of a live plot (the points of PlotModel's series), kept within a point budget
+// however long the run. It knows nothing of drawing: the view hands its points to a
+// ColumnGraph (column_graph.h), which takes them decimated to the pixels it is drawn on.
 //
 // Two rules keep the number of points kept bounded:
 //  - the owner trims what scrolled out of the window with removeBefore();
@@ -24,7 +19,7 @@
 //
 // Time travel splits a series in two: the points up to the moment the timeline went back to
 // (points(), drawn as usual) and those after it (ghost(), the run's future as it was, drawn
-// faded on a graph of its own). Going forward on the timeline takes ghost points back; the
+// faded). Going forward on the timeline takes ghost points back; the
 // run going on from there overwrites them, so a new branch replaces the old future as it
 // is drawn:
 //
@@ -40,8 +35,6 @@
 
 namespace rigidlab::ui {
 
-class ColumnGraph;
-
 /// Which value axis a series is drawn against.
 enum class YAxis { Left, Right };
 
@@ -56,8 +49,7 @@ public:
     /// Reads the series' value out of a sample; empty for a series fed point by point.
     using SampleValue = std::function<double(const Sample&)>;
 
-    /// `graph` belongs to its QCustomPlot; the series only adapts it.
-    PlotSeries(ColumnGraph* graph, QString name, YAxis axis, SampleValue value);
+    PlotSeries(QString name, YAxis axis, SampleValue value);
 
     const QString& name() const { return m_name; }
     /// The name in the legend, in words (the name itself until one is set).
@@ -67,14 +59,7 @@ public:
     const QString& column() const { return m_column; }
     void setColumn(QString column) { m_column = std::move(column); }
     YAxis axis() const { return m_axis; }
-    ColumnGraph* graph() const { return m_graph; }
-    /// The graph that draws the ghost (owned by the QCustomPlot); nullptr draws none.
-    void setGhostGraph(ColumnGraph* graph) { m_ghostGraph = graph; }
-    ColumnGraph* ghostGraph() const { return m_ghostGraph; }
     bool isFedBySamples() const { return static_cast<bool>(m_value); }
-    /// Its line is this many times as wide as a plain curve's (see plotPenWidthFactor).
-    double widthFactor() const { return m_widthFactor; }
-    void setWidthFactor(double factor) { m_widthFactor = factor; }
     double valueOf(const Sample& s) const { return m_value(s); }
 
     /// Appends (t [s], value); t must be later than lastKey(). Keeps size() <= budget. The
@@ -104,27 +89,18 @@ public:
     /// [from, to] [s] (only the positive ones if asked, for a log axis). False if none.
     bool valueRange(double from, double to, bool positiveOnly, double& lowest,
                     double& highest) const;
-    /// Hands the graph the points to draw for the time range [from, to] [s] spread over
-    /// `columns` pixel columns (on a log time axis if `logKeys`): the points in range and the
-    /// one on either side, as they are if there are few, else each column's
-    /// lowest and highest, in the order they came, and the columns. A gap (NaN) stays a gap.
-    /// At most 3 * columns + 6 points, whatever the data. The ghost graph gets the ghost.
-    void draw(double from, double to, int columns, bool logKeys) const;
 
 private:
     void decimate();
     void afterRemoval(int budget);
 
-    ColumnGraph* m_graph = nullptr;      ///< owned by the QCustomPlot; holds what is drawn
-    ColumnGraph* m_ghostGraph = nullptr; ///< owned by the QCustomPlot; draws m_ghost
-    std::vector<PlotPoint> m_points;     ///< sorted by t
-    std::vector<PlotPoint> m_ghost;      ///< sorted by t, all after m_points
+    std::vector<PlotPoint> m_points; ///< sorted by t
+    std::vector<PlotPoint> m_ghost;  ///< sorted by t, all after m_points
     QString m_name;
     QString m_legend;
     QString m_column;
     YAxis m_axis = YAxis::Left;
     SampleValue m_value;
-    double m_widthFactor = 1.0;       ///< of the plot's line width
     int m_stride = 1;                 ///< one incoming point in `stride` is kept
     int m_sinceKept = 0;              ///< incoming points since the last kept one
     bool m_lastIsProvisional = false; ///< the newest point is off the stride

@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// PlotWidget's making, its title, caption, axis labels, series, legend and presentation mode.
-// Its other parts: plot_points.cpp (the points and their sampling), plot_axes.cpp (ranges,
-// ticks, off scale), plot_marks.cpp, plot_timeline.cpp, plot_menu.cpp.
+// PlotWidget's making, its title, caption, axis labels, curves, legend and presentation mode.
+// Its other parts: plot_axes.cpp (draining, following, ranges, ticks, off scale),
+// plot_marks.cpp, plot_menu.cpp.
 #include "plots/plot_widget.h"
 
 #include "common/theme.h"
 #include "plots/column_graph.h"
+#include "plots/plot_exporter.h"
 #include "plots/plot_range.h"
 #include "plots/readable_ticker.h"
 
@@ -64,9 +65,11 @@ QString axisText(const QString& quantity, const QString& unit)
 } // namespace
 
 PlotWidget::PlotWidget(const QString& title, QWidget* parent)
-    : QWidget(parent), m_plot(new QCustomPlot(this)), m_followButton(new QToolButton(this)),
-      m_timer(new QTimer(this))
+    : QWidget(parent), m_model(new PlotModel(this)), m_plot(new QCustomPlot(this)),
+      m_followButton(new QToolButton(this)), m_timer(new QTimer(this))
 {
+    m_exporter = new PlotExporter(*this);
+    connect(m_model, &PlotModel::marksChanged, this, &PlotWidget::syncMarks);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(m_plot);
@@ -103,7 +106,7 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
         axis->setTickLabelFont(sized(base, kTickLabelPt));
     }
     m_plot->xAxis->setLabel(tr("time t [s]"));
-    m_plot->xAxis->setRange(0, m_windowSeconds);
+    m_plot->xAxis->setRange(0, m_model->windowSeconds());
     m_plot->yAxis2->setVisible(false);
 
     // Drag and wheel move the time axis and every value axis; doing so pauses following.
@@ -129,6 +132,11 @@ PlotWidget::PlotWidget(const QString& title, QWidget* parent)
     m_followButton->raise();
     connect(m_followButton, &QToolButton::clicked, this, &PlotWidget::follow);
 
+    startRefresh();
+}
+
+void PlotWidget::startRefresh()
+{
     m_timer->setInterval(kRefreshIntervalMs);
     m_timer->setTimerType(Qt::PreciseTimer);
     connect(m_timer, &QTimer::timeout, this, [this] {
@@ -194,7 +202,7 @@ QCPAxis* PlotWidget::axisFor(YAxis axis) const
 
 void PlotWidget::setYAxisLabel(const QString& quantity, const QString& unit, YAxis axis)
 {
-    (axis == YAxis::Left ? m_leftUnit : m_rightUnit) = unit;
+    m_model->setUnit(axis, unit);
     axisFor(axis)->setLabel(axisText(quantity, unit));
     if (axis == YAxis::Right) {
         m_plot->yAxis2->setVisible(true);
@@ -202,56 +210,26 @@ void PlotWidget::setYAxisLabel(const QString& quantity, const QString& unit, YAx
     }
 }
 
-QString PlotWidget::yAxisUnit(YAxis axis) const
-{
-    return axis == YAxis::Left ? m_leftUnit : m_rightUnit;
-}
-
-void PlotWidget::setValueScale(YAxis axis, double scale)
-{
-    const std::size_t i = axis == YAxis::Left ? 0 : 1;
-    m_valueScaleOf[i] = {};
-    m_valueScale[i] = std::isfinite(scale) && scale > 0 ? scale : 0.0;
-    m_dirty = true;
-}
-
-void PlotWidget::setValueScale(YAxis axis, PlotSeries::SampleValue scale)
-{
-    m_valueScaleOf[axis == YAxis::Left ? 0 : 1] = std::move(scale);
-    m_dirty = true;
-}
-
-void PlotWidget::setMinimumSpan(YAxis axis, double fraction)
-{
-    m_minimumSpan[axis == YAxis::Left ? 0 : 1] =
-        std::isfinite(fraction) && fraction > 0 ? fraction : 0.0;
-    m_dirty = true;
-}
-
-double PlotWidget::valueScale(YAxis axis) const
-{
-    return m_valueScale[axis == YAxis::Left ? 0 : 1];
-}
-
 int PlotWidget::addSeries(const QString& name, const QColor& color, PlotSeries::SampleValue value,
                           YAxis axis)
 {
     Q_ASSERT(value);
-    return addGraph(name, color, std::move(value), axis);
+    m_model->addSeries(name, std::move(value), axis);
+    return addCurves(name, color, axis);
 }
 
 int PlotWidget::addSeries(const QString& name, const QColor& color, YAxis axis)
 {
-    return addGraph(name, color, {}, axis);
+    m_model->addSeries(name, {}, axis);
+    return addCurves(name, color, axis);
 }
 
-int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::SampleValue value,
-                         YAxis axis)
+int PlotWidget::addCurves(const QString& name, const QColor& color, YAxis axis)
 {
     auto* graph = new ColumnGraph(m_plot->xAxis, axisFor(axis)); // owned by m_plot
     // Dashed means "read me on the right axis", in the legend as on the curve; else each
     // series has a style of its own, and a marker: told apart without colour.
-    const int index = seriesCount();
+    const int index = static_cast<int>(m_curves.size());
     graph->setPen(QPen(color, theme::lineWidth(kLineWidthPx),
                        axis == YAxis::Right ? Qt::DashLine : plotPenStyleFor(index)));
     graph->setScatterStyle(QCPScatterStyle(plotMarker(index), color, kMarkerPx));
@@ -269,10 +247,9 @@ int PlotWidget::addGraph(const QString& name, const QColor& color, PlotSeries::S
     ghost->setPen(QPen(faded, theme::lineWidth(kLineWidthPx), Qt::DotLine));
     ghost->setName(tr("%1 (before going back)").arg(graph->name()));
     ghost->removeFromLegend();
-    m_series.emplace_back(graph, name, axis, std::move(value));
-    m_series.back().setGhostGraph(ghost);
+    m_curves.push_back({graph, ghost});
     fitLegend(m_plot->width());
-    return seriesCount() - 1;
+    return index;
 }
 
 void PlotWidget::fitLegend(int widthPx)
@@ -337,59 +314,29 @@ int PlotWidget::wrapLegend(int widthPx)
 
 void PlotWidget::setSeriesLegend(int series, const QString& legend)
 {
-    PlotSeries& s = m_series.at(series);
-    s.setLegend(legend);
-    s.graph()->setName((s.axis() == YAxis::Right ? tr("%1 (right axis)").arg(legend) : legend) +
-                       (offScale(series) ? offScaleMark() : QString()));
+    m_model->setSeriesLegend(series, legend);
+    const bool right = m_model->series(series).axis() == YAxis::Right;
+    graph(series)->setName((right ? tr("%1 (right axis)").arg(legend) : legend) +
+                           (offScale(series) ? offScaleMark() : QString()));
     fitLegend(m_plot->width());
     requestReplot();
 }
 
 void PlotWidget::setSeriesPen(int series, Qt::PenStyle style, double widthFactor)
 {
-    PlotSeries& s = m_series.at(series);
-    QPen pen = s.graph()->pen();
-    const double plain = pen.widthF() / s.widthFactor();
-    s.setWidthFactor(std::isfinite(widthFactor) && widthFactor > 0 ? widthFactor : 1.0);
+    Curves& c = m_curves.at(series);
+    QPen pen = c.graph->pen();
+    const double plain = pen.widthF() / c.widthFactor;
+    c.widthFactor = std::isfinite(widthFactor) && widthFactor > 0 ? widthFactor : 1.0;
     pen.setStyle(style);
-    pen.setWidthF(plain * s.widthFactor());
-    s.graph()->setPen(pen);
+    pen.setWidthF(plain * c.widthFactor);
+    c.graph->setPen(pen);
     requestReplot();
 }
 
 QCPGraph* PlotWidget::graph(int series) const
 {
-    return m_series.at(series).graph();
-}
-
-QString PlotWidget::seriesName(int series) const
-{
-    return m_series.at(series).name();
-}
-
-QString PlotWidget::seriesLegend(int series) const
-{
-    return m_series.at(series).legend();
-}
-
-QString PlotWidget::seriesUnit(int series) const
-{
-    return yAxisUnit(m_series.at(series).axis());
-}
-
-void PlotWidget::setSeriesColumn(int series, const QString& head)
-{
-    m_series.at(series).setColumn(head);
-}
-
-QString PlotWidget::seriesColumn(int series) const
-{
-    return m_series.at(series).column();
-}
-
-double PlotWidget::seriesScale(int series) const
-{
-    return valueScale(m_series.at(series).axis());
+    return m_curves.at(series).graph;
 }
 
 void PlotWidget::requestReplot()
@@ -453,12 +400,12 @@ void PlotWidget::setPresentation(bool on)
         grid.setWidthF(on ? 1.0 : 0.0);
         axis->grid()->setPen(grid);
     }
-    for (const PlotSeries& series : m_series) {
-        for (QCPGraph* g : {static_cast<QCPGraph*>(series.graph()),
-                            static_cast<QCPGraph*>(series.ghostGraph())}) {
+    for (const Curves& curves : m_curves) {
+        for (QCPGraph* g :
+             {static_cast<QCPGraph*>(curves.graph), static_cast<QCPGraph*>(curves.ghost)}) {
             QPen pen = g->pen();
             pen.setWidthF((on ? theme::lineWidth(kLineWidthPx) : kLineWidthPx) *
-                          series.widthFactor());
+                          curves.widthFactor);
             g->setPen(pen);
         }
     }

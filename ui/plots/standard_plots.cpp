@@ -67,7 +67,7 @@ PlotWidget* makeEnergyPlot(QWidget* parent)
 {
     auto* plot = new PlotWidget(PlotWidget::tr("Energy"), parent);
     plot->setYAxisLabel(PlotWidget::tr("energy E"), QStringLiteral("J"));
-    plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
+    plot->model().setValueScale(YAxis::Left, [](const Sample& s) { return s.energyScale; });
     using lessons::CsvColumn;
     const int kinetic = plot->addSeries(PlotWidget::tr("kinetic"), plotColor(1),
                                         [](const Sample& s) { return s.kinetic; });
@@ -86,7 +86,7 @@ PlotWidget* makeEnergyPlot(QWidget* parent)
          {std::pair{kinetic, CsvColumn::Kinetic}, std::pair{potential, CsvColumn::Potential},
           std::pair{total, CsvColumn::Total}, std::pair{dissipated, CsvColumn::Dissipated},
           std::pair{balance, CsvColumn::TotalDissipated}})
-        plot->setSeriesColumn(series, lessons::csvColumnHead(column));
+        plot->model().setSeriesColumn(series, lessons::csvColumnHead(column));
     // With nothing dissipated it lies on the total: dashed, so that both stay visible.
     plot->setSeriesPen(balance, plotPenStyle(1));
     return plot;
@@ -97,10 +97,11 @@ PlotWidget* makeMomentumPlot(QWidget* parent)
     auto* plot = new PlotWidget(PlotWidget::tr("Momentum"), parent);
     plot->setYAxisLabel(PlotWidget::tr("p"), QStringLiteral("kg m/s"));
     plot->setYAxisLabel(PlotWidget::tr("L"), QStringLiteral("kg m²/s"), YAxis::Right);
-    plot->setValueScale(YAxis::Left, [](const Sample& s) { return s.momentumScale; });
-    plot->setValueScale(YAxis::Right, [](const Sample& s) { return s.angularMomentumScale; });
-    plot->setMinimumSpan(YAxis::Left, kConservedMinimumSpan);
-    plot->setMinimumSpan(YAxis::Right, kConservedMinimumSpan);
+    plot->model().setValueScale(YAxis::Left, [](const Sample& s) { return s.momentumScale; });
+    plot->model().setValueScale(YAxis::Right,
+                                [](const Sample& s) { return s.angularMomentumScale; });
+    plot->model().setMinimumSpan(YAxis::Left, kConservedMinimumSpan);
+    plot->model().setMinimumSpan(YAxis::Right, kConservedMinimumSpan);
     const int px =
         plot->addSeries(QStringLiteral("px"), plotColor(0), [](const Sample& s) { return s.px; });
     const int py =
@@ -108,9 +109,9 @@ PlotWidget* makeMomentumPlot(QWidget* parent)
     const int l = plot->addSeries(
         QStringLiteral("L"), plotColor(2), [](const Sample& s) { return s.angularMomentum; },
         YAxis::Right);
-    plot->setSeriesColumn(px, lessons::csvColumnHead(lessons::CsvColumn::Px));
-    plot->setSeriesColumn(py, lessons::csvColumnHead(lessons::CsvColumn::Py));
-    plot->setSeriesColumn(l, lessons::csvColumnHead(lessons::CsvColumn::AngularMomentum));
+    plot->model().setSeriesColumn(px, lessons::csvColumnHead(lessons::CsvColumn::Px));
+    plot->model().setSeriesColumn(py, lessons::csvColumnHead(lessons::CsvColumn::Py));
+    plot->model().setSeriesColumn(l, lessons::csvColumnHead(lessons::CsvColumn::AngularMomentum));
     return plot;
 }
 
@@ -122,10 +123,10 @@ PlotWidget* makeDriftPlot(QWidget* parent)
     // The axis says what it is in a word (a plot in a narrow column has no room for the
     // formula, (E + E_dissipated − E₀)/|E₀|, which the README and the lesson give).
     plot->setYAxisLabel(PlotWidget::tr("drift"), QStringLiteral("%"));
-    plot->setValueScale(YAxis::Left, kDriftScalePercent);
+    plot->model().setValueScale(YAxis::Left, kDriftScalePercent);
     const int drift = plot->addSeries(PlotWidget::tr("energy drift (numerical error)"),
                                       plotColor(3), [](const Sample& s) { return s.driftPercent; });
-    plot->setSeriesColumn(drift, lessons::csvColumnHead(lessons::CsvColumn::DriftPercent));
+    plot->model().setSeriesColumn(drift, lessons::csvColumnHead(lessons::CsvColumn::DriftPercent));
     return plot;
 }
 

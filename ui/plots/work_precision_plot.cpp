@@ -19,8 +19,8 @@ constexpr double kLabelGap = 6.0;
 
 WorkPrecisionPlot::WorkPrecisionPlot(QWidget* parent) : PlotWidget(tr("Error vs run time"), parent)
 {
-    setRangeMode(RangeMode::WholeRun);
-    setPointBudget(1000);
+    model().setRangeMode(RangeMode::WholeRun);
+    model().setPointBudget(1000);
     QCustomPlot* p = plot();
     for (QCPAxis* axis : {p->xAxis, p->yAxis}) {
         axis->setScaleType(QCPAxis::stLogarithmic);
@@ -121,7 +121,7 @@ void WorkPrecisionPlot::redraw(const QString& integrator)
     if (rows.empty())
         return;
     for (const lessons::SweepRow* r : rows)
-        appendPoint(series, r->seconds, r->error);
+        model().appendPoint(series, r->seconds, r->error);
     // The observed order at the most accurate point, or why there is none.
     QCPItemText* label = m_labels[integrator];
     const auto best = std::min_element(

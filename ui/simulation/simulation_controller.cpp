@@ -41,7 +41,7 @@ template <typename Fn> void SimulationController::forEachWorld(Fn&& fn)
         fn(w);
 }
 
-SimulationController::SimulationController(QObject* parent) : QObject(parent)
+SimulationController::SimulationController(QObject* parent) : RunView(parent)
 {
     m_frameTimer.setTimerType(Qt::PreciseTimer);
     m_frameTimer.setInterval(kFrameIntervalMs);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// The one owner of the world and its clock. The window's widgets read from it and ask it to
-// change things; nothing else steps or edits the world. It hands the rest to its helpers:
+// The one owner of the world and its clock. Widgets that only read the run take it as a
+// RunView (run_view.h) and read its parts there; those that change things ask it to: nothing
+// else steps or edits the world. It hands the rest to its helpers:
 // the plots' samples and the energy references (sample_recorder.h), a lesson's measurements
 // (lesson_watch.h), the grab spring (grab_spring.h), frame timing (frame_timing.h), the
 // settings-edit log (setting_edit.h) and time travel (history.h).
@@ -17,13 +18,13 @@
 #include "simulation/grab_spring.h"
 #include "simulation/history.h"
 #include "simulation/lesson_watch.h"
+#include "simulation/run_view.h"
 #include "simulation/sample_recorder.h"
 #include "simulation/setting_edit.h"
 
 #include "format/scene.h"
 #include "rigidlab/physics/world.h"
 
-#include <QObject>
 #include <QString>
 #include <QTimer>
 
@@ -39,7 +40,7 @@ struct Pose {
     double angle = 0.0;
 };
 
-class SimulationController : public QObject {
+class SimulationController : public RunView {
     Q_OBJECT
 public:
     explicit SimulationController(QObject* parent = nullptr);
@@ -51,59 +52,40 @@ public:
     void loadWorlds(const lessons::Scene& scene, const QString& path,
                     std::vector<physics::World> worlds, const QStringList& labels,
                     const physics::Vec2& offset);
-    const lessons::Scene& scene() const { return m_scene; }
-    const QString& scenePath() const { return m_path; }
-    const physics::World& world() const { return m_world; }
-    const SampleBuffer& samples() const { return m_sampler.samples(); }
-    /// The clock's time: the time of the world's current step as the plots, the timeline and
-    /// the status bar show it (stepTime: t = 0.35, not 0.35000000000000009) [s].
-    double time() const { return stepTime(m_world); }
+    const lessons::Scene& scene() const override { return m_scene; }
+    const QString& scenePath() const override { return m_path; }
+    const physics::World& world() const override { return m_world; }
 
-    // Worlds run side by side with the main one (a lesson comparing integrators or solvers).
-    // They step in lockstep with it and share its dt, restitution, friction and gravity.
-    int variantCount() const { return static_cast<int>(m_variants.size()); }
-    const physics::World& variant(int i) const { return m_variants[static_cast<size_t>(i)]; }
-    /// Labels of all compared worlds, the main one first; empty when nothing is compared.
-    const QStringList& variantLabels() const { return m_variantLabels; }
-    physics::Vec2 variantOffset() const { return m_variantOffset; }
+    int variantCount() const override { return static_cast<int>(m_variants.size()); }
+    const physics::World& variant(int i) const override
+    {
+        return m_variants[static_cast<size_t>(i)];
+    }
+    const QStringList& variantLabels() const override { return m_variantLabels; }
+    physics::Vec2 variantOffset() const override { return m_variantOffset; }
+
+    const History& history() const override { return m_history; }
+    const SampleRecorder& recorder() const override { return m_sampler; }
+    const FrameTiming& timing() const override { return m_timing; }
+    const CatchUp& catchUp() const override { return m_catchUp; }
+    const LessonWatch& lessonWatch() const override { return m_watch; }
+    const SettingEditLog& editLog() const override { return m_edits; }
+    const GrabSpring& grabSpring() const override { return m_grab; }
 
     // What a lesson measures while the world runs (bounces, collisions, timed values).
     void watch(const std::vector<lessons::Measure>& measures);
-    const lessons::Measurements& measurements() const { return m_watch.measurements(); }
 
-    bool isRunning() const { return m_running; }
-    double timeScale() const { return m_timeScale; }
-    /// Whether the clock dropped time it could not catch up with, in the last second.
-    bool slowerThanRealTime() const { return m_running && m_catchUp.slower(); }
-    /// Simulated time the clock dropped since play was pressed [s].
-    double droppedSeconds() const { return m_catchUp.dropped(); }
-    /// Steps per second of wall time, over the last second.
-    double stepsPerSecond() const { return m_timing.stepsPerSecond(); }
-    /// Simulated seconds per wall second while running, over the last whole second since
-    /// play was pressed; nothing before that second has passed.
-    std::optional<double> realTimeFactor() const { return m_timing.realTimeFactor(); }
-    /// Wall time of the last frame, and the part of it spent in physics [ms].
-    double frameMilliseconds() const { return m_timing.frameMilliseconds(); }
-    double physicsMilliseconds() const { return m_timing.physicsMilliseconds(); }
+    bool isRunning() const override { return m_running; }
+    double timeScale() const override { return m_timeScale; }
+    bool slowerThanRealTime() const override { return m_running && m_catchUp.slower(); }
     /// Records the wall time of the next `frames` frames (from one frame to the next, drawing
     /// included) and the physics part of each, then emits framesMeasured (rigidlab
     /// --measure-frames).
     void measureFrames(int frames) { m_timing.measureFrames(frames); }
-    /// Relative energy drift since the start, the numerical error alone: what contacts, drag
-    /// and dampers took is added back [%] (drift_words.h says it in words).
-    double driftPercent() const { return m_sampler.driftPercent(m_world); }
-    /// The scene's energy scale: |E0|, or another scale when E0 is near 0 [J]. Energies far
-    /// below it are rounding, not physics.
-    double energyScale() const { return m_sampler.energyScale(); }
-    /// Energy taken since the start by contacts (bounces, friction), drag and dampers [J].
-    double dissipated() const { return m_sampler.dissipated(m_world); }
 
     /// The body pose to draw: between the last two steps, by how far the clock is into the next.
     Pose drawPose(physics::BodyId id) const;
 
-    /// The settings changed by hand in this run, in order, each at its step (reset() keeps
-    /// the ones it keeps, as edits at step 0; a change after going back drops the later ones).
-    const SettingEdits& edits() const { return m_edits.edits(); }
     /// Makes `edit` as its setter would, now (at whatever step the world is).
     void applyEdit(const SettingEdit& edit);
     /// Changes the run-time setting `key` (a world row of schema::settings()) to `value`, as
@@ -113,14 +95,8 @@ public:
     /// world's.
     void setSetting(std::string_view key, const lessons::schema::Value& value);
 
-    // Time travel.
-    long long earliestStep() const { return m_history.earliest(); }
     /// The most the time-travel snapshots may take [bytes] (96 MiB unless set).
     void setHistoryBudget(std::size_t bytes) { m_history.setBudget(bytes); }
-    long long latestStep() const { return m_history.latest(); }
-    /// The time of earliestStep() [s]: the plots keep their points from there.
-    double earliestTime() const { return m_history.earliestTime(); }
-    long long currentStep() const { return m_world.stepCount(); }
 
     // Dragging a body with the grab spring (grab_spring.h).
     void grab(physics::BodyId id, const physics::Vec2& worldPoint)
@@ -129,17 +105,10 @@ public:
     }
     void dragTo(const physics::Vec2& worldPoint) { m_grab.dragTo(worldPoint); }
     void release() { m_grab.release(); }
-    std::optional<physics::BodyId> grabbed() const { return m_grab.body(); }
-    /// The grab spring's two ends for drawing, when dragging.
-    bool grabLine(physics::Vec2& from, physics::Vec2& to) const
-    {
-        return m_grab.line(m_world, from, to);
-    }
 
     /// Held, the world never steps: Step, Back and seek do nothing (the scene editor holds it
     /// while editing; running it again leaves Edit mode first, which lets go).
     void setStepsHeld(bool held) { m_stepsHeld = held; }
-    bool stepsHeld() const { return m_stepsHeld; }
     /// The running clock pauses when the world's time reaches `time` [s] (a lesson step's
     /// "endTime"); nullopt: it runs on. Play after it runs on from there.
     void setEndTime(std::optional<double> time) { m_endTime = time; }
@@ -147,15 +116,13 @@ public:
     /// a cart run off the end of its ground), once per run, saying so (leftStage); a lesson
     /// step turns it on. The stage is the world's as it is now.
     void setStageWatched(bool on) { m_watch.watchStage(on, m_world); }
-    /// The body that left the stage in this run, and when; nullopt while none has.
-    const std::optional<lessons::OffStage>& offStage() const { return m_watch.leftStage(); }
 
 public slots:
     void setRunning(bool running);
     void toggleRunning() { setRunning(!m_running); }
     void stepForward();
     void stepBack();
-    /// Goes to any step in [earliestStep, latestStep]; running stops.
+    /// Goes to any step in [history().earliest(), history().latest()]; running stops.
     void seek(long long step);
     void reset();
     void setTimeScale(double scale);
@@ -184,25 +151,6 @@ public slots:
     /// Advances the clock as a frame would after `wallSeconds` of wall time (advanceFrame
     /// with the time measured; a test gives it).
     void advanceClock(double wallSeconds);
-
-signals:
-    void sceneLoaded();
-    /// The world changed (steps taken, a seek, a reset or an edit).
-    void worldChanged();
-    void runningChanged(bool running);
-    void settingsChanged();
-    /// A setting changed mid-run: the plots draw a mark at t.
-    void marked(double t, const QString& label);
-    /// A frame of the running clock is done (advanceFrame): the plots drain after it.
-    void frameAdvanced();
-    /// The world went back to time t: the plots drop what comes after.
-    void rewound(double t);
-    /// Samples were cleared (new scene, reset).
-    void samplesCleared();
-    /// A body left the stage at time t [s] and the run paused (setStageWatched).
-    void leftStage(physics::BodyId body, double t);
-    /// measureFrames() is done: each frame's wall time and physics time [ms].
-    void framesMeasured(const std::vector<double>& frameMs, const std::vector<double>& physicsMs);
 
 private:
     void doStep();

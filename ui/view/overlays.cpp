@@ -3,7 +3,10 @@
 
 #include "common/theme.h"
 
-#include "simulation/simulation_controller.h"
+#include "simulation/grab_spring.h"
+#include "simulation/run_view.h"
+
+#include "rigidlab/physics/touching.h"
 
 #include <QPainter>
 #include <QStyleOptionGraphicsItem>
@@ -46,8 +49,7 @@ void drawArrow(QPainter* p, QPointF a, QPointF b, double head)
 
 } // namespace
 
-OverlayItem::OverlayItem(const SimulationController& controller)
-    : m_controller(controller), m_bounds(-1e5, -1e5, 2e5, 2e5)
+OverlayItem::OverlayItem(const RunView& run) : m_run(run), m_bounds(-1e5, -1e5, 2e5, 2e5)
 {
     setZValue(10);
     setAcceptedMouseButtons(Qt::NoButton);
@@ -76,7 +78,7 @@ void OverlayItem::clearTrails()
 void OverlayItem::refresh()
 {
     if (isEnabled(Overlay::Trails)) {
-        const auto& bodies = m_controller.world().bodies();
+        const auto& bodies = m_run.world().bodies();
         m_trails.resize(bodies.size());
         for (std::size_t i = 0; i < bodies.size(); ++i) {
             if (!bodies[i].isDynamic())
@@ -166,7 +168,7 @@ void OverlayItem::paintBoundingBoxes(QPainter* p) const
 {
     p->setPen(cosmeticPen(QColor(120, 120, 120), 1.0, Qt::DashLine));
     p->setBrush(Qt::NoBrush);
-    for (const physics::Body& b : m_controller.world().bodies()) {
+    for (const physics::Body& b : m_run.world().bodies()) {
         const physics::Transform xf = b.transform();
         QRectF box;
         b.shape.visit(physics::Overloaded{[&](const physics::Circle& circle) {
@@ -186,7 +188,7 @@ void OverlayItem::paintBoundingBoxes(QPainter* p) const
 
 void OverlayItem::paintSpringsJoints(QPainter* p, double px) const
 {
-    const physics::World& world = m_controller.world();
+    const physics::World& world = m_run.world();
     auto centreOf = [&](int w, const physics::World& in, physics::BodyId id) {
         return drawnTransform(w, in, id).apply(in.body(id).localCenter);
     };
@@ -194,9 +196,9 @@ void OverlayItem::paintSpringsJoints(QPainter* p, double px) const
         return id == physics::kWorld ? toQt(a) : toQt(drawnTransform(0, world, id).apply(a));
     };
     // The compared worlds' joints too, where their ghosts are drawn.
-    for (int v = 0; v < m_controller.variantCount(); ++v) {
-        const physics::World& vw = m_controller.variant(v);
-        const physics::Vec2 shift = (v + 1) * m_controller.variantOffset();
+    for (int v = 0; v < m_run.variantCount(); ++v) {
+        const physics::World& vw = m_run.variant(v);
+        const physics::Vec2 shift = (v + 1) * m_run.variantOffset();
         auto end = [&](physics::BodyId id, const physics::Vec2& a) {
             return toQt((id == physics::kWorld ? a : drawnTransform(v + 1, vw, id).apply(a)) +
                         shift);
@@ -227,7 +229,7 @@ void OverlayItem::paintSpringsJoints(QPainter* p, double px) const
         p->drawEllipse(pin, 4 * px, 4 * px);
     }
     physics::Vec2 from, to;
-    if (m_controller.grabLine(from, to)) {
+    if (m_run.grabSpring().line(m_run.world(), from, to)) {
         p->setPen(cosmeticPen(QColor(200, 40, 40), 2.0, Qt::DashLine));
         p->drawLine(toQt(from), toQt(to));
     }
@@ -236,7 +238,7 @@ void OverlayItem::paintSpringsJoints(QPainter* p, double px) const
 void OverlayItem::paintCentresOfMass(QPainter* p, double px) const
 {
     p->setPen(cosmeticPen(Qt::black, 1.5));
-    for (const physics::Body& b : m_controller.world().bodies()) {
+    for (const physics::Body& b : m_run.world().bodies()) {
         if (!b.isDynamic())
             continue;
         // The usual quartered disc.
@@ -254,7 +256,7 @@ void OverlayItem::paintCentresOfMass(QPainter* p, double px) const
 void OverlayItem::paintVelocities(QPainter* p, double px) const
 {
     p->setPen(cosmeticPen(QColor(0, 110, 200), 2.0));
-    for (const physics::Body& b : m_controller.world().bodies()) {
+    for (const physics::Body& b : m_run.world().bodies()) {
         if (!b.moves() || !velocityArrowShown(b.velocity, px))
             continue;
         const QPointF c = toQt(b.position);
@@ -264,8 +266,10 @@ void OverlayItem::paintVelocities(QPainter* p, double px) const
 
 void OverlayItem::paintContacts(QPainter* p, double px) const
 {
-    for (const physics::Contact& c : m_controller.world().contacts()) {
+    for (const physics::Contact& c : m_run.world().contacts()) {
         for (int i = 0; i < c.manifold.pointCount; ++i) {
+            if (!physics::touches(c, i))
+                continue; // a point the step looked ahead for: nothing touches there
             const auto& cp = c.manifold.points[static_cast<std::size_t>(i)];
             const QPointF pt = toQt(cp.point);
             p->setPen(cosmeticPen(QColor(200, 30, 30), 2.0));

@@ -16,14 +16,14 @@
 
 namespace rigidlab::ui {
 
-class SimulationController;
+class RunView;
 
 enum class Overlay { Velocities, Contacts, BoundingBoxes, CentresOfMass, Trails, SpringsJoints };
 inline constexpr int kOverlayCount = 6;
 
 class OverlayItem : public QGraphicsItem {
 public:
-    explicit OverlayItem(const SimulationController& controller);
+    explicit OverlayItem(const RunView& run);
 
     void setEnabled(Overlay overlay, bool on);
     bool isEnabled(Overlay overlay) const { return m_on[static_cast<int>(overlay)]; }
@@ -64,7 +64,7 @@ private:
     /// A body's pose as drawn in world w (0 the main one, v + 1 compared world v).
     physics::Transform drawnTransform(int w, const physics::World& in, physics::BodyId id) const;
 
-    const SimulationController& m_controller;
+    const RunView& m_run;
     bool m_on[kOverlayCount] = {false, false, false, false, false, true};
     std::vector<std::deque<QPointF>> m_trails; ///< bounded, per body
     QRectF m_bounds;

@@ -2,7 +2,7 @@
 #include "view/sat_overlay.h"
 
 #include "common/theme.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 #include "view/sat_view_model.h"
 
 #include <QFontMetricsF>
@@ -146,7 +146,7 @@ SatOverlayItem::Geometry SatOverlayItem::geometry(double px) const
         return g;
     // The ids are checked against the world: a new scene may be in place before the panel
     // is told its new pair.
-    const auto& world = m_model.controller().world();
+    const auto& world = m_model.run().world();
     for (const int id : {m_model.bodyA(), m_model.bodyB()})
         if (id < 0 || id >= static_cast<int>(world.bodies().size()) ||
             polygonVertices(world.body(id).shape).empty())
@@ -218,8 +218,8 @@ QRectF SatOverlayItem::hullRect() const
     QRectF box;
     if (m_detached)
         return box;
-    const auto& scene = m_model.controller().scene();
-    const auto& world = m_model.controller().world();
+    const auto& scene = m_model.run().scene();
+    const auto& world = m_model.run().world();
     for (std::size_t i = 0; i < scene.originalVertices.size() && i < world.bodies().size(); ++i) {
         if (scene.originalVertices[i].empty())
             continue;
@@ -243,8 +243,8 @@ void SatOverlayItem::paintHulls(QPainter* p, double px) const
 {
     // A body whose outline was not convex is handled as its convex hull (the paper's
     // caveat): shade the area the hull adds, where contacts are found wrongly.
-    const auto& scene = m_model.controller().scene();
-    const auto& world = m_model.controller().world();
+    const auto& scene = m_model.run().scene();
+    const auto& world = m_model.run().world();
     for (std::size_t i = 0; i < scene.originalVertices.size() && i < world.bodies().size(); ++i) {
         const auto& original = scene.originalVertices[i];
         if (original.empty())
@@ -310,7 +310,7 @@ void SatOverlayItem::paint(QPainter* p, const QStyleOptionGraphicsItem*, QWidget
     p->drawLine(g.span.p2() - tick, g.span.p2() + tick);
     // The edge the axis comes from, thick, in its polygon's colour.
     {
-        const auto& world = m_model.controller().world();
+        const auto& world = m_model.run().world();
         const physics::Body& owner = world.body(ax.owner == 0 ? m_model.bodyA() : m_model.bodyB());
         const auto& v = polygonVertices(owner.shape);
         const physics::Transform xf = owner.transform();

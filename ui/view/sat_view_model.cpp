@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "view/sat_view_model.h"
 
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 
 #include <algorithm>
 
@@ -9,9 +9,9 @@ namespace rigidlab::ui {
 
 void SatViewModel::setBodies(int a, int b)
 {
-    const int n = static_cast<int>(m_controller.world().bodies().size());
+    const int n = static_cast<int>(m_run.world().bodies().size());
     auto polygon = [&](int id) {
-        return id >= 0 && id < n && m_controller.world().body(id).shape.asPolygon();
+        return id >= 0 && id < n && m_run.world().body(id).shape.asPolygon();
     };
     m_a = polygon(a) && polygon(b) ? a : -1;
     m_b = m_a >= 0 ? b : -1;
@@ -52,7 +52,7 @@ bool SatViewModel::refresh()
 {
     // The pair was checked to be two polygons when it was set; a world replaced since is
     // checked again rather than trusted.
-    const auto& world = m_controller.world();
+    const auto& world = m_run.world();
     const int n = static_cast<int>(world.bodies().size());
     const bool inWorld = active() && m_a < n && m_b < n;
     const physics::Polygon* pa = inWorld ? world.body(m_a).shape.asPolygon() : nullptr;

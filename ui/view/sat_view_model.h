@@ -10,11 +10,11 @@
 
 namespace rigidlab::ui {
 
-class SimulationController;
+class RunView;
 
 class SatViewModel {
 public:
-    explicit SatViewModel(const SimulationController& controller) : m_controller(controller) {}
+    explicit SatViewModel(const RunView& run) : m_run(run) {}
 
     /// The two bodies to test (ids), or -1 for none; anything but two polygons is none.
     /// Starts again at the first axis.
@@ -35,13 +35,13 @@ public:
     /// Whether the last axis has been reached (the verdict is shown).
     bool complete() const { return m_shown == static_cast<int>(m_result.axes.size()); }
     const physics::SatResult& result() const { return m_result; }
-    const SimulationController& controller() const { return m_controller; }
+    const RunView& run() const { return m_run; }
 
 private:
     /// `m_shown` within the axes tested (all of them after showAll()).
     void settle();
 
-    const SimulationController& m_controller;
+    const RunView& m_run;
     int m_a = -1, m_b = -1;
     int m_shown = 1;
     bool m_all = false;

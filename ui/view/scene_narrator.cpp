@@ -3,53 +3,56 @@
 
 #include "common/announcer.h"
 #include "common/spoken_numbers.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 #include "view/scene_words.h"
 #include "view/world_view.h"
 #include "view/world_view_accessible.h"
 
+#include "rigidlab/physics/touching.h"
+
 #include <QAccessible>
 #include <QMetaMethod>
 
+#include <algorithm>
+
 namespace rigidlab::ui {
 
-SceneNarrator::SceneNarrator(SimulationController& controller, WorldView& view)
-    : QObject(&view), m_controller(controller), m_view(view)
+SceneNarrator::SceneNarrator(const RunView& run, WorldView& view)
+    : QObject(&view), m_run(run), m_view(view)
 {
     m_tick.setInterval(kValueIntervalMs);
     connect(&m_tick, &QTimer::timeout, this, [this] {
         tellValues();
         flush();
     });
-    connect(&controller, &SimulationController::runningChanged, this, [this](bool running) {
+    connect(&run, &RunView::runningChanged, this, [this](bool running) {
         if (running)
             m_tick.start();
         else
             m_tick.stop();
         // Play and pause told, with the time the run stopped at.
-        announce(m_view, running ? tr("Running.")
-                                 : tr("Paused at %1.")
-                                       .arg(spokenQuantity(m_controller.time(), QStringLiteral("s"),
-                                                           3, 1.0)));
+        announce(m_view, running
+                             ? tr("Running.")
+                             : tr("Paused at %1.")
+                                   .arg(spokenQuantity(m_run.time(), QStringLiteral("s"), 3, 1.0)));
     });
     m_settle.setSingleShot(true);
     m_settle.setInterval(kSettleMs);
     connect(&m_settle, &QTimer::timeout, this, [this] {
-        const auto count = static_cast<int>(m_controller.world().bodies().size());
+        const auto count = static_cast<int>(m_run.world().bodies().size());
         if (m_moved < 0 || m_moved >= count)
             return;
-        const physics::World& world = m_controller.world();
+        const physics::World& world = m_run.world();
         const physics::Vec2 o = world.body(m_moved).origin();
         const physics::Vec2 v = world.originVelocity(m_moved);
         announce(m_view, tr("%1: position %2, velocity %3.")
-                             .arg(m_controller.scene().bodyLabel(m_moved),
+                             .arg(m_run.scene().bodyLabel(m_moved),
                                   spokenPair(o.x(), o.y(), QStringLiteral("m"), 3, 1.0),
                                   spokenPair(v.x(), v.y(), QStringLiteral("m/s"), 3, 1.0)));
     });
-    connect(&controller, &SimulationController::worldChanged, this, &SceneNarrator::onWorldChanged);
-    connect(&controller, &SimulationController::sceneLoaded, this, &SceneNarrator::onSceneLoaded);
-    connect(&controller, &SimulationController::samplesCleared, this,
-            &SceneNarrator::onSceneLoaded);
+    connect(&run, &RunView::worldChanged, this, &SceneNarrator::onWorldChanged);
+    connect(&run, &RunView::sceneLoaded, this, &SceneNarrator::onSceneLoaded);
+    connect(&run, &RunView::samplesCleared, this, &SceneNarrator::onSceneLoaded);
     m_sinceTold.start();
 }
 
@@ -64,12 +67,18 @@ void SceneNarrator::onSceneLoaded()
 
 void SceneNarrator::onWorldChanged()
 {
-    const physics::World& world = m_controller.world();
-    if (!m_touched && !world.contacts().empty()) {
-        m_touched = true;
-        const physics::Contact& c = world.contacts().front();
-        note(tr("%1 and %2 touch.")
-                 .arg(m_controller.scene().bodyLabel(c.a), m_controller.scene().bodyLabel(c.b)));
+    const physics::World& world = m_run.world();
+    if (!m_touched) {
+        // The first pair that touches (physics/touching.h), not one the step looked ahead for.
+        const auto touching =
+            std::find_if(world.contacts().begin(), world.contacts().end(),
+                         [](const physics::Contact& c) { return physics::touches(c); });
+        if (touching != world.contacts().end()) {
+            m_touched = true;
+            note(tr("%1 and %2 touch.")
+                     .arg(m_run.scene().bodyLabel(touching->a),
+                          m_run.scene().bodyLabel(touching->b)));
+        }
     }
     double fastest = 0;
     for (std::size_t i = 0; i < world.bodies().size(); ++i)
@@ -78,7 +87,7 @@ void SceneNarrator::onWorldChanged()
                 std::max(fastest, world.body(static_cast<physics::BodyId>(i)).velocity.norm());
     if (fastest > kMovingSpeed)
         m_moving = true;
-    else if (m_moving && fastest < kRestSpeed && m_controller.isRunning()) {
+    else if (m_moving && fastest < kRestSpeed && m_run.isRunning()) {
         m_moving = false;
         note(tr("Everything has come to rest."));
     }
@@ -135,12 +144,11 @@ void SceneNarrator::tellValues()
         !isSignalConnected(QMetaMethod::fromSignal(&SceneNarrator::told)))
         return;
     // Only what changed: a body at rest, a floor, says the same as a second ago.
-    const auto count = static_cast<physics::BodyId>(m_controller.world().bodies().size());
-    const std::vector<std::vector<physics::BodyId>> touches =
-        scene_words::touchingBodies(m_controller);
+    const auto count = static_cast<physics::BodyId>(m_run.world().bodies().size());
+    const std::vector<std::vector<physics::BodyId>> touches = scene_words::touchingBodies(m_run);
     for (physics::BodyId id = 0; id < count; ++id) {
         const QString value =
-            scene_words::bodyValue(m_controller, id, touches[static_cast<std::size_t>(id)]);
+            scene_words::bodyValue(m_run, id, touches[static_cast<std::size_t>(id)]);
         if (m_toldValues.value(id) == value)
             continue;
         m_toldValues.insert(id, value);
@@ -150,11 +158,11 @@ void SceneNarrator::tellValues()
 
 void SceneNarrator::tellChosen(int id)
 {
-    if (id < 0 || id >= static_cast<int>(m_controller.world().bodies().size()))
+    if (id < 0 || id >= static_cast<int>(m_run.world().bodies().size()))
         return;
-    const physics::Vec2 v = m_controller.world().originVelocity(id);
+    const physics::Vec2 v = m_run.world().originVelocity(id);
     announce(m_view, tr("%1, speed %2.")
-                         .arg(m_controller.scene().bodyLabel(id),
+                         .arg(m_run.scene().bodyLabel(id),
                               spokenQuantity(v.norm(), QStringLiteral("m/s"), 3, 1.0)));
 }
 

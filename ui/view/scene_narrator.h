@@ -17,7 +17,7 @@
 
 namespace rigidlab::ui {
 
-class SimulationController;
+class RunView;
 class WorldView;
 
 class SceneNarrator : public QObject {
@@ -29,7 +29,7 @@ public:
     static constexpr double kRestSpeed = 0.01;
     static constexpr double kMovingSpeed = 0.05;
 
-    SceneNarrator(SimulationController& controller, WorldView& view);
+    SceneNarrator(const RunView& run, WorldView& view);
 
     /// The events told last, merged: "Ball and ground touch. Everything is at rest."
     QString status() const { return m_status; }
@@ -59,7 +59,7 @@ private:
     void note(const QString& event);
     void tell(int child, const QString& value);
 
-    SimulationController& m_controller;
+    const RunView& m_run;
     WorldView& m_view;
     QTimer m_tick;
     QTimer m_settle; ///< tells the moved body once the keys rest

@@ -3,12 +3,15 @@
 
 #include "common/shortcuts.h"
 #include "common/spoken_numbers.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 
 #include "format/scene_schema.h"
 
+#include "rigidlab/physics/touching.h"
+
 #include <QStringList>
 
+#include <algorithm>
 #include <cmath>
 
 namespace rigidlab::ui::scene_words {
@@ -37,12 +40,11 @@ bool isBox(const physics::Polygon& p)
 }
 
 /// The names of the bodies `touches`, each name once.
-QStringList touchingNames(const std::vector<physics::BodyId>& touches,
-                          const SimulationController& controller)
+QStringList touchingNames(const std::vector<physics::BodyId>& touches, const RunView& run)
 {
     QStringList names;
     for (const physics::BodyId other : touches) {
-        const QString name = controller.scene().bodyLabel(other);
+        const QString name = run.scene().bodyLabel(other);
         if (!names.contains(name))
             names << name;
     }
@@ -51,15 +53,15 @@ QStringList touchingNames(const std::vector<physics::BodyId>& touches,
 
 } // namespace
 
-QString sceneName(const SimulationController& controller)
+QString sceneName(const RunView& run)
 {
-    const QString title = controller.scene().title;
+    const QString title = run.scene().title;
     return title.isEmpty() ? SceneWords::tr("Scene") : SceneWords::tr("Scene: %1").arg(title);
 }
 
-QString summary(const SimulationController& controller, int selectedBody)
+QString summary(const RunView& run, int selectedBody)
 {
-    const physics::World& world = controller.world();
+    const physics::World& world = run.world();
     int moving = 0;
     for (const physics::Body& b : world.bodies())
         moving += b.moves() ? 1 : 0;
@@ -67,18 +69,21 @@ QString summary(const SimulationController& controller, int selectedBody)
     QStringList parts;
     parts << SceneWords::tr("On stage: %n moving body(ies)", nullptr, moving) +
                  SceneWords::tr(", %n fixed body(ies).", nullptr, fixed);
-    const QString t = spokenQuantity(controller.time(), QStringLiteral("s"), 3, 1.0);
+    const QString t = spokenQuantity(run.time(), QStringLiteral("s"), 3, 1.0);
     if (world.divergence())
         parts << SceneWords::tr("The simulation stopped at %1: it diverged.").arg(t);
-    else if (controller.isRunning())
+    else if (run.isRunning())
         parts << SceneWords::tr("Running, time %1.").arg(t);
     else
         parts << SceneWords::tr("Paused at time %1.").arg(t);
-    if (!world.contacts().empty())
-        parts << SceneWords::tr("%n pair(s) of bodies touch.", nullptr,
-                                static_cast<int>(world.contacts().size()));
+    // Only pairs that touch: not a contact the step made ahead (physics/touching.h).
+    const auto touching =
+        std::count_if(world.contacts().begin(), world.contacts().end(),
+                      [](const physics::Contact& c) { return physics::touches(c); });
+    if (touching > 0)
+        parts << SceneWords::tr("%n pair(s) of bodies touch.", nullptr, static_cast<int>(touching));
     if (selectedBody >= 0 && selectedBody < static_cast<int>(world.bodies().size()))
-        parts << SceneWords::tr("Selected: %1.").arg(controller.scene().bodyLabel(selectedBody));
+        parts << SceneWords::tr("Selected: %1.").arg(run.scene().bodyLabel(selectedBody));
     parts << SceneWords::tr(
                  "%1 runs or pauses; %2 and %3 select a body; arrows move it, Shift+arrows change "
                  "its velocity, Enter shows its numbers.")
@@ -87,14 +92,14 @@ QString summary(const SimulationController& controller, int selectedBody)
     return parts.join(QLatin1Char(' '));
 }
 
-QString bodyName(const SimulationController& controller, physics::BodyId id)
+QString bodyName(const RunView& run, physics::BodyId id)
 {
-    const physics::Body& b = controller.world().body(id);
+    const physics::Body& b = run.world().body(id);
     // The kind is an adjective of "body" (the schema's word for the editor's list), which a
     // language with genders says with its noun: Czech "podlaha (statické těleso)", never
     // "podlaha (statické)" after a feminine name.
     return SceneWords::tr("%1 (%2)", "a body's name, then its kind: static, dynamic or kinematic")
-        .arg(controller.scene().bodyLabel(id), lessons::schema::bodyTypeLabel(b.type));
+        .arg(run.scene().bodyLabel(id), lessons::schema::bodyTypeLabel(b.type));
 }
 
 QString shapeText(const physics::Shape& shape)
@@ -112,30 +117,32 @@ QString shapeText(const physics::Shape& shape)
     return SceneWords::tr("polygon, %n corner(s)", nullptr, static_cast<int>(p->vertices.size()));
 }
 
-std::vector<std::vector<physics::BodyId>> touchingBodies(const SimulationController& controller)
+std::vector<std::vector<physics::BodyId>> touchingBodies(const RunView& run)
 {
-    const physics::World& world = controller.world();
+    const physics::World& world = run.world();
     std::vector<std::vector<physics::BodyId>> touches(world.bodies().size());
     for (const physics::Contact& c : world.contacts()) {
+        if (!physics::touches(c))
+            continue;
         touches[static_cast<std::size_t>(c.a)].push_back(c.b);
         touches[static_cast<std::size_t>(c.b)].push_back(c.a);
     }
     return touches;
 }
 
-QString bodyValue(const SimulationController& controller, physics::BodyId id)
+QString bodyValue(const RunView& run, physics::BodyId id)
 {
     std::vector<physics::BodyId> touches;
-    for (const physics::Contact& c : controller.world().contacts())
-        if (c.a == id || c.b == id)
+    for (const physics::Contact& c : run.world().contacts())
+        if ((c.a == id || c.b == id) && physics::touches(c))
             touches.push_back(c.a == id ? c.b : c.a);
-    return bodyValue(controller, id, touches);
+    return bodyValue(run, id, touches);
 }
 
-QString bodyValue(const SimulationController& controller, physics::BodyId id,
+QString bodyValue(const RunView& run, physics::BodyId id,
                   const std::vector<physics::BodyId>& touches)
 {
-    const physics::World& world = controller.world();
+    const physics::World& world = run.world();
     const physics::Body& b = world.body(id);
     QStringList parts;
     parts << shapeText(b.shape);
@@ -148,7 +155,7 @@ QString bodyValue(const SimulationController& controller, physics::BodyId id,
     parts << SceneWords::tr("velocity %1, speed %2")
                  .arg(pair(v.x(), v.y(), QStringLiteral("m/s")),
                       spokenQuantity(v.norm(), QStringLiteral("m/s"), 3, 1.0));
-    if (const QStringList t = touchingNames(touches, controller); !t.isEmpty())
+    if (const QStringList t = touchingNames(touches, run); !t.isEmpty())
         parts << SceneWords::tr("touches %1").arg(t.join(QStringLiteral(", ")));
     return parts.join(QStringLiteral("; "));
 }

@@ -41,7 +41,8 @@ bool inSight(const QRectF& shown, const physics::Vec2& p)
 } // namespace
 
 WorldView::WorldView(SimulationController& controller, QWidget* parent)
-    : QGraphicsView(parent), m_controller(controller), m_scene(new QGraphicsScene(this))
+    : QGraphicsView(parent), m_controller(controller), m_run(controller),
+      m_scene(new QGraphicsScene(this))
 {
     m_scene->setSceneRect(-1e5, -1e5, 2e5, 2e5);
     m_scene->setItemIndexMethod(QGraphicsScene::NoIndex); // items move every frame
@@ -257,7 +258,9 @@ void WorldView::followContent()
         // Follow bodies that leave the fitted area, by widening it (within the limit); not
         // while the scene is being edited, where the view holds still under the pen (a body
         // drawn outside the area would make everything jump).
-        const QRectF wanted = (m_fitted | contentRect()) & m_fitLimit;
+        // Most frames every body lies well inside: said without the exact outlines.
+        const QRectF wanted = contentWithin(m_fitted) ? m_fitted & m_fitLimit
+                                                      : (m_fitted | contentRect()) & m_fitLimit;
         if (!m_fitted.contains(wanted)) {
             m_fitted |= wanted;
             showRect(m_fitted);
@@ -319,7 +322,7 @@ void WorldView::mousePressEvent(QMouseEvent* event)
     selectBody(hit);
     m_autoFit = false; // the view must hold still under the hand that drags
     m_controller.grab(hit, toWorld(event->pos()));
-    if (m_controller.grabbed())
+    if (m_controller.grabSpring().body())
         setCursor(Qt::ClosedHandCursor);
 }
 
@@ -333,7 +336,7 @@ void WorldView::mouseMoveEvent(QMouseEvent* event)
         verticalScrollBar()->setValue(verticalScrollBar()->value() - delta.y());
         return;
     }
-    if (m_controller.grabbed()) {
+    if (m_controller.grabSpring().body()) {
         m_controller.dragTo(toWorld(event->pos()));
         m_overlays->update();
         return;

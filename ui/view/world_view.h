@@ -20,6 +20,7 @@ namespace rigidlab::ui {
 class BodiesItem;
 class BodyItem;
 class SceneNarrator;
+class RunView;
 class SimulationController;
 
 class WorldView : public QGraphicsView {
@@ -29,7 +30,8 @@ public:
     ~WorldView() override;
 
     OverlayItem& overlays() { return *m_overlays; }
-    const SimulationController& controller() const { return m_controller; }
+    /// The run the view shows.
+    const RunView& run() const { return m_run; }
     /// What the view tells a screen reader as the world runs (scene_narrator.h).
     SceneNarrator& narrator() const { return *m_narrator; }
     /// The item drawing body `id` (for tests).
@@ -132,6 +134,15 @@ private:
     physics::Vec2 toWorld(const QPoint& viewPos) const;
     /// Everything the scene shows: bodies, spring and joint anchors [m].
     QRectF contentRect() const;
+    /// The part of `item` (body `body` of `world`) that contentRect takes: its box, the
+    /// scenery's cut to the run's event [m].
+    QRectF shownRect(const BodyItem& item, const physics::World& world, physics::BodyId body) const;
+    /// What contentRect adds to the bodies: spring and joint anchors, the fit's extra and the
+    /// run's event [m].
+    QRectF anchorsAndExtras() const;
+    /// Whether contentRect() lies within `area`: true only when it does, and false (the
+    /// exact rectangle then to be asked for) when a body's reach comes near the edge.
+    bool contentWithin(const QRectF& area) const;
     /// Selects the body `step` places from the selected one among those that move.
     void selectBodyAfter(int step);
     /// Shows `box` (grown by a margin) in the whole viewport.
@@ -151,7 +162,8 @@ private:
     const BodyItem* ghostOf(int variant) const;
     QString stoppedLabel(int variant) const;
 
-    SimulationController& m_controller;
+    SimulationController& m_controller; ///< changes the run: grabbing, moving a body
+    const RunView& m_run;               ///< the same run, read
     QGraphicsScene* m_scene;
     OverlayItem* m_overlays;
     SceneNarrator* m_narrator;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "view/world_view_accessible.h"
 
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 #include "view/body_item.h"
 #include "view/scene_narrator.h"
 #include "view/scene_words.h"
@@ -38,7 +38,7 @@ public:
     {
         if (!isValid())
             return {};
-        const SimulationController& c = m_view->controller();
+        const RunView& c = m_view->run();
         switch (index()) {
         case WorldViewAccessible::Summary:
             if (t == QAccessible::Name)
@@ -109,7 +109,7 @@ public:
 private:
     int index() const { return m_index; }
     int body() const { return m_index - WorldViewAccessible::FirstBody; }
-    std::size_t bodyCount() const { return m_view->controller().world().bodies().size(); }
+    std::size_t bodyCount() const { return m_view->run().world().bodies().size(); }
 
     QPointer<WorldView> m_view;
     int m_index;
@@ -163,9 +163,9 @@ WorldView* WorldViewAccessible::view() const
 QString WorldViewAccessible::text(QAccessible::Text t) const
 {
     if (t == QAccessible::Name)
-        return scene_words::sceneName(view()->controller());
+        return scene_words::sceneName(view()->run());
     if (t == QAccessible::Description)
-        return scene_words::summary(view()->controller(), view()->selectedBody());
+        return scene_words::summary(view()->run(), view()->selectedBody());
     return QAccessibleWidget::text(t);
 }
 
@@ -178,7 +178,7 @@ QAccessible::State WorldViewAccessible::state() const
 
 int WorldViewAccessible::childCount() const
 {
-    return FirstBody + static_cast<int>(view()->controller().world().bodies().size());
+    return FirstBody + static_cast<int>(view()->run().world().bodies().size());
 }
 
 QAccessibleInterface* WorldViewAccessible::child(int index) const

@@ -7,7 +7,7 @@
 #include "view/world_view.h"
 
 #include "common/theme.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 #include "view/body_item.h"
 #include "view/label_layout.h"
 
@@ -22,8 +22,8 @@ constexpr int kMostBodyLabels = 8;
 
 std::vector<std::pair<int, QRect>> WorldView::bodyLabelRects() const
 {
-    const lessons::Scene& scene = m_controller.scene();
-    const auto& bodies = m_controller.world().bodies();
+    const lessons::Scene& scene = m_run.scene();
+    const auto& bodies = m_run.world().bodies();
     std::vector<int> labelled;
     for (std::size_t i = 0; i < bodies.size(); ++i)
         if (bodies[i].moves() && scene.hasLabel(static_cast<physics::BodyId>(i)))
@@ -60,7 +60,7 @@ std::vector<std::pair<int, QRect>> WorldView::bodyLabelRects() const
 
 void WorldView::drawBodyLabels(QPainter* painter) const
 {
-    const lessons::Scene& scene = m_controller.scene();
+    const lessons::Scene& scene = m_run.scene();
     for (const auto& [id, box] : bodyLabelRects()) {
         painter->fillRect(box, theme::worldLabelBox());
         painter->setPen(theme::worldText());

@@ -8,7 +8,7 @@
 #include "common/number_format.h"
 #include "common/theme.h"
 #include "plots/plot_widget.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 #include "view/body_item.h"
 
 #include <QHelpEvent>
@@ -51,19 +51,19 @@ void WorldView::drawBackground(QPainter* painter, const QRectF& rect)
 
 int WorldView::worldCount() const
 {
-    return static_cast<int>(m_controller.variantLabels().size());
+    return static_cast<int>(m_run.variantLabels().size());
 }
 
 bool WorldView::stoppedWorld(int world) const
 {
-    const physics::World& w = world == 0 ? m_controller.world() : m_controller.variant(world - 1);
+    const physics::World& w = world == 0 ? m_run.world() : m_run.variant(world - 1);
     return w.divergence().has_value();
 }
 
 QString WorldView::legendLine(int world) const
 {
-    const QString name = m_controller.variantLabels().value(world);
-    const physics::World& w = world == 0 ? m_controller.world() : m_controller.variant(world - 1);
+    const QString name = m_run.variantLabels().value(world);
+    const physics::World& w = world == 0 ? m_run.world() : m_run.variant(world - 1);
     // A stopped world gets one short line, readable from the back of the room; the numbers
     // (how far the energy grew, which body) are in legendDetail, the line's tooltip.
     if (const auto& d = w.divergence()) {
@@ -77,11 +77,11 @@ QString WorldView::legendLine(int world) const
 
 QString WorldView::legendDetail(int world) const
 {
-    const QString name = m_controller.variantLabels().value(world);
-    const physics::World& w = world == 0 ? m_controller.world() : m_controller.variant(world - 1);
+    const QString name = m_run.variantLabels().value(world);
+    const physics::World& w = world == 0 ? m_run.world() : m_run.variant(world - 1);
     if (const auto& d = w.divergence()) {
         // The variants are copies of the scene's world: the same bodies, the same labels.
-        const QString detail = divergenceLabel(*d, m_controller.scene().bodyLabel(d->body));
+        const QString detail = divergenceLabel(*d, m_run.scene().bodyLabel(d->body));
         return world == 0 ? tr("%1 (solid): %2").arg(name, detail)
                           : tr("%1 (outline): %2").arg(name, detail);
     }
@@ -147,8 +147,8 @@ void WorldView::drawForeground(QPainter* painter, const QRectF&)
     // or off the view, so it is kept inside), below the one before where they would meet.
     const std::vector<QRect> labels = stoppedLabelRects();
     int k = 0;
-    for (int v = 0; v < m_controller.variantCount(); ++v) {
-        if (!m_controller.variant(v).divergence() || !ghostOf(v))
+    for (int v = 0; v < m_run.variantCount(); ++v) {
+        if (!m_run.variant(v).divergence() || !ghostOf(v))
             continue;
         const QRect& box = labels[static_cast<std::size_t>(k++)];
         painter->fillRect(box, theme::worldLabelBox());
@@ -195,9 +195,9 @@ int WorldView::legendHeight() const
 
 int WorldView::stoppedCount() const
 {
-    int n = m_controller.world().divergence() ? 1 : 0;
-    for (int v = 0; v < m_controller.variantCount(); ++v)
-        n += m_controller.variant(v).divergence() ? 1 : 0;
+    int n = m_run.world().divergence() ? 1 : 0;
+    for (int v = 0; v < m_run.variantCount(); ++v)
+        n += m_run.variant(v).divergence() ? 1 : 0;
     return n;
 }
 
@@ -210,7 +210,7 @@ const BodyItem* WorldView::ghostOf(int variant) const
 
 QString WorldView::stoppedLabel(int variant) const
 {
-    return tr("%1 stopped").arg(m_controller.variantLabels().value(variant + 1));
+    return tr("%1 stopped").arg(m_run.variantLabels().value(variant + 1));
 }
 
 std::vector<QRect> WorldView::stoppedLabelRects() const
@@ -218,9 +218,9 @@ std::vector<QRect> WorldView::stoppedLabelRects() const
     const QFontMetrics fm(legendFont());
     const QRect inside = viewport()->rect().adjusted(4, legendHeight(), -4, -30);
     std::vector<QRect> out;
-    for (int v = 0; v < m_controller.variantCount(); ++v) {
+    for (int v = 0; v < m_run.variantCount(); ++v) {
         const BodyItem* ghost = ghostOf(v);
-        if (!m_controller.variant(v).divergence() || !ghost)
+        if (!m_run.variant(v).divergence() || !ghost)
             continue;
         const QRect label = fm.boundingRect(stoppedLabel(v)).adjusted(-4, -2, 4, 2);
         const QRect body = mapFromScene(ghost->sceneBoundingRect()).boundingRect();

@@ -32,10 +32,10 @@ WindowState captureState(MainWindow& window)
             state.editedModified = window.document()->isModified();
         }
     }
-    state.steps = controller.currentStep();
+    state.steps = controller.world().stepCount();
     state.running = controller.isRunning();
     state.timeScale = controller.timeScale();
-    state.edits = controller.edits();
+    state.edits = controller.editLog().edits();
     state.presentation = window.presentation();
     state.geometry = window.saveGeometry();
     return state;
@@ -62,15 +62,16 @@ QString restoreState(MainWindow& window, const WindowState& state)
     SimulationController& controller = window.controller();
     std::size_t edit = 0;
     const auto makeDueEdits = [&] {
-        for (; edit < state.edits.size() && state.edits[edit].step <= controller.currentStep();
+        for (;
+             edit < state.edits.size() && state.edits[edit].step <= controller.world().stepCount();
              ++edit)
             controller.applyEdit(state.edits[edit]);
     };
     makeDueEdits();
-    while (controller.currentStep() < state.steps) {
-        const long long before = controller.currentStep();
+    while (controller.world().stepCount() < state.steps) {
+        const long long before = controller.world().stepCount();
         controller.stepForward();
-        if (controller.currentStep() == before)
+        if (controller.world().stepCount() == before)
             break; // a world that cannot step (diverged) stays where it stopped
         makeDueEdits();
     }

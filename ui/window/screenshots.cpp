@@ -21,6 +21,7 @@
 #include <QAction>
 #include <QBuffer>
 #include <QCoreApplication>
+#include <QDeadlineTimer>
 #include <QDialog>
 #include <QDir>
 #include <QDockWidget>
@@ -92,29 +93,45 @@ QString shoot(MainWindow& window, const QSize& size, const QString& path, QWidge
     return lessons::writeFileAtomically(path, bytes);
 }
 
+/// How long a resize is waited for [ms].
+constexpr int kResizeWaitMs = 1000;
+
 /// Resizes the window so that it covers `size` device pixels. A window whose docks cannot be
 /// that small is made so anyway (its content is clipped, as it would be on such a screen), and
-/// the returned note says so.
+/// the returned note says so; so does it when the window system gives another size.
 QString fitWindow(MainWindow& window, const QSize& size)
 {
     const qreal ratio = window.devicePixelRatioF();
     const QSize logical(static_cast<int>(std::ceil(size.width() / ratio)),
                         static_cast<int>(std::ceil(size.height() / ratio)));
     window.resize(logical);
-    QCoreApplication::processEvents();
+    // A window system answers a resize when it will (X11: after the window manager framed
+    // the window): the size asked for is waited for a moment before it is called refused.
+    const auto settle = [&window, logical] {
+        const QDeadlineTimer deadline(kResizeWaitMs);
+        do
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        while (window.size() != logical && !deadline.hasExpired());
+    };
+    settle();
     if (window.size() == logical)
         return QString();
+    // "%1×%2 ... %3×%4": two sizes in a note.
+    const auto sizes = [](const QString& note, const QSize& a, const QSize& b) {
+        return note.arg(a.width()).arg(a.height()).arg(b.width()).arg(b.height());
+    };
     const QSize minimum = window.minimumSizeHint();
+    if (minimum.width() <= logical.width() && minimum.height() <= logical.height())
+        return sizes(Screenshots::tr("the window system made the window %1×%2 (logical pixels), "
+                                     "not the %3×%4 asked for"),
+                     window.size(), logical);
     window.layout()->setSizeConstraint(QLayout::SetNoConstraint);
     window.setMinimumSize(0, 0);
     window.resize(logical);
-    QCoreApplication::processEvents();
-    return Screenshots::tr("the window needs at least %1×%2 (logical pixels) and was made "
-                           "%3×%4: its content is clipped")
-        .arg(minimum.width())
-        .arg(minimum.height())
-        .arg(logical.width())
-        .arg(logical.height());
+    settle();
+    return sizes(Screenshots::tr("the window needs at least %1×%2 (logical pixels) and was made "
+                                 "%3×%4: its content is clipped"),
+                 minimum, logical);
 }
 
 /// Points QSettings at a folder of its own while it lives, then back at the default (on Unix

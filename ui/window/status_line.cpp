@@ -126,7 +126,7 @@ void StatusLine::buildTimeline()
     timebar->addWidget(m_timeline);
     timebar->addWidget(m_timeLabel);
     connect(m_timeline, &QSlider::valueChanged, this, [this](int value) {
-        if (m_timeline->isSliderDown() || value != m_controller.currentStep())
+        if (m_timeline->isSliderDown() || value != m_controller.world().stepCount())
             m_controller.seek(value);
     });
 }
@@ -139,7 +139,7 @@ void StatusLine::update()
     // Simulated seconds per wall second; while paused there is no rate to show.
     if (!running)
         setCalmText(*m_rate, tr("paused"));
-    else if (const std::optional<double> factor = m_controller.realTimeFactor())
+    else if (const std::optional<double> factor = m_controller.timing().realTimeFactor())
         setCalmText(*m_rate, tr("%1 × real time").arg(locale.toString(*factor, 'f', 2)));
     else
         setCalmText(*m_rate, tr("running"));
@@ -182,8 +182,9 @@ QString StatusLine::driftText(bool brief) const
     // Drift is the numerical error alone: what contacts, friction, drag and dampers took is
     // physics, said apart. The label says whose error (drift_words.h).
     // In short (`brief`) on a projector: the line must fit 1024 pixels at the larger size.
-    QString drift = driftLabel(brief).arg(driftPercentText(m_controller.driftPercent(), locale));
-    const double lost = m_controller.dissipated();
+    QString drift = driftLabel(brief).arg(
+        driftPercentText(m_controller.recorder().driftPercent(m_controller.world()), locale));
+    const double lost = m_controller.recorder().dissipated(m_controller.world());
     if (std::abs(lost) > 1e-9)
         drift += (brief ? tr(" · dissipated %1 J")
                         : tr(" · dissipated by contacts, friction, drag and dampers %1 J"))
@@ -214,9 +215,9 @@ QString StatusLine::detailsText(bool running) const
     if (!running)
         return step;
     return tr("%1 steps/s · frame %2 ms (physics %3 ms) · %4")
-        .arg(locale.toString(m_controller.stepsPerSecond(), 'f', 0),
-             locale.toString(m_controller.frameMilliseconds(), 'f', 1),
-             locale.toString(m_controller.physicsMilliseconds(), 'f', 1), step);
+        .arg(locale.toString(m_controller.timing().stepsPerSecond(), 'f', 0),
+             locale.toString(m_controller.timing().frameMilliseconds(), 'f', 1),
+             locale.toString(m_controller.timing().physicsMilliseconds(), 'f', 1), step);
 }
 
 QString StatusLine::text() const
@@ -231,13 +232,13 @@ QString StatusLine::text() const
 void StatusLine::updateTimeline()
 {
     // The label follows the drag too; the slider itself is left to the hand that holds it.
-    const long long lo = m_controller.earliestStep(), hi = m_controller.latestStep();
+    const long long lo = m_controller.history().earliest(), hi = m_controller.history().latest();
     // One clock: the status bar's time moves with the timeline's, in the same frame.
     const QString t = QLocale().toString(m_controller.time(), 'f', 3);
     setCalmText(*m_time, tr("t = %1 s").arg(t));
     // Step counts grouped as the locale does ("10 000" in Czech), as on the plots' axes.
     setCalmText(*m_timeLabel, tr(" step %1 of %2 · t = %3 s")
-                                  .arg(QLocale().toString(m_controller.currentStep()),
+                                  .arg(QLocale().toString(m_controller.world().stepCount()),
                                        QLocale().toString(hi), t));
     if (m_timeline->isSliderDown())
         return;
@@ -254,7 +255,7 @@ void StatusLine::updateTimeline()
     m_timelineMoved.restart();
     const QSignalBlocker block(m_timeline);
     m_timeline->setRange(static_cast<int>(lo), static_cast<int>(hi));
-    m_timeline->setValue(static_cast<int>(m_controller.currentStep()));
+    m_timeline->setValue(static_cast<int>(m_controller.world().stepCount()));
 }
 
 void StatusLine::setPresentation(bool on)

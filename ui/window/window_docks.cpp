@@ -17,6 +17,8 @@
 #include <QVBoxLayout>
 
 #include <algorithm>
+#include <string_view>
+#include <utility>
 
 namespace rigidlab::ui {
 
@@ -48,14 +50,16 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
     // Short dock titles, whole on their tabs; the full ones in tooltips.
     keepDockTabsWhole(window);
     buildLessonDock(panels);
-    // The panels a lesson step may show, titled from the one table the lesson editor reads.
-    const auto panelTitle = [](std::size_t i, bool full) {
-        return stepPartText(full ? kStepPanelTitles[i].title : kStepPanelTitles[i].shortTitle);
+    // The panels a lesson step may show, each under the lesson format's name and titled from
+    // the one table the lesson editor reads.
+    const auto panelDock = [this](std::string_view name, QWidget* panel,
+                                  Scrolling scrolling = Scrolling::InDock) {
+        const StepPartName& part = stepPanel(name);
+        return addDock(stepPartText(part.shortTitle), QLatin1String(part.name), panel,
+                       Qt::RightDockWidgetArea, stepPartText(part.title), scrolling);
     };
-    addDock(panelTitle(0, false), QStringLiteral("controls"), panels.controls,
-            Qt::RightDockWidgetArea);
-    addDock(panelTitle(1, false), QStringLiteral("inspector"), panels.inspector,
-            Qt::RightDockWidgetArea);
+    panelDock("controls", panels.controls);
+    panelDock("inspector", panels.inspector);
     for (PlotWidget* plot : panels.plots) {
         const PlotRow* row = findPlot(plot->objectName());
         Q_ASSERT(row); // made by its row (makeWorldPlot)
@@ -65,22 +69,15 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
         addDock(plotTitle(*row, false), plot->objectName(), plot, Qt::RightDockWidgetArea,
                 plotTitle(*row));
     }
-    addDock(panelTitle(2, false), QStringLiteral("sat"), panels.sat, Qt::RightDockWidgetArea,
-            panelTitle(2, true))
-        ->hide();
-    addDock(panelTitle(3, false), QStringLiteral("bounces"), panels.bounces,
-            Qt::RightDockWidgetArea)
-        ->hide();
-    addDock(panelTitle(4, false), QStringLiteral("collision"), panels.collision,
-            Qt::RightDockWidgetArea)
-        ->hide();
+    for (const auto& [name, panel] : {std::pair<std::string_view, QWidget*>{"sat", panels.sat},
+                                      {"bounces", panels.bounces},
+                                      {"collision", panels.collision}})
+        panelDock(name, panel)->hide();
     // The work-precision sweep, hidden until asked for (View menu).
     addDock(tr("Error vs run time"), QStringLiteral("errorDock"), panels.error,
             Qt::BottomDockWidgetArea)
         ->hide();
-    addDock(panelTitle(5, false), QStringLiteral("measurement"), panels.measurement,
-            Qt::RightDockWidgetArea, QString(), Scrolling::Own)
-        ->hide();
+    panelDock("measurement", panels.measurement, Scrolling::Own)->hide();
     m_compareDock = new QDockWidget(tr("Side by side"), &window);
     m_compareDock->setObjectName(QStringLiteral("compareDock"));
     setFullTitle(*m_compareDock, m_compareDock->windowTitle());

@@ -57,8 +57,8 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     connect(m_focusScene, &QAction::triggered, &parts.view, [&view = parts.view] {
         // A reader speaks a focus that moves; on the scene already, F6 says where it is.
         if (view.hasFocus())
-            announce(view, scene_words::sceneName(view.controller()) + QStringLiteral(". ") +
-                               scene_words::summary(view.controller(), view.selectedBody()));
+            announce(view, scene_words::sceneName(view.run()) + QStringLiteral(". ") +
+                               scene_words::summary(view.run(), view.selectedBody()));
         else
             view.setFocus(Qt::ShortcutFocusReason);
     });

@@ -2,8 +2,11 @@
 #include "window/window_plots.h"
 
 #include "plots/plot_export.h"
+#include "plots/plot_exporter.h"
 #include "plots/plot_widget.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/history.h"
+#include "simulation/run_view.h"
+#include "simulation/sample_recorder.h"
 #include "window/window_documents.h"
 
 #include <QCoreApplication>
@@ -24,29 +27,27 @@ struct PlotExportMenu {
 void exportPlotDialog(QWidget& window, PlotWidget& plot, const QString& format)
 {
     // The plot's own dialog (folder, proposed name, CSV dialect), then a word in the status bar.
-    const QString path = plot.exportInteractively(*formatFromSuffix(format.toLower()));
+    const QString path = plot.exporter().exportInteractively(*formatFromSuffix(format.toLower()));
     if (auto* main = qobject_cast<QMainWindow*>(&window); main && !path.isEmpty())
         main->statusBar()->showMessage(PlotExportMenu::tr("Exported %1").arg(path), 5000);
 }
 
 } // namespace
 
-void followController(PlotWidget& plot, SimulationController& controller)
+void followController(PlotWidget& plot, const RunView& run)
 {
     // The live samples, cleared with a new scene, cut back on a rewind, marked where a setting
     // changed, drained after each frame.
-    plot.setSource(&controller.samples());
-    QObject::connect(&controller, &SimulationController::samplesCleared, &plot, &PlotWidget::clear);
-    QObject::connect(&controller, &SimulationController::rewound, &plot, &PlotWidget::rewind);
-    QObject::connect(&controller, &SimulationController::marked, &plot, &PlotWidget::addMark);
-    QObject::connect(&controller, &SimulationController::frameAdvanced, &plot,
-                     &PlotWidget::frameAdvanced);
+    plot.model().setSource(&run.recorder().samples());
+    QObject::connect(&run, &RunView::samplesCleared, &plot, &PlotWidget::clear);
+    QObject::connect(&run, &RunView::rewound, &plot, &PlotWidget::rewind);
+    QObject::connect(&run, &RunView::marked, &plot.model(), &PlotModel::addMark);
+    QObject::connect(&run, &RunView::frameAdvanced, &plot, &PlotWidget::frameAdvanced);
     // The plot keeps its points as far back as the timeline goes (going back shows them).
-    QObject::connect(&controller, &SimulationController::worldChanged, &plot,
-                     [p = &plot, c = &controller] {
-                         p->setTimelineStart(c->earliestTime());
-                         p->setExportContext(c->scene().title); // names its exports
-                     });
+    QObject::connect(&run, &RunView::worldChanged, &plot, [p = &plot, r = &run] {
+        p->model().setTimelineStart(r->history().earliestTime());
+        p->exporter().setContext(r->scene().title); // names its exports
+    });
 }
 
 void fillExportMenu(QMenu& menu, QWidget& window, std::function<QList<PlotWidget*>()> onScreen)

@@ -13,10 +13,10 @@ class QWidget;
 namespace rigidlab::ui {
 
 class PlotWidget;
-class SimulationController;
+class RunView;
 
-/// Connects a plot to the controller's samples and clock.
-void followController(PlotWidget& plot, SimulationController& controller);
+/// Connects a plot to the run's samples and clock.
+void followController(PlotWidget& plot, const RunView& run);
 
 /// Fills `menu` (File › Export plot) each time it opens with the plots `onScreen` returns:
 /// one submenu per plot under its title, PNG, PDF, SVG and CSV in each. The file dialog is

@@ -5,6 +5,7 @@
 #include "common/number_format.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_widget.h"
+#include "question_kinds/question_kinds.h"
 #include "worksheet/worksheet_page.h"
 #include "worksheet/worksheet_plots.h"
 
@@ -136,6 +137,9 @@ private:
     /// A choice question's options (the key marks the right one) and, handed in, its tries.
     void writeChoice(const lessons::Question& question, const lessons::ChoiceQuestion& choice,
                      const std::vector<lessons::AnswerTry>& tries);
+    /// The lines a kind of ui/question_kinds/ writes under its prompt.
+    void writeLines(const lessons::Question& question, const std::vector<SheetLine>& lines,
+                    const std::vector<lessons::AnswerTry>& tries);
     /// The tries with their verdicts, a typed answer in `unit`; the value last measured.
     std::optional<double> writeTries(const lessons::Question& question,
                                      const std::vector<lessons::AnswerTry>& tries,
@@ -253,13 +257,14 @@ void SheetWriter::writeQuestion(const lessons::LessonStep& step, int s, int q)
     m_pages.keepRoom(m_pages.heightOf(prompt, m_bold) + kQuestionRoom);
     m_pages.text(prompt, m_bold);
     const std::vector<lessons::AnswerTry>& tries = triesOf(s, q);
-    std::visit(physics::Overloaded{[&](const lessons::MeasuredQuestion& measured) {
-                                       writeMeasured(step, question, measured, tries);
-                                   },
-                                   [&](const lessons::ChoiceQuestion& choice) {
-                                       writeChoice(question, choice, tries);
-                                   }},
-               question.kind);
+    std::visit(
+        physics::Overloaded{
+            [&](const lessons::MeasuredQuestion& measured) {
+                writeMeasured(step, question, measured, tries);
+            },
+            [&](const lessons::ChoiceQuestion& choice) { writeChoice(question, choice, tries); },
+            [&](const auto& kind) { writeLines(question, worksheetLines(kind, m_kind), tries); }},
+        question.kind);
     m_pages.gap(6);
 }
 
@@ -315,6 +320,28 @@ void SheetWriter::writeChoice(const lessons::Question& question,
                      m_bold, indent);
     else if (m_kind == WorksheetKind::Answers)
         writeTries(question, tries, QString());
+}
+
+void SheetWriter::writeLines(const lessons::Question& question, const std::vector<SheetLine>& lines,
+                             const std::vector<lessons::AnswerTry>& tries)
+{
+    const int indent = 18;
+    for (const SheetLine& line : lines) {
+        switch (line.is) {
+        case SheetLine::Is::Text:
+            m_pages.text(line.text, m_pages.baseFont(), indent);
+            break;
+        case SheetLine::Is::Bold:
+            m_pages.text(line.text, m_bold, indent);
+            break;
+        case SheetLine::Is::WritingLine:
+            m_pages.writingLines(1, indent);
+            break;
+        case SheetLine::Is::Tries:
+            writeTries(question, tries, line.text);
+            break;
+        }
+    }
 }
 
 std::optional<double> SheetWriter::writeTries(const lessons::Question& question,

@@ -10,6 +10,8 @@
 // The window's Hand in writes the first (with the answers file beside it,
 // lessons/ANSWERS_FORMAT.md); `rigidlab-cli lesson LESSON --worksheet OUT.pdf` all three.
 
+#include "question_kinds/kind_ui.h"
+
 #include "format/answers_file.h"
 #include "format/lesson.h"
 
@@ -18,8 +20,6 @@
 #include <vector>
 
 namespace rigidlab::ui {
-
-enum class WorksheetKind { Answers, Empty, Key };
 
 struct WorksheetResult {
     bool ok = false;

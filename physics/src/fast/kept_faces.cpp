@@ -109,7 +109,7 @@ void satOnPlaced(int ia, const Polygon& pa, const Transform& xfA, int ib, const 
 void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                      const std::vector<std::pair<int, int>>& pairs, double margin,
                      const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                     NarrowPhaseCache& cache, std::vector<Contact>& contacts)
+                     double recycle, NarrowPhaseCache& cache, std::vector<Contact>& contacts)
 {
     PreviousPairs<Contact> before(previous);
     std::swap(cache.separated, cache.previousSeparated);
@@ -139,14 +139,24 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
         const Polygon* pa = a.shape.asPolygon();
         const Polygon* pb = b.shape.asPolygon();
         if (pa && pb) {
+            // The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it.
+            // Its faces are not kept: when it moves on, the pair gets the whole SAT.
+            const Contact* last =
+                recycle > 0.0 && pairMargin == margin ? before.find(ia, ib) : nullptr;
+            if (last && recycleManifold(*last, a, xfA, b, xfB, recycle, margin, c)) {
+                finishContact(a, b, before, c);
+                continue;
+            }
+            const TouchingPair* kept = cache.reuseFaces ? touchingBefore.find(ia, ib) : nullptr;
             // Two polygons. A pair that barely moved since the SAT chose its faces is clipped
             // from the same faces, placing only their points (FaceChoice).
             const RelativePlacement now(a, xfA, b, xfB);
-            const TouchingPair* kept = cache.reuseFaces ? touchingBefore.find(ia, ib) : nullptr;
             if (kept && facesStand(*kept, now, xfA, xfB, a, b, pairMargin)) {
                 if (clipKeptFaces(*kept, *pa, xfA, *pb, xfB, pairMargin, c.manifold)) {
                     cache.touching.push_back(*kept);
                     ++cache.reused;
+                    if (recycle > 0.0)
+                        keepAnchors(a, *pa, xfA, b, *pb, xfB, c);
                     finishContact(a, b, before, c);
                     continue;
                 }
@@ -154,6 +164,8 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
             }
             satOnPlaced(ia, *pa, xfA, ib, *pb, xfB, pairMargin, now, apartBefore.find(ia, ib),
                         cache, c.manifold);
+            if (recycle > 0.0 && c.manifold.pointCount > 0)
+                keepAnchors(a, *pa, xfA, b, *pb, xfB, c);
         } else {
             c.manifold = collideShapes(a.shape, xfA, b.shape, xfB, pairMargin);
         }

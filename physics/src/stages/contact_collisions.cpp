@@ -70,18 +70,26 @@ bool ContactSolver::bounceTarget(Constraint& c, int i, const Velocity& a, const 
     // at 0.99 of the step), and the bounce must not be left to the contacts for that (the
     // soft step's stopped it short of touching: an elastic gas lost 0.4 % in 5 s). Only for
     // the soft step (m_softPhase): the sequential solver keeps its bits (its golden runs).
+    // The soft step times it on its substeps' parabola (restitution.h), from the approach it
+    // has now less what the forces add over the step.
+    const double soft = m_softPhase ? substepImpactFraction(p.separation, vn - p.forcing, p.forcing,
+                                                            m_dt, m_substep)
+                                    : kNeverCloses;
     const bool closes =
-        (m_softPhase && p.timed) || closesWithinStep(p.separation, vn, m_dt, m_softPhase);
+        m_softPhase ? p.timed || soft <= 1.0 : closesWithinStep(p.separation, vn, m_dt);
     if (!closes || !(vn < -p.threshold))
         return false;
     if (p.separation > 0 && !p.timed) {
         // It closes only now, after other impulses of this step (a ball that bounced off a
         // wall into a neighbour): time it from the approach it has now.
-        p.impact = impactFraction(p.separation, vn, m_dt);
+        p.impact = m_softPhase ? soft : impactFraction(p.separation, vn, m_dt);
         placeAt(c, i, p.impact);
         vn = normalVelocity(c, i, a, b);
     }
-    target = bounceVelocity(vn, c.restitution, p.separation > 0 ? p.impact : 0.0, p.forcing);
+    // On the soft step's parabola the approach at f is that of f + h / (2 dt) on the line.
+    const double f = p.separation > 0 || m_softPhase ? p.impact : 0.0;
+    target =
+        bounceVelocity(vn, c.restitution, m_softPhase ? f + 0.5 * m_substep / m_dt : f, p.forcing);
     return target >= 0 && target > vn;
 }
 
@@ -142,11 +150,12 @@ int ContactSolver::solveCollisions(int sweeps)
     return made;
 }
 
-bool ContactSolver::solveCollisionPhase(double threshold, int sweeps,
+bool ContactSolver::solveCollisionPhase(double threshold, int sweeps, double substep,
                                         const std::vector<char>* exempt)
 {
     m_paperImpulse = false;
     m_softPhase = true;
+    m_substep = substep;
     m_exempt = exempt;
     prepare(threshold, m_settings->restitutionThreshold);
     for (Constraint& c : m_constraints)

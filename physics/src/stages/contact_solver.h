@@ -59,8 +59,10 @@ public:
     /// (prepare(): none where it separates, less last step's bounce) to normalImpulse and
     /// tangentImpulse, the other solver's warm start. Returns whether anything bounced;
     /// impactFractions() then tells when. exempt: per contact, non-zero for a contact solved
-    /// elsewhere (the soft step's isolated impacts), which does not bounce here.
-    bool solveCollisionPhase(double threshold, int sweeps,
+    /// elsewhere (the soft step's isolated impacts), which does not bounce here. substep: the
+    /// soft step's substep [s]; each bounce is timed on the parabola its substeps move the
+    /// bodies on (restitution.h, substepImpactFraction()).
+    bool solveCollisionPhase(double threshold, int sweeps, double substep,
                              const std::vector<char>* exempt = nullptr);
 
     /// Both solvers end by writing the velocities back to the bodies and the accumulated
@@ -216,6 +218,7 @@ private:
     /// bounces even if its arms at the impact slow its approach below closing, and a gap
     /// that closes exactly at the end of the step bounces too (bounceTarget()).
     bool m_softPhase = false;
+    double m_substep = 0; ///< the soft step's substep, in its collision phase [s]
     const std::vector<char>* m_exempt = nullptr;  ///< see solveCollisionPhase()
     const std::vector<char>* m_leftOut = nullptr; ///< see leaveOut()
     std::vector<unsigned> m_rotationStamp;

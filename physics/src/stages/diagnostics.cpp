@@ -3,6 +3,8 @@
 
 #include "diagnostics_compute.h"
 
+#include "rigidlab/physics/touching.h"
+
 #include <cmath>
 
 namespace rigidlab::physics {
@@ -60,9 +62,7 @@ void World::updateDiagnostics()
     int count = 0;
     for (const Contact& c : m_contacts)
         for (int i = 0; i < c.manifold.pointCount; ++i)
-            if (c.manifold.points[static_cast<size_t>(i)].separation <= 0 ||
-                c.normalImpulse[static_cast<size_t>(i)] > 0)
-                ++count;
+            count += touches(c, i) ? 1 : 0;
     m_diagnostics.contacts = count;
 }
 

@@ -47,10 +47,85 @@ void finishContact(const Body& a, const Body& b, PreviousPairs<Contact>& before,
         carryImpulses(*p, c);
 }
 
+namespace {
+
+/// The farthest vertex of p from the body's centre of mass (at localCenter) [m], from above.
+double extent(const Polygon& p, const Vec2& localCenter)
+{
+    double r = 0.0;
+    for (const Vec2& v : p.vertices)
+        r = std::max(r, (v - localCenter).norm());
+    return r;
+}
+
+/// The turn from `then` to `now` (now times then's inverse).
+Rotation turnSince(const Rotation& now, const Rotation& then)
+{
+    Rotation q;
+    q.c = now.c * then.c + now.s * then.s;
+    q.s = now.s * then.c - now.c * then.s;
+    return q;
+}
+
+} // namespace
+
+void keepAnchors(const Body& a, const Polygon& pa, const Transform& xfA, const Body& b,
+                 const Polygon& pb, const Transform& xfB, Contact& c)
+{
+    ContactAnchors& k = c.anchors;
+    k.valid = true;
+    k.centres = b.position - a.position;
+    k.qA = xfA.q;
+    k.qB = xfB.q;
+    k.extentA = extent(pa, a.localCenter);
+    k.extentB = extent(pb, b.localCenter);
+    for (int i = 0; i < c.manifold.pointCount; ++i) {
+        const ContactPoint& cp = c.manifold.points[static_cast<size_t>(i)];
+        k.anchorA[static_cast<size_t>(i)] = cp.point - a.position;
+        k.anchorB[static_cast<size_t>(i)] = cp.point - b.position;
+        k.separation[static_cast<size_t>(i)] = cp.separation;
+    }
+}
+
+bool recycleManifold(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
+                     const Transform& xfB, double recycle, double margin, Contact& c)
+{
+    // After Box2D v3.2 (physics_world.c, b2Collide's contact recycling): the points stay on
+    // the bodies, the normal stays, and each separation follows the anchors as the soft
+    // step's substeps follow them (soft_kernel.cpp). A vertex moves by at most the shift of the
+    // centres plus each body's turn times its extent, so the faces a full test would clip
+    // differ from the kept ones by no more than `recycle`.
+    const ContactAnchors& k = previous.anchors;
+    if (!k.valid || previous.manifold.pointCount == 0)
+        return false;
+    const Rotation dqA = turnSince(xfA.q, k.qA), dqB = turnSince(xfB.q, k.qB);
+    const Vec2 shift = (b.position - a.position) - k.centres;
+    // |sin| of each turn, from above by |s| + (1 - c) (a turn past 90 degrees fails anyway).
+    const double turns = std::abs(dqA.s) + (1.0 - dqA.c) + std::abs(dqB.s) + (1.0 - dqB.c);
+    if (!(shift.lpNorm<1>() + (k.extentA + k.extentB) * turns < recycle))
+        return false;
+    const Manifold& last = previous.manifold;
+    std::array<ContactPoint, 2> points = last.points;
+    for (int i = 0; i < last.pointCount; ++i) {
+        const auto p = static_cast<size_t>(i);
+        const Vec2 rA = dqA.apply(k.anchorA[p]), rB = dqB.apply(k.anchorB[p]);
+        const double s =
+            k.separation[p] + last.normal.dot(shift + (rB - k.anchorB[p]) - (rA - k.anchorA[p]));
+        if (s > margin)
+            return false; // let the full test say whether the point is still there
+        points[p].point = 0.5 * ((a.position + rA) + (b.position + rB));
+        points[p].separation = s;
+    }
+    c.manifold = last;
+    c.manifold.points = points;
+    c.anchors = k;
+    return true;
+}
+
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
                  const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                 std::vector<Contact>& contacts)
+                 double recycle, std::vector<Contact>& contacts)
 {
     PreviousPairs<Contact> before(previous);
     for (const auto& [ia, ib] : pairs) {
@@ -66,11 +141,20 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
         Contact c;
         c.a = ia;
         c.b = ib;
-        c.manifold = collideShapes(a.shape, xf[static_cast<size_t>(ia)], b.shape,
-                                   xf[static_cast<size_t>(ib)],
-                                   margin + sweptMargin(sweep, ia) + sweptMargin(sweep, ib));
-        if (c.manifold.pointCount == 0)
-            continue; // farther apart than the margin
+        const Transform& xfA = xf[static_cast<size_t>(ia)];
+        const Transform& xfB = xf[static_cast<size_t>(ib)];
+        const double pairMargin = margin + sweptMargin(sweep, ia) + sweptMargin(sweep, ib);
+        const Polygon* pa = a.shape.asPolygon();
+        const Polygon* pb = b.shape.asPolygon();
+        const bool polygons = recycle > 0.0 && pa && pb;
+        const Contact* last = polygons && pairMargin == margin ? before.find(ia, ib) : nullptr;
+        if (!(last && recycleManifold(*last, a, xfA, b, xfB, recycle, margin, c))) {
+            c.manifold = collideShapes(a.shape, xfA, b.shape, xfB, pairMargin);
+            if (c.manifold.pointCount == 0)
+                continue; // farther apart than the margin
+            if (polygons)
+                keepAnchors(a, *pa, xfA, b, *pb, xfB, c);
+        }
         finishContact(a, b, before, c);
         contacts.push_back(c);
     }
@@ -97,12 +181,17 @@ void findContacts(StepContext& ctx)
     ctx.profile.refitted = s.broadPhase.refitted();
 
     StageTimer narrow(ctx.profile, Stage::NarrowPhase);
+    // Only the soft step recycles manifolds: its substeps already carry each point on its
+    // bodies; the impulse solvers' position correction re-evaluates the manifold's faces.
+    const double recycle =
+        ctx.solver == SolverKind::SoftStep ? ctx.contactSettings.soft.recycleDistance : 0.0;
     if (ctx.plain) {
         s.narrow.clear();
-        narrowPhase(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, s.previous, ctx.contacts);
+        narrowPhase(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, s.previous, recycle,
+                    ctx.contacts);
     } else {
         s.narrow.reuseFaces = ctx.contactSettings.reuseFaces;
-        narrowPhaseFast(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, s.previous, s.narrow,
+        narrowPhaseFast(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, s.previous, recycle, s.narrow,
                         ctx.contacts);
     }
     ctx.profile.contacts = static_cast<int>(ctx.contacts.size());

@@ -88,22 +88,34 @@ inline double sweptMargin(const std::vector<double>& sweep, int body)
     return sweep.empty() ? 0.0 : sweep[static_cast<size_t>(body)];
 }
 
+/// The manifold of `previous` (last step's contact of the pair a, b) carried to where a and b
+/// are now, when it was kept (keepAnchors) and they moved less than `recycle` against each
+/// other since [m] (their centres' shift, plus their turns times their extents), and no
+/// point ends farther apart than margin: then into c, with its anchors, and true.
+bool recycleManifold(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
+                     const Transform& xfB, double recycle, double margin, Contact& c);
+/// Keeps c's manifold of the polygons pa and pb, just made by the full test, for recycling.
+void keepAnchors(const Body& a, const Polygon& pa, const Transform& xfA, const Body& b,
+                 const Polygon& pb, const Transform& xfB, Contact& c);
+
 /// The contacts of `pairs` (a < b, sorted), in their order: each pair's manifold
 /// (collideShapes, manifold.cpp) for shapes closer than margin plus both bodies' swept margins
 /// (`sweep`, per body [m], empty when no body is fast: continuous.cpp), with the pair's mixed
 /// material and the impulses that `previous` (last step's contacts, sorted) held for the same
 /// features. Two resting bodies (asleep, or asleep on a static one) keep last step's contact.
-/// `xf`: each body's placement now. The plain path (narrow_phase.cpp).
+/// `xf`: each body's placement now. recycle > 0 (the soft step): two polygons that barely
+/// moved, neither fast, keep last step's manifold (recycleManifold), and every other pair of
+/// polygons keeps its anchors for that. The plain path (narrow_phase.cpp).
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
                  const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                 std::vector<Contact>& contacts);
+                 double recycle, std::vector<Contact>& contacts);
 /// The same contacts as narrowPhase, bit for bit, keeping work in `cache` from step to step
 /// (fast/kept_faces.cpp; see NarrowPhaseCache).
 void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                      const std::vector<std::pair<int, int>>& pairs, double margin,
                      const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                     NarrowPhaseCache& cache, std::vector<Contact>& contacts);
+                     double recycle, NarrowPhaseCache& cache, std::vector<Contact>& contacts);
 
 /// The material of a contact from its two bodies': restitution the larger of the two (a ball
 /// bounces off a rubber floor as the floor makes it), friction the geometric mean (Box2D's

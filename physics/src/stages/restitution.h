@@ -26,6 +26,9 @@
 
 #include "rigidlab/physics/math.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace rigidlab::physics {
 
 /// Whether a point with the gap `separation` [m] at the start of the step touches within it
@@ -50,6 +53,34 @@ inline double impactFraction(double separation, double vn, double dt)
         return 1.0;
     const double f = separation / (-vn * dt);
     return f < 1.0 ? f : 1.0;
+}
+
+/// The soft step's substeps of h [s] move a body under constant forces on the parabola
+/// through their end points (soft_impacts.cpp, Flight): a gap closes along it as
+///     s(t) = s + (vn0 + F h / (2 dt)) t + (F / dt) t^2 / 2,
+/// vn0 the approach at the start [m/s] and F what the forces add to it over the step [m/s].
+/// The fraction of the step at which a gap of `separation` [m] closes so: 0 when touching
+/// already, more than 1 (kNeverCloses) when it does not close within the step. The
+/// approach at that moment is vn0 + F (f + h / (2 dt)): the bounce's fraction in
+/// bounceVelocity() is f + h / (2 dt).
+inline constexpr double kNeverCloses = 2.0;
+inline double substepImpactFraction(double separation, double vn0, double forcing, double dt,
+                                    double h)
+{
+    if (separation <= 0)
+        return 0.0;
+    const double pull = forcing / dt; // [m/s^2]
+    const double v = vn0 + 0.5 * h * pull;
+    const double d = v * v - 2.0 * pull * separation;
+    const double denominator = d >= 0 ? std::sqrt(d) - v : 0.0;
+    if (!(denominator > 0))
+        return kNeverCloses;
+    // t = 2 s / (sqrt(d) - v). A gap that closes at the end of the step, to a relative 1e-9,
+    // closes (the substeps bring it to touching, give or take round-off, and their last relax
+    // pass would stop it without a bounce).
+    constexpr double kEnd = 1.0 + 1e-9;
+    const double f = 2.0 * separation / (denominator * dt);
+    return f <= kEnd ? std::min(f, 1.0) : kNeverCloses;
 }
 
 /// The bounce itself: the normal velocity [m/s] that an approach vn [m/s] leaves with at the

@@ -8,15 +8,15 @@
 // line a little off the line of centres at the impact, and the balls leave at 89.9995°. Here
 // the moment of impact is found from the shapes themselves, and the impulse is taken there:
 //
-//     f         Newton's iteration on the gap s(f) of the bodies flown freely to the fraction
-//               f of the step (as the step moves them: x0 + f dt v, angle0 + f dt w, with the
-//               velocities the forces give at the end of the step), f += s / (-vn dt), until
-//               s is round-off. The gap of convex shapes approaching is convex in f, so each
-//               step lands short of the root, and the iteration closes in from below.
+//     f         the gap s(f) of the bodies flown freely to the fraction f of the step (the
+//               soft step's substeps: on the parabola through their end points, Flight; the
+//               other solvers, to where the integrator put them: on a straight line), closed
+//               from s by the root of s + vn t + an t^2 / 2 (vn the approach at f, an the
+//               forces' pull along the normal; Newton's step on a line), until s is round-off.
 //     impulse   the manifold at f: its normal, its touching points and lever arms from the
-//               centres at f. The velocities at f (the forces' share f dt a on those of the
-//               start) get the impulses that turn each approach vn into -e vn, with Coulomb
-//               friction, solved to convergence (one contact: a handful of passes).
+//               centres at f. The velocities at f (Flight::impactVelocity()) get the impulses
+//               that turn each approach vn into -e vn, with Coulomb friction, solved to
+//               convergence (one contact: a handful of passes).
 //
 // The impulse's velocity change is added to the end-of-step velocities (the forces act on
 // after the impact as before it), and soft_step.cpp moves each body as if it had flown on
@@ -36,26 +36,54 @@ namespace rigidlab::physics {
 
 namespace {
 
-/// A body's pose and velocities over the step, free flight (symplectic Euler: the position
-/// moves with the velocity at the end of the step).
+/// A body's pose and velocities over the step, free flight: by the soft step's substeps
+/// (Flown::ByForces) on the parabola through their end points, otherwise on a straight line.
+///
+/// Symplectic Euler with the substep h under a constant acceleration a puts the body after k
+/// substeps at x0 + k h v0 + a h^2 k (k + 1) / 2: exactly on the parabola
+///     x(t) = x0 + (v0 + a h / 2) t + a t^2 / 2,
+/// whose velocity x'(t) runs h / 2 ahead of the substeps' velocity. An impulse at t turns that
+/// parabola at t into another one, and the substeps then move the bodies on the turned one to
+/// round-off (soft_step.cpp takes the velocity change back over t). So the impact is timed on
+/// this parabola and the bounce turns its velocity x'(t): at e = 1 the parabola's apex stays
+/// where it was, the height a ball was dropped from plus |g| h^2 / 8.
 struct Flight {
     Vec2 x0 = Vec2::Zero();     ///< centre of mass at the start [m]
     double angle0 = 0;          ///< [rad]
-    Vec2 v = Vec2::Zero();      ///< at the end of the step, before contacts [m/s]
+    Vec2 v = Vec2::Zero();      ///< the path's velocity at the start [m/s]
     double w = 0;               ///< [rad/s]
     Vec2 vStart = Vec2::Zero(); ///< at the start of the step [m/s]
     double wStart = 0;          ///< [rad/s]
     Vec2 a = Vec2::Zero();      ///< applied load over mass [m/s^2]
     double alpha = 0;           ///< [rad/s^2]
     double invMass = 0, invInertia = 0;
+    bool curved = false; ///< on the substeps' parabola (see above), else on a straight line
 
-    Vec2 centre(double f, double dt) const { return x0 + (f * dt) * v; }
+    Vec2 centre(double f, double dt) const
+    {
+        const double t = f * dt;
+        return curved ? Vec2(x0 + t * v + (0.5 * t * t) * a) : Vec2(x0 + t * v);
+    }
     Transform transform(const Body& b, double f, double dt) const
     {
-        Transform t;
-        t.q = Rotation(angle0 + f * dt * w);
-        t.p = centre(f, dt) - t.q.apply(b.localCenter);
-        return t;
+        const double t = f * dt;
+        Transform xf;
+        xf.q = Rotation(angle0 + t * w + (curved ? 0.5 * t * t * alpha : 0.0));
+        xf.p = centre(f, dt) - xf.q.apply(b.localCenter);
+        return xf;
+    }
+    /// The velocity the path has at the fraction f [m/s], [rad/s].
+    Vec2 pathVelocity(double f, double dt) const { return curved ? Vec2(v + (f * dt) * a) : v; }
+    double pathSpin(double f, double dt) const { return curved ? w + f * dt * alpha : w; }
+    /// The velocity that meets the impact at f: the path's on the parabola; on a line, the
+    /// forces' share of the step so far on the velocity at the start.
+    Vec2 impactVelocity(double f, double dt) const
+    {
+        return curved ? pathVelocity(f, dt) : Vec2(vStart + (f * dt) * a);
+    }
+    double impactSpin(double f, double dt) const
+    {
+        return curved ? pathSpin(f, dt) : wStart + f * dt * alpha;
     }
 };
 
@@ -92,11 +120,12 @@ Flight flightOf(const StepContext& ctx, int id, Flown flown)
     fl.wStart = b.angularVelocity;
     fl.v = b.velocity;
     fl.w = b.angularVelocity;
+    fl.curved = true;
     if (b.isActive()) {
         fl.a = s.acceleration[i];
         fl.alpha = s.angularAcceleration[i];
-        fl.v += ctx.dt * fl.a;
-        fl.w += ctx.dt * fl.alpha;
+        fl.v += (0.5 * ctx.h) * fl.a;
+        fl.w += 0.5 * ctx.h * fl.alpha;
         fl.invMass = b.invMass;
         fl.invInertia = b.invInertia;
     }
@@ -134,6 +163,10 @@ bool timeOfImpact(const StepContext& ctx, const Contact& ct, const Flight& A, co
         start = std::min(start, ct.manifold.points[static_cast<size_t>(i)].separation);
     const double margin = std::max(ctx.contactSettings.margin, 2.0 * std::abs(start)) + 1e-3;
     constexpr double kTouching = 1e-12; // [m]
+    // On the parabola a step of the iteration may land past the root: there it steps back
+    // from an overlap deeper than this [m]. (On a straight line the gap of convex shapes
+    // approaching is convex in f, and each step lands short of the root.)
+    constexpr double kOvershot = 1e-10;
     constexpr int kIterations = 50;
     f = 0.0;
     for (int k = 0; k < kIterations; ++k) {
@@ -142,14 +175,22 @@ bool timeOfImpact(const StepContext& ctx, const Contact& ct, const Flight& A, co
         if (m.pointCount == 0)
             return false;
         const ContactPoint& cp = m.points[static_cast<size_t>(deepest(m))];
-        if (cp.separation <= kTouching)
+        const double s = cp.separation;
+        if (s <= kTouching && (k == 0 || !A.curved || s >= -kOvershot))
             return true; // touching (or overlapping already at the start, f = 0)
-        const double vn =
-            approach({A.v, A.w}, {B.v, B.w}, cp.point, A.centre(f, dt), B.centre(f, dt), m.normal);
-        if (!(vn < 0.0))
-            return false;
-        f += cp.separation / (-vn * dt);
-        if (!(f <= 1.0))
+        const double vn = approach({A.pathVelocity(f, dt), A.pathSpin(f, dt)},
+                                   {B.pathVelocity(f, dt), B.pathSpin(f, dt)}, cp.point,
+                                   A.centre(f, dt), B.centre(f, dt), m.normal);
+        // The gap's next root, the forces' pull along the normal taken as constant:
+        // s + vn t + an t^2 / 2 = 0, in the form that keeps its digits (t = 2 s / (-vn + root)).
+        // On a straight line (an = 0) and from below this is Newton's step.
+        const double an = A.curved ? (B.a - A.a).dot(m.normal) : 0.0;
+        const double d = vn * vn - 2.0 * an * s;
+        const double denominator = d >= 0.0 ? std::sqrt(d) - vn : 0.0;
+        if (!(denominator > 0.0))
+            return false; // the gap does not close
+        f += 2.0 * s / (denominator * dt);
+        if (!(f <= 1.0) || f < 0.0)
             return false;
     }
     return false;
@@ -216,10 +257,9 @@ bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, Flown
         return false;
     const double dt = ctx.dt;
     const Vec2 cA = A.centre(f, dt), cB = B.centre(f, dt);
-    // The velocities at the impact: the forces' share of the step so far on those at the start.
-    const double fdt = f * dt;
-    Velocity va{A.vStart + fdt * A.a, A.wStart + fdt * A.alpha};
-    Velocity vb{B.vStart + fdt * B.a, B.wStart + fdt * B.alpha};
+    // The velocities at the impact (Flight::impactVelocity()).
+    Velocity va{A.impactVelocity(f, dt), A.impactSpin(f, dt)};
+    Velocity vb{B.impactVelocity(f, dt), B.impactSpin(f, dt)};
     if (A.invMass == 0.0) // a kinematic or static body keeps its velocity
         va = {A.v, A.w};
     if (B.invMass == 0.0)

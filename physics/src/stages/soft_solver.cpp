@@ -24,6 +24,7 @@
 #include "soft_solver.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <numbers>
@@ -104,8 +105,11 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     m_angularDrift.clear();
     m_pins.clear();
     m_invInertia.resize(n);
+    m_turns.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const Body& b = bodies[i];
+        const Circle* circle = b.shape.asCircle();
+        m_turns[i] = !circle || circle->center != b.localCenter;
         soft::BodyState& s = m_state[i];
         s.vx = b.velocity.x();
         s.vy = b.velocity.y();
@@ -126,6 +130,7 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     }
     if (m_single) {
         m_singleState.resize(n + 1);
+        m_singleBase.resize(n + 1);
         for (size_t i = 0; i <= n; ++i) {
             const soft::BodyState& d = m_state[i];
             m_singleState[i] = {static_cast<float>(d.vx),
@@ -218,10 +223,55 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
 
 void SoftSolver::integrateVelocities()
 {
+    integrateVelocitiesOf(m_state);
     if (m_single)
-        integrateVelocitiesOf(m_singleState);
-    else
-        integrateVelocitiesOf(m_state);
+        toSingle(false);
+}
+
+void SoftSolver::toSingle(bool motion)
+{
+    auto copy = [&](int id) {
+        const auto i = static_cast<size_t>(id);
+        const soft::BodyState& d = m_state[i];
+        soft::SingleBodyState& f = m_singleState[i];
+        f.vx = static_cast<float>(d.vx);
+        f.vy = static_cast<float>(d.vy);
+        f.w = static_cast<float>(d.w);
+        m_singleBase[i] = {f.vx, f.vy, f.w};
+        if (motion) {
+            f.dpx = static_cast<float>(d.dpx);
+            f.dpy = static_cast<float>(d.dpy);
+            f.qc = static_cast<float>(d.qc);
+            f.qs = static_cast<float>(d.qs);
+        }
+    };
+    for (int id : m_moving)
+        copy(id);
+    if (motion)
+        for (int id : m_kinematic)
+            copy(id);
+}
+
+void SoftSolver::fromSingle()
+{
+    // Only the passes' change goes back, not the rounded velocity: a body whose contacts
+    // pushed nothing (two balls parting after their exact impact) keeps every bit of its
+    // velocity, as in double precision. (The change is taken against the velocities as
+    // toSingle() wrote them, kept in m_singleBase: written as f - float(d), GCC 12 at -O2
+    // turned the vectorised float(d) into d, and the rounding came back.)
+    for (int id : m_moving) {
+        const auto i = static_cast<size_t>(id);
+        soft::BodyState& d = m_state[i];
+        soft::SingleBodyState& f = m_singleState[i];
+        std::array<float, 3>& base = m_singleBase[i];
+        d.vx += static_cast<double>(f.vx) - static_cast<double>(base[0]);
+        d.vy += static_cast<double>(f.vy) - static_cast<double>(base[1]);
+        d.w += static_cast<double>(f.w) - static_cast<double>(base[2]);
+        f.vx = static_cast<float>(d.vx);
+        f.vy = static_cast<float>(d.vy);
+        f.w = static_cast<float>(d.w);
+        base = {f.vx, f.vy, f.w};
+    }
 }
 
 template <typename State> void SoftSolver::integrateVelocitiesOf(std::vector<State>& state)
@@ -232,17 +282,23 @@ template <typename State> void SoftSolver::integrateVelocitiesOf(std::vector<Sta
     double e = 0.0, p = 0.0;
     for (size_t k = 0; k < m_moving.size(); ++k) {
         State& s = state[static_cast<size_t>(m_moving[k])];
-        const Vec2& a = m_acceleration[k];
-        const double alpha = m_angularAcceleration[k];
-        s.vx += h * a.x();
-        s.vy += h * a.y();
-        s.w += h * alpha;
-        e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
-        p += m_mass[k] * (a.x() * s.vx + a.y() * s.vy) + m_inertia[k] * alpha * s.w;
+        s.vx += h * m_acceleration[k].x();
+        s.vy += h * m_acceleration[k].y();
+        s.w += h * m_angularAcceleration[k];
+        addEnergy(k, s, e, p);
     }
     m_energy = 0.5 * e;
     m_power = p;
     m_energyValid = true;
+}
+
+template <typename State>
+void SoftSolver::addEnergy(size_t k, const State& s, double& energy, double& power) const
+{
+    // Twice the kinetic energy, and the loads' power, of moving body k.
+    energy += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
+    power += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
+             m_inertia[k] * m_angularAcceleration[k] * s.w;
 }
 
 void SoftSolver::setDrift(const std::vector<Vec2>& drift, const std::vector<double>& angularDrift)
@@ -273,10 +329,11 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
     m_pass.inverseSubstep = lookAhead ? m_substeps.invH : kNoLookAhead;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
-    if (m_single)
+    if (m_single) {
         m_singleKernel.solve(m_singleBlocks.data(), static_cast<int>(m_singleBlocks.size()),
                              m_singleState.data(), m_pass);
-    else
+        fromSingle();
+    } else
         m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
     if (!m_pins.empty())
         solvePins(useBias);
@@ -284,10 +341,9 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
 
 void SoftSolver::integratePositions()
 {
+    integratePositionsOf(m_state);
     if (m_single)
-        integratePositionsOf(m_singleState);
-    else
-        integratePositionsOf(m_state);
+        toSingle(true);
 }
 
 template <typename State> void SoftSolver::integratePositionsOf(std::vector<State>& state)
@@ -307,6 +363,12 @@ template <typename State> void SoftSolver::integratePositionsOf(std::vector<Stat
         m_angle[i] += da;
         s.dpx += dx;
         s.dpy += dy;
+        // A circle about its centre of mass touches where the normal meets it, however it
+        // turns: its lever arm stays. Turned with a rolling disc, the arm lifted its touching
+        // point by r (1 - cos) of the turn, a gap that was not there, and the disc rode up to
+        // 2 mm low into the ground at dt = 1/60 s.
+        if (!m_turns[i])
+            return;
         // The rotation since the step began, turned by da to first order and normalised: it
         // only places the lever arms for the separation, so a sine and cosine are not needed.
         const double c = s.qc - da * s.qs, sn = s.qs + da * s.qc;
@@ -314,29 +376,28 @@ template <typename State> void SoftSolver::integratePositionsOf(std::vector<Stat
         s.qc = c * inv;
         s.qs = sn * inv;
     };
-    for (int id : m_moving)
-        move(id);
+    double power = 0.0; // movePower(), in the same pass
+    for (size_t k = 0; k < m_moving.size(); ++k) {
+        const State& s = state[static_cast<size_t>(m_moving[k])];
+        move(m_moving[k]);
+        power += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
+                 m_inertia[k] * m_angularAcceleration[k] * s.w;
+    }
+    m_movePower = power;
     for (int id : m_kinematic)
         move(id);
 }
 
 void SoftSolver::sumEnergy() const
 {
-    if (m_single)
-        sumEnergyOf(m_singleState);
-    else
-        sumEnergyOf(m_state);
+    sumEnergyOf(m_state);
 }
 
 template <typename State> void SoftSolver::sumEnergyOf(const std::vector<State>& state) const
 {
     double e = 0.0, p = 0.0;
-    for (size_t k = 0; k < m_moving.size(); ++k) {
-        const State& s = state[static_cast<size_t>(m_moving[k])];
-        e += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
-        p += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
-             m_inertia[k] * m_angularAcceleration[k] * s.w;
-    }
+    for (size_t k = 0; k < m_moving.size(); ++k)
+        addEnergy(k, state[static_cast<size_t>(m_moving[k])], e, p);
     m_energy = 0.5 * e;
     m_power = p;
     m_energyValid = true;
@@ -359,7 +420,7 @@ double SoftSolver::loadPower() const
 void SoftSolver::end(std::vector<Body>& bodies)
 {
     if (m_single)
-        endOf(bodies, m_singleState, m_singleBlocks);
+        endOf(bodies, m_state, m_singleBlocks);
     else
         endOf(bodies, m_state, m_blocks);
 }

@@ -11,6 +11,7 @@
 
 #include "soft_kernel.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -68,6 +69,9 @@ public:
     double kineticEnergy() const;
     /// Power of the applied loads at the present velocities, sum m a.v + I alpha w [W].
     double loadPower() const;
+    /// Power of the applied loads at the velocities the last integratePositions() moved the
+    /// bodies with [W]: the load's work over that substep is h times it.
+    double movePower() const { return m_movePower; }
 
     int constraintCount() const { return static_cast<int>(m_slots.size()); }
 
@@ -106,6 +110,10 @@ private:
     template <typename State> void integrateVelocitiesOf(std::vector<State>& state);
     template <typename State> void integratePositionsOf(std::vector<State>& state);
     template <typename State> void sumEnergyOf(const std::vector<State>& state) const;
+    /// Adds twice moving body k's kinetic energy to energy, its loads' power to power (the one
+    /// formula of integrateVelocitiesOf() and sumEnergyOf()).
+    template <typename State>
+    void addEnergy(size_t k, const State& s, double& energy, double& power) const;
     template <typename State, typename BlockType>
     void endOf(std::vector<Body>& bodies, const std::vector<State>& state,
                const std::vector<BlockType>& blocks);
@@ -128,12 +136,20 @@ private:
     void solvePins(bool useBias);
     void warmStartPins();
 
+    /// Single precision: the velocities are the double state's (m_state), and the float copy
+    /// (m_singleState) is what the kernel's passes change. toSingle: each moving body's
+    /// velocity to the copy (motion: the displacements and rotations too, and the kinematic
+    /// bodies'); fromSingle: the change the passes made, back to the double velocities.
+    void toSingle(bool motion);
+    void fromSingle();
+
     /// Both sums of kineticEnergy() and loadPower() in one pass over the bodies, kept until
     /// the velocities change (each pass of the substep asks for both, some twice).
     void sumEnergy() const;
 
     /// The sums of sumEnergy() for the present velocities, valid while m_energyValid.
     mutable double m_energy = 0, m_power = 0;
+    double m_movePower = 0; ///< see movePower() [W]
     mutable bool m_energyValid = false;
 
     std::vector<Contact>* m_contacts = nullptr;
@@ -147,7 +163,8 @@ private:
     soft::PassSettings m_pass;
 
     std::vector<soft::BodyState> m_state;             ///< per body, and a spare one for empty lanes
-    std::vector<soft::SingleBodyState> m_singleState; ///< the same, when m_single
+    std::vector<soft::SingleBodyState> m_singleState; ///< the kernel's float copy, when m_single
+    std::vector<std::array<float, 3>> m_singleBase;   ///< its velocities as toSingle() wrote them
     std::vector<int> m_moving;                        ///< awake dynamic bodies
     std::vector<int> m_kinematic;                     ///< kinematic bodies
     std::vector<Vec2> m_position;                     ///< centre of mass [m], per body
@@ -160,6 +177,9 @@ private:
     std::vector<double> m_angularDrift; ///< per body
     std::vector<Pin> m_pins;
     std::vector<double> m_invInertia; ///< per body, 0 for a body the step does not move
+    /// Per body: whether its contacts' lever arms turn with it (integratePositions()); not for
+    /// a circle about its centre of mass, whose touching point stays where the normal meets it.
+    std::vector<char> m_turns;
 
     std::vector<soft::Block> m_blocks;
     std::vector<soft::SingleBlock> m_singleBlocks; ///< instead of m_blocks when m_single

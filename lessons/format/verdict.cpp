@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "format/verdict.h"
+
+#include <QChar>
+#include <QLocale>
+#include <QRegularExpression>
+
+#include <algorithm>
+#include <cmath>
+
+namespace rigidlab::lessons {
+
+QString keepUnitsTogether(QString text)
+{
+    // A line may break after a slash between letters ("m/" | "s"); a word joiner after each
+    // slash that follows a number's unit ("3 m/s", "2 rad/s") forbids it. The no-break
+    // space between the number and its unit is the text's own.
+    static const QRegularExpression unitSlash(QStringLiteral("(\\d\\x{00A0}[^\\s/]+)/(?=\\S)"));
+    text.replace(unitSlash, QStringLiteral("\\1/") + QChar(0x2060));
+    return text;
+}
+
+QString formatAnswer(double value, double relativeTolerance, const QString& unit)
+{
+    int digits = 3;
+    if (relativeTolerance > 0) {
+        digits = std::clamp(static_cast<int>(std::ceil(-std::log10(relativeTolerance))) + 1, 3, 8);
+    }
+    if (std::abs(value) < 1e-12) {
+        value = 0;
+    }
+    // On screen, so in the window's locale: "0,41" in Czech (the answer box reads both).
+    QLocale locale;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    QString text = locale.toString(value, 'g', digits);
+    if (text.contains(locale.exponential(), Qt::CaseInsensitive)) {
+        // 1e-05 reads badly; fixed notation with the same digits
+        const int decimals = std::clamp(
+            digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 12);
+        text = locale.toString(value, 'f', std::abs(value) < 1 ? decimals : 0);
+    }
+    // A no-break space: the unit stays on the number's line.
+    return unit.isEmpty() ? text : text + QChar(0x00A0) + unit;
+}
+
+} // namespace rigidlab::lessons
