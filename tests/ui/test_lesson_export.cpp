@@ -22,6 +22,7 @@
 
 #include "cli_run.h"
 #include "near.h"
+#include "step_walk.h"
 #include "test_files.h"
 #include "test_main.h"
 
@@ -342,10 +343,12 @@ void TestLessonExport::cliExportsEveryLesson_data()
     const QStringList files =
         QDir(kLessonsDir).entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name);
     QVERIFY(files.size() >= 10);
-    for (const QString& file : files)
-        for (const QString& language : {QStringLiteral("en"), QStringLiteral("cs")})
-            QTest::newRow(qPrintable(file + u' ' + language))
-                << QDir(kLessonsDir).filePath(file) << language;
+    const QStringList languages{QStringLiteral("en"), QStringLiteral("cs")};
+    for (int i = 0; i < files.size(); ++i)
+        for (int l = 0; l < languages.size(); ++l)
+            if (test::walksLanguage(i, l, static_cast<int>(languages.size())))
+                QTest::newRow(qPrintable(files[i] + u' ' + languages[l]))
+                    << QDir(kLessonsDir).filePath(files[i]) << languages[l];
 }
 
 void TestLessonExport::cliExportsEveryLesson()

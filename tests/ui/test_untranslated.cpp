@@ -4,7 +4,8 @@
 // every text a student can see or open is collected (widgets' texts, tooltips, every menu's
 // actions, tabs, tables, text browsers, plots' titles, axes, legends, marks) and paired by
 // where it is (the path of object names from the window, and the property), the same in both
-// languages because both windows are built by the same code in the same order.
+// languages because both windows are built by the same code in the same order. What counts as
+// a text left in the other language is text_scan.h's (checked by test_text_scan).
 
 #include "common/language.h"
 #include "lesson_player/lesson_player.h"
@@ -12,6 +13,7 @@
 
 #include "shipped_lessons.h"
 #include "test_main.h"
+#include "text_scan.h"
 
 #include <qcustomplot.h>
 
@@ -32,12 +34,10 @@
 #include <QMap>
 #include <QMenu>
 #include <QPlainTextEdit>
-#include <QRegularExpression>
 #include <QSet>
 #include <QSettings>
 #include <QTabBar>
 #include <QTableWidget>
-#include <QTextDocumentFragment>
 #include <QTextEdit>
 #include <QTimer>
 #include <QtTest>
@@ -46,6 +46,10 @@
 #include <memory>
 
 using namespace rigidlab;
+using rigidlab::test::hasCzechLetter;
+using rigidlab::test::invariant;
+using rigidlab::test::pieces;
+using rigidlab::test::withoutMnemonics;
 using rigidlab::ui::MainWindow;
 
 namespace {
@@ -54,36 +58,6 @@ namespace {
 /// off, the untranslated texts would only be listed with QWARN). The English check is always
 /// on.
 constexpr bool kRequireCompleteCzech = true;
-
-/// Texts that are the same in Czech and in English, compared whole (after '&' mnemonics are
-/// removed). Only proper names and symbols belong here; a method's name inside a longer
-/// sentence needs no entry, because that sentence is translated around it.
-const QSet<QString>& invariantTexts()
-{
-    static const QSet<QString> texts{
-        QStringLiteral("RigidLab"),      // the program's name
-        QStringLiteral("SAT"),           // the separating axis theorem's usual abbreviation
-        QStringLiteral("Runge–Kutta"),   // people's names: integrators
-        QStringLiteral("Runge–Kutta 4"), // the method's name with its order, in both languages
-        QStringLiteral("Verlet"),        QStringLiteral("Euler"), QStringLiteral("Newton"),
-        QStringLiteral("Box2D"),         QStringLiteral("Qt"),    QStringLiteral("Eigen"),
-        QStringLiteral("QCustomPlot"),
-        QStringLiteral("PNG"), // file formats
-        QStringLiteral("PDF"),           QStringLiteral("SVG"),   QStringLiteral("CSV"),
-    };
-    return texts;
-}
-
-/// Words of three letters or more that are the same in both languages wherever they stand.
-const QStringList& sameWords()
-{
-    static const QStringList words{
-        QStringLiteral("rad"),      // the unit radian
-        QStringLiteral("drift"),    // a Czech word too: the translation says "energetický drift"
-        QStringLiteral("interval"), // a Czech word too (the SAT table's projections)
-    };
-    return words;
-}
 
 /// Objects whose texts are the same in every language, by object name: each language's entry
 /// in View › Language is in its own name, and Open recent lists file names.
@@ -94,62 +68,8 @@ const QSet<QString>& invariantObjects()
     return names;
 }
 
-/// The letters Czech has and English does not.
-const QString& czechLetters()
-{
-    static const QString letters = QStringLiteral("ěščřžýůťďňĚŠČŘŽÝŮŤĎŇ");
-    return letters;
-}
-
 /// Texts at one place of the window (a scene or a lesson step): key -> the pieces there.
 using Texts = QMap<QString, QStringList>;
-
-/// A text without its mnemonic ampersands ("&&" is a literal one).
-QString withoutMnemonics(QString text)
-{
-    text.replace(QStringLiteral("&&"), QStringLiteral("\x01"));
-    text.remove(u'&');
-    text.replace(u'\x01', u'&');
-    return text;
-}
-
-/// A text's sentences or lines, rich text made plain: texts that are paragraphs are compared
-/// sentence by sentence, so one untranslated sentence is found inside a translated paragraph.
-QStringList pieces(const QString& text)
-{
-    QString plain = Qt::mightBeRichText(text) ? QTextDocumentFragment::fromHtml(text).toPlainText()
-                                              : withoutMnemonics(text);
-    plain.replace(QChar::ParagraphSeparator, u'\n');
-    plain.replace(QChar::LineSeparator, u'\n');
-    plain.replace(QChar::Nbsp, u' ');
-    // Sentences end before a capital ("4. řádu" is one); a title joined to the program's name by
-    // a dash, or titles joined by a dot, are split too, so that an untranslated scene title is
-    // found inside a translated "%1 — RigidLab".
-    static const QRegularExpression sentenceEnd(
-        QStringLiteral("(?<=[.!?;])\\s+(?=\\P{Ll})|\\s+[–—·]\\s+|\\n"));
-    QStringList out;
-    for (const QString& piece : plain.split(sentenceEnd, Qt::SkipEmptyParts))
-        if (const QString trimmed = piece.trimmed(); !trimmed.isEmpty())
-            out << trimmed;
-    return out;
-}
-
-/// Whether a text reads the same in every language: no word of three letters or more (numbers,
-/// symbols, units such as "m/s" or "J"), a key ("Ctrl+Z"), or a name of invariantTexts().
-bool invariant(const QString& piece)
-{
-    if (invariantTexts().contains(piece))
-        return true;
-    static const QRegularExpression keys(QStringLiteral("^(Ctrl|Shift|Alt|Meta)(\\+\\S+)+$"));
-    if (keys.match(piece).hasMatch())
-        return true;
-    static const QRegularExpression word(QStringLiteral("\\p{L}{3,}"));
-    auto it = word.globalMatch(piece);
-    while (it.hasNext())
-        if (!sameWords().contains(it.next().captured(), Qt::CaseInsensitive)) // "Drift" too
-            return false;
-    return true;
-}
 
 /// The collected texts of one window at one place.
 class Collector {
@@ -430,12 +350,6 @@ QList<std::pair<QString, Texts>> textsOfWindow(const QString& language)
     return out;
 }
 
-bool hasCzechLetter(const QString& text)
-{
-    return std::any_of(text.cbegin(), text.cend(),
-                       [](QChar ch) { return czechLetters().contains(ch); });
-}
-
 /// How many texts of these places have a Czech letter (the English check's check).
 qsizetype czechPieces(const QList<std::pair<QString, Texts>>& places)
 {
@@ -551,43 +465,6 @@ private slots:
             qPrintable(
                 QStringLiteral("%1 texts of the English window are Czech:\n").arg(found.size()) +
                 capped(found, 100)));
-    }
-
-    // The check itself: what counts as the same in both languages.
-    void invariantCheck_data()
-    {
-        QTest::addColumn<QString>("text");
-        QTest::addColumn<bool>("same");
-        QTest::newRow("number") << QStringLiteral("0.25") << true;
-        QTest::newRow("unit") << QStringLiteral("kg·m/s") << true;
-        QTest::newRow("radians") << QStringLiteral("ω [rad/s]") << true;
-        QTest::newRow("drift") << QStringLiteral("drift [%]") << true;
-        QTest::newRow("symbol") << QStringLiteral("E_k [J]") << true;
-        QTest::newRow("name") << QStringLiteral("RigidLab") << true;
-        QTest::newRow("word") << QStringLiteral("Energy") << false;
-        QTest::newRow("word with unit") << QStringLiteral("time [s]") << false;
-        QTest::newRow("name in a sentence") << QStringLiteral("Euler drifts") << false;
-    }
-    void invariantCheck()
-    {
-        QFETCH(QString, text);
-        QFETCH(bool, same);
-        QCOMPARE(invariant(text), same);
-    }
-
-    void piecesAreSentences()
-    {
-        QCOMPARE(pieces(QStringLiteral("&Open scene...")),
-                 QStringList{QStringLiteral("Open scene...")});
-        QCOMPARE(
-            pieces(QStringLiteral("<p>One. Two?</p><p>Three</p>")),
-            (QStringList{QStringLiteral("One."), QStringLiteral("Two?"), QStringLiteral("Three")}));
-        QCOMPARE(pieces(QStringLiteral("Runge–Kutta 4. řádu")),
-                 QStringList{QStringLiteral("Runge–Kutta 4. řádu")});
-        QCOMPARE(pieces(QStringLiteral("A puck — RigidLab")),
-                 (QStringList{QStringLiteral("A puck"), QStringLiteral("RigidLab")}));
-        QCOMPARE(pieces(QStringLiteral("a\nb")),
-                 (QStringList{QStringLiteral("a"), QStringLiteral("b")}));
     }
 
 private:
