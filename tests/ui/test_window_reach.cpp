@@ -14,6 +14,7 @@
 #include <QMessageBox>
 
 using namespace rigidlab;
+using rigidlab::test::atLeast;
 using rigidlab::test::visitShippedSteps;
 using rigidlab::ui::MainWindow;
 using namespace rigidlab::test::classroom;
@@ -201,7 +202,7 @@ private slots:
             ++steps;
         });
         if (walked)
-            QVERIFY(steps >= 20);
+            QVERIFY2(steps >= atLeast(20, 18), qPrintable(QString::number(steps)));
     }
 
     // Every panel a step names (controls, tables) is in sight, not behind a plot's tab, and
@@ -230,7 +231,7 @@ private slots:
                 QVERIFY2(w.view().width() >= w.width() / 2, qPrintable(where));
             });
         if (walked)
-            QVERIFY(panels >= 20);
+            QVERIFY2(panels >= atLeast(20, 16), qPrintable(QString::number(panels)));
     }
 
     // Ticked in View, a panel shows in the plain lab and in a lesson step, whole.
