@@ -158,12 +158,12 @@ void TestNumberGiven::playedInCzech()
 void TestNumberGiven::worksheetLines()
 {
     const lessons::NumberGivenQuestion q{0.8, 0.05, QStringLiteral("kg m/s")};
-    QCOMPARE(linesOf(ui::worksheetLines(q, ui::WorksheetKind::Empty)),
+    QCOMPARE(linesOf(ui::worksheetLines(q, {ui::WorksheetKind::Empty})),
              (QStringList{QStringLiteral("Your answer (kg m/s):"), QStringLiteral("~")}));
-    QCOMPARE(linesOf(ui::worksheetLines(q, ui::WorksheetKind::Key)),
+    QCOMPARE(linesOf(ui::worksheetLines(q, {ui::WorksheetKind::Key})),
              QStringList{QStringLiteral("Right answer: 0.8\u00a0kg m/s (accepted from "
                                         "0.75\u00a0kg m/s to 0.85\u00a0kg m/s)")});
-    QCOMPARE(linesOf(ui::worksheetLines(q, ui::WorksheetKind::Answers)),
+    QCOMPARE(linesOf(ui::worksheetLines(q, {ui::WorksheetKind::Answers})),
              (QStringList{QStringLiteral("TRIES kg m/s"),
                           QStringLiteral("Right answer: 0.8\u00a0kg m/s")}));
     // The key as a PDF, through the worksheet's writer.
