@@ -12,8 +12,8 @@
 //   editorPage(std::type_identity<K>, parent)    its fields in the lesson editor (a KindPage)
 //   answerLine(const K&, step, question)         the editor's line under it: its right answer
 //
-// The player, the worksheet and the editor visit a question's kind once and call these: they
-// draw no kind themselves, so a kind missing one of them does not compile.
+// The worksheet and the lesson editor visit a question's kind once and call these, drawing no
+// kind themselves: a kind missing one of them does not compile there.
 
 #include "common/number_format.h"
 
@@ -67,11 +67,12 @@ AnswerRow typedNumberRow(QLabel* prompt, QVBoxLayout* layout, const QString& uni
                          const QString& showTip);
 
 /// A question as the worksheet writes it: the sheet, and what a kind's lines may read besides
-/// the question's own kind (the measured kind's key runs its step).
+/// the question's own kind (the measured kind's key runs its step). The worksheet gives all of
+/// it; a test of a kind that reads only `sheet` may give only that.
 struct SheetQuestion {
     WorksheetKind sheet = WorksheetKind::Empty;
     const lessons::LessonStep* step = nullptr;   ///< the step it is asked in, as it ran
-    const lessons::Question* question = nullptr; ///< the question itself
+    const lessons::Question* question = nullptr; ///< the question whole (its prompt, its kind)
     std::span<const lessons::AnswerTry> tries;   ///< the student's tries at it, in order
     std::span<const lessons::Verdict> verdicts;  ///< the tries judged again, one per try
 };
