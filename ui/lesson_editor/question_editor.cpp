@@ -49,6 +49,27 @@ bool kindSets(std::size_t kind)
     return lessons::schema::questionKindKeys(kind).contains(jsonKey(keys::kSet));
 }
 
+/// The labels of `form`'s rows and of the forms of its kinds' `pages` (each a row of its own)
+/// as wide as the widest, so that a page's fields line up with the form's.
+void alignLabels(QFormLayout* form, const std::vector<KindPage*>& pages)
+{
+    std::vector<QFormLayout*> forms{form};
+    for (KindPage* page : pages)
+        if (auto* pageForm = qobject_cast<QFormLayout*>(page->layout()))
+            forms.push_back(pageForm);
+    std::vector<QWidget*> labels;
+    int widest = 0;
+    for (QFormLayout* f : forms)
+        for (int row = 0; row < f->rowCount(); ++row)
+            if (QLayoutItem* item = f->itemAt(row, QFormLayout::LabelRole);
+                item && item->widget()) {
+                labels.push_back(item->widget());
+                widest = std::max(widest, item->widget()->sizeHint().width());
+            }
+    for (QWidget* label : labels)
+        label->setMinimumWidth(widest);
+}
+
 } // namespace
 
 QuestionEditor::QuestionEditor(LessonDraft& draft, QWidget* parent)
@@ -113,6 +134,7 @@ QFormLayout* QuestionEditor::buildForm()
     form->addRow(m_holdRun);
     connect(m_holdRun, &QCheckBox::toggled, this, &QuestionEditor::edited);
     connect(m_set, &QuestionSetEditor::edited, this, &QuestionEditor::edited);
+    alignLabels(form, m_pages);
     return form;
 }
 
