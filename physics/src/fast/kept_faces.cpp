@@ -104,6 +104,25 @@ void satOnPlaced(int ia, const Polygon& pa, const Transform& xfA, int ib, const 
                                   .radiusB = radius(pb)});
 }
 
+/// c, a copy of last step's contact of the pair, made what recycleManifold and
+/// finishContact make of a new contact: the points carried to `points` (recycledPoints), the
+/// mixed material, no bounce, and the impulses carryImpulses would give. Those are the copy's
+/// own: a point takes the impulses of last step's point with its id, which is itself, or the
+/// later of two with one id; a point the manifold lacks has none.
+void finishRecycled(const Body& a, const Body& b, const std::array<ContactPoint, 2>& points,
+                    Contact& c)
+{
+    c.manifold.points = points;
+    mixMaterials(a, b, c);
+    c.bounceImpulse = {0.0, 0.0};
+    if (c.manifold.pointCount == 2 && points[0].id == points[1].id) {
+        c.normalImpulse[0] = c.normalImpulse[1];
+        c.tangentImpulse[0] = c.tangentImpulse[1];
+    }
+    for (auto i = static_cast<size_t>(c.manifold.pointCount); i < 2; ++i)
+        c.normalImpulse[i] = c.tangentImpulse[i] = 0.0;
+}
+
 } // namespace
 
 void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
@@ -129,24 +148,27 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
                 continue;
             }
         }
-        // Built in place; taken back when the shapes are too far apart.
-        Contact& c = contacts.emplace_back();
-        c.a = ia;
-        c.b = ib;
         const double pairMargin = margin + sweptMargin(sweep, ia) + sweptMargin(sweep, ib);
         const Transform& xfA = xf[static_cast<size_t>(ia)];
         const Transform& xfB = xf[static_cast<size_t>(ib)];
         const Polygon* pa = a.shape.asPolygon();
         const Polygon* pb = b.shape.asPolygon();
-        if (pa && pb) {
-            // The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it.
-            // Its faces are not kept: when it moves on, the pair gets the whole SAT.
-            const Contact* last =
-                recycle > 0.0 && pairMargin == margin ? before.find(ia, ib) : nullptr;
-            if (last && recycleManifold(*last, a, xfA, b, xfB, recycle, margin, c)) {
-                finishContact(a, b, before, c);
+        if (pa && pb && recycle > 0.0 && pairMargin == margin) {
+            // The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it,
+            // from a copy of last step's contact. Its faces are not kept: when it moves on, the
+            // pair gets the whole SAT.
+            const Contact* last = before.find(ia, ib);
+            std::array<ContactPoint, 2> points;
+            if (last && recycledPoints(*last, a, xfA, b, xfB, recycle, margin, points)) {
+                finishRecycled(a, b, points, contacts.emplace_back(*last));
                 continue;
             }
+        }
+        // Built in place; taken back when the shapes are too far apart.
+        Contact& c = contacts.emplace_back();
+        c.a = ia;
+        c.b = ib;
+        if (pa && pb) {
             const TouchingPair* kept = cache.reuseFaces ? touchingBefore.find(ia, ib) : nullptr;
             // Two polygons. A pair that barely moved since the SAT chose its faces is clipped
             // from the same faces, placing only their points (FaceChoice).

@@ -11,10 +11,10 @@
 
 namespace rigidlab::physics {
 
-SoftSolver::ColourKey SoftSolver::colourKey(const Contact& ct, const std::vector<Body>& bodies)
+SoftSolver::ColourKey SoftSolver::colourKey(const Contact& ct) const
 {
-    return {ct.a, ct.b, bodies[static_cast<size_t>(ct.a)].isActive(),
-            bodies[static_cast<size_t>(ct.b)].isActive()};
+    return {ct.a, ct.b, m_active[static_cast<size_t>(ct.a)] != 0,
+            m_active[static_cast<size_t>(ct.b)] != 0};
 }
 
 bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
@@ -24,7 +24,7 @@ bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
         m_single != m_keySingle)
         return false;
     for (size_t ci = 0; ci < contacts.size(); ++ci)
-        if (!(colourKey(contacts[ci], bodies) == m_keys[ci]))
+        if (!(colourKey(contacts[ci]) == m_keys[ci]))
             return false;
     return true;
 }
@@ -53,23 +53,22 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
     m_overflow = 0;
     for (size_t ci = 0; ci < contacts.size(); ++ci) {
         const Contact& ct = contacts[ci];
-        const Body& a = bodies[static_cast<size_t>(ct.a)];
-        const Body& b = bodies[static_cast<size_t>(ct.b)];
-        m_keys.push_back(colourKey(ct, bodies));
-        if (!a.isActive() && !b.isActive())
+        const ColourKey key = colourKey(ct);
+        m_keys.push_back(key);
+        if (!key.movesA && !key.movesB)
             continue;
         std::uint64_t used = 0;
-        if (a.isActive())
+        if (key.movesA)
             used |= m_colourMask[static_cast<size_t>(ct.a)];
-        if (b.isActive())
+        if (key.movesB)
             used |= m_colourMask[static_cast<size_t>(ct.b)];
         int colour = -1;
         if (~used != 0) {
             colour = std::countr_zero(~used);
             const std::uint64_t bit = std::uint64_t{1} << colour;
-            if (a.isActive())
+            if (key.movesA)
                 m_colourMask[static_cast<size_t>(ct.a)] |= bit;
-            if (b.isActive())
+            if (key.movesB)
                 m_colourMask[static_cast<size_t>(ct.b)] |= bit;
             ++m_colourSize[static_cast<size_t>(colour)];
         } else {

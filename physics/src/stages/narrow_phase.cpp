@@ -87,8 +87,9 @@ void keepAnchors(const Body& a, const Polygon& pa, const Transform& xfA, const B
     }
 }
 
-bool recycleManifold(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
-                     const Transform& xfB, double recycle, double margin, Contact& c)
+bool recycledPoints(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
+                    const Transform& xfB, double recycle, double margin,
+                    std::array<ContactPoint, 2>& points)
 {
     // After Box2D v3.2 (physics_world.c, b2Collide's contact recycling): the points stay on
     // the bodies, the normal stays, and each separation follows the anchors as the soft
@@ -105,7 +106,7 @@ bool recycleManifold(const Contact& previous, const Body& a, const Transform& xf
     if (!(shift.lpNorm<1>() + (k.extentA + k.extentB) * turns < recycle))
         return false;
     const Manifold& last = previous.manifold;
-    std::array<ContactPoint, 2> points = last.points;
+    points = last.points;
     for (int i = 0; i < last.pointCount; ++i) {
         const auto p = static_cast<size_t>(i);
         const Vec2 rA = dqA.apply(k.anchorA[p]), rB = dqB.apply(k.anchorB[p]);
@@ -116,9 +117,18 @@ bool recycleManifold(const Contact& previous, const Body& a, const Transform& xf
         points[p].point = 0.5 * ((a.position + rA) + (b.position + rB));
         points[p].separation = s;
     }
-    c.manifold = last;
+    return true;
+}
+
+bool recycleManifold(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
+                     const Transform& xfB, double recycle, double margin, Contact& c)
+{
+    std::array<ContactPoint, 2> points;
+    if (!recycledPoints(previous, a, xfA, b, xfB, recycle, margin, points))
+        return false;
+    c.manifold = previous.manifold;
     c.manifold.points = points;
-    c.anchors = k;
+    c.anchors = previous.anchors;
     return true;
 }
 

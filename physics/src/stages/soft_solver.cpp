@@ -106,8 +106,10 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     m_pins.clear();
     m_invInertia.resize(n);
     m_turns.resize(n);
+    m_active.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const Body& b = bodies[i];
+        m_active[i] = b.isActive();
         const Circle* circle = b.shape.asCircle();
         m_turns[i] = !circle || circle->center != b.localCenter;
         soft::BodyState& s = m_state[i];

@@ -91,7 +91,8 @@ private:
         bool movesA = false, movesB = false;
         bool operator==(const ColourKey&) const = default;
     };
-    static ColourKey colourKey(const Contact& ct, const std::vector<Body>& bodies);
+    /// From the bodies as begin() took them (m_active).
+    ColourKey colourKey(const Contact& ct) const;
     /// Colours the contacts (fast/soft_colouring.cpp), or keeps last step's colouring.
     void buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
     /// Packs the coloured contacts into blocks of m_width lanes, the overflow last.
@@ -180,6 +181,9 @@ private:
     /// Per body: whether its contacts' lever arms turn with it (integratePositions()); not for
     /// a circle about its centre of mass, whose touching point stays where the normal meets it.
     std::vector<char> m_turns;
+    /// Per body: whether the step moves it (Body::isActive()), read where the colouring is
+    /// made or checked without reaching into the bodies' large records.
+    std::vector<char> m_active;
 
     std::vector<soft::Block> m_blocks;
     std::vector<soft::SingleBlock> m_singleBlocks; ///< instead of m_blocks when m_single
