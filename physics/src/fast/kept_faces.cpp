@@ -104,19 +104,16 @@ void satOnPlaced(int ia, const Polygon& pa, const Transform& xfA, int ib, const 
                                   .radiusB = radius(pb)});
 }
 
-/// recycledPoints (narrow_phase.cpp) with its arithmetic written out coordinate by
-/// coordinate, in the same order: the same points, bit for bit. GCC builds the two-number
-/// vectors of the plain form from halves stored one by one and loads them whole, a load that
-/// waits for the stores (a tenth of the base-100 pyramid's step went there).
-bool recycledPointsFast(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
-                        const Transform& xfB, double recycle, double margin,
-                        std::array<ContactPoint, 2>& points)
+/// The points of recycledPoints (narrow_phase.cpp) for a pair that passed mayRecycle with
+/// `m`, their arithmetic written out coordinate by coordinate in the same order: the same
+/// points, bit for bit. GCC builds the two-number vectors of the plain form from halves stored
+/// one by one and loads them whole, a load that waits for the stores (a tenth of the base-100
+/// pyramid's step went there).
+bool carriedPoints(const Contact& previous, const AnchorMotion& m, const Body& a, const Body& b,
+                   double margin, std::array<ContactPoint, 2>& points)
 {
-    AnchorMotion m;
-    if (!mayRecycle(previous, a, xfA, b, xfB, recycle, m))
-        return false;
-    const ContactAnchors& k = previous.anchors;
     const Manifold& last = previous.manifold;
+    const ContactAnchors& k = previous.anchors;
     const double nx = last.normal.x(), ny = last.normal.y();
     const double sx = m.shift.x(), sy = m.shift.y();
     points = last.points;
@@ -192,8 +189,10 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
             // from a copy of last step's contact. Its faces are not kept: when it moves on, the
             // pair gets the whole SAT.
             const Contact* last = before.find(ia, ib);
+            AnchorMotion motion;
             std::array<ContactPoint, 2> points;
-            if (last && recycledPointsFast(*last, a, xfA, b, xfB, recycle, margin, points)) {
+            if (last && mayRecycle(*last, a, xfA, b, xfB, recycle, motion) &&
+                carriedPoints(*last, motion, a, b, margin, points)) {
                 finishRecycled(a, b, points, contacts.emplace_back(*last));
                 continue;
             }
