@@ -106,6 +106,12 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
         start += (m_colourSize[static_cast<size_t>(c)] + width - 1) / width;
     }
     int overflowBlock = start;
+    // The kernel's calls (KernelOf): each colour's blocks, then each overflow block alone.
+    m_ranges.clear();
+    for (int c = 0; c < m_colourCount; ++c)
+        m_ranges.push_back(next[static_cast<size_t>(c)]);
+    for (int k = 0; k <= m_overflow; ++k)
+        m_ranges.push_back(start + k);
     m_slots.clear();
     m_slots.reserve(m_candidates.size());
     for (size_t k = 0; k < m_candidates.size(); ++k) {

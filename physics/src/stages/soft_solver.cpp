@@ -312,11 +312,12 @@ void SoftSolver::setDrift(const std::vector<Vec2>& drift, const std::vector<doub
 void SoftSolver::warmStart()
 {
     m_energyValid = false;
-    if (m_single)
-        m_singleKernel.warmStart(m_singleBlocks.data(), static_cast<int>(m_singleBlocks.size()),
-                                 m_singleState.data());
-    else
-        m_kernel.warmStart(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data());
+    forEachRange([&](int first, int count) {
+        if (m_single)
+            m_singleKernel.warmStart(m_singleBlocks.data() + first, count, m_singleState.data());
+        else
+            m_kernel.warmStart(m_blocks.data() + first, count, m_state.data());
+    });
     if (!m_pins.empty())
         warmStartPins();
 }
@@ -331,12 +332,15 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
     m_pass.inverseSubstep = lookAhead ? m_substeps.invH : kNoLookAhead;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
-    if (m_single) {
-        m_singleKernel.solve(m_singleBlocks.data(), static_cast<int>(m_singleBlocks.size()),
-                             m_singleState.data(), m_pass);
+    forEachRange([&](int first, int count) {
+        if (m_single)
+            m_singleKernel.solve(m_singleBlocks.data() + first, count, m_singleState.data(),
+                                 m_pass);
+        else
+            m_kernel.solve(m_blocks.data() + first, count, m_state.data(), m_pass);
+    });
+    if (m_single)
         fromSingle();
-    } else
-        m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
     if (!m_pins.empty())
         solvePins(useBias);
 }

@@ -188,6 +188,15 @@ private:
     std::vector<soft::Block> m_blocks;
     std::vector<soft::SingleBlock> m_singleBlocks; ///< instead of m_blocks when m_single
     std::vector<Slot> m_slots;
+    /// The blocks the kernel is given in one call, [m_ranges[i], m_ranges[i + 1]): a colour's,
+    /// or one overflow block (soft_kernel.h, KernelOf).
+    std::vector<int> m_ranges;
+    /// Calls pass(first, count) for each range of m_ranges, in order.
+    template <typename Pass> void forEachRange(const Pass& pass) const
+    {
+        for (size_t r = 0; r + 1 < m_ranges.size(); ++r)
+            pass(m_ranges[r], m_ranges[r + 1] - m_ranges[r]);
+    }
     std::vector<std::uint64_t> m_colourMask; ///< per body: colours of its contacts
     std::vector<int> m_colourOf;             ///< per candidate contact, -1 overflow
     std::vector<int> m_candidates;           ///< contacts with a body to solve
