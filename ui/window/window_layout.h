@@ -136,9 +136,6 @@ private:
     bool m_normalWasMaximized = false;
     QByteArray m_normalGeometry; ///< before presentation mode
     QByteArray m_normalState;
-    /// Each dock and whether it was shown when presentation mode ended: what the student
-    /// opened or closed during it stays so.
-    std::vector<std::pair<QPointer<QWidget>, bool>> m_shownAtLeaving;
     QFont m_normalFont;
     std::vector<std::pair<QPointer<QWidget>, QFont>> m_explicitFonts; ///< before presentation
     QPalette m_normalPalette;
