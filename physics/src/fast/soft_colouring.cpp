@@ -34,8 +34,11 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
     if (!m_plain && sameColouring(contacts, bodies)) {
         // The same contacts between the same bodies: the same colours, blocks and lanes as
         // colouring them again would give; only what the lanes hold has changed.
-        for (const Slot& slot : m_slots)
-            fillLane(contacts[static_cast<size_t>(slot.contact)], slot.block, slot.lane);
+        for (Slot& slot : m_slots) {
+            const Contact& ct = contacts[static_cast<size_t>(slot.contact)];
+            slot.points = ct.manifold.pointCount;
+            fillLane(ct, slot.block, slot.lane);
+        }
         return;
     }
 
@@ -131,7 +134,9 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
             slot.block = overflowBlock++;
             slot.lane = 0;
         }
-        fillLane(contacts[static_cast<size_t>(ci)], slot.block, slot.lane);
+        const Contact& ct = contacts[static_cast<size_t>(ci)];
+        slot.points = ct.manifold.pointCount;
+        fillLane(ct, slot.block, slot.lane);
         m_slots.push_back(slot);
     }
 }

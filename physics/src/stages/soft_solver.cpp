@@ -453,7 +453,7 @@ void SoftSolver::endOf(std::vector<Body>& bodies, const std::vector<State>& stat
         Contact& ct = (*m_contacts)[static_cast<size_t>(slot.contact)];
         const BlockType& k = blocks[static_cast<size_t>(slot.block)];
         const auto l = static_cast<size_t>(slot.lane);
-        for (int i = 0; i < ct.manifold.pointCount; ++i) {
+        for (int i = 0; i < slot.points; ++i) {
             ct.normalImpulse[static_cast<size_t>(i)] = substeps * k.p[i].normalImpulse[l];
             ct.tangentImpulse[static_cast<size_t>(i)] = substeps * k.p[i].tangentImpulse[l];
         }

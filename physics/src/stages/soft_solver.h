@@ -84,6 +84,9 @@ private:
         int contact = 0;
         int block = 0;
         int lane = 0;
+        /// The contact's point count when its lane was filled: end() writes its impulses
+        /// without reading the contact's first cache line again.
+        int points = 0;
     };
     /// What the colouring of a contact depends on: its bodies and whether each moves.
     struct ColourKey {
