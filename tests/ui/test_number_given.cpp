@@ -124,8 +124,8 @@ void TestNumberGiven::playedInEnglish()
     QVERIFY2(!player.result(0).contains(QStringLiteral("0.8")), qPrintable(player.result(0)));
     // Within the band: right, with the number.
     player.answer(0, QStringLiteral("0.83"));
-    QCOMPARE(player.result(0), QStringLiteral("Right: the answer is 0.8\u00a0kg m/s (you "
-                                              "said 0.83\u00a0kg m/s)."));
+    QCOMPARE(player.result(0), QStringLiteral("Right: the answer is 0.8\u00a0kg\u00a0m/\u2060s (you "
+                                              "said 0.83\u00a0kg\u00a0m/\u2060s)."));
     // The tries keep the number they were judged against, for the worksheet.
     const std::vector<lessons::AnswerTry> tries = triesNow();
     QCOMPARE(tries.size(), std::size_t{2});
@@ -145,8 +145,8 @@ void TestNumberGiven::playedInCzech()
     QVERIFY2(player.result(0).startsWith(QStringLiteral("Ne tak docela")),
              qPrintable(player.result(0)));
     player.answer(0, QStringLiteral("0,85"));
-    QCOMPARE(player.result(0), QStringLiteral("Správně: výsledek je 0,8\u00a0kg m/s "
-                                              "(vaše odpověď: 0,85\u00a0kg m/s)."));
+    QCOMPARE(player.result(0), QStringLiteral("Správně: výsledek je 0,8\u00a0kg\u00a0m/\u2060s "
+                                              "(vaše odpověď: 0,85\u00a0kg\u00a0m/\u2060s)."));
 }
 
 void TestNumberGiven::worksheetLines()
@@ -155,11 +155,11 @@ void TestNumberGiven::worksheetLines()
     QCOMPARE(linesOf(ui::worksheetLines(q, {ui::WorksheetKind::Empty})),
              (QStringList{QStringLiteral("Your answer (kg m/s):"), QStringLiteral("~")}));
     QCOMPARE(linesOf(ui::worksheetLines(q, {ui::WorksheetKind::Key})),
-             QStringList{QStringLiteral("Right answer: 0.8\u00a0kg m/s (accepted from "
-                                        "0.75\u00a0kg m/s to 0.85\u00a0kg m/s)")});
+             QStringList{QStringLiteral("Right answer: 0.8\u00a0kg\u00a0m/s (accepted from "
+                                        "0.75\u00a0kg\u00a0m/s to 0.85\u00a0kg\u00a0m/s)")});
     QCOMPARE(linesOf(ui::worksheetLines(q, {ui::WorksheetKind::Answers})),
              (QStringList{QStringLiteral("TRIES kg m/s"),
-                          QStringLiteral("Right answer: 0.8\u00a0kg m/s")}));
+                          QStringLiteral("Right answer: 0.8\u00a0kg\u00a0m/s")}));
     // The key as a PDF, through the worksheet's writer.
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(m_path);
     QVERIFY2(loaded.ok, qPrintable(loaded.error));

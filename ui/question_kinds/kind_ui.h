@@ -71,10 +71,10 @@ AnswerRow typedNumberRow(QLabel* prompt, QVBoxLayout* layout, const QString& uni
 /// it; a test of a kind that reads only `sheet` may give only that.
 struct SheetQuestion {
     WorksheetKind sheet = WorksheetKind::Empty;
-    const lessons::LessonStep* step = nullptr;   ///< the step it is asked in, as it ran
-    const lessons::Question* question = nullptr; ///< the question whole (its prompt, its kind)
-    std::span<const lessons::AnswerTry> tries;   ///< the student's tries at it, in order
-    std::span<const lessons::Verdict> verdicts;  ///< the tries judged again, one per try
+    const lessons::LessonStep* step = nullptr;       ///< the step it is asked in, as it ran
+    const lessons::Question* question = nullptr;     ///< the question whole (its prompt, its kind)
+    std::span<const lessons::AnswerTry> tries = {};  ///< the student's tries at it, in order
+    std::span<const lessons::Verdict> verdicts = {}; ///< the tries judged again, one per try
 };
 
 /// `value` in `unit` as the worksheet writes an answer or a measured value (the plain number
