@@ -158,13 +158,6 @@ private:
     /// than kTextShare of the column's height (unless the reader opened it by hand).
     void fitIntroduction();
     void buildQuestions();
-    /// The answers of question `i`, under its `prompt` in `layout`, one function per kind: a
-    /// measured question's answer box with its unit, a choice question's options as radio
-    /// buttons in a group named by its prompt; and their Check and Show me buttons.
-    void buildMeasuredRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
-                          const lessons::MeasuredQuestion& q);
-    void buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
-                        const lessons::ChoiceQuestion& q);
     /// Keeps the parts of the next question's answer row.
     void addRow(const AnswerRow& parts);
     /// What question i's answer row, as its kind builds it, asks of the player.
@@ -189,12 +182,14 @@ private:
     /// Judges a try at question i (and remembers it): its verdict shown, what it releases
     /// released.
     void applyTry(std::size_t i, const QuestionTry& attempt);
-    /// A try at question i without an answer yet: the value it is judged against (nullopt
-    /// while not measured yet) and whether it was measured ahead.
-    /// Check pressed on question i: the typed number judged, or why it is not.
-    void checkTyped(std::size_t i);
+    /// A try at question i handed in by its row: judged (applyTry), or, a typed number with
+    /// nothing measured yet to judge it against while the run can get there, said and not
+    /// kept (false).
+    bool judge(std::size_t i, const QuestionTry& attempt);
     /// How the window's run stands to the one question i asks for (asked_run.h).
     AskedRun askedRunOf(std::size_t i) const;
+    /// A try at question i without an answer yet: the value it is judged against (nullopt
+    /// while not measured yet) and whether it was measured ahead.
     QuestionTry measuredTry(std::size_t i);
     /// Scrolls question i's verdict into sight in the lesson's column.
     void revealResult(std::size_t i);

@@ -16,18 +16,13 @@
 #include "run/measurements.h"
 
 #include <QButtonGroup>
-#include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPointer>
 #include <QPushButton>
-#include <QRadioButton>
 #include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
-
-#include "rigidlab/physics/overloaded.h"
 
 #include <cmath>
 #include <variant>
@@ -39,30 +34,6 @@ namespace {
 /// The largest answer taken, in the question's unit: far beyond any measured value, and small
 /// enough that |answer - measured| stays finite.
 constexpr double kMaxAnswer = 1e15;
-
-/// An option's text beside its radio button: wrapped in the lesson's narrow column (a radio
-/// button's own text never wraps, and widened the column past the dock), and a click on it
-/// chooses the option as a click on the button does.
-class OptionText : public QLabel {
-public:
-    OptionText(const QString& text, QAbstractButton* button, QWidget* parent)
-        : QLabel(text, parent), m_button(button)
-    {
-        setWordWrap(true);
-        setBuddy(button);
-    }
-
-protected:
-    void mouseReleaseEvent(QMouseEvent* event) override
-    {
-        QLabel::mouseReleaseEvent(event);
-        m_button->click();
-        m_button->setFocus();
-    }
-
-private:
-    QAbstractButton* m_button;
-};
 
 /// Says under a question what to do before it can be judged (nothing is counted).
 void askFirst(QLabel* result, const QString& text)
@@ -102,36 +73,11 @@ void LessonPlayer::buildQuestions()
         prompt->setWordWrap(true);
         v->addWidget(prompt);
         m_questionLayout->addWidget(box);
-        // The kinds older than ui/question_kinds/ are built here; every other builds its own.
-        std::visit(physics::Overloaded{
-                       [&](const lessons::MeasuredQuestion& measured) {
-                           buildMeasuredRow(i, prompt, v, measured);
-                       },
-                       [&](const lessons::ChoiceQuestion& choice) {
-                           buildChoiceRow(i, prompt, v, choice);
-                       },
-                       [&](const auto& kind) { addRow(answerRow(kind, prompt, v, rowHooks(i))); }},
+        // Each kind builds its row (ui/question_kinds/); the player judges what it hands in.
+        std::visit([&](const auto& kind) { addRow(answerRow(kind, prompt, v, rowHooks(i))); },
                    q.kind);
     }
     orderTabs();
-}
-
-void LessonPlayer::buildMeasuredRow(std::size_t i, QLabel* prompt, QVBoxLayout* v,
-                                    const lessons::MeasuredQuestion& q)
-{
-    const AnswerRow parts =
-        typedNumberRow(prompt, v, q.unit, tr("Give up and show the measured value"));
-    addRow(parts);
-    auto judge = [this, i] {
-        if (m_lesson && i < m_rows.size())
-            checkTyped(i);
-    };
-    connect(parts.check, &QPushButton::clicked, this, judge);
-    connect(parts.edit, &QLineEdit::returnPressed, this, judge);
-    connect(parts.show, &QPushButton::clicked, this, [this, i] {
-        if (m_lesson && i < m_rows.size())
-            applyTry(i, measuredTry(i));
-    });
 }
 
 void LessonPlayer::addRow(const AnswerRow& parts)
@@ -147,15 +93,30 @@ void LessonPlayer::addRow(const AnswerRow& parts)
 
 RowHooks LessonPlayer::rowHooks(std::size_t i)
 {
+    // Each hook does nothing once the row is gone (another step, no lesson).
+    const auto live = [this, i] { return m_lesson && i < m_rows.size(); };
     RowHooks hooks;
-    hooks.judge = [this, i](const QuestionTry& attempt) {
-        if (m_lesson && i < m_rows.size())
-            applyTry(i, attempt);
+    hooks.prompt = m_lesson->steps[static_cast<size_t>(m_step)].questions[i].prompt;
+    hooks.judge = [this, i, live](const QuestionTry& attempt) {
+        return live() && judge(i, attempt);
     };
-    hooks.typedNumber = [this, i]() -> std::optional<double> {
-        if (!m_lesson || i >= m_rows.size())
-            return std::nullopt;
-        return typedAnswer(i);
+    hooks.typedNumber = [this, i, live]() -> std::optional<double> {
+        return live() ? typedAnswer(i) : std::nullopt;
+    };
+    hooks.askFirst = [this, i, live](const QString& text) {
+        if (live())
+            askFirst(m_rows[i].result, text);
+    };
+    hooks.measured = [this, i, live] { return live() ? measuredTry(i) : QuestionTry{}; };
+    hooks.askedRun = [this, i, live] {
+        RunAdvice out;
+        if (!live())
+            return out;
+        const AskedRun asked = askedRunOf(i);
+        if (!asked.matches())
+            out.advice = askedRunAdvice(asked);
+        out.setFirst = !asked.matches() && asked.studentCanSet;
+        return out;
     };
     return hooks;
 }
@@ -190,100 +151,25 @@ std::optional<double> LessonPlayer::typedAnswer(std::size_t i)
     return parsed;
 }
 
-void LessonPlayer::checkTyped(std::size_t i)
+bool LessonPlayer::judge(std::size_t i, const QuestionTry& attempt)
 {
-    QuestionRow& row = m_rows[i];
-    const std::optional<double> typed = typedAnswer(i);
-    if (!typed)
-        return;
-    const double answer = *typed;
-    // A question that asks for settings first is judged on the run it asks for.
-    const AskedRun asked = askedRunOf(i);
-    if (!asked.matches() && asked.studentCanSet) {
-        askFirst(row.result, askedRunAdvice(asked));
-        return;
-    }
-    QuestionTry attempt = measuredTry(i);
-    attempt.answer = answer;
-    if (!attempt.measured && !heldBack().contains(QStringView(lessons::kHoldBackRun))) {
+    if (attempt.answer && !attempt.measured &&
+        !heldBack().contains(QStringView(lessons::kHoldBackRun))) {
         // Nothing to judge it against yet (the run has not got there): said, and not kept as
         // a try, so that the worksheet lists only answers that were judged.
         lessons::TryCount count{m_rows[i].attempts, m_rows[i].answered};
         const lessons::Question& q = m_lesson->steps[static_cast<size_t>(m_step)].questions[i];
-        askFirst(row.result, lessons::judgeTry(q, attempt, count).message);
-        return;
+        askFirst(m_rows[i].result, lessons::judgeTry(q, attempt, count).message);
+        return false;
     }
     applyTry(i, attempt);
-    if (!asked.matches())
-        row.result->setText(askedRunAdvice(asked) + u' ' + row.result->text());
+    return true;
 }
 
 AskedRun LessonPlayer::askedRunOf(std::size_t i) const
 {
     const lessons::LessonStep& step = m_lesson->steps[static_cast<size_t>(m_step)];
     return askedRun(step, step.questions[i], m_controller.world(), m_controller.editLog().edits());
-}
-
-void LessonPlayer::buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
-                                  const lessons::ChoiceQuestion& q)
-{
-    QWidget* box = prompt->parentWidget();
-    // The options in a group a screen reader names by the question; the arrow keys move
-    // between them, Tab leaves the group for Check.
-    auto* group = new QGroupBox(box);
-    group->setFlat(true);
-    group->setAccessibleName(m_lesson->steps[static_cast<size_t>(m_step)].questions[i].prompt);
-    auto* options = new QVBoxLayout(group);
-    options->setContentsMargins(0, 0, 0, 0);
-    auto* buttonGroup = new QButtonGroup(group);
-    for (qsizetype c = 0; c < q.choices.size(); ++c) {
-        auto* option = new QRadioButton(group);
-        option->setAccessibleName(q.choices[c]);
-        buttonGroup->addButton(option, static_cast<int>(c));
-        auto* line = new QHBoxLayout;
-        line->addWidget(option, 0, Qt::AlignTop);
-        line->addWidget(new OptionText(lessons::keepUnitsTogether(q.choices[c]), option, group), 1);
-        options->addLayout(line);
-    }
-    if (QAbstractButton* first = buttonGroup->button(0))
-        prompt->setBuddy(first);
-    layout->addWidget(group);
-    auto* buttons = new QHBoxLayout;
-    auto* check = new QPushButton(tr("Check"), box);
-    check->setAccessibleDescription(tr("Check the option chosen"));
-    auto* show = new QPushButton(tr("Show me"), box);
-    show->setToolTip(tr("Give up and show the right answer"));
-    buttons->addWidget(check);
-    buttons->addWidget(show);
-    layout->addLayout(buttons);
-    auto* result = new QLabel(box);
-    result->setWordWrap(true);
-    result->setVisible(false);
-    layout->addWidget(result);
-    QuestionRow row;
-    row.choices = buttonGroup;
-    row.check = check;
-    row.result = result;
-    row.show = show;
-    m_rows.push_back(row);
-    connect(check, &QPushButton::clicked, this, [this, i, buttonGroup, result] {
-        if (!m_lesson)
-            return;
-        const int chosen = buttonGroup->checkedId();
-        if (chosen < 0)
-            return askFirst(result, tr("Choose an answer first."));
-        const auto* question =
-            m_lesson->steps[static_cast<size_t>(m_step)].questions[i].as<lessons::ChoiceQuestion>();
-        QuestionTry attempt;
-        attempt.choice = chosen;
-        attempt.choiceText = question->choices.value(chosen);
-        attempt.right = chosen == question->answer;
-        applyTry(i, attempt);
-    });
-    connect(show, &QPushButton::clicked, this, [this, i] {
-        if (m_lesson && i < m_rows.size())
-            applyTry(i, QuestionTry{});
-    });
 }
 
 QuestionTry LessonPlayer::measuredTry(std::size_t i)
