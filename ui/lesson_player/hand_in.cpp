@@ -1,19 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Handing in a lesson's worksheet: the student's name and class, the record of every step's
-// tries and settings, and the PDF with the answers file beside it.
+// Handing in a lesson's worksheet: the student's name and class, and the PDF with the answers
+// file (the session's answers_record) beside it.
 
 #include "lesson_player/lesson_player.h"
+
+#include "lesson_player/answers_record.h"
 
 #include "common/export_folder.h"
 #include "common/language.h"
 #include "common/modal_scope.h"
 #include "common/shortcuts.h"
-#include "simulation/simulation_controller.h"
 #include "worksheet/worksheet.h"
 
 #include "format/atomic_file.h"
 
-#include <QDate>
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -26,26 +26,6 @@
 #include <QVBoxLayout>
 
 namespace rigidlab::ui {
-
-namespace {
-
-/// What the session remembers: who the student is, and the work on the lesson last opened
-/// (kept through a language switch, which makes the window anew, and through reopening the
-/// same lesson; another lesson starts a new record).
-struct SessionRecord {
-    QString student;
-    QString className;
-    QString lessonPath;
-    std::vector<lessons::StepAnswers> steps;
-};
-
-SessionRecord& session()
-{
-    static SessionRecord record;
-    return record;
-}
-
-} // namespace
 
 void LessonPlayer::buildStudentFields(QVBoxLayout* layout)
 {
@@ -70,12 +50,12 @@ void LessonPlayer::buildStudentFields(QVBoxLayout* layout)
     row->addWidget(m_studentName, 1);
     row->addWidget(classLabel);
     row->addWidget(m_studentClass);
-    m_studentName->setText(session().student);
-    m_studentClass->setText(session().className);
+    m_studentName->setText(AnswersRecord::session().student);
+    m_studentClass->setText(AnswersRecord::session().className);
     connect(m_studentName, &QLineEdit::textChanged, this,
-            [](const QString& text) { session().student = text.simplified(); });
+            [](const QString& text) { AnswersRecord::session().student = text.simplified(); });
     connect(m_studentClass, &QLineEdit::textChanged, this,
-            [](const QString& text) { session().className = text.simplified(); });
+            [](const QString& text) { AnswersRecord::session().className = text.simplified(); });
     m_handIn->setObjectName(QStringLiteral("handIn"));
     // A key as well as the button (Help › Controls lists it).
     const QList<QKeySequence> keys = controlKeys("handIn");
@@ -95,84 +75,24 @@ void LessonPlayer::setStudent(const QString& name, const QString& className)
 
 QString LessonPlayer::student() const
 {
-    return session().student;
-}
-
-void LessonPlayer::startRecord(const lessons::Lesson& lesson)
-{
-    SessionRecord& record = session();
-    if (record.lessonPath == lesson.path && record.steps.size() == lesson.steps.size())
-        return;
-    record.lessonPath = lesson.path;
-    record.steps.assign(lesson.steps.size(), lessons::StepAnswers{});
-}
-
-void LessonPlayer::recordTry(std::size_t i)
-{
-    SessionRecord& record = session();
-    if (!m_lesson || record.lessonPath != m_lesson->path)
-        return;
-    lessons::StepAnswers& step = record.steps.at(static_cast<std::size_t>(m_step));
-    if (step.questions.size() < m_rows.size())
-        step.questions.resize(m_rows.size());
-    step.questions[i] = m_rows[i].tries;
-    recordSettings();
-}
-
-void LessonPlayer::replayRecordedTries()
-{
-    const SessionRecord& record = session();
-    if (!m_lesson || record.lessonPath != m_lesson->path)
-        return;
-    // Copied: judging a try writes the record again (the same tries, in the same order).
-    const std::vector<std::vector<QuestionTry>> questions =
-        record.steps.at(static_cast<std::size_t>(m_step)).questions;
-    m_replaying = true;
-    for (std::size_t i = 0; i < std::min(questions.size(), m_rows.size()); ++i)
-        for (const QuestionTry& attempt : questions[i])
-            applyTry(i, attempt);
-    m_replaying = false;
-}
-
-void LessonPlayer::recordSettings()
-{
-    SessionRecord& record = session();
-    if (!m_lesson || record.lessonPath != m_lesson->path)
-        return;
-    const physics::WorldDef& def = m_controller.world().def();
-    lessons::StepAnswers& step = record.steps.at(static_cast<std::size_t>(m_step));
-    step.integrator = def.integrator;
-    step.dt = def.dt;
-    step.solver = def.solver;
+    return AnswersRecord::session().student;
 }
 
 lessons::Answers LessonPlayer::answers() const
 {
-    lessons::Answers out;
-    if (!m_lesson)
-        return out;
-    out.lessonFile = QFileInfo(m_lesson->path).fileName();
-    out.lessonTitle = m_lesson->title;
-    out.language = currentLanguage();
-    out.student = session().student;
-    out.className = session().className;
-    out.date = QDate::currentDate().toString(Qt::ISODate);
-    if (session().lessonPath == m_lesson->path)
-        out.steps = session().steps;
-    // Steps after the last one visited add nothing.
-    while (!out.steps.empty() && out.steps.back() == lessons::StepAnswers{})
-        out.steps.pop_back();
-    return out;
+    if (!lesson())
+        return {};
+    return AnswersRecord::session().answers(*lesson(), currentLanguage());
 }
 
 QString LessonPlayer::handIn(const QString& pdfPath)
 {
-    if (!m_lesson)
+    if (!lesson())
         return tr("Open a lesson first.");
-    recordSettings();
+    m_judge.recordSettings();
     const lessons::Answers work = answers();
     const WorksheetResult written =
-        writeWorksheet(*m_lesson, work, WorksheetKind::Answers, pdfPath);
+        writeWorksheet(*lesson(), work, WorksheetKind::Answers, pdfPath);
     if (!written.ok)
         return written.error;
     const QString answersPath = answersPathFor(pdfPath);
@@ -185,17 +105,18 @@ QString LessonPlayer::handIn(const QString& pdfPath)
 
 void LessonPlayer::handInInteractively()
 {
-    if (!m_lesson)
+    if (!lesson())
         return;
     const ModalScope modal;
-    if (session().student.isEmpty()) {
+    if (AnswersRecord::session().student.isEmpty()) {
         QMessageBox::information(this, tr("Hand in"),
                                  tr("Type your name first: it goes on the worksheet."));
         m_studentName->setFocus(Qt::OtherFocusReason);
         return;
     }
     const QString proposal =
-        QDir(exportFolder()).filePath(worksheetFileName(*m_lesson, session().student));
+        QDir(exportFolder())
+            .filePath(worksheetFileName(*lesson(), AnswersRecord::session().student));
     const QString path = QFileDialog::getSaveFileName(this, tr("Hand in the worksheet"), proposal,
                                                       tr("PDF document (*.pdf)"));
     if (path.isEmpty())
@@ -222,7 +143,7 @@ void LessonPlayer::addWorksheetActions(QMenu& menu)
     key->setObjectName(QStringLiteral("worksheetKey"));
     key->setToolTip(tr("The open lesson's questions with the values the simulation measures"));
     for (QAction* action : {empty, key}) {
-        action->setEnabled(m_lesson != nullptr);
+        action->setEnabled(lesson() != nullptr);
         connect(this, &LessonPlayer::stepActivated, action, [action] { action->setEnabled(true); });
         connect(this, &LessonPlayer::lessonClosed, action, [action] { action->setEnabled(false); });
     }
@@ -230,10 +151,10 @@ void LessonPlayer::addWorksheetActions(QMenu& menu)
 
 void LessonPlayer::writeSheetInteractively(bool key)
 {
-    if (!m_lesson)
+    if (!lesson())
         return;
     const ModalScope modal;
-    const QString stem = QFileInfo(m_lesson->path).completeBaseName();
+    const QString stem = QFileInfo(lesson()->path).completeBaseName();
     const QString proposal =
         QDir(exportFolder())
             .filePath(stem + (key ? QStringLiteral("-key.pdf") : QStringLiteral("-worksheet.pdf")));
@@ -244,9 +165,9 @@ void LessonPlayer::writeSheetInteractively(bool key)
         return;
     rememberExportFolder(path);
     lessons::Answers none;
-    none.lessonFile = QFileInfo(m_lesson->path).fileName();
+    none.lessonFile = QFileInfo(lesson()->path).fileName();
     const WorksheetResult written =
-        writeWorksheet(*m_lesson, none, key ? WorksheetKind::Key : WorksheetKind::Empty, path);
+        writeWorksheet(*lesson(), none, key ? WorksheetKind::Key : WorksheetKind::Empty, path);
     if (!written.ok)
         QMessageBox::warning(this, tr("Cannot write the worksheet"), written.error);
 }
@@ -254,7 +175,7 @@ void LessonPlayer::writeSheetInteractively(bool key)
 void LessonPlayer::showHandIn()
 {
     // The lesson's last step: Hand in is how it ends.
-    const bool last = m_lesson && m_step + 1 == static_cast<int>(m_lesson->steps.size());
+    const bool last = m_state.isLast();
     m_handIn->setText(last ? tr("Finish: hand in the worksheet…") : tr("Hand in…"));
 }
 

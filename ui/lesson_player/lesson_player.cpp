@@ -1,43 +1,32 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_player/lesson_player.h"
+#include "lesson_player/lesson_list.h"
 #include "lesson_player/question_area.h"
+#include "lesson_player/question_rows.h"
 #include "lesson_player/step_text.h"
 
 #include "common/announcer.h"
 #include "common/drawable_text.h"
 #include "common/modal_scope.h"
-#include "panels/number_field.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 
-#include "format/lesson_catalog.h"
-
-#include "run/measurements.h"
-
-#include <QAbstractItemView>
-#include <QComboBox>
-#include <QCoreApplication>
-#include <QDir>
 #include <QEvent>
-#include <QFileInfo>
 #include <QGridLayout>
 #include <QHBoxLayout>
-#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QRegularExpression>
-#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSignalBlocker>
-#include <QStyledItemDelegate>
 #include <QTimer>
 #include <QToolButton>
 #include <QVBoxLayout>
 
-#include <cmath>
+#include <algorithm>
 
 namespace rigidlab::ui {
 
@@ -49,52 +38,14 @@ constexpr double kTextShare = 0.4;
 /// The lines of the step's text kept in sight below its title before the questions below it
 /// take the column's height (the first question is in sight whatever the text leaves it).
 constexpr int kTextLines = 6;
-/// The longest short title a lesson has in the list box [characters].
-constexpr int kShortTitleLength = 24;
-/// The least room between the lesson list's popup and the screen's edges [px].
-constexpr int kPopupMarginPx = 8;
-/// The list's role holding an entry's full menu line (the box itself shows the short one).
-constexpr int kFullTextRole = Qt::UserRole + 1;
-
-/// A lesson's title as the list box shows it: up to its first ": " or dash ("Energy drift:
-/// four ways…" → "Energy drift"), and at most kShortTitleLength characters, cut between words.
-QString shortTitle(const QString& title)
-{
-    QString out = title;
-    for (const QString& cut : {QStringLiteral(": "), QStringLiteral(" – "), QStringLiteral(" — ")})
-        if (const qsizetype at = out.indexOf(cut); at > 0)
-            out.truncate(at);
-    if (out.size() > kShortTitleLength) {
-        const qsizetype space = out.lastIndexOf(u' ', kShortTitleLength);
-        out.truncate(space > 0 ? space : kShortTitleLength);
-        out += QChar(0x2026); // …
-    }
-    return out;
-}
-
-/// The open list shows each lesson's full line (title, description, time).
-class FullTextDelegate : public QStyledItemDelegate {
-public:
-    using QStyledItemDelegate::QStyledItemDelegate;
-
-protected:
-    void initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const override
-    {
-        QStyledItemDelegate::initStyleOption(option, index);
-        const QString full = index.data(kFullTextRole).toString();
-        if (!full.isEmpty())
-            option->text = full;
-    }
-};
-
 } // namespace
 
-LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
-    : QWidget(parent), m_controller(controller), m_lessonBox(new QComboBox(this)),
-      m_title(new QLabel(this)), m_aboutToggle(new QToolButton(this)), m_about(new QLabel(this)),
+LessonPlayer::LessonPlayer(const RunView& run, QWidget* parent)
+    : QWidget(parent), m_run(run), m_lessonBox(new LessonList(this)), m_title(new QLabel(this)),
+      m_aboutToggle(new QToolButton(this)), m_about(new QLabel(this)),
       m_progress(new QProgressBar(this)), m_stepCount(new QLabel(this)),
-      m_stepTitle(new QLabel(this)), m_text(new StepText(this)), m_questionBox(new QWidget(this)),
-      m_questionLayout(new QVBoxLayout(m_questionBox)), m_back(new QPushButton(tr("◀ Back"), this)),
+      m_stepTitle(new QLabel(this)), m_text(new StepText(this)),
+      m_questions(new QuestionRows(this)), m_back(new QPushButton(tr("◀ Back"), this)),
       m_restart(new QPushButton(tr("Restart step"), this)),
       m_next(new QPushButton(tr("Next ▶"), this)),
       m_export(new QPushButton(tr("Export plots…"), this)),
@@ -104,18 +55,12 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
 {
     m_text->setNameWhenEmpty(tr("Step text"));
     auto* layout = new QVBoxLayout(this);
-    m_lessonBox->view()->setItemDelegate(new FullTextDelegate(m_lessonBox->view()));
     layout->addWidget(m_lessonBox);
     buildIntroduction(layout);
     buildStudentFields(layout);
     // On a first start, with no lesson open, the way in: one button to the first lesson.
     m_start->setObjectName(QStringLiteral("startFirstLesson"));
-    connect(m_start, &QPushButton::clicked, this, [this] {
-        const QString error = openLesson(firstLessonPath());
-        const ModalScope modal;
-        if (!error.isEmpty() && !m_openCancelled)
-            QMessageBox::warning(this, tr("Cannot open lesson"), error);
-    });
+    connect(m_start, &QPushButton::clicked, this, [this] { openChosen(firstLessonPath()); });
     layout->addWidget(m_start);
     // "Step 2 of 4" beside the bar rather than on it: text across the bar's filled edge is
     // half white on blue, half black on blue, and the black part unreadable.
@@ -138,12 +83,10 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     // it. The questions and the buttons stay in sight below it (takeNavigation()): the class
     // sees what it is asked, where it answers and the verdict while the text is read.
     layout->addWidget(m_text);
-    m_questionBox->setObjectName(QStringLiteral("lessonQuestions"));
-    m_questionLayout->setContentsMargins(0, 0, 0, 0);
     // The questions and their verdicts as large as the step's text (the text's font is
     // followed, in eventFilter; presentation mode scales the text, not them twice).
-    m_questionBox->setProperty(kFontFollowsProperty, true);
-    m_questionBox->setFont(m_text->font());
+    m_questions->setProperty(kFontFollowsProperty, true);
+    m_questions->setFont(m_text->font());
     m_text->installEventFilter(this);
     // The start page (no lesson, so no text) keeps to the top instead of spreading out.
     layout->addStretch(0);
@@ -176,7 +119,7 @@ void LessonPlayer::buildIntroduction(QVBoxLayout* layout)
     m_aboutToggle->setArrowType(Qt::DownArrow);
     connect(m_aboutToggle, &QToolButton::toggled, this, [this](bool on) {
         m_aboutToggle->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
-        m_about->setVisible(on && (!m_lesson || m_step == 0));
+        m_about->setVisible(on && m_state.index() == 0);
     });
     connect(m_aboutToggle, &QToolButton::clicked, this, [this] { m_aboutChosen = true; });
     layout->addWidget(m_aboutToggle);
@@ -192,7 +135,7 @@ void LessonPlayer::buildNavigation(QVBoxLayout* layout)
     m_navigation->setObjectName(QStringLiteral("lessonInSight"));
     auto* column = new QVBoxLayout(m_navigation);
     column->setContentsMargins(0, 0, 0, 0);
-    m_questionArea = new QuestionArea(m_questionBox, m_navigation);
+    m_questionArea = new QuestionArea(m_questions, m_navigation);
     column->addWidget(m_questionArea);
     m_buttons = new QWidget(m_navigation);
     m_buttons->setObjectName(QStringLiteral("lessonNavigation"));
@@ -201,7 +144,7 @@ void LessonPlayer::buildNavigation(QVBoxLayout* layout)
     // In line with the text above, wherever the window puts them.
     const QMargins margins = layout->contentsMargins();
     buttons->setContentsMargins(margins.left(), 0, margins.right(), 0);
-    m_questionBox->setContentsMargins(margins.left(), 0, margins.right(), 0);
+    m_questions->setContentsMargins(margins.left(), 0, margins.right(), 0);
     buttons->addWidget(m_back, 0, 0);
     buttons->addWidget(m_next, 0, 1);
     buttons->addWidget(m_restart, 1, 0);
@@ -216,79 +159,42 @@ void LessonPlayer::buildNavigation(QVBoxLayout* layout)
     connect(m_handIn, &QPushButton::clicked, this, &LessonPlayer::handInInteractively);
     // The scene changed (a fitted e applied, an edit): what a run without a window measured
     // on the old one is measured again when next asked.
-    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
-        for (QuestionRow& row : m_rows)
-            row.aheadDone = false;
-    });
-    connect(m_lessonBox, &QComboBox::currentIndexChanged, this,
-            &LessonPlayer::showCurrentLessonTip);
-    m_lessonBox->installEventFilter(this);
-    m_lessonBox->setObjectName(QStringLiteral("lessonChoice"));
-    connect(m_lessonBox, &QComboBox::activated, this, [this](int index) {
-        const QString path = m_lessonBox->itemData(index).toString();
-        if (path.isEmpty())
-            return closeLesson();
-        const QString error = openLesson(path);
-        const ModalScope modal;
-        if (!error.isEmpty() && !m_openCancelled)
-            QMessageBox::warning(this, tr("Cannot open lesson"), error);
-    });
+    connect(&m_run, &RunView::sceneLoaded, this, [this] { m_judge.forgetMeasuredAhead(); });
+    connect(m_lessonBox, &LessonList::lessonChosen, this, &LessonPlayer::openChosen);
 }
 
-void LessonPlayer::showCurrentLessonTip()
+void LessonPlayer::openChosen(const QString& path)
 {
-    const QString what = tr("The lessons that come with RigidLab (File › Open lesson for others)");
-    const QString full = m_lessonBox->currentData(kFullTextRole).toString();
-    m_lessonBox->setToolTip(full.isEmpty() ? what : full + QStringLiteral("\n\n") + what);
-}
-
-void LessonPlayer::scanFolder(const QString& folder)
-{
-    // A broken shipped lesson is a test failure, not a menu entry: lessonsInOrder skips it.
-    listLessons(lessons::lessonsInOrder(folder));
+    if (path.isEmpty())
+        return closeLesson();
+    const QString error = openLesson(path);
+    const ModalScope modal;
+    if (!error.isEmpty() && !m_openCancelled)
+        QMessageBox::warning(this, tr("Cannot open lesson"), error);
 }
 
 void LessonPlayer::listLessons(const std::vector<lessons::LessonEntry>& entries)
 {
-    m_lessonBox->clear();
-    m_paths.clear();
-    m_menuTexts.clear();
-    m_lessonBox->addItem(tr("Choose a lesson…"), QString());
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-        const lessons::LessonEntry& entry = entries[i];
-        const QString text = lessons::lessonMenuText(entry, static_cast<int>(i) + 1);
-        // The box shows the short title, its list and tooltip the whole line.
-        m_lessonBox->addItem(QCoreApplication::translate("rigidlab::lessons", "%1. %2")
-                                 .arg(static_cast<int>(i) + 1)
-                                 .arg(shortTitle(entry.title)),
-                             entry.path);
-        m_lessonBox->setItemData(m_lessonBox->count() - 1, text, Qt::ToolTipRole);
-        m_lessonBox->setItemData(m_lessonBox->count() - 1, text, kFullTextRole);
-        m_paths << entry.path;
-        m_menuTexts << text;
-    }
-    // The box stays as narrow as its column; its list opens as wide as its longest line.
-    m_lessonBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_lessonBox->setMinimumContentsLength(12);
-    // Never wider than the screen, though: a line too long for it loses words in its middle,
-    // not its end (the lesson's time).
-    QAbstractItemView* view = m_lessonBox->view();
-    const int wanted =
-        view->sizeHintForColumn(0) + 24 + view->verticalScrollBar()->sizeHint().width();
-    const QScreen* screen = m_lessonBox->screen();
-    const int most = screen ? screen->availableGeometry().width() - 2 * kPopupMarginPx : wanted;
-    view->setTextElideMode(wanted > most ? Qt::ElideMiddle : Qt::ElideNone);
-    view->setMinimumWidth(std::min(wanted, most));
-    showCurrentLessonTip();
-    if (!m_lesson)
+    m_lessonBox->setLessons(entries);
+    if (!m_state.lesson())
         showStep(); // the start page names the first lesson
+}
+
+QStringList LessonPlayer::lessonPaths() const
+{
+    return m_lessonBox->paths();
+}
+
+QStringList LessonPlayer::lessonMenuTexts() const
+{
+    return m_lessonBox->menuTexts();
 }
 
 QString LessonPlayer::firstLessonPath() const
 {
     // listLessons() lists the lessons in teaching order (lessons::lessonsInOrder), the shipped
     // ones before the user's own.
-    return m_paths.value(0);
+    return m_lessonBox->paths().value(0);
 }
 
 QString LessonPlayer::openLesson(const QString& path)
@@ -303,59 +209,56 @@ QString LessonPlayer::openLesson(const QString& path)
         return r.error;
     if (r.lesson.steps.empty())
         return tr("%1: the lesson has no steps").arg(path);
-    m_lesson = std::make_unique<lessons::Lesson>(std::move(r.lesson));
+    m_state.open(std::move(r.lesson));
     m_aboutChosen = false;
-    const int index = m_lessonBox->findData(QFileInfo(path).absoluteFilePath());
-    if (index >= 0)
-        m_lessonBox->setCurrentIndex(index);
-    m_step = 0;
-    startRecord(*m_lesson);
+    m_lessonBox->showChosen(path);
+    m_judge.startRecord();
     showStep();
-    emit stepActivated(*m_lesson, m_step);
+    emit stepActivated(*m_state.lesson(), m_state.index());
     announceStep();
     return QString();
 }
 
 void LessonPlayer::closeLesson()
 {
-    if (!m_lesson)
+    if (!m_state.lesson())
         return;
-    m_lesson.reset();
-    m_lessonBox->setCurrentIndex(0);
+    m_state.close();
+    m_lessonBox->showNone();
     showStep();
     emit lessonClosed();
 }
 
 void LessonPlayer::goToStep(int index)
 {
-    if (!m_lesson || index < 0 || index >= static_cast<int>(m_lesson->steps.size()))
+    const int from = m_state.index();
+    if (!m_state.lesson() || index < 0 || index >= m_state.stepCount())
         return;
-    recordSettings(); // the world still runs the step being left
-    const bool cameBack = index != m_step;
-    m_step = index;
+    m_judge.recordSettings(); // the world still runs the step being left
+    m_state.goTo(index);
     showStep();
     // A step come back to is as the student left it, before the window sets it up with what
     // its answers released. Restart step starts it afresh, held back again; a lesson opened
     // anew starts with none shown.
-    if (cameBack)
+    if (index != from)
         replayRecordedTries();
-    emit stepActivated(*m_lesson, m_step);
+    emit stepActivated(*m_state.lesson(), m_state.index());
     announceStep();
 }
 
 void LessonPlayer::announceStep()
 {
-    if (!m_lesson)
+    const lessons::LessonStep* step = m_state.step();
+    if (!step)
         return;
-    const lessons::LessonStep& s = m_lesson->steps[static_cast<size_t>(m_step)];
     // The step's first sentence, which says what it is about.
     const QString text = m_text->toPlainText().simplified();
     static const QRegularExpression sentence(QStringLiteral("^.*?[.!?:](?=\\s|$)"));
     const QRegularExpressionMatch first = sentence.match(text);
     announce(*this, tr("Step %1 of %2: %3. %4")
-                        .arg(m_step + 1)
-                        .arg(m_lesson->steps.size())
-                        .arg(s.title, first.hasMatch() ? first.captured() : text.left(200)));
+                        .arg(m_state.index() + 1)
+                        .arg(m_state.stepCount())
+                        .arg(step->title, first.hasMatch() ? first.captured() : text.left(200)));
     // Then the focus on the step's text, so that a reader goes on reading it; once the window
     // has set up the step (docks shown and hidden move the focus).
     QTimer::singleShot(0, this, [this] {
@@ -366,68 +269,49 @@ void LessonPlayer::announceStep()
 
 void LessonPlayer::next()
 {
-    goToStep(m_step + 1);
+    goToStep(m_state.index() + 1);
 }
 void LessonPlayer::back()
 {
-    goToStep(m_step - 1);
+    goToStep(m_state.index() - 1);
 }
 void LessonPlayer::restartStep()
 {
-    goToStep(m_step);
+    goToStep(m_state.index());
 }
 
 void LessonPlayer::showStep()
 {
-    const bool has = m_lesson != nullptr;
+    const lessons::Lesson* l = m_state.lesson();
     for (QWidget* w :
          {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepCount),
           static_cast<QWidget*>(m_stepTitle), static_cast<QWidget*>(m_restart),
           static_cast<QWidget*>(m_back), static_cast<QWidget*>(m_next),
           static_cast<QWidget*>(m_export), static_cast<QWidget*>(m_handIn), m_studentBox})
-        w->setVisible(has);
-    // No lesson: a "start here" page instead of an empty text box.
-    m_text->setVisible(has);
+        w->setVisible(l != nullptr);
+    m_text->setVisible(l != nullptr);
     fitTextMinimum();
-    const QString first = firstLessonPath();
-    m_start->setVisible(!has && !first.isEmpty());
-    if (!has) {
-        m_aboutToggle->setVisible(false);
-        m_about->setVisible(true);
-        m_title->setText(tr("Start here"));
-        QString about = tr("RigidLab is a laboratory of moving bodies: run a prepared scene, "
-                           "change its settings and measure what happens. Each lesson walks "
-                           "you through one idea of mechanics step by step, with questions "
-                           "to answer on the way.");
-        const int index = m_lessonBox->findData(first);
-        if (index >= 0)
-            about += QStringLiteral("\n\n") +
-                     tr("The first lesson is “%1”; the list above holds the others.")
-                         .arg(m_lessonBox->itemText(index));
-        m_about->setText(about);
-        m_text->showMarkdown(QString());
-        m_rows.clear();
-        buildQuestions();
-        return;
-    }
-    const lessons::Lesson& l = *m_lesson;
-    const lessons::LessonStep& s = l.steps[static_cast<size_t>(m_step)];
+    m_start->setVisible(!l && !firstLessonPath().isEmpty());
+    if (!l)
+        return showStartPage();
+    const lessons::LessonStep& s = *m_state.step();
+    const int step = m_state.index();
     // A character no font has (an emoji) shows as its placeholder, not as an empty box.
-    m_title->setText(drawableText(l.title, m_title->font()));
-    QString about = l.summary;
-    if (!l.level.isEmpty() || l.minutes > 0)
-        about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l.level).arg(l.minutes);
+    m_title->setText(drawableText(l->title, m_title->font()));
+    QString about = l->summary;
+    if (!l->level.isEmpty() || l->minutes > 0)
+        about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l->level).arg(l->minutes);
     m_about->setText(about);
     // The summary introduces the lesson; on the later steps their text has its room.
-    m_aboutToggle->setVisible(m_step == 0 && !about.isEmpty());
-    m_about->setVisible(m_step == 0 && m_aboutToggle->isChecked());
-    m_progress->setRange(0, static_cast<int>(l.steps.size()));
-    m_progress->setValue(m_step + 1);
-    m_stepCount->setText(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
+    m_aboutToggle->setVisible(step == 0 && !about.isEmpty());
+    m_about->setVisible(step == 0 && m_aboutToggle->isChecked());
+    m_progress->setRange(0, m_state.stepCount());
+    m_progress->setValue(step + 1);
+    m_stepCount->setText(tr("Step %1 of %2").arg(step + 1).arg(m_state.stepCount()));
     m_stepTitle->setText(drawableText(s.title, m_stepTitle->font()));
     m_text->showMarkdown(drawableText(lessons::keepUnitsTogether(s.text), m_text->font()));
-    m_back->setEnabled(m_step > 0);
-    m_next->setEnabled(m_step + 1 < static_cast<int>(l.steps.size()));
+    m_back->setEnabled(m_state.hasBack());
+    m_next->setEnabled(m_state.hasNext());
     m_export->setEnabled(!s.plots.isEmpty());
     showHandIn();
     buildQuestions();
@@ -443,6 +327,23 @@ void LessonPlayer::showStep()
     QTimer::singleShot(0, this, toTop); // once the text's new height is laid out
 }
 
+void LessonPlayer::showStartPage()
+{
+    m_aboutToggle->setVisible(false);
+    m_about->setVisible(true);
+    m_title->setText(tr("Start here"));
+    QString about = tr("RigidLab is a laboratory of moving bodies: run a prepared scene, "
+                       "change its settings and measure what happens. Each lesson walks "
+                       "you through one idea of mechanics step by step, with questions "
+                       "to answer on the way.");
+    if (const QString first = m_lessonBox->shortText(firstLessonPath()); !first.isEmpty())
+        about += QStringLiteral("\n\n") +
+                 tr("The first lesson is “%1”; the list above holds the others.").arg(first);
+    m_about->setText(about);
+    m_text->showMarkdown(QString());
+    buildQuestions();
+}
+
 QScrollArea* LessonPlayer::scrollArea() const
 {
     QWidget* viewport = parentWidget();
@@ -452,7 +353,8 @@ QScrollArea* LessonPlayer::scrollArea() const
 void LessonPlayer::fitIntroduction()
 {
     QScrollArea* scroll = scrollArea();
-    if (!m_lesson || m_step != 0 || m_aboutChosen || !scroll || m_about->text().isEmpty())
+    if (!m_state.lesson() || m_state.index() != 0 || m_aboutChosen || !scroll ||
+        m_about->text().isEmpty())
         return;
     const int height = scroll->viewport()->height();
     const QMargins margins = layout()->contentsMargins();
@@ -478,16 +380,6 @@ void LessonPlayer::fitIntroduction()
 
 bool LessonPlayer::eventFilter(QObject* watched, QEvent* event)
 {
-    // On the closed list of lessons an arrow would open each lesson it passes: it opens the
-    // list instead, where the arrows walk and Return opens the one chosen.
-    if (watched == m_lessonBox && event->type() == QEvent::KeyPress) {
-        const int key = static_cast<QKeyEvent*>(event)->key();
-        if (key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_PageUp ||
-            key == Qt::Key_PageDown || key == Qt::Key_Home || key == Qt::Key_End) {
-            m_lessonBox->showPopup();
-            return true;
-        }
-    }
     if (event->type() == QEvent::Resize) {
         const QScrollArea* scroll = scrollArea();
         if (scroll && watched == scroll->viewport()) {
@@ -496,7 +388,7 @@ bool LessonPlayer::eventFilter(QObject* watched, QEvent* event)
         }
     }
     if (watched == m_text && event->type() == QEvent::FontChange) {
-        m_questionBox->setFont(m_text->font());
+        m_questions->setFont(m_text->font());
         fitQuestionRoom();
     }
     return QWidget::eventFilter(watched, event);
@@ -516,7 +408,7 @@ int LessonPlayer::stepTop() const
 {
     // The lesson's title and the name fields are a scroll up, once the introduction has
     // folded away (it does when the column is short) or on a later step.
-    const bool fromStep = m_lesson && (m_step > 0 || m_about->isHidden());
+    const bool fromStep = m_state.lesson() && (m_state.index() > 0 || m_about->isHidden());
     return fromStep ? std::max(0, m_stepCount->y() - layout()->spacing()) : 0;
 }
 
@@ -558,6 +450,137 @@ QWidget* LessonPlayer::takeNavigation()
     layout()->removeWidget(m_navigation);
     m_navigation->setParent(nullptr);
     return m_navigation;
+}
+
+void LessonPlayer::buildQuestions()
+{
+    m_judge.forgetMeasuredAhead();
+    static const std::vector<lessons::Question> none;
+    const lessons::LessonStep* step = m_state.step();
+    // Each kind builds its row (ui/question_kinds/); the player judges what it hands in.
+    m_questions->build(step ? step->questions : none,
+                       [this](std::size_t i) { return rowHooks(i); });
+    orderTabs();
+}
+
+RowHooks LessonPlayer::rowHooks(std::size_t i)
+{
+    // Each hook does nothing once the row is gone (another step, no lesson).
+    const auto live = [this, i] { return i < m_state.questionCount() && i < m_questions->count(); };
+    RowHooks hooks;
+    hooks.prompt = m_state.question(i).prompt;
+    hooks.judge = [this, i, live](const QuestionTry& attempt) {
+        return live() && judge(i, attempt);
+    };
+    hooks.typedNumber = [this, i, live]() -> std::optional<double> {
+        return live() ? m_questions->typedNumber(i) : std::nullopt;
+    };
+    hooks.askFirst = [this, i, live](const QString& text) {
+        if (live())
+            m_questions->askFirst(i, text);
+    };
+    hooks.measured = [this, i, live] { return live() ? m_judge.measuredTry(i) : QuestionTry{}; };
+    hooks.askedRun = [this, i, live] {
+        RunAdvice out;
+        if (!live())
+            return out;
+        const AskedRun asked = m_judge.askedRun(i);
+        if (!asked.matches())
+            out.advice = askedRunAdvice(asked);
+        out.setFirst = !asked.matches() && asked.studentCanSet;
+        return out;
+    };
+    return hooks;
+}
+
+bool LessonPlayer::judge(std::size_t i, const QuestionTry& attempt)
+{
+    const QuestionJudge::Judged judged = m_judge.judge(i, attempt);
+    if (!judged.kept) {
+        m_questions->askFirst(i, judged.verdict.message);
+        return false;
+    }
+    showJudged(i, attempt, judged);
+    return true;
+}
+
+void LessonPlayer::showJudged(std::size_t i, const QuestionTry& attempt,
+                              const QuestionJudge::Judged& judged)
+{
+    m_questions->showVerdict(i, judged.verdict, attempt, !m_replaying);
+    if (judged.given)
+        m_questions->setGiven(i);
+    if (judged.released && !m_replaying)
+        emit heldBackChanged(heldBack());
+}
+
+void LessonPlayer::orderTabs()
+{
+    // Made after the buttons below them, the questions would come last to Tab: the step's
+    // text, its questions with their answers, then Back, Next and the others, as they are
+    // shown.
+    QList<QWidget*> order{m_text};
+    order << m_questions->tabStops();
+    order << m_back << m_next << m_restart << m_export << m_handIn;
+    for (qsizetype k = 1; k < order.size(); ++k)
+        setTabOrder(order[k - 1], order[k]);
+}
+
+void LessonPlayer::replayRecordedTries()
+{
+    // Copied: judging a try writes the record again (the same tries, in the same order).
+    const std::vector<std::vector<QuestionTry>> questions = m_judge.recordedTries();
+    m_replaying = true;
+    for (std::size_t i = 0; i < std::min(questions.size(), m_questions->count()); ++i)
+        for (const QuestionTry& attempt : questions[i])
+            showJudged(i, attempt, m_judge.judgeAgain(i, attempt));
+    m_replaying = false;
+}
+
+QStringList LessonPlayer::heldBack() const
+{
+    return m_state.heldBack();
+}
+
+StepWork LessonPlayer::work() const
+{
+    return StepWork{m_state.tries(), m_questions->typed()};
+}
+
+void LessonPlayer::restoreWork(const StepWork& work)
+{
+    if (!m_state.lesson())
+        return;
+    // Afresh: the step may already hold the record's tries, the same as `work`'s.
+    m_state.goTo(m_state.index());
+    buildQuestions();
+    for (std::size_t i = 0; i < m_questions->count(); ++i) {
+        if (i < work.tries.size())
+            for (const QuestionTry& attempt : work.tries[i])
+                showJudged(i, attempt, m_judge.judgeAgain(i, attempt));
+        if (i < static_cast<std::size_t>(work.typed.size()))
+            m_questions->setTyped(i, work.typed[static_cast<qsizetype>(i)]);
+    }
+}
+
+void LessonPlayer::answer(int question, const QString& text)
+{
+    m_questions->answer(question, text);
+}
+
+QString LessonPlayer::result(int question) const
+{
+    return m_questions->result(question);
+}
+
+void LessonPlayer::choose(int question, int option)
+{
+    m_questions->choose(question, option);
+}
+
+void LessonPlayer::showMe(int question)
+{
+    m_questions->showMe(question);
 }
 
 } // namespace rigidlab::ui
