@@ -1,29 +1,23 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_player/lesson_player.h"
+#include "lesson_player/hand_in.h"
 #include "lesson_player/lesson_list.h"
 #include "lesson_player/question_area.h"
 #include "lesson_player/question_rows.h"
+#include "lesson_player/step_buttons.h"
+#include "lesson_player/step_page.h"
 #include "lesson_player/step_text.h"
 
-#include "common/announcer.h"
-#include "common/drawable_text.h"
 #include "common/modal_scope.h"
 #include "simulation/run_view.h"
 
 #include <QEvent>
-#include <QGridLayout>
-#include <QHBoxLayout>
-#include <QLabel>
-#include <QLineEdit>
+#include <QMenu>
 #include <QMessageBox>
-#include <QProgressBar>
 #include <QPushButton>
-#include <QRegularExpression>
 #include <QScrollArea>
 #include <QScrollBar>
-#include <QSignalBlocker>
 #include <QTimer>
-#include <QToolButton>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -38,51 +32,26 @@ constexpr double kTextShare = 0.4;
 /// The lines of the step's text kept in sight below its title before the questions below it
 /// take the column's height (the first question is in sight whatever the text leaves it).
 constexpr int kTextLines = 6;
+
 } // namespace
 
 LessonPlayer::LessonPlayer(const RunView& run, QWidget* parent)
-    : QWidget(parent), m_run(run), m_lessonBox(new LessonList(this)), m_title(new QLabel(this)),
-      m_aboutToggle(new QToolButton(this)), m_about(new QLabel(this)),
-      m_progress(new QProgressBar(this)), m_stepCount(new QLabel(this)),
-      m_stepTitle(new QLabel(this)), m_text(new StepText(this)),
-      m_questions(new QuestionRows(this)), m_back(new QPushButton(tr("◀ Back"), this)),
-      m_restart(new QPushButton(tr("Restart step"), this)),
-      m_next(new QPushButton(tr("Next ▶"), this)),
-      m_export(new QPushButton(tr("Export plots…"), this)),
-      m_handIn(new QPushButton(tr("Hand in…"), this)), m_studentBox(new QWidget(this)),
-      m_studentName(new QLineEdit(m_studentBox)), m_studentClass(new QLineEdit(m_studentBox)),
+    : QWidget(parent), m_run(run), m_lessonBox(new LessonList(this)), m_page(new StepPage(this)),
+      m_text(m_page->text()), m_questions(new QuestionRows(this)), m_buttons(new StepButtons(this)),
+      m_handIn(new HandIn(m_state, m_judge, this)),
       m_start(new QPushButton(tr("Start the first lesson"), this))
 {
-    m_text->setNameWhenEmpty(tr("Step text"));
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(m_lessonBox);
-    buildIntroduction(layout);
-    buildStudentFields(layout);
+    m_page->addHead(layout);
+    layout->addWidget(m_handIn);
     // On a first start, with no lesson open, the way in: one button to the first lesson.
     m_start->setObjectName(QStringLiteral("startFirstLesson"));
     connect(m_start, &QPushButton::clicked, this, [this] { openChosen(firstLessonPath()); });
     layout->addWidget(m_start);
-    // "Step 2 of 4" beside the bar rather than on it: text across the bar's filled edge is
-    // half white on blue, half black on blue, and the black part unreadable.
-    m_progress->setTextVisible(false);
-    m_progress->setMaximumHeight(QFontMetrics(font()).height() / 2 + 4);
-    auto* progressRow = new QHBoxLayout;
-    progressRow->addWidget(m_stepCount);
-    progressRow->addWidget(m_progress, 1);
-    layout->addLayout(progressRow);
-    QFont bold = m_stepTitle->font();
-    bold.setBold(true);
-    bold.setPointSizeF(bold.pointSizeF() * 1.15);
-    m_stepTitle->setFont(bold);
-    m_stepTitle->setWordWrap(true);
-    layout->addWidget(m_stepTitle);
-    QFont textFont = m_text->font();
-    textFont.setPointSizeF(textFont.pointSizeF() * 1.1); // readable on a projector
-    m_text->setFont(textFont);
-    // The text is as tall as its words; the lesson's column scrolls it, with the titles above
-    // it. The questions and the buttons stay in sight below it (takeNavigation()): the class
-    // sees what it is asked, where it answers and the verdict while the text is read.
-    layout->addWidget(m_text);
+    m_page->addStep(layout);
+    // The questions and the buttons stay in sight below the text (takeNavigation()): the
+    // class sees what it is asked, where it answers and the verdict while the text is read.
     // The questions and their verdicts as large as the step's text (the text's font is
     // followed, in eventFilter; presentation mode scales the text, not them twice).
     m_questions->setProperty(kFontFollowsProperty, true);
@@ -94,69 +63,29 @@ LessonPlayer::LessonPlayer(const RunView& run, QWidget* parent)
     showStep();
 }
 
-void LessonPlayer::buildIntroduction(QVBoxLayout* layout)
-{
-    QFont big = m_title->font();
-    big.setPointSizeF(big.pointSizeF() * 1.35);
-    big.setBold(true);
-    m_title->setFont(big);
-    m_title->setWordWrap(true);
-    m_about->setWordWrap(true);
-    // Grey through the palette, not a style sheet: a style sheet would keep the text at its
-    // first font when presentation mode enlarges the window's.
-    QPalette grey = m_about->palette();
-    grey.setColor(QPalette::WindowText, QColor(0x55, 0x55, 0x55)); // 7.5:1 on white
-    m_about->setPalette(grey);
-    layout->addWidget(m_title);
-    // The introduction folds away, leaving its room to the step's text and questions.
-    m_aboutToggle->setObjectName(QStringLiteral("lessonIntroToggle"));
-    m_aboutToggle->setText(tr("Introduction"));
-    m_aboutToggle->setToolTip(tr("Show or hide the lesson's introduction"));
-    m_aboutToggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_aboutToggle->setAutoRaise(true);
-    m_aboutToggle->setCheckable(true);
-    m_aboutToggle->setChecked(true);
-    m_aboutToggle->setArrowType(Qt::DownArrow);
-    connect(m_aboutToggle, &QToolButton::toggled, this, [this](bool on) {
-        m_aboutToggle->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
-        m_about->setVisible(on && m_state.index() == 0);
-    });
-    connect(m_aboutToggle, &QToolButton::clicked, this, [this] { m_aboutChosen = true; });
-    layout->addWidget(m_aboutToggle);
-    layout->addWidget(m_about);
-}
-
 void LessonPlayer::buildNavigation(QVBoxLayout* layout)
 {
     // The questions and the buttons are a widget of their own, so that the window can keep
-    // them in sight below the lesson that scrolls (takeNavigation()). Two buttons a row, so
-    // that the panel fits the narrow column of a 1024-pixel projector.
+    // them in sight below the lesson that scrolls (takeNavigation()).
     m_navigation = new QWidget(this);
     m_navigation->setObjectName(QStringLiteral("lessonInSight"));
     auto* column = new QVBoxLayout(m_navigation);
     column->setContentsMargins(0, 0, 0, 0);
     m_questionArea = new QuestionArea(m_questions, m_navigation);
     column->addWidget(m_questionArea);
-    m_buttons = new QWidget(m_navigation);
-    m_buttons->setObjectName(QStringLiteral("lessonNavigation"));
     column->addWidget(m_buttons);
-    auto* buttons = new QGridLayout(m_buttons);
     // In line with the text above, wherever the window puts them.
     const QMargins margins = layout->contentsMargins();
-    buttons->setContentsMargins(margins.left(), 0, margins.right(), 0);
+    m_buttons->layout()->setContentsMargins(margins.left(), 0, margins.right(), 0);
     m_questions->setContentsMargins(margins.left(), 0, margins.right(), 0);
-    buttons->addWidget(m_back, 0, 0);
-    buttons->addWidget(m_next, 0, 1);
-    buttons->addWidget(m_restart, 1, 0);
-    buttons->addWidget(m_export, 1, 1);
-    buttons->addWidget(m_handIn, 2, 0, 1, 2);
     layout->addWidget(m_navigation);
 
-    connect(m_back, &QPushButton::clicked, this, &LessonPlayer::back);
-    connect(m_next, &QPushButton::clicked, this, &LessonPlayer::next);
-    connect(m_restart, &QPushButton::clicked, this, &LessonPlayer::restartStep);
-    connect(m_export, &QPushButton::clicked, this, &LessonPlayer::exportRequested);
-    connect(m_handIn, &QPushButton::clicked, this, &LessonPlayer::handInInteractively);
+    connect(m_buttons, &StepButtons::backClicked, this, &LessonPlayer::back);
+    connect(m_buttons, &StepButtons::nextClicked, this, &LessonPlayer::next);
+    connect(m_buttons, &StepButtons::restartClicked, this, &LessonPlayer::restartStep);
+    connect(m_buttons, &StepButtons::exportClicked, this, &LessonPlayer::exportRequested);
+    connect(m_buttons, &StepButtons::handInClicked, this, &LessonPlayer::handInInteractively);
+    connect(m_handIn, &HandIn::handedIn, this, &LessonPlayer::handedIn);
     // The scene changed (a fitted e applied, an edit): what a run without a window measured
     // on the old one is measured again when next asked.
     connect(&m_run, &RunView::sceneLoaded, this, [this] { m_judge.forgetMeasuredAhead(); });
@@ -210,7 +139,7 @@ QString LessonPlayer::openLesson(const QString& path)
     if (r.lesson.steps.empty())
         return tr("%1: the lesson has no steps").arg(path);
     m_state.open(std::move(r.lesson));
-    m_aboutChosen = false;
+    m_page->forgetReadersChoice();
     m_lessonBox->showChosen(path);
     m_judge.startRecord();
     showStep();
@@ -248,23 +177,8 @@ void LessonPlayer::goToStep(int index)
 
 void LessonPlayer::announceStep()
 {
-    const lessons::LessonStep* step = m_state.step();
-    if (!step)
-        return;
-    // The step's first sentence, which says what it is about.
-    const QString text = m_text->toPlainText().simplified();
-    static const QRegularExpression sentence(QStringLiteral("^.*?[.!?:](?=\\s|$)"));
-    const QRegularExpressionMatch first = sentence.match(text);
-    announce(*this, tr("Step %1 of %2: %3. %4")
-                        .arg(m_state.index() + 1)
-                        .arg(m_state.stepCount())
-                        .arg(step->title, first.hasMatch() ? first.captured() : text.left(200)));
-    // Then the focus on the step's text, so that a reader goes on reading it; once the window
-    // has set up the step (docks shown and hidden move the focus).
-    QTimer::singleShot(0, this, [this] {
-        if (m_text->isVisible())
-            m_text->setFocus(Qt::OtherFocusReason);
-    });
+    if (const lessons::Lesson* lesson = m_state.lesson())
+        m_page->announceStep(*lesson, m_state.index());
 }
 
 void LessonPlayer::next()
@@ -282,39 +196,19 @@ void LessonPlayer::restartStep()
 
 void LessonPlayer::showStep()
 {
-    const lessons::Lesson* l = m_state.lesson();
-    for (QWidget* w :
-         {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepCount),
-          static_cast<QWidget*>(m_stepTitle), static_cast<QWidget*>(m_restart),
-          static_cast<QWidget*>(m_back), static_cast<QWidget*>(m_next),
-          static_cast<QWidget*>(m_export), static_cast<QWidget*>(m_handIn), m_studentBox})
-        w->setVisible(l != nullptr);
-    m_text->setVisible(l != nullptr);
+    const lessons::Lesson* lesson = m_state.lesson();
+    const lessons::LessonStep* step = m_state.step();
+    m_buttons->showStep(m_state.index(), m_state.stepCount(), step && !step->plots.isEmpty());
+    m_handIn->setVisible(lesson != nullptr);
+    m_start->setVisible(!lesson && !firstLessonPath().isEmpty());
+    if (lesson)
+        m_page->showStep(*lesson, m_state.index());
+    else
+        m_page->showStart(m_lessonBox->shortText(firstLessonPath()));
     fitTextMinimum();
-    m_start->setVisible(!l && !firstLessonPath().isEmpty());
-    if (!l)
-        return showStartPage();
-    const lessons::LessonStep& s = *m_state.step();
-    const int step = m_state.index();
-    // A character no font has (an emoji) shows as its placeholder, not as an empty box.
-    m_title->setText(drawableText(l->title, m_title->font()));
-    QString about = l->summary;
-    if (!l->level.isEmpty() || l->minutes > 0)
-        about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l->level).arg(l->minutes);
-    m_about->setText(about);
-    // The summary introduces the lesson; on the later steps their text has its room.
-    m_aboutToggle->setVisible(step == 0 && !about.isEmpty());
-    m_about->setVisible(step == 0 && m_aboutToggle->isChecked());
-    m_progress->setRange(0, m_state.stepCount());
-    m_progress->setValue(step + 1);
-    m_stepCount->setText(tr("Step %1 of %2").arg(step + 1).arg(m_state.stepCount()));
-    m_stepTitle->setText(drawableText(s.title, m_stepTitle->font()));
-    m_text->showMarkdown(drawableText(lessons::keepUnitsTogether(s.text), m_text->font()));
-    m_back->setEnabled(m_state.hasBack());
-    m_next->setEnabled(m_state.hasNext());
-    m_export->setEnabled(!s.plots.isEmpty());
-    showHandIn();
     buildQuestions();
+    if (!lesson)
+        return;
     fitIntroduction();
     fitQuestionRoom();
     // A new step is read from its top: the lesson's title and introduction on the first
@@ -327,23 +221,6 @@ void LessonPlayer::showStep()
     QTimer::singleShot(0, this, toTop); // once the text's new height is laid out
 }
 
-void LessonPlayer::showStartPage()
-{
-    m_aboutToggle->setVisible(false);
-    m_about->setVisible(true);
-    m_title->setText(tr("Start here"));
-    QString about = tr("RigidLab is a laboratory of moving bodies: run a prepared scene, "
-                       "change its settings and measure what happens. Each lesson walks "
-                       "you through one idea of mechanics step by step, with questions "
-                       "to answer on the way.");
-    if (const QString first = m_lessonBox->shortText(firstLessonPath()); !first.isEmpty())
-        about += QStringLiteral("\n\n") +
-                 tr("The first lesson is “%1”; the list above holds the others.").arg(first);
-    m_about->setText(about);
-    m_text->showMarkdown(QString());
-    buildQuestions();
-}
-
 QScrollArea* LessonPlayer::scrollArea() const
 {
     QWidget* viewport = parentWidget();
@@ -353,29 +230,17 @@ QScrollArea* LessonPlayer::scrollArea() const
 void LessonPlayer::fitIntroduction()
 {
     QScrollArea* scroll = scrollArea();
-    if (!m_state.lesson() || m_state.index() != 0 || m_aboutChosen || !scroll ||
-        m_about->text().isEmpty())
+    if (!m_state.lesson() || m_state.index() != 0 || !scroll)
         return;
     const int height = scroll->viewport()->height();
     const QMargins margins = layout()->contentsMargins();
     const int width = scroll->viewport()->width() - margins.left() - margins.right();
     if (height <= 0 || width <= 0)
         return;
-    // What is above the text when the step opens: the list, the titles, the bar, the intro.
+    // Above the lesson's title: the list of lessons.
     const int spacing = layout()->spacing();
-    int above = margins.top();
-    for (QWidget* w : {static_cast<QWidget*>(m_lessonBox), static_cast<QWidget*>(m_title),
-                       static_cast<QWidget*>(m_aboutToggle), static_cast<QWidget*>(m_stepCount),
-                       static_cast<QWidget*>(m_stepTitle)}) {
-        const int h = w->hasHeightForWidth() ? w->heightForWidth(width) : w->sizeHint().height();
-        above += h + spacing;
-    }
-    const int about = m_about->heightForWidth(width) + spacing;
-    const bool fits = height - above - about >= kTextShare * height;
-    const QSignalBlocker quiet(m_aboutToggle); // not the reader's choice
-    m_aboutToggle->setChecked(fits);
-    m_aboutToggle->setArrowType(fits ? Qt::DownArrow : Qt::RightArrow);
-    m_about->setVisible(fits);
+    const int above = margins.top() + m_lessonBox->sizeHint().height() + spacing;
+    m_page->fitIntroduction(height, width, above, spacing, kTextShare);
 }
 
 bool LessonPlayer::eventFilter(QObject* watched, QEvent* event)
@@ -408,8 +273,8 @@ int LessonPlayer::stepTop() const
 {
     // The lesson's title and the name fields are a scroll up, once the introduction has
     // folded away (it does when the column is short) or on a later step.
-    const bool fromStep = m_state.lesson() && (m_state.index() > 0 || m_about->isHidden());
-    return fromStep ? std::max(0, m_stepCount->y() - layout()->spacing()) : 0;
+    const bool fromStep = m_state.lesson() && (m_state.index() > 0 || !m_page->introductionShown());
+    return fromStep ? std::max(0, m_page->stepCount()->y() - layout()->spacing()) : 0;
 }
 
 void LessonPlayer::fitQuestionRoom()
@@ -521,7 +386,7 @@ void LessonPlayer::orderTabs()
     // shown.
     QList<QWidget*> order{m_text};
     order << m_questions->tabStops();
-    order << m_back << m_next << m_restart << m_export << m_handIn;
+    order << m_buttons->tabStops();
     for (qsizetype k = 1; k < order.size(); ++k)
         setTabOrder(order[k - 1], order[k]);
 }
@@ -581,6 +446,48 @@ void LessonPlayer::choose(int question, int option)
 void LessonPlayer::showMe(int question)
 {
     m_questions->showMe(question);
+}
+
+void LessonPlayer::setStudent(const QString& name, const QString& className)
+{
+    m_handIn->setStudent(name, className);
+}
+
+QString LessonPlayer::student() const
+{
+    return m_handIn->student();
+}
+
+lessons::Answers LessonPlayer::answers() const
+{
+    return m_handIn->answers();
+}
+
+QString LessonPlayer::handIn(const QString& pdfPath)
+{
+    return m_handIn->handIn(pdfPath);
+}
+
+void LessonPlayer::handInInteractively()
+{
+    m_handIn->handInInteractively();
+}
+
+void LessonPlayer::addWorksheetActions(QMenu& menu)
+{
+    QAction* empty = menu.addAction(tr("Works&heet to print…"), this,
+                                    [this] { m_handIn->writeSheetInteractively(false); });
+    empty->setObjectName(QStringLiteral("emptyWorksheet"));
+    empty->setToolTip(tr("The open lesson's questions with lines to write on, and its figures"));
+    QAction* key = menu.addAction(tr("Teacher's &key…"), this,
+                                  [this] { m_handIn->writeSheetInteractively(true); });
+    key->setObjectName(QStringLiteral("worksheetKey"));
+    key->setToolTip(tr("The open lesson's questions with the values the simulation measures"));
+    for (QAction* action : {empty, key}) {
+        action->setEnabled(lesson() != nullptr);
+        connect(this, &LessonPlayer::stepActivated, action, [action] { action->setEnabled(true); });
+        connect(this, &LessonPlayer::lessonClosed, action, [action] { action->setEnabled(false); });
+    }
 }
 
 } // namespace rigidlab::ui

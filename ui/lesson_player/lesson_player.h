@@ -3,8 +3,10 @@
 // The lesson player: pick a lesson, read a step, answer its questions, go back and forth.
 // It only shows; the window applies each step (scene, settings, panels) when told to. It wires
 // the parts that do the work: where the student is (step_state), the judging of the tries
-// (question_judge, with the session's answers_record), the list of lessons (lesson_list), the
-// step's text (step_text) and its questions (question_rows, in a question_area).
+// (question_judge, with the session's answers_record), and the widgets: the list of lessons
+// (lesson_list), the lesson's and the step's titles and text (step_page), the questions
+// (question_rows, in a question_area), the buttons (step_buttons) and the student's name with
+// Hand in (hand_in); and it shares the column's height between them when a step opens.
 
 #include "lesson_player/question_judge.h"
 #include "lesson_player/step_state.h"
@@ -19,21 +21,20 @@
 #include <functional>
 #include <vector>
 
-class QLabel;
-class QLineEdit;
 class QMenu;
-class QProgressBar;
 class QScrollArea;
 class QPushButton;
-class QToolButton;
 class QVBoxLayout;
 
 namespace rigidlab::ui {
 
+class HandIn;
 class LessonList;
 class QuestionArea;
 class QuestionRows;
 class RunView;
+class StepButtons;
+class StepPage;
 class StepText;
 
 /// One try at a question: Check with a typed answer, or "Show me" (no answer), with the
@@ -131,15 +132,11 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    /// The lesson's title and its introduction, which folds away.
-    void buildIntroduction(QVBoxLayout* layout);
     /// Back, Next, Restart step and Export plots, and what the buttons and the list do.
     void buildNavigation(QVBoxLayout* layout);
     /// Opens the lesson the list or the start button chose (none: closes), and says why not.
     void openChosen(const QString& path);
     void showStep();
-    /// No lesson: a "start here" page instead of an empty text box.
-    void showStartPage();
     /// Tells a screen reader the step just shown (its number, title and first sentence) and
     /// puts the focus on its text.
     void announceStep();
@@ -171,37 +168,18 @@ private:
     /// Judges again the tries the session's record holds for the current step (the student
     /// went on and came back): the same verdicts, and what they released stays released.
     void replayRecordedTries();
-    /// The student's name and class fields.
-    void buildStudentFields(QVBoxLayout* layout);
-    /// Asks for a file and writes the empty worksheet (or the key) of the open lesson there.
-    void writeSheetInteractively(bool key);
-    /// On the last step, Hand in says that it finishes the lesson.
-    void showHandIn();
 
     const RunView& m_run;
     StepState m_state;
     QuestionJudge m_judge{m_state, m_run};
     LessonList* m_lessonBox;
-    QLabel* m_title;
-    QToolButton* m_aboutToggle; ///< folds the introduction (m_about) away
-    QLabel* m_about;
-    bool m_aboutChosen = false; ///< the reader folded or opened the introduction by hand
-    QProgressBar* m_progress;
-    QLabel* m_stepCount; ///< "Step 2 of 4", beside the progress bar
-    QLabel* m_stepTitle;
-    StepText* m_text;
+    StepPage* m_page; ///< the lesson's title and introduction, the step's title and text
+    StepText* m_text; ///< the step's text, on m_page
     QuestionRows* m_questions;
-    QWidget* m_navigation = nullptr; ///< the questions; Back, Next, Restart step, Export plots
+    StepButtons* m_buttons;                 ///< Back, Next, Restart step, Export plots, Hand in
+    QWidget* m_navigation = nullptr;        ///< the questions and m_buttons
     QuestionArea* m_questionArea = nullptr; ///< the questions, in sight below the text
-    QWidget* m_buttons = nullptr;           ///< Back, Next, Restart step, Export plots, Hand in
-    QPushButton* m_back;
-    QPushButton* m_restart;
-    QPushButton* m_next;
-    QPushButton* m_export;
-    QPushButton* m_handIn;
-    QWidget* m_studentBox; ///< the name and class, shown while a lesson is open
-    QLineEdit* m_studentName;
-    QLineEdit* m_studentClass;
+    HandIn* m_handIn;     ///< the name and class, shown while a lesson is open; Hand in
     QPushButton* m_start; ///< opens the first lesson; shown while none is open
     std::function<bool()> m_leaveGuard;
     bool m_openCancelled = false; ///< the last openLesson() was declined by the leave guard
