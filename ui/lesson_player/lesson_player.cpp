@@ -1,43 +1,26 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_player/lesson_player.h"
+#include "lesson_player/hand_in.h"
+#include "lesson_player/lesson_list.h"
 #include "lesson_player/question_area.h"
+#include "lesson_player/question_rows.h"
+#include "lesson_player/step_buttons.h"
+#include "lesson_player/step_page.h"
 #include "lesson_player/step_text.h"
 
-#include "common/announcer.h"
-#include "common/drawable_text.h"
 #include "common/modal_scope.h"
-#include "panels/number_field.h"
-#include "simulation/simulation_controller.h"
+#include "simulation/run_view.h"
 
-#include "format/lesson_catalog.h"
-
-#include "run/measurements.h"
-
-#include <QAbstractItemView>
-#include <QComboBox>
-#include <QCoreApplication>
-#include <QDir>
 #include <QEvent>
-#include <QFileInfo>
-#include <QGridLayout>
-#include <QHBoxLayout>
-#include <QKeyEvent>
-#include <QLabel>
-#include <QLineEdit>
+#include <QMenu>
 #include <QMessageBox>
-#include <QProgressBar>
 #include <QPushButton>
-#include <QRegularExpression>
-#include <QScreen>
 #include <QScrollArea>
 #include <QScrollBar>
-#include <QSignalBlocker>
-#include <QStyledItemDelegate>
 #include <QTimer>
-#include <QToolButton>
 #include <QVBoxLayout>
 
-#include <cmath>
+#include <algorithm>
 
 namespace rigidlab::ui {
 
@@ -49,101 +32,30 @@ constexpr double kTextShare = 0.4;
 /// The lines of the step's text kept in sight below its title before the questions below it
 /// take the column's height (the first question is in sight whatever the text leaves it).
 constexpr int kTextLines = 6;
-/// The longest short title a lesson has in the list box [characters].
-constexpr int kShortTitleLength = 24;
-/// The least room between the lesson list's popup and the screen's edges [px].
-constexpr int kPopupMarginPx = 8;
-/// The list's role holding an entry's full menu line (the box itself shows the short one).
-constexpr int kFullTextRole = Qt::UserRole + 1;
-
-/// A lesson's title as the list box shows it: up to its first ": " or dash ("Energy drift:
-/// four ways…" → "Energy drift"), and at most kShortTitleLength characters, cut between words.
-QString shortTitle(const QString& title)
-{
-    QString out = title;
-    for (const QString& cut : {QStringLiteral(": "), QStringLiteral(" – "), QStringLiteral(" — ")})
-        if (const qsizetype at = out.indexOf(cut); at > 0)
-            out.truncate(at);
-    if (out.size() > kShortTitleLength) {
-        const qsizetype space = out.lastIndexOf(u' ', kShortTitleLength);
-        out.truncate(space > 0 ? space : kShortTitleLength);
-        out += QChar(0x2026); // …
-    }
-    return out;
-}
-
-/// The open list shows each lesson's full line (title, description, time).
-class FullTextDelegate : public QStyledItemDelegate {
-public:
-    using QStyledItemDelegate::QStyledItemDelegate;
-
-protected:
-    void initStyleOption(QStyleOptionViewItem* option, const QModelIndex& index) const override
-    {
-        QStyledItemDelegate::initStyleOption(option, index);
-        const QString full = index.data(kFullTextRole).toString();
-        if (!full.isEmpty())
-            option->text = full;
-    }
-};
 
 } // namespace
 
-LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
-    : QWidget(parent), m_controller(controller), m_lessonBox(new QComboBox(this)),
-      m_title(new QLabel(this)), m_aboutToggle(new QToolButton(this)), m_about(new QLabel(this)),
-      m_progress(new QProgressBar(this)), m_stepCount(new QLabel(this)),
-      m_stepTitle(new QLabel(this)), m_text(new StepText(this)), m_questionBox(new QWidget(this)),
-      m_questionLayout(new QVBoxLayout(m_questionBox)), m_back(new QPushButton(tr("◀ Back"), this)),
-      m_restart(new QPushButton(tr("Restart step"), this)),
-      m_next(new QPushButton(tr("Next ▶"), this)),
-      m_export(new QPushButton(tr("Export plots…"), this)),
-      m_handIn(new QPushButton(tr("Hand in…"), this)), m_studentBox(new QWidget(this)),
-      m_studentName(new QLineEdit(m_studentBox)), m_studentClass(new QLineEdit(m_studentBox)),
+LessonPlayer::LessonPlayer(const RunView& run, QWidget* parent)
+    : QWidget(parent), m_run(run), m_lessonBox(new LessonList(this)), m_page(new StepPage(this)),
+      m_text(m_page->text()), m_questions(new QuestionRows(this)), m_buttons(new StepButtons(this)),
+      m_handIn(new HandIn(m_state, m_judge, this)),
       m_start(new QPushButton(tr("Start the first lesson"), this))
 {
-    m_text->setNameWhenEmpty(tr("Step text"));
     auto* layout = new QVBoxLayout(this);
-    m_lessonBox->view()->setItemDelegate(new FullTextDelegate(m_lessonBox->view()));
     layout->addWidget(m_lessonBox);
-    buildIntroduction(layout);
-    buildStudentFields(layout);
+    m_page->addHead(layout);
+    layout->addWidget(m_handIn);
     // On a first start, with no lesson open, the way in: one button to the first lesson.
     m_start->setObjectName(QStringLiteral("startFirstLesson"));
-    connect(m_start, &QPushButton::clicked, this, [this] {
-        const QString error = openLesson(firstLessonPath());
-        const ModalScope modal;
-        if (!error.isEmpty() && !m_openCancelled)
-            QMessageBox::warning(this, tr("Cannot open lesson"), error);
-    });
+    connect(m_start, &QPushButton::clicked, this, [this] { openChosen(firstLessonPath()); });
     layout->addWidget(m_start);
-    // "Step 2 of 4" beside the bar rather than on it: text across the bar's filled edge is
-    // half white on blue, half black on blue, and the black part unreadable.
-    m_progress->setTextVisible(false);
-    m_progress->setMaximumHeight(QFontMetrics(font()).height() / 2 + 4);
-    auto* progressRow = new QHBoxLayout;
-    progressRow->addWidget(m_stepCount);
-    progressRow->addWidget(m_progress, 1);
-    layout->addLayout(progressRow);
-    QFont bold = m_stepTitle->font();
-    bold.setBold(true);
-    bold.setPointSizeF(bold.pointSizeF() * 1.15);
-    m_stepTitle->setFont(bold);
-    m_stepTitle->setWordWrap(true);
-    layout->addWidget(m_stepTitle);
-    QFont textFont = m_text->font();
-    textFont.setPointSizeF(textFont.pointSizeF() * 1.1); // readable on a projector
-    m_text->setFont(textFont);
-    // The text is as tall as its words; the lesson's column scrolls it, with the titles above
-    // it. The questions and the buttons stay in sight below it (takeNavigation()): the class
-    // sees what it is asked, where it answers and the verdict while the text is read.
-    layout->addWidget(m_text);
-    m_questionBox->setObjectName(QStringLiteral("lessonQuestions"));
-    m_questionLayout->setContentsMargins(0, 0, 0, 0);
+    m_page->addStep(layout);
+    // The questions and the buttons stay in sight below the text (takeNavigation()): the
+    // class sees what it is asked, where it answers and the verdict while the text is read.
     // The questions and their verdicts as large as the step's text (the text's font is
     // followed, in eventFilter; presentation mode scales the text, not them twice).
-    m_questionBox->setProperty(kFontFollowsProperty, true);
-    m_questionBox->setFont(m_text->font());
+    m_questions->setProperty(kFontFollowsProperty, true);
+    m_questions->setFont(m_text->font());
     m_text->installEventFilter(this);
     // The start page (no lesson, so no text) keeps to the top instead of spreading out.
     layout->addStretch(0);
@@ -151,144 +63,67 @@ LessonPlayer::LessonPlayer(SimulationController& controller, QWidget* parent)
     showStep();
 }
 
-void LessonPlayer::buildIntroduction(QVBoxLayout* layout)
-{
-    QFont big = m_title->font();
-    big.setPointSizeF(big.pointSizeF() * 1.35);
-    big.setBold(true);
-    m_title->setFont(big);
-    m_title->setWordWrap(true);
-    m_about->setWordWrap(true);
-    // Grey through the palette, not a style sheet: a style sheet would keep the text at its
-    // first font when presentation mode enlarges the window's.
-    QPalette grey = m_about->palette();
-    grey.setColor(QPalette::WindowText, QColor(0x55, 0x55, 0x55)); // 7.5:1 on white
-    m_about->setPalette(grey);
-    layout->addWidget(m_title);
-    // The introduction folds away, leaving its room to the step's text and questions.
-    m_aboutToggle->setObjectName(QStringLiteral("lessonIntroToggle"));
-    m_aboutToggle->setText(tr("Introduction"));
-    m_aboutToggle->setToolTip(tr("Show or hide the lesson's introduction"));
-    m_aboutToggle->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
-    m_aboutToggle->setAutoRaise(true);
-    m_aboutToggle->setCheckable(true);
-    m_aboutToggle->setChecked(true);
-    m_aboutToggle->setArrowType(Qt::DownArrow);
-    connect(m_aboutToggle, &QToolButton::toggled, this, [this](bool on) {
-        m_aboutToggle->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
-        m_about->setVisible(on && (!m_lesson || m_step == 0));
-    });
-    connect(m_aboutToggle, &QToolButton::clicked, this, [this] { m_aboutChosen = true; });
-    layout->addWidget(m_aboutToggle);
-    layout->addWidget(m_about);
-}
-
 void LessonPlayer::buildNavigation(QVBoxLayout* layout)
 {
     // The questions and the buttons are a widget of their own, so that the window can keep
-    // them in sight below the lesson that scrolls (takeNavigation()). Two buttons a row, so
-    // that the panel fits the narrow column of a 1024-pixel projector.
+    // them in sight below the lesson that scrolls (takeNavigation()).
     m_navigation = new QWidget(this);
     m_navigation->setObjectName(QStringLiteral("lessonInSight"));
     auto* column = new QVBoxLayout(m_navigation);
     column->setContentsMargins(0, 0, 0, 0);
-    m_questionArea = new QuestionArea(m_questionBox, m_navigation);
+    m_questionArea = new QuestionArea(m_questions, m_navigation);
     column->addWidget(m_questionArea);
-    m_buttons = new QWidget(m_navigation);
-    m_buttons->setObjectName(QStringLiteral("lessonNavigation"));
     column->addWidget(m_buttons);
-    auto* buttons = new QGridLayout(m_buttons);
     // In line with the text above, wherever the window puts them.
     const QMargins margins = layout->contentsMargins();
-    buttons->setContentsMargins(margins.left(), 0, margins.right(), 0);
-    m_questionBox->setContentsMargins(margins.left(), 0, margins.right(), 0);
-    buttons->addWidget(m_back, 0, 0);
-    buttons->addWidget(m_next, 0, 1);
-    buttons->addWidget(m_restart, 1, 0);
-    buttons->addWidget(m_export, 1, 1);
-    buttons->addWidget(m_handIn, 2, 0, 1, 2);
+    m_buttons->layout()->setContentsMargins(margins.left(), 0, margins.right(), 0);
+    m_questions->setContentsMargins(margins.left(), 0, margins.right(), 0);
     layout->addWidget(m_navigation);
 
-    connect(m_back, &QPushButton::clicked, this, &LessonPlayer::back);
-    connect(m_next, &QPushButton::clicked, this, &LessonPlayer::next);
-    connect(m_restart, &QPushButton::clicked, this, &LessonPlayer::restartStep);
-    connect(m_export, &QPushButton::clicked, this, &LessonPlayer::exportRequested);
-    connect(m_handIn, &QPushButton::clicked, this, &LessonPlayer::handInInteractively);
+    connect(m_buttons, &StepButtons::backClicked, this, &LessonPlayer::back);
+    connect(m_buttons, &StepButtons::nextClicked, this, &LessonPlayer::next);
+    connect(m_buttons, &StepButtons::restartClicked, this, &LessonPlayer::restartStep);
+    connect(m_buttons, &StepButtons::exportClicked, this, &LessonPlayer::exportRequested);
+    connect(m_buttons, &StepButtons::handInClicked, this, &LessonPlayer::handInInteractively);
+    connect(m_handIn, &HandIn::handedIn, this, &LessonPlayer::handedIn);
     // The scene changed (a fitted e applied, an edit): what a run without a window measured
     // on the old one is measured again when next asked.
-    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
-        for (QuestionRow& row : m_rows)
-            row.aheadDone = false;
-    });
-    connect(m_lessonBox, &QComboBox::currentIndexChanged, this,
-            &LessonPlayer::showCurrentLessonTip);
-    m_lessonBox->installEventFilter(this);
-    m_lessonBox->setObjectName(QStringLiteral("lessonChoice"));
-    connect(m_lessonBox, &QComboBox::activated, this, [this](int index) {
-        const QString path = m_lessonBox->itemData(index).toString();
-        if (path.isEmpty())
-            return closeLesson();
-        const QString error = openLesson(path);
-        const ModalScope modal;
-        if (!error.isEmpty() && !m_openCancelled)
-            QMessageBox::warning(this, tr("Cannot open lesson"), error);
-    });
+    connect(&m_run, &RunView::sceneLoaded, this, [this] { m_judge.forgetMeasuredAhead(); });
+    connect(m_lessonBox, &LessonList::lessonChosen, this, &LessonPlayer::openChosen);
 }
 
-void LessonPlayer::showCurrentLessonTip()
+void LessonPlayer::openChosen(const QString& path)
 {
-    const QString what = tr("The lessons that come with RigidLab (File › Open lesson for others)");
-    const QString full = m_lessonBox->currentData(kFullTextRole).toString();
-    m_lessonBox->setToolTip(full.isEmpty() ? what : full + QStringLiteral("\n\n") + what);
-}
-
-void LessonPlayer::scanFolder(const QString& folder)
-{
-    // A broken shipped lesson is a test failure, not a menu entry: lessonsInOrder skips it.
-    listLessons(lessons::lessonsInOrder(folder));
+    if (path.isEmpty())
+        return closeLesson();
+    const QString error = openLesson(path);
+    const ModalScope modal;
+    if (!error.isEmpty() && !m_openCancelled)
+        QMessageBox::warning(this, tr("Cannot open lesson"), error);
 }
 
 void LessonPlayer::listLessons(const std::vector<lessons::LessonEntry>& entries)
 {
-    m_lessonBox->clear();
-    m_paths.clear();
-    m_menuTexts.clear();
-    m_lessonBox->addItem(tr("Choose a lesson…"), QString());
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-        const lessons::LessonEntry& entry = entries[i];
-        const QString text = lessons::lessonMenuText(entry, static_cast<int>(i) + 1);
-        // The box shows the short title, its list and tooltip the whole line.
-        m_lessonBox->addItem(QCoreApplication::translate("rigidlab::lessons", "%1. %2")
-                                 .arg(static_cast<int>(i) + 1)
-                                 .arg(shortTitle(entry.title)),
-                             entry.path);
-        m_lessonBox->setItemData(m_lessonBox->count() - 1, text, Qt::ToolTipRole);
-        m_lessonBox->setItemData(m_lessonBox->count() - 1, text, kFullTextRole);
-        m_paths << entry.path;
-        m_menuTexts << text;
-    }
-    // The box stays as narrow as its column; its list opens as wide as its longest line.
-    m_lessonBox->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-    m_lessonBox->setMinimumContentsLength(12);
-    // Never wider than the screen, though: a line too long for it loses words in its middle,
-    // not its end (the lesson's time).
-    QAbstractItemView* view = m_lessonBox->view();
-    const int wanted =
-        view->sizeHintForColumn(0) + 24 + view->verticalScrollBar()->sizeHint().width();
-    const QScreen* screen = m_lessonBox->screen();
-    const int most = screen ? screen->availableGeometry().width() - 2 * kPopupMarginPx : wanted;
-    view->setTextElideMode(wanted > most ? Qt::ElideMiddle : Qt::ElideNone);
-    view->setMinimumWidth(std::min(wanted, most));
-    showCurrentLessonTip();
-    if (!m_lesson)
+    m_lessonBox->setLessons(entries);
+    if (!m_state.lesson())
         showStep(); // the start page names the first lesson
+}
+
+QStringList LessonPlayer::lessonPaths() const
+{
+    return m_lessonBox->paths();
+}
+
+QStringList LessonPlayer::lessonMenuTexts() const
+{
+    return m_lessonBox->menuTexts();
 }
 
 QString LessonPlayer::firstLessonPath() const
 {
     // listLessons() lists the lessons in teaching order (lessons::lessonsInOrder), the shipped
     // ones before the user's own.
-    return m_paths.value(0);
+    return m_lessonBox->paths().value(0);
 }
 
 QString LessonPlayer::openLesson(const QString& path)
@@ -303,134 +138,77 @@ QString LessonPlayer::openLesson(const QString& path)
         return r.error;
     if (r.lesson.steps.empty())
         return tr("%1: the lesson has no steps").arg(path);
-    m_lesson = std::make_unique<lessons::Lesson>(std::move(r.lesson));
-    m_aboutChosen = false;
-    const int index = m_lessonBox->findData(QFileInfo(path).absoluteFilePath());
-    if (index >= 0)
-        m_lessonBox->setCurrentIndex(index);
-    m_step = 0;
-    startRecord(*m_lesson);
+    m_state.open(std::move(r.lesson));
+    m_page->forgetReadersChoice();
+    m_lessonBox->showChosen(path);
+    m_judge.startRecord();
     showStep();
-    emit stepActivated(*m_lesson, m_step);
+    emit stepActivated(*m_state.lesson(), m_state.index());
     announceStep();
     return QString();
 }
 
 void LessonPlayer::closeLesson()
 {
-    if (!m_lesson)
+    if (!m_state.lesson())
         return;
-    m_lesson.reset();
-    m_lessonBox->setCurrentIndex(0);
+    m_state.close();
+    m_lessonBox->showNone();
     showStep();
     emit lessonClosed();
 }
 
 void LessonPlayer::goToStep(int index)
 {
-    if (!m_lesson || index < 0 || index >= static_cast<int>(m_lesson->steps.size()))
+    const int from = m_state.index();
+    if (!m_state.lesson() || index < 0 || index >= m_state.stepCount())
         return;
-    recordSettings(); // the world still runs the step being left
-    const bool cameBack = index != m_step;
-    m_step = index;
+    m_judge.recordSettings(); // the world still runs the step being left
+    m_state.goTo(index);
     showStep();
     // A step come back to is as the student left it, before the window sets it up with what
     // its answers released. Restart step starts it afresh, held back again; a lesson opened
     // anew starts with none shown.
-    if (cameBack)
+    if (index != from)
         replayRecordedTries();
-    emit stepActivated(*m_lesson, m_step);
+    emit stepActivated(*m_state.lesson(), m_state.index());
     announceStep();
 }
 
 void LessonPlayer::announceStep()
 {
-    if (!m_lesson)
-        return;
-    const lessons::LessonStep& s = m_lesson->steps[static_cast<size_t>(m_step)];
-    // The step's first sentence, which says what it is about.
-    const QString text = m_text->toPlainText().simplified();
-    static const QRegularExpression sentence(QStringLiteral("^.*?[.!?:](?=\\s|$)"));
-    const QRegularExpressionMatch first = sentence.match(text);
-    announce(*this, tr("Step %1 of %2: %3. %4")
-                        .arg(m_step + 1)
-                        .arg(m_lesson->steps.size())
-                        .arg(s.title, first.hasMatch() ? first.captured() : text.left(200)));
-    // Then the focus on the step's text, so that a reader goes on reading it; once the window
-    // has set up the step (docks shown and hidden move the focus).
-    QTimer::singleShot(0, this, [this] {
-        if (m_text->isVisible())
-            m_text->setFocus(Qt::OtherFocusReason);
-    });
+    if (const lessons::Lesson* lesson = m_state.lesson())
+        m_page->announceStep(*lesson, m_state.index());
 }
 
 void LessonPlayer::next()
 {
-    goToStep(m_step + 1);
+    goToStep(m_state.index() + 1);
 }
 void LessonPlayer::back()
 {
-    goToStep(m_step - 1);
+    goToStep(m_state.index() - 1);
 }
 void LessonPlayer::restartStep()
 {
-    goToStep(m_step);
+    goToStep(m_state.index());
 }
 
 void LessonPlayer::showStep()
 {
-    const bool has = m_lesson != nullptr;
-    for (QWidget* w :
-         {static_cast<QWidget*>(m_progress), static_cast<QWidget*>(m_stepCount),
-          static_cast<QWidget*>(m_stepTitle), static_cast<QWidget*>(m_restart),
-          static_cast<QWidget*>(m_back), static_cast<QWidget*>(m_next),
-          static_cast<QWidget*>(m_export), static_cast<QWidget*>(m_handIn), m_studentBox})
-        w->setVisible(has);
-    // No lesson: a "start here" page instead of an empty text box.
-    m_text->setVisible(has);
+    const lessons::Lesson* lesson = m_state.lesson();
+    const lessons::LessonStep* step = m_state.step();
+    m_buttons->showStep(m_state.index(), m_state.stepCount(), step && !step->plots.isEmpty());
+    m_handIn->setVisible(lesson != nullptr);
+    m_start->setVisible(!lesson && !firstLessonPath().isEmpty());
+    if (lesson)
+        m_page->showStep(*lesson, m_state.index());
+    else
+        m_page->showStart(m_lessonBox->shortText(firstLessonPath()));
     fitTextMinimum();
-    const QString first = firstLessonPath();
-    m_start->setVisible(!has && !first.isEmpty());
-    if (!has) {
-        m_aboutToggle->setVisible(false);
-        m_about->setVisible(true);
-        m_title->setText(tr("Start here"));
-        QString about = tr("RigidLab is a laboratory of moving bodies: run a prepared scene, "
-                           "change its settings and measure what happens. Each lesson walks "
-                           "you through one idea of mechanics step by step, with questions "
-                           "to answer on the way.");
-        const int index = m_lessonBox->findData(first);
-        if (index >= 0)
-            about += QStringLiteral("\n\n") +
-                     tr("The first lesson is “%1”; the list above holds the others.")
-                         .arg(m_lessonBox->itemText(index));
-        m_about->setText(about);
-        m_text->showMarkdown(QString());
-        m_rows.clear();
-        buildQuestions();
-        return;
-    }
-    const lessons::Lesson& l = *m_lesson;
-    const lessons::LessonStep& s = l.steps[static_cast<size_t>(m_step)];
-    // A character no font has (an emoji) shows as its placeholder, not as an empty box.
-    m_title->setText(drawableText(l.title, m_title->font()));
-    QString about = l.summary;
-    if (!l.level.isEmpty() || l.minutes > 0)
-        about += QStringLiteral("\n") + tr("%1 · about %2 min").arg(l.level).arg(l.minutes);
-    m_about->setText(about);
-    // The summary introduces the lesson; on the later steps their text has its room.
-    m_aboutToggle->setVisible(m_step == 0 && !about.isEmpty());
-    m_about->setVisible(m_step == 0 && m_aboutToggle->isChecked());
-    m_progress->setRange(0, static_cast<int>(l.steps.size()));
-    m_progress->setValue(m_step + 1);
-    m_stepCount->setText(tr("Step %1 of %2").arg(m_step + 1).arg(l.steps.size()));
-    m_stepTitle->setText(drawableText(s.title, m_stepTitle->font()));
-    m_text->showMarkdown(drawableText(lessons::keepUnitsTogether(s.text), m_text->font()));
-    m_back->setEnabled(m_step > 0);
-    m_next->setEnabled(m_step + 1 < static_cast<int>(l.steps.size()));
-    m_export->setEnabled(!s.plots.isEmpty());
-    showHandIn();
     buildQuestions();
+    if (!lesson)
+        return;
     fitIntroduction();
     fitQuestionRoom();
     // A new step is read from its top: the lesson's title and introduction on the first
@@ -452,42 +230,21 @@ QScrollArea* LessonPlayer::scrollArea() const
 void LessonPlayer::fitIntroduction()
 {
     QScrollArea* scroll = scrollArea();
-    if (!m_lesson || m_step != 0 || m_aboutChosen || !scroll || m_about->text().isEmpty())
+    if (!m_state.lesson() || m_state.index() != 0 || !scroll)
         return;
     const int height = scroll->viewport()->height();
     const QMargins margins = layout()->contentsMargins();
     const int width = scroll->viewport()->width() - margins.left() - margins.right();
     if (height <= 0 || width <= 0)
         return;
-    // What is above the text when the step opens: the list, the titles, the bar, the intro.
+    // Above the lesson's title: the list of lessons.
     const int spacing = layout()->spacing();
-    int above = margins.top();
-    for (QWidget* w : {static_cast<QWidget*>(m_lessonBox), static_cast<QWidget*>(m_title),
-                       static_cast<QWidget*>(m_aboutToggle), static_cast<QWidget*>(m_stepCount),
-                       static_cast<QWidget*>(m_stepTitle)}) {
-        const int h = w->hasHeightForWidth() ? w->heightForWidth(width) : w->sizeHint().height();
-        above += h + spacing;
-    }
-    const int about = m_about->heightForWidth(width) + spacing;
-    const bool fits = height - above - about >= kTextShare * height;
-    const QSignalBlocker quiet(m_aboutToggle); // not the reader's choice
-    m_aboutToggle->setChecked(fits);
-    m_aboutToggle->setArrowType(fits ? Qt::DownArrow : Qt::RightArrow);
-    m_about->setVisible(fits);
+    const int above = margins.top() + m_lessonBox->sizeHint().height() + spacing;
+    m_page->fitIntroduction(height, width, above, spacing, kTextShare);
 }
 
 bool LessonPlayer::eventFilter(QObject* watched, QEvent* event)
 {
-    // On the closed list of lessons an arrow would open each lesson it passes: it opens the
-    // list instead, where the arrows walk and Return opens the one chosen.
-    if (watched == m_lessonBox && event->type() == QEvent::KeyPress) {
-        const int key = static_cast<QKeyEvent*>(event)->key();
-        if (key == Qt::Key_Up || key == Qt::Key_Down || key == Qt::Key_PageUp ||
-            key == Qt::Key_PageDown || key == Qt::Key_Home || key == Qt::Key_End) {
-            m_lessonBox->showPopup();
-            return true;
-        }
-    }
     if (event->type() == QEvent::Resize) {
         const QScrollArea* scroll = scrollArea();
         if (scroll && watched == scroll->viewport()) {
@@ -496,7 +253,7 @@ bool LessonPlayer::eventFilter(QObject* watched, QEvent* event)
         }
     }
     if (watched == m_text && event->type() == QEvent::FontChange) {
-        m_questionBox->setFont(m_text->font());
+        m_questions->setFont(m_text->font());
         fitQuestionRoom();
     }
     return QWidget::eventFilter(watched, event);
@@ -516,8 +273,8 @@ int LessonPlayer::stepTop() const
 {
     // The lesson's title and the name fields are a scroll up, once the introduction has
     // folded away (it does when the column is short) or on a later step.
-    const bool fromStep = m_lesson && (m_step > 0 || m_about->isHidden());
-    return fromStep ? std::max(0, m_stepCount->y() - layout()->spacing()) : 0;
+    const bool fromStep = m_state.lesson() && (m_state.index() > 0 || !m_page->introductionShown());
+    return fromStep ? std::max(0, m_page->stepCount()->y() - layout()->spacing()) : 0;
 }
 
 void LessonPlayer::fitQuestionRoom()
@@ -558,6 +315,179 @@ QWidget* LessonPlayer::takeNavigation()
     layout()->removeWidget(m_navigation);
     m_navigation->setParent(nullptr);
     return m_navigation;
+}
+
+void LessonPlayer::buildQuestions()
+{
+    m_judge.forgetMeasuredAhead();
+    static const std::vector<lessons::Question> none;
+    const lessons::LessonStep* step = m_state.step();
+    // Each kind builds its row (ui/question_kinds/); the player judges what it hands in.
+    m_questions->build(step ? step->questions : none,
+                       [this](std::size_t i) { return rowHooks(i); });
+    orderTabs();
+}
+
+RowHooks LessonPlayer::rowHooks(std::size_t i)
+{
+    // Each hook does nothing once the row is gone (another step, no lesson).
+    const auto live = [this, i] { return i < m_state.questionCount() && i < m_questions->count(); };
+    RowHooks hooks;
+    hooks.prompt = m_state.question(i).prompt;
+    hooks.judge = [this, i, live](const QuestionTry& attempt) {
+        return live() && judge(i, attempt);
+    };
+    hooks.typedNumber = [this, i, live]() -> std::optional<double> {
+        return live() ? m_questions->typedNumber(i) : std::nullopt;
+    };
+    hooks.askFirst = [this, i, live](const QString& text) {
+        if (live())
+            m_questions->askFirst(i, text);
+    };
+    hooks.measured = [this, i, live] { return live() ? m_judge.measuredTry(i) : QuestionTry{}; };
+    hooks.askedRun = [this, i, live] {
+        RunAdvice out;
+        if (!live())
+            return out;
+        const AskedRun asked = m_judge.askedRun(i);
+        if (!asked.matches())
+            out.advice = askedRunAdvice(asked);
+        out.setFirst = !asked.matches() && asked.studentCanSet;
+        return out;
+    };
+    return hooks;
+}
+
+bool LessonPlayer::judge(std::size_t i, const QuestionTry& attempt)
+{
+    const QuestionJudge::Judged judged = m_judge.judge(i, attempt);
+    if (!judged.kept) {
+        m_questions->askFirst(i, judged.verdict.message);
+        return false;
+    }
+    showJudged(i, attempt, judged);
+    return true;
+}
+
+void LessonPlayer::showJudged(std::size_t i, const QuestionTry& attempt,
+                              const QuestionJudge::Judged& judged)
+{
+    m_questions->showVerdict(i, judged.verdict, attempt, !m_replaying);
+    if (judged.given)
+        m_questions->setGiven(i);
+    if (judged.released && !m_replaying)
+        emit heldBackChanged(heldBack());
+}
+
+void LessonPlayer::orderTabs()
+{
+    // Made after the buttons below them, the questions would come last to Tab: the step's
+    // text, its questions with their answers, then Back, Next and the others, as they are
+    // shown.
+    QList<QWidget*> order{m_text};
+    order << m_questions->tabStops();
+    order << m_buttons->tabStops();
+    for (qsizetype k = 1; k < order.size(); ++k)
+        setTabOrder(order[k - 1], order[k]);
+}
+
+void LessonPlayer::replayRecordedTries()
+{
+    // Copied: judging a try writes the record again (the same tries, in the same order).
+    const std::vector<std::vector<QuestionTry>> questions = m_judge.recordedTries();
+    m_replaying = true;
+    for (std::size_t i = 0; i < std::min(questions.size(), m_questions->count()); ++i)
+        for (const QuestionTry& attempt : questions[i])
+            showJudged(i, attempt, m_judge.judgeAgain(i, attempt));
+    m_replaying = false;
+}
+
+QStringList LessonPlayer::heldBack() const
+{
+    return m_state.heldBack();
+}
+
+StepWork LessonPlayer::work() const
+{
+    return StepWork{m_state.tries(), m_questions->typed()};
+}
+
+void LessonPlayer::restoreWork(const StepWork& work)
+{
+    if (!m_state.lesson())
+        return;
+    // Afresh: the step may already hold the record's tries, the same as `work`'s.
+    m_state.goTo(m_state.index());
+    buildQuestions();
+    for (std::size_t i = 0; i < m_questions->count(); ++i) {
+        if (i < work.tries.size())
+            for (const QuestionTry& attempt : work.tries[i])
+                showJudged(i, attempt, m_judge.judgeAgain(i, attempt));
+        if (i < static_cast<std::size_t>(work.typed.size()))
+            m_questions->setTyped(i, work.typed[static_cast<qsizetype>(i)]);
+    }
+}
+
+void LessonPlayer::answer(int question, const QString& text)
+{
+    m_questions->answer(question, text);
+}
+
+QString LessonPlayer::result(int question) const
+{
+    return m_questions->result(question);
+}
+
+void LessonPlayer::choose(int question, int option)
+{
+    m_questions->choose(question, option);
+}
+
+void LessonPlayer::showMe(int question)
+{
+    m_questions->showMe(question);
+}
+
+void LessonPlayer::setStudent(const QString& name, const QString& className)
+{
+    m_handIn->setStudent(name, className);
+}
+
+QString LessonPlayer::student() const
+{
+    return m_handIn->student();
+}
+
+lessons::Answers LessonPlayer::answers() const
+{
+    return m_handIn->answers();
+}
+
+QString LessonPlayer::handIn(const QString& pdfPath)
+{
+    return m_handIn->handIn(pdfPath);
+}
+
+void LessonPlayer::handInInteractively()
+{
+    m_handIn->handInInteractively();
+}
+
+void LessonPlayer::addWorksheetActions(QMenu& menu)
+{
+    QAction* empty = menu.addAction(tr("Works&heet to print…"), this,
+                                    [this] { m_handIn->writeSheetInteractively(false); });
+    empty->setObjectName(QStringLiteral("emptyWorksheet"));
+    empty->setToolTip(tr("The open lesson's questions with lines to write on, and its figures"));
+    QAction* key = menu.addAction(tr("Teacher's &key…"), this,
+                                  [this] { m_handIn->writeSheetInteractively(true); });
+    key->setObjectName(QStringLiteral("worksheetKey"));
+    key->setToolTip(tr("The open lesson's questions with the values the simulation measures"));
+    for (QAction* action : {empty, key}) {
+        action->setEnabled(lesson() != nullptr);
+        connect(this, &LessonPlayer::stepActivated, action, [action] { action->setEnabled(true); });
+        connect(this, &LessonPlayer::lessonClosed, action, [action] { action->setEnabled(false); });
+    }
 }
 
 } // namespace rigidlab::ui

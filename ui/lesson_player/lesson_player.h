@@ -1,38 +1,40 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The lesson player: pick a lesson, read a step, answer its questions, go back and forth.
-// It only shows; the window applies each step (scene, settings, panels) when told to.
+// It only shows; the window applies each step (scene, settings, panels) when told to. It wires
+// the parts that do the work: where the student is (step_state), the judging of the tries
+// (question_judge, with the session's answers_record), and the widgets: the list of lessons
+// (lesson_list), the lesson's and the step's titles and text (step_page), the questions
+// (question_rows, in a question_area), the buttons (step_buttons) and the student's name with
+// Hand in (hand_in); and it shares the column's height between them when a step opens.
+
+#include "lesson_player/question_judge.h"
+#include "lesson_player/step_state.h"
+#include "question_kinds/kind_ui.h"
 
 #include "format/answers_file.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
-#include "question_kinds/kind_ui.h"
-#include "run/measurements.h"
 
 #include <QWidget>
 
 #include <functional>
-
-#include <memory>
-#include <optional>
 #include <vector>
 
-class QButtonGroup;
-class QComboBox;
-class QLabel;
-class QLineEdit;
 class QMenu;
-class QProgressBar;
 class QScrollArea;
 class QPushButton;
-class QToolButton;
 class QVBoxLayout;
 
 namespace rigidlab::ui {
 
-struct AskedRun;
+class HandIn;
+class LessonList;
 class QuestionArea;
-class SimulationController;
+class QuestionRows;
+class RunView;
+class StepButtons;
+class StepPage;
 class StepText;
 
 /// One try at a question: Check with a typed answer, or "Show me" (no answer), with the
@@ -49,15 +51,13 @@ struct StepWork {
 class LessonPlayer : public QWidget {
     Q_OBJECT
 public:
-    explicit LessonPlayer(SimulationController& controller, QWidget* parent = nullptr);
+    explicit LessonPlayer(const RunView& run, QWidget* parent = nullptr);
 
     /// Hands the step's questions (answer boxes, Check, Show me, verdicts) and the Back / Next /
     /// Restart step / Export plots buttons to the caller, to lay out where they stay in sight
     /// (below the scrolling lesson, in the same column); the caller owns them then.
     QWidget* takeNavigation();
 
-    /// Lists the lessons of `folder` in teaching order, numbered (lessons::lessonsInOrder).
-    void scanFolder(const QString& folder);
     /// Lists these lessons, numbered in the order given (the window: the shipped ones, then the
     /// user's own, lessons::allLessonsInOrder).
     void listLessons(const std::vector<lessons::LessonEntry>& entries);
@@ -69,11 +69,11 @@ public:
     /// changes). Unset: always on.
     void setLeaveGuard(std::function<bool()> guard) { m_leaveGuard = std::move(guard); }
     bool openCancelled() const { return m_openCancelled; }
-    const lessons::Lesson* lesson() const { return m_lesson.get(); }
-    int stepIndex() const { return m_step; }
-    QStringList lessonPaths() const { return m_paths; }
+    const lessons::Lesson* lesson() const { return m_state.lesson(); }
+    int stepIndex() const { return m_state.index(); }
+    QStringList lessonPaths() const;
     /// Per lessonPaths() entry, its menu line: "1. Title — description (≈N min)".
-    QStringList lessonMenuTexts() const { return m_menuTexts; }
+    QStringList lessonMenuTexts() const;
     /// The lesson to begin with, in teaching order; empty when there is none. The one place
     /// that decides it.
     QString firstLessonPath() const;
@@ -132,18 +132,16 @@ protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
 
 private:
-    /// The lesson's title and its introduction, which folds away.
-    void buildIntroduction(QVBoxLayout* layout);
     /// Back, Next, Restart step and Export plots, and what the buttons and the list do.
     void buildNavigation(QVBoxLayout* layout);
+    /// Opens the lesson the list or the start button chose (none: closes), and says why not.
+    void openChosen(const QString& path);
     void showStep();
     /// Tells a screen reader the step just shown (its number, title and first sentence) and
     /// puts the focus on its text.
     void announceStep();
     /// Tab in the order the lesson is shown: text, questions, then the step's buttons.
     void orderTabs();
-    /// The list box's tooltip: the chosen lesson's full line, and what the list holds.
-    void showCurrentLessonTip();
     /// The text's least height: a few of its lines, whatever its font.
     void fitTextMinimum();
     /// The questions' height in the column: what the step's text leaves them when it has
@@ -157,91 +155,32 @@ private:
     /// Folds the introduction away on the first step when it would leave the step's text less
     /// than kTextShare of the column's height (unless the reader opened it by hand).
     void fitIntroduction();
+    /// The step's questions, each row handing in to rowHooks().
     void buildQuestions();
-    /// The answers of question `i`, under its `prompt` in `layout`, one function per kind: a
-    /// measured question's answer box with its unit, a choice question's options as radio
-    /// buttons in a group named by its prompt; and their Check and Show me buttons.
-    void buildMeasuredRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
-                          const lessons::MeasuredQuestion& q);
-    void buildChoiceRow(std::size_t i, QLabel* prompt, QVBoxLayout* layout,
-                        const lessons::ChoiceQuestion& q);
-    /// Keeps the parts of the next question's answer row.
-    void addRow(const AnswerRow& parts);
     /// What question i's answer row, as its kind builds it, asks of the player.
     RowHooks rowHooks(std::size_t i);
-    /// The number typed for question i, checked; nullopt when it is none (said under it).
-    std::optional<double> typedAnswer(std::size_t i);
-    /// The student's name and class fields.
-    void buildStudentFields(QVBoxLayout* layout);
-    /// Keeps question i's tries, and the settings the step runs with, in the lesson's record.
-    void recordTry(std::size_t i);
-    /// Judges again the tries the lesson's record holds for the current step (the student
+    /// A try at question i handed in by its row, judged and shown; false when it is not judged
+    /// yet (QuestionJudge::Judged::kept).
+    bool judge(std::size_t i, const QuestionTry& attempt);
+    /// Shows what became of a try at question i: its verdict, Show me off once the value is
+    /// given, and what it released (told to the window unless replaying).
+    void showJudged(std::size_t i, const QuestionTry& attempt, const QuestionJudge::Judged& judged);
+    /// Judges again the tries the session's record holds for the current step (the student
     /// went on and came back): the same verdicts, and what they released stays released.
     void replayRecordedTries();
-    /// Keeps the settings the current step's world runs with in the lesson's record.
-    void recordSettings();
-    /// Starts the lesson's record, unless it is the lesson the session's record is of.
-    static void startRecord(const lessons::Lesson& lesson);
-    /// Asks for a file and writes the empty worksheet (or the key) of the open lesson there.
-    void writeSheetInteractively(bool key);
-    /// On the last step, Hand in says that it finishes the lesson.
-    void showHandIn();
-    /// Judges a try at question i (and remembers it): its verdict shown, what it releases
-    /// released.
-    void applyTry(std::size_t i, const QuestionTry& attempt);
-    /// A try at question i without an answer yet: the value it is judged against (nullopt
-    /// while not measured yet) and whether it was measured ahead.
-    /// Check pressed on question i: the typed number judged, or why it is not.
-    void checkTyped(std::size_t i);
-    /// How the window's run stands to the one question i asks for (asked_run.h).
-    AskedRun askedRunOf(std::size_t i) const;
-    QuestionTry measuredTry(std::size_t i);
-    /// Scrolls question i's verdict into sight in the lesson's column.
-    void revealResult(std::size_t i);
-    /// Shows a verdict under question i; one that gives the value answers the question.
-    void settle(std::size_t i, const lessons::Verdict& verdict);
 
-    SimulationController& m_controller;
-    std::unique_ptr<lessons::Lesson> m_lesson;
-    int m_step = 0;
-    QStringList m_paths;
-    QStringList m_menuTexts;
-    QComboBox* m_lessonBox;
-    QLabel* m_title;
-    QToolButton* m_aboutToggle; ///< folds the introduction (m_about) away
-    QLabel* m_about;
-    bool m_aboutChosen = false; ///< the reader folded or opened the introduction by hand
-    QProgressBar* m_progress;
-    QLabel* m_stepCount; ///< "Step 2 of 4", beside the progress bar
-    QLabel* m_stepTitle;
-    StepText* m_text;
-    QWidget* m_questionBox;
-    QVBoxLayout* m_questionLayout;
-    QWidget* m_navigation = nullptr; ///< the questions; Back, Next, Restart step, Export plots
+    const RunView& m_run;
+    StepState m_state;
+    QuestionJudge m_judge{m_state, m_run};
+    LessonList* m_lessonBox;
+    StepPage* m_page; ///< the lesson's title and introduction, the step's title and text
+    StepText* m_text; ///< the step's text, on m_page
+    QuestionRows* m_questions;
+    StepButtons* m_buttons;                 ///< Back, Next, Restart step, Export plots, Hand in
+    QWidget* m_navigation = nullptr;        ///< the questions and m_buttons
     QuestionArea* m_questionArea = nullptr; ///< the questions, in sight below the text
-    QWidget* m_buttons = nullptr;           ///< Back, Next, Restart step, Export plots, Hand in
-    QPushButton* m_back;
-    QPushButton* m_restart;
-    QPushButton* m_next;
-    QPushButton* m_export;
-    QPushButton* m_handIn;
-    QWidget* m_studentBox; ///< the name and class, shown while a lesson is open
-    QLineEdit* m_studentName;
-    QLineEdit* m_studentClass;
+    HandIn* m_handIn;     ///< the name and class, shown while a lesson is open; Hand in
     QPushButton* m_start; ///< opens the first lesson; shown while none is open
-    struct QuestionRow {
-        QLineEdit* edit = nullptr;       ///< a measured question's answer box
-        QButtonGroup* choices = nullptr; ///< a choice question's options, by their index
-        QPushButton* check = nullptr;
-        QLabel* result = nullptr;
-        QPushButton* show = nullptr;
-        int attempts = 0;      ///< wrong and right tries judged so far
-        bool answered = false; ///< the value has been given: nothing is held back for it
-        bool aheadDone = false;
-        std::optional<double> ahead; ///< measured without a window, once aheadDone
-        std::vector<QuestionTry> tries;
-    };
-    std::vector<QuestionRow> m_rows;
     std::function<bool()> m_leaveGuard;
     bool m_openCancelled = false; ///< the last openLesson() was declined by the leave guard
     /// Tries of the record being judged again while a step is built: the window sets the step

@@ -12,8 +12,8 @@
 //   editorPage(std::type_identity<K>, parent)    its fields in the lesson editor (a KindPage)
 //   answerLine(const K&, step, question)         the editor's line under it: its right answer
 //
-// The worksheet and the lesson editor visit a question's kind once and call these, drawing no
-// kind themselves: a kind missing one of them does not compile there.
+// The lesson player, the worksheet and the lesson editor visit a question's kind once and call
+// these, drawing no kind themselves: a kind missing one of them does not compile there.
 
 #include "common/number_format.h"
 
@@ -51,12 +51,30 @@ struct AnswerRow {
     QLabel* result = nullptr;    ///< the verdict, hidden until the first try
 };
 
+/// How the window's run stands to the run a measured question asks for (its settings, from
+/// the start).
+struct RunAdvice {
+    QString advice;        ///< what to change, in words; empty when it is the run asked for
+    bool setFirst = false; ///< the student is to change it first: nothing is judged until then
+};
+
 /// What a kind's answer row asks of the player.
 struct RowHooks {
-    /// Judges a try at the question: its verdict shown, what it releases released.
-    std::function<void(const lessons::AnswerTry&)> judge;
+    /// The question's prompt as the lesson gives it (a group of options is named by it).
+    QString prompt;
+    /// Judges a try at the question: its verdict shown, what it releases released. False when
+    /// it is not judged yet (a typed number with nothing measured to judge it against while
+    /// the run can still get there): said under it, not kept.
+    std::function<bool(const lessons::AnswerTry&)> judge;
     /// The number typed in the row's box; nullopt when it is not one (said under it).
     std::function<std::optional<double>()> typedNumber;
+    /// Says under the question what to do before it can be judged; nothing is counted.
+    std::function<void(const QString&)> askFirst;
+    /// A measured question's try without an answer: the value it is judged against (nullopt
+    /// while not measured yet) and whether it was measured ahead, without a window.
+    std::function<lessons::AnswerTry()> measured;
+    /// A measured question: how the window's run stands to the one it asks for.
+    std::function<RunAdvice()> askedRun;
 };
 
 /// The row of a kind answered by typing a number: the box with its `unit` on a line of its own

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // What a measured question (lessons/format/question_kinds/measured.h) shows in the window
-// (question_kinds/kind_ui.h): lines for the prediction and the measured value on the worksheet
+// (question_kinds/kind_ui.h): an answer box with its unit in the lesson player, judged against
+// the value the run measures; lines for the prediction and the measured value on the worksheet
 // (the key gives the value the step's run measures and the range accepted), what is measured
 // and how closely in the lesson editor (measured_page.h), and under it the value the lab
 // measures, from the same run without a window that the player judges against.
@@ -16,7 +17,10 @@
 #include "run/measurements.h"
 
 #include <QCoreApplication>
+#include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
+#include <QPushButton>
 
 #include <cmath>
 #include <optional>
@@ -24,6 +28,39 @@
 #include <vector>
 
 namespace rigidlab::ui {
+
+// The lesson player's answer row.
+
+/// The answer box with its unit: a number typed is judged against the value the run measures,
+/// on the run the question asks for (RowHooks::askedRun); Show me gives that value.
+inline AnswerRow answerRow(const lessons::MeasuredQuestion& q, QLabel* prompt, QVBoxLayout* layout,
+                           const RowHooks& hooks)
+{
+    // In the player's words (its translation context), as typedNumberRow's.
+    const AnswerRow row =
+        typedNumberRow(prompt, layout, q.unit,
+                       QCoreApplication::translate("rigidlab::ui::LessonPlayer",
+                                                   "Give up and show the measured value"));
+    QLabel* result = row.result;
+    const auto check = [hooks, result] {
+        const std::optional<double> typed = hooks.typedNumber();
+        if (!typed)
+            return;
+        // A question that asks for settings first is judged on the run it asks for.
+        const RunAdvice run = hooks.askedRun();
+        if (run.setFirst)
+            return hooks.askFirst(run.advice);
+        lessons::AnswerTry attempt = hooks.measured();
+        attempt.answer = typed;
+        if (hooks.judge(attempt) && !run.advice.isEmpty())
+            result->setText(run.advice + u' ' + result->text());
+    };
+    QObject::connect(row.check, &QPushButton::clicked, row.check, check);
+    QObject::connect(row.edit, &QLineEdit::returnPressed, row.edit, check);
+    QObject::connect(row.show, &QPushButton::clicked, row.show,
+                     [hooks] { hooks.judge(hooks.measured()); });
+    return row;
+}
 
 // The worksheet and the lesson editor.
 

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "lesson_player/question_rows.h"
+
+#include "common/announcer.h"
+#include "panels/number_field.h"
+#include "question_kinds/question_kinds.h"
+
+#include <QButtonGroup>
+#include <QCoreApplication>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPointer>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <variant>
+
+namespace rigidlab::ui {
+
+namespace {
+
+/// The largest answer taken, in the question's unit: far beyond any measured value, and small
+/// enough that |answer - measured| stays finite.
+constexpr double kMaxAnswer = 1e15;
+
+} // namespace
+
+QuestionRows::QuestionRows(QWidget* parent) : QWidget(parent), m_layout(new QVBoxLayout(this))
+{
+    setObjectName(QStringLiteral("lessonQuestions"));
+    m_layout->setContentsMargins(0, 0, 0, 0);
+}
+
+void QuestionRows::build(const std::vector<lessons::Question>& questions,
+                         const std::function<RowHooks(std::size_t)>& hooks)
+{
+    while (QLayoutItem* item = m_layout->takeAt(0)) {
+        delete item->widget();
+        delete item;
+    }
+    m_rows.clear();
+    for (std::size_t i = 0; i < questions.size(); ++i) {
+        const lessons::Question& q = questions[i];
+        auto* box = new QWidget(this);
+        auto* v = new QVBoxLayout(box);
+        v->setContentsMargins(0, 4, 0, 4);
+        auto* prompt = new QLabel(lessons::keepUnitsTogether(q.prompt), box);
+        prompt->setWordWrap(true);
+        v->addWidget(prompt);
+        m_layout->addWidget(box);
+        // Each kind builds its row (ui/question_kinds/).
+        m_rows.push_back(std::visit(
+            [&](const auto& kind) { return answerRow(kind, prompt, v, hooks(i)); }, q.kind));
+    }
+}
+
+std::optional<double> QuestionRows::typedNumber(std::size_t i)
+{
+    const std::optional<double> parsed = parseNumber(m_rows.at(i).edit->text());
+    if (!parsed) {
+        askFirst(i,
+                 QCoreApplication::translate("rigidlab::ui::LessonPlayer", "Type a number first."));
+        return std::nullopt;
+    }
+    if (std::abs(*parsed) > kMaxAnswer) {
+        askFirst(i, QCoreApplication::translate("rigidlab::ui::LessonPlayer",
+                                                "Type a number from %1 to %2.")
+                        .arg(formatNumber(-kMaxAnswer), formatNumber(kMaxAnswer)));
+        return std::nullopt;
+    }
+    return parsed;
+}
+
+void QuestionRows::askFirst(std::size_t i, const QString& text)
+{
+    QLabel* result = m_rows.at(i).result;
+    result->setStyleSheet(QStringLiteral("color: #a05a00;"));
+    result->setText(text);
+    result->setVisible(true);
+}
+
+void QuestionRows::showVerdict(std::size_t i, const lessons::Verdict& v,
+                               const lessons::AnswerTry& attempt, bool tell)
+{
+    const AnswerRow& row = m_rows.at(i);
+    row.result->setStyleSheet(!v.measured ? QStringLiteral("color: #a05a00;")
+                              : v.right   ? QStringLiteral("color: #1e7b34; font-weight: bold;")
+                              : v.shown   ? QStringLiteral("color: #b3261e; font-weight: bold;")
+                                          : QStringLiteral("color: #a05a00; font-weight: bold;"));
+    // A choice's verdict is marked as well as worded and coloured (a number's says its value).
+    const QString mark = !row.choices || !v.measured                 ? QString()
+                         : v.right                                   ? QStringLiteral("✓ ")
+                         : v.shown && attempt.choice == std::nullopt ? QStringLiteral("◆ ")
+                                                                     : QStringLiteral("✗ ");
+    row.result->setText(mark + v.message);
+    row.result->setVisible(true);
+    revealResult(i);
+    // The verdict is told, where the focus stays on the answer or the Check button: a label
+    // that changes out of the focus is not read.
+    if (tell)
+        announce(*row.result, row.result->text());
+}
+
+void QuestionRows::setGiven(std::size_t i)
+{
+    m_rows.at(i).show->setEnabled(false);
+}
+
+void QuestionRows::revealResult(std::size_t i)
+{
+    // The questions are in sight below the text, but a later question's verdict may lie below
+    // the bottom of their area when they do not all fit. Once the layout has made room for
+    // it, it is scrolled into sight (the question's box with it, so that the answer stays
+    // beside its verdict).
+    QWidget* viewport = parentWidget();
+    const QPointer<QLabel> result = m_rows[i].result;
+    const QPointer<QScrollArea> area =
+        qobject_cast<QScrollArea*>(viewport ? viewport->parentWidget() : nullptr);
+    QTimer::singleShot(0, this, [result, area] {
+        if (result && area && result->isVisible())
+            area->ensureWidgetVisible(result, 0, 8);
+    });
+}
+
+QStringList QuestionRows::typed() const
+{
+    QStringList out;
+    // A choice question's "box" is the option chosen, by its index.
+    for (const AnswerRow& row : m_rows)
+        out << (row.edit                       ? row.edit->text()
+                : row.choices->checkedId() < 0 ? QString()
+                                               : QString::number(row.choices->checkedId()));
+    return out;
+}
+
+void QuestionRows::setTyped(std::size_t i, const QString& typed)
+{
+    const AnswerRow& row = m_rows.at(i);
+    if (row.edit)
+        row.edit->setText(typed);
+    else if (QAbstractButton* option = row.choices->button(typed.toInt());
+             option && !typed.isEmpty())
+        option->setChecked(true);
+}
+
+QList<QWidget*> QuestionRows::tabStops() const
+{
+    QList<QWidget*> out;
+    for (QWidget* w : findChildren<QWidget*>())
+        if (w->focusPolicy() & Qt::TabFocus)
+            out << w;
+    return out;
+}
+
+const AnswerRow* QuestionRows::row(int question) const
+{
+    if (question < 0 || question >= static_cast<int>(m_rows.size()))
+        return nullptr;
+    return &m_rows[static_cast<std::size_t>(question)];
+}
+
+void QuestionRows::answer(int question, const QString& text)
+{
+    if (const AnswerRow* r = row(question); r && r->edit) {
+        r->edit->setText(text);
+        emit r->edit->returnPressed();
+    }
+}
+
+void QuestionRows::choose(int question, int option)
+{
+    if (const AnswerRow* r = row(question); r && r->choices) {
+        if (QAbstractButton* b = r->choices->button(option))
+            b->setChecked(true);
+        r->check->click();
+    }
+}
+
+void QuestionRows::showMe(int question)
+{
+    if (const AnswerRow* r = row(question))
+        r->show->click();
+}
+
+QString QuestionRows::result(int question) const
+{
+    const AnswerRow* r = row(question);
+    return r ? r->result->text() : QString();
+}
+
+} // namespace rigidlab::ui
