@@ -124,20 +124,21 @@ void TestLesson::judgeNumberGivenTries()
              qPrintable(v.message));
     v = lessons::judgeTry(q, typed(0.6), count);
     QVERIFY(!v.right && v.shown && count.answered);
-    QCOMPARE(v.message, QStringLiteral("Not quite: the right answer is 0.8\u00a0kg m/s (you "
-                                       "said 0.6\u00a0kg m/s)."));
+    QCOMPARE(v.message,
+             QStringLiteral("Not quite: the right answer is 0.8\u00a0kg\u00a0m/\u2060s (you "
+                            "said 0.6\u00a0kg\u00a0m/\u2060s)."));
     // Right at once.
     lessons::TryCount once;
     v = lessons::judgeTry(q, typed(0.82), once);
     QVERIFY(v.right && v.shown && once.answered);
-    QCOMPARE(v.message, QStringLiteral("Right: the answer is 0.8\u00a0kg m/s (you said "
-                                       "0.82\u00a0kg m/s)."));
+    QCOMPARE(v.message, QStringLiteral("Right: the answer is 0.8\u00a0kg\u00a0m/\u2060s (you said "
+                                       "0.82\u00a0kg\u00a0m/\u2060s)."));
     // Show me gives the number.
     lessons::TryCount shown;
     v = lessons::judgeTry(q, lessons::AnswerTry{}, shown);
     QVERIFY(v.shown && !v.right && shown.answered);
     QCOMPARE(v.value, 0.8);
-    QCOMPARE(v.message, QStringLiteral("The right answer is 0.8\u00a0kg m/s."));
+    QCOMPARE(v.message, QStringLiteral("The right answer is 0.8\u00a0kg\u00a0m/\u2060s."));
     // A unit with a slash stays on its number's line, here and in a choice's verdict alike.
     lessons::Question speed = givenQuestion(2, 0.1);
     std::get<lessons::NumberGivenQuestion>(speed.kind).unit = QStringLiteral("m/s");

@@ -29,8 +29,7 @@ inline QStringList shippedLessons()
 /// step, but in the sanitizer pass: step_walk.h) in turn, its events processed, then calls
 /// visit(path, index, step) there. False as soon as a lesson does not open or a check in
 /// `visit` fails (QTest has recorded it): the test should stop then.
-template <typename Visit>
-bool visitShippedSteps(ui::MainWindow& w, Visit visit)
+template <typename Visit> bool visitShippedSteps(ui::MainWindow& w, Visit visit)
 {
     StepWalk walk;
     for (const QString& path : shippedLessons()) {
