@@ -89,11 +89,12 @@ void setSteadyText(QLabel& label, const QString& text, bool hold, int minimumWid
     }
     // A widget whose least and largest size are one asks no layout for room when its text
     // changes (QWidget::updateGeometry). The height it is laid out at now is kept: fixed at
-    // its text's, it would stand at the top of a taller bar.
+    // its text's, it would stand at the top of a taller bar. (A label not on screen has no
+    // laid-out height yet, only a default one.)
     const QSize held = label.minimumSize() == label.maximumSize() ? label.maximumSize() : QSize();
     const QSize hint = label.sizeHint();
-    const QSize needed(std::max(hint.width(), minimumWidth),
-                       std::max(hint.height(), label.height()));
+    const int laidOut = label.isVisible() ? label.height() : 0;
+    const QSize needed(std::max(hint.width(), minimumWidth), std::max(hint.height(), laidOut));
     if (held.isValid() && needed.width() <= held.width() && needed.height() <= held.height())
         return;
     label.setFixedSize(std::max(needed.width(), held.width()), needed.height());
