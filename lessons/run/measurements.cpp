@@ -79,7 +79,7 @@ void Measurements::reset(const physics::World& world, const std::vector<Measure>
     m_energy0 = d.total - d.dissipated;
     m_energyScale = energyScale(d);
     readState(world);
-    m_touching = touchingPairs(world);
+    touchingPairs(world, m_touching);
     m_resync = false;
     recordTimed(world);
 }
@@ -97,16 +97,19 @@ void Measurements::readState(const physics::World& world)
     }
 }
 
-std::vector<std::pair<BodyId, BodyId>> Measurements::touchingPairs(const physics::World& world)
+bool Measurements::touchingPairs(const physics::World& world, std::vector<Pair>& pairs)
 {
-    std::vector<std::pair<BodyId, BodyId>> pairs;
+    pairs.clear();
+    bool ordered = true;
     for (const physics::Contact& c : world.contacts()) {
         if (c.normalImpulse[0] > 0 || c.normalImpulse[1] > 0) {
+            ordered = ordered && (pairs.empty() || pairs.back() < Pair(c.a, c.b));
             pairs.emplace_back(c.a, c.b);
         }
     }
-    std::sort(pairs.begin(), pairs.end());
-    return pairs;
+    if (!ordered)
+        std::sort(pairs.begin(), pairs.end());
+    return ordered;
 }
 
 void Measurements::recordTimed(const physics::World& world)
@@ -229,48 +232,50 @@ CollisionEvent Measurements::collisionEvent(const physics::World& world,
     return e;
 }
 
-double Measurements::touchdownY(const physics::World& world, BodyId i) const
+bool Measurements::findBounces(const physics::World& world)
+{
+    const auto& bodies = world.bodies();
+    m_bouncing.assign(bodies.size(), 0);
+    bool any = false;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const physics::Body& b = bodies[i];
+        if (b.isDynamic() && m_lastVelocity[i].y() < 0 && b.velocity.y() > kBounceSpeed &&
+            m_bounces[i].size() < kMaxBouncesPerBody) {
+            m_bouncing[i] = 1;
+            any = true;
+        }
+    }
+    return any;
+}
+
+void Measurements::findTouchdowns(const physics::World& world)
 {
     // The step's contacts were made from the poses before it: the centre then, moved across
     // the gap along the normal (a pointing to b), is where the surfaces met. Of several points the
-    // one with the least gap meets first: a box lands on its lowest corner.
-    const auto at = static_cast<std::size_t>(i);
-    std::optional<double> touch;
-    for (int j = m_contactStart[at]; j < m_contactStart[at + 1]; ++j) {
-        const physics::Contact& c =
-            world.contacts()[static_cast<std::size_t>(m_contactList[static_cast<std::size_t>(j)])];
+    // one with the least gap meets first: a box lands on its lowest corner. One pass over the
+    // contacts for all the bodies that bounce: a pile that settles bounces thousands of bodies
+    // in one step, and each would search every contact.
+    constexpr double kNone = -std::numeric_limits<double>::infinity();
+    m_touchdown.assign(world.bodies().size(), kNone);
+    for (const physics::Contact& c : world.contacts()) {
+        const auto ia = static_cast<std::size_t>(c.a), ib = static_cast<std::size_t>(c.b);
+        if (!m_bouncing[ia] && !m_bouncing[ib])
+            continue;
         const physics::Manifold& m = c.manifold;
         for (int k = 0; k < m.pointCount; ++k) {
             if (!(c.normalImpulse[static_cast<std::size_t>(k)] > 0))
                 continue;
-            const double gap = m.points[static_cast<std::size_t>(k)].separation;
-            const double shift = (c.b == i ? -gap : gap) * m.normal.y();
-            const double y = m_lastPosition[at].y() + shift;
-            touch = touch ? std::max(*touch, y) : y;
+            const double shift = m.points[static_cast<std::size_t>(k)].separation * m.normal.y();
+            if (m_bouncing[ia])
+                m_touchdown[ia] = std::max(m_touchdown[ia], m_lastPosition[ia].y() + shift);
+            if (m_bouncing[ib])
+                m_touchdown[ib] = std::max(m_touchdown[ib], m_lastPosition[ib].y() - shift);
         }
     }
-    return touch.value_or(world.body(i).position.y());
-}
-
-void Measurements::indexContacts(const physics::World& world)
-{
-    // A counting sort of the contacts by body: each body's in the contacts' order.
-    const auto& contacts = world.contacts();
-    m_contactStart.assign(world.bodies().size() + 1, 0);
-    for (const physics::Contact& c : contacts) {
-        ++m_contactStart[static_cast<std::size_t>(c.a) + 1];
-        ++m_contactStart[static_cast<std::size_t>(c.b) + 1];
-    }
-    for (std::size_t i = 1; i < m_contactStart.size(); ++i)
-        m_contactStart[i] += m_contactStart[i - 1];
-    m_contactList.assign(static_cast<std::size_t>(m_contactStart.back()), 0);
-    std::vector<int> next(m_contactStart.begin(), m_contactStart.end() - 1);
-    for (std::size_t k = 0; k < contacts.size(); ++k) {
-        m_contactList[static_cast<std::size_t>(next[static_cast<std::size_t>(contacts[k].a)]++)] =
-            static_cast<int>(k);
-        m_contactList[static_cast<std::size_t>(next[static_cast<std::size_t>(contacts[k].b)]++)] =
-            static_cast<int>(k);
-    }
+    // A body that bounced with no contact pushing it: its height now.
+    for (std::size_t i = 0; i < m_touchdown.size(); ++i)
+        if (m_bouncing[i] && m_touchdown[i] == kNone)
+            m_touchdown[i] = world.bodies()[i].position.y();
 }
 
 void Measurements::observe(const physics::World& world)
@@ -282,7 +287,7 @@ void Measurements::observe(const physics::World& world)
         m_bounceY.resize(bodies.size());
         m_peaks.resize(bodies.size());
         readState(world);
-        m_touching = touchingPairs(world);
+        touchingPairs(world, m_touching);
         m_resync = false;
         recordTimed(world);
         return;
@@ -290,7 +295,8 @@ void Measurements::observe(const physics::World& world)
     const double t = world.time();
 
     // Bounces and apexes.
-    bool indexed = false; // indexContacts() for this step, at the first bounce
+    if (findBounces(world))
+        findTouchdowns(world);
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         const physics::Body& b = bodies[i];
         if (!b.isDynamic()) {
@@ -299,13 +305,8 @@ void Measurements::observe(const physics::World& world)
         const double vy = b.velocity.y();
         const double y = b.position.y();
         Peak& peak = m_peaks[i];
-        if (m_lastVelocity[i].y() < 0 && vy > kBounceSpeed &&
-            m_bounces[i].size() < kMaxBouncesPerBody) {
-            if (!indexed) {
-                indexContacts(world);
-                indexed = true;
-            }
-            const double touch = touchdownY(world, static_cast<BodyId>(i));
+        if (m_bouncing[i]) {
+            const double touch = m_touchdown[i];
             m_bounces[i].push_back(t);
             m_bounceY[i].push_back(touch);
             peak = {true, t, y, touch};
@@ -321,8 +322,18 @@ void Measurements::observe(const physics::World& world)
         }
     }
 
-    // Collisions: pairs pushed apart now that were not in the step before.
-    std::vector<std::pair<BodyId, BodyId>> touching = touchingPairs(world);
+    // Collisions: pairs pushed apart now that were not in the step before. With the contacts
+    // in the order of their pairs, one cursor walks the step before's pairs along with them;
+    // else each pair is searched for.
+    const bool ordered = touchingPairs(world, m_touchingNow);
+    std::size_t cursor = 0;
+    const auto touchedBefore = [&](const Pair& pair) {
+        if (!ordered)
+            return std::binary_search(m_touching.begin(), m_touching.end(), pair);
+        while (cursor < m_touching.size() && m_touching[cursor] < pair)
+            ++cursor;
+        return cursor < m_touching.size() && m_touching[cursor] == pair;
+    };
     for (const physics::Contact& c : world.contacts()) {
         if (!(c.normalImpulse[0] > 0 || c.normalImpulse[1] > 0)) {
             continue;
@@ -333,13 +344,13 @@ void Measurements::observe(const physics::World& world)
             (!a.isDynamic() && !b.isDynamic())) {
             continue;
         }
-        if (std::binary_search(m_touching.begin(), m_touching.end(), std::pair(c.a, c.b))) {
+        if (touchedBefore(Pair(c.a, c.b))) {
             continue;
         }
         if (m_collisions.size() < kMaxCollisions)
             m_collisions.push_back(collisionEvent(world, c));
     }
-    m_touching = std::move(touching);
+    std::swap(m_touching, m_touchingNow);
 
     readState(world);
     recordTimed(world);

@@ -94,17 +94,20 @@ private:
     };
     void recordTimed(const physics::World& world);
     void readState(const physics::World& world);
-    /// The pairs pushed apart by a positive normal impulse this step, sorted.
-    static std::vector<std::pair<physics::BodyId, physics::BodyId>>
-    touchingPairs(const physics::World& world);
+    using Pair = std::pair<physics::BodyId, physics::BodyId>;
+    /// The pairs pushed apart by a positive normal impulse this step, sorted, into `pairs`.
+    /// Returns whether the world's contacts came in the order of their pairs (the engine keeps
+    /// them so): then they need no sort, and a walk along them can look each pair up in the
+    /// step before's list with one cursor.
+    static bool touchingPairs(const physics::World& world, std::vector<Pair>& pairs);
     CollisionEvent collisionEvent(const physics::World& world, const physics::Contact& c) const;
-    /// The height of body i's centre where it touched what made it bounce this step (see
-    /// ApexEvent::bounceY); its height now when no contact pushed it. Reads the contacts of
-    /// indexContacts().
-    double touchdownY(const physics::World& world, physics::BodyId i) const;
-    /// Each body's contacts this step, by index (m_contactStart, m_contactList): a pile that
-    /// settles bounces thousands of bodies in one step, and each would search every contact.
-    void indexContacts(const physics::World& world);
+    /// Marks in m_bouncing the dynamic bodies whose centre's vertical velocity turned from down
+    /// to up this step (and that have room in their log); returns whether any did.
+    bool findBounces(const physics::World& world);
+    /// For each body marked in m_bouncing, the height of its centre where it touched what made
+    /// it bounce this step (see ApexEvent::bounceY), its height now when no contact pushed it:
+    /// into m_touchdown.
+    void findTouchdowns(const physics::World& world);
 
     std::vector<std::vector<ApexEvent>> m_apexes;
     std::vector<std::vector<double>> m_bounces; ///< bounce times per body [s]
@@ -116,10 +119,11 @@ private:
     std::vector<physics::Vec2> m_lastVelocity; ///< [m/s]
     std::vector<double> m_lastAngular;         ///< [rad/s]
     std::vector<physics::Vec2> m_lastPosition; ///< centres of mass [m]
-    std::vector<std::pair<physics::BodyId, physics::BodyId>> m_touching;
-    /// Body i's contacts are m_contactList[m_contactStart[i] .. m_contactStart[i + 1]).
-    std::vector<int> m_contactStart, m_contactList;
-    bool m_resync = false; ///< the next observe() only reads the state
+    std::vector<Pair> m_touching;
+    std::vector<Pair> m_touchingNow; ///< this step's, made in observe(); kept for its memory
+    std::vector<char> m_bouncing;    ///< this step, per body (findBounces)
+    std::vector<double> m_touchdown; ///< this step, per body that bounces [m] (findTouchdowns)
+    bool m_resync = false;           ///< the next observe() only reads the state
     /// Total minus dissipated energy at the start, and what the drift is relative to [J].
     double m_energy0 = 0, m_energyScale = 1;
 };

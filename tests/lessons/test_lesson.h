@@ -131,6 +131,7 @@ private slots:
     void judgeAttemptGivesHintThenValue();
     void rewindForgetsLaterEvents();
     void measurementsKeepTheFirstEvents();
+    void measurementsFindEveryNewTouch();
     void collisionPredictionsOfOffCentreHit();
     void shippedQuestionsHaveTheirTextbookAnswers_data();
     void shippedQuestionsHaveTheirTextbookAnswers();

@@ -15,6 +15,7 @@
 #include "question_kinds.h"
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 using namespace rigidlab;
 using namespace rigidlab::test;
@@ -306,6 +307,86 @@ void TestLesson::measurementsKeepTheFirstEvents()
     QVERIFY(m.apexes(low).size() <= lessons::Measurements::kMaxBouncesPerBody);
     QVERIFY(m.apexes(low).size() >= lessons::Measurements::kMaxBouncesPerBody - 1);
     QVERIFY(world.time() > 100.0);
+}
+
+void TestLesson::measurementsFindEveryNewTouch()
+{
+    // Balls and boxes poured into a box, on each of the solvers: pairs touch, part and touch
+    // again, many in one step. Every step's new collisions are the pairs a positive normal
+    // impulse pushed apart, between bodies that count (not both static, not kinematic), that
+    // were not pushed apart in the step before, in the contacts' order: found here by a
+    // std::set of the step before's pairs, against Measurements' walk along them.
+    for (const physics::SolverKind solver : physics::kAllSolvers) {
+        lessons::Scene scene;
+        scene.world.solver = solver;
+        scene.world.dt = 1.0 / 120;
+        scene.world.restitution = 0.6;
+        const auto add = [&](physics::BodyType type, physics::Shape shape, double x, double y) {
+            physics::BodyDef b;
+            b.type = type;
+            b.shape = std::move(shape);
+            b.position = physics::Vec2(x, y);
+            scene.bodies.push_back(b);
+        };
+        add(physics::BodyType::Static, physics::makePolygonShape(physics::makeBox(1.2, 0.1)), 0,
+            -0.1);
+        add(physics::BodyType::Static, physics::makePolygonShape(physics::makeBox(0.1, 1.0)), -1.1,
+            0.9);
+        add(physics::BodyType::Static, physics::makePolygonShape(physics::makeBox(0.1, 1.0)), 1.1,
+            0.9);
+        for (int i = 0; i < 24; ++i) {
+            const double x = -0.8 + 0.16 * (i % 11) + 0.03 * (i / 11);
+            const double y = 0.3 + 0.25 * (i / 11) + 0.02 * (i % 3);
+            add(physics::BodyType::Dynamic,
+                i % 2 ? physics::makeCircleShape(0.07)
+                      : physics::makePolygonShape(physics::makeBox(0.06, 0.05)),
+                x, y);
+        }
+        physics::World world = lessons::buildWorld(scene);
+        lessons::Measurements m;
+        m.reset(world, {});
+        using Pair = std::pair<physics::BodyId, physics::BodyId>;
+        const auto pushed = [](const physics::Contact& c) {
+            return c.normalImpulse[0] > 0 || c.normalImpulse[1] > 0;
+        };
+        std::set<Pair> before;
+        for (const physics::Contact& c : world.contacts())
+            if (pushed(c))
+                before.insert({c.a, c.b});
+        std::vector<Pair> expected;
+        std::size_t stepsWithTwo = 0;
+        for (int step = 0; step < 300; ++step) {
+            world.step();
+            m.observe(world);
+            std::set<Pair> now;
+            std::size_t fresh = 0;
+            for (const physics::Contact& c : world.contacts()) {
+                if (!pushed(c))
+                    continue;
+                now.insert({c.a, c.b});
+                const physics::Body& a = world.body(c.a);
+                const physics::Body& b = world.body(c.b);
+                if (a.type == physics::BodyType::Kinematic ||
+                    b.type == physics::BodyType::Kinematic || (!a.isDynamic() && !b.isDynamic()) ||
+                    before.count({c.a, c.b}))
+                    continue;
+                expected.emplace_back(c.a, c.b);
+                ++fresh;
+            }
+            stepsWithTwo += fresh >= 2;
+            before = std::move(now);
+        }
+        const auto& found = m.collisions();
+        QVERIFY2(expected.size() >= 20 && stepsWithTwo >= 3,
+                 qPrintable(QStringLiteral("%1 collisions, %2 steps with two or more")
+                                .arg(expected.size())
+                                .arg(stepsWithTwo)));
+        QCOMPARE(found.size(), std::min(expected.size(), lessons::Measurements::kMaxCollisions));
+        for (std::size_t i = 0; i < found.size(); ++i) {
+            QCOMPARE(found[i].a, expected[i].first);
+            QCOMPARE(found[i].b, expected[i].second);
+        }
+    }
 }
 
 void TestLesson::collisionPredictionsOfOffCentreHit()

@@ -26,6 +26,7 @@
 #include <QMessageBox>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QToolBar>
 #include <QtTest>
 
 #include "test_files.h"
@@ -348,6 +349,62 @@ private slots:
         bar->clearMessage();
         QCoreApplication::processEvents();
         QVERIFY(drawnLabels().join(u' ').contains(QStringLiteral("t =")));
+    }
+
+    /// The clock's labels (the status bar's time, the timeline's step and time) change every
+    /// frame while the run goes, and ask for no layout then: the status bar and the timeline's
+    /// toolbar, and through them the whole window, were laid out again every frame. A frame in
+    /// which neither label had to grow posts no layout request to either bar; paused, the
+    /// labels take the size of their text again.
+    void clockLabelsLayNothingOutWhileRunning()
+    {
+        MainWindow w;
+        QCOMPARE(w.openScene(scene("welcome.json"), true), QString());
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        auto* timeline = w.findChild<QLabel*>(QStringLiteral("timelineLabel"));
+        auto* toolbar = w.findChild<QToolBar*>(QStringLiteral("timelineToolbar"));
+        QVERIFY(timeline && toolbar);
+        struct CountLayouts : QObject {
+            int requests = 0;
+            bool eventFilter(QObject*, QEvent* e) override
+            {
+                requests += e->type() == QEvent::LayoutRequest;
+                return false;
+            }
+        } count;
+        w.statusBar()->installEventFilter(&count);
+        toolbar->installEventFilter(&count);
+        ui::SimulationController& c = w.controller();
+        c.setRunning(true);
+        QCoreApplication::sendPostedEvents(); // the labels held at the run's start
+        const QString before = timeline->text();
+        int steadyFrames = 0;
+        for (int frame = 0; frame < 30; ++frame) {
+            const QSize sizeBefore = timeline->size();
+            const QList<QLabel*> labels = w.statusBar()->findChildren<QLabel*>();
+            std::vector<QSize> barBefore;
+            for (const QLabel* label : labels)
+                barBefore.push_back(label->size());
+            count.requests = 0;
+            c.advanceClock(1.0 / 60.0);
+            QCoreApplication::sendPostedEvents();
+            bool grew = timeline->size() != sizeBefore;
+            for (qsizetype i = 0; i < labels.size(); ++i)
+                grew = grew || labels[i]->size() != barBefore[static_cast<std::size_t>(i)];
+            if (grew)
+                continue;
+            ++steadyFrames;
+            QVERIFY2(count.requests == 0,
+                     qPrintable(QStringLiteral("frame %1: %2 layout requests, \"%3\"")
+                                    .arg(frame)
+                                    .arg(count.requests)
+                                    .arg(timeline->text())));
+        }
+        QVERIFY2(timeline->text() != before, qPrintable(timeline->text()));
+        QVERIFY2(steadyFrames >= 20, qPrintable(QString::number(steadyFrames)));
+        c.setRunning(false);
+        QCOMPARE(timeline->maximumWidth(), QWIDGETSIZE_MAX);
     }
 };
 

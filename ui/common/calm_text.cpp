@@ -7,6 +7,8 @@
 #include <QLabel>
 #include <QTimer>
 
+#include <algorithm>
+
 namespace rigidlab::ui {
 
 namespace {
@@ -75,6 +77,27 @@ void setCalmText(QLabel& label, const QString& text)
         label.setAccessibleName(spokenSigns(text));
     label.setText(text);
     setCalmAccessibleName(label, spokenSigns(text));
+}
+
+void setSteadyText(QLabel& label, const QString& text, bool hold, int minimumWidth)
+{
+    setCalmText(label, text);
+    if (!hold) {
+        label.setMinimumSize(minimumWidth, 0);
+        label.setMaximumSize(QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+        return;
+    }
+    // A widget whose least and largest size are one asks no layout for room when its text
+    // changes (QWidget::updateGeometry). The height it is laid out at now is kept: fixed at
+    // its text's, it would stand at the top of a taller bar. (A label not on screen has no
+    // laid-out height yet, only a default one.)
+    const QSize held = label.minimumSize() == label.maximumSize() ? label.maximumSize() : QSize();
+    const QSize hint = label.sizeHint();
+    const int laidOut = label.isVisible() ? label.height() : 0;
+    const QSize needed(std::max(hint.width(), minimumWidth), std::max(hint.height(), laidOut));
+    if (held.isValid() && needed.width() <= held.width() && needed.height() <= held.height())
+        return;
+    label.setFixedSize(std::max(needed.width(), held.width()), needed.height());
 }
 
 } // namespace rigidlab::ui

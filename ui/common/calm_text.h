@@ -26,4 +26,12 @@ void setCalmAccessibleName(QWidget& widget, const QString& name, bool now = fals
 /// accessible name of its own, QLabel::setText tells assistive technology nothing.)
 void setCalmText(QLabel& label, const QString& text);
 
+/// setCalmText for a label whose text changes every frame while the run goes (the clock),
+/// with `hold` then: the label keeps its size, grown only when the text needs more, and no
+/// less than `minimumWidth` [px]. A label that takes the size of each new text asks its bar,
+/// and through it the whole window with its docks, to be laid out again: 60 times a second,
+/// a few per cent of the base-100 pyramid's frame. Without `hold` (paused) it takes
+/// the size of its text again.
+void setSteadyText(QLabel& label, const QString& text, bool hold, int minimumWidth = 0);
+
 } // namespace rigidlab::ui

@@ -13,6 +13,9 @@
 #include <QPainterPath>
 #include <QPolygonF>
 
+#include <array>
+#include <limits>
+
 namespace rigidlab::ui {
 
 class BodyItem : public QGraphicsItem {
@@ -72,6 +75,10 @@ private:
     QRectF m_circle;        ///< circles: the bounding square, drawn as an ellipse
     QLineF m_radiusLine;    ///< circles: a radius, so that rotation shows
     bool m_selected = false;
+    static constexpr double kNoPose = std::numeric_limits<double>::quiet_NaN();
+    /// The pose last given to setPose: x [m], y [m], angle [rad]; none before the first (NaN
+    /// equals nothing).
+    std::array<double, 3> m_pose{kNoPose, kNoPose, kNoPose};
 };
 
 /// The index-th body's colour: the plots' hues, apart with any colour vision and at least

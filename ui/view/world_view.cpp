@@ -200,16 +200,12 @@ void WorldView::syncMainPoses(const QRectF& shown)
         poses[i] = m_controller.drawPose(static_cast<physics::BodyId>(i));
         mainSane = mainSane && inSight(shown, poses[i].origin);
     }
-    m_itemPoses.resize(m_items.size());
-    for (std::size_t i = 0; i < m_items.size(); ++i) {
-        if (mainSane || !m_drawnRunning[0])
-            m_itemPoses[i] = transformAt(poses[i].origin, poses[i].angle);
-        const physics::Transform& t = m_itemPoses[i];
-        if (mainFrozen)
-            m_items[i]->setPose(t.p.x(), t.p.y(), std::atan2(t.q.s, t.q.c));
-        else
-            m_items[i]->setPose(poses[i].origin.x(), poses[i].origin.y(), poses[i].angle);
-    }
+    if (mainSane || !m_drawnRunning[0])
+        m_itemPoses = poses;
+    const std::vector<Pose>& drawn =
+        mainFrozen && m_itemPoses.size() == poses.size() ? m_itemPoses : poses;
+    for (std::size_t i = 0; i < m_items.size(); ++i)
+        m_items[i]->setPose(drawn[i].origin.x(), drawn[i].origin.y(), drawn[i].angle);
     m_drawnRunning[0] = m_drawnRunning[0] || mainSane;
 }
 
@@ -276,9 +272,12 @@ std::optional<physics::Transform> WorldView::frozenPose(int world, physics::Body
     if (w >= m_drawnRunning.size() || !m_drawnRunning[w] || !stoppedWorld(world))
         return std::nullopt;
     if (world == 0)
-        return body >= 0 && static_cast<std::size_t>(body) < m_itemPoses.size()
-                   ? std::optional(m_itemPoses[static_cast<std::size_t>(body)])
-                   : std::nullopt;
+        if (body >= 0 && static_cast<std::size_t>(body) < m_itemPoses.size()) {
+            const Pose& pose = m_itemPoses[static_cast<std::size_t>(body)];
+            return transformAt(pose.origin, pose.angle);
+        } else {
+            return std::nullopt;
+        }
     for (const Ghost& g : m_ghosts)
         if (g.variant == world - 1 && g.body == static_cast<int>(body))
             return g.pose;

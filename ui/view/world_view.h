@@ -22,6 +22,7 @@ class BodyItem;
 class SceneNarrator;
 class RunView;
 class SimulationController;
+struct Pose;
 
 class WorldView : public QGraphicsView {
     Q_OBJECT
@@ -140,8 +141,9 @@ private:
     /// What contentRect adds to the bodies: spring and joint anchors, the fit's extra and the
     /// run's event [m].
     QRectF anchorsAndExtras() const;
-    /// Whether contentRect() lies within `area`: true only when it does, and false (the
-    /// exact rectangle then to be asked for) when a body's reach comes near the edge.
+    /// Whether contentRect() lies within `area`, as its walk would say, asked body by body:
+    /// the square of its reach about its origin first, its exact box only where that square
+    /// crosses the edge.
     bool contentWithin(const QRectF& area) const;
     /// Selects the body `step` places from the selected one among those that move.
     void selectBodyAfter(int step);
@@ -169,7 +171,9 @@ private:
     SceneNarrator* m_narrator;
     BodiesItem* m_bodiesItem; ///< paints m_items and the ghosts; owned by the scene
     std::vector<std::unique_ptr<BodyItem>> m_items; ///< indexed by body id; not in the scene
-    std::vector<physics::Transform> m_itemPoses;    ///< as last drawn while the main world ran
+    /// As last drawn while the main world ran: an origin and an angle, the sine and cosine
+    /// made only for a world that stopped (frozenPose), not for each body in each frame.
+    std::vector<Pose> m_itemPoses;
     /// Per world (0 the main one): whether it was drawn running since the last rebuild, so
     /// that once stopped it is drawn frozen there rather than where it flew off to.
     std::vector<bool> m_drawnRunning;

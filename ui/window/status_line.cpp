@@ -31,6 +31,13 @@
 
 namespace rigidlab::ui {
 
+namespace {
+
+/// The timeline's "step … of … · t = … s" is at least this wide [px].
+constexpr int kTimelineLabelWidth = 180;
+
+} // namespace
+
 StatusLine::StatusLine(QMainWindow& window, SimulationController& controller, WorldView& view)
     : QObject(&window), m_window(window), m_controller(controller), m_view(view)
 {
@@ -121,7 +128,7 @@ void StatusLine::buildTimeline()
     m_timeline->setAccessibleName(tr("Timeline"));
     m_timeLabel = new QLabel(timebar);
     m_timeLabel->setObjectName(QStringLiteral("timelineLabel"));
-    m_timeLabel->setMinimumWidth(180);
+    m_timeLabel->setMinimumWidth(kTimelineLabelWidth);
     timebar->addWidget(new QLabel(tr(" Timeline "), timebar));
     timebar->addWidget(m_timeline);
     timebar->addWidget(m_timeLabel);
@@ -135,7 +142,8 @@ void StatusLine::update()
 {
     const QLocale locale;
     const bool running = m_controller.isRunning();
-    setCalmText(*m_time, tr("t = %1 s").arg(locale.toString(m_controller.time(), 'f', 3)));
+    setSteadyText(*m_time, tr("t = %1 s").arg(locale.toString(m_controller.time(), 'f', 3)),
+                  running);
     // Simulated seconds per wall second; while paused there is no rate to show.
     if (!running)
         setCalmText(*m_rate, tr("paused"));
@@ -235,11 +243,15 @@ void StatusLine::updateTimeline()
     const long long lo = m_controller.history().earliest(), hi = m_controller.history().latest();
     // One clock: the status bar's time moves with the timeline's, in the same frame.
     const QString t = QLocale().toString(m_controller.time(), 'f', 3);
-    setCalmText(*m_time, tr("t = %1 s").arg(t));
+    // Both change every frame while the clock runs: they keep their size then (calm_text.h).
+    const bool running = m_controller.isRunning();
+    setSteadyText(*m_time, tr("t = %1 s").arg(t), running);
     // Step counts grouped as the locale does ("10 000" in Czech), as on the plots' axes.
-    setCalmText(*m_timeLabel, tr(" step %1 of %2 · t = %3 s")
-                                  .arg(QLocale().toString(m_controller.world().stepCount()),
-                                       QLocale().toString(hi), t));
+    setSteadyText(
+        *m_timeLabel,
+        tr(" step %1 of %2 · t = %3 s")
+            .arg(QLocale().toString(m_controller.world().stepCount()), QLocale().toString(hi), t),
+        running, kTimelineLabelWidth);
     if (m_timeline->isSliderDown())
         return;
     // A slider tells assistive technology of every value it takes. While the clock runs the
