@@ -4842,6 +4842,53 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::MeasurementFit</name>
+    <message>
+        <source>Import a measurement of a position or velocity first.</source>
+        <translation>Nejprve importujte měření polohy nebo rychlosti.</translation>
+    </message>
+    <message>
+        <source>Tick a parameter to fit.</source>
+        <translation>Zaškrtněte parametr, který se má určit.</translation>
+    </message>
+    <message>
+        <source>%1 = %2%3 (95&#xa0;%)</source>
+        <translation>%1 = %2%3 (95&#xa0;%)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Residual RMS: %1 over %n point(s)</source>
+        <translation>
+            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
+            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
+            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Fitted to the measurement in %1.</source>
+        <translation>Určeno z&#xa0;měření v&#xa0;souboru %1.</translation>
+    </message>
+    <message>
+        <source>Fit first: there are no fitted values to apply.</source>
+        <translation>Nejprve parametry určete: zatím nejsou žádné hodnoty k&#xa0;použití.</translation>
+    </message>
+    <message>
+        <source>Apply fitted values</source>
+        <translation>Použití určených hodnot</translation>
+    </message>
+    <message>
+        <source>There is no e from bounce times to apply.</source>
+        <translation>Není žádné e z&#xa0;časů odrazů, které by šlo použít.</translation>
+    </message>
+    <message>
+        <source>Apply e from the bounce times</source>
+        <translation>Použití e z&#xa0;časů odrazů</translation>
+    </message>
+    <message>
+        <source>From the bounce times alone (%3): e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
+        <translation>Jen z&#xa0;časů odrazů (%3): e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::MeasurementImportDialog</name>
     <message>
         <source>not used</source>
@@ -5168,50 +5215,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
             <numerusform>%1: %2, %n body</numerusform>
             <numerusform>%1: %2, %n bodů</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Import a measurement of a position or velocity first.</source>
-        <translation>Nejprve importujte měření polohy nebo rychlosti.</translation>
-    </message>
-    <message>
-        <source>Tick a parameter to fit.</source>
-        <translation>Zaškrtněte parametr, který se má určit.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Residual RMS: %1 over %n point(s)</source>
-        <translation>
-            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
-            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
-            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Fitted to the measurement in %1.</source>
-        <translation>Určeno z&#xa0;měření v&#xa0;souboru %1.</translation>
-    </message>
-    <message>
-        <source>Fit first: there are no fitted values to apply.</source>
-        <translation>Nejprve parametry určete: zatím nejsou žádné hodnoty k&#xa0;použití.</translation>
-    </message>
-    <message>
-        <source>Apply fitted values</source>
-        <translation>Použití určených hodnot</translation>
-    </message>
-    <message>
-        <source>There is no e from bounce times to apply.</source>
-        <translation>Není žádné e z&#xa0;časů odrazů, které by šlo použít.</translation>
-    </message>
-    <message>
-        <source>Apply e from the bounce times</source>
-        <translation>Použití e z&#xa0;časů odrazů</translation>
-    </message>
-    <message>
-        <source>%1 = %2%3 (95&#xa0;%)</source>
-        <translation>%1 = %2%3 (95&#xa0;%)</translation>
-    </message>
-    <message>
-        <source>From the bounce times alone (%3): e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
-        <translation>Jen z&#xa0;časů odrazů (%3): e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
     </message>
 </context>
 <context>
