@@ -1293,10 +1293,6 @@
         <translation>povinné spolu s &quot;answer&quot;, ale chybí (možnosti, ze kterých se volí)</translation>
     </message>
     <message>
-        <source>not for a question with &quot;choices&quot;: it is answered by choosing, nothing is measured</source>
-        <translation>nepatří k otázce s &quot;choices&quot;: odpovídá se na ni výběrem, nic se neměří</translation>
-    </message>
-    <message>
         <source>must be an array of %1 to %2 options, each a text &quot;...&quot; or {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, got </source>
         <translation>musí být pole %1 až %2 možností, každá text &quot;...&quot; nebo {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, je </translation>
     </message>
@@ -1349,8 +1345,16 @@
         <translation>: bodies: %1 nebo víc dvojic těles se na začátku překrývá (mezi nimi „%2“ a „%3“): kontakty je hned odtlačí od sebe</translation>
     </message>
     <message>
-        <source>not for a question with &quot;number&quot;: its answer is the number the lesson gives, nothing is measured or chosen</source>
-        <translation>nepatří k otázce s &quot;number&quot;: její odpovědí je číslo, které uvádí lekce, nic se neměří ani nevybírá</translation>
+        <source>not for a question with &quot;%1&quot;: %2</source>
+        <translation>nepatří k otázce s &quot;%1&quot;: %2</translation>
+    </message>
+    <message>
+        <source>it is answered by choosing, nothing is measured</source>
+        <translation>odpovídá se na ni výběrem, nic se neměří</translation>
+    </message>
+    <message>
+        <source>its answer is the number the lesson gives, nothing is measured or chosen</source>
+        <translation>její odpovědí je číslo, které uvádí lekce, nic se neměří ani nevybírá</translation>
     </message>
 </context>
 <context>
