@@ -13,9 +13,10 @@ namespace rigidlab::lessons {
 QString keepUnitsTogether(QString text)
 {
     // A line may break after a slash between letters ("m/" | "s"); a word joiner after each
-    // slash that follows a number's unit ("3 m/s", "2 rad/s") forbids it. The no-break
-    // space between the number and its unit is the text's own.
-    static const QRegularExpression unitSlash(QStringLiteral("(\\d\\x{00A0}[^\\s/]+)/(?=\\S)"));
+    // slash that follows a number's unit ("3 m/s", "2 rad/s", "4 kg m/s") forbids it. The
+    // no-break spaces between the number and its unit and inside the unit are the text's own.
+    static const QRegularExpression unitSlash(
+        QStringLiteral("(\\d\\x{00A0}[^\\s/]+(?:\\x{00A0}[^\\s/]+)*)/(?=\\S)"));
     text.replace(unitSlash, QStringLiteral("\\1/") + QChar(0x2060));
     return text;
 }
@@ -39,8 +40,13 @@ QString formatAnswer(double value, double relativeTolerance, const QString& unit
             digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(value)))), 0, 12);
         text = locale.toString(value, 'f', std::abs(value) < 1 ? decimals : 0);
     }
-    // A no-break space: the unit stays on the number's line.
-    return unit.isEmpty() ? text : text + QChar(0x00A0) + unit;
+    // No-break spaces: the unit stays on the number's line, and a unit of two words ("kg m/s",
+    // as a teacher may type it) stays whole.
+    if (unit.isEmpty())
+        return text;
+    QString whole = unit.simplified();
+    whole.replace(u' ', QChar(0x00A0));
+    return text + QChar(0x00A0) + whole;
 }
 
 } // namespace rigidlab::lessons

@@ -32,7 +32,8 @@ struct TryCount {
 };
 
 /// `text` with a word joiner after the slash of every unit that follows a number and a
-/// no-break space ("3 m/s"), so that no line breaks inside the unit.
+/// no-break space ("3 m/s", "4 kg m/s" with no-break spaces), so that no line breaks inside
+/// the unit.
 QString keepUnitsTogether(QString text);
 
 /// A number as a student would write it, in the window's locale, with its unit after a

@@ -94,9 +94,8 @@ private slots:
         int questions = 0;
         int plots = 0;
         int measurementPlots = 0; // steps whose Measurement panel's plots were measured
-        const bool walked = visitShippedSteps(
-            w,
-            [&](const QString& path, int i, const lessons::LessonStep& step) {
+        const bool walked =
+            visitShippedSteps(w, [&](const QString& path, int i, const lessons::LessonStep& step) {
                 if (mode == Mode::Instruments) {
                     auto* instruments =
                         w.findChild<QDockWidget*>(QStringLiteral("instrumentsDock"));
@@ -124,15 +123,34 @@ private slots:
                 // a step shows the panel, they are among those measured.
                 if (w.measurement().panel()->comparisonPlot()->isVisible())
                     ++measurementPlots;
-            },
-            // Every step in the sanitizer pass too: a step's frame on the
-            // screen depends on the step shown before it.
-            rigidlab::test::StepWalk(true));
+            });
         if (!walked)
             return;
         QVERIFY2(questions >= 10, qPrintable(QString::number(questions)));
-        QVERIFY2(plots >= 20, qPrintable(QString::number(plots)));
-        QVERIFY2(measurementPlots >= 2, qPrintable(QString::number(measurementPlots)));
+        QVERIFY2(plots >= test::atLeast(20, 17), qPrintable(QString::number(plots)));
+        QVERIFY2(measurementPlots >= test::atLeast(2, 1),
+                 qPrintable(QString::number(measurementPlots)));
+    }
+
+    // A step reached by skipping those before it (a lesson's list of steps, a teacher's jump)
+    // keeps the window on the screen in presentation mode: its docks, shown one by one before
+    // they are grouped, grew it to 1024x794 once.
+    void skippedStepsKeepTheFrame()
+    {
+        MainWindow w;
+        presentOn(w, kProjector);
+        for (const QString& path : test::shippedLessons()) {
+            QCOMPARE(w.openLesson(path, true), QString());
+            const int count = static_cast<int>(w.lessonPlayer().lesson()->steps.size());
+            for (int i = count - 1; i >= 0; i -= 2) { // the last first, then every other
+                w.lessonPlayer().goToStep(i);
+                settle();
+                const QString where =
+                    QStringLiteral("%1 step %2: ").arg(QFileInfo(path).baseName()).arg(i + 1);
+                if (const QString off = frameOutside(w, kProjector); !off.isEmpty())
+                    QFAIL(qPrintable(where + off));
+            }
+        }
     }
 
     // Lesson 7's fit on the projector: once Fit has answered, every line of its result is in

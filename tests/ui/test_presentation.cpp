@@ -6,6 +6,10 @@
 #include "classroom_util.h"
 #include "test_main.h"
 
+#include <QDockWidget>
+#include <QMessageBox>
+#include <QToolBar>
+
 using namespace rigidlab;
 using rigidlab::test::shippedLessons;
 using rigidlab::ui::MainWindow;
@@ -116,6 +120,35 @@ private slots:
         QTRY_VERIFY(!w.isFullScreen());
         QVERIFY2(!opened->isHidden(), qPrintable(opened->objectName()));
         QVERIFY2(closed->isHidden(), qPrintable(closed->objectName()));
+    }
+
+    // A new scene made right after presentation mode ends, before the window has its size
+    // back, keeps the editor's tools and its Properties panel: the layout's second pass, once
+    // the size is back, leaves what was opened since.
+    void editorRightAfterPresentationKeepsItsTools()
+    {
+        MainWindow w;
+        showOn(w, QSize(1024, 768));
+        QCOMPARE(w.openScene(MainWindow::scenesFolder() + QStringLiteral("/welcome.json"), true),
+                 QString());
+        QCoreApplication::processEvents();
+        w.setPresentation(true);
+        QCoreApplication::processEvents();
+        w.setPresentation(false);
+        w.setUnsavedAsker([] { return int(QMessageBox::Discard); });
+        QVERIFY(w.newScene()); // a new scene opens in Edit mode
+        auto* tools = w.findChild<QToolBar*>(QStringLiteral("editToolbar"));
+        auto* properties = w.findChild<QDockWidget*>(QStringLiteral("propertiesDock"));
+        QVERIFY(tools && properties);
+        QVERIFY(!tools->isHidden());
+        QVERIFY(!properties->isHidden());
+        // The window's size comes back, and the layout's second pass with it.
+        w.resize(w.size() - QSize(1, 1));
+        for (int i = 0; i < 5; ++i)
+            QCoreApplication::processEvents();
+        QTRY_VERIFY(!w.isFullScreen());
+        QVERIFY2(!tools->isHidden(), "the edit toolbar");
+        QVERIFY2(!properties->isHidden(), "the Properties panel");
     }
 
     // Presentation mode at 1024×768: every toolbar action has its button in sight (none in

@@ -187,6 +187,12 @@ void LessonSession::showStepDocks(const lessons::LessonStep& step, const QString
 {
     // Only what the step names: panels, plots. Those its questions hold back stay hidden
     // (shown and hidden again, a dock would leave the one it shares tabs with out of place).
+    m_parts.layout.keepingSize([&] { showOnlyStepDocks(step, labels); });
+    m_parts.layout.fitSideColumns();
+}
+
+void LessonSession::showOnlyStepDocks(const lessons::LessonStep& step, const QStringList& labels)
+{
     const QStringList held = m_parts.player.heldBack();
     const QMap<QString, QDockWidget*>& docks = m_parts.layout.docks();
     for (auto it = docks.cbegin(); it != docks.cend(); ++it) {
@@ -211,7 +217,6 @@ void LessonSession::showStepDocks(const lessons::LessonStep& step, const QString
             shown << d;
     m_parts.layout.regroup();
     m_parts.layout.raiseFirst(shown);
-    m_parts.layout.fitSideColumns();
 }
 
 void LessonSession::makeComparePlots(const lessons::LessonStep& step)
@@ -314,17 +319,19 @@ void LessonSession::applyHeldBack(const QStringList& held)
     const lessons::LessonStep* step = currentStep();
     if (!step)
         return;
-    QList<QDockWidget*> shown; // by an answer that released them: brought to the front
-    for (const auto& [names, prefix] : {std::pair{&step->panels, QStringLiteral("panel:")},
-                                        std::pair{&step->plots, QStringLiteral("plot:")}})
-        for (const QString& name : *names)
-            if (QDockWidget* d = m_parts.layout.dock(name)) {
-                const bool visible = !held.contains(prefix + name);
-                if (visible && d->isHidden())
-                    shown << d;
-                d->setVisible(visible);
-            }
-    m_parts.layout.raiseFirst(shown);
+    m_parts.layout.keepingSize([&] {
+        QList<QDockWidget*> shown; // by an answer that released them: brought to the front
+        for (const auto& [names, prefix] : {std::pair{&step->panels, QStringLiteral("panel:")},
+                                            std::pair{&step->plots, QStringLiteral("plot:")}})
+            for (const QString& name : *names)
+                if (QDockWidget* d = m_parts.layout.dock(name)) {
+                    const bool visible = !held.contains(prefix + name);
+                    if (visible && d->isHidden())
+                        shown << d;
+                    d->setVisible(visible);
+                }
+        m_parts.layout.raiseFirst(shown);
+    });
 }
 
 void LessonSession::leave()

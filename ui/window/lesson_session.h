@@ -95,7 +95,10 @@ signals:
 private:
     void applyStep(const lessons::Lesson& lesson, int index);
     void frameStepAction(const lessons::LessonStep& step);
+    /// The step's docks shown, grouped and in their columns, the window's size kept.
     void showStepDocks(const lessons::LessonStep& step, const QStringList& labels);
+    /// The step's docks shown and every other hidden, grouped by kind, its first ones raised.
+    void showOnlyStepDocks(const lessons::LessonStep& step, const QStringList& labels);
     void makeComparePlots(const lessons::LessonStep& step);
     void showStepOverlays(const lessons::LessonStep& step);
     void leave();

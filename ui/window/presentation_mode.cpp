@@ -75,9 +75,6 @@ void WindowLayout::setPresentation(bool on)
         // world keeps half of the screen (again once full screen has its size: windowResized).
         fitSideColumns();
     } else {
-        m_shownAtLeaving.clear();
-        for (QDockWidget* dock : m_window.findChildren<QDockWidget*>())
-            m_shownAtLeaving.emplace_back(dock, !dock->isHidden());
         if (m_normalWasMaximized)
             m_window.showMaximized();
         else
@@ -93,15 +90,22 @@ void WindowLayout::setPresentation(bool on)
 
 void WindowLayout::restoreNormalState()
 {
-    // The saved state shows the docks that were shown when presentation mode began; a dock
-    // opened since (the inspector, to show a value to the class) would close with it. The
-    // plots' least heights for the large type would hold the docks taller than they were:
-    // they are made again for the restored sizes.
+    // The saved state shows the docks and toolbars that were shown when presentation mode
+    // began; one opened since (the inspector, to show a value to the class) would close with
+    // it, and so would the editor's tools of a new scene made before the window had its size
+    // back (the second pass, windowResized). Each keeps what it is now. The plots' least
+    // heights for the large type would hold the docks taller than they were: they are made
+    // again for the restored sizes.
+    std::vector<std::pair<QPointer<QWidget>, bool>> shownNow;
+    for (QDockWidget* dock : m_window.findChildren<QDockWidget*>())
+        shownNow.emplace_back(dock, !dock->isHidden());
+    for (QToolBar* bar : m_window.findChildren<QToolBar*>())
+        shownNow.emplace_back(bar, !bar->isHidden());
     relaxPlotHeights();
     m_window.restoreState(m_normalState);
-    for (const auto& [dock, shown] : m_shownAtLeaving)
-        if (dock && dock->isHidden() == shown)
-            dock->setVisible(shown);
+    for (const auto& [widget, shown] : shownNow)
+        if (widget && widget->isHidden() == shown)
+            widget->setVisible(shown);
 }
 
 void WindowLayout::scaleExplicitFonts(bool on)

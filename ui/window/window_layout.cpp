@@ -159,6 +159,17 @@ void WindowLayout::arrangeDocks(const QSize& screen)
     fitSideColumns();
 }
 
+void WindowLayout::keepingSize(const std::function<void()>& change)
+{
+    const QSize before = m_window.size();
+    change();
+    if (m_window.isMaximized() || m_window.size() == before)
+        return;
+    m_window.layout()->activate();
+    if (m_window.minimumSizeHint().boundedTo(before) == m_window.minimumSizeHint())
+        m_window.resize(before);
+}
+
 void WindowLayout::regroup()
 {
     for (const QList<QDockWidget*>& group : std::as_const(m_rightGroups)) {

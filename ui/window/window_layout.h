@@ -16,6 +16,7 @@
 #include <QString>
 
 #include <array>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -65,6 +66,10 @@ public:
     /// Tabs the docks of each kind together again (a dock shown again may come back beside its
     /// tab group rather than in it).
     void regroup();
+    /// Runs `change` (docks shown and hidden one by one, then grouped) and gives the window its
+    /// size back: while they were shown one by one, their least heights added up may have grown
+    /// it past the screen; grouped, they fit again.
+    void keepingSize(const std::function<void()>& change);
     /// The screen's available area the window is on.
     QRect availableScreenArea() const;
     /// Sizes the window for a screen's available area (never larger) and arranges the docks:
@@ -136,9 +141,6 @@ private:
     bool m_normalWasMaximized = false;
     QByteArray m_normalGeometry; ///< before presentation mode
     QByteArray m_normalState;
-    /// Each dock and whether it was shown when presentation mode ended: what the student
-    /// opened or closed during it stays so.
-    std::vector<std::pair<QPointer<QWidget>, bool>> m_shownAtLeaving;
     QFont m_normalFont;
     std::vector<std::pair<QPointer<QWidget>, QFont>> m_explicitFonts; ///< before presentation
     QPalette m_normalPalette;
