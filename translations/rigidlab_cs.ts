@@ -24,6 +24,25 @@
     </message>
 </context>
 <context>
+    <name>ChoiceQuestion</name>
+    <message>
+        <source>Right answer: “%1”</source>
+        <translation>Správná odpověď: „%1“</translation>
+    </message>
+    <message>
+        <source>a choice of answers</source>
+        <translation>výběr z odpovědí</translation>
+    </message>
+    <message>
+        <source>The right option</source>
+        <translation>Správná možnost</translation>
+    </message>
+    <message>
+        <source>The student chooses one of %1 options; the right one is “%2”.</source>
+        <translation>Žák volí jednu z %1 možností; správná je „%2“.</translation>
+    </message>
+</context>
+<context>
     <name>ClassResults</name>
     <message>
         <source>no lesson &quot;%1&quot; among the shipped lessons and your own (name its file)</source>
@@ -1546,6 +1565,141 @@
     </message>
 </context>
 <context>
+    <name>MeasuredQuestion</name>
+    <message>
+        <source>height of a bounce&apos;s top</source>
+        <translation>výška vrcholu odskoku</translation>
+    </message>
+    <message>
+        <source>speed</source>
+        <translation>rychlost</translation>
+    </message>
+    <message>
+        <source>velocity x</source>
+        <translation>rychlost x</translation>
+    </message>
+    <message>
+        <source>velocity y</source>
+        <translation>rychlost y</translation>
+    </message>
+    <message>
+        <source>angular velocity</source>
+        <translation>úhlová rychlost</translation>
+    </message>
+    <message>
+        <source>position x</source>
+        <translation>poloha x</translation>
+    </message>
+    <message>
+        <source>position y</source>
+        <translation>poloha y</translation>
+    </message>
+    <message>
+        <source>energy drift</source>
+        <translation>energetický drift</translation>
+    </message>
+    <message>
+        <source>momentum x</source>
+        <translation>hybnost x</translation>
+    </message>
+    <message>
+        <source>momentum y</source>
+        <translation>hybnost y</translation>
+    </message>
+    <message>
+        <source>How high does %1 rise after its bounce %2?</source>
+        <translation>Jak vysoko vystoupí %1 po %2. odrazu?</translation>
+    </message>
+    <message>
+        <source>What is the %1 at t = %2&#xa0;s?</source>
+        <translation>Jaká je veličina „%1“ v&#xa0;čase t = %2&#xa0;s?</translation>
+    </message>
+    <message>
+        <source>What is the %1 of %2 at t = %3&#xa0;s?</source>
+        <translation>Jaká je veličina „%1“ tělesa %2 v&#xa0;čase t = %3&#xa0;s?</translation>
+    </message>
+    <message>
+        <source>Your prediction (%1):</source>
+        <translation>Vaše předpověď (%1):</translation>
+    </message>
+    <message>
+        <source>Measured (%1):</source>
+        <translation>Naměřeno (%1):</translation>
+    </message>
+    <message>
+        <source>Not measured within the step&apos;s run.</source>
+        <translation>V&#xa0;běhu kroku se nic nezměřilo.</translation>
+    </message>
+    <message>
+        <source>Measured: %1 (accepted from %2 to %3)</source>
+        <translation>Naměřeno: %1 (uznává se od %2 do %3)</translation>
+    </message>
+    <message>
+        <source>Measured value: %1</source>
+        <translation>Naměřená hodnota: %1</translation>
+    </message>
+    <message>
+        <source>a number measured from the run</source>
+        <translation>číslo změřené v simulaci</translation>
+    </message>
+    <message>
+        <source>The answer the lab measures</source>
+        <translation>Odpověď, kterou laboratoř naměří</translation>
+    </message>
+    <message>
+        <source>⚠ The run does not get there (or diverges first): raise the step&apos;s export time or choose an earlier time.</source>
+        <translation>⚠ Simulace tam nedoběhne (nebo se dřív rozběhne): prodlužte čas exportu kroku nebo zvolte dřívější čas.</translation>
+    </message>
+    <message>
+        <source>The lab measures %1 %3; answers from %2 to %4 %3 are right.</source>
+        <translation>Laboratoř naměří %1&#xa0;%3; správně jsou odpovědi od %2 do %4&#xa0;%3.</translation>
+    </message>
+    <message>
+        <source>What is measured</source>
+        <translation>Co se měří</translation>
+    </message>
+    <message>
+        <source>Body measured</source>
+        <translation>Měřené těleso</translation>
+    </message>
+    <message>
+        <source>Time of the measurement</source>
+        <translation>Čas měření</translation>
+    </message>
+    <message>
+        <source>Unit of the answer</source>
+        <translation>Jednotka odpovědi</translation>
+    </message>
+    <message>
+        <source>Tolerance of the answer</source>
+        <translation>Tolerance odpovědi</translation>
+    </message>
+    <message>
+        <source>Measu&amp;red</source>
+        <translation>Měří &amp;se</translation>
+    </message>
+    <message>
+        <source>&amp;Body</source>
+        <translation>&amp;Těleso</translation>
+    </message>
+    <message>
+        <source>&amp;At time</source>
+        <translation>&amp;V čase</translation>
+    </message>
+    <message>
+        <source>&amp;Unit</source>
+        <translation>&amp;Jednotka</translation>
+    </message>
+    <message>
+        <source>Toleran&amp;ce</source>
+        <translation>To&amp;lerance</translation>
+    </message>
+    <message>
+        <source>%1 (not in the scene)</source>
+        <translation>%1 (ve scéně není)</translation>
+    </message>
+</context>
+<context>
     <name>NumberGivenQuestion</name>
     <message>
         <source>The right answer</source>
@@ -2227,22 +2381,6 @@ n = (%4; %5)</translation>
         <translation>Otázka %1.%2: %3</translation>
     </message>
     <message>
-        <source>Your prediction (%1):</source>
-        <translation>Vaše předpověď (%1):</translation>
-    </message>
-    <message>
-        <source>Measured (%1):</source>
-        <translation>Naměřeno (%1):</translation>
-    </message>
-    <message>
-        <source>Not measured within the step&apos;s run.</source>
-        <translation>V&#xa0;běhu kroku se nic nezměřilo.</translation>
-    </message>
-    <message>
-        <source>Measured: %1 (accepted from %2 to %3)</source>
-        <translation>Naměřeno: %1 (uznává se od %2 do %3)</translation>
-    </message>
-    <message>
         <source>Not answered.</source>
         <translation>Bez odpovědi.</translation>
     </message>
@@ -2263,10 +2401,6 @@ n = (%4; %5)</translation>
         <translation>(bez odpovědi)</translation>
     </message>
     <message>
-        <source>Measured value: %1</source>
-        <translation>Naměřená hodnota: %1</translation>
-    </message>
-    <message>
         <source>teacher&apos;s key</source>
         <translation>klíč pro učitele</translation>
     </message>
@@ -2277,10 +2411,6 @@ n = (%4; %5)</translation>
     <message>
         <source>cannot write %1: could not start drawing the PDF</source>
         <translation>nelze zapsat %1: kreslení PDF nešlo začít</translation>
-    </message>
-    <message>
-        <source>Right answer: “%1”</source>
-        <translation>Správná odpověď: „%1“</translation>
     </message>
     <message>
         <source>on</source>
@@ -3497,10 +3627,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>The numbers of the first collision appear here when it happens.</source>
         <translation>Čísla první srážky se tu objeví, jakmile k&#xa0;ní dojde.</translation>
-    </message>
-    <message>
-        <source>Impulse formula</source>
-        <translation>Vzorec impulsu</translation>
     </message>
     <message>
         <source>The impulse formula with this collision&apos;s numbers</source>
@@ -5431,46 +5557,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
 <context>
     <name>rigidlab::ui::QuestionEditor</name>
     <message>
-        <source>height of a bounce&apos;s top</source>
-        <translation>výška vrcholu odskoku</translation>
-    </message>
-    <message>
-        <source>speed</source>
-        <translation>rychlost</translation>
-    </message>
-    <message>
-        <source>velocity x</source>
-        <translation>rychlost x</translation>
-    </message>
-    <message>
-        <source>velocity y</source>
-        <translation>rychlost y</translation>
-    </message>
-    <message>
-        <source>angular velocity</source>
-        <translation>úhlová rychlost</translation>
-    </message>
-    <message>
-        <source>position x</source>
-        <translation>poloha x</translation>
-    </message>
-    <message>
-        <source>position y</source>
-        <translation>poloha y</translation>
-    </message>
-    <message>
-        <source>energy drift</source>
-        <translation>energetický drift</translation>
-    </message>
-    <message>
-        <source>momentum x</source>
-        <translation>hybnost x</translation>
-    </message>
-    <message>
-        <source>momentum y</source>
-        <translation>hybnost y</translation>
-    </message>
-    <message>
         <source>Questions o&amp;f the step</source>
         <translation>&amp;Otázky kroku</translation>
     </message>
@@ -5491,52 +5577,8 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Ode&amp;brat otázku</translation>
     </message>
     <message>
-        <source>What is measured</source>
-        <translation>Co se měří</translation>
-    </message>
-    <message>
-        <source>Body measured</source>
-        <translation>Měřené těleso</translation>
-    </message>
-    <message>
-        <source>Time of the measurement</source>
-        <translation>Čas měření</translation>
-    </message>
-    <message>
-        <source>Unit of the answer</source>
-        <translation>Jednotka odpovědi</translation>
-    </message>
-    <message>
-        <source>Tolerance of the answer</source>
-        <translation>Tolerance odpovědi</translation>
-    </message>
-    <message>
         <source>Predict first: the run waits until it is answered</source>
         <translation>Nejdřív předpověď: simulace počká, až žák odpoví</translation>
-    </message>
-    <message>
-        <source>The answer the lab measures</source>
-        <translation>Odpověď, kterou laboratoř naměří</translation>
-    </message>
-    <message>
-        <source>Measu&amp;red</source>
-        <translation>Měří &amp;se</translation>
-    </message>
-    <message>
-        <source>&amp;Body</source>
-        <translation>&amp;Těleso</translation>
-    </message>
-    <message>
-        <source>&amp;At time</source>
-        <translation>&amp;V čase</translation>
-    </message>
-    <message>
-        <source>&amp;Unit</source>
-        <translation>&amp;Jednotka</translation>
-    </message>
-    <message>
-        <source>Toleran&amp;ce</source>
-        <translation>To&amp;lerance</translation>
     </message>
     <message>
         <source>question</source>
@@ -5547,32 +5589,12 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>%1. Nejdřív předpověď: %2</translation>
     </message>
     <message>
-        <source>%1 (not in the scene)</source>
-        <translation>%1 (ve scéně není)</translation>
-    </message>
-    <message>
         <source>This step asks no question.</source>
         <translation>Tento krok se na nic neptá.</translation>
     </message>
     <message>
-        <source>⚠ The run does not get there (or diverges first): raise the step&apos;s export time or choose an earlier time.</source>
-        <translation>⚠ Simulace tam nedoběhne (nebo se dřív rozběhne): prodlužte čas exportu kroku nebo zvolte dřívější čas.</translation>
-    </message>
-    <message>
-        <source>The lab measures %1 %3; answers from %2 to %4 %3 are right.</source>
-        <translation>Laboratoř naměří %1&#xa0;%3; správně jsou odpovědi od %2 do %4&#xa0;%3.</translation>
-    </message>
-    <message>
         <source>Kind of question</source>
         <translation>Druh otázky</translation>
-    </message>
-    <message>
-        <source>a number measured from the run</source>
-        <translation>číslo změřené v simulaci</translation>
-    </message>
-    <message>
-        <source>a choice of answers</source>
-        <translation>výběr z odpovědí</translation>
     </message>
     <message>
         <source>&amp;Kind</source>
@@ -5585,26 +5607,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Stu&amp;dent sets first</source>
         <translation>Žák m&amp;usí nejdřív nastavit</translation>
-    </message>
-    <message>
-        <source>Option %1</source>
-        <translation>Možnost %1</translation>
-    </message>
-    <message>
-        <source>The student chooses one of %1 options; the right one is “%2”.</source>
-        <translation>Žák volí jednu z %1 možností; správná je „%2“.</translation>
-    </message>
-    <message>
-        <source>How high does %1 rise after its bounce %2?</source>
-        <translation>Jak vysoko vystoupí %1 po %2. odrazu?</translation>
-    </message>
-    <message>
-        <source>What is the %1 at t = %2&#xa0;s?</source>
-        <translation>Jaká je veličina „%1“ v&#xa0;čase t = %2&#xa0;s?</translation>
-    </message>
-    <message>
-        <source>What is the %1 of %2 at t = %3&#xa0;s?</source>
-        <translation>Jaká je veličina „%1“ tělesa %2 v&#xa0;čase t = %3&#xa0;s?</translation>
     </message>
     <message>
         <source>Question (%1)</source>
@@ -5621,10 +5623,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>⚠ The lesson has a problem to fix first (see below): %1</source>
         <translation>⚠ V lekci je nejdřív třeba opravit problém (viz níže): %1</translation>
-    </message>
-    <message>
-        <source>The right option</source>
-        <translation>Správná možnost</translation>
     </message>
     <message>
         <source>The right answer</source>

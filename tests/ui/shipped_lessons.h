@@ -28,11 +28,11 @@ inline QStringList shippedLessons()
 /// Opens every shipped lesson in `w` and goes to each of its steps that the walk visits (every
 /// step, but in the sanitizer pass: step_walk.h) in turn, its events processed, then calls
 /// visit(path, index, step) there. False as soon as a lesson does not open or a check in
-/// `visit` fails (QTest has recorded it): the test should stop then. `walk`: StepWalk(true)
-/// for a test that walks every step in both passes.
+/// `visit` fails (QTest has recorded it): the test should stop then.
 template <typename Visit>
-bool visitShippedSteps(ui::MainWindow& w, Visit visit, StepWalk walk = StepWalk())
+bool visitShippedSteps(ui::MainWindow& w, Visit visit)
 {
+    StepWalk walk;
     for (const QString& path : shippedLessons()) {
         if (!QTest::qCompare(w.openLesson(path, true), QString(), "w.openLesson(path, true)",
                              "QString()", __FILE__, __LINE__))

@@ -14,6 +14,7 @@
 #include "format/lesson_pack.h"
 #include "format/scene_loader.h"
 
+#include "editor_on_step.h"
 #include "test_main.h"
 
 #include "question_kinds.h"
@@ -35,16 +36,9 @@ using rigidlab::test::choiceOf;
 using rigidlab::test::isChoice;
 
 using namespace rigidlab;
+using rigidlab::test::child;
 
 namespace {
-
-template <typename W> W* child(QWidget& parent, const QString& name)
-{
-    W* w = parent.findChild<W*>(name);
-    if (!w)
-        qWarning("no child named %s", qPrintable(name));
-    return w;
-}
 
 void typeInto(QLineEdit* field, const QString& text)
 {
@@ -127,18 +121,11 @@ void TestLessonEditorChoice::initTestCase()
 
 void TestLessonEditorChoice::writtenInTheEditor()
 {
-    const lessons::SceneLoadResult scene = lessons::loadSceneFile(
-        QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/four_balls.json"));
-    QVERIFY2(scene.ok, qPrintable(scene.error));
-    ui::LessonEditor ed;
-    ed.newLesson(scene.scene);
-    ed.resize(1024, 768);
-    ed.show();
-    ed.selectStep(0);
+    test::EditorOnStep rig;
+    QCOMPARE(rig.open(), QString());
+    ui::LessonEditor& ed = rig.ed;
     ui::LessonDraft& d = ed.draft();
-    const auto question = [&d] {
-        return d.value(0, QStringLiteral("questions")).toArray().at(0).toObject();
-    };
+    const auto question = [&rig] { return rig.question(); };
 
     // A predict-first question, made a choice with the kind chooser (by key): the run stays
     // held back, nothing is measured any more.

@@ -14,6 +14,7 @@
 
 #include "format/scene_loader.h"
 
+#include "editor_on_step.h"
 #include "test_main.h"
 
 #include <QComboBox>
@@ -29,6 +30,7 @@
 #include <QtTest>
 
 using namespace rigidlab;
+using rigidlab::test::child;
 
 namespace {
 
@@ -39,14 +41,6 @@ const char* kLesson = R"({"rigidlab-lesson": 1, "title": "Given", "steps": [{"ti
  "questions": [{"prompt": {"en": "What momentum has the ball?", "cs": "Jakou hybnost má míček?"},
    "hint": {"en": "p = m v", "cs": "p = m v"}, "number": 0.8, "within": 0.05,
    "unit": "kg m/s"}]}]})";
-
-template <typename W> W* child(QWidget& parent, const QString& name)
-{
-    W* w = parent.findChild<W*>(name);
-    if (!w)
-        qWarning("no child named %s", qPrintable(name));
-    return w;
-}
 
 /// The PDF's text (pdftotext), its lines joined by spaces.
 QString pdfText(const QString& pdf)
@@ -158,12 +152,12 @@ void TestNumberGiven::playedInCzech()
 void TestNumberGiven::worksheetLines()
 {
     const lessons::NumberGivenQuestion q{0.8, 0.05, QStringLiteral("kg m/s")};
-    QCOMPARE(linesOf(ui::worksheetLines(q, ui::WorksheetKind::Empty)),
+    QCOMPARE(linesOf(ui::worksheetLines(q, {ui::WorksheetKind::Empty})),
              (QStringList{QStringLiteral("Your answer (kg m/s):"), QStringLiteral("~")}));
-    QCOMPARE(linesOf(ui::worksheetLines(q, ui::WorksheetKind::Key)),
+    QCOMPARE(linesOf(ui::worksheetLines(q, {ui::WorksheetKind::Key})),
              QStringList{QStringLiteral("Right answer: 0.8\u00a0kg m/s (accepted from "
                                         "0.75\u00a0kg m/s to 0.85\u00a0kg m/s)")});
-    QCOMPARE(linesOf(ui::worksheetLines(q, ui::WorksheetKind::Answers)),
+    QCOMPARE(linesOf(ui::worksheetLines(q, {ui::WorksheetKind::Answers})),
              (QStringList{QStringLiteral("TRIES kg m/s"),
                           QStringLiteral("Right answer: 0.8\u00a0kg m/s")}));
     // The key as a PDF, through the worksheet's writer.
@@ -182,18 +176,11 @@ void TestNumberGiven::worksheetLines()
 
 void TestNumberGiven::writtenInTheEditor()
 {
-    const lessons::SceneLoadResult scene = lessons::loadSceneFile(
-        QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/four_balls.json"));
-    QVERIFY2(scene.ok, qPrintable(scene.error));
-    ui::LessonEditor ed;
-    ed.newLesson(scene.scene);
-    ed.resize(1024, 768);
-    ed.show();
-    ed.selectStep(0);
+    test::EditorOnStep rig;
+    QCOMPARE(rig.open(), QString());
+    ui::LessonEditor& ed = rig.ed;
     ui::LessonDraft& d = ed.draft();
-    const auto question = [&d] {
-        return d.value(0, QStringLiteral("questions")).toArray().at(0).toObject();
-    };
+    const auto question = [&rig] { return rig.question(); };
     // A measured question, made one whose number the lesson gives with the kind chooser.
     QTest::mouseClick(child<QPushButton>(ed, QStringLiteral("addMeasuredQuestion")),
                       Qt::LeftButton);

@@ -94,9 +94,9 @@ void TestPlotAxes::niceRangeRule_data()
     QTest::addColumn<bool>("flat");
     QTest::addColumn<double>("halfSpan"); // expected half height of a flat axis; 0: not flat
 
-    QTest::newRow("zero ± 5e-16, no scale") << -5e-16 << 5e-16 << 0.0 << true << 5e-5;
+    QTest::newRow("zero ± 5e-16, no scale") << -5e-16 << 5e-16 << 0.0 << true << 1.0;
     QTest::newRow("zero ± 5e-16, scale 30 kg m/s") << -5e-16 << 5e-16 << 30.0 << true << 1.5;
-    QTest::newRow("exact zero") << 0.0 << 0.0 << 0.0 << true << 5e-5;
+    QTest::newRow("exact zero") << 0.0 << 0.0 << 0.0 << true << 1.0;
     QTest::newRow("L = -0.00206182 ± 1e-12, scale 1")
         << -0.0020618210 << -0.0020618205 << 1.0 << true << 0.05;
     QTest::newRow("2 kg m/s ± 4e-16") << 2.0 - 4e-16 << 2.0 + 4e-16 << 2.0 << true << 0.1;

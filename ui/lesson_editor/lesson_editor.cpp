@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/lesson_editor.h"
-#include "lesson_editor/editor_parts.h"
+#include "question_kinds/editor_parts.h"
 #include "lesson_editor/question_editor.h"
 #include "lesson_editor/step_checks.h"
 #include "lesson_editor/step_settings_editor.h"

@@ -11,7 +11,7 @@
 // a file of its own, held by a lock file while the editor is open, so that two editors never
 // write over each other and a crash's autosave is told from a live one.
 
-#include "lesson_editor/editor_parts.h"
+#include "question_kinds/editor_parts.h"
 #include "lesson_editor/lesson_draft.h"
 
 #include <QWidget>

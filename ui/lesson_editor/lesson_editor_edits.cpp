@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The lesson editor's window: edits made through its fields and buttons, and what it shows
 // read back from the draft after each one (an edit, an undo, a redo, an open).
-#include "lesson_editor/editor_parts.h"
+#include "question_kinds/editor_parts.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
 #include "lesson_editor/step_checks.h"

@@ -1,24 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/question_editor.h"
-#include "lesson_editor/choice_editor.h"
-#include "lesson_editor/editor_parts.h"
 #include "lesson_editor/lesson_draft.h"
-#include "lesson_editor/measure_names.h"
 #include "lesson_editor/question_set_editor.h"
 
+#include "question_kinds/editor_parts.h"
+#include "question_kinds/measure_names.h"
 #include "question_kinds/question_kinds.h"
 
-#include "common/accessible_names.h"
-
 #include "format/lesson_schema.h"
-#include "run/measurements.h"
-
-#include "rigidlab/physics/integrator.h"
-#include "rigidlab/physics/overloaded.h"
 
 #include <QCheckBox>
 #include <QComboBox>
-#include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QJsonArray>
@@ -27,7 +19,6 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
-#include <QLocale>
 #include <QPushButton>
 #include <QVBoxLayout>
 
@@ -51,10 +42,32 @@ constexpr int kColumns = static_cast<int>(kEditorLanguages);
 namespace keys = lessons::schema::question_keys;
 using lessons::schema::jsonKey;
 
-/// The kind of a question as the draft holds it, as a fresh one of that kind.
-lessons::QuestionKind kindIn(const QJsonObject& q)
+/// Whether a question of the kind at `kind` in lessons::QuestionKind is asked to set settings
+/// first (its rows have "set").
+bool kindSets(std::size_t kind)
 {
-    return lessons::schema::newQuestionKind(lessons::schema::questionKindIn(q));
+    return lessons::schema::questionKindKeys(kind).contains(jsonKey(keys::kSet));
+}
+
+/// The labels of `form`'s rows and of the forms of its kinds' `pages` (each a row of its own)
+/// as wide as the widest, so that a page's fields line up with the form's.
+void alignLabels(QFormLayout* form, const std::vector<KindPage*>& pages)
+{
+    std::vector<QFormLayout*> forms{form};
+    for (KindPage* page : pages)
+        if (auto* pageForm = qobject_cast<QFormLayout*>(page->layout()))
+            forms.push_back(pageForm);
+    std::vector<QWidget*> labels;
+    int widest = 0;
+    for (QFormLayout* f : forms)
+        for (int row = 0; row < f->rowCount(); ++row)
+            if (QLayoutItem* item = f->itemAt(row, QFormLayout::LabelRole);
+                item && item->widget()) {
+                labels.push_back(item->widget());
+                widest = std::max(widest, item->widget()->sizeHint().width());
+            }
+    for (QWidget* label : labels)
+        label->setMinimumWidth(widest);
 }
 
 } // namespace
@@ -103,40 +116,12 @@ QFormLayout* QuestionEditor::buildForm()
     addLanguageFields(form, QStringLiteral("questionPrompt"), tr("Question (%1)"), m_prompt);
     addKindRows(form);
     m_fields = form;
-    m_kind = new QComboBox(this);
-    m_kind->setObjectName(QStringLiteral("questionKind"));
-    m_kind->setAccessibleName(tr("What is measured"));
-    for (const MeasureName& k : kMeasureNames)
-        m_kind->addItem(tr(k.name), QLatin1String(k.id));
-    m_body = new QComboBox(this);
-    m_body->setObjectName(QStringLiteral("questionBody"));
-    m_body->setAccessibleName(tr("Body measured"));
-    m_time = new QDoubleSpinBox(this);
-    m_time->setObjectName(QStringLiteral("questionTime"));
-    m_time->setRange(0, 3600);
-    m_time->setDecimals(2);
-    m_time->setSuffix(QStringLiteral("\u00a0s"));
-    nameWithUnit(*m_time, tr("Time of the measurement"));
-    m_unit = new QLineEdit(this);
-    m_unit->setObjectName(QStringLiteral("questionUnit"));
-    m_unit->setAccessibleName(tr("Unit of the answer"));
-    m_tolerance = new QDoubleSpinBox(this);
-    m_tolerance->setObjectName(QStringLiteral("questionTolerance"));
-    m_tolerance->setRange(0.1, 100);
-    m_tolerance->setDecimals(1);
-    m_tolerance->setSuffix(QStringLiteral("\u00a0%"));
-    nameWithUnit(*m_tolerance, tr("Tolerance of the answer"));
     m_holdRun = new QCheckBox(tr("Predict first: the run waits until it is answered"), this);
     m_holdRun->setObjectName(QStringLiteral("questionHoldRun"));
     m_answer = new QLabel(this);
     m_answer->setObjectName(QStringLiteral("questionAnswer"));
     m_answer->setWordWrap(true);
-    m_answer->setAccessibleName(tr("The answer the lab measures"));
-    form->addRow(tr("Measu&red"), m_kind);
-    form->addRow(tr("&Body"), m_body);
-    form->addRow(tr("&At time"), m_time);
-    form->addRow(tr("&Unit"), m_unit);
-    form->addRow(tr("Toleran&ce"), m_tolerance);
+    m_answer->setAccessibleName(tr("The right answer")); // each kind names its own line
     m_set = new QuestionSetEditor(this);
     m_set->setToolTip(tr("A setting the student changes with the controls before the run "
                          "this question measures (\"Set e = 0 and run again\")"));
@@ -147,13 +132,9 @@ QFormLayout* QuestionEditor::buildForm()
         e->setToolTip(tr("What the student reads after a wrong first answer; empty: \"Try once "
                          "more.\""));
     form->addRow(m_holdRun);
-    connect(m_kind, &QComboBox::activated, this, &QuestionEditor::edited);
-    connect(m_body, &QComboBox::activated, this, &QuestionEditor::edited);
-    connect(m_time, &QDoubleSpinBox::valueChanged, this, &QuestionEditor::edited);
-    connect(m_unit, &QLineEdit::textEdited, this, &QuestionEditor::edited);
-    connect(m_tolerance, &QDoubleSpinBox::valueChanged, this, &QuestionEditor::edited);
     connect(m_holdRun, &QCheckBox::toggled, this, &QuestionEditor::edited);
     connect(m_set, &QuestionSetEditor::edited, this, &QuestionEditor::edited);
+    alignLabels(form, m_pages);
     return form;
 }
 
@@ -162,38 +143,24 @@ void QuestionEditor::addKindRows(QFormLayout* form)
     m_questionKind = new QComboBox(this);
     m_questionKind->setObjectName(QStringLiteral("questionType"));
     m_questionKind->setAccessibleName(tr("Kind of question"));
-    // One item per kind of question, its index in Question::kind as its data.
-    for (std::size_t k = 0; k < std::variant_size_v<decltype(lessons::Question::kind)>; ++k)
-        m_questionKind->addItem(
-            std::visit(physics::Overloaded{
-                           [](const lessons::MeasuredQuestion&) {
-                               return tr("a number measured from the run");
-                           },
-                           [](const lessons::ChoiceQuestion&) { return tr("a choice of answers"); },
-                           [](const auto& kind) {
-                               return kindTitle(std::type_identity<std::decay_t<decltype(kind)>>{});
-                           }},
-                       lessons::schema::newQuestionKind(k)),
-            QVariant::fromValue(k));
+    // One item per kind of question, its index in Question::kind as its data, and the page of
+    // each, shown for a question of its kind.
+    m_pages.assign(std::variant_size_v<lessons::QuestionKind>, nullptr);
+    for (std::size_t k = 0; k < m_pages.size(); ++k)
+        std::visit(
+            [&](const auto& kind) {
+                using Kind = std::decay_t<decltype(kind)>;
+                m_questionKind->addItem(kindTitle(std::type_identity<Kind>{}),
+                                        QVariant::fromValue(k));
+                m_pages[k] = editorPage(std::type_identity<Kind>{}, this);
+                m_pages[k]->edited = [this] { edited(); };
+            },
+            lessons::schema::newQuestionKind(k));
     connect(m_questionKind, &QComboBox::activated, this,
             [this] { setKind(m_questionKind->currentData().value<std::size_t>()); });
     form->addRow(tr("&Kind"), m_questionKind);
-    m_choices = new ChoiceEditor(this);
-    connect(m_choices, &ChoiceEditor::edited, this, &QuestionEditor::edited);
-    form->addRow(m_choices);
-    // The page of each kind of ui/question_kinds/ (the older kinds' fields are this form's).
-    m_pages.assign(std::variant_size_v<lessons::QuestionKind>, nullptr);
-    for (std::size_t k = 0; k < m_pages.size(); ++k)
-        std::visit(physics::Overloaded{[](const lessons::MeasuredQuestion&) {},
-                                       [](const lessons::ChoiceQuestion&) {},
-                                       [&](const auto& kind) {
-                                           m_pages[k] = editorPage(
-                                               std::type_identity<std::decay_t<decltype(kind)>>{},
-                                               this);
-                                           m_pages[k]->edited = [this] { edited(); };
-                                           form->addRow(m_pages[k]);
-                                       }},
-                   lessons::schema::newQuestionKind(k));
+    for (KindPage* page : m_pages)
+        form->addRow(page);
 }
 
 void QuestionEditor::addLanguageFields(QFormLayout* form, const QString& name, const QString& label,
@@ -242,26 +209,6 @@ void QuestionEditor::store(const QJsonObject& q)
     m_draft.setValue(m_step, QStringLiteral("questions"), all, tr("question"));
 }
 
-QJsonObject QuestionEditor::defaultMeasured() const
-{
-    const MeasureName& k = kMeasureNames[1]; // speed at a time: any body, any scene
-    QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}, {QStringLiteral("time"), 1}};
-    const QList<std::pair<QString, QString>> bodies = movingBodies();
-    if (!bodies.isEmpty())
-        measure.insert(QStringLiteral("body"), bodies.front().first);
-    return QJsonObject{{jsonKey(keys::kMeasure), measure},
-                       {jsonKey(keys::kUnit), QLatin1String(k.unit)},
-                       {jsonKey(keys::kTolerance), 0.05}};
-}
-
-QJsonObject QuestionEditor::defaultChoice() const
-{
-    return QJsonObject{{jsonKey(keys::kChoices),
-                        QJsonArray{QJsonObject{{currentLanguage(), tr("Option %1").arg(1)}},
-                                   QJsonObject{{currentLanguage(), tr("Option %1").arg(2)}}}},
-                       {jsonKey(keys::kAnswer), 0}};
-}
-
 void QuestionEditor::setKind(std::size_t kind)
 {
     QJsonObject q = question();
@@ -272,14 +219,12 @@ void QuestionEditor::setKind(std::size_t kind)
     // question of that kind does.
     for (const QString& key : lessons::schema::questionKindKeys(was))
         q.remove(key);
-    const QJsonObject fresh =
-        std::visit(physics::Overloaded{
-                       [this](const lessons::MeasuredQuestion&) { return defaultMeasured(); },
-                       [this](const lessons::ChoiceQuestion&) { return defaultChoice(); },
-                       [this](const auto& kind) {
-                           return newKindKeys(std::type_identity<std::decay_t<decltype(kind)>>{});
-                       }},
-                   lessons::schema::newQuestionKind(kind));
+    const QJsonObject fresh = std::visit(
+        [this](const auto& k) {
+            return newKindKeys(std::type_identity<std::decay_t<decltype(k)>>{},
+                               m_draft.sceneObject(m_step));
+        },
+        lessons::schema::newQuestionKind(kind));
     for (auto it = fresh.begin(); it != fresh.end(); ++it)
         q.insert(it.key(), it.value());
     store(q);
@@ -290,11 +235,14 @@ void QuestionEditor::addQuestion(bool predict)
     if (m_step < 0)
         return;
     QJsonArray all = m_draft.value(m_step, QStringLiteral("questions")).toArray();
-    QJsonObject q = defaultMeasured();
+    // A new question is a measured one, asking in the words the editor writes for its measure.
+    const QJsonObject scene = m_draft.sceneObject(m_step);
+    QJsonObject q = newKindKeys(std::type_identity<lessons::MeasuredQuestion>{}, scene);
     const QJsonObject measure = q.value(jsonKey(keys::kMeasure)).toObject();
-    q.insert(jsonKey(keys::kPrompt),
-             QJsonObject{{currentLanguage(),
-                          defaultPrompt(measure, bodyName(measure.value(u"body").toString()))}});
+    q.insert(
+        jsonKey(keys::kPrompt),
+        QJsonObject{{currentLanguage(),
+                     defaultPrompt(measure, bodyName(scene, measure.value(u"body").toString()))}});
     if (predict)
         q.insert(jsonKey(keys::kHoldBack), QJsonArray{QStringLiteral("run")});
     all.append(q);
@@ -319,7 +267,6 @@ void QuestionEditor::edited()
     if (m_refreshing)
         return;
     QJsonObject q = question();
-    const QJsonObject before = q;
     // A language left empty is not written: the student reads the text in one it has.
     for (const auto& [key, fields] :
          {std::pair{jsonKey(keys::kPrompt), &m_prompt}, std::pair{jsonKey(keys::kHint), &m_hint}}) {
@@ -332,12 +279,12 @@ void QuestionEditor::edited()
         else
             q.insert(key, text);
     }
-    std::visit(physics::Overloaded{
-                   [&](const lessons::MeasuredQuestion&) { applyMeasured(q); },
-                   [&](const lessons::ChoiceQuestion&) { q = m_choices->applyTo(q); },
-                   [&](const auto&) { m_pages[lessons::schema::questionKindIn(q)]->applyTo(q); }},
-               kindIn(q));
-    followMeasure(before, q);
+    const std::size_t kind = lessons::schema::questionKindIn(q);
+    m_pages[kind]->applyTo(q);
+    if (kindSets(kind) && !m_set->value().isEmpty())
+        q.insert(jsonKey(keys::kSet), m_set->value());
+    else
+        q.remove(jsonKey(keys::kSet));
     QJsonArray hold = q.value(jsonKey(keys::kHoldBack)).toArray();
     const bool held = hold.contains(QStringLiteral("run"));
     if (m_holdRun->isChecked() && !held)
@@ -351,71 +298,6 @@ void QuestionEditor::edited()
     else
         q.insert(jsonKey(keys::kHoldBack), hold);
     store(q);
-}
-
-void QuestionEditor::followMeasure(const QJsonObject& before, QJsonObject& q) const
-{
-    // The prompt the editor wrote follows what is measured, until the teacher writes their own.
-    const QJsonObject was = before.value(jsonKey(keys::kMeasure)).toObject();
-    const QJsonObject now = q.value(jsonKey(keys::kMeasure)).toObject();
-    if (was == now || now.isEmpty())
-        return;
-    const QString language = currentLanguage();
-    const QJsonValue prompt = q.value(jsonKey(keys::kPrompt));
-    if (writtenText(prompt, language) !=
-        defaultPrompt(was, bodyName(was.value(u"body").toString())))
-        return;
-    q.insert(jsonKey(keys::kPrompt),
-             withWrittenText(prompt, language,
-                             defaultPrompt(now, bodyName(now.value(u"body").toString()))));
-}
-
-QList<std::pair<QString, QString>> QuestionEditor::movingBodies() const
-{
-    // Read from the scene itself, so that they are listed even while the lesson has an error.
-    QList<std::pair<QString, QString>> out;
-    for (const QJsonValue b : m_draft.sceneObject(m_step).value(u"bodies").toArray()) {
-        const QJsonObject body = b.toObject();
-        const QString id = body.value(u"id").toString();
-        if (id.isEmpty() || body.value(u"type").toString() == u"static")
-            continue;
-        const QString label = shownText(body.value(u"label"));
-        out.append({id, label.isEmpty() ? id : label});
-    }
-    return out;
-}
-
-QString QuestionEditor::bodyName(const QString& id) const
-{
-    for (const auto& [bodyId, name] : movingBodies())
-        if (bodyId == id)
-            return name;
-    return id;
-}
-
-void QuestionEditor::applyMeasured(QJsonObject& q)
-{
-    const MeasureName& k = measureName(m_kind->currentData().toString());
-    QJsonObject measure{{QStringLiteral("kind"), QLatin1String(k.id)}};
-    const QJsonObject old = q.value(jsonKey(keys::kMeasure)).toObject();
-    if (k.body && m_body->currentIndex() >= 0)
-        measure.insert(QStringLiteral("body"), m_body->currentData().toString());
-    if (k.time)
-        measure.insert(QStringLiteral("time"), m_time->value());
-    else // an apex keeps its bounce and floor
-        for (const char* key : {"n", "above"})
-            if (old.contains(QLatin1String(key)) && old.value(u"kind").toString() == u"apex")
-                measure.insert(QLatin1String(key), old.value(QLatin1String(key)));
-    q.insert(jsonKey(keys::kMeasure), measure);
-    if (old.value(u"kind").toString() != QLatin1String(k.id) &&
-        m_unit->text() == measureName(old.value(u"kind").toString()).unit)
-        m_unit->setText(QLatin1String(k.unit)); // the new quantity's unit, unless typed
-    q.insert(jsonKey(keys::kUnit), m_unit->text());
-    q.insert(jsonKey(keys::kTolerance), m_tolerance->value() / 100.0);
-    if (m_set->value().isEmpty())
-        q.remove(jsonKey(keys::kSet));
-    else
-        q.insert(jsonKey(keys::kSet), m_set->value());
 }
 
 void QuestionEditor::refresh()
@@ -441,17 +323,7 @@ void QuestionEditor::refresh()
     }
     m_list->setCurrentRow(all.isEmpty() ? -1 : keep);
 
-    // The bodies of the step's scene that move, by their labels (the id where there is none),
-    // each kept by its id.
     const QJsonObject q = question();
-    const QJsonObject measure = q.value(jsonKey(keys::kMeasure)).toObject();
-    m_body->clear();
-    for (const auto& [id, name] : movingBodies())
-        m_body->addItem(name, id);
-    const QString body = measure.value(u"body").toString();
-    if (!body.isEmpty() && m_body->findData(body) < 0)
-        m_body->addItem(tr("%1 (not in the scene)").arg(body), body);
-    m_body->setCurrentIndex(m_body->findData(body));
 
     for (const auto& [key, fields] :
          {std::pair{jsonKey(keys::kPrompt), &m_prompt}, std::pair{jsonKey(keys::kHint), &m_hint}}) {
@@ -463,34 +335,16 @@ void QuestionEditor::refresh()
             field->setPlaceholderText(shownText(v));
         }
     }
-    const MeasureName& k = measureName(measure.value(u"kind").toString());
-    m_kind->setCurrentIndex(m_kind->findData(QLatin1String(k.id)));
-    m_body->setEnabled(k.body);
-    m_time->setEnabled(k.time);
-    m_time->setValue(measure.value(u"time").toDouble());
-    showText(m_unit, q.value(jsonKey(keys::kUnit)).toString());
-    m_tolerance->setValue(q.value(jsonKey(keys::kTolerance)).toDouble(0.05) * 100.0);
     m_set->show(q.value(jsonKey(keys::kSet)).toObject());
     m_holdRun->setChecked(
         q.value(jsonKey(keys::kHoldBack)).toArray().contains(QStringLiteral("run")));
-    // Each kind shows its own fields only: the measured kind's rows, the options of a choice,
-    // the page of a kind of ui/question_kinds/.
+    // Each kind shows its own page only, and what the student sets first where it has that.
     const std::size_t kind = lessons::schema::questionKindIn(q);
-    const bool measured = kind == lessons::schema::questionKindIndex<lessons::MeasuredQuestion>();
-    const bool choice = kind == lessons::schema::questionKindIndex<lessons::ChoiceQuestion>();
     m_questionKind->setCurrentIndex(m_questionKind->findData(QVariant::fromValue(kind)));
-    for (QWidget* w :
-         std::initializer_list<QWidget*>{m_kind, m_body, m_time, m_unit, m_tolerance, m_set})
-        m_fields->setRowVisible(w, measured);
-    m_fields->setRowVisible(m_choices, choice);
-    if (choice)
-        m_choices->setQuestion(q);
     for (std::size_t k = 0; k < m_pages.size(); ++k)
-        if (m_pages[k]) {
-            m_fields->setRowVisible(m_pages[k], k == kind);
-            if (k == kind)
-                m_pages[k]->showQuestion(q);
-        }
+        m_fields->setRowVisible(m_pages[k], k == kind);
+    m_pages[kind]->showQuestion(q, m_draft.sceneObject(m_step));
+    m_fields->setRowVisible(m_set, kindSets(kind));
     const bool any = currentQuestion() >= 0;
     m_form->setVisible(any);
     m_refreshing = false;
@@ -524,43 +378,10 @@ void QuestionEditor::showAnswer()
     }
     const lessons::LessonStep& step = lesson->steps[static_cast<std::size_t>(m_step)];
     const lessons::Question& question = step.questions.at(static_cast<std::size_t>(at));
-    std::visit(physics::Overloaded{
-                   [&](const lessons::MeasuredQuestion& q) { showMeasured(step, question, q); },
-                   [&](const lessons::ChoiceQuestion& q) {
-                       // Nothing is measured for a choice: its line says which option is right.
-                       m_answer->setAccessibleName(tr("The right option"));
-                       m_answer->setText(
-                           tr("The student chooses one of %1 options; the right one is “%2”.")
-                               .arg(q.choices.size())
-                               .arg(q.choices.value(q.answer)));
-                   },
-                   [&](const auto& kind) {
-                       m_answer->setAccessibleName(tr("The right answer"));
-                       m_answer->setText(lessons::keepUnitsTogether(answerLine(kind)));
-                   }},
-               question.kind);
-}
-
-void QuestionEditor::showMeasured(const lessons::LessonStep& step,
-                                  const lessons::Question& question,
-                                  const lessons::MeasuredQuestion& q)
-{
-    m_answer->setAccessibleName(tr("The answer the lab measures"));
-    const std::optional<double> value =
-        lessons::measureAhead(lessons::askedStep(step, question), q.measure);
-    const QLocale locale;
-    if (!value) {
-        m_answer->setText(tr("⚠ The run does not get there (or diverges first): raise the step's "
-                             "export time or choose an earlier time."));
-        return;
-    }
-    const double band = std::abs(*value) * q.tolerance + q.absoluteTolerance;
-    QString text = tr("The lab measures %1 %3; answers from %2 to %4 %3 are right.")
-                       .arg(locale.toString(*value, 'g', 4), locale.toString(*value - band, 'g', 4),
-                            q.unit, locale.toString(*value + band, 'g', 4));
-    // Whether the integrators a student may choose measure wider apart than this is said in
-    // the step's problems (lesson_editor/step_checks.h): those runs take a worker thread.
-    m_answer->setText(lessons::keepUnitsTogether(text));
+    const AnswerLine line = std::visit(
+        [&](const auto& kind) { return answerLine(kind, step, question); }, question.kind);
+    m_answer->setAccessibleName(line.name);
+    m_answer->setText(line.text);
 }
 
 } // namespace rigidlab::ui

@@ -44,43 +44,6 @@ QString cannotWrite(const QString& path, const QString& why)
         .arg(QDir::toNativeSeparators(path), why);
 }
 
-/// Lays the plot out for the export size while it is drawn, and back for the screen after:
-/// title and caption shown, the legend wrapped for the export's width, the graphs decimated
-/// for its pixels (`columns`), and every curve, item and legend line antialiased.
-class ExportLayout {
-public:
-    ExportLayout(PlotWidget& plot, QSize size, int columns)
-        : m_plot(plot), m_titleShown(plot.titleShown()), m_captionShown(plot.captionShown()),
-          m_antialiased(plot.plot()->antialiasedElements())
-    {
-        m_plot.setTitleShown(true); // a handout needs its title, and its caption if any
-        m_plot.setCaptionShown(true);
-        m_plot.fitLegend(size.width());
-        m_plot.fitMarks(size.width());
-        m_plot.prepareGraphs(columns);
-        m_plot.plot()->setAntialiasedElements(m_antialiased | QCP::aePlottables | QCP::aeItems |
-                                              QCP::aeLegendItems | QCP::aeScatters);
-    }
-    ~ExportLayout()
-    {
-        m_plot.plot()->setAntialiasedElements(m_antialiased);
-        m_plot.setTitleShown(m_titleShown);
-        m_plot.setCaptionShown(m_captionShown);
-        m_plot.fitLegend(m_plot.plot()->width());
-        m_plot.fitMarks();
-        m_plot.prepareGraphs();
-        m_plot.plot()->replot(QCustomPlot::rpQueuedReplot);
-    }
-    ExportLayout(const ExportLayout&) = delete;
-    ExportLayout& operator=(const ExportLayout&) = delete;
-
-private:
-    PlotWidget& m_plot;
-    bool m_titleShown;
-    bool m_captionShown;
-    QCP::AntialiasedElements m_antialiased;
-};
-
 bool encodePng(QCustomPlot& plot, const ExportOptions& options, QByteArray& bytes, QString& why)
 {
     const QSize logical = options.logicalSize;
@@ -384,6 +347,30 @@ ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat form
     if (const QString error = lessons::writeFileAtomically(path, bytes); !error.isEmpty())
         return {false, error};
     return {true, {}};
+}
+
+ExportLayout::ExportLayout(PlotWidget& plot, QSize size, int columns)
+    : m_plot(plot), m_titleShown(plot.titleShown()), m_captionShown(plot.captionShown()),
+      m_antialiased(plot.plot()->antialiasedElements())
+{
+    m_plot.setTitleShown(true); // a handout needs its title, and its caption if any
+    m_plot.setCaptionShown(true);
+    m_plot.fitLegend(size.width());
+    m_plot.fitMarks(size.width());
+    m_plot.prepareGraphs(columns);
+    m_plot.plot()->setAntialiasedElements(m_antialiased | QCP::aePlottables | QCP::aeItems |
+                                          QCP::aeLegendItems | QCP::aeScatters);
+}
+
+ExportLayout::~ExportLayout()
+{
+    m_plot.plot()->setAntialiasedElements(m_antialiased);
+    m_plot.setTitleShown(m_titleShown);
+    m_plot.setCaptionShown(m_captionShown);
+    m_plot.fitLegend(m_plot.plot()->width());
+    m_plot.fitMarks();
+    m_plot.prepareGraphs();
+    m_plot.plot()->replot(QCustomPlot::rpQueuedReplot);
 }
 
 } // namespace rigidlab::ui

@@ -10,6 +10,8 @@
 #include "export/csv_dialect.h"
 #include "plots/plot_model.h"
 
+#include <qcustomplot.h>
+
 #include <QSize>
 #include <QString>
 
@@ -87,5 +89,23 @@ struct ExportResult {
 /// while it is drawn, then put back as it was on screen.
 ExportResult exportPlot(PlotWidget& plot, const QString& path, ExportFormat format,
                         const ExportOptions& options = {});
+
+/// Lays the plot out for an export `size` [logical pixels] while it is drawn, and back for the
+/// screen after: title and caption shown, the legend and the marks fitted to the export's
+/// width, the graphs decimated for its pixels (`columns`), and every curve, item and legend
+/// line antialiased. The exports and the worksheet's figures draw within one.
+class ExportLayout {
+public:
+    ExportLayout(PlotWidget& plot, QSize size, int columns);
+    ~ExportLayout();
+    ExportLayout(const ExportLayout&) = delete;
+    ExportLayout& operator=(const ExportLayout&) = delete;
+
+private:
+    PlotWidget& m_plot;
+    bool m_titleShown;
+    bool m_captionShown;
+    QCP::AntialiasedElements m_antialiased;
+};
 
 } // namespace rigidlab::ui

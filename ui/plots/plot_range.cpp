@@ -34,7 +34,10 @@ AxisRange niceRange(double min, double max, double scale, double minSpan)
         // Constant up to rounding: drawn flat at the middle of its values, on an axis whose
         // ticks are round at the quantity's own size.
         const double center = 0.5 * (min + max);
-        const double half = kFlatHalfSpan * magnitude;
+        // Nothing to size it by (an empty scene's momentum, 0 with no scale): one unit either
+        // side, not a tenth of kMinMagnitude, whose tick labels (0.000025) read as data.
+        const bool sizeless = std::max({std::abs(min), std::abs(max), scale}) < kMinMagnitude;
+        const double half = sizeless ? kSizelessHalfSpan : kFlatHalfSpan * magnitude;
         r.lower = center - half;
         r.upper = center + half;
         r.flat = true;

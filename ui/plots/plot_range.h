@@ -10,8 +10,9 @@
 // is no variation (kMinMagnitude stands in for a magnitude smaller than itself, so that a zero
 // with noise and no scale is flat too). Such a series is drawn flat, in the middle of an axis a
 // tenth of its magnitude (or of the scene's scale) tall, so that the ticks are few, round and
-// distinct. A larger variation is real: it is fitted with a margin, and the tick labels get as many
-// digits as it takes for neighbouring ticks to read differently.
+// distinct; with neither a magnitude nor a scale (an empty scene's 0), on an axis of one unit
+// either side. A larger variation is real: it is fitted with a margin, and the tick labels get as
+// many digits as it takes for neighbouring ticks to read differently.
 //
 //   scale: what the quantity is worth in this scene, in its own unit (the total momentum the
 //          bodies could have, |E0| for energy...). It keeps a quantity that is zero up to
@@ -35,6 +36,9 @@ using lessons::kMinMagnitude;
 using lessons::kNoiseFloor;
 /// A flat series sits in an axis this fraction of its magnitude above and below it.
 inline constexpr double kFlatHalfSpan = 0.05;
+/// A flat series with neither a magnitude nor a scale (both below kMinMagnitude) sits in an
+/// axis this many of its units above and below it.
+inline constexpr double kSizelessHalfSpan = 1.0;
 /// Fraction of the data's span added above and below a varying series.
 inline constexpr double kValueMargin = 0.08;
 inline constexpr int kMinLabelDigits = 6;

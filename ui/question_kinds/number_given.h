@@ -73,7 +73,7 @@ public:
         connect(m_within, &QDoubleSpinBox::valueChanged, this, changed);
         connect(m_unit, &QLineEdit::textEdited, this, changed);
     }
-    void showQuestion(const QJsonObject& q) override
+    void showQuestion(const QJsonObject& q, const QJsonObject& /*scene*/) override
     {
         namespace keys = lessons::schema::question_keys;
         using lessons::schema::jsonKey;
@@ -133,11 +133,11 @@ inline AnswerRow answerRow(const lessons::NumberGivenQuestion& q, QLabel* prompt
 }
 
 inline std::vector<SheetLine> worksheetLines(const lessons::NumberGivenQuestion& q,
-                                             WorksheetKind sheet)
+                                             const SheetQuestion& at)
 {
     using Is = SheetLine::Is;
     const QString right = lessons::formatGiven(q, q.number);
-    switch (sheet) {
+    switch (at.sheet) {
     case WorksheetKind::Empty:
         return {
             {Is::Text,
@@ -163,7 +163,8 @@ inline QString kindTitle(std::type_identity<lessons::NumberGivenQuestion>)
 }
 
 /// A question becoming one: the number 1, right within 0.05, no unit yet.
-inline QJsonObject newKindKeys(std::type_identity<lessons::NumberGivenQuestion>)
+inline QJsonObject newKindKeys(std::type_identity<lessons::NumberGivenQuestion>,
+                               const QJsonObject& /*scene*/)
 {
     namespace keys = lessons::schema::question_keys;
     using lessons::schema::jsonKey;
@@ -175,12 +176,17 @@ inline KindPage* editorPage(std::type_identity<lessons::NumberGivenQuestion>, QW
     return new number_given::Page(parent);
 }
 
-inline QString answerLine(const lessons::NumberGivenQuestion& q)
+inline AnswerLine answerLine(const lessons::NumberGivenQuestion& q, const lessons::LessonStep&,
+                             const lessons::Question&)
 {
-    return QCoreApplication::translate("NumberGivenQuestion",
-                                       "The right answer is %1; answers from %2 to %3 are right.")
-        .arg(lessons::formatGiven(q, q.number), lessons::formatGiven(q, q.number - q.within),
-             lessons::formatGiven(q, q.number + q.within));
+    return {
+        QCoreApplication::translate("NumberGivenQuestion", "The right answer"),
+        lessons::keepUnitsTogether(
+            QCoreApplication::translate("NumberGivenQuestion",
+                                        "The right answer is %1; answers from %2 to %3 are right.")
+                .arg(lessons::formatGiven(q, q.number),
+                     lessons::formatGiven(q, q.number - q.within),
+                     lessons::formatGiven(q, q.number + q.within)))};
 }
 
 } // namespace rigidlab::ui

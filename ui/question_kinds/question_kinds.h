@@ -5,5 +5,7 @@
 // lesson player, the worksheet and the lesson editor include this list and find a kind's rows,
 // lines and page by its type; a kind of lessons::QuestionKind missing here does not compile.
 
+#include "question_kinds/choice.h"
 #include "question_kinds/kind_ui.h"
+#include "question_kinds/measured.h"
 #include "question_kinds/number_given.h"

@@ -13,15 +13,12 @@
 #include "format/scene_schema.h"
 #include "run/measurements.h"
 
-#include "rigidlab/physics/overloaded.h"
-
 #include <QCoreApplication>
 #include <QDate>
 #include <QDir>
 #include <QFileInfo>
 #include <QPdfWriter>
 
-#include <cmath>
 #include <memory>
 #include <variant>
 
@@ -59,11 +56,6 @@ QString verdictWord(const lessons::Verdict& v, bool showMe)
     return v.right ? Worksheet::tr("✓ right") : Worksheet::tr("✗ not right");
 }
 
-QString quantity(double value, const QString& unit)
-{
-    return unit.isEmpty() ? formatReadable(value) : formatQuantity(value, unit);
-}
-
 /// "integrator Verlet · dt = 0.001 s · solver The paper's impulse": what repeats the run, as
 /// the window's status line names the solver.
 QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& ran)
@@ -98,18 +90,6 @@ QString settingsLine(const lessons::LessonStep& step, const physics::WorldDef& r
     return line;
 }
 
-/// The measured value of question q of a step for the key: the one the student's tries were
-/// judged against, else a run without a window.
-std::optional<double> keyValue(const lessons::LessonStep& step, const lessons::Question& q,
-                               const lessons::MeasuredQuestion& measured,
-                               const std::vector<lessons::AnswerTry>& tries)
-{
-    for (const lessons::AnswerTry& t : tries)
-        if (t.measured && !t.ahead)
-            return t.measured;
-    return lessons::measureAhead(lessons::askedStep(step, q), measured.measure);
-}
-
 class SheetWriter {
 public:
     SheetWriter(const lessons::Lesson& lesson, const lessons::Answers& answers, WorksheetKind kind,
@@ -129,21 +109,10 @@ private:
     void writeTitle();
     void writeStep(int index, int& figures);
     void writeQuestion(const lessons::LessonStep& step, int s, int q);
-    /// A measured question's lines to fill in, the value the key accepts or, handed in, its
-    /// tries and the value measured.
-    void writeMeasured(const lessons::LessonStep& step, const lessons::Question& question,
-                       const lessons::MeasuredQuestion& measured,
-                       const std::vector<lessons::AnswerTry>& tries);
-    /// A choice question's options (the key marks the right one) and, handed in, its tries.
-    void writeChoice(const lessons::Question& question, const lessons::ChoiceQuestion& choice,
-                     const std::vector<lessons::AnswerTry>& tries);
-    /// The lines a kind of ui/question_kinds/ writes under its prompt.
-    void writeLines(const lessons::Question& question, const std::vector<SheetLine>& lines,
-                    const std::vector<lessons::AnswerTry>& tries);
-    /// The tries with their verdicts, a typed answer in `unit`; the value last measured.
-    std::optional<double> writeTries(const lessons::Question& question,
-                                     const std::vector<lessons::AnswerTry>& tries,
-                                     const QString& unit);
+    /// The lines the question's kind writes under its prompt (ui/question_kinds/).
+    void writeLines(const SheetQuestion& at, const std::vector<SheetLine>& lines);
+    /// The tries with their verdicts, a typed answer in `unit`.
+    void writeTries(const SheetQuestion& at, const QString& unit);
     const std::vector<lessons::AnswerTry>& triesOf(int step, int question) const;
 
     const lessons::Lesson& m_lesson;
@@ -257,73 +226,13 @@ void SheetWriter::writeQuestion(const lessons::LessonStep& step, int s, int q)
     m_pages.keepRoom(m_pages.heightOf(prompt, m_bold) + kQuestionRoom);
     m_pages.text(prompt, m_bold);
     const std::vector<lessons::AnswerTry>& tries = triesOf(s, q);
-    std::visit(
-        physics::Overloaded{
-            [&](const lessons::MeasuredQuestion& measured) {
-                writeMeasured(step, question, measured, tries);
-            },
-            [&](const lessons::ChoiceQuestion& choice) { writeChoice(question, choice, tries); },
-            [&](const auto& kind) { writeLines(question, worksheetLines(kind, m_kind), tries); }},
-        question.kind);
+    const std::vector<lessons::Verdict> verdicts = judgeTries(question, tries);
+    const SheetQuestion at{m_kind, &step, &question, tries, verdicts};
+    std::visit([&](const auto& kind) { writeLines(at, worksheetLines(kind, at)); }, question.kind);
     m_pages.gap(6);
 }
 
-void SheetWriter::writeMeasured(const lessons::LessonStep& step, const lessons::Question& question,
-                                const lessons::MeasuredQuestion& measured,
-                                const std::vector<lessons::AnswerTry>& tries)
-{
-    const int indent = 18;
-    const QString& unit = measured.unit;
-    switch (m_kind) {
-    case WorksheetKind::Empty:
-        m_pages.text(Worksheet::tr("Your prediction (%1):").arg(unit), m_pages.baseFont(), indent);
-        m_pages.writingLines(1, indent);
-        m_pages.text(Worksheet::tr("Measured (%1):").arg(unit), m_pages.baseFont(), indent);
-        m_pages.writingLines(1, indent);
-        break;
-    case WorksheetKind::Key: {
-        const std::optional<double> value = keyValue(step, question, measured, tries);
-        if (!value) {
-            m_pages.text(Worksheet::tr("Not measured within the step's run."), m_pages.baseFont(),
-                         indent);
-            break;
-        }
-        const double slack = measured.tolerance * std::abs(*value) + measured.absoluteTolerance;
-        m_pages.text(Worksheet::tr("Measured: %1 (accepted from %2 to %3)")
-                         .arg(quantity(*value, unit), quantity(*value - slack, unit),
-                              quantity(*value + slack, unit)),
-                     m_pages.baseFont(), indent);
-        break;
-    }
-    case WorksheetKind::Answers:
-        if (const std::optional<double> value = writeTries(question, tries, unit))
-            m_pages.text(Worksheet::tr("Measured value: %1").arg(quantity(*value, unit)), m_bold,
-                         indent);
-        break;
-    }
-}
-
-void SheetWriter::writeChoice(const lessons::Question& question,
-                              const lessons::ChoiceQuestion& choice,
-                              const std::vector<lessons::AnswerTry>& tries)
-{
-    const int indent = 18;
-    // The options to tick by hand; the key marks the right one in bold as well as by its box.
-    for (qsizetype c = 0; c < choice.choices.size(); ++c) {
-        const bool right = m_kind == WorksheetKind::Key && c == choice.answer;
-        m_pages.text(QStringLiteral("%1 %2").arg(
-                         right ? QStringLiteral("[x]") : QStringLiteral("[  ]"), choice.choices[c]),
-                     right ? m_bold : m_pages.baseFont(), indent);
-    }
-    if (m_kind == WorksheetKind::Key)
-        m_pages.text(Worksheet::tr("Right answer: “%1”").arg(choice.choices.value(choice.answer)),
-                     m_bold, indent);
-    else if (m_kind == WorksheetKind::Answers)
-        writeTries(question, tries, QString());
-}
-
-void SheetWriter::writeLines(const lessons::Question& question, const std::vector<SheetLine>& lines,
-                             const std::vector<lessons::AnswerTry>& tries)
+void SheetWriter::writeLines(const SheetQuestion& at, const std::vector<SheetLine>& lines)
 {
     const int indent = 18;
     for (const SheetLine& line : lines) {
@@ -338,26 +247,22 @@ void SheetWriter::writeLines(const lessons::Question& question, const std::vecto
             m_pages.writingLines(1, indent);
             break;
         case SheetLine::Is::Tries:
-            writeTries(question, tries, line.text);
+            writeTries(at, line.text);
             break;
         }
     }
 }
 
-std::optional<double> SheetWriter::writeTries(const lessons::Question& question,
-                                              const std::vector<lessons::AnswerTry>& tries,
-                                              const QString& unit)
+void SheetWriter::writeTries(const SheetQuestion& at, const QString& unit)
 {
     const int indent = 18;
-    if (tries.empty()) {
+    if (at.tries.empty()) {
         m_pages.text(Worksheet::tr("Not answered."), m_pages.baseFont(), indent);
-        return std::nullopt;
+        return;
     }
-    const std::vector<lessons::Verdict> verdicts = judgeTries(question, tries);
-    std::optional<double> measured;
-    for (std::size_t k = 0; k < tries.size(); ++k) {
-        const lessons::AnswerTry& t = tries[k];
-        const lessons::Verdict& v = verdicts[k];
+    for (std::size_t k = 0; k < at.tries.size(); ++k) {
+        const lessons::AnswerTry& t = at.tries[k];
+        const lessons::Verdict& v = at.verdicts[k];
         // A try before the run measured anything, or judged by a run ahead, is a prediction.
         const bool given = t.answer || t.choice;
         const QString label = t.answer && (t.ahead || !t.measured)
@@ -365,15 +270,12 @@ std::optional<double> SheetWriter::writeTries(const lessons::Question& question,
                               : given ? Worksheet::tr("Answer %1").arg(k + 1)
                                       : Worksheet::tr("Show me");
         const QString answer = t.choice   ? QStringLiteral("“%1”").arg(t.choiceText)
-                               : t.answer ? quantity(*t.answer, unit)
+                               : t.answer ? sheetQuantity(*t.answer, unit)
                                           : Worksheet::tr("(no answer)");
         m_pages.text(
             QStringLiteral("%1: %2 — %3. %4").arg(label, answer, verdictWord(v, !given), v.message),
             m_pages.baseFont(), indent);
-        if (v.measured)
-            measured = v.value;
     }
-    return measured;
 }
 
 /// `text` in a bidirectional isolate (Unicode's FSI … PDI): a name written right to left

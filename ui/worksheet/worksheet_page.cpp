@@ -2,6 +2,7 @@
 #include "worksheet/worksheet_page.h"
 
 #include "common/drawable_text.h"
+#include "plots/plot_export.h"
 #include "plots/plot_widget.h"
 
 #include <QBuffer>
@@ -161,22 +162,15 @@ void WorksheetPages::figure(PlotWidget& plot)
     const double scale = static_cast<double>(m_area.width()) / kPlotSize.width();
     const int height = figureHeight() - 8;
     keepRoom(height);
-    // Laid out as the plot export lays it out: title and caption shown, the legend and the
-    // marks fitted to the export width, two points per column of a fine print.
-    const bool titleShown = plot.titleShown();
-    const bool captionShown = plot.captionShown();
-    plot.setTitleShown(true);
-    plot.setCaptionShown(true);
-    plot.fitLegend(kPlotSize.width());
-    plot.fitMarks(kPlotSize.width());
-    plot.prepareGraphs(2 * kPlotSize.width());
-    m_painter.save();
-    m_painter.translate(m_area.left(), m_y);
-    m_painter.scale(scale, scale);
-    plot.plot()->toPainter(&m_painter, kPlotSize.width(), kPlotSize.height());
-    m_painter.restore();
-    plot.setTitleShown(titleShown);
-    plot.setCaptionShown(captionShown);
+    {
+        // Laid out as the plot export lays it out, two points per column of a fine print.
+        const ExportLayout layout(plot, kPlotSize, 2 * kPlotSize.width());
+        m_painter.save();
+        m_painter.translate(m_area.left(), m_y);
+        m_painter.scale(scale, scale);
+        plot.plot()->toPainter(&m_painter, kPlotSize.width(), kPlotSize.height());
+        m_painter.restore();
+    }
     m_y += height + 8;
     ++m_figures;
 }

@@ -104,6 +104,56 @@ void satOnPlaced(int ia, const Polygon& pa, const Transform& xfA, int ib, const 
                                   .radiusB = radius(pb)});
 }
 
+/// The points of recycledPoints (narrow_phase.cpp) for a pair that passed mayRecycle with
+/// `m`, their arithmetic written out coordinate by coordinate in the same order: the same
+/// points, bit for bit. GCC builds the two-number vectors of the plain form from halves stored
+/// one by one and loads them whole, a load that waits for the stores (a tenth of the base-100
+/// pyramid's step went there).
+bool carriedPoints(const Contact& previous, const AnchorMotion& m, const Body& a, const Body& b,
+                   double margin, std::array<ContactPoint, 2>& points)
+{
+    const Manifold& last = previous.manifold;
+    const ContactAnchors& k = previous.anchors;
+    const double nx = last.normal.x(), ny = last.normal.y();
+    const double sx = m.shift.x(), sy = m.shift.y();
+    points = last.points;
+    for (int i = 0; i < last.pointCount; ++i) {
+        const auto p = static_cast<size_t>(i);
+        const double ax = k.anchorA[p].x(), ay = k.anchorA[p].y();
+        const double bx = k.anchorB[p].x(), by = k.anchorB[p].y();
+        const double rAx = m.dqA.c * ax - m.dqA.s * ay, rAy = m.dqA.s * ax + m.dqA.c * ay;
+        const double rBx = m.dqB.c * bx - m.dqB.s * by, rBy = m.dqB.s * bx + m.dqB.c * by;
+        const double dx = (sx + (rBx - bx)) - (rAx - ax);
+        const double dy = (sy + (rBy - by)) - (rAy - ay);
+        const double s = k.separation[p] + (nx * dx + ny * dy);
+        if (s > margin)
+            return false;
+        points[p].point = Vec2(0.5 * ((a.position.x() + rAx) + (b.position.x() + rBx)),
+                               0.5 * ((a.position.y() + rAy) + (b.position.y() + rBy)));
+        points[p].separation = s;
+    }
+    return true;
+}
+
+/// c, a copy of last step's contact of the pair, made what recycleManifold and
+/// finishContact make of a new contact: the points carried to `points` (recycledPoints), the
+/// mixed material, no bounce, and the impulses carryImpulses would give. Those are the copy's
+/// own: a point takes the impulses of last step's point with its id, which is itself, or the
+/// later of two with one id; a point the manifold lacks has none.
+void finishRecycled(const Body& a, const Body& b, const std::array<ContactPoint, 2>& points,
+                    Contact& c)
+{
+    c.manifold.points = points;
+    mixMaterials(a, b, c);
+    c.bounceImpulse = {0.0, 0.0};
+    if (c.manifold.pointCount == 2 && points[0].id == points[1].id) {
+        c.normalImpulse[0] = c.normalImpulse[1];
+        c.tangentImpulse[0] = c.tangentImpulse[1];
+    }
+    for (auto i = static_cast<size_t>(c.manifold.pointCount); i < 2; ++i)
+        c.normalImpulse[i] = c.tangentImpulse[i] = 0.0;
+}
+
 } // namespace
 
 void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
@@ -129,24 +179,29 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
                 continue;
             }
         }
-        // Built in place; taken back when the shapes are too far apart.
-        Contact& c = contacts.emplace_back();
-        c.a = ia;
-        c.b = ib;
         const double pairMargin = margin + sweptMargin(sweep, ia) + sweptMargin(sweep, ib);
         const Transform& xfA = xf[static_cast<size_t>(ia)];
         const Transform& xfB = xf[static_cast<size_t>(ib)];
         const Polygon* pa = a.shape.asPolygon();
         const Polygon* pb = b.shape.asPolygon();
-        if (pa && pb) {
-            // The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it.
-            // Its faces are not kept: when it moves on, the pair gets the whole SAT.
-            const Contact* last =
-                recycle > 0.0 && pairMargin == margin ? before.find(ia, ib) : nullptr;
-            if (last && recycleManifold(*last, a, xfA, b, xfB, recycle, margin, c)) {
-                finishContact(a, b, before, c);
+        if (pa && pb && recycle > 0.0 && pairMargin == margin) {
+            // The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it,
+            // from a copy of last step's contact. Its faces are not kept: when it moves on, the
+            // pair gets the whole SAT.
+            const Contact* last = before.find(ia, ib);
+            AnchorMotion motion;
+            std::array<ContactPoint, 2> points;
+            if (last && mayRecycle(*last, a, xfA, b, xfB, recycle, motion) &&
+                carriedPoints(*last, motion, a, b, margin, points)) {
+                finishRecycled(a, b, points, contacts.emplace_back(*last));
                 continue;
             }
+        }
+        // Built in place; taken back when the shapes are too far apart.
+        Contact& c = contacts.emplace_back();
+        c.a = ia;
+        c.b = ib;
+        if (pa && pb) {
             const TouchingPair* kept = cache.reuseFaces ? touchingBefore.find(ia, ib) : nullptr;
             // Two polygons. A pair that barely moved since the SAT chose its faces is clipped
             // from the same faces, placing only their points (FaceChoice).

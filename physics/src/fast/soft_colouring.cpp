@@ -11,10 +11,10 @@
 
 namespace rigidlab::physics {
 
-SoftSolver::ColourKey SoftSolver::colourKey(const Contact& ct, const std::vector<Body>& bodies)
+SoftSolver::ColourKey SoftSolver::colourKey(const Contact& ct) const
 {
-    return {ct.a, ct.b, bodies[static_cast<size_t>(ct.a)].isActive(),
-            bodies[static_cast<size_t>(ct.b)].isActive()};
+    return {ct.a, ct.b, m_active[static_cast<size_t>(ct.a)] != 0,
+            m_active[static_cast<size_t>(ct.b)] != 0};
 }
 
 bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
@@ -24,7 +24,7 @@ bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
         m_single != m_keySingle)
         return false;
     for (size_t ci = 0; ci < contacts.size(); ++ci)
-        if (!(colourKey(contacts[ci], bodies) == m_keys[ci]))
+        if (!(colourKey(contacts[ci]) == m_keys[ci]))
             return false;
     return true;
 }
@@ -34,8 +34,11 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
     if (!m_plain && sameColouring(contacts, bodies)) {
         // The same contacts between the same bodies: the same colours, blocks and lanes as
         // colouring them again would give; only what the lanes hold has changed.
-        for (const Slot& slot : m_slots)
-            fillLane(contacts[static_cast<size_t>(slot.contact)], slot.block, slot.lane);
+        for (Slot& slot : m_slots) {
+            const Contact& ct = contacts[static_cast<size_t>(slot.contact)];
+            slot.points = ct.manifold.pointCount;
+            fillLane(ct, slot.block, slot.lane);
+        }
         return;
     }
 
@@ -53,23 +56,22 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
     m_overflow = 0;
     for (size_t ci = 0; ci < contacts.size(); ++ci) {
         const Contact& ct = contacts[ci];
-        const Body& a = bodies[static_cast<size_t>(ct.a)];
-        const Body& b = bodies[static_cast<size_t>(ct.b)];
-        m_keys.push_back(colourKey(ct, bodies));
-        if (!a.isActive() && !b.isActive())
+        const ColourKey key = colourKey(ct);
+        m_keys.push_back(key);
+        if (!key.movesA && !key.movesB)
             continue;
         std::uint64_t used = 0;
-        if (a.isActive())
+        if (key.movesA)
             used |= m_colourMask[static_cast<size_t>(ct.a)];
-        if (b.isActive())
+        if (key.movesB)
             used |= m_colourMask[static_cast<size_t>(ct.b)];
         int colour = -1;
         if (~used != 0) {
             colour = std::countr_zero(~used);
             const std::uint64_t bit = std::uint64_t{1} << colour;
-            if (a.isActive())
+            if (key.movesA)
                 m_colourMask[static_cast<size_t>(ct.a)] |= bit;
-            if (b.isActive())
+            if (key.movesB)
                 m_colourMask[static_cast<size_t>(ct.b)] |= bit;
             ++m_colourSize[static_cast<size_t>(colour)];
         } else {
@@ -107,6 +109,12 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
         start += (m_colourSize[static_cast<size_t>(c)] + width - 1) / width;
     }
     int overflowBlock = start;
+    // The kernel's calls (KernelOf): each colour's blocks, then each overflow block alone.
+    m_ranges.clear();
+    for (int c = 0; c < m_colourCount; ++c)
+        m_ranges.push_back(next[static_cast<size_t>(c)]);
+    for (int k = 0; k <= m_overflow; ++k)
+        m_ranges.push_back(start + k);
     m_slots.clear();
     m_slots.reserve(m_candidates.size());
     for (size_t k = 0; k < m_candidates.size(); ++k) {
@@ -126,7 +134,9 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
             slot.block = overflowBlock++;
             slot.lane = 0;
         }
-        fillLane(contacts[static_cast<size_t>(ci)], slot.block, slot.lane);
+        const Contact& ct = contacts[static_cast<size_t>(ci)];
+        slot.points = ct.manifold.pointCount;
+        fillLane(ct, slot.block, slot.lane);
         m_slots.push_back(slot);
     }
 }

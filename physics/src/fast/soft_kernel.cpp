@@ -225,20 +225,121 @@ inline V relative(const Side& A, const Side& B, const V& dx, const V& dy, const 
     return ux * dx + uy * dy;
 }
 
-void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
+/// The warm start of one block's lanes, on its sides as gathered.
+inline void warmStartLanes(Block& c, Side& A, Side& B)
 {
-    for (int k = 0; k < count; ++k) {
+    const V mA = A.m, iA = load(c.invIA), mB = B.m, iB = load(c.invIB);
+    const V nx = load(c.nx), ny = load(c.ny);
+    for (PointLanes& p : c.p) {
+        const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+        apply(A, B, mA, iA, mB, iB, load(p.normalImpulse), nx, ny, rAx, rAy, rBx, rBy);
+        apply(A, B, mA, iA, mB, iB, load(p.tangentImpulse), ny, -nx, rAx, rAy, rBx, rBy);
+    }
+}
+
+/// Runs lanes(block, A, B) on blocks [0, count), which are of one colour (KernelOf): no two
+/// share a moving body. So two blocks are taken at a time, both gathered before either is
+/// scattered: the processor can then run their long chains of dependent operations side by side,
+/// where the stores of one block's bodies before the next block's loads held it to one chain
+/// (the kernel's samples, base-40 pyramid: 5 % fewer). The same bits as one block after the
+/// other: a body both blocks hold does not move, and both write back what they read.
+template <typename Lanes>
+inline void eachBlock(Block* blocks, int count, BodyState* bodies, const Lanes& lanes)
+{
+    int k = 0;
+    for (; k + 1 < count; k += 2) {
+        Block& c0 = blocks[k];
+        Block& c1 = blocks[k + 1];
+        Side A0 = gather(c0.a, bodies), B0 = gather(c0.b, bodies);
+        Side A1 = gather(c1.a, bodies), B1 = gather(c1.b, bodies);
+        lanes(c0, A0, B0);
+        lanes(c1, A1, B1);
+        scatter(c0.a, bodies, A0);
+        scatter(c0.b, bodies, B0);
+        scatter(c1.a, bodies, A1);
+        scatter(c1.b, bodies, B1);
+    }
+    if (k < count) {
         Block& c = blocks[k];
         Side A = gather(c.a, bodies), B = gather(c.b, bodies);
-        const V mA = A.m, iA = load(c.invIA), mB = B.m, iB = load(c.invIB);
-        const V nx = load(c.nx), ny = load(c.ny);
-        for (PointLanes& p : c.p) {
-            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
-            apply(A, B, mA, iA, mB, iB, load(p.normalImpulse), nx, ny, rAx, rAy, rBx, rBy);
-            apply(A, B, mA, iA, mB, iB, load(p.tangentImpulse), ny, -nx, rAx, rAy, rBx, rBy);
-        }
+        lanes(c, A, B);
         scatter(c.a, bodies, A);
         scatter(c.b, bodies, B);
+    }
+}
+
+void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
+{
+    eachBlock(blocks, count, bodies, [](Block& c, Side& A, Side& B) { warmStartLanes(c, A, B); });
+}
+
+/// What a pass splats once: its constants, and the two softnesses, [0] between moving bodies
+/// and [1] against one that does not move.
+struct PassConstants {
+    V zero, inverseSubstep, maxPush;
+    V biasRates[2], massScales[2], impulseScales[2];
+    explicit PassConstants(const PassSettings& s)
+        : zero(splat(0.0)), inverseSubstep(splat(s.inverseSubstep)),
+          maxPush(splat(-s.maxPushSpeed)), biasRates{splat(s.softness[0].biasRate),
+                                                     splat(s.softness[1].biasRate)},
+          massScales{splat(s.softness[0].massScale), splat(s.softness[1].massScale)},
+          impulseScales{splat(s.softness[0].impulseScale), splat(s.softness[1].impulseScale)}
+    {
+    }
+};
+
+/// One pass over one block's lanes, on its sides and motion as gathered.
+template <bool kBias, bool kFriction>
+inline void solveLanes(Block& c, Side& A, Side& B, const Motion& m, const PassConstants& k)
+{
+    const V zero = k.zero;
+    const V mA = A.m, iA = load(c.invIA), mB = B.m, iB = load(c.invIB);
+    const V nx = load(c.nx), ny = load(c.ny);
+    // The softness of each lane: against a body that does not move, or between two that do.
+    V biasRate = zero, massScale = zero, impulseScale = zero;
+    if constexpr (kBias) {
+        const auto oneSided = (mA == zero) | (mB == zero);
+        biasRate = oneSided ? k.biasRates[1] : k.biasRates[0];
+        massScale = oneSided ? k.massScales[1] : k.massScales[0];
+        impulseScale = oneSided ? k.impulseScales[1] : k.impulseScales[0];
+    }
+    for (PointLanes& p : c.p) {
+        const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+        // The separation now: both lever arms turned by their body's rotation so far.
+        const V dx = m.dpx + (m.qcB * rBx - m.qsB * rBy) - (m.qcA * rAx - m.qsA * rAy);
+        const V dy = m.dpy + (m.qsB * rBx + m.qcB * rBy) - (m.qsA * rAx + m.qcA * rAy);
+        const V sep = dx * nx + dy * ny + load(p.base);
+        const auto gap = sep > zero;
+        const V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
+        const V old = load(p.normalImpulse);
+        V next;
+        if constexpr (kBias) {
+            const V bias = gap ? sep * k.inverseSubstep : vmax(biasRate * sep, k.maxPush);
+            const V ms = gap ? splat(1.0) : massScale;
+            const V is = gap ? zero : impulseScale;
+            next = vmax(old - load(p.normalMass) * ms * (vn + bias) - is * old, zero);
+        } else {
+            // Rigid: the soft formula with ms = 1 and is = 0, whose products by 1 and
+            // subtraction of +0 (j >= 0) are exact, so the same bits with fewer operations.
+            const V bias = gap ? sep * k.inverseSubstep : zero;
+            next = vmax(old - load(p.normalMass) * (vn + bias), zero);
+        }
+        store(p.normalImpulse, next);
+        apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
+    }
+    // Friction after the normal impulses, so that its cone is this pass's.
+    if constexpr (kFriction) {
+        const V friction = load(c.friction);
+        const V tx = ny, ty = -nx;
+        for (PointLanes& p : c.p) {
+            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+            const V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
+            const V limit = friction * load(p.normalImpulse);
+            const V old = load(p.tangentImpulse);
+            const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
+            store(p.tangentImpulse, next);
+            apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
+        }
     }
 }
 
@@ -246,71 +347,10 @@ void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
 template <bool kBias, bool kFriction>
 void solvePass(Block* blocks, int count, BodyState* bodies, const PassSettings& s)
 {
-    const V zero = splat(0.0);
-    const V inverseSubstep = splat(s.inverseSubstep), maxPush = splat(-s.maxPushSpeed);
-    // The two softnesses, [0] between moving bodies and [1] against one that does not move,
-    // splatted once per pass.
-    const Softness& two = s.softness[0];
-    const Softness& one = s.softness[1];
-    const V biasRates[2] = {splat(two.biasRate), splat(one.biasRate)};
-    const V massScales[2] = {splat(two.massScale), splat(one.massScale)};
-    const V impulseScales[2] = {splat(two.impulseScale), splat(one.impulseScale)};
-    for (int k = 0; k < count; ++k) {
-        Block& c = blocks[k];
-        Side A = gather(c.a, bodies), B = gather(c.b, bodies);
-        const Motion m = gatherMotion(c, bodies);
-        const V mA = A.m, iA = load(c.invIA), mB = B.m, iB = load(c.invIB);
-        const V nx = load(c.nx), ny = load(c.ny);
-        // The softness of each lane: against a body that does not move, or between two that
-        // do.
-        V biasRate = zero, massScale = zero, impulseScale = zero;
-        if constexpr (kBias) {
-            const auto oneSided = (mA == zero) | (mB == zero);
-            biasRate = oneSided ? biasRates[1] : biasRates[0];
-            massScale = oneSided ? massScales[1] : massScales[0];
-            impulseScale = oneSided ? impulseScales[1] : impulseScales[0];
-        }
-        for (PointLanes& p : c.p) {
-            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
-            // The separation now: both lever arms turned by their body's rotation so far.
-            const V dx = m.dpx + (m.qcB * rBx - m.qsB * rBy) - (m.qcA * rAx - m.qsA * rAy);
-            const V dy = m.dpy + (m.qsB * rBx + m.qcB * rBy) - (m.qsA * rAx + m.qcA * rAy);
-            const V sep = dx * nx + dy * ny + load(p.base);
-            const auto gap = sep > zero;
-            const V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
-            const V old = load(p.normalImpulse);
-            V next;
-            if constexpr (kBias) {
-                const V bias = gap ? sep * inverseSubstep : vmax(biasRate * sep, maxPush);
-                const V ms = gap ? splat(1.0) : massScale;
-                const V is = gap ? zero : impulseScale;
-                next = vmax(old - load(p.normalMass) * ms * (vn + bias) - is * old, zero);
-            } else {
-                // Rigid: the soft formula with ms = 1 and is = 0, whose products by 1 and
-                // subtraction of +0 (j >= 0) are exact, so the same bits with fewer operations.
-                const V bias = gap ? sep * inverseSubstep : zero;
-                next = vmax(old - load(p.normalMass) * (vn + bias), zero);
-            }
-            store(p.normalImpulse, next);
-            apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
-        }
-        // Friction after the normal impulses, so that its cone is this pass's.
-        if constexpr (kFriction) {
-            const V friction = load(c.friction);
-            const V tx = ny, ty = -nx;
-            for (PointLanes& p : c.p) {
-                const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
-                const V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
-                const V limit = friction * load(p.normalImpulse);
-                const V old = load(p.tangentImpulse);
-                const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
-                store(p.tangentImpulse, next);
-                apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
-            }
-        }
-        scatter(c.a, bodies, A);
-        scatter(c.b, bodies, B);
-    }
+    const PassConstants constants(s);
+    eachBlock(blocks, count, bodies, [&](Block& c, Side& A, Side& B) {
+        solveLanes<kBias, kFriction>(c, A, B, gatherMotion(c, bodies), constants);
+    });
 }
 
 void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings& s)

@@ -90,7 +90,9 @@ struct PassSettings {
     Softness softness[2];
 };
 
-/// The kernel's passes over blocks [0, count), in order.
+/// The kernel's passes over blocks [0, count) of one colour: no two of the blocks share a
+/// moving body (the kernel takes two at a time). The overflow's blocks, which may, are given
+/// one per call.
 template <typename BlockType> struct KernelOf {
     using State = typename BlockType::State;
     /// Applies the accumulated impulses (warm start).

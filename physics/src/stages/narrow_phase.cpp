@@ -87,8 +87,8 @@ void keepAnchors(const Body& a, const Polygon& pa, const Transform& xfA, const B
     }
 }
 
-bool recycleManifold(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
-                     const Transform& xfB, double recycle, double margin, Contact& c)
+bool mayRecycle(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
+                const Transform& xfB, double recycle, AnchorMotion& motion)
 {
     // After Box2D v3.2 (physics_world.c, b2Collide's contact recycling): the points stay on
     // the bodies, the normal stays, and each separation follows the anchors as the soft
@@ -98,27 +98,48 @@ bool recycleManifold(const Contact& previous, const Body& a, const Transform& xf
     const ContactAnchors& k = previous.anchors;
     if (!k.valid || previous.manifold.pointCount == 0)
         return false;
-    const Rotation dqA = turnSince(xfA.q, k.qA), dqB = turnSince(xfB.q, k.qB);
-    const Vec2 shift = (b.position - a.position) - k.centres;
+    motion.dqA = turnSince(xfA.q, k.qA);
+    motion.dqB = turnSince(xfB.q, k.qB);
+    motion.shift = (b.position - a.position) - k.centres;
+    const Rotation& dqA = motion.dqA;
+    const Rotation& dqB = motion.dqB;
     // |sin| of each turn, from above by |s| + (1 - c) (a turn past 90 degrees fails anyway).
     const double turns = std::abs(dqA.s) + (1.0 - dqA.c) + std::abs(dqB.s) + (1.0 - dqB.c);
-    if (!(shift.lpNorm<1>() + (k.extentA + k.extentB) * turns < recycle))
+    return motion.shift.lpNorm<1>() + (k.extentA + k.extentB) * turns < recycle;
+}
+
+bool recycledPoints(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
+                    const Transform& xfB, double recycle, double margin,
+                    std::array<ContactPoint, 2>& points)
+{
+    AnchorMotion m;
+    if (!mayRecycle(previous, a, xfA, b, xfB, recycle, m))
         return false;
+    const ContactAnchors& k = previous.anchors;
     const Manifold& last = previous.manifold;
-    std::array<ContactPoint, 2> points = last.points;
+    points = last.points;
     for (int i = 0; i < last.pointCount; ++i) {
         const auto p = static_cast<size_t>(i);
-        const Vec2 rA = dqA.apply(k.anchorA[p]), rB = dqB.apply(k.anchorB[p]);
+        const Vec2 rA = m.dqA.apply(k.anchorA[p]), rB = m.dqB.apply(k.anchorB[p]);
         const double s =
-            k.separation[p] + last.normal.dot(shift + (rB - k.anchorB[p]) - (rA - k.anchorA[p]));
+            k.separation[p] + last.normal.dot(m.shift + (rB - k.anchorB[p]) - (rA - k.anchorA[p]));
         if (s > margin)
             return false; // let the full test say whether the point is still there
         points[p].point = 0.5 * ((a.position + rA) + (b.position + rB));
         points[p].separation = s;
     }
-    c.manifold = last;
+    return true;
+}
+
+bool recycleManifold(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
+                     const Transform& xfB, double recycle, double margin, Contact& c)
+{
+    std::array<ContactPoint, 2> points;
+    if (!recycledPoints(previous, a, xfA, b, xfB, recycle, margin, points))
+        return false;
+    c.manifold = previous.manifold;
     c.manifold.points = points;
-    c.anchors = k;
+    c.anchors = previous.anchors;
     return true;
 }
 

@@ -88,6 +88,23 @@ inline double sweptMargin(const std::vector<double>& sweep, int body)
     return sweep.empty() ? 0.0 : sweep[static_cast<size_t>(body)];
 }
 
+/// How a pair moved since its manifold's anchors were kept (ContactAnchors): each body's turn
+/// since then, and the shift of B's centre of mass less A's [m].
+struct AnchorMotion {
+    Rotation dqA, dqB;
+    Vec2 shift = Vec2::Zero();
+};
+/// Whether `previous` (last step's contact of the pair a, b) kept its anchors and the pair moved
+/// less than `recycle` against each other since [m] (the centres' shift, plus the turns times
+/// the extents): recycleManifold's first test. The motion into `motion`.
+bool mayRecycle(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
+                const Transform& xfB, double recycle, AnchorMotion& motion);
+/// The points of `previous`'s manifold (last step's contact of the pair a, b) carried to where
+/// a and b are now (recycleManifold's test and points), into `points`; false when the
+/// manifold is not to be recycled.
+bool recycledPoints(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
+                    const Transform& xfB, double recycle, double margin,
+                    std::array<ContactPoint, 2>& points);
 /// The manifold of `previous` (last step's contact of the pair a, b) carried to where a and b
 /// are now, when it was kept (keepAnchors) and they moved less than `recycle` against each
 /// other since [m] (their centres' shift, plus their turns times their extents), and no

@@ -106,8 +106,10 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     m_pins.clear();
     m_invInertia.resize(n);
     m_turns.resize(n);
+    m_active.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const Body& b = bodies[i];
+        m_active[i] = b.isActive();
         const Circle* circle = b.shape.asCircle();
         m_turns[i] = !circle || circle->center != b.localCenter;
         soft::BodyState& s = m_state[i];
@@ -310,11 +312,12 @@ void SoftSolver::setDrift(const std::vector<Vec2>& drift, const std::vector<doub
 void SoftSolver::warmStart()
 {
     m_energyValid = false;
-    if (m_single)
-        m_singleKernel.warmStart(m_singleBlocks.data(), static_cast<int>(m_singleBlocks.size()),
-                                 m_singleState.data());
-    else
-        m_kernel.warmStart(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data());
+    forEachRange([&](int first, int count) {
+        if (m_single)
+            m_singleKernel.warmStart(m_singleBlocks.data() + first, count, m_singleState.data());
+        else
+            m_kernel.warmStart(m_blocks.data() + first, count, m_state.data());
+    });
     if (!m_pins.empty())
         warmStartPins();
 }
@@ -329,12 +332,15 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
     m_pass.inverseSubstep = lookAhead ? m_substeps.invH : kNoLookAhead;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
-    if (m_single) {
-        m_singleKernel.solve(m_singleBlocks.data(), static_cast<int>(m_singleBlocks.size()),
-                             m_singleState.data(), m_pass);
+    forEachRange([&](int first, int count) {
+        if (m_single)
+            m_singleKernel.solve(m_singleBlocks.data() + first, count, m_singleState.data(),
+                                 m_pass);
+        else
+            m_kernel.solve(m_blocks.data() + first, count, m_state.data(), m_pass);
+    });
+    if (m_single)
         fromSingle();
-    } else
-        m_kernel.solve(m_blocks.data(), static_cast<int>(m_blocks.size()), m_state.data(), m_pass);
     if (!m_pins.empty())
         solvePins(useBias);
 }
@@ -447,7 +453,7 @@ void SoftSolver::endOf(std::vector<Body>& bodies, const std::vector<State>& stat
         Contact& ct = (*m_contacts)[static_cast<size_t>(slot.contact)];
         const BlockType& k = blocks[static_cast<size_t>(slot.block)];
         const auto l = static_cast<size_t>(slot.lane);
-        for (int i = 0; i < ct.manifold.pointCount; ++i) {
+        for (int i = 0; i < slot.points; ++i) {
             ct.normalImpulse[static_cast<size_t>(i)] = substeps * k.p[i].normalImpulse[l];
             ct.tangentImpulse[static_cast<size_t>(i)] = substeps * k.p[i].tangentImpulse[l];
         }

@@ -84,6 +84,9 @@ private:
         int contact = 0;
         int block = 0;
         int lane = 0;
+        /// The contact's point count when its lane was filled: end() writes its impulses
+        /// without reading the contact's first cache line again.
+        int points = 0;
     };
     /// What the colouring of a contact depends on: its bodies and whether each moves.
     struct ColourKey {
@@ -91,7 +94,8 @@ private:
         bool movesA = false, movesB = false;
         bool operator==(const ColourKey&) const = default;
     };
-    static ColourKey colourKey(const Contact& ct, const std::vector<Body>& bodies);
+    /// From the bodies as begin() took them (m_active).
+    ColourKey colourKey(const Contact& ct) const;
     /// Colours the contacts (fast/soft_colouring.cpp), or keeps last step's colouring.
     void buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
     /// Packs the coloured contacts into blocks of m_width lanes, the overflow last.
@@ -180,10 +184,22 @@ private:
     /// Per body: whether its contacts' lever arms turn with it (integratePositions()); not for
     /// a circle about its centre of mass, whose touching point stays where the normal meets it.
     std::vector<char> m_turns;
+    /// Per body: whether the step moves it (Body::isActive()), read where the colouring is
+    /// made or checked without reaching into the bodies' large records.
+    std::vector<char> m_active;
 
     std::vector<soft::Block> m_blocks;
     std::vector<soft::SingleBlock> m_singleBlocks; ///< instead of m_blocks when m_single
     std::vector<Slot> m_slots;
+    /// The blocks the kernel is given in one call, [m_ranges[i], m_ranges[i + 1]): a colour's,
+    /// or one overflow block (soft_kernel.h, KernelOf).
+    std::vector<int> m_ranges;
+    /// Calls pass(first, count) for each range of m_ranges, in order.
+    template <typename Pass> void forEachRange(const Pass& pass) const
+    {
+        for (size_t r = 0; r + 1 < m_ranges.size(); ++r)
+            pass(m_ranges[r], m_ranges[r + 1] - m_ranges[r]);
+    }
     std::vector<std::uint64_t> m_colourMask; ///< per body: colours of its contacts
     std::vector<int> m_colourOf;             ///< per candidate contact, -1 overflow
     std::vector<int> m_candidates;           ///< contacts with a body to solve

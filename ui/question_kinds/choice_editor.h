@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The lesson editor's options of a choice question (lessons/LESSON_FORMAT.md, "A choice
-// question"): a table of the options' texts, Czech and English side by side, buttons to add,
-// remove and reorder them, and the right one chosen from a list. It edits the question's JSON
-// only; the question editor stores each change as one undoable edit of the draft.
+// question"), the page of its kind (choice.h): a table of the options' texts, Czech and English
+// side by side, buttons to add, remove and reorder them, and the right one chosen from a list.
+// It edits the question's JSON only; the question editor stores each change as one undoable
+// edit of the draft.
 
 #include <QJsonObject>
 #include <QWidget>
@@ -24,6 +25,8 @@ public:
     /// `q` with the options and the right one as they are shown.
     QJsonObject applyTo(QJsonObject q) const;
 
+    /// The name a new option gets, "Option N" (1-based) in the window's language.
+    static QString optionName(int n);
     /// Adds an option after the last one, named "Option N" in `language`.
     void addOption(const QString& language);
     /// Removes the selected option (a question keeps at least two).

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "lesson_editor/choice_editor.h"
-#include "lesson_editor/editor_parts.h"
+#include "question_kinds/choice_editor.h"
+#include "question_kinds/editor_parts.h"
 
 #include "format/lesson.h"
 #include "format/lesson_schema.h"
@@ -144,12 +144,17 @@ void ChoiceEditor::showButtons()
     m_down->setEnabled(at >= 0 && at < rows - 1);
 }
 
+QString ChoiceEditor::optionName(int n)
+{
+    return tr("Option %1").arg(n);
+}
+
 void ChoiceEditor::addOption(const QString& language)
 {
     QJsonArray all = options();
     if (all.size() >= lessons::kMaxChoices)
         return;
-    all.append(QJsonObject{{language, tr("Option %1").arg(all.size() + 1)}});
+    all.append(QJsonObject{{language, optionName(static_cast<int>(all.size()) + 1)}});
     showOptions(all, m_right->currentIndex());
     m_table->setCurrentCell(static_cast<int>(all.size()) - 1, 0);
     emit edited();
