@@ -1312,10 +1312,6 @@
         <translation>povinné spolu s &quot;answer&quot;, ale chybí (možnosti, ze kterých se volí)</translation>
     </message>
     <message>
-        <source>not for a question with &quot;choices&quot;: it is answered by choosing, nothing is measured</source>
-        <translation>nepatří k otázce s &quot;choices&quot;: odpovídá se na ni výběrem, nic se neměří</translation>
-    </message>
-    <message>
         <source>must be an array of %1 to %2 options, each a text &quot;...&quot; or {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, got </source>
         <translation>musí být pole %1 až %2 možností, každá text &quot;...&quot; nebo {&quot;en&quot;: &quot;...&quot;, &quot;cs&quot;: &quot;...&quot;}, je </translation>
     </message>
@@ -1368,8 +1364,16 @@
         <translation>: bodies: %1 nebo víc dvojic těles se na začátku překrývá (mezi nimi „%2“ a „%3“): kontakty je hned odtlačí od sebe</translation>
     </message>
     <message>
-        <source>not for a question with &quot;number&quot;: its answer is the number the lesson gives, nothing is measured or chosen</source>
-        <translation>nepatří k otázce s &quot;number&quot;: její odpovědí je číslo, které uvádí lekce, nic se neměří ani nevybírá</translation>
+        <source>not for a question with &quot;%1&quot;: %2</source>
+        <translation>nepatří k otázce s &quot;%1&quot;: %2</translation>
+    </message>
+    <message>
+        <source>it is answered by choosing, nothing is measured</source>
+        <translation>odpovídá se na ni výběrem, nic se neměří</translation>
+    </message>
+    <message>
+        <source>its answer is the number the lesson gives, nothing is measured or chosen</source>
+        <translation>její odpovědí je číslo, které uvádí lekce, nic se neměří ani nevybírá</translation>
     </message>
 </context>
 <context>
@@ -4968,6 +4972,53 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::MeasurementFit</name>
+    <message>
+        <source>Import a measurement of a position or velocity first.</source>
+        <translation>Nejprve importujte měření polohy nebo rychlosti.</translation>
+    </message>
+    <message>
+        <source>Tick a parameter to fit.</source>
+        <translation>Zaškrtněte parametr, který se má určit.</translation>
+    </message>
+    <message>
+        <source>%1 = %2%3 (95&#xa0;%)</source>
+        <translation>%1 = %2%3 (95&#xa0;%)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Residual RMS: %1 over %n point(s)</source>
+        <translation>
+            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
+            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
+            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Fitted to the measurement in %1.</source>
+        <translation>Určeno z&#xa0;měření v&#xa0;souboru %1.</translation>
+    </message>
+    <message>
+        <source>Fit first: there are no fitted values to apply.</source>
+        <translation>Nejprve parametry určete: zatím nejsou žádné hodnoty k&#xa0;použití.</translation>
+    </message>
+    <message>
+        <source>Apply fitted values</source>
+        <translation>Použití určených hodnot</translation>
+    </message>
+    <message>
+        <source>There is no e from bounce times to apply.</source>
+        <translation>Není žádné e z&#xa0;časů odrazů, které by šlo použít.</translation>
+    </message>
+    <message>
+        <source>Apply e from the bounce times</source>
+        <translation>Použití e z&#xa0;časů odrazů</translation>
+    </message>
+    <message>
+        <source>From the bounce times alone (%3): e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
+        <translation>Jen z&#xa0;časů odrazů (%3): e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::MeasurementImportDialog</name>
     <message>
         <source>not used</source>
@@ -5294,50 +5345,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
             <numerusform>%1: %2, %n body</numerusform>
             <numerusform>%1: %2, %n bodů</numerusform>
         </translation>
-    </message>
-    <message>
-        <source>Import a measurement of a position or velocity first.</source>
-        <translation>Nejprve importujte měření polohy nebo rychlosti.</translation>
-    </message>
-    <message>
-        <source>Tick a parameter to fit.</source>
-        <translation>Zaškrtněte parametr, který se má určit.</translation>
-    </message>
-    <message numerus="yes">
-        <source>Residual RMS: %1 over %n point(s)</source>
-        <translation>
-            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
-            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
-            <numerusform>Střední kvadratická hodnota reziduí: %1 (počet bodů: %n)</numerusform>
-        </translation>
-    </message>
-    <message>
-        <source>Fitted to the measurement in %1.</source>
-        <translation>Určeno z&#xa0;měření v&#xa0;souboru %1.</translation>
-    </message>
-    <message>
-        <source>Fit first: there are no fitted values to apply.</source>
-        <translation>Nejprve parametry určete: zatím nejsou žádné hodnoty k&#xa0;použití.</translation>
-    </message>
-    <message>
-        <source>Apply fitted values</source>
-        <translation>Použití určených hodnot</translation>
-    </message>
-    <message>
-        <source>There is no e from bounce times to apply.</source>
-        <translation>Není žádné e z&#xa0;časů odrazů, které by šlo použít.</translation>
-    </message>
-    <message>
-        <source>Apply e from the bounce times</source>
-        <translation>Použití e z&#xa0;časů odrazů</translation>
-    </message>
-    <message>
-        <source>%1 = %2%3 (95&#xa0;%)</source>
-        <translation>%1 = %2%3 (95&#xa0;%)</translation>
-    </message>
-    <message>
-        <source>From the bounce times alone (%3): e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
-        <translation>Jen z&#xa0;časů odrazů (%3): e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
     </message>
 </context>
 <context>

@@ -73,6 +73,16 @@
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::MeasurementFit</name>
+    <message numerus="yes">
+        <source>Residual RMS: %1 over %n point(s)</source>
+        <translation>
+            <numerusform>Residual RMS: %1 over %n point</numerusform>
+            <numerusform>Residual RMS: %1 over %n points</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::MeasurementImportDialog</name>
     <message numerus="yes">
         <source>%n bounce time(s)</source>
@@ -113,13 +123,6 @@
         <translation>
             <numerusform>%1: %n point of %2</numerusform>
             <numerusform>%1: %n points of %2</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>Residual RMS: %1 over %n point(s)</source>
-        <translation>
-            <numerusform>Residual RMS: %1 over %n point</numerusform>
-            <numerusform>Residual RMS: %1 over %n points</numerusform>
         </translation>
     </message>
 </context>

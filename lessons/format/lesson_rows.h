@@ -41,6 +41,18 @@ template <class Target> struct LessonFieldOf {
 /// A row of one kind of question (format/question_kinds/).
 template <class K> using KindField = LessonFieldOf<K>;
 
+/// A row of kind Plain, made from its value's row: the row's key and whether the file must give
+/// it are the value's, so that neither is written twice.
+template <class Target>
+LessonFieldOf<Target> plainRow(const FieldOf<Target>& value, bool run = false)
+{
+    return {.key = value.key,
+            .kind = LessonKind::Plain,
+            .required = value.required,
+            .value = value,
+            .run = run};
+}
+
 /// A row's get and set of a plain number, by its member.
 template <class Target, double Target::*member> Value numberGet(const Target& t, std::size_t)
 {

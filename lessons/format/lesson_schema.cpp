@@ -26,41 +26,35 @@ const StepField kStepFields[] = {
     {.key = "sat"},
     {.key = "editor"},
     {.key = "questions", .run = true},
-    {.key = "exportTime",
-     .kind = LessonKind::Plain,
-     .value = {.key = "exportTime",
-               .label = QT_TRANSLATE_NOOP("SceneSchema", "Plots exported at"),
-               .kind = Kind::Number,
-               .range = {0.0, kMaxExportTime, "s"},
-               .rule = detail::NumberRule::Positive,
-               .get = numberGet<LessonStep, &LessonStep::exportTime>,
-               .set = numberSet<LessonStep, &LessonStep::exportTime>},
-     .run = true},
-    {.key = "endTime",
-     .kind = LessonKind::Plain,
-     .value = {.key = "endTime",
-               .label = QT_TRANSLATE_NOOP("SceneSchema", "The run stops at"),
-               .kind = Kind::Number,
-               .range = {0.0, kMaxEndTime, "s"},
-               .rule = detail::NumberRule::Positive,
-               .get = [](const LessonStep& s,
-                         std::size_t) { return s.endTime ? Value(*s.endTime) : Value(); },
-               .set =
-                   [](LessonStep& s, std::size_t, const Value& v) {
-                       s.endTime = std::holds_alternative<double>(v)
-                                       ? std::optional(std::get<double>(v))
-                                       : std::nullopt;
-                   },
-               .optional = true},
-     .run = true},
-    {.key = "autoplay",
-     .kind = LessonKind::Plain,
-     .value = {
-         .key = "autoplay",
+    plainRow<LessonStep>({.key = "exportTime",
+                          .label = QT_TRANSLATE_NOOP("SceneSchema", "Plots exported at"),
+                          .kind = Kind::Number,
+                          .range = {0.0, kMaxExportTime, "s"},
+                          .rule = detail::NumberRule::Positive,
+                          .get = numberGet<LessonStep, &LessonStep::exportTime>,
+                          .set = numberSet<LessonStep, &LessonStep::exportTime>},
+                         /*run=*/true),
+    plainRow<LessonStep>(
+        {.key = "endTime",
+         .label = QT_TRANSLATE_NOOP("SceneSchema", "The run stops at"),
+         .kind = Kind::Number,
+         .range = {0.0, kMaxEndTime, "s"},
+         .rule = detail::NumberRule::Positive,
+         .get = [](const LessonStep& s,
+                   std::size_t) { return s.endTime ? Value(*s.endTime) : Value(); },
+         .set =
+             [](LessonStep& s, std::size_t, const Value& v) {
+                 s.endTime = std::holds_alternative<double>(v) ? std::optional(std::get<double>(v))
+                                                               : std::nullopt;
+             },
+         .optional = true},
+        /*run=*/true),
+    plainRow<LessonStep>(
+        {.key = "autoplay",
          .label = QT_TRANSLATE_NOOP("SceneSchema", "Starts at once"),
          .kind = Kind::Bool,
          .get = [](const LessonStep& s, std::size_t) { return Value(s.autoplay); },
-         .set = [](LessonStep& s, std::size_t, const Value& v) { s.autoplay = as<bool>(v); }}},
+         .set = [](LessonStep& s, std::size_t, const Value& v) { s.autoplay = as<bool>(v); }}),
 };
 
 const QuestionField kQuestionFields[] = {

@@ -46,4 +46,12 @@ struct AnswerForm {
     bool chosen = false; ///< answered by choosing an option, not by typing a number
 };
 
+/// What another kind's key in a question of a kind is told (the kind's otherKindsKey): that it
+/// is not for a question with the kind's own `key`, and `why`.
+inline QString notForQuestionWith(std::string_view key, const QString& why)
+{
+    return detail::FileMessages::tr("not for a question with \"%1\": %2")
+        .arg(schema::jsonKey(key), why);
+}
+
 } // namespace rigidlab::lessons

@@ -19,10 +19,9 @@ using namespace rigidlab::test;
 
 void TestLesson::billiardsBreakConservesMomentum()
 {
-    const lessons::Lesson lesson = shippedLesson("billiards_momentum");
     // Without cushions and cloth, with either solver: px and py stay what the cue ball brought.
-    const lessons::LessonStep& step = stepOf(lesson, 2);
-    StepRun run(step);
+    ShippedStep breakStep("billiards_momentum", 2);
+    StepRun& run = breakStep.run;
     double lowestPx[2] = {1e9, 1e9}, highestPx[2] = {-1e9, -1e9};
     run.run(2.0, [&](std::size_t i) {
         const double px = run.worlds[i].diagnostics().momentum.x();
@@ -79,16 +78,12 @@ void TestLesson::editorStepIsAnsweredByEditing()
     QVERIFY2(edited.ok, qPrintable(edited.error));
     lessons::LessonStep built = step;
     built.scene = edited.scene;
-    StepRun run(built);
-    run.run(built.exportTime);
-    const lessons::Verdict right = lessons::judge(q, answer, run.measurements[0], built.scene);
+    const lessons::Verdict right = judgedAtExport(built, q, answer);
     QVERIFY2(right.measured, qPrintable(right.message));
     QVERIFY2(right.right, qPrintable(right.message));
 
     // Unedited, the moving ball stops dead: the same answer is wrong.
-    StepRun asOpened(step);
-    asOpened.run(step.exportTime);
-    const lessons::Verdict wrong = lessons::judge(q, answer, asOpened.measurements[0], step.scene);
+    const lessons::Verdict wrong = judgedAtExport(step, q, answer);
     QVERIFY2(wrong.measured, qPrintable(wrong.message));
     QVERIFY2(!wrong.right, qPrintable(wrong.message));
     QVERIFY2(std::abs(wrong.value) < 1e-6, qPrintable(QString::number(wrong.value)));

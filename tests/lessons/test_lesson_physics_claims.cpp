@@ -18,11 +18,9 @@ using namespace rigidlab::test;
 
 void TestLesson::restitutionBounceRatiosAreESquared()
 {
-    const lessons::Lesson lesson = shippedLesson("restitution");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    StepRun run(step);
-    run.run(step.exportTime);
-    const lessons::Measurements& m = run.measurements[0];
+    ShippedStep drop("restitution", 0);
+    const lessons::LessonStep& step = drop.step;
+    const lessons::Measurements& m = drop.runToExport();
     const double floorTop = 0.1; // centre height of a ball resting on the floor [m]
     for (const auto& [id, e] :
          {std::pair{"e05", 0.5}, std::pair{"e08", 0.8}, std::pair{"e1", 1.0}}) {
@@ -50,13 +48,11 @@ void TestLesson::bounceHeightsAreExactMechanics()
     // the true top (the top is within dt/2 of a step); each bounce is timed within its step,
     // and where the flight starts again is off by less than the g dt²/2 a step's fall adds.
     // (Measured: within 3 µm at dt = 1 ms.)
-    const lessons::Lesson lesson = shippedLesson("restitution");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    StepRun run(step);
-    run.run(step.exportTime);
-    const lessons::Measurements& m = run.measurements[0];
-    const double dt = run.worlds[0].def().dt;
-    const double g = -run.worlds[0].def().gravity.y();
+    ShippedStep drop("restitution", 0);
+    const lessons::LessonStep& step = drop.step;
+    const lessons::Measurements& m = drop.runToExport();
+    const double dt = drop.run.worlds[0].def().dt;
+    const double g = -drop.run.worlds[0].def().gravity.y();
     for (const auto& [id, e] :
          {std::pair{"e05", 0.5}, std::pair{"e08", 0.8}, std::pair{"e1", 1.0}}) {
         const physics::BodyId body = bodyId(step.scene, id);
@@ -83,9 +79,9 @@ void TestLesson::restitutionDriftStaysAtZero()
     // in the steps without a contact; the floor's push on a ball at rest is held through the
     // step as gravity is, so the steps with a contact keep it too, below the bound the text
     // gives for the step's end.
-    const lessons::Lesson lesson = shippedLesson("restitution");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    StepRun run(step);
+    ShippedStep drop("restitution", 0);
+    const lessons::LessonStep& step = drop.step;
+    StepRun& run = drop.run;
     physics::World& world = run.worlds[0];
     const double e0 = world.diagnostics().total;
     const double d0 = world.diagnostics().dissipated;
@@ -165,9 +161,9 @@ void TestLesson::energyDriftClaims()
 
 void TestLesson::pendulumEulerGoesOverTheTop()
 {
-    const lessons::Lesson lesson = shippedLesson("energy_drift");
-    const lessons::LessonStep& step = stepOf(lesson, 2);
-    StepRun run(step);
+    ShippedStep pendulum("energy_drift", 2);
+    const lessons::LessonStep& step = pendulum.step;
+    StepRun& run = pendulum.run;
     const double e0 = run.worlds[0].diagnostics().total;
     const physics::BodyId bob = bodyId(step.scene, "bob");
     double highestEuler = -1;

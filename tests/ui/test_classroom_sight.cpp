@@ -171,7 +171,7 @@ private slots:
                               QStringLiteral("/measure/samples/ball_tracker.csv")),
                  QString());
         settle();
-        QVERIFY2(session.fit().ok, qPrintable(session.fit().error));
+        QVERIFY2(session.fitting().fit().ok, qPrintable(session.fitting().fit().error));
         settle();
         ui::MeasurementPanel& panel = *session.panel();
         QLabel* result = nullptr;

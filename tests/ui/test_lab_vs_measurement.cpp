@@ -141,7 +141,7 @@ void TestLabVsMeasurement::secondImportIsAddedBesideTheFirst()
     QVERIFY(!session.measurement().bounces.empty());
     QCOMPARE(session.panel()->comparisonPlot()->model().pointCount(MeasurementPanel::kMeasured),
              measured);
-    QVERIFY2(session.bounceFit().ok, qPrintable(session.bounceFit().error));
+    QVERIFY2(session.fitting().bounceFit().ok, qPrintable(session.fitting().bounceFit().error));
     // Each named by its file.
     const QString source = session.panel()->findChild<QLabel*>()->text();
     QVERIFY2(source.contains(QStringLiteral("ball_tracker.csv")) &&
@@ -208,7 +208,7 @@ void TestLabVsMeasurement::secondFileOfTheSameQuantityIsShownBeside()
     QCOMPARE(plot.model().seriesLegend(MeasurementPanel::kMeasured),
              QStringLiteral("ball_phyphox.csv (fit, residuals)"));
     QCOMPARE(session.residuals().size(), phone.t.size());
-    const measure::FitResult& fit = session.fit();
+    const measure::FitResult& fit = session.fitting().fit();
     QVERIFY2(fit.ok, qPrintable(fit.error));
     QCOMPARE(static_cast<std::size_t>(fit.points), phone.t.size());
     QVERIFY2(session.panel()->fitText().contains(QStringLiteral("ball_phyphox.csv")),
@@ -229,8 +229,8 @@ void TestLabVsMeasurement::questionJudgesTheSceneAsItIsNow()
     // Step 1: the measurement imported, e fitted and applied in the scene before answering.
     MeasurementSession& session = w.measurement();
     QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
-    QVERIFY(session.fit().ok);
-    QCOMPARE(session.apply(), QString());
+    QVERIFY(session.fitting().fit().ok);
+    QCOMPARE(session.fitting().apply(), QString());
     const lessons::Scene& scene = w.document()->scene();
     const double e = scene.bodies[*scene.bodyIndex(QStringLiteral("ball"))].restitution;
     RL_VERIFY_NEAR(e, 0.72, 0.01, 0);

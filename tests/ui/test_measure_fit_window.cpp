@@ -37,7 +37,7 @@ constexpr int kFitMs = 60000;
 /// Clicks Fit and waits for the worker's result, the window's events running meanwhile.
 bool clickFit(MeasurementSession& session)
 {
-    QSignalSpy finished(&session, &MeasurementSession::fitFinished);
+    QSignalSpy finished(&session.fitting(), &MeasurementFit::fitFinished);
     session.panel()->fitButton()->click();
     return !finished.isEmpty() || finished.wait(kFitMs);
 }
@@ -69,7 +69,7 @@ void TestMeasureFitWindow::fitIsAppliedAsAnUndoableEdit()
     RL_VERIFY_NEAR(before, 0.8, 0, 0);
     QVERIFY(!panel.applyButton()->isEnabled());
     QVERIFY(clickFit(session));
-    const measure::FitResult& fit = session.lastFit();
+    const measure::FitResult& fit = session.fitting().lastFit();
     QVERIFY2(fit.ok, qPrintable(fit.error));
     // The sample's true e (an exact model, make_samples.py) within the 95 % interval, which
     // is a few thousandths wide at 2 mm of noise.
@@ -106,16 +106,16 @@ void TestMeasureFitWindow::fitIsAppliedAsAnUndoableEdit()
     // Two parameters: e and the initial vy (the ball was dropped from rest).
     panel.setFitChoice(3, true);
     QVERIFY(clickFit(session));
-    QVERIFY2(session.lastFit().ok, qPrintable(session.lastFit().error));
-    QCOMPARE(session.lastFit().values.size(), std::size_t{2});
-    RL_VERIFY_NEAR(session.lastFit().values[1].value, 0.0, 0.05, 0);
+    QVERIFY2(session.fitting().lastFit().ok, qPrintable(session.fitting().lastFit().error));
+    QCOMPARE(session.fitting().lastFit().values.size(), std::size_t{2});
+    RL_VERIFY_NEAR(session.fitting().lastFit().values[1].value, 0.0, 0.05, 0);
     // Nothing ticked: said, and nothing to apply.
     panel.setFitChoice(0, false);
     panel.setFitChoice(3, false);
     QVERIFY(clickFit(session));
-    QVERIFY(!session.lastFit().ok);
+    QVERIFY(!session.fitting().lastFit().ok);
     QVERIFY(!panel.applyButton()->isEnabled());
-    QVERIFY(!session.apply().isEmpty());
+    QVERIFY(!session.fitting().apply().isEmpty());
 }
 
 void TestMeasureFitWindow::bounceTimesGiveE()
@@ -127,7 +127,7 @@ void TestMeasureFitWindow::bounceTimesGiveE()
     options.mapping = {Quantity::BounceTime};
     options.bounceTimesOnly = true;
     QCOMPARE(session.load(sample("ball_bounces_phyphox.csv"), options), QString());
-    const measure::BounceFit& fit = session.bounceFit();
+    const measure::BounceFit& fit = session.fitting().bounceFit();
     QVERIFY2(fit.ok, qPrintable(fit.error));
     // The true e of the sample's exact bounces (1 ms of noise) within the 95 % interval.
     RL_VERIFY_NEAR(fit.e.value, kSampleE, fit.e.halfWidth95, 0);
@@ -163,10 +163,10 @@ void TestMeasureFitWindow::fitRunsInAWorkerAndCancels()
     MeasurementPanel& panel = *session.panel();
     panel.setFitChoice(0, false);
     panel.setFitChoice(1, true);
-    QSignalSpy finished(&session, &MeasurementSession::fitFinished);
+    QSignalSpy finished(&session.fitting(), &MeasurementFit::fitFinished);
     panel.fitButton()->click();
     // Started, not done: the click returned at once, with the busy bar and Cancel shown.
-    QVERIFY(session.fitRunning());
+    QVERIFY(session.fitting().fitRunning());
     QVERIFY(finished.isEmpty());
     QVERIFY(panel.fitRunning());
     QVERIFY(!panel.fitProgress()->isHidden());
@@ -176,8 +176,8 @@ void TestMeasureFitWindow::fitRunsInAWorkerAndCancels()
     QVERIFY2(panel.fitText().startsWith(QStringLiteral("Fitting")), qPrintable(panel.fitText()));
     panel.cancelFitButton()->click();
     QVERIFY(finished.wait(kFitMs));
-    QVERIFY(session.lastFit().cancelled);
-    QVERIFY(!session.lastFit().ok);
+    QVERIFY(session.fitting().lastFit().cancelled);
+    QVERIFY(!session.fitting().lastFit().ok);
     QVERIFY2(panel.fitText().contains(QStringLiteral("cancelled")), qPrintable(panel.fitText()));
     QVERIFY(!panel.applyButton()->isEnabled());
     QVERIFY(panel.fitProgress()->isHidden() && !panel.fitButton()->isHidden());
@@ -186,7 +186,7 @@ void TestMeasureFitWindow::fitRunsInAWorkerAndCancels()
     // floor's 0.4 as √(μ · 0.4); the slide the sample was made of (an exact model) had 0.33,
     // within the interval, at the step the fit names.
     QVERIFY(clickFit(session));
-    const measure::FitResult& fit = session.lastFit();
+    const measure::FitResult& fit = session.fitting().lastFit();
     QVERIFY2(fit.ok, qPrintable(fit.error));
     QVERIFY(fit.runs > 10);
     const double mixed = std::sqrt(fit.values[0].value * 0.4);
@@ -213,7 +213,7 @@ void TestMeasureFitWindow::undeterminedIsSaidNotGuessed()
     MeasurementSession& session = w.measurement();
     QCOMPARE(session.load(path), QString());
     QVERIFY(clickFit(session));
-    QVERIFY(!session.lastFit().ok);
+    QVERIFY(!session.fitting().lastFit().ok);
     QVERIFY2(session.panel()->fitText().startsWith(
                  QStringLiteral("e cannot be determined from these data")),
              qPrintable(session.panel()->fitText()));

@@ -379,14 +379,14 @@ void TestMeasureWindow::lessonLoadsAndIsJudged()
              qPrintable(w.lessonPlayer().result(0)));
     MeasurementSession& session = w.measurement();
     QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
-    QVERIFY(session.fit().ok);
+    QVERIFY(session.fitting().fit().ok);
     // The sample's true e, within the fit's 95 % interval (make_samples.py, an exact model).
-    RL_VERIFY_NEAR(session.lastFit().values[0].value, kSampleE,
-                   session.lastFit().values[0].halfWidth95, 0);
-    QCOMPARE(session.apply(), QString());
+    RL_VERIFY_NEAR(session.fitting().lastFit().values[0].value, kSampleE,
+                   session.fitting().lastFit().values[0].halfWidth95, 0);
+    QCOMPARE(session.fitting().apply(), QString());
     const lessons::Scene& scene = w.document()->scene();
-    RL_VERIFY_NEAR(scene.bodies[ballOf(scene)].restitution, session.lastFit().values[0].value, 0,
-                   0);
+    RL_VERIFY_NEAR(scene.bodies[ballOf(scene)].restitution,
+                   session.fitting().lastFit().values[0].value, 0, 0);
 }
 
 void TestMeasureWindow::measurementGoesWithItsSceneOrLesson()
@@ -409,8 +409,8 @@ void TestMeasureWindow::measurementGoesWithItsSceneOrLesson()
     QCOMPARE(session.load(sample("ball_tracker.csv")), QString());
     shows("imported", true);
     // An edit of the same scene keeps it (the fit is applied as one).
-    QVERIFY(session.fit().ok);
-    QCOMPARE(session.apply(), QString());
+    QVERIFY(session.fitting().fit().ok);
+    QCOMPARE(session.fitting().apply(), QString());
     shows("after the fit was applied", true);
     // Another scene: no crosses of this measurement in it, no plots, no fit.
     QCOMPARE(w.openScene(lessons::shippedScenesDir() + QStringLiteral("/welcome.json"), true),

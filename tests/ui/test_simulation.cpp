@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The simulation room: the controller's clock and the helpers it hands its jobs to (the grab
-// spring, frame timing, the samples and energy references, the settings-edit log, the layout
-// of compared worlds), the one clock the status bar and the timeline read, and what the
-// status bar's energy drift is the error of.
+// spring, frame timing, the samples and energy references, the settings-edit log), the one
+// clock the status bar and the timeline read, and what the status bar's energy drift is the
+// error of. Worlds compared side by side are test_compared_worlds.cpp.
 
 #include "common/display_names.h"
 #include "simulation/catch_up.h"
@@ -12,10 +12,7 @@
 #include "simulation/sample_recorder.h"
 #include "simulation/setting_edit.h"
 #include "simulation/simulation_controller.h"
-#include "simulation/variant_layout.h"
 #include "window/main_window.h"
-
-#include "format/scene_loader.h"
 
 #include <QLabel>
 #include <QRegularExpression>
@@ -26,47 +23,16 @@
 #include <limits>
 
 #include "physics/physics_test_util.h"
+#include "simulation_scenes.h"
 #include "test_main.h"
 
 using namespace rigidlab;
 using namespace rigidlab::ui;
+using rigidlab::test::ballScene;
+using rigidlab::test::bouncingBall;
+using rigidlab::test::kDt;
 
 namespace {
-
-/// A dt that is an exact binary fraction, so that whole numbers of steps fit a frame exactly.
-constexpr double kDt = 1.0 / 128.0;
-
-/// A scene from its JSON; fails the test when it does not load.
-lessons::Scene sceneOf(const QByteArray& json)
-{
-    const auto loaded = lessons::loadSceneJson(json, QStringLiteral("test.json"));
-    if (!loaded.ok)
-        qFatal("test scene does not load: %s", qPrintable(loaded.error));
-    return loaded.scene;
-}
-
-/// One ball at the origin; `gravity` on or off, dt = kDt, the integrator named.
-lessons::Scene ballScene(bool gravity, const char* integrator = "symplectic-euler")
-{
-    return sceneOf(QByteArray(R"({"rigidlab": 1, "title": "ball",
-        "world": {"gravity": )") +
-                   (gravity ? "[0, -9.81]" : "[0, 0]") + R"(, "dt": 0.0078125, "integrator": ")" +
-                   integrator + R"("},
-        "bodies": [{"id": "b", "shape": {"type": "circle", "radius": 0.1}, "mass": 2}]})");
-}
-
-/// A ball dropped from 1 m onto a static floor (velocity Verlet, e = 0.5).
-lessons::Scene bouncingBall()
-{
-    return sceneOf(R"({"rigidlab": 1, "title": "bounce",
-        "world": {"gravity": [0, -9.81], "dt": 0.0078125, "integrator": "verlet",
-                  "restitution": 0.5},
-        "bodies": [
-          {"id": "floor", "type": "static", "shape": {"type": "box", "width": 10, "height": 1},
-           "position": [0, -0.5]},
-          {"id": "ball", "shape": {"type": "circle", "radius": 0.1}, "mass": 1,
-           "position": [0, 1.1]}]})");
-}
 
 /// The number in the first "t = X s" of a label's text, as shown.
 QString shownTime(const QString& text)
@@ -438,66 +404,6 @@ private slots:
         QCOMPARE(c.editLog().edits().size(), 1u);
         QCOMPARE(c.editLog().edits()[0].step, 0LL);
         QCOMPARE(c.editLog().edits()[0].key, std::string_view("friction"));
-    }
-
-    void comparedWorldsFollowTheSettingsBackAndReset()
-    {
-        // The ball dropped in two worlds side by side, the second with RK4: e and μ changed at
-        // step 20 reach both, the integrator stays each world's own. Going back replays the
-        // compared world with the change at its step (as the main world's history has it), and
-        // a reset keeps the change in both.
-        const lessons::Scene scene = bouncingBall();
-        std::vector<physics::World> worlds{lessons::buildWorld(scene), lessons::buildWorld(scene)};
-        worlds[1].setIntegrator(physics::IntegratorKind::RK4);
-        physics::World alone = worlds[1]; // the compared world run by hand, for the replay
-        SimulationController c;
-        c.loadWorlds(scene, QStringLiteral("bounce.json"), worlds, {}, physics::Vec2(3, 0));
-        QCOMPARE(c.variantCount(), 1);
-        for (int i = 0; i < 20; ++i)
-            c.stepForward();
-        c.setRestitution(0.9);
-        c.setFriction(0.7);
-        for (int i = 0; i < 20; ++i)
-            c.stepForward();
-        for (int i = 0; i < 30; ++i) {
-            if (i == 20) {
-                alone.setRestitution(0.9);
-                alone.setFriction(0.7);
-            }
-            alone.step();
-        }
-        const auto ball = [](const physics::World& w) { return w.body(1).origin(); };
-        c.seek(30);
-        QCOMPARE(c.variant(0).stepCount(), 30LL);
-        QCOMPARE(c.variant(0).def().restitution, 0.9);
-        QCOMPARE(c.variant(0).def().friction, 0.7);
-        QCOMPARE(c.variant(0).def().integrator, physics::IntegratorKind::RK4);
-        QCOMPARE(ball(c.variant(0)), ball(alone)); // the same run, bit for bit
-        c.seek(10);
-        QCOMPARE(c.variant(0).def().restitution, scene.world.restitution);
-        QCOMPARE(c.variant(0).def().friction, scene.world.friction);
-        c.seek(25);
-        c.reset();
-        for (const physics::World* w : {&c.world(), &c.variant(0)}) {
-            QCOMPARE(w->stepCount(), 0LL);
-            QCOMPARE(w->def().restitution, 0.9);
-            QCOMPARE(w->def().friction, 0.7);
-        }
-        QCOMPARE(c.world().def().integrator, physics::IntegratorKind::Verlet);
-        QCOMPARE(c.variant(0).def().integrator, physics::IntegratorKind::RK4);
-    }
-
-    void comparedWorldsAreDrawnClearOfTheFloor()
-    {
-        const physics::World floor = lessons::buildWorld(bouncingBall());
-        // The floor is 10 m wide: a 3 m shift would overlap it, so the shift grows past it.
-        const physics::Vec2 shifted = besideOffset(floor, physics::Vec2(3, 0));
-        QVERIFY2(shifted.x() > 10.0 && shifted.y() == 0.0,
-                 qPrintable(QStringLiteral("(%1, %2)").arg(shifted.x()).arg(shifted.y())));
-        // Far enough already, or nothing static: the lesson's shift as it is.
-        QCOMPARE(besideOffset(floor, physics::Vec2(20, 0)), physics::Vec2(20, 0));
-        const physics::World open = lessons::buildWorld(ballScene(true));
-        QCOMPARE(besideOffset(open, physics::Vec2(3, 0)), physics::Vec2(3, 0));
     }
 
     void driftIsTheErrorOfContactsTooNotOnlyTheIntegrator()

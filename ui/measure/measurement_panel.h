@@ -3,7 +3,8 @@
 // The Measurement dock: the measured points as markers over the simulated line of the same
 // quantity, the residuals (measured − simulated) as a plot of their own, and the fit. Markers
 // and line differ in shape as well as colour, and the legend names both. The panel only
-// shows; MeasurementSession (measurement_session.h) reads, runs and fits.
+// shows; MeasurementSession (measurement_session.h) reads and compares, MeasurementFit
+// (measurement_fit.h) fits.
 //
 // The choices and the fit form a column that scrolls on its own, beside the plots where the
 // dock is wide enough for both (under the world on a 1024×768 projector), else above them;

@@ -2,7 +2,6 @@
 #include "measure/measurement_session.h"
 
 #include "common/modal_scope.h"
-#include "common/number_format.h"
 #include "common/shortcuts.h"
 #include "editor/scene_document.h"
 #include "measure/import_dialog.h"
@@ -10,11 +9,9 @@
 #include "measure/measurement_panel.h"
 #include "view/world_view.h"
 
-#include "edit/scene_edits.h"
 #include "format/data_dirs.h"
 
 #include <QAction>
-#include <QApplication>
 #include <QDir>
 #include <QDockWidget>
 #include <QDragEnterEvent>
@@ -32,7 +29,6 @@
 
 namespace rigidlab::ui {
 
-using measure::ParameterKind;
 using measure::Quantity;
 
 namespace {
@@ -43,11 +39,6 @@ constexpr int kDockWidthPx = 360;
 constexpr double kDockShare = 0.36;
 /// Points of the simulated line: smooth on any plot a dock can be, cheap to run again.
 constexpr int kLinePoints = 600;
-/// How often a running fit's count of runs is shown [ms].
-constexpr int kFitProgressMs = 200;
-constexpr ParameterKind kPanelKinds[MeasurementPanel::kFitParameters] = {
-    ParameterKind::Restitution, ParameterKind::Friction, ParameterKind::VelocityX,
-    ParameterKind::VelocityY};
 
 /// A file dropped that could be a measurement (the reader says whether it is one).
 QString droppedMeasurement(const QMimeData* mime)
@@ -63,43 +54,6 @@ QString droppedMeasurement(const QMimeData* mime)
     return {};
 }
 
-lessons::edit::BodyNumber bodyNumberOf(ParameterKind kind)
-{
-    switch (kind) {
-    case ParameterKind::Restitution:
-        return lessons::edit::BodyNumber::Restitution;
-    case ParameterKind::Friction:
-        return lessons::edit::BodyNumber::Friction;
-    case ParameterKind::VelocityX:
-        return lessons::edit::BodyNumber::VelocityX;
-    case ParameterKind::VelocityY:
-        return lessons::edit::BodyNumber::VelocityY;
-    }
-    return lessons::edit::BodyNumber::Restitution;
-}
-
-QString parameterSymbol(ParameterKind kind)
-{
-    switch (kind) {
-    case ParameterKind::Restitution:
-        return QStringLiteral("e");
-    case ParameterKind::Friction:
-        return QStringLiteral("μ");
-    case ParameterKind::VelocityX:
-        return QStringLiteral("vx");
-    case ParameterKind::VelocityY:
-        return QStringLiteral("vy");
-    }
-    return {};
-}
-
-QString parameterUnit(ParameterKind kind)
-{
-    return kind == ParameterKind::VelocityX || kind == ParameterKind::VelocityY
-               ? QStringLiteral("\u00A0m/s")
-               : QString();
-}
-
 /// The samples folder shipped with the lab (lessons/measure/samples in the source tree).
 QString samplesFolder()
 {
@@ -108,17 +62,6 @@ QString samplesFolder()
 }
 
 } // namespace
-
-QString valueWithUncertainty(double value, double uncertainty)
-{
-    const QLocale locale;
-    if (!(uncertainty > 0) || !std::isfinite(uncertainty) || !std::isfinite(value))
-        return formatReadable(value, 4);
-    const int decimals =
-        std::clamp(1 - static_cast<int>(std::floor(std::log10(uncertainty))), 0, kMostDecimals);
-    return locale.toString(value, 'f', decimals) + QStringLiteral("\u00A0±\u00A0") +
-           locale.toString(uncertainty, 'f', decimals);
-}
 
 MeasurementSession::MeasurementSession(QWidget& window, WorldView& view, SceneDocument& document)
     : QObject(&window), m_window(window), m_view(view), m_document(document)
@@ -136,27 +79,9 @@ MeasurementSession::MeasurementSession(QWidget& window, WorldView& view, SceneDo
     window.installEventFilter(this);
     view.viewport()->installEventFilter(this);
     connect(m_panel, &MeasurementPanel::choiceChanged, this, &MeasurementSession::compare);
-    connect(m_panel, &MeasurementPanel::fitRequested, this, &MeasurementSession::startFit);
-    connect(m_panel, &MeasurementPanel::cancelFitRequested, this, &MeasurementSession::cancelFit);
-    m_fitWorker = new FitWorker(this);
-    m_fitTimer = new QTimer(this);
-    m_fitTimer->setInterval(kFitProgressMs);
-    connect(m_fitTimer, &QTimer::timeout, this,
-            [this] { m_panel->showFitRunning(m_fitWorker->runs()); });
-    connect(m_fitWorker, &FitWorker::finished, this, [this](const measure::FitResult& result) {
-        m_fitTimer->stop();
-        m_fit = result;
-        showFitResult();
-        emit fitFinished();
-    });
-    connect(m_panel, &MeasurementPanel::applyRequested, this, [this] {
-        if (const QString error = apply(); !error.isEmpty())
-            emit message(error, 8000);
-    });
-    connect(m_panel, &MeasurementPanel::applyBounceRequested, this, [this] {
-        if (const QString error = applyBounceFit(); !error.isEmpty())
-            emit message(error, 8000);
-    });
+    m_fitting = new MeasurementFit(
+        *m_panel, document, [this] { return fitSubject(); }, this);
+    connect(m_fitting, &MeasurementFit::message, this, &MeasurementSession::message);
     connect(&document, &SceneDocument::sceneReset, this, &MeasurementSession::sceneReset);
     connect(&document, &SceneDocument::sceneChanged, this, [this] {
         updateChoices();
@@ -214,12 +139,10 @@ QString MeasurementSession::load(const QString& path, const measure::Measurement
     m_imports.push_back({QFileInfo(path).fileName(), std::move(read.measurement)});
     merge();
     m_measurementLesson = m_lesson;
-    m_fit = {};
-    m_fitted.clear();
-    m_panel->showFit(QString(), false);
+    m_fitting->clearResult();
     m_panel->setSource(sourceText());
     updateChoices();
-    updateBounceFit();
+    m_fitting->fitBounceTimes(m_measurement->bounces, m_bouncesFile);
     compare();
     showDock();
     emit imported(path);
@@ -276,8 +199,7 @@ QString MeasurementSession::sourceText() const
 
 void MeasurementSession::forget()
 {
-    m_fitWorker->discard(); // its result would be of a measurement that is gone
-    m_fitTimer->stop();
+    m_fitting->forget();
     m_measurement.reset();
     m_imports.clear();
     m_seriesFile.clear();
@@ -285,9 +207,6 @@ void MeasurementSession::forget()
     m_measurementLesson.clear();
     m_simulated.clear();
     m_residuals.clear();
-    m_fit = {};
-    m_fitted.clear();
-    m_bounceFit = {};
     m_panel->clear();
     updateTrail();
 }
@@ -336,6 +255,18 @@ std::optional<measure::Target> MeasurementSession::target() const
     return measure::Target{q, *b,
                            measure::quantityName(q) + QLatin1Char(':') +
                                QString::fromStdString(m_document.scene().bodies[*b].name)};
+}
+
+MeasurementFit::Subject MeasurementSession::fitSubject() const
+{
+    MeasurementFit::Subject subject{body(), target(), nullptr, {}};
+    if (m_measurement && subject.target) {
+        subject.series = m_measurement->find(subject.target->quantity);
+        if (const auto file = m_seriesFile.find(subject.target->quantity);
+            file != m_seriesFile.end())
+            subject.file = file->second;
+    }
+    return subject;
 }
 
 void MeasurementSession::updateChoices()
@@ -410,145 +341,6 @@ void MeasurementSession::updateTrail()
                 points.push_back(p);
     }
     m_trail->setPoints(std::move(points));
-}
-
-std::optional<FitWorker::Job> MeasurementSession::fitJob()
-{
-    m_fit = {};
-    m_fitted.clear();
-    const auto t = target();
-    const measure::Series* series = m_measurement && t ? m_measurement->find(t->quantity) : nullptr;
-    if (!series) {
-        m_fit.error = tr("Import a measurement of a position or velocity first.");
-        return std::nullopt;
-    }
-    for (const int i : m_panel->fitChoices())
-        m_fitted.push_back(
-            measure::Parameter{kPanelKinds[i], {t->body}, parameterSymbol(kPanelKinds[i])});
-    if (m_fitted.empty()) {
-        m_fit.error = tr("Tick a parameter to fit.");
-        return std::nullopt;
-    }
-    return FitWorker::Job{m_document.scene(), m_fitted, *t, *series};
-}
-
-const measure::FitResult& MeasurementSession::fit()
-{
-    m_fitWorker->discard(); // this fit replaces it
-    m_fitTimer->stop();
-    if (const auto job = fitJob()) {
-        QApplication::setOverrideCursor(Qt::WaitCursor);
-        m_fit = measure::fitScene(job->scene, job->parameters, job->target, job->series);
-        QApplication::restoreOverrideCursor();
-    }
-    showFitResult();
-    return m_fit;
-}
-
-void MeasurementSession::startFit()
-{
-    std::optional<FitWorker::Job> job = fitJob();
-    if (!job) {
-        m_fitWorker->discard();
-        m_fitTimer->stop();
-        showFitResult();
-        emit fitFinished();
-        return;
-    }
-    m_fitWorker->start(std::move(*job));
-    m_panel->showFitRunning(0);
-    m_fitTimer->start();
-}
-
-void MeasurementSession::cancelFit()
-{
-    m_fitWorker->cancel();
-}
-
-bool MeasurementSession::fitRunning() const
-{
-    return m_fitWorker->isRunning();
-}
-
-void MeasurementSession::showFitResult()
-{
-    if (!m_fit.ok) {
-        m_panel->showFit(m_fit.error, false);
-        return;
-    }
-    const auto t = target();
-    QStringList lines;
-    for (std::size_t i = 0; i < m_fitted.size(); ++i)
-        lines << tr("%1 = %2%3 (95 %)")
-                     .arg(m_fitted[i].name,
-                          valueWithUncertainty(m_fit.values[i].value, m_fit.values[i].halfWidth95),
-                          parameterUnit(m_fitted[i].kind));
-    lines << measure::describeModel(m_fit, m_fitted);
-    if (t) {
-        lines << tr("Residual RMS: %1 over %n point(s)", nullptr, m_fit.points)
-                     .arg(formatQuantity(m_fit.rms, quantityUnit(t->quantity), 2));
-        if (const auto file = m_seriesFile.find(t->quantity); file != m_seriesFile.end())
-            lines << tr("Fitted to the measurement in %1.").arg(file->second);
-    }
-    m_panel->showFit(lines.join(QLatin1Char('\n')), true);
-}
-
-QString MeasurementSession::apply()
-{
-    if (!m_fit.ok)
-        return tr("Fit first: there are no fitted values to apply.");
-    std::vector<double> values;
-    for (const measure::FittedValue& v : m_fit.values)
-        values.push_back(v.value);
-    return applyValues(m_fitted, values, tr("Apply fitted values"));
-}
-
-QString MeasurementSession::applyBounceFit()
-{
-    const auto b = body();
-    if (!m_bounceFit.ok || !b)
-        return tr("There is no e from bounce times to apply.");
-    return applyValues({measure::Parameter{ParameterKind::Restitution, {*b}, {}}},
-                       {m_bounceFit.e.value}, tr("Apply e from the bounce times"));
-}
-
-QString MeasurementSession::applyValues(const std::vector<measure::Parameter>& parameters,
-                                        const std::vector<double>& values, const QString& what)
-{
-    lessons::Scene scene = m_document.scene();
-    for (std::size_t i = 0; i < parameters.size(); ++i)
-        for (const physics::BodyId body : parameters[i].bodies) {
-            lessons::edit::EditResult r = lessons::edit::setBodyNumber(
-                scene, body, bodyNumberOf(parameters[i].kind), values[i]);
-            if (!r.ok)
-                return r.error;
-            scene = std::move(r.scene);
-        }
-    m_document.apply(what, scene);
-    return {};
-}
-
-void MeasurementSession::updateBounceFit()
-{
-    m_bounceFit = {};
-    if (!m_measurement || m_measurement->bounces.empty()) {
-        m_panel->showBounceFit(QString(), false);
-        return;
-    }
-    m_bounceFit = measure::fitBounceTimes(m_measurement->bounces);
-    if (!m_bounceFit.ok) {
-        m_panel->showBounceFit(m_bounceFit.error, false);
-        return;
-    }
-    QStringList flights;
-    for (const double f : m_bounceFit.flightTimes)
-        flights << formatQuantity(f, QStringLiteral("s"), 3);
-    m_panel->showBounceFit(
-        tr("From the bounce times alone (%3): e = %1 (95 %). Each flight between bounces lasts "
-           "e times the one before: %2.")
-            .arg(valueWithUncertainty(m_bounceFit.e.value, m_bounceFit.e.halfWidth95),
-                 flights.join(QStringLiteral(", ")), m_bouncesFile),
-        true);
 }
 
 bool MeasurementSession::eventFilter(QObject* watched, QEvent* event)

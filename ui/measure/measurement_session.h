@@ -3,8 +3,8 @@
 // A measurement in the window: File › Import measurement… (or a CSV dropped on the window)
 // reads it through the import dialog; the Measurement dock compares it with the scene as
 // edited, run headless from t = 0 (lessons/measure/fit.h's simulateAt, the same run the fit
-// uses), and the scene view shows the measured positions as a faint trail. The fit's values
-// go into the scene as one edit of its document, which Undo takes back.
+// uses), and the scene view shows the measured positions as a faint trail. The fit of what is
+// compared is measurement_fit.h's; the session tells it what the panel compares.
 //
 // A second import adds to the first rather than replacing it (a video's heights, then a
 // phone's bounce times): each quantity is compared and fitted from the file imported last
@@ -17,9 +17,9 @@
 // imports in one step and fits in the next).
 
 #include "measure/fit.h"
-#include "measure/fit_worker.h"
 #include "measure/measurement.h"
 #include "measure/measurement_files.h"
+#include "measure/measurement_fit.h"
 
 #include <QObject>
 #include <QString>
@@ -31,7 +31,6 @@
 
 class QAction;
 class QDockWidget;
-class QTimer;
 class QWidget;
 
 namespace rigidlab::ui {
@@ -80,20 +79,8 @@ public:
     /// The target compared: the panel's body and quantity, or nullopt.
     std::optional<measure::Target> target() const;
 
-    /// Fits the parameters ticked in the panel, here and now (the screenshots); the result
-    /// stays for apply().
-    const measure::FitResult& fit();
-    /// The same fit in a thread of its own (the panel's Fit button): the panel shows it
-    /// running with a Cancel button; fitFinished() when it ends, lastFit() then holds it.
-    void startFit();
-    void cancelFit();
-    bool fitRunning() const;
-    const measure::FitResult& lastFit() const { return m_fit; }
-    /// Puts the fitted values into the scene, one undoable edit; returns the refusal or empty.
-    QString apply();
-    /// e from the bounce times, when the measurement has them.
-    const measure::BounceFit& bounceFit() const { return m_bounceFit; }
-    QString applyBounceFit();
+    /// The fit of what the panel compares, and e from the bounce times.
+    MeasurementFit& fitting() const { return *m_fitting; }
 
     /// Compares the measurement with the scene as it is now.
     void compare();
@@ -108,10 +95,8 @@ public:
 signals:
     /// A measurement was imported (the path).
     void imported(const QString& path);
-    /// Why an import failed, for the status bar.
+    /// Why an import (or an Apply of the fit) failed, for the status bar.
     void message(const QString& text, int timeoutMs);
-    /// A fit started by startFit() ended (cancelled too): lastFit() holds it.
-    void fitFinished();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
@@ -121,15 +106,10 @@ private:
     void showDock();
     void updateChoices();
     void updateTrail();
-    void updateBounceFit();
     /// Another scene opened (SceneDocument::sceneReset).
     void sceneReset();
-    QString applyValues(const std::vector<measure::Parameter>& parameters,
-                        const std::vector<double>& values, const QString& what);
-    /// What the panel asks to fit, into m_fitted; nothing (m_fit says why) when it cannot be.
-    std::optional<FitWorker::Job> fitJob();
-    /// m_fit in the panel.
-    void showFitResult();
+    /// What the panel compares now, for the fit.
+    MeasurementFit::Subject fitSubject() const;
     /// m_measurement from the files imported, each quantity from the last file that has it.
     void merge();
     /// The files imported, one line each with what is taken from it.
@@ -152,15 +132,7 @@ private:
     std::optional<measure::Measurement> m_measurement;
     std::vector<double> m_simulated;
     std::vector<double> m_residuals;
-    FitWorker* m_fitWorker = nullptr;
-    QTimer* m_fitTimer = nullptr; ///< while a fit runs: its runs so far into the panel
-    measure::FitResult m_fit;
-    std::vector<measure::Parameter> m_fitted;
-    measure::BounceFit m_bounceFit;
+    MeasurementFit* m_fitting = nullptr;
 };
-
-/// "0,720 ± 0,012": a value to the digits its uncertainty leaves meaningful (two of the
-/// uncertainty), in the locale's numbers.
-QString valueWithUncertainty(double value, double uncertainty);
 
 } // namespace rigidlab::ui

@@ -190,6 +190,9 @@ private:
     void overwriteGhostMarks(double t); // the new branch reached t: older ghost marks go
     void dropFrom(double t);            // the run went back to t: drop points at and after t
     void trimToWindow();
+    /// What shows changed (the window, what is followed, a mark): trims to the window, redraws
+    /// and tells the marks' watchers.
+    void applyWindow();
     void updateLatest();
     void removeMark(std::size_t index);
     void announceMarks(); // emits marksChanged() once after an operation that touched them

@@ -74,9 +74,7 @@ void PlotModel::setRangeMode(RangeMode mode)
     if (mode == m_rangeMode)
         return;
     m_rangeMode = mode;
-    trimToWindow();
-    m_changed = true;
-    announceMarks();
+    applyWindow();
 }
 
 void PlotModel::setWindowSeconds(double seconds)
@@ -85,9 +83,7 @@ void PlotModel::setWindowSeconds(double seconds)
     if (!std::isfinite(seconds) || seconds <= 0)
         return;
     m_windowSeconds = seconds;
-    trimToWindow();
-    m_changed = true;
-    announceMarks();
+    applyWindow();
 }
 
 void PlotModel::setPointBudget(int points)
@@ -99,11 +95,8 @@ void PlotModel::setHeldFrom(std::optional<double> t)
 {
     const bool following = !t && m_heldFrom;
     m_heldFrom = t;
-    if (following) {
-        trimToWindow();
-        m_changed = true;
-        announceMarks();
-    }
+    if (following)
+        applyWindow();
 }
 
 std::optional<double> PlotModel::ghostEnd() const
@@ -183,6 +176,13 @@ void PlotModel::updateLatest()
             m_latestT = m_latestT ? std::max(*m_latestT, series.lastKey()) : series.lastKey();
 }
 
+void PlotModel::applyWindow()
+{
+    trimToWindow();
+    m_changed = true;
+    announceMarks();
+}
+
 void PlotModel::trimToWindow()
 {
     if (m_rangeMode != RangeMode::Window || !m_latestT)
@@ -222,9 +222,7 @@ void PlotModel::addMark(double t, const QString& label)
     m_marksTouched = true;
     while (m_marks.size() > static_cast<std::size_t>(kMaxMarks))
         removeMark(0);
-    trimToWindow();
-    m_changed = true;
-    announceMarks();
+    applyWindow();
 }
 
 void PlotModel::removeMark(std::size_t index)

@@ -325,7 +325,7 @@ bool shootMeasurement(MainWindow& window, Shooter& shooter)
                                                QStringLiteral("/measure/samples/ball_tracker.csv"));
         !error.isEmpty())
         return shooter.fail(error);
-    measurement.fit();
+    measurement.fitting().fit();
     runFor(window.controller(), 1.6);
     return shooter.write(QStringLiteral("94-measurement.png"),
                          Screenshots::tr("a measured drop over the simulated one, the residuals "

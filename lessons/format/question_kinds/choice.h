@@ -41,8 +41,9 @@ inline std::span<const KindField<ChoiceQuestion>> kindFields(std::type_identity<
 
 inline QString otherKindsKey(const ChoiceQuestion&)
 {
-    return detail::FileMessages::tr("not for a question with \"choices\": it is answered by "
-                                    "choosing, nothing is measured");
+    return notForQuestionWith(
+        schema::question_keys::kChoices,
+        detail::FileMessages::tr("it is answered by choosing, nothing is measured"));
 }
 
 inline std::optional<KindProblem> kindProblem(const ChoiceQuestion&)

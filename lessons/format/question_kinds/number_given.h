@@ -36,27 +36,23 @@ inline std::span<const KindField<NumberGivenQuestion>>
 kindFields(std::type_identity<NumberGivenQuestion>)
 {
     static const KindField<NumberGivenQuestion> rows[] = {
-        {.key = question_keys::kNumber,
-         .kind = LessonKind::Plain,
-         .required = true,
-         .value = {.key = question_keys::kNumber,
-                   .label = QT_TRANSLATE_NOOP("SceneSchema", "Right answer"),
-                   .kind = Kind::Number,
-                   .range = kGivenNumberRange,
-                   .get = numberGet<NumberGivenQuestion, &NumberGivenQuestion::number>,
-                   .set = numberSet<NumberGivenQuestion, &NumberGivenQuestion::number>,
-                   .required = true}},
-        {.key = question_keys::kWithin,
-         .kind = LessonKind::Plain,
-         .required = true,
-         .value = {.key = question_keys::kWithin,
-                   .label = QT_TRANSLATE_NOOP("SceneSchema", "Right within"),
-                   .kind = Kind::Number,
-                   .range = kGivenNumberRange,
-                   .rule = detail::NumberRule::Positive,
-                   .get = numberGet<NumberGivenQuestion, &NumberGivenQuestion::within>,
-                   .set = numberSet<NumberGivenQuestion, &NumberGivenQuestion::within>,
-                   .required = true}},
+        plainRow<NumberGivenQuestion>(
+            {.key = question_keys::kNumber,
+             .label = QT_TRANSLATE_NOOP("SceneSchema", "Right answer"),
+             .kind = Kind::Number,
+             .range = kGivenNumberRange,
+             .get = numberGet<NumberGivenQuestion, &NumberGivenQuestion::number>,
+             .set = numberSet<NumberGivenQuestion, &NumberGivenQuestion::number>,
+             .required = true}),
+        plainRow<NumberGivenQuestion>(
+            {.key = question_keys::kWithin,
+             .label = QT_TRANSLATE_NOOP("SceneSchema", "Right within"),
+             .kind = Kind::Number,
+             .range = kGivenNumberRange,
+             .rule = detail::NumberRule::Positive,
+             .get = numberGet<NumberGivenQuestion, &NumberGivenQuestion::within>,
+             .set = numberSet<NumberGivenQuestion, &NumberGivenQuestion::within>,
+             .required = true}),
         {.key = question_keys::kUnit, .kind = LessonKind::Unit, .text = &NumberGivenQuestion::unit},
     };
     return rows;
@@ -66,8 +62,9 @@ kindFields(std::type_identity<NumberGivenQuestion>)
 
 inline QString otherKindsKey(const NumberGivenQuestion&)
 {
-    return detail::FileMessages::tr("not for a question with \"number\": its answer is the "
-                                    "number the lesson gives, nothing is measured or chosen");
+    return notForQuestionWith(schema::question_keys::kNumber,
+                              detail::FileMessages::tr("its answer is the number the lesson gives, "
+                                                       "nothing is measured or chosen"));
 }
 
 inline std::optional<KindProblem> kindProblem(const NumberGivenQuestion&)
