@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The code's shape, as docs/design.md promises it: no source or test file over 600 lines, no
 function over 80 lines except those named in design.md's "Long on purpose" table, no ui/
-subfolder that includes another which includes it back, no ui/ room that includes one of
+subfolder that includes another which includes it back, no ui/ folder that includes one of
 its own or a later layer (UI_LAYERS), and no language code written as a string ("cs", "en") in
 production code outside the languages table (lessons/format/languages.h and .cpp): every code
 path reads that table; no stage of a step (physics/src/stages, physics/src/fast) reads the
@@ -129,9 +129,9 @@ def settings_restated(root, all_functions):
     return out
 
 
-# The ui/ rooms in their layers, lowest first (docs/design.md, "Layers and folders"): a room
-# includes only rooms of a lower layer. Rooms of one layer (editor, lesson_player) do not
-# include each other. A room not listed here is only checked for include cycles.
+# The ui/ folders in their layers, lowest first (docs/design.md, "Layers and folders"): a
+# folder includes only folders of a lower layer. Folders of one layer (editor, lesson_player)
+# do not include each other. A folder not listed here is only checked for include cycles.
 UI_LAYERS = {"common": 0, "simulation": 1, "question_kinds": 1, "plots": 2, "worksheet": 3,
              "view": 4, "panels": 5, "instruments": 5, "editor": 6, "lesson_player": 6, "measure": 7,
              "lesson_editor": 7, "window": 8}
@@ -314,7 +314,7 @@ def main():
     for a, b in include_cycles(root):
         problems.append(f"ui/{a} and ui/{b} include each other")
     for path, used in layer_breaches(root):
-        problems.append(f"{path}: includes ui/{used}, a room of its own or a later layer")
+        problems.append(f"{path}: includes ui/{used}, a folder of its own or a later layer")
     for path, number in language_literals(root, files):
         problems.append(f"{path}:{number}: a language code written out; read lessons::kLanguages "
                         f"(lessons/format/languages.h) instead")

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The simulation room: the controller's clock and the helpers it hands its jobs to (the grab
+// The simulation folder: the controller's clock and the helpers it hands its jobs to (the grab
 // spring, frame timing, the samples and energy references, the settings-edit log), the one
 // clock the status bar and the timeline read, and what the status bar's energy drift is the
 // error of. Worlds compared side by side are test_compared_worlds.cpp.
