@@ -30,13 +30,13 @@ from pathlib import Path
 
 MAX_FILE_LINES = 600
 MAX_FUNCTION_LINES = 80
-ROOMS = ["physics", "lessons", "ui", "app", "bench", "tests"]
+TOP_FOLDERS = ["physics", "lessons", "ui", "app", "bench", "tests"]
 
 
 def sources(root):
     out = []
-    for room in ROOMS:
-        base = root / room
+    for folder in TOP_FOLDERS:
+        base = root / folder
         if base.is_dir():
             out += [p for p in base.rglob("*") if p.suffix in (".cpp", ".h") and p.is_file()]
     return sorted(out)
@@ -143,13 +143,13 @@ def layer_breaches(root):
         return []
     pattern = re.compile(r'#include\s+"([a-z_]+)/')
     found = set()
-    for room in sorted(p.name for p in ui.iterdir() if p.is_dir() and p.name in UI_LAYERS):
-        for f in sorted((ui / room).rglob("*")):
+    for folder in sorted(p.name for p in ui.iterdir() if p.is_dir() and p.name in UI_LAYERS):
+        for f in sorted((ui / folder).rglob("*")):
             if f.suffix not in (".cpp", ".h"):
                 continue
             for m in pattern.finditer(f.read_text(encoding="utf-8", errors="replace")):
                 used = m.group(1)
-                if used != room and UI_LAYERS.get(used, -1) >= UI_LAYERS[room]:
+                if used != folder and UI_LAYERS.get(used, -1) >= UI_LAYERS[folder]:
                     found.add((f.relative_to(root).as_posix(), used))
     return sorted(found)
 
@@ -158,16 +158,16 @@ def include_cycles(root):
     ui = root / "ui"
     if not ui.is_dir():
         return []
-    rooms = sorted(p.name for p in ui.iterdir() if p.is_dir())
-    uses = {r: set() for r in rooms}
+    folders = sorted(p.name for p in ui.iterdir() if p.is_dir())
+    uses = {r: set() for r in folders}
     pattern = re.compile(r'#include\s+"([a-z_]+)/')
-    for r in rooms:
+    for r in folders:
         for f in (ui / r).rglob("*"):
             if f.suffix in (".cpp", ".h"):
                 for m in pattern.finditer(f.read_text(encoding="utf-8", errors="replace")):
                     if m.group(1) in uses and m.group(1) != r:
                         uses[r].add(m.group(1))
-    return [(a, b) for a in rooms for b in rooms if a < b and b in uses[a] and a in uses[b]]
+    return [(a, b) for a in folders for b in folders if a < b and b in uses[a] and a in uses[b]]
 
 
 LANGUAGE_TABLE = {"lessons/format/languages.h", "lessons/format/languages.cpp"}
