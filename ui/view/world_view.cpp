@@ -271,13 +271,12 @@ std::optional<physics::Transform> WorldView::frozenPose(int world, physics::Body
     const auto w = static_cast<std::size_t>(world);
     if (w >= m_drawnRunning.size() || !m_drawnRunning[w] || !stoppedWorld(world))
         return std::nullopt;
-    if (world == 0)
-        if (body >= 0 && static_cast<std::size_t>(body) < m_itemPoses.size()) {
-            const Pose& pose = m_itemPoses[static_cast<std::size_t>(body)];
-            return transformAt(pose.origin, pose.angle);
-        } else {
+    if (world == 0) {
+        if (body < 0 || static_cast<std::size_t>(body) >= m_itemPoses.size())
             return std::nullopt;
-        }
+        const Pose& pose = m_itemPoses[static_cast<std::size_t>(body)];
+        return transformAt(pose.origin, pose.angle);
+    }
     for (const Ghost& g : m_ghosts)
         if (g.variant == world - 1 && g.body == static_cast<int>(body))
             return g.pose;
