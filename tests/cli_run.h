@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // rigidlab-cli run as a user runs it: a separate process, its exit status, what it printed and
-// how long it took. Tests that run it define RIGIDLAB_CLI (the program's path, from CMake) and
-// depend on the program.
+// how long it took. Tests that run it are added with USES_CLI (tests/CMakeLists.txt), so that the
+// program is built before them.
+
+#include "build_paths.h"
 
 #include <QByteArray>
 #include <QElapsedTimer>
@@ -47,12 +49,10 @@ inline CliRun runProgram(const QString& program, const QStringList& arguments,
     return run;
 }
 
-#ifdef RIGIDLAB_CLI
 /// rigidlab-cli with `arguments`.
 inline CliRun runCli(const QStringList& arguments, const std::function<void()>& inChild = {})
 {
-    return runProgram(QStringLiteral(RIGIDLAB_CLI), arguments, inChild);
+    return runProgram(cliPath(), arguments, inChild);
 }
-#endif
 
 } // namespace rigidlab::test

@@ -5,6 +5,7 @@
 // In process (writeFileAtomically, runScene) and through rigidlab-cli (run, error-vs-time,
 // stress, bench --export, lesson --export). The window's writers are in tests/ui.
 
+#include "build_paths.h"
 #include "format/atomic_file.h"
 #include "format/scene_loader.h"
 #include "run/scene_run.h"
@@ -33,8 +34,8 @@ using rigidlab::test::writeFile;
 
 namespace {
 
-const QString kCli = QStringLiteral(RIGIDLAB_CLI);
-const QString kSource = QStringLiteral(RIGIDLAB_SOURCE_DIR);
+const QString kCli = rigidlab::test::cliPath();
+const QString kSource = rigidlab::test::sourcePath();
 const QByteArray kPrevious = "the previous file, which must survive\n";
 /// Enough for a header or two, far too little for any real output [bytes].
 constexpr rlim_t kLimit = 200;

@@ -4,6 +4,7 @@
 // and the files it leaves (or must not leave). One executable: its usage and refusals
 // (test_cli.cpp), and what its commands write (test_cli_runs.cpp). Shared helpers here.
 
+#include "build_paths.h"
 #include "cli_run.h"
 #include "test_files.h"
 
@@ -23,7 +24,7 @@ using rigidlab::test::writeFile;
 using rigidlab::test::readAll;
 using rigidlab::test::writeFile;
 
-inline const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
+inline const QString kScenesDir = rigidlab::test::sourcePath(u"/lessons/scenes");
 
 inline QString scene(const char* name)
 {

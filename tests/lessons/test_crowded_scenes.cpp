@@ -6,6 +6,7 @@
 // ten pairs on; a packed pyramid, whose boxes only touch, loads as before. A heap that reaches
 // the engine some other way stops before its first step, in the lab's words.
 
+#include "build_paths.h"
 #include "format/divergence_message.h"
 #include "format/scene_loader.h"
 #include "format/scene_overlaps.h"
@@ -36,7 +37,7 @@ using rigidlab::test::runCli;
 
 namespace {
 
-const QString kSource = QStringLiteral(RIGIDLAB_SOURCE_DIR);
+const QString kSource = rigidlab::test::sourcePath();
 /// The most memory the command line may take for the heap [bytes].
 constexpr rlim_t kMemory = rlim_t{1} << 30;
 constexpr qint64 kMilliseconds = 5000;

@@ -4,6 +4,7 @@
 // to their conventions, heads with units, the BOM exactly in the spreadsheet dialect, and the
 // shared pieces of lessons/export (the writer, the noise floor, the step's time).
 
+#include "build_paths.h"
 #include "csv_reader.h"
 
 #include "export/csv_columns.h"
@@ -32,7 +33,7 @@ using test::readNumber;
 
 namespace {
 
-const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
+const QString kScenesDir = rigidlab::test::sourcePath(u"/lessons/scenes");
 
 lessons::Scene loadScene(const char* name)
 {
@@ -286,7 +287,7 @@ void TestCsvExport::cliSpreadsheetInCzech()
     const auto run = [&](const QString& name, const QStringList& flags) {
         const QString path = dir.filePath(name);
         QProcess process;
-        process.start(RIGIDLAB_CLI,
+        process.start(rigidlab::test::cliPath(),
                       QStringList{"run", scene, "--time", "0.01", "--diagnostics", path} + flags);
         const bool finished = process.waitForFinished(60'000);
         return finished && process.exitCode() == 0 ? readAll(path) : QByteArray();

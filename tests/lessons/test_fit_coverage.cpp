@@ -7,6 +7,7 @@
 // rest, no bounce yet, noise larger than the bounces, frames read as bounce times, a
 // measurement starting long after the scene) are refused in one line, with no number.
 
+#include "build_paths.h"
 #include "test_main.h"
 
 #include "format/scene_loader.h"
@@ -25,7 +26,7 @@ using namespace rigidlab;
 
 namespace {
 
-const QString kSamples = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/measure/samples");
+const QString kSamples = rigidlab::test::sourcePath(u"/lessons/measure/samples");
 
 constexpr double kG = 9.81;        ///< ball_floor.json's gravity [m/s²]
 constexpr double kRadius = 0.05;   ///< its ball [m]

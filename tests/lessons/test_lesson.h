@@ -4,6 +4,7 @@
 // (test_lesson_loader.cpp), and what the lessons measure, judge and claim about the physics
 // (test_lesson_physics.cpp). Shared helpers here.
 
+#include "build_paths.h"
 #include "format/lesson.h"
 #include "run/measurements.h"
 #include "test_files.h"
@@ -17,12 +18,12 @@
 
 namespace rigidlab::test {
 
-inline const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
+inline const QString kLessonsDir = rigidlab::test::sourcePath(u"/lessons/lessons");
 /// The one folder of shipped scenes, the lessons' included.
-inline const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
+inline const QString kScenesDir = rigidlab::test::sourcePath(u"/lessons/scenes");
 /// Hand-made lessons written in one language only.
 inline const QString kOneLanguageDir =
-    QStringLiteral(RIGIDLAB_SOURCE_DIR "/tests/lessons/data/one_language");
+    rigidlab::test::sourcePath(u"/tests/lessons/data/one_language");
 
 inline QString lessonPath(const char* name)
 {

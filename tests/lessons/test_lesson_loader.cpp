@@ -2,6 +2,7 @@
 // The lesson loader: the shipped lessons, every check with its place and message, scene paths
 // that may not leave the lesson's folder, and the step's worlds.
 
+#include "build_paths.h"
 #include "test_lesson.h"
 #include "test_lesson_json.h"
 
@@ -463,7 +464,7 @@ void TestLesson::formatDocumentExampleLoads()
 {
     // The complete example of LESSON_FORMAT.md loads, beside copies of the shipped scenes it
     // names.
-    QFile doc(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/LESSON_FORMAT.md"));
+    QFile doc(rigidlab::test::sourcePath(u"/lessons/LESSON_FORMAT.md"));
     QVERIFY(doc.open(QIODevice::ReadOnly));
     const QString text = QString::fromUtf8(doc.readAll());
     const QRegularExpression block(QStringLiteral("```json\\n(.*?)```"),

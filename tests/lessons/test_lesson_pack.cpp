@@ -5,6 +5,7 @@
 // refused in one line naming the file and the place; the scenes inside are the only ones read;
 // and rigidlab-cli lesson pack / unpack / --validate / --export work on it as on a folder.
 
+#include "build_paths.h"
 #include "format/data_dirs.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
@@ -50,7 +51,7 @@ private slots:
 
 namespace {
 
-const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
+const QString kLessonsDir = rigidlab::test::sourcePath(u"/lessons/lessons");
 
 QStringList shippedLessons()
 {
@@ -437,8 +438,7 @@ void TestLessonPack::cliOneLanguageLessons()
     // either --lang, and exports its plots.
     QFETCH(QString, file);
     QFETCH(QString, missing);
-    const QString path =
-        QStringLiteral(RIGIDLAB_SOURCE_DIR "/tests/lessons/data/one_language/") + file;
+    const QString path = rigidlab::test::sourcePath(u"/tests/lessons/data/one_language/") + file;
     const QByteArray warning = missing.toUtf8();
     for (const QString& lang : {QStringLiteral("cs"), QStringLiteral("en")}) {
         const Run run = runCli({QStringLiteral("lesson"), path, QStringLiteral("--validate"),

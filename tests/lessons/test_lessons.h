@@ -3,6 +3,7 @@
 // Tests of the lessons library, one executable: the scene loader (test_scene_loader.cpp) and
 // running scenes, validation and the SAT report (test_scene_run.cpp). Shared helpers here.
 
+#include "build_paths.h"
 #include "format/scene_loader.h"
 #include "test_files.h"
 
@@ -16,7 +17,7 @@
 
 namespace rigidlab::test {
 
-inline const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
+inline const QString kScenesDir = rigidlab::test::sourcePath(u"/lessons/scenes");
 
 /// A scene with the given top-level members after the version.
 inline QByteArray sceneWith(const char* members)

@@ -5,15 +5,15 @@
 // measurements made by the lab itself (test_measure_fit.cpp), and `rigidlab-cli fit` as a
 // process (test_measure_cli.cpp).
 
+#include "build_paths.h"
+
 #include <QObject>
 #include <QString>
 
 namespace rigidlab::test {
 
-inline const QString kMeasureSamples =
-    QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/measure/samples");
-inline const QString kMeasureDamaged =
-    QStringLiteral(RIGIDLAB_SOURCE_DIR "/tests/lessons/data/measure");
+inline const QString kMeasureSamples = rigidlab::test::sourcePath(u"/lessons/measure/samples");
+inline const QString kMeasureDamaged = rigidlab::test::sourcePath(u"/tests/lessons/data/measure");
 
 } // namespace rigidlab::test
 

@@ -7,6 +7,7 @@
 // machine's own; as an ordinary user, who cannot make them, the machine's /dev/null and
 // /dev/full, which such a user cannot replace either.
 
+#include "build_paths.h"
 #include "format/atomic_file.h"
 
 #include "cli_run.h"
@@ -30,7 +31,7 @@ using rigidlab::test::runCli;
 
 namespace {
 
-const QString kSource = QStringLiteral(RIGIDLAB_SOURCE_DIR);
+const QString kSource = rigidlab::test::sourcePath();
 /// The system's words for a full device (ENOSPC), which the lab may give instead of its own.
 const QString kNoSpace = QString::fromLocal8Bit(std::strerror(ENOSPC));
 

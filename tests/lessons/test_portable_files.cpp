@@ -6,6 +6,7 @@
 // window writes are the ones rigidlab-cli reads when settings live in an INI file, as on Windows
 // (data_dirs.h, useSettingsFiles), not in the system's native store.
 
+#include "build_paths.h"
 #include "format/data_dirs.h"
 #include "format/lesson.h"
 #include "format/lesson_catalog.h"
@@ -39,7 +40,7 @@ QByteArray withCrlf(QByteArray lf)
 
 QString shipped(const QString& relative)
 {
-    return QDir(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons")).filePath(relative);
+    return QDir(rigidlab::test::sourcePath(u"/lessons")).filePath(relative);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The scene loader: every check, its place and its message; defaults; building a world.
 
+#include "build_paths.h"
 #include "test_lessons.h"
 
 #include "format/document.h"
@@ -455,7 +456,7 @@ void TestLessons::buildWorldPlacesBodyOrigin()
 void TestLessons::formatDocumentExampleLoads()
 {
     // The complete example of SCENE_FORMAT.md is the first JSON block after its heading.
-    const QByteArray doc = readAll(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/SCENE_FORMAT.md"));
+    const QByteArray doc = readAll(rigidlab::test::sourcePath(u"/lessons/SCENE_FORMAT.md"));
     const qsizetype heading = doc.indexOf("## A complete example");
     QVERIFY(heading >= 0);
     const qsizetype start = doc.indexOf("```json\n", heading);

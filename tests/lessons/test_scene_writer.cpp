@@ -3,6 +3,7 @@
 // in every field, in every language; the written file passes `rigidlab-cli validate`; numbers
 // read back bit for bit whatever the locale; a body's colour is read, checked and written.
 
+#include "build_paths.h"
 #include "test_main.h"
 
 #include "format/scene_compare.h"
@@ -22,8 +23,8 @@ using lessons::Scene;
 
 namespace {
 
-const QString kCli = QStringLiteral(RIGIDLAB_CLI);
-const QString kScenesDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes");
+const QString kCli = rigidlab::test::cliPath();
+const QString kScenesDir = rigidlab::test::sourcePath(u"/lessons/scenes");
 
 Scene loadOk(const QString& path, const QString& language)
 {

@@ -3,6 +3,7 @@
 // Release pass walks every step, the sanitizer pass what the sanitizers add, and that shorter
 // walk still shows everything any step shows.
 
+#include "build_paths.h"
 #include "step_walk.h"
 
 #include "test_main.h"
@@ -32,7 +33,7 @@ using rigidlab::test::StepWalk;
 
 std::vector<rigidlab::lessons::Lesson> shippedLessons()
 {
-    const QDir dir(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons"));
+    const QDir dir(rigidlab::test::sourcePath(u"/lessons/lessons"));
     std::vector<rigidlab::lessons::Lesson> out;
     for (const QString& f : dir.entryList({QStringLiteral("*.json")}, QDir::Files, QDir::Name)) {
         const rigidlab::lessons::LessonLoadResult r =

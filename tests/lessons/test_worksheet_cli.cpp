@@ -5,6 +5,7 @@
 // a bidirectional isolate (read back from the PDF's title with poppler's pdfinfo); an emoji no
 // font of the machine has is printed as a placeholder naming it, never lost (pdftotext).
 
+#include "build_paths.h"
 #include "cli_run.h"
 #include "test_main.h"
 
@@ -22,7 +23,7 @@ using rigidlab::test::runCli;
 
 namespace {
 
-const QString kLesson = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/restitution.json");
+const QString kLesson = rigidlab::test::sourcePath(u"/lessons/lessons/restitution.json");
 
 /// The restitution lesson's sheet, dir/sheet.pdf, from the answers file `json` in `dir`.
 CliRun sheetFromAnswers(const QTemporaryDir& dir, const QByteArray& json)

@@ -13,6 +13,7 @@
 // the integrators were composed consistently, Verlet and RK4 drifted 12.6 % and 14.7 % on these
 // scenes, explicit Euler 20 % and 29 %.)
 
+#include "build_paths.h"
 #include "physics_test_util.h"
 
 #include "format/scene.h"
@@ -101,7 +102,7 @@ void TestContactDrift::restingContactsKeepTheEnergy()
     QFETCH(int, integrator);
     const auto kind = static_cast<IntegratorKind>(integrator);
     const lessons::SceneLoadResult loaded =
-        lessons::loadSceneFile(QDir(QStringLiteral(RIGIDLAB_SOURCE_DIR))
+        lessons::loadSceneFile(QDir(rigidlab::test::sourcePath())
                                    .filePath(QStringLiteral("lessons/scenes/%1.json").arg(scene)));
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     physics::World world = lessons::buildWorld(loaded.scene);

@@ -6,6 +6,7 @@
 // once everything rests), against the energy balance (what the dampers and contacts took,
 // added back, gives the starting energy), and on the welcome scene itself.
 
+#include "build_paths.h"
 #include "physics_test_util.h"
 
 #include "format/scene.h"
@@ -172,9 +173,8 @@ void TestPinnedContacts::boxComesToRestOnPinnedBoard()
 // below 0.5 % (it was 6 % when the pins and the contacts were solved apart).
 void TestPinnedContacts::welcomeKeepsItsEnergy()
 {
-    const lessons::SceneLoadResult loaded =
-        lessons::loadSceneFile(QDir(QStringLiteral(RIGIDLAB_SOURCE_DIR))
-                                   .filePath(QStringLiteral("lessons/scenes/welcome.json")));
+    const lessons::SceneLoadResult loaded = lessons::loadSceneFile(
+        QDir(rigidlab::test::sourcePath()).filePath(QStringLiteral("lessons/scenes/welcome.json")));
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     physics::World world = lessons::buildWorld(loaded.scene);
     world.updateDiagnostics();

@@ -4,6 +4,7 @@
 // every integrator; nothing stands in for it), and the stiff springs lesson's steps past an
 // integrator's limit stop with their diagnosis, as they should.
 
+#include "build_paths.h"
 #include "physics_test_util.h"
 
 #include "format/lesson.h"
@@ -19,7 +20,7 @@ using namespace rigidlab;
 
 namespace {
 
-const QString kSource = QStringLiteral(RIGIDLAB_SOURCE_DIR);
+const QString kSource = rigidlab::test::sourcePath();
 
 /// Runs 60 steps of `world`.
 void checkRuns(physics::World& world, const QString& what)

@@ -4,6 +4,7 @@
 // step with the four balls' scene, shown at 1024×768 on that step, and its widgets found by
 // name.
 
+#include "build_paths.h"
 #include "lesson_editor/lesson_draft.h"
 #include "lesson_editor/lesson_editor.h"
 
@@ -32,8 +33,8 @@ struct EditorOnStep {
     /// when the scene loaded.
     QString open()
     {
-        const lessons::SceneLoadResult scene = lessons::loadSceneFile(
-            QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/four_balls.json"));
+        const lessons::SceneLoadResult scene =
+            lessons::loadSceneFile(rigidlab::test::sourcePath(u"/lessons/scenes/four_balls.json"));
         if (!scene.ok)
             return scene.error;
         ed.newLesson(scene.scene);

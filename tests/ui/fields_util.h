@@ -3,6 +3,7 @@
 // What test_fields shares between its tests: the window on ball_drop, its number fields by
 // name, what the controller holds for each, and a frame of the running simulation.
 
+#include "build_paths.h"
 #include "panels/inspector_panel.h"
 #include "panels/number_field.h"
 #include "simulation/simulation_controller.h"
@@ -21,12 +22,12 @@ using rigidlab::ui::NumberField;
 
 inline QString scene(const char* name)
 {
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/") + QLatin1String(name);
+    return rigidlab::test::sourcePath(u"/lessons/scenes/") + QLatin1String(name);
 }
 
 inline QString lesson(const char* name)
 {
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/") + QLatin1String(name);
+    return rigidlab::test::sourcePath(u"/lessons/lessons/") + QLatin1String(name);
 }
 
 /// |a - b| within a relative tolerance; near zero qFuzzyCompare would fail.

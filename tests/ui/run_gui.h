@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Runs the rigidlab binary (RIGIDLAB_GUI, set by tests/ui/CMakeLists.txt) as a user would from
-// a shell: the tests of its command line.
+// Runs the rigidlab binary (build_paths.h; tests/ui/CMakeLists.txt builds it first) as a user would
+// from a shell: the tests of its command line.
+
+#include "build_paths.h"
 
 #include <QProcess>
 #include <QProcessEnvironment>
@@ -24,7 +26,7 @@ inline int runGui(const QStringList& args, const QProcessEnvironment& env, QStri
 {
     QProcess p;
     p.setProcessEnvironment(env);
-    p.start(QStringLiteral(RIGIDLAB_GUI), args);
+    p.start(rigidlab::test::guiPath(), args);
     if (!p.waitForFinished(60000)) {
         p.kill();
         p.waitForFinished();

@@ -9,6 +9,7 @@
 // This test's accessibility bridge is a plugin built into it (Q_IMPORT_PLUGIN below).
 #define QT_STATICPLUGIN
 
+#include "build_paths.h"
 #include "common/caret_before_focus.h"
 #include "common/spoken_numbers.h"
 #include "first_question.h"
@@ -347,9 +348,9 @@ private slots:
                  qPrintable(count.announced().last()));
 
         // The stiff spring past its stability limit: Verlet at dt = 10 ms diverges at once.
-        QCOMPARE(w.openScene(
-                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/stiff_spring.json"), true),
-                 QString());
+        QCOMPARE(
+            w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/stiff_spring.json"), true),
+            QString());
         w.controller().setDt(0.01);
         for (int k = 0; k < 10000 && !w.controller().world().divergence(); ++k)
             w.controller().stepForward();

@@ -3,6 +3,7 @@
 // changes asked about, Run and Reset from the scene as edited, undo and redo from the Edit menu.
 // The dialogs are answered through the window's askers, so no dialog opens.
 
+#include "build_paths.h"
 #include "common/shortcuts.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
@@ -450,8 +451,7 @@ private slots:
         // with the step's settings, not a plain scene.
         MainWindow w;
         QCOMPARE(
-            w.openLesson(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/energy_drift.json"),
-                         true),
+            w.openLesson(rigidlab::test::sourcePath(u"/lessons/lessons/energy_drift.json"), true),
             QString());
         const lessons::Lesson* lesson = w.lessonPlayer().lesson();
         QVERIFY(lesson);

@@ -4,6 +4,7 @@
 // velocities after the hit are, and the numbers in the language's own format. And the
 // inspector's forces on the accumulator lesson's crate, summed as its text sums them.
 
+#include "build_paths.h"
 #include "common/language.h"
 #include "common/number_format.h"
 #include "panels/forces_view.h"
@@ -31,7 +32,7 @@ struct Hit {
 std::optional<Hit> offCentreHit()
 {
     const lessons::LessonLoadResult loaded = lessons::loadLessonFile(
-        QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/impulse_formula.json"));
+        rigidlab::test::sourcePath(u"/lessons/lessons/impulse_formula.json"));
     if (!loaded.ok)
         return std::nullopt;
     physics::World world = lessons::buildStepWorlds(loaded.lesson.steps.at(0)).front();
@@ -98,7 +99,7 @@ private slots:
     void forcesOfTheCrate()
     {
         const lessons::LessonLoadResult loaded = lessons::loadLessonFile(
-            QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/force_accumulators.json"));
+            rigidlab::test::sourcePath(u"/lessons/lessons/force_accumulators.json"));
         QVERIFY2(loaded.ok, qPrintable(loaded.error));
         const lessons::LessonStep& step = loaded.lesson.steps.at(0);
         const physics::World world = lessons::buildStepWorlds(step).front();

@@ -5,6 +5,7 @@
 // elastic collision to round-off, in the plot and in its CSV, and a dropped ball's y(t) is
 // −g t²/2 to the step's accuracy.
 
+#include "build_paths.h"
 #include "instruments/instrument_readings.h"
 #include "instruments/instruments.h"
 #include "instruments/instruments_panel.h"
@@ -280,9 +281,8 @@ private slots:
     void sumOfMomentaIsConservedInPlotAndExport()
     {
         ui::MainWindow w;
-        QVERIFY(w.openScene(
-                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"),
-                     true)
+        QVERIFY(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/two_ball_collision.json"),
+                            true)
                     .isEmpty());
         ui::BodyGraphSpec spec;
         spec.quantity = BodyQuantity::Px;
@@ -323,9 +323,8 @@ private slots:
     void graphsOfBodiesStayWithTheirBodies()
     {
         ui::MainWindow w;
-        QVERIFY(w.openScene(
-                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"),
-                     true)
+        QVERIFY(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/two_ball_collision.json"),
+                            true)
                     .isEmpty());
         ui::Instruments& instruments = w.instruments();
         ui::BodyGraphSpec resting;
@@ -339,9 +338,8 @@ private slots:
         instruments.showGraph(both);
         QCOMPARE(instruments.graphsShown().size(), 2);
         // The same scene again (as an edit or Reset would load it): both graphs stay.
-        QVERIFY(w.openScene(
-                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"),
-                     true)
+        QVERIFY(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/two_ball_collision.json"),
+                            true)
                     .isEmpty());
         QCOMPARE(instruments.graphsShown().size(), 2);
         // A scene with the resting ball alone, first now, and pushed at 1 m/s: its graph stays
@@ -376,11 +374,10 @@ private slots:
     void centreOfMassFrameShowsOppositeMomenta()
     {
         ui::SimulationController c;
-        c.loadScene(
-            lessons::loadSceneFile(
-                QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"))
-                .scene,
-            QString());
+        c.loadScene(lessons::loadSceneFile(
+                        rigidlab::test::sourcePath(u"/lessons/scenes/two_ball_collision.json"))
+                        .scene,
+                    QString());
         ui::PlotWidget plot(QStringLiteral("p"));
         ui::BodyGraph graph(plot, BodyQuantity::Px, ui::ReferenceFrame{{0, 1}});
         graph.addBody(0, QStringLiteral("a"));
@@ -430,9 +427,8 @@ private slots:
         ui::MainWindow w;
         w.resize(1024, 768);
         w.show();
-        QVERIFY(w.openScene(
-                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"),
-                     true)
+        QVERIFY(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/two_ball_collision.json"),
+                            true)
                     .isEmpty());
         w.instruments().panel()->setFrameBodies({0, 1});
         runFor(w.controller(), 1.5);
@@ -453,9 +449,8 @@ private slots:
         w.resize(1024, 768);
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
-        QVERIFY(w.openScene(
-                     QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/two_ball_collision.json"),
-                     true)
+        QVERIFY(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/two_ball_collision.json"),
+                            true)
                     .isEmpty());
         w.instruments().dock()->show();
         InstrumentsPanel& panel = *w.instruments().panel();

@@ -3,6 +3,7 @@
 // The lesson editor test's class, in two files: test_lesson_editor.cpp (the lesson as data,
 // shipped lessons) and test_lesson_editor_widgets.cpp (the editor's window, keys and mouse).
 
+#include "build_paths.h"
 #include "common/language.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
@@ -58,7 +59,7 @@ using rigidlab::test::writeFile;
 using rigidlab::ui::LessonDraft;
 
 /// The source tree (its lessons and scenes).
-inline const QString kSource = QStringLiteral(RIGIDLAB_SOURCE_DIR);
+inline const QString kSource = rigidlab::test::sourcePath();
 
 class TestLessonEditor : public QObject {
     Q_OBJECT

@@ -5,6 +5,7 @@
 // choice that reads the hint, a right one that releases the run it held back, and the tries
 // kept for the worksheet.
 
+#include "build_paths.h"
 #include "lesson_editor/lesson_draft.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_player/lesson_player.h"
@@ -318,9 +319,8 @@ void TestLessonEditorChoice::backToAStepAnsweredByShowMe()
     // shown, the student goes on and comes back: the step is as she left it, nothing held.
     ui::MainWindow w;
     w.show();
-    QCOMPARE(
-        w.openLesson(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/tunnelling.json"), true),
-        QString());
+    QCOMPARE(w.openLesson(rigidlab::test::sourcePath(u"/lessons/lessons/tunnelling.json"), true),
+             QString());
     ui::LessonPlayer& player = w.lessonPlayer();
     const int questions = static_cast<int>(player.lesson()->steps.at(0).questions.size());
     QCOMPARE(questions, 3);

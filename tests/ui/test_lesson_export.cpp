@@ -3,6 +3,7 @@
 // exactly as the window makes them, captions, and the headless export of every shipped
 // lesson through rigidlab-cli, each file checked for being what it says it is.
 
+#include "build_paths.h"
 #include "common/language.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_widget.h"
@@ -36,7 +37,7 @@ using rigidlab::test::readAll;
 
 namespace {
 
-const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
+const QString kLessonsDir = rigidlab::test::sourcePath(u"/lessons/lessons");
 
 lessons::Lesson lesson(const char* name)
 {

@@ -3,6 +3,7 @@
 // command line and a double-click do), by drag and drop, refused with its place when damaged,
 // and listed among the teacher's own lessons with its author and date.
 
+#include "build_paths.h"
 #include "lesson_player/lesson_player.h"
 #include "test_files.h"
 #include "window/main_window.h"
@@ -31,7 +32,7 @@ using rigidlab::ui::MainWindow;
 
 namespace {
 
-const QString kLessonsDir = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons");
+const QString kLessonsDir = rigidlab::test::sourcePath(u"/lessons/lessons");
 
 /// `lesson` (a shipped lesson's file name) packed into `folder`; its path.
 QString packInto(const QString& folder, const QString& lesson,
@@ -70,7 +71,7 @@ private slots:
         QVERIFY(lessons::isLessonDocument(pack));
         QVERIFY(lessons::isLessonDocument(QDir(kLessonsDir).filePath("restitution.json")));
         QVERIFY(!lessons::isLessonDocument(
-            QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/welcome.json")));
+            rigidlab::test::sourcePath(u"/lessons/scenes/welcome.json")));
 
         MainWindow w;
         w.show();

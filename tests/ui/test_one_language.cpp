@@ -7,6 +7,7 @@
 // sent to the window and tried as a student without a dialog (its copy its own: another
 // editor's try does not replace it), saved and reopened unchanged.
 
+#include "build_paths.h"
 #include "common/language.h"
 #include "first_question.h"
 #include "lesson_editor/lesson_editor.h"
@@ -33,7 +34,7 @@ using namespace rigidlab;
 
 namespace {
 
-const QString kData = QStringLiteral(RIGIDLAB_SOURCE_DIR "/tests/lessons/data/one_language/");
+const QString kData = rigidlab::test::sourcePath(u"/tests/lessons/data/one_language/");
 
 QByteArray fileBytes(const QString& path)
 {

@@ -4,6 +4,7 @@
 // alike; the dialog proposes a name, offers the dialect and remembers it; Ctrl+C copies the
 // data shown as tab-separated text in the language's number format.
 
+#include "build_paths.h"
 #include "common/export_folder.h"
 #include "common/language.h"
 #include "panels/fitting_table.h"
@@ -46,7 +47,7 @@ namespace {
 void runInto(test::SourcedPlot& sourced, const char* scene, double dt, double seconds)
 {
     const lessons::SceneLoadResult loaded =
-        lessons::loadSceneFile(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/") +
+        lessons::loadSceneFile(rigidlab::test::sourcePath(u"/lessons/scenes/") +
                                QLatin1StringView(scene) + QStringLiteral(".json"));
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     lessons::Scene settings = loaded.scene;

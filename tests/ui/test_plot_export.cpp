@@ -2,6 +2,7 @@
 // The plots' export: every export is either a valid file or nothing at all, the CSV keeps
 // every digit, and what the window exports is named in the window's language.
 
+#include "build_paths.h"
 #include "common/display_names.h"
 #include "plots/lesson_export.h"
 #include "plots/plot_export.h"
@@ -336,7 +337,7 @@ void TestPlotExport::windowExportNamesColumnsAsTheLegend()
     // for scripts; exported from the window, the columns are named as its legend is, in the
     // window's language.
     const rigidlab::lessons::LessonLoadResult loaded = rigidlab::lessons::loadLessonFile(
-        QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/energy_drift.json"));
+        rigidlab::test::sourcePath(u"/lessons/lessons/energy_drift.json"));
     QVERIFY2(loaded.ok, qPrintable(loaded.error));
     QWidget parent;
     PlotWidget* plot =

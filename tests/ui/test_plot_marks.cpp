@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The plots' marks and exports: the labels of marks close together stacked or merged;
 // exports start in the documents folder and remember the last one chosen.
+#include "build_paths.h"
 #include "common/display_names.h"
 #include "common/export_folder.h"
 #include "lesson_player/lesson_player.h"
@@ -68,7 +69,7 @@ void feed(SampleBuffer& buffer, PlotWidget& plot, double first, double last)
 
 QString lessonPath(const char* name)
 {
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/%1.json").arg(QLatin1String(name));
+    return rigidlab::test::sourcePath(u"/lessons/lessons/%1.json").arg(QLatin1String(name));
 }
 
 /// The rectangle a mark's label takes on screen [px].

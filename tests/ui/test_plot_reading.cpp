@@ -3,6 +3,7 @@
 // moment chosen and branches them when the run goes on; a short run gets a short time axis;
 // legends in words, and curves that coincide all visible, in the window and in exports.
 // (Marks and export folders: test_plot_marks.cpp.)
+#include "build_paths.h"
 #include "common/display_names.h"
 #include "common/export_folder.h"
 #include "lesson_player/lesson_player.h"
@@ -83,7 +84,7 @@ QCPRange timeRange(const PlotWidget& plot)
 
 QString lessonPath(const char* name)
 {
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/%1.json").arg(QLatin1String(name));
+    return rigidlab::test::sourcePath(u"/lessons/lessons/%1.json").arg(QLatin1String(name));
 }
 
 /// Pixels of the image within `tolerance` of `color` in every channel.
@@ -274,9 +275,8 @@ void TestPlotReading::windowTimelineFollowsTheScrub()
     // The window as wired: dragging the timeline back keeps each plot up to the chosen step,
     // the label says the step, and playing on appends after it.
     ui::MainWindow w;
-    QCOMPARE(
-        w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/ball_drop.json"), true),
-        QString());
+    QCOMPARE(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/ball_drop.json"), true),
+             QString());
     SimulationController& c = w.controller();
     for (int i = 0; i < 600; ++i)
         c.stepForward();

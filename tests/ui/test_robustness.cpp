@@ -3,6 +3,7 @@
 // diverges, closing it in the middle of an export or a sweep, opening a file while another
 // runs, and settings that cannot be saved. Offscreen, driven as a user would.
 
+#include "build_paths.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/control_panel.h"
 #include "panels/divergence_banner.h"
@@ -50,12 +51,12 @@ namespace {
 
 QString scene(const char* name)
 {
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/") + QLatin1String(name);
+    return rigidlab::test::sourcePath(u"/lessons/scenes/") + QLatin1String(name);
 }
 
 QString lesson(const char* name)
 {
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/") + QLatin1String(name);
+    return rigidlab::test::sourcePath(u"/lessons/lessons/") + QLatin1String(name);
 }
 
 /// What students type when asked for a number.

@@ -2,6 +2,7 @@
 // The window's shell (the classroom-window issue): the command line of rigidlab, the
 // screenshot command, Help › Controls and About, and the status bar.
 
+#include "build_paths.h"
 #include "common/language.h"
 #include "simulation/simulation_controller.h"
 #include "window/about_dialog.h"
@@ -34,7 +35,7 @@ namespace {
 
 QString lesson(const char* name)
 {
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/") + QLatin1String(name);
+    return rigidlab::test::sourcePath(u"/lessons/lessons/") + QLatin1String(name);
 }
 
 /// The keys named in Help › Controls: the bold first cell of each row, split at " or ".
@@ -280,7 +281,7 @@ private slots:
               QStringLiteral("Simulace mechaniky tuhých těles v reálném čase"),
               QStringLiteral("Real-time simulation of rigid-body mechanics")})
             QVERIFY2(about.contains(part), qPrintable(part));
-        QVERIFY(QFile::exists(QStringLiteral(RIGIDLAB_SOURCE_DIR "/LICENSE")));
+        QVERIFY(QFile::exists(rigidlab::test::sourcePath(u"/LICENSE")));
     }
 
     void statusBarSaysOnlyWhatIsCurrent()
@@ -288,9 +289,8 @@ private slots:
         QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
         MainWindow w;
         QVERIFY(!w.statusDetailsAction()->isChecked()); // off by default
-        QCOMPARE(
-            w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/box_stack.json"), true),
-            QString());
+        QCOMPARE(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/box_stack.json"), true),
+                 QString());
         ui::SimulationController& c = w.controller();
         c.setRunning(false);
         for (int i = 0; i < 30; ++i)

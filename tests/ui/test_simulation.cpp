@@ -4,6 +4,7 @@
 // clock the status bar and the timeline read, and what the status bar's energy drift is the
 // error of. Worlds compared side by side are test_compared_worlds.cpp.
 
+#include "build_paths.h"
 #include "common/display_names.h"
 #include "simulation/catch_up.h"
 #include "simulation/drift_words.h"
@@ -210,9 +211,8 @@ private slots:
     void statusBarAndTimelineShowOneClock()
     {
         MainWindow w;
-        QCOMPARE(
-            w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/welcome.json"), true),
-            QString());
+        QCOMPARE(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/welcome.json"), true),
+                 QString());
         SimulationController& c = w.controller();
         auto* timeline = w.findChild<QLabel*>(QStringLiteral("timelineLabel"));
         QVERIFY(timeline);
@@ -430,9 +430,8 @@ private slots:
         QVERIFY(driftLabel(false).contains(QStringLiteral("contacts")));
         QVERIFY(driftExplanation().contains(QStringLiteral("Verlet")));
         MainWindow w;
-        QCOMPARE(
-            w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/welcome.json"), true),
-            QString());
+        QCOMPARE(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/welcome.json"), true),
+                 QString());
         QMetaObject::invokeMethod(&w, "updateStatus");
         bool found = false;
         for (const QLabel* label : w.findChildren<QLabel*>())
@@ -445,9 +444,8 @@ private slots:
         // The welcome scene asks for the soft step and has springs and pins: the soft step runs
         // them too, and the status bar names it, with no other solver standing in.
         MainWindow w;
-        QCOMPARE(
-            w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/welcome.json"), true),
-            QString());
+        QCOMPARE(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/welcome.json"), true),
+                 QString());
         QCOMPARE(w.controller().world().def().solver, physics::SolverKind::SoftStep);
         QMetaObject::invokeMethod(&w, "updateStatus");
         auto* solver = w.findChild<QLabel*>(QStringLiteral("statusSolver"));
@@ -457,9 +455,8 @@ private slots:
         QVERIFY2(solver->toolTip().contains(soft), qPrintable(solver->toolTip()));
         QVERIFY(w.statusText().contains(solver->text()));
         // A stack of boxes alone: the soft step runs, and says so.
-        QCOMPARE(
-            w.openScene(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/box_stack.json"), true),
-            QString());
+        QCOMPARE(w.openScene(rigidlab::test::sourcePath(u"/lessons/scenes/box_stack.json"), true),
+                 QString());
         QMetaObject::invokeMethod(&w, "updateStatus");
         QCOMPARE(solver->text(), soft);
     }

@@ -6,6 +6,7 @@
 // the step's end time, not the whole ground; a cart that runs off the end of the ground stops
 // the run with a message, and the lesson editor's checks warn of it.
 
+#include "build_paths.h"
 #include "common/language.h"
 #include "instruments/instruments.h"
 #include "lesson_editor/step_checks.h"
@@ -36,7 +37,7 @@ using namespace rigidlab;
 namespace {
 
 const QString kLesson =
-    QStringLiteral(RIGIDLAB_SOURCE_DIR "/tests/lessons/data/two_carts/dva_voziky.rlesson");
+    rigidlab::test::sourcePath(u"/tests/lessons/data/two_carts/dva_voziky.rlesson");
 
 /// Steps the window's world until time `t` [s].
 void stepUntil(ui::SimulationController& c, double t)

@@ -4,6 +4,7 @@
 // written, every text the window asks to translate is one lupdate found, and Qt's own
 // dialogs speak Czech in the Czech window.
 
+#include "build_paths.h"
 #include "common/language.h"
 #include "lesson_player/lesson_player.h"
 #include "plots/plot_widget.h"
@@ -122,9 +123,9 @@ QString runLupdate(const QString& ts, const QStringList& extra)
 {
     QProcess p;
     p.start(QStringLiteral(RIGIDLAB_LUPDATE),
-            QStringList{QStringLiteral("@" RIGIDLAB_TRANSLATED_SOURCES), QStringLiteral("-ts"), ts,
-                        QStringLiteral("-no-obsolete"), QStringLiteral("-locations"),
-                        QStringLiteral("none")} +
+            QStringList{QLatin1Char('@') + rigidlab::test::translatedSourcesList(),
+                        QStringLiteral("-ts"), ts, QStringLiteral("-no-obsolete"),
+                        QStringLiteral("-locations"), QStringLiteral("none")} +
                 extra);
     if (!p.waitForFinished(120000)) {
         p.kill();
@@ -138,7 +139,7 @@ QString runLupdate(const QString& ts, const QStringList& extra)
 
 QString committedTs(const char* name)
 {
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/translations/") + QLatin1String(name);
+    return rigidlab::test::sourcePath(u"/translations/") + QLatin1String(name);
 }
 
 /// Remembers every text the application asks to translate, translating none.

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The lab window, driven as a user would: keys, mouse, menus, under the offscreen platform.
 
+#include "build_paths.h"
 #include "common/status_text.h"
 #include "lesson_player/lesson_panels.h"
 #include "measure/measurement_panel.h"
@@ -44,7 +45,7 @@ namespace {
 
 QString scene(const char* name)
 {
-    return QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/scenes/") + QLatin1String(name);
+    return rigidlab::test::sourcePath(u"/lessons/scenes/") + QLatin1String(name);
 }
 
 /// Every body's state, bit for bit.

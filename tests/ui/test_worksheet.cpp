@@ -6,6 +6,7 @@
 // step, and embedded fonts. The answers file saved beside it makes the same sheet through
 // rigidlab-cli; the empty sheet and the teacher's key are checked likewise.
 
+#include "build_paths.h"
 #include "common/display_names.h"
 #include "common/language.h"
 #include "common/number_format.h"
@@ -41,7 +42,7 @@ using namespace rigidlab;
 
 namespace {
 
-const QString kLessonPath = QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/restitution.json");
+const QString kLessonPath = rigidlab::test::sourcePath(u"/lessons/lessons/restitution.json");
 
 struct Tool {
     int exitCode = -1;
@@ -263,7 +264,7 @@ void TestWorksheet::handInAfterAnswering()
     QCOMPARE(saved.answers.student, QStringLiteral("Jana Nováková"));
     QCOMPARE(saved.answers.language, language);
     const QString again = dir.filePath(QStringLiteral("again.pdf"));
-    const Tool cli = runTool(QStringLiteral(RIGIDLAB_CLI),
+    const Tool cli = runTool(rigidlab::test::cliPath(),
                              {QStringLiteral("lesson"), kLessonPath, QStringLiteral("--worksheet"),
                               again, QStringLiteral("--answers"), answersPath});
     QVERIFY2(cli.exitCode == 0, qPrintable(cli.err));
@@ -329,10 +330,10 @@ void TestWorksheet::emptySheetAndKey()
                      QStringList{QStringLiteral("--key")}}}) {
         const QString out = dir.filePath(file);
         const Tool cli =
-            runTool(QStringLiteral(RIGIDLAB_CLI), QStringList{QStringLiteral("lesson"), kLessonPath,
-                                                              QStringLiteral("--worksheet"), out,
-                                                              QStringLiteral("--lang"), language} +
-                                                      extra);
+            runTool(rigidlab::test::cliPath(), QStringList{QStringLiteral("lesson"), kLessonPath,
+                                                           QStringLiteral("--worksheet"), out,
+                                                           QStringLiteral("--lang"), language} +
+                                                   extra);
         QVERIFY2(cli.exitCode == 0, qPrintable(cli.err));
         QCOMPARE(pdfText(out), text);
     }
@@ -374,10 +375,9 @@ void TestWorksheet::cliRefusesDamagedAnswers()
         QVERIFY(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
         file.write(bytes);
         file.close();
-        const Tool cli =
-            runTool(QStringLiteral(RIGIDLAB_CLI),
-                    {QStringLiteral("lesson"), kLessonPath, QStringLiteral("--worksheet"), out,
-                     QStringLiteral("--answers"), answers});
+        const Tool cli = runTool(rigidlab::test::cliPath(), {QStringLiteral("lesson"), kLessonPath,
+                                                             QStringLiteral("--worksheet"), out,
+                                                             QStringLiteral("--answers"), answers});
         QVERIFY2(cli.exitCode == 2, qPrintable(QString::number(cli.exitCode) + cli.err));
         QVERIFY2(cli.err.contains(answers + QStringLiteral(": ")), qPrintable(cli.err));
         QVERIFY2(cli.err.contains(message), qPrintable(cli.err));
@@ -430,7 +430,7 @@ void TestWorksheet::prematureCheckIsNoAnswer()
     // the answer judged later.
     ui::MainWindow w;
     const QString path =
-        QStringLiteral(RIGIDLAB_SOURCE_DIR "/tests/lessons/data/one_language/english_only.rlesson");
+        rigidlab::test::sourcePath(u"/tests/lessons/data/one_language/english_only.rlesson");
     QCOMPARE(w.openLesson(path, true), QString());
     ui::LessonPlayer& player = w.lessonPlayer();
     player.setStudent(QStringLiteral("Jana Nováková"), QStringLiteral("2.B"));
@@ -464,7 +464,7 @@ void TestWorksheet::solverLineNamesTheSolverThatRan()
     for (const QString& file :
          {QStringLiteral("restitution.json"), QStringLiteral("stacks.json")}) {
         const lessons::LessonLoadResult loaded =
-            lessons::loadLessonFile(QStringLiteral(RIGIDLAB_SOURCE_DIR "/lessons/lessons/") + file);
+            lessons::loadLessonFile(rigidlab::test::sourcePath(u"/lessons/lessons/") + file);
         QVERIFY2(loaded.ok, qPrintable(loaded.error));
         QTemporaryDir dir;
         const QString pdf = dir.filePath(QStringLiteral("empty.pdf"));
