@@ -15,6 +15,7 @@
 
 #include <QComboBox>
 #include <QLocale>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -68,6 +69,7 @@ private slots:
     void init() { QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates)); }
     void flatBoxShowsZero();
     void anglesInDegreesOrRadians();
+    void emptyInspectorOffersNothingToActOn();
     void roundingNoiseOfSpeedsIsZero();
     void settingShownWhereItIsMade();
     void iterationsSayWhatTheyMean();
@@ -117,6 +119,36 @@ void TestPanelValues::anglesInDegreesOrRadians()
     QVERIFY2(text.contains(QStringLiteral("\n1 rad/s")), qPrintable(text));
     // The speed beside the components: |(3, 4)| = 5 m/s.
     QVERIFY2(text.contains(QStringLiteral("(3, 4) m/s\n5 m/s\n")), qPrintable(text));
+}
+
+void TestPanelValues::emptyInspectorOffersNothingToActOn()
+{
+    // No body chosen: "–" for each value, and no control beside it that has nothing to act on
+    // (a unit list beside a "–" reads as a value of its own).
+    QTemporaryDir dir;
+    MainWindow w;
+    QVERIFY(openBoxes(w, dir));
+    ui::InspectorPanel& inspector = w.inspector();
+    inspector.setBody(-1);
+    auto* unit = inspector.findChild<QComboBox*>(QStringLiteral("angleUnit"));
+    auto* graph = inspector.findChild<QPushButton*>(QStringLiteral("inspectorGraph"));
+    QVERIFY(unit && graph);
+    QVERIFY(!unit->isVisibleTo(&inspector));
+    QVERIFY(!graph->isEnabled());
+    QVERIFY(!inspector.restitutionField()->isEnabled());
+    // Its place is kept: the rows below stay where they are when a body is chosen.
+    QVERIFY(unit->sizePolicy().retainSizeWhenHidden());
+    // A body chosen: the list is there, named, in the unit chosen before.
+    inspector.setAnglesInDegrees(false);
+    inspector.setBody(2);
+    QVERIFY(unit->isVisibleTo(&inspector));
+    QVERIFY(graph->isEnabled());
+    QCOMPARE(unit->accessibleName(), QStringLiteral("Unit of angles"));
+    QVERIFY2(inspector.text().contains(QStringLiteral("\n0.5 rad\n")),
+             qPrintable(inspector.text()));
+    inspector.setBody(-1);
+    QVERIFY(!unit->isVisibleTo(&inspector));
+    QVERIFY(!inspector.anglesInDegrees());
 }
 
 void TestPanelValues::roundingNoiseOfSpeedsIsZero()
