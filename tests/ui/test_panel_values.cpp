@@ -14,6 +14,7 @@
 #include <qcustomplot.h>
 
 #include <QComboBox>
+#include <QLabel>
 #include <QLocale>
 #include <QPushButton>
 #include <QRegularExpression>
@@ -132,8 +133,10 @@ void TestPanelValues::emptyInspectorOffersNothingToActOn()
     inspector.setBody(-1);
     auto* unit = inspector.findChild<QComboBox*>(QStringLiteral("angleUnit"));
     auto* graph = inspector.findChild<QPushButton*>(QStringLiteral("inspectorGraph"));
-    QVERIFY(unit && graph);
+    auto* kg = inspector.findChild<QLabel*>(QStringLiteral("massUnit"));
+    QVERIFY(unit && graph && kg);
     QVERIFY(!unit->isVisibleTo(&inspector));
+    QVERIFY(!kg->isVisibleTo(&inspector)); // the mass field's unit, not before the "–"
     QVERIFY(!graph->isEnabled());
     QVERIFY(!inspector.restitutionField()->isEnabled());
     // Its place is kept: the rows below stay where they are when a body is chosen.
@@ -143,9 +146,12 @@ void TestPanelValues::emptyInspectorOffersNothingToActOn()
     inspector.setBody(2);
     QVERIFY(unit->isVisibleTo(&inspector));
     QVERIFY(graph->isEnabled());
+    QVERIFY(!kg->isVisibleTo(&inspector)); // a kinematic body's mass reads "infinite"
     QCOMPARE(unit->accessibleName(), QStringLiteral("Unit of angles"));
     QVERIFY2(inspector.text().contains(QStringLiteral("\n0.5 rad\n")),
              qPrintable(inspector.text()));
+    inspector.setBody(1); // a dynamic one's is a field with its unit
+    QVERIFY(kg->isVisibleTo(&inspector));
     inspector.setBody(-1);
     QVERIFY(!unit->isVisibleTo(&inspector));
     QVERIFY(!inspector.anglesInDegrees());

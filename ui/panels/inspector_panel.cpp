@@ -72,6 +72,7 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     massRow->setContentsMargins(0, 0, 0, 0);
     massRow->addWidget(m_massEdit, 1);
     massRow->addWidget(m_massUnit);
+    m_massUnit->setObjectName(QStringLiteral("massUnit"));
     massRow->addWidget(m_mass, 1);
     m_massEdit->setObjectName(QStringLiteral("mass"));
     m_massEdit->setRange(lessons::limits::kMass, tr("Mass m"));
@@ -166,6 +167,7 @@ void InspectorPanel::refresh()
     if (!has) {
         m_name->setText(tr("click a body"));
         m_massEdit->setVisible(false);
+        m_massUnit->setVisible(false); // the mass field's unit: "kg –" read as a value
         m_mass->setVisible(true);
         for (QLabel* l :
              {m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
