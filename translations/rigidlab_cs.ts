@@ -4970,6 +4970,70 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>Measurement</source>
         <translation>Měření</translation>
     </message>
+    <message>
+        <source>Pa&amp;nels</source>
+        <translation>Pa&amp;nely</translation>
+    </message>
+    <message>
+        <source>&amp;Lesson</source>
+        <translation>&amp;Lekce</translation>
+    </message>
+    <message>
+        <source>&amp;Controls</source>
+        <translation>&amp;Ovládání</translation>
+    </message>
+    <message>
+        <source>&amp;Inspector</source>
+        <translation>&amp;Inspektor</translation>
+    </message>
+    <message>
+        <source>&amp;Energy</source>
+        <translation>&amp;Energie</translation>
+    </message>
+    <message>
+        <source>&amp;Momentum</source>
+        <translation>&amp;Hybnost</translation>
+    </message>
+    <message>
+        <source>&amp;Drift</source>
+        <translation>&amp;Drift</translation>
+    </message>
+    <message>
+        <source>&amp;Axis test</source>
+        <translation>&amp;Test os</translation>
+    </message>
+    <message>
+        <source>&amp;Bounces</source>
+        <translation>Odra&amp;zy</translation>
+    </message>
+    <message>
+        <source>C&amp;ollision</source>
+        <translation>&amp;Srážka</translation>
+    </message>
+    <message>
+        <source>E&amp;rror vs run time</source>
+        <translation>&amp;Chyba vs. doba běhu</translation>
+    </message>
+    <message>
+        <source>Meas&amp;urement</source>
+        <translation>&amp;Měření</translation>
+    </message>
+    <message>
+        <source>&amp;Side by side</source>
+        <translation>&amp;Vedle sebe</translation>
+    </message>
+    <message>
+        <source>&amp;Properties</source>
+        <translation>Vlast&amp;nosti</translation>
+    </message>
+    <message>
+        <source>&amp;History</source>
+        <translation>Histo&amp;rie</translation>
+    </message>
+    <message>
+        <source>I&amp;nstruments</source>
+        <translation>Měřidl&amp;a</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MeasurementFit</name>
@@ -5016,6 +5080,18 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>From the bounce times alone (%3): e = %1 (95&#xa0;%). Each flight between bounces lasts e times the one before: %2.</source>
         <translation>Jen z&#xa0;časů odrazů (%3): e = %1 (95&#xa0;%). Každý let mezi odrazy trvá e‑násobek letu předchozího: %2.</translation>
+    </message>
+    <message>
+        <source>Fit stopped: another measurement was imported. Fit again to fit the data compared now.</source>
+        <translation>Určování z&#xa0;měření zastaveno: bylo importováno další měření. Spusťte ho znovu, ať se určí z&#xa0;dat, která se porovnávají teď.</translation>
+    </message>
+    <message>
+        <source>Fit stopped: another body or quantity is compared. Fit again to fit the data compared now.</source>
+        <translation>Určování z&#xa0;měření zastaveno: porovnává se jiné těleso nebo veličina. Spusťte ho znovu, ať se určí z&#xa0;dat, která se porovnávají teď.</translation>
+    </message>
+    <message>
+        <source>Fit stopped: the scene changed. Fit again to fit the scene as it is now.</source>
+        <translation>Určování z&#xa0;měření zastaveno: scéna se změnila. Spusťte ho znovu, ať se určí pro scénu, jak je teď.</translation>
     </message>
 </context>
 <context>
@@ -6119,10 +6195,6 @@ B&#xa0;%3 … %4</translation>
         <translation>Zpět na začátek scény (%1)</translation>
     </message>
     <message>
-        <source>Fit scene</source>
-        <translation>Celá scéna</translation>
-    </message>
-    <message>
         <source>Zoom to show every body (%1)</source>
         <translation>Přiblížit tak, aby byla vidět všechna tělesa (%1)</translation>
     </message>
@@ -6145,6 +6217,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>The world does not step in Edit mode: leave it (%1) or press Play to run the scene as edited</source>
         <translation>V editoru svět nekrokuje: vypněte ho (%1) nebo stiskněte Spustit a scéna poběží tak, jak je upravená</translation>
+    </message>
+    <message>
+        <source>&amp;Fit scene</source>
+        <translation>&amp;Celá scéna</translation>
     </message>
 </context>
 <context>
@@ -6237,10 +6313,6 @@ B&#xa0;%3 … %4</translation>
         <translation>Vybrat předchozí těleso</translation>
     </message>
     <message>
-        <source>Single-key shortcuts</source>
-        <translation>Jednoklávesové zkratky</translation>
-    </message>
-    <message>
         <source>Letters, Space and arrows alone act as shortcuts; off, only keys with Ctrl, Alt or F-keys do</source>
         <translation>Písmena, mezerník a&#xa0;šipky samy fungují jako zkratky; vypnuto fungují jen klávesy s&#xa0;Ctrl, Alt nebo klávesy F</translation>
     </message>
@@ -6249,12 +6321,16 @@ B&#xa0;%3 … %4</translation>
         <translation>Fokus na panel nástrojů</translation>
     </message>
     <message>
-        <source>Reduced motion</source>
-        <translation>Omezit pohyb</translation>
-    </message>
-    <message>
         <source>Panels, menus, lists and tooltips appear at once, without animation</source>
         <translation>Panely, nabídky, seznamy a tipy se objeví hned, bez animace</translation>
+    </message>
+    <message>
+        <source>Single-&amp;key shortcuts</source>
+        <translation>Jednoklávesové &amp;zkratky</translation>
+    </message>
+    <message>
+        <source>&amp;Reduced motion</source>
+        <translation>O&amp;mezit pohyb</translation>
     </message>
 </context>
 <context>

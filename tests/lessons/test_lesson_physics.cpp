@@ -22,10 +22,10 @@ using namespace rigidlab::test;
 
 void TestLesson::judgeApexRightAndWrong()
 {
-    const lessons::Lesson lesson = shippedLesson("restitution");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
+    ShippedStep drop("restitution", 0);
+    const lessons::LessonStep& step = drop.step;
     const lessons::Question& q = step.questions.at(0); // second bounce of the e = 0.8 ball
-    StepRun run(step);
+    StepRun& run = drop.run;
 
     // Before the run: not measured yet, and the student is told what to wait for.
     lessons::Verdict early = lessons::judge(q, 0.41, run.measurements[0], step.scene);
@@ -78,10 +78,10 @@ void TestLesson::verdictsOfARunNotYetShownSayWhatItWillMeasure()
 
 void TestLesson::judgeTimedValue()
 {
-    const lessons::Lesson lesson = shippedLesson("energy_drift");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
+    ShippedStep spring("energy_drift", 0);
+    const lessons::LessonStep& step = spring.step;
     const lessons::Question& q = step.questions.at(0); // Euler's drift at t = 5 s
-    StepRun run(step);
+    StepRun& run = spring.run;
     run.run(4.99);
     lessons::Verdict early = lessons::judge(q, 65, run.measurements[0], step.scene);
     QVERIFY(!early.measured);
@@ -230,10 +230,10 @@ void TestLesson::judgeAttemptGivesHintThenValue()
 
 void TestLesson::rewindForgetsLaterEvents()
 {
-    const lessons::Lesson lesson = shippedLesson("restitution");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
+    ShippedStep drop("restitution", 0);
+    const lessons::LessonStep& step = drop.step;
     const physics::BodyId ball = bodyId(step.scene, "e08");
-    StepRun run(step);
+    StepRun& run = drop.run;
     run.run(1.0);
     const physics::World atOne = run.worlds[0];
     const std::size_t apexesAtOne = run.measurements[0].apexes(ball).size();
@@ -391,9 +391,9 @@ void TestLesson::measurementsFindEveryNewTouch()
 
 void TestLesson::collisionPredictionsOfOffCentreHit()
 {
-    const lessons::Lesson lesson = shippedLesson("restitution");
-    const lessons::LessonStep& step = stepOf(lesson, 3);
-    StepRun run(step);
+    ShippedStep offCentre("restitution", 3);
+    const lessons::LessonStep& step = offCentre.step;
+    StepRun& run = offCentre.run;
     run.run(1.0);
     const std::vector<lessons::CollisionEvent>& hits = run.measurements[0].collisions();
     QCOMPARE(hits.size(), std::size_t{1});
@@ -457,7 +457,6 @@ void TestLesson::stiffSpringsDivergeWhereTheoryPredicts()
     // The stiff-springs lesson raises k at dt = 5 ms. Symplectic Euler and Verlet are stable
     // on a spring while w dt < 2, RK4 while w dt < 2 sqrt 2, implicit midpoint always. Each
     // step's worlds (in its compare order) must diverge exactly where its text says.
-    const lessons::Lesson l = shippedLesson("stiff_springs");
     struct Expect {
         std::size_t step;
         std::vector<bool> diverges; // implicit-midpoint, symplectic-euler, verlet, rk4
@@ -466,8 +465,9 @@ void TestLesson::stiffSpringsDivergeWhereTheoryPredicts()
                                        {2, {false, true, true, false}},
                                        {3, {false, true, true, true}}};
     for (const Expect& e : expected) {
-        const lessons::LessonStep& s = stepOf(l, e.step);
-        std::vector<physics::World> worlds = lessons::buildStepWorlds(s);
+        ShippedStep stiff("stiff_springs", e.step);
+        const lessons::LessonStep& s = stiff.step;
+        std::vector<physics::World>& worlds = stiff.run.worlds;
         QCOMPARE(worlds.size(), e.diverges.size());
         const double k = s.scene.springs.at(0).stiffness;
         const double wdt = std::sqrt(k / worlds[0].bodies()[0].mass) * worlds[0].def().dt;

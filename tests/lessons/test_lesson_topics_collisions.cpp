@@ -81,9 +81,9 @@ bool caughtBySteps(double x0, double v, double dt, const Wall& wall, bool* clear
 
 void TestLessonTopics::impulseFormulaTermByTerm()
 {
-    const lessons::Lesson lesson = shippedLesson("impulse_formula");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    StepRun run(step);
+    ShippedStep rodHit("impulse_formula", 0);
+    const lessons::LessonStep& step = rodHit.step;
+    StepRun& run = rodHit.run;
     const physics::BodyId rod = bodyId(step.scene, "rod");
     const physics::BodyId ball = bodyId(step.scene, "ball");
     const HitPrediction p = predictHit(run.worlds[0], rod, ball);
@@ -122,9 +122,9 @@ void TestLessonTopics::impulseFormulaTermByTerm()
 
 void TestLessonTopics::impulseShrinksAndSpinGrowsWithLeverArm()
 {
-    const lessons::Lesson lesson = shippedLesson("impulse_formula");
-    const lessons::LessonStep& step = stepOf(lesson, 1);
-    StepRun run(step);
+    ShippedStep hits("impulse_formula", 1);
+    const lessons::LessonStep& step = hits.step;
+    StepRun& run = hits.run;
     std::vector<HitPrediction> predicted;
     const char* rods[] = {"rod0", "rod1", "rod2"};
     const char* balls[] = {"ball0", "ball1", "ball2"};
@@ -159,9 +159,9 @@ void TestLessonTopics::tunnellingWhereVdtSkipsTheCatchZone()
 {
     // The first step: the zone is r + h/2 + the margin = 7 cm, so 7 m/s at dt = 0.01 s is the
     // first speed that can pass; the text's three balls do what the steps predict.
-    const lessons::Lesson lesson = shippedLesson("tunnelling");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    StepRun run(step);
+    ShippedStep threeBalls("tunnelling", 0);
+    const lessons::LessonStep& step = threeBalls.step;
+    StepRun& run = threeBalls.run;
     const physics::World& w = run.worlds[0];
     QVERIFY(!w.def().continuous);
     const double dt = w.def().dt;
@@ -250,9 +250,9 @@ void TestLessonTopics::continuousCollisionContactsAheadOfTime()
 {
     // The text's cost: with continuous collision the fast ball gets a contact a step ahead,
     // while a gap remains of more than the margin, which the solver lets it close.
-    const lessons::Lesson lesson = shippedLesson("tunnelling");
-    const lessons::LessonStep& step = stepOf(lesson, 1);
-    physics::World w = lessons::buildStepWorlds(step).front();
+    ShippedStep continuous("tunnelling", 1);
+    const lessons::LessonStep& step = continuous.step;
+    physics::World& w = continuous.run.worlds[0];
     QVERIFY(w.def().continuous);
     const physics::BodyId fast = bodyId(step.scene, "fast");
     const Wall wall = wallOf(w, step.scene, "fast");
@@ -275,15 +275,15 @@ void TestLessonTopics::tunnellingChoiceIsWhatTheRunDoes()
 {
     // The first step's choice question names the balls that pass through the wall: the one the
     // run itself sends past the wall's middle by t = 0.5 s. Each option is a set of balls.
-    const lessons::Lesson lesson = shippedLesson("tunnelling");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
+    ShippedStep balls("tunnelling", 0);
+    const lessons::LessonStep& step = balls.step;
     const lessons::Question& q = step.questions.at(0);
     QVERIFY(isChoice(q));
     QCOMPARE(q.holdBack, QStringList{QStringLiteral("run")});
     const std::vector<QStringList> options{
         {}, {"fast"}, {"medium", "fast"}, {"slow", "medium", "fast"}};
     QCOMPARE(choiceOf(q).choices.size(), static_cast<qsizetype>(options.size()));
-    StepRun run(step);
+    StepRun& run = balls.run;
     run.run(0.5);
     QStringList passed;
     for (const char* id : {"slow", "medium", "fast"})

@@ -49,9 +49,9 @@ double boxInertia(double m, double w, double h)
 void TestLessonTopics::rotationInertiaFromFormulas()
 {
     // The table of the first step: I from the formulas equals the inspector's (the world's).
-    const lessons::Lesson lesson = shippedLesson("rotation_inertia");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    const physics::World w = lessons::buildStepWorlds(step).front();
+    ShippedStep bodies("rotation_inertia", 0);
+    const lessons::LessonStep& step = bodies.step;
+    const physics::World& w = bodies.run.worlds[0];
     const auto inertia = [&](const char* id) { return w.body(bodyId(step.scene, id)).inertia; };
     RL_VERIFY_NEAR(inertia("disc"), 0.5 * 1.0 * 0.25 * 0.25, 0, 1e-12);
     RL_VERIFY_NEAR(inertia("square"), boxInertia(1, 0.5, 0.5), 0, 1e-12);
@@ -71,9 +71,9 @@ void TestLessonTopics::rotationAlphaIsTorqueOverInertia()
     // The same torque on each body, and after one step ω = (τ / I) dt: exactly Newton's law
     // for rotation, with the ring's I = I_hub + 4 m r² (its beads pinned at their centres turn
     // the hub's pins, not themselves).
-    const lessons::Lesson lesson = shippedLesson("rotation_inertia");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    physics::World w = lessons::buildStepWorlds(step).front();
+    ShippedStep turned("rotation_inertia", 0);
+    const lessons::LessonStep& step = turned.step;
+    physics::World& w = turned.run.worlds[0];
     const double dt = w.def().dt;
     const physics::BodyId hub = bodyId(step.scene, "hub");
     double ringInertia = w.body(hub).inertia;
@@ -98,9 +98,9 @@ void TestLessonTopics::rotationQuestionsHaveTheirAnswers()
 {
     // ω = α t at 0.1 s, with α = τ / I, is judged right; the bodies turn in the order of
     // their I (the disc fastest); and L about the origin grows at the total torque, 2 N m.
-    const lessons::Lesson lesson = shippedLesson("rotation_inertia");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    StepRun run(step);
+    ShippedStep turned("rotation_inertia", 0);
+    const lessons::LessonStep& step = turned.step;
+    StepRun& run = turned.run;
     const double l0 = run.worlds[0].diagnostics().angularMomentum;
     run.run(0.01);
     RL_VERIFY_NEAR((run.worlds[0].diagnostics().angularMomentum - l0) / 0.01, 2.0, 0, 0.01);
@@ -127,9 +127,9 @@ void TestLessonTopics::rotationOffCentrePullMovesAndTurns()
 {
     // Pulled at the centre or at the end with the same 2 N, both centres get a = F / m; only
     // the end-pulled rod turns, with α = r × F / I. One step exactly, then the questions.
-    const lessons::Lesson lesson = shippedLesson("rotation_inertia");
-    const lessons::LessonStep& step = stepOf(lesson, 1);
-    StepRun run(step);
+    ShippedStep pulled("rotation_inertia", 1);
+    const lessons::LessonStep& step = pulled.step;
+    StepRun& run = pulled.run;
     physics::World& w = run.worlds[0];
     const double dt = w.def().dt;
     const physics::BodyId centre = bodyId(step.scene, "centre");
@@ -161,9 +161,9 @@ void TestLessonTopics::accumulatorsSumTheFourForces()
     // The table of the first step summed here: weight, cord, push and drag give F = (4, 0) N
     // and τ = 0.5 N m; after one step the lab's velocities changed by exactly F dt / m and
     // τ dt / I.
-    const lessons::Lesson lesson = shippedLesson("force_accumulators");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    physics::World w = lessons::buildStepWorlds(step).front();
+    ShippedStep pushed("force_accumulators", 0);
+    const lessons::LessonStep& step = pushed.step;
+    physics::World& w = pushed.run.worlds[0];
     const physics::BodyId crate = bodyId(step.scene, "crate");
     const physics::Body b0 = w.body(crate);
     const physics::Vec2 weight = b0.mass * w.def().gravity;
@@ -201,28 +201,25 @@ void TestLessonTopics::accumulatorQuestionsHaveTheirAnswers()
 {
     // The textbook answers v = v₀ + (F / m) t and ω = (τ / I) t, with the sums at the start,
     // are judged right; forgetting drag (F = 5 N) or the push's lever arm (τ = 0) is not.
-    const lessons::Lesson lesson = shippedLesson("force_accumulators");
-    const lessons::LessonStep& step = stepOf(lesson, 0);
-    StepRun run(step);
-    run.run(step.exportTime);
+    ShippedStep pushed("force_accumulators", 0);
+    const lessons::LessonStep& step = pushed.step;
+    const lessons::Measurements& measured = pushed.runToExport();
     QString message;
     const double m = 2, inertia = boxInertia(2, 0.4, 0.4);
-    QVERIFY2(judgedRight(step, 0, 1.0 + 4.0 / m * 0.05, run.measurements[0], &message),
-             qPrintable(message));
-    QVERIFY(!judgedRight(step, 0, 1.0 + 5.0 / m * 0.05, run.measurements[0], &message));
-    QVERIFY(!judgedRight(step, 0, 1.0, run.measurements[0], &message));
-    QVERIFY2(judgedRight(step, 1, 0.5 / inertia * 0.02, run.measurements[0], &message),
-             qPrintable(message));
-    QVERIFY(!judgedRight(step, 1, 0.0, run.measurements[0], &message));
+    QVERIFY2(judgedRight(step, 0, 1.0 + 4.0 / m * 0.05, measured, &message), qPrintable(message));
+    QVERIFY(!judgedRight(step, 0, 1.0 + 5.0 / m * 0.05, measured, &message));
+    QVERIFY(!judgedRight(step, 0, 1.0, measured, &message));
+    QVERIFY2(judgedRight(step, 1, 0.5 / inertia * 0.02, measured, &message), qPrintable(message));
+    QVERIFY(!judgedRight(step, 1, 0.0, measured, &message));
 }
 
 void TestLessonTopics::dragAloneDecaysExponentially()
 {
     // F = −k m v and M = −k I ω: the speed and the spin fall as exp(−k t); symplectic Euler
     // takes (1 − k dt) of them each step, which is what the lab must do exactly.
-    const lessons::Lesson lesson = shippedLesson("force_accumulators");
-    const lessons::LessonStep& step = stepOf(lesson, 1);
-    StepRun run(step);
+    ShippedStep dragged("force_accumulators", 1);
+    const lessons::LessonStep& step = dragged.step;
+    StepRun& run = dragged.run;
     const physics::World& w = run.worlds[0];
     const physics::BodyId crate = bodyId(step.scene, "crate");
     const double k = w.def().drag, dt = w.def().dt;

@@ -165,8 +165,14 @@ void TestLessonEditorChoice::writtenInTheEditor()
     QCOMPARE(choices.at(1).toObject().value(u"en").toString(),
              QStringLiteral("the one with e = 0.8"));
     QCOMPARE(choices.at(1).toObject().value(u"cs").toString(), QStringLiteral("ten s e = 0,8"));
-    // The right one chosen from a list, by key.
+    // The right one chosen from a list, by key; the list lines up with the question's other
+    // fields (its row is in a form of the choice's own, under the table of options).
     auto* right = child<QComboBox>(ed, QStringLiteral("choiceRight"));
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
+    const auto leftOf = [&ed](const QWidget* w) { return w->mapTo(&ed, QPoint()).x(); };
+    auto* prompt = child<QLineEdit>(ed, QStringLiteral("questionPrompt_en"));
+    QCOMPARE(leftOf(right), leftOf(prompt));
+    QCOMPARE(leftOf(kind), leftOf(prompt));
     right->setFocus();
     QTest::keyClick(right, Qt::Key_Down);
     QCOMPARE(question().value(u"answer").toInt(), 1);

@@ -51,6 +51,8 @@ private slots:
     void fitIsAppliedAsAnUndoableEdit();
     void bounceTimesGiveE();
     void fitRunsInAWorkerAndCancels();
+    void runningFitOfChangedDataIsDropped_data();
+    void runningFitOfChangedDataIsDropped();
     void undeterminedIsSaidNotGuessed();
 
 private:
@@ -192,6 +194,83 @@ void TestMeasureFitWindow::fitRunsInAWorkerAndCancels()
     const double mixed = std::sqrt(fit.values[0].value * 0.4);
     RL_VERIFY_NEAR(mixed, 0.33, fit.values[0].halfWidth95 * 0.4 / (2 * mixed), 0);
     QVERIFY2(panel.fitText().contains(QStringLiteral("dt = ")), qPrintable(panel.fitText()));
+    QVERIFY(panel.applyButton()->isEnabled());
+}
+
+void TestMeasureFitWindow::runningFitOfChangedDataIsDropped_data()
+{
+    QTest::addColumn<QString>("change");
+    QTest::addColumn<QString>("said");
+    QTest::newRow("another file imported")
+        << QStringLiteral("import") << QStringLiteral("another measurement was imported");
+    QTest::newRow("another quantity compared")
+        << QStringLiteral("compare") << QStringLiteral("another body or quantity is compared");
+    QTest::newRow("the scene edited")
+        << QStringLiteral("edit") << QStringLiteral("the scene changed");
+}
+
+void TestMeasureFitWindow::runningFitOfChangedDataIsDropped()
+{
+    // A fit of the box's friction (seconds of work) is running when what it fits changes: its
+    // result, of the data before, is neither shown nor applied, and the panel says why.
+    QFETCH(QString, change);
+    QFETCH(QString, said);
+    MainWindow w;
+    QCOMPARE(w.openScene(sample("box_slide.json"), true), QString());
+    MeasurementSession& session = w.measurement();
+    measure::MeasurementOptions options; // the box's x; its y, on the floor, to switch to
+    options.mapping = {Quantity::Time, Quantity::X, Quantity::Y};
+    QCOMPARE(session.load(sample("box_plain.csv"), options), QString());
+    MeasurementPanel& panel = *session.panel();
+    QComboBox* quantity = nullptr; // the list of quantities, each with its Quantity as data
+    const int y = static_cast<int>(Quantity::Y);
+    for (QComboBox* list : panel.findChildren<QComboBox*>())
+        if (list->findData(y) >= 0)
+            quantity = list;
+    QVERIFY(quantity);
+    const auto compareX = [&] {
+        quantity->setCurrentIndex(quantity->findData(static_cast<int>(Quantity::X)));
+        return panel.quantity() == Quantity::X;
+    };
+    QVERIFY(compareX());
+    panel.setFitChoice(0, false);
+    panel.setFitChoice(1, true);
+    QSignalSpy finished(&session.fitting(), &MeasurementFit::fitFinished);
+    panel.fitButton()->click();
+    QVERIFY(session.fitting().fitRunning());
+    QVERIFY(panel.fitRunning());
+    const int edits = w.document()->undoStack()->count();
+    if (change == QLatin1String("import")) {
+        QCOMPARE(session.load(sample("box_plain.csv"), options), QString());
+    } else if (change == QLatin1String("compare")) {
+        quantity->setCurrentIndex(quantity->findData(y));
+        QCOMPARE(panel.quantity(), Quantity::Y);
+    } else {
+        lessons::Scene edited = w.document()->scene();
+        edited.bodies.back().mass *= 2;
+        w.document()->apply(QStringLiteral("heavier box"), edited);
+    }
+    // Said at once, with Fit back in place of Cancel and nothing to apply.
+    QVERIFY2(panel.fitText().startsWith(QStringLiteral("Fit stopped: ") + said),
+             qPrintable(panel.fitText()));
+    QVERIFY(!panel.fitRunning());
+    QVERIFY(panel.fitProgress()->isHidden() && !panel.fitButton()->isHidden());
+    QVERIFY(!panel.applyButton()->isEnabled());
+    // The worker stops at its next run; nothing it found reaches the panel or the scene.
+    QTRY_VERIFY_WITH_TIMEOUT(!session.fitting().fitRunning(), kFitMs);
+    QCoreApplication::processEvents(); // a result the worker delivered would be shown by now
+    QVERIFY(finished.isEmpty());
+    QVERIFY(!session.fitting().lastFit().ok);
+    QVERIFY2(panel.fitText().startsWith(QStringLiteral("Fit stopped: ") + said),
+             qPrintable(panel.fitText()));
+    QVERIFY(!panel.applyButton()->isEnabled());
+    QVERIFY(!session.fitting().apply().isEmpty());
+    QCOMPARE(w.document()->undoStack()->count(), edits + (change == QLatin1String("edit") ? 1 : 0));
+    // Fit again (x: the box's y on the floor says nothing of its friction): the data compared
+    // now are fitted, and can be applied.
+    QVERIFY(compareX());
+    QVERIFY(clickFit(session));
+    QVERIFY2(session.fitting().lastFit().ok, qPrintable(session.fitting().lastFit().error));
     QVERIFY(panel.applyButton()->isEnabled());
 }
 

@@ -11,11 +11,13 @@
 #include "test_main.h"
 
 #include <QAction>
+#include <QDockWidget>
 #include <QFileInfo>
 #include <QMenu>
 #include <QMenuBar>
 #include <QtTest>
 
+#include <string_view>
 #include <vector>
 
 using namespace rigidlab;
@@ -56,6 +58,27 @@ QStringList mnemonicClashes(MainWindow& window)
     return clashes;
 }
 
+/// The entries of `menu` shown, by their underlined letters, and those without one.
+struct MenuLetters {
+    QMap<QChar, QStringList> letters;
+    QStringList without;
+};
+
+MenuLetters menuLetters(QMenu& menu)
+{
+    emit menu.aboutToShow();
+    MenuLetters out;
+    for (QAction* a : menu.actions()) {
+        if (!a->isVisible() || a->isSeparator())
+            continue;
+        if (const QChar c = test::mnemonicOf(a->text()); !c.isNull())
+            out.letters[c] << a->text();
+        else
+            out.without << a->text();
+    }
+    return out;
+}
+
 } // namespace
 
 class TestMnemonics : public QObject {
@@ -79,6 +102,50 @@ private slots:
         MainWindow w;
         const QStringList clashes = mnemonicClashes(w);
         QVERIFY2(clashes.isEmpty(), qPrintable(clashes.join(u'\n')));
+    }
+
+    // Every entry of the View menu and of its Panels menu has an underlined letter (a dock's
+    // entry, named by its title, had none), and no two of one menu share one: Alt+V and a letter
+    // or two show or hide anything there, in each language, in a lesson too.
+    void viewMenuEntriesHaveLettersOfTheirOwn_data() { menuMnemonicsAreUnique_data(); }
+    void viewMenuEntriesHaveLettersOfTheirOwn()
+    {
+        QFETCH(QString, language);
+        QVERIFY(ui::applyLanguage(language));
+        MainWindow w;
+        auto* view = w.findChild<QMenu*>(QStringLiteral("viewMenu"));
+        auto* panels = w.findChild<QMenu*>(QStringLiteral("panelsMenu"));
+        QVERIFY(view && panels);
+        QCOMPARE(panels->menuAction()->associatedObjects().contains(view), true);
+        for (const char* where : {"at start", "in a lesson"}) {
+            if (where != std::string_view("at start"))
+                QCOMPARE(
+                    w.openLesson(MainWindow::lessonsFolder() + QStringLiteral("/energy_drift.json"),
+                                 true),
+                    QString());
+            QStringList problems;
+            for (QMenu* menu : {view, panels}) {
+                const MenuLetters letters = menuLetters(*menu);
+                for (const QString& text : letters.without)
+                    problems
+                        << QStringLiteral("%1, %2: no letter: %3").arg(where, menu->title(), text);
+                for (const QString& line : test::sharedLetters(letters.letters))
+                    problems << QStringLiteral("%1, %2: %3").arg(where, menu->title(), line);
+            }
+            // Each dock's entry is in Panels, and says its title.
+            int docks = 0;
+            for (QDockWidget* dock : w.findChildren<QDockWidget*>()) {
+                QAction* entry = dock->toggleViewAction();
+                if (!entry->associatedObjects().contains(panels))
+                    continue;
+                ++docks;
+                if (QString(entry->text()).remove(u'&') != dock->windowTitle())
+                    problems << QStringLiteral("%1: %2 for %3")
+                                    .arg(where, entry->text(), dock->windowTitle());
+            }
+            QVERIFY2(problems.isEmpty(), qPrintable(problems.join(u'\n')));
+            QVERIFY2(docks >= 12, qPrintable(QString::number(docks)));
+        }
     }
 
     // The window's own controls (the docks' labels and buttons shown at start) and the menu

@@ -14,7 +14,9 @@
 #include <qcustomplot.h>
 
 #include <QComboBox>
+#include <QLabel>
 #include <QLocale>
+#include <QPushButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -68,6 +70,7 @@ private slots:
     void init() { QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates)); }
     void flatBoxShowsZero();
     void anglesInDegreesOrRadians();
+    void emptyInspectorOffersNothingToActOn();
     void roundingNoiseOfSpeedsIsZero();
     void settingShownWhereItIsMade();
     void iterationsSayWhatTheyMean();
@@ -117,6 +120,41 @@ void TestPanelValues::anglesInDegreesOrRadians()
     QVERIFY2(text.contains(QStringLiteral("\n1 rad/s")), qPrintable(text));
     // The speed beside the components: |(3, 4)| = 5 m/s.
     QVERIFY2(text.contains(QStringLiteral("(3, 4) m/s\n5 m/s\n")), qPrintable(text));
+}
+
+void TestPanelValues::emptyInspectorOffersNothingToActOn()
+{
+    // No body chosen: "–" for each value, and no control beside it that has nothing to act on
+    // (a unit list beside a "–" reads as a value of its own).
+    QTemporaryDir dir;
+    MainWindow w;
+    QVERIFY(openBoxes(w, dir));
+    ui::InspectorPanel& inspector = w.inspector();
+    inspector.setBody(-1);
+    auto* unit = inspector.findChild<QComboBox*>(QStringLiteral("angleUnit"));
+    auto* graph = inspector.findChild<QPushButton*>(QStringLiteral("inspectorGraph"));
+    auto* kg = inspector.findChild<QLabel*>(QStringLiteral("massUnit"));
+    QVERIFY(unit && graph && kg);
+    QVERIFY(!unit->isVisibleTo(&inspector));
+    QVERIFY(!kg->isVisibleTo(&inspector)); // the mass field's unit, not before the "–"
+    QVERIFY(!graph->isEnabled());
+    QVERIFY(!inspector.restitutionField()->isEnabled());
+    // Its place is kept: the rows below stay where they are when a body is chosen.
+    QVERIFY(unit->sizePolicy().retainSizeWhenHidden());
+    // A body chosen: the list is there, named, in the unit chosen before.
+    inspector.setAnglesInDegrees(false);
+    inspector.setBody(2);
+    QVERIFY(unit->isVisibleTo(&inspector));
+    QVERIFY(graph->isEnabled());
+    QVERIFY(!kg->isVisibleTo(&inspector)); // a kinematic body's mass reads "infinite"
+    QCOMPARE(unit->accessibleName(), QStringLiteral("Unit of angles"));
+    QVERIFY2(inspector.text().contains(QStringLiteral("\n0.5 rad\n")),
+             qPrintable(inspector.text()));
+    inspector.setBody(1); // a dynamic one's is a field with its unit
+    QVERIFY(kg->isVisibleTo(&inspector));
+    inspector.setBody(-1);
+    QVERIFY(!unit->isVisibleTo(&inspector));
+    QVERIFY(!inspector.anglesInDegrees());
 }
 
 void TestPanelValues::roundingNoiseOfSpeedsIsZero()

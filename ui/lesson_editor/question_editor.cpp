@@ -49,13 +49,15 @@ bool kindSets(std::size_t kind)
     return lessons::schema::questionKindKeys(kind).contains(jsonKey(keys::kSet));
 }
 
-/// The labels of `form`'s rows and of the forms of its kinds' `pages` (each a row of its own)
-/// as wide as the widest, so that a page's fields line up with the form's.
+/// The labels of `form`'s rows and of the forms in its kinds' `pages` (each a row of its own)
+/// as wide as the widest, so that a page's fields line up with the form's: a page's own form,
+/// and a form in a widget of the page, below a block as wide as the page (the choice's right
+/// option, under the table of options).
 void alignLabels(QFormLayout* form, const std::vector<KindPage*>& pages)
 {
     std::vector<QFormLayout*> forms{form};
     for (KindPage* page : pages)
-        if (auto* pageForm = qobject_cast<QFormLayout*>(page->layout()))
+        for (QFormLayout* pageForm : page->findChildren<QFormLayout*>())
             forms.push_back(pageForm);
     std::vector<QWidget*> labels;
     int widest = 0;

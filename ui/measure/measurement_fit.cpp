@@ -104,11 +104,41 @@ MeasurementFit::MeasurementFit(MeasurementPanel& panel, SceneDocument& document,
     });
 }
 
-void MeasurementFit::clearResult()
+void MeasurementFit::dataChanged(Change change)
 {
+    if (!fitAwaited()) {
+        if (change == Change::Imported) {
+            m_fit = {};
+            m_fitted.clear();
+            m_panel.showFit(QString(), false);
+        }
+        return;
+    }
+    m_fitWorker->discard();
+    m_fitTimer->stop();
     m_fit = {};
     m_fitted.clear();
-    m_panel.showFit(QString(), false);
+    QString why;
+    switch (change) {
+    case Change::Imported:
+        why = tr("Fit stopped: another measurement was imported. Fit again to fit the data "
+                 "compared now.");
+        break;
+    case Change::Compared:
+        why = tr("Fit stopped: another body or quantity is compared. Fit again to fit the data "
+                 "compared now.");
+        break;
+    case Change::Edited:
+        why = tr("Fit stopped: the scene changed. Fit again to fit the scene as it is now.");
+        break;
+    }
+    m_fit.error = why;
+    m_panel.showFit(why, false);
+}
+
+bool MeasurementFit::fitAwaited() const
+{
+    return m_fitTimer->isActive();
 }
 
 void MeasurementFit::forget()

@@ -60,8 +60,17 @@ public:
     const measure::BounceFit& bounceFit() const { return m_bounceFit; }
     QString applyBounceFit();
 
-    /// A new file imported: the last fit's result goes from the panel (a fit running goes on).
-    void clearResult();
+    /// What changes what a fit is of: the series compared and the scene it is fitted in.
+    enum class Change {
+        Imported, ///< another file imported: the series may be another's
+        Compared, ///< another body or quantity chosen in the panel
+        Edited,   ///< the scene edited, undone or started over
+    };
+    /// `change` happened: a fit still running is of the data before it, so its result is
+    /// dropped and the panel says why (it would otherwise show, and Apply, values fitted to
+    /// data no longer shown). A new file imported takes the last fit's result from the panel
+    /// too; the other changes leave a result that ended (Apply puts in what it fitted).
+    void dataChanged(Change change);
     /// The measurement forgotten: a fit running is dropped, and every result goes.
     void forget();
 
@@ -76,6 +85,10 @@ private:
     std::optional<FitWorker::Job> fitJob();
     /// m_fit in the panel.
     void showFitResult();
+    /// A fit started whose result is still wanted: from startFit() until it is shown or
+    /// dropped (its progress is shown meanwhile). The worker may run on a moment after a drop,
+    /// to its next run.
+    bool fitAwaited() const;
     QString applyValues(const std::vector<measure::Parameter>& parameters,
                         const std::vector<double>& values, const QString& what);
 

@@ -78,12 +78,16 @@ MeasurementSession::MeasurementSession(QWidget& window, WorldView& view, SceneDo
     window.setAcceptDrops(true);
     window.installEventFilter(this);
     view.viewport()->installEventFilter(this);
-    connect(m_panel, &MeasurementPanel::choiceChanged, this, &MeasurementSession::compare);
     m_fitting = new MeasurementFit(
         *m_panel, document, [this] { return fitSubject(); }, this);
+    connect(m_panel, &MeasurementPanel::choiceChanged, this, [this] {
+        m_fitting->dataChanged(MeasurementFit::Change::Compared);
+        compare();
+    });
     connect(m_fitting, &MeasurementFit::message, this, &MeasurementSession::message);
     connect(&document, &SceneDocument::sceneReset, this, &MeasurementSession::sceneReset);
     connect(&document, &SceneDocument::sceneChanged, this, [this] {
+        m_fitting->dataChanged(MeasurementFit::Change::Edited);
         updateChoices();
         compare();
     });
@@ -139,7 +143,7 @@ QString MeasurementSession::load(const QString& path, const measure::Measurement
     m_imports.push_back({QFileInfo(path).fileName(), std::move(read.measurement)});
     merge();
     m_measurementLesson = m_lesson;
-    m_fitting->clearResult();
+    m_fitting->dataChanged(MeasurementFit::Change::Imported);
     m_panel->setSource(sourceText());
     updateChoices();
     m_fitting->fitBounceTimes(m_measurement->bounces, m_bouncesFile);

@@ -72,6 +72,7 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     massRow->setContentsMargins(0, 0, 0, 0);
     massRow->addWidget(m_massEdit, 1);
     massRow->addWidget(m_massUnit);
+    m_massUnit->setObjectName(QStringLiteral("massUnit"));
     massRow->addWidget(m_mass, 1);
     m_massEdit->setObjectName(QStringLiteral("mass"));
     m_massEdit->setRange(lessons::limits::kMass, tr("Mass m"));
@@ -99,15 +100,15 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     form->addRow(tr("Kinetic energy"), m_energy);
     form->addRow(schema::label(restitution), m_restitution);
     form->addRow(schema::label(friction), m_friction);
-    auto* graph = new QPushButton(tr("Graph…"), this);
-    graph->setObjectName(QStringLiteral("inspectorGraph"));
-    graph->setToolTip(tr("A graph of this body's quantities against time"));
-    connect(graph, &QPushButton::clicked, this, [this] {
+    m_graph = new QPushButton(tr("Graph…"), this);
+    m_graph->setObjectName(QStringLiteral("inspectorGraph"));
+    m_graph->setToolTip(tr("A graph of this body's quantities against time"));
+    connect(m_graph, &QPushButton::clicked, this, [this] {
         if (m_body >= 0)
             emit graphRequested(m_body);
     });
     labelRows(*form);
-    form->addRow(graph);
+    form->addRow(m_graph);
     m_forces = new ForcesView(this);
     form->addRow(m_forces);
     for (QLabel* l :
@@ -157,11 +158,16 @@ void InspectorPanel::setBody(int id)
 void InspectorPanel::refresh()
 {
     const bool has = m_body >= 0;
+    // Without a body nothing is there to edit, graph or turn into other units: such controls
+    // are disabled, and the angle's unit list, which beside a "–" reads as a value, is hidden.
     m_restitution->setEnabled(has);
     m_friction->setEnabled(has);
+    m_graph->setEnabled(has);
+    m_angleUnit->setVisible(has);
     if (!has) {
         m_name->setText(tr("click a body"));
         m_massEdit->setVisible(false);
+        m_massUnit->setVisible(false); // the mass field's unit: "kg –" read as a value
         m_mass->setVisible(true);
         for (QLabel* l :
              {m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
@@ -251,6 +257,11 @@ QWidget* InspectorPanel::angleRow()
     m_angleUnit->setAccessibleName(tr("Unit of angles"));
     m_angleUnit->setToolTip(tr("Angles and angular velocities in degrees or in radians"));
     m_angleUnit->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    // Hidden while no body is shown, its place kept: the rows below do not jump when a body is
+    // clicked.
+    QSizePolicy keep = m_angleUnit->sizePolicy();
+    keep.setRetainSizeWhenHidden(true);
+    m_angleUnit->setSizePolicy(keep);
     connect(m_angleUnit, &QComboBox::currentIndexChanged, this, &InspectorPanel::refresh);
     auto* row = new QWidget(this);
     auto* layout = new QHBoxLayout(row);

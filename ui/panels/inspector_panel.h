@@ -14,6 +14,7 @@ class QFormLayout;
 
 class QComboBox;
 class QLabel;
+class QPushButton;
 
 namespace rigidlab::ui {
 
@@ -69,7 +70,8 @@ private:
     QLabel* m_energy;
     /// The value labels with their rows' names, for nameValues().
     QList<std::pair<QLabel*, QString>> m_rowNames;
-    ForcesView* m_forces; ///< the body's accumulators force by force, folded
+    ForcesView* m_forces;           ///< the body's accumulators force by force, folded
+    QPushButton* m_graph = nullptr; ///< Graph… of the body shown
     NumberField* m_restitution;
     NumberField* m_friction;
 };

@@ -33,6 +33,8 @@
 #include <QMenuBar>
 #include <QUndoStack>
 
+#include <algorithm>
+
 namespace rigidlab::ui {
 
 namespace {
@@ -137,6 +139,7 @@ void MainWindow::buildEditMenu()
 void MainWindow::buildViewMenu()
 {
     m_viewMenu = menuBar()->addMenu(tr("&View"));
+    m_viewMenu->setObjectName(QStringLiteral("viewMenu"));
     m_viewMenu->addAction(m_actions->fit());
     m_presentAction = named(m_viewMenu->addAction(tr("&Presentation")), "presentation");
     m_presentAction->setCheckable(true);
@@ -149,8 +152,19 @@ void MainWindow::buildViewMenu()
     for (QAction* a : m_actions->overlays())
         m_viewMenu->addAction(a);
     m_viewMenu->addSeparator();
+    // The panels in a menu of their own: with them the View menu had more entries than the
+    // alphabet has letters to underline.
+    QMenu* panels = m_viewMenu->addMenu(tr("Pa&nels"));
+    panels->setObjectName(QStringLiteral("panelsMenu"));
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
-        m_viewMenu->addAction(dock->toggleViewAction());
+        const auto entry =
+            std::find_if(kPanelEntries.begin(), kPanelEntries.end(), [dock](const PanelEntry& e) {
+                return dock->objectName() == QLatin1String(e.dock);
+            });
+        Q_ASSERT(entry != kPanelEntries.end()); // every dock of the window has its entry
+        if (entry != kPanelEntries.end())
+            dock->toggleViewAction()->setText(windowNameText(entry->text));
+        panels->addAction(dock->toggleViewAction());
         focusWhenAsked(*dock);
     }
     m_viewMenu->addAction(m_instruments->graphAction());

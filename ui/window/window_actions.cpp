@@ -36,7 +36,7 @@ WindowActions::WindowActions(QMainWindow& window, SimulationController& controll
         makeRunAction(QStyle::SP_BrowserReload, tr("Reset"), "reset",
                       tr("Back to the start of the scene (%1)").arg(controlKeysText("reset")));
     connect(m_reset, &QAction::triggered, &controller, &SimulationController::reset);
-    m_fit = makeRunAction(-1, tr("Fit scene"), "fit",
+    m_fit = makeRunAction(-1, tr("&Fit scene"), "fit",
                           tr("Zoom to show every body (%1)").arg(controlKeysText("fit")));
     connect(m_fit, &QAction::triggered, &view, &WorldView::fitScene);
     connect(&controller, &SimulationController::runningChanged, this, [this](bool running) {

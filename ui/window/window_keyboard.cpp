@@ -69,7 +69,7 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     connect(m_nextBody, &QAction::triggered, &parts.view, &WorldView::selectNextBody);
     m_previousBody = make(tr("Select previous body"), "selectPreviousBody");
     connect(m_previousBody, &QAction::triggered, &parts.view, &WorldView::selectPreviousBody);
-    m_singleKeys = make(tr("Single-key shortcuts"), "singleKeys");
+    m_singleKeys = make(tr("Single-&key shortcuts"), "singleKeys");
     m_singleKeys->setCheckable(true);
     m_singleKeys->setChecked(true);
     m_singleKeys->setToolTip(tr("Letters, Space and arrows alone act as shortcuts; off, only "
@@ -81,7 +81,7 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     connect(&parts.view, &WorldView::numbersRequested, this, &WindowKeyboard::showNumbers);
     for (std::size_t i = 0; i < kEffects.size(); ++i)
         m_effectsBefore[i] = QApplication::isEffectEnabled(kEffects[i]);
-    m_reducedMotion = make(tr("Reduced motion"), "reducedMotion");
+    m_reducedMotion = make(tr("&Reduced motion"), "reducedMotion");
     m_reducedMotion->setCheckable(true);
     m_reducedMotion->setToolTip(
         tr("Panels, menus, lists and tooltips appear at once, without animation"));
