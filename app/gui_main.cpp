@@ -1,19 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // rigidlab: the lab window. `rigidlab [FILE.json|FILE.rlesson] [--step N]` opens that scene or
 // lesson (at step N), or the welcome scene and the lesson list. `rigidlab --measure-frames N
-// SCENE.json` runs the scene in the window for N frames and prints their times.
+// SCENE.json` runs the scene in the window for N frames and prints their times
+// (ui/window/frame_measurement.h).
 // `rigidlab --screenshots DIR` writes a PNG of the window on every shipped view
-// (ui/screenshots.h). `rigidlab --help` lists the rest.
+// (ui/window/screenshots.h). `rigidlab --help` lists the rest.
 
 #include "common/language.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
+#include "window/frame_measurement.h"
 #include "window/language_switch.h"
 #include "window/main_window.h"
 #include "window/screenshots.h"
 
 #include "format/data_dirs.h"
-#include "format/divergence_message.h"
 #include "format/languages.h"
 #include "format/lesson_pack.h"
 
@@ -28,14 +29,10 @@
 #include <QSize>
 #include <QTextStream>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
-#include <numeric>
 #include <optional>
-#include <vector>
 
 #ifdef Q_OS_WIN
 #include <windows.h>
@@ -44,29 +41,6 @@
 #endif
 
 namespace {
-
-/// Frames run before measuring, so that the first layout and paint do not count.
-constexpr int kWarmUpFrames = 30;
-/// The exit status of a run that diverged, as rigidlab-cli run gives it.
-constexpr int kExitDiverged = 3;
-
-/// Median and 95th percentile of the frame times, the share of physics in them, and the
-/// process's CPU time per frame (what the frames cost on a machine that is not shared).
-void printFrameTimes(std::vector<double> frames, const std::vector<double>& physics,
-                     double cpuMsPerFrame)
-{
-    const double total = std::accumulate(frames.begin(), frames.end(), 0.0);
-    const double inPhysics = std::accumulate(physics.begin(), physics.end(), 0.0);
-    std::sort(frames.begin(), frames.end());
-    const auto at = [&](double q) {
-        return frames[std::min(frames.size() - 1,
-                               static_cast<size_t>(q * static_cast<double>(frames.size())))];
-    };
-    std::printf("%zu frames: median %.2f ms, 95th percentile %.2f ms, longest %.2f ms; "
-                "physics %.1f %% of the frame time (%.2f ms per frame); CPU %.2f ms per frame\n",
-                frames.size(), at(0.5), at(0.95), frames.back(), 100.0 * inPhysics / total,
-                inPhysics / static_cast<double>(frames.size()), cpuMsPerFrame);
-}
 
 /// The translation context of the command line's texts.
 struct CommandLine {
@@ -398,35 +372,6 @@ void openFirstDocument(rigidlab::ui::MainWindow& window, const Options& options)
         window.lessonPlayer().goToStep(options.step - 1);
 }
 
-/// rigidlab --measure-frames: prints the frame times when `frames` frames (after the warm-up)
-/// are measured, and quits.
-void measureFrames(rigidlab::ui::SimulationController& controller, int frames)
-{
-    const std::clock_t cpuStart = std::clock();
-    QObject::connect(
-        &controller, &rigidlab::ui::SimulationController::framesMeasured, qApp,
-        [cpuStart](const std::vector<double>& frameMs, const std::vector<double>& physicsMs) {
-            const double cpuMs = 1e3 * static_cast<double>(std::clock() - cpuStart) /
-                                 CLOCKS_PER_SEC / static_cast<double>(frameMs.size());
-            printFrameTimes({frameMs.begin() + kWarmUpFrames, frameMs.end()},
-                            {physicsMs.begin() + kWarmUpFrames, physicsMs.end()}, cpuMs);
-            QApplication::exit(0);
-        });
-    // A scene that diverges stops the run (the window's banner), and no more frames come:
-    // said, and the exit status is the command line's for a divergence.
-    QObject::connect(&controller, &rigidlab::ui::SimulationController::runningChanged, qApp,
-                     [&controller](bool running) {
-                         const auto& diverged = controller.world().divergence();
-                         if (running || !diverged)
-                             return;
-                         QTextStream(stderr) << "rigidlab: --measure-frames: the scene "
-                                             << rigidlab::lessons::divergenceMessage(*diverged)
-                                             << "; no frames to measure\n";
-                         QApplication::exit(kExitDiverged);
-                     });
-    controller.measureFrames(frames + kWarmUpFrames);
-}
-
 /// The window as the command line asks for it, running unless a lesson waits for Run. Returns
 /// -1 to go on, else the exit status.
 int openWindow(const Options& options)
@@ -452,7 +397,7 @@ int openWindow(const Options& options)
             QTextStream(stderr) << "rigidlab: --measure-frames needs a scene that opens\n";
             return 2;
         }
-        measureFrames(window->controller(), options.measureFrames);
+        rigidlab::ui::measureFrames(window->controller(), options.measureFrames);
     }
     return -1;
 }

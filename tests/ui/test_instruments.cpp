@@ -26,6 +26,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QMouseEvent>
+#include <QSignalSpy>
 #include <QTabWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -84,6 +85,15 @@ void runFor(ui::SimulationController& c, double seconds)
     while (c.time() < end - 1e-12)
         c.advanceClock(1.0 / 60.0);
     c.setRunning(false);
+}
+
+/// The reading labelled `name` for a screen reader, or nullptr.
+QLabel* readingNamed(const InstrumentsPanel& panel, const QString& name)
+{
+    for (QLabel* label : panel.findChildren<QLabel*>())
+        if (label->accessibleName() == name)
+            return label;
+    return nullptr;
 }
 
 /// The leading number of a text in the default locale ("1,414 m" → 1.414).
@@ -159,13 +169,12 @@ private slots:
         // An arrow key nudges the end by a centimetre.
         QTest::keyClick(f[2], Qt::Key_Up);
         RL_VERIFY_NEAR(panel.rulerEnd().x(), 2.51, 1e-12, 0);
-        // The reading is text with a name a screen reader says.
-        const auto labels = panel.findChildren<QLabel*>();
-        const auto reading = std::find_if(labels.begin(), labels.end(), [&](QLabel* l) {
-            return l->accessibleName() == panel.tr("Length measured by the ruler");
-        });
-        QVERIFY(reading != labels.end());
-        QCOMPARE((*reading)->text(), panel.rulerText());
+        // The reading is text with a name a screen reader says, read when the panel shows.
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QLabel* reading = readingNamed(panel, panel.tr("Length measured by the ruler"));
+        QVERIFY(reading);
+        QCOMPARE(reading->text(), panel.rulerText());
     }
 
     void protractorReadsTheIncline()
@@ -276,6 +285,39 @@ private slots:
         // Lying on the floor, the contact force holds the weight up.
         runFor(c, 1.5);
         RL_VERIFY_NEAR(panel.probeReading().contactForce.y(), 10.0, 0.05, 0);
+    }
+
+    void panelReadsOnlyWhatIsInSight()
+    {
+        ui::SimulationController c;
+        c.loadScene(sceneFrom(kFall), QString());
+        InstrumentsPanel panel(c);
+        panel.setProbeBody(0);
+        panel.tabs()->setCurrentIndex(InstrumentsPanel::ProbeTab);
+        QLabel* probe = readingNamed(panel, panel.tr("Probe reading"));
+        QLabel* watch = readingNamed(panel, panel.tr("Time on the stopwatch"));
+        QVERIFY(probe && watch);
+        // Hidden: the world falls, and nothing is read, nothing said changed.
+        QSignalSpy changed(&panel, &InstrumentsPanel::changed);
+        const QString hidden = probe->text();
+        runFor(c, 0.25);
+        QCOMPARE(changed.count(), 0);
+        QCOMPARE(probe->text(), hidden);
+        // Shown: the probe reads the world as it is now, at once.
+        panel.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&panel));
+        QCOMPARE(probe->text(), panel.probeText());
+        QVERIFY2(probe->text() != hidden, qPrintable(hidden));
+        // The open tab follows the world; the stopwatch's tab behind it is not read ...
+        panel.startStopwatch();
+        const QString behind = watch->text();
+        runFor(c, 0.25);
+        QCOMPARE(probe->text(), panel.probeText());
+        QCOMPARE(watch->text(), behind);
+        QVERIFY(panel.stopwatchText() != behind);
+        // ... until it is opened.
+        panel.tabs()->setCurrentIndex(InstrumentsPanel::StopwatchTab);
+        QCOMPARE(watch->text(), panel.stopwatchText());
     }
 
     void sumOfMomentaIsConservedInPlotAndExport()

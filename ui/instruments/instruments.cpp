@@ -8,6 +8,7 @@
 #include "instruments/instruments_panel.h"
 #include "plots/body_series.h"
 #include "plots/plot_exporter.h"
+#include "plots/plot_turns.h"
 #include "plots/plot_widget.h"
 #include "simulation/history.h"
 #include "simulation/run_view.h"
@@ -72,8 +73,8 @@ QString graphTitle(const BodyGraphSpec& spec)
 
 } // namespace
 
-Instruments::Instruments(QMainWindow& window, const RunView& run, WorldView& view)
-    : QObject(&window), m_window(window), m_run(run), m_view(view),
+Instruments::Instruments(QMainWindow& window, const RunView& run, WorldView& view, PlotTurns& turns)
+    : QObject(&window), m_window(window), m_run(run), m_turns(turns), m_view(view),
       m_panel(new InstrumentsPanel(run, &window)), m_item(new InstrumentsItem(*m_panel, run)),
       m_dock(new QDockWidget(&window)), m_graphAction(new QAction(tr("&Graph of bodies…"), this))
 {
@@ -186,7 +187,7 @@ PlotWidget* Instruments::makeGraphPlot(const BodyGraphSpec& spec)
     });
     connect(&m_run, &RunView::rewound, plot, &PlotWidget::rewind);
     connect(&m_run, &RunView::samplesCleared, plot, &PlotWidget::clear);
-    connect(&m_run, &RunView::frameAdvanced, plot, &PlotWidget::frameAdvanced);
+    m_turns.add(plot);
     return plot;
 }
 

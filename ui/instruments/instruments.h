@@ -23,6 +23,7 @@ namespace rigidlab::ui {
 
 class InstrumentsItem;
 class InstrumentsPanel;
+class PlotTurns;
 class PlotWidget;
 class RunView;
 class WorldView;
@@ -30,7 +31,8 @@ class WorldView;
 class Instruments : public QObject {
     Q_OBJECT
 public:
-    Instruments(QMainWindow& window, const RunView& run, WorldView& view);
+    /// Its graphs drain after the run's frames when their turn in `turns` comes.
+    Instruments(QMainWindow& window, const RunView& run, WorldView& view, PlotTurns& turns);
 
     InstrumentsPanel* panel() const { return m_panel; }
     QDockWidget* dock() const { return m_dock; }
@@ -69,6 +71,7 @@ private:
 
     QMainWindow& m_window;
     const RunView& m_run;
+    PlotTurns& m_turns;
     WorldView& m_view;
     InstrumentsPanel* m_panel;
     InstrumentsItem* m_item;

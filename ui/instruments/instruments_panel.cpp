@@ -74,6 +74,7 @@ InstrumentsPanel::InstrumentsPanel(const RunView& run, QWidget* parent)
     m_tabs->addTab(makeProbeTab(), tr("Probe"));
     m_tabs->addTab(makeFrameTab(), tr("Frame"));
     m_tabs->setAccessibleName(tr("Instruments"));
+    connect(m_tabs, &QTabWidget::currentChanged, this, &InstrumentsPanel::refresh);
     connect(&m_run, &RunView::sceneLoaded, this, [this] {
         m_stopwatch.reset();
         fillBodyLists();
@@ -264,14 +265,28 @@ void InstrumentsPanel::pointsTyped()
 
 void InstrumentsPanel::refresh()
 {
-    if (!m_frame) // the tabs are still being made
+    // Only what is in sight is read: a hidden panel (its dock closed or behind another's tab)
+    // reads nothing, the open tab only its own readings (the probe walks all of the world's
+    // contacts, every frame of a running world). Each is read when it comes into sight
+    // (showEvent, the tabs' currentChanged).
+    if (!m_frame || !isVisible()) // the tabs are still being made, or nothing shows
         return;
-    m_rulerReading->setText(rulerText());
-    m_protractorReading->setText(protractorText());
-    m_watchReading->setText(stopwatchText());
-    m_watchState->setText(stopwatchStateText());
-    m_probeReading->setText(probeText());
+    const auto read = [](QLabel* label, const auto& text) {
+        if (label->isVisible())
+            label->setText(text());
+    };
+    read(m_rulerReading, [this] { return rulerText(); });
+    read(m_protractorReading, [this] { return protractorText(); });
+    read(m_watchReading, [this] { return stopwatchText(); });
+    read(m_watchState, [this] { return stopwatchStateText(); });
+    read(m_probeReading, [this] { return probeText(); });
     emit changed();
+}
+
+void InstrumentsPanel::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    refresh();
 }
 
 } // namespace rigidlab::ui

@@ -90,7 +90,8 @@ public slots:
     void startStopwatch();
     void stopStopwatch();
     void resetStopwatch();
-    /// Reads everything again (the world moved, or a setting changed).
+    /// Reads again what is in sight (the world moved, or a setting changed): the open tab's
+    /// readings, nothing while the panel is hidden. Showing the panel or a tab reads it.
     void refresh();
     void copyProbe();
 
@@ -103,6 +104,9 @@ signals:
     void frameChanged(const std::vector<physics::BodyId>& bodies);
     /// The frame tab's button: the momenta of the frame's bodies and their sum, in that frame.
     void frameMomentumRequested(const std::vector<physics::BodyId>& bodies);
+
+protected:
+    void showEvent(QShowEvent* event) override;
 
 private:
     QWidget* makeRulerTab();

@@ -26,22 +26,11 @@ namespace {
 constexpr int kTickCount = 5;
 /// Pixel columns assumed for a plot that was never laid out.
 constexpr int kDefaultColumns = 800;
-/// A frame may come this much early and still count as the refresh interval passed [ms].
-constexpr int kFrameSlackMs = 8;
 
 } // namespace
 
-void PlotWidget::frameAdvanced()
-{
-    m_sinceFrame.start();
-    // At 60 frames per second, every second frame: ~30 Hz.
-    if (!m_sinceDrain.isValid() || m_sinceDrain.elapsed() >= kRefreshIntervalMs - kFrameSlackMs)
-        drain();
-}
-
 int PlotWidget::drain()
 {
-    m_sinceDrain.start();
     const int taken = m_model->takeSamples();
     if (m_model->takeChanged()) {
         updateRanges();

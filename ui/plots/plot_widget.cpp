@@ -140,7 +140,7 @@ void PlotWidget::startRefresh()
     m_timer->setInterval(kRefreshIntervalMs);
     m_timer->setTimerType(Qt::PreciseTimer);
     connect(m_timer, &QTimer::timeout, this, [this] {
-        // While frames come, they drive the drains (frameAdvanced()).
+        // While frames come, they drive the drains (PlotTurns, plot_turns.h).
         if (!m_sinceFrame.isValid() || m_sinceFrame.elapsed() > 2 * kRefreshIntervalMs)
             drain();
     });

@@ -5,10 +5,11 @@
 // holds what is shown. Its PlotExporter (plot_exporter.h) saves it.
 //
 // The widget drains its model's source about 30 times a second, right after a frame of the
-// run when told of frames (frameAdvanced), else on a timer of its own, and replots, queued,
-// only when something changed; the simulation never waits for it. A replot hands each graph
-// its points decimated to the pixel columns (prepareGraphs), and the value axes follow
-// niceRange (plot_range.h): what it costs and what it shows do not depend on rounding noise.
+// run when frames come (its turn among the run's plots: plot_turns.h), else on a timer of its
+// own, and replots, queued, only when something changed; the simulation never waits for it.
+// A replot hands each graph its points decimated to the pixel columns (prepareGraphs), and
+// the value axes follow niceRange (plot_range.h): what it costs and what it shows do not
+// depend on rounding noise.
 //
 // Dragging or zooming the plot pauses following the run (data keeps arriving, and the points
 // shown stay); "Follow" (button, double-click, context menu) resumes it. Going back on the
@@ -140,11 +141,10 @@ public:
 
 public slots:
     void follow() { setFollowing(true); }
-    /// The run advanced a frame: drains now if the refresh interval has passed. A plot told
-    /// of every frame drains right after one, so that its replot does not land on the next
-    /// frame's deadline; its own timer then only stands in while no frames come (a paused
-    /// run).
-    void frameAdvanced();
+    /// A frame of the run came. While frames come, the plot drains right after one, when
+    /// its turn comes (PlotTurns, plot_turns.h), so that its replot does not land on the next
+    /// frame's deadline; its own timer only stands in while no frames come (a paused run).
+    void frameCame() { m_sinceFrame.start(); }
 
 signals:
     void followingChanged(bool following);
@@ -200,8 +200,7 @@ private:
     bool m_captionShown = false;
     QToolButton* m_followButton = nullptr; ///< child, shown while paused
     QTimer* m_timer = nullptr;             ///< child
-    QElapsedTimer m_sinceDrain;            ///< since the last drain
-    QElapsedTimer m_sinceFrame;            ///< since the last frameAdvanced()
+    QElapsedTimer m_sinceFrame;            ///< since the last frameCame()
     std::vector<Curves> m_curves;          ///< per series of the model
     std::vector<bool> m_offScale;          ///< per series, see offScale()
     bool m_offScaleClipping = false;

@@ -50,7 +50,7 @@ QRectF BodiesItem::boundingRect() const
 
 void BodiesItem::paintWhole(QPainter& painter, const BodyItem& body, const QTransform& toDevice)
 {
-    painter.setWorldTransform(body.transform() * toDevice);
+    painter.setWorldTransform(body.frame() * toDevice);
     body.draw(painter);
 }
 
@@ -62,8 +62,11 @@ void BodiesItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option
     painter->setRenderHint(QPainter::Antialiasing, m_antialiased);
     // The selected body comes last, whole, so that no neighbour covers its outline.
     const BodyItem* selected = nullptr;
+    // Dots are placed in device pixels: the painter stays there from one dot to the next, and
+    // goes back only for a body painted whole (a settled pile is thousands of dots in a row).
+    bool inDevicePixels = false;
     for (const BodyItem* body : m_bodies) {
-        const QTransform frame = body->transform(); // the body's frame in the scene [m]
+        const QTransform& frame = body->frame(); // the body's frame in the scene [m]
         const double x = frame.dx(), y = frame.dy(), r = body->reach();
         if (x + r < shown.left() || x - r > shown.right() || y + r < shown.top() ||
             y - r > shown.bottom() || !std::isfinite(x) || !std::isfinite(y))
@@ -71,9 +74,12 @@ void BodiesItem::paint(QPainter* painter, const QStyleOptionGraphicsItem* option
         if (body->selectedBody()) {
             selected = body;
         } else if (const double px = body->drawnSize() * pxPerMetre; px < kDotPx) {
-            painter->resetTransform();
+            if (!inDevicePixels)
+                painter->resetTransform();
+            inDevicePixels = true;
             body->drawDot(*painter, toDevice.map(QPointF(x, y)), px);
         } else {
+            inDevicePixels = false;
             paintWhole(*painter, *body, toDevice);
         }
     }

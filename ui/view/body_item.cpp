@@ -63,15 +63,15 @@ void BodyItem::setPose(double x, double y, double angle)
         return;
     m_pose = {x, y, angle};
     const double c = std::cos(angle), s = std::sin(angle);
-    setTransform(QTransform(c, s, -s, c, x, y));
+    m_frame = QTransform(c, s, -s, c, x, y);
+    setTransform(m_frame);
 }
 
 bool BodyItem::containsScenePoint(const QPointF& p) const
 {
     // Into the body's frame: the shift undone, then the rotation (its inverse, the transpose).
-    const QTransform frame = transform();
-    const double c = frame.m11(), s = frame.m12();
-    const double dx = p.x() - frame.dx(), dy = p.y() - frame.dy();
+    const double c = m_frame.m11(), s = m_frame.m12();
+    const double dx = p.x() - m_frame.dx(), dy = p.y() - m_frame.dy();
     return m_path.contains(QPointF(c * dx + s * dy, -s * dx + c * dy));
 }
 

@@ -12,6 +12,7 @@
 #include <QGraphicsItem>
 #include <QPainterPath>
 #include <QPolygonF>
+#include <QTransform>
 
 #include <array>
 #include <limits>
@@ -31,6 +32,9 @@ public:
     /// Places the item: origin [m] and angle [rad] (counter-clockwise, y up). Its transform()
     /// is then the body's frame in the scene: rotation by the angle, then the origin.
     void setPose(double x, double y, double angle);
+    /// The body's frame in the scene, as setPose made it: transform() without asking
+    /// QGraphicsItem, which composes it anew at each call (5,050 bodies in every paint).
+    const QTransform& frame() const { return m_frame; }
     void setSelectedBody(bool selected);
     bool selectedBody() const { return m_selected; }
     /// The least half-size [m] a moving body is drawn with, so that a small body far zoomed
@@ -79,6 +83,7 @@ private:
     /// The pose last given to setPose: x [m], y [m], angle [rad]; none before the first (NaN
     /// equals nothing).
     std::array<double, 3> m_pose{kNoPose, kNoPose, kNoPose};
+    QTransform m_frame; ///< see frame()
 };
 
 /// The index-th body's colour: the plots' hues, apart with any colour vision and at least

@@ -98,7 +98,7 @@ bool WorldView::contentWithin(const QRectF& area) const
                             physics::BodyId body) {
         const auto i = static_cast<std::size_t>(body);
         if (i >= world.bodies().size() || world.bodies()[i].moves()) {
-            const QTransform& t = item.transform();
+            const QTransform& t = item.frame();
             const double r = item.reach();
             if (area.contains(QRectF(t.dx() - r, t.dy() - r, 2 * r, 2 * r)))
                 return true;

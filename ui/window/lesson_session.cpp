@@ -237,7 +237,7 @@ void LessonSession::makeComparePlots(const lessons::LessonStep& step)
         plot->setMinimumSize(180, 150);
         plot->setTitleShown(false);
         plot->setPresentation(m_parts.layout.presentation());
-        followController(*plot, m_parts.controller);
+        followController(*plot, m_parts.controller, m_parts.plotTurns);
         // Its tab says what the plot's values are (the drift), its row's short title.
         box->addPlot(plot, plotTitle(*row, false));
         m_comparePlots.push_back(plot);

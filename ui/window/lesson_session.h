@@ -29,6 +29,7 @@ class CollisionPanel;
 class ControlPanel;
 class EditTools;
 class LessonPlayer;
+class PlotTurns;
 class PlotWidget;
 class SatPanel;
 class SceneDocument;
@@ -57,6 +58,7 @@ public:
         BouncePanel& bounces;
         CollisionPanel& collision;
         QList<PlotWidget*> plots; ///< the window's own, each named by its row (plot_table.h)
+        PlotTurns& plotTurns;     ///< the run's plots take turns to drain after its frames
     };
     explicit LessonSession(const Parts& parts);
 

@@ -19,6 +19,7 @@
 #include "panels/inspector_panel.h"
 #include "panels/sat_panel.h"
 #include "plots/plot_table.h"
+#include "plots/plot_turns.h"
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
@@ -54,7 +55,7 @@ MainWindow::MainWindow(QWidget* parent)
       m_inspector(new InspectorPanel(*m_controller, this)),
       m_player(new LessonPlayer(*m_controller, this)), m_sat(new SatPanel(*m_controller, this)),
       m_bounces(new BouncePanel(*m_controller, this)),
-      m_collision(new CollisionPanel(*m_controller, this))
+      m_collision(new CollisionPanel(*m_controller, this)), m_plotTurns(new PlotTurns(this))
 {
     m_view->scene()->addItem(m_sat->overlay());
     setWindowTitle(tr("RigidLab"));
@@ -82,7 +83,7 @@ MainWindow::MainWindow(QWidget* parent)
     m_status = new StatusLine(*this, *m_controller, *m_view);
     m_documents = new WindowDocuments(*this, *m_document);
     buildEditor();
-    m_instruments = new Instruments(*this, *m_controller, *m_view);
+    m_instruments = new Instruments(*this, *m_controller, *m_view, *m_plotTurns);
     m_instruments->setGraphPlacer([this](QDockWidget* graph) {
         // A tab beside the plots: the scene keeps its height on a small screen.
         addDockWidget(Qt::RightDockWidgetArea, graph);
@@ -92,14 +93,16 @@ MainWindow::MainWindow(QWidget* parent)
     });
     m_session = new LessonSession({*this, *m_player, *m_controller, *m_document, *m_documents,
                                    *m_editTools, *m_layout, *m_actions, *m_view, *m_controls,
-                                   *m_sat, *m_bounces, *m_collision, m_plots});
+                                   *m_sat, *m_bounces, *m_collision, m_plots, *m_plotTurns});
     m_keyboard = new WindowKeyboard({*this, *m_view, *m_player, *m_inspector, *m_layout});
     buildMenus();
     new DivergenceBanner(*m_controller, m_view);
     wirePanels();
     wireDocument();
+    // Every plot that follows the run drains after its frames, when its turn comes.
+    connect(m_controller, &RunView::frameAdvanced, m_plotTurns, &PlotTurns::frameAdvanced);
     for (PlotWidget* plot : m_plots) {
-        followController(*plot, *m_controller);
+        followController(*plot, *m_controller, *m_plotTurns);
         plot->addMenuAction(m_instruments->graphAction()); // graphs of chosen bodies
     }
     restoreSettings();

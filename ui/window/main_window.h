@@ -46,6 +46,7 @@ class LessonPlayer;
 class LessonSession;
 class MeasurementSession;
 class SatPanel;
+class PlotTurns;
 class PlotWidget;
 class SceneDocument;
 class SimulationController;
@@ -218,6 +219,7 @@ private:
     SatPanel* m_sat;
     BouncePanel* m_bounces;
     CollisionPanel* m_collision;
+    PlotTurns* m_plotTurns;      ///< the plots' drains spread over the frames
     QList<PlotWidget*> m_plots;  ///< each named by its row (plot_table.h)
     bool m_closePending = false; ///< asked to close while a dialog's answer was pending
 

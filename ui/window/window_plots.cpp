@@ -3,6 +3,7 @@
 
 #include "plots/plot_export.h"
 #include "plots/plot_exporter.h"
+#include "plots/plot_turns.h"
 #include "plots/plot_widget.h"
 #include "simulation/history.h"
 #include "simulation/run_view.h"
@@ -34,15 +35,15 @@ void exportPlotDialog(QWidget& window, PlotWidget& plot, const QString& format)
 
 } // namespace
 
-void followController(PlotWidget& plot, const RunView& run)
+void followController(PlotWidget& plot, const RunView& run, PlotTurns& turns)
 {
     // The live samples, cleared with a new scene, cut back on a rewind, marked where a setting
-    // changed, drained after each frame.
+    // changed, drained after the frames when its turn comes.
     plot.model().setSource(&run.recorder().samples());
     QObject::connect(&run, &RunView::samplesCleared, &plot, &PlotWidget::clear);
     QObject::connect(&run, &RunView::rewound, &plot, &PlotWidget::rewind);
     QObject::connect(&run, &RunView::marked, &plot.model(), &PlotModel::addMark);
-    QObject::connect(&run, &RunView::frameAdvanced, &plot, &PlotWidget::frameAdvanced);
+    turns.add(&plot);
     // The plot keeps its points as far back as the timeline goes (going back shows them).
     QObject::connect(&run, &RunView::worldChanged, &plot, [p = &plot, r = &run] {
         p->model().setTimelineStart(r->history().earliestTime());

@@ -12,11 +12,13 @@ class QWidget;
 
 namespace rigidlab::ui {
 
+class PlotTurns;
 class PlotWidget;
 class RunView;
 
-/// Connects a plot to the run's samples and clock.
-void followController(PlotWidget& plot, const RunView& run);
+/// Connects a plot to the run's samples, and lets it take its turns in `turns` (which follows
+/// the run's frames) to drain them.
+void followController(PlotWidget& plot, const RunView& run, PlotTurns& turns);
 
 /// Fills `menu` (File › Export plot) each time it opens with the plots `onScreen` returns:
 /// one submenu per plot under its title, PNG, PDF, SVG and CSV in each. The file dialog is
