@@ -2,7 +2,7 @@
 // The soft step's contacts laid out for the SIMD kernel (fast/soft_kernel.h): coloured so that
 // no two contacts of one colour share a moving body, then packed colour by colour into blocks
 // of lanes. A pile at rest keeps its contacts step after step: then the colouring of the step
-// before is kept and only the lanes are filled again (refillKept). The plain path
+// before is kept and only the lanes are filled again (sameColouring). The plain path
 // (SoftSolver::begin with plain) colours anew every step and puts one contact in each block.
 
 #include "soft_solver.h"
@@ -17,35 +17,30 @@ SoftSolver::ColourKey SoftSolver::colourKey(const Contact& ct) const
             m_active[static_cast<size_t>(ct.b)] != 0};
 }
 
-bool SoftSolver::refillKept(const std::vector<Contact>& contacts, const std::vector<Body>& bodies)
+bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
+                               const std::vector<Body>& bodies) const
 {
     if (contacts.size() != m_keys.size() || bodies.size() != m_keyBodies || m_width != m_keyWidth ||
         m_single != m_keySingle)
         return false;
-    // One pass over the contacts, comparing each key and filling its lane: a large pile's
-    // contacts are megabytes, read once instead of once for the keys and again for the lanes.
-    // A key that differs stops it; buildBlocks() then fills every lane anew, so the lanes
-    // filled before it do not matter. m_slots are in the contacts' order (layBlocks).
-    size_t next = 0; // the first slot not filled yet
-    for (size_t ci = 0; ci < contacts.size(); ++ci) {
-        const Contact& ct = contacts[ci];
-        if (!(colourKey(ct) == m_keys[ci]))
+    for (size_t ci = 0; ci < contacts.size(); ++ci)
+        if (!(colourKey(contacts[ci]) == m_keys[ci]))
             return false;
-        if (next < m_slots.size() && static_cast<size_t>(m_slots[next].contact) == ci) {
-            Slot& slot = m_slots[next++];
-            slot.points = ct.manifold.pointCount;
-            fillLane(ct, slot.block, slot.lane);
-        }
-    }
     return true;
 }
 
 void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies)
 {
-    // The same contacts between the same bodies: the same colours, blocks and lanes as
-    // colouring them again would give; only what the lanes hold has changed.
-    if (!m_plain && refillKept(contacts, bodies))
+    if (!m_plain && sameColouring(contacts, bodies)) {
+        // The same contacts between the same bodies: the same colours, blocks and lanes as
+        // colouring them again would give; only what the lanes hold has changed.
+        for (Slot& slot : m_slots) {
+            const Contact& ct = contacts[static_cast<size_t>(slot.contact)];
+            slot.points = ct.manifold.pointCount;
+            fillLane(ct, slot.block, slot.lane);
+        }
         return;
+    }
 
     // Greedy colouring in the contacts' order (deterministic): each contact takes the lowest
     // colour that neither of its moving bodies has yet. A body that does not move (static,
@@ -102,7 +97,7 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
     int blocks = m_overflow;
     for (int c = 0; c < m_colourCount; ++c)
         blocks += (m_colourSize[static_cast<size_t>(c)] + width - 1) / width;
-    sizeBlocks(blocks);
+    resetBlocks(blocks, static_cast<int>(bodies.size()));
     // First block of each colour, then filled in the contacts' order.
     std::vector<int>& next = m_nextBlock;
     std::vector<int>& lane = m_nextLane;
@@ -120,10 +115,6 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
         m_ranges.push_back(next[static_cast<size_t>(c)]);
     for (int k = 0; k <= m_overflow; ++k)
         m_ranges.push_back(start + k);
-    // Every lane a block stores, also those past the kernel's width (the plain path's one
-    // contact per block, the two-lane kernel's blocks of four), which must be empty.
-    const int stride = m_single ? soft::kSingleBlockWidth : soft::kBlockWidth;
-    m_laneTaken.assign(static_cast<size_t>(blocks) * static_cast<size_t>(stride), 0);
     m_slots.clear();
     m_slots.reserve(m_candidates.size());
     for (size_t k = 0; k < m_candidates.size(); ++k) {
@@ -145,18 +136,9 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
         }
         const Contact& ct = contacts[static_cast<size_t>(ci)];
         slot.points = ct.manifold.pointCount;
-        // In the contacts' order, which reads them one after the other (filled in the blocks'
-        // order instead, reading the contacts out of order, the filling of a base-100 pyramid
-        // took twice as long).
         fillLane(ct, slot.block, slot.lane);
-        m_laneTaken[static_cast<size_t>(slot.block * stride + slot.lane)] = 1;
         m_slots.push_back(slot);
     }
-    // The lanes no contact took are emptied, once: every lane is written once.
-    const int spare = static_cast<int>(bodies.size());
-    for (size_t at = 0; at < m_laneTaken.size(); ++at)
-        if (!m_laneTaken[at])
-            clearLane(static_cast<int>(at) / stride, static_cast<int>(at) % stride, spare);
 }
 
 } // namespace rigidlab::physics

@@ -148,38 +148,19 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     buildBlocks(contacts, bodies);
 }
 
-void SoftSolver::sizeBlocks(int count)
+void SoftSolver::resetBlocks(int count, int spare)
 {
+    const auto reset = [&](auto& blocks) {
+        using BlockType = typename std::remove_reference_t<decltype(blocks)>::value_type;
+        blocks.assign(static_cast<size_t>(count), BlockType{});
+        for (BlockType& k : blocks)
+            for (int lane = 0; lane < BlockType::kWidth; ++lane)
+                k.a[lane] = k.b[lane] = spare;
+    };
     if (m_single)
-        m_singleBlocks.resize(static_cast<size_t>(count));
+        reset(m_singleBlocks);
     else
-        m_blocks.resize(static_cast<size_t>(count));
-}
-
-void SoftSolver::clearLane(int block, int lane, int spare)
-{
-    if (m_single)
-        clearLaneOf(m_singleBlocks[static_cast<size_t>(block)], lane, spare);
-    else
-        clearLaneOf(m_blocks[static_cast<size_t>(block)], lane, spare);
-}
-
-template <typename BlockType> void SoftSolver::clearLaneOf(BlockType& k, int lane, int spare)
-{
-    // What BlockType{} holds in the lane, but for the bodies: the spare one, with zero masses.
-    const auto l = static_cast<size_t>(lane);
-    k.a[l] = k.b[l] = spare;
-    for (auto* field : {k.invIA, k.invIB, k.nx, k.ny, k.friction})
-        field[l] = 0.0;
-    for (auto& p : k.p)
-        clearPointOf(p, l);
-}
-
-template <typename PointType> void SoftSolver::clearPointOf(PointType& p, size_t lane)
-{
-    for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
-                        p.normalImpulse, p.tangentImpulse})
-        field[lane] = 0.0;
+        reset(m_blocks);
 }
 
 void SoftSolver::fillLane(const Contact& ct, int block, int lane)
@@ -234,8 +215,12 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
     }
     // A point the manifold lacks: zero masses, so zero impulses (a block filled again may
     // hold last step's second point here).
-    for (int i = ct.manifold.pointCount; i < 2; ++i)
-        clearPointOf(k.p[i], l);
+    for (int i = ct.manifold.pointCount; i < 2; ++i) {
+        auto& p = k.p[i];
+        for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
+                            p.normalImpulse, p.tangentImpulse})
+            field[l] = 0.0;
+    }
 }
 
 void SoftSolver::integrateVelocities()

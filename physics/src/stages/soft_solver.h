@@ -102,19 +102,13 @@ private:
     void layBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
     /// Whether the colouring of the last buildBlocks() holds for these contacts: the same keys
     /// in the same order, the same bodies and lanes (a pile at rest, step after step). Then
-    /// the blocks only need their lanes filled again, which it does.
-    bool refillKept(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
+    /// the blocks only need their lanes filled again.
+    bool sameColouring(const std::vector<Contact>& contacts, const std::vector<Body>& bodies) const;
     /// Fills lane `lane` of block `block` (of m_blocks, or m_singleBlocks when m_single) with
     /// the contact ct, from the bodies as begin() took them.
     void fillLane(const Contact& ct, int block, int lane);
-    /// `count` blocks for the colouring, their lanes left as they were: layBlocks() fills or
-    /// clears every lane, once (a base-100 pyramid's blocks are 2 MB, cleared first they were
-    /// written twice).
-    void sizeBlocks(int count);
-    /// Empties lane `lane` of block `block`: the spare body `spare`, zero masses and impulses.
-    void clearLane(int block, int lane, int spare);
-    template <typename BlockType> static void clearLaneOf(BlockType& k, int lane, int spare);
-    template <typename PointType> static void clearPointOf(PointType& p, size_t lane);
+    /// Empty blocks for the colouring, every lane on the spare body.
+    void resetBlocks(int count, int spare);
     // The passes over the bodies and blocks of either precision (soft_solver.cpp).
     template <typename BlockType> void fillLaneOf(const Contact& ct, BlockType& k, int lane);
     template <typename State> void integrateVelocitiesOf(std::vector<State>& state);
@@ -211,9 +205,6 @@ private:
     std::vector<int> m_candidates;           ///< contacts with a body to solve
     std::vector<int> m_colourSize;
     std::vector<int> m_nextBlock, m_nextLane; ///< per colour, while the blocks are filled
-    /// Per lane of the blocks (block * the lanes a block stores + lane), whether a contact
-    /// took it, while the blocks are laid.
-    std::vector<char> m_laneTaken;
     int m_colourCount = 0;
     int m_overflow = 0;
     std::vector<ColourKey> m_keys; ///< per contact, of the colouring in m_blocks
