@@ -4,7 +4,8 @@
 // window languages, its texts shown in the language it has, a Check before the run gets there
 // kept as no answer, its hint after a wrong one, handed in, its run stopping at its end time; in
 // the lesson editor it opens with no error, the lab's measured answer shown, its step's scene
-// sent to the window and tried as a student without a dialog, saved and reopened unchanged.
+// sent to the window and tried as a student without a dialog (its copy its own: another
+// editor's try does not replace it), saved and reopened unchanged.
 
 #include "common/language.h"
 #include "first_question.h"
@@ -165,6 +166,20 @@ void TestOneLanguage::editedWithoutADialog()
     const lessons::LessonLoadResult played = lessons::loadLessonFile(triedPath, {window});
     QVERIFY2(played.ok, qPrintable(played.error));
     QCOMPARE(played.lesson.title, title);
+    // Another editor trying its lesson meanwhile (another teacher's, or a test running beside
+    // this one) does not write over the copy this one's student plays.
+    ui::LessonEditor other;
+    const QString otherFile = file.startsWith(u"czech") ? QStringLiteral("english_only.rlesson")
+                                                        : QStringLiteral("czech_only.rlesson");
+    QCOMPARE(other.open(kData + otherFile), QString());
+    QSignalSpy otherTried(&other, &ui::LessonEditor::tryAsStudent);
+    QTest::mouseClick(other.findChild<QPushButton*>(QStringLiteral("tryAsStudent")),
+                      Qt::LeftButton);
+    QCOMPARE(otherTried.count(), 1);
+    QVERIFY2(otherTried.front().front().toString() != triedPath, qPrintable(triedPath));
+    const lessons::LessonLoadResult replayed = lessons::loadLessonFile(triedPath, {window});
+    QVERIFY2(replayed.ok, qPrintable(replayed.error));
+    QCOMPARE(replayed.lesson.title, title);
 
     // Saved, reopened and saved again: the same file.
     QTemporaryDir dir;

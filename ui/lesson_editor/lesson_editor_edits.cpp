@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The lesson editor's window: edits made through its fields and buttons, and what it shows
 // read back from the draft after each one (an edit, an undo, a redo, an open).
-#include "question_kinds/editor_parts.h"
 #include "lesson_editor/lesson_editor.h"
 #include "lesson_editor/question_editor.h"
 #include "lesson_editor/step_checks.h"
 #include "lesson_editor/step_settings_editor.h"
 #include "lesson_player/step_text.h"
+#include "question_kinds/editor_parts.h"
 
 #include "format/data_dirs.h"
 #include "format/scene_schema.h"
@@ -27,6 +27,7 @@
 #include <QPlainTextEdit>
 #include <QSpinBox>
 #include <QStyle>
+#include <QTemporaryDir>
 #include <QUndoStack>
 
 namespace rigidlab::ui {
@@ -204,7 +205,16 @@ void LessonEditor::discardAutosave()
 void LessonEditor::trySelected()
 {
     // The lesson as it is now, unsaved edits too, without touching its file or saved state.
-    const QString path = QDir(QDir::tempPath()).filePath(QStringLiteral("rigidlab-try.rlesson"));
+    // In a folder of this process's own, a new file each time: another RigidLab on the machine
+    // (another teacher's, or a test beside it) never writes over the lesson this one plays, and
+    // the file stays while the window may read it again (a change of language) until the end.
+    static QTemporaryDir tries;
+    static int tried = 0;
+    if (!tries.isValid()) {
+        QMessageBox::warning(this, tr("Try as a student"), tries.errorString());
+        return;
+    }
+    const QString path = tries.filePath(QStringLiteral("try-%1.rlesson").arg(++tried));
     const QString error = m_draft.writeCopy(path);
     if (!error.isEmpty()) {
         QMessageBox::warning(this, tr("Try as a student"), error);
