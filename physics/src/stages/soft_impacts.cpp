@@ -302,15 +302,18 @@ bool isolatedImpact(StepContext& ctx, const Contact& ct, double threshold, Flown
     return true;
 }
 
-bool findIsolatedImpacts(StepContext& ctx, double threshold, Flown flown)
+void countContactsOf(StepContext& ctx, std::vector<std::pair<int, int>>* pairs)
 {
     StepScratch& s = ctx.scratch;
-    s.impacts.clear();
-    s.isolated.clear();
     s.contactsOf.assign(ctx.bodies.size(), 0);
-    for (const Contact& ct : ctx.contacts) {
+    if (pairs)
+        pairs->resize(ctx.contacts.size());
+    for (size_t k = 0; k < ctx.contacts.size(); ++k) {
+        const Contact& ct = ctx.contacts[k];
         ++s.contactsOf[static_cast<size_t>(ct.a)];
         ++s.contactsOf[static_cast<size_t>(ct.b)];
+        if (pairs)
+            (*pairs)[k] = {ct.a, ct.b};
     }
     // A pinned body is not free: its impact is the contact's and the pin's together, which
     // the solvers solve with the pins.
@@ -318,6 +321,16 @@ bool findIsolatedImpacts(StepContext& ctx, double threshold, Flown flown)
         for (const BodyId id : {j.a, j.b})
             if (id != kWorld)
                 s.contactsOf[static_cast<size_t>(id)] += 2;
+}
+
+bool findIsolatedImpacts(StepContext& ctx, double threshold, Flown flown)
+{
+    if (!ctx.plain)
+        return findIsolatedImpactsFast(ctx, threshold, flown);
+    StepScratch& s = ctx.scratch;
+    s.impacts.clear();
+    s.isolated.clear();
+    countContactsOf(ctx, nullptr);
     const auto alone = [&](int id) {
         const auto i = static_cast<size_t>(id);
         return !ctx.bodies[i].isActive() || s.contactsOf[i] == 1;

@@ -81,6 +81,10 @@ struct StepScratch {
     /// has; per contact, whether it is solved as one; the impacts, by contact.
     std::vector<int> contactsOf;
     std::vector<char> isolated;
+    /// The fast path's search (fast/isolated_pairs.cpp): per contact its two bodies, per body
+    /// whether it is alone (does not move, or has one contact and no pin).
+    std::vector<std::pair<int, int>> contactPairs;
+    std::vector<char> alone;
     std::vector<std::pair<int, IsolatedImpact>> impacts;
     /// The joints whose bodies a contact touched this step, with every joint that shares a
     /// body with them (contact_response.cpp).
