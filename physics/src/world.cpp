@@ -48,6 +48,7 @@ void World::step()
             return;
     } else {
         m_contacts.clear();
+        m_contactAnchors.clear();
     }
     // Stage::Islands: a body touched by an awake one wakes, with everything touching it.
     if (ctx.plan.sleep)
@@ -120,6 +121,7 @@ StepContext World::context()
                     .springs = m_springs,
                     .joints = m_joints,
                     .contacts = m_contacts,
+                    .contactAnchors = m_contactAnchors,
                     .moving = m_moving,
                     .slot = m_slot,
                     .jointPairs = m_jointPairs,

@@ -109,11 +109,10 @@ void satOnPlaced(int ia, const Polygon& pa, const Transform& xfA, int ib, const 
 /// points, bit for bit. GCC builds the two-number vectors of the plain form from halves stored
 /// one by one and loads them whole, a load that waits for the stores (a tenth of the base-100
 /// pyramid's step went there).
-bool carriedPoints(const Contact& previous, const AnchorMotion& m, const Body& a, const Body& b,
-                   double margin, std::array<ContactPoint, 2>& points)
+bool carriedPoints(const Contact& previous, const ContactAnchors& k, const AnchorMotion& m,
+                   const Body& a, const Body& b, double margin, std::array<ContactPoint, 2>& points)
 {
     const Manifold& last = previous.manifold;
-    const ContactAnchors& k = previous.anchors;
     const double nx = last.normal.x(), ny = last.normal.y();
     const double sx = m.shift.x(), sy = m.shift.y();
     points = last.points;
@@ -154,14 +153,36 @@ void finishRecycled(const Body& a, const Body& b, const std::array<ContactPoint,
         c.normalImpulse[i] = c.tangentImpulse[i] = 0.0;
 }
 
+/// The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it, from a
+/// copy of `last` (last step's contact of the pair a, b, or null) and its anchors, added to
+/// `lists`; false when the pair is not to be recycled. Its faces are not kept: when it moves
+/// on, the pair gets the whole SAT.
+bool addRecycled(const Contact* last, const Body& a, const Transform& xfA, const Body& b,
+                 const Transform& xfB, double recycle, double margin, ContactLists& lists)
+{
+    if (!last)
+        return false;
+    const ContactAnchors& k = lists.anchorsOf(*last);
+    AnchorMotion motion;
+    std::array<ContactPoint, 2> points;
+    if (!mayRecycle(*last, k, a, xfA, b, xfB, recycle, motion) ||
+        !carriedPoints(*last, k, motion, a, b, margin, points))
+        return false;
+    finishRecycled(a, b, points, lists.contacts.emplace_back(*last));
+    lists.anchors.push_back(k);
+    return true;
+}
+
 } // namespace
 
 void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                      const std::vector<std::pair<int, int>>& pairs, double margin,
-                     const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                     double recycle, NarrowPhaseCache& cache, std::vector<Contact>& contacts)
+                     const std::vector<double>& sweep, double recycle, NarrowPhaseCache& cache,
+                     ContactLists lists)
 {
-    PreviousPairs<Contact> before(previous);
+    std::vector<Contact>& contacts = lists.contacts;
+    std::vector<ContactAnchors>& anchors = lists.anchors;
+    PreviousPairs<Contact> before(lists.previous);
     std::swap(cache.separated, cache.previousSeparated);
     cache.separated.clear();
     PreviousPairs<SeparatedPair> apartBefore(cache.previousSeparated);
@@ -175,7 +196,7 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
         const Body& b = bodies[static_cast<size_t>(ib)];
         if (rests(a) && rests(b)) {
             if (const Contact* kept = before.find(ia, ib)) {
-                contacts.push_back(*kept);
+                lists.keep(*kept);
                 continue;
             }
         }
@@ -184,21 +205,12 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
         const Transform& xfB = xf[static_cast<size_t>(ib)];
         const Polygon* pa = a.shape.asPolygon();
         const Polygon* pb = b.shape.asPolygon();
-        if (pa && pb && recycle > 0.0 && pairMargin == margin) {
-            // The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it,
-            // from a copy of last step's contact. Its faces are not kept: when it moves on, the
-            // pair gets the whole SAT.
-            const Contact* last = before.find(ia, ib);
-            AnchorMotion motion;
-            std::array<ContactPoint, 2> points;
-            if (last && mayRecycle(*last, a, xfA, b, xfB, recycle, motion) &&
-                carriedPoints(*last, motion, a, b, margin, points)) {
-                finishRecycled(a, b, points, contacts.emplace_back(*last));
-                continue;
-            }
-        }
+        if (pa && pb && recycle > 0.0 && pairMargin == margin &&
+            addRecycled(before.find(ia, ib), a, xfA, b, xfB, recycle, margin, lists))
+            continue;
         // Built in place; taken back when the shapes are too far apart.
         Contact& c = contacts.emplace_back();
+        ContactAnchors& k = anchors.emplace_back();
         c.a = ia;
         c.b = ib;
         if (pa && pb) {
@@ -211,7 +223,7 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
                     cache.touching.push_back(*kept);
                     ++cache.reused;
                     if (recycle > 0.0)
-                        keepAnchors(a, *pa, xfA, b, *pb, xfB, c);
+                        keepAnchors(a, *pa, xfA, b, *pb, xfB, c.manifold, k);
                     finishContact(a, b, before, c);
                     continue;
                 }
@@ -220,12 +232,13 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
             satOnPlaced(ia, *pa, xfA, ib, *pb, xfB, pairMargin, now, apartBefore.find(ia, ib),
                         cache, c.manifold);
             if (recycle > 0.0 && c.manifold.pointCount > 0)
-                keepAnchors(a, *pa, xfA, b, *pb, xfB, c);
+                keepAnchors(a, *pa, xfA, b, *pb, xfB, c.manifold, k);
         } else {
             c.manifold = collideShapes(a.shape, xfA, b.shape, xfB, pairMargin);
         }
         if (c.manifold.pointCount == 0) {
             contacts.pop_back();
+            anchors.pop_back();
             continue;
         }
         finishContact(a, b, before, c);

@@ -70,32 +70,32 @@ Rotation turnSince(const Rotation& now, const Rotation& then)
 } // namespace
 
 void keepAnchors(const Body& a, const Polygon& pa, const Transform& xfA, const Body& b,
-                 const Polygon& pb, const Transform& xfB, Contact& c)
+                 const Polygon& pb, const Transform& xfB, const Manifold& manifold,
+                 ContactAnchors& k)
 {
-    ContactAnchors& k = c.anchors;
     k.valid = true;
     k.centres = b.position - a.position;
     k.qA = xfA.q;
     k.qB = xfB.q;
     k.extentA = extent(pa, a.localCenter);
     k.extentB = extent(pb, b.localCenter);
-    for (int i = 0; i < c.manifold.pointCount; ++i) {
-        const ContactPoint& cp = c.manifold.points[static_cast<size_t>(i)];
+    for (int i = 0; i < manifold.pointCount; ++i) {
+        const ContactPoint& cp = manifold.points[static_cast<size_t>(i)];
         k.anchorA[static_cast<size_t>(i)] = cp.point - a.position;
         k.anchorB[static_cast<size_t>(i)] = cp.point - b.position;
         k.separation[static_cast<size_t>(i)] = cp.separation;
     }
 }
 
-bool mayRecycle(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
-                const Transform& xfB, double recycle, AnchorMotion& motion)
+bool mayRecycle(const Contact& previous, const ContactAnchors& k, const Body& a,
+                const Transform& xfA, const Body& b, const Transform& xfB, double recycle,
+                AnchorMotion& motion)
 {
     // After Box2D v3.2 (physics_world.c, b2Collide's contact recycling): the points stay on
     // the bodies, the normal stays, and each separation follows the anchors as the soft
     // step's substeps follow them (soft_kernel.cpp). A vertex moves by at most the shift of the
     // centres plus each body's turn times its extent, so the faces a full test would clip
     // differ from the kept ones by no more than `recycle`.
-    const ContactAnchors& k = previous.anchors;
     if (!k.valid || previous.manifold.pointCount == 0)
         return false;
     motion.dqA = turnSince(xfA.q, k.qA);
@@ -108,14 +108,13 @@ bool mayRecycle(const Contact& previous, const Body& a, const Transform& xfA, co
     return motion.shift.lpNorm<1>() + (k.extentA + k.extentB) * turns < recycle;
 }
 
-bool recycledPoints(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
-                    const Transform& xfB, double recycle, double margin,
-                    std::array<ContactPoint, 2>& points)
+bool recycledPoints(const Contact& previous, const ContactAnchors& k, const Body& a,
+                    const Transform& xfA, const Body& b, const Transform& xfB, double recycle,
+                    double margin, std::array<ContactPoint, 2>& points)
 {
     AnchorMotion m;
-    if (!mayRecycle(previous, a, xfA, b, xfB, recycle, m))
+    if (!mayRecycle(previous, k, a, xfA, b, xfB, recycle, m))
         return false;
-    const ContactAnchors& k = previous.anchors;
     const Manifold& last = previous.manifold;
     points = last.points;
     for (int i = 0; i < last.pointCount; ++i) {
@@ -131,35 +130,36 @@ bool recycledPoints(const Contact& previous, const Body& a, const Transform& xfA
     return true;
 }
 
-bool recycleManifold(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
-                     const Transform& xfB, double recycle, double margin, Contact& c)
+bool recycleManifold(const Contact& previous, const ContactAnchors& kept, const Body& a,
+                     const Transform& xfA, const Body& b, const Transform& xfB, double recycle,
+                     double margin, Contact& c, ContactAnchors& anchors)
 {
     std::array<ContactPoint, 2> points;
-    if (!recycledPoints(previous, a, xfA, b, xfB, recycle, margin, points))
+    if (!recycledPoints(previous, kept, a, xfA, b, xfB, recycle, margin, points))
         return false;
     c.manifold = previous.manifold;
     c.manifold.points = points;
-    c.anchors = previous.anchors;
+    anchors = kept;
     return true;
 }
 
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
-                 const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                 double recycle, std::vector<Contact>& contacts)
+                 const std::vector<double>& sweep, double recycle, ContactLists lists)
 {
-    PreviousPairs<Contact> before(previous);
+    PreviousPairs<Contact> before(lists.previous);
     for (const auto& [ia, ib] : pairs) {
         const Body& a = bodies[static_cast<size_t>(ia)];
         const Body& b = bodies[static_cast<size_t>(ib)];
         // Two resting bodies keep last step's contact.
         if (rests(a) && rests(b)) {
             if (const Contact* kept = before.find(ia, ib)) {
-                contacts.push_back(*kept);
+                lists.keep(*kept);
                 continue;
             }
         }
         Contact c;
+        ContactAnchors anchors;
         c.a = ia;
         c.b = ib;
         const Transform& xfA = xf[static_cast<size_t>(ia)];
@@ -169,15 +169,17 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
         const Polygon* pb = b.shape.asPolygon();
         const bool polygons = recycle > 0.0 && pa && pb;
         const Contact* last = polygons && pairMargin == margin ? before.find(ia, ib) : nullptr;
-        if (!(last && recycleManifold(*last, a, xfA, b, xfB, recycle, margin, c))) {
+        if (!(last && recycleManifold(*last, lists.anchorsOf(*last), a, xfA, b, xfB, recycle,
+                                      margin, c, anchors))) {
             c.manifold = collideShapes(a.shape, xfA, b.shape, xfB, pairMargin);
             if (c.manifold.pointCount == 0)
                 continue; // farther apart than the margin
             if (polygons)
-                keepAnchors(a, *pa, xfA, b, *pb, xfB, c);
+                keepAnchors(a, *pa, xfA, b, *pb, xfB, c.manifold, anchors);
         }
         finishContact(a, b, before, c);
-        contacts.push_back(c);
+        lists.contacts.push_back(c);
+        lists.anchors.push_back(anchors);
     }
 }
 
@@ -185,7 +187,9 @@ void findContacts(StepContext& ctx)
 {
     StepScratch& s = ctx.scratch;
     std::swap(s.previous, ctx.contacts);
+    std::swap(s.previousAnchors, ctx.contactAnchors);
     ctx.contacts.clear();
+    ctx.contactAnchors.clear();
     const double margin = ctx.contactSettings.margin;
 
     StageTimer broad(ctx.profile, Stage::BroadPhase);
@@ -206,14 +210,16 @@ void findContacts(StepContext& ctx)
     // bodies; the impulse solvers' position correction re-evaluates the manifold's faces.
     const double recycle =
         ctx.solver == SolverKind::SoftStep ? ctx.contactSettings.soft.recycleDistance : 0.0;
+    const ContactLists lists{.previous = s.previous,
+                             .previousAnchors = s.previousAnchors,
+                             .contacts = ctx.contacts,
+                             .anchors = ctx.contactAnchors};
     if (ctx.plain) {
         s.narrow.clear();
-        narrowPhase(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, s.previous, recycle,
-                    ctx.contacts);
+        narrowPhase(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, recycle, lists);
     } else {
         s.narrow.reuseFaces = ctx.contactSettings.reuseFaces;
-        narrowPhaseFast(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, s.previous, recycle, s.narrow,
-                        ctx.contacts);
+        narrowPhaseFast(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, recycle, s.narrow, lists);
     }
     ctx.profile.contacts = static_cast<int>(ctx.contacts.size());
     ctx.profile.reusedFaces = s.narrow.reused;

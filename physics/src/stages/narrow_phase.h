@@ -12,6 +12,21 @@
 
 namespace rigidlab::physics {
 
+/// A contact's manifold as the full test of two polygons made it in the soft step, for
+/// recycling it while the two bodies barely move (recycleManifold). Each point is kept as an
+/// anchor on each body; the separation follows their motion. The world keeps one beside each
+/// contact, at the same index (World::m_contactAnchors), out of the public Contact: only the
+/// narrow phase reads them, and every other pass over the contacts reads fewer bytes.
+struct ContactAnchors {
+    bool valid = false;              ///< made by a full test in the soft step
+    Vec2 centres = Vec2::Zero();     ///< B's centre of mass less A's then [m]
+    Rotation qA, qB;                 ///< the bodies' rotations then
+    double extentA = 0, extentB = 0; ///< farthest vertex from each centre of mass [m]
+    std::array<Vec2, 2> anchorA{Vec2::Zero(), Vec2::Zero()}; ///< point less A's centre [m]
+    std::array<Vec2, 2> anchorB{Vec2::Zero(), Vec2::Zero()}; ///< point less B's centre [m]
+    std::array<double, 2> separation{0, 0};                  ///< then [m]
+};
+
 /// A pair of polygons that the SAT found farther apart than their margin, and the axis that
 /// showed it (its index in the SAT's order: A's edges, then B's).
 struct SeparatedPair {
@@ -94,45 +109,70 @@ struct AnchorMotion {
     Rotation dqA, dqB;
     Vec2 shift = Vec2::Zero();
 };
-/// Whether `previous` (last step's contact of the pair a, b) kept its anchors and the pair moved
-/// less than `recycle` against each other since [m] (the centres' shift, plus the turns times
-/// the extents): recycleManifold's first test. The motion into `motion`.
-bool mayRecycle(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
-                const Transform& xfB, double recycle, AnchorMotion& motion);
-/// The points of `previous`'s manifold (last step's contact of the pair a, b) carried to where
-/// a and b are now (recycleManifold's test and points), into `points`; false when the
-/// manifold is not to be recycled.
-bool recycledPoints(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
-                    const Transform& xfB, double recycle, double margin,
-                    std::array<ContactPoint, 2>& points);
-/// The manifold of `previous` (last step's contact of the pair a, b) carried to where a and b
-/// are now, when it was kept (keepAnchors) and they moved less than `recycle` against each
-/// other since [m] (their centres' shift, plus their turns times their extents), and no
-/// point ends farther apart than margin: then into c, with its anchors, and true.
-bool recycleManifold(const Contact& previous, const Body& a, const Transform& xfA, const Body& b,
-                     const Transform& xfB, double recycle, double margin, Contact& c);
-/// Keeps c's manifold of the polygons pa and pb, just made by the full test, for recycling.
+/// Whether `previous` (last step's contact of the pair a, b), with its anchors `kept`, may be
+/// recycled: kept by a full test, and the pair moved less than `recycle` against each other
+/// since [m] (the centres' shift, plus the turns times the extents): recycleManifold's first
+/// test. The motion into `motion`.
+bool mayRecycle(const Contact& previous, const ContactAnchors& kept, const Body& a,
+                const Transform& xfA, const Body& b, const Transform& xfB, double recycle,
+                AnchorMotion& motion);
+/// The points of `previous`'s manifold (last step's contact of the pair a, b, with its anchors
+/// `kept`) carried to where a and b are now (recycleManifold's test and points), into
+/// `points`; false when the manifold is not to be recycled.
+bool recycledPoints(const Contact& previous, const ContactAnchors& kept, const Body& a,
+                    const Transform& xfA, const Body& b, const Transform& xfB, double recycle,
+                    double margin, std::array<ContactPoint, 2>& points);
+/// The manifold of `previous` (last step's contact of the pair a, b, with its anchors `kept`)
+/// carried to where a and b are now, when it was kept (keepAnchors) and they moved less than
+/// `recycle` against each other since [m] (their centres' shift, plus their turns times their
+/// extents), and no point ends farther apart than margin: then into c, its anchors into
+/// `anchors`, and true.
+bool recycleManifold(const Contact& previous, const ContactAnchors& kept, const Body& a,
+                     const Transform& xfA, const Body& b, const Transform& xfB, double recycle,
+                     double margin, Contact& c, ContactAnchors& anchors);
+/// Keeps `manifold`, of the polygons pa and pb just made by the full test, into `anchors` for
+/// recycling.
 void keepAnchors(const Body& a, const Polygon& pa, const Transform& xfA, const Body& b,
-                 const Polygon& pb, const Transform& xfB, Contact& c);
+                 const Polygon& pb, const Transform& xfB, const Manifold& manifold,
+                 ContactAnchors& anchors);
+
+/// Last step's contacts and this step's, each with its anchors at the same index.
+struct ContactLists {
+    const std::vector<Contact>& previous;
+    const std::vector<ContactAnchors>& previousAnchors;
+    std::vector<Contact>& contacts;
+    std::vector<ContactAnchors>& anchors;
+    /// Last step's contact `kept` (found in previous) carried over whole, with its anchors.
+    void keep(const Contact& kept)
+    {
+        contacts.push_back(kept);
+        anchors.push_back(previousAnchors[static_cast<size_t>(&kept - previous.data())]);
+    }
+    /// The anchors of last step's contact `p` (found in previous).
+    const ContactAnchors& anchorsOf(const Contact& p) const
+    {
+        return previousAnchors[static_cast<size_t>(&p - previous.data())];
+    }
+};
 
 /// The contacts of `pairs` (a < b, sorted), in their order: each pair's manifold
 /// (collideShapes, manifold.cpp) for shapes closer than margin plus both bodies' swept margins
 /// (`sweep`, per body [m], empty when no body is fast: continuous.cpp), with the pair's mixed
-/// material and the impulses that `previous` (last step's contacts, sorted) held for the same
-/// features. Two resting bodies (asleep, or asleep on a static one) keep last step's contact.
-/// `xf`: each body's placement now. recycle > 0 (the soft step): two polygons that barely
-/// moved, neither fast, keep last step's manifold (recycleManifold), and every other pair of
-/// polygons keeps its anchors for that. The plain path (narrow_phase.cpp).
+/// material and the impulses that `lists.previous` (last step's contacts, sorted) held for the
+/// same features. Two resting bodies (asleep, or asleep on a static one) keep last step's
+/// contact. `xf`: each body's placement now. recycle > 0 (the soft step): two polygons that
+/// barely moved, neither fast, keep last step's manifold (recycleManifold), and every other
+/// pair of polygons keeps its anchors for that. Into lists.contacts and, at the same index,
+/// lists.anchors. The plain path (narrow_phase.cpp).
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
-                 const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                 double recycle, std::vector<Contact>& contacts);
+                 const std::vector<double>& sweep, double recycle, ContactLists lists);
 /// The same contacts as narrowPhase, bit for bit, keeping work in `cache` from step to step
 /// (fast/kept_faces.cpp; see NarrowPhaseCache).
 void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                      const std::vector<std::pair<int, int>>& pairs, double margin,
-                     const std::vector<double>& sweep, const std::vector<Contact>& previous,
-                     double recycle, NarrowPhaseCache& cache, std::vector<Contact>& contacts);
+                     const std::vector<double>& sweep, double recycle, NarrowPhaseCache& cache,
+                     ContactLists lists);
 
 /// The material of a contact from its two bodies': restitution the larger of the two (a ball
 /// bounces off a rubber floor as the floor makes it), friction the geometric mean (Box2D's

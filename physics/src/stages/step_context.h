@@ -63,6 +63,7 @@ struct StepScratch {
     BroadPhase broadPhase;
     std::vector<std::pair<int, int>> pairs;
     std::vector<Contact> previous;
+    std::vector<ContactAnchors> previousAnchors; ///< previous's, at the same index
     NarrowPhaseCache narrow; ///< saves the narrow phase work, changes no result (narrow_phase.h)
     Eigen::VectorXd q, v;
     Eigen::VectorXd shake; ///< positions before the joint projection (symplectic Euler)
@@ -146,8 +147,9 @@ struct StepContext {
     const std::vector<SpringDef>& springs;
     const std::vector<PinJointDef>& joints;
     std::vector<Contact>& contacts;
-    const std::vector<BodyId>& moving;                  ///< bodies in the ODE state, in id order
-    const std::vector<int>& slot;                       ///< each body's index in moving, or -1
+    std::vector<ContactAnchors>& contactAnchors; ///< contacts', at the same index (narrow_phase.h)
+    const std::vector<BodyId>& moving;           ///< bodies in the ODE state, in id order
+    const std::vector<int>& slot;                ///< each body's index in moving, or -1
     const std::vector<std::pair<int, int>>& jointPairs; ///< pinned body pairs, sorted
     std::vector<double>& sweep;                         ///< per body: extra contact margin [m]
     Integrator& integrator;

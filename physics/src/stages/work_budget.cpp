@@ -30,6 +30,7 @@ bool World::stopWhenCrowded()
     d.integrator = m_def.integrator;
     d.start = m_diagnostics.total;
     m_contacts.clear();
+    m_contactAnchors.clear();
     m_profile.pairs = 0;
     m_divergence = d;
     return true;

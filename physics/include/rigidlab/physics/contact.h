@@ -28,19 +28,6 @@ inline constexpr std::array<SolverKind, 3> kAllSolvers{
 std::string_view solverName(SolverKind kind);
 std::optional<SolverKind> solverFromName(std::string_view name);
 
-/// A contact's manifold as the full test of two polygons made it in the soft step, for
-/// recycling it while the two bodies barely move (narrow_phase.cpp, recycleManifold). Each
-/// point is kept as an anchor on each body; the separation follows their motion.
-struct ContactAnchors {
-    bool valid = false;              ///< made by a full test in the soft step
-    Vec2 centres = Vec2::Zero();     ///< B's centre of mass less A's then [m]
-    Rotation qA, qB;                 ///< the bodies' rotations then
-    double extentA = 0, extentB = 0; ///< farthest vertex from each centre of mass [m]
-    std::array<Vec2, 2> anchorA{Vec2::Zero(), Vec2::Zero()}; ///< point less A's centre [m]
-    std::array<Vec2, 2> anchorB{Vec2::Zero(), Vec2::Zero()}; ///< point less B's centre [m]
-    std::array<double, 2> separation{0, 0};                  ///< then [m]
-};
-
 struct Contact {
     BodyId a = 0, b = 0; ///< a < b
     Manifold manifold;
@@ -51,7 +38,6 @@ struct Contact {
     /// The part of normalImpulse that was a bounce (the collision phase of the sequential
     /// solver): the next step does not warm start it [N s].
     std::array<double, 2> bounceImpulse{0, 0};
-    ContactAnchors anchors; ///< for recycling the manifold (the soft step only)
 };
 
 } // namespace rigidlab::physics

@@ -22,6 +22,9 @@ namespace rigidlab::physics {
 // Private (physics/src/stages/step_context.h): the buffers a step reuses, and its context.
 struct StepScratch;
 struct StepContext;
+// Private (physics/src/stages/narrow_phase.h): what the soft step keeps of a contact's manifold
+// to recycle it.
+struct ContactAnchors;
 
 class World {
 public:
@@ -147,6 +150,9 @@ private:
     std::vector<SpringDef> m_springs;
     std::vector<PinJointDef> m_joints;
     std::vector<Contact> m_contacts;
+    /// Beside each contact, at the same index: its manifold's anchors on the bodies, for
+    /// recycling it (state: a copy steps on with them as the original does).
+    std::vector<ContactAnchors> m_contactAnchors;
     ClonePtr<Integrator> m_integrator;
     std::vector<BodyId> m_moving; ///< bodies in the integrated state, in id order
     std::vector<int> m_slot;      ///< each body's index in m_moving, -1 for static bodies
