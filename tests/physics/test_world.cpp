@@ -101,6 +101,7 @@ private slots:
     void identicalWorldsAreBitIdentical_data();
     void identicalWorldsAreBitIdentical();
     void copiedWorldContinuesIdentically();
+    void touchingPointsCountedWhenAsked();
     // Stacking.
     void boxStackStands_data();
     void boxStackStands();
@@ -364,6 +365,31 @@ void TestWorld::copiedWorldContinuesIdentically()
                      qPrintable(QString("assigned differs at step %1").arg(i)));
         }
     }
+}
+
+// The diagnostics' count of touching points is counted when first asked for after a step: a
+// world asked only now and then, and a copy taken between its asks, report what a world asked
+// after every step reports, however many steps went by unasked.
+void TestWorld::touchingPointsCountedWhenAsked()
+{
+    World everyStep = buildFullScene(SolverKind::SoftStep, IntegratorKind::SymplecticEuler);
+    World seldom = buildFullScene(SolverKind::SoftStep, IntegratorKind::SymplecticEuler);
+    std::vector<int> counts;
+    for (int i = 1; i <= 600; ++i) {
+        everyStep.step();
+        const int expected = everyStep.diagnostics().contacts;
+        seldom.step();
+        if (i % 37 == 0) {
+            const World copied(seldom);
+            QCOMPARE(copied.diagnostics().contacts, expected);
+            QCOMPARE(seldom.diagnostics().contacts, expected);
+            counts.push_back(expected);
+        }
+    }
+    // The count changed between asks: a count kept from an earlier ask would have shown.
+    std::sort(counts.begin(), counts.end());
+    QVERIFY2(std::unique(counts.begin(), counts.end()) - counts.begin() >= 3,
+             qPrintable(QString("counts: %1 to %2").arg(counts.front()).arg(counts.back())));
 }
 
 // ---------------------------------------------------------------------------------------------

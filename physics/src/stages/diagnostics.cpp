@@ -59,11 +59,16 @@ void World::updateDiagnostics()
     m_diagnostics.dragLoss = m_dragLoss;
     m_diagnostics.dampingLoss = m_dampingLoss;
     m_diagnostics.dissipated = m_collisionLoss + m_dragLoss + m_dampingLoss;
-    int count = 0;
-    for (const Contact& c : m_contacts)
-        for (int i = 0; i < c.manifold.pointCount; ++i)
-            count += touches(c, i) ? 1 : 0;
-    m_diagnostics.contacts = count;
+    m_touchingCounted = false;
+}
+
+const Diagnostics& World::diagnostics() const
+{
+    if (!m_touchingCounted) {
+        m_diagnostics.contacts = touchingPoints(m_contacts);
+        m_touchingCounted = true;
+    }
+    return m_diagnostics;
 }
 
 } // namespace rigidlab::physics

@@ -5,6 +5,7 @@
 // is left as it was at the start of the step, so what the user sees is the crowded start.
 
 #include "rigidlab/physics/work_budget.h"
+#include "rigidlab/physics/touching.h"
 #include "rigidlab/physics/world.h"
 
 #include "step_context.h"
@@ -29,6 +30,12 @@ bool World::stopWhenCrowded()
     d.dt = m_def.dt;
     d.integrator = m_def.integrator;
     d.start = m_diagnostics.total;
+    // The diagnostics stay the start's, its touching points too: counted (diagnostics()) from
+    // the contacts the step started with, before they go.
+    if (!m_touchingCounted) {
+        m_diagnostics.contacts = touchingPoints(m_scratch->previous);
+        m_touchingCounted = true;
+    }
     m_contacts.clear();
     m_contactAnchors.clear();
     m_profile.pairs = 0;

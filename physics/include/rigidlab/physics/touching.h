@@ -9,6 +9,8 @@
 
 #include "rigidlab/physics/contact.h"
 
+#include <vector>
+
 namespace rigidlab::physics {
 
 /// Whether point i of the contact touches: its bodies meet or overlap there at the start of
@@ -18,6 +20,16 @@ inline bool touches(const Contact& c, int i)
 {
     const auto k = static_cast<size_t>(i);
     return c.manifold.points[k].separation <= 0.0 || c.normalImpulse[k] > 0.0;
+}
+
+/// How many points of the contacts touch (Diagnostics::contacts).
+inline int touchingPoints(const std::vector<Contact>& contacts)
+{
+    int count = 0;
+    for (const Contact& c : contacts)
+        for (int i = 0; i < c.manifold.pointCount; ++i)
+            count += touches(c, i) ? 1 : 0;
+    return count;
 }
 
 /// Whether any point of the contact touches.

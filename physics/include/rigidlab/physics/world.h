@@ -108,7 +108,10 @@ public:
     long long stepCount() const { return m_steps; }
     /// Force evaluations so far (integrator stages).
     long long evaluations() const { return m_evaluations; }
-    const Diagnostics& diagnostics() const { return m_diagnostics; }
+    /// The energies, momenta and losses of the current state, and its touching contact points
+    /// (Diagnostics::contacts, counted when first asked for after a step: the step itself
+    /// reads only the energies, and a pile of 5,050 boxes took 2.6 % of its step to count them).
+    const Diagnostics& diagnostics() const;
     /// Recomputes the diagnostics for the current state (done by step() already).
     void updateDiagnostics();
 
@@ -164,7 +167,11 @@ private:
     double m_collisionLoss = 0; ///< see Diagnostics [J]
     double m_dragLoss = 0;      ///< see Diagnostics [J]
     double m_dampingLoss = 0;   ///< see Diagnostics [J]
-    Diagnostics m_diagnostics;
+    /// The last diagnostics; their count of touching points is filled in by diagnostics() when
+    /// m_touchingCounted is false (a cache of a function of m_contacts, hence mutable: a copy
+    /// counts the same contacts).
+    mutable Diagnostics m_diagnostics;
+    mutable bool m_touchingCounted = false;
     DivergenceSettings m_divergenceSettings;
     std::optional<Divergence> m_divergence;
     std::optional<double> m_energyStart; ///< total energy before the first step [J]
