@@ -118,6 +118,7 @@ void solveContacts(StepContext& ctx)
         return;
     StageTimer timer(ctx.profile, Stage::ContactSolve);
     StepScratch& s = ctx.scratch;
+    s.bounceHeld = true; // this solver's bounces are written contact by contact
     const double h = ctx.dt;
     s.velocityBefore.resize(ctx.bodies.size());
     s.angularVelocityBefore.resize(ctx.bodies.size());

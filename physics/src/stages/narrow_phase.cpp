@@ -190,6 +190,8 @@ void findContacts(StepContext& ctx)
     std::swap(s.previousAnchors, ctx.contactAnchors);
     ctx.contacts.clear();
     ctx.contactAnchors.clear();
+    s.bounceHeldBefore = s.bounceHeld;
+    s.bounceHeld = false;
     const double margin = ctx.contactSettings.margin;
 
     StageTimer broad(ctx.profile, Stage::BroadPhase);
@@ -213,7 +215,8 @@ void findContacts(StepContext& ctx)
     const ContactLists lists{.previous = s.previous,
                              .previousAnchors = s.previousAnchors,
                              .contacts = ctx.contacts,
-                             .anchors = ctx.contactAnchors};
+                             .anchors = ctx.contactAnchors,
+                             .bounceKept = s.bounceHeld};
     if (ctx.plain) {
         s.narrow.clear();
         narrowPhase(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, recycle, lists);

@@ -142,11 +142,15 @@ struct ContactLists {
     const std::vector<ContactAnchors>& previousAnchors;
     std::vector<Contact>& contacts;
     std::vector<ContactAnchors>& anchors;
+    /// Set when a contact carried over holds a bounce (StepScratch::bounceHeld): a new or
+    /// recycled contact holds none.
+    bool& bounceKept;
     /// Last step's contact `kept` (found in previous) carried over whole, with its anchors.
     void keep(const Contact& kept)
     {
         contacts.push_back(kept);
         anchors.push_back(previousAnchors[static_cast<size_t>(&kept - previous.data())]);
+        bounceKept = bounceKept || kept.bounceImpulse[0] > 0 || kept.bounceImpulse[1] > 0;
     }
     /// The anchors of last step's contact `p` (found in previous).
     const ContactAnchors& anchorsOf(const Contact& p) const

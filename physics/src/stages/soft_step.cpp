@@ -42,26 +42,36 @@
 #include "restitution.h"
 #include "stages.h"
 
+#include <cassert>
 #include <tuple>
 
 namespace rigidlab::physics {
 
 namespace {
 
+/// Whether some contact holds a bounce: the plain form of StepScratch::bounceHeld.
+bool holdsBounce(const std::vector<Contact>& contacts)
+{
+    for (const Contact& ct : contacts)
+        if (ct.bounceImpulse[0] > 0 || ct.bounceImpulse[1] > 0)
+            return true;
+    return false;
+}
+
 /// Whether the collision phase has work: a contact point with restitution that closes within
 /// the step and approaches faster than `threshold` [m/s] at the velocities the forces give it
-/// (only then can a sweep bounce anything), or a contact that bounced in the step before (its
-/// carried impulse holds the bounce, which must not warm start the substeps). A contact
-/// without restitution only stops its approach, as the substeps' speculative contact does;
-/// in a pyramid of 5050 boxes one such contact somewhere made every step pay for the phase.
-bool collisionsToSolve(const std::vector<Contact>& contacts, const std::vector<Contact>& previous,
+/// (only then can a sweep bounce anything), or a contact that bounced in the step before
+/// (`bouncedBefore`: its carried impulse holds the bounce, which must not warm start the
+/// substeps). A contact without restitution only stops its approach, as the substeps'
+/// speculative contact does; in a pyramid of 5050 boxes one such contact somewhere made every
+/// step pay for the phase.
+bool collisionsToSolve(const std::vector<Contact>& contacts, bool bouncedBefore,
                        const std::vector<Body>& bodies, const std::vector<Vec2>& acceleration,
                        const std::vector<double>& angularAcceleration, double dt, double h,
                        double threshold, bool anyRestitution)
 {
-    for (const Contact& ct : previous)
-        if (ct.bounceImpulse[0] > 0 || ct.bounceImpulse[1] > 0)
-            return true;
+    if (bouncedBefore)
+        return true;
     if (!anyRestitution) // a contact's restitution is the larger of its two bodies'
         return false;
     const auto velocity = [&](int id, Vec2& v, double& w) {
@@ -175,8 +185,12 @@ double softCollisions(StepContext& ctx, double threshold)
         return 0.0;
     const bool exact =
         findIsolatedImpacts(ctx, threshold, ctx.plan.smooth ? Flown::ToSmoothEnd : Flown::ByForces);
+    // Last step's bounces: the plain path reads every contact of the step before, the fast path
+    // the flag kept as they were written.
+    assert(s.bounceHeldBefore || !holdsBounce(s.previous));
+    const bool bouncedBefore = ctx.plain ? holdsBounce(s.previous) : s.bounceHeldBefore;
     const bool general =
-        collisionsToSolve(ctx.contacts, s.previous, ctx.bodies, s.acceleration,
+        collisionsToSolve(ctx.contacts, bouncedBefore, ctx.bodies, s.acceleration,
                           s.angularAcceleration, h, ctx.h, threshold, s.anyRestitution);
     if (!exact && !general)
         return 0.0;
@@ -192,6 +206,8 @@ double softCollisions(StepContext& ctx, double threshold)
     }
     // When each body's velocity changed: the collision phase's moments, and the isolated
     // impacts' (their bodies have no other contact, so no bounce of the phase).
+    if (bounced || exact)
+        s.bounceHeld = true;
     if (bounced)
         s.impactFraction = s.solver.impactFractions();
     else if (exact)

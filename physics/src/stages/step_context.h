@@ -94,6 +94,13 @@ struct StepScratch {
     std::vector<double> impactFraction;
     /// Some body has restitution this step (else no contact has, and none can bounce).
     bool anyRestitution = true;
+    /// Whether some contact may hold a bounce (Contact::bounceImpulse > 0); false only when
+    /// none does. Kept where bounces are written or carried (the narrow phase's kept contacts,
+    /// the collision phases, the isolated impacts), so that the soft step's collision phase
+    /// does not read every contact of the step before for it (soft_step.cpp). True in a fresh
+    /// scratch: a copied world's contacts may hold one.
+    bool bounceHeld = true;
+    bool bounceHeldBefore = true; ///< bounceHeld at the end of the step before (findContacts())
     /// Each body's applied load over its mass and inertia [m/s^2] and [rad/s^2] (the direct
     /// integration's and the soft step's).
     std::vector<Vec2> acceleration;
