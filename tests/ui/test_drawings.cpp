@@ -85,7 +85,7 @@ void TestDrawings::errorPanelOpensOnASmallScreen()
     w.fitToScreen(screen);
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    QDockWidget* dock = w.dock(QStringLiteral("errorDock"));
+    QDockWidget* dock = w.dock(QStringLiteral("error"));
     QVERIFY(dock);
     dock->show();
     QCoreApplication::processEvents();
@@ -111,7 +111,7 @@ void TestDrawings::errorPanelOpensOnASmallScreen()
     // On a roomy screen it stays in the bottom dock area.
     MainWindow roomy;
     roomy.fitToScreen(QRect(0, 0, 1920, 1080));
-    QVERIFY(!roomy.dock(QStringLiteral("errorDock"))->isFloating());
+    QVERIFY(!roomy.dock(QStringLiteral("error"))->isFloating());
 }
 
 void TestDrawings::orderLabelsApartAndInWords()

@@ -3,6 +3,7 @@
 #include "window/main_window.h"
 
 #include "common/display_names.h"
+#include "common/dock_names.h"
 #include "common/shortcuts.h"
 #include "editor/scene_document.h"
 #include "instruments/instruments.h"
@@ -32,8 +33,6 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QUndoStack>
-
-#include <algorithm>
 
 namespace rigidlab::ui {
 
@@ -157,13 +156,11 @@ void MainWindow::buildViewMenu()
     QMenu* panels = m_viewMenu->addMenu(tr("Pa&nels"));
     panels->setObjectName(QStringLiteral("panelsMenu"));
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
-        const auto entry =
-            std::find_if(kPanelEntries.begin(), kPanelEntries.end(), [dock](const PanelEntry& e) {
-                return dock->objectName() == QLatin1String(e.dock);
-            });
-        Q_ASSERT(entry != kPanelEntries.end()); // every dock of the window has its entry
-        if (entry != kPanelEntries.end())
-            dock->toggleViewAction()->setText(windowNameText(entry->text));
+        // Titled from its entry (nameDock): the entry is the title with its underlined letter.
+        const PanelEntry* entry = panelEntry(dock->objectName());
+        Q_ASSERT(entry); // every dock of the window has its entry
+        if (entry)
+            dock->toggleViewAction()->setText(panelEntryText(*entry));
         panels->addAction(dock->toggleViewAction());
         focusWhenAsked(*dock);
     }
