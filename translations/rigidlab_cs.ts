@@ -3782,10 +3782,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>&amp;Graf těles…</translation>
     </message>
     <message>
-        <source>Instruments</source>
-        <translation>Měřidla</translation>
-    </message>
-    <message>
         <source>Plot a quantity of chosen bodies against time</source>
         <translation>Graf veličiny vybraných těles v závislosti na čase</translation>
     </message>
@@ -4807,10 +4803,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Editor scény</translation>
     </message>
     <message>
-        <source>Properties</source>
-        <translation>Vlastnosti</translation>
-    </message>
-    <message>
         <source>RigidLab[*]</source>
         <translation>RigidLab[*]</translation>
     </message>
@@ -4853,10 +4845,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Every edit since the scene was opened; click one to go back to it (the later ones stay, to redo)</source>
         <translation>Všechny úpravy od otevření scény; kliknutím na některou se k&#xa0;ní vrátíte (pozdější zůstanou pro opakování)</translation>
-    </message>
-    <message>
-        <source>History</source>
-        <translation>Historie</translation>
     </message>
     <message>
         <source>History of edits</source>
@@ -4905,10 +4893,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Separating axis test</source>
         <translation>Test oddělující osy</translation>
-    </message>
-    <message>
-        <source>Axis test</source>
-        <translation>Test os</translation>
     </message>
     <message>
         <source>Bounces</source>
@@ -5443,13 +5427,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
-    <name>rigidlab::ui::PlotShelf</name>
-    <message>
-        <source>Plots</source>
-        <translation>Grafy</translation>
-    </message>
-</context>
-<context>
     <name>rigidlab::ui::PlotExporter</name>
     <message>
         <source>Export plot</source>
@@ -5458,6 +5435,13 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Export failed</source>
         <translation>Export se nezdařil</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::PlotShelf</name>
+    <message>
+        <source>Plots</source>
+        <translation>Grafy</translation>
     </message>
 </context>
 <context>
@@ -6331,21 +6315,6 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>&amp;Reduced motion</source>
         <translation>O&amp;mezit pohyb</translation>
-    </message>
-</context>
-<context>
-    <name>rigidlab::ui::WindowLayout</name>
-    <message>
-        <source>Error vs run time</source>
-        <translation>Chyba vs. doba běhu</translation>
-    </message>
-    <message>
-        <source>Side by side</source>
-        <translation>Vedle sebe</translation>
-    </message>
-    <message>
-        <source>Lesson</source>
-        <translation>Lekce</translation>
     </message>
 </context>
 <context>
