@@ -199,13 +199,15 @@ void MainWindow::showControlsHelp()
 
 QString MainWindow::controlsHelpText() const
 {
-    // The overlays' keys from their own table, kOverlayNames.
-    QList<ControlHelpRow> overlays;
+    // The overlays' keys from their own table, kOverlayNames, and Tab from the scene to a
+    // step's answer.
+    QList<ControlHelpRow> extra;
     for (const OverlayNames& info : kOverlayNames)
-        overlays.push_back(
+        extra.push_back(
             {{QKeySequence(QString::fromLatin1(info.shortcut))},
              tr("Show or hide: %1").arg(windowNameText(info.text).remove(QLatin1Char('&')))});
-    return controlsHelpHtml(overlays);
+    extra << WindowKeyboard::helpRows();
+    return controlsHelpHtml(extra);
 }
 
 } // namespace rigidlab::ui
