@@ -34,6 +34,7 @@
 #include <QToolBar>
 #include <QtTest>
 
+#include "language_rows.h"
 #include "test_files.h"
 #include "test_main.h"
 
@@ -147,12 +148,7 @@ private slots:
     // Every dock is named once, from its entry in the docks' table: its title is the entry's
     // text without the mark of its underlined letter, in each language; its object name (which
     // a saved layout finds it by) is its own, "…Dock" once; and each entry has its dock.
-    void everyDockIsTitledFromItsEntry_data()
-    {
-        QTest::addColumn<QString>("language");
-        QTest::newRow("en") << QStringLiteral("en");
-        QTest::newRow("cs") << QStringLiteral("cs");
-    }
+    void everyDockIsTitledFromItsEntry_data() { test::addLanguageRows(); }
     void everyDockIsTitledFromItsEntry()
     {
         QFETCH(QString, language);
