@@ -3680,10 +3680,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Kinetická energie</translation>
     </message>
     <message>
-        <source>click a body</source>
-        <translation>klikněte na těleso</translation>
-    </message>
-    <message>
         <source>%1 kg</source>
         <translation>%1&#xa0;kg</translation>
     </message>
@@ -3765,6 +3761,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>%1: %2</source>
         <comment>a value named by its row</comment>
         <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>No body selected</source>
+        <translation>Není vybráno žádné těleso</translation>
+    </message>
+    <message>
+        <source>Click a body in the scene, or select one there with ]</source>
+        <translation>Klikněte na těleso ve scéně nebo ho tam vyberte klávesou ]</translation>
     </message>
 </context>
 <context>
@@ -6315,6 +6319,10 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>&amp;Reduced motion</source>
         <translation>O&amp;mezit pohyb</translation>
+    </message>
+    <message>
+        <source>On the scene, in a lesson step that asks something: go to its answer</source>
+        <translation>Na scéně, v&#xa0;kroku lekce, který se na něco ptá: přejít na jeho odpověď</translation>
     </message>
 </context>
 <context>
