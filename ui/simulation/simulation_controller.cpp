@@ -116,6 +116,19 @@ void SimulationController::watch(const std::vector<lessons::Measure>& measures)
     m_watch.watch(measures, m_world);
 }
 
+void SimulationController::setEventsShown(bool shown)
+{
+    m_watch.setShown(shown);
+    if (!m_watch.measuring() || !m_watch.behind())
+        return;
+    // Bit for bit the run's states (history.h), so the same events as if measured all along:
+    // from the start while the history reaches back to it.
+    physics::World replayed = m_history.restore(m_history.earliest());
+    m_watch.measureFrom(replayed);
+    m_history.replay(replayed, m_world.stepCount(),
+                     [this](const physics::World& w) { m_watch.replayed(w); });
+}
+
 Pose SimulationController::drawPose(physics::BodyId id) const
 {
     const physics::Body& b = m_world.body(id);

@@ -74,6 +74,10 @@ public:
 
     // What a lesson measures while the world runs (bounces, collisions, timed values).
     void watch(const std::vector<lessons::Measure>& measures);
+    /// Whether a table shows the bounces or the collisions (then they are measured in a scene
+    /// that is no lesson step too: LessonWatch). A table opened after steps went unmeasured
+    /// gets them measured again, from the history's replay of the run.
+    void setEventsShown(bool shown);
 
     bool isRunning() const override { return m_running; }
     double timeScale() const override { return m_timeScale; }
