@@ -520,9 +520,17 @@ void TestTables::eventsMeasuredWhileATableReads()
     for (std::size_t i = 0; i < n; ++i)
         QVERIFY(watch.measurements().bounces(static_cast<physics::BodyId>(i)).empty());
 
+    // The run so far measured again a slice per turn of the event loop, here one step a slice,
+    // while the present steps on, unmeasured until the replay reaches it.
+    c.setEventReplaySlice(0);
     bounces->toggleViewAction()->trigger(); // View › Panels › Bounces
     QVERIFY(watch.measuring());
+    QVERIFY(!c.eventsUpToDate()); // 1,000 steps to walk again, one walked in this turn
+    stepBoth(20);
+    QVERIFY(!c.eventsUpToDate());
+    QTRY_VERIFY_WITH_TIMEOUT(c.eventsUpToDate(), 120000);
     QCOMPARE(eventsDiffer(watch.measurements(), all, n), QString());
+    c.setEventReplaySlice(5);
     stepBoth(300); // measured as the run goes
     QCOMPARE(eventsDiffer(watch.measurements(), all, n), QString());
 
@@ -531,6 +539,7 @@ void TestTables::eventsMeasuredWhileATableReads()
     stepBoth(400);
     collision->toggleViewAction()->trigger(); // the other table reads them too
     QVERIFY(watch.measuring());
+    QTRY_VERIFY_WITH_TIMEOUT(c.eventsUpToDate(), 120000);
     QCOMPARE(eventsDiffer(watch.measurements(), all, n), QString());
 }
 

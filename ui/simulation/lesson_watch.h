@@ -42,13 +42,11 @@ public:
     /// the measurements then lack events until measured again (measureFrom()).
     bool behind() const { return m_behind; }
     /// Measures again from `start`, an earlier state of this run (the history's): the caller
-    /// then gives replayed() every later state up to the present.
-    void measureFrom(const physics::World& start)
-    {
-        m_measurements.reset(start, m_watched);
-        m_behind = false;
-    }
+    /// then gives replayed() every later state up to the present, and caughtUp() there. The
+    /// present's steps meanwhile go unmeasured (behind() stays true).
+    void measureFrom(const physics::World& start) { m_measurements.reset(start, m_watched); }
     void replayed(const physics::World& world) { m_measurements.observe(world); }
+    void caughtUp() { m_behind = false; }
     /// Watches, from `world` (the run's start) on, whether a body leaves the stage; off:
     /// never. Kept when another scene is watched (a lesson's steps all watch it).
     void watchStage(bool on, const physics::World& world)
@@ -67,7 +65,7 @@ public:
     /// After every step of `world`.
     void observe(const physics::World& world)
     {
-        if (measuring())
+        if (measuring() && !m_behind)
             m_measurements.observe(world);
         else
             m_behind = true;
