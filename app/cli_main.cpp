@@ -16,6 +16,7 @@
 #include "format/scene_loader.h"
 #include "rigidlab/physics/contact.h"
 #include "rigidlab/physics/integrator.h"
+#include "rigidlab/physics/settings.h"
 #include "rigidlab/version.h"
 #include "run/scene_run.h"
 
@@ -68,6 +69,10 @@ Commands:
       --steps N              steps per run (default 600: 10 s at 1/60 s)
       --runs K               runs; the table gives the median (default 3)
       --export FILE.json     write the scene as a scene file instead of running it
+      --solver NAME          @SOLVERS@:
+                             the runs' (default sequential-impulse, the table's RigidLab
+                             row) or the one --export's file names (default soft-step,
+                             the lab's own, which the window runs)
   sat PAIR.json              the separating axis test on polygon pairs, as JSON
   lesson LESSON.json         a lesson's steps, with their plots, panels and questions
                              (LESSON.json or a lesson in one file, FILE.rlesson)
@@ -349,7 +354,7 @@ int commandSat(const QStringList& words)
 int commandBench(const QStringList& words)
 {
     CommandLine args(QStringLiteral("bench"));
-    for (const char* name : {"scene", "steps", "runs", "export"})
+    for (const char* name : {"scene", "steps", "runs", "export", "solver"})
         args.addValue(QLatin1StringView(name));
     QString error;
     if (!args.parse(words))
@@ -385,11 +390,22 @@ int commandBench(const QStringList& words)
         }
         names = {scene->toStdString()};
     }
-    const bench::RigidLabBenchSettings settings;
+    std::optional<physics::SolverKind> solver;
+    if (const auto name = args.value(QStringLiteral("solver"))) {
+        solver = physics::solverFromName(name->toStdString());
+        if (!solver)
+            return usageError(args.command(),
+                              QStringLiteral("--solver: unknown solver \"%1\" (expected %2)")
+                                  .arg(*name, solverNames()));
+    }
+    bench::RigidLabBenchSettings settings;
     if (const auto path = args.value(QStringLiteral("export"))) {
         if (names.size() != 1) {
             return usageError(args.command(), QStringLiteral("--export: name one --scene"));
         }
+        // The file is for the window, which runs a scene with the solver it names: by default
+        // the one the lab runs a scene in, not the table's sequential impulses.
+        settings.solver = solver.value_or(physics::WorldDef{}.solver);
         const std::string json =
             bench::benchSceneJson(*bench::makeBenchScene(names.front()), settings);
         const QString error = lessons::writeFileAtomically(
@@ -398,6 +414,8 @@ int commandBench(const QStringList& words)
             return outputError(error);
         return kExitOk;
     }
+    if (solver)
+        settings.solver = *solver;
     const auto engine = bench::makeRigidLabBenchEngine(settings);
     std::vector<bench::BenchResult> results;
     for (const std::string& name : names) {

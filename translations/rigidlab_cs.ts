@@ -3680,10 +3680,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Kinetická energie</translation>
     </message>
     <message>
-        <source>click a body</source>
-        <translation>klikněte na těleso</translation>
-    </message>
-    <message>
         <source>%1 kg</source>
         <translation>%1&#xa0;kg</translation>
     </message>
@@ -3766,6 +3762,14 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <comment>a value named by its row</comment>
         <translation>%1: %2</translation>
     </message>
+    <message>
+        <source>No body selected</source>
+        <translation>Není vybráno žádné těleso</translation>
+    </message>
+    <message>
+        <source>Click a body in the scene, or select one there with ]</source>
+        <translation>Klikněte na těleso ve scéně nebo ho tam vyberte klávesou ]</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::Instruments</name>
@@ -3780,10 +3784,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>&amp;Graph of bodies…</source>
         <translation>&amp;Graf těles…</translation>
-    </message>
-    <message>
-        <source>Instruments</source>
-        <translation>Měřidla</translation>
     </message>
     <message>
         <source>Plot a quantity of chosen bodies against time</source>
@@ -4807,10 +4807,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <translation>Editor scény</translation>
     </message>
     <message>
-        <source>Properties</source>
-        <translation>Vlastnosti</translation>
-    </message>
-    <message>
         <source>RigidLab[*]</source>
         <translation>RigidLab[*]</translation>
     </message>
@@ -4853,10 +4849,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Every edit since the scene was opened; click one to go back to it (the later ones stay, to redo)</source>
         <translation>Všechny úpravy od otevření scény; kliknutím na některou se k&#xa0;ní vrátíte (pozdější zůstanou pro opakování)</translation>
-    </message>
-    <message>
-        <source>History</source>
-        <translation>Historie</translation>
     </message>
     <message>
         <source>History of edits</source>
@@ -4905,10 +4897,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Separating axis test</source>
         <translation>Test oddělující osy</translation>
-    </message>
-    <message>
-        <source>Axis test</source>
-        <translation>Test os</translation>
     </message>
     <message>
         <source>Bounces</source>
@@ -5443,13 +5431,6 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     </message>
 </context>
 <context>
-    <name>rigidlab::ui::PlotShelf</name>
-    <message>
-        <source>Plots</source>
-        <translation>Grafy</translation>
-    </message>
-</context>
-<context>
     <name>rigidlab::ui::PlotExporter</name>
     <message>
         <source>Export plot</source>
@@ -5458,6 +5439,13 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
     <message>
         <source>Export failed</source>
         <translation>Export se nezdařil</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::PlotShelf</name>
+    <message>
+        <source>Plots</source>
+        <translation>Grafy</translation>
     </message>
 </context>
 <context>
@@ -6332,20 +6320,9 @@ B&#xa0;%3 … %4</translation>
         <source>&amp;Reduced motion</source>
         <translation>O&amp;mezit pohyb</translation>
     </message>
-</context>
-<context>
-    <name>rigidlab::ui::WindowLayout</name>
     <message>
-        <source>Error vs run time</source>
-        <translation>Chyba vs. doba běhu</translation>
-    </message>
-    <message>
-        <source>Side by side</source>
-        <translation>Vedle sebe</translation>
-    </message>
-    <message>
-        <source>Lesson</source>
-        <translation>Lekce</translation>
+        <source>On the scene, in a lesson step that asks something: go to its answer</source>
+        <translation>Na scéně, v&#xa0;kroku lekce, který se na něco ptá: přejít na jeho odpověď</translation>
     </message>
 </context>
 <context>

@@ -64,5 +64,7 @@ private slots:
     void satArray();
     void runProfile();
     void bench();
+    void benchExportNamesTheSolver_data();
+    void benchExportNamesTheSolver();
     void lessonsListsOwn();
 };

@@ -4,6 +4,9 @@
 
 #include "test_cli.h"
 
+#include "rigidlab/physics/contact.h"
+#include "rigidlab/physics/settings.h"
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -13,6 +16,16 @@
 using namespace rigidlab::test::cli;
 using rigidlab::test::CliRun;
 using rigidlab::test::runCli;
+
+namespace {
+
+QString solverText(rigidlab::physics::SolverKind kind)
+{
+    const std::string_view name = rigidlab::physics::solverName(kind);
+    return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+}
+
+} // namespace
 
 void TestCli::runWritesHeaders()
 {
@@ -226,4 +239,41 @@ void TestCli::bench()
     QCOMPARE(runCli({QStringLiteral("bench"), QStringLiteral("--scene"), QStringLiteral("nope")})
                  .exitCode,
              2);
+}
+
+// bench --export writes the solver a scene file names for the window: the lab's default, the
+// one a scene that names none runs with, unless --solver names another; an unknown one is
+// refused, naming the flag.
+void TestCli::benchExportNamesTheSolver_data()
+{
+    using rigidlab::physics::SolverKind;
+    QTest::addColumn<QStringList>("flags");
+    QTest::addColumn<QString>("written");
+    QTest::newRow("default") << QStringList{} << solverText(rigidlab::physics::WorldDef{}.solver);
+    for (const SolverKind kind : rigidlab::physics::kAllSolvers)
+        QTest::newRow(qPrintable(solverText(kind)))
+            << QStringList{QStringLiteral("--solver"), solverText(kind)} << solverText(kind);
+}
+
+void TestCli::benchExportNamesTheSolver()
+{
+    QFETCH(QStringList, flags);
+    QFETCH(QString, written);
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("pyramid.json"));
+    const CliRun run =
+        runCli(QStringList{QStringLiteral("bench"), QStringLiteral("--scene"),
+                           QStringLiteral("pyramid-20"), QStringLiteral("--export"), path} +
+               flags);
+    QCOMPARE(run.exitCode, 0);
+    const QJsonObject world =
+        QJsonDocument::fromJson(readAll(path)).object().value(QStringLiteral("world")).toObject();
+    QCOMPARE(world.value(QStringLiteral("solver")).toString(), written);
+    if (!flags.isEmpty())
+        return;
+    const CliRun wrong = runCli(QStringList{
+        QStringLiteral("bench"), QStringLiteral("--scene"), QStringLiteral("pyramid-20"),
+        QStringLiteral("--export"), path, QStringLiteral("--solver"), QStringLiteral("nope")});
+    QCOMPARE(wrong.exitCode, 2);
+    QVERIFY2(wrong.err.contains("--solver: unknown solver \"nope\""), wrong.err.constData());
 }

@@ -8,6 +8,7 @@
 
 #include "accessible_tree.h"
 #include "common/focus_ring.h"
+#include "common/language.h"
 #include "common/theme.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
@@ -37,6 +38,7 @@
 #include <QtTest>
 #include <qcustomplot.h>
 
+#include "language_rows.h"
 #include "projector_window.h"
 #include "test_main.h"
 
@@ -270,6 +272,70 @@ private slots:
                      qPrintable(label->text() + QStringLiteral(" → ") + name));
         }
         QVERIFY2(values >= 8, qPrintable(QString::number(values)));
+    }
+
+    /// Without a body the inspector says so once, "No body selected", reached by Tab, rather
+    /// than a row of dashes each read as "Angle θ: –"; with one, on a 1024×768 projector in
+    /// each language, every value stands beside its label (the angle's had its unit list beside
+    /// it, and went below its label).
+    void inspectorSaysOnceThatNoBodyIsSelected_data() { test::addLanguageRows(); }
+    void inspectorSaysOnceThatNoBodyIsSelected()
+    {
+        QFETCH(QString, language);
+        QVERIFY(ui::applyLanguage(language));
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(w.openLesson(shippedLessonFile("rotation_inertia.json"), true), QString());
+        QCoreApplication::processEvents();
+        ui::InspectorPanel& inspector = w.inspector();
+        QVERIFY(inspector.isVisible());
+        inspector.setBody(-1);
+        QStringList shown;
+        for (const QWidget* child : inspector.findChildren<QWidget*>())
+            if (child->isVisibleTo(&inspector)) {
+                const QAccessibleInterface* a =
+                    QAccessible::queryAccessibleInterface(const_cast<QWidget*>(child));
+                shown << (a ? a->text(QAccessible::Name) : QString());
+            }
+        const QString none =
+            QCoreApplication::translate("rigidlab::ui::InspectorPanel", "No body selected");
+        QVERIFY2(shown == QStringList{none}, qPrintable(shown.join(QStringLiteral(" | "))));
+        auto* noBody = inspector.findChild<QLabel*>(QStringLiteral("noBody"));
+        QVERIFY(noBody && (noBody->focusPolicy() & Qt::TabFocus));
+
+        int body = -1;
+        for (int i = 0; i < static_cast<int>(w.controller().world().bodies().size()); ++i)
+            if (w.controller().world().body(i).isDynamic())
+                body = i;
+        QVERIFY(body >= 0);
+        inspector.setBody(body);
+        QCoreApplication::processEvents();
+        QVERIFY(!noBody->isVisible());
+        // The angle and the list of its units, each beside its label (a label's buddy).
+        const auto unit = inspector.findChild<QWidget*>(QStringLiteral("angleUnit"));
+        const QString angle =
+            QCoreApplication::translate("rigidlab::ui::InspectorPanel", "Angle θ");
+        QStringList wrapped;
+        int checked = 0;
+        for (const QLabel* label : inspector.findChildren<QLabel*>()) {
+            if (!label->buddy() || (label->text() != angle && label->buddy() != unit))
+                continue;
+            ++checked;
+            const QRect l(label->mapTo(&inspector, QPoint()), label->size());
+            const QRect f(label->buddy()->mapTo(&inspector, QPoint()), label->buddy()->size());
+            if (f.top() >= l.bottom() || f.left() <= l.right())
+                wrapped << QStringLiteral("%1 at (%2, %3) %4×%5, its value at (%6, %7)")
+                               .arg(label->text())
+                               .arg(l.x())
+                               .arg(l.y())
+                               .arg(l.width())
+                               .arg(l.height())
+                               .arg(f.x())
+                               .arg(f.y());
+        }
+        QCOMPARE(checked, 2);
+        QVERIFY2(wrapped.isEmpty(), qPrintable(wrapped.join(u'\n')));
+        QVERIFY(ui::applyLanguage(QStringLiteral("en")));
     }
 
     /// View › Reduced motion: the docks, menus, lists and tooltips no longer animate; the

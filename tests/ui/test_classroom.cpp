@@ -360,7 +360,7 @@ private slots:
             const int below = legend.back().bottom();
             const auto* puck = w.view().itemFor(0);
             QVERIFY(puck);
-            const QRect drawn = w.view().mapFromScene(puck->sceneBoundingRect()).boundingRect();
+            const QRect drawn = w.view().mapFromScene(puck->sceneBox()).boundingRect();
             QVERIFY2(drawn.top() > below && w.view().viewport()->rect().contains(drawn),
                      qPrintable(
                          where +

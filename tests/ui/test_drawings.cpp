@@ -85,7 +85,7 @@ void TestDrawings::errorPanelOpensOnASmallScreen()
     w.fitToScreen(screen);
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    QDockWidget* dock = w.dock(QStringLiteral("errorDock"));
+    QDockWidget* dock = w.dock(QStringLiteral("error"));
     QVERIFY(dock);
     dock->show();
     QCoreApplication::processEvents();
@@ -111,7 +111,7 @@ void TestDrawings::errorPanelOpensOnASmallScreen()
     // On a roomy screen it stays in the bottom dock area.
     MainWindow roomy;
     roomy.fitToScreen(QRect(0, 0, 1920, 1080));
-    QVERIFY(!roomy.dock(QStringLiteral("errorDock"))->isFloating());
+    QVERIFY(!roomy.dock(QStringLiteral("error"))->isFloating());
 }
 
 void TestDrawings::orderLabelsApartAndInWords()
@@ -189,7 +189,7 @@ void TestDrawings::ghostWorldsDrawTheirFloor()
                 floor = floor || !b.moves();
                 // Drawn where the compared world is: shifted by its offset.
                 const physics::Vec2 at = b.origin() + (v + 1) * c.variantOffset();
-                const QPointF origin = item->mapToScene(QPointF(0, 0)); // the body's origin
+                const QPointF origin = item->frame().map(QPointF(0, 0)); // the body's origin
                 RL_VERIFY_NEAR(origin.x(), at.x(), 1e-9, 0);
                 RL_VERIFY_NEAR(origin.y(), at.y(), 1e-9, 0);
             }
@@ -199,11 +199,11 @@ void TestDrawings::ghostWorldsDrawTheirFloor()
         std::vector<std::vector<QRectF>> statics(static_cast<std::size_t>(c.variantCount()) + 1);
         for (std::size_t i = 0; i < c.world().bodies().size(); ++i)
             if (!c.world().bodies()[i].moves())
-                statics[0].push_back(w.view().itemFor(static_cast<int>(i))->sceneBoundingRect());
+                statics[0].push_back(w.view().itemFor(static_cast<int>(i))->sceneBox());
         for (int v = 0; v < c.variantCount(); ++v)
             for (const ui::BodyItem* item : w.view().ghostItems(v))
                 if (!c.variant(v).body(item->bodyId()).moves())
-                    statics[static_cast<std::size_t>(v) + 1].push_back(item->sceneBoundingRect());
+                    statics[static_cast<std::size_t>(v) + 1].push_back(item->sceneBox());
         for (std::size_t a = 0; a < statics.size(); ++a)
             for (std::size_t b = a + 1; b < statics.size(); ++b)
                 for (const QRectF& ra : statics[a])
@@ -364,8 +364,7 @@ void TestDrawings::bodiesLargeEnoughAfterTheStep()
     std::size_t inside = 0;
     for (const ui::BodyItem* item : moving) {
         QVERIFY(item);
-        const QRectF onScreen =
-            w.view().mapFromScene(item->sceneBoundingRect()).boundingRect().toRectF();
+        const QRectF onScreen = w.view().mapFromScene(item->sceneBox()).boundingRect().toRectF();
         QVERIFY2(std::min(onScreen.width(), onScreen.height()) >= minPx - 1,
                  qPrintable(QStringLiteral("body %1: %2 × %3 px")
                                 .arg(item->bodyId())

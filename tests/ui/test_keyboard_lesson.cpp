@@ -18,6 +18,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QTemporaryDir>
 #include <QTextBrowser>
 #include <QTimer>
@@ -219,6 +220,65 @@ private slots:
 
         QVERIFY2(watch.stops() > 10, qPrintable(QString::number(watch.stops())));
         QVERIFY2(watch.hidden().isEmpty(), qPrintable(watch.hidden().join(QLatin1Char('\n'))));
+    }
+
+    // From the scene, one Tab reaches the step's answer (a box, or the question's options),
+    // not the list of lessons and the step's text first; Tab from there goes on to the step's
+    // own controls, Shift+Tab back to its text. Help › Controls says so. On a step that asks
+    // nothing, Tab from the scene goes where it always goes.
+    void tabFromTheSceneReachesTheAnswer_data()
+    {
+        QTest::addColumn<QString>("lesson");
+        QTest::newRow("typed answers") << QStringLiteral("restitution.json");
+        QTest::newRow("options") << QStringLiteral("tunnelling.json");
+    }
+    void tabFromTheSceneReachesTheAnswer()
+    {
+        QFETCH(QString, lesson);
+        MainWindow w;
+        QVERIFY(showActiveOnProjector(w));
+        QCOMPARE(w.openLesson(test::shippedLessonFile(qPrintable(lesson)), true), QString());
+        ui::LessonPlayer& player = w.lessonPlayer();
+        auto* questions = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
+        QVERIFY(questions);
+        int asked = 0;
+        const int steps = static_cast<int>(player.lesson()->steps.size());
+        for (int s = 0; s < steps; ++s) {
+            player.goToStep(s);
+            QCoreApplication::processEvents();
+            const QString where = QStringLiteral("%1, step %2").arg(lesson).arg(s + 1);
+            const bool asks =
+                !player.lesson()->steps[static_cast<std::size_t>(s)].questions.empty();
+            key(w, Qt::Key_F6);
+            QCOMPARE(QApplication::focusWidget(), &w.view());
+            key(w, Qt::Key_Tab); // one press
+            QWidget* answer = QApplication::focusWidget();
+            QVERIFY2(answer, qPrintable(where));
+            if (!asks) {
+                QVERIFY2(!questions->isAncestorOf(answer), qPrintable(where));
+                continue;
+            }
+            ++asked;
+            QVERIFY2(answer == player.firstAnswer() && questions->isAncestorOf(answer) &&
+                         (qobject_cast<QLineEdit*>(answer) || qobject_cast<QRadioButton*>(answer)),
+                     qPrintable(where + QStringLiteral(": the focus on ") +
+                                QLatin1String(answer->metaObject()->className()) + u' ' +
+                                answer->objectName()));
+            key(w, Qt::Key_Tab);
+            QWidget* next = QApplication::focusWidget();
+            QVERIFY2(next && next != answer && next != &w.view() &&
+                         answer->parentWidget()->parentWidget()->isAncestorOf(next),
+                     qPrintable(where + QStringLiteral(": Tab from the answer to ") +
+                                (next ? QLatin1String(next->metaObject()->className())
+                                      : QLatin1String("nothing"))));
+            key(w, Qt::Key_Tab, Qt::ShiftModifier);
+            QCOMPARE(QApplication::focusWidget(), answer);
+            key(w, Qt::Key_Tab, Qt::ShiftModifier);
+            QVERIFY2(qobject_cast<QTextBrowser*>(QApplication::focusWidget()), qPrintable(where));
+        }
+        QVERIFY(asked > 0);
+        QVERIFY(w.controlsHelpText().contains(
+            QKeySequence(Qt::Key_Tab).toString(QKeySequence::NativeText).toHtmlEscaped()));
     }
 };
 

@@ -151,7 +151,7 @@ private slots:
             QVERIFY2(!items.empty(), qPrintable(where + QStringLiteral(": nothing moves")));
             for (const auto& [name, item] : items) {
                 QVERIFY(item);
-                const QRectF drawn = item->sceneBoundingRect();
+                const QRectF drawn = item->sceneBox();
                 if (!shown.contains(drawn))
                     outside << (QStringLiteral("%1 at t = %2 s: %3 drawn at (%4, %5)–(%6, %7) m, "
                                                "the view shows (%8, %9)–(%10, %11) m")

@@ -75,6 +75,7 @@ private slots:
     void framesCarryAtMostTwoOfThreeReplots();
     void onePlotDrainsEveryIntervalOrLater();
     void aClosedPlotLeaves();
+    void eachOwnerStaggersItsOwnPlots();
 };
 
 void TestPlotTurns::framesCarryAtMostTwoOfThreeReplots()
@@ -171,6 +172,29 @@ void TestPlotTurns::aClosedPlotLeaves()
     QCOMPARE(turns.count(), 1);
     // The one left drains in the next frame: room for one of one.
     QCOMPARE(turns.frame(17), std::vector<PlotWidget*>{b->plot.get()});
+}
+
+// The plots' own timers (while no frames come) start a third of the interval apart within
+// one window's turns, whatever other windows or tests made plots before: a second window's
+// first plot starts at once, as the first window's did.
+void TestPlotTurns::eachOwnerStaggersItsOwnPlots()
+{
+    const auto plotOf = [](PlotTurns& turns) {
+        auto p = std::make_unique<SourcedPlot>(makeWorldPlot(kPlotRows[0], nullptr));
+        turns.add(p->plot.get());
+        return p;
+    };
+    constexpr int third = PlotWidget::kRefreshIntervalMs / 3;
+    PlotTurns first;
+    std::vector<std::unique_ptr<SourcedPlot>> plots;
+    for (int i = 0; i < 4; ++i)
+        plots.push_back(plotOf(first));
+    for (int i = 0; i < 4; ++i)
+        QCOMPARE(plots[static_cast<std::size_t>(i)]->plot->refreshPhaseMs(), (i % 3) * third);
+    PlotTurns second;
+    const auto other = plotOf(second);
+    QCOMPARE(other->plot->refreshPhaseMs(), 0);
+    QCOMPARE(plotOf(second)->plot->refreshPhaseMs(), third);
 }
 
 RIGIDLAB_TEST_MAIN(TestPlotTurns)

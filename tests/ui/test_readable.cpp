@@ -119,7 +119,7 @@ void stoppedWorldIsShown(MainWindow& w, int world)
     for (const ui::BodyItem* item : w.view().ghostItems(world - 1)) {
         if (!c.variant(world - 1).body(item->bodyId()).moves())
             continue;
-        const QRect drawn = w.view().mapFromScene(item->sceneBoundingRect()).boundingRect();
+        const QRect drawn = w.view().mapFromScene(item->sceneBox()).boundingRect();
         QVERIFY2(w.view().viewport()->rect().contains(drawn),
                  qPrintable(QStringLiteral("world %1 body at %2, %3")
                                 .arg(world)

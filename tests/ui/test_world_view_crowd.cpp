@@ -68,7 +68,7 @@ struct Crowd {
     /// Where body `id` is drawn, in viewport pixels.
     QRect drawn(int id) const
     {
-        return view.mapFromScene(view.itemFor(id)->sceneBoundingRect()).boundingRect();
+        return view.mapFromScene(view.itemFor(id)->sceneBox()).boundingRect();
     }
 };
 
@@ -125,7 +125,7 @@ void TestWorldViewCrowd::followsABodyThatLeaves()
             controller.stepForward();
         view.syncPoses();
         const QRectF shown = view.mapToScene(view.viewport()->rect()).boundingRect();
-        const QRectF runner = view.itemFor(0)->sceneBoundingRect();
+        const QRectF runner = view.itemFor(0)->sceneBox();
         QVERIFY2(shown.contains(runner),
                  qPrintable(QStringLiteral("frame %1: the runner at %2, %3 out of %4..%5")
                                 .arg(frame)
@@ -212,7 +212,7 @@ void TestWorldViewCrowd::drawsTheSelectionOverTheCrowd()
     // In a crowd the bodies keep their true size (1 m), smaller than the readable 10 px here.
     const double metre = crowd.view.zoom();
     QVERIFY2(metre < 9, qPrintable(QStringLiteral("%1 px per metre").arg(metre)));
-    QCOMPARE(crowd.view.itemFor(id)->sceneBoundingRect().width(), 1.0);
+    QCOMPARE(crowd.view.itemFor(id)->sceneBox().width(), 1.0);
 
     const physics::Vec2 c = crowd.controller.world().body(id).position;
     QCOMPARE(crowd.view.bodyAt(crowd.at(c.x() + 0.7, c.y())), neighbour);
@@ -223,7 +223,7 @@ void TestWorldViewCrowd::drawsTheSelectionOverTheCrowd()
     const QRect selected = crowd.drawn(id);
     QVERIFY2(std::min(selected.width(), selected.height()) >= 9,
              qPrintable(QStringLiteral("%1 × %2 px").arg(selected.width()).arg(selected.height())));
-    QCOMPARE(crowd.view.itemFor(neighbour)->sceneBoundingRect().width(), 1.0);
+    QCOMPARE(crowd.view.itemFor(neighbour)->sceneBox().width(), 1.0);
     // Where the grown body covers its neighbour, a click picks the one drawn on top.
     const QPoint overNeighbour = crowd.at(c.x() + 0.7, c.y());
     QVERIFY(crowd.view.itemFor(id)->containsScenePoint(crowd.view.mapToScene(overNeighbour)));

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // The one table of what the window calls the panels a lesson step may show: the lesson
-// format's name (lessons/format/lesson.h), the full title and the short one (a dock's tab on a
-// narrow column). The window titles its docks from it and the lesson editor lists a step's
-// panels from it, so the two say the same (the plots' titles are their rows', plot_table.h).
-// Here in common/ because both the window and the lesson editor include it.
+// format's name (lessons/format/lesson.h) and the full title. The window gives its docks the
+// full title as their tooltip and the lesson editor lists a step's panels by it, so the two say
+// the same (the plots' titles are their rows', plot_table.h; a dock's short title, on its tab,
+// is its entry's, dock_names.h). Here in common/ because both the window and the lesson editor
+// include it.
 
 #include "format/lesson.h"
 
@@ -20,9 +21,8 @@ namespace rigidlab::ui {
 inline constexpr const char* kStepPartContext = "rigidlab::ui::MainWindow";
 
 struct StepPartName {
-    const char* name;       ///< the lesson format's name (and the dock's object name)
-    const char* title;      ///< the full title, for translate() in kStepPartContext
-    const char* shortTitle; ///< short, on a dock's tab; likewise
+    const char* name;  ///< the lesson format's name (and the dock's object name)
+    const char* title; ///< the full title, for translate() in kStepPartContext
 };
 
 /// A title from the tables below in the window's language.
@@ -33,19 +33,15 @@ inline QString stepPartText(const char* text)
 
 /// In the order of lessons::kStepPanelNames.
 inline constexpr std::array<StepPartName, 6> kStepPanelTitles{{
-    {lessons::kStepPanelNames[0].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Controls"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Controls")},
-    {lessons::kStepPanelNames[1].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Inspector"),
+    {lessons::kStepPanelNames[0].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Controls")},
+    {lessons::kStepPanelNames[1].data(),
      QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Inspector")},
     {lessons::kStepPanelNames[2].data(),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Separating axis test"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Axis test")},
-    {lessons::kStepPanelNames[3].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Bounces"),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Bounces")},
-    {lessons::kStepPanelNames[4].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Collision"),
+     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Separating axis test")},
+    {lessons::kStepPanelNames[3].data(), QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Bounces")},
+    {lessons::kStepPanelNames[4].data(),
      QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Collision")},
     {lessons::kStepPanelNames[5].data(),
-     QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Measurement"),
      QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Measurement")},
 }};
 

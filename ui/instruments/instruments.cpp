@@ -2,6 +2,7 @@
 #include "instruments/instruments.h"
 
 #include "common/accessible_names.h"
+#include "common/dock_names.h"
 #include "common/shortcuts.h"
 
 #include "instruments/instruments_item.h"
@@ -78,8 +79,7 @@ Instruments::Instruments(QMainWindow& window, const RunView& run, WorldView& vie
       m_panel(new InstrumentsPanel(run, &window)), m_item(new InstrumentsItem(*m_panel, run)),
       m_dock(new QDockWidget(&window)), m_graphAction(new QAction(tr("&Graph of bodies…"), this))
 {
-    m_dock->setWindowTitle(tr("Instruments"));
-    m_dock->setObjectName(QStringLiteral("instrumentsDock"));
+    nameDock(*m_dock, QStringLiteral("instrumentsDock"));
     // A panel that scrolls, as the window's others do: its tabs' least height added to a
     // lesson step's panels and plots held the window taller than a 1024×768 projector.
     auto* scroll = new QScrollArea(m_dock);

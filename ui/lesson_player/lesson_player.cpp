@@ -391,6 +391,11 @@ void LessonPlayer::orderTabs()
         setTabOrder(order[k - 1], order[k]);
 }
 
+QWidget* LessonPlayer::firstAnswer() const
+{
+    return m_questions->firstAnswer();
+}
+
 void LessonPlayer::replayRecordedTries()
 {
     // Copied: judging a try writes the record again (the same tries, in the same order).

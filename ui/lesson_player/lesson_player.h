@@ -78,6 +78,9 @@ public:
     /// that decides it.
     QString firstLessonPath() const;
 
+    /// The step's first answer that can be given now (a box, or a question's options), where
+    /// Tab from the scene goes; null on a step that asks nothing, or nothing more.
+    QWidget* firstAnswer() const;
     /// The answer box and result line of question i of the current step (for tests).
     void answer(int question, const QString& text);
     QString result(int question) const;

@@ -5,6 +5,7 @@
 #include "panels/number_field.h"
 #include "question_kinds/question_kinds.h"
 
+#include <QAbstractButton>
 #include <QButtonGroup>
 #include <QCoreApplication>
 #include <QLabel>
@@ -153,6 +154,23 @@ QList<QWidget*> QuestionRows::tabStops() const
         if (w->focusPolicy() & Qt::TabFocus)
             out << w;
     return out;
+}
+
+QWidget* QuestionRows::firstAnswer() const
+{
+    const auto open = [](QWidget* w) { return w && w->isVisible() && w->isEnabled(); };
+    for (const AnswerRow& row : m_rows) {
+        if (open(row.edit))
+            return row.edit;
+        if (!row.choices)
+            continue;
+        if (QAbstractButton* chosen = row.choices->checkedButton(); open(chosen))
+            return chosen;
+        const QList<QAbstractButton*> options = row.choices->buttons();
+        if (!options.isEmpty() && open(options.first()))
+            return options.first();
+    }
+    return nullptr;
 }
 
 const AnswerRow* QuestionRows::row(int question) const

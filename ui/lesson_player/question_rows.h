@@ -47,6 +47,9 @@ public:
     void setTyped(std::size_t i, const QString& typed);
     /// The rows' widgets that Tab reaches, in the order shown.
     QList<QWidget*> tabStops() const;
+    /// The first answer that can be given now, where Tab puts the focus in it: a question's box,
+    /// or its option chosen (else its first); null when every row is shut or there is none.
+    QWidget* firstAnswer() const;
 
     /// What a student does (for tests): types `text` in question i's box and presses Return;
     /// chooses `option` and presses Check; presses Show me. And question i's verdict line.

@@ -72,6 +72,7 @@ MeasurementPanel::MeasurementPanel(QWidget* parent) : QWidget(parent)
     m_residual->model().setRangeMode(RangeMode::WholeRun);
     m_residual->setMinimumSize(kPlotLeast);
     m_residual->setTitleShown(false); // the tab or the check box says what it is
+    m_residual->staggerRefresh(1);    // the comparison's is turn 0: not in the same frame
     m_residual->addSeries(tr("measured − simulated"), plotColor(2));
     asMarkers(*m_residual, kResidual, QCPScatterStyle::ssCross);
     m_plots->addPlot(m_residual, tr("Residuals"));

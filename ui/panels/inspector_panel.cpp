@@ -60,12 +60,13 @@ QString num(double v, double scale = 0)
 } // namespace
 
 InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent)
-    : QWidget(parent), m_controller(controller), m_name(new QLabel(this)), m_mass(new QLabel(this)),
-      m_massEdit(new NumberField(this)), m_massUnit(new QLabel(tr("kg"), this)),
-      m_inertia(new QLabel(this)), m_position(new QLabel(this)), m_angle(new QLabel(this)),
-      m_velocity(new QLabel(this)), m_speed(new QLabel(this)), m_omega(new QLabel(this)),
-      m_angleUnit(new QComboBox(this)), m_energy(new QLabel(this)),
-      m_restitution(new NumberField(this)), m_friction(new NumberField(this))
+    : QWidget(parent), m_controller(controller), m_none(new QLabel(tr("No body selected"), this)),
+      m_name(new QLabel(this)), m_mass(new QLabel(this)), m_massEdit(new NumberField(this)),
+      m_massUnit(new QLabel(tr("kg"), this)), m_inertia(new QLabel(this)),
+      m_position(new QLabel(this)), m_angle(new QLabel(this)), m_velocity(new QLabel(this)),
+      m_speed(new QLabel(this)), m_omega(new QLabel(this)), m_angleUnit(new QComboBox(this)),
+      m_energy(new QLabel(this)), m_restitution(new NumberField(this)),
+      m_friction(new NumberField(this))
 {
     // The mass: a field with its unit for a dynamic body, "infinite" for the others.
     auto* massRow = new QHBoxLayout;
@@ -87,17 +88,25 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     m_friction->setObjectName(QStringLiteral("bodyFriction"));
     m_friction->setRange(friction.range, schema::label(friction));
 
+    // Reached by Tab and read aloud: a reader says once that no body is chosen, and how to.
+    m_none->setObjectName(QStringLiteral("noBody"));
+    m_none->setFocusPolicy(Qt::TabFocus);
+    m_none->setWordWrap(true);
+    m_none->setAccessibleDescription(tr("Click a body in the scene, or select one there with ]"));
     auto* form = new QFormLayout(this);
+    m_form = form;
     form->setRowWrapPolicy(QFormLayout::WrapLongRows); // labels above fields when narrow
+    form->addRow(m_none);
     form->addRow(tr("Body"), m_name);
     form->addRow(tr("Mass m"), massRow);
     form->addRow(tr("Inertia I"), m_inertia);
     form->addRow(tr("Position"), m_position);
-    form->addRow(tr("Angle θ"), angleRow());
+    form->addRow(tr("Angle θ"), m_angle);
     form->addRow(tr("Velocity v"), m_velocity);
     form->addRow(tr("Speed |v|"), m_speed);
     form->addRow(tr("Angular vel. ω"), m_omega);
     form->addRow(tr("Kinetic energy"), m_energy);
+    form->addRow(angleUnitList());
     form->addRow(schema::label(restitution), m_restitution);
     form->addRow(schema::label(friction), m_friction);
     m_graph = new QPushButton(tr("Graph…"), this);
@@ -114,6 +123,19 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     for (QLabel* l :
          {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    connectEdits();
+    connect(&m_controller, &SimulationController::worldChanged, this, &InspectorPanel::refresh);
+    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
+        // The bodies are new: what was typed for the old one goes.
+        for (NumberField* f : {m_massEdit, m_restitution, m_friction})
+            f->revert();
+        setBody(-1);
+    });
+    setBody(-1);
+}
+
+void InspectorPanel::connectEdits()
+{
     // Each field sends only its own value: the other keeps the body's, not a stale text.
     connect(m_restitution, &NumberField::valueEdited, this, [this](double e) {
         if (m_body >= 0)
@@ -129,14 +151,6 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     });
     for (NumberField* f : {m_massEdit, m_restitution, m_friction})
         connect(f, &NumberField::refused, this, &InspectorPanel::inputRefused);
-    connect(&m_controller, &SimulationController::worldChanged, this, &InspectorPanel::refresh);
-    connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
-        // The bodies are new: what was typed for the old one goes.
-        for (NumberField* f : {m_massEdit, m_restitution, m_friction})
-            f->revert();
-        setBody(-1);
-    });
-    setBody(-1);
 }
 
 void InspectorPanel::setBody(int id)
@@ -158,22 +172,9 @@ void InspectorPanel::setBody(int id)
 void InspectorPanel::refresh()
 {
     const bool has = m_body >= 0;
-    // Without a body nothing is there to edit, graph or turn into other units: such controls
-    // are disabled, and the angle's unit list, which beside a "–" reads as a value, is hidden.
-    m_restitution->setEnabled(has);
-    m_friction->setEnabled(has);
-    m_graph->setEnabled(has);
-    m_angleUnit->setVisible(has);
+    showRows(has);
     if (!has) {
-        m_name->setText(tr("click a body"));
-        m_massEdit->setVisible(false);
-        m_massUnit->setVisible(false); // the mass field's unit: "kg –" read as a value
-        m_mass->setVisible(true);
-        for (QLabel* l :
-             {m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
-            l->setText(QStringLiteral("–"));
         m_forces->showNone();
-        nameValues();
         return;
     }
     const physics::Body& b = m_controller.world().body(m_body);
@@ -229,7 +230,7 @@ void InspectorPanel::labelRows(QFormLayout& form)
                 continue;
             m_rowNames.append({value, label->text()});
             // QFormLayout gives no buddy to a row that is a layout (the mass: its field, or
-            // "infinite"), and makes the angle's box (value and unit list) the angle's.
+            // "infinite").
             label->setBuddy(value == m_mass ? static_cast<QWidget*>(m_massEdit) : value);
         }
     }
@@ -246,7 +247,16 @@ void InspectorPanel::nameValues()
             now);
 }
 
-QWidget* InspectorPanel::angleRow()
+void InspectorPanel::showRows(bool body)
+{
+    // Rows of dashes read as "Angle θ: –" one by one; the values' rows and the controls with
+    // nothing to edit, graph or turn into other units go, and one line says why.
+    m_form->setRowVisible(0, !body);
+    for (int row = 1; row < m_form->rowCount(); ++row)
+        m_form->setRowVisible(row, body);
+}
+
+QWidget* InspectorPanel::angleUnitList()
 {
     // Degrees first: the unit of a school's protractor. Radians for the formulas.
     m_angleUnit->addItem(tr("°", "angle unit: degrees"));
@@ -257,17 +267,17 @@ QWidget* InspectorPanel::angleRow()
     m_angleUnit->setAccessibleName(tr("Unit of angles"));
     m_angleUnit->setToolTip(tr("Angles and angular velocities in degrees or in radians"));
     m_angleUnit->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    // Hidden while no body is shown, its place kept: the rows below do not jump when a body is
-    // clicked.
-    QSizePolicy keep = m_angleUnit->sizePolicy();
-    keep.setRetainSizeWhenHidden(true);
-    m_angleUnit->setSizePolicy(keep);
     connect(m_angleUnit, &QComboBox::currentIndexChanged, this, &InspectorPanel::refresh);
+    // Across the form's width, its label beside it: in the field column, under the long
+    // labels of a narrow projector column, the list went below its label too.
     auto* row = new QWidget(this);
     auto* layout = new QHBoxLayout(row);
     layout->setContentsMargins(0, 0, 0, 0);
-    layout->addWidget(m_angle, 1);
+    auto* label = new QLabel(m_angleUnit->accessibleName(), row);
+    label->setBuddy(m_angleUnit);
+    layout->addWidget(label);
     layout->addWidget(m_angleUnit);
+    layout->addStretch(1);
     return row;
 }
 
@@ -283,6 +293,8 @@ void InspectorPanel::setAnglesInDegrees(bool degrees)
 
 QString InspectorPanel::text() const
 {
+    if (m_body < 0)
+        return m_none->text();
     QStringList parts;
     for (QLabel* l :
          {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})

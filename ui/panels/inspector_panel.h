@@ -47,8 +47,14 @@ public slots:
     void refresh();
 
 private:
-    /// The angle and its unit's choice, side by side.
-    QWidget* angleRow();
+    /// The angle's unit's choice, on a row of its own with its label: beside the angle it made
+    /// the row too wide for a projector's side column, which then put the angle below its
+    /// label.
+    QWidget* angleUnitList();
+    /// Without a body, one line says so instead of each row's dash.
+    void showRows(bool body);
+    /// A typed mass, restitution or friction to the body shown, through the controller.
+    void connectEdits();
     /// Each value's row label as its buddy, and its accessible name "row: value", so that a
     /// screen reader says which number it reads.
     void labelRows(QFormLayout& form);
@@ -56,6 +62,8 @@ private:
 
     SimulationController& m_controller;
     int m_body = -1;
+    QFormLayout* m_form = nullptr;
+    QLabel* m_none; ///< "No body selected", the one line shown without a body
     QLabel* m_name;
     QLabel* m_mass; ///< "infinite" for static and kinematic bodies
     NumberField* m_massEdit;

@@ -50,7 +50,7 @@ QString plotName(const PlotRow& row)
 
 QString plotTitle(const PlotRow& row, bool full)
 {
-    return translated(full ? row.title : row.shortTitle);
+    return translated(full || !row.shortTitle ? row.title : row.shortTitle);
 }
 
 PlotWidget* makeWorldPlot(const PlotRow& row, QWidget* parent)

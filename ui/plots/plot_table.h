@@ -2,10 +2,11 @@
 #pragma once
 // The plots, one row each: the lesson format's name, the titles the window and the lesson
 // editor give it, and how it is made. The window makes its own plots (the rows that are not
-// of compared worlds) and titles their docks from it; a lesson step, the Export of its plots
-// and the headless export (rigidlab-cli lesson --export) make a step's plots by name from it;
-// the lesson editor lists them from it. A plot of one quantity of the world is a row with
-// that quantity's label, unit and sample; a plot of another shape gives how it is made.
+// of compared worlds) and gives their docks its full title as their tooltip; a lesson step,
+// the Export of its plots and the headless export (rigidlab-cli lesson --export) make a step's
+// plots by name from it; the lesson editor lists them from it. A plot of one quantity of the
+// world is a row with that quantity's label, unit and sample; a plot of another shape gives how
+// it is made.
 // Nothing else names a plot: a plot is found by its row's name, never by its place in a list
 // (test_code_shape checks that no production file but this one and the lesson format's list
 // writes a plot's name).
@@ -40,8 +41,9 @@ struct PlotRow {
     /// Full (the dock's, the Export menu's, the lesson editor's), for
     /// QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", …).
     const char* title = nullptr;
-    /// Short, likewise: the dock's tab in a narrow column; for a plot of compared worlds, its
-    /// tab in their dock, which says what the worlds are compared in.
+    /// Short, likewise: a plot of compared worlds, its tab in their dock, which says what the
+    /// worlds are compared in. (The window's own plots are short on their docks' tabs, which
+    /// are titled from common/dock_names.h.)
     const char* shortTitle = nullptr;
     /// A plot of one quantity of the main world: its axis label (translated likewise), its
     /// unit and its value in a sample; the plot is made from them.
@@ -62,15 +64,12 @@ struct PlotRow {
 inline constexpr PlotRow kPlotRows[] = {
     {.name = "energy",
      .title = QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy"),
-     .shortTitle = QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy"),
      .make = makeEnergyPlot},
     {.name = "momentum",
      .title = QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum"),
-     .shortTitle = QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Momentum"),
      .make = makeMomentumPlot},
     {.name = "drift",
      .title = QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy drift"),
-     .shortTitle = QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Drift"),
      .make = makeDriftPlot},
     {.name = "compare-energy",
      .title = QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Energy of the compared"),
@@ -86,7 +85,8 @@ inline constexpr PlotRow kPlotRows[] = {
 const PlotRow* findPlot(QStringView name);
 /// The row's name as a QString (a dock's object name, a plot's).
 QString plotName(const PlotRow& row);
-/// The title of `row` in the window's language (full, or short for a tab).
+/// The title of `row` in the window's language (full, or short for a tab: the full one for a
+/// row without a short one).
 QString plotTitle(const PlotRow& row, bool full = true);
 /// A plot of the main world by its row, a child of `parent`, its object name the row's.
 PlotWidget* makeWorldPlot(const PlotRow& row, QWidget* parent);

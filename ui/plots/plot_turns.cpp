@@ -23,6 +23,8 @@ PlotTurns::PlotTurns(QObject* parent) : QObject(parent)
 
 void PlotTurns::add(PlotWidget* plot)
 {
+    // While no frames come (a paused run) each plot's own timer drains it: staggered too.
+    plot->staggerRefresh(static_cast<int>(m_turns.size()));
     m_turns.push_back({plot});
 }
 

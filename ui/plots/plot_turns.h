@@ -27,7 +27,8 @@ public:
     explicit PlotTurns(QObject* parent = nullptr);
 
     /// Lets `plot` take turns from the next frame on (its first turn as soon as there is
-    /// room); a plot destroyed leaves.
+    /// room), and staggers its own timer after those added before (PlotWidget::staggerRefresh);
+    /// a plot destroyed leaves.
     void add(PlotWidget* plot);
     /// The plots taking turns (those not destroyed).
     int count() const;

@@ -144,11 +144,15 @@ void PlotWidget::startRefresh()
         if (!m_sinceFrame.isValid() || m_sinceFrame.elapsed() > 2 * kRefreshIntervalMs)
             drain();
     });
-    // The plots take turns: each starts a third of the interval after the one before, so that
-    // their replots fall in different frames of the view instead of all in one.
-    static int instances = 0;
-    const int phase = (instances++ % 3) * (kRefreshIntervalMs / 3);
-    QTimer::singleShot(phase, m_timer, qOverload<>(&QTimer::start));
+    m_timer->start(); // staggerRefresh() moves it to its owner's turn
+}
+
+void PlotWidget::staggerRefresh(int turn)
+{
+    constexpr int kTurns = 3;
+    m_refreshPhaseMs = (std::max(0, turn) % kTurns) * (kRefreshIntervalMs / kTurns);
+    m_timer->stop();
+    QTimer::singleShot(m_refreshPhaseMs, m_timer, qOverload<>(&QTimer::start));
 }
 
 PlotWidget::~PlotWidget() = default;

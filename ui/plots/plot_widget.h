@@ -145,6 +145,13 @@ public slots:
     /// its turn comes (PlotTurns, plot_turns.h), so that its replot does not land on the next
     /// frame's deadline; its own timer only stands in while no frames come (a paused run).
     void frameCame() { m_sinceFrame.start(); }
+    /// The plot is its owner's `turn`-th (0, 1, ...): its own timer starts again a third of
+    /// the refresh interval later than the turn before's (turn modulo 3), so that the
+    /// owner's plots replot in different frames of the view while no frames come (a paused
+    /// run). The owner counts its plots: PlotTurns a window's, a panel its own.
+    void staggerRefresh(int turn);
+    /// How late this plot's timer started, as staggerRefresh() set it (0 unless told) [ms].
+    int refreshPhaseMs() const { return m_refreshPhaseMs; }
 
 signals:
     void followingChanged(bool following);
@@ -200,6 +207,7 @@ private:
     bool m_captionShown = false;
     QToolButton* m_followButton = nullptr; ///< child, shown while paused
     QTimer* m_timer = nullptr;             ///< child
+    int m_refreshPhaseMs = 0;              ///< see staggerRefresh() [ms]
     QElapsedTimer m_sinceFrame;            ///< since the last frameCame()
     std::vector<Curves> m_curves;          ///< per series of the model
     std::vector<bool> m_offScale;          ///< per series, see offScale()

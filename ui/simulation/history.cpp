@@ -125,6 +125,24 @@ physics::World History::restore(long long step) const
     return world;
 }
 
+void History::replay(physics::World& world, long long to,
+                     const std::function<void(const physics::World&)>& each) const
+{
+    to = std::min(to, m_latest);
+    auto next = std::upper_bound(m_snapshots.begin(), m_snapshots.end(), world.stepCount(),
+                                 [](long long s, const Snapshot& snap) { return s < snap.step; });
+    while (world.stepCount() < to) {
+        if (const UserInput* in = inputFor(world.stepCount()))
+            applyInput(world, *in);
+        world.step();
+        each(world);
+        // A snapshot holds what was edited at its step (a setting, a body moved): the run went
+        // on from it. Without an edit it is the state just replayed.
+        if (next != m_snapshots.end() && next->step == world.stepCount())
+            world = (next++)->world;
+    }
+}
+
 void applyInput(physics::World& world, const UserInput& input)
 {
     if (input.body < 0 || input.body >= static_cast<physics::BodyId>(world.bodies().size()))

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 
 namespace rigidlab::ui {
@@ -40,6 +41,12 @@ public:
     double earliestTime() const;
     /// Restores the world as it was after `step` (clamped to [earliest, latest]).
     physics::World restore(long long step) const;
+    /// Walks the run on from `world` (a state restore() gave) to step `to`, as restore()
+    /// replays it, calling `each` with the world after every step: the states the run had,
+    /// bit for bit, before any edit made at that step (an edit's snapshot is taken up after
+    /// `each` saw the step).
+    void replay(physics::World& world, long long to,
+                const std::function<void(const physics::World&)>& each) const;
     /// The input logged for the step that leads to `step + 1`, or nullptr.
     const UserInput* inputFor(long long step) const;
     /// The most the snapshots may take [bytes]; the oldest go first when it shrinks.

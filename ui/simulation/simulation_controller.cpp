@@ -11,6 +11,7 @@
 #include "format/scene_loader.h"
 #include "format/view_text.h"
 
+#include <QElapsedTimer>
 #include <QLocale>
 
 #include <algorithm>
@@ -46,6 +47,8 @@ SimulationController::SimulationController(QObject* parent) : RunView(parent)
     m_frameTimer.setTimerType(Qt::PreciseTimer);
     m_frameTimer.setInterval(kFrameIntervalMs);
     connect(&m_frameTimer, &QTimer::timeout, this, &SimulationController::advanceFrame);
+    m_eventReplayTimer.setSingleShot(true);
+    connect(&m_eventReplayTimer, &QTimer::timeout, this, &SimulationController::replayEventSlice);
 }
 
 void SimulationController::loadScene(const lessons::Scene& scene, const QString& path)
@@ -107,6 +110,7 @@ void SimulationController::resetClock()
     m_catchUp.reset();
     m_sampler.restart(m_world, m_variants);
     m_watch.restart(m_world);
+    catchUpEvents(); // measured from here on, or not at all: no replay left to run
     emit samplesCleared();
     pushSample();
 }
@@ -114,6 +118,52 @@ void SimulationController::resetClock()
 void SimulationController::watch(const std::vector<lessons::Measure>& measures)
 {
     m_watch.watch(measures, m_world);
+    catchUpEvents(); // a lesson step measures from here: a replay under way stops
+}
+
+void SimulationController::setEventsShown(bool shown)
+{
+    m_watch.setShown(shown);
+    catchUpEvents();
+}
+
+void SimulationController::catchUpEvents()
+{
+    m_eventReplay.reset();
+    m_eventReplayTimer.stop();
+    if (!m_watch.measuring() || !m_watch.behind())
+        return;
+    // Bit for bit the run's states (history.h), so the same events as if measured all along:
+    // from the start while the history reaches back to it. The present steps on meanwhile,
+    // unmeasured (LessonWatch::observe), until the replay reaches it.
+    m_eventReplay = m_history.restore(m_history.earliest());
+    m_watch.measureFrom(*m_eventReplay);
+    replayEventSlice();
+}
+
+void SimulationController::replayEventSlice()
+{
+    if (!m_eventReplay)
+        return;
+    physics::World& replayed = *m_eventReplay;
+    const auto observe = [this](const physics::World& w) { m_watch.replayed(w); };
+    QElapsedTimer slice;
+    slice.start();
+    do {
+        const long long before = replayed.stepCount();
+        if (before >= m_world.stepCount())
+            break;
+        m_history.replay(replayed, before + 1, observe);
+        if (replayed.stepCount() == before)
+            break; // the history holds no later step (never so while it records every step)
+    } while (slice.elapsed() < m_eventReplaySliceMs);
+    if (replayed.stepCount() < m_world.stepCount() && m_history.latest() > replayed.stepCount()) {
+        m_eventReplayTimer.start(0);
+        return;
+    }
+    m_eventReplay.reset();
+    m_watch.caughtUp();
+    emit worldChanged(); // the tables show the whole run
 }
 
 Pose SimulationController::drawPose(physics::BodyId id) const
@@ -255,6 +305,7 @@ void SimulationController::seek(long long step)
         m_variants[i] = std::move(w);
     }
     m_watch.rewind(m_world);
+    catchUpEvents(); // a replay under way, or events never measured, go again to this step
     m_previousPoses.clear();
     m_sampler.rewound(stepTime(m_world)); // sample again from here on
     emit rewound(stepTime(m_world));

@@ -74,6 +74,18 @@ public:
 
     // What a lesson measures while the world runs (bounces, collisions, timed values).
     void watch(const std::vector<lessons::Measure>& measures);
+    /// Whether a table shows the bounces or the collisions (then they are measured in a scene
+    /// that is no lesson step too: LessonWatch). A table opened after steps went unmeasured
+    /// gets them measured again, from the history's replay of the run: a slice of it per turn
+    /// of the event loop (a long run of a large scene takes seconds to walk again, and the
+    /// window keeps drawing and answering meanwhile).
+    void setEventsShown(bool shown);
+    /// Whether the events are measured up to the present step (false while nothing reads them,
+    /// and while a table opened late has the run so far measured again).
+    bool eventsUpToDate() const { return m_watch.measuring() && !m_watch.behind(); }
+    /// The longest a slice of that replay may run before the window's next turn [ms]; 0 gives
+    /// one step a slice (a test's).
+    void setEventReplaySlice(int ms) { m_eventReplaySliceMs = ms; }
 
     bool isRunning() const override { return m_running; }
     double timeScale() const override { return m_timeScale; }
@@ -162,6 +174,11 @@ private:
     /// Logs an edit made now; edits of the future the change drops go.
     void logEdit(const SettingEdit& edit) { m_edits.log(edit, m_world.stepCount()); }
     void resetClock();
+    /// Starts measuring the run's events again from the history's earliest state when they are
+    /// read and went unmeasured (setEventsShown), or stops a replay that is no longer wanted.
+    void catchUpEvents();
+    /// One slice of that replay; the timer brings the next while the present is not reached.
+    void replayEventSlice();
     template <typename Fn> void forEachWorld(Fn&& fn);
 
     lessons::Scene m_scene;
@@ -182,6 +199,9 @@ private:
     FrameTiming m_timing;
 
     QTimer m_frameTimer;
+    std::optional<physics::World> m_eventReplay; ///< the run walked again for its events
+    QTimer m_eventReplayTimer;
+    int m_eventReplaySliceMs = 5;
     CatchUp m_catchUp; ///< the simulated time owed, and how much of it a frame pays
     double m_timeScale = 1.0;
     bool m_running = false;

@@ -64,7 +64,6 @@ void BodyItem::setPose(double x, double y, double angle)
     m_pose = {x, y, angle};
     const double c = std::cos(angle), s = std::sin(angle);
     m_frame = QTransform(c, s, -s, c, x, y);
-    setTransform(m_frame);
 }
 
 bool BodyItem::containsScenePoint(const QPointF& p) const

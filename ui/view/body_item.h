@@ -29,12 +29,17 @@ public:
     int bodyId() const { return m_bodyId; }
     /// The colour it is filled with: the scene's "colour", or one of the view's.
     QColor fill() const { return m_fill; }
-    /// Places the item: origin [m] and angle [rad] (counter-clockwise, y up). Its transform()
-    /// is then the body's frame in the scene: rotation by the angle, then the origin.
+    /// Places the body: origin [m] and angle [rad] (counter-clockwise, y up). Its frame() is
+    /// then the body's frame in the scene: rotation by the angle, then the origin. The item's
+    /// own transform() stays the identity: it is in no scene, and Qt's setTransform() (its
+    /// notifications and its copy) was a per cent of the frame of a 5,050-body pyramid.
     void setPose(double x, double y, double angle);
-    /// The body's frame in the scene, as setPose made it: transform() without asking
-    /// QGraphicsItem, which composes it anew at each call (5,050 bodies in every paint).
+    /// The body's frame in the scene, as setPose made it.
     const QTransform& frame() const { return m_frame; }
+    /// The drawn outline's bounding box in the scene [m] (what sceneBoundingRect() would give
+    /// with frame() as the item's transform): picking, the labels, the screen reader's
+    /// rectangles.
+    QRectF sceneBox() const { return m_frame.mapRect(boundingRect()); }
     void setSelectedBody(bool selected);
     bool selectedBody() const { return m_selected; }
     /// The least half-size [m] a moving body is drawn with, so that a small body far zoomed

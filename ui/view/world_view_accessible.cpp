@@ -73,7 +73,7 @@ public:
             index() >= WorldViewAccessible::FirstBody ? m_view->itemFor(body()) : nullptr;
         if (!item)
             return whole;
-        const QRect inView = m_view->mapFromScene(item->sceneBoundingRect())
+        const QRect inView = m_view->mapFromScene(item->sceneBox())
                                  .boundingRect()
                                  .intersected(m_view->viewport()->rect());
         return QRect(m_view->viewport()->mapToGlobal(inView.topLeft()), inView.size());

@@ -38,7 +38,7 @@ std::vector<std::pair<int, QRect>> WorldView::bodyLabelRects() const
         const BodyItem* item = itemFor(id);
         if (!item || !item->isVisible())
             continue;
-        const QRect body = mapFromScene(item->sceneBoundingRect()).boundingRect();
+        const QRect body = mapFromScene(item->sceneBox()).boundingRect();
         if (!area.intersects(body)) // out of sight: a label at the edge would point nowhere
             continue;
         shown.push_back(id);

@@ -155,7 +155,7 @@ void WorldView::drawForeground(QPainter* painter, const QRectF&)
         painter->setPen(theme::worldAlertText());
         painter->drawText(box, Qt::AlignCenter, stoppedLabel(v));
         // A cross over the frozen body: this one no longer moves.
-        const QPoint c = mapFromScene(ghostOf(v)->sceneBoundingRect().center());
+        const QPoint c = mapFromScene(ghostOf(v)->sceneBox().center());
         const int r = std::max(6, fm.ascent() / 2);
         painter->setPen(QPen(theme::worldAlertText(), theme::lineWidth(2.5)));
         painter->drawLine(c + QPoint(-r, -r), c + QPoint(r, r));
@@ -223,7 +223,7 @@ std::vector<QRect> WorldView::stoppedLabelRects() const
         if (!m_run.variant(v).divergence() || !ghost)
             continue;
         const QRect label = fm.boundingRect(stoppedLabel(v)).adjusted(-4, -2, 4, 2);
-        const QRect body = mapFromScene(ghost->sceneBoundingRect()).boundingRect();
+        const QRect body = mapFromScene(ghost->sceneBox()).boundingRect();
         // Beside the stopped body where the label covers no body (a long label pushed back
         // from the edge lay over the ball it names): above right, above left, below right,
         // below left, right, left; the first one clear, else the first.
@@ -237,11 +237,11 @@ std::vector<QRect> WorldView::stoppedLabelRects() const
         const auto coversBody = [this](const QRect& box) {
             for (const auto& item : m_items)
                 if (item && item->isVisible() &&
-                    mapFromScene(item->sceneBoundingRect()).boundingRect().intersects(box))
+                    mapFromScene(item->sceneBox()).boundingRect().intersects(box))
                     return true;
             for (const Ghost& g : m_ghosts)
                 if (g.item && g.item->isVisible() &&
-                    mapFromScene(g.item->sceneBoundingRect()).boundingRect().intersects(box))
+                    mapFromScene(g.item->sceneBox()).boundingRect().intersects(box))
                     return true;
             return false;
         };

@@ -49,7 +49,7 @@ QRectF WorldView::shownRect(const BodyItem& item, const physics::World& world,
     // With the run's event known, the scenery is framed only around it: the carts of a step
     // and the ground under them, not the whole 40 m of ground. Worlds compared side by side
     // keep theirs whole: each world's floor is part of that picture.
-    const QRectF r = item.sceneBoundingRect();
+    const QRectF r = item.sceneBox();
     const auto i = static_cast<std::size_t>(body);
     if (m_action.isEmpty() || !m_run.variantOffset().isZero() || i >= world.bodies().size() ||
         world.bodies()[i].moves())

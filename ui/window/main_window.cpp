@@ -46,6 +46,9 @@
 #include <QStatusBar>
 #include <QToolBar>
 
+#include <algorithm>
+#include <array>
+
 namespace rigidlab::ui {
 
 MainWindow::MainWindow(QWidget* parent)
@@ -106,8 +109,29 @@ MainWindow::MainWindow(QWidget* parent)
         plot->addMenuAction(m_instruments->graphAction()); // graphs of chosen bodies
     }
     restoreSettings();
+    followEventTables(); // after the docks the settings may have opened
     m_keyboard->applySavedChoice();
     updateStatus();
+}
+
+void MainWindow::followEventTables()
+{
+    // The bounce and collision tables read the run's events: measured while one is open (a
+    // lesson step measures them anyway). A table behind another's tab is open: it may be
+    // brought forward at any time.
+    const std::array<QDockWidget*, 2> tables{m_layout->dock(QStringLiteral("bounces")),
+                                             m_layout->dock(QStringLiteral("collision"))};
+    const auto follow = [this, tables] {
+        m_controller->setEventsShown(std::any_of(tables.begin(), tables.end(),
+                                                 [](QDockWidget* d) { return !d->isHidden(); }));
+    };
+    for (QDockWidget* dock : tables) {
+        // Ticked in the View menu (after the dock's own slot showed or hid it), and shown or
+        // hidden otherwise (a lesson step's panels) while the window is on screen.
+        connect(dock->toggleViewAction(), &QAction::triggered, this, follow);
+        connect(dock, &QDockWidget::visibilityChanged, this, follow);
+    }
+    follow();
 }
 
 MainWindow::~MainWindow() = default;

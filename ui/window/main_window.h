@@ -188,6 +188,9 @@ private slots:
 private:
     void wireDocument();
     void wirePanels();
+    /// Tells the controller whether the bounce or collision table is open
+    /// (SimulationController::setEventsShown), now and whenever one opens or closes.
+    void followEventTables();
     void buildMenus();
     void buildFileMenu();
     /// File › New lesson and Edit lesson…: the lesson editor (window_lesson_editor.cpp).

@@ -6,6 +6,7 @@
 
 #include "common/accessible_names.h"
 #include "common/current_with_focus.h"
+#include "common/dock_names.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
 #include "editor/scene_properties.h"
@@ -78,9 +79,9 @@ QDockWidget* MainWindow::buildPropertiesDock()
     scroll->setWidget(properties);
     scroll->setWidgetResizable(true);
     scroll->setFrameShape(QFrame::NoFrame);
-    auto* dock = new QDockWidget(tr("Properties"), this);
+    auto* dock = new QDockWidget(this);
+    nameDock(*dock, QStringLiteral("propertiesDock"));
     nameScrollArea(*scroll, dock->windowTitle());
-    dock->setObjectName(QStringLiteral("propertiesDock"));
     dock->setWidget(scroll);
     addDockWidget(Qt::LeftDockWidgetArea, dock);
     keepFocusInSight(*dock);
@@ -112,8 +113,8 @@ void MainWindow::buildHistoryDock(QDockWidget& properties)
     view->setTextElideMode(Qt::ElideRight);
     view->setMinimumWidth(0);
 
-    auto* dock = new QDockWidget(tr("History"), this);
-    dock->setObjectName(QStringLiteral("historyDock"));
+    auto* dock = new QDockWidget(this);
+    nameDock(*dock, QStringLiteral("historyDock"));
     setFullTitle(*dock, tr("History of edits"));
     dock->setWidget(view);
     addDockWidget(Qt::LeftDockWidgetArea, dock);

@@ -3,6 +3,7 @@
 #include "window/main_window.h"
 
 #include "common/display_names.h"
+#include "common/dock_names.h"
 #include "common/shortcuts.h"
 #include "editor/scene_document.h"
 #include "instruments/instruments.h"
@@ -32,8 +33,6 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QUndoStack>
-
-#include <algorithm>
 
 namespace rigidlab::ui {
 
@@ -157,13 +156,11 @@ void MainWindow::buildViewMenu()
     QMenu* panels = m_viewMenu->addMenu(tr("Pa&nels"));
     panels->setObjectName(QStringLiteral("panelsMenu"));
     for (QDockWidget* dock : findChildren<QDockWidget*>()) {
-        const auto entry =
-            std::find_if(kPanelEntries.begin(), kPanelEntries.end(), [dock](const PanelEntry& e) {
-                return dock->objectName() == QLatin1String(e.dock);
-            });
-        Q_ASSERT(entry != kPanelEntries.end()); // every dock of the window has its entry
-        if (entry != kPanelEntries.end())
-            dock->toggleViewAction()->setText(windowNameText(entry->text));
+        // Titled from its entry (nameDock): the entry is the title with its underlined letter.
+        const PanelEntry* entry = panelEntry(dock->objectName());
+        Q_ASSERT(entry); // every dock of the window has its entry
+        if (entry)
+            dock->toggleViewAction()->setText(panelEntryText(*entry));
         panels->addAction(dock->toggleViewAction());
         focusWhenAsked(*dock);
     }
@@ -202,13 +199,15 @@ void MainWindow::showControlsHelp()
 
 QString MainWindow::controlsHelpText() const
 {
-    // The overlays' keys from their own table, kOverlayNames.
-    QList<ControlHelpRow> overlays;
+    // The overlays' keys from their own table, kOverlayNames, and Tab from the scene to a
+    // step's answer.
+    QList<ControlHelpRow> extra;
     for (const OverlayNames& info : kOverlayNames)
-        overlays.push_back(
+        extra.push_back(
             {{QKeySequence(QString::fromLatin1(info.shortcut))},
              tr("Show or hide: %1").arg(windowNameText(info.text).remove(QLatin1Char('&')))});
-    return controlsHelpHtml(overlays);
+    extra << WindowKeyboard::helpRows();
+    return controlsHelpHtml(extra);
 }
 
 } // namespace rigidlab::ui

@@ -3,11 +3,12 @@
 #include "window/window_layout.h"
 
 #include "common/accessible_names.h"
+#include "common/dock_names.h"
+#include "common/step_part_names.h"
 #include "common/theme.h"
 #include "plots/plot_table.h"
 #include "plots/plot_widget.h"
 #include "window/dock_tabs.h"
-#include "window/window_names.h"
 
 #include <QAction>
 #include <QComboBox>
@@ -50,13 +51,13 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
     // Short dock titles, whole on their tabs; the full ones in tooltips.
     keepDockTabsWhole(window);
     buildLessonDock(panels);
-    // The panels a lesson step may show, each under the lesson format's name and titled from
-    // the one table the lesson editor reads.
+    // The panels a lesson step may show, each under the lesson format's name, its full title
+    // the one the lesson editor lists it by.
     const auto panelDock = [this](std::string_view name, QWidget* panel,
                                   Scrolling scrolling = Scrolling::InDock) {
         const StepPartName& part = stepPanel(name);
-        return addDock(stepPartText(part.shortTitle), QLatin1String(part.name), panel,
-                       Qt::RightDockWidgetArea, stepPartText(part.title), scrolling);
+        return addDock(QLatin1String(part.name), panel, Qt::RightDockWidgetArea,
+                       stepPartText(part.title), scrolling);
     };
     panelDock("controls", panels.controls);
     panelDock("inspector", panels.inspector);
@@ -66,31 +67,29 @@ WindowLayout::WindowLayout(QMainWindow& window, const Panels& panels)
         // Small enough that the plots fit beside the world on a 1024×768 projector.
         plot->setMinimumSize(180, 150);
         plot->setTitleShown(false); // the dock shows it
-        addDock(plotTitle(*row, false), plot->objectName(), plot, Qt::RightDockWidgetArea,
-                plotTitle(*row));
+        addDock(plot->objectName(), plot, Qt::RightDockWidgetArea, plotTitle(*row));
     }
     for (const auto& [name, panel] : {std::pair<std::string_view, QWidget*>{"sat", panels.sat},
                                       {"bounces", panels.bounces},
                                       {"collision", panels.collision}})
         panelDock(name, panel)->hide();
     // The work-precision sweep, hidden until asked for (View menu).
-    addDock(tr("Error vs run time"), QStringLiteral("errorDock"), panels.error,
-            Qt::BottomDockWidgetArea)
-        ->hide();
+    addDock(QStringLiteral("error"), panels.error, Qt::BottomDockWidgetArea)->hide();
     panelDock("measurement", panels.measurement, Scrolling::Own)->hide();
-    m_compareDock = new QDockWidget(tr("Side by side"), &window);
-    m_compareDock->setObjectName(QStringLiteral("compareDock"));
+    m_compareDock = new QDockWidget(&window);
+    nameDock(*m_compareDock, QStringLiteral("compareDock"));
     setFullTitle(*m_compareDock, m_compareDock->windowTitle());
     window.addDockWidget(Qt::RightDockWidgetArea, m_compareDock);
     keepFocusInSight(*m_compareDock);
     m_compareDock->hide();
 }
 
-QDockWidget* WindowLayout::addDock(const QString& title, const QString& name, QWidget* w, int area,
-                                   const QString& full, Scrolling scrolling)
+QDockWidget* WindowLayout::addDock(const QString& name, QWidget* w, int area, const QString& full,
+                                   Scrolling scrolling)
 {
-    auto* dock = new QDockWidget(title, &m_window);
-    dock->setObjectName(name + QStringLiteral("Dock"));
+    auto* dock = new QDockWidget(&m_window);
+    nameDock(*dock, name + QStringLiteral("Dock"));
+    const QString title = dock->windowTitle();
     setFullTitle(*dock, full.isEmpty() ? title : full);
     // Lists as narrow as a short name: a long entry ("Dormand-Prince 5(4), adaptive") must not
     // widen the side column on a small projector.
@@ -125,7 +124,7 @@ QDockWidget* WindowLayout::addDock(const QString& title, const QString& name, QW
 void WindowLayout::buildLessonDock(const Panels& panels)
 {
     QDockWidget* lessonDock =
-        addDock(tr("Lesson"), QStringLiteral("lesson"), panels.lesson, Qt::LeftDockWidgetArea);
+        addDock(QStringLiteral("lesson"), panels.lesson, Qt::LeftDockWidgetArea);
     enlargeForReading(*panels.lesson);
     // The step's questions and Back, Next, Restart and Export stay in sight below the lesson,
     // which scrolls.

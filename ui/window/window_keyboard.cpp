@@ -21,6 +21,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QDockWidget>
+#include <QKeyEvent>
 #include <QMainWindow>
 #include <QMenu>
 #include <QPalette>
@@ -79,6 +80,10 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
         QSettings().setValue(kSingleKeysSetting, on);
     });
     connect(&parts.view, &WorldView::numbersRequested, this, &WindowKeyboard::showNumbers);
+    parts.view.installEventFilter(this);
+    lessonFollowsScene();
+    connect(&parts.player, &LessonPlayer::stepActivated, this, &WindowKeyboard::lessonFollowsScene);
+    connect(&parts.player, &LessonPlayer::lessonClosed, this, &WindowKeyboard::lessonFollowsScene);
     for (std::size_t i = 0; i < kEffects.size(); ++i)
         m_effectsBefore[i] = QApplication::isEffectEnabled(kEffects[i]);
     m_reducedMotion = make(tr("&Reduced motion"), "reducedMotion");
@@ -89,6 +94,50 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
         setReducedMotion(on);
         QSettings().setValue(kReducedMotionSetting, on);
     });
+}
+
+bool WindowKeyboard::eventFilter(QObject* watched, QEvent* event)
+{
+    // A student working in the scene who is asked something answers next: Tab goes to the
+    // step's answer, not through the lesson panel's list of lessons and the step's text first.
+    // From there Tab and Shift+Tab go on in the panel's own order. On a step that asks nothing
+    // (or nothing more), or with the lesson out of sight, Tab goes where it always goes.
+    if (watched == &m_parts.view && event->type() == QEvent::KeyPress) {
+        const auto* key = static_cast<const QKeyEvent*>(event);
+        QWidget* answer = key->key() == Qt::Key_Tab && key->modifiers() == Qt::NoModifier
+                              ? m_parts.player.firstAnswer()
+                              : nullptr;
+        if (answer && inSightInWindow(*answer)) {
+            answer->setFocus(Qt::TabFocusReason);
+            return true;
+        }
+    }
+    return QObject::eventFilter(watched, event);
+}
+
+void WindowKeyboard::lessonFollowsScene()
+{
+    QDockWidget* lesson = m_parts.layout.dock(QStringLiteral("lesson"));
+    if (!lesson)
+        return;
+    // The panel's stops in the order the player gave them (its text, the answers, then the
+    // buttons), wherever the chain has them now.
+    QList<QWidget*> stops;
+    QWidget* start = &m_parts.window;
+    for (QWidget* w = start->nextInFocusChain(); w && w != start; w = w->nextInFocusChain())
+        if (lesson->isAncestorOf(w) && (w->focusPolicy() & Qt::TabFocus))
+            stops << w;
+    QWidget* previous = &m_parts.view;
+    for (QWidget* w : std::as_const(stops)) {
+        QWidget::setTabOrder(previous, w);
+        previous = w;
+    }
+}
+
+QList<ControlHelpRow> WindowKeyboard::helpRows()
+{
+    return {{{QKeySequence(Qt::Key_Tab)},
+             tr("On the scene, in a lesson step that asks something: go to its answer")}};
 }
 
 void WindowKeyboard::setReducedMotion(bool on)

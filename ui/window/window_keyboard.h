@@ -3,9 +3,13 @@
 // The window's keyboard beyond the run actions: the lesson's next and previous step, the
 // focus to the scene or to the toolbar (window_keyboard_toolbar.h), choosing a body without a
 // mouse, single-key shortcuts on or off, and Enter on a body showing its numbers in the
-// inspector. It installs the shortcuts guard (keys go to the focused control first), the focus
-// ring (common/) and the guard that keeps Tab to controls in sight (window_keyboard_sight.h).
+// inspector; Tab from the scene to the step's answer. It installs the shortcuts guard (keys go
+// to the focused control first), the focus ring (common/) and the guard that keeps Tab to
+// controls in sight (window_keyboard_sight.h).
 
+#include "common/shortcuts.h"
+
+#include <QList>
 #include <QObject>
 
 #include <array>
@@ -33,6 +37,8 @@ public:
     };
     explicit WindowKeyboard(const Parts& parts);
 
+    /// Help › Controls' rows for the keys handled here that are no action's: Tab on the scene.
+    static QList<ControlHelpRow> helpRows();
     /// Adds the lesson-step and body actions to the Simulation menu.
     void addToSimulationMenu(QMenu& menu) const;
     /// Adds "Single-key shortcuts" to a menu (View).
@@ -44,8 +50,16 @@ public:
     /// action exists).
     void applySavedChoice();
 
+protected:
+    /// Tab on the scene, on a lesson step that asks something: to its answer.
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
 private:
     QAction* make(const QString& text, const char* name);
+    /// The lesson panel's controls right after the scene in the focus chain, in their own
+    /// order, so that Tab from the scene to the step's answer passes only the panel's own
+    /// controls above it by.
+    void lessonFollowsScene();
     void showNumbers(int body);
     void setReducedMotion(bool on);
 

@@ -18,6 +18,7 @@
 #include "window/dock_tabs.h"
 #include "window/window_names.h"
 
+#include <QDataStream>
 #include <QDockWidget>
 #include <QGuiApplication>
 #include <QLayout>
@@ -65,6 +66,20 @@ QString sizeKey(const QSize& size)
     return QStringLiteral("layout/%1x%2/").arg(size.width()).arg(size.height());
 }
 
+/// The error dock's object name in layouts saved before it was named once ("errorDock"):
+/// restoreState() finds a dock by its object name.
+const QString kOldErrorDockName = QStringLiteral("errorDockDock");
+
+/// Whether a state saved by QMainWindow::saveState() names a dock `name`: the name as its
+/// QDataStream writes it, its length before it, so that a longer name does not count.
+bool stateNames(const QByteArray& state, const QString& name)
+{
+    QByteArray written;
+    QDataStream out(&written, QIODevice::WriteOnly);
+    out << name;
+    return state.contains(written);
+}
+
 } // namespace
 
 QRect WindowLayout::availableScreenArea() const
@@ -94,7 +109,7 @@ void WindowLayout::fitToScreen(const QRect& available)
     m_window.layout()->activate();
     if (sized)
         m_window.resize(size);
-    if (QDockWidget* error = m_docks.value(QStringLiteral("errorDock")))
+    if (QDockWidget* error = m_docks.value(QStringLiteral("error")))
         ErrorPanel::placeDock(*error, available, m_compact);
 }
 
@@ -357,7 +372,17 @@ void WindowLayout::restore(const QSettings& s)
     if (!s.contains(key + QStringLiteral("state")))
         return;
     m_window.restoreGeometry(s.value(key + QStringLiteral("geometry")).toByteArray());
-    m_window.restoreState(s.value(key + QStringLiteral("state")).toByteArray());
+    const QByteArray state = s.value(key + QStringLiteral("state")).toByteArray();
+    // A layout saved under the error dock's old name: the dock answers to it while the layout
+    // is restored, and goes where the teacher had put it, not back to its first place.
+    QDockWidget* error = m_docks.value(QStringLiteral("error"));
+    const QString name = error ? error->objectName() : QString();
+    const bool oldName = error && stateNames(state, kOldErrorDockName);
+    if (oldName)
+        error->setObjectName(kOldErrorDockName);
+    m_window.restoreState(state);
+    if (oldName)
+        error->setObjectName(name);
     // Never larger than the screen, whatever was saved (the screen may have shrunk).
     if (!m_window.isMaximized() && !m_window.isFullScreen() &&
         (m_window.width() > available.width() || m_window.height() > available.height()))

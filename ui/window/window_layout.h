@@ -101,8 +101,10 @@ private:
     /// Who scrolls a panel taller or wider than its dock: a scroll area the dock puts it in,
     /// or the panel itself (one that keeps its plots in sight and scrolls only the rest).
     enum class Scrolling { InDock, Own };
-    QDockWidget* addDock(const QString& title, const QString& name, QWidget* w, int area,
-                         const QString& full = QString(), Scrolling scrolling = Scrolling::InDock);
+    /// A dock for `w` in `area`, found by `name` (dock()), its object name `name` + "Dock" and
+    /// its title from that (common/dock_names.h); `full`: the tooltip's longer title.
+    QDockWidget* addDock(const QString& name, QWidget* w, int area, const QString& full = QString(),
+                         Scrolling scrolling = Scrolling::InDock);
     void buildLessonDock(const Panels& panels);
     /// Stacked plots on a roomy `screen`, tabbed on a small one.
     void arrangeDocks(const QSize& screen);

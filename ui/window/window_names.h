@@ -3,8 +3,8 @@
 // The window's one table of names for its overlays and standard plots: what the menus and the
 // toolbar say, the key the settings file keeps, the name a lesson step uses (the lesson
 // format's lists, lessons/format/lesson.h) and the key that toggles it. Every part of
-// the window that names an overlay or a plot reads it from here. And the View › Panels menu's
-// entry of each dock, with its underlined letter.
+// the window that names an overlay or a plot reads it from here. (The docks' names, and their
+// entries in View › Panels: common/dock_names.h.)
 
 #include "common/step_part_names.h"
 #include "view/overlays.h"
@@ -62,33 +62,6 @@ static_assert(
         return true;
     }(),
     "kOverlayNames is in the order of Overlay");
-
-/// An entry of View › Panels: the dock it shows or hides, by its object name, and the entry's
-/// text, the dock's title with an underlined letter. A dock's own title has none (its tab would
-/// underline the letter and take Alt and it from the window's controls); the letters are
-/// chosen here together, in each language, so that no two entries share one.
-struct PanelEntry {
-    const char* dock;
-    const char* text; ///< for tr() in context "rigidlab::ui::MainWindow"
-};
-
-inline constexpr std::array<PanelEntry, 15> kPanelEntries{{
-    {"lessonDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Lesson")},
-    {"controlsDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Controls")},
-    {"inspectorDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Inspector")},
-    {"energyDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Energy")},
-    {"momentumDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Momentum")},
-    {"driftDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Drift")},
-    {"satDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Axis test")},
-    {"bouncesDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Bounces")},
-    {"collisionDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "C&ollision")},
-    {"errorDockDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "E&rror vs run time")},
-    {"measurementDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "Meas&urement")},
-    {"compareDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Side by side")},
-    {"propertiesDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&Properties")},
-    {"historyDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "&History")},
-    {"instrumentsDock", QT_TRANSLATE_NOOP("rigidlab::ui::MainWindow", "I&nstruments")},
-}};
 
 /// The name a lesson step gives `overlay` in its "overlays" (the lesson format's list, in the
 /// order of Overlay).
