@@ -114,13 +114,17 @@ MainWindow::MainWindow(QWidget* parent)
     updateStatus();
 }
 
+std::array<QDockWidget*, 2> MainWindow::eventTables() const
+{
+    return {m_layout->dock(QStringLiteral("bounces")), m_layout->dock(QStringLiteral("collision"))};
+}
+
 void MainWindow::followEventTables()
 {
     // The bounce and collision tables read the run's events: measured while one is open (a
     // lesson step measures them anyway). A table behind another's tab is open: it may be
     // brought forward at any time.
-    const std::array<QDockWidget*, 2> tables{m_layout->dock(QStringLiteral("bounces")),
-                                             m_layout->dock(QStringLiteral("collision"))};
+    const std::array<QDockWidget*, 2> tables = eventTables();
     const auto follow = [this, tables] {
         m_controller->setEventsShown(std::any_of(tables.begin(), tables.end(),
                                                  [](QDockWidget* d) { return !d->isHidden(); }));
@@ -134,7 +138,15 @@ void MainWindow::followEventTables()
     follow();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // QWidget's destructor hides the docks after this window's members are gone: the tables'
+    // follower must not hear of it.
+    for (QDockWidget* dock : eventTables()) {
+        disconnect(dock, nullptr, this, nullptr);
+        disconnect(dock->toggleViewAction(), nullptr, this, nullptr);
+    }
+}
 
 void MainWindow::wirePanels()
 {

@@ -190,6 +190,8 @@ private:
     void wirePanels();
     /// Tells the controller whether the bounce or collision table is open
     /// (SimulationController::setEventsShown), now and whenever one opens or closes.
+    /// The docks that show the run's events (bounces, collision), which measure while open.
+    std::array<QDockWidget*, 2> eventTables() const;
     void followEventTables();
     void buildMenus();
     void buildFileMenu();
