@@ -16,6 +16,7 @@
 #include "rigidlab/physics/math.h"
 #include "rigidlab/physics/world.h"
 
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -87,7 +88,16 @@ public:
     virtual void step() = 0;
     /// Poses of every body, in the scene's order.
     virtual void poses(std::vector<BenchPose>& out) const = 0;
+    /// A hash of the bits of every body's state (stateHash()), for engines that give one
+    /// (RigidLab's); nullopt for the others.
+    virtual std::optional<std::uint64_t> stateHash() const { return std::nullopt; }
 };
+
+/// FNV-1a (64 bits) over the bytes of `values`, continuing from `hash`.
+std::uint64_t fnv1a(const double* values, size_t count, std::uint64_t hash = 0xcbf29ce484222325ull);
+/// The bits of a world's state: FNV-1a over each body's position (x, y), angle, velocity (x, y)
+/// and angular velocity, in body order. Equal hashes after the same steps: the same bits.
+std::uint64_t stateHash(const physics::World& world);
 
 struct BenchOptions {
     int steps = 600; ///< steps per run, the first one not timed (600: 10 s at 1/60 s)
@@ -108,6 +118,8 @@ struct BenchResult {
     int moved = 0;       ///< boxes moved more than 0.5 m sideways or turned more than 0.2 rad
     int escaped = 0;     ///< bodies outside the container at the end (Rain)
     bool finite = true;  ///< every pose finite at the end
+    /// The engine's stateHash() at the end of the first run (RigidLab's engines).
+    std::optional<std::uint64_t> hash;
 };
 
 /// Runs the scene `options.runs` times in the engine and measures it.

@@ -9,6 +9,8 @@
 #include <cassert>
 #include <charconv>
 #include <cstdio>
+#include <cstring>
+#include <iterator>
 
 namespace rigidlab::bench {
 
@@ -64,6 +66,7 @@ public:
         for (const physics::Body& b : m_world.bodies())
             out.push_back({b.position, b.angle});
     }
+    std::optional<std::uint64_t> stateHash() const override { return bench::stateHash(m_world); }
 
 private:
     RigidLabBenchSettings m_settings;
@@ -71,6 +74,30 @@ private:
 };
 
 } // namespace
+
+std::uint64_t fnv1a(const double* values, size_t count, std::uint64_t hash)
+{
+    for (size_t i = 0; i < count; ++i) {
+        unsigned char bytes[sizeof(double)];
+        std::memcpy(bytes, &values[i], sizeof bytes);
+        for (const unsigned char byte : bytes) {
+            hash ^= byte;
+            hash *= 0x100000001b3ull;
+        }
+    }
+    return hash;
+}
+
+std::uint64_t stateHash(const physics::World& world)
+{
+    std::uint64_t hash = fnv1a(nullptr, 0);
+    for (const physics::Body& b : world.bodies()) {
+        const double state[] = {b.position.x(), b.position.y(), b.angle,
+                                b.velocity.x(), b.velocity.y(), b.angularVelocity};
+        hash = fnv1a(state, std::size(state), hash);
+    }
+    return hash;
+}
 
 physics::World buildBenchWorld(const BenchScene& scene, const RigidLabBenchSettings& settings)
 {

@@ -101,6 +101,7 @@ BenchResult runBench(BenchEngine& engine, const BenchScene& scene, const BenchOp
         if (run == 0) {
             engine.poses(end);
             measureStability(scene, start, end, r);
+            r.hash = engine.stateHash();
         }
     }
     r.msPerStep = median(r.runs);

@@ -10,6 +10,8 @@
 
 #include "narrow_phase.h"
 
+#include "contact_rewrite.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -134,11 +136,11 @@ bool carriedPoints(const Contact& previous, const ContactAnchors& k, const Ancho
     return true;
 }
 
-/// c, a copy of last step's contact of the pair, made what recycleManifold and
-/// finishContact make of a new contact: the points carried to `points` (recycledPoints), the
-/// mixed material, no bounce, and the impulses carryImpulses would give. Those are the copy's
-/// own: a point takes the impulses of last step's point with its id, which is itself, or the
-/// later of two with one id; a point the manifold lacks has none.
+/// c, last step's contact of the pair, made what recycleManifold and finishContact make of a
+/// new contact: the points carried to `points` (recycledPoints), the mixed material, no
+/// bounce, and the impulses carryImpulses would give. Those are c's own: a point takes the
+/// impulses of last step's point with its id, which is itself, or the later of two with one
+/// id; a point the manifold lacks has none.
 void finishRecycled(const Body& a, const Body& b, const std::array<ContactPoint, 2>& points,
                     Contact& c)
 {
@@ -153,23 +155,20 @@ void finishRecycled(const Body& a, const Body& b, const std::array<ContactPoint,
         c.normalImpulse[i] = c.tangentImpulse[i] = 0.0;
 }
 
-/// The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it, from a
-/// copy of `last` (last step's contact of the pair a, b, or null) and its anchors, added to
-/// `lists`; false when the pair is not to be recycled. Its faces are not kept: when it moves
-/// on, the pair gets the whole SAT.
-bool addRecycled(const Contact* last, const Body& a, const Transform& xfA, const Body& b,
-                 const Transform& xfB, double recycle, double margin, ContactLists& lists)
+/// The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it, from
+/// `last` (last step's contact of the pair a, b, just found in `contacts`) and its anchors,
+/// kept in `contacts` with its anchors; false when the pair is not to be recycled. Its faces
+/// are not kept: when it moves on, the pair gets the whole SAT.
+bool recycleFound(const Contact& last, const Body& a, const Transform& xfA, const Body& b,
+                  const Transform& xfB, double recycle, double margin, ContactRewrite& contacts)
 {
-    if (!last)
-        return false;
-    const ContactAnchors& k = lists.anchorsOf(*last);
+    const ContactAnchors& k = contacts.anchorsOfFound();
     AnchorMotion motion;
     std::array<ContactPoint, 2> points;
-    if (!mayRecycle(*last, k, a, xfA, b, xfB, recycle, motion) ||
-        !carriedPoints(*last, k, motion, a, b, margin, points))
+    if (!mayRecycle(last, k, a, xfA, b, xfB, recycle, motion) ||
+        !carriedPoints(last, k, motion, a, b, margin, points))
         return false;
-    finishRecycled(a, b, points, lists.contacts.emplace_back(*last));
-    lists.anchors.push_back(k);
+    finishRecycled(a, b, points, contacts.keepFound());
     return true;
 }
 
@@ -178,11 +177,8 @@ bool addRecycled(const Contact* last, const Body& a, const Transform& xfA, const
 void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                      const std::vector<std::pair<int, int>>& pairs, double margin,
                      const std::vector<double>& sweep, double recycle, NarrowPhaseCache& cache,
-                     ContactLists lists)
+                     ContactRewrite& contacts, bool& bounceKept)
 {
-    std::vector<Contact>& contacts = lists.contacts;
-    std::vector<ContactAnchors>& anchors = lists.anchors;
-    PreviousPairs<Contact> before(lists.previous);
     std::swap(cache.separated, cache.previousSeparated);
     cache.separated.clear();
     PreviousPairs<SeparatedPair> apartBefore(cache.previousSeparated);
@@ -194,23 +190,23 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
     for (const auto& [ia, ib] : pairs) {
         const Body& a = bodies[static_cast<size_t>(ia)];
         const Body& b = bodies[static_cast<size_t>(ib)];
-        if (rests(a) && rests(b)) {
-            if (const Contact* kept = before.find(ia, ib)) {
-                lists.keep(*kept);
-                continue;
-            }
+        // Last step's contact of the pair: valid until `contacts` is written.
+        const Contact* last = contacts.find(ia, ib);
+        if (last && rests(a) && rests(b)) {
+            const Contact& kept = contacts.keepFound();
+            bounceKept = bounceKept || kept.bounceImpulse[0] > 0 || kept.bounceImpulse[1] > 0;
+            continue;
         }
         const double pairMargin = margin + sweptMargin(sweep, ia) + sweptMargin(sweep, ib);
         const Transform& xfA = xf[static_cast<size_t>(ia)];
         const Transform& xfB = xf[static_cast<size_t>(ib)];
         const Polygon* pa = a.shape.asPolygon();
         const Polygon* pb = b.shape.asPolygon();
-        if (pa && pb && recycle > 0.0 && pairMargin == margin &&
-            addRecycled(before.find(ia, ib), a, xfA, b, xfB, recycle, margin, lists))
+        if (last && pa && pb && recycle > 0.0 && pairMargin == margin &&
+            recycleFound(*last, a, xfA, b, xfB, recycle, margin, contacts))
             continue;
-        // Built in place; taken back when the shapes are too far apart.
-        Contact& c = contacts.emplace_back();
-        ContactAnchors& k = anchors.emplace_back();
+        Contact c;
+        ContactAnchors k;
         c.a = ia;
         c.b = ib;
         if (pa && pb) {
@@ -218,31 +214,32 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
             // Two polygons. A pair that barely moved since the SAT chose its faces is clipped
             // from the same faces, placing only their points (FaceChoice).
             const RelativePlacement now(a, xfA, b, xfB);
+            bool clipped = false;
             if (kept && facesStand(*kept, now, xfA, xfB, a, b, pairMargin)) {
-                if (clipKeptFaces(*kept, *pa, xfA, *pb, xfB, pairMargin, c.manifold)) {
+                clipped = clipKeptFaces(*kept, *pa, xfA, *pb, xfB, pairMargin, c.manifold);
+                if (clipped) {
                     cache.touching.push_back(*kept);
                     ++cache.reused;
-                    if (recycle > 0.0)
-                        keepAnchors(a, *pa, xfA, b, *pb, xfB, c.manifold, k);
-                    finishContact(a, b, before, c);
-                    continue;
+                } else {
+                    c.manifold = Manifold{};
                 }
-                c.manifold = Manifold{};
             }
-            satOnPlaced(ia, *pa, xfA, ib, *pb, xfB, pairMargin, now, apartBefore.find(ia, ib),
-                        cache, c.manifold);
+            if (!clipped)
+                satOnPlaced(ia, *pa, xfA, ib, *pb, xfB, pairMargin, now, apartBefore.find(ia, ib),
+                            cache, c.manifold);
             if (recycle > 0.0 && c.manifold.pointCount > 0)
                 keepAnchors(a, *pa, xfA, b, *pb, xfB, c.manifold, k);
         } else {
             c.manifold = collideShapes(a.shape, xfA, b.shape, xfB, pairMargin);
         }
-        if (c.manifold.pointCount == 0) {
-            contacts.pop_back();
-            anchors.pop_back();
-            continue;
-        }
-        finishContact(a, b, before, c);
+        if (c.manifold.pointCount == 0)
+            continue; // farther apart than the margin: last step's contact, if any, is dropped
+        mixMaterials(a, b, c);
+        if (last)
+            carryImpulses(*last, c);
+        contacts.put(c, k);
     }
+    contacts.finish();
 }
 
 } // namespace rigidlab::physics

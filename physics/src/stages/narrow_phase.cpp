@@ -11,6 +11,8 @@
 
 #include "narrow_phase.h"
 
+#include "contact_rewrite.h"
+
 #include "stages.h"
 
 #include "rigidlab/physics/work_budget.h"
@@ -186,10 +188,12 @@ void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& 
 void findContacts(StepContext& ctx)
 {
     StepScratch& s = ctx.scratch;
-    std::swap(s.previous, ctx.contacts);
-    std::swap(s.previousAnchors, ctx.contactAnchors);
-    ctx.contacts.clear();
-    ctx.contactAnchors.clear();
+    if (ctx.plain) {
+        std::swap(s.previous, ctx.contacts);
+        std::swap(s.previousAnchors, ctx.contactAnchors);
+        ctx.contacts.clear();
+        ctx.contactAnchors.clear();
+    }
     s.bounceHeldBefore = s.bounceHeld;
     s.bounceHeld = false;
     const double margin = ctx.contactSettings.margin;
@@ -212,17 +216,35 @@ void findContacts(StepContext& ctx)
     // bodies; the impulse solvers' position correction re-evaluates the manifold's faces.
     const double recycle =
         ctx.solver == SolverKind::SoftStep ? ctx.contactSettings.soft.recycleDistance : 0.0;
-    const ContactLists lists{.previous = s.previous,
-                             .previousAnchors = s.previousAnchors,
-                             .contacts = ctx.contacts,
-                             .anchors = ctx.contactAnchors,
-                             .bounceKept = s.bounceHeld};
     if (ctx.plain) {
+        const ContactLists lists{.previous = s.previous,
+                                 .previousAnchors = s.previousAnchors,
+                                 .contacts = ctx.contacts,
+                                 .anchors = ctx.contactAnchors,
+                                 .bounceKept = s.bounceHeld};
         s.narrow.clear();
         narrowPhase(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, recycle, lists);
     } else {
         s.narrow.reuseFaces = ctx.contactSettings.reuseFaces;
-        narrowPhaseFast(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, recycle, s.narrow, lists);
+        // Last step's contacts are read after the narrow phase only for their bounces
+        // (ContactSolver::lastBounce, when one holds a bounce) and, in a world stopped as
+        // crowded, for the touching points it started with (World::stopWhenCrowded). Else
+        // this step's are written over them (fast/contact_rewrite.h) and none is left to read:
+        // no bounce to find.
+        if (s.bounceHeldBefore || s.broadPhase.crowding()) {
+            std::swap(s.previous, ctx.contacts);
+            std::swap(s.previousAnchors, ctx.contactAnchors);
+            ContactRewrite rewrite(s.previous, s.previousAnchors, ctx.contacts, ctx.contactAnchors,
+                                   s.narrow);
+            narrowPhaseFast(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, recycle, s.narrow,
+                            rewrite, s.bounceHeld);
+        } else {
+            s.previous.clear();
+            s.previousAnchors.clear();
+            ContactRewrite rewrite(ctx.contacts, ctx.contactAnchors, s.narrow);
+            narrowPhaseFast(ctx.bodies, s.xf, s.pairs, margin, ctx.sweep, recycle, s.narrow,
+                            rewrite, s.bounceHeld);
+        }
     }
     ctx.profile.contacts = static_cast<int>(ctx.contacts.size());
     ctx.profile.reusedFaces = s.narrow.reused;

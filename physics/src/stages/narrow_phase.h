@@ -59,6 +59,11 @@ struct NarrowPhaseCache {
     std::vector<TouchingPair> touching, previousTouching;
     bool reuseFaces = true; ///< off: every pair gets the whole SAT (to test that it is the same)
     int reused = 0;         ///< pairs clipped from kept faces in the last call
+    /// The room of the ring where last step's contacts not yet read, with their anchors, are
+    /// moved out of the way of this step's as these are written over them
+    /// (fast/contact_rewrite.h); what it holds between steps is not read.
+    std::vector<Contact> spill;
+    std::vector<ContactAnchors> spillAnchors;
     /// Forgets what was kept (the plain path keeps nothing).
     void clear()
     {
@@ -171,12 +176,15 @@ struct ContactLists {
 void narrowPhase(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                  const std::vector<std::pair<int, int>>& pairs, double margin,
                  const std::vector<double>& sweep, double recycle, ContactLists lists);
+class ContactRewrite;
 /// The same contacts as narrowPhase, bit for bit, keeping work in `cache` from step to step
-/// (fast/kept_faces.cpp; see NarrowPhaseCache).
+/// (fast/kept_faces.cpp; see NarrowPhaseCache), written from last step's by `contacts`
+/// (fast/contact_rewrite.h: over them, in the same arrays, when nothing reads them after the
+/// narrow phase). `bounceKept`: as ContactLists::bounceKept.
 void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transform>& xf,
                      const std::vector<std::pair<int, int>>& pairs, double margin,
                      const std::vector<double>& sweep, double recycle, NarrowPhaseCache& cache,
-                     ContactLists lists);
+                     ContactRewrite& contacts, bool& bounceKept);
 
 /// The material of a contact from its two bodies': restitution the larger of the two (a ball
 /// bounces off a rubber floor as the floor makes it), friction the geometric mean (Box2D's
