@@ -156,18 +156,26 @@ void TestSoftCoarse::restingBallAtLongSteps_data()
 {
     QTest::addColumn<SolverKind>("solver");
     QTest::addColumn<double>("dt");
+    QTest::addColumn<bool>("single");
     for (SolverKind solver : {SolverKind::SoftStep, SolverKind::SequentialImpulse})
         for (double dt : {0.1, 0.2, 0.5})
-            QTest::addRow("%s, dt %g s", rigidlab::test::solverLabel(solver), dt) << solver << dt;
+            QTest::addRow("%s, dt %g s", rigidlab::test::solverLabel(solver), dt)
+                << solver << dt << false;
+    // The contact passes in single precision (SoftStepSettings::singlePrecision): at 0.5 s its
+    // sink to 1e-6 as well (with the floats' velocities absolute it missed by 2.6e-6; at 0.1
+    // and 0.2 s it still misses by 1.4e-6, docs/performance.md).
+    QTest::addRow("soft-step, dt 0.5 s, single precision") << SolverKind::SoftStep << 0.5 << true;
 }
 
 void TestSoftCoarse::restingBallAtLongSteps()
 {
     QFETCH(SolverKind, solver);
     QFETCH(double, dt);
+    QFETCH(bool, single);
     WorldDef def = rigidlab::test::exactWorld(solver, dt, 0.5, 0.6);
     def.gravity = Vec2(0.0, -kG);
     World world(def);
+    world.contactSettings().soft.singlePrecision = single;
     BodyDef ground = rigidlab::test::boxBody(100.0, 1.0, Vec2(0.0, -0.5));
     ground.type = BodyType::Static;
     world.addBody(ground);

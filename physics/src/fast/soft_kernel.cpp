@@ -7,12 +7,15 @@
 // Per lane and point, with the normal n from A to B, the tangent t = (n.y, -n.x), the lever
 // arms rA, rB and the relative velocity dv = vB + wB x rB - vA - wA x rA (Catto, "Solver2D",
 // 2024, and Box2D v3's soft step):
-//   separation  s = n . (dpB + qB rB - dpA - qA rA) + base   (base: see PointLanes)
+//   separation  s = n . (dpB + qB rB - dpA - qA rA) + base   (base: see PointLanes; single
+//               precision: q less the identity, base the separation at the step's start)
 //   s > 0       speculative: the gap may close within the substep, bias = s / h, rigid
 //   s <= 0      with bias: soft, bias = max(biasRate s, -maxPush), the mass and the accumulated
 //               impulse scaled by massScale and impulseScale; relaxing: rigid, no bias
 //   normal      dj = -normalMass massScale (dv.n + bias) - impulseScale j, j stays >= 0
 //   friction    dj = -tangentMass dv.t, |j_t| <= friction j_n
+// (single precision: dv is the change since the step began plus each point's relative velocity
+// then, OriginLanesOf)
 // Bounces are not the kernel's: the collision phase gives them before the substeps
 // (soft_step.cpp, contact_collisions.cpp).
 
@@ -37,6 +40,9 @@ using V = Real __attribute__((vector_size(W * sizeof(Real))));
 using Block = BlockOf<Real, sizeof(Real) == sizeof(double) ? kBlockWidth : kSingleBlockWidth>;
 using BodyState = typename Block::State;
 using PointLanes = PointLanesOf<Real, Block::kWidth>;
+/// Whether the bodies carry their velocity's change since the step began (single precision,
+/// OriginLanesOf) instead of the velocity.
+constexpr bool kOrigin = sizeof(OriginLanesOf<Real, Block::kWidth>) > 1;
 
 // The kernel leans on no library (see soft_kernel.h): loads, stores and selections by hand.
 inline V load(const Real* p)
@@ -225,6 +231,17 @@ inline V relative(const Side& A, const Side& B, const V& dx, const V& dy, const 
     return ux * dx + uy * dy;
 }
 
+/// The relative velocity of point p's lanes along the normal (tangent: along the tangent) at
+/// the start of the step, which single precision's bodies do not carry (OriginLanesOf); 0 in
+/// double precision.
+template <bool kTangent, typename Point> inline V origin(const Point& p)
+{
+    if constexpr (requires { p.origin.normalVelocity; })
+        return load(kTangent ? p.origin.tangentVelocity : p.origin.normalVelocity);
+    else
+        return V{};
+}
+
 /// The warm start of one block's lanes, on its sides as gathered.
 inline void warmStartLanes(Block& c, Side& A, Side& B)
 {
@@ -305,12 +322,16 @@ inline void solveLanes(Block& c, Side& A, Side& B, const Motion& m, const PassCo
     }
     for (PointLanes& p : c.p) {
         const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
-        // The separation now: both lever arms turned by their body's rotation so far.
+        // The separation now: both lever arms turned by their body's rotation so far (in
+        // single precision by the rotation less the identity, from the separation at the
+        // start: the same sum, without the lever arms' whole length in it).
         const V dx = m.dpx + (m.qcB * rBx - m.qsB * rBy) - (m.qcA * rAx - m.qsA * rAy);
         const V dy = m.dpy + (m.qsB * rBx + m.qcB * rBy) - (m.qsA * rAx + m.qcA * rAy);
         const V sep = dx * nx + dy * ny + load(p.base);
         const auto gap = sep > zero;
-        const V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
+        V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
+        if constexpr (kOrigin)
+            vn += origin<false>(p);
         const V old = load(p.normalImpulse);
         V next;
         if constexpr (kBias) {
@@ -333,7 +354,9 @@ inline void solveLanes(Block& c, Side& A, Side& B, const Motion& m, const PassCo
         const V tx = ny, ty = -nx;
         for (PointLanes& p : c.p) {
             const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
-            const V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
+            V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
+            if constexpr (kOrigin)
+                vt += origin<true>(p);
             const V limit = friction * load(p.normalImpulse);
             const V old = load(p.tangentImpulse);
             const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);

@@ -11,7 +11,11 @@
 // depend on its neighbours: both widths give the same bits. With
 // SoftStepSettings::singlePrecision the same passes run on floats (Box2D v3's choice): four
 // lanes (SSE2) or eight (AVX2), again the same bits at either width, but not the bits of
-// double precision.
+// double precision. The floats hold changes, not whole values: each body's velocity less its
+// velocity at the start of the step (each point's relative velocity then is in OriginLanesOf,
+// from double), its rotation less the identity, and the separation at the start of the step
+// as the base; so a float's rounding is relative to what the step changed, not to the speed
+// or the lever arm.
 //
 // This header and soft_kernel.cpp include nothing but plain C++ types: soft_kernel.cpp is
 // compiled four times (soft_kernel_avx2.cpp with -mavx2, soft_kernel_single.cpp and
@@ -30,13 +34,28 @@ inline constexpr int kSingleBlockWidth = 8;
 /// displacement and rotation are written by the substep's integration of positions
 /// (soft_solver.cpp).
 template <typename Real> struct alignas(8 * sizeof(Real)) BodyStateOf {
-    Real vx = 0, vy = 0; ///< velocity of the centre of mass [m/s]
-    Real w = 0;          ///< angular velocity [rad/s]
+    /// Velocity of the centre of mass [m/s], and angular velocity [rad/s]; in single precision
+    /// their change since the start of the step.
+    Real vx = 0, vy = 0;
+    Real w = 0;
     /// 1 / mass [1/kg], 0 for a body the step does not move: loaded with the velocity as one
     /// vector, so that the blocks need not carry it per lane.
     Real invMass = 0;
     Real dpx = 0, dpy = 0; ///< displacement of the centre of mass since the step began [m]
-    Real qc = 1, qs = 0;   ///< cos and sin of the rotation since the step began
+    /// cos and sin of the rotation since the step began; in single precision cos - 1 and sin
+    /// (the rotation less the identity).
+    Real qc = 1, qs = 0;
+};
+
+/// Single precision only: each point's relative velocity at the start of the step, along the
+/// normal and the tangent [m/s], computed in double when the lane is filled. The float bodies
+/// carry only their velocity's change since then (SoftSolver::toSingle), so a float's rounding
+/// is relative to that change, not to the speed. Double precision has no such lanes.
+template <typename Real, int Width> struct OriginLanesOf {
+};
+template <int Width> struct OriginLanesOf<float, Width> {
+    float normalVelocity[Width]{};
+    float tangentVelocity[Width]{};
 };
 
 /// One point of each lane's manifold. A manifold with one point leaves the second's masses 0,
@@ -45,12 +64,14 @@ template <typename Real, int Width> struct alignas(32) PointLanesOf {
     Real rAx[Width]{}, rAy[Width]{}; ///< lever arm from A's centre [m]
     Real rBx[Width]{}, rBy[Width]{}; ///< lever arm from B's centre [m]
     /// The separation with the lever arms' share taken off: the separation now is
-    /// n . (dpB + qB rB - dpA - qA rA) + base [m].
+    /// n . (dpB + qB rB - dpA - qA rA) + base [m]. In single precision, whose q is the
+    /// rotation less the identity, the separation at the start of the step itself.
     Real base[Width]{};
     Real normalMass[Width]{};     ///< 1 / K along the normal [kg]
     Real tangentMass[Width]{};    ///< 1 / K along the tangent [kg]
     Real normalImpulse[Width]{};  ///< accumulated within a substep [N s]
     Real tangentImpulse[Width]{}; ///< accumulated within a substep [N s]
+    [[no_unique_address]] OriginLanesOf<Real, Width> origin;
 };
 
 /// A block's lanes. The inverse masses are the bodies' (BodyStateOf::invMass), and the soft
@@ -71,6 +92,8 @@ using Block = BlockOf<double, kBlockWidth>;
 /// Single precision: half the bytes per lane, twice the lanes per register.
 using SingleBodyState = BodyStateOf<float>;
 using SingleBlock = BlockOf<float, kSingleBlockWidth>;
+static_assert(sizeof(PointLanesOf<double, kBlockWidth>) == 9 * sizeof(double[kBlockWidth]),
+              "double precision's lanes carry no origin");
 
 /// The soft constraint's coefficients for one substep (soft_solver.cpp).
 struct Softness {

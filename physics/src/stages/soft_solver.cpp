@@ -131,18 +131,15 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
         }
     }
     if (m_single) {
+        // The float copy starts with no change of velocity and no rotation (qc - 1 = 0).
         m_singleState.resize(n + 1);
         m_singleBase.resize(n + 1);
+        m_singleOrigin.resize(n + 1);
         for (size_t i = 0; i <= n; ++i) {
             const soft::BodyState& d = m_state[i];
-            m_singleState[i] = {static_cast<float>(d.vx),
-                                static_cast<float>(d.vy),
-                                static_cast<float>(d.w),
-                                static_cast<float>(d.invMass),
-                                0.0f,
-                                0.0f,
-                                1.0f,
-                                0.0f};
+            m_singleOrigin[i] = {d.vx, d.vy, d.w};
+            m_singleState[i] = {0.0f, 0.0f, 0.0f, static_cast<float>(d.invMass),
+                                0.0f, 0.0f, 0.0f, 0.0f};
         }
     }
     buildBlocks(contacts, bodies);
@@ -212,6 +209,21 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
         // share.
         p.normalImpulse[l] = ct.normalImpulse[static_cast<size_t>(i)] / substeps;
         p.tangentImpulse[l] = ct.tangentImpulse[static_cast<size_t>(i)] / substeps;
+        if constexpr (requires { p.origin.normalVelocity; }) {
+            // Single precision: the point's relative velocity at the start of the step, in
+            // double, which the bodies' floats leave out (OriginLanesOf); and the separation
+            // itself as the base, since the kernel turns the lever arms by the rotation less
+            // the identity (soft_kernel.h). With the lever arms whole in floats, a box 5 m from
+            // the centre of its slope had its separation to half a micrometre, and the soft push
+            // made that a creep of 1.4e-4 m/s.
+            const auto& oA = m_singleOrigin[ia];
+            const auto& oB = m_singleOrigin[ib];
+            const Vec2 dv =
+                Vec2(oB[0], oB[1]) + cross(oB[2], rB) - Vec2(oA[0], oA[1]) - cross(oA[2], rA);
+            p.origin.normalVelocity[l] = static_cast<float>(dv.dot(n));
+            p.origin.tangentVelocity[l] = static_cast<float>(dv.dot(t));
+            p.base[l] = static_cast<float>(cp.separation);
+        }
     }
     // A point the manifold lacks: zero masses, so zero impulses (a block filled again may
     // hold last step's second point here).
@@ -220,6 +232,8 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
         for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
                             p.normalImpulse, p.tangentImpulse})
             field[l] = 0.0;
+        if constexpr (requires { p.origin.normalVelocity; })
+            p.origin.normalVelocity[l] = p.origin.tangentVelocity[l] = 0.0f;
     }
 }
 
@@ -236,14 +250,15 @@ void SoftSolver::toSingle(bool motion)
         const auto i = static_cast<size_t>(id);
         const soft::BodyState& d = m_state[i];
         soft::SingleBodyState& f = m_singleState[i];
-        f.vx = static_cast<float>(d.vx);
-        f.vy = static_cast<float>(d.vy);
-        f.w = static_cast<float>(d.w);
+        const std::array<double, 3>& o = m_singleOrigin[i];
+        f.vx = static_cast<float>(d.vx - o[0]);
+        f.vy = static_cast<float>(d.vy - o[1]);
+        f.w = static_cast<float>(d.w - o[2]);
         m_singleBase[i] = {f.vx, f.vy, f.w};
         if (motion) {
             f.dpx = static_cast<float>(d.dpx);
             f.dpy = static_cast<float>(d.dpy);
-            f.qc = static_cast<float>(d.qc);
+            f.qc = static_cast<float>(d.qc - 1.0);
             f.qs = static_cast<float>(d.qs);
         }
     };
@@ -269,9 +284,10 @@ void SoftSolver::fromSingle()
         d.vx += static_cast<double>(f.vx) - static_cast<double>(base[0]);
         d.vy += static_cast<double>(f.vy) - static_cast<double>(base[1]);
         d.w += static_cast<double>(f.w) - static_cast<double>(base[2]);
-        f.vx = static_cast<float>(d.vx);
-        f.vy = static_cast<float>(d.vy);
-        f.w = static_cast<float>(d.w);
+        const std::array<double, 3>& o = m_singleOrigin[i];
+        f.vx = static_cast<float>(d.vx - o[0]);
+        f.vy = static_cast<float>(d.vy - o[1]);
+        f.w = static_cast<float>(d.w - o[2]);
         base = {f.vx, f.vy, f.w};
     }
 }

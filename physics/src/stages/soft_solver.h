@@ -141,9 +141,12 @@ private:
     void warmStartPins();
 
     /// Single precision: the velocities are the double state's (m_state), and the float copy
-    /// (m_singleState) is what the kernel's passes change. toSingle: each moving body's
-    /// velocity to the copy (motion: the displacements and rotations too, and the kinematic
-    /// bodies'); fromSingle: the change the passes made, back to the double velocities.
+    /// (m_singleState) is what the kernel's passes change. It holds each body's velocity less
+    /// its velocity at the start of the step (m_singleOrigin), and its rotation less the
+    /// identity (qc - 1, qs), so that a float rounds the change, not the speed or the lever
+    /// arm. toSingle: each moving body's velocity to the copy (motion: the displacements and
+    /// rotations too, and the kinematic bodies'); fromSingle: the change the passes made, back
+    /// to the double velocities.
     void toSingle(bool motion);
     void fromSingle();
 
@@ -176,6 +179,9 @@ private:
     std::vector<Vec2> m_acceleration;                 ///< per moving body [m/s^2]
     std::vector<double> m_angularAcceleration;        ///< per moving body [rad/s^2]
     std::vector<double> m_mass, m_inertia;            ///< per moving body
+    /// Per body, when m_single: its velocity at the start of the step [m/s, rad/s]; the float
+    /// copy holds the velocity less this (OriginLanesOf, soft_kernel.h).
+    std::vector<std::array<double, 3>> m_singleOrigin;
 
     std::vector<Vec2> m_drift;          ///< per body, empty: none (setDrift())
     std::vector<double> m_angularDrift; ///< per body

@@ -67,13 +67,13 @@ struct SoftStepSettings {
     /// give the same bits (soft_kernel.h).
     bool wideKernel = true;
     /// The contact passes (warm start, soft solve, relax) in single precision: eight lanes
-    /// with AVX2, four without, half the bytes per contact (Box2D v3's choice), 15-20 % of the
-    /// step on the bench's pyramids. The velocities stay double and take only the passes'
-    /// change, so a body no contact pushed keeps every bit (the isolated impacts stay exact);
-    /// but a resting or rolling body's float impulses miss the exactness tests (a disc sliding
-    /// into rolling by 5e-5 of its speed, a ball resting at dt = 0.1 s and longer), so it is
-    /// off. The collision phase, the positions and the energy books stay in double either
-    /// way; a world whose contacts touch a pin joint solves in double.
+    /// with AVX2, four without, half the bytes per contact (Box2D v3's choice). The velocities
+    /// stay double and take only the passes' change, so a body no contact pushed keeps every
+    /// bit; the floats hold what changed since the step began (soft_kernel.h), so a disc slides
+    /// into rolling and a box rests on a slope as in double. It is off: a resting body's float
+    /// impulses set its sink to 1.4e-6 of it, not 1e-6, and its speed at rest to 1e-8 m/s, not
+    /// 0 (docs/performance.md). The collision phase, the positions and the energy books stay in
+    /// double either way; a world whose contacts touch a pin joint solves in double.
     bool singlePrecision = false;
     /// Two polygons that moved less than this against each other since the full test made
     /// their manifold keep it (Box2D v3.2's contact recycling, narrow_phase.cpp): each point
