@@ -17,6 +17,7 @@
 #include <QLabel>
 #include <QPushButton>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -106,7 +107,9 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     form->addRow(tr("Speed |v|"), m_speed);
     form->addRow(tr("Angular vel. ω"), m_omega);
     form->addRow(tr("Kinetic energy"), m_energy);
-    form->addRow(angleUnitList());
+    // A row of its own, below the values (beside the angle it made that row too wide for a
+    // projector's side column).
+    form->addRow(tr("Unit of angles"), angleUnitList());
     form->addRow(schema::label(restitution), m_restitution);
     form->addRow(schema::label(friction), m_friction);
     m_graph = new QPushButton(tr("Graph…"), this);
@@ -121,8 +124,10 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     m_forces = new ForcesView(this);
     form->addRow(m_forces);
     for (QLabel* l :
-         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
+         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy}) {
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        l->setWordWrap(true); // at its spaces, beside its label in a narrow column
+    }
     connectEdits();
     connect(&m_controller, &SimulationController::worldChanged, this, &InspectorPanel::refresh);
     connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
@@ -169,8 +174,57 @@ void InspectorPanel::setBody(int id)
     refresh();
 }
 
+InspectorPanel::Shown InspectorPanel::shownNow() const
+{
+    Shown now;
+    now.body = m_body;
+    now.step = m_controller.world().stepCount();
+    now.degrees = anglesInDegrees();
+    now.running = m_controller.isRunning();
+    if (m_body >= 0) {
+        const physics::Body& b = m_controller.world().body(m_body);
+        now.numbers = {b.position.x(),
+                       b.position.y(),
+                       b.angle,
+                       b.velocity.x(),
+                       b.velocity.y(),
+                       b.angularVelocity,
+                       b.mass,
+                       b.inertia,
+                       b.restitution,
+                       b.friction,
+                       static_cast<double>(b.type)};
+    }
+    return now;
+}
+
 void InspectorPanel::refresh()
 {
+    // Out of sight in a window on screen: filled in when shown (a panel of its own, or in a
+    // window not shown, as tests make them, is filled in at once).
+    if (window()->isVisible() && !isVisible()) {
+        m_shown.reset();
+        return;
+    }
+    // A running clock's frame that took no step and left the body as it was changes nothing
+    // here (a stopped clock's changes are the student's: a setting, a body's material).
+    const Shown now = shownNow();
+    if (now.running && m_shown == now)
+        return;
+    m_shown = now;
+    fill();
+}
+
+void InspectorPanel::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (!m_shown)
+        refresh();
+}
+
+void InspectorPanel::fill()
+{
+    ++m_fills;
     const bool has = m_body >= 0;
     showRows(has);
     if (!has) {
@@ -216,6 +270,32 @@ void InspectorPanel::refresh()
     nameValues();
 }
 
+void InspectorPanel::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    fitLabels();
+}
+
+void InspectorPanel::fitLabels()
+{
+    // Two fifths of the width for the labels: "Moment setrvačnosti I" on two lines, its value
+    // beside it. At least a short word's width, so that a label never breaks inside a word.
+    const QMargins margins = m_form->contentsMargins();
+    const int width = contentsRect().width() - margins.left() - margins.right();
+    const int labels =
+        std::max(fontMetrics().averageCharWidth() * 10,
+                 static_cast<int>(0.4 * (width - std::max(0, m_form->horizontalSpacing()))));
+    for (int row = 0; row < m_form->rowCount(); ++row) {
+        QLayoutItem* item = m_form->itemAt(row, QFormLayout::LabelRole);
+        auto* label = item ? qobject_cast<QLabel*>(item->widget()) : nullptr;
+        if (!label)
+            continue;
+        label->setWordWrap(true);
+        if (label->maximumWidth() != labels)
+            label->setMaximumWidth(labels);
+    }
+}
+
 void InspectorPanel::labelRows(QFormLayout& form)
 {
     const QList<QLabel*> values{m_name,     m_mass,  m_inertia, m_position, m_angle,
@@ -256,7 +336,7 @@ void InspectorPanel::showRows(bool body)
         m_form->setRowVisible(row, body);
 }
 
-QWidget* InspectorPanel::angleUnitList()
+QComboBox* InspectorPanel::angleUnitList()
 {
     // Degrees first: the unit of a school's protractor. Radians for the formulas.
     m_angleUnit->addItem(tr("°", "angle unit: degrees"));
@@ -268,17 +348,7 @@ QWidget* InspectorPanel::angleUnitList()
     m_angleUnit->setToolTip(tr("Angles and angular velocities in degrees or in radians"));
     m_angleUnit->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     connect(m_angleUnit, &QComboBox::currentIndexChanged, this, &InspectorPanel::refresh);
-    // Across the form's width, its label beside it: in the field column, under the long
-    // labels of a narrow projector column, the list went below its label too.
-    auto* row = new QWidget(this);
-    auto* layout = new QHBoxLayout(row);
-    layout->setContentsMargins(0, 0, 0, 0);
-    auto* label = new QLabel(m_angleUnit->accessibleName(), row);
-    label->setBuddy(m_angleUnit);
-    layout->addWidget(label);
-    layout->addWidget(m_angleUnit);
-    layout->addStretch(1);
-    return row;
+    return m_angleUnit;
 }
 
 bool InspectorPanel::anglesInDegrees() const
