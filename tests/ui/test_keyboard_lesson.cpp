@@ -12,6 +12,7 @@
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 #include "window/main_window.h"
+#include "window/window_keyboard_sight.h"
 
 #include <QApplication>
 #include <QDockWidget>
@@ -35,6 +36,7 @@ using namespace rigidlab;
 using rigidlab::test::FocusWatch;
 using rigidlab::test::key;
 using rigidlab::test::showActiveOnProjector;
+using rigidlab::ui::inSightInWindow;
 using rigidlab::ui::MainWindow;
 
 namespace {
@@ -293,10 +295,17 @@ private slots:
                 return std::any_of(round.begin(), round.end(),
                                    [name](QWidget* r) { return r->objectName() == name; });
             };
-            QVERIFY2(reached("lessonChoice") && reached("lessonIntroToggle") &&
+            auto* toggle = w.findChild<QWidget*>(QStringLiteral("lessonIntroToggle"));
+            const bool toggleShown = toggle && toggle->isVisible() &&
+                                     (toggle->focusPolicy() & Qt::TabFocus) &&
+                                     toggle->isEnabled() && inSightInWindow(*toggle);
+            QStringList names;
+            for (QWidget* r : std::as_const(round))
+                names << QLatin1String(r->metaObject()->className()) + u' ' + r->objectName();
+            QVERIFY2(reached("lessonChoice") && (!toggleShown || reached("lessonIntroToggle")) &&
                          std::any_of(round.begin(), round.end(),
-                                     [](QWidget* r) { return qobject_cast<QTextBrowser*>(r); }),
-                     qPrintable(where + QStringLiteral(": %1 stops").arg(round.size())));
+                                     [](QWidget* r) { return r->inherits("QTextBrowser"); }),
+                     qPrintable(where + QStringLiteral(": ") + names.join(QStringLiteral(", "))));
             // Shift+Tab goes the same way back, through the answer to the scene.
             for (qsizetype k = round.size() - 1; k >= 0; --k) {
                 key(w, Qt::Key_Tab, Qt::ShiftModifier);

@@ -171,7 +171,10 @@ void InspectorPanel::setBody(int id)
         if (id != m_body)
             f->revert();
     m_body = id;
-    refresh();
+    // Filled in even out of sight: a choice of the student's, not a frame (the rows and their
+    // names are there for whatever reads them, and the frames skip them until shown).
+    m_shown = shownNow();
+    fill();
 }
 
 InspectorPanel::Shown InspectorPanel::shownNow() const
@@ -278,13 +281,13 @@ void InspectorPanel::resizeEvent(QResizeEvent* event)
 
 void InspectorPanel::fitLabels()
 {
-    // Two fifths of the width for the labels: "Moment setrvačnosti I" on two lines, its value
+    // Half of the width for the labels: "Moment setrvačnosti I" on two lines, its value
     // beside it. At least a short word's width, so that a label never breaks inside a word.
     const QMargins margins = m_form->contentsMargins();
     const int width = contentsRect().width() - margins.left() - margins.right();
     const int labels =
         std::max(fontMetrics().averageCharWidth() * 10,
-                 static_cast<int>(0.4 * (width - std::max(0, m_form->horizontalSpacing()))));
+                 static_cast<int>(0.5 * (width - std::max(0, m_form->horizontalSpacing()))));
     for (int row = 0; row < m_form->rowCount(); ++row) {
         QLayoutItem* item = m_form->itemAt(row, QFormLayout::LabelRole);
         auto* label = item ? qobject_cast<QLabel*>(item->widget()) : nullptr;

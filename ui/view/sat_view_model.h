@@ -59,7 +59,7 @@ private:
 
     const RunView& m_run;
     int m_a = -1, m_b = -1;
-    int m_shown = 1;
+    int m_shown = 0; ///< none before a pair is set
     bool m_all = false;
     physics::SatResult m_result;
     Tested m_tested; ///< at the last refresh

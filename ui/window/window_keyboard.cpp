@@ -202,7 +202,16 @@ void WindowKeyboard::showNumbers(int body)
     if (QDockWidget* dock = m_parts.layout.dock(QStringLiteral("inspector"))) {
         dock->show();
         dock->raise();
+        // Asked for, the numbers get room: at 1024x768 a lesson's table below left the
+        // inspector a sliver of its column (a few rows in sight, the table's head still).
+        const int least = m_parts.window.height() * 3 / 10;
+        if (dock->height() < least && m_parts.window.dockWidgetArea(dock) != Qt::NoDockWidgetArea &&
+            !dock->isFloating())
+            m_parts.window.resizeDocks({dock}, {least}, Qt::Vertical);
     }
+    // Laid out before the focus goes in: an inspector out of sight until now fills its rows
+    // in as it is shown (InspectorPanel::refresh), and the field must be where it is seen.
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
     // The mass is the number a student changes; the others follow it in the tab order.
     if (NumberField* mass = m_parts.inspector.massField(); mass && mass->isVisible())
         mass->setFocus(Qt::OtherFocusReason);
