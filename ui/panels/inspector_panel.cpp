@@ -107,9 +107,7 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     form->addRow(tr("Speed |v|"), m_speed);
     form->addRow(tr("Angular vel. ω"), m_omega);
     form->addRow(tr("Kinetic energy"), m_energy);
-    // A row of its own, below the values (beside the angle it made that row too wide for a
-    // projector's side column).
-    form->addRow(tr("Unit of angles"), angleUnitList());
+    form->addRow(angleUnitList());
     form->addRow(schema::label(restitution), m_restitution);
     form->addRow(schema::label(friction), m_friction);
     m_graph = new QPushButton(tr("Graph…"), this);
@@ -293,9 +291,13 @@ void InspectorPanel::fitLabels()
         auto* label = item ? qobject_cast<QLabel*>(item->widget()) : nullptr;
         if (!label)
             continue;
-        label->setWordWrap(true);
-        if (label->maximumWidth() != labels)
-            label->setMaximumWidth(labels);
+        // Only a label longer than that wraps: a short one wrapped too ("Mass" over "m") was
+        // cut, its row no taller than its value.
+        const bool wrap = label->fontMetrics().horizontalAdvance(label->text()) > labels;
+        label->setWordWrap(wrap);
+        const int most = wrap ? labels : QWIDGETSIZE_MAX;
+        if (label->maximumWidth() != most)
+            label->setMaximumWidth(most);
     }
 }
 
@@ -339,7 +341,7 @@ void InspectorPanel::showRows(bool body)
         m_form->setRowVisible(row, body);
 }
 
-QComboBox* InspectorPanel::angleUnitList()
+QWidget* InspectorPanel::angleUnitList()
 {
     // Degrees first: the unit of a school's protractor. Radians for the formulas.
     m_angleUnit->addItem(tr("°", "angle unit: degrees"));
@@ -351,7 +353,17 @@ QComboBox* InspectorPanel::angleUnitList()
     m_angleUnit->setToolTip(tr("Angles and angular velocities in degrees or in radians"));
     m_angleUnit->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     connect(m_angleUnit, &QComboBox::currentIndexChanged, this, &InspectorPanel::refresh);
-    return m_angleUnit;
+    // Across the form's width, its label beside it: in the field column, under the long
+    // labels of a narrow projector column, the list went below its label too.
+    auto* row = new QWidget(this);
+    auto* layout = new QHBoxLayout(row);
+    layout->setContentsMargins(0, 0, 0, 0);
+    auto* label = new QLabel(m_angleUnit->accessibleName(), row);
+    label->setBuddy(m_angleUnit);
+    layout->addWidget(label);
+    layout->addWidget(m_angleUnit);
+    layout->addStretch(1);
+    return row;
 }
 
 bool InspectorPanel::anglesInDegrees() const

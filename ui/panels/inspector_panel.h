@@ -73,8 +73,10 @@ private:
     Shown shownNow() const;
     /// Fills the rows in from the world as it is.
     void fill();
-    /// The angle's unit's choice (the list), for a row of its own.
-    QComboBox* angleUnitList();
+    /// The angle's unit's choice, on a row of its own with its label: beside the angle it made
+    /// the row too wide for a projector's side column, which then put the angle below its
+    /// label.
+    QWidget* angleUnitList();
     /// Without a body, one line says so instead of each row's dash.
     void showRows(bool body);
     /// A typed mass, restitution or friction to the body shown, through the controller.
