@@ -3542,6 +3542,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>empty</source>
         <translation>prázdné</translation>
     </message>
+    <message>
+        <source>Measuring the run so far…</source>
+        <translation>Měřím dosavadní běh…</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::ForcesView</name>

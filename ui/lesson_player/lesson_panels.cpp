@@ -59,9 +59,32 @@ QString vecStacked(const physics::Vec2& v)
         .arg(num(v.x()), num(v.y()));
 }
 
-/// The panel's layout: its note, the table at the height of its rows, and the export button.
-QPushButton* addTableAndExport(QVBoxLayout* layout, FittingTable* table, QWidget* parent)
+/// A line over the table while the run so far is measured again for it (a table opened after
+/// the run went unmeasured: SimulationController::setEventsShown), gone once it is up to date.
+/// The table's description says it too, so that a screen reader reading the table hears why
+/// rows are missing: one change when it starts and one when it is done, not one a slice.
+void addMeasuringNote(QVBoxLayout* layout, FittingTable* table, const RunView& run, QWidget* parent)
 {
+    auto* note = new QLabel(
+        QCoreApplication::translate("rigidlab::ui::FittingTable", "Measuring the run so far…"),
+        parent);
+    note->setObjectName(QStringLiteral("measuringNote"));
+    note->setWordWrap(true);
+    layout->addWidget(note);
+    const auto follow = [note, table](bool catchingUp) {
+        note->setVisible(catchingUp);
+        table->setAccessibleDescription(catchingUp ? note->text() : QString());
+    };
+    QObject::connect(&run, &RunView::eventsCatchingUpChanged, note, follow);
+    follow(run.eventsCatchingUp());
+}
+
+/// The panel's layout: its note, the line said while the run so far is measured again, the
+/// table at the height of its rows, and the export button.
+QPushButton* addTableAndExport(QVBoxLayout* layout, FittingTable* table, const RunView& run,
+                               QWidget* parent)
+{
+    addMeasuringNote(layout, table, run, parent);
     layout->addWidget(table);
     // Short: the button must fit the narrow column at the projector's text size.
     auto* button = new QPushButton(
@@ -131,7 +154,7 @@ BouncePanel::BouncePanel(const RunView& controller, QWidget* parent)
                             this);
     note->setWordWrap(true);
     layout->addWidget(note);
-    addTableAndExport(layout, m_table, this);
+    addTableAndExport(layout, m_table, m_controller, this);
     connect(&m_controller, &RunView::worldChanged, this, &BouncePanel::refresh);
     connect(&m_controller, &RunView::sceneLoaded, this, &BouncePanel::refresh);
     refreshNow();
@@ -248,7 +271,7 @@ CollisionPanel::CollisionPanel(const RunView& controller, QWidget* parent)
     auto* layout = new QVBoxLayout(this);
     m_title->setWordWrap(true);
     layout->addWidget(m_title);
-    addTableAndExport(layout, m_table, this);
+    addTableAndExport(layout, m_table, m_controller, this);
     layout->insertWidget(layout->count() - 1, m_formula); // above the closing stretch
     connect(&m_controller, &RunView::worldChanged, this, &CollisionPanel::refresh);
     connect(&m_controller, &RunView::sceneLoaded, this, [this] {

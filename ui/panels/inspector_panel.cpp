@@ -17,6 +17,7 @@
 #include <QLabel>
 #include <QPushButton>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -121,8 +122,10 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     m_forces = new ForcesView(this);
     form->addRow(m_forces);
     for (QLabel* l :
-         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy})
+         {m_name, m_mass, m_inertia, m_position, m_angle, m_velocity, m_speed, m_omega, m_energy}) {
         l->setTextInteractionFlags(Qt::TextSelectableByMouse);
+        l->setWordWrap(true); // at its spaces, beside its label in a narrow column
+    }
     connectEdits();
     connect(&m_controller, &SimulationController::worldChanged, this, &InspectorPanel::refresh);
     connect(&m_controller, &SimulationController::sceneLoaded, this, [this] {
@@ -166,11 +169,63 @@ void InspectorPanel::setBody(int id)
         if (id != m_body)
             f->revert();
     m_body = id;
-    refresh();
+    // Filled in even out of sight: a choice of the student's, not a frame (the rows and their
+    // names are there for whatever reads them, and the frames skip them until shown).
+    m_shown = shownNow();
+    fill();
+}
+
+InspectorPanel::Shown InspectorPanel::shownNow() const
+{
+    Shown now;
+    now.body = m_body;
+    now.step = m_controller.world().stepCount();
+    now.degrees = anglesInDegrees();
+    now.running = m_controller.isRunning();
+    if (m_body >= 0) {
+        const physics::Body& b = m_controller.world().body(m_body);
+        now.numbers = {b.position.x(),
+                       b.position.y(),
+                       b.angle,
+                       b.velocity.x(),
+                       b.velocity.y(),
+                       b.angularVelocity,
+                       b.mass,
+                       b.inertia,
+                       b.restitution,
+                       b.friction,
+                       static_cast<double>(b.type)};
+    }
+    return now;
 }
 
 void InspectorPanel::refresh()
 {
+    // Out of sight in a window on screen: filled in when shown (a panel of its own, or in a
+    // window not shown, as tests make them, is filled in at once).
+    if (window()->isVisible() && !isVisible()) {
+        m_shown.reset();
+        return;
+    }
+    // A running clock's frame that took no step and left the body as it was changes nothing
+    // here (a stopped clock's changes are the student's: a setting, a body's material).
+    const Shown now = shownNow();
+    if (now.running && m_shown == now)
+        return;
+    m_shown = now;
+    fill();
+}
+
+void InspectorPanel::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (!m_shown)
+        refresh();
+}
+
+void InspectorPanel::fill()
+{
+    ++m_fills;
     const bool has = m_body >= 0;
     showRows(has);
     if (!has) {
@@ -214,6 +269,36 @@ void InspectorPanel::refresh()
     m_restitution->setValue(b.restitution);
     m_friction->setValue(b.friction);
     nameValues();
+}
+
+void InspectorPanel::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    fitLabels();
+}
+
+void InspectorPanel::fitLabels()
+{
+    // Half of the width for the labels: "Moment setrvačnosti I" on two lines, its value
+    // beside it. At least a short word's width, so that a label never breaks inside a word.
+    const QMargins margins = m_form->contentsMargins();
+    const int width = contentsRect().width() - margins.left() - margins.right();
+    const int labels =
+        std::max(fontMetrics().averageCharWidth() * 10,
+                 static_cast<int>(0.5 * (width - std::max(0, m_form->horizontalSpacing()))));
+    for (int row = 0; row < m_form->rowCount(); ++row) {
+        QLayoutItem* item = m_form->itemAt(row, QFormLayout::LabelRole);
+        auto* label = item ? qobject_cast<QLabel*>(item->widget()) : nullptr;
+        if (!label)
+            continue;
+        // Only a label longer than that wraps: a short one wrapped too ("Mass" over "m") was
+        // cut, its row no taller than its value.
+        const bool wrap = label->fontMetrics().horizontalAdvance(label->text()) > labels;
+        label->setWordWrap(wrap);
+        const int most = wrap ? labels : QWIDGETSIZE_MAX;
+        if (label->maximumWidth() != most)
+            label->setMaximumWidth(most);
+    }
 }
 
 void InspectorPanel::labelRows(QFormLayout& form)

@@ -8,6 +8,8 @@
 #include <QList>
 #include <QWidget>
 
+#include <array>
+#include <optional>
 #include <utility>
 
 class QFormLayout;
@@ -34,6 +36,9 @@ public:
     /// Angles and angular velocities in degrees (the default) or radians.
     bool anglesInDegrees() const;
     void setAnglesInDegrees(bool degrees);
+    /// How many times the rows were filled in (for tests: a frame that changed nothing the
+    /// panel shows, or a frame while it is out of sight, fills in nothing).
+    int fillCount() const { return m_fills; }
 
 signals:
     /// A typed value was refused; `message` names the allowed range (for the status bar).
@@ -44,9 +49,30 @@ signals:
 public slots:
     /// Shows body `id` (-1: none). An edit in progress is taken for the body shown before.
     void setBody(int id);
+    /// The rows again for the world as it is, where they would change: not while the panel is
+    /// out of sight in a window on screen (behind another dock's tab, its dock closed; it
+    /// fills them in when shown), and not for a frame of the running clock that changed
+    /// nothing it shows (no step, the body as it was).
     void refresh();
 
+protected:
+    void showEvent(QShowEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
+
 private:
+    /// What the rows were filled in from: the body, the world's step, the body's own numbers
+    /// and the choices the rows follow.
+    struct Shown {
+        int body = -1;
+        long long step = 0;
+        std::array<double, 11> numbers{};
+        bool degrees = true;
+        bool running = false;
+        bool operator==(const Shown&) const = default;
+    };
+    Shown shownNow() const;
+    /// Fills the rows in from the world as it is.
+    void fill();
     /// The angle's unit's choice, on a row of its own with its label: beside the angle it made
     /// the row too wide for a projector's side column, which then put the angle below its
     /// label.
@@ -59,6 +85,11 @@ private:
     /// screen reader says which number it reads.
     void labelRows(QFormLayout& form);
     void nameValues();
+    /// The rows' labels at most a share of the panel's width, wrapped onto a second line past
+    /// it, and the values wrapped at their spaces: in a projector's narrow side column (about
+    /// 200 px at 1024 px wide) each value stays beside its label, in either language, and
+    /// nothing is cut or scrolled sideways. In a wide column nothing wraps.
+    void fitLabels();
 
     SimulationController& m_controller;
     int m_body = -1;
@@ -82,6 +113,8 @@ private:
     QPushButton* m_graph = nullptr; ///< Graph… of the body shown
     NumberField* m_restitution;
     NumberField* m_friction;
+    std::optional<Shown> m_shown; ///< what the rows show; none when they are to be filled in
+    int m_fills = 0;              ///< see fillCount()
 };
 
 } // namespace rigidlab::ui

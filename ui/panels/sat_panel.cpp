@@ -66,7 +66,7 @@ SatPanel::SatPanel(const RunView& run, QWidget* parent)
     buildButtons(layout);
     connect(&m_run, &RunView::worldChanged, this, &SatPanel::refresh);
     fitFonts();
-    refresh();
+    updateTable();
 }
 
 void SatPanel::buildTable()
@@ -259,13 +259,35 @@ void SatPanel::showAll()
 
 void SatPanel::refresh()
 {
+    // Nothing to do for a pair that did not move (every frame of a running clock, a pile at
+    // rest): the axes, the overlay and the table stay as they are.
+    if (!m_model.outOfDate()) {
+        if (m_tableBehind && !outOfSight())
+            updateTable();
+        return;
+    }
     if (m_overlay)
         m_overlay->dataChanging();
-    const bool moved = m_model.refresh();
-    updateTable();
+    m_model.refresh();
+    // The overlay in the view reads the model; the table, out of sight, is filled in when shown.
+    if (outOfSight())
+        m_tableBehind = true;
+    else
+        updateTable();
     // Follow only a pair that moved, so that a student's own zoom holds while nothing moves.
-    if (moved)
-        followAxis(false);
+    followAxis(false);
+}
+
+bool SatPanel::outOfSight() const
+{
+    return window()->isVisible() && !isVisible();
+}
+
+void SatPanel::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (m_tableBehind)
+        updateTable();
 }
 
 WorldView* SatPanel::worldView()
@@ -326,6 +348,8 @@ void SatPanel::followAxis(bool always)
 
 void SatPanel::updateTable()
 {
+    m_tableBehind = false;
+    ++m_tableFills;
     const physics::SatResult& result = m_model.result();
     const int total = static_cast<int>(result.axes.size());
     const int shown = m_model.shown();

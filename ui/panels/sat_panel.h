@@ -52,20 +52,29 @@ public:
     const QTableWidget& table() const { return *m_table; }
     /// The axes shown, as "Export as CSV…" in the table's context menu writes them.
     CsvTable csv() const;
+    /// How many times the table was filled in (for tests: not for a frame in which the pair
+    /// stood still, nor while the panel is out of sight).
+    int tableFillCount() const { return m_tableFills; }
 
 public slots:
     void nextAxis();
     void previousAxis();
     void showAll();
+    /// Tests the pair again where it moved or changed shape; the table, out of sight (behind
+    /// another dock's tab, its dock closed, in a window on screen), when it is shown again.
     void refresh();
 
 protected:
     bool eventFilter(QObject* watched, QEvent* event) override;
     void resizeEvent(QResizeEvent* event) override;
     void changeEvent(QEvent* event) override;
+    void showEvent(QShowEvent* event) override;
 
 private:
     void updateTable();
+    /// In a window on screen, but not shown (a widget of its own, or in a window not shown, as
+    /// tests make them, is never out of sight).
+    bool outOfSight() const;
     /// Row `i` of the table: its three cells and the tooltip that explains them.
     struct RowText {
         QStringList cells;
@@ -99,6 +108,8 @@ private:
     QPushButton* m_all_button;
     QBoxLayout* m_buttons;      ///< Previous, Next, All
     QPointer<WorldView> m_view; ///< the view whose Fit scene includes the overlay
+    bool m_tableBehind = false; ///< the model changed while the table was out of sight
+    int m_tableFills = 0;       ///< see tableFillCount()
 };
 
 } // namespace rigidlab::ui

@@ -70,6 +70,10 @@ public:
     virtual const SettingEditLog& editLog() const = 0;
     /// The grab spring: which body is held, and where the spring runs.
     virtual const GrabSpring& grabSpring() const = 0;
+    /// Whether the run so far is being measured again for a table opened late (the bounces,
+    /// the collision): its events are not all in yet. A slice a turn of the event loop;
+    /// eventsCatchingUpChanged says when it starts and when it is done.
+    virtual bool eventsCatchingUp() const = 0;
 
 signals:
     void sceneLoaded();
@@ -85,6 +89,8 @@ signals:
     void rewound(double t);
     /// Samples were cleared (new scene, reset).
     void samplesCleared();
+    /// eventsCatchingUp() changed.
+    void eventsCatchingUpChanged(bool catchingUp);
     /// A body left the stage at time t [s] and the run paused.
     void leftStage(physics::BodyId body, double t);
     /// Frames asked for were measured: each frame's wall time and physics time [ms].

@@ -131,14 +131,27 @@ void SimulationController::catchUpEvents()
 {
     m_eventReplay.reset();
     m_eventReplayTimer.stop();
-    if (!m_watch.measuring() || !m_watch.behind())
+    if (!m_watch.measuring() || !m_watch.behind()) {
+        setCatchingUp(false);
         return;
+    }
     // Bit for bit the run's states (history.h), so the same events as if measured all along:
     // from the start while the history reaches back to it. The present steps on meanwhile,
     // unmeasured (LessonWatch::observe), until the replay reaches it.
     m_eventReplay = m_history.restore(m_history.earliest());
     m_watch.measureFrom(*m_eventReplay);
     replayEventSlice();
+    // Said only for a replay that takes more than its first slice (a short run is measured
+    // again before the window draws).
+    setCatchingUp(m_eventReplay.has_value());
+}
+
+void SimulationController::setCatchingUp(bool on)
+{
+    if (on == m_catchingUp)
+        return;
+    m_catchingUp = on;
+    emit eventsCatchingUpChanged(on);
 }
 
 void SimulationController::replayEventSlice()
@@ -163,20 +176,29 @@ void SimulationController::replayEventSlice()
     }
     m_eventReplay.reset();
     m_watch.caughtUp();
+    setCatchingUp(false);
     emit worldChanged(); // the tables show the whole run
 }
 
-Pose SimulationController::drawPose(physics::BodyId id) const
+Pose SimulationController::drawPose(physics::BodyId id, const Pose* drawn) const
 {
     const physics::Body& b = m_world.body(id);
-    Pose now{b.origin(), b.angle};
+    physics::Vec2 centre = b.position;
+    double angle = b.angle;
     const auto i = static_cast<std::size_t>(id);
-    if (!m_running || i >= m_previousPoses.size())
-        return now;
-    const double alpha = std::clamp(m_catchUp.owed() / m_world.def().dt, 0.0, 1.0);
-    const Pose& before = m_previousPoses[i];
-    return {before.origin + alpha * (now.origin - before.origin),
-            before.angle + alpha * (now.angle - before.angle)};
+    if (m_running && i < m_previousPoses.size()) {
+        // A rigid motion between the two steps: the centre of mass on a line, the body turning
+        // about it.
+        const double alpha = std::clamp(m_catchUp.owed() / m_world.def().dt, 0.0, 1.0);
+        const auto& [beforeCentre, beforeAngle] = m_previousPoses[i];
+        centre = beforeCentre + alpha * (centre - beforeCentre);
+        angle = beforeAngle + alpha * (angle - beforeAngle);
+    }
+    if (drawn && drawn->centre == centre && drawn->angle == angle)
+        return *drawn;
+    // Body::transform()'s placement, at the pose drawn.
+    const physics::Rotation q(angle);
+    return {centre - q.apply(b.localCenter), angle, q, centre};
 }
 
 void SimulationController::setRunning(bool running)
@@ -209,7 +231,7 @@ void SimulationController::doStep()
     }
     m_previousPoses.resize(m_world.bodies().size());
     for (std::size_t i = 0; i < m_world.bodies().size(); ++i)
-        m_previousPoses[i] = {m_world.bodies()[i].origin(), m_world.bodies()[i].angle};
+        m_previousPoses[i] = {m_world.bodies()[i].position, m_world.bodies()[i].angle};
     if (input)
         applyInput(m_world, *input);
     m_world.step();

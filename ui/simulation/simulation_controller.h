@@ -30,14 +30,18 @@
 
 #include <optional>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace rigidlab::ui {
 
-/// A body pose for drawing [m, rad].
+/// A body pose for drawing: where its origin is [m], its angle [rad] with that angle's cosine
+/// and sine (computed once, for the view's transform), and where its centre of mass is [m].
 struct Pose {
     physics::Vec2 origin = physics::Vec2::Zero();
     double angle = 0.0;
+    physics::Rotation rotation;
+    physics::Vec2 centre = physics::Vec2::Zero();
 };
 
 class SimulationController : public RunView {
@@ -83,6 +87,7 @@ public:
     /// Whether the events are measured up to the present step (false while nothing reads them,
     /// and while a table opened late has the run so far measured again).
     bool eventsUpToDate() const { return m_watch.measuring() && !m_watch.behind(); }
+    bool eventsCatchingUp() const override { return m_catchingUp; }
     /// The longest a slice of that replay may run before the window's next turn [ms]; 0 gives
     /// one step a slice (a test's).
     void setEventReplaySlice(int ms) { m_eventReplaySliceMs = ms; }
@@ -95,8 +100,11 @@ public:
     /// --measure-frames).
     void measureFrames(int frames) { m_timing.measureFrames(frames); }
 
-    /// The body pose to draw: between the last two steps, by how far the clock is into the next.
-    Pose drawPose(physics::BodyId id) const;
+    /// The body pose to draw: between the last two steps, by how far the clock is into the next
+    /// (its centre of mass and its angle, the origin placed from them: one sine and one cosine
+    /// a body). A body whose centre and angle are those of `drawn`, the pose drawn last, gets
+    /// `drawn` back, without computing them again (a body at rest, the ground).
+    Pose drawPose(physics::BodyId id, const Pose* drawn = nullptr) const;
 
     /// Makes `edit` as its setter would, now (at whatever step the world is).
     void applyEdit(const SettingEdit& edit);
@@ -179,13 +187,16 @@ private:
     void catchUpEvents();
     /// One slice of that replay; the timer brings the next while the present is not reached.
     void replayEventSlice();
+    /// Sets eventsCatchingUp(), saying so when it changes.
+    void setCatchingUp(bool on);
     template <typename Fn> void forEachWorld(Fn&& fn);
 
     lessons::Scene m_scene;
     QString m_path;
     physics::World m_world;
     physics::World m_worldStart; ///< as loaded, for reset
-    std::vector<Pose> m_previousPoses;
+    /// Each body's centre of mass [m] and angle [rad] before the last step, for drawPose.
+    std::vector<std::pair<physics::Vec2, double>> m_previousPoses;
     History m_history;
     SampleRecorder m_sampler;
     physics::Vec2 m_sceneGravity = physics::Vec2::Zero();
@@ -202,7 +213,8 @@ private:
     std::optional<physics::World> m_eventReplay; ///< the run walked again for its events
     QTimer m_eventReplayTimer;
     int m_eventReplaySliceMs = 5;
-    CatchUp m_catchUp; ///< the simulated time owed, and how much of it a frame pays
+    bool m_catchingUp = false; ///< see eventsCatchingUp()
+    CatchUp m_catchUp;         ///< the simulated time owed, and how much of it a frame pays
     double m_timeScale = 1.0;
     bool m_running = false;
     bool m_stepsHeld = false;        ///< see setStepsHeld

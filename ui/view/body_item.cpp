@@ -52,17 +52,17 @@ BodyItem::BodyItem(int bodyId, const physics::Shape& shape, int kind, QColor fil
     setZValue(kind == 1 ? 0 : 1);
 }
 
-void BodyItem::setPose(double x, double y, double angle)
+void BodyItem::setPose(double x, double y, double angle, const physics::Rotation& rotation)
 {
     // One transform instead of a position and a rotation in degrees, which Qt would turn back
     // into a sine and a cosine. As QTransform(m11, m12, m21, m22, dx, dy) maps a row vector:
     // rotated by the angle, then moved to the origin. The view flips y, so a positive angle
-    // turns counter-clockwise on screen. A body at rest is given the pose it has: no sine, no
-    // cosine and no new transform for it (the ground, a sleeping pile), every frame.
+    // turns counter-clockwise on screen. A body at rest is given the pose it has: no new
+    // transform for it (the ground, a sleeping pile), every frame.
     if (x == m_pose[0] && y == m_pose[1] && angle == m_pose[2])
         return;
     m_pose = {x, y, angle};
-    const double c = std::cos(angle), s = std::sin(angle);
+    const double c = rotation.c, s = rotation.s;
     m_frame = QTransform(c, s, -s, c, x, y);
 }
 

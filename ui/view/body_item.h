@@ -6,6 +6,7 @@
 // geometry that picking, the labels and the screen reader ask for (its scene bounding box,
 // its outline).
 
+#include "rigidlab/physics/math.h"
 #include "rigidlab/physics/shape.h"
 
 #include <QColor>
@@ -33,7 +34,9 @@ public:
     /// then the body's frame in the scene: rotation by the angle, then the origin. The item's
     /// own transform() stays the identity: it is in no scene, and Qt's setTransform() (its
     /// notifications and its copy) was a per cent of the frame of a 5,050-body pyramid.
-    void setPose(double x, double y, double angle);
+    /// `rotation` is the angle's cosine and sine, computed once by whoever gave the pose
+    /// (SimulationController::drawPose, Body::transform()).
+    void setPose(double x, double y, double angle, const physics::Rotation& rotation);
     /// The body's frame in the scene, as setPose made it.
     const QTransform& frame() const { return m_frame; }
     /// The drawn outline's bounding box in the scene [m] (what sceneBoundingRect() would give

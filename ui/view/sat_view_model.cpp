@@ -18,6 +18,7 @@ void SatViewModel::setBodies(int a, int b)
     m_shown = 1;
     m_all = false;
     refresh();
+    settle();
 }
 
 void SatViewModel::nextAxis()
@@ -48,7 +49,7 @@ void SatViewModel::settle()
     m_shown = std::clamp(m_shown, std::min(1, total), total);
 }
 
-bool SatViewModel::refresh()
+SatViewModel::Tested SatViewModel::testedNow() const
 {
     // The pair was checked to be two polygons when it was set; a world replaced since is
     // checked again rather than trusted.
@@ -57,20 +58,33 @@ bool SatViewModel::refresh()
     const bool inWorld = active() && m_a < n && m_b < n;
     const physics::Polygon* pa = inWorld ? world.body(m_a).shape.asPolygon() : nullptr;
     const physics::Polygon* pb = inWorld ? world.body(m_b).shape.asPolygon() : nullptr;
-    if (!pa || !pb) {
-        m_result = physics::SatResult{};
-        settle();
-        return false;
-    }
+    if (!pa || !pb)
+        return {};
     const physics::Body& a = world.body(m_a);
     const physics::Body& b = world.body(m_b);
-    m_result = physics::satPolygons(*pa, a.transform(), *pb, b.transform());
-    settle();
-    const std::array<double, 6> poses{a.position.x(), a.position.y(), a.angle,
-                                      b.position.x(), b.position.y(), b.angle};
-    if (poses == m_poses)
+    return {m_a,
+            m_b,
+            {a.position.x(), a.position.y(), a.angle, b.position.x(), b.position.y(), b.angle},
+            pa->vertices,
+            pb->vertices};
+}
+
+bool SatViewModel::refresh()
+{
+    Tested now = testedNow();
+    if (now == m_tested)
         return false;
-    m_poses = poses;
+    m_tested = std::move(now);
+    if (m_tested.a < 0) {
+        m_result = physics::SatResult{};
+    } else {
+        const auto& world = m_run.world();
+        const physics::Body& a = world.body(m_a);
+        const physics::Body& b = world.body(m_b);
+        m_result = physics::satPolygons(*a.shape.asPolygon(), a.transform(), *b.shape.asPolygon(),
+                                        b.transform());
+    }
+    settle();
     return true;
 }
 

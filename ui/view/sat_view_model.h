@@ -7,6 +7,7 @@
 #include "rigidlab/physics/sat.h"
 
 #include <array>
+#include <vector>
 
 namespace rigidlab::ui {
 
@@ -23,8 +24,12 @@ public:
     void previousAxis();
     /// Every axis, up to the verdict (and again after each refresh, until a step back).
     void showAll();
-    /// Tests the pair again in the world as it is now. Returns whether either body moved or
-    /// turned since the last refresh.
+    /// Whether the pair, a pose or a shape of it differs from the world's since the last
+    /// refresh (the test then would give another result).
+    bool outOfDate() const { return m_tested != testedNow(); }
+    /// Tests the pair again in the world as it is now, where outOfDate() (the separating-axis
+    /// test is not made again for a pair that did not move). Returns whether it was out of
+    /// date.
     bool refresh();
 
     bool active() const { return m_a >= 0 && m_b >= 0; }
@@ -41,13 +46,23 @@ private:
     /// `m_shown` within the axes tested (all of them after showAll()).
     void settle();
 
+    /// What a test was made of: the pair, its poses (x, y [m], angle [rad], A then B) and its
+    /// outlines; an inactive pair has none.
+    struct Tested {
+        int a = -1, b = -1;
+        std::array<double, 6> poses{};
+        std::vector<physics::Vec2> outlineA, outlineB;
+        bool operator==(const Tested&) const = default;
+    };
+    /// The pair in the world as it is now; inactive when either is not a polygon (any more).
+    Tested testedNow() const;
+
     const RunView& m_run;
     int m_a = -1, m_b = -1;
-    int m_shown = 1;
+    int m_shown = 0; ///< none before a pair is set
     bool m_all = false;
     physics::SatResult m_result;
-    /// The pair's poses at the last refresh: x, y [m], angle [rad], for A then B.
-    std::array<double, 6> m_poses{};
+    Tested m_tested; ///< at the last refresh
 };
 
 } // namespace rigidlab::ui

@@ -22,14 +22,6 @@ namespace rigidlab::ui {
 
 namespace {
 
-physics::Transform transformAt(const physics::Vec2& origin, double angle)
-{
-    physics::Transform t;
-    t.q = physics::Rotation(angle);
-    t.p = origin;
-    return t;
-}
-
 /// Whether a body at p is a sane sight in the view showing `shown` (anywhere, before the
 /// view has a size).
 bool inSight(const QRectF& shown, const physics::Vec2& p)
@@ -115,6 +107,7 @@ void WorldView::rebuild()
 {
     m_bodiesItem->setBodies({});
     m_items.clear();
+    m_itemPoses.clear(); // another scene's bodies: their poses are no cache for these
     m_ghosts.clear();
     const bool comparing = !m_controller.variantLabels().isEmpty();
     m_selected = -1;
@@ -194,18 +187,24 @@ void WorldView::syncMainPoses(const QRectF& shown)
 {
     const physics::World& main = m_controller.world();
     const bool mainFrozen = main.divergence() && m_drawnRunning[0];
+    // A body that stands where it was drawn last keeps that pose: no sine and no cosine for the
+    // ground or a resting pile.
+    const bool known = m_itemPoses.size() == m_items.size();
     std::vector<Pose> poses(m_items.size());
     bool mainSane = !main.divergence();
     for (std::size_t i = 0; i < m_items.size(); ++i) {
-        poses[i] = m_controller.drawPose(static_cast<physics::BodyId>(i));
+        poses[i] = m_controller.drawPose(static_cast<physics::BodyId>(i),
+                                         known ? &m_itemPoses[i] : nullptr);
         mainSane = mainSane && inSight(shown, poses[i].origin);
     }
-    if (mainSane || !m_drawnRunning[0])
-        m_itemPoses = poses;
+    const bool keep = mainSane || !m_drawnRunning[0];
+    if (keep)
+        m_itemPoses.swap(poses);
     const std::vector<Pose>& drawn =
-        mainFrozen && m_itemPoses.size() == poses.size() ? m_itemPoses : poses;
+        keep || (mainFrozen && m_itemPoses.size() == poses.size()) ? m_itemPoses : poses;
     for (std::size_t i = 0; i < m_items.size(); ++i)
-        m_items[i]->setPose(drawn[i].origin.x(), drawn[i].origin.y(), drawn[i].angle);
+        m_items[i]->setPose(drawn[i].origin.x(), drawn[i].origin.y(), drawn[i].angle,
+                            drawn[i].rotation);
     m_drawnRunning[0] = m_drawnRunning[0] || mainSane;
 }
 
@@ -213,26 +212,30 @@ void WorldView::syncGhostPoses(const QRectF& shown)
 {
     const std::size_t worlds = m_drawnRunning.size();
     std::vector<bool> sane(worlds, true);
-    for (const Ghost& g : m_ghosts) {
+    // Each ghost's placement once a frame (one sine and one cosine), for both passes.
+    std::vector<physics::Transform> placed(m_ghosts.size());
+    for (std::size_t k = 0; k < m_ghosts.size(); ++k) {
+        const Ghost& g = m_ghosts[k];
         const physics::World& vw = m_controller.variant(g.variant);
-        const physics::Vec2 o =
-            vw.body(g.body).origin() + (g.variant + 1) * m_controller.variantOffset();
+        placed[k] = vw.body(g.body).transform();
+        const physics::Vec2 o = placed[k].p + (g.variant + 1) * m_controller.variantOffset();
         const auto w = static_cast<std::size_t>(g.variant) + 1;
         sane[w] = sane[w] && !vw.divergence() && inSight(shown, o);
     }
-    for (Ghost& g : m_ghosts) {
+    for (std::size_t k = 0; k < m_ghosts.size(); ++k) {
+        Ghost& g = m_ghosts[k];
         const physics::World& vw = m_controller.variant(g.variant);
         const auto w = static_cast<std::size_t>(g.variant) + 1;
-        const physics::Body& b = vw.body(g.body);
+        const physics::Transform& t = placed[k];
         const physics::Vec2 shift = (g.variant + 1) * m_controller.variantOffset();
         if (sane[w] || !m_drawnRunning[w])
-            g.pose = transformAt(b.origin(), b.angle);
+            g.pose = t;
         if (vw.divergence() && m_drawnRunning[w]) {
             const physics::Vec2 o = g.pose.p + shift;
-            g.item->setPose(o.x(), o.y(), std::atan2(g.pose.q.s, g.pose.q.c));
+            g.item->setPose(o.x(), o.y(), std::atan2(g.pose.q.s, g.pose.q.c), g.pose.q);
         } else {
-            const physics::Vec2 o = b.origin() + shift;
-            g.item->setPose(o.x(), o.y(), b.angle);
+            const physics::Vec2 o = t.p + shift;
+            g.item->setPose(o.x(), o.y(), vw.body(g.body).angle, t.q);
         }
     }
     for (std::size_t w = 1; w < worlds; ++w)
@@ -275,7 +278,10 @@ std::optional<physics::Transform> WorldView::frozenPose(int world, physics::Body
         if (body < 0 || static_cast<std::size_t>(body) >= m_itemPoses.size())
             return std::nullopt;
         const Pose& pose = m_itemPoses[static_cast<std::size_t>(body)];
-        return transformAt(pose.origin, pose.angle);
+        physics::Transform t;
+        t.p = pose.origin;
+        t.q = pose.rotation;
+        return t;
     }
     for (const Ghost& g : m_ghosts)
         if (g.variant == world - 1 && g.body == static_cast<int>(body))

@@ -171,8 +171,9 @@ private:
     SceneNarrator* m_narrator;
     BodiesItem* m_bodiesItem; ///< paints m_items and the ghosts; owned by the scene
     std::vector<std::unique_ptr<BodyItem>> m_items; ///< indexed by body id; not in the scene
-    /// As last drawn while the main world ran: an origin and an angle, the sine and cosine
-    /// made only for a world that stopped (frozenPose), not for each body in each frame.
+    /// As last drawn while the main world ran, with its sine and cosine: the pose a world that
+    /// stopped keeps (frozenPose), and the next frame's poses of the bodies that did not move
+    /// (SimulationController::drawPose).
     std::vector<Pose> m_itemPoses;
     /// Per world (0 the main one): whether it was drawn running since the last rebuild, so
     /// that once stopped it is drawn frozen there rather than where it flew off to.

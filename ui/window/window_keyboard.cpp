@@ -27,6 +27,7 @@
 #include <QPalette>
 #include <QSettings>
 
+#include <algorithm>
 #include <array>
 
 namespace rigidlab::ui {
@@ -83,6 +84,7 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     parts.view.installEventFilter(this);
     lessonFollowsScene();
     connect(&parts.player, &LessonPlayer::stepActivated, this, &WindowKeyboard::lessonFollowsScene);
+    connect(&parts.player, &LessonPlayer::tabsOrdered, this, &WindowKeyboard::lessonFollowsScene);
     connect(&parts.player, &LessonPlayer::lessonClosed, this, &WindowKeyboard::lessonFollowsScene);
     for (std::size_t i = 0; i < kEffects.size(); ++i)
         m_effectsBefore[i] = QApplication::isEffectEnabled(kEffects[i]);
@@ -100,7 +102,8 @@ bool WindowKeyboard::eventFilter(QObject* watched, QEvent* event)
 {
     // A student working in the scene who is asked something answers next: Tab goes to the
     // step's answer, not through the lesson panel's list of lessons and the step's text first.
-    // From there Tab and Shift+Tab go on in the panel's own order. On a step that asks nothing
+    // From there Tab and Shift+Tab go on in the order lessonFollowsScene gave the panel. On a
+    // step that asks nothing
     // (or nothing more), or with the lesson out of sight, Tab goes where it always goes.
     if (watched == &m_parts.view && event->type() == QEvent::KeyPress) {
         const auto* key = static_cast<const QKeyEvent*>(event);
@@ -127,6 +130,15 @@ void WindowKeyboard::lessonFollowsScene()
     for (QWidget* w = start->nextInFocusChain(); w && w != start; w = w->nextInFocusChain())
         if (lesson->isAncestorOf(w) && (w->focusPolicy() & Qt::TabFocus))
             stops << w;
+    // On a step that asks something the panel's round starts at its questions, as Tab from
+    // the scene does (eventFilter): the answers, Check and the step's buttons, then what the
+    // panel shows above them (the list of lessons, the introduction, the step's text), and
+    // then the other panels. A forward round from the scene reaches every one of them, and
+    // Shift+Tab goes the same way back, to the scene.
+    const QList<QWidget*> asked = m_parts.player.questionStops();
+    const auto first = std::find_if(stops.begin(), stops.end(),
+                                    [&asked](QWidget* w) { return asked.contains(w); });
+    std::rotate(stops.begin(), first, stops.end());
     QWidget* previous = &m_parts.view;
     for (QWidget* w : std::as_const(stops)) {
         QWidget::setTabOrder(previous, w);
@@ -190,7 +202,16 @@ void WindowKeyboard::showNumbers(int body)
     if (QDockWidget* dock = m_parts.layout.dock(QStringLiteral("inspector"))) {
         dock->show();
         dock->raise();
+        // Asked for, the numbers get room: at 1024x768 a lesson's table below left the
+        // inspector a sliver of its column (a few rows in sight, the table's head still).
+        const int least = m_parts.window.height() * 3 / 10;
+        if (dock->height() < least && m_parts.window.dockWidgetArea(dock) != Qt::NoDockWidgetArea &&
+            !dock->isFloating())
+            m_parts.window.resizeDocks({dock}, {least}, Qt::Vertical);
     }
+    // Laid out before the focus goes in: an inspector out of sight until now fills its rows
+    // in as it is shown (InspectorPanel::refresh), and the field must be where it is seen.
+    QCoreApplication::sendPostedEvents(nullptr, QEvent::LayoutRequest);
     // The mass is the number a student changes; the others follow it in the tab order.
     if (NumberField* mass = m_parts.inspector.massField(); mass && mass->isVisible())
         mass->setFocus(Qt::OtherFocusReason);
