@@ -12,6 +12,7 @@
 #include "common/language.h"
 #include "measure/measurement_panel.h"
 #include "measure/measurement_session.h"
+#include "panels/inspector_panel.h"
 #include "plots/plot_shelf.h"
 
 #include "format/data_dirs.h"
@@ -21,6 +22,7 @@
 #include <QHeaderView>
 #include <QMessageBox>
 #include <QRadioButton>
+#include <QScopeGuard>
 #include <QScrollBar>
 
 using rigidlab::test::isChoice;
@@ -185,6 +187,50 @@ private slots:
         QVERIFY2(frameOutside(w, kProjector).isEmpty(), qPrintable(frameOutside(w, kProjector)));
         QVERIFY2(inSight(*result, *dock),
                  qPrintable(QStringLiteral("fit result at ") + placeOf(*result, *dock)));
+    }
+
+    // A body's numbers asked for on the projector (] then Enter on the scene), in the
+    // restitution lesson whose Bounces table shares the side column: the Inspector does not
+    // scroll sideways, and its mass field's unit is whole in sight, in Czech (the longest
+    // labels: "Jednotka úhlů" beside its list once made the column scroll) and in English.
+    void inspectorFitsTheProjectorColumn_data()
+    {
+        QTest::addColumn<QString>("language");
+        QTest::newRow("cs") << QStringLiteral("cs");
+        QTest::newRow("en") << QStringLiteral("en");
+    }
+    void inspectorFitsTheProjectorColumn()
+    {
+        QFETCH(QString, language);
+        QVERIFY(ui::applyLanguage(language));
+        // Czech again afterwards, for the rest of this program's tests.
+        const auto czech = qScopeGuard([] { ui::applyLanguage(QStringLiteral("cs")); });
+        MainWindow w;
+        showOn(w, kProjector);
+        QCOMPARE(
+            w.openLesson(lessons::shippedLessonsDir() + QStringLiteral("/restitution.json"), true),
+            QString());
+        settle();
+        QTest::keyClick(&w.view(), Qt::Key_BracketRight);
+        QVERIFY(w.view().selectedBody() >= 0);
+        QTest::keyClick(&w.view(), Qt::Key_Return);
+        settle();
+        QVERIFY(w.inspector().isVisible());
+        const QScrollArea* scroll = nullptr;
+        for (QWidget* p = w.inspector().parentWidget(); p && !scroll; p = p->parentWidget())
+            scroll = qobject_cast<const QScrollArea*>(p);
+        QVERIFY(scroll);
+        QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
+                 qPrintable(QStringLiteral("the inspector is %1 px wide in a %2 px column")
+                                .arg(w.inspector().minimumSizeHint().width())
+                                .arg(scroll->viewport()->width())));
+        const auto* unit = w.inspector().findChild<QLabel*>(QStringLiteral("massUnit"));
+        QVERIFY(unit && unit->isVisible());
+        const QRect r(unit->mapTo(scroll->viewport(), QPoint(0, 0)), unit->size());
+        QVERIFY2(r.left() >= 0 && r.right() < scroll->viewport()->width(),
+                 qPrintable(QStringLiteral("the mass unit at %1 in a %2 px column")
+                                .arg(rectText(r))
+                                .arg(scroll->viewport()->width())));
     }
 
 private:

@@ -360,6 +360,9 @@ QWidget* InspectorPanel::angleUnitList()
     layout->setContentsMargins(0, 0, 0, 0);
     auto* label = new QLabel(m_angleUnit->accessibleName(), row);
     label->setBuddy(m_angleUnit);
+    // At its space when the column is narrow ("Jednotka úhlů" beside an eight-letter list
+    // was wider than a projector's side column, which then scrolled sideways).
+    label->setWordWrap(true);
     layout->addWidget(label);
     layout->addWidget(m_angleUnit);
     layout->addStretch(1);
