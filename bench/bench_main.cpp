@@ -140,31 +140,31 @@ std::optional<int> wholeNumber(const std::string& flag, const char* value, int l
     return n;
 }
 
-} // namespace
-
-int main(int argc, char** argv)
-{
+/// The command line's choices.
+struct Flags {
     bench::BenchOptions options;
     std::vector<std::string> scenes = bench::benchSceneNames();
     bool profile = false, hash = false;
-    const char* engineList = nullptr;
+    const char* engineList = nullptr; ///< --engines' value, or null for every engine
+};
+
+/// The flags of `argv`, or nullopt after saying which flag or value is wrong.
+std::optional<Flags> parseFlags(int argc, char** argv)
+{
+    Flags f;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--profile") {
-            profile = true;
-            continue;
-        }
-        if (arg == "--hash") {
-            hash = true;
+        if (arg == "--profile" || arg == "--hash") {
+            (arg == "--hash" ? f.hash : f.profile) = true;
             continue;
         }
         if (arg != "--scene" && arg != "--steps" && arg != "--runs" && arg != "--engines") {
             std::fprintf(stderr, "rigidlab-bench: unknown option \"%s\"\n", arg.c_str());
-            return usage();
+            return std::nullopt;
         }
         if (i + 1 >= argc) {
             std::fprintf(stderr, "rigidlab-bench: %s needs a value\n", arg.c_str());
-            return usage();
+            return std::nullopt;
         }
         const char* value = argv[++i];
         if (arg == "--scene") {
@@ -174,23 +174,32 @@ int main(int argc, char** argv)
                     known += (known.empty() ? "" : ", ") + s;
                 std::fprintf(stderr, "rigidlab-bench: unknown scene \"%s\"; the scenes: %s\n",
                              value, known.c_str());
-                return 2;
+                return std::nullopt;
             }
-            scenes = {value};
-        } else if (arg == "--steps") {
-            const std::optional<int> n = wholeNumber(arg, value, 2);
+            f.scenes = {value};
+        } else if (arg == "--steps" || arg == "--runs") {
+            const bool steps = arg == "--steps";
+            const std::optional<int> n = wholeNumber(arg, value, steps ? 2 : 1);
             if (!n)
-                return 2;
-            options.steps = *n;
-        } else if (arg == "--runs") {
-            const std::optional<int> n = wholeNumber(arg, value, 1);
-            if (!n)
-                return 2;
-            options.runs = *n;
+                return std::nullopt;
+            (steps ? f.options.steps : f.options.runs) = *n;
         } else {
-            engineList = value;
+            f.engineList = value;
         }
     }
+    return f;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const std::optional<Flags> flags = parseFlags(argc, argv);
+    if (!flags) {
+        usage();
+        return 2;
+    }
+    const auto& [options, scenes, profile, hash, engineList] = *flags;
 
     // Each peer left out of this build, with the reason (said under the table).
     std::vector<std::string> missing;

@@ -12,10 +12,8 @@
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 #include "window/main_window.h"
-#include "window/window_keyboard_sight.h"
 
 #include <QApplication>
-#include <QDockWidget>
 #include <QFileDialog>
 #include <QLabel>
 #include <QLineEdit>
@@ -30,13 +28,10 @@
 #include "projector_window.h"
 #include "test_main.h"
 
-#include <algorithm>
-
 using namespace rigidlab;
 using rigidlab::test::FocusWatch;
 using rigidlab::test::key;
 using rigidlab::test::showActiveOnProjector;
-using rigidlab::ui::inSightInWindow;
 using rigidlab::ui::MainWindow;
 
 namespace {
@@ -229,9 +224,8 @@ private slots:
 
     // From the scene, one Tab reaches the step's answer (a box, or the question's options),
     // not the list of lessons and the step's text first; Tab from there goes on to the step's
-    // own controls, and then to the panel's others above the question, which the forward round
-    // reaches too; Shift+Tab walks the same round back. Help › Controls says so. On a step that
-    // asks nothing, Tab from the scene goes where it always goes.
+    // own controls, Shift+Tab back to its text. Help › Controls says so. On a step that asks
+    // nothing, Tab from the scene goes where it always goes.
     void tabFromTheSceneReachesTheAnswer_data()
     {
         QTest::addColumn<QString>("lesson");
@@ -247,8 +241,6 @@ private slots:
         ui::LessonPlayer& player = w.lessonPlayer();
         auto* questions = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
         QVERIFY(questions);
-        QDockWidget* lessonDock = w.dock(QStringLiteral("lesson"));
-        QVERIFY(lessonDock);
         int asked = 0;
         const int steps = static_cast<int>(player.lesson()->steps.size());
         for (int s = 0; s < steps; ++s) {
@@ -281,42 +273,8 @@ private slots:
                                       : QLatin1String("nothing"))));
             key(w, Qt::Key_Tab, Qt::ShiftModifier);
             QCOMPARE(QApplication::focusWidget(), answer);
-            // The forward round goes on through the panel: Check, the step's buttons, then
-            // what the panel shows above the question (the list of lessons, the introduction's
-            // toggle, the step's text), before it leaves the panel.
-            QList<QWidget*> round{answer};
-            for (int k = 0; k < 60 && lessonDock->isAncestorOf(QApplication::focusWidget()); ++k) {
-                key(w, Qt::Key_Tab);
-                round << QApplication::focusWidget();
-            }
-            QWidget* left = round.takeLast();
-            QVERIFY2(left && !lessonDock->isAncestorOf(left), qPrintable(where));
-            const auto reached = [&round](const char* name) {
-                return std::any_of(round.begin(), round.end(),
-                                   [name](QWidget* r) { return r->objectName() == name; });
-            };
-            auto* toggle = w.findChild<QWidget*>(QStringLiteral("lessonIntroToggle"));
-            const bool toggleShown = toggle && toggle->isVisible() &&
-                                     (toggle->focusPolicy() & Qt::TabFocus) &&
-                                     toggle->isEnabled() && inSightInWindow(*toggle);
-            QStringList names;
-            for (QWidget* r : std::as_const(round))
-                names << QLatin1String(r->metaObject()->className()) + u' ' + r->objectName();
-            QVERIFY2(reached("lessonChoice") && (!toggleShown || reached("lessonIntroToggle")) &&
-                         std::any_of(round.begin(), round.end(),
-                                     [](QWidget* r) { return r->inherits("QTextBrowser"); }),
-                     qPrintable(where + QStringLiteral(": ") + names.join(QStringLiteral(", "))));
-            // Shift+Tab goes the same way back, through the answer to the scene.
-            for (qsizetype k = round.size() - 1; k >= 0; --k) {
-                key(w, Qt::Key_Tab, Qt::ShiftModifier);
-                QVERIFY2(QApplication::focusWidget() == round[k],
-                         qPrintable(where + QStringLiteral(": back at stop %1").arg(k)));
-            }
             key(w, Qt::Key_Tab, Qt::ShiftModifier);
-            QVERIFY2(QApplication::focusWidget() == &w.view() ||
-                         (questions->isAncestorOf(QApplication::focusWidget()) &&
-                          QApplication::focusWidget() != answer),
-                     qPrintable(where));
+            QVERIFY2(qobject_cast<QTextBrowser*>(QApplication::focusWidget()), qPrintable(where));
         }
         QVERIFY(asked > 0);
         QVERIFY(w.controlsHelpText().contains(

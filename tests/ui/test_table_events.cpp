@@ -78,6 +78,23 @@ private slots:
     void eventsMeasuredWhileATableReads();
 };
 
+/// The line over each event table that says the run so far is still being measured, with
+/// the table's description, as "line|description", for the tables that show it now.
+QStringList measuringNotes(MainWindow& w)
+{
+    QStringList out;
+    for (QWidget* panel :
+         {static_cast<QWidget*>(&w.bouncePanel()), static_cast<QWidget*>(&w.collisionPanel())}) {
+        auto* note = panel->findChild<QLabel*>(QStringLiteral("measuringNote"));
+        const auto* table = panel->findChild<FittingTable*>();
+        if (!note || !table)
+            return QStringList{QStringLiteral("no note")};
+        if (note->isVisibleTo(panel))
+            out << note->text() + u'|' + table->accessibleDescription();
+    }
+    return out;
+}
+
 // In a scene that is no lesson the bounces and collisions are measured only while a table
 // shows them; one opened later shows the run so far, as measured by a run without a window
 // from the start (the same scene, the same steps, the same setting changed at the same step).
@@ -127,19 +144,7 @@ void TestTableEvents::eventsMeasuredWhileATableReads()
     c.setEventReplaySlice(0);
     // Meanwhile each table says so in a line over it, and in its description for a screen
     // reader; the line goes once the table is up to date.
-    const auto notes = [&] {
-        QStringList out;
-        for (QWidget* panel : {static_cast<QWidget*>(&w.bouncePanel()),
-                               static_cast<QWidget*>(&w.collisionPanel())}) {
-            auto* note = panel->findChild<QLabel*>(QStringLiteral("measuringNote"));
-            const auto* table = panel->findChild<FittingTable*>();
-            if (!note || !table)
-                return QStringList{QStringLiteral("no note")};
-            if (note->isVisibleTo(panel))
-                out << note->text() + u'|' + table->accessibleDescription();
-        }
-        return out;
-    };
+    const auto notes = [&w] { return measuringNotes(w); };
     const QString measuring = QStringLiteral("Measuring the run so far…");
     QCOMPARE(notes(), QStringList());
     QSignalSpy catchingUp(&c, &ui::RunView::eventsCatchingUpChanged);

@@ -389,17 +389,11 @@ void LessonPlayer::orderTabs()
     order << m_buttons->tabStops();
     for (qsizetype k = 1; k < order.size(); ++k)
         setTabOrder(order[k - 1], order[k]);
-    emit tabsOrdered();
 }
 
 QWidget* LessonPlayer::firstAnswer() const
 {
     return m_questions->firstAnswer();
-}
-
-QList<QWidget*> LessonPlayer::questionStops() const
-{
-    return m_questions->tabStops();
 }
 
 void LessonPlayer::replayRecordedTries()

@@ -81,9 +81,6 @@ public:
     /// The step's first answer that can be given now (a box, or a question's options), where
     /// Tab from the scene goes; null on a step that asks nothing, or nothing more.
     QWidget* firstAnswer() const;
-    /// The step's questions' controls that Tab stops at (their answers, Check, Show me); empty
-    /// on a step that asks nothing.
-    QList<QWidget*> questionStops() const;
     /// The answer box and result line of question i of the current step (for tests).
     void answer(int question, const QString& text);
     QString result(int question) const;
@@ -132,8 +129,6 @@ signals:
     void handedIn(const QString& pdfPath, const QString& answersPath);
     /// An answer released some of what the step held back; `held` is what it still holds.
     void heldBackChanged(const QStringList& held);
-    /// The panel's Tab order was made again, in the order it is shown (its questions rebuilt).
-    void tabsOrdered();
 
 protected:
     void changeEvent(QEvent* event) override;

@@ -381,6 +381,13 @@ void InspectorPanel::setAnglesInDegrees(bool degrees)
 
 QString InspectorPanel::text() const
 {
+    // Out of sight the rows wait to be filled in (refresh); what the panel says is the world's
+    // as it is now all the same (a copy, a test, a worksheet read it hidden too).
+    if (!m_shown) {
+        auto& self = const_cast<InspectorPanel&>(*this);
+        self.m_shown = shownNow();
+        self.fill();
+    }
     if (m_body < 0)
         return m_none->text();
     QStringList parts;

@@ -27,7 +27,6 @@
 #include <QPalette>
 #include <QSettings>
 
-#include <algorithm>
 #include <array>
 
 namespace rigidlab::ui {
@@ -84,7 +83,6 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     parts.view.installEventFilter(this);
     lessonFollowsScene();
     connect(&parts.player, &LessonPlayer::stepActivated, this, &WindowKeyboard::lessonFollowsScene);
-    connect(&parts.player, &LessonPlayer::tabsOrdered, this, &WindowKeyboard::lessonFollowsScene);
     connect(&parts.player, &LessonPlayer::lessonClosed, this, &WindowKeyboard::lessonFollowsScene);
     for (std::size_t i = 0; i < kEffects.size(); ++i)
         m_effectsBefore[i] = QApplication::isEffectEnabled(kEffects[i]);
@@ -102,8 +100,7 @@ bool WindowKeyboard::eventFilter(QObject* watched, QEvent* event)
 {
     // A student working in the scene who is asked something answers next: Tab goes to the
     // step's answer, not through the lesson panel's list of lessons and the step's text first.
-    // From there Tab and Shift+Tab go on in the order lessonFollowsScene gave the panel. On a
-    // step that asks nothing
+    // From there Tab and Shift+Tab go on in the panel's own order. On a step that asks nothing
     // (or nothing more), or with the lesson out of sight, Tab goes where it always goes.
     if (watched == &m_parts.view && event->type() == QEvent::KeyPress) {
         const auto* key = static_cast<const QKeyEvent*>(event);
@@ -130,15 +127,6 @@ void WindowKeyboard::lessonFollowsScene()
     for (QWidget* w = start->nextInFocusChain(); w && w != start; w = w->nextInFocusChain())
         if (lesson->isAncestorOf(w) && (w->focusPolicy() & Qt::TabFocus))
             stops << w;
-    // On a step that asks something the panel's round starts at its questions, as Tab from
-    // the scene does (eventFilter): the answers, Check and the step's buttons, then what the
-    // panel shows above them (the list of lessons, the introduction, the step's text), and
-    // then the other panels. A forward round from the scene reaches every one of them, and
-    // Shift+Tab goes the same way back, to the scene.
-    const QList<QWidget*> asked = m_parts.player.questionStops();
-    const auto first = std::find_if(stops.begin(), stops.end(),
-                                    [&asked](QWidget* w) { return asked.contains(w); });
-    std::rotate(stops.begin(), first, stops.end());
     QWidget* previous = &m_parts.view;
     for (QWidget* w : std::as_const(stops)) {
         QWidget::setTabOrder(previous, w);

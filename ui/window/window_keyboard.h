@@ -57,8 +57,8 @@ protected:
 private:
     QAction* make(const QString& text, const char* name);
     /// The lesson panel's controls right after the scene in the focus chain, in their own
-    /// order; on a step that asks something, from its questions on, the panel's controls
-    /// above them after its buttons (a forward round from the scene reaches them all).
+    /// order, so that Tab from the scene to the step's answer passes only the panel's own
+    /// controls above it by.
     void lessonFollowsScene();
     void showNumbers(int body);
     void setReducedMotion(bool on);
