@@ -299,6 +299,8 @@ void InspectorPanel::fitLabels()
         if (label->maximumWidth() != most)
             label->setMaximumWidth(most);
     }
+    // The rows' heights follow the labels' new wrap (the form keeps those it measured before).
+    m_form->invalidate();
 }
 
 void InspectorPanel::labelRows(QFormLayout& form)
