@@ -19,6 +19,7 @@
 
 #include "question_kinds.h"
 
+#include <QFormLayout>
 #include <QHeaderView>
 #include <QMessageBox>
 #include <QRadioButton>
@@ -196,20 +197,29 @@ private slots:
     void inspectorFitsTheProjectorColumn_data()
     {
         QTest::addColumn<QString>("language");
-        QTest::newRow("cs") << QStringLiteral("cs");
-        QTest::newRow("en") << QStringLiteral("en");
+        QTest::addColumn<QString>("file");
+        // A lesson's window (the Lesson dock beside it) and the welcome scene's (no lesson).
+        const QString lesson = lessons::shippedLessonsDir() + QStringLiteral("/restitution.json");
+        const QString welcome = ui::MainWindow::scenesFolder() + QStringLiteral("/welcome.json");
+        for (const char* language : {"cs", "en"}) {
+            QTest::addRow("%s lesson", language) << QString::fromLatin1(language) << lesson;
+            QTest::addRow("%s scene", language) << QString::fromLatin1(language) << welcome;
+        }
     }
     void inspectorFitsTheProjectorColumn()
     {
         QFETCH(QString, language);
+        QFETCH(QString, file);
         QVERIFY(ui::applyLanguage(language));
         // Czech again afterwards, for the rest of this program's tests.
         const auto czech = qScopeGuard([] { ui::applyLanguage(QStringLiteral("cs")); });
         MainWindow w;
         showOn(w, kProjector);
-        QCOMPARE(
-            w.openLesson(lessons::shippedLessonsDir() + QStringLiteral("/restitution.json"), true),
-            QString());
+        const bool lesson = !file.startsWith(ui::MainWindow::scenesFolder());
+        if (!lesson)
+            QCOMPARE(w.openScene(file), QString());
+        else
+            QCOMPARE(w.openLesson(file, true), QString());
         settle();
         QTest::keyClick(&w.view(), Qt::Key_BracketRight);
         QVERIFY(w.view().selectedBody() >= 0);
@@ -224,16 +234,61 @@ private slots:
                  qPrintable(QStringLiteral("the inspector is %1 px wide in a %2 px column")
                                 .arg(w.inspector().minimumSizeHint().width())
                                 .arg(scroll->viewport()->width())));
+        // The welcome scene's first body (the windmill) is driven: its mass reads "infinite".
         const auto* unit = w.inspector().findChild<QLabel*>(QStringLiteral("massUnit"));
-        QVERIFY(unit && unit->isVisible());
+        QVERIFY(unit && (unit->isVisible() || !lesson));
         const QRect r(unit->mapTo(scroll->viewport(), QPoint(0, 0)), unit->size());
-        QVERIFY2(r.left() >= 0 && r.right() < scroll->viewport()->width(),
+        QVERIFY2(!unit->isVisible() || (r.left() >= 0 && r.right() < scroll->viewport()->width()),
                  qPrintable(QStringLiteral("the mass unit at %1 in a %2 px column")
                                 .arg(rectText(r))
                                 .arg(scroll->viewport()->width())));
+        checkRowsWhole(w.inspector());
     }
 
 private:
+    /// A widget as a message names it: its text if it is a label, else its object name.
+    static QString nameOf(const QWidget& x)
+    {
+        const auto* label = qobject_cast<const QLabel*>(&x);
+        return QLatin1Char('"') + (label ? label->text() : x.objectName()) + QLatin1Char('"');
+    }
+
+    /// Every row of the panel's form whole: each label as tall as its text needs at its width
+    /// (a label wrapped to three lines shows all three) and no label or value over another.
+    static void checkRowsWhole(const QWidget& panel)
+    {
+        const auto* form = qobject_cast<const QFormLayout*>(panel.layout());
+        QVERIFY(form);
+        QList<const QWidget*> shown;
+        for (int row = 0; row < form->rowCount(); ++row)
+            for (auto role :
+                 {QFormLayout::LabelRole, QFormLayout::FieldRole, QFormLayout::SpanningRole}) {
+                const QLayoutItem* item = form->itemAt(row, role);
+                const QWidget* x = item ? item->widget() : nullptr;
+                if (!x || !x->isVisible() || shown.contains(x))
+                    continue;
+                shown << x;
+                const auto* label = qobject_cast<const QLabel*>(x);
+                if (!label || label->text().isEmpty())
+                    continue;
+                const int needs = label->wordWrap() ? label->heightForWidth(label->width())
+                                                    : label->sizeHint().height();
+                QVERIFY2(label->height() >= needs,
+                         qPrintable(QStringLiteral("%1 is %2x%3 px, its text needs %4 px")
+                                        .arg(nameOf(*label))
+                                        .arg(label->width())
+                                        .arg(label->height())
+                                        .arg(needs)));
+            }
+        for (qsizetype i = 0; i < shown.size(); ++i)
+            for (qsizetype j = i + 1; j < shown.size(); ++j) {
+                const QRect a = shown[i]->geometry(), b = shown[j]->geometry();
+                QVERIFY2(!a.intersects(b), qPrintable(QStringLiteral("%1 at %2 over %3 at %4")
+                                                          .arg(nameOf(*shown[i]), rectText(a),
+                                                               nameOf(*shown[j]), rectText(b))));
+            }
+    }
+
     /// The first question's answer box (a choice's options) and Check in sight; Check pressed
     /// with no answer, its line in sight too, in a font no smaller than the step's text.
     static void checkFirstQuestion(MainWindow& w, const QDockWidget& dock,

@@ -295,9 +295,15 @@ void InspectorPanel::fitLabels()
         // cut, its row no taller than its value.
         const bool wrap = label->fontMetrics().horizontalAdvance(label->text()) > labels;
         label->setWordWrap(wrap);
-        const int most = wrap ? labels : QWIDGETSIZE_MAX;
-        if (label->maximumWidth() != most)
-            label->setMaximumWidth(most);
+        // A wrapped label is as wide as that and as tall as its lines there: squeezed, the form
+        // gave it its longest word's width and one line's height ("Velikost rychlosti" in
+        // sight, "|v|" on a third line cut).
+        const QSize most(wrap ? labels : QWIDGETSIZE_MAX, QWIDGETSIZE_MAX);
+        const QSize least = wrap ? QSize(labels, label->heightForWidth(labels)) : QSize(0, 0);
+        if (label->maximumSize() != most)
+            label->setMaximumSize(most);
+        if (label->minimumSize() != least)
+            label->setMinimumSize(least);
     }
     // The rows' heights follow the labels' new wrap (the form keeps those it measured before).
     m_form->invalidate();
