@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // rigidlab-bench: the benchmark scenes in RigidLab, Box2D v3, Chipmunk 7 and Box2D 2.4, one
 // table.
-//   rigidlab-bench [--scene NAME] [--steps N] [--runs K] [--engines LIST] [--hash] [--profile]
+//   rigidlab-bench [--scene LIST] [--steps N] [--runs K] [--engines LIST] [--hash] [--profile]
+// --scene runs only the scenes named, comma-separated (pyramid-40,pyramid-100 prints the cost per
+// body between them); all by default.
 // --engines runs only the engines named, comma-separated: sequential, soft, f32, v3-sse2,
 // v3-avx2, chipmunk, box2d (or the table's names, "RigidLab SS"); all of this build's by default.
 // --hash prints, for each RigidLab engine and scene, a hash of the bits of every body's
@@ -42,7 +44,7 @@ std::string cpuModel()
 
 int usage()
 {
-    std::fputs("usage: rigidlab-bench [--scene NAME] [--steps N] [--runs K] [--engines LIST] "
+    std::fputs("usage: rigidlab-bench [--scene LIST] [--steps N] [--runs K] [--engines LIST] "
                "[--hash] [--profile]\n",
                stderr);
     return 2;
@@ -140,6 +142,28 @@ std::optional<int> wholeNumber(const std::string& flag, const char* value, int l
     return n;
 }
 
+/// The scenes of `list`, comma-separated, into `scenes`; false after naming an unknown one.
+bool sceneList(std::string_view list, std::vector<std::string>& scenes)
+{
+    scenes.clear();
+    size_t start = 0;
+    while (start <= list.size()) {
+        const size_t comma = std::min(list.find(',', start), list.size());
+        const std::string name(list.substr(start, comma - start));
+        start = comma + 1;
+        if (!bench::makeBenchScene(name)) {
+            std::string known;
+            for (const std::string& s : bench::benchSceneNames())
+                known += (known.empty() ? "" : ", ") + s;
+            std::fprintf(stderr, "rigidlab-bench: --scene: unknown scene \"%s\"; the scenes: %s\n",
+                         name.c_str(), known.c_str());
+            return false;
+        }
+        scenes.push_back(name);
+    }
+    return true;
+}
+
 /// The command line's choices.
 struct Flags {
     bench::BenchOptions options;
@@ -168,15 +192,8 @@ std::optional<Flags> parseFlags(int argc, char** argv)
         }
         const char* value = argv[++i];
         if (arg == "--scene") {
-            if (!bench::makeBenchScene(value)) {
-                std::string known;
-                for (const std::string& s : bench::benchSceneNames())
-                    known += (known.empty() ? "" : ", ") + s;
-                std::fprintf(stderr, "rigidlab-bench: unknown scene \"%s\"; the scenes: %s\n",
-                             value, known.c_str());
+            if (!sceneList(value, f.scenes))
                 return std::nullopt;
-            }
-            f.scenes = {value};
         } else if (arg == "--steps" || arg == "--runs") {
             const bool steps = arg == "--steps";
             const std::optional<int> n = wholeNumber(arg, value, steps ? 2 : 1);
