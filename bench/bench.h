@@ -132,8 +132,12 @@ std::string stabilityText(const BenchResult& r);
 /// moved or escaped.
 bool atLeastAsStable(const BenchResult& a, const BenchResult& b);
 
-/// The table: engine, scene, bodies, ms per step, ratio to RigidLab on the same scene,
-/// stability. Rows in the order given.
+/// The engine the table compares every row with: the lab's default solver ("RigidLab SS")
+/// when it ran, else the first RigidLab engine that ran; empty when none did.
+std::string referenceEngine(const std::vector<BenchResult>& results);
+/// The table: engine, scene, bodies, ms per step, ratio to the reference (referenceEngine(),
+/// named in the header line) on the same scene, stability, and whether the ratio counts (the
+/// reference at least as stable). Rows in the order given.
 std::string benchTable(const std::vector<BenchResult>& results);
 
 /// The speed and stability targets for the soft step ("RigidLab SS"), each with its

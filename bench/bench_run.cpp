@@ -128,12 +128,30 @@ bool atLeastAsStable(const BenchResult& a, const BenchResult& b)
     return std::abs(a.topDrift) <= std::abs(b.topDrift) + kDriftTolerance && a.moved <= b.moved;
 }
 
+std::string referenceEngine(const std::vector<BenchResult>& results)
+{
+    // The lab's default solver (the soft step, "RigidLab SS") when it ran; else the first
+    // RigidLab engine.
+    RigidLabBenchSettings lab;
+    lab.solver = physics::WorldDef{}.solver;
+    const std::string labDefault = makeRigidLabBenchEngine(lab)->name();
+    std::string first;
+    for (const BenchResult& r : results) {
+        if (r.engine == labDefault)
+            return r.engine;
+        if (first.empty() && r.engine.starts_with("RigidLab"))
+            first = r.engine;
+    }
+    return first;
+}
+
 std::string benchTable(const std::vector<BenchResult>& results)
 {
-    // RigidLab's time on each scene, for the ratio column.
+    // The reference's time on each scene, for the ratio column.
+    const std::string reference = referenceEngine(results);
     std::map<std::string, const BenchResult*> ours;
     for (const BenchResult& r : results)
-        if (r.engine == "RigidLab")
+        if (!reference.empty() && r.engine == reference && !ours.contains(r.scene))
             ours[r.scene] = &r;
 
     auto pad = [](std::string s, size_t width) {
@@ -141,15 +159,19 @@ std::string benchTable(const std::vector<BenchResult>& results)
             s.append(width - s.size(), ' ');
         return s;
     };
-    std::string out = pad("engine", 17) + pad("scene", 13) + pad("bodies", 8) + pad("ms/step", 10) +
-                      pad("ratio", 8) + pad("stability (10 s)", 26) + "counts\n";
+    std::string out =
+        pad("engine", 17) + pad("scene", 13) + pad("bodies", 8) + pad("ms/step", 10) +
+        pad("ratio", 8) + pad("stability (10 s)", 26) + "counts" +
+        (reference.empty() ? std::string() : " (ratio and counts against " + reference + ")") +
+        "\n";
     for (const BenchResult& r : results) {
         const auto it = ours.find(r.scene);
         std::string ratio = "-", counts = "-";
         if (it != ours.end() && it->second->msPerStep > 0) {
             ratio = format("%.2f", r.msPerStep / it->second->msPerStep);
             if (&r != it->second)
-                counts = atLeastAsStable(*it->second, r) ? "yes" : "no: RigidLab less stable";
+                counts =
+                    atLeastAsStable(*it->second, r) ? "yes" : "no: " + reference + " less stable";
         }
         out += pad(r.engine, 17) + pad(r.scene, 13) + pad(std::to_string(r.bodies), 8) +
                pad(format("%.3f", r.msPerStep), 10) + pad(ratio, 8) + pad(stabilityText(r), 26) +

@@ -11,12 +11,6 @@
 
 namespace rigidlab::physics {
 
-SoftSolver::ColourKey SoftSolver::colourKey(const Contact& ct) const
-{
-    return {ct.a, ct.b, m_active[static_cast<size_t>(ct.a)] != 0,
-            m_active[static_cast<size_t>(ct.b)] != 0};
-}
-
 bool SoftSolver::sameColouring(const std::vector<Contact>& contacts,
                                const std::vector<Body>& bodies) const
 {
@@ -34,52 +28,71 @@ void SoftSolver::buildBlocks(const std::vector<Contact>& contacts, const std::ve
     if (!m_plain && sameColouring(contacts, bodies)) {
         // The same contacts between the same bodies: the same colours, blocks and lanes as
         // colouring them again would give; only what the lanes hold has changed.
-        for (Slot& slot : m_slots) {
-            const Contact& ct = contacts[static_cast<size_t>(slot.contact)];
-            slot.points = ct.manifold.pointCount;
-            fillLane(ct, slot.block, slot.lane);
-        }
+        // The precision chosen once, not per lane.
+        const auto refill = [&](auto& blocks) {
+            for (Slot& slot : m_slots) {
+                const Contact& ct = contacts[static_cast<size_t>(slot.contact)];
+                slot.points = ct.manifold.pointCount;
+                fillLaneOf(ct, blocks[static_cast<size_t>(slot.block)], slot.lane);
+            }
+        };
+        if (m_single)
+            refill(m_singleBlocks);
+        else
+            refill(m_blocks);
         return;
     }
 
     // Greedy colouring in the contacts' order (deterministic): each contact takes the lowest
     // colour that neither of its moving bodies has yet. A body that does not move (static,
     // kinematic, asleep) is only read, so any number of contacts of one colour may share it.
-    m_keys.clear();
+    // The arrays at their largest, cut to their counts after the loop, and written through
+    // local pointers (the compiler loaded each vector's pointers again after every store).
     m_keyBodies = bodies.size();
     m_keyWidth = m_width;
     m_keySingle = m_single;
     m_colourMask.assign(bodies.size(), 0);
-    m_candidates.clear();
-    m_colourOf.clear();
     m_colourSize.assign(kMaxColours, 0);
-    m_overflow = 0;
+    m_keys.resize(contacts.size());
+    m_candidates.resize(contacts.size());
+    m_colourOf.resize(contacts.size());
+    ColourKey* const keys = m_keys.data();
+    int* const candidates = m_candidates.data();
+    int* const colourOf = m_colourOf.data();
+    std::uint64_t* const mask = m_colourMask.data();
+    int* const colourSize = m_colourSize.data();
+    size_t count = 0;
+    int overflow = 0;
     for (size_t ci = 0; ci < contacts.size(); ++ci) {
         const Contact& ct = contacts[ci];
         const ColourKey key = colourKey(ct);
-        m_keys.push_back(key);
+        keys[ci] = key;
         if (!key.movesA && !key.movesB)
             continue;
         std::uint64_t used = 0;
         if (key.movesA)
-            used |= m_colourMask[static_cast<size_t>(ct.a)];
+            used |= mask[static_cast<size_t>(ct.a)];
         if (key.movesB)
-            used |= m_colourMask[static_cast<size_t>(ct.b)];
+            used |= mask[static_cast<size_t>(ct.b)];
         int colour = -1;
         if (~used != 0) {
             colour = std::countr_zero(~used);
             const std::uint64_t bit = std::uint64_t{1} << colour;
             if (key.movesA)
-                m_colourMask[static_cast<size_t>(ct.a)] |= bit;
+                mask[static_cast<size_t>(ct.a)] |= bit;
             if (key.movesB)
-                m_colourMask[static_cast<size_t>(ct.b)] |= bit;
-            ++m_colourSize[static_cast<size_t>(colour)];
+                mask[static_cast<size_t>(ct.b)] |= bit;
+            ++colourSize[static_cast<size_t>(colour)];
         } else {
-            ++m_overflow;
+            ++overflow;
         }
-        m_candidates.push_back(static_cast<int>(ci));
-        m_colourOf.push_back(colour);
+        candidates[count] = static_cast<int>(ci);
+        colourOf[count] = colour;
+        ++count;
     }
+    m_candidates.resize(count);
+    m_colourOf.resize(count);
+    m_overflow = overflow;
     m_colourCount = 0;
     for (int c = 0; c < kMaxColours; ++c)
         if (m_colourSize[static_cast<size_t>(c)] > 0)
@@ -97,7 +110,7 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
     int blocks = m_overflow;
     for (int c = 0; c < m_colourCount; ++c)
         blocks += (m_colourSize[static_cast<size_t>(c)] + width - 1) / width;
-    resetBlocks(blocks, static_cast<int>(bodies.size()));
+    resetBlocks(blocks);
     // First block of each colour, then filled in the contacts' order.
     std::vector<int>& next = m_nextBlock;
     std::vector<int>& lane = m_nextLane;
@@ -134,11 +147,33 @@ void SoftSolver::layBlocks(const std::vector<Contact>& contacts, const std::vect
             slot.block = overflowBlock++;
             slot.lane = 0;
         }
-        const Contact& ct = contacts[static_cast<size_t>(ci)];
-        slot.points = ct.manifold.pointCount;
-        fillLane(ct, slot.block, slot.lane);
+        slot.points = contacts[static_cast<size_t>(ci)].manifold.pointCount;
         m_slots.push_back(slot);
     }
+    // The lanes filled in the slots' order, the contacts' (the precision chosen once).
+    const auto fill = [&](auto& blocks) {
+        for (const Slot& slot : m_slots)
+            fillLaneOf(contacts[static_cast<size_t>(slot.contact)],
+                       blocks[static_cast<size_t>(slot.block)], slot.lane);
+    };
+    if (m_single)
+        fill(m_singleBlocks);
+    else
+        fill(m_blocks);
+    // The lanes no contact took, emptied: past the last contact of each colour's last block,
+    // past the kernel's width in the others (the plain path's one lane), past the first lane in
+    // the overflow's blocks.
+    const int spare = static_cast<int>(bodies.size());
+    for (int c = 0; c < m_colourCount; ++c) {
+        const int first = m_ranges[static_cast<size_t>(c)];
+        const int last = next[static_cast<size_t>(c)]; // the block after the colour's last full one
+        for (int k = first; k < last; ++k)
+            emptyLanes(k, width, spare);
+        if (lane[static_cast<size_t>(c)] > 0)
+            emptyLanes(last, lane[static_cast<size_t>(c)], spare);
+    }
+    for (int k = start; k < overflowBlock; ++k)
+        emptyLanes(k, 1, spare);
 }
 
 } // namespace rigidlab::physics

@@ -23,6 +23,7 @@
 #include "stages.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace rigidlab::physics {
@@ -58,19 +59,39 @@ double ownSize(const Body& b)
                                     }});
 }
 
+const std::vector<BodyExtent>& bodyExtents(StepContext& ctx)
+{
+    // A body's shape and centre of mass do not change after World::addBody, and a world has
+    // no way to remove a body: the extents of the bodies seen before stay (a copied world
+    // starts with an empty scratch and computes them all). The sanitizer build's asserts check
+    // that each extent is still its body's.
+    std::vector<BodyExtent>& extent = ctx.scratch.extent;
+    if (extent.size() > ctx.bodies.size())
+        extent.clear();
+    for (size_t i = extent.size(); i < ctx.bodies.size(); ++i)
+        extent.push_back({outerRadius(ctx.bodies[i]), ownSize(ctx.bodies[i])});
+    return extent;
+}
+
 void findSweeps(StepContext& ctx)
 {
     ctx.sweep.clear();
     if (!ctx.continuous)
         return;
     const double h = ctx.dt;
+    const std::vector<BodyExtent>& extent = bodyExtents(ctx);
+    // The fall in a step, once (the stores below kept the compiler from taking it out of the
+    // loop): the same number for every dynamic body.
+    const double fall = ctx.field.gravity.norm() * h * h;
+    int fast = 0;
     for (size_t i = 0; i < ctx.bodies.size(); ++i) {
         const Body& b = ctx.bodies[i];
         if (!b.moves() || !b.collide)
             continue;
-        const double reach = outerRadius(b);
+        const double reach = extent[i].outerRadius;
+        assert(reach == outerRadius(b));
         const double motion = (b.velocity.norm() + std::abs(b.angularVelocity) * reach) * h +
-                              (b.isDynamic() ? ctx.field.gravity.norm() * h * h : 0.0);
+                              (b.isDynamic() ? fall : 0.0);
         // Every solver times an isolated impact from the contact's gap at the start of the
         // step (soft_impacts.cpp), so it wants the contact of every body that moves more than
         // the margin in a step, before the two overlap (found only once they overlap, a cut
@@ -81,8 +102,9 @@ void findSweeps(StepContext& ctx)
         if (ctx.sweep.empty())
             ctx.sweep.assign(ctx.bodies.size(), 0.0);
         ctx.sweep[i] = motion;
-        ++ctx.profile.fast;
+        ++fast;
     }
+    ctx.profile.fast += fast;
 }
 
 } // namespace rigidlab::physics

@@ -59,7 +59,18 @@ void World::checkDivergence()
     d.step = m_steps;
     d.dt = m_def.dt;
     d.integrator = m_def.integrator;
-    for (size_t i = 0; i < m_bodies.size(); ++i) {
+    // One pass over the bodies for both questions: whether some part of a state is not finite
+    // (x - x is 0 for a finite x, NaN for an infinite one or NaN, and a sum of zeros stays 0),
+    // and whether some body is kinematic. Only then the bodies one by one, for the first.
+    double probe = 0.0;
+    bool kinematic = false;
+    for (const Body& b : m_bodies) {
+        probe += (b.position.x() - b.position.x()) + (b.position.y() - b.position.y()) +
+                 (b.angle - b.angle) + (b.velocity.x() - b.velocity.x()) +
+                 (b.velocity.y() - b.velocity.y()) + (b.angularVelocity - b.angularVelocity);
+        kinematic = kinematic || b.type == BodyType::Kinematic;
+    }
+    for (size_t i = 0; probe != 0.0 && i < m_bodies.size(); ++i) {
         const Body& b = m_bodies[i];
         if (const auto quantity = nonFinitePart(b)) {
             d.kind = Divergence::Kind::NonFinite;
@@ -75,8 +86,6 @@ void World::checkDivergence()
     // (collisionLoss, what they took so far) went negative past kContactGain of the scale, the
     // energy they made is the growth to judge, long before the general bound (overlapping
     // bodies thrown apart). A kinematic body may push energy in; then only the general bound.
-    const bool kinematic = std::any_of(m_bodies.begin(), m_bodies.end(),
-                                       [](const Body& b) { return b.type == BodyType::Kinematic; });
     const double contactBound = kContactGain * m_energyScale;
     const bool contactsMade = !kinematic && -m_diagnostics.collisionLoss > contactBound;
     const double bound =

@@ -27,6 +27,7 @@
 #include "stages.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 
 namespace rigidlab::physics {
@@ -101,17 +102,20 @@ void sweepBackBullets(StepContext& ctx)
 {
     if (ctx.sweep.empty())
         return;
+    const std::vector<BodyExtent>& extent = bodyExtents(ctx);
     const StepScratch& s = ctx.scratch;
     const double target = ctx.contactSettings.linearSlop;
     for (size_t i = 0; i < ctx.bodies.size(); ++i) {
         Body& a = ctx.bodies[i];
+        const double size = extent[i].ownSize;
+        assert(size == ownSize(a) && extent[i].outerRadius == outerRadius(a));
         // The bullets: a body that moves less than its own size in a step cannot pass a wall
         // its contact has not stopped (the soft step finds the contacts of every body faster
         // than the margin, continuous.cpp; sweeping them all cost a rain of 1000 bodies twice
         // its step).
-        if (!(ctx.sweep[i] > 0) || !a.isActive() || !a.collide || !(ctx.sweep[i] > ownSize(a)))
+        if (!(ctx.sweep[i] > 0) || !a.isActive() || !a.collide || !(ctx.sweep[i] > size))
             continue;
-        const double reach = outerRadius(a);
+        const double reach = extent[i].outerRadius;
         const Vec2 x0 = s.xfPosition[i];
         const double angle0 = s.xfAngle[i];
         // Nor one that, stopped by its contacts, moved less than that in the end (a ball at
@@ -119,7 +123,7 @@ void sweepBackBullets(StepContext& ctx)
         // touched at the start, it rose out of its soft contact, and the energy books, which
         // had counted the sink, were out by that much each step).
         const double moved = (a.position - x0).norm() + std::abs(a.angle - angle0) * reach;
-        if (!(moved > ownSize(a)))
+        if (!(moved > size))
             continue;
         // Everything the motion could reach: the box of the start's pose grown by the sweep.
         const Aabb box = computeAabb(a.shape, s.xf[i], ctx.contactSettings.margin + ctx.sweep[i]);

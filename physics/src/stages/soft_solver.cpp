@@ -60,11 +60,80 @@ bool haveAvx2()
 
 void softContactCoefficients(const SoftStepSettings& settings, double h, Softness (&out)[2])
 {
-    // The two softnesses a contact can have (fillLane): between moving bodies, and twice the
+    // The two softnesses a contact can have (fillLaneOf): between moving bodies, and twice the
     // frequency against a body that does not move.
     const double hertz = settings.contactFrequency / h;
     out[0] = softness(hertz, settings.dampingRatio, h);
     out[1] = softness(2.0 * hertz, settings.dampingRatio, h);
+}
+
+void SoftSolver::takeBodies(const std::vector<Body>& bodies, const std::vector<Vec2>& acceleration,
+                            const std::vector<double>& angularAcceleration)
+{
+    const size_t n = bodies.size();
+    // Each body's state written whole in the loop below, the spare one here.
+    m_state.resize(n + 1);
+    m_state[n] = soft::BodyState{};
+    m_position.resize(n);
+    m_angle.resize(n);
+    m_kinematic.clear();
+    m_drift.clear();
+    m_angularDrift.clear();
+    m_pins.clear();
+    m_invInertia.resize(n);
+    m_turns.resize(n);
+    m_active.resize(n);
+    // The moving bodies' arrays at their largest, cut to the count at the end (their elements
+    // need no destruction); written through local pointers, which the compiler otherwise
+    // loaded again after every store.
+    m_moving.resize(n);
+    m_acceleration.resize(n);
+    m_angularAcceleration.resize(n);
+    m_mass.resize(n);
+    m_inertia.resize(n);
+    soft::BodyState* const state = m_state.data();
+    Vec2* const position = m_position.data();
+    double* const angle = m_angle.data();
+    double* const invInertia = m_invInertia.data();
+    char* const turns = m_turns.data();
+    char* const active = m_active.data();
+    int* const moving = m_moving.data();
+    Vec2* const movingAcceleration = m_acceleration.data();
+    double* const movingAngularAcceleration = m_angularAcceleration.data();
+    double* const mass = m_mass.data();
+    double* const inertia = m_inertia.data();
+    size_t count = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const Body& b = bodies[i];
+        const bool isActive = b.isActive();
+        active[i] = isActive;
+        const Circle* circle = b.shape.asCircle();
+        turns[i] = !circle || circle->center != b.localCenter;
+        soft::BodyState& s = state[i];
+        s = soft::BodyState{};
+        s.vx = b.velocity.x();
+        s.vy = b.velocity.y();
+        s.w = b.angularVelocity;
+        s.invMass = isActive ? b.invMass : 0.0;
+        invInertia[i] = isActive ? b.invInertia : 0.0;
+        position[i] = b.position;
+        angle[i] = b.angle;
+        if (isActive) {
+            moving[count] = static_cast<int>(i);
+            movingAcceleration[count] = acceleration[i];
+            movingAngularAcceleration[count] = angularAcceleration[i];
+            mass[count] = b.mass;
+            inertia[count] = b.inertia;
+            ++count;
+        } else if (b.type == BodyType::Kinematic) {
+            m_kinematic.push_back(static_cast<int>(i));
+        }
+    }
+    m_moving.resize(count);
+    m_acceleration.resize(count);
+    m_angularAcceleration.resize(count);
+    m_mass.resize(count);
+    m_inertia.resize(count);
 }
 
 void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& bodies,
@@ -90,46 +159,8 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     m_pass.maxPushSpeed = settings.maxPushSpeed;
     m_pass.softness[0] = softness[0];
     m_pass.softness[1] = softness[1];
-
+    takeBodies(bodies, acceleration, angularAcceleration);
     const size_t n = bodies.size();
-    m_state.assign(n + 1, soft::BodyState{});
-    m_position.resize(n);
-    m_angle.resize(n);
-    m_moving.clear();
-    m_kinematic.clear();
-    m_acceleration.clear();
-    m_angularAcceleration.clear();
-    m_mass.clear();
-    m_inertia.clear();
-    m_drift.clear();
-    m_angularDrift.clear();
-    m_pins.clear();
-    m_invInertia.resize(n);
-    m_turns.resize(n);
-    m_active.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        const Body& b = bodies[i];
-        m_active[i] = b.isActive();
-        const Circle* circle = b.shape.asCircle();
-        m_turns[i] = !circle || circle->center != b.localCenter;
-        soft::BodyState& s = m_state[i];
-        s.vx = b.velocity.x();
-        s.vy = b.velocity.y();
-        s.w = b.angularVelocity;
-        s.invMass = b.isActive() ? b.invMass : 0.0;
-        m_invInertia[i] = b.isActive() ? b.invInertia : 0.0;
-        m_position[i] = b.position;
-        m_angle[i] = b.angle;
-        if (b.isActive()) {
-            m_moving.push_back(static_cast<int>(i));
-            m_acceleration.push_back(acceleration[i]);
-            m_angularAcceleration.push_back(angularAcceleration[i]);
-            m_mass.push_back(b.mass);
-            m_inertia.push_back(b.inertia);
-        } else if (b.type == BodyType::Kinematic) {
-            m_kinematic.push_back(static_cast<int>(i));
-        }
-    }
     if (m_single) {
         // The float copy starts with no change of velocity and no rotation (qc - 1 = 0).
         m_singleState.resize(n + 1);
@@ -145,27 +176,37 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
     buildBlocks(contacts, bodies);
 }
 
-void SoftSolver::resetBlocks(int count, int spare)
+void SoftSolver::resetBlocks(int count)
 {
-    const auto reset = [&](auto& blocks) {
-        using BlockType = typename std::remove_reference_t<decltype(blocks)>::value_type;
-        blocks.assign(static_cast<size_t>(count), BlockType{});
-        for (BlockType& k : blocks)
-            for (int lane = 0; lane < BlockType::kWidth; ++lane)
-                k.a[lane] = k.b[lane] = spare;
-    };
+    // Resized, not assigned anew: the blocks of a large pile are megabytes, and every lane is
+    // written again, by fillLaneOf() or emptyLanes().
     if (m_single)
-        reset(m_singleBlocks);
+        m_singleBlocks.resize(static_cast<size_t>(count));
     else
-        reset(m_blocks);
+        m_blocks.resize(static_cast<size_t>(count));
 }
 
-void SoftSolver::fillLane(const Contact& ct, int block, int lane)
+void SoftSolver::emptyLanes(int block, int from, int spare)
 {
+    const auto empty = [&](auto& k) {
+        using BlockType = std::remove_reference_t<decltype(k)>;
+        for (auto l = static_cast<size_t>(from); l < size_t{BlockType::kWidth}; ++l) {
+            k.a[l] = k.b[l] = spare;
+            for (auto* field : {k.invIA, k.invIB, k.nx, k.ny, k.friction})
+                field[l] = 0;
+            for (auto& p : k.p) {
+                for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
+                                    p.normalImpulse, p.tangentImpulse})
+                    field[l] = 0;
+                if constexpr (requires { p.origin.normalVelocity; })
+                    p.origin.normalVelocity[l] = p.origin.tangentVelocity[l] = 0;
+            }
+        }
+    };
     if (m_single)
-        fillLaneOf(ct, m_singleBlocks[static_cast<size_t>(block)], lane);
+        empty(m_singleBlocks[static_cast<size_t>(block)]);
     else
-        fillLaneOf(ct, m_blocks[static_cast<size_t>(block)], lane);
+        empty(m_blocks[static_cast<size_t>(block)]);
 }
 
 template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, BlockType& k, int lane)
@@ -237,9 +278,16 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
     }
 }
 
-void SoftSolver::integrateVelocities()
+// Both precisions' lanes are filled from fast/soft_colouring.cpp.
+template void SoftSolver::fillLaneOf<soft::Block>(const Contact&, soft::Block&, int);
+template void SoftSolver::fillLaneOf<soft::SingleBlock>(const Contact&, soft::SingleBlock&, int);
+
+void SoftSolver::integrateVelocities(bool sumBefore)
 {
-    integrateVelocitiesOf(m_state);
+    if (sumBefore)
+        integrateVelocitiesOf<true>(m_state);
+    else
+        integrateVelocitiesOf<false>(m_state);
     if (m_single)
         toSingle(false);
 }
@@ -292,24 +340,6 @@ void SoftSolver::fromSingle()
     }
 }
 
-template <typename State> void SoftSolver::integrateVelocitiesOf(std::vector<State>& state)
-{
-    // The energy sums of the new velocities in the same pass (the same arithmetic, in the
-    // same order, as sumEnergy()): soft_step.cpp asks for them next.
-    const double h = m_substeps.h;
-    double e = 0.0, p = 0.0;
-    for (size_t k = 0; k < m_moving.size(); ++k) {
-        State& s = state[static_cast<size_t>(m_moving[k])];
-        s.vx += h * m_acceleration[k].x();
-        s.vy += h * m_acceleration[k].y();
-        s.w += h * m_angularAcceleration[k];
-        addEnergy(k, s, e, p);
-    }
-    m_energy = 0.5 * e;
-    m_power = p;
-    m_energyValid = true;
-}
-
 template <typename State>
 void SoftSolver::addEnergy(size_t k, const State& s, double& energy, double& power) const
 {
@@ -317,6 +347,39 @@ void SoftSolver::addEnergy(size_t k, const State& s, double& energy, double& pow
     energy += m_mass[k] * (s.vx * s.vx + s.vy * s.vy) + m_inertia[k] * s.w * s.w;
     power += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
              m_inertia[k] * m_angularAcceleration[k] * s.w;
+}
+
+template <bool SumBefore, typename State>
+void SoftSolver::integrateVelocitiesOf(std::vector<State>& state)
+{
+    // The energy sums of the new velocities in the same pass (the same arithmetic, in the
+    // same order, as sumEnergy()): soft_step.cpp asks for them next. SumBefore: those of the
+    // velocities before too (energyBefore()), which soft_step.cpp asked for after the relax
+    // pass of the substep before in a pass of their own. The arrays through local pointers,
+    // as in integratePositionsOf().
+    const double h = m_substeps.h;
+    double e = 0.0, p = 0.0, e0 = 0.0, p0 = 0.0;
+    State* const states = state.data();
+    const int* const moving = m_moving.data();
+    const size_t count = m_moving.size();
+    const Vec2* const acceleration = m_acceleration.data();
+    const double* const angularAcceleration = m_angularAcceleration.data();
+    for (size_t k = 0; k < count; ++k) {
+        State& s = states[static_cast<size_t>(moving[k])];
+        if constexpr (SumBefore)
+            addEnergy(k, s, e0, p0);
+        s.vx += h * acceleration[k].x();
+        s.vy += h * acceleration[k].y();
+        s.w += h * angularAcceleration[k];
+        addEnergy(k, s, e, p);
+    }
+    if constexpr (SumBefore) {
+        m_energyBefore = 0.5 * e0;
+        m_powerBefore = p0;
+    }
+    m_energy = 0.5 * e;
+    m_power = p;
+    m_energyValid = true;
 }
 
 void SoftSolver::setDrift(const std::vector<Vec2>& drift, const std::vector<double>& angularDrift)
@@ -372,24 +435,32 @@ template <typename State> void SoftSolver::integratePositionsOf(std::vector<Stat
 {
     const double h = m_substeps.h;
     const bool drifts = !m_drift.empty();
+    // The arrays through local pointers: a store into a body's state may alias a vector's
+    // own pointers as far as the compiler knows, and it loaded each of them again per body.
+    State* const states = state.data();
+    Vec2* const position = m_position.data();
+    double* const angle = m_angle.data();
+    const char* const turns = m_turns.data();
+    const Vec2* const drift = m_drift.data();
+    const double* const angularDrift = m_angularDrift.data();
     auto move = [&](int id) {
         const auto i = static_cast<size_t>(id);
-        State& s = state[i];
+        State& s = states[i];
         double dx = h * s.vx, dy = h * s.vy, da = h * s.w;
         if (drifts) {
-            dx += h * m_drift[i].x();
-            dy += h * m_drift[i].y();
-            da += h * m_angularDrift[i];
+            dx += h * drift[i].x();
+            dy += h * drift[i].y();
+            da += h * angularDrift[i];
         }
-        m_position[i] += Vec2(dx, dy);
-        m_angle[i] += da;
+        position[i] += Vec2(dx, dy);
+        angle[i] += da;
         s.dpx += dx;
         s.dpy += dy;
         // A circle about its centre of mass touches where the normal meets it, however it
         // turns: its lever arm stays. Turned with a rolling disc, the arm lifted its touching
         // point by r (1 - cos) of the turn, a gap that was not there, and the disc rode up to
         // 2 mm low into the ground at dt = 1/60 s.
-        if (!m_turns[i])
+        if (!turns[i])
             return;
         // The rotation since the step began, turned by da to first order and normalised: it
         // only places the lever arms for the separation, so a sine and cosine are not needed.
@@ -399,11 +470,17 @@ template <typename State> void SoftSolver::integratePositionsOf(std::vector<Stat
         s.qs = sn * inv;
     };
     double power = 0.0; // movePower(), in the same pass
-    for (size_t k = 0; k < m_moving.size(); ++k) {
-        const State& s = state[static_cast<size_t>(m_moving[k])];
-        move(m_moving[k]);
-        power += m_mass[k] * (m_acceleration[k].x() * s.vx + m_acceleration[k].y() * s.vy) +
-                 m_inertia[k] * m_angularAcceleration[k] * s.w;
+    const int* const moving = m_moving.data();
+    const size_t count = m_moving.size();
+    const Vec2* const acceleration = m_acceleration.data();
+    const double* const angularAcceleration = m_angularAcceleration.data();
+    const double* const mass = m_mass.data();
+    const double* const inertia = m_inertia.data();
+    for (size_t k = 0; k < count; ++k) {
+        const State& s = states[static_cast<size_t>(moving[k])];
+        move(moving[k]);
+        power += mass[k] * (acceleration[k].x() * s.vx + acceleration[k].y() * s.vy) +
+                 inertia[k] * angularAcceleration[k] * s.w;
     }
     m_movePower = power;
     for (int id : m_kinematic)
@@ -451,23 +528,30 @@ template <typename State, typename BlockType>
 void SoftSolver::endOf(std::vector<Body>& bodies, const std::vector<State>& state,
                        const std::vector<BlockType>& blocks)
 {
+    // The arrays through local pointers, as in integratePositionsOf().
+    Body* const out = bodies.data();
+    const State* const states = state.data();
+    const Vec2* const position = m_position.data();
+    const double* const angle = m_angle.data();
     auto write = [&](int id) {
         const auto i = static_cast<size_t>(id);
-        Body& b = bodies[i];
-        const State& s = state[i];
+        Body& b = out[i];
+        const State& s = states[i];
         b.velocity = Vec2(s.vx, s.vy);
         b.angularVelocity = s.w;
-        b.position = m_position[i];
-        b.angle = m_angle[i];
+        b.position = position[i];
+        b.angle = angle[i];
     };
     for (int id : m_moving)
         write(id);
     for (int id : m_kinematic)
         write(id);
     const double substeps = m_substeps.count;
+    Contact* const contacts = m_contacts->data();
+    const BlockType* const block = blocks.data();
     for (const Slot& slot : m_slots) {
-        Contact& ct = (*m_contacts)[static_cast<size_t>(slot.contact)];
-        const BlockType& k = blocks[static_cast<size_t>(slot.block)];
+        Contact& ct = contacts[static_cast<size_t>(slot.contact)];
+        const BlockType& k = block[static_cast<size_t>(slot.block)];
         const auto l = static_cast<size_t>(slot.lane);
         for (int i = 0; i < slot.points; ++i) {
             ct.normalImpulse[static_cast<size_t>(i)] = substeps * k.p[i].normalImpulse[l];

@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace rigidlab::physics {
@@ -53,7 +54,9 @@ public:
     void setPins(const std::vector<PinJointDef>& pins, const std::vector<Body>& bodies);
 
     // A substep, in this order (Catto's soft step).
-    void integrateVelocities();
+    /// sumBefore: kineticEnergy() and loadPower() of the velocities before, in the same pass
+    /// (energyBefore()).
+    void integrateVelocities(bool sumBefore = false);
     void warmStart();
     /// useBias: the soft solve that pushes overlaps apart; false: the relax pass, rigid and
     /// without bias, which takes the push's velocity out again. lookAhead: a gap may close
@@ -72,6 +75,9 @@ public:
     /// Power of the applied loads at the velocities the last integratePositions() moved the
     /// bodies with [W]: the load's work over that substep is h times it.
     double movePower() const { return m_movePower; }
+    /// kineticEnergy() [J] and loadPower() [W] as they were before the last
+    /// integrateVelocities(true), the same bits as asked for then.
+    std::pair<double, double> energyBefore() const { return {m_energyBefore, m_powerBefore}; }
 
     int constraintCount() const { return static_cast<int>(m_slots.size()); }
 
@@ -94,8 +100,17 @@ private:
         bool movesA = false, movesB = false;
         bool operator==(const ColourKey&) const = default;
     };
-    /// From the bodies as begin() took them (m_active).
-    ColourKey colourKey(const Contact& ct) const;
+    /// begin()'s copy of what the substeps read of the bodies: each body's state, centre,
+    /// angle, inverse inertia and flags, and the moving bodies' loads, masses and inertias.
+    void takeBodies(const std::vector<Body>& bodies, const std::vector<Vec2>& acceleration,
+                    const std::vector<double>& angularAcceleration);
+    /// From the bodies as begin() took them (m_active). Inline: sameColouring() asks it of
+    /// every contact in every step.
+    ColourKey colourKey(const Contact& ct) const
+    {
+        return {ct.a, ct.b, m_active[static_cast<size_t>(ct.a)] != 0,
+                m_active[static_cast<size_t>(ct.b)] != 0};
+    }
     /// Colours the contacts (fast/soft_colouring.cpp), or keeps last step's colouring.
     void buildBlocks(const std::vector<Contact>& contacts, const std::vector<Body>& bodies);
     /// Packs the coloured contacts into blocks of m_width lanes, the overflow last.
@@ -104,20 +119,25 @@ private:
     /// in the same order, the same bodies and lanes (a pile at rest, step after step). Then
     /// the blocks only need their lanes filled again.
     bool sameColouring(const std::vector<Contact>& contacts, const std::vector<Body>& bodies) const;
-    /// Fills lane `lane` of block `block` (of m_blocks, or m_singleBlocks when m_single) with
-    /// the contact ct, from the bodies as begin() took them.
-    void fillLane(const Contact& ct, int block, int lane);
-    /// Empty blocks for the colouring, every lane on the spare body.
-    void resetBlocks(int count, int spare);
+    /// `count` blocks for the colouring, holding whatever they held: layBlocks() fills every
+    /// field of a lane it gives a contact, and empties the others (emptyLanes()).
+    void resetBlocks(int count);
+    /// Empties lanes [from, the block's width) of block `block`: on the spare body, every
+    /// number 0, as a block made anew.
+    void emptyLanes(int block, int from, int spare);
     // The passes over the bodies and blocks of either precision (soft_solver.cpp).
+    /// Fills lane `lane` of block k (of m_blocks, or m_singleBlocks when m_single) with the
+    /// contact ct, from the bodies as begin() took them; every field of the lane.
     template <typename BlockType> void fillLaneOf(const Contact& ct, BlockType& k, int lane);
-    template <typename State> void integrateVelocitiesOf(std::vector<State>& state);
+    template <bool SumBefore, typename State> void integrateVelocitiesOf(std::vector<State>& state);
     template <typename State> void integratePositionsOf(std::vector<State>& state);
     template <typename State> void sumEnergyOf(const std::vector<State>& state) const;
     /// Adds twice moving body k's kinetic energy to energy, its loads' power to power (the one
-    /// formula of integrateVelocitiesOf() and sumEnergyOf()).
+    /// formula of integrateVelocitiesOf() and sumEnergyOf()). Always inline: GCC called it
+    /// instead, three times per body and substep.
     template <typename State>
-    void addEnergy(size_t k, const State& s, double& energy, double& power) const;
+    [[gnu::always_inline]] inline void addEnergy(size_t k, const State& s, double& energy,
+                                                 double& power) const;
     template <typename State, typename BlockType>
     void endOf(std::vector<Body>& bodies, const std::vector<State>& state,
                const std::vector<BlockType>& blocks);
@@ -156,7 +176,8 @@ private:
 
     /// The sums of sumEnergy() for the present velocities, valid while m_energyValid.
     mutable double m_energy = 0, m_power = 0;
-    double m_movePower = 0; ///< see movePower() [W]
+    double m_movePower = 0;                       ///< see movePower() [W]
+    double m_energyBefore = 0, m_powerBefore = 0; ///< see energyBefore()
     mutable bool m_energyValid = false;
 
     std::vector<Contact>* m_contacts = nullptr;

@@ -392,6 +392,16 @@ void projectTouchedPins(StepContext& ctx)
         &ctx.scratch.touchedJoints);
 }
 
+/// What a substep's relax pass leaves to subtract from the contacts' loss (softSubsteps()): the
+/// kinetic energy and the loads' power after it (`relaxed`), against the loads' work at the
+/// velocities that moved the bodies. The load moved the bodies at the solve's velocities, before
+/// the relax pass: its work is h P there, not at the relaxed velocities (a rolling disc, pushed
+/// up and relaxed down in every substep, counted 0.64 J/s taken that it kept).
+double relaxedLoss(const SoftSolver& solver, std::pair<double, double> relaxed, double sub)
+{
+    return relaxed.first + 0.5 * sub * relaxed.second - sub * solver.movePower();
+}
+
 /// The substeps (soft_solver.cpp), each timed by stage: integrate velocities, warm start,
 /// solve with the soft push, integrate positions, relax. contacts: whether there is anything
 /// to solve. Returns the kinetic energy the contacts took [J] (see the top of this file).
@@ -403,10 +413,14 @@ double softSubsteps(StepContext& ctx, bool contacts)
     for (int k = 0; k < ctx.substeps; ++k) {
         {
             StageTimer timer(ctx.profile, Stage::Integration);
-            solver.integrateVelocities();
+            // After the first substep, the energy the relax pass before left is summed in the
+            // same pass over the bodies (below).
+            solver.integrateVelocities(contacts && k > 0);
         }
         if (contacts) {
             StageTimer timer(ctx.profile, Stage::ContactSolve);
+            if (k > 0)
+                loss -= relaxedLoss(solver, solver.energyBefore(), sub);
             loss += solver.kineticEnergy() - 0.5 * sub * solver.loadPower();
             solver.warmStart();
             solver.solve(true);
@@ -418,11 +432,8 @@ double softSubsteps(StepContext& ctx, bool contacts)
         if (contacts) {
             StageTimer timer(ctx.profile, Stage::ContactSolve);
             solver.solve(false, k + 1 < ctx.substeps);
-            // The load moved the bodies at the solve's velocities, before the relax pass: its
-            // work is h P there, not at the relaxed velocities (a rolling disc, pushed up and
-            // relaxed down in every substep, counted 0.64 J/s taken that it kept).
-            loss -=
-                solver.kineticEnergy() + 0.5 * sub * solver.loadPower() - sub * solver.movePower();
+            if (k + 1 == ctx.substeps)
+                loss -= relaxedLoss(solver, {solver.kineticEnergy(), solver.loadPower()}, sub);
         }
     }
     return loss;

@@ -80,6 +80,9 @@ void countContactsOf(StepContext& ctx, std::vector<std::pair<int, int>>* pairs);
 double outerRadius(const Body& b);
 /// The body's smallest width: what it must not jump past in a step [m] (continuous.cpp).
 double ownSize(const Body& b);
+/// Each body's outerRadius() and ownSize(), at the body's index: StepScratch::extent, computed
+/// for the bodies added since it was last asked for (continuous.cpp).
+const std::vector<BodyExtent>& bodyExtents(StepContext& ctx);
 
 /// Continuous collision after every solver: each body that moved more than its own size put
 /// back where its motion in the step first comes within the slop of a body that does not move

@@ -58,6 +58,12 @@ struct BodyPose {
     double angularVelocity = 0;
 };
 
+/// A body's extent about its centre of mass, from its shape (continuous.cpp).
+struct BodyExtent {
+    double outerRadius = 0; ///< outerRadius(): to its farthest point [m]
+    double ownSize = 0;     ///< ownSize(): its smallest width [m]
+};
+
 /// The world's buffers reused from step to step.
 struct StepScratch {
     BroadPhase broadPhase;
@@ -116,6 +122,10 @@ struct StepScratch {
     std::vector<Transform> xf;
     std::vector<Vec2> xfPosition;
     std::vector<double> xfAngle;
+    /// Per body, its extent (bodyExtents(), continuous.cpp): a body's shape and centre of mass
+    /// are set when it is added (World::addBody) and stay, so each body's is computed once,
+    /// when the step first sees it, instead of in every step.
+    std::vector<BodyExtent> extent;
     /// Islands (islands.cpp): union-find parents and the bodies of each island.
     std::vector<int> islandParent;
     std::vector<int> islandOrder, islandStart;
