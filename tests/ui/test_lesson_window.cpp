@@ -30,6 +30,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <algorithm>
+
 #include "question_kinds.h"
 #include "test_main.h"
 
@@ -309,6 +311,13 @@ private slots:
     void satStepWalksTheAxes()
     {
         for (const QString& path : shippedLessons()) {
+            // A window only for a lesson with a SAT step (a window a lesson is slow to build in
+            // the sanitizer pass: seven of them before the SAT lesson took over 5 minutes).
+            const lessons::LessonLoadResult file = lessons::loadLessonFile(path);
+            QVERIFY2(file.ok, qPrintable(file.error));
+            if (std::none_of(file.lesson.steps.begin(), file.lesson.steps.end(),
+                             [](const lessons::LessonStep& step) { return step.sat.has_value(); }))
+                continue;
             MainWindow w;
             QCOMPARE(w.openLesson(path, true), QString());
             auto& player = w.lessonPlayer();
