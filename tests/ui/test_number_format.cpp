@@ -2,8 +2,11 @@
 // Numbers for people (common/number_format.h): fixed notation in the range a lab shows,
 // rounding noise as 0 against the quantity's scale, large values with scaled units or a power
 // of ten, the locale's decimal separator; and every text reads back as the value it shows.
+// The status bar's energy numbers likewise (common/status_text.h): what the contacts took
+// against the scene's energy, and the integrator's error estimate as a power of ten.
 
 #include "common/number_format.h"
+#include "common/status_text.h"
 
 #include <QLocale>
 #include <QRandomGenerator>
@@ -31,6 +34,12 @@ private slots:
     void quantity_data();
     void quantity();
     void readsBackAsShown();
+    void powerOfTen_data();
+    void powerOfTen();
+    void dissipated_data();
+    void dissipated();
+    void estimate_data();
+    void estimate();
 };
 
 void TestNumberFormat::readable_data()
@@ -140,6 +149,81 @@ void TestNumberFormat::readsBackAsShown()
                                     .arg(halfDigit)));
         }
     }
+}
+
+void TestNumberFormat::powerOfTen_data()
+{
+    QTest::addColumn<QString>("locale");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("shown");
+    const QString en = QStringLiteral("en_US"), cs = QStringLiteral("cs_CZ");
+    QTest::newRow("small, Czech") << cs << 1.234e-7 << QStringLiteral("1,23 × 10⁻⁷");
+    QTest::newRow("small") << en << 1.234e-7 << QStringLiteral("1.23 × 10⁻⁷");
+    QTest::newRow("negative") << en << -5e-12 << QStringLiteral("-5 × 10⁻¹²");
+    QTest::newRow("mantissa rounds up") << cs << 9.999e-5 << QStringLiteral("1 × 10⁻⁴");
+    QTest::newRow("no power for 1 to 10") << cs << 2.5 << QStringLiteral("2,5");
+    QTest::newRow("large") << en << 3.0e9 << QStringLiteral("3 × 10⁹");
+    QTest::newRow("zero") << en << 0.0 << QStringLiteral("0");
+    QTest::newRow("not a number") << en << std::numeric_limits<double>::quiet_NaN()
+                                  << QStringLiteral("–");
+}
+
+void TestNumberFormat::powerOfTen()
+{
+    QFETCH(QString, locale);
+    QFETCH(double, value);
+    QFETCH(QString, shown);
+    QCOMPARE(formatPowerOfTen(value, 3, QLocale(locale)), shown);
+}
+
+void TestNumberFormat::dissipated_data()
+{
+    QTest::addColumn<QString>("locale");
+    QTest::addColumn<double>("joules");
+    QTest::addColumn<double>("scale");
+    QTest::addColumn<QString>("shown");
+    const QString en = QStringLiteral("en_US"), cs = QStringLiteral("cs_CZ");
+    // The two carts' elastic hit (tests/lessons/data/two_carts): the soft contact took a
+    // millionth of the scene's 11.92 J. Nothing a student should read as lost.
+    QTest::newRow("elastic hit, Czech") << cs << 1.06e-5 << 11.92 << QStringLiteral("0");
+    QTest::newRow("elastic hit") << en << 1.06e-5 << 11.92 << QStringLiteral("0");
+    QTest::newRow("a millionth of a joule") << en << 1.2e-6 << 1.0 << QStringLiteral("0");
+    // What an inelastic hit takes, in the locale's notation.
+    QTest::newRow("inelastic, Czech") << cs << 2.6667 << 11.92 << QStringLiteral("2,67");
+    QTest::newRow("inelastic") << en << 2.6667 << 11.92 << QStringLiteral("2.67");
+    QTest::newRow("a small scene, Czech") << cs << 0.00123 << 0.05 << QStringLiteral("0,00123");
+    QTest::newRow("a large scene") << en << 12345.6 << 50000.0 << QStringLiteral("12346");
+}
+
+void TestNumberFormat::dissipated()
+{
+    QFETCH(QString, locale);
+    QFETCH(double, joules);
+    QFETCH(double, scale);
+    QFETCH(QString, shown);
+    const QString text = dissipatedText(joules, scale, QLocale(locale));
+    QVERIFY2(text == shown, qPrintable(text + QStringLiteral(" | expected ") + shown));
+}
+
+void TestNumberFormat::estimate_data()
+{
+    QTest::addColumn<QString>("locale");
+    QTest::addColumn<double>("value");
+    QTest::addColumn<QString>("shown");
+    const QString en = QStringLiteral("en_US"), cs = QStringLiteral("cs_CZ");
+    QTest::newRow("tiny, Czech") << cs << 3.14e-9 << QStringLiteral("3,1 × 10⁻⁹");
+    QTest::newRow("tiny") << en << 3.14e-9 << QStringLiteral("3.1 × 10⁻⁹");
+    QTest::newRow("plain, Czech") << cs << 0.0126 << QStringLiteral("0,013");
+    QTest::newRow("zero") << en << 0.0 << QStringLiteral("0");
+    QTest::newRow("huge") << en << 2.5e7 << QStringLiteral("2.5 × 10⁷");
+}
+
+void TestNumberFormat::estimate()
+{
+    QFETCH(QString, locale);
+    QFETCH(double, value);
+    QFETCH(QString, shown);
+    QCOMPARE(estimateText(value, 2, QLocale(locale)), shown);
 }
 
 RIGIDLAB_TEST_MAIN(TestNumberFormat)

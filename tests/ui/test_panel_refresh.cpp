@@ -2,14 +2,18 @@
 // A frame does only what changed: the view places a body with one sine and one cosine, none
 // for a body that stands where it was drawn; the inspector and the SAT panel fill nothing in
 // for a frame that changed nothing they show, nor while they are out of sight, and are up to
-// date once shown.
+// date once shown; so is the bounce table opened while the run is paused.
 
 #include "common/number_format.h"
+#include "lesson_player/lesson_panels.h"
+#include "panels/fitting_table.h"
 #include "panels/inspector_panel.h"
 #include "panels/sat_panel.h"
 #include "simulation/simulation_controller.h"
 #include "window/main_window.h"
 
+#include <QAction>
+#include <QDir>
 #include <QDockWidget>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -181,6 +185,41 @@ private slots:
         c.advanceClock(1.5 * c.world().def().dt); // the turning box moved
         QCOMPARE(sat.tableFillCount(), hidden + 2);
         c.setRunning(false);
+    }
+
+    // The bounce table skips the run's frames while out of sight; opened while the run is
+    // paused (nothing more changes to refresh it), it shows the bounces measured so far.
+    void bounceTableCatchesUpWhenShown()
+    {
+        MainWindow w;
+        test::showOnProjector(w);
+        const QString path =
+            QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("four_balls.json"));
+        QCOMPARE(w.openScene(path, true), QString());
+        ui::SimulationController& c = w.controller();
+        QDockWidget* bounces = w.dock(QStringLiteral("bounces"));
+        QDockWidget* collision = w.dock(QStringLiteral("collision"));
+        QVERIFY(bounces->isHidden() && collision->isHidden());
+        collision->toggleViewAction()->trigger(); // the run's events measured from here
+        for (int k = 0; k < 1000; ++k)
+            c.stepForward();
+        QTRY_VERIFY_WITH_TIMEOUT(c.eventsUpToDate(), 120000);
+        const auto ball = static_cast<physics::BodyId>(4); // e = 1: it rises again
+        const auto& apexes = c.lessonWatch().measurements().apexes(ball);
+        QVERIFY(!apexes.empty());
+        const QString h1 = ui::csvNumber(apexes.front().y - apexes.front().bounceY);
+
+        bounces->toggleViewAction()->trigger(); // View › Panels › Bounces, the run paused
+        bounces->raise();
+        QCoreApplication::processEvents();
+        QVERIFY(w.bouncePanel().isVisible());
+        const ui::CsvTable& csv = w.bouncePanel().table()->csv();
+        QStringList cells; // the ball's row: ball, e, drop, h1, h1/h0, …
+        for (const QStringList& row : csv.rows)
+            if (row.value(0) == c.scene().bodyLabel(ball))
+                cells = row;
+        QVERIFY2(cells.value(3) == h1,
+                 qPrintable(cells.join(u'|') + QStringLiteral(" | h1 ") + h1));
     }
 };
 

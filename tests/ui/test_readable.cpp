@@ -2,13 +2,17 @@
 // Messages that can be read: the divergence banner and the text
 // drawn over the world have a WCAG contrast of at least 4.5:1 against what lies behind them,
 // in a light and a dark system palette; and where a lesson's text says a world stops, it
-// stops there and the window says why.
+// stops there and the window says why; the numbers it says that with, and a plot's mark of a
+// changed setting, are in the locale's fixed notation even when small ("0,00002", never
+// "2E-05").
 
 #include "common/divergence_text.h"
 #include "common/number_format.h"
 #include "common/theme.h"
+#include "lesson_editor/step_checks.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/divergence_banner.h"
+#include "question_kinds/measure_names.h"
 #include "simulation/simulation_controller.h"
 #include "view/body_item.h"
 #include "view/world_view.h"
@@ -19,9 +23,11 @@
 
 #include <QApplication>
 #include <QDir>
+#include <QJsonObject>
 #include <QLabel>
 #include <QMap>
 #include <QPalette>
+#include <QSignalSpy>
 #include <QStyle>
 #include <QToolTip>
 #include <QtTest>
@@ -269,6 +275,42 @@ private slots:
             for (int x = 0; x < view.width() && !alert; ++x)
                 alert = QColor::fromRgb(view.pixel(x, y)) == ui::theme::worldAlertText();
         QVERIFY(alert);
+    }
+
+    void smallNumbersInFixedNotation()
+    {
+        QLocale::setDefault(QLocale(QLocale::Czech, QLocale::CzechRepublic));
+        physics::Divergence d;
+        d.time = 2e-5;
+        const QString label = ui::divergenceLabel(d);
+        QVERIFY2(label.contains(QStringLiteral("t = 0,00002 s")), qPrintable(label));
+        // The lesson editor's words: a step check's spread of a large value, a question's
+        // prompt at a late time.
+        ui::StepFinding finding;
+        finding.spreads.push_back({0, 12500, 13500, 13000, 0.00005, QStringLiteral("J")});
+        const QString lines = ui::stepCheckLines(finding).join(u'\n');
+        QVERIFY2(
+            lines.contains(QStringLiteral("12500")) && lines.contains(QStringLiteral("13500")) &&
+                lines.contains(QStringLiteral("13000")) && !lines.contains(QStringLiteral("E+")),
+            qPrintable(lines));
+        const QString prompt =
+            ui::defaultPrompt(QJsonObject{{QStringLiteral("kind"), QStringLiteral("speed")},
+                                          {QStringLiteral("time"), 12500.0}},
+                              QStringLiteral("cart"));
+        QVERIFY2(prompt.contains(QStringLiteral("12500")), qPrintable(prompt));
+
+        MainWindow w;
+        const QString path =
+            QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("ball_drop.json"));
+        QCOMPARE(w.openScene(path, true), QString());
+        ui::SimulationController& c = w.controller();
+        c.stepForward(); // a change at the start is marked nowhere
+        QSignalSpy marked(&c, &ui::RunView::marked);
+        c.setDt(2e-5);
+        QCOMPARE(marked.size(), 1);
+        const QString mark = marked.front().at(1).toString();
+        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        QVERIFY2(mark == QStringLiteral("dt = 0,00002 s"), qPrintable(mark));
     }
 };
 

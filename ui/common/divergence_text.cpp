@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "common/divergence_text.h"
 
+#include "common/number_format.h"
 #include "format/divergence_message.h"
 
 #include <QLocale>
@@ -36,7 +37,7 @@ QString divergenceShort(const physics::Divergence& d)
 QString divergenceLabel(const physics::Divergence& d, const QString& bodyLabel)
 {
     return DivergenceWords::tr("stopped at t = %1 s: %2")
-        .arg(QLocale().toString(d.time, 'g', 6), divergenceReason(d, bodyLabel));
+        .arg(formatReadable(d.time, 6), divergenceReason(d, bodyLabel));
 }
 
 } // namespace rigidlab::ui

@@ -66,22 +66,34 @@ QString formatReadable(double v, int significant, double scale, const QLocale& b
     const double reference = std::max(std::abs(v), scale);
     if (reference == 0.0)
         return locale.toString(0);
-    if (std::abs(v) >= kPlainUpTo) {
-        // A power of ten, its mantissa with the digits asked for.
-        int power = static_cast<int>(std::floor(std::log10(std::abs(v))));
-        double mantissa = v / std::pow(10.0, power);
-        QString digits = locale.toString(mantissa, 'f', significant - 1);
-        if (std::abs(locale.toDouble(digits)) >= 10) { // 9,9996 rounded up to 10,000
-            ++power;
-            mantissa /= 10;
-            digits = locale.toString(mantissa, 'f', significant - 1);
-        }
-        return withoutTrailingZeros(digits, locale) + QStringLiteral(" × 10") + superscript(power);
-    }
+    if (std::abs(v) >= kPlainUpTo)
+        return formatPowerOfTen(v, significant, locale);
     const int magnitude = static_cast<int>(std::floor(std::log10(reference)));
     const int decimals = std::clamp(significant - 1 - magnitude, 0, kMostDecimals);
     const QString text = withoutTrailingZeros(locale.toString(v, 'f', decimals), locale);
     return isZeroText(text, locale) ? locale.toString(0) : text;
+}
+
+QString formatPowerOfTen(double v, int significant, const QLocale& base)
+{
+    if (!std::isfinite(v))
+        return QStringLiteral("–");
+    QLocale locale = base;
+    locale.setNumberOptions(QLocale::OmitGroupSeparator);
+    significant = std::max(1, significant);
+    if (v == 0.0)
+        return locale.toString(0);
+    // The mantissa with the digits asked for.
+    int power = static_cast<int>(std::floor(std::log10(std::abs(v))));
+    double mantissa = v / std::pow(10.0, power);
+    QString digits = locale.toString(mantissa, 'f', significant - 1);
+    if (std::abs(locale.toDouble(digits)) >= 10) { // 9,9996 rounded up to 10,000
+        ++power;
+        mantissa /= 10;
+        digits = locale.toString(mantissa, 'f', significant - 1);
+    }
+    digits = withoutTrailingZeros(digits, locale);
+    return power == 0 ? digits : digits + QStringLiteral(" × 10") + superscript(power);
 }
 
 QString formatQuantity(double v, const QString& unit, int significant, double scale,

@@ -29,6 +29,11 @@ inline constexpr int kMostDecimals = 9;
 QString formatReadable(double v, int significant = 4, double scale = 0,
                        const QLocale& locale = QLocale());
 
+/// `v` as a mantissa of `significant` digits (trailing zeros dropped) times a power of ten,
+/// in `locale` ("1,2 × 10⁻⁷", "−3 × 10⁹"; no power for one of 1 to 10); "0"; "–" when not a
+/// number. Never "1,2E-07": for a value with no scale to read it against.
+QString formatPowerOfTen(double v, int significant = 3, const QLocale& locale = QLocale());
+
 /// `v` with its unit, a no-break space between ("1,5 m/s", "12,35 kJ"): as formatReadable,
 /// and a value of 10 000 or more in a unit that takes SI prefixes (m, J, N, W, Pa) is
 /// written with k, M or G.

@@ -27,4 +27,19 @@ QString driftPercentText(double percent, const QLocale& locale)
     return formatReadable(percent, 3, 0, locale); // "1040", not "1,04E+03"
 }
 
+QString dissipatedText(double joules, double scale, const QLocale& locale)
+{
+    return formatReadable(joules, kDissipatedDigits, scale, locale);
+}
+
+QString estimateText(double value, int significant, const QLocale& locale)
+{
+    if (!std::isfinite(value))
+        return QStringLiteral("–");
+    const double size = std::abs(value);
+    if (size == 0.0 || (size >= 1e-3 && size < kPlainUpTo))
+        return formatReadable(value, significant, 0, locale);
+    return formatPowerOfTen(value, significant, locale);
+}
+
 } // namespace rigidlab::ui

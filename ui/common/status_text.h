@@ -16,4 +16,19 @@ inline constexpr double kDriftShownAsZeroPercent = 1e-6;
 /// "–" when it is not a number.
 QString driftPercentText(double percent, const QLocale& locale = QLocale());
 
+/// Digits of the energy the contacts, friction, drag and dampers took, against the scene's
+/// energy scale: a millionth of it (a soft contact's give in an elastic hit) is below the last.
+inline constexpr int kDissipatedDigits = 4;
+
+/// What the contacts, friction, drag and dampers took [J], without the unit, as the status bar
+/// shows it: kDissipatedDigits digits against `scale` (the scene's energy at the start, [J]),
+/// so that round-off and a soft contact's millionth of the energy read "0"; fixed notation
+/// in `locale` ("0,0125", never "1,06E-05"; common/number_format.h).
+QString dissipatedText(double joules, double scale, const QLocale& locale = QLocale());
+
+/// A small or large number as a power of ten in `locale`, `significant` digits in all
+/// ("1,2 × 10⁻⁷"), for a value with no scale to read it against (the integrator's error
+/// estimate); a value from 0.001 up to kPlainUpTo in fixed notation; "–" when not a number.
+QString estimateText(double value, int significant, const QLocale& locale = QLocale());
+
 } // namespace rigidlab::ui

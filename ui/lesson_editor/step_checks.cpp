@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "lesson_editor/step_checks.h"
 
+#include "common/number_format.h"
 #include "format/divergence_message.h"
 #include "format/view_text.h"
 #include "run/measurements.h"
@@ -136,16 +137,17 @@ QStringList stepCheckLines(const StepFinding& finding)
         lines.append(
             StepChecks::tr("%1 falls off the stage at t = %2 s, and the run stops there: "
                            "give the step an end time before it, or more ground.")
-                .arg(finding.offStageLabel, locale.toString(finding.offStage->time, 'g', 3)));
+                .arg(finding.offStageLabel, formatReadable(finding.offStage->time, 3, 0, locale)));
     for (const StepFinding::Spread& s : finding.spreads)
         lines.append(StepChecks::tr("Question %1: the integrators a student may choose measure "
                                     "from %2 to %3 %4, wider than the answers judged right "
                                     "(%5 to %6 %4): lock the integrator (Shown and locked) or "
                                     "widen the tolerance.")
                          .arg(s.question + 1)
-                         .arg(locale.toString(s.low, 'g', 4), locale.toString(s.high, 'g', 4),
-                              s.unit, locale.toString(s.value - s.band, 'g', 4),
-                              locale.toString(s.value + s.band, 'g', 4)));
+                         .arg(formatReadable(s.low, 4, 0, locale),
+                              formatReadable(s.high, 4, 0, locale), s.unit,
+                              formatReadable(s.value - s.band, 4, 0, locale),
+                              formatReadable(s.value + s.band, 4, 0, locale)));
     for (QString& line : lines)
         line = lessons::keepUnitsTogether(line);
     return lines;

@@ -37,9 +37,12 @@ QString noneText()
     return QStringLiteral("–");
 }
 
-/// A table's number as the window's language writes it (a decimal comma in Czech).
+/// A table's number as the window's language writes it (a decimal comma in Czech); one that
+/// rounds to nothing reads "0.000", never "-0.000" (a cart that never turned).
 QString num(double v, int digits = 3)
 {
+    if (std::abs(v) < 0.5 * std::pow(10.0, -digits))
+        v = 0.0;
     return QLocale().toString(v, 'f', digits);
 }
 
@@ -162,13 +165,23 @@ BouncePanel::BouncePanel(const RunView& controller, QWidget* parent)
 
 void BouncePanel::refresh()
 {
-    if (!isVisible())
+    if (!isVisible()) {
+        m_behind = true;
         return;
+    }
     refreshNow();
+}
+
+void BouncePanel::showEvent(QShowEvent* event)
+{
+    QWidget::showEvent(event);
+    if (m_behind)
+        refreshNow();
 }
 
 void BouncePanel::refreshNow()
 {
+    m_behind = false;
     const QString heldTip = m_heightsHeld ? tr("Answer the lesson's question first") : QString();
     TableText wide, narrow;
     CsvTable csv;

@@ -38,7 +38,13 @@ public:
     void setHeightsHeld(bool held);
 
 public slots:
+    /// Fills the table, or, while the panel is out of sight, leaves it until it is shown.
     void refresh();
+
+protected:
+    /// Catches up with what changed while the panel was out of sight (its dock closed or
+    /// behind another's tab): a run paused meanwhile changes nothing more to refresh it.
+    void showEvent(QShowEvent* event) override;
 
 private:
     /// Fills the table whether or not the panel is shown.
@@ -50,6 +56,7 @@ private:
     const RunView& m_controller;
     FittingTable* m_table;
     bool m_heightsHeld = false;
+    bool m_behind = false; ///< a refresh was skipped while out of sight
 };
 
 class CollisionPanel : public QWidget {

@@ -27,9 +27,12 @@ namespace {
 /// Pixels kept free around what the overlay draws when the view follows it.
 constexpr double kFitMarginPx = 16.0;
 
-/// A length on screen, in the user's locale [m]: `decimals` after the point.
+/// A length on screen, in the user's locale [m]: `decimals` after the point; one that rounds
+/// to nothing reads "0.000", never "-0.000".
 QString num(double v, int decimals = 3)
 {
+    if (std::abs(v) < 0.5 * std::pow(10.0, -decimals))
+        v = 0.0;
     return QLocale().toString(v, 'f', decimals);
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "question_kinds/measure_names.h"
+#include "common/number_format.h"
 #include "question_kinds/editor_parts.h"
 
 #include <QCoreApplication>
@@ -60,7 +61,7 @@ QString defaultPrompt(const QJsonObject& measure, const QString& bodyName)
 {
     const MeasureName& k = measureName(measure.value(u"kind").toString());
     const QString quantity = QCoreApplication::translate("MeasuredQuestion", k.name);
-    const QString time = QLocale().toString(measure.value(u"time").toDouble(), 'g', 4);
+    const QString time = formatReadable(measure.value(u"time").toDouble(), 4);
     if (!k.time)
         return QCoreApplication::translate("MeasuredQuestion",
                                            "How high does %1 rise after its bounce %2?")

@@ -7,6 +7,7 @@
 // and how closely in the lesson editor (measured_page.h), and under it the value the lab
 // measures, from the same run without a window that the player judges against.
 
+#include "common/number_format.h"
 #include "question_kinds/kind_ui.h"
 #include "question_kinds/measure_names.h"
 #include "question_kinds/measured_page.h"
@@ -166,13 +167,13 @@ inline AnswerLine answerLine(const lessons::MeasuredQuestion& q, const lessons::
                           "export time or choose an earlier time.")};
     const QLocale locale;
     const double band = std::abs(*value) * q.tolerance + q.absoluteTolerance;
-    return {
-        name,
-        lessons::keepUnitsTogether(
-            QCoreApplication::translate(
-                "MeasuredQuestion", "The lab measures %1 %3; answers from %2 to %4 %3 are right.")
-                .arg(locale.toString(*value, 'g', 4), locale.toString(*value - band, 'g', 4),
-                     q.unit, locale.toString(*value + band, 'g', 4)))};
+    return {name, lessons::keepUnitsTogether(
+                      QCoreApplication::translate(
+                          "MeasuredQuestion",
+                          "The lab measures %1 %3; answers from %2 to %4 %3 are right.")
+                          .arg(formatReadable(*value, 4, 0, locale),
+                               formatReadable(*value - band, 4, 0, locale), q.unit,
+                               formatReadable(*value + band, 4, 0, locale)))};
 }
 
 } // namespace rigidlab::ui

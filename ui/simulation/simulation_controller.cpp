@@ -6,6 +6,7 @@
 #include "rigidlab/physics/limits.h"
 
 #include "common/display_names.h"
+#include "common/number_format.h"
 
 #include "format/limits.h"
 #include "format/scene_loader.h"
@@ -23,12 +24,10 @@ namespace rigidlab::ui {
 namespace {
 
 /// A setting's new value in a plot's change mark: on screen, so in the window's locale
-/// ("0,005" in Czech), six significant digits as QString::arg gives.
+/// ("0,005" in Czech), six significant digits in fixed notation ("0,00001", not "1E-05").
 QString markNumber(double value)
 {
-    QLocale locale;
-    locale.setNumberOptions(QLocale::OmitGroupSeparator);
-    return locale.toString(value, 'g', 6);
+    return formatReadable(value, 6);
 }
 
 constexpr int kFrameIntervalMs = 16; // about 60 frames per second

@@ -196,13 +196,13 @@ QString StatusLine::driftText(bool brief) const
     if (std::abs(lost) > 1e-9)
         drift += (brief ? tr(" · dissipated %1 J")
                         : tr(" · dissipated by contacts, friction, drag and dampers %1 J"))
-                     .arg(locale.toString(lost, 'g', 3));
+                     .arg(dissipatedText(lost, m_controller.recorder().energyScale(), locale));
     // The adaptive integrator's own estimate of its local error, live (a developer's detail,
     // not shown on a projector).
     if (const auto estimate = w.integrator().errorEstimate(); estimate && !brief)
         drift += tr(" · %1 error estimate %2 (%Ln substep(s))", nullptr, w.integrator().substeps())
                      .arg(integratorDisplayName(w.def().integrator))
-                     .arg(locale.toString(*estimate, 'g', 2));
+                     .arg(estimateText(*estimate, 2, locale));
     return drift;
 }
 
