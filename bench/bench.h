@@ -124,6 +124,13 @@ struct BenchResult {
 
 /// Runs the scene `options.runs` times in the engine and measures it.
 BenchResult runBench(BenchEngine& engine, const BenchScene& scene, const BenchOptions& options);
+/// The same for several engines taking turns, a run each, `options.runs` rounds: a machine whose
+/// speed drifts over the minutes slows each engine alike, so the ratios between them keep
+/// (run by run, one engine's time moved by 70 % between runs minutes apart on an idle
+/// machine). A result per engine, in `engines`' order; each one's stability and hash are
+/// its first run's, as runBench's.
+std::vector<BenchResult> runInTurns(const std::vector<BenchEngine*>& engines,
+                                    const BenchScene& scene, const BenchOptions& options);
 
 /// The stability figure in words: "top +0.012 m, 0 moved" or "0 escaped".
 std::string stabilityText(const BenchResult& r);

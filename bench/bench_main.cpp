@@ -227,13 +227,16 @@ int main(int argc, char** argv)
         missing.clear(); // the engines were named: the others are not missing
     }
 
+    std::vector<bench::BenchEngine*> turns;
+    for (auto& [key, engine] : engines)
+        turns.push_back(engine.get());
     std::vector<bench::BenchResult> results;
     for (const std::string& name : scenes) {
         const bench::BenchScene scene = *bench::makeBenchScene(name);
-        for (auto& [key, engine] : engines) {
-            results.push_back(bench::runBench(*engine, scene, options));
-            std::fprintf(stderr, "  %-15s %-12s %8.3f ms/step\n", results.back().engine.c_str(),
-                         name.c_str(), results.back().msPerStep);
+        for (bench::BenchResult& r : bench::runInTurns(turns, scene, options)) {
+            std::fprintf(stderr, "  %-15s %-12s %8.3f ms/step\n", r.engine.c_str(), name.c_str(),
+                         r.msPerStep);
+            results.push_back(std::move(r));
         }
     }
     std::printf("\n%s\n", bench::benchTable(results).c_str());
@@ -243,9 +246,10 @@ int main(int argc, char** argv)
         std::printf("Column missing: %s\n", m.c_str());
     for (auto& [key, engine] : engines)
         std::printf("%-9s %s\n", engine->name().c_str(), engine->settings().c_str());
-    std::printf("Every scene: dt 1/60 s, gravity -10 m/s^2, friction 0.6, no restitution; "
-                "%d steps per run (the first not timed), median of %d runs.\n",
-                options.steps, options.runs);
+    std::printf(
+        "Every scene: dt 1/60 s, gravity -10 m/s^2, friction 0.6, no restitution; "
+        "%d steps per run (the first not timed), median of %d runs, the engines taking turns.\n",
+        options.steps, options.runs);
     if (hash) {
         std::printf("\nState hash after %d steps (FNV-1a 64 over each body's position, angle, "
                     "velocity and angular velocity bits; the first run):\n",

@@ -108,6 +108,25 @@ BenchResult runBench(BenchEngine& engine, const BenchScene& scene, const BenchOp
     return r;
 }
 
+std::vector<BenchResult> runInTurns(const std::vector<BenchEngine*>& engines,
+                                    const BenchScene& scene, const BenchOptions& options)
+{
+    BenchOptions once = options;
+    once.runs = 1;
+    std::vector<BenchResult> results;
+    for (int run = 0; run < std::max(1, options.runs); ++run)
+        for (size_t e = 0; e < engines.size(); ++e) {
+            BenchResult r = runBench(*engines[e], scene, once);
+            if (run == 0)
+                results.push_back(std::move(r));
+            else
+                results[e].runs.push_back(r.runs.front());
+        }
+    for (BenchResult& r : results)
+        r.msPerStep = median(r.runs);
+    return results;
+}
+
 std::string stabilityText(const BenchResult& r)
 {
     if (!r.finite)
@@ -161,7 +180,9 @@ std::string benchTable(const std::vector<BenchResult>& results)
     };
     std::string out =
         pad("engine", 17) + pad("scene", 13) + pad("bodies", 8) + pad("ms/step", 10) +
-        pad("ratio", 8) + pad("stability (10 s)", 26) + "counts" +
+        pad("ratio", 8) +
+        pad(format("stability (%.4g s)", results.empty() ? 0.0 : results.front().simulated), 26) +
+        "counts" +
         (reference.empty() ? std::string() : " (ratio and counts against " + reference + ")") +
         "\n";
     for (const BenchResult& r : results) {

@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The benchmark's table (bench/bench_run.cpp): every row's ratio and whether it counts are
 // against the lab's default solver, the soft step ("RigidLab SS"), when it ran, else against
-// the first RigidLab engine that ran; the header line names that engine.
+// the first RigidLab engine that ran; the header line names that engine. The engines take turns,
+// a run each.
 
 #include "bench.h"
 
 #include "test_main.h"
 
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 using namespace rigidlab;
@@ -35,12 +39,59 @@ QString row(const QString& table, const QString& engine)
     return {};
 }
 
+/// An engine that only writes in a log shared by all when it builds a scene, and hashes to how
+/// many times it built one.
+class LoggingEngine : public bench::BenchEngine {
+public:
+    LoggingEngine(std::string name, std::vector<std::string>& log)
+        : m_name(std::move(name)), m_log(log)
+    {
+    }
+    std::string name() const override { return m_name; }
+    std::string settings() const override { return {}; }
+    void build(const bench::BenchScene&) override
+    {
+        m_log.push_back(m_name);
+        ++m_builds;
+    }
+    void step() override {}
+    void poses(std::vector<bench::BenchPose>& out) const override { out.clear(); }
+    std::optional<std::uint64_t> stateHash() const override { return m_builds; }
+
+private:
+    std::string m_name;
+    std::vector<std::string>& m_log;
+    std::uint64_t m_builds = 0;
+};
+
 } // namespace
 
 class TestBenchTable : public QObject {
     Q_OBJECT
 
 private slots:
+    void enginesTakeTurns()
+    {
+        // A run each, round after round, so that a drift in the machine's speed reaches every
+        // engine alike: never two runs of one engine in a row.
+        std::vector<std::string> log;
+        LoggingEngine a("A", log), b("B", log);
+        bench::BenchScene scene;
+        scene.name = "empty";
+        bench::BenchOptions options;
+        options.steps = 3;
+        options.runs = 3;
+        const std::vector<bench::BenchResult> results = bench::runInTurns({&a, &b}, scene, options);
+        QCOMPARE(log, (std::vector<std::string>{"A", "B", "A", "B", "A", "B"}));
+        QCOMPARE(results.size(), size_t(2));
+        QCOMPARE(results[0].engine, std::string("A"));
+        QCOMPARE(results[1].engine, std::string("B"));
+        for (const bench::BenchResult& r : results) {
+            QCOMPARE(r.runs.size(), size_t(3));
+            // The state is the first run's, as a single engine's runs keep it.
+            QCOMPARE(r.hash, std::optional<std::uint64_t>(1));
+        }
+    }
     void softStepIsTheReference()
     {
         // The sequential solver first, as rigidlab-bench runs them: still the soft step is
@@ -53,6 +104,8 @@ private slots:
         const QString header = table.section(u'\n', 0, 0);
         QVERIFY2(header.startsWith(QStringLiteral("engine")), qPrintable(table));
         QVERIFY2(header.contains(QStringLiteral("against RigidLab SS")), qPrintable(table));
+        // The results' runs were 0 s long (made here, not run): the column says so.
+        QVERIFY2(header.contains(QStringLiteral("stability (0 s)")), qPrintable(table));
         // Ratios over the soft step's 2 ms: 2.00, 1.00 and 0.50.
         QVERIFY2(row(table, QStringLiteral("RigidLab")).contains(QStringLiteral(" 2.00 ")),
                  qPrintable(table));
