@@ -14,13 +14,16 @@ namespace rigidlab::ui {
 namespace {
 
 const char* const kCalmNameObject = "rigidlabCalmName";
+const char* const kCalmDescriptionObject = "rigidlabCalmDescription";
 
-/// Holds its widget's next accessible name until the calm interval since the last is over.
+/// Holds its widget's next accessible name (or description) until the calm interval since the
+/// last is over.
 class CalmName : public QObject {
 public:
-    explicit CalmName(QWidget& widget) : QObject(&widget), m_widget(widget)
+    CalmName(QWidget& widget, bool description)
+        : QObject(&widget), m_widget(widget), m_description(description)
     {
-        setObjectName(QLatin1String(kCalmNameObject));
+        setObjectName(QLatin1String(description ? kCalmDescriptionObject : kCalmNameObject));
         m_later.setSingleShot(true);
         connect(&m_later, &QTimer::timeout, this, &CalmName::tell);
     }
@@ -44,28 +47,43 @@ public:
 private:
     void tell()
     {
-        if (m_widget.accessibleName() == m_name)
+        if ((m_description ? m_widget.accessibleDescription() : m_widget.accessibleName()) ==
+            m_name)
             return;
         m_since.restart();
-        m_widget.setAccessibleName(m_name);
+        if (m_description)
+            m_widget.setAccessibleDescription(m_name);
+        else
+            m_widget.setAccessibleName(m_name);
     }
 
     QWidget& m_widget;
+    bool m_description;
     QString m_name;
     QElapsedTimer m_since;
     QTimer m_later;
 };
 
+/// The widget's calm name or description, made when first asked for.
+CalmName& calmOf(QWidget& widget, bool description)
+{
+    // Found by its name: CalmName has no meta-object of its own for findChild to cast to.
+    auto* calm = static_cast<CalmName*>(widget.findChild<QObject*>(
+        QLatin1String(description ? kCalmDescriptionObject : kCalmNameObject),
+        Qt::FindDirectChildrenOnly));
+    return calm ? *calm : *new CalmName(widget, description);
+}
+
 } // namespace
 
 void setCalmAccessibleName(QWidget& widget, const QString& name, bool now)
 {
-    // Found by its name: CalmName has no meta-object of its own for findChild to cast to.
-    auto* calm = static_cast<CalmName*>(
-        widget.findChild<QObject*>(QLatin1String(kCalmNameObject), Qt::FindDirectChildrenOnly));
-    if (!calm)
-        calm = new CalmName(widget);
-    calm->ask(name, now);
+    calmOf(widget, false).ask(name, now);
+}
+
+void setCalmAccessibleDescription(QWidget& widget, const QString& description, bool now)
+{
+    calmOf(widget, true).ask(description, now);
 }
 
 void setCalmText(QLabel& label, const QString& text)

@@ -20,6 +20,8 @@ constexpr int kCalmIntervalMs = 1000;
 /// is kCalmIntervalMs old, else when it is (with the newest name asked for by then). With
 /// `now` (a change the student made, not the clock), at once in any case.
 void setCalmAccessibleName(QWidget& widget, const QString& name, bool now = false);
+/// The same for its accessible description.
+void setCalmAccessibleDescription(QWidget& widget, const QString& description, bool now = false);
 
 /// Shows `text` in `label` now; its accessible name, the text with a negative number's sign
 /// said as "minus" (spoken_numbers.h), follows at the calm rate. (While a label has an

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/forces_view.h"
 
+#include "common/calm_text.h"
 #include "common/number_format.h"
 
 #include <QLabel>
@@ -200,8 +201,10 @@ void ForcesView::showBody(const physics::World& world, physics::BodyId id)
     }
     const QString html = forcesTableText(forces, body);
     m_table->setText(html);
-    // The diagram says in words what it draws: the table's numbers.
-    m_diagram->setAccessibleDescription(QTextDocumentFragment::fromHtml(html).toPlainText());
+    // The diagram says in words what it draws: the table's numbers, at the calm rate (they
+    // change with every frame of a run: 55 descriptions a second buried the focus a reader
+    // was to say).
+    setCalmAccessibleDescription(*m_diagram, QTextDocumentFragment::fromHtml(html).toPlainText());
 }
 
 void ForcesView::showNone()

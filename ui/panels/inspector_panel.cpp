@@ -342,6 +342,12 @@ void InspectorPanel::nameValues()
 
 void InspectorPanel::showRows(bool body)
 {
+    // Only when it changes: a row set visible shows every widget in it, the mass row's
+    // "infinite" too, which fill() then hides for a dynamic body (shown and hidden at every
+    // frame of a run, 110 times a second to a screen reader).
+    if (m_rowsFor == body)
+        return;
+    m_rowsFor = body;
     // Rows of dashes read as "Angle θ: –" one by one; the values' rows and the controls with
     // nothing to edit, graph or turn into other units go, and one line says why.
     m_form->setRowVisible(0, !body);

@@ -113,8 +113,9 @@ private:
     QPushButton* m_graph = nullptr; ///< Graph… of the body shown
     NumberField* m_restitution;
     NumberField* m_friction;
-    std::optional<Shown> m_shown; ///< what the rows show; none when they are to be filled in
-    int m_fills = 0;              ///< see fillCount()
+    std::optional<Shown> m_shown;  ///< what the rows show; none when they are to be filled in
+    int m_fills = 0;               ///< see fillCount()
+    std::optional<bool> m_rowsFor; ///< whether the rows are shown for a body (showRows)
 };
 
 } // namespace rigidlab::ui
