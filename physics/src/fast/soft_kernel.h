@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
-// Private: the soft step's contact solve in structure-of-arrays form (soft_solver.cpp builds
+// Private: the soft step's contact solve in structure-of-arrays form (soft_lanes.cpp fills
 // the blocks, soft_kernel.cpp solves them).
 //
 // The contacts are coloured so that no two of one colour share a moving body; a block holds

@@ -125,10 +125,11 @@ private:
     /// Empties lanes [from, the block's width) of block `block`: on the spare body, every
     /// number 0, as a block made anew.
     void emptyLanes(int block, int from, int spare);
-    // The passes over the bodies and blocks of either precision (soft_solver.cpp).
+    // The constraint rows (soft_lanes.cpp, with resetBlocks() and emptyLanes()).
     /// Fills lane `lane` of block k (of m_blocks, or m_singleBlocks when m_single) with the
     /// contact ct, from the bodies as begin() took them; every field of the lane.
     template <typename BlockType> void fillLaneOf(const Contact& ct, BlockType& k, int lane);
+    // The passes over the bodies of either precision (soft_solver.cpp).
     template <bool SumBefore, typename State> void integrateVelocitiesOf(std::vector<State>& state);
     template <typename State> void integratePositionsOf(std::vector<State>& state);
     template <typename State> void sumEnergyOf(const std::vector<State>& state) const;
@@ -166,7 +167,7 @@ private:
     /// identity (qc - 1, qs), so that a float rounds the change, not the speed or the lever
     /// arm. toSingle: each moving body's velocity to the copy (motion: the displacements and
     /// rotations too, and the kinematic bodies'); fromSingle: the change the passes made, back
-    /// to the double velocities.
+    /// to the double velocities (soft_single.cpp).
     void toSingle(bool motion);
     void fromSingle();
 
