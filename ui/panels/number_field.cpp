@@ -96,6 +96,26 @@ void NumberField::setRange(const lessons::limits::Range& range, const QString& n
     m_unit = unit.isEmpty()
                  ? QString::fromUtf8(range.unit.data(), static_cast<qsizetype>(range.unit.size()))
                  : unit;
+    describe();
+}
+
+void NumberField::setUnitBeside(bool on)
+{
+    if (!on && m_unitBeside)
+        setAccessibleDescription(QString()); // Qt then gives the tooltip
+    m_unitBeside = on;
+    describe();
+}
+
+void NumberField::describe()
+{
+    // A description the field's owner gave stays, unless the unit is to be told.
+    if (!m_unitBeside || m_unit.isEmpty())
+        return;
+    const QString unit = tr("in %1", "the unit a number field holds its value in").arg(m_unit);
+    setAccessibleDescription(toolTip().isEmpty()
+                                 ? unit
+                                 : tr("%1. %2", "the unit, then the tooltip").arg(unit, toolTip()));
 }
 
 lessons::limits::Range NumberField::scaled(const lessons::limits::Range& range, double factor)
@@ -202,6 +222,8 @@ void NumberField::setError(const QString& message)
 
 bool NumberField::event(QEvent* e)
 {
+    if (e->type() == QEvent::ToolTipChange && m_unitBeside)
+        describe();
     if (e->type() == QEvent::ShortcutOverride) {
         // Keys without Ctrl, Alt or Meta are the field's: the window's one-key shortcuts
         // (Space, letters, arrows, Backspace) must not fire while a number is typed. Escape

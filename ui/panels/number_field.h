@@ -47,6 +47,10 @@ public:
     static lessons::limits::Range scaled(const lessons::limits::Range& range, double factor);
     /// Accepts whole numbers only.
     void setInteger(bool on) { m_integer = on; }
+    /// The unit is shown beside the field, not in its label ("Mass m", the field, "kg"): a
+    /// screen reader is told it first in the field's description ("in kg. The body's mass…"),
+    /// which otherwise is the tooltip (a refusal's message while the value is refused).
+    void setUnitBeside(bool on);
 
     double value() const { return m_value; }
     /// Shows `v` as the value in force, to `significant` digits (fewer for a value computed
@@ -92,6 +96,9 @@ private:
     /// "dt must be from 0.0001 ms to 1000 ms".
     QString rangeSentence() const;
     void setError(const QString& message);
+    /// The accessible description: the unit beside the field, then the tooltip.
+    void describe();
+    bool m_unitBeside = false;
 
     lessons::limits::Range m_range{-1e300, 1e300, ""};
     QString m_name;
