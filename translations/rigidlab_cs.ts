@@ -5443,6 +5443,11 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <comment>the unit, then the tooltip</comment>
         <translation>%1. %2</translation>
     </message>
+    <message>
+        <source>%1. It stays %2.</source>
+        <comment>a refusal, then the value that stays in force</comment>
+        <translation>%1. Zůstává %2.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::PlotExporter</name>
