@@ -5433,6 +5433,21 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>“%1” is not a number: %2</source>
         <translation>„%1“ není číslo: %2</translation>
     </message>
+    <message>
+        <source>in %1</source>
+        <comment>the unit a number field holds its value in</comment>
+        <translation>v&#xa0;jednotkách %1</translation>
+    </message>
+    <message>
+        <source>%1. %2</source>
+        <comment>the unit, then the tooltip</comment>
+        <translation>%1. %2</translation>
+    </message>
+    <message>
+        <source>%1. It stays %2.</source>
+        <comment>a refusal, then the value that stays in force</comment>
+        <translation>%1. Zůstává %2.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::PlotExporter</name>

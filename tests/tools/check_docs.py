@@ -1,10 +1,16 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The user's documents hold together: the English manual (docs/manual.md), its Czech
-translation (docs/manual.cs.md), both READMEs and docs/accessibility.md.
+translation (docs/manual.cs.md), both READMEs and docs/accessibility.md; and the speed's
+documents (docs/performance.md and its two logs, docs/performance-log.md for the step and the
+bench, docs/performance-log-window.md for the window's frames) find the rounds they name.
 
 - Every relative link names a file that exists, and every #anchor names a heading of the file
   it points into (GitHub's heading anchors: lower case, punctuation dropped, spaces to '-').
+- A round named from another document is a heading of the log it is in: the log's "TITLE" (or
+  a list of "TITLE"s) in docs/performance-log.md, the window log's "TITLE" in
+  docs/performance-log-window.md, and "TITLE" in [name](FILE.md) in FILE.md. TITLE may be the
+  heading's start, and may break across lines.
 - The two manuals link to each other, and each README to the manual in its language.
 - The Czech manual has the English one's sections: the same sequence of heading levels.
 - Every key the English manual names (F6, Ctrl+Shift+S, Alt+Up, …) appears in the Czech one,
@@ -22,6 +28,14 @@ from pathlib import Path
 
 DOCUMENTS = ["docs/manual.md", "docs/manual.cs.md", "README.md", "README.cs.md",
              "docs/accessibility.md"]
+# The speed's documents: their links and the rounds they name are checked.
+SPEED_DOCUMENTS = ["docs/performance.md", "docs/performance-log.md",
+                   "docs/performance-log-window.md"]
+LOGS = {"the log's": "docs/performance-log.md",
+        "the window log's": "docs/performance-log-window.md"}
+NAMED_ROUNDS = re.compile(r"(the window log's|the log's)(?:\s+full table)?\s*\(?"
+                          r"(\s*\"[^\"]+\"(?:,\s*\"[^\"]+\")*)")
+ROUND_IN_FILE = re.compile(r"\"([^\"]+)\" in \[[^\]]*\]\(([\w.-]+\.md)\)")
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
 KEY = re.compile(r"(?<![\w+])((?:(?:Ctrl|Shift|Alt)\+)+(?:F\d{1,2}|[A-Z]\b|Up|Down|Left|Right|"
                  r"Del|PgUp|PgDown|Backspace|Space)|F\d{1,2}\b)")
@@ -59,6 +73,23 @@ def check_links(root, name, text, problems):
                 problems.append(f"{name}: link to {target}: no heading with that anchor")
 
 
+def check_rounds(root, name, text, problems):
+    """Every round another document names by its title is a heading of the log named."""
+    def one_line(t):
+        return " ".join(t.split())
+
+    def check(title, log):
+        titles = [one_line(t) for _, t in headings((root / log).read_text(encoding="utf-8"))]
+        if not any(t.startswith(one_line(title)) for t in titles):
+            problems.append(f'{name}: "{one_line(title)}": no such heading in {log}')
+
+    for which, titles in NAMED_ROUNDS.findall(text):
+        for title in re.findall(r'"([^"]+)"', titles):
+            check(title, LOGS[which])
+    for title, file in ROUND_IN_FILE.findall(text):
+        check(title, str(((root / name).parent / file).relative_to(root)))
+
+
 def keys_table(text):
     """The first column of the table under the '## Keys' (or '## Klávesy') heading."""
     section = re.search(r"^## (?:Keys|Klávesy)\n(.*?)(?=^## )", text, re.S | re.M)
@@ -90,9 +121,11 @@ def check_keys(english, czech, problems):
 def main(root):
     root = Path(root)
     texts = {name: (root / name).read_text(encoding="utf-8") for name in DOCUMENTS}
+    speed = {name: (root / name).read_text(encoding="utf-8") for name in SPEED_DOCUMENTS}
     problems = []
-    for name, text in texts.items():
+    for name, text in {**texts, **speed}.items():
         check_links(root, name, text, problems)
+        check_rounds(root, name, text, problems)
     for name, target in [("docs/manual.md", "manual.cs.md"), ("docs/manual.cs.md", "manual.md"),
                          ("README.md", "docs/manual.md"), ("README.cs.md", "docs/manual.cs.md")]:
         if f"]({target}" not in texts[name]:
@@ -106,7 +139,7 @@ def main(root):
     check_keys(english, czech, problems)
     for line in problems:
         print(line)
-    print(f"{len(problems)} problem(s) in {len(texts)} documents")
+    print(f"{len(problems)} problem(s) in {len(texts) + len(speed)} documents")
     return 1 if problems else 0
 
 

@@ -4,6 +4,8 @@
 // are pressed), with a shipped lesson open: where the keyboard and screen-reader tests start.
 
 #include "lesson_player/lesson_player.h"
+#include "simulation/simulation_controller.h"
+#include "view/world_view.h"
 #include "window/main_window.h"
 
 #include <QDir>
@@ -45,6 +47,21 @@ inline QString openFirstLessonOnProjector(ui::MainWindow& w)
     if (!showActiveOnProjector(w))
         return QStringLiteral("the window did not become active");
     return w.openLesson(w.lessonPlayer().firstLessonPath(), true);
+}
+
+/// In the welcome scene, the wrecking ball (its second body) chosen with ] ] in the scene and
+/// its numbers asked for with Return, as a student without a mouse does: the ball's body,
+/// or -1 when the keys chose another.
+inline int askWreckingBallNumbers(ui::MainWindow& w)
+{
+    w.view().setFocus();
+    QTest::keyClick(&w.view(), Qt::Key_BracketRight);
+    QTest::keyClick(&w.view(), Qt::Key_BracketRight);
+    const int body = w.view().selectedBody();
+    if (body < 0 || !w.controller().world().body(body).isDynamic())
+        return -1;
+    QTest::keyClick(&w.view(), Qt::Key_Return);
+    return body;
 }
 
 } // namespace rigidlab::test

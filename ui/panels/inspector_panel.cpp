@@ -79,6 +79,7 @@ InspectorPanel::InspectorPanel(SimulationController& controller, QWidget* parent
     m_massEdit->setObjectName(QStringLiteral("mass"));
     m_massEdit->setRange(lessons::limits::kMass, tr("Mass m"));
     m_massEdit->setToolTip(tr("The body's mass; its moment of inertia scales with it"));
+    m_massEdit->setUnitBeside(true);
     // The editable rows are the scene schema's (lessons/format/scene_schema.h): its label and
     // range, so that the inspector and the editor say the same.
     namespace schema = lessons::schema;

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/number_field.h"
 
+#include "common/announcer.h"
+
 #include <QKeyEvent>
 #include <QLocale>
 #include <QRegularExpression>
@@ -49,16 +51,22 @@ QString toAscii(const QString& text)
     return out;
 }
 
+/// Whether `s` (in ASCII, trimmed) is written as a number: one decimal separator at most,
+/// point or comma ("6,4" and "6.4" are the same number in every locale, and "1,2,3", a list or
+/// thousands, is no number).
+bool hasNumberForm(const QString& s)
+{
+    static const QRegularExpression kForm(
+        QStringLiteral("^[+-]?([0-9]+([.,][0-9]*)?|[.,][0-9]+)([eE][+-]?[0-9]+)?$"));
+    return kForm.match(s).hasMatch();
+}
+
 } // namespace
 
 std::optional<double> parseNumber(const QString& text)
 {
     const QString s = toAscii(text).trimmed();
-    // One decimal separator at most, point or comma: "6,4" and "6.4" are the same number in
-    // every locale, and "1,2,3" (a list, or thousands) is no number.
-    static const QRegularExpression kForm(
-        QStringLiteral("^[+-]?([0-9]+([.,][0-9]*)?|[.,][0-9]+)([eE][+-]?[0-9]+)?$"));
-    if (!kForm.match(s).hasMatch())
+    if (!hasNumberForm(s))
         return std::nullopt;
     QByteArray bytes = s.toLatin1();
     bytes.replace(',', '.');
@@ -96,6 +104,26 @@ void NumberField::setRange(const lessons::limits::Range& range, const QString& n
     m_unit = unit.isEmpty()
                  ? QString::fromUtf8(range.unit.data(), static_cast<qsizetype>(range.unit.size()))
                  : unit;
+    describe();
+}
+
+void NumberField::setUnitBeside(bool on)
+{
+    if (!on && m_unitBeside)
+        setAccessibleDescription(QString()); // Qt then gives the tooltip
+    m_unitBeside = on;
+    describe();
+}
+
+void NumberField::describe()
+{
+    // A description the field's owner gave stays, unless the unit is to be told.
+    if (!m_unitBeside || m_unit.isEmpty())
+        return;
+    const QString unit = tr("in %1", "the unit a number field holds its value in").arg(m_unit);
+    setAccessibleDescription(toolTip().isEmpty()
+                                 ? unit
+                                 : tr("%1. %2", "the unit, then the tooltip").arg(unit, toolTip()));
 }
 
 lessons::limits::Range NumberField::scaled(const lessons::limits::Range& range, double factor)
@@ -120,11 +148,14 @@ void NumberField::setValue(double v, int significant)
     display(v, m_digits);
 }
 
+QString NumberField::withUnit(const QString& number) const
+{
+    return m_unit.isEmpty() ? number : tr("%1 %2").arg(number, m_unit);
+}
+
 QString NumberField::rangeSentence() const
 {
-    auto withUnit = [this](double x) {
-        return m_unit.isEmpty() ? formatNumber(x) : tr("%1 %2").arg(formatNumber(x), m_unit);
-    };
+    const auto withUnit = [this](double x) { return this->withUnit(formatNumber(x)); };
     return m_integer ? tr("%1 must be a whole number from %2 to %3")
                            .arg(m_name, withUnit(m_range.min), withUnit(m_range.max))
                      : tr("%1 must be from %2 to %3")
@@ -145,19 +176,29 @@ bool NumberField::commit()
     if (!isModified() && m_error.isEmpty())
         return true;
     const std::optional<double> v = parseNumber(text());
+    const QString typed = text().trimmed();
     QString why;
     if (!v) {
-        why = text().trimmed().isEmpty()
+        // Nothing, or a number written right that no double holds ("1e999"): the range says
+        // what is wanted. Anything else is named as typed.
+        why = typed.isEmpty() || hasNumberForm(toAscii(typed))
                   ? rangeSentence()
-                  : tr("“%1” is not a number: %2").arg(text().trimmed(), rangeSentence());
+                  : tr("“%1” is not a number: %2").arg(typed, rangeSentence());
     } else {
         why = rangeMessage(*v);
     }
     if (!why.isEmpty()) {
+        // And what happens instead: the value in force stays (the field shows it again when
+        // it is left), never a value made up from what was typed.
+        why = tr("%1. It stays %2.", "a refusal, then the value that stays in force")
+                  .arg(why, withUnit(formatNumber(m_value, shownDigits())));
         setError(why);
-        // Shown at once below the field, not only on hovering it.
-        if (isVisible())
+        // Shown at once below the field, not only on hovering it, and told to a reader, who
+        // hears neither the tooltip nor the status bar.
+        if (isVisible()) {
             QToolTip::showText(mapToGlobal(QPoint(0, height())), why, this);
+            announce(*this, why);
+        }
         emit refused(why);
         return false;
     }
@@ -202,6 +243,8 @@ void NumberField::setError(const QString& message)
 
 bool NumberField::event(QEvent* e)
 {
+    if (e->type() == QEvent::ToolTipChange && m_unitBeside)
+        describe();
     if (e->type() == QEvent::ShortcutOverride) {
         // Keys without Ctrl, Alt or Meta are the field's: the window's one-key shortcuts
         // (Space, letters, arrows, Backspace) must not fire while a number is typed. Escape

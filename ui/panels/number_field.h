@@ -6,7 +6,8 @@
 // running world that redraws the panels cannot reformat a number half typed. Escape brings
 // back the value in force. A value that is not a number, or lies outside the field's range,
 // is refused out loud: the field turns red, its tooltip says why (naming the range and its
-// unit), refused() carries the same words for the status bar, and the old value stays. Both
+// unit, and the value that stays), a screen reader is told the same (common/announcer.h),
+// refused() carries the same words for the status bar, and the old value stays. Both
 // the decimal point and the decimal comma are read in every locale; numbers are shown in
 // QLocale(), the application's locale, without group separators.
 //
@@ -47,6 +48,10 @@ public:
     static lessons::limits::Range scaled(const lessons::limits::Range& range, double factor);
     /// Accepts whole numbers only.
     void setInteger(bool on) { m_integer = on; }
+    /// The unit is shown beside the field, not in its label ("Mass m", the field, "kg"): a
+    /// screen reader is told it first in the field's description ("in kg. The body's mass…"),
+    /// which otherwise is the tooltip (a refusal's message while the value is refused).
+    void setUnitBeside(bool on);
 
     double value() const { return m_value; }
     /// Shows `v` as the value in force, to `significant` digits (fewer for a value computed
@@ -91,7 +96,12 @@ private:
     int shownDigits() const { return m_typed ? kFullDigits : m_digits; }
     /// "dt must be from 0.0001 ms to 1000 ms".
     QString rangeSentence() const;
+    /// `number` followed by the field's unit, if it has one.
+    QString withUnit(const QString& number) const;
     void setError(const QString& message);
+    /// The accessible description: the unit beside the field, then the tooltip.
+    void describe();
+    bool m_unitBeside = false;
 
     lessons::limits::Range m_range{-1e300, 1e300, ""};
     QString m_name;

@@ -4,6 +4,7 @@
 // docks: main_window_editor.cpp.
 #include "window/main_window.h"
 
+#include "common/line_edit_accessible.h"
 #include "common/modal_scope.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
@@ -51,10 +52,22 @@
 
 namespace rigidlab::ui {
 
+namespace {
+
+/// The window's controller, made before any of its widgets, and before them the interface a
+/// screen reader is given for every text field: Qt makes a field's interface at its first
+/// accessibility event, as it is filled in, and keeps it.
+SimulationController* madeFirst(MainWindow* window)
+{
+    installLineEditAccessible();
+    return new SimulationController(window);
+}
+
+} // namespace
+
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), m_controller(new SimulationController(this)),
-      m_document(new SceneDocument(this)), m_view(new WorldView(*m_controller, this)),
-      m_controls(new ControlPanel(*m_controller, this)),
+    : QMainWindow(parent), m_controller(madeFirst(this)), m_document(new SceneDocument(this)),
+      m_view(new WorldView(*m_controller, this)), m_controls(new ControlPanel(*m_controller, this)),
       m_inspector(new InspectorPanel(*m_controller, this)),
       m_player(new LessonPlayer(*m_controller, this)), m_sat(new SatPanel(*m_controller, this)),
       m_bounces(new BouncePanel(*m_controller, this)),
