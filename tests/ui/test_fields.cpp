@@ -3,6 +3,7 @@
 // the lesson's answer boxes, typed into key by key while the simulation runs, in an English
 // and a Czech locale. Offscreen, driven as a user would.
 
+#include "common/number_format.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/control_panel.h"
 #include "panels/inspector_panel.h"
@@ -238,11 +239,19 @@ private slots:
         QCOMPARE(controls.size() + inspector.size(), 1);
         const QString message =
             (controls.isEmpty() ? inspector : controls).first().first().toString();
-        const QString lo = ui::formatNumber(min), hi = ui::formatNumber(max);
+        // A message is read, not typed back: its numbers as the window writes them, a power
+        // of ten where the field's own form would have an exponent ("1E-09").
+        const auto said = [](double x) {
+            const QString plain = ui::formatNumber(x);
+            return plain.contains(u'E', Qt::CaseInsensitive) ? ui::formatPowerOfTen(x, 12) : plain;
+        };
+        const QString lo = said(min), hi = said(max);
         const QString range = unit.isEmpty()
                                   ? QStringLiteral("from %1 to %2").arg(lo, hi)
                                   : QStringLiteral("from %1 %3 to %2 %3").arg(lo, hi, unit);
         QVERIFY2(message.contains(range), qPrintable(message + QStringLiteral(" / ") + range));
+        QVERIFY2(!message.contains(QRegularExpression(QStringLiteral("\\d[eE][-+]?\\d"))),
+                 qPrintable(message));
         QCOMPARE(f->error(), message);
         QCOMPARE(f->toolTip(), message);
         QVERIFY(f->property("refused").toBool());

@@ -2,6 +2,7 @@
 #include "panels/number_field.h"
 
 #include "common/announcer.h"
+#include "common/number_format.h"
 
 #include <QKeyEvent>
 #include <QLocale>
@@ -153,9 +154,22 @@ QString NumberField::withUnit(const QString& number) const
     return m_unit.isEmpty() ? number : tr("%1 %2").arg(number, m_unit);
 }
 
+namespace {
+
+/// A number in a message, as formatNumber writes it but never with an exponent ("1E-09"): a
+/// message is read, not typed back, so a power of ten as the window writes it elsewhere.
+QString formatSaid(double v, int significant = 12)
+{
+    const QString plain = formatNumber(v, significant);
+    return plain.contains(QLatin1Char('E'), Qt::CaseInsensitive) ? formatPowerOfTen(v, significant)
+                                                                 : plain;
+}
+
+} // namespace
+
 QString NumberField::rangeSentence() const
 {
-    const auto withUnit = [this](double x) { return this->withUnit(formatNumber(x)); };
+    const auto withUnit = [this](double x) { return this->withUnit(formatSaid(x)); };
     return m_integer ? tr("%1 must be a whole number from %2 to %3")
                            .arg(m_name, withUnit(m_range.min), withUnit(m_range.max))
                      : tr("%1 must be from %2 to %3")
@@ -191,7 +205,7 @@ bool NumberField::commit()
         // And what happens instead: the value in force stays (the field shows it again when
         // it is left), never a value made up from what was typed.
         why = tr("%1. It stays %2.", "a refusal, then the value that stays in force")
-                  .arg(why, withUnit(formatNumber(m_value, shownDigits())));
+                  .arg(why, withUnit(formatSaid(m_value, shownDigits())));
         setError(why);
         // Shown at once below the field, not only on hovering it, and told to a reader, who
         // hears neither the tooltip nor the status bar.
