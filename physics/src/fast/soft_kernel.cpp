@@ -15,8 +15,7 @@
 //   normal      dj = -normalMass massScale (dv.n + bias) - impulseScale j, j stays >= 0
 //   friction    dj = -tangentMass dv.t, |j_t| <= friction j_n
 // (single precision: dv is the change since the step began plus each point's relative velocity
-// then, and j the double impulse of the warm start, rounded, plus the passes' change since:
-// only the change is accumulated and applied, SingleLanesOf)
+// then, OriginLanesOf)
 // Bounces are not the kernel's: the collision phase gives them before the substeps
 // (soft_step.cpp, contact_collisions.cpp).
 
@@ -28,12 +27,6 @@
 #endif
 #ifndef RIGIDLAB_SOFT_REAL
 #define RIGIDLAB_SOFT_REAL double
-#endif
-#if RIGIDLAB_SOFT_SINGLE
-// Single precision's double passes use vectors of twice the float lanes' bytes, wider than this
-// compilation's registers may be: GCC notes that returning them changes the ABI, which does not
-// matter for the functions of this file's anonymous namespace.
-#pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
 namespace rigidlab::physics::soft {
@@ -47,9 +40,9 @@ using V = Real __attribute__((vector_size(W * sizeof(Real))));
 using Block = BlockOf<Real, sizeof(Real) == sizeof(double) ? kBlockWidth : kSingleBlockWidth>;
 using BodyState = typename Block::State;
 using PointLanes = PointLanesOf<Real, Block::kWidth>;
-/// Single precision (SingleLanesOf): the bodies carry their velocity's change since the step
-/// began instead of the velocity, and the passes accumulate only their change of the impulses.
-constexpr bool kSingle = sizeof(SingleLanesOf<Real, Block::kWidth>) > 1;
+/// Whether the bodies carry their velocity's change since the step began (single precision,
+/// OriginLanesOf) instead of the velocity.
+constexpr bool kOrigin = sizeof(OriginLanesOf<Real, Block::kWidth>) > 1;
 
 // The kernel leans on no library (see soft_kernel.h): loads, stores and selections by hand.
 inline V load(const Real* p)
@@ -215,13 +208,11 @@ inline Motion gatherMotion(const Block& k, const BodyState* bodies)
     return {b[0] - a[0], b[1] - a[1], a[2], a[3], b[2], b[3]};
 }
 
-/// Applies the impulse P = dj (dx, dy) at lever arms (rAx, rAy), (rBx, rBy). (S, T: the sides
-/// and vectors of the kernel's precision, or single precision's double passes.)
-template <typename S, typename T>
-inline void apply(S& A, S& B, const T& mA, const T& iA, const T& mB, const T& iB, const T& dj,
-                  const T& dx, const T& dy, const T& rAx, const T& rAy, const T& rBx, const T& rBy)
+/// Applies the impulse P = dj (dx, dy) at lever arms (rAx, rAy), (rBx, rBy).
+inline void apply(Side& A, Side& B, const V& mA, const V& iA, const V& mB, const V& iB, const V& dj,
+                  const V& dx, const V& dy, const V& rAx, const V& rAy, const V& rBx, const V& rBy)
 {
-    const T px = dj * dx, py = dj * dy;
+    const V px = dj * dx, py = dj * dy;
     A.vx -= mA * px;
     A.vy -= mA * py;
     A.w -= iA * (rAx * py - rAy * px);
@@ -231,23 +222,22 @@ inline void apply(S& A, S& B, const T& mA, const T& iA, const T& mB, const T& iB
 }
 
 /// Relative velocity of the contact point along (dx, dy).
-template <typename S, typename T>
-inline T relative(const S& A, const S& B, const T& dx, const T& dy, const T& rAx, const T& rAy,
-                  const T& rBx, const T& rBy)
+inline V relative(const Side& A, const Side& B, const V& dx, const V& dy, const V& rAx,
+                  const V& rAy, const V& rBx, const V& rBy)
 {
     // v + w x r = (vx - w ry, vy + w rx)
-    const T ux = (B.vx - B.w * rBy) - (A.vx - A.w * rAy);
-    const T uy = (B.vy + B.w * rBx) - (A.vy + A.w * rAx);
+    const V ux = (B.vx - B.w * rBy) - (A.vx - A.w * rAy);
+    const V uy = (B.vy + B.w * rBx) - (A.vy + A.w * rAx);
     return ux * dx + uy * dy;
 }
 
 /// The relative velocity of point p's lanes along the normal (tangent: along the tangent) at
-/// the start of the step, which single precision's bodies do not carry (SingleLanesOf); 0 in
+/// the start of the step, which single precision's bodies do not carry (OriginLanesOf); 0 in
 /// double precision.
 template <bool kTangent, typename Point> inline V origin(const Point& p)
 {
-    if constexpr (requires { p.single.normalVelocity; })
-        return load(kTangent ? p.single.tangentVelocity : p.single.normalVelocity);
+    if constexpr (requires { p.origin.normalVelocity; })
+        return load(kTangent ? p.origin.tangentVelocity : p.origin.normalVelocity);
     else
         return V{};
 }
@@ -295,12 +285,10 @@ inline void eachBlock(Block* blocks, int count, BodyState* bodies, const Lanes& 
     }
 }
 
-#if !RIGIDLAB_SOFT_SINGLE // single precision's warm start is double (warmStartDoubleBlocks)
 void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
 {
     eachBlock(blocks, count, bodies, [](Block& c, Side& A, Side& B) { warmStartLanes(c, A, B); });
 }
-#endif
 
 /// What a pass splats once: its constants, and the two softnesses, [0] between moving bodies
 /// and [1] against one that does not move.
@@ -318,10 +306,8 @@ struct PassConstants {
 };
 
 /// One pass over one block's lanes, on its sides and motion as gathered.
-/// (Block as a parameter of the template, so that single precision's members are only
-/// looked up in the kernels that have them.)
-template <bool kBias, bool kFriction, typename BlockType>
-inline void solveLanes(BlockType& c, Side& A, Side& B, const Motion& m, const PassConstants& k)
+template <bool kBias, bool kFriction>
+inline void solveLanes(Block& c, Side& A, Side& B, const Motion& m, const PassConstants& k)
 {
     const V zero = k.zero;
     const V mA = A.m, iA = load(c.invIA), mB = B.m, iB = load(c.invIB);
@@ -334,7 +320,7 @@ inline void solveLanes(BlockType& c, Side& A, Side& B, const Motion& m, const Pa
         massScale = oneSided ? k.massScales[1] : k.massScales[0];
         impulseScale = oneSided ? k.impulseScales[1] : k.impulseScales[0];
     }
-    for (auto& p : c.p) {
+    for (PointLanes& p : c.p) {
         const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
         // The separation now: both lever arms turned by their body's rotation so far (in
         // single precision by the rotation less the identity, from the separation at the
@@ -344,28 +330,8 @@ inline void solveLanes(BlockType& c, Side& A, Side& B, const Motion& m, const Pa
         const V sep = dx * nx + dy * ny + load(p.base);
         const auto gap = sep > zero;
         V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
-        if constexpr (kSingle)
+        if constexpr (kOrigin)
             vn += origin<false>(p);
-        if constexpr (kSingle) {
-            // The change since the warm start, clamped so that the impulse (the double total
-            // as rounded, plus the change) stays >= 0: at most -total, which makes it 0.
-            const V total = load(p.normalImpulse);
-            const V old = load(p.single.normalChange);
-            V next;
-            if constexpr (kBias) {
-                const V bias = gap ? sep * k.inverseSubstep : vmax(biasRate * sep, k.maxPush);
-                const V ms = gap ? splat(1.0) : massScale;
-                const V is = gap ? zero : impulseScale;
-                next =
-                    vmax(old - load(p.normalMass) * ms * (vn + bias) - is * (total + old), -total);
-            } else {
-                const V bias = gap ? sep * k.inverseSubstep : zero;
-                next = vmax(old - load(p.normalMass) * (vn + bias), -total);
-            }
-            store(p.single.normalChange, next);
-            apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
-            continue;
-        }
         const V old = load(p.normalImpulse);
         V next;
         if constexpr (kBias) {
@@ -386,22 +352,11 @@ inline void solveLanes(BlockType& c, Side& A, Side& B, const Motion& m, const Pa
     if constexpr (kFriction) {
         const V friction = load(c.friction);
         const V tx = ny, ty = -nx;
-        for (auto& p : c.p) {
+        for (PointLanes& p : c.p) {
             const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
             V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
-            if constexpr (kSingle) {
-                // The change, so that the impulse stays within the cone: total + change in
-                // [-limit, limit].
+            if constexpr (kOrigin)
                 vt += origin<true>(p);
-                const V limit = friction * (load(p.normalImpulse) + load(p.single.normalChange));
-                const V total = load(p.tangentImpulse);
-                const V old = load(p.single.tangentChange);
-                const V next =
-                    vmax(vmin(old - load(p.tangentMass) * vt, limit - total), -limit - total);
-                store(p.single.tangentChange, next);
-                apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
-                continue;
-            }
             const V limit = friction * load(p.normalImpulse);
             const V old = load(p.tangentImpulse);
             const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
@@ -433,165 +388,6 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
         solvePass<false, false>(blocks, count, bodies, s);
 }
 
-#if RIGIDLAB_SOFT_SINGLE
-// Single precision's passes in double (soft_kernel.h, SingleTotals): the warm start and the
-// step's last relax, on the double bodies and impulses, from the float block's rows, each
-// lane's numbers widened exactly. One block after the other: a lane's result does not depend
-// on its neighbours, so both widths give the same bits.
-
-using VD = double __attribute__((vector_size(W * sizeof(double))));
-using VL = long long __attribute__((vector_size(W * sizeof(long long))));
-using DoubleState = BodyStateOf<double>;
-using Totals = SingleTotals::Point;
-
-inline VD loadDouble(const double* p)
-{
-    VD v;
-    __builtin_memcpy(&v, p, sizeof(VD));
-    return v;
-}
-inline void storeDouble(double* p, const VD& v)
-{
-    __builtin_memcpy(p, &v, sizeof(VD));
-}
-inline VD widen(const Real* p)
-{
-    return __builtin_convertvector(load(p), VD);
-}
-
-struct DoubleSide {
-    VD vx, vy, w, m;
-};
-
-inline DoubleSide gatherDouble(const int* index, const DoubleState* bodies)
-{
-    DoubleSide s;
-    for (int i = 0; i < W; ++i) {
-        const DoubleState& b = bodies[index[i]];
-        s.vx[i] = b.vx;
-        s.vy[i] = b.vy;
-        s.w[i] = b.w;
-        s.m[i] = b.invMass;
-    }
-    return s;
-}
-
-inline void scatterDouble(const int* index, DoubleState* bodies, const DoubleSide& s)
-{
-    // As scatter(): a body that does not move writes back what it read.
-    for (int i = 0; i < W; ++i) {
-        DoubleState& b = bodies[index[i]];
-        b.vx = s.vx[i];
-        b.vy = s.vy[i];
-        b.w = s.w[i];
-    }
-}
-
-/// The double impulses with the float passes' change folded in, the float lanes then holding
-/// them rounded and no change (SoftSolver::foldedImpulse: 0 where the change took the rounded
-/// impulse back to 0).
-inline VD fold(double* total, Real* rounded, Real* change)
-{
-    const V r = load(rounded), c = load(change);
-    const VL released = __builtin_convertvector(r + c == V{}, VL);
-    const VD sum = loadDouble(total) + __builtin_convertvector(c, VD);
-    const VD out = released ? VD{} : sum;
-    storeDouble(total, out);
-    store(rounded, __builtin_convertvector(out, V));
-    store(change, V{});
-    return out;
-}
-
-void warmStartDoubleBlocks(Block* blocks, SingleTotals* totals, int count, DoubleState* bodies)
-{
-    for (int k = 0; k < count; ++k) {
-        Block& c = blocks[k];
-        DoubleSide A = gatherDouble(c.a, bodies), B = gatherDouble(c.b, bodies);
-        const VD iA = widen(c.invIA), iB = widen(c.invIB), nx = widen(c.nx), ny = widen(c.ny);
-        for (int i = 0; i < 2; ++i) {
-            PointLanes& p = c.p[i];
-            Totals& t = totals[k].p[i];
-            const VD jn = fold(t.normal, p.normalImpulse, p.single.normalChange);
-            const VD jt = fold(t.tangent, p.tangentImpulse, p.single.tangentChange);
-            // P = jn n + jt t, the tangent t = (n.y, -n.x).
-            const VD px = jn * nx + jt * ny, py = jn * ny - jt * nx;
-            const VD rAx = widen(p.rAx), rAy = widen(p.rAy), rBx = widen(p.rBx), rBy = widen(p.rBy);
-            A.vx -= A.m * px;
-            A.vy -= A.m * py;
-            A.w -= iA * (rAx * py - rAy * px);
-            B.vx += B.m * px;
-            B.vy += B.m * py;
-            B.w += iB * (rBx * py - rBy * px);
-        }
-        scatterDouble(c.a, bodies, A);
-        scatterDouble(c.b, bodies, B);
-    }
-}
-
-void relaxDoubleBlocks(Block* blocks, SingleTotals* totals, int count, DoubleState* bodies,
-                       const PassSettings& s)
-{
-    // The relax pass of solveLanes(): rigid, a gap closing by s / t over the look-ahead time.
-    const VD zero{}, inverseSubstep = VD{} + s.inverseSubstep;
-    for (int k = 0; k < count; ++k) {
-        Block& c = blocks[k];
-        DoubleSide A = gatherDouble(c.a, bodies), B = gatherDouble(c.b, bodies);
-        // The displacements and the rotations less the identity, in double.
-        VD dpx, dpy, qcA, qsA, qcB, qsB;
-        for (int i = 0; i < W; ++i) {
-            const DoubleState& a = bodies[c.a[i]];
-            const DoubleState& b = bodies[c.b[i]];
-            dpx[i] = b.dpx - a.dpx;
-            dpy[i] = b.dpy - a.dpy;
-            qcA[i] = a.qc - 1.0;
-            qsA[i] = a.qs;
-            qcB[i] = b.qc - 1.0;
-            qsB[i] = b.qs;
-        }
-        const VD iA = widen(c.invIA), iB = widen(c.invIB), nx = widen(c.nx), ny = widen(c.ny);
-        VD jn[2];
-        for (int i = 0; i < 2; ++i) {
-            PointLanes& p = c.p[i];
-            Totals& t = totals[k].p[i];
-            const VD old = fold(t.normal, p.normalImpulse, p.single.normalChange);
-            const VD rAx = widen(p.rAx), rAy = widen(p.rAy), rBx = widen(p.rBx), rBy = widen(p.rBy);
-            const VD dx = dpx + (qcB * rBx - qsB * rBy) - (qcA * rAx - qsA * rAy);
-            const VD dy = dpy + (qsB * rBx + qcB * rBy) - (qsA * rAx + qcA * rAy);
-            const VD sep = dx * nx + dy * ny + widen(p.base);
-            const VD bias = sep > zero ? sep * inverseSubstep : zero;
-            const VD vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
-            const VD sum = old - widen(p.normalMass) * (vn + bias);
-            const VD next = sum > zero ? sum : zero;
-            storeDouble(t.normal, next);
-            store(p.normalImpulse, __builtin_convertvector(next, V));
-            jn[i] = next;
-            apply(A, B, A.m, iA, B.m, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
-        }
-        if (s.friction) {
-            const VD friction = widen(c.friction);
-            const VD tx = ny, ty = -nx;
-            for (int i = 0; i < 2; ++i) {
-                PointLanes& p = c.p[i];
-                Totals& t = totals[k].p[i];
-                const VD old = fold(t.tangent, p.tangentImpulse, p.single.tangentChange);
-                const VD rAx = widen(p.rAx), rAy = widen(p.rAy), rBx = widen(p.rBx),
-                         rBy = widen(p.rBy);
-                const VD limit = friction * jn[i];
-                const VD vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
-                const VD unclamped = old - widen(p.tangentMass) * vt;
-                const VD capped = unclamped < limit ? unclamped : limit;
-                const VD next = capped > -limit ? capped : -limit;
-                storeDouble(t.tangent, next);
-                store(p.tangentImpulse, __builtin_convertvector(next, V));
-                apply(A, B, A.m, iA, B.m, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
-            }
-        }
-        scatterDouble(c.a, bodies, A);
-        scatterDouble(c.b, bodies, B);
-    }
-}
-#endif
-
 } // namespace
 } // namespace RIGIDLAB_SOFT_NAMESPACE
 
@@ -599,19 +395,8 @@ void relaxDoubleBlocks(Block* blocks, SingleTotals* totals, int count, DoubleSta
 // The kernel's name and width, from the file that compiles this one again.
 RIGIDLAB_SOFT_KERNEL
 {
-    // Single precision has no warm start of its own: its impulses are applied in double
-    // (SoftSolver::warmStartSingle).
-    using namespace RIGIDLAB_SOFT_NAMESPACE;
-#if RIGIDLAB_SOFT_SINGLE
-    return {nullptr,
-            solveBlocks,
-            RIGIDLAB_SOFT_WIDTH,
-            RIGIDLAB_SOFT_NAME,
-            warmStartDoubleBlocks,
-            relaxDoubleBlocks};
-#else
-    return {warmStartBlocks, solveBlocks, RIGIDLAB_SOFT_WIDTH, RIGIDLAB_SOFT_NAME};
-#endif
+    return {RIGIDLAB_SOFT_NAMESPACE::warmStartBlocks, RIGIDLAB_SOFT_NAMESPACE::solveBlocks,
+            RIGIDLAB_SOFT_WIDTH, RIGIDLAB_SOFT_NAME};
 }
 #else
 Kernel kernel2()

@@ -19,10 +19,9 @@ void SoftSolver::resetBlocks(int count)
 {
     // Resized, not assigned anew: the blocks of a large pile are megabytes, and every lane is
     // written again, by fillLaneOf() or emptyLanes().
-    if (m_single) {
+    if (m_single)
         m_singleBlocks.resize(static_cast<size_t>(count));
-        m_singleTotals.resize(static_cast<size_t>(count));
-    } else
+    else
         m_blocks.resize(static_cast<size_t>(count));
 }
 
@@ -38,18 +37,14 @@ void SoftSolver::emptyLanes(int block, int from, int spare)
                 for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
                                     p.normalImpulse, p.tangentImpulse})
                     field[l] = 0;
-                if constexpr (requires { p.single.normalVelocity; })
-                    p.single.normalVelocity[l] = p.single.tangentVelocity[l] =
-                        p.single.normalChange[l] = p.single.tangentChange[l] = 0;
+                if constexpr (requires { p.origin.normalVelocity; })
+                    p.origin.normalVelocity[l] = p.origin.tangentVelocity[l] = 0;
             }
         }
     };
-    if (m_single) {
+    if (m_single)
         empty(m_singleBlocks[static_cast<size_t>(block)]);
-        for (auto& p : m_singleTotals[static_cast<size_t>(block)].p)
-            for (auto l = static_cast<size_t>(from); l < size_t{soft::kSingleBlockWidth}; ++l)
-                p.normal[l] = p.tangent[l] = 0;
-    } else
+    else
         empty(m_blocks[static_cast<size_t>(block)]);
 }
 
@@ -94,9 +89,9 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
         // share.
         p.normalImpulse[l] = ct.normalImpulse[static_cast<size_t>(i)] / substeps;
         p.tangentImpulse[l] = ct.tangentImpulse[static_cast<size_t>(i)] / substeps;
-        if constexpr (requires { p.single.normalVelocity; }) {
+        if constexpr (requires { p.origin.normalVelocity; }) {
             // Single precision: the point's relative velocity at the start of the step, in
-            // double, which the bodies' floats leave out (SingleLanesOf); and the separation
+            // double, which the bodies' floats leave out (OriginLanesOf); and the separation
             // itself as the base, since the kernel turns the lever arms by the rotation less
             // the identity (soft_kernel.h). With the lever arms whole in floats, a box 5 m from
             // the centre of its slope had its separation to half a micrometre, and the soft push
@@ -105,14 +100,9 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
             const auto& oB = m_singleOrigin[ib];
             const Vec2 dv =
                 Vec2(oB[0], oB[1]) + cross(oB[2], rB) - Vec2(oA[0], oA[1]) - cross(oA[2], rA);
-            p.single.normalVelocity[l] = static_cast<float>(dv.dot(n));
-            p.single.tangentVelocity[l] = static_cast<float>(dv.dot(t));
+            p.origin.normalVelocity[l] = static_cast<float>(dv.dot(n));
+            p.origin.tangentVelocity[l] = static_cast<float>(dv.dot(t));
             p.base[l] = static_cast<float>(cp.separation);
-            // The impulses in double beside the block, the floats with no change yet.
-            auto& total = m_singleTotals[singleBlock(k)].p[i];
-            total.normal[l] = ct.normalImpulse[static_cast<size_t>(i)] / substeps;
-            total.tangent[l] = ct.tangentImpulse[static_cast<size_t>(i)] / substeps;
-            p.single.normalChange[l] = p.single.tangentChange[l] = 0.0f;
         }
     }
     // A point the manifold lacks: zero masses, so zero impulses (a block filled again may
@@ -122,12 +112,8 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
         for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
                             p.normalImpulse, p.tangentImpulse})
             field[l] = 0.0;
-        if constexpr (requires { p.single.normalVelocity; }) {
-            p.single.normalVelocity[l] = p.single.tangentVelocity[l] = p.single.normalChange[l] =
-                p.single.tangentChange[l] = 0.0f;
-            auto& total = m_singleTotals[singleBlock(k)].p[i];
-            total.normal[l] = total.tangent[l] = 0.0;
-        }
+        if constexpr (requires { p.origin.normalVelocity; })
+            p.origin.normalVelocity[l] = p.origin.tangentVelocity[l] = 0.0f;
     }
 }
 

@@ -1,15 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The soft step's opt-in single precision (SoftStepSettings::singlePrecision; SoftSolver,
-// soft_solver.h): the warm start in double, the float copy of the bodies the kernel's float
-// passes work on, and the way back. The floats hold what changed since the step began
-// (fast/soft_kernel.h), and only the passes' change returns to the double velocities.
-//
-// The accumulated impulses are double too (SingleTotals): a resting contact's impulse, about
-// m g h a substep, is applied by each warm start and taken back by the passes, and with the
-// impulse in floats a float's grain of it (6e-8 of g h) came back each substep, which the soft
-// push made into a sink 1.4e-6 off (docs/performance-log.md). So the warm start applies the
-// impulses in double to the double velocities, and the float passes accumulate only their
-// change, which the next warm start (or end()) adds to the double totals.
+// soft_solver.h): the float copy of the bodies the kernel's float passes work on, and the way
+// back. The floats hold what changed since the step began (fast/soft_kernel.h), and only the
+// passes' change returns to the double velocities.
 
 #include "soft_solver.h"
 
@@ -41,25 +34,6 @@ void SoftSolver::toSingle(bool motion)
     if (motion)
         for (int id : m_kinematic)
             copy(id);
-}
-
-void SoftSolver::warmStartSingle()
-{
-    // In the kernel (fast/soft_kernel.cpp, compiled for the float lanes' width): the block's
-    // float normal, lever arms and inverse inertias, those the float passes use, widened
-    // exactly, and the bodies' double inverse masses. Every block in order, the overflow's too.
-    m_singleKernel.warmStartDouble(m_singleBlocks.data(), m_singleTotals.data(),
-                                   static_cast<int>(m_singleBlocks.size()), m_state.data());
-}
-
-void SoftSolver::relaxSingleLast()
-{
-    // The kernel's relax pass in double on the double velocities and impulses, from the float
-    // block's rows (fast/soft_kernel.cpp): rigid, a gap closing by s / t over the look-ahead
-    // time t (without look-ahead, t as good as 0: the gap's impulse let go), then friction
-    // within the cone.
-    m_singleKernel.relaxDouble(m_singleBlocks.data(), m_singleTotals.data(),
-                               static_cast<int>(m_singleBlocks.size()), m_state.data(), m_pass);
 }
 
 void SoftSolver::fromSingle()

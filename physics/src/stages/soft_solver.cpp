@@ -182,6 +182,8 @@ void SoftSolver::integrateVelocities(bool sumBefore)
         integrateVelocitiesOf<true>(m_state);
     else
         integrateVelocitiesOf<false>(m_state);
+    if (m_single)
+        toSingle(false);
 }
 
 template <typename State>
@@ -235,14 +237,11 @@ void SoftSolver::setDrift(const std::vector<Vec2>& drift, const std::vector<doub
 void SoftSolver::warmStart()
 {
     m_energyValid = false;
-    if (m_single) {
-        // In double, then the velocities to the float copy (soft_single.cpp).
-        warmStartSingle();
-        toSingle(false);
-        return; // no pins in single precision (soft_step.cpp)
-    }
     forEachRange([&](int first, int count) {
-        m_kernel.warmStart(m_blocks.data() + first, count, m_state.data());
+        if (m_single)
+            m_singleKernel.warmStart(m_singleBlocks.data() + first, count, m_singleState.data());
+        else
+            m_kernel.warmStart(m_blocks.data() + first, count, m_state.data());
     });
     if (!m_pins.empty())
         warmStartPins();
@@ -258,12 +257,6 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
     m_pass.inverseSubstep = lookAhead ? m_substeps.invH : kNoLookAhead;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
-    if (m_single && !useBias && !lookAhead) {
-        // The step's last pass in double (soft_single.cpp): the velocities the step ends with
-        // are then as exact as double precision's, a ball at rest at 0 m/s, not 1e-9.
-        relaxSingleLast();
-        return; // no pins in single precision (soft_step.cpp)
-    }
     forEachRange([&](int first, int count) {
         if (m_single)
             m_singleKernel.solve(m_singleBlocks.data() + first, count, m_singleState.data(),
@@ -407,20 +400,8 @@ void SoftSolver::endOf(std::vector<Body>& bodies, const std::vector<State>& stat
         const BlockType& k = block[static_cast<size_t>(slot.block)];
         const auto l = static_cast<size_t>(slot.lane);
         for (int i = 0; i < slot.points; ++i) {
-            const auto& p = k.p[i];
-            if constexpr (requires { p.single.normalChange; }) {
-                // Single precision: the double totals with the last passes' change.
-                const auto& total = m_singleTotals[static_cast<size_t>(slot.block)].p[i];
-                ct.normalImpulse[static_cast<size_t>(i)] =
-                    substeps *
-                    foldedImpulse(total.normal[l], p.normalImpulse[l], p.single.normalChange[l]);
-                ct.tangentImpulse[static_cast<size_t>(i)] =
-                    substeps *
-                    foldedImpulse(total.tangent[l], p.tangentImpulse[l], p.single.tangentChange[l]);
-            } else {
-                ct.normalImpulse[static_cast<size_t>(i)] = substeps * p.normalImpulse[l];
-                ct.tangentImpulse[static_cast<size_t>(i)] = substeps * p.tangentImpulse[l];
-            }
+            ct.normalImpulse[static_cast<size_t>(i)] = substeps * k.p[i].normalImpulse[l];
+            ct.tangentImpulse[static_cast<size_t>(i)] = substeps * k.p[i].tangentImpulse[l];
         }
     }
 }

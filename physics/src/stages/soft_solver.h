@@ -170,26 +170,6 @@ private:
     /// to the double velocities (soft_single.cpp).
     void toSingle(bool motion);
     void fromSingle();
-    /// Single precision's warm start, in double (soft_single.cpp): each point's impulses, the
-    /// double totals (SingleTotals) with the float passes' change since the last warm start
-    /// folded in, applied to the double velocities; the float lanes then hold the totals
-    /// rounded and no change. toSingle() follows.
-    void warmStartSingle();
-    /// Single precision's last relax pass, the one without look-ahead, in double
-    /// (soft_single.cpp): on the double velocities and totals, from the float blocks' rows.
-    void relaxSingleLast();
-    /// A single-precision impulse: the double total with the float passes' change folded in;
-    /// 0 where the change took the rounded total back to 0 (the clamp), not the rounding's
-    /// remainder.
-    static double foldedImpulse(double total, float rounded, float change)
-    {
-        return rounded + change == 0.0f ? 0.0 : total + static_cast<double>(change);
-    }
-    /// The index of block k of m_singleBlocks.
-    size_t singleBlock(const soft::SingleBlock& k) const
-    {
-        return static_cast<size_t>(&k - m_singleBlocks.data());
-    }
 
     /// Both sums of kineticEnergy() and loadPower() in one pass over the bodies, kept until
     /// the velocities change (each pass of the substep asks for both, some twice).
@@ -222,7 +202,7 @@ private:
     std::vector<double> m_angularAcceleration;        ///< per moving body [rad/s^2]
     std::vector<double> m_mass, m_inertia;            ///< per moving body
     /// Per body, when m_single: its velocity at the start of the step [m/s, rad/s]; the float
-    /// copy holds the velocity less this (SingleLanesOf, soft_kernel.h).
+    /// copy holds the velocity less this (OriginLanesOf, soft_kernel.h).
     std::vector<std::array<double, 3>> m_singleOrigin;
 
     std::vector<Vec2> m_drift;          ///< per body, empty: none (setDrift())
@@ -237,8 +217,7 @@ private:
     std::vector<char> m_active;
 
     std::vector<soft::Block> m_blocks;
-    std::vector<soft::SingleBlock> m_singleBlocks;  ///< instead of m_blocks when m_single
-    std::vector<soft::SingleTotals> m_singleTotals; ///< per single block: its impulses in double
+    std::vector<soft::SingleBlock> m_singleBlocks; ///< instead of m_blocks when m_single
     std::vector<Slot> m_slots;
     /// The blocks the kernel is given in one call, [m_ranges[i], m_ranges[i + 1]): a colour's,
     /// or one overflow block (soft_kernel.h, KernelOf).
