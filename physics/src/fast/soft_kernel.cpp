@@ -15,8 +15,7 @@
 //   normal      dj = -normalMass massScale (dv.n + bias) - impulseScale j, j stays >= 0
 //   friction    dj = -tangentMass dv.t, |j_t| <= friction j_n
 // (single precision: dv is the change since the step began plus each point's relative velocity
-// then, and j the impulse at the start of the step, rounded, plus the passes' change since:
-// only the change is accumulated and applied, SingleLanesOf)
+// then, OriginLanesOf)
 // Bounces are not the kernel's: the collision phase gives them before the substeps
 // (soft_step.cpp, contact_collisions.cpp).
 
@@ -41,9 +40,9 @@ using V = Real __attribute__((vector_size(W * sizeof(Real))));
 using Block = BlockOf<Real, sizeof(Real) == sizeof(double) ? kBlockWidth : kSingleBlockWidth>;
 using BodyState = typename Block::State;
 using PointLanes = PointLanesOf<Real, Block::kWidth>;
-/// Single precision (SingleLanesOf): the bodies carry their velocity's change since the step
-/// began instead of the velocity, and the passes accumulate only their change of the impulses.
-constexpr bool kSingle = sizeof(SingleLanesOf<Real, Block::kWidth>) > 1;
+/// Whether the bodies carry their velocity's change since the step began (single precision,
+/// OriginLanesOf) instead of the velocity.
+constexpr bool kOrigin = sizeof(OriginLanesOf<Real, Block::kWidth>) > 1;
 
 // The kernel leans on no library (see soft_kernel.h): loads, stores and selections by hand.
 inline V load(const Real* p)
@@ -233,12 +232,12 @@ inline V relative(const Side& A, const Side& B, const V& dx, const V& dy, const 
 }
 
 /// The relative velocity of point p's lanes along the normal (tangent: along the tangent) at
-/// the start of the step, which single precision's bodies do not carry (SingleLanesOf); 0 in
+/// the start of the step, which single precision's bodies do not carry (OriginLanesOf); 0 in
 /// double precision.
 template <bool kTangent, typename Point> inline V origin(const Point& p)
 {
-    if constexpr (requires { p.single.normalVelocity; })
-        return load(kTangent ? p.single.tangentVelocity : p.single.normalVelocity);
+    if constexpr (requires { p.origin.normalVelocity; })
+        return load(kTangent ? p.origin.tangentVelocity : p.origin.normalVelocity);
     else
         return V{};
 }
@@ -286,12 +285,10 @@ inline void eachBlock(Block* blocks, int count, BodyState* bodies, const Lanes& 
     }
 }
 
-#if !RIGIDLAB_SOFT_SINGLE // single precision's warm start is double (SoftSolver::warmStart)
 void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
 {
     eachBlock(blocks, count, bodies, [](Block& c, Side& A, Side& B) { warmStartLanes(c, A, B); });
 }
-#endif
 
 /// What a pass splats once: its constants, and the two softnesses, [0] between moving bodies
 /// and [1] against one that does not move.
@@ -309,10 +306,8 @@ struct PassConstants {
 };
 
 /// One pass over one block's lanes, on its sides and motion as gathered.
-/// (Block as a parameter of the template, so that single precision's members are only
-/// looked up in the kernels that have them.)
-template <bool kBias, bool kFriction, typename BlockType>
-inline void solveLanes(BlockType& c, Side& A, Side& B, const Motion& m, const PassConstants& k)
+template <bool kBias, bool kFriction>
+inline void solveLanes(Block& c, Side& A, Side& B, const Motion& m, const PassConstants& k)
 {
     const V zero = k.zero;
     const V mA = A.m, iA = load(c.invIA), mB = B.m, iB = load(c.invIB);
@@ -325,7 +320,7 @@ inline void solveLanes(BlockType& c, Side& A, Side& B, const Motion& m, const Pa
         massScale = oneSided ? k.massScales[1] : k.massScales[0];
         impulseScale = oneSided ? k.impulseScales[1] : k.impulseScales[0];
     }
-    for (auto& p : c.p) {
+    for (PointLanes& p : c.p) {
         const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
         // The separation now: both lever arms turned by their body's rotation so far (in
         // single precision by the rotation less the identity, from the separation at the
@@ -335,28 +330,8 @@ inline void solveLanes(BlockType& c, Side& A, Side& B, const Motion& m, const Pa
         const V sep = dx * nx + dy * ny + load(p.base);
         const auto gap = sep > zero;
         V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
-        if constexpr (kSingle)
+        if constexpr (kOrigin)
             vn += origin<false>(p);
-        if constexpr (kSingle) {
-            // The change since the step began, clamped so that the impulse (the one at the
-            // start, rounded, plus the change) stays >= 0: at most -start, which makes it 0.
-            const V total = load(p.normalImpulse);
-            const V old = load(p.single.normalChange);
-            V next;
-            if constexpr (kBias) {
-                const V bias = gap ? sep * k.inverseSubstep : vmax(biasRate * sep, k.maxPush);
-                const V ms = gap ? splat(1.0) : massScale;
-                const V is = gap ? zero : impulseScale;
-                next =
-                    vmax(old - load(p.normalMass) * ms * (vn + bias) - is * (total + old), -total);
-            } else {
-                const V bias = gap ? sep * k.inverseSubstep : zero;
-                next = vmax(old - load(p.normalMass) * (vn + bias), -total);
-            }
-            store(p.single.normalChange, next);
-            apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
-            continue;
-        }
         const V old = load(p.normalImpulse);
         V next;
         if constexpr (kBias) {
@@ -377,22 +352,11 @@ inline void solveLanes(BlockType& c, Side& A, Side& B, const Motion& m, const Pa
     if constexpr (kFriction) {
         const V friction = load(c.friction);
         const V tx = ny, ty = -nx;
-        for (auto& p : c.p) {
+        for (PointLanes& p : c.p) {
             const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
             V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
-            if constexpr (kSingle) {
-                // The change, so that the impulse stays within the cone: total + change in
-                // [-limit, limit].
+            if constexpr (kOrigin)
                 vt += origin<true>(p);
-                const V limit = friction * (load(p.normalImpulse) + load(p.single.normalChange));
-                const V total = load(p.tangentImpulse);
-                const V old = load(p.single.tangentChange);
-                const V next =
-                    vmax(vmin(old - load(p.tangentMass) * vt, limit - total), -limit - total);
-                store(p.single.tangentChange, next);
-                apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
-                continue;
-            }
             const V limit = friction * load(p.normalImpulse);
             const V old = load(p.tangentImpulse);
             const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
@@ -431,14 +395,8 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
 // The kernel's name and width, from the file that compiles this one again.
 RIGIDLAB_SOFT_KERNEL
 {
-    // Single precision has no warm start of its own: its impulses are applied in double
-    // (SoftSolver::warmStart).
-    using namespace RIGIDLAB_SOFT_NAMESPACE;
-#if RIGIDLAB_SOFT_SINGLE
-    return {nullptr, solveBlocks, RIGIDLAB_SOFT_WIDTH, RIGIDLAB_SOFT_NAME};
-#else
-    return {warmStartBlocks, solveBlocks, RIGIDLAB_SOFT_WIDTH, RIGIDLAB_SOFT_NAME};
-#endif
+    return {RIGIDLAB_SOFT_NAMESPACE::warmStartBlocks, RIGIDLAB_SOFT_NAMESPACE::solveBlocks,
+            RIGIDLAB_SOFT_WIDTH, RIGIDLAB_SOFT_NAME};
 }
 #else
 Kernel kernel2()

@@ -10,7 +10,6 @@
 
 #include "soft_solver.h"
 
-#include <array>
 #include <cstddef>
 #include <type_traits>
 
@@ -38,9 +37,8 @@ void SoftSolver::emptyLanes(int block, int from, int spare)
                 for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
                                     p.normalImpulse, p.tangentImpulse})
                     field[l] = 0;
-                if constexpr (requires { p.single.normalVelocity; })
-                    p.single.normalVelocity[l] = p.single.tangentVelocity[l] =
-                        p.single.normalChange[l] = p.single.tangentChange[l] = 0;
+                if constexpr (requires { p.origin.normalVelocity; })
+                    p.origin.normalVelocity[l] = p.origin.tangentVelocity[l] = 0;
             }
         }
     };
@@ -91,9 +89,9 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
         // share.
         p.normalImpulse[l] = ct.normalImpulse[static_cast<size_t>(i)] / substeps;
         p.tangentImpulse[l] = ct.tangentImpulse[static_cast<size_t>(i)] / substeps;
-        if constexpr (requires { p.single.normalVelocity; }) {
+        if constexpr (requires { p.origin.normalVelocity; }) {
             // Single precision: the point's relative velocity at the start of the step, in
-            // double, which the bodies' floats leave out (SingleLanesOf); and the separation
+            // double, which the bodies' floats leave out (OriginLanesOf); and the separation
             // itself as the base, since the kernel turns the lever arms by the rotation less
             // the identity (soft_kernel.h). With the lever arms whole in floats, a box 5 m from
             // the centre of its slope had its separation to half a micrometre, and the soft push
@@ -102,22 +100,9 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
             const auto& oB = m_singleOrigin[ib];
             const Vec2 dv =
                 Vec2(oB[0], oB[1]) + cross(oB[2], rB) - Vec2(oA[0], oA[1]) - cross(oA[2], rA);
-            p.single.normalVelocity[l] = static_cast<float>(dv.dot(n));
-            p.single.tangentVelocity[l] = static_cast<float>(dv.dot(t));
+            p.origin.normalVelocity[l] = static_cast<float>(dv.dot(n));
+            p.origin.tangentVelocity[l] = static_cast<float>(dv.dot(t));
             p.base[l] = static_cast<float>(cp.separation);
-            // No change of the impulses yet; their warm start, in double, to the bodies'
-            // (SoftSolver::warmStart).
-            p.single.normalChange[l] = p.single.tangentChange[l] = 0.0f;
-            const Vec2 impulse = (ct.normalImpulse[static_cast<size_t>(i)] / substeps) * n +
-                                 (ct.tangentImpulse[static_cast<size_t>(i)] / substeps) * t;
-            std::array<double, 3>& warmA = m_singleWarm[ia];
-            std::array<double, 3>& warmB = m_singleWarm[ib];
-            warmA[0] -= mA * impulse.x();
-            warmA[1] -= mA * impulse.y();
-            warmA[2] -= iA * cross(rA, impulse);
-            warmB[0] += mB * impulse.x();
-            warmB[1] += mB * impulse.y();
-            warmB[2] += iB * cross(rB, impulse);
         }
     }
     // A point the manifold lacks: zero masses, so zero impulses (a block filled again may
@@ -127,9 +112,8 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
         for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
                             p.normalImpulse, p.tangentImpulse})
             field[l] = 0.0;
-        if constexpr (requires { p.single.normalVelocity; })
-            p.single.normalVelocity[l] = p.single.tangentVelocity[l] = p.single.normalChange[l] =
-                p.single.tangentChange[l] = 0.0f;
+        if constexpr (requires { p.origin.normalVelocity; })
+            p.origin.normalVelocity[l] = p.origin.tangentVelocity[l] = 0.0f;
     }
 }
 

@@ -162,8 +162,7 @@ private:
     void warmStartPins();
 
     /// Single precision: the velocities are the double state's (m_state), and the float copy
-    /// (m_singleState) is what the kernel's solve and relax passes change; the warm start is
-    /// double (warmStart(), m_singleWarm). It holds each body's velocity less
+    /// (m_singleState) is what the kernel's passes change. It holds each body's velocity less
     /// its velocity at the start of the step (m_singleOrigin), and its rotation less the
     /// identity (qc - 1, qs), so that a float rounds the change, not the speed or the lever
     /// arm. toSingle: each moving body's velocity to the copy (motion: the displacements and
@@ -203,12 +202,8 @@ private:
     std::vector<double> m_angularAcceleration;        ///< per moving body [rad/s^2]
     std::vector<double> m_mass, m_inertia;            ///< per moving body
     /// Per body, when m_single: its velocity at the start of the step [m/s, rad/s]; the float
-    /// copy holds the velocity less this (SingleLanesOf, soft_kernel.h).
+    /// copy holds the velocity less this (OriginLanesOf, soft_kernel.h).
     std::vector<std::array<double, 3>> m_singleOrigin;
-    /// Per body, when m_single: the velocity its contacts' impulses give it in a warm start
-    /// [m/s, rad/s], in double: at the start of the step from the contacts' impulses
-    /// (fillLaneOf), and after each pass plus the velocity change the pass made (fromSingle).
-    std::vector<std::array<double, 3>> m_singleWarm;
 
     std::vector<Vec2> m_drift;          ///< per body, empty: none (setDrift())
     std::vector<double> m_angularDrift; ///< per body
