@@ -15,7 +15,8 @@
 //   normal      dj = -normalMass massScale (dv.n + bias) - impulseScale j, j stays >= 0
 //   friction    dj = -tangentMass dv.t, |j_t| <= friction j_n
 // (single precision: dv is the change since the step began plus each point's relative velocity
-// then, OriginLanesOf)
+// then, and j the impulse at the start of the step, rounded, plus the passes' change since:
+// only the change is accumulated and applied, SingleLanesOf)
 // Bounces are not the kernel's: the collision phase gives them before the substeps
 // (soft_step.cpp, contact_collisions.cpp).
 
@@ -27,6 +28,12 @@
 #endif
 #ifndef RIGIDLAB_SOFT_REAL
 #define RIGIDLAB_SOFT_REAL double
+#endif
+#if RIGIDLAB_SOFT_SINGLE
+// Single precision's last relax in double uses vectors of twice the float lanes' bytes, wider
+// than this compilation's registers may be: GCC notes that returning them changes the ABI, which
+// does not matter for the functions of this file's anonymous namespace.
+#pragma GCC diagnostic ignored "-Wpsabi"
 #endif
 
 namespace rigidlab::physics::soft {
@@ -40,9 +47,9 @@ using V = Real __attribute__((vector_size(W * sizeof(Real))));
 using Block = BlockOf<Real, sizeof(Real) == sizeof(double) ? kBlockWidth : kSingleBlockWidth>;
 using BodyState = typename Block::State;
 using PointLanes = PointLanesOf<Real, Block::kWidth>;
-/// Whether the bodies carry their velocity's change since the step began (single precision,
-/// OriginLanesOf) instead of the velocity.
-constexpr bool kOrigin = sizeof(OriginLanesOf<Real, Block::kWidth>) > 1;
+/// Single precision (SingleLanesOf): the bodies carry their velocity's change since the step
+/// began instead of the velocity, and the passes accumulate only their change of the impulses.
+constexpr bool kSingle = sizeof(SingleLanesOf<Real, Block::kWidth>) > 1;
 
 // The kernel leans on no library (see soft_kernel.h): loads, stores and selections by hand.
 inline V load(const Real* p)
@@ -208,11 +215,13 @@ inline Motion gatherMotion(const Block& k, const BodyState* bodies)
     return {b[0] - a[0], b[1] - a[1], a[2], a[3], b[2], b[3]};
 }
 
-/// Applies the impulse P = dj (dx, dy) at lever arms (rAx, rAy), (rBx, rBy).
-inline void apply(Side& A, Side& B, const V& mA, const V& iA, const V& mB, const V& iB, const V& dj,
-                  const V& dx, const V& dy, const V& rAx, const V& rAy, const V& rBx, const V& rBy)
+/// Applies the impulse P = dj (dx, dy) at lever arms (rAx, rAy), (rBx, rBy). (S, T: the sides
+/// and vectors of the kernel's precision, or of single precision's last relax in double.)
+template <typename S, typename T>
+inline void apply(S& A, S& B, const T& mA, const T& iA, const T& mB, const T& iB, const T& dj,
+                  const T& dx, const T& dy, const T& rAx, const T& rAy, const T& rBx, const T& rBy)
 {
-    const V px = dj * dx, py = dj * dy;
+    const T px = dj * dx, py = dj * dy;
     A.vx -= mA * px;
     A.vy -= mA * py;
     A.w -= iA * (rAx * py - rAy * px);
@@ -222,22 +231,23 @@ inline void apply(Side& A, Side& B, const V& mA, const V& iA, const V& mB, const
 }
 
 /// Relative velocity of the contact point along (dx, dy).
-inline V relative(const Side& A, const Side& B, const V& dx, const V& dy, const V& rAx,
-                  const V& rAy, const V& rBx, const V& rBy)
+template <typename S, typename T>
+inline T relative(const S& A, const S& B, const T& dx, const T& dy, const T& rAx, const T& rAy,
+                  const T& rBx, const T& rBy)
 {
     // v + w x r = (vx - w ry, vy + w rx)
-    const V ux = (B.vx - B.w * rBy) - (A.vx - A.w * rAy);
-    const V uy = (B.vy + B.w * rBx) - (A.vy + A.w * rAx);
+    const T ux = (B.vx - B.w * rBy) - (A.vx - A.w * rAy);
+    const T uy = (B.vy + B.w * rBx) - (A.vy + A.w * rAx);
     return ux * dx + uy * dy;
 }
 
 /// The relative velocity of point p's lanes along the normal (tangent: along the tangent) at
-/// the start of the step, which single precision's bodies do not carry (OriginLanesOf); 0 in
+/// the start of the step, which single precision's bodies do not carry (SingleLanesOf); 0 in
 /// double precision.
 template <bool kTangent, typename Point> inline V origin(const Point& p)
 {
-    if constexpr (requires { p.origin.normalVelocity; })
-        return load(kTangent ? p.origin.tangentVelocity : p.origin.normalVelocity);
+    if constexpr (requires { p.single.normalVelocity; })
+        return load(kTangent ? p.single.tangentVelocity : p.single.normalVelocity);
     else
         return V{};
 }
@@ -285,10 +295,12 @@ inline void eachBlock(Block* blocks, int count, BodyState* bodies, const Lanes& 
     }
 }
 
+#if !RIGIDLAB_SOFT_SINGLE // single precision's warm start is double (SoftSolver::warmStart)
 void warmStartBlocks(Block* blocks, int count, BodyState* bodies)
 {
     eachBlock(blocks, count, bodies, [](Block& c, Side& A, Side& B) { warmStartLanes(c, A, B); });
 }
+#endif
 
 /// What a pass splats once: its constants, and the two softnesses, [0] between moving bodies
 /// and [1] against one that does not move.
@@ -305,9 +317,42 @@ struct PassConstants {
     }
 };
 
+/// The friction impulses of one block's lanes along the tangent (tx, ty), each within its cone
+/// of this pass's normal impulse. (The block a parameter of the template: see solveLanes().)
+template <typename BlockType>
+inline void frictionLanes(BlockType& c, Side& A, Side& B, const V& mA, const V& iA, const V& mB,
+                          const V& iB, const V& tx, const V& ty)
+{
+    const V friction = load(c.friction);
+    for (auto& p : c.p) {
+        const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
+        V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
+        if constexpr (kSingle) {
+            // The change, so that the impulse stays within the cone: start + change in
+            // [-limit, limit].
+            vt += origin<true>(p);
+            const V limit = friction * (load(p.normalImpulse) + load(p.single.normalChange));
+            const V start = load(p.tangentImpulse);
+            const V old = load(p.single.tangentChange);
+            const V next =
+                vmax(vmin(old - load(p.tangentMass) * vt, limit - start), -limit - start);
+            store(p.single.tangentChange, next);
+            apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
+            continue;
+        }
+        const V limit = friction * load(p.normalImpulse);
+        const V old = load(p.tangentImpulse);
+        const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
+        store(p.tangentImpulse, next);
+        apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
+    }
+}
+
 /// One pass over one block's lanes, on its sides and motion as gathered.
-template <bool kBias, bool kFriction>
-inline void solveLanes(Block& c, Side& A, Side& B, const Motion& m, const PassConstants& k)
+/// (Block as a parameter of the template, so that single precision's members are only
+/// looked up in the kernels that have them.)
+template <bool kBias, bool kFriction, typename BlockType>
+inline void solveLanes(BlockType& c, Side& A, Side& B, const Motion& m, const PassConstants& k)
 {
     const V zero = k.zero;
     const V mA = A.m, iA = load(c.invIA), mB = B.m, iB = load(c.invIB);
@@ -320,7 +365,7 @@ inline void solveLanes(Block& c, Side& A, Side& B, const Motion& m, const PassCo
         massScale = oneSided ? k.massScales[1] : k.massScales[0];
         impulseScale = oneSided ? k.impulseScales[1] : k.impulseScales[0];
     }
-    for (PointLanes& p : c.p) {
+    for (auto& p : c.p) {
         const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
         // The separation now: both lever arms turned by their body's rotation so far (in
         // single precision by the rotation less the identity, from the separation at the
@@ -330,8 +375,28 @@ inline void solveLanes(Block& c, Side& A, Side& B, const Motion& m, const PassCo
         const V sep = dx * nx + dy * ny + load(p.base);
         const auto gap = sep > zero;
         V vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
-        if constexpr (kOrigin)
+        if constexpr (kSingle)
             vn += origin<false>(p);
+        if constexpr (kSingle) {
+            // The change since the step began, clamped so that the impulse (the one at the
+            // start, rounded, plus the change) stays >= 0: at most -start, which makes it 0.
+            const V total = load(p.normalImpulse);
+            const V old = load(p.single.normalChange);
+            V next;
+            if constexpr (kBias) {
+                const V bias = gap ? sep * k.inverseSubstep : vmax(biasRate * sep, k.maxPush);
+                const V ms = gap ? splat(1.0) : massScale;
+                const V is = gap ? zero : impulseScale;
+                next =
+                    vmax(old - load(p.normalMass) * ms * (vn + bias) - is * (total + old), -total);
+            } else {
+                const V bias = gap ? sep * k.inverseSubstep : zero;
+                next = vmax(old - load(p.normalMass) * (vn + bias), -total);
+            }
+            store(p.single.normalChange, next);
+            apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
+            continue;
+        }
         const V old = load(p.normalImpulse);
         V next;
         if constexpr (kBias) {
@@ -349,21 +414,8 @@ inline void solveLanes(Block& c, Side& A, Side& B, const Motion& m, const PassCo
         apply(A, B, mA, iA, mB, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
     }
     // Friction after the normal impulses, so that its cone is this pass's.
-    if constexpr (kFriction) {
-        const V friction = load(c.friction);
-        const V tx = ny, ty = -nx;
-        for (PointLanes& p : c.p) {
-            const V rAx = load(p.rAx), rAy = load(p.rAy), rBx = load(p.rBx), rBy = load(p.rBy);
-            V vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
-            if constexpr (kOrigin)
-                vt += origin<true>(p);
-            const V limit = friction * load(p.normalImpulse);
-            const V old = load(p.tangentImpulse);
-            const V next = vmax(vmin(old - load(p.tangentMass) * vt, limit), -limit);
-            store(p.tangentImpulse, next);
-            apply(A, B, mA, iA, mB, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
-        }
-    }
+    if constexpr (kFriction)
+        frictionLanes(c, A, B, mA, iA, mB, iB, ny, -nx);
 }
 
 /// One pass, compiled for each combination of PassSettings::useBias and ::friction.
@@ -388,6 +440,111 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
         solvePass<false, false>(blocks, count, bodies, s);
 }
 
+#if RIGIDLAB_SOFT_SINGLE
+// Single precision's last relax pass in double (KernelOf::relaxDouble): on the double bodies,
+// from the float block's rows widened exactly, each impulse its start plus its change (both
+// floats, exact in double); the change stored back as next - start, rounded. One block after
+// the other: a lane's result does not depend on its neighbours, so both widths give the same
+// bits.
+
+using VD = double __attribute__((vector_size(W * sizeof(double))));
+using DoubleState = BodyStateOf<double>;
+
+inline VD widen(const Real* p)
+{
+    return __builtin_convertvector(load(p), VD);
+}
+
+struct DoubleSide {
+    VD vx, vy, w, m;
+};
+
+inline DoubleSide gatherDouble(const int* index, const DoubleState* bodies)
+{
+    DoubleSide s;
+    for (int i = 0; i < W; ++i) {
+        const DoubleState& b = bodies[index[i]];
+        s.vx[i] = b.vx;
+        s.vy[i] = b.vy;
+        s.w[i] = b.w;
+        s.m[i] = b.invMass;
+    }
+    return s;
+}
+
+inline void scatterDouble(const int* index, DoubleState* bodies, const DoubleSide& s)
+{
+    // As scatter(): a body that does not move writes back what it read.
+    for (int i = 0; i < W; ++i) {
+        DoubleState& b = bodies[index[i]];
+        b.vx = s.vx[i];
+        b.vy = s.vy[i];
+        b.w = s.w[i];
+    }
+}
+
+void relaxDoubleBlocks(Block* blocks, int count, DoubleState* bodies, const PassSettings& s)
+{
+    // The relax pass of solveLanes(): rigid, a gap closing by s / t over the look-ahead time.
+    const VD zero{}, inverseSubstep = VD{} + s.inverseSubstep;
+    for (int k = 0; k < count; ++k) {
+        Block& c = blocks[k];
+        DoubleSide A = gatherDouble(c.a, bodies), B = gatherDouble(c.b, bodies);
+        // The displacements and the rotations less the identity, in double.
+        VD dpx, dpy, qcA, qsA, qcB, qsB;
+        for (int i = 0; i < W; ++i) {
+            const DoubleState& a = bodies[c.a[i]];
+            const DoubleState& b = bodies[c.b[i]];
+            dpx[i] = b.dpx - a.dpx;
+            dpy[i] = b.dpy - a.dpy;
+            qcA[i] = a.qc - 1.0;
+            qsA[i] = a.qs;
+            qcB[i] = b.qc - 1.0;
+            qsB[i] = b.qs;
+        }
+        const VD iA = widen(c.invIA), iB = widen(c.invIB), nx = widen(c.nx), ny = widen(c.ny);
+        VD jn[2];
+        for (int i = 0; i < 2; ++i) {
+            PointLanes& p = c.p[i];
+            const VD start = widen(p.normalImpulse);
+            const VD old = start + widen(p.single.normalChange);
+            const VD rAx = widen(p.rAx), rAy = widen(p.rAy), rBx = widen(p.rBx), rBy = widen(p.rBy);
+            const VD dx = dpx + (qcB * rBx - qsB * rBy) - (qcA * rAx - qsA * rAy);
+            const VD dy = dpy + (qsB * rBx + qcB * rBy) - (qsA * rAx + qcA * rAy);
+            const VD sep = dx * nx + dy * ny + widen(p.base);
+            const VD bias = sep > zero ? sep * inverseSubstep : zero;
+            const VD vn = relative(A, B, nx, ny, rAx, rAy, rBx, rBy);
+            const VD sum = old - widen(p.normalMass) * (vn + bias);
+            const VD next = sum > zero ? sum : zero;
+            // 0 gives -start exactly, so that end() reads a released impulse as 0.
+            store(p.single.normalChange, __builtin_convertvector(next - start, V));
+            jn[i] = next;
+            apply(A, B, A.m, iA, B.m, iB, next - old, nx, ny, rAx, rAy, rBx, rBy);
+        }
+        if (s.friction) {
+            const VD friction = widen(c.friction);
+            const VD tx = ny, ty = -nx;
+            for (int i = 0; i < 2; ++i) {
+                PointLanes& p = c.p[i];
+                const VD start = widen(p.tangentImpulse);
+                const VD old = start + widen(p.single.tangentChange);
+                const VD rAx = widen(p.rAx), rAy = widen(p.rAy), rBx = widen(p.rBx),
+                         rBy = widen(p.rBy);
+                const VD limit = friction * jn[i];
+                const VD vt = relative(A, B, tx, ty, rAx, rAy, rBx, rBy);
+                const VD unclamped = old - widen(p.tangentMass) * vt;
+                const VD capped = unclamped < limit ? unclamped : limit;
+                const VD next = capped > -limit ? capped : -limit;
+                store(p.single.tangentChange, __builtin_convertvector(next - start, V));
+                apply(A, B, A.m, iA, B.m, iB, next - old, tx, ty, rAx, rAy, rBx, rBy);
+            }
+        }
+        scatterDouble(c.a, bodies, A);
+        scatterDouble(c.b, bodies, B);
+    }
+}
+#endif
+
 } // namespace
 } // namespace RIGIDLAB_SOFT_NAMESPACE
 
@@ -395,8 +552,14 @@ void solveBlocks(Block* blocks, int count, BodyState* bodies, const PassSettings
 // The kernel's name and width, from the file that compiles this one again.
 RIGIDLAB_SOFT_KERNEL
 {
-    return {RIGIDLAB_SOFT_NAMESPACE::warmStartBlocks, RIGIDLAB_SOFT_NAMESPACE::solveBlocks,
-            RIGIDLAB_SOFT_WIDTH, RIGIDLAB_SOFT_NAME};
+    // Single precision has no warm start of its own: its impulses are applied in double
+    // (SoftSolver::warmStart).
+    using namespace RIGIDLAB_SOFT_NAMESPACE;
+#if RIGIDLAB_SOFT_SINGLE
+    return {nullptr, solveBlocks, RIGIDLAB_SOFT_WIDTH, RIGIDLAB_SOFT_NAME, relaxDoubleBlocks};
+#else
+    return {warmStartBlocks, solveBlocks, RIGIDLAB_SOFT_WIDTH, RIGIDLAB_SOFT_NAME};
+#endif
 }
 #else
 Kernel kernel2()

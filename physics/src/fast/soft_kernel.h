@@ -9,13 +9,15 @@
 // two lanes (SSE2, every x86-64) or four (AVX2, chosen at run time where the processor has
 // it). Since the lanes of a block touch distinct moving bodies, the result of a lane does not
 // depend on its neighbours: both widths give the same bits. With
-// SoftStepSettings::singlePrecision the same passes run on floats (Box2D v3's choice): four
-// lanes (SSE2) or eight (AVX2), again the same bits at either width, but not the bits of
-// double precision. The floats hold changes, not whole values: each body's velocity less its
-// velocity at the start of the step (each point's relative velocity then is in OriginLanesOf,
-// from double), its rotation less the identity, and the separation at the start of the step
-// as the base; so a float's rounding is relative to what the step changed, not to the speed
-// or the lever arm.
+// SoftStepSettings::singlePrecision the solve and relax passes run on floats (Box2D v3's
+// choice), but the step's last relax in double (KernelOf::relaxDouble): four lanes (SSE2) or
+// eight (AVX2), again the same bits at either width, but not the bits of double precision. The
+// floats hold changes, not whole values: each body's velocity less its velocity at the start of the
+// step (each point's relative velocity then is in SingleLanesOf, from double), its rotation less
+// the identity, the separation at the start of the step as the base, and the passes' change of the
+// accumulated impulses since the start of the step (the impulses are applied in double by the warm
+// start: SoftSolver::warmStart); so a float's rounding is relative to what the step changed, not to
+// the speed, the lever arm or the impulse that holds a weight.
 //
 // This header and soft_kernel.cpp include nothing but plain C++ types: soft_kernel.cpp is
 // compiled four times (soft_kernel_avx2.cpp with -mavx2, soft_kernel_single.cpp and
@@ -47,15 +49,22 @@ template <typename Real> struct alignas(8 * sizeof(Real)) BodyStateOf {
     Real qc = 1, qs = 0;
 };
 
-/// Single precision only: each point's relative velocity at the start of the step, along the
-/// normal and the tangent [m/s], computed in double when the lane is filled. The float bodies
-/// carry only their velocity's change since then (SoftSolver::toSingle), so a float's rounding
-/// is relative to that change, not to the speed. Double precision has no such lanes.
-template <typename Real, int Width> struct OriginLanesOf {
+/// Single precision only, per point: its relative velocity at the start of the step, along
+/// the normal and the tangent [m/s], computed in double when the lane is filled (the float
+/// bodies carry only their velocity's change since then, SoftSolver::toSingle, so a float's
+/// rounding is relative to that change, not to the speed); and the change the float passes
+/// made to its accumulated impulses since the start of the step [N s]. The lanes'
+/// normalImpulse and tangentImpulse hold the impulses at the start of the step, rounded, for
+/// the clamps only: the passes accumulate and apply only the change, rounded to its own size,
+/// not to the impulse's, and the warm start applies the impulses in double
+/// (SoftSolver::warmStart). Double precision has no such lanes.
+template <typename Real, int Width> struct SingleLanesOf {
 };
-template <int Width> struct OriginLanesOf<float, Width> {
+template <int Width> struct SingleLanesOf<float, Width> {
     float normalVelocity[Width]{};
     float tangentVelocity[Width]{};
+    float normalChange[Width]{};
+    float tangentChange[Width]{};
 };
 
 /// One point of each lane's manifold. A manifold with one point leaves the second's masses 0,
@@ -67,11 +76,13 @@ template <typename Real, int Width> struct alignas(32) PointLanesOf {
     /// n . (dpB + qB rB - dpA - qA rA) + base [m]. In single precision, whose q is the
     /// rotation less the identity, the separation at the start of the step itself.
     Real base[Width]{};
-    Real normalMass[Width]{};     ///< 1 / K along the normal [kg]
-    Real tangentMass[Width]{};    ///< 1 / K along the tangent [kg]
-    Real normalImpulse[Width]{};  ///< accumulated within a substep [N s]
-    Real tangentImpulse[Width]{}; ///< accumulated within a substep [N s]
-    [[no_unique_address]] OriginLanesOf<Real, Width> origin;
+    Real normalMass[Width]{};  ///< 1 / K along the normal [kg]
+    Real tangentMass[Width]{}; ///< 1 / K along the tangent [kg]
+    /// Accumulated within a substep [N s]; in single precision as it was at the start of the
+    /// step, rounded (SingleLanesOf holds the change since).
+    Real normalImpulse[Width]{};
+    Real tangentImpulse[Width]{};
+    [[no_unique_address]] SingleLanesOf<Real, Width> single;
 };
 
 /// A block's lanes. The inverse masses are the bodies' (BodyStateOf::invMass), and the soft
@@ -118,12 +129,18 @@ struct PassSettings {
 /// one per call.
 template <typename BlockType> struct KernelOf {
     using State = typename BlockType::State;
-    /// Applies the accumulated impulses (warm start).
+    /// Applies the accumulated impulses (warm start); nullptr in single precision, whose
+    /// warm start is double (SoftSolver::warmStart).
     void (*warmStart)(BlockType* blocks, int count, State* bodies);
     /// One pass of normal and friction impulses, soft with bias or rigid without (relax).
     void (*solve)(BlockType* blocks, int count, State* bodies, const PassSettings& s);
     int width; ///< lanes solved together
     const char* name;
+    /// Single precision only (nullptr in double): the step's last relax pass (without bias or
+    /// look-ahead) in double on the double bodies, from the float blocks' rows; over blocks
+    /// [0, count) one after the other, the overflow's too.
+    void (*relaxDouble)(BlockType* blocks, int count, BodyStateOf<double>* bodies,
+                        const PassSettings& s) = nullptr;
 };
 using Kernel = KernelOf<Block>;
 using SingleKernel = KernelOf<SingleBlock>;

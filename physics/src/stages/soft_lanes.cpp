@@ -10,6 +10,7 @@
 
 #include "soft_solver.h"
 
+#include <array>
 #include <cstddef>
 #include <type_traits>
 
@@ -37,8 +38,9 @@ void SoftSolver::emptyLanes(int block, int from, int spare)
                 for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
                                     p.normalImpulse, p.tangentImpulse})
                     field[l] = 0;
-                if constexpr (requires { p.origin.normalVelocity; })
-                    p.origin.normalVelocity[l] = p.origin.tangentVelocity[l] = 0;
+                if constexpr (requires { p.single.normalVelocity; })
+                    p.single.normalVelocity[l] = p.single.tangentVelocity[l] =
+                        p.single.normalChange[l] = p.single.tangentChange[l] = 0;
             }
         }
     };
@@ -46,6 +48,27 @@ void SoftSolver::emptyLanes(int block, int from, int spare)
         empty(m_singleBlocks[static_cast<size_t>(block)]);
     else
         empty(m_blocks[static_cast<size_t>(block)]);
+}
+
+void SoftSolver::addSingleWarm(const Contact& ct, int point, const Vec2& rA, const Vec2& rB)
+{
+    // The velocity that the point's impulse at the start of the step gives each body in a warm
+    // start, in double: P = jn n + jt t, with the substep's share of the step's impulse.
+    const auto ia = static_cast<size_t>(ct.a), ib = static_cast<size_t>(ct.b);
+    const auto i = static_cast<size_t>(point);
+    const double substeps = m_substeps.count;
+    const Vec2 n = ct.manifold.normal, t(n.y(), -n.x());
+    const Vec2 impulse =
+        (ct.normalImpulse[i] / substeps) * n + (ct.tangentImpulse[i] / substeps) * t;
+    const double mA = m_state[ia].invMass, mB = m_state[ib].invMass;
+    std::array<double, 3>& warmA = m_singleWarm[ia];
+    std::array<double, 3>& warmB = m_singleWarm[ib];
+    warmA[0] -= mA * impulse.x();
+    warmA[1] -= mA * impulse.y();
+    warmA[2] -= m_invInertia[ia] * cross(rA, impulse);
+    warmB[0] += mB * impulse.x();
+    warmB[1] += mB * impulse.y();
+    warmB[2] += m_invInertia[ib] * cross(rB, impulse);
 }
 
 template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, BlockType& k, int lane)
@@ -89,9 +112,9 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
         // share.
         p.normalImpulse[l] = ct.normalImpulse[static_cast<size_t>(i)] / substeps;
         p.tangentImpulse[l] = ct.tangentImpulse[static_cast<size_t>(i)] / substeps;
-        if constexpr (requires { p.origin.normalVelocity; }) {
+        if constexpr (requires { p.single.normalVelocity; }) {
             // Single precision: the point's relative velocity at the start of the step, in
-            // double, which the bodies' floats leave out (OriginLanesOf); and the separation
+            // double, which the bodies' floats leave out (SingleLanesOf); and the separation
             // itself as the base, since the kernel turns the lever arms by the rotation less
             // the identity (soft_kernel.h). With the lever arms whole in floats, a box 5 m from
             // the centre of its slope had its separation to half a micrometre, and the soft push
@@ -100,9 +123,13 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
             const auto& oB = m_singleOrigin[ib];
             const Vec2 dv =
                 Vec2(oB[0], oB[1]) + cross(oB[2], rB) - Vec2(oA[0], oA[1]) - cross(oA[2], rA);
-            p.origin.normalVelocity[l] = static_cast<float>(dv.dot(n));
-            p.origin.tangentVelocity[l] = static_cast<float>(dv.dot(t));
+            p.single.normalVelocity[l] = static_cast<float>(dv.dot(n));
+            p.single.tangentVelocity[l] = static_cast<float>(dv.dot(t));
             p.base[l] = static_cast<float>(cp.separation);
+            // No change of the impulses yet; their warm start, in double, to the bodies'
+            // (SoftSolver::warmStart).
+            p.single.normalChange[l] = p.single.tangentChange[l] = 0.0f;
+            addSingleWarm(ct, i, rA, rB);
         }
     }
     // A point the manifold lacks: zero masses, so zero impulses (a block filled again may
@@ -112,8 +139,9 @@ template <typename BlockType> void SoftSolver::fillLaneOf(const Contact& ct, Blo
         for (auto* field : {p.rAx, p.rAy, p.rBx, p.rBy, p.base, p.normalMass, p.tangentMass,
                             p.normalImpulse, p.tangentImpulse})
             field[l] = 0.0;
-        if constexpr (requires { p.origin.normalVelocity; })
-            p.origin.normalVelocity[l] = p.origin.tangentVelocity[l] = 0.0f;
+        if constexpr (requires { p.single.normalVelocity; })
+            p.single.normalVelocity[l] = p.single.tangentVelocity[l] = p.single.normalChange[l] =
+                p.single.tangentChange[l] = 0.0f;
     }
 }
 

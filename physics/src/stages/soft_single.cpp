@@ -3,6 +3,17 @@
 // soft_solver.h): the float copy of the bodies the kernel's float passes work on, and the way
 // back. The floats hold what changed since the step began (fast/soft_kernel.h), and only the
 // passes' change returns to the double velocities.
+//
+// The warm start is double, body by body (SoftSolver::warmStart): a resting contact's impulse,
+// about m g h a substep, is applied by each warm start and taken back by the passes, and with
+// the impulse applied in floats a float's grain of it (6e-8 of g h) came back each substep,
+// which the soft push made into a sink 1.4e-6 off (docs/performance-log.md). What a warm start
+// gives a body is the sum of its contacts' impulses at the start of the step (fillLaneOf, in
+// double) and of every velocity change the passes made since, which fromSingle() adds as it
+// hands them to the double velocities: no pass over the contacts, and each change rounded to
+// its own size. The step's last relax pass is double too (fast/soft_kernel.cpp, relaxDouble),
+// so that the step ends with double precision's velocities: a ball an e = 0 bounce put to rest
+// ends at 0 m/s, not at a float's grain of the step's change of velocity, up or down.
 
 #include "soft_solver.h"
 
@@ -48,9 +59,17 @@ void SoftSolver::fromSingle()
         soft::BodyState& d = m_state[i];
         soft::SingleBodyState& f = m_singleState[i];
         std::array<float, 3>& base = m_singleBase[i];
-        d.vx += static_cast<double>(f.vx) - static_cast<double>(base[0]);
-        d.vy += static_cast<double>(f.vy) - static_cast<double>(base[1]);
-        d.w += static_cast<double>(f.w) - static_cast<double>(base[2]);
+        const double dvx = static_cast<double>(f.vx) - static_cast<double>(base[0]);
+        const double dvy = static_cast<double>(f.vy) - static_cast<double>(base[1]);
+        const double dw = static_cast<double>(f.w) - static_cast<double>(base[2]);
+        d.vx += dvx;
+        d.vy += dvy;
+        d.w += dw;
+        // The next warm start gives the impulses as changed (soft_solver.h, m_singleWarm).
+        std::array<double, 3>& warm = m_singleWarm[i];
+        warm[0] += dvx;
+        warm[1] += dvy;
+        warm[2] += dw;
         const std::array<double, 3>& o = m_singleOrigin[i];
         f.vx = static_cast<float>(d.vx - o[0]);
         f.vy = static_cast<float>(d.vy - o[1]);

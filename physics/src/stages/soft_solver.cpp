@@ -166,6 +166,7 @@ void SoftSolver::begin(std::vector<Contact>& contacts, const std::vector<Body>& 
         m_singleState.resize(n + 1);
         m_singleBase.resize(n + 1);
         m_singleOrigin.resize(n + 1);
+        m_singleWarm.assign(n + 1, {0.0, 0.0, 0.0}); // summed by fillLaneOf()
         for (size_t i = 0; i <= n; ++i) {
             const soft::BodyState& d = m_state[i];
             m_singleOrigin[i] = {d.vx, d.vy, d.w};
@@ -182,8 +183,6 @@ void SoftSolver::integrateVelocities(bool sumBefore)
         integrateVelocitiesOf<true>(m_state);
     else
         integrateVelocitiesOf<false>(m_state);
-    if (m_single)
-        toSingle(false);
 }
 
 template <typename State>
@@ -237,11 +236,23 @@ void SoftSolver::setDrift(const std::vector<Vec2>& drift, const std::vector<doub
 void SoftSolver::warmStart()
 {
     m_energyValid = false;
+    if (m_single) {
+        // In double, body by body: the velocity all its contacts' impulses give it, which is
+        // their impulses at the start of the step and each pass's change since (m_singleWarm).
+        // Then the velocities to the float copy.
+        for (int id : m_moving) {
+            const auto i = static_cast<size_t>(id);
+            soft::BodyState& d = m_state[i];
+            const std::array<double, 3>& warm = m_singleWarm[i];
+            d.vx += warm[0];
+            d.vy += warm[1];
+            d.w += warm[2];
+        }
+        toSingle(false);
+        return; // no pins in single precision (soft_step.cpp)
+    }
     forEachRange([&](int first, int count) {
-        if (m_single)
-            m_singleKernel.warmStart(m_singleBlocks.data() + first, count, m_singleState.data());
-        else
-            m_kernel.warmStart(m_blocks.data() + first, count, m_state.data());
+        m_kernel.warmStart(m_blocks.data() + first, count, m_state.data());
     });
     if (!m_pins.empty())
         warmStartPins();
@@ -257,6 +268,14 @@ void SoftSolver::solve(bool useBias, bool lookAhead)
     m_pass.inverseSubstep = lookAhead ? m_substeps.invH : kNoLookAhead;
     m_pass.useBias = useBias;
     m_pass.friction = !useBias || m_settings.frictionWithBias;
+    if (m_single && !useBias && !lookAhead) {
+        // The step's last pass in double (fast/soft_kernel.cpp): the velocities the step ends
+        // with are then as exact as double precision's, a ball put to rest at 0 m/s, not at a
+        // float's grain of the step's change of velocity, up or down.
+        m_singleKernel.relaxDouble(m_singleBlocks.data(), static_cast<int>(m_singleBlocks.size()),
+                                   m_state.data(), m_pass);
+        return; // no pins in single precision (soft_step.cpp)
+    }
     forEachRange([&](int first, int count) {
         if (m_single)
             m_singleKernel.solve(m_singleBlocks.data() + first, count, m_singleState.data(),
@@ -400,8 +419,23 @@ void SoftSolver::endOf(std::vector<Body>& bodies, const std::vector<State>& stat
         const BlockType& k = block[static_cast<size_t>(slot.block)];
         const auto l = static_cast<size_t>(slot.lane);
         for (int i = 0; i < slot.points; ++i) {
-            ct.normalImpulse[static_cast<size_t>(i)] = substeps * k.p[i].normalImpulse[l];
-            ct.tangentImpulse[static_cast<size_t>(i)] = substeps * k.p[i].tangentImpulse[l];
+            const auto& p = k.p[i];
+            double& normal = ct.normalImpulse[static_cast<size_t>(i)];
+            double& tangent = ct.tangentImpulse[static_cast<size_t>(i)];
+            if constexpr (requires { p.single.normalChange; }) {
+                // Single precision: the contact's impulse at the start of the step, which it
+                // still holds, with the passes' change; 0 where the change took the rounded
+                // start back to 0 (the clamp), not the rounding's remainder.
+                normal = p.normalImpulse[l] + p.single.normalChange[l] == 0.0f
+                             ? 0.0
+                             : normal + substeps * static_cast<double>(p.single.normalChange[l]);
+                tangent = p.tangentImpulse[l] + p.single.tangentChange[l] == 0.0f
+                              ? 0.0
+                              : tangent + substeps * static_cast<double>(p.single.tangentChange[l]);
+            } else {
+                normal = substeps * p.normalImpulse[l];
+                tangent = substeps * p.tangentImpulse[l];
+            }
         }
     }
 }

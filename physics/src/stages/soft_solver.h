@@ -129,6 +129,11 @@ private:
     /// Fills lane `lane` of block k (of m_blocks, or m_singleBlocks when m_single) with the
     /// contact ct, from the bodies as begin() took them; every field of the lane.
     template <typename BlockType> void fillLaneOf(const Contact& ct, BlockType& k, int lane);
+    /// Single precision: adds to m_singleWarm of ct's bodies what the impulse of its point
+    /// `point` at the start of the step gives them in a warm start (lever arms rA, rB). Always
+    /// inline: called, it took a third more instructions than fillLaneOf() itself.
+    [[gnu::always_inline]] inline void addSingleWarm(const Contact& ct, int point, const Vec2& rA,
+                                                     const Vec2& rB);
     // The passes over the bodies of either precision (soft_solver.cpp).
     template <bool SumBefore, typename State> void integrateVelocitiesOf(std::vector<State>& state);
     template <typename State> void integratePositionsOf(std::vector<State>& state);
@@ -162,7 +167,8 @@ private:
     void warmStartPins();
 
     /// Single precision: the velocities are the double state's (m_state), and the float copy
-    /// (m_singleState) is what the kernel's passes change. It holds each body's velocity less
+    /// (m_singleState) is what the kernel's solve and relax passes change; the warm start is
+    /// double (warmStart(), m_singleWarm). It holds each body's velocity less
     /// its velocity at the start of the step (m_singleOrigin), and its rotation less the
     /// identity (qc - 1, qs), so that a float rounds the change, not the speed or the lever
     /// arm. toSingle: each moving body's velocity to the copy (motion: the displacements and
@@ -202,8 +208,12 @@ private:
     std::vector<double> m_angularAcceleration;        ///< per moving body [rad/s^2]
     std::vector<double> m_mass, m_inertia;            ///< per moving body
     /// Per body, when m_single: its velocity at the start of the step [m/s, rad/s]; the float
-    /// copy holds the velocity less this (OriginLanesOf, soft_kernel.h).
+    /// copy holds the velocity less this (SingleLanesOf, soft_kernel.h).
     std::vector<std::array<double, 3>> m_singleOrigin;
+    /// Per body, when m_single: the velocity its contacts' impulses give it in a warm start
+    /// [m/s, rad/s], in double: at the start of the step from the contacts' impulses
+    /// (fillLaneOf), and after each pass plus the velocity change the pass made (fromSingle).
+    std::vector<std::array<double, 3>> m_singleWarm;
 
     std::vector<Vec2> m_drift;          ///< per body, empty: none (setDrift())
     std::vector<double> m_angularDrift; ///< per body

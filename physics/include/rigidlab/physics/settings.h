@@ -66,14 +66,14 @@ struct SoftStepSettings {
     /// The four-lane AVX2 kernel where the processor has it; false: the two-lane one. Both
     /// give the same bits (soft_kernel.h).
     bool wideKernel = true;
-    /// The contact passes (warm start, soft solve, relax) in single precision: eight lanes
-    /// with AVX2, four without, half the bytes per contact (Box2D v3's choice). The velocities
-    /// stay double and take only the passes' change, so a body no contact pushed keeps every
-    /// bit; the floats hold what changed since the step began (soft_kernel.h), so a disc slides
-    /// into rolling and a box rests on a slope as in double. It is off: a resting body's float
-    /// impulses set its sink to 1.4e-6 of it, not 1e-6, and its speed at rest to 1e-8 m/s, not
-    /// 0 (docs/performance.md). The collision phase, the positions and the energy books stay in
-    /// double either way; a world whose contacts touch a pin joint solves in double.
+    /// The soft solve and relax passes in single precision: eight lanes with AVX2, four
+    /// without (Box2D v3's choice); the warm start and the step's last relax in double. The
+    /// velocities and impulses stay double and take only the passes' change, so a body no
+    /// contact pushed keeps every bit; the floats hold what changed since the step began
+    /// (soft_kernel.h), so a disc slides into rolling, a box rests on a slope and a body at
+    /// rest sinks as in double, to 1e-6. Off by default: its bits are not double precision's
+    /// (docs/performance-log.md). The collision phase, the positions and the energy books stay
+    /// in double either way; a world whose contacts touch a pin joint solves in double.
     bool singlePrecision = false;
     /// Two polygons that moved less than this against each other since the full test made
     /// their manifold keep it (Box2D v3.2's contact recycling, narrow_phase.cpp): each point
