@@ -148,10 +148,14 @@ private slots:
         w.inspector().refresh();
         QCOMPARE(c.world().body(body).mass, before);
         QCOMPARE(mass->text(), typed);
-        // Left, the field shows the value in force again, as the message said.
+        // Left, the field shows the value in force again, as the message said, and a reader
+        // is not told the refusal a second time (what the announcer says stays as it was).
+        const QString other = QStringLiteral("something else since");
+        ui::announce(w, other);
         w.view().setFocus();
         QTRY_VERIFY(!mass->hasFocus());
         QCOMPARE(mass->text(), shown);
+        QCOMPARE(told->accessibleName(), other);
         QCOMPARE(c.world().body(body).mass, before);
         QVERIFY(c.isRunning());
     }

@@ -183,7 +183,7 @@ QString NumberField::rangeMessage(double v) const
     return QString();
 }
 
-bool NumberField::commit()
+bool NumberField::commit(bool retell)
 {
     // Nothing typed: the text is the value in force, rounded for display; reading it back
     // would change a value such as 1/240 s by its last digits.
@@ -206,12 +206,14 @@ bool NumberField::commit()
         // it is left), never a value made up from what was typed.
         why = tr("%1. It stays %2.", "a refusal, then the value that stays in force")
                   .arg(why, withUnit(formatSaid(m_value, shownDigits())));
+        const bool told = why == m_error;
         setError(why);
         // Shown at once below the field, not only on hovering it, and told to a reader, who
         // hears neither the tooltip nor the status bar.
         if (isVisible()) {
             QToolTip::showText(mapToGlobal(QPoint(0, height())), why, this);
-            announce(*this, why);
+            if (retell || !told)
+                announce(*this, why);
         }
         emit refused(why);
         return false;
@@ -308,7 +310,7 @@ void NumberField::focusOutEvent(QFocusEvent* e)
     // field for another part of the window takes the value.
     const bool away =
         e->reason() == Qt::PopupFocusReason || e->reason() == Qt::ActiveWindowFocusReason;
-    if (!away && isModified() && !commit()) {
+    if (!away && isModified() && !commit(false)) {
         // Leaving with a refused value: the value in force comes back, the mark and its
         // message stay until the next edit, so that the refusal is not missed.
         display(m_value, shownDigits());

@@ -66,8 +66,10 @@ public:
     /// The digits a typed value is shown with once taken: every digit a person types.
     static constexpr int kFullDigits = 12;
 
-    /// Takes what was typed, as Enter does; false when it was refused.
-    bool commit();
+    /// Takes what was typed, as Enter does; false when it was refused. A refusal is told to a
+    /// screen reader; `retell` false: only if its message differs from the one told before
+    /// (leaving the field after Enter was refused tells nothing new).
+    bool commit(bool retell = true);
     /// Drops what was typed, as Escape does.
     void revert();
     /// The last refusal, empty when the value shown is accepted.
