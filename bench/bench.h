@@ -147,11 +147,17 @@ std::string referenceEngine(const std::vector<BenchResult>& results);
 /// reference at least as stable). Rows in the order given.
 std::string benchTable(const std::vector<BenchResult>& results);
 
+/// The ratio of `a`'s time to `b`'s round by round (a.runs[i] / b.runs[i], the engines having
+/// taken turns: runInTurns), for the rounds both ran; empty when either has none.
+std::vector<double> pairedRatios(const BenchResult& a, const BenchResult& b);
+
 /// The speed and stability targets for the soft step ("RigidLab SS"), each with its
 /// ratio in these results and whether it is met: on each pyramid no slower than Box2D v3 as it
 /// builds by default (SSE2) and within 1.25 times its AVX2 build, 1.5 times faster than
 /// Chipmunk and 2 times faster than Box2D 2.4, and the base-100 pyramid standing with its top
-/// sunk less than Box2D v3's (SSE2); the cost per body from base 40 to
+/// sunk less than Box2D v3's (SSE2); each ratio to Box2D v3 also round by round (the median
+/// of pairedRatios() and their range), so that the line says how much it moved in the run; the
+/// cost per body from base 40 to
 /// base 100 growing no faster than n log n. Empty without a soft-step pyramid.
 std::string softStepTargets(const std::vector<BenchResult>& results);
 
@@ -164,6 +170,9 @@ struct RigidLabBenchSettings {
     /// The soft step's contact passes in single precision (SoftStepSettings::singlePrecision):
     /// the row "RigidLab SS f32", opt-in, not the default solver.
     bool singlePrecision = false;
+    /// The soft step's substeps (SoftStepSettings::substeps; the library's default unless the
+    /// bench is told otherwise: `--substeps N`).
+    int substeps = physics::SoftStepSettings{}.substeps;
 };
 std::unique_ptr<BenchEngine> makeRigidLabBenchEngine(const RigidLabBenchSettings& settings = {});
 

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // rigidlab-bench: the benchmark scenes in RigidLab, Box2D v3, Chipmunk 7 and Box2D 2.4, one
 // table.
-//   rigidlab-bench [--scene LIST] [--steps N] [--runs K] [--engines LIST] [--hash] [--profile]
+//   rigidlab-bench [--scene LIST] [--steps N] [--runs K] [--engines LIST] [--substeps N] [--hash]
+//                  [--profile]
 // --scene runs only the scenes named, comma-separated (pyramid-40,pyramid-100 prints the cost per
 // body between them); all by default.
 // --engines runs only the engines named, comma-separated: sequential, soft, f32, v3-sse2,
 // v3-avx2, chipmunk, box2d (or the table's names, "RigidLab SS"); all of this build's by default.
+// --substeps N runs the soft step (soft and f32) in N substeps instead of the library's default
+// (SoftStepSettings::substeps); the settings line under the table says the count.
 // --hash prints, for each RigidLab engine and scene, a hash of the bits of every body's
 // position, angle, velocity and angular velocity after the first run (bench::stateHash): the
 // same hash before and after a change is the same bits, e.g.
@@ -45,7 +48,7 @@ std::string cpuModel()
 int usage()
 {
     std::fputs("usage: rigidlab-bench [--scene LIST] [--steps N] [--runs K] [--engines LIST] "
-               "[--hash] [--profile]\n",
+               "[--substeps N] [--hash] [--profile]\n",
                stderr);
     return 2;
 }
@@ -58,15 +61,15 @@ struct NamedEngine {
 
 /// RigidLab (both solvers) and every peer this build has; `missing` gets each peer left out,
 /// with the reason.
-std::vector<NamedEngine> makeEngines([[maybe_unused]] std::vector<std::string>& missing)
+std::vector<NamedEngine> makeEngines(const bench::RigidLabBenchSettings& soft,
+                                     [[maybe_unused]] std::vector<std::string>& missing)
 {
     std::vector<NamedEngine> engines;
     engines.push_back({"sequential", bench::makeRigidLabBenchEngine()});
-    bench::RigidLabBenchSettings soft;
-    soft.solver = physics::SolverKind::SoftStep;
     engines.push_back({"soft", bench::makeRigidLabBenchEngine(soft)});
-    soft.singlePrecision = true; // opt-in, measured beside the default
-    engines.push_back({"f32", bench::makeRigidLabBenchEngine(soft)});
+    bench::RigidLabBenchSettings single = soft;
+    single.singlePrecision = true; // opt-in, measured beside the default
+    engines.push_back({"f32", bench::makeRigidLabBenchEngine(single)});
 #ifdef RIGIDLAB_BENCH_BOX2D_V3
     engines.push_back({"v3-sse2", bench::makeBox2dV3Engine_sse2()});
     engines.push_back({"v3-avx2", bench::makeBox2dV3Engine_avx2()});
@@ -169,6 +172,8 @@ struct Flags {
     bench::BenchOptions options;
     std::vector<std::string> scenes = bench::benchSceneNames();
     bool profile = false, hash = false;
+    /// The soft step's settings (--substeps) for the engines soft and f32.
+    bench::RigidLabBenchSettings soft{.solver = physics::SolverKind::SoftStep};
     const char* engineList = nullptr; ///< --engines' value, or null for every engine
 };
 
@@ -182,7 +187,8 @@ std::optional<Flags> parseFlags(int argc, char** argv)
             (arg == "--hash" ? f.hash : f.profile) = true;
             continue;
         }
-        if (arg != "--scene" && arg != "--steps" && arg != "--runs" && arg != "--engines") {
+        if (arg != "--scene" && arg != "--steps" && arg != "--runs" && arg != "--engines" &&
+            arg != "--substeps") {
             std::fprintf(stderr, "rigidlab-bench: unknown option \"%s\"\n", arg.c_str());
             return std::nullopt;
         }
@@ -200,6 +206,11 @@ std::optional<Flags> parseFlags(int argc, char** argv)
             if (!n)
                 return std::nullopt;
             (steps ? f.options.steps : f.options.runs) = *n;
+        } else if (arg == "--substeps") {
+            const std::optional<int> n = wholeNumber(arg, value, 1);
+            if (!n)
+                return std::nullopt;
+            f.soft.substeps = *n;
         } else {
             f.engineList = value;
         }
@@ -216,11 +227,11 @@ int main(int argc, char** argv)
         usage();
         return 2;
     }
-    const auto& [options, scenes, profile, hash, engineList] = *flags;
+    const auto& [options, scenes, profile, hash, soft, engineList] = *flags;
 
     // Each peer left out of this build, with the reason (said under the table).
     std::vector<std::string> missing;
-    std::vector<NamedEngine> engines = makeEngines(missing);
+    std::vector<NamedEngine> engines = makeEngines(soft, missing);
     if (engineList) {
         if (!selectEngines(engineList, engines))
             return 2;

@@ -46,8 +46,7 @@ public:
     {
         if (m_settings.solver == physics::SolverKind::SoftStep)
             return std::string(physics::solverName(m_settings.solver)) + ", " +
-                   std::to_string(physics::SoftStepSettings{}.substeps) +
-                   " substeps, symplectic Euler, " +
+                   std::to_string(m_settings.substeps) + " substeps, symplectic Euler, " +
                    (m_settings.singlePrecision
                         ? "contact passes in single precision (the rest double), "
                         : "double precision, ") +
@@ -113,6 +112,7 @@ physics::World buildBenchWorld(const BenchScene& scene, const RigidLabBenchSetti
     physics::World world(def);
     world.contactSettings().positionIterations = settings.positionIterations;
     world.contactSettings().soft.singlePrecision = settings.singlePrecision;
+    world.contactSettings().soft.substeps = settings.substeps;
     for (const BenchBody& b : scene.bodies) {
         physics::BodyDef d;
         d.type = b.isStatic ? physics::BodyType::Static : physics::BodyType::Dynamic;

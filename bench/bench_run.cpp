@@ -201,6 +201,31 @@ std::string benchTable(const std::vector<BenchResult>& results)
     return out;
 }
 
+std::vector<double> pairedRatios(const BenchResult& a, const BenchResult& b)
+{
+    std::vector<double> ratios;
+    for (size_t i = 0; i < std::min(a.runs.size(), b.runs.size()); ++i)
+        if (b.runs[i] > 0)
+            ratios.push_back(a.runs[i] / b.runs[i]);
+    return ratios;
+}
+
+namespace {
+
+/// The ratios of `a` to `b` round by round in words: "round by round 1.02 (0.97-1.10)", their
+/// median and range; empty without a round.
+std::string pairedText(const BenchResult& a, const BenchResult& b)
+{
+    const std::vector<double> ratios = pairedRatios(a, b);
+    if (ratios.empty())
+        return {};
+    const auto [lo, hi] = std::minmax_element(ratios.begin(), ratios.end());
+    return format("round by round %.2f", median(ratios)) + format(" (%.2f-", *lo) +
+           format("%.2f)", *hi);
+}
+
+} // namespace
+
 std::string softStepTargets(const std::vector<BenchResult>& results)
 {
     const auto find = [&](const std::string& engine, const std::string& scene) {
@@ -224,8 +249,10 @@ std::string softStepTargets(const std::vector<BenchResult>& results)
             const std::string engine = std::string("Box2D v3 ") + build;
             if (const BenchResult* v3 = find(engine, scene)) {
                 const double ratio = soft->msPerStep / v3->msPerStep;
+                const std::string paired = pairedText(*soft, *v3);
                 out += format(" %.2fx ", ratio) + engine +
-                       format("'s time (at most %.2f: ", bound) + met(ratio <= bound) + ");";
+                       format("'s time (at most %.2f: ", bound) + met(ratio <= bound) +
+                       (paired.empty() ? "" : "; " + paired) + ");";
             } else {
                 out += " " + engine + " missing;";
             }
@@ -235,8 +262,11 @@ std::string softStepTargets(const std::vector<BenchResult>& results)
             std::string against;
             for (const char* build : {"SSE2", "AVX2"})
                 if (const BenchResult* v3 = find(std::string("Box2D v3 ") + build, scene))
-                    against += (against.empty() ? "" : ", ") +
-                               format("%.2fx ", single->msPerStep / v3->msPerStep) + build;
+                    against +=
+                        (against.empty() ? "" : ", ") +
+                        format("%.2fx ", single->msPerStep / v3->msPerStep) + build +
+                        (pairedText(*single, *v3).empty() ? ""
+                                                          : " (" + pairedText(*single, *v3) + ")");
             if (!against.empty())
                 out += " opt-in single precision: " + against + ";";
         }

@@ -92,6 +92,40 @@ private slots:
             QCOMPARE(r.hash, std::optional<std::uint64_t>(1));
         }
     }
+
+    void ratiosRoundByRound()
+    {
+        // The soft step against Box2D v3 round by round: 3/1, 2/4 and 6/2, median 3.00 and
+        // range 0.50-3.00, beside the ratio of the medians, 3/2.
+        bench::BenchResult soft = result("RigidLab SS", 3.0, -0.001);
+        soft.runs = {3.0, 2.0, 6.0};
+        bench::BenchResult v3 = result("Box2D v3 SSE2", 2.0, -0.020);
+        v3.runs = {1.0, 4.0, 2.0};
+        QCOMPARE(bench::pairedRatios(soft, v3), (std::vector<double>{3.0, 0.5, 3.0}));
+        const QString targets = QString::fromStdString(bench::softStepTargets({soft, v3}));
+        QVERIFY2(targets.contains(QStringLiteral("1.50x Box2D v3 SSE2's time (at most 1.00: "
+                                                 "MISSED; round by round 3.00 (0.50-3.00))")),
+                 qPrintable(targets));
+        // Only the rounds both ran are paired.
+        v3.runs.pop_back();
+        QCOMPARE(bench::pairedRatios(soft, v3), (std::vector<double>{3.0, 0.5}));
+        QCOMPARE(bench::pairedRatios(soft, bench::BenchResult{}), std::vector<double>{});
+    }
+
+    void substepsAreTheBenchs()
+    {
+        // --substeps: the soft step's count reaches the world and the settings line.
+        bench::RigidLabBenchSettings settings;
+        settings.solver = physics::SolverKind::SoftStep;
+        QCOMPARE(settings.substeps, physics::SoftStepSettings{}.substeps);
+        settings.substeps = 3;
+        const physics::World world =
+            bench::buildBenchWorld(*bench::makeBenchScene("pyramid-20"), settings);
+        QCOMPARE(world.contactSettings().soft.substeps, 3);
+        const std::string line = bench::makeRigidLabBenchEngine(settings)->settings();
+        QVERIFY2(line.find(", 3 substeps,") != std::string::npos, line.c_str());
+    }
+
     void softStepIsTheReference()
     {
         // The sequential solver first, as rigidlab-bench runs them: still the soft step is

@@ -60,9 +60,10 @@ private slots:
 // A ball of radius r dropped from rest (centre at H = 2.1 m) onto a floor, restitution e, the
 // soft step at dt from 1 ms to 0.2 s: no bounce adds energy, and each bounce is exact.
 //
-// Exact for the step: its 5 substeps of h = dt / 5 (symplectic Euler) put a body in free flight
-// exactly on the parabola y(t) = y0 + (v0 - g h / 2) t - g t^2 / 2 through their end points
-// (soft_impacts.cpp), whose apex, from any step's state (y, v), is y + (v - g h / 2)^2 / (2 g).
+// Exact for the step: its substeps of h = dt / n (n = SoftStepSettings::substeps; symplectic
+// Euler) put a body in free flight exactly on the parabola
+// y(t) = y0 + (v0 - g h / 2) t - g t^2 / 2 through their end points (soft_impacts.cpp), whose
+// apex, from any step's state (y, v), is y + (v - g h / 2)^2 / (2 g).
 // From rest at H that is H + g h^2 / 8 (reached h / 2 before the start). A bounce at e turns
 // the parabola's height above touching (y = r) into e^2 of it: after the first bounce the apex
 // is r + e^2 (H + g h^2 / 8 - r), to round-off. The steps sample the parabola every dt, so the
@@ -87,7 +88,7 @@ void TestSoftCoarse::bouncyBall()
 {
     QFETCH(double, dt);
     QFETCH(double, e);
-    const double r = 0.1, H = 2.1, h = dt / 5.0;
+    const double r = 0.1, H = 2.1, h = dt / SoftStepSettings{}.substeps;
     WorldDef def = rigidlab::test::exactWorld(SolverKind::SoftStep, dt, 0.5, 0.3);
     def.gravity = Vec2(0.0, -kG);
     World world(def);
@@ -193,7 +194,7 @@ void TestSoftCoarse::restingBallAtLongSteps()
           rigidlab::test::solverLabel(solver), dt, 1e3 * (0.2 - high), 1e3 * (high - low));
     RL_VERIFY_AT_MOST(high - low, 1e-3);
     RL_VERIFY_NEAR(high, 0.2, 0.02, 0.0);
-    if (solver == SolverKind::SoftStep) { // the soft contact at rest: g h^2 / pi^2, h = dt / 5
+    if (solver == SolverKind::SoftStep) { // the soft contact at rest: g h^2 / pi^2, h = dt / n
         const double h = dt / SoftStepSettings{}.substeps;
         RL_VERIFY_NEAR(0.2 - high, kG * h * h / (std::numbers::pi * std::numbers::pi), 0.0, 1e-6);
     }
