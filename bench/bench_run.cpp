@@ -250,7 +250,9 @@ std::string softStepTargets(const std::vector<BenchResult>& results)
             if (const BenchResult* v3 = find(engine, scene)) {
                 const double ratio = soft->msPerStep / v3->msPerStep;
                 const std::string paired = pairedText(*soft, *v3);
-                out += format(" %.2fx ", ratio) + engine +
+                // Three decimals: a ratio judged against its bound is printed as judged, so
+                // that 1.004 does not read "1.00x ... at most 1.00: MISSED".
+                out += format(" %.3fx ", ratio) + engine +
                        format("'s time (at most %.2f: ", bound) + met(ratio <= bound) +
                        (paired.empty() ? "" : "; " + paired) + ");";
             } else {
@@ -296,8 +298,8 @@ std::string softStepTargets(const std::vector<BenchResult>& results)
     if (at40 && at100) {
         const double growth = (at100->msPerStep / at100->bodies) / (at40->msPerStep / at40->bodies);
         const double nLogN = std::log(double(at100->bodies)) / std::log(double(at40->bodies));
-        out += format("  cost per body from pyramid-40 to pyramid-100: x%.2f", growth) +
-               format(" (n log n: x%.2f): ", nLogN) + met(growth <= nLogN) + "\n";
+        out += format("  cost per body from pyramid-40 to pyramid-100: x%.3f", growth) +
+               format(" (n log n: x%.3f): ", nLogN) + met(growth <= nLogN) + "\n";
     }
     if (out.empty())
         return out;

@@ -103,13 +103,27 @@ private slots:
         v3.runs = {1.0, 4.0, 2.0};
         QCOMPARE(bench::pairedRatios(soft, v3), (std::vector<double>{3.0, 0.5, 3.0}));
         const QString targets = QString::fromStdString(bench::softStepTargets({soft, v3}));
-        QVERIFY2(targets.contains(QStringLiteral("1.50x Box2D v3 SSE2's time (at most 1.00: "
+        QVERIFY2(targets.contains(QStringLiteral("1.500x Box2D v3 SSE2's time (at most 1.00: "
                                                  "MISSED; round by round 3.00 (0.50-3.00))")),
                  qPrintable(targets));
         // Only the rounds both ran are paired.
         v3.runs.pop_back();
         QCOMPARE(bench::pairedRatios(soft, v3), (std::vector<double>{3.0, 0.5}));
         QCOMPARE(bench::pairedRatios(soft, bench::BenchResult{}), std::vector<double>{});
+    }
+
+    void ratioPrintedAsJudged()
+    {
+        // A ratio just over its bound reads over it: 1.004, not "1.00x ... MISSED".
+        const bench::BenchResult soft = result("RigidLab SS", 1.004, -0.001);
+        const bench::BenchResult v3 = result("Box2D v3 SSE2", 1.0, -0.020);
+        const QString over = QString::fromStdString(bench::softStepTargets({soft, v3}));
+        QVERIFY2(over.contains(QStringLiteral("1.004x Box2D v3 SSE2's time (at most 1.00: MISSED")),
+                 qPrintable(over));
+        const bench::BenchResult under = result("RigidLab SS", 0.9996, -0.001);
+        const QString met = QString::fromStdString(bench::softStepTargets({under, v3}));
+        QVERIFY2(met.contains(QStringLiteral("1.000x Box2D v3 SSE2's time (at most 1.00: met")),
+                 qPrintable(met));
     }
 
     void substepsAreTheBenchs()
