@@ -4671,6 +4671,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>%1 fell off the stage at t = %2 s: the run paused. Play runs on.</source>
         <translation>Těleso „%1“ spadlo ze scény v&#xa0;čase t = %2 s: simulace se pozastavila. Tlačítko Spustit ji rozběhne dál.</translation>
     </message>
+    <message>
+        <source>This step&apos;s run ends at t = %1 s: the run paused. Play runs on.</source>
+        <translation>Tento krok lekce končí v&#xa0;čase t = %1 s: simulace se pozastavila. Tlačítko Spustit ji rozběhne dál.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MainWindow</name>

@@ -3,11 +3,13 @@
 // light cart runs into a heavy one on a 40 m ground), played in a Czech window: the collision
 // panel reports the carts' hit, not the carts settling on the ground at the first step; the
 // bodies are named by their Czech labels; the view frames the carts and where they go until
-// the step's end time, not the whole ground; a cart that runs off the end of the ground stops
-// the run with a message, and the lesson editor's checks warn of it; after the elastic hit
+// the step's end time, not the whole ground; the run that reaches the step's end time, or a cart
+// that runs off the end of the ground, stops with a message that says why (in the status bar
+// and to a screen reader), and the lesson editor's checks warn of the fall; after the elastic hit
 // the status bar says that nothing was dissipated, in the window's language and notation.
 
 #include "build_paths.h"
+#include "common/announcer.h"
 #include "common/language.h"
 #include "instruments/instruments.h"
 #include "lesson_editor/step_checks.h"
@@ -71,6 +73,7 @@ private slots:
     void bodiesByTheirLabels();
     void framingFitsTheCarts();
     void runStopsWhenACartFallsOff();
+    void runSaysWhyItPausedAtTheEnd();
     void editorWarnsOfTheFall();
     void shippedStepsStayOnTheirStage();
     void elasticHitDissipatesNothing_data();
@@ -164,12 +167,46 @@ void TestTeacherLesson::runStopsWhenACartFallsOff()
              qPrintable(QString::number(c.world().time())));
     const QString message = w.statusBar()->currentMessage();
     QVERIFY2(message.contains(QStringLiteral("lehký vozík")), qPrintable(message));
+    // Told to a screen reader too, which reads no status bar.
+    QVERIFY(ui::announcer(w));
+    QCOMPARE(ui::announcer(w)->accessibleName(), message.simplified());
     // Play runs on from there, and does not stop for it again.
     c.setRunning(true);
     for (int frame = 0; frame < 30; ++frame)
         c.advanceClock(1.0 / 60);
     QVERIFY(c.isRunning());
     QCOMPARE(left.count(), 1);
+    c.setRunning(false);
+}
+
+void TestTeacherLesson::runSaysWhyItPausedAtTheEnd()
+{
+    ui::MainWindow w;
+    w.setUnsavedAsker([] { return int(QMessageBox::Discard); });
+    QCOMPARE(w.openLesson(kLesson, true), QString());
+    ui::SimulationController& c = w.controller();
+    QSignalSpy ended(&c, &ui::SimulationController::endTimeReached);
+    // The step's run ends at 3 s: it pauses there and says why, in Czech, in the status bar
+    // and to a screen reader.
+    c.setRunning(true);
+    for (int frame = 0; frame < 600 && c.isRunning(); ++frame)
+        c.advanceClock(1.0 / 60);
+    QVERIFY(!c.isRunning());
+    QCOMPARE(ended.count(), 1);
+    QVERIFY2(std::abs(c.world().time() - 3.0) < 1e-9,
+             qPrintable(QString::number(c.world().time())));
+    const QString message = w.statusBar()->currentMessage();
+    QVERIFY2(message.contains(QStringLiteral("t = 3 s")) &&
+                 message.contains(QStringLiteral("krok")),
+             qPrintable(message));
+    QVERIFY(ui::announcer(w));
+    QCOMPARE(ui::announcer(w)->accessibleName(), message.simplified());
+    // Play runs on from there without stopping for it again.
+    c.setRunning(true);
+    for (int frame = 0; frame < 30; ++frame)
+        c.advanceClock(1.0 / 60);
+    QVERIFY(c.isRunning());
+    QCOMPARE(ended.count(), 1);
     c.setRunning(false);
 }
 

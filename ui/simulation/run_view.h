@@ -93,6 +93,8 @@ signals:
     void eventsCatchingUpChanged(bool catchingUp);
     /// A body left the stage at time t [s] and the run paused.
     void leftStage(physics::BodyId body, double t);
+    /// The run reached the end time it was given (a lesson step's) at time t [s] and paused.
+    void endTimeReached(double t);
     /// Frames asked for were measured: each frame's wall time and physics time [ms].
     void framesMeasured(const std::vector<double>& frameMs, const std::vector<double>& physicsMs);
 

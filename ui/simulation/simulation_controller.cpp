@@ -277,6 +277,8 @@ void SimulationController::advanceClock(double wallSeconds)
             setRunning(false);
         if (left)
             emit leftStage(m_watch.leftStage()->body, m_watch.leftStage()->time);
+        else if (ended)
+            emit endTimeReached(m_world.time());
     }
     const double counted = std::min(wallSeconds, CatchUp::kMaxGapSeconds);
     if (m_timing.frameDone(wallSeconds, counted))

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "window/lesson_session.h"
 
+#include "common/announcer.h"
 #include "common/display_names.h"
 #include "common/export_folder.h"
 #include "common/modal_scope.h"
@@ -57,13 +58,24 @@ LessonSession::LessonSession(const Parts& parts) : QObject(&parts.window), m_par
             m_parts.controller.setRunning(true); // predicted: now see
     });
     connect(&player, &LessonPlayer::exportRequested, this, &LessonSession::exportDialog);
+    // Why the run paused by itself: in the status bar, and told to a screen reader (which
+    // reads no status bar; the scene only says where it paused).
     connect(&parts.controller, &SimulationController::leftStage, this,
             [this](physics::BodyId body, double t) {
-                m_parts.window.statusBar()->showMessage(
+                tellPause(
                     tr("%1 fell off the stage at t = %2 s: the run paused. Play runs on.")
-                        .arg(m_parts.controller.scene().bodyLabel(body), formatReadable(t, 3)),
-                    20000);
+                        .arg(m_parts.controller.scene().bodyLabel(body), formatReadable(t, 3)));
             });
+    connect(&parts.controller, &SimulationController::endTimeReached, this, [this](double t) {
+        tellPause(tr("This step's run ends at t = %1 s: the run paused. Play runs on.")
+                      .arg(formatReadable(t, 3)));
+    });
+}
+
+void LessonSession::tellPause(const QString& why)
+{
+    m_parts.window.statusBar()->showMessage(why, 20000);
+    announce(m_parts.window, why);
 }
 
 QString LessonSession::openLesson(const QString& path, bool quiet)

@@ -96,6 +96,9 @@ signals:
 
 private:
     void applyStep(const lessons::Lesson& lesson, int index);
+    /// Why the run paused by itself (a body off the stage, the step's end time): in the status
+    /// bar and told to a screen reader.
+    void tellPause(const QString& why);
     void frameStepAction(const lessons::LessonStep& step);
     /// The step's docks shown, grouped and in their columns, the window's size kept.
     void showStepDocks(const lessons::LessonStep& step, const QStringList& labels);
