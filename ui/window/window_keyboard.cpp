@@ -6,7 +6,6 @@
 #include "common/focus_ring.h"
 #include "common/shortcuts.h"
 #include "common/shortcuts_guard.h"
-#include "common/tab_bar_accessible.h"
 #include "common/theme.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/inspector_panel.h"
@@ -44,7 +43,6 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
     ShortcutsGuard::install();
     FocusRing::install();
     placeCaretsBeforeFocus();
-    installTabBarAccessible();
     skipControlsOutOfSight(parts.window);
     keepMenuBarFocusVisible(parts.window);
     QPalette palette = QApplication::palette();
