@@ -2,7 +2,7 @@
 #include "window/window_keyboard.h"
 
 #include "common/announcer.h"
-#include "common/caret_before_focus.h"
+#include "common/focus_first.h"
 #include "common/focus_ring.h"
 #include "common/shortcuts.h"
 #include "common/shortcuts_guard.h"
@@ -42,7 +42,7 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
 {
     ShortcutsGuard::install();
     FocusRing::install();
-    placeCaretsBeforeFocus();
+    tellFieldFocusFirst();
     skipControlsOutOfSight(parts.window);
     keepMenuBarFocusVisible(parts.window);
     QPalette palette = QApplication::palette();
