@@ -7,9 +7,9 @@
 // (ui/window/screenshots.h). `rigidlab --help` lists the rest.
 
 #include "common/language.h"
-#include "common/line_edit_accessible.h"
 #include "lesson_player/lesson_player.h"
 #include "simulation/simulation_controller.h"
+#include "window/accessible_factories.h"
 #include "window/frame_measurement.h"
 #include "window/language_switch.h"
 #include "window/main_window.h"
@@ -489,9 +489,9 @@ int main(int argc, char** argv)
         qputenv("QT_SCALE_FACTOR", QByteArray::number(*options.scale));
 
     QApplication app(argc, argv);
-    // Before any window: a text field keeps the interface it was first given (the main window
-    // installs it too, for the windows a test makes).
-    rigidlab::ui::installLineEditAccessible();
+    // Before any window: a widget keeps the interface it was first given (the main window
+    // installs them too, for the windows a test makes).
+    rigidlab::ui::installAccessibleFactories();
     // --lang, else View › Language's saved choice, else the system's language.
     rigidlab::ui::applyLanguage(rigidlab::ui::chooseLanguage(
         options.lang, rigidlab::ui::savedLanguage(), QLocale::system()));

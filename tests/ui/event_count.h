@@ -99,6 +99,14 @@ public:
             out << QString::number(int(e), 16);
         return out.join(u' ');
     }
+    /// Where the first `type` event of `object` came among all the events counted (-1: none).
+    qsizetype firstIndex(const QObject* object, QAccessible::Event type) const
+    {
+        for (qsizetype i = 0; i < m_sequence.size(); ++i)
+            if (m_sequence[i] == std::pair<QAccessible::Event, const QObject*>{type, object})
+                return i;
+        return -1;
+    }
     /// The events of items with no object of their own, each with the item's description.
     const QList<std::pair<QAccessible::Event, QString>>& itemEvents() const { return m_items; }
 

@@ -10,7 +10,7 @@
 #define QT_STATICPLUGIN
 
 #include "build_paths.h"
-#include "common/caret_before_focus.h"
+#include "common/focus_first.h"
 #include "common/spoken_numbers.h"
 #include "event_count.h"
 #include "first_question.h"
@@ -78,8 +78,8 @@ QString welcome()
     return QDir(MainWindow::scenesFolder()).filePath(QStringLiteral("welcome.json"));
 }
 
-/// Whether a field's events (in order) tell its focus, and no caret move before it (a
-/// selection change before it Orca leaves alone).
+/// Whether a field's events (in order) tell its focus, and no caret move before it (its
+/// selection: aFieldTellsItsFocusBeforeItsSelection).
 bool caretStaysBehindFocus(const QList<QAccessible::Event>& events)
 {
     const qsizetype focus = events.indexOf(QAccessible::Focus);
@@ -268,7 +268,7 @@ private slots:
     /// event of a field as its new focus, silently, and then says nothing for the focus event.
     void aFieldTellsItsFocusFirst()
     {
-        ui::placeCaretsBeforeFocus();
+        ui::tellFieldFocusFirst();
         QWidget form;
         auto* layout = new QVBoxLayout(&form);
         auto* button = new QPushButton(QStringLiteral("Before"), &form);
@@ -295,6 +295,58 @@ private slots:
                  qPrintable(count.orderOf(spin)));
         QVERIFY2(!count.eventsOf(spinField).contains(QAccessible::TextCaretMoved),
                  qPrintable(count.orderOf(spinField)));
+    }
+
+    /// A field that Tab or Shift+Tab reaches selects its text; its focus is told before that
+    /// selection, so that a reader says the field's label and value first, not "0,64 selected"
+    /// and then the label.
+    void aFieldTellsItsFocusBeforeItsSelection()
+    {
+        ui::tellFieldFocusFirst();
+        QWidget form;
+        auto* layout = new QVBoxLayout(&form);
+        auto* button = new QPushButton(QStringLiteral("Before"), &form);
+        auto* field = new QLineEdit(QStringLiteral("0,64"), &form);
+        field->setAccessibleName(QStringLiteral("Answer"));
+        auto* spin = new QDoubleSpinBox(&form);
+        spin->setAccessibleName(QStringLiteral("Time step"));
+        spin->setValue(0.5);
+        layout->addWidget(button);
+        layout->addWidget(field);
+        layout->addWidget(spin);
+        form.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&form));
+        button->setFocus();
+        QTRY_VERIFY(button->hasFocus());
+        const QLineEdit* spinField = spin->findChild<QLineEdit*>();
+        // Tab into the field, Tab into the spin box, Shift+Tab back into the field.
+        const QList<std::pair<QWidget*, Qt::Key>> moves{
+            {field, Qt::Key_Tab}, {spin, Qt::Key_Tab}, {field, Qt::Key_Backtab}};
+        for (const auto& [to, key] : moves) {
+            EventCount count;
+            QTest::keyClick(QApplication::focusWidget(), key);
+            QVERIFY(to->hasFocus());
+            // A spin box's focus is told of the box, its selection of the field inside it.
+            const QObject* text = to == spin ? static_cast<const QObject*>(spinField) : to;
+            // The text is selected, as Tab does, at once or as soon as events are handled.
+            QTRY_VERIFY2(count.firstIndex(text, QAccessible::TextSelectionChanged) >= 0,
+                         qPrintable(QStringLiteral("no selection: ") + count.orderOf(text)));
+            const qsizetype focus = count.firstIndex(to, QAccessible::Focus);
+            const qsizetype selection = count.firstIndex(text, QAccessible::TextSelectionChanged);
+            QVERIFY2(
+                focus >= 0 && focus < selection,
+                qPrintable(QStringLiteral("focus at %1, selection at %2 (%3: %4; text: %5)")
+                               .arg(focus)
+                               .arg(selection)
+                               .arg(to->accessibleName(), count.orderOf(to), count.orderOf(text))));
+        }
+        // A key typed at once after Tab still replaces the whole text.
+        QTest::keyClick(field, Qt::Key_Tab);
+        QVERIFY(spin->hasFocus());
+        QTest::keyClick(spin, Qt::Key_Backtab);
+        QVERIFY(field->hasFocus());
+        QTest::keyClicks(field, QStringLiteral("7"));
+        QCOMPARE(field->text(), QStringLiteral("7"));
     }
 
     /// F6 on the scene that has the focus already moves nothing, so a reader would say

@@ -245,6 +245,41 @@ private slots:
         checkRowsWhole(w.inspector());
     }
 
+    /// What Check says under the last question too, after the first was answered: whole in
+    /// sight in the Lesson dock (restitution's second step, whose questions do not all fit
+    /// once a verdict is shown). It was cut to its first line, or out of sight: the questions
+    /// were scrolled to the verdict's first line only, or before it had its place.
+    void lastVerdictInSight()
+    {
+        MainWindow w;
+        showOn(w, kProjector);
+        QCOMPARE(
+            w.openLesson(lessons::shippedLessonsDir() + QStringLiteral("/restitution.json"), true),
+            QString());
+        w.lessonPlayer().goToStep(1);
+        settle();
+        auto* box = w.findChild<QWidget*>(QStringLiteral("lessonQuestions"));
+        QVERIFY(box && box->layout() && box->layout()->count() >= 2);
+        const auto* dock = w.findChild<QDockWidget*>(QStringLiteral("lessonDock"));
+        QVERIFY(dock);
+        QWidget* verdict = nullptr;
+        for (int q = 0; q < 2; ++q) {
+            QWidget* row = box->layout()->itemAt(q)->widget();
+            auto* edit = row->findChild<QLineEdit*>();
+            QVERIFY(edit);
+            edit->setFocus();
+            QTest::keyClicks(edit, q == 0 ? QStringLiteral("2") : QStringLiteral("-1"));
+            QTest::keyClick(edit, Qt::Key_Return);
+            settle();
+            for (QLabel* l : row->findChildren<QLabel*>())
+                if (l->isVisible() && l->wordWrap() && !l->buddy() && !l->text().isEmpty() &&
+                    l->parentWidget() == row)
+                    verdict = l;
+        }
+        QVERIFY(verdict);
+        QVERIFY2(inSight(*verdict, *dock), qPrintable(placeOf(*verdict, *dock)));
+    }
+
 private:
     /// A widget as a message names it: its text if it is a label, else its object name.
     static QString nameOf(const QWidget& x)

@@ -12,24 +12,8 @@ namespace {
 
 const char* const kAnnouncerName = "rigidlabAnnouncer";
 
-/// The announcer's interface: a notification named by its message. (It has no class of its
-/// own for a factory's key: the factory, asked for every plain widget, knows it by its name.)
-QAccessibleInterface* announcerInterface(const QString& className, QObject* object)
-{
-    auto* widget = qobject_cast<QWidget*>(object);
-    if (className != QLatin1String("QWidget") || !widget ||
-        widget->objectName() != QLatin1String(kAnnouncerName))
-        return nullptr;
-    return new QAccessibleWidget(widget, QAccessible::Notification);
-}
-
 QWidget* makeAnnouncer(QWidget& window)
 {
-    static const bool installed = [] {
-        QAccessible::installFactory(announcerInterface);
-        return true;
-    }();
-    Q_UNUSED(installed);
     auto* widget = new QWidget(&window);
     widget->setObjectName(QLatin1String(kAnnouncerName));
     // One transparent pixel in the corner: shown, so that a reader hears it, but not seen,
@@ -42,6 +26,17 @@ QWidget* makeAnnouncer(QWidget& window)
 }
 
 } // namespace
+
+QAccessibleInterface* announcerInterface(const QString& className, QObject* object)
+{
+    // It has no class of its own for a factory's key: asked for every plain widget, this
+    // knows it by its name.
+    auto* widget = qobject_cast<QWidget*>(object);
+    if (className != QLatin1String("QWidget") || !widget ||
+        widget->objectName() != QLatin1String(kAnnouncerName))
+        return nullptr;
+    return new QAccessibleWidget(widget, QAccessible::Notification);
+}
 
 void prepareAnnouncer(QWidget& window)
 {

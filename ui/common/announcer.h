@@ -9,6 +9,8 @@
 // which Orca speaks as "notification, <message>" (its default script's onShowingChanged, as
 // for a desktop notification). The message is plain text: markup would be read out.
 
+class QAccessibleInterface;
+class QObject;
 class QString;
 class QWidget;
 
@@ -21,6 +23,10 @@ void announce(QWidget& widget, const QString& message);
 /// Makes `window`'s announcer now, hidden, so that a reader knows it before the first
 /// announcement (Orca was slow to speak the first one of an object it had not seen).
 void prepareAnnouncer(QWidget& window);
+
+/// The factory of the announcer's interface: a notification named by its message (installed
+/// with the window's others, window/accessible_factories.h).
+QAccessibleInterface* announcerInterface(const QString& className, QObject* object);
 
 /// The widget that tells `window`'s announcements (its accessible name is the last one), or
 /// nullptr before the first.

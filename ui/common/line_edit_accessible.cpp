@@ -162,23 +162,14 @@ private:
     int at(int offset) const { return offset == -2 ? cursorPosition() : offset; }
 };
 
-QAccessibleInterface* lineEditFactory(const QString& className, QObject* object)
+} // namespace
+
+QAccessibleInterface* lineEditInterface(const QString& className, QObject* object)
 {
     if (className == QLatin1String("QLineEdit"))
         if (auto* field = qobject_cast<QLineEdit*>(object))
             return new LineEditAccessible(field);
     return nullptr;
-}
-
-} // namespace
-
-void installLineEditAccessible()
-{
-    static const bool installed = [] {
-        QAccessible::installFactory(lineEditFactory);
-        return true;
-    }();
-    Q_UNUSED(installed);
 }
 
 } // namespace rigidlab::ui

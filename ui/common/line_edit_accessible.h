@@ -10,12 +10,16 @@
 // interface is Qt's otherwise: the role of editable text, the field's states, its text, caret
 // and selection, and editing through it; its one attribute run is the whole text.
 
+class QAccessibleInterface;
+class QObject;
+class QString;
+
 namespace rigidlab::ui {
 
-/// Registers the factory that makes every QLineEdit's interface, those inside spin boxes and
-/// of classes derived from it (NumberField) too (once per process). Call it before any field
-/// is made: Qt makes a field's interface at its first accessibility event and keeps it
-/// (app/gui_main.cpp calls it after making the application, and MainWindow before its parts).
-void installLineEditAccessible();
+/// The factory of every QLineEdit's interface, those inside spin boxes and of classes derived
+/// from it (NumberField) too; installed with the window's others (window/accessible_factories.h)
+/// before any field is made, since Qt makes a field's interface at its first accessibility
+/// event and keeps it.
+QAccessibleInterface* lineEditInterface(const QString& className, QObject* object);
 
 } // namespace rigidlab::ui

@@ -144,23 +144,14 @@ private:
     mutable std::vector<QAccessible::Id> m_tabs;
 };
 
-QAccessibleInterface* tabBarFactory(const QString& className, QObject* object)
+} // namespace
+
+QAccessibleInterface* tabBarInterface(const QString& className, QObject* object)
 {
     if (className == QLatin1String("QTabBar"))
         if (auto* bar = qobject_cast<QTabBar*>(object))
             return new TabBarAccessible(bar);
     return nullptr;
-}
-
-} // namespace
-
-void installTabBarAccessible()
-{
-    static const bool installed = [] {
-        QAccessible::installFactory(tabBarFactory);
-        return true;
-    }();
-    Q_UNUSED(installed);
 }
 
 } // namespace rigidlab::ui

@@ -7,9 +7,14 @@
 // otherwise: a page tab list named by its current tab, whose children are its tabs (named by
 // their text or accessible tab name, with the press action), then the bar's scroll buttons.
 
+class QAccessibleInterface;
+class QObject;
+class QString;
+
 namespace rigidlab::ui {
 
-/// Registers the factory that makes every QTabBar's interface (once per process).
-void installTabBarAccessible();
+/// The factory of every QTabBar's interface (installed with the window's others,
+/// window/accessible_factories.h, before any tab bar is made: Qt keeps the first interface).
+QAccessibleInterface* tabBarInterface(const QString& className, QObject* object);
 
 } // namespace rigidlab::ui

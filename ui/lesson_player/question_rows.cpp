@@ -8,6 +8,7 @@
 #include <QAbstractButton>
 #include <QButtonGroup>
 #include <QCoreApplication>
+#include <QEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPointer>
@@ -20,6 +21,53 @@
 #include <variant>
 
 namespace rigidlab::ui {
+
+namespace {
+
+/// Keeps a verdict scrolled into sight in `area` while the layout makes room for it, for a
+/// moment after it is shown, then goes.
+class VerdictRevealer : public QObject {
+public:
+    VerdictRevealer(QLabel& result, QScrollArea& area)
+        : QObject(&result), m_result(&result), m_area(&area)
+    {
+        result.installEventFilter(this);
+        if (area.widget())
+            area.widget()->installEventFilter(this);
+        revealSoon();
+        QTimer::singleShot(kWatchMs, this, &QObject::deleteLater);
+    }
+
+protected:
+    bool eventFilter(QObject*, QEvent* event) override
+    {
+        if (event->type() == QEvent::Resize || event->type() == QEvent::Move)
+            revealSoon();
+        return false;
+    }
+
+private:
+    /// How long sizes are followed [ms]: the layout's passes take a few event loop turns.
+    static constexpr int kWatchMs = 1000;
+
+    /// After the scroll area has taken the new size in (its own filter comes after this one).
+    void revealSoon()
+    {
+        QTimer::singleShot(0, this, [this] {
+            // The whole label, not only its first line (ensureWidgetVisible() keeps a
+            // selectable label's text cursor in sight, which is at its start).
+            if (m_result && m_area && m_area->widget() && m_result->isVisible()) {
+                const QPoint centre = m_result->mapTo(m_area->widget(), m_result->rect().center());
+                m_area->ensureVisible(centre.x(), centre.y(), 0, m_result->height() / 2 + 8);
+            }
+        });
+    }
+
+    QPointer<QLabel> m_result;
+    QPointer<QScrollArea> m_area;
+};
+
+} // namespace
 
 namespace {
 
@@ -81,6 +129,7 @@ void QuestionRows::askFirst(std::size_t i, const QString& text)
     result->setStyleSheet(QStringLiteral("color: #a05a00;"));
     result->setText(text);
     result->setVisible(true);
+    revealResult(i);
 }
 
 void QuestionRows::showVerdict(std::size_t i, const lessons::Verdict& v,
@@ -113,17 +162,14 @@ void QuestionRows::setGiven(std::size_t i)
 void QuestionRows::revealResult(std::size_t i)
 {
     // The questions are in sight below the text, but a later question's verdict may lie below
-    // the bottom of their area when they do not all fit. Once the layout has made room for
-    // it, it is scrolled into sight (the question's box with it, so that the answer stays
-    // beside its verdict).
+    // the bottom of their area when they do not all fit. It is scrolled into sight (the
+    // question's box with it, so that the answer stays beside its verdict) each time the
+    // layout makes more room for it: the verdict wraps to its lines and the questions' box
+    // grows a moment after it is shown, and a scroll made before that left it cut in half.
     QWidget* viewport = parentWidget();
-    const QPointer<QLabel> result = m_rows[i].result;
-    const QPointer<QScrollArea> area =
-        qobject_cast<QScrollArea*>(viewport ? viewport->parentWidget() : nullptr);
-    QTimer::singleShot(0, this, [result, area] {
-        if (result && area && result->isVisible())
-            area->ensureWidgetVisible(result, 0, 8);
-    });
+    auto* area = qobject_cast<QScrollArea*>(viewport ? viewport->parentWidget() : nullptr);
+    if (area)
+        new VerdictRevealer(*m_rows[i].result, *area);
 }
 
 QStringList QuestionRows::typed() const

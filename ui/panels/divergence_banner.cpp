@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "panels/divergence_banner.h"
 
-#include "common/theme.h"
 #include "common/divergence_text.h"
+#include "common/theme.h"
 #include "simulation/simulation_controller.h"
 
 #include "format/scene_loader.h"

@@ -72,7 +72,9 @@ private:
     const PlotWidget* m_plot;
 };
 
-QAccessibleInterface* plotFactory(const QString& className, QObject* object)
+} // namespace
+
+QAccessibleInterface* plotInterface(const QString& className, QObject* object)
 {
     if (!object || !object->isWidgetType())
         return nullptr;
@@ -84,8 +86,6 @@ QAccessibleInterface* plotFactory(const QString& className, QObject* object)
             return new PlotAccessible(widget, plot);
     return nullptr;
 }
-
-} // namespace
 
 QString describePlot(const PlotWidget& plot)
 {
@@ -99,15 +99,6 @@ QString describePlot(const PlotWidget& plot)
     for (int i = 0; i < plot.model().seriesCount(); ++i)
         parts << seriesText(plot.model(), i) + QLatin1Char('.');
     return parts.join(QLatin1Char(' '));
-}
-
-void installPlotAccessible()
-{
-    static bool installed = false;
-    if (installed)
-        return;
-    installed = true;
-    QAccessible::installFactory(plotFactory);
 }
 
 } // namespace rigidlab::ui

@@ -8,6 +8,9 @@
 
 #include <QString>
 
+class QAccessibleInterface;
+class QObject;
+
 namespace rigidlab::ui {
 
 class PlotWidget;
@@ -15,7 +18,8 @@ class PlotWidget;
 /// The plot in words (drained first by the caller if it wants the newest points).
 QString describePlot(const PlotWidget& plot);
 
-/// Registers the factory for the plots' interfaces (once per process; later calls do nothing).
-void installPlotAccessible();
+/// The factory of the plots' interfaces (installed with the window's others,
+/// window/accessible_factories.h).
+QAccessibleInterface* plotInterface(const QString& className, QObject* object);
 
 } // namespace rigidlab::ui

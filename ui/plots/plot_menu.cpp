@@ -98,7 +98,6 @@ void PlotWidget::installMenuAndCopy()
     setContextMenuPolicy(Qt::CustomContextMenu);
     connect(this, &QWidget::customContextMenuRequested, this,
             [this](const QPoint& pos) { showContextMenu(m_plot->mapFrom(this, pos)); });
-    installPlotAccessible();
     auto* copy = new QShortcut(QKeySequence::Copy, this, m_exporter, &PlotExporter::copyData);
     copy->setContext(Qt::WidgetWithChildrenShortcut);
 }

@@ -9,7 +9,6 @@
 #include "view/bodies_item.h"
 #include "view/body_item.h"
 #include "view/scene_narrator.h"
-#include "view/world_view_accessible.h"
 
 #include <QMouseEvent>
 #include <QScrollBar>
@@ -54,7 +53,6 @@ WorldView::WorldView(SimulationController& controller, QWidget* parent)
     setMinimumSize(320, 240);
     setTransform(QTransform::fromScale(100, -100)); // y up
     setFocusPolicy(Qt::StrongFocus);
-    installWorldViewAccessible();
     m_narrator = new SceneNarrator(m_controller, *this);
     viewport()->setAccessibleName(tr("Scene drawing"));
     connect(&m_controller, &SimulationController::sceneLoaded, this, &WorldView::rebuild);

@@ -115,23 +115,14 @@ private:
     int m_index;
 };
 
-QAccessibleInterface* worldViewFactory(const QString& className, QObject* object)
+} // namespace
+
+QAccessibleInterface* worldViewInterface(const QString& className, QObject* object)
 {
     if (className == QLatin1String(WorldView::staticMetaObject.className()) && object &&
         object->isWidgetType())
         return new WorldViewAccessible(static_cast<WorldView*>(object));
     return nullptr;
-}
-
-} // namespace
-
-void installWorldViewAccessible()
-{
-    static bool installed = false;
-    if (installed)
-        return;
-    installed = true;
-    QAccessible::installFactory(worldViewFactory);
 }
 
 void tellSceneItemChanged(WorldView& view, int child)

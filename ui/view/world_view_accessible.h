@@ -20,9 +20,9 @@ namespace rigidlab::ui {
 
 class WorldView;
 
-/// Registers the factory that makes the scene view's interface (once per process; later
-/// calls do nothing).
-void installWorldViewAccessible();
+/// The factory of the scene view's interface (installed with the window's others,
+/// window/accessible_factories.h).
+QAccessibleInterface* worldViewInterface(const QString& className, QObject* object);
 
 /// Tells assistive technology that child `child` of `view`'s interface (the status, or a body
 /// after WorldViewAccessible::FirstBody) says something new, as a change of its description,

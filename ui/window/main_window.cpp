@@ -4,7 +4,6 @@
 // docks: main_window_editor.cpp.
 #include "window/main_window.h"
 
-#include "common/line_edit_accessible.h"
 #include "common/modal_scope.h"
 #include "editor/edit_tools.h"
 #include "editor/scene_document.h"
@@ -24,6 +23,7 @@
 #include "plots/plot_widget.h"
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
+#include "window/accessible_factories.h"
 #include "window/lesson_session.h"
 #include "window/settings_sync.h"
 #include "window/status_line.h"
@@ -54,12 +54,12 @@ namespace rigidlab::ui {
 
 namespace {
 
-/// The window's controller, made before any of its widgets, and before them the interface a
-/// screen reader is given for every text field: Qt makes a field's interface at its first
-/// accessibility event, as it is filled in, and keeps it.
+/// The window's controller, made before any of its widgets, and before them the factories of
+/// the interfaces a screen reader is given: Qt makes a widget's interface at its first
+/// accessibility event, often as it is built, and keeps it.
 SimulationController* madeFirst(MainWindow* window)
 {
-    installLineEditAccessible();
+    installAccessibleFactories();
     return new SimulationController(window);
 }
 

@@ -2,11 +2,10 @@
 #include "window/window_keyboard.h"
 
 #include "common/announcer.h"
-#include "common/caret_before_focus.h"
+#include "common/focus_first.h"
 #include "common/focus_ring.h"
 #include "common/shortcuts.h"
 #include "common/shortcuts_guard.h"
-#include "common/tab_bar_accessible.h"
 #include "common/theme.h"
 #include "lesson_player/lesson_player.h"
 #include "panels/inspector_panel.h"
@@ -43,8 +42,7 @@ WindowKeyboard::WindowKeyboard(const Parts& parts) : QObject(&parts.window), m_p
 {
     ShortcutsGuard::install();
     FocusRing::install();
-    placeCaretsBeforeFocus();
-    installTabBarAccessible();
+    tellFieldFocusFirst();
     skipControlsOutOfSight(parts.window);
     keepMenuBarFocusVisible(parts.window);
     QPalette palette = QApplication::palette();
