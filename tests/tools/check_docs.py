@@ -10,7 +10,7 @@ bench, docs/performance-log-window.md for the window's frames) find the rounds t
 - A round named from another document is a heading of the log it is in: the log's "TITLE" (or
   a list of "TITLE"s) in docs/performance-log.md, the window log's "TITLE" in
   docs/performance-log-window.md, and "TITLE" in [name](FILE.md) in FILE.md. TITLE may be the
-  heading's start, and may break across lines.
+  heading's start, and the reference and TITLE may break across lines.
 - The two manuals link to each other, and each README to the manual in its language.
 - The Czech manual has the English one's sections: the same sequence of heading levels.
 - Every key the English manual names (F6, Ctrl+Shift+S, Alt+Up, …) appears in the Czech one,
@@ -33,9 +33,9 @@ SPEED_DOCUMENTS = ["docs/performance.md", "docs/performance-log.md",
                    "docs/performance-log-window.md"]
 LOGS = {"the log's": "docs/performance-log.md",
         "the window log's": "docs/performance-log-window.md"}
-NAMED_ROUNDS = re.compile(r"(the window log's|the log's)(?:\s+full table)?\s*\(?"
-                          r"(\s*\"[^\"]+\"(?:,\s*\"[^\"]+\")*)")
-ROUND_IN_FILE = re.compile(r"\"([^\"]+)\" in \[[^\]]*\]\(([\w.-]+\.md)\)")
+NAMED_ROUNDS = re.compile(r"(the\s+(?:window\s+)?log's)"
+                          r"(?:\s+full table)?\s*\(?(\s*\"[^\"]+\"(?:,\s*\"[^\"]+\")*)")
+ROUND_IN_FILE = re.compile(r"\"([^\"]+)\"\s+in\s+\[[^\]]*\]\(([\w.-]+\.md)\)")
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
 KEY = re.compile(r"(?<![\w+])((?:(?:Ctrl|Shift|Alt)\+)+(?:F\d{1,2}|[A-Z]\b|Up|Down|Left|Right|"
                  r"Del|PgUp|PgDown|Backspace|Space)|F\d{1,2}\b)")
@@ -85,7 +85,7 @@ def check_rounds(root, name, text, problems):
 
     for which, titles in NAMED_ROUNDS.findall(text):
         for title in re.findall(r'"([^"]+)"', titles):
-            check(title, LOGS[which])
+            check(title, LOGS[one_line(which)])
     for title, file in ROUND_IN_FILE.findall(text):
         check(title, str(((root / name).parent / file).relative_to(root)))
 
