@@ -2,15 +2,19 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The user's documents hold together: the English manual (docs/manual.md), its Czech
 translation (docs/manual.cs.md), both READMEs and docs/accessibility.md; and the speed's
-documents (docs/performance.md and its two logs, docs/performance-log.md for the step and the
-bench, docs/performance-log-window.md for the window's frames) find the rounds they name.
+documents (docs/performance.md and its logs: docs/performance-log.md for the benchmark's full
+runs, docs/performance-log-precision.md for the soft step's precision and substeps,
+docs/performance-log-memory.md for the step's memory and bookkeeping,
+docs/performance-log-window.md for the window's frames) find the rounds they name.
 
 - Every relative link names a file that exists, and every #anchor names a heading of the file
   it points into (GitHub's heading anchors: lower case, punctuation dropped, spaces to '-').
 - A round named from another document is a heading of the log it is in: the log's "TITLE" (or
-  a list of "TITLE"s) in docs/performance-log.md, the window log's "TITLE" in
-  docs/performance-log-window.md, and "TITLE" in [name](FILE.md) in FILE.md. TITLE may be the
-  heading's start, and may break across lines.
+  a list of "TITLE"s) in docs/performance-log.md, the precision log's "TITLE" in
+  docs/performance-log-precision.md, the memory log's "TITLE" in docs/performance-log-memory.md,
+  the window log's "TITLE" in docs/performance-log-window.md, and "TITLE" in [name](FILE.md) in
+  FILE.md. TITLE may be the heading's start, and the reference and TITLE may break across
+  lines.
 - The two manuals link to each other, and each README to the manual in its language.
 - The Czech manual has the English one's sections: the same sequence of heading levels.
 - Every key the English manual names (F6, Ctrl+Shift+S, Alt+Up, …) appears in the Czech one,
@@ -30,12 +34,15 @@ DOCUMENTS = ["docs/manual.md", "docs/manual.cs.md", "README.md", "README.cs.md",
              "docs/accessibility.md"]
 # The speed's documents: their links and the rounds they name are checked.
 SPEED_DOCUMENTS = ["docs/performance.md", "docs/performance-log.md",
+                   "docs/performance-log-precision.md", "docs/performance-log-memory.md",
                    "docs/performance-log-window.md"]
 LOGS = {"the log's": "docs/performance-log.md",
+        "the precision log's": "docs/performance-log-precision.md",
+        "the memory log's": "docs/performance-log-memory.md",
         "the window log's": "docs/performance-log-window.md"}
-NAMED_ROUNDS = re.compile(r"(the window log's|the log's)(?:\s+full table)?\s*\(?"
-                          r"(\s*\"[^\"]+\"(?:,\s*\"[^\"]+\")*)")
-ROUND_IN_FILE = re.compile(r"\"([^\"]+)\" in \[[^\]]*\]\(([\w.-]+\.md)\)")
+NAMED_ROUNDS = re.compile(r"(the\s+(?:(?:window|precision|memory)\s+)?log's)"
+                          r"(?:\s+full table)?\s*\(?(\s*\"[^\"]+\"(?:,\s*\"[^\"]+\")*)")
+ROUND_IN_FILE = re.compile(r"\"([^\"]+)\"\s+in\s+\[[^\]]*\]\(([\w.-]+\.md)\)")
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
 KEY = re.compile(r"(?<![\w+])((?:(?:Ctrl|Shift|Alt)\+)+(?:F\d{1,2}|[A-Z]\b|Up|Down|Left|Right|"
                  r"Del|PgUp|PgDown|Backspace|Space)|F\d{1,2}\b)")
@@ -85,7 +92,7 @@ def check_rounds(root, name, text, problems):
 
     for which, titles in NAMED_ROUNDS.findall(text):
         for title in re.findall(r'"([^"]+)"', titles):
-            check(title, LOGS[which])
+            check(title, LOGS[one_line(which)])
     for title, file in ROUND_IN_FILE.findall(text):
         check(title, str(((root / name).parent / file).relative_to(root)))
 
