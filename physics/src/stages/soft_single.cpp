@@ -7,8 +7,8 @@
 // The warm start is double, body by body (SoftSolver::warmStart): a resting contact's impulse,
 // about m g h a substep, is applied by each warm start and taken back by the passes, and with
 // the impulse applied in floats a float's grain of it (6e-8 of g h) came back each substep,
-// which the soft push made into a sink 1.4e-6 off (docs/performance-log.md). What a warm start
-// gives a body is the sum of its contacts' impulses at the start of the step (fillLaneOf, in
+// which the soft push made into a sink 1.4e-6 off (docs/performance-log-precision.md). What a warm
+// start gives a body is the sum of its contacts' impulses at the start of the step (fillLaneOf, in
 // double) and of every velocity change the passes made since, which fromSingle() adds as it
 // hands them to the double velocities: no pass over the contacts, and each change rounded to
 // its own size. The step's last relax pass is double too (fast/soft_kernel.cpp, relaxDouble),
