@@ -2,10 +2,11 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 """The user's documents hold together: the English manual (docs/manual.md), its Czech
 translation (docs/manual.cs.md), both READMEs and docs/accessibility.md; and the speed's
-documents (docs/performance.md and its logs: docs/performance-log.md for the benchmark's full
-runs, docs/performance-log-precision.md for the soft step's precision and substeps,
+documents (docs/performance.md, docs/performance-profile.md for where the step's time goes, and
+the logs: docs/performance-log.md for the benchmark's full runs,
+docs/performance-log-precision.md for the soft step's precision and substeps,
 docs/performance-log-memory.md for the step's memory and bookkeeping,
-docs/performance-log-window.md for the window's frames) find the rounds they name.
+docs/performance-log-window.md for the window's frames) find the rounds and sections they name.
 
 - Every relative link names a file that exists, and every #anchor names a heading of the file
   it points into (GitHub's heading anchors: lower case, punctuation dropped, spaces to '-').
@@ -15,6 +16,13 @@ docs/performance-log-window.md for the window's frames) find the rounds they nam
   the window log's "TITLE" in docs/performance-log-window.md, and "TITLE" in [name](FILE.md) in
   FILE.md. TITLE may be the heading's start, and the reference and TITLE may break across
   lines.
+- A section named beside a file's name without a link is a heading of that file:
+  performance.md's "TITLE", performance.md, "TITLE", performance.md under "TITLE" (also after
+  a link, [name](FILE.md) under "TITLE"), performance.md ("TITLE", "TITLE", …) and
+  "TITLE" (performance.md …).
+- In the speed's documents, "TITLE" below and "TITLE" above (then a punctuation mark) name a
+  heading of the same file, after or before the reference: a section moved to another file
+  must be named with its file.
 - The two manuals link to each other, and each README to the manual in its language.
 - The Czech manual has the English one's sections: the same sequence of heading levels.
 - Every key the English manual names (F6, Ctrl+Shift+S, Alt+Up, …) appears in the Czech one,
@@ -32,8 +40,9 @@ from pathlib import Path
 
 DOCUMENTS = ["docs/manual.md", "docs/manual.cs.md", "README.md", "README.cs.md",
              "docs/accessibility.md"]
-# The speed's documents: their links and the rounds they name are checked.
-SPEED_DOCUMENTS = ["docs/performance.md", "docs/performance-log.md",
+# The speed's documents: their links, the rounds and sections they name, and their "below" and
+# "above" are checked.
+SPEED_DOCUMENTS = ["docs/performance.md", "docs/performance-profile.md", "docs/performance-log.md",
                    "docs/performance-log-precision.md", "docs/performance-log-memory.md",
                    "docs/performance-log-window.md"]
 LOGS = {"the log's": "docs/performance-log.md",
@@ -43,6 +52,13 @@ LOGS = {"the log's": "docs/performance-log.md",
 NAMED_ROUNDS = re.compile(r"(the\s+(?:(?:window|precision|memory)\s+)?log's)"
                           r"(?:\s+full table)?\s*\(?(\s*\"[^\"]+\"(?:,\s*\"[^\"]+\")*)")
 ROUND_IN_FILE = re.compile(r"\"([^\"]+)\"\s+in\s+\[[^\]]*\]\(([\w.-]+\.md)\)")
+# A file's name (not a path, not a link's text) and the sections named beside it.
+FILE_THEN_TITLES = re.compile(r"(?<![\w/\[.-])([\w-]+\.md)\)?(?:'s)?,?\s+(?:under\s+)?"
+                              r"\(?(\"[^\"]+\"(?:,\s*\"[^\"]+\")*)")
+# Every quoted text, in order (so that quotes pair up), with what may follow it: below or above
+# and a punctuation mark or bracket (not "fast" above a quarter of its width), or a file's name
+# in brackets.
+QUOTED = re.compile(r"\"([^\"]+)\"(?:,?\s+(below|above)(?=\s*[^\w\s])|\s+\(([\w-]+\.md)\b)?")
 LINK = re.compile(r"!?\[[^\]]*\]\(([^)\s]+)\)")
 KEY = re.compile(r"(?<![\w+])((?:(?:Ctrl|Shift|Alt)\+)+(?:F\d{1,2}|[A-Z]\b|Up|Down|Left|Right|"
                  r"Del|PgUp|PgDown|Backspace|Space)|F\d{1,2}\b)")
@@ -80,12 +96,16 @@ def check_links(root, name, text, problems):
                 problems.append(f"{name}: link to {target}: no heading with that anchor")
 
 
+def one_line(text):
+    return " ".join(text.split())
+
+
 def check_rounds(root, name, text, problems):
     """Every round another document names by its title is a heading of the log named."""
-    def one_line(t):
-        return " ".join(t.split())
-
     def check(title, log):
+        if not (root / log).exists():
+            problems.append(f'{name}: "{one_line(title)}" in {log}: no such file')
+            return
         titles = [one_line(t) for _, t in headings((root / log).read_text(encoding="utf-8"))]
         if not any(t.startswith(one_line(title)) for t in titles):
             problems.append(f'{name}: "{one_line(title)}": no such heading in {log}')
@@ -95,6 +115,29 @@ def check_rounds(root, name, text, problems):
             check(title, LOGS[one_line(which)])
     for title, file in ROUND_IN_FILE.findall(text):
         check(title, str(((root / name).parent / file).relative_to(root)))
+    for file, titles in FILE_THEN_TITLES.findall(prose(text)):
+        for title in re.findall(r'"([^"]+)"', titles):
+            check(title, str(((root / name).parent / file).relative_to(root)))
+    for match in QUOTED.finditer(prose(text)):
+        if match.group(3):
+            check(match.group(1), str(((root / name).parent / match.group(3)).relative_to(root)))
+
+
+def check_here(name, text, problems):
+    """A "TITLE" below (above) names a heading of this file after (before) the reference."""
+    text = prose(text)
+    spots = [(m.start(), one_line(m.group(2)))
+             for m in re.finditer(r"^(#{1,6}) +(.+)$", text, re.M)]
+    for match in QUOTED.finditer(text):
+        title, where = one_line(match.group(1)), match.group(2)
+        if not where:
+            continue
+        if where == "below":
+            found = any(at > match.end() and t.startswith(title) for at, t in spots)
+        else:
+            found = any(at < match.start() and t.startswith(title) for at, t in spots)
+        if not found:
+            problems.append(f'{name}: "{title}" {where}: no such heading {where} it in {name}')
 
 
 def keys_table(text):
@@ -133,6 +176,8 @@ def main(root):
     for name, text in {**texts, **speed}.items():
         check_links(root, name, text, problems)
         check_rounds(root, name, text, problems)
+    for name, text in speed.items():
+        check_here(name, text, problems)
     for name, target in [("docs/manual.md", "manual.cs.md"), ("docs/manual.cs.md", "manual.md"),
                          ("README.md", "docs/manual.md"), ("README.cs.md", "docs/manual.cs.md")]:
         if f"]({target}" not in texts[name]:
