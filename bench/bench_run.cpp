@@ -263,12 +263,12 @@ std::string softStepTargets(const std::vector<BenchResult>& results)
         if (const BenchResult* single = find("RigidLab SS f32", scene)) {
             std::string against;
             for (const char* build : {"SSE2", "AVX2"})
-                if (const BenchResult* v3 = find(std::string("Box2D v3 ") + build, scene))
-                    against +=
-                        (against.empty() ? "" : ", ") +
-                        format("%.2fx ", single->msPerStep / v3->msPerStep) + build +
-                        (pairedText(*single, *v3).empty() ? ""
-                                                          : " (" + pairedText(*single, *v3) + ")");
+                if (const BenchResult* v3 = find(std::string("Box2D v3 ") + build, scene)) {
+                    const std::string paired = pairedText(*single, *v3);
+                    against += (against.empty() ? "" : ", ") +
+                               format("%.2fx ", single->msPerStep / v3->msPerStep) + build +
+                               (paired.empty() ? "" : " (" + paired + ")");
+                }
             if (!against.empty())
                 out += " opt-in single precision: " + against + ";";
         }

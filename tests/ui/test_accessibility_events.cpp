@@ -95,6 +95,32 @@ void press(Qt::Key k, Qt::KeyboardModifiers mods = Qt::NoModifier)
     QCoreApplication::processEvents();
 }
 
+/// A button, a text field and a spin box, one under the other: what Tab goes through.
+struct TabForm {
+    QWidget form;
+    QPushButton* button = new QPushButton(QStringLiteral("Before"), &form);
+    QLineEdit* field = new QLineEdit(&form);
+    QDoubleSpinBox* spin = new QDoubleSpinBox(&form);
+    TabForm()
+    {
+        field->setAccessibleName(QStringLiteral("Answer"));
+        spin->setAccessibleName(QStringLiteral("Time step"));
+        auto* layout = new QVBoxLayout(&form);
+        layout->addWidget(button);
+        layout->addWidget(field);
+        layout->addWidget(spin);
+    }
+    /// Shows the form and puts the focus on its button; false if either did not happen.
+    bool shownWithTheButtonFocused()
+    {
+        form.show();
+        if (!QTest::qWaitForWindowExposed(&form))
+            return false;
+        button->setFocus();
+        return QTest::qWaitFor([this] { return button->hasFocus(); });
+    }
+};
+
 } // namespace
 
 class TestAccessibilityEvents : public QObject {
@@ -269,20 +295,11 @@ private slots:
     void aFieldTellsItsFocusFirst()
     {
         ui::tellFieldFocusFirst();
-        QWidget form;
-        auto* layout = new QVBoxLayout(&form);
-        auto* button = new QPushButton(QStringLiteral("Before"), &form);
-        auto* field = new QLineEdit(&form);
-        field->setAccessibleName(QStringLiteral("Answer"));
-        auto* spin = new QDoubleSpinBox(&form);
-        spin->setAccessibleName(QStringLiteral("Time step"));
-        layout->addWidget(button);
-        layout->addWidget(field);
-        layout->addWidget(spin);
-        form.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&form));
-        button->setFocus();
-        QTRY_VERIFY(button->hasFocus());
+        TabForm form;
+        QLineEdit* const field = form.field;
+        QDoubleSpinBox* const spin = form.spin;
+        QVERIFY(form.shownWithTheButtonFocused());
+        QPushButton* const button = form.button;
         EventCount count;
         QTest::keyClick(button, Qt::Key_Tab);
         QVERIFY(field->hasFocus());
@@ -303,21 +320,12 @@ private slots:
     void aFieldTellsItsFocusBeforeItsSelection()
     {
         ui::tellFieldFocusFirst();
-        QWidget form;
-        auto* layout = new QVBoxLayout(&form);
-        auto* button = new QPushButton(QStringLiteral("Before"), &form);
-        auto* field = new QLineEdit(QStringLiteral("0,64"), &form);
-        field->setAccessibleName(QStringLiteral("Answer"));
-        auto* spin = new QDoubleSpinBox(&form);
-        spin->setAccessibleName(QStringLiteral("Time step"));
+        TabForm form;
+        QLineEdit* const field = form.field;
+        QDoubleSpinBox* const spin = form.spin;
+        field->setText(QStringLiteral("0,64"));
         spin->setValue(0.5);
-        layout->addWidget(button);
-        layout->addWidget(field);
-        layout->addWidget(spin);
-        form.show();
-        QVERIFY(QTest::qWaitForWindowExposed(&form));
-        button->setFocus();
-        QTRY_VERIFY(button->hasFocus());
+        QVERIFY(form.shownWithTheButtonFocused());
         const QLineEdit* spinField = spin->findChild<QLineEdit*>();
         // Tab into the field, Tab into the spin box, Shift+Tab back into the field.
         const QList<std::pair<QWidget*, Qt::Key>> moves{

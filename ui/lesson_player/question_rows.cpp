@@ -67,10 +67,6 @@ private:
     QPointer<QScrollArea> m_area;
 };
 
-} // namespace
-
-namespace {
-
 /// The largest answer taken, in the question's unit: far beyond any measured value, and small
 /// enough that |answer - measured| stays finite.
 constexpr double kMaxAnswer = 1e15;
