@@ -106,69 +106,93 @@ void satOnPlaced(int ia, const Polygon& pa, const Transform& xfA, int ib, const 
                                   .radiusB = radius(pb)});
 }
 
-/// The points of recycledPoints (narrow_phase.cpp) for a pair that passed mayRecycle with
-/// `m`, their arithmetic written out coordinate by coordinate in the same order: the same
-/// points, bit for bit. GCC builds the two-number vectors of the plain form from halves stored
-/// one by one and loads them whole, a load that waits for the stores (a tenth of the base-100
-/// pyramid's step went there).
-bool carriedPoints(const Contact& previous, const ContactAnchors& k, const AnchorMotion& m,
-                   const Body& a, const Body& b, double margin, std::array<ContactPoint, 2>& points)
-{
-    const Manifold& last = previous.manifold;
-    const double nx = last.normal.x(), ny = last.normal.y();
-    const double sx = m.shift.x(), sy = m.shift.y();
-    points = last.points;
-    for (int i = 0; i < last.pointCount; ++i) {
-        const auto p = static_cast<size_t>(i);
-        const double ax = k.anchorA[p].x(), ay = k.anchorA[p].y();
-        const double bx = k.anchorB[p].x(), by = k.anchorB[p].y();
-        const double rAx = m.dqA.c * ax - m.dqA.s * ay, rAy = m.dqA.s * ax + m.dqA.c * ay;
-        const double rBx = m.dqB.c * bx - m.dqB.s * by, rBy = m.dqB.s * bx + m.dqB.c * by;
-        const double dx = (sx + (rBx - bx)) - (rAx - ax);
-        const double dy = (sy + (rBy - by)) - (rAy - ay);
-        const double s = k.separation[p] + (nx * dx + ny * dy);
-        if (s > margin)
-            return false;
-        points[p].point = Vec2(0.5 * ((a.position.x() + rAx) + (b.position.x() + rBx)),
-                               0.5 * ((a.position.y() + rAy) + (b.position.y() + rBy)));
-        points[p].separation = s;
-    }
-    return true;
-}
+/// A recycled manifold's point carried to where the bodies are now (recycledPoints,
+/// narrow_phase.cpp): its place [m] and separation [m].
+struct CarriedPoint {
+    double x = 0, y = 0, separation = 0;
+};
 
-/// c, last step's contact of the pair, made what recycleManifold and finishContact make of a
-/// new contact: the points carried to `points` (recycledPoints), the mixed material, no
-/// bounce, and the impulses carryImpulses would give. Those are c's own: a point takes the
-/// impulses of last step's point with its id, which is itself, or the later of two with one
-/// id; a point the manifold lacks has none.
-void finishRecycled(const Body& a, const Body& b, const std::array<ContactPoint, 2>& points,
-                    Contact& c)
+/// How a pair moved since its anchors were kept (mayRecycle's AnchorMotion, as numbers).
+struct Motion {
+    double cA, sA, cB, sB; ///< each body's turn since then, cosine and sine
+    double sx, sy;         ///< the shift of B's centre of mass less A's [m]
+};
+
+/// Point p of `last`'s manifold carried by `m` (recycledPoints' arithmetic in its order).
+[[gnu::always_inline]] inline CarriedPoint carryPoint(const Manifold& last, const ContactAnchors& k,
+                                                      const Motion& m, const Body& a, const Body& b,
+                                                      size_t p)
 {
-    c.manifold.points = points;
-    mixMaterials(a, b, c);
-    c.bounceImpulse = {0.0, 0.0};
-    if (c.manifold.pointCount == 2 && points[0].id == points[1].id) {
-        c.normalImpulse[0] = c.normalImpulse[1];
-        c.tangentImpulse[0] = c.tangentImpulse[1];
-    }
-    for (auto i = static_cast<size_t>(c.manifold.pointCount); i < 2; ++i)
-        c.normalImpulse[i] = c.tangentImpulse[i] = 0.0;
+    const double nx = last.normal.x(), ny = last.normal.y();
+    const double ax = k.anchorA[p].x(), ay = k.anchorA[p].y();
+    const double bx = k.anchorB[p].x(), by = k.anchorB[p].y();
+    const double rAx = m.cA * ax - m.sA * ay, rAy = m.sA * ax + m.cA * ay;
+    const double rBx = m.cB * bx - m.sB * by, rBy = m.sB * bx + m.cB * by;
+    const double dx = (m.sx + (rBx - bx)) - (rAx - ax);
+    const double dy = (m.sy + (rBy - by)) - (rAy - ay);
+    return {.x = 0.5 * ((a.position.x() + rAx) + (b.position.x() + rBx)),
+            .y = 0.5 * ((a.position.y() + rAy) + (b.position.y() + rBy)),
+            .separation = k.separation[p] + (nx * dx + ny * dy)};
 }
 
 /// The soft step's recycled manifold (narrow_phase.cpp), as the plain path makes it, from
 /// `last` (last step's contact of the pair a, b, just found in `contacts`) and its anchors,
 /// kept in `contacts` with its anchors; false when the pair is not to be recycled. Its faces
 /// are not kept: when it moves on, the pair gets the whole SAT.
+///
+/// recycleManifold's test and points (mayRecycle, then recycledPoints) with the same
+/// arithmetic in the same order, so the same numbers, bit for bit, written out coordinate by
+/// coordinate with no array between the test and the contact: the plain form passes the motion
+/// and the points through memory, and GCC builds its two-number vectors from halves stored one
+/// by one and loads them whole, a load that waits for the stores (a tenth of the base-100
+/// pyramid's step went there once, and a sixth of this function's time on base 40 later).
+///
+/// The recycled contact is then made what recycleManifold and finishContact make of a new one:
+/// the mixed material, no bounce, and the impulses carryImpulses would give. Those are its own:
+/// a point takes the impulses of last step's point with its id, which is itself, or the later
+/// of two with one id; a point the manifold lacks has none.
 bool recycleFound(const Contact& last, const Body& a, const Transform& xfA, const Body& b,
                   const Transform& xfB, double recycle, double margin, ContactRewrite& contacts)
 {
     const ContactAnchors& k = contacts.anchorsOfFound();
-    AnchorMotion motion;
-    std::array<ContactPoint, 2> points;
-    if (!mayRecycle(last, k, a, xfA, b, xfB, recycle, motion) ||
-        !carriedPoints(last, k, motion, a, b, margin, points))
+    const int count = last.manifold.pointCount;
+    if (!k.valid || count == 0)
         return false;
-    finishRecycled(a, b, points, contacts.keepFound());
+    // Each body's turn since the anchors were kept (turnSince), and the centres' shift.
+    const Motion m{.cA = xfA.q.c * k.qA.c + xfA.q.s * k.qA.s,
+                   .sA = xfA.q.s * k.qA.c - xfA.q.c * k.qA.s,
+                   .cB = xfB.q.c * k.qB.c + xfB.q.s * k.qB.s,
+                   .sB = xfB.q.s * k.qB.c - xfB.q.c * k.qB.s,
+                   .sx = (b.position.x() - a.position.x()) - k.centres.x(),
+                   .sy = (b.position.y() - a.position.y()) - k.centres.y()};
+    const double turns = std::abs(m.sA) + (1.0 - m.cA) + std::abs(m.sB) + (1.0 - m.cB);
+    if (!(std::abs(m.sx) + std::abs(m.sy) + (k.extentA + k.extentB) * turns < recycle))
+        return false;
+    const CarriedPoint p0 = carryPoint(last.manifold, k, m, a, b, 0);
+    if (p0.separation > margin)
+        return false; // let the full test say whether the point is still there
+    CarriedPoint p1;
+    if (count == 2) {
+        p1 = carryPoint(last.manifold, k, m, a, b, 1);
+        if (p1.separation > margin)
+            return false;
+    }
+    Contact& c = contacts.keepFound();
+    std::array<ContactPoint, 2>& points = c.manifold.points;
+    points[0].point = Vec2(p0.x, p0.y);
+    points[0].separation = p0.separation;
+    if (count == 2) {
+        points[1].point = Vec2(p1.x, p1.y);
+        points[1].separation = p1.separation;
+    }
+    mixMaterials(a, b, c);
+    c.bounceImpulse = {0.0, 0.0};
+    if (count == 2 && points[0].id == points[1].id) {
+        c.normalImpulse[0] = c.normalImpulse[1];
+        c.tangentImpulse[0] = c.tangentImpulse[1];
+    }
+    for (auto i = static_cast<size_t>(count); i < 2; ++i)
+        c.normalImpulse[i] = c.tangentImpulse[i] = 0.0;
     return true;
 }
 
@@ -187,9 +211,14 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
     PreviousPairs<TouchingPair> touchingBefore(cache.previousTouching);
     cache.reused = 0;
     cache.placed.reset(bodies.size());
+    // The arrays through local pointers: a store into a contact may alias a vector's own
+    // pointers as far as the compiler knows, and it loaded them again for every pair.
+    const Body* const body = bodies.data();
+    const Transform* const place = xf.data();
+    const double* const swept = sweep.empty() ? nullptr : sweep.data(); // sweptMargin's
     for (const auto& [ia, ib] : pairs) {
-        const Body& a = bodies[static_cast<size_t>(ia)];
-        const Body& b = bodies[static_cast<size_t>(ib)];
+        const Body& a = body[static_cast<size_t>(ia)];
+        const Body& b = body[static_cast<size_t>(ib)];
         // Last step's contact of the pair: valid until `contacts` is written.
         const Contact* last = contacts.find(ia, ib);
         if (last && rests(a) && rests(b)) {
@@ -197,9 +226,11 @@ void narrowPhaseFast(const std::vector<Body>& bodies, const std::vector<Transfor
             bounceKept = bounceKept || kept.bounceImpulse[0] > 0 || kept.bounceImpulse[1] > 0;
             continue;
         }
-        const double pairMargin = margin + sweptMargin(sweep, ia) + sweptMargin(sweep, ib);
-        const Transform& xfA = xf[static_cast<size_t>(ia)];
-        const Transform& xfB = xf[static_cast<size_t>(ib)];
+        const double pairMargin =
+            swept ? margin + swept[static_cast<size_t>(ia)] + swept[static_cast<size_t>(ib)]
+                  : margin;
+        const Transform& xfA = place[static_cast<size_t>(ia)];
+        const Transform& xfB = place[static_cast<size_t>(ib)];
         const Polygon* pa = a.shape.asPolygon();
         const Polygon* pb = b.shape.asPolygon();
         if (last && pa && pb && recycle > 0.0 && pairMargin == margin &&

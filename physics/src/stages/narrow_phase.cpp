@@ -22,12 +22,6 @@
 
 namespace rigidlab::physics {
 
-void mixMaterials(const Body& a, const Body& b, Contact& c)
-{
-    c.restitution = std::max(a.restitution, b.restitution);
-    c.friction = std::sqrt(a.friction * b.friction);
-}
-
 void carryImpulses(const Contact& previous, Contact& c)
 {
     for (int i = 0; i < c.manifold.pointCount; ++i)
