@@ -72,6 +72,28 @@ Pairs brutePairs(const std::vector<Body>& bodies, double margin, const std::vect
     return out;
 }
 
+/// Bodies built by a world, to be moved by hand: a floor, a static post, a kinematic bar, and
+/// boxes and balls packed closely enough in 6 m x 6 m to touch their neighbours.
+template <typename Uniform> std::vector<Body> scatteredBodies(Uniform& uniform)
+{
+    World world;
+    BodyDef floor = boxBody(8.0, 0.5, Vec2(0.0, -0.25));
+    floor.type = BodyType::Static;
+    world.addBody(floor);
+    BodyDef post = boxBody(0.5, 3.0, Vec2(0.0, 1.5));
+    post.type = BodyType::Static;
+    world.addBody(post);
+    BodyDef bar = boxBody(2.0, 0.2, Vec2(1.0, 0.5));
+    bar.type = BodyType::Kinematic;
+    world.addBody(bar);
+    for (int i = 0; i < 80; ++i) {
+        const Vec2 at(uniform(-3.0, 3.0), uniform(0.0, 6.0));
+        world.addBody(i % 3 ? boxBody(uniform(0.2, 0.8), uniform(0.2, 0.8), at, uniform(-3, 3))
+                            : circleBody(uniform(0.1, 0.4), at));
+    }
+    return world.bodies();
+}
+
 QString describe(const Pairs& pairs)
 {
     QStringList items;
@@ -114,24 +136,7 @@ void TestBroadPhase::pairsAreTheBruteForceOnes()
     };
     auto chance = [&](double p) { return uniform(0.0, 1.0) < p; };
 
-    // Bodies built by a world, then moved by hand: a floor, a static post, a kinematic bar,
-    // and boxes and balls packed closely enough in 6 m x 6 m to touch their neighbours.
-    World world;
-    BodyDef floor = boxBody(8.0, 0.5, Vec2(0.0, -0.25));
-    floor.type = BodyType::Static;
-    world.addBody(floor);
-    BodyDef post = boxBody(0.5, 3.0, Vec2(0.0, 1.5));
-    post.type = BodyType::Static;
-    world.addBody(post);
-    BodyDef bar = boxBody(2.0, 0.2, Vec2(1.0, 0.5));
-    bar.type = BodyType::Kinematic;
-    world.addBody(bar);
-    for (int i = 0; i < 80; ++i) {
-        const Vec2 at(uniform(-3.0, 3.0), uniform(0.0, 6.0));
-        world.addBody(i % 3 ? boxBody(uniform(0.2, 0.8), uniform(0.2, 0.8), at, uniform(-3, 3))
-                            : circleBody(uniform(0.1, 0.4), at));
-    }
-    std::vector<Body> bodies = world.bodies();
+    std::vector<Body> bodies = scatteredBodies(uniform);
     const size_t n = bodies.size();
     // Two bodies asleep: they keep their boxes (and do not move here).
     bodies[10].awake = false;

@@ -13,6 +13,8 @@ namespace rigidlab::physics {
 
 namespace {
 
+using Pairs = std::vector<std::pair<int, int>>;
+
 /// A fat box reaches this far beyond the body's box [m]: small motions stay inside it.
 constexpr double kFatMargin = 0.1;
 /// ... and this many steps ahead along the body's motion.
@@ -25,6 +27,49 @@ Aabb fatten(const Aabb& box, const Vec2& displacement)
     fat.lo += d.cwiseMin(Vec2::Zero());
     fat.hi += d.cwiseMax(Vec2::Zero());
     return fat;
+}
+
+/// Merges the kept pairs that are still alive with the new ones (both sorted) into `merged`,
+/// and writes those of them whose boxes overlap, and are not excluded, to `pairs`: one pass,
+/// both lists written in place (at most every kept pair and every new one).
+template <typename Alive>
+void mergePairs(const Pairs& kept, Alive&& alive, const Pairs& fresh,
+                const std::vector<Aabb>& boxes, const Pairs& excluded, Pairs& merged, Pairs& pairs)
+{
+    const size_t most = kept.size() + fresh.size();
+    merged.resize(most);
+    pairs.resize(most);
+    std::pair<int, int>* to = merged.data();
+    std::pair<int, int>* out = pairs.data();
+    const Aabb* box = boxes.data();
+    const bool anyExcluded = !excluded.empty();
+    auto keep = [&](const std::pair<int, int>& p) {
+        *to++ = p;
+        *out = p;
+        out += box[p.first].overlaps(box[p.second]) &&
+               (!anyExcluded || !std::binary_search(excluded.begin(), excluded.end(), p));
+    };
+    const std::pair<int, int>* found = fresh.data();
+    const std::pair<int, int>* foundEnd = found + fresh.size();
+    if (found == foundEnd) { // no body left its fat box: most steps of a pile
+        for (const auto& p : kept)
+            if (alive(p))
+                keep(p);
+    } else {
+        for (const auto& p : kept) {
+            if (!alive(p))
+                continue;
+            while (found != foundEnd && *found < p)
+                keep(*found++);
+            if (found != foundEnd && *found == p)
+                ++found; // found again
+            keep(p);
+        }
+        while (found != foundEnd)
+            keep(*found++);
+    }
+    merged.resize(static_cast<size_t>(to - merged.data()));
+    pairs.resize(static_cast<size_t>(out - pairs.data()));
 }
 
 } // namespace
@@ -156,17 +201,9 @@ void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Tr
     }
     std::sort(m_found.begin(), m_found.end());
 
-    // Kept pairs (both still in the tree, fat boxes still overlapping) merged with the new,
-    // and of all these the answer: the pairs whose boxes overlap now. Two bodies that both
-    // stayed in their fat boxes kept those boxes, which overlapped when the pair was found
-    // or last kept: no need to look at them again. Both lists are written in place, at most
-    // every kept pair and every new one.
-    const size_t most = m_pairs.size() + m_found.size();
-    m_merged.resize(most);
-    pairs.resize(most);
-    std::pair<int, int>* merged = m_merged.data();
-    std::pair<int, int>* out = pairs.data();
-    const Aabb* box = m_box.data();
+    // Kept pairs (both still in the tree, fat boxes still overlapping) merged with the new, and
+    // the answer: those whose boxes overlap now. Two bodies that both stayed in their fat boxes
+    // kept those boxes, which overlapped when the pair was found or last kept: not looked at.
     auto alive = [&](const std::pair<int, int>& p) {
         const auto a = static_cast<size_t>(p.first);
         const auto b = static_cast<size_t>(p.second);
@@ -175,34 +212,7 @@ void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Tr
         const int state = m_state[a] | m_state[b];
         return state == kStayed || (state == kMoved && m_fat[a].overlaps(m_fat[b]));
     };
-    const bool anyExcluded = !excluded.empty();
-    auto keep = [&](const std::pair<int, int>& p) {
-        *merged++ = p;
-        *out = p;
-        out += box[p.first].overlaps(box[p.second]) &&
-               (!anyExcluded || !std::binary_search(excluded.begin(), excluded.end(), p));
-    };
-    const std::pair<int, int>* found = m_found.data();
-    const std::pair<int, int>* foundEnd = found + m_found.size();
-    if (found == foundEnd) { // no body left its fat box: most steps of a pile
-        for (const auto& p : m_pairs)
-            if (alive(p))
-                keep(p);
-    } else {
-        for (const auto& p : m_pairs) {
-            if (!alive(p))
-                continue;
-            while (found != foundEnd && *found < p)
-                keep(*found++);
-            if (found != foundEnd && *found == p)
-                ++found; // found again
-            keep(p);
-        }
-        while (found != foundEnd)
-            keep(*found++);
-    }
-    m_merged.resize(static_cast<size_t>(merged - m_merged.data()));
-    pairs.resize(static_cast<size_t>(out - pairs.data()));
+    mergePairs(m_pairs, alive, m_found, m_box, excluded, m_merged, pairs);
     std::swap(m_pairs, m_merged);
     if (pairs.size() > budget)
         stopCrowded({pairs[budget].first, pairs.size(), false}, pairs);
