@@ -13,6 +13,8 @@ namespace rigidlab::physics {
 
 namespace {
 
+using Pairs = std::vector<std::pair<int, int>>;
+
 /// A fat box reaches this far beyond the body's box [m]: small motions stay inside it.
 constexpr double kFatMargin = 0.1;
 /// ... and this many steps ahead along the body's motion.
@@ -25,6 +27,49 @@ Aabb fatten(const Aabb& box, const Vec2& displacement)
     fat.lo += d.cwiseMin(Vec2::Zero());
     fat.hi += d.cwiseMax(Vec2::Zero());
     return fat;
+}
+
+/// Merges the kept pairs that are still alive with the new ones (both sorted) into `merged`,
+/// and writes those of them whose boxes overlap, and are not excluded, to `pairs`: one pass,
+/// both lists written in place (at most every kept pair and every new one).
+template <typename Alive>
+void mergePairs(const Pairs& kept, Alive&& alive, const Pairs& fresh,
+                const std::vector<Aabb>& boxes, const Pairs& excluded, Pairs& merged, Pairs& pairs)
+{
+    const size_t most = kept.size() + fresh.size();
+    merged.resize(most);
+    pairs.resize(most);
+    std::pair<int, int>* to = merged.data();
+    std::pair<int, int>* out = pairs.data();
+    const Aabb* box = boxes.data();
+    const bool anyExcluded = !excluded.empty();
+    auto keep = [&](const std::pair<int, int>& p) {
+        *to++ = p;
+        *out = p;
+        out += box[p.first].overlaps(box[p.second]) &&
+               (!anyExcluded || !std::binary_search(excluded.begin(), excluded.end(), p));
+    };
+    const std::pair<int, int>* found = fresh.data();
+    const std::pair<int, int>* foundEnd = found + fresh.size();
+    if (found == foundEnd) { // no body left its fat box: most steps of a pile
+        for (const auto& p : kept)
+            if (alive(p))
+                keep(p);
+    } else {
+        for (const auto& p : kept) {
+            if (!alive(p))
+                continue;
+            while (found != foundEnd && *found < p)
+                keep(*found++);
+            if (found != foundEnd && *found == p)
+                ++found; // found again
+            keep(p);
+        }
+        while (found != foundEnd)
+            keep(*found++);
+    }
+    merged.resize(static_cast<size_t>(to - merged.data()));
+    pairs.resize(static_cast<size_t>(out - pairs.data()));
 }
 
 } // namespace
@@ -40,17 +85,21 @@ Aabb computeAabb(const Shape& shape, const Transform& xf, double margin)
                                       return box;
                                   },
                                   [&](const Polygon& polygon) {
-                                      Aabb box;
+                                      // xf.apply(v) for both coordinates at once: c vx - s vy
+                                      // is c vx + (-s) vy, the same number, so the box is
+                                      // the one of the vertices turned one at a time.
+                                      using Pair = Eigen::Array2d;
+                                      const Pair cs(xf.q.c, xf.q.s), sc(-xf.q.s, xf.q.c);
+                                      const Pair p = xf.p.array();
                                       const std::vector<Vec2>& v = polygon.vertices;
-                                      box.lo = box.hi = xf.apply(v[0]);
+                                      Pair lo = cs * v[0].x() + sc * v[0].y() + p;
+                                      Pair hi = lo;
                                       for (size_t i = 1; i < v.size(); ++i) {
-                                          const Vec2 p = xf.apply(v[i]);
-                                          box.lo = box.lo.cwiseMin(p);
-                                          box.hi = box.hi.cwiseMax(p);
+                                          const Pair q = cs * v[i].x() + sc * v[i].y() + p;
+                                          lo = lo.min(q);
+                                          hi = hi.max(q);
                                       }
-                                      box.lo.array() -= margin;
-                                      box.hi.array() += margin;
-                                      return box;
+                                      return Aabb{(lo - margin).matrix(), (hi + margin).matrix()};
                                   }});
 }
 
@@ -69,8 +118,9 @@ void BroadPhase::updateBoxes(const std::vector<Body>& bodies, const std::vector<
     const size_t n = bodies.size();
     m_leaf.resize(n, AabbTree::kNull);
     m_box.resize(n);
+    m_fat.resize(n);
     m_grow.resize(n, 0.0);
-    m_moved.assign(n, 0);
+    m_state.assign(n, kStayed);
     m_movedList.clear();
 
     // Boxes: a body that left its fat box goes back into the tree with a new one.
@@ -82,6 +132,7 @@ void BroadPhase::updateBoxes(const std::vector<Body>& bodies, const std::vector<
                 m_tree->remove(leaf);
                 leaf = AabbTree::kNull;
             }
+            m_state[i] = kOut;
             continue;
         }
         const double g = grow.empty() ? 0.0 : grow[i];
@@ -93,12 +144,13 @@ void BroadPhase::updateBoxes(const std::vector<Body>& bodies, const std::vector<
         const Aabb box = computeAabb(b.shape, xf[i], margin + g);
         m_box[i] = box;
         m_grow[i] = g;
-        if (leaf != AabbTree::kNull && m_tree->box(leaf).contains(box))
+        if (leaf != AabbTree::kNull && m_fat[i].contains(box))
             continue;
         if (leaf != AabbTree::kNull)
             m_tree->remove(leaf);
-        leaf = m_tree->insert(fatten(box, b.velocity * dt), static_cast<int>(i));
-        m_moved[i] = 1;
+        m_fat[i] = fatten(box, b.velocity * dt);
+        leaf = m_tree->insert(m_fat[i], static_cast<int>(i));
+        m_state[i] = kMoved;
         m_movedList.push_back(static_cast<int>(i));
     }
 }
@@ -131,9 +183,9 @@ void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Tr
     const std::size_t fatCap = kFatPairsPerPair * budget;
     for (int i : m_movedList) {
         const bool iDynamic = bodies[static_cast<size_t>(i)].isDynamic();
-        queryTree(m_tree->box(m_leaf[static_cast<size_t>(i)]), m_hits);
+        queryTree(m_fat[static_cast<size_t>(i)], m_hits);
         for (int j : m_hits) {
-            if (j == i || (m_moved[static_cast<size_t>(j)] && j < i))
+            if (j == i || (m_state[static_cast<size_t>(j)] == kMoved && j < i))
                 continue;
             if (!iDynamic && !bodies[static_cast<size_t>(j)].isDynamic())
                 continue; // static and kinematic bodies do not push each other
@@ -149,37 +201,19 @@ void BroadPhase::findPairs(const std::vector<Body>& bodies, const std::vector<Tr
     }
     std::sort(m_found.begin(), m_found.end());
 
-    // Kept pairs (both still in the tree, fat boxes still overlapping) merged with the new.
-    m_merged.clear();
+    // Kept pairs (both still in the tree, fat boxes still overlapping) merged with the new, and
+    // the answer: those whose boxes overlap now. Two bodies that both stayed in their fat boxes
+    // kept those boxes, which overlapped when the pair was found or last kept: not looked at.
     auto alive = [&](const std::pair<int, int>& p) {
-        const int la = m_leaf[static_cast<size_t>(p.first)];
-        const int lb = m_leaf[static_cast<size_t>(p.second)];
-        return la != AabbTree::kNull && lb != AabbTree::kNull &&
-               m_tree->box(la).overlaps(m_tree->box(lb));
+        const auto a = static_cast<size_t>(p.first);
+        const auto b = static_cast<size_t>(p.second);
+        if (b >= n)
+            return false;
+        const int state = m_state[a] | m_state[b];
+        return state == kStayed || (state == kMoved && m_fat[a].overlaps(m_fat[b]));
     };
-    size_t k = 0;
-    for (const auto& p : m_pairs) {
-        if (static_cast<size_t>(p.second) >= n || !alive(p))
-            continue;
-        while (k < m_found.size() && m_found[k] < p)
-            m_merged.push_back(m_found[k++]);
-        if (k < m_found.size() && m_found[k] == p)
-            ++k; // found again
-        m_merged.push_back(p);
-    }
-    m_merged.insert(m_merged.end(), m_found.begin() + static_cast<std::ptrdiff_t>(k),
-                    m_found.end());
+    mergePairs(m_pairs, alive, m_found, m_box, excluded, m_merged, pairs);
     std::swap(m_pairs, m_merged);
-
-    // The answer: pairs whose boxes overlap now.
-    pairs.clear();
-    for (const auto& p : m_pairs) {
-        if (!m_box[static_cast<size_t>(p.first)].overlaps(m_box[static_cast<size_t>(p.second)]))
-            continue;
-        if (!excluded.empty() && std::binary_search(excluded.begin(), excluded.end(), p))
-            continue;
-        pairs.push_back(p);
-    }
     if (pairs.size() > budget)
         stopCrowded({pairs[budget].first, pairs.size(), false}, pairs);
 }

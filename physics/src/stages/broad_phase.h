@@ -90,8 +90,12 @@ private:
     std::unique_ptr<AabbTree> m_tree;
     std::vector<int> m_leaf;    ///< per body: its leaf in the tree, -1 if none
     std::vector<Aabb> m_box;    ///< per body: its box grown by margin and its grow
+    std::vector<Aabb> m_fat;    ///< per body: its fat box (its leaf's box), while it has a leaf
     std::vector<double> m_grow; ///< per body: the grow m_box was made with [m]
-    std::vector<char> m_moved;
+    /// Per body in the last findPairs: stayed in its fat box, moved out of it (a new leaf), or
+    /// out of the tree (it does not collide). Bits, so that a pair's two can be or-ed.
+    enum State : char { kStayed = 0, kMoved = 1, kOut = 2 };
+    std::vector<char> m_state;
     std::vector<int> m_movedList;
     std::vector<std::pair<int, int>> m_pairs; ///< fat boxes overlapping, sorted
     std::vector<std::pair<int, int>> m_found, m_merged;

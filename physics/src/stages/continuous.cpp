@@ -83,24 +83,26 @@ void findSweeps(StepContext& ctx)
     // The fall in a step, once (the stores below kept the compiler from taking it out of the
     // loop): the same number for every dynamic body.
     const double fall = ctx.field.gravity.norm() * h * h;
+    // Every solver times an isolated impact from the contact's gap at the start of the step
+    // (soft_impacts.cpp), so it wants the contact of every body that moves more than the
+    // margin in a step, before the two overlap (found only once they overlap, a cut shot at
+    // 1/60 s left 6 mrad off the line of centres).
+    const double fastAbove = ctx.contactSettings.margin;
+    const size_t n = ctx.bodies.size();
+    const Body* const bodies = ctx.bodies.data();
     int fast = 0;
-    for (size_t i = 0; i < ctx.bodies.size(); ++i) {
-        const Body& b = ctx.bodies[i];
+    for (size_t i = 0; i < n; ++i) {
+        const Body& b = bodies[i];
         if (!b.moves() || !b.collide)
             continue;
         const double reach = extent[i].outerRadius;
         assert(reach == outerRadius(b));
         const double motion = (b.velocity.norm() + std::abs(b.angularVelocity) * reach) * h +
                               (b.isDynamic() ? fall : 0.0);
-        // Every solver times an isolated impact from the contact's gap at the start of the
-        // step (soft_impacts.cpp), so it wants the contact of every body that moves more than
-        // the margin in a step, before the two overlap (found only once they overlap, a cut
-        // shot at 1/60 s left 6 mrad off the line of centres).
-        const double fastAbove = ctx.contactSettings.margin;
         if (!(motion > fastAbove) || !std::isfinite(motion))
             continue;
         if (ctx.sweep.empty())
-            ctx.sweep.assign(ctx.bodies.size(), 0.0);
+            ctx.sweep.assign(n, 0.0);
         ctx.sweep[i] = motion;
         ++fast;
     }
