@@ -5,14 +5,16 @@ translation (docs/manual.cs.md), both READMEs and docs/accessibility.md; and the
 documents (docs/performance.md, docs/performance-profile.md for where the step's time goes, and
 the logs: docs/performance-log.md for the benchmark's full runs,
 docs/performance-log-precision.md for the soft step's precision and substeps,
-docs/performance-log-memory.md for the step's memory and bookkeeping,
+docs/performance-log-collision.md for the collision stage (the broad and the narrow phase),
+docs/performance-log-memory.md for the contact passes' memory and the soft step's bookkeeping,
 docs/performance-log-window.md for the window's frames) find the rounds and sections they name.
 
 - Every relative link names a file that exists, and every #anchor names a heading of the file
   it points into (GitHub's heading anchors: lower case, punctuation dropped, spaces to '-').
 - A round named from another document is a heading of the log it is in: the log's "TITLE" (or
   a list of "TITLE"s) in docs/performance-log.md, the precision log's "TITLE" in
-  docs/performance-log-precision.md, the memory log's "TITLE" in docs/performance-log-memory.md,
+  docs/performance-log-precision.md, the collision log's "TITLE" in
+  docs/performance-log-collision.md, the memory log's "TITLE" in docs/performance-log-memory.md,
   the window log's "TITLE" in docs/performance-log-window.md, and "TITLE" in [name](FILE.md) in
   FILE.md. TITLE may be the heading's start, and the reference and TITLE may break across
   lines.
@@ -43,13 +45,14 @@ DOCUMENTS = ["docs/manual.md", "docs/manual.cs.md", "README.md", "README.cs.md",
 # The speed's documents: their links, the rounds and sections they name, and their "below" and
 # "above" are checked.
 SPEED_DOCUMENTS = ["docs/performance.md", "docs/performance-profile.md", "docs/performance-log.md",
-                   "docs/performance-log-precision.md", "docs/performance-log-memory.md",
-                   "docs/performance-log-window.md"]
+                   "docs/performance-log-precision.md", "docs/performance-log-collision.md",
+                   "docs/performance-log-memory.md", "docs/performance-log-window.md"]
 LOGS = {"the log's": "docs/performance-log.md",
         "the precision log's": "docs/performance-log-precision.md",
+        "the collision log's": "docs/performance-log-collision.md",
         "the memory log's": "docs/performance-log-memory.md",
         "the window log's": "docs/performance-log-window.md"}
-NAMED_ROUNDS = re.compile(r"(the\s+(?:(?:window|precision|memory)\s+)?log's)"
+NAMED_ROUNDS = re.compile(r"(the\s+(?:(?:window|precision|collision|memory)\s+)?log's)"
                           r"(?:\s+full table)?\s*\(?(\s*\"[^\"]+\"(?:,\s*\"[^\"]+\")*)")
 ROUND_IN_FILE = re.compile(r"\"([^\"]+)\"\s+in\s+\[[^\]]*\]\(([\w.-]+\.md)\)")
 # A file's name (not a path, not a link's text) and the sections named beside it.
