@@ -145,7 +145,7 @@ struct Motion {
 /// coordinate with no array between the test and the contact: the plain form passes the motion
 /// and the points through memory, and GCC builds its two-number vectors from halves stored one
 /// by one and loads them whole, a load that waits for the stores (a tenth of the base-100
-/// pyramid's step went there once, and a sixth of this function's time on base 40 later).
+/// pyramid's step went there once, and a fifth of this function's samples on base 40 later).
 ///
 /// The recycled contact is then made what recycleManifold and finishContact make of a new one:
 /// the mixed material, no bounce, and the impulses carryImpulses would give. Those are its own:
