@@ -6172,6 +6172,13 @@ B&#xa0;%3 … %4</translation>
     </message>
 </context>
 <context>
+    <name>rigidlab::ui::StepText</name>
+    <message>
+        <source>Scroll the step&apos;s text sideways</source>
+        <translation>Posouvat text kroku do stran</translation>
+    </message>
+</context>
+<context>
     <name>rigidlab::ui::WindowActions</name>
     <message>
         <source>Simulation</source>

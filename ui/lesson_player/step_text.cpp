@@ -43,6 +43,7 @@ StepText::StepText(QWidget* parent) : QTextBrowser(parent)
     // column at its smallest text scrolls sideways (fit()).
     setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    horizontalScrollBar()->setAccessibleName(tr("Scroll the step's text sideways"));
     setLineWrapMode(QTextEdit::WidgetWidth);
     // Lines break between words only: a word broken in the middle ("integrá/tor") reads as
     // two.
