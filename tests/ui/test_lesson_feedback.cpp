@@ -295,6 +295,39 @@ private slots:
                  qPrintable(QString::number(c.world().time())));
         c.setRunning(false);
     }
+
+    // billiards_momentum step 4 opens the scene editor, its Properties in the right column
+    // above the Collision table. The Properties get the settings' share of the column's
+    // height, whatever an earlier step left them: they kept 60 px (the World group and half a
+    // field) under a half-empty table after the screenshot run's earlier steps.
+    void editorPropertiesGetTheirShare()
+    {
+        ui::MainWindow w;
+        showOn(w, kProjector);
+        QCOMPARE(w.openLesson(lessonPath("billiards_momentum.json"), true), QString());
+        w.lessonPlayer().goToStep(3);
+        settle();
+        auto* properties = w.findChild<QDockWidget*>(QStringLiteral("propertiesDock"));
+        QDockWidget* collision = w.dock(QStringLiteral("collision"));
+        QVERIFY(properties && collision && properties->isVisible() && collision->isVisible());
+        // What an earlier step may leave: the Properties squeezed.
+        w.resizeDocks({properties, collision}, {40, 600}, Qt::Vertical);
+        settle();
+        QVERIFY2(
+            properties->height() < collision->height() / 2,
+            qPrintable(
+                QStringLiteral("%1 px, %2 px").arg(properties->height()).arg(collision->height())));
+        // The column shared again (here by the View menu's Collision shown again).
+        collision->toggleViewAction()->trigger();
+        collision->toggleViewAction()->trigger();
+        settle();
+        QVERIFY(properties->isVisible() && collision->isVisible());
+        // Settings 5, tables 4 (window_layout.cpp's kCompactHeightWeights).
+        QVERIFY2(properties->height() >= collision->height(),
+                 qPrintable(QStringLiteral("Properties %1 px, Collision %2 px")
+                                .arg(properties->height())
+                                .arg(collision->height())));
+    }
 };
 
 RIGIDLAB_TEST_MAIN(TestLessonFeedback)
