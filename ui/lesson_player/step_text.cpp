@@ -45,11 +45,7 @@ StepText::StepText(QWidget* parent) : QTextBrowser(parent)
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     horizontalScrollBar()->setAccessibleName(tr("Scroll the step's text sideways"));
     setLineWrapMode(QTextEdit::WidgetWidth);
-    // Lines break between words only: a word broken in the middle ("integrá/tor") reads as
-    // two.
-    QTextOption option = document()->defaultTextOption();
-    option.setWrapMode(QTextOption::WordWrap);
-    document()->setDefaultTextOption(option);
+    // How lines break: fit().
     QSizePolicy policy(QSizePolicy::Preferred, QSizePolicy::Preferred);
     policy.setHeightForWidth(true);
     setSizePolicy(policy);
@@ -82,11 +78,15 @@ void StepText::fit()
     const int width = viewport()->width();
     m_fittedWidth = width;
     setMarkdown(m_markdown);
-    QTextOption option = document()->defaultTextOption();
-    option.setWrapMode(QTextOption::WordWrap);
-    document()->setDefaultTextOption(option);
     m_overflows = false;
     const QList<QTextTable*> tables = tablesOf(*document());
+    // With a table, lines break between words only: a table's word broken in the middle
+    // ("integrá/tor") reads as two, and a table too wide scrolls sideways instead (below).
+    // Without one, a word wider than the column (a file's name) breaks rather than being cut.
+    QTextOption option = document()->defaultTextOption();
+    option.setWrapMode(tables.isEmpty() ? QTextOption::WrapAtWordBoundaryOrAnywhere
+                                        : QTextOption::WordWrap);
+    document()->setDefaultTextOption(option);
     for (QTextTable* table : tables) {
         // As wide as the column at most, with thin cells.
         QTextTableFormat format = table->format();
