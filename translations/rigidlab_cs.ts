@@ -4675,6 +4675,10 @@ Měkký krok: pružné kontakty řešené v&#xa0;malých podkrocích; pevné sto
         <source>This step&apos;s run ends at t = %1 s: the run paused. Play runs on.</source>
         <translation>Tento krok lekce končí v&#xa0;čase t = %1 s: simulace se pozastavila. Tlačítko Spustit ji rozběhne dál.</translation>
     </message>
+    <message>
+        <source>Every moving body has left the view at t = %1 s: the run paused. Play runs on.</source>
+        <translation>Všechna pohybující se tělesa opustila zorné pole v&#xa0;čase t = %1 s: simulace se pozastavila. Tlačítko Spustit ji rozběhne dál.</translation>
+    </message>
 </context>
 <context>
     <name>rigidlab::ui::MainWindow</name>
@@ -6165,6 +6169,13 @@ B&#xa0;%3 … %4</translation>
     <message>
         <source>wait for Play</source>
         <translation>čekat na spuštění</translation>
+    </message>
+</context>
+<context>
+    <name>rigidlab::ui::StepText</name>
+    <message>
+        <source>Scroll the step&apos;s text sideways</source>
+        <translation>Posouvat text kroku do stran</translation>
     </message>
 </context>
 <context>

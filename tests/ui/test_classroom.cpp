@@ -8,6 +8,9 @@
 #include "question_kinds.h"
 #include "test_main.h"
 
+#include <QTextFrame>
+#include <QTextTable>
+
 using rigidlab::test::atLeast;
 using rigidlab::test::isChoice;
 using rigidlab::test::StepWalk;
@@ -17,6 +20,35 @@ using rigidlab::test::shippedLessons;
 using rigidlab::test::visitShippedSteps;
 using rigidlab::ui::MainWindow;
 using namespace rigidlab::test::classroom;
+
+namespace {
+
+/// The step's text wraps to the column: no sideways scrolling, except for a table too wide for
+/// it even in smaller type (energy_drift step 4 at 1024 px), whose words stay whole
+/// (test_lesson_feedback); the text scrolls then, and the lesson around it never does.
+void checkTextWidth(MainWindow& w, const QString& where)
+{
+    const auto* text = w.lessonPlayer().findChild<QTextBrowser*>();
+    QVERIFY(text && text->isVisible());
+    bool hasTable = false;
+    for (const QTextFrame* f : text->document()->rootFrame()->childFrames())
+        hasTable = hasTable || qobject_cast<const QTextTable*>(f);
+    const bool wide = text->document()->size().width() > text->viewport()->width() + 1;
+    QVERIFY2(!wide || hasTable, qPrintable(where + QStringLiteral("text %1 px wide in %2 px")
+                                                       .arg(text->document()->size().width())
+                                                       .arg(text->viewport()->width())));
+    QVERIFY2(text->horizontalScrollBar()->isVisible() == wide,
+             qPrintable(where + QStringLiteral("text %1 px wide in %2 px, scroll bar %3")
+                                    .arg(text->document()->size().width())
+                                    .arg(text->viewport()->width())
+                                    .arg(text->horizontalScrollBar()->isVisible())));
+    for (const QWidget* p = text->parentWidget(); p; p = p->parentWidget())
+        if (const auto* scroll = qobject_cast<const QScrollArea*>(p))
+            QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
+                     qPrintable(where + QStringLiteral("the lesson scrolls sideways")));
+}
+
+} // namespace
 
 class TestClassroom : public QObject {
     Q_OBJECT
@@ -162,20 +194,9 @@ private slots:
                     QVERIFY2(reachableRect(x, &w).contains(r),
                              qPrintable(where + name + QStringLiteral(" scrolled out of sight")));
                 }
-                // The step's text wraps to the column: no sideways scrolling, its tables
-                // included (energy_drift step 4).
-                const auto* text = w.lessonPlayer().findChild<QTextBrowser*>();
-                QVERIFY(text && text->isVisible());
-                QVERIFY2(!text->horizontalScrollBar()->isVisible(),
-                         qPrintable(where + QStringLiteral("the text scrolls sideways")));
-                QVERIFY2(text->document()->size().width() <= text->viewport()->width() + 1,
-                         qPrintable(where + QStringLiteral("text %1 px wide in %2 px")
-                                                .arg(text->document()->size().width())
-                                                .arg(text->viewport()->width())));
-                for (const QWidget* p = text->parentWidget(); p; p = p->parentWidget())
-                    if (const auto* scroll = qobject_cast<const QScrollArea*>(p))
-                        QVERIFY2(!scroll->horizontalScrollBar()->isVisible(),
-                                 qPrintable(where + QStringLiteral("the lesson scrolls sideways")));
+                checkTextWidth(w, where);
+                if (QTest::currentTestFailed())
+                    return;
                 questions += static_cast<int>(asked);
             });
         if (!walked)

@@ -9,8 +9,10 @@
 #include <QButtonGroup>
 #include <QCoreApplication>
 #include <QEvent>
+#include <QFont>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPalette>
 #include <QPointer>
 #include <QPushButton>
 #include <QScrollArea>
@@ -71,6 +73,26 @@ private:
 /// enough that |answer - measured| stays finite.
 constexpr double kMaxAnswer = 1e15;
 
+/// What a line under a question says, each kind drawn alike: bold, as large as the questions
+/// (the step's text), in its kind's colour, its words saying which besides the colour
+/// ("Right: …", "Not quite …", "Run … first").
+enum class Said { Right, Wrong, Wait };
+
+void drawAs(QLabel& line, Said said)
+{
+    // A font and a palette that set only the weight and the colour: the size is still the
+    // questions' as it changes. (A style sheet's font-weight fixed the size the line had when
+    // it was polished: one verdict stayed small after the text grew.)
+    QFont bold;
+    bold.setBold(true);
+    line.setFont(bold);
+    QPalette colour;
+    colour.setColor(QPalette::WindowText, said == Said::Right   ? QColor(0x1e, 0x7b, 0x34)
+                                          : said == Said::Wrong ? QColor(0xb3, 0x26, 0x1e)
+                                                                : QColor(0xa0, 0x5a, 0x00));
+    line.setPalette(colour);
+}
+
 } // namespace
 
 QuestionRows::QuestionRows(QWidget* parent) : QWidget(parent), m_layout(new QVBoxLayout(this))
@@ -121,21 +143,24 @@ std::optional<double> QuestionRows::typedNumber(std::size_t i)
 
 void QuestionRows::askFirst(std::size_t i, const QString& text)
 {
-    QLabel* result = m_rows.at(i).result;
-    result->setStyleSheet(QStringLiteral("color: #a05a00;"));
-    result->setText(text);
-    result->setVisible(true);
+    const AnswerRow& row = m_rows.at(i);
+    drawAs(*row.result, Said::Wait);
+    row.result->setText(text);
+    row.result->setVisible(true);
     revealResult(i);
+    // Check pressed on an empty box: the focus goes to the box, where the number is typed
+    // (typed at the button, it was lost), and a reader names the question with it.
+    if (row.edit && row.check && row.check->hasFocus() && row.edit->text().trimmed().isEmpty())
+        row.edit->setFocus(Qt::OtherFocusReason);
+    // Told, as a verdict is: the line changes out of the focus, and a reader would say nothing.
+    announce(*row.result, text);
 }
 
 void QuestionRows::showVerdict(std::size_t i, const lessons::Verdict& v,
                                const lessons::AnswerTry& attempt, bool tell)
 {
     const AnswerRow& row = m_rows.at(i);
-    row.result->setStyleSheet(!v.measured ? QStringLiteral("color: #a05a00;")
-                              : v.right   ? QStringLiteral("color: #1e7b34; font-weight: bold;")
-                              : v.shown   ? QStringLiteral("color: #b3261e; font-weight: bold;")
-                                          : QStringLiteral("color: #a05a00; font-weight: bold;"));
+    drawAs(*row.result, !v.measured ? Said::Wait : v.right ? Said::Right : Said::Wrong);
     // A choice's verdict is marked as well as worded and coloured (a number's says its value).
     const QString mark = !row.choices || !v.measured                 ? QString()
                          : v.right                                   ? QStringLiteral("✓ ")

@@ -39,14 +39,13 @@ QList<QTextTable*> tablesOf(QTextDocument& doc)
 StepText::StepText(QWidget* parent) : QTextBrowser(parent)
 {
     setOpenExternalLinks(false);
-    // No scroll bars of its own: the lesson around it scrolls.
+    // No vertical scroll bar of its own: the lesson around it scrolls. A table wider than the
+    // column at its smallest text scrolls sideways (fit()).
     setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    horizontalScrollBar()->setAccessibleName(tr("Scroll the step's text sideways"));
     setLineWrapMode(QTextEdit::WidgetWidth);
-    // A word wider than the column (a long number in a table cell) breaks rather than being cut.
-    QTextOption option = document()->defaultTextOption();
-    option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
-    document()->setDefaultTextOption(option);
+    // How lines break: fit().
     QSizePolicy policy(QSizePolicy::Preferred, QSizePolicy::Preferred);
     policy.setHeightForWidth(true);
     setSizePolicy(policy);
@@ -79,10 +78,15 @@ void StepText::fit()
     const int width = viewport()->width();
     m_fittedWidth = width;
     setMarkdown(m_markdown);
-    QTextOption option = document()->defaultTextOption();
-    option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
-    document()->setDefaultTextOption(option);
+    m_overflows = false;
     const QList<QTextTable*> tables = tablesOf(*document());
+    // With a table, lines break between words only: a table's word broken in the middle
+    // ("integrá/tor") reads as two, and a table too wide scrolls sideways instead (below).
+    // Without one, a word wider than the column (a file's name) breaks rather than being cut.
+    QTextOption option = document()->defaultTextOption();
+    option.setWrapMode(tables.isEmpty() ? QTextOption::WrapAtWordBoundaryOrAnywhere
+                                        : QTextOption::WordWrap);
+    document()->setDefaultTextOption(option);
     for (QTextTable* table : tables) {
         // As wide as the column at most, with thin cells.
         QTextTableFormat format = table->format();
@@ -93,10 +97,12 @@ void StepText::fit()
         format.setColumnWidthConstraints({});
         table->setFormat(format);
     }
-    if (tables.isEmpty() || width <= 0)
+    if (tables.isEmpty() || width <= 0) {
+        setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
         return updateGeometry();
+    }
     // The tables' text smaller, in steps, until the widest fits; below 70 % it would be
-    // unreadable, and the words break instead.
+    // unreadable, and the text scrolls sideways instead: its words stay whole.
     const double base = font().pointSizeF();
     document()->setTextWidth(width);
     for (const double scale : std::array{1.0, 0.9, 0.8, 0.7}) {
@@ -111,13 +117,12 @@ void StepText::fit()
         }
         // The widest a word makes the text, at this scale.
         const std::unique_ptr<QTextDocument> probe(document()->clone());
-        QTextOption words = probe->defaultTextOption();
-        words.setWrapMode(QTextOption::WordWrap);
-        probe->setDefaultTextOption(words);
         probe->setTextWidth(width);
-        if (std::ceil(probe->size().width()) <= width)
+        m_overflows = std::ceil(probe->size().width()) > width;
+        if (!m_overflows)
             break;
     }
+    setHorizontalScrollBarPolicy(m_overflows ? Qt::ScrollBarAlwaysOn : Qt::ScrollBarAlwaysOff);
     updateGeometry();
 }
 
@@ -125,8 +130,13 @@ int StepText::heightForWidth(int width) const
 {
     const int frame = 2 * frameWidth();
     const std::unique_ptr<QTextDocument> probe(document()->clone());
-    probe->setTextWidth(std::max(1, width - frame));
-    return static_cast<int>(std::ceil(probe->size().height())) + frame;
+    const int textWidth = std::max(1, width - frame);
+    probe->setTextWidth(textWidth);
+    // A table too wide for the column scrolls sideways, its scroll bar below the text.
+    const int bar = std::ceil(probe->size().width()) > textWidth
+                        ? horizontalScrollBar()->sizeHint().height()
+                        : 0;
+    return static_cast<int>(std::ceil(probe->size().height())) + frame + bar;
 }
 
 QSize StepText::sizeHint() const

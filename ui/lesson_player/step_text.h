@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 // A lesson step's text: as tall as its words at the width it is given, so that it scrolls with
-// the lesson around it rather than inside a box of its own, and never wider than that width
-// (a table's text shrinks, and a word too long for its cell breaks, instead of a sideways
-// scroll bar).
+// the lesson around it rather than inside a box of its own. A table's text shrinks to fit that
+// width; a table still too wide then scrolls sideways, its words whole, never broken.
 
 #include <QTextBrowser>
 
@@ -36,7 +35,8 @@ private:
 
     QString m_markdown;
     QString m_nameWhenEmpty;
-    int m_fittedWidth = -1; ///< viewport width of the last fit() [px]
+    int m_fittedWidth = -1;   ///< viewport width of the last fit() [px]
+    bool m_overflows = false; ///< a table is wider than the column: the text scrolls sideways
 };
 
 } // namespace rigidlab::ui

@@ -20,6 +20,7 @@
 #include "simulation/simulation_controller.h"
 #include "view/world_view.h"
 #include "window/dock_tabs.h"
+#include "window/empty_stage.h"
 #include "window/window_actions.h"
 #include "window/window_documents.h"
 #include "window/window_layout.h"
@@ -66,6 +67,16 @@ LessonSession::LessonSession(const Parts& parts) : QObject(&parts.window), m_par
                     tr("%1 fell off the stage at t = %2 s: the run paused. Play runs on.")
                         .arg(m_parts.controller.scene().bodyLabel(body), formatReadable(t, 3)));
             });
+    // Every moving body out of the view (two balls parting after their collision): nothing
+    // left to watch, so the run pauses there once, as for a body off the stage.
+    new EmptyStageWatch(
+        parts.controller, parts.view, [this] { return m_inLesson && !m_loading; },
+        [this](double t) {
+            tellPause(tr("Every moving body has left the view at t = %1 s: the run paused. "
+                         "Play runs on.")
+                          .arg(formatReadable(t, 3)));
+        },
+        this);
     connect(&parts.controller, &SimulationController::endTimeReached, this, [this](double t) {
         tellPause(tr("This step's run ends at t = %1 s: the run paused. Play runs on.")
                       .arg(formatReadable(t, 3)));

@@ -325,7 +325,17 @@ void WindowLayout::shareColumnHeight()
     int total = 0;
     for (qsizetype g = 0; g < m_rightGroups.size(); ++g) {
         QList<QDockWidget*> group;
-        for (QDockWidget* d : m_rightGroups[g])
+        QList<QDockWidget*> kind = m_rightGroups[g];
+        // The scene editor's Properties and History are tabs beside the inspector: settings
+        // too, though the layout did not place them. Uncounted, they kept whatever height an
+        // earlier step left (a lesson's editor step after steps that showed only a table: the
+        // Properties squeezed to a few rows under a half-empty collision table).
+        if (g == 0)
+            for (const char* name : {"propertiesDock", "historyDock"})
+                if (auto* editor = m_window.findChild<QDockWidget*>(QLatin1String(name),
+                                                                    Qt::FindDirectChildrenOnly))
+                    kind << editor;
+        for (QDockWidget* d : kind)
             if (!d->isHidden() && d->geometry().right() >= 0 && d->geometry().bottom() >= 0 &&
                 m_window.dockWidgetArea(d) == Qt::RightDockWidgetArea)
                 group << d;
