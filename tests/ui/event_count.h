@@ -115,6 +115,13 @@ private:
     {
         const QAccessible::Event type = event->type();
         QObject* object = event->object();
+        // Qt's AT-SPI bridge passes a value change only for an object with a numeric value
+        // interface ("ValueChanged event and no ValueInterface"): the others reach no reader.
+        if (type == QAccessible::ValueChanged) {
+            QAccessibleInterface* changed = event->accessibleInterface();
+            if (!(changed && changed->valueInterface()))
+                return;
+        }
         m_sequence.append({type, object});
         if (type == QAccessible::ObjectDestroyed || !object) {
             add(QStringLiteral("event %1").arg(int(type), 0, 16));

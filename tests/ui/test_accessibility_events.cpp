@@ -32,10 +32,13 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
+#include <QScrollBar>
 #include <QTextBrowser>
 #include <QVBoxLayout>
 #include <QtPlugin>
 #include <QtTest>
+
+#include <array>
 
 #include "projector_window.h"
 #include "test_main.h"
@@ -214,6 +217,59 @@ private slots:
                                 .arg(most)
                                 .arg(count.top())));
         QVERIFY2(count.mostShowsOfOneObject() <= 2, qPrintable(count.top()));
+    }
+
+    /// A lesson step whose view follows its bodies as they fly apart (restitution's second:
+    /// two balls after their collision): the view moves its own scroll bars, hidden, as it
+    /// widens. They tell a reader nothing (in the window under AT-SPI they told 14 to 80 value
+    /// changes a second, and Orca, flooded, dropped the announcement that the run had paused);
+    /// a scroll bar shown still has its value.
+    void hiddenScrollBarsTellNoValue()
+    {
+        MainWindow w;
+        showOnProjector(w);
+        QCOMPARE(w.openLesson(test::sourcePath(u"/lessons/lessons/restitution.json"), true),
+                 QString());
+        w.lessonPlayer().goToStep(1);
+        QTest::qWait(300); // the step's opening is not counted
+        const std::array<QScrollBar*, 2> bars{w.view().horizontalScrollBar(),
+                                              w.view().verticalScrollBar()};
+        int moves = 0;
+        for (QScrollBar* bar : bars) {
+            QVERIFY(!bar->isVisible());
+            connect(bar, &QScrollBar::valueChanged, this, [&moves] { ++moves; });
+        }
+        EventCount count(w);
+        ui::SimulationController& c = w.controller();
+        c.setRunning(true);
+        for (int frame = 0; frame < 60 * 10 && c.isRunning(); ++frame) {
+            c.advanceClock(1.0 / 60);
+            QCoreApplication::processEvents();
+        }
+        c.setRunning(false);
+        // The view did follow the balls: its hidden bars moved, and told no reader of it.
+        QVERIFY2(moves > 10, qPrintable(QStringLiteral("the bars moved %1 times, t = %2 s")
+                                            .arg(moves)
+                                            .arg(c.world().time())));
+        for (QScrollBar* bar : bars)
+            QVERIFY2(count.eventsOf(bar).isEmpty(),
+                     qPrintable(QStringLiteral("a hidden bar told %1 events: %2")
+                                    .arg(count.eventsOf(bar).size())
+                                    .arg(count.top())));
+        QAccessibleInterface* hidden = QAccessible::queryAccessibleInterface(bars[0]);
+        QVERIFY(hidden != nullptr);
+        QCOMPARE(hidden->role(), QAccessible::ScrollBar);
+        QVERIFY(hidden->valueInterface() == nullptr);
+        // A bar that is shown tells its value.
+        QScrollBar shown(Qt::Horizontal);
+        shown.setRange(0, 100);
+        shown.setValue(40);
+        shown.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&shown));
+        QAccessibleInterface* shownBar = QAccessible::queryAccessibleInterface(&shown);
+        QVERIFY(shownBar != nullptr && shownBar->valueInterface() != nullptr);
+        QCOMPARE(shownBar->valueInterface()->currentValue().toInt(), 40);
+        QCOMPARE(shownBar->valueInterface()->maximumValue().toInt(), 100);
     }
 
     /// A body's new value and the status reach the bridge as a change of the item's

@@ -3,6 +3,7 @@
 
 #include "common/announcer.h"
 #include "common/line_edit_accessible.h"
+#include "common/scroll_bar_accessible.h"
 #include "common/tab_bar_accessible.h"
 #include "plots/plot_accessible.h"
 #include "view/world_view_accessible.h"
@@ -16,9 +17,9 @@ namespace rigidlab::ui {
 void installAccessibleFactories()
 {
     static const bool installed = [] {
-        const std::array<QAccessible::InterfaceFactory, 5> factories{
-            lineEditInterface, tabBarInterface, plotInterface, worldViewInterface,
-            announcerInterface};
+        const std::array<QAccessible::InterfaceFactory, 6> factories{
+            lineEditInterface, tabBarInterface,    scrollBarInterface,
+            plotInterface,     worldViewInterface, announcerInterface};
         for (QAccessible::InterfaceFactory factory : factories)
             QAccessible::installFactory(factory);
         return true;
