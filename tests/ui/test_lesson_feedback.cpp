@@ -36,6 +36,19 @@ void settle()
         QCoreApplication::processEvents();
 }
 
+/// `w` shown on the projector with the restitution lesson at its second step (the light ball
+/// hits the heavy one); empty, or what went wrong.
+QString showRestitutionStep2(ui::MainWindow& w)
+{
+    showOn(w, kProjector);
+    const QString refused = w.openLesson(lessonPath("restitution.json"), true);
+    if (!refused.isEmpty())
+        return refused;
+    w.lessonPlayer().goToStep(1);
+    settle();
+    return {};
+}
+
 /// Question `q`'s box in the Lesson dock (its prompt, answer, buttons and verdict line).
 QWidget* questionRow(ui::MainWindow& w, int q)
 {
@@ -103,10 +116,7 @@ private slots:
     void emptyCheckSaysWhereAndWhat()
     {
         ui::MainWindow w;
-        showOn(w, kProjector);
-        QCOMPARE(w.openLesson(lessonPath("restitution.json"), true), QString());
-        w.lessonPlayer().goToStep(1);
-        settle();
+        QCOMPARE(showRestitutionStep2(w), QString());
         QWidget* row = questionRow(w, 1);
         QVERIFY(row);
         QPushButton* check = checkOf(*row);
@@ -141,10 +151,8 @@ private slots:
     void verdictsOfAKindLookAlike()
     {
         ui::MainWindow w;
-        showOn(w, kProjector);
-        QCOMPARE(w.openLesson(lessonPath("restitution.json"), true), QString());
-        w.lessonPlayer().goToStep(1); // both speeds measured at t = 1.5 s; the run is not held
-        settle();
+        // Both speeds are measured at t = 1.5 s; the run is not held.
+        QCOMPARE(showRestitutionStep2(w), QString());
         QWidget* first = questionRow(w, 0);
         QWidget* second = questionRow(w, 1);
         QVERIFY(first && second);
@@ -265,10 +273,7 @@ private slots:
     void runPausesWhenTheViewIsEmpty()
     {
         ui::MainWindow w;
-        showOn(w, kProjector);
-        QCOMPARE(w.openLesson(lessonPath("restitution.json"), true), QString());
-        w.lessonPlayer().goToStep(1);
-        settle();
+        QCOMPARE(showRestitutionStep2(w), QString());
         ui::SimulationController& c = w.controller();
         c.setRunning(true);
         for (int frame = 0; frame < 60 * 30 && c.isRunning(); ++frame) {
